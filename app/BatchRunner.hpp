@@ -1,0 +1,58 @@
+#pragma once
+
+#include "app/CommandLineOptions.hpp"
+#include "app/ProgressPrinter.hpp"
+#include "core/ClassTable.hpp"
+#include "core/Plan.hpp"
+#include "io/LoadedRaster.hpp"
+#include "io/Mission.hpp"
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace mcpp::app {
+
+// Runs one headless planning job: mission in (file or flags), outputs out, and the batch contract's
+// exit code. Needs a QGuiApplication (plan.png is painted with QPainter).
+class BatchRunner {
+public:
+    BatchRunner(CommandLineOptions options, std::ostream& output, std::ostream& diagnostics);
+
+    // 0 on success, 2 on bad input, 1 on an internal error; the reason is one line on diagnostics.
+    [[nodiscard]] int run();
+
+    // The stem of robot i's waypoint files; i counts from 0 like the "robot" fields of plan.geojson and report.json.
+    [[nodiscard]] static std::string robotFileStem(int robot);
+
+private:
+    void execute();
+    void assembleMission();
+    void applyOverrides();
+    void loadRaster();
+    void chooseClassTable();
+    std::vector<MapPoint> startsInPlanningFrame() const;
+    void checkStartPixel(int robot, MapPoint start) const;
+    Plan runPlanner(const std::vector<MapPoint>& starts);
+    void writeOutputs(const Plan& plan);
+    void printSummary(const Plan& plan) const;
+    void warn(const std::string& message);
+
+    // Where a value came from, so errors name the flag or the mission file and field.
+    [[nodiscard]] std::string startLabel(int robot) const;
+    [[nodiscard]] std::string startCrsLabel(int robot) const;
+    [[nodiscard]] std::string classesLabel() const;
+    [[nodiscard]] std::string plannerLabel() const;
+
+    CommandLineOptions options_;
+    std::ostream& output_;
+    std::ostream& diagnostics_;
+    ProgressPrinter progress_;
+    io::Mission mission_;
+    std::string rasterPath_;
+    io::LoadedRaster raster_;
+    ClassTable classes_;
+    std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
+};
+
+} // namespace mcpp::app

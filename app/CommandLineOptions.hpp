@@ -1,0 +1,39 @@
+#pragma once
+
+#include "core/MapPoint.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mcpp::app {
+
+enum class RunMode {
+    Gui,     // open the window, optionally with a mission or raster
+    Batch,   // plan headless and write the outputs
+    Help,    // print the usage and exit
+    Version, // print the version and exit
+};
+
+// What the command line asked for. Optional fields left empty keep the mission's (or the default) value.
+struct CommandLineOptions {
+    RunMode mode = RunMode::Gui;
+    std::string guiFile;        // mission or raster to open in GUI mode; may be empty
+    std::string missionPath;    // batch mode from a mission file
+    std::string rasterPath;     // batch mode with the mission given by flags
+    std::string classesPath;    // --classes
+    std::string preset;         // --preset
+    std::vector<MapPoint> starts; // --start, in the order given
+    std::string startCrs;       // --start-crs; empty: the raster's CRS
+    std::string outputDirectory;
+    std::optional<std::string> planner;
+    std::optional<int> band;
+    std::optional<double> purityTolerance;
+    bool missingAsObstacle = false;
+    bool openPaths = false;
+    bool quiet = false;
+
+    [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }
+};
+
+} // namespace mcpp::app

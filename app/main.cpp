@@ -1,0 +1,48 @@
+#include "app/BatchRunner.hpp"
+#include "app/CommandLine.hpp"
+#include "app/GuiLauncher.hpp"
+
+#include <QGuiApplication>
+#include <QString>
+#include <QtGlobal>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
+    // plan.png is painted with QPainter, which needs a QGuiApplication; offscreen needs no display.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    int qtArgumentCount = 1;
+    char* qtArguments[] = {programName, nullptr};
+    const QGuiApplication application(qtArgumentCount, qtArguments);
+    QGuiApplication::setApplicationName(QStringLiteral("mcpp"));
+    QGuiApplication::setApplicationVersion(QStringLiteral(MCPP_VERSION));
+    return mcpp::app::BatchRunner(options, std::cout, std::cerr).run();
+}
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    const std::vector<std::string> arguments(argv + 1, argv + argc);
+    const auto parsed = mcpp::app::CommandLine::parse(arguments);
+    if (!parsed.ok()) {
+        std::cerr << "mcpp: " << parsed.error << '\n';
+        return parsed.exitCode;
+    }
+    switch (parsed.options.mode) {
+    case mcpp::app::RunMode::Help:
+        std::cout << mcpp::app::CommandLine::usage();
+        return 0;
+    case mcpp::app::RunMode::Version:
+        std::cout << mcpp::app::CommandLine::versionText();
+        return 0;
+    case mcpp::app::RunMode::Batch:
+        return runBatch(argv[0], parsed.options);
+    case mcpp::app::RunMode::Gui:
+        break;
+    }
+    return mcpp::app::GuiLauncher::run(argv[0], parsed.options.guiFile);
+}

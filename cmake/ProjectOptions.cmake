@@ -1,0 +1,16 @@
+# One interface target carries the language level and the warning flags for every mcpp target.
+add_library(mcpp_project_options INTERFACE)
+target_compile_features(mcpp_project_options INTERFACE cxx_std_20)
+set(CMAKE_CXX_EXTENSIONS OFF)
+target_compile_options(mcpp_project_options INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
+  -Woverloaded-virtual -Wnull-dereference -Wimplicit-fallthrough
+  # GCC 12 reports false -Wrestrict positives inside libstdc++ string code at -O2 and above.
+  -Wno-restrict)
+if(MCPP_WARNINGS_AS_ERRORS)
+  target_compile_options(mcpp_project_options INTERFACE -Werror)
+endif()
+if(MCPP_SANITIZE)
+  target_compile_options(mcpp_project_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer)
+  target_link_options(mcpp_project_options INTERFACE -fsanitize=address,undefined)
+endif()

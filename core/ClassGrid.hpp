@@ -1,0 +1,30 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace mcpp {
+
+// A land-cover raster in a metric frame. Row 0 is the northern edge; y decreases as rows increase.
+struct ClassGrid {
+    int columns = 0;
+    int rows = 0;
+    double originX = 0.0;     // x of the western edge of column 0
+    double originY = 0.0;     // y of the northern edge of row 0
+    double pixelWidth = 1.0;  // metres, > 0
+    double pixelHeight = 1.0; // metres, > 0
+    std::vector<std::int32_t> values; // row-major, columns * rows
+    std::vector<std::uint8_t> outside; // 1 where the pixel is nodata or not part of the task area; may be empty
+
+    [[nodiscard]] std::size_t index(int column, int row) const {
+        return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(column);
+    }
+    [[nodiscard]] bool isOutside(int column, int row) const { return !outside.empty() && outside[index(column, row)] != 0; }
+    [[nodiscard]] std::int32_t valueAt(int column, int row) const { return values[index(column, row)]; }
+    [[nodiscard]] double width() const { return columns * pixelWidth; }
+    [[nodiscard]] double height() const { return rows * pixelHeight; }
+    [[nodiscard]] double minY() const { return originY - height(); }
+    [[nodiscard]] double maxX() const { return originX + width(); }
+};
+
+} // namespace mcpp

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace mcpp {
+
+// How one land-cover class affects a robot: how fast it moves there and how wide a swath it senses.
+struct LandCoverClass {
+    std::int32_t value = 0;           // raster value of the class
+    std::string name;
+    std::uint32_t colorRgb = 0x808080; // 0xRRGGBB
+    double speedMetresPerSecond = 1.0;
+    double fieldOfViewMetres = 10.0;
+    bool passable = true;
+
+    // Speed <= 0 or passable == false makes the class an obstacle (spec section 1).
+    [[nodiscard]] bool isTraversable() const { return passable && speedMetresPerSecond > 0.0; }
+
+    friend bool operator==(const LandCoverClass&, const LandCoverClass&) = default;
+};
+
+} // namespace mcpp

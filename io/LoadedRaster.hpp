@@ -1,0 +1,45 @@
+#pragma once
+
+#include "core/ClassGrid.hpp"
+#include "io/GeoReference.hpp"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mcpp::io {
+
+struct LegendEntry {
+    std::int32_t value = 0;
+    std::string name;
+    std::optional<std::uint32_t> colorRgb; // 0xRRGGBB
+};
+
+// A land-cover raster ready for planning: the grid in metres and where it sits on the Earth.
+struct LoadedRaster {
+    std::string path;
+    int band = 1;
+    ClassGrid grid;                 // planning frame, metres
+    GeoReference georeference;      // CRS of the planning frame
+    std::string sourceCrsName;      // CRS of the file as read
+    bool warpedFromGeographic = false;
+    int sourceColumns = 0;
+    int sourceRows = 0;
+    double effectiveResolutionMetres = 0.0; // pixel side after any coarsening
+    bool coarsened = false;
+    std::vector<LegendEntry> legend; // from palette, category names, RAT, .qml or CSV beside the file
+    std::string legendSource;        // "palette", "category names", "qml", ... or empty
+    std::map<std::int32_t, std::int64_t> classPixelCounts; // inside pixels only
+    std::vector<std::string> warnings;
+};
+
+struct RasterLoadOptions {
+    int band = 1;
+    std::int64_t pixelBudget = 16'000'000; // above this, read a coarser level and say so
+};
+
+[[nodiscard]] Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLoadOptions& options = {});
+
+} // namespace mcpp::io

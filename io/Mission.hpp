@@ -1,0 +1,51 @@
+#pragma once
+
+#include "core/ClassTable.hpp"
+#include "core/MapPoint.hpp"
+#include "core/PlannerSettings.hpp"
+#include "io/Result.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mcpp::io {
+
+struct RobotSpec {
+    std::string name;
+    MapPoint start;
+    std::string startCrs; // empty: the raster's CRS
+
+    friend bool operator==(const RobotSpec&, const RobotSpec&) = default;
+};
+
+struct ExportSettings {
+    double altitudeMetres = 30.0;       // waypoint altitude above home
+    double cruiseSpeedMetresPerSecond = 0.0; // 0: use the land-cover speed
+    bool mergeCollinear = true;
+
+    friend bool operator==(const ExportSettings&, const ExportSettings&) = default;
+};
+
+// A mission file (docs/mission-format.md): everything needed to plan again.
+struct Mission {
+    int version = 1;
+    std::string rasterPath; // as written in the file: relative to the mission file's folder when relative
+    int band = 1;
+    std::string preset;     // used when classes is empty
+    ClassTable classes;
+    bool missingClassesAsObstacles = false;
+    std::vector<RobotSpec> robots;
+    PlannerSettings settings;
+    ExportSettings exports;
+
+    friend bool operator==(const Mission&, const Mission&) = default;
+};
+
+[[nodiscard]] Result<Mission> loadMission(const std::string& path);
+[[nodiscard]] Status saveMission(const Mission& mission, const std::string& path); // atomic
+// The text saveMission writes: fixed key order, shortest round-trip numbers, so save -> load -> save is byte-identical.
+[[nodiscard]] std::string missionToJson(const Mission& mission);
+// The raster path resolved against the mission file's folder.
+[[nodiscard]] std::string resolveRasterPath(const Mission& mission, const std::string& missionPath);
+
+} // namespace mcpp::io

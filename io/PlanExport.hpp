@@ -1,0 +1,42 @@
+#pragma once
+
+#include "core/ClassTable.hpp"
+#include "core/Plan.hpp"
+#include "io/GeoReference.hpp"
+#include "io/Mission.hpp"
+#include "io/Result.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mcpp::io {
+
+// What every exporter needs besides the plan.
+struct ExportContext {
+    const Plan& plan;
+    const GeoReference& georeference;
+    const ClassTable& classes;
+    ExportSettings settings;
+};
+
+// RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.
+[[nodiscard]] Status writePlanGeoJson(const ExportContext& context, const std::string& path);
+// GeoPackage in the raster's CRS: layers regions, paths, starts, cells, unreachable.
+[[nodiscard]] Status writePlanGeoPackage(const ExportContext& context, const std::string& path);
+[[nodiscard]] Status writePlanKml(const ExportContext& context, const std::string& path);
+[[nodiscard]] Status writePlanGpx(const ExportContext& context, const std::string& path);
+
+// The waypoints a robot's waypoint files get: all of them, or, with mergeCollinear, without the points that
+// lie on the straight segment between their neighbours at the same speed and class (time and shape unchanged).
+[[nodiscard]] std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeCollinear);
+
+// Per robot waypoint files.
+[[nodiscard]] Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path);
+[[nodiscard]] Status writeWaypointList(const ExportContext& context, int robot, const std::string& path); // QGC WPL 110
+[[nodiscard]] Status writeWaypointCsv(const ExportContext& context, int robot, const std::string& path);
+
+// report.json of the batch contract, and the per-robot CSV.
+[[nodiscard]] Status writeReportJson(const ExportContext& context, const std::string& path);
+[[nodiscard]] Status writeReportCsv(const ExportContext& context, const std::string& path);
+
+} // namespace mcpp::io

@@ -1,0 +1,414 @@
+#include "io/PlanExport.hpp"
+
+#include "io/internal/GdalSupport.hpp"
+#include "io/internal/PlanGeometry.hpp"
+
+#include <ogrsf_frmts.h>
+
+#include <filesystem>
+#include <unistd.h>
+
+namespace mcpp::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+using internal::DatasetPointer;
+using internal::PlanFeatures;
+using internal::QuietGdalErrors;
+
+// A file written by an OGR driver, created under a temporary name beside the target and renamed into place
+// when complete, so a failed export never leaves half a file under the real name.
+class VectorFileWriter {
+public:
+    VectorFileWriter(std::string path, const char* driverName) : path_(std::move(path)), driverName_(driverName) {
+        const fs::path target(path_);
+        temporary_ = (target.parent_path() / ("." + target.stem().string() + ".partial-" + std::to_string(getpid())
+                                             + target.extension().string()))
+                         .string();
+    }
+    ~VectorFileWriter() {
+        dataset_.reset();
+        std::error_code ignored;
+        if (!committed_) fs::remove(temporary_, ignored);
+    }
+    VectorFileWriter(const VectorFileWriter&) = delete;
+    VectorFileWriter& operator=(const VectorFileWriter&) = delete;
+
+    Status open(const char* const* creationOptions = nullptr) {
+        internal::ensureGdalRegistered();
+        GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driverName_);
+        if (driver == nullptr) return Status::failure(path_ + ": GDAL has no " + driverName_ + " driver");
+        std::error_code ignored;
+        fs::remove(temporary_, ignored);
+        dataset_.reset(driver->Create(temporary_.c_str(), 0, 0, 0, GDT_Unknown, const_cast<char**>(creationOptions)));
+        if (!dataset_) return Status::failure(path_ + ": cannot create" + QuietGdalErrors::detail());
+        return {};
+    }
+
+    Result<OGRLayer*> layer(const char* name, const OGRSpatialReference* crs, OGRwkbGeometryType type,
+                            const char* const* options = nullptr) {
+        // GDAL 3.6 takes a non-const CRS pointer but only reads it.
+        OGRLayer* created = dataset_->CreateLayer(name, const_cast<OGRSpatialReference*>(crs), type, const_cast<char**>(options));
+        if (created == nullptr) return Result<OGRLayer*>::failure(path_ + ": cannot create layer " + name + QuietGdalErrors::detail());
+        return created;
+    }
+
+    Status field(OGRLayer* layer, const char* name, OGRFieldType type) {
+        OGRFieldDefn definition(name, type);
+        if (layer->CreateField(&definition) != OGRERR_NONE) {
+            return Status::failure(path_ + ": cannot add field " + name + QuietGdalErrors::detail());
+        }
+        return {};
+    }
+
+    Status add(OGRLayer* layer, OGRFeature& feature) {
+        if (layer->CreateFeature(&feature) != OGRERR_NONE) {
+            return Status::failure(path_ + ": cannot write a feature to " + layer->GetName() + QuietGdalErrors::detail());
+        }
+        return {};
+    }
+
+    GDALDataset& dataset() { return *dataset_; }
+
+    Status commit() {
+        CPLErrorReset();
+        dataset_.reset(); // flushes and closes
+        if (CPLGetLastErrorType() == CE_Failure) return Status::failure(path_ + ": write failed" + QuietGdalErrors::detail());
+        std::error_code error;
+        fs::rename(temporary_, path_, error);
+        if (error) return Status::failure(path_ + ": cannot move the finished file into place: " + error.message());
+        committed_ = true;
+        return {};
+    }
+
+private:
+    std::string path_;
+    const char* driverName_;
+    std::string temporary_;
+    DatasetPointer dataset_;
+    bool committed_ = false;
+};
+
+struct Fields {
+    std::vector<std::pair<const char*, OGRFieldType>> definitions;
+};
+
+Status createFields(VectorFileWriter& writer, OGRLayer* layer, const Fields& fields) {
+    for (const auto& [name, type] : fields.definitions) {
+        if (Status status = writer.field(layer, name, type); !status) return status;
+    }
+    return {};
+}
+
+// Transformation from the plan's CRS to WGS84 longitude, latitude.
+Result<std::unique_ptr<OGRCoordinateTransformation>> toWgs84(const GeoReference& georeference, const std::string& path) {
+    using Transformation = std::unique_ptr<OGRCoordinateTransformation>;
+    if (!georeference.hasCrs()) {
+        return Result<Transformation>::failure(path + ": the map has no CRS, so the plan cannot be written in longitude and latitude");
+    }
+    auto source = internal::spatialReferenceFromDefinition(georeference.wkt());
+    const auto wgs84 = internal::wgs84SpatialReference();
+    if (!source) return Result<Transformation>::failure(path + ": the map's CRS is not usable" + QuietGdalErrors::detail());
+    Transformation transformation(OGRCreateCoordinateTransformation(source.get(), wgs84.get()));
+    if (!transformation) return Result<Transformation>::failure(path + ": no transformation to WGS84" + QuietGdalErrors::detail());
+    return transformation;
+}
+
+Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transformation, const std::string& path) {
+    const auto fail = [&](const char* what) {
+        return Status::failure(path + ": cannot transform " + std::string(what) + " to WGS84" + QuietGdalErrors::detail());
+    };
+    for (auto& region : features.regions) {
+        if (!region.geometry->IsEmpty() && region.geometry->transform(&transformation) != OGRERR_NONE) return fail("a region");
+    }
+    for (auto& line : features.paths) {
+        if (line.geometry->transform(&transformation) != OGRERR_NONE) return fail("a path");
+    }
+    for (auto& start : features.starts) {
+        if (start.geometry->transform(&transformation) != OGRERR_NONE) return fail("a start");
+    }
+    for (auto& part : features.unreachable) {
+        if (part.geometry->transform(&transformation) != OGRERR_NONE) return fail("an unreachable area");
+    }
+    return {};
+}
+
+Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::string& path) {
+    auto features = internal::buildPlanFeatures(context.plan, context.georeference.metresPerUnit());
+    if (!features) return Result<PlanFeatures>::failure(path + ": " + features.error());
+    auto transformation = toWgs84(context.georeference, path);
+    if (!transformation) return Result<PlanFeatures>::failure(transformation.error());
+    if (Status status = transformAll(features.value(), *transformation.value(), path); !status) {
+        return Result<PlanFeatures>::failure(status.error());
+    }
+    return features;
+}
+
+std::unique_ptr<OGRGeometry> asMultiPolygon(const OGRGeometry& geometry) {
+    return std::unique_ptr<OGRGeometry>(OGRGeometryFactory::forceToMultiPolygon(geometry.clone()));
+}
+
+} // namespace
+
+Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
+    QuietGdalErrors quiet;
+    auto features = featuresInWgs84(context, path);
+    if (!features) return Status::failure(features.error());
+    VectorFileWriter writer(path, "GeoJSON");
+    if (Status status = writer.open(); !status) return status;
+    const auto wgs84 = internal::wgs84SpatialReference();
+    // RFC 7946: WGS84, right-hand rings; 9 decimals keep coordinates well within 1e-7 degrees.
+    const char* const layerOptions[] = {"RFC7946=YES", "COORDINATE_PRECISION=9", "WRITE_NAME=NO", nullptr};
+    auto layer = writer.layer("plan", wgs84.get(), wkbUnknown, layerOptions);
+    if (!layer) return Status::failure(layer.error());
+    OGRLayer* plan = layer.value();
+    const Fields fields{{{"kind", OFTString}, {"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal},
+                         {"cells", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal}, {"turns", OFTInteger}}};
+    if (Status status = createFields(writer, plan, fields); !status) return status;
+
+    for (auto& region : features.value().regions) {
+        OGRFeature feature(plan->GetLayerDefn());
+        feature.SetField("kind", "region");
+        feature.SetField("robot", region.robot);
+        feature.SetField("cost_s", region.costSeconds);
+        feature.SetField("area_m2", region.areaSquareMetres);
+        feature.SetField("cells", region.cells);
+        feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
+        if (Status status = writer.add(plan, feature); !status) return status;
+    }
+    for (auto& line : features.value().paths) {
+        OGRFeature feature(plan->GetLayerDefn());
+        feature.SetField("kind", "path");
+        feature.SetField("robot", line.robot);
+        feature.SetField("length_m", line.lengthMetres);
+        feature.SetField("time_s", line.timeSeconds);
+        feature.SetField("turns", line.turns);
+        feature.SetGeometryDirectly(line.geometry.release());
+        if (Status status = writer.add(plan, feature); !status) return status;
+    }
+    for (auto& start : features.value().starts) {
+        OGRFeature feature(plan->GetLayerDefn());
+        feature.SetField("kind", "start");
+        feature.SetField("robot", start.robot);
+        feature.SetGeometryDirectly(start.geometry.release());
+        if (Status status = writer.add(plan, feature); !status) return status;
+    }
+    for (auto& part : features.value().unreachable) {
+        OGRFeature feature(plan->GetLayerDefn());
+        feature.SetField("kind", "unreachable");
+        feature.SetField("area_m2", part.areaSquareMetres);
+        feature.SetGeometryDirectly(part.geometry.release());
+        if (Status status = writer.add(plan, feature); !status) return status;
+    }
+    return writer.commit();
+}
+
+Status writePlanGeoPackage(const ExportContext& context, const std::string& path) {
+    QuietGdalErrors quiet;
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    auto features = internal::buildPlanFeatures(context.plan, metresPerUnit);
+    if (!features) return Status::failure(path + ": " + features.error());
+    std::unique_ptr<OGRSpatialReference> crs;
+    if (context.georeference.hasCrs()) crs = internal::spatialReferenceFromDefinition(context.georeference.wkt());
+
+    VectorFileWriter writer(path, "GPKG");
+    if (Status status = writer.open(); !status) return status;
+    writer.dataset().StartTransaction();
+
+    auto regions = writer.layer("regions", crs.get(), wkbMultiPolygon);
+    if (!regions) return Status::failure(regions.error());
+    if (Status status = createFields(writer, regions.value(),
+                                     {{{"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal}, {"cells", OFTInteger}}});
+        !status) {
+        return status;
+    }
+    for (auto& region : features.value().regions) {
+        OGRFeature feature(regions.value()->GetLayerDefn());
+        feature.SetField("robot", region.robot);
+        feature.SetField("cost_s", region.costSeconds);
+        feature.SetField("area_m2", region.areaSquareMetres);
+        feature.SetField("cells", region.cells);
+        feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
+        if (Status status = writer.add(regions.value(), feature); !status) return status;
+    }
+
+    auto paths = writer.layer("paths", crs.get(), wkbLineString);
+    if (!paths) return Status::failure(paths.error());
+    if (Status status = createFields(writer, paths.value(),
+                                     {{{"robot", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal}, {"turns", OFTInteger}}});
+        !status) {
+        return status;
+    }
+    for (auto& line : features.value().paths) {
+        OGRFeature feature(paths.value()->GetLayerDefn());
+        feature.SetField("robot", line.robot);
+        feature.SetField("length_m", line.lengthMetres);
+        feature.SetField("time_s", line.timeSeconds);
+        feature.SetField("turns", line.turns);
+        feature.SetGeometryDirectly(line.geometry.release());
+        if (Status status = writer.add(paths.value(), feature); !status) return status;
+    }
+
+    auto starts = writer.layer("starts", crs.get(), wkbPoint);
+    if (!starts) return Status::failure(starts.error());
+    if (Status status = createFields(writer, starts.value(), {{{"robot", OFTInteger}}}); !status) return status;
+    for (auto& start : features.value().starts) {
+        OGRFeature feature(starts.value()->GetLayerDefn());
+        feature.SetField("robot", start.robot);
+        feature.SetGeometryDirectly(start.geometry.release());
+        if (Status status = writer.add(starts.value(), feature); !status) return status;
+    }
+
+    auto cells = writer.layer("cells", crs.get(), wkbPolygon);
+    if (!cells) return Status::failure(cells.error());
+    if (Status status = createFields(writer, cells.value(),
+                                     {{{"active_index", OFTInteger}, {"level", OFTInteger}, {"class", OFTInteger},
+                                       {"fov", OFTReal}, {"speed", OFTReal}, {"robot", OFTInteger}}});
+        !status) {
+        return status;
+    }
+    const QuadTree& tree = context.plan.quadTree;
+    const auto& owner = context.plan.allocation.robotOfCell;
+    for (std::size_t index = 0; index < tree.activeCount(); ++index) {
+        const QuadCell& cell = tree.active(static_cast<int>(index));
+        OGRFeature feature(cells.value()->GetLayerDefn());
+        feature.SetField("active_index", static_cast<int>(index));
+        feature.SetField("level", cell.level);
+        feature.SetField("class", static_cast<int>(cell.classValue));
+        feature.SetField("fov", cell.fieldOfView());
+        feature.SetField("speed", cell.speedMetresPerSecond);
+        feature.SetField("robot", index < owner.size() ? owner[index] : -1);
+        feature.SetGeometryDirectly(internal::cellSquare(tree, cell, metresPerUnit).release());
+        if (Status status = writer.add(cells.value(), feature); !status) return status;
+    }
+
+    auto unreachable = writer.layer("unreachable", crs.get(), wkbPolygon);
+    if (!unreachable) return Status::failure(unreachable.error());
+    if (Status status = createFields(writer, unreachable.value(), {{{"area_m2", OFTReal}}}); !status) return status;
+    for (auto& part : features.value().unreachable) {
+        OGRFeature feature(unreachable.value()->GetLayerDefn());
+        feature.SetField("area_m2", part.areaSquareMetres);
+        feature.SetGeometryDirectly(part.geometry.release());
+        if (Status status = writer.add(unreachable.value(), feature); !status) return status;
+    }
+    if (writer.dataset().CommitTransaction() != OGRERR_NONE) {
+        return Status::failure(path + ": cannot commit" + QuietGdalErrors::detail());
+    }
+    return writer.commit();
+}
+
+Status writePlanKml(const ExportContext& context, const std::string& path) {
+    QuietGdalErrors quiet;
+    auto features = featuresInWgs84(context, path);
+    if (!features) return Status::failure(features.error());
+    const bool libkml = GetGDALDriverManager()->GetDriverByName("LIBKML") != nullptr;
+    VectorFileWriter writer(path, libkml ? "LIBKML" : "KML");
+    if (Status status = writer.open(); !status) return status;
+    const auto wgs84 = internal::wgs84SpatialReference();
+
+    const auto robotName = [](int robot) { return "robot " + std::to_string(robot); };
+    auto regions = writer.layer("regions", wgs84.get(), wkbMultiPolygon);
+    if (!regions) return Status::failure(regions.error());
+    if (Status status = createFields(writer, regions.value(),
+                                     {{{"name", OFTString}, {"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal},
+                                       {"cells", OFTInteger}}});
+        !status) {
+        return status;
+    }
+    for (auto& region : features.value().regions) {
+        OGRFeature feature(regions.value()->GetLayerDefn());
+        feature.SetField("name", (robotName(region.robot) + " region").c_str());
+        feature.SetField("robot", region.robot);
+        feature.SetField("cost_s", region.costSeconds);
+        feature.SetField("area_m2", region.areaSquareMetres);
+        feature.SetField("cells", region.cells);
+        feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
+        if (Status status = writer.add(regions.value(), feature); !status) return status;
+    }
+    auto paths = writer.layer("paths", wgs84.get(), wkbLineString);
+    if (!paths) return Status::failure(paths.error());
+    if (Status status = createFields(writer, paths.value(),
+                                     {{{"name", OFTString}, {"robot", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal},
+                                       {"turns", OFTInteger}}});
+        !status) {
+        return status;
+    }
+    for (auto& line : features.value().paths) {
+        OGRFeature feature(paths.value()->GetLayerDefn());
+        feature.SetField("name", (robotName(line.robot) + " path").c_str());
+        feature.SetField("robot", line.robot);
+        feature.SetField("length_m", line.lengthMetres);
+        feature.SetField("time_s", line.timeSeconds);
+        feature.SetField("turns", line.turns);
+        feature.SetGeometryDirectly(line.geometry.release());
+        if (Status status = writer.add(paths.value(), feature); !status) return status;
+    }
+    auto starts = writer.layer("starts", wgs84.get(), wkbPoint);
+    if (!starts) return Status::failure(starts.error());
+    if (Status status = createFields(writer, starts.value(), {{{"name", OFTString}, {"robot", OFTInteger}}}); !status) return status;
+    for (auto& start : features.value().starts) {
+        OGRFeature feature(starts.value()->GetLayerDefn());
+        feature.SetField("name", (robotName(start.robot) + " start").c_str());
+        feature.SetField("robot", start.robot);
+        feature.SetGeometryDirectly(start.geometry.release());
+        if (Status status = writer.add(starts.value(), feature); !status) return status;
+    }
+    if (!features.value().unreachable.empty()) {
+        auto unreachable = writer.layer("unreachable", wgs84.get(), wkbPolygon);
+        if (!unreachable) return Status::failure(unreachable.error());
+        if (Status status = createFields(writer, unreachable.value(), {{{"name", OFTString}, {"area_m2", OFTReal}}}); !status) {
+            return status;
+        }
+        for (auto& part : features.value().unreachable) {
+            OGRFeature feature(unreachable.value()->GetLayerDefn());
+            feature.SetField("name", "unreachable");
+            feature.SetField("area_m2", part.areaSquareMetres);
+            feature.SetGeometryDirectly(part.geometry.release());
+            if (Status status = writer.add(unreachable.value(), feature); !status) return status;
+        }
+    }
+    return writer.commit();
+}
+
+Status writePlanGpx(const ExportContext& context, const std::string& path) {
+    QuietGdalErrors quiet;
+    auto transformation = toWgs84(context.georeference, path);
+    if (!transformation) return Status::failure(transformation.error());
+    VectorFileWriter writer(path, "GPX");
+    if (Status status = writer.open(); !status) return status;
+    const auto wgs84 = internal::wgs84SpatialReference();
+    const double metresPerUnit = context.georeference.metresPerUnit();
+
+    auto starts = writer.layer("waypoints", wgs84.get(), wkbPoint);
+    if (!starts) return Status::failure(starts.error());
+    auto routes = writer.layer("routes", wgs84.get(), wkbLineString);
+    if (!routes) return Status::failure(routes.error());
+    for (const CoveragePath& coverage : context.plan.paths) {
+        const std::vector<Waypoint> waypoints = exportedWaypoints(coverage, context.settings.mergeCollinear);
+        if (waypoints.empty()) continue;
+        const std::string name = "robot " + std::to_string(coverage.robot);
+        OGRPoint home(waypoints.front().x / metresPerUnit, waypoints.front().y / metresPerUnit);
+        if (home.transform(transformation.value().get()) != OGRERR_NONE) {
+            return Status::failure(path + ": cannot transform a start to WGS84" + QuietGdalErrors::detail());
+        }
+        OGRFeature startFeature(starts.value()->GetLayerDefn());
+        startFeature.SetField("name", (name + " start").c_str());
+        startFeature.SetGeometry(&home);
+        if (Status status = writer.add(starts.value(), startFeature); !status) return status;
+
+        OGRLineString route;
+        for (const Waypoint& waypoint : waypoints) route.addPoint(waypoint.x / metresPerUnit, waypoint.y / metresPerUnit);
+        if (route.transform(transformation.value().get()) != OGRERR_NONE) {
+            return Status::failure(path + ": cannot transform " + name + "'s route to WGS84" + QuietGdalErrors::detail());
+        }
+        OGRFeature routeFeature(routes.value()->GetLayerDefn());
+        routeFeature.SetField("name", name.c_str());
+        routeFeature.SetField("number", coverage.robot);
+        routeFeature.SetGeometry(&route);
+        if (Status status = writer.add(routes.value(), routeFeature); !status) return status;
+    }
+    return writer.commit();
+}
+
+} // namespace mcpp::io

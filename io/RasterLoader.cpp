@@ -1,0 +1,370 @@
+#include "io/LoadedRaster.hpp"
+
+#include "io/internal/GdalSupport.hpp"
+#include "io/internal/LegendReader.hpp"
+
+#include <gdal_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unordered_map>
+
+namespace mcpp::io {
+
+namespace {
+
+using internal::DatasetPointer;
+using internal::QuietGdalErrors;
+namespace fs = std::filesystem;
+
+using RasterResult = Result<LoadedRaster>;
+
+// Largest number of buffer pixels read in one RasterIO call: keeps memory flat on big rasters.
+constexpr std::int64_t chunkPixels = 1 << 22;
+
+Status checkFileReadable(const std::string& path) {
+    if (path.empty()) return Status::failure("no raster file given");
+    if (path.rfind("/vsi", 0) == 0) return {}; // GDAL virtual file systems: let GDAL judge
+    std::error_code error;
+    if (!fs::exists(path, error)) return Status::failure(path + ": file not found");
+    if (fs::is_directory(path, error)) return Status::failure(path + ": is a folder, not a raster file");
+    if (fs::is_regular_file(path, error) && fs::file_size(path, error) == 0) return Status::failure(path + ": file is empty");
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) return Status::failure(path + ": cannot be read (permission denied?)");
+    return {};
+}
+
+bool isColourChannel(GDALColorInterp interpretation) {
+    return interpretation == GCI_RedBand || interpretation == GCI_GreenBand || interpretation == GCI_BlueBand
+           || interpretation == GCI_AlphaBand;
+}
+
+bool isFloatType(GDALDataType type) { return type == GDT_Float32 || type == GDT_Float64; }
+
+bool isComplexType(GDALDataType type) { return GDALDataTypeIsComplex(type) != 0; }
+
+// The UTM zone of the raster's centre, on the raster's own datum where it is not WGS84.
+std::unique_ptr<OGRSpatialReference> utmForCentre(const OGRSpatialReference& geographic, double longitude, double latitude) {
+    while (longitude >= 180.0) longitude -= 360.0;
+    while (longitude < -180.0) longitude += 360.0;
+    const int zone = std::clamp(static_cast<int>(std::floor((longitude + 180.0) / 6.0)) + 1, 1, 60);
+    const bool north = latitude >= 0.0;
+    auto utm = internal::makeSpatialReference();
+    const auto wgs84 = internal::wgs84SpatialReference();
+    if (geographic.IsSameGeogCS(wgs84.get())) {
+        if (utm->importFromEPSG((north ? 32600 : 32700) + zone) == OGRERR_NONE) return utm;
+        utm = internal::makeSpatialReference();
+    }
+    utm->CopyGeogCSFrom(&geographic);
+    utm->SetUTM(zone, north ? TRUE : FALSE);
+    const char* datum = geographic.GetAttrValue("DATUM");
+    utm->SetProjCS(("UTM zone " + std::to_string(zone) + (north ? "N" : "S") + " (" + (datum ? datum : "unknown datum") + ")").c_str());
+    return utm;
+}
+
+// Nearest-neighbour warp of one band into the UTM frame as a lazily computed VRT: nothing is held in memory
+// beyond what a read asks for. Out-of-footprint and nodata pixels become NaN.
+// The caller keeps `selected` (the band-selection VRT) alive until the warped dataset is closed.
+DatasetPointer warpToUtm(GDALDataset& source, int band, const OGRSpatialReference& utm, DatasetPointer& selected,
+                         std::string& error) {
+    GDALDatasetH input = GDALDataset::ToHandle(&source);
+    if (source.GetRasterCount() > 1) {
+        const std::string bandText = std::to_string(band);
+        const char* translateArguments[] = {"-of", "VRT", "-b", bandText.c_str(), nullptr};
+        GDALTranslateOptions* translateOptions = GDALTranslateOptionsNew(const_cast<char**>(translateArguments), nullptr);
+        selected.reset(GDALDataset::FromHandle(GDALTranslate("", input, translateOptions, nullptr)));
+        GDALTranslateOptionsFree(translateOptions);
+        if (!selected) {
+            error = "could not select band " + bandText + QuietGdalErrors::detail();
+            return nullptr;
+        }
+        input = GDALDataset::ToHandle(selected.get());
+    }
+    const std::string wkt = internal::wktOf(utm);
+    const char* warpArguments[] = {"-of", "VRT", "-t_srs", wkt.c_str(), "-r", "near", "-ot", "Float64", "-dstnodata", "nan", nullptr};
+    GDALWarpAppOptions* warpOptions = GDALWarpAppOptionsNew(const_cast<char**>(warpArguments), nullptr);
+    int usageError = 0;
+    DatasetPointer warped(GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &input, warpOptions, &usageError)));
+    GDALWarpAppOptionsFree(warpOptions);
+    if (!warped) {
+        error = "could not warp to " + std::string(utm.GetName()) + QuietGdalErrors::detail();
+        return nullptr;
+    }
+    return warped;
+}
+
+struct ReadPlan {
+    int sourceColumns = 0;
+    int sourceRows = 0;
+    int columns = 0; // after coarsening
+    int rows = 0;
+    bool coarsened = false;
+};
+
+ReadPlan planRead(int columns, int rows, std::int64_t budget) {
+    ReadPlan plan{columns, rows, columns, rows, false};
+    const std::int64_t pixels = static_cast<std::int64_t>(columns) * rows;
+    if (budget <= 0 || pixels <= budget) return plan;
+    double scale = std::sqrt(static_cast<double>(pixels) / static_cast<double>(budget));
+    for (;;) {
+        plan.columns = std::max(1, static_cast<int>(std::floor(columns / scale)));
+        plan.rows = std::max(1, static_cast<int>(std::floor(rows / scale)));
+        if (static_cast<std::int64_t>(plan.columns) * plan.rows <= budget || (plan.columns == 1 && plan.rows == 1)) break;
+        scale *= 1.01;
+    }
+    plan.coarsened = true;
+    return plan;
+}
+
+// Reads the band into raster.grid (values, outside) and raster.classPixelCounts, chunk by chunk.
+Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string& path, int bandNumber, LoadedRaster& raster) {
+    ClassGrid& grid = raster.grid;
+    grid.columns = plan.columns;
+    grid.rows = plan.rows;
+    const auto cellCount = static_cast<std::size_t>(plan.columns) * static_cast<std::size_t>(plan.rows);
+    grid.values.assign(cellCount, 0);
+    grid.outside.assign(cellCount, 0);
+
+    const GDALDataType type = band.GetRasterDataType();
+    const bool floating = isFloatType(type);
+    int hasNodata = 0;
+    const double nodata = band.GetNoDataValue(&hasNodata);
+    const bool nodataIsNan = hasNodata != 0 && std::isnan(nodata);
+    const auto isNodata = [&](double value) {
+        if (hasNodata == 0) return false;
+        if (nodataIsNan) return std::isnan(value);
+        if (type == GDT_Float32) return static_cast<float>(value) == static_cast<float>(nodata);
+        return value == nodata;
+    };
+
+    int blockColumns = 0;
+    int blockRows = 0;
+    band.GetBlockSize(&blockColumns, &blockRows);
+    int chunkRows = static_cast<int>(std::max<std::int64_t>(1, chunkPixels / std::max(1, plan.columns)));
+    if (!plan.coarsened && blockRows > 0 && chunkRows > blockRows) chunkRows -= chunkRows % blockRows; // whole blocks
+    chunkRows = std::min(chunkRows, plan.rows);
+
+    std::vector<double> buffer(static_cast<std::size_t>(chunkRows) * static_cast<std::size_t>(plan.columns));
+    std::unordered_map<std::int32_t, std::int64_t> counts;
+    std::int64_t nanPixels = 0;
+    std::int64_t outsidePixels = 0;
+    const double rowScale = static_cast<double>(plan.sourceRows) / plan.rows;
+
+    for (int firstRow = 0; firstRow < plan.rows; firstRow += chunkRows) {
+        const int rowsHere = std::min(chunkRows, plan.rows - firstRow);
+        GDALRasterIOExtraArg extra;
+        INIT_RASTERIO_EXTRA_ARG(extra);
+        int sourceFirstRow = firstRow;
+        int sourceRowCount = rowsHere;
+        if (plan.coarsened) {
+            // Mode keeps a real class (no averaging of codes) and ignores nodata.
+            extra.eResampleAlg = GRIORA_Mode;
+            extra.bFloatingPointWindowValidity = TRUE;
+            extra.dfXOff = 0.0;
+            extra.dfXSize = plan.sourceColumns;
+            extra.dfYOff = firstRow * rowScale;
+            extra.dfYSize = rowsHere * rowScale;
+            sourceFirstRow = static_cast<int>(std::floor(extra.dfYOff));
+            const int lastRow = std::min(plan.sourceRows, static_cast<int>(std::ceil(extra.dfYOff + extra.dfYSize)));
+            sourceRowCount = std::max(1, lastRow - sourceFirstRow);
+            extra.dfYSize = std::min(extra.dfYSize, plan.sourceRows - extra.dfYOff);
+        }
+        if (band.RasterIO(GF_Read, 0, sourceFirstRow, plan.sourceColumns, sourceRowCount, buffer.data(), plan.columns,
+                          rowsHere, GDT_Float64, 0, 0, &extra)
+            != CE_None) {
+            return Status::failure(path + ": read failed at row " + std::to_string(sourceFirstRow) + " of band "
+                                   + std::to_string(bandNumber) + QuietGdalErrors::detail());
+        }
+        for (int row = 0; row < rowsHere; ++row) {
+            for (int column = 0; column < plan.columns; ++column) {
+                const double value = buffer[static_cast<std::size_t>(row) * static_cast<std::size_t>(plan.columns)
+                                            + static_cast<std::size_t>(column)];
+                const std::size_t index = grid.index(column, firstRow + row);
+                if (isNodata(value) || std::isnan(value)) {
+                    if (!isNodata(value)) ++nanPixels;
+                    grid.outside[index] = 1;
+                    ++outsidePixels;
+                    continue;
+                }
+                const std::string where = " at column " + std::to_string(column) + ", row " + std::to_string(firstRow + row);
+                if (floating && value != std::floor(value)) {
+                    return Status::failure(path + ": band " + std::to_string(bandNumber) + " holds the fractional value "
+                                           + std::to_string(value) + where
+                                           + "; a land-cover raster needs integer class values");
+                }
+                if (value < -2147483648.0 || value > 2147483647.0) {
+                    return Status::failure(path + ": value " + std::to_string(value) + where
+                                           + " does not fit a 32-bit class value (is the nodata value set?)");
+                }
+                const auto classValue = static_cast<std::int32_t>(value);
+                grid.values[index] = classValue;
+                ++counts[classValue];
+            }
+        }
+    }
+    if (outsidePixels == 0) grid.outside.clear();
+    if (nanPixels > 0 && !raster.warpedFromGeographic) {
+        raster.warnings.push_back(std::to_string(nanPixels) + " NaN pixels treated as outside the area");
+    }
+    raster.classPixelCounts = std::map<std::int32_t, std::int64_t>(counts.begin(), counts.end());
+    return {};
+}
+
+void flipRows(ClassGrid& grid) {
+    const auto width = static_cast<std::size_t>(grid.columns);
+    for (int top = 0, bottom = grid.rows - 1; top < bottom; ++top, --bottom) {
+        std::swap_ranges(grid.values.begin() + static_cast<std::ptrdiff_t>(grid.index(0, top)),
+                         grid.values.begin() + static_cast<std::ptrdiff_t>(grid.index(0, top) + width),
+                         grid.values.begin() + static_cast<std::ptrdiff_t>(grid.index(0, bottom)));
+        if (!grid.outside.empty()) {
+            std::swap_ranges(grid.outside.begin() + static_cast<std::ptrdiff_t>(grid.index(0, top)),
+                             grid.outside.begin() + static_cast<std::ptrdiff_t>(grid.index(0, top) + width),
+                             grid.outside.begin() + static_cast<std::ptrdiff_t>(grid.index(0, bottom)));
+        }
+    }
+}
+
+std::string formatMetres(double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+} // namespace
+
+Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLoadOptions& options) {
+    if (Status readable = checkFileReadable(path); !readable) return RasterResult::failure(readable.error());
+    internal::ensureGdalRegistered();
+    QuietGdalErrors quiet;
+
+    DatasetPointer source(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    if (!source) return RasterResult::failure(path + ": not a raster GDAL can read" + quiet.detail());
+    const int bandCount = source->GetRasterCount();
+    if (bandCount < 1) return RasterResult::failure(path + ": has no raster bands");
+    if (options.band < 1 || options.band > bandCount) {
+        return RasterResult::failure(path + ": band " + std::to_string(options.band) + " requested but the file has "
+                                     + std::to_string(bandCount) + (bandCount == 1 ? " band" : " bands"));
+    }
+    GDALRasterBand* sourceBand = source->GetRasterBand(options.band);
+    const GDALDataType type = sourceBand->GetRasterDataType();
+    const std::string typeName = GDALGetDataTypeName(type);
+    if (type == GDT_Byte && sourceBand->GetColorTable() == nullptr
+        && (isColourChannel(sourceBand->GetColorInterpretation()) || bandCount == 3 || bandCount == 4)) {
+        return RasterResult::failure(path + ": looks like an RGB image (" + std::to_string(bandCount)
+                                     + " Byte bands, no palette), not a land-cover class raster; classify it first");
+    }
+    if (isComplexType(type) || type == GDT_Unknown) {
+        return RasterResult::failure(path + ": band " + std::to_string(options.band) + " is " + typeName
+                                     + "; a land-cover raster needs one integer band");
+    }
+
+    LoadedRaster raster;
+    raster.path = path;
+    raster.band = options.band;
+    raster.sourceColumns = source->GetRasterXSize();
+    raster.sourceRows = source->GetRasterYSize();
+
+    double transform[6] = {0.0, 1.0, 0.0, 0.0, 0.0, -1.0};
+    const bool georeferenced = source->GetGeoTransform(transform) == CE_None;
+    if (!georeferenced) {
+        // Pixel coordinates, row 0 at the top: y runs from rows down to 0.
+        transform[0] = 0.0;
+        transform[1] = 1.0;
+        transform[3] = raster.sourceRows;
+        transform[5] = -1.0;
+        raster.warnings.push_back("no georeferencing: planned in pixel units taken as metres");
+    }
+    if (transform[2] != 0.0 || transform[4] != 0.0) {
+        return RasterResult::failure(path + ": the geotransform is rotated or sheared; warp it to a north-up grid first");
+    }
+    if (!(transform[1] > 0.0) || transform[5] == 0.0 || !std::isfinite(transform[1]) || !std::isfinite(transform[5])) {
+        return RasterResult::failure(path + ": pixel size " + std::to_string(transform[1]) + " x "
+                                     + std::to_string(transform[5]) + " is not usable (must run west to east)");
+    }
+
+    std::unique_ptr<OGRSpatialReference> planningCrs;
+    if (const OGRSpatialReference* fileCrs = source->GetSpatialRef(); fileCrs != nullptr && georeferenced) {
+        planningCrs.reset(fileCrs->Clone());
+        planningCrs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+        const char* crsName = planningCrs->GetName();
+        raster.sourceCrsName = crsName == nullptr ? "unnamed CRS" : crsName;
+    } else if (georeferenced) {
+        raster.warnings.push_back("no CRS: coordinates taken as metres; exports cannot be placed on the Earth");
+    }
+
+    GDALDataset* readDataset = source.get();
+    int readBand = options.band;
+    // Declared after `source` so they close first: the warped VRT reads from them.
+    DatasetPointer selectedBand;
+    DatasetPointer warped;
+    double metresPerUnit = 1.0;
+    if (planningCrs && planningCrs->IsGeographic()) {
+        const double centreLongitude = transform[0] + transform[1] * raster.sourceColumns / 2.0;
+        const double centreLatitude = transform[3] + transform[5] * raster.sourceRows / 2.0;
+        auto utm = utmForCentre(*planningCrs, centreLongitude, centreLatitude);
+        std::string error;
+        warped = warpToUtm(*source, options.band, *utm, selectedBand, error);
+        if (!warped) return RasterResult::failure(path + ": " + error);
+        raster.warpedFromGeographic = true;
+        raster.warnings.push_back("geographic CRS " + raster.sourceCrsName + ": planned in " + utm->GetName()
+                                  + " (nearest-neighbour warp)");
+        planningCrs = std::move(utm);
+        readDataset = warped.get();
+        readBand = 1;
+        if (readDataset->GetGeoTransform(transform) != CE_None) {
+            return RasterResult::failure(path + ": the warped grid has no geotransform" + quiet.detail());
+        }
+    } else if (planningCrs && planningCrs->IsGeocentric()) {
+        return RasterResult::failure(path + ": geocentric CRS " + raster.sourceCrsName + " cannot be planned on");
+    } else if (planningCrs) {
+        metresPerUnit = planningCrs->GetLinearUnits(nullptr);
+        if (!std::isfinite(metresPerUnit) || metresPerUnit <= 0.0) metresPerUnit = 1.0;
+        if (metresPerUnit != 1.0) {
+            const char* unitName = nullptr;
+            planningCrs->GetLinearUnits(&unitName);
+            raster.warnings.push_back(std::string("CRS units are ") + (unitName ? unitName : "not metres")
+                                      + ": converted to metres (x " + formatMetres(metresPerUnit) + ")");
+        }
+    }
+
+    GDALRasterBand* band = readDataset->GetRasterBand(readBand);
+    const ReadPlan plan = planRead(readDataset->GetRasterXSize(), readDataset->GetRasterYSize(), options.pixelBudget);
+    if (Status read = readClasses(*band, plan, path, options.band, raster); !read) return RasterResult::failure(read.error());
+
+    const double columnScale = static_cast<double>(plan.sourceColumns) / plan.columns;
+    const double rowScale = static_cast<double>(plan.sourceRows) / plan.rows;
+    ClassGrid& grid = raster.grid;
+    grid.pixelWidth = transform[1] * columnScale * metresPerUnit;
+    grid.pixelHeight = std::abs(transform[5]) * rowScale * metresPerUnit;
+    grid.originX = transform[0] * metresPerUnit;
+    if (transform[5] > 0.0) {
+        // South-up file: row 0 is the southern edge; flip so row 0 is north as ClassGrid expects.
+        grid.originY = (transform[3] + transform[5] * plan.sourceRows) * metresPerUnit;
+        flipRows(grid);
+    } else {
+        grid.originY = transform[3] * metresPerUnit;
+    }
+    raster.coarsened = plan.coarsened;
+    raster.effectiveResolutionMetres = std::max(grid.pixelWidth, grid.pixelHeight);
+    if (plan.coarsened) {
+        raster.warnings.push_back("raster has " + std::to_string(plan.sourceColumns) + " x " + std::to_string(plan.sourceRows)
+                                  + " pixels, above the budget of " + std::to_string(options.pixelBudget)
+                                  + ": read at " + formatMetres(raster.effectiveResolutionMetres)
+                                  + " m resolution (mode resampling)");
+    }
+
+    if (planningCrs) {
+        auto reference = GeoReference::fromDefinition(internal::wktOf(*planningCrs));
+        if (reference) {
+            raster.georeference = std::move(reference.value());
+        } else {
+            raster.warnings.push_back("CRS " + raster.sourceCrsName + " could not be used: " + reference.error());
+        }
+    }
+    internal::readRasterLegend(*sourceBand, path, raster);
+    return raster;
+}
+
+} // namespace mcpp::io

@@ -1,0 +1,50 @@
+#include "io/PlanExport.hpp"
+
+#include "io/internal/JsonValue.hpp"
+#include "io/internal/TextFiles.hpp"
+
+namespace mcpp::io {
+
+using internal::JsonValue;
+
+Status writeReportJson(const ExportContext& context, const std::string& path) {
+    const PlanMetrics& metrics = context.plan.metrics;
+    JsonValue root = JsonValue::object();
+    root.add("planner", context.plan.planner);
+    JsonValue& robots = root.add("robots", JsonValue::array());
+    for (const RobotMetrics& robot : metrics.robots) {
+        JsonValue& item = robots.push(JsonValue::object());
+        item.add("robot", robot.robot);
+        item.add("cells", robot.cells);
+        item.add("area_m2", robot.areaSquareMetres);
+        item.add("length_m", robot.lengthMetres);
+        item.add("time_s", robot.timeSeconds);
+        item.add("turns", robot.turns);
+        item.add("cost_s", robot.costSeconds);
+    }
+    root.add("makespan_s", metrics.makespanSeconds);
+    root.add("lower_bound_s", metrics.lowerBoundSeconds);
+    root.add("ratio", metrics.ratio);
+    root.add("covered_fraction", metrics.coveredFraction);
+    root.add("passable_area_m2", metrics.passableAreaSquareMetres);
+    root.add("covered_area_m2", metrics.coveredAreaSquareMetres);
+    root.add("unreachable_area_m2", metrics.unreachableAreaSquareMetres);
+    root.add("repeated_fraction", metrics.repeatedFraction);
+    JsonValue& timings = root.add("timings_ms", JsonValue::object());
+    for (const auto& [stage, milliseconds] : metrics.stageMilliseconds) timings.add(stage, milliseconds);
+    JsonValue& warnings = root.add("warnings", JsonValue::array());
+    for (const std::string& warning : context.plan.warnings) warnings.push(warning);
+    return internal::writeFileAtomically(path, root.toText());
+}
+
+Status writeReportCsv(const ExportContext& context, const std::string& path) {
+    std::string text = "robot,cells,area_m2,length_m,time_s,turns,cost_s\n";
+    for (const RobotMetrics& robot : context.plan.metrics.robots) {
+        text += std::to_string(robot.robot) + "," + std::to_string(robot.cells) + "," + internal::formatShortest(robot.areaSquareMetres)
+                + "," + internal::formatShortest(robot.lengthMetres) + "," + internal::formatShortest(robot.timeSeconds) + ","
+                + std::to_string(robot.turns) + "," + internal::formatShortest(robot.costSeconds) + "\n";
+    }
+    return internal::writeFileAtomically(path, text);
+}
+
+} // namespace mcpp::io

@@ -1,0 +1,66 @@
+#include "io/internal/GdalSupport.hpp"
+
+#include <mutex>
+
+namespace mcpp::io::internal {
+
+void ensureGdalRegistered() {
+    static std::once_flag once;
+    std::call_once(once, [] { GDALAllRegister(); });
+}
+
+QuietGdalErrors::QuietGdalErrors() {
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    CPLErrorReset();
+}
+
+QuietGdalErrors::~QuietGdalErrors() { CPLPopErrorHandler(); }
+
+std::string QuietGdalErrors::lastMessage() {
+    const char* message = CPLGetLastErrorMsg();
+    return message == nullptr ? std::string() : std::string(message);
+}
+
+std::string QuietGdalErrors::detail() {
+    const std::string message = lastMessage();
+    return message.empty() ? std::string() : ": " + message;
+}
+
+void DatasetCloser::operator()(GDALDataset* dataset) const {
+    if (dataset != nullptr) GDALClose(GDALDataset::ToHandle(dataset));
+}
+
+std::unique_ptr<OGRSpatialReference> makeSpatialReference() {
+    auto reference = std::make_unique<OGRSpatialReference>();
+    reference->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    return reference;
+}
+
+std::unique_ptr<OGRSpatialReference> spatialReferenceFromDefinition(const std::string& definition) {
+    if (definition.empty()) return nullptr;
+    ensureGdalRegistered();
+    auto reference = makeSpatialReference();
+    if (reference->SetFromUserInput(definition.c_str(), OGRSpatialReference::SET_FROM_USER_INPUT_LIMITATIONS_get())
+        != OGRERR_NONE) {
+        return nullptr;
+    }
+    reference->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    return reference;
+}
+
+std::unique_ptr<OGRSpatialReference> wgs84SpatialReference() {
+    auto reference = makeSpatialReference();
+    reference->SetWellKnownGeogCS("WGS84");
+    return reference;
+}
+
+std::string wktOf(const OGRSpatialReference& reference) {
+    char* text = nullptr;
+    const char* const options[] = {"FORMAT=WKT2_2019", "MULTILINE=NO", nullptr};
+    std::string result;
+    if (reference.exportToWkt(&text, options) == OGRERR_NONE && text != nullptr) result = text;
+    CPLFree(text);
+    return result;
+}
+
+} // namespace mcpp::io::internal

@@ -1,0 +1,43 @@
+#pragma once
+
+// Private to mcpp_io: GDAL types may appear here, never in io's public headers.
+
+#include <cpl_error.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <memory>
+#include <string>
+
+namespace mcpp::io::internal {
+
+// Registers GDAL's drivers once per process.
+void ensureGdalRegistered();
+
+// Keeps GDAL's messages off stderr while alive and remembers the last one for our own error text.
+class QuietGdalErrors {
+public:
+    QuietGdalErrors();
+    ~QuietGdalErrors();
+    QuietGdalErrors(const QuietGdalErrors&) = delete;
+    QuietGdalErrors& operator=(const QuietGdalErrors&) = delete;
+
+    // GDAL's last error message, or an empty string.
+    [[nodiscard]] static std::string lastMessage();
+    // ": <message>" when GDAL said something, else empty: for appending to our messages.
+    [[nodiscard]] static std::string detail();
+};
+
+struct DatasetCloser {
+    void operator()(GDALDataset* dataset) const;
+};
+using DatasetPointer = std::unique_ptr<GDALDataset, DatasetCloser>;
+
+// Every spatial reference mcpp creates uses x = easting / longitude, y = northing / latitude.
+[[nodiscard]] std::unique_ptr<OGRSpatialReference> makeSpatialReference();
+// Null when OSR does not understand the definition.
+[[nodiscard]] std::unique_ptr<OGRSpatialReference> spatialReferenceFromDefinition(const std::string& definition);
+[[nodiscard]] std::unique_ptr<OGRSpatialReference> wgs84SpatialReference();
+[[nodiscard]] std::string wktOf(const OGRSpatialReference& reference);
+
+} // namespace mcpp::io::internal

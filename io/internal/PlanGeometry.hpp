@@ -1,0 +1,55 @@
+#pragma once
+
+#include "core/Plan.hpp"
+#include "io/GeoReference.hpp"
+#include "io/Result.hpp"
+
+#include <ogr_geometry.h>
+
+#include <memory>
+#include <vector>
+
+namespace mcpp::io::internal {
+
+struct RegionFeature {
+    int robot = 0;
+    std::unique_ptr<OGRGeometry> geometry; // (Multi)Polygon, CRS units
+    double costSeconds = 0.0;
+    double areaSquareMetres = 0.0;
+    int cells = 0;
+};
+
+struct PathFeature {
+    int robot = 0;
+    std::unique_ptr<OGRLineString> geometry;
+    double lengthMetres = 0.0;
+    double timeSeconds = 0.0;
+    int turns = 0;
+};
+
+struct StartFeature {
+    int robot = 0;
+    std::unique_ptr<OGRPoint> geometry;
+};
+
+struct UnreachableFeature {
+    std::unique_ptr<OGRPolygon> geometry;
+    double areaSquareMetres = 0.0;
+};
+
+// The plan's vector content in the raster CRS's units (planning metres / metresPerUnit).
+struct PlanFeatures {
+    std::vector<RegionFeature> regions; // one per robot, also for robots without cells (empty geometry)
+    std::vector<PathFeature> paths;
+    std::vector<StartFeature> starts;
+    std::vector<UnreachableFeature> unreachable; // one per connected part
+};
+
+[[nodiscard]] Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit);
+// The square of one quadtree cell in CRS units, with corners snapped to the bottom-level grid so that
+// neighbouring cells share exactly the same edge coordinates.
+[[nodiscard]] std::unique_ptr<OGRPolygon> cellSquare(const QuadTree& tree, const QuadCell& cell, double metresPerUnit);
+// Number of robots the plan describes.
+[[nodiscard]] int robotCount(const Plan& plan);
+
+} // namespace mcpp::io::internal

@@ -1,0 +1,109 @@
+#include "io/internal/TextFiles.hpp"
+
+#include <QFile>
+#include <QSaveFile>
+#include <QString>
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+
+namespace mcpp::io::internal {
+
+Status writeFileAtomically(const std::string& path, const std::string& contents) {
+    QSaveFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::WriteOnly)) {
+        return Status::failure(path + ": cannot write: " + file.errorString().toStdString());
+    }
+    const auto size = static_cast<qint64>(contents.size());
+    if (file.write(contents.data(), size) != size) {
+        const std::string reason = file.errorString().toStdString();
+        file.cancelWriting();
+        return Status::failure(path + ": write failed: " + reason);
+    }
+    if (!file.commit()) return Status::failure(path + ": could not save: " + file.errorString().toStdString());
+    return {};
+}
+
+Result<std::string> readWholeFile(const std::string& path) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) return Result<std::string>::failure(path + ": file not found");
+    if (std::filesystem::is_directory(path, error)) {
+        return Result<std::string>::failure(path + ": is a folder, not a file");
+    }
+    QFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::ReadOnly)) {
+        return Result<std::string>::failure(path + ": cannot read: " + file.errorString().toStdString());
+    }
+    const QByteArray bytes = file.readAll();
+    return std::string(bytes.constData(), static_cast<std::size_t>(bytes.size()));
+}
+
+std::string formatShortest(double value) {
+    std::array<char, 64> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    return std::string(buffer.data(), result.ptr);
+}
+
+std::string formatFixed(double value, int decimals) {
+    std::array<char, 64> buffer{};
+    const auto result =
+        std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::fixed, decimals);
+    return std::string(buffer.data(), result.ptr);
+}
+
+bool splitCsvLine(const std::string& line, std::vector<std::string>& fields) {
+    fields.clear();
+    std::string field;
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char character = line[i];
+        if (quoted) {
+            if (character == '"') {
+                if (i + 1 < line.size() && line[i + 1] == '"') {
+                    field += '"';
+                    ++i;
+                } else {
+                    quoted = false;
+                }
+            } else {
+                field += character;
+            }
+        } else if (character == '"') {
+            quoted = true;
+        } else if (character == ',') {
+            fields.push_back(field);
+            field.clear();
+        } else if (character != '\r') {
+            field += character;
+        }
+    }
+    fields.push_back(field);
+    return !quoted;
+}
+
+std::string quoteCsvField(const std::string& field) {
+    if (field.find_first_of(",\"\n\r") == std::string::npos && trimmed(field) == field) return field;
+    std::string out = "\"";
+    for (const char character : field) {
+        if (character == '"') out += '"';
+        out += character;
+    }
+    return out + "\"";
+}
+
+std::string trimmed(const std::string& text) {
+    const auto begin = text.find_first_not_of(" \t\r\n");
+    if (begin == std::string::npos) return {};
+    const auto end = text.find_last_not_of(" \t\r\n");
+    return text.substr(begin, end - begin + 1);
+}
+
+std::string lowercase(std::string text) {
+    for (char& character : text) character = static_cast<char>(std::tolower(static_cast<unsigned char>(character)));
+    return text;
+}
+
+} // namespace mcpp::io::internal

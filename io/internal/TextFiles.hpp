@@ -1,0 +1,27 @@
+#pragma once
+
+#include "io/Result.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mcpp::io::internal {
+
+// Writes the whole file or nothing (QSaveFile): a failed save leaves an older file untouched.
+[[nodiscard]] Status writeFileAtomically(const std::string& path, const std::string& contents);
+// The whole file, or an error naming it.
+[[nodiscard]] Result<std::string> readWholeFile(const std::string& path);
+
+// Shortest decimal text that reads back as the same double.
+[[nodiscard]] std::string formatShortest(double value);
+// printf-style fixed decimals, e.g. formatFixed(1.5, 6) == "1.500000".
+[[nodiscard]] std::string formatFixed(double value, int decimals);
+
+// One CSV record split into fields (RFC 4180 quoting; no line breaks inside fields).
+// Returns false on an unterminated quote.
+[[nodiscard]] bool splitCsvLine(const std::string& line, std::vector<std::string>& fields);
+[[nodiscard]] std::string quoteCsvField(const std::string& field);
+[[nodiscard]] std::string trimmed(const std::string& text);
+[[nodiscard]] std::string lowercase(std::string text);
+
+} // namespace mcpp::io::internal

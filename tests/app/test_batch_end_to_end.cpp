@@ -1,0 +1,373 @@
+#include "core/ClassTable.hpp"
+#include "io/ClassTableSources.hpp"
+#include "io/LoadedRaster.hpp"
+#include "io/Mission.hpp"
+#include "tests/support/TestData.hpp"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    QString standardOutput;
+    QString standardError;
+};
+
+QString samplePath(const QString& relative) {
+    return QString::fromStdString(mcpp::test::sourcePath("samples/" + relative.toStdString()));
+}
+
+QJsonObject readJsonObject(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    QJsonParseError error;
+    const auto document = QJsonDocument::fromJson(file.readAll(), &error);
+    if (error.error != QJsonParseError::NoError) return {};
+    return document.object();
+}
+
+bool writeText(const QString& path, const QByteArray& text) {
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
+}
+
+bool nearlyEqual(double a, double b, double relative = 1e-6) {
+    return std::abs(a - b) <= relative * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+// The synthetic sample's lake and nodata corner, in its CRS (EPSG:32633); see make_synthetic_map.py.
+const QString syntheticOnLake = QStringLiteral("431300,5301110");
+const QString syntheticOnNodata = QStringLiteral("431470,5301310");
+
+} // namespace
+
+class TestBatchEndToEnd : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void samplesAreValidMissions_data();
+    void samplesAreValidMissions();
+    void missionFileWritesEveryOutput();
+    void flagMissionWithLongitudeLatitudeStarts();
+    void rerunWithFewerRobotsRemovesTheirFiles();
+    void readmeSampleRuns();
+    void badInputExitsTwoWithOneLine_data();
+    void badInputExitsTwoWithOneLine();
+
+private:
+    RunResult runMcpp(const QStringList& arguments, int timeoutMilliseconds = 600000) const;
+    void checkOutputs(const QString& directory, int robots, const RunResult& run) const;
+    QStringList syntheticFlags() const;
+
+    QString executable_;
+    QTemporaryDir scratch_;
+};
+
+void TestBatchEndToEnd::initTestCase() {
+    executable_ = qEnvironmentVariable("MCPP_EXECUTABLE");
+    QVERIFY2(!executable_.isEmpty(), "MCPP_EXECUTABLE is not set; run through ctest");
+    QVERIFY2(QFileInfo(executable_).isExecutable(), qPrintable(executable_));
+    QVERIFY(scratch_.isValid());
+}
+
+RunResult TestBatchEndToEnd::runMcpp(const QStringList& arguments, int timeoutMilliseconds) const {
+    QProcess process;
+    process.start(executable_, arguments);
+    RunResult result;
+    if (!process.waitForFinished(timeoutMilliseconds)) {
+        process.kill();
+        process.waitForFinished();
+        result.standardError = QStringLiteral("timed out");
+        return result;
+    }
+    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    result.standardOutput = QString::fromUtf8(process.readAllStandardOutput());
+    result.standardError = QString::fromUtf8(process.readAllStandardError());
+    return result;
+}
+
+QStringList TestBatchEndToEnd::syntheticFlags() const {
+    return {"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes", samplePath("synthetic/classes.csv")};
+}
+
+void TestBatchEndToEnd::samplesAreValidMissions_data() {
+    QTest::addColumn<QString>("folder");
+    QTest::newRow("zion-nlcd") << "zion-nlcd";
+    QTest::newRow("spain-corine") << "spain-corine";
+    QTest::newRow("synthetic") << "synthetic";
+}
+
+// Every sample must load, carry the same table as its CSV, have 3-6 robots and start them on passable land.
+void TestBatchEndToEnd::samplesAreValidMissions() {
+    QFETCH(QString, folder);
+    const auto missionPath = samplePath(folder + "/mission.json").toStdString();
+    auto mission = mcpp::io::loadMission(missionPath);
+    QVERIFY2(mission.ok(), mission.ok() ? "" : mission.error().c_str());
+    QVERIFY(mission.value().robots.size() >= 3 && mission.value().robots.size() <= 6);
+    QVERIFY(QFileInfo::exists(samplePath(folder + "/SOURCE.md")));
+
+    auto csv = mcpp::io::loadClassTableCsv(samplePath(folder + "/classes.csv").toStdString());
+    QVERIFY2(csv.ok(), csv.ok() ? "" : csv.error().c_str());
+    QVERIFY(csv.value() == mission.value().classes);
+
+    auto raster = mcpp::io::loadLandCoverRaster(mcpp::io::resolveRasterPath(mission.value(), missionPath));
+    QVERIFY2(raster.ok(), raster.ok() ? "" : raster.error().c_str());
+    const auto reconciled = mcpp::io::reconcileRasterWithTable(raster.value(), mission.value().classes, false);
+    QVERIFY2(reconciled.ok(), reconciled.error().c_str());
+    const auto& grid = raster.value().grid;
+    for (const auto& robot : mission.value().robots) {
+        QVERIFY(robot.startCrs.empty());
+        const int column = static_cast<int>(std::floor((robot.start.x - grid.originX) / grid.pixelWidth));
+        const int row = static_cast<int>(std::floor((grid.originY - robot.start.y) / grid.pixelHeight));
+        QVERIFY2(column >= 0 && row >= 0 && column < grid.columns && row < grid.rows, robot.name.c_str());
+        QVERIFY2(!grid.isOutside(column, row), robot.name.c_str());
+        const auto* landCover = mission.value().classes.find(grid.valueAt(column, row));
+        QVERIFY2(landCover != nullptr && landCover->isTraversable(), robot.name.c_str());
+    }
+}
+
+void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const RunResult& run) const {
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp: planned %1 robots").arg(robots)), qPrintable(run.standardOutput));
+    const QDir out(directory);
+    QStringList expected{"plan.geojson", "report.json", "plan.png"};
+    for (int robot = 0; robot < robots; ++robot) {
+        for (const char* extension : {".plan", ".waypoints", ".csv"}) {
+            expected << QStringLiteral("robot_%1%2").arg(robot).arg(QLatin1String(extension));
+        }
+    }
+    for (const auto& name : expected) {
+        QVERIFY2(QFileInfo(out.filePath(name)).size() > 0, qPrintable(name));
+    }
+    QVERIFY(!QFileInfo::exists(out.filePath(QStringLiteral("robot_%1.plan").arg(robots))));
+
+    // plan.geojson: a WGS84 FeatureCollection with one region, path and start per robot.
+    const auto geoJson = readJsonObject(out.filePath("plan.geojson"));
+    QCOMPARE(geoJson.value("type").toString(), QStringLiteral("FeatureCollection"));
+    const auto features = geoJson.value("features").toArray();
+    QVERIFY(!features.isEmpty());
+    QMap<QString, QSet<int>> robotsByKind;
+    for (const auto& value : features) {
+        const auto feature = value.toObject();
+        QCOMPARE(feature.value("type").toString(), QStringLiteral("Feature"));
+        const auto properties = feature.value("properties").toObject();
+        const auto kind = properties.value("kind").toString();
+        const auto geometryType = feature.value("geometry").toObject().value("type").toString();
+        if (kind == "region") {
+            QVERIFY(geometryType == "MultiPolygon" || geometryType == "Polygon");
+            QVERIFY(properties.value("area_m2").toDouble() > 0.0);
+            QVERIFY(properties.value("cells").toInt() > 0);
+            QVERIFY(properties.value("cost_s").toDouble() > 0.0);
+        } else if (kind == "path") {
+            QCOMPARE(geometryType, QStringLiteral("LineString"));
+            QVERIFY(properties.value("length_m").toDouble() > 0.0);
+            QVERIFY(properties.value("time_s").toDouble() > 0.0);
+            QVERIFY(properties.value("turns").toInt() >= 0);
+            const auto coordinates = feature.value("geometry").toObject().value("coordinates").toArray();
+            QVERIFY(coordinates.size() >= 2);
+            const auto first = coordinates.first().toArray();
+            QVERIFY(std::abs(first.at(0).toDouble()) <= 180.0 && std::abs(first.at(1).toDouble()) <= 90.0);
+        } else if (kind == "start") {
+            QCOMPARE(geometryType, QStringLiteral("Point"));
+        } else {
+            QCOMPARE(kind, QStringLiteral("unreachable"));
+            continue;
+        }
+        robotsByKind[kind].insert(properties.value("robot").toInt(-1));
+    }
+    QSet<int> everyRobot;
+    for (int robot = 0; robot < robots; ++robot) everyRobot.insert(robot);
+    for (const char* kind : {"region", "path", "start"}) QCOMPARE(robotsByKind.value(kind), everyRobot);
+
+    // report.json: per robot figures and the fleet's, with ratio = makespan / lower bound.
+    const auto report = readJsonObject(out.filePath("report.json"));
+    const auto robotReports = report.value("robots").toArray();
+    QCOMPARE(robotReports.size(), robots);
+    double longest = 0.0;
+    for (int robot = 0; robot < robots; ++robot) {
+        const auto item = robotReports.at(robot).toObject();
+        QCOMPARE(item.value("robot").toInt(-1), robot);
+        QVERIFY(item.value("cells").toInt() > 0);
+        QVERIFY(item.value("length_m").toDouble() > 0.0);
+        longest = std::max(longest, item.value("time_s").toDouble());
+    }
+    const double makespan = report.value("makespan_s").toDouble();
+    const double lowerBound = report.value("lower_bound_s").toDouble();
+    QVERIFY(lowerBound > 0.0);
+    QVERIFY(nearlyEqual(makespan, longest));
+    QVERIFY2(nearlyEqual(report.value("ratio").toDouble(), makespan / lowerBound),
+             qPrintable(QStringLiteral("ratio %1, makespan %2, lower bound %3")
+                            .arg(report.value("ratio").toDouble()).arg(makespan).arg(lowerBound)));
+    const double covered = report.value("covered_fraction").toDouble();
+    QVERIFY(covered > 0.5 && covered <= 1.0 + 1e-9);
+    QCOMPARE(report.value("planner").toString(), QStringLiteral("mcpp-mlct"));
+
+    // Waypoint files have the structure their readers expect.
+    for (int robot = 0; robot < robots; ++robot) {
+        const auto plan = readJsonObject(out.filePath(QStringLiteral("robot_%1.plan").arg(robot)));
+        QCOMPARE(plan.value("fileType").toString(), QStringLiteral("Plan"));
+        QFile waypoints(out.filePath(QStringLiteral("robot_%1.waypoints").arg(robot)));
+        QVERIFY(waypoints.open(QIODevice::ReadOnly));
+        QCOMPARE(waypoints.readLine().trimmed(), QByteArray("QGC WPL 110"));
+        QFile csv(out.filePath(QStringLiteral("robot_%1.csv").arg(robot)));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        QVERIFY(csv.readAll().count('\n') >= 3); // header and at least two waypoints
+    }
+    const QImage image(out.filePath("plan.png"));
+    QVERIFY(!image.isNull());
+    QVERIFY(image.width() > 100 && image.height() > 100);
+}
+
+void TestBatchEndToEnd::missionFileWritesEveryOutput() {
+    const QString out = scratch_.filePath("mission-run/nested/out"); // folders are created as needed
+    const auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", out});
+    checkOutputs(out, 3, run);
+    if (QTest::currentTestFailed()) return;
+    // Progress goes to stderr as short "mcpp: <stage> <percent>%" lines.
+    const auto lines = run.standardError.split('\n', Qt::SkipEmptyParts);
+    QVERIFY(!lines.isEmpty());
+    QVERIFY(lines.size() < 200);
+    for (const auto& line : lines) QVERIFY2(line.startsWith(QStringLiteral("mcpp: ")), qPrintable(line));
+    QVERIFY(run.standardError.contains(QStringLiteral("writing outputs 100%")));
+}
+
+void TestBatchEndToEnd::flagMissionWithLongitudeLatitudeStarts() {
+    // The synthetic mission's three starts, converted to WGS84 longitude, latitude with gdaltransform.
+    const QString out = scratch_.filePath("flag-run");
+    auto arguments = syntheticFlags();
+    arguments << "--start" << "14.0780530,47.8589976" << "--start" << "14.0805547,47.8611771"
+              << "--start" << "14.0831295,47.8592182" << "--start-crs" << "EPSG:4326" << "--open-paths"
+              << "--planner" << "mcpp-mlct" << "--band" << "1" << "--out" << out;
+    auto run = runMcpp(arguments);
+    checkOutputs(out, 3, run);
+    if (QTest::currentTestFailed()) return;
+    QVERIFY(!run.standardError.isEmpty());
+
+    // --quiet silences progress and the summary.
+    arguments << "--quiet";
+    run = runMcpp(arguments);
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.standardError.isEmpty(), qPrintable(run.standardError));
+    QVERIFY2(run.standardOutput.isEmpty(), qPrintable(run.standardOutput));
+}
+
+void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
+    const QString out = scratch_.filePath("rerun");
+    auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", out, "--quiet"});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY(QFileInfo::exists(out + "/robot_2.plan"));
+    auto arguments = syntheticFlags();
+    arguments << "--start" << "431040,5301040" << "--start" << "431420,5301060" << "--out" << out;
+    run = runMcpp(arguments);
+    checkOutputs(out, 2, run);
+    QVERIFY(!QFileInfo::exists(out + "/robot_2.waypoints"));
+    QVERIFY(!QFileInfo::exists(out + "/robot_2.csv"));
+}
+
+void TestBatchEndToEnd::readmeSampleRuns() {
+    // The README's headless command, on the real NLCD sample.
+    const QString out = scratch_.filePath("zion");
+    const auto run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--out", out});
+    checkOutputs(out, 5, run);
+}
+
+void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QStringList>("mentions"); // every one must appear in the line
+    const auto flags = syntheticFlags();
+    const QString out = scratch_.filePath("never-written");
+    const QString mission = samplePath("synthetic/mission.json");
+
+    QTest::newRow("start in nodata") << (flags + QStringList{"--start", syntheticOnNodata, "--out", out})
+                                     << QStringList{"--start 1", "nodata"};
+    QTest::newRow("start on the lake") << (flags + QStringList{"--start", "431040,5301040", "--start", syntheticOnLake, "--out", out})
+                                       << QStringList{"--start 2", "Lake"};
+    QTest::newRow("start outside the raster") << (flags + QStringList{"--start", "0,0", "--out", out})
+                                              << QStringList{"--start 1", "outside the raster"};
+    QTest::newRow("missing raster")
+        << QStringList{"--batch", "--raster", scratch_.filePath("missing.tif"), "--preset", "nlcd", "--start", "1,2", "--out", out}
+        << QStringList{"missing.tif"};
+    QTest::newRow("missing mission") << QStringList{"--batch", scratch_.filePath("absent.json"), "--out", out}
+                                     << QStringList{"absent.json"};
+    QTest::newRow("malformed mission") << QStringList{"--batch", scratch_.filePath("broken.json"), "--out", out}
+                                       << QStringList{"broken.json", "invalid JSON"};
+    QTest::newRow("mission robot in nodata") << QStringList{"--batch", scratch_.filePath("nodata-robot.json"), "--out", out}
+                                             << QStringList{"nodata-robot.json", "robots[1].start", "nodata"};
+    QTest::newRow("mission robot without start") << QStringList{"--batch", scratch_.filePath("no-start.json"), "--out", out}
+                                                 << QStringList{"no-start.json", "robots[0].start", "missing"};
+    QTest::newRow("class table lacks a class")
+        << QStringList{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes", scratch_.filePath("partial.csv"),
+                       "--start", "431040,5301040", "--out", out}
+        << QStringList{"synthetic.asc", "class 2", "--missing-as-obstacle"};
+    QTest::newRow("bad class table") << QStringList{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes",
+                                                    scratch_.filePath("bad.csv"), "--start", "431040,5301040", "--out", out}
+                                     << QStringList{"bad.csv"};
+    QTest::newRow("unknown preset") << (QStringList{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--preset",
+                                                    "no-such-preset", "--start", "431040,5301040", "--out", out})
+                                    << QStringList{"--preset", "no-such-preset"};
+    QTest::newRow("unknown planner") << QStringList{"--batch", mission, "--planner", "no-such-planner", "--out", out}
+                                     << QStringList{"--planner", "no-such-planner", "mcpp-mlct"};
+    QTest::newRow("unknown start CRS") << (flags + QStringList{"--start", "1,2", "--start-crs", "EPSG:999999", "--out", out})
+                                       << QStringList{"--start-crs"};
+    QTest::newRow("two robots in one cell")
+        << (flags + QStringList{"--start", "431040,5301040", "--start", "431041,5301041", "--out", out})
+        << QStringList{};
+    QTest::newRow("bad flag") << QStringList{"--batch", mission, "--out", out, "--start", "12,abc"}
+                              << QStringList{"--start"};
+}
+
+void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
+    QFETCH(QStringList, arguments);
+    QFETCH(QStringList, mentions);
+
+    QVERIFY(writeText(scratch_.filePath("broken.json"), "{ \"format\": \"mcpp-mission\", \"version\": "));
+    QVERIFY(writeText(scratch_.filePath("partial.csv"), "value,name,speed_mps,fov_m,passable\n1,Forest,1,5,true\n"
+                                                         "3,Grass,3,20,true\n4,Lake,0,10,false\n"));
+    QVERIFY(writeText(scratch_.filePath("bad.csv"), "value,name,speed,fov_m,passable\n1,Forest,1,5,true\n"));
+    // Copies of the synthetic mission with one robot broken; the raster path made absolute.
+    auto mission = readJsonObject(samplePath("synthetic/mission.json"));
+    QVERIFY(!mission.isEmpty());
+    auto raster = mission.value("raster").toObject();
+    raster.insert("path", samplePath("synthetic/synthetic.asc"));
+    mission.insert("raster", raster);
+    auto robots = mission.value("robots").toArray();
+    auto second = robots.at(1).toObject();
+    second.insert("start", QJsonArray{431470, 5301310});
+    robots.replace(1, second);
+    auto nodataMission = mission;
+    nodataMission.insert("robots", robots);
+    QVERIFY(writeText(scratch_.filePath("nodata-robot.json"), QJsonDocument(nodataMission).toJson()));
+    auto first = robots.at(0).toObject();
+    first.remove("start");
+    robots.replace(0, first);
+    auto noStartMission = mission;
+    noStartMission.insert("robots", robots);
+    QVERIFY(writeText(scratch_.filePath("no-start.json"), QJsonDocument(noStartMission).toJson()));
+
+    const auto run = runMcpp(arguments);
+    QVERIFY2(run.exitCode == 2, qPrintable(QStringLiteral("exit %1: %2").arg(run.exitCode).arg(run.standardError)));
+    QVERIFY2(run.standardError.endsWith('\n') && run.standardError.count('\n') == 1, qPrintable(run.standardError));
+    QVERIFY(run.standardError.startsWith(QStringLiteral("mcpp: ")));
+    for (const auto& mention : mentions) {
+        QVERIFY2(run.standardError.contains(mention), qPrintable(mention + " not in: " + run.standardError));
+    }
+    QVERIFY(run.standardOutput.isEmpty());
+    QVERIFY2(!QFileInfo::exists(scratch_.filePath("never-written")), "bad input must not create the output folder");
+}
+
+QTEST_GUILESS_MAIN(TestBatchEndToEnd)
+#include "test_batch_end_to_end.moc"

@@ -1,0 +1,274 @@
+#include "app/CommandLine.hpp"
+
+#include <QProcess>
+#include <QtTest>
+
+#include <string>
+#include <vector>
+
+using mcpp::app::CommandLine;
+using mcpp::app::RunMode;
+
+Q_DECLARE_METATYPE(std::vector<std::string>)
+
+namespace {
+
+std::vector<std::string> split(const QString& arguments) {
+    std::vector<std::string> result;
+    for (const auto& argument : arguments.split(QLatin1Char(' '), Qt::SkipEmptyParts)) result.push_back(argument.toStdString());
+    return result;
+}
+
+// The smallest valid flag mission, to which each error case adds or removes one thing.
+const QString flagMission = QStringLiteral("--batch --raster map.tif --classes classes.csv --start 10,20 --out out");
+
+} // namespace
+
+class TestCommandLine : public QObject {
+    Q_OBJECT
+
+private slots:
+    void helpAndVersionWinOverEverythingElse_data();
+    void helpAndVersionWinOverEverythingElse();
+    void guiModeTakesOneOptionalFile();
+    void batchWithMissionFile();
+    void missionFileTakesOverrideFlags();
+    void batchWithEveryFlag();
+    void batchWithPresetAndShortForms();
+    void negativeAndSpacedCoordinates();
+    void errors_data();
+    void errors();
+    void usageDocumentsEveryFlag();
+    void versionNamesTheProjectVersion();
+    void executablePrintsTheParserErrorOnOneLine();
+};
+
+void TestCommandLine::helpAndVersionWinOverEverythingElse_data() {
+    QTest::addColumn<QString>("arguments");
+    QTest::addColumn<int>("mode");
+    QTest::newRow("--help") << "--help" << static_cast<int>(RunMode::Help);
+    QTest::newRow("-h") << "-h" << static_cast<int>(RunMode::Help);
+    QTest::newRow("--help after a bad flag") << "--batch --frobnicate --help" << static_cast<int>(RunMode::Help);
+    QTest::newRow("--version") << "--version" << static_cast<int>(RunMode::Version);
+    QTest::newRow("-v with batch") << "--batch m.json -v" << static_cast<int>(RunMode::Version);
+}
+
+void TestCommandLine::helpAndVersionWinOverEverythingElse() {
+    QFETCH(QString, arguments);
+    QFETCH(int, mode);
+    const auto result = CommandLine::parse(split(arguments));
+    QVERIFY2(result.ok(), result.error.c_str());
+    QCOMPARE(result.exitCode, 0);
+    QCOMPARE(static_cast<int>(result.options.mode), mode);
+}
+
+void TestCommandLine::guiModeTakesOneOptionalFile() {
+    auto result = CommandLine::parse({});
+    QVERIFY(result.ok());
+    QCOMPARE(static_cast<int>(result.options.mode), static_cast<int>(RunMode::Gui));
+    QVERIFY(result.options.guiFile.empty());
+
+    result = CommandLine::parse({"samples/zion-nlcd/mission.json"});
+    QVERIFY(result.ok());
+    QCOMPARE(static_cast<int>(result.options.mode), static_cast<int>(RunMode::Gui));
+    QCOMPARE(result.options.guiFile, std::string("samples/zion-nlcd/mission.json"));
+    QVERIFY(result.options.missionPath.empty());
+
+    result = CommandLine::parse({"map.tif"});
+    QVERIFY(result.ok());
+    QCOMPARE(result.options.guiFile, std::string("map.tif"));
+}
+
+void TestCommandLine::batchWithMissionFile() {
+    const auto result = CommandLine::parse(split("--batch samples/zion-nlcd/mission.json --out /tmp/plan"));
+    QVERIFY2(result.ok(), result.error.c_str());
+    const auto& options = result.options;
+    QCOMPARE(static_cast<int>(options.mode), static_cast<int>(RunMode::Batch));
+    QCOMPARE(options.missionPath, std::string("samples/zion-nlcd/mission.json"));
+    QCOMPARE(options.outputDirectory, std::string("/tmp/plan"));
+    QVERIFY(!options.missionFromFlags());
+    QVERIFY(options.rasterPath.empty());
+    QVERIFY(options.starts.empty());
+    QVERIFY(!options.planner.has_value());
+    QVERIFY(!options.band.has_value());
+    QVERIFY(!options.purityTolerance.has_value());
+    QVERIFY(!options.quiet);
+    QVERIFY(!options.openPaths);
+    QVERIFY(!options.missingAsObstacle);
+
+    // The mission may come after the flags as well.
+    const auto reordered = CommandLine::parse(split("--out /tmp/plan --batch m.json"));
+    QVERIFY2(reordered.ok(), reordered.error.c_str());
+    QCOMPARE(reordered.options.missionPath, std::string("m.json"));
+}
+
+void TestCommandLine::missionFileTakesOverrideFlags() {
+    const auto result = CommandLine::parse(
+        split("--batch m.json --out o --planner mcpp-mlct --band 3 --purity 0.1 --open-paths --missing-as-obstacle -q"));
+    QVERIFY2(result.ok(), result.error.c_str());
+    const auto& options = result.options;
+    QCOMPARE(options.planner.value_or(""), std::string("mcpp-mlct"));
+    QCOMPARE(options.band.value_or(0), 3);
+    QCOMPARE(options.purityTolerance.value_or(-1.0), 0.1);
+    QVERIFY(options.openPaths);
+    QVERIFY(options.missingAsObstacle);
+    QVERIFY(options.quiet);
+}
+
+void TestCommandLine::batchWithEveryFlag() {
+    const auto result = CommandLine::parse(split(
+        "--batch --raster map.tif --classes table.csv --start 318000.5,4130000 --start 319000,4131000.25 "
+        "--start -113.1,37.2 --start-crs EPSG:4326 --planner mcpp-mlct --band 2 --purity 0.25 "
+        "--missing-as-obstacle --open-paths --quiet --out results"));
+    QVERIFY2(result.ok(), result.error.c_str());
+    const auto& options = result.options;
+    QCOMPARE(static_cast<int>(options.mode), static_cast<int>(RunMode::Batch));
+    QVERIFY(options.missionFromFlags());
+    QCOMPARE(options.rasterPath, std::string("map.tif"));
+    QCOMPARE(options.classesPath, std::string("table.csv"));
+    QVERIFY(options.preset.empty());
+    QCOMPARE(options.starts.size(), std::size_t{3});
+    QCOMPARE(options.starts[0].x, 318000.5);
+    QCOMPARE(options.starts[0].y, 4130000.0);
+    QCOMPARE(options.starts[1].x, 319000.0);
+    QCOMPARE(options.starts[1].y, 4131000.25);
+    QCOMPARE(options.starts[2].x, -113.1);
+    QCOMPARE(options.starts[2].y, 37.2);
+    QCOMPARE(options.startCrs, std::string("EPSG:4326"));
+    QCOMPARE(options.planner.value_or(""), std::string("mcpp-mlct"));
+    QCOMPARE(options.band.value_or(0), 2);
+    QCOMPARE(options.purityTolerance.value_or(-1.0), 0.25);
+    QVERIFY(options.missingAsObstacle);
+    QVERIFY(options.openPaths);
+    QVERIFY(options.quiet);
+    QCOMPARE(options.outputDirectory, std::string("results"));
+}
+
+void TestCommandLine::batchWithPresetAndShortForms() {
+    const auto result =
+        CommandLine::parse(split("--batch --raster=map.tif --preset=nlcd --start=1,2 --start-crs=epsg:32612 -o out"));
+    QVERIFY2(result.ok(), result.error.c_str());
+    const auto& options = result.options;
+    QCOMPARE(options.rasterPath, std::string("map.tif"));
+    QCOMPARE(options.preset, std::string("nlcd"));
+    QVERIFY(options.classesPath.empty());
+    QCOMPARE(options.starts.size(), std::size_t{1});
+    QCOMPARE(options.startCrs, std::string("epsg:32612"));
+    QCOMPARE(options.outputDirectory, std::string("out"));
+}
+
+void TestCommandLine::negativeAndSpacedCoordinates() {
+    // A value starting with a single dash is a coordinate, not a flag; spaces around the numbers are fine.
+    const auto result = CommandLine::parse({"--batch", "--raster", "m.tif", "--preset", "p", "--start", "-5.5, -7",
+                                            "--start", " 1e3 ,+2 ", "--out", "o"});
+    QVERIFY2(result.ok(), result.error.c_str());
+    QCOMPARE(result.options.starts.size(), std::size_t{2});
+    QCOMPARE(result.options.starts[0].x, -5.5);
+    QCOMPARE(result.options.starts[0].y, -7.0);
+    QCOMPARE(result.options.starts[1].x, 1000.0);
+    QCOMPARE(result.options.starts[1].y, 2.0);
+}
+
+void TestCommandLine::errors_data() {
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    const auto words = [](const QString& text) { return text.split(QLatin1Char(' '), Qt::SkipEmptyParts); };
+    const QString raster = QStringLiteral("--batch --raster map.tif --start 10,20 --out out ");
+
+    QTest::newRow("missing --out") << words("--batch m.json") << "--batch needs --out DIR";
+    QTest::newRow("missing --out with flags")
+        << words("--batch --raster map.tif --classes c.csv --start 1,2") << "--batch needs --out DIR";
+    QTest::newRow("--out without value") << words("--batch m.json --out") << "--out needs a value: DIR";
+    QTest::newRow("--out followed by a flag") << words("--batch m.json --out --quiet") << "--out needs a value: DIR";
+    QTest::newRow("--out given twice") << words("--batch m.json --out a --out b") << "--out is given more than once";
+    QTest::newRow("--classes and --preset")
+        << words(raster + "--classes c.csv --preset nlcd") << "--classes and --preset cannot be used together";
+    QTest::newRow("neither --classes nor --preset")
+        << words(raster) << "--raster needs --classes TABLE.csv or --preset NAME";
+    QTest::newRow("third --start not a number")
+        << words("--batch --raster map.tif --preset p --start 1,2 --start 3,4 --start 12,abc --out o")
+        << "--start 3: \"12,abc\" is not X,Y";
+    QTest::newRow("--start without comma") << words(flagMission + " --start 12") << "--start 2: \"12\" is not X,Y";
+    QTest::newRow("--start with three numbers")
+        << words("--batch --raster m.tif --preset p --start 1,2,3 --out o") << "--start 1: \"1,2,3\" is not X,Y";
+    QTest::newRow("--start not finite")
+        << words("--batch --raster m.tif --preset p --start nan,2 --out o") << "--start 1: \"nan,2\" is not X,Y";
+    QTest::newRow("--start without value") << words("--batch --raster m.tif --preset p --start") << "--start needs a value: X,Y";
+    QTest::newRow("no --start") << words("--batch --raster m.tif --preset p --out o") << "--raster needs at least one --start X,Y";
+    QTest::newRow("unknown flag") << words("--batch m.json --out o --frobnicate") << "unknown flag --frobnicate (see mcpp --help)";
+    QTest::newRow("unknown short flag") << words("-x") << "unknown flag -x (see mcpp --help)";
+    QTest::newRow("unknown flag with value") << words("--colour=red") << "unknown flag --colour (see mcpp --help)";
+    QTest::newRow("--start-crs not EPSG") << words(flagMission + " --start-crs WGS84") << "--start-crs: \"WGS84\" is not EPSG:N";
+    QTest::newRow("--start-crs without code") << words(flagMission + " --start-crs EPSG:") << "--start-crs: \"EPSG:\" is not EPSG:N";
+    QTest::newRow("--start-crs bad code") << words(flagMission + " --start-crs EPSG:43x6") << "--start-crs: \"EPSG:43x6\" is not EPSG:N";
+    QTest::newRow("--band zero") << words("--batch m.json --out o --band 0") << "--band: \"0\" is not a band number (1, 2, ...)";
+    QTest::newRow("--band text") << words("--batch m.json --out o --band two") << "--band: \"two\" is not a band number (1, 2, ...)";
+    QTest::newRow("--purity too large")
+        << words("--batch m.json --out o --purity 1.5") << "--purity: \"1.5\" is not a fraction from 0 up to (not including) 1";
+    QTest::newRow("--purity negative")
+        << words("--batch m.json --out o --purity -0.1") << "--purity: \"-0.1\" is not a fraction from 0 up to (not including) 1";
+    QTest::newRow("switch with value") << words("--batch m.json --out o --quiet=yes") << "--quiet takes no value";
+    QTest::newRow("batch flag without --batch") << words("--out o") << "--out only applies with --batch";
+    QTest::newRow("--start without --batch") << words("m.json --start 1,2") << "--start only applies with --batch";
+    QTest::newRow("two files") << words("a.json b.json") << "unexpected argument \"b.json\" (see mcpp --help)";
+    QTest::newRow("two missions") << words("--batch a.json b.json --out o") << "unexpected argument \"b.json\" (see mcpp --help)";
+    QTest::newRow("mission and --raster")
+        << words("--batch m.json --raster map.tif --out o") << "--raster cannot be combined with a mission file; the mission gives it";
+    QTest::newRow("mission and --start")
+        << words("--batch m.json --start 1,2 --out o") << "--start cannot be combined with a mission file; the mission gives it";
+    QTest::newRow("--batch alone") << words("--batch") << "--batch needs MISSION.json or --raster FILE";
+    QTest::newRow("--batch with flags but no raster")
+        << words("--batch --preset p --start 1,2 --out o") << "--batch needs MISSION.json or --raster FILE";
+}
+
+void TestCommandLine::errors() {
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    std::vector<std::string> list;
+    for (const auto& argument : arguments) list.push_back(argument.toStdString());
+    const auto result = CommandLine::parse(list);
+    QVERIFY(!result.ok());
+    QCOMPARE(QString::fromStdString(result.error), message);
+    QCOMPARE(result.exitCode, 2);
+    QVERIFY(!result.error.empty() && result.error.find('\n') == std::string::npos);
+}
+
+void TestCommandLine::usageDocumentsEveryFlag() {
+    const auto usage = QString::fromStdString(CommandLine::usage());
+    for (const char* flag : {"--batch", "--out", "--raster", "--classes", "--preset", "--start X,Y", "--start-crs",
+                             "--planner", "--band", "--purity", "--missing-as-obstacle", "--open-paths", "--quiet",
+                             "--help", "--version", "plan.geojson", "report.json", "robot_<i>.plan",
+                             "robot_<i>.waypoints", "robot_<i>.csv", "plan.png", "mcpp-mlct"}) {
+        QVERIFY2(usage.contains(QLatin1String(flag)), flag);
+    }
+}
+
+void TestCommandLine::versionNamesTheProjectVersion() {
+    QCOMPARE(QString::fromStdString(CommandLine::versionText()), QStringLiteral("mcpp " MCPP_VERSION "\n"));
+}
+
+void TestCommandLine::executablePrintsTheParserErrorOnOneLine() {
+    const QString executable = qEnvironmentVariable("MCPP_EXECUTABLE");
+    if (executable.isEmpty()) QSKIP("MCPP_EXECUTABLE is not set; run through ctest");
+    QProcess process;
+    process.start(executable, {"--batch", "--raster", "map.tif", "--preset", "p", "--start", "1,2", "--start", "3,4",
+                               "--start", "12,abc", "--out", "o"});
+    QVERIFY(process.waitForFinished(30000));
+    QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(process.exitCode(), 2);
+    QCOMPARE(QString::fromUtf8(process.readAllStandardError()), QStringLiteral("mcpp: --start 3: \"12,abc\" is not X,Y\n"));
+    QVERIFY(process.readAllStandardOutput().isEmpty());
+
+    process.start(executable, {"--version"});
+    QVERIFY(process.waitForFinished(30000));
+    QCOMPARE(process.exitCode(), 0);
+    QCOMPARE(QString::fromUtf8(process.readAllStandardOutput()), QStringLiteral("mcpp " MCPP_VERSION "\n"));
+
+    process.start(executable, {"--help"});
+    QVERIFY(process.waitForFinished(30000));
+    QCOMPARE(process.exitCode(), 0);
+    QVERIFY(QString::fromUtf8(process.readAllStandardOutput()).contains(QStringLiteral("--start-crs EPSG:N")));
+}
+
+QTEST_GUILESS_MAIN(TestCommandLine)
+#include "test_command_line.moc"

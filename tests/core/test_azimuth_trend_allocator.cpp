@@ -1,0 +1,132 @@
+#include "core/AzimuthTrendAllocator.hpp"
+#include "core/MlctPlanner.hpp"
+#include "core/NeighbourTopologyBuilder.hpp"
+#include "core/QuadTreeBuilder.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+
+#include <random>
+#include <set>
+
+using namespace mcpp;
+
+namespace {
+
+// Runs the stages up to allocation and packs them into a plan for the shared checkers.
+Plan allocateOnly(const PlanningProblem& problem) {
+    Plan plan;
+    plan.quadTree = QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings);
+    plan.topology = NeighbourTopologyBuilder{}.build(plan.quadTree);
+    std::vector<MapPoint> starts = problem.starts;
+    const auto startCells = locateStartCells(plan.quadTree, problem, starts, plan.warnings);
+    plan.allocation = AzimuthTrendAllocator{}.allocate(plan.quadTree, plan.topology, startCells, problem.settings, {});
+    return plan;
+}
+
+double maximumOverMean(const RegionAllocation& allocation) {
+    double maximum = 0.0;
+    double sum = 0.0;
+    for (double cost : allocation.costSeconds) {
+        maximum = std::max(maximum, cost);
+        sum += cost;
+    }
+    return maximum / (sum / static_cast<double>(allocation.costSeconds.size()));
+}
+
+std::vector<int> cellsPerRobot(const RegionAllocation& allocation) {
+    std::vector<int> counts(allocation.startCell.size(), 0);
+    for (int robot : allocation.robotOfCell)
+        if (robot >= 0) ++counts[static_cast<std::size_t>(robot)];
+    return counts;
+}
+
+} // namespace
+
+class AzimuthTrendAllocatorTest : public QObject {
+    Q_OBJECT
+private slots:
+    void corridorSplitsInHalves() {
+        auto problem = test::uniformProblem(40, 1, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 39, 0)};
+        const Plan plan = allocateOnly(problem);
+        QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+        QCOMPARE(cellsPerRobot(plan.allocation), (std::vector<int>{20, 20}));
+    }
+
+    // A river (a column of water) splits the map; both robots start west of it, so the east is unreachable.
+    void riverLeavesTheFarSideUnreachable() {
+        std::vector<bool> blocked(20 * 20, false);
+        for (int row = 0; row < 20; ++row) blocked[static_cast<std::size_t>(row * 20 + 12)] = true;
+        auto problem = test::uniformProblem(20, 20, 10.0, blocked, {});
+        problem.starts = {test::pixelCentre(problem.grid, 1, 1), test::pixelCentre(problem.grid, 5, 18)};
+        const Plan plan = allocateOnly(problem);
+        QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+        const auto counts = cellsPerRobot(plan.allocation);
+        QCOMPARE(counts[0] + counts[1], 12 * 20);
+        QCOMPARE(std::abs(counts[0] - counts[1]), 0);
+        int unreachable = 0;
+        for (int robot : plan.allocation.robotOfCell) unreachable += robot < 0 ? 1 : 0;
+        QCOMPARE(unreachable, 7 * 20);
+        // With a robot on each bank every cell is covered.
+        problem.starts[1] = test::pixelCentre(problem.grid, 16, 10);
+        const Plan both = allocateOnly(problem);
+        QCOMPARE(cellsPerRobot(both.allocation), (std::vector<int>{12 * 20, 7 * 20}));
+    }
+
+    // A robot boxed into a corner by another grows by taking border cells from it.
+    void enclosedRobotTakesCellsFromItsNeighbour() {
+        auto problem = test::uniformProblem(30, 30, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 1, 1),
+                          test::pixelCentre(problem.grid, 29, 29)};
+        const Plan plan = allocateOnly(problem);
+        QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+        const auto counts = cellsPerRobot(plan.allocation);
+        for (int count : counts) QVERIFY2(std::abs(count - 300) <= 1, qPrintable(QString::number(count)));
+    }
+
+    void balancesUniformGridsWithObstacles() {
+        std::mt19937 random(7);
+        for (int robots : {2, 4, 8, 14, 20}) {
+            std::vector<bool> blocked(49 * 49);
+            std::bernoulli_distribution obstacle(0.15);
+            for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = obstacle(random);
+            auto problem = test::uniformProblem(49, 49, 10.0, blocked, {});
+            std::uniform_int_distribution<int> position(0, 48);
+            std::set<std::pair<int, int>> used;
+            while (static_cast<int>(problem.starts.size()) < robots) {
+                const int column = position(random);
+                const int row = position(random);
+                if (blocked[static_cast<std::size_t>(row * 49 + column)] || !used.insert({column, row}).second) continue;
+                problem.starts.push_back(test::pixelCentre(problem.grid, column, row));
+            }
+            const Plan plan = allocateOnly(problem);
+            QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+            // Balanced to within one cell of the mean wherever the regions can trade cells.
+            const auto counts = cellsPerRobot(plan.allocation);
+            int reachable = 0;
+            for (int count : counts) reachable += count;
+            const double mean = static_cast<double>(reachable) / robots;
+            const int largest = *std::max_element(counts.begin(), counts.end());
+            QVERIFY2(largest <= std::ceil(mean) + 1, qPrintable(QString("%1 robots: largest region %2 cells, mean %3")
+                                                                    .arg(robots).arg(largest).arg(mean)));
+            QVERIFY(maximumOverMean(plan.allocation) < 1.03);
+        }
+    }
+
+    void sameInputSameAllocation() {
+        test::RandomMapSpec spec;
+        spec.columns = 40;
+        spec.rows = 40;
+        spec.landCovers = 3;
+        spec.obstacleFraction = 0.1;
+        spec.robots = 6;
+        spec.seed = 11;
+        const auto problem = test::randomProblem(spec);
+        QCOMPARE(allocateOnly(problem).allocation.robotOfCell, allocateOnly(problem).allocation.robotOfCell);
+    }
+};
+
+QTEST_APPLESS_MAIN(AzimuthTrendAllocatorTest)
+#include "test_azimuth_trend_allocator.moc"

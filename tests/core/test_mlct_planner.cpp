@@ -1,0 +1,139 @@
+#include "core/MlctPlanner.hpp"
+#include "core/PlanningError.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+PlanningProblem lakeProblem() {
+    std::vector<bool> blocked(10 * 10, false);
+    for (int row = 3; row < 6; ++row)
+        for (int column = 3; column < 6; ++column) blocked[static_cast<std::size_t>(row * 10 + column)] = true;
+    auto problem = test::uniformProblem(10, 10, 10.0, blocked, {});
+    problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 9, 9)};
+    return problem;
+}
+
+void expectError(const PlanningProblem& problem, PlanningError::Kind kind, const std::string& fragment) {
+    try {
+        (void)MlctPlanner{}.plan(problem, {});
+        QFAIL(("expected an error containing: " + fragment).c_str());
+    } catch (const PlanningError& error) {
+        QVERIFY2(error.kind() == kind, error.what());
+        QVERIFY2(std::string(error.what()).find(fragment) != std::string::npos, error.what());
+    }
+}
+
+} // namespace
+
+class MlctPlannerTest : public QObject {
+    Q_OBJECT
+private slots:
+    void plansAroundALake() {
+        const auto problem = lakeProblem();
+        const Plan plan = MlctPlanner{}.plan(problem, {});
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(),
+                 qPrintable(QString::fromStdString(test::describe(test::checkAllInvariants(problem, plan)))));
+        QCOMPARE(plan.planner, std::string("mcpp-mlct"));
+        QCOMPARE(plan.metrics.robots.size(), std::size_t{2});
+        QCOMPARE(plan.metrics.robots[0].cells + plan.metrics.robots[1].cells, 91);
+        QCOMPARE(plan.metrics.coveredFraction, 1.0);
+        QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 0.0);
+        QVERIFY(plan.metrics.ratio >= 1.0 && plan.metrics.ratio < 1.03);
+        QCOMPARE(plan.metrics.stageMilliseconds.size(), std::size_t{5});
+    }
+
+    void startOnObstacleIsNamed() {
+        auto problem = lakeProblem();
+        problem.starts[1] = test::pixelCentre(problem.grid, 4, 4);
+        expectError(problem, PlanningError::Kind::StartOnObstacle, "robot 1 start (500045");
+        expectError(problem, PlanningError::Kind::StartOnObstacle, "(water, class 99)");
+    }
+
+    void startOutsideIsNamed() {
+        auto problem = lakeProblem();
+        problem.starts[0] = {0.0, 0.0};
+        expectError(problem, PlanningError::Kind::StartOutsideArea, "robot 0 start (0, 0) is outside the map");
+        problem = lakeProblem();
+        problem.grid.outside.assign(100, 0);
+        problem.grid.outside[99] = 1;
+        problem.starts[1] = test::pixelCentre(problem.grid, 9, 9);
+        expectError(problem, PlanningError::Kind::StartOutsideArea, "nodata");
+    }
+
+    void twoRobotsInOneCellAreRefused() {
+        auto problem = lakeProblem();
+        problem.starts.push_back(problem.starts[0]);
+        expectError(problem, PlanningError::Kind::StartsShareCell, "robot 2 start");
+    }
+
+    void nanAndEmptyInputsAreRefused() {
+        auto problem = lakeProblem();
+        problem.starts[0].x = std::nan("");
+        expectError(problem, PlanningError::Kind::InvalidParameter, "robot 0 start (nan");
+        problem = lakeProblem();
+        problem.starts.clear();
+        expectError(problem, PlanningError::Kind::InvalidParameter, "no robots");
+        problem = lakeProblem();
+        problem.starts.assign(150, problem.starts[0]);
+        expectError(problem, PlanningError::Kind::TooManyRobots, "150 robots but only 91");
+    }
+
+    void snappingMovesABadStartWithAWarning() {
+        auto problem = lakeProblem();
+        problem.starts[1] = test::pixelCentre(problem.grid, 4, 4);
+        problem.settings.snapStartsToFreeCells = true;
+        const Plan plan = MlctPlanner{}.plan(problem, {});
+        QCOMPARE(plan.warnings.size(), std::size_t{1});
+        QVERIFY(plan.warnings[0].find("moved to") != std::string::npos);
+        QVERIFY(test::checkRegions(plan).empty());
+    }
+
+    void reportsProgressAndHonoursCancel() {
+        const auto problem = lakeProblem();
+        std::vector<std::string> stages;
+        ProgressReporter reporter([&](std::string_view stage, double) {
+            if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
+        });
+        (void)MlctPlanner{}.plan(problem, reporter);
+        QCOMPARE(stages, (std::vector<std::string>{"quadtree", "topology", "allocation", "paths", "done"}));
+        std::atomic<bool> cancel{true};
+        try {
+            (void)MlctPlanner{}.plan(problem, ProgressReporter({}, &cancel));
+            QFAIL("a cancelled plan must stop");
+        } catch (const PlanningError& error) {
+            QCOMPARE(error.kind(), PlanningError::Kind::Cancelled);
+        }
+    }
+
+    void sameInputSamePlan() {
+        test::RandomMapSpec spec;
+        spec.columns = 48;
+        spec.rows = 40;
+        spec.landCovers = 3;
+        spec.obstacleFraction = 0.08;
+        spec.robots = 5;
+        spec.seed = 5;
+        const auto problem = test::randomProblem(spec);
+        const Plan first = MlctPlanner{}.plan(problem, {});
+        const Plan second = MlctPlanner{}.plan(problem, {});
+        QCOMPARE(first.allocation.robotOfCell, second.allocation.robotOfCell);
+        for (std::size_t robot = 0; robot < first.paths.size(); ++robot) {
+            QCOMPARE(first.paths[robot].waypoints.size(), second.paths[robot].waypoints.size());
+            QCOMPARE(first.paths[robot].lengthMetres, second.paths[robot].lengthMetres);
+        }
+    }
+
+    void plannerRegistry() {
+        QVERIFY(makePlanner("mcpp-mlct") != nullptr);
+        QVERIFY(makePlanner("no-such-planner") == nullptr);
+        QVERIFY(!availablePlanners().empty());
+    }
+};
+
+QTEST_APPLESS_MAIN(MlctPlannerTest)
+#include "test_mlct_planner.moc"

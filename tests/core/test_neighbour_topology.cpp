@@ -1,0 +1,70 @@
+#include "core/NeighbourTopologyBuilder.hpp"
+#include "core/QuadTreeBuilder.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+
+#include <set>
+
+using namespace mcpp;
+
+namespace {
+
+// Two squares share a border of positive length: one's edge lies on the other's, with overlapping spans.
+bool shareBorder(const QuadCell& a, const QuadCell& b) {
+    const double tolerance = 1e-9;
+    const double overlapX = std::min(a.maxX(), b.maxX()) - std::max(a.minX, b.minX);
+    const double overlapY = std::min(a.maxY(), b.maxY()) - std::max(a.minY, b.minY);
+    const bool touchX = std::abs(a.maxX() - b.minX) < tolerance || std::abs(b.maxX() - a.minX) < tolerance;
+    const bool touchY = std::abs(a.maxY() - b.minY) < tolerance || std::abs(b.maxY() - a.minY) < tolerance;
+    return (touchX && overlapY > tolerance) || (touchY && overlapX > tolerance);
+}
+
+} // namespace
+
+class NeighbourTopologyTest : public QObject {
+    Q_OBJECT
+private slots:
+    void sameLevelGridHasFourNeighbours() {
+        auto problem = test::uniformProblem(3, 3, 10.0, {}, {});
+        const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, {});
+        const NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
+        QCOMPARE(topology.cellCount(), std::size_t{9});
+        QCOMPARE(topology.pairCount(), std::size_t{12});
+        const MapPoint middle = test::pixelCentre(problem.grid, 1, 1);
+        const int leaf = tree.leafAt(middle.x, middle.y);
+        QVERIFY(leaf >= 0);
+        const int centre = tree.cells[static_cast<std::size_t>(leaf)].activeIndex;
+        QCOMPARE(topology.of(centre).size(), std::size_t{4});
+    }
+
+    // Against a brute-force geometric search on mixed-level trees with obstacles.
+    void matchesBruteForceOnRandomMaps() {
+        for (std::uint32_t seed = 1; seed <= 30; ++seed) {
+            test::RandomMapSpec spec;
+            spec.columns = 24 + static_cast<int>(seed % 7);
+            spec.rows = 20 + static_cast<int>(seed % 5);
+            spec.landCovers = 1 + static_cast<int>(seed % 4);
+            spec.obstacleFraction = 0.01 * (seed % 20);
+            spec.seed = seed;
+            spec.robots = 0;
+            const auto problem = test::randomProblem(spec);
+            const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, {});
+            const NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
+            for (std::size_t a = 0; a < tree.activeCount(); ++a) {
+                std::set<int> expected;
+                for (std::size_t b = 0; b < tree.activeCount(); ++b)
+                    if (a != b && shareBorder(tree.active(static_cast<int>(a)), tree.active(static_cast<int>(b))))
+                        expected.insert(static_cast<int>(b));
+                const auto list = topology.of(static_cast<int>(a));
+                const std::set<int> found(list.begin(), list.end());
+                QVERIFY2(found == expected, qPrintable(QString("seed %1 cell %2: %3 neighbours found, %4 expected")
+                                                           .arg(seed).arg(a).arg(found.size()).arg(expected.size())));
+                QCOMPARE(list.size(), found.size());
+            }
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(NeighbourTopologyTest)
+#include "test_neighbour_topology.moc"

@@ -1,0 +1,191 @@
+#include "core/PlanningError.hpp"
+#include "core/QuadTreeBuilder.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+// A grid of `columns` x `rows` one-metre pixels filled with `value`.
+ClassGrid filledGrid(int columns, int rows, std::int32_t value, double pixel = 1.0) {
+    ClassGrid grid;
+    grid.columns = columns;
+    grid.rows = rows;
+    grid.pixelWidth = pixel;
+    grid.pixelHeight = pixel;
+    grid.values.assign(static_cast<std::size_t>(columns * rows), value);
+    return grid;
+}
+
+int countActiveAtLevel(const QuadTree& tree, int level) {
+    int count = 0;
+    for (int index : tree.activeCells) count += tree.cells[static_cast<std::size_t>(index)].level == level ? 1 : 0;
+    return count;
+}
+
+} // namespace
+
+class QuadTreeBuilderTest : public QObject {
+    Q_OBJECT
+private slots:
+    // The paper's example: FOVs 5, 7 and 21 m round down to 5, 5 and 20 m, giving three levels.
+    void paperFieldOfViewExample() {
+        ClassTable table({{1, "farm", 0, 1.0, 5.0, true}, {2, "road", 0, 3.0, 7.0, true}, {3, "gobi", 0, 2.0, 21.0, true}});
+        const auto rounded = roundFieldsOfView(table, {1, 2, 3});
+        QCOMPARE(rounded.size(), std::size_t{3});
+        QCOMPARE(rounded[0].roundedMetres, 5.0);
+        QCOMPARE(rounded[1].roundedMetres, 5.0);
+        QCOMPARE(rounded[2].roundedMetres, 20.0);
+        QCOMPARE(rounded[0].level, 3);
+        QCOMPARE(rounded[2].level, 1);
+        // A class absent from the raster does not set the minimum.
+        const auto withoutFarm = roundFieldsOfView(table, {2, 3});
+        QCOMPARE(withoutFarm[0].roundedMetres, 7.0);
+        QCOMPARE(withoutFarm[1].roundedMetres, 14.0);
+    }
+
+    void exactPowersOfTwoKeepTheirLevel() {
+        ClassTable table({{1, "a", 0, 1.0, 2.5, true}, {2, "b", 0, 1.0, 10.0, true}, {3, "c", 0, 1.0, 40.0, true}});
+        const auto rounded = roundFieldsOfView(table, {1, 2, 3});
+        QCOMPARE(rounded[1].roundedMetres, 10.0);
+        QCOMPARE(rounded[2].roundedMetres, 40.0);
+        QCOMPARE(rounded[2].level, 1);
+        QCOMPARE(rounded[0].level, 5);
+    }
+
+    void singleClassMakesOneLevelOfActiveCells() {
+        ClassTable table({{1, "grass", 0, 2.0, 5.0, true}});
+        const QuadTree tree = QuadTreeBuilder{}.build(filledGrid(40, 30, 1), table, {});
+        QCOMPARE(tree.levels, 1);
+        QCOMPARE(tree.topCellSize, 10.0);
+        QCOMPARE(tree.topColumns, 4);
+        QCOMPARE(tree.topRows, 3);
+        QCOMPARE(tree.activeCount(), std::size_t{12});
+        for (int index : tree.activeCells) {
+            QCOMPARE(tree.cells[static_cast<std::size_t>(index)].speedMetresPerSecond, 2.0);
+            QCOMPARE(tree.cells[static_cast<std::size_t>(index)].classValue, 1);
+        }
+        QCOMPARE(tree.passableAreaSquareMetres, 1200.0);
+    }
+
+    // A 40 x 40 m map of a 20 m FOV class with one 10 x 10 m patch of a 5 m FOV class in a corner:
+    // only the cells holding the patch split down to the bottom level.
+    void threeLevelsSplitOnlyWhereNeeded() {
+        ClassTable table({{1, "open", 0, 2.0, 20.0, true}, {2, "wood", 0, 1.0, 5.0, true}});
+        ClassGrid grid = filledGrid(40, 40, 1);
+        for (int r = 0; r < 10; ++r)
+            for (int c = 0; c < 10; ++c) grid.values[grid.index(c, r)] = 2;
+        const QuadTree tree = QuadTreeBuilder{}.build(grid, table, {});
+        QCOMPARE(tree.levels, 3);
+        QCOMPARE(tree.topCellSize, 40.0);
+        QCOMPARE(countActiveAtLevel(tree, 3), 4); // the north-west quarter as four 10 m cells
+        QCOMPARE(countActiveAtLevel(tree, 2), 3); // the other quarters stay 20 m cells
+        QCOMPARE(countActiveAtLevel(tree, 1), 0);
+        int wood = 0;
+        for (int index : tree.activeCells) {
+            const QuadCell& cell = tree.cells[static_cast<std::size_t>(index)];
+            if (cell.classValue == 2) {
+                ++wood;
+                QCOMPARE(cell.level, 3);
+                QCOMPARE(cell.minX, 0.0);
+                QCOMPARE(cell.maxY(), 0.0);
+            }
+        }
+        QCOMPARE(wood, 1);
+    }
+
+    void harmonicMeanSpeedOfMixedBottomCell() {
+        ClassTable table({{1, "road", 0, 4.0, 1.0, true}, {2, "mud", 0, 1.0, 1.0, true}});
+        ClassGrid grid = filledGrid(2, 2, 1);
+        grid.values[0] = 2; // one pixel of four is mud: harmonic mean 4 / (3/4 + 1/1) = 16/7
+        PlannerSettings settings;
+        const QuadTree tree = QuadTreeBuilder{}.build(grid, table, settings);
+        QCOMPARE(tree.activeCount(), std::size_t{1});
+        const QuadCell& cell = tree.active(0);
+        QCOMPARE(cell.classValue, 1);
+        QVERIFY(std::abs(cell.speedMetresPerSecond - 16.0 / 7.0) < 1e-12);
+    }
+
+    void blockedThresholdDecidesMixedObstacleCells() {
+        ClassTable table({{1, "grass", 0, 1.0, 1.0, true}, {9, "rock", 0, 0.0, 1.0, false}});
+        ClassGrid grid = filledGrid(2, 2, 1);
+        grid.values[0] = 9;
+        grid.values[1] = 9; // half obstacle: not more than 50%, so active
+        QCOMPARE(QuadTreeBuilder{}.build(grid, table, {}).activeCount(), std::size_t{1});
+        grid.values[2] = 9; // three quarters
+        PlannerSettings settings;
+        QCOMPARE(QuadTreeBuilder{}.build(grid, table, settings).activeCount(), std::size_t{0});
+        settings.blockedThreshold = 0.8;
+        QCOMPARE(QuadTreeBuilder{}.build(grid, table, settings).activeCount(), std::size_t{1});
+    }
+
+    void purityToleranceIgnoresStrayPixels() {
+        ClassTable table({{1, "open", 0, 2.0, 10.0, true}, {2, "wood", 0, 1.0, 5.0, true}});
+        ClassGrid grid = filledGrid(20, 20, 1);
+        grid.values[grid.index(3, 3)] = 2; // one stray pixel in 400
+        const QuadTree strict = QuadTreeBuilder{}.build(grid, table, {});
+        QCOMPARE(strict.activeCount(), std::size_t{4});
+        PlannerSettings settings;
+        settings.purityTolerance = 0.02;
+        const QuadTree tolerant = QuadTreeBuilder{}.build(grid, table, settings);
+        QCOMPARE(tolerant.activeCount(), std::size_t{1});
+        QVERIFY(tolerant.active(0).speedMetresPerSecond < 2.0); // the stray pixel still slows the cell
+    }
+
+    void nodataAndRasterEdgeAreOutside() {
+        ClassTable table({{1, "grass", 0, 1.0, 2.0, true}});
+        ClassGrid grid = filledGrid(6, 4, 1); // 6 x 4 m, bottom cells of 4 m: the top grid spills over
+        grid.outside.assign(grid.values.size(), 0);
+        grid.outside[grid.index(0, 0)] = 1;
+        const QuadTree tree = QuadTreeBuilder{}.build(grid, table, {});
+        QCOMPARE(tree.topColumns, 2);
+        QCOMPARE(tree.topRows, 1);
+        // Cell 0 has 1 of 16 pixels outside (active); cell 1 is half beyond the raster (blocked? exactly 50%: active).
+        QCOMPARE(tree.activeCount(), std::size_t{2});
+        QCOMPARE(tree.passableAreaSquareMetres, 23.0);
+    }
+
+    void coarsePixelsAreSampledAtCellCentres() {
+        ClassTable table({{1, "grass", 0, 1.0, 2.5, true}, {9, "lake", 0, 0.0, 1.0, false}});
+        ClassGrid grid = filledGrid(2, 2, 1, 30.0); // 30 m pixels, 5 m cells
+        grid.values[grid.index(1, 1)] = 9;
+        const QuadTree tree = QuadTreeBuilder{}.build(grid, table, {});
+        QCOMPARE(tree.activeCount(), std::size_t{3 * 36});
+        QVERIFY(std::abs(tree.passableAreaSquareMetres - 2700.0) < 1e-6);
+    }
+
+    void badInputIsNamed() {
+        ClassTable table({{1, "grass", 0, 1.0, 5.0, true}});
+        ClassGrid grid = filledGrid(4, 4, 1);
+        grid.values[5] = 7;
+        try {
+            (void)QuadTreeBuilder{}.build(grid, table, {});
+            QFAIL("a value missing from the table must be refused");
+        } catch (const PlanningError& error) {
+            QCOMPARE(error.kind(), PlanningError::Kind::InvalidClassTable);
+            QVERIFY2(std::string(error.what()).find("raster value 7") != std::string::npos, error.what());
+            QVERIFY2(std::string(error.what()).find("column 1, row 1") != std::string::npos, error.what());
+        }
+        ClassTable negative({{1, "grass", 0, -1.0, 5.0, true}});
+        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), negative, {}));
+        ClassTable zeroFov({{1, "grass", 0, 1.0, 0.0, true}});
+        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), zeroFov, {}));
+        ClassTable nanSpeed({{1, "grass", 0, std::nan(""), 5.0, true}});
+        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), nanSpeed, {}));
+        ClassTable onlyWater({{1, "water", 0, 0.0, 5.0, false}});
+        try {
+            (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), onlyWater, {});
+            QFAIL("a map without passable land must be refused");
+        } catch (const PlanningError& error) {
+            QCOMPARE(error.kind(), PlanningError::Kind::NoPassableCell);
+        }
+        PlannerSettings badPurity;
+        badPurity.purityTolerance = std::nan("");
+        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), table, badPurity));
+    }
+};
+
+QTEST_APPLESS_MAIN(QuadTreeBuilderTest)
+#include "test_quadtree_builder.moc"

@@ -1,0 +1,91 @@
+#include "core/MlctPlanner.hpp"
+#include "core/SpanningTreeCoverage.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+
+#include <set>
+
+using namespace mcpp;
+
+namespace {
+
+Plan planOf(const PlanningProblem& problem) { return MlctPlanner{}.plan(problem, {}); }
+
+QString violations(const PlanningProblem& problem, const Plan& plan) {
+    return QString::fromStdString(test::describe(test::checkAllInvariants(problem, plan)));
+}
+
+} // namespace
+
+class SpanningTreeCoverageTest : public QObject {
+    Q_OBJECT
+private slots:
+    void singleCellIsASquareTour() {
+        auto problem = test::uniformProblem(1, 1, 10.0, {}, {});
+        problem.starts = {{problem.grid.originX + 2.5, problem.grid.originY - 2.5}}; // the north-west sub-cell centre
+        const Plan plan = planOf(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        const CoveragePath& path = plan.paths.front();
+        QCOMPARE(path.waypoints.size(), std::size_t{5});
+        QCOMPARE(path.lengthMetres, 20.0);
+        QCOMPARE(path.timeSeconds, 20.0);
+        QCOMPARE(path.turns, 3);
+    }
+
+    // On a uniform grid a closed STC tour steps FOV metres between sub-cells, 4 per cell.
+    void closedTourLengthIsFourStepsPerCell() {
+        auto problem = test::uniformProblem(6, 4, 10.0, {}, {});
+        problem.starts = {{problem.grid.originX + 2.5, problem.grid.originY - 2.5}};
+        Plan plan = planOf(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QCOMPARE(plan.paths[0].lengthMetres, 24 * 4 * 5.0);
+        QCOMPARE(plan.metrics.ratio, 1.0);
+        QCOMPARE(plan.metrics.repeatedFraction, 0.0);
+        problem.settings.closedTour = false;
+        plan = planOf(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QCOMPARE(plan.paths[0].lengthMetres, 24 * 4 * 5.0 - 5.0);
+        QVERIFY(!plan.paths[0].closed);
+    }
+
+    // A two-row strip: east-west spines give a tour with a handful of turns, a comb of north-south
+    // edges would give dozens.
+    void treeChoiceKeepsTurnsLow() {
+        auto problem = test::uniformProblem(12, 2, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0)};
+        const Plan plan = planOf(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QVERIFY2(plan.paths[0].turns <= 10, qPrintable(QString::number(plan.paths[0].turns)));
+        QCOMPARE(countTurns(plan.paths[0].waypoints), plan.paths[0].turns);
+    }
+
+    // Three land covers with FOVs 5, 10 and 20 m: connectors join cells of different sizes.
+    void mixedSizesVisitEverySubCell() {
+        PlanningProblem problem;
+        problem.grid.columns = 16;
+        problem.grid.rows = 16;
+        problem.grid.pixelWidth = 5.0;
+        problem.grid.pixelHeight = 5.0;
+        problem.grid.values.assign(256, 3);
+        for (int row = 0; row < 16; ++row)
+            for (int column = 0; column < 16; ++column) {
+                if (column < 4 && row < 6) problem.grid.values[problem.grid.index(column, row)] = 1;
+                else if (row >= 10 && column >= 8) problem.grid.values[problem.grid.index(column, row)] = 2;
+            }
+        problem.grid.values[problem.grid.index(2, 12)] = 9;
+        problem.classes = ClassTable({{1, "wood", 0, 0.5, 5.0, true}, {2, "grass", 0, 1.0, 10.0, true},
+                                      {3, "road", 0, 3.0, 20.0, true}, {9, "pond", 0, 0.0, 5.0, false}});
+        problem.starts = {{7.0, -7.0}, {70.0, -70.0}};
+        const Plan plan = planOf(problem);
+        QCOMPARE(plan.quadTree.levels, 3);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        std::set<int> levels;
+        for (int index : plan.quadTree.activeCells) levels.insert(plan.quadTree.cells[static_cast<std::size_t>(index)].level);
+        QCOMPARE(levels.size(), std::size_t{3});
+    }
+};
+
+QTEST_APPLESS_MAIN(SpanningTreeCoverageTest)
+#include "test_spanning_tree_coverage.moc"

@@ -1,0 +1,256 @@
+// Presets, class tables made for a raster, reconciliation, and the class table CSV.
+
+#include "io/ClassTableSources.hpp"
+#include "tests/support/TestData.hpp"
+
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+using namespace mcpp;
+using namespace mcpp::io;
+using mcpp::test::testDataPath;
+
+namespace {
+
+ClassTable preset(const std::string& name) {
+    auto table = presetClassTable(name);
+    if (!table) qFatal("%s", table.error().c_str());
+    return table.value();
+}
+
+LoadedRaster load(const std::string& relative) {
+    auto raster = loadLandCoverRaster(testDataPath(relative));
+    if (!raster) qFatal("%s", raster.error().c_str());
+    return std::move(raster.value());
+}
+
+// Rows of a legend CSV in tests/data/legends, split on commas outside quotes.
+std::vector<std::vector<std::string>> readCsv(const std::string& relative) {
+    std::ifstream file(testDataPath(relative));
+    std::vector<std::vector<std::string>> rows;
+    std::string line;
+    std::getline(file, line); // header
+    while (std::getline(file, line)) {
+        std::vector<std::string> fields(1);
+        bool quoted = false;
+        for (const char character : line) {
+            if (character == '"') quoted = !quoted;
+            else if (character == ',' && !quoted) fields.emplace_back();
+            else if (character != '\r') fields.back() += character;
+        }
+        rows.push_back(fields);
+    }
+    return rows;
+}
+
+std::uint32_t rgb(int red, int green, int blue) {
+    return (static_cast<std::uint32_t>(red) << 16U) | (static_cast<std::uint32_t>(green) << 8U) | static_cast<std::uint32_t>(blue);
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream file(path, std::ios::binary);
+    file << text;
+}
+
+} // namespace
+
+class ClassTablesTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void everyPresetIsListedAndValid() {
+        const std::set<std::string> expected{"esa-worldcover", "nlcd",     "nlcd-simplified",   "corine",
+                                             "corine-grid",    "canada-landcover", "copernicus-glc100", "paper"};
+        std::set<std::string> listed;
+        for (const PresetInfo& info : classTablePresets()) {
+            listed.insert(info.name);
+            QVERIFY(!info.description.empty());
+            const ClassTable table = preset(info.name);
+            QVERIFY2(!table.validate().has_value(), info.name.c_str());
+            QVERIFY(table.size() >= 6);
+            for (const LandCoverClass& entry : table.classes()) {
+                QVERIFY(!entry.name.empty());
+                if (entry.isTraversable()) QVERIFY(entry.fieldOfViewMetres >= 5.0 && entry.fieldOfViewMetres <= 20.0);
+            }
+        }
+        QVERIFY(listed == expected);
+        auto unknown = presetClassTable("nope");
+        QVERIFY(!unknown.ok());
+        QVERIFY(unknown.error().find("nope") != std::string::npos);
+        QVERIFY(unknown.error().find("esa-worldcover") != std::string::npos);
+    }
+
+    void waterSnowAndBuiltUpAreNotDrivable() {
+        const std::vector<std::pair<std::string, std::vector<std::int32_t>>> blocked{
+            {"esa-worldcover", {50, 70, 80}}, {"nlcd", {11, 12, 23, 24}}, {"nlcd-simplified", {1}},
+            {"corine", {111, 335, 511, 512, 523}}, {"corine-grid", {1, 34, 40, 41, 44}}, {"canada-landcover", {17, 18, 19}},
+            {"copernicus-glc100", {50, 70, 80, 200}}};
+        for (const auto& [name, values] : blocked) {
+            const ClassTable table = preset(name);
+            for (const std::int32_t value : values) {
+                QVERIFY2(table.find(value) != nullptr && !table.find(value)->isTraversable(), (name + " " + std::to_string(value)).c_str());
+            }
+        }
+        QVERIFY(preset("corine").find(122)->speedMetresPerSecond > preset("corine").find(311)->speedMetresPerSecond);
+    }
+
+    void paperPresetNeedsSeveralQuadtreeLevels() {
+        const ClassTable table = preset("paper");
+        const std::vector<std::string> names{"farm", "road", "grass", "wood", "bare land", "gobi"};
+        std::set<double> fovs;
+        for (std::int32_t value = 1; value <= 6; ++value) {
+            QVERIFY(table.find(value) != nullptr);
+            QCOMPARE(table.find(value)->name, names[static_cast<std::size_t>(value - 1)]);
+            QVERIFY(table.find(value)->isTraversable());
+            fovs.insert(table.find(value)->fieldOfViewMetres);
+        }
+        QVERIFY(fovs.size() >= 3);
+        QCOMPARE(*fovs.begin(), 5.0);
+        QCOMPARE(*fovs.rbegin(), 20.0);
+    }
+
+    void presetsAgreeWithTheLegendFiles() {
+        const ClassTable esa = preset("esa-worldcover");
+        for (const auto& row : readCsv("legends/esa_worldcover_v200.csv")) {
+            QCOMPARE(esa.find(std::stoi(row[0]))->name, row[1]);
+        }
+        const ClassTable grid = preset("corine-grid");
+        const ClassTable corine = preset("corine");
+        for (const auto& row : readCsv("legends/clc_grid_code_legend.csv")) {
+            const LandCoverClass* byGrid = grid.find(std::stoi(row[0]));
+            const LandCoverClass* byCode = corine.find(std::stoi(row[1]));
+            QVERIFY(byGrid != nullptr && byCode != nullptr);
+            QCOMPARE(byGrid->name, row[4]);
+            QCOMPARE(byCode->name, row[4]);
+            const std::string& colour = row[5]; // "230-000-077"
+            const std::uint32_t expected = rgb(std::stoi(colour.substr(0, 3)), std::stoi(colour.substr(4, 3)), std::stoi(colour.substr(8, 3)));
+            QCOMPARE(byGrid->colorRgb, expected);
+            QCOMPARE(byCode->colorRgb, expected);
+            QCOMPARE(byGrid->speedMetresPerSecond, byCode->speedMetresPerSecond);
+        }
+        const ClassTable canada = preset("canada-landcover");
+        for (const auto& row : readCsv("legends/nrcan_canada_landcover_2015.csv")) {
+            QCOMPARE(canada.find(std::stoi(row[0]))->name, row[1]);
+        }
+        const ClassTable nlcd = preset("nlcd");
+        for (const auto& row : readCsv("legends/nlcd_from_stars_lc_rat.csv")) {
+            const LandCoverClass* entry = nlcd.find(std::stoi(row[0]));
+            QVERIFY(entry != nullptr);
+            QCOMPARE(entry->colorRgb, rgb(std::stoi(row[2]), std::stoi(row[3]), std::stoi(row[4])));
+        }
+        const ClassTable simplified = preset("nlcd-simplified");
+        for (const auto& row : readCsv("legends/spDataLarge_nlcd_simplified_categories.csv")) {
+            if (row[0] == "0") continue; // "NA"
+            QCOMPARE(simplified.find(std::stoi(row[0]))->name, row[1]);
+        }
+    }
+
+    void tableForRasterUsesItsLegend() {
+        const LoadedRaster nlcd = load("landcover/nlcd.tif");
+        const ClassTable table = classTableForRaster(nlcd, "nlcd-simplified");
+        QCOMPARE(table.size(), std::size_t{8});
+        QCOMPARE(table.find(4)->name, std::string("Forest"));
+        QCOMPARE(table.find(4)->colorRgb, 0x68aa63U);
+        QVERIFY(!table.find(1)->isTraversable());
+        QCOMPARE(table.find(4)->speedMetresPerSecond, preset("nlcd-simplified").find(4)->speedMetresPerSecond);
+
+        const LoadedRaster clc = load("landcover/corine-spain/clc.tif");
+        const ClassTable spanish = classTableForRaster(clc, "corine");
+        QCOMPARE(spanish.size(), std::size_t{20});
+        QCOMPARE(spanish.find(111)->name, std::string("Tejido urbano continuo"));
+        QVERIFY(!spanish.find(111)->isTraversable());
+        QCOMPARE(spanish.find(323)->speedMetresPerSecond, preset("corine").find(323)->speedMetresPerSecond);
+        QVERIFY(!spanish.validate().has_value());
+    }
+
+    void unknownClassesGetTheGenericRow() {
+        const LoadedRaster nrcan = load("landcover/nrcan_landcover2015_example.tif");
+        const ClassTable generic = classTableForRaster(nrcan);
+        QCOMPARE(generic.size(), std::size_t{13});
+        const LandCoverClass* first = generic.find(1);
+        QCOMPARE(first->name, std::string("Class 1"));
+        QCOMPARE(first->colorRgb, 0x808080U);
+        QCOMPARE(first->speedMetresPerSecond, 1.0);
+        QCOMPARE(first->fieldOfViewMetres, 10.0);
+        QVERIFY(first->passable);
+        const ClassTable canada = classTableForRaster(nrcan, "canada-landcover");
+        QCOMPARE(canada.find(18)->name, std::string("Water"));
+        QVERIFY(!canada.find(18)->isTraversable());
+    }
+
+    void reconcileReportsOrBlocksMissingClasses() {
+        LoadedRaster raster = load("landcover/nrcan_landcover2015_example.tif");
+        ClassTable table = classTableForRaster(raster, "canada-landcover");
+        QVERIFY(reconcileRasterWithTable(raster, table, false).ok());
+        table.remove(18);
+        table.remove(19);
+        Status refused = reconcileRasterWithTable(raster, table, false);
+        QVERIFY(!refused.ok());
+        QVERIFY(refused.error().find("18, 19") != std::string::npos);
+        QVERIFY(refused.error().find("nrcan_landcover2015_example.tif") != std::string::npos);
+
+        const std::int64_t water = raster.classPixelCounts.at(18) + raster.classPixelCounts.at(19);
+        QVERIFY(reconcileRasterWithTable(raster, table, true).ok());
+        QCOMPARE(raster.classPixelCounts.count(18), std::size_t{0});
+        QCOMPARE(std::count(raster.grid.outside.begin(), raster.grid.outside.end(), 1), water);
+        QVERIFY(raster.warnings.back().find("18, 19") != std::string::npos);
+        QVERIFY(reconcileRasterWithTable(raster, table, false).ok());
+    }
+
+    void csvRoundTrip() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("classes.csv").toStdString();
+        ClassTable table = preset("nlcd"); // names with commas
+        table.set(LandCoverClass{7, "Quote \"here\"", 0x123456, 0.25, 7.5, true});
+        QVERIFY(saveClassTableCsv(table, path).ok());
+        auto loaded = loadClassTableCsv(path);
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        QVERIFY(loaded.value() == table);
+    }
+
+    void csvWithoutColorColumnAndOtherOrder() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("simple.csv").toStdString();
+        writeText(path, "name,value,passable,fov_m,speed_mps\nfield,1,yes,10,1.5\nlake,2,no,10,0\n");
+        auto loaded = loadClassTableCsv(path);
+        QVERIFY(loaded.ok());
+        QCOMPARE(loaded.value().find(1)->name, std::string("field"));
+        QCOMPARE(loaded.value().find(1)->colorRgb, 0x808080U);
+        QVERIFY(!loaded.value().find(2)->passable);
+    }
+
+    void csvErrorsNameLineAndColumn() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("bad.csv").toStdString();
+        const std::vector<std::pair<std::string, std::vector<std::string>>> cases{
+            {"value,name,speed_mps,fov_m\n1,a,1,10\n", {"line 1", "passable"}},
+            {"value,name,speed_mps,fov_m,passable,colour,weight\n", {"line 1", "column 7", "weight"}},
+            {"value,name,speed_mps,fov_m,passable\n1,a,fast,10,true\n", {"line 2", "speed_mps", "fast"}},
+            {"value,name,speed_mps,fov_m,passable\n1,a,1,10,true\n2,b,1,10,maybe\n", {"line 3", "passable", "maybe"}},
+            {"value,name,speed_mps,fov_m,passable\n1.5,a,1,10,true\n", {"line 2", "value"}},
+            {"value,name,speed_mps,fov_m,passable\n1,a,1,10,true\n1,b,1,10,true\n", {"line 3", "repeats"}},
+            {"value,name,speed_mps,fov_m,passable\n1,a,1,10\n", {"line 2", "expected 5 fields"}},
+            {"value,name,speed_mps,fov_m,passable,color\n1,a,1,10,true,red\n", {"line 2", "color"}},
+            {"value,name,speed_mps,fov_m,passable\n1,\"a,1,10,true\n", {"line 2", "quote"}},
+            {"value,name,speed_mps,fov_m,passable\n1,a,1,0,true\n", {"line 2", "fov_m"}},
+            {"", {"line 1", "header"}},
+        };
+        for (const auto& [text, fragments] : cases) {
+            writeText(path, text);
+            auto loaded = loadClassTableCsv(path);
+            QVERIFY2(!loaded.ok(), text.c_str());
+            const std::string& error = loaded.error();
+            QVERIFY2(error.rfind(path, 0) == 0, error.c_str());
+            QVERIFY2(error.find('\n') == std::string::npos, error.c_str());
+            for (const std::string& fragment : fragments) QVERIFY2(error.find(fragment) != std::string::npos, error.c_str());
+        }
+        QVERIFY(!loadClassTableCsv(folder.filePath("missing.csv").toStdString()).ok());
+    }
+};
+
+QTEST_GUILESS_MAIN(ClassTablesTest)
+#include "test_class_tables.moc"

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "core/PlanningProblem.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace mcpp::test {
+
+struct RandomMapSpec {
+    int columns = 20;
+    int rows = 20;
+    double pixelSize = 10.0;
+    int landCovers = 1;            // 1..4 passable classes with FOVs 5 * 2^k
+    double obstacleFraction = 0.0; // share of pixels set to the obstacle class 99
+    int robots = 2;
+    std::uint32_t seed = 1;
+};
+
+// A map of random rectangular land-cover patches and scattered obstacles, with robots at distinct free
+// cells of the bottom level. Deterministic for a seed.
+[[nodiscard]] PlanningProblem randomProblem(const RandomMapSpec& spec);
+
+// A one-class grid of columns x rows pixels of `pixelSize` metres, FOV = pixelSize / 2, so each pixel is one
+// bottom cell. Obstacles (value 99) where `blocked` says.
+[[nodiscard]] PlanningProblem uniformProblem(int columns, int rows, double pixelSize, const std::vector<bool>& blocked,
+                                             const std::vector<MapPoint>& starts);
+
+// The centre of pixel (column, row) of a grid.
+[[nodiscard]] MapPoint pixelCentre(const ClassGrid& grid, int column, int row);
+
+} // namespace mcpp::test

@@ -1,0 +1,120 @@
+#include "ui/ClassTableModel.hpp"
+#include "ui/MissionDocument.hpp"
+#include "ui/RobotTableModel.hpp"
+
+#include <QSignalSpy>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+// 10 x 10 pixels of 10 m: grass everywhere but a water column at x = 5 and one nodata pixel.
+std::shared_ptr<io::LoadedRaster> smallRaster() {
+    auto raster = std::make_shared<io::LoadedRaster>();
+    raster->path = "synthetic.tif";
+    ClassGrid& grid = raster->grid;
+    grid.columns = 10;
+    grid.rows = 10;
+    grid.originX = 0.0;
+    grid.originY = 100.0;
+    grid.pixelWidth = 10.0;
+    grid.pixelHeight = 10.0;
+    grid.values.assign(100, 1);
+    grid.outside.assign(100, 0);
+    for (int row = 0; row < 10; ++row) grid.values[grid.index(5, row)] = 2;
+    grid.outside[grid.index(0, 0)] = 1;
+    raster->classPixelCounts = {{1, 89}, {2, 10}};
+    return raster;
+}
+
+io::Mission smallMission() {
+    io::Mission mission;
+    mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 2.0, 10.0, true}, LandCoverClass{2, "Water", 0x3050c0, 0.0, 10.0, false}});
+    return mission;
+}
+
+} // namespace
+
+class TestClassTableModel : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() {
+        document_ = std::make_unique<ui::MissionDocument>();
+        undoStack_ = std::make_unique<QUndoStack>();
+        document_->reset(smallRaster(), smallMission(), QString());
+        classes_ = std::make_unique<ui::ClassTableModel>(document_.get(), undoStack_.get());
+        robots_ = std::make_unique<ui::RobotTableModel>(document_.get(), undoStack_.get());
+    }
+
+    void showsClassesWithRoundedFieldOfView() {
+        QCOMPARE(classes_->rowCount(), 2);
+        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::Name)).toString(), QStringLiteral("Grass"));
+        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::RoundedFieldOfView)).toString(), QStringLiteral("10"));
+        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::Level)).toInt(), 1);
+        QCOMPARE(classes_->data(classes_->index(1, ui::ClassTableModel::Passable), Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
+        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::Colour), Qt::DecorationRole).value<QColor>(), QColor(0x80, 0xc0, 0x80));
+    }
+
+    void acceptsAValidSpeedAndUndoesIt() {
+        const auto speed = classes_->index(0, ui::ClassTableModel::Speed);
+        QVERIFY(classes_->setData(speed, QStringLiteral("3.5")));
+        QCOMPARE(document_->classes().find(1)->speedMetresPerSecond, 3.5);
+        QCOMPARE(undoStack_->count(), 1);
+        undoStack_->undo();
+        QCOMPARE(document_->classes().find(1)->speedMetresPerSecond, 2.0);
+    }
+
+    void refusesInvalidEditsSayingWhy() {
+        QSignalSpy refused(classes_.get(), &ui::ClassTableModel::editRefused);
+        QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::Speed), QStringLiteral("-1")));
+        QVERIFY(classes_->lastRefusal().contains(QStringLiteral("negative")));
+        QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::Speed), QStringLiteral("fast")));
+        QVERIFY(classes_->lastRefusal().contains(QStringLiteral("number")));
+        QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::Speed), QStringLiteral("nan")));
+        QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::FieldOfView), QStringLiteral("0")));
+        QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::Name), QStringLiteral("  ")));
+        QCOMPARE(refused.count(), 5);
+        QCOMPARE(undoStack_->count(), 0);
+        QCOMPARE(document_->classes().find(1)->speedMetresPerSecond, 2.0);
+    }
+
+    void togglesPassable() {
+        QVERIFY(classes_->setData(classes_->index(1, ui::ClassTableModel::Passable), Qt::Checked, Qt::CheckStateRole));
+        QVERIFY(document_->classes().find(2)->passable);
+    }
+
+    void addsRobotsOnlyWhereTheyCanStart() {
+        QSignalSpy refused(robots_.get(), &ui::RobotTableModel::editRefused);
+        QVERIFY(robots_->addRobot({15.0, 45.0}));
+        QVERIFY(!robots_->addRobot({55.0, 45.0})); // water
+        QVERIFY(refused.last().first().toString().contains(QStringLiteral("obstacle")));
+        QVERIFY(!robots_->addRobot({500.0, 45.0}));
+        QVERIFY(refused.last().first().toString().contains(QStringLiteral("outside")));
+        QVERIFY(!robots_->addRobot({5.0, 95.0})); // nodata
+        QVERIFY(!robots_->addRobot({16.0, 44.0})); // same pixel as Robot 1
+        QVERIFY(robots_->addRobot({85.0, 15.0}));
+        QCOMPARE(robots_->rowCount(), 2);
+        QCOMPARE(robots_->data(robots_->index(1, ui::RobotTableModel::Name)).toString(), QStringLiteral("Robot 2"));
+        QVERIFY(robots_->moveRobot(0, {25.0, 25.0}));
+        QCOMPARE(document_->robots()[0].start, (MapPoint{25.0, 25.0}));
+        undoStack_->undo();
+        QCOMPARE(document_->robots()[0].start, (MapPoint{15.0, 45.0}));
+        QVERIFY(robots_->removeRobot(0));
+        QCOMPARE(document_->robots().size(), std::size_t{1});
+        undoStack_->undo();
+        QCOMPARE(document_->robots().size(), std::size_t{2});
+        QVERIFY(!robots_->setData(robots_->index(0, ui::RobotTableModel::Easting), QStringLiteral("55")));
+    }
+
+private:
+    std::unique_ptr<ui::MissionDocument> document_;
+    std::unique_ptr<QUndoStack> undoStack_;
+    std::unique_ptr<ui::ClassTableModel> classes_;
+    std::unique_ptr<ui::RobotTableModel> robots_;
+};
+
+QTEST_MAIN(TestClassTableModel)
+#include "test_class_table_model.moc"

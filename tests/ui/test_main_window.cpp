@@ -1,0 +1,200 @@
+#include "tests/support/TestData.hpp"
+#include "ui/ClassTableModel.hpp"
+#include "ui/MainWindow.hpp"
+#include "ui/MapCanvas.hpp"
+#include "ui/ResultsPanel.hpp"
+#include "ui/SampleMission.hpp"
+
+#include <QAction>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+constexpr int kPlanningTimeoutMilliseconds = 180'000;
+
+QString dataPath(const std::string& relative) { return QString::fromStdString(test::testDataPath(relative)); }
+
+// Pixel centres whose 9 x 9 neighbourhood is one traversable class, spread over the map, so that a click a
+// device pixel off still lands on a valid start.
+std::vector<MapPoint> passableSpots(const ui::MissionDocument& document, int wanted) {
+    const ClassGrid& grid = *document.grid();
+    std::vector<MapPoint> spots;
+    const int step = std::max(grid.columns, grid.rows) / 6;
+    for (int row = grid.rows / 4; row < grid.rows - 5 && static_cast<int>(spots.size()) < wanted; row += step) {
+        for (int column = grid.columns / 5; column < grid.columns - 5 && static_cast<int>(spots.size()) < wanted; column += step) {
+            bool uniform = true;
+            const std::int32_t value = grid.valueAt(column, row);
+            for (int dy = -4; dy <= 4 && uniform; ++dy)
+                for (int dx = -4; dx <= 4 && uniform; ++dx)
+                    uniform = !grid.isOutside(column + dx, row + dy) && grid.valueAt(column + dx, row + dy) == value;
+            const LandCoverClass* landCoverClass = document.classes().find(value);
+            if (!uniform || landCoverClass == nullptr || !landCoverClass->isTraversable()) continue;
+            spots.push_back({grid.originX + (column + 0.5) * grid.pixelWidth, grid.originY - (row + 0.5) * grid.pixelHeight});
+        }
+    }
+    return spots;
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("mcpp"));
+        QCoreApplication::setApplicationName(QStringLiteral("mcpp-ui-test"));
+        QSettings().clear();
+    }
+
+    void refusesAnUnreadableRasterAndKeepsTheMission() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif"), QStringLiteral("nlcd-simplified")));
+        const auto classes = window.document()->classes();
+        QVERIFY(!window.openRaster(QStringLiteral("/no/such/raster.tif")));
+        QVERIFY(window.lastError().contains(QStringLiteral("/no/such/raster.tif")));
+        QVERIFY(!window.openMission(dataPath("landcover/nlcd.tif"))); // not a mission
+        QVERIFY(window.lastError().contains(QStringLiteral("nlcd.tif")));
+        QVERIFY(window.document()->hasMap());
+        QVERIFY(window.document()->classes() == classes);
+    }
+
+    void plansLikeAUser() {
+        QTemporaryDir directory;
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif"), QStringLiteral("nlcd-simplified")));
+        ui::MissionDocument* document = window.document();
+        QVERIFY(document->classes().size() >= 2);
+        QApplication::processEvents();
+        window.canvas()->zoomToFit();
+
+        // Three starts by clicking on the map with the Place start tool.
+        auto* placeTool = window.findChild<QAction*>(QStringLiteral("placeStartToolAction"));
+        QVERIFY(placeTool != nullptr);
+        placeTool->trigger();
+        const auto spots = passableSpots(*document, 3);
+        QCOMPARE(spots.size(), std::size_t{3});
+        for (const MapPoint& spot : spots)
+            QTest::mouseClick(window.canvas(), Qt::LeftButton, {}, window.canvas()->devicePointOf(spot).toPoint());
+        QCOMPARE(document->robots().size(), std::size_t{3});
+
+        // A click outside the map is refused with a message, and nothing is added.
+        const QPointF outside = window.canvas()->devicePointOf({document->grid()->originX - 500.0, document->grid()->originY + 500.0});
+        if (window.canvas()->rect().contains(outside.toPoint())) {
+            QTest::mouseClick(window.canvas(), Qt::LeftButton, {}, outside.toPoint());
+            QCOMPARE(document->robots().size(), std::size_t{3});
+            QVERIFY(window.lastStatusMessage().contains(QStringLiteral("outside")));
+        }
+
+        // Edit a speed in the class table.
+        ui::ClassTableModel* classes = window.classTableModel();
+        int row = -1;
+        for (int r = 0; r < classes->rowCount() && row < 0; ++r)
+            if (document->classes().classes()[static_cast<std::size_t>(r)].isTraversable()) row = r;
+        QVERIFY(row >= 0);
+        QVERIFY(classes->setData(classes->index(row, ui::ClassTableModel::Speed), QStringLiteral("2.5")));
+        QCOMPARE(document->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond, 2.5);
+        QVERIFY(!classes->setData(classes->index(row, ui::ClassTableModel::Speed), QStringLiteral("-3")));
+
+        // Plan off the GUI thread and wait.
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        QVERIFY(window.startPlanning());
+        QVERIFY(window.isPlanning());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
+        QVERIFY(document->plan() != nullptr);
+        QVERIFY(!document->planStale());
+
+        // Results.
+        QTableWidget* results = window.resultsPanel()->robotTable();
+        QCOMPARE(results->rowCount(), 3);
+        QVERIFY(window.resultsPanel()->makespanText() != QStringLiteral("–"));
+        QVERIFY(window.resultsPanel()->ratioText().toDouble() >= 0.99);
+
+        // Undo the last start: the plan goes stale, visibly.
+        window.undoStack()->undo();
+        QCOMPARE(document->robots().size(), std::size_t{2});
+        QVERIFY(document->planStale());
+        auto* staleLabel = window.findChild<QLabel*>(QStringLiteral("resultsStaleLabel"));
+        QVERIFY(staleLabel != nullptr && staleLabel->isVisible());
+        window.undoStack()->redo();
+        QVERIFY(!document->planStale());
+
+        // Export GeoJSON and read it back.
+        const QString geojson = directory.filePath(QStringLiteral("plan.geojson"));
+        QVERIFY2(window.exportPlan(ui::MainWindow::ExportFormat::GeoJson, geojson), qPrintable(window.lastError()));
+        QFile file(geojson);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QJsonParseError parseError;
+        const QJsonDocument json = QJsonDocument::fromJson(file.readAll(), &parseError);
+        QCOMPARE(parseError.error, QJsonParseError::NoError);
+        QCOMPARE(json.object().value(QStringLiteral("type")).toString(), QStringLiteral("FeatureCollection"));
+        QVERIFY(!json.object().value(QStringLiteral("features")).toArray().isEmpty());
+
+        // PNG and per-robot waypoint exports.
+        QVERIFY(window.exportPlan(ui::MainWindow::ExportFormat::Png, directory.filePath(QStringLiteral("plan.png"))));
+        QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
+        QVERIFY(window.exportPlan(ui::MainWindow::ExportFormat::QGroundControlPlan, directory.filePath(QStringLiteral("mission.plan"))));
+        QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("mission-robot3.plan"))));
+        QVERIFY(!window.exportPlan(ui::MainWindow::ExportFormat::GeoJson, QStringLiteral("/no/such/folder/plan.geojson")));
+        QVERIFY(window.lastError().contains(QStringLiteral("/no/such/folder/plan.geojson")));
+
+        // Save, reopen, and find the same robots and edited speed.
+        const QString missionPath = directory.filePath(QStringLiteral("mission.json"));
+        QVERIFY2(window.saveMission(missionPath), qPrintable(window.lastError()));
+        QVERIFY(!window.isMissionModified());
+        ui::MainWindow reopened;
+        reopened.setDialogsEnabled(false);
+        reopened.setOpenSampleOnFirstStart(false);
+        QVERIFY2(reopened.openMission(missionPath), qPrintable(reopened.lastError()));
+        QCOMPARE(reopened.document()->robots().size(), std::size_t{3});
+        QCOMPARE(reopened.document()->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond, 2.5);
+    }
+
+    void cancelsPlanning() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif"), QStringLiteral("nlcd-simplified")));
+        for (const MapPoint& spot : passableSpots(*window.document(), 2)) QVERIFY(window.robotTableModel()->addRobot(spot));
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        QVERIFY(window.startPlanning());
+        window.cancelPlanning();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        // Either the planner stopped, or it had already finished: both leave a usable window.
+        QVERIFY(!window.isPlanning());
+    }
+
+    void opensTheSampleMission() {
+        const QString sample = ui::findSampleMission();
+        if (sample.isEmpty()) QSKIP("samples/zion-nlcd/mission.json is not there yet");
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY2(window.openMission(sample), qPrintable(window.lastError()));
+        QVERIFY(!window.document()->robots().empty());
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"

@@ -1,0 +1,127 @@
+#include "ui/MapCanvas.hpp"
+#include "ui/MissionDocument.hpp"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+std::shared_ptr<io::LoadedRaster> squareRaster() {
+    auto raster = std::make_shared<io::LoadedRaster>();
+    ClassGrid& grid = raster->grid;
+    grid.columns = 100;
+    grid.rows = 50;
+    grid.originX = 500000.0;
+    grid.originY = 4100000.0;
+    grid.pixelWidth = 30.0;
+    grid.pixelHeight = 30.0;
+    grid.values.assign(5000, 1);
+    return raster;
+}
+
+} // namespace
+
+class TestMapCanvas : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() {
+        document_ = std::make_unique<ui::MissionDocument>();
+        io::Mission mission;
+        mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 2.0, 30.0, true}});
+        document_->reset(squareRaster(), mission, QString());
+        robots_.clear();
+        canvas_ = std::make_unique<ui::MapCanvas>(document_.get());
+        canvas_->resize(800, 600);
+        canvas_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(canvas_.get()));
+        canvas_->zoomToFit();
+    }
+
+    void mapsBothWays() {
+        const MapPoint point{501234.0, 4099321.0};
+        const MapPoint back = canvas_->mapPointAt(canvas_->devicePointOf(point));
+        QVERIFY(std::abs(back.x - point.x) < 1e-6 && std::abs(back.y - point.y) < 1e-6);
+        // North is up: a point further north is higher on screen.
+        QVERIFY(canvas_->devicePointOf({501000.0, 4099900.0}).y() < canvas_->devicePointOf({501000.0, 4099000.0}).y());
+    }
+
+    void fitsTheWholeMap() {
+        const QPointF topLeft = canvas_->devicePointOf({500000.0, 4100000.0});
+        const QPointF bottomRight = canvas_->devicePointOf({503000.0, 4098500.0});
+        QVERIFY(topLeft.x() >= 0 && topLeft.y() >= 0);
+        QVERIFY(bottomRight.x() <= 800 && bottomRight.y() <= 600);
+        QVERIFY(bottomRight.x() - topLeft.x() > 700); // fills the width (the map is 2:1)
+    }
+
+    void zoomsAroundTheCursor() {
+        const QPoint cursor(200, 150);
+        const MapPoint before = canvas_->mapPointAt(cursor);
+        const double scale = canvas_->pixelsPerMetre();
+        QWheelEvent wheel(QPointF(cursor), canvas_->mapToGlobal(QPointF(cursor)), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(canvas_.get(), &wheel);
+        QVERIFY(canvas_->pixelsPerMetre() > scale);
+        const MapPoint after = canvas_->mapPointAt(cursor);
+        QVERIFY(std::abs(after.x - before.x) < 0.01 && std::abs(after.y - before.y) < 0.01);
+    }
+
+    void pansByDragging() {
+        const MapPoint before = canvas_->mapPointAt(QPointF(400, 300));
+        QTest::mousePress(canvas_.get(), Qt::LeftButton, {}, QPoint(400, 300));
+        QTest::mouseMove(canvas_.get(), QPoint(450, 320));
+        QTest::mouseMove(canvas_.get(), QPoint(500, 340));
+        QTest::mouseRelease(canvas_.get(), Qt::LeftButton, {}, QPoint(500, 340));
+        const MapPoint after = canvas_->mapPointAt(QPointF(500, 340));
+        QVERIFY(std::abs(after.x - before.x) < 1.0 && std::abs(after.y - before.y) < 1.0);
+    }
+
+    void asksForAStartOnClickInPlaceMode() {
+        QSignalSpy placed(canvas_.get(), &ui::MapCanvas::placeStartRequested);
+        QTest::mouseClick(canvas_.get(), Qt::LeftButton, {}, QPoint(300, 300));
+        QCOMPARE(placed.count(), 0); // the pan tool does not place
+        canvas_->setTool(ui::MapCanvas::Tool::PlaceStart);
+        QTest::mouseClick(canvas_.get(), Qt::LeftButton, {}, QPoint(300, 300));
+        QCOMPARE(placed.count(), 1);
+        const auto point = placed.first().first().value<MapPoint>();
+        const MapPoint expected = canvas_->mapPointAt(QPointF(300, 300));
+        QVERIFY(std::abs(point.x - expected.x) < 1e-6);
+    }
+
+    void dragsAMarkerAndDeletesIt() {
+        io::RobotSpec robot;
+        robot.name = "Robot 1";
+        robot.start = {501000.0, 4099000.0};
+        document_->setRobots({robot});
+        QSignalSpy moved(canvas_.get(), &ui::MapCanvas::moveStartRequested);
+        QSignalSpy removed(canvas_.get(), &ui::MapCanvas::removeStartRequested);
+        const QPoint marker = canvas_->devicePointOf(robot.start).toPoint();
+        QTest::mousePress(canvas_.get(), Qt::LeftButton, {}, marker);
+        QTest::mouseMove(canvas_.get(), marker + QPoint(20, 0));
+        QTest::mouseMove(canvas_.get(), marker + QPoint(40, 0));
+        QTest::mouseRelease(canvas_.get(), Qt::LeftButton, {}, marker + QPoint(40, 0));
+        QCOMPARE(moved.count(), 1);
+        QCOMPARE(moved.first().first().toInt(), 0);
+        QVERIFY(moved.first().at(1).value<MapPoint>().x > robot.start.x);
+        QCOMPARE(canvas_->selectedStart(), 0);
+        QTest::keyClick(canvas_.get(), Qt::Key_Delete);
+        QCOMPARE(removed.count(), 1);
+    }
+
+    void scaleBarIsARoundNumber() {
+        const double metres = canvas_->scaleBarMetres();
+        const double mantissa = metres / std::pow(10.0, std::floor(std::log10(metres)));
+        QVERIFY(std::abs(mantissa - 1.0) < 1e-9 || std::abs(mantissa - 2.0) < 1e-9 || std::abs(mantissa - 5.0) < 1e-9);
+        QVERIFY(metres * canvas_->pixelsPerMetre() <= 130.0);
+    }
+
+private:
+    std::unique_ptr<ui::MissionDocument> document_;
+    std::unique_ptr<ui::MapCanvas> canvas_;
+    std::vector<io::RobotSpec> robots_;
+};
+
+QTEST_MAIN(TestMapCanvas)
+#include "test_map_canvas.moc"

@@ -1,0 +1,54 @@
+#include "ui/LayersPanel.hpp"
+
+#include <QCheckBox>
+#include <QVBoxLayout>
+
+namespace mcpp::ui {
+
+LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("layersPanel"));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 6, 6, 6);
+    landCover_ = addToggle(QStringLiteral("layerLandCover"), tr("Land cover"), tr("The raster in its class colours"));
+    quadTree_ = addToggle(QStringLiteral("layerQuadTree"), tr("Quadtree cells"), tr("Cell outlines, darker for larger cells"));
+    regions_ = addToggle(QStringLiteral("layerRegions"), tr("Regions"), tr("Each robot's cells, tinted in its colour"));
+    paths_ = addToggle(QStringLiteral("layerPaths"), tr("Paths"), tr("Coverage paths with arrows in the direction of travel"));
+    starts_ = addToggle(QStringLiteral("layerStarts"), tr("Start points"), tr("Numbered start markers; drag to move"));
+    unreachable_ = addToggle(QStringLiteral("layerUnreachable"), tr("Unreachable"), tr("Hatched: passable cells no robot can reach"));
+    layout->addStretch(1);
+}
+
+QCheckBox* LayersPanel::addToggle(const QString& objectName, const QString& text, const QString& toolTip) {
+    auto* box = new QCheckBox(text, this);
+    box->setObjectName(objectName);
+    box->setToolTip(toolTip);
+    box->setChecked(true);
+    layout()->addWidget(box);
+    connect(box, &QCheckBox::toggled, this, [this] { emit layersChanged(layers()); });
+    return box;
+}
+
+MapLayers LayersPanel::layers() const {
+    MapLayers layers;
+    layers.landCover = landCover_->isChecked();
+    layers.quadTree = quadTree_->isChecked();
+    layers.regions = regions_->isChecked();
+    layers.paths = paths_->isChecked();
+    layers.starts = starts_->isChecked();
+    layers.unreachable = unreachable_->isChecked();
+    return layers;
+}
+
+void LayersPanel::setLayers(const MapLayers& layers) {
+    const QSignalBlocker blockers[] = {QSignalBlocker(landCover_), QSignalBlocker(quadTree_), QSignalBlocker(regions_),
+                                       QSignalBlocker(paths_), QSignalBlocker(starts_), QSignalBlocker(unreachable_)};
+    landCover_->setChecked(layers.landCover);
+    quadTree_->setChecked(layers.quadTree);
+    regions_->setChecked(layers.regions);
+    paths_->setChecked(layers.paths);
+    starts_->setChecked(layers.starts);
+    unreachable_->setChecked(layers.unreachable);
+    emit layersChanged(this->layers());
+}
+
+} // namespace mcpp::ui

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "ui/MapLayers.hpp"
+
+#include <QWidget>
+
+class QCheckBox;
+
+namespace mcpp::ui {
+
+// One visibility toggle per map layer.
+class LayersPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit LayersPanel(QWidget* parent = nullptr);
+    [[nodiscard]] MapLayers layers() const;
+    void setLayers(const MapLayers& layers);
+
+signals:
+    void layersChanged(const mcpp::ui::MapLayers& layers);
+
+private:
+    QCheckBox* addToggle(const QString& objectName, const QString& text, const QString& toolTip);
+
+    QCheckBox* landCover_;
+    QCheckBox* quadTree_;
+    QCheckBox* regions_;
+    QCheckBox* paths_;
+    QCheckBox* starts_;
+    QCheckBox* unreachable_;
+};
+
+} // namespace mcpp::ui

@@ -1,0 +1,140 @@
+#pragma once
+
+#include "core/MapPoint.hpp"
+#include "ui/MissionDocument.hpp"
+
+#include <QMainWindow>
+#include <QString>
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QMenu;
+class QProgressBar;
+class QPushButton;
+class QTableView;
+class QUndoStack;
+
+namespace mcpp::ui {
+
+class ClassTableModel;
+class LayersPanel;
+class MapCanvas;
+class PlannerSettingsPanel;
+class PlanningRunner;
+class ResultsPanel;
+class RobotTableModel;
+struct PlanningOutcome;
+
+// The desktop application: map canvas in the middle; layers, classes, robots, planner and results in docks.
+// Every file operation is also a public method so app/main.cpp and the tests can drive it without dialogs.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    enum class ExportFormat { GeoJson, GeoPackage, Kml, Gpx, QGroundControlPlan, WaypointList, WaypointCsv, ReportJson, ReportCsv, Png, Svg };
+
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Each returns false after reporting what went wrong; the open mission is kept on failure.
+    bool openMission(const QString& path);
+    bool openRaster(const QString& path, const QString& preset = {});
+    bool saveMission(const QString& path);
+    // Per-robot formats (QGC .plan, WPL, CSV waypoints) write one file per robot: path's stem plus the robot
+    // number, unless there is a single robot.
+    bool exportPlan(ExportFormat format, const QString& path);
+    bool startPlanning();
+    void cancelPlanning();
+    [[nodiscard]] bool isPlanning() const;
+
+    // Off: errors and prompts go to the status bar and lastError() instead of message boxes (tests).
+    void setDialogsEnabled(bool enabled) { dialogsEnabled_ = enabled; }
+    // On (the default): on a first start with nothing open, show and plan the bundled sample mission.
+    void setOpenSampleOnFirstStart(bool enabled) { openSampleOnFirstStart_ = enabled; }
+
+    [[nodiscard]] MissionDocument* document() const { return document_; }
+    [[nodiscard]] MapCanvas* canvas() const { return canvas_; }
+    [[nodiscard]] QUndoStack* undoStack() const { return undoStack_; }
+    [[nodiscard]] ClassTableModel* classTableModel() const { return classModel_; }
+    [[nodiscard]] RobotTableModel* robotTableModel() const { return robotModel_; }
+    [[nodiscard]] QTableView* classTableView() const { return classView_; }
+    [[nodiscard]] QTableView* robotTableView() const { return robotView_; }
+    [[nodiscard]] ResultsPanel* resultsPanel() const { return resultsPanel_; }
+    [[nodiscard]] LayersPanel* layersPanel() const { return layersPanel_; }
+    [[nodiscard]] PlannerSettingsPanel* plannerSettingsPanel() const { return settingsPanel_; }
+    [[nodiscard]] QComboBox* presetCombo() const { return presetCombo_; }
+    [[nodiscard]] const QString& lastError() const { return lastError_; }
+    [[nodiscard]] const QString& lastStatusMessage() const { return lastStatus_; }
+    [[nodiscard]] bool isMissionModified() const;
+    // Applies a class-table preset to the open raster as one undoable edit.
+    bool applyPreset(const QString& preset);
+
+signals:
+    void planningFinished(bool success);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void createDocks();
+    void createActions();
+    void createStatusBar();
+    void connectDocument();
+    void restoreSettings();
+    void rebuildRecentMenu();
+    void updateTitle();
+    void updateActions();
+    void updateResults();
+    void syncPresetCombo();
+    void showStatus(const QString& message, int timeoutMilliseconds = 8000);
+    void reportError(const QString& title, const QString& message);
+    // Save/Discard/Cancel on unsaved changes; true when it is fine to replace the mission.
+    bool maybeSave();
+    void openFile(const QString& path);
+    void openSampleMission(bool plan);
+    void showCursor(MapPoint point);
+    void handlePlanningFinished(const PlanningOutcome& outcome);
+    void placeStart(MapPoint point);
+    void removeSelectedRobot();
+    void chooseExport(ExportFormat format);
+    [[nodiscard]] QString dialogFolder(const QString& key) const;
+    void rememberFolder(const QString& key, const QString& path);
+
+    MissionDocument* document_;
+    QUndoStack* undoStack_;
+    MapCanvas* canvas_;
+    ClassTableModel* classModel_;
+    RobotTableModel* robotModel_;
+    PlanningRunner* runner_;
+    QTableView* classView_ = nullptr;
+    QTableView* robotView_ = nullptr;
+    QComboBox* presetCombo_ = nullptr;
+    LayersPanel* layersPanel_ = nullptr;
+    PlannerSettingsPanel* settingsPanel_ = nullptr;
+    ResultsPanel* resultsPanel_ = nullptr;
+    QLabel* cursorLabel_ = nullptr;
+    QLabel* stageLabel_ = nullptr;
+    QProgressBar* progressBar_ = nullptr;
+    QPushButton* cancelButton_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QAction* saveAction_ = nullptr;
+    QAction* planAction_ = nullptr;
+    QAction* cancelAction_ = nullptr;
+    QAction* panToolAction_ = nullptr;
+    QAction* placeToolAction_ = nullptr;
+    QAction* removeRobotAction_ = nullptr;
+    QList<QAction*> exportActions_;
+    QString crsName_;
+    QString lastError_;
+    QString lastStatus_;
+    PlanInputs planningInputs_;
+    qint64 planningStartedAt_ = 0;
+    bool settingsModified_ = false;
+    bool dialogsEnabled_ = true;
+    bool openSampleOnFirstStart_ = true;
+};
+
+} // namespace mcpp::ui

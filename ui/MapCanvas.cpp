@@ -1,0 +1,307 @@
+#include "ui/MapCanvas.hpp"
+
+#include "ui/MissionDocument.hpp"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcpp::ui {
+
+namespace {
+
+constexpr double kMarkerHitRadiusPixels = 13.0;
+constexpr double kDragThresholdPixels = 4.0;
+constexpr double kScaleBarTargetPixels = 130.0;
+
+} // namespace
+
+MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(parent), document_(document) {
+    setObjectName(QStringLiteral("mapCanvas"));
+    setMouseTracking(true);
+    setFocusPolicy(Qt::StrongFocus);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setMinimumSize(200, 150);
+    connect(document_, &MissionDocument::mapChanged, this, [this] {
+        refreshMap();
+        fitPending_ = true;
+        zoomToFit();
+    });
+    connect(document_, &MissionDocument::classesChanged, this, &MapCanvas::refreshMap);
+    connect(document_, &MissionDocument::robotsChanged, this, [this] {
+        refreshStarts();
+        if (selectedStart_ >= static_cast<int>(document_->robots().size())) setSelectedStart(-1);
+    });
+    connect(document_, &MissionDocument::planChanged, this, [this] {
+        renderer_.setPlan(document_->plan());
+        update();
+    });
+    connect(document_, &MissionDocument::staleChanged, this, [this](bool stale) {
+        renderer_.setPlanStale(stale);
+        update();
+    });
+    refreshMap();
+}
+
+void MapCanvas::refreshMap() {
+    renderer_.setMap(document_->grid(), &document_->classes());
+    renderer_.setPlan(document_->plan());
+    renderer_.setPlanStale(document_->planStale());
+    refreshStarts();
+}
+
+void MapCanvas::refreshStarts() {
+    std::vector<MapPoint> starts = document_->starts();
+    if (dragPoint_ && draggedStart_ >= 0 && draggedStart_ < static_cast<int>(starts.size()))
+        starts[static_cast<std::size_t>(draggedStart_)] = *dragPoint_;
+    renderer_.setStarts(std::move(starts));
+    update();
+}
+
+void MapCanvas::setTool(Tool tool) {
+    tool_ = tool;
+    updateCursor(mapFromGlobal(QCursor::pos()));
+}
+
+void MapCanvas::setLayers(const MapLayers& layers) {
+    renderer_.setLayers(layers);
+    update();
+}
+
+void MapCanvas::setSelectedStart(int robot) {
+    if (robot == selectedStart_) return;
+    selectedStart_ = robot;
+    renderer_.setSelectedStart(robot);
+    update();
+    emit selectedStartChanged(robot);
+}
+
+QTransform MapCanvas::worldToDevice() const {
+    return QTransform(scale_, 0.0, 0.0, -scale_, width() / 2.0 - centre_.x * scale_, height() / 2.0 + centre_.y * scale_);
+}
+
+QPointF MapCanvas::devicePointOf(MapPoint point) const { return worldToDevice().map(QPointF(point.x, point.y)); }
+
+MapPoint MapCanvas::mapPointAt(QPointF devicePoint) const {
+    return {centre_.x + (devicePoint.x() - width() / 2.0) / scale_, centre_.y - (devicePoint.y() - height() / 2.0) / scale_};
+}
+
+void MapCanvas::zoomToFit() {
+    const ClassGrid* grid = document_->grid();
+    if (grid == nullptr || width() <= 0 || height() <= 0) return;
+    const double margin = 12.0;
+    scale_ = std::min((width() - 2.0 * margin) / std::max(grid->width(), 1e-9), (height() - 2.0 * margin) / std::max(grid->height(), 1e-9));
+    scale_ = std::max(scale_, 1e-9);
+    centre_ = {grid->originX + grid->width() / 2.0, grid->originY - grid->height() / 2.0};
+    fitPending_ = false;
+    update();
+}
+
+void MapCanvas::zoomIn() { zoomAround(QPointF(width() / 2.0, height() / 2.0), 1.5); }
+
+void MapCanvas::zoomOut() { zoomAround(QPointF(width() / 2.0, height() / 2.0), 1.0 / 1.5); }
+
+void MapCanvas::zoomAround(QPointF devicePoint, double factor) {
+    const ClassGrid* grid = document_->grid();
+    if (grid == nullptr) return;
+    // Limits: the whole map at least ~50 px wide; at most ~200 px per raster pixel.
+    const double smallest = 50.0 / std::max(grid->width(), grid->height());
+    const double largest = 200.0 / std::min(grid->pixelWidth, grid->pixelHeight);
+    const double newScale = std::clamp(scale_ * factor, smallest, largest);
+    const MapPoint anchor = mapPointAt(devicePoint);
+    scale_ = newScale;
+    // Keep the map point under the cursor where it was.
+    centre_ = {anchor.x - (devicePoint.x() - width() / 2.0) / scale_, anchor.y + (devicePoint.y() - height() / 2.0) / scale_};
+    update();
+}
+
+double MapCanvas::scaleBarMetres() const {
+    const double metres = kScaleBarTargetPixels / scale_;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(metres)));
+    for (const double step : {5.0, 2.0, 1.0})
+        if (step * magnitude <= metres) return step * magnitude;
+    return magnitude;
+}
+
+int MapCanvas::startAt(QPointF devicePoint) const {
+    const auto& robots = document_->robots();
+    int best = -1;
+    double bestDistance = kMarkerHitRadiusPixels;
+    for (std::size_t robot = 0; robot < robots.size(); ++robot) {
+        const double distance = QLineF(devicePointOf(robots[robot].start), devicePoint).length();
+        if (distance <= bestDistance) {
+            best = static_cast<int>(robot);
+            bestDistance = distance;
+        }
+    }
+    return best;
+}
+
+void MapCanvas::updateCursor(QPointF devicePoint) {
+    if (gesture_ == Gesture::Pan) setCursor(Qt::ClosedHandCursor);
+    else if (gesture_ == Gesture::DragStart) setCursor(Qt::SizeAllCursor);
+    else if (startAt(devicePoint) >= 0) setCursor(Qt::OpenHandCursor);
+    else if (tool_ == Tool::PlaceStart) setCursor(Qt::CrossCursor);
+    else setCursor(Qt::ArrowCursor);
+}
+
+void MapCanvas::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    if (fitPending_) zoomToFit();
+}
+
+void MapCanvas::paintEvent(QPaintEvent* event) {
+    QPainter painter(this);
+    painter.fillRect(rect(), QColor(232, 232, 228));
+    if (!document_->hasMap()) {
+        painter.setPen(QColor(90, 90, 90));
+        QFont font = painter.font();
+        font.setPointSizeF(font.pointSizeF() * 1.2);
+        painter.setFont(font);
+        painter.drawText(rect().adjusted(40, 40, -40, -40), Qt::AlignCenter | Qt::TextWordWrap,
+                         tr("No map open.\n\nOpen a land-cover raster (Ctrl+O) or a mission (Ctrl+Shift+O), drop a file "
+                            "here, or choose Help ▸ Open sample mission."));
+        return;
+    }
+    renderer_.paint(painter, worldToDevice(), QRectF(event->rect()));
+    paintScaleBar(painter);
+    paintNorthArrow(painter);
+    if (document_->planStale())
+        paintBanner(painter, tr("Plan is out of date: inputs changed since it was computed. Press Plan (F5)."), QColor(255, 236, 179));
+    else if (document_->plan() == nullptr && !document_->robots().empty())
+        paintBanner(painter, tr("Not planned yet. Press Plan (F5)."), QColor(227, 242, 253));
+    else if (document_->robots().empty())
+        paintBanner(painter, tr("Place robot starts with the Place start tool (S), then press Plan (F5)."), QColor(227, 242, 253));
+}
+
+void MapCanvas::paintBanner(QPainter& painter, const QString& text, const QColor& colour) const {
+    const QFontMetrics metrics(painter.font());
+    const int textWidth = metrics.horizontalAdvance(text);
+    const QRect box((width() - textWidth) / 2 - 12, 8, textWidth + 24, metrics.height() + 10);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setPen(QPen(QColor(120, 120, 120), 1.0));
+    painter.setBrush(colour);
+    painter.drawRoundedRect(box, 5, 5);
+    painter.setPen(QColor(40, 40, 40));
+    painter.drawText(box, Qt::AlignCenter, text);
+}
+
+void MapCanvas::paintScaleBar(QPainter& painter) const {
+    const double metres = scaleBarMetres();
+    const double pixels = metres * scale_;
+    const QString label = metres >= 1000.0 ? tr("%1 km").arg(metres / 1000.0) : tr("%1 m").arg(metres);
+    const QFontMetrics metrics(painter.font());
+    const QRectF box(10, height() - 44, std::max(pixels, static_cast<double>(metrics.horizontalAdvance(label))) + 20, 34);
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(255, 255, 255, 210));
+    painter.drawRect(box);
+    const double left = box.left() + 10;
+    const double baseline = box.bottom() - 8;
+    painter.setPen(QPen(Qt::black, 2.0));
+    painter.drawLine(QPointF(left, baseline), QPointF(left + pixels, baseline));
+    painter.drawLine(QPointF(left, baseline - 6), QPointF(left, baseline));
+    painter.drawLine(QPointF(left + pixels, baseline - 6), QPointF(left + pixels, baseline));
+    painter.drawText(QRectF(left, box.top() + 2, pixels, 16), Qt::AlignCenter, label);
+}
+
+void MapCanvas::paintNorthArrow(QPainter& painter) const {
+    const QPointF tip(width() - 24, 40);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setPen(QPen(Qt::black, 1.0));
+    painter.setBrush(Qt::black);
+    painter.drawPolygon(QPolygonF({tip, tip + QPointF(7, 20), tip + QPointF(0, 15), tip + QPointF(-7, 20)}));
+    QFont font = painter.font();
+    font.setBold(true);
+    painter.setFont(font);
+    painter.drawText(QRectF(tip.x() - 10, tip.y() + 20, 20, 16), Qt::AlignCenter, QStringLiteral("N"));
+}
+
+void MapCanvas::mousePressEvent(QMouseEvent* event) {
+    setFocus(Qt::MouseFocusReason);
+    pressPosition_ = event->position();
+    lastPosition_ = event->position();
+    if (event->button() == Qt::MiddleButton) {
+        gesture_ = Gesture::Pan;
+    } else if (event->button() == Qt::LeftButton) {
+        const int start = startAt(event->position());
+        if (start >= 0) {
+            setSelectedStart(start);
+            gesture_ = Gesture::DragStart;
+            draggedStart_ = start;
+        } else {
+            gesture_ = Gesture::Click;
+        }
+    }
+    updateCursor(event->position());
+}
+
+void MapCanvas::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF position = event->position();
+    if (document_->hasMap()) emit cursorMoved(mapPointAt(position));
+    const bool farEnough = QLineF(position, pressPosition_).length() >= kDragThresholdPixels;
+    if (gesture_ == Gesture::Click && farEnough) gesture_ = Gesture::Pan; // a click that moves becomes a pan
+    if (gesture_ == Gesture::Pan) {
+        const QPointF delta = position - lastPosition_;
+        centre_.x -= delta.x() / scale_;
+        centre_.y += delta.y() / scale_;
+        update();
+    } else if (gesture_ == Gesture::DragStart && farEnough) {
+        dragPoint_ = mapPointAt(position);
+        refreshStarts();
+    }
+    lastPosition_ = position;
+    updateCursor(position);
+}
+
+void MapCanvas::mouseReleaseEvent(QMouseEvent* event) {
+    const Gesture gesture = gesture_;
+    gesture_ = Gesture::None;
+    if (gesture == Gesture::DragStart) {
+        const int robot = draggedStart_;
+        const std::optional<MapPoint> target = dragPoint_;
+        draggedStart_ = -1;
+        dragPoint_.reset();
+        refreshStarts();
+        if (target) emit moveStartRequested(robot, *target);
+    } else if (gesture == Gesture::Click && event->button() == Qt::LeftButton && document_->hasMap()) {
+        if (tool_ == Tool::PlaceStart) emit placeStartRequested(mapPointAt(event->position()));
+        else setSelectedStart(-1);
+    }
+    updateCursor(event->position());
+}
+
+void MapCanvas::wheelEvent(QWheelEvent* event) {
+    const double steps = event->angleDelta().y() / 120.0;
+    if (steps != 0.0) zoomAround(event->position(), std::pow(1.25, steps));
+    event->accept();
+}
+
+void MapCanvas::keyPressEvent(QKeyEvent* event) {
+    if ((event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace) && selectedStart_ >= 0) {
+        emit removeStartRequested(selectedStart_);
+        return;
+    }
+    if (event->key() == Qt::Key_Escape) {
+        if (gesture_ == Gesture::DragStart) {
+            gesture_ = Gesture::None;
+            draggedStart_ = -1;
+            dragPoint_.reset();
+            refreshStarts();
+        }
+        setSelectedStart(-1);
+        return;
+    }
+    QWidget::keyPressEvent(event);
+}
+
+void MapCanvas::leaveEvent(QEvent* event) {
+    emit cursorLeft();
+    QWidget::leaveEvent(event);
+}
+
+} // namespace mcpp::ui

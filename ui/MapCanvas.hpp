@@ -1,0 +1,95 @@
+#pragma once
+
+#include "core/MapPoint.hpp"
+#include "ui/MapLayers.hpp"
+#include "ui/PlanRenderer.hpp"
+
+#include <QPoint>
+#include <QPointF>
+#include <QWidget>
+
+#include <optional>
+
+namespace mcpp::ui {
+
+class MissionDocument;
+
+// The map view: land cover and plan drawn by PlanRenderer, north up. Drag to pan, wheel to zoom around
+// the cursor, drag a start marker to move it; in place-start mode a click asks for a new robot. The
+// canvas never changes the document itself: it asks, and MainWindow decides (and may refuse).
+class MapCanvas : public QWidget {
+    Q_OBJECT
+
+public:
+    enum class Tool { Pan, PlaceStart };
+
+    explicit MapCanvas(MissionDocument* document, QWidget* parent = nullptr);
+
+    void setTool(Tool tool);
+    [[nodiscard]] Tool tool() const { return tool_; }
+    void setLayers(const MapLayers& layers);
+    [[nodiscard]] const MapLayers& layers() const { return renderer_.layers(); }
+    void setSelectedStart(int robot);
+    [[nodiscard]] int selectedStart() const { return selectedStart_; }
+
+    // Map <-> widget coordinates, for the status bar and for tests that click at map positions.
+    [[nodiscard]] QPointF devicePointOf(MapPoint point) const;
+    [[nodiscard]] MapPoint mapPointAt(QPointF devicePoint) const;
+    [[nodiscard]] double pixelsPerMetre() const { return scale_; }
+    [[nodiscard]] QTransform worldToDevice() const;
+    // The length shown by the scale bar, in metres.
+    [[nodiscard]] double scaleBarMetres() const;
+
+    QSize sizeHint() const override { return {900, 700}; }
+
+public slots:
+    void zoomToFit();
+    void zoomIn();
+    void zoomOut();
+
+signals:
+    void cursorMoved(mcpp::MapPoint point);
+    void cursorLeft();
+    void placeStartRequested(mcpp::MapPoint point);
+    void moveStartRequested(int robot, mcpp::MapPoint point);
+    void removeStartRequested(int robot);
+    void selectedStartChanged(int robot);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+
+private:
+    void refreshMap();
+    void refreshStarts();
+    void zoomAround(QPointF devicePoint, double factor);
+    [[nodiscard]] int startAt(QPointF devicePoint) const;
+    void paintScaleBar(QPainter& painter) const;
+    void paintNorthArrow(QPainter& painter) const;
+    void paintBanner(QPainter& painter, const QString& text, const QColor& colour) const;
+    void updateCursor(QPointF devicePoint);
+
+    MissionDocument* document_;
+    PlanRenderer renderer_;
+    Tool tool_ = Tool::Pan;
+    double scale_ = 1.0; // device pixels per metre
+    MapPoint centre_;
+    bool fitPending_ = true;
+    int selectedStart_ = -1;
+
+    // One press-move-release gesture.
+    enum class Gesture { None, Pan, DragStart, Click };
+    Gesture gesture_ = Gesture::None;
+    QPointF pressPosition_;
+    QPointF lastPosition_;
+    int draggedStart_ = -1;
+    std::optional<MapPoint> dragPoint_;
+};
+
+} // namespace mcpp::ui

@@ -1,0 +1,88 @@
+#pragma once
+
+#include "core/ClassTable.hpp"
+#include "core/MapPoint.hpp"
+#include "core/Plan.hpp"
+#include "core/PlannerSettings.hpp"
+#include "io/LoadedRaster.hpp"
+#include "io/Mission.hpp"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace mcpp::ui {
+
+// The inputs a plan was computed from; a plan is stale once the current inputs differ.
+struct PlanInputs {
+    ClassTable classes;
+    std::vector<MapPoint> starts;
+    PlannerSettings settings;
+};
+
+// The open mission: raster, class table, robots, planner settings and the last plan. Widgets read it and
+// change it only through its setters (undo commands call them), so every view hears about every change.
+class MissionDocument : public QObject {
+    Q_OBJECT
+
+public:
+    explicit MissionDocument(QObject* parent = nullptr);
+
+    // Replaces everything. The mission supplies band, preset, exports and settings; its robots must already
+    // be in the raster's CRS.
+    void reset(std::shared_ptr<const io::LoadedRaster> raster, io::Mission mission, QString missionPath);
+    void clear();
+
+    [[nodiscard]] bool hasMap() const { return raster_ != nullptr; }
+    [[nodiscard]] const io::LoadedRaster* raster() const { return raster_.get(); }
+    [[nodiscard]] std::shared_ptr<const io::LoadedRaster> sharedRaster() const { return raster_; }
+    [[nodiscard]] const ClassGrid* grid() const { return raster_ ? &raster_->grid : nullptr; }
+    [[nodiscard]] const io::Mission& mission() const { return mission_; }
+    [[nodiscard]] const ClassTable& classes() const { return mission_.classes; }
+    [[nodiscard]] const std::vector<io::RobotSpec>& robots() const { return mission_.robots; }
+    [[nodiscard]] std::vector<MapPoint> starts() const;
+    [[nodiscard]] const PlannerSettings& settings() const { return mission_.settings; }
+    [[nodiscard]] const QString& missionPath() const { return missionPath_; }
+    [[nodiscard]] const Plan* plan() const { return plan_.get(); }
+    [[nodiscard]] std::shared_ptr<const Plan> sharedPlan() const { return plan_; }
+    [[nodiscard]] bool planStale() const;
+    [[nodiscard]] PlanInputs currentInputs() const;
+
+    void setClasses(const ClassTable& classes, const QString& preset);
+    void setRobots(std::vector<io::RobotSpec> robots);
+    void setSettings(const PlannerSettings& settings);
+    void setMissionPath(const QString& path);
+    void setPlan(std::shared_ptr<const Plan> plan, PlanInputs inputs);
+
+    // Why a robot cannot start at this point (outside the map, nodata, obstacle class, on another start's
+    // pixel), or nothing when it can. ignoreRobot skips one robot when moving it.
+    [[nodiscard]] std::optional<QString> startProblem(MapPoint point, int ignoreRobot = -1) const;
+    // The raster value under a point, or nothing outside the map or on nodata.
+    [[nodiscard]] std::optional<std::int32_t> classValueAt(MapPoint point) const;
+    // "Robot N" with the smallest N not in use.
+    [[nodiscard]] QString nextRobotName() const;
+
+signals:
+    void mapChanged();
+    void classesChanged();
+    void robotsChanged();
+    void settingsChanged();
+    void planChanged();
+    void staleChanged(bool stale);
+    void missionPathChanged(const QString& path);
+
+private:
+    void emitStaleIfChanged();
+
+    std::shared_ptr<const io::LoadedRaster> raster_;
+    io::Mission mission_;
+    QString missionPath_;
+    std::shared_ptr<const Plan> plan_;
+    PlanInputs planInputs_;
+    bool lastStale_ = false;
+};
+
+} // namespace mcpp::ui

@@ -1,0 +1,186 @@
+#include "ui/ResultsPanel.hpp"
+
+#include "ui/RobotPalette.hpp"
+
+#include <QBarCategoryAxis>
+#include <QBarSet>
+#include <QChart>
+#include <QChartView>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSplitter>
+#include <QStackedBarSeries>
+#include <QTableWidget>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace mcpp::ui {
+
+namespace {
+
+QString hectares(double squareMetres) { return QObject::tr("%1 ha").arg(squareMetres / 10'000.0, 0, 'f', 1); }
+
+QTableWidgetItem* numberItem(const QString& text, double sortValue) {
+    auto* item = new QTableWidgetItem(text);
+    item->setData(Qt::UserRole, sortValue);
+    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+    return item;
+}
+
+QLabel* valueLabel(const QString& objectName, QWidget* parent) {
+    auto* label = new QLabel(QStringLiteral("–"), parent);
+    label->setObjectName(objectName);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    return label;
+}
+
+} // namespace
+
+ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("resultsPanel"));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 6, 6, 6);
+
+    staleLabel_ = new QLabel(tr("These results are out of date: the inputs changed after planning. Press Plan (F5)."), this);
+    staleLabel_->setObjectName(QStringLiteral("resultsStaleLabel"));
+    staleLabel_->setWordWrap(true);
+    staleLabel_->setStyleSheet(QStringLiteral("QLabel { background: #ffecb3; border: 1px solid #c9a227; padding: 4px; }"));
+    staleLabel_->hide();
+    layout->addWidget(staleLabel_);
+
+    auto* summary = new QFormLayout;
+    makespan_ = valueLabel(QStringLiteral("makespanLabel"), this);
+    lowerBound_ = valueLabel(QStringLiteral("lowerBoundLabel"), this);
+    ratio_ = valueLabel(QStringLiteral("ratioLabel"), this);
+    covered_ = valueLabel(QStringLiteral("coveredLabel"), this);
+    unreachable_ = valueLabel(QStringLiteral("unreachableLabel"), this);
+    planner_ = valueLabel(QStringLiteral("plannerLabel"), this);
+    warnings_ = valueLabel(QStringLiteral("warningsLabel"), this);
+    warnings_->setWordWrap(true);
+    summary->addRow(tr("Makespan"), makespan_);
+    summary->addRow(tr("Lower bound"), lowerBound_);
+    summary->addRow(tr("Makespan / bound"), ratio_);
+    summary->addRow(tr("Covered"), covered_);
+    summary->addRow(tr("Unreachable"), unreachable_);
+    summary->addRow(tr("Planner"), planner_);
+    summary->addRow(tr("Warnings"), warnings_);
+    layout->addLayout(summary);
+
+    table_ = new QTableWidget(0, 6, this);
+    table_->setObjectName(QStringLiteral("resultsTable"));
+    table_->setHorizontalHeaderLabels({tr("Robot"), tr("Cells"), tr("Area"), tr("Length"), tr("Time"), tr("Turns")});
+    table_->verticalHeader()->hide();
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setMinimumHeight(110);
+
+    auto* chart = new QChart;
+    chart->setTitle(tr("Time per robot"));
+    chart->legend()->hide();
+    chart->setMargins(QMargins(2, 2, 2, 2));
+    chart->setBackgroundRoundness(0);
+    chartView_ = new QChartView(chart, this);
+    chartView_->setObjectName(QStringLiteral("timeChart"));
+    chartView_->setRenderHint(QPainter::Antialiasing);
+    chartView_->setMinimumHeight(180);
+
+    auto* splitter = new QSplitter(Qt::Vertical, this);
+    splitter->addWidget(table_);
+    splitter->addWidget(chartView_);
+    layout->addWidget(splitter, 1);
+}
+
+QString ResultsPanel::formatDuration(double seconds) {
+    if (!std::isfinite(seconds)) return QStringLiteral("–");
+    const auto total = static_cast<long long>(std::llround(seconds));
+    return QStringLiteral("%1:%2:%3")
+        .arg(total / 3600)
+        .arg((total / 60) % 60, 2, 10, QLatin1Char('0'))
+        .arg(total % 60, 2, 10, QLatin1Char('0'));
+}
+
+QString ResultsPanel::makespanText() const { return makespan_->text(); }
+
+QString ResultsPanel::ratioText() const { return ratio_->text(); }
+
+void ResultsPanel::setStale(bool stale) { staleLabel_->setVisible(stale); }
+
+void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
+    table_->setSortingEnabled(false);
+    table_->setRowCount(0);
+    if (plan == nullptr) {
+        for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, warnings_}) label->setText(QStringLiteral("–"));
+        chartView_->chart()->removeAllSeries();
+        for (auto* axis : chartView_->chart()->axes()) chartView_->chart()->removeAxis(axis);
+        setStale(false);
+        return;
+    }
+    const PlanMetrics& metrics = plan->metrics;
+    table_->setRowCount(static_cast<int>(metrics.robots.size()));
+    for (std::size_t row = 0; row < metrics.robots.size(); ++row) {
+        const RobotMetrics& robot = metrics.robots[row];
+        const QString name = robot.robot < names.size() ? names[robot.robot] : tr("Robot %1").arg(robot.robot + 1);
+        auto* nameItem = new QTableWidgetItem(name);
+        nameItem->setData(Qt::DecorationRole, RobotPalette::colour(robot.robot));
+        nameItem->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+        const int r = static_cast<int>(row);
+        table_->setItem(r, 0, nameItem);
+        table_->setItem(r, 1, numberItem(QString::number(robot.cells), robot.cells));
+        table_->setItem(r, 2, numberItem(hectares(robot.areaSquareMetres), robot.areaSquareMetres));
+        table_->setItem(r, 3, numberItem(tr("%1 km").arg(robot.lengthMetres / 1000.0, 0, 'f', 2), robot.lengthMetres));
+        table_->setItem(r, 4, numberItem(formatDuration(robot.timeSeconds), robot.timeSeconds));
+        table_->setItem(r, 5, numberItem(QString::number(robot.turns), robot.turns));
+    }
+    makespan_->setText(formatDuration(metrics.makespanSeconds));
+    lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
+    ratio_->setText(QString::number(metrics.ratio, 'f', 3));
+    covered_->setText(tr("%1 (%2 % of the passable area)").arg(hectares(metrics.coveredAreaSquareMetres)).arg(metrics.coveredFraction * 100.0, 0, 'f', 1));
+    unreachable_->setText(hectares(metrics.unreachableAreaSquareMetres));
+    planner_->setText(QString::fromStdString(plan->planner));
+    QStringList warnings;
+    for (const auto& warning : plan->warnings) warnings << QString::fromStdString(warning);
+    warnings_->setText(warnings.isEmpty() ? tr("none") : warnings.join(QLatin1Char('\n')));
+    showChart(*plan, names);
+}
+
+void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
+    QChart* chart = chartView_->chart();
+    chart->removeAllSeries();
+    for (auto* axis : chart->axes()) chart->removeAxis(axis);
+    const auto& robots = plan.metrics.robots;
+    if (robots.empty()) return;
+
+    // One set per robot with a value only in its own category: each bar takes its robot's colour.
+    auto* series = new QStackedBarSeries;
+    QStringList categories;
+    double longestMinutes = 0.0;
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+        const int robot = robots[i].robot;
+        categories << (robot < names.size() ? names[robot] : tr("Robot %1").arg(robot + 1));
+        auto* set = new QBarSet(categories.back());
+        set->setColor(RobotPalette::colour(robot));
+        set->setBorderColor(RobotPalette::colour(robot).darker(130));
+        for (std::size_t j = 0; j < robots.size(); ++j) *set << (j == i ? robots[i].timeSeconds / 60.0 : 0.0);
+        series->append(set);
+        longestMinutes = std::max(longestMinutes, robots[i].timeSeconds / 60.0);
+    }
+    series->setBarWidth(0.7);
+    chart->addSeries(series);
+    auto* categoryAxis = new QBarCategoryAxis;
+    categoryAxis->append(categories);
+    chart->addAxis(categoryAxis, Qt::AlignBottom);
+    series->attachAxis(categoryAxis);
+    auto* valueAxis = new QValueAxis;
+    valueAxis->setTitleText(tr("minutes"));
+    valueAxis->setRange(0.0, std::max(longestMinutes * 1.1, 1.0));
+    valueAxis->setLabelFormat(QStringLiteral("%.0f"));
+    chart->addAxis(valueAxis, Qt::AlignLeft);
+    series->attachAxis(valueAxis);
+}
+
+} // namespace mcpp::ui

@@ -1,0 +1,49 @@
+#pragma once
+
+#include "core/Plan.hpp"
+
+#include <QStringList>
+#include <QWidget>
+
+class QChart;
+class QChartView;
+class QLabel;
+class QTableWidget;
+
+namespace mcpp::ui {
+
+// The figures of the last plan: per robot cells, area, length, time and turns; makespan against the lower
+// bound; covered and unreachable area; and a bar chart of the robots' times.
+class ResultsPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit ResultsPanel(QWidget* parent = nullptr);
+    // names: robot names by index (may be shorter than the plan's robots).
+    void showPlan(const Plan* plan, const QStringList& names);
+    void setStale(bool stale);
+
+    [[nodiscard]] QTableWidget* robotTable() const { return table_; }
+    [[nodiscard]] QString makespanText() const;
+    [[nodiscard]] QString ratioText() const;
+    [[nodiscard]] QChartView* chartView() const { return chartView_; }
+
+    // "1:02:03" for 3723 s; "4 min 05 s" style is too long for a table column.
+    [[nodiscard]] static QString formatDuration(double seconds);
+
+private:
+    void showChart(const Plan& plan, const QStringList& names);
+
+    QLabel* staleLabel_;
+    QTableWidget* table_;
+    QLabel* makespan_;
+    QLabel* lowerBound_;
+    QLabel* ratio_;
+    QLabel* covered_;
+    QLabel* unreachable_;
+    QLabel* planner_;
+    QLabel* warnings_;
+    QChartView* chartView_;
+};
+
+} // namespace mcpp::ui

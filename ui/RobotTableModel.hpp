@@ -1,0 +1,46 @@
+#pragma once
+
+#include "core/MapPoint.hpp"
+
+#include <QAbstractTableModel>
+
+class QUndoStack;
+
+namespace mcpp::ui {
+
+class MissionDocument;
+
+// The robots of the open mission: name, colour and start in the map CRS and in WGS84. Edits of the name
+// or a coordinate go through the undo stack; a start the map refuses is reported through editRefused.
+class RobotTableModel : public QAbstractTableModel {
+    Q_OBJECT
+
+public:
+    enum Column { Name, Colour, Easting, Northing, Longitude, Latitude, ColumnCount };
+
+    RobotTableModel(MissionDocument* document, QUndoStack* undoStack, QObject* parent = nullptr);
+
+    [[nodiscard]] int rowCount(const QModelIndex& parent = {}) const override;
+    [[nodiscard]] int columnCount(const QModelIndex& parent = {}) const override;
+    [[nodiscard]] QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    [[nodiscard]] Qt::ItemFlags flags(const QModelIndex& index) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
+
+    // The undoable robot edits the canvas and the buttons use. Each returns false, and says why through
+    // editRefused, when the start is not allowed.
+    bool addRobot(MapPoint start);
+    bool moveRobot(int robot, MapPoint start);
+    bool removeRobot(int robot);
+
+signals:
+    void editRefused(const QString& reason);
+
+private:
+    bool refuse(const QString& reason);
+
+    MissionDocument* document_;
+    QUndoStack* undoStack_;
+};
+
+} // namespace mcpp::ui
