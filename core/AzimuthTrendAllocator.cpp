@@ -230,8 +230,11 @@ private:
         return -1;
     }
 
-    // True when taking `cell` out of its owner's region leaves that region connected.
+    // True when taking `cell` out of its owner's region surely leaves that region connected: its neighbours
+    // in the region must meet again within a small search around it. A region that only reconnects
+    // through a long loop is treated as cut, which keeps the check cheap and never breaks a region.
     bool removalKeepsConnected(int cell) {
+        constexpr std::size_t searchLimit = 256;
         const int owner = owner_[static_cast<std::size_t>(cell)];
         std::vector<int>& sameOwner = scratchNeighbours_;
         sameOwner.clear();
@@ -244,7 +247,7 @@ private:
         queue.assign(1, sameOwner.front());
         visitStamp_[static_cast<std::size_t>(sameOwner.front())] = stamp_;
         std::size_t found = 1;
-        for (std::size_t head = 0; head < queue.size() && found < sameOwner.size(); ++head) {
+        for (std::size_t head = 0; head < queue.size() && found < sameOwner.size() && queue.size() < searchLimit; ++head) {
             for (int neighbour : topology_.of(queue[head])) {
                 if (owner_[static_cast<std::size_t>(neighbour)] != owner || visitStamp_[static_cast<std::size_t>(neighbour)] == stamp_)
                     continue;
@@ -376,7 +379,8 @@ private:
         give(cell, to);
     }
 
-    // The best cell `from` can hand to `to`: on their common border, not the start, keeping `from` connected.
+    // The best cell `from` can hand to `to`: on their common border, not the start, keeping `from` connected,
+    // and leaving the receiver below `receiverCostLimit`.
     int cellToHandOver(int from, int to, double receiverCostLimit) {
         const RobotState& donor = robots_[static_cast<std::size_t>(from)];
         const RobotState& receiver = robots_[static_cast<std::size_t>(to)];
@@ -392,15 +396,28 @@ private:
         int tried = 0;
         for (const auto& [score, cell] : candidates) {
             if (removalKeepsConnected(cell)) return cell;
-            if (++tried >= 16) break;
+            if (++tried >= 64) break;
         }
         return -1;
     }
 
+    // Whether `from` has any border cell it could hand to `to` (the chain search needs no ranking).
+    bool canHandOver(int from, int to) {
+        const RobotState& donor = robots_[static_cast<std::size_t>(from)];
+        int tried = 0;
+        for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
+            if (cell == donor.startCell || !touchesRegion(cell, to)) continue;
+            if (removalKeepsConnected(cell)) return true;
+            if (++tried >= 64) break;
+        }
+        return false;
+    }
+
+    // Finds regions the richest can pass a cell to, directly or through a chain of regions each able to
+    // hand a border cell to the next, and moves one cell along the chain to the poorest such region.
     bool moveAlongAChain(int richest) {
         const std::size_t n = robots_.size();
         const double ceiling = robots_[static_cast<std::size_t>(richest)].cost;
-        // Breadth-first over touching regions from the richest; try poorer targets first.
         std::vector<int> parent(n, -2);
         std::vector<int> order{richest};
         parent[static_cast<std::size_t>(richest)] = -1;
@@ -408,6 +425,7 @@ private:
             const int region = order[head];
             for (std::size_t other = 0; other < n; ++other) {
                 if (parent[other] != -2 || regionContacts_[static_cast<std::size_t>(region) * n + other] == 0) continue;
+                if (!canHandOver(region, static_cast<int>(other))) continue;
                 parent[other] = region;
                 order.push_back(static_cast<int>(other));
             }
@@ -422,14 +440,17 @@ private:
             std::vector<int> chain{target};
             while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
             std::reverse(chain.begin(), chain.end()); // richest ... target
+            std::vector<double> before;
+            for (int region : chain) before.push_back(robots_[static_cast<std::size_t>(region)].cost);
             // Hand over from the target's end backwards, so every region keeps cells to give.
             std::vector<std::pair<int, int>> done; // cell, previous owner
             bool ok = true;
             for (std::size_t hop = chain.size() - 1; hop >= 1; --hop) {
                 const int from = chain[hop - 1];
                 const int to = chain[hop];
-                // Costs are current: a region further down the chain has already handed its cell on.
-                const int cell = cellToHandOver(from, to, ceiling - 1e-9);
+                // A region inside the chain may also sit at the maximum: it passes cells on without gaining.
+                const double limit = hop + 1 < chain.size() ? std::max(ceiling, before[hop]) + 1e-9 : ceiling - 1e-9;
+                const int cell = cellToHandOver(from, to, limit);
                 if (cell < 0) {
                     ok = false;
                     break;
@@ -437,9 +458,14 @@ private:
                 done.emplace_back(cell, from);
                 moveCell(cell, to);
             }
-            double newMaximum = 0.0;
-            for (int region : chain) newMaximum = std::max(newMaximum, robots_[static_cast<std::size_t>(region)].cost);
-            if (ok && newMaximum < ceiling - 1e-9) return true;
+            // Accept when the richest falls and no other region rises to the old maximum: the sorted costs
+            // then fall lexicographically, so the loop ends.
+            bool improves = ok && robots_[static_cast<std::size_t>(richest)].cost < ceiling - 1e-9;
+            for (std::size_t i = 1; improves && i < chain.size(); ++i) {
+                const double now = robots_[static_cast<std::size_t>(chain[i])].cost;
+                improves = now < ceiling - 1e-9 || now <= before[i] + 1e-9;
+            }
+            if (improves) return true;
             for (auto it = done.rbegin(); it != done.rend(); ++it) moveCell(it->first, it->second);
         }
         return false;

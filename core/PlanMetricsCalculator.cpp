@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace mcpp {
 
@@ -43,18 +42,17 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
             robotMetrics.lengthMetres = path.lengthMetres;
             robotMetrics.timeSeconds = path.timeSeconds;
             robotMetrics.turns = path.turns;
-            std::map<std::pair<long long, long long>, int> seen;
+            std::vector<std::pair<long long, long long>> keys;
             const std::size_t last = path.closed && path.waypoints.size() > 1 ? path.waypoints.size() - 1 : path.waypoints.size();
             for (std::size_t i = 0; i < last; ++i) {
                 const Waypoint& waypoint = path.waypoints[i];
                 // Keys on a grid far finer than any sub-cell, so equal centres compare equal.
                 const double step = waypoint.fieldOfViewMetres / 64.0;
-                seen[{std::llround(waypoint.x / step), std::llround(waypoint.y / step)}]++;
+                keys.emplace_back(std::llround(waypoint.x / step), std::llround(waypoint.y / step));
             }
-            for (const auto& [key, count] : seen) {
-                visits += static_cast<std::size_t>(count);
-                ++distinct;
-            }
+            std::sort(keys.begin(), keys.end());
+            visits += keys.size();
+            distinct += static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
         }
         metrics.makespanSeconds = std::max(metrics.makespanSeconds, robotMetrics.timeSeconds);
     }
