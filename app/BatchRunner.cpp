@@ -12,16 +12,22 @@
 #include <QSize>
 #include <QString>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <system_error>
 
+#include <unistd.h>
+
 namespace mcpp::app {
 namespace {
 
 constexpr int planImageSide = 1600;
+// Progress the planner reports in its first seconds is held back: it checks the starts only after
+// building its cells, and an error found then should be the only line on stderr.
+constexpr auto startCheckGracePeriod = std::chrono::seconds(3);
 
 [[noreturn]] void badInput(const std::string& message) { throw BatchFailure(BatchFailure::badInput, message); }
 [[noreturn]] void internalError(const std::string& message) {
@@ -79,6 +85,7 @@ void BatchRunner::execute() {
     loadRaster();
     chooseClassTable();
     const auto starts = startsInPlanningFrame();
+    checkOutputFolder();
     for (const auto& warning : pendingWarnings_) warn(warning);
     pendingWarnings_.clear();
     const Plan plan = runPlanner(starts);
@@ -107,7 +114,7 @@ void BatchRunner::assembleMission() {
         mission_.preset = options_.preset;
     }
     for (std::size_t i = 0; i < options_.starts.size(); ++i) {
-        mission_.robots.push_back(io::RobotSpec{"robot " + std::to_string(i + 1), options_.starts[i], options_.startCrs});
+        mission_.robots.push_back(io::RobotSpec{"robot " + std::to_string(i), options_.starts[i], options_.startCrs});
     }
 }
 
@@ -129,14 +136,17 @@ void BatchRunner::loadRaster() {
 }
 
 void BatchRunner::chooseClassTable() {
-    if (!mission_.classes.empty()) {
-        classes_ = mission_.classes;
-    } else if (!mission_.preset.empty()) {
+    classes_ = mission_.classes;
+    if (!mission_.preset.empty()) {
         // Asking for the preset alone first turns an unknown name into an error instead of a default table.
         auto preset = io::presetClassTable(mission_.preset);
         if (!preset) badInput(classesLabel() + ": " + preset.error());
-        classes_ = io::classTableForRaster(raster_, mission_.preset);
-    } else {
+        // docs/mission-format.md: the preset supplies the classes the table does not list.
+        const ClassTable presetTable = io::classTableForRaster(raster_, mission_.preset);
+        for (const auto& landCover : presetTable.classes()) {
+            if (classes_.find(landCover.value) == nullptr) classes_.set(landCover);
+        }
+    } else if (classes_.empty()) {
         classes_ = io::classTableForRaster(raster_);
     }
     if (const auto problem = classes_.validate()) badInput(classesLabel() + ": " + *problem);
@@ -162,11 +172,17 @@ std::vector<MapPoint> BatchRunner::startsInPlanningFrame() const {
             auto converted = raster_.georeference.fromCrs(spec.startCrs, spec.start);
             if (!converted) badInput(startCrsLabel(robot) + ": " + converted.error());
             start = converted.value();
-        } else if (raster_.warpedFromGeographic) {
-            // The user sees the file's longitude and latitude, not the metric frame it is planned in. Only
-            // the CRS's name survives loading; WGS84 is the fallback, metres away from any other datum.
+        } else if (raster_.warpedFromGeographic && options_.missionFromFlags()) {
+            // The batch contract takes --start in the raster's own CRS, here longitude and latitude, while the
+            // plan runs in a UTM zone. Only the CRS's name survives loading; WGS84 is the fallback, metres
+            // away from any other datum. (Mission files keep planning-frame units: docs/mission-format.md.)
             auto converted = raster_.georeference.fromCrs(raster_.sourceCrsName, spec.start);
             if (!converted) converted = raster_.georeference.fromCrs("EPSG:4326", spec.start);
+            if (!converted) badInput(startLabel(robot) + ": " + converted.error());
+            start = converted.value();
+        } else {
+            // Planning-frame units, scaled to metres when the raster's CRS counts in feet.
+            auto converted = io::robotStartInPlanningFrame(spec, raster_.georeference);
             if (!converted) badInput(startLabel(robot) + ": " + converted.error());
             start = converted.value();
         }
@@ -199,6 +215,22 @@ void BatchRunner::checkStartPixel(int robot, MapPoint start) const {
     }
 }
 
+void BatchRunner::checkOutputFolder() const {
+    // Checked before planning and created only after it, so bad input never leaves an empty folder behind.
+    namespace fs = std::filesystem;
+    std::error_code code;
+    fs::path folder = fs::absolute(fs::path(options_.outputDirectory), code);
+    const std::string quotedFolder = "\"" + options_.outputDirectory + "\"";
+    if (fs::exists(folder, code) && !fs::is_directory(folder, code)) badInput("--out: " + quotedFolder + " is a file, not a folder");
+    while (!fs::exists(folder, code) && folder.has_relative_path()) folder = folder.parent_path();
+    if (!fs::is_directory(folder, code)) {
+        badInput("--out: cannot create folder " + quotedFolder + ": \"" + folder.string() + "\" is not a folder");
+    }
+    if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+        badInput("--out: cannot write folder " + quotedFolder + ": \"" + folder.string() + "\" is not writable");
+    }
+}
+
 Plan BatchRunner::runPlanner(const std::vector<MapPoint>& starts) {
     const auto planner = makePlanner(mission_.settings.planner);
     if (!planner) {
@@ -211,12 +243,20 @@ Plan BatchRunner::runPlanner(const std::vector<MapPoint>& starts) {
     problem.starts = starts;
     problem.settings = mission_.settings;
     const ProgressReporter reporter([this](std::string_view stage, double fraction) { progress_.report(stage, fraction); });
+    progress_.holdFor(startCheckGracePeriod);
     try {
-        return planner->plan(problem, reporter);
+        Plan plan = planner->plan(problem, reporter);
+        progress_.release();
+        return plan;
     } catch (const PlanningError& error) {
+        progress_.discardHeld();
         if (error.kind() == PlanningError::Kind::Cancelled) internalError(std::string("planning cancelled: ") + error.what());
-        const std::string source = options_.missionFromFlags() ? std::string() : options_.missionPath + ": ";
-        badInput(source + error.what());
+        if (!options_.missionFromFlags()) badInput(options_.missionPath + ": " + error.what());
+        const auto kind = error.kind();
+        const bool aboutStarts = kind == PlanningError::Kind::StartOutsideArea || kind == PlanningError::Kind::StartOnObstacle ||
+                                 kind == PlanningError::Kind::StartsShareCell || kind == PlanningError::Kind::TooManyRobots;
+        badInput(aboutStarts ? "--start: " + std::string(error.what()) + " (robots are numbered from 0 in --start order)"
+                             : std::string(error.what()));
     }
 }
 
@@ -315,7 +355,7 @@ std::string BatchRunner::startCrsLabel(int robot) const {
 
 std::string BatchRunner::classesLabel() const {
     if (options_.missionFromFlags()) return options_.classesPath.empty() ? "--preset" : options_.classesPath;
-    return options_.missionPath + (mission_.classes.empty() ? ": preset" : ": classes");
+    return options_.missionPath + ": classes";
 }
 
 std::string BatchRunner::plannerLabel() const {

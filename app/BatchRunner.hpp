@@ -33,6 +33,7 @@ private:
     void chooseClassTable();
     std::vector<MapPoint> startsInPlanningFrame() const;
     void checkStartPixel(int robot, MapPoint start) const;
+    void checkOutputFolder() const;
     Plan runPlanner(const std::vector<MapPoint>& starts);
     void writeOutputs(const Plan& plan);
     void printSummary(const Plan& plan) const;

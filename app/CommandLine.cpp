@@ -255,8 +255,9 @@ std::string CommandLine::usage() {
             "  --classes TABLE.csv      class table with columns value,name,speed_mps,fov_m,passable[,color]\n"
             "  --preset NAME            built-in class table instead of --classes\n"
             "  --start X,Y              a robot's start; give it once per robot. Coordinates are in the\n"
-            "                           raster's CRS unless --start-crs says otherwise. Errors number the\n"
-            "                           --start flags from 1 in the order given\n"
+            "                           raster's CRS (longitude,latitude for a geographic raster) unless\n"
+            "                           --start-crs says otherwise. Errors number the --start flags from 1\n"
+            "                           in the order given; robots in the outputs count from 0\n"
             "  --start-crs EPSG:N       CRS of the --start coordinates, e.g. EPSG:4326 for longitude,latitude\n"
             "  --band N                 raster band holding the classes (default 1)\n"
             "  --planner NAME           planner to run (default mcpp-mlct)\n"
@@ -267,8 +268,8 @@ std::string CommandLine::usage() {
             "  --open-paths             paths stop at their last cell instead of returning to the start\n"
             "  -q, --quiet              no progress lines or summary; errors are still printed\n"
             "\n"
-            "Mission files may be combined with --band, --planner, --purity, --missing-as-obstacle and\n"
-            "--open-paths, which override the mission's values.\n"
+            "Mission files (format: docs/mission-format.md) may be combined with --band, --planner,\n"
+            "--purity, --missing-as-obstacle and --open-paths, which override the mission's values.\n"
             "\n"
             "Other flags:\n"
             "  -h, --help               this text\n"
@@ -281,7 +282,12 @@ std::string CommandLine::usage() {
             "Planners:";
     for (const auto& planner : availablePlanners()) text << ' ' << planner;
     text << "\nPresets:\n";
-    for (const auto& preset : io::classTablePresets()) text << "  " << preset.name << "  " << preset.description << '\n';
+    const auto presets = io::classTablePresets();
+    std::size_t nameWidth = 0;
+    for (const auto& preset : presets) nameWidth = std::max(nameWidth, preset.name.size());
+    for (const auto& preset : presets) {
+        text << "  " << preset.name << std::string(nameWidth - preset.name.size() + 2, ' ') << preset.description << '\n';
+    }
     text << "\nExit status: 0 success, 2 bad input (one line on stderr says what), 1 internal error.\n";
     return text.str();
 }

@@ -17,7 +17,40 @@ void ProgressPrinter::report(std::string_view stage, double fraction) {
     if (!newStage && percent / percentStep_ <= lastPercent_ / percentStep_) return;
     if (newStage) stage_ = std::string(stage);
     lastPercent_ = percent;
-    stream_ << "mcpp: " << stage_ << ' ' << percent << "%\n" << std::flush;
+    emit("mcpp: " + stage_ + ' ' + std::to_string(percent) + "%\n");
+}
+
+void ProgressPrinter::holdFor(Clock::duration delay) {
+    const std::lock_guard lock(mutex_);
+    holding_ = true;
+    holdUntil_ = Clock::now() + delay;
+}
+
+void ProgressPrinter::release() {
+    const std::lock_guard lock(mutex_);
+    holding_ = false;
+    for (const auto& line : held_) stream_ << line;
+    held_.clear();
+    stream_ << std::flush;
+}
+
+void ProgressPrinter::discardHeld() {
+    const std::lock_guard lock(mutex_);
+    holding_ = false;
+    held_.clear();
+}
+
+void ProgressPrinter::emit(const std::string& line) {
+    if (holding_ && Clock::now() < holdUntil_) {
+        held_.push_back(line);
+        return;
+    }
+    if (holding_) {
+        holding_ = false;
+        for (const auto& earlier : held_) stream_ << earlier;
+        held_.clear();
+    }
+    stream_ << line << std::flush;
 }
 
 } // namespace mcpp::app

@@ -395,6 +395,13 @@ Status saveMission(const Mission& mission, const std::string& path) {
     return internal::writeFileAtomically(path, missionToJson(mission));
 }
 
+Result<MapPoint> robotStartInPlanningFrame(const RobotSpec& robot, const GeoReference& georeference) {
+    if (robot.startCrs.empty()) return georeference.fromCrsUnits(robot.start);
+    auto start = georeference.fromCrs(robot.startCrs, robot.start);
+    if (!start) return Result<MapPoint>::failure("robot \"" + robot.name + "\" start: " + start.error());
+    return start;
+}
+
 std::string resolveRasterPath(const Mission& mission, const std::string& missionPath) {
     namespace fs = std::filesystem;
     const fs::path raster(mission.rasterPath);

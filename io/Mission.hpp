@@ -3,6 +3,7 @@
 #include "core/ClassTable.hpp"
 #include "core/MapPoint.hpp"
 #include "core/PlannerSettings.hpp"
+#include "io/GeoReference.hpp"
 #include "io/Result.hpp"
 
 #include <string>
@@ -45,6 +46,9 @@ struct Mission {
 [[nodiscard]] Status saveMission(const Mission& mission, const std::string& path); // atomic
 // The text saveMission writes: fixed key order, shortest round-trip numbers, so save -> load -> save is byte-identical.
 [[nodiscard]] std::string missionToJson(const Mission& mission);
+// A robot's start in the planning frame (metres). Without start_crs the start is in the planning CRS's own
+// units (feet for a feet CRS, the UTM zone's metres for a warped geographic raster).
+[[nodiscard]] Result<MapPoint> robotStartInPlanningFrame(const RobotSpec& robot, const GeoReference& georeference);
 // The raster path resolved against the mission file's folder.
 [[nodiscard]] std::string resolveRasterPath(const Mission& mission, const std::string& missionPath);
 

@@ -384,29 +384,34 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
     if (!starts) return Status::failure(starts.error());
     auto routes = writer.layer("routes", wgs84.get(), wkbLineString);
     if (!routes) return Status::failure(routes.error());
-    for (const CoveragePath& coverage : context.plan.paths) {
-        const std::vector<Waypoint> waypoints = exportedWaypoints(coverage, context.settings.mergeCollinear);
-        if (waypoints.empty()) continue;
-        const std::string name = "robot " + std::to_string(coverage.robot);
-        OGRPoint home(waypoints.front().x / metresPerUnit, waypoints.front().y / metresPerUnit);
-        if (home.transform(transformation.value().get()) != OGRERR_NONE) {
-            return Status::failure(path + ": cannot transform a start to WGS84" + QuietGdalErrors::detail());
+    // GPX wants every <wpt> before the first <rte>: starts first, then the routes.
+    for (int pass = 0; pass < 2; ++pass) {
+        for (const CoveragePath& coverage : context.plan.paths) {
+            const std::vector<Waypoint> waypoints = exportedWaypoints(coverage, context.settings.mergeCollinear);
+            if (waypoints.empty()) continue;
+            const std::string name = "robot " + std::to_string(coverage.robot);
+            if (pass == 0) {
+                OGRPoint home(waypoints.front().x / metresPerUnit, waypoints.front().y / metresPerUnit);
+                if (home.transform(transformation.value().get()) != OGRERR_NONE) {
+                    return Status::failure(path + ": cannot transform a start to WGS84" + QuietGdalErrors::detail());
+                }
+                OGRFeature startFeature(starts.value()->GetLayerDefn());
+                startFeature.SetField("name", (name + " start").c_str());
+                startFeature.SetGeometry(&home);
+                if (Status status = writer.add(starts.value(), startFeature); !status) return status;
+                continue;
+            }
+            OGRLineString route;
+            for (const Waypoint& waypoint : waypoints) route.addPoint(waypoint.x / metresPerUnit, waypoint.y / metresPerUnit);
+            if (route.transform(transformation.value().get()) != OGRERR_NONE) {
+                return Status::failure(path + ": cannot transform " + name + "'s route to WGS84" + QuietGdalErrors::detail());
+            }
+            OGRFeature routeFeature(routes.value()->GetLayerDefn());
+            routeFeature.SetField("name", name.c_str());
+            routeFeature.SetField("number", coverage.robot);
+            routeFeature.SetGeometry(&route);
+            if (Status status = writer.add(routes.value(), routeFeature); !status) return status;
         }
-        OGRFeature startFeature(starts.value()->GetLayerDefn());
-        startFeature.SetField("name", (name + " start").c_str());
-        startFeature.SetGeometry(&home);
-        if (Status status = writer.add(starts.value(), startFeature); !status) return status;
-
-        OGRLineString route;
-        for (const Waypoint& waypoint : waypoints) route.addPoint(waypoint.x / metresPerUnit, waypoint.y / metresPerUnit);
-        if (route.transform(transformation.value().get()) != OGRERR_NONE) {
-            return Status::failure(path + ": cannot transform " + name + "'s route to WGS84" + QuietGdalErrors::detail());
-        }
-        OGRFeature routeFeature(routes.value()->GetLayerDefn());
-        routeFeature.SetField("name", name.c_str());
-        routeFeature.SetField("number", coverage.robot);
-        routeFeature.SetGeometry(&route);
-        if (Status status = writer.add(routes.value(), routeFeature); !status) return status;
     }
     return writer.commit();
 }

@@ -277,10 +277,14 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
         }
     }
     painter.setRenderHint(QPainter::Antialiasing, true);
-    QFont font = painter.font();
-    font.setBold(true);
-    font.setPixelSize(11);
-    painter.setFont(font);
+    // Text needs the font database of a QGuiApplication; without one the markers go unnumbered.
+    const bool canDrawText = qobject_cast<QGuiApplication*>(QCoreApplication::instance()) != nullptr;
+    if (canDrawText) {
+        QFont font = painter.font();
+        font.setBold(true);
+        font.setPixelSize(11);
+        painter.setFont(font);
+    }
     for (std::size_t robot = 0; robot < starts.size(); ++robot) {
         const QPointF centre = worldToDevice.map(QPointF(starts[robot].x, starts[robot].y));
         const QColor colour = RobotPalette::colour(static_cast<int>(robot));
@@ -292,8 +296,7 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
         painter.setPen(QPen(QColor(20, 20, 20), 1.5));
         painter.setBrush(colour);
         painter.drawEllipse(centre, kStartRadiusPixels, kStartRadiusPixels);
-        // Text needs the font database of a QGuiApplication; without one the marker goes unnumbered.
-        if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) continue;
+        if (!canDrawText) continue;
         painter.setPen(QPen(Qt::white, 1.0));
         const QRectF box(centre.x() - kStartRadiusPixels, centre.y() - kStartRadiusPixels, 2.0 * kStartRadiusPixels,
                          2.0 * kStartRadiusPixels);

@@ -18,7 +18,13 @@ QuietGdalErrors::~QuietGdalErrors() { CPLPopErrorHandler(); }
 
 std::string QuietGdalErrors::lastMessage() {
     const char* message = CPLGetLastErrorMsg();
-    return message == nullptr ? std::string() : std::string(message);
+    std::string text = message == nullptr ? std::string() : std::string(message);
+    // One line: GDAL messages sometimes end with or contain line breaks.
+    for (char& character : text) {
+        if (character == '\n' || character == '\r') character = ' ';
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    return text;
 }
 
 std::string QuietGdalErrors::detail() {

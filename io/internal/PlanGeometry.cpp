@@ -70,13 +70,11 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
     std::vector<std::vector<int>> cellsOfRobot(static_cast<std::size_t>(robots));
     std::vector<int> unreachableCells;
     std::vector<double> areaOfRobot(static_cast<std::size_t>(robots), 0.0);
-    double unreachableArea = 0.0;
     for (std::size_t index = 0; index < owner.size(); ++index) {
         const QuadCell& cell = tree.active(static_cast<int>(index));
         const int robot = owner[index];
         if (robot < 0) {
             unreachableCells.push_back(static_cast<int>(index));
-            unreachableArea += cell.size * cell.size;
         } else {
             cellsOfRobot[static_cast<std::size_t>(robot)].push_back(static_cast<int>(index));
             areaOfRobot[static_cast<std::size_t>(robot)] += cell.size * cell.size;
@@ -150,7 +148,6 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
                 if (wkbFlatten(part->getGeometryType()) == wkbPolygon) addPart(*part->toPolygon());
             }
         }
-        (void)unreachableArea;
     }
     return features;
 }

@@ -64,6 +64,7 @@ private slots:
     void missionFileWritesEveryOutput();
     void flagMissionWithLongitudeLatitudeStarts();
     void rerunWithFewerRobotsRemovesTheirFiles();
+    void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
     void badInputExitsTwoWithOneLine_data();
     void badInputExitsTwoWithOneLine();
@@ -278,6 +279,18 @@ void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
     QVERIFY(!QFileInfo::exists(out + "/robot_2.csv"));
 }
 
+void TestBatchEndToEnd::missingAsObstacleTurnsTheErrorIntoAWarning() {
+    // Shrubland (2) has no row: an error without the flag (see badInputExitsTwoWithOneLine), a warning with it.
+    const QString table = scratch_.filePath("without-shrubland.csv");
+    QVERIFY(writeText(table, "value,name,speed_mps,fov_m,passable\n1,Forest,1,5,true\n3,Grass,3,20,true\n4,Lake,0,10,false\n"));
+    const QString out = scratch_.filePath("missing-as-obstacle");
+    const auto run = runMcpp({"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes", table, "--start",
+                              "431040,5301040", "--start", "431420,5301060", "--missing-as-obstacle", "--purity", "0.05",
+                              "--out", out});
+    checkOutputs(out, 2, run);
+    QVERIFY2(run.standardError.contains(QStringLiteral("mcpp: warning: class 2")), qPrintable(run.standardError));
+}
+
 void TestBatchEndToEnd::readmeSampleRuns() {
     // The README's headless command, on the real NLCD sample.
     const QString out = scratch_.filePath("zion");
@@ -324,8 +337,10 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
     QTest::newRow("unknown start CRS") << (flags + QStringList{"--start", "1,2", "--start-crs", "EPSG:999999", "--out", out})
                                        << QStringList{"--start-crs"};
     QTest::newRow("two robots in one cell")
-        << (flags + QStringList{"--start", "431040,5301040", "--start", "431041,5301041", "--out", out})
-        << QStringList{};
+        << (flags + QStringList{"--start", "431050,5301050", "--start", "431055,5301055", "--out", out})
+        << QStringList{"--start", "robot 1"};
+    QTest::newRow("--out is a file") << QStringList{"--batch", mission, "--out", samplePath("synthetic/classes.csv")}
+                                     << QStringList{"--out", "classes.csv", "not a folder"};
     QTest::newRow("bad flag") << QStringList{"--batch", mission, "--out", out, "--start", "12,abc"}
                               << QStringList{"--start"};
 }

@@ -3,6 +3,7 @@
 #include "ui/MainWindow.hpp"
 #include "ui/MapCanvas.hpp"
 #include "ui/ResultsPanel.hpp"
+#include "ui/RobotTableModel.hpp"
 #include "ui/SampleMission.hpp"
 
 #include <QAction>
@@ -118,10 +119,13 @@ private slots:
 
         // Plan off the GUI thread and wait.
         QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        QElapsedTimer planningTime;
+        planningTime.start();
         QVERIFY(window.startPlanning());
         QVERIFY(window.isPlanning());
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
+        qInfo("planned in %lld ms", static_cast<long long>(planningTime.elapsed()));
         QVERIFY(document->plan() != nullptr);
         QVERIFY(!document->planStale());
 

@@ -1,0 +1,165 @@
+// Mission files: save -> load gives the same mission, save -> load -> save the same bytes; defaults; paths.
+
+#include "io/ClassTableSources.hpp"
+#include "io/Mission.hpp"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace mcpp;
+using namespace mcpp::io;
+
+namespace {
+
+std::string readBytes(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream file(path, std::ios::binary);
+    file << text;
+}
+
+Mission sampleMission() {
+    Mission mission;
+    mission.rasterPath = "../landcover/nlcd.tif";
+    mission.band = 1;
+    mission.preset = "nlcd-simplified";
+    mission.classes = presetClassTable("nlcd-simplified").value();
+    mission.classes.set(LandCoverClass{9, "Ünïcode \"quoted\", with comma", 0x0a0b0c, 0.1 + 0.2, 1.0 / 3.0, true});
+    mission.missingClassesAsObstacles = true;
+    mission.robots = {RobotSpec{"alpha", {318819.349, 4132665.467}, ""},
+                      RobotSpec{"beta", {-113.05, 37.3}, "EPSG:4326"},
+                      RobotSpec{"", {1e-7, 123456789.123456789}, ""}};
+    mission.settings.purityTolerance = 0.05;
+    mission.settings.blockedThreshold = 0.6;
+    mission.settings.closedTour = false;
+    mission.settings.rebalanceIterations = 250;
+    mission.settings.snapStartsToFreeCells = true;
+    mission.exports.altitudeMetres = 12.5;
+    mission.exports.cruiseSpeedMetresPerSecond = 1.2;
+    mission.exports.mergeCollinear = false;
+    return mission;
+}
+
+void compareMissions(const Mission& a, const Mission& b) {
+    QCOMPARE(a.version, b.version);
+    QCOMPARE(a.rasterPath, b.rasterPath);
+    QCOMPARE(a.band, b.band);
+    QCOMPARE(a.preset, b.preset);
+    QVERIFY(a.classes == b.classes);
+    QCOMPARE(a.missingClassesAsObstacles, b.missingClassesAsObstacles);
+    QVERIFY(a.robots == b.robots);
+    QCOMPARE(a.settings.planner, b.settings.planner);
+    QCOMPARE(a.settings.purityTolerance, b.settings.purityTolerance);
+    QCOMPARE(a.settings.blockedThreshold, b.settings.blockedThreshold);
+    QCOMPARE(a.settings.closedTour, b.settings.closedTour);
+    QCOMPARE(a.settings.rebalanceIterations, b.settings.rebalanceIterations);
+    QCOMPARE(a.settings.snapStartsToFreeCells, b.settings.snapStartsToFreeCells);
+    QVERIFY(a.exports == b.exports);
+}
+
+} // namespace
+
+class MissionFilesTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void saveLoadSaveIsByteIdentical() {
+        QTemporaryDir folder;
+        const std::string first = folder.filePath("mission.json").toStdString();
+        const std::string second = folder.filePath("again.json").toStdString();
+        const Mission mission = sampleMission();
+        QVERIFY(saveMission(mission, first).ok());
+        auto loaded = loadMission(first);
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        compareMissions(loaded.value(), mission);
+        QVERIFY(saveMission(loaded.value(), second).ok());
+        QCOMPARE(readBytes(second), readBytes(first));
+        QCOMPARE(missionToJson(loaded.value()), readBytes(first));
+    }
+
+    void fileIsVersionedJsonInAFixedOrder() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("mission.json").toStdString();
+        QVERIFY(saveMission(sampleMission(), path).ok());
+        const std::string text = readBytes(path);
+        QVERIFY(text.rfind("{\n  \"format\": \"mcpp-mission\",\n  \"version\": 1,\n", 0) == 0);
+        QVERIFY(text.find("\"raster\"") < text.find("\"classes\""));
+        QVERIFY(text.find("\"robots\"") < text.find("\"planner\""));
+        const QJsonDocument document = QJsonDocument::fromJson(QByteArray::fromStdString(text));
+        QVERIFY(document.isObject());
+        const QJsonObject root = document.object();
+        QCOMPARE(root["format"].toString(), QString("mcpp-mission"));
+        QCOMPARE(root["robots"].toArray().size(), 3);
+        QCOMPARE(root["robots"].toArray()[1].toObject()["start_crs"].toString(), QString("EPSG:4326"));
+        QCOMPARE(root["classes"].toObject()["table"].toArray().size(), 9);
+        QCOMPARE(root["planner"].toObject()["name"].toString(), QString("mcpp-mlct"));
+        // Shortest round-trip numbers, not fixed decimals.
+        QVERIFY(text.find("0.30000000000000004") != std::string::npos);
+        QVERIFY(text.find("\"altitude_m\": 12.5") != std::string::npos);
+    }
+
+    void minimalMissionGetsDefaults() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("minimal.json").toStdString();
+        writeText(path, R"({"format": "mcpp-mission", "version": 1, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}]})");
+        auto loaded = loadMission(path);
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        const Mission& mission = loaded.value();
+        QCOMPARE(mission.band, 1);
+        QVERIFY(mission.classes.empty());
+        QVERIFY(mission.preset.empty());
+        QCOMPARE(mission.robots.size(), std::size_t{1});
+        QCOMPARE(mission.robots[0].start, (MapPoint{10, 20}));
+        const PlannerSettings defaults;
+        QCOMPARE(mission.settings.planner, defaults.planner);
+        QCOMPARE(mission.settings.blockedThreshold, defaults.blockedThreshold);
+        QCOMPARE(mission.exports.altitudeMetres, ExportSettings{}.altitudeMetres);
+        // Saving fills in every key; that file reads back to the same mission and writes the same bytes.
+        const std::string full = folder.filePath("full.json").toStdString();
+        QVERIFY(saveMission(mission, full).ok());
+        auto reloaded = loadMission(full);
+        QVERIFY(reloaded.ok());
+        compareMissions(reloaded.value(), mission);
+        QCOMPARE(missionToJson(reloaded.value()), readBytes(full));
+    }
+
+    void rasterPathIsRelativeToTheMissionFile() {
+        Mission mission;
+        mission.rasterPath = "../data/map.tif";
+        QCOMPARE(resolveRasterPath(mission, "/projects/site/missions/m.json"), std::string("/projects/site/data/map.tif"));
+        mission.rasterPath = "/abs/map.tif";
+        QCOMPARE(resolveRasterPath(mission, "/projects/m.json"), std::string("/abs/map.tif"));
+        mission.rasterPath = "map.tif";
+        QCOMPARE(resolveRasterPath(mission, "m.json"), std::string("map.tif"));
+    }
+
+    void saveIsAtomic() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("mission.json").toStdString();
+        QVERIFY(saveMission(sampleMission(), path).ok());
+        const std::string before = readBytes(path);
+        // A failing save (folder missing) reports the path and leaves no partial file.
+        const std::string elsewhere = folder.filePath("missing/mission.json").toStdString();
+        Status failed = saveMission(sampleMission(), elsewhere);
+        QVERIFY(!failed.ok());
+        QVERIFY(failed.error().find(elsewhere) != std::string::npos);
+        QCOMPARE(readBytes(path), before);
+        int files = 0;
+        for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder.path().toStdString())) ++files;
+        QCOMPARE(files, 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(MissionFilesTest)
+#include "test_mission_files.moc"

@@ -1,0 +1,313 @@
+// Plan exports read back with OGR (and the JSON ones with QJsonDocument): kinds, counts, properties,
+// coordinates within 1e-7 degrees of the plan, CRS of the GeoPackage.
+
+#include "PlanFixture.hpp"
+#include "io/PlanExport.hpp"
+
+#include <gdal_priv.h>
+#include <ogrsf_frmts.h>
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <fstream>
+#include <map>
+
+using namespace mcpp;
+using namespace mcpp::io;
+
+namespace {
+
+struct DatasetCloser {
+    void operator()(GDALDataset* dataset) const { GDALClose(dataset); }
+};
+using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
+
+Dataset openVector(const std::string& path) {
+    GDALAllRegister();
+    return Dataset(GDALDataset::FromHandle(GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+}
+
+QJsonObject readJson(const std::string& path) {
+    QFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    return QJsonDocument::fromJson(file.readAll()).object();
+}
+
+GeoReference utm12() { return GeoReference::fromDefinition("EPSG:26912").value(); }
+
+// Largest distance in degrees between a line's vertices and the plan's waypoints taken to WGS84.
+double lineError(const OGRLineString& line, const CoveragePath& path, const GeoReference& reference) {
+    if (static_cast<std::size_t>(line.getNumPoints()) != path.waypoints.size()) return 1.0;
+    double worst = 0.0;
+    for (int i = 0; i < line.getNumPoints(); ++i) {
+        const Waypoint& waypoint = path.waypoints[static_cast<std::size_t>(i)];
+        const LonLat expected = reference.toWgs84({waypoint.x, waypoint.y}).value();
+        worst = std::max({worst, std::abs(line.getX(i) - expected.longitude), std::abs(line.getY(i) - expected.latitude)});
+    }
+    return worst;
+}
+
+// Area in square metres of a WGS84 geometry, measured back in the plan's CRS.
+double areaInCrs(const OGRGeometry& geometry, const GeoReference& reference) {
+    OGRSpatialReference wgs84;
+    wgs84.SetWellKnownGeogCS("WGS84");
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    OGRSpatialReference crs;
+    crs.SetFromUserInput(reference.wkt().c_str());
+    crs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    std::unique_ptr<OGRGeometry> copy(geometry.clone());
+    std::unique_ptr<OGRCoordinateTransformation> back(OGRCreateCoordinateTransformation(&wgs84, &crs));
+    copy->transform(back.get());
+    const auto type = wkbFlatten(copy->getGeometryType());
+    if (type == wkbPolygon) return copy->toPolygon()->get_Area();
+    if (type == wkbMultiPolygon) return copy->toMultiPolygon()->get_Area();
+    return -1.0;
+}
+
+} // namespace
+
+class PlanExportTest : public QObject {
+    Q_OBJECT
+
+private:
+    Plan plan_ = test::makeFixturePlan();
+    GeoReference reference_ = utm12();
+    ClassTable classes_;
+    QTemporaryDir folder_;
+
+    ExportContext context(ExportSettings settings = {}) const { return ExportContext{plan_, reference_, classes_, settings}; }
+    std::string file(const char* name) const { return folder_.filePath(name).toStdString(); }
+
+private slots:
+    void geoJsonReadsBackWithOgr() {
+        const std::string path = file("plan.geojson");
+        Status written = writePlanGeoJson(context(), path);
+        QVERIFY2(written.ok(), written.error().c_str());
+        Dataset dataset = openVector(path);
+        QVERIFY(dataset != nullptr);
+        QCOMPARE(dataset->GetLayerCount(), 1);
+        OGRLayer* layer = dataset->GetLayer(0);
+        std::map<std::string, int> kinds;
+        for (auto& feature : *layer) {
+            const std::string kind = feature->GetFieldAsString("kind");
+            ++kinds[kind];
+            const OGRGeometry* geometry = feature->GetGeometryRef();
+            QVERIFY(geometry != nullptr && geometry->IsValid());
+            const int robot = feature->GetFieldAsInteger("robot");
+            if (kind == "region") {
+                const auto& metrics = plan_.metrics.robots[static_cast<std::size_t>(robot)];
+                QCOMPARE(feature->GetFieldAsDouble("area_m2"), metrics.areaSquareMetres);
+                QCOMPARE(feature->GetFieldAsInteger("cells"), metrics.cells);
+                QCOMPARE(feature->GetFieldAsDouble("cost_s"), plan_.allocation.costSeconds[static_cast<std::size_t>(robot)]);
+                QVERIFY(std::abs(areaInCrs(*geometry, reference_) - metrics.areaSquareMetres) < 0.01);
+            } else if (kind == "path") {
+                const CoveragePath& coverage = plan_.paths[static_cast<std::size_t>(robot)];
+                QCOMPARE(feature->GetFieldAsDouble("length_m"), coverage.lengthMetres);
+                QCOMPARE(feature->GetFieldAsDouble("time_s"), coverage.timeSeconds);
+                QCOMPARE(feature->GetFieldAsInteger("turns"), coverage.turns);
+                QVERIFY(lineError(*geometry->toLineString(), coverage, reference_) < 1e-7);
+            } else if (kind == "start") {
+                const Waypoint& first = plan_.paths[static_cast<std::size_t>(robot)].waypoints.front();
+                const LonLat expected = reference_.toWgs84({first.x, first.y}).value();
+                QVERIFY(std::abs(geometry->toPoint()->getX() - expected.longitude) < 1e-7);
+                QVERIFY(std::abs(geometry->toPoint()->getY() - expected.latitude) < 1e-7);
+            } else if (kind == "unreachable") {
+                QCOMPARE(feature->GetFieldAsDouble("area_m2"), 100.0);
+                QVERIFY(std::abs(areaInCrs(*geometry, reference_) - 100.0) < 0.01);
+            }
+        }
+        QCOMPARE(kinds["region"], 2);
+        QCOMPARE(kinds["path"], 2);
+        QCOMPARE(kinds["start"], 2);
+        QCOMPARE(kinds["unreachable"], 1);
+
+        // The same file as plain JSON: an RFC 7946 FeatureCollection, counter-clockwise outer rings.
+        const QJsonObject root = readJson(path);
+        QCOMPARE(root["type"].toString(), QString("FeatureCollection"));
+        QVERIFY(!root.contains("crs"));
+        const QJsonArray features = root["features"].toArray();
+        QCOMPARE(features.size(), 7);
+        for (const QJsonValue& value : features) {
+            const QJsonObject feature = value.toObject();
+            QVERIFY(feature["properties"].toObject().contains("kind"));
+            if (feature["properties"].toObject()["kind"].toString() != "region") continue;
+            const QJsonObject geometry = feature["geometry"].toObject();
+            const QString type = geometry["type"].toString();
+            QVERIFY(type == "Polygon" || type == "MultiPolygon");
+            const QJsonArray polygon = type == "Polygon" ? geometry["coordinates"].toArray() : geometry["coordinates"].toArray()[0].toArray();
+            const QJsonArray ring = polygon[0].toArray();
+            double twiceArea = 0.0;
+            for (qsizetype i = 0; i + 1 < ring.size(); ++i) {
+                const QJsonArray a = ring[i].toArray(), b = ring[i + 1].toArray();
+                twiceArea += a[0].toDouble() * b[1].toDouble() - b[0].toDouble() * a[1].toDouble();
+            }
+            QVERIFY(twiceArea > 0.0);
+        }
+    }
+
+    void regionOfTwoCellsIsOnePolygon() {
+        const std::string path = file("dissolve.geojson");
+        QVERIFY(writePlanGeoJson(context(), path).ok());
+        Dataset dataset = openVector(path);
+        for (auto& feature : *dataset->GetLayer(0)) {
+            if (std::string(feature->GetFieldAsString("kind")) != "region" || feature->GetFieldAsInteger("robot") != 0) continue;
+            // NW + NE dissolved into one 20 x 10 m rectangle: one polygon, no hole, no inner edge.
+            const OGRGeometry* geometry = feature->GetGeometryRef();
+            QCOMPARE(wkbFlatten(geometry->getGeometryType()), wkbPolygon);
+            QCOMPARE(geometry->toPolygon()->getNumInteriorRings(), 0);
+            QVERIFY(geometry->toPolygon()->getExteriorRing()->getNumPoints() <= 7);
+        }
+    }
+
+    void geoPackageIsInTheRasterCrs() {
+        const std::string path = file("plan.gpkg");
+        Status written = writePlanGeoPackage(context(), path);
+        QVERIFY2(written.ok(), written.error().c_str());
+        Dataset dataset = openVector(path);
+        QVERIFY(dataset != nullptr);
+        const std::map<std::string, GIntBig> counts{{"regions", 2}, {"paths", 2}, {"starts", 2}, {"cells", 4}, {"unreachable", 1}};
+        for (const auto& [name, count] : counts) {
+            OGRLayer* layer = dataset->GetLayerByName(name.c_str());
+            QVERIFY2(layer != nullptr, name.c_str());
+            QCOMPARE(layer->GetFeatureCount(), count);
+            QVERIFY(layer->GetSpatialRef() != nullptr);
+            QCOMPARE(std::string(layer->GetSpatialRef()->GetAuthorityCode(nullptr)), std::string("26912"));
+        }
+        OGRLayer* paths = dataset->GetLayerByName("paths");
+        for (auto& feature : *paths) {
+            const CoveragePath& coverage = plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot"))];
+            const OGRLineString* line = feature->GetGeometryRef()->toLineString();
+            QCOMPARE(static_cast<std::size_t>(line->getNumPoints()), coverage.waypoints.size());
+            for (int i = 0; i < line->getNumPoints(); ++i) {
+                QCOMPARE(line->getX(i), coverage.waypoints[static_cast<std::size_t>(i)].x);
+                QCOMPARE(line->getY(i), coverage.waypoints[static_cast<std::size_t>(i)].y);
+            }
+        }
+        for (auto& feature : *dataset->GetLayerByName("cells")) {
+            const int index = feature->GetFieldAsInteger("active_index");
+            const QuadCell& cell = plan_.quadTree.active(index);
+            QCOMPARE(feature->GetFieldAsInteger("level"), cell.level);
+            QCOMPARE(feature->GetFieldAsInteger("class"), cell.classValue);
+            QCOMPARE(feature->GetFieldAsDouble("fov"), cell.size / 2);
+            QCOMPARE(feature->GetFieldAsDouble("speed"), cell.speedMetresPerSecond);
+            QCOMPARE(feature->GetFieldAsInteger("robot"), plan_.allocation.robotOfCell[static_cast<std::size_t>(index)]);
+            QCOMPARE(feature->GetGeometryRef()->toPolygon()->get_Area(), cell.size * cell.size);
+        }
+        // Writing again replaces the file.
+        QVERIFY(writePlanGeoPackage(context(), path).ok());
+    }
+
+    void geoPackageInFeetKeepsFeet() {
+        const GeoReference feet = GeoReference::fromDefinition("EPSG:2227").value();
+        const Plan plan = test::makeFixturePlan(1828803.6576, 640081.28); // 6,000,000 ft and 2,100,000 ft in metres
+        const std::string path = file("feet.gpkg");
+        QVERIFY(writePlanGeoPackage(ExportContext{plan, feet, classes_, {}}, path).ok());
+        Dataset dataset = openVector(path);
+        OGRLayer* starts = dataset->GetLayerByName("starts");
+        starts->ResetReading();
+        std::unique_ptr<OGRFeature> feature(starts->GetNextFeature());
+        QVERIFY(feature != nullptr);
+        const Waypoint& first = plan.paths[0].waypoints.front();
+        QVERIFY(std::abs(feature->GetGeometryRef()->toPoint()->getX() - first.x / feet.metresPerUnit()) < 1e-6);
+        QVERIFY(std::abs(first.x / feet.metresPerUnit() - (6000000.0 + 2.5 * 3937.0 / 1200.0)) < 1e-3);
+    }
+
+    void kmlReadsBack() {
+        const std::string path = file("plan.kml");
+        Status written = writePlanKml(context(), path);
+        QVERIFY2(written.ok(), written.error().c_str());
+        Dataset dataset = openVector(path);
+        QVERIFY(dataset != nullptr);
+        OGRLayer* paths = dataset->GetLayerByName("paths");
+        QVERIFY(paths != nullptr);
+        QCOMPARE(paths->GetFeatureCount(), GIntBig{2});
+        int robot = 0;
+        for (auto& feature : *paths) {
+            const OGRGeometry* geometry = feature->GetGeometryRef();
+            const OGRLineString* line = wkbFlatten(geometry->getGeometryType()) == wkbLineString
+                                            ? geometry->toLineString()
+                                            : geometry->toGeometryCollection()->getGeometryRef(0)->toLineString();
+            QVERIFY(lineError(*line, plan_.paths[static_cast<std::size_t>(robot++)], reference_) < 1e-7);
+        }
+        QCOMPARE(dataset->GetLayerByName("regions")->GetFeatureCount(), GIntBig{2});
+        QCOMPARE(dataset->GetLayerByName("starts")->GetFeatureCount(), GIntBig{2});
+        QCOMPARE(dataset->GetLayerByName("unreachable")->GetFeatureCount(), GIntBig{1});
+    }
+
+    void gpxHasOneRoutePerRobot() {
+        const std::string path = file("plan.gpx");
+        ExportSettings all;
+        all.mergeCollinear = false;
+        Status written = writePlanGpx(context(all), path);
+        QVERIFY2(written.ok(), written.error().c_str());
+        Dataset dataset = openVector(path);
+        QVERIFY(dataset != nullptr);
+        OGRLayer* routes = dataset->GetLayerByName("routes");
+        QVERIFY(routes != nullptr);
+        QCOMPARE(routes->GetFeatureCount(), GIntBig{2});
+        int robot = 0;
+        for (auto& feature : *routes) {
+            QCOMPARE(std::string(feature->GetFieldAsString("name")), "robot " + std::to_string(robot));
+            QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(), plan_.paths[static_cast<std::size_t>(robot)], reference_) < 1e-7);
+            ++robot;
+        }
+        // Merged: robot 0's straight run of four points becomes two.
+        QVERIFY(writePlanGpx(context(), path).ok());
+        Dataset merged = openVector(path);
+        OGRLayer* mergedRoutes = merged->GetLayerByName("routes");
+        mergedRoutes->ResetReading();
+        std::unique_ptr<OGRFeature> first(mergedRoutes->GetNextFeature());
+        QVERIFY(first != nullptr);
+        QCOMPARE(first->GetGeometryRef()->toLineString()->getNumPoints(), 5);
+    }
+
+    void reportJsonAndCsv() {
+        const std::string path = file("report.json");
+        QVERIFY(writeReportJson(context(), path).ok());
+        const QJsonObject report = readJson(path);
+        QCOMPARE(report["planner"].toString(), QString("fixture"));
+        QCOMPARE(report["makespan_s"].toDouble(), 80.0);
+        QCOMPARE(report["lower_bound_s"].toDouble(), 66.65);
+        QCOMPARE(report["ratio"].toDouble(), 80.0 / 66.65);
+        QCOMPARE(report["covered_fraction"].toDouble(), 600.0 / 700.0);
+        QCOMPARE(report["unreachable_area_m2"].toDouble(), 100.0);
+        QCOMPARE(report["repeated_fraction"].toDouble(), 0.05);
+        const QJsonArray robots = report["robots"].toArray();
+        QCOMPARE(robots.size(), 2);
+        const QJsonObject second = robots[1].toObject();
+        for (const char* key : {"robot", "cells", "area_m2", "length_m", "time_s", "turns"}) QVERIFY2(second.contains(key), key);
+        QCOMPARE(second["robot"].toInt(), 1);
+        QCOMPARE(second["area_m2"].toDouble(), 400.0);
+        QCOMPARE(second["time_s"].toDouble(), 33.33);
+        const QJsonObject timings = report["timings_ms"].toObject();
+        QCOMPARE(timings.size(), 3);
+        QCOMPARE(timings["allocation"].toDouble(), 2.25);
+
+        const std::string csv = file("report.csv");
+        QVERIFY(writeReportCsv(context(), csv).ok());
+        std::ifstream input(csv);
+        std::string header, line;
+        std::getline(input, header);
+        QCOMPARE(header, std::string("robot,cells,area_m2,length_m,time_s,turns,cost_s"));
+        std::getline(input, line);
+        QCOMPARE(line, std::string("0,2,200,40,80,3,80"));
+    }
+
+    void noCrsCannotGoToWgs84ButGeoPackageWorks() {
+        const GeoReference none;
+        const ExportContext local{plan_, none, classes_, {}};
+        Status geojson = writePlanGeoJson(local, file("local.geojson"));
+        QVERIFY(!geojson.ok());
+        QVERIFY(geojson.error().find("local.geojson") != std::string::npos);
+        QVERIFY(!QFile::exists(QString::fromStdString(file("local.geojson"))));
+        QVERIFY(writePlanGeoPackage(local, file("local.gpkg")).ok());
+    }
+};
+
+QTEST_GUILESS_MAIN(PlanExportTest)
+#include "test_plan_export.moc"

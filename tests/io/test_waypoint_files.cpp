@@ -1,0 +1,214 @@
+// Per-robot waypoint files compared with real files from QGroundControl, MAVSDK and ArduPilot.
+
+#include "PlanFixture.hpp"
+#include "io/PlanExport.hpp"
+#include "tests/support/TestData.hpp"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+using namespace mcpp;
+using namespace mcpp::io;
+using mcpp::test::testDataPath;
+
+namespace {
+
+QJsonObject readJson(const std::string& path) {
+    QFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    return QJsonDocument::fromJson(file.readAll()).object();
+}
+
+std::set<QString> keysOf(const QJsonObject& object) {
+    const QStringList keys = object.keys();
+    return {keys.begin(), keys.end()};
+}
+
+std::vector<std::vector<std::string>> tabRows(const std::string& path, std::string& header) {
+    std::ifstream file(path);
+    std::getline(file, header);
+    if (!header.empty() && header.back() == '\r') header.pop_back();
+    std::vector<std::vector<std::string>> rows;
+    std::string line;
+    while (std::getline(file, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty()) continue;
+        std::vector<std::string> fields;
+        std::stringstream stream(line);
+        std::string field;
+        while (std::getline(stream, field, '\t')) fields.push_back(field);
+        rows.push_back(fields);
+    }
+    return rows;
+}
+
+} // namespace
+
+class WaypointFilesTest : public QObject {
+    Q_OBJECT
+
+private:
+    Plan plan_ = test::makeFixturePlan();
+    GeoReference reference_ = GeoReference::fromDefinition("EPSG:26912").value();
+    ClassTable classes_;
+    QTemporaryDir folder_;
+
+    ExportContext context(ExportSettings settings = {}) const { return ExportContext{plan_, reference_, classes_, settings}; }
+    std::string file(const char* name) const { return folder_.filePath(name).toStdString(); }
+
+private slots:
+    void mergingCollinearPoints() {
+        const std::vector<Waypoint> all = exportedWaypoints(plan_.paths[0], false);
+        QCOMPARE(all.size(), plan_.paths[0].waypoints.size());
+        const std::vector<Waypoint> merged = exportedWaypoints(plan_.paths[0], true);
+        QCOMPARE(merged.size(), std::size_t{5}); // the two inner points of the straight top run go
+        QCOMPARE(merged[1].x, plan_.paths[0].waypoints[3].x);
+        QCOMPARE(merged[1].cumulativeSeconds, 30.0);
+        // A speed change keeps its point even on a straight line.
+        const std::vector<Waypoint> second = exportedWaypoints(plan_.paths[1], true);
+        QCOMPARE(second.size(), plan_.paths[1].waypoints.size());
+    }
+
+    void qgroundControlPlanMatchesTheSampleStructure() {
+        const QJsonObject sample = readJson(testDataPath("waypoint-formats/mavsdk_qgroundcontrol_sample.plan"));
+        QVERIFY(!sample.isEmpty());
+        const std::string path = file("robot0.plan");
+        ExportSettings settings;
+        settings.altitudeMetres = 25.0;
+        settings.mergeCollinear = false;
+        Status written = writeQGroundControlPlan(context(settings), 0, path);
+        QVERIFY2(written.ok(), written.error().c_str());
+        const QJsonObject plan = readJson(path);
+        QVERIFY(keysOf(plan) == keysOf(sample));
+        QCOMPARE(plan["fileType"].toString(), QString("Plan"));
+        QCOMPARE(plan["version"].toInt(), sample["version"].toInt());
+        QCOMPARE(plan["groundStation"].toString(), QString("QGroundControl"));
+        QVERIFY(keysOf(plan["geoFence"].toObject()) == keysOf(sample["geoFence"].toObject()));
+        QVERIFY(keysOf(plan["rallyPoints"].toObject()) == keysOf(sample["rallyPoints"].toObject()));
+        const QJsonObject mission = plan["mission"].toObject();
+        const QJsonObject sampleMission = sample["mission"].toObject();
+        QVERIFY(keysOf(mission) == keysOf(sampleMission));
+        QCOMPARE(mission["version"].toInt(), 2);
+        QCOMPARE(mission["cruiseSpeed"].toDouble(), 0.5);
+
+        // Every waypoint item has the keys of the sample's NAV_WAYPOINT items.
+        QJsonObject sampleWaypoint;
+        for (const QJsonValue& item : sampleMission["items"].toArray()) {
+            if (item.toObject()["command"].toInt() == 16) sampleWaypoint = item.toObject();
+        }
+        const QJsonArray items = mission["items"].toArray();
+        QCOMPARE(items.size(), static_cast<qsizetype>(plan_.paths[0].waypoints.size()));
+        int jump = 1;
+        for (qsizetype i = 0; i < items.size(); ++i) {
+            const QJsonObject item = items[i].toObject();
+            QVERIFY(keysOf(item) == keysOf(sampleWaypoint));
+            QCOMPARE(item["command"].toInt(), 16);
+            QCOMPARE(item["frame"].toInt(), 3);
+            QCOMPARE(item["type"].toString(), QString("SimpleItem"));
+            QCOMPARE(item["doJumpId"].toInt(), jump++);
+            QVERIFY(item["autoContinue"].toBool());
+            const QJsonArray params = item["params"].toArray();
+            QCOMPARE(params.size(), 7);
+            QVERIFY(params[3].isNull());
+            const Waypoint& waypoint = plan_.paths[0].waypoints[static_cast<std::size_t>(i)];
+            const LonLat expected = reference_.toWgs84({waypoint.x, waypoint.y}).value();
+            QVERIFY(std::abs(params[4].toDouble() - expected.latitude) < 1e-9);
+            QVERIFY(std::abs(params[5].toDouble() - expected.longitude) < 1e-9);
+            QCOMPARE(params[6].toDouble(), 25.0);
+            QCOMPARE(item["Altitude"].toDouble(), 25.0);
+        }
+        const QJsonArray home = mission["plannedHomePosition"].toArray();
+        QCOMPARE(home.size(), 3);
+        QCOMPARE(home[0].toDouble(), items[0].toObject()["params"].toArray()[4].toDouble());
+        QCOMPARE(home[1].toDouble(), items[0].toObject()["params"].toArray()[5].toDouble());
+    }
+
+    void speedChangesBecomeChangeSpeedItems() {
+        const std::string path = file("robot1.plan");
+        QVERIFY(writeQGroundControlPlan(context(), 1, path).ok());
+        const QJsonArray items = readJson(path)["mission"].toObject()["items"].toArray();
+        int changes = 0;
+        for (const QJsonValue& value : items) {
+            const QJsonObject item = value.toObject();
+            if (item["command"].toInt() != 178) continue;
+            ++changes;
+            QCOMPARE(item["params"].toArray()[1].toDouble(), 1.0);
+        }
+        QCOMPARE(changes, 1);
+        // A fixed cruise speed: no speed items, cruiseSpeed set.
+        ExportSettings cruise;
+        cruise.cruiseSpeedMetresPerSecond = 2.0;
+        QVERIFY(writeQGroundControlPlan(context(cruise), 1, path).ok());
+        const QJsonObject mission = readJson(path)["mission"].toObject();
+        QCOMPARE(mission["cruiseSpeed"].toDouble(), 2.0);
+        for (const QJsonValue& value : mission["items"].toArray()) QCOMPARE(value.toObject()["command"].toInt(), 16);
+    }
+
+    void waypointListMatchesQgcWpl110() {
+        std::string sampleHeader;
+        const auto sample = tabRows(testDataPath("waypoint-formats/qgc_unittest_MissionPlanner.waypoints"), sampleHeader);
+        const std::string path = file("robot0.waypoints");
+        ExportSettings settings;
+        settings.mergeCollinear = false;
+        QVERIFY(writeWaypointList(context(settings), 0, path).ok());
+        std::string header;
+        const auto rows = tabRows(path, header);
+        QCOMPARE(header, sampleHeader);
+        QCOMPARE(rows.size(), plan_.paths[0].waypoints.size() + 1);
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            QCOMPARE(rows[i].size(), sample[0].size());
+            QCOMPARE(rows[i][0], std::to_string(i));
+            QCOMPARE(rows[i][3], std::string("16"));
+            QCOMPARE(rows[i][11], std::string("1"));
+        }
+        QCOMPARE(rows[0][1], std::string("1")); // home row is current, as QGroundControl writes it
+        QCOMPARE(rows[0][2], std::string("0"));
+        QCOMPARE(rows[1][2], std::string("3"));
+        const Waypoint& first = plan_.paths[0].waypoints[0];
+        const LonLat expected = reference_.toWgs84({first.x, first.y}).value();
+        QVERIFY(std::abs(std::stod(rows[1][8]) - expected.latitude) < 1e-7);
+        QVERIFY(std::abs(std::stod(rows[1][9]) - expected.longitude) < 1e-7);
+        QCOMPARE(std::stod(rows[1][10]), ExportSettings{}.altitudeMetres);
+        QCOMPARE(rows[0][8], rows[1][8]);
+    }
+
+    void waypointCsv() {
+        const std::string path = file("robot1.csv");
+        QVERIFY(writeWaypointCsv(context(), 1, path).ok());
+        std::ifstream input(path);
+        std::string line;
+        std::getline(input, line);
+        QCOMPARE(line, std::string("index,x,y,lon,lat,class,speed_mps,fov_m,cumulative_s"));
+        std::vector<std::string> lines;
+        while (std::getline(input, line)) lines.push_back(line);
+        QCOMPARE(lines.size(), plan_.paths[1].waypoints.size());
+        std::vector<std::string> fields;
+        std::stringstream stream(lines[2]);
+        while (std::getline(stream, line, ',')) fields.push_back(line);
+        QCOMPARE(fields.size(), std::size_t{9});
+        const Waypoint& waypoint = plan_.paths[1].waypoints[2];
+        QCOMPARE(std::stod(fields[1]), waypoint.x);
+        QCOMPARE(std::stod(fields[2]), waypoint.y);
+        const LonLat expected = reference_.toWgs84({waypoint.x, waypoint.y}).value();
+        QCOMPARE(std::stod(fields[3]), expected.longitude);
+        QCOMPARE(std::stod(fields[5]), 6.0);
+        QCOMPARE(std::stod(fields[8]), 13.33);
+    }
+
+    void unknownRobotIsAnError() {
+        Status status = writeQGroundControlPlan(context(), 5, file("robot5.plan"));
+        QVERIFY(!status.ok());
+        QVERIFY(status.error().find("robot 5") != std::string::npos);
+    }
+};
+
+QTEST_GUILESS_MAIN(WaypointFilesTest)
+#include "test_waypoint_files.moc"
