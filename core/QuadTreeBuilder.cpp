@@ -180,11 +180,13 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     tree.topRows = std::max(1, static_cast<int>(std::ceil(grid.height() / tree.topCellSize - 1e-9)));
     const std::int64_t bottomColumns = static_cast<std::int64_t>(tree.topColumns) << (levels - 1);
     const std::int64_t bottomRows = static_cast<std::int64_t>(tree.topRows) << (levels - 1);
-    if (bottomColumns * bottomRows > 200'000'000)
+    // Beyond this the plan would take minutes and gigabytes: say so rather than appear to hang.
+    constexpr std::int64_t bottomCellBudget = 8'000'000;
+    if (bottomColumns * bottomRows > bottomCellBudget)
         throw PlanningError(Kind::InvalidParameter,
                             "the smallest field of view (" + std::to_string(fovMin) + " m) makes " +
                                 std::to_string(bottomColumns) + " x " + std::to_string(bottomRows) +
-                                " bottom cells; raise the FOV or use a coarser raster");
+                                " bottom cells (more than 8 million): raise the field of view of the classes or crop the raster");
 
     // Samples: pixels when they fit in a bottom cell, else the pixel under each bottom cell's centre.
     SampleGrid samples;

@@ -181,6 +181,13 @@ private slots:
         } catch (const PlanningError& error) {
             QCOMPARE(error.kind(), PlanningError::Kind::NoPassableCell);
         }
+        ClassTable tinyFov({{1, "grass", 0, 1.0, 1.0, true}});
+        try {
+            (void)QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), tinyFov, {});
+            QFAIL("a map of millions of bottom cells must be refused before it is built");
+        } catch (const PlanningError& error) {
+            QVERIFY2(std::string(error.what()).find("5000 x 5000 bottom cells") != std::string::npos, error.what());
+        }
         PlannerSettings badPurity;
         badPurity.purityTolerance = std::nan("");
         QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), table, badPurity));
