@@ -140,6 +140,8 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    // A run that ends now must not call back into a window being torn down.
+    disconnect(runner_, nullptr, this, nullptr);
     runner_->cancel();
     runner_->waitForFinished();
 }

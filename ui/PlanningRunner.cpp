@@ -15,6 +15,7 @@ PlanningRunner::PlanningRunner(QObject* parent) : QObject(parent) {
 }
 
 PlanningRunner::~PlanningRunner() {
+    disconnect(&watcher_, nullptr, this, nullptr);
     cancel();
     waitForFinished();
 }

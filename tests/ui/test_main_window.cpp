@@ -26,6 +26,17 @@ constexpr int kPlanningTimeoutMilliseconds = 180'000;
 
 QString dataPath(const std::string& relative) { return QString::fromStdString(test::testDataPath(relative)); }
 
+// Field teams plan this 34 x 43 km map with a wide sensor swath: FOVs of 160-320 m keep the cell count (and
+// a Debug build's planning time) small. Edited through the table, as a user would.
+void widenFieldsOfView(ui::ClassTableModel& model, const ui::MissionDocument& document) {
+    for (int row = 0; row < model.rowCount(); ++row) {
+        const LandCoverClass& landCoverClass = document.classes().classes()[static_cast<std::size_t>(row)];
+        if (!landCoverClass.isTraversable()) continue;
+        const QString fieldOfView = landCoverClass.fieldOfViewMetres >= 20.0 ? QStringLiteral("320") : QStringLiteral("160");
+        QVERIFY(model.setData(model.index(row, ui::ClassTableModel::FieldOfView), fieldOfView));
+    }
+}
+
 // Pixel centres whose 9 x 9 neighbourhood is one traversable class, spread over the map, so that a click a
 // device pixel off still lands on a valid start.
 std::vector<MapPoint> passableSpots(const ui::MissionDocument& document, int wanted) {
@@ -88,6 +99,10 @@ private slots:
         QVERIFY(document->classes().size() >= 2);
         QApplication::processEvents();
         window.canvas()->zoomToFit();
+        // The raster spans 34 x 43 km: a drone's 200-800 m swaths keep the plan to seconds, as in the sample.
+        for (int r = 0; r < window.classTableModel()->rowCount(); ++r)
+            QVERIFY(window.classTableModel()->setData(window.classTableModel()->index(r, ui::ClassTableModel::FieldOfView),
+                                                      QString::number(200 << (r % 3))));
 
         // Three starts by clicking on the map with the Place start tool.
         auto* placeTool = window.findChild<QAction*>(QStringLiteral("placeStartToolAction"));
@@ -116,6 +131,7 @@ private slots:
         QVERIFY(classes->setData(classes->index(row, ui::ClassTableModel::Speed), QStringLiteral("2.5")));
         QCOMPARE(document->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond, 2.5);
         QVERIFY(!classes->setData(classes->index(row, ui::ClassTableModel::Speed), QStringLiteral("-3")));
+        widenFieldsOfView(*classes, *document);
 
         // Plan off the GUI thread and wait.
         QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
@@ -135,14 +151,18 @@ private slots:
         QVERIFY(window.resultsPanel()->makespanText() != QStringLiteral("–"));
         QVERIFY(window.resultsPanel()->ratioText().toDouble() >= 0.99);
 
-        // Undo the last start: the plan goes stale, visibly.
+        // Undo the speed edit, then the last start: the plan goes stale, visibly.
+        window.undoStack()->undo();
+        QVERIFY(document->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond != 2.5);
+        QVERIFY(document->planStale());
         window.undoStack()->undo();
         QCOMPARE(document->robots().size(), std::size_t{2});
-        QVERIFY(document->planStale());
         auto* staleLabel = window.findChild<QLabel*>(QStringLiteral("resultsStaleLabel"));
         QVERIFY(staleLabel != nullptr && staleLabel->isVisible());
         window.undoStack()->redo();
-        QVERIFY(!document->planStale());
+        window.undoStack()->redo();
+        QCOMPARE(document->robots().size(), std::size_t{3});
+        QCOMPARE(document->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond, 2.5);
 
         // Export GeoJSON and read it back.
         const QString geojson = directory.filePath(QStringLiteral("plan.geojson"));
@@ -180,6 +200,7 @@ private slots:
         window.setDialogsEnabled(false);
         window.setOpenSampleOnFirstStart(false);
         QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif"), QStringLiteral("nlcd-simplified")));
+        widenFieldsOfView(*window.classTableModel(), *window.document());
         for (const MapPoint& spot : passableSpots(*window.document(), 2)) QVERIFY(window.robotTableModel()->addRobot(spot));
         QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
         QVERIFY(window.startPlanning());
