@@ -7,14 +7,15 @@ namespace mcpp::app {
 
 // Ends a batch run early with a one-line message and the exit code of the batch contract.
 class BatchFailure : public std::runtime_error {
-public:
+  public:
     static constexpr int badInput = 2;
     static constexpr int internalError = 1;
 
-    BatchFailure(int exitCode, const std::string& message) : std::runtime_error(message), exitCode_(exitCode) {}
+    BatchFailure(int exitCode, const std::string& message)
+        : std::runtime_error(message), exitCode_(exitCode) {}
     [[nodiscard]] int exitCode() const { return exitCode_; }
 
-private:
+  private:
     int exitCode_;
 };
 

@@ -16,16 +16,17 @@ namespace mcpp::app {
 // Runs one headless planning job: mission in (file or flags), outputs out, and the batch contract's
 // exit code. Needs a QGuiApplication (plan.png is painted with QPainter).
 class BatchRunner {
-public:
+  public:
     BatchRunner(CommandLineOptions options, std::ostream& output, std::ostream& diagnostics);
 
     // 0 on success, 2 on bad input, 1 on an internal error; the reason is one line on diagnostics.
     [[nodiscard]] int run();
 
-    // The stem of robot i's waypoint files; i counts from 0 like the "robot" fields of plan.geojson and report.json.
+    // The stem of robot i's waypoint files; i counts from 0 like the "robot" fields of plan.geojson and
+    // report.json.
     [[nodiscard]] static std::string robotFileStem(int robot);
 
-private:
+  private:
     void execute();
     void assembleMission();
     void applyOverrides();

@@ -43,8 +43,10 @@ constexpr std::array flagSpecs{
 };
 
 const FlagSpec* findFlag(std::string_view name) {
-    if (name == "-o") name = "--out";
-    if (name == "-q") name = "--quiet";
+    if (name == "-o")
+        name = "--out";
+    if (name == "-q")
+        name = "--quiet";
     const auto found = std::find_if(flagSpecs.begin(), flagSpecs.end(),
                                     [name](const FlagSpec& spec) { return spec.name == name; });
     return found == flagSpecs.end() ? nullptr : &*found;
@@ -52,18 +54,22 @@ const FlagSpec* findFlag(std::string_view name) {
 
 std::string_view trimmed(std::string_view text) {
     const auto first = text.find_first_not_of(" \t");
-    if (first == std::string_view::npos) return {};
+    if (first == std::string_view::npos)
+        return {};
     const auto last = text.find_last_not_of(" \t");
     return text.substr(first, last - first + 1);
 }
 
 std::optional<double> parseNumber(std::string_view text) {
     text = trimmed(text);
-    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-    if (text.empty()) return std::nullopt;
+    if (!text.empty() && text.front() == '+')
+        text.remove_prefix(1);
+    if (text.empty())
+        return std::nullopt;
     double value = 0.0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+        return std::nullopt;
     return value;
 }
 
@@ -71,35 +77,44 @@ std::optional<int> parsePositiveInteger(std::string_view text) {
     text = trimmed(text);
     int value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 1) return std::nullopt;
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 1)
+        return std::nullopt;
     return value;
 }
 
 std::optional<MapPoint> parsePoint(std::string_view text) {
     const auto comma = text.find(',');
-    if (comma == std::string_view::npos) return std::nullopt;
+    if (comma == std::string_view::npos)
+        return std::nullopt;
     const auto x = parseNumber(text.substr(0, comma));
     const auto y = parseNumber(text.substr(comma + 1));
-    if (!x || !y) return std::nullopt;
+    if (!x || !y)
+        return std::nullopt;
     return MapPoint{*x, *y};
 }
 
 // EPSG:N is what the batch contract promises; anything richer belongs in a mission file.
 bool isEpsgCode(std::string_view text) {
     constexpr std::string_view prefix = "EPSG:";
-    if (text.size() <= prefix.size()) return false;
+    if (text.size() <= prefix.size())
+        return false;
     for (std::size_t i = 0; i < prefix.size(); ++i) {
-        if (std::toupper(static_cast<unsigned char>(text[i])) != prefix[i]) return false;
+        if (std::toupper(static_cast<unsigned char>(text[i])) != prefix[i])
+            return false;
     }
     const auto digits = text.substr(prefix.size());
     return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
-std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
+std::string quoted(std::string_view text) {
+    return "\"" + std::string(text) + "\"";
+}
 
 // A value-taking flag swallows the next argument unless it is another long flag; "-12,5" stays a value
 // so negative coordinates need no escaping.
-bool looksLikeFlag(std::string_view argument) { return argument.size() > 2 && argument.substr(0, 2) == "--"; }
+bool looksLikeFlag(std::string_view argument) {
+    return argument.size() > 2 && argument.substr(0, 2) == "--";
+}
 
 CommandLineParseResult failure(std::string message) {
     CommandLineParseResult result;
@@ -113,7 +128,8 @@ CommandLineParseResult failure(std::string message) {
 CommandLineParseResult CommandLine::parse(const std::vector<std::string>& arguments) {
     // --help and --version win over everything else, so a user can always get them.
     for (const auto& argument : arguments) {
-        if (argument == "--") break;
+        if (argument == "--")
+            break;
         if (argument == "--help" || argument == "-h") {
             CommandLineParseResult result;
             result.options.mode = RunMode::Help;
@@ -150,7 +166,8 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             name = name.substr(0, equals);
         }
         const FlagSpec* spec = findFlag(name);
-        if (spec == nullptr) return failure("unknown flag " + std::string(name) + " (see mcpp --help)");
+        if (spec == nullptr)
+            return failure("unknown flag " + std::string(name) + " (see mcpp --help)");
         if (!spec->repeatable && std::find(seen.begin(), seen.end(), spec->name) != seen.end()) {
             return failure(std::string(spec->name) + " is given more than once");
         }
@@ -158,7 +175,8 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
 
         std::string value;
         if (spec->valueName.empty()) {
-            if (inlineValue) return failure(std::string(spec->name) + " takes no value");
+            if (inlineValue)
+                return failure(std::string(spec->name) + " takes no value");
         } else if (inlineValue) {
             value = *inlineValue;
         } else if (i + 1 < arguments.size() && !looksLikeFlag(arguments[i + 1])) {
@@ -184,21 +202,26 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
         } else if (flag == "--start") {
             ++startCount;
             const auto point = parsePoint(value);
-            if (!point) return failure("--start " + std::to_string(startCount) + ": " + quoted(value) + " is not X,Y");
+            if (!point)
+                return failure("--start " + std::to_string(startCount) + ": " + quoted(value) +
+                               " is not X,Y");
             options.starts.push_back(*point);
         } else if (flag == "--start-crs") {
-            if (!isEpsgCode(value)) return failure("--start-crs: " + quoted(value) + " is not EPSG:N");
+            if (!isEpsgCode(value))
+                return failure("--start-crs: " + quoted(value) + " is not EPSG:N");
             options.startCrs = value;
         } else if (flag == "--planner") {
             options.planner = value;
         } else if (flag == "--band") {
             const auto band = parsePositiveInteger(value);
-            if (!band) return failure("--band: " + quoted(value) + " is not a band number (1, 2, ...)");
+            if (!band)
+                return failure("--band: " + quoted(value) + " is not a band number (1, 2, ...)");
             options.band = *band;
         } else if (flag == "--purity") {
             const auto purity = parseNumber(value);
             if (!purity || *purity < 0.0 || *purity >= 1.0) {
-                return failure("--purity: " + quoted(value) + " is not a fraction from 0 up to (not including) 1");
+                return failure("--purity: " + quoted(value) +
+                               " is not a fraction from 0 up to (not including) 1");
             }
             options.purityTolerance = *purity;
         } else if (flag == "--missing-as-obstacle") {
@@ -210,88 +233,108 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
         }
     }
 
-    if (positionals.size() > 1) return failure("unexpected argument " + quoted(positionals[1]) + " (see mcpp --help)");
+    if (positionals.size() > 1)
+        return failure("unexpected argument " + quoted(positionals[1]) + " (see mcpp --help)");
 
     if (!batch) {
         for (const auto flag : seen) {
-            if (findFlag(flag)->batchOnly) return failure(std::string(flag) + " only applies with --batch");
+            if (findFlag(flag)->batchOnly)
+                return failure(std::string(flag) + " only applies with --batch");
         }
         options.mode = RunMode::Gui;
-        if (!positionals.empty()) options.guiFile = positionals.front();
+        if (!positionals.empty())
+            options.guiFile = positionals.front();
         return {options, {}, 0};
     }
 
     options.mode = RunMode::Batch;
-    const auto given = [&seen](std::string_view flag) { return std::find(seen.begin(), seen.end(), flag) != seen.end(); };
+    const auto given = [&seen](std::string_view flag) {
+        return std::find(seen.begin(), seen.end(), flag) != seen.end();
+    };
     if (!positionals.empty()) {
         options.missionPath = positionals.front();
         for (const std::string_view flag : {"--raster", "--classes", "--preset", "--start", "--start-crs"}) {
-            if (given(flag)) return failure(std::string(flag) + " cannot be combined with a mission file; the mission gives it");
+            if (given(flag))
+                return failure(std::string(flag) +
+                               " cannot be combined with a mission file; the mission gives it");
         }
     } else {
-        if (options.rasterPath.empty()) return failure("--batch needs MISSION.json or --raster FILE");
-        if (given("--classes") && given("--preset")) return failure("--classes and --preset cannot be used together");
-        if (!given("--classes") && !given("--preset")) return failure("--raster needs --classes TABLE.csv or --preset NAME");
-        if (options.starts.empty()) return failure("--raster needs at least one --start X,Y");
+        if (options.rasterPath.empty())
+            return failure("--batch needs MISSION.json or --raster FILE");
+        if (given("--classes") && given("--preset"))
+            return failure("--classes and --preset cannot be used together");
+        if (!given("--classes") && !given("--preset"))
+            return failure("--raster needs --classes TABLE.csv or --preset NAME");
+        if (options.starts.empty())
+            return failure("--raster needs at least one --start X,Y");
     }
-    if (options.outputDirectory.empty()) return failure("--batch needs --out DIR");
+    if (options.outputDirectory.empty())
+        return failure("--batch needs --out DIR");
     return {options, {}, 0};
 }
 
 std::string CommandLine::usage() {
     std::ostringstream text;
-    text << "Usage:\n"
-            "  mcpp [MISSION.json | RASTER]\n"
-            "      Opens the planner window, optionally with a mission or a land-cover raster.\n"
-            "  mcpp --batch MISSION.json --out DIR [options]\n"
-            "  mcpp --batch --raster FILE (--classes TABLE.csv | --preset NAME) --start X,Y [--start X,Y ...]\n"
-            "       [--start-crs EPSG:N] --out DIR [options]\n"
-            "      Plans without a window and writes the outputs into DIR.\n"
-            "\n"
-            "Batch flags:\n"
-            "  --batch                  plan headless; the only positional argument is then a mission file\n"
-            "  -o, --out DIR            output folder, created when missing; existing files are replaced\n"
-            "  --raster FILE            land-cover raster (any format GDAL reads)\n"
-            "  --classes TABLE.csv      class table with columns value,name,speed_mps,fov_m,passable[,color]\n"
-            "  --preset NAME            built-in class table instead of --classes\n"
-            "  --start X,Y              a robot's start; give it once per robot. Coordinates are in the\n"
-            "                           raster's CRS (longitude,latitude for a geographic raster) unless\n"
-            "                           --start-crs says otherwise. Errors number the --start flags from 1\n"
-            "                           in the order given; robots in the outputs count from 0\n"
-            "  --start-crs EPSG:N       CRS of the --start coordinates, e.g. EPSG:4326 for longitude,latitude\n"
-            "  --band N                 raster band holding the classes (default 1)\n"
-            "  --planner NAME           planner to run (default mcpp-mlct)\n"
-            "  --purity F               a class covering at most this fraction of a cell does not split it\n"
-            "                           (0 <= F < 1, default 0)\n"
-            "  --missing-as-obstacle    treat raster values the class table lacks as obstacles instead of\n"
-            "                           failing\n"
-            "  --open-paths             paths stop at their last cell instead of returning to the start\n"
-            "  -q, --quiet              no progress lines or summary; errors are still printed\n"
-            "\n"
-            "Mission files (format: docs/mission-format.md) may be combined with --band, --planner,\n"
-            "--purity, --missing-as-obstacle and --open-paths, which override the mission's values.\n"
-            "\n"
-            "Other flags:\n"
-            "  -h, --help               this text\n"
-            "  -v, --version            the version\n"
-            "\n"
-            "Outputs in DIR: plan.geojson, report.json, report.csv, plan.gpkg, plan.png and per robot i\n"
-            "(numbered from 0, as in the \"robot\" fields of plan.geojson and report.json) robot_<i>.plan\n"
-            "(QGroundControl), robot_<i>.waypoints (QGC WPL 110) and robot_<i>.csv.\n"
-            "\n"
-            "Planners:";
-    for (const auto& planner : availablePlanners()) text << ' ' << planner;
+    text
+        << "Usage:\n"
+           "  mcpp [MISSION.json | RASTER]\n"
+           "      Opens the planner window, optionally with a mission or a land-cover raster.\n"
+           "  mcpp --batch MISSION.json --out DIR [options]\n"
+           "  mcpp --batch --raster FILE (--classes TABLE.csv | --preset NAME) --start X,Y [--start X,Y "
+           "...]\n"
+           "       [--start-crs EPSG:N] --out DIR [options]\n"
+           "      Plans without a window and writes the outputs into DIR.\n"
+           "\n"
+           "Batch flags:\n"
+           "  --batch                  plan headless; the only positional argument is then a mission file\n"
+           "  -o, --out DIR            output folder, created when missing; existing files are replaced\n"
+           "  --raster FILE            land-cover raster (any format GDAL reads)\n"
+           "  --classes TABLE.csv      class table with columns value,name,speed_mps,fov_m,passable[,color]\n"
+           "  --preset NAME            built-in class table instead of --classes\n"
+           "  --start X,Y              a robot's start; give it once per robot. Coordinates are in the\n"
+           "                           raster's CRS (longitude,latitude for a geographic raster) unless\n"
+           "                           --start-crs says otherwise. Errors number the --start flags from 1\n"
+           "                           in the order given; robots in the outputs count from 0\n"
+           "  --start-crs EPSG:N       CRS of the --start coordinates, e.g. EPSG:4326 for "
+           "longitude,latitude\n"
+           "  --band N                 raster band holding the classes (default 1)\n"
+           "  --planner NAME           planner to run (default mcpp-mlct)\n"
+           "  --purity F               a class covering at most this fraction of a cell does not split it\n"
+           "                           (0 <= F < 1, default 0)\n"
+           "  --missing-as-obstacle    treat raster values the class table lacks as obstacles instead of\n"
+           "                           failing\n"
+           "  --open-paths             paths stop at their last cell instead of returning to the start\n"
+           "  -q, --quiet              no progress lines, warnings or summary; errors are still printed\n"
+           "\n"
+           "Mission files (format: docs/mission-format.md) may be combined with --band, --planner,\n"
+           "--purity, --missing-as-obstacle and --open-paths, which override the mission's values.\n"
+           "\n"
+           "Other flags:\n"
+           "  -h, --help               this text\n"
+           "  -v, --version            the version\n"
+           "\n"
+           "Outputs in DIR: plan.geojson, report.json, report.csv, plan.gpkg, plan.png and per robot i\n"
+           "(numbered from 0, as in the \"robot\" fields of plan.geojson and report.json) robot_<i>.plan\n"
+           "(QGroundControl), robot_<i>.waypoints (QGC WPL 110) and robot_<i>.csv.\n"
+           "\n"
+           "Planners:";
+    for (const auto& planner : availablePlanners())
+        text << ' ' << planner;
     text << "\nPresets:\n";
     const auto presets = io::classTablePresets();
     std::size_t nameWidth = 0;
-    for (const auto& preset : presets) nameWidth = std::max(nameWidth, preset.name.size());
+    for (const auto& preset : presets)
+        nameWidth = std::max(nameWidth, preset.name.size());
     for (const auto& preset : presets) {
-        text << "  " << preset.name << std::string(nameWidth - preset.name.size() + 2, ' ') << preset.description << '\n';
+        text << "  " << preset.name << std::string(nameWidth - preset.name.size() + 2, ' ')
+             << preset.description << '\n';
     }
     text << "\nExit status: 0 success, 2 bad input (one line on stderr says what), 1 internal error.\n";
     return text.str();
 }
 
-std::string CommandLine::versionText() { return std::string("mcpp ") + MCPP_VERSION + "\n"; }
+std::string CommandLine::versionText() {
+    return std::string("mcpp ") + MCPP_VERSION + "\n";
+}
 
 } // namespace mcpp::app

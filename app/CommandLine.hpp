@@ -10,7 +10,7 @@ namespace mcpp::app {
 // Turns mcpp's arguments into options. Works on plain strings so tests can call it directly and main can
 // decide which kind of QCoreApplication to build before any exists.
 class CommandLine {
-public:
+  public:
     // arguments excludes the program name.
     [[nodiscard]] static CommandLineParseResult parse(const std::vector<std::string>& arguments);
     [[nodiscard]] static std::string usage();

@@ -2,7 +2,6 @@
 
 #include <QApplication>
 #include <QString>
-
 #include <iostream>
 
 #ifdef MCPP_HAVE_UI

@@ -15,7 +15,7 @@ namespace mcpp::app {
 // Lines can be held back for a while: the planner checks the starts only after its first stages, and a
 // bad start must still come out as one error line, not as progress followed by the error.
 class ProgressPrinter {
-public:
+  public:
     using Clock = std::chrono::steady_clock;
 
     explicit ProgressPrinter(std::ostream& stream, bool enabled, int percentStep = 25);
@@ -28,7 +28,7 @@ public:
     void release();     // print what is held and stop holding
     void discardHeld(); // drop what is held and stop holding
 
-private:
+  private:
     void emit(const std::string& line);
 
     std::ostream& stream_;

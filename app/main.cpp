@@ -6,7 +6,6 @@
 #include <QMessageLogContext>
 #include <QString>
 #include <QtGlobal>
-
 #include <iostream>
 #include <string>
 #include <vector>
@@ -16,12 +15,14 @@ namespace {
 // Batch stderr is part of the contract (progress lines, or one error line), so Qt's own chatter such as
 // "XDG_RUNTIME_DIR not set" stays out; only its critical messages get through.
 void batchMessageHandler(QtMsgType type, const QMessageLogContext& /*context*/, const QString& message) {
-    if (type == QtCriticalMsg || type == QtFatalMsg) std::cerr << "mcpp: qt: " << message.toStdString() << '\n';
+    if (type == QtCriticalMsg || type == QtFatalMsg)
+        std::cerr << "mcpp: qt: " << message.toStdString() << '\n';
 }
 
 int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
     // plan.png is painted with QPainter, which needs a QGuiApplication; offscreen needs no display.
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
     qInstallMessageHandler(batchMessageHandler);
     int qtArgumentCount = 1;
     char* qtArguments[] = {programName, nullptr};

@@ -74,11 +74,15 @@ public:
         const auto robotCount = static_cast<int>(robots_.size());
         int steps = 0;
         std::int64_t stealBudget = 4LL * cellCount_ + 1000;
+        const int retryInterval = std::max(64, reachableCount_ / (8 * robotCount));
         while (unassignedCount_ > 0) {
             if ((++steps & 4095) == 0) {
                 progress_.throwIfCancelled();
                 progress_.report("allocation", 0.8 * (1.0 - static_cast<double>(unassignedCount_) / reachableCount_));
             }
+            // A robot that found nothing to take may find a richer neighbour later: wake the stuck ones now and then.
+            if (steps % retryInterval == 0)
+                for (auto& state : robots_) state.finished = false;
             int robot = -1;
             for (int candidate = 0; candidate < robotCount; ++candidate) {
                 const RobotState& state = robots_[static_cast<std::size_t>(candidate)];
@@ -112,6 +116,10 @@ public:
             int richest = 0;
             for (int robot = 1; robot < robotCount; ++robot)
                 if (robots_[static_cast<std::size_t>(robot)].cost > robots_[static_cast<std::size_t>(richest)].cost) richest = robot;
+            // Among regions tied at the maximum, keep draining the one whose chain worked last.
+            if (!lastChain_.empty() &&
+                robots_[static_cast<std::size_t>(lastChain_.front())].cost >= robots_[static_cast<std::size_t>(richest)].cost - 1e-9)
+                richest = lastChain_.front();
             if (!moveAlongAChain(richest)) break;
             ++moves;
         }
@@ -233,8 +241,10 @@ private:
     // True when taking `cell` out of its owner's region surely leaves that region connected: its neighbours
     // in the region must meet again within a small search around it. A region that only reconnects
     // through a long loop is treated as cut, which keeps the check cheap and never breaks a region.
-    bool removalKeepsConnected(int cell) {
-        constexpr std::size_t searchLimit = 256;
+    static constexpr std::size_t localSearch = 24;
+    static constexpr std::size_t wideSearch = 256;
+
+    bool removalKeepsConnected(int cell, std::size_t searchLimit = wideSearch) {
         const int owner = owner_[static_cast<std::size_t>(cell)];
         std::vector<int>& sameOwner = scratchNeighbours_;
         sameOwner.clear();
@@ -294,8 +304,20 @@ private:
             if (a.distance != b.distance) return a.distance < b.distance;
             return a.cell < b.cell;
         });
-        for (const auto& candidate : candidates) {
-            if (!removalKeepsConnected(candidate.cell)) continue;
+        int chosen = -1;
+        for (std::size_t limit : {localSearch, wideSearch}) {
+            int tried = 0;
+            for (const auto& candidate : candidates) {
+                if (removalKeepsConnected(candidate.cell, limit)) {
+                    chosen = candidate.cell;
+                    break;
+                }
+                if (++tried >= 32) break;
+            }
+            if (chosen >= 0) break;
+        }
+        if (chosen >= 0) {
+            const Candidate candidate{true, 0.0, chosen};
             const int donor = owner_[static_cast<std::size_t>(candidate.cell)];
             give(candidate.cell, robot);
             pushNeighbours(robot, candidate.cell);
@@ -314,6 +336,8 @@ private:
         boundaryOwner_.assign(static_cast<std::size_t>(cellCount_), -1);
         boundaries_.assign(robots_.size(), {});
         regionContacts_.assign(robots_.size() * robots_.size(), 0);
+        handOverKnown_.assign(robots_.size() * robots_.size(), 0);
+        handOverPossible_.assign(robots_.size() * robots_.size(), 0);
         for (int cell = 0; cell < cellCount_; ++cell) {
             const int owner = owner_[static_cast<std::size_t>(cell)];
             if (owner < 0) continue;
@@ -363,6 +387,8 @@ private:
     // Contact counts between regions change only when a cell changes owner.
     void moveCell(int cell, int to) {
         const int from = owner_[static_cast<std::size_t>(cell)];
+        forgetHandOvers(from);
+        forgetHandOvers(to);
         const std::size_t n = robots_.size();
         for (int neighbour : topology_.of(cell)) {
             const int other = owner_[static_cast<std::size_t>(neighbour)];
@@ -384,7 +410,8 @@ private:
     int cellToHandOver(int from, int to, double receiverCostLimit) {
         const RobotState& donor = robots_[static_cast<std::size_t>(from)];
         const RobotState& receiver = robots_[static_cast<std::size_t>(to)];
-        std::vector<std::pair<double, int>> candidates;
+        std::vector<std::pair<double, int>>& candidates = scratchCandidates_;
+        candidates.clear();
         for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
             if (cell == donor.startCell || !touchesRegion(cell, to)) continue;
             if (!(receiver.cost + cost_[static_cast<std::size_t>(cell)] < receiverCostLimit)) continue;
@@ -393,22 +420,44 @@ private:
             candidates.emplace_back(score, cell);
         }
         std::sort(candidates.begin(), candidates.end());
-        int tried = 0;
-        for (const auto& [score, cell] : candidates) {
-            if (removalKeepsConnected(cell)) return cell;
-            if (++tried >= 64) break;
+        // A cheap look around each candidate first; the wider search only when none passes it.
+        for (std::size_t limit : {localSearch, wideSearch}) {
+            int tried = 0;
+            for (const auto& [score, cell] : candidates) {
+                if (removalKeepsConnected(cell, limit)) return cell;
+                if (++tried >= 64) break;
+            }
         }
         return -1;
     }
 
-    // Whether `from` has any border cell it could hand to `to` (the chain search needs no ranking).
+    // Whether `from` has any border cell it could hand to `to`, remembered until either region changes.
     bool canHandOver(int from, int to) {
+        const std::size_t key = static_cast<std::size_t>(from) * robots_.size() + static_cast<std::size_t>(to);
+        if (handOverKnown_[key] == 0) {
+            handOverPossible_[key] = searchHandOver(from, to) ? 1 : 0;
+            handOverKnown_[key] = 1;
+        }
+        return handOverPossible_[key] != 0;
+    }
+
+    void forgetHandOvers(int region) {
+        const std::size_t n = robots_.size();
+        for (std::size_t other = 0; other < n; ++other) {
+            handOverKnown_[static_cast<std::size_t>(region) * n + other] = 0;
+            handOverKnown_[other * n + static_cast<std::size_t>(region)] = 0;
+        }
+    }
+
+    bool searchHandOver(int from, int to) {
         const RobotState& donor = robots_[static_cast<std::size_t>(from)];
-        int tried = 0;
-        for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
-            if (cell == donor.startCell || !touchesRegion(cell, to)) continue;
-            if (removalKeepsConnected(cell)) return true;
-            if (++tried >= 64) break;
+        for (std::size_t limit : {localSearch, wideSearch}) {
+            int tried = 0;
+            for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
+                if (cell == donor.startCell || !touchesRegion(cell, to)) continue;
+                if (removalKeepsConnected(cell, limit)) return true;
+                if (++tried >= 64) break;
+            }
         }
         return false;
     }
@@ -418,6 +467,10 @@ private:
     bool moveAlongAChain(int richest) {
         const std::size_t n = robots_.size();
         const double ceiling = robots_[static_cast<std::size_t>(richest)].cost;
+        // The chain that worked last time usually works again: try it before searching.
+        if (!lastChain_.empty() && lastChain_.front() == richest &&
+            robots_[static_cast<std::size_t>(lastChain_.back())].cost < ceiling - 1e-9 && tryChain(lastChain_))
+            return true;
         std::vector<int> parent(n, -2);
         std::vector<int> order{richest};
         parent[static_cast<std::size_t>(richest)] = -1;
@@ -436,38 +489,50 @@ private:
         });
         int attempts = 0;
         for (int target : targets) {
-            if (robots_[static_cast<std::size_t>(target)].cost >= ceiling - 1e-9 || ++attempts > 6) break;
+            if (robots_[static_cast<std::size_t>(target)].cost >= ceiling - 1e-9 || ++attempts > 12) break;
             std::vector<int> chain{target};
             while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
             std::reverse(chain.begin(), chain.end()); // richest ... target
-            std::vector<double> before;
-            for (int region : chain) before.push_back(robots_[static_cast<std::size_t>(region)].cost);
-            // Hand over from the target's end backwards, so every region keeps cells to give.
-            std::vector<std::pair<int, int>> done; // cell, previous owner
-            bool ok = true;
-            for (std::size_t hop = chain.size() - 1; hop >= 1; --hop) {
-                const int from = chain[hop - 1];
-                const int to = chain[hop];
-                // A region inside the chain may also sit at the maximum: it passes cells on without gaining.
-                const double limit = hop + 1 < chain.size() ? std::max(ceiling, before[hop]) + 1e-9 : ceiling - 1e-9;
-                const int cell = cellToHandOver(from, to, limit);
-                if (cell < 0) {
-                    ok = false;
-                    break;
-                }
-                done.emplace_back(cell, from);
-                moveCell(cell, to);
+            if (tryChain(chain)) {
+                lastChain_ = chain;
+                return true;
             }
-            // Accept when the richest falls and no other region rises to the old maximum: the sorted costs
-            // then fall lexicographically, so the loop ends.
-            bool improves = ok && robots_[static_cast<std::size_t>(richest)].cost < ceiling - 1e-9;
-            for (std::size_t i = 1; improves && i < chain.size(); ++i) {
-                const double now = robots_[static_cast<std::size_t>(chain[i])].cost;
-                improves = now < ceiling - 1e-9 || now <= before[i] + 1e-9;
-            }
-            if (improves) return true;
-            for (auto it = done.rbegin(); it != done.rend(); ++it) moveCell(it->first, it->second);
         }
+        lastChain_.clear();
+        return false;
+    }
+
+    // Moves one cell along richest -> ... -> target; keeps the moves only when they help.
+    bool tryChain(const std::vector<int>& chain) {
+        const int richest = chain.front();
+        const double ceiling = robots_[static_cast<std::size_t>(richest)].cost;
+        std::vector<double> before;
+        for (int region : chain) before.push_back(robots_[static_cast<std::size_t>(region)].cost);
+        // Hand over from the target's end backwards, so every region keeps cells to give.
+        std::vector<std::pair<int, int>> done; // cell, previous owner
+        bool ok = true;
+        for (std::size_t hop = chain.size() - 1; hop >= 1; --hop) {
+            const int from = chain[hop - 1];
+            const int to = chain[hop];
+            // A region inside the chain may also sit at the maximum: it passes cells on without gaining.
+            const double limit = hop + 1 < chain.size() ? std::max(ceiling, before[hop]) + 1e-9 : ceiling - 1e-9;
+            const int cell = cellToHandOver(from, to, limit);
+            if (cell < 0) {
+                ok = false;
+                break;
+            }
+            done.emplace_back(cell, from);
+            moveCell(cell, to);
+        }
+        // Accept when the richest falls and no other region rises to the old maximum: the sorted costs
+        // then fall lexicographically, so the loop ends.
+        bool improves = ok && robots_[static_cast<std::size_t>(richest)].cost < ceiling - 1e-9;
+        for (std::size_t i = 1; improves && i < chain.size(); ++i) {
+            const double now = robots_[static_cast<std::size_t>(chain[i])].cost;
+            improves = now < ceiling - 1e-9 || now <= before[i] + 1e-9;
+        }
+        if (improves) return true;
+        for (auto it = done.rbegin(); it != done.rend(); ++it) moveCell(it->first, it->second);
         return false;
     }
 
@@ -494,6 +559,10 @@ private:
     std::vector<int> boundaryOwner_;
     std::vector<std::vector<int>> boundaries_;
     std::vector<int> regionContacts_;
+    std::vector<int> lastChain_;
+    std::vector<std::pair<double, int>> scratchCandidates_;
+    std::vector<char> handOverKnown_;
+    std::vector<char> handOverPossible_;
 };
 
 } // namespace

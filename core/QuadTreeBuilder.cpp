@@ -60,6 +60,13 @@ void validateGrid(const ClassGrid& grid) {
                                                    " values for " + std::to_string(expected) + " pixels");
 }
 
+std::string describeMetres(double metres) {
+    std::ostringstream text;
+    text.precision(6);
+    text << metres;
+    return text.str();
+}
+
 // Length of the overlap of [a0, a1) and [b0, b1).
 double overlap(double a0, double a1, double b0, double b1) { return std::max(0.0, std::min(a1, b1) - std::max(a0, b0)); }
 
@@ -184,7 +191,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     constexpr std::int64_t bottomCellBudget = 8'000'000;
     if (bottomColumns * bottomRows > bottomCellBudget)
         throw PlanningError(Kind::InvalidParameter,
-                            "the smallest field of view (" + std::to_string(fovMin) + " m) makes " +
+                            "the smallest field of view (" + describeMetres(fovMin) + " m) makes " +
                                 std::to_string(bottomColumns) + " x " + std::to_string(bottomRows) +
                                 " bottom cells (more than 8 million): raise the field of view of the classes or crop the raster");
 

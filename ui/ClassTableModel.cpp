@@ -66,7 +66,7 @@ QVariant ClassTableModel::data(const QModelIndex& index, int role) const {
         break;
     case Colour:
         if (role == Qt::DecorationRole) return colourOf(landCoverClass);
-        if (display) return colourOf(landCoverClass).name();
+        if (role == Qt::ToolTipRole) return colourOf(landCoverClass).name();
         break;
     case Name:
         if (display || edit) return QString::fromStdString(landCoverClass.name);

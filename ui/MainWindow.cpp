@@ -34,6 +34,7 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTableView>
@@ -142,6 +143,8 @@ MainWindow::MainWindow(QWidget* parent)
 MainWindow::~MainWindow() {
     // A run that ends now must not call back into a window being torn down.
     disconnect(runner_, nullptr, this, nullptr);
+    disconnect(undoStack_, nullptr, this, nullptr); // clearing the stack on destruction signals an index change
+    disconnect(document_, nullptr, this, nullptr);
     runner_->cancel();
     runner_->waitForFinished();
 }
@@ -259,7 +262,7 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::BottomDockWidgetArea, classesDock);
     resizeDocks({layersDock, robotsDock, settingsDock}, {150, 220, 200}, Qt::Vertical);
     resizeDocks({layersDock, resultsDock}, {360, 380}, Qt::Horizontal);
-    resizeDocks({classesDock}, {230}, Qt::Vertical);
+    resizeDocks({classesDock}, {190}, Qt::Vertical);
 }
 
 void MainWindow::createActions() {
@@ -458,7 +461,11 @@ void MainWindow::connectDocument() {
 
 void MainWindow::restoreSettings() {
     QSettings settings;
-    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray())) resize(1480, 920);
+    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray())) {
+        // First start: most of the screen, since the map is what people came for.
+        const QRect available = screen() != nullptr ? screen()->availableGeometry() : QRect(0, 0, 1480, 920);
+        resize(std::max(900, available.width() * 19 / 20), std::max(650, available.height() * 19 / 20));
+    }
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
 }
 

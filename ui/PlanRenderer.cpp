@@ -21,7 +21,7 @@ constexpr double kArrowSpacingPixels = 90.0;
 constexpr double kArrowLengthPixels = 10.0;
 constexpr double kStartRadiusPixels = 10.0;
 // Below this on-screen side a cell outline only adds noise, so it is skipped.
-constexpr double kSmallestOutlinedCellPixels = 4.0;
+constexpr double kSmallestOutlinedCellPixels = 8.0;
 
 QRectF deviceRectOf(const QTransform& worldToDevice, double minX, double minY, double maxX, double maxY) {
     return worldToDevice.mapRect(QRectF(QPointF(minX, minY), QPointF(maxX, maxY))).normalized();
@@ -234,6 +234,18 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
 
 void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice) const {
     painter.setRenderHint(QPainter::Antialiasing, true);
+    // Zoomed out, neighbouring passes sit a few pixels apart: full-width lines would hide the land cover,
+    // so they thin out and fade until the user zooms in.
+    double totalLength = 0.0;
+    std::size_t segments = 0;
+    for (const CoveragePath& path : plan_->paths) {
+        for (std::size_t i = 1; i < path.waypoints.size(); ++i)
+            totalLength += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x, path.waypoints[i].y - path.waypoints[i - 1].y);
+        segments += path.waypoints.size() > 1 ? path.waypoints.size() - 1 : 0;
+    }
+    const double meanSegmentPixels = segments == 0 ? 0.0 : totalLength / static_cast<double>(segments) * std::abs(worldToDevice.m11());
+    const bool dense = meanSegmentPixels < 12.0;
+    const double arrowSpacing = kArrowSpacingPixels;
     for (const CoveragePath& path : plan_->paths) {
         if (path.waypoints.size() < 2) continue;
         QPolygonF line;
@@ -244,13 +256,21 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
         const QColor colour = RobotPalette::colour(path.robot);
         // A pale casing under the line keeps it readable over any land-cover colour.
         painter.setBrush(Qt::NoBrush);
-        painter.setPen(QPen(QColor(255, 255, 255, 190), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        painter.drawPolyline(line);
-        painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        painter.drawPolyline(line);
+        if (dense) {
+            QColor faded = colour;
+            faded.setAlpha(150);
+            painter.setPen(QPen(faded, 1.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            painter.drawPolyline(line);
+        } else {
+            painter.setPen(QPen(QColor(255, 255, 255, 190), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            painter.drawPolyline(line);
+            painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            painter.drawPolyline(line);
+        }
 
-        // Arrows at even on-screen spacing show the direction of travel at any zoom.
-        double untilNextArrow = kArrowSpacingPixels / 2.0;
+        // Arrows at even on-screen spacing show the direction of travel; a dense overview has no room for them.
+        if (dense) continue;
+        double untilNextArrow = arrowSpacing / 2.0;
         for (qsizetype i = 1; i < line.size(); ++i) {
             const QPointF from = line[i - 1];
             const QPointF to = line[i];
@@ -260,7 +280,7 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
                 along += untilNextArrow;
                 const QPointF tip = from + (to - from) * (along / segment);
                 drawArrow(painter, tip, to - from, colour);
-                untilNextArrow = kArrowSpacingPixels;
+                untilNextArrow = arrowSpacing;
             }
             untilNextArrow -= segment - along;
         }

@@ -158,16 +158,21 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     // One set per robot with a value only in its own category: each bar takes its robot's colour.
     auto* series = new QStackedBarSeries;
     QStringList categories;
-    double longestMinutes = 0.0;
+    double longestSeconds = 0.0;
+    for (const auto& robot : robots) longestSeconds = std::max(longestSeconds, robot.timeSeconds);
+    // Hours once the longest run passes two hours: "34" reads better than "2040".
+    const bool inHours = longestSeconds > 7200.0;
+    const double unitSeconds = inHours ? 3600.0 : 60.0;
+    double longestValue = 0.0;
     for (std::size_t i = 0; i < robots.size(); ++i) {
         const int robot = robots[i].robot;
         categories << (robot < names.size() ? names[robot] : tr("Robot %1").arg(robot + 1));
         auto* set = new QBarSet(categories.back());
         set->setColor(RobotPalette::colour(robot));
         set->setBorderColor(RobotPalette::colour(robot).darker(130));
-        for (std::size_t j = 0; j < robots.size(); ++j) *set << (j == i ? robots[i].timeSeconds / 60.0 : 0.0);
+        for (std::size_t j = 0; j < robots.size(); ++j) *set << (j == i ? robots[i].timeSeconds / unitSeconds : 0.0);
         series->append(set);
-        longestMinutes = std::max(longestMinutes, robots[i].timeSeconds / 60.0);
+        longestValue = std::max(longestValue, robots[i].timeSeconds / unitSeconds);
     }
     series->setBarWidth(0.7);
     chart->addSeries(series);
@@ -176,9 +181,10 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     chart->addAxis(categoryAxis, Qt::AlignBottom);
     series->attachAxis(categoryAxis);
     auto* valueAxis = new QValueAxis;
-    valueAxis->setTitleText(tr("minutes"));
-    valueAxis->setRange(0.0, std::max(longestMinutes * 1.1, 1.0));
+    valueAxis->setTitleText(inHours ? tr("hours") : tr("minutes"));
+    valueAxis->setRange(0.0, std::max(longestValue * 1.1, 1.0));
     valueAxis->setLabelFormat(QStringLiteral("%.0f"));
+    valueAxis->applyNiceNumbers();
     chart->addAxis(valueAxis, Qt::AlignLeft);
     series->attachAxis(valueAxis);
 }

@@ -34,7 +34,7 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
         break;
     case Colour:
         if (role == Qt::DecorationRole) return RobotPalette::colour(index.row());
-        if (role == Qt::DisplayRole) return RobotPalette::colour(index.row()).name();
+        if (role == Qt::ToolTipRole) return RobotPalette::colour(index.row()).name();
         break;
     case Easting:
         if (text) return QString::number(robot.start.x, 'f', role == Qt::EditRole ? 3 : 1);

@@ -1,4 +1,7 @@
 #include "core/ClassTable.hpp"
+#include "core/Planner.hpp"
+#include "core/PlanningProblem.hpp"
+#include "core/ProgressReporter.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
@@ -15,7 +18,6 @@
 #include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
-
 #include <cmath>
 
 namespace {
@@ -32,10 +34,12 @@ QString samplePath(const QString& relative) {
 
 QJsonObject readJsonObject(const QString& path) {
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) return {};
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
     QJsonParseError error;
     const auto document = QJsonDocument::fromJson(file.readAll(), &error);
-    if (error.error != QJsonParseError::NoError) return {};
+    if (error.error != QJsonParseError::NoError)
+        return {};
     return document.object();
 }
 
@@ -57,10 +61,11 @@ const QString syntheticOnNodata = QStringLiteral("431470,5301310");
 class TestBatchEndToEnd : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void initTestCase();
     void samplesAreValidMissions_data();
     void samplesAreValidMissions();
+    void syntheticSampleNeedsThreeLevels();
     void missionFileWritesEveryOutput();
     void flagMissionWithLongitudeLatitudeStarts();
     void rerunWithFewerRobotsRemovesTheirFiles();
@@ -69,7 +74,7 @@ private slots:
     void badInputExitsTwoWithOneLine_data();
     void badInputExitsTwoWithOneLine();
 
-private:
+  private:
     RunResult runMcpp(const QStringList& arguments, int timeoutMilliseconds = 600000) const;
     void checkOutputs(const QString& directory, int robots, const RunResult& run) const;
     QStringList syntheticFlags() const;
@@ -102,7 +107,8 @@ RunResult TestBatchEndToEnd::runMcpp(const QStringList& arguments, int timeoutMi
 }
 
 QStringList TestBatchEndToEnd::syntheticFlags() const {
-    return {"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes", samplePath("synthetic/classes.csv")};
+    return {"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes",
+            samplePath("synthetic/classes.csv")};
 }
 
 void TestBatchEndToEnd::samplesAreValidMissions_data() {
@@ -127,7 +133,8 @@ void TestBatchEndToEnd::samplesAreValidMissions() {
 
     auto raster = mcpp::io::loadLandCoverRaster(mcpp::io::resolveRasterPath(mission.value(), missionPath));
     QVERIFY2(raster.ok(), raster.ok() ? "" : raster.error().c_str());
-    const auto reconciled = mcpp::io::reconcileRasterWithTable(raster.value(), mission.value().classes, false);
+    const auto reconciled =
+        mcpp::io::reconcileRasterWithTable(raster.value(), mission.value().classes, false);
     QVERIFY2(reconciled.ok(), reconciled.error().c_str());
     const auto& grid = raster.value().grid;
     for (const auto& robot : mission.value().robots) {
@@ -141,9 +148,36 @@ void TestBatchEndToEnd::samplesAreValidMissions() {
     }
 }
 
+// The synthetic map exists to exercise the hierarchy: 5, 10 and 20 m fields of view give three levels, and
+// each level must hold active cells.
+void TestBatchEndToEnd::syntheticSampleNeedsThreeLevels() {
+    const auto missionPath = samplePath("synthetic/mission.json").toStdString();
+    auto mission = mcpp::io::loadMission(missionPath);
+    QVERIFY(mission.ok());
+    auto raster = mcpp::io::loadLandCoverRaster(mcpp::io::resolveRasterPath(mission.value(), missionPath));
+    QVERIFY(raster.ok());
+    mcpp::PlanningProblem problem;
+    problem.grid = raster.value().grid;
+    problem.classes = mission.value().classes;
+    problem.settings = mission.value().settings;
+    for (const auto& robot : mission.value().robots)
+        problem.starts.push_back(robot.start);
+    const auto planner = mcpp::makePlanner(problem.settings.planner);
+    QVERIFY(planner != nullptr);
+    const auto plan = planner->plan(problem, mcpp::ProgressReporter());
+    QCOMPARE(plan.quadTree.levels, 3);
+    QCOMPARE(plan.quadTree.fovMin, 5.0);
+    QSet<int> levelsWithActiveCells;
+    for (const int cell : plan.quadTree.activeCells) {
+        levelsWithActiveCells.insert(plan.quadTree.cells[static_cast<std::size_t>(cell)].level);
+    }
+    QCOMPARE(levelsWithActiveCells, (QSet<int>{1, 2, 3}));
+}
+
 void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const RunResult& run) const {
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
-    QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp: planned %1 robots").arg(robots)), qPrintable(run.standardOutput));
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp: planned %1 robots").arg(robots)),
+             qPrintable(run.standardOutput));
     const QDir out(directory);
     QStringList expected{"plan.geojson", "report.json", "plan.png"};
     for (int robot = 0; robot < robots; ++robot) {
@@ -191,8 +225,10 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
         robotsByKind[kind].insert(properties.value("robot").toInt(-1));
     }
     QSet<int> everyRobot;
-    for (int robot = 0; robot < robots; ++robot) everyRobot.insert(robot);
-    for (const char* kind : {"region", "path", "start"}) QCOMPARE(robotsByKind.value(kind), everyRobot);
+    for (int robot = 0; robot < robots; ++robot)
+        everyRobot.insert(robot);
+    for (const char* kind : {"region", "path", "start"})
+        QCOMPARE(robotsByKind.value(kind), everyRobot);
 
     // report.json: per robot figures and the fleet's, with ratio = makespan / lower bound.
     const auto report = readJsonObject(out.filePath("report.json"));
@@ -212,7 +248,9 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
     QVERIFY(nearlyEqual(makespan, longest));
     QVERIFY2(nearlyEqual(report.value("ratio").toDouble(), makespan / lowerBound),
              qPrintable(QStringLiteral("ratio %1, makespan %2, lower bound %3")
-                            .arg(report.value("ratio").toDouble()).arg(makespan).arg(lowerBound)));
+                            .arg(report.value("ratio").toDouble())
+                            .arg(makespan)
+                            .arg(lowerBound)));
     const double covered = report.value("covered_fraction").toDouble();
     QVERIFY(covered > 0.5 && covered <= 1.0 + 1e-9);
     QCOMPARE(report.value("planner").toString(), QStringLiteral("mcpp-mlct"));
@@ -237,12 +275,14 @@ void TestBatchEndToEnd::missionFileWritesEveryOutput() {
     const QString out = scratch_.filePath("mission-run/nested/out"); // folders are created as needed
     const auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", out});
     checkOutputs(out, 3, run);
-    if (QTest::currentTestFailed()) return;
+    if (QTest::currentTestFailed())
+        return;
     // Progress goes to stderr as short "mcpp: <stage> <percent>%" lines.
     const auto lines = run.standardError.split('\n', Qt::SkipEmptyParts);
     QVERIFY(!lines.isEmpty());
     QVERIFY(lines.size() < 200);
-    for (const auto& line : lines) QVERIFY2(line.startsWith(QStringLiteral("mcpp: ")), qPrintable(line));
+    for (const auto& line : lines)
+        QVERIFY2(line.startsWith(QStringLiteral("mcpp: ")), qPrintable(line));
     QVERIFY(run.standardError.contains(QStringLiteral("writing outputs 100%")));
 }
 
@@ -250,12 +290,24 @@ void TestBatchEndToEnd::flagMissionWithLongitudeLatitudeStarts() {
     // The synthetic mission's three starts, converted to WGS84 longitude, latitude with gdaltransform.
     const QString out = scratch_.filePath("flag-run");
     auto arguments = syntheticFlags();
-    arguments << "--start" << "14.0780530,47.8589976" << "--start" << "14.0805547,47.8611771"
-              << "--start" << "14.0831295,47.8592182" << "--start-crs" << "EPSG:4326" << "--open-paths"
-              << "--planner" << "mcpp-mlct" << "--band" << "1" << "--out" << out;
+    arguments << "--start"
+              << "14.0780530,47.8589976"
+              << "--start"
+              << "14.0805547,47.8611771"
+              << "--start"
+              << "14.0831295,47.8592182"
+              << "--start-crs"
+              << "EPSG:4326"
+              << "--open-paths"
+              << "--planner"
+              << "mcpp-mlct"
+              << "--band"
+              << "1"
+              << "--out" << out;
     auto run = runMcpp(arguments);
     checkOutputs(out, 3, run);
-    if (QTest::currentTestFailed()) return;
+    if (QTest::currentTestFailed())
+        return;
     QVERIFY(!run.standardError.isEmpty());
 
     // --quiet silences progress and the summary.
@@ -272,7 +324,11 @@ void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
     QCOMPARE(run.exitCode, 0);
     QVERIFY(QFileInfo::exists(out + "/robot_2.plan"));
     auto arguments = syntheticFlags();
-    arguments << "--start" << "431040,5301040" << "--start" << "431420,5301060" << "--out" << out;
+    arguments << "--start"
+              << "431040,5301040"
+              << "--start"
+              << "431420,5301060"
+              << "--out" << out;
     run = runMcpp(arguments);
     checkOutputs(out, 2, run);
     QVERIFY(!QFileInfo::exists(out + "/robot_2.waypoints"));
@@ -280,15 +336,19 @@ void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
 }
 
 void TestBatchEndToEnd::missingAsObstacleTurnsTheErrorIntoAWarning() {
-    // Shrubland (2) has no row: an error without the flag (see badInputExitsTwoWithOneLine), a warning with it.
+    // Shrubland (2) has no row: an error without the flag (see badInputExitsTwoWithOneLine), a warning with
+    // it.
     const QString table = scratch_.filePath("without-shrubland.csv");
-    QVERIFY(writeText(table, "value,name,speed_mps,fov_m,passable\n1,Forest,1,5,true\n3,Grass,3,20,true\n4,Lake,0,10,false\n"));
+    QVERIFY(writeText(
+        table,
+        "value,name,speed_mps,fov_m,passable\n1,Forest,1,5,true\n3,Grass,3,20,true\n4,Lake,0,10,false\n"));
     const QString out = scratch_.filePath("missing-as-obstacle");
-    const auto run = runMcpp({"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes", table, "--start",
-                              "431040,5301040", "--start", "431420,5301060", "--missing-as-obstacle", "--purity", "0.05",
-                              "--out", out});
+    const auto run = runMcpp({"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes",
+                              table, "--start", "431040,5301040", "--start", "431420,5301060",
+                              "--missing-as-obstacle", "--purity", "0.05", "--out", out});
     checkOutputs(out, 2, run);
-    QVERIFY2(run.standardError.contains(QStringLiteral("mcpp: warning: class 2")), qPrintable(run.standardError));
+    QVERIFY2(run.standardError.contains(QStringLiteral("mcpp: warning: class 2")),
+             qPrintable(run.standardError));
 }
 
 void TestBatchEndToEnd::readmeSampleRuns() {
@@ -307,39 +367,63 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
 
     QTest::newRow("start in nodata") << (flags + QStringList{"--start", syntheticOnNodata, "--out", out})
                                      << QStringList{"--start 1", "nodata"};
-    QTest::newRow("start on the lake") << (flags + QStringList{"--start", "431040,5301040", "--start", syntheticOnLake, "--out", out})
-                                       << QStringList{"--start 2", "Lake"};
+    QTest::newRow("start on the lake")
+        << (flags + QStringList{"--start", "431040,5301040", "--start", syntheticOnLake, "--out", out})
+        << QStringList{"--start 2", "Lake"};
     QTest::newRow("start outside the raster") << (flags + QStringList{"--start", "0,0", "--out", out})
                                               << QStringList{"--start 1", "outside the raster"};
-    QTest::newRow("missing raster")
-        << QStringList{"--batch", "--raster", scratch_.filePath("missing.tif"), "--preset", "nlcd", "--start", "1,2", "--out", out}
-        << QStringList{"missing.tif"};
+    QTest::newRow("missing raster") << QStringList{"--batch",  "--raster", scratch_.filePath("missing.tif"),
+                                                   "--preset", "nlcd",     "--start",
+                                                   "1,2",      "--out",    out}
+                                    << QStringList{"missing.tif"};
     QTest::newRow("missing mission") << QStringList{"--batch", scratch_.filePath("absent.json"), "--out", out}
                                      << QStringList{"absent.json"};
-    QTest::newRow("malformed mission") << QStringList{"--batch", scratch_.filePath("broken.json"), "--out", out}
-                                       << QStringList{"broken.json", "invalid JSON"};
-    QTest::newRow("mission robot in nodata") << QStringList{"--batch", scratch_.filePath("nodata-robot.json"), "--out", out}
-                                             << QStringList{"nodata-robot.json", "robots[1].start", "nodata"};
-    QTest::newRow("mission robot without start") << QStringList{"--batch", scratch_.filePath("no-start.json"), "--out", out}
-                                                 << QStringList{"no-start.json", "robots[0].start", "missing"};
+    QTest::newRow("malformed mission")
+        << QStringList{"--batch", scratch_.filePath("broken.json"), "--out", out}
+        << QStringList{"broken.json", "invalid JSON"};
+    QTest::newRow("mission robot in nodata")
+        << QStringList{"--batch", scratch_.filePath("nodata-robot.json"), "--out", out}
+        << QStringList{"nodata-robot.json", "robots[1].start", "nodata"};
+    QTest::newRow("mission robot without start")
+        << QStringList{"--batch", scratch_.filePath("no-start.json"), "--out", out}
+        << QStringList{"no-start.json", "robots[0].start", "missing"};
     QTest::newRow("class table lacks a class")
-        << QStringList{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes", scratch_.filePath("partial.csv"),
-                       "--start", "431040,5301040", "--out", out}
+        << QStringList{"--batch",
+                       "--raster",
+                       samplePath("synthetic/synthetic.asc"),
+                       "--classes",
+                       scratch_.filePath("partial.csv"),
+                       "--start",
+                       "431040,5301040",
+                       "--out",
+                       out}
         << QStringList{"synthetic.asc", "class 2", "--missing-as-obstacle"};
-    QTest::newRow("bad class table") << QStringList{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes",
-                                                    scratch_.filePath("bad.csv"), "--start", "431040,5301040", "--out", out}
+    QTest::newRow("bad class table") << QStringList{"--batch",
+                                                    "--raster",
+                                                    samplePath("synthetic/synthetic.asc"),
+                                                    "--classes",
+                                                    scratch_.filePath("bad.csv"),
+                                                    "--start",
+                                                    "431040,5301040",
+                                                    "--out",
+                                                    out}
                                      << QStringList{"bad.csv"};
-    QTest::newRow("unknown preset") << (QStringList{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--preset",
-                                                    "no-such-preset", "--start", "431040,5301040", "--out", out})
+    QTest::newRow("unknown preset") << (QStringList{"--batch", "--raster",
+                                                    samplePath("synthetic/synthetic.asc"), "--preset",
+                                                    "no-such-preset", "--start", "431040,5301040", "--out",
+                                                    out})
                                     << QStringList{"--preset", "no-such-preset"};
-    QTest::newRow("unknown planner") << QStringList{"--batch", mission, "--planner", "no-such-planner", "--out", out}
+    QTest::newRow("unknown planner") << QStringList{"--batch",         mission, "--planner",
+                                                    "no-such-planner", "--out", out}
                                      << QStringList{"--planner", "no-such-planner", "mcpp-mlct"};
-    QTest::newRow("unknown start CRS") << (flags + QStringList{"--start", "1,2", "--start-crs", "EPSG:999999", "--out", out})
-                                       << QStringList{"--start-crs"};
+    QTest::newRow("unknown start CRS")
+        << (flags + QStringList{"--start", "1,2", "--start-crs", "EPSG:999999", "--out", out})
+        << QStringList{"--start-crs"};
     QTest::newRow("two robots in one cell")
         << (flags + QStringList{"--start", "431050,5301050", "--start", "431055,5301055", "--out", out})
         << QStringList{"--start", "robot 1"};
-    QTest::newRow("--out is a file") << QStringList{"--batch", mission, "--out", samplePath("synthetic/classes.csv")}
+    QTest::newRow("--out is a file") << QStringList{"--batch", mission, "--out",
+                                                    samplePath("synthetic/classes.csv")}
                                      << QStringList{"--out", "classes.csv", "not a folder"};
     QTest::newRow("bad flag") << QStringList{"--batch", mission, "--out", out, "--start", "12,abc"}
                               << QStringList{"--start"};
@@ -350,8 +434,9 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
     QFETCH(QStringList, mentions);
 
     QVERIFY(writeText(scratch_.filePath("broken.json"), "{ \"format\": \"mcpp-mission\", \"version\": "));
-    QVERIFY(writeText(scratch_.filePath("partial.csv"), "value,name,speed_mps,fov_m,passable\n1,Forest,1,5,true\n"
-                                                         "3,Grass,3,20,true\n4,Lake,0,10,false\n"));
+    QVERIFY(writeText(scratch_.filePath("partial.csv"),
+                      "value,name,speed_mps,fov_m,passable\n1,Forest,1,5,true\n"
+                      "3,Grass,3,20,true\n4,Lake,0,10,false\n"));
     QVERIFY(writeText(scratch_.filePath("bad.csv"), "value,name,speed,fov_m,passable\n1,Forest,1,5,true\n"));
     // Copies of the synthetic mission with one robot broken; the raster path made absolute.
     auto mission = readJsonObject(samplePath("synthetic/mission.json"));
@@ -374,14 +459,17 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
     QVERIFY(writeText(scratch_.filePath("no-start.json"), QJsonDocument(noStartMission).toJson()));
 
     const auto run = runMcpp(arguments);
-    QVERIFY2(run.exitCode == 2, qPrintable(QStringLiteral("exit %1: %2").arg(run.exitCode).arg(run.standardError)));
-    QVERIFY2(run.standardError.endsWith('\n') && run.standardError.count('\n') == 1, qPrintable(run.standardError));
+    QVERIFY2(run.exitCode == 2,
+             qPrintable(QStringLiteral("exit %1: %2").arg(run.exitCode).arg(run.standardError)));
+    QVERIFY2(run.standardError.endsWith('\n') && run.standardError.count('\n') == 1,
+             qPrintable(run.standardError));
     QVERIFY(run.standardError.startsWith(QStringLiteral("mcpp: ")));
     for (const auto& mention : mentions) {
         QVERIFY2(run.standardError.contains(mention), qPrintable(mention + " not in: " + run.standardError));
     }
     QVERIFY(run.standardOutput.isEmpty());
-    QVERIFY2(!QFileInfo::exists(scratch_.filePath("never-written")), "bad input must not create the output folder");
+    QVERIFY2(!QFileInfo::exists(scratch_.filePath("never-written")),
+             "bad input must not create the output folder");
 }
 
 QTEST_GUILESS_MAIN(TestBatchEndToEnd)

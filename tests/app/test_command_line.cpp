@@ -2,7 +2,6 @@
 
 #include <QProcess>
 #include <QtTest>
-
 #include <string>
 #include <vector>
 
@@ -15,19 +14,21 @@ namespace {
 
 std::vector<std::string> split(const QString& arguments) {
     std::vector<std::string> result;
-    for (const auto& argument : arguments.split(QLatin1Char(' '), Qt::SkipEmptyParts)) result.push_back(argument.toStdString());
+    for (const auto& argument : arguments.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+        result.push_back(argument.toStdString());
     return result;
 }
 
 // The smallest valid flag mission, to which each error case adds or removes one thing.
-const QString flagMission = QStringLiteral("--batch --raster map.tif --classes classes.csv --start 10,20 --out out");
+const QString flagMission =
+    QStringLiteral("--batch --raster map.tif --classes classes.csv --start 10,20 --out out");
 
 } // namespace
 
 class TestCommandLine : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void helpAndVersionWinOverEverythingElse_data();
     void helpAndVersionWinOverEverythingElse();
     void guiModeTakesOneOptionalFile();
@@ -48,7 +49,8 @@ void TestCommandLine::helpAndVersionWinOverEverythingElse_data() {
     QTest::addColumn<int>("mode");
     QTest::newRow("--help") << "--help" << static_cast<int>(RunMode::Help);
     QTest::newRow("-h") << "-h" << static_cast<int>(RunMode::Help);
-    QTest::newRow("--help after a bad flag") << "--batch --frobnicate --help" << static_cast<int>(RunMode::Help);
+    QTest::newRow("--help after a bad flag")
+        << "--batch --frobnicate --help" << static_cast<int>(RunMode::Help);
     QTest::newRow("--version") << "--version" << static_cast<int>(RunMode::Version);
     QTest::newRow("-v with batch") << "--batch m.json -v" << static_cast<int>(RunMode::Version);
 }
@@ -103,8 +105,8 @@ void TestCommandLine::batchWithMissionFile() {
 }
 
 void TestCommandLine::missionFileTakesOverrideFlags() {
-    const auto result = CommandLine::parse(
-        split("--batch m.json --out o --planner mcpp-mlct --band 3 --purity 0.1 --open-paths --missing-as-obstacle -q"));
+    const auto result = CommandLine::parse(split("--batch m.json --out o --planner mcpp-mlct --band 3 "
+                                                 "--purity 0.1 --open-paths --missing-as-obstacle -q"));
     QVERIFY2(result.ok(), result.error.c_str());
     const auto& options = result.options;
     QCOMPARE(options.planner.value_or(""), std::string("mcpp-mlct"));
@@ -145,8 +147,8 @@ void TestCommandLine::batchWithEveryFlag() {
 }
 
 void TestCommandLine::batchWithPresetAndShortForms() {
-    const auto result =
-        CommandLine::parse(split("--batch --raster=map.tif --preset=nlcd --start=1,2 --start-crs=epsg:32612 -o out"));
+    const auto result = CommandLine::parse(
+        split("--batch --raster=map.tif --preset=nlcd --start=1,2 --start-crs=epsg:32612 -o out"));
     QVERIFY2(result.ok(), result.error.c_str());
     const auto& options = result.options;
     QCOMPARE(options.rasterPath, std::string("map.tif"));
@@ -159,8 +161,8 @@ void TestCommandLine::batchWithPresetAndShortForms() {
 
 void TestCommandLine::negativeAndSpacedCoordinates() {
     // A value starting with a single dash is a coordinate, not a flag; spaces around the numbers are fine.
-    const auto result = CommandLine::parse({"--batch", "--raster", "m.tif", "--preset", "p", "--start", "-5.5, -7",
-                                            "--start", " 1e3 ,+2 ", "--out", "o"});
+    const auto result = CommandLine::parse({"--batch", "--raster", "m.tif", "--preset", "p", "--start",
+                                            "-5.5, -7", "--start", " 1e3 ,+2 ", "--out", "o"});
     QVERIFY2(result.ok(), result.error.c_str());
     QCOMPARE(result.options.starts.size(), std::size_t{2});
     QCOMPARE(result.options.starts[0].x, -5.5);
@@ -179,43 +181,64 @@ void TestCommandLine::errors_data() {
     QTest::newRow("missing --out with flags")
         << words("--batch --raster map.tif --classes c.csv --start 1,2") << "--batch needs --out DIR";
     QTest::newRow("--out without value") << words("--batch m.json --out") << "--out needs a value: DIR";
-    QTest::newRow("--out followed by a flag") << words("--batch m.json --out --quiet") << "--out needs a value: DIR";
-    QTest::newRow("--out given twice") << words("--batch m.json --out a --out b") << "--out is given more than once";
-    QTest::newRow("--classes and --preset")
-        << words(raster + "--classes c.csv --preset nlcd") << "--classes and --preset cannot be used together";
+    QTest::newRow("--out followed by a flag")
+        << words("--batch m.json --out --quiet") << "--out needs a value: DIR";
+    QTest::newRow("--out given twice")
+        << words("--batch m.json --out a --out b") << "--out is given more than once";
+    QTest::newRow("--classes and --preset") << words(raster + "--classes c.csv --preset nlcd")
+                                            << "--classes and --preset cannot be used together";
     QTest::newRow("neither --classes nor --preset")
         << words(raster) << "--raster needs --classes TABLE.csv or --preset NAME";
     QTest::newRow("third --start not a number")
         << words("--batch --raster map.tif --preset p --start 1,2 --start 3,4 --start 12,abc --out o")
         << "--start 3: \"12,abc\" is not X,Y";
-    QTest::newRow("--start without comma") << words(flagMission + " --start 12") << "--start 2: \"12\" is not X,Y";
+    QTest::newRow("--start without comma")
+        << words(flagMission + " --start 12") << "--start 2: \"12\" is not X,Y";
     QTest::newRow("--start with three numbers")
-        << words("--batch --raster m.tif --preset p --start 1,2,3 --out o") << "--start 1: \"1,2,3\" is not X,Y";
-    QTest::newRow("--start not finite")
-        << words("--batch --raster m.tif --preset p --start nan,2 --out o") << "--start 1: \"nan,2\" is not X,Y";
-    QTest::newRow("--start without value") << words("--batch --raster m.tif --preset p --start") << "--start needs a value: X,Y";
-    QTest::newRow("no --start") << words("--batch --raster m.tif --preset p --out o") << "--raster needs at least one --start X,Y";
-    QTest::newRow("unknown flag") << words("--batch m.json --out o --frobnicate") << "unknown flag --frobnicate (see mcpp --help)";
+        << words("--batch --raster m.tif --preset p --start 1,2,3 --out o")
+        << "--start 1: \"1,2,3\" is not X,Y";
+    QTest::newRow("--start not finite") << words("--batch --raster m.tif --preset p --start nan,2 --out o")
+                                        << "--start 1: \"nan,2\" is not X,Y";
+    QTest::newRow("--start without value")
+        << words("--batch --raster m.tif --preset p --start") << "--start needs a value: X,Y";
+    QTest::newRow("no --start") << words("--batch --raster m.tif --preset p --out o")
+                                << "--raster needs at least one --start X,Y";
+    QTest::newRow("unknown flag") << words("--batch m.json --out o --frobnicate")
+                                  << "unknown flag --frobnicate (see mcpp --help)";
     QTest::newRow("unknown short flag") << words("-x") << "unknown flag -x (see mcpp --help)";
-    QTest::newRow("unknown flag with value") << words("--colour=red") << "unknown flag --colour (see mcpp --help)";
-    QTest::newRow("--start-crs not EPSG") << words(flagMission + " --start-crs WGS84") << "--start-crs: \"WGS84\" is not EPSG:N";
-    QTest::newRow("--start-crs without code") << words(flagMission + " --start-crs EPSG:") << "--start-crs: \"EPSG:\" is not EPSG:N";
-    QTest::newRow("--start-crs bad code") << words(flagMission + " --start-crs EPSG:43x6") << "--start-crs: \"EPSG:43x6\" is not EPSG:N";
-    QTest::newRow("--band zero") << words("--batch m.json --out o --band 0") << "--band: \"0\" is not a band number (1, 2, ...)";
-    QTest::newRow("--band text") << words("--batch m.json --out o --band two") << "--band: \"two\" is not a band number (1, 2, ...)";
+    QTest::newRow("unknown flag with value")
+        << words("--colour=red") << "unknown flag --colour (see mcpp --help)";
+    QTest::newRow("--start-crs not EPSG")
+        << words(flagMission + " --start-crs WGS84") << "--start-crs: \"WGS84\" is not EPSG:N";
+    QTest::newRow("--start-crs without code")
+        << words(flagMission + " --start-crs EPSG:") << "--start-crs: \"EPSG:\" is not EPSG:N";
+    QTest::newRow("--start-crs bad code")
+        << words(flagMission + " --start-crs EPSG:43x6") << "--start-crs: \"EPSG:43x6\" is not EPSG:N";
+    QTest::newRow("--band zero") << words("--batch m.json --out o --band 0")
+                                 << "--band: \"0\" is not a band number (1, 2, ...)";
+    QTest::newRow("--band text") << words("--batch m.json --out o --band two")
+                                 << "--band: \"two\" is not a band number (1, 2, ...)";
     QTest::newRow("--purity too large")
-        << words("--batch m.json --out o --purity 1.5") << "--purity: \"1.5\" is not a fraction from 0 up to (not including) 1";
+        << words("--batch m.json --out o --purity 1.5")
+        << "--purity: \"1.5\" is not a fraction from 0 up to (not including) 1";
     QTest::newRow("--purity negative")
-        << words("--batch m.json --out o --purity -0.1") << "--purity: \"-0.1\" is not a fraction from 0 up to (not including) 1";
-    QTest::newRow("switch with value") << words("--batch m.json --out o --quiet=yes") << "--quiet takes no value";
+        << words("--batch m.json --out o --purity -0.1")
+        << "--purity: \"-0.1\" is not a fraction from 0 up to (not including) 1";
+    QTest::newRow("switch with value")
+        << words("--batch m.json --out o --quiet=yes") << "--quiet takes no value";
     QTest::newRow("batch flag without --batch") << words("--out o") << "--out only applies with --batch";
-    QTest::newRow("--start without --batch") << words("m.json --start 1,2") << "--start only applies with --batch";
-    QTest::newRow("two files") << words("a.json b.json") << "unexpected argument \"b.json\" (see mcpp --help)";
-    QTest::newRow("two missions") << words("--batch a.json b.json --out o") << "unexpected argument \"b.json\" (see mcpp --help)";
+    QTest::newRow("--start without --batch")
+        << words("m.json --start 1,2") << "--start only applies with --batch";
+    QTest::newRow("two files") << words("a.json b.json")
+                               << "unexpected argument \"b.json\" (see mcpp --help)";
+    QTest::newRow("two missions") << words("--batch a.json b.json --out o")
+                                  << "unexpected argument \"b.json\" (see mcpp --help)";
     QTest::newRow("mission and --raster")
-        << words("--batch m.json --raster map.tif --out o") << "--raster cannot be combined with a mission file; the mission gives it";
+        << words("--batch m.json --raster map.tif --out o")
+        << "--raster cannot be combined with a mission file; the mission gives it";
     QTest::newRow("mission and --start")
-        << words("--batch m.json --start 1,2 --out o") << "--start cannot be combined with a mission file; the mission gives it";
+        << words("--batch m.json --start 1,2 --out o")
+        << "--start cannot be combined with a mission file; the mission gives it";
     QTest::newRow("--batch alone") << words("--batch") << "--batch needs MISSION.json or --raster FILE";
     QTest::newRow("--batch with flags but no raster")
         << words("--batch --preset p --start 1,2 --out o") << "--batch needs MISSION.json or --raster FILE";
@@ -225,7 +248,8 @@ void TestCommandLine::errors() {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
     std::vector<std::string> list;
-    for (const auto& argument : arguments) list.push_back(argument.toStdString());
+    for (const auto& argument : arguments)
+        list.push_back(argument.toStdString());
     const auto result = CommandLine::parse(list);
     QVERIFY(!result.ok());
     QCOMPARE(QString::fromStdString(result.error), message);
@@ -235,10 +259,28 @@ void TestCommandLine::errors() {
 
 void TestCommandLine::usageDocumentsEveryFlag() {
     const auto usage = QString::fromStdString(CommandLine::usage());
-    for (const char* flag : {"--batch", "--out", "--raster", "--classes", "--preset", "--start X,Y", "--start-crs",
-                             "--planner", "--band", "--purity", "--missing-as-obstacle", "--open-paths", "--quiet",
-                             "--help", "--version", "plan.geojson", "report.json", "robot_<i>.plan",
-                             "robot_<i>.waypoints", "robot_<i>.csv", "plan.png", "mcpp-mlct"}) {
+    for (const char* flag : {"--batch",
+                             "--out",
+                             "--raster",
+                             "--classes",
+                             "--preset",
+                             "--start X,Y",
+                             "--start-crs",
+                             "--planner",
+                             "--band",
+                             "--purity",
+                             "--missing-as-obstacle",
+                             "--open-paths",
+                             "--quiet",
+                             "--help",
+                             "--version",
+                             "plan.geojson",
+                             "report.json",
+                             "robot_<i>.plan",
+                             "robot_<i>.waypoints",
+                             "robot_<i>.csv",
+                             "plan.png",
+                             "mcpp-mlct"}) {
         QVERIFY2(usage.contains(QLatin1String(flag)), flag);
     }
 }
@@ -249,14 +291,16 @@ void TestCommandLine::versionNamesTheProjectVersion() {
 
 void TestCommandLine::executablePrintsTheParserErrorOnOneLine() {
     const QString executable = qEnvironmentVariable("MCPP_EXECUTABLE");
-    if (executable.isEmpty()) QSKIP("MCPP_EXECUTABLE is not set; run through ctest");
+    if (executable.isEmpty())
+        QSKIP("MCPP_EXECUTABLE is not set; run through ctest");
     QProcess process;
-    process.start(executable, {"--batch", "--raster", "map.tif", "--preset", "p", "--start", "1,2", "--start", "3,4",
-                               "--start", "12,abc", "--out", "o"});
+    process.start(executable, {"--batch", "--raster", "map.tif", "--preset", "p", "--start", "1,2", "--start",
+                               "3,4", "--start", "12,abc", "--out", "o"});
     QVERIFY(process.waitForFinished(30000));
     QCOMPARE(process.exitStatus(), QProcess::NormalExit);
     QCOMPARE(process.exitCode(), 2);
-    QCOMPARE(QString::fromUtf8(process.readAllStandardError()), QStringLiteral("mcpp: --start 3: \"12,abc\" is not X,Y\n"));
+    QCOMPARE(QString::fromUtf8(process.readAllStandardError()),
+             QStringLiteral("mcpp: --start 3: \"12,abc\" is not X,Y\n"));
     QVERIFY(process.readAllStandardOutput().isEmpty());
 
     process.start(executable, {"--version"});
@@ -267,7 +311,8 @@ void TestCommandLine::executablePrintsTheParserErrorOnOneLine() {
     process.start(executable, {"--help"});
     QVERIFY(process.waitForFinished(30000));
     QCOMPARE(process.exitCode(), 0);
-    QVERIFY(QString::fromUtf8(process.readAllStandardOutput()).contains(QStringLiteral("--start-crs EPSG:N")));
+    QVERIFY(
+        QString::fromUtf8(process.readAllStandardOutput()).contains(QStringLiteral("--start-crs EPSG:N")));
 }
 
 QTEST_GUILESS_MAIN(TestCommandLine)

@@ -131,7 +131,6 @@ private slots:
         QVERIFY(classes->setData(classes->index(row, ui::ClassTableModel::Speed), QStringLiteral("2.5")));
         QCOMPARE(document->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond, 2.5);
         QVERIFY(!classes->setData(classes->index(row, ui::ClassTableModel::Speed), QStringLiteral("-3")));
-        widenFieldsOfView(*classes, *document);
 
         // Plan off the GUI thread and wait.
         QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
