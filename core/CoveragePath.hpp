@@ -22,6 +22,7 @@ struct CoveragePath {
     double lengthMetres = 0.0;
     double timeSeconds = 0.0;
     int turns = 0;
+    int repeatedSubCellVisits = 0; // sub-cell centres passed a second time (bridges between cells)
     bool closed = true;
 };
 

@@ -32,8 +32,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         subCells += 4;
     }
     // Repeated coverage: sub-cell visits beyond the first, over the number of sub-cells.
-    std::size_t visits = 0;
-    std::size_t distinct = 0;
+    std::size_t repeats = 0;
     for (std::size_t robot = 0; robot < robots; ++robot) {
         RobotMetrics& robotMetrics = metrics.robots[robot];
         robotMetrics.robot = static_cast<int>(robot);
@@ -42,17 +41,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
             robotMetrics.lengthMetres = path.lengthMetres;
             robotMetrics.timeSeconds = path.timeSeconds;
             robotMetrics.turns = path.turns;
-            std::vector<std::pair<long long, long long>> keys;
-            const std::size_t last = path.closed && path.waypoints.size() > 1 ? path.waypoints.size() - 1 : path.waypoints.size();
-            for (std::size_t i = 0; i < last; ++i) {
-                const Waypoint& waypoint = path.waypoints[i];
-                // Keys on a grid far finer than any sub-cell, so equal centres compare equal.
-                const double step = waypoint.fieldOfViewMetres / 64.0;
-                keys.emplace_back(std::llround(waypoint.x / step), std::llround(waypoint.y / step));
-            }
-            std::sort(keys.begin(), keys.end());
-            visits += keys.size();
-            distinct += static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+            repeats += static_cast<std::size_t>(path.repeatedSubCellVisits);
         }
         metrics.makespanSeconds = std::max(metrics.makespanSeconds, robotMetrics.timeSeconds);
     }
@@ -62,9 +51,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     metrics.coveredAreaSquareMetres = covered;
     metrics.coveredFraction = tree.passableAreaSquareMetres > 0.0 ? covered / tree.passableAreaSquareMetres : 0.0;
     metrics.unreachableAreaSquareMetres = unreachable;
-    // A start point off the sub-cell grid adds one visit that is not a sub-cell: do not count it as repeated.
-    metrics.repeatedFraction = subCells == 0 ? 0.0
-                                             : static_cast<double>(visits - std::min(visits, distinct)) / static_cast<double>(subCells);
+    metrics.repeatedFraction = subCells == 0 ? 0.0 : static_cast<double>(repeats) / static_cast<double>(subCells);
 }
 
 } // namespace mcpp

@@ -43,6 +43,9 @@ public:
         return circumnavigate(start, closed);
     }
 
+    // Waypoints of the last walk that bridge cells that do not touch: visits of a sub-cell already seen.
+    [[nodiscard]] int repeatedVisits() const { return repeatedVisits_; }
+
 private:
     const QuadCell& cell(int local) const { return tree_.active(cells_[static_cast<std::size_t>(local)]); }
 
@@ -50,7 +53,10 @@ private:
     // give boustrophedon-like paths with few turns.
     void buildTree(EdgePreference preference) {
         const auto count = cells_.size();
-        std::vector<std::array<int, 3>> edges; // rank, a, b
+        // Preferred-direction edges first, the rest after; within each, a fixed order.
+        std::array<std::vector<std::pair<int, int>>, 2>& edges = edgeBuckets_;
+        edges[0].clear();
+        edges[1].clear();
         for (std::size_t a = 0; a < count; ++a) {
             const QuadCell& from = cell(static_cast<int>(a));
             for (int neighbour : topology_.of(cells_[a])) {
@@ -58,11 +64,10 @@ private:
                 if (b <= static_cast<int>(a)) continue;
                 const QuadCell& to = cell(b);
                 const bool eastWest = to.minX >= from.maxX() - 1e-9 * from.size || to.maxX() <= from.minX + 1e-9 * from.size;
-                const int rank = (eastWest == (preference == EdgePreference::EastWest)) ? 0 : 1;
-                edges.push_back({rank, static_cast<int>(a), b});
+                const std::size_t rank = (eastWest == (preference == EdgePreference::EastWest)) ? 0 : 1;
+                edges[rank].emplace_back(static_cast<int>(a), b);
             }
         }
-        std::stable_sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x[0] < y[0]; });
         std::vector<int> root(count);
         std::iota(root.begin(), root.end(), 0);
         auto find = [&](int x) {
@@ -73,13 +78,15 @@ private:
             return x;
         };
         treeNeighbours_.assign(count, {});
-        for (const auto& edge : edges) {
-            const int a = find(edge[1]);
-            const int b = find(edge[2]);
-            if (a == b) continue;
-            root[static_cast<std::size_t>(a)] = b;
-            treeNeighbours_[static_cast<std::size_t>(edge[1])].push_back(edge[2]);
-            treeNeighbours_[static_cast<std::size_t>(edge[2])].push_back(edge[1]);
+        for (const auto& bucket : edges) {
+            for (const auto& [first, second] : bucket) {
+                const int a = find(first);
+                const int b = find(second);
+                if (a == b) continue;
+                root[static_cast<std::size_t>(a)] = b;
+                treeNeighbours_[static_cast<std::size_t>(first)].push_back(second);
+                treeNeighbours_[static_cast<std::size_t>(second)].push_back(first);
+            }
         }
         // Parents and depths from the start cell, for bridging between non-adjacent cells.
         parent_.assign(count, -1);
@@ -99,11 +106,13 @@ private:
         }
     }
 
-    // The cell's sub-cells and tree neighbours in counter-clockwise order around it, from north-west.
-    std::vector<int> slots(int node) const {
+    // Appends the cell's sub-cells and tree neighbours, in counter-clockwise order around it from
+    // north-west, to `out`.
+    void appendSlots(int node, std::vector<int>& out) {
         const QuadCell& self = cell(node);
         const double tolerance = 1e-9 * self.size;
-        std::array<std::vector<std::pair<double, int>>, 4> sides; // west, south, east, north
+        auto& sides = sideScratch_; // west, south, east, north: (position along the walk, neighbour)
+        for (auto& side : sides) side.clear();
         for (int neighbour : treeNeighbours_[static_cast<std::size_t>(node)]) {
             const QuadCell& other = cell(neighbour);
             if (other.maxX() <= self.minX + tolerance) sides[0].emplace_back(-other.centreY(), neighbour);
@@ -111,14 +120,12 @@ private:
             else if (other.minX >= self.maxX() - tolerance) sides[2].emplace_back(other.centreY(), neighbour);
             else sides[3].emplace_back(-other.centreX(), neighbour);
         }
-        std::vector<int> sequence;
-        sequence.reserve(4 + treeNeighbours_[static_cast<std::size_t>(node)].size());
         for (int side = 0; side < 4; ++side) {
-            sequence.push_back(-1 - side); // the corner sub-cell before this side
-            std::sort(sides[static_cast<std::size_t>(side)].begin(), sides[static_cast<std::size_t>(side)].end());
-            for (const auto& [position, neighbour] : sides[static_cast<std::size_t>(side)]) sequence.push_back(neighbour);
+            out.push_back(-1 - side); // the corner sub-cell before this side
+            auto& list = sides[static_cast<std::size_t>(side)];
+            if (list.size() > 1) std::sort(list.begin(), list.end());
+            for (const auto& entry : list) out.push_back(entry.second);
         }
-        return sequence;
     }
 
     bool adjacent(int a, int b) const {
@@ -171,6 +178,7 @@ private:
                 if (adjacent(last, next)) continue; // skip a bridge the path does not need
                 const Waypoint& from = path.back();
                 path.push_back(waypointAt(between[i], nearestSubCell(between[i], {from.x, from.y})));
+                ++repeatedVisits_;
                 last = between[i];
             }
         }
@@ -179,48 +187,54 @@ private:
     }
 
     std::vector<Waypoint> circumnavigate(MapPoint start, bool closed) {
+        // Frames keep their items in one arena, used as a stack: no allocation per cell.
         struct Frame {
             int node;
-            std::vector<int> items;
+            std::size_t begin; // first item in the arena
+            std::size_t end;
             std::size_t next;
         };
         std::vector<Waypoint> path;
         path.reserve(cells_.size() * 4 + 2);
+        repeatedVisits_ = 0;
         int previousNode = -1;
+        std::vector<int>& arena = arena_;
+        arena.clear();
         // The tour starts at the start cell's sub-cell nearest the start point.
-        std::vector<int> rootItems = slots(root_);
+        appendSlots(root_, arena);
         std::size_t firstItem = 0;
         double bestDistance = std::numeric_limits<double>::infinity();
-        for (std::size_t i = 0; i < rootItems.size(); ++i) {
-            if (rootItems[i] >= 0) continue;
-            const MapPoint centre = subCellCentre(cell(root_), rootItems[i]);
+        for (std::size_t i = 0; i < arena.size(); ++i) {
+            if (arena[i] >= 0) continue;
+            const MapPoint centre = subCellCentre(cell(root_), arena[i]);
             const double d = std::hypot(centre.x - start.x, centre.y - start.y);
             if (d < bestDistance - 1e-12) {
                 bestDistance = d;
                 firstItem = i;
             }
         }
-        std::rotate(rootItems.begin(), rootItems.begin() + static_cast<std::ptrdiff_t>(firstItem), rootItems.end());
+        std::rotate(arena.begin(), arena.begin() + static_cast<std::ptrdiff_t>(firstItem), arena.end());
         std::vector<Frame> stack;
-        stack.push_back({root_, std::move(rootItems), 0});
+        stack.push_back({root_, 0, arena.size(), 0});
         while (!stack.empty()) {
             Frame& frame = stack.back();
-            if (frame.next == frame.items.size()) {
+            if (frame.next == frame.end - frame.begin) {
+                arena.resize(frame.begin);
                 stack.pop_back();
                 continue;
             }
-            const int item = frame.items[frame.next++];
+            const int item = arena[frame.begin + frame.next++];
             const int node = frame.node;
             if (item < 0) {
                 emit(path, previousNode, node, subCellCentre(cell(node), item));
                 continue;
             }
             // Enter the child just after this cell's place in its sequence and go round it.
-            std::vector<int> childItems = slots(item);
-            const auto self = std::find(childItems.begin(), childItems.end(), node);
-            std::rotate(childItems.begin(), self, childItems.end());
-            childItems.erase(childItems.begin());
-            stack.push_back({item, std::move(childItems), 0});
+            const std::size_t begin = arena.size();
+            appendSlots(item, arena);
+            const auto self = std::find(arena.begin() + static_cast<std::ptrdiff_t>(begin), arena.end(), node);
+            std::rotate(arena.begin() + static_cast<std::ptrdiff_t>(begin), self, arena.end());
+            stack.push_back({item, begin + 1, arena.size(), 0}); // skip the parent's own slot
         }
         // The walk may end deep in a subtree; returning goes through emit so it is bridged like any step.
         if (closed) emit(path, previousNode, root_, {path.front().x, path.front().y});
@@ -233,6 +247,10 @@ private:
     std::vector<int>& localIndex_;
     int root_ = 0;
     std::vector<std::vector<int>> treeNeighbours_;
+    std::array<std::vector<std::pair<double, int>>, 4> sideScratch_;
+    std::array<std::vector<std::pair<int, int>>, 2> edgeBuckets_;
+    std::vector<int> arena_;
+    int repeatedVisits_ = 0;
     std::vector<int> parent_;
     std::vector<int> depth_;
 };
@@ -299,6 +317,7 @@ std::vector<CoveragePath> SpanningTreeCoverage::plan(const QuadTree& tree, const
             candidate.robot = static_cast<int>(robot);
             candidate.closed = settings.closedTour;
             std::vector<Waypoint> walked = tour.walk(preference, start, settings.closedTour);
+            candidate.repeatedSubCellVisits = tour.repeatedVisits();
             const Waypoint first = walked.front();
             const bool startIsOnPath = std::hypot(first.x - start.x, first.y - start.y) < 1e-9;
             if (!startIsOnPath) {
