@@ -31,7 +31,7 @@ class Allocation {
 public:
     Allocation(const QuadTree& tree, const NeighbourTopology& topology, const std::vector<int>& startCells,
                const ProgressReporter& progress)
-        : tree_(tree), topology_(topology), progress_(progress), cellCount_(static_cast<int>(tree.activeCount())),
+        : topology_(topology), progress_(progress), cellCount_(static_cast<int>(tree.activeCount())),
           owner_(static_cast<std::size_t>(cellCount_), unreachable), cost_(static_cast<std::size_t>(cellCount_)),
           x_(static_cast<std::size_t>(cellCount_)), y_(static_cast<std::size_t>(cellCount_)),
           area_(static_cast<std::size_t>(cellCount_)), visitStamp_(static_cast<std::size_t>(cellCount_), 0),
@@ -536,7 +536,6 @@ private:
         return false;
     }
 
-    const QuadTree& tree_;
     const NeighbourTopology& topology_;
     const ProgressReporter& progress_;
     int cellCount_;

@@ -16,6 +16,8 @@ struct PlannerSettings {
     int rebalanceIterations = 0;
     // Move a start on an obstacle, outside the area or sharing a cell to the nearest free cell, with a warning.
     bool snapStartsToFreeCells = false;
+
+    friend bool operator==(const PlannerSettings&, const PlannerSettings&) = default;
 };
 
 } // namespace mcpp
