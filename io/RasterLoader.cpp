@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <unordered_map>
+#include <vector>
 
 namespace mcpp::io {
 
@@ -67,10 +68,12 @@ std::unique_ptr<OGRSpatialReference> utmForCentre(const OGRSpatialReference& geo
 // Nearest-neighbour warp of one band into the UTM frame as a lazily computed VRT: nothing is held in memory
 // beyond what a read asks for. Out-of-footprint and nodata pixels become NaN.
 // The caller keeps `selected` (the band-selection VRT) alive until the warped dataset is closed.
+// With a target size, the warp resamples straight to it by the class mode (using the source's overviews
+// where it has them), so a raster far above the pixel budget is never warped at full resolution.
 DatasetPointer warpToUtm(GDALDataset& source, int band, const OGRSpatialReference& utm, DatasetPointer& selected,
-                         std::string& error) {
+                         std::string& error, int targetColumns = 0, int targetRows = 0) {
     GDALDatasetH input = GDALDataset::ToHandle(&source);
-    if (source.GetRasterCount() > 1) {
+    if (source.GetRasterCount() > 1 && !selected) {
         const std::string bandText = std::to_string(band);
         const char* translateArguments[] = {"-of", "VRT", "-b", bandText.c_str(), nullptr};
         GDALTranslateOptions* translateOptions = GDALTranslateOptionsNew(const_cast<char**>(translateArguments), nullptr);
@@ -80,11 +83,22 @@ DatasetPointer warpToUtm(GDALDataset& source, int band, const OGRSpatialReferenc
             error = "could not select band " + bandText + QuietGdalErrors::detail();
             return nullptr;
         }
-        input = GDALDataset::ToHandle(selected.get());
     }
+    if (selected) input = GDALDataset::ToHandle(selected.get());
     const std::string wkt = internal::wktOf(utm);
-    const char* warpArguments[] = {"-of", "VRT", "-t_srs", wkt.c_str(), "-r", "near", "-ot", "Float64", "-dstnodata", "nan", nullptr};
-    GDALWarpAppOptions* warpOptions = GDALWarpAppOptionsNew(const_cast<char**>(warpArguments), nullptr);
+    const std::string columnsText = std::to_string(targetColumns);
+    const std::string rowsText = std::to_string(targetRows);
+    std::vector<const char*> warpArguments{"-of", "VRT", "-t_srs", wkt.c_str(), "-ot", "Float64", "-dstnodata", "nan"};
+    if (targetColumns > 0 && targetRows > 0) {
+        for (const char* argument : {"-r", "mode", "-ts"}) warpArguments.push_back(argument);
+        warpArguments.push_back(columnsText.c_str());
+        warpArguments.push_back(rowsText.c_str());
+    } else {
+        warpArguments.push_back("-r");
+        warpArguments.push_back("near");
+    }
+    warpArguments.push_back(nullptr);
+    GDALWarpAppOptions* warpOptions = GDALWarpAppOptionsNew(const_cast<char**>(warpArguments.data()), nullptr);
     int usageError = 0;
     DatasetPointer warped(GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &input, warpOptions, &usageError)));
     GDALWarpAppOptionsFree(warpOptions);
@@ -307,6 +321,17 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
         std::string error;
         warped = warpToUtm(*source, options.band, *utm, selectedBand, error);
         if (!warped) return RasterResult::failure(path + ": " + error);
+        const ReadPlan coarse = planRead(warped->GetRasterXSize(), warped->GetRasterYSize(), options.pixelBudget);
+        if (coarse.coarsened) {
+            warped = warpToUtm(*source, options.band, *utm, selectedBand, error, coarse.columns, coarse.rows);
+            if (!warped) return RasterResult::failure(path + ": " + error);
+            raster.coarsened = true;
+            raster.warnings.push_back("raster warps to " + std::to_string(coarse.sourceColumns) + " x " +
+                                      std::to_string(coarse.sourceRows) + " pixels, above the budget of " +
+                                      std::to_string(options.pixelBudget) + ": warped straight to " +
+                                      std::to_string(coarse.columns) + " x " + std::to_string(coarse.rows) +
+                                      " (mode resampling)");
+        }
         raster.warpedFromGeographic = true;
         raster.warnings.push_back("geographic CRS " + raster.sourceCrsName + ": planned in " + utm->GetName()
                                   + " (nearest-neighbour warp)");
@@ -346,7 +371,7 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
     } else {
         grid.originY = transform[3] * metresPerUnit;
     }
-    raster.coarsened = plan.coarsened;
+    raster.coarsened = raster.coarsened || plan.coarsened;
     raster.effectiveResolutionMetres = std::max(grid.pixelWidth, grid.pixelHeight);
     if (plan.coarsened) {
         raster.warnings.push_back("raster has " + std::to_string(plan.sourceColumns) + " x " + std::to_string(plan.sourceRows)
