@@ -153,21 +153,13 @@ void BatchRunner::loadRaster() {
 }
 
 void BatchRunner::chooseClassTable() {
-    classes_ = mission_.classes;
     if (!mission_.preset.empty()) {
         // Asking for the preset alone first turns an unknown name into an error instead of a default table.
         auto preset = io::presetClassTable(mission_.preset);
         if (!preset)
             badInput(classesLabel() + ": " + preset.error());
-        // docs/mission-format.md: the preset supplies the classes the table does not list.
-        const ClassTable presetTable = io::classTableForRaster(raster_, mission_.preset);
-        for (const auto& landCover : presetTable.classes()) {
-            if (classes_.find(landCover.value) == nullptr)
-                classes_.set(landCover);
-        }
-    } else if (classes_.empty()) {
-        classes_ = io::classTableForRaster(raster_);
     }
+    classes_ = io::missionClassTable(mission_.classes, mission_.preset, raster_);
     if (const auto problem = classes_.validate())
         badInput(classesLabel() + ": " + *problem);
 

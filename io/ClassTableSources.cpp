@@ -151,6 +151,15 @@ Status saveClassTableCsv(const ClassTable& table, const std::string& path) {
     return internal::writeFileAtomically(path, text);
 }
 
+ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset, const LoadedRaster& raster) {
+    if (preset.empty()) return ownRows.empty() ? classTableForRaster(raster) : ownRows;
+    ClassTable table = ownRows;
+    const ClassTable presetRows = classTableForRaster(raster, preset);
+    for (const auto& landCover : presetRows.classes())
+        if (table.find(landCover.value) == nullptr) table.set(landCover);
+    return table;
+}
+
 ClassTable classTableForRaster(const LoadedRaster& raster, const std::string& preset) {
     ClassTable defaults;
     if (!preset.empty()) {

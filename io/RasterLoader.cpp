@@ -334,7 +334,7 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
         }
         raster.warpedFromGeographic = true;
         raster.warnings.push_back("geographic CRS " + raster.sourceCrsName + ": planned in " + utm->GetName()
-                                  + " (nearest-neighbour warp)");
+                                  + (raster.coarsened ? " (warped by mode to the pixel budget)" : " (nearest-neighbour warp)"));
         planningCrs = std::move(utm);
         readDataset = warped.get();
         readBand = 1;

@@ -615,7 +615,7 @@ bool MainWindow::openMission(const QString& path) {
                                                    .arg(path, rasterPath, QString::fromStdString(raster.error())));
         return false;
     }
-    if (mission.classes.empty()) mission.classes = io::classTableForRaster(raster.value(), mission.preset);
+    mission.classes = io::missionClassTable(mission.classes, mission.preset, raster.value());
     // Starts may be given in another CRS; the GUI keeps them all in the raster's.
     for (auto& robot : mission.robots) {
         if (robot.startCrs.empty()) continue;

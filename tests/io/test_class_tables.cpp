@@ -167,6 +167,20 @@ private slots:
         QVERIFY(!spanish.validate().has_value());
     }
 
+    // A mission's own rows win; its preset fills the values they lack; with neither, the generic table.
+    void missionTableMergesOwnRowsAndPreset() {
+        const LoadedRaster nlcd = load("landcover/nlcd.tif");
+        ClassTable own;
+        own.set({4, "Pine forest", 0x112233, 0.4, 50.0, true});
+        const ClassTable merged = missionClassTable(own, "nlcd-simplified", nlcd);
+        QCOMPARE(merged.size(), std::size_t{8});
+        QCOMPARE(merged.find(4)->name, std::string("Pine forest"));
+        QCOMPARE(merged.find(4)->speedMetresPerSecond, 0.4);
+        QCOMPARE(merged.find(2)->speedMetresPerSecond, preset("nlcd-simplified").find(2)->speedMetresPerSecond);
+        QCOMPARE(missionClassTable(own, "", nlcd), own);
+        QCOMPARE(missionClassTable({}, "", nlcd), classTableForRaster(nlcd));
+    }
+
     void unknownClassesGetTheGenericRow() {
         const LoadedRaster nrcan = load("landcover/nrcan_landcover2015_example.tif");
         const ClassTable generic = classTableForRaster(nrcan);
