@@ -142,7 +142,9 @@ public:
 
 private:
     double distance(int cell, double x, double y) const {
-        return std::hypot(x_[static_cast<std::size_t>(cell)] - x, y_[static_cast<std::size_t>(cell)] - y);
+        const double dx = x_[static_cast<std::size_t>(cell)] - x;
+        const double dy = y_[static_cast<std::size_t>(cell)] - y;
+        return std::sqrt(dx * dx + dy * dy); // std::hypot guards overflow we cannot meet, at several times the cost
     }
 
     // cost_un: distance to the robot's own centre minus the mean distance to the other centres.
@@ -296,7 +298,7 @@ private:
             if (!(state.cost + cost_[static_cast<std::size_t>(cell)] < donor.cost - 1e-9)) continue;
             const double dx = x_[static_cast<std::size_t>(cell)] - centreX;
             const double dy = y_[static_cast<std::size_t>(cell)] - centreY;
-            candidates.push_back({dx * towardsX + dy * towardsY >= 0.0, std::hypot(dx, dy), cell});
+            candidates.push_back({dx * towardsX + dy * towardsY >= 0.0, std::sqrt(dx * dx + dy * dy), cell});
         }
         border.resize(kept);
         std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <span>
 
 namespace mcpp {
 namespace {
@@ -49,6 +50,12 @@ public:
 private:
     const QuadCell& cell(int local) const { return tree_.active(cells_[static_cast<std::size_t>(local)]); }
 
+    std::span<const int> treeNeighbours(int node) const {
+        const auto begin = static_cast<std::size_t>(treeOffsets_[static_cast<std::size_t>(node)]);
+        const auto end = static_cast<std::size_t>(treeOffsets_[static_cast<std::size_t>(node) + 1]);
+        return {treeTargets_.data() + begin, end - begin};
+    }
+
     // Kruskal over the region's adjacencies, the preferred direction's edges first: long straight spines
     // give boustrophedon-like paths with few turns.
     void buildTree(EdgePreference preference) {
@@ -77,16 +84,30 @@ private:
             }
             return x;
         };
-        treeNeighbours_.assign(count, {});
+        // Tree edges, then compressed adjacency lists: one allocation for the whole tree.
+        std::vector<std::pair<int, int>>& treeEdges = treeEdges_;
+        treeEdges.clear();
         for (const auto& bucket : edges) {
             for (const auto& [first, second] : bucket) {
                 const int a = find(first);
                 const int b = find(second);
                 if (a == b) continue;
                 root[static_cast<std::size_t>(a)] = b;
-                treeNeighbours_[static_cast<std::size_t>(first)].push_back(second);
-                treeNeighbours_[static_cast<std::size_t>(second)].push_back(first);
+                treeEdges.emplace_back(first, second);
             }
+        }
+        treeOffsets_.assign(count + 1, 0);
+        for (const auto& [a, b] : treeEdges) {
+            ++treeOffsets_[static_cast<std::size_t>(a) + 1];
+            ++treeOffsets_[static_cast<std::size_t>(b) + 1];
+        }
+        for (std::size_t i = 0; i < count; ++i) treeOffsets_[i + 1] += treeOffsets_[i];
+        treeTargets_.resize(2 * treeEdges.size());
+        std::vector<int>& fill = scratchFill_;
+        fill.assign(treeOffsets_.begin(), treeOffsets_.end() - 1);
+        for (const auto& [a, b] : treeEdges) {
+            treeTargets_[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
+            treeTargets_[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
         }
         // Parents and depths from the start cell, for bridging between non-adjacent cells.
         parent_.assign(count, -1);
@@ -96,7 +117,7 @@ private:
         seen[static_cast<std::size_t>(root_)] = 1;
         for (std::size_t head = 0; head < queue.size(); ++head) {
             const int node = queue[head];
-            for (int next : treeNeighbours_[static_cast<std::size_t>(node)]) {
+            for (int next : treeNeighbours(node)) {
                 if (seen[static_cast<std::size_t>(next)] != 0) continue;
                 seen[static_cast<std::size_t>(next)] = 1;
                 parent_[static_cast<std::size_t>(next)] = node;
@@ -113,7 +134,7 @@ private:
         const double tolerance = 1e-9 * self.size;
         auto& sides = sideScratch_; // west, south, east, north: (position along the walk, neighbour)
         for (auto& side : sides) side.clear();
-        for (int neighbour : treeNeighbours_[static_cast<std::size_t>(node)]) {
+        for (int neighbour : treeNeighbours(node)) {
             const QuadCell& other = cell(neighbour);
             if (other.maxX() <= self.minX + tolerance) sides[0].emplace_back(-other.centreY(), neighbour);
             else if (other.maxY() <= self.minY + tolerance) sides[1].emplace_back(other.centreX(), neighbour);
@@ -246,7 +267,10 @@ private:
     std::vector<int> cells_;
     std::vector<int>& localIndex_;
     int root_ = 0;
-    std::vector<std::vector<int>> treeNeighbours_;
+    std::vector<std::pair<int, int>> treeEdges_;
+    std::vector<int> treeOffsets_;
+    std::vector<int> treeTargets_;
+    std::vector<int> scratchFill_;
     std::array<std::vector<std::pair<double, int>>, 4> sideScratch_;
     std::array<std::vector<std::pair<int, int>>, 2> edgeBuckets_;
     std::vector<int> arena_;
@@ -265,7 +289,7 @@ int countTurns(const std::vector<Waypoint>& waypoints) {
     for (std::size_t i = 1; i < waypoints.size(); ++i) {
         const double dx = waypoints[i].x - waypoints[i - 1].x;
         const double dy = waypoints[i].y - waypoints[i - 1].y;
-        const double length = std::hypot(dx, dy);
+        const double length = std::sqrt(dx * dx + dy * dy);
         if (length < 1e-9) continue;
         const double ux = dx / length;
         const double uy = dy / length;
@@ -285,7 +309,9 @@ void measurePath(CoveragePath& path) {
     for (std::size_t i = 1; i < path.waypoints.size(); ++i) {
         const Waypoint& from = path.waypoints[i - 1];
         Waypoint& to = path.waypoints[i];
-        const double segment = std::hypot(to.x - from.x, to.y - from.y);
+        const double dx = to.x - from.x;
+        const double dy = to.y - from.y;
+        const double segment = std::sqrt(dx * dx + dy * dy);
         length += segment;
         time += segment / 2.0 / from.speedMetresPerSecond + segment / 2.0 / to.speedMetresPerSecond;
         to.cumulativeSeconds = time;
