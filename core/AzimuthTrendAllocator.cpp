@@ -271,6 +271,19 @@ private:
         return found == sameOwner.size();
     }
 
+    // The first of `cells` (at most `maxTries` of them) whose removal surely keeps its region connected:
+    // a cheap look around each first, the wide search only when none passes it.
+    int firstRemovable(const std::vector<int>& cells, int maxTries) {
+        for (std::size_t limit : {localSearch, wideSearch}) {
+            int tried = 0;
+            for (int cell : cells) {
+                if (removalKeepsConnected(cell, limit)) return cell;
+                if (++tried >= maxTries) break;
+            }
+        }
+        return -1;
+    }
+
     // A stuck robot takes a border cell of a neighbour when that lowers the larger of the two costs:
     // first cells on the side facing the still unassigned area (nu), then the rest (fu), nearest first.
     bool stealFromNeighbour(int robot) {
@@ -306,26 +319,17 @@ private:
             if (a.distance != b.distance) return a.distance < b.distance;
             return a.cell < b.cell;
         });
-        int chosen = -1;
-        for (std::size_t limit : {localSearch, wideSearch}) {
-            int tried = 0;
-            for (const auto& candidate : candidates) {
-                if (removalKeepsConnected(candidate.cell, limit)) {
-                    chosen = candidate.cell;
-                    break;
-                }
-                if (++tried >= 32) break;
-            }
-            if (chosen >= 0) break;
-        }
+        std::vector<int>& ordered = scratchCells_;
+        ordered.clear();
+        for (const auto& candidate : candidates) ordered.push_back(candidate.cell);
+        const int chosen = firstRemovable(ordered, 32);
         if (chosen >= 0) {
-            const Candidate candidate{true, 0.0, chosen};
-            const int donor = owner_[static_cast<std::size_t>(candidate.cell)];
-            give(candidate.cell, robot);
-            pushNeighbours(robot, candidate.cell);
+            const int donor = owner_[static_cast<std::size_t>(chosen)];
+            give(chosen, robot);
+            pushNeighbours(robot, chosen);
             robots_[static_cast<std::size_t>(donor)].finished = false;
             // The donor may now reach cells again through its remaining border.
-            for (int neighbour : topology_.of(candidate.cell))
+            for (int neighbour : topology_.of(chosen))
                 if (owner_[static_cast<std::size_t>(neighbour)] == donor) pushNeighbours(donor, neighbour);
             return true;
         }
@@ -422,15 +426,10 @@ private:
             candidates.emplace_back(score, cell);
         }
         std::sort(candidates.begin(), candidates.end());
-        // A cheap look around each candidate first; the wider search only when none passes it.
-        for (std::size_t limit : {localSearch, wideSearch}) {
-            int tried = 0;
-            for (const auto& [score, cell] : candidates) {
-                if (removalKeepsConnected(cell, limit)) return cell;
-                if (++tried >= 64) break;
-            }
-        }
-        return -1;
+        std::vector<int>& ordered = scratchCells_;
+        ordered.clear();
+        for (const auto& candidate : candidates) ordered.push_back(candidate.second);
+        return firstRemovable(ordered, 64);
     }
 
     // Whether `from` has any border cell it could hand to `to`, remembered until either region changes.
@@ -453,15 +452,11 @@ private:
 
     bool searchHandOver(int from, int to) {
         const RobotState& donor = robots_[static_cast<std::size_t>(from)];
-        for (std::size_t limit : {localSearch, wideSearch}) {
-            int tried = 0;
-            for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
-                if (cell == donor.startCell || !touchesRegion(cell, to)) continue;
-                if (removalKeepsConnected(cell, limit)) return true;
-                if (++tried >= 64) break;
-            }
-        }
-        return false;
+        std::vector<int>& facing = scratchCells_;
+        facing.clear();
+        for (int cell : boundaries_[static_cast<std::size_t>(from)])
+            if (cell != donor.startCell && touchesRegion(cell, to)) facing.push_back(cell);
+        return firstRemovable(facing, 64) >= 0;
     }
 
     // Finds regions the richest can pass a cell to, directly or through a chain of regions each able to
@@ -562,6 +557,7 @@ private:
     std::vector<int> regionContacts_;
     std::vector<int> lastChain_;
     std::vector<std::pair<double, int>> scratchCandidates_;
+    std::vector<int> scratchCells_;
     std::vector<char> handOverKnown_;
     std::vector<char> handOverPossible_;
 };
