@@ -44,6 +44,25 @@ private:
 
 } // namespace
 
+namespace {
+
+bool insideRaster(const ClassGrid& grid, MapPoint point) {
+    return point.x >= grid.originX && point.x < grid.maxX() && point.y > grid.minY() && point.y <= grid.originY;
+}
+
+// Starts that are no point or off the raster are wrong whatever the quadtree: say so before building it.
+void checkStartsBeforeBuilding(const PlanningProblem& problem) {
+    for (std::size_t robot = 0; robot < problem.starts.size(); ++robot) {
+        const MapPoint start = problem.starts[robot];
+        if (!std::isfinite(start.x) || !std::isfinite(start.y))
+            throw PlanningError(Kind::InvalidParameter, robotAt(robot, start) + " is not a number");
+        if (!problem.settings.snapStartsToFreeCells && !insideRaster(problem.grid, start))
+            throw PlanningError(Kind::StartOutsideArea, robotAt(robot, start) + " is outside the map");
+    }
+}
+
+} // namespace
+
 std::vector<int> locateStartCells(const QuadTree& tree, const PlanningProblem& problem, std::vector<MapPoint>& starts,
                                   std::vector<std::string>& warnings) {
     const ClassGrid& grid = problem.grid;
@@ -55,10 +74,9 @@ std::vector<int> locateStartCells(const QuadTree& tree, const PlanningProblem& p
         if (!std::isfinite(start.x) || !std::isfinite(start.y))
             throw PlanningError(Kind::InvalidParameter, robotAt(robot, start) + " is not a number");
         const int leaf = tree.leafAt(start.x, start.y);
-        const bool insideRaster = start.x >= grid.originX && start.x < grid.maxX() && start.y > grid.minY() && start.y <= grid.originY;
         std::string problemText;
         Kind kind = Kind::StartOnObstacle;
-        if (!insideRaster || leaf < 0) {
+        if (!insideRaster(grid, start) || leaf < 0) {
             problemText = robotAt(robot, start) + " is outside the map";
             kind = Kind::StartOutsideArea;
         } else if (tree.cells[static_cast<std::size_t>(leaf)].state != CellState::Active) {
@@ -112,6 +130,7 @@ std::vector<int> locateStartCells(const QuadTree& tree, const PlanningProblem& p
 
 Plan MlctPlanner::plan(const PlanningProblem& problem, const ProgressReporter& progress) const {
     if (problem.starts.empty()) throw PlanningError(Kind::InvalidParameter, "no robots: give at least one start point");
+    checkStartsBeforeBuilding(problem);
     Plan plan;
     plan.planner = name();
     StageTimer timer(plan.metrics);

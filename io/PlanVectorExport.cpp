@@ -149,6 +149,81 @@ std::unique_ptr<OGRGeometry> asMultiPolygon(const OGRGeometry& geometry) {
     return std::unique_ptr<OGRGeometry>(OGRGeometryFactory::forceToMultiPolygon(geometry.clone()));
 }
 
+// The layers GeoPackage and KML share. KML readers show a feature's "name", so `named` adds one.
+Status writeRegionLayer(VectorFileWriter& writer, std::vector<internal::RegionFeature>& regions,
+                        const OGRSpatialReference* crs, bool named) {
+    auto layer = writer.layer("regions", crs, wkbMultiPolygon);
+    if (!layer) return Status::failure(layer.error());
+    Fields fields{{{"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal}, {"cells", OFTInteger}}};
+    if (named) fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status) return status;
+    for (auto& region : regions) {
+        OGRFeature feature(layer.value()->GetLayerDefn());
+        if (named) feature.SetField("name", ("robot " + std::to_string(region.robot) + " region").c_str());
+        feature.SetField("robot", region.robot);
+        feature.SetField("cost_s", region.costSeconds);
+        feature.SetField("area_m2", region.areaSquareMetres);
+        feature.SetField("cells", region.cells);
+        feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
+        if (Status status = writer.add(layer.value(), feature); !status) return status;
+    }
+    return {};
+}
+
+Status writePathLayer(VectorFileWriter& writer, std::vector<internal::PathFeature>& paths, const OGRSpatialReference* crs,
+                      bool named) {
+    auto layer = writer.layer("paths", crs, wkbLineString);
+    if (!layer) return Status::failure(layer.error());
+    Fields fields{{{"robot", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal}, {"turns", OFTInteger}}};
+    if (named) fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status) return status;
+    for (auto& line : paths) {
+        OGRFeature feature(layer.value()->GetLayerDefn());
+        if (named) feature.SetField("name", ("robot " + std::to_string(line.robot) + " path").c_str());
+        feature.SetField("robot", line.robot);
+        feature.SetField("length_m", line.lengthMetres);
+        feature.SetField("time_s", line.timeSeconds);
+        feature.SetField("turns", line.turns);
+        feature.SetGeometryDirectly(line.geometry.release());
+        if (Status status = writer.add(layer.value(), feature); !status) return status;
+    }
+    return {};
+}
+
+Status writeStartLayer(VectorFileWriter& writer, std::vector<internal::StartFeature>& starts, const OGRSpatialReference* crs,
+                       bool named) {
+    auto layer = writer.layer("starts", crs, wkbPoint);
+    if (!layer) return Status::failure(layer.error());
+    Fields fields{{{"robot", OFTInteger}}};
+    if (named) fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status) return status;
+    for (auto& start : starts) {
+        OGRFeature feature(layer.value()->GetLayerDefn());
+        if (named) feature.SetField("name", ("robot " + std::to_string(start.robot) + " start").c_str());
+        feature.SetField("robot", start.robot);
+        feature.SetGeometryDirectly(start.geometry.release());
+        if (Status status = writer.add(layer.value(), feature); !status) return status;
+    }
+    return {};
+}
+
+Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::UnreachableFeature>& parts,
+                             const OGRSpatialReference* crs, bool named) {
+    auto layer = writer.layer("unreachable", crs, wkbPolygon);
+    if (!layer) return Status::failure(layer.error());
+    Fields fields{{{"area_m2", OFTReal}}};
+    if (named) fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status) return status;
+    for (auto& part : parts) {
+        OGRFeature feature(layer.value()->GetLayerDefn());
+        if (named) feature.SetField("name", "unreachable");
+        feature.SetField("area_m2", part.areaSquareMetres);
+        feature.SetGeometryDirectly(part.geometry.release());
+        if (Status status = writer.add(layer.value(), feature); !status) return status;
+    }
+    return {};
+}
+
 } // namespace
 
 Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
@@ -216,49 +291,10 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
     if (Status status = writer.open(); !status) return status;
     writer.dataset().StartTransaction();
 
-    auto regions = writer.layer("regions", crs.get(), wkbMultiPolygon);
-    if (!regions) return Status::failure(regions.error());
-    if (Status status = createFields(writer, regions.value(),
-                                     {{{"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal}, {"cells", OFTInteger}}});
-        !status) {
-        return status;
-    }
-    for (auto& region : features.value().regions) {
-        OGRFeature feature(regions.value()->GetLayerDefn());
-        feature.SetField("robot", region.robot);
-        feature.SetField("cost_s", region.costSeconds);
-        feature.SetField("area_m2", region.areaSquareMetres);
-        feature.SetField("cells", region.cells);
-        feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
-        if (Status status = writer.add(regions.value(), feature); !status) return status;
-    }
-
-    auto paths = writer.layer("paths", crs.get(), wkbLineString);
-    if (!paths) return Status::failure(paths.error());
-    if (Status status = createFields(writer, paths.value(),
-                                     {{{"robot", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal}, {"turns", OFTInteger}}});
-        !status) {
-        return status;
-    }
-    for (auto& line : features.value().paths) {
-        OGRFeature feature(paths.value()->GetLayerDefn());
-        feature.SetField("robot", line.robot);
-        feature.SetField("length_m", line.lengthMetres);
-        feature.SetField("time_s", line.timeSeconds);
-        feature.SetField("turns", line.turns);
-        feature.SetGeometryDirectly(line.geometry.release());
-        if (Status status = writer.add(paths.value(), feature); !status) return status;
-    }
-
-    auto starts = writer.layer("starts", crs.get(), wkbPoint);
-    if (!starts) return Status::failure(starts.error());
-    if (Status status = createFields(writer, starts.value(), {{{"robot", OFTInteger}}}); !status) return status;
-    for (auto& start : features.value().starts) {
-        OGRFeature feature(starts.value()->GetLayerDefn());
-        feature.SetField("robot", start.robot);
-        feature.SetGeometryDirectly(start.geometry.release());
-        if (Status status = writer.add(starts.value(), feature); !status) return status;
-    }
+    PlanFeatures& planFeatures = features.value();
+    if (Status status = writeRegionLayer(writer, planFeatures.regions, crs.get(), false); !status) return status;
+    if (Status status = writePathLayer(writer, planFeatures.paths, crs.get(), false); !status) return status;
+    if (Status status = writeStartLayer(writer, planFeatures.starts, crs.get(), false); !status) return status;
 
     auto cells = writer.layer("cells", crs.get(), wkbPolygon);
     if (!cells) return Status::failure(cells.error());
@@ -283,15 +319,7 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
         if (Status status = writer.add(cells.value(), feature); !status) return status;
     }
 
-    auto unreachable = writer.layer("unreachable", crs.get(), wkbPolygon);
-    if (!unreachable) return Status::failure(unreachable.error());
-    if (Status status = createFields(writer, unreachable.value(), {{{"area_m2", OFTReal}}}); !status) return status;
-    for (auto& part : features.value().unreachable) {
-        OGRFeature feature(unreachable.value()->GetLayerDefn());
-        feature.SetField("area_m2", part.areaSquareMetres);
-        feature.SetGeometryDirectly(part.geometry.release());
-        if (Status status = writer.add(unreachable.value(), feature); !status) return status;
-    }
+    if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, crs.get(), false); !status) return status;
     if (writer.dataset().CommitTransaction() != OGRERR_NONE) {
         return Status::failure(path + ": cannot commit" + QuietGdalErrors::detail());
     }
@@ -307,66 +335,12 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
     if (Status status = writer.open(); !status) return status;
     const auto wgs84 = internal::wgs84SpatialReference();
 
-    const auto robotName = [](int robot) { return "robot " + std::to_string(robot); };
-    auto regions = writer.layer("regions", wgs84.get(), wkbMultiPolygon);
-    if (!regions) return Status::failure(regions.error());
-    if (Status status = createFields(writer, regions.value(),
-                                     {{{"name", OFTString}, {"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal},
-                                       {"cells", OFTInteger}}});
-        !status) {
-        return status;
-    }
-    for (auto& region : features.value().regions) {
-        OGRFeature feature(regions.value()->GetLayerDefn());
-        feature.SetField("name", (robotName(region.robot) + " region").c_str());
-        feature.SetField("robot", region.robot);
-        feature.SetField("cost_s", region.costSeconds);
-        feature.SetField("area_m2", region.areaSquareMetres);
-        feature.SetField("cells", region.cells);
-        feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
-        if (Status status = writer.add(regions.value(), feature); !status) return status;
-    }
-    auto paths = writer.layer("paths", wgs84.get(), wkbLineString);
-    if (!paths) return Status::failure(paths.error());
-    if (Status status = createFields(writer, paths.value(),
-                                     {{{"name", OFTString}, {"robot", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal},
-                                       {"turns", OFTInteger}}});
-        !status) {
-        return status;
-    }
-    for (auto& line : features.value().paths) {
-        OGRFeature feature(paths.value()->GetLayerDefn());
-        feature.SetField("name", (robotName(line.robot) + " path").c_str());
-        feature.SetField("robot", line.robot);
-        feature.SetField("length_m", line.lengthMetres);
-        feature.SetField("time_s", line.timeSeconds);
-        feature.SetField("turns", line.turns);
-        feature.SetGeometryDirectly(line.geometry.release());
-        if (Status status = writer.add(paths.value(), feature); !status) return status;
-    }
-    auto starts = writer.layer("starts", wgs84.get(), wkbPoint);
-    if (!starts) return Status::failure(starts.error());
-    if (Status status = createFields(writer, starts.value(), {{{"name", OFTString}, {"robot", OFTInteger}}}); !status) return status;
-    for (auto& start : features.value().starts) {
-        OGRFeature feature(starts.value()->GetLayerDefn());
-        feature.SetField("name", (robotName(start.robot) + " start").c_str());
-        feature.SetField("robot", start.robot);
-        feature.SetGeometryDirectly(start.geometry.release());
-        if (Status status = writer.add(starts.value(), feature); !status) return status;
-    }
-    if (!features.value().unreachable.empty()) {
-        auto unreachable = writer.layer("unreachable", wgs84.get(), wkbPolygon);
-        if (!unreachable) return Status::failure(unreachable.error());
-        if (Status status = createFields(writer, unreachable.value(), {{{"name", OFTString}, {"area_m2", OFTReal}}}); !status) {
-            return status;
-        }
-        for (auto& part : features.value().unreachable) {
-            OGRFeature feature(unreachable.value()->GetLayerDefn());
-            feature.SetField("name", "unreachable");
-            feature.SetField("area_m2", part.areaSquareMetres);
-            feature.SetGeometryDirectly(part.geometry.release());
-            if (Status status = writer.add(unreachable.value(), feature); !status) return status;
-        }
+    PlanFeatures& planFeatures = features.value();
+    if (Status status = writeRegionLayer(writer, planFeatures.regions, wgs84.get(), true); !status) return status;
+    if (Status status = writePathLayer(writer, planFeatures.paths, wgs84.get(), true); !status) return status;
+    if (Status status = writeStartLayer(writer, planFeatures.starts, wgs84.get(), true); !status) return status;
+    if (!planFeatures.unreachable.empty()) {
+        if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, wgs84.get(), true); !status) return status;
     }
     return writer.commit();
 }
