@@ -211,14 +211,20 @@ void PlanRenderer::paintUnreachable(QPainter& painter, const QTransform& worldTo
 void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
     const QuadTree& tree = plan_->quadTree;
     const int levels = std::max(tree.levels, 1);
+    // The top grid overhangs the raster's east and south edges; cells there hold nothing to show.
+    QRectF visible = deviceArea;
+    if (grid_ != nullptr)
+        visible = visible.intersected(deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY));
     std::vector<std::vector<QRectF>> rectanglesByLevel(static_cast<std::size_t>(levels) + 1);
     for (const QuadCell& cell : tree.cells) {
         if (cell.state == CellState::Auxiliary) continue; // leaves tile the area; parents add nothing
         const QRectF rectangle = deviceRectOf(worldToDevice, cell);
-        if (rectangle.width() < kSmallestOutlinedCellPixels || !rectangle.intersects(deviceArea)) continue;
+        if (rectangle.width() < kSmallestOutlinedCellPixels || !rectangle.intersects(visible)) continue;
         const auto level = static_cast<std::size_t>(std::clamp(cell.level, 1, levels));
         rectanglesByLevel[level].push_back(rectangle);
     }
+    painter.save();
+    painter.setClipRect(visible);
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setBrush(Qt::NoBrush);
     for (std::size_t level = 1; level < rectanglesByLevel.size(); ++level) {
@@ -230,6 +236,7 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
         painter.setPen(pen);
         painter.drawRects(rectangles.data(), static_cast<int>(rectangles.size()));
     }
+    painter.restore();
 }
 
 void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice) const {
