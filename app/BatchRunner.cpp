@@ -1,13 +1,13 @@
 #include "app/BatchRunner.hpp"
 
 #include "app/BatchFailure.hpp"
-#include "core/Planner.hpp"
-#include "core/PlanningError.hpp"
-#include "core/PlanningProblem.hpp"
-#include "core/ProgressReporter.hpp"
+#include "core/planners/Planner.hpp"
+#include "core/model/PlanningError.hpp"
+#include "core/model/PlanningProblem.hpp"
+#include "core/model/ProgressReporter.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/PlanExport.hpp"
-#include "ui/PlanImage.hpp"
+#include "render/PlanImage.hpp"
 
 #include <QSize>
 #include <QString>
@@ -337,7 +337,7 @@ void BatchRunner::writeOutputs(const Plan& plan) {
     outputs.push_back({"plan.png",
                        [&](const std::string& path) {
                            QString error;
-                           if (ui::writePlanPng(raster_.grid, classes_, plan, QString::fromStdString(path),
+                           if (render::writePlanPng(raster_.grid, classes_, plan, QString::fromStdString(path),
                                                 QSize(planImageSide, planImageSide), &error)) {
                                return io::Status();
                            }

@@ -2,8 +2,8 @@
 
 #include "app/CommandLineOptions.hpp"
 #include "app/ProgressPrinter.hpp"
-#include "core/ClassTable.hpp"
-#include "core/Plan.hpp"
+#include "core/model/ClassTable.hpp"
+#include "core/model/Plan.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/MapPoint.hpp"
+#include "core/model/MapPoint.hpp"
 
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 // Benchmarks of the MCPP-MLCT pipeline. Run: build/release/bench/mcpp_core_benchmarks
 // Counters: ratio = makespan / lower bound, cells = active cells, peak_rss_mb = process peak memory so far.
-#include "core/MlctPlanner.hpp"
+#include "core/planners/MlctPlanner.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <benchmark/benchmark.h>

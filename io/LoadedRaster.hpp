@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/ClassGrid.hpp"
+#include "core/model/ClassGrid.hpp"
 #include "io/GeoReference.hpp"
 
 #include <cstdint>

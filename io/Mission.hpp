@@ -1,8 +1,8 @@
 #pragma once
 
-#include "core/ClassTable.hpp"
-#include "core/MapPoint.hpp"
-#include "core/PlannerSettings.hpp"
+#include "core/model/ClassTable.hpp"
+#include "core/model/MapPoint.hpp"
+#include "core/planners/PlannerSettings.hpp"
 #include "io/GeoReference.hpp"
 #include "io/Result.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/ClassTable.hpp"
-#include "core/Plan.hpp"
+#include "core/model/ClassTable.hpp"
+#include "core/model/Plan.hpp"
 #include "io/GeoReference.hpp"
 #include "io/Mission.hpp"
 #include "io/Result.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/ClassTable.hpp"
+#include "core/model/ClassTable.hpp"
 
 #include <QString>
 #include <QUndoCommand>

@@ -28,8 +28,8 @@ QCheckBox* LayersPanel::addToggle(const QString& objectName, const QString& text
     return box;
 }
 
-MapLayers LayersPanel::layers() const {
-    MapLayers layers;
+render::MapLayers LayersPanel::layers() const {
+    render::MapLayers layers;
     layers.landCover = landCover_->isChecked();
     layers.quadTree = quadTree_->isChecked();
     layers.regions = regions_->isChecked();
@@ -39,7 +39,7 @@ MapLayers LayersPanel::layers() const {
     return layers;
 }
 
-void LayersPanel::setLayers(const MapLayers& layers) {
+void LayersPanel::setLayers(const render::MapLayers& layers) {
     const QSignalBlocker blockers[] = {QSignalBlocker(landCover_), QSignalBlocker(quadTree_), QSignalBlocker(regions_),
                                        QSignalBlocker(paths_), QSignalBlocker(starts_), QSignalBlocker(unreachable_)};
     landCover_->setChecked(layers.landCover);

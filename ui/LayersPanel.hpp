@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/MapLayers.hpp"
+#include "render/MapLayers.hpp"
 
 #include <QWidget>
 
@@ -14,11 +14,11 @@ class LayersPanel : public QWidget {
 
 public:
     explicit LayersPanel(QWidget* parent = nullptr);
-    [[nodiscard]] MapLayers layers() const;
-    void setLayers(const MapLayers& layers);
+    [[nodiscard]] render::MapLayers layers() const;
+    void setLayers(const render::MapLayers& layers);
 
 signals:
-    void layersChanged(const mcpp::ui::MapLayers& layers);
+    void layersChanged(const mcpp::render::MapLayers& layers);
 
 private:
     QCheckBox* addToggle(const QString& objectName, const QString& text, const QString& toolTip);

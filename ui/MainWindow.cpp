@@ -6,7 +6,7 @@
 #include "ui/ClassTableModel.hpp"
 #include "ui/LayersPanel.hpp"
 #include "ui/MapCanvas.hpp"
-#include "ui/PlanImage.hpp"
+#include "render/PlanImage.hpp"
 #include "ui/PlannerSettingsPanel.hpp"
 #include "ui/PlanningRunner.hpp"
 #include "ui/RecentFiles.hpp"
@@ -716,8 +716,8 @@ bool MainWindow::exportPlan(ExportFormat format, const QString& path) {
     case ExportFormat::Svg: {
         QString error;
         const bool ok = format == ExportFormat::Png
-                            ? writePlanPng(raster.grid, document_->classes(), *plan, path, QSize(3000, 3000), &error)
-                            : writePlanSvg(raster.grid, document_->classes(), *plan, path, QSize(1600, 1600), &error);
+                            ? render::writePlanPng(raster.grid, document_->classes(), *plan, path, QSize(3000, 3000), &error)
+                            : render::writePlanSvg(raster.grid, document_->classes(), *plan, path, QSize(1600, 1600), &error);
         if (!ok) status = io::Status::failure(error.toStdString());
         break;
     }

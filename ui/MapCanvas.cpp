@@ -67,7 +67,7 @@ void MapCanvas::setTool(Tool tool) {
     updateCursor(mapFromGlobal(QCursor::pos()));
 }
 
-void MapCanvas::setLayers(const MapLayers& layers) {
+void MapCanvas::setLayers(const render::MapLayers& layers) {
     renderer_.setLayers(layers);
     update();
 }

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "core/MapPoint.hpp"
-#include "ui/MapLayers.hpp"
-#include "ui/PlanRenderer.hpp"
+#include "core/model/MapPoint.hpp"
+#include "render/MapLayers.hpp"
+#include "render/PlanRenderer.hpp"
 
 #include <QPoint>
 #include <QPointF>
@@ -27,8 +27,8 @@ public:
 
     void setTool(Tool tool);
     [[nodiscard]] Tool tool() const { return tool_; }
-    void setLayers(const MapLayers& layers);
-    [[nodiscard]] const MapLayers& layers() const { return renderer_.layers(); }
+    void setLayers(const render::MapLayers& layers);
+    [[nodiscard]] const render::MapLayers& layers() const { return renderer_.layers(); }
     void setSelectedStart(int robot);
     [[nodiscard]] int selectedStart() const { return selectedStart_; }
 
@@ -76,7 +76,7 @@ private:
     void updateCursor(QPointF devicePoint);
 
     MissionDocument* document_;
-    PlanRenderer renderer_;
+    render::PlanRenderer renderer_;
     Tool tool_ = Tool::Pan;
     double scale_ = 1.0; // device pixels per metre
     MapPoint centre_;

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "core/ClassTable.hpp"
-#include "core/MapPoint.hpp"
-#include "core/Plan.hpp"
-#include "core/PlannerSettings.hpp"
+#include "core/model/ClassTable.hpp"
+#include "core/model/MapPoint.hpp"
+#include "core/model/Plan.hpp"
+#include "core/planners/PlannerSettings.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
 

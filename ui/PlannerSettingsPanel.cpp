@@ -1,6 +1,6 @@
 #include "ui/PlannerSettingsPanel.hpp"
 
-#include "core/Planner.hpp"
+#include "core/planners/Planner.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/PlannerSettings.hpp"
+#include "core/planners/PlannerSettings.hpp"
 
 #include <QWidget>
 

@@ -1,7 +1,7 @@
 #include "ui/PlanningRunner.hpp"
 
-#include "core/Planner.hpp"
-#include "core/PlanningError.hpp"
+#include "core/planners/Planner.hpp"
+#include "core/model/PlanningError.hpp"
 
 #include <QtConcurrent/QtConcurrentRun>
 

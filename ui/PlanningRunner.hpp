@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/Plan.hpp"
-#include "core/PlanningProblem.hpp"
+#include "core/model/Plan.hpp"
+#include "core/model/PlanningProblem.hpp"
 
 #include <QFutureWatcher>
 #include <QObject>

@@ -1,6 +1,6 @@
 #include "ui/ResultsPanel.hpp"
 
-#include "ui/RobotPalette.hpp"
+#include "render/RobotPalette.hpp"
 
 #include <QBarCategoryAxis>
 #include <QBarSet>
@@ -126,7 +126,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         const RobotMetrics& robot = metrics.robots[row];
         const QString name = robot.robot < names.size() ? names[robot.robot] : tr("Robot %1").arg(robot.robot + 1);
         auto* nameItem = new QTableWidgetItem(name);
-        nameItem->setData(Qt::DecorationRole, RobotPalette::colour(robot.robot));
+        nameItem->setData(Qt::DecorationRole, render::RobotPalette::colour(robot.robot));
         nameItem->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
         const int r = static_cast<int>(row);
         table_->setItem(r, 0, nameItem);
@@ -168,8 +168,8 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
         const int robot = robots[i].robot;
         categories << (robot < names.size() ? names[robot] : tr("Robot %1").arg(robot + 1));
         auto* set = new QBarSet(categories.back());
-        set->setColor(RobotPalette::colour(robot));
-        set->setBorderColor(RobotPalette::colour(robot).darker(130));
+        set->setColor(render::RobotPalette::colour(robot));
+        set->setBorderColor(render::RobotPalette::colour(robot).darker(130));
         for (std::size_t j = 0; j < robots.size(); ++j) *set << (j == i ? robots[i].timeSeconds / unitSeconds : 0.0);
         series->append(set);
         longestValue = std::max(longestValue, robots[i].timeSeconds / unitSeconds);

@@ -1,7 +1,7 @@
 #include "ui/RobotTableModel.hpp"
 
 #include "ui/MissionDocument.hpp"
-#include "ui/RobotPalette.hpp"
+#include "render/RobotPalette.hpp"
 #include "ui/RobotsEditCommand.hpp"
 
 #include <QUndoStack>
@@ -33,8 +33,8 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
         if (text) return QString::fromStdString(robot.name);
         break;
     case Colour:
-        if (role == Qt::DecorationRole) return RobotPalette::colour(index.row());
-        if (role == Qt::ToolTipRole) return RobotPalette::colour(index.row()).name();
+        if (role == Qt::DecorationRole) return render::RobotPalette::colour(index.row());
+        if (role == Qt::ToolTipRole) return render::RobotPalette::colour(index.row()).name();
         break;
     case Easting:
         if (text) return QString::number(robot.start.x, 'f', role == Qt::EditRole ? 3 : 1);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/LandCoverClass.hpp"
+#include "core/model/LandCoverClass.hpp"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/Plan.hpp"
+#include "core/model/Plan.hpp"
 #include "io/GeoReference.hpp"
 #include "io/Result.hpp"
 

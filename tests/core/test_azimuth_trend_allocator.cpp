@@ -1,7 +1,7 @@
-#include "core/AzimuthTrendAllocator.hpp"
-#include "core/MlctPlanner.hpp"
-#include "core/NeighbourTopologyBuilder.hpp"
-#include "core/QuadTreeBuilder.hpp"
+#include "core/allocation/AzimuthTrendAllocator.hpp"
+#include "core/planners/MlctPlanner.hpp"
+#include "core/decomposition/NeighbourTopologyBuilder.hpp"
+#include "core/decomposition/QuadTreeBuilder.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 

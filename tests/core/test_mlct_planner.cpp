@@ -1,5 +1,5 @@
-#include "core/MlctPlanner.hpp"
-#include "core/PlanningError.hpp"
+#include "core/planners/MlctPlanner.hpp"
+#include "core/model/PlanningError.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 

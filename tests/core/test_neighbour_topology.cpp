@@ -1,5 +1,5 @@
-#include "core/NeighbourTopologyBuilder.hpp"
-#include "core/QuadTreeBuilder.hpp"
+#include "core/decomposition/NeighbourTopologyBuilder.hpp"
+#include "core/decomposition/QuadTreeBuilder.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>

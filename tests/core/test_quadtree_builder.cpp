@@ -1,5 +1,5 @@
-#include "core/PlanningError.hpp"
-#include "core/QuadTreeBuilder.hpp"
+#include "core/model/PlanningError.hpp"
+#include "core/decomposition/QuadTreeBuilder.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>

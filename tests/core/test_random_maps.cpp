@@ -1,4 +1,4 @@
-#include "core/MlctPlanner.hpp"
+#include "core/planners/MlctPlanner.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 

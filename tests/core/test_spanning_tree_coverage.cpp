@@ -1,5 +1,5 @@
-#include "core/MlctPlanner.hpp"
-#include "core/SpanningTreeCoverage.hpp"
+#include "core/planners/MlctPlanner.hpp"
+#include "core/coverage/SpanningTreeCoverage.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 

@@ -7,7 +7,7 @@
 //   SW is active but unreachable (robotOfCell -1);
 //   top cell 1 is one active 20 m cell of robot 1.
 
-#include "core/Plan.hpp"
+#include "core/model/Plan.hpp"
 
 namespace mcpp::test {
 

@@ -1,6 +1,6 @@
 #include "tests/support/PlanInvariants.hpp"
 
-#include "core/RegionAllocator.hpp"
+#include "core/allocation/RegionAllocator.hpp"
 
 #include <cmath>
 #include <map>

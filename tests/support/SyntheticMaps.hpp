@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/PlanningProblem.hpp"
+#include "core/model/PlanningProblem.hpp"
 
 #include <cstdint>
 #include <vector>

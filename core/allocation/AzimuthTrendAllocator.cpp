@@ -1,0 +1,583 @@
+#include "core/allocation/AzimuthTrendAllocator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+namespace mcpp {
+namespace {
+
+constexpr int unassigned = -1;
+constexpr int unreachable = -2;
+
+struct RobotState {
+    double cost = 0.0;
+    double sumX = 0.0; // area-weighted, for the region centre Ca
+    double sumY = 0.0;
+    double area = 0.0;
+    int cells = 0;
+    int cellsAtLastRekey = 1;
+    bool finished = false;
+    int startCell = -1;
+    // Frontier of unassigned cells keyed by cost_un at push time (lazy: stale entries are skipped).
+    std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> frontier;
+    std::vector<int> foreignBorder; // cells of other robots seen next to this region
+    double centreX() const { return sumX / area; }
+    double centreY() const { return sumY / area; }
+};
+
+class Allocation {
+public:
+    Allocation(const QuadTree& tree, const NeighbourTopology& topology, const std::vector<int>& startCells,
+               const ProgressReporter& progress)
+        : topology_(topology), progress_(progress), cellCount_(static_cast<int>(tree.activeCount())),
+          owner_(static_cast<std::size_t>(cellCount_), unreachable), cost_(static_cast<std::size_t>(cellCount_)),
+          x_(static_cast<std::size_t>(cellCount_)), y_(static_cast<std::size_t>(cellCount_)),
+          area_(static_cast<std::size_t>(cellCount_)), visitStamp_(static_cast<std::size_t>(cellCount_), 0),
+          robots_(startCells.size()) {
+        for (int cell = 0; cell < cellCount_; ++cell) {
+            const QuadCell& quadCell = tree.active(cell);
+            cost_[static_cast<std::size_t>(cell)] = cellCostSeconds(quadCell);
+            x_[static_cast<std::size_t>(cell)] = quadCell.centreX();
+            y_[static_cast<std::size_t>(cell)] = quadCell.centreY();
+            area_[static_cast<std::size_t>(cell)] = quadCell.size * quadCell.size;
+        }
+        // Cells in no start's component are unreachable from the outset and never considered.
+        std::vector<int> queue(startCells.begin(), startCells.end());
+        for (int start : startCells) owner_[static_cast<std::size_t>(start)] = unassigned;
+        for (std::size_t head = 0; head < queue.size(); ++head) {
+            for (int neighbour : topology.of(queue[head])) {
+                if (owner_[static_cast<std::size_t>(neighbour)] == unreachable) {
+                    owner_[static_cast<std::size_t>(neighbour)] = unassigned;
+                    queue.push_back(neighbour);
+                }
+            }
+        }
+        for (int cell = 0; cell < cellCount_; ++cell) {
+            if (owner_[static_cast<std::size_t>(cell)] == unassigned) {
+                ++unassignedCount_;
+                unassignedX_ += x_[static_cast<std::size_t>(cell)] * area_[static_cast<std::size_t>(cell)];
+                unassignedY_ += y_[static_cast<std::size_t>(cell)] * area_[static_cast<std::size_t>(cell)];
+                unassignedArea_ += area_[static_cast<std::size_t>(cell)];
+            }
+        }
+        reachableCount_ = unassignedCount_;
+        for (std::size_t robot = 0; robot < robots_.size(); ++robot) {
+            robots_[robot].startCell = startCells[robot];
+            give(startCells[robot], static_cast<int>(robot));
+        }
+        for (std::size_t robot = 0; robot < robots_.size(); ++robot) pushNeighbours(static_cast<int>(robot), startCells[robot]);
+    }
+
+    void grow() {
+        const auto robotCount = static_cast<int>(robots_.size());
+        int steps = 0;
+        std::int64_t stealBudget = 4LL * cellCount_ + 1000;
+        const int retryInterval = std::max(64, reachableCount_ / (8 * robotCount));
+        while (unassignedCount_ > 0) {
+            if ((++steps & 4095) == 0) {
+                progress_.throwIfCancelled();
+                progress_.report("allocation", 0.8 * (1.0 - static_cast<double>(unassignedCount_) / reachableCount_));
+            }
+            // A robot that found nothing to take may find a richer neighbour later: wake the stuck ones now and then.
+            if (steps % retryInterval == 0)
+                for (auto& state : robots_) state.finished = false;
+            int robot = -1;
+            for (int candidate = 0; candidate < robotCount; ++candidate) {
+                const RobotState& state = robots_[static_cast<std::size_t>(candidate)];
+                if (!state.finished && (robot < 0 || state.cost < robots_[static_cast<std::size_t>(robot)].cost)) robot = candidate;
+            }
+            if (robot < 0) break;
+            RobotState& state = robots_[static_cast<std::size_t>(robot)];
+            if (state.cells >= 2 * state.cellsAtLastRekey) rekey(robot);
+            const int cell = popUnassignedCandidate(robot);
+            if (cell >= 0) {
+                give(cell, robot);
+                pushNeighbours(robot, cell);
+                continue;
+            }
+            if (stealBudget > 0 && stealFromNeighbour(robot)) {
+                --stealBudget;
+                continue;
+            }
+            state.finished = true;
+        }
+    }
+
+    // Moves cells along chains of adjacent regions from the most loaded robot while the maximum falls.
+    int rebalance(int iterationCap) {
+        const auto robotCount = static_cast<int>(robots_.size());
+        if (robotCount < 2) return 0;
+        buildBoundaries();
+        int moves = 0;
+        while (moves < iterationCap) {
+            if ((moves & 255) == 0) progress_.throwIfCancelled();
+            int richest = 0;
+            for (int robot = 1; robot < robotCount; ++robot)
+                if (robots_[static_cast<std::size_t>(robot)].cost > robots_[static_cast<std::size_t>(richest)].cost) richest = robot;
+            // Among regions tied at the maximum, keep draining the one whose chain worked last.
+            if (!lastChain_.empty() &&
+                robots_[static_cast<std::size_t>(lastChain_.front())].cost >= robots_[static_cast<std::size_t>(richest)].cost - 1e-9)
+                richest = lastChain_.front();
+            if (!moveAlongAChain(richest)) break;
+            ++moves;
+        }
+        return moves;
+    }
+
+    RegionAllocation result() const {
+        RegionAllocation allocation;
+        allocation.robotOfCell.resize(static_cast<std::size_t>(cellCount_));
+        for (int cell = 0; cell < cellCount_; ++cell) {
+            const int owner = owner_[static_cast<std::size_t>(cell)];
+            allocation.robotOfCell[static_cast<std::size_t>(cell)] = owner >= 0 ? owner : -1;
+        }
+        for (const auto& robot : robots_) {
+            allocation.startCell.push_back(robot.startCell);
+            allocation.costSeconds.push_back(robot.cost);
+        }
+        return allocation;
+    }
+
+private:
+    double distance(int cell, double x, double y) const {
+        const double dx = x_[static_cast<std::size_t>(cell)] - x;
+        const double dy = y_[static_cast<std::size_t>(cell)] - y;
+        return std::sqrt(dx * dx + dy * dy); // std::hypot guards overflow we cannot meet, at several times the cost
+    }
+
+    // cost_un: distance to the robot's own centre minus the mean distance to the other centres.
+    double growthKey(int robot, int cell) const {
+        const auto& own = robots_[static_cast<std::size_t>(robot)];
+        double key = distance(cell, own.centreX(), own.centreY());
+        if (robots_.size() > 1) {
+            double others = 0.0;
+            for (std::size_t other = 0; other < robots_.size(); ++other) {
+                if (static_cast<int>(other) == robot) continue;
+                others += distance(cell, robots_[other].centreX(), robots_[other].centreY());
+            }
+            key -= others / static_cast<double>(robots_.size() - 1);
+        }
+        return key;
+    }
+
+    bool touchesRegion(int cell, int robot) const {
+        for (int neighbour : topology_.of(cell))
+            if (owner_[static_cast<std::size_t>(neighbour)] == robot) return true;
+        return false;
+    }
+
+    void give(int cell, int robot) {
+        const int previous = owner_[static_cast<std::size_t>(cell)];
+        const double area = area_[static_cast<std::size_t>(cell)];
+        const double x = x_[static_cast<std::size_t>(cell)] * area;
+        const double y = y_[static_cast<std::size_t>(cell)] * area;
+        if (previous == unassigned) {
+            --unassignedCount_;
+            unassignedX_ -= x;
+            unassignedY_ -= y;
+            unassignedArea_ -= area;
+        } else if (previous >= 0) {
+            RobotState& donor = robots_[static_cast<std::size_t>(previous)];
+            donor.cost -= cost_[static_cast<std::size_t>(cell)];
+            donor.sumX -= x;
+            donor.sumY -= y;
+            donor.area -= area;
+            --donor.cells;
+        }
+        RobotState& receiver = robots_[static_cast<std::size_t>(robot)];
+        receiver.cost += cost_[static_cast<std::size_t>(cell)];
+        receiver.sumX += x;
+        receiver.sumY += y;
+        receiver.area += area;
+        ++receiver.cells;
+        owner_[static_cast<std::size_t>(cell)] = robot;
+        if (!boundaryIndex_.empty()) updateBoundaryAround(cell);
+    }
+
+    void pushNeighbours(int robot, int cell) {
+        RobotState& state = robots_[static_cast<std::size_t>(robot)];
+        for (int neighbour : topology_.of(cell)) {
+            const int owner = owner_[static_cast<std::size_t>(neighbour)];
+            if (owner == unassigned) {
+                state.frontier.emplace(growthKey(robot, neighbour), neighbour);
+            } else if (owner >= 0 && owner != robot) {
+                state.foreignBorder.push_back(neighbour);
+                robots_[static_cast<std::size_t>(owner)].foreignBorder.push_back(cell);
+            }
+        }
+    }
+
+    // Recomputes the frontier's keys once the region has doubled, since its centre has moved.
+    void rekey(int robot) {
+        RobotState& state = robots_[static_cast<std::size_t>(robot)];
+        std::vector<int> cells;
+        while (!state.frontier.empty()) {
+            cells.push_back(state.frontier.top().second);
+            state.frontier.pop();
+        }
+        std::sort(cells.begin(), cells.end());
+        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+        for (int cell : cells)
+            if (owner_[static_cast<std::size_t>(cell)] == unassigned) state.frontier.emplace(growthKey(robot, cell), cell);
+        state.cellsAtLastRekey = state.cells;
+    }
+
+    int popUnassignedCandidate(int robot) {
+        RobotState& state = robots_[static_cast<std::size_t>(robot)];
+        while (!state.frontier.empty()) {
+            const int cell = state.frontier.top().second;
+            state.frontier.pop();
+            const int owner = owner_[static_cast<std::size_t>(cell)];
+            if (owner == unassigned) {
+                // A cell taken from this robot may have cut it off from an old frontier entry.
+                if (touchesRegion(cell, robot)) return cell;
+            } else if (owner >= 0 && owner != robot) {
+                state.foreignBorder.push_back(cell);
+            }
+        }
+        return -1;
+    }
+
+    // True when taking `cell` out of its owner's region surely leaves that region connected: its neighbours
+    // in the region must meet again within a small search around it. A region that only reconnects
+    // through a long loop is treated as cut, which keeps the check cheap and never breaks a region.
+    static constexpr std::size_t localSearch = 24;
+    static constexpr std::size_t wideSearch = 256;
+
+    bool removalKeepsConnected(int cell, std::size_t searchLimit = wideSearch) {
+        const int owner = owner_[static_cast<std::size_t>(cell)];
+        std::vector<int>& sameOwner = scratchNeighbours_;
+        sameOwner.clear();
+        for (int neighbour : topology_.of(cell))
+            if (owner_[static_cast<std::size_t>(neighbour)] == owner) sameOwner.push_back(neighbour);
+        if (sameOwner.size() <= 1) return !sameOwner.empty() || robots_[static_cast<std::size_t>(owner)].cells > 1;
+        ++stamp_;
+        visitStamp_[static_cast<std::size_t>(cell)] = stamp_;
+        std::vector<int>& queue = scratchQueue_;
+        queue.assign(1, sameOwner.front());
+        visitStamp_[static_cast<std::size_t>(sameOwner.front())] = stamp_;
+        std::size_t found = 1;
+        for (std::size_t head = 0; head < queue.size() && found < sameOwner.size() && queue.size() < searchLimit; ++head) {
+            for (int neighbour : topology_.of(queue[head])) {
+                if (owner_[static_cast<std::size_t>(neighbour)] != owner || visitStamp_[static_cast<std::size_t>(neighbour)] == stamp_)
+                    continue;
+                visitStamp_[static_cast<std::size_t>(neighbour)] = stamp_;
+                if (std::find(sameOwner.begin(), sameOwner.end(), neighbour) != sameOwner.end()) ++found;
+                queue.push_back(neighbour);
+            }
+        }
+        return found == sameOwner.size();
+    }
+
+    // The first of `cells` (at most `maxTries` of them) whose removal surely keeps its region connected:
+    // a cheap look around each first, the wide search only when none passes it.
+    int firstRemovable(const std::vector<int>& cells, int maxTries) {
+        for (std::size_t limit : {localSearch, wideSearch}) {
+            int tried = 0;
+            for (int cell : cells) {
+                if (removalKeepsConnected(cell, limit)) return cell;
+                if (++tried >= maxTries) break;
+            }
+        }
+        return -1;
+    }
+
+    // A stuck robot takes a border cell of a neighbour when that lowers the larger of the two costs:
+    // first cells on the side facing the still unassigned area (nu), then the rest (fu), nearest first.
+    bool stealFromNeighbour(int robot) {
+        RobotState& state = robots_[static_cast<std::size_t>(robot)];
+        auto& border = state.foreignBorder;
+        std::sort(border.begin(), border.end());
+        border.erase(std::unique(border.begin(), border.end()), border.end());
+        const double centreX = state.centreX();
+        const double centreY = state.centreY();
+        const double towardsX = unassignedArea_ > 0 ? unassignedX_ / unassignedArea_ - centreX : 0.0;
+        const double towardsY = unassignedArea_ > 0 ? unassignedY_ / unassignedArea_ - centreY : 0.0;
+        struct Candidate {
+            bool facingUnassigned;
+            double distance;
+            int cell;
+        };
+        std::vector<Candidate> candidates;
+        std::size_t kept = 0;
+        for (int cell : border) {
+            const int owner = owner_[static_cast<std::size_t>(cell)];
+            if (owner < 0 || owner == robot || !touchesRegion(cell, robot)) continue;
+            border[kept++] = cell;
+            const RobotState& donor = robots_[static_cast<std::size_t>(owner)];
+            if (cell == donor.startCell) continue;
+            if (!(state.cost + cost_[static_cast<std::size_t>(cell)] < donor.cost - 1e-9)) continue;
+            const double dx = x_[static_cast<std::size_t>(cell)] - centreX;
+            const double dy = y_[static_cast<std::size_t>(cell)] - centreY;
+            candidates.push_back({dx * towardsX + dy * towardsY >= 0.0, std::sqrt(dx * dx + dy * dy), cell});
+        }
+        border.resize(kept);
+        std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+            if (a.facingUnassigned != b.facingUnassigned) return a.facingUnassigned;
+            if (a.distance != b.distance) return a.distance < b.distance;
+            return a.cell < b.cell;
+        });
+        std::vector<int>& ordered = scratchCells_;
+        ordered.clear();
+        for (const auto& candidate : candidates) ordered.push_back(candidate.cell);
+        const int chosen = firstRemovable(ordered, 32);
+        if (chosen >= 0) {
+            const int donor = owner_[static_cast<std::size_t>(chosen)];
+            give(chosen, robot);
+            pushNeighbours(robot, chosen);
+            robots_[static_cast<std::size_t>(donor)].finished = false;
+            // The donor may now reach cells again through its remaining border.
+            for (int neighbour : topology_.of(chosen))
+                if (owner_[static_cast<std::size_t>(neighbour)] == donor) pushNeighbours(donor, neighbour);
+            return true;
+        }
+        return false;
+    }
+
+    // Boundary cells of each region (a neighbour belongs to another robot), kept up to date on every move.
+    void buildBoundaries() {
+        boundaryIndex_.assign(static_cast<std::size_t>(cellCount_), -1);
+        boundaryOwner_.assign(static_cast<std::size_t>(cellCount_), -1);
+        boundaries_.assign(robots_.size(), {});
+        regionContacts_.assign(robots_.size() * robots_.size(), 0);
+        handOverKnown_.assign(robots_.size() * robots_.size(), 0);
+        handOverPossible_.assign(robots_.size() * robots_.size(), 0);
+        for (int cell = 0; cell < cellCount_; ++cell) {
+            const int owner = owner_[static_cast<std::size_t>(cell)];
+            if (owner < 0) continue;
+            for (int neighbour : topology_.of(cell)) {
+                const int other = owner_[static_cast<std::size_t>(neighbour)];
+                if (other >= 0 && other != owner) ++regionContacts_[static_cast<std::size_t>(owner) * robots_.size() + static_cast<std::size_t>(other)];
+            }
+            refreshBoundary(cell);
+        }
+    }
+
+    void refreshBoundary(int cell) {
+        const int owner = owner_[static_cast<std::size_t>(cell)];
+        bool onBoundary = false;
+        if (owner >= 0) {
+            for (int neighbour : topology_.of(cell)) {
+                const int other = owner_[static_cast<std::size_t>(neighbour)];
+                if (other >= 0 && other != owner) {
+                    onBoundary = true;
+                    break;
+                }
+            }
+        }
+        int& index = boundaryIndex_[static_cast<std::size_t>(cell)];
+        if (index >= 0) {
+            // Remove from the list that holds it: its owner may have changed since it was added.
+            auto& list = boundaries_[static_cast<std::size_t>(boundaryOwner_[static_cast<std::size_t>(cell)])];
+            const int last = list.back();
+            list[static_cast<std::size_t>(index)] = last;
+            boundaryIndex_[static_cast<std::size_t>(last)] = index;
+            list.pop_back();
+            index = -1;
+        }
+        if (onBoundary) {
+            auto& list = boundaries_[static_cast<std::size_t>(owner)];
+            index = static_cast<int>(list.size());
+            list.push_back(cell);
+            boundaryOwner_[static_cast<std::size_t>(cell)] = owner;
+        }
+    }
+
+    void updateBoundaryAround(int cell) {
+        refreshBoundary(cell);
+        for (int neighbour : topology_.of(cell)) refreshBoundary(neighbour);
+    }
+
+    // Contact counts between regions change only when a cell changes owner.
+    void moveCell(int cell, int to) {
+        const int from = owner_[static_cast<std::size_t>(cell)];
+        forgetHandOvers(from);
+        forgetHandOvers(to);
+        const std::size_t n = robots_.size();
+        for (int neighbour : topology_.of(cell)) {
+            const int other = owner_[static_cast<std::size_t>(neighbour)];
+            if (other < 0) continue;
+            if (other != from) {
+                --regionContacts_[static_cast<std::size_t>(from) * n + static_cast<std::size_t>(other)];
+                --regionContacts_[static_cast<std::size_t>(other) * n + static_cast<std::size_t>(from)];
+            }
+            if (other != to) {
+                ++regionContacts_[static_cast<std::size_t>(to) * n + static_cast<std::size_t>(other)];
+                ++regionContacts_[static_cast<std::size_t>(other) * n + static_cast<std::size_t>(to)];
+            }
+        }
+        give(cell, to);
+    }
+
+    // The best cell `from` can hand to `to`: on their common border, not the start, keeping `from` connected,
+    // and leaving the receiver below `receiverCostLimit`.
+    int cellToHandOver(int from, int to, double receiverCostLimit) {
+        const RobotState& donor = robots_[static_cast<std::size_t>(from)];
+        const RobotState& receiver = robots_[static_cast<std::size_t>(to)];
+        std::vector<std::pair<double, int>>& candidates = scratchCandidates_;
+        candidates.clear();
+        for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
+            if (cell == donor.startCell || !touchesRegion(cell, to)) continue;
+            if (!(receiver.cost + cost_[static_cast<std::size_t>(cell)] < receiverCostLimit)) continue;
+            const double score = distance(cell, receiver.centreX(), receiver.centreY()) -
+                                 distance(cell, donor.centreX(), donor.centreY());
+            candidates.emplace_back(score, cell);
+        }
+        std::sort(candidates.begin(), candidates.end());
+        std::vector<int>& ordered = scratchCells_;
+        ordered.clear();
+        for (const auto& candidate : candidates) ordered.push_back(candidate.second);
+        return firstRemovable(ordered, 64);
+    }
+
+    // Whether `from` has any border cell it could hand to `to`, remembered until either region changes.
+    bool canHandOver(int from, int to) {
+        const std::size_t key = static_cast<std::size_t>(from) * robots_.size() + static_cast<std::size_t>(to);
+        if (handOverKnown_[key] == 0) {
+            handOverPossible_[key] = searchHandOver(from, to) ? 1 : 0;
+            handOverKnown_[key] = 1;
+        }
+        return handOverPossible_[key] != 0;
+    }
+
+    void forgetHandOvers(int region) {
+        const std::size_t n = robots_.size();
+        for (std::size_t other = 0; other < n; ++other) {
+            handOverKnown_[static_cast<std::size_t>(region) * n + other] = 0;
+            handOverKnown_[other * n + static_cast<std::size_t>(region)] = 0;
+        }
+    }
+
+    bool searchHandOver(int from, int to) {
+        const RobotState& donor = robots_[static_cast<std::size_t>(from)];
+        std::vector<int>& facing = scratchCells_;
+        facing.clear();
+        for (int cell : boundaries_[static_cast<std::size_t>(from)])
+            if (cell != donor.startCell && touchesRegion(cell, to)) facing.push_back(cell);
+        return firstRemovable(facing, 64) >= 0;
+    }
+
+    // Finds regions the richest can pass a cell to, directly or through a chain of regions each able to
+    // hand a border cell to the next, and moves one cell along the chain to the poorest such region.
+    bool moveAlongAChain(int richest) {
+        const std::size_t n = robots_.size();
+        const double ceiling = robots_[static_cast<std::size_t>(richest)].cost;
+        // The chain that worked last time usually works again: try it before searching.
+        if (!lastChain_.empty() && lastChain_.front() == richest &&
+            robots_[static_cast<std::size_t>(lastChain_.back())].cost < ceiling - 1e-9 && tryChain(lastChain_))
+            return true;
+        std::vector<int> parent(n, -2);
+        std::vector<int> order{richest};
+        parent[static_cast<std::size_t>(richest)] = -1;
+        for (std::size_t head = 0; head < order.size(); ++head) {
+            const int region = order[head];
+            for (std::size_t other = 0; other < n; ++other) {
+                if (parent[other] != -2 || regionContacts_[static_cast<std::size_t>(region) * n + other] == 0) continue;
+                if (!canHandOver(region, static_cast<int>(other))) continue;
+                parent[other] = region;
+                order.push_back(static_cast<int>(other));
+            }
+        }
+        std::vector<int> targets(order.begin() + 1, order.end());
+        std::stable_sort(targets.begin(), targets.end(), [&](int a, int b) {
+            return robots_[static_cast<std::size_t>(a)].cost < robots_[static_cast<std::size_t>(b)].cost;
+        });
+        int attempts = 0;
+        for (int target : targets) {
+            if (robots_[static_cast<std::size_t>(target)].cost >= ceiling - 1e-9 || ++attempts > 12) break;
+            std::vector<int> chain{target};
+            while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
+            std::reverse(chain.begin(), chain.end()); // richest ... target
+            if (tryChain(chain)) {
+                lastChain_ = chain;
+                return true;
+            }
+        }
+        lastChain_.clear();
+        return false;
+    }
+
+    // Moves one cell along richest -> ... -> target; keeps the moves only when they help.
+    bool tryChain(const std::vector<int>& chain) {
+        const int richest = chain.front();
+        const double ceiling = robots_[static_cast<std::size_t>(richest)].cost;
+        std::vector<double> before;
+        for (int region : chain) before.push_back(robots_[static_cast<std::size_t>(region)].cost);
+        // Hand over from the target's end backwards, so every region keeps cells to give.
+        std::vector<std::pair<int, int>> done; // cell, previous owner
+        bool ok = true;
+        for (std::size_t hop = chain.size() - 1; hop >= 1; --hop) {
+            const int from = chain[hop - 1];
+            const int to = chain[hop];
+            // A region inside the chain may also sit at the maximum: it passes cells on without gaining.
+            const double limit = hop + 1 < chain.size() ? std::max(ceiling, before[hop]) + 1e-9 : ceiling - 1e-9;
+            const int cell = cellToHandOver(from, to, limit);
+            if (cell < 0) {
+                ok = false;
+                break;
+            }
+            done.emplace_back(cell, from);
+            moveCell(cell, to);
+        }
+        // Accept when the richest falls and no other region rises to the old maximum: the sorted costs
+        // then fall lexicographically, so the loop ends.
+        bool improves = ok && robots_[static_cast<std::size_t>(richest)].cost < ceiling - 1e-9;
+        for (std::size_t i = 1; improves && i < chain.size(); ++i) {
+            const double now = robots_[static_cast<std::size_t>(chain[i])].cost;
+            improves = now < ceiling - 1e-9 || now <= before[i] + 1e-9;
+        }
+        if (improves) return true;
+        for (auto it = done.rbegin(); it != done.rend(); ++it) moveCell(it->first, it->second);
+        return false;
+    }
+
+    const NeighbourTopology& topology_;
+    const ProgressReporter& progress_;
+    int cellCount_;
+    std::vector<int> owner_;
+    std::vector<double> cost_;
+    std::vector<double> x_;
+    std::vector<double> y_;
+    std::vector<double> area_;
+    std::vector<int> visitStamp_;
+    int stamp_ = 0;
+    std::vector<RobotState> robots_;
+    int unassignedCount_ = 0;
+    int reachableCount_ = 0;
+    double unassignedX_ = 0.0;
+    double unassignedY_ = 0.0;
+    double unassignedArea_ = 0.0;
+    std::vector<int> scratchNeighbours_;
+    std::vector<int> scratchQueue_;
+    std::vector<int> boundaryIndex_;
+    std::vector<int> boundaryOwner_;
+    std::vector<std::vector<int>> boundaries_;
+    std::vector<int> regionContacts_;
+    std::vector<int> lastChain_;
+    std::vector<std::pair<double, int>> scratchCandidates_;
+    std::vector<int> scratchCells_;
+    std::vector<char> handOverKnown_;
+    std::vector<char> handOverPossible_;
+};
+
+} // namespace
+
+RegionAllocation AzimuthTrendAllocator::allocate(const QuadTree& tree, const NeighbourTopology& topology,
+                                                 const std::vector<int>& startCells, const PlannerSettings& settings,
+                                                 const ProgressReporter& progress) const {
+    progress.report("allocation", 0.0);
+    Allocation allocation(tree, topology, startCells, progress);
+    allocation.grow();
+    progress.report("allocation", 0.8);
+    const int cap = settings.rebalanceIterations > 0 ? settings.rebalanceIterations
+                                                     : std::max(1000, static_cast<int>(tree.activeCount()));
+    const int moves = allocation.rebalance(cap);
+    RegionAllocation result = allocation.result();
+    result.rebalanceMoves = moves;
+    progress.report("allocation", 1.0);
+    return result;
+}
+
+} // namespace mcpp

@@ -1,0 +1,16 @@
+#pragma once
+
+#include "core/model/NeighbourTopology.hpp"
+#include "core/decomposition/QuadTree.hpp"
+
+namespace mcpp {
+
+// Finds, for every active cell, the active cells sharing a border of positive length with it, at any level.
+// Same-level positions are looked up in per-level index grids; larger neighbours are found by climbing
+// to the ancestor that exists, smaller ones by descending the facing children. O(cells) overall.
+class NeighbourTopologyBuilder {
+public:
+    [[nodiscard]] NeighbourTopology build(const QuadTree& tree) const;
+};
+
+} // namespace mcpp

@@ -1,0 +1,19 @@
+#pragma once
+
+#include "core/model/ClassGrid.hpp"
+#include "core/model/ClassTable.hpp"
+#include "core/model/MapPoint.hpp"
+#include "core/planners/PlannerSettings.hpp"
+
+#include <vector>
+
+namespace mcpp {
+
+struct PlanningProblem {
+    ClassGrid grid;
+    ClassTable classes;
+    std::vector<MapPoint> starts; // one per robot, in the grid's frame
+    PlannerSettings settings;
+};
+
+} // namespace mcpp

@@ -1,0 +1,17 @@
+#pragma once
+
+namespace mcpp::render {
+
+// Which parts of a plan are drawn. Shared by the batch image writer and the GUI layers panel.
+struct MapLayers {
+    bool landCover = true;
+    bool quadTree = true;
+    bool regions = true;
+    bool paths = true;
+    bool starts = true;
+    bool unreachable = true;
+
+    friend bool operator==(const MapLayers&, const MapLayers&) = default;
+};
+
+} // namespace mcpp::render

@@ -1,0 +1,112 @@
+#include "render/PlanImage.hpp"
+
+#include "render/PlanRenderer.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QPainter>
+#include <QSaveFile>
+#include <QSvgGenerator>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcpp::render {
+
+namespace {
+
+QSize fittedSize(const ClassGrid& grid, QSize maxSize) {
+    const double width = std::max(grid.width(), 1e-9);
+    const double height = std::max(grid.height(), 1e-9);
+    const double scale = std::min(maxSize.width() / width, maxSize.height() / height);
+    return {std::max(1, static_cast<int>(std::lround(width * scale))), std::max(1, static_cast<int>(std::lround(height * scale)))};
+}
+
+void setError(QString* error, const QString& message) {
+    if (error != nullptr) *error = message;
+}
+
+bool checkInputs(const ClassGrid& grid, QSize maxSize, const QString& path, QString* error) {
+    if (grid.columns <= 0 || grid.rows <= 0) {
+        setError(error, QStringLiteral("cannot draw %1: the raster is empty").arg(path));
+        return false;
+    }
+    if (maxSize.width() <= 0 || maxSize.height() <= 0) {
+        setError(error, QStringLiteral("cannot draw %1: image size %2x%3 is not positive").arg(path).arg(maxSize.width()).arg(maxSize.height()));
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan, QSize maxSize, const MapLayers& layers) {
+    if (grid.columns <= 0 || grid.rows <= 0 || maxSize.width() <= 0 || maxSize.height() <= 0) return {};
+    const QSize size = fittedSize(grid, maxSize);
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+
+    PlanRenderer renderer;
+    renderer.setMap(&grid, &classes);
+    renderer.setPlan(plan);
+    renderer.setLayers(layers);
+    QPainter painter(&image);
+    renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)), QRectF(QPointF(0, 0), QSizeF(size)));
+    painter.end();
+    return image;
+}
+
+bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path, QSize maxSize,
+                  QString* error) {
+    if (!checkInputs(grid, maxSize, path, error)) return false;
+    const QImage image = renderPlanImage(grid, classes, &plan, maxSize);
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        setError(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+        return false;
+    }
+    if (!image.save(&file, "PNG") || !file.commit()) {
+        setError(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+        return false;
+    }
+    return true;
+}
+
+bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path, QSize maxSize,
+                  QString* error) {
+    if (!checkInputs(grid, maxSize, path, error)) return false;
+    const QFileInfo info(path);
+    if (!info.absoluteDir().exists()) {
+        setError(error, QStringLiteral("cannot write %1: folder %2 does not exist").arg(path, info.absolutePath()));
+        return false;
+    }
+    const QSize size = fittedSize(grid, maxSize);
+    QSvgGenerator generator;
+    generator.setFileName(path);
+    generator.setSize(size);
+    generator.setViewBox(QRect(QPoint(0, 0), size));
+    generator.setTitle(QStringLiteral("mcpp coverage plan"));
+    generator.setDescription(QString::fromStdString("Planner: " + plan.planner));
+
+    PlanRenderer renderer;
+    renderer.setMap(&grid, &classes);
+    renderer.setPlan(&plan);
+    QPainter painter;
+    if (!painter.begin(&generator)) {
+        setError(error, QStringLiteral("cannot write %1: the file could not be opened").arg(path));
+        return false;
+    }
+    painter.fillRect(QRect(QPoint(0, 0), size), Qt::white);
+    renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)), QRectF(QPointF(0, 0), QSizeF(size)));
+    if (!painter.end()) {
+        setError(error, QStringLiteral("cannot write %1: drawing failed").arg(path));
+        return false;
+    }
+    if (!QFileInfo::exists(path)) {
+        setError(error, QStringLiteral("cannot write %1: the file was not created").arg(path));
+        return false;
+    }
+    return true;
+}
+
+} // namespace mcpp::render

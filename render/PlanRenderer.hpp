@@ -1,0 +1,69 @@
+#pragma once
+
+#include "core/model/ClassGrid.hpp"
+#include "core/model/ClassTable.hpp"
+#include "core/model/MapPoint.hpp"
+#include "core/model/Plan.hpp"
+#include "render/MapLayers.hpp"
+
+#include <QImage>
+#include <QRectF>
+#include <QSizeF>
+#include <QTransform>
+
+#include <vector>
+
+class QPainter;
+
+namespace mcpp::render {
+
+// Paints a land-cover map and a plan over it with any QPainter (widget, image, SVG) through a
+// world-to-device transform, so the GUI canvas and headless batch mode draw the same picture.
+// The grid, class table and plan are borrowed: they must outlive the renderer or be replaced first.
+class PlanRenderer {
+public:
+    // Rebuilds the cached land-cover image; call again when the class colours change.
+    void setMap(const ClassGrid* grid, const ClassTable* classes);
+    void setPlan(const Plan* plan);
+    // Start points to draw; when empty the first waypoint of each path is used.
+    void setStarts(std::vector<MapPoint> starts);
+    void setLayers(const MapLayers& layers) { layers_ = layers; }
+    // A plan that no longer matches the inputs is drawn faded.
+    void setPlanStale(bool stale) { planStale_ = stale; }
+    // The start drawn with a selection ring, -1 for none.
+    void setSelectedStart(int robot) { selectedStart_ = robot; }
+
+    [[nodiscard]] const MapLayers& layers() const { return layers_; }
+    [[nodiscard]] const QImage& landCoverImage() const { return landCoverImage_; }
+    [[nodiscard]] const ClassGrid* grid() const { return grid_; }
+    [[nodiscard]] const Plan* plan() const { return plan_; }
+
+    // Draws everything visible inside deviceArea (device pixels). worldToDevice must be an axis-aligned
+    // scale with y flipped (map north up) plus a translation.
+    void paint(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+
+    // The transform that fits the grid into a device area of `size`, centred, keeping aspect.
+    [[nodiscard]] static QTransform fitTransform(const ClassGrid& grid, const QSizeF& size, double margin = 0.0);
+    // The colour a raster value is drawn in.
+    [[nodiscard]] static QRgb classColour(const ClassTable& classes, std::int32_t value);
+
+private:
+    void paintLandCover(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintRegions(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintRegionBorders(QPainter& painter, const QTransform& worldToDevice) const;
+    void paintUnreachable(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintQuadTree(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintPaths(QPainter& painter, const QTransform& worldToDevice) const;
+    void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
+
+    const ClassGrid* grid_ = nullptr;
+    const ClassTable* classes_ = nullptr;
+    const Plan* plan_ = nullptr;
+    std::vector<MapPoint> starts_;
+    MapLayers layers_;
+    QImage landCoverImage_;
+    bool planStale_ = false;
+    int selectedStart_ = -1;
+};
+
+} // namespace mcpp::render

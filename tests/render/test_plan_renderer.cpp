@@ -1,0 +1,158 @@
+#include "render/PlanImage.hpp"
+#include "render/PlanRenderer.hpp"
+#include "render/RobotPalette.hpp"
+
+#include <QFile>
+#include <QImage>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+constexpr std::uint32_t kMeadow = 0x40a040;
+constexpr std::uint32_t kWater = 0x2060c0;
+
+// 20 x 10 pixels of 10 m: meadow (1) on the west half, water (2) on the east half.
+ClassGrid twoClassGrid() {
+    ClassGrid grid;
+    grid.columns = 20;
+    grid.rows = 10;
+    grid.originX = 1000.0;
+    grid.originY = 5000.0;
+    grid.pixelWidth = 10.0;
+    grid.pixelHeight = 10.0;
+    grid.values.resize(200);
+    for (int row = 0; row < grid.rows; ++row)
+        for (int column = 0; column < grid.columns; ++column) grid.values[grid.index(column, row)] = column < 10 ? 1 : 2;
+    return grid;
+}
+
+ClassTable twoClassTable() {
+    return ClassTable({LandCoverClass{1, "Meadow", kMeadow, 2.0, 10.0, true}, LandCoverClass{2, "Water", kWater, 0.0, 10.0, false}});
+}
+
+// One robot going east along y = 4950 (the middle row) across the meadow half.
+Plan eastboundPlan() {
+    Plan plan;
+    plan.planner = "test";
+    CoveragePath path;
+    path.robot = 0;
+    path.closed = false;
+    for (double x : {1005.0, 1050.0, 1095.0}) {
+        Waypoint waypoint;
+        waypoint.x = x;
+        waypoint.y = 4950.0;
+        path.waypoints.push_back(waypoint);
+    }
+    plan.paths.push_back(path);
+    return plan;
+}
+
+bool near(QColor actual, QColor expected, int tolerance = 8) {
+    return std::abs(actual.red() - expected.red()) <= tolerance && std::abs(actual.green() - expected.green()) <= tolerance &&
+           std::abs(actual.blue() - expected.blue()) <= tolerance;
+}
+
+} // namespace
+
+class TestPlanRenderer : public QObject {
+    Q_OBJECT
+
+private slots:
+    void fitsKeepingAspect() {
+        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), nullptr, QSize(400, 400));
+        QCOMPARE(image.size(), QSize(400, 200));
+    }
+
+    void drawsLandCoverInClassColours() {
+        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), nullptr, QSize(400, 200));
+        // 2 device pixels per metre: (50, 50) is meadow, (350, 150) is water.
+        QVERIFY2(near(image.pixelColor(50, 50), QColor::fromRgb(kMeadow)), qPrintable(image.pixelColor(50, 50).name()));
+        QVERIFY2(near(image.pixelColor(350, 150), QColor::fromRgb(kWater)), qPrintable(image.pixelColor(350, 150).name()));
+    }
+
+    void drawsPathInRobotColourAndLeavesTheRestAlone() {
+        const Plan plan = eastboundPlan();
+        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200));
+        // y = 4950 is device row 100; x = 1030 is device column 60 (between arrows).
+        const QColor onPath = image.pixelColor(60, 100);
+        QVERIFY2(near(onPath, render::RobotPalette::colour(0), 30), qPrintable(onPath.name()));
+        // Far from the path the land cover shows unchanged.
+        QVERIFY(near(image.pixelColor(40, 20), QColor::fromRgb(kMeadow)));
+        QVERIFY(near(image.pixelColor(350, 180), QColor::fromRgb(kWater)));
+    }
+
+    void hidesPathsWhenTheLayerIsOff() {
+        const Plan plan = eastboundPlan();
+        render::MapLayers layers;
+        layers.paths = false;
+        layers.starts = false;
+        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
+        QVERIFY(near(image.pixelColor(60, 100), QColor::fromRgb(kMeadow)));
+    }
+
+    void tintsRegionsAndHatchesUnreachableCells() {
+        Plan plan;
+        plan.quadTree.levels = 1;
+        QuadCell owned;
+        owned.minX = 1000.0;
+        owned.minY = 4900.0;
+        owned.size = 100.0;
+        owned.state = CellState::Active;
+        owned.activeIndex = 0;
+        QuadCell lost = owned;
+        lost.minX = 1100.0;
+        lost.activeIndex = 1;
+        plan.quadTree.cells = {owned, lost};
+        plan.quadTree.activeCells = {0, 1};
+        plan.allocation.robotOfCell = {1, -1};
+        render::MapLayers layers;
+        layers.quadTree = false;
+        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
+        // The owned cell is meadow tinted towards robot 1's colour: no longer the plain class colour.
+        const QColor tinted = image.pixelColor(100, 100);
+        QVERIFY2(!near(tinted, QColor::fromRgb(kMeadow)), qPrintable(tinted.name()));
+        // Somewhere in the unreachable cell the hatch lines show a dark red.
+        bool sawHatch = false;
+        for (int x = 210; x < 390 && !sawHatch; ++x) {
+            const QColor pixel = image.pixelColor(x, 100);
+            sawHatch = pixel.red() > pixel.green() + 40 && pixel.red() > pixel.blue() + 40;
+        }
+        QVERIFY(sawHatch);
+    }
+
+    void writesPngAndSvg() {
+        QTemporaryDir directory;
+        const Plan plan = eastboundPlan();
+        QString error;
+        const QString png = directory.filePath(QStringLiteral("plan.png"));
+        QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, png, QSize(800, 800), &error), qPrintable(error));
+        QImage readBack(png);
+        QCOMPARE(readBack.size(), QSize(800, 400));
+        const QString svg = directory.filePath(QStringLiteral("plan.svg"));
+        QVERIFY2(render::writePlanSvg(twoClassGrid(), twoClassTable(), plan, svg, QSize(800, 800), &error), qPrintable(error));
+        QFile file(svg);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.readAll().contains("<svg"));
+    }
+
+    void reportsUnwritablePaths() {
+        QString error;
+        QVERIFY(!render::writePlanPng(twoClassGrid(), twoClassTable(), eastboundPlan(), QStringLiteral("/nonexistent-folder/plan.png"), QSize(100, 100), &error));
+        QVERIFY(error.contains(QStringLiteral("/nonexistent-folder/plan.png")));
+        error.clear();
+        QVERIFY(!render::writePlanSvg(twoClassGrid(), twoClassTable(), eastboundPlan(), QStringLiteral("/nonexistent-folder/plan.svg"), QSize(100, 100), &error));
+        QVERIFY(!error.isEmpty());
+    }
+
+    void robotColoursAreDistinct() {
+        QVERIFY(render::RobotPalette::size() >= 12);
+        for (int a = 0; a < render::RobotPalette::size(); ++a)
+            for (int b = a + 1; b < render::RobotPalette::size(); ++b) QVERIFY(render::RobotPalette::colour(a) != render::RobotPalette::colour(b));
+    }
+};
+
+QTEST_MAIN(TestPlanRenderer)
+#include "test_plan_renderer.moc"
