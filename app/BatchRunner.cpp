@@ -1,7 +1,7 @@
 #include "app/BatchRunner.hpp"
 
 #include "app/BatchFailure.hpp"
-#include "core/planners/Planner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/model/ProgressReporter.hpp"
@@ -95,7 +95,7 @@ void BatchRunner::execute() {
         warn(warning);
     pendingWarnings_.clear();
     const Plan plan = runPlanner(starts);
-    for (const auto& warning : plan.warnings)
+    for (const auto& warning : plan.warnings())
         warn(warning);
     writeOutputs(plan);
     printSummary(plan);

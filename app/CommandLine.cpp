@@ -1,6 +1,6 @@
 #include "app/CommandLine.hpp"
 
-#include "core/planners/Planner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
 
 #include <algorithm>

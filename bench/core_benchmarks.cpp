@@ -58,7 +58,7 @@ void runPlanner(benchmark::State& state, const PlanningProblem& problem) {
         benchmark::ClobberMemory();
     }
     state.counters["ratio"] = plan.metrics.ratio;
-    state.counters["cells"] = static_cast<double>(plan.quadTree.activeCount());
+    state.counters["cells"] = static_cast<double>(plan.cells.size());
     state.counters["peak_rss_mb"] = peakResidentMegabytes();
     for (const auto& [stage, milliseconds] : plan.metrics.stageMilliseconds) state.counters[stage + "_ms"] = milliseconds;
 }

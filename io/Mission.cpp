@@ -1,6 +1,6 @@
 #include "io/Mission.hpp"
 
-#include "core/planners/Planner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/JsonValue.hpp"

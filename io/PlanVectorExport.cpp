@@ -299,23 +299,25 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
     auto cells = writer.layer("cells", crs.get(), wkbPolygon);
     if (!cells) return Status::failure(cells.error());
     if (Status status = createFields(writer, cells.value(),
-                                     {{{"active_index", OFTInteger}, {"level", OFTInteger}, {"class", OFTInteger},
-                                       {"fov", OFTReal}, {"speed", OFTReal}, {"robot", OFTInteger}}});
+                                     {{{"cell", OFTInteger}, {"level", OFTInteger}, {"class", OFTInteger},
+                                       {"fov", OFTReal}, {"speed", OFTReal}, {"free_sub_cells", OFTInteger},
+                                       {"robot", OFTInteger}}});
         !status) {
         return status;
     }
-    const QuadTree& tree = context.plan.quadTree;
-    const auto& owner = context.plan.allocation.robotOfCell;
-    for (std::size_t index = 0; index < tree.activeCount(); ++index) {
-        const QuadCell& cell = tree.active(static_cast<int>(index));
+    const CellGraph& graph = context.plan.cells;
+    const auto& owner = context.plan.regions.robotOfCell;
+    for (std::size_t index = 0; index < graph.size(); ++index) {
+        const Cell& cell = graph.cell(static_cast<int>(index));
         OGRFeature feature(cells.value()->GetLayerDefn());
-        feature.SetField("active_index", static_cast<int>(index));
+        feature.SetField("cell", static_cast<int>(index));
         feature.SetField("level", cell.level);
         feature.SetField("class", static_cast<int>(cell.classValue));
         feature.SetField("fov", cell.fieldOfView());
         feature.SetField("speed", cell.speedMetresPerSecond);
+        feature.SetField("free_sub_cells", cell.freeSubCellCount());
         feature.SetField("robot", index < owner.size() ? owner[index] : -1);
-        feature.SetGeometryDirectly(internal::cellSquare(tree, cell, metresPerUnit).release());
+        feature.SetGeometryDirectly(internal::cellSquare(graph, cell, metresPerUnit).release());
         if (Status status = writer.add(cells.value(), feature); !status) return status;
     }
 

@@ -33,7 +33,14 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     JsonValue& timings = root.add("timings_ms", JsonValue::object());
     for (const auto& [stage, milliseconds] : metrics.stageMilliseconds) timings.add(stage, milliseconds);
     JsonValue& warnings = root.add("warnings", JsonValue::array());
-    for (const std::string& warning : context.plan.warnings) warnings.push(warning);
+    for (const std::string& warning : context.plan.warnings()) warnings.push(warning);
+    JsonValue& issues = root.add("issues", JsonValue::array());
+    for (const PlanIssue& issue : context.plan.issues) {
+        JsonValue& item = issues.push(JsonValue::object());
+        item.add("severity", issue.severity == IssueSeverity::Warning ? "warning" : "information");
+        item.add("code", issue.code);
+        item.add("message", issue.message);
+    }
     return internal::writeFileAtomically(path, root.toText());
 }
 

@@ -27,17 +27,13 @@ QRectF deviceRectOf(const QTransform& worldToDevice, double minX, double minY, d
     return worldToDevice.mapRect(QRectF(QPointF(minX, minY), QPointF(maxX, maxY))).normalized();
 }
 
-QRectF deviceRectOf(const QTransform& worldToDevice, const QuadCell& cell) {
+QRectF deviceRectOf(const QTransform& worldToDevice, const Cell& cell) {
     return deviceRectOf(worldToDevice, cell.minX, cell.minY, cell.maxX(), cell.maxY());
 }
 
-bool isActiveIndexValid(const Plan& plan, int activeIndex) {
-    return activeIndex >= 0 && static_cast<std::size_t>(activeIndex) < plan.quadTree.activeCount();
-}
-
-int robotOf(const Plan& plan, int activeIndex) {
-    const auto& owners = plan.allocation.robotOfCell;
-    return static_cast<std::size_t>(activeIndex) < owners.size() ? owners[static_cast<std::size_t>(activeIndex)] : -1;
+int robotOf(const Plan& plan, int cell) {
+    const auto& owners = plan.regions.robotOfCell;
+    return static_cast<std::size_t>(cell) < owners.size() ? owners[static_cast<std::size_t>(cell)] : -1;
 }
 
 void drawArrow(QPainter& painter, QPointF tip, QPointF direction, const QColor& colour) {
@@ -140,12 +136,12 @@ void PlanRenderer::paintLandCover(QPainter& painter, const QTransform& worldToDe
 }
 
 void PlanRenderer::paintRegions(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
-    const QuadTree& tree = plan_->quadTree;
+    const CellGraph& graph = plan_->cells;
     std::unordered_map<int, std::vector<QRectF>> rectanglesByRobot;
-    for (std::size_t activeIndex = 0; activeIndex < tree.activeCount(); ++activeIndex) {
-        const int robot = robotOf(*plan_, static_cast<int>(activeIndex));
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        const int robot = robotOf(*plan_, static_cast<int>(id));
         if (robot < 0) continue;
-        const QRectF rectangle = deviceRectOf(worldToDevice, tree.active(static_cast<int>(activeIndex)));
+        const QRectF rectangle = deviceRectOf(worldToDevice, graph.cell(static_cast<int>(id)));
         if (rectangle.intersects(deviceArea)) rectanglesByRobot[robot].push_back(rectangle);
     }
     painter.setRenderHint(QPainter::Antialiasing, false);
@@ -160,18 +156,16 @@ void PlanRenderer::paintRegions(QPainter& painter, const QTransform& worldToDevi
 
 void PlanRenderer::paintRegionBorders(QPainter& painter, const QTransform& worldToDevice) const {
     // A dark line wherever two neighbouring cells belong to different robots, so regions read as areas.
-    const QuadTree& tree = plan_->quadTree;
-    const NeighbourTopology& topology = plan_->topology;
-    if (topology.cellCount() != tree.activeCount()) return;
+    const CellGraph& graph = plan_->cells;
     std::vector<QLineF> borders;
-    for (std::size_t a = 0; a < topology.cellCount(); ++a) {
+    for (std::size_t a = 0; a < graph.size(); ++a) {
         const int first = static_cast<int>(a);
         const int firstRobot = robotOf(*plan_, first);
-        for (const int second : topology.of(first)) {
-            if (second <= first || !isActiveIndexValid(*plan_, second)) continue;
+        for (const int second : graph.neighbours(first)) {
+            if (second <= first) continue;
             if (robotOf(*plan_, second) == firstRobot) continue;
-            const QuadCell& one = tree.active(first);
-            const QuadCell& other = tree.active(second);
+            const Cell& one = graph.cell(first);
+            const Cell& other = graph.cell(second);
             const double tolerance = 1e-6 * std::max(one.size, other.size);
             const double bottom = std::max(one.minY, other.minY);
             const double top = std::min(one.maxY(), other.maxY());
@@ -192,11 +186,11 @@ void PlanRenderer::paintRegionBorders(QPainter& painter, const QTransform& world
 }
 
 void PlanRenderer::paintUnreachable(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
-    const QuadTree& tree = plan_->quadTree;
+    const CellGraph& graph = plan_->cells;
     std::vector<QRectF> rectangles;
-    for (std::size_t activeIndex = 0; activeIndex < tree.activeCount(); ++activeIndex) {
-        if (robotOf(*plan_, static_cast<int>(activeIndex)) >= 0) continue;
-        const QRectF rectangle = deviceRectOf(worldToDevice, tree.active(static_cast<int>(activeIndex)));
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        if (robotOf(*plan_, static_cast<int>(id)) >= 0) continue;
+        const QRectF rectangle = deviceRectOf(worldToDevice, graph.cell(static_cast<int>(id)));
         if (rectangle.intersects(deviceArea)) rectangles.push_back(rectangle);
     }
     if (rectangles.empty()) return;
@@ -209,15 +203,14 @@ void PlanRenderer::paintUnreachable(QPainter& painter, const QTransform& worldTo
 }
 
 void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
-    const QuadTree& tree = plan_->quadTree;
-    const int levels = std::max(tree.levels, 1);
+    const CellGraph& graph = plan_->cells;
+    const int levels = std::max(graph.frame().levels, 1);
     // The top grid overhangs the raster's east and south edges; cells there hold nothing to show.
     QRectF visible = deviceArea;
     if (grid_ != nullptr)
         visible = visible.intersected(deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY));
     std::vector<std::vector<QRectF>> rectanglesByLevel(static_cast<std::size_t>(levels) + 1);
-    for (const QuadCell& cell : tree.cells) {
-        if (cell.state == CellState::Auxiliary) continue; // leaves tile the area; parents add nothing
+    for (const Cell& cell : graph.cells()) {
         const QRectF rectangle = deviceRectOf(worldToDevice, cell);
         if (rectangle.width() < kSmallestOutlinedCellPixels || !rectangle.intersects(visible)) continue;
         const auto level = static_cast<std::size_t>(std::clamp(cell.level, 1, levels));

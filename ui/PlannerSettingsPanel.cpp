@@ -1,6 +1,6 @@
 #include "ui/PlannerSettingsPanel.hpp"
 
-#include "core/planners/Planner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #include "ui/PlanningRunner.hpp"
 
-#include "core/planners/Planner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <QtConcurrent/QtConcurrentRun>

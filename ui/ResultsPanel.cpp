@@ -143,7 +143,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     unreachable_->setText(hectares(metrics.unreachableAreaSquareMetres));
     planner_->setText(QString::fromStdString(plan->planner));
     QStringList warnings;
-    for (const auto& warning : plan->warnings) warnings << QString::fromStdString(warning);
+    for (const auto& warning : plan->warnings()) warnings << QString::fromStdString(warning);
     warnings_->setText(warnings.isEmpty() ? tr("none") : warnings.join(QLatin1Char('\n')));
     showChart(*plan, names);
 }

@@ -29,25 +29,24 @@ struct RobotState {
 
 class Allocation {
 public:
-    Allocation(const QuadTree& tree, const NeighbourTopology& topology, const std::vector<int>& startCells,
-               const ProgressReporter& progress)
-        : topology_(topology), progress_(progress), cellCount_(static_cast<int>(tree.activeCount())),
+    Allocation(const CellGraph& graph, const std::vector<int>& startCells, const ProgressReporter& progress)
+        : graph_(graph), progress_(progress), cellCount_(static_cast<int>(graph.size())),
           owner_(static_cast<std::size_t>(cellCount_), unreachable), cost_(static_cast<std::size_t>(cellCount_)),
           x_(static_cast<std::size_t>(cellCount_)), y_(static_cast<std::size_t>(cellCount_)),
           area_(static_cast<std::size_t>(cellCount_)), visitStamp_(static_cast<std::size_t>(cellCount_), 0),
           robots_(startCells.size()) {
         for (int cell = 0; cell < cellCount_; ++cell) {
-            const QuadCell& quadCell = tree.active(cell);
-            cost_[static_cast<std::size_t>(cell)] = cellCostSeconds(quadCell);
-            x_[static_cast<std::size_t>(cell)] = quadCell.centreX();
-            y_[static_cast<std::size_t>(cell)] = quadCell.centreY();
-            area_[static_cast<std::size_t>(cell)] = quadCell.size * quadCell.size;
+            const Cell& graphCell = graph.cell(cell);
+            cost_[static_cast<std::size_t>(cell)] = graphCell.coverSeconds();
+            x_[static_cast<std::size_t>(cell)] = graphCell.centreX();
+            y_[static_cast<std::size_t>(cell)] = graphCell.centreY();
+            area_[static_cast<std::size_t>(cell)] = graphCell.size * graphCell.size;
         }
         // Cells in no start's component are unreachable from the outset and never considered.
         std::vector<int> queue(startCells.begin(), startCells.end());
         for (int start : startCells) owner_[static_cast<std::size_t>(start)] = unassigned;
         for (std::size_t head = 0; head < queue.size(); ++head) {
-            for (int neighbour : topology.of(queue[head])) {
+            for (int neighbour : graph.neighbours(queue[head])) {
                 if (owner_[static_cast<std::size_t>(neighbour)] == unreachable) {
                     owner_[static_cast<std::size_t>(neighbour)] = unassigned;
                     queue.push_back(neighbour);
@@ -163,7 +162,7 @@ private:
     }
 
     bool touchesRegion(int cell, int robot) const {
-        for (int neighbour : topology_.of(cell))
+        for (int neighbour : graph_.neighbours(cell))
             if (owner_[static_cast<std::size_t>(neighbour)] == robot) return true;
         return false;
     }
@@ -198,7 +197,7 @@ private:
 
     void pushNeighbours(int robot, int cell) {
         RobotState& state = robots_[static_cast<std::size_t>(robot)];
-        for (int neighbour : topology_.of(cell)) {
+        for (int neighbour : graph_.neighbours(cell)) {
             const int owner = owner_[static_cast<std::size_t>(neighbour)];
             if (owner == unassigned) {
                 state.frontier.emplace(growthKey(robot, neighbour), neighbour);
@@ -250,7 +249,7 @@ private:
         const int owner = owner_[static_cast<std::size_t>(cell)];
         std::vector<int>& sameOwner = scratchNeighbours_;
         sameOwner.clear();
-        for (int neighbour : topology_.of(cell))
+        for (int neighbour : graph_.neighbours(cell))
             if (owner_[static_cast<std::size_t>(neighbour)] == owner) sameOwner.push_back(neighbour);
         if (sameOwner.size() <= 1) return !sameOwner.empty() || robots_[static_cast<std::size_t>(owner)].cells > 1;
         ++stamp_;
@@ -260,7 +259,7 @@ private:
         visitStamp_[static_cast<std::size_t>(sameOwner.front())] = stamp_;
         std::size_t found = 1;
         for (std::size_t head = 0; head < queue.size() && found < sameOwner.size() && queue.size() < searchLimit; ++head) {
-            for (int neighbour : topology_.of(queue[head])) {
+            for (int neighbour : graph_.neighbours(queue[head])) {
                 if (owner_[static_cast<std::size_t>(neighbour)] != owner || visitStamp_[static_cast<std::size_t>(neighbour)] == stamp_)
                     continue;
                 visitStamp_[static_cast<std::size_t>(neighbour)] = stamp_;
@@ -329,7 +328,7 @@ private:
             pushNeighbours(robot, chosen);
             robots_[static_cast<std::size_t>(donor)].finished = false;
             // The donor may now reach cells again through its remaining border.
-            for (int neighbour : topology_.of(chosen))
+            for (int neighbour : graph_.neighbours(chosen))
                 if (owner_[static_cast<std::size_t>(neighbour)] == donor) pushNeighbours(donor, neighbour);
             return true;
         }
@@ -347,7 +346,7 @@ private:
         for (int cell = 0; cell < cellCount_; ++cell) {
             const int owner = owner_[static_cast<std::size_t>(cell)];
             if (owner < 0) continue;
-            for (int neighbour : topology_.of(cell)) {
+            for (int neighbour : graph_.neighbours(cell)) {
                 const int other = owner_[static_cast<std::size_t>(neighbour)];
                 if (other >= 0 && other != owner) ++regionContacts_[static_cast<std::size_t>(owner) * robots_.size() + static_cast<std::size_t>(other)];
             }
@@ -359,7 +358,7 @@ private:
         const int owner = owner_[static_cast<std::size_t>(cell)];
         bool onBoundary = false;
         if (owner >= 0) {
-            for (int neighbour : topology_.of(cell)) {
+            for (int neighbour : graph_.neighbours(cell)) {
                 const int other = owner_[static_cast<std::size_t>(neighbour)];
                 if (other >= 0 && other != owner) {
                     onBoundary = true;
@@ -387,7 +386,7 @@ private:
 
     void updateBoundaryAround(int cell) {
         refreshBoundary(cell);
-        for (int neighbour : topology_.of(cell)) refreshBoundary(neighbour);
+        for (int neighbour : graph_.neighbours(cell)) refreshBoundary(neighbour);
     }
 
     // Contact counts between regions change only when a cell changes owner.
@@ -396,7 +395,7 @@ private:
         forgetHandOvers(from);
         forgetHandOvers(to);
         const std::size_t n = robots_.size();
-        for (int neighbour : topology_.of(cell)) {
+        for (int neighbour : graph_.neighbours(cell)) {
             const int other = owner_[static_cast<std::size_t>(neighbour)];
             if (other < 0) continue;
             if (other != from) {
@@ -533,7 +532,7 @@ private:
         return false;
     }
 
-    const NeighbourTopology& topology_;
+    const CellGraph& graph_;
     const ProgressReporter& progress_;
     int cellCount_;
     std::vector<int> owner_;
@@ -564,18 +563,17 @@ private:
 
 } // namespace
 
-RegionAllocation AzimuthTrendAllocator::allocate(const QuadTree& tree, const NeighbourTopology& topology,
-                                                 const std::vector<int>& startCells, const PlannerSettings& settings,
+RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const std::vector<int>& startCells,
+                                                 const PlannerSettings& settings,
                                                  const ProgressReporter& progress) const {
     progress.report("allocation", 0.0);
-    Allocation allocation(tree, topology, startCells, progress);
+    Allocation allocation(graph, startCells, progress);
     allocation.grow();
     progress.report("allocation", 0.8);
     const int cap = settings.rebalanceIterations > 0 ? settings.rebalanceIterations
-                                                     : std::max(1000, static_cast<int>(tree.activeCount()));
-    const int moves = allocation.rebalance(cap);
+                                                     : std::max(1000, static_cast<int>(graph.size()));
+    (void)allocation.rebalance(cap);
     RegionAllocation result = allocation.result();
-    result.rebalanceMoves = moves;
     progress.report("allocation", 1.0);
     return result;
 }

@@ -10,8 +10,8 @@ namespace mcpp {
 // the maximum cost falls.
 class AzimuthTrendAllocator final : public RegionAllocator {
 public:
-    [[nodiscard]] RegionAllocation allocate(const QuadTree& tree, const NeighbourTopology& topology,
-                                            const std::vector<int>& startCells, const PlannerSettings& settings,
+    [[nodiscard]] RegionAllocation allocate(const CellGraph& graph, const std::vector<int>& startCells,
+                                            const PlannerSettings& settings,
                                             const ProgressReporter& progress) const override;
 };
 

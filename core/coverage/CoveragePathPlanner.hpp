@@ -1,23 +1,21 @@
 #pragma once
 
+#include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
 #include "core/model/MapPoint.hpp"
-#include "core/model/NeighbourTopology.hpp"
-#include "core/planners/PlannerSettings.hpp"
 #include "core/model/ProgressReporter.hpp"
-#include "core/decomposition/QuadTree.hpp"
 #include "core/model/RegionAllocation.hpp"
+#include "core/planners/PlannerSettings.hpp"
 
 #include <vector>
 
 namespace mcpp {
 
-// Stage 4 of the pipeline: one coverage path per robot through its region.
+// The coverage stage: one path per robot through its region.
 class CoveragePathPlanner {
 public:
     virtual ~CoveragePathPlanner() = default;
-    [[nodiscard]] virtual std::vector<CoveragePath> plan(const QuadTree& tree, const NeighbourTopology& topology,
-                                                         const RegionAllocation& allocation,
+    [[nodiscard]] virtual std::vector<CoveragePath> plan(const CellGraph& graph, const RegionAllocation& regions,
                                                          const std::vector<MapPoint>& starts,
                                                          const PlannerSettings& settings,
                                                          const ProgressReporter& progress) const = 0;

@@ -1,19 +1,12 @@
 #pragma once
 
 #include "core/decomposition/QuadCell.hpp"
+#include "core/model/RoundedFieldOfView.hpp"
 
 #include <cstdint>
 #include <vector>
 
 namespace mcpp {
-
-// The class FOV rounded down to fovMin * 2^k and the level whose sub-cells have that side.
-struct RoundedFieldOfView {
-    std::int32_t classValue = 0;
-    double originalMetres = 0.0;
-    double roundedMetres = 0.0;
-    int level = 0;
-};
 
 // The hierarchical quadtree of spec section 2. Cells are stored flat; active cells tile the task area.
 struct QuadTree {

@@ -1,9 +1,19 @@
 #pragma once
 
+#include "core/model/MapPoint.hpp"
+
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace mcpp {
+
+// A pixel position in a ClassGrid.
+struct PixelIndex {
+    int column = 0;
+    int row = 0;
+};
 
 // A land-cover raster in a metric frame. Row 0 is the northern edge; y decreases as rows increase.
 struct ClassGrid {
@@ -25,6 +35,13 @@ struct ClassGrid {
     [[nodiscard]] double height() const { return rows * pixelHeight; }
     [[nodiscard]] double minY() const { return originY - height(); }
     [[nodiscard]] double maxX() const { return originX + width(); }
+    // The pixel a point lies in, or nothing off the raster (and for NaN).
+    [[nodiscard]] std::optional<PixelIndex> pixelAt(MapPoint point) const {
+        const double column = std::floor((point.x - originX) / pixelWidth);
+        const double row = std::floor((originY - point.y) / pixelHeight);
+        if (!(column >= 0.0 && row >= 0.0 && column < columns && row < rows)) return std::nullopt;
+        return PixelIndex{static_cast<int>(column), static_cast<int>(row)};
+    }
 };
 
 } // namespace mcpp

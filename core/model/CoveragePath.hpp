@@ -5,11 +5,12 @@
 
 namespace mcpp {
 
-// A point of a robot's path. The segment that ends here is travelled at this waypoint's speed.
+// A point of a robot's path, with the land cover and speed of the cell it lies in. A segment is travelled
+// half at the speed of the waypoint it leaves and half at the speed of the one it reaches.
 struct Waypoint {
     double x = 0.0;
     double y = 0.0;
-    int activeCell = -1;        // active index of the cell the point lies in
+    int cell = -1;               // cell of the plan's cell graph the point lies in
     std::int32_t classValue = 0; // land cover of that cell
     double speedMetresPerSecond = 0.0;
     double fieldOfViewMetres = 0.0;
@@ -18,11 +19,11 @@ struct Waypoint {
 
 struct CoveragePath {
     int robot = 0;
-    std::vector<Waypoint> waypoints; // the first is the centre of the start cell's first sub-cell
+    std::vector<Waypoint> waypoints; // the first is the robot's start point
     double lengthMetres = 0.0;
     double timeSeconds = 0.0;
     int turns = 0;
-    int repeatedSubCellVisits = 0; // sub-cell centres passed a second time (bridges between cells)
+    int repeatedSubCellVisits = 0; // sub-cell centres passed again (not counting a closed tour's return)
     bool closed = true;
 };
 

@@ -1,25 +1,35 @@
 #pragma once
 
+#include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
-#include "core/model/NeighbourTopology.hpp"
+#include "core/model/PlanIssue.hpp"
+#include "core/model/PlanLayer.hpp"
 #include "core/model/PlanMetrics.hpp"
-#include "core/decomposition/QuadTree.hpp"
 #include "core/model/RegionAllocation.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace mcpp {
 
-// Everything a planner produced: the cells, who covers which, the paths and the figures.
+// What any planner produced, in terms every reader understands: the cells, who covers which, the paths,
+// the figures and what the user should know. Exporters, the renderer and the invariant checks read only this.
 struct Plan {
     std::string planner;
-    QuadTree quadTree;
-    NeighbourTopology topology;
-    RegionAllocation allocation;
+    CellGraph cells;
+    RegionAllocation regions;
     std::vector<CoveragePath> paths; // by robot
     PlanMetrics metrics;
-    std::vector<std::string> warnings;
+    std::vector<PlanIssue> issues;
+    std::vector<std::shared_ptr<const PlanLayer>> layers;
+
+    [[nodiscard]] std::vector<std::string> warnings() const {
+        std::vector<std::string> messages;
+        for (const PlanIssue& issue : issues)
+            if (issue.severity == IssueSeverity::Warning) messages.push_back(issue.message);
+        return messages;
+    }
 };
 
 } // namespace mcpp

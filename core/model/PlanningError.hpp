@@ -5,8 +5,9 @@
 
 namespace mcpp {
 
-// Bad input found by the core. The message names what is wrong: robot index and coordinates,
-// class value or parameter.
+// Bad input found by the core. The message names what is wrong: robot index and coordinates, class value
+// or parameter. Errors about one robot's start or one parameter also carry which, and the detail without
+// that subject, so a caller can name it in its own terms (a batch flag, a field of a mission file).
 class PlanningError : public std::runtime_error {
 public:
     enum class Kind {
@@ -21,11 +22,34 @@ public:
         Cancelled
     };
 
-    PlanningError(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+    PlanningError(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind), detail_(message) {}
+
+    // "robot 2 start " + detail, e.g. detail "(10, 20) is outside the map".
+    static PlanningError aboutStart(Kind kind, int robot, const std::string& detail) {
+        PlanningError error(kind, "robot " + std::to_string(robot) + " start " + detail, detail);
+        error.robot_ = robot;
+        return error;
+    }
+    // "parameter key: " + detail, e.g. detail "must be from 0 to 1, got 2".
+    static PlanningError aboutParameter(const std::string& key, const std::string& detail) {
+        PlanningError error(Kind::InvalidParameter, "parameter " + key + ": " + detail, detail);
+        error.parameter_ = key;
+        return error;
+    }
+
     [[nodiscard]] Kind kind() const { return kind_; }
+    [[nodiscard]] int robot() const { return robot_; }                       // -1 when about no one robot
+    [[nodiscard]] const std::string& parameter() const { return parameter_; } // empty when about no parameter
+    [[nodiscard]] const std::string& detail() const { return detail_; }
 
 private:
+    PlanningError(Kind kind, const std::string& message, std::string detail)
+        : std::runtime_error(message), kind_(kind), detail_(std::move(detail)) {}
+
     Kind kind_;
+    int robot_ = -1;
+    std::string parameter_;
+    std::string detail_;
 };
 
 } // namespace mcpp

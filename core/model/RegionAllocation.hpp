@@ -4,12 +4,11 @@
 
 namespace mcpp {
 
-// Which robot covers each active cell. -1 marks a cell no robot can reach.
+// Which robot covers each cell of the plan's cell graph. -1 marks a cell no robot covers.
 struct RegionAllocation {
-    std::vector<int> robotOfCell;   // by active index
-    std::vector<int> startCell;     // by robot: active index of the start cell
-    std::vector<double> costSeconds; // by robot: sum of 2 * Cs / Sd over its cells
-    int rebalanceMoves = 0;          // cells moved after growth
+    std::vector<int> robotOfCell;    // by cell id
+    std::vector<int> startCell;      // by robot: the cell holding its start
+    std::vector<double> costSeconds; // by robot: the cover time of its cells
 };
 
 } // namespace mcpp

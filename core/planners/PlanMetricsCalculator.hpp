@@ -4,8 +4,8 @@
 
 namespace mcpp {
 
-// Fills plan.metrics from the quadtree, the allocation and the paths (spec section 6).
-// Stage timings are left to the caller.
+// Fills plan.metrics and the regions' costs from the cell graph, the regions and the measured paths
+// (spec section 6). Stage timings are left as they are.
 class PlanMetricsCalculator {
 public:
     void compute(Plan& plan) const;

@@ -1,14 +1,70 @@
 #include "core/planners/Planner.hpp"
 
-#include "core/planners/MlctPlanner.hpp"
+#include "core/coverage/PathMeasurement.hpp"
+#include "core/model/PlanningError.hpp"
+#include "core/model/StartPointCheck.hpp"
+#include "core/planners/PlanMetricsCalculator.hpp"
+#include "core/planners/PlannerRegistry.hpp"
+#include "core/planners/PlanningRun.hpp"
+
+#include <sstream>
 
 namespace mcpp {
+namespace {
 
-std::vector<std::string> availablePlanners() { return {MlctPlanner::plannerName}; }
+using Kind = PlanningError::Kind;
 
-std::unique_ptr<Planner> makePlanner(const std::string& name) {
-    if (name == MlctPlanner::plannerName || name.empty()) return std::make_unique<MlctPlanner>();
-    return nullptr;
+std::string multiRobotPlanners() {
+    std::string names;
+    for (const PlannerDescription& planner : plannerDescriptions())
+        if (!planner.singleRobot) names += (names.empty() ? "" : ", ") + planner.name;
+    return names;
+}
+
+// Bad starts are wrong whatever the cells: say so before building them.
+void checkStarts(const PlannerDescription& planner, const PlanningProblem& problem) {
+    if (problem.starts.empty()) throw PlanningError(Kind::InvalidParameter, "no robots: give at least one start point");
+    if (planner.singleRobot && problem.starts.size() > 1)
+        throw PlanningError(Kind::InvalidParameter, planner.name + " plans for one robot, but " +
+                                                        std::to_string(problem.starts.size()) +
+                                                        " starts were given; planners that take several robots: " +
+                                                        multiRobotPlanners());
+    for (std::size_t robot = 0; robot < problem.starts.size(); ++robot) {
+        const auto problemAtStart = startPointProblem(problem.grid, problem.classes, problem.starts[robot]);
+        if (!problemAtStart) continue;
+        const bool snappable = problemAtStart->kind != Kind::InvalidParameter;
+        if (!snappable || !problem.settings.snapStartsToFreeCells)
+            throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot), problemAtStart->detail);
+    }
+}
+
+std::string describeArea(double squareMetres) {
+    std::ostringstream text;
+    text.precision(6);
+    text << squareMetres;
+    return text.str();
+}
+
+} // namespace
+
+Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progress) const {
+    const PlannerDescription planner = description();
+    checkStarts(planner, problem);
+    Plan plan;
+    plan.planner = planner.name;
+    PlanningRun planningRun(problem, progress, plan);
+    run(planningRun);
+    planningRun.stage("metrics", [&] {
+        for (CoveragePath& path : plan.paths) measurePath(path, plan.cells);
+        PlanMetricsCalculator{}.compute(plan);
+        return 0;
+    });
+    if (plan.metrics.unreachableAreaSquareMetres > 0.0)
+        planningRun.addIssue(IssueSeverity::Warning, "unreachable-area",
+                             describeArea(plan.metrics.unreachableAreaSquareMetres) +
+                                 " m2 of passable land cannot be reached by any robot");
+    progress.report("done", 1.0);
+    return plan;
 }
 
 } // namespace mcpp

@@ -3,24 +3,25 @@
 #include "core/model/Plan.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/model/ProgressReporter.hpp"
-
-#include <memory>
-#include <string>
-#include <vector>
+#include "core/planners/PlannerDescription.hpp"
 
 namespace mcpp {
 
-// A complete coverage planner: problem in, plan out. Throws PlanningError on bad input.
+class PlanningRun;
+
+// A complete coverage planner: problem in, plan out. The base class does what every planner needs the same
+// way: it checks the starts, times each stage, measures the paths, computes the figures and reports cells no
+// robot can reach; a planner adds its own steps in run(). Throws PlanningError on bad input.
 class Planner {
 public:
     virtual ~Planner() = default;
-    [[nodiscard]] virtual std::string name() const = 0;
-    [[nodiscard]] virtual Plan plan(const PlanningProblem& problem, const ProgressReporter& progress) const = 0;
-};
+    [[nodiscard]] virtual PlannerDescription description() const = 0;
+    [[nodiscard]] std::string name() const { return description().name; }
+    [[nodiscard]] Plan plan(const PlanningProblem& problem, const ProgressReporter& progress) const;
 
-// The planners this build offers, by the names used on the command line and in mission files.
-[[nodiscard]] std::vector<std::string> availablePlanners();
-// Nullptr when the name is unknown.
-[[nodiscard]] std::unique_ptr<Planner> makePlanner(const std::string& name);
+protected:
+    // Fills the run's plan: its cells, regions and paths (waypoints; measuring is done afterwards).
+    virtual void run(PlanningRun& run) const = 0;
+};
 
 } // namespace mcpp

@@ -9,44 +9,7 @@ namespace mcpp::io::internal {
 
 namespace {
 
-double snapped(double coordinate, double origin, double unit) {
-    if (!(unit > 0.0)) return coordinate;
-    return origin + std::round((coordinate - origin) / unit) * unit;
-}
-
-// Union of the given active cells: valid polygons, shared edges dissolved.
-Result<std::unique_ptr<OGRGeometry>> dissolve(const QuadTree& tree, const std::vector<int>& activeIndices,
-                                              double metresPerUnit) {
-    using Dissolved = Result<std::unique_ptr<OGRGeometry>>;
-    if (activeIndices.empty()) return std::unique_ptr<OGRGeometry>(std::make_unique<OGRMultiPolygon>());
-    OGRMultiPolygon squares;
-    for (const int index : activeIndices) squares.addGeometryDirectly(cellSquare(tree, tree.active(index), metresPerUnit).release());
-    QuietGdalErrors quiet;
-    std::unique_ptr<OGRGeometry> merged(squares.UnionCascaded());
-    if (!merged) return Dissolved::failure("could not dissolve " + std::to_string(activeIndices.size()) + " cells" + quiet.detail());
-    if (!merged->IsValid()) {
-        std::unique_ptr<OGRGeometry> repaired(merged->MakeValid());
-        if (!repaired || !repaired->IsValid()) return Dissolved::failure("dissolved cells do not form a valid polygon" + quiet.detail());
-        merged = std::move(repaired);
-    }
-    return merged;
-}
-
-} // namespace
-
-int robotCount(const Plan& plan) {
-    std::size_t count = std::max({plan.paths.size(), plan.allocation.startCell.size(), plan.allocation.costSeconds.size(),
-                                  plan.metrics.robots.size()});
-    for (const int robot : plan.allocation.robotOfCell) count = std::max(count, static_cast<std::size_t>(robot + 1));
-    return static_cast<int>(count);
-}
-
-std::unique_ptr<OGRPolygon> cellSquare(const QuadTree& tree, const QuadCell& cell, double metresPerUnit) {
-    const double unit = tree.fovMin;
-    const double minX = snapped(cell.minX, tree.originX, unit) / metresPerUnit;
-    const double maxX = snapped(cell.maxX(), tree.originX, unit) / metresPerUnit;
-    const double minY = snapped(cell.minY, tree.originY, unit) / metresPerUnit;
-    const double maxY = snapped(cell.maxY(), tree.originY, unit) / metresPerUnit;
+std::unique_ptr<OGRPolygon> square(double minX, double minY, double maxX, double maxY) {
     auto ring = std::make_unique<OGRLinearRing>();
     // Counter-clockwise exterior (right-hand rule).
     ring->addPoint(minX, minY);
@@ -59,39 +22,92 @@ std::unique_ptr<OGRPolygon> cellSquare(const QuadTree& tree, const QuadCell& cel
     return polygon;
 }
 
+// The part of a cell a robot covers: the whole square, or the squares of its free sub-cells.
+void addCoveredPart(const CellGraph& graph, const Cell& cell, double metresPerUnit, OGRMultiPolygon& parts) {
+    if (cell.freeSubCells == allSubCells) {
+        parts.addGeometryDirectly(cellSquare(graph, cell, metresPerUnit).release());
+        return;
+    }
+    const GridFrame& frame = graph.frame();
+    const double half = cell.span * frame.bottomCellSize / 2.0;
+    const double west = frame.x(cell.column);
+    const double north = frame.y(cell.row);
+    for (SubCell subCell : subCellsCounterClockwise) {
+        if (!cell.isFree(subCell)) continue;
+        const bool east = subCell == SubCell::NorthEast || subCell == SubCell::SouthEast;
+        const bool south = subCell == SubCell::SouthWest || subCell == SubCell::SouthEast;
+        const double minX = west + (east ? half : 0.0);
+        const double maxY = north - (south ? half : 0.0);
+        parts.addGeometryDirectly(
+            square(minX / metresPerUnit, (maxY - half) / metresPerUnit, (minX + half) / metresPerUnit, maxY / metresPerUnit).release());
+    }
+}
+
+// Union of the covered parts of the given cells: valid polygons, shared edges dissolved.
+Result<std::unique_ptr<OGRGeometry>> dissolve(const CellGraph& graph, const std::vector<int>& cellIds, double metresPerUnit) {
+    using Dissolved = Result<std::unique_ptr<OGRGeometry>>;
+    if (cellIds.empty()) return std::unique_ptr<OGRGeometry>(std::make_unique<OGRMultiPolygon>());
+    OGRMultiPolygon squares;
+    for (const int id : cellIds) addCoveredPart(graph, graph.cell(id), metresPerUnit, squares);
+    QuietGdalErrors quiet;
+    std::unique_ptr<OGRGeometry> merged(squares.UnionCascaded());
+    if (!merged) return Dissolved::failure("could not dissolve " + std::to_string(cellIds.size()) + " cells" + quiet.detail());
+    if (!merged->IsValid()) {
+        std::unique_ptr<OGRGeometry> repaired(merged->MakeValid());
+        if (!repaired || !repaired->IsValid()) return Dissolved::failure("dissolved cells do not form a valid polygon" + quiet.detail());
+        merged = std::move(repaired);
+    }
+    return merged;
+}
+
+} // namespace
+
+int robotCount(const Plan& plan) {
+    std::size_t count = std::max({plan.paths.size(), plan.regions.startCell.size(), plan.regions.costSeconds.size(),
+                                  plan.metrics.robots.size()});
+    for (const int robot : plan.regions.robotOfCell) count = std::max(count, static_cast<std::size_t>(robot + 1));
+    return static_cast<int>(count);
+}
+
+std::unique_ptr<OGRPolygon> cellSquare(const CellGraph& graph, const Cell& cell, double metresPerUnit) {
+    const GridFrame& frame = graph.frame();
+    return square(frame.x(cell.column) / metresPerUnit, frame.y(cell.row + cell.span) / metresPerUnit,
+                  frame.x(cell.column + cell.span) / metresPerUnit, frame.y(cell.row) / metresPerUnit);
+}
+
 Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
-    const QuadTree& tree = plan.quadTree;
+    const CellGraph& graph = plan.cells;
     const int robots = robotCount(plan);
-    const auto& owner = plan.allocation.robotOfCell;
-    if (!owner.empty() && owner.size() != tree.activeCount()) {
-        return Result<PlanFeatures>::failure("the allocation has " + std::to_string(owner.size()) + " cells but the quadtree has "
-                                             + std::to_string(tree.activeCount()) + " active cells");
+    const auto& owner = plan.regions.robotOfCell;
+    if (!owner.empty() && owner.size() != graph.size()) {
+        return Result<PlanFeatures>::failure("the regions name " + std::to_string(owner.size()) + " cells but the plan has "
+                                             + std::to_string(graph.size()) + " cells");
     }
     std::vector<std::vector<int>> cellsOfRobot(static_cast<std::size_t>(robots));
     std::vector<int> unreachableCells;
     std::vector<double> areaOfRobot(static_cast<std::size_t>(robots), 0.0);
     for (std::size_t index = 0; index < owner.size(); ++index) {
-        const QuadCell& cell = tree.active(static_cast<int>(index));
+        const Cell& cell = graph.cell(static_cast<int>(index));
         const int robot = owner[index];
         if (robot < 0) {
             unreachableCells.push_back(static_cast<int>(index));
         } else {
             cellsOfRobot[static_cast<std::size_t>(robot)].push_back(static_cast<int>(index));
-            areaOfRobot[static_cast<std::size_t>(robot)] += cell.size * cell.size;
+            areaOfRobot[static_cast<std::size_t>(robot)] += cell.size * cell.size * cell.freeSubCellCount() / 4.0;
         }
     }
 
     PlanFeatures features;
     for (int robot = 0; robot < robots; ++robot) {
         const auto r = static_cast<std::size_t>(robot);
-        auto region = dissolve(tree, cellsOfRobot[r], metresPerUnit);
+        auto region = dissolve(graph, cellsOfRobot[r], metresPerUnit);
         if (!region) return Result<PlanFeatures>::failure("robot " + std::to_string(robot) + " region: " + region.error());
         RegionFeature feature;
         feature.robot = robot;
         feature.geometry = std::move(region.value());
         feature.cells = static_cast<int>(cellsOfRobot[r].size());
         feature.areaSquareMetres = areaOfRobot[r];
-        if (r < plan.allocation.costSeconds.size()) feature.costSeconds = plan.allocation.costSeconds[r];
+        if (r < plan.regions.costSeconds.size()) feature.costSeconds = plan.regions.costSeconds[r];
         else if (r < plan.metrics.robots.size()) feature.costSeconds = plan.metrics.robots[r].costSeconds;
         features.regions.push_back(std::move(feature));
     }
@@ -114,21 +130,21 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
         features.starts.push_back(std::move(start));
     }
     // Robots without a path still get their start: the centre of their start cell.
-    for (std::size_t robot = 0; robot < plan.allocation.startCell.size(); ++robot) {
+    for (std::size_t robot = 0; robot < plan.regions.startCell.size(); ++robot) {
         const bool hasStart = std::any_of(features.starts.begin(), features.starts.end(),
                                           [&](const StartFeature& start) { return start.robot == static_cast<int>(robot); });
-        const int cell = plan.allocation.startCell[robot];
-        if (hasStart || cell < 0 || static_cast<std::size_t>(cell) >= tree.activeCount()) continue;
+        const int cell = plan.regions.startCell[robot];
+        if (hasStart || cell < 0 || static_cast<std::size_t>(cell) >= graph.size()) continue;
         StartFeature start;
         start.robot = static_cast<int>(robot);
-        start.geometry = std::make_unique<OGRPoint>(tree.active(cell).centreX() / metresPerUnit, tree.active(cell).centreY() / metresPerUnit);
+        start.geometry = std::make_unique<OGRPoint>(graph.cell(cell).centreX() / metresPerUnit, graph.cell(cell).centreY() / metresPerUnit);
         features.starts.push_back(std::move(start));
     }
     std::sort(features.starts.begin(), features.starts.end(),
               [](const StartFeature& a, const StartFeature& b) { return a.robot < b.robot; });
 
     if (!unreachableCells.empty()) {
-        auto dissolved = dissolve(tree, unreachableCells, metresPerUnit);
+        auto dissolved = dissolve(graph, unreachableCells, metresPerUnit);
         if (!dissolved) return Result<PlanFeatures>::failure("unreachable cells: " + dissolved.error());
         const double squareMetresPerUnit = metresPerUnit * metresPerUnit;
         const auto addPart = [&](const OGRPolygon& polygon) {

@@ -46,9 +46,9 @@ struct PlanFeatures {
 };
 
 [[nodiscard]] Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit);
-// The square of one quadtree cell in CRS units, with corners snapped to the bottom-level grid so that
+// The square of one cell in CRS units, its corners computed from its placement on the bottom grid so that
 // neighbouring cells share exactly the same edge coordinates.
-[[nodiscard]] std::unique_ptr<OGRPolygon> cellSquare(const QuadTree& tree, const QuadCell& cell, double metresPerUnit);
+[[nodiscard]] std::unique_ptr<OGRPolygon> cellSquare(const CellGraph& graph, const Cell& cell, double metresPerUnit);
 // Number of robots the plan describes.
 [[nodiscard]] int robotCount(const Plan& plan);
 

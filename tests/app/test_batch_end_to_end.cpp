@@ -1,5 +1,5 @@
 #include "core/model/ClassTable.hpp"
-#include "core/planners/Planner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/model/ProgressReporter.hpp"
 #include "io/ClassTableSources.hpp"
@@ -165,11 +165,11 @@ void TestBatchEndToEnd::syntheticSampleNeedsThreeLevels() {
     const auto planner = mcpp::makePlanner(problem.settings.planner);
     QVERIFY(planner != nullptr);
     const auto plan = planner->plan(problem, mcpp::ProgressReporter());
-    QCOMPARE(plan.quadTree.levels, 3);
-    QCOMPARE(plan.quadTree.fovMin, 5.0);
+    QCOMPARE(plan.cells.frame().levels, 3);
+    QCOMPARE(plan.cells.frame().bottomCellSize, 10.0);
     QSet<int> levelsWithActiveCells;
-    for (const int cell : plan.quadTree.activeCells) {
-        levelsWithActiveCells.insert(plan.quadTree.cells[static_cast<std::size_t>(cell)].level);
+    for (const auto& cell : plan.cells.cells()) {
+        levelsWithActiveCells.insert(cell.level);
     }
     QCOMPARE(levelsWithActiveCells, (QSet<int>{1, 2, 3}));
 }

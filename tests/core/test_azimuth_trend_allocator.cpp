@@ -2,6 +2,7 @@
 #include "core/planners/MlctPlanner.hpp"
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
+#include "core/decomposition/QuadTreeDecomposition.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -17,11 +18,11 @@ namespace {
 // Runs the stages up to allocation and packs them into a plan for the shared checkers.
 Plan allocateOnly(const PlanningProblem& problem) {
     Plan plan;
-    plan.quadTree = QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings);
-    plan.topology = NeighbourTopologyBuilder{}.build(plan.quadTree);
-    std::vector<MapPoint> starts = problem.starts;
-    const auto startCells = locateStartCells(plan.quadTree, problem, starts, plan.warnings);
-    plan.allocation = AzimuthTrendAllocator{}.allocate(plan.quadTree, plan.topology, startCells, problem.settings, {});
+    const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings);
+    plan.cells = cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
+    std::vector<int> startCells;
+    for (const MapPoint& start : problem.starts) startCells.push_back(plan.cells.cellAt(start));
+    plan.regions = AzimuthTrendAllocator{}.allocate(plan.cells, startCells, problem.settings, {});
     return plan;
 }
 
@@ -52,7 +53,7 @@ private slots:
         problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 39, 0)};
         const Plan plan = allocateOnly(problem);
         QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
-        QCOMPARE(cellsPerRobot(plan.allocation), (std::vector<int>{20, 20}));
+        QCOMPARE(cellsPerRobot(plan.regions), (std::vector<int>{20, 20}));
     }
 
     // A river (a column of water) splits the map; both robots start west of it, so the east is unreachable.
@@ -63,16 +64,16 @@ private slots:
         problem.starts = {test::pixelCentre(problem.grid, 1, 1), test::pixelCentre(problem.grid, 5, 18)};
         const Plan plan = allocateOnly(problem);
         QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
-        const auto counts = cellsPerRobot(plan.allocation);
+        const auto counts = cellsPerRobot(plan.regions);
         QCOMPARE(counts[0] + counts[1], 12 * 20);
         QCOMPARE(std::abs(counts[0] - counts[1]), 0);
         int unreachable = 0;
-        for (int robot : plan.allocation.robotOfCell) unreachable += robot < 0 ? 1 : 0;
+        for (int robot : plan.regions.robotOfCell) unreachable += robot < 0 ? 1 : 0;
         QCOMPARE(unreachable, 7 * 20);
         // With a robot on each bank every cell is covered.
         problem.starts[1] = test::pixelCentre(problem.grid, 16, 10);
         const Plan both = allocateOnly(problem);
-        QCOMPARE(cellsPerRobot(both.allocation), (std::vector<int>{12 * 20, 7 * 20}));
+        QCOMPARE(cellsPerRobot(both.regions), (std::vector<int>{12 * 20, 7 * 20}));
     }
 
     // A robot boxed into a corner by another grows by taking border cells from it.
@@ -82,7 +83,7 @@ private slots:
                           test::pixelCentre(problem.grid, 29, 29)};
         const Plan plan = allocateOnly(problem);
         QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
-        const auto counts = cellsPerRobot(plan.allocation);
+        const auto counts = cellsPerRobot(plan.regions);
         for (int count : counts) QVERIFY2(std::abs(count - 300) <= 1, qPrintable(QString::number(count)));
     }
 
@@ -104,14 +105,14 @@ private slots:
             const Plan plan = allocateOnly(problem);
             QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
             // Balanced to within one cell of the mean wherever the regions can trade cells.
-            const auto counts = cellsPerRobot(plan.allocation);
+            const auto counts = cellsPerRobot(plan.regions);
             int reachable = 0;
             for (int count : counts) reachable += count;
             const double mean = static_cast<double>(reachable) / robots;
             const int largest = *std::max_element(counts.begin(), counts.end());
             QVERIFY2(largest <= std::ceil(mean) + 1, qPrintable(QString("%1 robots: largest region %2 cells, mean %3")
                                                                     .arg(robots).arg(largest).arg(mean)));
-            QVERIFY(maximumOverMean(plan.allocation) < 1.03);
+            QVERIFY(maximumOverMean(plan.regions) < 1.03);
         }
     }
 
@@ -124,7 +125,7 @@ private slots:
         spec.robots = 6;
         spec.seed = 11;
         const auto problem = test::randomProblem(spec);
-        QCOMPARE(allocateOnly(problem).allocation.robotOfCell, allocateOnly(problem).allocation.robotOfCell);
+        QCOMPARE(allocateOnly(problem).regions.robotOfCell, allocateOnly(problem).regions.robotOfCell);
     }
 };
 

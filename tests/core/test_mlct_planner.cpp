@@ -1,4 +1,5 @@
 #include "core/planners/MlctPlanner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "core/model/PlanningError.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -51,7 +52,7 @@ private slots:
         auto problem = lakeProblem();
         problem.starts[1] = test::pixelCentre(problem.grid, 4, 4);
         expectError(problem, PlanningError::Kind::StartOnObstacle, "robot 1 start (500045");
-        expectError(problem, PlanningError::Kind::StartOnObstacle, "(water, class 99)");
+        expectError(problem, PlanningError::Kind::StartOnObstacle, "class 99 (water)");
     }
 
     void startOutsideIsNamed() {
@@ -88,8 +89,9 @@ private slots:
         problem.starts[1] = test::pixelCentre(problem.grid, 4, 4);
         problem.settings.snapStartsToFreeCells = true;
         const Plan plan = MlctPlanner{}.plan(problem, {});
-        QCOMPARE(plan.warnings.size(), std::size_t{1});
-        QVERIFY(plan.warnings[0].find("moved to") != std::string::npos);
+        QCOMPARE(plan.warnings().size(), std::size_t{1});
+        QCOMPARE(plan.issues.front().code, std::string("start-moved"));
+        QVERIFY(plan.warnings()[0].find("moved to") != std::string::npos);
         QVERIFY(test::checkRegions(plan).empty());
     }
 
@@ -121,7 +123,7 @@ private slots:
         const auto problem = test::randomProblem(spec);
         const Plan first = MlctPlanner{}.plan(problem, {});
         const Plan second = MlctPlanner{}.plan(problem, {});
-        QCOMPARE(first.allocation.robotOfCell, second.allocation.robotOfCell);
+        QCOMPARE(first.regions.robotOfCell, second.regions.robotOfCell);
         for (std::size_t robot = 0; robot < first.paths.size(); ++robot) {
             QCOMPARE(first.paths[robot].waypoints.size(), second.paths[robot].waypoints.size());
             QCOMPARE(first.paths[robot].lengthMetres, second.paths[robot].lengthMetres);

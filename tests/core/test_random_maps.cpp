@@ -1,3 +1,4 @@
+#include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -33,7 +34,9 @@ private slots:
         } catch (const std::exception& error) {
             QFAIL(error.what());
         }
-        const auto violations = test::checkAllInvariants(problem, plan);
+        auto violations = test::checkAllInvariants(problem, plan);
+        const auto tiling = test::checkQuadTreeTiling(problem, QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings));
+        violations.insert(violations.end(), tiling.begin(), tiling.end());
         QVERIFY2(violations.empty(), qPrintable(QString::fromStdString(test::describe(violations))));
         QVERIFY(plan.metrics.ratio >= 0.9);
         QVERIFY(plan.metrics.coveredFraction > 0.0 && plan.metrics.coveredFraction <= 1.0 + 1e-9);

@@ -1,4 +1,5 @@
 #include "core/planners/MlctPlanner.hpp"
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -79,10 +80,10 @@ private slots:
                                       {3, "road", 0, 3.0, 20.0, true}, {9, "pond", 0, 0.0, 5.0, false}});
         problem.starts = {{7.0, -7.0}, {70.0, -70.0}};
         const Plan plan = planOf(problem);
-        QCOMPARE(plan.quadTree.levels, 3);
+        QCOMPARE(plan.cells.frame().levels, 3);
         QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
         std::set<int> levels;
-        for (int index : plan.quadTree.activeCells) levels.insert(plan.quadTree.cells[static_cast<std::size_t>(index)].level);
+        for (const Cell& cell : plan.cells.cells()) levels.insert(cell.level);
         QCOMPARE(levels.size(), std::size_t{3});
     }
 };

@@ -11,24 +11,27 @@
 
 namespace mcpp::test {
 
-inline QuadCell makeCell(int level, int row, int column, double minX, double minY, double size, CellState state) {
-    QuadCell cell;
-    cell.level = level;
-    cell.row = row;
+inline Cell makeCell(const GridFrame& frame, int column, int row, int span, std::int32_t classValue, double speed) {
+    Cell cell;
     cell.column = column;
-    cell.minX = minX;
-    cell.minY = minY;
-    cell.size = size;
-    cell.state = state;
+    cell.row = row;
+    cell.span = span;
+    cell.level = span == 1 ? 2 : 1;
+    cell.minX = frame.x(column);
+    cell.size = span * frame.bottomCellSize;
+    cell.minY = frame.y(row) - cell.size;
+    cell.classValue = classValue;
+    cell.speedMetresPerSecond = speed;
+    cell.passableAreaSquareMetres = cell.size * cell.size;
     return cell;
 }
 
-inline Waypoint makeWaypoint(double x, double y, int activeCell, std::int32_t classValue, double speed, double fov,
+inline Waypoint makeWaypoint(double x, double y, int cell, std::int32_t classValue, double speed, double fov,
                              double seconds) {
     Waypoint waypoint;
     waypoint.x = x;
     waypoint.y = y;
-    waypoint.activeCell = activeCell;
+    waypoint.cell = cell;
     waypoint.classValue = classValue;
     waypoint.speedMetresPerSecond = speed;
     waypoint.fieldOfViewMetres = fov;
@@ -39,34 +42,22 @@ inline Waypoint makeWaypoint(double x, double y, int activeCell, std::int32_t cl
 inline Plan makeFixturePlan(double originX = 301900.0, double originY = 4154080.0) {
     Plan plan;
     plan.planner = "fixture";
-    QuadTree& tree = plan.quadTree;
-    tree.levels = 2;
-    tree.fovMin = 5.0;
-    tree.topCellSize = 20.0;
-    tree.originX = originX;
-    tree.originY = originY;
-    tree.topColumns = 2;
-    tree.topRows = 1;
-    const double top = originY - 20.0;
-    tree.cells.push_back(makeCell(1, 0, 0, originX, top, 20.0, CellState::Auxiliary));           // 0
-    tree.cells.push_back(makeCell(1, 0, 1, originX + 20.0, top, 20.0, CellState::Active));       // 1
-    tree.cells.push_back(makeCell(2, 0, 0, originX, top + 10.0, 10.0, CellState::Active));       // 2 NW
-    tree.cells.push_back(makeCell(2, 0, 1, originX + 10.0, top + 10.0, 10.0, CellState::Active)); // 3 NE
-    tree.cells.push_back(makeCell(2, 1, 1, originX + 10.0, top, 10.0, CellState::Blocked));      // 4 SE
-    tree.cells.push_back(makeCell(2, 1, 0, originX, top, 10.0, CellState::Active));              // 5 SW
-    tree.cells[0].children = {2, 3, 4, 5};
-    for (int child = 2; child <= 5; ++child) tree.cells[static_cast<std::size_t>(child)].parent = 0;
-    tree.activeCells = {2, 3, 5, 1};
-    for (std::size_t i = 0; i < tree.activeCells.size(); ++i) {
-        QuadCell& cell = tree.cells[static_cast<std::size_t>(tree.activeCells[i])];
-        cell.activeIndex = static_cast<int>(i);
-        cell.classValue = i == 3 ? 6 : 4;
-        cell.speedMetresPerSecond = i == 3 ? 1.5 : 0.5;
-    }
+    GridFrame frame;
+    frame.originX = originX;
+    frame.originY = originY;
+    frame.bottomCellSize = 10.0;
+    frame.columns = 4;
+    frame.rows = 2;
+    frame.levels = 2;
+    // Cells 0 NW, 1 NE, 2 SW of the split top cell (its SE quarter is blocked: no cell), 3 the 20 m cell.
+    std::vector<Cell> cells{makeCell(frame, 0, 0, 1, 4, 0.5), makeCell(frame, 1, 0, 1, 4, 0.5),
+                            makeCell(frame, 0, 1, 1, 4, 0.5), makeCell(frame, 2, 0, 2, 6, 1.5)};
+    plan.cells = CellGraph(frame, std::move(cells), NeighbourTopology({0, 2, 4, 5, 6}, {1, 2, 0, 3, 0, 1}));
+    plan.cells.passableAreaSquareMetres = 700.0;
 
-    plan.allocation.robotOfCell = {0, 0, -1, 1};
-    plan.allocation.startCell = {0, 3};
-    plan.allocation.costSeconds = {80.0, 53.3};
+    plan.regions.robotOfCell = {0, 0, -1, 1};
+    plan.regions.startCell = {0, 3};
+    plan.regions.costSeconds = {80.0, 53.3};
 
     // Robot 0: through NW and NE sub-cell centres; a straight run of three points, then back.
     CoveragePath first;
@@ -110,7 +101,7 @@ inline Plan makeFixturePlan(double originX = 301900.0, double originY = 4154080.
     metrics.unreachableAreaSquareMetres = 100.0;
     metrics.repeatedFraction = 0.05;
     metrics.stageMilliseconds = {{"quadtree", 1.5}, {"allocation", 2.25}, {"paths", 0.75}};
-    plan.warnings = {"fixture warning"};
+    plan.issues = {{IssueSeverity::Warning, "fixture", "fixture warning"}};
     return plan;
 }
 

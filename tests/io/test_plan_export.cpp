@@ -103,7 +103,7 @@ private slots:
                 const auto& metrics = plan_.metrics.robots[static_cast<std::size_t>(robot)];
                 QCOMPARE(feature->GetFieldAsDouble("area_m2"), metrics.areaSquareMetres);
                 QCOMPARE(feature->GetFieldAsInteger("cells"), metrics.cells);
-                QCOMPARE(feature->GetFieldAsDouble("cost_s"), plan_.allocation.costSeconds[static_cast<std::size_t>(robot)]);
+                QCOMPARE(feature->GetFieldAsDouble("cost_s"), plan_.regions.costSeconds[static_cast<std::size_t>(robot)]);
                 QVERIFY(std::abs(areaInCrs(*geometry, reference_) - metrics.areaSquareMetres) < 0.01);
             } else if (kind == "path") {
                 const CoveragePath& coverage = plan_.paths[static_cast<std::size_t>(robot)];
@@ -189,13 +189,13 @@ private slots:
             }
         }
         for (auto& feature : *dataset->GetLayerByName("cells")) {
-            const int index = feature->GetFieldAsInteger("active_index");
-            const QuadCell& cell = plan_.quadTree.active(index);
+            const int index = feature->GetFieldAsInteger("cell");
+            const Cell& cell = plan_.cells.cell(index);
             QCOMPARE(feature->GetFieldAsInteger("level"), cell.level);
             QCOMPARE(feature->GetFieldAsInteger("class"), cell.classValue);
             QCOMPARE(feature->GetFieldAsDouble("fov"), cell.size / 2);
             QCOMPARE(feature->GetFieldAsDouble("speed"), cell.speedMetresPerSecond);
-            QCOMPARE(feature->GetFieldAsInteger("robot"), plan_.allocation.robotOfCell[static_cast<std::size_t>(index)]);
+            QCOMPARE(feature->GetFieldAsInteger("robot"), plan_.regions.robotOfCell[static_cast<std::size_t>(index)]);
             QCOMPARE(feature->GetGeometryRef()->toPolygon()->get_Area(), cell.size * cell.size);
         }
         // Writing again replaces the file.
@@ -287,6 +287,11 @@ private slots:
         const QJsonObject timings = report["timings_ms"].toObject();
         QCOMPARE(timings.size(), 3);
         QCOMPARE(timings["allocation"].toDouble(), 2.25);
+        const QJsonArray issues = report["issues"].toArray();
+        QCOMPARE(issues.size(), 1);
+        QCOMPARE(issues[0].toObject()["code"].toString(), QString("fixture"));
+        QCOMPARE(issues[0].toObject()["severity"].toString(), QString("warning"));
+        QCOMPARE(report["warnings"].toArray()[0].toString(), QString("fixture warning"));
 
         const std::string csv = file("report.csv");
         QVERIFY(writeReportCsv(context(), csv).ok());

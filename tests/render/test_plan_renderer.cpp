@@ -95,19 +95,22 @@ private slots:
 
     void tintsRegionsAndHatchesUnreachableCells() {
         Plan plan;
-        plan.quadTree.levels = 1;
-        QuadCell owned;
+        GridFrame frame;
+        frame.originX = 1000.0;
+        frame.originY = 5000.0;
+        frame.bottomCellSize = 100.0;
+        frame.columns = 2;
+        frame.rows = 1;
+        Cell owned;
         owned.minX = 1000.0;
         owned.minY = 4900.0;
         owned.size = 100.0;
-        owned.state = CellState::Active;
-        owned.activeIndex = 0;
-        QuadCell lost = owned;
+        owned.speedMetresPerSecond = 1.0;
+        Cell lost = owned;
+        lost.column = 1;
         lost.minX = 1100.0;
-        lost.activeIndex = 1;
-        plan.quadTree.cells = {owned, lost};
-        plan.quadTree.activeCells = {0, 1};
-        plan.allocation.robotOfCell = {1, -1};
+        plan.cells = CellGraph(frame, {owned, lost}, NeighbourTopology({0, 1, 2}, {1, 0}));
+        plan.regions.robotOfCell = {1, -1};
         render::MapLayers layers;
         layers.quadTree = false;
         const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);

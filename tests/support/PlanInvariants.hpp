@@ -1,21 +1,40 @@
 #pragma once
 
+#include "core/decomposition/QuadTree.hpp"
 #include "core/model/Plan.hpp"
 #include "core/model/PlanningProblem.hpp"
+#include "core/planners/PlannerDescription.hpp"
 
 #include <string>
 #include <vector>
 
 namespace mcpp::test {
 
-// The invariants of spec section 7, shared by every planner test. Each checker returns the violations
-// found (empty when the plan holds), each naming the cell, robot or waypoint concerned.
-[[nodiscard]] std::vector<std::string> checkTiling(const PlanningProblem& problem, const Plan& plan);
-[[nodiscard]] std::vector<std::string> checkRegions(const Plan& plan);
-[[nodiscard]] std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& plan);
+// The invariants of spec section 7, shared by every planner test and read from the planner-neutral plan
+// alone. Each checker returns the violations found (empty when the plan holds), each naming the cell,
+// robot or waypoint concerned. Where a planner promises less (PlannerPromises), less is checked.
+
+// Cells lie on the frame's bottom grid, never overlap and have a positive speed; neighbour lists are
+// symmetric, list no cell twice and name exactly the cells sharing a border of positive length.
+[[nodiscard]] std::vector<std::string> checkCells(const Plan& plan);
+// Every cell connected to a start has a robot, no other cell has one; regions connected and holding their
+// start cell where promised.
+[[nodiscard]] std::vector<std::string> checkRegions(const Plan& plan, const PlannerPromises& promises = {});
+// Paths begin at their start, closed ones return, each step stays in one cell or crosses into a neighbour,
+// no waypoint leaves the robot's cells or enters a blocked sub-cell, every free sub-cell centre of every
+// region is passed (by its own robot where promised), and the repeated visits reported are the ones made.
+[[nodiscard]] std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& plan,
+                                                  const PlannerPromises& promises = {});
+// Times equal the sum of segment length / speed; makespan, lower bound and ratio follow from them; region
+// costs add up to the total.
 [[nodiscard]] std::vector<std::string> checkTimes(const Plan& plan);
 // All of the above.
-[[nodiscard]] std::vector<std::string> checkAllInvariants(const PlanningProblem& problem, const Plan& plan);
+[[nodiscard]] std::vector<std::string> checkAllInvariants(const PlanningProblem& problem, const Plan& plan,
+                                                          const PlannerPromises& promises = {});
+
+// Quadtree only: leaves tile the bottom grid exactly once and, with no purity tolerance, an active cell above
+// the bottom holds only classes whose rounded FOV is at least its sub-cell side.
+[[nodiscard]] std::vector<std::string> checkQuadTreeTiling(const PlanningProblem& problem, const QuadTree& tree);
 
 // At most the first `limit` violations, one per line, for a test failure message.
 [[nodiscard]] std::string describe(const std::vector<std::string>& violations, std::size_t limit = 10);

@@ -1,0 +1,99 @@
+#include "core/coverage/PathMeasurement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace mcpp {
+namespace {
+
+// The (cell, sub-cell) a waypoint marks when it sits on a sub-cell centre; cell -1 otherwise.
+std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& graph) {
+    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size()) return {-1, 0};
+    const Cell& cell = graph.cell(waypoint.cell);
+    const MapPoint point{waypoint.x, waypoint.y};
+    const SubCell subCell = cell.subCellAt(point);
+    const MapPoint centre = cell.subCellCentre(subCell);
+    if (std::hypot(centre.x - point.x, centre.y - point.y) > 1e-6 * cell.size) return {-1, 0};
+    return {waypoint.cell, static_cast<int>(subCell)};
+}
+
+} // namespace
+
+int countTurns(const std::vector<Waypoint>& waypoints) {
+    int turns = 0;
+    double previousX = 0.0;
+    double previousY = 0.0;
+    bool havePrevious = false;
+    for (std::size_t i = 1; i < waypoints.size(); ++i) {
+        const double dx = waypoints[i].x - waypoints[i - 1].x;
+        const double dy = waypoints[i].y - waypoints[i - 1].y;
+        const double length = std::sqrt(dx * dx + dy * dy);
+        if (length < 1e-9) continue;
+        const double ux = dx / length;
+        const double uy = dy / length;
+        if (havePrevious &&
+            std::abs(ux * previousY - uy * previousX) + std::max(0.0, -(ux * previousX + uy * previousY)) > 1e-6)
+            ++turns;
+        previousX = ux;
+        previousY = uy;
+        havePrevious = true;
+    }
+    return turns;
+}
+
+int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph) {
+    std::vector<std::pair<int, int>> visits;
+    visits.reserve(path.waypoints.size());
+    for (const Waypoint& waypoint : path.waypoints) {
+        const auto visited = subCellVisited(waypoint, graph);
+        if (visited.first >= 0) visits.push_back(visited);
+    }
+    if (visits.empty()) return 0;
+    const bool returnsToFirst = path.closed && visits.size() > 1 && visits.back() == visits.front();
+    std::sort(visits.begin(), visits.end());
+    const auto distinct = static_cast<int>(std::unique(visits.begin(), visits.end()) - visits.begin());
+    int repeats = static_cast<int>(visits.size()) - distinct;
+    if (returnsToFirst) --repeats; // the return that closes the tour
+    return repeats;
+}
+
+void measurePath(CoveragePath& path, const CellGraph& graph) {
+    double length = 0.0;
+    double time = 0.0;
+    if (!path.waypoints.empty()) path.waypoints.front().cumulativeSeconds = 0.0;
+    for (std::size_t i = 1; i < path.waypoints.size(); ++i) {
+        const Waypoint& from = path.waypoints[i - 1];
+        Waypoint& to = path.waypoints[i];
+        const double dx = to.x - from.x;
+        const double dy = to.y - from.y;
+        const double segment = std::sqrt(dx * dx + dy * dy);
+        length += segment;
+        time += segment / 2.0 / from.speedMetresPerSecond + segment / 2.0 / to.speedMetresPerSecond;
+        to.cumulativeSeconds = time;
+    }
+    path.lengthMetres = length;
+    path.timeSeconds = time;
+    path.turns = countTurns(path.waypoints);
+    path.repeatedSubCellVisits = countRepeatedSubCellVisits(path, graph);
+}
+
+CoveragePath pathFromWalk(int robot, MapPoint start, std::vector<Waypoint> walk, bool closed) {
+    CoveragePath path;
+    path.robot = robot;
+    path.closed = closed;
+    if (walk.empty()) return path;
+    const Waypoint first = walk.front();
+    const bool startIsOnWalk = std::hypot(first.x - start.x, first.y - start.y) < 1e-9;
+    if (!startIsOnWalk) {
+        Waypoint origin = first;
+        origin.x = start.x;
+        origin.y = start.y;
+        path.waypoints.push_back(origin);
+    }
+    path.waypoints.insert(path.waypoints.end(), walk.begin(), walk.end());
+    if (closed && !startIsOnWalk) path.waypoints.push_back(path.waypoints.front());
+    return path;
+}
+
+} // namespace mcpp

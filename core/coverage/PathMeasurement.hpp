@@ -1,0 +1,25 @@
+#pragma once
+
+#include "core/model/CellGraph.hpp"
+#include "core/model/CoveragePath.hpp"
+
+#include <vector>
+
+namespace mcpp {
+
+// Direction changes along a polyline; steps of zero length are skipped and a U-turn counts once.
+[[nodiscard]] int countTurns(const std::vector<Waypoint>& waypoints);
+
+// Sub-cell centres a path passes again after its first pass, not counting a closed tour's return to the
+// sub-cell it began in. Points that are no sub-cell centre (a start point, say) are not visits.
+[[nodiscard]] int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph);
+
+// Fills length, time, cumulative times, turns and repeated visits from the waypoints. Each segment is
+// travelled half at the speed of the waypoint it leaves and half at the speed of the one it reaches.
+void measurePath(CoveragePath& path, const CellGraph& graph);
+
+// A robot's path from a walk through sub-cell centres: its start point first when the walk does not begin
+// there and, for a closed tour, the way back to it at the end. Not yet measured.
+[[nodiscard]] CoveragePath pathFromWalk(int robot, MapPoint start, std::vector<Waypoint> walk, bool closed);
+
+} // namespace mcpp

@@ -1,0 +1,149 @@
+#include "core/coverage/TreeCircumnavigation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mcpp {
+namespace {
+
+// In a slot sequence, items >= 0 are tree neighbours and items < 0 sub-cells: -1 - SubCell.
+MapPoint subCellCentre(const Cell& cell, int item) { return cell.subCellCentre(static_cast<SubCell>(-1 - item)); }
+
+MapPoint nearestSubCell(const Cell& cell, MapPoint point) {
+    MapPoint best{};
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (SubCell subCell : subCellsCounterClockwise) {
+        const MapPoint centre = cell.subCellCentre(subCell);
+        const double d = std::hypot(centre.x - point.x, centre.y - point.y);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = centre;
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+// Appends the cell's sub-cells and tree neighbours, counter-clockwise round it from the north-west.
+void TreeCircumnavigation::appendSlots(const SpanningTree& tree, int node, std::vector<int>& out) {
+    const Cell& self = graph_.cell(tree.cellOf(node));
+    const double tolerance = 1e-9 * self.size;
+    for (auto& side : sides_) side.clear(); // west, south, east, north: (position along the walk, neighbour)
+    for (int neighbour : tree.neighbours(node)) {
+        const Cell& other = graph_.cell(tree.cellOf(neighbour));
+        if (other.maxX() <= self.minX + tolerance) sides_[0].emplace_back(-other.centreY(), neighbour);
+        else if (other.maxY() <= self.minY + tolerance) sides_[1].emplace_back(other.centreX(), neighbour);
+        else if (other.minX >= self.maxX() - tolerance) sides_[2].emplace_back(other.centreY(), neighbour);
+        else sides_[3].emplace_back(-other.centreX(), neighbour);
+    }
+    for (int side = 0; side < 4; ++side) {
+        out.push_back(-1 - side); // the corner sub-cell before this side: NW, SW, SE, NE
+        auto& list = sides_[static_cast<std::size_t>(side)];
+        if (list.size() > 1) std::sort(list.begin(), list.end());
+        for (const auto& entry : list) out.push_back(entry.second);
+    }
+}
+
+bool TreeCircumnavigation::adjacent(const SpanningTree& tree, int a, int b) const {
+    return a == b || graph_.areNeighbours(tree.cellOf(a), tree.cellOf(b));
+}
+
+Waypoint TreeCircumnavigation::waypointAt(const SpanningTree& tree, int node, MapPoint point) const {
+    const int id = tree.cellOf(node);
+    const Cell& cell = graph_.cell(id);
+    return {point.x, point.y, id, cell.classValue, cell.speedMetresPerSecond, cell.fieldOfView(), 0.0};
+}
+
+void TreeCircumnavigation::emit(const SpanningTree& tree, std::vector<Waypoint>& path, int& previousNode, int node,
+                                MapPoint point) {
+    if (previousNode >= 0 && !adjacent(tree, previousNode, node)) {
+        // The tree path between the two cells, without its ends.
+        std::vector<int> up;
+        std::vector<int> down;
+        int a = previousNode;
+        int b = node;
+        while (tree.depth(a) > tree.depth(b)) up.push_back(a = tree.parent(a));
+        while (tree.depth(b) > tree.depth(a)) down.push_back(b = tree.parent(b));
+        while (a != b) {
+            up.push_back(a = tree.parent(a));
+            down.push_back(b = tree.parent(b));
+        }
+        if (!up.empty() && !down.empty() && up.back() == down.back()) down.pop_back();
+        std::vector<int> between(up.begin(), up.end());
+        between.insert(between.end(), down.rbegin(), down.rend());
+        std::erase(between, node);
+        std::erase(between, previousNode);
+        int last = previousNode;
+        for (std::size_t i = 0; i < between.size(); ++i) {
+            const int next = i + 1 < between.size() ? between[i + 1] : node;
+            if (adjacent(tree, last, next)) continue; // a bridge the walk does not need
+            const Waypoint& from = path.back();
+            path.push_back(waypointAt(tree, between[i], nearestSubCell(graph_.cell(tree.cellOf(between[i])), {from.x, from.y})));
+            ++bridgeVisits_;
+            last = between[i];
+        }
+    }
+    path.push_back(waypointAt(tree, node, point));
+    previousNode = node;
+}
+
+std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPoint start, bool closed) {
+    // Frames keep their items in one arena, used as a stack: no allocation per cell.
+    struct Frame {
+        int node;
+        std::size_t begin; // first item in the arena
+        std::size_t end;
+        std::size_t next;
+    };
+    std::vector<Waypoint> path;
+    path.reserve(tree.size() * 4 + 2);
+    bridgeVisits_ = 0;
+    if (tree.size() == 0) return path;
+    int previousNode = -1;
+    std::vector<int>& arena = arena_;
+    arena.clear();
+    const int root = tree.root();
+    const Cell& rootCell = graph_.cell(tree.cellOf(root));
+    appendSlots(tree, root, arena);
+    std::size_t firstItem = 0;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < arena.size(); ++i) {
+        if (arena[i] >= 0) continue;
+        const MapPoint centre = subCellCentre(rootCell, arena[i]);
+        const double d = std::hypot(centre.x - start.x, centre.y - start.y);
+        if (d < bestDistance - 1e-12) {
+            bestDistance = d;
+            firstItem = i;
+        }
+    }
+    std::rotate(arena.begin(), arena.begin() + static_cast<std::ptrdiff_t>(firstItem), arena.end());
+    std::vector<Frame> stack;
+    stack.push_back({root, 0, arena.size(), 0});
+    while (!stack.empty()) {
+        Frame& frame = stack.back();
+        if (frame.next == frame.end - frame.begin) {
+            arena.resize(frame.begin);
+            stack.pop_back();
+            continue;
+        }
+        const int item = arena[frame.begin + frame.next++];
+        const int node = frame.node;
+        if (item < 0) {
+            emit(tree, path, previousNode, node, subCellCentre(graph_.cell(tree.cellOf(node)), item));
+            continue;
+        }
+        // Enter the child just after this cell's place in its sequence and go round it.
+        const std::size_t begin = arena.size();
+        appendSlots(tree, item, arena);
+        const auto self = std::find(arena.begin() + static_cast<std::ptrdiff_t>(begin), arena.end(), node);
+        std::rotate(arena.begin() + static_cast<std::ptrdiff_t>(begin), self, arena.end());
+        stack.push_back({item, begin + 1, arena.size(), 0}); // skip the parent's own slot
+    }
+    // The walk may end deep in a subtree; returning goes through emit so it is bridged like any step.
+    if (closed) emit(tree, path, previousNode, root, {path.front().x, path.front().y});
+    return path;
+}
+
+} // namespace mcpp

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "core/coverage/SpanningTree.hpp"
+#include "core/model/CellGraph.hpp"
+#include "core/model/CoveragePath.hpp"
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace mcpp {
+
+// The walk round a spanning tree through the centres of every cell's four sub-cells, keeping the tree on
+// the left (counter-clockwise), as in STC (spec 5). Between cells of different sizes the walk joins the
+// nearest sub-cell centres across their shared border; where two consecutive sub-cells lie in cells that
+// do not touch (two excursions on one side of a large cell), it goes back through the cells between them.
+class TreeCircumnavigation {
+public:
+    explicit TreeCircumnavigation(const CellGraph& graph) : graph_(graph) {}
+
+    // Starts at the root cell's sub-cell nearest `start`; a closed walk ends back at that sub-cell.
+    [[nodiscard]] std::vector<Waypoint> walk(const SpanningTree& tree, MapPoint start, bool closed);
+    // Waypoints of the last walk that pass a cell again to bridge cells that do not touch.
+    [[nodiscard]] int bridgeVisits() const { return bridgeVisits_; }
+
+private:
+    void appendSlots(const SpanningTree& tree, int node, std::vector<int>& out);
+    [[nodiscard]] bool adjacent(const SpanningTree& tree, int a, int b) const;
+    [[nodiscard]] Waypoint waypointAt(const SpanningTree& tree, int node, MapPoint point) const;
+    void emit(const SpanningTree& tree, std::vector<Waypoint>& path, int& previousNode, int node, MapPoint point);
+
+    const CellGraph& graph_;
+    std::array<std::vector<std::pair<double, int>>, 4> sides_;
+    std::vector<int> arena_;
+    int bridgeVisits_ = 0;
+};
+
+} // namespace mcpp

@@ -1,0 +1,36 @@
+#include "core/decomposition/QuadTreeDecomposition.hpp"
+
+namespace mcpp {
+
+CellGraph cellGraphOfQuadTree(const QuadTree& tree, NeighbourTopology topology) {
+    GridFrame frame;
+    frame.originX = tree.originX;
+    frame.originY = tree.originY;
+    frame.bottomCellSize = 2.0 * tree.fovMin;
+    frame.levels = tree.levels;
+    frame.columns = tree.levels > 0 ? tree.columnsAt(tree.levels) : 0;
+    frame.rows = tree.levels > 0 ? tree.rowsAt(tree.levels) : 0;
+    std::vector<Cell> cells;
+    cells.reserve(tree.activeCount());
+    for (std::size_t active = 0; active < tree.activeCount(); ++active) {
+        const QuadCell& quadCell = tree.active(static_cast<int>(active));
+        Cell cell;
+        cell.span = 1 << (tree.levels - quadCell.level);
+        cell.column = quadCell.column * cell.span;
+        cell.row = quadCell.row * cell.span;
+        cell.level = quadCell.level;
+        cell.minX = quadCell.minX;
+        cell.minY = quadCell.minY;
+        cell.size = quadCell.size;
+        cell.classValue = quadCell.classValue;
+        cell.speedMetresPerSecond = quadCell.speedMetresPerSecond;
+        cell.passableAreaSquareMetres = quadCell.passableAreaSquareMetres;
+        cells.push_back(cell);
+    }
+    CellGraph graph(frame, std::move(cells), std::move(topology));
+    graph.fieldsOfView = tree.roundedFieldsOfView;
+    graph.passableAreaSquareMetres = tree.passableAreaSquareMetres;
+    return graph;
+}
+
+} // namespace mcpp

@@ -1,0 +1,65 @@
+#pragma once
+
+#include "core/model/MapPoint.hpp"
+
+#include <array>
+#include <bit>
+#include <cstdint>
+
+namespace mcpp {
+
+// The four sub-cells of a cell in the counter-clockwise order a coverage walk passes them.
+enum class SubCell : std::uint8_t { NorthWest = 0, SouthWest = 1, SouthEast = 2, NorthEast = 3 };
+inline constexpr std::array<SubCell, 4> subCellsCounterClockwise{SubCell::NorthWest, SubCell::SouthWest,
+                                                                SubCell::SouthEast, SubCell::NorthEast};
+inline constexpr std::uint8_t allSubCells = 0b1111;
+
+// One square of a planning decomposition: a quadtree leaf, or a cell of a uniform grid. A robot covers it
+// by passing the centres of its free sub-cells, whose side (half the cell's) is the robot's swath there.
+struct Cell {
+    // Placement on the decomposition's bottom grid (squares of the smallest cell side), row 0 at the north.
+    int column = 0;
+    int row = 0;
+    int span = 1;  // side in bottom cells
+    int level = 1; // quadtree level, 1 = top; 1 for a single-level grid
+    double minX = 0.0;
+    double minY = 0.0;
+    double size = 0.0; // side in metres
+    std::int32_t classValue = 0;            // majority passable land cover
+    double speedMetresPerSecond = 0.0;      // harmonic mean over its passable pixels
+    double passableAreaSquareMetres = 0.0;  // passable pixels inside its free sub-cells
+    std::uint8_t freeSubCells = allSubCells; // bit i: sub-cell i (SubCell order) may be entered
+
+    [[nodiscard]] double maxX() const { return minX + size; }
+    [[nodiscard]] double maxY() const { return minY + size; }
+    [[nodiscard]] double centreX() const { return minX + size / 2.0; }
+    [[nodiscard]] double centreY() const { return minY + size / 2.0; }
+    [[nodiscard]] double fieldOfView() const { return size / 2.0; }
+    [[nodiscard]] bool isFree(SubCell subCell) const {
+        return (freeSubCells >> static_cast<unsigned>(subCell) & 1U) != 0;
+    }
+    [[nodiscard]] int freeSubCellCount() const { return std::popcount(static_cast<unsigned>(freeSubCells)); }
+    [[nodiscard]] MapPoint subCellCentre(SubCell subCell) const {
+        const double quarter = size / 4.0;
+        switch (subCell) {
+        case SubCell::NorthWest: return {minX + quarter, maxY() - quarter};
+        case SubCell::SouthWest: return {minX + quarter, minY + quarter};
+        case SubCell::SouthEast: return {maxX() - quarter, minY + quarter};
+        case SubCell::NorthEast: break;
+        }
+        return {maxX() - quarter, maxY() - quarter};
+    }
+    // The sub-cell a point inside the cell lies in.
+    [[nodiscard]] SubCell subCellAt(MapPoint point) const {
+        const bool east = point.x >= centreX();
+        const bool north = point.y >= centreY();
+        if (north) return east ? SubCell::NorthEast : SubCell::NorthWest;
+        return east ? SubCell::SouthEast : SubCell::SouthWest;
+    }
+    // Seconds to cover it (spec 4): a coverage walk passes each free sub-cell once, a quarter of 2 x size.
+    [[nodiscard]] double coverSeconds() const {
+        return 2.0 * size * (freeSubCellCount() / 4.0) / speedMetresPerSecond;
+    }
+};
+
+} // namespace mcpp

@@ -1,0 +1,46 @@
+#pragma once
+
+#include "core/model/Cell.hpp"
+#include "core/model/GridFrame.hpp"
+#include "core/model/NeighbourTopology.hpp"
+#include "core/model/RoundedFieldOfView.hpp"
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace mcpp {
+
+// The cells a planner covers and which of them touch: the planner-neutral result of a decomposition.
+// Cells are squares on the frame's bottom grid, each aligned to a multiple of its own span; they never
+// overlap. Two cells are neighbours when they share a border of positive length.
+class CellGraph {
+public:
+    CellGraph() = default;
+    CellGraph(GridFrame frame, std::vector<Cell> cells, NeighbourTopology adjacency);
+
+    [[nodiscard]] const GridFrame& frame() const { return frame_; }
+    [[nodiscard]] std::size_t size() const { return cells_.size(); }
+    [[nodiscard]] bool empty() const { return cells_.empty(); }
+    [[nodiscard]] const Cell& cell(int id) const { return cells_[static_cast<std::size_t>(id)]; }
+    [[nodiscard]] const std::vector<Cell>& cells() const { return cells_; }
+    [[nodiscard]] std::span<const int> neighbours(int id) const { return adjacency_.of(id); }
+    [[nodiscard]] bool areNeighbours(int a, int b) const { return adjacency_.areNeighbours(a, b); }
+    [[nodiscard]] const NeighbourTopology& adjacency() const { return adjacency_; }
+    // The cell holding the point, or -1 where there is none (obstacle, outside, beyond the grid).
+    [[nodiscard]] int cellAt(MapPoint point) const;
+
+    // What the decomposition found out about the map, for reports.
+    std::vector<RoundedFieldOfView> fieldsOfView;
+    double passableAreaSquareMetres = 0.0; // every passable pixel, in a cell or not
+
+private:
+    GridFrame frame_;
+    std::vector<Cell> cells_;
+    NeighbourTopology adjacency_;
+    // Per distinct span: (row / span, column / span) packed in 64 bits -> cell, sorted, for cellAt.
+    std::vector<std::pair<int, std::vector<std::pair<std::uint64_t, int>>>> locator_;
+};
+
+} // namespace mcpp

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <string>
+
+namespace mcpp {
+
+// What a planner guarantees about every plan it makes; the invariant suite holds each planner to these.
+struct PlannerPromises {
+    bool regionsConnected = true;         // each region is connected and holds its robot's start cell
+    bool pathsCoverOwnRegion = true;      // each robot passes every free sub-cell of its own region
+    bool everyReachableCellCovered = true; // every cell connected to a start belongs to some region
+};
+
+// How a planner presents itself to the command line, mission files and the window.
+struct PlannerDescription {
+    std::string name;    // command-line and mission-file name, e.g. "mcpp-mlct"
+    std::string label;   // for people, e.g. "MCPP-MLCT"
+    std::string summary; // one line for --help and the planner list
+    bool singleRobot = false;
+    PlannerPromises promises;
+};
+
+} // namespace mcpp

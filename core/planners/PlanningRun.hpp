@@ -1,0 +1,52 @@
+#pragma once
+
+#include "core/model/Plan.hpp"
+#include "core/model/PlanningProblem.hpp"
+#include "core/model/ProgressReporter.hpp"
+
+#include <chrono>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mcpp {
+
+// One planner run in progress: the problem, the plan being filled, the starts (which snapping may move)
+// and the timing of each stage.
+class PlanningRun {
+public:
+    PlanningRun(const PlanningProblem& problem, const ProgressReporter& progress, Plan& plan)
+        : problem_(problem), progress_(progress), plan_(plan), starts_(problem.starts) {}
+
+    [[nodiscard]] const PlanningProblem& problem() const { return problem_; }
+    [[nodiscard]] const PlannerSettings& settings() const { return problem_.settings; }
+    [[nodiscard]] const ProgressReporter& progress() const { return progress_; }
+    [[nodiscard]] Plan& plan() { return plan_; }
+    [[nodiscard]] const std::vector<MapPoint>& starts() const { return starts_; }
+
+    // Runs one stage of the planner and records how long it took under its name.
+    template <typename Work>
+    auto stage(const char* name, Work&& work) {
+        progress_.throwIfCancelled();
+        const auto begin = std::chrono::steady_clock::now();
+        auto result = work();
+        const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - begin;
+        plan_.metrics.stageMilliseconds.emplace_back(name, elapsed.count());
+        return result;
+    }
+
+    // The cell of the plan's graph holding each start (spec 4): a start on no cell, or in a cell another
+    // robot already holds, is an error or, with snapping, moved to the nearest free cell with a warning.
+    [[nodiscard]] std::vector<int> locateStarts();
+    void addIssue(IssueSeverity severity, std::string code, std::string message) {
+        plan_.issues.push_back({severity, std::move(code), std::move(message)});
+    }
+
+private:
+    const PlanningProblem& problem_;
+    const ProgressReporter& progress_;
+    Plan& plan_;
+    std::vector<MapPoint> starts_;
+};
+
+} // namespace mcpp
