@@ -1,10 +1,10 @@
 #include "app/BatchRunner.hpp"
 
 #include "app/BatchFailure.hpp"
-#include "core/planners/PlannerRegistry.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/model/ProgressReporter.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/PlanExport.hpp"
 #include "render/PlanImage.hpp"
@@ -337,8 +337,9 @@ void BatchRunner::writeOutputs(const Plan& plan) {
     outputs.push_back({"plan.png",
                        [&](const std::string& path) {
                            QString error;
-                           if (render::writePlanPng(raster_.grid, classes_, plan, QString::fromStdString(path),
-                                                QSize(planImageSide, planImageSide), &error)) {
+                           if (render::writePlanPng(raster_.grid, classes_, plan,
+                                                    QString::fromStdString(path),
+                                                    QSize(planImageSide, planImageSide), &error)) {
                                return io::Status();
                            }
                            return io::Status::failure(path + ": " + error.toStdString());

@@ -4,10 +4,9 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
-
 #include <random>
 #include <set>
+#include <sys/resource.h>
 
 using namespace mcpp;
 
@@ -24,14 +23,16 @@ PlanningProblem uniformWithObstacles(int size, int robots, std::uint32_t seed) {
     std::mt19937 random(seed);
     std::bernoulli_distribution obstacle(0.15);
     std::vector<bool> blocked(static_cast<std::size_t>(size * size));
-    for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = obstacle(random);
+    for (std::size_t i = 0; i < blocked.size(); ++i)
+        blocked[i] = obstacle(random);
     auto problem = test::uniformProblem(size, size, 10.0, blocked, {});
     std::uniform_int_distribution<int> position(0, size - 1);
     std::set<std::pair<int, int>> used;
     while (static_cast<int>(problem.starts.size()) < robots) {
         const int column = position(random);
         const int row = position(random);
-        if (blocked[static_cast<std::size_t>(row * size + column)] || !used.insert({column, row}).second) continue;
+        if (blocked[static_cast<std::size_t>(row * size + column)] || !used.insert({column, row}).second)
+            continue;
         // The north-west sub-cell centre: robots start on the coverage grid, as in DARP.
         const MapPoint centre = test::pixelCentre(problem.grid, column, row);
         problem.starts.push_back({centre.x - 2.5, centre.y + 2.5});
@@ -60,11 +61,13 @@ void runPlanner(benchmark::State& state, const PlanningProblem& problem) {
     state.counters["ratio"] = plan.metrics.ratio;
     state.counters["cells"] = static_cast<double>(plan.cells.size());
     state.counters["peak_rss_mb"] = peakResidentMegabytes();
-    for (const auto& [stage, milliseconds] : plan.metrics.stageMilliseconds) state.counters[stage + "_ms"] = milliseconds;
+    for (const auto& [stage, milliseconds] : plan.metrics.stageMilliseconds)
+        state.counters[stage + "_ms"] = milliseconds;
 }
 
 void uniformGrid(benchmark::State& state) {
-    runPlanner(state, uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020));
+    runPlanner(state, uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
+                                           2020));
 }
 
 void multiCoverMap(benchmark::State& state) {
@@ -73,15 +76,8 @@ void multiCoverMap(benchmark::State& state) {
 
 } // namespace
 
-BENCHMARK(uniformGrid)
-    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(multiCoverMap)
-    ->ArgsProduct({{128}, {2, 4, 8, 16, 32}})
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(multiCoverMap)
-    ->ArgsProduct({{256, 512, 1024}, {16}})
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
+BENCHMARK(uniformGrid)->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})->Unit(benchmark::kMillisecond);
+BENCHMARK(multiCoverMap)->ArgsProduct({{128}, {2, 4, 8, 16, 32}})->Unit(benchmark::kMillisecond);
+BENCHMARK(multiCoverMap)->ArgsProduct({{256, 512, 1024}, {16}})->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();

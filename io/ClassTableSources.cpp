@@ -19,7 +19,8 @@ const std::vector<std::string> requiredColumns = {"value", "name", "speed_mps", 
 
 bool parseDouble(const std::string& text, double& value) {
     const std::string clean = trimmed(text);
-    if (clean.empty()) return false;
+    if (clean.empty())
+        return false;
     char* end = nullptr;
     value = std::strtod(clean.c_str(), &end);
     return end != nullptr && *end == '\0';
@@ -27,15 +28,19 @@ bool parseDouble(const std::string& text, double& value) {
 
 bool parseBoolean(const std::string& text, bool& value) {
     const std::string clean = internal::lowercase(trimmed(text));
-    if (clean == "true" || clean == "yes" || clean == "1") value = true;
-    else if (clean == "false" || clean == "no" || clean == "0") value = false;
-    else return false;
+    if (clean == "true" || clean == "yes" || clean == "1")
+        value = true;
+    else if (clean == "false" || clean == "no" || clean == "0")
+        value = false;
+    else
+        return false;
     return true;
 }
 
 std::string knownPresetNames() {
     std::string names;
-    for (const auto& preset : internal::presetDefinitions()) names += (names.empty() ? "" : ", ") + preset.name;
+    for (const auto& preset : internal::presetDefinitions())
+        names += (names.empty() ? "" : ", ") + preset.name;
     return names;
 }
 
@@ -43,20 +48,24 @@ std::string knownPresetNames() {
 
 std::vector<PresetInfo> classTablePresets() {
     std::vector<PresetInfo> presets;
-    for (const auto& preset : internal::presetDefinitions()) presets.push_back({preset.name, preset.description});
+    for (const auto& preset : internal::presetDefinitions())
+        presets.push_back({preset.name, preset.description});
     return presets;
 }
 
 Result<ClassTable> presetClassTable(const std::string& name) {
     for (const auto& preset : internal::presetDefinitions()) {
-        if (preset.name == name) return ClassTable(preset.classes);
+        if (preset.name == name)
+            return ClassTable(preset.classes);
     }
-    return Result<ClassTable>::failure("unknown class table preset \"" + name + "\" (known: " + knownPresetNames() + ")");
+    return Result<ClassTable>::failure("unknown class table preset \"" + name +
+                                       "\" (known: " + knownPresetNames() + ")");
 }
 
 Result<ClassTable> loadClassTableCsv(const std::string& path) {
     auto contents = internal::readWholeFile(path);
-    if (!contents) return Result<ClassTable>::failure(contents.error());
+    if (!contents)
+        return Result<ClassTable>::failure(contents.error());
     std::stringstream stream(contents.value());
     std::string line;
     std::vector<std::string> fields;
@@ -66,27 +75,37 @@ Result<ClassTable> loadClassTableCsv(const std::string& path) {
     if (!std::getline(stream, line) || trimmed(line).empty()) {
         return failure(1, "expected the header value,name,speed_mps,fov_m,passable[,color]");
     }
-    if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3); // UTF-8 byte order mark from spreadsheets
-    if (!internal::splitCsvLine(line, fields)) return failure(1, "unterminated quote");
+    if (line.rfind("\xEF\xBB\xBF", 0) == 0)
+        line.erase(0, 3); // UTF-8 byte order mark from spreadsheets
+    if (!internal::splitCsvLine(line, fields))
+        return failure(1, "unterminated quote");
 
     // Column index of each known column; -1 when absent.
     std::vector<std::string> header;
-    int valueColumn = -1, nameColumn = -1, speedColumn = -1, fovColumn = -1, passableColumn = -1, colorColumn = -1;
+    int valueColumn = -1, nameColumn = -1, speedColumn = -1, fovColumn = -1, passableColumn = -1,
+        colorColumn = -1;
     for (std::size_t i = 0; i < fields.size(); ++i) {
         const std::string column = internal::lowercase(trimmed(fields[i]));
         header.push_back(column);
         int* slot = nullptr;
-        if (column == "value") slot = &valueColumn;
-        else if (column == "name") slot = &nameColumn;
-        else if (column == "speed_mps") slot = &speedColumn;
-        else if (column == "fov_m") slot = &fovColumn;
-        else if (column == "passable") slot = &passableColumn;
-        else if (column == "color" || column == "colour") slot = &colorColumn;
+        if (column == "value")
+            slot = &valueColumn;
+        else if (column == "name")
+            slot = &nameColumn;
+        else if (column == "speed_mps")
+            slot = &speedColumn;
+        else if (column == "fov_m")
+            slot = &fovColumn;
+        else if (column == "passable")
+            slot = &passableColumn;
+        else if (column == "color" || column == "colour")
+            slot = &colorColumn;
         if (slot == nullptr) {
-            return failure(1, "column " + std::to_string(i + 1) + ": unknown column \"" + trimmed(fields[i])
-                                  + "\" (expected value,name,speed_mps,fov_m,passable and optionally color)");
+            return failure(1, "column " + std::to_string(i + 1) + ": unknown column \"" + trimmed(fields[i]) +
+                                  "\" (expected value,name,speed_mps,fov_m,passable and optionally color)");
         }
-        if (*slot >= 0) return failure(1, "column " + std::to_string(i + 1) + ": \"" + column + "\" appears twice");
+        if (*slot >= 0)
+            return failure(1, "column " + std::to_string(i + 1) + ": \"" + column + "\" appears twice");
         *slot = static_cast<int>(i);
     }
     for (const std::string& required : requiredColumns) {
@@ -100,35 +119,43 @@ Result<ClassTable> loadClassTableCsv(const std::string& path) {
     int lineNumber = 1;
     while (std::getline(stream, line)) {
         ++lineNumber;
-        if (trimmed(line).empty()) continue;
-        if (!internal::splitCsvLine(line, fields)) return failure(lineNumber, "unterminated quote");
+        if (trimmed(line).empty())
+            continue;
+        if (!internal::splitCsvLine(line, fields))
+            return failure(lineNumber, "unterminated quote");
         if (fields.size() != header.size()) {
-            return failure(lineNumber, "expected " + std::to_string(header.size()) + " fields, found "
-                                           + std::to_string(fields.size()));
+            return failure(lineNumber, "expected " + std::to_string(header.size()) + " fields, found " +
+                                           std::to_string(fields.size()));
         }
         const auto cell = [&](int column) { return trimmed(fields[static_cast<std::size_t>(column)]); };
         const auto bad = [&](int column, const std::string& what) {
-            return failure(lineNumber, "column " + header[static_cast<std::size_t>(column)] + ": \"" + cell(column) + "\" " + what);
+            return failure(lineNumber, "column " + header[static_cast<std::size_t>(column)] + ": \"" +
+                                           cell(column) + "\" " + what);
         };
         LandCoverClass entry;
         double number = 0.0;
-        if (!parseDouble(cell(valueColumn), number) || number != std::floor(number) || std::abs(number) > 2147483647.0) {
+        if (!parseDouble(cell(valueColumn), number) || number != std::floor(number) ||
+            std::abs(number) > 2147483647.0) {
             return bad(valueColumn, "is not an integer class value");
         }
         entry.value = static_cast<std::int32_t>(number);
-        if (!seen.insert(entry.value).second) return bad(valueColumn, "repeats a class value given earlier");
+        if (!seen.insert(entry.value).second)
+            return bad(valueColumn, "repeats a class value given earlier");
         entry.name = cell(nameColumn);
-        if (!parseDouble(cell(speedColumn), entry.speedMetresPerSecond) || !std::isfinite(entry.speedMetresPerSecond)
-            || entry.speedMetresPerSecond < 0.0) {
+        if (!parseDouble(cell(speedColumn), entry.speedMetresPerSecond) ||
+            !std::isfinite(entry.speedMetresPerSecond) || entry.speedMetresPerSecond < 0.0) {
             return bad(speedColumn, "is not a speed (a number >= 0 in m/s)");
         }
-        if (!parseDouble(cell(fovColumn), entry.fieldOfViewMetres) || !std::isfinite(entry.fieldOfViewMetres)) {
+        if (!parseDouble(cell(fovColumn), entry.fieldOfViewMetres) ||
+            !std::isfinite(entry.fieldOfViewMetres)) {
             return bad(fovColumn, "is not a field of view in metres");
         }
-        if (!parseBoolean(cell(passableColumn), entry.passable)) return bad(passableColumn, "is not true or false");
+        if (!parseBoolean(cell(passableColumn), entry.passable))
+            return bad(passableColumn, "is not true or false");
         if (colorColumn >= 0 && !cell(colorColumn).empty()) {
             const auto color = internal::parseColor(cell(colorColumn));
-            if (!color) return bad(colorColumn, "is not a colour (#rrggbb)");
+            if (!color)
+                return bad(colorColumn, "is not a colour (#rrggbb)");
             entry.colorRgb = *color;
         }
         if (entry.passable && entry.speedMetresPerSecond > 0.0 && !(entry.fieldOfViewMetres > 0.0)) {
@@ -136,45 +163,57 @@ Result<ClassTable> loadClassTableCsv(const std::string& path) {
         }
         table.set(entry);
     }
-    if (table.empty()) return failure(lineNumber, "the table has no classes");
-    if (const auto problem = table.validate()) return Result<ClassTable>::failure(path + ": " + *problem);
+    if (table.empty())
+        return failure(lineNumber, "the table has no classes");
+    if (const auto problem = table.validate())
+        return Result<ClassTable>::failure(path + ": " + *problem);
     return table;
 }
 
 Status saveClassTableCsv(const ClassTable& table, const std::string& path) {
     std::string text = "value,name,speed_mps,fov_m,passable,color\n";
     for (const LandCoverClass& entry : table.classes()) {
-        text += std::to_string(entry.value) + "," + internal::quoteCsvField(entry.name) + ","
-                + internal::formatShortest(entry.speedMetresPerSecond) + "," + internal::formatShortest(entry.fieldOfViewMetres)
-                + "," + (entry.passable ? "true" : "false") + "," + internal::formatColor(entry.colorRgb) + "\n";
+        text += std::to_string(entry.value) + "," + internal::quoteCsvField(entry.name) + "," +
+                internal::formatShortest(entry.speedMetresPerSecond) + "," +
+                internal::formatShortest(entry.fieldOfViewMetres) + "," +
+                (entry.passable ? "true" : "false") + "," + internal::formatColor(entry.colorRgb) + "\n";
     }
     return internal::writeFileAtomically(path, text);
 }
 
-ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset, const LoadedRaster& raster) {
-    if (preset.empty()) return ownRows.empty() ? classTableForRaster(raster) : ownRows;
+ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset,
+                             const LoadedRaster& raster) {
+    if (preset.empty())
+        return ownRows.empty() ? classTableForRaster(raster) : ownRows;
     ClassTable table = ownRows;
     const ClassTable presetRows = classTableForRaster(raster, preset);
     for (const auto& landCover : presetRows.classes())
-        if (table.find(landCover.value) == nullptr) table.set(landCover);
+        if (table.find(landCover.value) == nullptr)
+            table.set(landCover);
     return table;
 }
 
 ClassTable classTableForRaster(const LoadedRaster& raster, const std::string& preset) {
     ClassTable defaults;
     if (!preset.empty()) {
-        if (auto found = presetClassTable(preset)) defaults = std::move(found.value());
+        if (auto found = presetClassTable(preset))
+            defaults = std::move(found.value());
     }
     ClassTable table;
     for (const auto& [value, count] : raster.classPixelCounts) {
         LandCoverClass entry;
-        if (const LandCoverClass* known = defaults.find(value)) entry = *known;
-        else entry = internal::genericClass(value);
-        const auto legend = std::find_if(raster.legend.begin(), raster.legend.end(),
-                                         [value = value](const LegendEntry& item) { return item.value == value; });
+        if (const LandCoverClass* known = defaults.find(value))
+            entry = *known;
+        else
+            entry = internal::genericClass(value);
+        const auto legend =
+            std::find_if(raster.legend.begin(), raster.legend.end(),
+                         [value = value](const LegendEntry& item) { return item.value == value; });
         if (legend != raster.legend.end()) {
-            if (!legend->name.empty()) entry.name = legend->name;
-            if (legend->colorRgb) entry.colorRgb = *legend->colorRgb;
+            if (!legend->name.empty())
+                entry.name = legend->name;
+            if (legend->colorRgb)
+                entry.colorRgb = *legend->colorRgb;
         }
         table.set(entry);
     }
@@ -190,23 +229,29 @@ Status reconcileRasterWithTable(LoadedRaster& raster, const ClassTable& table, b
             missingPixels += count;
         }
     }
-    if (missing.empty()) return {};
+    if (missing.empty())
+        return {};
     std::string list;
-    for (const std::int32_t value : missing) list += (list.empty() ? "" : ", ") + std::to_string(value);
+    for (const std::int32_t value : missing)
+        list += (list.empty() ? "" : ", ") + std::to_string(value);
     const std::string subject = missing.size() == 1 ? "class " + list + " has" : "classes " + list + " have";
     if (!missingAsObstacles) {
-        return Status::failure(raster.path + ": " + subject
-                               + " no row in the class table (add rows, or treat missing classes as obstacles)");
+        return Status::failure(
+            raster.path + ": " + subject +
+            " no row in the class table (add rows, or treat missing classes as obstacles)");
     }
     ClassGrid& grid = raster.grid;
-    if (grid.outside.empty()) grid.outside.assign(grid.values.size(), 0);
+    if (grid.outside.empty())
+        grid.outside.assign(grid.values.size(), 0);
     const std::set<std::int32_t> missingSet(missing.begin(), missing.end());
     for (std::size_t i = 0; i < grid.values.size(); ++i) {
-        if (grid.outside[i] == 0 && missingSet.count(grid.values[i]) != 0) grid.outside[i] = 1;
+        if (grid.outside[i] == 0 && missingSet.count(grid.values[i]) != 0)
+            grid.outside[i] = 1;
     }
-    for (const std::int32_t value : missing) raster.classPixelCounts.erase(value);
-    raster.warnings.push_back(subject + " no row in the class table: " + std::to_string(missingPixels)
-                              + " pixels treated as outside the area");
+    for (const std::int32_t value : missing)
+        raster.classPixelCounts.erase(value);
+    raster.warnings.push_back(subject + " no row in the class table: " + std::to_string(missingPixels) +
+                              " pixels treated as outside the area");
     return {};
 }
 

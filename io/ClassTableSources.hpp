@@ -27,10 +27,12 @@ struct PresetInfo {
 
 // The table a mission plans with (docs/mission-format.md): its own rows, and for the values they lack,
 // the preset's rows for this raster; with neither, the generic table for the raster.
-[[nodiscard]] ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset, const LoadedRaster& raster);
+[[nodiscard]] ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset,
+                                           const LoadedRaster& raster);
 
 // Checks every class present in the raster has a row. When it does not: an error listing the missing
 // values, or, with missingAsObstacles, the grid is changed so those pixels are outside, with a warning.
-[[nodiscard]] Status reconcileRasterWithTable(LoadedRaster& raster, const ClassTable& table, bool missingAsObstacles);
+[[nodiscard]] Status reconcileRasterWithTable(LoadedRaster& raster, const ClassTable& table,
+                                              bool missingAsObstacles);
 
 } // namespace mcpp::io

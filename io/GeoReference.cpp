@@ -27,8 +27,8 @@ std::unique_ptr<OGRCoordinateTransformation> makeTransformation(const OGRSpatial
 
 bool transformPoint(OGRCoordinateTransformation& transformation, double& x, double& y) {
     int success = 0;
-    return transformation.Transform(1, &x, &y, nullptr, nullptr, &success) && success != 0 && std::isfinite(x)
-           && std::isfinite(y);
+    return transformation.Transform(1, &x, &y, nullptr, nullptr, &success) && success != 0 &&
+           std::isfinite(x) && std::isfinite(y);
 }
 
 } // namespace
@@ -39,10 +39,11 @@ Result<GeoReference> GeoReference::fromDefinition(const std::string& definition)
     internal::ensureGdalRegistered();
     QuietGdalErrors quiet;
     auto crs = internal::spatialReferenceFromDefinition(definition);
-    if (!crs) return Result<GeoReference>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
+    if (!crs)
+        return Result<GeoReference>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
     if (crs->IsGeographic() || crs->IsGeocentric()) {
-        return Result<GeoReference>::failure("CRS \"" + definition
-                                             + "\" is not projected (degrees); a planning frame needs metres or feet");
+        return Result<GeoReference>::failure(
+            "CRS \"" + definition + "\" is not projected (degrees); a planning frame needs metres or feet");
     }
     auto state = std::make_shared<State>();
     const double factor = crs->GetLinearUnits(nullptr);
@@ -53,25 +54,34 @@ Result<GeoReference> GeoReference::fromDefinition(const std::string& definition)
     return reference;
 }
 
-bool GeoReference::hasCrs() const { return state_ && state_->crs; }
+bool GeoReference::hasCrs() const {
+    return state_ && state_->crs;
+}
 
-std::string GeoReference::wkt() const { return hasCrs() ? internal::wktOf(*state_->crs) : std::string(); }
+std::string GeoReference::wkt() const {
+    return hasCrs() ? internal::wktOf(*state_->crs) : std::string();
+}
 
 std::string GeoReference::name() const {
-    if (!hasCrs()) return {};
+    if (!hasCrs())
+        return {};
     const char* crsName = state_->crs->GetName();
     return crsName == nullptr ? std::string() : std::string(crsName);
 }
 
 std::string GeoReference::authorityCode() const {
-    if (!hasCrs()) return {};
+    if (!hasCrs())
+        return {};
     const char* authority = state_->crs->GetAuthorityName(nullptr);
     const char* code = state_->crs->GetAuthorityCode(nullptr);
-    if (authority == nullptr || code == nullptr) return {};
+    if (authority == nullptr || code == nullptr)
+        return {};
     return std::string(authority) + ":" + code;
 }
 
-double GeoReference::metresPerUnit() const { return state_ ? state_->metresPerUnit : 1.0; }
+double GeoReference::metresPerUnit() const {
+    return state_ ? state_->metresPerUnit : 1.0;
+}
 
 MapPoint GeoReference::toCrsUnits(MapPoint planningPoint) const {
     const double factor = metresPerUnit();
@@ -84,26 +94,30 @@ MapPoint GeoReference::fromCrsUnits(MapPoint crsPoint) const {
 }
 
 Result<LonLat> GeoReference::toWgs84(MapPoint point) const {
-    if (!hasCrs()) return Result<LonLat>::failure("the map has no CRS, so its points have no longitude and latitude");
+    if (!hasCrs())
+        return Result<LonLat>::failure("the map has no CRS, so its points have no longitude and latitude");
     QuietGdalErrors quiet;
     std::lock_guard lock(state_->mutex);
     if (!state_->toWgs84) {
         const auto wgs84 = internal::wgs84SpatialReference();
         state_->toWgs84 = makeTransformation(*state_->crs, *wgs84);
-        if (!state_->toWgs84) return Result<LonLat>::failure("no transformation from " + name() + " to WGS84" + quiet.detail());
+        if (!state_->toWgs84)
+            return Result<LonLat>::failure("no transformation from " + name() + " to WGS84" + quiet.detail());
     }
     const MapPoint crsPoint = toCrsUnits(point);
     double x = crsPoint.x;
     double y = crsPoint.y;
     if (!transformPoint(*state_->toWgs84, x, y)) {
-        return Result<LonLat>::failure("point (" + std::to_string(point.x) + ", " + std::to_string(point.y)
-                                       + ") cannot be transformed to WGS84" + quiet.detail());
+        return Result<LonLat>::failure("point (" + std::to_string(point.x) + ", " + std::to_string(point.y) +
+                                       ") cannot be transformed to WGS84" + quiet.detail());
     }
     return LonLat{x, y};
 }
 
 Result<MapPoint> GeoReference::fromWgs84(LonLat lonLat) const {
-    if (!hasCrs()) return Result<MapPoint>::failure("the map has no CRS, so longitude and latitude cannot be placed on it");
+    if (!hasCrs())
+        return Result<MapPoint>::failure(
+            "the map has no CRS, so longitude and latitude cannot be placed on it");
     QuietGdalErrors quiet;
     std::lock_guard lock(state_->mutex);
     if (!state_->fromWgs84) {
@@ -116,42 +130,51 @@ Result<MapPoint> GeoReference::fromWgs84(LonLat lonLat) const {
     double x = lonLat.longitude;
     double y = lonLat.latitude;
     if (!transformPoint(*state_->fromWgs84, x, y)) {
-        return Result<MapPoint>::failure("longitude " + std::to_string(lonLat.longitude) + ", latitude "
-                                         + std::to_string(lonLat.latitude) + " cannot be transformed to " + name()
-                                         + quiet.detail());
+        return Result<MapPoint>::failure("longitude " + std::to_string(lonLat.longitude) + ", latitude " +
+                                         std::to_string(lonLat.latitude) + " cannot be transformed to " +
+                                         name() + quiet.detail());
     }
     return fromCrsUnits({x, y});
 }
 
 Result<MapPoint> GeoReference::fromCrs(const std::string& definition, MapPoint point) const {
-    if (definition.empty()) return point;
+    if (definition.empty())
+        return point;
     QuietGdalErrors quiet;
     const auto source = internal::spatialReferenceFromDefinition(definition);
-    if (!source) return Result<MapPoint>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
-    if (!hasCrs()) return Result<MapPoint>::failure("the map has no CRS, so a point in " + definition + " cannot be placed on it");
+    if (!source)
+        return Result<MapPoint>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
+    if (!hasCrs())
+        return Result<MapPoint>::failure("the map has no CRS, so a point in " + definition +
+                                         " cannot be placed on it");
     const auto transformation = makeTransformation(*source, *state_->crs);
     double x = point.x;
     double y = point.y;
     if (!transformation || !transformPoint(*transformation, x, y)) {
-        return Result<MapPoint>::failure("point (" + std::to_string(point.x) + ", " + std::to_string(point.y)
-                                         + ") in " + definition + " cannot be transformed to " + name() + quiet.detail());
+        return Result<MapPoint>::failure("point (" + std::to_string(point.x) + ", " +
+                                         std::to_string(point.y) + ") in " + definition +
+                                         " cannot be transformed to " + name() + quiet.detail());
     }
     return fromCrsUnits({x, y});
 }
 
 Result<MapPoint> GeoReference::toCrs(const std::string& definition, MapPoint point) const {
-    if (definition.empty()) return point;
+    if (definition.empty())
+        return point;
     QuietGdalErrors quiet;
     const auto target = internal::spatialReferenceFromDefinition(definition);
-    if (!target) return Result<MapPoint>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
-    if (!hasCrs()) return Result<MapPoint>::failure("the map has no CRS, so its points cannot go to " + definition);
+    if (!target)
+        return Result<MapPoint>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
+    if (!hasCrs())
+        return Result<MapPoint>::failure("the map has no CRS, so its points cannot go to " + definition);
     const auto transformation = makeTransformation(*state_->crs, *target);
     const MapPoint crsPoint = toCrsUnits(point);
     double x = crsPoint.x;
     double y = crsPoint.y;
     if (!transformation || !transformPoint(*transformation, x, y)) {
-        return Result<MapPoint>::failure("point (" + std::to_string(point.x) + ", " + std::to_string(point.y)
-                                         + ") cannot be transformed to " + definition + quiet.detail());
+        return Result<MapPoint>::failure("point (" + std::to_string(point.x) + ", " +
+                                         std::to_string(point.y) + ") cannot be transformed to " +
+                                         definition + quiet.detail());
     }
     return MapPoint{x, y};
 }

@@ -16,14 +16,14 @@ struct LonLat {
 // The CRS of the planning frame (metres) and the transforms to and from WGS84 and other CRSs.
 // Cheap to copy; no GDAL type shows here.
 class GeoReference {
-public:
+  public:
     GeoReference(); // no CRS: coordinates are taken as metres and cannot go to WGS84
     // Any definition OSR understands: "EPSG:32612", WKT, PROJ string.
     static Result<GeoReference> fromDefinition(const std::string& definition);
 
     [[nodiscard]] bool hasCrs() const;
     [[nodiscard]] std::string wkt() const;
-    [[nodiscard]] std::string name() const;   // e.g. "NAD83 / UTM zone 12N"
+    [[nodiscard]] std::string name() const;          // e.g. "NAD83 / UTM zone 12N"
     [[nodiscard]] std::string authorityCode() const; // e.g. "EPSG:26912", empty when unknown
 
     [[nodiscard]] Result<LonLat> toWgs84(MapPoint point) const;
@@ -39,7 +39,7 @@ public:
     // A planning-frame point into another CRS (e.g. "EPSG:4326" gives longitude, latitude).
     [[nodiscard]] Result<MapPoint> toCrs(const std::string& definition, MapPoint point) const;
 
-private:
+  private:
     struct State;
     std::shared_ptr<const State> state_;
 };

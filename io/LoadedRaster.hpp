@@ -21,9 +21,9 @@ struct LegendEntry {
 struct LoadedRaster {
     std::string path;
     int band = 1;
-    ClassGrid grid;                 // planning frame, metres
-    GeoReference georeference;      // CRS of the planning frame
-    std::string sourceCrsName;      // CRS of the file as read
+    ClassGrid grid;            // planning frame, metres
+    GeoReference georeference; // CRS of the planning frame
+    std::string sourceCrsName; // CRS of the file as read
     bool warpedFromGeographic = false;
     int sourceColumns = 0;
     int sourceRows = 0;
@@ -40,6 +40,7 @@ struct RasterLoadOptions {
     std::int64_t pixelBudget = 16'000'000; // above this, read a coarser level and say so
 };
 
-[[nodiscard]] Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLoadOptions& options = {});
+[[nodiscard]] Result<LoadedRaster> loadLandCoverRaster(const std::string& path,
+                                                       const RasterLoadOptions& options = {});
 
 } // namespace mcpp::io

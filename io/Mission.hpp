@@ -20,7 +20,7 @@ struct RobotSpec {
 };
 
 struct ExportSettings {
-    double altitudeMetres = 30.0;       // waypoint altitude above home
+    double altitudeMetres = 30.0;            // waypoint altitude above home
     double cruiseSpeedMetresPerSecond = 0.0; // 0: use the land-cover speed
     bool mergeCollinear = true;
 
@@ -32,7 +32,7 @@ struct Mission {
     int version = 1;
     std::string rasterPath; // as written in the file: relative to the mission file's folder when relative
     int band = 1;
-    std::string preset;     // used when classes is empty
+    std::string preset; // used when classes is empty
     ClassTable classes;
     bool missingClassesAsObstacles = false;
     std::vector<RobotSpec> robots;
@@ -44,11 +44,13 @@ struct Mission {
 
 [[nodiscard]] Result<Mission> loadMission(const std::string& path);
 [[nodiscard]] Status saveMission(const Mission& mission, const std::string& path); // atomic
-// The text saveMission writes: fixed key order, shortest round-trip numbers, so save -> load -> save is byte-identical.
+// The text saveMission writes: fixed key order, shortest round-trip numbers, so save -> load -> save is
+// byte-identical.
 [[nodiscard]] std::string missionToJson(const Mission& mission);
 // A robot's start in the planning frame (metres). Without start_crs the start is in the planning CRS's own
 // units (feet for a feet CRS, the UTM zone's metres for a warped geographic raster).
-[[nodiscard]] Result<MapPoint> robotStartInPlanningFrame(const RobotSpec& robot, const GeoReference& georeference);
+[[nodiscard]] Result<MapPoint> robotStartInPlanningFrame(const RobotSpec& robot,
+                                                         const GeoReference& georeference);
 // The raster path resolved against the mission file's folder.
 [[nodiscard]] std::string resolveRasterPath(const Mission& mission, const std::string& missionPath);
 

@@ -27,12 +27,15 @@ struct ExportContext {
 [[nodiscard]] Status writePlanGpx(const ExportContext& context, const std::string& path);
 
 // The waypoints a robot's waypoint files get: all of them, or, with mergeCollinear, without the points that
-// lie on the straight segment between their neighbours at the same speed and class (time and shape unchanged).
+// lie on the straight segment between their neighbours at the same speed and class (time and shape
+// unchanged).
 [[nodiscard]] std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeCollinear);
 
 // Per robot waypoint files.
-[[nodiscard]] Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path);
-[[nodiscard]] Status writeWaypointList(const ExportContext& context, int robot, const std::string& path); // QGC WPL 110
+[[nodiscard]] Status writeQGroundControlPlan(const ExportContext& context, int robot,
+                                             const std::string& path);
+[[nodiscard]] Status writeWaypointList(const ExportContext& context, int robot,
+                                       const std::string& path); // QGC WPL 110
 [[nodiscard]] Status writeWaypointCsv(const ExportContext& context, int robot, const std::string& path);
 
 // report.json of the batch contract, and the per-robot CSV.

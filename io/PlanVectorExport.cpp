@@ -1,11 +1,9 @@
 #include "io/PlanExport.hpp"
-
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/PlanGeometry.hpp"
 
-#include <ogrsf_frmts.h>
-
 #include <filesystem>
+#include <ogrsf_frmts.h>
 #include <unistd.h>
 
 namespace mcpp::io {
@@ -20,17 +18,19 @@ using internal::QuietGdalErrors;
 // A file written by an OGR driver, created under a temporary name beside the target and renamed into place
 // when complete, so a failed export never leaves half a file under the real name.
 class VectorFileWriter {
-public:
-    VectorFileWriter(std::string path, const char* driverName) : path_(std::move(path)), driverName_(driverName) {
+  public:
+    VectorFileWriter(std::string path, const char* driverName)
+        : path_(std::move(path)), driverName_(driverName) {
         const fs::path target(path_);
-        temporary_ = (target.parent_path() / ("." + target.stem().string() + ".partial-" + std::to_string(getpid())
-                                             + target.extension().string()))
+        temporary_ = (target.parent_path() / ("." + target.stem().string() + ".partial-" +
+                                              std::to_string(getpid()) + target.extension().string()))
                          .string();
     }
     ~VectorFileWriter() {
         dataset_.reset();
         std::error_code ignored;
-        if (!committed_) fs::remove(temporary_, ignored);
+        if (!committed_)
+            fs::remove(temporary_, ignored);
     }
     VectorFileWriter(const VectorFileWriter&) = delete;
     VectorFileWriter& operator=(const VectorFileWriter&) = delete;
@@ -38,19 +38,25 @@ public:
     Status open(const char* const* creationOptions = nullptr) {
         internal::ensureGdalRegistered();
         GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driverName_);
-        if (driver == nullptr) return Status::failure(path_ + ": GDAL has no " + driverName_ + " driver");
+        if (driver == nullptr)
+            return Status::failure(path_ + ": GDAL has no " + driverName_ + " driver");
         std::error_code ignored;
         fs::remove(temporary_, ignored);
-        dataset_.reset(driver->Create(temporary_.c_str(), 0, 0, 0, GDT_Unknown, const_cast<char**>(creationOptions)));
-        if (!dataset_) return Status::failure(path_ + ": cannot create" + QuietGdalErrors::detail());
+        dataset_.reset(
+            driver->Create(temporary_.c_str(), 0, 0, 0, GDT_Unknown, const_cast<char**>(creationOptions)));
+        if (!dataset_)
+            return Status::failure(path_ + ": cannot create" + QuietGdalErrors::detail());
         return {};
     }
 
     Result<OGRLayer*> layer(const char* name, const OGRSpatialReference* crs, OGRwkbGeometryType type,
                             const char* const* options = nullptr) {
         // GDAL 3.6 takes a non-const CRS pointer but only reads it.
-        OGRLayer* created = dataset_->CreateLayer(name, const_cast<OGRSpatialReference*>(crs), type, const_cast<char**>(options));
-        if (created == nullptr) return Result<OGRLayer*>::failure(path_ + ": cannot create layer " + name + QuietGdalErrors::detail());
+        OGRLayer* created = dataset_->CreateLayer(name, const_cast<OGRSpatialReference*>(crs), type,
+                                                  const_cast<char**>(options));
+        if (created == nullptr)
+            return Result<OGRLayer*>::failure(path_ + ": cannot create layer " + name +
+                                              QuietGdalErrors::detail());
         return created;
     }
 
@@ -64,7 +70,8 @@ public:
 
     Status add(OGRLayer* layer, OGRFeature& feature) {
         if (layer->CreateFeature(&feature) != OGRERR_NONE) {
-            return Status::failure(path_ + ": cannot write a feature to " + layer->GetName() + QuietGdalErrors::detail());
+            return Status::failure(path_ + ": cannot write a feature to " + layer->GetName() +
+                                   QuietGdalErrors::detail());
         }
         return {};
     }
@@ -74,15 +81,17 @@ public:
     Status commit() {
         CPLErrorReset();
         dataset_.reset(); // flushes and closes
-        if (CPLGetLastErrorType() == CE_Failure) return Status::failure(path_ + ": write failed" + QuietGdalErrors::detail());
+        if (CPLGetLastErrorType() == CE_Failure)
+            return Status::failure(path_ + ": write failed" + QuietGdalErrors::detail());
         std::error_code error;
         fs::rename(temporary_, path_, error);
-        if (error) return Status::failure(path_ + ": cannot move the finished file into place: " + error.message());
+        if (error)
+            return Status::failure(path_ + ": cannot move the finished file into place: " + error.message());
         committed_ = true;
         return {};
     }
 
-private:
+  private:
     std::string path_;
     const char* driverName_;
     std::string temporary_;
@@ -96,49 +105,64 @@ struct Fields {
 
 Status createFields(VectorFileWriter& writer, OGRLayer* layer, const Fields& fields) {
     for (const auto& [name, type] : fields.definitions) {
-        if (Status status = writer.field(layer, name, type); !status) return status;
+        if (Status status = writer.field(layer, name, type); !status)
+            return status;
     }
     return {};
 }
 
 // Transformation from the plan's CRS to WGS84 longitude, latitude.
-Result<std::unique_ptr<OGRCoordinateTransformation>> toWgs84(const GeoReference& georeference, const std::string& path) {
+Result<std::unique_ptr<OGRCoordinateTransformation>> toWgs84(const GeoReference& georeference,
+                                                             const std::string& path) {
     using Transformation = std::unique_ptr<OGRCoordinateTransformation>;
     if (!georeference.hasCrs()) {
-        return Result<Transformation>::failure(path + ": the map has no CRS, so the plan cannot be written in longitude and latitude");
+        return Result<Transformation>::failure(
+            path + ": the map has no CRS, so the plan cannot be written in longitude and latitude");
     }
     auto source = internal::spatialReferenceFromDefinition(georeference.wkt());
     const auto wgs84 = internal::wgs84SpatialReference();
-    if (!source) return Result<Transformation>::failure(path + ": the map's CRS is not usable" + QuietGdalErrors::detail());
+    if (!source)
+        return Result<Transformation>::failure(path + ": the map's CRS is not usable" +
+                                               QuietGdalErrors::detail());
     Transformation transformation(OGRCreateCoordinateTransformation(source.get(), wgs84.get()));
-    if (!transformation) return Result<Transformation>::failure(path + ": no transformation to WGS84" + QuietGdalErrors::detail());
+    if (!transformation)
+        return Result<Transformation>::failure(path + ": no transformation to WGS84" +
+                                               QuietGdalErrors::detail());
     return transformation;
 }
 
-Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transformation, const std::string& path) {
+Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transformation,
+                    const std::string& path) {
     const auto fail = [&](const char* what) {
-        return Status::failure(path + ": cannot transform " + std::string(what) + " to WGS84" + QuietGdalErrors::detail());
+        return Status::failure(path + ": cannot transform " + std::string(what) + " to WGS84" +
+                               QuietGdalErrors::detail());
     };
     for (auto& region : features.regions) {
-        if (!region.geometry->IsEmpty() && region.geometry->transform(&transformation) != OGRERR_NONE) return fail("a region");
+        if (!region.geometry->IsEmpty() && region.geometry->transform(&transformation) != OGRERR_NONE)
+            return fail("a region");
     }
     for (auto& line : features.paths) {
-        if (line.geometry->transform(&transformation) != OGRERR_NONE) return fail("a path");
+        if (line.geometry->transform(&transformation) != OGRERR_NONE)
+            return fail("a path");
     }
     for (auto& start : features.starts) {
-        if (start.geometry->transform(&transformation) != OGRERR_NONE) return fail("a start");
+        if (start.geometry->transform(&transformation) != OGRERR_NONE)
+            return fail("a start");
     }
     for (auto& part : features.unreachable) {
-        if (part.geometry->transform(&transformation) != OGRERR_NONE) return fail("an unreachable area");
+        if (part.geometry->transform(&transformation) != OGRERR_NONE)
+            return fail("an unreachable area");
     }
     return {};
 }
 
 Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::string& path) {
     auto features = internal::buildPlanFeatures(context.plan, context.georeference.metresPerUnit());
-    if (!features) return Result<PlanFeatures>::failure(path + ": " + features.error());
+    if (!features)
+        return Result<PlanFeatures>::failure(path + ": " + features.error());
     auto transformation = toWgs84(context.georeference, path);
-    if (!transformation) return Result<PlanFeatures>::failure(transformation.error());
+    if (!transformation)
+        return Result<PlanFeatures>::failure(transformation.error());
     if (Status status = transformAll(features.value(), *transformation.value(), path); !status) {
         return Result<PlanFeatures>::failure(status.error());
     }
@@ -153,56 +177,71 @@ std::unique_ptr<OGRGeometry> asMultiPolygon(const OGRGeometry& geometry) {
 Status writeRegionLayer(VectorFileWriter& writer, std::vector<internal::RegionFeature>& regions,
                         const OGRSpatialReference* crs, bool named) {
     auto layer = writer.layer("regions", crs, wkbMultiPolygon);
-    if (!layer) return Status::failure(layer.error());
+    if (!layer)
+        return Status::failure(layer.error());
     Fields fields{{{"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal}, {"cells", OFTInteger}}};
-    if (named) fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
-    if (Status status = createFields(writer, layer.value(), fields); !status) return status;
+    if (named)
+        fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status)
+        return status;
     for (auto& region : regions) {
         OGRFeature feature(layer.value()->GetLayerDefn());
-        if (named) feature.SetField("name", ("robot " + std::to_string(region.robot) + " region").c_str());
+        if (named)
+            feature.SetField("name", ("robot " + std::to_string(region.robot) + " region").c_str());
         feature.SetField("robot", region.robot);
         feature.SetField("cost_s", region.costSeconds);
         feature.SetField("area_m2", region.areaSquareMetres);
         feature.SetField("cells", region.cells);
         feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
-        if (Status status = writer.add(layer.value(), feature); !status) return status;
+        if (Status status = writer.add(layer.value(), feature); !status)
+            return status;
     }
     return {};
 }
 
-Status writePathLayer(VectorFileWriter& writer, std::vector<internal::PathFeature>& paths, const OGRSpatialReference* crs,
-                      bool named) {
+Status writePathLayer(VectorFileWriter& writer, std::vector<internal::PathFeature>& paths,
+                      const OGRSpatialReference* crs, bool named) {
     auto layer = writer.layer("paths", crs, wkbLineString);
-    if (!layer) return Status::failure(layer.error());
+    if (!layer)
+        return Status::failure(layer.error());
     Fields fields{{{"robot", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal}, {"turns", OFTInteger}}};
-    if (named) fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
-    if (Status status = createFields(writer, layer.value(), fields); !status) return status;
+    if (named)
+        fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status)
+        return status;
     for (auto& line : paths) {
         OGRFeature feature(layer.value()->GetLayerDefn());
-        if (named) feature.SetField("name", ("robot " + std::to_string(line.robot) + " path").c_str());
+        if (named)
+            feature.SetField("name", ("robot " + std::to_string(line.robot) + " path").c_str());
         feature.SetField("robot", line.robot);
         feature.SetField("length_m", line.lengthMetres);
         feature.SetField("time_s", line.timeSeconds);
         feature.SetField("turns", line.turns);
         feature.SetGeometryDirectly(line.geometry.release());
-        if (Status status = writer.add(layer.value(), feature); !status) return status;
+        if (Status status = writer.add(layer.value(), feature); !status)
+            return status;
     }
     return {};
 }
 
-Status writeStartLayer(VectorFileWriter& writer, std::vector<internal::StartFeature>& starts, const OGRSpatialReference* crs,
-                       bool named) {
+Status writeStartLayer(VectorFileWriter& writer, std::vector<internal::StartFeature>& starts,
+                       const OGRSpatialReference* crs, bool named) {
     auto layer = writer.layer("starts", crs, wkbPoint);
-    if (!layer) return Status::failure(layer.error());
+    if (!layer)
+        return Status::failure(layer.error());
     Fields fields{{{"robot", OFTInteger}}};
-    if (named) fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
-    if (Status status = createFields(writer, layer.value(), fields); !status) return status;
+    if (named)
+        fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status)
+        return status;
     for (auto& start : starts) {
         OGRFeature feature(layer.value()->GetLayerDefn());
-        if (named) feature.SetField("name", ("robot " + std::to_string(start.robot) + " start").c_str());
+        if (named)
+            feature.SetField("name", ("robot " + std::to_string(start.robot) + " start").c_str());
         feature.SetField("robot", start.robot);
         feature.SetGeometryDirectly(start.geometry.release());
-        if (Status status = writer.add(layer.value(), feature); !status) return status;
+        if (Status status = writer.add(layer.value(), feature); !status)
+            return status;
     }
     return {};
 }
@@ -210,16 +249,21 @@ Status writeStartLayer(VectorFileWriter& writer, std::vector<internal::StartFeat
 Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::UnreachableFeature>& parts,
                              const OGRSpatialReference* crs, bool named) {
     auto layer = writer.layer("unreachable", crs, wkbPolygon);
-    if (!layer) return Status::failure(layer.error());
+    if (!layer)
+        return Status::failure(layer.error());
     Fields fields{{{"area_m2", OFTReal}}};
-    if (named) fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
-    if (Status status = createFields(writer, layer.value(), fields); !status) return status;
+    if (named)
+        fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status)
+        return status;
     for (auto& part : parts) {
         OGRFeature feature(layer.value()->GetLayerDefn());
-        if (named) feature.SetField("name", "unreachable");
+        if (named)
+            feature.SetField("name", "unreachable");
         feature.SetField("area_m2", part.areaSquareMetres);
         feature.SetGeometryDirectly(part.geometry.release());
-        if (Status status = writer.add(layer.value(), feature); !status) return status;
+        if (Status status = writer.add(layer.value(), feature); !status)
+            return status;
     }
     return {};
 }
@@ -229,18 +273,28 @@ Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::Unr
 Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
     QuietGdalErrors quiet;
     auto features = featuresInWgs84(context, path);
-    if (!features) return Status::failure(features.error());
+    if (!features)
+        return Status::failure(features.error());
     VectorFileWriter writer(path, "GeoJSON");
-    if (Status status = writer.open(); !status) return status;
+    if (Status status = writer.open(); !status)
+        return status;
     const auto wgs84 = internal::wgs84SpatialReference();
     // RFC 7946: WGS84, right-hand rings; 9 decimals keep coordinates well within 1e-7 degrees.
     const char* const layerOptions[] = {"RFC7946=YES", "COORDINATE_PRECISION=9", "WRITE_NAME=NO", nullptr};
     auto layer = writer.layer("plan", wgs84.get(), wkbUnknown, layerOptions);
-    if (!layer) return Status::failure(layer.error());
+    if (!layer)
+        return Status::failure(layer.error());
     OGRLayer* plan = layer.value();
-    const Fields fields{{{"kind", OFTString}, {"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal},
-                         {"cells", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal}, {"turns", OFTInteger}}};
-    if (Status status = createFields(writer, plan, fields); !status) return status;
+    const Fields fields{{{"kind", OFTString},
+                         {"robot", OFTInteger},
+                         {"cost_s", OFTReal},
+                         {"area_m2", OFTReal},
+                         {"cells", OFTInteger},
+                         {"length_m", OFTReal},
+                         {"time_s", OFTReal},
+                         {"turns", OFTInteger}}};
+    if (Status status = createFields(writer, plan, fields); !status)
+        return status;
 
     for (auto& region : features.value().regions) {
         OGRFeature feature(plan->GetLayerDefn());
@@ -250,7 +304,8 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
         feature.SetField("area_m2", region.areaSquareMetres);
         feature.SetField("cells", region.cells);
         feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
-        if (Status status = writer.add(plan, feature); !status) return status;
+        if (Status status = writer.add(plan, feature); !status)
+            return status;
     }
     for (auto& line : features.value().paths) {
         OGRFeature feature(plan->GetLayerDefn());
@@ -260,21 +315,24 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
         feature.SetField("time_s", line.timeSeconds);
         feature.SetField("turns", line.turns);
         feature.SetGeometryDirectly(line.geometry.release());
-        if (Status status = writer.add(plan, feature); !status) return status;
+        if (Status status = writer.add(plan, feature); !status)
+            return status;
     }
     for (auto& start : features.value().starts) {
         OGRFeature feature(plan->GetLayerDefn());
         feature.SetField("kind", "start");
         feature.SetField("robot", start.robot);
         feature.SetGeometryDirectly(start.geometry.release());
-        if (Status status = writer.add(plan, feature); !status) return status;
+        if (Status status = writer.add(plan, feature); !status)
+            return status;
     }
     for (auto& part : features.value().unreachable) {
         OGRFeature feature(plan->GetLayerDefn());
         feature.SetField("kind", "unreachable");
         feature.SetField("area_m2", part.areaSquareMetres);
         feature.SetGeometryDirectly(part.geometry.release());
-        if (Status status = writer.add(plan, feature); !status) return status;
+        if (Status status = writer.add(plan, feature); !status)
+            return status;
     }
     return writer.commit();
 }
@@ -283,24 +341,35 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
     QuietGdalErrors quiet;
     const double metresPerUnit = context.georeference.metresPerUnit();
     auto features = internal::buildPlanFeatures(context.plan, metresPerUnit);
-    if (!features) return Status::failure(path + ": " + features.error());
+    if (!features)
+        return Status::failure(path + ": " + features.error());
     std::unique_ptr<OGRSpatialReference> crs;
-    if (context.georeference.hasCrs()) crs = internal::spatialReferenceFromDefinition(context.georeference.wkt());
+    if (context.georeference.hasCrs())
+        crs = internal::spatialReferenceFromDefinition(context.georeference.wkt());
 
     VectorFileWriter writer(path, "GPKG");
-    if (Status status = writer.open(); !status) return status;
+    if (Status status = writer.open(); !status)
+        return status;
     writer.dataset().StartTransaction();
 
     PlanFeatures& planFeatures = features.value();
-    if (Status status = writeRegionLayer(writer, planFeatures.regions, crs.get(), false); !status) return status;
-    if (Status status = writePathLayer(writer, planFeatures.paths, crs.get(), false); !status) return status;
-    if (Status status = writeStartLayer(writer, planFeatures.starts, crs.get(), false); !status) return status;
+    if (Status status = writeRegionLayer(writer, planFeatures.regions, crs.get(), false); !status)
+        return status;
+    if (Status status = writePathLayer(writer, planFeatures.paths, crs.get(), false); !status)
+        return status;
+    if (Status status = writeStartLayer(writer, planFeatures.starts, crs.get(), false); !status)
+        return status;
 
     auto cells = writer.layer("cells", crs.get(), wkbPolygon);
-    if (!cells) return Status::failure(cells.error());
+    if (!cells)
+        return Status::failure(cells.error());
     if (Status status = createFields(writer, cells.value(),
-                                     {{{"cell", OFTInteger}, {"level", OFTInteger}, {"class", OFTInteger},
-                                       {"fov", OFTReal}, {"speed", OFTReal}, {"free_sub_cells", OFTInteger},
+                                     {{{"cell", OFTInteger},
+                                       {"level", OFTInteger},
+                                       {"class", OFTInteger},
+                                       {"fov", OFTReal},
+                                       {"speed", OFTReal},
+                                       {"free_sub_cells", OFTInteger},
                                        {"robot", OFTInteger}}});
         !status) {
         return status;
@@ -318,10 +387,12 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
         feature.SetField("free_sub_cells", cell.freeSubCellCount());
         feature.SetField("robot", index < owner.size() ? owner[index] : -1);
         feature.SetGeometryDirectly(internal::cellSquare(graph, cell, metresPerUnit).release());
-        if (Status status = writer.add(cells.value(), feature); !status) return status;
+        if (Status status = writer.add(cells.value(), feature); !status)
+            return status;
     }
 
-    if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, crs.get(), false); !status) return status;
+    if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, crs.get(), false); !status)
+        return status;
     if (writer.dataset().CommitTransaction() != OGRERR_NONE) {
         return Status::failure(path + ": cannot commit" + QuietGdalErrors::detail());
     }
@@ -331,18 +402,25 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
 Status writePlanKml(const ExportContext& context, const std::string& path) {
     QuietGdalErrors quiet;
     auto features = featuresInWgs84(context, path);
-    if (!features) return Status::failure(features.error());
+    if (!features)
+        return Status::failure(features.error());
     const bool libkml = GetGDALDriverManager()->GetDriverByName("LIBKML") != nullptr;
     VectorFileWriter writer(path, libkml ? "LIBKML" : "KML");
-    if (Status status = writer.open(); !status) return status;
+    if (Status status = writer.open(); !status)
+        return status;
     const auto wgs84 = internal::wgs84SpatialReference();
 
     PlanFeatures& planFeatures = features.value();
-    if (Status status = writeRegionLayer(writer, planFeatures.regions, wgs84.get(), true); !status) return status;
-    if (Status status = writePathLayer(writer, planFeatures.paths, wgs84.get(), true); !status) return status;
-    if (Status status = writeStartLayer(writer, planFeatures.starts, wgs84.get(), true); !status) return status;
+    if (Status status = writeRegionLayer(writer, planFeatures.regions, wgs84.get(), true); !status)
+        return status;
+    if (Status status = writePathLayer(writer, planFeatures.paths, wgs84.get(), true); !status)
+        return status;
+    if (Status status = writeStartLayer(writer, planFeatures.starts, wgs84.get(), true); !status)
+        return status;
     if (!planFeatures.unreachable.empty()) {
-        if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, wgs84.get(), true); !status) return status;
+        if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, wgs84.get(), true);
+            !status)
+            return status;
     }
     return writer.commit();
 }
@@ -350,43 +428,54 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
 Status writePlanGpx(const ExportContext& context, const std::string& path) {
     QuietGdalErrors quiet;
     auto transformation = toWgs84(context.georeference, path);
-    if (!transformation) return Status::failure(transformation.error());
+    if (!transformation)
+        return Status::failure(transformation.error());
     VectorFileWriter writer(path, "GPX");
-    if (Status status = writer.open(); !status) return status;
+    if (Status status = writer.open(); !status)
+        return status;
     const auto wgs84 = internal::wgs84SpatialReference();
     const double metresPerUnit = context.georeference.metresPerUnit();
 
     auto starts = writer.layer("waypoints", wgs84.get(), wkbPoint);
-    if (!starts) return Status::failure(starts.error());
+    if (!starts)
+        return Status::failure(starts.error());
     auto routes = writer.layer("routes", wgs84.get(), wkbLineString);
-    if (!routes) return Status::failure(routes.error());
+    if (!routes)
+        return Status::failure(routes.error());
     // GPX wants every <wpt> before the first <rte>: starts first, then the routes.
     for (int pass = 0; pass < 2; ++pass) {
         for (const CoveragePath& coverage : context.plan.paths) {
-            const std::vector<Waypoint> waypoints = exportedWaypoints(coverage, context.settings.mergeCollinear);
-            if (waypoints.empty()) continue;
+            const std::vector<Waypoint> waypoints =
+                exportedWaypoints(coverage, context.settings.mergeCollinear);
+            if (waypoints.empty())
+                continue;
             const std::string name = "robot " + std::to_string(coverage.robot);
             if (pass == 0) {
                 OGRPoint home(waypoints.front().x / metresPerUnit, waypoints.front().y / metresPerUnit);
                 if (home.transform(transformation.value().get()) != OGRERR_NONE) {
-                    return Status::failure(path + ": cannot transform a start to WGS84" + QuietGdalErrors::detail());
+                    return Status::failure(path + ": cannot transform a start to WGS84" +
+                                           QuietGdalErrors::detail());
                 }
                 OGRFeature startFeature(starts.value()->GetLayerDefn());
                 startFeature.SetField("name", (name + " start").c_str());
                 startFeature.SetGeometry(&home);
-                if (Status status = writer.add(starts.value(), startFeature); !status) return status;
+                if (Status status = writer.add(starts.value(), startFeature); !status)
+                    return status;
                 continue;
             }
             OGRLineString route;
-            for (const Waypoint& waypoint : waypoints) route.addPoint(waypoint.x / metresPerUnit, waypoint.y / metresPerUnit);
+            for (const Waypoint& waypoint : waypoints)
+                route.addPoint(waypoint.x / metresPerUnit, waypoint.y / metresPerUnit);
             if (route.transform(transformation.value().get()) != OGRERR_NONE) {
-                return Status::failure(path + ": cannot transform " + name + "'s route to WGS84" + QuietGdalErrors::detail());
+                return Status::failure(path + ": cannot transform " + name + "'s route to WGS84" +
+                                       QuietGdalErrors::detail());
             }
             OGRFeature routeFeature(routes.value()->GetLayerDefn());
             routeFeature.SetField("name", name.c_str());
             routeFeature.SetField("number", coverage.robot);
             routeFeature.SetGeometry(&route);
-            if (Status status = writer.add(routes.value(), routeFeature); !status) return status;
+            if (Status status = writer.add(routes.value(), routeFeature); !status)
+                return status;
         }
     }
     return writer.commit();

@@ -1,14 +1,12 @@
 #include "io/LoadedRaster.hpp"
-
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/LegendReader.hpp"
-
-#include <gdal_utils.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gdal_utils.h>
 #include <unordered_map>
 #include <vector>
 
@@ -26,42 +24,58 @@ using RasterResult = Result<LoadedRaster>;
 constexpr std::int64_t chunkPixels = 1 << 22;
 
 Status checkFileReadable(const std::string& path) {
-    if (path.empty()) return Status::failure("no raster file given");
-    if (path.rfind("/vsi", 0) == 0) return {}; // GDAL virtual file systems: let GDAL judge
+    if (path.empty())
+        return Status::failure("no raster file given");
+    if (path.rfind("/vsi", 0) == 0)
+        return {}; // GDAL virtual file systems: let GDAL judge
     std::error_code error;
-    if (!fs::exists(path, error)) return Status::failure(path + ": file not found");
-    if (fs::is_directory(path, error)) return Status::failure(path + ": is a folder, not a raster file");
-    if (fs::is_regular_file(path, error) && fs::file_size(path, error) == 0) return Status::failure(path + ": file is empty");
+    if (!fs::exists(path, error))
+        return Status::failure(path + ": file not found");
+    if (fs::is_directory(path, error))
+        return Status::failure(path + ": is a folder, not a raster file");
+    if (fs::is_regular_file(path, error) && fs::file_size(path, error) == 0)
+        return Status::failure(path + ": file is empty");
     std::ifstream probe(path, std::ios::binary);
-    if (!probe) return Status::failure(path + ": cannot be read (permission denied?)");
+    if (!probe)
+        return Status::failure(path + ": cannot be read (permission denied?)");
     return {};
 }
 
 bool isColourChannel(GDALColorInterp interpretation) {
-    return interpretation == GCI_RedBand || interpretation == GCI_GreenBand || interpretation == GCI_BlueBand
-           || interpretation == GCI_AlphaBand;
+    return interpretation == GCI_RedBand || interpretation == GCI_GreenBand ||
+           interpretation == GCI_BlueBand || interpretation == GCI_AlphaBand;
 }
 
-bool isFloatType(GDALDataType type) { return type == GDT_Float32 || type == GDT_Float64; }
+bool isFloatType(GDALDataType type) {
+    return type == GDT_Float32 || type == GDT_Float64;
+}
 
-bool isComplexType(GDALDataType type) { return GDALDataTypeIsComplex(type) != 0; }
+bool isComplexType(GDALDataType type) {
+    return GDALDataTypeIsComplex(type) != 0;
+}
 
 // The UTM zone of the raster's centre, on the raster's own datum where it is not WGS84.
-std::unique_ptr<OGRSpatialReference> utmForCentre(const OGRSpatialReference& geographic, double longitude, double latitude) {
-    while (longitude >= 180.0) longitude -= 360.0;
-    while (longitude < -180.0) longitude += 360.0;
+std::unique_ptr<OGRSpatialReference> utmForCentre(const OGRSpatialReference& geographic, double longitude,
+                                                  double latitude) {
+    while (longitude >= 180.0)
+        longitude -= 360.0;
+    while (longitude < -180.0)
+        longitude += 360.0;
     const int zone = std::clamp(static_cast<int>(std::floor((longitude + 180.0) / 6.0)) + 1, 1, 60);
     const bool north = latitude >= 0.0;
     auto utm = internal::makeSpatialReference();
     const auto wgs84 = internal::wgs84SpatialReference();
     if (geographic.IsSameGeogCS(wgs84.get())) {
-        if (utm->importFromEPSG((north ? 32600 : 32700) + zone) == OGRERR_NONE) return utm;
+        if (utm->importFromEPSG((north ? 32600 : 32700) + zone) == OGRERR_NONE)
+            return utm;
         utm = internal::makeSpatialReference();
     }
     utm->CopyGeogCSFrom(&geographic);
     utm->SetUTM(zone, north ? TRUE : FALSE);
     const char* datum = geographic.GetAttrValue("DATUM");
-    utm->SetProjCS(("UTM zone " + std::to_string(zone) + (north ? "N" : "S") + " (" + (datum ? datum : "unknown datum") + ")").c_str());
+    utm->SetProjCS(("UTM zone " + std::to_string(zone) + (north ? "N" : "S") + " (" +
+                    (datum ? datum : "unknown datum") + ")")
+                       .c_str());
     return utm;
 }
 
@@ -70,13 +84,15 @@ std::unique_ptr<OGRSpatialReference> utmForCentre(const OGRSpatialReference& geo
 // The caller keeps `selected` (the band-selection VRT) alive until the warped dataset is closed.
 // With a target size, the warp resamples straight to it by the class mode (using the source's overviews
 // where it has them), so a raster far above the pixel budget is never warped at full resolution.
-DatasetPointer warpToUtm(GDALDataset& source, int band, const OGRSpatialReference& utm, DatasetPointer& selected,
-                         std::string& error, int targetColumns = 0, int targetRows = 0) {
+DatasetPointer warpToUtm(GDALDataset& source, int band, const OGRSpatialReference& utm,
+                         DatasetPointer& selected, std::string& error, int targetColumns = 0,
+                         int targetRows = 0) {
     GDALDatasetH input = GDALDataset::ToHandle(&source);
     if (source.GetRasterCount() > 1 && !selected) {
         const std::string bandText = std::to_string(band);
         const char* translateArguments[] = {"-of", "VRT", "-b", bandText.c_str(), nullptr};
-        GDALTranslateOptions* translateOptions = GDALTranslateOptionsNew(const_cast<char**>(translateArguments), nullptr);
+        GDALTranslateOptions* translateOptions =
+            GDALTranslateOptionsNew(const_cast<char**>(translateArguments), nullptr);
         selected.reset(GDALDataset::FromHandle(GDALTranslate("", input, translateOptions, nullptr)));
         GDALTranslateOptionsFree(translateOptions);
         if (!selected) {
@@ -84,13 +100,16 @@ DatasetPointer warpToUtm(GDALDataset& source, int band, const OGRSpatialReferenc
             return nullptr;
         }
     }
-    if (selected) input = GDALDataset::ToHandle(selected.get());
+    if (selected)
+        input = GDALDataset::ToHandle(selected.get());
     const std::string wkt = internal::wktOf(utm);
     const std::string columnsText = std::to_string(targetColumns);
     const std::string rowsText = std::to_string(targetRows);
-    std::vector<const char*> warpArguments{"-of", "VRT", "-t_srs", wkt.c_str(), "-ot", "Float64", "-dstnodata", "nan"};
+    std::vector<const char*> warpArguments{"-of", "VRT",     "-t_srs",     wkt.c_str(),
+                                           "-ot", "Float64", "-dstnodata", "nan"};
     if (targetColumns > 0 && targetRows > 0) {
-        for (const char* argument : {"-r", "mode", "-ts"}) warpArguments.push_back(argument);
+        for (const char* argument : {"-r", "mode", "-ts"})
+            warpArguments.push_back(argument);
         warpArguments.push_back(columnsText.c_str());
         warpArguments.push_back(rowsText.c_str());
     } else {
@@ -98,9 +117,11 @@ DatasetPointer warpToUtm(GDALDataset& source, int band, const OGRSpatialReferenc
         warpArguments.push_back("near");
     }
     warpArguments.push_back(nullptr);
-    GDALWarpAppOptions* warpOptions = GDALWarpAppOptionsNew(const_cast<char**>(warpArguments.data()), nullptr);
+    GDALWarpAppOptions* warpOptions =
+        GDALWarpAppOptionsNew(const_cast<char**>(warpArguments.data()), nullptr);
     int usageError = 0;
-    DatasetPointer warped(GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &input, warpOptions, &usageError)));
+    DatasetPointer warped(
+        GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &input, warpOptions, &usageError)));
     GDALWarpAppOptionsFree(warpOptions);
     if (!warped) {
         error = "could not warp to " + std::string(utm.GetName()) + QuietGdalErrors::detail();
@@ -120,12 +141,15 @@ struct ReadPlan {
 ReadPlan planRead(int columns, int rows, std::int64_t budget) {
     ReadPlan plan{columns, rows, columns, rows, false};
     const std::int64_t pixels = static_cast<std::int64_t>(columns) * rows;
-    if (budget <= 0 || pixels <= budget) return plan;
+    if (budget <= 0 || pixels <= budget)
+        return plan;
     double scale = std::sqrt(static_cast<double>(pixels) / static_cast<double>(budget));
     for (;;) {
         plan.columns = std::max(1, static_cast<int>(std::floor(columns / scale)));
         plan.rows = std::max(1, static_cast<int>(std::floor(rows / scale)));
-        if (static_cast<std::int64_t>(plan.columns) * plan.rows <= budget || (plan.columns == 1 && plan.rows == 1)) break;
+        if (static_cast<std::int64_t>(plan.columns) * plan.rows <= budget ||
+            (plan.columns == 1 && plan.rows == 1))
+            break;
         scale *= 1.01;
     }
     plan.coarsened = true;
@@ -133,7 +157,8 @@ ReadPlan planRead(int columns, int rows, std::int64_t budget) {
 }
 
 // Reads the band into raster.grid (values, outside) and raster.classPixelCounts, chunk by chunk.
-Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string& path, int bandNumber, LoadedRaster& raster) {
+Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string& path, int bandNumber,
+                   LoadedRaster& raster) {
     ClassGrid& grid = raster.grid;
     grid.columns = plan.columns;
     grid.rows = plan.rows;
@@ -147,9 +172,12 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
     const double nodata = band.GetNoDataValue(&hasNodata);
     const bool nodataIsNan = hasNodata != 0 && std::isnan(nodata);
     const auto isNodata = [&](double value) {
-        if (hasNodata == 0) return false;
-        if (nodataIsNan) return std::isnan(value);
-        if (type == GDT_Float32) return static_cast<float>(value) == static_cast<float>(nodata);
+        if (hasNodata == 0)
+            return false;
+        if (nodataIsNan)
+            return std::isnan(value);
+        if (type == GDT_Float32)
+            return static_cast<float>(value) == static_cast<float>(nodata);
         return value == nodata;
     };
 
@@ -157,7 +185,8 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
     int blockRows = 0;
     band.GetBlockSize(&blockColumns, &blockRows);
     int chunkRows = static_cast<int>(std::max<std::int64_t>(1, chunkPixels / std::max(1, plan.columns)));
-    if (!plan.coarsened && blockRows > 0 && chunkRows > blockRows) chunkRows -= chunkRows % blockRows; // whole blocks
+    if (!plan.coarsened && blockRows > 0 && chunkRows > blockRows)
+        chunkRows -= chunkRows % blockRows; // whole blocks
     chunkRows = std::min(chunkRows, plan.rows);
 
     std::vector<double> buffer(static_cast<std::size_t>(chunkRows) * static_cast<std::size_t>(plan.columns));
@@ -181,36 +210,39 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
             extra.dfYOff = firstRow * rowScale;
             extra.dfYSize = rowsHere * rowScale;
             sourceFirstRow = static_cast<int>(std::floor(extra.dfYOff));
-            const int lastRow = std::min(plan.sourceRows, static_cast<int>(std::ceil(extra.dfYOff + extra.dfYSize)));
+            const int lastRow =
+                std::min(plan.sourceRows, static_cast<int>(std::ceil(extra.dfYOff + extra.dfYSize)));
             sourceRowCount = std::max(1, lastRow - sourceFirstRow);
             extra.dfYSize = std::min(extra.dfYSize, plan.sourceRows - extra.dfYOff);
         }
-        if (band.RasterIO(GF_Read, 0, sourceFirstRow, plan.sourceColumns, sourceRowCount, buffer.data(), plan.columns,
-                          rowsHere, GDT_Float64, 0, 0, &extra)
-            != CE_None) {
-            return Status::failure(path + ": read failed at row " + std::to_string(sourceFirstRow) + " of band "
-                                   + std::to_string(bandNumber) + QuietGdalErrors::detail());
+        if (band.RasterIO(GF_Read, 0, sourceFirstRow, plan.sourceColumns, sourceRowCount, buffer.data(),
+                          plan.columns, rowsHere, GDT_Float64, 0, 0, &extra) != CE_None) {
+            return Status::failure(path + ": read failed at row " + std::to_string(sourceFirstRow) +
+                                   " of band " + std::to_string(bandNumber) + QuietGdalErrors::detail());
         }
         for (int row = 0; row < rowsHere; ++row) {
             for (int column = 0; column < plan.columns; ++column) {
-                const double value = buffer[static_cast<std::size_t>(row) * static_cast<std::size_t>(plan.columns)
-                                            + static_cast<std::size_t>(column)];
+                const double value =
+                    buffer[static_cast<std::size_t>(row) * static_cast<std::size_t>(plan.columns) +
+                           static_cast<std::size_t>(column)];
                 const std::size_t index = grid.index(column, firstRow + row);
                 if (isNodata(value) || std::isnan(value)) {
-                    if (!isNodata(value)) ++nanPixels;
+                    if (!isNodata(value))
+                        ++nanPixels;
                     grid.outside[index] = 1;
                     ++outsidePixels;
                     continue;
                 }
-                const std::string where = " at column " + std::to_string(column) + ", row " + std::to_string(firstRow + row);
+                const std::string where =
+                    " at column " + std::to_string(column) + ", row " + std::to_string(firstRow + row);
                 if (floating && value != std::floor(value)) {
-                    return Status::failure(path + ": band " + std::to_string(bandNumber) + " holds the fractional value "
-                                           + std::to_string(value) + where
-                                           + "; a land-cover raster needs integer class values");
+                    return Status::failure(path + ": band " + std::to_string(bandNumber) +
+                                           " holds the fractional value " + std::to_string(value) + where +
+                                           "; a land-cover raster needs integer class values");
                 }
                 if (value < -2147483648.0 || value > 2147483647.0) {
-                    return Status::failure(path + ": value " + std::to_string(value) + where
-                                           + " does not fit a 32-bit class value (is the nodata value set?)");
+                    return Status::failure(path + ": value " + std::to_string(value) + where +
+                                           " does not fit a 32-bit class value (is the nodata value set?)");
                 }
                 const auto classValue = static_cast<std::int32_t>(value);
                 grid.values[index] = classValue;
@@ -218,7 +250,8 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
             }
         }
     }
-    if (outsidePixels == 0) grid.outside.clear();
+    if (outsidePixels == 0)
+        grid.outside.clear();
     if (nanPixels > 0 && !raster.warpedFromGeographic) {
         raster.warnings.push_back(std::to_string(nanPixels) + " NaN pixels treated as outside the area");
     }
@@ -249,29 +282,34 @@ std::string formatMetres(double value) {
 } // namespace
 
 Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLoadOptions& options) {
-    if (Status readable = checkFileReadable(path); !readable) return RasterResult::failure(readable.error());
+    if (Status readable = checkFileReadable(path); !readable)
+        return RasterResult::failure(readable.error());
     internal::ensureGdalRegistered();
     QuietGdalErrors quiet;
 
     DatasetPointer source(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-    if (!source) return RasterResult::failure(path + ": not a raster GDAL can read" + quiet.detail());
+    if (!source)
+        return RasterResult::failure(path + ": not a raster GDAL can read" + quiet.detail());
     const int bandCount = source->GetRasterCount();
-    if (bandCount < 1) return RasterResult::failure(path + ": has no raster bands");
+    if (bandCount < 1)
+        return RasterResult::failure(path + ": has no raster bands");
     if (options.band < 1 || options.band > bandCount) {
-        return RasterResult::failure(path + ": band " + std::to_string(options.band) + " requested but the file has "
-                                     + std::to_string(bandCount) + (bandCount == 1 ? " band" : " bands"));
+        return RasterResult::failure(path + ": band " + std::to_string(options.band) +
+                                     " requested but the file has " + std::to_string(bandCount) +
+                                     (bandCount == 1 ? " band" : " bands"));
     }
     GDALRasterBand* sourceBand = source->GetRasterBand(options.band);
     const GDALDataType type = sourceBand->GetRasterDataType();
     const std::string typeName = GDALGetDataTypeName(type);
-    if (type == GDT_Byte && sourceBand->GetColorTable() == nullptr
-        && (isColourChannel(sourceBand->GetColorInterpretation()) || bandCount == 3 || bandCount == 4)) {
-        return RasterResult::failure(path + ": looks like an RGB image (" + std::to_string(bandCount)
-                                     + " Byte bands, no palette), not a land-cover class raster; classify it first");
+    if (type == GDT_Byte && sourceBand->GetColorTable() == nullptr &&
+        (isColourChannel(sourceBand->GetColorInterpretation()) || bandCount == 3 || bandCount == 4)) {
+        return RasterResult::failure(
+            path + ": looks like an RGB image (" + std::to_string(bandCount) +
+            " Byte bands, no palette), not a land-cover class raster; classify it first");
     }
     if (isComplexType(type) || type == GDT_Unknown) {
-        return RasterResult::failure(path + ": band " + std::to_string(options.band) + " is " + typeName
-                                     + "; a land-cover raster needs one integer band");
+        return RasterResult::failure(path + ": band " + std::to_string(options.band) + " is " + typeName +
+                                     "; a land-cover raster needs one integer band");
     }
 
     LoadedRaster raster;
@@ -291,11 +329,13 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
         raster.warnings.push_back("no georeferencing: planned in pixel units taken as metres");
     }
     if (transform[2] != 0.0 || transform[4] != 0.0) {
-        return RasterResult::failure(path + ": the geotransform is rotated or sheared; warp it to a north-up grid first");
+        return RasterResult::failure(
+            path + ": the geotransform is rotated or sheared; warp it to a north-up grid first");
     }
-    if (!(transform[1] > 0.0) || transform[5] == 0.0 || !std::isfinite(transform[1]) || !std::isfinite(transform[5])) {
-        return RasterResult::failure(path + ": pixel size " + std::to_string(transform[1]) + " x "
-                                     + std::to_string(transform[5]) + " is not usable (must run west to east)");
+    if (!(transform[1] > 0.0) || transform[5] == 0.0 || !std::isfinite(transform[1]) ||
+        !std::isfinite(transform[5])) {
+        return RasterResult::failure(path + ": pixel size " + std::to_string(transform[1]) + " x " +
+                                     std::to_string(transform[5]) + " is not usable (must run west to east)");
     }
 
     std::unique_ptr<OGRSpatialReference> planningCrs;
@@ -305,7 +345,8 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
         const char* crsName = planningCrs->GetName();
         raster.sourceCrsName = crsName == nullptr ? "unnamed CRS" : crsName;
     } else if (georeferenced) {
-        raster.warnings.push_back("no CRS: coordinates taken as metres; exports cannot be placed on the Earth");
+        raster.warnings.push_back(
+            "no CRS: coordinates taken as metres; exports cannot be placed on the Earth");
     }
 
     GDALDataset* readDataset = source.get();
@@ -320,11 +361,14 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
         auto utm = utmForCentre(*planningCrs, centreLongitude, centreLatitude);
         std::string error;
         warped = warpToUtm(*source, options.band, *utm, selectedBand, error);
-        if (!warped) return RasterResult::failure(path + ": " + error);
-        const ReadPlan coarse = planRead(warped->GetRasterXSize(), warped->GetRasterYSize(), options.pixelBudget);
+        if (!warped)
+            return RasterResult::failure(path + ": " + error);
+        const ReadPlan coarse =
+            planRead(warped->GetRasterXSize(), warped->GetRasterYSize(), options.pixelBudget);
         if (coarse.coarsened) {
             warped = warpToUtm(*source, options.band, *utm, selectedBand, error, coarse.columns, coarse.rows);
-            if (!warped) return RasterResult::failure(path + ": " + error);
+            if (!warped)
+                return RasterResult::failure(path + ": " + error);
             raster.coarsened = true;
             raster.warnings.push_back("raster warps to " + std::to_string(coarse.sourceColumns) + " x " +
                                       std::to_string(coarse.sourceRows) + " pixels, above the budget of " +
@@ -333,8 +377,9 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
                                       " (mode resampling)");
         }
         raster.warpedFromGeographic = true;
-        raster.warnings.push_back("geographic CRS " + raster.sourceCrsName + ": planned in " + utm->GetName()
-                                  + (raster.coarsened ? " (warped by mode to the pixel budget)" : " (nearest-neighbour warp)"));
+        raster.warnings.push_back(
+            "geographic CRS " + raster.sourceCrsName + ": planned in " + utm->GetName() +
+            (raster.coarsened ? " (warped by mode to the pixel budget)" : " (nearest-neighbour warp)"));
         planningCrs = std::move(utm);
         readDataset = warped.get();
         readBand = 1;
@@ -342,21 +387,25 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
             return RasterResult::failure(path + ": the warped grid has no geotransform" + quiet.detail());
         }
     } else if (planningCrs && planningCrs->IsGeocentric()) {
-        return RasterResult::failure(path + ": geocentric CRS " + raster.sourceCrsName + " cannot be planned on");
+        return RasterResult::failure(path + ": geocentric CRS " + raster.sourceCrsName +
+                                     " cannot be planned on");
     } else if (planningCrs) {
         metresPerUnit = planningCrs->GetLinearUnits(nullptr);
-        if (!std::isfinite(metresPerUnit) || metresPerUnit <= 0.0) metresPerUnit = 1.0;
+        if (!std::isfinite(metresPerUnit) || metresPerUnit <= 0.0)
+            metresPerUnit = 1.0;
         if (metresPerUnit != 1.0) {
             const char* unitName = nullptr;
             planningCrs->GetLinearUnits(&unitName);
-            raster.warnings.push_back(std::string("CRS units are ") + (unitName ? unitName : "not metres")
-                                      + ": converted to metres (x " + formatMetres(metresPerUnit) + ")");
+            raster.warnings.push_back(std::string("CRS units are ") + (unitName ? unitName : "not metres") +
+                                      ": converted to metres (x " + formatMetres(metresPerUnit) + ")");
         }
     }
 
     GDALRasterBand* band = readDataset->GetRasterBand(readBand);
-    const ReadPlan plan = planRead(readDataset->GetRasterXSize(), readDataset->GetRasterYSize(), options.pixelBudget);
-    if (Status read = readClasses(*band, plan, path, options.band, raster); !read) return RasterResult::failure(read.error());
+    const ReadPlan plan =
+        planRead(readDataset->GetRasterXSize(), readDataset->GetRasterYSize(), options.pixelBudget);
+    if (Status read = readClasses(*band, plan, path, options.band, raster); !read)
+        return RasterResult::failure(read.error());
 
     const double columnScale = static_cast<double>(plan.sourceColumns) / plan.columns;
     const double rowScale = static_cast<double>(plan.sourceRows) / plan.rows;
@@ -374,10 +423,10 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
     raster.coarsened = raster.coarsened || plan.coarsened;
     raster.effectiveResolutionMetres = std::max(grid.pixelWidth, grid.pixelHeight);
     if (plan.coarsened) {
-        raster.warnings.push_back("raster has " + std::to_string(plan.sourceColumns) + " x " + std::to_string(plan.sourceRows)
-                                  + " pixels, above the budget of " + std::to_string(options.pixelBudget)
-                                  + ": read at " + formatMetres(raster.effectiveResolutionMetres)
-                                  + " m resolution (mode resampling)");
+        raster.warnings.push_back(
+            "raster has " + std::to_string(plan.sourceColumns) + " x " + std::to_string(plan.sourceRows) +
+            " pixels, above the budget of " + std::to_string(options.pixelBudget) + ": read at " +
+            formatMetres(raster.effectiveResolutionMetres) + " m resolution (mode resampling)");
     }
 
     if (planningCrs) {
@@ -385,7 +434,8 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
         if (reference) {
             raster.georeference = std::move(reference.value());
         } else {
-            raster.warnings.push_back("CRS " + raster.sourceCrsName + " could not be used: " + reference.error());
+            raster.warnings.push_back("CRS " + raster.sourceCrsName +
+                                      " could not be used: " + reference.error());
         }
     }
     internal::readRasterLegend(*sourceBand, path, raster);

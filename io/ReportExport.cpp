@@ -1,5 +1,4 @@
 #include "io/PlanExport.hpp"
-
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -31,9 +30,11 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     root.add("unreachable_area_m2", metrics.unreachableAreaSquareMetres);
     root.add("repeated_fraction", metrics.repeatedFraction);
     JsonValue& timings = root.add("timings_ms", JsonValue::object());
-    for (const auto& [stage, milliseconds] : metrics.stageMilliseconds) timings.add(stage, milliseconds);
+    for (const auto& [stage, milliseconds] : metrics.stageMilliseconds)
+        timings.add(stage, milliseconds);
     JsonValue& warnings = root.add("warnings", JsonValue::array());
-    for (const std::string& warning : context.plan.warnings()) warnings.push(warning);
+    for (const std::string& warning : context.plan.warnings())
+        warnings.push(warning);
     JsonValue& issues = root.add("issues", JsonValue::array());
     for (const PlanIssue& issue : context.plan.issues) {
         JsonValue& item = issues.push(JsonValue::object());
@@ -47,9 +48,11 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
 Status writeReportCsv(const ExportContext& context, const std::string& path) {
     std::string text = "robot,cells,area_m2,length_m,time_s,turns,cost_s\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
-        text += std::to_string(robot.robot) + "," + std::to_string(robot.cells) + "," + internal::formatShortest(robot.areaSquareMetres)
-                + "," + internal::formatShortest(robot.lengthMetres) + "," + internal::formatShortest(robot.timeSeconds) + ","
-                + std::to_string(robot.turns) + "," + internal::formatShortest(robot.costSeconds) + "\n";
+        text += std::to_string(robot.robot) + "," + std::to_string(robot.cells) + "," +
+                internal::formatShortest(robot.areaSquareMetres) + "," +
+                internal::formatShortest(robot.lengthMetres) + "," +
+                internal::formatShortest(robot.timeSeconds) + "," + std::to_string(robot.turns) + "," +
+                internal::formatShortest(robot.costSeconds) + "\n";
     }
     return internal::writeFileAtomically(path, text);
 }

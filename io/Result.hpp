@@ -12,9 +12,8 @@ struct IoError {
 };
 
 // A value or an error; io never throws across its public interface.
-template <typename T>
-class [[nodiscard]] Result {
-public:
+template <typename T> class [[nodiscard]] Result {
+  public:
     Result(T value) : state_(std::move(value)) {}
     Result(IoError error) : state_(std::move(error)) {}
     static Result failure(std::string message) { return Result(IoError{std::move(message)}); }
@@ -25,13 +24,13 @@ public:
     [[nodiscard]] const T& value() const { return std::get<T>(state_); }
     [[nodiscard]] const std::string& error() const { return std::get<IoError>(state_).message; }
 
-private:
+  private:
     std::variant<T, IoError> state_;
 };
 
 // Success or an error, for operations that return nothing.
 class [[nodiscard]] Status {
-public:
+  public:
     Status() = default;
     Status(IoError error) : error_(std::move(error.message)), failed_(true) {}
     static Status failure(std::string message) { return Status(IoError{std::move(message)}); }
@@ -40,7 +39,7 @@ public:
     explicit operator bool() const { return ok(); }
     [[nodiscard]] const std::string& error() const { return error_; }
 
-private:
+  private:
     std::string error_;
     bool failed_ = false;
 };

@@ -1,5 +1,4 @@
 #include "io/PlanExport.hpp"
-
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -12,17 +11,18 @@ namespace {
 using internal::JsonValue;
 
 // MAVLink numbers used by QGroundControl plans and QGC WPL files.
-constexpr int commandWaypoint = 16;       // MAV_CMD_NAV_WAYPOINT
-constexpr int commandChangeSpeed = 178;   // MAV_CMD_DO_CHANGE_SPEED
+constexpr int commandWaypoint = 16;     // MAV_CMD_NAV_WAYPOINT
+constexpr int commandChangeSpeed = 178; // MAV_CMD_DO_CHANGE_SPEED
 constexpr int frameGlobalRelativeAltitude = 3;
 constexpr int frameGlobal = 0;
 constexpr int frameMission = 2;
-constexpr int firmwarePx4 = 12;           // MAV_AUTOPILOT_PX4, as in QGroundControl's samples
-constexpr int vehicleGroundRover = 10;    // MAV_TYPE_GROUND_ROVER
+constexpr int firmwarePx4 = 12;        // MAV_AUTOPILOT_PX4, as in QGroundControl's samples
+constexpr int vehicleGroundRover = 10; // MAV_TYPE_GROUND_ROVER
 
 const CoveragePath* pathOfRobot(const Plan& plan, int robot) {
     for (const CoveragePath& path : plan.paths) {
-        if (path.robot == robot) return &path;
+        if (path.robot == robot)
+            return &path;
     }
     return nullptr;
 }
@@ -33,21 +33,25 @@ struct GeoWaypoint {
     double latitude = 0.0;
 };
 
-Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int robot, const std::string& path,
-                                              bool needCrs) {
+Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int robot,
+                                              const std::string& path, bool needCrs) {
     using Points = std::vector<GeoWaypoint>;
     const CoveragePath* coverage = pathOfRobot(context.plan, robot);
-    if (coverage == nullptr) return Result<Points>::failure(path + ": the plan has no path for robot " + std::to_string(robot));
-    if (coverage->waypoints.empty()) return Result<Points>::failure(path + ": robot " + std::to_string(robot) + " has no waypoints");
+    if (coverage == nullptr)
+        return Result<Points>::failure(path + ": the plan has no path for robot " + std::to_string(robot));
+    if (coverage->waypoints.empty())
+        return Result<Points>::failure(path + ": robot " + std::to_string(robot) + " has no waypoints");
     if (needCrs && !context.georeference.hasCrs()) {
-        return Result<Points>::failure(path + ": the map has no CRS, so waypoints have no latitude and longitude");
+        return Result<Points>::failure(path +
+                                       ": the map has no CRS, so waypoints have no latitude and longitude");
     }
     Points points;
     for (const Waypoint& waypoint : exportedWaypoints(*coverage, context.settings.mergeCollinear)) {
         GeoWaypoint point{waypoint, std::nan(""), std::nan("")};
         if (context.georeference.hasCrs()) {
             auto lonLat = context.georeference.toWgs84({waypoint.x, waypoint.y});
-            if (!lonLat) return Result<Points>::failure(path + ": " + lonLat.error());
+            if (!lonLat)
+                return Result<Points>::failure(path + ": " + lonLat.error());
             point.longitude = lonLat.value().longitude;
             point.latitude = lonLat.value().latitude;
         }
@@ -65,29 +69,35 @@ double commandedSpeed(const ExportContext& context, const Waypoint& waypoint) {
 bool collinearAndBetween(const Waypoint& a, const Waypoint& b, const Waypoint& c) {
     const double abX = b.x - a.x, abY = b.y - a.y, acX = c.x - a.x, acY = c.y - a.y;
     const double lengthAc = std::hypot(acX, acY);
-    if (lengthAc == 0.0) return false;
+    if (lengthAc == 0.0)
+        return false;
     const double cross = abX * acY - abY * acX;
     const double tolerance = 1e-9 * lengthAc * std::max(lengthAc, 1.0);
-    if (std::abs(cross) > tolerance) return false;
+    if (std::abs(cross) > tolerance)
+        return false;
     const double along = (abX * acX + abY * acY) / (lengthAc * lengthAc);
     return along > 0.0 && along < 1.0;
 }
 
-std::string fixed(double value, int decimals) { return internal::formatFixed(value, decimals); }
+std::string fixed(double value, int decimals) {
+    return internal::formatFixed(value, decimals);
+}
 
 } // namespace
 
 std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeCollinear) {
-    if (!mergeCollinear || path.waypoints.size() < 3) return path.waypoints;
+    if (!mergeCollinear || path.waypoints.size() < 3)
+        return path.waypoints;
     std::vector<Waypoint> kept{path.waypoints.front()};
     for (std::size_t i = 1; i + 1 < path.waypoints.size(); ++i) {
         const Waypoint& current = path.waypoints[i];
         const Waypoint& next = path.waypoints[i + 1];
         // Dropping `current` is exact when the robot drives the whole of previous -> next at next's speed.
-        const bool redundant = collinearAndBetween(kept.back(), current, next)
-                               && current.speedMetresPerSecond == next.speedMetresPerSecond
-                               && current.classValue == next.classValue;
-        if (!redundant) kept.push_back(current);
+        const bool redundant = collinearAndBetween(kept.back(), current, next) &&
+                               current.speedMetresPerSecond == next.speedMetresPerSecond &&
+                               current.classValue == next.classValue;
+        if (!redundant)
+            kept.push_back(current);
     }
     kept.push_back(path.waypoints.back());
     return kept;
@@ -95,7 +105,8 @@ std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeColl
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {
     auto points = geoWaypoints(context, robot, path, true);
-    if (!points) return Status::failure(points.error());
+    if (!points)
+        return Status::failure(points.error());
     const double altitude = context.settings.altitudeMetres;
     const GeoWaypoint& home = points.value().front();
 
@@ -113,7 +124,8 @@ Status writeQGroundControlPlan(const ExportContext& context, int robot, const st
             change.add("doJumpId", jumpId++);
             change.add("frame", frameMission);
             JsonValue& params = change.add("params", JsonValue::array());
-            for (const double value : {1.0, speed, -1.0, 0.0, 0.0, 0.0, 0.0}) params.push(value);
+            for (const double value : {1.0, speed, -1.0, 0.0, 0.0, 0.0, 0.0})
+                params.push(value);
             change.add("type", "SimpleItem");
             currentSpeed = speed;
         }
@@ -165,13 +177,16 @@ Status writeQGroundControlPlan(const ExportContext& context, int robot, const st
 
 Status writeWaypointList(const ExportContext& context, int robot, const std::string& path) {
     auto points = geoWaypoints(context, robot, path, true);
-    if (!points) return Status::failure(points.error());
-    const auto row = [](int index, int current, int frame, int command, const std::array<double, 4>& params, double latitude,
-                        double longitude, double altitude) {
-        std::string text = std::to_string(index) + "\t" + std::to_string(current) + "\t" + std::to_string(frame) + "\t"
-                           + std::to_string(command);
-        for (const double param : params) text += "\t" + fixed(param, 6);
-        return text + "\t" + fixed(latitude, 8) + "\t" + fixed(longitude, 8) + "\t" + fixed(altitude, 6) + "\t1\n";
+    if (!points)
+        return Status::failure(points.error());
+    const auto row = [](int index, int current, int frame, int command, const std::array<double, 4>& params,
+                        double latitude, double longitude, double altitude) {
+        std::string text = std::to_string(index) + "\t" + std::to_string(current) + "\t" +
+                           std::to_string(frame) + "\t" + std::to_string(command);
+        for (const double param : params)
+            text += "\t" + fixed(param, 6);
+        return text + "\t" + fixed(latitude, 8) + "\t" + fixed(longitude, 8) + "\t" + fixed(altitude, 6) +
+               "\t1\n";
     };
     const GeoWaypoint& home = points.value().front();
     std::string text = "QGC WPL 110\n";
@@ -182,28 +197,33 @@ Status writeWaypointList(const ExportContext& context, int robot, const std::str
         const GeoWaypoint& point = points.value()[i];
         const double speed = commandedSpeed(context, point.waypoint);
         if (i > 0 && speed != currentSpeed && speed > 0.0) {
-            text += row(index++, 0, frameGlobalRelativeAltitude, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
+            text +=
+                row(index++, 0, frameGlobalRelativeAltitude, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
             currentSpeed = speed;
         }
-        text += row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0}, point.latitude, point.longitude,
-                    context.settings.altitudeMetres);
+        text += row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0}, point.latitude,
+                    point.longitude, context.settings.altitudeMetres);
     }
     return internal::writeFileAtomically(path, text);
 }
 
 Status writeWaypointCsv(const ExportContext& context, int robot, const std::string& path) {
     auto points = geoWaypoints(context, robot, path, false);
-    if (!points) return Status::failure(points.error());
+    if (!points)
+        return Status::failure(points.error());
     std::string text = "index,x,y,lon,lat,class,speed_mps,fov_m,cumulative_s\n";
     int index = 0;
     for (const GeoWaypoint& point : points.value()) {
         const Waypoint& waypoint = point.waypoint;
-        const auto coordinate = [](double value) { return std::isnan(value) ? std::string() : internal::formatShortest(value); };
-        text += std::to_string(index++) + "," + internal::formatShortest(waypoint.x) + "," + internal::formatShortest(waypoint.y)
-                + "," + coordinate(point.longitude) + "," + coordinate(point.latitude) + "," + std::to_string(waypoint.classValue)
-                + "," + internal::formatShortest(waypoint.speedMetresPerSecond) + ","
-                + internal::formatShortest(waypoint.fieldOfViewMetres) + "," + internal::formatShortest(waypoint.cumulativeSeconds)
-                + "\n";
+        const auto coordinate = [](double value) {
+            return std::isnan(value) ? std::string() : internal::formatShortest(value);
+        };
+        text += std::to_string(index++) + "," + internal::formatShortest(waypoint.x) + "," +
+                internal::formatShortest(waypoint.y) + "," + coordinate(point.longitude) + "," +
+                coordinate(point.latitude) + "," + std::to_string(waypoint.classValue) + "," +
+                internal::formatShortest(waypoint.speedMetresPerSecond) + "," +
+                internal::formatShortest(waypoint.fieldOfViewMetres) + "," +
+                internal::formatShortest(waypoint.cumulativeSeconds) + "\n";
     }
     return internal::writeFileAtomically(path, text);
 }

@@ -7,7 +7,6 @@
 #include <QPainter>
 #include <QSaveFile>
 #include <QSvgGenerator>
-
 #include <algorithm>
 #include <cmath>
 
@@ -19,11 +18,13 @@ QSize fittedSize(const ClassGrid& grid, QSize maxSize) {
     const double width = std::max(grid.width(), 1e-9);
     const double height = std::max(grid.height(), 1e-9);
     const double scale = std::min(maxSize.width() / width, maxSize.height() / height);
-    return {std::max(1, static_cast<int>(std::lround(width * scale))), std::max(1, static_cast<int>(std::lround(height * scale)))};
+    return {std::max(1, static_cast<int>(std::lround(width * scale))),
+            std::max(1, static_cast<int>(std::lround(height * scale)))};
 }
 
 void setError(QString* error, const QString& message) {
-    if (error != nullptr) *error = message;
+    if (error != nullptr)
+        *error = message;
 }
 
 bool checkInputs(const ClassGrid& grid, QSize maxSize, const QString& path, QString* error) {
@@ -32,7 +33,10 @@ bool checkInputs(const ClassGrid& grid, QSize maxSize, const QString& path, QStr
         return false;
     }
     if (maxSize.width() <= 0 || maxSize.height() <= 0) {
-        setError(error, QStringLiteral("cannot draw %1: image size %2x%3 is not positive").arg(path).arg(maxSize.width()).arg(maxSize.height()));
+        setError(error, QStringLiteral("cannot draw %1: image size %2x%3 is not positive")
+                            .arg(path)
+                            .arg(maxSize.width())
+                            .arg(maxSize.height()));
         return false;
     }
     return true;
@@ -40,8 +44,10 @@ bool checkInputs(const ClassGrid& grid, QSize maxSize, const QString& path, QStr
 
 } // namespace
 
-QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan, QSize maxSize, const MapLayers& layers) {
-    if (grid.columns <= 0 || grid.rows <= 0 || maxSize.width() <= 0 || maxSize.height() <= 0) return {};
+QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan, QSize maxSize,
+                       const MapLayers& layers) {
+    if (grid.columns <= 0 || grid.rows <= 0 || maxSize.width() <= 0 || maxSize.height() <= 0)
+        return {};
     const QSize size = fittedSize(grid, maxSize);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::white);
@@ -51,14 +57,16 @@ QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const P
     renderer.setPlan(plan);
     renderer.setLayers(layers);
     QPainter painter(&image);
-    renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)), QRectF(QPointF(0, 0), QSizeF(size)));
+    renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)),
+                   QRectF(QPointF(0, 0), QSizeF(size)));
     painter.end();
     return image;
 }
 
-bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path, QSize maxSize,
-                  QString* error) {
-    if (!checkInputs(grid, maxSize, path, error)) return false;
+bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
+                  QSize maxSize, QString* error) {
+    if (!checkInputs(grid, maxSize, path, error))
+        return false;
     const QImage image = renderPlanImage(grid, classes, &plan, maxSize);
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
@@ -72,12 +80,14 @@ bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& 
     return true;
 }
 
-bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path, QSize maxSize,
-                  QString* error) {
-    if (!checkInputs(grid, maxSize, path, error)) return false;
+bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
+                  QSize maxSize, QString* error) {
+    if (!checkInputs(grid, maxSize, path, error))
+        return false;
     const QFileInfo info(path);
     if (!info.absoluteDir().exists()) {
-        setError(error, QStringLiteral("cannot write %1: folder %2 does not exist").arg(path, info.absolutePath()));
+        setError(error,
+                 QStringLiteral("cannot write %1: folder %2 does not exist").arg(path, info.absolutePath()));
         return false;
     }
     const QSize size = fittedSize(grid, maxSize);
@@ -97,7 +107,8 @@ bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& 
         return false;
     }
     painter.fillRect(QRect(QPoint(0, 0), size), Qt::white);
-    renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)), QRectF(QPointF(0, 0), QSizeF(size)));
+    renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)),
+                   QRectF(QPointF(0, 0), QSizeF(size)));
     if (!painter.end()) {
         setError(error, QStringLiteral("cannot write %1: drawing failed").arg(path));
         return false;

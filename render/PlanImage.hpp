@@ -13,8 +13,8 @@ namespace mcpp::render {
 
 // The map (raster in class colours) and the plan over it, north up, fitted into maxSize keeping aspect.
 // Pixels outside the raster's task area are white. plan may be null to draw the map alone.
-[[nodiscard]] QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan, QSize maxSize,
-                                     const MapLayers& layers = {});
+[[nodiscard]] QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan,
+                                     QSize maxSize, const MapLayers& layers = {});
 
 // Writes the image as PNG. On failure returns false and says why in *error (when error is not null).
 bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,

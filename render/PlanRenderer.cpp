@@ -8,7 +8,6 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPolygonF>
-
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -38,11 +37,13 @@ int robotOf(const Plan& plan, int cell) {
 
 void drawArrow(QPainter& painter, QPointF tip, QPointF direction, const QColor& colour) {
     const double length = std::hypot(direction.x(), direction.y());
-    if (length <= 0.0) return;
+    if (length <= 0.0)
+        return;
     const QPointF unit(direction.x() / length, direction.y() / length);
     const QPointF normal(-unit.y(), unit.x());
     const QPointF base = tip - unit * kArrowLengthPixels;
-    const QPolygonF head({tip, base + normal * (kArrowLengthPixels * 0.5), base - normal * (kArrowLengthPixels * 0.5)});
+    const QPolygonF head(
+        {tip, base + normal * (kArrowLengthPixels * 0.5), base - normal * (kArrowLengthPixels * 0.5)});
     painter.setPen(QPen(QColor(255, 255, 255, 220), 1.0));
     painter.setBrush(colour);
     painter.drawPolygon(head);
@@ -54,11 +55,15 @@ void PlanRenderer::setMap(const ClassGrid* grid, const ClassTable* classes) {
     grid_ = grid;
     classes_ = classes;
     landCoverImage_ = QImage();
-    if (grid_ == nullptr || classes_ == nullptr || grid_->columns <= 0 || grid_->rows <= 0) return;
-    if (grid_->values.size() < static_cast<std::size_t>(grid_->columns) * static_cast<std::size_t>(grid_->rows)) return;
+    if (grid_ == nullptr || classes_ == nullptr || grid_->columns <= 0 || grid_->rows <= 0)
+        return;
+    if (grid_->values.size() <
+        static_cast<std::size_t>(grid_->columns) * static_cast<std::size_t>(grid_->rows))
+        return;
 
     std::unordered_map<std::int32_t, QRgb> colours;
-    for (const auto& landCoverClass : classes_->classes()) colours[landCoverClass.value] = classColour(*classes_, landCoverClass.value);
+    for (const auto& landCoverClass : classes_->classes())
+        colours[landCoverClass.value] = classColour(*classes_, landCoverClass.value);
     const QRgb unknown = qRgb(200, 200, 200);
 
     landCoverImage_ = QImage(grid_->columns, grid_->rows, QImage::Format_ARGB32);
@@ -75,15 +80,21 @@ void PlanRenderer::setMap(const ClassGrid* grid, const ClassTable* classes) {
     }
 }
 
-void PlanRenderer::setPlan(const Plan* plan) { plan_ = plan; }
+void PlanRenderer::setPlan(const Plan* plan) {
+    plan_ = plan;
+}
 
-void PlanRenderer::setStarts(std::vector<MapPoint> starts) { starts_ = std::move(starts); }
+void PlanRenderer::setStarts(std::vector<MapPoint> starts) {
+    starts_ = std::move(starts);
+}
 
 QRgb PlanRenderer::classColour(const ClassTable& classes, std::int32_t value) {
     const LandCoverClass* found = classes.find(value);
-    if (found == nullptr) return qRgb(200, 200, 200);
+    if (found == nullptr)
+        return qRgb(200, 200, 200);
     const std::uint32_t rgb = found->colorRgb;
-    return qRgb(static_cast<int>((rgb >> 16) & 0xffu), static_cast<int>((rgb >> 8) & 0xffu), static_cast<int>(rgb & 0xffu));
+    return qRgb(static_cast<int>((rgb >> 16) & 0xffu), static_cast<int>((rgb >> 8) & 0xffu),
+                static_cast<int>(rgb & 0xffu));
 }
 
 QTransform PlanRenderer::fitTransform(const ClassGrid& grid, const QSizeF& size, double margin) {
@@ -95,38 +106,58 @@ QTransform PlanRenderer::fitTransform(const ClassGrid& grid, const QSizeF& size,
     const double offsetX = (size.width() - width * scale) / 2.0;
     const double offsetY = (size.height() - height * scale) / 2.0;
     // device x = (x - originX) * scale + offsetX; device y = (originY - y) * scale + offsetY
-    return QTransform(scale, 0.0, 0.0, -scale, offsetX - grid.originX * scale, offsetY + grid.originY * scale);
+    return QTransform(scale, 0.0, 0.0, -scale, offsetX - grid.originX * scale,
+                      offsetY + grid.originY * scale);
 }
 
 void PlanRenderer::paint(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
     painter.save();
     painter.setTransform(QTransform());
-    if (layers_.landCover) paintLandCover(painter, worldToDevice, deviceArea);
+    if (layers_.landCover)
+        paintLandCover(painter, worldToDevice, deviceArea);
     if (plan_ != nullptr) {
-        if (planStale_) painter.setOpacity(0.45);
-        if (layers_.regions) paintRegions(painter, worldToDevice, deviceArea);
-        if (layers_.unreachable) paintUnreachable(painter, worldToDevice, deviceArea);
-        if (layers_.quadTree) paintQuadTree(painter, worldToDevice, deviceArea);
-        if (layers_.regions) paintRegionBorders(painter, worldToDevice);
-        if (layers_.paths) paintPaths(painter, worldToDevice);
+        if (planStale_)
+            painter.setOpacity(0.45);
+        if (layers_.regions)
+            paintRegions(painter, worldToDevice, deviceArea);
+        if (layers_.unreachable)
+            paintUnreachable(painter, worldToDevice, deviceArea);
+        if (layers_.quadTree)
+            paintQuadTree(painter, worldToDevice, deviceArea);
+        if (layers_.regions)
+            paintRegionBorders(painter, worldToDevice);
+        if (layers_.paths)
+            paintPaths(painter, worldToDevice);
         painter.setOpacity(1.0);
     }
-    if (layers_.starts) paintStarts(painter, worldToDevice);
+    if (layers_.starts)
+        paintStarts(painter, worldToDevice);
     painter.restore();
 }
 
-void PlanRenderer::paintLandCover(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
-    if (grid_ == nullptr || landCoverImage_.isNull()) return;
-    const QRectF full = deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY);
+void PlanRenderer::paintLandCover(QPainter& painter, const QTransform& worldToDevice,
+                                  const QRectF& deviceArea) const {
+    if (grid_ == nullptr || landCoverImage_.isNull())
+        return;
+    const QRectF full =
+        deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY);
     const QRectF visible = full.intersected(deviceArea);
-    if (visible.isEmpty()) return;
+    if (visible.isEmpty())
+        return;
     // Only the visible pixels are drawn, on whole-pixel boundaries, so deep zooms stay fast and crisp.
     const double pixelsPerColumn = full.width() / grid_->columns;
     const double pixelsPerRow = full.height() / grid_->rows;
-    const int firstColumn = std::clamp(static_cast<int>(std::floor((visible.left() - full.left()) / pixelsPerColumn)), 0, grid_->columns - 1);
-    const int lastColumn = std::clamp(static_cast<int>(std::ceil((visible.right() - full.left()) / pixelsPerColumn)), firstColumn + 1, grid_->columns);
-    const int firstRow = std::clamp(static_cast<int>(std::floor((visible.top() - full.top()) / pixelsPerRow)), 0, grid_->rows - 1);
-    const int lastRow = std::clamp(static_cast<int>(std::ceil((visible.bottom() - full.top()) / pixelsPerRow)), firstRow + 1, grid_->rows);
+    const int firstColumn =
+        std::clamp(static_cast<int>(std::floor((visible.left() - full.left()) / pixelsPerColumn)), 0,
+                   grid_->columns - 1);
+    const int lastColumn =
+        std::clamp(static_cast<int>(std::ceil((visible.right() - full.left()) / pixelsPerColumn)),
+                   firstColumn + 1, grid_->columns);
+    const int firstRow = std::clamp(static_cast<int>(std::floor((visible.top() - full.top()) / pixelsPerRow)),
+                                    0, grid_->rows - 1);
+    const int lastRow =
+        std::clamp(static_cast<int>(std::ceil((visible.bottom() - full.top()) / pixelsPerRow)), firstRow + 1,
+                   grid_->rows);
     const QRect source(firstColumn, firstRow, lastColumn - firstColumn, lastRow - firstRow);
     const QRectF target(full.left() + firstColumn * pixelsPerColumn, full.top() + firstRow * pixelsPerRow,
                         source.width() * pixelsPerColumn, source.height() * pixelsPerRow);
@@ -135,14 +166,17 @@ void PlanRenderer::paintLandCover(QPainter& painter, const QTransform& worldToDe
     painter.drawImage(target, landCoverImage_, source);
 }
 
-void PlanRenderer::paintRegions(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
+void PlanRenderer::paintRegions(QPainter& painter, const QTransform& worldToDevice,
+                                const QRectF& deviceArea) const {
     const CellGraph& graph = plan_->cells;
     std::unordered_map<int, std::vector<QRectF>> rectanglesByRobot;
     for (std::size_t id = 0; id < graph.size(); ++id) {
         const int robot = robotOf(*plan_, static_cast<int>(id));
-        if (robot < 0) continue;
+        if (robot < 0)
+            continue;
         const QRectF rectangle = deviceRectOf(worldToDevice, graph.cell(static_cast<int>(id)));
-        if (rectangle.intersects(deviceArea)) rectanglesByRobot[robot].push_back(rectangle);
+        if (rectangle.intersects(deviceArea))
+            rectanglesByRobot[robot].push_back(rectangle);
     }
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setPen(Qt::NoPen);
@@ -162,8 +196,10 @@ void PlanRenderer::paintRegionBorders(QPainter& painter, const QTransform& world
         const int first = static_cast<int>(a);
         const int firstRobot = robotOf(*plan_, first);
         for (const int second : graph.neighbours(first)) {
-            if (second <= first) continue;
-            if (robotOf(*plan_, second) == firstRobot) continue;
+            if (second <= first)
+                continue;
+            if (robotOf(*plan_, second) == firstRobot)
+                continue;
             const Cell& one = graph.cell(first);
             const Cell& other = graph.cell(second);
             const double tolerance = 1e-6 * std::max(one.size, other.size);
@@ -171,12 +207,16 @@ void PlanRenderer::paintRegionBorders(QPainter& painter, const QTransform& world
             const double top = std::min(one.maxY(), other.maxY());
             const double left = std::max(one.minX, other.minX);
             const double right = std::min(one.maxX(), other.maxX());
-            if (std::abs(one.maxX() - other.minX) < tolerance || std::abs(other.maxX() - one.minX) < tolerance) {
+            if (std::abs(one.maxX() - other.minX) < tolerance ||
+                std::abs(other.maxX() - one.minX) < tolerance) {
                 const double x = std::abs(one.maxX() - other.minX) < tolerance ? one.maxX() : one.minX;
-                borders.emplace_back(worldToDevice.map(QPointF(x, bottom)), worldToDevice.map(QPointF(x, top)));
-            } else if (std::abs(one.maxY() - other.minY) < tolerance || std::abs(other.maxY() - one.minY) < tolerance) {
+                borders.emplace_back(worldToDevice.map(QPointF(x, bottom)),
+                                     worldToDevice.map(QPointF(x, top)));
+            } else if (std::abs(one.maxY() - other.minY) < tolerance ||
+                       std::abs(other.maxY() - one.minY) < tolerance) {
                 const double y = std::abs(one.maxY() - other.minY) < tolerance ? one.maxY() : one.minY;
-                borders.emplace_back(worldToDevice.map(QPointF(left, y)), worldToDevice.map(QPointF(right, y)));
+                borders.emplace_back(worldToDevice.map(QPointF(left, y)),
+                                     worldToDevice.map(QPointF(right, y)));
             }
         }
     }
@@ -185,15 +225,19 @@ void PlanRenderer::paintRegionBorders(QPainter& painter, const QTransform& world
     painter.drawLines(borders.data(), static_cast<int>(borders.size()));
 }
 
-void PlanRenderer::paintUnreachable(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
+void PlanRenderer::paintUnreachable(QPainter& painter, const QTransform& worldToDevice,
+                                    const QRectF& deviceArea) const {
     const CellGraph& graph = plan_->cells;
     std::vector<QRectF> rectangles;
     for (std::size_t id = 0; id < graph.size(); ++id) {
-        if (robotOf(*plan_, static_cast<int>(id)) >= 0) continue;
+        if (robotOf(*plan_, static_cast<int>(id)) >= 0)
+            continue;
         const QRectF rectangle = deviceRectOf(worldToDevice, graph.cell(static_cast<int>(id)));
-        if (rectangle.intersects(deviceArea)) rectangles.push_back(rectangle);
+        if (rectangle.intersects(deviceArea))
+            rectangles.push_back(rectangle);
     }
-    if (rectangles.empty()) return;
+    if (rectangles.empty())
+        return;
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(120, 0, 0, 50));
@@ -202,17 +246,20 @@ void PlanRenderer::paintUnreachable(QPainter& painter, const QTransform& worldTo
     painter.drawRects(rectangles.data(), static_cast<int>(rectangles.size()));
 }
 
-void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
+void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDevice,
+                                 const QRectF& deviceArea) const {
     const CellGraph& graph = plan_->cells;
     const int levels = std::max(graph.frame().levels, 1);
     // The top grid overhangs the raster's east and south edges; cells there hold nothing to show.
     QRectF visible = deviceArea;
     if (grid_ != nullptr)
-        visible = visible.intersected(deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY));
+        visible = visible.intersected(
+            deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY));
     std::vector<std::vector<QRectF>> rectanglesByLevel(static_cast<std::size_t>(levels) + 1);
     for (const Cell& cell : graph.cells()) {
         const QRectF rectangle = deviceRectOf(worldToDevice, cell);
-        if (rectangle.width() < kSmallestOutlinedCellPixels || !rectangle.intersects(visible)) continue;
+        if (rectangle.width() < kSmallestOutlinedCellPixels || !rectangle.intersects(visible))
+            continue;
         const auto level = static_cast<std::size_t>(std::clamp(cell.level, 1, levels));
         rectanglesByLevel[level].push_back(rectangle);
     }
@@ -222,7 +269,8 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
     painter.setBrush(Qt::NoBrush);
     for (std::size_t level = 1; level < rectanglesByLevel.size(); ++level) {
         const auto& rectangles = rectanglesByLevel[level];
-        if (rectangles.empty()) continue;
+        if (rectangles.empty())
+            continue;
         QColor outline = RobotPalette::levelColour(static_cast<int>(level), levels);
         outline.setAlpha(110);
         QPen pen(outline, 0.0); // cosmetic: one device pixel at any zoom
@@ -240,18 +288,23 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
     std::size_t segments = 0;
     for (const CoveragePath& path : plan_->paths) {
         for (std::size_t i = 1; i < path.waypoints.size(); ++i)
-            totalLength += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x, path.waypoints[i].y - path.waypoints[i - 1].y);
+            totalLength += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x,
+                                      path.waypoints[i].y - path.waypoints[i - 1].y);
         segments += path.waypoints.size() > 1 ? path.waypoints.size() - 1 : 0;
     }
-    const double meanSegmentPixels = segments == 0 ? 0.0 : totalLength / static_cast<double>(segments) * std::abs(worldToDevice.m11());
+    const double meanSegmentPixels =
+        segments == 0 ? 0.0 : totalLength / static_cast<double>(segments) * std::abs(worldToDevice.m11());
     const bool dense = meanSegmentPixels < 12.0;
     const double arrowSpacing = kArrowSpacingPixels;
     for (const CoveragePath& path : plan_->paths) {
-        if (path.waypoints.size() < 2) continue;
+        if (path.waypoints.size() < 2)
+            continue;
         QPolygonF line;
         line.reserve(static_cast<qsizetype>(path.waypoints.size()) + 1);
-        for (const Waypoint& waypoint : path.waypoints) line << worldToDevice.map(QPointF(waypoint.x, waypoint.y));
-        if (path.closed && line.front() != line.back()) line << line.front();
+        for (const Waypoint& waypoint : path.waypoints)
+            line << worldToDevice.map(QPointF(waypoint.x, waypoint.y));
+        if (path.closed && line.front() != line.back())
+            line << line.front();
 
         const QColor colour = RobotPalette::colour(path.robot);
         // A pale casing under the line keeps it readable over any land-cover colour.
@@ -268,8 +321,10 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
             painter.drawPolyline(line);
         }
 
-        // Arrows at even on-screen spacing show the direction of travel; a dense overview has no room for them.
-        if (dense) continue;
+        // Arrows at even on-screen spacing show the direction of travel; a dense overview has no room for
+        // them.
+        if (dense)
+            continue;
         double untilNextArrow = arrowSpacing / 2.0;
         for (qsizetype i = 1; i < line.size(); ++i) {
             const QPointF from = line[i - 1];
@@ -291,9 +346,12 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
     std::vector<MapPoint> starts = starts_;
     if (starts.empty() && plan_ != nullptr) {
         for (const CoveragePath& path : plan_->paths) {
-            if (path.waypoints.empty()) continue;
-            if (static_cast<std::size_t>(path.robot) >= starts.size()) starts.resize(static_cast<std::size_t>(path.robot) + 1);
-            starts[static_cast<std::size_t>(path.robot)] = {path.waypoints.front().x, path.waypoints.front().y};
+            if (path.waypoints.empty())
+                continue;
+            if (static_cast<std::size_t>(path.robot) >= starts.size())
+                starts.resize(static_cast<std::size_t>(path.robot) + 1);
+            starts[static_cast<std::size_t>(path.robot)] = {path.waypoints.front().x,
+                                                            path.waypoints.front().y};
         }
     }
     painter.setRenderHint(QPainter::Antialiasing, true);
@@ -316,10 +374,11 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
         painter.setPen(QPen(QColor(20, 20, 20), 1.5));
         painter.setBrush(colour);
         painter.drawEllipse(centre, kStartRadiusPixels, kStartRadiusPixels);
-        if (!canDrawText) continue;
+        if (!canDrawText)
+            continue;
         painter.setPen(QPen(Qt::white, 1.0));
-        const QRectF box(centre.x() - kStartRadiusPixels, centre.y() - kStartRadiusPixels, 2.0 * kStartRadiusPixels,
-                         2.0 * kStartRadiusPixels);
+        const QRectF box(centre.x() - kStartRadiusPixels, centre.y() - kStartRadiusPixels,
+                         2.0 * kStartRadiusPixels, 2.0 * kStartRadiusPixels);
         painter.drawText(box, Qt::AlignCenter, QString::number(robot + 1));
     }
 }

@@ -10,7 +10,6 @@
 #include <QRectF>
 #include <QSizeF>
 #include <QTransform>
-
 #include <vector>
 
 class QPainter;
@@ -21,7 +20,7 @@ namespace mcpp::render {
 // world-to-device transform, so the GUI canvas and headless batch mode draw the same picture.
 // The grid, class table and plan are borrowed: they must outlive the renderer or be replaced first.
 class PlanRenderer {
-public:
+  public:
     // Rebuilds the cached land-cover image; call again when the class colours change.
     void setMap(const ClassGrid* grid, const ClassTable* classes);
     void setPlan(const Plan* plan);
@@ -43,11 +42,12 @@ public:
     void paint(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
 
     // The transform that fits the grid into a device area of `size`, centred, keeping aspect.
-    [[nodiscard]] static QTransform fitTransform(const ClassGrid& grid, const QSizeF& size, double margin = 0.0);
+    [[nodiscard]] static QTransform fitTransform(const ClassGrid& grid, const QSizeF& size,
+                                                 double margin = 0.0);
     // The colour a raster value is drawn in.
     [[nodiscard]] static QRgb classColour(const ClassTable& classes, std::int32_t value);
 
-private:
+  private:
     void paintLandCover(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintRegions(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintRegionBorders(QPainter& painter, const QTransform& worldToDevice) const;

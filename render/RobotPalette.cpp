@@ -36,7 +36,9 @@ QColor RobotPalette::colour(int robot) {
     return QColor::fromRgb(kRobotColours[static_cast<std::size_t>(index)]);
 }
 
-int RobotPalette::size() { return static_cast<int>(kRobotColours.size()); }
+int RobotPalette::size() {
+    return static_cast<int>(kRobotColours.size());
+}
 
 QColor RobotPalette::levelColour(int level, int levels) {
     // Coarse cells dark blue, fine cells light violet: the eye reads the nesting without a legend.

@@ -11,13 +11,13 @@ class MissionDocument;
 
 // A change to the land-cover class table (one cell edited or a preset applied), as before/after snapshots.
 class ClassTableEditCommand : public QUndoCommand {
-public:
-    ClassTableEditCommand(MissionDocument* document, ClassTable before, QString presetBefore, ClassTable after,
-                          QString presetAfter, const QString& text);
+  public:
+    ClassTableEditCommand(MissionDocument* document, ClassTable before, QString presetBefore,
+                          ClassTable after, QString presetAfter, const QString& text);
     void undo() override;
     void redo() override;
 
-private:
+  private:
     MissionDocument* document_;
     ClassTable before_;
     QString presetBefore_;

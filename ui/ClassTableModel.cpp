@@ -6,7 +6,6 @@
 #include <QBrush>
 #include <QColor>
 #include <QUndoStack>
-
 #include <cmath>
 
 namespace mcpp::ui {
@@ -17,7 +16,9 @@ QColor colourOf(const LandCoverClass& landCoverClass) {
     return QColor::fromRgb(static_cast<QRgb>(landCoverClass.colorRgb & 0xffffffu));
 }
 
-QString number(double value) { return QString::number(value, 'g', 10); }
+QString number(double value) {
+    return QString::number(value, 'g', 10);
+}
 
 } // namespace
 
@@ -35,7 +36,8 @@ void ClassTableModel::reload() {
     const auto& counts = raster != nullptr ? raster->classPixelCounts : noCounts;
     rounded_ = roundFieldsOfView(document_->classes(), counts);
     insidePixels_ = 0;
-    for (const auto& [value, count] : counts) insidePixels_ += count;
+    for (const auto& [value, count] : counts)
+        insidePixels_ += count;
     endResetModel();
 }
 
@@ -43,18 +45,23 @@ int ClassTableModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : static_cast<int>(document_->classes().size());
 }
 
-int ClassTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int ClassTableModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 int ClassTableModel::rowOfValue(std::int32_t value) const {
     const auto& classes = document_->classes().classes();
     for (std::size_t row = 0; row < classes.size(); ++row)
-        if (classes[row].value == value) return static_cast<int>(row);
+        if (classes[row].value == value)
+            return static_cast<int>(row);
     return -1;
 }
 
 QVariant ClassTableModel::data(const QModelIndex& index, int role) const {
-    if (!index.isValid() || index.row() >= rowCount()) return {};
-    const LandCoverClass& landCoverClass = document_->classes().classes()[static_cast<std::size_t>(index.row())];
+    if (!index.isValid() || index.row() >= rowCount())
+        return {};
+    const LandCoverClass& landCoverClass =
+        document_->classes().classes()[static_cast<std::size_t>(index.row())];
     const auto rounded = rounded_.find(landCoverClass.value);
     const bool hasRounded = rounded != rounded_.end();
     const bool display = role == Qt::DisplayRole;
@@ -62,36 +69,50 @@ QVariant ClassTableModel::data(const QModelIndex& index, int role) const {
 
     switch (index.column()) {
     case Value:
-        if (display || edit) return landCoverClass.value;
+        if (display || edit)
+            return landCoverClass.value;
         break;
     case Colour:
-        if (role == Qt::DecorationRole) return colourOf(landCoverClass);
-        if (role == Qt::ToolTipRole) return colourOf(landCoverClass).name();
+        if (role == Qt::DecorationRole)
+            return colourOf(landCoverClass);
+        if (role == Qt::ToolTipRole)
+            return colourOf(landCoverClass).name();
         break;
     case Name:
-        if (display || edit) return QString::fromStdString(landCoverClass.name);
+        if (display || edit)
+            return QString::fromStdString(landCoverClass.name);
         break;
     case Speed:
-        if (display || edit) return number(landCoverClass.speedMetresPerSecond);
+        if (display || edit)
+            return number(landCoverClass.speedMetresPerSecond);
         break;
     case FieldOfView:
-        if (display || edit) return number(landCoverClass.fieldOfViewMetres);
+        if (display || edit)
+            return number(landCoverClass.fieldOfViewMetres);
         break;
     case Passable:
-        if (role == Qt::CheckStateRole) return landCoverClass.passable ? Qt::Checked : Qt::Unchecked;
+        if (role == Qt::CheckStateRole)
+            return landCoverClass.passable ? Qt::Checked : Qt::Unchecked;
         break;
     case RoundedFieldOfView:
-        if (display) return hasRounded ? number(rounded->second.roundedMetres) : QStringLiteral("–");
+        if (display)
+            return hasRounded ? number(rounded->second.roundedMetres) : QStringLiteral("–");
         break;
     case Level:
-        if (display) return hasRounded ? QVariant(rounded->second.level) : QVariant(QStringLiteral("–"));
+        if (display)
+            return hasRounded ? QVariant(rounded->second.level) : QVariant(QStringLiteral("–"));
         break;
     case Share: {
-        if (!display) break;
+        if (!display)
+            break;
         const io::LoadedRaster* raster = document_->raster();
-        if (raster == nullptr || insidePixels_ == 0) return QStringLiteral("–");
+        if (raster == nullptr || insidePixels_ == 0)
+            return QStringLiteral("–");
         const auto found = raster->classPixelCounts.find(landCoverClass.value);
-        const double share = found == raster->classPixelCounts.end() ? 0.0 : 100.0 * static_cast<double>(found->second) / static_cast<double>(insidePixels_);
+        const double share =
+            found == raster->classPixelCounts.end()
+                ? 0.0
+                : 100.0 * static_cast<double>(found->second) / static_cast<double>(insidePixels_);
         return QStringLiteral("%1 %").arg(share, 0, 'f', share < 1.0 ? 2 : 1);
     }
     default:
@@ -99,38 +120,57 @@ QVariant ClassTableModel::data(const QModelIndex& index, int role) const {
     }
     if (role == Qt::TextAlignmentRole && index.column() != Name)
         return QVariant::fromValue(Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
-    if (role == Qt::ForegroundRole && !landCoverClass.isTraversable()) return QBrush(QColor(130, 130, 130));
+    if (role == Qt::ForegroundRole && !landCoverClass.isTraversable())
+        return QBrush(QColor(130, 130, 130));
     if (role == Qt::ToolTipRole) {
         if (index.column() == RoundedFieldOfView)
-            return tr("The FOV rounded down to the smallest passable FOV times a power of two; the quadtree uses this width.");
-        if (index.column() == Level) return tr("Quadtree level whose sub-cells have this class's rounded FOV (1 = largest cells).");
-        if (index.column() == Share) return tr("Share of the raster's task-area pixels in this class.");
-        if (!landCoverClass.isTraversable()) return tr("Obstacle: robots do not enter this class.");
+            return tr("The FOV rounded down to the smallest passable FOV times a power of two; the quadtree "
+                      "uses this width.");
+        if (index.column() == Level)
+            return tr("Quadtree level whose sub-cells have this class's rounded FOV (1 = largest cells).");
+        if (index.column() == Share)
+            return tr("Share of the raster's task-area pixels in this class.");
+        if (!landCoverClass.isTraversable())
+            return tr("Obstacle: robots do not enter this class.");
     }
     return {};
 }
 
 QVariant ClassTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return QAbstractTableModel::headerData(section, orientation, role);
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
     switch (section) {
-    case Value: return tr("Value");
-    case Colour: return tr("Colour");
-    case Name: return tr("Name");
-    case Speed: return tr("Speed (m/s)");
-    case FieldOfView: return tr("FOV (m)");
-    case Passable: return tr("Passable");
-    case RoundedFieldOfView: return tr("Rounded FOV (m)");
-    case Level: return tr("Level");
-    case Share: return tr("Share");
-    default: return {};
+    case Value:
+        return tr("Value");
+    case Colour:
+        return tr("Colour");
+    case Name:
+        return tr("Name");
+    case Speed:
+        return tr("Speed (m/s)");
+    case FieldOfView:
+        return tr("FOV (m)");
+    case Passable:
+        return tr("Passable");
+    case RoundedFieldOfView:
+        return tr("Rounded FOV (m)");
+    case Level:
+        return tr("Level");
+    case Share:
+        return tr("Share");
+    default:
+        return {};
     }
 }
 
 Qt::ItemFlags ClassTableModel::flags(const QModelIndex& index) const {
-    if (!index.isValid()) return Qt::NoItemFlags;
+    if (!index.isValid())
+        return Qt::NoItemFlags;
     Qt::ItemFlags result = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
-    if (index.column() == Name || index.column() == Speed || index.column() == FieldOfView) result |= Qt::ItemIsEditable;
-    if (index.column() == Passable) result |= Qt::ItemIsUserCheckable;
+    if (index.column() == Name || index.column() == Speed || index.column() == FieldOfView)
+        result |= Qt::ItemIsEditable;
+    if (index.column() == Passable)
+        result |= Qt::ItemIsUserCheckable;
     return result;
 }
 
@@ -141,7 +181,8 @@ bool ClassTableModel::refuse(const QString& reason) {
 }
 
 bool ClassTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
-    if (!index.isValid() || index.row() >= rowCount()) return false;
+    if (!index.isValid() || index.row() >= rowCount())
+        return false;
     const ClassTable before = document_->classes();
     LandCoverClass edited = before.classes()[static_cast<std::size_t>(index.row())];
     const QString className = QString::fromStdString(edited.name);
@@ -149,26 +190,35 @@ bool ClassTableModel::setData(const QModelIndex& index, const QVariant& value, i
 
     if (index.column() == Passable && role == Qt::CheckStateRole) {
         edited.passable = value.toInt() == Qt::Checked;
-        description = edited.passable ? tr("Make %1 passable").arg(className) : tr("Make %1 an obstacle").arg(className);
+        description = edited.passable ? tr("Make %1 passable").arg(className)
+                                      : tr("Make %1 an obstacle").arg(className);
     } else if (role != Qt::EditRole) {
         return false;
     } else if (index.column() == Name) {
         const QString name = value.toString().trimmed();
-        if (name.isEmpty()) return refuse(tr("A class name cannot be empty."));
+        if (name.isEmpty())
+            return refuse(tr("A class name cannot be empty."));
         edited.name = name.toStdString();
         description = tr("Rename class %1").arg(edited.value);
     } else if (index.column() == Speed || index.column() == FieldOfView) {
         bool isNumber = false;
         const double number = value.toString().trimmed().toDouble(&isNumber);
         const QString what = index.column() == Speed ? tr("Speed") : tr("FOV");
-        if (!isNumber) return refuse(tr("%1 of %2 must be a number; \"%3\" is not.").arg(what, className, value.toString()));
-        if (!std::isfinite(number)) return refuse(tr("%1 of %2 must be a finite number.").arg(what, className));
+        if (!isNumber)
+            return refuse(
+                tr("%1 of %2 must be a number; \"%3\" is not.").arg(what, className, value.toString()));
+        if (!std::isfinite(number))
+            return refuse(tr("%1 of %2 must be a finite number.").arg(what, className));
         if (index.column() == Speed) {
-            if (number < 0.0) return refuse(tr("Speed of %1 cannot be negative; use 0 or clear Passable to make it an obstacle.").arg(className));
+            if (number < 0.0)
+                return refuse(
+                    tr("Speed of %1 cannot be negative; use 0 or clear Passable to make it an obstacle.")
+                        .arg(className));
             edited.speedMetresPerSecond = number;
             description = tr("Set speed of %1 to %2 m/s").arg(className).arg(number);
         } else {
-            if (number <= 0.0) return refuse(tr("FOV of %1 must be greater than 0 m.").arg(className));
+            if (number <= 0.0)
+                return refuse(tr("FOV of %1 must be greater than 0 m.").arg(className));
             edited.fieldOfViewMetres = number;
             description = tr("Set FOV of %1 to %2 m").arg(className).arg(number);
         }
@@ -176,7 +226,8 @@ bool ClassTableModel::setData(const QModelIndex& index, const QVariant& value, i
         return false;
     }
 
-    if (edited == before.classes()[static_cast<std::size_t>(index.row())]) return true;
+    if (edited == before.classes()[static_cast<std::size_t>(index.row())])
+        return true;
     ClassTable after = before;
     after.set(edited);
     const QString preset = QString::fromStdString(document_->mission().preset);

@@ -3,7 +3,6 @@
 #include "ui/FieldOfViewRounding.hpp"
 
 #include <QAbstractTableModel>
-
 #include <map>
 
 class QUndoStack;
@@ -17,15 +16,27 @@ class MissionDocument;
 class ClassTableModel : public QAbstractTableModel {
     Q_OBJECT
 
-public:
-    enum Column { Value, Colour, Name, Speed, FieldOfView, Passable, RoundedFieldOfView, Level, Share, ColumnCount };
+  public:
+    enum Column {
+        Value,
+        Colour,
+        Name,
+        Speed,
+        FieldOfView,
+        Passable,
+        RoundedFieldOfView,
+        Level,
+        Share,
+        ColumnCount
+    };
 
     ClassTableModel(MissionDocument* document, QUndoStack* undoStack, QObject* parent = nullptr);
 
     [[nodiscard]] int rowCount(const QModelIndex& parent = {}) const override;
     [[nodiscard]] int columnCount(const QModelIndex& parent = {}) const override;
     [[nodiscard]] QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
-    [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation,
+                                      int role = Qt::DisplayRole) const override;
     [[nodiscard]] Qt::ItemFlags flags(const QModelIndex& index) const override;
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
@@ -33,10 +44,10 @@ public:
     [[nodiscard]] int rowOfValue(std::int32_t value) const;
     [[nodiscard]] const QString& lastRefusal() const { return lastRefusal_; }
 
-signals:
+  signals:
     void editRefused(const QString& reason);
 
-private:
+  private:
     void reload();
     bool refuse(const QString& reason);
 

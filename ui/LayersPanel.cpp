@@ -9,12 +9,18 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("layersPanel"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
-    landCover_ = addToggle(QStringLiteral("layerLandCover"), tr("Land cover"), tr("The raster in its class colours"));
-    quadTree_ = addToggle(QStringLiteral("layerQuadTree"), tr("Quadtree cells"), tr("Cell outlines, darker for larger cells"));
-    regions_ = addToggle(QStringLiteral("layerRegions"), tr("Regions"), tr("Each robot's cells, tinted in its colour"));
-    paths_ = addToggle(QStringLiteral("layerPaths"), tr("Paths"), tr("Coverage paths with arrows in the direction of travel"));
-    starts_ = addToggle(QStringLiteral("layerStarts"), tr("Start points"), tr("Numbered start markers; drag to move"));
-    unreachable_ = addToggle(QStringLiteral("layerUnreachable"), tr("Unreachable"), tr("Hatched: passable cells no robot can reach"));
+    landCover_ =
+        addToggle(QStringLiteral("layerLandCover"), tr("Land cover"), tr("The raster in its class colours"));
+    quadTree_ = addToggle(QStringLiteral("layerQuadTree"), tr("Quadtree cells"),
+                          tr("Cell outlines, darker for larger cells"));
+    regions_ = addToggle(QStringLiteral("layerRegions"), tr("Regions"),
+                         tr("Each robot's cells, tinted in its colour"));
+    paths_ = addToggle(QStringLiteral("layerPaths"), tr("Paths"),
+                       tr("Coverage paths with arrows in the direction of travel"));
+    starts_ = addToggle(QStringLiteral("layerStarts"), tr("Start points"),
+                        tr("Numbered start markers; drag to move"));
+    unreachable_ = addToggle(QStringLiteral("layerUnreachable"), tr("Unreachable"),
+                             tr("Hatched: passable cells no robot can reach"));
     layout->addStretch(1);
 }
 
@@ -40,8 +46,9 @@ render::MapLayers LayersPanel::layers() const {
 }
 
 void LayersPanel::setLayers(const render::MapLayers& layers) {
-    const QSignalBlocker blockers[] = {QSignalBlocker(landCover_), QSignalBlocker(quadTree_), QSignalBlocker(regions_),
-                                       QSignalBlocker(paths_), QSignalBlocker(starts_), QSignalBlocker(unreachable_)};
+    const QSignalBlocker blockers[] = {QSignalBlocker(landCover_), QSignalBlocker(quadTree_),
+                                       QSignalBlocker(regions_),   QSignalBlocker(paths_),
+                                       QSignalBlocker(starts_),    QSignalBlocker(unreachable_)};
     landCover_->setChecked(layers.landCover);
     quadTree_->setChecked(layers.quadTree);
     regions_->setChecked(layers.regions);

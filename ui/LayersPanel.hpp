@@ -12,15 +12,15 @@ namespace mcpp::ui {
 class LayersPanel : public QWidget {
     Q_OBJECT
 
-public:
+  public:
     explicit LayersPanel(QWidget* parent = nullptr);
     [[nodiscard]] render::MapLayers layers() const;
     void setLayers(const render::MapLayers& layers);
 
-signals:
+  signals:
     void layersChanged(const mcpp::render::MapLayers& layers);
 
-private:
+  private:
     QCheckBox* addToggle(const QString& objectName, const QString& text, const QString& toolTip);
 
     QCheckBox* landCover_;

@@ -2,11 +2,11 @@
 
 #include "io/ClassTableSources.hpp"
 #include "io/PlanExport.hpp"
+#include "render/PlanImage.hpp"
 #include "ui/ClassTableEditCommand.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/LayersPanel.hpp"
 #include "ui/MapCanvas.hpp"
-#include "render/PlanImage.hpp"
 #include "ui/PlannerSettingsPanel.hpp"
 #include "ui/PlanningRunner.hpp"
 #include "ui/RecentFiles.hpp"
@@ -43,7 +43,6 @@
 #include <QToolTip>
 #include <QUndoStack>
 #include <QVBoxLayout>
-
 #include <cmath>
 
 namespace mcpp::ui {
@@ -54,7 +53,8 @@ const QString kRasterFolderKey = QStringLiteral("folders/raster");
 const QString kMissionFolderKey = QStringLiteral("folders/mission");
 const QString kExportFolderKey = QStringLiteral("folders/export");
 const QString kSampleShownKey = QStringLiteral("sampleShown");
-const QString kRasterFilter = QObject::tr("Land-cover rasters (*.tif *.tiff *.img *.vrt *.asc *.gpkg *.nc);;All files (*)");
+const QString kRasterFilter =
+    QObject::tr("Land-cover rasters (*.tif *.tiff *.img *.vrt *.asc *.gpkg *.nc);;All files (*)");
 const QString kMissionFilter = QObject::tr("mcpp missions (*.json);;All files (*)");
 
 struct ExportDescription {
@@ -68,36 +68,50 @@ struct ExportDescription {
 const std::vector<ExportDescription>& exportDescriptions() {
     using Format = MainWindow::ExportFormat;
     static const std::vector<ExportDescription> descriptions = {
-        {Format::GeoJson, QObject::tr("GeoJSON…"), QObject::tr("GeoJSON (*.geojson *.json)"), QStringLiteral("geojson"), false},
-        {Format::GeoPackage, QObject::tr("GeoPackage…"), QObject::tr("GeoPackage (*.gpkg)"), QStringLiteral("gpkg"), false},
+        {Format::GeoJson, QObject::tr("GeoJSON…"), QObject::tr("GeoJSON (*.geojson *.json)"),
+         QStringLiteral("geojson"), false},
+        {Format::GeoPackage, QObject::tr("GeoPackage…"), QObject::tr("GeoPackage (*.gpkg)"),
+         QStringLiteral("gpkg"), false},
         {Format::Kml, QObject::tr("KML…"), QObject::tr("KML (*.kml)"), QStringLiteral("kml"), false},
         {Format::Gpx, QObject::tr("GPX…"), QObject::tr("GPX (*.gpx)"), QStringLiteral("gpx"), false},
-        {Format::QGroundControlPlan, QObject::tr("QGroundControl plan per robot…"), QObject::tr("QGroundControl plan (*.plan)"), QStringLiteral("plan"), true},
-        {Format::WaypointList, QObject::tr("Waypoint list (QGC WPL) per robot…"), QObject::tr("Waypoint list (*.waypoints *.txt)"), QStringLiteral("waypoints"), true},
-        {Format::WaypointCsv, QObject::tr("Waypoint CSV per robot…"), QObject::tr("CSV (*.csv)"), QStringLiteral("csv"), true},
-        {Format::ReportJson, QObject::tr("Report (JSON)…"), QObject::tr("JSON (*.json)"), QStringLiteral("json"), false},
-        {Format::ReportCsv, QObject::tr("Report (CSV)…"), QObject::tr("CSV (*.csv)"), QStringLiteral("csv"), false},
-        {Format::Png, QObject::tr("Map image (PNG)…"), QObject::tr("PNG image (*.png)"), QStringLiteral("png"), false},
-        {Format::Svg, QObject::tr("Map drawing (SVG)…"), QObject::tr("SVG drawing (*.svg)"), QStringLiteral("svg"), false},
+        {Format::QGroundControlPlan, QObject::tr("QGroundControl plan per robot…"),
+         QObject::tr("QGroundControl plan (*.plan)"), QStringLiteral("plan"), true},
+        {Format::WaypointList, QObject::tr("Waypoint list (QGC WPL) per robot…"),
+         QObject::tr("Waypoint list (*.waypoints *.txt)"), QStringLiteral("waypoints"), true},
+        {Format::WaypointCsv, QObject::tr("Waypoint CSV per robot…"), QObject::tr("CSV (*.csv)"),
+         QStringLiteral("csv"), true},
+        {Format::ReportJson, QObject::tr("Report (JSON)…"), QObject::tr("JSON (*.json)"),
+         QStringLiteral("json"), false},
+        {Format::ReportCsv, QObject::tr("Report (CSV)…"), QObject::tr("CSV (*.csv)"), QStringLiteral("csv"),
+         false},
+        {Format::Png, QObject::tr("Map image (PNG)…"), QObject::tr("PNG image (*.png)"),
+         QStringLiteral("png"), false},
+        {Format::Svg, QObject::tr("Map drawing (SVG)…"), QObject::tr("SVG drawing (*.svg)"),
+         QStringLiteral("svg"), false},
     };
     return descriptions;
 }
 
 const ExportDescription& describe(MainWindow::ExportFormat format) {
     for (const auto& description : exportDescriptions())
-        if (description.format == format) return description;
+        if (description.format == format)
+            return description;
     return exportDescriptions().front();
 }
 
 // "zion-plan.plan" -> "zion-plan-robot2.plan" when several robots share one chosen name.
 QString perRobotPath(const QString& path, int robot, int robots) {
-    if (robots <= 1) return path;
+    if (robots <= 1)
+        return path;
     const QFileInfo info(path);
     const QString suffix = info.suffix().isEmpty() ? QString() : QStringLiteral(".") + info.suffix();
-    return info.dir().filePath(QStringLiteral("%1-robot%2%3").arg(info.completeBaseName()).arg(robot + 1).arg(suffix));
+    return info.dir().filePath(
+        QStringLiteral("%1-robot%2%3").arg(info.completeBaseName()).arg(robot + 1).arg(suffix));
 }
 
-QString formatCoordinate(double value) { return QLocale::system().toString(value, 'f', 1); }
+QString formatCoordinate(double value) {
+    return QLocale::system().toString(value, 'f', 1);
+}
 
 QString formatDegrees(double value, QChar positive, QChar negative) {
     return QStringLiteral("%1° %2").arg(std::abs(value), 0, 'f', 5).arg(value >= 0.0 ? positive : negative);
@@ -132,9 +146,11 @@ MainWindow::MainWindow(QWidget* parent)
 
     // Deferred so that app/main.cpp (or a test) can open a file or opt out before the event loop runs.
     QTimer::singleShot(0, this, [this] {
-        if (!openSampleOnFirstStart_ || document_->hasMap()) return;
+        if (!openSampleOnFirstStart_ || document_->hasMap())
+            return;
         QSettings settings;
-        if (settings.value(kSampleShownKey, false).toBool()) return;
+        if (settings.value(kSampleShownKey, false).toBool())
+            return;
         settings.setValue(kSampleShownKey, true);
         openSampleMission(true);
     });
@@ -143,7 +159,8 @@ MainWindow::MainWindow(QWidget* parent)
 MainWindow::~MainWindow() {
     // A run that ends now must not call back into a window being torn down.
     disconnect(runner_, nullptr, this, nullptr);
-    disconnect(undoStack_, nullptr, this, nullptr); // clearing the stack on destruction signals an index change
+    disconnect(undoStack_, nullptr, this,
+               nullptr); // clearing the stack on destruction signals an index change
     disconnect(document_, nullptr, this, nullptr);
     runner_->cancel();
     runner_->waitForFinished();
@@ -164,7 +181,8 @@ void MainWindow::createDocks() {
     presetCombo_->addItem(tr("From the raster's legend"), QString());
     for (const auto& preset : io::classTablePresets()) {
         presetCombo_->addItem(QString::fromStdString(preset.name), QString::fromStdString(preset.name));
-        presetCombo_->setItemData(presetCombo_->count() - 1, QString::fromStdString(preset.description), Qt::ToolTipRole);
+        presetCombo_->setItemData(presetCombo_->count() - 1, QString::fromStdString(preset.description),
+                                  Qt::ToolTipRole);
     }
     presetCombo_->setToolTip(tr("Replace speeds, FOVs and passability with a preset's (one undoable step)"));
     presetRow->addWidget(presetCombo_, 1);
@@ -182,28 +200,39 @@ void MainWindow::createDocks() {
     classView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     classView_->horizontalHeader()->setSectionResizeMode(ClassTableModel::Name, QHeaderView::Stretch);
     classView_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    classView_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed | QAbstractItemView::AnyKeyPressed);
+    classView_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                                QAbstractItemView::AnyKeyPressed);
     classesLayout->addWidget(classView_, 1);
-    connect(presetCombo_, &QComboBox::activated, this, [this](int index) { applyPreset(presetCombo_->itemData(index).toString()); });
+    connect(presetCombo_, &QComboBox::activated, this,
+            [this](int index) { applyPreset(presetCombo_->itemData(index).toString()); });
     connect(classModel_, &ClassTableModel::editRefused, this, [this](const QString& reason) {
         showStatus(reason);
         QToolTip::showText(QCursor::pos(), reason, classView_);
     });
     connect(loadCsv, &QPushButton::clicked, this, [this] {
-        if (!document_->hasMap()) return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Load class table"), dialogFolder(kMissionFolderKey), tr("CSV (*.csv)"));
-        if (path.isEmpty()) return;
+        if (!document_->hasMap())
+            return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load class table"),
+                                                          dialogFolder(kMissionFolderKey), tr("CSV (*.csv)"));
+        if (path.isEmpty())
+            return;
         auto table = io::loadClassTableCsv(path.toStdString());
-        if (!table.ok()) return reportError(tr("Cannot load class table"), QString::fromStdString(table.error()));
-        undoStack_->push(new ClassTableEditCommand(document_, document_->classes(), QString::fromStdString(document_->mission().preset),
-                                                   table.value(), QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
+        if (!table.ok())
+            return reportError(tr("Cannot load class table"), QString::fromStdString(table.error()));
+        undoStack_->push(new ClassTableEditCommand(
+            document_, document_->classes(), QString::fromStdString(document_->mission().preset),
+            table.value(), QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
     });
     connect(saveCsv, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save class table"), dialogFolder(kMissionFolderKey), tr("CSV (*.csv)"));
-        if (path.isEmpty()) return;
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save class table"),
+                                                          dialogFolder(kMissionFolderKey), tr("CSV (*.csv)"));
+        if (path.isEmpty())
+            return;
         const auto status = io::saveClassTableCsv(document_->classes(), path.toStdString());
-        if (!status.ok()) reportError(tr("Cannot save class table"), QString::fromStdString(status.error()));
-        else showStatus(tr("Saved class table to %1").arg(path));
+        if (!status.ok())
+            reportError(tr("Cannot save class table"), QString::fromStdString(status.error()));
+        else
+            showStatus(tr("Saved class table to %1").arg(path));
     });
 
     // Robots: table plus add/remove.
@@ -233,25 +262,32 @@ void MainWindow::createDocks() {
         canvas_->setFocus();
     });
     connect(removeRobot, &QPushButton::clicked, this, &MainWindow::removeSelectedRobot);
-    connect(robotModel_, &RobotTableModel::editRefused, this, [this](const QString& reason) { showStatus(reason); });
+    connect(robotModel_, &RobotTableModel::editRefused, this,
+            [this](const QString& reason) { showStatus(reason); });
     connect(robotView_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
-            [this](const QModelIndex& current) { canvas_->setSelectedStart(current.isValid() ? current.row() : -1); });
+            [this](const QModelIndex& current) {
+                canvas_->setSelectedStart(current.isValid() ? current.row() : -1);
+            });
     connect(canvas_, &MapCanvas::selectedStartChanged, this, [this](int robot) {
-        if (robot < 0) robotView_->clearSelection();
-        else if (robotView_->currentIndex().row() != robot) robotView_->selectRow(robot);
+        if (robot < 0)
+            robotView_->clearSelection();
+        else if (robotView_->currentIndex().row() != robot)
+            robotView_->selectRow(robot);
     });
 
     settingsPanel_ = new PlannerSettingsPanel(this);
-    connect(settingsPanel_, &PlannerSettingsPanel::settingsEdited, this, [this](const PlannerSettings& settings) {
-        document_->setSettings(settings);
-        settingsModified_ = true;
-        updateTitle();
-    });
+    connect(settingsPanel_, &PlannerSettingsPanel::settingsEdited, this,
+            [this](const PlannerSettings& settings) {
+                document_->setSettings(settings);
+                settingsModified_ = true;
+                updateTitle();
+            });
 
     resultsPanel_ = new ResultsPanel(this);
 
     auto* layersDock = makeDock(QStringLiteral("layersDock"), tr("Layers"), layersPanel_, this);
-    auto* classesDock = makeDock(QStringLiteral("classesDock"), tr("Land-cover classes"), classesWidget, this);
+    auto* classesDock =
+        makeDock(QStringLiteral("classesDock"), tr("Land-cover classes"), classesWidget, this);
     auto* robotsDock = makeDock(QStringLiteral("robotsDock"), tr("Robots"), robotsWidget, this);
     auto* settingsDock = makeDock(QStringLiteral("plannerDock"), tr("Planner"), settingsPanel_, this);
     auto* resultsDock = makeDock(QStringLiteral("resultsDock"), tr("Results"), resultsPanel_, this);
@@ -267,42 +303,55 @@ void MainWindow::createDocks() {
 
 void MainWindow::createActions() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
-    auto* openRasterAction = fileMenu->addAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("Open &raster…"), this, [this] {
-        if (!maybeSave()) return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open land-cover raster"), dialogFolder(kRasterFolderKey), kRasterFilter);
-        if (!path.isEmpty()) openRaster(path);
-    });
+    auto* openRasterAction = fileMenu->addAction(
+        QIcon::fromTheme(QStringLiteral("document-open")), tr("Open &raster…"), this, [this] {
+            if (!maybeSave())
+                return;
+            const QString path = QFileDialog::getOpenFileName(this, tr("Open land-cover raster"),
+                                                              dialogFolder(kRasterFolderKey), kRasterFilter);
+            if (!path.isEmpty())
+                openRaster(path);
+        });
     openRasterAction->setObjectName(QStringLiteral("openRasterAction"));
     openRasterAction->setShortcut(QKeySequence::Open);
     auto* openMissionAction = fileMenu->addAction(tr("Open &mission…"), this, [this] {
-        if (!maybeSave()) return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open mission"), dialogFolder(kMissionFolderKey), kMissionFilter);
-        if (!path.isEmpty()) openMission(path);
+        if (!maybeSave())
+            return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open mission"),
+                                                          dialogFolder(kMissionFolderKey), kMissionFilter);
+        if (!path.isEmpty())
+            openMission(path);
     });
     openMissionAction->setObjectName(QStringLiteral("openMissionAction"));
     openMissionAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
     recentMenu_ = fileMenu->addMenu(tr("Open r&ecent"));
     fileMenu->addSeparator();
-    saveAction_ = fileMenu->addAction(QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save mission"), this, [this] {
-        if (document_->missionPath().isEmpty()) {
-            const QString path = QFileDialog::getSaveFileName(this, tr("Save mission"), dialogFolder(kMissionFolderKey), kMissionFilter);
-            if (!path.isEmpty()) saveMission(path);
-        } else {
-            saveMission(document_->missionPath());
-        }
-    });
+    saveAction_ = fileMenu->addAction(
+        QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save mission"), this, [this] {
+            if (document_->missionPath().isEmpty()) {
+                const QString path = QFileDialog::getSaveFileName(
+                    this, tr("Save mission"), dialogFolder(kMissionFolderKey), kMissionFilter);
+                if (!path.isEmpty())
+                    saveMission(path);
+            } else {
+                saveMission(document_->missionPath());
+            }
+        });
     saveAction_->setObjectName(QStringLiteral("saveMissionAction"));
     saveAction_->setShortcut(QKeySequence::Save);
     auto* saveAsAction = fileMenu->addAction(tr("Save mission &as…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save mission as"), dialogFolder(kMissionFolderKey), kMissionFilter);
-        if (!path.isEmpty()) saveMission(path);
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save mission as"),
+                                                          dialogFolder(kMissionFolderKey), kMissionFilter);
+        if (!path.isEmpty())
+            saveMission(path);
     });
     saveAsAction->setShortcut(QKeySequence::SaveAs);
     fileMenu->addSeparator();
     QMenu* exportMenu = fileMenu->addMenu(tr("&Export plan"));
     for (const auto& description : exportDescriptions()) {
         const ExportFormat format = description.format;
-        auto* action = exportMenu->addAction(description.menuText, this, [this, format] { chooseExport(format); });
+        auto* action =
+            exportMenu->addAction(description.menuText, this, [this, format] { chooseExport(format); });
         exportActions_ << action;
     }
     fileMenu->addSeparator();
@@ -319,21 +368,26 @@ void MainWindow::createActions() {
     editMenu->addAction(undoAction);
     editMenu->addAction(redoAction);
     editMenu->addSeparator();
-    removeRobotAction_ = editMenu->addAction(tr("Remove selected robot"), this, &MainWindow::removeSelectedRobot);
+    removeRobotAction_ =
+        editMenu->addAction(tr("Remove selected robot"), this, &MainWindow::removeSelectedRobot);
     removeRobotAction_->setShortcut(QKeySequence::Delete);
     removeRobotAction_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     robotView_->addAction(removeRobotAction_);
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-    auto* zoomIn = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-in")), tr("Zoom &in"), canvas_, &MapCanvas::zoomIn);
+    auto* zoomIn = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-in")), tr("Zoom &in"), canvas_,
+                                       &MapCanvas::zoomIn);
     zoomIn->setShortcut(QKeySequence::ZoomIn);
-    auto* zoomOut = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-out")), tr("Zoom &out"), canvas_, &MapCanvas::zoomOut);
+    auto* zoomOut = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-out")), tr("Zoom &out"),
+                                        canvas_, &MapCanvas::zoomOut);
     zoomOut->setShortcut(QKeySequence::ZoomOut);
-    auto* zoomFit = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-fit-best")), tr("Zoom to &fit"), canvas_, &MapCanvas::zoomToFit);
+    auto* zoomFit = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-fit-best")), tr("Zoom to &fit"),
+                                        canvas_, &MapCanvas::zoomToFit);
     zoomFit->setObjectName(QStringLiteral("zoomToFitAction"));
     zoomFit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
     viewMenu->addSeparator();
-    for (QDockWidget* dock : findChildren<QDockWidget*>()) viewMenu->addAction(dock->toggleViewAction());
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        viewMenu->addAction(dock->toggleViewAction());
 
     QMenu* planMenu = menuBar()->addMenu(tr("&Plan"));
     auto* tools = new QActionGroup(this);
@@ -350,19 +404,28 @@ void MainWindow::createActions() {
     placeToolAction_->setToolTip(tr("Click on the map to add a robot start there (S)"));
     tools->addAction(panToolAction_);
     tools->addAction(placeToolAction_);
-    connect(panToolAction_, &QAction::toggled, this, [this](bool on) { if (on) canvas_->setTool(MapCanvas::Tool::Pan); });
-    connect(placeToolAction_, &QAction::toggled, this, [this](bool on) { if (on) canvas_->setTool(MapCanvas::Tool::PlaceStart); });
+    connect(panToolAction_, &QAction::toggled, this, [this](bool on) {
+        if (on)
+            canvas_->setTool(MapCanvas::Tool::Pan);
+    });
+    connect(placeToolAction_, &QAction::toggled, this, [this](bool on) {
+        if (on)
+            canvas_->setTool(MapCanvas::Tool::PlaceStart);
+    });
     planMenu->addSeparator();
-    planAction_ = planMenu->addAction(QIcon::fromTheme(QStringLiteral("media-playback-start")), tr("&Plan"), this, &MainWindow::startPlanning);
+    planAction_ = planMenu->addAction(QIcon::fromTheme(QStringLiteral("media-playback-start")), tr("&Plan"),
+                                      this, &MainWindow::startPlanning);
     planAction_->setObjectName(QStringLiteral("planAction"));
     planAction_->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(Qt::CTRL | Qt::Key_Return)});
     planAction_->setToolTip(tr("Plan coverage paths for all robots (F5)"));
-    cancelAction_ = planMenu->addAction(QIcon::fromTheme(QStringLiteral("process-stop")), tr("&Cancel planning"), this, &MainWindow::cancelPlanning);
+    cancelAction_ = planMenu->addAction(QIcon::fromTheme(QStringLiteral("process-stop")),
+                                        tr("&Cancel planning"), this, &MainWindow::cancelPlanning);
     cancelAction_->setObjectName(QStringLiteral("cancelPlanningAction"));
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     helpMenu->addAction(tr("Open &sample mission"), this, [this] {
-        if (maybeSave()) openSampleMission(true);
+        if (maybeSave())
+            openSampleMission(true);
     });
     helpMenu->addAction(tr("&About mcpp"), this, [this] {
         QMessageBox::about(this, tr("About mcpp"),
@@ -417,10 +480,14 @@ void MainWindow::createStatusBar() {
     connect(canvas_, &MapCanvas::cursorLeft, cursorLabel_, &QLabel::clear);
     connect(canvas_, &MapCanvas::placeStartRequested, this, &MainWindow::placeStart);
     connect(canvas_, &MapCanvas::moveStartRequested, this, [this](int robot, MapPoint point) {
-        if (robotModel_->moveRobot(robot, point)) showStatus(tr("Moved %1.").arg(QString::fromStdString(document_->robots()[static_cast<std::size_t>(robot)].name)));
+        if (robotModel_->moveRobot(robot, point))
+            showStatus(
+                tr("Moved %1.")
+                    .arg(QString::fromStdString(document_->robots()[static_cast<std::size_t>(robot)].name)));
     });
     connect(canvas_, &MapCanvas::removeStartRequested, this, [this](int robot) {
-        const QString name = QString::fromStdString(document_->robots()[static_cast<std::size_t>(robot)].name);
+        const QString name =
+            QString::fromStdString(document_->robots()[static_cast<std::size_t>(robot)].name);
         if (robotModel_->removeRobot(robot)) {
             canvas_->setSelectedStart(-1);
             showStatus(tr("Removed %1.").arg(name));
@@ -442,11 +509,13 @@ void MainWindow::connectDocument() {
         crsName_.clear();
         if (const auto* raster = document_->raster()) {
             crsName_ = QString::fromStdString(raster->georeference.authorityCode());
-            if (crsName_.isEmpty()) crsName_ = QString::fromStdString(raster->georeference.name());
+            if (crsName_.isEmpty())
+                crsName_ = QString::fromStdString(raster->georeference.name());
         }
         updateActions();
     });
-    connect(document_, &MissionDocument::settingsChanged, this, [this] { settingsPanel_->setSettings(document_->settings()); });
+    connect(document_, &MissionDocument::settingsChanged, this,
+            [this] { settingsPanel_->setSettings(document_->settings()); });
     connect(document_, &MissionDocument::classesChanged, this, &MainWindow::syncPresetCombo);
     connect(document_, &MissionDocument::planChanged, this, [this] {
         updateResults();
@@ -482,13 +551,16 @@ void MainWindow::rebuildRecentMenu() {
     const QStringList files = RecentFiles::list();
     for (int i = 0; i < files.size(); ++i) {
         const QString path = files[i];
-        auto* action = recentMenu_->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()), this, [this, path] {
-            if (maybeSave()) openFile(path);
-        });
+        auto* action = recentMenu_->addAction(
+            QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()), this, [this, path] {
+                if (maybeSave())
+                    openFile(path);
+            });
         action->setToolTip(path);
         action->setStatusTip(path);
     }
-    if (files.isEmpty()) recentMenu_->addAction(tr("(none)"))->setEnabled(false);
+    if (files.isEmpty())
+        recentMenu_->addAction(tr("(none)"))->setEnabled(false);
     recentMenu_->addSeparator();
     recentMenu_->addAction(tr("Clear list"), this, [this] {
         QSettings().remove(QStringLiteral("recentFiles"));
@@ -496,12 +568,16 @@ void MainWindow::rebuildRecentMenu() {
     });
 }
 
-bool MainWindow::isMissionModified() const { return !undoStack_->isClean() || settingsModified_; }
+bool MainWindow::isMissionModified() const {
+    return !undoStack_->isClean() || settingsModified_;
+}
 
 void MainWindow::updateTitle() {
     QString name = tr("Untitled mission");
-    if (!document_->missionPath().isEmpty()) name = QFileInfo(document_->missionPath()).fileName();
-    else if (const auto* raster = document_->raster()) name = tr("%1 (unsaved mission)").arg(QFileInfo(QString::fromStdString(raster->path)).fileName());
+    if (!document_->missionPath().isEmpty())
+        name = QFileInfo(document_->missionPath()).fileName();
+    else if (const auto* raster = document_->raster())
+        name = tr("%1 (unsaved mission)").arg(QFileInfo(QString::fromStdString(raster->path)).fileName());
     setWindowTitle(QStringLiteral("%1[*] — mcpp").arg(name));
     setWindowModified(isMissionModified());
 }
@@ -512,12 +588,14 @@ void MainWindow::updateActions() {
     planAction_->setEnabled(hasMap && !planning && !document_->robots().empty());
     cancelAction_->setEnabled(planning);
     saveAction_->setEnabled(hasMap);
-    for (QAction* action : exportActions_) action->setEnabled(document_->plan() != nullptr);
+    for (QAction* action : exportActions_)
+        action->setEnabled(document_->plan() != nullptr);
 }
 
 void MainWindow::updateResults() {
     QStringList names;
-    for (const auto& robot : document_->robots()) names << QString::fromStdString(robot.name);
+    for (const auto& robot : document_->robots())
+        names << QString::fromStdString(robot.name);
     resultsPanel_->showPlan(document_->plan(), names);
     resultsPanel_->setStale(document_->planStale());
 }
@@ -536,24 +614,32 @@ void MainWindow::showStatus(const QString& message, int timeoutMilliseconds) {
 void MainWindow::reportError(const QString& title, const QString& message) {
     lastError_ = message;
     showStatus(message, 15000);
-    if (dialogsEnabled_) QMessageBox::warning(this, title, message);
+    if (dialogsEnabled_)
+        QMessageBox::warning(this, title, message);
 }
 
 bool MainWindow::maybeSave() {
-    if (!isMissionModified() || !dialogsEnabled_) return true;
-    const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
-                                              tr("The mission has unsaved changes. Save them first?"),
-                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Cancel) return false;
-    if (answer == QMessageBox::Discard) return true;
+    if (!isMissionModified() || !dialogsEnabled_)
+        return true;
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved changes"), tr("The mission has unsaved changes. Save them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel)
+        return false;
+    if (answer == QMessageBox::Discard)
+        return true;
     QString path = document_->missionPath();
-    if (path.isEmpty()) path = QFileDialog::getSaveFileName(this, tr("Save mission"), dialogFolder(kMissionFolderKey), kMissionFilter);
+    if (path.isEmpty())
+        path = QFileDialog::getSaveFileName(this, tr("Save mission"), dialogFolder(kMissionFolderKey),
+                                            kMissionFilter);
     return !path.isEmpty() && saveMission(path);
 }
 
 void MainWindow::openFile(const QString& path) {
-    if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) openMission(path);
-    else openRaster(path);
+    if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive))
+        openMission(path);
+    else
+        openRaster(path);
 }
 
 void MainWindow::openSampleMission(bool plan) {
@@ -562,7 +648,8 @@ void MainWindow::openSampleMission(bool plan) {
         showStatus(tr("The sample mission samples/zion-nlcd/mission.json was not found beside the program."));
         return;
     }
-    if (openMission(sample) && plan && !document_->robots().empty()) startPlanning();
+    if (openMission(sample) && plan && !document_->robots().empty())
+        startPlanning();
 }
 
 bool MainWindow::openRaster(const QString& path, const QString& preset) {
@@ -570,7 +657,8 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     auto loaded = io::loadLandCoverRaster(path.toStdString());
     QApplication::restoreOverrideCursor();
     if (!loaded.ok()) {
-        reportError(tr("Cannot open raster"), tr("Cannot open raster %1: %2").arg(path, QString::fromStdString(loaded.error())));
+        reportError(tr("Cannot open raster"),
+                    tr("Cannot open raster %1: %2").arg(path, QString::fromStdString(loaded.error())));
         return false;
     }
     runner_->cancel();
@@ -592,7 +680,8 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     QString message = tr("Opened %1: %2 classes. Place robot starts with the Place start tool (S).")
                           .arg(QFileInfo(path).fileName())
                           .arg(document_->classes().size());
-    for (const auto& warning : warnings) message += QStringLiteral(" ") + QString::fromStdString(warning);
+    for (const auto& warning : warnings)
+        message += QStringLiteral(" ") + QString::fromStdString(warning);
     showStatus(message, 15000);
     return true;
 }
@@ -600,7 +689,8 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
 bool MainWindow::openMission(const QString& path) {
     auto loaded = io::loadMission(path.toStdString());
     if (!loaded.ok()) {
-        reportError(tr("Cannot open mission"), tr("Cannot open mission %1: %2").arg(path, QString::fromStdString(loaded.error())));
+        reportError(tr("Cannot open mission"),
+                    tr("Cannot open mission %1: %2").arg(path, QString::fromStdString(loaded.error())));
         return false;
     }
     io::Mission mission = std::move(loaded.value());
@@ -611,19 +701,23 @@ bool MainWindow::openMission(const QString& path) {
     auto raster = io::loadLandCoverRaster(rasterPath.toStdString(), options);
     QApplication::restoreOverrideCursor();
     if (!raster.ok()) {
-        reportError(tr("Cannot open mission"), tr("Mission %1 uses raster %2, which cannot be opened: %3")
-                                                   .arg(path, rasterPath, QString::fromStdString(raster.error())));
+        reportError(tr("Cannot open mission"),
+                    tr("Mission %1 uses raster %2, which cannot be opened: %3")
+                        .arg(path, rasterPath, QString::fromStdString(raster.error())));
         return false;
     }
     mission.classes = io::missionClassTable(mission.classes, mission.preset, raster.value());
     // Starts may be given in another CRS; the GUI keeps them all in the raster's.
     for (auto& robot : mission.robots) {
-        if (robot.startCrs.empty()) continue;
+        if (robot.startCrs.empty())
+            continue;
         const auto converted = raster.value().georeference.fromCrs(robot.startCrs, robot.start);
         if (!converted.ok()) {
-            reportError(tr("Cannot open mission"), tr("Mission %1: the start of %2 in %3 cannot be converted: %4")
-                                                       .arg(path, QString::fromStdString(robot.name), QString::fromStdString(robot.startCrs),
-                                                            QString::fromStdString(converted.error())));
+            reportError(tr("Cannot open mission"),
+                        tr("Mission %1: the start of %2 in %3 cannot be converted: %4")
+                            .arg(path, QString::fromStdString(robot.name),
+                                 QString::fromStdString(robot.startCrs),
+                                 QString::fromStdString(converted.error())));
             return false;
         }
         robot.start = converted.value();
@@ -631,15 +725,19 @@ bool MainWindow::openMission(const QString& path) {
     }
     runner_->cancel();
     const std::vector<std::string> warnings = raster.value().warnings;
-    document_->reset(std::make_shared<io::LoadedRaster>(std::move(raster.value())), std::move(mission), QFileInfo(path).absoluteFilePath());
+    document_->reset(std::make_shared<io::LoadedRaster>(std::move(raster.value())), std::move(mission),
+                     QFileInfo(path).absoluteFilePath());
     undoStack_->clear();
     settingsModified_ = false;
     RecentFiles::add(path);
     rememberFolder(kMissionFolderKey, path);
     rebuildRecentMenu();
     updateTitle();
-    QString message = tr("Opened mission %1 with %2 robots.").arg(QFileInfo(path).fileName()).arg(document_->robots().size());
-    for (const auto& warning : warnings) message += QStringLiteral(" ") + QString::fromStdString(warning);
+    QString message = tr("Opened mission %1 with %2 robots.")
+                          .arg(QFileInfo(path).fileName())
+                          .arg(document_->robots().size());
+    for (const auto& warning : warnings)
+        message += QStringLiteral(" ") + QString::fromStdString(warning);
     showStatus(message, 15000);
     return true;
 }
@@ -651,11 +749,13 @@ bool MainWindow::saveMission(const QString& path) {
     }
     io::Mission mission = document_->mission();
     // Relative to the mission's folder so the pair can be moved together.
-    const QString rasterAbsolute = QFileInfo(QString::fromStdString(document_->raster()->path)).absoluteFilePath();
+    const QString rasterAbsolute =
+        QFileInfo(QString::fromStdString(document_->raster()->path)).absoluteFilePath();
     mission.rasterPath = QFileInfo(path).absoluteDir().relativeFilePath(rasterAbsolute).toStdString();
     const auto status = io::saveMission(mission, path.toStdString());
     if (!status.ok()) {
-        reportError(tr("Cannot save mission"), tr("Cannot save mission to %1: %2").arg(path, QString::fromStdString(status.error())));
+        reportError(tr("Cannot save mission"),
+                    tr("Cannot save mission to %1: %2").arg(path, QString::fromStdString(status.error())));
         return false;
     }
     document_->setMissionPath(QFileInfo(path).absoluteFilePath());
@@ -672,10 +772,14 @@ bool MainWindow::saveMission(const QString& path) {
 void MainWindow::chooseExport(ExportFormat format) {
     const ExportDescription& description = describe(format);
     QString suggested = QStringLiteral("plan.") + description.suffix;
-    if (!document_->missionPath().isEmpty()) suggested = QFileInfo(document_->missionPath()).completeBaseName() + QStringLiteral(".") + description.suffix;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export plan"), QDir(dialogFolder(kExportFolderKey)).filePath(suggested),
-                                                      description.filter);
-    if (path.isEmpty()) return;
+    if (!document_->missionPath().isEmpty())
+        suggested =
+            QFileInfo(document_->missionPath()).completeBaseName() + QStringLiteral(".") + description.suffix;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export plan"), QDir(dialogFolder(kExportFolderKey)).filePath(suggested),
+        description.filter);
+    if (path.isEmpty())
+        return;
     rememberFolder(kExportFolderKey, path);
     exportPlan(format, path);
 }
@@ -687,17 +791,30 @@ bool MainWindow::exportPlan(ExportFormat format, const QString& path) {
         return false;
     }
     const io::LoadedRaster& raster = *document_->raster();
-    const io::ExportContext context{*plan, raster.georeference, document_->classes(), document_->mission().exports};
+    const io::ExportContext context{*plan, raster.georeference, document_->classes(),
+                                    document_->mission().exports};
     const std::string target = path.toStdString();
     QStringList written;
     io::Status status;
     switch (format) {
-    case ExportFormat::GeoJson: status = io::writePlanGeoJson(context, target); break;
-    case ExportFormat::GeoPackage: status = io::writePlanGeoPackage(context, target); break;
-    case ExportFormat::Kml: status = io::writePlanKml(context, target); break;
-    case ExportFormat::Gpx: status = io::writePlanGpx(context, target); break;
-    case ExportFormat::ReportJson: status = io::writeReportJson(context, target); break;
-    case ExportFormat::ReportCsv: status = io::writeReportCsv(context, target); break;
+    case ExportFormat::GeoJson:
+        status = io::writePlanGeoJson(context, target);
+        break;
+    case ExportFormat::GeoPackage:
+        status = io::writePlanGeoPackage(context, target);
+        break;
+    case ExportFormat::Kml:
+        status = io::writePlanKml(context, target);
+        break;
+    case ExportFormat::Gpx:
+        status = io::writePlanGpx(context, target);
+        break;
+    case ExportFormat::ReportJson:
+        status = io::writeReportJson(context, target);
+        break;
+    case ExportFormat::ReportCsv:
+        status = io::writeReportCsv(context, target);
+        break;
     case ExportFormat::QGroundControlPlan:
     case ExportFormat::WaypointList:
     case ExportFormat::WaypointCsv: {
@@ -705,10 +822,14 @@ bool MainWindow::exportPlan(ExportFormat format, const QString& path) {
         for (int robot = 0; robot < robots && status.ok(); ++robot) {
             const QString robotPath = perRobotPath(path, robot, robots);
             const std::string file = robotPath.toStdString();
-            if (format == ExportFormat::QGroundControlPlan) status = io::writeQGroundControlPlan(context, robot, file);
-            else if (format == ExportFormat::WaypointList) status = io::writeWaypointList(context, robot, file);
-            else status = io::writeWaypointCsv(context, robot, file);
-            if (status.ok()) written << robotPath;
+            if (format == ExportFormat::QGroundControlPlan)
+                status = io::writeQGroundControlPlan(context, robot, file);
+            else if (format == ExportFormat::WaypointList)
+                status = io::writeWaypointList(context, robot, file);
+            else
+                status = io::writeWaypointCsv(context, robot, file);
+            if (status.ok())
+                written << robotPath;
         }
         break;
     }
@@ -716,41 +837,53 @@ bool MainWindow::exportPlan(ExportFormat format, const QString& path) {
     case ExportFormat::Svg: {
         QString error;
         const bool ok = format == ExportFormat::Png
-                            ? render::writePlanPng(raster.grid, document_->classes(), *plan, path, QSize(3000, 3000), &error)
-                            : render::writePlanSvg(raster.grid, document_->classes(), *plan, path, QSize(1600, 1600), &error);
-        if (!ok) status = io::Status::failure(error.toStdString());
+                            ? render::writePlanPng(raster.grid, document_->classes(), *plan, path,
+                                                   QSize(3000, 3000), &error)
+                            : render::writePlanSvg(raster.grid, document_->classes(), *plan, path,
+                                                   QSize(1600, 1600), &error);
+        if (!ok)
+            status = io::Status::failure(error.toStdString());
         break;
     }
     }
     if (!status.ok()) {
-        reportError(tr("Export failed"), tr("Cannot export the plan to %1: %2").arg(path, QString::fromStdString(status.error())));
+        reportError(tr("Export failed"),
+                    tr("Cannot export the plan to %1: %2").arg(path, QString::fromStdString(status.error())));
         return false;
     }
-    if (written.isEmpty()) written << path;
+    if (written.isEmpty())
+        written << path;
     QString message = tr("Exported %1").arg(written.join(QStringLiteral(", ")));
-    if (document_->planStale()) message += tr(" (note: the plan is out of date)");
+    if (document_->planStale())
+        message += tr(" (note: the plan is out of date)");
     showStatus(message);
     return true;
 }
 
-bool MainWindow::isPlanning() const { return runner_->isRunning(); }
+bool MainWindow::isPlanning() const {
+    return runner_->isRunning();
+}
 
 bool MainWindow::startPlanning() {
-    if (runner_->isRunning()) return false;
+    if (runner_->isRunning())
+        return false;
     if (!document_->hasMap()) {
         reportError(tr("Cannot plan"), tr("Open a land-cover raster first."));
         return false;
     }
     if (document_->robots().empty()) {
-        showStatus(tr("Place at least one robot start first: choose the Place start tool (S) and click on the map."));
+        showStatus(tr(
+            "Place at least one robot start first: choose the Place start tool (S) and click on the map."));
         return false;
     }
     if (const auto problem = document_->classes().validate()) {
-        reportError(tr("Cannot plan"), tr("The class table has a problem: %1").arg(QString::fromStdString(*problem)));
+        reportError(tr("Cannot plan"),
+                    tr("The class table has a problem: %1").arg(QString::fromStdString(*problem)));
         return false;
     }
     io::LoadedRaster raster = *document_->raster();
-    const auto reconciled = io::reconcileRasterWithTable(raster, document_->classes(), document_->mission().missingClassesAsObstacles);
+    const auto reconciled = io::reconcileRasterWithTable(raster, document_->classes(),
+                                                         document_->mission().missingClassesAsObstacles);
     if (!reconciled.ok()) {
         reportError(tr("Cannot plan"), QString::fromStdString(reconciled.error()));
         return false;
@@ -761,7 +894,8 @@ bool MainWindow::startPlanning() {
     problem.starts = document_->starts();
     problem.settings = document_->settings();
     planningInputs_ = document_->currentInputs();
-    if (!runner_->start(std::move(problem))) return false;
+    if (!runner_->start(std::move(problem)))
+        return false;
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();
     stageLabel_->setText(tr("Starting…"));
     progressBar_->setValue(0);
@@ -770,12 +904,16 @@ bool MainWindow::startPlanning() {
     cancelButton_->show();
     cancelButton_->setEnabled(true);
     updateActions();
-    showStatus(tr("Planning %1 robots with %2…").arg(document_->robots().size()).arg(QString::fromStdString(document_->settings().planner)), 0);
+    showStatus(tr("Planning %1 robots with %2…")
+                   .arg(document_->robots().size())
+                   .arg(QString::fromStdString(document_->settings().planner)),
+               0);
     return true;
 }
 
 void MainWindow::cancelPlanning() {
-    if (!runner_->isRunning()) return;
+    if (!runner_->isRunning())
+        return;
     runner_->cancel();
     cancelButton_->setEnabled(false);
     stageLabel_->setText(tr("Cancelling…"));
@@ -785,7 +923,8 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
     stageLabel_->hide();
     progressBar_->hide();
     cancelButton_->hide();
-    const double seconds = static_cast<double>(QDateTime::currentMSecsSinceEpoch() - planningStartedAt_) / 1000.0;
+    const double seconds =
+        static_cast<double>(QDateTime::currentMSecsSinceEpoch() - planningStartedAt_) / 1000.0;
     if (outcome.plan) {
         document_->setPlan(outcome.plan, planningInputs_);
         const auto& metrics = outcome.plan->metrics;
@@ -808,13 +947,15 @@ void MainWindow::placeStart(MapPoint point) {
         const int robot = static_cast<int>(document_->robots().size()) - 1;
         canvas_->setSelectedStart(robot);
         showStatus(tr("Added %1 at %2, %3.")
-                       .arg(QString::fromStdString(document_->robots().back().name), formatCoordinate(point.x), formatCoordinate(point.y)));
+                       .arg(QString::fromStdString(document_->robots().back().name),
+                            formatCoordinate(point.x), formatCoordinate(point.y)));
     }
 }
 
 void MainWindow::removeSelectedRobot() {
     int robot = canvas_->selectedStart();
-    if (robot < 0 && robotView_->currentIndex().isValid()) robot = robotView_->currentIndex().row();
+    if (robot < 0 && robotView_->currentIndex().isValid())
+        robot = robotView_->currentIndex().row();
     if (robot < 0) {
         showStatus(tr("Select a robot (click its marker or its row) to remove it."));
         return;
@@ -827,28 +968,34 @@ void MainWindow::removeSelectedRobot() {
 }
 
 bool MainWindow::applyPreset(const QString& preset) {
-    if (!document_->hasMap()) return false;
+    if (!document_->hasMap())
+        return false;
     const ClassTable table = io::classTableForRaster(*document_->raster(), preset.toStdString());
     const QString presetBefore = QString::fromStdString(document_->mission().preset);
-    if (table == document_->classes() && preset == presetBefore) return true;
+    if (table == document_->classes() && preset == presetBefore)
+        return true;
     const QString label = preset.isEmpty() ? tr("the raster's legend") : preset;
-    undoStack_->push(new ClassTableEditCommand(document_, document_->classes(), presetBefore, table, preset, tr("Apply preset %1").arg(label)));
+    undoStack_->push(new ClassTableEditCommand(document_, document_->classes(), presetBefore, table, preset,
+                                               tr("Apply preset %1").arg(label)));
     showStatus(tr("Applied %1 to the class table.").arg(label));
     return true;
 }
 
 void MainWindow::showCursor(MapPoint point) {
     QString text = QStringLiteral("X %1  Y %2 m").arg(formatCoordinate(point.x), formatCoordinate(point.y));
-    if (!crsName_.isEmpty()) text += QStringLiteral(" (%1)").arg(crsName_);
+    if (!crsName_.isEmpty())
+        text += QStringLiteral(" (%1)").arg(crsName_);
     if (const auto* raster = document_->raster(); raster != nullptr && raster->georeference.hasCrs()) {
         const auto lonLat = raster->georeference.toWgs84(point);
         if (lonLat.ok())
-            text += QStringLiteral("  ·  %1, %2").arg(formatDegrees(lonLat.value().latitude, QLatin1Char('N'), QLatin1Char('S')),
-                                                      formatDegrees(lonLat.value().longitude, QLatin1Char('E'), QLatin1Char('W')));
+            text += QStringLiteral("  ·  %1, %2")
+                        .arg(formatDegrees(lonLat.value().latitude, QLatin1Char('N'), QLatin1Char('S')),
+                             formatDegrees(lonLat.value().longitude, QLatin1Char('E'), QLatin1Char('W')));
     }
     if (const auto value = document_->classValueAt(point)) {
         const LandCoverClass* landCoverClass = document_->classes().find(*value);
-        const QString name = landCoverClass != nullptr ? QString::fromStdString(landCoverClass->name) : tr("unknown class");
+        const QString name =
+            landCoverClass != nullptr ? QString::fromStdString(landCoverClass->name) : tr("unknown class");
         text += QStringLiteral("  ·  %1 (%2)").arg(name).arg(*value);
     } else {
         text += tr("  ·  outside the map");
@@ -870,18 +1017,21 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
-    if (event->mimeData()->hasUrls() && !event->mimeData()->urls().isEmpty() && event->mimeData()->urls().front().isLocalFile())
+    if (event->mimeData()->hasUrls() && !event->mimeData()->urls().isEmpty() &&
+        event->mimeData()->urls().front().isLocalFile())
         event->acceptProposedAction();
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
     const auto urls = event->mimeData()->urls();
-    if (urls.isEmpty() || !urls.front().isLocalFile()) return;
+    if (urls.isEmpty() || !urls.front().isLocalFile())
+        return;
     event->acceptProposedAction();
     const QString path = urls.front().toLocalFile();
     // Opened after the drop returns so a message box does not block the drag source.
     QTimer::singleShot(0, this, [this, path] {
-        if (maybeSave()) openFile(path);
+        if (maybeSave())
+            openFile(path);
     });
 }
 

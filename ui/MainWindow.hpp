@@ -31,8 +31,20 @@ struct PlanningOutcome;
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
-public:
-    enum class ExportFormat { GeoJson, GeoPackage, Kml, Gpx, QGroundControlPlan, WaypointList, WaypointCsv, ReportJson, ReportCsv, Png, Svg };
+  public:
+    enum class ExportFormat {
+        GeoJson,
+        GeoPackage,
+        Kml,
+        Gpx,
+        QGroundControlPlan,
+        WaypointList,
+        WaypointCsv,
+        ReportJson,
+        ReportCsv,
+        Png,
+        Svg
+    };
 
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
@@ -70,15 +82,15 @@ public:
     // Applies a class-table preset to the open raster as one undoable edit.
     bool applyPreset(const QString& preset);
 
-signals:
+  signals:
     void planningFinished(bool success);
 
-protected:
+  protected:
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
-private:
+  private:
     void createDocks();
     void createActions();
     void createStatusBar();

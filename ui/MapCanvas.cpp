@@ -6,7 +6,6 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
-
 #include <algorithm>
 #include <cmath>
 
@@ -34,7 +33,8 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
     connect(document_, &MissionDocument::classesChanged, this, &MapCanvas::refreshMap);
     connect(document_, &MissionDocument::robotsChanged, this, [this] {
         refreshStarts();
-        if (selectedStart_ >= static_cast<int>(document_->robots().size())) setSelectedStart(-1);
+        if (selectedStart_ >= static_cast<int>(document_->robots().size()))
+            setSelectedStart(-1);
     });
     connect(document_, &MissionDocument::planChanged, this, [this] {
         renderer_.setPlan(document_->plan());
@@ -73,7 +73,8 @@ void MapCanvas::setLayers(const render::MapLayers& layers) {
 }
 
 void MapCanvas::setSelectedStart(int robot) {
-    if (robot == selectedStart_) return;
+    if (robot == selectedStart_)
+        return;
     selectedStart_ = robot;
     renderer_.setSelectedStart(robot);
     update();
@@ -81,33 +82,44 @@ void MapCanvas::setSelectedStart(int robot) {
 }
 
 QTransform MapCanvas::worldToDevice() const {
-    return QTransform(scale_, 0.0, 0.0, -scale_, width() / 2.0 - centre_.x * scale_, height() / 2.0 + centre_.y * scale_);
+    return QTransform(scale_, 0.0, 0.0, -scale_, width() / 2.0 - centre_.x * scale_,
+                      height() / 2.0 + centre_.y * scale_);
 }
 
-QPointF MapCanvas::devicePointOf(MapPoint point) const { return worldToDevice().map(QPointF(point.x, point.y)); }
+QPointF MapCanvas::devicePointOf(MapPoint point) const {
+    return worldToDevice().map(QPointF(point.x, point.y));
+}
 
 MapPoint MapCanvas::mapPointAt(QPointF devicePoint) const {
-    return {centre_.x + (devicePoint.x() - width() / 2.0) / scale_, centre_.y - (devicePoint.y() - height() / 2.0) / scale_};
+    return {centre_.x + (devicePoint.x() - width() / 2.0) / scale_,
+            centre_.y - (devicePoint.y() - height() / 2.0) / scale_};
 }
 
 void MapCanvas::zoomToFit() {
     const ClassGrid* grid = document_->grid();
-    if (grid == nullptr || width() <= 0 || height() <= 0) return;
+    if (grid == nullptr || width() <= 0 || height() <= 0)
+        return;
     const double margin = 12.0;
-    scale_ = std::min((width() - 2.0 * margin) / std::max(grid->width(), 1e-9), (height() - 2.0 * margin) / std::max(grid->height(), 1e-9));
+    scale_ = std::min((width() - 2.0 * margin) / std::max(grid->width(), 1e-9),
+                      (height() - 2.0 * margin) / std::max(grid->height(), 1e-9));
     scale_ = std::max(scale_, 1e-9);
     centre_ = {grid->originX + grid->width() / 2.0, grid->originY - grid->height() / 2.0};
     fitPending_ = false;
     update();
 }
 
-void MapCanvas::zoomIn() { zoomAround(QPointF(width() / 2.0, height() / 2.0), 1.5); }
+void MapCanvas::zoomIn() {
+    zoomAround(QPointF(width() / 2.0, height() / 2.0), 1.5);
+}
 
-void MapCanvas::zoomOut() { zoomAround(QPointF(width() / 2.0, height() / 2.0), 1.0 / 1.5); }
+void MapCanvas::zoomOut() {
+    zoomAround(QPointF(width() / 2.0, height() / 2.0), 1.0 / 1.5);
+}
 
 void MapCanvas::zoomAround(QPointF devicePoint, double factor) {
     const ClassGrid* grid = document_->grid();
-    if (grid == nullptr) return;
+    if (grid == nullptr)
+        return;
     // Limits: the whole map at least ~50 px wide; at most ~200 px per raster pixel.
     const double smallest = 50.0 / std::max(grid->width(), grid->height());
     const double largest = 200.0 / std::min(grid->pixelWidth, grid->pixelHeight);
@@ -115,7 +127,8 @@ void MapCanvas::zoomAround(QPointF devicePoint, double factor) {
     const MapPoint anchor = mapPointAt(devicePoint);
     scale_ = newScale;
     // Keep the map point under the cursor where it was.
-    centre_ = {anchor.x - (devicePoint.x() - width() / 2.0) / scale_, anchor.y + (devicePoint.y() - height() / 2.0) / scale_};
+    centre_ = {anchor.x - (devicePoint.x() - width() / 2.0) / scale_,
+               anchor.y + (devicePoint.y() - height() / 2.0) / scale_};
     update();
 }
 
@@ -123,7 +136,8 @@ double MapCanvas::scaleBarMetres() const {
     const double metres = kScaleBarTargetPixels / scale_;
     const double magnitude = std::pow(10.0, std::floor(std::log10(metres)));
     for (const double step : {5.0, 2.0, 1.0})
-        if (step * magnitude <= metres) return step * magnitude;
+        if (step * magnitude <= metres)
+            return step * magnitude;
     return magnitude;
 }
 
@@ -142,16 +156,22 @@ int MapCanvas::startAt(QPointF devicePoint) const {
 }
 
 void MapCanvas::updateCursor(QPointF devicePoint) {
-    if (gesture_ == Gesture::Pan) setCursor(Qt::ClosedHandCursor);
-    else if (gesture_ == Gesture::DragStart) setCursor(Qt::SizeAllCursor);
-    else if (startAt(devicePoint) >= 0) setCursor(Qt::OpenHandCursor);
-    else if (tool_ == Tool::PlaceStart) setCursor(Qt::CrossCursor);
-    else setCursor(Qt::ArrowCursor);
+    if (gesture_ == Gesture::Pan)
+        setCursor(Qt::ClosedHandCursor);
+    else if (gesture_ == Gesture::DragStart)
+        setCursor(Qt::SizeAllCursor);
+    else if (startAt(devicePoint) >= 0)
+        setCursor(Qt::OpenHandCursor);
+    else if (tool_ == Tool::PlaceStart)
+        setCursor(Qt::CrossCursor);
+    else
+        setCursor(Qt::ArrowCursor);
 }
 
 void MapCanvas::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
-    if (fitPending_) zoomToFit();
+    if (fitPending_)
+        zoomToFit();
 }
 
 void MapCanvas::paintEvent(QPaintEvent* event) {
@@ -162,20 +182,24 @@ void MapCanvas::paintEvent(QPaintEvent* event) {
         QFont font = painter.font();
         font.setPointSizeF(font.pointSizeF() * 1.2);
         painter.setFont(font);
-        painter.drawText(rect().adjusted(40, 40, -40, -40), Qt::AlignCenter | Qt::TextWordWrap,
-                         tr("No map open.\n\nOpen a land-cover raster (Ctrl+O) or a mission (Ctrl+Shift+O), drop a file "
-                            "here, or choose Help ▸ Open sample mission."));
+        painter.drawText(
+            rect().adjusted(40, 40, -40, -40), Qt::AlignCenter | Qt::TextWordWrap,
+            tr("No map open.\n\nOpen a land-cover raster (Ctrl+O) or a mission (Ctrl+Shift+O), drop a file "
+               "here, or choose Help ▸ Open sample mission."));
         return;
     }
     renderer_.paint(painter, worldToDevice(), QRectF(event->rect()));
     paintScaleBar(painter);
     paintNorthArrow(painter);
     if (document_->planStale())
-        paintBanner(painter, tr("Plan is out of date: inputs changed since it was computed. Press Plan (F5)."), QColor(255, 236, 179));
+        paintBanner(painter,
+                    tr("Plan is out of date: inputs changed since it was computed. Press Plan (F5)."),
+                    QColor(255, 236, 179));
     else if (document_->plan() == nullptr && !document_->robots().empty())
         paintBanner(painter, tr("Not planned yet. Press Plan (F5)."), QColor(227, 242, 253));
     else if (document_->robots().empty())
-        paintBanner(painter, tr("Place robot starts with the Place start tool (S), then press Plan (F5)."), QColor(227, 242, 253));
+        paintBanner(painter, tr("Place robot starts with the Place start tool (S), then press Plan (F5)."),
+                    QColor(227, 242, 253));
 }
 
 void MapCanvas::paintBanner(QPainter& painter, const QString& text, const QColor& colour) const {
@@ -195,7 +219,8 @@ void MapCanvas::paintScaleBar(QPainter& painter) const {
     const double pixels = metres * scale_;
     const QString label = metres >= 1000.0 ? tr("%1 km").arg(metres / 1000.0) : tr("%1 m").arg(metres);
     const QFontMetrics metrics(painter.font());
-    const QRectF box(10, height() - 44, std::max(pixels, static_cast<double>(metrics.horizontalAdvance(label))) + 20, 34);
+    const QRectF box(10, height() - 44,
+                     std::max(pixels, static_cast<double>(metrics.horizontalAdvance(label))) + 20, 34);
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(255, 255, 255, 210));
@@ -242,9 +267,11 @@ void MapCanvas::mousePressEvent(QMouseEvent* event) {
 
 void MapCanvas::mouseMoveEvent(QMouseEvent* event) {
     const QPointF position = event->position();
-    if (document_->hasMap()) emit cursorMoved(mapPointAt(position));
+    if (document_->hasMap())
+        emit cursorMoved(mapPointAt(position));
     const bool farEnough = QLineF(position, pressPosition_).length() >= kDragThresholdPixels;
-    if (gesture_ == Gesture::Click && farEnough) gesture_ = Gesture::Pan; // a click that moves becomes a pan
+    if (gesture_ == Gesture::Click && farEnough)
+        gesture_ = Gesture::Pan; // a click that moves becomes a pan
     if (gesture_ == Gesture::Pan) {
         const QPointF delta = position - lastPosition_;
         centre_.x -= delta.x() / scale_;
@@ -267,17 +294,21 @@ void MapCanvas::mouseReleaseEvent(QMouseEvent* event) {
         draggedStart_ = -1;
         dragPoint_.reset();
         refreshStarts();
-        if (target) emit moveStartRequested(robot, *target);
+        if (target)
+            emit moveStartRequested(robot, *target);
     } else if (gesture == Gesture::Click && event->button() == Qt::LeftButton && document_->hasMap()) {
-        if (tool_ == Tool::PlaceStart) emit placeStartRequested(mapPointAt(event->position()));
-        else setSelectedStart(-1);
+        if (tool_ == Tool::PlaceStart)
+            emit placeStartRequested(mapPointAt(event->position()));
+        else
+            setSelectedStart(-1);
     }
     updateCursor(event->position());
 }
 
 void MapCanvas::wheelEvent(QWheelEvent* event) {
     const double steps = event->angleDelta().y() / 120.0;
-    if (steps != 0.0) zoomAround(event->position(), std::pow(1.25, steps));
+    if (steps != 0.0)
+        zoomAround(event->position(), std::pow(1.25, steps));
     event->accept();
 }
 

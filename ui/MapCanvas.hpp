@@ -7,7 +7,6 @@
 #include <QPoint>
 #include <QPointF>
 #include <QWidget>
-
 #include <optional>
 
 namespace mcpp::ui {
@@ -20,7 +19,7 @@ class MissionDocument;
 class MapCanvas : public QWidget {
     Q_OBJECT
 
-public:
+  public:
     enum class Tool { Pan, PlaceStart };
 
     explicit MapCanvas(MissionDocument* document, QWidget* parent = nullptr);
@@ -42,12 +41,12 @@ public:
 
     QSize sizeHint() const override { return {900, 700}; }
 
-public slots:
+  public slots:
     void zoomToFit();
     void zoomIn();
     void zoomOut();
 
-signals:
+  signals:
     void cursorMoved(mcpp::MapPoint point);
     void cursorLeft();
     void placeStartRequested(mcpp::MapPoint point);
@@ -55,7 +54,7 @@ signals:
     void removeStartRequested(int robot);
     void selectedStartChanged(int robot);
 
-protected:
+  protected:
     void paintEvent(QPaintEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
@@ -65,7 +64,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
     void leaveEvent(QEvent* event) override;
 
-private:
+  private:
     void refreshMap();
     void refreshStarts();
     void zoomAround(QPointF devicePoint, double factor);

@@ -9,7 +9,6 @@
 
 #include <QObject>
 #include <QString>
-
 #include <memory>
 #include <optional>
 #include <vector>
@@ -28,7 +27,7 @@ struct PlanInputs {
 class MissionDocument : public QObject {
     Q_OBJECT
 
-public:
+  public:
     explicit MissionDocument(QObject* parent = nullptr);
 
     // Replaces everything. The mission supplies band, preset, exports and settings; its robots must already
@@ -65,7 +64,7 @@ public:
     // "Robot N" with the smallest N not in use.
     [[nodiscard]] QString nextRobotName() const;
 
-signals:
+  signals:
     void mapChanged();
     void classesChanged();
     void robotsChanged();
@@ -74,7 +73,7 @@ signals:
     void staleChanged(bool stale);
     void missionPathChanged(const QString& path);
 
-private:
+  private:
     void emitStaleIfChanged();
 
     std::shared_ptr<const io::LoadedRaster> raster_;

@@ -16,7 +16,8 @@ PlannerSettingsPanel::PlannerSettingsPanel(QWidget* parent) : QWidget(parent) {
 
     planner_ = new QComboBox(this);
     planner_->setObjectName(QStringLiteral("plannerCombo"));
-    for (const auto& name : availablePlanners()) planner_->addItem(QString::fromStdString(name));
+    for (const auto& name : availablePlanners())
+        planner_->addItem(QString::fromStdString(name));
     planner_->setToolTip(tr("The coverage planner to run"));
     layout->addRow(tr("Planner"), planner_);
 
@@ -25,7 +26,8 @@ PlannerSettingsPanel::PlannerSettingsPanel(QWidget* parent) : QWidget(parent) {
     purityTolerance_->setRange(0.0, 0.5);
     purityTolerance_->setSingleStep(0.01);
     purityTolerance_->setDecimals(3);
-    purityTolerance_->setToolTip(tr("A class covering at most this fraction of a cell does not force a split"));
+    purityTolerance_->setToolTip(
+        tr("A class covering at most this fraction of a cell does not force a split"));
     layout->addRow(tr("Purity tolerance"), purityTolerance_);
 
     blockedThreshold_ = new QDoubleSpinBox(this);
@@ -33,7 +35,8 @@ PlannerSettingsPanel::PlannerSettingsPanel(QWidget* parent) : QWidget(parent) {
     blockedThreshold_->setRange(0.0, 1.0);
     blockedThreshold_->setSingleStep(0.05);
     blockedThreshold_->setDecimals(2);
-    blockedThreshold_->setToolTip(tr("A smallest cell with more obstacle or outside pixels than this fraction is blocked"));
+    blockedThreshold_->setToolTip(
+        tr("A smallest cell with more obstacle or outside pixels than this fraction is blocked"));
     layout->addRow(tr("Blocked threshold"), blockedThreshold_);
 
     closedTour_ = new QCheckBox(tr("Return to start (closed tour)"), this);
@@ -45,7 +48,8 @@ PlannerSettingsPanel::PlannerSettingsPanel(QWidget* parent) : QWidget(parent) {
     rebalanceIterations_->setObjectName(QStringLiteral("rebalanceSpin"));
     rebalanceIterations_->setRange(0, 1'000'000);
     rebalanceIterations_->setSpecialValueText(tr("automatic"));
-    rebalanceIterations_->setToolTip(tr("Cap on cell moves that even out the robots' workloads; 0 picks one from the problem size"));
+    rebalanceIterations_->setToolTip(
+        tr("Cap on cell moves that even out the robots' workloads; 0 picks one from the problem size"));
     layout->addRow(tr("Rebalance iterations"), rebalanceIterations_);
 
     snapStarts_ = new QCheckBox(tr("Move blocked starts to the nearest free cell"), this);
@@ -65,7 +69,8 @@ void PlannerSettingsPanel::setSettings(const PlannerSettings& settings) {
     updating_ = true;
     shown_ = settings;
     const QString name = QString::fromStdString(settings.planner);
-    if (planner_->findText(name) < 0) planner_->addItem(name); // keep a mission's unknown planner visible
+    if (planner_->findText(name) < 0)
+        planner_->addItem(name); // keep a mission's unknown planner visible
     planner_->setCurrentText(name);
     purityTolerance_->setValue(settings.purityTolerance);
     blockedThreshold_->setValue(settings.blockedThreshold);
@@ -87,7 +92,8 @@ PlannerSettings PlannerSettingsPanel::settings() const {
 }
 
 void PlannerSettingsPanel::emitEdited() {
-    if (updating_) return;
+    if (updating_)
+        return;
     shown_ = settings();
     emit settingsEdited(shown_);
 }

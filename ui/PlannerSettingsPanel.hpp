@@ -15,15 +15,15 @@ namespace mcpp::ui {
 class PlannerSettingsPanel : public QWidget {
     Q_OBJECT
 
-public:
+  public:
     explicit PlannerSettingsPanel(QWidget* parent = nullptr);
     void setSettings(const PlannerSettings& settings);
     [[nodiscard]] PlannerSettings settings() const;
 
-signals:
+  signals:
     void settingsEdited(const mcpp::PlannerSettings& settings);
 
-private:
+  private:
     void emitEdited();
 
     QComboBox* planner_;

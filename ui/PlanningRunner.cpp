@@ -1,17 +1,17 @@
 #include "ui/PlanningRunner.hpp"
 
-#include "core/planners/PlannerRegistry.hpp"
 #include "core/model/PlanningError.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 
 #include <QtConcurrent/QtConcurrentRun>
-
 #include <chrono>
 #include <exception>
 
 namespace mcpp::ui {
 
 PlanningRunner::PlanningRunner(QObject* parent) : QObject(parent) {
-    connect(&watcher_, &QFutureWatcher<PlanningOutcome>::finished, this, [this] { emit finished(watcher_.result()); });
+    connect(&watcher_, &QFutureWatcher<PlanningOutcome>::finished, this,
+            [this] { emit finished(watcher_.result()); });
 }
 
 PlanningRunner::~PlanningRunner() {
@@ -20,18 +20,25 @@ PlanningRunner::~PlanningRunner() {
     waitForFinished();
 }
 
-bool PlanningRunner::isRunning() const { return watcher_.isRunning(); }
-
-void PlanningRunner::cancel() {
-    if (cancelRequested_) cancelRequested_->store(true);
+bool PlanningRunner::isRunning() const {
+    return watcher_.isRunning();
 }
 
-void PlanningRunner::waitForFinished() { watcher_.waitForFinished(); }
+void PlanningRunner::cancel() {
+    if (cancelRequested_)
+        cancelRequested_->store(true);
+}
+
+void PlanningRunner::waitForFinished() {
+    watcher_.waitForFinished();
+}
 
 bool PlanningRunner::start(PlanningProblem problem) {
-    if (isRunning()) return false;
+    if (isRunning())
+        return false;
     cancelRequested_ = std::make_shared<std::atomic<bool>>(false);
-    // The destructor waits for the run, so the worker may use `this`; queued calls to a deleted runner are dropped.
+    // The destructor waits for the run, so the worker may use `this`; queued calls to a deleted runner are
+    // dropped.
     auto cancelFlag = cancelRequested_;
     auto work = [this, cancelFlag, problem = std::move(problem)]() -> PlanningOutcome {
         using Clock = std::chrono::steady_clock;
@@ -41,19 +48,23 @@ bool PlanningRunner::start(PlanningProblem problem) {
         ProgressReporter progress(
             [&](std::string_view stage, double fraction) {
                 const auto now = Clock::now();
-                if (stage == lastStage && now - lastReport < std::chrono::milliseconds(50)) return;
+                if (stage == lastStage && now - lastReport < std::chrono::milliseconds(50))
+                    return;
                 lastReport = now;
                 lastStage = std::string(stage);
-                const QString stageText = QString::fromUtf8(stage.data(), static_cast<qsizetype>(stage.size()));
+                const QString stageText =
+                    QString::fromUtf8(stage.data(), static_cast<qsizetype>(stage.size()));
                 QMetaObject::invokeMethod(
-                    this, [this, stageText, fraction] { emit progressed(stageText, fraction); }, Qt::QueuedConnection);
+                    this, [this, stageText, fraction] { emit progressed(stageText, fraction); },
+                    Qt::QueuedConnection);
             },
             cancelFlag.get());
         PlanningOutcome outcome;
         try {
             const auto planner = makePlanner(problem.settings.planner);
             if (!planner) {
-                outcome.error = QObject::tr("Unknown planner \"%1\".").arg(QString::fromStdString(problem.settings.planner));
+                outcome.error = QObject::tr("Unknown planner \"%1\".")
+                                    .arg(QString::fromStdString(problem.settings.planner));
                 return outcome;
             }
             outcome.plan = std::make_shared<const Plan>(planner->plan(problem, progress));

@@ -6,7 +6,6 @@
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
-
 #include <atomic>
 #include <memory>
 
@@ -24,7 +23,7 @@ struct PlanningOutcome {
 class PlanningRunner : public QObject {
     Q_OBJECT
 
-public:
+  public:
     explicit PlanningRunner(QObject* parent = nullptr);
     ~PlanningRunner() override;
 
@@ -35,11 +34,11 @@ public:
     // Blocks until the current run ends; used on shutdown.
     void waitForFinished();
 
-signals:
+  signals:
     void progressed(const QString& stage, double fraction);
     void finished(const mcpp::ui::PlanningOutcome& outcome);
 
-private:
+  private:
     QFutureWatcher<PlanningOutcome> watcher_;
     std::shared_ptr<std::atomic<bool>> cancelRequested_;
 };

@@ -9,14 +9,17 @@ namespace {
 const QString kKey = QStringLiteral("recentFiles");
 }
 
-QStringList RecentFiles::list() { return QSettings().value(kKey).toStringList(); }
+QStringList RecentFiles::list() {
+    return QSettings().value(kKey).toStringList();
+}
 
 void RecentFiles::add(const QString& path) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     QStringList files = list();
     files.removeAll(absolute);
     files.prepend(absolute);
-    while (files.size() > kMaximum) files.removeLast();
+    while (files.size() > kMaximum)
+        files.removeLast();
     QSettings().setValue(kKey, files);
 }
 

@@ -6,7 +6,7 @@ namespace mcpp::ui {
 
 // The most recently opened missions and rasters, newest first, kept in QSettings.
 class RecentFiles {
-public:
+  public:
     static constexpr int kMaximum = 10;
 
     [[nodiscard]] static QStringList list();

@@ -12,16 +12,17 @@
 #include <QSplitter>
 #include <QStackedBarSeries>
 #include <QTableWidget>
-#include <QValueAxis>
 #include <QVBoxLayout>
-
+#include <QValueAxis>
 #include <cmath>
 
 namespace mcpp::ui {
 
 namespace {
 
-QString hectares(double squareMetres) { return QObject::tr("%1 ha").arg(squareMetres / 10'000.0, 0, 'f', 1); }
+QString hectares(double squareMetres) {
+    return QObject::tr("%1 ha").arg(squareMetres / 10'000.0, 0, 'f', 1);
+}
 
 QTableWidgetItem* numberItem(const QString& text, double sortValue) {
     auto* item = new QTableWidgetItem(text);
@@ -45,10 +46,12 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
 
-    staleLabel_ = new QLabel(tr("These results are out of date: the inputs changed after planning. Press Plan (F5)."), this);
+    staleLabel_ = new QLabel(
+        tr("These results are out of date: the inputs changed after planning. Press Plan (F5)."), this);
     staleLabel_->setObjectName(QStringLiteral("resultsStaleLabel"));
     staleLabel_->setWordWrap(true);
-    staleLabel_->setStyleSheet(QStringLiteral("QLabel { background: #ffecb3; border: 1px solid #c9a227; padding: 4px; }"));
+    staleLabel_->setStyleSheet(
+        QStringLiteral("QLabel { background: #ffecb3; border: 1px solid #c9a227; padding: 4px; }"));
     staleLabel_->hide();
     layout->addWidget(staleLabel_);
 
@@ -72,7 +75,8 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
 
     table_ = new QTableWidget(0, 6, this);
     table_->setObjectName(QStringLiteral("resultsTable"));
-    table_->setHorizontalHeaderLabels({tr("Robot"), tr("Cells"), tr("Area"), tr("Length"), tr("Time"), tr("Turns")});
+    table_->setHorizontalHeaderLabels(
+        {tr("Robot"), tr("Cells"), tr("Area"), tr("Length"), tr("Time"), tr("Turns")});
     table_->verticalHeader()->hide();
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setStretchLastSection(true);
@@ -96,7 +100,8 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
 }
 
 QString ResultsPanel::formatDuration(double seconds) {
-    if (!std::isfinite(seconds)) return QStringLiteral("–");
+    if (!std::isfinite(seconds))
+        return QStringLiteral("–");
     const auto total = static_cast<long long>(std::llround(seconds));
     return QStringLiteral("%1:%2:%3")
         .arg(total / 3600)
@@ -104,19 +109,27 @@ QString ResultsPanel::formatDuration(double seconds) {
         .arg(total % 60, 2, 10, QLatin1Char('0'));
 }
 
-QString ResultsPanel::makespanText() const { return makespan_->text(); }
+QString ResultsPanel::makespanText() const {
+    return makespan_->text();
+}
 
-QString ResultsPanel::ratioText() const { return ratio_->text(); }
+QString ResultsPanel::ratioText() const {
+    return ratio_->text();
+}
 
-void ResultsPanel::setStale(bool stale) { staleLabel_->setVisible(stale); }
+void ResultsPanel::setStale(bool stale) {
+    staleLabel_->setVisible(stale);
+}
 
 void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     table_->setSortingEnabled(false);
     table_->setRowCount(0);
     if (plan == nullptr) {
-        for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, warnings_}) label->setText(QStringLiteral("–"));
+        for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, warnings_})
+            label->setText(QStringLiteral("–"));
         chartView_->chart()->removeAllSeries();
-        for (auto* axis : chartView_->chart()->axes()) chartView_->chart()->removeAxis(axis);
+        for (auto* axis : chartView_->chart()->axes())
+            chartView_->chart()->removeAxis(axis);
         setStale(false);
         return;
     }
@@ -124,7 +137,8 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     table_->setRowCount(static_cast<int>(metrics.robots.size()));
     for (std::size_t row = 0; row < metrics.robots.size(); ++row) {
         const RobotMetrics& robot = metrics.robots[row];
-        const QString name = robot.robot < names.size() ? names[robot.robot] : tr("Robot %1").arg(robot.robot + 1);
+        const QString name =
+            robot.robot < names.size() ? names[robot.robot] : tr("Robot %1").arg(robot.robot + 1);
         auto* nameItem = new QTableWidgetItem(name);
         nameItem->setData(Qt::DecorationRole, render::RobotPalette::colour(robot.robot));
         nameItem->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
@@ -132,18 +146,22 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         table_->setItem(r, 0, nameItem);
         table_->setItem(r, 1, numberItem(QString::number(robot.cells), robot.cells));
         table_->setItem(r, 2, numberItem(hectares(robot.areaSquareMetres), robot.areaSquareMetres));
-        table_->setItem(r, 3, numberItem(tr("%1 km").arg(robot.lengthMetres / 1000.0, 0, 'f', 2), robot.lengthMetres));
+        table_->setItem(
+            r, 3, numberItem(tr("%1 km").arg(robot.lengthMetres / 1000.0, 0, 'f', 2), robot.lengthMetres));
         table_->setItem(r, 4, numberItem(formatDuration(robot.timeSeconds), robot.timeSeconds));
         table_->setItem(r, 5, numberItem(QString::number(robot.turns), robot.turns));
     }
     makespan_->setText(formatDuration(metrics.makespanSeconds));
     lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
     ratio_->setText(QString::number(metrics.ratio, 'f', 3));
-    covered_->setText(tr("%1 (%2 % of the passable area)").arg(hectares(metrics.coveredAreaSquareMetres)).arg(metrics.coveredFraction * 100.0, 0, 'f', 1));
+    covered_->setText(tr("%1 (%2 % of the passable area)")
+                          .arg(hectares(metrics.coveredAreaSquareMetres))
+                          .arg(metrics.coveredFraction * 100.0, 0, 'f', 1));
     unreachable_->setText(hectares(metrics.unreachableAreaSquareMetres));
     planner_->setText(QString::fromStdString(plan->planner));
     QStringList warnings;
-    for (const auto& warning : plan->warnings()) warnings << QString::fromStdString(warning);
+    for (const auto& warning : plan->warnings())
+        warnings << QString::fromStdString(warning);
     warnings_->setText(warnings.isEmpty() ? tr("none") : warnings.join(QLatin1Char('\n')));
     showChart(*plan, names);
 }
@@ -151,15 +169,18 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
 void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     QChart* chart = chartView_->chart();
     chart->removeAllSeries();
-    for (auto* axis : chart->axes()) chart->removeAxis(axis);
+    for (auto* axis : chart->axes())
+        chart->removeAxis(axis);
     const auto& robots = plan.metrics.robots;
-    if (robots.empty()) return;
+    if (robots.empty())
+        return;
 
     // One set per robot with a value only in its own category: each bar takes its robot's colour.
     auto* series = new QStackedBarSeries;
     QStringList categories;
     double longestSeconds = 0.0;
-    for (const auto& robot : robots) longestSeconds = std::max(longestSeconds, robot.timeSeconds);
+    for (const auto& robot : robots)
+        longestSeconds = std::max(longestSeconds, robot.timeSeconds);
     // Hours once the longest run passes two hours: "34" reads better than "2040".
     const bool inHours = longestSeconds > 7200.0;
     const double unitSeconds = inHours ? 3600.0 : 60.0;
@@ -170,7 +191,8 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
         auto* set = new QBarSet(categories.back());
         set->setColor(render::RobotPalette::colour(robot));
         set->setBorderColor(render::RobotPalette::colour(robot).darker(130));
-        for (std::size_t j = 0; j < robots.size(); ++j) *set << (j == i ? robots[i].timeSeconds / unitSeconds : 0.0);
+        for (std::size_t j = 0; j < robots.size(); ++j)
+            *set << (j == i ? robots[i].timeSeconds / unitSeconds : 0.0);
         series->append(set);
         longestValue = std::max(longestValue, robots[i].timeSeconds / unitSeconds);
     }

@@ -17,7 +17,7 @@ namespace mcpp::ui {
 class ResultsPanel : public QWidget {
     Q_OBJECT
 
-public:
+  public:
     explicit ResultsPanel(QWidget* parent = nullptr);
     // names: robot names by index (may be shorter than the plan's robots).
     void showPlan(const Plan* plan, const QStringList& names);
@@ -31,7 +31,7 @@ public:
     // "1:02:03" for 3723 s; "4 min 05 s" style is too long for a table column.
     [[nodiscard]] static QString formatDuration(double seconds);
 
-private:
+  private:
     void showChart(const Plan& plan, const QStringList& names);
 
     QLabel* staleLabel_;

@@ -1,7 +1,7 @@
 #include "ui/RobotTableModel.hpp"
 
-#include "ui/MissionDocument.hpp"
 #include "render/RobotPalette.hpp"
+#include "ui/MissionDocument.hpp"
 #include "ui/RobotsEditCommand.hpp"
 
 #include <QUndoStack>
@@ -22,32 +22,43 @@ int RobotTableModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : static_cast<int>(document_->robots().size());
 }
 
-int RobotTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int RobotTableModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
-    if (!index.isValid() || index.row() >= rowCount()) return {};
+    if (!index.isValid() || index.row() >= rowCount())
+        return {};
     const io::RobotSpec& robot = document_->robots()[static_cast<std::size_t>(index.row())];
     const bool text = role == Qt::DisplayRole || role == Qt::EditRole;
     switch (index.column()) {
     case Name:
-        if (text) return QString::fromStdString(robot.name);
+        if (text)
+            return QString::fromStdString(robot.name);
         break;
     case Colour:
-        if (role == Qt::DecorationRole) return render::RobotPalette::colour(index.row());
-        if (role == Qt::ToolTipRole) return render::RobotPalette::colour(index.row()).name();
+        if (role == Qt::DecorationRole)
+            return render::RobotPalette::colour(index.row());
+        if (role == Qt::ToolTipRole)
+            return render::RobotPalette::colour(index.row()).name();
         break;
     case Easting:
-        if (text) return QString::number(robot.start.x, 'f', role == Qt::EditRole ? 3 : 1);
+        if (text)
+            return QString::number(robot.start.x, 'f', role == Qt::EditRole ? 3 : 1);
         break;
     case Northing:
-        if (text) return QString::number(robot.start.y, 'f', role == Qt::EditRole ? 3 : 1);
+        if (text)
+            return QString::number(robot.start.y, 'f', role == Qt::EditRole ? 3 : 1);
         break;
     case Longitude:
     case Latitude: {
-        if (!text || document_->raster() == nullptr) break;
+        if (!text || document_->raster() == nullptr)
+            break;
         const auto lonLat = document_->raster()->georeference.toWgs84(robot.start);
-        if (!lonLat.ok()) return QStringLiteral("–");
-        const double degrees = index.column() == Longitude ? lonLat.value().longitude : lonLat.value().latitude;
+        if (!lonLat.ok())
+            return QStringLiteral("–");
+        const double degrees =
+            index.column() == Longitude ? lonLat.value().longitude : lonLat.value().latitude;
         return QString::number(degrees, 'f', 6);
     }
     default:
@@ -59,23 +70,34 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
 }
 
 QVariant RobotTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
-    if (role != Qt::DisplayRole) return QAbstractTableModel::headerData(section, orientation, role);
-    if (orientation == Qt::Vertical) return section + 1;
+    if (role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    if (orientation == Qt::Vertical)
+        return section + 1;
     switch (section) {
-    case Name: return tr("Name");
-    case Colour: return tr("Colour");
-    case Easting: return tr("X (m)");
-    case Northing: return tr("Y (m)");
-    case Longitude: return tr("Longitude");
-    case Latitude: return tr("Latitude");
-    default: return {};
+    case Name:
+        return tr("Name");
+    case Colour:
+        return tr("Colour");
+    case Easting:
+        return tr("X (m)");
+    case Northing:
+        return tr("Y (m)");
+    case Longitude:
+        return tr("Longitude");
+    case Latitude:
+        return tr("Latitude");
+    default:
+        return {};
     }
 }
 
 Qt::ItemFlags RobotTableModel::flags(const QModelIndex& index) const {
-    if (!index.isValid()) return Qt::NoItemFlags;
+    if (!index.isValid())
+        return Qt::NoItemFlags;
     Qt::ItemFlags result = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
-    if (index.column() != Colour) result |= Qt::ItemIsEditable;
+    if (index.column() != Colour)
+        result |= Qt::ItemIsEditable;
     return result;
 }
 
@@ -85,33 +107,43 @@ bool RobotTableModel::refuse(const QString& reason) {
 }
 
 bool RobotTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
-    if (!index.isValid() || role != Qt::EditRole || index.row() >= rowCount()) return false;
+    if (!index.isValid() || role != Qt::EditRole || index.row() >= rowCount())
+        return false;
     const int row = index.row();
     const io::RobotSpec& robot = document_->robots()[static_cast<std::size_t>(row)];
     if (index.column() == Name) {
         const QString name = value.toString().trimmed();
-        if (name.isEmpty()) return refuse(tr("A robot name cannot be empty."));
-        if (name.toStdString() == robot.name) return true;
+        if (name.isEmpty())
+            return refuse(tr("A robot name cannot be empty."));
+        if (name.toStdString() == robot.name)
+            return true;
         auto after = document_->robots();
         after[static_cast<std::size_t>(row)].name = name.toStdString();
-        undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after, tr("Rename %1").arg(name)));
+        undoStack_->push(
+            new RobotsEditCommand(document_, document_->robots(), after, tr("Rename %1").arg(name)));
         return true;
     }
     bool isNumber = false;
     const double number = value.toString().trimmed().toDouble(&isNumber);
-    if (!isNumber) return refuse(tr("\"%1\" is not a number.").arg(value.toString()));
+    if (!isNumber)
+        return refuse(tr("\"%1\" is not a number.").arg(value.toString()));
     MapPoint start = robot.start;
-    if (index.column() == Easting) start.x = number;
-    else if (index.column() == Northing) start.y = number;
+    if (index.column() == Easting)
+        start.x = number;
+    else if (index.column() == Northing)
+        start.y = number;
     else if (index.column() == Longitude || index.column() == Latitude) {
         const io::LoadedRaster* raster = document_->raster();
-        if (raster == nullptr) return false;
+        if (raster == nullptr)
+            return false;
         auto lonLat = raster->georeference.toWgs84(robot.start);
-        if (!lonLat.ok()) return refuse(tr("The map has no CRS, so longitude and latitude cannot be used."));
+        if (!lonLat.ok())
+            return refuse(tr("The map has no CRS, so longitude and latitude cannot be used."));
         io::LonLat edited = lonLat.value();
         (index.column() == Longitude ? edited.longitude : edited.latitude) = number;
         const auto point = raster->georeference.fromWgs84(edited);
-        if (!point.ok()) return refuse(QString::fromStdString(point.error()));
+        if (!point.ok())
+            return refuse(QString::fromStdString(point.error()));
         start = point.value();
     } else {
         return false;
@@ -120,30 +152,37 @@ bool RobotTableModel::setData(const QModelIndex& index, const QVariant& value, i
 }
 
 bool RobotTableModel::addRobot(MapPoint start) {
-    if (const auto problem = document_->startProblem(start)) return refuse(*problem);
+    if (const auto problem = document_->startProblem(start))
+        return refuse(*problem);
     auto after = document_->robots();
     io::RobotSpec robot;
     robot.name = document_->nextRobotName().toStdString();
     robot.start = start;
     after.push_back(robot);
-    undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after, tr("Add %1").arg(QString::fromStdString(robot.name))));
+    undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after,
+                                           tr("Add %1").arg(QString::fromStdString(robot.name))));
     return true;
 }
 
 bool RobotTableModel::moveRobot(int robot, MapPoint start) {
-    if (robot < 0 || robot >= rowCount()) return false;
-    if (const auto problem = document_->startProblem(start, robot)) return refuse(*problem);
+    if (robot < 0 || robot >= rowCount())
+        return false;
+    if (const auto problem = document_->startProblem(start, robot))
+        return refuse(*problem);
     auto after = document_->robots();
     auto& moved = after[static_cast<std::size_t>(robot)];
-    if (moved.start == start) return true;
+    if (moved.start == start)
+        return true;
     moved.start = start;
     moved.startCrs.clear();
-    undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after, tr("Move %1").arg(QString::fromStdString(moved.name))));
+    undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after,
+                                           tr("Move %1").arg(QString::fromStdString(moved.name))));
     return true;
 }
 
 bool RobotTableModel::removeRobot(int robot) {
-    if (robot < 0 || robot >= rowCount()) return false;
+    if (robot < 0 || robot >= rowCount())
+        return false;
     auto after = document_->robots();
     const QString name = QString::fromStdString(after[static_cast<std::size_t>(robot)].name);
     after.erase(after.begin() + robot);

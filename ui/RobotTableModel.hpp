@@ -15,7 +15,7 @@ class MissionDocument;
 class RobotTableModel : public QAbstractTableModel {
     Q_OBJECT
 
-public:
+  public:
     enum Column { Name, Colour, Easting, Northing, Longitude, Latitude, ColumnCount };
 
     RobotTableModel(MissionDocument* document, QUndoStack* undoStack, QObject* parent = nullptr);
@@ -23,7 +23,8 @@ public:
     [[nodiscard]] int rowCount(const QModelIndex& parent = {}) const override;
     [[nodiscard]] int columnCount(const QModelIndex& parent = {}) const override;
     [[nodiscard]] QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
-    [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation,
+                                      int role = Qt::DisplayRole) const override;
     [[nodiscard]] Qt::ItemFlags flags(const QModelIndex& index) const override;
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
@@ -33,10 +34,10 @@ public:
     bool moveRobot(int robot, MapPoint start);
     bool removeRobot(int robot);
 
-signals:
+  signals:
     void editRefused(const QString& reason);
 
-private:
+  private:
     bool refuse(const QString& reason);
 
     MissionDocument* document_;

@@ -8,8 +8,12 @@ RobotsEditCommand::RobotsEditCommand(MissionDocument* document, std::vector<io::
                                      std::vector<io::RobotSpec> after, const QString& text)
     : QUndoCommand(text), document_(document), before_(std::move(before)), after_(std::move(after)) {}
 
-void RobotsEditCommand::undo() { document_->setRobots(before_); }
+void RobotsEditCommand::undo() {
+    document_->setRobots(before_);
+}
 
-void RobotsEditCommand::redo() { document_->setRobots(after_); }
+void RobotsEditCommand::redo() {
+    document_->setRobots(after_);
+}
 
 } // namespace mcpp::ui

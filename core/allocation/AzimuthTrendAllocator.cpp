@@ -28,13 +28,13 @@ struct RobotState {
 };
 
 class Allocation {
-public:
+  public:
     Allocation(const CellGraph& graph, const std::vector<int>& startCells, const ProgressReporter& progress)
         : graph_(graph), progress_(progress), cellCount_(static_cast<int>(graph.size())),
-          owner_(static_cast<std::size_t>(cellCount_), unreachable), cost_(static_cast<std::size_t>(cellCount_)),
-          x_(static_cast<std::size_t>(cellCount_)), y_(static_cast<std::size_t>(cellCount_)),
-          area_(static_cast<std::size_t>(cellCount_)), visitStamp_(static_cast<std::size_t>(cellCount_), 0),
-          robots_(startCells.size()) {
+          owner_(static_cast<std::size_t>(cellCount_), unreachable),
+          cost_(static_cast<std::size_t>(cellCount_)), x_(static_cast<std::size_t>(cellCount_)),
+          y_(static_cast<std::size_t>(cellCount_)), area_(static_cast<std::size_t>(cellCount_)),
+          visitStamp_(static_cast<std::size_t>(cellCount_), 0), robots_(startCells.size()) {
         for (int cell = 0; cell < cellCount_; ++cell) {
             const Cell& graphCell = graph.cell(cell);
             cost_[static_cast<std::size_t>(cell)] = graphCell.coverSeconds();
@@ -44,7 +44,8 @@ public:
         }
         // Cells in no start's component are unreachable from the outset and never considered.
         std::vector<int> queue(startCells.begin(), startCells.end());
-        for (int start : startCells) owner_[static_cast<std::size_t>(start)] = unassigned;
+        for (int start : startCells)
+            owner_[static_cast<std::size_t>(start)] = unassigned;
         for (std::size_t head = 0; head < queue.size(); ++head) {
             for (int neighbour : graph.neighbours(queue[head])) {
                 if (owner_[static_cast<std::size_t>(neighbour)] == unreachable) {
@@ -66,7 +67,8 @@ public:
             robots_[robot].startCell = startCells[robot];
             give(startCells[robot], static_cast<int>(robot));
         }
-        for (std::size_t robot = 0; robot < robots_.size(); ++robot) pushNeighbours(static_cast<int>(robot), startCells[robot]);
+        for (std::size_t robot = 0; robot < robots_.size(); ++robot)
+            pushNeighbours(static_cast<int>(robot), startCells[robot]);
     }
 
     void grow() {
@@ -77,19 +79,26 @@ public:
         while (unassignedCount_ > 0) {
             if ((++steps & 4095) == 0) {
                 progress_.throwIfCancelled();
-                progress_.report("allocation", 0.8 * (1.0 - static_cast<double>(unassignedCount_) / reachableCount_));
+                progress_.report("allocation",
+                                 0.8 * (1.0 - static_cast<double>(unassignedCount_) / reachableCount_));
             }
-            // A robot that found nothing to take may find a richer neighbour later: wake the stuck ones now and then.
+            // A robot that found nothing to take may find a richer neighbour later: wake the stuck ones now
+            // and then.
             if (steps % retryInterval == 0)
-                for (auto& state : robots_) state.finished = false;
+                for (auto& state : robots_)
+                    state.finished = false;
             int robot = -1;
             for (int candidate = 0; candidate < robotCount; ++candidate) {
                 const RobotState& state = robots_[static_cast<std::size_t>(candidate)];
-                if (!state.finished && (robot < 0 || state.cost < robots_[static_cast<std::size_t>(robot)].cost)) robot = candidate;
+                if (!state.finished &&
+                    (robot < 0 || state.cost < robots_[static_cast<std::size_t>(robot)].cost))
+                    robot = candidate;
             }
-            if (robot < 0) break;
+            if (robot < 0)
+                break;
             RobotState& state = robots_[static_cast<std::size_t>(robot)];
-            if (state.cells >= 2 * state.cellsAtLastRekey) rekey(robot);
+            if (state.cells >= 2 * state.cellsAtLastRekey)
+                rekey(robot);
             const int cell = popUnassignedCandidate(robot);
             if (cell >= 0) {
                 give(cell, robot);
@@ -107,19 +116,24 @@ public:
     // Moves cells along chains of adjacent regions from the most loaded robot while the maximum falls.
     int rebalance(int iterationCap) {
         const auto robotCount = static_cast<int>(robots_.size());
-        if (robotCount < 2) return 0;
+        if (robotCount < 2)
+            return 0;
         buildBoundaries();
         int moves = 0;
         while (moves < iterationCap) {
-            if ((moves & 255) == 0) progress_.throwIfCancelled();
+            if ((moves & 255) == 0)
+                progress_.throwIfCancelled();
             int richest = 0;
             for (int robot = 1; robot < robotCount; ++robot)
-                if (robots_[static_cast<std::size_t>(robot)].cost > robots_[static_cast<std::size_t>(richest)].cost) richest = robot;
+                if (robots_[static_cast<std::size_t>(robot)].cost >
+                    robots_[static_cast<std::size_t>(richest)].cost)
+                    richest = robot;
             // Among regions tied at the maximum, keep draining the one whose chain worked last.
-            if (!lastChain_.empty() &&
-                robots_[static_cast<std::size_t>(lastChain_.front())].cost >= robots_[static_cast<std::size_t>(richest)].cost - 1e-9)
+            if (!lastChain_.empty() && robots_[static_cast<std::size_t>(lastChain_.front())].cost >=
+                                           robots_[static_cast<std::size_t>(richest)].cost - 1e-9)
                 richest = lastChain_.front();
-            if (!moveAlongAChain(richest)) break;
+            if (!moveAlongAChain(richest))
+                break;
             ++moves;
         }
         return moves;
@@ -139,11 +153,12 @@ public:
         return allocation;
     }
 
-private:
+  private:
     double distance(int cell, double x, double y) const {
         const double dx = x_[static_cast<std::size_t>(cell)] - x;
         const double dy = y_[static_cast<std::size_t>(cell)] - y;
-        return std::sqrt(dx * dx + dy * dy); // std::hypot guards overflow we cannot meet, at several times the cost
+        return std::sqrt(dx * dx +
+                         dy * dy); // std::hypot guards overflow we cannot meet, at several times the cost
     }
 
     // cost_un: distance to the robot's own centre minus the mean distance to the other centres.
@@ -153,7 +168,8 @@ private:
         if (robots_.size() > 1) {
             double others = 0.0;
             for (std::size_t other = 0; other < robots_.size(); ++other) {
-                if (static_cast<int>(other) == robot) continue;
+                if (static_cast<int>(other) == robot)
+                    continue;
                 others += distance(cell, robots_[other].centreX(), robots_[other].centreY());
             }
             key -= others / static_cast<double>(robots_.size() - 1);
@@ -163,7 +179,8 @@ private:
 
     bool touchesRegion(int cell, int robot) const {
         for (int neighbour : graph_.neighbours(cell))
-            if (owner_[static_cast<std::size_t>(neighbour)] == robot) return true;
+            if (owner_[static_cast<std::size_t>(neighbour)] == robot)
+                return true;
         return false;
     }
 
@@ -192,7 +209,8 @@ private:
         receiver.area += area;
         ++receiver.cells;
         owner_[static_cast<std::size_t>(cell)] = robot;
-        if (!boundaryIndex_.empty()) updateBoundaryAround(cell);
+        if (!boundaryIndex_.empty())
+            updateBoundaryAround(cell);
     }
 
     void pushNeighbours(int robot, int cell) {
@@ -219,7 +237,8 @@ private:
         std::sort(cells.begin(), cells.end());
         cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
         for (int cell : cells)
-            if (owner_[static_cast<std::size_t>(cell)] == unassigned) state.frontier.emplace(growthKey(robot, cell), cell);
+            if (owner_[static_cast<std::size_t>(cell)] == unassigned)
+                state.frontier.emplace(growthKey(robot, cell), cell);
         state.cellsAtLastRekey = state.cells;
     }
 
@@ -231,7 +250,8 @@ private:
             const int owner = owner_[static_cast<std::size_t>(cell)];
             if (owner == unassigned) {
                 // A cell taken from this robot may have cut it off from an old frontier entry.
-                if (touchesRegion(cell, robot)) return cell;
+                if (touchesRegion(cell, robot))
+                    return cell;
             } else if (owner >= 0 && owner != robot) {
                 state.foreignBorder.push_back(cell);
             }
@@ -250,20 +270,25 @@ private:
         std::vector<int>& sameOwner = scratchNeighbours_;
         sameOwner.clear();
         for (int neighbour : graph_.neighbours(cell))
-            if (owner_[static_cast<std::size_t>(neighbour)] == owner) sameOwner.push_back(neighbour);
-        if (sameOwner.size() <= 1) return !sameOwner.empty() || robots_[static_cast<std::size_t>(owner)].cells > 1;
+            if (owner_[static_cast<std::size_t>(neighbour)] == owner)
+                sameOwner.push_back(neighbour);
+        if (sameOwner.size() <= 1)
+            return !sameOwner.empty() || robots_[static_cast<std::size_t>(owner)].cells > 1;
         ++stamp_;
         visitStamp_[static_cast<std::size_t>(cell)] = stamp_;
         std::vector<int>& queue = scratchQueue_;
         queue.assign(1, sameOwner.front());
         visitStamp_[static_cast<std::size_t>(sameOwner.front())] = stamp_;
         std::size_t found = 1;
-        for (std::size_t head = 0; head < queue.size() && found < sameOwner.size() && queue.size() < searchLimit; ++head) {
+        for (std::size_t head = 0;
+             head < queue.size() && found < sameOwner.size() && queue.size() < searchLimit; ++head) {
             for (int neighbour : graph_.neighbours(queue[head])) {
-                if (owner_[static_cast<std::size_t>(neighbour)] != owner || visitStamp_[static_cast<std::size_t>(neighbour)] == stamp_)
+                if (owner_[static_cast<std::size_t>(neighbour)] != owner ||
+                    visitStamp_[static_cast<std::size_t>(neighbour)] == stamp_)
                     continue;
                 visitStamp_[static_cast<std::size_t>(neighbour)] = stamp_;
-                if (std::find(sameOwner.begin(), sameOwner.end(), neighbour) != sameOwner.end()) ++found;
+                if (std::find(sameOwner.begin(), sameOwner.end(), neighbour) != sameOwner.end())
+                    ++found;
                 queue.push_back(neighbour);
             }
         }
@@ -276,8 +301,10 @@ private:
         for (std::size_t limit : {localSearch, wideSearch}) {
             int tried = 0;
             for (int cell : cells) {
-                if (removalKeepsConnected(cell, limit)) return cell;
-                if (++tried >= maxTries) break;
+                if (removalKeepsConnected(cell, limit))
+                    return cell;
+                if (++tried >= maxTries)
+                    break;
             }
         }
         return -1;
@@ -303,24 +330,30 @@ private:
         std::size_t kept = 0;
         for (int cell : border) {
             const int owner = owner_[static_cast<std::size_t>(cell)];
-            if (owner < 0 || owner == robot || !touchesRegion(cell, robot)) continue;
+            if (owner < 0 || owner == robot || !touchesRegion(cell, robot))
+                continue;
             border[kept++] = cell;
             const RobotState& donor = robots_[static_cast<std::size_t>(owner)];
-            if (cell == donor.startCell) continue;
-            if (!(state.cost + cost_[static_cast<std::size_t>(cell)] < donor.cost - 1e-9)) continue;
+            if (cell == donor.startCell)
+                continue;
+            if (!(state.cost + cost_[static_cast<std::size_t>(cell)] < donor.cost - 1e-9))
+                continue;
             const double dx = x_[static_cast<std::size_t>(cell)] - centreX;
             const double dy = y_[static_cast<std::size_t>(cell)] - centreY;
             candidates.push_back({dx * towardsX + dy * towardsY >= 0.0, std::sqrt(dx * dx + dy * dy), cell});
         }
         border.resize(kept);
         std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-            if (a.facingUnassigned != b.facingUnassigned) return a.facingUnassigned;
-            if (a.distance != b.distance) return a.distance < b.distance;
+            if (a.facingUnassigned != b.facingUnassigned)
+                return a.facingUnassigned;
+            if (a.distance != b.distance)
+                return a.distance < b.distance;
             return a.cell < b.cell;
         });
         std::vector<int>& ordered = scratchCells_;
         ordered.clear();
-        for (const auto& candidate : candidates) ordered.push_back(candidate.cell);
+        for (const auto& candidate : candidates)
+            ordered.push_back(candidate.cell);
         const int chosen = firstRemovable(ordered, 32);
         if (chosen >= 0) {
             const int donor = owner_[static_cast<std::size_t>(chosen)];
@@ -329,7 +362,8 @@ private:
             robots_[static_cast<std::size_t>(donor)].finished = false;
             // The donor may now reach cells again through its remaining border.
             for (int neighbour : graph_.neighbours(chosen))
-                if (owner_[static_cast<std::size_t>(neighbour)] == donor) pushNeighbours(donor, neighbour);
+                if (owner_[static_cast<std::size_t>(neighbour)] == donor)
+                    pushNeighbours(donor, neighbour);
             return true;
         }
         return false;
@@ -345,10 +379,13 @@ private:
         handOverPossible_.assign(robots_.size() * robots_.size(), 0);
         for (int cell = 0; cell < cellCount_; ++cell) {
             const int owner = owner_[static_cast<std::size_t>(cell)];
-            if (owner < 0) continue;
+            if (owner < 0)
+                continue;
             for (int neighbour : graph_.neighbours(cell)) {
                 const int other = owner_[static_cast<std::size_t>(neighbour)];
-                if (other >= 0 && other != owner) ++regionContacts_[static_cast<std::size_t>(owner) * robots_.size() + static_cast<std::size_t>(other)];
+                if (other >= 0 && other != owner)
+                    ++regionContacts_[static_cast<std::size_t>(owner) * robots_.size() +
+                                      static_cast<std::size_t>(other)];
             }
             refreshBoundary(cell);
         }
@@ -369,7 +406,8 @@ private:
         int& index = boundaryIndex_[static_cast<std::size_t>(cell)];
         if (index >= 0) {
             // Remove from the list that holds it: its owner may have changed since it was added.
-            auto& list = boundaries_[static_cast<std::size_t>(boundaryOwner_[static_cast<std::size_t>(cell)])];
+            auto& list =
+                boundaries_[static_cast<std::size_t>(boundaryOwner_[static_cast<std::size_t>(cell)])];
             const int last = list.back();
             list[static_cast<std::size_t>(index)] = last;
             boundaryIndex_[static_cast<std::size_t>(last)] = index;
@@ -386,7 +424,8 @@ private:
 
     void updateBoundaryAround(int cell) {
         refreshBoundary(cell);
-        for (int neighbour : graph_.neighbours(cell)) refreshBoundary(neighbour);
+        for (int neighbour : graph_.neighbours(cell))
+            refreshBoundary(neighbour);
     }
 
     // Contact counts between regions change only when a cell changes owner.
@@ -397,7 +436,8 @@ private:
         const std::size_t n = robots_.size();
         for (int neighbour : graph_.neighbours(cell)) {
             const int other = owner_[static_cast<std::size_t>(neighbour)];
-            if (other < 0) continue;
+            if (other < 0)
+                continue;
             if (other != from) {
                 --regionContacts_[static_cast<std::size_t>(from) * n + static_cast<std::size_t>(other)];
                 --regionContacts_[static_cast<std::size_t>(other) * n + static_cast<std::size_t>(from)];
@@ -418,8 +458,10 @@ private:
         std::vector<std::pair<double, int>>& candidates = scratchCandidates_;
         candidates.clear();
         for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
-            if (cell == donor.startCell || !touchesRegion(cell, to)) continue;
-            if (!(receiver.cost + cost_[static_cast<std::size_t>(cell)] < receiverCostLimit)) continue;
+            if (cell == donor.startCell || !touchesRegion(cell, to))
+                continue;
+            if (!(receiver.cost + cost_[static_cast<std::size_t>(cell)] < receiverCostLimit))
+                continue;
             const double score = distance(cell, receiver.centreX(), receiver.centreY()) -
                                  distance(cell, donor.centreX(), donor.centreY());
             candidates.emplace_back(score, cell);
@@ -427,13 +469,15 @@ private:
         std::sort(candidates.begin(), candidates.end());
         std::vector<int>& ordered = scratchCells_;
         ordered.clear();
-        for (const auto& candidate : candidates) ordered.push_back(candidate.second);
+        for (const auto& candidate : candidates)
+            ordered.push_back(candidate.second);
         return firstRemovable(ordered, 64);
     }
 
     // Whether `from` has any border cell it could hand to `to`, remembered until either region changes.
     bool canHandOver(int from, int to) {
-        const std::size_t key = static_cast<std::size_t>(from) * robots_.size() + static_cast<std::size_t>(to);
+        const std::size_t key =
+            static_cast<std::size_t>(from) * robots_.size() + static_cast<std::size_t>(to);
         if (handOverKnown_[key] == 0) {
             handOverPossible_[key] = searchHandOver(from, to) ? 1 : 0;
             handOverKnown_[key] = 1;
@@ -454,7 +498,8 @@ private:
         std::vector<int>& facing = scratchCells_;
         facing.clear();
         for (int cell : boundaries_[static_cast<std::size_t>(from)])
-            if (cell != donor.startCell && touchesRegion(cell, to)) facing.push_back(cell);
+            if (cell != donor.startCell && touchesRegion(cell, to))
+                facing.push_back(cell);
         return firstRemovable(facing, 64) >= 0;
     }
 
@@ -465,7 +510,8 @@ private:
         const double ceiling = robots_[static_cast<std::size_t>(richest)].cost;
         // The chain that worked last time usually works again: try it before searching.
         if (!lastChain_.empty() && lastChain_.front() == richest &&
-            robots_[static_cast<std::size_t>(lastChain_.back())].cost < ceiling - 1e-9 && tryChain(lastChain_))
+            robots_[static_cast<std::size_t>(lastChain_.back())].cost < ceiling - 1e-9 &&
+            tryChain(lastChain_))
             return true;
         std::vector<int> parent(n, -2);
         std::vector<int> order{richest};
@@ -473,8 +519,10 @@ private:
         for (std::size_t head = 0; head < order.size(); ++head) {
             const int region = order[head];
             for (std::size_t other = 0; other < n; ++other) {
-                if (parent[other] != -2 || regionContacts_[static_cast<std::size_t>(region) * n + other] == 0) continue;
-                if (!canHandOver(region, static_cast<int>(other))) continue;
+                if (parent[other] != -2 || regionContacts_[static_cast<std::size_t>(region) * n + other] == 0)
+                    continue;
+                if (!canHandOver(region, static_cast<int>(other)))
+                    continue;
                 parent[other] = region;
                 order.push_back(static_cast<int>(other));
             }
@@ -485,9 +533,11 @@ private:
         });
         int attempts = 0;
         for (int target : targets) {
-            if (robots_[static_cast<std::size_t>(target)].cost >= ceiling - 1e-9 || ++attempts > 12) break;
+            if (robots_[static_cast<std::size_t>(target)].cost >= ceiling - 1e-9 || ++attempts > 12)
+                break;
             std::vector<int> chain{target};
-            while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
+            while (parent[static_cast<std::size_t>(chain.back())] >= 0)
+                chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
             std::reverse(chain.begin(), chain.end()); // richest ... target
             if (tryChain(chain)) {
                 lastChain_ = chain;
@@ -503,7 +553,8 @@ private:
         const int richest = chain.front();
         const double ceiling = robots_[static_cast<std::size_t>(richest)].cost;
         std::vector<double> before;
-        for (int region : chain) before.push_back(robots_[static_cast<std::size_t>(region)].cost);
+        for (int region : chain)
+            before.push_back(robots_[static_cast<std::size_t>(region)].cost);
         // Hand over from the target's end backwards, so every region keeps cells to give.
         std::vector<std::pair<int, int>> done; // cell, previous owner
         bool ok = true;
@@ -511,7 +562,8 @@ private:
             const int from = chain[hop - 1];
             const int to = chain[hop];
             // A region inside the chain may also sit at the maximum: it passes cells on without gaining.
-            const double limit = hop + 1 < chain.size() ? std::max(ceiling, before[hop]) + 1e-9 : ceiling - 1e-9;
+            const double limit =
+                hop + 1 < chain.size() ? std::max(ceiling, before[hop]) + 1e-9 : ceiling - 1e-9;
             const int cell = cellToHandOver(from, to, limit);
             if (cell < 0) {
                 ok = false;
@@ -527,8 +579,10 @@ private:
             const double now = robots_[static_cast<std::size_t>(chain[i])].cost;
             improves = now < ceiling - 1e-9 || now <= before[i] + 1e-9;
         }
-        if (improves) return true;
-        for (auto it = done.rbegin(); it != done.rend(); ++it) moveCell(it->first, it->second);
+        if (improves)
+            return true;
+        for (auto it = done.rbegin(); it != done.rend(); ++it)
+            moveCell(it->first, it->second);
         return false;
     }
 

@@ -9,7 +9,7 @@ namespace mcpp {
 // afterwards cells move along chains of adjacent regions from the most to the least loaded robot while
 // the maximum cost falls.
 class AzimuthTrendAllocator final : public RegionAllocator {
-public:
+  public:
     [[nodiscard]] RegionAllocation allocate(const CellGraph& graph, const std::vector<int>& startCells,
                                             const PlannerSettings& settings,
                                             const ProgressReporter& progress) const override;

@@ -11,10 +11,11 @@ namespace mcpp {
 
 // The allocation stage: divides the cells reachable from the starts into one region per robot.
 class RegionAllocator {
-public:
+  public:
     virtual ~RegionAllocator() = default;
     // startCells: the cell holding each robot's start, all distinct.
-    [[nodiscard]] virtual RegionAllocation allocate(const CellGraph& graph, const std::vector<int>& startCells,
+    [[nodiscard]] virtual RegionAllocation allocate(const CellGraph& graph,
+                                                    const std::vector<int>& startCells,
                                                     const PlannerSettings& settings,
                                                     const ProgressReporter& progress) const = 0;
 };

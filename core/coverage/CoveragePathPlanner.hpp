@@ -13,12 +13,11 @@ namespace mcpp {
 
 // The coverage stage: one path per robot through its region.
 class CoveragePathPlanner {
-public:
+  public:
     virtual ~CoveragePathPlanner() = default;
-    [[nodiscard]] virtual std::vector<CoveragePath> plan(const CellGraph& graph, const RegionAllocation& regions,
-                                                         const std::vector<MapPoint>& starts,
-                                                         const PlannerSettings& settings,
-                                                         const ProgressReporter& progress) const = 0;
+    [[nodiscard]] virtual std::vector<CoveragePath>
+    plan(const CellGraph& graph, const RegionAllocation& regions, const std::vector<MapPoint>& starts,
+         const PlannerSettings& settings, const ProgressReporter& progress) const = 0;
 };
 
 } // namespace mcpp

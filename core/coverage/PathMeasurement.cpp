@@ -9,12 +9,14 @@ namespace {
 
 // The (cell, sub-cell) a waypoint marks when it sits on a sub-cell centre; cell -1 otherwise.
 std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& graph) {
-    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size()) return {-1, 0};
+    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size())
+        return {-1, 0};
     const Cell& cell = graph.cell(waypoint.cell);
     const MapPoint point{waypoint.x, waypoint.y};
     const SubCell subCell = cell.subCellAt(point);
     const MapPoint centre = cell.subCellCentre(subCell);
-    if (std::hypot(centre.x - point.x, centre.y - point.y) > 1e-6 * cell.size) return {-1, 0};
+    if (std::hypot(centre.x - point.x, centre.y - point.y) > 1e-6 * cell.size)
+        return {-1, 0};
     return {waypoint.cell, static_cast<int>(subCell)};
 }
 
@@ -29,11 +31,13 @@ int countTurns(const std::vector<Waypoint>& waypoints) {
         const double dx = waypoints[i].x - waypoints[i - 1].x;
         const double dy = waypoints[i].y - waypoints[i - 1].y;
         const double length = std::sqrt(dx * dx + dy * dy);
-        if (length < 1e-9) continue;
+        if (length < 1e-9)
+            continue;
         const double ux = dx / length;
         const double uy = dy / length;
         if (havePrevious &&
-            std::abs(ux * previousY - uy * previousX) + std::max(0.0, -(ux * previousX + uy * previousY)) > 1e-6)
+            std::abs(ux * previousY - uy * previousX) + std::max(0.0, -(ux * previousX + uy * previousY)) >
+                1e-6)
             ++turns;
         previousX = ux;
         previousY = uy;
@@ -47,21 +51,25 @@ int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph)
     visits.reserve(path.waypoints.size());
     for (const Waypoint& waypoint : path.waypoints) {
         const auto visited = subCellVisited(waypoint, graph);
-        if (visited.first >= 0) visits.push_back(visited);
+        if (visited.first >= 0)
+            visits.push_back(visited);
     }
-    if (visits.empty()) return 0;
+    if (visits.empty())
+        return 0;
     const bool returnsToFirst = path.closed && visits.size() > 1 && visits.back() == visits.front();
     std::sort(visits.begin(), visits.end());
     const auto distinct = static_cast<int>(std::unique(visits.begin(), visits.end()) - visits.begin());
     int repeats = static_cast<int>(visits.size()) - distinct;
-    if (returnsToFirst) --repeats; // the return that closes the tour
+    if (returnsToFirst)
+        --repeats; // the return that closes the tour
     return repeats;
 }
 
 void measurePath(CoveragePath& path, const CellGraph& graph) {
     double length = 0.0;
     double time = 0.0;
-    if (!path.waypoints.empty()) path.waypoints.front().cumulativeSeconds = 0.0;
+    if (!path.waypoints.empty())
+        path.waypoints.front().cumulativeSeconds = 0.0;
     for (std::size_t i = 1; i < path.waypoints.size(); ++i) {
         const Waypoint& from = path.waypoints[i - 1];
         Waypoint& to = path.waypoints[i];
@@ -82,7 +90,8 @@ CoveragePath pathFromWalk(int robot, MapPoint start, std::vector<Waypoint> walk,
     CoveragePath path;
     path.robot = robot;
     path.closed = closed;
-    if (walk.empty()) return path;
+    if (walk.empty())
+        return path;
     const Waypoint first = walk.front();
     const bool startIsOnWalk = std::hypot(first.x - start.x, first.y - start.y) < 1e-9;
     if (!startIsOnWalk) {
@@ -92,7 +101,8 @@ CoveragePath pathFromWalk(int robot, MapPoint start, std::vector<Waypoint> walk,
         path.waypoints.push_back(origin);
     }
     path.waypoints.insert(path.waypoints.end(), walk.begin(), walk.end());
-    if (closed && !startIsOnWalk) path.waypoints.push_back(path.waypoints.front());
+    if (closed && !startIsOnWalk)
+        path.waypoints.push_back(path.waypoints.front());
     return path;
 }
 

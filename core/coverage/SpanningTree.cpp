@@ -11,7 +11,8 @@ SpanningTree::SpanningTree(std::vector<int> cells, int root, const std::vector<s
         ++offsets_[static_cast<std::size_t>(a) + 1];
         ++offsets_[static_cast<std::size_t>(b) + 1];
     }
-    for (std::size_t i = 0; i < count; ++i) offsets_[i + 1] += offsets_[i];
+    for (std::size_t i = 0; i < count; ++i)
+        offsets_[i + 1] += offsets_[i];
     targets_.resize(2 * edges.size());
     std::vector<int> fill(offsets_.begin(), offsets_.end() - 1);
     for (const auto& [a, b] : edges) {
@@ -20,14 +21,16 @@ SpanningTree::SpanningTree(std::vector<int> cells, int root, const std::vector<s
     }
     parent_.assign(count, -1);
     depth_.assign(count, 0);
-    if (count == 0) return;
+    if (count == 0)
+        return;
     std::vector<int> queue{root_};
     std::vector<char> seen(count, 0);
     seen[static_cast<std::size_t>(root_)] = 1;
     for (std::size_t head = 0; head < queue.size(); ++head) {
         const int node = queue[head];
         for (int next : neighbours(node)) {
-            if (seen[static_cast<std::size_t>(next)] != 0) continue;
+            if (seen[static_cast<std::size_t>(next)] != 0)
+                continue;
             seen[static_cast<std::size_t>(next)] = 1;
             parent_[static_cast<std::size_t>(next)] = node;
             depth_[static_cast<std::size_t>(next)] = depth_[static_cast<std::size_t>(node)] + 1;
@@ -39,7 +42,8 @@ SpanningTree::SpanningTree(std::vector<int> cells, int root, const std::vector<s
 std::vector<std::pair<int, int>> SpanningTree::edges() const {
     std::vector<std::pair<int, int>> result;
     for (std::size_t node = 0; node < cells_.size(); ++node)
-        if (parent_[node] >= 0) result.emplace_back(parent_[node], static_cast<int>(node));
+        if (parent_[node] >= 0)
+            result.emplace_back(parent_[node], static_cast<int>(node));
     return result;
 }
 

@@ -9,7 +9,7 @@ namespace mcpp {
 // A spanning tree over some cells of a cell graph. Nodes are positions in `cells()` (graph ids); the tree
 // is rooted at the start cell, so every node knows its parent and depth.
 class SpanningTree {
-public:
+  public:
     SpanningTree() = default;
     SpanningTree(std::vector<int> cells, int root, const std::vector<std::pair<int, int>>& edges);
 
@@ -27,7 +27,7 @@ public:
     // The edges as (node, node) pairs, each once.
     [[nodiscard]] std::vector<std::pair<int, int>> edges() const;
 
-private:
+  private:
     std::vector<int> cells_;
     int root_ = 0;
     std::vector<int> offsets_;

@@ -11,19 +11,21 @@ enum class EdgeDirection { EastWest, NorthSouth };
 
 // Spanning trees over a region of a cell graph, rooted at the start cell.
 class SpanningTreeBuilder {
-public:
+  public:
     // scratchIndex: one int per graph cell, all -1; the builder leaves it so.
-    SpanningTreeBuilder(const CellGraph& graph, std::vector<int>& scratchIndex) : graph_(graph), index_(scratchIndex) {}
+    SpanningTreeBuilder(const CellGraph& graph, std::vector<int>& scratchIndex)
+        : graph_(graph), index_(scratchIndex) {}
 
     // Kruskal over the region's adjacencies, the preferred direction's edges first: long straight spines
     // give boustrophedon-like paths with few turns (DARP's idea; spec 5).
-    [[nodiscard]] SpanningTree preferring(std::vector<int> cells, int rootCell, EdgeDirection preferred) const;
+    [[nodiscard]] SpanningTree preferring(std::vector<int> cells, int rootCell,
+                                          EdgeDirection preferred) const;
 
     // Spiral-STC (Gabriely & Rimon): a depth-first tree grown from the start, each cell scanning its
     // neighbours counter-clockwise from the one it was entered from and entering the first new one.
     [[nodiscard]] SpanningTree spiral(std::vector<int> cells, int rootCell) const;
 
-private:
+  private:
     const CellGraph& graph_;
     std::vector<int>& index_;
 };

@@ -31,10 +31,11 @@ std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, con
         progress.report("paths", static_cast<double>(robot) / static_cast<double>(robots));
         CoveragePath best;
         for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
-            const SpanningTree tree = trees.preferring(regionCells[robot], regions.startCell[robot], preference);
-            CoveragePath candidate = pathFromWalk(static_cast<int>(robot), starts[robot],
-                                                  walker.walk(tree, starts[robot], settings.closedTour),
-                                                  settings.closedTour);
+            const SpanningTree tree =
+                trees.preferring(regionCells[robot], regions.startCell[robot], preference);
+            CoveragePath candidate =
+                pathFromWalk(static_cast<int>(robot), starts[robot],
+                             walker.walk(tree, starts[robot], settings.closedTour), settings.closedTour);
             measurePath(candidate, graph);
             if (best.waypoints.empty() || candidate.turns < best.turns ||
                 (candidate.turns == best.turns && candidate.lengthMetres < best.lengthMetres - 1e-9))

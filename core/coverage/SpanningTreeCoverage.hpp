@@ -8,9 +8,10 @@ namespace mcpp {
 // circumnavigated counter-clockwise through the centres of every cell's four sub-cells. Two trees are tried
 // per region, one preferring east-west edges and one north-south, and the path with fewer turns is kept.
 class SpanningTreeCoverage final : public CoveragePathPlanner {
-public:
+  public:
     [[nodiscard]] std::vector<CoveragePath> plan(const CellGraph& graph, const RegionAllocation& regions,
-                                                 const std::vector<MapPoint>& starts, const PlannerSettings& settings,
+                                                 const std::vector<MapPoint>& starts,
+                                                 const PlannerSettings& settings,
                                                  const ProgressReporter& progress) const override;
 };
 

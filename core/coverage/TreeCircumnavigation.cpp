@@ -8,7 +8,9 @@ namespace mcpp {
 namespace {
 
 // In a slot sequence, items >= 0 are tree neighbours and items < 0 sub-cells: -1 - SubCell.
-MapPoint subCellCentre(const Cell& cell, int item) { return cell.subCellCentre(static_cast<SubCell>(-1 - item)); }
+MapPoint subCellCentre(const Cell& cell, int item) {
+    return cell.subCellCentre(static_cast<SubCell>(-1 - item));
+}
 
 MapPoint nearestSubCell(const Cell& cell, MapPoint point) {
     MapPoint best{};
@@ -30,19 +32,26 @@ MapPoint nearestSubCell(const Cell& cell, MapPoint point) {
 void TreeCircumnavigation::appendSlots(const SpanningTree& tree, int node, std::vector<int>& out) {
     const Cell& self = graph_.cell(tree.cellOf(node));
     const double tolerance = 1e-9 * self.size;
-    for (auto& side : sides_) side.clear(); // west, south, east, north: (position along the walk, neighbour)
+    for (auto& side : sides_)
+        side.clear(); // west, south, east, north: (position along the walk, neighbour)
     for (int neighbour : tree.neighbours(node)) {
         const Cell& other = graph_.cell(tree.cellOf(neighbour));
-        if (other.maxX() <= self.minX + tolerance) sides_[0].emplace_back(-other.centreY(), neighbour);
-        else if (other.maxY() <= self.minY + tolerance) sides_[1].emplace_back(other.centreX(), neighbour);
-        else if (other.minX >= self.maxX() - tolerance) sides_[2].emplace_back(other.centreY(), neighbour);
-        else sides_[3].emplace_back(-other.centreX(), neighbour);
+        if (other.maxX() <= self.minX + tolerance)
+            sides_[0].emplace_back(-other.centreY(), neighbour);
+        else if (other.maxY() <= self.minY + tolerance)
+            sides_[1].emplace_back(other.centreX(), neighbour);
+        else if (other.minX >= self.maxX() - tolerance)
+            sides_[2].emplace_back(other.centreY(), neighbour);
+        else
+            sides_[3].emplace_back(-other.centreX(), neighbour);
     }
     for (int side = 0; side < 4; ++side) {
         out.push_back(-1 - side); // the corner sub-cell before this side: NW, SW, SE, NE
         auto& list = sides_[static_cast<std::size_t>(side)];
-        if (list.size() > 1) std::sort(list.begin(), list.end());
-        for (const auto& entry : list) out.push_back(entry.second);
+        if (list.size() > 1)
+            std::sort(list.begin(), list.end());
+        for (const auto& entry : list)
+            out.push_back(entry.second);
     }
 }
 
@@ -56,21 +65,24 @@ Waypoint TreeCircumnavigation::waypointAt(const SpanningTree& tree, int node, Ma
     return {point.x, point.y, id, cell.classValue, cell.speedMetresPerSecond, cell.fieldOfView(), 0.0};
 }
 
-void TreeCircumnavigation::emit(const SpanningTree& tree, std::vector<Waypoint>& path, int& previousNode, int node,
-                                MapPoint point) {
+void TreeCircumnavigation::emit(const SpanningTree& tree, std::vector<Waypoint>& path, int& previousNode,
+                                int node, MapPoint point) {
     if (previousNode >= 0 && !adjacent(tree, previousNode, node)) {
         // The tree path between the two cells, without its ends.
         std::vector<int> up;
         std::vector<int> down;
         int a = previousNode;
         int b = node;
-        while (tree.depth(a) > tree.depth(b)) up.push_back(a = tree.parent(a));
-        while (tree.depth(b) > tree.depth(a)) down.push_back(b = tree.parent(b));
+        while (tree.depth(a) > tree.depth(b))
+            up.push_back(a = tree.parent(a));
+        while (tree.depth(b) > tree.depth(a))
+            down.push_back(b = tree.parent(b));
         while (a != b) {
             up.push_back(a = tree.parent(a));
             down.push_back(b = tree.parent(b));
         }
-        if (!up.empty() && !down.empty() && up.back() == down.back()) down.pop_back();
+        if (!up.empty() && !down.empty() && up.back() == down.back())
+            down.pop_back();
         std::vector<int> between(up.begin(), up.end());
         between.insert(between.end(), down.rbegin(), down.rend());
         std::erase(between, node);
@@ -78,9 +90,11 @@ void TreeCircumnavigation::emit(const SpanningTree& tree, std::vector<Waypoint>&
         int last = previousNode;
         for (std::size_t i = 0; i < between.size(); ++i) {
             const int next = i + 1 < between.size() ? between[i + 1] : node;
-            if (adjacent(tree, last, next)) continue; // a bridge the walk does not need
+            if (adjacent(tree, last, next))
+                continue; // a bridge the walk does not need
             const Waypoint& from = path.back();
-            path.push_back(waypointAt(tree, between[i], nearestSubCell(graph_.cell(tree.cellOf(between[i])), {from.x, from.y})));
+            path.push_back(waypointAt(
+                tree, between[i], nearestSubCell(graph_.cell(tree.cellOf(between[i])), {from.x, from.y})));
             ++bridgeVisits_;
             last = between[i];
         }
@@ -100,7 +114,8 @@ std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPo
     std::vector<Waypoint> path;
     path.reserve(tree.size() * 4 + 2);
     bridgeVisits_ = 0;
-    if (tree.size() == 0) return path;
+    if (tree.size() == 0)
+        return path;
     int previousNode = -1;
     std::vector<int>& arena = arena_;
     arena.clear();
@@ -110,7 +125,8 @@ std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPo
     std::size_t firstItem = 0;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < arena.size(); ++i) {
-        if (arena[i] >= 0) continue;
+        if (arena[i] >= 0)
+            continue;
         const MapPoint centre = subCellCentre(rootCell, arena[i]);
         const double d = std::hypot(centre.x - start.x, centre.y - start.y);
         if (d < bestDistance - 1e-12) {
@@ -142,7 +158,8 @@ std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPo
         stack.push_back({item, begin + 1, arena.size(), 0}); // skip the parent's own slot
     }
     // The walk may end deep in a subtree; returning goes through emit so it is bridged like any step.
-    if (closed) emit(tree, path, previousNode, root, {path.front().x, path.front().y});
+    if (closed)
+        emit(tree, path, previousNode, root, {path.front().x, path.front().y});
     return path;
 }
 

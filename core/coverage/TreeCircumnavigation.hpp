@@ -15,7 +15,7 @@ namespace mcpp {
 // nearest sub-cell centres across their shared border; where two consecutive sub-cells lie in cells that
 // do not touch (two excursions on one side of a large cell), it goes back through the cells between them.
 class TreeCircumnavigation {
-public:
+  public:
     explicit TreeCircumnavigation(const CellGraph& graph) : graph_(graph) {}
 
     // Starts at the root cell's sub-cell nearest `start`; a closed walk ends back at that sub-cell.
@@ -23,11 +23,12 @@ public:
     // Waypoints of the last walk that pass a cell again to bridge cells that do not touch.
     [[nodiscard]] int bridgeVisits() const { return bridgeVisits_; }
 
-private:
+  private:
     void appendSlots(const SpanningTree& tree, int node, std::vector<int>& out);
     [[nodiscard]] bool adjacent(const SpanningTree& tree, int a, int b) const;
     [[nodiscard]] Waypoint waypointAt(const SpanningTree& tree, int node, MapPoint point) const;
-    void emit(const SpanningTree& tree, std::vector<Waypoint>& path, int& previousNode, int node, MapPoint point);
+    void emit(const SpanningTree& tree, std::vector<Waypoint>& path, int& previousNode, int node,
+              MapPoint point);
 
     const CellGraph& graph_;
     std::array<std::vector<std::pair<double, int>>, 4> sides_;

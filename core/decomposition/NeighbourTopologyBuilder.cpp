@@ -18,13 +18,14 @@ NeighbourTopology NeighbourTopologyBuilder::build(const QuadTree& tree) const {
     // Index of the cell at each (level, row, column), -1 where the level has no cell there.
     std::vector<std::vector<int>> indexAt(static_cast<std::size_t>(tree.levels));
     for (int level = 1; level <= tree.levels; ++level)
-        indexAt[static_cast<std::size_t>(level - 1)].assign(
-            static_cast<std::size_t>(tree.columnsAt(level)) * static_cast<std::size_t>(tree.rowsAt(level)), -1);
+        indexAt[static_cast<std::size_t>(level - 1)].assign(static_cast<std::size_t>(tree.columnsAt(level)) *
+                                                                static_cast<std::size_t>(tree.rowsAt(level)),
+                                                            -1);
     for (std::size_t index = 0; index < tree.cells.size(); ++index) {
         const QuadCell& cell = tree.cells[index];
-        indexAt[static_cast<std::size_t>(cell.level - 1)][static_cast<std::size_t>(cell.row) *
-                                                               static_cast<std::size_t>(tree.columnsAt(cell.level)) +
-                                                           static_cast<std::size_t>(cell.column)] = static_cast<int>(index);
+        indexAt[static_cast<std::size_t>(cell.level - 1)]
+               [static_cast<std::size_t>(cell.row) * static_cast<std::size_t>(tree.columnsAt(cell.level)) +
+                static_cast<std::size_t>(cell.column)] = static_cast<int>(index);
     }
 
     std::vector<int> offsets;
@@ -38,10 +39,13 @@ NeighbourTopology NeighbourTopologyBuilder::build(const QuadTree& tree) const {
         for (int side = North; side <= West; ++side) {
             const int row = cell.row + rowStep[static_cast<std::size_t>(side)];
             const int column = cell.column + columnStep[static_cast<std::size_t>(side)];
-            if (row < 0 || column < 0 || row >= tree.rowsAt(cell.level) || column >= tree.columnsAt(cell.level)) continue;
-            const int same = indexAt[static_cast<std::size_t>(cell.level - 1)]
-                                    [static_cast<std::size_t>(row) * static_cast<std::size_t>(tree.columnsAt(cell.level)) +
-                                     static_cast<std::size_t>(column)];
+            if (row < 0 || column < 0 || row >= tree.rowsAt(cell.level) ||
+                column >= tree.columnsAt(cell.level))
+                continue;
+            const int same =
+                indexAt[static_cast<std::size_t>(cell.level - 1)]
+                       [static_cast<std::size_t>(row) * static_cast<std::size_t>(tree.columnsAt(cell.level)) +
+                        static_cast<std::size_t>(column)];
             if (same < 0) {
                 // The position lies inside a larger leaf: climb to the level where it exists.
                 for (int level = cell.level - 1; level >= 1; --level) {

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/model/NeighbourTopology.hpp"
 #include "core/decomposition/QuadTree.hpp"
+#include "core/model/NeighbourTopology.hpp"
 
 namespace mcpp {
 
@@ -9,7 +9,7 @@ namespace mcpp {
 // Same-level positions are looked up in per-level index grids; larger neighbours are found by climbing
 // to the ancestor that exists, smaller ones by descending the facing children. O(cells) overall.
 class NeighbourTopologyBuilder {
-public:
+  public:
     [[nodiscard]] NeighbourTopology build(const QuadTree& tree) const;
 };
 

@@ -22,11 +22,11 @@ struct QuadCell {
     CellState state = CellState::Auxiliary;
     int parent = -1;
     std::array<int, 4> children{-1, -1, -1, -1}; // north-west, north-east, south-east, south-west
-    int activeIndex = -1;                         // index among active cells, -1 otherwise
-    std::int32_t classValue = 0;                  // majority passable class of an active cell
-    double speedMetresPerSecond = 0.0;            // harmonic mean over its passable pixels
-    double obstacleFraction = 0.0;                // obstacle + outside share of its pixels
-    double passableAreaSquareMetres = 0.0;        // area of its passable pixels
+    int activeIndex = -1;                        // index among active cells, -1 otherwise
+    std::int32_t classValue = 0;                 // majority passable class of an active cell
+    double speedMetresPerSecond = 0.0;           // harmonic mean over its passable pixels
+    double obstacleFraction = 0.0;               // obstacle + outside share of its pixels
+    double passableAreaSquareMetres = 0.0;       // area of its passable pixels
 
     [[nodiscard]] double maxX() const { return minX + size; }
     [[nodiscard]] double maxY() const { return minY + size; }

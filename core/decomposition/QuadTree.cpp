@@ -5,10 +5,12 @@
 namespace mcpp {
 
 int QuadTree::leafAt(double x, double y) const {
-    if (topColumns == 0 || topRows == 0) return -1;
+    if (topColumns == 0 || topRows == 0)
+        return -1;
     const double column = std::floor((x - originX) / topCellSize);
     const double row = std::floor((originY - y) / topCellSize);
-    if (column < 0 || row < 0 || column >= topColumns || row >= topRows) return -1;
+    if (column < 0 || row < 0 || column >= topColumns || row >= topRows)
+        return -1;
     int index = static_cast<int>(row) * topColumns + static_cast<int>(column);
     while (cells[static_cast<std::size_t>(index)].state == CellState::Auxiliary) {
         const QuadCell& cell = cells[static_cast<std::size_t>(index)];

@@ -42,15 +42,16 @@ std::string describePoint(double x, double y) {
 
 void validateGrid(const ClassGrid& grid) {
     if (grid.columns <= 0 || grid.rows <= 0)
-        throw PlanningError(Kind::InvalidGrid, "the land-cover grid is empty (" + std::to_string(grid.columns) +
-                                                   " x " + std::to_string(grid.rows) + " pixels)");
+        throw PlanningError(Kind::InvalidGrid, "the land-cover grid is empty (" +
+                                                   std::to_string(grid.columns) + " x " +
+                                                   std::to_string(grid.rows) + " pixels)");
     if (!(grid.pixelWidth > 0.0) || !(grid.pixelHeight > 0.0) || !std::isfinite(grid.pixelWidth) ||
         !std::isfinite(grid.pixelHeight))
         throw PlanningError(Kind::InvalidGrid, "pixel size must be a positive number of metres, got " +
                                                    describePoint(grid.pixelWidth, grid.pixelHeight));
     if (!std::isfinite(grid.originX) || !std::isfinite(grid.originY))
-        throw PlanningError(Kind::InvalidGrid, "grid origin is not a number: " +
-                                                   describePoint(grid.originX, grid.originY));
+        throw PlanningError(Kind::InvalidGrid,
+                            "grid origin is not a number: " + describePoint(grid.originX, grid.originY));
     const auto expected = static_cast<std::size_t>(grid.columns) * static_cast<std::size_t>(grid.rows);
     if (grid.values.size() != expected)
         throw PlanningError(Kind::InvalidGrid, "grid holds " + std::to_string(grid.values.size()) +
@@ -68,7 +69,9 @@ std::string describeMetres(double metres) {
 }
 
 // Length of the overlap of [a0, a1) and [b0, b1).
-double overlap(double a0, double a1, double b0, double b1) { return std::max(0.0, std::min(a1, b1) - std::max(a0, b0)); }
+double overlap(double a0, double a1, double b0, double b1) {
+    return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
+}
 
 // Index range [first, last) of samples whose centres lie in [low, high) along one axis.
 std::pair<int, int> sampleRange(double low, double high, double origin, double step, int count) {
@@ -88,15 +91,18 @@ std::vector<RoundedFieldOfView> roundFieldsOfView(const ClassTable& classes,
             fovMin = std::min(fovMin, landCoverClass->fieldOfViewMetres);
     }
     if (!std::isfinite(fovMin))
-        throw PlanningError(Kind::NoPassableCell, "no passable land cover in the task area: every class present is "
-                                                  "an obstacle (speed 0 or not passable)");
+        throw PlanningError(Kind::NoPassableCell,
+                            "no passable land cover in the task area: every class present is "
+                            "an obstacle (speed 0 or not passable)");
     std::vector<RoundedFieldOfView> rounded;
     int deepest = 0;
     for (auto value : presentValues) {
         const auto* landCoverClass = classes.find(value);
-        if (landCoverClass == nullptr || !landCoverClass->isTraversable()) continue;
+        if (landCoverClass == nullptr || !landCoverClass->isTraversable())
+            continue;
         // Round down to fovMin * 2^k; the small epsilon keeps exact powers of two from rounding a step lower.
-        const int k = static_cast<int>(std::floor(std::log2(landCoverClass->fieldOfViewMetres / fovMin) + 1e-9));
+        const int k =
+            static_cast<int>(std::floor(std::log2(landCoverClass->fieldOfViewMetres / fovMin) + 1e-9));
         rounded.push_back({value, landCoverClass->fieldOfViewMetres, fovMin * std::ldexp(1.0, k), k});
         deepest = std::max(deepest, k);
     }
@@ -108,14 +114,17 @@ std::vector<RoundedFieldOfView> roundFieldsOfView(const ClassTable& classes,
     return rounded;
 }
 
-QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes, const PlannerSettings& settings,
-                                const ProgressReporter& progress) const {
+QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes,
+                                const PlannerSettings& settings, const ProgressReporter& progress) const {
     validateGrid(grid);
-    if (auto problem = classes.validate()) throw PlanningError(Kind::InvalidClassTable, *problem);
-    if (!std::isfinite(settings.purityTolerance) || settings.purityTolerance < 0.0 || settings.purityTolerance >= 1.0)
+    if (auto problem = classes.validate())
+        throw PlanningError(Kind::InvalidClassTable, *problem);
+    if (!std::isfinite(settings.purityTolerance) || settings.purityTolerance < 0.0 ||
+        settings.purityTolerance >= 1.0)
         throw PlanningError(Kind::InvalidParameter, "purity tolerance must be in [0, 1), got " +
                                                         std::to_string(settings.purityTolerance));
-    if (!std::isfinite(settings.blockedThreshold) || settings.blockedThreshold < 0.0 || settings.blockedThreshold > 1.0)
+    if (!std::isfinite(settings.blockedThreshold) || settings.blockedThreshold < 0.0 ||
+        settings.blockedThreshold > 1.0)
         throw PlanningError(Kind::InvalidParameter, "blocked threshold must be in [0, 1], got " +
                                                         std::to_string(settings.blockedThreshold));
     progress.report("quadtree", 0.0);
@@ -150,9 +159,11 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
                                                 ") has no row in the class table");
                     }
                     if (dense.size() >= obstacleCode)
-                        throw PlanningError(Kind::InvalidClassTable, "more than 65533 distinct classes in the raster");
+                        throw PlanningError(Kind::InvalidClassTable,
+                                            "more than 65533 distinct classes in the raster");
                     found = codeOfValue.emplace(value, static_cast<std::uint16_t>(dense.size())).first;
-                    dense.push_back({value, landCoverClass->isTraversable(), landCoverClass->speedMetresPerSecond, 0});
+                    dense.push_back(
+                        {value, landCoverClass->isTraversable(), landCoverClass->speedMetresPerSecond, 0});
                 }
                 lastValue = value;
                 lastCode = found->second;
@@ -164,7 +175,8 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     progress.throwIfCancelled();
 
     std::vector<std::int32_t> presentValues;
-    for (const auto& entry : dense) presentValues.push_back(entry.value);
+    for (const auto& entry : dense)
+        presentValues.push_back(entry.value);
     QuadTree tree;
     tree.roundedFieldsOfView = roundFieldsOfView(classes, presentValues);
     int levels = 1;
@@ -176,7 +188,8 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     }
     if (levels > 20)
         throw PlanningError(Kind::InvalidClassTable, "fields of view differ by more than a factor 2^19; "
-                                                     "the quadtree would need " + std::to_string(levels) + " levels");
+                                                     "the quadtree would need " +
+                                                         std::to_string(levels) + " levels");
     tree.levels = levels;
     tree.fovMin = fovMin;
     const double bottomSize = 2.0 * fovMin;
@@ -190,10 +203,11 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     // Beyond this the plan would take minutes and gigabytes: say so rather than appear to hang.
     constexpr std::int64_t bottomCellBudget = 8'000'000;
     if (bottomColumns * bottomRows > bottomCellBudget)
-        throw PlanningError(Kind::InvalidParameter,
-                            "the smallest field of view (" + describeMetres(fovMin) + " m) makes " +
-                                std::to_string(bottomColumns) + " x " + std::to_string(bottomRows) +
-                                " bottom cells (more than 8 million): raise the field of view of the classes or crop the raster");
+        throw PlanningError(Kind::InvalidParameter, "the smallest field of view (" + describeMetres(fovMin) +
+                                                        " m) makes " + std::to_string(bottomColumns) + " x " +
+                                                        std::to_string(bottomRows) +
+                                                        " bottom cells (more than 8 million): raise the "
+                                                        "field of view of the classes or crop the raster");
 
     // Samples: pixels when they fit in a bottom cell, else the pixel under each bottom cell's centre.
     SampleGrid samples;
@@ -216,13 +230,16 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
         for (int row = 0; row < samples.rows; ++row) {
             const double y = tree.originY - (row + 0.5) * bottomSize;
             const auto pixelRow = static_cast<int>(std::floor((grid.originY - y) / grid.pixelHeight));
-            if (pixelRow < 0 || pixelRow >= grid.rows) continue;
+            if (pixelRow < 0 || pixelRow >= grid.rows)
+                continue;
             for (int column = 0; column < samples.columns; ++column) {
                 const double x = tree.originX + (column + 0.5) * bottomSize;
                 const auto pixelColumn = static_cast<int>(std::floor((x - grid.originX) / grid.pixelWidth));
-                if (pixelColumn < 0 || pixelColumn >= grid.columns) continue;
+                if (pixelColumn < 0 || pixelColumn >= grid.columns)
+                    continue;
                 samples.codes[static_cast<std::size_t>(row) * static_cast<std::size_t>(samples.columns) +
-                              static_cast<std::size_t>(column)] = pixelCodes[grid.index(pixelColumn, pixelRow)];
+                              static_cast<std::size_t>(column)] =
+                    pixelCodes[grid.index(pixelColumn, pixelRow)];
             }
         }
     }
@@ -232,7 +249,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
 
     // Count samples per bottom cell by bucket: the level a passable sample needs (1..l), obstacle, outside.
     const int buckets = levels + 2;
-    const int obstacleBucket = levels;    // zero-based: levels 1..l are buckets 0..l-1
+    const int obstacleBucket = levels; // zero-based: levels 1..l are buckets 0..l-1
     const int outsideBucket = levels + 1;
     std::vector<int> bucketOfCode(dense.size());
     for (std::size_t code = 0; code < dense.size(); ++code)
@@ -241,8 +258,8 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     auto levelColumns = [&](int level) { return static_cast<std::size_t>(tree.topColumns) << (level - 1); };
     auto levelRows = [&](int level) { return static_cast<std::size_t>(tree.topRows) << (level - 1); };
     for (int level = 1; level <= levels; ++level)
-        counts[static_cast<std::size_t>(level - 1)].assign(levelColumns(level) * levelRows(level) *
-                                                               static_cast<std::size_t>(buckets), 0U);
+        counts[static_cast<std::size_t>(level - 1)].assign(
+            levelColumns(level) * levelRows(level) * static_cast<std::size_t>(buckets), 0U);
     {
         auto& bottom = counts[static_cast<std::size_t>(levels - 1)];
         const std::size_t columnsAtBottom = levelColumns(levels);
@@ -256,13 +273,15 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
             const double y = samples.originY - (row + 0.5) * samples.sampleHeight;
             const auto cellRow = static_cast<std::size_t>(std::floor((tree.originY - y) / bottomSize));
             const std::uint16_t* rowCodes =
-                samples.codes.data() + static_cast<std::size_t>(row) * static_cast<std::size_t>(samples.columns);
+                samples.codes.data() +
+                static_cast<std::size_t>(row) * static_cast<std::size_t>(samples.columns);
             for (int column = 0; column < samples.columns; ++column) {
                 const std::uint16_t code = rowCodes[column];
-                const int bucket = code == outsideCode ? outsideBucket
+                const int bucket = code == outsideCode    ? outsideBucket
                                    : code == obstacleCode ? obstacleBucket
                                                           : bucketOfCode[code];
-                const std::size_t cell = cellRow * columnsAtBottom + cellColumnOfSample[static_cast<std::size_t>(column)];
+                const std::size_t cell =
+                    cellRow * columnsAtBottom + cellColumnOfSample[static_cast<std::size_t>(column)];
                 ++bottom[cell * static_cast<std::size_t>(buckets) + static_cast<std::size_t>(bucket)];
             }
         }
@@ -273,12 +292,15 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
             const std::size_t childColumns = levelColumns(level + 1);
             for (std::size_t row = 0; row < levelRows(level); ++row) {
                 for (std::size_t column = 0; column < parentColumns; ++column) {
-                    std::uint32_t* target = &parent[(row * parentColumns + column) * static_cast<std::size_t>(buckets)];
+                    std::uint32_t* target =
+                        &parent[(row * parentColumns + column) * static_cast<std::size_t>(buckets)];
                     for (std::size_t dy = 0; dy < 2; ++dy) {
                         for (std::size_t dx = 0; dx < 2; ++dx) {
                             const std::uint32_t* source =
-                                &child[((2 * row + dy) * childColumns + 2 * column + dx) * static_cast<std::size_t>(buckets)];
-                            for (int b = 0; b < buckets; ++b) target[b] += source[b];
+                                &child[((2 * row + dy) * childColumns + 2 * column + dx) *
+                                       static_cast<std::size_t>(buckets)];
+                            for (int b = 0; b < buckets; ++b)
+                                target[b] += source[b];
                         }
                     }
                 }
@@ -288,7 +310,8 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     progress.report("quadtree", 0.5);
     progress.throwIfCancelled();
 
-    // Top-down: split a cell while samples needing a deeper level, obstacles or outside area exceed the tolerance.
+    // Top-down: split a cell while samples needing a deeper level, obstacles or outside area exceed the
+    // tolerance.
     const double rasterMaxX = grid.maxX();
     const double rasterMinY = grid.minY();
     const double tolerance = settings.purityTolerance;
@@ -306,34 +329,43 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
         }
     }
     std::vector<int> pending;
-    for (int index = static_cast<int>(tree.cells.size()) - 1; index >= 0; --index) pending.push_back(index);
+    for (int index = static_cast<int>(tree.cells.size()) - 1; index >= 0; --index)
+        pending.push_back(index);
     while (!pending.empty()) {
         const int index = pending.back();
         pending.pop_back();
         QuadCell cell = tree.cells[static_cast<std::size_t>(index)];
         const std::uint32_t* bucketCounts =
             &counts[static_cast<std::size_t>(cell.level - 1)]
-                   [(static_cast<std::size_t>(cell.row) * levelColumns(cell.level) + static_cast<std::size_t>(cell.column)) *
+                   [(static_cast<std::size_t>(cell.row) * levelColumns(cell.level) +
+                     static_cast<std::size_t>(cell.column)) *
                     static_cast<std::size_t>(buckets)];
         std::uint64_t total = 0;
         std::uint64_t passable = 0;
         std::uint64_t deeper = 0;
         for (int b = 0; b < buckets; ++b) {
             total += bucketCounts[b];
-            if (b < levels) passable += bucketCounts[b];
-            if (b >= cell.level) deeper += bucketCounts[b]; // bucket b holds level b + 1
+            if (b < levels)
+                passable += bucketCounts[b];
+            if (b >= cell.level)
+                deeper += bucketCounts[b]; // bucket b holds level b + 1
         }
         const double insideFraction = overlap(cell.minX, cell.maxX(), grid.originX, rasterMaxX) *
-                                      overlap(cell.minY, cell.maxY(), rasterMinY, grid.originY) / (cell.size * cell.size);
-        const double passableFraction = total == 0 ? 0.0 : insideFraction * static_cast<double>(passable) / static_cast<double>(total);
+                                      overlap(cell.minY, cell.maxY(), rasterMinY, grid.originY) /
+                                      (cell.size * cell.size);
+        const double passableFraction =
+            total == 0 ? 0.0 : insideFraction * static_cast<double>(passable) / static_cast<double>(total);
         cell.obstacleFraction = 1.0 - passableFraction;
         cell.passableAreaSquareMetres = static_cast<double>(passable) * sampleArea;
-        const double deeperFraction =
-            total == 0 ? 1.0 : (1.0 - insideFraction) + insideFraction * static_cast<double>(deeper) / static_cast<double>(total);
+        const double deeperFraction = total == 0 ? 1.0
+                                                 : (1.0 - insideFraction) + insideFraction *
+                                                                                static_cast<double>(deeper) /
+                                                                                static_cast<double>(total);
         if (passable == 0) {
             cell.state = CellState::Blocked;
         } else if (cell.level == levels) {
-            cell.state = cell.obstacleFraction > settings.blockedThreshold ? CellState::Blocked : CellState::Active;
+            cell.state =
+                cell.obstacleFraction > settings.blockedThreshold ? CellState::Blocked : CellState::Active;
         } else if (deeperFraction <= tolerance + 1e-12) {
             cell.state = CellState::Active;
         } else {
@@ -354,7 +386,8 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
                 cell.children[static_cast<std::size_t>(child)] = static_cast<int>(tree.cells.size());
                 tree.cells.push_back(childCell);
             }
-            for (int child = 3; child >= 0; --child) pending.push_back(cell.children[static_cast<std::size_t>(child)]);
+            for (int child = 3; child >= 0; --child)
+                pending.push_back(cell.children[static_cast<std::size_t>(child)]);
         }
         if (cell.state == CellState::Active) {
             cell.activeIndex = static_cast<int>(tree.activeCells.size());
@@ -365,33 +398,40 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     progress.report("quadtree", 0.8);
     progress.throwIfCancelled();
 
-    // Land cover of each active cell: its majority passable class; speed: harmonic mean over passable samples.
+    // Land cover of each active cell: its majority passable class; speed: harmonic mean over passable
+    // samples.
     std::vector<std::uint32_t> classCounts(dense.size(), 0U);
     std::vector<std::uint16_t> touched;
     double passableTotal = 0.0;
     for (const auto& cell : tree.cells)
-        if (cell.state != CellState::Auxiliary) passableTotal += cell.passableAreaSquareMetres;
+        if (cell.state != CellState::Auxiliary)
+            passableTotal += cell.passableAreaSquareMetres;
     tree.passableAreaSquareMetres = passableTotal;
     for (int cellIndex : tree.activeCells) {
         QuadCell& cell = tree.cells[static_cast<std::size_t>(cellIndex)];
         const auto [firstColumn, lastColumn] =
             sampleRange(cell.minX, cell.maxX(), samples.originX, samples.sampleWidth, samples.columns);
         const auto [firstRow, lastRow] =
-            sampleRange(samples.originY - cell.maxY(), samples.originY - cell.minY, 0.0, samples.sampleHeight, samples.rows);
+            sampleRange(samples.originY - cell.maxY(), samples.originY - cell.minY, 0.0, samples.sampleHeight,
+                        samples.rows);
         touched.clear();
         for (int row = firstRow; row < lastRow; ++row) {
             const std::uint16_t* rowCodes =
-                samples.codes.data() + static_cast<std::size_t>(row) * static_cast<std::size_t>(samples.columns);
+                samples.codes.data() +
+                static_cast<std::size_t>(row) * static_cast<std::size_t>(samples.columns);
             for (int column = firstColumn; column < lastColumn; ++column) {
                 const std::uint16_t code = rowCodes[column];
-                if (code >= obstacleCode) continue;
-                if (classCounts[code]++ == 0) touched.push_back(code);
+                if (code >= obstacleCode)
+                    continue;
+                if (classCounts[code]++ == 0)
+                    touched.push_back(code);
             }
         }
         std::uint32_t best = 0;
         std::uint32_t passable = 0;
         double inverseSpeedSum = 0.0;
-        std::sort(touched.begin(), touched.end(), [&](std::uint16_t a, std::uint16_t b) { return dense[a].value < dense[b].value; });
+        std::sort(touched.begin(), touched.end(),
+                  [&](std::uint16_t a, std::uint16_t b) { return dense[a].value < dense[b].value; });
         for (auto code : touched) {
             const std::uint32_t count = classCounts[code];
             if (count > best) {

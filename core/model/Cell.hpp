@@ -11,7 +11,7 @@ namespace mcpp {
 // The four sub-cells of a cell in the counter-clockwise order a coverage walk passes them.
 enum class SubCell : std::uint8_t { NorthWest = 0, SouthWest = 1, SouthEast = 2, NorthEast = 3 };
 inline constexpr std::array<SubCell, 4> subCellsCounterClockwise{SubCell::NorthWest, SubCell::SouthWest,
-                                                                SubCell::SouthEast, SubCell::NorthEast};
+                                                                 SubCell::SouthEast, SubCell::NorthEast};
 inline constexpr std::uint8_t allSubCells = 0b1111;
 
 // One square of a planning decomposition: a quadtree leaf, or a cell of a uniform grid. A robot covers it
@@ -24,10 +24,10 @@ struct Cell {
     int level = 1; // quadtree level, 1 = top; 1 for a single-level grid
     double minX = 0.0;
     double minY = 0.0;
-    double size = 0.0; // side in metres
-    std::int32_t classValue = 0;            // majority passable land cover
-    double speedMetresPerSecond = 0.0;      // harmonic mean over its passable pixels
-    double passableAreaSquareMetres = 0.0;  // passable pixels inside its free sub-cells
+    double size = 0.0;                       // side in metres
+    std::int32_t classValue = 0;             // majority passable land cover
+    double speedMetresPerSecond = 0.0;       // harmonic mean over its passable pixels
+    double passableAreaSquareMetres = 0.0;   // passable pixels inside its free sub-cells
     std::uint8_t freeSubCells = allSubCells; // bit i: sub-cell i (SubCell order) may be entered
 
     [[nodiscard]] double maxX() const { return minX + size; }
@@ -42,10 +42,14 @@ struct Cell {
     [[nodiscard]] MapPoint subCellCentre(SubCell subCell) const {
         const double quarter = size / 4.0;
         switch (subCell) {
-        case SubCell::NorthWest: return {minX + quarter, maxY() - quarter};
-        case SubCell::SouthWest: return {minX + quarter, minY + quarter};
-        case SubCell::SouthEast: return {maxX() - quarter, minY + quarter};
-        case SubCell::NorthEast: break;
+        case SubCell::NorthWest:
+            return {minX + quarter, maxY() - quarter};
+        case SubCell::SouthWest:
+            return {minX + quarter, minY + quarter};
+        case SubCell::SouthEast:
+            return {maxX() - quarter, minY + quarter};
+        case SubCell::NorthEast:
+            break;
         }
         return {maxX() - quarter, maxY() - quarter};
     }
@@ -53,7 +57,8 @@ struct Cell {
     [[nodiscard]] SubCell subCellAt(MapPoint point) const {
         const bool east = point.x >= centreX();
         const bool north = point.y >= centreY();
-        if (north) return east ? SubCell::NorthEast : SubCell::NorthWest;
+        if (north)
+            return east ? SubCell::NorthEast : SubCell::NorthWest;
         return east ? SubCell::SouthEast : SubCell::SouthWest;
     }
     // Seconds to cover it (spec 4): a coverage walk passes each free sub-cell once, a quarter of 2 x size.

@@ -18,7 +18,8 @@ CellGraph::CellGraph(GridFrame frame, std::vector<Cell> cells, NeighbourTopology
     std::map<int, std::vector<std::pair<std::uint64_t, int>>> bySpan;
     for (std::size_t id = 0; id < cells_.size(); ++id) {
         const Cell& cell = cells_[id];
-        bySpan[cell.span].emplace_back(placementKey(cell.row / cell.span, cell.column / cell.span), static_cast<int>(id));
+        bySpan[cell.span].emplace_back(placementKey(cell.row / cell.span, cell.column / cell.span),
+                                       static_cast<int>(id));
     }
     for (auto& [span, keys] : bySpan) {
         std::sort(keys.begin(), keys.end());
@@ -27,14 +28,18 @@ CellGraph::CellGraph(GridFrame frame, std::vector<Cell> cells, NeighbourTopology
 }
 
 int CellGraph::cellAt(MapPoint point) const {
-    if (!std::isfinite(point.x) || !std::isfinite(point.y)) return -1;
+    if (!std::isfinite(point.x) || !std::isfinite(point.y))
+        return -1;
     const double column = std::floor((point.x - frame_.originX) / frame_.bottomCellSize);
     const double row = std::floor((frame_.originY - point.y) / frame_.bottomCellSize);
-    if (column < 0 || row < 0 || column >= frame_.columns || row >= frame_.rows) return -1;
+    if (column < 0 || row < 0 || column >= frame_.columns || row >= frame_.rows)
+        return -1;
     for (const auto& [span, keys] : locator_) {
-        const std::uint64_t key = placementKey(static_cast<long long>(row) / span, static_cast<long long>(column) / span);
+        const std::uint64_t key =
+            placementKey(static_cast<long long>(row) / span, static_cast<long long>(column) / span);
         const auto found = std::lower_bound(keys.begin(), keys.end(), std::make_pair(key, -1));
-        if (found != keys.end() && found->first == key) return found->second;
+        if (found != keys.end() && found->first == key)
+            return found->second;
     }
     return -1;
 }

@@ -16,7 +16,7 @@ namespace mcpp {
 // Cells are squares on the frame's bottom grid, each aligned to a multiple of its own span; they never
 // overlap. Two cells are neighbours when they share a border of positive length.
 class CellGraph {
-public:
+  public:
     CellGraph() = default;
     CellGraph(GridFrame frame, std::vector<Cell> cells, NeighbourTopology adjacency);
 
@@ -35,7 +35,7 @@ public:
     std::vector<RoundedFieldOfView> fieldsOfView;
     double passableAreaSquareMetres = 0.0; // every passable pixel, in a cell or not
 
-private:
+  private:
     GridFrame frame_;
     std::vector<Cell> cells_;
     NeighbourTopology adjacency_;

@@ -19,17 +19,21 @@ struct PixelIndex {
 struct ClassGrid {
     int columns = 0;
     int rows = 0;
-    double originX = 0.0;     // x of the western edge of column 0
-    double originY = 0.0;     // y of the northern edge of row 0
-    double pixelWidth = 1.0;  // metres, > 0
-    double pixelHeight = 1.0; // metres, > 0
+    double originX = 0.0;             // x of the western edge of column 0
+    double originY = 0.0;             // y of the northern edge of row 0
+    double pixelWidth = 1.0;          // metres, > 0
+    double pixelHeight = 1.0;         // metres, > 0
     std::vector<std::int32_t> values; // row-major, columns * rows
-    std::vector<std::uint8_t> outside; // 1 where the pixel is nodata or not part of the task area; may be empty
+    std::vector<std::uint8_t>
+        outside; // 1 where the pixel is nodata or not part of the task area; may be empty
 
     [[nodiscard]] std::size_t index(int column, int row) const {
-        return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(column);
+        return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+               static_cast<std::size_t>(column);
     }
-    [[nodiscard]] bool isOutside(int column, int row) const { return !outside.empty() && outside[index(column, row)] != 0; }
+    [[nodiscard]] bool isOutside(int column, int row) const {
+        return !outside.empty() && outside[index(column, row)] != 0;
+    }
     [[nodiscard]] std::int32_t valueAt(int column, int row) const { return values[index(column, row)]; }
     [[nodiscard]] double width() const { return columns * pixelWidth; }
     [[nodiscard]] double height() const { return rows * pixelHeight; }
@@ -39,7 +43,8 @@ struct ClassGrid {
     [[nodiscard]] std::optional<PixelIndex> pixelAt(MapPoint point) const {
         const double column = std::floor((point.x - originX) / pixelWidth);
         const double row = std::floor((originY - point.y) / pixelHeight);
-        if (!(column >= 0.0 && row >= 0.0 && column < columns && row < rows)) return std::nullopt;
+        if (!(column >= 0.0 && row >= 0.0 && column < columns && row < rows))
+            return std::nullopt;
         return PixelIndex{static_cast<int>(column), static_cast<int>(row)};
     }
 };

@@ -8,7 +8,8 @@
 namespace mcpp {
 
 ClassTable::ClassTable(std::vector<LandCoverClass> classes) {
-    for (auto& landCoverClass : classes) set(landCoverClass);
+    for (auto& landCoverClass : classes)
+        set(landCoverClass);
 }
 
 void ClassTable::set(const LandCoverClass& landCoverClass) {
@@ -29,7 +30,8 @@ bool ClassTable::remove(std::int32_t value) {
 
 const LandCoverClass* ClassTable::find(std::int32_t value) const {
     for (const auto& landCoverClass : classes_) {
-        if (landCoverClass.value == value) return &landCoverClass;
+        if (landCoverClass.value == value)
+            return &landCoverClass;
     }
     return nullptr;
 }
@@ -39,11 +41,14 @@ std::optional<std::string> ClassTable::validate() const {
     for (const auto& c : classes_) {
         std::ostringstream where;
         where << "class " << c.value << (c.name.empty() ? "" : " (" + c.name + ")");
-        if (!seen.insert(c.value).second) return where.str() + ": value appears twice in the class table";
-        if (!std::isfinite(c.speedMetresPerSecond)) return where.str() + ": speed is not a number";
+        if (!seen.insert(c.value).second)
+            return where.str() + ": value appears twice in the class table";
+        if (!std::isfinite(c.speedMetresPerSecond))
+            return where.str() + ": speed is not a number";
         if (c.speedMetresPerSecond < 0.0)
             return where.str() + ": speed " + std::to_string(c.speedMetresPerSecond) + " m/s is negative";
-        if (!std::isfinite(c.fieldOfViewMetres)) return where.str() + ": field of view is not a number";
+        if (!std::isfinite(c.fieldOfViewMetres))
+            return where.str() + ": field of view is not a number";
         if (c.isTraversable() && c.fieldOfViewMetres <= 0.0)
             return where.str() + ": field of view " + std::to_string(c.fieldOfViewMetres) +
                    " m must be greater than zero for a passable class";

@@ -10,7 +10,7 @@ namespace mcpp {
 
 // The classes of one map, kept in insertion order and looked up by raster value.
 class ClassTable {
-public:
+  public:
     ClassTable() = default;
     explicit ClassTable(std::vector<LandCoverClass> classes);
 
@@ -29,7 +29,7 @@ public:
 
     friend bool operator==(const ClassTable&, const ClassTable&) = default;
 
-private:
+  private:
     std::vector<LandCoverClass> classes_;
 };
 

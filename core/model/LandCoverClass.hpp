@@ -7,7 +7,7 @@ namespace mcpp {
 
 // How one land-cover class affects a robot: how fast it moves there and how wide a swath it senses.
 struct LandCoverClass {
-    std::int32_t value = 0;           // raster value of the class
+    std::int32_t value = 0; // raster value of the class
     std::string name;
     std::uint32_t colorRgb = 0x808080; // 0xRRGGBB
     double speedMetresPerSecond = 1.0;

@@ -7,7 +7,7 @@ namespace mcpp {
 
 // Which active cells share a border of positive length, as compressed adjacency lists over active indices.
 class NeighbourTopology {
-public:
+  public:
     NeighbourTopology() = default;
     NeighbourTopology(std::vector<int> offsets, std::vector<int> neighbours)
         : offsets_(std::move(offsets)), neighbours_(std::move(neighbours)) {}
@@ -21,7 +21,7 @@ public:
     [[nodiscard]] std::size_t pairCount() const { return neighbours_.size() / 2; }
     [[nodiscard]] bool areNeighbours(int a, int b) const;
 
-private:
+  private:
     std::vector<int> offsets_;
     std::vector<int> neighbours_;
 };

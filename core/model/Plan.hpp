@@ -27,7 +27,8 @@ struct Plan {
     [[nodiscard]] std::vector<std::string> warnings() const {
         std::vector<std::string> messages;
         for (const PlanIssue& issue : issues)
-            if (issue.severity == IssueSeverity::Warning) messages.push_back(issue.message);
+            if (issue.severity == IssueSeverity::Warning)
+                messages.push_back(issue.message);
         return messages;
     }
 };

@@ -24,9 +24,9 @@ struct PlanMetrics {
     double ratio = 0.0;             // makespan / lower bound
     double passableAreaSquareMetres = 0.0;
     double coveredAreaSquareMetres = 0.0;
-    double coveredFraction = 0.0;   // of the passable area
+    double coveredFraction = 0.0; // of the passable area
     double unreachableAreaSquareMetres = 0.0;
-    double repeatedFraction = 0.0;  // path length beyond one pass over every sub-cell, relative to it
+    double repeatedFraction = 0.0; // path length beyond one pass over every sub-cell, relative to it
     std::vector<std::pair<std::string, double>> stageMilliseconds;
 };
 

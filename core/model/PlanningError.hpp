@@ -9,7 +9,7 @@ namespace mcpp {
 // or parameter. Errors about one robot's start or one parameter also carry which, and the detail without
 // that subject, so a caller can name it in its own terms (a batch flag, a field of a mission file).
 class PlanningError : public std::runtime_error {
-public:
+  public:
     enum class Kind {
         InvalidParameter,
         InvalidClassTable,
@@ -22,7 +22,8 @@ public:
         Cancelled
     };
 
-    PlanningError(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind), detail_(message) {}
+    PlanningError(Kind kind, const std::string& message)
+        : std::runtime_error(message), kind_(kind), detail_(message) {}
 
     // "robot 2 start " + detail, e.g. detail "(10, 20) is outside the map".
     static PlanningError aboutStart(Kind kind, int robot, const std::string& detail) {
@@ -38,11 +39,11 @@ public:
     }
 
     [[nodiscard]] Kind kind() const { return kind_; }
-    [[nodiscard]] int robot() const { return robot_; }                       // -1 when about no one robot
+    [[nodiscard]] int robot() const { return robot_; }                        // -1 when about no one robot
     [[nodiscard]] const std::string& parameter() const { return parameter_; } // empty when about no parameter
     [[nodiscard]] const std::string& detail() const { return detail_; }
 
-private:
+  private:
     PlanningError(Kind kind, const std::string& message, std::string detail)
         : std::runtime_error(message), kind_(kind), detail_(std::move(detail)) {}
 

@@ -5,7 +5,8 @@
 namespace mcpp {
 
 void ProgressReporter::throwIfCancelled() const {
-    if (cancelRequested()) throw PlanningError(PlanningError::Kind::Cancelled, "planning was cancelled");
+    if (cancelRequested())
+        throw PlanningError(PlanningError::Kind::Cancelled, "planning was cancelled");
 }
 
 } // namespace mcpp

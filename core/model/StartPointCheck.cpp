@@ -25,15 +25,16 @@ std::string describePoint(MapPoint point) {
     return text.str();
 }
 
-std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const ClassTable& classes, MapPoint point) {
+std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const ClassTable& classes,
+                                                   MapPoint point) {
     if (!std::isfinite(point.x) || !std::isfinite(point.y))
         return StartPointProblem{Kind::InvalidParameter, describePoint(point) + " is not a number"};
     const auto pixel = grid.pixelAt(point);
     if (!pixel)
-        return StartPointProblem{Kind::StartOutsideArea, describePoint(point) + " is outside the map (x " +
-                                                             fixed(grid.originX) + " to " + fixed(grid.maxX()) +
-                                                             ", y " + fixed(grid.minY()) + " to " +
-                                                             fixed(grid.originY) + ")"};
+        return StartPointProblem{Kind::StartOutsideArea,
+                                 describePoint(point) + " is outside the map (x " + fixed(grid.originX) +
+                                     " to " + fixed(grid.maxX()) + ", y " + fixed(grid.minY()) + " to " +
+                                     fixed(grid.originY) + ")"};
     if (grid.isOutside(pixel->column, pixel->row))
         return StartPointProblem{Kind::StartOutsideArea,
                                  describePoint(point) + " is on a nodata pixel, outside the task area"};

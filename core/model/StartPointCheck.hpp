@@ -18,8 +18,8 @@ struct StartPointProblem {
 
 // The one rule every caller (planners, batch mode, the window) applies to a start point: it must be a number,
 // on the raster, on a pixel inside the task area, of a class the table has and robots can cross.
-[[nodiscard]] std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const ClassTable& classes,
-                                                                 MapPoint point);
+[[nodiscard]] std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid,
+                                                                 const ClassTable& classes, MapPoint point);
 // "(512300.25, 4120400.5)" with the precision the messages use.
 [[nodiscard]] std::string describePoint(MapPoint point);
 

@@ -13,8 +13,9 @@ PlannerDescription MlctPlanner::description() const {
     PlannerDescription description;
     description.name = plannerName;
     description.label = "MCPP-MLCT";
-    description.summary = "quadtree cells sized by each land cover's field of view, balanced regions grown by "
-                          "azimuth trend, improved spanning-tree coverage";
+    description.summary =
+        "quadtree cells sized by each land cover's field of view, balanced regions grown by "
+        "azimuth trend, improved spanning-tree coverage";
     return description;
 }
 
@@ -34,7 +35,8 @@ void MlctPlanner::run(PlanningRun& run) const {
         return AzimuthTrendAllocator{}.allocate(plan.cells, startCells, problem.settings, progress);
     });
     plan.paths = run.stage("paths", [&] {
-        return SpanningTreeCoverage{}.plan(plan.cells, plan.regions, run.starts(), problem.settings, progress);
+        return SpanningTreeCoverage{}.plan(plan.cells, plan.regions, run.starts(), problem.settings,
+                                           progress);
     });
 }
 

@@ -7,12 +7,12 @@ namespace mcpp {
 // MCPP-MLCT (Huang et al., IEEE Access 2020): hierarchical quadtree -> neighbour topology -> azimuth-trend
 // allocation -> improved STC.
 class MlctPlanner final : public Planner {
-public:
+  public:
     static constexpr const char* plannerName = "mcpp-mlct";
 
     [[nodiscard]] PlannerDescription description() const override;
 
-protected:
+  protected:
     void run(PlanningRun& run) const override;
 };
 

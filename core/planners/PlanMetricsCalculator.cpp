@@ -45,12 +45,15 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         metrics.makespanSeconds = std::max(metrics.makespanSeconds, robotMetrics.timeSeconds);
     }
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : totalCost / static_cast<double>(robots);
-    metrics.ratio = metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;
+    metrics.ratio =
+        metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;
     metrics.passableAreaSquareMetres = graph.passableAreaSquareMetres;
     metrics.coveredAreaSquareMetres = covered;
-    metrics.coveredFraction = graph.passableAreaSquareMetres > 0.0 ? covered / graph.passableAreaSquareMetres : 0.0;
+    metrics.coveredFraction =
+        graph.passableAreaSquareMetres > 0.0 ? covered / graph.passableAreaSquareMetres : 0.0;
     metrics.unreachableAreaSquareMetres = unreachable;
-    metrics.repeatedFraction = subCells == 0 ? 0.0 : static_cast<double>(repeats) / static_cast<double>(subCells);
+    metrics.repeatedFraction =
+        subCells == 0 ? 0.0 : static_cast<double>(repeats) / static_cast<double>(subCells);
 }
 
 } // namespace mcpp

@@ -7,7 +7,7 @@ namespace mcpp {
 // Fills plan.metrics and the regions' costs from the cell graph, the regions and the measured paths
 // (spec section 6). Stage timings are left as they are.
 class PlanMetricsCalculator {
-public:
+  public:
     void compute(Plan& plan) const;
 };
 

@@ -17,24 +17,28 @@ using Kind = PlanningError::Kind;
 std::string multiRobotPlanners() {
     std::string names;
     for (const PlannerDescription& planner : plannerDescriptions())
-        if (!planner.singleRobot) names += (names.empty() ? "" : ", ") + planner.name;
+        if (!planner.singleRobot)
+            names += (names.empty() ? "" : ", ") + planner.name;
     return names;
 }
 
 // Bad starts are wrong whatever the cells: say so before building them.
 void checkStarts(const PlannerDescription& planner, const PlanningProblem& problem) {
-    if (problem.starts.empty()) throw PlanningError(Kind::InvalidParameter, "no robots: give at least one start point");
+    if (problem.starts.empty())
+        throw PlanningError(Kind::InvalidParameter, "no robots: give at least one start point");
     if (planner.singleRobot && problem.starts.size() > 1)
-        throw PlanningError(Kind::InvalidParameter, planner.name + " plans for one robot, but " +
-                                                        std::to_string(problem.starts.size()) +
-                                                        " starts were given; planners that take several robots: " +
-                                                        multiRobotPlanners());
+        throw PlanningError(
+            Kind::InvalidParameter,
+            planner.name + " plans for one robot, but " + std::to_string(problem.starts.size()) +
+                " starts were given; planners that take several robots: " + multiRobotPlanners());
     for (std::size_t robot = 0; robot < problem.starts.size(); ++robot) {
         const auto problemAtStart = startPointProblem(problem.grid, problem.classes, problem.starts[robot]);
-        if (!problemAtStart) continue;
+        if (!problemAtStart)
+            continue;
         const bool snappable = problemAtStart->kind != Kind::InvalidParameter;
         if (!snappable || !problem.settings.snapStartsToFreeCells)
-            throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot), problemAtStart->detail);
+            throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot),
+                                            problemAtStart->detail);
     }
 }
 
@@ -55,7 +59,8 @@ Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progr
     PlanningRun planningRun(problem, progress, plan);
     run(planningRun);
     planningRun.stage("metrics", [&] {
-        for (CoveragePath& path : plan.paths) measurePath(path, plan.cells);
+        for (CoveragePath& path : plan.paths)
+            measurePath(path, plan.cells);
         PlanMetricsCalculator{}.compute(plan);
         return 0;
     });

@@ -6,8 +6,8 @@ namespace mcpp {
 
 // What a planner guarantees about every plan it makes; the invariant suite holds each planner to these.
 struct PlannerPromises {
-    bool regionsConnected = true;         // each region is connected and holds its robot's start cell
-    bool pathsCoverOwnRegion = true;      // each robot passes every free sub-cell of its own region
+    bool regionsConnected = true;          // each region is connected and holds its robot's start cell
+    bool pathsCoverOwnRegion = true;       // each robot passes every free sub-cell of its own region
     bool everyReachableCellCovered = true; // every cell connected to a start belongs to some region
 };
 

@@ -9,8 +9,7 @@ namespace {
 
 using Factory = std::function<std::unique_ptr<Planner>()>;
 
-template <typename PlannerType>
-Factory factory() {
+template <typename PlannerType> Factory factory() {
     return [] { return std::make_unique<PlannerType>(); };
 }
 
@@ -26,13 +25,15 @@ const std::vector<Factory>& factories() {
 
 std::vector<PlannerDescription> plannerDescriptions() {
     std::vector<PlannerDescription> descriptions;
-    for (const Factory& make : factories()) descriptions.push_back(make()->description());
+    for (const Factory& make : factories())
+        descriptions.push_back(make()->description());
     return descriptions;
 }
 
 std::vector<std::string> availablePlanners() {
     std::vector<std::string> names;
-    for (const PlannerDescription& description : plannerDescriptions()) names.push_back(description.name);
+    for (const PlannerDescription& description : plannerDescriptions())
+        names.push_back(description.name);
     return names;
 }
 
@@ -45,7 +46,8 @@ std::unique_ptr<Planner> makePlanner(const std::string& name) {
     const std::string& wanted = name.empty() ? defaultPlannerName() : name;
     for (const Factory& make : factories()) {
         auto planner = make();
-        if (planner->description().name == wanted) return planner;
+        if (planner->description().name == wanted)
+            return planner;
     }
     return nullptr;
 }

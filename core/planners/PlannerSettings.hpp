@@ -14,7 +14,8 @@ struct PlannerSettings {
     bool closedTour = true;
     // Cap on rebalancing moves after the regions are grown; 0 picks a cap from the problem size.
     int rebalanceIterations = 0;
-    // Move a start on an obstacle, outside the area or sharing a cell to the nearest free cell, with a warning.
+    // Move a start on an obstacle, outside the area or sharing a cell to the nearest free cell, with a
+    // warning.
     bool snapStartsToFreeCells = false;
 
     friend bool operator==(const PlannerSettings&, const PlannerSettings&) = default;

@@ -13,18 +13,21 @@ using Kind = PlanningError::Kind;
 
 // Why the start lies on no cell of the graph: the pixel under it, or the cell rule that dropped its cell.
 StartPointProblem whyNoCell(const PlanningProblem& problem, MapPoint start) {
-    if (auto problemAtPixel = startPointProblem(problem.grid, problem.classes, start)) return *problemAtPixel;
-    return {Kind::StartOnObstacle, describePoint(start) + " is in a cell that is mostly obstacle or outside the area "
-                                                          "(more than " +
-                                       std::to_string(static_cast<int>(problem.settings.blockedThreshold * 100.0)) +
-                                       "%)"};
+    if (auto problemAtPixel = startPointProblem(problem.grid, problem.classes, start))
+        return *problemAtPixel;
+    return {Kind::StartOnObstacle,
+            describePoint(start) +
+                " is in a cell that is mostly obstacle or outside the area "
+                "(more than " +
+                std::to_string(static_cast<int>(problem.settings.blockedThreshold * 100.0)) + "%)"};
 }
 
 int nearestFreeCell(const CellGraph& graph, const std::vector<int>& ownerOfCell, MapPoint point) {
     int best = -1;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (std::size_t candidate = 0; candidate < graph.size(); ++candidate) {
-        if (ownerOfCell[candidate] >= 0) continue;
+        if (ownerOfCell[candidate] >= 0)
+            continue;
         const Cell& cell = graph.cell(static_cast<int>(candidate));
         const double d = std::hypot(cell.centreX() - point.x, cell.centreY() - point.y);
         if (d < bestDistance) {
@@ -41,9 +44,10 @@ std::vector<int> PlanningRun::locateStarts() {
     const CellGraph& graph = plan_.cells;
     const bool snap = problem_.settings.snapStartsToFreeCells;
     if (graph.empty())
-        throw PlanningError(Kind::NoPassableCell, "no cell of the map is passable: every smallest cell is more than " +
-                                                      std::to_string(static_cast<int>(problem_.settings.blockedThreshold * 100.0)) +
-                                                      "% obstacle or outside the area");
+        throw PlanningError(Kind::NoPassableCell,
+                            "no cell of the map is passable: every smallest cell is more than " +
+                                std::to_string(static_cast<int>(problem_.settings.blockedThreshold * 100.0)) +
+                                "% obstacle or outside the area");
     if (starts_.size() > graph.size())
         throw PlanningError(Kind::TooManyRobots, std::to_string(starts_.size()) + " robots but only " +
                                                      std::to_string(graph.size()) + " passable cells");
@@ -53,24 +57,29 @@ std::vector<int> PlanningRun::locateStarts() {
         MapPoint& start = starts_[robot];
         const auto robotIndex = static_cast<int>(robot);
         if (!std::isfinite(start.x) || !std::isfinite(start.y))
-            throw PlanningError::aboutStart(Kind::InvalidParameter, robotIndex, describePoint(start) + " is not a number");
+            throw PlanningError::aboutStart(Kind::InvalidParameter, robotIndex,
+                                            describePoint(start) + " is not a number");
         int cell = graph.cellAt(start);
         std::optional<StartPointProblem> problem;
         if (cell < 0) {
             problem = whyNoCell(problem_, start);
         } else if (ownerOfCell[static_cast<std::size_t>(cell)] >= 0) {
-            problem = StartPointProblem{Kind::StartsShareCell, describePoint(start) + " is in the same cell as robot " +
-                                                                   std::to_string(ownerOfCell[static_cast<std::size_t>(cell)])};
+            problem = StartPointProblem{Kind::StartsShareCell,
+                                        describePoint(start) + " is in the same cell as robot " +
+                                            std::to_string(ownerOfCell[static_cast<std::size_t>(cell)])};
         }
         if (problem) {
-            if (!snap) throw PlanningError::aboutStart(problem->kind, robotIndex, problem->detail);
+            if (!snap)
+                throw PlanningError::aboutStart(problem->kind, robotIndex, problem->detail);
             cell = nearestFreeCell(graph, ownerOfCell, start);
             if (cell < 0)
-                throw PlanningError::aboutStart(Kind::TooManyRobots, robotIndex, problem->detail + " and no free cell is left");
+                throw PlanningError::aboutStart(Kind::TooManyRobots, robotIndex,
+                                                problem->detail + " and no free cell is left");
             const Cell& target = graph.cell(cell);
             start = {target.centreX(), target.centreY()};
             addIssue(IssueSeverity::Warning, "start-moved",
-                     "robot " + std::to_string(robot) + " start " + problem->detail + "; moved to " + describePoint(start));
+                     "robot " + std::to_string(robot) + " start " + problem->detail + "; moved to " +
+                         describePoint(start));
         }
         ownerOfCell[static_cast<std::size_t>(cell)] = robotIndex;
         startCells.push_back(cell);

@@ -14,7 +14,7 @@ namespace mcpp {
 // One planner run in progress: the problem, the plan being filled, the starts (which snapping may move)
 // and the timing of each stage.
 class PlanningRun {
-public:
+  public:
     PlanningRun(const PlanningProblem& problem, const ProgressReporter& progress, Plan& plan)
         : problem_(problem), progress_(progress), plan_(plan), starts_(problem.starts) {}
 
@@ -25,8 +25,7 @@ public:
     [[nodiscard]] const std::vector<MapPoint>& starts() const { return starts_; }
 
     // Runs one stage of the planner and records how long it took under its name.
-    template <typename Work>
-    auto stage(const char* name, Work&& work) {
+    template <typename Work> auto stage(const char* name, Work&& work) {
         progress_.throwIfCancelled();
         const auto begin = std::chrono::steady_clock::now();
         auto result = work();
@@ -42,7 +41,7 @@ public:
         plan_.issues.push_back({severity, std::move(code), std::move(message)});
     }
 
-private:
+  private:
     const PlanningProblem& problem_;
     const ProgressReporter& progress_;
     Plan& plan_;

@@ -26,7 +26,8 @@ namespace {
 constexpr bool blocked = false;
 constexpr bool open = true;
 
-LandCoverClass row(std::int32_t value, const char* name, std::uint32_t color, double speed, double fov, bool passable) {
+LandCoverClass row(std::int32_t value, const char* name, std::uint32_t color, double speed, double fov,
+                   bool passable) {
     return LandCoverClass{value, name, color, passable ? speed : 0.0, fov, passable};
 }
 
@@ -121,7 +122,8 @@ const std::vector<CorineClass>& corineClasses() {
         {18, 231, "Pastures", 0xe6e64d, 1.2, 20, open},
         {19, 241, "Annual crops associated with permanent crops", 0xffe6a6, 1.0, 10, open},
         {20, 242, "Complex cultivation patterns", 0xffe64d, 1.0, 10, open},
-        {21, 243, "Land principally occupied by agriculture, with significant areas of natural vegetation", 0xe6cc4d, 1.0, 10, open},
+        {21, 243, "Land principally occupied by agriculture, with significant areas of natural vegetation",
+         0xe6cc4d, 1.0, 10, open},
         {22, 244, "Agro-forestry areas", 0xf2cca6, 0.8, 10, open},
         {23, 311, "Broad-leaved forest", 0x80ff00, 0.5, 5, open},
         {24, 312, "Coniferous forest", 0x00a600, 0.5, 5, open},
@@ -152,8 +154,8 @@ const std::vector<CorineClass>& corineClasses() {
 std::vector<LandCoverClass> corine(bool gridCodes) {
     std::vector<LandCoverClass> classes;
     for (const CorineClass& entry : corineClasses()) {
-        classes.push_back(row(gridCodes ? entry.gridCode : entry.code, entry.name, entry.color, entry.speed, entry.fov,
-                              entry.passable));
+        classes.push_back(row(gridCodes ? entry.gridCode : entry.code, entry.name, entry.color, entry.speed,
+                              entry.fov, entry.passable));
     }
     return classes;
 }
@@ -211,12 +213,9 @@ std::vector<LandCoverClass> copernicusGlobalLandCover() {
 // The six classes of the multi-robot coverage paper's maps. FOVs 5, 10 and 20 m give three quadtree levels.
 std::vector<LandCoverClass> paper() {
     return {
-        row(1, "farm", 0xe8c547, 1.0, 10, open),
-        row(2, "road", 0x7a7a7a, 2.0, 20, open),
-        row(3, "grass", 0x8fd16b, 1.5, 10, open),
-        row(4, "wood", 0x2e7d32, 0.5, 5, open),
-        row(5, "bare land", 0xc8b496, 1.8, 20, open),
-        row(6, "gobi", 0xd2a05a, 1.2, 20, open),
+        row(1, "farm", 0xe8c547, 1.0, 10, open),      row(2, "road", 0x7a7a7a, 2.0, 20, open),
+        row(3, "grass", 0x8fd16b, 1.5, 10, open),     row(4, "wood", 0x2e7d32, 0.5, 5, open),
+        row(5, "bare land", 0xc8b496, 1.8, 20, open), row(6, "gobi", 0xd2a05a, 1.2, 20, open),
     };
 }
 
@@ -230,7 +229,8 @@ const std::vector<PresetDefinition>& presetDefinitions() {
         {"corine", "CORINE Land Cover, three-digit codes (111-523)", corine(false)},
         {"corine-grid", "CORINE Land Cover raster grid codes (1-44)", corine(true)},
         {"canada-landcover", "Land Cover of Canada 2015 (NRCan, NALCMS legend)", canadaLandCover()},
-        {"copernicus-glc100", "Copernicus Global Land Cover 100 m, discrete classification", copernicusGlobalLandCover()},
+        {"copernicus-glc100", "Copernicus Global Land Cover 100 m, discrete classification",
+         copernicusGlobalLandCover()},
         {"paper", "The paper's six classes: farm, road, grass, wood, bare land, gobi (1-6)", paper()},
     };
     return presets;

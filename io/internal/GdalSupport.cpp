@@ -14,16 +14,20 @@ QuietGdalErrors::QuietGdalErrors() {
     CPLErrorReset();
 }
 
-QuietGdalErrors::~QuietGdalErrors() { CPLPopErrorHandler(); }
+QuietGdalErrors::~QuietGdalErrors() {
+    CPLPopErrorHandler();
+}
 
 std::string QuietGdalErrors::lastMessage() {
     const char* message = CPLGetLastErrorMsg();
     std::string text = message == nullptr ? std::string() : std::string(message);
     // One line: GDAL messages sometimes end with or contain line breaks.
     for (char& character : text) {
-        if (character == '\n' || character == '\r') character = ' ';
+        if (character == '\n' || character == '\r')
+            character = ' ';
     }
-    while (!text.empty() && text.back() == ' ') text.pop_back();
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
     return text;
 }
 
@@ -33,7 +37,8 @@ std::string QuietGdalErrors::detail() {
 }
 
 void DatasetCloser::operator()(GDALDataset* dataset) const {
-    if (dataset != nullptr) GDALClose(GDALDataset::ToHandle(dataset));
+    if (dataset != nullptr)
+        GDALClose(GDALDataset::ToHandle(dataset));
 }
 
 std::unique_ptr<OGRSpatialReference> makeSpatialReference() {
@@ -43,11 +48,12 @@ std::unique_ptr<OGRSpatialReference> makeSpatialReference() {
 }
 
 std::unique_ptr<OGRSpatialReference> spatialReferenceFromDefinition(const std::string& definition) {
-    if (definition.empty()) return nullptr;
+    if (definition.empty())
+        return nullptr;
     ensureGdalRegistered();
     auto reference = makeSpatialReference();
-    if (reference->SetFromUserInput(definition.c_str(), OGRSpatialReference::SET_FROM_USER_INPUT_LIMITATIONS_get())
-        != OGRERR_NONE) {
+    if (reference->SetFromUserInput(
+            definition.c_str(), OGRSpatialReference::SET_FROM_USER_INPUT_LIMITATIONS_get()) != OGRERR_NONE) {
         return nullptr;
     }
     reference->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
@@ -64,7 +70,8 @@ std::string wktOf(const OGRSpatialReference& reference) {
     char* text = nullptr;
     const char* const options[] = {"FORMAT=WKT2_2019", "MULTILINE=NO", nullptr};
     std::string result;
-    if (reference.exportToWkt(&text, options) == OGRERR_NONE && text != nullptr) result = text;
+    if (reference.exportToWkt(&text, options) == OGRERR_NONE && text != nullptr)
+        result = text;
     CPLFree(text);
     return result;
 }

@@ -4,9 +4,8 @@
 
 #include <cpl_error.h>
 #include <gdal_priv.h>
-#include <ogr_spatialref.h>
-
 #include <memory>
+#include <ogr_spatialref.h>
 #include <string>
 
 namespace mcpp::io::internal {
@@ -16,7 +15,7 @@ void ensureGdalRegistered();
 
 // Keeps GDAL's messages off stderr while alive and remembers the last one for our own error text.
 class QuietGdalErrors {
-public:
+  public:
     QuietGdalErrors();
     ~QuietGdalErrors();
     QuietGdalErrors(const QuietGdalErrors&) = delete;
@@ -36,7 +35,8 @@ using DatasetPointer = std::unique_ptr<GDALDataset, DatasetCloser>;
 // Every spatial reference mcpp creates uses x = easting / longitude, y = northing / latitude.
 [[nodiscard]] std::unique_ptr<OGRSpatialReference> makeSpatialReference();
 // Null when OSR does not understand the definition.
-[[nodiscard]] std::unique_ptr<OGRSpatialReference> spatialReferenceFromDefinition(const std::string& definition);
+[[nodiscard]] std::unique_ptr<OGRSpatialReference>
+spatialReferenceFromDefinition(const std::string& definition);
 [[nodiscard]] std::unique_ptr<OGRSpatialReference> wgs84SpatialReference();
 [[nodiscard]] std::string wktOf(const OGRSpatialReference& reference);
 

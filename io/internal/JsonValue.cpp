@@ -25,7 +25,8 @@ std::string JsonValue::toText() const {
 }
 
 std::string formatJsonNumber(double value) {
-    if (!std::isfinite(value)) return "null";
+    if (!std::isfinite(value))
+        return "null";
     return formatShortest(value);
 }
 
@@ -34,13 +35,27 @@ std::string quoteJsonString(const std::string& text) {
     for (const char character : text) {
         const auto byte = static_cast<unsigned char>(character);
         switch (character) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        case '\b': out += "\\b"; break;
-        case '\f': out += "\\f"; break;
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
+        case '\b':
+            out += "\\b";
+            break;
+        case '\f':
+            out += "\\f";
+            break;
         default:
             if (byte < 0x20) {
                 char escaped[8];
@@ -59,22 +74,34 @@ void JsonValue::write(std::string& out, int indent) const {
     const std::string padding(static_cast<std::size_t>(indent + 2), ' ');
     const std::string closing(static_cast<std::size_t>(indent), ' ');
     switch (kind_) {
-    case Kind::Null: out += "null"; return;
-    case Kind::Boolean: out += boolean_ ? "true" : "false"; return;
-    case Kind::Integer: out += std::to_string(integer_); return;
-    case Kind::Number: out += formatJsonNumber(number_); return;
-    case Kind::String: out += quoteJsonString(text_); return;
+    case Kind::Null:
+        out += "null";
+        return;
+    case Kind::Boolean:
+        out += boolean_ ? "true" : "false";
+        return;
+    case Kind::Integer:
+        out += std::to_string(integer_);
+        return;
+    case Kind::Number:
+        out += formatJsonNumber(number_);
+        return;
+    case Kind::String:
+        out += quoteJsonString(text_);
+        return;
     case Kind::Array: {
         if (items_.empty()) {
             out += "[]";
             return;
         }
         bool allScalar = true;
-        for (const JsonValue& item : items_) allScalar = allScalar && item.isScalar();
+        for (const JsonValue& item : items_)
+            allScalar = allScalar && item.isScalar();
         if (allScalar) {
             out += '[';
             for (std::size_t i = 0; i < items_.size(); ++i) {
-                if (i > 0) out += ", ";
+                if (i > 0)
+                    out += ", ";
                 items_[i].write(out, indent);
             }
             out += ']';

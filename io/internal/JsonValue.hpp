@@ -10,7 +10,7 @@ namespace mcpp::io::internal {
 // A JSON value whose objects keep their keys in insertion order, so files written from it have a fixed,
 // readable layout (QJsonObject sorts keys) and byte-identical output for equal content.
 class JsonValue {
-public:
+  public:
     enum class Kind { Null, Boolean, Integer, Number, String, Array, Object };
 
     JsonValue() = default;
@@ -31,7 +31,7 @@ public:
     // Two-space indentation; arrays of scalars stay on one line. Ends with a newline.
     [[nodiscard]] std::string toText() const;
 
-private:
+  private:
     explicit JsonValue(Kind kind) : kind_(kind) {}
     void write(std::string& out, int indent) const;
     [[nodiscard]] bool isScalar() const { return kind_ != Kind::Array && kind_ != Kind::Object; }

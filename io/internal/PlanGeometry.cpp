@@ -33,28 +33,36 @@ void addCoveredPart(const CellGraph& graph, const Cell& cell, double metresPerUn
     const double west = frame.x(cell.column);
     const double north = frame.y(cell.row);
     for (SubCell subCell : subCellsCounterClockwise) {
-        if (!cell.isFree(subCell)) continue;
+        if (!cell.isFree(subCell))
+            continue;
         const bool east = subCell == SubCell::NorthEast || subCell == SubCell::SouthEast;
         const bool south = subCell == SubCell::SouthWest || subCell == SubCell::SouthEast;
         const double minX = west + (east ? half : 0.0);
         const double maxY = north - (south ? half : 0.0);
-        parts.addGeometryDirectly(
-            square(minX / metresPerUnit, (maxY - half) / metresPerUnit, (minX + half) / metresPerUnit, maxY / metresPerUnit).release());
+        parts.addGeometryDirectly(square(minX / metresPerUnit, (maxY - half) / metresPerUnit,
+                                         (minX + half) / metresPerUnit, maxY / metresPerUnit)
+                                      .release());
     }
 }
 
 // Union of the covered parts of the given cells: valid polygons, shared edges dissolved.
-Result<std::unique_ptr<OGRGeometry>> dissolve(const CellGraph& graph, const std::vector<int>& cellIds, double metresPerUnit) {
+Result<std::unique_ptr<OGRGeometry>> dissolve(const CellGraph& graph, const std::vector<int>& cellIds,
+                                              double metresPerUnit) {
     using Dissolved = Result<std::unique_ptr<OGRGeometry>>;
-    if (cellIds.empty()) return std::unique_ptr<OGRGeometry>(std::make_unique<OGRMultiPolygon>());
+    if (cellIds.empty())
+        return std::unique_ptr<OGRGeometry>(std::make_unique<OGRMultiPolygon>());
     OGRMultiPolygon squares;
-    for (const int id : cellIds) addCoveredPart(graph, graph.cell(id), metresPerUnit, squares);
+    for (const int id : cellIds)
+        addCoveredPart(graph, graph.cell(id), metresPerUnit, squares);
     QuietGdalErrors quiet;
     std::unique_ptr<OGRGeometry> merged(squares.UnionCascaded());
-    if (!merged) return Dissolved::failure("could not dissolve " + std::to_string(cellIds.size()) + " cells" + quiet.detail());
+    if (!merged)
+        return Dissolved::failure("could not dissolve " + std::to_string(cellIds.size()) + " cells" +
+                                  quiet.detail());
     if (!merged->IsValid()) {
         std::unique_ptr<OGRGeometry> repaired(merged->MakeValid());
-        if (!repaired || !repaired->IsValid()) return Dissolved::failure("dissolved cells do not form a valid polygon" + quiet.detail());
+        if (!repaired || !repaired->IsValid())
+            return Dissolved::failure("dissolved cells do not form a valid polygon" + quiet.detail());
         merged = std::move(repaired);
     }
     return merged;
@@ -63,9 +71,10 @@ Result<std::unique_ptr<OGRGeometry>> dissolve(const CellGraph& graph, const std:
 } // namespace
 
 int robotCount(const Plan& plan) {
-    std::size_t count = std::max({plan.paths.size(), plan.regions.startCell.size(), plan.regions.costSeconds.size(),
-                                  plan.metrics.robots.size()});
-    for (const int robot : plan.regions.robotOfCell) count = std::max(count, static_cast<std::size_t>(robot + 1));
+    std::size_t count = std::max({plan.paths.size(), plan.regions.startCell.size(),
+                                  plan.regions.costSeconds.size(), plan.metrics.robots.size()});
+    for (const int robot : plan.regions.robotOfCell)
+        count = std::max(count, static_cast<std::size_t>(robot + 1));
     return static_cast<int>(count);
 }
 
@@ -80,8 +89,9 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
     const int robots = robotCount(plan);
     const auto& owner = plan.regions.robotOfCell;
     if (!owner.empty() && owner.size() != graph.size()) {
-        return Result<PlanFeatures>::failure("the regions name " + std::to_string(owner.size()) + " cells but the plan has "
-                                             + std::to_string(graph.size()) + " cells");
+        return Result<PlanFeatures>::failure("the regions name " + std::to_string(owner.size()) +
+                                             " cells but the plan has " + std::to_string(graph.size()) +
+                                             " cells");
     }
     std::vector<std::vector<int>> cellsOfRobot(static_cast<std::size_t>(robots));
     std::vector<int> unreachableCells;
@@ -93,7 +103,8 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
             unreachableCells.push_back(static_cast<int>(index));
         } else {
             cellsOfRobot[static_cast<std::size_t>(robot)].push_back(static_cast<int>(index));
-            areaOfRobot[static_cast<std::size_t>(robot)] += cell.size * cell.size * cell.freeSubCellCount() / 4.0;
+            areaOfRobot[static_cast<std::size_t>(robot)] +=
+                cell.size * cell.size * cell.freeSubCellCount() / 4.0;
         }
     }
 
@@ -101,18 +112,23 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
     for (int robot = 0; robot < robots; ++robot) {
         const auto r = static_cast<std::size_t>(robot);
         auto region = dissolve(graph, cellsOfRobot[r], metresPerUnit);
-        if (!region) return Result<PlanFeatures>::failure("robot " + std::to_string(robot) + " region: " + region.error());
+        if (!region)
+            return Result<PlanFeatures>::failure("robot " + std::to_string(robot) +
+                                                 " region: " + region.error());
         RegionFeature feature;
         feature.robot = robot;
         feature.geometry = std::move(region.value());
         feature.cells = static_cast<int>(cellsOfRobot[r].size());
         feature.areaSquareMetres = areaOfRobot[r];
-        if (r < plan.regions.costSeconds.size()) feature.costSeconds = plan.regions.costSeconds[r];
-        else if (r < plan.metrics.robots.size()) feature.costSeconds = plan.metrics.robots[r].costSeconds;
+        if (r < plan.regions.costSeconds.size())
+            feature.costSeconds = plan.regions.costSeconds[r];
+        else if (r < plan.metrics.robots.size())
+            feature.costSeconds = plan.metrics.robots[r].costSeconds;
         features.regions.push_back(std::move(feature));
     }
     for (const CoveragePath& path : plan.paths) {
-        if (path.waypoints.empty()) continue;
+        if (path.waypoints.empty())
+            continue;
         PathFeature feature;
         feature.robot = path.robot;
         feature.geometry = std::make_unique<OGRLineString>();
@@ -126,18 +142,22 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
 
         StartFeature start;
         start.robot = path.robot;
-        start.geometry = std::make_unique<OGRPoint>(path.waypoints.front().x / metresPerUnit, path.waypoints.front().y / metresPerUnit);
+        start.geometry = std::make_unique<OGRPoint>(path.waypoints.front().x / metresPerUnit,
+                                                    path.waypoints.front().y / metresPerUnit);
         features.starts.push_back(std::move(start));
     }
     // Robots without a path still get their start: the centre of their start cell.
     for (std::size_t robot = 0; robot < plan.regions.startCell.size(); ++robot) {
-        const bool hasStart = std::any_of(features.starts.begin(), features.starts.end(),
-                                          [&](const StartFeature& start) { return start.robot == static_cast<int>(robot); });
+        const bool hasStart =
+            std::any_of(features.starts.begin(), features.starts.end(),
+                        [&](const StartFeature& start) { return start.robot == static_cast<int>(robot); });
         const int cell = plan.regions.startCell[robot];
-        if (hasStart || cell < 0 || static_cast<std::size_t>(cell) >= graph.size()) continue;
+        if (hasStart || cell < 0 || static_cast<std::size_t>(cell) >= graph.size())
+            continue;
         StartFeature start;
         start.robot = static_cast<int>(robot);
-        start.geometry = std::make_unique<OGRPoint>(graph.cell(cell).centreX() / metresPerUnit, graph.cell(cell).centreY() / metresPerUnit);
+        start.geometry = std::make_unique<OGRPoint>(graph.cell(cell).centreX() / metresPerUnit,
+                                                    graph.cell(cell).centreY() / metresPerUnit);
         features.starts.push_back(std::move(start));
     }
     std::sort(features.starts.begin(), features.starts.end(),
@@ -145,7 +165,8 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
 
     if (!unreachableCells.empty()) {
         auto dissolved = dissolve(graph, unreachableCells, metresPerUnit);
-        if (!dissolved) return Result<PlanFeatures>::failure("unreachable cells: " + dissolved.error());
+        if (!dissolved)
+            return Result<PlanFeatures>::failure("unreachable cells: " + dissolved.error());
         const double squareMetresPerUnit = metresPerUnit * metresPerUnit;
         const auto addPart = [&](const OGRPolygon& polygon) {
             UnreachableFeature feature;
@@ -158,10 +179,12 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
         if (type == wkbPolygon) {
             addPart(*geometry.toPolygon());
         } else if (type == wkbMultiPolygon) {
-            for (const OGRPolygon* part : *geometry.toMultiPolygon()) addPart(*part);
+            for (const OGRPolygon* part : *geometry.toMultiPolygon())
+                addPart(*part);
         } else if (type == wkbGeometryCollection) {
             for (const OGRGeometry* part : *geometry.toGeometryCollection()) {
-                if (wkbFlatten(part->getGeometryType()) == wkbPolygon) addPart(*part->toPolygon());
+                if (wkbFlatten(part->getGeometryType()) == wkbPolygon)
+                    addPart(*part->toPolygon());
             }
         }
     }

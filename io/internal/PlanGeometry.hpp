@@ -4,9 +4,8 @@
 #include "io/GeoReference.hpp"
 #include "io/Result.hpp"
 
-#include <ogr_geometry.h>
-
 #include <memory>
+#include <ogr_geometry.h>
 #include <vector>
 
 namespace mcpp::io::internal {
@@ -48,7 +47,8 @@ struct PlanFeatures {
 [[nodiscard]] Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit);
 // The square of one cell in CRS units, its corners computed from its placement on the bottom grid so that
 // neighbouring cells share exactly the same edge coordinates.
-[[nodiscard]] std::unique_ptr<OGRPolygon> cellSquare(const CellGraph& graph, const Cell& cell, double metresPerUnit);
+[[nodiscard]] std::unique_ptr<OGRPolygon> cellSquare(const CellGraph& graph, const Cell& cell,
+                                                     double metresPerUnit);
 // Number of robots the plan describes.
 [[nodiscard]] int robotCount(const Plan& plan);
 

@@ -3,7 +3,6 @@
 #include <QFile>
 #include <QSaveFile>
 #include <QString>
-
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -23,13 +22,15 @@ Status writeFileAtomically(const std::string& path, const std::string& contents)
         file.cancelWriting();
         return Status::failure(path + ": write failed: " + reason);
     }
-    if (!file.commit()) return Status::failure(path + ": could not save: " + file.errorString().toStdString());
+    if (!file.commit())
+        return Status::failure(path + ": could not save: " + file.errorString().toStdString());
     return {};
 }
 
 Result<std::string> readWholeFile(const std::string& path) {
     std::error_code error;
-    if (!std::filesystem::exists(path, error)) return Result<std::string>::failure(path + ": file not found");
+    if (!std::filesystem::exists(path, error))
+        return Result<std::string>::failure(path + ": file not found");
     if (std::filesystem::is_directory(path, error)) {
         return Result<std::string>::failure(path + ": is a folder, not a file");
     }
@@ -49,8 +50,8 @@ std::string formatShortest(double value) {
 
 std::string formatFixed(double value, int decimals) {
     std::array<char, 64> buffer{};
-    const auto result =
-        std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::fixed, decimals);
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                      std::chars_format::fixed, decimals);
     return std::string(buffer.data(), result.ptr);
 }
 
@@ -85,10 +86,12 @@ bool splitCsvLine(const std::string& line, std::vector<std::string>& fields) {
 }
 
 std::string quoteCsvField(const std::string& field) {
-    if (field.find_first_of(",\"\n\r") == std::string::npos && trimmed(field) == field) return field;
+    if (field.find_first_of(",\"\n\r") == std::string::npos && trimmed(field) == field)
+        return field;
     std::string out = "\"";
     for (const char character : field) {
-        if (character == '"') out += '"';
+        if (character == '"')
+            out += '"';
         out += character;
     }
     return out + "\"";
@@ -96,13 +99,15 @@ std::string quoteCsvField(const std::string& field) {
 
 std::string trimmed(const std::string& text) {
     const auto begin = text.find_first_not_of(" \t\r\n");
-    if (begin == std::string::npos) return {};
+    if (begin == std::string::npos)
+        return {};
     const auto end = text.find_last_not_of(" \t\r\n");
     return text.substr(begin, end - begin + 1);
 }
 
 std::string lowercase(std::string text) {
-    for (char& character : text) character = static_cast<char>(std::tolower(static_cast<unsigned char>(character)));
+    for (char& character : text)
+        character = static_cast<char>(std::tolower(static_cast<unsigned char>(character)));
     return text;
 }
 

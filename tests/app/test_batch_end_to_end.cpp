@@ -1,7 +1,7 @@
 #include "core/model/ClassTable.hpp"
-#include "core/planners/PlannerRegistry.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/model/ProgressReporter.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"

@@ -1,13 +1,12 @@
 #include "core/allocation/AzimuthTrendAllocator.hpp"
-#include "core/planners/MlctPlanner.hpp"
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/decomposition/QuadTreeDecomposition.hpp"
+#include "core/planners/MlctPlanner.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
-
 #include <random>
 #include <set>
 
@@ -21,7 +20,8 @@ Plan allocateOnly(const PlanningProblem& problem) {
     const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings);
     plan.cells = cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
     std::vector<int> startCells;
-    for (const MapPoint& start : problem.starts) startCells.push_back(plan.cells.cellAt(start));
+    for (const MapPoint& start : problem.starts)
+        startCells.push_back(plan.cells.cellAt(start));
     plan.regions = AzimuthTrendAllocator{}.allocate(plan.cells, startCells, problem.settings, {});
     return plan;
 }
@@ -39,7 +39,8 @@ double maximumOverMean(const RegionAllocation& allocation) {
 std::vector<int> cellsPerRobot(const RegionAllocation& allocation) {
     std::vector<int> counts(allocation.startCell.size(), 0);
     for (int robot : allocation.robotOfCell)
-        if (robot >= 0) ++counts[static_cast<std::size_t>(robot)];
+        if (robot >= 0)
+            ++counts[static_cast<std::size_t>(robot)];
     return counts;
 }
 
@@ -47,28 +48,32 @@ std::vector<int> cellsPerRobot(const RegionAllocation& allocation) {
 
 class AzimuthTrendAllocatorTest : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void corridorSplitsInHalves() {
         auto problem = test::uniformProblem(40, 1, 10.0, {}, {});
         problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 39, 0)};
         const Plan plan = allocateOnly(problem);
-        QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+        QVERIFY2(test::checkRegions(plan).empty(),
+                 qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
         QCOMPARE(cellsPerRobot(plan.regions), (std::vector<int>{20, 20}));
     }
 
     // A river (a column of water) splits the map; both robots start west of it, so the east is unreachable.
     void riverLeavesTheFarSideUnreachable() {
         std::vector<bool> blocked(20 * 20, false);
-        for (int row = 0; row < 20; ++row) blocked[static_cast<std::size_t>(row * 20 + 12)] = true;
+        for (int row = 0; row < 20; ++row)
+            blocked[static_cast<std::size_t>(row * 20 + 12)] = true;
         auto problem = test::uniformProblem(20, 20, 10.0, blocked, {});
         problem.starts = {test::pixelCentre(problem.grid, 1, 1), test::pixelCentre(problem.grid, 5, 18)};
         const Plan plan = allocateOnly(problem);
-        QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+        QVERIFY2(test::checkRegions(plan).empty(),
+                 qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
         const auto counts = cellsPerRobot(plan.regions);
         QCOMPARE(counts[0] + counts[1], 12 * 20);
         QCOMPARE(std::abs(counts[0] - counts[1]), 0);
         int unreachable = 0;
-        for (int robot : plan.regions.robotOfCell) unreachable += robot < 0 ? 1 : 0;
+        for (int robot : plan.regions.robotOfCell)
+            unreachable += robot < 0 ? 1 : 0;
         QCOMPARE(unreachable, 7 * 20);
         // With a robot on each bank every cell is covered.
         problem.starts[1] = test::pixelCentre(problem.grid, 16, 10);
@@ -82,9 +87,11 @@ private slots:
         problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 1, 1),
                           test::pixelCentre(problem.grid, 29, 29)};
         const Plan plan = allocateOnly(problem);
-        QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+        QVERIFY2(test::checkRegions(plan).empty(),
+                 qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
         const auto counts = cellsPerRobot(plan.regions);
-        for (int count : counts) QVERIFY2(std::abs(count - 300) <= 1, qPrintable(QString::number(count)));
+        for (int count : counts)
+            QVERIFY2(std::abs(count - 300) <= 1, qPrintable(QString::number(count)));
     }
 
     void balancesUniformGridsWithObstacles() {
@@ -92,26 +99,34 @@ private slots:
         for (int robots : {2, 4, 8, 14, 20}) {
             std::vector<bool> blocked(49 * 49);
             std::bernoulli_distribution obstacle(0.15);
-            for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = obstacle(random);
+            for (std::size_t i = 0; i < blocked.size(); ++i)
+                blocked[i] = obstacle(random);
             auto problem = test::uniformProblem(49, 49, 10.0, blocked, {});
             std::uniform_int_distribution<int> position(0, 48);
             std::set<std::pair<int, int>> used;
             while (static_cast<int>(problem.starts.size()) < robots) {
                 const int column = position(random);
                 const int row = position(random);
-                if (blocked[static_cast<std::size_t>(row * 49 + column)] || !used.insert({column, row}).second) continue;
+                if (blocked[static_cast<std::size_t>(row * 49 + column)] ||
+                    !used.insert({column, row}).second)
+                    continue;
                 problem.starts.push_back(test::pixelCentre(problem.grid, column, row));
             }
             const Plan plan = allocateOnly(problem);
-            QVERIFY2(test::checkRegions(plan).empty(), qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+            QVERIFY2(test::checkRegions(plan).empty(),
+                     qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
             // Balanced to within one cell of the mean wherever the regions can trade cells.
             const auto counts = cellsPerRobot(plan.regions);
             int reachable = 0;
-            for (int count : counts) reachable += count;
+            for (int count : counts)
+                reachable += count;
             const double mean = static_cast<double>(reachable) / robots;
             const int largest = *std::max_element(counts.begin(), counts.end());
-            QVERIFY2(largest <= std::ceil(mean) + 1, qPrintable(QString("%1 robots: largest region %2 cells, mean %3")
-                                                                    .arg(robots).arg(largest).arg(mean)));
+            QVERIFY2(largest <= std::ceil(mean) + 1,
+                     qPrintable(QString("%1 robots: largest region %2 cells, mean %3")
+                                    .arg(robots)
+                                    .arg(largest)
+                                    .arg(mean)));
             QVERIFY(maximumOverMean(plan.regions) < 1.03);
         }
     }

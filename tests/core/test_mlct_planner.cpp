@@ -1,6 +1,6 @@
+#include "core/model/PlanningError.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
-#include "core/model/PlanningError.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -13,7 +13,8 @@ namespace {
 PlanningProblem lakeProblem() {
     std::vector<bool> blocked(10 * 10, false);
     for (int row = 3; row < 6; ++row)
-        for (int column = 3; column < 6; ++column) blocked[static_cast<std::size_t>(row * 10 + column)] = true;
+        for (int column = 3; column < 6; ++column)
+            blocked[static_cast<std::size_t>(row * 10 + column)] = true;
     auto problem = test::uniformProblem(10, 10, 10.0, blocked, {});
     problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 9, 9)};
     return problem;
@@ -33,7 +34,7 @@ void expectError(const PlanningProblem& problem, PlanningError::Kind kind, const
 
 class MlctPlannerTest : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void plansAroundALake() {
         const auto problem = lakeProblem();
         const Plan plan = MlctPlanner{}.plan(problem, {});
@@ -58,7 +59,8 @@ private slots:
     void startOutsideIsNamed() {
         auto problem = lakeProblem();
         problem.starts[0] = {0.0, 0.0};
-        expectError(problem, PlanningError::Kind::StartOutsideArea, "robot 0 start (0, 0) is outside the map");
+        expectError(problem, PlanningError::Kind::StartOutsideArea,
+                    "robot 0 start (0, 0) is outside the map");
         problem = lakeProblem();
         problem.grid.outside.assign(100, 0);
         problem.grid.outside[99] = 1;
@@ -99,7 +101,8 @@ private slots:
         const auto problem = lakeProblem();
         std::vector<std::string> stages;
         ProgressReporter reporter([&](std::string_view stage, double) {
-            if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
+            if (stages.empty() || stages.back() != stage)
+                stages.emplace_back(stage);
         });
         (void)MlctPlanner{}.plan(problem, reporter);
         QCOMPARE(stages, (std::vector<std::string>{"quadtree", "topology", "allocation", "paths", "done"}));

@@ -3,7 +3,6 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
-
 #include <set>
 
 using namespace mcpp;
@@ -24,7 +23,7 @@ bool shareBorder(const QuadCell& a, const QuadCell& b) {
 
 class NeighbourTopologyTest : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void sameLevelGridHasFourNeighbours() {
         auto problem = test::uniformProblem(3, 3, 10.0, {}, {});
         const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, {});
@@ -54,12 +53,17 @@ private slots:
             for (std::size_t a = 0; a < tree.activeCount(); ++a) {
                 std::set<int> expected;
                 for (std::size_t b = 0; b < tree.activeCount(); ++b)
-                    if (a != b && shareBorder(tree.active(static_cast<int>(a)), tree.active(static_cast<int>(b))))
+                    if (a != b &&
+                        shareBorder(tree.active(static_cast<int>(a)), tree.active(static_cast<int>(b))))
                         expected.insert(static_cast<int>(b));
                 const auto list = topology.of(static_cast<int>(a));
                 const std::set<int> found(list.begin(), list.end());
-                QVERIFY2(found == expected, qPrintable(QString("seed %1 cell %2: %3 neighbours found, %4 expected")
-                                                           .arg(seed).arg(a).arg(found.size()).arg(expected.size())));
+                QVERIFY2(found == expected,
+                         qPrintable(QString("seed %1 cell %2: %3 neighbours found, %4 expected")
+                                        .arg(seed)
+                                        .arg(a)
+                                        .arg(found.size())
+                                        .arg(expected.size())));
                 QCOMPARE(list.size(), found.size());
             }
         }

@@ -1,5 +1,5 @@
-#include "core/model/PlanningError.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
+#include "core/model/PlanningError.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -21,7 +21,8 @@ ClassGrid filledGrid(int columns, int rows, std::int32_t value, double pixel = 1
 
 int countActiveAtLevel(const QuadTree& tree, int level) {
     int count = 0;
-    for (int index : tree.activeCells) count += tree.cells[static_cast<std::size_t>(index)].level == level ? 1 : 0;
+    for (int index : tree.activeCells)
+        count += tree.cells[static_cast<std::size_t>(index)].level == level ? 1 : 0;
     return count;
 }
 
@@ -29,10 +30,12 @@ int countActiveAtLevel(const QuadTree& tree, int level) {
 
 class QuadTreeBuilderTest : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     // The paper's example: FOVs 5, 7 and 21 m round down to 5, 5 and 20 m, giving three levels.
     void paperFieldOfViewExample() {
-        ClassTable table({{1, "farm", 0, 1.0, 5.0, true}, {2, "road", 0, 3.0, 7.0, true}, {3, "gobi", 0, 2.0, 21.0, true}});
+        ClassTable table({{1, "farm", 0, 1.0, 5.0, true},
+                          {2, "road", 0, 3.0, 7.0, true},
+                          {3, "gobi", 0, 2.0, 21.0, true}});
         const auto rounded = roundFieldsOfView(table, {1, 2, 3});
         QCOMPARE(rounded.size(), std::size_t{3});
         QCOMPARE(rounded[0].roundedMetres, 5.0);
@@ -47,7 +50,8 @@ private slots:
     }
 
     void exactPowersOfTwoKeepTheirLevel() {
-        ClassTable table({{1, "a", 0, 1.0, 2.5, true}, {2, "b", 0, 1.0, 10.0, true}, {3, "c", 0, 1.0, 40.0, true}});
+        ClassTable table(
+            {{1, "a", 0, 1.0, 2.5, true}, {2, "b", 0, 1.0, 10.0, true}, {3, "c", 0, 1.0, 40.0, true}});
         const auto rounded = roundFieldsOfView(table, {1, 2, 3});
         QCOMPARE(rounded[1].roundedMetres, 10.0);
         QCOMPARE(rounded[2].roundedMetres, 40.0);
@@ -76,7 +80,8 @@ private slots:
         ClassTable table({{1, "open", 0, 2.0, 20.0, true}, {2, "wood", 0, 1.0, 5.0, true}});
         ClassGrid grid = filledGrid(40, 40, 1);
         for (int r = 0; r < 10; ++r)
-            for (int c = 0; c < 10; ++c) grid.values[grid.index(c, r)] = 2;
+            for (int c = 0; c < 10; ++c)
+                grid.values[grid.index(c, r)] = 2;
         const QuadTree tree = QuadTreeBuilder{}.build(grid, table, {});
         QCOMPARE(tree.levels, 3);
         QCOMPARE(tree.topCellSize, 40.0);
@@ -142,7 +147,8 @@ private slots:
         const QuadTree tree = QuadTreeBuilder{}.build(grid, table, {});
         QCOMPARE(tree.topColumns, 2);
         QCOMPARE(tree.topRows, 1);
-        // Cell 0 has 1 of 16 pixels outside (active); cell 1 is half beyond the raster (blocked? exactly 50%: active).
+        // Cell 0 has 1 of 16 pixels outside (active); cell 1 is half beyond the raster (blocked? exactly 50%:
+        // active).
         QCOMPARE(tree.activeCount(), std::size_t{2});
         QCOMPARE(tree.passableAreaSquareMetres, 23.0);
     }
@@ -169,11 +175,14 @@ private slots:
             QVERIFY2(std::string(error.what()).find("column 1, row 1") != std::string::npos, error.what());
         }
         ClassTable negative({{1, "grass", 0, -1.0, 5.0, true}});
-        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), negative, {}));
+        QVERIFY_THROWS_EXCEPTION(PlanningError,
+                                 (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), negative, {}));
         ClassTable zeroFov({{1, "grass", 0, 1.0, 0.0, true}});
-        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), zeroFov, {}));
+        QVERIFY_THROWS_EXCEPTION(PlanningError,
+                                 (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), zeroFov, {}));
         ClassTable nanSpeed({{1, "grass", 0, std::nan(""), 5.0, true}});
-        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), nanSpeed, {}));
+        QVERIFY_THROWS_EXCEPTION(PlanningError,
+                                 (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), nanSpeed, {}));
         ClassTable onlyWater({{1, "water", 0, 0.0, 5.0, false}});
         try {
             (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), onlyWater, {});
@@ -186,11 +195,13 @@ private slots:
             (void)QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), tinyFov, {});
             QFAIL("a map of millions of bottom cells must be refused before it is built");
         } catch (const PlanningError& error) {
-            QVERIFY2(std::string(error.what()).find("5000 x 5000 bottom cells") != std::string::npos, error.what());
+            QVERIFY2(std::string(error.what()).find("5000 x 5000 bottom cells") != std::string::npos,
+                     error.what());
         }
         PlannerSettings badPurity;
         badPurity.purityTolerance = std::nan("");
-        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), table, badPurity));
+        QVERIFY_THROWS_EXCEPTION(PlanningError,
+                                 (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), table, badPurity));
     }
 };
 

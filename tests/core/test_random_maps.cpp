@@ -11,10 +11,11 @@ using namespace mcpp;
 // every invariant of spec section 7.
 class RandomMapsTest : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void everyPlanHoldsTheInvariants_data() {
         QTest::addColumn<unsigned>("seed");
-        for (unsigned seed = 1; seed <= 200; ++seed) QTest::newRow(qPrintable(QString("seed %1").arg(seed))) << seed;
+        for (unsigned seed = 1; seed <= 200; ++seed)
+            QTest::newRow(qPrintable(QString("seed %1").arg(seed))) << seed;
     }
 
     void everyPlanHoldsTheInvariants() {
@@ -35,7 +36,8 @@ private slots:
             QFAIL(error.what());
         }
         auto violations = test::checkAllInvariants(problem, plan);
-        const auto tiling = test::checkQuadTreeTiling(problem, QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings));
+        const auto tiling = test::checkQuadTreeTiling(
+            problem, QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings));
         violations.insert(violations.end(), tiling.begin(), tiling.end());
         QVERIFY2(violations.empty(), qPrintable(QString::fromStdString(test::describe(violations))));
         QVERIFY(plan.metrics.ratio >= 0.9);

@@ -1,18 +1,19 @@
-#include "core/planners/MlctPlanner.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
+#include "core/planners/MlctPlanner.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
-
 #include <set>
 
 using namespace mcpp;
 
 namespace {
 
-Plan planOf(const PlanningProblem& problem) { return MlctPlanner{}.plan(problem, {}); }
+Plan planOf(const PlanningProblem& problem) {
+    return MlctPlanner{}.plan(problem, {});
+}
 
 QString violations(const PlanningProblem& problem, const Plan& plan) {
     return QString::fromStdString(test::describe(test::checkAllInvariants(problem, plan)));
@@ -22,10 +23,11 @@ QString violations(const PlanningProblem& problem, const Plan& plan) {
 
 class SpanningTreeCoverageTest : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void singleCellIsASquareTour() {
         auto problem = test::uniformProblem(1, 1, 10.0, {}, {});
-        problem.starts = {{problem.grid.originX + 2.5, problem.grid.originY - 2.5}}; // the north-west sub-cell centre
+        problem.starts = {
+            {problem.grid.originX + 2.5, problem.grid.originY - 2.5}}; // the north-west sub-cell centre
         const Plan plan = planOf(problem);
         QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
         const CoveragePath& path = plan.paths.front();
@@ -72,18 +74,23 @@ private slots:
         problem.grid.values.assign(256, 3);
         for (int row = 0; row < 16; ++row)
             for (int column = 0; column < 16; ++column) {
-                if (column < 4 && row < 6) problem.grid.values[problem.grid.index(column, row)] = 1;
-                else if (row >= 10 && column >= 8) problem.grid.values[problem.grid.index(column, row)] = 2;
+                if (column < 4 && row < 6)
+                    problem.grid.values[problem.grid.index(column, row)] = 1;
+                else if (row >= 10 && column >= 8)
+                    problem.grid.values[problem.grid.index(column, row)] = 2;
             }
         problem.grid.values[problem.grid.index(2, 12)] = 9;
-        problem.classes = ClassTable({{1, "wood", 0, 0.5, 5.0, true}, {2, "grass", 0, 1.0, 10.0, true},
-                                      {3, "road", 0, 3.0, 20.0, true}, {9, "pond", 0, 0.0, 5.0, false}});
+        problem.classes = ClassTable({{1, "wood", 0, 0.5, 5.0, true},
+                                      {2, "grass", 0, 1.0, 10.0, true},
+                                      {3, "road", 0, 3.0, 20.0, true},
+                                      {9, "pond", 0, 0.0, 5.0, false}});
         problem.starts = {{7.0, -7.0}, {70.0, -70.0}};
         const Plan plan = planOf(problem);
         QCOMPARE(plan.cells.frame().levels, 3);
         QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
         std::set<int> levels;
-        for (const Cell& cell : plan.cells.cells()) levels.insert(cell.level);
+        for (const Cell& cell : plan.cells.cells())
+            levels.insert(cell.level);
         QCOMPARE(levels.size(), std::size_t{3});
     }
 };

@@ -11,7 +11,8 @@
 
 namespace mcpp::test {
 
-inline Cell makeCell(const GridFrame& frame, int column, int row, int span, std::int32_t classValue, double speed) {
+inline Cell makeCell(const GridFrame& frame, int column, int row, int span, std::int32_t classValue,
+                     double speed) {
     Cell cell;
     cell.column = column;
     cell.row = row;
@@ -91,7 +92,8 @@ inline Plan makeFixturePlan(double originX = 301900.0, double originY = 4154080.
     plan.paths = {first, second};
 
     PlanMetrics& metrics = plan.metrics;
-    metrics.robots = {RobotMetrics{0, 2, 200.0, 40.0, 80.0, 80.0, 3}, RobotMetrics{1, 1, 400.0, 40.0, 33.33, 53.3, 4}};
+    metrics.robots = {RobotMetrics{0, 2, 200.0, 40.0, 80.0, 80.0, 3},
+                      RobotMetrics{1, 1, 400.0, 40.0, 33.33, 53.3, 4}};
     metrics.makespanSeconds = 80.0;
     metrics.lowerBoundSeconds = 66.65;
     metrics.ratio = 80.0 / 66.65;

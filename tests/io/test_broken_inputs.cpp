@@ -6,13 +6,11 @@
 #include "io/Mission.hpp"
 #include "tests/support/TestData.hpp"
 
-#include <gdal_priv.h>
-
 #include <QTemporaryDir>
 #include <QTest>
-
 #include <filesystem>
 #include <fstream>
+#include <gdal_priv.h>
 
 using namespace mcpp;
 using namespace mcpp::io;
@@ -36,21 +34,20 @@ std::string readBytes(const std::string& path) {
 void expectOneLineError(const std::string& error, const std::string& mustContain) {
     QVERIFY2(!error.empty(), "empty error");
     QVERIFY2(error.find('\n') == std::string::npos, error.c_str());
-    QVERIFY2(error.find(mustContain) != std::string::npos, (error + "  [expected: " + mustContain + "]").c_str());
+    QVERIFY2(error.find(mustContain) != std::string::npos,
+             (error + "  [expected: " + mustContain + "]").c_str());
 }
-
-
 
 } // namespace
 
 class BrokenInputsTest : public QObject {
     Q_OBJECT
 
-private:
+  private:
     QTemporaryDir folder_;
     std::string file(const char* name) const { return folder_.filePath(name).toStdString(); }
 
-private slots:
+  private slots:
     void truncatedTiff() {
         const std::string path = file("truncated.tif");
         writeBytes(path, readBytes(testDataPath("landcover/nlcd.tif")).substr(0, 4000));
@@ -86,7 +83,8 @@ private slots:
         const std::string locked = file("locked.tif");
         std::filesystem::copy_file(testDataPath("landcover/nrcan_landcover2015_example.tif"), locked);
         std::filesystem::permissions(locked, std::filesystem::perms::none);
-        if (std::ifstream(locked).good()) QSKIP("running as root: permissions do not stop reading");
+        if (std::ifstream(locked).good())
+            QSKIP("running as root: permissions do not stop reading");
         auto denied = loadLandCoverRaster(locked);
         QVERIFY(!denied.ok());
         expectOneLineError(denied.error(), "cannot be read");
@@ -95,10 +93,12 @@ private slots:
     void rgbImage() {
         const std::string path = file("photo.tif");
         GDALAllRegister();
-        GDALDataset* dataset = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), 8, 8, 3, GDT_Byte, nullptr);
+        GDALDataset* dataset = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), 8, 8, 3,
+                                                                                        GDT_Byte, nullptr);
         QVERIFY(dataset != nullptr);
         const GDALColorInterp colours[3] = {GCI_RedBand, GCI_GreenBand, GCI_BlueBand};
-        for (int band = 1; band <= 3; ++band) dataset->GetRasterBand(band)->SetColorInterpretation(colours[band - 1]);
+        for (int band = 1; band <= 3; ++band)
+            dataset->GetRasterBand(band)->SetColorInterpretation(colours[band - 1]);
         GDALClose(dataset);
         auto loaded = loadLandCoverRaster(path);
         QVERIFY(!loaded.ok());
@@ -110,7 +110,8 @@ private slots:
 
     void rotatedGeotransform() {
         const std::string path = file("rotated.tif");
-        GDALDataset* dataset = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), 4, 4, 1, GDT_Byte, nullptr);
+        GDALDataset* dataset = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), 4, 4, 1,
+                                                                                        GDT_Byte, nullptr);
         double transform[6] = {0, 10, 2, 0, 2, -10};
         dataset->SetGeoTransform(transform);
         GDALClose(dataset);
@@ -131,7 +132,8 @@ private slots:
         QTest::addColumn<QString>("to");
         QTest::addColumn<QString>("path");
         for (const MissionMutation& mutation : missionMutations()) {
-            QTest::newRow(mutation.name) << QString(mutation.from) << QString(mutation.to) << QString(mutation.path);
+            QTest::newRow(mutation.name)
+                << QString(mutation.from) << QString(mutation.to) << QString(mutation.path);
         }
     }
 
@@ -171,7 +173,8 @@ private slots:
     void brokenLegendFilesBesideARasterAreOnlyWarnings() {
         const std::filesystem::path folder = folder_.filePath("legend").toStdString();
         std::filesystem::create_directories(folder);
-        std::filesystem::copy_file(testDataPath("landcover/nrcan_landcover2015_example.tif"), folder / "map.tif");
+        std::filesystem::copy_file(testDataPath("landcover/nrcan_landcover2015_example.tif"),
+                                   folder / "map.tif");
         writeBytes((folder / "map.qml").string(), "<qgis><renderer-v2><categories><category value=");
         auto loaded = loadLandCoverRaster((folder / "map.tif").string());
         QVERIFY(loaded.ok());
@@ -179,7 +182,8 @@ private slots:
         QVERIFY(loaded.value().legend.empty());
         // A good CSV legend beside it is used.
         std::filesystem::remove(folder / "map.qml");
-        std::filesystem::copy_file(testDataPath("legends/nrcan_canada_landcover_2015.csv"), folder / "map.csv");
+        std::filesystem::copy_file(testDataPath("legends/nrcan_canada_landcover_2015.csv"),
+                                   folder / "map.csv");
         auto withCsv = loadLandCoverRaster((folder / "map.tif").string());
         QVERIFY(withCsv.ok());
         QCOMPARE(withCsv.value().legendSource, std::string("csv"));

@@ -5,7 +5,6 @@
 
 #include <QTemporaryDir>
 #include <QTest>
-
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -18,13 +17,15 @@ namespace {
 
 ClassTable preset(const std::string& name) {
     auto table = presetClassTable(name);
-    if (!table) qFatal("%s", table.error().c_str());
+    if (!table)
+        qFatal("%s", table.error().c_str());
     return table.value();
 }
 
 LoadedRaster load(const std::string& relative) {
     auto raster = loadLandCoverRaster(testDataPath(relative));
-    if (!raster) qFatal("%s", raster.error().c_str());
+    if (!raster)
+        qFatal("%s", raster.error().c_str());
     return std::move(raster.value());
 }
 
@@ -38,9 +39,12 @@ std::vector<std::vector<std::string>> readCsv(const std::string& relative) {
         std::vector<std::string> fields(1);
         bool quoted = false;
         for (const char character : line) {
-            if (character == '"') quoted = !quoted;
-            else if (character == ',' && !quoted) fields.emplace_back();
-            else if (character != '\r') fields.back() += character;
+            if (character == '"')
+                quoted = !quoted;
+            else if (character == ',' && !quoted)
+                fields.emplace_back();
+            else if (character != '\r')
+                fields.back() += character;
         }
         rows.push_back(fields);
     }
@@ -48,7 +52,8 @@ std::vector<std::vector<std::string>> readCsv(const std::string& relative) {
 }
 
 std::uint32_t rgb(int red, int green, int blue) {
-    return (static_cast<std::uint32_t>(red) << 16U) | (static_cast<std::uint32_t>(green) << 8U) | static_cast<std::uint32_t>(blue);
+    return (static_cast<std::uint32_t>(red) << 16U) | (static_cast<std::uint32_t>(green) << 8U) |
+           static_cast<std::uint32_t>(blue);
 }
 
 void writeText(const std::string& path, const std::string& text) {
@@ -61,10 +66,11 @@ void writeText(const std::string& path, const std::string& text) {
 class ClassTablesTest : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void everyPresetIsListedAndValid() {
-        const std::set<std::string> expected{"esa-worldcover", "nlcd",     "nlcd-simplified",   "corine",
-                                             "corine-grid",    "canada-landcover", "copernicus-glc100", "paper"};
+        const std::set<std::string> expected{
+            "esa-worldcover",    "nlcd", "nlcd-simplified", "corine", "corine-grid", "canada-landcover",
+            "copernicus-glc100", "paper"};
         std::set<std::string> listed;
         for (const PresetInfo& info : classTablePresets()) {
             listed.insert(info.name);
@@ -74,7 +80,8 @@ private slots:
             QVERIFY(table.size() >= 6);
             for (const LandCoverClass& entry : table.classes()) {
                 QVERIFY(!entry.name.empty());
-                if (entry.isTraversable()) QVERIFY(entry.fieldOfViewMetres >= 5.0 && entry.fieldOfViewMetres <= 20.0);
+                if (entry.isTraversable())
+                    QVERIFY(entry.fieldOfViewMetres >= 5.0 && entry.fieldOfViewMetres <= 20.0);
             }
         }
         QVERIFY(listed == expected);
@@ -86,16 +93,22 @@ private slots:
 
     void waterSnowAndBuiltUpAreNotDrivable() {
         const std::vector<std::pair<std::string, std::vector<std::int32_t>>> blocked{
-            {"esa-worldcover", {50, 70, 80}}, {"nlcd", {11, 12, 23, 24}}, {"nlcd-simplified", {1}},
-            {"corine", {111, 335, 511, 512, 523}}, {"corine-grid", {1, 34, 40, 41, 44}}, {"canada-landcover", {17, 18, 19}},
+            {"esa-worldcover", {50, 70, 80}},
+            {"nlcd", {11, 12, 23, 24}},
+            {"nlcd-simplified", {1}},
+            {"corine", {111, 335, 511, 512, 523}},
+            {"corine-grid", {1, 34, 40, 41, 44}},
+            {"canada-landcover", {17, 18, 19}},
             {"copernicus-glc100", {50, 70, 80, 200}}};
         for (const auto& [name, values] : blocked) {
             const ClassTable table = preset(name);
             for (const std::int32_t value : values) {
-                QVERIFY2(table.find(value) != nullptr && !table.find(value)->isTraversable(), (name + " " + std::to_string(value)).c_str());
+                QVERIFY2(table.find(value) != nullptr && !table.find(value)->isTraversable(),
+                         (name + " " + std::to_string(value)).c_str());
             }
         }
-        QVERIFY(preset("corine").find(122)->speedMetresPerSecond > preset("corine").find(311)->speedMetresPerSecond);
+        QVERIFY(preset("corine").find(122)->speedMetresPerSecond >
+                preset("corine").find(311)->speedMetresPerSecond);
     }
 
     void paperPresetNeedsSeveralQuadtreeLevels() {
@@ -127,7 +140,8 @@ private slots:
             QCOMPARE(byGrid->name, row[4]);
             QCOMPARE(byCode->name, row[4]);
             const std::string& colour = row[5]; // "230-000-077"
-            const std::uint32_t expected = rgb(std::stoi(colour.substr(0, 3)), std::stoi(colour.substr(4, 3)), std::stoi(colour.substr(8, 3)));
+            const std::uint32_t expected = rgb(std::stoi(colour.substr(0, 3)), std::stoi(colour.substr(4, 3)),
+                                               std::stoi(colour.substr(8, 3)));
             QCOMPARE(byGrid->colorRgb, expected);
             QCOMPARE(byCode->colorRgb, expected);
             QCOMPARE(byGrid->speedMetresPerSecond, byCode->speedMetresPerSecond);
@@ -144,7 +158,8 @@ private slots:
         }
         const ClassTable simplified = preset("nlcd-simplified");
         for (const auto& row : readCsv("legends/spDataLarge_nlcd_simplified_categories.csv")) {
-            if (row[0] == "0") continue; // "NA"
+            if (row[0] == "0")
+                continue; // "NA"
             QCOMPARE(simplified.find(std::stoi(row[0]))->name, row[1]);
         }
     }
@@ -156,7 +171,8 @@ private slots:
         QCOMPARE(table.find(4)->name, std::string("Forest"));
         QCOMPARE(table.find(4)->colorRgb, 0x68aa63U);
         QVERIFY(!table.find(1)->isTraversable());
-        QCOMPARE(table.find(4)->speedMetresPerSecond, preset("nlcd-simplified").find(4)->speedMetresPerSecond);
+        QCOMPARE(table.find(4)->speedMetresPerSecond,
+                 preset("nlcd-simplified").find(4)->speedMetresPerSecond);
 
         const LoadedRaster clc = load("landcover/corine-spain/clc.tif");
         const ClassTable spanish = classTableForRaster(clc, "corine");
@@ -176,7 +192,8 @@ private slots:
         QCOMPARE(merged.size(), std::size_t{8});
         QCOMPARE(merged.find(4)->name, std::string("Pine forest"));
         QCOMPARE(merged.find(4)->speedMetresPerSecond, 0.4);
-        QCOMPARE(merged.find(2)->speedMetresPerSecond, preset("nlcd-simplified").find(2)->speedMetresPerSecond);
+        QCOMPARE(merged.find(2)->speedMetresPerSecond,
+                 preset("nlcd-simplified").find(2)->speedMetresPerSecond);
         QCOMPARE(missionClassTable(own, "", nlcd), own);
         QCOMPARE(missionClassTable({}, "", nlcd), classTableForRaster(nlcd));
     }
@@ -244,7 +261,8 @@ private slots:
             {"value,name,speed_mps,fov_m\n1,a,1,10\n", {"line 1", "passable"}},
             {"value,name,speed_mps,fov_m,passable,colour,weight\n", {"line 1", "column 7", "weight"}},
             {"value,name,speed_mps,fov_m,passable\n1,a,fast,10,true\n", {"line 2", "speed_mps", "fast"}},
-            {"value,name,speed_mps,fov_m,passable\n1,a,1,10,true\n2,b,1,10,maybe\n", {"line 3", "passable", "maybe"}},
+            {"value,name,speed_mps,fov_m,passable\n1,a,1,10,true\n2,b,1,10,maybe\n",
+             {"line 3", "passable", "maybe"}},
             {"value,name,speed_mps,fov_m,passable\n1.5,a,1,10,true\n", {"line 2", "value"}},
             {"value,name,speed_mps,fov_m,passable\n1,a,1,10,true\n1,b,1,10,true\n", {"line 3", "repeats"}},
             {"value,name,speed_mps,fov_m,passable\n1,a,1,10\n", {"line 2", "expected 5 fields"}},
@@ -260,7 +278,8 @@ private slots:
             const std::string& error = loaded.error();
             QVERIFY2(error.rfind(path, 0) == 0, error.c_str());
             QVERIFY2(error.find('\n') == std::string::npos, error.c_str());
-            for (const std::string& fragment : fragments) QVERIFY2(error.find(fragment) != std::string::npos, error.c_str());
+            for (const std::string& fragment : fragments)
+                QVERIFY2(error.find(fragment) != std::string::npos, error.c_str());
         }
         QVERIFY(!loadClassTableCsv(folder.filePath("missing.csv").toStdString()).ok());
     }

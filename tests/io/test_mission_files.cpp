@@ -9,7 +9,6 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
-
 #include <filesystem>
 #include <fstream>
 
@@ -34,7 +33,8 @@ Mission sampleMission() {
     mission.band = 1;
     mission.preset = "nlcd-simplified";
     mission.classes = presetClassTable("nlcd-simplified").value();
-    mission.classes.set(LandCoverClass{9, "Ünïcode \"quoted\", with comma", 0x0a0b0c, 0.1 + 0.2, 1.0 / 3.0, true});
+    mission.classes.set(
+        LandCoverClass{9, "Ünïcode \"quoted\", with comma", 0x0a0b0c, 0.1 + 0.2, 1.0 / 3.0, true});
     mission.missingClassesAsObstacles = true;
     mission.robots = {RobotSpec{"alpha", {318819.349, 4132665.467}, ""},
                       RobotSpec{"beta", {-113.05, 37.3}, "EPSG:4326"},
@@ -72,7 +72,7 @@ void compareMissions(const Mission& a, const Mission& b) {
 class MissionFilesTest : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void saveLoadSaveIsByteIdentical() {
         QTemporaryDir folder;
         const std::string first = folder.filePath("mission.json").toStdString();
@@ -137,7 +137,8 @@ private slots:
     void rasterPathIsRelativeToTheMissionFile() {
         Mission mission;
         mission.rasterPath = "../data/map.tif";
-        QCOMPARE(resolveRasterPath(mission, "/projects/site/missions/m.json"), std::string("/projects/site/data/map.tif"));
+        QCOMPARE(resolveRasterPath(mission, "/projects/site/missions/m.json"),
+                 std::string("/projects/site/data/map.tif"));
         mission.rasterPath = "/abs/map.tif";
         QCOMPARE(resolveRasterPath(mission, "/projects/m.json"), std::string("/abs/map.tif"));
         mission.rasterPath = "map.tif";
@@ -156,7 +157,9 @@ private slots:
         QVERIFY(failed.error().find(elsewhere) != std::string::npos);
         QCOMPARE(readBytes(path), before);
         int files = 0;
-        for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder.path().toStdString())) ++files;
+        for ([[maybe_unused]] const auto& entry :
+             std::filesystem::directory_iterator(folder.path().toStdString()))
+            ++files;
         QCOMPARE(files, 1);
     }
 };

@@ -4,18 +4,16 @@
 #include "PlanFixture.hpp"
 #include "io/PlanExport.hpp"
 
-#include <gdal_priv.h>
-#include <ogrsf_frmts.h>
-
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
-
 #include <fstream>
+#include <gdal_priv.h>
 #include <map>
+#include <ogrsf_frmts.h>
 
 using namespace mcpp;
 using namespace mcpp::io;
@@ -29,25 +27,31 @@ using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
 
 Dataset openVector(const std::string& path) {
     GDALAllRegister();
-    return Dataset(GDALDataset::FromHandle(GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    return Dataset(GDALDataset::FromHandle(
+        GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
 }
 
 QJsonObject readJson(const std::string& path) {
     QFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::ReadOnly)) return {};
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
     return QJsonDocument::fromJson(file.readAll()).object();
 }
 
-GeoReference utm12() { return GeoReference::fromDefinition("EPSG:26912").value(); }
+GeoReference utm12() {
+    return GeoReference::fromDefinition("EPSG:26912").value();
+}
 
 // Largest distance in degrees between a line's vertices and the plan's waypoints taken to WGS84.
 double lineError(const OGRLineString& line, const CoveragePath& path, const GeoReference& reference) {
-    if (static_cast<std::size_t>(line.getNumPoints()) != path.waypoints.size()) return 1.0;
+    if (static_cast<std::size_t>(line.getNumPoints()) != path.waypoints.size())
+        return 1.0;
     double worst = 0.0;
     for (int i = 0; i < line.getNumPoints(); ++i) {
         const Waypoint& waypoint = path.waypoints[static_cast<std::size_t>(i)];
         const LonLat expected = reference.toWgs84({waypoint.x, waypoint.y}).value();
-        worst = std::max({worst, std::abs(line.getX(i) - expected.longitude), std::abs(line.getY(i) - expected.latitude)});
+        worst = std::max(
+            {worst, std::abs(line.getX(i) - expected.longitude), std::abs(line.getY(i) - expected.latitude)});
     }
     return worst;
 }
@@ -64,8 +68,10 @@ double areaInCrs(const OGRGeometry& geometry, const GeoReference& reference) {
     std::unique_ptr<OGRCoordinateTransformation> back(OGRCreateCoordinateTransformation(&wgs84, &crs));
     copy->transform(back.get());
     const auto type = wkbFlatten(copy->getGeometryType());
-    if (type == wkbPolygon) return copy->toPolygon()->get_Area();
-    if (type == wkbMultiPolygon) return copy->toMultiPolygon()->get_Area();
+    if (type == wkbPolygon)
+        return copy->toPolygon()->get_Area();
+    if (type == wkbMultiPolygon)
+        return copy->toMultiPolygon()->get_Area();
     return -1.0;
 }
 
@@ -74,16 +80,18 @@ double areaInCrs(const OGRGeometry& geometry, const GeoReference& reference) {
 class PlanExportTest : public QObject {
     Q_OBJECT
 
-private:
+  private:
     Plan plan_ = test::makeFixturePlan();
     GeoReference reference_ = utm12();
     ClassTable classes_;
     QTemporaryDir folder_;
 
-    ExportContext context(ExportSettings settings = {}) const { return ExportContext{plan_, reference_, classes_, settings}; }
+    ExportContext context(ExportSettings settings = {}) const {
+        return ExportContext{plan_, reference_, classes_, settings};
+    }
     std::string file(const char* name) const { return folder_.filePath(name).toStdString(); }
 
-private slots:
+  private slots:
     void geoJsonReadsBackWithOgr() {
         const std::string path = file("plan.geojson");
         Status written = writePlanGeoJson(context(), path);
@@ -103,7 +111,8 @@ private slots:
                 const auto& metrics = plan_.metrics.robots[static_cast<std::size_t>(robot)];
                 QCOMPARE(feature->GetFieldAsDouble("area_m2"), metrics.areaSquareMetres);
                 QCOMPARE(feature->GetFieldAsInteger("cells"), metrics.cells);
-                QCOMPARE(feature->GetFieldAsDouble("cost_s"), plan_.regions.costSeconds[static_cast<std::size_t>(robot)]);
+                QCOMPARE(feature->GetFieldAsDouble("cost_s"),
+                         plan_.regions.costSeconds[static_cast<std::size_t>(robot)]);
                 QVERIFY(std::abs(areaInCrs(*geometry, reference_) - metrics.areaSquareMetres) < 0.01);
             } else if (kind == "path") {
                 const CoveragePath& coverage = plan_.paths[static_cast<std::size_t>(robot)];
@@ -135,11 +144,13 @@ private slots:
         for (const QJsonValue& value : features) {
             const QJsonObject feature = value.toObject();
             QVERIFY(feature["properties"].toObject().contains("kind"));
-            if (feature["properties"].toObject()["kind"].toString() != "region") continue;
+            if (feature["properties"].toObject()["kind"].toString() != "region")
+                continue;
             const QJsonObject geometry = feature["geometry"].toObject();
             const QString type = geometry["type"].toString();
             QVERIFY(type == "Polygon" || type == "MultiPolygon");
-            const QJsonArray polygon = type == "Polygon" ? geometry["coordinates"].toArray() : geometry["coordinates"].toArray()[0].toArray();
+            const QJsonArray polygon = type == "Polygon" ? geometry["coordinates"].toArray()
+                                                         : geometry["coordinates"].toArray()[0].toArray();
             const QJsonArray ring = polygon[0].toArray();
             double twiceArea = 0.0;
             for (qsizetype i = 0; i + 1 < ring.size(); ++i) {
@@ -155,7 +166,9 @@ private slots:
         QVERIFY(writePlanGeoJson(context(), path).ok());
         Dataset dataset = openVector(path);
         for (auto& feature : *dataset->GetLayer(0)) {
-            if (std::string(feature->GetFieldAsString("kind")) != "region" || feature->GetFieldAsInteger("robot") != 0) continue;
+            if (std::string(feature->GetFieldAsString("kind")) != "region" ||
+                feature->GetFieldAsInteger("robot") != 0)
+                continue;
             // NW + NE dissolved into one 20 x 10 m rectangle: one polygon, no hole, no inner edge.
             const OGRGeometry* geometry = feature->GetGeometryRef();
             QCOMPARE(wkbFlatten(geometry->getGeometryType()), wkbPolygon);
@@ -170,7 +183,8 @@ private slots:
         QVERIFY2(written.ok(), written.error().c_str());
         Dataset dataset = openVector(path);
         QVERIFY(dataset != nullptr);
-        const std::map<std::string, GIntBig> counts{{"regions", 2}, {"paths", 2}, {"starts", 2}, {"cells", 4}, {"unreachable", 1}};
+        const std::map<std::string, GIntBig> counts{
+            {"regions", 2}, {"paths", 2}, {"starts", 2}, {"cells", 4}, {"unreachable", 1}};
         for (const auto& [name, count] : counts) {
             OGRLayer* layer = dataset->GetLayerByName(name.c_str());
             QVERIFY2(layer != nullptr, name.c_str());
@@ -180,7 +194,8 @@ private slots:
         }
         OGRLayer* paths = dataset->GetLayerByName("paths");
         for (auto& feature : *paths) {
-            const CoveragePath& coverage = plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot"))];
+            const CoveragePath& coverage =
+                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot"))];
             const OGRLineString* line = feature->GetGeometryRef()->toLineString();
             QCOMPARE(static_cast<std::size_t>(line->getNumPoints()), coverage.waypoints.size());
             for (int i = 0; i < line->getNumPoints(); ++i) {
@@ -195,7 +210,8 @@ private slots:
             QCOMPARE(feature->GetFieldAsInteger("class"), cell.classValue);
             QCOMPARE(feature->GetFieldAsDouble("fov"), cell.size / 2);
             QCOMPARE(feature->GetFieldAsDouble("speed"), cell.speedMetresPerSecond);
-            QCOMPARE(feature->GetFieldAsInteger("robot"), plan_.regions.robotOfCell[static_cast<std::size_t>(index)]);
+            QCOMPARE(feature->GetFieldAsInteger("robot"),
+                     plan_.regions.robotOfCell[static_cast<std::size_t>(index)]);
             QCOMPARE(feature->GetGeometryRef()->toPolygon()->get_Area(), cell.size * cell.size);
         }
         // Writing again replaces the file.
@@ -204,7 +220,8 @@ private slots:
 
     void geoPackageInFeetKeepsFeet() {
         const GeoReference feet = GeoReference::fromDefinition("EPSG:2227").value();
-        const Plan plan = test::makeFixturePlan(1828803.6576, 640081.28); // 6,000,000 ft and 2,100,000 ft in metres
+        const Plan plan =
+            test::makeFixturePlan(1828803.6576, 640081.28); // 6,000,000 ft and 2,100,000 ft in metres
         const std::string path = file("feet.gpkg");
         QVERIFY(writePlanGeoPackage(ExportContext{plan, feet, classes_, {}}, path).ok());
         Dataset dataset = openVector(path);
@@ -213,7 +230,8 @@ private slots:
         std::unique_ptr<OGRFeature> feature(starts->GetNextFeature());
         QVERIFY(feature != nullptr);
         const Waypoint& first = plan.paths[0].waypoints.front();
-        QVERIFY(std::abs(feature->GetGeometryRef()->toPoint()->getX() - first.x / feet.metresPerUnit()) < 1e-6);
+        QVERIFY(std::abs(feature->GetGeometryRef()->toPoint()->getX() - first.x / feet.metresPerUnit()) <
+                1e-6);
         QVERIFY(std::abs(first.x / feet.metresPerUnit() - (6000000.0 + 2.5 * 3937.0 / 1200.0)) < 1e-3);
     }
 
@@ -229,9 +247,10 @@ private slots:
         int robot = 0;
         for (auto& feature : *paths) {
             const OGRGeometry* geometry = feature->GetGeometryRef();
-            const OGRLineString* line = wkbFlatten(geometry->getGeometryType()) == wkbLineString
-                                            ? geometry->toLineString()
-                                            : geometry->toGeometryCollection()->getGeometryRef(0)->toLineString();
+            const OGRLineString* line =
+                wkbFlatten(geometry->getGeometryType()) == wkbLineString
+                    ? geometry->toLineString()
+                    : geometry->toGeometryCollection()->getGeometryRef(0)->toLineString();
             QVERIFY(lineError(*line, plan_.paths[static_cast<std::size_t>(robot++)], reference_) < 1e-7);
         }
         QCOMPARE(dataset->GetLayerByName("regions")->GetFeatureCount(), GIntBig{2});
@@ -253,7 +272,8 @@ private slots:
         int robot = 0;
         for (auto& feature : *routes) {
             QCOMPARE(std::string(feature->GetFieldAsString("name")), "robot " + std::to_string(robot));
-            QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(), plan_.paths[static_cast<std::size_t>(robot)], reference_) < 1e-7);
+            QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(),
+                              plan_.paths[static_cast<std::size_t>(robot)], reference_) < 1e-7);
             ++robot;
         }
         // Merged: robot 0's straight run of four points becomes two.
@@ -280,7 +300,8 @@ private slots:
         const QJsonArray robots = report["robots"].toArray();
         QCOMPARE(robots.size(), 2);
         const QJsonObject second = robots[1].toObject();
-        for (const char* key : {"robot", "cells", "area_m2", "length_m", "time_s", "turns"}) QVERIFY2(second.contains(key), key);
+        for (const char* key : {"robot", "cells", "area_m2", "length_m", "time_s", "turns"})
+            QVERIFY2(second.contains(key), key);
         QCOMPARE(second["robot"].toInt(), 1);
         QCOMPARE(second["area_m2"].toDouble(), 400.0);
         QCOMPARE(second["time_s"].toDouble(), 33.33);

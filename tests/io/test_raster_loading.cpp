@@ -5,15 +5,13 @@
 #include "io/LoadedRaster.hpp"
 #include "tests/support/TestData.hpp"
 
-#include <gdal_priv.h>
-#include <ogr_spatialref.h>
-
 #include <QTemporaryDir>
 #include <QTest>
-
 #include <cmath>
 #include <filesystem>
+#include <gdal_priv.h>
 #include <numeric>
+#include <ogr_spatialref.h>
 
 using namespace mcpp;
 using namespace mcpp::io;
@@ -23,13 +21,15 @@ namespace {
 
 LoadedRaster loadOrFail(const std::string& path, const RasterLoadOptions& options = {}) {
     auto loaded = loadLandCoverRaster(path, options);
-    if (!loaded) qFatal("%s", loaded.error().c_str());
+    if (!loaded)
+        qFatal("%s", loaded.error().c_str());
     return std::move(loaded.value());
 }
 
 const LegendEntry* legendEntry(const LoadedRaster& raster, std::int32_t value) {
     for (const LegendEntry& entry : raster.legend) {
-        if (entry.value == value) return &entry;
+        if (entry.value == value)
+            return &entry;
     }
     return nullptr;
 }
@@ -37,7 +37,8 @@ const LegendEntry* legendEntry(const LoadedRaster& raster, std::int32_t value) {
 std::int64_t insidePixels(const ClassGrid& grid) {
     std::int64_t count = 0;
     for (int row = 0; row < grid.rows; ++row) {
-        for (int column = 0; column < grid.columns; ++column) count += grid.isOutside(column, row) ? 0 : 1;
+        for (int column = 0; column < grid.columns; ++column)
+            count += grid.isOutside(column, row) ? 0 : 1;
     }
     return count;
 }
@@ -51,7 +52,8 @@ double ellipsoidRectangleArea(double west, double south, double east, double nor
     const double b2 = a * a * (1.0 - e2);
     const auto s = [&](double latitudeDegrees) {
         const double sine = std::sin(latitudeDegrees * M_PI / 180.0);
-        return sine / (2.0 * (1.0 - e2 * sine * sine)) + std::log((1.0 + e * sine) / (1.0 - e * sine)) / (4.0 * e);
+        return sine / (2.0 * (1.0 - e2 * sine * sine)) +
+               std::log((1.0 + e * sine) / (1.0 - e * sine)) / (4.0 * e);
     };
     return (east - west) * M_PI / 180.0 * b2 * (s(north) - s(south));
 }
@@ -72,11 +74,15 @@ void writeRaster(const std::string& path, int columns, int rows, GDALDataType ty
     }
     std::vector<double> values(static_cast<std::size_t>(columns * rows));
     for (int row = 0; row < rows; ++row) {
-        for (int column = 0; column < columns; ++column) values[static_cast<std::size_t>(row * columns + column)] = valueOf(column, row);
+        for (int column = 0; column < columns; ++column)
+            values[static_cast<std::size_t>(row * columns + column)] = valueOf(column, row);
     }
     GDALRasterBand* band = dataset->GetRasterBand(1);
-    if (nodata) band->SetNoDataValue(*nodata);
-    QCOMPARE(band->RasterIO(GF_Write, 0, 0, columns, rows, values.data(), columns, rows, GDT_Float64, 0, 0, nullptr), CE_None);
+    if (nodata)
+        band->SetNoDataValue(*nodata);
+    QCOMPARE(band->RasterIO(GF_Write, 0, 0, columns, rows, values.data(), columns, rows, GDT_Float64, 0, 0,
+                            nullptr),
+             CE_None);
     GDALClose(dataset);
 }
 
@@ -85,7 +91,7 @@ void writeRaster(const std::string& path, int columns, int rows, GDALDataType ty
 class RasterLoadingTest : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void nlcdUtmWithCategoryNames() {
         const LoadedRaster raster = loadOrFail(testDataPath("landcover/nlcd.tif"));
         QCOMPARE(raster.grid.columns, 1073);
@@ -100,7 +106,7 @@ private slots:
         QVERIFY(!raster.warpedFromGeographic);
         QVERIFY(!raster.coarsened);
         const std::map<std::int32_t, std::int64_t> expected{{1, 1209},   {2, 17517}, {3, 106070}, {4, 767537},
-                                                           {5, 545771}, {6, 4878},  {7, 8728},   {8, 6497}};
+                                                            {5, 545771}, {6, 4878},  {7, 8728},   {8, 6497}};
         QVERIFY(raster.classPixelCounts == expected);
         QVERIFY(raster.grid.outside.empty()); // nodata 255 does not occur
         QCOMPARE(raster.legendSource, std::string("category names + palette"));
@@ -138,14 +144,18 @@ private slots:
         QCOMPARE(raster.classPixelCounts.at(111), std::int64_t{891});
         QCOMPARE(raster.classPixelCounts.at(323), std::int64_t{114032});
         QCOMPARE(raster.classPixelCounts.at(512), std::int64_t{2881});
-        const std::int64_t total = std::accumulate(raster.classPixelCounts.begin(), raster.classPixelCounts.end(), std::int64_t{0},
-                                                   [](std::int64_t sum, const auto& entry) { return sum + entry.second; });
-        QCOMPARE(total + (raster.grid.outside.empty() ? 0 : std::count(raster.grid.outside.begin(), raster.grid.outside.end(), 1)),
+        const std::int64_t total =
+            std::accumulate(raster.classPixelCounts.begin(), raster.classPixelCounts.end(), std::int64_t{0},
+                            [](std::int64_t sum, const auto& entry) { return sum + entry.second; });
+        QCOMPARE(total + (raster.grid.outside.empty()
+                              ? 0
+                              : std::count(raster.grid.outside.begin(), raster.grid.outside.end(), 1)),
                  std::int64_t{474 * 745});
         QCOMPARE(raster.legendSource, std::string("qml"));
         QCOMPARE(legendEntry(raster, 111)->name, std::string("Tejido urbano continuo"));
         QCOMPARE(legendEntry(raster, 111)->colorRgb.value_or(0), 0xe6004dU);
-        QCOMPARE(legendEntry(raster, 312)->name, std::string("Bosques de coniferas")); // trailing newline trimmed
+        QCOMPARE(legendEntry(raster, 312)->name,
+                 std::string("Bosques de coniferas")); // trailing newline trimmed
     }
 
     void worldcoverGeographicIsWarpedToUtm() {
@@ -162,7 +172,8 @@ private slots:
         const double pixelArea = raster.grid.pixelWidth * raster.grid.pixelHeight;
         const double area = static_cast<double>(insidePixels(raster.grid)) * pixelArea;
         const double expected = ellipsoidRectangleArea(7.3, 1.5, 7.5, 1.72);
-        QVERIFY2(std::abs(area - expected) / expected < 0.005, qPrintable(QString("area %1 vs %2").arg(area).arg(expected)));
+        QVERIFY2(std::abs(area - expected) / expected < 0.005,
+                 qPrintable(QString("area %1 vs %2").arg(area).arg(expected)));
         // The share of water keeps its size through the warp.
         const double water = static_cast<double>(raster.classPixelCounts.at(80)) * pixelArea;
         const double expectedWater = expected * 4721334.0 / 6336000.0;
@@ -190,7 +201,8 @@ private slots:
         QCOMPARE(raster.grid.rows, 325);
         QCOMPARE(raster.georeference.authorityCode(), std::string("EPSG:2056"));
         QVERIFY(std::abs(raster.grid.pixelWidth - 100.005124296245782) < 1e-9);
-        QCOMPARE(std::count(raster.grid.outside.begin(), raster.grid.outside.end(), 1), std::ptrdiff_t{76111});
+        QCOMPARE(std::count(raster.grid.outside.begin(), raster.grid.outside.end(), 1),
+                 std::ptrdiff_t{76111});
         QCOMPARE(raster.classPixelCounts.at(12), std::int64_t{45681});
         QCOMPARE(raster.classPixelCounts.at(41), std::int64_t{77});
         QCOMPARE(raster.classPixelCounts.count(255), std::size_t{0});
@@ -202,7 +214,8 @@ private slots:
         QTemporaryDir folder;
         const std::string path = folder.filePath("feet.tif").toStdString();
         const double transform[6] = {6000000.0, 100.0, 0.0, 2100000.0, 0.0, -100.0};
-        writeRaster(path, 10, 8, GDT_Byte, transform, "EPSG:2227", [](int column, int) { return 1 + column % 3; });
+        writeRaster(path, 10, 8, GDT_Byte, transform, "EPSG:2227",
+                    [](int column, int) { return 1 + column % 3; });
         const LoadedRaster raster = loadOrFail(path);
         const double usFoot = 1200.0 / 3937.0;
         QVERIFY(std::abs(raster.georeference.metresPerUnit() - usFoot) < 1e-12);
@@ -218,7 +231,8 @@ private slots:
         OGRSpatialReference wgs84;
         wgs84.SetWellKnownGeogCS("WGS84");
         wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-        std::unique_ptr<OGRCoordinateTransformation> transformation(OGRCreateCoordinateTransformation(&feet, &wgs84));
+        std::unique_ptr<OGRCoordinateTransformation> transformation(
+            OGRCreateCoordinateTransformation(&feet, &wgs84));
         double x = 6000000.0, y = 2100000.0;
         QVERIFY(transformation->Transform(1, &x, &y));
         auto lonLat = raster.georeference.toWgs84({raster.grid.originX, raster.grid.originY});
@@ -232,7 +246,8 @@ private slots:
         QTemporaryDir folder;
         const std::string path = folder.filePath("nocrs.tif").toStdString();
         const double transform[6] = {1000.0, 2.0, 0.0, 500.0, 0.0, -2.0};
-        writeRaster(path, 6, 4, GDT_Int16, transform, nullptr, [](int column, int row) { return column + row; });
+        writeRaster(path, 6, 4, GDT_Int16, transform, nullptr,
+                    [](int column, int row) { return column + row; });
         const LoadedRaster raster = loadOrFail(path);
         QVERIFY(!raster.georeference.hasCrs());
         QCOMPARE(raster.grid.pixelWidth, 2.0);
@@ -245,8 +260,12 @@ private slots:
         QTemporaryDir folder;
         const std::string path = folder.filePath("float.tif").toStdString();
         const double transform[6] = {500000.0, 10.0, 0.0, 4000000.0, 0.0, -10.0};
-        writeRaster(path, 5, 5, GDT_Float32, transform, "EPSG:32633",
-                    [](int column, int row) { return row == 0 && column == 0 ? -9999.0 : 10.0 * (1 + (column + row) % 2); }, -9999.0);
+        writeRaster(
+            path, 5, 5, GDT_Float32, transform, "EPSG:32633",
+            [](int column, int row) {
+                return row == 0 && column == 0 ? -9999.0 : 10.0 * (1 + (column + row) % 2);
+            },
+            -9999.0);
         const LoadedRaster raster = loadOrFail(path);
         QCOMPARE(raster.classPixelCounts.at(10) + raster.classPixelCounts.at(20), std::int64_t{24});
         QVERIFY(raster.grid.isOutside(0, 0));
@@ -257,7 +276,8 @@ private slots:
         QTemporaryDir folder;
         const std::string path = folder.filePath("fractions.tif").toStdString();
         const double transform[6] = {500000.0, 10.0, 0.0, 4000000.0, 0.0, -10.0};
-        writeRaster(path, 4, 4, GDT_Float64, transform, "EPSG:32633", [](int column, int) { return column * 0.25; });
+        writeRaster(path, 4, 4, GDT_Float64, transform, "EPSG:32633",
+                    [](int column, int) { return column * 0.25; });
         auto loaded = loadLandCoverRaster(path);
         QVERIFY(!loaded.ok());
         QVERIFY(loaded.error().find("fractional") != std::string::npos);
@@ -268,15 +288,19 @@ private slots:
         QTemporaryDir folder;
         const std::string path = folder.filePath("geographic.tif").toStdString();
         const double transform[6] = {10.0, 0.001, 0.0, 45.1, 0.0, -0.0005};
-        writeRaster(path, 200, 200, GDT_Byte, transform, "EPSG:4326", [](int column, int) { return column < 100 ? 1 : 2; });
+        writeRaster(path, 200, 200, GDT_Byte, transform, "EPSG:4326",
+                    [](int column, int) { return column < 100 ? 1 : 2; });
         const LoadedRaster raster = loadOrFail(path);
         QVERIFY(raster.warpedFromGeographic);
         QCOMPARE(raster.georeference.authorityCode(), std::string("EPSG:32632"));
-        const double area = static_cast<double>(insidePixels(raster.grid)) * raster.grid.pixelWidth * raster.grid.pixelHeight;
+        const double area =
+            static_cast<double>(insidePixels(raster.grid)) * raster.grid.pixelWidth * raster.grid.pixelHeight;
         const double expected = ellipsoidRectangleArea(10.0, 45.0, 10.2, 45.1);
-        QVERIFY2(std::abs(area - expected) / expected < 0.005, qPrintable(QString("area %1 vs %2").arg(area).arg(expected)));
+        QVERIFY2(std::abs(area - expected) / expected < 0.005,
+                 qPrintable(QString("area %1 vs %2").arg(area).arg(expected)));
         // Both halves keep about half the area.
-        const double ratio = static_cast<double>(raster.classPixelCounts.at(1)) / static_cast<double>(raster.classPixelCounts.at(2));
+        const double ratio = static_cast<double>(raster.classPixelCounts.at(1)) /
+                             static_cast<double>(raster.classPixelCounts.at(2));
         QVERIFY(std::abs(ratio - 1.0) < 0.02);
     }
 
@@ -316,7 +340,9 @@ private slots:
         QVERIFY(loadLandCoverRaster(copy.string()).ok());
         QCOMPARE(std::filesystem::last_write_time(copy), before);
         int files = 0;
-        for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder.path().toStdString())) ++files;
+        for ([[maybe_unused]] const auto& entry :
+             std::filesystem::directory_iterator(folder.path().toStdString()))
+            ++files;
         QCOMPARE(files, 1); // no .aux.xml or .ovr appeared
     }
 };

@@ -10,7 +10,6 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
-
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -23,7 +22,8 @@ namespace {
 
 QJsonObject readJson(const std::string& path) {
     QFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::ReadOnly)) return {};
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
     return QJsonDocument::fromJson(file.readAll()).object();
 }
 
@@ -35,16 +35,20 @@ std::set<QString> keysOf(const QJsonObject& object) {
 std::vector<std::vector<std::string>> tabRows(const std::string& path, std::string& header) {
     std::ifstream file(path);
     std::getline(file, header);
-    if (!header.empty() && header.back() == '\r') header.pop_back();
+    if (!header.empty() && header.back() == '\r')
+        header.pop_back();
     std::vector<std::vector<std::string>> rows;
     std::string line;
     while (std::getline(file, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line.empty()) continue;
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        if (line.empty())
+            continue;
         std::vector<std::string> fields;
         std::stringstream stream(line);
         std::string field;
-        while (std::getline(stream, field, '\t')) fields.push_back(field);
+        while (std::getline(stream, field, '\t'))
+            fields.push_back(field);
         rows.push_back(fields);
     }
     return rows;
@@ -55,16 +59,18 @@ std::vector<std::vector<std::string>> tabRows(const std::string& path, std::stri
 class WaypointFilesTest : public QObject {
     Q_OBJECT
 
-private:
+  private:
     Plan plan_ = test::makeFixturePlan();
     GeoReference reference_ = GeoReference::fromDefinition("EPSG:26912").value();
     ClassTable classes_;
     QTemporaryDir folder_;
 
-    ExportContext context(ExportSettings settings = {}) const { return ExportContext{plan_, reference_, classes_, settings}; }
+    ExportContext context(ExportSettings settings = {}) const {
+        return ExportContext{plan_, reference_, classes_, settings};
+    }
     std::string file(const char* name) const { return folder_.filePath(name).toStdString(); }
 
-private slots:
+  private slots:
     void mergingCollinearPoints() {
         const std::vector<Waypoint> all = exportedWaypoints(plan_.paths[0], false);
         QCOMPARE(all.size(), plan_.paths[0].waypoints.size());
@@ -78,7 +84,8 @@ private slots:
     }
 
     void qgroundControlPlanMatchesTheSampleStructure() {
-        const QJsonObject sample = readJson(testDataPath("waypoint-formats/mavsdk_qgroundcontrol_sample.plan"));
+        const QJsonObject sample =
+            readJson(testDataPath("waypoint-formats/mavsdk_qgroundcontrol_sample.plan"));
         QVERIFY(!sample.isEmpty());
         const std::string path = file("robot0.plan");
         ExportSettings settings;
@@ -102,7 +109,8 @@ private slots:
         // Every waypoint item has the keys of the sample's NAV_WAYPOINT items.
         QJsonObject sampleWaypoint;
         for (const QJsonValue& item : sampleMission["items"].toArray()) {
-            if (item.toObject()["command"].toInt() == 16) sampleWaypoint = item.toObject();
+            if (item.toObject()["command"].toInt() == 16)
+                sampleWaypoint = item.toObject();
         }
         const QJsonArray items = mission["items"].toArray();
         QCOMPARE(items.size(), static_cast<qsizetype>(plan_.paths[0].waypoints.size()));
@@ -138,7 +146,8 @@ private slots:
         int changes = 0;
         for (const QJsonValue& value : items) {
             const QJsonObject item = value.toObject();
-            if (item["command"].toInt() != 178) continue;
+            if (item["command"].toInt() != 178)
+                continue;
             ++changes;
             QCOMPARE(item["params"].toArray()[1].toDouble(), 1.0);
         }
@@ -149,12 +158,14 @@ private slots:
         QVERIFY(writeQGroundControlPlan(context(cruise), 1, path).ok());
         const QJsonObject mission = readJson(path)["mission"].toObject();
         QCOMPARE(mission["cruiseSpeed"].toDouble(), 2.0);
-        for (const QJsonValue& value : mission["items"].toArray()) QCOMPARE(value.toObject()["command"].toInt(), 16);
+        for (const QJsonValue& value : mission["items"].toArray())
+            QCOMPARE(value.toObject()["command"].toInt(), 16);
     }
 
     void waypointListMatchesQgcWpl110() {
         std::string sampleHeader;
-        const auto sample = tabRows(testDataPath("waypoint-formats/qgc_unittest_MissionPlanner.waypoints"), sampleHeader);
+        const auto sample =
+            tabRows(testDataPath("waypoint-formats/qgc_unittest_MissionPlanner.waypoints"), sampleHeader);
         const std::string path = file("robot0.waypoints");
         ExportSettings settings;
         settings.mergeCollinear = false;
@@ -188,11 +199,13 @@ private slots:
         std::getline(input, line);
         QCOMPARE(line, std::string("index,x,y,lon,lat,class,speed_mps,fov_m,cumulative_s"));
         std::vector<std::string> lines;
-        while (std::getline(input, line)) lines.push_back(line);
+        while (std::getline(input, line))
+            lines.push_back(line);
         QCOMPARE(lines.size(), plan_.paths[1].waypoints.size());
         std::vector<std::string> fields;
         std::stringstream stream(lines[2]);
-        while (std::getline(stream, line, ',')) fields.push_back(line);
+        while (std::getline(stream, line, ','))
+            fields.push_back(line);
         QCOMPARE(fields.size(), std::size_t{9});
         const Waypoint& waypoint = plan_.paths[1].waypoints[2];
         QCOMPARE(std::stod(fields[1]), waypoint.x);

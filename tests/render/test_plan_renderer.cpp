@@ -25,12 +25,14 @@ ClassGrid twoClassGrid() {
     grid.pixelHeight = 10.0;
     grid.values.resize(200);
     for (int row = 0; row < grid.rows; ++row)
-        for (int column = 0; column < grid.columns; ++column) grid.values[grid.index(column, row)] = column < 10 ? 1 : 2;
+        for (int column = 0; column < grid.columns; ++column)
+            grid.values[grid.index(column, row)] = column < 10 ? 1 : 2;
     return grid;
 }
 
 ClassTable twoClassTable() {
-    return ClassTable({LandCoverClass{1, "Meadow", kMeadow, 2.0, 10.0, true}, LandCoverClass{2, "Water", kWater, 0.0, 10.0, false}});
+    return ClassTable({LandCoverClass{1, "Meadow", kMeadow, 2.0, 10.0, true},
+                       LandCoverClass{2, "Water", kWater, 0.0, 10.0, false}});
 }
 
 // One robot going east along y = 4950 (the middle row) across the meadow half.
@@ -51,7 +53,8 @@ Plan eastboundPlan() {
 }
 
 bool near(QColor actual, QColor expected, int tolerance = 8) {
-    return std::abs(actual.red() - expected.red()) <= tolerance && std::abs(actual.green() - expected.green()) <= tolerance &&
+    return std::abs(actual.red() - expected.red()) <= tolerance &&
+           std::abs(actual.green() - expected.green()) <= tolerance &&
            std::abs(actual.blue() - expected.blue()) <= tolerance;
 }
 
@@ -60,17 +63,21 @@ bool near(QColor actual, QColor expected, int tolerance = 8) {
 class TestPlanRenderer : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void fitsKeepingAspect() {
-        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), nullptr, QSize(400, 400));
+        const QImage image =
+            render::renderPlanImage(twoClassGrid(), twoClassTable(), nullptr, QSize(400, 400));
         QCOMPARE(image.size(), QSize(400, 200));
     }
 
     void drawsLandCoverInClassColours() {
-        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), nullptr, QSize(400, 200));
+        const QImage image =
+            render::renderPlanImage(twoClassGrid(), twoClassTable(), nullptr, QSize(400, 200));
         // 2 device pixels per metre: (50, 50) is meadow, (350, 150) is water.
-        QVERIFY2(near(image.pixelColor(50, 50), QColor::fromRgb(kMeadow)), qPrintable(image.pixelColor(50, 50).name()));
-        QVERIFY2(near(image.pixelColor(350, 150), QColor::fromRgb(kWater)), qPrintable(image.pixelColor(350, 150).name()));
+        QVERIFY2(near(image.pixelColor(50, 50), QColor::fromRgb(kMeadow)),
+                 qPrintable(image.pixelColor(50, 50).name()));
+        QVERIFY2(near(image.pixelColor(350, 150), QColor::fromRgb(kWater)),
+                 qPrintable(image.pixelColor(350, 150).name()));
     }
 
     void drawsPathInRobotColourAndLeavesTheRestAlone() {
@@ -89,7 +96,8 @@ private slots:
         render::MapLayers layers;
         layers.paths = false;
         layers.starts = false;
-        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
+        const QImage image =
+            render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
         QVERIFY(near(image.pixelColor(60, 100), QColor::fromRgb(kMeadow)));
     }
 
@@ -113,7 +121,8 @@ private slots:
         plan.regions.robotOfCell = {1, -1};
         render::MapLayers layers;
         layers.quadTree = false;
-        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
+        const QImage image =
+            render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
         // The owned cell is meadow tinted towards robot 1's colour: no longer the plain class colour.
         const QColor tinted = image.pixelColor(100, 100);
         QVERIFY2(!near(tinted, QColor::fromRgb(kMeadow)), qPrintable(tinted.name()));
@@ -131,11 +140,13 @@ private slots:
         const Plan plan = eastboundPlan();
         QString error;
         const QString png = directory.filePath(QStringLiteral("plan.png"));
-        QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, png, QSize(800, 800), &error), qPrintable(error));
+        QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, png, QSize(800, 800), &error),
+                 qPrintable(error));
         QImage readBack(png);
         QCOMPARE(readBack.size(), QSize(800, 400));
         const QString svg = directory.filePath(QStringLiteral("plan.svg"));
-        QVERIFY2(render::writePlanSvg(twoClassGrid(), twoClassTable(), plan, svg, QSize(800, 800), &error), qPrintable(error));
+        QVERIFY2(render::writePlanSvg(twoClassGrid(), twoClassTable(), plan, svg, QSize(800, 800), &error),
+                 qPrintable(error));
         QFile file(svg);
         QVERIFY(file.open(QIODevice::ReadOnly));
         QVERIFY(file.readAll().contains("<svg"));
@@ -143,17 +154,22 @@ private slots:
 
     void reportsUnwritablePaths() {
         QString error;
-        QVERIFY(!render::writePlanPng(twoClassGrid(), twoClassTable(), eastboundPlan(), QStringLiteral("/nonexistent-folder/plan.png"), QSize(100, 100), &error));
+        QVERIFY(!render::writePlanPng(twoClassGrid(), twoClassTable(), eastboundPlan(),
+                                      QStringLiteral("/nonexistent-folder/plan.png"), QSize(100, 100),
+                                      &error));
         QVERIFY(error.contains(QStringLiteral("/nonexistent-folder/plan.png")));
         error.clear();
-        QVERIFY(!render::writePlanSvg(twoClassGrid(), twoClassTable(), eastboundPlan(), QStringLiteral("/nonexistent-folder/plan.svg"), QSize(100, 100), &error));
+        QVERIFY(!render::writePlanSvg(twoClassGrid(), twoClassTable(), eastboundPlan(),
+                                      QStringLiteral("/nonexistent-folder/plan.svg"), QSize(100, 100),
+                                      &error));
         QVERIFY(!error.isEmpty());
     }
 
     void robotColoursAreDistinct() {
         QVERIFY(render::RobotPalette::size() >= 12);
         for (int a = 0; a < render::RobotPalette::size(); ++a)
-            for (int b = a + 1; b < render::RobotPalette::size(); ++b) QVERIFY(render::RobotPalette::colour(a) != render::RobotPalette::colour(b));
+            for (int b = a + 1; b < render::RobotPalette::size(); ++b)
+                QVERIFY(render::RobotPalette::colour(a) != render::RobotPalette::colour(b));
     }
 };
 

@@ -16,20 +16,24 @@ std::string text(const std::string& what, double a, double b) {
     return out.str();
 }
 
-std::string cellName(int id) { return "cell " + std::to_string(id); }
+std::string cellName(int id) {
+    return "cell " + std::to_string(id);
+}
 
 // The sub-cell of a cell that holds bottom position (column, row) of the frame.
 SubCell subCellHolding(const Cell& cell, long long column, long long row) {
     const bool east = 2 * (column - cell.column) >= cell.span;
     const bool south = 2 * (row - cell.row) >= cell.span;
-    if (south) return east ? SubCell::SouthEast : SubCell::SouthWest;
+    if (south)
+        return east ? SubCell::SouthEast : SubCell::SouthWest;
     return east ? SubCell::NorthEast : SubCell::NorthWest;
 }
 
 // Which cell owns each bottom position of the frame (-1: none); reports overlaps.
 std::vector<int> occupancy(const CellGraph& graph, std::vector<std::string>& violations) {
     const GridFrame& frame = graph.frame();
-    std::vector<int> owner(static_cast<std::size_t>(frame.columns) * static_cast<std::size_t>(frame.rows), -1);
+    std::vector<int> owner(static_cast<std::size_t>(frame.columns) * static_cast<std::size_t>(frame.rows),
+                           -1);
     for (std::size_t id = 0; id < graph.size(); ++id) {
         const Cell& cell = graph.cell(static_cast<int>(id));
         for (long long r = cell.row; r < cell.row + cell.span && r < frame.rows; ++r)
@@ -60,7 +64,9 @@ std::vector<char> reachableFromStarts(const Plan& plan) {
     std::vector<char> reachable(graph.size(), 0);
     std::vector<int> queue;
     for (int start : plan.regions.startCell) {
-        if (start < 0 || static_cast<std::size_t>(start) >= graph.size() || reachable[static_cast<std::size_t>(start)]) continue;
+        if (start < 0 || static_cast<std::size_t>(start) >= graph.size() ||
+            reachable[static_cast<std::size_t>(start)])
+            continue;
         reachable[static_cast<std::size_t>(start)] = 1;
         queue.push_back(start);
     }
@@ -75,8 +81,8 @@ std::vector<char> reachableFromStarts(const Plan& plan) {
 
 bool insideCell(const Cell& cell, MapPoint point) {
     const double tolerance = 1e-6 * cell.size;
-    return point.x >= cell.minX - tolerance && point.x <= cell.maxX() + tolerance && point.y >= cell.minY - tolerance &&
-           point.y <= cell.maxY() + tolerance;
+    return point.x >= cell.minX - tolerance && point.x <= cell.maxX() + tolerance &&
+           point.y >= cell.minY - tolerance && point.y <= cell.maxY() + tolerance;
 }
 
 // (cell, sub-cell) when the waypoint sits on a sub-cell centre of its cell.
@@ -84,7 +90,8 @@ std::optional<std::pair<int, int>> subCellCentreAt(const CellGraph& graph, const
     const Cell& cell = graph.cell(waypoint.cell);
     const SubCell subCell = cell.subCellAt({waypoint.x, waypoint.y});
     const MapPoint centre = cell.subCellCentre(subCell);
-    if (std::hypot(centre.x - waypoint.x, centre.y - waypoint.y) > 1e-6 * cell.size) return std::nullopt;
+    if (std::hypot(centre.x - waypoint.x, centre.y - waypoint.y) > 1e-6 * cell.size)
+        return std::nullopt;
     return std::make_pair(waypoint.cell, static_cast<int>(subCell));
 }
 
@@ -92,10 +99,12 @@ std::optional<std::pair<int, int>> subCellCentreAt(const CellGraph& graph, const
 bool returnsToFirstCentre(const CellGraph& graph, const CoveragePath& path) {
     std::optional<std::pair<int, int>> first;
     for (const Waypoint& waypoint : path.waypoints)
-        if ((first = subCellCentreAt(graph, waypoint))) break;
+        if ((first = subCellCentreAt(graph, waypoint)))
+            break;
     std::optional<std::pair<int, int>> last;
     for (auto it = path.waypoints.rbegin(); it != path.waypoints.rend(); ++it)
-        if ((last = subCellCentreAt(graph, *it))) break;
+        if ((last = subCellCentreAt(graph, *it)))
+            break;
     return first && last && *first == *last;
 }
 
@@ -106,28 +115,38 @@ std::vector<std::string> checkCells(const Plan& plan) {
     const CellGraph& graph = plan.cells;
     const GridFrame& frame = graph.frame();
     if (graph.adjacency().cellCount() != graph.size())
-        return {"adjacency lists " + std::to_string(graph.adjacency().cellCount()) + " cells for " + std::to_string(graph.size())};
+        return {"adjacency lists " + std::to_string(graph.adjacency().cellCount()) + " cells for " +
+                std::to_string(graph.size())};
     for (std::size_t id = 0; id < graph.size(); ++id) {
         const Cell& cell = graph.cell(static_cast<int>(id));
-        if (!onPlacement(frame, cell)) violations.push_back(cellName(static_cast<int>(id)) + " is not where its placement says");
-        if (!(cell.speedMetresPerSecond > 0.0)) violations.push_back(cellName(static_cast<int>(id)) + " has no positive speed");
+        if (!onPlacement(frame, cell))
+            violations.push_back(cellName(static_cast<int>(id)) + " is not where its placement says");
+        if (!(cell.speedMetresPerSecond > 0.0))
+            violations.push_back(cellName(static_cast<int>(id)) + " has no positive speed");
         if (cell.freeSubCells == 0 || cell.freeSubCells > allSubCells)
             violations.push_back(cellName(static_cast<int>(id)) + " has no free sub-cell");
     }
-    if (!violations.empty()) return violations;
+    if (!violations.empty())
+        return violations;
     const std::vector<int> owner = occupancy(graph, violations);
-    if (!violations.empty()) return violations;
+    if (!violations.empty())
+        return violations;
     // Neighbours are exactly the cells with free sub-cells facing each other across a shared border.
     std::set<std::pair<int, int>> expected;
-    const auto at = [&](long long c, long long r) { return owner[static_cast<std::size_t>(r * frame.columns + c)]; };
+    const auto at = [&](long long c, long long r) {
+        return owner[static_cast<std::size_t>(r * frame.columns + c)];
+    };
     for (long long r = 0; r < frame.rows; ++r)
         for (long long c = 0; c < frame.columns; ++c) {
             const int a = at(c, r);
-            if (a < 0) continue;
+            if (a < 0)
+                continue;
             for (const auto& [dc, dr] : {std::pair{1, 0}, std::pair{0, 1}}) {
-                if (c + dc >= frame.columns || r + dr >= frame.rows) continue;
+                if (c + dc >= frame.columns || r + dr >= frame.rows)
+                    continue;
                 const int b = at(c + dc, r + dr);
-                if (b < 0 || b == a) continue;
+                if (b < 0 || b == a)
+                    continue;
                 if (graph.cell(a).isFree(subCellHolding(graph.cell(a), c, r)) &&
                     graph.cell(b).isFree(subCellHolding(graph.cell(b), c + dc, r + dr)))
                     expected.insert({std::min(a, b), std::max(a, b)});
@@ -137,16 +156,23 @@ std::vector<std::string> checkCells(const Plan& plan) {
     for (std::size_t id = 0; id < graph.size(); ++id) {
         std::set<int> unique;
         for (int neighbour : graph.neighbours(static_cast<int>(id))) {
-            if (!unique.insert(neighbour).second) violations.push_back(cellName(static_cast<int>(id)) + " lists a neighbour twice");
+            if (!unique.insert(neighbour).second)
+                violations.push_back(cellName(static_cast<int>(id)) + " lists a neighbour twice");
             if (!graph.areNeighbours(neighbour, static_cast<int>(id)))
-                violations.push_back("neighbour relation " + std::to_string(id) + "-" + std::to_string(neighbour) + " is one-sided");
-            listed.insert({std::min(static_cast<int>(id), neighbour), std::max(static_cast<int>(id), neighbour)});
+                violations.push_back("neighbour relation " + std::to_string(id) + "-" +
+                                     std::to_string(neighbour) + " is one-sided");
+            listed.insert(
+                {std::min(static_cast<int>(id), neighbour), std::max(static_cast<int>(id), neighbour)});
         }
     }
     for (const auto& pair : expected)
-        if (!listed.count(pair)) violations.push_back("cells " + std::to_string(pair.first) + " and " + std::to_string(pair.second) + " touch but are not neighbours");
+        if (!listed.count(pair))
+            violations.push_back("cells " + std::to_string(pair.first) + " and " +
+                                 std::to_string(pair.second) + " touch but are not neighbours");
     for (const auto& pair : listed)
-        if (!expected.count(pair)) violations.push_back("cells " + std::to_string(pair.first) + " and " + std::to_string(pair.second) + " are neighbours but do not touch");
+        if (!expected.count(pair))
+            violations.push_back("cells " + std::to_string(pair.first) + " and " +
+                                 std::to_string(pair.second) + " are neighbours but do not touch");
     return violations;
 }
 
@@ -156,18 +182,24 @@ std::vector<std::string> checkRegions(const Plan& plan, const PlannerPromises& p
     const CellGraph& graph = plan.cells;
     const std::size_t cells = graph.size();
     const std::size_t robots = plan.regions.startCell.size();
-    if (owner.size() != cells) return {"regions cover " + std::to_string(owner.size()) + " of " + std::to_string(cells) + " cells"};
+    if (owner.size() != cells)
+        return {"regions cover " + std::to_string(owner.size()) + " of " + std::to_string(cells) + " cells"};
     const std::vector<char> reachable = reachableFromStarts(plan);
     for (std::size_t cell = 0; cell < cells; ++cell) {
-        if (owner[cell] >= static_cast<int>(robots)) violations.push_back(cellName(static_cast<int>(cell)) + " names robot " + std::to_string(owner[cell]));
+        if (owner[cell] >= static_cast<int>(robots))
+            violations.push_back(cellName(static_cast<int>(cell)) + " names robot " +
+                                 std::to_string(owner[cell]));
         if (promises.everyReachableCellCovered && reachable[cell] && owner[cell] < 0)
             violations.push_back("reachable " + cellName(static_cast<int>(cell)) + " has no robot");
-        if (!reachable[cell] && owner[cell] >= 0) violations.push_back("unreachable " + cellName(static_cast<int>(cell)) + " has a robot");
+        if (!reachable[cell] && owner[cell] >= 0)
+            violations.push_back("unreachable " + cellName(static_cast<int>(cell)) + " has a robot");
     }
-    if (!promises.regionsConnected) return violations;
+    if (!promises.regionsConnected)
+        return violations;
     for (std::size_t robot = 0; robot < robots; ++robot) {
         const int start = plan.regions.startCell[robot];
-        if (start < 0 || static_cast<std::size_t>(start) >= cells || owner[static_cast<std::size_t>(start)] != static_cast<int>(robot)) {
+        if (start < 0 || static_cast<std::size_t>(start) >= cells ||
+            owner[static_cast<std::size_t>(start)] != static_cast<int>(robot)) {
             violations.push_back("robot " + std::to_string(robot) + " does not hold its start cell");
             continue;
         }
@@ -176,40 +208,49 @@ std::vector<std::string> checkRegions(const Plan& plan, const PlannerPromises& p
         seen[static_cast<std::size_t>(start)] = 1;
         for (std::size_t head = 0; head < region.size(); ++head)
             for (int neighbour : graph.neighbours(region[head]))
-                if (!seen[static_cast<std::size_t>(neighbour)] && owner[static_cast<std::size_t>(neighbour)] == static_cast<int>(robot)) {
+                if (!seen[static_cast<std::size_t>(neighbour)] &&
+                    owner[static_cast<std::size_t>(neighbour)] == static_cast<int>(robot)) {
                     seen[static_cast<std::size_t>(neighbour)] = 1;
                     region.push_back(neighbour);
                 }
-        const auto size = static_cast<std::size_t>(std::count(owner.begin(), owner.end(), static_cast<int>(robot)));
+        const auto size =
+            static_cast<std::size_t>(std::count(owner.begin(), owner.end(), static_cast<int>(robot)));
         if (region.size() != size)
-            violations.push_back("region of robot " + std::to_string(robot) + " is not connected (" + std::to_string(region.size()) +
-                                 " of " + std::to_string(size) + " cells reached from the start)");
+            violations.push_back("region of robot " + std::to_string(robot) + " is not connected (" +
+                                 std::to_string(region.size()) + " of " + std::to_string(size) +
+                                 " cells reached from the start)");
     }
     return violations;
 }
 
-std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& plan, const PlannerPromises& promises) {
+std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& plan,
+                                    const PlannerPromises& promises) {
     std::vector<std::string> violations;
     const CellGraph& graph = plan.cells;
     const auto& owner = plan.regions.robotOfCell;
-    if (plan.paths.size() != plan.regions.startCell.size()) return {"one path per robot expected"};
-    if (owner.size() != graph.size()) return {"regions do not match the cells"};
+    if (plan.paths.size() != plan.regions.startCell.size())
+        return {"one path per robot expected"};
+    if (owner.size() != graph.size())
+        return {"regions do not match the cells"};
     std::map<std::pair<int, int>, std::set<int>> visitors; // (cell, sub-cell) -> robots passing its centre
     for (std::size_t robot = 0; robot < plan.paths.size(); ++robot) {
         const CoveragePath& path = plan.paths[robot];
         const std::string who = "robot " + std::to_string(robot);
-        if (path.robot != static_cast<int>(robot)) violations.push_back(who + " path is numbered " + std::to_string(path.robot));
+        if (path.robot != static_cast<int>(robot))
+            violations.push_back(who + " path is numbered " + std::to_string(path.robot));
         if (path.waypoints.empty()) {
             violations.push_back(who + " has an empty path");
             continue;
         }
         const Waypoint& first = path.waypoints.front();
         const MapPoint start = problem.starts[robot];
-        if (!problem.settings.snapStartsToFreeCells && std::hypot(first.x - start.x, first.y - start.y) > 1e-6)
+        if (!problem.settings.snapStartsToFreeCells &&
+            std::hypot(first.x - start.x, first.y - start.y) > 1e-6)
             violations.push_back(text(who + " path does not begin at its start point", first.x, start.x));
         if (path.closed) {
             const Waypoint& last = path.waypoints.back();
-            if (std::hypot(last.x - first.x, last.y - first.y) > 1e-6) violations.push_back(who + " closed tour does not return");
+            if (std::hypot(last.x - first.x, last.y - first.y) > 1e-6)
+                violations.push_back(who + " closed tour does not return");
         }
         std::map<std::pair<int, int>, int> ownVisits;
         for (std::size_t i = 0; i < path.waypoints.size(); ++i) {
@@ -221,17 +262,22 @@ std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& 
             }
             const Cell& cell = graph.cell(waypoint.cell);
             const MapPoint point{waypoint.x, waypoint.y};
-            if (!insideCell(cell, point)) violations.push_back(where + " is not in the cell it names");
-            if (owner[static_cast<std::size_t>(waypoint.cell)] < 0) violations.push_back(where + " is in a cell no robot covers");
-            if (promises.pathsCoverOwnRegion && owner[static_cast<std::size_t>(waypoint.cell)] != static_cast<int>(robot))
+            if (!insideCell(cell, point))
+                violations.push_back(where + " is not in the cell it names");
+            if (owner[static_cast<std::size_t>(waypoint.cell)] < 0)
+                violations.push_back(where + " is in a cell no robot covers");
+            if (promises.pathsCoverOwnRegion &&
+                owner[static_cast<std::size_t>(waypoint.cell)] != static_cast<int>(robot))
                 violations.push_back(where + " names a cell outside its region");
             // The start point itself may lie anywhere on its pixel; the walk proper keeps to free sub-cells.
             const bool isStartPoint = std::hypot(waypoint.x - first.x, waypoint.y - first.y) < 1e-9;
-            if (!isStartPoint && !cell.isFree(cell.subCellAt(point))) violations.push_back(where + " enters a blocked sub-cell");
+            if (!isStartPoint && !cell.isFree(cell.subCellAt(point)))
+                violations.push_back(where + " enters a blocked sub-cell");
             if (i > 0) {
                 const int a = path.waypoints[i - 1].cell;
                 if (a != waypoint.cell && a >= 0 && !graph.areNeighbours(a, waypoint.cell))
-                    violations.push_back(who + " jumps between cells that do not touch at waypoint " + std::to_string(i));
+                    violations.push_back(who + " jumps between cells that do not touch at waypoint " +
+                                         std::to_string(i));
             }
             if (const auto visited = subCellCentreAt(graph, waypoint)) {
                 visitors[*visited].insert(static_cast<int>(robot));
@@ -239,24 +285,30 @@ std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& 
             }
         }
         int repeats = 0;
-        for (const auto& [subCell, count] : ownVisits) repeats += count - 1;
+        for (const auto& [subCell, count] : ownVisits)
+            repeats += count - 1;
         // A closed tour's return to the sub-cell it began in is no repeated coverage.
-        if (path.closed && returnsToFirstCentre(graph, path) && repeats > 0) --repeats;
+        if (path.closed && returnsToFirstCentre(graph, path) && repeats > 0)
+            --repeats;
         if (repeats != path.repeatedSubCellVisits)
-            violations.push_back(who + " reports " + std::to_string(path.repeatedSubCellVisits) + " repeated visits but makes " + std::to_string(repeats));
+            violations.push_back(who + " reports " + std::to_string(path.repeatedSubCellVisits) +
+                                 " repeated visits but makes " + std::to_string(repeats));
     }
     for (std::size_t id = 0; id < graph.size(); ++id) {
         const int robot = owner[id];
-        if (robot < 0) continue;
+        if (robot < 0)
+            continue;
         const Cell& cell = graph.cell(static_cast<int>(id));
         for (SubCell subCell : subCellsCounterClockwise) {
-            if (!cell.isFree(subCell)) continue;
+            if (!cell.isFree(subCell))
+                continue;
             const auto found = visitors.find({static_cast<int>(id), static_cast<int>(subCell)});
-            const bool passed = found != visitors.end() &&
-                                (!promises.pathsCoverOwnRegion || found->second.count(robot) != 0);
+            const bool passed =
+                found != visitors.end() && (!promises.pathsCoverOwnRegion || found->second.count(robot) != 0);
             if (!passed) {
                 const MapPoint centre = cell.subCellCentre(subCell);
-                violations.push_back(text("robot " + std::to_string(robot) + " misses a sub-cell centre of " + cellName(static_cast<int>(id)),
+                violations.push_back(text("robot " + std::to_string(robot) + " misses a sub-cell centre of " +
+                                              cellName(static_cast<int>(id)),
                                           centre.x, centre.y));
                 break;
             }
@@ -269,9 +321,11 @@ std::vector<std::string> checkTimes(const Plan& plan) {
     std::vector<std::string> violations;
     double totalCost = 0.0;
     for (std::size_t cell = 0; cell < plan.regions.robotOfCell.size(); ++cell)
-        if (plan.regions.robotOfCell[cell] >= 0) totalCost += plan.cells.cell(static_cast<int>(cell)).coverSeconds();
+        if (plan.regions.robotOfCell[cell] >= 0)
+            totalCost += plan.cells.cell(static_cast<int>(cell)).coverSeconds();
     double sumOfRegions = 0.0;
-    for (double cost : plan.regions.costSeconds) sumOfRegions += cost;
+    for (double cost : plan.regions.costSeconds)
+        sumOfRegions += cost;
     if (std::abs(sumOfRegions - totalCost) > 1e-6 * std::max(1.0, totalCost))
         violations.push_back(text("region costs do not add up to the total", sumOfRegions, totalCost));
     double makespan = 0.0;
@@ -285,13 +339,16 @@ std::vector<std::string> checkTimes(const Plan& plan) {
             length += segment;
             time += segment / 2.0 / a.speedMetresPerSecond + segment / 2.0 / b.speedMetresPerSecond;
             if (std::abs(b.cumulativeSeconds - time) > 1e-6 * std::max(1.0, time))
-                violations.push_back(text("robot " + std::to_string(path.robot) + " cumulative time wrong at waypoint " + std::to_string(i),
+                violations.push_back(text("robot " + std::to_string(path.robot) +
+                                              " cumulative time wrong at waypoint " + std::to_string(i),
                                           b.cumulativeSeconds, time));
         }
         if (std::abs(length - path.lengthMetres) > 1e-6 * std::max(1.0, length))
-            violations.push_back(text("robot " + std::to_string(path.robot) + " length", path.lengthMetres, length));
+            violations.push_back(
+                text("robot " + std::to_string(path.robot) + " length", path.lengthMetres, length));
         if (std::abs(time - path.timeSeconds) > 1e-6 * std::max(1.0, time))
-            violations.push_back(text("robot " + std::to_string(path.robot) + " time", path.timeSeconds, time));
+            violations.push_back(
+                text("robot " + std::to_string(path.robot) + " time", path.timeSeconds, time));
         makespan = std::max(makespan, time);
     }
     const PlanMetrics& metrics = plan.metrics;
@@ -305,9 +362,11 @@ std::vector<std::string> checkTimes(const Plan& plan) {
     return violations;
 }
 
-std::vector<std::string> checkAllInvariants(const PlanningProblem& problem, const Plan& plan, const PlannerPromises& promises) {
+std::vector<std::string> checkAllInvariants(const PlanningProblem& problem, const Plan& plan,
+                                            const PlannerPromises& promises) {
     std::vector<std::string> all;
-    for (auto&& part : {checkCells(plan), checkRegions(plan, promises), checkPaths(problem, plan, promises), checkTimes(plan)})
+    for (auto&& part : {checkCells(plan), checkRegions(plan, promises), checkPaths(problem, plan, promises),
+                        checkTimes(plan)})
         all.insert(all.end(), part.begin(), part.end());
     return all;
 }
@@ -322,38 +381,54 @@ std::vector<std::string> checkQuadTreeTiling(const PlanningProblem& problem, con
         const QuadCell& cell = tree.cells[index];
         if (cell.state == CellState::Auxiliary) {
             for (int child : cell.children)
-                if (child < 0) violations.push_back("auxiliary cell " + std::to_string(index) + " lacks a child");
+                if (child < 0)
+                    violations.push_back("auxiliary cell " + std::to_string(index) + " lacks a child");
             continue;
         }
         const int span = 1 << (bottom - cell.level);
-        for (long long r = static_cast<long long>(cell.row) * span; r < static_cast<long long>(cell.row + 1) * span; ++r)
-            for (long long c = static_cast<long long>(cell.column) * span; c < static_cast<long long>(cell.column + 1) * span; ++c)
+        for (long long r = static_cast<long long>(cell.row) * span;
+             r < static_cast<long long>(cell.row + 1) * span; ++r)
+            for (long long c = static_cast<long long>(cell.column) * span;
+                 c < static_cast<long long>(cell.column + 1) * span; ++c)
                 ++covered[static_cast<std::size_t>(r * columns + c)];
-        if (cell.state == CellState::Active && (cell.activeIndex < 0 || tree.activeCells[static_cast<std::size_t>(cell.activeIndex)] != static_cast<int>(index)))
-            violations.push_back("active cell " + std::to_string(index) + " is not listed under its active index");
+        if (cell.state == CellState::Active &&
+            (cell.activeIndex < 0 ||
+             tree.activeCells[static_cast<std::size_t>(cell.activeIndex)] != static_cast<int>(index)))
+            violations.push_back("active cell " + std::to_string(index) +
+                                 " is not listed under its active index");
     }
     for (std::size_t i = 0; i < covered.size(); ++i)
         if (covered[i] != 1) {
-            violations.push_back("bottom position " + std::to_string(i) + " is covered by " + std::to_string(covered[i]) + " leaves");
+            violations.push_back("bottom position " + std::to_string(i) + " is covered by " +
+                                 std::to_string(covered[i]) + " leaves");
             break;
         }
-    if (problem.settings.purityTolerance != 0.0) return violations;
+    if (problem.settings.purityTolerance != 0.0)
+        return violations;
     std::map<std::int32_t, double> rounded;
-    for (const auto& entry : tree.roundedFieldsOfView) rounded[entry.classValue] = entry.roundedMetres;
+    for (const auto& entry : tree.roundedFieldsOfView)
+        rounded[entry.classValue] = entry.roundedMetres;
     const ClassGrid& grid = problem.grid;
     for (int cellIndex : tree.activeCells) {
         const QuadCell& cell = tree.cells[static_cast<std::size_t>(cellIndex)];
-        if (cell.level == bottom) continue;
-        const int firstColumn = std::max(0, static_cast<int>(std::ceil((cell.minX - grid.originX) / grid.pixelWidth - 0.5)));
-        const int lastColumn = std::min(grid.columns, static_cast<int>(std::ceil((cell.maxX() - grid.originX) / grid.pixelWidth - 0.5)));
-        const int firstRow = std::max(0, static_cast<int>(std::ceil((grid.originY - cell.maxY()) / grid.pixelHeight - 0.5)));
-        const int lastRow = std::min(grid.rows, static_cast<int>(std::ceil((grid.originY - cell.minY) / grid.pixelHeight - 0.5)));
+        if (cell.level == bottom)
+            continue;
+        const int firstColumn =
+            std::max(0, static_cast<int>(std::ceil((cell.minX - grid.originX) / grid.pixelWidth - 0.5)));
+        const int lastColumn = std::min(
+            grid.columns, static_cast<int>(std::ceil((cell.maxX() - grid.originX) / grid.pixelWidth - 0.5)));
+        const int firstRow =
+            std::max(0, static_cast<int>(std::ceil((grid.originY - cell.maxY()) / grid.pixelHeight - 0.5)));
+        const int lastRow = std::min(
+            grid.rows, static_cast<int>(std::ceil((grid.originY - cell.minY) / grid.pixelHeight - 0.5)));
         for (int r = firstRow; r < lastRow; ++r) {
             for (int c = firstColumn; c < lastColumn; ++c) {
                 const auto found = rounded.find(grid.valueAt(c, r));
-                if (grid.isOutside(c, r) || found == rounded.end() || found->second < cell.fieldOfView() - 1e-9) {
-                    violations.push_back("active cell " + std::to_string(cellIndex) + " at level " + std::to_string(cell.level) +
-                                         " holds pixel (" + std::to_string(c) + ", " + std::to_string(r) + ") that needs a smaller cell");
+                if (grid.isOutside(c, r) || found == rounded.end() ||
+                    found->second < cell.fieldOfView() - 1e-9) {
+                    violations.push_back("active cell " + std::to_string(cellIndex) + " at level " +
+                                         std::to_string(cell.level) + " holds pixel (" + std::to_string(c) +
+                                         ", " + std::to_string(r) + ") that needs a smaller cell");
                     r = lastRow;
                     break;
                 }
@@ -365,8 +440,10 @@ std::vector<std::string> checkQuadTreeTiling(const PlanningProblem& problem, con
 
 std::string describe(const std::vector<std::string>& violations, std::size_t limit) {
     std::string out;
-    for (std::size_t i = 0; i < violations.size() && i < limit; ++i) out += violations[i] + "\n";
-    if (violations.size() > limit) out += "... and " + std::to_string(violations.size() - limit) + " more\n";
+    for (std::size_t i = 0; i < violations.size() && i < limit; ++i)
+        out += violations[i] + "\n";
+    if (violations.size() > limit)
+        out += "... and " + std::to_string(violations.size() - limit) + " more\n";
     return out;
 }
 

@@ -34,7 +34,8 @@ namespace mcpp::test {
 
 // Quadtree only: leaves tile the bottom grid exactly once and, with no purity tolerance, an active cell above
 // the bottom holds only classes whose rounded FOV is at least its sub-cell side.
-[[nodiscard]] std::vector<std::string> checkQuadTreeTiling(const PlanningProblem& problem, const QuadTree& tree);
+[[nodiscard]] std::vector<std::string> checkQuadTreeTiling(const PlanningProblem& problem,
+                                                           const QuadTree& tree);
 
 // At most the first `limit` violations, one per line, for a test failure message.
 [[nodiscard]] std::string describe(const std::vector<std::string>& violations, std::size_t limit = 10);

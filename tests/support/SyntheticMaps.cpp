@@ -20,7 +20,8 @@ PlanningProblem uniformProblem(int columns, int rows, double pixelSize, const st
     problem.grid.originY = 4000000.0;
     problem.grid.values.assign(static_cast<std::size_t>(columns * rows), 1);
     for (std::size_t i = 0; i < blocked.size() && i < problem.grid.values.size(); ++i)
-        if (blocked[i]) problem.grid.values[i] = 99;
+        if (blocked[i])
+            problem.grid.values[i] = 99;
     problem.classes.set({1, "grass", 0x88cc44, 1.0, pixelSize / 2.0, true});
     problem.classes.set({99, "water", 0x2255cc, 0.0, pixelSize / 2.0, false});
     problem.starts = starts;
@@ -43,8 +44,8 @@ PlanningProblem randomProblem(const RandomMapSpec& spec) {
     const char* names[4] = {"grass", "wood", "road", "marsh"};
     // FOVs 5, 10, 20, 40 m: each class needs its own quadtree level.
     for (int c = 0; c < covers; ++c)
-        problem.classes.set({c + 1, names[c], 0x404040U + static_cast<std::uint32_t>(c) * 0x302010U, speeds[c],
-                             spec.pixelSize / 2.0 * (1 << c), true});
+        problem.classes.set({c + 1, names[c], 0x404040U + static_cast<std::uint32_t>(c) * 0x302010U,
+                             speeds[c], spec.pixelSize / 2.0 * (1 << c), true});
     problem.classes.set({99, "water", 0x2255cc, 0.0, 1.0, false});
     std::uniform_int_distribution<int> columnDistribution(0, spec.columns - 1);
     std::uniform_int_distribution<int> rowDistribution(0, spec.rows - 1);
@@ -63,7 +64,8 @@ PlanningProblem randomProblem(const RandomMapSpec& spec) {
     }
     std::bernoulli_distribution obstacle(spec.obstacleFraction);
     for (auto& value : grid.values)
-        if (obstacle(random)) value = 99;
+        if (obstacle(random))
+            value = 99;
     // The smallest FOV class is present, so every pixel is exactly one bottom cell.
     grid.values[0] = 1;
     // Starts on distinct free pixels (each pixel is a bottom cell, so distinct pixels are distinct cells
@@ -75,11 +77,13 @@ PlanningProblem randomProblem(const RandomMapSpec& spec) {
         ++attempts;
         const int column = columnDistribution(random);
         const int row = rowDistribution(random);
-        if (grid.values[grid.index(column, row)] == 99) continue;
+        if (grid.values[grid.index(column, row)] == 99)
+            continue;
         const bool clash = std::any_of(chosen.begin(), chosen.end(), [&](const auto& other) {
             return column / spacing == other.first / spacing && row / spacing == other.second / spacing;
         });
-        if (clash) continue;
+        if (clash)
+            continue;
         chosen.emplace_back(column, row);
         problem.starts.push_back(pixelCentre(grid, column, row));
     }

@@ -23,7 +23,8 @@ struct RandomMapSpec {
 
 // A one-class grid of columns x rows pixels of `pixelSize` metres, FOV = pixelSize / 2, so each pixel is one
 // bottom cell. Obstacles (value 99) where `blocked` says.
-[[nodiscard]] PlanningProblem uniformProblem(int columns, int rows, double pixelSize, const std::vector<bool>& blocked,
+[[nodiscard]] PlanningProblem uniformProblem(int columns, int rows, double pixelSize,
+                                             const std::vector<bool>& blocked,
                                              const std::vector<MapPoint>& starts);
 
 // The centre of pixel (column, row) of a grid.

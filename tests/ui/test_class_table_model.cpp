@@ -23,7 +23,8 @@ std::shared_ptr<io::LoadedRaster> smallRaster() {
     grid.pixelHeight = 10.0;
     grid.values.assign(100, 1);
     grid.outside.assign(100, 0);
-    for (int row = 0; row < 10; ++row) grid.values[grid.index(5, row)] = 2;
+    for (int row = 0; row < 10; ++row)
+        grid.values[grid.index(5, row)] = 2;
     grid.outside[grid.index(0, 0)] = 1;
     raster->classPixelCounts = {{1, 89}, {2, 10}};
     return raster;
@@ -31,7 +32,8 @@ std::shared_ptr<io::LoadedRaster> smallRaster() {
 
 io::Mission smallMission() {
     io::Mission mission;
-    mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 2.0, 10.0, true}, LandCoverClass{2, "Water", 0x3050c0, 0.0, 10.0, false}});
+    mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 2.0, 10.0, true},
+                                  LandCoverClass{2, "Water", 0x3050c0, 0.0, 10.0, false}});
     return mission;
 }
 
@@ -40,7 +42,7 @@ io::Mission smallMission() {
 class TestClassTableModel : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void init() {
         document_ = std::make_unique<ui::MissionDocument>();
         undoStack_ = std::make_unique<QUndoStack>();
@@ -51,11 +53,17 @@ private slots:
 
     void showsClassesWithRoundedFieldOfView() {
         QCOMPARE(classes_->rowCount(), 2);
-        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::Name)).toString(), QStringLiteral("Grass"));
-        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::RoundedFieldOfView)).toString(), QStringLiteral("10"));
+        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::Name)).toString(),
+                 QStringLiteral("Grass"));
+        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::RoundedFieldOfView)).toString(),
+                 QStringLiteral("10"));
         QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::Level)).toInt(), 1);
-        QCOMPARE(classes_->data(classes_->index(1, ui::ClassTableModel::Passable), Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
-        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::Colour), Qt::DecorationRole).value<QColor>(), QColor(0x80, 0xc0, 0x80));
+        QCOMPARE(
+            classes_->data(classes_->index(1, ui::ClassTableModel::Passable), Qt::CheckStateRole).toInt(),
+            int(Qt::Unchecked));
+        QCOMPARE(classes_->data(classes_->index(0, ui::ClassTableModel::Colour), Qt::DecorationRole)
+                     .value<QColor>(),
+                 QColor(0x80, 0xc0, 0x80));
     }
 
     void acceptsAValidSpeedAndUndoesIt() {
@@ -74,7 +82,8 @@ private slots:
         QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::Speed), QStringLiteral("fast")));
         QVERIFY(classes_->lastRefusal().contains(QStringLiteral("number")));
         QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::Speed), QStringLiteral("nan")));
-        QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::FieldOfView), QStringLiteral("0")));
+        QVERIFY(
+            !classes_->setData(classes_->index(0, ui::ClassTableModel::FieldOfView), QStringLiteral("0")));
         QVERIFY(!classes_->setData(classes_->index(0, ui::ClassTableModel::Name), QStringLiteral("  ")));
         QCOMPARE(refused.count(), 5);
         QCOMPARE(undoStack_->count(), 0);
@@ -82,7 +91,8 @@ private slots:
     }
 
     void togglesPassable() {
-        QVERIFY(classes_->setData(classes_->index(1, ui::ClassTableModel::Passable), Qt::Checked, Qt::CheckStateRole));
+        QVERIFY(classes_->setData(classes_->index(1, ui::ClassTableModel::Passable), Qt::Checked,
+                                  Qt::CheckStateRole));
         QVERIFY(document_->classes().find(2)->passable);
     }
 
@@ -93,11 +103,12 @@ private slots:
         QVERIFY(refused.last().first().toString().contains(QStringLiteral("obstacle")));
         QVERIFY(!robots_->addRobot({500.0, 45.0}));
         QVERIFY(refused.last().first().toString().contains(QStringLiteral("outside")));
-        QVERIFY(!robots_->addRobot({5.0, 95.0})); // nodata
+        QVERIFY(!robots_->addRobot({5.0, 95.0}));  // nodata
         QVERIFY(!robots_->addRobot({16.0, 44.0})); // same pixel as Robot 1
         QVERIFY(robots_->addRobot({85.0, 15.0}));
         QCOMPARE(robots_->rowCount(), 2);
-        QCOMPARE(robots_->data(robots_->index(1, ui::RobotTableModel::Name)).toString(), QStringLiteral("Robot 2"));
+        QCOMPARE(robots_->data(robots_->index(1, ui::RobotTableModel::Name)).toString(),
+                 QStringLiteral("Robot 2"));
         QVERIFY(robots_->moveRobot(0, {25.0, 25.0}));
         QCOMPARE(document_->robots()[0].start, (MapPoint{25.0, 25.0}));
         undoStack_->undo();
@@ -109,7 +120,7 @@ private slots:
         QVERIFY(!robots_->setData(robots_->index(0, ui::RobotTableModel::Easting), QStringLiteral("55")));
     }
 
-private:
+  private:
     std::unique_ptr<ui::MissionDocument> document_;
     std::unique_ptr<QUndoStack> undoStack_;
     std::unique_ptr<ui::ClassTableModel> classes_;

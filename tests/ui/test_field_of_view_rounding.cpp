@@ -7,10 +7,11 @@ using namespace mcpp;
 class TestFieldOfViewRounding : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void roundsDownToPowersOfTwoOfTheSmallest() {
-        const ClassTable table({LandCoverClass{1, "Grass", 0, 2.0, 10.0, true}, LandCoverClass{2, "Forest", 0, 1.0, 25.0, true},
-                                LandCoverClass{3, "Field", 0, 3.0, 40.0, true}, LandCoverClass{4, "Water", 0, 0.0, 1.0, false}});
+        const ClassTable table(
+            {LandCoverClass{1, "Grass", 0, 2.0, 10.0, true}, LandCoverClass{2, "Forest", 0, 1.0, 25.0, true},
+             LandCoverClass{3, "Field", 0, 3.0, 40.0, true}, LandCoverClass{4, "Water", 0, 0.0, 1.0, false}});
         const auto rounded = ui::roundFieldsOfView(table, {});
         QCOMPARE(rounded.at(1).roundedMetres, 10.0);
         QCOMPARE(rounded.at(2).roundedMetres, 20.0);
@@ -22,7 +23,8 @@ private slots:
     }
 
     void ignoresClassesAbsentFromTheRaster() {
-        const ClassTable table({LandCoverClass{1, "Grass", 0, 2.0, 10.0, true}, LandCoverClass{2, "Forest", 0, 1.0, 5.0, true}});
+        const ClassTable table(
+            {LandCoverClass{1, "Grass", 0, 2.0, 10.0, true}, LandCoverClass{2, "Forest", 0, 1.0, 5.0, true}});
         const auto rounded = ui::roundFieldsOfView(table, {{1, 100}, {2, 0}});
         QCOMPARE(rounded.at(1).roundedMetres, 10.0);
         QCOMPARE(rounded.at(1).level, 1);

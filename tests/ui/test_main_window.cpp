@@ -24,15 +24,19 @@ namespace {
 
 constexpr int kPlanningTimeoutMilliseconds = 180'000;
 
-QString dataPath(const std::string& relative) { return QString::fromStdString(test::testDataPath(relative)); }
+QString dataPath(const std::string& relative) {
+    return QString::fromStdString(test::testDataPath(relative));
+}
 
 // Field teams plan this 34 x 43 km map with a wide sensor swath: FOVs of 160-320 m keep the cell count (and
 // a Debug build's planning time) small. Edited through the table, as a user would.
 void widenFieldsOfView(ui::ClassTableModel& model, const ui::MissionDocument& document) {
     for (int row = 0; row < model.rowCount(); ++row) {
         const LandCoverClass& landCoverClass = document.classes().classes()[static_cast<std::size_t>(row)];
-        if (!landCoverClass.isTraversable()) continue;
-        const QString fieldOfView = landCoverClass.fieldOfViewMetres >= 20.0 ? QStringLiteral("320") : QStringLiteral("160");
+        if (!landCoverClass.isTraversable())
+            continue;
+        const QString fieldOfView =
+            landCoverClass.fieldOfViewMetres >= 20.0 ? QStringLiteral("320") : QStringLiteral("160");
         QVERIFY(model.setData(model.index(row, ui::ClassTableModel::FieldOfView), fieldOfView));
     }
 }
@@ -43,16 +47,21 @@ std::vector<MapPoint> passableSpots(const ui::MissionDocument& document, int wan
     const ClassGrid& grid = *document.grid();
     std::vector<MapPoint> spots;
     const int step = std::max(grid.columns, grid.rows) / 6;
-    for (int row = grid.rows / 4; row < grid.rows - 5 && static_cast<int>(spots.size()) < wanted; row += step) {
-        for (int column = grid.columns / 5; column < grid.columns - 5 && static_cast<int>(spots.size()) < wanted; column += step) {
+    for (int row = grid.rows / 4; row < grid.rows - 5 && static_cast<int>(spots.size()) < wanted;
+         row += step) {
+        for (int column = grid.columns / 5;
+             column < grid.columns - 5 && static_cast<int>(spots.size()) < wanted; column += step) {
             bool uniform = true;
             const std::int32_t value = grid.valueAt(column, row);
             for (int dy = -4; dy <= 4 && uniform; ++dy)
                 for (int dx = -4; dx <= 4 && uniform; ++dx)
-                    uniform = !grid.isOutside(column + dx, row + dy) && grid.valueAt(column + dx, row + dy) == value;
+                    uniform = !grid.isOutside(column + dx, row + dy) &&
+                              grid.valueAt(column + dx, row + dy) == value;
             const LandCoverClass* landCoverClass = document.classes().find(value);
-            if (!uniform || landCoverClass == nullptr || !landCoverClass->isTraversable()) continue;
-            spots.push_back({grid.originX + (column + 0.5) * grid.pixelWidth, grid.originY - (row + 0.5) * grid.pixelHeight});
+            if (!uniform || landCoverClass == nullptr || !landCoverClass->isTraversable())
+                continue;
+            spots.push_back({grid.originX + (column + 0.5) * grid.pixelWidth,
+                             grid.originY - (row + 0.5) * grid.pixelHeight});
         }
     }
     return spots;
@@ -63,7 +72,7 @@ std::vector<MapPoint> passableSpots(const ui::MissionDocument& document, int wan
 class TestMainWindow : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QCoreApplication::setOrganizationName(QStringLiteral("mcpp"));
@@ -101,8 +110,9 @@ private slots:
         window.canvas()->zoomToFit();
         // The raster spans 34 x 43 km: a drone's 200-800 m swaths keep the plan to seconds, as in the sample.
         for (int r = 0; r < window.classTableModel()->rowCount(); ++r)
-            QVERIFY(window.classTableModel()->setData(window.classTableModel()->index(r, ui::ClassTableModel::FieldOfView),
-                                                      QString::number(200 << (r % 3))));
+            QVERIFY(window.classTableModel()->setData(
+                window.classTableModel()->index(r, ui::ClassTableModel::FieldOfView),
+                QString::number(200 << (r % 3))));
 
         // Three starts by clicking on the map with the Place start tool.
         auto* placeTool = window.findChild<QAction*>(QStringLiteral("placeStartToolAction"));
@@ -111,11 +121,13 @@ private slots:
         const auto spots = passableSpots(*document, 3);
         QCOMPARE(spots.size(), std::size_t{3});
         for (const MapPoint& spot : spots)
-            QTest::mouseClick(window.canvas(), Qt::LeftButton, {}, window.canvas()->devicePointOf(spot).toPoint());
+            QTest::mouseClick(window.canvas(), Qt::LeftButton, {},
+                              window.canvas()->devicePointOf(spot).toPoint());
         QCOMPARE(document->robots().size(), std::size_t{3});
 
         // A click outside the map is refused with a message, and nothing is added.
-        const QPointF outside = window.canvas()->devicePointOf({document->grid()->originX - 500.0, document->grid()->originY + 500.0});
+        const QPointF outside = window.canvas()->devicePointOf(
+            {document->grid()->originX - 500.0, document->grid()->originY + 500.0});
         if (window.canvas()->rect().contains(outside.toPoint())) {
             QTest::mouseClick(window.canvas(), Qt::LeftButton, {}, outside.toPoint());
             QCOMPARE(document->robots().size(), std::size_t{3});
@@ -126,7 +138,8 @@ private slots:
         ui::ClassTableModel* classes = window.classTableModel();
         int row = -1;
         for (int r = 0; r < classes->rowCount() && row < 0; ++r)
-            if (document->classes().classes()[static_cast<std::size_t>(r)].isTraversable()) row = r;
+            if (document->classes().classes()[static_cast<std::size_t>(r)].isTraversable())
+                row = r;
         QVERIFY(row >= 0);
         QVERIFY(classes->setData(classes->index(row, ui::ClassTableModel::Speed), QStringLiteral("2.5")));
         QCOMPARE(document->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond, 2.5);
@@ -165,7 +178,8 @@ private slots:
 
         // Export GeoJSON and read it back.
         const QString geojson = directory.filePath(QStringLiteral("plan.geojson"));
-        QVERIFY2(window.exportPlan(ui::MainWindow::ExportFormat::GeoJson, geojson), qPrintable(window.lastError()));
+        QVERIFY2(window.exportPlan(ui::MainWindow::ExportFormat::GeoJson, geojson),
+                 qPrintable(window.lastError()));
         QFile file(geojson);
         QVERIFY(file.open(QIODevice::ReadOnly));
         QJsonParseError parseError;
@@ -175,11 +189,14 @@ private slots:
         QVERIFY(!json.object().value(QStringLiteral("features")).toArray().isEmpty());
 
         // PNG and per-robot waypoint exports.
-        QVERIFY(window.exportPlan(ui::MainWindow::ExportFormat::Png, directory.filePath(QStringLiteral("plan.png"))));
+        QVERIFY(window.exportPlan(ui::MainWindow::ExportFormat::Png,
+                                  directory.filePath(QStringLiteral("plan.png"))));
         QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
-        QVERIFY(window.exportPlan(ui::MainWindow::ExportFormat::QGroundControlPlan, directory.filePath(QStringLiteral("mission.plan"))));
+        QVERIFY(window.exportPlan(ui::MainWindow::ExportFormat::QGroundControlPlan,
+                                  directory.filePath(QStringLiteral("mission.plan"))));
         QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("mission-robot3.plan"))));
-        QVERIFY(!window.exportPlan(ui::MainWindow::ExportFormat::GeoJson, QStringLiteral("/no/such/folder/plan.geojson")));
+        QVERIFY(!window.exportPlan(ui::MainWindow::ExportFormat::GeoJson,
+                                   QStringLiteral("/no/such/folder/plan.geojson")));
         QVERIFY(window.lastError().contains(QStringLiteral("/no/such/folder/plan.geojson")));
 
         // Save, reopen, and find the same robots and edited speed.
@@ -191,7 +208,8 @@ private slots:
         reopened.setOpenSampleOnFirstStart(false);
         QVERIFY2(reopened.openMission(missionPath), qPrintable(reopened.lastError()));
         QCOMPARE(reopened.document()->robots().size(), std::size_t{3});
-        QCOMPARE(reopened.document()->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond, 2.5);
+        QCOMPARE(reopened.document()->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond,
+                 2.5);
     }
 
     void cancelsPlanning() {
@@ -200,7 +218,8 @@ private slots:
         window.setOpenSampleOnFirstStart(false);
         QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif"), QStringLiteral("nlcd-simplified")));
         widenFieldsOfView(*window.classTableModel(), *window.document());
-        for (const MapPoint& spot : passableSpots(*window.document(), 2)) QVERIFY(window.robotTableModel()->addRobot(spot));
+        for (const MapPoint& spot : passableSpots(*window.document(), 2))
+            QVERIFY(window.robotTableModel()->addRobot(spot));
         QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
         QVERIFY(window.startPlanning());
         window.cancelPlanning();
@@ -211,7 +230,8 @@ private slots:
 
     void opensTheSampleMission() {
         const QString sample = ui::findSampleMission();
-        if (sample.isEmpty()) QSKIP("samples/zion-nlcd/mission.json is not there yet");
+        if (sample.isEmpty())
+            QSKIP("samples/zion-nlcd/mission.json is not there yet");
         ui::MainWindow window;
         window.setDialogsEnabled(false);
         window.setOpenSampleOnFirstStart(false);

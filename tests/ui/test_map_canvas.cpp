@@ -26,7 +26,7 @@ std::shared_ptr<io::LoadedRaster> squareRaster() {
 class TestMapCanvas : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
     void init() {
         document_ = std::make_unique<ui::MissionDocument>();
         io::Mission mission;
@@ -45,7 +45,8 @@ private slots:
         const MapPoint back = canvas_->mapPointAt(canvas_->devicePointOf(point));
         QVERIFY(std::abs(back.x - point.x) < 1e-6 && std::abs(back.y - point.y) < 1e-6);
         // North is up: a point further north is higher on screen.
-        QVERIFY(canvas_->devicePointOf({501000.0, 4099900.0}).y() < canvas_->devicePointOf({501000.0, 4099000.0}).y());
+        QVERIFY(canvas_->devicePointOf({501000.0, 4099900.0}).y() <
+                canvas_->devicePointOf({501000.0, 4099000.0}).y());
     }
 
     void fitsTheWholeMap() {
@@ -60,8 +61,8 @@ private slots:
         const QPoint cursor(200, 150);
         const MapPoint before = canvas_->mapPointAt(cursor);
         const double scale = canvas_->pixelsPerMetre();
-        QWheelEvent wheel(QPointF(cursor), canvas_->mapToGlobal(QPointF(cursor)), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
-                          Qt::NoScrollPhase, false);
+        QWheelEvent wheel(QPointF(cursor), canvas_->mapToGlobal(QPointF(cursor)), QPoint(), QPoint(0, 120),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
         QApplication::sendEvent(canvas_.get(), &wheel);
         QVERIFY(canvas_->pixelsPerMetre() > scale);
         const MapPoint after = canvas_->mapPointAt(cursor);
@@ -113,11 +114,12 @@ private slots:
     void scaleBarIsARoundNumber() {
         const double metres = canvas_->scaleBarMetres();
         const double mantissa = metres / std::pow(10.0, std::floor(std::log10(metres)));
-        QVERIFY(std::abs(mantissa - 1.0) < 1e-9 || std::abs(mantissa - 2.0) < 1e-9 || std::abs(mantissa - 5.0) < 1e-9);
+        QVERIFY(std::abs(mantissa - 1.0) < 1e-9 || std::abs(mantissa - 2.0) < 1e-9 ||
+                std::abs(mantissa - 5.0) < 1e-9);
         QVERIFY(metres * canvas_->pixelsPerMetre() <= 130.0);
     }
 
-private:
+  private:
     std::unique_ptr<ui::MissionDocument> document_;
     std::unique_ptr<ui::MapCanvas> canvas_;
     std::vector<io::RobotSpec> robots_;
