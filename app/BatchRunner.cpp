@@ -2,25 +2,25 @@
 
 #include "app/BatchFailure.hpp"
 #include "core/model/PlanningError.hpp"
-#include "core/model/PlanningProblem.hpp"
 #include "core/model/ProgressReporter.hpp"
+#include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/ExportCatalogue.hpp"
 #include "io/PlanExport.hpp"
-#include "render/PlanImage.hpp"
+#include "render/PlanImageWriter.hpp"
 
-#include <QSize>
-#include <QString>
+#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <system_error>
 #include <unistd.h>
 
 namespace mcpp::app {
 namespace {
+
+using Part = io::MissionField::Part;
 
 constexpr int planImageSide = 1600;
 // Progress the planner reports in its first seconds is held back: it checks the starts only after
@@ -40,17 +40,6 @@ std::string formatNumber(double value, int decimals) {
     return buffer;
 }
 
-std::string formatPoint(MapPoint point) {
-    return "(" + formatNumber(point.x, 2) + ", " + formatNumber(point.y, 2) + ")";
-}
-
-std::string joined(const std::vector<std::string>& items) {
-    std::string text;
-    for (const auto& item : items)
-        text += (text.empty() ? "" : ", ") + item;
-    return text;
-}
-
 // io errors usually name their file already; add it when one does not, so the line always says which.
 std::string namingFile(const std::string& path, const std::string& message) {
     if (message.find(path) != std::string::npos)
@@ -61,15 +50,17 @@ std::string namingFile(const std::string& path, const std::string& message) {
     return path + ": " + message;
 }
 
+template <typename T> T valueOrBadInput(io::Result<T> result) {
+    if (!result)
+        badInput(result.error());
+    return std::move(result.value());
+}
+
 } // namespace
 
 BatchRunner::BatchRunner(CommandLineOptions options, std::ostream& output, std::ostream& diagnostics)
     : options_(std::move(options)), output_(output), diagnostics_(diagnostics),
       progress_(diagnostics, !options_.quiet) {}
-
-std::string BatchRunner::robotFileStem(int robot) {
-    return "robot_" + std::to_string(robot);
-}
 
 int BatchRunner::run() {
     try {
@@ -88,13 +79,12 @@ void BatchRunner::execute() {
     assembleMission();
     applyOverrides();
     loadRaster();
-    chooseClassTable();
-    const auto starts = startsInPlanningFrame();
+    const PlanningProblem problem = prepareProblem();
     checkOutputFolder();
     for (const auto& warning : pendingWarnings_)
         warn(warning);
     pendingWarnings_.clear();
-    const Plan plan = runPlanner(starts);
+    const Plan plan = runPlanner(problem);
     for (const auto& warning : plan.warnings())
         warn(warning);
     writeOutputs(plan);
@@ -107,14 +97,12 @@ void BatchRunner::assembleMission() {
         if (!loaded)
             badInput(namingFile(options_.missionPath, loaded.error()));
         mission_ = std::move(loaded.value());
-        rasterPath_ = io::resolveRasterPath(mission_, options_.missionPath);
         if (mission_.robots.empty())
             badInput(options_.missionPath + ": robots: the mission has no robots");
         return;
     }
     mission_ = io::Mission{};
     mission_.rasterPath = options_.rasterPath;
-    rasterPath_ = options_.rasterPath;
     if (!options_.classesPath.empty()) {
         auto table = io::loadClassTableCsv(options_.classesPath);
         if (!table)
@@ -133,109 +121,48 @@ void BatchRunner::applyOverrides() {
     if (options_.band)
         mission_.band = *options_.band;
     if (options_.planner)
-        mission_.settings.planner = *options_.planner;
-    if (options_.purityTolerance)
-        mission_.settings.purityTolerance = *options_.purityTolerance;
-    if (options_.openPaths)
-        mission_.settings.closedTour = false;
+        mission_.planner = switchPlanner(mission_.planner, *options_.planner);
     if (options_.missingAsObstacle)
         mission_.missingClassesAsObstacles = true;
+    const auto planner = findPlannerDescription(mission_.planner.planner);
+    if (!planner)
+        badInput(fieldName(io::MissionField::of(Part::Planner)) + ": " +
+                 unknownPlannerMessage(mission_.planner.planner));
+    for (const ParameterOverride& parameter : options_.parameters) {
+        const ParameterSpec* spec = findParameter(planner->parameters, parameter.key);
+        if (spec == nullptr)
+            badInput(parameter.flag + ": planner " + planner->name + " has no parameter " + parameter.key +
+                     " (its parameters: " + parameterKeys(planner->parameters) + ")");
+        std::string problem;
+        const auto value = spec->parse(parameter.value, &problem);
+        if (!value)
+            badInput(parameter.flag + ": " + problem);
+        mission_.planner.parameters.set(parameter.key, *value);
+    }
 }
 
 void BatchRunner::loadRaster() {
-    io::RasterLoadOptions loadOptions;
-    loadOptions.band = mission_.band;
-    auto loaded = io::loadLandCoverRaster(rasterPath_, loadOptions);
-    if (!loaded)
-        badInput(namingFile(rasterPath_, loaded.error()));
+    const std::string missionPath = options_.missionFromFlags() ? std::string() : options_.missionPath;
+    auto loaded = io::loadMissionRaster(mission_, missionPath);
+    if (!loaded) {
+        const std::string rasterPath = io::resolveRasterPath(mission_, missionPath);
+        badInput(namingFile(rasterPath, loaded.error()));
+    }
     raster_ = std::move(loaded.value());
     pendingWarnings_.insert(pendingWarnings_.end(), raster_.warnings.begin(), raster_.warnings.end());
 }
 
-void BatchRunner::chooseClassTable() {
-    if (!mission_.preset.empty()) {
-        // Asking for the preset alone first turns an unknown name into an error instead of a default table.
-        auto preset = io::presetClassTable(mission_.preset);
-        if (!preset)
-            badInput(classesLabel() + ": " + preset.error());
-    }
-    classes_ = io::missionClassTable(mission_.classes, mission_.preset, raster_);
-    if (const auto problem = classes_.validate())
-        badInput(classesLabel() + ": " + *problem);
-
-    const auto before = raster_.warnings.size();
-    const auto reconciled =
-        io::reconcileRasterWithTable(raster_, classes_, mission_.missingClassesAsObstacles);
-    if (!reconciled) {
-        const std::string hint = options_.missionFromFlags()
-                                     ? "; --missing-as-obstacle does the latter"
-                                     : "; classes.missing_as_obstacles does the latter";
-        badInput(namingFile(rasterPath_, reconciled.error()) + hint);
-    }
-    for (auto i = before; i < raster_.warnings.size(); ++i)
-        pendingWarnings_.push_back(raster_.warnings[i]);
-}
-
-std::vector<MapPoint> BatchRunner::startsInPlanningFrame() const {
-    std::vector<MapPoint> starts;
-    for (std::size_t i = 0; i < mission_.robots.size(); ++i) {
-        const auto robot = static_cast<int>(i);
-        const auto& spec = mission_.robots[i];
-        if (!std::isfinite(spec.start.x) || !std::isfinite(spec.start.y))
-            badInput(startLabel(robot) + ": not a finite point");
-        MapPoint start = spec.start;
-        if (!spec.startCrs.empty()) {
-            auto converted = raster_.georeference.fromCrs(spec.startCrs, spec.start);
-            if (!converted)
-                badInput(startCrsLabel(robot) + ": " + converted.error());
-            start = converted.value();
-        } else if (raster_.warpedFromGeographic && options_.missionFromFlags()) {
-            // The batch contract takes --start in the raster's own CRS, here longitude and latitude, while
-            // the plan runs in a UTM zone. Only the CRS's name survives loading; WGS84 is the fallback,
-            // metres away from any other datum. (Mission files keep planning-frame units:
-            // docs/mission-format.md.)
-            auto converted = raster_.georeference.fromCrs(raster_.sourceCrsName, spec.start);
-            if (!converted)
-                converted = raster_.georeference.fromCrs("EPSG:4326", spec.start);
-            if (!converted)
-                badInput(startLabel(robot) + ": " + converted.error());
-            start = converted.value();
-        } else {
-            // Planning-frame units, scaled to metres when the raster's CRS counts in feet.
-            auto converted = io::robotStartInPlanningFrame(spec, raster_.georeference);
-            if (!converted)
-                badInput(startLabel(robot) + ": " + converted.error());
-            start = converted.value();
-        }
-        // With snapping the planner moves bad starts itself and warns; without, say exactly what is wrong.
-        if (!mission_.settings.snapStartsToFreeCells)
-            checkStartPixel(robot, start);
-        starts.push_back(start);
-    }
-    return starts;
-}
-
-void BatchRunner::checkStartPixel(int robot, MapPoint start) const {
-    const ClassGrid& grid = raster_.grid;
-    const double column = std::floor((start.x - grid.originX) / grid.pixelWidth);
-    const double row = std::floor((grid.originY - start.y) / grid.pixelHeight);
-    if (column < 0.0 || row < 0.0 || column >= grid.columns || row >= grid.rows) {
-        badInput(startLabel(robot) + ": " + formatPoint(start) + " is outside the raster (x " +
-                 formatNumber(grid.originX, 2) + " to " + formatNumber(grid.maxX(), 2) + ", y " +
-                 formatNumber(grid.minY(), 2) + " to " + formatNumber(grid.originY, 2) + ")");
-    }
-    const int c = static_cast<int>(column);
-    const int r = static_cast<int>(row);
-    if (grid.isOutside(c, r)) {
-        badInput(startLabel(robot) + ": " + formatPoint(start) +
-                 " is on a nodata pixel, outside the task area");
-    }
-    const auto value = grid.valueAt(c, r);
-    const LandCoverClass* landCover = classes_.find(value);
-    if (landCover != nullptr && !landCover->isTraversable()) {
-        badInput(startLabel(robot) + ": " + formatPoint(start) + " is on class " + std::to_string(value) +
-                 " \"" + landCover->name + "\", which robots cannot cross");
-    }
+PlanningProblem BatchRunner::prepareProblem() {
+    const io::FieldNamer names = fieldNamer();
+    classes_ = valueOrBadInput(io::missionClasses(mission_, raster_, names));
+    // The batch contract takes --start in the raster file's CRS; mission files keep planning-CRS units.
+    const auto units =
+        options_.missionFromFlags() ? io::StartUnits::RasterFileCrs : io::StartUnits::PlanningCrs;
+    auto starts = valueOrBadInput(io::missionStarts(mission_, raster_, units, names));
+    io::PreparedProblem prepared = valueOrBadInput(io::planningProblem(
+        raster_, classes_, mission_.missingClassesAsObstacles, std::move(starts), mission_.planner, names));
+    pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
+    return std::move(prepared.problem);
 }
 
 void BatchRunner::checkOutputFolder() const {
@@ -258,17 +185,11 @@ void BatchRunner::checkOutputFolder() const {
     }
 }
 
-Plan BatchRunner::runPlanner(const std::vector<MapPoint>& starts) {
-    const auto planner = makePlanner(mission_.settings.planner);
-    if (!planner) {
-        badInput(plannerLabel() + ": unknown planner \"" + mission_.settings.planner +
-                 "\" (available: " + joined(availablePlanners()) + ")");
-    }
-    PlanningProblem problem;
-    problem.grid = raster_.grid;
-    problem.classes = classes_;
-    problem.starts = starts;
-    problem.settings = mission_.settings;
+Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
+    const auto planner = makePlanner(problem.planner.planner);
+    if (!planner)
+        badInput(fieldName(io::MissionField::of(Part::Planner)) + ": " +
+                 unknownPlannerMessage(problem.planner.planner));
     const ProgressReporter reporter(
         [this](std::string_view stage, double fraction) { progress_.report(stage, fraction); });
     progress_.holdFor(startCheckGracePeriod);
@@ -280,15 +201,15 @@ Plan BatchRunner::runPlanner(const std::vector<MapPoint>& starts) {
         progress_.discardHeld();
         if (error.kind() == PlanningError::Kind::Cancelled)
             internalError(std::string("planning cancelled: ") + error.what());
-        if (!options_.missionFromFlags())
-            badInput(options_.missionPath + ": " + error.what());
-        const auto kind = error.kind();
-        const bool aboutStarts =
-            kind == PlanningError::Kind::StartOutsideArea || kind == PlanningError::Kind::StartOnObstacle ||
-            kind == PlanningError::Kind::StartsShareCell || kind == PlanningError::Kind::TooManyRobots;
-        badInput(aboutStarts ? "--start: " + std::string(error.what()) +
-                                   " (robots are numbered from 0 in --start order)"
-                             : std::string(error.what()));
+        if (error.robot() >= 0) {
+            const std::string numbering =
+                options_.missionFromFlags() ? " (robots are numbered from 0 in --start order)" : "";
+            badInput(fieldName(io::MissionField::start(error.robot())) + ": " + error.detail() + numbering);
+        }
+        if (!error.parameter().empty())
+            badInput(fieldName(io::MissionField::parameter(error.parameter())) + ": " + error.detail());
+        badInput(options_.missionFromFlags() ? std::string(error.what())
+                                             : options_.missionPath + ": " + error.what());
     }
 }
 
@@ -301,59 +222,35 @@ void BatchRunner::writeOutputs(const Plan& plan) {
         badInput("--out: cannot create folder \"" + options_.outputDirectory + "\"" +
                  (code ? ": " + code.message() : std::string(": a file of that name exists")));
     }
-    const auto pathOf = [&directory](const std::string& name) { return (directory / name).string(); };
-    const io::ExportContext context{plan, raster_.georeference, classes_, mission_.exports};
+    io::ExportContext context{plan, raster_.georeference, classes_, mission_.exports};
+    context.grid = &raster_.grid;
+    context.drawImage = render::planImageWriter(planImageSide);
     const int robots = static_cast<int>(plan.paths.size());
 
     struct Output {
+        const io::ExportFormat* format;
+        int robot;
         std::string name;
-        std::function<io::Status(const std::string&)> write;
-        bool required;
     };
-    std::vector<Output> outputs{
-        {"plan.geojson", [&](const std::string& path) { return io::writePlanGeoJson(context, path); }, true},
-        {"report.json", [&](const std::string& path) { return io::writeReportJson(context, path); }, true},
-        {"report.csv", [&](const std::string& path) { return io::writeReportCsv(context, path); }, false},
-        {"plan.gpkg", [&](const std::string& path) { return io::writePlanGeoPackage(context, path); }, false},
-    };
-    for (int robot = 0; robot < robots; ++robot) {
-        const auto stem = robotFileStem(robot);
-        outputs.push_back({stem + ".plan",
-                           [&context, robot](const std::string& path) {
-                               return io::writeQGroundControlPlan(context, robot, path);
-                           },
-                           true});
-        outputs.push_back({stem + ".waypoints",
-                           [&context, robot](const std::string& path) {
-                               return io::writeWaypointList(context, robot, path);
-                           },
-                           true});
-        outputs.push_back({stem + ".csv",
-                           [&context, robot](const std::string& path) {
-                               return io::writeWaypointCsv(context, robot, path);
-                           },
-                           true});
+    std::vector<Output> outputs;
+    for (const io::ExportFormat& format : io::exportFormats()) {
+        if (!format.inBatchOutputs)
+            continue;
+        if (!format.perRobot) {
+            outputs.push_back({&format, -1, format.batchFileName});
+            continue;
+        }
+        for (int robot = 0; robot < robots; ++robot)
+            outputs.push_back({&format, robot, io::robotFileName(robot, format)});
     }
-    outputs.push_back({"plan.png",
-                       [&](const std::string& path) {
-                           QString error;
-                           if (render::writePlanPng(raster_.grid, classes_, plan,
-                                                    QString::fromStdString(path),
-                                                    QSize(planImageSide, planImageSide), &error)) {
-                               return io::Status();
-                           }
-                           return io::Status::failure(path + ": " + error.toStdString());
-                       },
-                       true});
-
     const auto total = static_cast<double>(outputs.size());
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         progress_.report("writing outputs", static_cast<double>(i) / total);
-        const auto path = pathOf(outputs[i].name);
-        const auto status = outputs[i].write(path);
+        const std::string path = (directory / outputs[i].name).string();
+        const io::Status status = outputs[i].format->write(context, outputs[i].robot, path);
         if (status)
             continue;
-        if (outputs[i].required)
+        if (outputs[i].format->requiredInBatch)
             internalError(namingFile(path, status.error()));
         warn(outputs[i].name + " not written: " + status.error());
     }
@@ -362,9 +259,9 @@ void BatchRunner::writeOutputs(const Plan& plan) {
     // Waypoint files of robots a previous run in this folder had and this one has not would mislead.
     for (int robot = robots;; ++robot) {
         bool removed = false;
-        for (const char* extension : {".plan", ".waypoints", ".csv"}) {
-            removed = fs::remove(pathOf(robotFileStem(robot) + extension), code) || removed;
-        }
+        for (const io::ExportFormat& format : io::exportFormats())
+            if (format.inBatchOutputs && format.perRobot)
+                removed = fs::remove(directory / io::robotFileName(robot, format), code) || removed;
         if (!removed)
             break;
     }
@@ -387,28 +284,47 @@ void BatchRunner::warn(const std::string& message) {
         diagnostics_ << "mcpp: warning: " << message << '\n' << std::flush;
 }
 
-std::string BatchRunner::startLabel(int robot) const {
-    if (options_.missionFromFlags())
-        return "--start " + std::to_string(robot + 1);
-    return options_.missionPath + ": robots[" + std::to_string(robot) + "].start";
-}
-
-std::string BatchRunner::startCrsLabel(int robot) const {
-    if (options_.missionFromFlags())
-        return "--start-crs";
-    return options_.missionPath + ": robots[" + std::to_string(robot) + "].start_crs";
-}
-
-std::string BatchRunner::classesLabel() const {
-    if (options_.missionFromFlags())
+std::string BatchRunner::fieldName(const io::MissionField& field) const {
+    const bool fromFile = !options_.missionFromFlags();
+    switch (field.part) {
+    case Part::Raster:
+        return fromFile ? options_.missionPath + ": raster" : "--raster";
+    case Part::Classes:
+        if (fromFile)
+            return options_.missionPath + ": classes";
         return options_.classesPath.empty() ? "--preset" : options_.classesPath;
-    return options_.missionPath + ": classes";
+    case Part::MissingClassesOption:
+        return fromFile ? "classes.missing_as_obstacles (or --missing-as-obstacle)" : "--missing-as-obstacle";
+    case Part::Start:
+        if (!fromFile)
+            return "--start " + std::to_string(field.robot + 1);
+        break;
+    case Part::StartCrs:
+        if (!fromFile)
+            return "--start-crs";
+        break;
+    case Part::Planner:
+        if (options_.planner || !fromFile)
+            return "--planner";
+        break;
+    case Part::Parameter: {
+        // The last flag that set it wins, as it does for the value.
+        const auto& overrides = options_.parameters;
+        const auto last =
+            std::find_if(overrides.rbegin(), overrides.rend(),
+                         [&](const ParameterOverride& given) { return given.key == field.key; });
+        if (last != overrides.rend())
+            return last->flag;
+        if (!fromFile)
+            return "--param " + field.key;
+        break;
+    }
+    }
+    return io::missionFileFields(options_.missionPath)(field);
 }
 
-std::string BatchRunner::plannerLabel() const {
-    if (options_.planner || options_.missionFromFlags())
-        return "--planner";
-    return options_.missionPath + ": planner";
+io::FieldNamer BatchRunner::fieldNamer() const {
+    return [this](const io::MissionField& field) { return fieldName(field); };
 }
 
 } // namespace mcpp::app

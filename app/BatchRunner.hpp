@@ -4,8 +4,10 @@
 #include "app/ProgressPrinter.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
+#include "core/model/PlanningProblem.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
+#include "io/MissionInputs.hpp"
 
 #include <ostream>
 #include <string>
@@ -22,36 +24,27 @@ class BatchRunner {
     // 0 on success, 2 on bad input, 1 on an internal error; the reason is one line on diagnostics.
     [[nodiscard]] int run();
 
-    // The stem of robot i's waypoint files; i counts from 0 like the "robot" fields of plan.geojson and
-    // report.json.
-    [[nodiscard]] static std::string robotFileStem(int robot);
-
   private:
     void execute();
     void assembleMission();
     void applyOverrides();
     void loadRaster();
-    void chooseClassTable();
-    std::vector<MapPoint> startsInPlanningFrame() const;
-    void checkStartPixel(int robot, MapPoint start) const;
+    PlanningProblem prepareProblem();
     void checkOutputFolder() const;
-    Plan runPlanner(const std::vector<MapPoint>& starts);
+    Plan runPlanner(const PlanningProblem& problem);
     void writeOutputs(const Plan& plan);
     void printSummary(const Plan& plan) const;
     void warn(const std::string& message);
 
     // Where a value came from, so errors name the flag or the mission file and field.
-    [[nodiscard]] std::string startLabel(int robot) const;
-    [[nodiscard]] std::string startCrsLabel(int robot) const;
-    [[nodiscard]] std::string classesLabel() const;
-    [[nodiscard]] std::string plannerLabel() const;
+    [[nodiscard]] std::string fieldName(const io::MissionField& field) const;
+    [[nodiscard]] io::FieldNamer fieldNamer() const;
 
     CommandLineOptions options_;
     std::ostream& output_;
     std::ostream& diagnostics_;
     ProgressPrinter progress_;
     io::Mission mission_;
-    std::string rasterPath_;
     io::LoadedRaster raster_;
     ClassTable classes_;
     std::vector<std::string> pendingWarnings_; // printed once the input is known to be good

@@ -1,5 +1,8 @@
 #include "app/CommandLine.hpp"
 
+#include "core/decomposition/DecompositionOptions.hpp"
+#include "core/parameters/NumberText.hpp"
+#include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
 
@@ -27,19 +30,13 @@ struct FlagSpec {
 };
 
 constexpr std::array flagSpecs{
-    FlagSpec{"--batch", "", false, false},
-    FlagSpec{"--out", "DIR", true, false},
-    FlagSpec{"--raster", "FILE", true, false},
-    FlagSpec{"--classes", "TABLE.csv", true, false},
-    FlagSpec{"--preset", "NAME", true, false},
-    FlagSpec{"--start", "X,Y", true, true},
-    FlagSpec{"--start-crs", "EPSG:N", true, false},
-    FlagSpec{"--planner", "NAME", true, false},
-    FlagSpec{"--band", "N", true, false},
-    FlagSpec{"--purity", "F", true, false},
-    FlagSpec{"--missing-as-obstacle", "", true, false},
-    FlagSpec{"--open-paths", "", true, false},
-    FlagSpec{"--quiet", "", true, false},
+    FlagSpec{"--batch", "", false, false},          FlagSpec{"--out", "DIR", true, false},
+    FlagSpec{"--raster", "FILE", true, false},      FlagSpec{"--classes", "TABLE.csv", true, false},
+    FlagSpec{"--preset", "NAME", true, false},      FlagSpec{"--start", "X,Y", true, true},
+    FlagSpec{"--start-crs", "EPSG:N", true, false}, FlagSpec{"--planner", "NAME", true, false},
+    FlagSpec{"--band", "N", true, false},           FlagSpec{"--param", "KEY=VALUE", true, true},
+    FlagSpec{"--purity", "F", true, false},         FlagSpec{"--missing-as-obstacle", "", true, false},
+    FlagSpec{"--open-paths", "", true, false},      FlagSpec{"--quiet", "", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -52,29 +49,8 @@ const FlagSpec* findFlag(std::string_view name) {
     return found == flagSpecs.end() ? nullptr : &*found;
 }
 
-std::string_view trimmed(std::string_view text) {
-    const auto first = text.find_first_not_of(" \t");
-    if (first == std::string_view::npos)
-        return {};
-    const auto last = text.find_last_not_of(" \t");
-    return text.substr(first, last - first + 1);
-}
-
-std::optional<double> parseNumber(std::string_view text) {
-    text = trimmed(text);
-    if (!text.empty() && text.front() == '+')
-        text.remove_prefix(1);
-    if (text.empty())
-        return std::nullopt;
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-        return std::nullopt;
-    return value;
-}
-
 std::optional<int> parsePositiveInteger(std::string_view text) {
-    text = trimmed(text);
+    text = trimmedText(text);
     int value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 1)
@@ -86,8 +62,8 @@ std::optional<MapPoint> parsePoint(std::string_view text) {
     const auto comma = text.find(',');
     if (comma == std::string_view::npos)
         return std::nullopt;
-    const auto x = parseNumber(text.substr(0, comma));
-    const auto y = parseNumber(text.substr(comma + 1));
+    const auto x = parseFiniteNumber(text.substr(0, comma));
+    const auto y = parseFiniteNumber(text.substr(comma + 1));
     if (!x || !y)
         return std::nullopt;
     return MapPoint{*x, *y};
@@ -116,6 +92,46 @@ bool looksLikeFlag(std::string_view argument) {
     return argument.size() > 2 && argument.substr(0, 2) == "--";
 }
 
+bool anyPlannerDeclares(const std::string& key) {
+    for (const PlannerDescription& planner : plannerDescriptions())
+        if (findParameter(planner.parameters, key) != nullptr)
+            return true;
+    return false;
+}
+
+// Words of `text` on lines of at most `width` characters, each line indented.
+std::string wrapped(const std::string& text, std::size_t indent, std::size_t width) {
+    std::istringstream words(text);
+    std::string result;
+    std::string line;
+    std::string word;
+    while (words >> word) {
+        if (!line.empty() && indent + line.size() + 1 + word.size() > width) {
+            result += std::string(indent, ' ') + line + "\n";
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+    }
+    if (!line.empty())
+        result += std::string(indent, ' ') + line + "\n";
+    return result;
+}
+
+// A planner's page for --help-planner: name, summary, then each parameter with its default, what it
+// takes and what it does.
+void describePlanner(std::ostringstream& text, const PlannerDescription& planner) {
+    text << planner.label << " (" << planner.name << (planner.singleRobot ? ", one robot" : "") << ")\n";
+    text << wrapped(planner.summary, 2, 100)
+         << "\nParameters (--param KEY=VALUE, or planner.parameters in a "
+            "mission file), shown with their defaults:\n";
+    for (const ParameterSpec& parameter : planner.parameters) {
+        text << "  " << parameter.key << "=" << parameter.format(parameter.defaultValue) << "\n";
+        text << wrapped(parameter.help + ". Takes " + parameter.expected() +
+                            (parameter.unit.empty() ? "" : " (" + parameter.unit + ")") + ".",
+                        6, 100);
+    }
+}
+
 CommandLineParseResult failure(std::string message) {
     CommandLineParseResult result;
     result.error = std::move(message);
@@ -127,9 +143,24 @@ CommandLineParseResult failure(std::string message) {
 
 CommandLineParseResult CommandLine::parse(const std::vector<std::string>& arguments) {
     // --help and --version win over everything else, so a user can always get them.
-    for (const auto& argument : arguments) {
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& argument = arguments[i];
         if (argument == "--")
             break;
+        if (argument == "--help-planner" || argument.rfind("--help-planner=", 0) == 0) {
+            const bool inlineName = argument.size() > std::string("--help-planner").size();
+            const std::string name = inlineName
+                                         ? argument.substr(argument.find('=') + 1)
+                                         : (i + 1 < arguments.size() ? arguments[i + 1] : std::string());
+            if (name.empty())
+                return failure("--help-planner needs a value: NAME");
+            if (!findPlannerDescription(name))
+                return failure("--help-planner: " + unknownPlannerMessage(name));
+            CommandLineParseResult result;
+            result.options.mode = RunMode::PlannerHelp;
+            result.options.helpPlanner = name;
+            return result;
+        }
         if (argument == "--help" || argument == "-h") {
             CommandLineParseResult result;
             result.options.mode = RunMode::Help;
@@ -184,7 +215,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
         } else {
             return failure(std::string(spec->name) + " needs a value: " + std::string(spec->valueName));
         }
-        if (!spec->valueName.empty() && trimmed(value).empty()) {
+        if (!spec->valueName.empty() && trimmedText(value).empty()) {
             return failure(std::string(spec->name) + " needs a value: " + std::string(spec->valueName));
         }
 
@@ -211,23 +242,32 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 return failure("--start-crs: " + quoted(value) + " is not EPSG:N");
             options.startCrs = value;
         } else if (flag == "--planner") {
+            if (!findPlannerDescription(value))
+                return failure("--planner: " + unknownPlannerMessage(value));
             options.planner = value;
+        } else if (flag == "--param") {
+            const auto equals = value.find('=');
+            const std::string key = std::string(trimmedText(std::string_view(value).substr(0, equals)));
+            if (equals == std::string::npos || key.empty())
+                return failure("--param: " + quoted(value) + " is not KEY=VALUE");
+            if (!anyPlannerDeclares(key))
+                return failure("--param " + key +
+                               ": no planner has a parameter of that name (see mcpp --help)");
+            options.parameters.push_back({key, value.substr(equals + 1), "--param " + key});
         } else if (flag == "--band") {
             const auto band = parsePositiveInteger(value);
             if (!band)
                 return failure("--band: " + quoted(value) + " is not a band number (1, 2, ...)");
             options.band = *band;
         } else if (flag == "--purity") {
-            const auto purity = parseNumber(value);
-            if (!purity || *purity < 0.0 || *purity >= 1.0) {
-                return failure("--purity: " + quoted(value) +
-                               " is not a fraction from 0 up to (not including) 1");
-            }
-            options.purityTolerance = *purity;
+            std::string problem;
+            if (!DecompositionOptions::purityToleranceParameter().parse(value, &problem))
+                return failure("--purity: " + problem);
+            options.parameters.push_back({"purity_tolerance", value, "--purity"});
         } else if (flag == "--missing-as-obstacle") {
             options.missingAsObstacle = true;
         } else if (flag == "--open-paths") {
-            options.openPaths = true;
+            options.parameters.push_back({"closed_tour", "false", "--open-paths"});
         } else if (flag == "--quiet") {
             options.quiet = true;
         }
@@ -298,28 +338,35 @@ std::string CommandLine::usage() {
            "  --start-crs EPSG:N       CRS of the --start coordinates, e.g. EPSG:4326 for "
            "longitude,latitude\n"
            "  --band N                 raster band holding the classes (default 1)\n"
-           "  --planner NAME           planner to run (default mcpp-mlct)\n"
-           "  --purity F               a class covering at most this fraction of a cell does not split it\n"
-           "                           (0 <= F < 1, default 0)\n"
+           "  --planner NAME           planner to run (default mcpp-mlct; the list is below)\n"
+           "  --param KEY=VALUE        a parameter of the planner (the list is below); repeatable\n"
+           "  --purity F               same as --param purity_tolerance=F: a class covering at most this\n"
+           "                           fraction of a cell does not split it (0 <= F < 1, default 0)\n"
            "  --missing-as-obstacle    treat raster values the class table lacks as obstacles instead of\n"
            "                           failing\n"
-           "  --open-paths             paths stop at their last cell instead of returning to the start\n"
+           "  --open-paths             same as --param closed_tour=false: paths stop at their last cell\n"
+           "                           instead of returning to the start\n"
            "  -q, --quiet              no progress lines, warnings or summary; errors are still printed\n"
            "\n"
            "Mission files (format: docs/mission-format.md) may be combined with --band, --planner,\n"
-           "--purity, --missing-as-obstacle and --open-paths, which override the mission's values.\n"
+           "--param, --purity, --missing-as-obstacle and --open-paths, which override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"
+           "  --help-planner NAME      a planner's parameters, their defaults, ranges and meaning\n"
            "  -v, --version            the version\n"
            "\n"
            "Outputs in DIR: plan.geojson, report.json, report.csv, plan.gpkg, plan.png and per robot i\n"
            "(numbered from 0, as in the \"robot\" fields of plan.geojson and report.json) robot_<i>.plan\n"
            "(QGroundControl), robot_<i>.waypoints (QGC WPL 110) and robot_<i>.csv.\n"
            "\n"
-           "Planners:";
-    for (const auto& planner : availablePlanners())
-        text << ' ' << planner;
+           "Planners (mcpp --help-planner NAME lists one's parameters for --param):\n";
+    std::size_t plannerWidth = 0;
+    for (const PlannerDescription& planner : plannerDescriptions())
+        plannerWidth = std::max(plannerWidth, planner.name.size());
+    for (const PlannerDescription& planner : plannerDescriptions())
+        text << "  " << planner.name << std::string(plannerWidth - planner.name.size() + 2, ' ')
+             << planner.summary << (planner.singleRobot ? " (one robot)" : "") << "\n";
     text << "\nPresets:\n";
     const auto presets = io::classTablePresets();
     std::size_t nameWidth = 0;
@@ -330,6 +377,15 @@ std::string CommandLine::usage() {
              << preset.description << '\n';
     }
     text << "\nExit status: 0 success, 2 bad input (one line on stderr says what), 1 internal error.\n";
+    return text.str();
+}
+
+std::string CommandLine::plannerHelp(const std::string& name) {
+    const auto planner = findPlannerDescription(name);
+    if (!planner)
+        return unknownPlannerMessage(name) + "\n";
+    std::ostringstream text;
+    describePlanner(text, *planner);
     return text.str();
 }
 

@@ -14,6 +14,8 @@ class CommandLine {
     // arguments excludes the program name.
     [[nodiscard]] static CommandLineParseResult parse(const std::vector<std::string>& arguments);
     [[nodiscard]] static std::string usage();
+    // One planner's description and parameters, for --help-planner.
+    [[nodiscard]] static std::string plannerHelp(const std::string& name);
     [[nodiscard]] static std::string versionText();
 };
 

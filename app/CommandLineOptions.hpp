@@ -9,16 +9,26 @@
 namespace mcpp::app {
 
 enum class RunMode {
-    Gui,     // open the window, optionally with a mission or raster
-    Batch,   // plan headless and write the outputs
-    Help,    // print the usage and exit
-    Version, // print the version and exit
+    Gui,         // open the window, optionally with a mission or raster
+    Batch,       // plan headless and write the outputs
+    Help,        // print the usage and exit
+    PlannerHelp, // print one planner's parameters and exit
+    Version,     // print the version and exit
+};
+
+// A planner parameter set on the command line, checked against the planner's declaration once the
+// planner is known (it may come from the mission file).
+struct ParameterOverride {
+    std::string key;
+    std::string value; // as typed
+    std::string flag;  // how messages name it: "--param purity_tolerance", "--purity", "--open-paths"
 };
 
 // What the command line asked for. Optional fields left empty keep the mission's (or the default) value.
 struct CommandLineOptions {
     RunMode mode = RunMode::Gui;
     std::string guiFile;          // mission or raster to open in GUI mode; may be empty
+    std::string helpPlanner;      // --help-planner
     std::string missionPath;      // batch mode from a mission file
     std::string rasterPath;       // batch mode with the mission given by flags
     std::string classesPath;      // --classes
@@ -28,9 +38,8 @@ struct CommandLineOptions {
     std::string outputDirectory;
     std::optional<std::string> planner;
     std::optional<int> band;
-    std::optional<double> purityTolerance;
+    std::vector<ParameterOverride> parameters; // --param, --purity, --open-paths, in the order given
     bool missingAsObstacle = false;
-    bool openPaths = false;
     bool quiet = false;
 
     [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }

@@ -45,6 +45,9 @@ int main(int argc, char* argv[]) {
     case mcpp::app::RunMode::Help:
         std::cout << mcpp::app::CommandLine::usage();
         return 0;
+    case mcpp::app::RunMode::PlannerHelp:
+        std::cout << mcpp::app::CommandLine::plannerHelp(parsed.options.helpPlanner);
+        return 0;
     case mcpp::app::RunMode::Version:
         std::cout << mcpp::app::CommandLine::versionText();
         return 0;

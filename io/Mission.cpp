@@ -1,5 +1,6 @@
 #include "io/Mission.hpp"
 
+#include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/internal/GdalSupport.hpp"
@@ -24,7 +25,7 @@ namespace {
 using internal::JsonValue;
 
 constexpr const char* formatName = "mcpp-mission";
-constexpr int currentVersion = 1;
+constexpr int currentVersion = 2;
 
 std::string typeName(const QJsonValue& value) {
     switch (value.type()) {
@@ -228,44 +229,80 @@ bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string
     return true;
 }
 
-bool readPlanner(MissionReader& reader, const QJsonValue& value, PlannerSettings& settings) {
+// One parameter from JSON, typed by its declaration.
+bool readParameter(MissionReader& reader, const QJsonValue& value, const std::string& path,
+                   const ParameterSpec& spec, ParameterValues& values) {
+    ParameterValue parameter;
+    switch (spec.type) {
+    case ParameterType::Boolean:
+        if (!value.isBool())
+            return reader.wrongType(path, value, "true or false");
+        parameter = value.toBool();
+        break;
+    case ParameterType::Integer: {
+        int whole = 0;
+        if (!reader.integer(value, path, whole))
+            return false;
+        parameter = whole;
+        break;
+    }
+    case ParameterType::Real: {
+        double real = 0.0;
+        if (!reader.number(value, path, real))
+            return false;
+        parameter = real;
+        break;
+    }
+    case ParameterType::Choice: {
+        std::string word;
+        if (!reader.string(value, path, word))
+            return false;
+        parameter = word;
+        break;
+    }
+    }
+    if (const auto problem = spec.problemWith(parameter))
+        return reader.fail(path, *problem);
+    values.set(spec.key, parameter);
+    return true;
+}
+
+// Version 2: {"name": ..., "parameters": {...}}. Version 1 kept mcpp-mlct's parameters beside the name.
+bool readPlanner(MissionReader& reader, const QJsonValue& value, int version, PlannerChoice& choice) {
     const std::string path = "planner";
     QJsonObject object;
-    if (!reader.object(value, path, object))
+    if (!reader.object(value, path, object) ||
+        !reader.optional(object, path, "name", choice.planner, &MissionReader::string))
         return false;
-    if (!reader.onlyKeys(object, path,
-                         {"name", "purity_tolerance", "blocked_threshold", "closed_tour",
-                          "rebalance_iterations", "snap_starts_to_free_cells"})) {
-        return false;
+    const auto description = findPlannerDescription(choice.planner);
+    if (!description)
+        return reader.fail("planner.name", unknownPlannerMessage(choice.planner));
+    QJsonObject given = object;
+    std::string parametersPath = path;
+    if (version >= 2) {
+        if (!reader.onlyKeys(object, path, {"name", "parameters"}))
+            return false;
+        given = {};
+        if (const QJsonValue parameters = object.value(QLatin1String("parameters"));
+            !parameters.isUndefined())
+            if (!reader.object(parameters, "planner.parameters", given))
+                return false;
+        parametersPath = "planner.parameters";
     }
-    if (!reader.optional(object, path, "name", settings.planner, &MissionReader::string) ||
-        !reader.optional(object, path, "purity_tolerance", settings.purityTolerance,
-                         &MissionReader::number) ||
-        !reader.optional(object, path, "blocked_threshold", settings.blockedThreshold,
-                         &MissionReader::number) ||
-        !reader.optional(object, path, "closed_tour", settings.closedTour, &MissionReader::boolean) ||
-        !reader.optional(object, path, "rebalance_iterations", settings.rebalanceIterations,
-                         &MissionReader::integer) ||
-        !reader.optional(object, path, "snap_starts_to_free_cells", settings.snapStartsToFreeCells,
-                         &MissionReader::boolean)) {
-        return false;
+    ParameterValues values;
+    for (auto it = given.begin(); it != given.end(); ++it) {
+        const std::string key = it.key().toStdString();
+        if (version < 2 && key == "name")
+            continue;
+        const std::string keyPath = MissionReader::join(parametersPath, key);
+        const ParameterSpec* spec = findParameter(description->parameters, key);
+        if (spec == nullptr)
+            return reader.fail(keyPath, "unknown parameter of planner " + choice.planner +
+                                            " (parameters: " + parameterKeys(description->parameters) + ")");
+        if (!readParameter(reader, it.value(), keyPath, *spec, values))
+            return false;
     }
-    const auto planners = availablePlanners();
-    if (std::find(planners.begin(), planners.end(), settings.planner) == planners.end()) {
-        std::string known;
-        for (const auto& name : planners)
-            known += (known.empty() ? "" : ", ") + name;
-        return reader.fail("planner.name",
-                           "unknown planner \"" + settings.planner + "\" (available: " + known + ")");
-    }
-    if (settings.purityTolerance < 0.0 || settings.purityTolerance >= 1.0) {
-        return reader.fail("planner.purity_tolerance", "must be in [0, 1)");
-    }
-    if (settings.blockedThreshold < 0.0 || settings.blockedThreshold > 1.0) {
-        return reader.fail("planner.blocked_threshold", "must be in [0, 1]");
-    }
-    if (settings.rebalanceIterations < 0)
-        return reader.fail("planner.rebalance_iterations", "must be >= 0");
+    choice.parameters = resolveParameters(description->parameters, values);
     return true;
 }
 
@@ -285,6 +322,30 @@ bool readExports(MissionReader& reader, const QJsonValue& value, ExportSettings&
     if (exports.cruiseSpeedMetresPerSecond < 0.0)
         return reader.fail("exports.cruise_speed_mps", "must be >= 0");
     return true;
+}
+
+JsonValue jsonOf(const ParameterValue& value) {
+    if (const auto* flag = std::get_if<bool>(&value))
+        return JsonValue(*flag);
+    if (const auto* whole = std::get_if<int>(&value))
+        return JsonValue(*whole);
+    if (const auto* real = std::get_if<double>(&value))
+        return JsonValue(*real);
+    return JsonValue(std::get<std::string>(value));
+}
+
+// The planner's parameters in the order it declares them (then any others, by key), for a readable file.
+std::vector<std::pair<std::string, ParameterValue>> orderedParameters(const PlannerChoice& choice) {
+    std::vector<std::pair<std::string, ParameterValue>> ordered;
+    if (const auto description = findPlannerDescription(choice.planner))
+        for (const ParameterSpec& spec : description->parameters)
+            if (const ParameterValue* value = choice.parameters.find(spec.key))
+                ordered.emplace_back(spec.key, *value);
+    for (const auto& [key, value] : choice.parameters.all())
+        if (std::none_of(ordered.begin(), ordered.end(),
+                         [&](const auto& entry) { return entry.first == key; }))
+            ordered.emplace_back(key, value);
+    return ordered;
 }
 
 std::string lineAndColumn(const std::string& text, qsizetype offset) {
@@ -390,13 +451,14 @@ Result<Mission> loadMission(const std::string& path) {
     }
 
     if (const QJsonValue planner = root.value(QLatin1String("planner")); !planner.isUndefined()) {
-        if (!readPlanner(reader, planner, mission.settings))
+        if (!readPlanner(reader, planner, mission.version, mission.planner))
             return fail();
     }
     if (const QJsonValue exports = root.value(QLatin1String("exports")); !exports.isUndefined()) {
         if (!readExports(reader, exports, mission.exports))
             return fail();
     }
+    mission.version = currentVersion; // read in the file's version, held and written in this one
     return mission;
 }
 
@@ -434,12 +496,10 @@ std::string missionToJson(const Mission& mission) {
     }
 
     JsonValue& planner = root.add("planner", JsonValue::object());
-    planner.add("name", mission.settings.planner);
-    planner.add("purity_tolerance", mission.settings.purityTolerance);
-    planner.add("blocked_threshold", mission.settings.blockedThreshold);
-    planner.add("closed_tour", mission.settings.closedTour);
-    planner.add("rebalance_iterations", mission.settings.rebalanceIterations);
-    planner.add("snap_starts_to_free_cells", mission.settings.snapStartsToFreeCells);
+    planner.add("name", mission.planner.planner);
+    JsonValue& parameters = planner.add("parameters", JsonValue::object());
+    for (const auto& [key, value] : orderedParameters(mission.planner))
+        parameters.add(key, jsonOf(value));
 
     JsonValue& exports = root.add("exports", JsonValue::object());
     exports.add("altitude_m", mission.exports.altitudeMetres);
@@ -454,15 +514,6 @@ Status saveMission(const Mission& mission, const std::string& path) {
                                " (this mcpp writes " + std::to_string(currentVersion) + ")");
     }
     return internal::writeFileAtomically(path, missionToJson(mission));
-}
-
-Result<MapPoint> robotStartInPlanningFrame(const RobotSpec& robot, const GeoReference& georeference) {
-    if (robot.startCrs.empty())
-        return georeference.fromCrsUnits(robot.start);
-    auto start = georeference.fromCrs(robot.startCrs, robot.start);
-    if (!start)
-        return Result<MapPoint>::failure("robot \"" + robot.name + "\" start: " + start.error());
-    return start;
 }
 
 std::string resolveRasterPath(const Mission& mission, const std::string& missionPath) {

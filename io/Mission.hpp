@@ -2,7 +2,8 @@
 
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
-#include "core/planners/PlannerSettings.hpp"
+#include "core/parameters/PlannerChoice.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/GeoReference.hpp"
 #include "io/Result.hpp"
 
@@ -29,14 +30,14 @@ struct ExportSettings {
 
 // A mission file (docs/mission-format.md): everything needed to plan again.
 struct Mission {
-    int version = 1;
+    int version = 2;        // the format version this mcpp writes; files of version 1 are read and upgraded
     std::string rasterPath; // as written in the file: relative to the mission file's folder when relative
     int band = 1;
     std::string preset; // used when classes is empty
     ClassTable classes;
     bool missingClassesAsObstacles = false;
     std::vector<RobotSpec> robots;
-    PlannerSettings settings;
+    PlannerChoice planner = defaultPlannerChoice(); // every parameter of the planner, defaults filled in
     ExportSettings exports;
 
     friend bool operator==(const Mission&, const Mission&) = default;
@@ -47,10 +48,6 @@ struct Mission {
 // The text saveMission writes: fixed key order, shortest round-trip numbers, so save -> load -> save is
 // byte-identical.
 [[nodiscard]] std::string missionToJson(const Mission& mission);
-// A robot's start in the planning frame (metres). Without start_crs the start is in the planning CRS's own
-// units (feet for a feet CRS, the UTM zone's metres for a warped geographic raster).
-[[nodiscard]] Result<MapPoint> robotStartInPlanningFrame(const RobotSpec& robot,
-                                                         const GeoReference& georeference);
 // The raster path resolved against the mission file's folder.
 [[nodiscard]] std::string resolveRasterPath(const Mission& mission, const std::string& missionPath);
 

@@ -6,10 +6,18 @@
 #include "io/Mission.hpp"
 #include "io/Result.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace mcpp::io {
+
+struct ExportContext;
+
+enum class ImageFormat { Png, Svg };
+// Draws the plan as a picture. io has no renderer of its own: the caller lends one (render/).
+using ImageWriter =
+    std::function<Status(const ExportContext& context, ImageFormat format, const std::string& path)>;
 
 // What every exporter needs besides the plan.
 struct ExportContext {
@@ -17,6 +25,8 @@ struct ExportContext {
     const GeoReference& georeference;
     const ClassTable& classes;
     ExportSettings settings;
+    const ClassGrid* grid = nullptr; // the land cover, for pictures
+    ImageWriter drawImage = {};
 };
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.

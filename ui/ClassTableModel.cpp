@@ -34,7 +34,16 @@ void ClassTableModel::reload() {
     const io::LoadedRaster* raster = document_->raster();
     static const std::map<std::int32_t, std::int64_t> noCounts;
     const auto& counts = raster != nullptr ? raster->classPixelCounts : noCounts;
-    rounded_ = roundFieldsOfView(document_->classes(), counts);
+    // Classes absent from the raster take no part; without counts (no raster) every class does.
+    std::vector<std::int32_t> present;
+    for (const LandCoverClass& landCoverClass : document_->classes().classes()) {
+        const auto found = counts.find(landCoverClass.value);
+        if (counts.empty() || (found != counts.end() && found->second > 0))
+            present.push_back(landCoverClass.value);
+    }
+    rounded_.clear();
+    for (const mcpp::RoundedFieldOfView& entry : roundFieldsOfView(document_->classes(), present))
+        rounded_[entry.classValue] = entry;
     insidePixels_ = 0;
     for (const auto& [value, count] : counts)
         insidePixels_ += count;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/FieldOfViewRounding.hpp"
+#include "core/decomposition/FieldOfViewRounding.hpp"
 
 #include <QAbstractTableModel>
 #include <map>
@@ -53,7 +53,7 @@ class ClassTableModel : public QAbstractTableModel {
 
     MissionDocument* document_;
     QUndoStack* undoStack_;
-    std::map<std::int32_t, RoundedClassFieldOfView> rounded_;
+    std::map<std::int32_t, mcpp::RoundedFieldOfView> rounded_;
     std::int64_t insidePixels_ = 0;
     QString lastRefusal_;
 };

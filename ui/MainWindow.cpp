@@ -1,8 +1,10 @@
 #include "ui/MainWindow.hpp"
 
 #include "io/ClassTableSources.hpp"
+#include "io/ExportCatalogue.hpp"
+#include "io/MissionInputs.hpp"
 #include "io/PlanExport.hpp"
-#include "render/PlanImage.hpp"
+#include "render/PlanImageWriter.hpp"
 #include "ui/ClassTableEditCommand.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/LayersPanel.hpp"
@@ -57,47 +59,8 @@ const QString kRasterFilter =
     QObject::tr("Land-cover rasters (*.tif *.tiff *.img *.vrt *.asc *.gpkg *.nc);;All files (*)");
 const QString kMissionFilter = QObject::tr("mcpp missions (*.json);;All files (*)");
 
-struct ExportDescription {
-    MainWindow::ExportFormat format;
-    QString menuText;
-    QString filter;
-    QString suffix;
-    bool perRobot;
-};
-
-const std::vector<ExportDescription>& exportDescriptions() {
-    using Format = MainWindow::ExportFormat;
-    static const std::vector<ExportDescription> descriptions = {
-        {Format::GeoJson, QObject::tr("GeoJSON…"), QObject::tr("GeoJSON (*.geojson *.json)"),
-         QStringLiteral("geojson"), false},
-        {Format::GeoPackage, QObject::tr("GeoPackage…"), QObject::tr("GeoPackage (*.gpkg)"),
-         QStringLiteral("gpkg"), false},
-        {Format::Kml, QObject::tr("KML…"), QObject::tr("KML (*.kml)"), QStringLiteral("kml"), false},
-        {Format::Gpx, QObject::tr("GPX…"), QObject::tr("GPX (*.gpx)"), QStringLiteral("gpx"), false},
-        {Format::QGroundControlPlan, QObject::tr("QGroundControl plan per robot…"),
-         QObject::tr("QGroundControl plan (*.plan)"), QStringLiteral("plan"), true},
-        {Format::WaypointList, QObject::tr("Waypoint list (QGC WPL) per robot…"),
-         QObject::tr("Waypoint list (*.waypoints *.txt)"), QStringLiteral("waypoints"), true},
-        {Format::WaypointCsv, QObject::tr("Waypoint CSV per robot…"), QObject::tr("CSV (*.csv)"),
-         QStringLiteral("csv"), true},
-        {Format::ReportJson, QObject::tr("Report (JSON)…"), QObject::tr("JSON (*.json)"),
-         QStringLiteral("json"), false},
-        {Format::ReportCsv, QObject::tr("Report (CSV)…"), QObject::tr("CSV (*.csv)"), QStringLiteral("csv"),
-         false},
-        {Format::Png, QObject::tr("Map image (PNG)…"), QObject::tr("PNG image (*.png)"),
-         QStringLiteral("png"), false},
-        {Format::Svg, QObject::tr("Map drawing (SVG)…"), QObject::tr("SVG drawing (*.svg)"),
-         QStringLiteral("svg"), false},
-    };
-    return descriptions;
-}
-
-const ExportDescription& describe(MainWindow::ExportFormat format) {
-    for (const auto& description : exportDescriptions())
-        if (description.format == format)
-            return description;
-    return exportDescriptions().front();
-}
+// Exported PNGs are for print: larger than batch mode's plan.png.
+constexpr int exportImageSide = 3000;
 
 // "zion-plan.plan" -> "zion-plan-robot2.plan" when several robots share one chosen name.
 QString perRobotPath(const QString& path, int robot, int robots) {
@@ -276,12 +239,11 @@ void MainWindow::createDocks() {
     });
 
     settingsPanel_ = new PlannerSettingsPanel(this);
-    connect(settingsPanel_, &PlannerSettingsPanel::settingsEdited, this,
-            [this](const PlannerSettings& settings) {
-                document_->setSettings(settings);
-                settingsModified_ = true;
-                updateTitle();
-            });
+    connect(settingsPanel_, &PlannerSettingsPanel::choiceEdited, this, [this](const PlannerChoice& choice) {
+        document_->setPlannerChoice(choice);
+        settingsModified_ = true;
+        updateTitle();
+    });
 
     resultsPanel_ = new ResultsPanel(this);
 
@@ -348,10 +310,11 @@ void MainWindow::createActions() {
     saveAsAction->setShortcut(QKeySequence::SaveAs);
     fileMenu->addSeparator();
     QMenu* exportMenu = fileMenu->addMenu(tr("&Export plan"));
-    for (const auto& description : exportDescriptions()) {
-        const ExportFormat format = description.format;
-        auto* action =
-            exportMenu->addAction(description.menuText, this, [this, format] { chooseExport(format); });
+    for (const io::ExportFormat& format : io::exportFormats()) {
+        const std::string key = format.key;
+        auto* action = exportMenu->addAction(QString::fromStdString(format.label) + QStringLiteral("…"), this,
+                                             [this, key] { chooseExport(key); });
+        action->setObjectName(QString::fromStdString("export_" + key));
         exportActions_ << action;
     }
     fileMenu->addSeparator();
@@ -515,7 +478,7 @@ void MainWindow::connectDocument() {
         updateActions();
     });
     connect(document_, &MissionDocument::settingsChanged, this,
-            [this] { settingsPanel_->setSettings(document_->settings()); });
+            [this] { settingsPanel_->setChoice(document_->plannerChoice()); });
     connect(document_, &MissionDocument::classesChanged, this, &MainWindow::syncPresetCombo);
     connect(document_, &MissionDocument::planChanged, this, [this] {
         updateResults();
@@ -668,7 +631,7 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     mission.band = raster->band;
     mission.preset = preset.toStdString();
     mission.classes = io::classTableForRaster(*raster, mission.preset);
-    mission.settings = document_->hasMap() ? document_->settings() : PlannerSettings{};
+    mission.planner = document_->hasMap() ? document_->plannerChoice() : defaultPlannerChoice();
     const std::vector<std::string> warnings = raster->warnings;
     document_->reset(std::move(raster), std::move(mission), QString());
     undoStack_->clear();
@@ -694,11 +657,10 @@ bool MainWindow::openMission(const QString& path) {
         return false;
     }
     io::Mission mission = std::move(loaded.value());
-    const QString rasterPath = QString::fromStdString(io::resolveRasterPath(mission, path.toStdString()));
-    io::RasterLoadOptions options;
-    options.band = mission.band;
+    const std::string missionPath = path.toStdString();
+    const QString rasterPath = QString::fromStdString(io::resolveRasterPath(mission, missionPath));
     QApplication::setOverrideCursor(Qt::WaitCursor);
-    auto raster = io::loadLandCoverRaster(rasterPath.toStdString(), options);
+    auto raster = io::loadMissionRaster(mission, missionPath);
     QApplication::restoreOverrideCursor();
     if (!raster.ok()) {
         reportError(tr("Cannot open mission"),
@@ -706,22 +668,20 @@ bool MainWindow::openMission(const QString& path) {
                         .arg(path, rasterPath, QString::fromStdString(raster.error())));
         return false;
     }
-    mission.classes = io::missionClassTable(mission.classes, mission.preset, raster.value());
-    // Starts may be given in another CRS; the GUI keeps them all in the raster's.
-    for (auto& robot : mission.robots) {
-        if (robot.startCrs.empty())
-            continue;
-        const auto converted = raster.value().georeference.fromCrs(robot.startCrs, robot.start);
-        if (!converted.ok()) {
-            reportError(tr("Cannot open mission"),
-                        tr("Mission %1: the start of %2 in %3 cannot be converted: %4")
-                            .arg(path, QString::fromStdString(robot.name),
-                                 QString::fromStdString(robot.startCrs),
-                                 QString::fromStdString(converted.error())));
-            return false;
-        }
-        robot.start = converted.value();
-        robot.startCrs.clear();
+    // The same reading of classes and starts as batch mode, so both plan the same mission.
+    const io::FieldNamer names = io::missionFileFields(missionPath);
+    auto classes = io::missionClasses(mission, raster.value(), names);
+    auto starts = classes ? io::missionStarts(mission, raster.value(), io::StartUnits::PlanningCrs, names)
+                          : io::Result<std::vector<MapPoint>>::failure(classes.error());
+    if (!starts.ok()) {
+        reportError(tr("Cannot open mission"), QString::fromStdString(starts.error()));
+        return false;
+    }
+    mission.classes = std::move(classes.value());
+    // The window keeps every start in the planning frame; saving writes them back in the CRS's units.
+    for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
+        mission.robots[robot].start = starts.value()[robot];
+        mission.robots[robot].startCrs.clear();
     }
     runner_->cancel();
     const std::vector<std::string> warnings = raster.value().warnings;
@@ -752,6 +712,8 @@ bool MainWindow::saveMission(const QString& path) {
     const QString rasterAbsolute =
         QFileInfo(QString::fromStdString(document_->raster()->path)).absoluteFilePath();
     mission.rasterPath = QFileInfo(path).absoluteDir().relativeFilePath(rasterAbsolute).toStdString();
+    for (io::RobotSpec& robot : mission.robots)
+        robot.start = document_->raster()->georeference.toCrsUnits(robot.start);
     const auto status = io::saveMission(mission, path.toStdString());
     if (!status.ok()) {
         reportError(tr("Cannot save mission"),
@@ -769,95 +731,84 @@ bool MainWindow::saveMission(const QString& path) {
     return true;
 }
 
-void MainWindow::chooseExport(ExportFormat format) {
-    const ExportDescription& description = describe(format);
-    QString suggested = QStringLiteral("plan.") + description.suffix;
+void MainWindow::chooseExport(const std::string& formatKey) {
+    const io::ExportFormat* format = io::findExportFormat(formatKey);
+    if (format == nullptr)
+        return;
+    const QString suffix = QString::fromStdString(format->extension);
+    QString suggested = QStringLiteral("plan.") + suffix;
     if (!document_->missionPath().isEmpty())
-        suggested =
-            QFileInfo(document_->missionPath()).completeBaseName() + QStringLiteral(".") + description.suffix;
+        suggested = QFileInfo(document_->missionPath()).completeBaseName() + QStringLiteral(".") + suffix;
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Export plan"), QDir(dialogFolder(kExportFolderKey)).filePath(suggested),
-        description.filter);
+        QString::fromStdString(format->filter));
     if (path.isEmpty())
         return;
     rememberFolder(kExportFolderKey, path);
-    exportPlan(format, path);
+    exportPlan(formatKey, path);
 }
 
-bool MainWindow::exportPlan(ExportFormat format, const QString& path) {
+bool MainWindow::exportPlan(const std::string& formatKey, const QString& path) {
     const Plan* plan = document_->plan();
     if (plan == nullptr || !document_->hasMap()) {
         reportError(tr("Cannot export"), tr("There is no plan to export yet; press Plan first."));
         return false;
     }
+    const io::ExportFormat* format = io::findExportFormat(formatKey);
+    if (format == nullptr) {
+        reportError(tr("Cannot export"),
+                    tr("Unknown export format %1.").arg(QString::fromStdString(formatKey)));
+        return false;
+    }
     const io::LoadedRaster& raster = *document_->raster();
-    const io::ExportContext context{*plan, raster.georeference, document_->classes(),
-                                    document_->mission().exports};
-    const std::string target = path.toStdString();
+    io::ExportContext context{*plan, raster.georeference, document_->classes(), document_->mission().exports};
+    context.grid = &raster.grid;
+    context.drawImage = render::planImageWriter(exportImageSide);
     QStringList written;
     io::Status status;
-    switch (format) {
-    case ExportFormat::GeoJson:
-        status = io::writePlanGeoJson(context, target);
-        break;
-    case ExportFormat::GeoPackage:
-        status = io::writePlanGeoPackage(context, target);
-        break;
-    case ExportFormat::Kml:
-        status = io::writePlanKml(context, target);
-        break;
-    case ExportFormat::Gpx:
-        status = io::writePlanGpx(context, target);
-        break;
-    case ExportFormat::ReportJson:
-        status = io::writeReportJson(context, target);
-        break;
-    case ExportFormat::ReportCsv:
-        status = io::writeReportCsv(context, target);
-        break;
-    case ExportFormat::QGroundControlPlan:
-    case ExportFormat::WaypointList:
-    case ExportFormat::WaypointCsv: {
-        const int robots = static_cast<int>(plan->paths.size());
-        for (int robot = 0; robot < robots && status.ok(); ++robot) {
-            const QString robotPath = perRobotPath(path, robot, robots);
-            const std::string file = robotPath.toStdString();
-            if (format == ExportFormat::QGroundControlPlan)
-                status = io::writeQGroundControlPlan(context, robot, file);
-            else if (format == ExportFormat::WaypointList)
-                status = io::writeWaypointList(context, robot, file);
-            else
-                status = io::writeWaypointCsv(context, robot, file);
-            if (status.ok())
-                written << robotPath;
-        }
-        break;
-    }
-    case ExportFormat::Png:
-    case ExportFormat::Svg: {
-        QString error;
-        const bool ok = format == ExportFormat::Png
-                            ? render::writePlanPng(raster.grid, document_->classes(), *plan, path,
-                                                   QSize(3000, 3000), &error)
-                            : render::writePlanSvg(raster.grid, document_->classes(), *plan, path,
-                                                   QSize(1600, 1600), &error);
-        if (!ok)
-            status = io::Status::failure(error.toStdString());
-        break;
-    }
+    const int robots = static_cast<int>(plan->paths.size());
+    const int files = format->perRobot ? robots : 1;
+    for (int file = 0; file < files && status.ok(); ++file) {
+        const QString target = format->perRobot ? perRobotPath(path, file, robots) : path;
+        status = format->write(context, file, target.toStdString());
+        if (status.ok())
+            written << target;
     }
     if (!status.ok()) {
         reportError(tr("Export failed"),
                     tr("Cannot export the plan to %1: %2").arg(path, QString::fromStdString(status.error())));
         return false;
     }
-    if (written.isEmpty())
-        written << path;
     QString message = tr("Exported %1").arg(written.join(QStringLiteral(", ")));
     if (document_->planStale())
         message += tr(" (note: the plan is out of date)");
     showStatus(message);
     return true;
+}
+
+io::FieldNamer MainWindow::fieldNamer() const {
+    return [this](const io::MissionField& field) -> std::string {
+        using Part = io::MissionField::Part;
+        const auto& robots = document_->robots();
+        switch (field.part) {
+        case Part::Raster:
+            return "the raster";
+        case Part::Classes:
+            return "the class table";
+        case Part::MissingClassesOption:
+            return "the mission's classes.missing_as_obstacles";
+        case Part::Start:
+        case Part::StartCrs:
+            if (field.robot >= 0 && static_cast<std::size_t>(field.robot) < robots.size())
+                return robots[static_cast<std::size_t>(field.robot)].name + "'s start";
+            return "robot " + std::to_string(field.robot + 1) + "'s start";
+        case Part::Planner:
+            return "the planner";
+        case Part::Parameter:
+            break;
+        }
+        return "planner setting " + field.key;
+    };
 }
 
 bool MainWindow::isPlanning() const {
@@ -881,20 +832,16 @@ bool MainWindow::startPlanning() {
                     tr("The class table has a problem: %1").arg(QString::fromStdString(*problem)));
         return false;
     }
-    io::LoadedRaster raster = *document_->raster();
-    const auto reconciled = io::reconcileRasterWithTable(raster, document_->classes(),
-                                                         document_->mission().missingClassesAsObstacles);
-    if (!reconciled.ok()) {
-        reportError(tr("Cannot plan"), QString::fromStdString(reconciled.error()));
+    // The same checks batch mode makes, named in the window's terms.
+    auto prepared = io::planningProblem(*document_->raster(), document_->classes(),
+                                        document_->mission().missingClassesAsObstacles, document_->starts(),
+                                        document_->plannerChoice(), fieldNamer());
+    if (!prepared.ok()) {
+        reportError(tr("Cannot plan"), QString::fromStdString(prepared.error()));
         return false;
     }
-    PlanningProblem problem;
-    problem.grid = std::move(raster.grid);
-    problem.classes = document_->classes();
-    problem.starts = document_->starts();
-    problem.settings = document_->settings();
     planningInputs_ = document_->currentInputs();
-    if (!runner_->start(std::move(problem)))
+    if (!runner_->start(std::move(prepared.value().problem)))
         return false;
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();
     stageLabel_->setText(tr("Starting…"));
@@ -906,7 +853,7 @@ bool MainWindow::startPlanning() {
     updateActions();
     showStatus(tr("Planning %1 robots with %2…")
                    .arg(document_->robots().size())
-                   .arg(QString::fromStdString(document_->settings().planner)),
+                   .arg(QString::fromStdString(document_->plannerChoice().planner)),
                0);
     return true;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/MapPoint.hpp"
+#include "io/MissionInputs.hpp"
 #include "ui/MissionDocument.hpp"
 
 #include <QMainWindow>
@@ -32,20 +33,6 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 
   public:
-    enum class ExportFormat {
-        GeoJson,
-        GeoPackage,
-        Kml,
-        Gpx,
-        QGroundControlPlan,
-        WaypointList,
-        WaypointCsv,
-        ReportJson,
-        ReportCsv,
-        Png,
-        Svg
-    };
-
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
@@ -55,7 +42,8 @@ class MainWindow : public QMainWindow {
     bool saveMission(const QString& path);
     // Per-robot formats (QGC .plan, WPL, CSV waypoints) write one file per robot: path's stem plus the robot
     // number, unless there is a single robot.
-    bool exportPlan(ExportFormat format, const QString& path);
+    // formatKey: a key of io::exportFormats(), e.g. "geojson".
+    bool exportPlan(const std::string& formatKey, const QString& path);
     bool startPlanning();
     void cancelPlanning();
     [[nodiscard]] bool isPlanning() const;
@@ -111,7 +99,9 @@ class MainWindow : public QMainWindow {
     void handlePlanningFinished(const PlanningOutcome& outcome);
     void placeStart(MapPoint point);
     void removeSelectedRobot();
-    void chooseExport(ExportFormat format);
+    void chooseExport(const std::string& formatKey);
+    // How messages of the shared mission layer name a field here: robots by name, settings by key.
+    [[nodiscard]] io::FieldNamer fieldNamer() const;
     [[nodiscard]] QString dialogFolder(const QString& key) const;
     void rememberFolder(const QString& key, const QString& path);
 

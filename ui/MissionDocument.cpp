@@ -1,19 +1,10 @@
 #include "ui/MissionDocument.hpp"
 
+#include "core/model/StartPointCheck.hpp"
+
 #include <cmath>
 
 namespace mcpp::ui {
-
-namespace {
-
-bool sameSettings(const PlannerSettings& a, const PlannerSettings& b) {
-    return a.planner == b.planner && a.purityTolerance == b.purityTolerance &&
-           a.blockedThreshold == b.blockedThreshold && a.closedTour == b.closedTour &&
-           a.rebalanceIterations == b.rebalanceIterations &&
-           a.snapStartsToFreeCells == b.snapStartsToFreeCells;
-}
-
-} // namespace
 
 MissionDocument::MissionDocument(QObject* parent) : QObject(parent) {}
 
@@ -48,13 +39,11 @@ std::vector<MapPoint> MissionDocument::starts() const {
 bool MissionDocument::planStale() const {
     if (!plan_)
         return false;
-    const PlanInputs current = currentInputs();
-    return !(current.classes == planInputs_.classes && current.starts == planInputs_.starts &&
-             sameSettings(current.settings, planInputs_.settings));
+    return !(currentInputs() == planInputs_);
 }
 
 PlanInputs MissionDocument::currentInputs() const {
-    return {mission_.classes, starts(), mission_.settings};
+    return {mission_.classes, starts(), mission_.planner};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {
@@ -70,8 +59,8 @@ void MissionDocument::setRobots(std::vector<io::RobotSpec> robots) {
     emitStaleIfChanged();
 }
 
-void MissionDocument::setSettings(const PlannerSettings& settings) {
-    mission_.settings = settings;
+void MissionDocument::setPlannerChoice(const PlannerChoice& choice) {
+    mission_.planner = choice;
     emit settingsChanged();
     emitStaleIfChanged();
 }
@@ -100,44 +89,27 @@ std::optional<std::int32_t> MissionDocument::classValueAt(MapPoint point) const 
     if (!raster_)
         return std::nullopt;
     const ClassGrid& grid = raster_->grid;
-    const double column = std::floor((point.x - grid.originX) / grid.pixelWidth);
-    const double row = std::floor((grid.originY - point.y) / grid.pixelHeight);
-    if (column < 0.0 || row < 0.0 || column >= grid.columns || row >= grid.rows)
+    const auto pixel = grid.pixelAt(point);
+    if (!pixel || grid.isOutside(pixel->column, pixel->row))
         return std::nullopt;
-    const int c = static_cast<int>(column);
-    const int r = static_cast<int>(row);
-    if (grid.isOutside(c, r))
-        return std::nullopt;
-    return grid.valueAt(c, r);
+    return grid.valueAt(pixel->column, pixel->row);
 }
 
 std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreRobot) const {
     if (!raster_)
         return tr("Open a land-cover raster before placing robots.");
-    const QString where = QStringLiteral("(%1, %2)").arg(point.x, 0, 'f', 1).arg(point.y, 0, 'f', 1);
     const ClassGrid& grid = raster_->grid;
-    if (point.x < grid.originX || point.x >= grid.maxX() || point.y <= grid.minY() || point.y > grid.originY)
-        return tr("Start %1 is outside the map.").arg(where);
-    const auto value = classValueAt(point);
-    if (!value)
-        return tr("Start %1 is on a pixel with no data or outside the task area.").arg(where);
-    const LandCoverClass* landCoverClass = mission_.classes.find(*value);
-    if (landCoverClass == nullptr)
-        return tr("Start %1 is on class %2, which has no row in the class table.").arg(where).arg(*value);
-    if (!landCoverClass->isTraversable())
-        return tr("Start %1 is on an obstacle: %2 (%3) is not passable.")
-            .arg(where, QString::fromStdString(landCoverClass->name))
-            .arg(*value);
-    const double column = std::floor((point.x - grid.originX) / grid.pixelWidth);
-    const double row = std::floor((grid.originY - point.y) / grid.pixelHeight);
+    if (const auto problem = startPointProblem(grid, mission_.classes, point))
+        return tr("Start %1.").arg(QString::fromStdString(problem->detail));
+    const auto pixel = grid.pixelAt(point);
     for (std::size_t robot = 0; robot < mission_.robots.size(); ++robot) {
         if (static_cast<int>(robot) == ignoreRobot)
             continue;
-        const MapPoint other = mission_.robots[robot].start;
-        if (std::floor((other.x - grid.originX) / grid.pixelWidth) == column &&
-            std::floor((grid.originY - other.y) / grid.pixelHeight) == row)
+        const auto other = grid.pixelAt(mission_.robots[robot].start);
+        if (other && other->column == pixel->column && other->row == pixel->row)
             return tr("Start %1 is on the same pixel as %2's start.")
-                .arg(where, QString::fromStdString(mission_.robots[robot].name));
+                .arg(QString::fromStdString(describePoint(point)),
+                     QString::fromStdString(mission_.robots[robot].name));
     }
     return std::nullopt;
 }

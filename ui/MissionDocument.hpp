@@ -3,7 +3,7 @@
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
 #include "core/model/Plan.hpp"
-#include "core/planners/PlannerSettings.hpp"
+#include "core/parameters/PlannerChoice.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
 
@@ -19,7 +19,9 @@ namespace mcpp::ui {
 struct PlanInputs {
     ClassTable classes;
     std::vector<MapPoint> starts;
-    PlannerSettings settings;
+    PlannerChoice planner;
+
+    friend bool operator==(const PlanInputs&, const PlanInputs&) = default;
 };
 
 // The open mission: raster, class table, robots, planner settings and the last plan. Widgets read it and
@@ -43,7 +45,7 @@ class MissionDocument : public QObject {
     [[nodiscard]] const ClassTable& classes() const { return mission_.classes; }
     [[nodiscard]] const std::vector<io::RobotSpec>& robots() const { return mission_.robots; }
     [[nodiscard]] std::vector<MapPoint> starts() const;
-    [[nodiscard]] const PlannerSettings& settings() const { return mission_.settings; }
+    [[nodiscard]] const PlannerChoice& plannerChoice() const { return mission_.planner; }
     [[nodiscard]] const QString& missionPath() const { return missionPath_; }
     [[nodiscard]] const Plan* plan() const { return plan_.get(); }
     [[nodiscard]] std::shared_ptr<const Plan> sharedPlan() const { return plan_; }
@@ -52,7 +54,7 @@ class MissionDocument : public QObject {
 
     void setClasses(const ClassTable& classes, const QString& preset);
     void setRobots(std::vector<io::RobotSpec> robots);
-    void setSettings(const PlannerSettings& settings);
+    void setPlannerChoice(const PlannerChoice& choice);
     void setMissionPath(const QString& path);
     void setPlan(std::shared_ptr<const Plan> plan, PlanInputs inputs);
 

@@ -6,96 +6,184 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QLabel>
 #include <QSpinBox>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace mcpp::ui {
+namespace {
+
+// Enough decimals to show the default and the smallest useful step of the range.
+int decimalsFor(const ParameterSpec& spec) {
+    const double span = std::isfinite(spec.maximum - spec.minimum) ? spec.maximum - spec.minimum : 1000.0;
+    return std::clamp(static_cast<int>(std::ceil(-std::log10(span / 1000.0))), 0, 6);
+}
+
+QString tooltipOf(const ParameterSpec& spec) {
+    return QString::fromStdString(spec.help + " (" + spec.key + ": " + spec.expected() + ")");
+}
+
+} // namespace
 
 PlannerSettingsPanel::PlannerSettingsPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("plannerSettingsPanel"));
-    auto* layout = new QFormLayout(this);
-
+    auto* layout = new QVBoxLayout(this);
+    auto* top = new QFormLayout;
     planner_ = new QComboBox(this);
     planner_->setObjectName(QStringLiteral("plannerCombo"));
-    for (const auto& name : availablePlanners())
-        planner_->addItem(QString::fromStdString(name));
+    for (const PlannerDescription& description : plannerDescriptions()) {
+        planner_->addItem(QString::fromStdString(description.label),
+                          QString::fromStdString(description.name));
+        planner_->setItemData(planner_->count() - 1, QString::fromStdString(description.summary),
+                              Qt::ToolTipRole);
+    }
     planner_->setToolTip(tr("The coverage planner to run"));
-    layout->addRow(tr("Planner"), planner_);
-
-    purityTolerance_ = new QDoubleSpinBox(this);
-    purityTolerance_->setObjectName(QStringLiteral("purityToleranceSpin"));
-    purityTolerance_->setRange(0.0, 0.5);
-    purityTolerance_->setSingleStep(0.01);
-    purityTolerance_->setDecimals(3);
-    purityTolerance_->setToolTip(
-        tr("A class covering at most this fraction of a cell does not force a split"));
-    layout->addRow(tr("Purity tolerance"), purityTolerance_);
-
-    blockedThreshold_ = new QDoubleSpinBox(this);
-    blockedThreshold_->setObjectName(QStringLiteral("blockedThresholdSpin"));
-    blockedThreshold_->setRange(0.0, 1.0);
-    blockedThreshold_->setSingleStep(0.05);
-    blockedThreshold_->setDecimals(2);
-    blockedThreshold_->setToolTip(
-        tr("A smallest cell with more obstacle or outside pixels than this fraction is blocked"));
-    layout->addRow(tr("Blocked threshold"), blockedThreshold_);
-
-    closedTour_ = new QCheckBox(tr("Return to start (closed tour)"), this);
-    closedTour_->setObjectName(QStringLiteral("closedTourCheck"));
-    closedTour_->setToolTip(tr("Closed tours end where they start; open paths stop at the last cell"));
-    layout->addRow(QString(), closedTour_);
-
-    rebalanceIterations_ = new QSpinBox(this);
-    rebalanceIterations_->setObjectName(QStringLiteral("rebalanceSpin"));
-    rebalanceIterations_->setRange(0, 1'000'000);
-    rebalanceIterations_->setSpecialValueText(tr("automatic"));
-    rebalanceIterations_->setToolTip(
-        tr("Cap on cell moves that even out the robots' workloads; 0 picks one from the problem size"));
-    layout->addRow(tr("Rebalance iterations"), rebalanceIterations_);
-
-    snapStarts_ = new QCheckBox(tr("Move blocked starts to the nearest free cell"), this);
-    snapStarts_->setObjectName(QStringLiteral("snapStartsCheck"));
-    layout->addRow(QString(), snapStarts_);
-
-    connect(planner_, &QComboBox::currentIndexChanged, this, &PlannerSettingsPanel::emitEdited);
-    connect(purityTolerance_, &QDoubleSpinBox::valueChanged, this, &PlannerSettingsPanel::emitEdited);
-    connect(blockedThreshold_, &QDoubleSpinBox::valueChanged, this, &PlannerSettingsPanel::emitEdited);
-    connect(closedTour_, &QCheckBox::toggled, this, &PlannerSettingsPanel::emitEdited);
-    connect(rebalanceIterations_, &QSpinBox::valueChanged, this, &PlannerSettingsPanel::emitEdited);
-    connect(snapStarts_, &QCheckBox::toggled, this, &PlannerSettingsPanel::emitEdited);
-    setSettings(PlannerSettings{});
+    top->addRow(tr("Planner"), planner_);
+    layout->addLayout(top);
+    summary_ = new QLabel(this);
+    summary_->setObjectName(QStringLiteral("plannerSummary"));
+    summary_->setWordWrap(true);
+    summary_->setForegroundRole(QPalette::PlaceholderText);
+    layout->addWidget(summary_);
+    form_ = new QFormLayout;
+    layout->addLayout(form_);
+    layout->addStretch(1);
+    connect(planner_, &QComboBox::currentIndexChanged, this, &PlannerSettingsPanel::plannerPicked);
+    setChoice(defaultPlannerChoice());
 }
 
-void PlannerSettingsPanel::setSettings(const PlannerSettings& settings) {
+void PlannerSettingsPanel::setChoice(const PlannerChoice& choice) {
     updating_ = true;
-    shown_ = settings;
-    const QString name = QString::fromStdString(settings.planner);
-    if (planner_->findText(name) < 0)
-        planner_->addItem(name); // keep a mission's unknown planner visible
-    planner_->setCurrentText(name);
-    purityTolerance_->setValue(settings.purityTolerance);
-    blockedThreshold_->setValue(settings.blockedThreshold);
-    closedTour_->setChecked(settings.closedTour);
-    rebalanceIterations_->setValue(settings.rebalanceIterations);
-    snapStarts_->setChecked(settings.snapStartsToFreeCells);
+    shown_ = choice;
+    int index = planner_->findData(QString::fromStdString(choice.planner));
+    if (index < 0) { // keep a mission's unknown planner visible rather than silently replacing it
+        planner_->addItem(QString::fromStdString(choice.planner), QString::fromStdString(choice.planner));
+        index = planner_->count() - 1;
+    }
+    planner_->setCurrentIndex(index);
+    const auto description = findPlannerDescription(choice.planner);
+    rebuildForm(description.value_or(PlannerDescription{}));
+    showValues();
     updating_ = false;
 }
 
-PlannerSettings PlannerSettingsPanel::settings() const {
-    PlannerSettings settings = shown_;
-    settings.planner = planner_->currentText().toStdString();
-    settings.purityTolerance = purityTolerance_->value();
-    settings.blockedThreshold = blockedThreshold_->value();
-    settings.closedTour = closedTour_->isChecked();
-    settings.rebalanceIterations = rebalanceIterations_->value();
-    settings.snapStartsToFreeCells = snapStarts_->isChecked();
-    return settings;
+QWidget* PlannerSettingsPanel::editorOf(const std::string& key) const {
+    for (const auto& [spec, editor] : editors_)
+        if (spec.key == key)
+            return editor;
+    return nullptr;
 }
 
-void PlannerSettingsPanel::emitEdited() {
+void PlannerSettingsPanel::rebuildForm(const PlannerDescription& description) {
+    while (form_->rowCount() > 0)
+        form_->removeRow(0);
+    editors_.clear();
+    summary_->setText(QString::fromStdString(description.summary) +
+                      (description.singleRobot ? tr(" One robot only.") : QString()));
+    for (const ParameterSpec& spec : description.parameters) {
+        QWidget* editor = makeEditor(spec);
+        editors_.emplace_back(spec, editor);
+        if (spec.type == ParameterType::Boolean)
+            form_->addRow(QString(), editor);
+        else
+            form_->addRow(QString::fromStdString(spec.label), editor);
+    }
+}
+
+QWidget* PlannerSettingsPanel::makeEditor(const ParameterSpec& spec) {
+    QWidget* editor = nullptr;
+    switch (spec.type) {
+    case ParameterType::Boolean: {
+        auto* check = new QCheckBox(QString::fromStdString(spec.label), this);
+        connect(check, &QCheckBox::toggled, this, [this, spec](bool on) { parameterEdited(spec, on); });
+        editor = check;
+        break;
+    }
+    case ParameterType::Integer: {
+        auto* spin = new QSpinBox(this);
+        const auto bound = [](double value) {
+            return static_cast<int>(std::clamp(value, double(std::numeric_limits<int>::min()),
+                                               double(std::numeric_limits<int>::max())));
+        };
+        spin->setRange(bound(spec.minimum), bound(spec.maximumIncluded ? spec.maximum : spec.maximum - 1));
+        connect(spin, &QSpinBox::valueChanged, this,
+                [this, spec](int value) { parameterEdited(spec, value); });
+        editor = spin;
+        break;
+    }
+    case ParameterType::Real: {
+        auto* spin = new QDoubleSpinBox(this);
+        const int decimals = decimalsFor(spec);
+        const double smallest = std::pow(10.0, -decimals);
+        spin->setDecimals(decimals);
+        spin->setRange(std::isfinite(spec.minimum) ? spec.minimum : -1e9,
+                       std::isfinite(spec.maximum)
+                           ? (spec.maximumIncluded ? spec.maximum : spec.maximum - smallest)
+                           : 1e9);
+        spin->setSingleStep(std::max(smallest, std::isfinite(spec.maximum - spec.minimum)
+                                                   ? (spec.maximum - spec.minimum) / 100.0
+                                                   : 1.0));
+        if (!spec.unit.empty())
+            spin->setSuffix(QStringLiteral(" ") + QString::fromStdString(spec.unit));
+        connect(spin, &QDoubleSpinBox::valueChanged, this,
+                [this, spec](double value) { parameterEdited(spec, value); });
+        editor = spin;
+        break;
+    }
+    case ParameterType::Choice: {
+        auto* combo = new QComboBox(this);
+        for (const std::string& choice : spec.choices)
+            combo->addItem(QString::fromStdString(choice));
+        connect(combo, &QComboBox::currentTextChanged, this,
+                [this, spec](const QString& text) { parameterEdited(spec, text.toStdString()); });
+        editor = combo;
+        break;
+    }
+    }
+    editor->setObjectName(QString::fromStdString("parameter_" + spec.key));
+    editor->setToolTip(tooltipOf(spec));
+    return editor;
+}
+
+void PlannerSettingsPanel::showValues() {
+    const bool wasUpdating = updating_;
+    updating_ = true;
+    for (const auto& [spec, editor] : editors_) {
+        const ParameterValue* given = shown_.parameters.find(spec.key);
+        const ParameterValue value = given != nullptr ? *given : spec.defaultValue;
+        if (auto* check = qobject_cast<QCheckBox*>(editor))
+            check->setChecked(std::get<bool>(value));
+        else if (auto* spin = qobject_cast<QSpinBox*>(editor))
+            spin->setValue(std::get<int>(value));
+        else if (auto* real = qobject_cast<QDoubleSpinBox*>(editor))
+            real->setValue(std::holds_alternative<int>(value) ? std::get<int>(value)
+                                                              : std::get<double>(value));
+        else if (auto* combo = qobject_cast<QComboBox*>(editor))
+            combo->setCurrentText(QString::fromStdString(std::get<std::string>(value)));
+    }
+    updating_ = wasUpdating;
+}
+
+void PlannerSettingsPanel::plannerPicked(int index) {
+    if (updating_ || index < 0)
+        return;
+    const std::string name = planner_->itemData(index).toString().toStdString();
+    shown_ = switchPlanner(shown_, name);
+    updating_ = true;
+    rebuildForm(findPlannerDescription(name).value_or(PlannerDescription{}));
+    showValues();
+    updating_ = false;
+    emit choiceEdited(shown_);
+}
+
+void PlannerSettingsPanel::parameterEdited(const ParameterSpec& spec, ParameterValue value) {
     if (updating_)
         return;
-    shown_ = settings();
-    emit settingsEdited(shown_);
+    shown_.parameters.set(spec.key, std::move(value));
+    emit choiceEdited(shown_);
 }
 
 } // namespace mcpp::ui

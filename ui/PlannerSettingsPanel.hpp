@@ -1,38 +1,46 @@
 #pragma once
 
-#include "core/planners/PlannerSettings.hpp"
+#include "core/parameters/PlannerChoice.hpp"
+#include "core/planners/PlannerDescription.hpp"
 
 #include <QWidget>
+#include <utility>
+#include <vector>
 
-class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
-class QSpinBox;
+class QFormLayout;
+class QLabel;
 
 namespace mcpp::ui {
 
-// The planner and its parameters. Emits settingsEdited only for the user's own edits.
+// The planner and its parameters, as each planner declares them: the form is rebuilt from the declaration
+// when the planner changes, so a new planner needs no code here. Emits choiceEdited only for the user's
+// edits.
 class PlannerSettingsPanel : public QWidget {
     Q_OBJECT
 
   public:
     explicit PlannerSettingsPanel(QWidget* parent = nullptr);
-    void setSettings(const PlannerSettings& settings);
-    [[nodiscard]] PlannerSettings settings() const;
+    void setChoice(const PlannerChoice& choice);
+    [[nodiscard]] const PlannerChoice& choice() const { return shown_; }
+    // The editor of a parameter (a spin box, check box or combo box), or nullptr.
+    [[nodiscard]] QWidget* editorOf(const std::string& key) const;
 
   signals:
-    void settingsEdited(const mcpp::PlannerSettings& settings);
+    void choiceEdited(const mcpp::PlannerChoice& choice);
 
   private:
-    void emitEdited();
+    void rebuildForm(const PlannerDescription& description);
+    [[nodiscard]] QWidget* makeEditor(const ParameterSpec& spec);
+    void showValues();
+    void plannerPicked(int index);
+    void parameterEdited(const ParameterSpec& spec, ParameterValue value);
 
     QComboBox* planner_;
-    QDoubleSpinBox* purityTolerance_;
-    QDoubleSpinBox* blockedThreshold_;
-    QCheckBox* closedTour_;
-    QSpinBox* rebalanceIterations_;
-    QCheckBox* snapStarts_;
-    PlannerSettings shown_;
+    QLabel* summary_;
+    QFormLayout* form_;
+    std::vector<std::pair<ParameterSpec, QWidget*>> editors_;
+    PlannerChoice shown_;
     bool updating_ = false;
 };
 

@@ -61,10 +61,10 @@ bool PlanningRunner::start(PlanningProblem problem) {
             cancelFlag.get());
         PlanningOutcome outcome;
         try {
-            const auto planner = makePlanner(problem.settings.planner);
+            const auto planner = makePlanner(problem.planner.planner);
             if (!planner) {
                 outcome.error = QObject::tr("Unknown planner \"%1\".")
-                                    .arg(QString::fromStdString(problem.settings.planner));
+                                    .arg(QString::fromStdString(problem.planner.planner));
                 return outcome;
             }
             outcome.plan = std::make_shared<const Plan>(planner->plan(problem, progress));

@@ -617,15 +617,21 @@ class Allocation {
 
 } // namespace
 
+ParameterSpec AzimuthTrendAllocator::rebalanceIterationsParameter() {
+    return integerParameter(
+        "rebalance_iterations", "Rebalance iterations", 0, 0, 100'000'000,
+        "Cap on the cell moves that even out the robots' workloads after the regions are grown; 0 "
+        "picks one from the problem size");
+}
+
 RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const std::vector<int>& startCells,
-                                                 const PlannerSettings& settings,
                                                  const ProgressReporter& progress) const {
     progress.report("allocation", 0.0);
     Allocation allocation(graph, startCells, progress);
     allocation.grow();
     progress.report("allocation", 0.8);
-    const int cap = settings.rebalanceIterations > 0 ? settings.rebalanceIterations
-                                                     : std::max(1000, static_cast<int>(graph.size()));
+    const int cap =
+        rebalanceIterations_ > 0 ? rebalanceIterations_ : std::max(1000, static_cast<int>(graph.size()));
     (void)allocation.rebalance(cap);
     RegionAllocation result = allocation.result();
     progress.report("allocation", 1.0);

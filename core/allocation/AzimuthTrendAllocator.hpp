@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/allocation/RegionAllocator.hpp"
+#include "core/parameters/ParameterSpec.hpp"
 
 namespace mcpp {
 
@@ -10,9 +11,16 @@ namespace mcpp {
 // the maximum cost falls.
 class AzimuthTrendAllocator final : public RegionAllocator {
   public:
+    // rebalanceIterations: cap on cell moves after growth; 0 picks one from the problem size.
+    explicit AzimuthTrendAllocator(int rebalanceIterations = 0) : rebalanceIterations_(rebalanceIterations) {}
+
+    [[nodiscard]] static ParameterSpec rebalanceIterationsParameter();
+
     [[nodiscard]] RegionAllocation allocate(const CellGraph& graph, const std::vector<int>& startCells,
-                                            const PlannerSettings& settings,
                                             const ProgressReporter& progress) const override;
+
+  private:
+    int rebalanceIterations_;
 };
 
 } // namespace mcpp

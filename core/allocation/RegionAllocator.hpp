@@ -3,7 +3,6 @@
 #include "core/model/CellGraph.hpp"
 #include "core/model/ProgressReporter.hpp"
 #include "core/model/RegionAllocation.hpp"
-#include "core/planners/PlannerSettings.hpp"
 
 #include <vector>
 
@@ -16,7 +15,6 @@ class RegionAllocator {
     // startCells: the cell holding each robot's start, all distinct.
     [[nodiscard]] virtual RegionAllocation allocate(const CellGraph& graph,
                                                     const std::vector<int>& startCells,
-                                                    const PlannerSettings& settings,
                                                     const ProgressReporter& progress) const = 0;
 };
 

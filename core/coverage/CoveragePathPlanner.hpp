@@ -5,7 +5,6 @@
 #include "core/model/MapPoint.hpp"
 #include "core/model/ProgressReporter.hpp"
 #include "core/model/RegionAllocation.hpp"
-#include "core/planners/PlannerSettings.hpp"
 
 #include <vector>
 
@@ -17,7 +16,7 @@ class CoveragePathPlanner {
     virtual ~CoveragePathPlanner() = default;
     [[nodiscard]] virtual std::vector<CoveragePath>
     plan(const CellGraph& graph, const RegionAllocation& regions, const std::vector<MapPoint>& starts,
-         const PlannerSettings& settings, const ProgressReporter& progress) const = 0;
+         const ProgressReporter& progress) const = 0;
 };
 
 } // namespace mcpp

@@ -16,9 +16,13 @@ std::vector<std::vector<int>> cellsByRobot(const RegionAllocation& regions) {
     return cells;
 }
 
+ParameterSpec SpanningTreeCoverage::closedTourParameter() {
+    return booleanParameter("closed_tour", "Return to start", true,
+                            "Closed tours end where they start; open paths stop at the last cell");
+}
+
 std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, const RegionAllocation& regions,
                                                      const std::vector<MapPoint>& starts,
-                                                     const PlannerSettings& settings,
                                                      const ProgressReporter& progress) const {
     const std::size_t robots = regions.startCell.size();
     const auto regionCells = cellsByRobot(regions);
@@ -33,9 +37,8 @@ std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, con
         for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
             const SpanningTree tree =
                 trees.preferring(regionCells[robot], regions.startCell[robot], preference);
-            CoveragePath candidate =
-                pathFromWalk(static_cast<int>(robot), starts[robot],
-                             walker.walk(tree, starts[robot], settings.closedTour), settings.closedTour);
+            CoveragePath candidate = pathFromWalk(static_cast<int>(robot), starts[robot],
+                                                  walker.walk(tree, starts[robot], closedTour_), closedTour_);
             measurePath(candidate, graph);
             if (best.waypoints.empty() || candidate.turns < best.turns ||
                 (candidate.turns == best.turns && candidate.lengthMetres < best.lengthMetres - 1e-9))

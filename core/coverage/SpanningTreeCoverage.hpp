@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/coverage/CoveragePathPlanner.hpp"
+#include "core/parameters/ParameterSpec.hpp"
 
 namespace mcpp {
 
@@ -9,10 +10,17 @@ namespace mcpp {
 // per region, one preferring east-west edges and one north-south, and the path with fewer turns is kept.
 class SpanningTreeCoverage final : public CoveragePathPlanner {
   public:
+    // closedTour: tours end where they start; otherwise paths stop at the last sub-cell.
+    explicit SpanningTreeCoverage(bool closedTour = true) : closedTour_(closedTour) {}
+
+    [[nodiscard]] static ParameterSpec closedTourParameter();
+
     [[nodiscard]] std::vector<CoveragePath> plan(const CellGraph& graph, const RegionAllocation& regions,
                                                  const std::vector<MapPoint>& starts,
-                                                 const PlannerSettings& settings,
                                                  const ProgressReporter& progress) const override;
+
+  private:
+    bool closedTour_;
 };
 
 // The cells of each robot's region, in cell-id order.

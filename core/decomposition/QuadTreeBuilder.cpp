@@ -82,51 +82,19 @@ std::pair<int, int> sampleRange(double low, double high, double origin, double s
 
 } // namespace
 
-std::vector<RoundedFieldOfView> roundFieldsOfView(const ClassTable& classes,
-                                                  const std::vector<std::int32_t>& presentValues) {
-    double fovMin = std::numeric_limits<double>::infinity();
-    for (auto value : presentValues) {
-        const auto* landCoverClass = classes.find(value);
-        if (landCoverClass != nullptr && landCoverClass->isTraversable())
-            fovMin = std::min(fovMin, landCoverClass->fieldOfViewMetres);
-    }
-    if (!std::isfinite(fovMin))
-        throw PlanningError(Kind::NoPassableCell,
-                            "no passable land cover in the task area: every class present is "
-                            "an obstacle (speed 0 or not passable)");
-    std::vector<RoundedFieldOfView> rounded;
-    int deepest = 0;
-    for (auto value : presentValues) {
-        const auto* landCoverClass = classes.find(value);
-        if (landCoverClass == nullptr || !landCoverClass->isTraversable())
-            continue;
-        // Round down to fovMin * 2^k; the small epsilon keeps exact powers of two from rounding a step lower.
-        const int k =
-            static_cast<int>(std::floor(std::log2(landCoverClass->fieldOfViewMetres / fovMin) + 1e-9));
-        rounded.push_back({value, landCoverClass->fieldOfViewMetres, fovMin * std::ldexp(1.0, k), k});
-        deepest = std::max(deepest, k);
-    }
-    const int levels = deepest + 1;
-    for (auto& entry : rounded) {
-        const int k = entry.level;
-        entry.level = levels - k; // sub-cell side at level i is fovMin * 2^(l - i)
-    }
-    return rounded;
-}
-
 QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes,
-                                const PlannerSettings& settings, const ProgressReporter& progress) const {
+                                const DecompositionOptions& options, const ProgressReporter& progress) const {
     validateGrid(grid);
     if (auto problem = classes.validate())
         throw PlanningError(Kind::InvalidClassTable, *problem);
-    if (!std::isfinite(settings.purityTolerance) || settings.purityTolerance < 0.0 ||
-        settings.purityTolerance >= 1.0)
+    if (!std::isfinite(options.purityTolerance) || options.purityTolerance < 0.0 ||
+        options.purityTolerance >= 1.0)
         throw PlanningError(Kind::InvalidParameter, "purity tolerance must be in [0, 1), got " +
-                                                        std::to_string(settings.purityTolerance));
-    if (!std::isfinite(settings.blockedThreshold) || settings.blockedThreshold < 0.0 ||
-        settings.blockedThreshold > 1.0)
+                                                        std::to_string(options.purityTolerance));
+    if (!std::isfinite(options.blockedThreshold) || options.blockedThreshold < 0.0 ||
+        options.blockedThreshold > 1.0)
         throw PlanningError(Kind::InvalidParameter, "blocked threshold must be in [0, 1], got " +
-                                                        std::to_string(settings.blockedThreshold));
+                                                        std::to_string(options.blockedThreshold));
     progress.report("quadtree", 0.0);
 
     // Dense class codes for the values present; every present value must be in the table.
@@ -179,6 +147,9 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
         presentValues.push_back(entry.value);
     QuadTree tree;
     tree.roundedFieldsOfView = roundFieldsOfView(classes, presentValues);
+    if (tree.roundedFieldsOfView.empty())
+        throw PlanningError(Kind::NoPassableCell, "no passable land cover in the task area: every class present is "
+                                                  "an obstacle (speed 0 or not passable)");
     int levels = 1;
     double fovMin = std::numeric_limits<double>::infinity();
     for (const auto& rounded : tree.roundedFieldsOfView) {
@@ -314,7 +285,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     // tolerance.
     const double rasterMaxX = grid.maxX();
     const double rasterMinY = grid.minY();
-    const double tolerance = settings.purityTolerance;
+    const double tolerance = options.purityTolerance;
     tree.cells.reserve(static_cast<std::size_t>(tree.topColumns * tree.topRows) * 2);
     for (int row = 0; row < tree.topRows; ++row) {
         for (int column = 0; column < tree.topColumns; ++column) {
@@ -365,7 +336,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
             cell.state = CellState::Blocked;
         } else if (cell.level == levels) {
             cell.state =
-                cell.obstacleFraction > settings.blockedThreshold ? CellState::Blocked : CellState::Active;
+                cell.obstacleFraction > options.blockedThreshold ? CellState::Blocked : CellState::Active;
         } else if (deeperFraction <= tolerance + 1e-12) {
             cell.state = CellState::Active;
         } else {

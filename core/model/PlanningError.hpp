@@ -25,7 +25,7 @@ class PlanningError : public std::runtime_error {
     PlanningError(Kind kind, const std::string& message)
         : std::runtime_error(message), kind_(kind), detail_(message) {}
 
-    // "robot 2 start " + detail, e.g. detail "(10, 20) is outside the map".
+    // "robot 2 start " + detail, e.g. detail "(10, 20) is outside the raster".
     static PlanningError aboutStart(Kind kind, int robot, const std::string& detail) {
         PlanningError error(kind, "robot " + std::to_string(robot) + " start " + detail, detail);
         error.robot_ = robot;

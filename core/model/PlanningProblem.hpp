@@ -3,7 +3,7 @@
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
-#include "core/planners/PlannerSettings.hpp"
+#include "core/parameters/PlannerChoice.hpp"
 
 #include <vector>
 
@@ -13,7 +13,7 @@ struct PlanningProblem {
     ClassGrid grid;
     ClassTable classes;
     std::vector<MapPoint> starts; // one per robot, in the grid's frame
-    PlannerSettings settings;
+    PlannerChoice planner;
 };
 
 } // namespace mcpp

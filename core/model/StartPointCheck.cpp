@@ -32,7 +32,7 @@ std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const 
     const auto pixel = grid.pixelAt(point);
     if (!pixel)
         return StartPointProblem{Kind::StartOutsideArea,
-                                 describePoint(point) + " is outside the map (x " + fixed(grid.originX) +
+                                 describePoint(point) + " is outside the raster (x " + fixed(grid.originX) +
                                      " to " + fixed(grid.maxX()) + ", y " + fixed(grid.minY()) + " to " +
                                      fixed(grid.originY) + ")"};
     if (grid.isOutside(pixel->column, pixel->row))

@@ -9,22 +9,25 @@
 
 namespace mcpp {
 
-PlannerDescription MlctPlanner::description() const {
+PlannerDescription MlctPlanner::describe() const {
     PlannerDescription description;
     description.name = plannerName;
     description.label = "MCPP-MLCT";
-    description.summary =
-        "quadtree cells sized by each land cover's field of view, balanced regions grown by "
-        "azimuth trend, improved spanning-tree coverage";
+    description.summary = "quadtree cells sized by field of view, azimuth-trend regions, improved STC";
+    description.parameters = {
+        DecompositionOptions::purityToleranceParameter(), DecompositionOptions::blockedThresholdParameter(),
+        AzimuthTrendAllocator::rebalanceIterationsParameter(), SpanningTreeCoverage::closedTourParameter()};
     return description;
 }
 
 void MlctPlanner::run(PlanningRun& run) const {
     const PlanningProblem& problem = run.problem();
+    const ParameterValues& parameters = run.parameters();
     const ProgressReporter& progress = run.progress();
     Plan& plan = run.plan();
     const QuadTree tree = run.stage("quadtree", [&] {
-        return QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings, progress);
+        return QuadTreeBuilder{}.build(problem.grid, problem.classes, DecompositionOptions::from(parameters),
+                                       progress);
     });
     plan.cells = run.stage("topology", [&] {
         progress.report("topology", 0.0);
@@ -32,11 +35,12 @@ void MlctPlanner::run(PlanningRun& run) const {
     });
     const std::vector<int> startCells = run.locateStarts();
     plan.regions = run.stage("allocation", [&] {
-        return AzimuthTrendAllocator{}.allocate(plan.cells, startCells, problem.settings, progress);
+        const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
+        return allocator.allocate(plan.cells, startCells, progress);
     });
     plan.paths = run.stage("paths", [&] {
-        return SpanningTreeCoverage{}.plan(plan.cells, plan.regions, run.starts(), problem.settings,
-                                           progress);
+        const SpanningTreeCoverage coverage(parameters.boolean("closed_tour"));
+        return coverage.plan(plan.cells, plan.regions, run.starts(), progress);
     });
 }
 

@@ -10,9 +10,8 @@ class MlctPlanner final : public Planner {
   public:
     static constexpr const char* plannerName = "mcpp-mlct";
 
-    [[nodiscard]] PlannerDescription description() const override;
-
   protected:
+    [[nodiscard]] PlannerDescription describe() const override;
     void run(PlanningRun& run) const override;
 };
 

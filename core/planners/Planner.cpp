@@ -3,6 +3,7 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/StartPointCheck.hpp"
+#include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "core/planners/PlanningRun.hpp"
@@ -23,7 +24,7 @@ std::string multiRobotPlanners() {
 }
 
 // Bad starts are wrong whatever the cells: say so before building them.
-void checkStarts(const PlannerDescription& planner, const PlanningProblem& problem) {
+void checkStarts(const PlannerDescription& planner, const PlanningProblem& problem, bool snap) {
     if (problem.starts.empty())
         throw PlanningError(Kind::InvalidParameter, "no robots: give at least one start point");
     if (planner.singleRobot && problem.starts.size() > 1)
@@ -36,7 +37,7 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
         if (!problemAtStart)
             continue;
         const bool snappable = problemAtStart->kind != Kind::InvalidParameter;
-        if (!snappable || !problem.settings.snapStartsToFreeCells)
+        if (!snappable || !snap)
             throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot),
                                             problemAtStart->detail);
     }
@@ -51,12 +52,26 @@ std::string describeArea(double squareMetres) {
 
 } // namespace
 
+ParameterSpec Planner::snapStartsParameter() {
+    return booleanParameter(
+        "snap_starts_to_free_cells", "Move blocked starts to the nearest free cell", false,
+        "A start on an obstacle, outside the area or in another robot's cell is moved to the "
+        "nearest free cell, with a warning, instead of being refused");
+}
+
+PlannerDescription Planner::description() const {
+    PlannerDescription own = describe();
+    own.parameters.push_back(snapStartsParameter());
+    return own;
+}
+
 Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progress) const {
     const PlannerDescription planner = description();
-    checkStarts(planner, problem);
+    ParameterValues parameters = resolveParameters(planner.parameters, problem.planner.parameters);
+    checkStarts(planner, problem, parameters.boolean("snap_starts_to_free_cells"));
     Plan plan;
     plan.planner = planner.name;
-    PlanningRun planningRun(problem, progress, plan);
+    PlanningRun planningRun(problem, std::move(parameters), progress, plan);
     run(planningRun);
     planningRun.stage("metrics", [&] {
         for (CoveragePath& path : plan.paths)

@@ -15,11 +15,16 @@ class PlanningRun;
 class Planner {
   public:
     virtual ~Planner() = default;
-    [[nodiscard]] virtual PlannerDescription description() const = 0;
-    [[nodiscard]] std::string name() const { return description().name; }
+    // The planner's own description, with the parameters every planner has added to its own.
+    [[nodiscard]] PlannerDescription description() const;
+    [[nodiscard]] std::string name() const { return describe().name; }
     [[nodiscard]] Plan plan(const PlanningProblem& problem, const ProgressReporter& progress) const;
 
+    // Parameters the base class reads for every planner.
+    [[nodiscard]] static ParameterSpec snapStartsParameter();
+
   protected:
+    [[nodiscard]] virtual PlannerDescription describe() const = 0;
     // Fills the run's plan: its cells, regions and paths (waypoints; measuring is done afterwards).
     virtual void run(PlanningRun& run) const = 0;
 };

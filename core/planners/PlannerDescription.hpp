@@ -1,6 +1,9 @@
 #pragma once
 
+#include "core/parameters/ParameterSpec.hpp"
+
 #include <string>
+#include <vector>
 
 namespace mcpp {
 
@@ -18,6 +21,7 @@ struct PlannerDescription {
     std::string summary; // one line for --help and the planner list
     bool singleRobot = false;
     PlannerPromises promises;
+    std::vector<ParameterSpec> parameters; // the planner's and its stages', then those every planner has
 };
 
 } // namespace mcpp

@@ -1,5 +1,6 @@
 #include "core/planners/PlannerRegistry.hpp"
 
+#include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/MlctPlanner.hpp"
 
 #include <functional>
@@ -37,9 +38,39 @@ std::vector<std::string> availablePlanners() {
     return names;
 }
 
+std::optional<PlannerDescription> findPlannerDescription(const std::string& name) {
+    for (const PlannerDescription& description : plannerDescriptions())
+        if (description.name == name)
+            return description;
+    return std::nullopt;
+}
+
+std::string unknownPlannerMessage(const std::string& name) {
+    std::string known;
+    for (const std::string& planner : availablePlanners())
+        known += (known.empty() ? "" : ", ") + planner;
+    return "unknown planner \"" + name + "\" (available: " + known + ")";
+}
+
 const std::string& defaultPlannerName() {
     static const std::string name = MlctPlanner::plannerName;
     return name;
+}
+
+PlannerChoice defaultPlannerChoice(const std::string& name) {
+    PlannerChoice choice;
+    choice.planner = name.empty() ? defaultPlannerName() : name;
+    if (const auto description = findPlannerDescription(choice.planner))
+        choice.parameters = resolveParameters(description->parameters, {});
+    return choice;
+}
+
+PlannerChoice switchPlanner(const PlannerChoice& current, const std::string& name) {
+    PlannerChoice choice = defaultPlannerChoice(name);
+    for (const auto& [key, value] : current.parameters.all())
+        if (choice.parameters.has(key))
+            choice.parameters.set(key, value);
+    return choice;
 }
 
 std::unique_ptr<Planner> makePlanner(const std::string& name) {

@@ -11,15 +11,20 @@ namespace {
 
 using Kind = PlanningError::Kind;
 
+std::string blockedShare(const ParameterValues& parameters) {
+    if (!parameters.has("blocked_threshold"))
+        return "mostly";
+    const long percent = std::lround(parameters.real("blocked_threshold") * 100.0);
+    return "more than " + std::to_string(percent) + "%";
+}
+
 // Why the start lies on no cell of the graph: the pixel under it, or the cell rule that dropped its cell.
-StartPointProblem whyNoCell(const PlanningProblem& problem, MapPoint start) {
+StartPointProblem whyNoCell(const PlanningProblem& problem, const ParameterValues& parameters,
+                            MapPoint start) {
     if (auto problemAtPixel = startPointProblem(problem.grid, problem.classes, start))
         return *problemAtPixel;
-    return {Kind::StartOnObstacle,
-            describePoint(start) +
-                " is in a cell that is mostly obstacle or outside the area "
-                "(more than " +
-                std::to_string(static_cast<int>(problem.settings.blockedThreshold * 100.0)) + "%)"};
+    return {Kind::StartOnObstacle, describePoint(start) + " is in a cell that is " +
+                                       blockedShare(parameters) + " obstacle or outside the area"};
 }
 
 int nearestFreeCell(const CellGraph& graph, const std::vector<int>& ownerOfCell, MapPoint point) {
@@ -42,12 +47,11 @@ int nearestFreeCell(const CellGraph& graph, const std::vector<int>& ownerOfCell,
 
 std::vector<int> PlanningRun::locateStarts() {
     const CellGraph& graph = plan_.cells;
-    const bool snap = problem_.settings.snapStartsToFreeCells;
+    const bool snap = parameters_.boolean("snap_starts_to_free_cells");
     if (graph.empty())
-        throw PlanningError(Kind::NoPassableCell,
-                            "no cell of the map is passable: every smallest cell is more than " +
-                                std::to_string(static_cast<int>(problem_.settings.blockedThreshold * 100.0)) +
-                                "% obstacle or outside the area");
+        throw PlanningError(Kind::NoPassableCell, "no cell of the map is passable: every smallest cell is " +
+                                                      blockedShare(parameters_) +
+                                                      " obstacle or outside the area");
     if (starts_.size() > graph.size())
         throw PlanningError(Kind::TooManyRobots, std::to_string(starts_.size()) + " robots but only " +
                                                      std::to_string(graph.size()) + " passable cells");
@@ -62,7 +66,7 @@ std::vector<int> PlanningRun::locateStarts() {
         int cell = graph.cellAt(start);
         std::optional<StartPointProblem> problem;
         if (cell < 0) {
-            problem = whyNoCell(problem_, start);
+            problem = whyNoCell(problem_, parameters_, start);
         } else if (ownerOfCell[static_cast<std::size_t>(cell)] >= 0) {
             problem = StartPointProblem{Kind::StartsShareCell,
                                         describePoint(start) + " is in the same cell as robot " +

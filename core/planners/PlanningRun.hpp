@@ -15,11 +15,14 @@ namespace mcpp {
 // and the timing of each stage.
 class PlanningRun {
   public:
-    PlanningRun(const PlanningProblem& problem, const ProgressReporter& progress, Plan& plan)
-        : problem_(problem), progress_(progress), plan_(plan), starts_(problem.starts) {}
+    PlanningRun(const PlanningProblem& problem, ParameterValues parameters, const ProgressReporter& progress,
+                Plan& plan)
+        : problem_(problem), parameters_(std::move(parameters)), progress_(progress), plan_(plan),
+          starts_(problem.starts) {}
 
     [[nodiscard]] const PlanningProblem& problem() const { return problem_; }
-    [[nodiscard]] const PlannerSettings& settings() const { return problem_.settings; }
+    // Every declared parameter, checked, defaults filled in.
+    [[nodiscard]] const ParameterValues& parameters() const { return parameters_; }
     [[nodiscard]] const ProgressReporter& progress() const { return progress_; }
     [[nodiscard]] Plan& plan() { return plan_; }
     [[nodiscard]] const std::vector<MapPoint>& starts() const { return starts_; }
@@ -43,6 +46,7 @@ class PlanningRun {
 
   private:
     const PlanningProblem& problem_;
+    ParameterValues parameters_;
     const ProgressReporter& progress_;
     Plan& plan_;
     std::vector<MapPoint> starts_;

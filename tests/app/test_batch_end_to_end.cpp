@@ -159,10 +159,10 @@ void TestBatchEndToEnd::syntheticSampleNeedsThreeLevels() {
     mcpp::PlanningProblem problem;
     problem.grid = raster.value().grid;
     problem.classes = mission.value().classes;
-    problem.settings = mission.value().settings;
+    problem.planner = mission.value().planner;
     for (const auto& robot : mission.value().robots)
         problem.starts.push_back(robot.start);
-    const auto planner = mcpp::makePlanner(problem.settings.planner);
+    const auto planner = mcpp::makePlanner(problem.planner.planner);
     QVERIFY(planner != nullptr);
     const auto plan = planner->plan(problem, mcpp::ProgressReporter());
     QCOMPARE(plan.cells.frame().levels, 3);
@@ -421,7 +421,7 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
         << QStringList{"--start-crs"};
     QTest::newRow("two robots in one cell")
         << (flags + QStringList{"--start", "431050,5301050", "--start", "431055,5301055", "--out", out})
-        << QStringList{"--start", "robot 1"};
+        << QStringList{"--start 2", "same cell as robot 0", "numbered from 0"};
     QTest::newRow("--out is a file") << QStringList{"--batch", mission, "--out",
                                                     samplePath("synthetic/classes.csv")}
                                      << QStringList{"--out", "classes.csv", "not a folder"};

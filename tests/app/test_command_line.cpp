@@ -1,4 +1,5 @@
 #include "app/CommandLine.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 
 #include <QProcess>
 #include <QtTest>
@@ -17,6 +18,14 @@ std::vector<std::string> split(const QString& arguments) {
     for (const auto& argument : arguments.split(QLatin1Char(' '), Qt::SkipEmptyParts))
         result.push_back(argument.toStdString());
     return result;
+}
+
+// "a, b, c": the planners this build offers, as messages list them.
+std::string availableList() {
+    std::string list;
+    for (const auto& name : mcpp::availablePlanners())
+        list += (list.empty() ? "" : ", ") + name;
+    return list;
 }
 
 // The smallest valid flag mission, to which each error case adds or removes one thing.
@@ -40,6 +49,7 @@ class TestCommandLine : public QObject {
     void errors_data();
     void errors();
     void usageDocumentsEveryFlag();
+    void plannerHelpListsEveryDeclaredParameter();
     void versionNamesTheProjectVersion();
     void executablePrintsTheParserErrorOnOneLine();
 };
@@ -93,9 +103,8 @@ void TestCommandLine::batchWithMissionFile() {
     QVERIFY(options.starts.empty());
     QVERIFY(!options.planner.has_value());
     QVERIFY(!options.band.has_value());
-    QVERIFY(!options.purityTolerance.has_value());
+    QVERIFY(options.parameters.empty());
     QVERIFY(!options.quiet);
-    QVERIFY(!options.openPaths);
     QVERIFY(!options.missingAsObstacle);
 
     // The mission may come after the flags as well.
@@ -111,8 +120,12 @@ void TestCommandLine::missionFileTakesOverrideFlags() {
     const auto& options = result.options;
     QCOMPARE(options.planner.value_or(""), std::string("mcpp-mlct"));
     QCOMPARE(options.band.value_or(0), 3);
-    QCOMPARE(options.purityTolerance.value_or(-1.0), 0.1);
-    QVERIFY(options.openPaths);
+    QCOMPARE(options.parameters.size(), std::size_t{2});
+    QCOMPARE(options.parameters[0].key, std::string("purity_tolerance"));
+    QCOMPARE(options.parameters[0].value, std::string("0.1"));
+    QCOMPARE(options.parameters[0].flag, std::string("--purity"));
+    QCOMPARE(options.parameters[1].key, std::string("closed_tour"));
+    QCOMPARE(options.parameters[1].value, std::string("false"));
     QVERIFY(options.missingAsObstacle);
     QVERIFY(options.quiet);
 }
@@ -139,9 +152,10 @@ void TestCommandLine::batchWithEveryFlag() {
     QCOMPARE(options.startCrs, std::string("EPSG:4326"));
     QCOMPARE(options.planner.value_or(""), std::string("mcpp-mlct"));
     QCOMPARE(options.band.value_or(0), 2);
-    QCOMPARE(options.purityTolerance.value_or(-1.0), 0.25);
+    QCOMPARE(options.parameters.size(), std::size_t{2});
+    QCOMPARE(options.parameters[0].value, std::string("0.25"));
     QVERIFY(options.missingAsObstacle);
-    QVERIFY(options.openPaths);
+    QCOMPARE(options.parameters[1].flag, std::string("--open-paths"));
     QVERIFY(options.quiet);
     QCOMPARE(options.outputDirectory, std::string("results"));
 }
@@ -220,10 +234,21 @@ void TestCommandLine::errors_data() {
                                  << "--band: \"two\" is not a band number (1, 2, ...)";
     QTest::newRow("--purity too large")
         << words("--batch m.json --out o --purity 1.5")
-        << "--purity: \"1.5\" is not a fraction from 0 up to (not including) 1";
+        << "--purity: expected a number from 0 up to (not including) 1, got 1.5";
     QTest::newRow("--purity negative")
         << words("--batch m.json --out o --purity -0.1")
-        << "--purity: \"-0.1\" is not a fraction from 0 up to (not including) 1";
+        << "--purity: expected a number from 0 up to (not including) 1, got -0.1";
+    QTest::newRow("--param without value")
+        << words("--batch m.json --out o --param closed_tour") << "--param: \"closed_tour\" is not KEY=VALUE";
+    QTest::newRow("--param without key")
+        << words("--batch m.json --out o --param =3") << "--param: \"=3\" is not KEY=VALUE";
+    QTest::newRow("--param unknown key")
+        << words("--batch m.json --out o --param closed_tours=true")
+        << "--param closed_tours: no planner has a parameter of that name (see mcpp --help)";
+    QTest::newRow("--planner unknown")
+        << words("--batch m.json --out o --planner dijkstra")
+        << "--planner: unknown planner \"dijkstra\" (available: " + QString::fromStdString(availableList()) +
+               ")";
     QTest::newRow("switch with value")
         << words("--batch m.json --out o --quiet=yes") << "--quiet takes no value";
     QTest::newRow("batch flag without --batch") << words("--out o") << "--out only applies with --batch";
@@ -269,6 +294,8 @@ void TestCommandLine::usageDocumentsEveryFlag() {
                              "--planner",
                              "--band",
                              "--purity",
+                             "--param KEY=VALUE",
+                             "--help-planner NAME",
                              "--missing-as-obstacle",
                              "--open-paths",
                              "--quiet",
@@ -283,6 +310,26 @@ void TestCommandLine::usageDocumentsEveryFlag() {
                              "mcpp-mlct"}) {
         QVERIFY2(usage.contains(QLatin1String(flag)), flag);
     }
+}
+
+void TestCommandLine::plannerHelpListsEveryDeclaredParameter() {
+    for (const auto& planner : mcpp::plannerDescriptions()) {
+        const auto result = CommandLine::parse({"--help-planner", planner.name});
+        QVERIFY2(result.ok(), result.error.c_str());
+        QCOMPARE(static_cast<int>(result.options.mode), static_cast<int>(RunMode::PlannerHelp));
+        const auto help = QString::fromStdString(CommandLine::plannerHelp(planner.name));
+        QVERIFY(help.contains(QString::fromStdString(planner.summary)));
+        for (const auto& parameter : planner.parameters) {
+            const auto setting = parameter.key + "=" + parameter.format(parameter.defaultValue);
+            QVERIFY2(help.contains(QString::fromStdString(setting)), setting.c_str());
+        }
+        // The usage lists the planner on one line.
+        QVERIFY(QString::fromStdString(CommandLine::usage())
+                    .contains(QString::fromStdString("  " + planner.name)));
+    }
+    const auto unknown = CommandLine::parse({"--help-planner", "dijkstra"});
+    QVERIFY(!unknown.ok());
+    QVERIFY(unknown.error.find("unknown planner \"dijkstra\"") != std::string::npos);
 }
 
 void TestCommandLine::versionNamesTheProjectVersion() {

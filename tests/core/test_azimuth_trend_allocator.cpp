@@ -17,12 +17,12 @@ namespace {
 // Runs the stages up to allocation and packs them into a plan for the shared checkers.
 Plan allocateOnly(const PlanningProblem& problem) {
     Plan plan;
-    const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings);
+    const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, DecompositionOptions::from(problem.planner.parameters));
     plan.cells = cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
     std::vector<int> startCells;
     for (const MapPoint& start : problem.starts)
         startCells.push_back(plan.cells.cellAt(start));
-    plan.regions = AzimuthTrendAllocator{}.allocate(plan.cells, startCells, problem.settings, {});
+    plan.regions = AzimuthTrendAllocator{}.allocate(plan.cells, startCells, {});
     return plan;
 }
 

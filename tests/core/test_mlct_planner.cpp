@@ -60,7 +60,7 @@ class MlctPlannerTest : public QObject {
         auto problem = lakeProblem();
         problem.starts[0] = {0.0, 0.0};
         expectError(problem, PlanningError::Kind::StartOutsideArea,
-                    "robot 0 start (0, 0) is outside the map");
+                    "robot 0 start (0, 0) is outside the raster");
         problem = lakeProblem();
         problem.grid.outside.assign(100, 0);
         problem.grid.outside[99] = 1;
@@ -89,7 +89,7 @@ class MlctPlannerTest : public QObject {
     void snappingMovesABadStartWithAWarning() {
         auto problem = lakeProblem();
         problem.starts[1] = test::pixelCentre(problem.grid, 4, 4);
-        problem.settings.snapStartsToFreeCells = true;
+        problem.planner.parameters.set("snap_starts_to_free_cells", true);
         const Plan plan = MlctPlanner{}.plan(problem, {});
         QCOMPARE(plan.warnings().size(), std::size_t{1});
         QCOMPARE(plan.issues.front().code, std::string("start-moved"));

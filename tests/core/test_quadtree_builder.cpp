@@ -105,7 +105,7 @@ class QuadTreeBuilderTest : public QObject {
         ClassTable table({{1, "road", 0, 4.0, 1.0, true}, {2, "mud", 0, 1.0, 1.0, true}});
         ClassGrid grid = filledGrid(2, 2, 1);
         grid.values[0] = 2; // one pixel of four is mud: harmonic mean 4 / (3/4 + 1/1) = 16/7
-        PlannerSettings settings;
+        DecompositionOptions settings;
         const QuadTree tree = QuadTreeBuilder{}.build(grid, table, settings);
         QCOMPARE(tree.activeCount(), std::size_t{1});
         const QuadCell& cell = tree.active(0);
@@ -120,7 +120,7 @@ class QuadTreeBuilderTest : public QObject {
         grid.values[1] = 9; // half obstacle: not more than 50%, so active
         QCOMPARE(QuadTreeBuilder{}.build(grid, table, {}).activeCount(), std::size_t{1});
         grid.values[2] = 9; // three quarters
-        PlannerSettings settings;
+        DecompositionOptions settings;
         QCOMPARE(QuadTreeBuilder{}.build(grid, table, settings).activeCount(), std::size_t{0});
         settings.blockedThreshold = 0.8;
         QCOMPARE(QuadTreeBuilder{}.build(grid, table, settings).activeCount(), std::size_t{1});
@@ -132,7 +132,7 @@ class QuadTreeBuilderTest : public QObject {
         grid.values[grid.index(3, 3)] = 2; // one stray pixel in 400
         const QuadTree strict = QuadTreeBuilder{}.build(grid, table, {});
         QCOMPARE(strict.activeCount(), std::size_t{4});
-        PlannerSettings settings;
+        DecompositionOptions settings;
         settings.purityTolerance = 0.02;
         const QuadTree tolerant = QuadTreeBuilder{}.build(grid, table, settings);
         QCOMPARE(tolerant.activeCount(), std::size_t{1});
@@ -198,7 +198,7 @@ class QuadTreeBuilderTest : public QObject {
             QVERIFY2(std::string(error.what()).find("5000 x 5000 bottom cells") != std::string::npos,
                      error.what());
         }
-        PlannerSettings badPurity;
+        DecompositionOptions badPurity;
         badPurity.purityTolerance = std::nan("");
         QVERIFY_THROWS_EXCEPTION(PlanningError,
                                  (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), table, badPurity));

@@ -28,7 +28,7 @@ class RandomMapsTest : public QObject {
         spec.columns = 24 + static_cast<int>((seed * 5) % 40);
         spec.rows = 24 + static_cast<int>((seed * 3) % 33);
         auto problem = test::randomProblem(spec);
-        problem.settings.closedTour = seed % 5 != 0;
+        problem.planner.parameters.set("closed_tour", seed % 5 != 0);
         Plan plan;
         try {
             plan = MlctPlanner{}.plan(problem, {});
@@ -37,7 +37,7 @@ class RandomMapsTest : public QObject {
         }
         auto violations = test::checkAllInvariants(problem, plan);
         const auto tiling = test::checkQuadTreeTiling(
-            problem, QuadTreeBuilder{}.build(problem.grid, problem.classes, problem.settings));
+            problem, QuadTreeBuilder{}.build(problem.grid, problem.classes, DecompositionOptions{}));
         violations.insert(violations.end(), tiling.begin(), tiling.end());
         QVERIFY2(violations.empty(), qPrintable(QString::fromStdString(test::describe(violations))));
         QVERIFY(plan.metrics.ratio >= 0.9);

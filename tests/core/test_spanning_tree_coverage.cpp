@@ -46,7 +46,7 @@ class SpanningTreeCoverageTest : public QObject {
         QCOMPARE(plan.paths[0].lengthMetres, 24 * 4 * 5.0);
         QCOMPARE(plan.metrics.ratio, 1.0);
         QCOMPARE(plan.metrics.repeatedFraction, 0.0);
-        problem.settings.closedTour = false;
+        problem.planner.parameters.set("closed_tour", false);
         plan = planOf(problem);
         QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
         QCOMPARE(plan.paths[0].lengthMetres, 24 * 4 * 5.0 - 5.0);

@@ -12,12 +12,38 @@ const char* const validMission = R"({
   "exports": {"altitude_m": 30, "cruise_speed_mps": 0, "merge_collinear": true}
 })";
 
+const char* const validMissionVersion2 = R"({
+  "format": "mcpp-mission",
+  "version": 2,
+  "raster": {"path": "map.tif", "band": 1},
+  "robots": [{"name": "a", "start": [1, 2]}],
+  "planner": {"name": "mcpp-mlct", "parameters": {"purity_tolerance": 0.02, "blocked_threshold": 0.5, "closed_tour": false, "rebalance_iterations": 10}}
+})";
+
+std::vector<MissionMutation> missionVersion2Mutations() {
+    return {
+        {"v2 version newer", R"("version": 2)", R"("version": 3)", "version"},
+        {"v2 planner.parameters",
+         R"("parameters": {"purity_tolerance": 0.02, "blocked_threshold": 0.5, "closed_tour": false, "rebalance_iterations": 10})",
+         R"("parameters": [0.02])", "planner.parameters"},
+        {"v2 parameter unknown", R"("closed_tour": false)", R"("closed_tours": false)",
+         "planner.parameters.closed_tours"},
+        {"v2 parameter type", R"("closed_tour": false)", R"("closed_tour": "no")", "planner.parameters.closed_tour"},
+        {"v2 parameter range", R"("purity_tolerance": 0.02)", R"("purity_tolerance": 1)",
+         "planner.parameters.purity_tolerance"},
+        {"v2 parameter integer", R"("rebalance_iterations": 10)", R"("rebalance_iterations": -3)",
+         "planner.parameters.rebalance_iterations"},
+        {"v2 flat parameter", R"("name": "mcpp-mlct", )", R"("name": "mcpp-mlct", "closed_tour": true, )",
+         "planner.closed_tour"},
+    };
+}
+
 std::vector<MissionMutation> missionMutations() {
     return {
         {"format", R"("format": "mcpp-mission")", R"("format": 7)", "format"},
         {"format value", R"("format": "mcpp-mission")", R"("format": "qgc")", "format"},
         {"version", R"("version": 1)", R"("version": "1")", "version"},
-        {"version newer", R"("version": 1)", R"("version": 2)", "version"},
+        {"version newer", R"("version": 1)", R"("version": 3)", "version"},
         {"raster", R"("raster": {"path": "map.tif", "band": 1})", R"("raster": "map.tif")", "raster"},
         {"raster.path", R"("path": "map.tif")", R"("path": 3)", "raster.path"},
         {"raster.band", R"("band": 1)", R"("band": 1.5)", "raster.band"},

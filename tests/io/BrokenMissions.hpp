@@ -7,7 +7,8 @@
 
 namespace mcpp::test {
 
-extern const char* const validMission;
+extern const char* const validMission;         // version 1: the planner's parameters beside its name
+extern const char* const validMissionVersion2; // version 2: under planner.parameters
 
 struct MissionMutation {
     const char* name;
@@ -18,5 +19,7 @@ struct MissionMutation {
 
 // One mutation per mission field: each breaks exactly that field.
 [[nodiscard]] std::vector<MissionMutation> missionMutations();
+// The same for version 2's planner object.
+[[nodiscard]] std::vector<MissionMutation> missionVersion2Mutations();
 
 } // namespace mcpp::test

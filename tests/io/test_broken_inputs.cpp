@@ -17,7 +17,9 @@ using namespace mcpp::io;
 using mcpp::test::MissionMutation;
 using mcpp::test::missionMutations;
 using mcpp::test::testDataPath;
+using mcpp::test::missionVersion2Mutations;
 using mcpp::test::validMission;
+using mcpp::test::validMissionVersion2;
 
 namespace {
 
@@ -125,15 +127,26 @@ class BrokenInputsTest : public QObject {
         writeBytes(path, validMission);
         auto loaded = loadMission(path);
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        writeBytes(path, validMissionVersion2);
+        auto second = loadMission(path);
+        QVERIFY2(second.ok(), second.ok() ? "" : second.error().c_str());
+        QCOMPARE(second.value().planner.parameters.real("purity_tolerance"), 0.02);
+        QCOMPARE(second.value().planner.parameters.boolean("closed_tour"), false);
+        QCOMPARE(second.value().planner.parameters.boolean("snap_starts_to_free_cells"), false); // the default
     }
 
     void missionWithAWrongTypeInEveryField_data() {
         QTest::addColumn<QString>("from");
         QTest::addColumn<QString>("to");
         QTest::addColumn<QString>("path");
+        QTest::addColumn<int>("version");
         for (const MissionMutation& mutation : missionMutations()) {
             QTest::newRow(mutation.name)
-                << QString(mutation.from) << QString(mutation.to) << QString(mutation.path);
+                << QString(mutation.from) << QString(mutation.to) << QString(mutation.path) << 1;
+        }
+        for (const MissionMutation& mutation : missionVersion2Mutations()) {
+            QTest::newRow(mutation.name)
+                << QString(mutation.from) << QString(mutation.to) << QString(mutation.path) << 2;
         }
     }
 
@@ -141,7 +154,8 @@ class BrokenInputsTest : public QObject {
         QFETCH(QString, from);
         QFETCH(QString, to);
         QFETCH(QString, path);
-        std::string text = validMission;
+        QFETCH(int, version);
+        std::string text = version == 1 ? validMission : validMissionVersion2;
         const std::string original = from.toStdString();
         const auto position = text.find(original);
         QVERIFY2(position != std::string::npos, qPrintable(from));

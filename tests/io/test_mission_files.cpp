@@ -39,11 +39,11 @@ Mission sampleMission() {
     mission.robots = {RobotSpec{"alpha", {318819.349, 4132665.467}, ""},
                       RobotSpec{"beta", {-113.05, 37.3}, "EPSG:4326"},
                       RobotSpec{"", {1e-7, 123456789.123456789}, ""}};
-    mission.settings.purityTolerance = 0.05;
-    mission.settings.blockedThreshold = 0.6;
-    mission.settings.closedTour = false;
-    mission.settings.rebalanceIterations = 250;
-    mission.settings.snapStartsToFreeCells = true;
+    mission.planner.parameters.set("purity_tolerance", 0.05);
+    mission.planner.parameters.set("blocked_threshold", 0.6);
+    mission.planner.parameters.set("closed_tour", false);
+    mission.planner.parameters.set("rebalance_iterations", 250);
+    mission.planner.parameters.set("snap_starts_to_free_cells", true);
     mission.exports.altitudeMetres = 12.5;
     mission.exports.cruiseSpeedMetresPerSecond = 1.2;
     mission.exports.mergeCollinear = false;
@@ -58,12 +58,8 @@ void compareMissions(const Mission& a, const Mission& b) {
     QVERIFY(a.classes == b.classes);
     QCOMPARE(a.missingClassesAsObstacles, b.missingClassesAsObstacles);
     QVERIFY(a.robots == b.robots);
-    QCOMPARE(a.settings.planner, b.settings.planner);
-    QCOMPARE(a.settings.purityTolerance, b.settings.purityTolerance);
-    QCOMPARE(a.settings.blockedThreshold, b.settings.blockedThreshold);
-    QCOMPARE(a.settings.closedTour, b.settings.closedTour);
-    QCOMPARE(a.settings.rebalanceIterations, b.settings.rebalanceIterations);
-    QCOMPARE(a.settings.snapStartsToFreeCells, b.settings.snapStartsToFreeCells);
+    QCOMPARE(a.planner.planner, b.planner.planner);
+    QVERIFY(a.planner.parameters == b.planner.parameters);
     QVERIFY(a.exports == b.exports);
 }
 
@@ -92,7 +88,7 @@ class MissionFilesTest : public QObject {
         const std::string path = folder.filePath("mission.json").toStdString();
         QVERIFY(saveMission(sampleMission(), path).ok());
         const std::string text = readBytes(path);
-        QVERIFY(text.rfind("{\n  \"format\": \"mcpp-mission\",\n  \"version\": 1,\n", 0) == 0);
+        QVERIFY(text.rfind("{\n  \"format\": \"mcpp-mission\",\n  \"version\": 2,\n", 0) == 0);
         QVERIFY(text.find("\"raster\"") < text.find("\"classes\""));
         QVERIFY(text.find("\"robots\"") < text.find("\"planner\""));
         const QJsonDocument document = QJsonDocument::fromJson(QByteArray::fromStdString(text));
@@ -103,6 +99,10 @@ class MissionFilesTest : public QObject {
         QCOMPARE(root["robots"].toArray()[1].toObject()["start_crs"].toString(), QString("EPSG:4326"));
         QCOMPARE(root["classes"].toObject()["table"].toArray().size(), 9);
         QCOMPARE(root["planner"].toObject()["name"].toString(), QString("mcpp-mlct"));
+        const QJsonObject parameters = root["planner"].toObject()["parameters"].toObject();
+        QCOMPARE(parameters["purity_tolerance"].toDouble(), 0.05);
+        QCOMPARE(parameters["rebalance_iterations"].toInt(), 250);
+        QCOMPARE(parameters["closed_tour"].toBool(), false);
         // Shortest round-trip numbers, not fixed decimals.
         QVERIFY(text.find("0.30000000000000004") != std::string::npos);
         QVERIFY(text.find("\"altitude_m\": 12.5") != std::string::npos);
@@ -121,9 +121,10 @@ class MissionFilesTest : public QObject {
         QVERIFY(mission.preset.empty());
         QCOMPARE(mission.robots.size(), std::size_t{1});
         QCOMPARE(mission.robots[0].start, (MapPoint{10, 20}));
-        const PlannerSettings defaults;
-        QCOMPARE(mission.settings.planner, defaults.planner);
-        QCOMPARE(mission.settings.blockedThreshold, defaults.blockedThreshold);
+        const PlannerChoice defaults = defaultPlannerChoice();
+        QCOMPARE(mission.planner.planner, defaults.planner);
+        QCOMPARE(mission.planner.parameters.real("blocked_threshold"), 0.5);
+        QVERIFY(mission.planner.parameters == defaults.parameters);
         QCOMPARE(mission.exports.altitudeMetres, ExportSettings{}.altitudeMetres);
         // Saving fills in every key; that file reads back to the same mission and writes the same bytes.
         const std::string full = folder.filePath("full.json").toStdString();

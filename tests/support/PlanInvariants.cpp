@@ -108,6 +108,11 @@ bool returnsToFirstCentre(const CellGraph& graph, const CoveragePath& path) {
     return first && last && *first == *last;
 }
 
+bool snapsStarts(const PlanningProblem& problem) {
+    const ParameterValue* snap = problem.planner.parameters.find("snap_starts_to_free_cells");
+    return snap != nullptr && std::get<bool>(*snap);
+}
+
 } // namespace
 
 std::vector<std::string> checkCells(const Plan& plan) {
@@ -244,7 +249,7 @@ std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& 
         }
         const Waypoint& first = path.waypoints.front();
         const MapPoint start = problem.starts[robot];
-        if (!problem.settings.snapStartsToFreeCells &&
+        if (!snapsStarts(problem) &&
             std::hypot(first.x - start.x, first.y - start.y) > 1e-6)
             violations.push_back(text(who + " path does not begin at its start point", first.x, start.x));
         if (path.closed) {
@@ -403,7 +408,8 @@ std::vector<std::string> checkQuadTreeTiling(const PlanningProblem& problem, con
                                  std::to_string(covered[i]) + " leaves");
             break;
         }
-    if (problem.settings.purityTolerance != 0.0)
+    const ParameterValue* purity = problem.planner.parameters.find("purity_tolerance");
+    if (purity != nullptr && std::get<double>(*purity) != 0.0)
         return violations;
     std::map<std::int32_t, double> rounded;
     for (const auto& entry : tree.roundedFieldsOfView)

@@ -178,7 +178,7 @@ class TestMainWindow : public QObject {
 
         // Export GeoJSON and read it back.
         const QString geojson = directory.filePath(QStringLiteral("plan.geojson"));
-        QVERIFY2(window.exportPlan(ui::MainWindow::ExportFormat::GeoJson, geojson),
+        QVERIFY2(window.exportPlan("geojson", geojson),
                  qPrintable(window.lastError()));
         QFile file(geojson);
         QVERIFY(file.open(QIODevice::ReadOnly));
@@ -189,13 +189,13 @@ class TestMainWindow : public QObject {
         QVERIFY(!json.object().value(QStringLiteral("features")).toArray().isEmpty());
 
         // PNG and per-robot waypoint exports.
-        QVERIFY(window.exportPlan(ui::MainWindow::ExportFormat::Png,
+        QVERIFY(window.exportPlan("png",
                                   directory.filePath(QStringLiteral("plan.png"))));
         QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
-        QVERIFY(window.exportPlan(ui::MainWindow::ExportFormat::QGroundControlPlan,
+        QVERIFY(window.exportPlan("qgc-plan",
                                   directory.filePath(QStringLiteral("mission.plan"))));
         QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("mission-robot3.plan"))));
-        QVERIFY(!window.exportPlan(ui::MainWindow::ExportFormat::GeoJson,
+        QVERIFY(!window.exportPlan("geojson",
                                    QStringLiteral("/no/such/folder/plan.geojson")));
         QVERIFY(window.lastError().contains(QStringLiteral("/no/such/folder/plan.geojson")));
 

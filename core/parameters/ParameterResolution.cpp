@@ -1,0 +1,45 @@
+#include "core/parameters/ParameterResolution.hpp"
+
+#include "core/model/PlanningError.hpp"
+
+#include <algorithm>
+
+namespace mcpp {
+
+const ParameterSpec* findParameter(const std::vector<ParameterSpec>& specs, const std::string& key) {
+    const auto found =
+        std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& spec) { return spec.key == key; });
+    return found == specs.end() ? nullptr : &*found;
+}
+
+std::string parameterKeys(const std::vector<ParameterSpec>& specs) {
+    std::string keys;
+    for (const ParameterSpec& spec : specs)
+        keys += (keys.empty() ? "" : ", ") + spec.key;
+    return keys.empty() ? "none" : keys;
+}
+
+ParameterValues resolveParameters(const std::vector<ParameterSpec>& specs, const ParameterValues& given) {
+    for (const auto& [key, value] : given.all())
+        if (findParameter(specs, key) == nullptr)
+            throw PlanningError::aboutParameter(
+                key, "unknown parameter (parameters: " + parameterKeys(specs) + ")");
+    ParameterValues resolved;
+    for (const ParameterSpec& spec : specs) {
+        const ParameterValue* value = given.find(spec.key);
+        if (value == nullptr) {
+            resolved.set(spec.key, spec.defaultValue);
+            continue;
+        }
+        if (const auto problem = spec.problemWith(*value))
+            throw PlanningError::aboutParameter(spec.key, *problem);
+        // A whole number given for a real parameter is kept as a real, so equal values compare equal.
+        if (spec.type == ParameterType::Real && std::holds_alternative<int>(*value))
+            resolved.set(spec.key, static_cast<double>(std::get<int>(*value)));
+        else
+            resolved.set(spec.key, *value);
+    }
+    return resolved;
+}
+
+} // namespace mcpp

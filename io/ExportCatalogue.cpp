@@ -1,0 +1,92 @@
+#include "io/ExportCatalogue.hpp"
+
+#include <algorithm>
+
+namespace mcpp::io {
+namespace {
+
+using Writer = std::function<Status(const ExportContext&, int, const std::string&)>;
+
+Writer wholePlan(Status (*write)(const ExportContext&, const std::string&)) {
+    return
+        [write](const ExportContext& context, int, const std::string& path) { return write(context, path); };
+}
+
+Writer picture(ImageFormat format) {
+    return [format](const ExportContext& context, int, const std::string& path) {
+        if (!context.drawImage)
+            return Status::failure(path + ": this program was built without a map renderer");
+        return context.drawImage(context, format, path);
+    };
+}
+
+ExportFormat format(std::string key, std::string label, std::string extension, std::string filter,
+                    Writer write) {
+    ExportFormat result;
+    result.key = std::move(key);
+    result.label = std::move(label);
+    result.extension = std::move(extension);
+    result.filter = std::move(filter);
+    result.write = std::move(write);
+    return result;
+}
+
+ExportFormat inBatch(ExportFormat result, std::string fileName, bool required) {
+    result.inBatchOutputs = true;
+    result.batchFileName = std::move(fileName);
+    result.requiredInBatch = required;
+    return result;
+}
+
+ExportFormat perRobot(ExportFormat result) {
+    result.perRobot = true;
+    return result;
+}
+
+std::vector<ExportFormat> makeCatalogue() {
+    return {
+        inBatch(format("geojson", "GeoJSON", "geojson", "GeoJSON (*.geojson *.json)",
+                       wholePlan(writePlanGeoJson)),
+                "plan.geojson", true),
+        inBatch(format("gpkg", "GeoPackage", "gpkg", "GeoPackage (*.gpkg)", wholePlan(writePlanGeoPackage)),
+                "plan.gpkg", false),
+        format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml)),
+        format("gpx", "GPX", "gpx", "GPX (*.gpx)", wholePlan(writePlanGpx)),
+        inBatch(perRobot(format("qgc-plan", "QGroundControl plan per robot", "plan",
+                                "QGroundControl plan (*.plan)", writeQGroundControlPlan)),
+                {}, true),
+        inBatch(perRobot(format("qgc-wpl", "Waypoint list (QGC WPL) per robot", "waypoints",
+                                "Waypoint list (*.waypoints *.txt)", writeWaypointList)),
+                {}, true),
+        inBatch(perRobot(
+                    format("waypoint-csv", "Waypoint CSV per robot", "csv", "CSV (*.csv)", writeWaypointCsv)),
+                {}, true),
+        inBatch(format("report-json", "Report (JSON)", "json", "JSON (*.json)", wholePlan(writeReportJson)),
+                "report.json", true),
+        inBatch(format("report-csv", "Report (CSV)", "csv", "CSV (*.csv)", wholePlan(writeReportCsv)),
+                "report.csv", false),
+        inBatch(format("png", "Map image (PNG)", "png", "PNG image (*.png)", picture(ImageFormat::Png)),
+                "plan.png", true),
+        format("svg", "Map drawing (SVG)", "svg", "SVG drawing (*.svg)", picture(ImageFormat::Svg)),
+    };
+}
+
+} // namespace
+
+const std::vector<ExportFormat>& exportFormats() {
+    static const std::vector<ExportFormat> catalogue = makeCatalogue();
+    return catalogue;
+}
+
+const ExportFormat* findExportFormat(const std::string& key) {
+    const auto& catalogue = exportFormats();
+    const auto found = std::find_if(catalogue.begin(), catalogue.end(),
+                                    [&](const ExportFormat& candidate) { return candidate.key == key; });
+    return found == catalogue.end() ? nullptr : &*found;
+}
+
+std::string robotFileName(int robot, const ExportFormat& format) {
+    return "robot_" + std::to_string(robot) + "." + format.extension;
+}
+
+} // namespace mcpp::io

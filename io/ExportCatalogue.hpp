@@ -1,0 +1,37 @@
+#pragma once
+
+#include "io/PlanExport.hpp"
+#include "io/Result.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mcpp::io {
+
+// One way to write a plan to a file. Batch mode's outputs and the window's Export menu both come from
+// exportFormats(), so a format is added (or renamed) in one place.
+struct ExportFormat {
+    std::string key;       // stable name: "geojson", "qgc-plan"...
+    std::string label;     // menu text: "GeoJSON"
+    std::string extension; // without the dot
+    std::string filter;    // file-dialog filter: "GeoJSON (*.geojson *.json)"
+    bool perRobot = false; // one file per robot
+    // Batch mode: whether it writes this format, under which name (whole-plan formats; per-robot files are
+    // robot_<i>.<extension>), and whether a failure ends the run (else it is a warning).
+    bool inBatchOutputs = false;
+    std::string batchFileName;
+    bool requiredInBatch = false;
+    // robot is ignored by whole-plan formats.
+    std::function<Status(const ExportContext& context, int robot, const std::string& path)> write;
+};
+
+// Every format, in menu order.
+[[nodiscard]] const std::vector<ExportFormat>& exportFormats();
+// The format with this key, or nullptr.
+[[nodiscard]] const ExportFormat* findExportFormat(const std::string& key);
+// Batch mode's name for robot i's file of a per-robot format: robot_<i>.<extension>, i counted from 0 as in
+// the "robot" fields of plan.geojson and report.json.
+[[nodiscard]] std::string robotFileName(int robot, const ExportFormat& format);
+
+} // namespace mcpp::io

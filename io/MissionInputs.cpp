@@ -1,0 +1,136 @@
+#include "io/MissionInputs.hpp"
+
+#include "core/model/PlanningError.hpp"
+#include "core/model/StartPointCheck.hpp"
+#include "core/parameters/ParameterResolution.hpp"
+#include "core/planners/PlannerRegistry.hpp"
+#include "io/ClassTableSources.hpp"
+
+#include <cmath>
+
+namespace mcpp::io {
+namespace {
+
+using Part = MissionField::Part;
+
+std::string robotField(int robot, const char* field) {
+    return "robots[" + std::to_string(robot) + "]." + field;
+}
+
+} // namespace
+
+FieldNamer missionFileFields(const std::string& missionPath) {
+    return [missionPath](const MissionField& field) {
+        switch (field.part) {
+        case Part::Raster:
+            return missionPath + ": raster";
+        case Part::Classes:
+            return missionPath + ": classes";
+        case Part::MissingClassesOption:
+            return std::string("classes.missing_as_obstacles");
+        case Part::Start:
+            return missionPath + ": " + robotField(field.robot, "start");
+        case Part::StartCrs:
+            return missionPath + ": " + robotField(field.robot, "start_crs");
+        case Part::Planner:
+            return missionPath + ": planner.name";
+        case Part::Parameter:
+            break;
+        }
+        return missionPath + ": planner.parameters." + field.key;
+    };
+}
+
+Result<LoadedRaster> loadMissionRaster(const Mission& mission, const std::string& missionPath) {
+    RasterLoadOptions options;
+    options.band = mission.band;
+    return loadLandCoverRaster(resolveRasterPath(mission, missionPath), options);
+}
+
+Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& raster,
+                                  const FieldNamer& names) {
+    const std::string where = names(MissionField::of(Part::Classes));
+    if (!mission.preset.empty()) {
+        // Asking for the preset alone first turns an unknown name into an error instead of a default table.
+        if (auto preset = presetClassTable(mission.preset); !preset)
+            return Result<ClassTable>::failure(where + ": " + preset.error());
+    }
+    ClassTable table = missionClassTable(mission.classes, mission.preset, raster);
+    if (const auto problem = table.validate())
+        return Result<ClassTable>::failure(where + ": " + *problem);
+    return table;
+}
+
+Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const LoadedRaster& raster,
+                                            StartUnits units, const FieldNamer& names) {
+    using Starts = Result<std::vector<MapPoint>>;
+    std::vector<MapPoint> starts;
+    for (std::size_t i = 0; i < mission.robots.size(); ++i) {
+        const auto robot = static_cast<int>(i);
+        const RobotSpec& spec = mission.robots[i];
+        if (!std::isfinite(spec.start.x) || !std::isfinite(spec.start.y))
+            return Starts::failure(names(MissionField::start(robot)) + ": not a finite point");
+        Result<MapPoint> start = spec.start;
+        if (!spec.startCrs.empty()) {
+            start = raster.georeference.fromCrs(spec.startCrs, spec.start);
+            if (!start)
+                return Starts::failure(names(MissionField::startCrs(robot)) + ": " + start.error());
+        } else if (units == StartUnits::RasterFileCrs && raster.warpedFromGeographic) {
+            // Only the file CRS's name survives loading; WGS84 is the fallback, metres from any other datum.
+            start = raster.georeference.fromCrs(raster.sourceCrsName, spec.start);
+            if (!start)
+                start = raster.georeference.fromCrs("EPSG:4326", spec.start);
+        } else {
+            start = raster.georeference.fromCrsUnits(spec.start);
+        }
+        if (!start)
+            return Starts::failure(names(MissionField::start(robot)) + ": " + start.error());
+        starts.push_back(start.value());
+    }
+    return starts;
+}
+
+Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names) {
+    const auto description = findPlannerDescription(choice.planner);
+    if (!description)
+        return Status::failure(names(MissionField::of(Part::Planner)) + ": " +
+                               unknownPlannerMessage(choice.planner));
+    try {
+        (void)resolveParameters(description->parameters, choice.parameters);
+    } catch (const PlanningError& error) {
+        return Status::failure(names(MissionField::parameter(error.parameter())) + ": " + error.detail());
+    }
+    return {};
+}
+
+Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassTable& classes,
+                                        bool missingClassesAsObstacles, std::vector<MapPoint> starts,
+                                        const PlannerChoice& choice, const FieldNamer& names) {
+    using Prepared = Result<PreparedProblem>;
+    if (Status planner = checkPlannerChoice(choice, names); !planner)
+        return Prepared::failure(planner.error());
+    LoadedRaster reconciled = raster;
+    const std::size_t warningsBefore = reconciled.warnings.size();
+    if (Status status = reconcileRasterWithTable(reconciled, classes, missingClassesAsObstacles); !status)
+        return Prepared::failure(status.error() + "; " + names(MissionField::of(Part::MissingClassesOption)) +
+                                 " does the latter");
+    PreparedProblem prepared;
+    prepared.warnings.assign(reconciled.warnings.begin() + static_cast<std::ptrdiff_t>(warningsBefore),
+                             reconciled.warnings.end());
+    const auto description = findPlannerDescription(choice.planner);
+    const ParameterValues parameters = resolveParameters(description->parameters, choice.parameters);
+    // With snapping the planner moves bad starts itself and warns; without, say exactly what is wrong here.
+    const bool snap =
+        parameters.has("snap_starts_to_free_cells") && parameters.boolean("snap_starts_to_free_cells");
+    for (std::size_t robot = 0; robot < starts.size() && !snap; ++robot)
+        if (const auto problem = startPointProblem(reconciled.grid, classes, starts[robot]))
+            return Prepared::failure(names(MissionField::start(static_cast<int>(robot))) + ": " +
+                                     problem->detail);
+    prepared.problem.grid = std::move(reconciled.grid);
+    prepared.problem.classes = classes;
+    prepared.problem.starts = std::move(starts);
+    prepared.problem.planner = choice;
+    return prepared;
+}
+
+} // namespace mcpp::io

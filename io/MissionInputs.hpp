@@ -1,0 +1,71 @@
+#pragma once
+
+#include "core/model/ClassTable.hpp"
+#include "core/model/MapPoint.hpp"
+#include "core/model/PlanningProblem.hpp"
+#include "core/parameters/PlannerChoice.hpp"
+#include "io/LoadedRaster.hpp"
+#include "io/Mission.hpp"
+#include "io/Result.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mcpp::io {
+
+// The one way a mission (raster, class table, robots, planner) becomes a planning problem, shared by batch
+// mode and the window so that both read the same starts, tables and parameters and say the same things.
+
+// The part of a mission a message is about, so each caller can name it in its own terms.
+struct MissionField {
+    // MissingClassesOption names the switch that treats classes without a row as obstacles, bare: it is
+    // offered as advice, not blamed.
+    enum class Part { Raster, Classes, MissingClassesOption, Start, StartCrs, Planner, Parameter };
+    Part part = Part::Raster;
+    int robot = -1;  // Start, StartCrs: the robot, counted from 0
+    std::string key; // Parameter: its key
+
+    [[nodiscard]] static MissionField of(Part part) { return {part, -1, {}}; }
+    [[nodiscard]] static MissionField start(int robot) { return {Part::Start, robot, {}}; }
+    [[nodiscard]] static MissionField startCrs(int robot) { return {Part::StartCrs, robot, {}}; }
+    [[nodiscard]] static MissionField parameter(std::string key) {
+        return {Part::Parameter, -1, std::move(key)};
+    }
+};
+// How a caller names a field: "mission.json: robots[1].start", "--start 2", "Robot 2's start"...
+using FieldNamer = std::function<std::string(const MissionField&)>;
+// The fields of a mission file, as docs/mission-format.md names them.
+[[nodiscard]] FieldNamer missionFileFields(const std::string& missionPath);
+
+// The raster the mission names, resolved against the mission file's folder, read with the mission's band.
+[[nodiscard]] Result<LoadedRaster> loadMissionRaster(const Mission& mission, const std::string& missionPath);
+
+// The class table the mission plans with: its own rows and, for the values they lack, its preset's rows
+// for this raster (docs/mission-format.md); checked.
+[[nodiscard]] Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& raster,
+                                                const FieldNamer& names);
+
+// What a start without a start_crs is measured in: the planning CRS's own units (mission files; feet for
+// a CRS in feet, the UTM zone's metres for a warped geographic raster), or the raster file's own CRS
+// (batch --start, longitude and latitude for a geographic raster).
+enum class StartUnits { PlanningCrs, RasterFileCrs };
+// Each robot's start in the planning frame (metres).
+[[nodiscard]] Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const LoadedRaster& raster,
+                                                          StartUnits units, const FieldNamer& names);
+
+// The planner's name is known and every parameter is one it declares, with a value that fits.
+[[nodiscard]] Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names);
+
+struct PreparedProblem {
+    PlanningProblem problem;
+    std::vector<std::string> warnings; // e.g. classes without a row treated as obstacles
+};
+// The problem to plan: the raster reconciled with the table (missing classes refused, or made obstacles),
+// each start checked on its pixel (unless the planner is to move bad starts), the planner checked.
+[[nodiscard]] Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassTable& classes,
+                                                      bool missingClassesAsObstacles,
+                                                      std::vector<MapPoint> starts,
+                                                      const PlannerChoice& choice, const FieldNamer& names);
+
+} // namespace mcpp::io

@@ -1,0 +1,21 @@
+#include "render/PlanImageWriter.hpp"
+
+#include "render/PlanImage.hpp"
+
+namespace mcpp::render {
+
+io::ImageWriter planImageWriter(int pngSide) {
+    return [pngSide](const io::ExportContext& context, io::ImageFormat format, const std::string& path) {
+        if (context.grid == nullptr)
+            return io::Status::failure(path + ": there is no map to draw");
+        QString error;
+        const QString file = QString::fromStdString(path);
+        const bool written =
+            format == io::ImageFormat::Png
+                ? writePlanPng(*context.grid, context.classes, context.plan, file, QSize(pngSide, pngSide), &error)
+                : writePlanSvg(*context.grid, context.classes, context.plan, file, QSize(1600, 1600), &error);
+        return written ? io::Status() : io::Status::failure(path + ": " + error.toStdString());
+    };
+}
+
+} // namespace mcpp::render

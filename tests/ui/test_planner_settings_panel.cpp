@@ -1,0 +1,87 @@
+#include "core/planners/PlannerRegistry.hpp"
+#include "ui/PlannerSettingsPanel.hpp"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QtTest>
+
+using namespace mcpp;
+
+Q_DECLARE_METATYPE(mcpp::PlannerChoice)
+
+// The panel is generated from each planner's declaration: every planner, every parameter, the declared
+// ranges, and edits that reach the choice.
+class TestPlannerSettingsPanel : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void everyPlannerShowsItsDeclaredParameters() {
+        ui::PlannerSettingsPanel panel;
+        auto* combo = panel.findChild<QComboBox*>(QStringLiteral("plannerCombo"));
+        QVERIFY(combo != nullptr);
+        const auto planners = plannerDescriptions();
+        QCOMPARE(combo->count(), static_cast<int>(planners.size()));
+        for (const PlannerDescription& planner : planners) {
+            combo->setCurrentIndex(combo->findData(QString::fromStdString(planner.name)));
+            QCOMPARE(panel.choice().planner, planner.name);
+            for (const ParameterSpec& spec : planner.parameters) {
+                QWidget* editor = panel.editorOf(spec.key);
+                QVERIFY2(editor != nullptr, spec.key.c_str());
+                QCOMPARE(editor->objectName(), QString::fromStdString("parameter_" + spec.key));
+                QVERIFY(editor->toolTip().contains(QString::fromStdString(spec.key)));
+                switch (spec.type) {
+                case ParameterType::Boolean:
+                    QVERIFY(qobject_cast<QCheckBox*>(editor) != nullptr);
+                    break;
+                case ParameterType::Integer:
+                    QVERIFY(qobject_cast<QSpinBox*>(editor) != nullptr);
+                    break;
+                case ParameterType::Real: {
+                    auto* spin = qobject_cast<QDoubleSpinBox*>(editor);
+                    QVERIFY(spin != nullptr);
+                    QCOMPARE(spin->minimum(), spec.minimum);
+                    QVERIFY(spin->maximum() <= spec.maximum);
+                    break;
+                }
+                case ParameterType::Choice:
+                    QVERIFY(qobject_cast<QComboBox*>(editor) != nullptr);
+                    break;
+                }
+            }
+        }
+    }
+
+    void editsReachTheChoiceAndStayInRange() {
+        ui::PlannerSettingsPanel panel;
+        panel.setChoice(defaultPlannerChoice("mcpp-mlct"));
+        QSignalSpy edited(&panel, &ui::PlannerSettingsPanel::choiceEdited);
+        auto* purity = qobject_cast<QDoubleSpinBox*>(panel.editorOf("purity_tolerance"));
+        QVERIFY(purity != nullptr);
+        purity->setValue(0.04);
+        QCOMPARE(edited.count(), 1);
+        QCOMPARE(panel.choice().parameters.real("purity_tolerance"), 0.04);
+        // The declaration says purity stays below 1: the editor cannot reach it.
+        purity->setValue(5.0);
+        QVERIFY(panel.choice().parameters.real("purity_tolerance") < 1.0);
+        auto* closed = qobject_cast<QCheckBox*>(panel.editorOf("closed_tour"));
+        closed->setChecked(false);
+        QCOMPARE(panel.choice().parameters.boolean("closed_tour"), false);
+    }
+
+    void showingAChoiceIsNoEdit() {
+        ui::PlannerSettingsPanel panel;
+        QSignalSpy edited(&panel, &ui::PlannerSettingsPanel::choiceEdited);
+        PlannerChoice choice = defaultPlannerChoice("mcpp-mlct");
+        choice.parameters.set("blocked_threshold", 0.7);
+        panel.setChoice(choice);
+        QCOMPARE(edited.count(), 0);
+        QCOMPARE(qobject_cast<QDoubleSpinBox*>(panel.editorOf("blocked_threshold"))->value(), 0.7);
+        QVERIFY(panel.choice() == choice);
+    }
+};
+
+QTEST_MAIN(TestPlannerSettingsPanel)
+#include "test_planner_settings_panel.moc"
