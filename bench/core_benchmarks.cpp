@@ -1,11 +1,12 @@
 // Benchmarks of the MCPP-MLCT pipeline. Run: build/release/bench/mcpp_core_benchmarks
 // Counters: ratio = makespan / lower bound, cells = active cells, peak_rss_mb = process peak memory so far.
-#include "core/planners/MlctPlanner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <benchmark/benchmark.h>
 #include <random>
 #include <set>
+#include <string>
 #include <sys/resource.h>
 
 using namespace mcpp;
@@ -52,22 +53,28 @@ PlanningProblem multiCover(int size, int robots, std::uint32_t seed) {
     return test::randomProblem(spec);
 }
 
-void runPlanner(benchmark::State& state, const PlanningProblem& problem) {
+void runPlanner(benchmark::State& state, PlanningProblem problem, const std::string& plannerName = "mcpp-mlct") {
+    const auto planner = makePlanner(plannerName);
+    problem.planner = defaultPlannerChoice(plannerName);
     Plan plan;
     for (auto _ : state) {
-        plan = MlctPlanner{}.plan(problem, {});
+        plan = planner->plan(problem, {});
         benchmark::ClobberMemory();
     }
+    int turns = 0;
+    for (const auto& path : plan.paths)
+        turns += path.turns;
     state.counters["ratio"] = plan.metrics.ratio;
+    state.counters["turns"] = turns;
     state.counters["cells"] = static_cast<double>(plan.cells.size());
     state.counters["peak_rss_mb"] = peakResidentMegabytes();
     for (const auto& [stage, milliseconds] : plan.metrics.stageMilliseconds)
         state.counters[stage + "_ms"] = milliseconds;
 }
 
-void uniformGrid(benchmark::State& state) {
-    runPlanner(state, uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
-                                           2020));
+void uniformGrid(benchmark::State& state, const std::string& planner) {
+    runPlanner(state, uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+               planner);
 }
 
 void multiCoverMap(benchmark::State& state) {
@@ -76,7 +83,19 @@ void multiCoverMap(benchmark::State& state) {
 
 } // namespace
 
-BENCHMARK(uniformGrid)->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})->Unit(benchmark::kMillisecond);
+// The DARP / DMSTC grids for every planner that takes several robots; single-robot planners on one.
+BENCHMARK_CAPTURE(uniformGrid, mcpp_mlct, std::string("mcpp-mlct"))
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(uniformGrid, darp, std::string("darp"))
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(uniformGrid, spiral_stc, std::string("spiral-stc"))
+    ->ArgsProduct({{49, 100, 200}, {1}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(uniformGrid, full_spiral_stc, std::string("full-spiral-stc"))
+    ->ArgsProduct({{49, 100, 200}, {1}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(multiCoverMap)->ArgsProduct({{128}, {2, 4, 8, 16, 32}})->Unit(benchmark::kMillisecond);
 BENCHMARK(multiCoverMap)->ArgsProduct({{256, 512, 1024}, {16}})->Unit(benchmark::kMillisecond)->Iterations(1);
 

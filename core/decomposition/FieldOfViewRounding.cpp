@@ -32,7 +32,8 @@ std::vector<RoundedFieldOfView> roundFieldsOfView(const ClassTable& classes,
         if (landCoverClass == nullptr)
             continue;
         // Round down to fovMin * 2^k; the small epsilon keeps exact powers of two from rounding a step lower.
-        const int k = static_cast<int>(std::floor(std::log2(landCoverClass->fieldOfViewMetres / fovMin) + 1e-9));
+        const int k =
+            static_cast<int>(std::floor(std::log2(landCoverClass->fieldOfViewMetres / fovMin) + 1e-9));
         rounded.push_back({value, landCoverClass->fieldOfViewMetres, fovMin * std::ldexp(1.0, k), k});
         deepest = std::max(deepest, k);
     }

@@ -12,7 +12,7 @@ namespace mcpp {
 // down to Fd_min * 2^k and given the quadtree level whose sub-cells have that side (1 = top, the largest).
 // Classes absent from `presentValues`, obstacles and classes without a usable FOV take no part; with no
 // passable class at all the result is empty. The planners and the class table view share this one rule.
-[[nodiscard]] std::vector<RoundedFieldOfView> roundFieldsOfView(const ClassTable& classes,
-                                                                const std::vector<std::int32_t>& presentValues);
+[[nodiscard]] std::vector<RoundedFieldOfView>
+roundFieldsOfView(const ClassTable& classes, const std::vector<std::int32_t>& presentValues);
 
 } // namespace mcpp

@@ -1,5 +1,6 @@
 #include "core/decomposition/QuadTreeBuilder.hpp"
 
+#include "core/decomposition/LandCoverSamples.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <algorithm>
@@ -14,148 +15,34 @@ namespace {
 
 using Kind = PlanningError::Kind;
 
-// A grid of samples over which cells count classes: the raster's pixels when they are no larger than a
-// bottom cell, otherwise one sample at each bottom cell's centre (nearest neighbour).
-struct SampleGrid {
-    int columns = 0;
-    int rows = 0;
-    double originX = 0.0;
-    double originY = 0.0;
-    double sampleWidth = 1.0;
-    double sampleHeight = 1.0;
-    std::vector<std::uint16_t> codes; // dense class index, or obstacleCode / outsideCode
-};
-
-struct DenseClass {
-    std::int32_t value = 0;
-    bool traversable = false;
-    double speed = 0.0;
-    int level = 0; // quadtree level it needs; 0 for obstacles
-};
-
-std::string describePoint(double x, double y) {
-    std::ostringstream text;
-    text.precision(10);
-    text << "(" << x << ", " << y << ")";
-    return text.str();
-}
-
-void validateGrid(const ClassGrid& grid) {
-    if (grid.columns <= 0 || grid.rows <= 0)
-        throw PlanningError(Kind::InvalidGrid, "the land-cover grid is empty (" +
-                                                   std::to_string(grid.columns) + " x " +
-                                                   std::to_string(grid.rows) + " pixels)");
-    if (!(grid.pixelWidth > 0.0) || !(grid.pixelHeight > 0.0) || !std::isfinite(grid.pixelWidth) ||
-        !std::isfinite(grid.pixelHeight))
-        throw PlanningError(Kind::InvalidGrid, "pixel size must be a positive number of metres, got " +
-                                                   describePoint(grid.pixelWidth, grid.pixelHeight));
-    if (!std::isfinite(grid.originX) || !std::isfinite(grid.originY))
-        throw PlanningError(Kind::InvalidGrid,
-                            "grid origin is not a number: " + describePoint(grid.originX, grid.originY));
-    const auto expected = static_cast<std::size_t>(grid.columns) * static_cast<std::size_t>(grid.rows);
-    if (grid.values.size() != expected)
-        throw PlanningError(Kind::InvalidGrid, "grid holds " + std::to_string(grid.values.size()) +
-                                                   " values for " + std::to_string(expected) + " pixels");
-    if (!grid.outside.empty() && grid.outside.size() != expected)
-        throw PlanningError(Kind::InvalidGrid, "outside mask holds " + std::to_string(grid.outside.size()) +
-                                                   " values for " + std::to_string(expected) + " pixels");
-}
-
-std::string describeMetres(double metres) {
-    std::ostringstream text;
-    text.precision(6);
-    text << metres;
-    return text.str();
-}
-
-// Length of the overlap of [a0, a1) and [b0, b1).
-double overlap(double a0, double a1, double b0, double b1) {
-    return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
-}
-
-// Index range [first, last) of samples whose centres lie in [low, high) along one axis.
-std::pair<int, int> sampleRange(double low, double high, double origin, double step, int count) {
-    const int first = std::clamp(static_cast<int>(std::ceil((low - origin) / step - 0.5)), 0, count);
-    const int last = std::clamp(static_cast<int>(std::ceil((high - origin) / step - 0.5)), 0, count);
-    return {first, last};
-}
-
 } // namespace
 
 QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes,
                                 const DecompositionOptions& options, const ProgressReporter& progress) const {
-    validateGrid(grid);
-    if (auto problem = classes.validate())
-        throw PlanningError(Kind::InvalidClassTable, *problem);
-    if (!std::isfinite(options.purityTolerance) || options.purityTolerance < 0.0 ||
-        options.purityTolerance >= 1.0)
-        throw PlanningError(Kind::InvalidParameter, "purity tolerance must be in [0, 1), got " +
-                                                        std::to_string(options.purityTolerance));
-    if (!std::isfinite(options.blockedThreshold) || options.blockedThreshold < 0.0 ||
-        options.blockedThreshold > 1.0)
-        throw PlanningError(Kind::InvalidParameter, "blocked threshold must be in [0, 1], got " +
-                                                        std::to_string(options.blockedThreshold));
+    checkDecompositionInputs(grid, classes, options);
     progress.report("quadtree", 0.0);
 
-    // Dense class codes for the values present; every present value must be in the table.
-    std::unordered_map<std::int32_t, std::uint16_t> codeOfValue;
-    std::vector<DenseClass> dense;
-    const std::size_t pixelCount = grid.values.size();
-    std::vector<std::uint16_t> pixelCodes(pixelCount);
-    constexpr std::uint16_t outsideCode = std::numeric_limits<std::uint16_t>::max();
-    constexpr std::uint16_t obstacleCode = outsideCode - 1;
-    {
-        std::int32_t lastValue = 0;
-        std::uint16_t lastCode = outsideCode;
-        bool haveLast = false;
-        for (std::size_t i = 0; i < pixelCount; ++i) {
-            if (!grid.outside.empty() && grid.outside[i] != 0) {
-                pixelCodes[i] = outsideCode;
-                continue;
-            }
-            const std::int32_t value = grid.values[i];
-            if (!haveLast || value != lastValue) {
-                auto found = codeOfValue.find(value);
-                if (found == codeOfValue.end()) {
-                    const auto* landCoverClass = classes.find(value);
-                    if (landCoverClass == nullptr) {
-                        const auto column = static_cast<int>(i % static_cast<std::size_t>(grid.columns));
-                        const auto row = static_cast<int>(i / static_cast<std::size_t>(grid.columns));
-                        throw PlanningError(Kind::InvalidClassTable,
-                                            "raster value " + std::to_string(value) + " (first at column " +
-                                                std::to_string(column) + ", row " + std::to_string(row) +
-                                                ") has no row in the class table");
-                    }
-                    if (dense.size() >= obstacleCode)
-                        throw PlanningError(Kind::InvalidClassTable,
-                                            "more than 65533 distinct classes in the raster");
-                    found = codeOfValue.emplace(value, static_cast<std::uint16_t>(dense.size())).first;
-                    dense.push_back(
-                        {value, landCoverClass->isTraversable(), landCoverClass->speedMetresPerSecond, 0});
-                }
-                lastValue = value;
-                lastCode = found->second;
-                haveLast = true;
-            }
-            pixelCodes[i] = dense[lastCode].traversable ? lastCode : obstacleCode;
-        }
-    }
+    PixelCodes pixels = codePixels(grid, classes);
+    const auto& dense = pixels.classes;
+    constexpr std::uint16_t outsideCode = PixelCodes::outside;
+    constexpr std::uint16_t obstacleCode = PixelCodes::obstacle;
     progress.throwIfCancelled();
 
-    std::vector<std::int32_t> presentValues;
-    for (const auto& entry : dense)
-        presentValues.push_back(entry.value);
     QuadTree tree;
-    tree.roundedFieldsOfView = roundFieldsOfView(classes, presentValues);
+    tree.roundedFieldsOfView = roundFieldsOfView(classes, pixels.presentValues());
     if (tree.roundedFieldsOfView.empty())
-        throw PlanningError(Kind::NoPassableCell, "no passable land cover in the task area: every class present is "
-                                                  "an obstacle (speed 0 or not passable)");
+        throw PlanningError(Kind::NoPassableCell,
+                            "no passable land cover in the task area: every class present is "
+                            "an obstacle (speed 0 or not passable)");
     int levels = 1;
     double fovMin = std::numeric_limits<double>::infinity();
+    std::vector<int> levelOfCode(dense.size(), 0); // quadtree level each passable class needs
     for (const auto& rounded : tree.roundedFieldsOfView) {
         levels = std::max(levels, rounded.level);
         fovMin = std::min(fovMin, rounded.roundedMetres);
-        dense[codeOfValue.at(rounded.classValue)].level = rounded.level;
+        for (std::size_t code = 0; code < dense.size(); ++code)
+            if (dense[code].value == rounded.classValue)
+                levelOfCode[code] = rounded.level;
     }
     if (levels > 20)
         throw PlanningError(Kind::InvalidClassTable, "fields of view differ by more than a factor 2^19; "
@@ -171,49 +58,9 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     tree.topRows = std::max(1, static_cast<int>(std::ceil(grid.height() / tree.topCellSize - 1e-9)));
     const std::int64_t bottomColumns = static_cast<std::int64_t>(tree.topColumns) << (levels - 1);
     const std::int64_t bottomRows = static_cast<std::int64_t>(tree.topRows) << (levels - 1);
-    // Beyond this the plan would take minutes and gigabytes: say so rather than appear to hang.
-    constexpr std::int64_t bottomCellBudget = 8'000'000;
-    if (bottomColumns * bottomRows > bottomCellBudget)
-        throw PlanningError(Kind::InvalidParameter, "the smallest field of view (" + describeMetres(fovMin) +
-                                                        " m) makes " + std::to_string(bottomColumns) + " x " +
-                                                        std::to_string(bottomRows) +
-                                                        " bottom cells (more than 8 million): raise the "
-                                                        "field of view of the classes or crop the raster");
-
-    // Samples: pixels when they fit in a bottom cell, else the pixel under each bottom cell's centre.
-    SampleGrid samples;
-    if (grid.pixelWidth <= bottomSize * (1.0 + 1e-9) && grid.pixelHeight <= bottomSize * (1.0 + 1e-9)) {
-        samples.columns = grid.columns;
-        samples.rows = grid.rows;
-        samples.originX = grid.originX;
-        samples.originY = grid.originY;
-        samples.sampleWidth = grid.pixelWidth;
-        samples.sampleHeight = grid.pixelHeight;
-        samples.codes = std::move(pixelCodes);
-    } else {
-        samples.columns = static_cast<int>(bottomColumns);
-        samples.rows = static_cast<int>(bottomRows);
-        samples.originX = tree.originX;
-        samples.originY = tree.originY;
-        samples.sampleWidth = bottomSize;
-        samples.sampleHeight = bottomSize;
-        samples.codes.assign(static_cast<std::size_t>(bottomColumns * bottomRows), outsideCode);
-        for (int row = 0; row < samples.rows; ++row) {
-            const double y = tree.originY - (row + 0.5) * bottomSize;
-            const auto pixelRow = static_cast<int>(std::floor((grid.originY - y) / grid.pixelHeight));
-            if (pixelRow < 0 || pixelRow >= grid.rows)
-                continue;
-            for (int column = 0; column < samples.columns; ++column) {
-                const double x = tree.originX + (column + 0.5) * bottomSize;
-                const auto pixelColumn = static_cast<int>(std::floor((x - grid.originX) / grid.pixelWidth));
-                if (pixelColumn < 0 || pixelColumn >= grid.columns)
-                    continue;
-                samples.codes[static_cast<std::size_t>(row) * static_cast<std::size_t>(samples.columns) +
-                              static_cast<std::size_t>(column)] =
-                    pixelCodes[grid.index(pixelColumn, pixelRow)];
-            }
-        }
-    }
+    checkCellBudget(fovMin, bottomColumns, bottomRows);
+    const SampleGrid samples =
+        sampleGrid(grid, std::move(pixels.codes), bottomSize, bottomColumns, bottomRows);
     const double sampleArea = samples.sampleWidth * samples.sampleHeight;
     progress.report("quadtree", 0.2);
     progress.throwIfCancelled();
@@ -224,7 +71,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     const int outsideBucket = levels + 1;
     std::vector<int> bucketOfCode(dense.size());
     for (std::size_t code = 0; code < dense.size(); ++code)
-        bucketOfCode[code] = dense[code].traversable ? dense[code].level - 1 : obstacleBucket;
+        bucketOfCode[code] = dense[code].traversable ? levelOfCode[code] - 1 : obstacleBucket;
     std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(levels));
     auto levelColumns = [&](int level) { return static_cast<std::size_t>(tree.topColumns) << (level - 1); };
     auto levelRows = [&](int level) { return static_cast<std::size_t>(tree.topRows) << (level - 1); };
@@ -321,8 +168,8 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
             if (b >= cell.level)
                 deeper += bucketCounts[b]; // bucket b holds level b + 1
         }
-        const double insideFraction = overlap(cell.minX, cell.maxX(), grid.originX, rasterMaxX) *
-                                      overlap(cell.minY, cell.maxY(), rasterMinY, grid.originY) /
+        const double insideFraction = overlapLength(cell.minX, cell.maxX(), grid.originX, rasterMaxX) *
+                                      overlapLength(cell.minY, cell.maxY(), rasterMinY, grid.originY) /
                                       (cell.size * cell.size);
         const double passableFraction =
             total == 0 ? 0.0 : insideFraction * static_cast<double>(passable) / static_cast<double>(total);

@@ -1,11 +1,11 @@
 #pragma once
 
+#include "core/decomposition/DecompositionOptions.hpp"
+#include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/QuadTree.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/ProgressReporter.hpp"
-#include "core/decomposition/DecompositionOptions.hpp"
-#include "core/decomposition/FieldOfViewRounding.hpp"
 
 #include <vector>
 

@@ -1,7 +1,10 @@
 #include "core/planners/PlannerRegistry.hpp"
 
 #include "core/parameters/ParameterResolution.hpp"
+#include "core/planners/DarpPlanner.hpp"
+#include "core/planners/FullSpiralStcPlanner.hpp"
 #include "core/planners/MlctPlanner.hpp"
+#include "core/planners/SpiralStcPlanner.hpp"
 
 #include <functional>
 
@@ -18,6 +21,9 @@ template <typename PlannerType> Factory factory() {
 const std::vector<Factory>& factories() {
     static const std::vector<Factory> all{
         factory<MlctPlanner>(),
+        factory<SpiralStcPlanner>(),
+        factory<FullSpiralStcPlanner>(),
+        factory<DarpPlanner>(),
     };
     return all;
 }

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/planners/Planner.hpp"
 #include "core/parameters/PlannerChoice.hpp"
+#include "core/planners/Planner.hpp"
 #include "core/planners/PlannerDescription.hpp"
 
 #include <memory>

@@ -19,12 +19,14 @@ std::string blockedShare(const ParameterValues& parameters) {
 }
 
 // Why the start lies on no cell of the graph: the pixel under it, or the cell rule that dropped its cell.
-StartPointProblem whyNoCell(const PlanningProblem& problem, const ParameterValues& parameters,
-                            MapPoint start) {
+StartPointProblem whyNoCell(const PlanningProblem& problem, const ParameterValues& parameters, MapPoint start,
+                            const std::string& leftOutBecause) {
     if (auto problemAtPixel = startPointProblem(problem.grid, problem.classes, start))
         return *problemAtPixel;
-    return {Kind::StartOnObstacle, describePoint(start) + " is in a cell that is " +
-                                       blockedShare(parameters) + " obstacle or outside the area"};
+    const std::string reason = leftOutBecause.empty()
+                                   ? "is " + blockedShare(parameters) + " obstacle or outside the area"
+                                   : leftOutBecause;
+    return {Kind::StartOnObstacle, describePoint(start) + " is in a cell that " + reason};
 }
 
 int nearestFreeCell(const CellGraph& graph, const std::vector<int>& ownerOfCell, MapPoint point) {
@@ -45,7 +47,7 @@ int nearestFreeCell(const CellGraph& graph, const std::vector<int>& ownerOfCell,
 
 } // namespace
 
-std::vector<int> PlanningRun::locateStarts() {
+std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
     const CellGraph& graph = plan_.cells;
     const bool snap = parameters_.boolean("snap_starts_to_free_cells");
     if (graph.empty())
@@ -66,7 +68,7 @@ std::vector<int> PlanningRun::locateStarts() {
         int cell = graph.cellAt(start);
         std::optional<StartPointProblem> problem;
         if (cell < 0) {
-            problem = whyNoCell(problem_, parameters_, start);
+            problem = whyNoCell(problem_, parameters_, start, leftOutBecause);
         } else if (ownerOfCell[static_cast<std::size_t>(cell)] >= 0) {
             problem = StartPointProblem{Kind::StartsShareCell,
                                         describePoint(start) + " is in the same cell as robot " +

@@ -39,7 +39,9 @@ class PlanningRun {
 
     // The cell of the plan's graph holding each start (spec 4): a start on no cell, or in a cell another
     // robot already holds, is an error or, with snapping, moved to the nearest free cell with a warning.
-    [[nodiscard]] std::vector<int> locateStarts();
+    // leftOutBecause: why the decomposition leaves cells out, for a start in one; by default the blocked
+    // threshold's rule.
+    [[nodiscard]] std::vector<int> locateStarts(const std::string& leftOutBecause = {});
     void addIssue(IssueSeverity severity, std::string code, std::string message) {
         plan_.issues.push_back({severity, std::move(code), std::move(message)});
     }

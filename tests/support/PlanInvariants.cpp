@@ -20,15 +20,6 @@ std::string cellName(int id) {
     return "cell " + std::to_string(id);
 }
 
-// The sub-cell of a cell that holds bottom position (column, row) of the frame.
-SubCell subCellHolding(const Cell& cell, long long column, long long row) {
-    const bool east = 2 * (column - cell.column) >= cell.span;
-    const bool south = 2 * (row - cell.row) >= cell.span;
-    if (south)
-        return east ? SubCell::SouthEast : SubCell::SouthWest;
-    return east ? SubCell::NorthEast : SubCell::NorthWest;
-}
-
 // Which cell owns each bottom position of the frame (-1: none); reports overlaps.
 std::vector<int> occupancy(const CellGraph& graph, std::vector<std::string>& violations) {
     const GridFrame& frame = graph.frame();
@@ -136,24 +127,32 @@ std::vector<std::string> checkCells(const Plan& plan) {
     const std::vector<int> owner = occupancy(graph, violations);
     if (!violations.empty())
         return violations;
-    // Neighbours are exactly the cells with free sub-cells facing each other across a shared border.
+    // Neighbours are exactly the cells with free sub-cells facing each other across a shared border, judged
+    // on the lattice of half bottom cells, where every sub-cell of every cell is one or more squares.
     std::set<std::pair<int, int>> expected;
-    const auto at = [&](long long c, long long r) {
-        return owner[static_cast<std::size_t>(r * frame.columns + c)];
+    const long long latticeColumns = 2LL * frame.columns;
+    const long long latticeRows = 2LL * frame.rows;
+    const auto cellAt = [&](long long x, long long y) {
+        return owner[static_cast<std::size_t>((y / 2) * frame.columns + x / 2)];
     };
-    for (long long r = 0; r < frame.rows; ++r)
-        for (long long c = 0; c < frame.columns; ++c) {
-            const int a = at(c, r);
-            if (a < 0)
+    const auto freeAt = [&](int id, long long x, long long y) {
+        const Cell& cell = graph.cell(id);
+        const bool east = x - 2LL * cell.column >= cell.span;
+        const bool south = y - 2LL * cell.row >= cell.span;
+        const SubCell subCell = south ? (east ? SubCell::SouthEast : SubCell::SouthWest)
+                                      : (east ? SubCell::NorthEast : SubCell::NorthWest);
+        return cell.isFree(subCell);
+    };
+    for (long long y = 0; y < latticeRows; ++y)
+        for (long long x = 0; x < latticeColumns; ++x) {
+            const int a = cellAt(x, y);
+            if (a < 0 || !freeAt(a, x, y))
                 continue;
-            for (const auto& [dc, dr] : {std::pair{1, 0}, std::pair{0, 1}}) {
-                if (c + dc >= frame.columns || r + dr >= frame.rows)
+            for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+                if (x + dx >= latticeColumns || y + dy >= latticeRows)
                     continue;
-                const int b = at(c + dc, r + dr);
-                if (b < 0 || b == a)
-                    continue;
-                if (graph.cell(a).isFree(subCellHolding(graph.cell(a), c, r)) &&
-                    graph.cell(b).isFree(subCellHolding(graph.cell(b), c + dc, r + dr)))
+                const int b = cellAt(x + dx, y + dy);
+                if (b >= 0 && b != a && freeAt(b, x + dx, y + dy))
                     expected.insert({std::min(a, b), std::max(a, b)});
             }
         }
@@ -249,8 +248,7 @@ std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& 
         }
         const Waypoint& first = path.waypoints.front();
         const MapPoint start = problem.starts[robot];
-        if (!snapsStarts(problem) &&
-            std::hypot(first.x - start.x, first.y - start.y) > 1e-6)
+        if (!snapsStarts(problem) && std::hypot(first.x - start.x, first.y - start.y) > 1e-6)
             violations.push_back(text(who + " path does not begin at its start point", first.x, start.x));
         if (path.closed) {
             const Waypoint& last = path.waypoints.back();

@@ -1,6 +1,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace mcpp::test {
@@ -45,7 +46,7 @@ PlanningProblem randomProblem(const RandomMapSpec& spec) {
     // FOVs 5, 10, 20, 40 m: each class needs its own quadtree level.
     for (int c = 0; c < covers; ++c)
         problem.classes.set({c + 1, names[c], 0x404040U + static_cast<std::uint32_t>(c) * 0x302010U,
-                             speeds[c], spec.pixelSize / 2.0 * (1 << c), true});
+                             speeds[c], spec.pixelSize * spec.fovPixels * (1 << c), true});
     problem.classes.set({99, "water", 0x2255cc, 0.0, 1.0, false});
     std::uniform_int_distribution<int> columnDistribution(0, spec.columns - 1);
     std::uniform_int_distribution<int> rowDistribution(0, spec.rows - 1);
@@ -68,10 +69,11 @@ PlanningProblem randomProblem(const RandomMapSpec& spec) {
             value = 99;
     // The smallest FOV class is present, so every pixel is exactly one bottom cell.
     grid.values[0] = 1;
-    // Starts on distinct free pixels (each pixel is a bottom cell, so distinct pixels are distinct cells
-    // only at the bottom level: keep them apart by at least the largest cell).
+    // Starts on distinct free pixels, kept apart by at least the largest cell so no two share one; where a
+    // bottom cell spans several pixels, the start's own bottom cell is cleared of obstacles.
     std::vector<std::pair<int, int>> chosen;
-    const int spacing = 1 << (covers - 1);
+    const int bottomPixels = std::max(1, static_cast<int>(std::lround(2.0 * spec.fovPixels)));
+    const int spacing = bottomPixels * (1 << (covers - 1));
     int attempts = 0;
     while (static_cast<int>(problem.starts.size()) < spec.robots && attempts < 100000) {
         ++attempts;
@@ -86,6 +88,12 @@ PlanningProblem randomProblem(const RandomMapSpec& spec) {
             continue;
         chosen.emplace_back(column, row);
         problem.starts.push_back(pixelCentre(grid, column, row));
+        const int value = grid.values[grid.index(column, row)];
+        for (int r = row / bottomPixels * bottomPixels;
+             r < std::min(spec.rows, (row / bottomPixels + 1) * bottomPixels); ++r)
+            for (int c = column / bottomPixels * bottomPixels;
+                 c < std::min(spec.columns, (column / bottomPixels + 1) * bottomPixels); ++c)
+                grid.values[grid.index(c, r)] = value;
     }
     return problem;
 }

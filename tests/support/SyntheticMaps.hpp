@@ -13,6 +13,9 @@ struct RandomMapSpec {
     double pixelSize = 10.0;
     int landCovers = 1;            // 1..4 passable classes with FOVs 5 * 2^k
     double obstacleFraction = 0.0; // share of pixels set to the obstacle class 99
+    // The smallest FOV in pixels: 0.5 makes each pixel one bottom cell (its four sub-cells alike); 1 makes
+    // each pixel one sub-cell, so scattered obstacles block some sub-cells of a cell and not others.
+    double fovPixels = 0.5;
     int robots = 2;
     std::uint32_t seed = 1;
 };

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "core/coverage/CellIndexScope.hpp"
+#include "core/model/CellGraph.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <queue>
+#include <vector>
+
+namespace mcpp {
+
+// Brings connected regions to equal cover time by passing single border cells from the region with the most
+// time to the one with the least, along a chain of neighbouring regions. A donor only gives a cell it can
+// spare without falling apart and never its start; the receiver touches the cell, so it stays in one piece.
+// Among the cells a donor could give, the one most surrounded by the receiver goes first, then the one the
+// caller prefers, which keeps borders smooth. Cells and regions are numbered locally, 0..n-1.
+class BorderExchange {
+  public:
+    // Lower is more willing: how readily `receiver` takes `cell` from `donor`.
+    using Preference = std::function<std::int64_t(int cell, int receiver, int donor)>;
+
+    BorderExchange(const CellGraph& graph, const std::vector<int>& cells, const CellIndexScope& local,
+                   std::vector<double> weights, std::vector<int> startCells, Preference preference);
+
+    // Exchanges cells until every region is within `toleranceSeconds` of the fair share, no chain can pass
+    // a cell or the moves run out. `owner` holds each cell's region; returns the largest error left.
+    double balance(std::vector<int>& owner, double toleranceSeconds);
+
+  private:
+    struct Candidate {
+        int spareNeighbours; // the donor's cells next to it, less the receiver's
+        std::int64_t preference;
+        int cell;
+        bool operator>(const Candidate& other) const;
+    };
+    struct Passage {
+        int moved;     // cells that changed hands
+        bool complete; // every link passed at least one
+    };
+    using CandidateQueue = std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>>;
+
+    [[nodiscard]] std::size_t pair(int donor, int receiver) const;
+    [[nodiscard]] Candidate candidate(int cell, int donor, int receiver) const;
+    void offerNeighboursOf(int cell);
+    [[nodiscard]] std::vector<int> nextChain() const;
+    [[nodiscard]] std::vector<int> reachedFrom(int from) const;
+    Passage passAlong(const std::vector<int>& chain, int cellsPerLink);
+    void move(int cell, int receiver);
+    [[nodiscard]] int givableCell(int donor, int receiver);
+    [[nodiscard]] bool isRemovable(int cell, int region);
+    [[nodiscard]] int countIn(int cell, int region) const;
+    [[nodiscard]] double largestError() const;
+
+    std::vector<int> adjacencyStart_; // local adjacency, compressed rows
+    std::vector<int> adjacency_;
+    std::vector<double> weight_;
+    std::vector<int> start_;
+    Preference preference_;
+    std::size_t regionCount_;
+    double fairShare_ = 0.0;
+    double largestCell_ = 0.0;
+    std::vector<int>* owner_ = nullptr;
+    std::vector<double> cost_;
+    std::vector<CandidateQueue> queues_; // per (donor, receiver)
+    std::vector<char> closed_;           // per (donor, receiver): no cell to give since the last exchange
+    std::vector<int> visitStamp_;
+    int stamp_ = 0;
+};
+
+} // namespace mcpp

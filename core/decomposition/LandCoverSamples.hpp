@@ -1,0 +1,63 @@
+#pragma once
+
+#include "core/decomposition/DecompositionOptions.hpp"
+#include "core/model/ClassGrid.hpp"
+#include "core/model/ClassTable.hpp"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace mcpp {
+
+// Every pixel's land cover as a small code, so decompositions count classes without looking values up.
+struct PixelCodes {
+    static constexpr std::uint16_t outside = 65535;  // nodata or outside the task area
+    static constexpr std::uint16_t obstacle = 65534; // a class robots cannot cross
+    struct DenseClass {
+        std::int32_t value = 0;
+        bool traversable = false;
+        double speed = 0.0;
+    };
+    std::vector<DenseClass> classes;  // by code, in order of first appearance
+    std::vector<std::uint16_t> codes; // by pixel, row-major: a passable class's code, obstacle or outside
+
+    [[nodiscard]] std::vector<std::int32_t> presentValues() const;
+};
+
+// A grid of samples over which cells count classes: the raster's pixels when they are no larger than the
+// decomposition's squares, otherwise one sample at each square's centre (nearest neighbour).
+struct SampleGrid {
+    int columns = 0;
+    int rows = 0;
+    double originX = 0.0;
+    double originY = 0.0;
+    double sampleWidth = 1.0;
+    double sampleHeight = 1.0;
+    std::vector<std::uint16_t> codes; // PixelCodes' codes
+
+    [[nodiscard]] double sampleArea() const { return sampleWidth * sampleHeight; }
+    [[nodiscard]] const std::uint16_t* row(int index) const {
+        return codes.data() + static_cast<std::size_t>(index) * static_cast<std::size_t>(columns);
+    }
+};
+
+// Throws PlanningError when the grid is malformed, the table invalid or an option out of range.
+void checkDecompositionInputs(const ClassGrid& grid, const ClassTable& classes,
+                              const DecompositionOptions& options);
+// Throws PlanningError naming the first raster value without a row in the table.
+[[nodiscard]] PixelCodes codePixels(const ClassGrid& grid, const ClassTable& classes);
+// Samples for a grid of columns x rows squares of `squareSize` metres anchored at the raster origin; the
+// pixel codes are moved in when the pixels themselves serve.
+[[nodiscard]] SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelCodes,
+                                    double squareSize, std::int64_t columns, std::int64_t rows);
+// Throws PlanningError, with the FOV that makes it so, when a grid of columns x rows smallest cells would
+// take minutes and gigabytes to plan.
+void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows);
+
+// Length of the overlap of [a0, a1) and [b0, b1).
+[[nodiscard]] double overlapLength(double a0, double a1, double b0, double b1);
+// Index range [first, last) of samples whose centres lie in [low, high) along one axis.
+[[nodiscard]] std::pair<int, int> sampleRange(double low, double high, double origin, double step, int count);
+
+} // namespace mcpp

@@ -1,0 +1,50 @@
+#include "core/planners/DarpPlanner.hpp"
+
+#include "core/allocation/DarpAllocator.hpp"
+#include "core/coverage/SpanningTreeCoverage.hpp"
+#include "core/decomposition/UniformGridDecomposition.hpp"
+#include "core/planners/PlanningRun.hpp"
+
+#include <sstream>
+
+namespace mcpp {
+
+PlannerDescription DarpPlanner::describe() const {
+    PlannerDescription description;
+    description.name = plannerName;
+    description.label = "DARP";
+    description.summary =
+        "grid cells divided by DARP into regions of equal cover time, fewest-turn STC per region";
+    description.parameters = {DecompositionOptions::blockedThresholdParameter()};
+    for (ParameterSpec& spec : DarpAllocator::Options::parameters())
+        description.parameters.push_back(std::move(spec));
+    description.parameters.push_back(SpanningTreeCoverage::closedTourParameter());
+    return description;
+}
+
+void DarpPlanner::run(PlanningRun& run) const {
+    const PlanningProblem& problem = run.problem();
+    const ParameterValues& parameters = run.parameters();
+    Plan& plan = run.plan();
+    plan.cells = run.stage("grid", [&] {
+        const UniformGridDecomposition grid(DecompositionOptions::from(parameters), GridCellRule::WholeCell);
+        return grid.decompose(problem.grid, problem.classes, run.progress());
+    });
+    const std::vector<int> startCells = run.locateStarts();
+    const DarpAllocator allocator(DarpAllocator::Options::from(parameters));
+    plan.regions =
+        run.stage("allocation", [&] { return allocator.allocate(plan.cells, startCells, run.progress()); });
+    if (!allocator.outcome().converged) {
+        std::ostringstream text;
+        text.precision(3);
+        text << "DARP stopped after " << allocator.outcome().iterations << " rounds with a region "
+             << allocator.outcome().largestShareError * 100.0 << "% off its fair share";
+        run.addIssue(IssueSeverity::Warning, "not-converged", text.str());
+    }
+    plan.paths = run.stage("paths", [&] {
+        const SpanningTreeCoverage coverage(parameters.boolean("closed_tour"));
+        return coverage.plan(plan.cells, plan.regions, run.starts(), run.progress());
+    });
+}
+
+} // namespace mcpp

@@ -1,0 +1,19 @@
+#pragma once
+
+#include "core/planners/Planner.hpp"
+
+namespace mcpp {
+
+// DARP (Kapoutsis et al.) on the grid of 2 x Fd_min cells: regions divided by DARP so each robot's cover time
+// is about equal, then spanning-tree coverage per region, keeping for each robot the tree (east-west or
+// north-south spines) whose path turns least.
+class DarpPlanner final : public Planner {
+  public:
+    static constexpr const char* plannerName = "darp";
+
+  protected:
+    [[nodiscard]] PlannerDescription describe() const override;
+    void run(PlanningRun& run) const override;
+};
+
+} // namespace mcpp
