@@ -53,7 +53,8 @@ PlanningProblem multiCover(int size, int robots, std::uint32_t seed) {
     return test::randomProblem(spec);
 }
 
-void runPlanner(benchmark::State& state, PlanningProblem problem, const std::string& plannerName = "mcpp-mlct") {
+void runPlanner(benchmark::State& state, PlanningProblem problem,
+                const std::string& plannerName = "mcpp-mlct") {
     const auto planner = makePlanner(plannerName);
     problem.planner = defaultPlannerChoice(plannerName);
     Plan plan;
@@ -73,7 +74,8 @@ void runPlanner(benchmark::State& state, PlanningProblem problem, const std::str
 }
 
 void uniformGrid(benchmark::State& state, const std::string& planner) {
-    runPlanner(state, uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+    runPlanner(state,
+               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
                planner);
 }
 

@@ -9,24 +9,8 @@ using namespace mcpp;
 
 namespace {
 
-constexpr std::int32_t water = 99;
-
-// A grid of one-metre pixels where every pixel is a sub-cell (FOV 1 m, cells of 2 x 2 pixels); `rows` lists
-// the map from north to south, '#' water, anything else grass.
 PlanningProblem drawnMap(const std::vector<std::string>& rows, MapPoint start) {
-    PlanningProblem problem;
-    ClassGrid& grid = problem.grid;
-    grid.columns = static_cast<int>(rows.front().size());
-    grid.rows = static_cast<int>(rows.size());
-    grid.originX = 1000.0;
-    grid.originY = 2000.0;
-    for (const std::string& row : rows)
-        for (char pixel : row)
-            grid.values.push_back(pixel == '#' ? water : 1);
-    problem.classes.set({1, "grass", 0x88cc44, 1.0, 1.0, true});
-    problem.classes.set({water, "water", 0x2255cc, 0.0, 1.0, false});
-    problem.starts = {{grid.originX + start.x, grid.originY - start.y}};
-    return problem;
+    return test::drawnProblem(rows, {start});
 }
 
 Plan planWith(const std::string& planner, PlanningProblem& problem) {

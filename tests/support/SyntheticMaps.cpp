@@ -29,6 +29,24 @@ PlanningProblem uniformProblem(int columns, int rows, double pixelSize, const st
     return problem;
 }
 
+PlanningProblem drawnProblem(const std::vector<std::string>& rows, const std::vector<MapPoint>& starts) {
+    PlanningProblem problem;
+    ClassGrid& grid = problem.grid;
+    grid.columns = static_cast<int>(rows.front().size());
+    grid.rows = static_cast<int>(rows.size());
+    grid.originX = 1000.0;
+    grid.originY = 2000.0;
+    for (const std::string& row : rows)
+        for (char pixel : row)
+            grid.values.push_back(pixel == '#' ? 99 : pixel == 'm' ? 2 : 1);
+    problem.classes.set({1, "grass", 0x88cc44, 1.0, 1.0, true});
+    problem.classes.set({2, "mud", 0x886644, 0.5, 1.0, true});
+    problem.classes.set({99, "water", 0x2255cc, 0.0, 1.0, false});
+    for (const MapPoint& start : starts)
+        problem.starts.push_back({grid.originX + start.x, grid.originY - start.y});
+    return problem;
+}
+
 PlanningProblem randomProblem(const RandomMapSpec& spec) {
     std::mt19937 random(spec.seed);
     PlanningProblem problem;

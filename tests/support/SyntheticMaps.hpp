@@ -3,6 +3,7 @@
 #include "core/model/PlanningProblem.hpp"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace mcpp::test {
@@ -29,6 +30,12 @@ struct RandomMapSpec {
 [[nodiscard]] PlanningProblem uniformProblem(int columns, int rows, double pixelSize,
                                              const std::vector<bool>& blocked,
                                              const std::vector<MapPoint>& starts);
+
+// A map drawn as text, north row first, one-metre pixels that are one sub-cell each (FOV 1 m, so cells of
+// 2 x 2 pixels): '#' water, 'm' mud (half speed), anything else grass. Starts are given in metres east and
+// south of the north-west corner.
+[[nodiscard]] PlanningProblem drawnProblem(const std::vector<std::string>& rows,
+                                           const std::vector<MapPoint>& starts);
 
 // The centre of pixel (column, row) of a grid.
 [[nodiscard]] MapPoint pixelCentre(const ClassGrid& grid, int column, int row);

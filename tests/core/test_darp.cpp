@@ -1,0 +1,127 @@
+#include "core/planners/PlannerRegistry.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+#include <algorithm>
+
+using namespace mcpp;
+
+namespace {
+
+Plan planWithDarp(PlanningProblem& problem) {
+    problem.planner = defaultPlannerChoice("darp");
+    return makePlanner("darp")->plan(problem, {});
+}
+
+QString violations(const PlanningProblem& problem, const Plan& plan) {
+    return QString::fromStdString(test::describe(test::checkAllInvariants(problem, plan)));
+}
+
+int cellsOf(const Plan& plan, int robot) {
+    return static_cast<int>(
+        std::count(plan.regions.robotOfCell.begin(), plan.regions.robotOfCell.end(), robot));
+}
+
+bool hasIssue(const Plan& plan, const std::string& code) {
+    return std::any_of(plan.issues.begin(), plan.issues.end(),
+                       [&](const PlanIssue& issue) { return issue.code == code; });
+}
+
+std::vector<std::string> rowsOf(int count, const std::string& row) {
+    return std::vector<std::string>(static_cast<std::size_t>(count), row);
+}
+
+} // namespace
+
+// DARP on maps whose fair division is known by hand. Pixels are sub-cells, cells 2 x 2 pixels; a grass cell
+// takes 4 s to cover, a mud cell 8 s.
+class DarpTest : public QObject {
+    Q_OBJECT
+
+  private slots:
+    // Twenty cells in a row, a robot at each end: ten each, two straight tours, makespan at the lower bound.
+    void corridorSplitsInHalves() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(2, std::string(40, '.')), {{0.5, 0.5}, {39.5, 0.5}});
+        const Plan plan = planWithDarp(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QCOMPARE(cellsOf(plan, 0), 10);
+        QCOMPARE(cellsOf(plan, 1), 10);
+        QCOMPARE(plan.metrics.ratio, 1.0);
+        QVERIFY(!hasIssue(plan, "not-converged"));
+    }
+
+    // A U of 36 cells, a robot at the top of each arm: 18 each, each region in one piece round the bend.
+    void uShapeSplitsAtTheBottom() {
+        std::vector<std::string> rows = rowsOf(12, "....####....");
+        for (const std::string& row : rowsOf(4, "............"))
+            rows.push_back(row);
+        PlanningProblem problem = test::drawnProblem(rows, {{0.5, 0.5}, {11.5, 0.5}});
+        const Plan plan = planWithDarp(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QCOMPARE(plan.cells.size(), std::size_t{36});
+        QCOMPARE(cellsOf(plan, 0), 18);
+        QCOMPARE(cellsOf(plan, 1), 18);
+    }
+
+    // A river: two robots share the west bank (24 cells), one has the east bank (16 cells) to itself. Each
+    // bank is divided on its own; nothing crosses the water.
+    void riverBanksAreDividedApart() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(8, "............####........"), {{0.5, 0.5}, {11.5, 7.5}, {23.5, 0.5}});
+        const Plan plan = planWithDarp(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QCOMPARE(cellsOf(plan, 0), 12);
+        QCOMPARE(cellsOf(plan, 1), 12);
+        QCOMPARE(cellsOf(plan, 2), 16);
+        QVERIFY(!hasIssue(plan, "not-converged"));
+    }
+
+    // Half the corridor is mud: DARP balances time, so the robot on the mud side gets fewer cells, and the
+    // two regions' cover times differ by at most one mud cell.
+    void mudCostsTimeNotArea() {
+        PlanningProblem problem = test::drawnProblem(rowsOf(2, std::string(20, 'm') + std::string(20, '.')),
+                                                     {{0.5, 0.5}, {39.5, 0.5}});
+        const Plan plan = planWithDarp(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QVERIFY2(
+            cellsOf(plan, 0) < cellsOf(plan, 1),
+            qPrintable(
+                QString("%1 mud-side cells, %2 grass-side").arg(cellsOf(plan, 0)).arg(cellsOf(plan, 1))));
+        const auto& cost = plan.regions.costSeconds;
+        QVERIFY2(std::abs(cost[0] - cost[1]) <= 8.0 + 1e-9,
+                 qPrintable(QString("%1 s vs %2 s").arg(cost[0]).arg(cost[1])));
+    }
+
+    // Eight robots on an open field of 400 cells: every region within one cell of the fair share.
+    void openFieldIsBalancedToACell() {
+        std::vector<MapPoint> starts;
+        for (int robot = 0; robot < 8; ++robot)
+            starts.push_back({0.5 + 5.0 * robot, robot % 2 == 0 ? 0.5 : 39.5});
+        PlanningProblem problem = test::drawnProblem(rowsOf(40, std::string(40, '.')), starts);
+        const Plan plan = planWithDarp(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        for (int robot = 0; robot < 8; ++robot)
+            QVERIFY2(std::abs(cellsOf(plan, robot) - 50) <= 1,
+                     qPrintable(QString("robot %1 has %2 cells").arg(robot).arg(cellsOf(plan, robot))));
+        QVERIFY(!hasIssue(plan, "not-converged"));
+    }
+
+    // Stopped after a single round of correction factors, with the starts bunched in a corner, the border
+    // exchange still brings 100 cells to 33, 33 and 34.
+    void oneRoundThenTheBorderExchangeBalances() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(20, std::string(20, '.')), {{0.5, 0.5}, {2.5, 0.5}, {4.5, 0.5}});
+        problem.planner = defaultPlannerChoice("darp");
+        problem.planner.parameters.set("max_iterations", 1);
+        const Plan plan = makePlanner("darp")->plan(problem, {});
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        for (int robot = 0; robot < 3; ++robot)
+            QVERIFY2(cellsOf(plan, robot) == 33 || cellsOf(plan, robot) == 34,
+                     qPrintable(QString("robot %1 has %2 cells").arg(robot).arg(cellsOf(plan, robot))));
+    }
+};
+
+QTEST_APPLESS_MAIN(DarpTest)
+#include "test_darp.moc"
