@@ -4,6 +4,7 @@
 #include "core/planners/DarpPlanner.hpp"
 #include "core/planners/FullSpiralStcPlanner.hpp"
 #include "core/planners/MlctPlanner.hpp"
+#include "core/planners/MstcPlanner.hpp"
 #include "core/planners/SpiralStcPlanner.hpp"
 
 #include <functional>
@@ -24,6 +25,7 @@ const std::vector<Factory>& factories() {
         factory<SpiralStcPlanner>(),
         factory<FullSpiralStcPlanner>(),
         factory<DarpPlanner>(),
+        factory<MstcPlanner>(),
     };
     return all;
 }

@@ -57,6 +57,8 @@ class PlannerInvariantsTest : public QObject {
         problem.planner = defaultPlannerChoice(description.name);
         if (problem.planner.parameters.has("closed_tour"))
             problem.planner.parameters.set("closed_tour", seed % 5 != 0);
+        if (problem.planner.parameters.has("balanced"))
+            problem.planner.parameters.set("balanced", seed % 2 == 0);
         Plan plan;
         try {
             plan = made->plan(problem, {});

@@ -1,0 +1,156 @@
+#include "core/planners/MstcPlanner.hpp"
+
+#include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/SpanningTreeBuilder.hpp"
+#include "core/coverage/TourSplitter.hpp"
+#include "core/coverage/TreeCircumnavigation.hpp"
+#include "core/decomposition/UniformGridDecomposition.hpp"
+#include "core/planners/PlanningRun.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace mcpp {
+namespace {
+
+// The robots whose start cells lie in one connected part of the map, and that part's cells.
+struct MapPart {
+    std::vector<int> cells;
+    std::vector<int> robots;
+};
+
+std::vector<MapPart> partsWithRobots(const CellGraph& graph, const std::vector<int>& startCells) {
+    std::vector<int> partOf(graph.size(), -1);
+    std::vector<MapPart> parts;
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
+        const auto start = static_cast<std::size_t>(startCells[robot]);
+        if (partOf[start] < 0) {
+            MapPart part;
+            part.cells.push_back(startCells[robot]);
+            partOf[start] = static_cast<int>(parts.size());
+            for (std::size_t head = 0; head < part.cells.size(); ++head)
+                for (int neighbour : graph.neighbours(part.cells[head]))
+                    if (partOf[static_cast<std::size_t>(neighbour)] < 0) {
+                        partOf[static_cast<std::size_t>(neighbour)] = static_cast<int>(parts.size());
+                        part.cells.push_back(neighbour);
+                    }
+            parts.push_back(std::move(part));
+        }
+        parts[static_cast<std::size_t>(partOf[start])].robots.push_back(static_cast<int>(robot));
+    }
+    return parts;
+}
+
+// The tour of one part as a cycle (the closing return dropped), the one of the two trees that turns least.
+std::vector<Waypoint> partTour(const CellGraph& graph, const MapPart& part, int rootCell, MapPoint start) {
+    std::vector<int> scratchIndex(graph.size(), -1);
+    const SpanningTreeBuilder trees(graph, scratchIndex);
+    TreeCircumnavigation walker(graph);
+    std::vector<Waypoint> best;
+    int fewestTurns = std::numeric_limits<int>::max();
+    for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
+        std::vector<Waypoint> walk =
+            walker.walk(trees.preferring(part.cells, rootCell, preference), start, true);
+        if (walk.size() > 1)
+            walk.pop_back();
+        const int turns = countTurns(walk);
+        if (turns < fewestTurns) {
+            fewestTurns = turns;
+            best = std::move(walk);
+        }
+    }
+    return best;
+}
+
+std::vector<double> stepSeconds(const std::vector<Waypoint>& tour) {
+    std::vector<double> seconds(tour.size(), 0.0);
+    for (std::size_t i = 0; i < tour.size(); ++i) {
+        const Waypoint& a = tour[i];
+        const Waypoint& b = tour[(i + 1) % tour.size()];
+        const double length = std::hypot(b.x - a.x, b.y - a.y);
+        seconds[i] = length / 2.0 / a.speedMetresPerSecond + length / 2.0 / b.speedMetresPerSecond;
+    }
+    return seconds;
+}
+
+// The tour point in the robot's start cell nearest its start point.
+int tourPosition(const std::vector<Waypoint>& tour, int startCell, MapPoint start) {
+    int best = 0;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < tour.size(); ++i) {
+        const double distance = std::hypot(tour[i].x - start.x, tour[i].y - start.y);
+        if (tour[i].cell == startCell && distance < bestDistance) {
+            bestDistance = distance;
+            best = static_cast<int>(i);
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+PlannerDescription MstcPlanner::describe() const {
+    PlannerDescription description;
+    description.name = "mstc";
+    description.label = "MSTC";
+    description.summary = "one spanning-tree tour of the grid cut into a piece per robot at the starts";
+    description.promises.regionsConnected = false;
+    description.promises.pathsCoverOwnRegion = false;
+    description.parameters = {
+        DecompositionOptions::blockedThresholdParameter(),
+        booleanParameter("balanced", "Balanced pieces", false,
+                         "Cut the tour into pieces of equal time, each robot walking along the tour (through "
+                         "other pieces, forwards or backwards) to its own; otherwise each robot covers the "
+                         "tour from its start to the next robot's"),
+    };
+    return description;
+}
+
+void MstcPlanner::run(PlanningRun& run) const {
+    const PlanningProblem& problem = run.problem();
+    const ParameterValues& parameters = run.parameters();
+    Plan& plan = run.plan();
+    plan.cells = run.stage("grid", [&] {
+        const UniformGridDecomposition grid(DecompositionOptions::from(parameters), GridCellRule::WholeCell);
+        return grid.decompose(problem.grid, problem.classes, run.progress());
+    });
+    const std::vector<int> startCells = run.locateStarts();
+    const std::vector<MapPoint>& starts = run.starts();
+    plan.regions.robotOfCell.assign(plan.cells.size(), -1);
+    plan.regions.startCell = startCells;
+    plan.paths.resize(starts.size());
+    const std::vector<MapPart> parts =
+        run.stage("allocation", [&] { return partsWithRobots(plan.cells, startCells); });
+    run.stage("paths", [&] {
+        for (const MapPart& part : parts) {
+            run.progress().throwIfCancelled();
+            const auto first = static_cast<std::size_t>(part.robots.front());
+            const std::vector<Waypoint> tour = partTour(plan.cells, part, startCells[first], starts[first]);
+            std::vector<int> positions;
+            for (int robot : part.robots)
+                positions.push_back(tourPosition(tour, startCells[static_cast<std::size_t>(robot)],
+                                                 starts[static_cast<std::size_t>(robot)]));
+            const TourSplitter splitter(stepSeconds(tour));
+            const std::vector<TourSplitter::Share> shares = parameters.boolean("balanced")
+                                                                ? splitter.balancedPieces(positions)
+                                                                : splitter.forwardPieces(positions);
+            for (std::size_t k = 0; k < part.robots.size(); ++k) {
+                const int robot = part.robots[k];
+                std::vector<Waypoint> walk;
+                for (std::size_t step = 0; step < shares[k].order.size(); ++step) {
+                    const Waypoint& point = tour[static_cast<std::size_t>(shares[k].order[step])];
+                    walk.push_back(point);
+                    // A cell goes to a robot whose piece passes it (two may share its sub-cells).
+                    int& owner = plan.regions.robotOfCell[static_cast<std::size_t>(point.cell)];
+                    if (step >= shares[k].approach && owner < 0)
+                        owner = robot;
+                }
+                plan.paths[static_cast<std::size_t>(robot)] =
+                    pathFromWalk(robot, starts[static_cast<std::size_t>(robot)], std::move(walk), false);
+            }
+        }
+        return 0;
+    });
+}
+
+} // namespace mcpp

@@ -1,0 +1,116 @@
+#include "core/planners/PlannerRegistry.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+Plan planWithMstc(PlanningProblem& problem, bool balanced) {
+    problem.planner = defaultPlannerChoice("mstc");
+    problem.planner.parameters.set("balanced", balanced);
+    const auto planner = makePlanner("mstc");
+    Plan plan = planner->plan(problem, {});
+    const auto violations = test::checkAllInvariants(problem, plan, planner->description().promises);
+    if (!violations.empty())
+        qWarning("%s", test::describe(violations).c_str());
+    return plan;
+}
+
+bool holdsInvariants(const PlanningProblem& problem, const Plan& plan) {
+    return test::checkAllInvariants(problem, plan, makePlanner("mstc")->description().promises).empty();
+}
+
+std::vector<std::string> rowsOf(int count, const std::string& row) {
+    return std::vector<std::string>(static_cast<std::size_t>(count), row);
+}
+
+double totalLength(const Plan& plan) {
+    double length = 0.0;
+    for (const CoveragePath& path : plan.paths)
+        length += path.lengthMetres;
+    return length;
+}
+
+int totalRepeats(const Plan& plan) {
+    int repeats = 0;
+    for (const CoveragePath& path : plan.paths)
+        repeats += path.repeatedSubCellVisits;
+    return repeats;
+}
+
+} // namespace
+
+// MSTC on maps whose tour is known by hand. Pixels are sub-cells (1 m), cells 2 x 2 pixels.
+class MstcTest : public QObject {
+    Q_OBJECT
+
+  private slots:
+    // A corridor of 20 cells is one loop of 80 sub-cells. Robots at the two ends cut it in two pieces that
+    // together pass every sub-cell once: 80 points, 78 one-metre steps between them, nothing repeated.
+    void corridorIsCutAtTheStarts() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(2, std::string(40, '.')), {{0.5, 0.5}, {39.5, 0.5}});
+        const Plan plan = planWithMstc(problem, false);
+        QVERIFY(holdsInvariants(problem, plan));
+        QCOMPARE(totalLength(plan), 78.0);
+        QCOMPARE(totalRepeats(plan), 0);
+        QCOMPARE(plan.metrics.coveredFraction, 1.0);
+        for (const CoveragePath& path : plan.paths)
+            QVERIFY(!path.closed);
+    }
+
+    // Two robots side by side at one end: cut at the starts, one of them walks nearly the whole loop.
+    // Balanced, each covers half the loop and the makespan nearly halves.
+    void balancedPiecesEvenOutBunchedStarts() {
+        PlanningProblem forwardProblem =
+            test::drawnProblem(rowsOf(2, std::string(40, '.')), {{0.5, 0.5}, {2.5, 0.5}});
+        const Plan forward = planWithMstc(forwardProblem, false);
+        PlanningProblem balancedProblem = forwardProblem;
+        const Plan balanced = planWithMstc(balancedProblem, true);
+        QVERIFY(holdsInvariants(forwardProblem, forward));
+        QVERIFY(holdsInvariants(balancedProblem, balanced));
+        QVERIFY2(forward.metrics.makespanSeconds >= 74.0,
+                 qPrintable(QString::number(forward.metrics.makespanSeconds)));
+        QVERIFY2(balanced.metrics.makespanSeconds <= 44.0,
+                 qPrintable(QString::number(balanced.metrics.makespanSeconds)));
+        QCOMPARE(balanced.metrics.coveredFraction, 1.0);
+    }
+
+    // A U: the tour runs down one arm and up the other; robots at the tips share it without repeats.
+    void uShapeIsOneTour() {
+        std::vector<std::string> rows = rowsOf(12, "....####....");
+        for (const std::string& row : rowsOf(4, "............"))
+            rows.push_back(row);
+        PlanningProblem problem = test::drawnProblem(rows, {{0.5, 0.5}, {11.5, 0.5}});
+        const Plan plan = planWithMstc(problem, false);
+        QVERIFY(holdsInvariants(problem, plan));
+        QCOMPARE(plan.metrics.coveredFraction, 1.0);
+        QCOMPARE(totalRepeats(plan), 0);
+        QCOMPARE(totalLength(plan), 36.0 * 4.0 - 2.0);
+    }
+
+    // A river: each bank has its own tour; the robots on the west bank share theirs, the one on the east
+    // bank covers its bank alone, and no path crosses the water.
+    void riverBanksHaveTheirOwnTours() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(8, "............####........"), {{0.5, 0.5}, {11.5, 7.5}, {23.5, 0.5}});
+        for (bool balanced : {false, true}) {
+            PlanningProblem copy = problem;
+            const Plan plan = planWithMstc(copy, balanced);
+            QVERIFY(holdsInvariants(copy, plan));
+            QCOMPARE(plan.metrics.coveredFraction, 1.0);
+            QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 0.0);
+            for (const Waypoint& point : plan.paths[2].waypoints)
+                QVERIFY(point.x - problem.grid.originX > 16.0);
+            for (int robot : {0, 1})
+                for (const Waypoint& point : plan.paths[static_cast<std::size_t>(robot)].waypoints)
+                    QVERIFY(point.x - problem.grid.originX < 12.0);
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(MstcTest)
+#include "test_mstc.moc"
