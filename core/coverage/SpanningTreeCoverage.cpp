@@ -21,30 +21,36 @@ ParameterSpec SpanningTreeCoverage::closedTourParameter() {
                             "Closed tours end where they start; open paths stop at the last cell");
 }
 
+CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std::vector<int>& cells,
+                                              int startCell, int robot, MapPoint start,
+                                              std::vector<int>& scratchIndex) const {
+    const SpanningTreeBuilder trees(graph, scratchIndex);
+    TreeCircumnavigation walker(graph);
+    CoveragePath best;
+    for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
+        const SpanningTree tree = trees.preferring(cells, startCell, preference);
+        CoveragePath candidate =
+            pathFromWalk(robot, start, walker.walk(tree, start, closedTour_), closedTour_);
+        measurePath(candidate, graph);
+        if (best.waypoints.empty() || candidate.turns < best.turns ||
+            (candidate.turns == best.turns && candidate.lengthMetres < best.lengthMetres - 1e-9))
+            best = std::move(candidate);
+    }
+    return best;
+}
+
 std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, const RegionAllocation& regions,
                                                      const std::vector<MapPoint>& starts,
                                                      const ProgressReporter& progress) const {
     const std::size_t robots = regions.startCell.size();
     const auto regionCells = cellsByRobot(regions);
     std::vector<int> scratchIndex(graph.size(), -1);
-    const SpanningTreeBuilder trees(graph, scratchIndex);
-    TreeCircumnavigation walker(graph);
     std::vector<CoveragePath> paths;
     for (std::size_t robot = 0; robot < robots; ++robot) {
         progress.throwIfCancelled();
         progress.report("paths", static_cast<double>(robot) / static_cast<double>(robots));
-        CoveragePath best;
-        for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
-            const SpanningTree tree =
-                trees.preferring(regionCells[robot], regions.startCell[robot], preference);
-            CoveragePath candidate = pathFromWalk(static_cast<int>(robot), starts[robot],
-                                                  walker.walk(tree, starts[robot], closedTour_), closedTour_);
-            measurePath(candidate, graph);
-            if (best.waypoints.empty() || candidate.turns < best.turns ||
-                (candidate.turns == best.turns && candidate.lengthMetres < best.lengthMetres - 1e-9))
-                best = std::move(candidate);
-        }
-        paths.push_back(std::move(best));
+        paths.push_back(regionPath(graph, regionCells[robot], regions.startCell[robot],
+                                   static_cast<int>(robot), starts[robot], scratchIndex));
     }
     progress.report("paths", 1.0);
     return paths;

@@ -19,6 +19,12 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                  const std::vector<MapPoint>& starts,
                                                  const ProgressReporter& progress) const override;
 
+    // One robot's path over its region's cells: the fewer-turn of the two trees. scratchIndex: one int per
+    // graph cell, all -1, left so.
+    [[nodiscard]] CoveragePath regionPath(const CellGraph& graph, const std::vector<int>& cells,
+                                          int startCell, int robot, MapPoint start,
+                                          std::vector<int>& scratchIndex) const;
+
   private:
     bool closedTour_;
 };

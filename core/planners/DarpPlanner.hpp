@@ -7,7 +7,7 @@ namespace mcpp {
 // DARP (Kapoutsis et al.) on the grid of 2 x Fd_min cells: regions divided by DARP so each robot's cover time
 // is about equal, then spanning-tree coverage per region, keeping for each robot the tree (east-west or
 // north-south spines) whose path turns least.
-class DarpPlanner final : public Planner {
+class DarpPlanner : public Planner {
   public:
     static constexpr const char* plannerName = "darp";
 

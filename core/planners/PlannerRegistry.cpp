@@ -2,6 +2,7 @@
 
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/DarpPlanner.hpp"
+#include "core/planners/DarpTurnsPlanner.hpp"
 #include "core/planners/FullSpiralStcPlanner.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/MstcPlanner.hpp"
@@ -25,6 +26,7 @@ const std::vector<Factory>& factories() {
         factory<SpiralStcPlanner>(),
         factory<FullSpiralStcPlanner>(),
         factory<DarpPlanner>(),
+        factory<DarpTurnsPlanner>(),
         factory<MstcPlanner>(),
     };
     return all;
