@@ -2,6 +2,8 @@
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
 
+#include <variant>
+
 namespace mcpp::io {
 
 using internal::JsonValue;
@@ -10,6 +12,9 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     const PlanMetrics& metrics = context.plan.metrics;
     JsonValue root = JsonValue::object();
     root.add("planner", context.plan.planner);
+    JsonValue& parameters = root.add("parameters", JsonValue::object());
+    for (const auto& [key, value] : context.plan.parameters.all())
+        std::visit([&, name = key](const auto& held) { parameters.add(name, held); }, value);
     JsonValue& robots = root.add("robots", JsonValue::array());
     for (const RobotMetrics& robot : metrics.robots) {
         JsonValue& item = robots.push(JsonValue::object());

@@ -6,6 +6,7 @@
 #include "core/model/PlanLayer.hpp"
 #include "core/model/PlanMetrics.hpp"
 #include "core/model/RegionAllocation.hpp"
+#include "core/parameters/ParameterValues.hpp"
 
 #include <memory>
 #include <string>
@@ -17,6 +18,7 @@ namespace mcpp {
 // the figures and what the user should know. Exporters, the renderer and the invariant checks read only this.
 struct Plan {
     std::string planner;
+    ParameterValues parameters; // every parameter the plan was made with, defaults filled in
     CellGraph cells;
     RegionAllocation regions;
     std::vector<CoveragePath> paths; // by robot

@@ -71,6 +71,7 @@ Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progr
     checkStarts(planner, problem, parameters.boolean("snap_starts_to_free_cells"));
     Plan plan;
     plan.planner = planner.name;
+    plan.parameters = parameters;
     PlanningRun planningRun(problem, std::move(parameters), progress, plan);
     run(planningRun);
     planningRun.stage("metrics", [&] {

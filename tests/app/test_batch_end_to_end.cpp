@@ -71,6 +71,8 @@ class TestBatchEndToEnd : public QObject {
     void rerunWithFewerRobotsRemovesTheirFiles();
     void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
+    void everyPlannerRunsFromTheCommandLine_data();
+    void everyPlannerRunsFromTheCommandLine();
     void badInputExitsTwoWithOneLine_data();
     void badInputExitsTwoWithOneLine();
 
@@ -358,6 +360,37 @@ void TestBatchEndToEnd::readmeSampleRuns() {
     checkOutputs(out, 5, run);
 }
 
+void TestBatchEndToEnd::everyPlannerRunsFromTheCommandLine_data() {
+    QTest::addColumn<QString>("planner");
+    for (const mcpp::PlannerDescription& planner : mcpp::plannerDescriptions())
+        QTest::newRow(planner.name.c_str()) << QString::fromStdString(planner.name);
+}
+
+// Every registered planner by name, with one of its own parameters set by --param: the report names the
+// planner and the parameter's value, and a one-robot planner gets one start.
+void TestBatchEndToEnd::everyPlannerRunsFromTheCommandLine() {
+    QFETCH(QString, planner);
+    const auto description = mcpp::makePlanner(planner.toStdString())->description();
+    const QString out = scratch_.filePath("planner-" + planner);
+    QStringList arguments = description.singleRobot
+                                ? syntheticFlags() + QStringList{"--start", "431040,5301040"}
+                                : QStringList{"--batch", samplePath("synthetic/mission.json")};
+    arguments << "--planner" << planner << "--param"
+              << "snap_starts_to_free_cells=true"
+              << "--out" << out;
+    const auto run = runMcpp(arguments);
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    const auto report = readJsonObject(out + "/report.json");
+    QCOMPARE(report.value("planner").toString(), planner);
+    const auto parameters = report.value("parameters").toObject();
+    QCOMPARE(parameters.value("snap_starts_to_free_cells"), QJsonValue(true));
+    QCOMPARE(parameters.size(), static_cast<qsizetype>(description.parameters.size()));
+    QVERIFY(report.value("issues").isArray());
+    const QString said = run.standardOutput + run.standardError;
+    QVERIFY2(said.contains("with " + planner + ":"), qPrintable(said));
+    QVERIFY(QFileInfo::exists(out + "/plan.geojson"));
+}
+
 void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
     QTest::addColumn<QStringList>("arguments");
     QTest::addColumn<QStringList>("mentions"); // every one must appear in the line
@@ -416,6 +449,22 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
     QTest::newRow("unknown planner") << QStringList{"--batch",         mission, "--planner",
                                                     "no-such-planner", "--out", out}
                                      << QStringList{"--planner", "no-such-planner", "mcpp-mlct"};
+    QTest::newRow("unknown parameter")
+        << QStringList{"--batch", mission, "--planner", "darp", "--param", "no_such_key=1", "--out", out}
+        << QStringList{"--param no_such_key", "no planner has a parameter"};
+    QTest::newRow("parameter of another planner")
+        << QStringList{"--batch", mission, "--planner", "mstc", "--param", "max_iterations=5", "--out", out}
+        << QStringList{"max_iterations", "mstc has no parameter", "balanced"};
+    QTest::newRow("parameter not a number")
+        << QStringList{"--batch", mission, "--planner", "darp", "--param", "max_iterations=abc", "--out", out}
+        << QStringList{"--param max_iterations", "whole number", "abc"};
+    QTest::newRow("parameter out of range")
+        << QStringList{"--batch", mission, "--planner", "darp", "--param", "convergence_tolerance=2",
+                       "--out",   out}
+        << QStringList{"convergence_tolerance", "0 to 0.5", "2"};
+    QTest::newRow("one-robot planner, three starts")
+        << QStringList{"--batch", mission, "--planner", "spiral-stc", "--out", out}
+        << QStringList{"spiral-stc plans for one robot", "3 starts", "darp", "mstc"};
     QTest::newRow("unknown start CRS")
         << (flags + QStringList{"--start", "1,2", "--start-crs", "EPSG:999999", "--out", out})
         << QStringList{"--start-crs"};
