@@ -54,9 +54,11 @@ PlanningProblem multiCover(int size, int robots, std::uint32_t seed) {
 }
 
 void runPlanner(benchmark::State& state, PlanningProblem problem,
-                const std::string& plannerName = "mcpp-mlct") {
+                const std::string& plannerName = "mcpp-mlct", const ParameterValues& overrides = {}) {
     const auto planner = makePlanner(plannerName);
     problem.planner = defaultPlannerChoice(plannerName);
+    for (const auto& [key, value] : overrides.all())
+        problem.planner.parameters.set(key, value);
     Plan plan;
     for (auto _ : state) {
         plan = planner->plan(problem, {});
@@ -79,6 +81,15 @@ void uniformGrid(benchmark::State& state, const std::string& planner) {
                planner);
 }
 
+// MSTC with balanced pieces (its `balanced` parameter).
+void uniformGridBalancedMstc(benchmark::State& state) {
+    ParameterValues balanced;
+    balanced.set("balanced", true);
+    runPlanner(state,
+               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+               "mstc", balanced);
+}
+
 void multiCoverMap(benchmark::State& state) {
     runPlanner(state, multiCover(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 7));
 }
@@ -90,6 +101,15 @@ BENCHMARK_CAPTURE(uniformGrid, mcpp_mlct, std::string("mcpp-mlct"))
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(uniformGrid, darp, std::string("darp"))
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(uniformGrid, darp_turns, std::string("darp-turns"))
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(uniformGrid, mstc, std::string("mstc"))
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridBalancedMstc)
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(uniformGrid, spiral_stc, std::string("spiral-stc"))

@@ -11,8 +11,8 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     layout->setContentsMargins(6, 6, 6, 6);
     landCover_ =
         addToggle(QStringLiteral("layerLandCover"), tr("Land cover"), tr("The raster in its class colours"));
-    quadTree_ = addToggle(QStringLiteral("layerQuadTree"), tr("Quadtree cells"),
-                          tr("Cell outlines, darker for larger cells"));
+    quadTree_ = addToggle(QStringLiteral("layerQuadTree"), tr("Cells"),
+                          tr("The planner's cells (quadtree or grid), darker for larger cells"));
     regions_ = addToggle(QStringLiteral("layerRegions"), tr("Regions"),
                          tr("Each robot's cells, tinted in its colour"));
     paths_ = addToggle(QStringLiteral("layerPaths"), tr("Paths"),

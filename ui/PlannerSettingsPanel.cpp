@@ -81,7 +81,11 @@ void PlannerSettingsPanel::rebuildForm(const PlannerDescription& description) {
     while (form_->rowCount() > 0)
         form_->removeRow(0);
     editors_.clear();
-    summary_->setText(QString::fromStdString(description.summary) +
+    // Summaries are one line for --help, without a full stop; here they read as a sentence.
+    QString summary = QString::fromStdString(description.summary);
+    if (!summary.isEmpty())
+        summary[0] = summary[0].toUpper();
+    summary_->setText(summary + QStringLiteral(".") +
                       (description.singleRobot ? tr(" One robot only.") : QString()));
     for (const ParameterSpec& spec : description.parameters) {
         QWidget* editor = makeEditor(spec);

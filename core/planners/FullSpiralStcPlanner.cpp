@@ -87,8 +87,7 @@ PlannerDescription FullSpiralStcPlanner::describe() const {
     PlannerDescription description;
     description.name = "full-spiral-stc";
     description.label = "Full Spiral-STC";
-    description.summary =
-        "one robot; Spiral-STC that keeps partly blocked mega-cells, covering more near obstacles";
+    description.summary = "Spiral-STC that keeps partly blocked mega-cells, covering more near obstacles";
     description.singleRobot = true;
     description.parameters = {DecompositionOptions::blockedThresholdParameter(),
                               SpanningTreeCoverage::closedTourParameter()};

@@ -22,12 +22,8 @@ template <typename PlannerType> Factory factory() {
 // One line per planner: adding a planner means its files, its tests and a line here.
 const std::vector<Factory>& factories() {
     static const std::vector<Factory> all{
-        factory<MlctPlanner>(),
-        factory<SpiralStcPlanner>(),
-        factory<FullSpiralStcPlanner>(),
-        factory<DarpPlanner>(),
-        factory<DarpTurnsPlanner>(),
-        factory<MstcPlanner>(),
+        factory<MlctPlanner>(), factory<SpiralStcPlanner>(), factory<FullSpiralStcPlanner>(),
+        factory<DarpPlanner>(), factory<DarpTurnsPlanner>(), factory<MstcPlanner>(),
     };
     return all;
 }

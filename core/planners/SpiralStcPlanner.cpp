@@ -14,8 +14,7 @@ PlannerDescription SpiralStcPlanner::describe() const {
     PlannerDescription description;
     description.name = "spiral-stc";
     description.label = "Spiral-STC";
-    description.summary =
-        "one robot; mega-cells touching an obstacle dropped, spiral spanning tree from the start";
+    description.summary = "mega-cells touching an obstacle dropped, spiral spanning tree from the start";
     description.singleRobot = true;
     description.parameters = {DecompositionOptions::blockedThresholdParameter(),
                               SpanningTreeCoverage::closedTourParameter()};
