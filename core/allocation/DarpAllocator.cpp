@@ -1,6 +1,7 @@
 #include "core/allocation/DarpAllocator.hpp"
 
 #include "core/allocation/BorderExchange.hpp"
+#include "core/allocation/StartComponents.hpp"
 #include "core/coverage/CellIndexScope.hpp"
 
 #include <algorithm>
@@ -15,36 +16,6 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// The cells of one connected part of the map and the robots that start in it.
-struct Component {
-    std::vector<int> cells;
-    std::vector<int> robots;
-};
-
-std::vector<Component> componentsWithRobots(const CellGraph& graph, const std::vector<int>& startCells) {
-    std::vector<int> componentOf(graph.size(), -1);
-    std::vector<Component> components;
-    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
-        const int start = startCells[robot];
-        if (componentOf[static_cast<std::size_t>(start)] < 0) {
-            Component component;
-            component.cells.push_back(start);
-            componentOf[static_cast<std::size_t>(start)] = static_cast<int>(components.size());
-            for (std::size_t head = 0; head < component.cells.size(); ++head)
-                for (int neighbour : graph.neighbours(component.cells[head]))
-                    if (componentOf[static_cast<std::size_t>(neighbour)] < 0) {
-                        componentOf[static_cast<std::size_t>(neighbour)] =
-                            static_cast<int>(components.size());
-                        component.cells.push_back(neighbour);
-                    }
-            components.push_back(std::move(component));
-        }
-        components[static_cast<std::size_t>(componentOf[static_cast<std::size_t>(start)])].robots.push_back(
-            static_cast<int>(robot));
-    }
-    return components;
-}
-
 // DARP on one component with two or more robots. Cells and robots are numbered locally. Evaluations are
 // kept in whole microseconds: with exact sums a tie between two robots is decided the same way all along a
 // shortest path (lowest robot index), which is what keeps every region in one piece.
@@ -54,7 +25,7 @@ class DarpSolver {
     static constexpr double ticksPerSecond = 1e6;
     static constexpr int stallRounds = 24; // rounds without a better connected division before settling
 
-    DarpSolver(const CellGraph& graph, const Component& component, const std::vector<int>& startCells,
+    DarpSolver(const CellGraph& graph, const StartComponent& component, const std::vector<int>& startCells,
                const DarpAllocator::Options& options, const ProgressReporter& progress,
                std::vector<int>& scratchIndex)
         : graph_(graph), cells_(component.cells), robots_(component.robots), options_(options),
@@ -544,7 +515,7 @@ RegionAllocation DarpAllocator::allocate(const CellGraph& graph, const std::vect
     regions.robotOfCell.assign(graph.size(), -1);
     regions.startCell = startCells;
     std::vector<int> scratchIndex(graph.size(), -1);
-    for (const Component& component : componentsWithRobots(graph, startCells)) {
+    for (const StartComponent& component : componentsWithStarts(graph, startCells)) {
         if (component.robots.size() == 1) {
             for (int cell : component.cells)
                 regions.robotOfCell[static_cast<std::size_t>(cell)] = component.robots.front();

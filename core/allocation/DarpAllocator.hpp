@@ -10,12 +10,14 @@
 namespace mcpp {
 
 // DARP, Divide Areas based on Robots' initial Positions (Kapoutsis et al., seed 004). Each robot has an
-// evaluation matrix E_r over the cells (here: travel time from its start through the cell graph, so land
-// cover counts); every cell goes to the robot with the smallest E_r. Each round multiplies E_r by a
-// correction factor that shrinks a region above its fair share and grows one below it, and, for a region
-// in pieces, by a connectivity term that pulls it towards the piece holding its start and away from the
-// others. Shares are cover times, not cell counts, so the regions balance time. It stops when every region
-// is connected and within the tolerance of its share, or at the iteration cap.
+// evaluation matrix E_r over the cells (here: travel time from its start, stepping eight ways through the
+// cell graph, so land cover counts); every cell goes to the robot with the smallest E_r. Each round
+// multiplies the E_r by correction factors that shrink regions above their fair share and grow those below
+// (chosen together, as one Newton step on DARP's dual), and, for a region in pieces, by a connectivity term
+// that pulls it towards the piece holding its start. Shares are cover times, not cell counts, so regions
+// balance time. It stops when every region is connected and within the tolerance of its share, at the
+// iteration cap, or when rounds stop improving; a border exchange (BorderExchange) then settles the cells
+// the factors cannot place.
 class DarpAllocator final : public RegionAllocator {
   public:
     struct Options {

@@ -1,5 +1,6 @@
 #include "core/decomposition/QuadTreeBuilder.hpp"
 
+#include "core/decomposition/LandCoverCounter.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
 #include "core/model/PlanningError.hpp"
 
@@ -218,49 +219,17 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
 
     // Land cover of each active cell: its majority passable class; speed: harmonic mean over passable
     // samples.
-    std::vector<std::uint32_t> classCounts(dense.size(), 0U);
-    std::vector<std::uint16_t> touched;
     double passableTotal = 0.0;
     for (const auto& cell : tree.cells)
         if (cell.state != CellState::Auxiliary)
             passableTotal += cell.passableAreaSquareMetres;
     tree.passableAreaSquareMetres = passableTotal;
+    LandCoverCounter landCover(samples, dense);
     for (int cellIndex : tree.activeCells) {
         QuadCell& cell = tree.cells[static_cast<std::size_t>(cellIndex)];
-        const auto [firstColumn, lastColumn] =
-            sampleRange(cell.minX, cell.maxX(), samples.originX, samples.sampleWidth, samples.columns);
-        const auto [firstRow, lastRow] =
-            sampleRange(samples.originY - cell.maxY(), samples.originY - cell.minY, 0.0, samples.sampleHeight,
-                        samples.rows);
-        touched.clear();
-        for (int row = firstRow; row < lastRow; ++row) {
-            const std::uint16_t* rowCodes =
-                samples.codes.data() +
-                static_cast<std::size_t>(row) * static_cast<std::size_t>(samples.columns);
-            for (int column = firstColumn; column < lastColumn; ++column) {
-                const std::uint16_t code = rowCodes[column];
-                if (code >= obstacleCode)
-                    continue;
-                if (classCounts[code]++ == 0)
-                    touched.push_back(code);
-            }
-        }
-        std::uint32_t best = 0;
-        std::uint32_t passable = 0;
-        double inverseSpeedSum = 0.0;
-        std::sort(touched.begin(), touched.end(),
-                  [&](std::uint16_t a, std::uint16_t b) { return dense[a].value < dense[b].value; });
-        for (auto code : touched) {
-            const std::uint32_t count = classCounts[code];
-            if (count > best) {
-                best = count;
-                cell.classValue = dense[code].value;
-            }
-            passable += count;
-            inverseSpeedSum += count / dense[code].speed;
-            classCounts[code] = 0;
-        }
-        cell.speedMetresPerSecond = passable == 0 ? 0.0 : passable / inverseSpeedSum;
+        const LandCoverCounter::Result found = landCover.of(cell.minX, cell.maxX(), cell.minY, cell.maxY());
+        cell.classValue = found.classValue;
+        cell.speedMetresPerSecond = found.speedMetresPerSecond;
     }
     progress.report("quadtree", 1.0);
     return tree;

@@ -2,6 +2,7 @@
 
 #include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/GridNeighbours.hpp"
+#include "core/decomposition/LandCoverCounter.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
 #include "core/model/PlanningError.hpp"
 
@@ -63,39 +64,6 @@ SubCellCounts countSubCells(const SampleGrid& samples, const GridShape& shape, d
     return counts;
 }
 
-// Land cover of a cell: its majority passable class; speed: the harmonic mean over its passable samples (as
-// the quadtree finds them). classCounts: one zero per class, left zero.
-void assignLandCover(Cell& cell, const SampleGrid& samples, const std::vector<PixelCodes::DenseClass>& dense,
-                     std::vector<std::uint32_t>& classCounts) {
-    const auto [firstColumn, lastColumn] =
-        sampleRange(cell.minX, cell.maxX(), samples.originX, samples.sampleWidth, samples.columns);
-    const auto [firstRow, lastRow] = sampleRange(samples.originY - cell.maxY(), samples.originY - cell.minY,
-                                                 0.0, samples.sampleHeight, samples.rows);
-    std::vector<std::uint16_t> touched;
-    for (int r = firstRow; r < lastRow; ++r)
-        for (int c = firstColumn; c < lastColumn; ++c) {
-            const std::uint16_t code = samples.row(r)[c];
-            if (code < PixelCodes::obstacle && classCounts[code]++ == 0)
-                touched.push_back(code);
-        }
-    std::sort(touched.begin(), touched.end(),
-              [&](std::uint16_t a, std::uint16_t b) { return dense[a].value < dense[b].value; });
-    std::uint32_t best = 0;
-    std::uint32_t passable = 0;
-    double inverseSpeedSum = 0.0;
-    for (auto code : touched) {
-        const std::uint32_t count = classCounts[code];
-        if (count > best) {
-            best = count;
-            cell.classValue = dense[code].value;
-        }
-        passable += count;
-        inverseSpeedSum += count / dense[code].speed;
-        classCounts[code] = 0;
-    }
-    cell.speedMetresPerSecond = passable == 0 ? 0.0 : passable / inverseSpeedSum;
-}
-
 } // namespace
 
 CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const ClassTable& classes,
@@ -138,7 +106,7 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
 
     GridFrame frame{grid.originX, grid.originY, shape.cellSize, shape.columns, shape.rows, 1};
     std::vector<Cell> cells;
-    std::vector<std::uint32_t> classCounts(dense.size(), 0U);
+    LandCoverCounter landCover(samples, dense);
     for (int row = 0; row < shape.rows; ++row) {
         for (int column = 0; column < shape.columns; ++column) {
             std::uint8_t free = 0;
@@ -188,7 +156,10 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
             cell.minY = frame.y(row) - shape.cellSize;
             cell.freeSubCells = free;
             cell.passableAreaSquareMetres = static_cast<double>(freePassable) * samples.sampleArea();
-            assignLandCover(cell, samples, dense, classCounts);
+            const LandCoverCounter::Result found =
+                landCover.of(cell.minX, cell.maxX(), cell.minY, cell.maxY());
+            cell.classValue = found.classValue;
+            cell.speedMetresPerSecond = found.speedMetresPerSecond;
             cells.push_back(cell);
         }
         if ((row & 63) == 0) {

@@ -2,7 +2,7 @@
 
 #include "core/allocation/DarpAllocator.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
-#include "core/decomposition/UniformGridDecomposition.hpp"
+#include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
 #include <sstream>
@@ -23,13 +23,9 @@ PlannerDescription DarpPlanner::describe() const {
 }
 
 void DarpPlanner::run(PlanningRun& run) const {
-    const PlanningProblem& problem = run.problem();
     const ParameterValues& parameters = run.parameters();
     Plan& plan = run.plan();
-    plan.cells = run.stage("grid", [&] {
-        const UniformGridDecomposition grid(DecompositionOptions::from(parameters), GridCellRule::WholeCell);
-        return grid.decompose(problem.grid, problem.classes, run.progress());
-    });
+    plan.cells = gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
     const DarpAllocator allocator(DarpAllocator::Options::from(parameters));
     plan.regions =

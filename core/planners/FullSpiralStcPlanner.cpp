@@ -8,7 +8,7 @@
 #include "core/coverage/SubCellLattice.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/decomposition/GridNeighbours.hpp"
-#include "core/decomposition/UniformGridDecomposition.hpp"
+#include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
 #include <bit>
@@ -95,14 +95,9 @@ PlannerDescription FullSpiralStcPlanner::describe() const {
 }
 
 void FullSpiralStcPlanner::run(PlanningRun& run) const {
-    const PlanningProblem& problem = run.problem();
     const ParameterValues& parameters = run.parameters();
     Plan& plan = run.plan();
-    plan.cells = run.stage("grid", [&] {
-        const UniformGridDecomposition grid(DecompositionOptions::from(parameters),
-                                            GridCellRule::AnySubCellFree);
-        return grid.decompose(problem.grid, problem.classes, run.progress());
-    });
+    plan.cells = gridStage(run, GridCellRule::AnySubCellFree);
     const int startCell = run.locateStarts().front();
     const MapPoint start = run.starts().front();
     plan.regions = run.stage("allocation", [&] {

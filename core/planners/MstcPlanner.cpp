@@ -1,10 +1,11 @@
 #include "core/planners/MstcPlanner.hpp"
 
+#include "core/allocation/StartComponents.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/TourSplitter.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
-#include "core/decomposition/UniformGridDecomposition.hpp"
+#include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
 #include <cmath>
@@ -13,36 +14,9 @@
 namespace mcpp {
 namespace {
 
-// The robots whose start cells lie in one connected part of the map, and that part's cells.
-struct MapPart {
-    std::vector<int> cells;
-    std::vector<int> robots;
-};
-
-std::vector<MapPart> partsWithRobots(const CellGraph& graph, const std::vector<int>& startCells) {
-    std::vector<int> partOf(graph.size(), -1);
-    std::vector<MapPart> parts;
-    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
-        const auto start = static_cast<std::size_t>(startCells[robot]);
-        if (partOf[start] < 0) {
-            MapPart part;
-            part.cells.push_back(startCells[robot]);
-            partOf[start] = static_cast<int>(parts.size());
-            for (std::size_t head = 0; head < part.cells.size(); ++head)
-                for (int neighbour : graph.neighbours(part.cells[head]))
-                    if (partOf[static_cast<std::size_t>(neighbour)] < 0) {
-                        partOf[static_cast<std::size_t>(neighbour)] = static_cast<int>(parts.size());
-                        part.cells.push_back(neighbour);
-                    }
-            parts.push_back(std::move(part));
-        }
-        parts[static_cast<std::size_t>(partOf[start])].robots.push_back(static_cast<int>(robot));
-    }
-    return parts;
-}
-
 // The tour of one part as a cycle (the closing return dropped), the one of the two trees that turns least.
-std::vector<Waypoint> partTour(const CellGraph& graph, const MapPart& part, int rootCell, MapPoint start) {
+std::vector<Waypoint> partTour(const CellGraph& graph, const StartComponent& part, int rootCell,
+                               MapPoint start) {
     std::vector<int> scratchIndex(graph.size(), -1);
     const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
@@ -107,22 +81,18 @@ PlannerDescription MstcPlanner::describe() const {
 }
 
 void MstcPlanner::run(PlanningRun& run) const {
-    const PlanningProblem& problem = run.problem();
     const ParameterValues& parameters = run.parameters();
     Plan& plan = run.plan();
-    plan.cells = run.stage("grid", [&] {
-        const UniformGridDecomposition grid(DecompositionOptions::from(parameters), GridCellRule::WholeCell);
-        return grid.decompose(problem.grid, problem.classes, run.progress());
-    });
+    plan.cells = gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
     const std::vector<MapPoint>& starts = run.starts();
     plan.regions.robotOfCell.assign(plan.cells.size(), -1);
     plan.regions.startCell = startCells;
     plan.paths.resize(starts.size());
-    const std::vector<MapPart> parts =
-        run.stage("allocation", [&] { return partsWithRobots(plan.cells, startCells); });
+    const std::vector<StartComponent> parts =
+        run.stage("allocation", [&] { return componentsWithStarts(plan.cells, startCells); });
     run.stage("paths", [&] {
-        for (const MapPart& part : parts) {
+        for (const StartComponent& part : parts) {
             run.progress().throwIfCancelled();
             const auto first = static_cast<std::size_t>(part.robots.front());
             const std::vector<Waypoint> tour = partTour(plan.cells, part, startCells[first], starts[first]);

@@ -5,7 +5,7 @@
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
-#include "core/decomposition/UniformGridDecomposition.hpp"
+#include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
 namespace mcpp {
@@ -22,14 +22,9 @@ PlannerDescription SpiralStcPlanner::describe() const {
 }
 
 void SpiralStcPlanner::run(PlanningRun& run) const {
-    const PlanningProblem& problem = run.problem();
     const ParameterValues& parameters = run.parameters();
     Plan& plan = run.plan();
-    plan.cells = run.stage("grid", [&] {
-        const UniformGridDecomposition grid(DecompositionOptions::from(parameters),
-                                            GridCellRule::AllSubCellsFree);
-        return grid.decompose(problem.grid, problem.classes, run.progress());
-    });
+    plan.cells = gridStage(run, GridCellRule::AllSubCellsFree);
     const int startCell =
         run.locateStarts("touches an obstacle or the edge of the area (Spiral-STC leaves such "
                          "mega-cells out; full-spiral-stc keeps them)")

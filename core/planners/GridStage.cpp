@@ -1,0 +1,12 @@
+#include "core/planners/GridStage.hpp"
+
+namespace mcpp {
+
+CellGraph gridStage(PlanningRun& run, GridCellRule rule) {
+    return run.stage("grid", [&] {
+        const UniformGridDecomposition grid(DecompositionOptions::from(run.parameters()), rule);
+        return grid.decompose(run.problem().grid, run.problem().classes, run.progress());
+    });
+}
+
+} // namespace mcpp
