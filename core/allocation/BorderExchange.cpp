@@ -53,7 +53,7 @@ double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds)
         const double gap =
             cost_[static_cast<std::size_t>(chain.front())] - cost_[static_cast<std::size_t>(chain.back())];
         const int cellsPerLink = std::clamp(static_cast<int>(gap / (8.0 * largestCell_)), 1, 64);
-        const Passage passage = passAlong(chain, cellsPerLink);
+        const Passage passage = passAlong(chain, cellsPerLink, gap / 2.0);
         moves += static_cast<std::size_t>(std::max(passage.moved, 1));
         reopen = passage.complete;
     }
@@ -138,8 +138,11 @@ std::vector<int> BorderExchange::reachedFrom(int from) const {
 }
 
 // Moves up to `cellsPerLink` cells across each link, from the far end back, so every region on the way gives
-// about what it gets. A link that has nothing to give is closed and the chain stops short of it.
-BorderExchange::Passage BorderExchange::passAlong(const std::vector<int>& chain, int cellsPerLink) {
+// about what it gets. A donor that can spare no single cell may give a cell together with the part of it
+// that cell holds on (at most `pieceSeconds` of cover time). A link that has nothing to give is closed and
+// the chain stops short of it.
+BorderExchange::Passage BorderExchange::passAlong(const std::vector<int>& chain, int cellsPerLink,
+                                                  double pieceSeconds) {
     int moved = 0;
     int wanted = cellsPerLink;
     for (std::size_t link = chain.size() - 1; link-- > 0;) {
@@ -151,6 +154,12 @@ BorderExchange::Passage BorderExchange::passAlong(const std::vector<int>& chain,
             if (cell < 0)
                 break;
             move(cell, receiver);
+        }
+        if (given == 0) {
+            const std::vector<int> piece = givablePiece(donor, receiver, pieceSeconds);
+            for (int cell : piece)
+                move(cell, receiver);
+            given = static_cast<int>(piece.size());
         }
         if (given == 0) {
             closed_[pair(donor, receiver)] = 1;
@@ -198,6 +207,56 @@ int BorderExchange::givableCell(int donor, int receiver) {
     for (const Candidate& entry : waiting)
         queue.push(entry);
     return found;
+}
+
+// A cell of `donor` next to `receiver` with the part of the donor that would hang on it alone (cut off
+// from the donor's start without it), whose cover time is at most `limitSeconds`; empty if there is none.
+// Tries the donor's first few border cells only: each try searches the whole donor.
+std::vector<int> BorderExchange::givablePiece(int donor, int receiver, double limitSeconds) {
+    constexpr std::size_t triesAtMost = 16;
+    CandidateQueue& queue = queues_[pair(donor, receiver)];
+    std::vector<Candidate> looked;
+    std::vector<int> piece;
+    while (!queue.empty() && looked.size() < triesAtMost && piece.empty()) {
+        const Candidate top = queue.top();
+        queue.pop();
+        if ((*owner_)[static_cast<std::size_t>(top.cell)] != donor || countIn(top.cell, receiver) == 0)
+            continue;
+        looked.push_back(top);
+        if (top.cell != start_[static_cast<std::size_t>(donor)])
+            piece = hangingOn(top.cell, donor, limitSeconds);
+    }
+    for (const Candidate& entry : looked)
+        queue.push(entry);
+    return piece;
+}
+
+// `cell` and the cells of `region` reached from its start only through it, if their cover time is at most
+// `limitSeconds`; otherwise empty.
+std::vector<int> BorderExchange::hangingOn(int cell, int region, double limitSeconds) {
+    ++stamp_;
+    const int start = start_[static_cast<std::size_t>(region)];
+    visitStamp_[static_cast<std::size_t>(cell)] = stamp_;
+    visitStamp_[static_cast<std::size_t>(start)] = stamp_;
+    std::vector<int> queue{start};
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const auto at = static_cast<std::size_t>(queue[head]);
+        for (int k = adjacencyStart_[at]; k < adjacencyStart_[at + 1]; ++k) {
+            const auto next = static_cast<std::size_t>(adjacency_[static_cast<std::size_t>(k)]);
+            if (visitStamp_[next] == stamp_ || (*owner_)[next] != region)
+                continue;
+            visitStamp_[next] = stamp_;
+            queue.push_back(static_cast<int>(next));
+        }
+    }
+    std::vector<int> piece{cell};
+    double seconds = weight_[static_cast<std::size_t>(cell)];
+    for (std::size_t c = 0; c < owner_->size() && seconds <= limitSeconds; ++c)
+        if ((*owner_)[c] == region && visitStamp_[c] != stamp_) {
+            piece.push_back(static_cast<int>(c));
+            seconds += weight_[c];
+        }
+    return seconds <= limitSeconds ? piece : std::vector<int>{};
 }
 
 // True when `region` stays in one piece without `cell`: its neighbours in the region still reach one another.

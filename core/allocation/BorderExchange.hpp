@@ -12,9 +12,10 @@ namespace mcpp {
 
 // Brings connected regions to equal cover time by passing single border cells from the region with the most
 // time to the one with the least, along a chain of neighbouring regions. A donor only gives a cell it can
-// spare without falling apart and never its start; the receiver touches the cell, so it stays in one piece.
-// Among the cells a donor could give, the one most surrounded by the receiver goes first, then the one the
-// caller prefers, which keeps borders smooth. Cells and regions are numbered locally, 0..n-1.
+// spare without falling apart and never its start; when it has none, it may give a cell together with the
+// part of it that hangs on that cell. The receiver touches what it gets, so it stays in one piece. Among
+// the cells a donor could give, the one most surrounded by the receiver goes first, then the one the caller
+// prefers, which keeps borders smooth. Cells and regions are numbered locally, 0..n-1.
 class BorderExchange {
   public:
     // Lower is more willing: how readily `receiver` takes `cell` from `donor`.
@@ -45,9 +46,11 @@ class BorderExchange {
     void offerNeighboursOf(int cell);
     [[nodiscard]] std::vector<int> nextChain() const;
     [[nodiscard]] std::vector<int> reachedFrom(int from) const;
-    Passage passAlong(const std::vector<int>& chain, int cellsPerLink);
+    Passage passAlong(const std::vector<int>& chain, int cellsPerLink, double pieceSeconds);
     void move(int cell, int receiver);
     [[nodiscard]] int givableCell(int donor, int receiver);
+    [[nodiscard]] std::vector<int> givablePiece(int donor, int receiver, double limitSeconds);
+    [[nodiscard]] std::vector<int> hangingOn(int cell, int region, double limitSeconds);
     [[nodiscard]] bool isRemovable(int cell, int region);
     [[nodiscard]] int countIn(int cell, int region) const;
     [[nodiscard]] double largestError() const;
