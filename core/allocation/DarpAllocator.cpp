@@ -3,7 +3,9 @@
 #include "core/allocation/BorderExchange.hpp"
 #include "core/allocation/StartComponents.hpp"
 #include "core/coverage/CellIndexScope.hpp"
+#include "core/coverage/PathMeasurement.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -46,6 +48,7 @@ class DarpSolver {
     }
 
     void solve(DarpAllocator::Outcome& outcome) {
+        std::vector<int> best; // the best division in one piece so far
         double bestError = infinity;
         double stepLength = 1.0;
         int iteration = 0;
@@ -61,7 +64,7 @@ class DarpSolver {
             const double error = largestError();
             if (connected && error < bestError) {
                 bestError = error;
-                best_ = owner_;
+                best = owner_;
                 sinceBest = 0;
             }
             if (connected && error <= toleranceSeconds_)
@@ -75,9 +78,8 @@ class DarpSolver {
                 stepLength = correct(stepLength);
         }
         outcome.iterations = std::max(outcome.iterations, iteration + 1);
-        if (best_.empty())
-            best_ = owner_;
-        owner_ = best_;
+        if (!best.empty())
+            owner_ = std::move(best);
         // Only a robot left with no cell at all can have lost its start: give it back, mend what that splits.
         for (std::size_t r = 0; r < robotCount_; ++r)
             owner_[static_cast<std::size_t>(start_[r])] = static_cast<int>(r);
@@ -126,8 +128,7 @@ class DarpSolver {
         const Cell& from = graph_.cell(fromCell);
         const Cell& to = graph_.cell(toCell);
         const double distance = std::hypot(to.centreX() - from.centreX(), to.centreY() - from.centreY());
-        const double seconds =
-            distance / 2.0 / from.speedMetresPerSecond + distance / 2.0 / to.speedMetresPerSecond;
+        const double seconds = travelSeconds(distance, from.speedMetresPerSecond, to.speedMetresPerSecond);
         const bool eastWest =
             std::abs(to.centreX() - from.centreX()) > std::abs(to.centreY() - from.centreY());
         const auto low = static_cast<std::uint64_t>(std::min(fromCell, toCell));
@@ -294,42 +295,21 @@ class DarpSolver {
         return travel_[c * robotCount_ + r] + offset_[r] + (pull_[r].empty() ? 0 : pull_[r][c]);
     }
 
-    // Solves L x = b by conjugate gradients, L the Laplacian of the symmetric coupling matrix and b summing
-    // to zero; x is defined up to a constant, which cancels in the evaluations.
+    // Solves L x = b, L the Laplacian of the symmetric coupling matrix and b summing to zero. x is defined up
+    // to a constant, which cancels in the evaluations: robot 0's is pinned, then the mean taken out.
     [[nodiscard]] std::vector<double> solveLaplacian(const std::vector<double>& coupling,
                                                      const std::vector<double>& b) const {
-        const std::size_t n = robotCount_;
-        const auto apply = [&](const std::vector<double>& x) {
-            std::vector<double> y(n, 0.0);
-            for (std::size_t r = 0; r < n; ++r)
-                for (std::size_t q = 0; q < n; ++q)
-                    y[r] += coupling[r * n + q] * (x[r] - x[q]);
-            return y;
-        };
-        const auto dot = [](const std::vector<double>& u, const std::vector<double>& v) {
-            return std::inner_product(u.begin(), u.end(), v.begin(), 0.0);
-        };
-        std::vector<double> x(n, 0.0);
-        std::vector<double> residual = b;
-        std::vector<double> direction = b;
-        double residualNorm = dot(residual, residual);
-        const double stopAt = 1e-12 * residualNorm;
-        for (std::size_t iteration = 0; iteration < 4 * n && residualNorm > stopAt; ++iteration) {
-            const std::vector<double> mapped = apply(direction);
-            const double curvature = dot(direction, mapped);
-            if (curvature <= 0.0)
-                break;
-            const double alpha = residualNorm / curvature;
-            for (std::size_t r = 0; r < n; ++r) {
-                x[r] += alpha * direction[r];
-                residual[r] -= alpha * mapped[r];
-            }
-            const double nextNorm = dot(residual, residual);
-            for (std::size_t r = 0; r < n; ++r)
-                direction[r] = residual[r] + nextNorm / residualNorm * direction[r];
-            residualNorm = nextNorm;
-        }
-        return x;
+        const auto n = static_cast<Eigen::Index>(robotCount_);
+        const Eigen::Map<const Eigen::MatrixXd> weights(coupling.data(), n, n);
+        Eigen::MatrixXd laplacian = -weights;
+        laplacian.diagonal() = weights.rowwise().sum();
+        const Eigen::VectorXd rest = laplacian.bottomRightCorner(n - 1, n - 1)
+                                         .ldlt()
+                                         .solve(Eigen::Map<const Eigen::VectorXd>(b.data() + 1, n - 1));
+        Eigen::VectorXd x(n);
+        x << 0.0, rest;
+        x.array() -= x.mean();
+        return {x.data(), x.data() + n};
     }
 
     // The cells of robot r reached from its start without leaving its region (marks in `reached`).
@@ -469,7 +449,6 @@ class DarpSolver {
     std::vector<int> pullRounds_;              // rounds each region has been in pieces
     std::vector<int> owner_;
     double dual_ = 0.0; // DARP's dual at the current offsets, see lineSearch
-    std::vector<int> best_;
     std::vector<double> cost_;
 };
 

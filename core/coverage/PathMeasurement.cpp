@@ -77,7 +77,7 @@ void measurePath(CoveragePath& path, const CellGraph& graph) {
         const double dy = to.y - from.y;
         const double segment = std::sqrt(dx * dx + dy * dy);
         length += segment;
-        time += segment / 2.0 / from.speedMetresPerSecond + segment / 2.0 / to.speedMetresPerSecond;
+        time += travelSeconds(segment, from.speedMetresPerSecond, to.speedMetresPerSecond);
         to.cumulativeSeconds = time;
     }
     path.lengthMetres = length;

@@ -7,6 +7,11 @@
 
 namespace mcpp {
 
+// The time to travel `lengthMetres` from a point at one speed to a point at another: half the way at each.
+[[nodiscard]] inline double travelSeconds(double lengthMetres, double fromSpeed, double toSpeed) {
+    return lengthMetres / 2.0 / fromSpeed + lengthMetres / 2.0 / toSpeed;
+}
+
 // Direction changes along a polyline; steps of zero length are skipped and a U-turn counts once.
 [[nodiscard]] int countTurns(const std::vector<Waypoint>& waypoints);
 

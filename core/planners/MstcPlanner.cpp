@@ -42,7 +42,7 @@ std::vector<double> stepSeconds(const std::vector<Waypoint>& tour) {
         const Waypoint& a = tour[i];
         const Waypoint& b = tour[(i + 1) % tour.size()];
         const double length = std::hypot(b.x - a.x, b.y - a.y);
-        seconds[i] = length / 2.0 / a.speedMetresPerSecond + length / 2.0 / b.speedMetresPerSecond;
+        seconds[i] = travelSeconds(length, a.speedMetresPerSecond, b.speedMetresPerSecond);
     }
     return seconds;
 }
