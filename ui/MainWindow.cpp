@@ -259,7 +259,7 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::RightDockWidgetArea, resultsDock);
     addDockWidget(Qt::BottomDockWidgetArea, classesDock);
     resizeDocks({layersDock, robotsDock, settingsDock}, {150, 220, 200}, Qt::Vertical);
-    resizeDocks({layersDock, resultsDock}, {360, 380}, Qt::Horizontal);
+    resizeDocks({layersDock, resultsDock}, {360, 420}, Qt::Horizontal);
     resizeDocks({classesDock}, {190}, Qt::Vertical);
 }
 

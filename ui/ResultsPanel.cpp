@@ -78,8 +78,10 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     table_->setHorizontalHeaderLabels(
         {tr("Robot"), tr("Cells"), tr("Area"), tr("Length"), tr("Time"), tr("Turns")});
     table_->verticalHeader()->hide();
+    // Figures keep their width; the robot's name takes what is left (elided), so every column shows.
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    table_->setTextElideMode(Qt::ElideRight);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setMinimumHeight(110);
 
