@@ -124,6 +124,10 @@ void BatchRunner::applyOverrides() {
         mission_.planner = switchPlanner(mission_.planner, *options_.planner);
     if (options_.missingAsObstacle)
         mission_.missingClassesAsObstacles = true;
+    if (options_.densePaths)
+        mission_.exports.densePaths = true;
+    if (options_.cellPolygons)
+        mission_.exports.cellPolygons = true;
     const auto planner = findPlannerDescription(mission_.planner.planner);
     if (!planner)
         badInput(fieldName(io::MissionField::of(Part::Planner)) + ": " +

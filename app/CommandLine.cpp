@@ -37,6 +37,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--band", "N", true, false},           FlagSpec{"--param", "KEY=VALUE", true, true},
     FlagSpec{"--purity", "F", true, false},         FlagSpec{"--missing-as-obstacle", "", true, false},
     FlagSpec{"--open-paths", "", true, false},      FlagSpec{"--quiet", "", true, false},
+    FlagSpec{"--dense-paths", "", true, false},     FlagSpec{"--cell-polygons", "", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -270,6 +271,10 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             options.parameters.push_back({"closed_tour", "false", "--open-paths"});
         } else if (flag == "--quiet") {
             options.quiet = true;
+        } else if (flag == "--dense-paths") {
+            options.densePaths = true;
+        } else if (flag == "--cell-polygons") {
+            options.cellPolygons = true;
         }
     }
 
@@ -346,17 +351,24 @@ std::string CommandLine::usage() {
            "                           failing\n"
            "  --open-paths             same as --param closed_tour=false: paths stop at their last cell\n"
            "                           instead of returning to the start\n"
+           "  --dense-paths            paths in plan.geojson and plan.gpkg through every sub-cell centre\n"
+           "                           instead of only their turning points\n"
+           "  --cell-polygons          add a polygon per cell to plan.gpkg (layer cells; big on large maps)\n"
            "  -q, --quiet              no progress lines, warnings or summary; errors are still printed\n"
            "\n"
            "Mission files (format: docs/mission-format.md) may be combined with --band, --planner,\n"
-           "--param, --purity, --missing-as-obstacle and --open-paths, which override the mission's values.\n"
+           "--param, --purity, --missing-as-obstacle, --open-paths, --dense-paths and --cell-polygons, "
+           "which\n"
+           "override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"
            "  --help-planner NAME      a planner's parameters, their defaults, ranges and meaning\n"
            "  -v, --version            the version\n"
            "\n"
-           "Outputs in DIR: plan.geojson, report.json, report.csv, plan.gpkg, plan.png and per robot i\n"
+           "Outputs in DIR: plan.geojson, report.json, report.csv, plan.gpkg, regions.tif (the robot of "
+           "each\n"
+           "sub-cell as a GeoTIFF), plan.png and per robot i\n"
            "(numbered from 0, as in the \"robot\" fields of plan.geojson and report.json) robot_<i>.plan\n"
            "(QGroundControl), robot_<i>.waypoints (QGC WPL 110) and robot_<i>.csv.\n"
            "\n"

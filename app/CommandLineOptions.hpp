@@ -41,6 +41,8 @@ struct CommandLineOptions {
     std::vector<ParameterOverride> parameters; // --param, --purity, --open-paths, in the order given
     bool missingAsObstacle = false;
     bool quiet = false;
+    bool densePaths = false;   // --dense-paths
+    bool cellPolygons = false; // --cell-polygons
 
     [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }
 };

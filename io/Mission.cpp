@@ -311,12 +311,16 @@ bool readExports(MissionReader& reader, const QJsonValue& value, ExportSettings&
     QJsonObject object;
     if (!reader.object(value, path, object))
         return false;
-    if (!reader.onlyKeys(object, path, {"altitude_m", "cruise_speed_mps", "merge_collinear"}))
+    if (!reader.onlyKeys(
+            object, path,
+            {"altitude_m", "cruise_speed_mps", "merge_collinear", "dense_paths", "cell_polygons"}))
         return false;
     if (!reader.optional(object, path, "altitude_m", exports.altitudeMetres, &MissionReader::number) ||
         !reader.optional(object, path, "cruise_speed_mps", exports.cruiseSpeedMetresPerSecond,
                          &MissionReader::number) ||
-        !reader.optional(object, path, "merge_collinear", exports.mergeCollinear, &MissionReader::boolean)) {
+        !reader.optional(object, path, "merge_collinear", exports.mergeCollinear, &MissionReader::boolean) ||
+        !reader.optional(object, path, "dense_paths", exports.densePaths, &MissionReader::boolean) ||
+        !reader.optional(object, path, "cell_polygons", exports.cellPolygons, &MissionReader::boolean)) {
         return false;
     }
     if (exports.cruiseSpeedMetresPerSecond < 0.0)
@@ -505,6 +509,8 @@ std::string missionToJson(const Mission& mission) {
     exports.add("altitude_m", mission.exports.altitudeMetres);
     exports.add("cruise_speed_mps", mission.exports.cruiseSpeedMetresPerSecond);
     exports.add("merge_collinear", mission.exports.mergeCollinear);
+    exports.add("dense_paths", mission.exports.densePaths);
+    exports.add("cell_polygons", mission.exports.cellPolygons);
     return root.toText();
 }
 

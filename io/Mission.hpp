@@ -24,6 +24,8 @@ struct ExportSettings {
     double altitudeMetres = 30.0;            // waypoint altitude above home
     double cruiseSpeedMetresPerSecond = 0.0; // 0: use the land-cover speed
     bool mergeCollinear = true;
+    bool densePaths = false;   // vector paths through every sub-cell centre instead of their turning points
+    bool cellPolygons = false; // a polygon per cell in the GeoPackage (big on large maps)
 
     friend bool operator==(const ExportSettings&, const ExportSettings&) = default;
 };

@@ -31,15 +31,24 @@ struct ExportContext {
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.
 [[nodiscard]] Status writePlanGeoJson(const ExportContext& context, const std::string& path);
-// GeoPackage in the raster's CRS: layers regions, paths, starts, cells, unreachable.
+// GeoPackage in the raster's CRS: layers regions, paths, starts, unreachable, and cells when
+// settings.cellPolygons asks for a polygon per cell.
 [[nodiscard]] Status writePlanGeoPackage(const ExportContext& context, const std::string& path);
 [[nodiscard]] Status writePlanKml(const ExportContext& context, const std::string& path);
 [[nodiscard]] Status writePlanGpx(const ExportContext& context, const std::string& path);
+// regions.tif: the robot covering each sub-cell of the planning grid, as a tiled, compressed GeoTIFF in the
+// raster's CRS with a colour table in the robots' colours. Value = robot index from 0; 254 for passable land
+// no robot reaches; nodata 255 elsewhere (UInt16 with 65534 and 65535 from 254 robots on).
+[[nodiscard]] Status writeRegionRaster(const ExportContext& context, const std::string& path);
 
 // The waypoints a robot's waypoint files get: all of them, or, with mergeCollinear, without the points that
 // lie on the straight segment between their neighbours at the same speed and class (time and shape
 // unchanged).
 [[nodiscard]] std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeCollinear);
+
+// The shape of a path as lines in GeoJSON, GeoPackage, KML and GPX: its ends and the points where it changes
+// direction; a point on the straight segment between its neighbours is left out, whatever its land cover.
+[[nodiscard]] std::vector<Waypoint> turningPoints(const CoveragePath& path);
 
 // Per robot waypoint files.
 [[nodiscard]] Status writeQGroundControlPlan(const ExportContext& context, int robot,

@@ -1,61 +1,35 @@
 #include "io/PlanExport.hpp"
+#include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/PlanGeometry.hpp"
 
-#include <filesystem>
 #include <ogrsf_frmts.h>
-#include <unistd.h>
 
 namespace mcpp::io {
 
 namespace {
 
-namespace fs = std::filesystem;
 using internal::DatasetPointer;
 using internal::PlanFeatures;
 using internal::QuietGdalErrors;
 
-// A file written by an OGR driver, created under a temporary name beside the target and renamed into place
-// when complete, so a failed export never leaves half a file under the real name.
+// An OGR file written under a temporary name and moved into place when complete (internal::DatasetFile).
 class VectorFileWriter {
   public:
     VectorFileWriter(std::string path, const char* driverName)
-        : path_(std::move(path)), driverName_(driverName) {
-        const fs::path target(path_);
-        temporary_ = (target.parent_path() / ("." + target.stem().string() + ".partial-" +
-                                              std::to_string(getpid()) + target.extension().string()))
-                         .string();
-    }
-    ~VectorFileWriter() {
-        dataset_.reset();
-        std::error_code ignored;
-        if (!committed_)
-            fs::remove(temporary_, ignored);
-    }
-    VectorFileWriter(const VectorFileWriter&) = delete;
-    VectorFileWriter& operator=(const VectorFileWriter&) = delete;
+        : file_(std::move(path)), driverName_(driverName) {}
 
     Status open(const char* const* creationOptions = nullptr) {
-        internal::ensureGdalRegistered();
-        GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driverName_);
-        if (driver == nullptr)
-            return Status::failure(path_ + ": GDAL has no " + driverName_ + " driver");
-        std::error_code ignored;
-        fs::remove(temporary_, ignored);
-        dataset_.reset(
-            driver->Create(temporary_.c_str(), 0, 0, 0, GDT_Unknown, const_cast<char**>(creationOptions)));
-        if (!dataset_)
-            return Status::failure(path_ + ": cannot create" + QuietGdalErrors::detail());
-        return {};
+        return file_.create(driverName_, 0, 0, 0, GDT_Unknown, creationOptions);
     }
 
     Result<OGRLayer*> layer(const char* name, const OGRSpatialReference* crs, OGRwkbGeometryType type,
                             const char* const* options = nullptr) {
         // GDAL 3.6 takes a non-const CRS pointer but only reads it.
-        OGRLayer* created = dataset_->CreateLayer(name, const_cast<OGRSpatialReference*>(crs), type,
-                                                  const_cast<char**>(options));
+        OGRLayer* created = file_.dataset().CreateLayer(name, const_cast<OGRSpatialReference*>(crs), type,
+                                                        const_cast<char**>(options));
         if (created == nullptr)
-            return Result<OGRLayer*>::failure(path_ + ": cannot create layer " + name +
+            return Result<OGRLayer*>::failure(file_.path() + ": cannot create layer " + name +
                                               QuietGdalErrors::detail());
         return created;
     }
@@ -63,40 +37,25 @@ class VectorFileWriter {
     Status field(OGRLayer* layer, const char* name, OGRFieldType type) {
         OGRFieldDefn definition(name, type);
         if (layer->CreateField(&definition) != OGRERR_NONE) {
-            return Status::failure(path_ + ": cannot add field " + name + QuietGdalErrors::detail());
+            return Status::failure(file_.path() + ": cannot add field " + name + QuietGdalErrors::detail());
         }
         return {};
     }
 
     Status add(OGRLayer* layer, OGRFeature& feature) {
         if (layer->CreateFeature(&feature) != OGRERR_NONE) {
-            return Status::failure(path_ + ": cannot write a feature to " + layer->GetName() +
+            return Status::failure(file_.path() + ": cannot write a feature to " + layer->GetName() +
                                    QuietGdalErrors::detail());
         }
         return {};
     }
 
-    GDALDataset& dataset() { return *dataset_; }
-
-    Status commit() {
-        CPLErrorReset();
-        dataset_.reset(); // flushes and closes
-        if (CPLGetLastErrorType() == CE_Failure)
-            return Status::failure(path_ + ": write failed" + QuietGdalErrors::detail());
-        std::error_code error;
-        fs::rename(temporary_, path_, error);
-        if (error)
-            return Status::failure(path_ + ": cannot move the finished file into place: " + error.message());
-        committed_ = true;
-        return {};
-    }
+    GDALDataset& dataset() { return file_.dataset(); }
+    Status commit() { return file_.commit(); }
 
   private:
-    std::string path_;
+    internal::DatasetFile file_;
     const char* driverName_;
-    std::string temporary_;
-    DatasetPointer dataset_;
-    bool committed_ = false;
 };
 
 struct Fields {
@@ -157,7 +116,8 @@ Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transfo
 }
 
 Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::string& path) {
-    auto features = internal::buildPlanFeatures(context.plan, context.georeference.metresPerUnit());
+    auto features = internal::buildPlanFeatures(context.plan, context.georeference.metresPerUnit(),
+                                                context.settings.densePaths);
     if (!features)
         return Result<PlanFeatures>::failure(path + ": " + features.error());
     auto transformation = toWgs84(context.georeference, path);
@@ -167,10 +127,6 @@ Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::st
         return Result<PlanFeatures>::failure(status.error());
     }
     return features;
-}
-
-std::unique_ptr<OGRGeometry> asMultiPolygon(const OGRGeometry& geometry) {
-    return std::unique_ptr<OGRGeometry>(OGRGeometryFactory::forceToMultiPolygon(geometry.clone()));
 }
 
 // The layers GeoPackage and KML share. KML readers show a feature's "name", so `named` adds one.
@@ -192,7 +148,7 @@ Status writeRegionLayer(VectorFileWriter& writer, std::vector<internal::RegionFe
         feature.SetField("cost_s", region.costSeconds);
         feature.SetField("area_m2", region.areaSquareMetres);
         feature.SetField("cells", region.cells);
-        feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
+        feature.SetGeometryDirectly(region.geometry.release());
         if (Status status = writer.add(layer.value(), feature); !status)
             return status;
     }
@@ -268,6 +224,44 @@ Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::Unr
     return {};
 }
 
+// A polygon per cell with its land cover and robot: asked for explicitly, as it is big on large maps.
+Status writeCellLayer(VectorFileWriter& writer, const ExportContext& context,
+                      const OGRSpatialReference* crs) {
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    auto cells = writer.layer("cells", crs, wkbPolygon);
+    if (!cells)
+        return Status::failure(cells.error());
+    if (Status status = createFields(writer, cells.value(),
+                                     {{{"cell", OFTInteger},
+                                       {"level", OFTInteger},
+                                       {"class", OFTInteger},
+                                       {"fov", OFTReal},
+                                       {"speed", OFTReal},
+                                       {"free_sub_cells", OFTInteger},
+                                       {"robot", OFTInteger}}});
+        !status) {
+        return status;
+    }
+    const CellGraph& graph = context.plan.cells;
+    const auto& owner = context.plan.regions.robotOfCell;
+    for (std::size_t index = 0; index < graph.size(); ++index) {
+        const Cell& cell = graph.cell(static_cast<int>(index));
+        OGRFeature feature(cells.value()->GetLayerDefn());
+        feature.SetField("cell", static_cast<int>(index));
+        feature.SetField("level", cell.level);
+        feature.SetField("class", static_cast<int>(cell.classValue));
+        feature.SetField("fov", cell.fieldOfView());
+        feature.SetField("speed", cell.speedMetresPerSecond);
+        feature.SetField("free_sub_cells", cell.freeSubCellCount());
+        feature.SetField("robot", index < owner.size() ? owner[index] : -1);
+        feature.SetGeometryDirectly(internal::cellSquare(graph, cell, metresPerUnit).release());
+        if (Status status = writer.add(cells.value(), feature); !status)
+            return status;
+    }
+
+    return {};
+}
+
 } // namespace
 
 Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
@@ -303,7 +297,7 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
         feature.SetField("cost_s", region.costSeconds);
         feature.SetField("area_m2", region.areaSquareMetres);
         feature.SetField("cells", region.cells);
-        feature.SetGeometryDirectly(asMultiPolygon(*region.geometry).release());
+        feature.SetGeometryDirectly(region.geometry.release());
         if (Status status = writer.add(plan, feature); !status)
             return status;
     }
@@ -340,7 +334,7 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
 Status writePlanGeoPackage(const ExportContext& context, const std::string& path) {
     QuietGdalErrors quiet;
     const double metresPerUnit = context.georeference.metresPerUnit();
-    auto features = internal::buildPlanFeatures(context.plan, metresPerUnit);
+    auto features = internal::buildPlanFeatures(context.plan, metresPerUnit, context.settings.densePaths);
     if (!features)
         return Status::failure(path + ": " + features.error());
     std::unique_ptr<OGRSpatialReference> crs;
@@ -360,37 +354,10 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
     if (Status status = writeStartLayer(writer, planFeatures.starts, crs.get(), false); !status)
         return status;
 
-    auto cells = writer.layer("cells", crs.get(), wkbPolygon);
-    if (!cells)
-        return Status::failure(cells.error());
-    if (Status status = createFields(writer, cells.value(),
-                                     {{{"cell", OFTInteger},
-                                       {"level", OFTInteger},
-                                       {"class", OFTInteger},
-                                       {"fov", OFTReal},
-                                       {"speed", OFTReal},
-                                       {"free_sub_cells", OFTInteger},
-                                       {"robot", OFTInteger}}});
-        !status) {
-        return status;
-    }
-    const CellGraph& graph = context.plan.cells;
-    const auto& owner = context.plan.regions.robotOfCell;
-    for (std::size_t index = 0; index < graph.size(); ++index) {
-        const Cell& cell = graph.cell(static_cast<int>(index));
-        OGRFeature feature(cells.value()->GetLayerDefn());
-        feature.SetField("cell", static_cast<int>(index));
-        feature.SetField("level", cell.level);
-        feature.SetField("class", static_cast<int>(cell.classValue));
-        feature.SetField("fov", cell.fieldOfView());
-        feature.SetField("speed", cell.speedMetresPerSecond);
-        feature.SetField("free_sub_cells", cell.freeSubCellCount());
-        feature.SetField("robot", index < owner.size() ? owner[index] : -1);
-        feature.SetGeometryDirectly(internal::cellSquare(graph, cell, metresPerUnit).release());
-        if (Status status = writer.add(cells.value(), feature); !status)
+    if (context.settings.cellPolygons) {
+        if (Status status = writeCellLayer(writer, context, crs.get()); !status)
             return status;
     }
-
     if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, crs.get(), false); !status)
         return status;
     if (writer.dataset().CommitTransaction() != OGRERR_NONE) {

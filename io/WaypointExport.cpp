@@ -103,6 +103,18 @@ std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeColl
     return kept;
 }
 
+std::vector<Waypoint> turningPoints(const CoveragePath& path) {
+    if (path.waypoints.size() < 3)
+        return path.waypoints;
+    std::vector<Waypoint> kept{path.waypoints.front()};
+    for (std::size_t i = 1; i + 1 < path.waypoints.size(); ++i) {
+        if (!collinearAndBetween(kept.back(), path.waypoints[i], path.waypoints[i + 1]))
+            kept.push_back(path.waypoints[i]);
+    }
+    kept.push_back(path.waypoints.back());
+    return kept;
+}
+
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {
     auto points = geoWaypoints(context, robot, path, true);
     if (!points)

@@ -4,8 +4,7 @@
 
 namespace mcpp::render {
 
-// A qualitative palette of saturated colours that stay apart from each other and from land-cover tints.
-// Robot i always gets the same colour so the map, the tables and the chart agree.
+// Robot colours as Qt colours (core/model/RobotColours.hpp holds them, so regions.tif agrees).
 class RobotPalette {
   public:
     [[nodiscard]] static QColor colour(int robot);

@@ -1,9 +1,10 @@
 #include "io/internal/PlanGeometry.hpp"
 
-#include "io/internal/GdalSupport.hpp"
+#include "core/outlines/OutlineTracer.hpp"
+#include "core/outlines/RegionLabels.hpp"
+#include "io/PlanExport.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 namespace mcpp::io::internal {
 
@@ -22,50 +23,90 @@ std::unique_ptr<OGRPolygon> square(double minX, double minY, double maxX, double
     return polygon;
 }
 
-// The part of a cell a robot covers: the whole square, or the squares of its free sub-cells.
-void addCoveredPart(const CellGraph& graph, const Cell& cell, double metresPerUnit, OGRMultiPolygon& parts) {
-    if (cell.freeSubCells == allSubCells) {
-        parts.addGeometryDirectly(cellSquare(graph, cell, metresPerUnit).release());
-        return;
+OGRLinearRing* linearRing(const OutlineRing& outline, const LabelGrid& grid, double metresPerUnit) {
+    auto* ring = new OGRLinearRing;
+    const int count = static_cast<int>(outline.size());
+    ring->setNumPoints(count + 1, FALSE);
+    for (int i = 0; i <= count; ++i) {
+        const GridVertex& vertex = outline[static_cast<std::size_t>(i % count)];
+        ring->setPoint(i, grid.x(vertex.column) / metresPerUnit, grid.y(vertex.row) / metresPerUnit);
     }
-    const GridFrame& frame = graph.frame();
-    const double half = cell.span * frame.bottomCellSize / 2.0;
-    const double west = frame.x(cell.column);
-    const double north = frame.y(cell.row);
-    for (SubCell subCell : subCellsCounterClockwise) {
-        if (!cell.isFree(subCell))
-            continue;
-        const bool east = subCell == SubCell::NorthEast || subCell == SubCell::SouthEast;
-        const bool south = subCell == SubCell::SouthWest || subCell == SubCell::SouthEast;
-        const double minX = west + (east ? half : 0.0);
-        const double maxY = north - (south ? half : 0.0);
-        parts.addGeometryDirectly(square(minX / metresPerUnit, (maxY - half) / metresPerUnit,
-                                         (minX + half) / metresPerUnit, maxY / metresPerUnit)
-                                      .release());
-    }
+    return ring;
 }
 
-// Union of the covered parts of the given cells: valid polygons, shared edges dissolved.
-Result<std::unique_ptr<OGRGeometry>> dissolve(const CellGraph& graph, const std::vector<int>& cellIds,
-                                              double metresPerUnit) {
-    using Dissolved = Result<std::unique_ptr<OGRGeometry>>;
-    if (cellIds.empty())
-        return std::unique_ptr<OGRGeometry>(std::make_unique<OGRMultiPolygon>());
-    OGRMultiPolygon squares;
-    for (const int id : cellIds)
-        addCoveredPart(graph, graph.cell(id), metresPerUnit, squares);
-    QuietGdalErrors quiet;
-    std::unique_ptr<OGRGeometry> merged(squares.UnionCascaded());
-    if (!merged)
-        return Dissolved::failure("could not dissolve " + std::to_string(cellIds.size()) + " cells" +
-                                  quiet.detail());
-    if (!merged->IsValid()) {
-        std::unique_ptr<OGRGeometry> repaired(merged->MakeValid());
-        if (!repaired || !repaired->IsValid())
-            return Dissolved::failure("dissolved cells do not form a valid polygon" + quiet.detail());
-        merged = std::move(repaired);
+std::unique_ptr<OGRPolygon> polygonOf(const OutlinePolygon& outline, const LabelGrid& grid,
+                                      double metresPerUnit) {
+    auto polygon = std::make_unique<OGRPolygon>();
+    polygon->addRingDirectly(linearRing(outline.exterior, grid, metresPerUnit));
+    for (const OutlineRing& hole : outline.holes)
+        polygon->addRingDirectly(linearRing(hole, grid, metresPerUnit));
+    return polygon;
+}
+
+PathFeature pathFeature(const CoveragePath& path, double metresPerUnit, bool densePaths) {
+    PathFeature feature;
+    feature.robot = path.robot;
+    feature.geometry = std::make_unique<OGRLineString>();
+    const std::vector<Waypoint> points = densePaths ? path.waypoints : turningPoints(path);
+    feature.geometry->setNumPoints(static_cast<int>(points.size()), FALSE);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        feature.geometry->setPoint(static_cast<int>(i), points[i].x / metresPerUnit,
+                                   points[i].y / metresPerUnit);
     }
-    return merged;
+    feature.lengthMetres = path.lengthMetres;
+    feature.timeSeconds = path.timeSeconds;
+    feature.turns = path.turns;
+    return feature;
+}
+
+void addStarts(const Plan& plan, double metresPerUnit, PlanFeatures& features) {
+    for (const CoveragePath& path : plan.paths) {
+        if (path.waypoints.empty())
+            continue;
+        features.starts.push_back(
+            StartFeature{path.robot, std::make_unique<OGRPoint>(path.waypoints.front().x / metresPerUnit,
+                                                                path.waypoints.front().y / metresPerUnit)});
+    }
+    // Robots without a path still get their start: the centre of their start cell.
+    const CellGraph& graph = plan.cells;
+    for (std::size_t robot = 0; robot < plan.regions.startCell.size(); ++robot) {
+        const bool hasStart =
+            std::any_of(features.starts.begin(), features.starts.end(),
+                        [&](const StartFeature& start) { return start.robot == static_cast<int>(robot); });
+        const int cell = plan.regions.startCell[robot];
+        if (hasStart || cell < 0 || static_cast<std::size_t>(cell) >= graph.size())
+            continue;
+        features.starts.push_back(StartFeature{
+            static_cast<int>(robot), std::make_unique<OGRPoint>(graph.cell(cell).centreX() / metresPerUnit,
+                                                                graph.cell(cell).centreY() / metresPerUnit)});
+    }
+    std::sort(features.starts.begin(), features.starts.end(),
+              [](const StartFeature& a, const StartFeature& b) { return a.robot < b.robot; });
+}
+
+// One feature per robot with its figures; geometry filled from the outlines afterwards.
+std::vector<RegionFeature> emptyRegions(const Plan& plan) {
+    const int robots = robotCount(plan);
+    std::vector<RegionFeature> regions(static_cast<std::size_t>(robots));
+    for (int robot = 0; robot < robots; ++robot) {
+        const auto r = static_cast<std::size_t>(robot);
+        regions[r].robot = robot;
+        regions[r].geometry = std::make_unique<OGRMultiPolygon>();
+        if (r < plan.regions.costSeconds.size())
+            regions[r].costSeconds = plan.regions.costSeconds[r];
+        else if (r < plan.metrics.robots.size())
+            regions[r].costSeconds = plan.metrics.robots[r].costSeconds;
+    }
+    const auto& owner = plan.regions.robotOfCell;
+    for (std::size_t id = 0; id < owner.size(); ++id) {
+        if (owner[id] < 0)
+            continue;
+        const Cell& cell = plan.cells.cell(static_cast<int>(id));
+        RegionFeature& region = regions[static_cast<std::size_t>(owner[id])];
+        ++region.cells;
+        region.areaSquareMetres += cell.size * cell.size * cell.freeSubCellCount() / 4.0;
+    }
+    return regions;
 }
 
 } // namespace
@@ -84,110 +125,31 @@ std::unique_ptr<OGRPolygon> cellSquare(const CellGraph& graph, const Cell& cell,
                   frame.x(cell.column + cell.span) / metresPerUnit, frame.y(cell.row) / metresPerUnit);
 }
 
-Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit) {
-    const CellGraph& graph = plan.cells;
-    const int robots = robotCount(plan);
+Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit, bool densePaths) {
     const auto& owner = plan.regions.robotOfCell;
-    if (!owner.empty() && owner.size() != graph.size()) {
+    if (!owner.empty() && owner.size() != plan.cells.size()) {
         return Result<PlanFeatures>::failure("the regions name " + std::to_string(owner.size()) +
-                                             " cells but the plan has " + std::to_string(graph.size()) +
+                                             " cells but the plan has " + std::to_string(plan.cells.size()) +
                                              " cells");
     }
-    std::vector<std::vector<int>> cellsOfRobot(static_cast<std::size_t>(robots));
-    std::vector<int> unreachableCells;
-    std::vector<double> areaOfRobot(static_cast<std::size_t>(robots), 0.0);
-    for (std::size_t index = 0; index < owner.size(); ++index) {
-        const Cell& cell = graph.cell(static_cast<int>(index));
-        const int robot = owner[index];
-        if (robot < 0) {
-            unreachableCells.push_back(static_cast<int>(index));
-        } else {
-            cellsOfRobot[static_cast<std::size_t>(robot)].push_back(static_cast<int>(index));
-            areaOfRobot[static_cast<std::size_t>(robot)] +=
-                cell.size * cell.size * cell.freeSubCellCount() / 4.0;
-        }
-    }
-
     PlanFeatures features;
-    for (int robot = 0; robot < robots; ++robot) {
-        const auto r = static_cast<std::size_t>(robot);
-        auto region = dissolve(graph, cellsOfRobot[r], metresPerUnit);
-        if (!region)
-            return Result<PlanFeatures>::failure("robot " + std::to_string(robot) +
-                                                 " region: " + region.error());
-        RegionFeature feature;
-        feature.robot = robot;
-        feature.geometry = std::move(region.value());
-        feature.cells = static_cast<int>(cellsOfRobot[r].size());
-        feature.areaSquareMetres = areaOfRobot[r];
-        if (r < plan.regions.costSeconds.size())
-            feature.costSeconds = plan.regions.costSeconds[r];
-        else if (r < plan.metrics.robots.size())
-            feature.costSeconds = plan.metrics.robots[r].costSeconds;
-        features.regions.push_back(std::move(feature));
+    features.regions = emptyRegions(plan);
+    const LabelGrid labels = regionLabels(plan);
+    const double pixelArea = labels.pixelSize * labels.pixelSize;
+    for (const OutlinePolygon& outline : traceOutlines(labels)) {
+        if (outline.label == unreachableLabel) {
+            features.unreachable.push_back(UnreachableFeature{
+                polygonOf(outline, labels, metresPerUnit), static_cast<double>(outline.pixels) * pixelArea});
+        } else if (outline.label >= 0 && static_cast<std::size_t>(outline.label) < features.regions.size()) {
+            features.regions[static_cast<std::size_t>(outline.label)].geometry->addGeometryDirectly(
+                polygonOf(outline, labels, metresPerUnit).release());
+        }
     }
     for (const CoveragePath& path : plan.paths) {
-        if (path.waypoints.empty())
-            continue;
-        PathFeature feature;
-        feature.robot = path.robot;
-        feature.geometry = std::make_unique<OGRLineString>();
-        for (const Waypoint& waypoint : path.waypoints) {
-            feature.geometry->addPoint(waypoint.x / metresPerUnit, waypoint.y / metresPerUnit);
-        }
-        feature.lengthMetres = path.lengthMetres;
-        feature.timeSeconds = path.timeSeconds;
-        feature.turns = path.turns;
-        features.paths.push_back(std::move(feature));
-
-        StartFeature start;
-        start.robot = path.robot;
-        start.geometry = std::make_unique<OGRPoint>(path.waypoints.front().x / metresPerUnit,
-                                                    path.waypoints.front().y / metresPerUnit);
-        features.starts.push_back(std::move(start));
+        if (!path.waypoints.empty())
+            features.paths.push_back(pathFeature(path, metresPerUnit, densePaths));
     }
-    // Robots without a path still get their start: the centre of their start cell.
-    for (std::size_t robot = 0; robot < plan.regions.startCell.size(); ++robot) {
-        const bool hasStart =
-            std::any_of(features.starts.begin(), features.starts.end(),
-                        [&](const StartFeature& start) { return start.robot == static_cast<int>(robot); });
-        const int cell = plan.regions.startCell[robot];
-        if (hasStart || cell < 0 || static_cast<std::size_t>(cell) >= graph.size())
-            continue;
-        StartFeature start;
-        start.robot = static_cast<int>(robot);
-        start.geometry = std::make_unique<OGRPoint>(graph.cell(cell).centreX() / metresPerUnit,
-                                                    graph.cell(cell).centreY() / metresPerUnit);
-        features.starts.push_back(std::move(start));
-    }
-    std::sort(features.starts.begin(), features.starts.end(),
-              [](const StartFeature& a, const StartFeature& b) { return a.robot < b.robot; });
-
-    if (!unreachableCells.empty()) {
-        auto dissolved = dissolve(graph, unreachableCells, metresPerUnit);
-        if (!dissolved)
-            return Result<PlanFeatures>::failure("unreachable cells: " + dissolved.error());
-        const double squareMetresPerUnit = metresPerUnit * metresPerUnit;
-        const auto addPart = [&](const OGRPolygon& polygon) {
-            UnreachableFeature feature;
-            feature.geometry.reset(polygon.clone());
-            feature.areaSquareMetres = polygon.get_Area() * squareMetresPerUnit;
-            features.unreachable.push_back(std::move(feature));
-        };
-        const OGRGeometry& geometry = *dissolved.value();
-        const auto type = wkbFlatten(geometry.getGeometryType());
-        if (type == wkbPolygon) {
-            addPart(*geometry.toPolygon());
-        } else if (type == wkbMultiPolygon) {
-            for (const OGRPolygon* part : *geometry.toMultiPolygon())
-                addPart(*part);
-        } else if (type == wkbGeometryCollection) {
-            for (const OGRGeometry* part : *geometry.toGeometryCollection()) {
-                if (wkbFlatten(part->getGeometryType()) == wkbPolygon)
-                    addPart(*part->toPolygon());
-            }
-        }
-    }
+    addStarts(plan, metresPerUnit, features);
     return features;
 }
 

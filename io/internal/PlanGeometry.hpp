@@ -12,7 +12,7 @@ namespace mcpp::io::internal {
 
 struct RegionFeature {
     int robot = 0;
-    std::unique_ptr<OGRGeometry> geometry; // (Multi)Polygon, CRS units
+    std::unique_ptr<OGRMultiPolygon> geometry; // CRS units; empty for a robot without cells
     double costSeconds = 0.0;
     double areaSquareMetres = 0.0;
     int cells = 0;
@@ -36,7 +36,9 @@ struct UnreachableFeature {
     double areaSquareMetres = 0.0;
 };
 
-// The plan's vector content in the raster CRS's units (planning metres / metresPerUnit).
+// The plan's vector content in the raster CRS's units (planning metres / metresPerUnit). Region and
+// unreachable polygons are the outlines of the sub-cell grid of core/outlines/RegionLabels, traced, not
+// unions of cells; paths are their turning points unless densePaths asks for every waypoint.
 struct PlanFeatures {
     std::vector<RegionFeature> regions; // one per robot, also for robots without cells (empty geometry)
     std::vector<PathFeature> paths;
@@ -44,7 +46,7 @@ struct PlanFeatures {
     std::vector<UnreachableFeature> unreachable; // one per connected part
 };
 
-[[nodiscard]] Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit);
+[[nodiscard]] Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit, bool densePaths);
 // The square of one cell in CRS units, its corners computed from its placement on the bottom grid so that
 // neighbouring cells share exactly the same edge coordinates.
 [[nodiscard]] std::unique_ptr<OGRPolygon> cellSquare(const CellGraph& graph, const Cell& cell,

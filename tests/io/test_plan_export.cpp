@@ -2,6 +2,7 @@
 // coordinates within 1e-7 degrees of the plan, CRS of the GeoPackage.
 
 #include "PlanFixture.hpp"
+#include "core/outlines/OutlineTracer.hpp"
 #include "io/PlanExport.hpp"
 
 #include <QFile>
@@ -14,6 +15,7 @@
 #include <gdal_priv.h>
 #include <map>
 #include <ogrsf_frmts.h>
+#include <random>
 
 using namespace mcpp;
 using namespace mcpp::io;
@@ -42,13 +44,14 @@ GeoReference utm12() {
     return GeoReference::fromDefinition("EPSG:26912").value();
 }
 
-// Largest distance in degrees between a line's vertices and the plan's waypoints taken to WGS84.
-double lineError(const OGRLineString& line, const CoveragePath& path, const GeoReference& reference) {
-    if (static_cast<std::size_t>(line.getNumPoints()) != path.waypoints.size())
+// Largest distance in degrees between a line's vertices and the given waypoints taken to WGS84.
+double lineError(const OGRLineString& line, const std::vector<Waypoint>& points,
+                 const GeoReference& reference) {
+    if (static_cast<std::size_t>(line.getNumPoints()) != points.size())
         return 1.0;
     double worst = 0.0;
     for (int i = 0; i < line.getNumPoints(); ++i) {
-        const Waypoint& waypoint = path.waypoints[static_cast<std::size_t>(i)];
+        const Waypoint& waypoint = points[static_cast<std::size_t>(i)];
         const LonLat expected = reference.toWgs84({waypoint.x, waypoint.y}).value();
         worst = std::max(
             {worst, std::abs(line.getX(i) - expected.longitude), std::abs(line.getY(i) - expected.latitude)});
@@ -119,7 +122,7 @@ class PlanExportTest : public QObject {
                 QCOMPARE(feature->GetFieldAsDouble("length_m"), coverage.lengthMetres);
                 QCOMPARE(feature->GetFieldAsDouble("time_s"), coverage.timeSeconds);
                 QCOMPARE(feature->GetFieldAsInteger("turns"), coverage.turns);
-                QVERIFY(lineError(*geometry->toLineString(), coverage, reference_) < 1e-7);
+                QVERIFY(lineError(*geometry->toLineString(), turningPoints(coverage), reference_) < 1e-7);
             } else if (kind == "start") {
                 const Waypoint& first = plan_.paths[static_cast<std::size_t>(robot)].waypoints.front();
                 const LonLat expected = reference_.toWgs84({first.x, first.y}).value();
@@ -179,7 +182,10 @@ class PlanExportTest : public QObject {
 
     void geoPackageIsInTheRasterCrs() {
         const std::string path = file("plan.gpkg");
-        Status written = writePlanGeoPackage(context(), path);
+        ExportSettings everything;
+        everything.densePaths = true;
+        everything.cellPolygons = true;
+        Status written = writePlanGeoPackage(context(everything), path);
         QVERIFY2(written.ok(), written.error().c_str());
         Dataset dataset = openVector(path);
         QVERIFY(dataset != nullptr);
@@ -214,8 +220,23 @@ class PlanExportTest : public QObject {
                      plan_.regions.robotOfCell[static_cast<std::size_t>(index)]);
             QCOMPARE(feature->GetGeometryRef()->toPolygon()->get_Area(), cell.size * cell.size);
         }
-        // Writing again replaces the file.
+        // Writing again replaces the file; by default without cells and with turning points only.
         QVERIFY(writePlanGeoPackage(context(), path).ok());
+        Dataset small = openVector(path);
+        QVERIFY(small->GetLayerByName("cells") == nullptr);
+        for (auto& feature : *small->GetLayerByName("paths")) {
+            const CoveragePath& coverage =
+                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot"))];
+            const OGRLineString* line = feature->GetGeometryRef()->toLineString();
+            QCOMPARE(static_cast<std::size_t>(line->getNumPoints()), turningPoints(coverage).size());
+            QVERIFY(std::abs(line->get_Length() - coverage.lengthMetres) <= 1e-9 * coverage.lengthMetres);
+        }
+        for (auto& feature : *small->GetLayerByName("regions")) {
+            const OGRGeometry* geometry = feature->GetGeometryRef();
+            QVERIFY(geometry->IsValid());
+            const double area = geometry->toMultiPolygon()->get_Area();
+            QVERIFY(std::abs(area - feature->GetFieldAsDouble("area_m2")) <= 1e-6 * area);
+        }
     }
 
     void geoPackageInFeetKeepsFeet() {
@@ -251,7 +272,8 @@ class PlanExportTest : public QObject {
                 wkbFlatten(geometry->getGeometryType()) == wkbLineString
                     ? geometry->toLineString()
                     : geometry->toGeometryCollection()->getGeometryRef(0)->toLineString();
-            QVERIFY(lineError(*line, plan_.paths[static_cast<std::size_t>(robot++)], reference_) < 1e-7);
+            QVERIFY(lineError(*line, turningPoints(plan_.paths[static_cast<std::size_t>(robot++)]),
+                              reference_) < 1e-7);
         }
         QCOMPARE(dataset->GetLayerByName("regions")->GetFeatureCount(), GIntBig{2});
         QCOMPARE(dataset->GetLayerByName("starts")->GetFeatureCount(), GIntBig{2});
@@ -273,7 +295,7 @@ class PlanExportTest : public QObject {
         for (auto& feature : *routes) {
             QCOMPARE(std::string(feature->GetFieldAsString("name")), "robot " + std::to_string(robot));
             QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(),
-                              plan_.paths[static_cast<std::size_t>(robot)], reference_) < 1e-7);
+                              plan_.paths[static_cast<std::size_t>(robot)].waypoints, reference_) < 1e-7);
             ++robot;
         }
         // Merged: robot 0's straight run of four points becomes two.
@@ -322,6 +344,132 @@ class PlanExportTest : public QObject {
         QCOMPARE(header, std::string("robot,cells,area_m2,length_m,time_s,turns,cost_s"));
         std::getline(input, line);
         QCOMPARE(line, std::string("0,2,200,40,80,3,80"));
+    }
+
+    void turningPointsDropOnlyCollinearPoints() {
+        // A zigzag with straight runs, a U-turn back along itself, a repeated point and a class change
+        // in a straight run: only points strictly between two collinear neighbours go.
+        CoveragePath path;
+        const std::vector<std::pair<double, double>> points{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2},
+                                                            {2, 2}, {1, 2}, {2, 2}, {3, 2}, {3, 2}, {3, 3},
+                                                            {3, 4}, {4, 5}, {5, 6}, {6, 6}};
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            path.waypoints.push_back(
+                test::makeWaypoint(points[i].first, points[i].second, 0, i < 12 ? 1 : 2, 1.0, 1.0, 0.0));
+        }
+        const std::vector<Waypoint> kept = turningPoints(path);
+        const std::vector<std::pair<double, double>> expected{{0, 0}, {3, 0}, {3, 2}, {1, 2}, {3, 2},
+                                                              {3, 2}, {3, 4}, {5, 6}, {6, 6}};
+        QCOMPARE(kept.size(), expected.size());
+        for (std::size_t i = 0; i < kept.size(); ++i) {
+            QCOMPARE(kept[i].x, expected[i].first);
+            QCOMPARE(kept[i].y, expected[i].second);
+        }
+        // Same length as the dense path.
+        const auto length = [](const std::vector<Waypoint>& line) {
+            double total = 0.0;
+            for (std::size_t i = 1; i < line.size(); ++i)
+                total += std::hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
+            return total;
+        };
+        QVERIFY(std::abs(length(kept) - length(path.waypoints)) < 1e-12);
+    }
+
+    void densePathsOnRequest() {
+        const std::string path = file("dense.geojson");
+        ExportSettings dense;
+        dense.densePaths = true;
+        QVERIFY(writePlanGeoJson(context(dense), path).ok());
+        Dataset dataset = openVector(path);
+        int paths = 0;
+        for (auto& feature : *dataset->GetLayer(0)) {
+            if (std::string(feature->GetFieldAsString("kind")) != "path")
+                continue;
+            const CoveragePath& coverage =
+                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot"))];
+            QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(), coverage.waypoints, reference_) <
+                    1e-7);
+            ++paths;
+        }
+        QCOMPARE(paths, 2);
+    }
+
+    void regionRasterAgreesWithRegionPolygons() {
+        const std::string raster = file("regions.tif");
+        Status written = writeRegionRaster(context(), raster);
+        QVERIFY2(written.ok(), written.error().c_str());
+        GDALAllRegister();
+        Dataset dataset(GDALDataset::FromHandle(
+            GDALOpenEx(raster.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+        QVERIFY(dataset != nullptr);
+        // Sub-cells of 5 m over the fixture's 4 x 2 bottom cells of 10 m.
+        QCOMPARE(dataset->GetRasterXSize(), 8);
+        QCOMPARE(dataset->GetRasterYSize(), 4);
+        double transform[6];
+        QCOMPARE(dataset->GetGeoTransform(transform), CE_None);
+        QCOMPARE(transform[0], 301900.0);
+        QCOMPARE(transform[1], 5.0);
+        QCOMPARE(transform[3], 4154080.0);
+        QCOMPARE(transform[5], -5.0);
+        QCOMPARE(std::string(dataset->GetSpatialRef()->GetAuthorityCode(nullptr)), std::string("26912"));
+        GDALRasterBand* band = dataset->GetRasterBand(1);
+        int hasNodata = 0;
+        QCOMPARE(band->GetNoDataValue(&hasNodata), 255.0);
+        QVERIFY(hasNodata);
+        QVERIFY(band->GetColorTable() != nullptr);
+        QCOMPARE(band->GetColorTable()->GetColorEntry(0)->c1, short{0xe6});
+        std::vector<std::uint8_t> values(32);
+        QCOMPARE(band->RasterIO(GF_Read, 0, 0, 8, 4, values.data(), 8, 4, GDT_Byte, 0, 0, nullptr), CE_None);
+        // NW, NE of robot 0; SW unreachable; SE blocked; the 20 m cell of robot 1.
+        const std::vector<std::uint8_t> expected{0,   0,   0,   0,   1, 1, 1, 1, //
+                                                 0,   0,   0,   0,   1, 1, 1, 1, //
+                                                 254, 254, 255, 255, 1, 1, 1, 1, //
+                                                 254, 254, 255, 255, 1, 1, 1, 1};
+        QCOMPARE(values, expected);
+
+        // Pixel for pixel: the centre of each pixel lies in the region polygon of the robot it names.
+        const std::string vector = file("regions.gpkg");
+        QVERIFY(writePlanGeoPackage(context(), vector).ok());
+        Dataset regions = openVector(vector);
+        std::map<int, std::unique_ptr<OGRGeometry>> regionOf;
+        for (auto& feature : *regions->GetLayerByName("regions"))
+            regionOf[feature->GetFieldAsInteger("robot")].reset(feature->GetGeometryRef()->clone());
+        for (int row = 0; row < 4; ++row) {
+            for (int column = 0; column < 8; ++column) {
+                const OGRPoint centre(transform[0] + (column + 0.5) * transform[1],
+                                      transform[3] + (row + 0.5) * transform[5]);
+                const int value = values[static_cast<std::size_t>(row * 8 + column)];
+                for (const auto& [robot, geometry] : regionOf)
+                    QCOMPARE(geometry->Contains(&centre), robot == value);
+            }
+        }
+    }
+
+    void tracedOutlinesAreValidSimpleFeatures() {
+        // Random label grids, traced, as OGR polygons: GEOS finds every one valid, areas as pixel counts.
+        for (unsigned seed = 1; seed <= 30; ++seed) {
+            std::mt19937 random(seed);
+            LabelGrid grid;
+            grid.columns = 6 + static_cast<int>(seed % 11);
+            grid.rows = 5 + static_cast<int>(seed % 7);
+            for (int i = 0; i < grid.columns * grid.rows; ++i)
+                grid.labels.push_back(static_cast<std::int32_t>(random() % (2 + seed % 3)) - 1);
+            for (const OutlinePolygon& outline : traceOutlines(grid)) {
+                OGRPolygon polygon;
+                std::vector<const OutlineRing*> rings{&outline.exterior};
+                for (const OutlineRing& hole : outline.holes)
+                    rings.push_back(&hole);
+                for (const OutlineRing* ring : rings) {
+                    auto* linear = new OGRLinearRing;
+                    for (const GridVertex& vertex : *ring)
+                        linear->addPoint(vertex.column, -vertex.row);
+                    linear->closeRings();
+                    polygon.addRingDirectly(linear);
+                }
+                QVERIFY2(polygon.IsValid(), ("seed " + std::to_string(seed)).c_str());
+                QCOMPARE(polygon.get_Area(), static_cast<double>(outline.pixels));
+            }
+        }
     }
 
     void noCrsCannotGoToWgs84ButGeoPackageWorks() {

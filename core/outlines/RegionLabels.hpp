@@ -1,0 +1,18 @@
+#pragma once
+
+#include "core/model/Plan.hpp"
+#include "core/outlines/LabelGrid.hpp"
+
+#include <cstdint>
+
+namespace mcpp {
+
+// The label of passable land no robot covers (cells the plan names with robot -1).
+inline constexpr std::int32_t unreachableLabel = -2;
+
+// The plan's regions on a grid of sub-cells (half the bottom cell): the robot covering each free sub-cell,
+// unreachableLabel for a free sub-cell nobody covers, LabelGrid::noLabel elsewhere (obstacles, outside the
+// map, blocked sub-cells). Exports draw region polygons and regions.tif from this one grid, so they agree.
+[[nodiscard]] LabelGrid regionLabels(const Plan& plan);
+
+} // namespace mcpp

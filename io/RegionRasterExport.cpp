@@ -1,0 +1,115 @@
+#include "core/model/RobotColours.hpp"
+#include "core/outlines/RegionLabels.hpp"
+#include "io/PlanExport.hpp"
+#include "io/internal/DatasetFile.hpp"
+#include "io/internal/GdalSupport.hpp"
+#include "io/internal/PlanGeometry.hpp"
+
+#include <gdal_priv.h>
+#include <limits>
+
+namespace mcpp::io {
+
+namespace {
+
+using internal::QuietGdalErrors;
+
+struct Encoding {
+    GDALDataType type = GDT_Byte;
+    unsigned nodata = 255;
+    unsigned unreachable = 254;
+};
+
+Encoding encodingFor(int robots) {
+    if (robots < 254)
+        return {};
+    return {GDT_UInt16, 65535, 65534};
+}
+
+GDALColorTable colourTable(int robots, const Encoding& encoding) {
+    GDALColorTable table;
+    for (int robot = 0; robot < robots; ++robot) {
+        const RgbColour colour = robotColour(robot);
+        const GDALColorEntry entry{colour.red, colour.green, colour.blue, 255};
+        table.SetColorEntry(robot, &entry);
+    }
+    const GDALColorEntry grey{160, 160, 160, 255};
+    table.SetColorEntry(static_cast<int>(encoding.unreachable), &grey);
+    const GDALColorEntry transparent{0, 0, 0, 0};
+    table.SetColorEntry(static_cast<int>(encoding.nodata), &transparent);
+    return table;
+}
+
+// The labels as the file stores them, one row at a time.
+template <typename Value>
+Status writeRows(GDALRasterBand& band, const LabelGrid& labels, const Encoding& encoding,
+                 const std::string& path) {
+    std::vector<Value> row(static_cast<std::size_t>(labels.columns));
+    for (int r = 0; r < labels.rows; ++r) {
+        for (int c = 0; c < labels.columns; ++c) {
+            const std::int32_t label = labels.labels[labels.index(c, r)];
+            const unsigned value = label >= 0                  ? static_cast<unsigned>(label)
+                                   : label == unreachableLabel ? encoding.unreachable
+                                                               : encoding.nodata;
+            row[static_cast<std::size_t>(c)] = static_cast<Value>(value);
+        }
+        if (band.RasterIO(GF_Write, 0, r, labels.columns, 1, row.data(), labels.columns, 1, encoding.type, 0,
+                          0, nullptr) != CE_None) {
+            return Status::failure(path + ": cannot write row " + std::to_string(r) +
+                                   QuietGdalErrors::detail());
+        }
+    }
+    return {};
+}
+
+Status describe(GDALDataset& dataset, const ExportContext& context, const LabelGrid& labels,
+                const std::string& path) {
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    double transform[6] = {labels.originX / metresPerUnit,
+                           labels.pixelSize / metresPerUnit,
+                           0.0,
+                           labels.originY / metresPerUnit,
+                           0.0,
+                           -labels.pixelSize / metresPerUnit};
+    if (dataset.SetGeoTransform(transform) != CE_None)
+        return Status::failure(path + ": cannot set the grid's position" + QuietGdalErrors::detail());
+    if (context.georeference.hasCrs() &&
+        dataset.SetProjection(context.georeference.wkt().c_str()) != CE_None) {
+        return Status::failure(path + ": cannot set the CRS" + QuietGdalErrors::detail());
+    }
+    dataset.SetMetadataItem("MCPP_VALUES",
+                            "robot index from 0; 254 (65534 as UInt16) passable but unreachable");
+    dataset.SetMetadataItem("MCPP_PLANNER", context.plan.planner.c_str());
+    return {};
+}
+
+} // namespace
+
+Status writeRegionRaster(const ExportContext& context, const std::string& path) {
+    QuietGdalErrors quiet;
+    const LabelGrid labels = regionLabels(context.plan);
+    if (labels.columns == 0 || labels.rows == 0)
+        return Status::failure(path + ": the plan has no cells");
+    const int robots = internal::robotCount(context.plan);
+    const Encoding encoding = encodingFor(robots);
+    internal::DatasetFile file(path);
+    const char* const options[] = {"TILED=YES",   "BLOCKXSIZE=256", "BLOCKYSIZE=256",   "COMPRESS=DEFLATE",
+                                   "PREDICTOR=2", "ZLEVEL=6",       "BIGTIFF=IF_SAFER", nullptr};
+    if (Status status = file.create("GTiff", labels.columns, labels.rows, 1, encoding.type, options); !status)
+        return status;
+    GDALDataset& dataset = file.dataset();
+    if (Status status = describe(dataset, context, labels, path); !status)
+        return status;
+    GDALRasterBand& band = *dataset.GetRasterBand(1);
+    band.SetNoDataValue(encoding.nodata);
+    GDALColorTable table = colourTable(robots, encoding);
+    band.SetColorTable(&table);
+    band.SetColorInterpretation(GCI_PaletteIndex);
+    const Status written = encoding.type == GDT_Byte ? writeRows<std::uint8_t>(band, labels, encoding, path)
+                                                     : writeRows<std::uint16_t>(band, labels, encoding, path);
+    if (!written)
+        return written;
+    return file.commit();
+}
+
+} // namespace mcpp::io

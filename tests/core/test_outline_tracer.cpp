@@ -1,0 +1,231 @@
+// Region outlines traced on a label grid: hand-made shapes (holes, corner contacts, a hole pinched at a
+// corner) and random grids, checked against the pixels themselves: every pixel centre lies in the polygon of
+// its own patch and in no other, areas equal pixel counts, rings are simple and keep their orientation.
+
+#include "core/outlines/OutlineTracer.hpp"
+#include "core/outlines/RegionLabels.hpp"
+
+#include <QTest>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+
+using namespace mcpp;
+
+namespace {
+
+// Rows of characters: '.' no label, a digit its label.
+LabelGrid gridOf(const std::vector<std::string>& rows) {
+    LabelGrid grid;
+    grid.rows = static_cast<int>(rows.size());
+    grid.columns = static_cast<int>(rows.front().size());
+    for (const std::string& row : rows)
+        for (const char c : row)
+            grid.labels.push_back(c == '.' ? LabelGrid::noLabel : c - '0');
+    return grid;
+}
+
+bool inRing(const OutlineRing& ring, double x, double y) {
+    bool result = false;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+        const double xi = ring[i].column, yi = ring[i].row, xj = ring[j].column, yj = ring[j].row;
+        if ((yi > y) != (yj > y) && x < (xj - xi) * (y - yi) / (yj - yi) + xi)
+            result = !result;
+    }
+    return result;
+}
+
+bool inPolygon(const OutlinePolygon& polygon, double x, double y) {
+    if (!inRing(polygon.exterior, x, y))
+        return false;
+    for (const OutlineRing& hole : polygon.holes)
+        if (inRing(hole, x, y))
+            return false;
+    return true;
+}
+
+// A simple ring of grid corners: axis-parallel edges, no straight-through vertex, no vertex twice.
+std::string ringProblem(const OutlineRing& ring) {
+    std::set<std::pair<int, int>> seen;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        const GridVertex a = ring[i], b = ring[(i + 1) % ring.size()], c = ring[(i + 2) % ring.size()];
+        if (!seen.insert({a.column, a.row}).second)
+            return "a ring passes a vertex twice";
+        if (a.column != b.column && a.row != b.row)
+            return "an edge is not along the grid";
+        if ((a.column == b.column && b.column == c.column) || (a.row == b.row && b.row == c.row))
+            return "a vertex is not a corner";
+    }
+    return {};
+}
+
+// Every property the exporters rely on; returns an empty string or what is wrong.
+std::string check(const LabelGrid& grid, const std::vector<OutlinePolygon>& polygons) {
+    std::map<std::int32_t, std::int64_t> pixelsOfLabel, areaOfLabel;
+    for (const std::int32_t label : grid.labels)
+        if (label != LabelGrid::noLabel)
+            ++pixelsOfLabel[label];
+    for (const OutlinePolygon& polygon : polygons) {
+        std::int64_t twiceArea = doubledSignedArea(polygon.exterior);
+        if (twiceArea <= 0)
+            return "an exterior is not counter-clockwise";
+        for (const OutlineRing& hole : polygon.holes) {
+            if (doubledSignedArea(hole) >= 0)
+                return "a hole is not clockwise";
+            twiceArea += doubledSignedArea(hole);
+        }
+        if (twiceArea != 2 * polygon.pixels)
+            return "a polygon's area differs from its pixel count";
+        areaOfLabel[polygon.label] += polygon.pixels;
+        std::vector<const OutlineRing*> rings{&polygon.exterior};
+        for (const OutlineRing& hole : polygon.holes)
+            rings.push_back(&hole);
+        for (const OutlineRing* ring : rings) {
+            if (const std::string problem = ringProblem(*ring); !problem.empty())
+                return problem;
+        }
+    }
+    if (areaOfLabel != pixelsOfLabel)
+        return "the polygons of a label do not add up to its pixels";
+    for (int row = 0; row < grid.rows; ++row) {
+        for (int column = 0; column < grid.columns; ++column) {
+            const std::int32_t label = grid.at(column, row);
+            int holders = 0;
+            for (const OutlinePolygon& polygon : polygons) {
+                if (!inPolygon(polygon, column + 0.5, row + 0.5))
+                    continue;
+                ++holders;
+                if (polygon.label != label)
+                    return "pixel " + std::to_string(column) + "," + std::to_string(row) +
+                           " lies in a polygon of another label";
+            }
+            if (holders != (label == LabelGrid::noLabel ? 0 : 1))
+                return "pixel " + std::to_string(column) + "," + std::to_string(row) + " lies in " +
+                       std::to_string(holders) + " polygons";
+        }
+    }
+    return {};
+}
+
+} // namespace
+
+class OutlineTracerTest : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void oneSquareHasFourCorners() {
+        const LabelGrid grid = gridOf({"...", ".0.", "..."});
+        const auto polygons = traceOutlines(grid);
+        QCOMPARE(polygons.size(), std::size_t{1});
+        QCOMPARE(polygons[0].exterior.size(), std::size_t{4});
+        QCOMPARE(polygons[0].pixels, std::int64_t{1});
+        QVERIFY(polygons[0].holes.empty());
+        const std::string problem = check(grid, polygons);
+        QVERIFY2(problem.empty(), problem.c_str());
+    }
+
+    void straightRunsKeepOnlyCorners() {
+        const LabelGrid grid = gridOf({"0000000", "0000000", "00....."});
+        const auto polygons = traceOutlines(grid);
+        QCOMPARE(polygons.size(), std::size_t{1});
+        QCOMPARE(polygons[0].exterior.size(), std::size_t{6}); // an L: six corners whatever its size
+        const std::string problem = check(grid, polygons);
+        QVERIFY2(problem.empty(), problem.c_str());
+    }
+
+    void ringWithAHoleAndAnIslandInIt() {
+        const LabelGrid grid = gridOf({"00000", "0...0", "0.1.0", "0...0", "00000"});
+        const auto polygons = traceOutlines(grid);
+        QCOMPARE(polygons.size(), std::size_t{2});
+        QCOMPARE(polygons[0].label, 0);
+        QCOMPARE(polygons[0].holes.size(), std::size_t{1});
+        QCOMPARE(polygons[1].label, 1);
+        const std::string problem = check(grid, polygons);
+        QVERIFY2(problem.empty(), problem.c_str());
+    }
+
+    void cornerContactMakesTwoPatches() {
+        const LabelGrid grid = gridOf({"0.", ".0"});
+        const auto polygons = traceOutlines(grid);
+        QCOMPARE(polygons.size(), std::size_t{2});
+        const std::string problem = check(grid, polygons);
+        QVERIFY2(problem.empty(), problem.c_str());
+    }
+
+    void holePinchedAtACornerIsSplitOff() {
+        // The hole at (1,1) touches the outside only at its south-west corner: the walk around the patch
+        // would pass that corner twice, so the hole comes out as a hole ring of its own.
+        const LabelGrid grid = gridOf({"000", "0.0", ".00"});
+        const auto polygons = traceOutlines(grid);
+        QCOMPARE(polygons.size(), std::size_t{1});
+        QCOMPARE(polygons[0].holes.size(), std::size_t{1});
+        QCOMPARE(polygons[0].holes[0].size(), std::size_t{4});
+        const std::string problem = check(grid, polygons);
+        QVERIFY2(problem.empty(), problem.c_str());
+    }
+
+    void randomGrids_data() {
+        QTest::addColumn<int>("seed");
+        QTest::addColumn<int>("labels");
+        QTest::addColumn<double>("emptyShare");
+        for (int seed = 1; seed <= 40; ++seed)
+            QTest::addRow("seed %d", seed) << seed << 1 + seed % 4 << 0.1 * (seed % 6);
+    }
+
+    void randomGrids() {
+        QFETCH(int, seed);
+        QFETCH(int, labels);
+        QFETCH(double, emptyShare);
+        std::mt19937 random(static_cast<unsigned>(seed));
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        LabelGrid grid;
+        grid.columns = 5 + seed % 17;
+        grid.rows = 4 + seed % 13;
+        for (int i = 0; i < grid.columns * grid.rows; ++i) {
+            grid.labels.push_back(unit(random) < emptyShare
+                                      ? LabelGrid::noLabel
+                                      : static_cast<std::int32_t>(random() % static_cast<unsigned>(labels)));
+        }
+        const std::string problem = check(grid, traceOutlines(grid));
+        QVERIFY2(problem.empty(), problem.c_str());
+    }
+
+    void planRegionsOnTheSubCellGrid() {
+        // Two cells of a 2 x 1 bottom grid: robot 0 with its south-east sub-cell blocked, robot 1 all free.
+        Plan plan;
+        GridFrame frame;
+        frame.originX = 100.0;
+        frame.originY = 50.0;
+        frame.bottomCellSize = 10.0;
+        frame.columns = 2;
+        frame.rows = 1;
+        Cell first;
+        first.column = 0;
+        first.size = 10.0;
+        first.freeSubCells = allSubCells & ~(1U << static_cast<unsigned>(SubCell::SouthEast));
+        Cell second = first;
+        second.column = 1;
+        second.freeSubCells = allSubCells;
+        plan.cells = CellGraph(frame, {first, second}, NeighbourTopology({0, 1, 2}, {1, 0}));
+        plan.regions.robotOfCell = {0, -1};
+        const LabelGrid labels = regionLabels(plan);
+        QCOMPARE(labels.columns, 4);
+        QCOMPARE(labels.rows, 2);
+        QCOMPARE(labels.pixelSize, 5.0);
+        const std::vector<std::int32_t> expected{0,
+                                                 0,
+                                                 unreachableLabel,
+                                                 unreachableLabel,
+                                                 0,
+                                                 LabelGrid::noLabel,
+                                                 unreachableLabel,
+                                                 unreachableLabel};
+        QCOMPARE(labels.labels, expected);
+        QCOMPARE(labels.x(4), 120.0);
+        QCOMPARE(labels.y(2), 40.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(OutlineTracerTest)
+#include "test_outline_tracer.moc"
