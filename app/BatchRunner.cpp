@@ -11,10 +11,13 @@
 #include "render/PlanImageWriter.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
 #include <system_error>
+#include <thread>
 #include <unistd.h>
 
 namespace mcpp::app {
@@ -50,6 +53,10 @@ std::string namingFile(const std::string& path, const std::string& message) {
     return path + ": " + message;
 }
 
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 template <typename T> T valueOrBadInput(io::Result<T> result) {
     if (!result)
         badInput(result.error());
@@ -78,13 +85,17 @@ int BatchRunner::run() {
 void BatchRunner::execute() {
     assembleMission();
     applyOverrides();
+    auto started = std::chrono::steady_clock::now();
     loadRaster();
+    processMilliseconds_.emplace_back("read_raster", millisecondsSince(started));
     const PlanningProblem problem = prepareProblem();
     checkOutputFolder();
     for (const auto& warning : pendingWarnings_)
         warn(warning);
     pendingWarnings_.clear();
+    started = std::chrono::steady_clock::now();
     const Plan plan = runPlanner(problem);
+    processMilliseconds_.emplace_back("plan", millisecondsSince(started));
     for (const auto& warning : plan.warnings())
         warn(warning);
     writeOutputs(plan);
@@ -231,36 +242,74 @@ void BatchRunner::writeOutputs(const Plan& plan) {
     context.drawImage = render::planImageWriter(planImageSide);
     const int robots = static_cast<int>(plan.paths.size());
 
-    struct Output {
-        const io::ExportFormat* format;
-        int robot;
-        std::string name;
-    };
+    // report.json comes last so that it can say how long the other files took.
     std::vector<Output> outputs;
+    std::vector<Output> report;
     for (const io::ExportFormat& format : io::exportFormats()) {
         if (!format.inBatchOutputs)
             continue;
+        auto& list = format.key == "report-json" ? report : outputs;
         if (!format.perRobot) {
-            outputs.push_back({&format, -1, format.batchFileName});
+            list.push_back({&format, -1, format.batchFileName});
             continue;
         }
         for (int robot = 0; robot < robots; ++robot)
-            outputs.push_back({&format, robot, io::robotFileName(robot, format)});
+            list.push_back({&format, robot, io::robotFileName(robot, format)});
     }
-    const auto total = static_cast<double>(outputs.size());
+    const auto started = std::chrono::steady_clock::now();
+    const std::vector<io::Status> results = writeInParallel(context, outputs, report.size());
+    context.processMilliseconds = processMilliseconds_;
+    context.processMilliseconds.emplace_back("write_outputs", millisecondsSince(started));
+    std::vector<io::Status> reportResults;
+    for (const Output& output : report)
+        reportResults.push_back(
+            output.format->write(context, output.robot, (directory / output.name).string()));
+    progress_.report("writing outputs", 1.0);
+    outputs.insert(outputs.end(), report.begin(), report.end());
+    std::vector<io::Status> all = results;
+    all.insert(all.end(), reportResults.begin(), reportResults.end());
+    // Reported in catalogue order, whichever thread finished first.
     for (std::size_t i = 0; i < outputs.size(); ++i) {
-        progress_.report("writing outputs", static_cast<double>(i) / total);
-        const std::string path = (directory / outputs[i].name).string();
-        const io::Status status = outputs[i].format->write(context, outputs[i].robot, path);
-        if (status)
+        if (all[i])
             continue;
         if (outputs[i].format->requiredInBatch)
-            internalError(namingFile(path, status.error()));
-        warn(outputs[i].name + " not written: " + status.error());
+            internalError(namingFile((directory / outputs[i].name).string(), all[i].error()));
+        warn(outputs[i].name + " not written: " + all[i].error());
     }
-    progress_.report("writing outputs", 1.0);
+    removeStaleRobotFiles(robots);
+}
 
+std::vector<io::Status> BatchRunner::writeInParallel(const io::ExportContext& context,
+                                                     const std::vector<Output>& outputs, std::size_t later) {
+    const std::filesystem::path directory(options_.outputDirectory);
+    std::vector<io::Status> results(outputs.size());
+    std::atomic<std::size_t> next{0};
+    std::mutex progressMutex;
+    std::size_t finished = 0;
+    const auto total = static_cast<double>(outputs.size() + later);
+    const auto work = [&] {
+        for (std::size_t i = next++; i < outputs.size(); i = next++) {
+            results[i] =
+                outputs[i].format->write(context, outputs[i].robot, (directory / outputs[i].name).string());
+            const std::lock_guard lock(progressMutex);
+            progress_.report("writing outputs", static_cast<double>(++finished) / total);
+        }
+    };
+    const auto threads = std::min<std::size_t>(static_cast<std::size_t>(options_.threads), outputs.size());
+    std::vector<std::thread> helpers;
+    for (std::size_t t = 1; t < threads; ++t)
+        helpers.emplace_back(work);
+    work();
+    for (std::thread& helper : helpers)
+        helper.join();
+    return results;
+}
+
+void BatchRunner::removeStaleRobotFiles(int robots) const {
     // Waypoint files of robots a previous run in this folder had and this one has not would mislead.
+    namespace fs = std::filesystem;
+    const fs::path directory(options_.outputDirectory);
+    std::error_code code;
     for (int robot = robots;; ++robot) {
         bool removed = false;
         for (const io::ExportFormat& format : io::exportFormats())

@@ -5,6 +5,7 @@
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
 #include "core/model/PlanningProblem.hpp"
+#include "io/ExportCatalogue.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
 #include "io/MissionInputs.hpp"
@@ -32,7 +33,16 @@ class BatchRunner {
     PlanningProblem prepareProblem();
     void checkOutputFolder() const;
     Plan runPlanner(const PlanningProblem& problem);
+    struct Output {
+        const io::ExportFormat* format;
+        int robot; // -1 for whole-plan formats
+        std::string name;
+    };
     void writeOutputs(const Plan& plan);
+    // Writes the outputs on options_.threads threads; later = outputs still to come, for the progress.
+    std::vector<io::Status> writeInParallel(const io::ExportContext& context,
+                                            const std::vector<Output>& outputs, std::size_t later);
+    void removeStaleRobotFiles(int robots) const;
     void printSummary(const Plan& plan) const;
     void warn(const std::string& message);
 
@@ -48,6 +58,7 @@ class BatchRunner {
     io::LoadedRaster raster_;
     ClassTable classes_;
     std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
+    std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan
 };
 
 } // namespace mcpp::app

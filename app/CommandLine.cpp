@@ -38,6 +38,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--purity", "F", true, false},         FlagSpec{"--missing-as-obstacle", "", true, false},
     FlagSpec{"--open-paths", "", true, false},      FlagSpec{"--quiet", "", true, false},
     FlagSpec{"--dense-paths", "", true, false},     FlagSpec{"--cell-polygons", "", true, false},
+    FlagSpec{"--threads", "N", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -271,6 +272,11 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             options.parameters.push_back({"closed_tour", "false", "--open-paths"});
         } else if (flag == "--quiet") {
             options.quiet = true;
+        } else if (flag == "--threads") {
+            const auto threads = parsePositiveInteger(value);
+            if (!threads || *threads > 64)
+                return failure("--threads: " + quoted(value) + " is not a thread count (1 to 64)");
+            options.threads = *threads;
         } else if (flag == "--dense-paths") {
             options.densePaths = true;
         } else if (flag == "--cell-polygons") {
@@ -354,6 +360,9 @@ std::string CommandLine::usage() {
            "  --dense-paths            paths in plan.geojson and plan.gpkg through every sub-cell centre\n"
            "                           instead of only their turning points\n"
            "  --cell-polygons          add a polygon per cell to plan.gpkg (layer cells; big on large maps)\n"
+           "  --threads N              write the outputs on N threads (default: the machine's cores, at "
+           "most\n"
+           "                           8); the files are the same whatever N\n"
            "  -q, --quiet              no progress lines, warnings or summary; errors are still printed\n"
            "\n"
            "Mission files (format: docs/mission-format.md) may be combined with --band, --planner,\n"

@@ -2,11 +2,18 @@
 
 #include "core/model/MapPoint.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace mcpp::app {
+
+// Both cores of a small machine; the outputs are the same bytes whatever the count.
+inline int defaultThreadCount() {
+    return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1U, 8U));
+}
 
 enum class RunMode {
     Gui,         // open the window, optionally with a mission or raster
@@ -41,8 +48,9 @@ struct CommandLineOptions {
     std::vector<ParameterOverride> parameters; // --param, --purity, --open-paths, in the order given
     bool missingAsObstacle = false;
     bool quiet = false;
-    bool densePaths = false;   // --dense-paths
-    bool cellPolygons = false; // --cell-polygons
+    bool densePaths = false;            // --dense-paths
+    bool cellPolygons = false;          // --cell-polygons
+    int threads = defaultThreadCount(); // --threads: writers run side by side
 
     [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }
 };

@@ -12,6 +12,10 @@ using internal::QuietGdalErrors;
 struct GeoReference::State {
     std::unique_ptr<OGRSpatialReference> crs;
     double metresPerUnit = 1.0;
+    // Read once: OGRSpatialReference's const methods may touch caches, and exports run on several threads.
+    std::string wkt;
+    std::string name;
+    std::string authorityCode;
     // OGRCoordinateTransformation is not thread-safe; copies share these, so calls take the lock.
     mutable std::mutex mutex;
     mutable std::unique_ptr<OGRCoordinateTransformation> toWgs84;
@@ -48,6 +52,13 @@ Result<GeoReference> GeoReference::fromDefinition(const std::string& definition)
     auto state = std::make_shared<State>();
     const double factor = crs->GetLinearUnits(nullptr);
     state->metresPerUnit = (std::isfinite(factor) && factor > 0.0) ? factor : 1.0;
+    state->wkt = internal::wktOf(*crs);
+    if (const char* crsName = crs->GetName(); crsName != nullptr)
+        state->name = crsName;
+    const char* authority = crs->GetAuthorityName(nullptr);
+    const char* code = crs->GetAuthorityCode(nullptr);
+    if (authority != nullptr && code != nullptr)
+        state->authorityCode = std::string(authority) + ":" + code;
     state->crs = std::move(crs);
     GeoReference reference;
     reference.state_ = std::move(state);
@@ -59,24 +70,15 @@ bool GeoReference::hasCrs() const {
 }
 
 std::string GeoReference::wkt() const {
-    return hasCrs() ? internal::wktOf(*state_->crs) : std::string();
+    return hasCrs() ? state_->wkt : std::string();
 }
 
 std::string GeoReference::name() const {
-    if (!hasCrs())
-        return {};
-    const char* crsName = state_->crs->GetName();
-    return crsName == nullptr ? std::string() : std::string(crsName);
+    return hasCrs() ? state_->name : std::string();
 }
 
 std::string GeoReference::authorityCode() const {
-    if (!hasCrs())
-        return {};
-    const char* authority = state_->crs->GetAuthorityName(nullptr);
-    const char* code = state_->crs->GetAuthorityCode(nullptr);
-    if (authority == nullptr || code == nullptr)
-        return {};
-    return std::string(authority) + ":" + code;
+    return hasCrs() ? state_->authorityCode : std::string();
 }
 
 double GeoReference::metresPerUnit() const {
@@ -147,7 +149,9 @@ Result<MapPoint> GeoReference::fromCrs(const std::string& definition, MapPoint p
     if (!hasCrs())
         return Result<MapPoint>::failure("the map has no CRS, so a point in " + definition +
                                          " cannot be placed on it");
+    std::unique_lock lock(state_->mutex);
     const auto transformation = makeTransformation(*source, *state_->crs);
+    lock.unlock();
     double x = point.x;
     double y = point.y;
     if (!transformation || !transformPoint(*transformation, x, y)) {
@@ -167,7 +171,9 @@ Result<MapPoint> GeoReference::toCrs(const std::string& definition, MapPoint poi
         return Result<MapPoint>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
     if (!hasCrs())
         return Result<MapPoint>::failure("the map has no CRS, so its points cannot go to " + definition);
+    std::unique_lock lock(state_->mutex);
     const auto transformation = makeTransformation(*state_->crs, *target);
+    lock.unlock();
     const MapPoint crsPoint = toCrsUnits(point);
     double x = crsPoint.x;
     double y = crsPoint.y;

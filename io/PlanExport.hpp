@@ -27,6 +27,8 @@ struct ExportContext {
     ExportSettings settings;
     const ClassGrid* grid = nullptr; // the land cover, for pictures
     ImageWriter drawImage = {};
+    // What the whole run took so far (batch mode: read_raster, plan, write_outputs), for report.json.
+    std::vector<std::pair<std::string, double>> processMilliseconds = {};
 };
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.

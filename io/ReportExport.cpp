@@ -37,6 +37,11 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     JsonValue& timings = root.add("timings_ms", JsonValue::object());
     for (const auto& [stage, milliseconds] : metrics.stageMilliseconds)
         timings.add(stage, milliseconds);
+    if (!context.processMilliseconds.empty()) {
+        JsonValue& process = root.add("process_ms", JsonValue::object());
+        for (const auto& [step, milliseconds] : context.processMilliseconds)
+            process.add(step, milliseconds);
+    }
     JsonValue& warnings = root.add("warnings", JsonValue::array());
     for (const std::string& warning : context.plan.warnings())
         warnings.push(warning);

@@ -12,7 +12,8 @@ io::ImageWriter planImageWriter(int pngSide) {
         const QString file = QString::fromStdString(path);
         const bool written =
             format == io::ImageFormat::Png
-                ? writePlanPng(*context.grid, context.classes, context.plan, file, QSize(pngSide, pngSide), &error)
+                ? writePlanPng(*context.grid, context.classes, context.plan, file, QSize(pngSide, pngSide),
+                               &error)
                 : writePlanSvg(*context.grid, context.classes, context.plan, file, QSize(1600, 1600), &error);
         return written ? io::Status() : io::Status::failure(path + ": " + error.toStdString());
     };

@@ -1,5 +1,6 @@
 #include "render/PlanRenderer.hpp"
 
+#include "io/PlanExport.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QFont>
@@ -47,6 +48,17 @@ void drawArrow(QPainter& painter, QPointF tip, QPointF direction, const QColor& 
     painter.setPen(QPen(QColor(255, 255, 255, 220), 1.0));
     painter.setBrush(colour);
     painter.drawPolygon(head);
+}
+
+// Qt strokes a wide polyline as one polygon whose filling slows down sharply as the line crosses itself
+// (coverage paths pass close by themselves all the time); pieces of a few hundred points draw the same
+// picture, joined by their round caps, many times faster.
+void drawPolylineInPieces(QPainter& painter, const QPolygonF& line) {
+    constexpr qsizetype piece = 8;
+    for (qsizetype first = 0; first + 1 < line.size(); first += piece) {
+        const qsizetype count = std::min(piece + 1, line.size() - first);
+        painter.drawPolyline(line.constData() + first, static_cast<int>(count));
+    }
 }
 
 } // namespace
@@ -299,9 +311,11 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
     for (const CoveragePath& path : plan_->paths) {
         if (path.waypoints.size() < 2)
             continue;
+        // The turning points draw the same line with far fewer vertices.
+        const std::vector<Waypoint> corners = io::turningPoints(path);
         QPolygonF line;
-        line.reserve(static_cast<qsizetype>(path.waypoints.size()) + 1);
-        for (const Waypoint& waypoint : path.waypoints)
+        line.reserve(static_cast<qsizetype>(corners.size()) + 1);
+        for (const Waypoint& waypoint : corners)
             line << worldToDevice.map(QPointF(waypoint.x, waypoint.y));
         if (path.closed && line.front() != line.back())
             line << line.front();
@@ -313,12 +327,12 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
             QColor faded = colour;
             faded.setAlpha(150);
             painter.setPen(QPen(faded, 1.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-            painter.drawPolyline(line);
+            drawPolylineInPieces(painter, line);
         } else {
             painter.setPen(QPen(QColor(255, 255, 255, 190), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-            painter.drawPolyline(line);
+            drawPolylineInPieces(painter, line);
             painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-            painter.drawPolyline(line);
+            drawPolylineInPieces(painter, line);
         }
 
         // Arrows at even on-screen spacing show the direction of travel; a dense overview has no room for

@@ -71,13 +71,16 @@ class TestBatchEndToEnd : public QObject {
     void rerunWithFewerRobotsRemovesTheirFiles();
     void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
+    void outputsAreTheSameWhateverTheThreadCount();
     void everyPlannerRunsFromTheCommandLine_data();
     void everyPlannerRunsFromTheCommandLine();
     void badInputExitsTwoWithOneLine_data();
     void badInputExitsTwoWithOneLine();
 
   private:
-    RunResult runMcpp(const QStringList& arguments, int timeoutMilliseconds = 600000) const;
+    RunResult
+    runMcpp(const QStringList& arguments, int timeoutMilliseconds = 600000,
+            const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) const;
     void checkOutputs(const QString& directory, int robots, const RunResult& run) const;
     QStringList syntheticFlags() const;
 
@@ -92,8 +95,10 @@ void TestBatchEndToEnd::initTestCase() {
     QVERIFY(scratch_.isValid());
 }
 
-RunResult TestBatchEndToEnd::runMcpp(const QStringList& arguments, int timeoutMilliseconds) const {
+RunResult TestBatchEndToEnd::runMcpp(const QStringList& arguments, int timeoutMilliseconds,
+                                     const QProcessEnvironment& environment) const {
     QProcess process;
+    process.setProcessEnvironment(environment);
     process.start(executable_, arguments);
     RunResult result;
     if (!process.waitForFinished(timeoutMilliseconds)) {
@@ -111,6 +116,43 @@ RunResult TestBatchEndToEnd::runMcpp(const QStringList& arguments, int timeoutMi
 QStringList TestBatchEndToEnd::syntheticFlags() const {
     return {"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes",
             samplePath("synthetic/classes.csv")};
+}
+
+// Writers run side by side; each file must come out the same byte for byte with one thread or several
+// (GeoPackage timestamps pinned; report.json compared without its timings).
+void TestBatchEndToEnd::outputsAreTheSameWhateverTheThreadCount() {
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert("OGR_CURRENT_DATE", "2026-01-01T00:00:00Z");
+    QStringList folders;
+    for (const char* threads : {"1", "2", "4"}) {
+        const QString out = scratch_.filePath(QStringLiteral("threads-%1").arg(QLatin1String(threads)));
+        const auto run = runMcpp(
+            {"--batch", samplePath("zion-nlcd/mission.json"), "--out", out, "--threads", threads, "--quiet"},
+            600000, environment);
+        QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+        folders << out;
+    }
+    const QStringList names = QDir(folders.front()).entryList(QDir::Files, QDir::Name);
+    QVERIFY(names.size() > 10);
+    for (const QString& folder : folders.mid(1)) {
+        QCOMPARE(QDir(folder).entryList(QDir::Files, QDir::Name), names);
+        for (const QString& name : names) {
+            QFile first(QDir(folders.front()).filePath(name)), other(QDir(folder).filePath(name));
+            QVERIFY(first.open(QIODevice::ReadOnly) && other.open(QIODevice::ReadOnly));
+            if (name != "report.json") {
+                QVERIFY2(first.readAll() == other.readAll(), qPrintable(folder + "/" + name));
+                continue;
+            }
+            QJsonObject a = QJsonDocument::fromJson(first.readAll()).object();
+            QJsonObject b = QJsonDocument::fromJson(other.readAll()).object();
+            for (const char* timings : {"process_ms", "timings_ms"}) {
+                a.remove(timings);
+                b.remove(timings);
+            }
+            QVERIFY(!a.isEmpty());
+            QCOMPARE(a, b);
+        }
+    }
 }
 
 void TestBatchEndToEnd::samplesAreValidMissions_data() {
@@ -181,7 +223,7 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
     QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp: planned %1 robots").arg(robots)),
              qPrintable(run.standardOutput));
     const QDir out(directory);
-    QStringList expected{"plan.geojson", "report.json", "plan.png"};
+    QStringList expected{"plan.geojson", "report.json", "plan.png", "regions.tif", "plan.gpkg"};
     for (int robot = 0; robot < robots; ++robot) {
         for (const char* extension : {".plan", ".waypoints", ".csv"}) {
             expected << QStringLiteral("robot_%1%2").arg(robot).arg(QLatin1String(extension));
@@ -256,6 +298,10 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
     const double covered = report.value("covered_fraction").toDouble();
     QVERIFY(covered > 0.5 && covered <= 1.0 + 1e-9);
     QCOMPARE(report.value("planner").toString(), QStringLiteral("mcpp-mlct"));
+    // What the run took, written last so it includes the other files.
+    const auto process = report.value("process_ms").toObject();
+    for (const char* step : {"read_raster", "plan", "write_outputs"})
+        QVERIFY2(process.value(step).toDouble(-1.0) >= 0.0, step);
 
     // Waypoint files have the structure their readers expect.
     for (int robot = 0; robot < robots; ++robot) {
