@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <numeric>
 #include <system_error>
 #include <thread>
 #include <unistd.h>
@@ -256,8 +257,20 @@ void BatchRunner::writeOutputs(const Plan& plan) {
         for (int robot = 0; robot < robots; ++robot)
             list.push_back({&format, robot, io::robotFileName(robot, format)});
     }
+    // The picture takes longest on small plans: started first, the other files are written beside it.
+    // Results are reported in catalogue order below, whatever order the files are written in.
+    std::vector<std::size_t> order(outputs.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_partition(order.begin(), order.end(),
+                          [&](std::size_t i) { return outputs[i].format->key == "png"; });
+    std::vector<Output> scheduled;
+    for (const std::size_t i : order)
+        scheduled.push_back(outputs[i]);
     const auto started = std::chrono::steady_clock::now();
-    const std::vector<io::Status> results = writeInParallel(context, outputs, report.size());
+    const std::vector<io::Status> scheduledResults = writeInParallel(context, scheduled, report.size());
+    std::vector<io::Status> results(outputs.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+        results[order[k]] = scheduledResults[k];
     context.processMilliseconds = processMilliseconds_;
     context.processMilliseconds.emplace_back("write_outputs", millisecondsSince(started));
     std::vector<io::Status> reportResults;

@@ -6,6 +6,7 @@
 #include "io/Mission.hpp"
 #include "io/Result.hpp"
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,6 +30,11 @@ struct ExportContext {
     ImageWriter drawImage = {};
     // What the whole run took so far (batch mode: read_raster, plan, write_outputs), for report.json.
     std::vector<std::pair<std::string, double>> processMilliseconds = {};
+    // Set from another thread to stop a writer at its next feature, row or file; it then fails with
+    // "cancelled" and leaves no file behind.
+    const std::atomic<bool>* cancelRequested = nullptr;
+
+    [[nodiscard]] bool cancelled() const { return cancelRequested != nullptr && cancelRequested->load(); }
 };
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.

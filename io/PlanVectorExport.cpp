@@ -16,8 +16,8 @@ using internal::QuietGdalErrors;
 // An OGR file written under a temporary name and moved into place when complete (internal::DatasetFile).
 class VectorFileWriter {
   public:
-    VectorFileWriter(std::string path, const char* driverName)
-        : file_(std::move(path)), driverName_(driverName) {}
+    VectorFileWriter(std::string path, const char* driverName, const ExportContext& context)
+        : file_(std::move(path)), driverName_(driverName), context_(context) {}
 
     Status open(const char* const* creationOptions = nullptr) {
         return file_.create(driverName_, 0, 0, 0, GDT_Unknown, creationOptions);
@@ -43,6 +43,8 @@ class VectorFileWriter {
     }
 
     Status add(OGRLayer* layer, OGRFeature& feature) {
+        if (context_.cancelled())
+            return Status::failure(file_.path() + ": cancelled");
         if (layer->CreateFeature(&feature) != OGRERR_NONE) {
             return Status::failure(file_.path() + ": cannot write a feature to " + layer->GetName() +
                                    QuietGdalErrors::detail());
@@ -56,6 +58,7 @@ class VectorFileWriter {
   private:
     internal::DatasetFile file_;
     const char* driverName_;
+    const ExportContext& context_;
 };
 
 struct Fields {
@@ -269,7 +272,7 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
     auto features = featuresInWgs84(context, path);
     if (!features)
         return Status::failure(features.error());
-    VectorFileWriter writer(path, "GeoJSON");
+    VectorFileWriter writer(path, "GeoJSON", context);
     if (Status status = writer.open(); !status)
         return status;
     const auto wgs84 = internal::wgs84SpatialReference();
@@ -341,7 +344,7 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
     if (context.georeference.hasCrs())
         crs = internal::spatialReferenceFromDefinition(context.georeference.wkt());
 
-    VectorFileWriter writer(path, "GPKG");
+    VectorFileWriter writer(path, "GPKG", context);
     if (Status status = writer.open(); !status)
         return status;
     writer.dataset().StartTransaction();
@@ -372,7 +375,7 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
     if (!features)
         return Status::failure(features.error());
     const bool libkml = GetGDALDriverManager()->GetDriverByName("LIBKML") != nullptr;
-    VectorFileWriter writer(path, libkml ? "LIBKML" : "KML");
+    VectorFileWriter writer(path, libkml ? "LIBKML" : "KML", context);
     if (Status status = writer.open(); !status)
         return status;
     const auto wgs84 = internal::wgs84SpatialReference();
@@ -397,7 +400,7 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
     auto transformation = toWgs84(context.georeference, path);
     if (!transformation)
         return Status::failure(transformation.error());
-    VectorFileWriter writer(path, "GPX");
+    VectorFileWriter writer(path, "GPX", context);
     if (Status status = writer.open(); !status)
         return status;
     const auto wgs84 = internal::wgs84SpatialReference();

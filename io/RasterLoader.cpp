@@ -221,6 +221,9 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
                                    " of band " + std::to_string(bandNumber) + QuietGdalErrors::detail());
         }
         for (int row = 0; row < rowsHere; ++row) {
+            // Land cover comes in runs of one class: count a run at a time, not a pixel at a time.
+            std::int32_t runValue = 0;
+            std::int64_t runLength = 0;
             for (int column = 0; column < plan.columns; ++column) {
                 const double value =
                     buffer[static_cast<std::size_t>(row) * static_cast<std::size_t>(plan.columns) +
@@ -233,21 +236,29 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
                     ++outsidePixels;
                     continue;
                 }
-                const std::string where =
-                    " at column " + std::to_string(column) + ", row " + std::to_string(firstRow + row);
+                const auto where = [&] {
+                    return " at column " + std::to_string(column) + ", row " + std::to_string(firstRow + row);
+                };
                 if (floating && value != std::floor(value)) {
                     return Status::failure(path + ": band " + std::to_string(bandNumber) +
-                                           " holds the fractional value " + std::to_string(value) + where +
+                                           " holds the fractional value " + std::to_string(value) + where() +
                                            "; a land-cover raster needs integer class values");
                 }
                 if (value < -2147483648.0 || value > 2147483647.0) {
-                    return Status::failure(path + ": value " + std::to_string(value) + where +
+                    return Status::failure(path + ": value " + std::to_string(value) + where() +
                                            " does not fit a 32-bit class value (is the nodata value set?)");
                 }
                 const auto classValue = static_cast<std::int32_t>(value);
                 grid.values[index] = classValue;
-                ++counts[classValue];
+                if (runLength > 0 && classValue != runValue) {
+                    counts[runValue] += runLength;
+                    runLength = 0;
+                }
+                runValue = classValue;
+                ++runLength;
             }
+            if (runLength > 0)
+                counts[runValue] += runLength;
         }
     }
     if (outsidePixels == 0)

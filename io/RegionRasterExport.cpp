@@ -43,9 +43,11 @@ GDALColorTable colourTable(int robots, const Encoding& encoding) {
 // The labels as the file stores them, one row at a time.
 template <typename Value>
 Status writeRows(GDALRasterBand& band, const LabelGrid& labels, const Encoding& encoding,
-                 const std::string& path) {
+                 const ExportContext& context, const std::string& path) {
     std::vector<Value> row(static_cast<std::size_t>(labels.columns));
     for (int r = 0; r < labels.rows; ++r) {
+        if (context.cancelled())
+            return Status::failure(path + ": cancelled");
         for (int c = 0; c < labels.columns; ++c) {
             const std::int32_t label = labels.labels[labels.index(c, r)];
             const unsigned value = label >= 0                  ? static_cast<unsigned>(label)
@@ -105,8 +107,9 @@ Status writeRegionRaster(const ExportContext& context, const std::string& path) 
     GDALColorTable table = colourTable(robots, encoding);
     band.SetColorTable(&table);
     band.SetColorInterpretation(GCI_PaletteIndex);
-    const Status written = encoding.type == GDT_Byte ? writeRows<std::uint8_t>(band, labels, encoding, path)
-                                                     : writeRows<std::uint16_t>(band, labels, encoding, path);
+    const Status written = encoding.type == GDT_Byte
+                               ? writeRows<std::uint8_t>(band, labels, encoding, context, path)
+                               : writeRows<std::uint16_t>(band, labels, encoding, context, path);
     if (!written)
         return written;
     return file.commit();

@@ -7,6 +7,7 @@
 #include "render/PlanImageWriter.hpp"
 #include "ui/ClassTableEditCommand.hpp"
 #include "ui/ClassTableModel.hpp"
+#include "ui/ExportRunner.hpp"
 #include "ui/LayersPanel.hpp"
 #include "ui/MapCanvas.hpp"
 #include "ui/PlannerSettingsPanel.hpp"
@@ -92,7 +93,8 @@ QDockWidget* makeDock(const QString& objectName, const QString& title, QWidget* 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), document_(new MissionDocument(this)), undoStack_(new QUndoStack(this)),
       canvas_(new MapCanvas(document_, this)), classModel_(new ClassTableModel(document_, undoStack_, this)),
-      robotModel_(new RobotTableModel(document_, undoStack_, this)), runner_(new PlanningRunner(this)) {
+      robotModel_(new RobotTableModel(document_, undoStack_, this)), runner_(new PlanningRunner(this)),
+      exportRunner_(new ExportRunner(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowIcon(QIcon::fromTheme(QStringLiteral("applications-science")));
     setCentralWidget(canvas_);
@@ -122,6 +124,12 @@ MainWindow::MainWindow(QWidget* parent)
 MainWindow::~MainWindow() {
     // A run that ends now must not call back into a window being torn down.
     disconnect(runner_, nullptr, this, nullptr);
+    disconnect(exportRunner_, nullptr, this, nullptr);
+    if (exportRunner_->isRunning()) {
+        exportRunner_->cancel();
+        exportRunner_->waitForFinished();
+        QGuiApplication::restoreOverrideCursor();
+    }
     disconnect(undoStack_, nullptr, this,
                nullptr); // clearing the stack on destruction signals an index change
     disconnect(document_, nullptr, this, nullptr);
@@ -430,7 +438,12 @@ void MainWindow::createStatusBar() {
     progressBar_->setTextVisible(false);
     cancelButton_ = new QPushButton(tr("Cancel"), this);
     cancelButton_->setObjectName(QStringLiteral("cancelPlanningButton"));
-    connect(cancelButton_, &QPushButton::clicked, this, &MainWindow::cancelPlanning);
+    connect(cancelButton_, &QPushButton::clicked, this, [this] {
+        if (exportRunner_->isRunning())
+            cancelExport();
+        else
+            cancelPlanning();
+    });
     statusBar()->addPermanentWidget(stageLabel_);
     statusBar()->addPermanentWidget(progressBar_);
     statusBar()->addPermanentWidget(cancelButton_);
@@ -462,6 +475,11 @@ void MainWindow::createStatusBar() {
         progressBar_->setValue(static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 1000.0));
     });
     connect(runner_, &PlanningRunner::finished, this, &MainWindow::handlePlanningFinished);
+    connect(exportRunner_, &ExportRunner::progressed, this, [this](int done, int files) {
+        progressBar_->setRange(0, files);
+        progressBar_->setValue(done);
+    });
+    connect(exportRunner_, &ExportRunner::finished, this, &MainWindow::handleExportFinished);
 }
 
 void MainWindow::connectDocument() {
@@ -547,12 +565,13 @@ void MainWindow::updateTitle() {
 
 void MainWindow::updateActions() {
     const bool planning = runner_->isRunning();
+    const bool exporting = exportRunner_->isRunning();
     const bool hasMap = document_->hasMap();
-    planAction_->setEnabled(hasMap && !planning && !document_->robots().empty());
+    planAction_->setEnabled(hasMap && !planning && !exporting && !document_->robots().empty());
     cancelAction_->setEnabled(planning);
     saveAction_->setEnabled(hasMap);
     for (QAction* action : exportActions_)
-        action->setEnabled(document_->plan() != nullptr);
+        action->setEnabled(document_->plan() != nullptr && !planning && !exporting);
 }
 
 void MainWindow::updateResults() {
@@ -749,8 +768,7 @@ void MainWindow::chooseExport(const std::string& formatKey) {
 }
 
 bool MainWindow::exportPlan(const std::string& formatKey, const QString& path) {
-    const Plan* plan = document_->plan();
-    if (plan == nullptr || !document_->hasMap()) {
+    if (document_->plan() == nullptr || !document_->hasMap()) {
         reportError(tr("Cannot export"), tr("There is no plan to export yet; press Plan first."));
         return false;
     }
@@ -760,30 +778,71 @@ bool MainWindow::exportPlan(const std::string& formatKey, const QString& path) {
                     tr("Unknown export format %1.").arg(QString::fromStdString(formatKey)));
         return false;
     }
-    const io::LoadedRaster& raster = *document_->raster();
-    io::ExportContext context{*plan, raster.georeference, document_->classes(), document_->mission().exports};
-    context.grid = &raster.grid;
-    context.drawImage = render::planImageWriter(exportImageSide);
-    QStringList written;
-    io::Status status;
-    const int robots = static_cast<int>(plan->paths.size());
-    const int files = format->perRobot ? robots : 1;
-    for (int file = 0; file < files && status.ok(); ++file) {
-        const QString target = format->perRobot ? perRobotPath(path, file, robots) : path;
-        status = format->write(context, file, target.toStdString());
-        if (status.ok())
-            written << target;
-    }
-    if (!status.ok()) {
-        reportError(tr("Export failed"),
-                    tr("Cannot export the plan to %1: %2").arg(path, QString::fromStdString(status.error())));
+    if (exportRunner_->isRunning() || runner_->isRunning()) {
+        reportError(tr("Cannot export"), tr("Wait until the running plan or export has finished."));
         return false;
     }
-    QString message = tr("Exported %1").arg(written.join(QStringLiteral(", ")));
-    if (document_->planStale())
-        message += tr(" (note: the plan is out of date)");
-    showStatus(message);
+    ExportJob job;
+    job.formatKey = formatKey;
+    job.plan = document_->sharedPlan();
+    job.raster = document_->sharedRaster();
+    job.classes = document_->classes();
+    job.settings = document_->mission().exports;
+    job.imageSide = exportImageSide;
+    const int robots = static_cast<int>(job.plan->paths.size());
+    const int files = format->perRobot ? robots : 1;
+    for (int file = 0; file < files; ++file)
+        job.files.emplace_back(file, format->perRobot ? perRobotPath(path, file, robots) : path);
+    exportStale_ = document_->planStale();
+    if (!exportRunner_->start(std::move(job)))
+        return false;
+    showBusy(tr("Exporting %1…").arg(QString::fromStdString(format->label)), true);
+    progressBar_->setRange(0, files);
+    progressBar_->setValue(0);
+    updateActions();
     return true;
+}
+
+void MainWindow::cancelExport() {
+    if (!exportRunner_->isRunning())
+        return;
+    exportRunner_->cancel();
+    cancelButton_->setEnabled(false);
+    stageLabel_->setText(tr("Cancelling…"));
+}
+
+bool MainWindow::isExporting() const {
+    return exportRunner_->isRunning();
+}
+
+void MainWindow::handleExportFinished(const ExportOutcome& outcome) {
+    showBusy({}, false);
+    progressBar_->setRange(0, 1000);
+    updateActions();
+    if (outcome.cancelled) {
+        showStatus(tr("Export cancelled; no unfinished file was left behind."));
+    } else if (!outcome.error.isEmpty()) {
+        reportError(tr("Export failed"), outcome.error);
+    } else {
+        QString message = tr("Exported %1").arg(outcome.written.join(QStringLiteral(", ")));
+        if (exportStale_)
+            message += tr(" (note: the plan is out of date)");
+        showStatus(message);
+    }
+    emit exportFinished(!outcome.cancelled && outcome.error.isEmpty());
+}
+
+// The status bar's stage, progress and Cancel, and a busy cursor, while a background job runs.
+void MainWindow::showBusy(const QString& stage, bool busy) {
+    stageLabel_->setText(stage);
+    stageLabel_->setVisible(busy);
+    progressBar_->setVisible(busy);
+    cancelButton_->setVisible(busy);
+    cancelButton_->setEnabled(busy);
+    if (busy)
+        QGuiApplication::setOverrideCursor(Qt::BusyCursor);
+    else
+        QGuiApplication::restoreOverrideCursor();
 }
 
 io::FieldNamer MainWindow::fieldNamer() const {
@@ -957,6 +1016,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     }
     runner_->cancel();
     runner_->waitForFinished();
+    exportRunner_->cancel();
+    exportRunner_->waitForFinished();
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());

@@ -19,12 +19,14 @@ class QUndoStack;
 namespace mcpp::ui {
 
 class ClassTableModel;
+class ExportRunner;
 class LayersPanel;
 class MapCanvas;
 class PlannerSettingsPanel;
 class PlanningRunner;
 class ResultsPanel;
 class RobotTableModel;
+struct ExportOutcome;
 struct PlanningOutcome;
 
 // The desktop application: map canvas in the middle; layers, classes, robots, planner and results in docks.
@@ -42,8 +44,11 @@ class MainWindow : public QMainWindow {
     bool saveMission(const QString& path);
     // Per-robot formats (QGC .plan, WPL, CSV waypoints) write one file per robot: path's stem plus the robot
     // number, unless there is a single robot.
-    // formatKey: a key of io::exportFormats(), e.g. "geojson".
+    // formatKey: a key of io::exportFormats(), e.g. "geojson". The files are written in the background
+    // (exportFinished says how it went); false when no export could start.
     bool exportPlan(const std::string& formatKey, const QString& path);
+    void cancelExport();
+    [[nodiscard]] bool isExporting() const;
     bool startPlanning();
     void cancelPlanning();
     [[nodiscard]] bool isPlanning() const;
@@ -72,6 +77,7 @@ class MainWindow : public QMainWindow {
 
   signals:
     void planningFinished(bool success);
+    void exportFinished(bool success);
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -97,6 +103,8 @@ class MainWindow : public QMainWindow {
     void openSampleMission(bool plan);
     void showCursor(MapPoint point);
     void handlePlanningFinished(const PlanningOutcome& outcome);
+    void handleExportFinished(const ExportOutcome& outcome);
+    void showBusy(const QString& stage, bool busy);
     void placeStart(MapPoint point);
     void removeSelectedRobot();
     void chooseExport(const std::string& formatKey);
@@ -111,6 +119,7 @@ class MainWindow : public QMainWindow {
     ClassTableModel* classModel_;
     RobotTableModel* robotModel_;
     PlanningRunner* runner_;
+    ExportRunner* exportRunner_;
     QTableView* classView_ = nullptr;
     QTableView* robotView_ = nullptr;
     QComboBox* presetCombo_ = nullptr;
@@ -133,6 +142,7 @@ class MainWindow : public QMainWindow {
     QString lastError_;
     QString lastStatus_;
     PlanInputs planningInputs_;
+    bool exportStale_ = false; // the exported plan was out of date
     qint64 planningStartedAt_ = 0;
     bool settingsModified_ = false;
     bool dialogsEnabled_ = true;

@@ -5,6 +5,7 @@
 #include "core/outlines/OutlineTracer.hpp"
 #include "io/PlanExport.hpp"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -470,6 +471,36 @@ class PlanExportTest : public QObject {
                 QCOMPARE(polygon.get_Area(), static_cast<double>(outline.pixels));
             }
         }
+    }
+
+    void cancelledWritersLeaveNoFile() {
+        // Cancelled (here before the first feature or row): the writer fails naming the file and neither the
+        // file nor its temporary copy remains; an older file of that name is left as it was.
+        const std::atomic<bool> cancel{true};
+        ExportContext cancelled = context();
+        cancelled.cancelRequested = &cancel;
+        const QDir folder(folder_.path());
+        for (const auto& [name, write] :
+             std::vector<std::pair<std::string, Status (*)(const ExportContext&, const std::string&)>>{
+                 {"cancel.gpkg", writePlanGeoPackage},
+                 {"cancel.geojson", writePlanGeoJson},
+                 {"cancel.kml", writePlanKml},
+                 {"cancel.tif", writeRegionRaster}}) {
+            const QStringList before = folder.entryList(QDir::Files | QDir::Hidden);
+            const Status status = write(cancelled, file(name.c_str()));
+            QVERIFY2(!status.ok(), name.c_str());
+            QVERIFY2(status.error().find("cancelled") != std::string::npos, status.error().c_str());
+            QCOMPARE(folder.entryList(QDir::Files | QDir::Hidden), before);
+        }
+        QVERIFY(writePlanGeoJson(context(), file("kept.geojson")).ok());
+        const QByteArray kept = [&] {
+            QFile f(QString::fromStdString(file("kept.geojson")));
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        }();
+        QVERIFY(!writePlanGeoJson(cancelled, file("kept.geojson")).ok());
+        QFile again(QString::fromStdString(file("kept.geojson")));
+        QVERIFY(again.open(QIODevice::ReadOnly));
+        QCOMPARE(again.readAll(), kept);
     }
 
     void noCrsCannotGoToWgs84ButGeoPackageWorks() {

@@ -178,8 +178,16 @@ class TestMainWindow : public QObject {
 
         // Export GeoJSON and read it back.
         const QString geojson = directory.filePath(QStringLiteral("plan.geojson"));
-        QVERIFY2(window.exportPlan("geojson", geojson),
-                 qPrintable(window.lastError()));
+        QSignalSpy exported(&window, &ui::MainWindow::exportFinished);
+        const auto exportAndWait = [&](const std::string& key, const QString& path) {
+            if (!window.exportPlan(key, path))
+                return false;
+            // The export runs in the background and reports when it is done.
+            if (exported.isEmpty() && !exported.wait(60000))
+                return false;
+            return exported.takeFirst().at(0).toBool();
+        };
+        QVERIFY2(exportAndWait("geojson", geojson), qPrintable(window.lastError()));
         QFile file(geojson);
         QVERIFY(file.open(QIODevice::ReadOnly));
         QJsonParseError parseError;
@@ -189,14 +197,12 @@ class TestMainWindow : public QObject {
         QVERIFY(!json.object().value(QStringLiteral("features")).toArray().isEmpty());
 
         // PNG and per-robot waypoint exports.
-        QVERIFY(window.exportPlan("png",
-                                  directory.filePath(QStringLiteral("plan.png"))));
+        QVERIFY(exportAndWait("png", directory.filePath(QStringLiteral("plan.png"))));
         QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
-        QVERIFY(window.exportPlan("qgc-plan",
-                                  directory.filePath(QStringLiteral("mission.plan"))));
+        QVERIFY(exportAndWait("qgc-plan", directory.filePath(QStringLiteral("mission.plan"))));
         QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("mission-robot3.plan"))));
-        QVERIFY(!window.exportPlan("geojson",
-                                   QStringLiteral("/no/such/folder/plan.geojson")));
+        QVERIFY(!exportAndWait("geojson", QStringLiteral("/no/such/folder/plan.geojson")));
+        QVERIFY(!window.isExporting());
         QVERIFY(window.lastError().contains(QStringLiteral("/no/such/folder/plan.geojson")));
 
         // Save, reopen, and find the same robots and edited speed.

@@ -1,0 +1,95 @@
+#include "ui/ExportRunner.hpp"
+
+#include "io/ExportCatalogue.hpp"
+#include "render/PlanImageWriter.hpp"
+
+#include <QtConcurrent/QtConcurrentRun>
+#include <exception>
+
+namespace mcpp::ui {
+
+namespace {
+
+ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelRequested,
+                     const std::function<void(int, int)>& progress) {
+    ExportOutcome outcome;
+    const io::ExportFormat* format = io::findExportFormat(job.formatKey);
+    if (format == nullptr) {
+        outcome.error = QObject::tr("Unknown export format %1.").arg(QString::fromStdString(job.formatKey));
+        return outcome;
+    }
+    io::ExportContext context{*job.plan, job.raster->georeference, job.classes, job.settings};
+    context.grid = &job.raster->grid;
+    context.drawImage = render::planImageWriter(job.imageSide);
+    context.cancelRequested = &cancelRequested;
+    const int files = static_cast<int>(job.files.size());
+    for (int file = 0; file < files; ++file) {
+        if (cancelRequested.load()) {
+            outcome.cancelled = true;
+            return outcome;
+        }
+        const auto& [robot, path] = job.files[static_cast<std::size_t>(file)];
+        const io::Status status = format->write(context, robot, path.toStdString());
+        if (!status.ok()) {
+            outcome.cancelled = cancelRequested.load();
+            outcome.error = QObject::tr("Cannot export the plan to %1: %2")
+                                .arg(path, QString::fromStdString(status.error()));
+            return outcome;
+        }
+        outcome.written << path;
+        progress(file + 1, files);
+    }
+    return outcome;
+}
+
+} // namespace
+
+ExportRunner::ExportRunner(QObject* parent) : QObject(parent) {
+    connect(&watcher_, &QFutureWatcher<ExportOutcome>::finished, this,
+            [this] { emit finished(watcher_.result()); });
+}
+
+ExportRunner::~ExportRunner() {
+    disconnect(&watcher_, nullptr, this, nullptr);
+    cancel();
+    waitForFinished();
+}
+
+bool ExportRunner::isRunning() const {
+    return watcher_.isRunning();
+}
+
+void ExportRunner::cancel() {
+    if (cancelRequested_)
+        cancelRequested_->store(true);
+}
+
+void ExportRunner::waitForFinished() {
+    watcher_.waitForFinished();
+}
+
+bool ExportRunner::start(ExportJob job) {
+    if (isRunning() || !job.plan || !job.raster)
+        return false;
+    cancelRequested_ = std::make_shared<std::atomic<bool>>(false);
+    auto cancelFlag = cancelRequested_;
+    // The destructor waits for the job, so the worker may use `this`.
+    auto work = [this, cancelFlag, job = std::move(job)]() -> ExportOutcome {
+        const auto progress = [this](int done, int files) {
+            QMetaObject::invokeMethod(
+                this, [this, done, files] { emit progressed(done, files); }, Qt::QueuedConnection);
+        };
+        try {
+            return runJob(job, *cancelFlag, progress);
+        } catch (const std::bad_alloc&) {
+            return ExportOutcome{{}, QObject::tr("Out of memory while exporting."), false};
+        } catch (const std::exception& error) {
+            return ExportOutcome{
+                {}, QObject::tr("Export failed: %1").arg(QString::fromStdString(error.what())), false};
+        }
+    };
+    watcher_.setFuture(QtConcurrent::run(std::move(work)));
+    return true;
+}
+
+} // namespace mcpp::ui
