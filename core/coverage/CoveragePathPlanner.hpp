@@ -14,9 +14,10 @@ namespace mcpp {
 class CoveragePathPlanner {
   public:
     virtual ~CoveragePathPlanner() = default;
-    [[nodiscard]] virtual std::vector<CoveragePath>
-    plan(const CellGraph& graph, const RegionAllocation& regions, const std::vector<MapPoint>& starts,
-         const ProgressReporter& progress) const = 0;
+    [[nodiscard]] virtual std::vector<CoveragePath> plan(const CellGraph& graph,
+                                                         const RegionAllocation& regions,
+                                                         const std::vector<MapPoint>& starts,
+                                                         const ProgressReporter& progress) const = 0;
 };
 
 } // namespace mcpp

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace mcpp {
@@ -47,20 +48,33 @@ int countTurns(const std::vector<Waypoint>& waypoints) {
 }
 
 int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph) {
-    std::vector<std::pair<int, int>> visits;
-    visits.reserve(path.waypoints.size());
+    // One bit per sub-cell, cleared again afterwards, so a call costs the path's length and not the map's
+    // size (and nothing is sorted).
+    thread_local std::vector<std::uint8_t> seen;
+    if (seen.size() < graph.size())
+        seen.resize(graph.size(), 0);
+    std::pair<int, int> first{-1, 0};
+    std::pair<int, int> last{-1, 0};
+    int visits = 0;
+    int repeats = 0;
     for (const Waypoint& waypoint : path.waypoints) {
         const auto visited = subCellVisited(waypoint, graph);
-        if (visited.first >= 0)
-            visits.push_back(visited);
+        if (visited.first < 0)
+            continue;
+        if (visits++ == 0)
+            first = visited;
+        last = visited;
+        std::uint8_t& marks = seen[static_cast<std::size_t>(visited.first)];
+        const auto bit = static_cast<std::uint8_t>(1U << static_cast<unsigned>(visited.second));
+        if ((marks & bit) != 0)
+            ++repeats;
+        marks = static_cast<std::uint8_t>(marks | bit);
     }
-    if (visits.empty())
-        return 0;
-    const bool returnsToFirst = path.closed && visits.size() > 1 && visits.back() == visits.front();
-    std::sort(visits.begin(), visits.end());
-    const auto distinct = static_cast<int>(std::unique(visits.begin(), visits.end()) - visits.begin());
-    int repeats = static_cast<int>(visits.size()) - distinct;
-    if (returnsToFirst)
+    for (const Waypoint& waypoint : path.waypoints) {
+        if (waypoint.cell >= 0 && static_cast<std::size_t>(waypoint.cell) < seen.size())
+            seen[static_cast<std::size_t>(waypoint.cell)] = 0;
+    }
+    if (path.closed && visits > 1 && last == first)
         --repeats; // the return that closes the tour
     return repeats;
 }
@@ -94,15 +108,16 @@ CoveragePath pathFromWalk(int robot, MapPoint start, std::vector<Waypoint> walk,
         return path;
     const Waypoint first = walk.front();
     const bool startIsOnWalk = std::hypot(first.x - start.x, first.y - start.y) < 1e-9;
+    // The walk becomes the path in place: on big regions a copy costs as much as the walk itself.
+    path.waypoints = std::move(walk);
     if (!startIsOnWalk) {
         Waypoint origin = first;
         origin.x = start.x;
         origin.y = start.y;
-        path.waypoints.push_back(origin);
+        path.waypoints.insert(path.waypoints.begin(), origin);
+        if (closed)
+            path.waypoints.push_back(origin);
     }
-    path.waypoints.insert(path.waypoints.end(), walk.begin(), walk.end());
-    if (closed && !startIsOnWalk)
-        path.waypoints.push_back(path.waypoints.front());
     return path;
 }
 

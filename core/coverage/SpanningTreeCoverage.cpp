@@ -3,6 +3,9 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
+#include "core/model/ParallelFor.hpp"
+
+#include <mutex>
 
 namespace mcpp {
 
@@ -26,17 +29,23 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
                                               std::vector<int>& scratchIndex) const {
     const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
-    CoveragePath best;
+    // Both trees are judged by the shape of their walk; only the better one's path is stored.
+    SpanningTree best;
+    PathShape bestShape;
+    bool haveBest = false;
     for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
-        const SpanningTree tree = trees.preferring(cells, startCell, preference);
-        CoveragePath candidate =
-            pathFromWalk(robot, start, walker.walk(tree, start, closedTour_), closedTour_);
-        measurePath(candidate, graph);
-        if (best.waypoints.empty() || candidate.turns < best.turns ||
-            (candidate.turns == best.turns && candidate.lengthMetres < best.lengthMetres - 1e-9))
-            best = std::move(candidate);
+        SpanningTree tree = trees.preferring(cells, startCell, preference);
+        const PathShape shape = walker.walkShape(tree, start, closedTour_);
+        if (!haveBest || shape.turns() < bestShape.turns() ||
+            (shape.turns() == bestShape.turns() && shape.lengthMetres() < bestShape.lengthMetres() - 1e-9)) {
+            best = std::move(tree);
+            bestShape = shape;
+            haveBest = true;
+        }
     }
-    return best;
+    CoveragePath path = pathFromWalk(robot, start, walker.walk(best, start, closedTour_), closedTour_);
+    measurePath(path, graph);
+    return path;
 }
 
 std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, const RegionAllocation& regions,
@@ -44,14 +53,22 @@ std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, con
                                                      const ProgressReporter& progress) const {
     const std::size_t robots = regions.startCell.size();
     const auto regionCells = cellsByRobot(regions);
-    std::vector<int> scratchIndex(graph.size(), -1);
-    std::vector<CoveragePath> paths;
-    for (std::size_t robot = 0; robot < robots; ++robot) {
+    // Regions are planned side by side, each into its own slot: the same paths whatever the thread count.
+    std::vector<std::vector<int>> scratchIndex(static_cast<std::size_t>(workerThreads()));
+    std::vector<CoveragePath> paths(robots);
+    std::mutex progressMutex;
+    std::size_t finished = 0;
+    progress.report("paths", 0.0);
+    parallelFor(robots, [&](std::size_t robot, int worker) {
         progress.throwIfCancelled();
-        progress.report("paths", static_cast<double>(robot) / static_cast<double>(robots));
-        paths.push_back(regionPath(graph, regionCells[robot], regions.startCell[robot],
-                                   static_cast<int>(robot), starts[robot], scratchIndex));
-    }
+        std::vector<int>& scratch = scratchIndex[static_cast<std::size_t>(worker)];
+        if (scratch.size() != graph.size())
+            scratch.assign(graph.size(), -1);
+        paths[robot] = regionPath(graph, regionCells[robot], regions.startCell[robot],
+                                  static_cast<int>(robot), starts[robot], scratch);
+        const std::lock_guard lock(progressMutex);
+        progress.report("paths", static_cast<double>(++finished) / static_cast<double>(robots));
+    });
     progress.report("paths", 1.0);
     return paths;
 }

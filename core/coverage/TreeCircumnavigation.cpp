@@ -26,6 +26,52 @@ MapPoint nearestSubCell(const Cell& cell, MapPoint point) {
     return best;
 }
 
+// Collects the walk's waypoints.
+class WaypointSink {
+  public:
+    explicit WaypointSink(std::vector<Waypoint>& path) : path_(path) {}
+    void push(const Waypoint& waypoint) { path_.push_back(waypoint); }
+    [[nodiscard]] const Waypoint& back() const { return path_.back(); }
+    [[nodiscard]] const Waypoint& front() const { return path_.front(); }
+
+  private:
+    std::vector<Waypoint>& path_;
+};
+
+// Measures the path pathFromWalk would make of the walk: the start point first when the walk does not
+// begin there, and back to it at the end of a closed tour.
+class ShapeSink {
+  public:
+    ShapeSink(MapPoint start, bool closed) : start_(start), closed_(closed) {}
+    void push(const Waypoint& waypoint) {
+        if (!haveFirst_) {
+            haveFirst_ = true;
+            first_ = waypoint;
+            startIsOnWalk_ = std::hypot(waypoint.x - start_.x, waypoint.y - start_.y) < 1e-9;
+            if (!startIsOnWalk_)
+                shape_.add(start_.x, start_.y);
+        }
+        last_ = waypoint;
+        shape_.add(waypoint.x, waypoint.y);
+    }
+    [[nodiscard]] const Waypoint& back() const { return last_; }
+    [[nodiscard]] const Waypoint& front() const { return first_; }
+    [[nodiscard]] PathShape finish() {
+        if (haveFirst_ && closed_ && !startIsOnWalk_)
+            shape_.add(start_.x, start_.y);
+        return shape_;
+    }
+
+  private:
+    MapPoint start_;
+    bool closed_;
+    bool haveFirst_ = false;
+    bool startIsOnWalk_ = true;
+    Waypoint first_;
+    Waypoint last_;
+    PathShape shape_;
+};
+
 } // namespace
 
 // Appends the cell's sub-cells and tree neighbours, counter-clockwise round it from the north-west.
@@ -65,8 +111,9 @@ Waypoint TreeCircumnavigation::waypointAt(const SpanningTree& tree, int node, Ma
     return {point.x, point.y, id, cell.classValue, cell.speedMetresPerSecond, cell.fieldOfView(), 0.0};
 }
 
-void TreeCircumnavigation::emit(const SpanningTree& tree, std::vector<Waypoint>& path, int& previousNode,
-                                int node, MapPoint point) {
+template <typename Sink>
+void TreeCircumnavigation::emit(const SpanningTree& tree, Sink& path, int& previousNode, int node,
+                                MapPoint point) {
     if (previousNode >= 0 && !adjacent(tree, previousNode, node)) {
         // The tree path between the two cells, without its ends.
         std::vector<int> up;
@@ -93,17 +140,32 @@ void TreeCircumnavigation::emit(const SpanningTree& tree, std::vector<Waypoint>&
             if (adjacent(tree, last, next))
                 continue; // a bridge the walk does not need
             const Waypoint& from = path.back();
-            path.push_back(waypointAt(
-                tree, between[i], nearestSubCell(graph_.cell(tree.cellOf(between[i])), {from.x, from.y})));
+            path.push(waypointAt(tree, between[i],
+                                 nearestSubCell(graph_.cell(tree.cellOf(between[i])), {from.x, from.y})));
             ++bridgeVisits_;
             last = between[i];
         }
     }
-    path.push_back(waypointAt(tree, node, point));
+    path.push(waypointAt(tree, node, point));
     previousNode = node;
 }
 
 std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPoint start, bool closed) {
+    std::vector<Waypoint> path;
+    path.reserve(tree.size() * 4 + 2);
+    WaypointSink sink(path);
+    traverse(tree, start, closed, sink);
+    return path;
+}
+
+PathShape TreeCircumnavigation::walkShape(const SpanningTree& tree, MapPoint start, bool closed) {
+    ShapeSink sink(start, closed);
+    traverse(tree, start, closed, sink);
+    return sink.finish();
+}
+
+template <typename Sink>
+void TreeCircumnavigation::traverse(const SpanningTree& tree, MapPoint start, bool closed, Sink& path) {
     // Frames keep their items in one arena, used as a stack: no allocation per cell.
     struct Frame {
         int node;
@@ -111,11 +173,9 @@ std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPo
         std::size_t end;
         std::size_t next;
     };
-    std::vector<Waypoint> path;
-    path.reserve(tree.size() * 4 + 2);
     bridgeVisits_ = 0;
     if (tree.size() == 0)
-        return path;
+        return;
     int previousNode = -1;
     std::vector<int>& arena = arena_;
     arena.clear();
@@ -160,7 +220,6 @@ std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPo
     // The walk may end deep in a subtree; returning goes through emit so it is bridged like any step.
     if (closed)
         emit(tree, path, previousNode, root, {path.front().x, path.front().y});
-    return path;
 }
 
 } // namespace mcpp

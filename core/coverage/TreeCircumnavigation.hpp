@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/coverage/PathShape.hpp"
 #include "core/coverage/SpanningTree.hpp"
 #include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
@@ -20,6 +21,9 @@ class TreeCircumnavigation {
 
     // Starts at the root cell's sub-cell nearest `start`; a closed walk ends back at that sub-cell.
     [[nodiscard]] std::vector<Waypoint> walk(const SpanningTree& tree, MapPoint start, bool closed);
+    // The length and turns of the path pathFromWalk would make of walk(tree, start, closed), without
+    // storing it: choosing between trees this way keeps one path in memory instead of two.
+    [[nodiscard]] PathShape walkShape(const SpanningTree& tree, MapPoint start, bool closed);
     // Waypoints of the last walk that pass a cell again to bridge cells that do not touch.
     [[nodiscard]] int bridgeVisits() const { return bridgeVisits_; }
 
@@ -27,8 +31,9 @@ class TreeCircumnavigation {
     void appendSlots(const SpanningTree& tree, int node, std::vector<int>& out);
     [[nodiscard]] bool adjacent(const SpanningTree& tree, int a, int b) const;
     [[nodiscard]] Waypoint waypointAt(const SpanningTree& tree, int node, MapPoint point) const;
-    void emit(const SpanningTree& tree, std::vector<Waypoint>& path, int& previousNode, int node,
-              MapPoint point);
+    template <typename Sink> void traverse(const SpanningTree& tree, MapPoint start, bool closed, Sink& sink);
+    template <typename Sink>
+    void emit(const SpanningTree& tree, Sink& sink, int& previousNode, int node, MapPoint point);
 
     const CellGraph& graph_;
     std::array<std::vector<std::pair<double, int>>, 4> sides_;

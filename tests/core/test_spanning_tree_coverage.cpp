@@ -1,5 +1,7 @@
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
+#include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -24,6 +26,44 @@ QString violations(const PlanningProblem& problem, const Plan& plan) {
 class SpanningTreeCoverageTest : public QObject {
     Q_OBJECT
   private slots:
+    // Trees are chosen by the shape of their walk without storing it: it must be the shape of the path.
+    void walkShapeIsThePathsShape_data() {
+        QTest::addColumn<int>("seed");
+        QTest::addColumn<bool>("closed");
+        for (int seed = 1; seed <= 12; ++seed)
+            QTest::addRow("seed %d", seed) << seed << (seed % 3 != 0);
+    }
+
+    void walkShapeIsThePathsShape() {
+        QFETCH(int, seed);
+        QFETCH(bool, closed);
+        test::RandomMapSpec spec;
+        spec.seed = static_cast<unsigned>(seed);
+        spec.landCovers = 1 + seed % 4;
+        spec.obstacleFraction = 0.05 * (seed % 4);
+        spec.fovPixels = seed % 2 == 0 ? 1.0 : 0.5;
+        spec.robots = 1 + seed % 5;
+        const PlanningProblem problem = test::randomProblem(spec);
+        const Plan plan = planOf(problem);
+        const auto cells = cellsByRobot(plan.regions);
+        std::vector<int> scratch(plan.cells.size(), -1);
+        const SpanningTreeBuilder trees(plan.cells, scratch);
+        TreeCircumnavigation walker(plan.cells);
+        for (std::size_t robot = 0; robot < cells.size(); ++robot) {
+            for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
+                const SpanningTree tree =
+                    trees.preferring(cells[robot], plan.regions.startCell[robot], preference);
+                const MapPoint start = problem.starts[robot];
+                const PathShape shape = walker.walkShape(tree, start, closed);
+                CoveragePath path =
+                    pathFromWalk(static_cast<int>(robot), start, walker.walk(tree, start, closed), closed);
+                measurePath(path, plan.cells);
+                QCOMPARE(shape.turns(), path.turns);
+                QCOMPARE(shape.lengthMetres(), path.lengthMetres);
+            }
+        }
+    }
+
     void singleCellIsASquareTour() {
         auto problem = test::uniformProblem(1, 1, 10.0, {}, {});
         problem.starts = {

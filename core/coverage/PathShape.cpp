@@ -1,0 +1,34 @@
+#include "core/coverage/PathShape.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcpp {
+
+void PathShape::add(double x, double y) {
+    if (!havePoint_) {
+        havePoint_ = true;
+        lastX_ = x;
+        lastY_ = y;
+        return;
+    }
+    const double dx = x - lastX_;
+    const double dy = y - lastY_;
+    lastX_ = x;
+    lastY_ = y;
+    const double length = std::sqrt(dx * dx + dy * dy);
+    length_ += length;
+    if (length < 1e-9)
+        return;
+    const double ux = dx / length;
+    const double uy = dy / length;
+    if (haveDirection_ && std::abs(ux * directionY_ - uy * directionX_) +
+                                  std::max(0.0, -(ux * directionX_ + uy * directionY_)) >
+                              1e-6)
+        ++turns_;
+    directionX_ = ux;
+    directionY_ = uy;
+    haveDirection_ = true;
+}
+
+} // namespace mcpp

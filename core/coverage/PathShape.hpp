@@ -1,0 +1,25 @@
+#pragma once
+
+namespace mcpp {
+
+// The length and turns of a polyline fed one point at a time, by the same rules as measurePath and
+// countTurns (zero-length steps skipped, a U-turn counted once), so two candidate walks can be compared
+// without storing either.
+class PathShape {
+  public:
+    void add(double x, double y);
+    [[nodiscard]] int turns() const { return turns_; }
+    [[nodiscard]] double lengthMetres() const { return length_; }
+
+  private:
+    bool havePoint_ = false;
+    double lastX_ = 0.0;
+    double lastY_ = 0.0;
+    bool haveDirection_ = false;
+    double directionX_ = 0.0;
+    double directionY_ = 0.0;
+    int turns_ = 0;
+    double length_ = 0.0;
+};
+
+} // namespace mcpp
