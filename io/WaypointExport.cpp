@@ -60,6 +60,13 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
     return points;
 }
 
+// The field of view where a waypoint lies: its cell's (half the cell's side).
+double fieldOfViewAt(const Plan& plan, const Waypoint& waypoint) {
+    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= plan.cells.size())
+        return 0.0;
+    return plan.cells.cell(waypoint.cell).fieldOfView();
+}
+
 // The speed a robot is told to drive on the segment ending at this waypoint.
 double commandedSpeed(const ExportContext& context, const Waypoint& waypoint) {
     return context.settings.cruiseSpeedMetresPerSecond > 0.0 ? context.settings.cruiseSpeedMetresPerSecond
@@ -234,7 +241,7 @@ Status writeWaypointCsv(const ExportContext& context, int robot, const std::stri
                 internal::formatShortest(waypoint.y) + "," + coordinate(point.longitude) + "," +
                 coordinate(point.latitude) + "," + std::to_string(waypoint.classValue) + "," +
                 internal::formatShortest(waypoint.speedMetresPerSecond) + "," +
-                internal::formatShortest(waypoint.fieldOfViewMetres) + "," +
+                internal::formatShortest(fieldOfViewAt(context.plan, waypoint)) + "," +
                 internal::formatShortest(waypoint.cumulativeSeconds) + "\n";
     }
     return internal::writeFileAtomically(path, text);

@@ -6,6 +6,7 @@
 namespace mcpp {
 
 void PathShape::add(double x, double y) {
+    ++points_;
     if (!havePoint_) {
         havePoint_ = true;
         lastX_ = x;

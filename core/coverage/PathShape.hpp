@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+
 namespace mcpp {
 
 // The length and turns of a polyline fed one point at a time, by the same rules as measurePath and
@@ -10,6 +12,7 @@ class PathShape {
     void add(double x, double y);
     [[nodiscard]] int turns() const { return turns_; }
     [[nodiscard]] double lengthMetres() const { return length_; }
+    [[nodiscard]] std::size_t points() const { return points_; }
 
   private:
     bool havePoint_ = false;
@@ -20,6 +23,7 @@ class PathShape {
     double directionY_ = 0.0;
     int turns_ = 0;
     double length_ = 0.0;
+    std::size_t points_ = 0;
 };
 
 } // namespace mcpp

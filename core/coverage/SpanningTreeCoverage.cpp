@@ -43,7 +43,8 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
             haveBest = true;
         }
     }
-    CoveragePath path = pathFromWalk(robot, start, walker.walk(best, start, closedTour_), closedTour_);
+    CoveragePath path =
+        pathFromWalk(robot, start, walker.walk(best, start, closedTour_, bestShape.points()), closedTour_);
     measurePath(path, graph);
     return path;
 }

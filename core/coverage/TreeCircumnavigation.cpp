@@ -108,7 +108,7 @@ bool TreeCircumnavigation::adjacent(const SpanningTree& tree, int a, int b) cons
 Waypoint TreeCircumnavigation::waypointAt(const SpanningTree& tree, int node, MapPoint point) const {
     const int id = tree.cellOf(node);
     const Cell& cell = graph_.cell(id);
-    return {point.x, point.y, id, cell.classValue, cell.speedMetresPerSecond, cell.fieldOfView(), 0.0};
+    return {point.x, point.y, id, cell.classValue, cell.speedMetresPerSecond, 0.0};
 }
 
 template <typename Sink>
@@ -150,9 +150,10 @@ void TreeCircumnavigation::emit(const SpanningTree& tree, Sink& path, int& previ
     previousNode = node;
 }
 
-std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPoint start, bool closed) {
+std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPoint start, bool closed,
+                                                 std::size_t capacity) {
     std::vector<Waypoint> path;
-    path.reserve(tree.size() * 4 + 2);
+    path.reserve(std::max(capacity, tree.size() * 4 + 2));
     WaypointSink sink(path);
     traverse(tree, start, closed, sink);
     return path;

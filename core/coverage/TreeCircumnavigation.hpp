@@ -20,7 +20,10 @@ class TreeCircumnavigation {
     explicit TreeCircumnavigation(const CellGraph& graph) : graph_(graph) {}
 
     // Starts at the root cell's sub-cell nearest `start`; a closed walk ends back at that sub-cell.
-    [[nodiscard]] std::vector<Waypoint> walk(const SpanningTree& tree, MapPoint start, bool closed);
+    // `capacity`: room to reserve, when the caller knows the length (walkShape's points): a walk of millions
+    // of waypoints that outgrows its vector costs a copy and twice the memory.
+    [[nodiscard]] std::vector<Waypoint> walk(const SpanningTree& tree, MapPoint start, bool closed,
+                                             std::size_t capacity = 0);
     // The length and turns of the path pathFromWalk would make of walk(tree, start, closed), without
     // storing it: choosing between trees this way keeps one path in memory instead of two.
     [[nodiscard]] PathShape walkShape(const SpanningTree& tree, MapPoint start, bool closed);

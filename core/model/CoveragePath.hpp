@@ -6,14 +6,14 @@
 namespace mcpp {
 
 // A point of a robot's path, with the land cover and speed of the cell it lies in. A segment is travelled
-// half at the speed of the waypoint it leaves and half at the speed of the one it reaches.
+// half at the speed of the waypoint it leaves and half at the speed of the one it reaches. Kept small: a
+// large map's paths hold tens of millions of them (the field of view there is the cell's, half its side).
 struct Waypoint {
     double x = 0.0;
     double y = 0.0;
     int cell = -1;               // cell of the plan's cell graph the point lies in
     std::int32_t classValue = 0; // land cover of that cell
     double speedMetresPerSecond = 0.0;
-    double fieldOfViewMetres = 0.0;
     double cumulativeSeconds = 0.0; // time from the start to reach this point
 };
 

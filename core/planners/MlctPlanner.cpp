@@ -25,14 +25,18 @@ void MlctPlanner::run(PlanningRun& run) const {
     const ParameterValues& parameters = run.parameters();
     const ProgressReporter& progress = run.progress();
     Plan& plan = run.plan();
-    const QuadTree tree = run.stage("quadtree", [&] {
-        return QuadTreeBuilder{}.build(problem.grid, problem.classes, DecompositionOptions::from(parameters),
-                                       progress);
-    });
-    plan.cells = run.stage("topology", [&] {
-        progress.report("topology", 0.0);
-        return cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
-    });
+    // The quadtree holds every node of the hierarchy: freed once the cell graph is built, it leaves room for
+    // the paths on large maps.
+    plan.cells = [&] {
+        const QuadTree tree = run.stage("quadtree", [&] {
+            return QuadTreeBuilder{}.build(problem.grid, problem.classes,
+                                           DecompositionOptions::from(parameters), progress);
+        });
+        return run.stage("topology", [&] {
+            progress.report("topology", 0.0);
+            return cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
+        });
+    }();
     const std::vector<int> startCells = run.locateStarts();
     plan.regions = run.stage("allocation", [&] {
         const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));

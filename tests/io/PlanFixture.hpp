@@ -35,7 +35,7 @@ inline Waypoint makeWaypoint(double x, double y, int cell, std::int32_t classVal
     waypoint.cell = cell;
     waypoint.classValue = classValue;
     waypoint.speedMetresPerSecond = speed;
-    waypoint.fieldOfViewMetres = fov;
+    static_cast<void>(fov); // the cell's: half its side
     waypoint.cumulativeSeconds = seconds;
     return waypoint;
 }
