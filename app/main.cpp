@@ -1,6 +1,8 @@
 #include "app/BatchRunner.hpp"
 #include "app/CommandLine.hpp"
 #include "app/GuiLauncher.hpp"
+#include "core/model/MemoryBudget.hpp"
+#include "core/model/ParallelFor.hpp"
 
 #include <QGuiApplication>
 #include <QMessageLogContext>
@@ -8,6 +10,7 @@
 #include <QtGlobal>
 #include <iostream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -24,6 +27,7 @@ int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     qInstallMessageHandler(batchMessageHandler);
+    mcpp::setWorkerThreads(options.threads);
     int qtArgumentCount = 1;
     char* qtArguments[] = {programName, nullptr};
     const QGuiApplication application(qtArgumentCount, qtArguments);
@@ -34,7 +38,16 @@ int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
 
 } // namespace
 
+// Plans may use most of the machine's memory; beyond it the planner says so, with a FOV that would fit.
+void setMemoryBudgetFromMachine() {
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long pageSize = sysconf(_SC_PAGE_SIZE);
+    if (pages > 0 && pageSize > 0)
+        mcpp::setMemoryBudgetBytes(static_cast<std::int64_t>(pages) * pageSize / 10 * 8);
+}
+
 int main(int argc, char* argv[]) {
+    setMemoryBudgetFromMachine();
     const std::vector<std::string> arguments(argv + 1, argv + argc);
     const auto parsed = mcpp::app::CommandLine::parse(arguments);
     if (!parsed.ok()) {

@@ -1,5 +1,6 @@
 #include "core/decomposition/LandCoverSamples.hpp"
 
+#include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <algorithm>
@@ -23,6 +24,14 @@ std::string describeMetres(double metres) {
     std::ostringstream text;
     text.precision(6);
     text << metres;
+    return text.str();
+}
+
+std::string describeGigabytes(std::int64_t bytes) {
+    std::ostringstream text;
+    text.setf(std::ios::fixed);
+    text.precision(1);
+    text << static_cast<double>(bytes) / 1e9 << " GB";
     return text.str();
 }
 
@@ -149,14 +158,30 @@ SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelC
 }
 
 void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows) {
-    // Beyond this the plan would take minutes and gigabytes: say so rather than appear to hang.
-    constexpr std::int64_t bottomCellBudget = 8'000'000;
-    if (columns * rows > bottomCellBudget)
-        throw PlanningError(Kind::InvalidParameter,
-                            "the smallest field of view (" + describeMetres(fovMin) + " m) makes " +
-                                std::to_string(columns) + " x " + std::to_string(rows) +
-                                " bottom cells (more than 8 million): raise the field of "
-                                "view of the classes or crop the raster");
+    // Said before any work starts, rather than failing for want of memory minutes later.
+    const std::int64_t budget = memoryBudgetBytes();
+    const std::int64_t needed = columns * rows * bytesPerBottomCell;
+    if (needed <= budget)
+        return;
+    // Cells shrink with the square of the field of view: the smallest FOV whose grid fits, rounded up.
+    const double width = static_cast<double>(columns) * 2.0 * fovMin;
+    const double height = static_cast<double>(rows) * 2.0 * fovMin;
+    double fitting = fovMin * std::sqrt(static_cast<double>(needed) / static_cast<double>(budget));
+    const auto fits = [&](double fov) {
+        const double cells = std::ceil(width / (2.0 * fov)) * std::ceil(height / (2.0 * fov));
+        return cells * static_cast<double>(bytesPerBottomCell) <= static_cast<double>(budget);
+    };
+    const double step = std::pow(10.0, std::floor(std::log10(fitting)) - 1.0); // two significant digits
+    fitting = std::ceil(fitting / step) * step;
+    while (!fits(fitting))
+        fitting += step;
+    throw PlanningError(Kind::InvalidParameter,
+                        "the smallest field of view (" + describeMetres(fovMin) + " m) makes " +
+                            std::to_string(columns) + " x " + std::to_string(rows) +
+                            " bottom cells, which need " + describeGigabytes(needed) +
+                            " of memory to plan; this machine allows " + describeGigabytes(budget) +
+                            ". A smallest field of view of " + describeMetres(fitting) +
+                            " m would fit: raise the field of view of the classes, " + "or crop the raster");
 }
 
 double overlapLength(double a0, double a1, double b0, double b1) {

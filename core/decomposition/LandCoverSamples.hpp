@@ -51,8 +51,8 @@ void checkDecompositionInputs(const ClassGrid& grid, const ClassTable& classes,
 // pixel codes are moved in when the pixels themselves serve.
 [[nodiscard]] SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelCodes,
                                     double squareSize, std::int64_t columns, std::int64_t rows);
-// Throws PlanningError, with the FOV that makes it so, when a grid of columns x rows smallest cells would
-// take minutes and gigabytes to plan.
+// Throws PlanningError when a grid of columns x rows smallest cells would need more memory than
+// memoryBudgetBytes() allows, naming the FOV that makes it so and the smallest FOV that would fit.
 void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows);
 
 // Length of the overlap of [a0, a1) and [b0, b1).

@@ -1,4 +1,5 @@
 #include "core/decomposition/QuadTreeBuilder.hpp"
+#include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningError.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -198,6 +199,26 @@ class QuadTreeBuilderTest : public QObject {
             QVERIFY2(std::string(error.what()).find("5000 x 5000 bottom cells") != std::string::npos,
                      error.what());
         }
+        // With less memory the message names the smallest FOV that fits, and that FOV does fit.
+        const std::int64_t machine = memoryBudgetBytes();
+        setMemoryBudgetBytes(std::int64_t{400} * 1000 * 1000); // a million bottom cells
+        try {
+            (void)QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), tinyFov, {});
+            QFAIL("a grid above the memory budget must be refused");
+        } catch (const PlanningError& error) {
+            const std::string message = error.what();
+            QVERIFY2(message.find("10.0 GB of memory") != std::string::npos, error.what());
+            QVERIFY2(message.find("this machine allows 0.4 GB") != std::string::npos, error.what());
+            const std::string marker = "A smallest field of view of ";
+            const auto at = message.find(marker);
+            QVERIFY2(at != std::string::npos, error.what());
+            const double fitting = std::stod(message.substr(at + marker.size()));
+            QVERIFY2(fitting >= 5.0 && fitting <= 5.5, error.what()); // 10 km / 2 FOV <= 1000 cells a side
+            ClassTable fittingFov({{1, "grass", 0, 1.0, fitting, true}});
+            const QuadTree tree = QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), fittingFov, {});
+            QVERIFY(tree.activeCount() <= 1000000);
+        }
+        setMemoryBudgetBytes(machine);
         DecompositionOptions badPurity;
         badPurity.purityTolerance = std::nan("");
         QVERIFY_THROWS_EXCEPTION(PlanningError,
