@@ -1,5 +1,7 @@
 #include "render/PlanRenderer.hpp"
 
+#include "core/outlines/OutlineTracer.hpp"
+#include "core/outlines/RegionLabels.hpp"
 #include "io/PlanExport.hpp"
 #include "render/RobotPalette.hpp"
 
@@ -31,11 +33,6 @@ QRectF deviceRectOf(const QTransform& worldToDevice, const Cell& cell) {
     return deviceRectOf(worldToDevice, cell.minX, cell.minY, cell.maxX(), cell.maxY());
 }
 
-int robotOf(const Plan& plan, int cell) {
-    const auto& owners = plan.regions.robotOfCell;
-    return static_cast<std::size_t>(cell) < owners.size() ? owners[static_cast<std::size_t>(cell)] : -1;
-}
-
 void drawArrow(QPainter& painter, QPointF tip, QPointF direction, const QColor& colour) {
     const double length = std::hypot(direction.x(), direction.y());
     if (length <= 0.0)
@@ -61,12 +58,94 @@ void drawPolylineInPieces(QPainter& painter, const QPolygonF& line) {
     }
 }
 
+// Whether two rectangles share a point; unlike QRectF::intersects, true for a straight line's flat bounds.
+bool touches(const QRectF& a, const QRectF& b) {
+    return a.left() <= b.right() && b.left() <= a.right() && a.top() <= b.bottom() && b.top() <= a.bottom();
+}
+
+// An image and its halvings down to about a thousand pixels a side: a zoomed-out view draws a small image
+// instead of shrinking millions of pixels at every repaint.
+template <typename GridImage> std::vector<GridImage> halvings(QImage image, const QRectF& world) {
+    std::vector<GridImage> pyramid;
+    if (image.isNull())
+        return pyramid;
+    pyramid.push_back({std::move(image), world});
+    while (std::max(pyramid.back().image.width(), pyramid.back().image.height()) > 1024) {
+        const QImage& previous = pyramid.back().image;
+        QImage half = previous.scaled(std::max(1, previous.width() / 2), std::max(1, previous.height() / 2),
+                                      Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+        pyramid.push_back({std::move(half), world});
+    }
+    return pyramid;
+}
+
+// The parts of a line (world coordinates) that cross the visible area, in device coordinates, with points
+// closer than a pixel to the previous one dropped: a zoomed-out view of millions of waypoints draws
+// thousands, and a zoomed-in view only what is on screen.
+std::vector<QPolygonF> visibleRuns(const QPolygonF& line, const QTransform& worldToDevice,
+                                   const QRectF& visible) {
+    // The transform is a scale and a shift (north up): mapped by hand, as this runs over every point.
+    const double scaleX = worldToDevice.m11(), scaleY = worldToDevice.m22();
+    const double shiftX = worldToDevice.dx(), shiftY = worldToDevice.dy();
+    const double left = visible.left(), right = visible.right(), top = visible.top(),
+                 bottom = visible.bottom();
+    std::vector<QPolygonF> runs;
+    QPolygonF run;
+    double previousX = line.front().x() * scaleX + shiftX;
+    double previousY = line.front().y() * scaleY + shiftY;
+    for (qsizetype i = 1; i < line.size(); ++i) {
+        const double x = line[i].x() * scaleX + shiftX;
+        const double y = line[i].y() * scaleY + shiftY;
+        const bool outside = std::max(x, previousX) < left || std::min(x, previousX) > right ||
+                             std::max(y, previousY) < top || std::min(y, previousY) > bottom;
+        if (outside) {
+            if (run.size() > 1)
+                runs.push_back(std::move(run));
+            run = QPolygonF();
+        } else {
+            if (run.isEmpty())
+                run << QPointF(previousX, previousY);
+            const QPointF last = run.back();
+            if (i + 1 == line.size() || std::abs(x - last.x()) + std::abs(y - last.y()) >= 1.0)
+                run << QPointF(x, y);
+        }
+        previousX = x;
+        previousY = y;
+    }
+    if (run.size() > 1)
+        runs.push_back(std::move(run));
+    return runs;
+}
+
+// Arrows at even on-screen spacing show the direction of travel.
+void drawArrows(QPainter& painter, const QPolygonF& line, const QColor& colour) {
+    double untilNextArrow = kArrowSpacingPixels / 2.0;
+    for (qsizetype i = 1; i < line.size(); ++i) {
+        const QPointF from = line[i - 1];
+        const QPointF to = line[i];
+        const double segment = QLineF(from, to).length();
+        double along = 0.0;
+        while (segment - along >= untilNextArrow) {
+            along += untilNextArrow;
+            const QPointF tip = from + (to - from) * (along / segment);
+            drawArrow(painter, tip, to - from, colour);
+            untilNextArrow = kArrowSpacingPixels;
+        }
+        untilNextArrow -= segment - along;
+    }
+}
+
 } // namespace
+
+std::vector<PlanRenderer::GridImage> PlanRenderer::pyramidOf(QImage image, const QRectF& world) {
+    return halvings<GridImage>(std::move(image), world);
+}
 
 void PlanRenderer::setMap(const ClassGrid* grid, const ClassTable* classes) {
     grid_ = grid;
     classes_ = classes;
     landCoverImage_ = QImage();
+    landCoverPyramid_.clear();
     if (grid_ == nullptr || classes_ == nullptr || grid_->columns <= 0 || grid_->rows <= 0)
         return;
     if (grid_->values.size() <
@@ -90,10 +169,94 @@ void PlanRenderer::setMap(const ClassGrid* grid, const ClassTable* classes) {
             line[column] = found == colours.end() ? unknown : found->second;
         }
     }
+    landCoverPyramid_ =
+        pyramidOf(landCoverImage_, QRectF(grid_->originX, grid_->minY(), grid_->maxX() - grid_->originX,
+                                          grid_->originY - grid_->minY()));
 }
 
 void PlanRenderer::setPlan(const Plan* plan) {
     plan_ = plan;
+    prepareRegions();
+    preparePaths();
+}
+
+void PlanRenderer::prepareRegions() {
+    regionPyramid_.clear();
+    regionBorders_.clear();
+    unreachableOutlines_.clear();
+    if (plan_ == nullptr || plan_->regions.robotOfCell.empty() || plan_->cells.empty())
+        return;
+    const LabelGrid labels = regionLabels(*plan_);
+    // One image pixel per sub-cell, or per block of them on maps beyond 16 million sub-cells.
+    constexpr std::int64_t largestImage = 16'000'000;
+    int step = 1;
+    while (static_cast<std::int64_t>(labels.columns / step) * (labels.rows / step) > largestImage)
+        ++step;
+    const int width = (labels.columns + step - 1) / step;
+    const int height = (labels.rows + step - 1) / step;
+    QImage image(width, height, QImage::Format_ARGB32);
+    const QRgb unreachable = qRgba(120, 0, 0, 50);
+    for (int row = 0; row < height; ++row) {
+        auto* line = reinterpret_cast<QRgb*>(image.scanLine(row));
+        for (int column = 0; column < width; ++column) {
+            const std::int32_t label = labels.at(std::min(column * step + step / 2, labels.columns - 1),
+                                                 std::min(row * step + step / 2, labels.rows - 1));
+            if (label >= 0) {
+                const QColor colour = RobotPalette::colour(label);
+                line[column] = qRgba(colour.red(), colour.green(), colour.blue(), 80);
+            } else {
+                line[column] = label == unreachableLabel ? unreachable : qRgba(0, 0, 0, 0);
+            }
+        }
+    }
+    const double size = labels.pixelSize * step;
+    regionPyramid_ =
+        pyramidOf(image, QRectF(labels.originX, labels.originY - height * size, width * size, height * size));
+
+    for (const OutlinePolygon& outline : traceOutlines(labels)) {
+        auto& target = outline.label == unreachableLabel ? unreachableOutlines_ : regionBorders_;
+        if (outline.label < 0 && outline.label != unreachableLabel)
+            continue;
+        const auto add = [&](const OutlineRing& ring) {
+            QPolygonF polygon;
+            polygon.reserve(static_cast<qsizetype>(ring.size()) + 1);
+            for (const GridVertex& vertex : ring)
+                polygon << QPointF(labels.x(vertex.column), labels.y(vertex.row));
+            polygon << polygon.front();
+            target.push_back({polygon, polygon.boundingRect()});
+        };
+        add(outline.exterior);
+        for (const OutlineRing& hole : outline.holes)
+            add(hole);
+    }
+}
+
+void PlanRenderer::preparePaths() {
+    pathLines_.clear();
+    meanStepMetres_ = 0.0;
+    if (plan_ == nullptr)
+        return;
+    double length = 0.0;
+    std::size_t steps = 0;
+    for (const CoveragePath& path : plan_->paths) {
+        if (path.waypoints.size() < 2)
+            continue;
+        for (std::size_t i = 1; i < path.waypoints.size(); ++i)
+            length += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x,
+                                 path.waypoints[i].y - path.waypoints[i - 1].y);
+        steps += path.waypoints.size() - 1;
+        PathLine line;
+        line.robot = path.robot;
+        const std::vector<Waypoint> corners = io::turningPoints(path);
+        line.points.reserve(static_cast<qsizetype>(corners.size()) + 1);
+        for (const Waypoint& waypoint : corners)
+            line.points << QPointF(waypoint.x, waypoint.y);
+        if (path.closed && line.points.front() != line.points.back())
+            line.points << line.points.front();
+        line.bounds = line.points.boundingRect();
+        pathLines_.push_back(std::move(line));
+    }
+    meanStepMetres_ = steps == 0 ? 0.0 : length / static_cast<double>(steps);
 }
 
 void PlanRenderer::setStarts(std::vector<MapPoint> starts) {
@@ -137,9 +300,9 @@ void PlanRenderer::paint(QPainter& painter, const QTransform& worldToDevice, con
         if (layers_.quadTree)
             paintQuadTree(painter, worldToDevice, deviceArea);
         if (layers_.regions)
-            paintRegionBorders(painter, worldToDevice);
+            paintRegionBorders(painter, worldToDevice, deviceArea);
         if (layers_.paths)
-            paintPaths(painter, worldToDevice);
+            paintPaths(painter, worldToDevice, deviceArea);
         painter.setOpacity(1.0);
     }
     if (layers_.starts)
@@ -147,115 +310,90 @@ void PlanRenderer::paint(QPainter& painter, const QTransform& worldToDevice, con
     painter.restore();
 }
 
-void PlanRenderer::paintLandCover(QPainter& painter, const QTransform& worldToDevice,
-                                  const QRectF& deviceArea) const {
-    if (grid_ == nullptr || landCoverImage_.isNull())
+void PlanRenderer::drawGridImage(QPainter& painter, const GridImage& grid, const QTransform& worldToDevice,
+                                 const QRectF& deviceArea) const {
+    if (grid.image.isNull())
         return;
-    const QRectF full =
-        deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY);
+    const QRectF full = deviceRectOf(worldToDevice, grid.world.left(), grid.world.top(), grid.world.right(),
+                                     grid.world.bottom());
     const QRectF visible = full.intersected(deviceArea);
     if (visible.isEmpty())
         return;
     // Only the visible pixels are drawn, on whole-pixel boundaries, so deep zooms stay fast and crisp.
-    const double pixelsPerColumn = full.width() / grid_->columns;
-    const double pixelsPerRow = full.height() / grid_->rows;
-    const int firstColumn =
-        std::clamp(static_cast<int>(std::floor((visible.left() - full.left()) / pixelsPerColumn)), 0,
-                   grid_->columns - 1);
+    const int columns = grid.image.width();
+    const int rows = grid.image.height();
+    const double pixelsPerColumn = full.width() / columns;
+    const double pixelsPerRow = full.height() / rows;
+    const int firstColumn = std::clamp(
+        static_cast<int>(std::floor((visible.left() - full.left()) / pixelsPerColumn)), 0, columns - 1);
     const int lastColumn =
         std::clamp(static_cast<int>(std::ceil((visible.right() - full.left()) / pixelsPerColumn)),
-                   firstColumn + 1, grid_->columns);
-    const int firstRow = std::clamp(static_cast<int>(std::floor((visible.top() - full.top()) / pixelsPerRow)),
-                                    0, grid_->rows - 1);
-    const int lastRow =
-        std::clamp(static_cast<int>(std::ceil((visible.bottom() - full.top()) / pixelsPerRow)), firstRow + 1,
-                   grid_->rows);
+                   firstColumn + 1, columns);
+    const int firstRow =
+        std::clamp(static_cast<int>(std::floor((visible.top() - full.top()) / pixelsPerRow)), 0, rows - 1);
+    const int lastRow = std::clamp(
+        static_cast<int>(std::ceil((visible.bottom() - full.top()) / pixelsPerRow)), firstRow + 1, rows);
     const QRect source(firstColumn, firstRow, lastColumn - firstColumn, lastRow - firstRow);
     const QRectF target(full.left() + firstColumn * pixelsPerColumn, full.top() + firstRow * pixelsPerRow,
                         source.width() * pixelsPerColumn, source.height() * pixelsPerRow);
-    // Zoomed out, smoothing averages many raster pixels into one; zoomed in, the pixels stay square.
+    // Zoomed out, smoothing averages many pixels into one; zoomed in, the pixels stay square.
     painter.setRenderHint(QPainter::SmoothPixmapTransform, pixelsPerColumn < 1.0);
-    painter.drawImage(target, landCoverImage_, source);
+    painter.drawImage(target, grid.image, source);
+}
+
+void PlanRenderer::drawPyramid(QPainter& painter, const std::vector<GridImage>& pyramid,
+                               const QTransform& worldToDevice, const QRectF& deviceArea) const {
+    if (pyramid.empty())
+        return;
+    // The smallest level whose pixels are still at least one device pixel wide.
+    const double deviceWidth = pyramid.front().world.width() * std::abs(worldToDevice.m11());
+    std::size_t level = 0;
+    while (level + 1 < pyramid.size() && pyramid[level + 1].image.width() >= deviceWidth)
+        ++level;
+    drawGridImage(painter, pyramid[level], worldToDevice, deviceArea);
+}
+
+void PlanRenderer::paintLandCover(QPainter& painter, const QTransform& worldToDevice,
+                                  const QRectF& deviceArea) const {
+    if (grid_ != nullptr)
+        drawPyramid(painter, landCoverPyramid_, worldToDevice, deviceArea);
 }
 
 void PlanRenderer::paintRegions(QPainter& painter, const QTransform& worldToDevice,
                                 const QRectF& deviceArea) const {
-    const CellGraph& graph = plan_->cells;
-    std::unordered_map<int, std::vector<QRectF>> rectanglesByRobot;
-    for (std::size_t id = 0; id < graph.size(); ++id) {
-        const int robot = robotOf(*plan_, static_cast<int>(id));
-        if (robot < 0)
-            continue;
-        const QRectF rectangle = deviceRectOf(worldToDevice, graph.cell(static_cast<int>(id)));
-        if (rectangle.intersects(deviceArea))
-            rectanglesByRobot[robot].push_back(rectangle);
-    }
-    painter.setRenderHint(QPainter::Antialiasing, false);
-    painter.setPen(Qt::NoPen);
-    for (const auto& [robot, rectangles] : rectanglesByRobot) {
-        QColor fill = RobotPalette::colour(robot);
-        fill.setAlpha(80);
-        painter.setBrush(fill);
-        painter.drawRects(rectangles.data(), static_cast<int>(rectangles.size()));
-    }
+    drawPyramid(painter, regionPyramid_, worldToDevice, deviceArea);
 }
 
-void PlanRenderer::paintRegionBorders(QPainter& painter, const QTransform& worldToDevice) const {
-    // A dark line wherever two neighbouring cells belong to different robots, so regions read as areas.
-    const CellGraph& graph = plan_->cells;
-    std::vector<QLineF> borders;
-    for (std::size_t a = 0; a < graph.size(); ++a) {
-        const int first = static_cast<int>(a);
-        const int firstRobot = robotOf(*plan_, first);
-        for (const int second : graph.neighbours(first)) {
-            if (second <= first)
-                continue;
-            if (robotOf(*plan_, second) == firstRobot)
-                continue;
-            const Cell& one = graph.cell(first);
-            const Cell& other = graph.cell(second);
-            const double tolerance = 1e-6 * std::max(one.size, other.size);
-            const double bottom = std::max(one.minY, other.minY);
-            const double top = std::min(one.maxY(), other.maxY());
-            const double left = std::max(one.minX, other.minX);
-            const double right = std::min(one.maxX(), other.maxX());
-            if (std::abs(one.maxX() - other.minX) < tolerance ||
-                std::abs(other.maxX() - one.minX) < tolerance) {
-                const double x = std::abs(one.maxX() - other.minX) < tolerance ? one.maxX() : one.minX;
-                borders.emplace_back(worldToDevice.map(QPointF(x, bottom)),
-                                     worldToDevice.map(QPointF(x, top)));
-            } else if (std::abs(one.maxY() - other.minY) < tolerance ||
-                       std::abs(other.maxY() - one.minY) < tolerance) {
-                const double y = std::abs(one.maxY() - other.minY) < tolerance ? one.maxY() : one.minY;
-                borders.emplace_back(worldToDevice.map(QPointF(left, y)),
-                                     worldToDevice.map(QPointF(right, y)));
-            }
-        }
-    }
+void PlanRenderer::paintRegionBorders(QPainter& painter, const QTransform& worldToDevice,
+                                      const QRectF& deviceArea) const {
+    // A dark line round every region, so regions read as areas.
+    const QRectF visible = worldToDevice.inverted().mapRect(deviceArea);
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setPen(QPen(QColor(30, 30, 30, 200), 1.5));
-    painter.drawLines(borders.data(), static_cast<int>(borders.size()));
+    painter.setBrush(Qt::NoBrush);
+    const QRectF visibleDevice = deviceArea.adjusted(-2.0, -2.0, 2.0, 2.0);
+    for (const Outline& outline : regionBorders_) {
+        if (!touches(outline.bounds, visible))
+            continue;
+        for (const QPolygonF& run : visibleRuns(outline.ring, worldToDevice, visibleDevice))
+            drawPolylineInPieces(painter, run);
+    }
 }
 
 void PlanRenderer::paintUnreachable(QPainter& painter, const QTransform& worldToDevice,
                                     const QRectF& deviceArea) const {
-    const CellGraph& graph = plan_->cells;
-    std::vector<QRectF> rectangles;
-    for (std::size_t id = 0; id < graph.size(); ++id) {
-        if (robotOf(*plan_, static_cast<int>(id)) >= 0)
-            continue;
-        const QRectF rectangle = deviceRectOf(worldToDevice, graph.cell(static_cast<int>(id)));
-        if (rectangle.intersects(deviceArea))
-            rectangles.push_back(rectangle);
+    const QRectF visible = worldToDevice.inverted().mapRect(deviceArea);
+    QPainterPath area;
+    area.setFillRule(Qt::OddEvenFill);
+    for (const Outline& outline : unreachableOutlines_) {
+        if (touches(outline.bounds, visible))
+            area.addPolygon(worldToDevice.map(outline.ring));
     }
-    if (rectangles.empty())
+    if (area.isEmpty())
         return;
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(120, 0, 0, 50));
-    painter.drawRects(rectangles.data(), static_cast<int>(rectangles.size()));
-    painter.setBrush(QBrush(QColor(140, 0, 0, 220), Qt::BDiagPattern));
-    painter.drawRects(rectangles.data(), static_cast<int>(rectangles.size()));
+    painter.fillPath(area, QBrush(QColor(140, 0, 0, 220), Qt::BDiagPattern));
 }
 
 void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDevice,
@@ -268,7 +406,10 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
         visible = visible.intersected(
             deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY));
     std::vector<std::vector<QRectF>> rectanglesByLevel(static_cast<std::size_t>(levels) + 1);
+    const double scale = std::abs(worldToDevice.m11());
     for (const Cell& cell : graph.cells()) {
+        if (cell.size * scale < kSmallestOutlinedCellPixels)
+            continue; // decided before mapping: zoomed out, most cells are too small to outline
         const QRectF rectangle = deviceRectOf(worldToDevice, cell);
         if (rectangle.width() < kSmallestOutlinedCellPixels || !rectangle.intersects(visible))
             continue;
@@ -292,66 +433,34 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
     painter.restore();
 }
 
-void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice) const {
+void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice,
+                              const QRectF& deviceArea) const {
     painter.setRenderHint(QPainter::Antialiasing, true);
     // Zoomed out, neighbouring passes sit a few pixels apart: full-width lines would hide the land cover,
     // so they thin out and fade until the user zooms in.
-    double totalLength = 0.0;
-    std::size_t segments = 0;
-    for (const CoveragePath& path : plan_->paths) {
-        for (std::size_t i = 1; i < path.waypoints.size(); ++i)
-            totalLength += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x,
-                                      path.waypoints[i].y - path.waypoints[i - 1].y);
-        segments += path.waypoints.size() > 1 ? path.waypoints.size() - 1 : 0;
-    }
-    const double meanSegmentPixels =
-        segments == 0 ? 0.0 : totalLength / static_cast<double>(segments) * std::abs(worldToDevice.m11());
-    const bool dense = meanSegmentPixels < 12.0;
-    const double arrowSpacing = kArrowSpacingPixels;
-    for (const CoveragePath& path : plan_->paths) {
-        if (path.waypoints.size() < 2)
+    const bool dense = meanStepMetres_ * std::abs(worldToDevice.m11()) < 12.0;
+    const QRectF visibleDevice = deviceArea.adjusted(-10.0, -10.0, 10.0, 10.0);
+    const QRectF visible = worldToDevice.inverted().mapRect(visibleDevice);
+    for (const PathLine& line : pathLines_) {
+        if (!touches(line.bounds, visible))
             continue;
-        // The turning points draw the same line with far fewer vertices.
-        const std::vector<Waypoint> corners = io::turningPoints(path);
-        QPolygonF line;
-        line.reserve(static_cast<qsizetype>(corners.size()) + 1);
-        for (const Waypoint& waypoint : corners)
-            line << worldToDevice.map(QPointF(waypoint.x, waypoint.y));
-        if (path.closed && line.front() != line.back())
-            line << line.front();
-
-        const QColor colour = RobotPalette::colour(path.robot);
-        // A pale casing under the line keeps it readable over any land-cover colour.
-        painter.setBrush(Qt::NoBrush);
-        if (dense) {
-            QColor faded = colour;
-            faded.setAlpha(150);
-            painter.setPen(QPen(faded, 1.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-            drawPolylineInPieces(painter, line);
-        } else {
-            painter.setPen(QPen(QColor(255, 255, 255, 190), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-            drawPolylineInPieces(painter, line);
-            painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-            drawPolylineInPieces(painter, line);
-        }
-
-        // Arrows at even on-screen spacing show the direction of travel; a dense overview has no room for
-        // them.
-        if (dense)
-            continue;
-        double untilNextArrow = arrowSpacing / 2.0;
-        for (qsizetype i = 1; i < line.size(); ++i) {
-            const QPointF from = line[i - 1];
-            const QPointF to = line[i];
-            const double segment = QLineF(from, to).length();
-            double along = 0.0;
-            while (segment - along >= untilNextArrow) {
-                along += untilNextArrow;
-                const QPointF tip = from + (to - from) * (along / segment);
-                drawArrow(painter, tip, to - from, colour);
-                untilNextArrow = arrowSpacing;
+        const QColor colour = RobotPalette::colour(line.robot);
+        QColor faded = colour;
+        faded.setAlpha(150);
+        for (const QPolygonF& run : visibleRuns(line.points, worldToDevice, visibleDevice)) {
+            // A pale casing under the line keeps it readable over any land-cover colour.
+            painter.setBrush(Qt::NoBrush);
+            if (dense) {
+                // A one-pixel cosmetic pen is drawn line by line, with no outline to fill.
+                painter.setPen(QPen(faded, 0.0));
+                painter.drawPolyline(run);
+                continue;
             }
-            untilNextArrow -= segment - along;
+            painter.setPen(QPen(QColor(255, 255, 255, 190), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            drawPolylineInPieces(painter, run);
+            painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            drawPolylineInPieces(painter, run);
+            drawArrows(painter, run, colour);
         }
     }
 }

@@ -7,6 +7,7 @@
 #include "render/MapLayers.hpp"
 
 #include <QImage>
+#include <QPolygonF>
 #include <QRectF>
 #include <QSizeF>
 #include <QTransform>
@@ -48,14 +49,44 @@ class PlanRenderer {
     [[nodiscard]] static QRgb classColour(const ClassTable& classes, std::int32_t value);
 
   private:
+    // What setPlan prepares once so that a repaint only draws: the regions as an image on the sub-cell grid,
+    // their borders and the unreachable parts as outlines, the paths as turning points.
+    struct Outline {
+        QPolygonF ring; // world coordinates, closed
+        QRectF bounds;
+    };
+    struct PathLine {
+        int robot = 0;
+        QPolygonF points; // world coordinates, turning points only
+        QRectF bounds;
+    };
+    // An image covering a rectangle of the map, drawn like the land cover.
+    struct GridImage {
+        QImage image;
+        QRectF world; // x = west..east, y = south..north
+    };
+    void prepareRegions();
+    void preparePaths();
+    void drawGridImage(QPainter& painter, const GridImage& grid, const QTransform& worldToDevice,
+                       const QRectF& deviceArea) const;
+    void drawPyramid(QPainter& painter, const std::vector<GridImage>& pyramid,
+                     const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    [[nodiscard]] static std::vector<GridImage> pyramidOf(QImage image, const QRectF& world);
     void paintLandCover(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintRegions(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
-    void paintRegionBorders(QPainter& painter, const QTransform& worldToDevice) const;
+    void paintRegionBorders(QPainter& painter, const QTransform& worldToDevice,
+                            const QRectF& deviceArea) const;
     void paintUnreachable(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintQuadTree(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
-    void paintPaths(QPainter& painter, const QTransform& worldToDevice) const;
+    void paintPaths(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
 
+    std::vector<GridImage> landCoverPyramid_; // halved again and again, for zoomed-out views
+    std::vector<GridImage> regionPyramid_;
+    std::vector<Outline> regionBorders_;
+    std::vector<Outline> unreachableOutlines_;
+    std::vector<PathLine> pathLines_;
+    double meanStepMetres_ = 0.0; // mean distance between consecutive waypoints
     const ClassGrid* grid_ = nullptr;
     const ClassTable* classes_ = nullptr;
     const Plan* plan_ = nullptr;

@@ -1,9 +1,12 @@
+#include "core/planners/PlannerRegistry.hpp"
 #include "render/PlanImage.hpp"
 #include "render/PlanRenderer.hpp"
 #include "render/RobotPalette.hpp"
+#include "tests/support/SyntheticMaps.hpp"
 
 #include <QFile>
 #include <QImage>
+#include <QPainter>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -133,6 +136,60 @@ class TestPlanRenderer : public QObject {
             sawHatch = pixel.red() > pixel.green() + 40 && pixel.red() > pixel.blue() + 40;
         }
         QVERIFY(sawHatch);
+    }
+
+    // A planned map seen whole, half-way in and close up: the paths show in their robot's colour at every
+    // zoom (thin lines while passes are a few pixels apart, full lines with arrows closer in).
+    void pathsShowAtEveryZoom_data() {
+        QTest::addColumn<double>("pixelsPerMetre");
+        QTest::newRow("whole map") << 0.0;
+        QTest::newRow("passes 2 px apart") << 0.4;
+        QTest::newRow("passes 8 px apart") << 1.6;
+        QTest::newRow("close up") << 6.0;
+    }
+
+    void pathsShowAtEveryZoom() {
+        QFETCH(double, pixelsPerMetre);
+        PlanningProblem problem = test::uniformProblem(60, 40, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 5, 5), test::pixelCentre(problem.grid, 50, 30)};
+        problem.planner = defaultPlannerChoice("mcpp-mlct");
+        const Plan plan = makePlanner("mcpp-mlct")->plan(problem, {});
+        QTransform transform = render::PlanRenderer::fitTransform(problem.grid, QSizeF(400, 300));
+        if (pixelsPerMetre > 0.0) {
+            const double x = problem.grid.originX + 100.0, y = problem.grid.originY - 100.0;
+            transform = QTransform(pixelsPerMetre, 0.0, 0.0, -pixelsPerMetre, 200.0 - x * pixelsPerMetre,
+                                   150.0 + y * pixelsPerMetre);
+        }
+        const auto draw = [&](bool paths) {
+            render::PlanRenderer renderer;
+            renderer.setMap(&problem.grid, &problem.classes);
+            renderer.setPlan(&plan);
+            render::MapLayers layers;
+            layers.quadTree = false;
+            layers.regions = false;
+            layers.starts = false;
+            layers.paths = paths;
+            renderer.setLayers(layers);
+            QImage image(400, 300, QImage::Format_ARGB32_Premultiplied);
+            image.fill(Qt::white);
+            QPainter painter(&image);
+            renderer.paint(painter, transform, QRectF(0, 0, 400, 300));
+            return image;
+        };
+        const QImage without = draw(false);
+        const QImage with = draw(true);
+        int changed = 0;
+        int onMap = 0;
+        for (int y = 0; y < with.height(); ++y) {
+            for (int x = 0; x < with.width(); ++x) {
+                const QColor before = without.pixelColor(x, y);
+                onMap += before != QColor(Qt::white);
+                changed += !near(before, with.pixelColor(x, y), 40);
+            }
+        }
+        // The passes are at most 5 m apart: lines cover a good share of the map at any zoom.
+        QVERIFY2(changed * 10 > onMap,
+                 qPrintable(QStringLiteral("%1 of %2 map pixels show a path").arg(changed).arg(onMap)));
     }
 
     void writesPngAndSvg() {
