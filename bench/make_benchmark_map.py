@@ -4,6 +4,9 @@
     make_benchmark_map.py uniform SIDE ROBOTS FOLDER
         SIDE x SIDE pixels of 10 m, one class with a 5 m field of view (so a pixel is one planning cell),
         15% obstacle pixels and ROBOTS starts at free pixel centres, both drawn with a fixed seed.
+    make_benchmark_map.py forest SIDE ROBOTS FOLDER
+        SIDE x SIDE pixels of 10 m of forest (5 m field of view: one planning cell per pixel, the most cells a
+        map of that size can have) with 60 x 60-pixel lakes every 300 pixels; starts spread over the map.
     make_benchmark_map.py blocks COLUMNS ROWS ROBOTS FOLDER
         COLUMNS x ROWS pixels of 2.5 m in blocks of 100 x 100 pixels of the synthetic sample's four classes
         (forest 5 m, shrubland 10 m, grassland 20 m field of view; lakes impassable); starts in
@@ -108,10 +111,30 @@ def blocks(columns, rows, robots, folder):
     return tif, starts
 
 
+def forest(side, robots, folder):
+    plain = bytes([FOREST]) * side
+    lakes = bytearray(plain)
+    for column in range(100, side, 300):
+        lakes[column : column + 60] = bytes([LAKE]) * len(lakes[column : column + 60])
+    lakes = bytes(lakes)
+    tif = write_map(folder, f"forest_{side}", side, side, 10.0,
+                    lambda row: lakes if 100 <= row % 300 < 160 else plain)
+    starts = []
+    for i in range(robots):
+        # On a diagonal, clear of the lakes (which start 100 pixels into every 300).
+        pixel = 50 + (i * (side - 100)) // max(1, robots - 1) if robots > 1 else side // 2
+        pixel = pixel - pixel % 300 + 50
+        starts.append((WEST + (pixel + 0.5) * 10.0, NORTH - (pixel + 0.5) * 10.0))
+    return tif, starts
+
+
 def main():
     kind = sys.argv[1]
     if kind == "uniform":
         tif, starts = uniform(int(sys.argv[2]), int(sys.argv[3]), sys.argv[4])
+        folder = sys.argv[4]
+    elif kind == "forest":
+        tif, starts = forest(int(sys.argv[2]), int(sys.argv[3]), sys.argv[4])
         folder = sys.argv[4]
     else:
         tif, starts = blocks(int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), sys.argv[5])
