@@ -6,8 +6,10 @@
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/ComparisonExport.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "io/PlanExport.hpp"
+#include "render/ComparisonSheet.hpp"
 #include "render/PlanImageWriter.hpp"
 
 #include <algorithm>
@@ -17,6 +19,8 @@
 #include <filesystem>
 #include <mutex>
 #include <numeric>
+#include <optional>
+#include <sys/resource.h>
 #include <system_error>
 #include <thread>
 #include <unistd.h>
@@ -58,6 +62,34 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+double peakMemoryMegabytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// What comparison.png prints under a planner's map.
+render::ComparisonPanel comparisonPanel(const io::ComparisonRow& row, const Plan* plan) {
+    render::ComparisonPanel panel;
+    panel.title = QString::fromStdString(row.planner);
+    panel.plan = plan;
+    if (row.outcome != io::ComparisonRow::Outcome::Planned) {
+        panel.caption << QString::fromStdString(io::outcomeName(row.outcome) + ": " + row.message);
+        return panel;
+    }
+    int turns = 0;
+    for (const RobotMetrics& robot : row.metrics.robots)
+        turns += robot.turns;
+    panel.caption << QStringLiteral("makespan %1 h, %2 x the lower bound")
+                         .arg(row.metrics.makespanSeconds / 3600.0, 0, 'f', 2)
+                         .arg(row.metrics.ratio, 0, 'f', 3)
+                  << QStringLiteral("%1 turns, covered %2 %, planned in %3 s")
+                         .arg(turns)
+                         .arg(row.metrics.coveredFraction * 100.0, 0, 'f', 1)
+                         .arg(row.planningMilliseconds / 1000.0, 0, 'f', 2);
+    return panel;
+}
+
 template <typename T> T valueOrBadInput(io::Result<T> result) {
     if (!result)
         badInput(result.error());
@@ -72,8 +104,11 @@ BatchRunner::BatchRunner(CommandLineOptions options, std::ostream& output, std::
 
 int BatchRunner::run() {
     try {
-        execute();
-        return 0;
+        if (options_.comparePlanners.empty())
+            execute();
+        else
+            executeComparison();
+        return exitCode_;
     } catch (const BatchFailure& failure) {
         diagnostics_ << "mcpp: " << failure.what() << '\n' << std::flush;
         return failure.exitCode();
@@ -99,7 +134,7 @@ void BatchRunner::execute() {
     processMilliseconds_.emplace_back("plan", millisecondsSince(started));
     for (const auto& warning : plan.warnings())
         warn(warning);
-    writeOutputs(plan);
+    writeOutputs(plan, options_.outputDirectory);
     printSummary(plan);
 }
 
@@ -144,6 +179,8 @@ void BatchRunner::applyOverrides() {
     if (!planner)
         badInput(fieldName(io::MissionField::of(Part::Planner)) + ": " +
                  unknownPlannerMessage(mission_.planner.planner));
+    if (!options_.comparePlanners.empty())
+        return; // each compared planner takes the --param values it declares (comparedPlanner)
     for (const ParameterOverride& parameter : options_.parameters) {
         const ParameterSpec* spec = findParameter(planner->parameters, parameter.key);
         if (spec == nullptr)
@@ -229,13 +266,13 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
     }
 }
 
-void BatchRunner::writeOutputs(const Plan& plan) {
+void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     namespace fs = std::filesystem;
-    const fs::path directory(options_.outputDirectory);
+    const fs::path directory(folder);
     std::error_code code;
     fs::create_directories(directory, code);
     if (code || !fs::is_directory(directory)) {
-        badInput("--out: cannot create folder \"" + options_.outputDirectory + "\"" +
+        badInput("--out: cannot create folder \"" + folder + "\"" +
                  (code ? ": " + code.message() : std::string(": a file of that name exists")));
     }
     io::ExportContext context{plan, raster_.georeference, classes_, mission_.exports};
@@ -267,7 +304,8 @@ void BatchRunner::writeOutputs(const Plan& plan) {
     for (const std::size_t i : order)
         scheduled.push_back(outputs[i]);
     const auto started = std::chrono::steady_clock::now();
-    const std::vector<io::Status> scheduledResults = writeInParallel(context, scheduled, report.size());
+    const std::vector<io::Status> scheduledResults =
+        writeInParallel(context, scheduled, report.size(), folder);
     std::vector<io::Status> results(outputs.size());
     for (std::size_t k = 0; k < order.size(); ++k)
         results[order[k]] = scheduledResults[k];
@@ -289,12 +327,13 @@ void BatchRunner::writeOutputs(const Plan& plan) {
             internalError(namingFile((directory / outputs[i].name).string(), all[i].error()));
         warn(outputs[i].name + " not written: " + all[i].error());
     }
-    removeStaleRobotFiles(robots);
+    removeStaleRobotFiles(robots, folder);
 }
 
 std::vector<io::Status> BatchRunner::writeInParallel(const io::ExportContext& context,
-                                                     const std::vector<Output>& outputs, std::size_t later) {
-    const std::filesystem::path directory(options_.outputDirectory);
+                                                     const std::vector<Output>& outputs, std::size_t later,
+                                                     const std::string& folder) {
+    const std::filesystem::path directory(folder);
     std::vector<io::Status> results(outputs.size());
     std::atomic<std::size_t> next{0};
     std::mutex progressMutex;
@@ -318,10 +357,10 @@ std::vector<io::Status> BatchRunner::writeInParallel(const io::ExportContext& co
     return results;
 }
 
-void BatchRunner::removeStaleRobotFiles(int robots) const {
+void BatchRunner::removeStaleRobotFiles(int robots, const std::string& folder) const {
     // Waypoint files of robots a previous run in this folder had and this one has not would mislead.
     namespace fs = std::filesystem;
-    const fs::path directory(options_.outputDirectory);
+    const fs::path directory(folder);
     std::error_code code;
     for (int robot = robots;; ++robot) {
         bool removed = false;
@@ -331,6 +370,126 @@ void BatchRunner::removeStaleRobotFiles(int robots) const {
         if (!removed)
             break;
     }
+}
+
+PlannerChoice BatchRunner::comparedPlanner(const std::string& name) const {
+    PlannerChoice choice = switchPlanner(mission_.planner, name);
+    const auto planner = findPlannerDescription(name);
+    for (const ParameterOverride& parameter : options_.parameters) {
+        const ParameterSpec* spec = findParameter(planner->parameters, parameter.key);
+        if (spec == nullptr)
+            continue; // checked against all compared planners in executeComparison
+        std::string problem;
+        const auto value = spec->parse(parameter.value, &problem);
+        if (!value)
+            badInput(parameter.flag + ": " + problem);
+        choice.parameters.set(parameter.key, *value);
+    }
+    return choice;
+}
+
+void BatchRunner::executeComparison() {
+    namespace fs = std::filesystem;
+    assembleMission();
+    applyOverrides();
+    for (const ParameterOverride& parameter : options_.parameters) {
+        const bool declared = std::any_of(
+            options_.comparePlanners.begin(), options_.comparePlanners.end(), [&](const std::string& name) {
+                return findParameter(findPlannerDescription(name)->parameters, parameter.key) != nullptr;
+            });
+        if (!declared)
+            badInput(parameter.flag + ": none of the compared planners has a parameter " + parameter.key);
+    }
+    auto started = std::chrono::steady_clock::now();
+    loadRaster();
+    const double readMilliseconds = millisecondsSince(started);
+    checkOutputFolder();
+    const std::size_t robots = mission_.robots.size();
+    std::vector<io::ComparisonRow> rows;
+    std::vector<std::optional<Plan>> plans;
+    for (std::size_t i = 0; i < options_.comparePlanners.size(); ++i) {
+        const std::string& name = options_.comparePlanners[i];
+        progress_.report("planner " + std::to_string(i + 1) + " of " +
+                             std::to_string(options_.comparePlanners.size()) + ": " + name,
+                         0.0);
+        io::ComparisonRow row;
+        row.planner = name;
+        plans.emplace_back();
+        if (findPlannerDescription(name)->singleRobot && robots > 1) {
+            row.outcome = io::ComparisonRow::Outcome::Skipped;
+            row.message = name + " plans for one robot and the mission has " + std::to_string(robots);
+            rows.push_back(row);
+            continue;
+        }
+        try {
+            mission_.planner = comparedPlanner(name);
+            const PlanningProblem problem = prepareProblem();
+            for (const auto& warning : pendingWarnings_)
+                warn(name + ": " + warning);
+            pendingWarnings_.clear();
+            started = std::chrono::steady_clock::now();
+            Plan plan = runPlanner(problem);
+            row.planningMilliseconds = millisecondsSince(started);
+            processMilliseconds_ = {{"read_raster", readMilliseconds}, {"plan", row.planningMilliseconds}};
+            writeOutputs(plan, (fs::path(options_.outputDirectory) / name).string());
+            row.metrics = plan.metrics;
+            row.peakMemoryMegabytes = peakMemoryMegabytes();
+            plans.back() = std::move(plan);
+        } catch (const BatchFailure& failure) {
+            row.outcome = io::ComparisonRow::Outcome::Failed;
+            row.message = failure.what();
+            warn(name + " failed: " + row.message);
+        }
+        rows.push_back(row);
+    }
+    writeComparison(rows, plans);
+    const auto count = [&](io::ComparisonRow::Outcome outcome) {
+        return std::count_if(rows.begin(), rows.end(),
+                             [&](const io::ComparisonRow& row) { return row.outcome == outcome; });
+    };
+    // Nothing planned means the mission itself is at fault: bad input, as for one planner.
+    if (count(io::ComparisonRow::Outcome::Failed) > 0)
+        exitCode_ = count(io::ComparisonRow::Outcome::Planned) > 0 ? BatchFailure::somePlannersFailed
+                                                                   : BatchFailure::badInput;
+}
+
+void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
+                                  const std::vector<std::optional<Plan>>& plans) {
+    namespace fs = std::filesystem;
+    const fs::path directory(options_.outputDirectory);
+    std::error_code code;
+    fs::create_directories(directory, code);
+    if (const io::Status status = io::writeComparisonCsv(rows, (directory / "comparison.csv").string());
+        !status)
+        internalError(status.error());
+    if (const io::Status status = io::writeComparisonJson(rows, (directory / "comparison.json").string());
+        !status)
+        internalError(status.error());
+    std::vector<render::ComparisonPanel> panels;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        panels.push_back(comparisonPanel(rows[i], plans[i] ? &*plans[i] : nullptr));
+    QString error;
+    if (!render::writeComparisonSheet(raster_.grid, classes_, panels,
+                                      QString::fromStdString((directory / "comparison.png").string()),
+                                      &error))
+        warn("comparison.png not written: " + error.toStdString());
+    if (options_.quiet)
+        return;
+    output_ << "mcpp: compared " << rows.size() << " planners on " << mission_.robots.size() << " robots\n";
+    for (const io::ComparisonRow& row : rows) {
+        output_ << "mcpp:   " << row.planner << ": ";
+        if (row.outcome != io::ComparisonRow::Outcome::Planned) {
+            output_ << io::outcomeName(row.outcome) << " (" << row.message << ")\n";
+            continue;
+        }
+        int turns = 0;
+        for (const RobotMetrics& robot : row.metrics.robots)
+            turns += robot.turns;
+        output_ << "ratio " << formatNumber(row.metrics.ratio, 3) << ", makespan "
+                << formatNumber(row.metrics.makespanSeconds, 1) << " s, " << turns << " turns, planned in "
+                << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
+    }
+    output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 
 void BatchRunner::printSummary(const Plan& plan) const {

@@ -5,11 +5,13 @@
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
 #include "core/model/PlanningProblem.hpp"
+#include "io/ComparisonExport.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
 #include "io/MissionInputs.hpp"
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -27,6 +29,10 @@ class BatchRunner {
 
   private:
     void execute();
+    // --compare: every named planner on the same mission, one after another.
+    void executeComparison();
+    // The mission's planner switched to `name`, with the --param values that planner declares.
+    [[nodiscard]] PlannerChoice comparedPlanner(const std::string& name) const;
     void assembleMission();
     void applyOverrides();
     void loadRaster();
@@ -38,12 +44,16 @@ class BatchRunner {
         int robot; // -1 for whole-plan formats
         std::string name;
     };
-    void writeOutputs(const Plan& plan);
+    void writeOutputs(const Plan& plan, const std::string& folder);
     // Writes the outputs on options_.threads threads; later = outputs still to come, for the progress.
     std::vector<io::Status> writeInParallel(const io::ExportContext& context,
-                                            const std::vector<Output>& outputs, std::size_t later);
-    void removeStaleRobotFiles(int robots) const;
+                                            const std::vector<Output>& outputs, std::size_t later,
+                                            const std::string& folder);
+    void removeStaleRobotFiles(int robots, const std::string& folder) const;
     void printSummary(const Plan& plan) const;
+    // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.
+    void writeComparison(const std::vector<io::ComparisonRow>& rows,
+                         const std::vector<std::optional<Plan>>& plans);
     void warn(const std::string& message);
 
     // Where a value came from, so errors name the flag or the mission file and field.
@@ -59,6 +69,7 @@ class BatchRunner {
     ClassTable classes_;
     std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
     std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan
+    int exitCode_ = 0;
 };
 
 } // namespace mcpp::app

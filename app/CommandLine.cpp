@@ -38,7 +38,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--purity", "F", true, false},         FlagSpec{"--missing-as-obstacle", "", true, false},
     FlagSpec{"--open-paths", "", true, false},      FlagSpec{"--quiet", "", true, false},
     FlagSpec{"--dense-paths", "", true, false},     FlagSpec{"--cell-polygons", "", true, false},
-    FlagSpec{"--threads", "N", true, false},
+    FlagSpec{"--threads", "N", true, false},        FlagSpec{"--compare", "NAMES", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -272,6 +272,27 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             options.parameters.push_back({"closed_tour", "false", "--open-paths"});
         } else if (flag == "--quiet") {
             options.quiet = true;
+        } else if (flag == "--compare") {
+            options.comparePlanners.clear();
+            if (trimmedText(value) == "all") {
+                options.comparePlanners = availablePlanners();
+                continue;
+            }
+            std::string_view rest = value;
+            while (!rest.empty()) {
+                const auto comma = rest.find(',');
+                const std::string planner(trimmedText(rest.substr(0, comma)));
+                rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+                if (planner.empty())
+                    continue;
+                if (!findPlannerDescription(planner))
+                    return failure("--compare: " + unknownPlannerMessage(planner));
+                if (std::find(options.comparePlanners.begin(), options.comparePlanners.end(), planner) ==
+                    options.comparePlanners.end())
+                    options.comparePlanners.push_back(planner);
+            }
+            if (options.comparePlanners.empty())
+                return failure("--compare needs planner names separated by commas, or all");
         } else if (flag == "--threads") {
             const auto threads = parsePositiveInteger(value);
             if (!threads || *threads > 64)
@@ -302,6 +323,8 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
     const auto given = [&seen](std::string_view flag) {
         return std::find(seen.begin(), seen.end(), flag) != seen.end();
     };
+    if (given("--compare") && given("--planner"))
+        return failure("--compare and --planner cannot be used together: --compare names the planners");
     if (!positionals.empty()) {
         options.missionPath = positionals.front();
         for (const std::string_view flag : {"--raster", "--classes", "--preset", "--start", "--start-crs"}) {
@@ -357,6 +380,10 @@ std::string CommandLine::usage() {
            "                           failing\n"
            "  --open-paths             same as --param closed_tour=false: paths stop at their last cell\n"
            "                           instead of returning to the start\n"
+           "  --compare NAMES          run several planners on the mission (comma-separated names, or all)\n"
+           "                           one after another: each one's outputs in DIR/<name>/, and in DIR\n"
+           "                           comparison.csv, comparison.json and comparison.png. One-robot\n"
+           "                           planners are skipped when there are several robots\n"
            "  --dense-paths            paths in plan.geojson and plan.gpkg through every sub-cell centre\n"
            "                           instead of only their turning points\n"
            "  --cell-polygons          add a polygon per cell to plan.gpkg (layer cells; big on large maps)\n"
@@ -397,7 +424,8 @@ std::string CommandLine::usage() {
         text << "  " << preset.name << std::string(nameWidth - preset.name.size() + 2, ' ')
              << preset.description << '\n';
     }
-    text << "\nExit status: 0 success, 2 bad input (one line on stderr says what), 1 internal error.\n";
+    text << "\nExit status: 0 success, 2 bad input (one line on stderr says what), 1 internal error,\n"
+            "3 with --compare when some planners failed (their rows in comparison.csv say why).\n";
     return text.str();
 }
 

@@ -48,9 +48,10 @@ struct CommandLineOptions {
     std::vector<ParameterOverride> parameters; // --param, --purity, --open-paths, in the order given
     bool missingAsObstacle = false;
     bool quiet = false;
-    bool densePaths = false;            // --dense-paths
-    bool cellPolygons = false;          // --cell-polygons
-    int threads = defaultThreadCount(); // --threads: writers run side by side
+    std::vector<std::string> comparePlanners; // --compare, resolved to planner names ("all" expanded)
+    bool densePaths = false;                  // --dense-paths
+    bool cellPolygons = false;                // --cell-polygons
+    int threads = defaultThreadCount();       // --threads: writers run side by side
 
     [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }
 };

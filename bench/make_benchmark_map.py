@@ -23,14 +23,9 @@ import sys
 
 WEST = 431000.0
 NORTH = 5400000.0
-PROJECTION = (
-    'PROJCS["WGS_1984_UTM_Zone_33N",GEOGCS["GCS_WGS_1984",DATUM["D_WGS_1984",'
-    'SPHEROID["WGS_1984",6378137.0,298.257223563]],PRIMEM["Greenwich",0.0],'
-    'UNIT["Degree",0.0174532925199433]],PROJECTION["Transverse_Mercator"],'
-    'PARAMETER["False_Easting",500000.0],PARAMETER["False_Northing",0.0],'
-    'PARAMETER["Central_Meridian",15.0],PARAMETER["Scale_Factor",0.9996],'
-    'PARAMETER["Latitude_Of_Origin",0.0],UNIT["Meter",1.0]]'
-)
+# WGS 84 / UTM zone 33N, in the ESRI flavour GDAL reads beside a raw band: the synthetic sample's own.
+PROJECTION = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "samples", "synthetic",
+                               "synthetic.prj"), encoding="ascii").read().strip()
 CLASSES = """value,name,speed_mps,fov_m,passable,color
 1,Dense forest,0.8,5,true,#2e7d32
 2,Shrubland,1.5,10,true,#a5a05a

@@ -72,6 +72,7 @@ class TestBatchEndToEnd : public QObject {
     void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
     void outputsAreTheSameWhateverTheThreadCount();
+    void comparePlannersOnOneMission();
     void everyPlannerRunsFromTheCommandLine_data();
     void everyPlannerRunsFromTheCommandLine();
     void badInputExitsTwoWithOneLine_data();
@@ -153,6 +154,77 @@ void TestBatchEndToEnd::outputsAreTheSameWhateverTheThreadCount() {
             QCOMPARE(a, b);
         }
     }
+}
+
+// --compare: each planner's own outputs in its folder, one row each in comparison.csv and .json with the
+// figures of that planner's report.json, the one-robot planner skipped for a three-robot mission, a sheet.
+void TestBatchEndToEnd::comparePlannersOnOneMission() {
+    const QString out = scratch_.filePath(QStringLiteral("compare"));
+    const auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare",
+                              "mcpp-mlct,darp,mstc,spiral-stc", "--out", out});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    QVERIFY2(run.standardError.contains(QStringLiteral("planner 2 of 4: darp")),
+             qPrintable(run.standardError));
+    const QDir folder(out);
+    const auto comparison = readJsonObject(folder.filePath("comparison.json"));
+    const auto planners = comparison.value("planners").toArray();
+    QCOMPARE(planners.size(), 4);
+    QFile csv(folder.filePath("comparison.csv"));
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 5);
+    const QStringList header = lines.front().split(',');
+    for (int i = 0; i < planners.size(); ++i) {
+        const auto row = planners.at(i).toObject();
+        const QString name = row.value("planner").toString();
+        const QStringList fields = lines.at(i + 1).split(',');
+        QCOMPARE(fields.at(header.indexOf("planner")), name);
+        if (name == "spiral-stc") {
+            QCOMPARE(row.value("outcome").toString(), QStringLiteral("skipped"));
+            QVERIFY(!QFileInfo::exists(folder.filePath(name)));
+            continue;
+        }
+        QCOMPARE(row.value("outcome").toString(), QStringLiteral("planned"));
+        const auto report = readJsonObject(folder.filePath(name + "/report.json"));
+        QCOMPARE(report.value("planner").toString(), name);
+        for (const char* key : {"makespan_s", "lower_bound_s", "ratio", "covered_fraction",
+                                "repeated_fraction", "unreachable_area_m2"}) {
+            QCOMPARE(row.value(key).toDouble(), report.value(key).toDouble());
+            QVERIFY2(
+                nearlyEqual(fields.at(header.indexOf(key)).toDouble(), report.value(key).toDouble(), 1e-12),
+                key);
+        }
+        const auto robots = row.value("robots").toArray();
+        const auto reportRobots = report.value("robots").toArray();
+        QCOMPARE(robots.size(), reportRobots.size());
+        int turns = 0;
+        for (int robot = 0; robot < robots.size(); ++robot) {
+            QCOMPARE(robots.at(robot).toObject().value("time_s").toDouble(),
+                     reportRobots.at(robot).toObject().value("time_s").toDouble());
+            turns += reportRobots.at(robot).toObject().value("turns").toInt();
+        }
+        QCOMPARE(row.value("turns").toInt(), turns);
+        QVERIFY(row.value("planning_ms").toDouble() > 0.0);
+        QVERIFY(QFileInfo(folder.filePath(name + "/plan.geojson")).size() > 0);
+    }
+    const QImage sheet(folder.filePath("comparison.png"));
+    QVERIFY(!sheet.isNull());
+    QVERIFY(sheet.width() >= 1000 && sheet.height() >= 1000);
+    // Coloured bars of the chart: robot colours appear below the maps.
+    bool sawRobotColour = false;
+    for (int y = sheet.height() - 300; y < sheet.height() && !sawRobotColour; y += 4)
+        for (int x = 0; x < sheet.width() && !sawRobotColour; x += 4)
+            sawRobotColour = sheet.pixelColor(x, y) == QColor(0xe6194b);
+    QVERIFY(sawRobotColour);
+
+    // Unknown names and --planner beside --compare are refused before any work.
+    auto refused =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "darp,nosuch", "--out", out});
+    QCOMPARE(refused.exitCode, 2);
+    QVERIFY(refused.standardError.contains(QStringLiteral("nosuch")));
+    refused = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "darp", "--planner",
+                       "mstc", "--out", out});
+    QCOMPARE(refused.exitCode, 2);
 }
 
 void TestBatchEndToEnd::samplesAreValidMissions_data() {

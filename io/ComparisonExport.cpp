@@ -1,0 +1,130 @@
+#include "io/ComparisonExport.hpp"
+
+#include "io/internal/JsonValue.hpp"
+#include "io/internal/TextFiles.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace mcpp::io {
+
+namespace {
+
+using internal::formatShortest;
+using internal::JsonValue;
+
+int totalTurns(const PlanMetrics& metrics) {
+    return std::accumulate(metrics.robots.begin(), metrics.robots.end(), 0,
+                           [](int sum, const RobotMetrics& robot) { return sum + robot.turns; });
+}
+
+double totalLength(const PlanMetrics& metrics) {
+    return std::accumulate(metrics.robots.begin(), metrics.robots.end(), 0.0,
+                           [](double sum, const RobotMetrics& robot) { return sum + robot.lengthMetres; });
+}
+
+template <typename Field> std::string joined(const PlanMetrics& metrics, Field field) {
+    std::string text;
+    for (const RobotMetrics& robot : metrics.robots)
+        text += (text.empty() ? "" : ";") + formatShortest(field(robot));
+    return text;
+}
+
+double stageMilliseconds(const PlanMetrics& metrics, const std::string& stage) {
+    for (const auto& [name, milliseconds] : metrics.stageMilliseconds)
+        if (name == stage)
+            return milliseconds;
+    return 0.0;
+}
+
+// Every stage any planner reported, in order of first appearance, for the CSV's columns.
+std::vector<std::string> stageNames(const std::vector<ComparisonRow>& rows) {
+    std::vector<std::string> names;
+    for (const ComparisonRow& row : rows)
+        for (const auto& [name, milliseconds] : row.metrics.stageMilliseconds)
+            if (std::find(names.begin(), names.end(), name) == names.end())
+                names.push_back(name);
+    return names;
+}
+
+} // namespace
+
+std::string outcomeName(ComparisonRow::Outcome outcome) {
+    switch (outcome) {
+    case ComparisonRow::Outcome::Planned:
+        return "planned";
+    case ComparisonRow::Outcome::Failed:
+        return "failed";
+    case ComparisonRow::Outcome::Skipped:
+        break;
+    }
+    return "skipped";
+}
+
+Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::string& path) {
+    const std::vector<std::string> stages = stageNames(rows);
+    std::string text = "planner,outcome,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
+                       "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
+                       "planning_ms,peak_memory_mb";
+    for (const std::string& stage : stages)
+        text += "," + stage + "_ms";
+    text += ",message\n";
+    for (const ComparisonRow& row : rows) {
+        const PlanMetrics& metrics = row.metrics;
+        const bool planned = row.outcome == ComparisonRow::Outcome::Planned;
+        const auto figure = [&](double value) { return planned ? formatShortest(value) : std::string(); };
+        text += internal::quoteCsvField(row.planner) + "," + outcomeName(row.outcome) + "," +
+                figure(metrics.makespanSeconds) + "," + figure(metrics.lowerBoundSeconds) + "," +
+                figure(metrics.ratio) + "," + figure(totalLength(metrics)) + "," +
+                (planned ? std::to_string(totalTurns(metrics)) : std::string()) + "," +
+                figure(metrics.coveredFraction) + "," + figure(metrics.repeatedFraction) + "," +
+                figure(metrics.unreachableAreaSquareMetres) + "," +
+                joined(metrics, [](const RobotMetrics& robot) { return robot.lengthMetres; }) + "," +
+                joined(metrics, [](const RobotMetrics& robot) { return robot.timeSeconds; }) + "," +
+                joined(metrics, [](const RobotMetrics& robot) { return static_cast<double>(robot.turns); }) +
+                "," + figure(row.planningMilliseconds) + "," + figure(row.peakMemoryMegabytes);
+        for (const std::string& stage : stages)
+            text += "," + (planned ? formatShortest(stageMilliseconds(metrics, stage)) : std::string());
+        text += "," + internal::quoteCsvField(row.message) + "\n";
+    }
+    return internal::writeFileAtomically(path, text);
+}
+
+Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::string& path) {
+    JsonValue root = JsonValue::object();
+    JsonValue& planners = root.add("planners", JsonValue::array());
+    for (const ComparisonRow& row : rows) {
+        JsonValue& item = planners.push(JsonValue::object());
+        item.add("planner", row.planner);
+        item.add("outcome", outcomeName(row.outcome));
+        if (!row.message.empty())
+            item.add("message", row.message);
+        if (row.outcome != ComparisonRow::Outcome::Planned)
+            continue;
+        const PlanMetrics& metrics = row.metrics;
+        item.add("makespan_s", metrics.makespanSeconds);
+        item.add("lower_bound_s", metrics.lowerBoundSeconds);
+        item.add("ratio", metrics.ratio);
+        item.add("total_length_m", totalLength(metrics));
+        item.add("turns", totalTurns(metrics));
+        item.add("covered_fraction", metrics.coveredFraction);
+        item.add("repeated_fraction", metrics.repeatedFraction);
+        item.add("unreachable_area_m2", metrics.unreachableAreaSquareMetres);
+        JsonValue& robots = item.add("robots", JsonValue::array());
+        for (const RobotMetrics& robot : metrics.robots) {
+            JsonValue& entry = robots.push(JsonValue::object());
+            entry.add("robot", robot.robot);
+            entry.add("length_m", robot.lengthMetres);
+            entry.add("time_s", robot.timeSeconds);
+            entry.add("turns", robot.turns);
+        }
+        JsonValue& timings = item.add("timings_ms", JsonValue::object());
+        for (const auto& [stage, milliseconds] : metrics.stageMilliseconds)
+            timings.add(stage, milliseconds);
+        item.add("planning_ms", row.planningMilliseconds);
+        item.add("peak_memory_mb", row.peakMemoryMegabytes);
+    }
+    return internal::writeFileAtomically(path, root.toText());
+}
+
+} // namespace mcpp::io

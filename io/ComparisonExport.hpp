@@ -1,0 +1,30 @@
+#pragma once
+
+#include "core/model/PlanMetrics.hpp"
+#include "io/Result.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mcpp::io {
+
+// One planner's line in a comparison of planners on the same mission.
+struct ComparisonRow {
+    enum class Outcome { Planned, Failed, Skipped };
+    std::string planner;
+    Outcome outcome = Outcome::Planned;
+    std::string message; // why it failed or was skipped
+    PlanMetrics metrics; // when planned
+    double planningMilliseconds = 0.0;
+    double peakMemoryMegabytes = 0.0; // the process's peak so far (planners run one after another)
+};
+
+[[nodiscard]] std::string outcomeName(ComparisonRow::Outcome outcome);
+
+// comparison.csv: a row per planner with the figures of its report.json, per-robot lengths and times
+// joined by ";" in one field each; comparison.json: the same, with per-robot figures as arrays.
+[[nodiscard]] Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::string& path);
+[[nodiscard]] Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::string& path);
+
+} // namespace mcpp::io

@@ -1,0 +1,138 @@
+#include "render/ComparisonSheet.hpp"
+
+#include "render/PlanImage.hpp"
+#include "render/RobotPalette.hpp"
+
+#include <QPainter>
+#include <QSaveFile>
+#include <algorithm>
+#include <cmath>
+
+namespace mcpp::render {
+
+namespace {
+
+constexpr int tileSide = 520;
+constexpr int margin = 24;
+constexpr int captionHeight = 70;
+constexpr int chartHeight = 300;
+
+int columnsFor(std::size_t panels) {
+    return static_cast<int>(std::clamp<std::size_t>(panels, 1, 3));
+}
+
+void drawPanel(QPainter& painter, const ClassGrid& grid, const ClassTable& classes,
+               const ComparisonPanel& panel, QRect area) {
+    const QRect mapArea(area.left(), area.top(), area.width(), tileSide);
+    if (panel.plan != nullptr) {
+        const QImage map = renderPlanImage(grid, classes, panel.plan, mapArea.size());
+        painter.drawImage(mapArea.left() + (mapArea.width() - map.width()) / 2,
+                          mapArea.top() + (mapArea.height() - map.height()) / 2, map);
+    } else {
+        painter.fillRect(mapArea, QColor(235, 235, 235));
+    }
+    painter.setPen(QColor(120, 120, 120));
+    painter.drawRect(mapArea.adjusted(0, 0, -1, -1));
+    QFont font = painter.font();
+    font.setPixelSize(16);
+    font.setBold(true);
+    painter.setFont(font);
+    painter.setPen(Qt::black);
+    const QRect titleBox(area.left(), mapArea.bottom() + 6, area.width(), 22);
+    painter.drawText(titleBox, Qt::AlignLeft | Qt::AlignVCenter, panel.title);
+    font.setBold(false);
+    font.setPixelSize(13);
+    painter.setFont(font);
+    const QRect captionBox(area.left(), titleBox.bottom() + 2, area.width(), captionHeight - 28);
+    painter.drawText(captionBox, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, panel.caption.join('\n'));
+}
+
+// Groups of bars, one group per planner and one bar per robot in its colour, heights in hours.
+void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QRect area) {
+    double longest = 0.0;
+    for (const ComparisonPanel& panel : panels)
+        if (panel.plan != nullptr)
+            for (const RobotMetrics& robot : panel.plan->metrics.robots)
+                longest = std::max(longest, robot.timeSeconds);
+    QFont font = painter.font();
+    font.setPixelSize(13);
+    font.setBold(true);
+    painter.setFont(font);
+    painter.setPen(Qt::black);
+    painter.drawText(QRect(area.left(), area.top(), area.width(), 20), Qt::AlignHCenter,
+                     QStringLiteral("Time per robot (hours)"));
+    font.setBold(false);
+    painter.setFont(font);
+    if (longest <= 0.0)
+        return;
+    const QRect plot = area.adjusted(60, 30, -10, -30);
+    const double hours = longest / 3600.0;
+    const double step = std::pow(10.0, std::floor(std::log10(hours)));
+    const double top = std::ceil(hours / step) * step;
+    painter.setPen(QColor(200, 200, 200));
+    for (int tick = 0; tick <= 4; ++tick) {
+        const int y = plot.bottom() - static_cast<int>(plot.height() * tick / 4.0);
+        painter.drawLine(plot.left(), y, plot.right(), y);
+        painter.setPen(Qt::black);
+        painter.drawText(QRect(area.left(), y - 9, 55, 18), Qt::AlignRight | Qt::AlignVCenter,
+                         QString::number(top * tick / 4.0, 'g', 4));
+        painter.setPen(QColor(200, 200, 200));
+    }
+    const double groupWidth = static_cast<double>(plot.width()) / static_cast<double>(panels.size());
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        const double left = plot.left() + groupWidth * static_cast<double>(i);
+        painter.setPen(Qt::black);
+        painter.drawText(QRectF(left, plot.bottom() + 4, groupWidth, 20), Qt::AlignHCenter, panels[i].title);
+        if (panels[i].plan == nullptr)
+            continue;
+        const auto& robots = panels[i].plan->metrics.robots;
+        const double barWidth = groupWidth * 0.8 / std::max<std::size_t>(robots.size(), 1);
+        for (std::size_t r = 0; r < robots.size(); ++r) {
+            const double height = plot.height() * (robots[r].timeSeconds / 3600.0) / top;
+            painter.fillRect(QRectF(left + groupWidth * 0.1 + barWidth * static_cast<double>(r),
+                                    plot.bottom() - height, barWidth * 0.9, height),
+                             RobotPalette::colour(robots[r].robot));
+        }
+    }
+}
+
+} // namespace
+
+QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
+                             const std::vector<ComparisonPanel>& panels) {
+    const int columns = columnsFor(panels.size());
+    const int rows = static_cast<int>((panels.size() + static_cast<std::size_t>(columns) - 1) /
+                                      static_cast<std::size_t>(columns));
+    const int width = margin + columns * (tileSide + margin);
+    const int height =
+        margin + std::max(rows, 1) * (tileSide + captionHeight + margin) + chartHeight + margin;
+    QImage sheet(width, height, QImage::Format_RGB32);
+    sheet.fill(Qt::white);
+    QPainter painter(&sheet);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        const int column = static_cast<int>(i) % columns;
+        const int row = static_cast<int>(i) / columns;
+        const QRect area(margin + column * (tileSide + margin),
+                         margin + row * (tileSide + captionHeight + margin), tileSide,
+                         tileSide + captionHeight);
+        drawPanel(painter, grid, classes, panels[i], area);
+    }
+    drawChart(painter, panels, QRect(margin, height - chartHeight - margin, width - 2 * margin, chartHeight));
+    painter.end();
+    return sheet;
+}
+
+bool writeComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
+                          const std::vector<ComparisonPanel>& panels, const QString& path, QString* error) {
+    const QImage sheet = renderComparisonSheet(grid, classes, panels).convertToFormat(QImage::Format_RGB888);
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || !sheet.save(&file, "PNG", 80) || !file.commit()) {
+        if (error != nullptr)
+            *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace mcpp::render

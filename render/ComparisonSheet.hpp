@@ -1,0 +1,31 @@
+#pragma once
+
+#include "core/model/ClassGrid.hpp"
+#include "core/model/ClassTable.hpp"
+#include "core/model/Plan.hpp"
+
+#include <QImage>
+#include <QString>
+#include <QStringList>
+#include <vector>
+
+namespace mcpp::render {
+
+// One planner's place on a comparison sheet: its plan (null when it failed or was skipped) and the lines
+// printed under its map.
+struct ComparisonPanel {
+    QString title;
+    QStringList caption;
+    const Plan* plan = nullptr;
+};
+
+// The plans as small multiples on one sheet, same extent and scale, each with its name and figures under
+// it, and below them a bar chart of every robot's time per planner.
+[[nodiscard]] QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
+                                           const std::vector<ComparisonPanel>& panels);
+// The sheet as a PNG, written atomically; false with a message naming the file on failure.
+[[nodiscard]] bool writeComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
+                                        const std::vector<ComparisonPanel>& panels, const QString& path,
+                                        QString* error);
+
+} // namespace mcpp::render
