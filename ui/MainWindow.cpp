@@ -7,6 +7,8 @@
 #include "render/PlanImageWriter.hpp"
 #include "ui/ClassTableEditCommand.hpp"
 #include "ui/ClassTableModel.hpp"
+#include "ui/ComparisonPanel.hpp"
+#include "ui/ComparisonRunner.hpp"
 #include "ui/ExportRunner.hpp"
 #include "ui/LayersPanel.hpp"
 #include "ui/MapCanvas.hpp"
@@ -94,7 +96,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), document_(new MissionDocument(this)), undoStack_(new QUndoStack(this)),
       canvas_(new MapCanvas(document_, this)), classModel_(new ClassTableModel(document_, undoStack_, this)),
       robotModel_(new RobotTableModel(document_, undoStack_, this)), runner_(new PlanningRunner(this)),
-      exportRunner_(new ExportRunner(this)) {
+      exportRunner_(new ExportRunner(this)), comparisonRunner_(new ComparisonRunner(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowIcon(QIcon::fromTheme(QStringLiteral("applications-science")));
     setCentralWidget(canvas_);
@@ -125,6 +127,12 @@ MainWindow::~MainWindow() {
     // A run that ends now must not call back into a window being torn down.
     disconnect(runner_, nullptr, this, nullptr);
     disconnect(exportRunner_, nullptr, this, nullptr);
+    disconnect(comparisonRunner_, nullptr, this, nullptr);
+    if (comparisonRunner_->isRunning()) {
+        comparisonRunner_->cancel();
+        comparisonRunner_->waitForFinished();
+        QGuiApplication::restoreOverrideCursor();
+    }
     if (exportRunner_->isRunning()) {
         exportRunner_->cancel();
         exportRunner_->waitForFinished();
@@ -261,10 +269,19 @@ void MainWindow::createDocks() {
     auto* robotsDock = makeDock(QStringLiteral("robotsDock"), tr("Robots"), robotsWidget, this);
     auto* settingsDock = makeDock(QStringLiteral("plannerDock"), tr("Planner"), settingsPanel_, this);
     auto* resultsDock = makeDock(QStringLiteral("resultsDock"), tr("Results"), resultsPanel_, this);
+    comparisonPanel_ = new ComparisonPanel(this);
+    connect(comparisonPanel_, &ComparisonPanel::compareRequested, this,
+            [this] { startComparison(comparisonPanel_->checkedPlanners()); });
+    connect(comparisonPanel_, &ComparisonPanel::planSelected, this, &MainWindow::showComparedPlan);
+    comparisonDock_ =
+        makeDock(QStringLiteral("comparisonDock"), tr("Compare planners"), comparisonPanel_, this);
     addDockWidget(Qt::LeftDockWidgetArea, layersDock);
     addDockWidget(Qt::LeftDockWidgetArea, robotsDock);
     addDockWidget(Qt::LeftDockWidgetArea, settingsDock);
     addDockWidget(Qt::RightDockWidgetArea, resultsDock);
+    addDockWidget(Qt::RightDockWidgetArea, comparisonDock_);
+    tabifyDockWidget(resultsDock, comparisonDock_);
+    resultsDock->raise();
     addDockWidget(Qt::BottomDockWidgetArea, classesDock);
     resizeDocks({layersDock, robotsDock, settingsDock}, {150, 220, 200}, Qt::Vertical);
     resizeDocks({layersDock, resultsDock}, {360, 420}, Qt::Horizontal);
@@ -392,6 +409,14 @@ void MainWindow::createActions() {
     cancelAction_ = planMenu->addAction(QIcon::fromTheme(QStringLiteral("process-stop")),
                                         tr("&Cancel planning"), this, &MainWindow::cancelPlanning);
     cancelAction_->setObjectName(QStringLiteral("cancelPlanningAction"));
+    compareAction_ = planMenu->addAction(tr("C&ompare planners…"), this, [this] {
+        comparisonDock_->show();
+        comparisonDock_->raise();
+        startComparison(comparisonPanel_->checkedPlanners());
+    });
+    compareAction_->setObjectName(QStringLiteral("compareAction"));
+    compareAction_->setToolTip(tr("Run the planners checked in the Compare planners panel on this mission, "
+                                  "one after another, and compare their plans"));
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     helpMenu->addAction(tr("Open &sample mission"), this, [this] {
@@ -439,7 +464,11 @@ void MainWindow::createStatusBar() {
     cancelButton_ = new QPushButton(tr("Cancel"), this);
     cancelButton_->setObjectName(QStringLiteral("cancelPlanningButton"));
     connect(cancelButton_, &QPushButton::clicked, this, [this] {
-        if (exportRunner_->isRunning())
+        if (comparisonRunner_->isRunning()) {
+            comparisonRunner_->cancel();
+            cancelButton_->setEnabled(false);
+            stageLabel_->setText(tr("Cancelling…"));
+        } else if (exportRunner_->isRunning())
             cancelExport();
         else
             cancelPlanning();
@@ -480,6 +509,14 @@ void MainWindow::createStatusBar() {
         progressBar_->setValue(done);
     });
     connect(exportRunner_, &ExportRunner::finished, this, &MainWindow::handleExportFinished);
+    connect(comparisonRunner_, &ComparisonRunner::progressed, this,
+            [this](int planner, int planners, const QString& name, const QString& stage, double fraction) {
+                stageLabel_->setText(
+                    tr("%1 (%2 of %3): %4").arg(name).arg(planner + 1).arg(planners).arg(stage));
+                progressBar_->setValue(
+                    static_cast<int>((planner + std::clamp(fraction, 0.0, 1.0)) / planners * 1000.0));
+            });
+    connect(comparisonRunner_, &ComparisonRunner::finished, this, &MainWindow::handleComparisonFinished);
 }
 
 void MainWindow::connectDocument() {
@@ -564,7 +601,7 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::updateActions() {
-    const bool planning = runner_->isRunning();
+    const bool planning = runner_->isRunning() || comparisonRunner_->isRunning();
     const bool exporting = exportRunner_->isRunning();
     const bool hasMap = document_->hasMap();
     planAction_->setEnabled(hasMap && !planning && !exporting && !document_->robots().empty());
@@ -572,6 +609,9 @@ void MainWindow::updateActions() {
     saveAction_->setEnabled(hasMap);
     for (QAction* action : exportActions_)
         action->setEnabled(document_->plan() != nullptr && !planning && !exporting);
+    compareAction_->setEnabled(hasMap && !planning && !exporting && !document_->robots().empty());
+    comparisonPanel_->setRunning(planning || exporting);
+    comparisonPanel_->setRobotCount(static_cast<int>(document_->robots().size()));
 }
 
 void MainWindow::updateResults() {
@@ -874,6 +914,75 @@ bool MainWindow::isPlanning() const {
     return runner_->isRunning();
 }
 
+bool MainWindow::startComparison(const std::vector<std::string>& planners) {
+    if (runner_->isRunning() || comparisonRunner_->isRunning() || exportRunner_->isRunning())
+        return false;
+    if (!document_->hasMap() || document_->robots().empty()) {
+        reportError(tr("Cannot compare"), tr("Open a land-cover raster and place robot starts first."));
+        return false;
+    }
+    if (planners.empty()) {
+        reportError(tr("Cannot compare"), tr("Check at least one planner in the Compare planners panel."));
+        return false;
+    }
+    // The same checks as for one plan, with the mission's own planner.
+    auto prepared = io::planningProblem(*document_->raster(), document_->classes(),
+                                        document_->mission().missingClassesAsObstacles, document_->starts(),
+                                        document_->plannerChoice(), fieldNamer());
+    if (!prepared.ok()) {
+        reportError(tr("Cannot compare"), QString::fromStdString(prepared.error()));
+        return false;
+    }
+    std::vector<PlannerChoice> choices;
+    for (const std::string& name : planners)
+        choices.push_back(switchPlanner(document_->plannerChoice(), name));
+    comparisonInputs_ = document_->currentInputs();
+    if (!comparisonRunner_->start(std::move(prepared.value().problem), std::move(choices)))
+        return false;
+    showBusy(tr("Comparing…"), true);
+    progressBar_->setValue(0);
+    updateActions();
+    showStatus(tr("Comparing %1 planners…").arg(planners.size()), 0);
+    return true;
+}
+
+bool MainWindow::isComparing() const {
+    return comparisonRunner_->isRunning();
+}
+
+void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
+    showBusy({}, false);
+    comparison_ = outcome;
+    comparisonPanel_->showOutcome(outcome, *document_->grid(), document_->classes());
+    comparisonDock_->show();
+    comparisonDock_->raise();
+    const auto planned = std::count_if(outcome.plans.begin(), outcome.plans.end(),
+                                       [](const auto& plan) { return plan != nullptr; });
+    showStatus(outcome.cancelled
+                   ? tr("Comparison cancelled after %1 plans.").arg(planned)
+                   : tr("Compared %1 planners: select a row to show its plan.").arg(outcome.rows.size()));
+    updateActions();
+    emit comparisonFinished(!outcome.cancelled && planned > 0);
+}
+
+void MainWindow::showComparedPlan(int row) {
+    if (row < 0 || static_cast<std::size_t>(row) >= comparison_.plans.size() ||
+        !comparison_.plans[static_cast<std::size_t>(row)])
+        return;
+    // The shown plan is the mission's plan: its planner becomes the mission's, so exports and the results
+    // panel are about it, and it is not out of date.
+    const PlannerChoice& choice = comparison_.choices[static_cast<std::size_t>(row)];
+    if (!(choice == document_->plannerChoice())) {
+        document_->setPlannerChoice(choice);
+        settingsModified_ = true;
+        updateTitle();
+    }
+    PlanInputs inputs = comparisonInputs_;
+    inputs.planner = choice;
+    document_->setPlan(comparison_.plans[static_cast<std::size_t>(row)], inputs);
+    showStatus(tr("Showing the plan of %1.").arg(QString::fromStdString(choice.planner)));
+}
+
 bool MainWindow::startPlanning() {
     if (runner_->isRunning())
         return false;
@@ -1018,6 +1127,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     runner_->waitForFinished();
     exportRunner_->cancel();
     exportRunner_->waitForFinished();
+    comparisonRunner_->cancel();
+    comparisonRunner_->waitForFinished();
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());

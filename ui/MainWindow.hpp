@@ -2,13 +2,17 @@
 
 #include "core/model/MapPoint.hpp"
 #include "io/MissionInputs.hpp"
+#include "ui/ComparisonRunner.hpp"
 #include "ui/MissionDocument.hpp"
 
 #include <QMainWindow>
 #include <QString>
+#include <string>
+#include <vector>
 
 class QAction;
 class QComboBox;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QProgressBar;
@@ -19,6 +23,8 @@ class QUndoStack;
 namespace mcpp::ui {
 
 class ClassTableModel;
+class ComparisonPanel;
+class ComparisonRunner;
 class ExportRunner;
 class LayersPanel;
 class MapCanvas;
@@ -50,6 +56,11 @@ class MainWindow : public QMainWindow {
     void cancelExport();
     [[nodiscard]] bool isExporting() const;
     bool startPlanning();
+    // Runs these planners on the mission one after another in the background; the comparison panel then
+    // lists them, and selecting one shows its plan (comparisonFinished says how it went).
+    bool startComparison(const std::vector<std::string>& planners);
+    [[nodiscard]] bool isComparing() const;
+    [[nodiscard]] ComparisonPanel* comparisonPanel() const { return comparisonPanel_; }
     void cancelPlanning();
     [[nodiscard]] bool isPlanning() const;
 
@@ -78,6 +89,7 @@ class MainWindow : public QMainWindow {
   signals:
     void planningFinished(bool success);
     void exportFinished(bool success);
+    void comparisonFinished(bool success);
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -104,6 +116,8 @@ class MainWindow : public QMainWindow {
     void showCursor(MapPoint point);
     void handlePlanningFinished(const PlanningOutcome& outcome);
     void handleExportFinished(const ExportOutcome& outcome);
+    void handleComparisonFinished(const ComparisonOutcome& outcome);
+    void showComparedPlan(int row);
     void showBusy(const QString& stage, bool busy);
     void placeStart(MapPoint point);
     void removeSelectedRobot();
@@ -120,6 +134,10 @@ class MainWindow : public QMainWindow {
     RobotTableModel* robotModel_;
     PlanningRunner* runner_;
     ExportRunner* exportRunner_;
+    ComparisonRunner* comparisonRunner_;
+    ComparisonPanel* comparisonPanel_ = nullptr;
+    QDockWidget* comparisonDock_ = nullptr;
+    QAction* compareAction_ = nullptr;
     QTableView* classView_ = nullptr;
     QTableView* robotView_ = nullptr;
     QComboBox* presetCombo_ = nullptr;
@@ -143,6 +161,8 @@ class MainWindow : public QMainWindow {
     QString lastStatus_;
     PlanInputs planningInputs_;
     bool exportStale_ = false; // the exported plan was out of date
+    ComparisonOutcome comparison_;
+    PlanInputs comparisonInputs_;
     qint64 planningStartedAt_ = 0;
     bool settingsModified_ = false;
     bool dialogsEnabled_ = true;

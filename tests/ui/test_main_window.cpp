@@ -1,5 +1,6 @@
 #include "tests/support/TestData.hpp"
 #include "ui/ClassTableModel.hpp"
+#include "ui/ComparisonPanel.hpp"
 #include "ui/MainWindow.hpp"
 #include "ui/MapCanvas.hpp"
 #include "ui/ResultsPanel.hpp"
@@ -7,6 +8,7 @@
 #include "ui/SampleMission.hpp"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -232,6 +234,61 @@ class TestMainWindow : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         // Either the planner stopped, or it had already finished: both leave a usable window.
         QVERIFY(!window.isPlanning());
+    }
+
+    // The Compare action: planners run one after another in the background, the panel lists one row each
+    // (one-robot planners cannot take part with several robots), the table sorts, and selecting a row
+    // shows that plan: the map, the results and the exports are then about it.
+    void comparesPlanners() {
+        const QString sample = ui::findSampleMission();
+        if (sample.isEmpty())
+            QSKIP("samples/zion-nlcd/mission.json is not there yet");
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY2(window.openMission(sample), qPrintable(window.lastError()));
+        QCoreApplication::processEvents();
+        ui::ComparisonPanel* panel = window.comparisonPanel();
+        auto* spiral = panel->findChild<QCheckBox*>(QStringLiteral("compare_spiral-stc"));
+        QVERIFY(spiral != nullptr && !spiral->isEnabled()); // five robots
+        panel->setCheckedPlanners({"mcpp-mlct", "darp", "mstc", "spiral-stc"});
+        QCOMPARE(panel->checkedPlanners(), (std::vector<std::string>{"mcpp-mlct", "darp", "mstc"}));
+
+        QSignalSpy finished(&window, &ui::MainWindow::comparisonFinished);
+        auto* compare = window.findChild<QAction*>(QStringLiteral("compareAction"));
+        QVERIFY(compare != nullptr && compare->isEnabled());
+        compare->trigger();
+        QVERIFY(window.isComparing() || finished.count() == 1);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY(finished.takeFirst().at(0).toBool());
+
+        QTableWidget* table = panel->table();
+        QCOMPARE(table->rowCount(), 3);
+        QVERIFY(!panel->sheet()->pixmap().isNull());
+        // Sorted by ratio, MSTC (unbalanced pieces) comes last.
+        table->sortItems(2, Qt::AscendingOrder);
+        QCOMPARE(table->item(2, 0)->text(), QStringLiteral("mstc"));
+        for (int row = 0; row < 3; ++row)
+            QCOMPARE(table->item(row, 1)->text(), QStringLiteral("planned"));
+
+        const int darp = panel->rowOfPlanner("darp");
+        QVERIFY(darp >= 0);
+        table->selectRow(darp);
+        QVERIFY(window.document()->plan() != nullptr);
+        QCOMPARE(window.document()->plan()->planner, std::string("darp"));
+        QCOMPARE(window.document()->plannerChoice().planner, std::string("darp"));
+        QVERIFY(!window.document()->planStale());
+
+        // Exporting exports the plan shown.
+        QTemporaryDir directory;
+        QSignalSpy exported(&window, &ui::MainWindow::exportFinished);
+        QVERIFY(window.exportPlan("report-json", directory.filePath(QStringLiteral("report.json"))));
+        QTRY_COMPARE_WITH_TIMEOUT(exported.count(), 1, kPlanningTimeoutMilliseconds);
+        QFile report(directory.filePath(QStringLiteral("report.json")));
+        QVERIFY(report.open(QIODevice::ReadOnly));
+        QCOMPARE(
+            QJsonDocument::fromJson(report.readAll()).object().value(QStringLiteral("planner")).toString(),
+            QStringLiteral("darp"));
     }
 
     void opensTheSampleMission() {

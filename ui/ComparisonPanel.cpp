@@ -1,0 +1,177 @@
+#include "ui/ComparisonPanel.hpp"
+
+#include "core/planners/PlannerRegistry.hpp"
+#include "render/ComparisonSheet.hpp"
+
+#include <QCheckBox>
+#include <QGridLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <numeric>
+
+namespace mcpp::ui {
+
+namespace {
+
+enum Column { Name, Outcome, Ratio, Makespan, LowerBound, Turns, Length, Covered, Planning, Columns };
+
+QTableWidgetItem* numberItem(double value, int decimals) {
+    auto* item = new QTableWidgetItem;
+    // Numbers as numbers, so that sorting is numeric; shown rounded.
+    item->setData(Qt::EditRole, value);
+    item->setData(Qt::DisplayRole, QString::number(value, 'f', decimals).toDouble());
+    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    return item;
+}
+
+} // namespace
+
+ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    auto* choices = new QGridLayout;
+    int index = 0;
+    for (const PlannerDescription& planner : plannerDescriptions()) {
+        auto* box = new QCheckBox(QString::fromStdString(planner.label), this);
+        box->setObjectName(QString::fromStdString("compare_" + planner.name));
+        box->setToolTip(QString::fromStdString(planner.summary));
+        box->setChecked(!planner.singleRobot);
+        checks_[planner.name] = box;
+        choices->addWidget(box, index / 3, index % 3);
+        ++index;
+    }
+    layout->addLayout(choices);
+    runButton_ = new QPushButton(tr("Compare the checked planners"), this);
+    runButton_->setObjectName(QStringLiteral("runComparisonButton"));
+    connect(runButton_, &QPushButton::clicked, this, &ComparisonPanel::compareRequested);
+    layout->addWidget(runButton_);
+
+    table_ = new QTableWidget(0, Columns, this);
+    table_->setObjectName(QStringLiteral("comparisonTable"));
+    table_->setHorizontalHeaderLabels({tr("Planner"), tr("Outcome"), tr("Ratio"), tr("Makespan (h)"),
+                                       tr("Bound (h)"), tr("Turns"), tr("Length (km)"), tr("Covered %"),
+                                       tr("Planned in (s)")});
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->verticalHeader()->setVisible(false);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->setSortingEnabled(true);
+    connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
+        const auto selected = table_->selectedItems();
+        if (selected.isEmpty())
+            return;
+        const QTableWidgetItem* name = table_->item(selected.front()->row(), Name);
+        emit planSelected(name->data(Qt::UserRole).toInt());
+    });
+    layout->addWidget(table_, 1);
+
+    sheet_ = new QLabel(this);
+    sheet_->setObjectName(QStringLiteral("comparisonSheet"));
+    sheet_->setAlignment(Qt::AlignHCenter | Qt::AlignTop);
+    scroll_ = new QScrollArea(this);
+    scroll_->setWidget(sheet_);
+    scroll_->setWidgetResizable(true);
+    scroll_->setMinimumHeight(240);
+    layout->addWidget(scroll_, 2);
+}
+
+void ComparisonPanel::setRobotCount(int robots) {
+    for (const PlannerDescription& planner : plannerDescriptions()) {
+        QCheckBox* box = checks_.at(planner.name);
+        const bool possible = !planner.singleRobot || robots <= 1;
+        box->setEnabled(possible);
+        if (!possible)
+            box->setChecked(false);
+        box->setToolTip(
+            QString::fromStdString(planner.summary) +
+            (possible ? QString() : tr(" (plans for one robot; the mission has %1)").arg(robots)));
+    }
+}
+
+std::vector<std::string> ComparisonPanel::checkedPlanners() const {
+    std::vector<std::string> names;
+    for (const PlannerDescription& planner : plannerDescriptions())
+        if (checks_.at(planner.name)->isChecked() && checks_.at(planner.name)->isEnabled())
+            names.push_back(planner.name);
+    return names;
+}
+
+void ComparisonPanel::setCheckedPlanners(const std::vector<std::string>& planners) {
+    for (auto& [name, box] : checks_)
+        box->setChecked(std::find(planners.begin(), planners.end(), name) != planners.end());
+}
+
+void ComparisonPanel::setRunning(bool running) {
+    runButton_->setEnabled(!running);
+}
+
+void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid,
+                                  const ClassTable& classes) {
+    table_->setSortingEnabled(false);
+    table_->clearContents();
+    table_->setRowCount(static_cast<int>(outcome.rows.size()));
+    std::vector<render::ComparisonPanel> panels;
+    for (std::size_t i = 0; i < outcome.rows.size(); ++i) {
+        const io::ComparisonRow& row = outcome.rows[i];
+        const auto r = static_cast<int>(i);
+        auto* name = new QTableWidgetItem(QString::fromStdString(row.planner));
+        name->setData(Qt::UserRole, r);
+        table_->setItem(r, Name, name);
+        auto* state = new QTableWidgetItem(QString::fromStdString(io::outcomeName(row.outcome)));
+        state->setToolTip(QString::fromStdString(row.message));
+        table_->setItem(r, Outcome, state);
+        render::ComparisonPanel panel;
+        panel.title = QString::fromStdString(row.planner);
+        panel.plan = outcome.plans[i].get();
+        if (row.outcome != io::ComparisonRow::Outcome::Planned) {
+            panel.caption << QString::fromStdString(io::outcomeName(row.outcome) + ": " + row.message);
+            panels.push_back(panel);
+            continue;
+        }
+        const PlanMetrics& metrics = row.metrics;
+        const int turns =
+            std::accumulate(metrics.robots.begin(), metrics.robots.end(), 0,
+                            [](int sum, const RobotMetrics& robot) { return sum + robot.turns; });
+        const double length =
+            std::accumulate(metrics.robots.begin(), metrics.robots.end(), 0.0,
+                            [](double sum, const RobotMetrics& robot) { return sum + robot.lengthMetres; });
+        table_->setItem(r, Ratio, numberItem(metrics.ratio, 3));
+        table_->setItem(r, Makespan, numberItem(metrics.makespanSeconds / 3600.0, 2));
+        table_->setItem(r, LowerBound, numberItem(metrics.lowerBoundSeconds / 3600.0, 2));
+        table_->setItem(r, Turns, numberItem(turns, 0));
+        table_->setItem(r, Length, numberItem(length / 1000.0, 1));
+        table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
+        table_->setItem(r, Planning, numberItem(row.planningMilliseconds / 1000.0, 2));
+        panel.caption << tr("%1 x the lower bound, %2 turns").arg(metrics.ratio, 0, 'f', 3).arg(turns);
+        panels.push_back(panel);
+    }
+    table_->setSortingEnabled(true);
+    sheetImage_ = render::renderComparisonSheet(grid, classes, panels);
+    fitSheet();
+}
+
+void ComparisonPanel::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    fitSheet();
+}
+
+// The sheet as wide as the panel shows it, so the maps and the chart are seen whole.
+void ComparisonPanel::fitSheet() {
+    if (sheetImage_.isNull())
+        return;
+    const int width = std::clamp(scroll_->viewport()->width() - 4, 200, sheetImage_.width());
+    sheet_->setPixmap(QPixmap::fromImage(sheetImage_.scaledToWidth(width, Qt::SmoothTransformation)));
+}
+
+int ComparisonPanel::rowOfPlanner(const std::string& planner) const {
+    for (int row = 0; row < table_->rowCount(); ++row)
+        if (table_->item(row, Name) != nullptr && table_->item(row, Name)->text().toStdString() == planner)
+            return row;
+    return -1;
+}
+
+} // namespace mcpp::ui

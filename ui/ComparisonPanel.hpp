@@ -1,0 +1,59 @@
+#pragma once
+
+#include "core/model/ClassGrid.hpp"
+#include "core/model/ClassTable.hpp"
+#include "ui/ComparisonRunner.hpp"
+
+#include <QImage>
+#include <QWidget>
+#include <map>
+#include <string>
+#include <vector>
+
+class QCheckBox;
+class QLabel;
+class QPushButton;
+class QScrollArea;
+class QTableWidget;
+
+namespace mcpp::ui {
+
+// The comparison dock: which planners to run (checkboxes), then a sortable table of their figures and the
+// plans side by side with a chart of every robot's time. Selecting a row asks for that plan to be shown.
+class ComparisonPanel : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit ComparisonPanel(QWidget* parent = nullptr);
+
+    // One-robot planners cannot take part with several robots: their boxes are disabled and say why.
+    void setRobotCount(int robots);
+    [[nodiscard]] std::vector<std::string> checkedPlanners() const;
+    void setCheckedPlanners(const std::vector<std::string>& planners);
+    void setRunning(bool running);
+    void showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid, const ClassTable& classes);
+
+    [[nodiscard]] QTableWidget* table() const { return table_; }
+    [[nodiscard]] QLabel* sheet() const { return sheet_; }
+    // The table row (in its current order) of a planner, or -1.
+    [[nodiscard]] int rowOfPlanner(const std::string& planner) const;
+
+  signals:
+    void compareRequested();
+    void planSelected(int outcomeRow); // index into the outcome's rows
+
+  protected:
+    void resizeEvent(QResizeEvent* event) override;
+
+  private:
+    void fitSheet();
+
+    std::map<std::string, QCheckBox*> checks_;
+    QPushButton* runButton_ = nullptr;
+    QTableWidget* table_ = nullptr;
+    QLabel* sheet_ = nullptr;
+    QScrollArea* scroll_ = nullptr;
+    QImage sheetImage_; // full size; shown scaled to the panel
+};
+
+} // namespace mcpp::ui

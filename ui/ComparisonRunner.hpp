@@ -1,0 +1,49 @@
+#pragma once
+
+#include "core/model/Plan.hpp"
+#include "core/model/PlanningProblem.hpp"
+#include "io/ComparisonExport.hpp"
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QString>
+#include <atomic>
+#include <memory>
+#include <vector>
+
+namespace mcpp::ui {
+
+// What a comparison ended with: a row per planner (as batch mode's comparison.csv) and the plans made.
+struct ComparisonOutcome {
+    std::vector<io::ComparisonRow> rows;
+    std::vector<std::shared_ptr<const Plan>> plans; // by row; null where the planner failed or was skipped
+    std::vector<PlannerChoice> choices;             // by row: the planner and parameters it ran with
+    bool cancelled = false;
+};
+
+// Runs several planners on one problem, one after another on a worker thread, so the window stays
+// responsive; progress names the planner. cancel() stops the running planner and skips the rest.
+class ComparisonRunner : public QObject {
+    Q_OBJECT
+
+  public:
+    explicit ComparisonRunner(QObject* parent = nullptr);
+    ~ComparisonRunner() override;
+
+    // problem.planner is replaced by each choice in turn. False (nothing started) while a run is going on.
+    bool start(PlanningProblem problem, std::vector<PlannerChoice> choices);
+    void cancel();
+    [[nodiscard]] bool isRunning() const;
+    void waitForFinished();
+
+  signals:
+    // planner: index in the choices; fraction of that planner's run.
+    void progressed(int planner, int planners, const QString& name, const QString& stage, double fraction);
+    void finished(const mcpp::ui::ComparisonOutcome& outcome);
+
+  private:
+    QFutureWatcher<ComparisonOutcome> watcher_;
+    std::shared_ptr<std::atomic<bool>> cancelRequested_;
+};
+
+} // namespace mcpp::ui
