@@ -217,6 +217,28 @@ void TestBatchEndToEnd::comparePlannersOnOneMission() {
             sawRobotColour = sheet.pixelColor(x, y) == QColor(0xe6194b);
     QVERIFY(sawRobotColour);
 
+    // A planner that cannot plan the mission keeps its row with the reason; the others still run (exit 3).
+    // Here DARP refuses a tolerance outside its range, which MCPP-MLCT does not have.
+    const QString partly = scratch_.filePath(QStringLiteral("compare-partly"));
+    const auto someFailed =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "mcpp-mlct,darp", "--param",
+                 "convergence_tolerance=0.9", "--out", partly});
+    QCOMPARE(someFailed.exitCode, 3);
+    const auto partlyRows =
+        readJsonObject(QDir(partly).filePath("comparison.json")).value("planners").toArray();
+    QCOMPARE(partlyRows.size(), 2);
+    QCOMPARE(partlyRows.at(0).toObject().value("outcome").toString(), QStringLiteral("planned"));
+    QCOMPARE(partlyRows.at(1).toObject().value("outcome").toString(), QStringLiteral("failed"));
+    QVERIFY(partlyRows.at(1).toObject().value("message").toString().contains(
+        QStringLiteral("convergence_tolerance")));
+    QVERIFY(QFileInfo(QDir(partly).filePath("mcpp-mlct/report.json")).exists());
+    QVERIFY(QFileInfo(QDir(partly).filePath("comparison.png")).exists());
+    // When no planner can plan, the mission is at fault: exit 2, as for one planner.
+    const auto noneCould =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "darp", "--param",
+                 "convergence_tolerance=0.9", "--out", scratch_.filePath("compare-none")});
+    QCOMPARE(noneCould.exitCode, 2);
+
     // Unknown names and --planner beside --compare are refused before any work.
     auto refused =
         runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "darp,nosuch", "--out", out});
