@@ -17,7 +17,8 @@ namespace {
 // Runs the stages up to allocation and packs them into a plan for the shared checkers.
 Plan allocateOnly(const PlanningProblem& problem) {
     Plan plan;
-    const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, DecompositionOptions::from(problem.planner.parameters));
+    const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes,
+                                                  DecompositionOptions::from(problem.planner.parameters));
     plan.cells = cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
     std::vector<int> startCells;
     for (const MapPoint& start : problem.starts)

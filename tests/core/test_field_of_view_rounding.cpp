@@ -1,7 +1,6 @@
 #include "core/decomposition/FieldOfViewRounding.hpp"
 
 #include <QtTest>
-
 #include <map>
 
 using namespace mcpp;

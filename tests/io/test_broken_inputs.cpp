@@ -16,8 +16,8 @@ using namespace mcpp;
 using namespace mcpp::io;
 using mcpp::test::MissionMutation;
 using mcpp::test::missionMutations;
-using mcpp::test::testDataPath;
 using mcpp::test::missionVersion2Mutations;
+using mcpp::test::testDataPath;
 using mcpp::test::validMission;
 using mcpp::test::validMissionVersion2;
 
@@ -132,7 +132,8 @@ class BrokenInputsTest : public QObject {
         QVERIFY2(second.ok(), second.ok() ? "" : second.error().c_str());
         QCOMPARE(second.value().planner.parameters.real("purity_tolerance"), 0.02);
         QCOMPARE(second.value().planner.parameters.boolean("closed_tour"), false);
-        QCOMPARE(second.value().planner.parameters.boolean("snap_starts_to_free_cells"), false); // the default
+        QCOMPARE(second.value().planner.parameters.boolean("snap_starts_to_free_cells"),
+                 false); // the default
     }
 
     void missionWithAWrongTypeInEveryField_data() {
