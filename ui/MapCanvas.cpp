@@ -49,7 +49,10 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
 
 void MapCanvas::refreshMap() {
     renderer_.setMap(document_->grid(), &document_->classes());
-    renderer_.setPlan(document_->plan());
+    // Preparing a plan's drawing takes a while on large maps: redone only for another plan (planChanged
+    // always passes the new one).
+    if (renderer_.plan() != document_->plan())
+        renderer_.setPlan(document_->plan());
     renderer_.setPlanStale(document_->planStale());
     refreshStarts();
 }
