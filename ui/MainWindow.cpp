@@ -937,6 +937,7 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     for (const std::string& name : planners)
         choices.push_back(switchPlanner(document_->plannerChoice(), name));
     comparisonInputs_ = document_->currentInputs();
+    comparisonRaster_ = document_->sharedRaster();
     if (!comparisonRunner_->start(std::move(prepared.value().problem), std::move(choices)))
         return false;
     showBusy(tr("Comparing…"), true);
@@ -952,6 +953,14 @@ bool MainWindow::isComparing() const {
 
 void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     showBusy({}, false);
+    if (!document_->hasMap() || document_->sharedRaster() != comparisonRaster_) {
+        // Another map was opened meanwhile: these plans belong to the one before.
+        comparisonRaster_.reset();
+        showStatus(tr("Comparison dropped: another map was opened while it ran."));
+        updateActions();
+        emit comparisonFinished(false);
+        return;
+    }
     comparison_ = outcome;
     comparisonPanel_->showOutcome(outcome, *document_->grid(), document_->classes());
     comparisonDock_->show();
@@ -969,6 +978,10 @@ void MainWindow::showComparedPlan(int row) {
     if (row < 0 || static_cast<std::size_t>(row) >= comparison_.plans.size() ||
         !comparison_.plans[static_cast<std::size_t>(row)])
         return;
+    if (document_->sharedRaster() != comparisonRaster_) {
+        showStatus(tr("That comparison was made on another map: compare again to show its plans here."));
+        return;
+    }
     // The shown plan is the mission's plan: its planner becomes the mission's, so exports and the results
     // panel are about it, and it is not out of date.
     const PlannerChoice& choice = comparison_.choices[static_cast<std::size_t>(row)];

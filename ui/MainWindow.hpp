@@ -163,6 +163,7 @@ class MainWindow : public QMainWindow {
     bool exportStale_ = false; // the exported plan was out of date
     ComparisonOutcome comparison_;
     PlanInputs comparisonInputs_;
+    std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on
     qint64 planningStartedAt_ = 0;
     bool settingsModified_ = false;
     bool dialogsEnabled_ = true;
