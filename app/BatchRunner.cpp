@@ -1,6 +1,7 @@
 #include "app/BatchRunner.hpp"
 
 #include "app/BatchFailure.hpp"
+#include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/ProgressReporter.hpp"
 #include "core/parameters/ParameterResolution.hpp"
@@ -13,16 +14,13 @@
 #include "render/PlanImageWriter.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
-#include <numeric>
 #include <optional>
 #include <sys/resource.h>
 #include <system_error>
-#include <thread>
 #include <unistd.h>
 
 namespace mcpp::app {
@@ -66,28 +64,6 @@ double peakMemoryMegabytes() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
-// What comparison.png prints under a planner's map.
-render::ComparisonPanel comparisonPanel(const io::ComparisonRow& row, const Plan* plan) {
-    render::ComparisonPanel panel;
-    panel.title = QString::fromStdString(row.planner);
-    panel.plan = plan;
-    if (row.outcome != io::ComparisonRow::Outcome::Planned) {
-        panel.caption << QString::fromStdString(io::outcomeName(row.outcome) + ": " + row.message);
-        return panel;
-    }
-    int turns = 0;
-    for (const RobotMetrics& robot : row.metrics.robots)
-        turns += robot.turns;
-    panel.caption << QStringLiteral("makespan %1 h, %2 x the lower bound")
-                         .arg(row.metrics.makespanSeconds / 3600.0, 0, 'f', 2)
-                         .arg(row.metrics.ratio, 0, 'f', 3)
-                  << QStringLiteral("%1 turns, covered %2 %, planned in %3 s")
-                         .arg(turns)
-                         .arg(row.metrics.coveredFraction * 100.0, 0, 'f', 1)
-                         .arg(row.planningMilliseconds / 1000.0, 0, 'f', 2);
-    return panel;
 }
 
 template <typename T> T valueOrBadInput(io::Result<T> result) {
@@ -280,81 +256,59 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     context.drawImage = render::planImageWriter(planImageSide);
     const int robots = static_cast<int>(plan.paths.size());
 
-    // report.json comes last so that it can say how long the other files took.
-    std::vector<Output> outputs;
-    std::vector<Output> report;
+    struct Output {
+        const io::ExportFormat* format;
+        int robot; // -1 for whole-plan formats
+        std::string name;
+    };
+    std::vector<Output> outputs; // catalogue order, in which results are reported
     for (const io::ExportFormat& format : io::exportFormats()) {
         if (!format.inBatchOutputs)
             continue;
-        auto& list = format.key == "report-json" ? report : outputs;
         if (!format.perRobot) {
-            list.push_back({&format, -1, format.batchFileName});
+            outputs.push_back({&format, -1, format.batchFileName});
             continue;
         }
         for (int robot = 0; robot < robots; ++robot)
-            list.push_back({&format, robot, io::robotFileName(robot, format)});
+            outputs.push_back({&format, robot, io::robotFileName(robot, format)});
     }
-    // The picture takes longest on small plans: started first, the other files are written beside it.
-    // Results are reported in catalogue order below, whatever order the files are written in.
-    std::vector<std::size_t> order(outputs.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
+    const auto isReport = [&](std::size_t i) { return outputs[i].format->key == "report-json"; };
+    // report.json comes last, so that it can say how long the others took; the picture, the longest on
+    // small plans, first, so that the rest are written beside it.
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < outputs.size(); ++i)
+        if (!isReport(i))
+            order.push_back(i);
     std::stable_partition(order.begin(), order.end(),
                           [&](std::size_t i) { return outputs[i].format->key == "png"; });
-    std::vector<Output> scheduled;
-    for (const std::size_t i : order)
-        scheduled.push_back(outputs[i]);
+    std::vector<io::Status> results(outputs.size());
+    const auto write = [&](std::size_t i) {
+        results[i] =
+            outputs[i].format->write(context, outputs[i].robot, (directory / outputs[i].name).string());
+    };
     const auto started = std::chrono::steady_clock::now();
-    const std::vector<io::Status> scheduledResults =
-        writeInParallel(context, scheduled, report.size(), folder);
-    std::vector<io::Status> results(outputs.size());
-    for (std::size_t k = 0; k < order.size(); ++k)
-        results[order[k]] = scheduledResults[k];
-    context.processMilliseconds = processMilliseconds_;
-    context.processMilliseconds.emplace_back("write_outputs", millisecondsSince(started));
-    std::vector<io::Status> reportResults;
-    for (const Output& output : report)
-        reportResults.push_back(
-            output.format->write(context, output.robot, (directory / output.name).string()));
-    progress_.report("writing outputs", 1.0);
-    outputs.insert(outputs.end(), report.begin(), report.end());
-    std::vector<io::Status> all = results;
-    all.insert(all.end(), reportResults.begin(), reportResults.end());
-    // Reported in catalogue order, whichever thread finished first.
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-        if (all[i])
-            continue;
-        if (outputs[i].format->requiredInBatch)
-            internalError(namingFile((directory / outputs[i].name).string(), all[i].error()));
-        warn(outputs[i].name + " not written: " + all[i].error());
-    }
-    removeStaleRobotFiles(robots, folder);
-}
-
-std::vector<io::Status> BatchRunner::writeInParallel(const io::ExportContext& context,
-                                                     const std::vector<Output>& outputs, std::size_t later,
-                                                     const std::string& folder) {
-    const std::filesystem::path directory(folder);
-    std::vector<io::Status> results(outputs.size());
-    std::atomic<std::size_t> next{0};
     std::mutex progressMutex;
     std::size_t finished = 0;
-    const auto total = static_cast<double>(outputs.size() + later);
-    const auto work = [&] {
-        for (std::size_t i = next++; i < outputs.size(); i = next++) {
-            results[i] =
-                outputs[i].format->write(context, outputs[i].robot, (directory / outputs[i].name).string());
-            const std::lock_guard lock(progressMutex);
-            progress_.report("writing outputs", static_cast<double>(++finished) / total);
-        }
-    };
-    const auto threads = std::min<std::size_t>(static_cast<std::size_t>(options_.threads), outputs.size());
-    std::vector<std::thread> helpers;
-    for (std::size_t t = 1; t < threads; ++t)
-        helpers.emplace_back(work);
-    work();
-    for (std::thread& helper : helpers)
-        helper.join();
-    return results;
+    parallelFor(order.size(), [&](std::size_t k, int) {
+        write(order[k]);
+        const std::lock_guard lock(progressMutex);
+        progress_.report("writing outputs",
+                         static_cast<double>(++finished) / static_cast<double>(outputs.size()));
+    });
+    context.processMilliseconds = processMilliseconds_;
+    context.processMilliseconds.emplace_back("write_outputs", millisecondsSince(started));
+    for (std::size_t i = 0; i < outputs.size(); ++i)
+        if (isReport(i))
+            write(i);
+    progress_.report("writing outputs", 1.0);
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        if (results[i])
+            continue;
+        if (outputs[i].format->requiredInBatch)
+            internalError(namingFile((directory / outputs[i].name).string(), results[i].error()));
+        warn(outputs[i].name + " not written: " + results[i].error());
+    }
+    removeStaleRobotFiles(robots, folder);
 }
 
 void BatchRunner::removeStaleRobotFiles(int robots, const std::string& folder) const {
@@ -467,7 +421,7 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
         internalError(status.error());
     std::vector<render::ComparisonPanel> panels;
     for (std::size_t i = 0; i < rows.size(); ++i)
-        panels.push_back(comparisonPanel(rows[i], plans[i] ? &*plans[i] : nullptr));
+        panels.push_back(render::comparisonPanelOf(rows[i], plans[i] ? &*plans[i] : nullptr));
     QString error;
     if (!render::writeComparisonSheet(raster_.grid, classes_, panels,
                                       QString::fromStdString((directory / "comparison.png").string()),
@@ -482,12 +436,9 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
             output_ << io::outcomeName(row.outcome) << " (" << row.message << ")\n";
             continue;
         }
-        int turns = 0;
-        for (const RobotMetrics& robot : row.metrics.robots)
-            turns += robot.turns;
         output_ << "ratio " << formatNumber(row.metrics.ratio, 3) << ", makespan "
-                << formatNumber(row.metrics.makespanSeconds, 1) << " s, " << turns << " turns, planned in "
-                << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
+                << formatNumber(row.metrics.makespanSeconds, 1) << " s, " << row.metrics.totalTurns()
+                << " turns, planned in " << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
     }
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }

@@ -6,7 +6,6 @@
 #include "core/model/Plan.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "io/ComparisonExport.hpp"
-#include "io/ExportCatalogue.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
 #include "io/MissionInputs.hpp"
@@ -39,16 +38,8 @@ class BatchRunner {
     PlanningProblem prepareProblem();
     void checkOutputFolder() const;
     Plan runPlanner(const PlanningProblem& problem);
-    struct Output {
-        const io::ExportFormat* format;
-        int robot; // -1 for whole-plan formats
-        std::string name;
-    };
+    // Every batch output on workerThreads() threads (set from --threads), report.json last.
     void writeOutputs(const Plan& plan, const std::string& folder);
-    // Writes the outputs on options_.threads threads; later = outputs still to come, for the progress.
-    std::vector<io::Status> writeInParallel(const io::ExportContext& context,
-                                            const std::vector<Output>& outputs, std::size_t later,
-                                            const std::string& folder);
     void removeStaleRobotFiles(int robots, const std::string& folder) const;
     void printSummary(const Plan& plan) const;
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.

@@ -2,18 +2,11 @@
 
 #include "core/model/MapPoint.hpp"
 
-#include <algorithm>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace mcpp::app {
-
-// Both cores of a small machine; the outputs are the same bytes whatever the count.
-inline int defaultThreadCount() {
-    return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1U, 8U));
-}
 
 enum class RunMode {
     Gui,         // open the window, optionally with a mission or raster
@@ -51,7 +44,7 @@ struct CommandLineOptions {
     std::vector<std::string> comparePlanners; // --compare, resolved to planner names ("all" expanded)
     bool densePaths = false;                  // --dense-paths
     bool cellPolygons = false;                // --cell-polygons
-    int threads = defaultThreadCount();       // --threads: writers run side by side
+    int threads = 0;                          // --threads; 0: the machine's cores (mcpp::workerThreads)
 
     [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }
 };

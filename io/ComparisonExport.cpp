@@ -4,7 +4,6 @@
 #include "io/internal/TextFiles.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 namespace mcpp::io {
 
@@ -12,16 +11,6 @@ namespace {
 
 using internal::formatShortest;
 using internal::JsonValue;
-
-int totalTurns(const PlanMetrics& metrics) {
-    return std::accumulate(metrics.robots.begin(), metrics.robots.end(), 0,
-                           [](int sum, const RobotMetrics& robot) { return sum + robot.turns; });
-}
-
-double totalLength(const PlanMetrics& metrics) {
-    return std::accumulate(metrics.robots.begin(), metrics.robots.end(), 0.0,
-                           [](double sum, const RobotMetrics& robot) { return sum + robot.lengthMetres; });
-}
 
 template <typename Field> std::string joined(const PlanMetrics& metrics, Field field) {
     std::string text;
@@ -75,8 +64,8 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
         const auto figure = [&](double value) { return planned ? formatShortest(value) : std::string(); };
         text += internal::quoteCsvField(row.planner) + "," + outcomeName(row.outcome) + "," +
                 figure(metrics.makespanSeconds) + "," + figure(metrics.lowerBoundSeconds) + "," +
-                figure(metrics.ratio) + "," + figure(totalLength(metrics)) + "," +
-                (planned ? std::to_string(totalTurns(metrics)) : std::string()) + "," +
+                figure(metrics.ratio) + "," + figure(metrics.totalLengthMetres()) + "," +
+                (planned ? std::to_string(metrics.totalTurns()) : std::string()) + "," +
                 figure(metrics.coveredFraction) + "," + figure(metrics.repeatedFraction) + "," +
                 figure(metrics.unreachableAreaSquareMetres) + "," +
                 joined(metrics, [](const RobotMetrics& robot) { return robot.lengthMetres; }) + "," +
@@ -105,8 +94,8 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         item.add("makespan_s", metrics.makespanSeconds);
         item.add("lower_bound_s", metrics.lowerBoundSeconds);
         item.add("ratio", metrics.ratio);
-        item.add("total_length_m", totalLength(metrics));
-        item.add("turns", totalTurns(metrics));
+        item.add("total_length_m", metrics.totalLengthMetres());
+        item.add("turns", metrics.totalTurns());
         item.add("covered_fraction", metrics.coveredFraction);
         item.add("repeated_fraction", metrics.repeatedFraction);
         item.add("unreachable_area_m2", metrics.unreachableAreaSquareMetres);

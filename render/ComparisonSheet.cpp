@@ -98,6 +98,24 @@ void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QR
 
 } // namespace
 
+ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan) {
+    ComparisonPanel panel;
+    panel.title = QString::fromStdString(row.planner);
+    panel.plan = plan;
+    if (row.outcome != io::ComparisonRow::Outcome::Planned) {
+        panel.caption << QString::fromStdString(io::outcomeName(row.outcome) + ": " + row.message);
+        return panel;
+    }
+    panel.caption << QStringLiteral("makespan %1 h, %2 x the lower bound")
+                         .arg(row.metrics.makespanSeconds / 3600.0, 0, 'f', 2)
+                         .arg(row.metrics.ratio, 0, 'f', 3)
+                  << QStringLiteral("%1 turns, covered %2 %, planned in %3 s")
+                         .arg(row.metrics.totalTurns())
+                         .arg(row.metrics.coveredFraction * 100.0, 0, 'f', 1)
+                         .arg(row.planningMilliseconds / 1000.0, 0, 'f', 2);
+    return panel;
+}
+
 QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
                              const std::vector<ComparisonPanel>& panels) {
     const int columns = columnsFor(panels.size());

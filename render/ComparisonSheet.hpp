@@ -3,6 +3,7 @@
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
+#include "io/ComparisonExport.hpp"
 
 #include <QImage>
 #include <QString>
@@ -18,6 +19,9 @@ struct ComparisonPanel {
     QStringList caption;
     const Plan* plan = nullptr;
 };
+
+// A planner's panel: its name, and its key figures or why it has no plan.
+[[nodiscard]] ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan);
 
 // The plans as small multiples on one sheet, same extent and scale, each with its name and figures under
 // it, and below them a bar chart of every robot's time per planner.

@@ -11,7 +11,6 @@
 #include <QScrollArea>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <numeric>
 
 namespace mcpp::ui {
 
@@ -21,8 +20,7 @@ enum Column { Name, Outcome, Ratio, Makespan, LowerBound, Turns, Length, Covered
 
 QTableWidgetItem* numberItem(double value, int decimals) {
     auto* item = new QTableWidgetItem;
-    // Numbers as numbers, so that sorting is numeric; shown rounded.
-    item->setData(Qt::EditRole, value);
+    // A number, not text, so that sorting is numeric; rounded for display.
     item->setData(Qt::DisplayRole, QString::number(value, 'f', decimals).toDouble());
     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     return item;
@@ -124,30 +122,17 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         auto* state = new QTableWidgetItem(QString::fromStdString(io::outcomeName(row.outcome)));
         state->setToolTip(QString::fromStdString(row.message));
         table_->setItem(r, Outcome, state);
-        render::ComparisonPanel panel;
-        panel.title = QString::fromStdString(row.planner);
-        panel.plan = outcome.plans[i].get();
-        if (row.outcome != io::ComparisonRow::Outcome::Planned) {
-            panel.caption << QString::fromStdString(io::outcomeName(row.outcome) + ": " + row.message);
-            panels.push_back(panel);
+        panels.push_back(render::comparisonPanelOf(row, outcome.plans[i].get()));
+        if (row.outcome != io::ComparisonRow::Outcome::Planned)
             continue;
-        }
         const PlanMetrics& metrics = row.metrics;
-        const int turns =
-            std::accumulate(metrics.robots.begin(), metrics.robots.end(), 0,
-                            [](int sum, const RobotMetrics& robot) { return sum + robot.turns; });
-        const double length =
-            std::accumulate(metrics.robots.begin(), metrics.robots.end(), 0.0,
-                            [](double sum, const RobotMetrics& robot) { return sum + robot.lengthMetres; });
         table_->setItem(r, Ratio, numberItem(metrics.ratio, 3));
         table_->setItem(r, Makespan, numberItem(metrics.makespanSeconds / 3600.0, 2));
         table_->setItem(r, LowerBound, numberItem(metrics.lowerBoundSeconds / 3600.0, 2));
-        table_->setItem(r, Turns, numberItem(turns, 0));
-        table_->setItem(r, Length, numberItem(length / 1000.0, 1));
+        table_->setItem(r, Turns, numberItem(metrics.totalTurns(), 0));
+        table_->setItem(r, Length, numberItem(metrics.totalLengthMetres() / 1000.0, 1));
         table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
         table_->setItem(r, Planning, numberItem(row.planningMilliseconds / 1000.0, 2));
-        panel.caption << tr("%1 x the lower bound, %2 turns").arg(metrics.ratio, 0, 'f', 3).arg(turns);
-        panels.push_back(panel);
     }
     table_->setSortingEnabled(true);
     sheetImage_ = render::renderComparisonSheet(grid, classes, panels);

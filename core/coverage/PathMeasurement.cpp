@@ -1,5 +1,7 @@
 #include "core/coverage/PathMeasurement.hpp"
 
+#include "core/coverage/PathShape.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -24,27 +26,10 @@ std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& gr
 } // namespace
 
 int countTurns(const std::vector<Waypoint>& waypoints) {
-    int turns = 0;
-    double previousX = 0.0;
-    double previousY = 0.0;
-    bool havePrevious = false;
-    for (std::size_t i = 1; i < waypoints.size(); ++i) {
-        const double dx = waypoints[i].x - waypoints[i - 1].x;
-        const double dy = waypoints[i].y - waypoints[i - 1].y;
-        const double length = std::sqrt(dx * dx + dy * dy);
-        if (length < 1e-9)
-            continue;
-        const double ux = dx / length;
-        const double uy = dy / length;
-        if (havePrevious &&
-            std::abs(ux * previousY - uy * previousX) + std::max(0.0, -(ux * previousX + uy * previousY)) >
-                1e-6)
-            ++turns;
-        previousX = ux;
-        previousY = uy;
-        havePrevious = true;
-    }
-    return turns;
+    PathShape shape;
+    for (const Waypoint& waypoint : waypoints)
+        shape.add(waypoint.x, waypoint.y);
+    return shape.turns();
 }
 
 int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph) {

@@ -4,9 +4,9 @@
 
 namespace mcpp {
 
-// The length and turns of a polyline fed one point at a time, by the same rules as measurePath and
-// countTurns (zero-length steps skipped, a U-turn counted once), so two candidate walks can be compared
-// without storing either.
+// The length and turns of a polyline fed one point at a time: the one rule for turns (zero-length steps
+// skipped, a U-turn counted once), used by countTurns and to compare two candidate walks without storing
+// either.
 class PathShape {
   public:
     void add(double x, double y);

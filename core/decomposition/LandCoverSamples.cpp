@@ -181,7 +181,7 @@ void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows) {
                             " bottom cells, which need " + describeGigabytes(needed) +
                             " of memory to plan; this machine allows " + describeGigabytes(budget) +
                             ". A smallest field of view of " + describeMetres(fitting) +
-                            " m would fit: raise the field of view of the classes, " + "or crop the raster");
+                            " m would fit: raise the field of view of the classes, or crop the raster");
 }
 
 double overlapLength(double a0, double a1, double b0, double b1) {

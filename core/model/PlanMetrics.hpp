@@ -28,6 +28,19 @@ struct PlanMetrics {
     double unreachableAreaSquareMetres = 0.0;
     double repeatedFraction = 0.0; // path length beyond one pass over every sub-cell, relative to it
     std::vector<std::pair<std::string, double>> stageMilliseconds;
+
+    [[nodiscard]] int totalTurns() const {
+        int turns = 0;
+        for (const RobotMetrics& robot : robots)
+            turns += robot.turns;
+        return turns;
+    }
+    [[nodiscard]] double totalLengthMetres() const {
+        double length = 0.0;
+        for (const RobotMetrics& robot : robots)
+            length += robot.lengthMetres;
+        return length;
+    }
 };
 
 } // namespace mcpp
