@@ -2,12 +2,15 @@
 
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
+#include "core/outlines/RegionOutlines.hpp"
 #include "io/GeoReference.hpp"
 #include "io/Mission.hpp"
 #include "io/Result.hpp"
 
 #include <atomic>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -35,6 +38,15 @@ struct ExportContext {
     const std::atomic<bool>* cancelRequested = nullptr;
 
     [[nodiscard]] bool cancelled() const { return cancelRequested != nullptr && cancelRequested->load(); }
+    // The plan's region outlines, traced on first use and shared by every writer of this context (and its
+    // copies), whichever thread asks first.
+    [[nodiscard]] const RegionOutlines& outlines() const;
+
+    struct OutlineCache {
+        std::once_flag traced;
+        RegionOutlines outlines;
+    };
+    std::shared_ptr<OutlineCache> outlineCache = std::make_shared<OutlineCache>(); // for outlines() only
 };
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.

@@ -119,8 +119,7 @@ Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transfo
 }
 
 Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::string& path) {
-    auto features = internal::buildPlanFeatures(context.plan, context.georeference.metresPerUnit(),
-                                                context.settings.densePaths);
+    auto features = internal::buildPlanFeatures(context);
     if (!features)
         return Result<PlanFeatures>::failure(path + ": " + features.error());
     auto transformation = toWgs84(context.georeference, path);
@@ -336,8 +335,7 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
 
 Status writePlanGeoPackage(const ExportContext& context, const std::string& path) {
     QuietGdalErrors quiet;
-    const double metresPerUnit = context.georeference.metresPerUnit();
-    auto features = internal::buildPlanFeatures(context.plan, metresPerUnit, context.settings.densePaths);
+    auto features = internal::buildPlanFeatures(context);
     if (!features)
         return Status::failure(path + ": " + features.error());
     std::unique_ptr<OGRSpatialReference> crs;

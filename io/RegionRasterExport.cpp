@@ -89,7 +89,7 @@ Status describe(GDALDataset& dataset, const ExportContext& context, const LabelG
 
 Status writeRegionRaster(const ExportContext& context, const std::string& path) {
     QuietGdalErrors quiet;
-    const LabelGrid labels = regionLabels(context.plan);
+    const LabelGrid& labels = context.outlines().labels;
     if (labels.columns == 0 || labels.rows == 0)
         return Status::failure(path + ": the plan has no cells");
     const int robots = internal::robotCount(context.plan);

@@ -45,7 +45,7 @@ bool checkInputs(const ClassGrid& grid, QSize maxSize, const QString& path, QStr
 } // namespace
 
 QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan, QSize maxSize,
-                       const MapLayers& layers) {
+                       const MapLayers& layers, const RegionOutlines* outlines) {
     if (grid.columns <= 0 || grid.rows <= 0 || maxSize.width() <= 0 || maxSize.height() <= 0)
         return {};
     const QSize size = fittedSize(grid, maxSize);
@@ -54,7 +54,7 @@ QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const P
 
     PlanRenderer renderer;
     renderer.setMap(&grid, &classes);
-    renderer.setPlan(plan);
+    renderer.setPlan(plan, outlines);
     renderer.setLayers(layers);
     QPainter painter(&image);
     renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)),
@@ -64,13 +64,13 @@ QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const P
 }
 
 bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error) {
+                  QSize maxSize, QString* error, const RegionOutlines* outlines) {
     if (!checkInputs(grid, maxSize, path, error))
         return false;
     // The picture has no transparency: three bytes a pixel, and light compression, write several times
     // faster than the default for a few per cent more bytes.
     const QImage image =
-        renderPlanImage(grid, classes, &plan, maxSize).convertToFormat(QImage::Format_RGB888);
+        renderPlanImage(grid, classes, &plan, maxSize, {}, outlines).convertToFormat(QImage::Format_RGB888);
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         setError(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
@@ -85,7 +85,7 @@ bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& 
 }
 
 bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error) {
+                  QSize maxSize, QString* error, const RegionOutlines* outlines) {
     if (!checkInputs(grid, maxSize, path, error))
         return false;
     const QFileInfo info(path);
@@ -104,7 +104,7 @@ bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& 
 
     PlanRenderer renderer;
     renderer.setMap(&grid, &classes);
-    renderer.setPlan(&plan);
+    renderer.setPlan(&plan, outlines);
     QPainter painter;
     if (!painter.begin(&generator)) {
         setError(error, QStringLiteral("cannot write %1: the file could not be opened").arg(path));

@@ -3,6 +3,7 @@
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
+#include "core/outlines/RegionOutlines.hpp"
 #include "render/MapLayers.hpp"
 
 #include <QImage>
@@ -12,15 +13,17 @@
 namespace mcpp::render {
 
 // The map (raster in class colours) and the plan over it, north up, fitted into maxSize keeping aspect.
-// Pixels outside the raster's task area are white. plan may be null to draw the map alone.
+// Pixels outside the raster's task area are white. plan may be null to draw the map alone; outlines are the
+// plan's region outlines when the caller has them (traced here otherwise).
 [[nodiscard]] QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan,
-                                     QSize maxSize, const MapLayers& layers = {});
+                                     QSize maxSize, const MapLayers& layers = {},
+                                     const RegionOutlines* outlines = nullptr);
 
 // Writes the image as PNG. On failure returns false and says why in *error (when error is not null).
 bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error);
+                  QSize maxSize, QString* error, const RegionOutlines* outlines = nullptr);
 // Writes the same picture as SVG (vector paths and cells; the land cover embedded as an image).
 bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error);
+                  QSize maxSize, QString* error, const RegionOutlines* outlines = nullptr);
 
 } // namespace mcpp::render

@@ -10,11 +10,11 @@ io::ImageWriter planImageWriter(int pngSide) {
             return io::Status::failure(path + ": there is no map to draw");
         QString error;
         const QString file = QString::fromStdString(path);
-        const bool written =
-            format == io::ImageFormat::Png
-                ? writePlanPng(*context.grid, context.classes, context.plan, file, QSize(pngSide, pngSide),
-                               &error)
-                : writePlanSvg(*context.grid, context.classes, context.plan, file, QSize(1600, 1600), &error);
+        const bool written = format == io::ImageFormat::Png
+                                 ? writePlanPng(*context.grid, context.classes, context.plan, file,
+                                                QSize(pngSide, pngSide), &error, &context.outlines())
+                                 : writePlanSvg(*context.grid, context.classes, context.plan, file,
+                                                QSize(1600, 1600), &error, &context.outlines());
         return written ? io::Status() : io::Status::failure(path + ": " + error.toStdString());
     };
 }

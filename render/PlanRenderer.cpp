@@ -1,7 +1,7 @@
 #include "render/PlanRenderer.hpp"
 
-#include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionLabels.hpp"
+#include "core/outlines/RegionOutlines.hpp"
 #include "io/PlanExport.hpp"
 #include "render/RobotPalette.hpp"
 
@@ -174,19 +174,23 @@ void PlanRenderer::setMap(const ClassGrid* grid, const ClassTable* classes) {
                                           grid_->originY - grid_->minY()));
 }
 
-void PlanRenderer::setPlan(const Plan* plan) {
+void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     plan_ = plan;
-    prepareRegions();
+    prepareRegions(outlines);
     preparePaths();
 }
 
-void PlanRenderer::prepareRegions() {
+void PlanRenderer::prepareRegions(const RegionOutlines* given) {
     regionPyramid_.clear();
     regionBorders_.clear();
     unreachableOutlines_.clear();
     if (plan_ == nullptr || plan_->regions.robotOfCell.empty() || plan_->cells.empty())
         return;
-    const LabelGrid labels = regionLabels(*plan_);
+    RegionOutlines traced;
+    if (given == nullptr)
+        traced = regionOutlines(*plan_);
+    const RegionOutlines& outlines = given != nullptr ? *given : traced;
+    const LabelGrid& labels = outlines.labels;
     // One image pixel per sub-cell, or per block of them on maps beyond 16 million sub-cells.
     constexpr std::int64_t largestImage = 16'000'000;
     int step = 1;
@@ -213,7 +217,7 @@ void PlanRenderer::prepareRegions() {
     regionPyramid_ =
         pyramidOf(image, QRectF(labels.originX, labels.originY - height * size, width * size, height * size));
 
-    for (const OutlinePolygon& outline : traceOutlines(labels)) {
+    for (const OutlinePolygon& outline : outlines.polygons) {
         auto& target = outline.label == unreachableLabel ? unreachableOutlines_ : regionBorders_;
         if (outline.label < 0 && outline.label != unreachableLabel)
             continue;

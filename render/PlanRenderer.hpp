@@ -4,6 +4,7 @@
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
 #include "core/model/Plan.hpp"
+#include "core/outlines/RegionOutlines.hpp"
 #include "render/MapLayers.hpp"
 
 #include <QImage>
@@ -24,7 +25,8 @@ class PlanRenderer {
   public:
     // Rebuilds the cached land-cover image; call again when the class colours change.
     void setMap(const ClassGrid* grid, const ClassTable* classes);
-    void setPlan(const Plan* plan);
+    // outlines: the plan's, when the caller has them already (exports share one tracing); else traced here.
+    void setPlan(const Plan* plan, const RegionOutlines* outlines = nullptr);
     // Start points to draw; when empty the first waypoint of each path is used.
     void setStarts(std::vector<MapPoint> starts);
     void setLayers(const MapLayers& layers) { layers_ = layers; }
@@ -65,7 +67,7 @@ class PlanRenderer {
         QImage image;
         QRectF world; // x = west..east, y = south..north
     };
-    void prepareRegions();
+    void prepareRegions(const RegionOutlines* given);
     void preparePaths();
     void drawGridImage(QPainter& painter, const GridImage& grid, const QTransform& worldToDevice,
                        const QRectF& deviceArea) const;

@@ -1,5 +1,8 @@
 #include "core/outlines/RegionLabels.hpp"
 
+#include "core/outlines/OutlineTracer.hpp"
+#include "core/outlines/RegionOutlines.hpp"
+
 #include <algorithm>
 
 namespace mcpp {
@@ -47,6 +50,13 @@ LabelGrid regionLabels(const Plan& plan) {
         }
     }
     return grid;
+}
+
+RegionOutlines regionOutlines(const Plan& plan) {
+    RegionOutlines outlines;
+    outlines.labels = regionLabels(plan);
+    outlines.polygons = traceOutlines(outlines.labels);
+    return outlines;
 }
 
 } // namespace mcpp

@@ -1,6 +1,5 @@
 #include "io/internal/PlanGeometry.hpp"
 
-#include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "io/PlanExport.hpp"
 
@@ -125,7 +124,10 @@ std::unique_ptr<OGRPolygon> cellSquare(const CellGraph& graph, const Cell& cell,
                   frame.x(cell.column + cell.span) / metresPerUnit, frame.y(cell.row) / metresPerUnit);
 }
 
-Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit, bool densePaths) {
+Result<PlanFeatures> buildPlanFeatures(const ExportContext& context) {
+    const Plan& plan = context.plan;
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    const bool densePaths = context.settings.densePaths;
     const auto& owner = plan.regions.robotOfCell;
     if (!owner.empty() && owner.size() != plan.cells.size()) {
         return Result<PlanFeatures>::failure("the regions name " + std::to_string(owner.size()) +
@@ -134,9 +136,10 @@ Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit, b
     }
     PlanFeatures features;
     features.regions = emptyRegions(plan);
-    const LabelGrid labels = regionLabels(plan);
+    const RegionOutlines& outlines = context.outlines();
+    const LabelGrid& labels = outlines.labels;
     const double pixelArea = labels.pixelSize * labels.pixelSize;
-    for (const OutlinePolygon& outline : traceOutlines(labels)) {
+    for (const OutlinePolygon& outline : outlines.polygons) {
         if (outline.label == unreachableLabel) {
             features.unreachable.push_back(UnreachableFeature{
                 polygonOf(outline, labels, metresPerUnit), static_cast<double>(outline.pixels) * pixelArea});

@@ -2,6 +2,7 @@
 
 #include "core/model/Plan.hpp"
 #include "io/GeoReference.hpp"
+#include "io/PlanExport.hpp"
 #include "io/Result.hpp"
 
 #include <memory>
@@ -46,7 +47,8 @@ struct PlanFeatures {
     std::vector<UnreachableFeature> unreachable; // one per connected part
 };
 
-[[nodiscard]] Result<PlanFeatures> buildPlanFeatures(const Plan& plan, double metresPerUnit, bool densePaths);
+// From the context's plan, its (shared) region outlines, its CRS's units and its dense-paths setting.
+[[nodiscard]] Result<PlanFeatures> buildPlanFeatures(const ExportContext& context);
 // The square of one cell in CRS units, its corners computed from its placement on the bottom grid so that
 // neighbouring cells share exactly the same edge coordinates.
 [[nodiscard]] std::unique_ptr<OGRPolygon> cellSquare(const CellGraph& graph, const Cell& cell,
