@@ -16,7 +16,8 @@ namespace mcpp::ui {
 
 namespace {
 
-enum Column { Name, Outcome, Ratio, Makespan, LowerBound, Turns, Length, Covered, Planning, Columns };
+// The figures that decide between planners; comparison.csv and the sheet below carry the rest.
+enum Column { Name, Outcome, Ratio, Makespan, Turns, Planning, Columns };
 
 QTableWidgetItem* numberItem(double value, int decimals) {
     auto* item = new QTableWidgetItem;
@@ -49,9 +50,19 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
 
     table_ = new QTableWidget(0, Columns, this);
     table_->setObjectName(QStringLiteral("comparisonTable"));
-    table_->setHorizontalHeaderLabels({tr("Planner"), tr("Outcome"), tr("Ratio"), tr("Makespan (h)"),
-                                       tr("Bound (h)"), tr("Turns"), tr("Length (km)"), tr("Covered %"),
-                                       tr("Planned in (s)")});
+    // Short headings so the table fits the dock; each says in full what it holds when hovered.
+    const std::vector<std::pair<QString, QString>> headings{
+        {tr("Planner"), tr("The planner's name")},
+        {tr("State"), tr("Planned, failed or skipped (hover over the cell for why)")},
+        {tr("Ratio"), tr("Makespan divided by the lower bound: 1.00 is perfectly balanced")},
+        {tr("Hours"), tr("Makespan: the time of the slowest robot, in hours")},
+        {tr("Turns"), tr("Turns of all robots together")},
+        {tr("Plan s"), tr("Seconds the planner took")}};
+    for (int column = 0; column < Columns; ++column) {
+        auto* heading = new QTableWidgetItem(headings[static_cast<std::size_t>(column)].first);
+        heading->setToolTip(headings[static_cast<std::size_t>(column)].second);
+        table_->setHorizontalHeaderItem(column, heading);
+    }
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -128,13 +139,11 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         const PlanMetrics& metrics = row.metrics;
         table_->setItem(r, Ratio, numberItem(metrics.ratio, 3));
         table_->setItem(r, Makespan, numberItem(metrics.makespanSeconds / 3600.0, 2));
-        table_->setItem(r, LowerBound, numberItem(metrics.lowerBoundSeconds / 3600.0, 2));
         table_->setItem(r, Turns, numberItem(metrics.totalTurns(), 0));
-        table_->setItem(r, Length, numberItem(metrics.totalLengthMetres() / 1000.0, 1));
-        table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
         table_->setItem(r, Planning, numberItem(row.planningMilliseconds / 1000.0, 2));
     }
     table_->setSortingEnabled(true);
+    table_->sortByColumn(Ratio, Qt::AscendingOrder); // the best balanced first
     sheetImage_ = render::renderComparisonSheet(grid, classes, panels);
     fitSheet();
 }
