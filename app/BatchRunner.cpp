@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <mutex>
 #include <optional>
@@ -208,10 +209,13 @@ void BatchRunner::checkOutputFolder() const {
         badInput("--out: cannot create folder " + quotedFolder + ": \"" + folder.string() +
                  "\" is not a folder");
     }
-    if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    // A folder made and removed again: the permission bits do not tell for root or special file systems.
+    std::string probe = (folder / ".mcpp-write-check-XXXXXX").string();
+    if (::access(folder.c_str(), W_OK | X_OK) != 0 || ::mkdtemp(probe.data()) == nullptr) {
         badInput("--out: cannot write folder " + quotedFolder + ": \"" + folder.string() +
                  "\" is not writable");
     }
+    fs::remove(probe, code);
 }
 
 Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
@@ -262,9 +266,15 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
         std::string name;
     };
     std::vector<Output> outputs; // catalogue order, in which results are reported
+    std::string withoutCrs;      // outputs a map without a CRS cannot have
     for (const io::ExportFormat& format : io::exportFormats()) {
         if (!format.inBatchOutputs)
             continue;
+        if (format.needsLongitudeLatitude && !raster_.georeference.hasCrs()) {
+            withoutCrs += (withoutCrs.empty() ? "" : ", ") +
+                          (format.perRobot ? "robot_<i>." + format.extension : format.batchFileName);
+            continue;
+        }
         if (!format.perRobot) {
             outputs.push_back({&format, -1, format.batchFileName});
             continue;
@@ -272,6 +282,9 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
         for (int robot = 0; robot < robots; ++robot)
             outputs.push_back({&format, robot, io::robotFileName(robot, format)});
     }
+    if (!withoutCrs.empty())
+        warn("the map has no CRS, so these outputs, in longitude and latitude, are not written: " +
+             withoutCrs);
     const auto isReport = [&](std::size_t i) { return outputs[i].format->key == "report-json"; };
     // report.json comes last, so that it can say how long the others took; the picture, the longest on
     // small plans, first, so that the rest are written beside it.

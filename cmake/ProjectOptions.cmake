@@ -12,6 +12,8 @@ if(MCPP_WARNINGS_AS_ERRORS)
   target_compile_options(mcpp_project_options INTERFACE -Werror)
 endif()
 if(MCPP_SANITIZE)
-  target_compile_options(mcpp_project_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer)
+  # Any undefined-behaviour report stops the program, so a test with one fails.
+  target_compile_options(mcpp_project_options INTERFACE -fsanitize=address,undefined -fno-sanitize-recover=all
+                                                        -fno-omit-frame-pointer)
   target_link_options(mcpp_project_options INTERFACE -fsanitize=address,undefined)
 endif()

@@ -38,6 +38,11 @@ ExportFormat inBatch(ExportFormat result, std::string fileName, bool required) {
     return result;
 }
 
+ExportFormat inLongitudeLatitude(ExportFormat result) {
+    result.needsLongitudeLatitude = true;
+    return result;
+}
+
 ExportFormat perRobot(ExportFormat result) {
     result.perRobot = true;
     return result;
@@ -45,24 +50,26 @@ ExportFormat perRobot(ExportFormat result) {
 
 std::vector<ExportFormat> makeCatalogue() {
     return {
-        inBatch(format("geojson", "GeoJSON", "geojson", "GeoJSON (*.geojson *.json)",
-                       wholePlan(writePlanGeoJson)),
+        inBatch(inLongitudeLatitude(format("geojson", "GeoJSON", "geojson", "GeoJSON (*.geojson *.json)",
+                                           wholePlan(writePlanGeoJson))),
                 "plan.geojson", true),
         inBatch(format("gpkg", "GeoPackage", "gpkg", "GeoPackage (*.gpkg)", wholePlan(writePlanGeoPackage)),
                 "plan.gpkg", false),
         inBatch(format("regions-tif", "Regions raster (GeoTIFF)", "tif", "GeoTIFF (*.tif *.tiff)",
                        wholePlan(writeRegionRaster)),
                 "regions.tif", false),
-        format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml)),
-        format("gpx", "GPX", "gpx", "GPX (*.gpx)", wholePlan(writePlanGpx)),
-        inBatch(perRobot(format("qgc-plan", "QGroundControl plan per robot", "plan",
-                                "QGroundControl plan (*.plan)", writeQGroundControlPlan)),
-                {}, true),
-        inBatch(perRobot(format("qgc-wpl", "Waypoint list (QGC WPL) per robot", "waypoints",
-                                "Waypoint list (*.waypoints *.txt)", writeWaypointList)),
-                {}, true),
-        inBatch(perRobot(
-                    format("waypoint-csv", "Waypoint CSV per robot", "csv", "CSV (*.csv)", writeWaypointCsv)),
+        inLongitudeLatitude(format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml))),
+        inLongitudeLatitude(format("gpx", "GPX", "gpx", "GPX (*.gpx)", wholePlan(writePlanGpx))),
+        inBatch(
+            inLongitudeLatitude(perRobot(format("qgc-plan", "QGroundControl plan per robot", "plan",
+                                                "QGroundControl plan (*.plan)", writeQGroundControlPlan))),
+            {}, true),
+        inBatch(
+            inLongitudeLatitude(perRobot(format("qgc-wpl", "Waypoint list (QGC WPL) per robot", "waypoints",
+                                                "Waypoint list (*.waypoints *.txt)", writeWaypointList))),
+            {}, true),
+        inBatch(inLongitudeLatitude(perRobot(format("waypoint-csv", "Waypoint CSV per robot", "csv",
+                                                    "CSV (*.csv)", writeWaypointCsv))),
                 {}, true),
         inBatch(format("report-json", "Report (JSON)", "json", "JSON (*.json)", wholePlan(writeReportJson)),
                 "report.json", true),

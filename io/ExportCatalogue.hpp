@@ -17,6 +17,8 @@ struct ExportFormat {
     std::string extension; // without the dot
     std::string filter;    // file-dialog filter: "GeoJSON (*.geojson *.json)"
     bool perRobot = false; // one file per robot
+    // Written in WGS84 longitude and latitude, so impossible for a map without a CRS.
+    bool needsLongitudeLatitude = false;
     // Batch mode: whether it writes this format, under which name (whole-plan formats; per-robot files are
     // robot_<i>.<extension>), and whether a failure ends the run (else it is a warning).
     bool inBatchOutputs = false;

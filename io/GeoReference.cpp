@@ -1,5 +1,6 @@
 #include "io/GeoReference.hpp"
 
+#include "core/model/HumanUnits.hpp"
 #include "io/internal/GdalSupport.hpp"
 
 #include <cmath>
@@ -110,8 +111,9 @@ Result<LonLat> GeoReference::toWgs84(MapPoint point) const {
     double x = crsPoint.x;
     double y = crsPoint.y;
     if (!transformPoint(*state_->toWgs84, x, y)) {
-        return Result<LonLat>::failure("point (" + std::to_string(point.x) + ", " + std::to_string(point.y) +
-                                       ") cannot be transformed to WGS84" + quiet.detail());
+        return Result<LonLat>::failure("point (" + formatQuantity(point.x, 12) + ", " +
+                                       formatQuantity(point.y, 12) + ") cannot be transformed to WGS84" +
+                                       quiet.detail());
     }
     return LonLat{x, y};
 }
@@ -132,8 +134,8 @@ Result<MapPoint> GeoReference::fromWgs84(LonLat lonLat) const {
     double x = lonLat.longitude;
     double y = lonLat.latitude;
     if (!transformPoint(*state_->fromWgs84, x, y)) {
-        return Result<MapPoint>::failure("longitude " + std::to_string(lonLat.longitude) + ", latitude " +
-                                         std::to_string(lonLat.latitude) + " cannot be transformed to " +
+        return Result<MapPoint>::failure("longitude " + formatQuantity(lonLat.longitude, 10) + ", latitude " +
+                                         formatQuantity(lonLat.latitude, 10) + " cannot be transformed to " +
                                          name() + quiet.detail());
     }
     return fromCrsUnits({x, y});
@@ -155,8 +157,8 @@ Result<MapPoint> GeoReference::fromCrs(const std::string& definition, MapPoint p
     double x = point.x;
     double y = point.y;
     if (!transformation || !transformPoint(*transformation, x, y)) {
-        return Result<MapPoint>::failure("point (" + std::to_string(point.x) + ", " +
-                                         std::to_string(point.y) + ") in " + definition +
+        return Result<MapPoint>::failure("point (" + formatQuantity(point.x, 12) + ", " +
+                                         formatQuantity(point.y, 12) + ") in " + definition +
                                          " cannot be transformed to " + name() + quiet.detail());
     }
     return fromCrsUnits({x, y});
@@ -178,8 +180,8 @@ Result<MapPoint> GeoReference::toCrs(const std::string& definition, MapPoint poi
     double x = crsPoint.x;
     double y = crsPoint.y;
     if (!transformation || !transformPoint(*transformation, x, y)) {
-        return Result<MapPoint>::failure("point (" + std::to_string(point.x) + ", " +
-                                         std::to_string(point.y) + ") cannot be transformed to " +
+        return Result<MapPoint>::failure("point (" + formatQuantity(point.x, 12) + ", " +
+                                         formatQuantity(point.y, 12) + ") cannot be transformed to " +
                                          definition + quiet.detail());
     }
     return MapPoint{x, y};

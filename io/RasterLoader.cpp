@@ -1,3 +1,4 @@
+#include "core/model/HumanUnits.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/LegendReader.hpp"
@@ -190,6 +191,10 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
     chunkRows = std::min(chunkRows, plan.rows);
 
     std::vector<double> buffer(static_cast<std::size_t>(chunkRows) * static_cast<std::size_t>(plan.columns));
+    // A mask of its own (a .msk side file, an internal mask, an alpha band) marks pixels as nodata too.
+    const int maskFlags = band.GetMaskFlags();
+    GDALRasterBand* mask = (maskFlags & (GMF_ALL_VALID | GMF_NODATA)) == 0 ? band.GetMaskBand() : nullptr;
+    std::vector<std::uint8_t> maskBuffer(mask != nullptr ? buffer.size() : 0);
     std::unordered_map<std::int32_t, std::int64_t> counts;
     std::int64_t nanPixels = 0;
     std::int64_t outsidePixels = 0;
@@ -220,6 +225,16 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
             return Status::failure(path + ": read failed at row " + std::to_string(sourceFirstRow) +
                                    " of band " + std::to_string(bandNumber) + QuietGdalErrors::detail());
         }
+        if (mask != nullptr) {
+            extra.eResampleAlg = GRIORA_NearestNeighbour;
+            if (mask->RasterIO(GF_Read, 0, sourceFirstRow, plan.sourceColumns, sourceRowCount,
+                               maskBuffer.data(), plan.columns, rowsHere, GDT_Byte, 0, 0,
+                               &extra) != CE_None) {
+                return Status::failure(path + ": read failed at row " + std::to_string(sourceFirstRow) +
+                                       " of the mask of band " + std::to_string(bandNumber) +
+                                       QuietGdalErrors::detail());
+            }
+        }
         for (int row = 0; row < rowsHere; ++row) {
             // Land cover comes in runs of one class: count a run at a time, not a pixel at a time.
             std::int32_t runValue = 0;
@@ -229,8 +244,12 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
                     buffer[static_cast<std::size_t>(row) * static_cast<std::size_t>(plan.columns) +
                            static_cast<std::size_t>(column)];
                 const std::size_t index = grid.index(column, firstRow + row);
-                if (isNodata(value) || std::isnan(value)) {
-                    if (!isNodata(value))
+                const std::size_t inChunk =
+                    static_cast<std::size_t>(row) * static_cast<std::size_t>(plan.columns) +
+                    static_cast<std::size_t>(column);
+                const bool masked = mask != nullptr && maskBuffer[inChunk] == 0;
+                if (masked || isNodata(value) || std::isnan(value)) {
+                    if (!masked && !isNodata(value))
                         ++nanPixels;
                     grid.outside[index] = 1;
                     ++outsidePixels;
@@ -241,11 +260,11 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
                 };
                 if (floating && value != std::floor(value)) {
                     return Status::failure(path + ": band " + std::to_string(bandNumber) +
-                                           " holds the fractional value " + std::to_string(value) + where() +
-                                           "; a land-cover raster needs integer class values");
+                                           " holds the fractional value " + formatQuantity(value, 10) +
+                                           where() + "; a land-cover raster needs integer class values");
                 }
                 if (value < -2147483648.0 || value > 2147483647.0) {
-                    return Status::failure(path + ": value " + std::to_string(value) + where() +
+                    return Status::failure(path + ": value " + formatQuantity(value, 12) + where() +
                                            " does not fit a 32-bit class value (is the nodata value set?)");
                 }
                 const auto classValue = static_cast<std::int32_t>(value);
@@ -260,6 +279,10 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
             if (runLength > 0)
                 counts[runValue] += runLength;
         }
+    }
+    if (outsidePixels == static_cast<std::int64_t>(cellCount)) {
+        return Status::failure(path + ": every pixel of band " + std::to_string(bandNumber) +
+                               " is nodata or masked; there is no area to plan");
     }
     if (outsidePixels == 0)
         grid.outside.clear();
@@ -345,8 +368,8 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
     }
     if (!(transform[1] > 0.0) || transform[5] == 0.0 || !std::isfinite(transform[1]) ||
         !std::isfinite(transform[5])) {
-        return RasterResult::failure(path + ": pixel size " + std::to_string(transform[1]) + " x " +
-                                     std::to_string(transform[5]) + " is not usable (must run west to east)");
+        return RasterResult::failure(path + ": pixel size " + formatQuantity(transform[1]) + " x " +
+                                     formatQuantity(transform[5]) + " is not usable (must run west to east)");
     }
 
     std::unique_ptr<OGRSpatialReference> planningCrs;

@@ -223,11 +223,18 @@ bool ClassTableModel::setData(const QModelIndex& index, const QVariant& value, i
                 return refuse(
                     tr("Speed of %1 cannot be negative; use 0 or clear Passable to make it an obstacle.")
                         .arg(className));
+            if (number > kMaximumSpeedMetresPerSecond)
+                return refuse(tr("Speed of %1 cannot be above %2 m/s.")
+                                  .arg(className)
+                                  .arg(kMaximumSpeedMetresPerSecond));
             edited.speedMetresPerSecond = number;
             description = tr("Set speed of %1 to %2 m/s").arg(className).arg(number);
         } else {
             if (number <= 0.0)
                 return refuse(tr("FOV of %1 must be greater than 0 m.").arg(className));
+            if (number > kMaximumFieldOfViewMetres)
+                return refuse(
+                    tr("FOV of %1 cannot be above %2 m.").arg(className).arg(kMaximumFieldOfViewMetres));
             edited.fieldOfViewMetres = number;
             description = tr("Set FOV of %1 to %2 m").arg(className).arg(number);
         }

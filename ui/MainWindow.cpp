@@ -195,12 +195,7 @@ void MainWindow::createDocks() {
                                                           dialogFolder(kMissionFolderKey), tr("CSV (*.csv)"));
         if (path.isEmpty())
             return;
-        auto table = io::loadClassTableCsv(path.toStdString());
-        if (!table.ok())
-            return reportError(tr("Cannot load class table"), QString::fromStdString(table.error()));
-        undoStack_->push(new ClassTableEditCommand(
-            document_, document_->classes(), QString::fromStdString(document_->mission().preset),
-            table.value(), QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
+        loadClassTable(path);
     });
     connect(saveCsv, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Save class table"),
@@ -607,8 +602,14 @@ void MainWindow::updateActions() {
     planAction_->setEnabled(hasMap && !planning && !exporting && !document_->robots().empty());
     cancelAction_->setEnabled(planning);
     saveAction_->setEnabled(hasMap);
-    for (QAction* action : exportActions_)
-        action->setEnabled(document_->plan() != nullptr && !planning && !exporting);
+    const bool hasCrs = hasMap && document_->raster()->georeference.hasCrs();
+    for (QAction* action : exportActions_) {
+        const io::ExportFormat* format = io::findExportFormat(action->objectName().mid(7).toStdString());
+        const bool placeable = hasCrs || format == nullptr || !format->needsLongitudeLatitude;
+        action->setEnabled(document_->plan() != nullptr && !planning && !exporting && placeable);
+        action->setToolTip(placeable ? QString()
+                                     : tr("The map has no CRS: this format needs longitude and latitude"));
+    }
     compareAction_->setEnabled(hasMap && !planning && !exporting && !document_->robots().empty());
     comparisonPanel_->setRunning(planning || exporting);
     comparisonPanel_->setRobotCount(static_cast<int>(document_->robots().size()));
@@ -620,6 +621,20 @@ void MainWindow::updateResults() {
         names << QString::fromStdString(robot.name);
     resultsPanel_->showPlan(document_->plan(), names);
     resultsPanel_->setStale(document_->planStale());
+}
+
+bool MainWindow::loadClassTable(const QString& path) {
+    if (!document_->hasMap())
+        return false;
+    auto table = io::loadClassTableCsv(path.toStdString());
+    if (!table.ok()) {
+        reportError(tr("Cannot load class table"), QString::fromStdString(table.error()));
+        return false;
+    }
+    undoStack_->push(new ClassTableEditCommand(
+        document_, document_->classes(), QString::fromStdString(document_->mission().preset), table.value(),
+        QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
+    return true;
 }
 
 void MainWindow::syncPresetCombo() {

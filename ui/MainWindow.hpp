@@ -48,6 +48,8 @@ class MainWindow : public QMainWindow {
     bool openMission(const QString& path);
     bool openRaster(const QString& path, const QString& preset = {});
     bool saveMission(const QString& path);
+    // Replaces the class table with a CSV file's, as one undoable step; false (and a message) on error.
+    bool loadClassTable(const QString& path);
     // Per-robot formats (QGC .plan, WPL, CSV waypoints) write one file per robot: path's stem plus the robot
     // number, unless there is a single robot.
     // formatKey: a key of io::exportFormats(), e.g. "geojson". The files are written in the background

@@ -1,5 +1,6 @@
 #include "core/decomposition/LandCoverSamples.hpp"
 
+#include "core/model/HumanUnits.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningError.hpp"
 
@@ -73,11 +74,11 @@ void checkDecompositionInputs(const ClassGrid& grid, const ClassTable& classes,
     if (!std::isfinite(options.purityTolerance) || options.purityTolerance < 0.0 ||
         options.purityTolerance >= 1.0)
         throw PlanningError(Kind::InvalidParameter, "purity tolerance must be in [0, 1), got " +
-                                                        std::to_string(options.purityTolerance));
+                                                        formatQuantity(options.purityTolerance));
     if (!std::isfinite(options.blockedThreshold) || options.blockedThreshold < 0.0 ||
         options.blockedThreshold > 1.0)
         throw PlanningError(Kind::InvalidParameter, "blocked threshold must be in [0, 1], got " +
-                                                        std::to_string(options.blockedThreshold));
+                                                        formatQuantity(options.blockedThreshold));
 }
 
 PixelCodes codePixels(const ClassGrid& grid, const ClassTable& classes) {

@@ -1,5 +1,7 @@
 #include "core/model/ClassTable.hpp"
 
+#include "core/model/HumanUnits.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -46,12 +48,19 @@ std::optional<std::string> ClassTable::validate() const {
         if (!std::isfinite(c.speedMetresPerSecond))
             return where.str() + ": speed is not a number";
         if (c.speedMetresPerSecond < 0.0)
-            return where.str() + ": speed " + std::to_string(c.speedMetresPerSecond) + " m/s is negative";
+            return where.str() + ": speed " + formatQuantity(c.speedMetresPerSecond) + " m/s is negative";
+        if (c.speedMetresPerSecond > kMaximumSpeedMetresPerSecond)
+            return where.str() + ": speed " + formatQuantity(c.speedMetresPerSecond) +
+                   " m/s is beyond any robot (at most " + formatQuantity(kMaximumSpeedMetresPerSecond) +
+                   " m/s)";
         if (!std::isfinite(c.fieldOfViewMetres))
             return where.str() + ": field of view is not a number";
         if (c.isTraversable() && c.fieldOfViewMetres <= 0.0)
-            return where.str() + ": field of view " + std::to_string(c.fieldOfViewMetres) +
+            return where.str() + ": field of view " + formatQuantity(c.fieldOfViewMetres) +
                    " m must be greater than zero for a passable class";
+        if (c.fieldOfViewMetres > kMaximumFieldOfViewMetres)
+            return where.str() + ": field of view " + formatQuantity(c.fieldOfViewMetres) +
+                   " m is beyond any sensor (at most " + formatDistance(kMaximumFieldOfViewMetres) + ")";
     }
     return std::nullopt;
 }

@@ -5,6 +5,11 @@
 
 namespace mcpp {
 
+// Beyond these a value is a typo (a speed in km/h as m/s, a FOV in millimetres as metres), not a robot:
+// faster than any ground robot or multirotor, wider than any sensor footprint.
+inline constexpr double kMaximumSpeedMetresPerSecond = 1000.0;
+inline constexpr double kMaximumFieldOfViewMetres = 100000.0;
+
 // How one land-cover class affects a robot: how fast it moves there and how wide a swath it senses.
 struct LandCoverClass {
     std::int32_t value = 0; // raster value of the class

@@ -8,6 +8,7 @@
 #include "core/coverage/SubCellLattice.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/decomposition/GridNeighbours.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
@@ -76,8 +77,8 @@ Reachability reachableSubCells(const CellGraph& graph, const SubCellLattice& lat
 std::string enclosedMessage(const Reachability& reachability) {
     std::ostringstream text;
     text.precision(6);
-    text << reachability.enclosedSubCells << " free sub-cells (" << reachability.enclosedArea
-         << " m2) are walled in by blocked sub-cells and cannot be covered";
+    text << reachability.enclosedSubCells << " free sub-cells (" << formatArea(reachability.enclosedArea)
+         << ") are walled in by blocked sub-cells and cannot be covered";
     return text.str();
 }
 

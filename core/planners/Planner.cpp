@@ -1,6 +1,7 @@
 #include "core/planners/Planner.hpp"
 
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/StartPointCheck.hpp"
 #include "core/parameters/ParameterResolution.hpp"
@@ -43,13 +44,6 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
     }
 }
 
-std::string describeArea(double squareMetres) {
-    std::ostringstream text;
-    text.precision(6);
-    text << squareMetres;
-    return text.str();
-}
-
 } // namespace
 
 ParameterSpec Planner::snapStartsParameter() {
@@ -82,8 +76,8 @@ Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progr
     });
     if (plan.metrics.unreachableAreaSquareMetres > 0.0)
         planningRun.addIssue(IssueSeverity::Warning, "unreachable-area",
-                             describeArea(plan.metrics.unreachableAreaSquareMetres) +
-                                 " m2 of passable land cannot be reached by any robot");
+                             formatArea(plan.metrics.unreachableAreaSquareMetres) +
+                                 " of passable land cannot be reached by any robot");
     progress.report("done", 1.0);
     return plan;
 }
