@@ -11,6 +11,12 @@ target_compile_options(mcpp_project_options INTERFACE
 if(MCPP_WARNINGS_AS_ERRORS)
   target_compile_options(mcpp_project_options INTERFACE -Werror)
 endif()
+if(MCPP_FUZZ)
+  # Coverage feedback for libFuzzer in every mcpp library, with the address and undefined-behaviour checks.
+  target_compile_options(mcpp_project_options INTERFACE -fsanitize=fuzzer-no-link,address,undefined
+                                                        -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(mcpp_project_options INTERFACE -fsanitize=address,undefined)
+endif()
 if(MCPP_SANITIZE)
   # Any undefined-behaviour report stops the program, so a test with one fails.
   target_compile_options(mcpp_project_options INTERFACE -fsanitize=address,undefined -fno-sanitize-recover=all

@@ -66,7 +66,11 @@ Result<ClassTable> loadClassTableCsv(const std::string& path) {
     auto contents = internal::readWholeFile(path);
     if (!contents)
         return Result<ClassTable>::failure(contents.error());
-    std::stringstream stream(contents.value());
+    return parseClassTableCsv(contents.value(), path);
+}
+
+Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string& path) {
+    std::stringstream stream(text);
     std::string line;
     std::vector<std::string> fields;
     const auto failure = [&](int lineNumber, const std::string& what) {

@@ -19,6 +19,8 @@ struct PresetInfo {
 
 // CSV with columns value,name,speed_mps,fov_m,passable and an optional color (#rrggbb).
 [[nodiscard]] Result<ClassTable> loadClassTableCsv(const std::string& path);
+// The same from the file's text; path only names it in messages.
+[[nodiscard]] Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string& path);
 [[nodiscard]] Status saveClassTableCsv(const ClassTable& table, const std::string& path);
 
 // A table for the raster: the preset's (or a generic default's) speed, FOV and passability,

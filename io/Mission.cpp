@@ -372,7 +372,10 @@ Result<Mission> loadMission(const std::string& path) {
     auto contents = internal::readWholeFile(path);
     if (!contents)
         return Result<Mission>::failure(contents.error());
-    const std::string& text = contents.value();
+    return parseMission(contents.value(), path);
+}
+
+Result<Mission> parseMission(const std::string& text, const std::string& path) {
     if (internal::trimmed(text).empty())
         return Result<Mission>::failure(path + ": file is empty");
     QJsonParseError parseError;

@@ -46,6 +46,8 @@ struct Mission {
 };
 
 [[nodiscard]] Result<Mission> loadMission(const std::string& path);
+// The same from the file's text; path names it in messages and anchors a relative raster path.
+[[nodiscard]] Result<Mission> parseMission(const std::string& text, const std::string& path);
 [[nodiscard]] Status saveMission(const Mission& mission, const std::string& path); // atomic
 // The text saveMission writes: fixed key order, shortest round-trip numbers, so save -> load -> save is
 // byte-identical.

@@ -1,10 +1,11 @@
 #include "render/ComparisonSheet.hpp"
 
+#include "io/AtomicFile.hpp"
 #include "render/PlanImage.hpp"
 #include "render/RobotPalette.hpp"
 
+#include <QBuffer>
 #include <QPainter>
-#include <QSaveFile>
 #include <algorithm>
 #include <cmath>
 
@@ -144,13 +145,17 @@ QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
 bool writeComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
                           const std::vector<ComparisonPanel>& panels, const QString& path, QString* error) {
     const QImage sheet = renderComparisonSheet(grid, classes, panels).convertToFormat(QImage::Format_RGB888);
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || !sheet.save(&file, "PNG", 80) || !file.commit()) {
-        if (error != nullptr)
-            *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    QBuffer encoded;
+    encoded.open(QIODevice::WriteOnly);
+    const io::Status written =
+        sheet.save(&encoded, "PNG", 80)
+            ? io::writeFileAtomically(path.toStdString(),
+                                      std::string_view(encoded.data().constData(),
+                                                       static_cast<std::size_t>(encoded.data().size())))
+            : io::Status::failure(path.toStdString() + ": PNG encoding failed");
+    if (!written && error != nullptr)
+        *error = QString::fromStdString(written.error());
+    return written.ok();
 }
 
 } // namespace mcpp::render

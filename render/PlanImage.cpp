@@ -1,11 +1,12 @@
 #include "render/PlanImage.hpp"
 
+#include "io/AtomicFile.hpp"
 #include "render/PlanRenderer.hpp"
 
+#include <QBuffer>
 #include <QDir>
 #include <QFileInfo>
 #include <QPainter>
-#include <QSaveFile>
 #include <QSvgGenerator>
 #include <algorithm>
 #include <cmath>
@@ -63,6 +64,19 @@ QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const P
     return image;
 }
 
+namespace {
+
+// The encoded picture written whole or not at all; a failure leaves the previous file as it was.
+bool writeWhole(const QString& path, const QByteArray& bytes, QString* error) {
+    const io::Status written = io::writeFileAtomically(
+        path.toStdString(), std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    if (!written)
+        setError(error, QString::fromStdString(written.error()));
+    return written.ok();
+}
+
+} // namespace
+
 bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
                   QSize maxSize, QString* error, const RegionOutlines* outlines) {
     if (!checkInputs(grid, maxSize, path, error))
@@ -71,17 +85,14 @@ bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& 
     // faster than the default for a few per cent more bytes.
     const QImage image =
         renderPlanImage(grid, classes, &plan, maxSize, {}, outlines).convertToFormat(QImage::Format_RGB888);
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        setError(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
-        return false;
-    }
+    QBuffer encoded;
+    encoded.open(QIODevice::WriteOnly);
     constexpr int lightCompression = 80; // Qt's PNG "quality": 0 = smallest file, 100 = no compression
-    if (!image.save(&file, "PNG", lightCompression) || !file.commit()) {
-        setError(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+    if (!image.save(&encoded, "PNG", lightCompression)) {
+        setError(error, QStringLiteral("cannot write %1: PNG encoding failed").arg(path));
         return false;
     }
-    return true;
+    return writeWhole(path, encoded.data(), error);
 }
 
 bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
@@ -95,8 +106,10 @@ bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& 
         return false;
     }
     const QSize size = fittedSize(grid, maxSize);
+    QBuffer drawing;
+    drawing.open(QIODevice::WriteOnly);
     QSvgGenerator generator;
-    generator.setFileName(path);
+    generator.setOutputDevice(&drawing);
     generator.setSize(size);
     generator.setViewBox(QRect(QPoint(0, 0), size));
     generator.setTitle(QStringLiteral("mcpp coverage plan"));
@@ -117,11 +130,7 @@ bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& 
         setError(error, QStringLiteral("cannot write %1: drawing failed").arg(path));
         return false;
     }
-    if (!QFileInfo::exists(path)) {
-        setError(error, QStringLiteral("cannot write %1: the file was not created").arg(path));
-        return false;
-    }
-    return true;
+    return writeWhole(path, drawing.data(), error);
 }
 
 } // namespace mcpp::render

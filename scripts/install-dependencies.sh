@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages mcpp needs to build, test and run; does nothing when all are there.
+# Installs the Debian 12 packages mcpp needs to build, test and run, and any named on the command line;
+# does nothing when all are there.
 set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config git ca-certificates
   qt6-base-dev qt6-base-dev-tools qt6-charts-dev qt6-svg-dev libqt6opengl6-dev qt6-qpa-plugins libgl-dev
   libgdal-dev gdal-bin libeigen3-dev libboost-dev libbenchmark-dev
-  xvfb xauth fonts-dejavu-core python3 clang-format
+  xvfb xauth fonts-dejavu-core python3 clang-format clang libclang-rt-14-dev
 )
+# Extra packages a caller needs besides these (the packaging scripts pass theirs).
+packages+=("$@")
 
 missing=()
 for package in "${packages[@]}"; do

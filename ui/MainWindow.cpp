@@ -5,6 +5,7 @@
 #include "io/MissionInputs.hpp"
 #include "io/PlanExport.hpp"
 #include "render/PlanImageWriter.hpp"
+#include "ui/ApplicationResources.hpp"
 #include "ui/ClassTableEditCommand.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/ComparisonPanel.hpp"
@@ -98,7 +99,7 @@ MainWindow::MainWindow(QWidget* parent)
       robotModel_(new RobotTableModel(document_, undoStack_, this)), runner_(new PlanningRunner(this)),
       exportRunner_(new ExportRunner(this)), comparisonRunner_(new ComparisonRunner(this)) {
     setObjectName(QStringLiteral("mainWindow"));
-    setWindowIcon(QIcon::fromTheme(QStringLiteral("applications-science")));
+    setWindowIcon(actionIcon("mcpp"));
     setCentralWidget(canvas_);
     setAcceptDrops(true);
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
@@ -285,8 +286,8 @@ void MainWindow::createDocks() {
 
 void MainWindow::createActions() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
-    auto* openRasterAction = fileMenu->addAction(
-        QIcon::fromTheme(QStringLiteral("document-open")), tr("Open &raster…"), this, [this] {
+    auto* openRasterAction =
+        fileMenu->addAction(actionIcon("open-raster"), tr("Open &raster…"), this, [this] {
             if (!maybeSave())
                 return;
             const QString path = QFileDialog::getOpenFileName(this, tr("Open land-cover raster"),
@@ -296,29 +297,29 @@ void MainWindow::createActions() {
         });
     openRasterAction->setObjectName(QStringLiteral("openRasterAction"));
     openRasterAction->setShortcut(QKeySequence::Open);
-    auto* openMissionAction = fileMenu->addAction(tr("Open &mission…"), this, [this] {
-        if (!maybeSave())
-            return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open mission"),
-                                                          dialogFolder(kMissionFolderKey), kMissionFilter);
-        if (!path.isEmpty())
-            openMission(path);
-    });
+    auto* openMissionAction =
+        fileMenu->addAction(actionIcon("open-mission"), tr("Open &mission…"), this, [this] {
+            if (!maybeSave())
+                return;
+            const QString path = QFileDialog::getOpenFileName(
+                this, tr("Open mission"), dialogFolder(kMissionFolderKey), kMissionFilter);
+            if (!path.isEmpty())
+                openMission(path);
+        });
     openMissionAction->setObjectName(QStringLiteral("openMissionAction"));
     openMissionAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
     recentMenu_ = fileMenu->addMenu(tr("Open r&ecent"));
     fileMenu->addSeparator();
-    saveAction_ = fileMenu->addAction(
-        QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save mission"), this, [this] {
-            if (document_->missionPath().isEmpty()) {
-                const QString path = QFileDialog::getSaveFileName(
-                    this, tr("Save mission"), dialogFolder(kMissionFolderKey), kMissionFilter);
-                if (!path.isEmpty())
-                    saveMission(path);
-            } else {
-                saveMission(document_->missionPath());
-            }
-        });
+    saveAction_ = fileMenu->addAction(actionIcon("save"), tr("&Save mission"), this, [this] {
+        if (document_->missionPath().isEmpty()) {
+            const QString path = QFileDialog::getSaveFileName(
+                this, tr("Save mission"), dialogFolder(kMissionFolderKey), kMissionFilter);
+            if (!path.isEmpty())
+                saveMission(path);
+        } else {
+            saveMission(document_->missionPath());
+        }
+    });
     saveAction_->setObjectName(QStringLiteral("saveMissionAction"));
     saveAction_->setShortcut(QKeySequence::Save);
     auto* saveAsAction = fileMenu->addAction(tr("Save mission &as…"), this, [this] {
@@ -329,7 +330,7 @@ void MainWindow::createActions() {
     });
     saveAsAction->setShortcut(QKeySequence::SaveAs);
     fileMenu->addSeparator();
-    QMenu* exportMenu = fileMenu->addMenu(tr("&Export plan"));
+    QMenu* exportMenu = fileMenu->addMenu(actionIcon("export"), tr("&Export plan"));
     for (const io::ExportFormat& format : io::exportFormats()) {
         const std::string key = format.key;
         auto* action = exportMenu->addAction(QString::fromStdString(format.label) + QStringLiteral("…"), this,
@@ -344,10 +345,10 @@ void MainWindow::createActions() {
     QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
     QAction* undoAction = undoStack_->createUndoAction(this, tr("&Undo"));
     undoAction->setShortcut(QKeySequence::Undo);
-    undoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo")));
+    undoAction->setIcon(actionIcon("undo"));
     QAction* redoAction = undoStack_->createRedoAction(this, tr("&Redo"));
     redoAction->setShortcut(QKeySequence::Redo);
-    redoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
+    redoAction->setIcon(actionIcon("redo"));
     editMenu->addAction(undoAction);
     editMenu->addAction(redoAction);
     editMenu->addSeparator();
@@ -358,14 +359,13 @@ void MainWindow::createActions() {
     robotView_->addAction(removeRobotAction_);
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-    auto* zoomIn = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-in")), tr("Zoom &in"), canvas_,
-                                       &MapCanvas::zoomIn);
+    auto* zoomIn = viewMenu->addAction(actionIcon("zoom-in"), tr("Zoom &in"), canvas_, &MapCanvas::zoomIn);
     zoomIn->setShortcut(QKeySequence::ZoomIn);
-    auto* zoomOut = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-out")), tr("Zoom &out"),
-                                        canvas_, &MapCanvas::zoomOut);
+    auto* zoomOut =
+        viewMenu->addAction(actionIcon("zoom-out"), tr("Zoom &out"), canvas_, &MapCanvas::zoomOut);
     zoomOut->setShortcut(QKeySequence::ZoomOut);
-    auto* zoomFit = viewMenu->addAction(QIcon::fromTheme(QStringLiteral("zoom-fit-best")), tr("Zoom to &fit"),
-                                        canvas_, &MapCanvas::zoomToFit);
+    auto* zoomFit =
+        viewMenu->addAction(actionIcon("zoom-fit"), tr("Zoom to &fit"), canvas_, &MapCanvas::zoomToFit);
     zoomFit->setObjectName(QStringLiteral("zoomToFitAction"));
     zoomFit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
     viewMenu->addSeparator();
@@ -374,13 +374,13 @@ void MainWindow::createActions() {
 
     QMenu* planMenu = menuBar()->addMenu(tr("&Plan"));
     auto* tools = new QActionGroup(this);
-    panToolAction_ = planMenu->addAction(tr("&Pan tool"));
+    panToolAction_ = planMenu->addAction(actionIcon("pan"), tr("&Pan tool"));
     panToolAction_->setObjectName(QStringLiteral("panToolAction"));
     panToolAction_->setCheckable(true);
     panToolAction_->setChecked(true);
     panToolAction_->setShortcut(QKeySequence(Qt::Key_P));
     panToolAction_->setToolTip(tr("Drag to pan, wheel to zoom, drag a start marker to move it (P)"));
-    placeToolAction_ = planMenu->addAction(tr("Place &start tool"));
+    placeToolAction_ = planMenu->addAction(actionIcon("place-start"), tr("Place &start tool"));
     placeToolAction_->setObjectName(QStringLiteral("placeStartToolAction"));
     placeToolAction_->setCheckable(true);
     placeToolAction_->setShortcut(QKeySequence(Qt::Key_S));
@@ -396,15 +396,14 @@ void MainWindow::createActions() {
             canvas_->setTool(MapCanvas::Tool::PlaceStart);
     });
     planMenu->addSeparator();
-    planAction_ = planMenu->addAction(QIcon::fromTheme(QStringLiteral("media-playback-start")), tr("&Plan"),
-                                      this, &MainWindow::startPlanning);
+    planAction_ = planMenu->addAction(actionIcon("plan"), tr("&Plan"), this, &MainWindow::startPlanning);
     planAction_->setObjectName(QStringLiteral("planAction"));
     planAction_->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(Qt::CTRL | Qt::Key_Return)});
     planAction_->setToolTip(tr("Plan coverage paths for all robots (F5)"));
-    cancelAction_ = planMenu->addAction(QIcon::fromTheme(QStringLiteral("process-stop")),
-                                        tr("&Cancel planning"), this, &MainWindow::cancelPlanning);
+    cancelAction_ =
+        planMenu->addAction(actionIcon("cancel"), tr("&Cancel planning"), this, &MainWindow::cancelPlanning);
     cancelAction_->setObjectName(QStringLiteral("cancelPlanningAction"));
-    compareAction_ = planMenu->addAction(tr("C&ompare planners…"), this, [this] {
+    compareAction_ = planMenu->addAction(actionIcon("compare"), tr("C&ompare planners…"), this, [this] {
         comparisonDock_->show();
         comparisonDock_->raise();
         startComparison(comparisonPanel_->checkedPlanners());
@@ -419,10 +418,10 @@ void MainWindow::createActions() {
             openSampleMission(true);
     });
     helpMenu->addAction(tr("&About mcpp"), this, [this] {
-        QMessageBox::about(this, tr("About mcpp"),
-                           tr("<b>mcpp</b> plans coverage paths for several robots over a land-cover raster: "
-                              "each class sets how fast robots move and how wide they sense. Open a raster, "
-                              "set the class table, place starts, press Plan, export waypoints."));
+        QMessageBox about(QMessageBox::NoIcon, tr("About mcpp"), aboutText(), QMessageBox::Close, this);
+        about.setObjectName(QStringLiteral("aboutBox"));
+        about.setIconPixmap(actionIcon("mcpp").pixmap(64, 64));
+        about.exec();
     });
 
     auto* toolbar = addToolBar(tr("Main"));
@@ -441,6 +440,7 @@ void MainWindow::createActions() {
     toolbar->addSeparator();
     toolbar->addAction(planAction_);
     toolbar->addAction(cancelAction_);
+    toolbar->addAction(compareAction_);
 
     rebuildRecentMenu();
 }

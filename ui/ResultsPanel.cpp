@@ -171,8 +171,10 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
 void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     QChart* chart = chartView_->chart();
     chart->removeAllSeries();
-    for (auto* axis : chart->axes())
-        chart->removeAxis(axis);
+    for (auto* axis : chart->axes()) {
+        chart->removeAxis(axis); // the chart gives up the axis: it is ours to delete
+        delete axis;
+    }
     const auto& robots = plan.metrics.robots;
     if (robots.empty())
         return;

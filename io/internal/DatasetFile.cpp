@@ -1,5 +1,9 @@
 #include "io/internal/DatasetFile.hpp"
 
+#include "io/AtomicFile.hpp"
+
+#include <atomic>
+#include <cpl_vsi.h>
 #include <filesystem>
 #include <unistd.h>
 
@@ -7,18 +11,34 @@ namespace mcpp::io::internal {
 
 namespace fs = std::filesystem;
 
-DatasetFile::DatasetFile(std::string path) : path_(std::move(path)) {
-    const fs::path target(path_);
-    temporary_ = (target.parent_path() / ("." + target.stem().string() + ".partial-" +
-                                          std::to_string(getpid()) + target.extension().string()))
-                     .string();
+namespace {
+
+// The dataset is built in GDAL's in-memory file system: drivers do not all check their writes, so the
+// real file is written once, by writeFileAtomically, which does.
+std::string memoryFolder() {
+    static std::atomic<unsigned> counter{0};
+    return "/vsimem/mcpp-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
 }
+
+// ".kml" for LIBKML, ".tif" for GTiff: the first extension the driver lists, else the target's own.
+std::string driverExtension(GDALDriver& driver, const std::string& target) {
+    for (const char* item : {GDAL_DMD_EXTENSION, GDAL_DMD_EXTENSIONS}) {
+        const char* listed = driver.GetMetadataItem(item);
+        if (listed != nullptr && *listed != '\0') {
+            const std::string extensions(listed);
+            return "." + extensions.substr(0, extensions.find(' '));
+        }
+    }
+    return fs::path(target).extension().string();
+}
+
+} // namespace
+
+DatasetFile::DatasetFile(std::string path) : path_(std::move(path)), memoryFolder_(memoryFolder()) {}
 
 DatasetFile::~DatasetFile() {
     dataset_.reset();
-    std::error_code ignored;
-    if (!committed_)
-        fs::remove(temporary_, ignored);
+    VSIRmdirRecursive(memoryFolder_.c_str()); // the file and any journal a driver left beside it
 }
 
 Status DatasetFile::create(const char* driverName, int columns, int rows, int bands, GDALDataType type,
@@ -27,8 +47,9 @@ Status DatasetFile::create(const char* driverName, int columns, int rows, int ba
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driverName);
     if (driver == nullptr)
         return Status::failure(path_ + ": GDAL has no " + driverName + " driver");
-    std::error_code ignored;
-    fs::remove(temporary_, ignored);
+    VSIMkdir(memoryFolder_.c_str(), 0755);
+    // The driver's own extension: some (KML) write a folder instead when the name lacks it.
+    temporary_ = memoryFolder_ + "/output" + driverExtension(*driver, path_);
     dataset_.reset(
         driver->Create(temporary_.c_str(), columns, rows, bands, type, const_cast<char**>(options)));
     if (!dataset_)
@@ -41,12 +62,12 @@ Status DatasetFile::commit() {
     dataset_.reset(); // flushes and closes
     if (CPLGetLastErrorType() == CE_Failure)
         return Status::failure(path_ + ": write failed" + QuietGdalErrors::detail());
-    std::error_code error;
-    fs::rename(temporary_, path_, error);
-    if (error)
-        return Status::failure(path_ + ": cannot move the finished file into place: " + error.message());
-    committed_ = true;
-    return {};
+    vsi_l_offset size = 0;
+    GByte* bytes = VSIGetMemFileBuffer(temporary_.c_str(), &size, FALSE);
+    if (bytes == nullptr)
+        return Status::failure(path_ + ": the driver wrote no file" + QuietGdalErrors::detail());
+    return writeFileAtomically(
+        path_, std::string_view(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size)));
 }
 
 } // namespace mcpp::io::internal

@@ -9,12 +9,13 @@
 
 namespace mcpp::io::internal {
 
-// A file written by a GDAL driver under a temporary name beside its target and renamed into place by
-// commit(), so a failed or cancelled export never leaves half a file under the real name.
+// A file written by a GDAL driver into memory and written out whole by commit() (io::writeFileAtomically),
+// so a failed, cancelled or disk-full export never leaves half a file under the real name or replaces the
+// previous one.
 class DatasetFile {
   public:
     explicit DatasetFile(std::string path);
-    ~DatasetFile(); // removes the temporary file unless committed
+    ~DatasetFile(); // frees the in-memory file
     DatasetFile(const DatasetFile&) = delete;
     DatasetFile& operator=(const DatasetFile&) = delete;
 
@@ -23,14 +24,14 @@ class DatasetFile {
                                 const char* const* options = nullptr);
     [[nodiscard]] GDALDataset& dataset() { return *dataset_; }
     [[nodiscard]] const std::string& path() const { return path_; }
-    // Closes the dataset (flushing it) and moves the file into place.
+    // Closes the dataset (flushing it) and writes the file into place.
     [[nodiscard]] Status commit();
 
   private:
     std::string path_;
-    std::string temporary_;
+    std::string memoryFolder_;
+    std::string temporary_; // in memoryFolder_
     DatasetPointer dataset_;
-    bool committed_ = false;
 };
 
 } // namespace mcpp::io::internal

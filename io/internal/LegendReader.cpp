@@ -195,11 +195,15 @@ std::string formatColor(std::uint32_t rgb) {
 }
 
 Result<std::vector<LegendEntry>> readLegendCsv(const std::string& path) {
-    using Entries = std::vector<LegendEntry>;
     auto contents = readWholeFile(path);
     if (!contents)
-        return Result<Entries>::failure(contents.error());
-    std::stringstream stream(contents.value());
+        return Result<std::vector<LegendEntry>>::failure(contents.error());
+    return parseLegendCsv(contents.value(), path);
+}
+
+Result<std::vector<LegendEntry>> parseLegendCsv(const std::string& text, const std::string& path) {
+    using Entries = std::vector<LegendEntry>;
+    std::stringstream stream(text);
     std::string line;
     std::vector<std::string> fields;
     if (!std::getline(stream, line) || !splitCsvLine(line, fields)) {
@@ -266,12 +270,15 @@ Result<std::vector<LegendEntry>> readLegendCsv(const std::string& path) {
 }
 
 Result<std::vector<LegendEntry>> readQgisStyleLegend(const std::string& path) {
-    using Entries = std::vector<LegendEntry>;
     auto contents = readWholeFile(path);
     if (!contents)
-        return Result<Entries>::failure(contents.error());
+        return Result<std::vector<LegendEntry>>::failure(contents.error());
+    return parseQgisStyleLegend(contents.value(), path);
+}
+
+Result<std::vector<LegendEntry>> parseQgisStyleLegend(const std::string& text, const std::string& path) {
+    using Entries = std::vector<LegendEntry>;
     // Styles exported by some tools carry text before the XML; start at the first tag.
-    const std::string& text = contents.value();
     std::size_t start = text.find("<?xml");
     if (start == std::string::npos)
         start = text.find("<!DOCTYPE");

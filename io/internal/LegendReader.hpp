@@ -18,9 +18,14 @@ void readRasterLegend(GDALRasterBand& band, const std::string& rasterPath, Loade
 // Legend CSV: a header naming a value column (value, code, grid_code, ...) and a name column
 // (name, label, label3, class, ...), optionally colour as color (#rrggbb), rgb ("r-g-b") or r,g,b columns.
 [[nodiscard]] Result<std::vector<LegendEntry>> readLegendCsv(const std::string& path);
+// The same from the file's text; path only names it in messages.
+[[nodiscard]] Result<std::vector<LegendEntry>> parseLegendCsv(const std::string& text,
+                                                              const std::string& path);
 
 // QGIS style: paletted raster renderer, raster pseudocolour items, or a categorized (unique values) renderer.
 [[nodiscard]] Result<std::vector<LegendEntry>> readQgisStyleLegend(const std::string& path);
+[[nodiscard]] Result<std::vector<LegendEntry>> parseQgisStyleLegend(const std::string& text,
+                                                                    const std::string& path);
 
 // "#rrggbb", "r,g,b[,a]" or "r-g-b"; nothing when the text is none of these.
 [[nodiscard]] std::optional<std::uint32_t> parseColor(const std::string& text);

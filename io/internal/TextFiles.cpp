@@ -1,7 +1,8 @@
 #include "io/internal/TextFiles.hpp"
 
+#include "io/AtomicFile.hpp"
+
 #include <QFile>
-#include <QSaveFile>
 #include <QString>
 #include <array>
 #include <cctype>
@@ -12,19 +13,7 @@
 namespace mcpp::io::internal {
 
 Status writeFileAtomically(const std::string& path, const std::string& contents) {
-    QSaveFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::WriteOnly)) {
-        return Status::failure(path + ": cannot write: " + file.errorString().toStdString());
-    }
-    const auto size = static_cast<qint64>(contents.size());
-    if (file.write(contents.data(), size) != size) {
-        const std::string reason = file.errorString().toStdString();
-        file.cancelWriting();
-        return Status::failure(path + ": write failed: " + reason);
-    }
-    if (!file.commit())
-        return Status::failure(path + ": could not save: " + file.errorString().toStdString());
-    return {};
+    return io::writeFileAtomically(path, std::string_view(contents));
 }
 
 Result<std::string> readWholeFile(const std::string& path) {

@@ -7,7 +7,7 @@
 
 namespace mcpp::io::internal {
 
-// Writes the whole file or nothing (QSaveFile): a failed save leaves an older file untouched.
+// Writes the whole file or nothing (io::writeFileAtomically): a failed save leaves an older file untouched.
 [[nodiscard]] Status writeFileAtomically(const std::string& path, const std::string& contents);
 // The whole file, or an error naming it.
 [[nodiscard]] Result<std::string> readWholeFile(const std::string& path);

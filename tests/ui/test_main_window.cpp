@@ -1,4 +1,5 @@
 #include "tests/support/TestData.hpp"
+#include "ui/ApplicationResources.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/ComparisonPanel.hpp"
 #include "ui/MainWindow.hpp"
@@ -17,6 +18,7 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QToolBar>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -289,6 +291,28 @@ class TestMainWindow : public QObject {
         QCOMPARE(
             QJsonDocument::fromJson(report.readAll()).object().value(QStringLiteral("planner")).toString(),
             QStringLiteral("darp"));
+    }
+
+    void toolbarAndAboutComeFromTheResources() {
+        ui::MainWindow window;
+        window.setOpenSampleOnFirstStart(false);
+        auto* toolbar = window.findChild<QToolBar*>(QStringLiteral("mainToolBar"));
+        QVERIFY(toolbar != nullptr);
+        int withIcon = 0;
+        for (QAction* action : toolbar->actions()) {
+            if (action->isSeparator())
+                continue;
+            QVERIFY2(!action->icon().pixmap(24, 24).isNull(), qPrintable(action->text() + " has no icon"));
+            ++withIcon;
+        }
+        QVERIFY(withIcon >= 10);
+        QVERIFY(!window.windowIcon().pixmap(48, 48).isNull());
+        QCoreApplication::setApplicationVersion(QStringLiteral("9.8.7"));
+        const QString about = ui::aboutText();
+        QVERIFY2(about.contains(QStringLiteral("9.8.7")), qPrintable(about));
+        QVERIFY(about.contains(QStringLiteral("Copernicus")) &&
+                about.contains(QStringLiteral("public domain")));
+        QVERIFY(!about.contains(QStringLiteral("%1")) && !about.contains(QStringLiteral("%3")));
     }
 
     void opensTheSampleMission() {
