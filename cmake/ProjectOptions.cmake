@@ -4,10 +4,12 @@ target_compile_features(mcpp_project_options INTERFACE cxx_std_20)
 set(CMAKE_CXX_EXTENSIONS OFF)
 target_compile_options(mcpp_project_options INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
-  -Woverloaded-virtual -Wimplicit-fallthrough
+  -Woverloaded-virtual -Wimplicit-fallthrough)
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
   # GCC 12 reports false -Wrestrict and -Wmaybe-uninitialized positives inside libstdc++ string and
   # optional code at -O2 and above; -Wnull-dereference likewise fires inside libstdc++ headers.
-  -Wno-restrict -Wno-maybe-uninitialized)
+  target_compile_options(mcpp_project_options INTERFACE -Wno-restrict -Wno-maybe-uninitialized)
+endif()
 if(MCPP_WARNINGS_AS_ERRORS)
   target_compile_options(mcpp_project_options INTERFACE -Werror)
 endif()

@@ -345,10 +345,10 @@ std::vector<std::pair<std::string, ParameterValue>> orderedParameters(const Plan
         for (const ParameterSpec& spec : description->parameters)
             if (const ParameterValue* value = choice.parameters.find(spec.key))
                 ordered.emplace_back(spec.key, *value);
-    for (const auto& [key, value] : choice.parameters.all())
+    for (const auto& parameter : choice.parameters.all())
         if (std::none_of(ordered.begin(), ordered.end(),
-                         [&](const auto& entry) { return entry.first == key; }))
-            ordered.emplace_back(key, value);
+                         [&](const auto& entry) { return entry.first == parameter.first; }))
+            ordered.emplace_back(parameter.first, parameter.second);
     return ordered;
 }
 

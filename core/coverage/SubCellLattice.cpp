@@ -7,9 +7,6 @@
 namespace mcpp {
 namespace {
 
-// Lattice offset (dx, dy) of a sub-cell inside its cell, y down.
-constexpr std::array<std::array<int, 2>, 4> offsetOf{{{0, 0}, {0, 1}, {1, 1}, {1, 0}}}; // NW, SW, SE, NE
-
 SubCell subCellOf(int dx, int dy) {
     if (dy == 0)
         return dx == 0 ? SubCell::NorthWest : SubCell::NorthEast;
