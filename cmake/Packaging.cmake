@@ -39,9 +39,7 @@ set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
+# One paragraph: dpkg shows it wrapped.
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
-    "Plans how a fleet of robots (ground robots, drones) covers an area whose land cover changes how far\n\
- a robot sees and how fast it moves. Opens any raster GDAL reads, reads its legend or a preset, divides the\n\
- area between the robots and plans spanning-tree coverage paths; exports GeoJSON, GeoPackage, KML, GPX and\n\
- autopilot waypoint files. Runs with a window or headless (mcpp --batch).")
+    "Plans how a fleet of robots (ground robots, drones) covers an area whose land cover changes how far a robot sees and how fast it moves. Opens any raster GDAL reads, reads its legend or a preset, divides the area between the robots and plans spanning-tree coverage paths; exports GeoJSON, GeoPackage, KML, GPX and autopilot waypoint files. Runs with a window or headless (mcpp --batch).")
 include(CPack)
