@@ -5,6 +5,7 @@
 # build/fuzz/findings/.
 #   bash scripts/run-fuzzers.sh [--seconds N | --runs N] [harness ...]
 # MCPP_FUZZ_MAX_LEN caps an input's bytes (default 65536); smaller runs faster on long runs.
+# MCPP_FUZZ_TIMEOUT: seconds one input may take (default 10); raise it when the machine is busy.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -29,7 +30,7 @@ for harness in "${harnesses[@]}"; do
   mkdir -p "$corpus"
   cp -n tests/fuzz/corpus/"$harness"/* "$corpus"/ 2>/dev/null || true
   log="$root/build/fuzz/$harness.log"
-  if ! "build/fuzz/tests/fuzz/$harness" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 -max_len="${MCPP_FUZZ_MAX_LEN:-65536}" \
+  if ! "build/fuzz/tests/fuzz/$harness" "${limit[@]}" -timeout="${MCPP_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 -max_len="${MCPP_FUZZ_MAX_LEN:-65536}" \
     -print_final_stats=1 -artifact_prefix="$findings/$harness-" "$corpus" >"$log" 2>&1; then
     tail -40 "$log" >&2
     echo "mcpp: $harness found a problem; reproducer in $findings" >&2
