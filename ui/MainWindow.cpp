@@ -336,6 +336,7 @@ void MainWindow::createActions() {
         auto* action = exportMenu->addAction(QString::fromStdString(format.label) + QStringLiteral("…"), this,
                                              [this, key] { chooseExport(key); });
         action->setObjectName(QString::fromStdString("export_" + key));
+        action->setData(QString::fromStdString(key));
         exportActions_ << action;
     }
     fileMenu->addSeparator();
@@ -604,7 +605,7 @@ void MainWindow::updateActions() {
     saveAction_->setEnabled(hasMap);
     const bool hasCrs = hasMap && document_->raster()->georeference.hasCrs();
     for (QAction* action : exportActions_) {
-        const io::ExportFormat* format = io::findExportFormat(action->objectName().mid(7).toStdString());
+        const io::ExportFormat* format = io::findExportFormat(action->data().toString().toStdString());
         const bool placeable = hasCrs || format == nullptr || !format->needsLongitudeLatitude;
         action->setEnabled(document_->plan() != nullptr && !planning && !exporting && placeable);
         action->setToolTip(placeable ? QString()
