@@ -1,6 +1,7 @@
 #include "app/BatchRunner.hpp"
 
 #include "app/BatchFailure.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/ProgressReporter.hpp"
@@ -185,6 +186,8 @@ void BatchRunner::loadRaster() {
 PlanningProblem BatchRunner::prepareProblem() {
     const io::FieldNamer names = fieldNamer();
     classes_ = valueOrBadInput(io::missionClasses(mission_, raster_, names));
+    if (mission_.classes.empty() && mission_.preset.empty())
+        note(io::openingClassTable(raster_).explanation);
     // The batch contract takes --start in the raster file's CRS; mission files keep planning-CRS units.
     const auto units =
         options_.missionFromFlags() ? io::StartUnits::RasterFileCrs : io::StartUnits::PlanningCrs;
@@ -450,7 +453,7 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
             continue;
         }
         output_ << "ratio " << formatNumber(row.metrics.ratio, 3) << ", makespan "
-                << formatNumber(row.metrics.makespanSeconds, 1) << " s, " << row.metrics.totalTurns()
+                << formatDuration(row.metrics.makespanSeconds) << ", " << row.metrics.totalTurns()
                 << " turns, planned in " << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
     }
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
@@ -460,12 +463,18 @@ void BatchRunner::printSummary(const Plan& plan) const {
     if (options_.quiet)
         return;
     const PlanMetrics& metrics = plan.metrics;
-    output_ << "mcpp: planned " << plan.paths.size() << " robots with " << plan.planner << ": makespan "
-            << formatNumber(metrics.makespanSeconds, 1) << " s, lower bound "
-            << formatNumber(metrics.lowerBoundSeconds, 1) << " s, ratio " << formatNumber(metrics.ratio, 3)
-            << ", covered " << formatNumber(metrics.coveredFraction * 100.0, 1) << "% of the passable area\n"
+    output_ << "mcpp: planned " << plan.paths.size() << (plan.paths.size() == 1 ? " robot" : " robots")
+            << " with " << plan.planner << ": makespan " << formatDuration(metrics.makespanSeconds)
+            << ", lower bound " << formatDuration(metrics.lowerBoundSeconds) << ", ratio "
+            << formatNumber(metrics.ratio, 3) << ", covered " << formatPercent(metrics.coveredFraction)
+            << " of the passable area\n"
             << "mcpp: outputs in " << options_.outputDirectory << '\n'
             << std::flush;
+}
+
+void BatchRunner::note(const std::string& message) {
+    if (!options_.quiet)
+        output_ << "mcpp: " << message << '\n' << std::flush;
 }
 
 void BatchRunner::warn(const std::string& message) {
@@ -481,7 +490,9 @@ std::string BatchRunner::fieldName(const io::MissionField& field) const {
     case Part::Classes:
         if (fromFile)
             return options_.missionPath + ": classes";
-        return options_.classesPath.empty() ? "--preset" : options_.classesPath;
+        if (!options_.classesPath.empty())
+            return options_.classesPath;
+        return options_.preset.empty() ? "the class table recognised for --raster" : "--preset";
     case Part::MissingClassesOption:
         return fromFile ? "classes.missing_as_obstacles (or --missing-as-obstacle)" : "--missing-as-obstacle";
     case Part::Start:

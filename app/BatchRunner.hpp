@@ -45,6 +45,7 @@ class BatchRunner {
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.
     void writeComparison(const std::vector<io::ComparisonRow>& rows,
                          const std::vector<std::optional<Plan>>& plans);
+    void note(const std::string& message);
     void warn(const std::string& message);
 
     // Where a value came from, so errors name the flag or the mission file and field.

@@ -337,8 +337,6 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             return failure("--batch needs MISSION.json or --raster FILE");
         if (given("--classes") && given("--preset"))
             return failure("--classes and --preset cannot be used together");
-        if (!given("--classes") && !given("--preset"))
-            return failure("--raster needs --classes TABLE.csv or --preset NAME");
         if (options.starts.empty())
             return failure("--raster needs at least one --start X,Y");
     }
@@ -354,7 +352,7 @@ std::string CommandLine::usage() {
            "  mcpp [MISSION.json | RASTER]\n"
            "      Opens the planner window, optionally with a mission or a land-cover raster.\n"
            "  mcpp --batch MISSION.json --out DIR [options]\n"
-           "  mcpp --batch --raster FILE (--classes TABLE.csv | --preset NAME) --start X,Y [--start X,Y "
+           "  mcpp --batch --raster FILE [--classes TABLE.csv | --preset NAME] --start X,Y [--start X,Y "
            "...]\n"
            "       [--start-crs EPSG:N] --out DIR [options]\n"
            "      Plans without a window and writes the outputs into DIR.\n"
@@ -364,7 +362,9 @@ std::string CommandLine::usage() {
            "  -o, --out DIR            output folder, created when missing; existing files are replaced\n"
            "  --raster FILE            land-cover raster (any format GDAL reads)\n"
            "  --classes TABLE.csv      class table with columns value,name,speed_mps,fov_m,passable[,color]\n"
-           "  --preset NAME            built-in class table instead of --classes\n"
+           "  --preset NAME            built-in class table instead of --classes. With neither, the\n"
+           "                           table comes from the raster: the preset of a recognised product\n"
+           "                           (ESA WorldCover, CORINE, NLCD, ...), else the file's legend\n"
            "  --start X,Y              a robot's start; give it once per robot. Coordinates are in the\n"
            "                           raster's CRS (longitude,latitude for a geographic raster) unless\n"
            "                           --start-crs says otherwise. Errors number the --start flags from 1\n"

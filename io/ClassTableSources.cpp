@@ -2,6 +2,7 @@
 
 #include "io/internal/ClassTablePresets.hpp"
 #include "io/internal/LegendReader.hpp"
+#include "io/internal/ProductRecognition.hpp"
 #include "io/internal/TextFiles.hpp"
 
 #include <algorithm>
@@ -188,7 +189,7 @@ Status saveClassTableCsv(const ClassTable& table, const std::string& path) {
 ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset,
                              const LoadedRaster& raster) {
     if (preset.empty())
-        return ownRows.empty() ? classTableForRaster(raster) : ownRows;
+        return ownRows.empty() ? openingClassTable(raster).table : ownRows;
     ClassTable table = ownRows;
     const ClassTable presetRows = classTableForRaster(raster, preset);
     for (const auto& landCover : presetRows.classes())
@@ -204,12 +205,14 @@ ClassTable classTableForRaster(const LoadedRaster& raster, const std::string& pr
             defaults = std::move(found.value());
     }
     ClassTable table;
+    std::size_t index = 0;
     for (const auto& [value, count] : raster.classPixelCounts) {
         LandCoverClass entry;
         if (const LandCoverClass* known = defaults.find(value))
             entry = *known;
         else
-            entry = internal::genericClass(value);
+            entry = internal::genericClass(value, index);
+        ++index;
         const auto legend =
             std::find_if(raster.legend.begin(), raster.legend.end(),
                          [value = value](const LegendEntry& item) { return item.value == value; });
@@ -222,6 +225,46 @@ ClassTable classTableForRaster(const LoadedRaster& raster, const std::string& pr
         table.set(entry);
     }
     return table;
+}
+
+namespace {
+
+// "category names + palette" -> "category names": where the names came from, for a sentence.
+std::string describeLegendSource(std::string source) {
+    if (const std::size_t plus = source.find(" + "); plus != std::string::npos)
+        source.resize(plus);
+    if (source == "qml")
+        return "QGIS style file";
+    if (source == "csv")
+        return "legend CSV";
+    return source;
+}
+
+} // namespace
+
+OpeningClassTable openingClassTable(const LoadedRaster& raster) {
+    OpeningClassTable opening;
+    if (const auto product = internal::recogniseProduct(raster)) {
+        opening.preset = product->preset;
+        opening.table = classTableForRaster(raster, product->preset);
+        opening.explanation = "Recognised " + product->productName + " (" + product->evidence + "): preset " +
+                              product->preset + " applied.";
+        return opening;
+    }
+    opening.table = classTableForRaster(raster);
+    const std::size_t classes = opening.table.size();
+    const auto named =
+        std::count_if(opening.table.classes().begin(), opening.table.classes().end(),
+                      [](const LandCoverClass& entry) { return entry.name.rfind("Class ", 0) != 0; });
+    opening.fromLegendNames = named > 0;
+    const std::string defaults = "speed 1 m/s, field of view 10 m and passable for every class until you set "
+                                 "them or choose a preset";
+    opening.explanation = opening.fromLegendNames
+                              ? "Land cover not recognised as a known product: class names from the file's " +
+                                    describeLegendSource(raster.legendSource) + "; " + defaults + "."
+                              : "Land cover not recognised: " + std::to_string(classes) +
+                                    " classes without names, each with its own colour; " + defaults + ".";
+    return opening;
 }
 
 Status reconcileRasterWithTable(LoadedRaster& raster, const ClassTable& table, bool missingAsObstacles) {

@@ -27,8 +27,19 @@ struct PresetInfo {
 // with names and colours from the raster's own legend where it has one.
 [[nodiscard]] ClassTable classTableForRaster(const LoadedRaster& raster, const std::string& preset = {});
 
+// The table a raster opens with, and where it came from in a sentence for the user: the preset of the
+// well-known product the raster is recognised as (ESA WorldCover, CORINE, NLCD, ...) with the file's own
+// names and colours on top, else the file's legend with default speeds and fields of view.
+struct OpeningClassTable {
+    ClassTable table;
+    std::string preset;           // the recognised product's preset; empty when none was recognised
+    bool fromLegendNames = false; // not recognised, but the file names its classes
+    std::string explanation;
+};
+[[nodiscard]] OpeningClassTable openingClassTable(const LoadedRaster& raster);
+
 // The table a mission plans with (docs/mission-format.md): its own rows, and for the values they lack,
-// the preset's rows for this raster; with neither, the generic table for the raster.
+// the preset's rows for this raster; with neither, the raster's opening table (openingClassTable).
 [[nodiscard]] ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset,
                                            const LoadedRaster& raster);
 

@@ -31,6 +31,7 @@ struct LoadedRaster {
     bool coarsened = false;
     std::vector<LegendEntry> legend; // from palette, category names, RAT, .qml or CSV beside the file
     std::string legendSource;        // "palette", "category names", "qml", ... or empty
+    std::string metadataText; // the file's metadata items and band description, for recognising products
     std::map<std::int32_t, std::int64_t> classPixelCounts; // inside pixels only
     std::vector<std::string> warnings;
 };

@@ -6,6 +6,7 @@
 #include "io/PlanExport.hpp"
 #include "render/PlanImageWriter.hpp"
 #include "ui/ApplicationResources.hpp"
+#include "ui/ClassTableBanner.hpp"
 #include "ui/ClassTableEditCommand.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/ComparisonPanel.hpp"
@@ -13,6 +14,7 @@
 #include "ui/ExportRunner.hpp"
 #include "ui/LayersPanel.hpp"
 #include "ui/MapCanvas.hpp"
+#include "ui/MessageLog.hpp"
 #include "ui/PlannerSettingsPanel.hpp"
 #include "ui/PlanningRunner.hpp"
 #include "ui/RecentFiles.hpp"
@@ -50,6 +52,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <cmath>
+#include <optional>
 
 namespace mcpp::ui {
 
@@ -100,7 +103,14 @@ MainWindow::MainWindow(QWidget* parent)
       exportRunner_(new ExportRunner(this)), comparisonRunner_(new ComparisonRunner(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowIcon(actionIcon("mcpp"));
-    setCentralWidget(canvas_);
+    classTableBanner_ = new ClassTableBanner(this);
+    auto* centre = new QWidget(this);
+    auto* centreLayout = new QVBoxLayout(centre);
+    centreLayout->setContentsMargins(0, 0, 0, 0);
+    centreLayout->setSpacing(0);
+    centreLayout->addWidget(classTableBanner_);
+    centreLayout->addWidget(canvas_, 1);
+    setCentralWidget(centre);
     setAcceptDrops(true);
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
     createDocks();
@@ -279,6 +289,11 @@ void MainWindow::createDocks() {
     tabifyDockWidget(resultsDock, comparisonDock_);
     resultsDock->raise();
     addDockWidget(Qt::BottomDockWidgetArea, classesDock);
+    messageLog_ = new MessageLog(this);
+    auto* messagesDock = makeDock(QStringLiteral("messagesDock"), tr("Messages"), messageLog_, this);
+    addDockWidget(Qt::BottomDockWidgetArea, messagesDock);
+    tabifyDockWidget(classesDock, messagesDock);
+    classesDock->raise();
     resizeDocks({layersDock, robotsDock, settingsDock}, {150, 220, 200}, Qt::Vertical);
     resizeDocks({layersDock, resultsDock}, {360, 420}, Qt::Horizontal);
     resizeDocks({classesDock}, {190}, Qt::Vertical);
@@ -635,6 +650,7 @@ bool MainWindow::loadClassTable(const QString& path) {
     undoStack_->push(new ClassTableEditCommand(
         document_, document_->classes(), QString::fromStdString(document_->mission().preset), table.value(),
         QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
+    classTableBanner_->hide();
     return true;
 }
 
@@ -644,8 +660,16 @@ void MainWindow::syncPresetCombo() {
     presetCombo_->setCurrentIndex(std::max(index, 0));
 }
 
+void MainWindow::explainClassTable(const io::OpeningClassTable& opening) {
+    const QString text = QString::fromStdString(opening.explanation);
+    classTableBanner_->showExplanation(text, !opening.preset.empty());
+    messageLog_->add(text);
+}
+
 void MainWindow::showStatus(const QString& message, int timeoutMilliseconds) {
     lastStatus_ = message;
+    if (messageLog_ != nullptr && timeoutMilliseconds != 0)
+        messageLog_->add(message); // messages shown until replaced are progress, not news
     statusBar()->showMessage(message, timeoutMilliseconds);
 }
 
@@ -704,8 +728,15 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     io::Mission mission;
     mission.rasterPath = QFileInfo(path).absoluteFilePath().toStdString();
     mission.band = raster->band;
-    mission.preset = preset.toStdString();
-    mission.classes = io::classTableForRaster(*raster, mission.preset);
+    io::OpeningClassTable opening;
+    if (preset.isEmpty()) {
+        opening = io::openingClassTable(*raster);
+    } else {
+        opening.preset = preset.toStdString();
+        opening.table = io::classTableForRaster(*raster, opening.preset);
+    }
+    mission.preset = opening.preset;
+    mission.classes = opening.table;
     mission.planner = document_->hasMap() ? document_->plannerChoice() : defaultPlannerChoice();
     const std::vector<std::string> warnings = raster->warnings;
     document_->reset(std::move(raster), std::move(mission), QString());
@@ -721,6 +752,10 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     for (const auto& warning : warnings)
         message += QStringLiteral(" ") + QString::fromStdString(warning);
     showStatus(message, 15000);
+    if (!opening.explanation.empty())
+        explainClassTable(opening);
+    else
+        classTableBanner_->hide();
     return true;
 }
 
@@ -745,6 +780,11 @@ bool MainWindow::openMission(const QString& path) {
     }
     // The same reading of classes and starts as batch mode, so both plan the same mission.
     const io::FieldNamer names = io::missionFileFields(missionPath);
+    std::optional<io::OpeningClassTable> opening;
+    if (mission.classes.empty() && mission.preset.empty()) {
+        opening = io::openingClassTable(raster.value());
+        mission.preset = opening->preset; // the preset box then names what was applied
+    }
     auto classes = io::missionClasses(mission, raster.value(), names);
     auto starts = classes ? io::missionStarts(mission, raster.value(), io::StartUnits::PlanningCrs, names)
                           : io::Result<std::vector<MapPoint>>::failure(classes.error());
@@ -774,6 +814,10 @@ bool MainWindow::openMission(const QString& path) {
     for (const auto& warning : warnings)
         message += QStringLiteral(" ") + QString::fromStdString(warning);
     showStatus(message, 15000);
+    if (opening)
+        explainClassTable(*opening);
+    else
+        classTableBanner_->hide();
     return true;
 }
 
@@ -1122,6 +1166,7 @@ bool MainWindow::applyPreset(const QString& preset) {
     undoStack_->push(new ClassTableEditCommand(document_, document_->classes(), presetBefore, table, preset,
                                                tr("Apply preset %1").arg(label)));
     showStatus(tr("Applied %1 to the class table.").arg(label));
+    classTableBanner_->hide();
     return true;
 }
 

@@ -20,14 +20,20 @@ class QPushButton;
 class QTableView;
 class QUndoStack;
 
+namespace mcpp::io {
+struct OpeningClassTable;
+} // namespace mcpp::io
+
 namespace mcpp::ui {
 
+class ClassTableBanner;
 class ClassTableModel;
 class ComparisonPanel;
 class ComparisonRunner;
 class ExportRunner;
 class LayersPanel;
 class MapCanvas;
+class MessageLog;
 class PlannerSettingsPanel;
 class PlanningRunner;
 class ResultsPanel;
@@ -84,6 +90,8 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] QComboBox* presetCombo() const { return presetCombo_; }
     [[nodiscard]] const QString& lastError() const { return lastError_; }
     [[nodiscard]] const QString& lastStatusMessage() const { return lastStatus_; }
+    [[nodiscard]] MessageLog* messageLog() const { return messageLog_; }
+    [[nodiscard]] ClassTableBanner* classTableBanner() const { return classTableBanner_; }
     [[nodiscard]] bool isMissionModified() const;
     // Applies a class-table preset to the open raster as one undoable edit.
     bool applyPreset(const QString& preset);
@@ -109,6 +117,8 @@ class MainWindow : public QMainWindow {
     void updateActions();
     void updateResults();
     void syncPresetCombo();
+    // Says where the class table of a newly opened raster came from: banner, status bar and message log.
+    void explainClassTable(const io::OpeningClassTable& opening);
     void showStatus(const QString& message, int timeoutMilliseconds = 8000);
     void reportError(const QString& title, const QString& message);
     // Save/Discard/Cancel on unsaved changes; true when it is fine to replace the mission.
@@ -146,6 +156,8 @@ class MainWindow : public QMainWindow {
     LayersPanel* layersPanel_ = nullptr;
     PlannerSettingsPanel* settingsPanel_ = nullptr;
     ResultsPanel* resultsPanel_ = nullptr;
+    MessageLog* messageLog_ = nullptr;
+    ClassTableBanner* classTableBanner_ = nullptr;
     QLabel* cursorLabel_ = nullptr;
     QLabel* stageLabel_ = nullptr;
     QProgressBar* progressBar_ = nullptr;

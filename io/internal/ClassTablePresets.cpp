@@ -1,5 +1,8 @@
 #include "io/internal/ClassTablePresets.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace mcpp::io::internal {
 
 // Defaults for a generic wheeled ground robot that senses a swath of FOV metres (its footprint side):
@@ -29,6 +32,46 @@ constexpr bool open = true;
 LandCoverClass row(std::int32_t value, const char* name, std::uint32_t color, double speed, double fov,
                    bool passable) {
     return LandCoverClass{value, name, color, passable ? speed : 0.0, fov, passable};
+}
+
+std::uint32_t colorFromHsl(double hue, double saturation, double lightness) {
+    const double chroma = (1.0 - std::abs(2.0 * lightness - 1.0)) * saturation;
+    const double sector = hue / 60.0;
+    const double second = chroma * (1.0 - std::abs(std::fmod(sector, 2.0) - 1.0));
+    double red = 0.0;
+    double green = 0.0;
+    double blue = 0.0;
+    switch (static_cast<int>(sector) % 6) {
+    case 0:
+        red = chroma;
+        green = second;
+        break;
+    case 1:
+        red = second;
+        green = chroma;
+        break;
+    case 2:
+        green = chroma;
+        blue = second;
+        break;
+    case 3:
+        green = second;
+        blue = chroma;
+        break;
+    case 4:
+        red = second;
+        blue = chroma;
+        break;
+    default:
+        red = chroma;
+        blue = second;
+        break;
+    }
+    const double base = lightness - chroma / 2.0;
+    const auto channel = [base](double part) {
+        return static_cast<std::uint32_t>(std::lround(std::clamp(part + base, 0.0, 1.0) * 255.0));
+    };
+    return (channel(red) << 16U) | (channel(green) << 8U) | channel(blue);
 }
 
 LandCoverClass wall(std::int32_t value, const char* name, std::uint32_t color) {
@@ -222,22 +265,92 @@ std::vector<LandCoverClass> paper() {
 } // namespace
 
 const std::vector<PresetDefinition>& presetDefinitions() {
+    using enum CodeEvidence;
+    const std::vector<std::string> europe = {"etrs89", "laea", "lv95", "ch1903", "lambert-93", "europe"};
     static const std::vector<PresetDefinition> presets = {
-        {"esa-worldcover", "ESA WorldCover 10 m (2020, 2021), 11 classes", esaWorldCover()},
-        {"nlcd", "US National Land Cover Database, full two-digit codes", nlcd()},
-        {"nlcd-simplified", "NLCD simplified to 8 groups (1 water ... 8 wetlands)", nlcdSimplified()},
-        {"corine", "CORINE Land Cover, three-digit codes (111-523)", corine(false)},
-        {"corine-grid", "CORINE Land Cover raster grid codes (1-44)", corine(true)},
-        {"canada-landcover", "Land Cover of Canada 2015 (NRCan, NALCMS legend)", canadaLandCover()},
-        {"copernicus-glc100", "Copernicus Global Land Cover 100 m, discrete classification",
-         copernicusGlobalLandCover()},
-        {"paper", "The paper's six classes: farm, road, grass, wood, bare land, gobi (1-6)", paper()},
+        {"esa-worldcover",
+         "ESA WorldCover 10 m (2020, 2021), 11 classes",
+         esaWorldCover(),
+         "ESA WorldCover",
+         {"worldcover"},
+         Alone,
+         {}},
+        {"nlcd",
+         "US National Land Cover Database, full two-digit codes",
+         nlcd(),
+         "the National Land Cover Database (NLCD)",
+         {"nlcd", "national land cover database"},
+         Alone,
+         {}},
+        {"nlcd-simplified",
+         "NLCD simplified to 8 groups (1 water ... 8 wetlands)",
+         nlcdSimplified(),
+         "NLCD simplified to 8 groups",
+         {},
+         Never,
+         {}},
+        {"corine",
+         "CORINE Land Cover, three-digit codes (111-523)",
+         corine(false),
+         "CORINE Land Cover",
+         {"corine", "clc", "code_18", "code_12", "code_06", "code_00"},
+         Alone,
+         {}},
+        {"corine-grid",
+         "CORINE Land Cover raster grid codes (1-44)",
+         corine(true),
+         "CORINE Land Cover (raster grid codes)",
+         {"corine", "clc"},
+         WithCrs,
+         europe},
+        {"canada-landcover",
+         "Land Cover of Canada 2015 (NRCan, NALCMS legend)",
+         canadaLandCover(),
+         "Land Cover of Canada (NALCMS legend)",
+         {"nalcms", "land cover of canada", "nrcan"},
+         WithCrs,
+         {"canada", "csrs"}},
+        {"copernicus-glc100",
+         "Copernicus Global Land Cover 100 m, discrete classification",
+         copernicusGlobalLandCover(),
+         "Copernicus Global Land Cover",
+         {"lc100", "cgls", "copernicus global land"},
+         Alone,
+         {}},
+        {"cropland-data-layer",
+         "USDA Cropland Data Layer (CropScape codes)",
+         croplandDataLayerClasses(),
+         "the Cropland Data Layer",
+         {"cropland data layer", "cropscape", "cdl"},
+         WithCrs,
+         {"conus", "albers"}},
+        {"paper",
+         "The paper's six classes: farm, road, grass, wood, bare land, gobi (1-6)",
+         paper(),
+         "the paper's six classes",
+         {},
+         Never,
+         {}},
     };
     return presets;
 }
 
-LandCoverClass genericClass(std::int32_t value) {
-    return LandCoverClass{value, "Class " + std::to_string(value), 0x808080, 1.0, 10.0, true};
+LandCoverClass genericClass(std::int32_t value, std::size_t index) {
+    // Hues a golden angle apart, 19 to a round; each round lighter or darker and turned a little, so that
+    // even 55 classes keep every two colours apart and neighbours in the table far apart.
+    constexpr std::size_t kPerRound = 19;
+    const std::size_t round = (index / kPerRound) % 3;
+    const double hue = std::fmod(
+        static_cast<double>(index % kPerRound) * 137.508 + 40.0 * static_cast<double>(round), 360.0);
+    const double lightness[] = {0.55, 0.40, 0.70};
+    const double saturation[] = {0.65, 0.75, 0.55};
+    const std::size_t step = round;
+    return LandCoverClass{value,
+                          "Class " + std::to_string(value),
+                          colorFromHsl(hue, saturation[step], lightness[step]),
+                          1.0,
+                          10.0,
+                          true};
 }
 
 } // namespace mcpp::io::internal

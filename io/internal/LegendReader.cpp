@@ -353,7 +353,62 @@ Result<std::vector<LegendEntry>> parseQgisStyleLegend(const std::string& text, c
     return entries;
 }
 
+std::vector<LegendEntry> parseMetadataLegend(const std::string& text) {
+    std::vector<LegendEntry> entries;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        const std::string clean = trimmed(line);
+        const std::size_t end = clean.find_first_of(" \t:=");
+        std::int32_t value = 0;
+        if (end == std::string::npos || !parseInteger(clean.substr(0, end), value))
+            continue;
+        const std::size_t nameStart = clean.find_first_not_of(" \t:=", end);
+        if (nameStart != std::string::npos)
+            entries.push_back({value, clean.substr(nameStart), std::nullopt});
+    }
+    return entries;
+}
+
+namespace {
+
+// Every "key=value" item of the default metadata domain of the band and its dataset, and the band's
+// description: where products name themselves (ESA WorldCover's copyright and legend items).
+std::string metadataTextOf(GDALRasterBand& band) {
+    std::string text;
+    const auto append = [&text](GDALMajorObject& object) {
+        if (char** items = object.GetMetadata(); items != nullptr)
+            for (int index = 0; items[index] != nullptr; ++index)
+                text += std::string(items[index]) + "\n";
+        if (const char* description = object.GetDescription(); description != nullptr)
+            text += std::string("description=") + description + "\n";
+    };
+    if (GDALDataset* dataset = band.GetDataset(); dataset != nullptr) {
+        if (char** items = dataset->GetMetadata(); items != nullptr)
+            for (int index = 0; items[index] != nullptr; ++index)
+                text += std::string(items[index]) + "\n";
+    }
+    append(band);
+    return text;
+}
+
+std::vector<LegendEntry> metadataItemLegend(GDALRasterBand& band) {
+    for (GDALMajorObject* object :
+         {static_cast<GDALMajorObject*>(&band), static_cast<GDALMajorObject*>(band.GetDataset())}) {
+        if (object == nullptr)
+            continue;
+        for (const char* key : {"legend", "LEGEND", "Legend"})
+            if (const char* item = object->GetMetadataItem(key); item != nullptr)
+                if (auto entries = parseMetadataLegend(item); !entries.empty())
+                    return entries;
+    }
+    return {};
+}
+
+} // namespace
+
 void readRasterLegend(GDALRasterBand& band, const std::string& rasterPath, LoadedRaster& raster) {
+    raster.metadataText = metadataTextOf(band);
     std::vector<LegendEntry> named;
     std::string source;
     if (auto fromTable = attributeTableLegend(band); !fromTable.empty()) {
@@ -362,6 +417,9 @@ void readRasterLegend(GDALRasterBand& band, const std::string& rasterPath, Loade
     } else if (auto fromCategories = categoryNameLegend(band); !fromCategories.empty()) {
         named = std::move(fromCategories);
         source = "category names";
+    } else if (auto fromMetadata = metadataItemLegend(band); !fromMetadata.empty()) {
+        named = std::move(fromMetadata);
+        source = "legend metadata";
     } else if (const std::string style = findStyleFile(rasterPath); !style.empty()) {
         auto fromStyle = readQgisStyleLegend(style);
         if (fromStyle) {

@@ -11,8 +11,9 @@ class GDALRasterBand;
 namespace mcpp::io::internal {
 
 // Fills raster.legend and raster.legendSource from, in this order of preference for names: the raster
-// attribute table, GDAL category names (also from a .aux.xml), a QGIS .qml style beside the file, a CSV
-// legend beside the file. Colours come from the same source, else from the band's palette.
+// attribute table, GDAL category names (also from a .aux.xml), a "legend" metadata item, a QGIS .qml style
+// beside the file, a CSV legend beside the file. Colours come from the same source, else from the band's
+// palette. Also keeps the file's metadata text in raster.metadataText.
 void readRasterLegend(GDALRasterBand& band, const std::string& rasterPath, LoadedRaster& raster);
 
 // Legend CSV: a header naming a value column (value, code, grid_code, ...) and a name column
@@ -21,6 +22,10 @@ void readRasterLegend(GDALRasterBand& band, const std::string& rasterPath, Loade
 // The same from the file's text; path only names it in messages.
 [[nodiscard]] Result<std::vector<LegendEntry>> parseLegendCsv(const std::string& text,
                                                               const std::string& path);
+
+// A "legend" metadata item as ESA WorldCover writes it: one class per line, its value, spaces, its name.
+// Lines that do not start with a value are skipped.
+[[nodiscard]] std::vector<LegendEntry> parseMetadataLegend(const std::string& text);
 
 // QGIS style: paletted raster renderer, raster pseudocolour items, or a categorized (unique values) renderer.
 [[nodiscard]] Result<std::vector<LegendEntry>> readQgisStyleLegend(const std::string& path);

@@ -71,6 +71,7 @@ class TestBatchEndToEnd : public QObject {
     void rerunWithFewerRobotsRemovesTheirFiles();
     void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
+    void rasterAloneGetsTheRecognisedProductsTable();
     void outputsAreTheSameWhateverTheThreadCount();
     void comparePlannersOnOneMission();
     void everyPlannerRunsFromTheCommandLine_data();
@@ -491,6 +492,25 @@ void TestBatchEndToEnd::missingAsObstacleTurnsTheErrorIntoAWarning() {
     checkOutputs(out, 2, run);
     QVERIFY2(run.standardError.contains(QStringLiteral("mcpp: warning: class 2")),
              qPrintable(run.standardError));
+}
+
+// No --classes or --preset: the Canada land cover is recognised (codes and CRS, or its file name), its
+// preset applies and says so, and its water is a wall a robot cannot start on.
+void TestBatchEndToEnd::rasterAloneGetsTheRecognisedProductsTable() {
+    const QString raster =
+        QString::fromStdString(mcpp::test::testDataPath("landcover/nrcan_landcover2015_example.tif"));
+    const QString out = scratch_.filePath("recognised");
+    const auto run = runMcpp({"--batch", "--raster", raster, "--start", "-1484495,729105", "--out", out});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    QVERIFY(QFileInfo(out + "/plan.geojson").size() > 0);
+    QVERIFY2(run.standardOutput.contains("mcpp: Recognised Land Cover of Canada"),
+             qPrintable(run.standardOutput));
+    QVERIFY(run.standardOutput.contains("preset canada-landcover applied"));
+
+    const auto onWater = runMcpp({"--batch", "--raster", raster, "--start", "-1482755,729735", "--out",
+                                  scratch_.filePath("recognised-water")});
+    QCOMPARE(onWater.exitCode, 2);
+    QVERIFY2(onWater.standardError.contains("Water"), qPrintable(onWater.standardError));
 }
 
 void TestBatchEndToEnd::readmeSampleRuns() {

@@ -201,8 +201,8 @@ void TestCommandLine::errors_data() {
         << words("--batch m.json --out a --out b") << "--out is given more than once";
     QTest::newRow("--classes and --preset") << words(raster + "--classes c.csv --preset nlcd")
                                             << "--classes and --preset cannot be used together";
-    QTest::newRow("neither --classes nor --preset")
-        << words(raster) << "--raster needs --classes TABLE.csv or --preset NAME";
+    QTest::newRow("--raster without --start")
+        << words("--batch --raster map.tif --out out") << "--raster needs at least one --start X,Y";
     QTest::newRow("third --start not a number")
         << words("--batch --raster map.tif --preset p --start 1,2 --start 3,4 --start 12,abc --out o")
         << "--start 3: \"12,abc\" is not X,Y";

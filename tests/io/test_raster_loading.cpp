@@ -166,8 +166,9 @@ class RasterLoadingTest : public QObject {
         QCOMPARE(raster.georeference.authorityCode(), std::string("EPSG:32632"));
         QVERIFY(raster.grid.pixelWidth > 9.0 && raster.grid.pixelWidth < 9.5);
         QVERIFY(!raster.warnings.empty());
-        QCOMPARE(raster.legendSource, std::string("palette"));
+        QCOMPARE(raster.legendSource, std::string("legend metadata + palette"));
         QCOMPARE(legendEntry(raster, 10)->colorRgb.value_or(0), 0x006400U);
+        QCOMPARE(legendEntry(raster, 80)->name, std::string("Permanent water bodies"));
         // Total area against the ellipsoidal area of the 0.2 x 0.22 degree extent.
         const double pixelArea = raster.grid.pixelWidth * raster.grid.pixelHeight;
         const double area = static_cast<double>(insidePixels(raster.grid)) * pixelArea;

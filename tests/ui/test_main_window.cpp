@@ -1,15 +1,19 @@
+#include "io/ExportCatalogue.hpp"
 #include "tests/support/TestData.hpp"
 #include "ui/ApplicationResources.hpp"
+#include "ui/ClassTableBanner.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/ComparisonPanel.hpp"
 #include "ui/MainWindow.hpp"
 #include "ui/MapCanvas.hpp"
+#include "ui/MessageLog.hpp"
 #include "ui/ResultsPanel.hpp"
 #include "ui/RobotTableModel.hpp"
 #include "ui/SampleMission.hpp"
 
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -71,6 +75,11 @@ std::vector<MapPoint> passableSpots(const ui::MissionDocument& document, int wan
     return spots;
 }
 
+bool writeFile(const QString& path, const QByteArray& bytes) {
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
+}
+
 } // namespace
 
 class TestMainWindow : public QObject {
@@ -96,6 +105,92 @@ class TestMainWindow : public QObject {
         QVERIFY(window.lastError().contains(QStringLiteral("nlcd.tif")));
         QVERIFY(window.document()->hasMap());
         QVERIFY(window.document()->classes() == classes);
+    }
+
+    // Opened with no preset, as a user drops a file on the window: each real product is recognised, its
+    // classes named, its water and built-up land walls, and a banner and the message log say what was
+    // applied.
+    void opensRealRastersWithTheirProductsTable_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("preset");
+        QTest::addColumn<QList<int>>("walls");
+        QTest::newRow("NLCD groups") << "landcover/nlcd.tif"
+                                     << "nlcd-simplified" << QList<int>{1, 2};
+        QTest::newRow("CORINE Spain") << "landcover/corine-spain/clc.tif"
+                                      << "corine" << QList<int>{111, 512};
+        QTest::newRow("ESA WorldCover") << "landcover/worldcover2021_principe_crop.tif"
+                                        << "esa-worldcover" << QList<int>{50, 80};
+        QTest::newRow("Canada") << "landcover/nrcan_landcover2015_example.tif"
+                                << "canada-landcover" << QList<int>{17, 18, 19};
+        QTest::newRow("CORINE grid codes") << "landcover/corine2006_swiss_ls100.tif"
+                                           << "corine-grid" << QList<int>{1, 2, 41};
+    }
+
+    void opensRealRastersWithTheirProductsTable() {
+        QFETCH(QString, file);
+        QFETCH(QString, preset);
+        QFETCH(QList<int>, walls);
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        window.show();
+        QVERIFY(window.openRaster(dataPath(file.toStdString())));
+        QCOMPARE(window.presetCombo()->currentData().toString(), preset);
+        QVERIFY(window.classTableBanner()->isVisible());
+        QVERIFY(!window.classTableBanner()->isWarning());
+        QVERIFY2(window.classTableBanner()->text().startsWith("Recognised"),
+                 qPrintable(window.classTableBanner()->text()));
+        QVERIFY(window.messageLog()->messages().contains(window.classTableBanner()->text()));
+        const ClassTable& classes = window.document()->classes();
+        for (const LandCoverClass& row : classes.classes())
+            QVERIFY2(!QString::fromStdString(row.name).startsWith("Class "), row.name.c_str());
+        for (const int value : walls) {
+            QVERIFY(classes.find(value) != nullptr);
+            QVERIFY(!classes.find(value)->isTraversable());
+        }
+        // Choosing another preset is the user's word: the note goes.
+        QVERIFY(window.applyPreset(QStringLiteral("paper")));
+        QVERIFY(!window.classTableBanner()->isVisible());
+    }
+
+    // A raster of 55 unnamed classes without palette or CRS (an ASCII grid): a warning banner, a colour of
+    // its own for every class, and after planning the formats that need longitude and latitude greyed out.
+    void unknownRasterWithoutCrsExplainsItself() {
+        QTemporaryDir directory;
+        QString grid = QStringLiteral("ncols 110\nnrows 50\nxllcorner 0\nyllcorner 0\ncellsize 2\n");
+        for (int row = 0; row < 50; ++row) {
+            for (int column = 0; column < 110; ++column)
+                grid += QString::number(column / 2 + 1) + (column + 1 < 110 ? " " : "\n");
+        }
+        QVERIFY(writeFile(directory.filePath("unknown.asc"), grid.toUtf8()));
+        QVERIFY(writeFile(directory.filePath("mission.json"),
+                          R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "unknown.asc"},
+                              "robots": [{"name": "one", "start": [111, 51]}]})"));
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        window.show();
+        QVERIFY2(window.openMission(directory.filePath("mission.json")), qPrintable(window.lastError()));
+        QVERIFY(window.classTableBanner()->isVisible());
+        QVERIFY(window.classTableBanner()->isWarning());
+        QVERIFY(window.classTableBanner()->text().contains("55 classes without names"));
+        QCOMPARE(window.presetCombo()->currentData().toString(), QString());
+        QSet<std::uint32_t> colours;
+        for (const LandCoverClass& row : window.document()->classes().classes())
+            colours.insert(row.colorRgb);
+        QCOMPARE(colours.size(), 55);
+
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        QVERIFY(window.startPlanning());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
+        for (const char* key : {"geojson", "kml", "gpx", "qgc-plan", "png", "report-json"}) {
+            auto* action = window.findChild<QAction*>(QStringLiteral("export_%1").arg(QLatin1String(key)));
+            QVERIFY2(action != nullptr, key);
+            const io::ExportFormat* format = io::findExportFormat(key);
+            QCOMPARE(action->isEnabled(), !format->needsLongitudeLatitude);
+            QCOMPARE(action->toolTip().contains("no CRS"), format->needsLongitudeLatitude);
+        }
     }
 
     void plansLikeAUser() {
