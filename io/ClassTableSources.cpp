@@ -247,8 +247,8 @@ OpeningClassTable openingClassTable(const LoadedRaster& raster) {
     if (const auto product = internal::recogniseProduct(raster)) {
         opening.preset = product->preset;
         opening.table = classTableForRaster(raster, product->preset);
-        opening.explanation = "Recognised " + product->productName + " (" + product->evidence + "): preset " +
-                              product->preset + " applied.";
+        opening.explanation = "Recognised " + product->productName + " from " + product->evidence +
+                              ": applied preset " + product->preset + ".";
         return opening;
     }
     opening.table = classTableForRaster(raster);

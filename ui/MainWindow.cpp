@@ -87,6 +87,17 @@ QString formatDegrees(double value, QChar positive, QChar negative) {
     return QStringLiteral("%1° %2").arg(std::abs(value), 0, 'f', 5).arg(value >= 0.0 ? positive : negative);
 }
 
+// Warnings come from io as clauses ("no CRS: ..."); in the window they follow other sentences.
+QString asSentence(const std::string& clause) {
+    QString text = QString::fromStdString(clause).trimmed();
+    if (text.isEmpty())
+        return text;
+    text[0] = text[0].toUpper();
+    if (!text.endsWith(QLatin1Char('.')))
+        text += QLatin1Char('.');
+    return text;
+}
+
 QDockWidget* makeDock(const QString& objectName, const QString& title, QWidget* content, QWidget* parent) {
     auto* dock = new QDockWidget(title, parent);
     dock->setObjectName(objectName);
@@ -296,7 +307,7 @@ void MainWindow::createDocks() {
     classesDock->raise();
     resizeDocks({layersDock, robotsDock, settingsDock}, {150, 220, 200}, Qt::Vertical);
     resizeDocks({layersDock, resultsDock}, {360, 420}, Qt::Horizontal);
-    resizeDocks({classesDock}, {190}, Qt::Vertical);
+    resizeDocks({classesDock}, {250}, Qt::Vertical);
 }
 
 void MainWindow::createActions() {
@@ -750,7 +761,7 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
                           .arg(QFileInfo(path).fileName())
                           .arg(document_->classes().size());
     for (const auto& warning : warnings)
-        message += QStringLiteral(" ") + QString::fromStdString(warning);
+        message += QStringLiteral(" ") + asSentence(warning);
     showStatus(message, 15000);
     if (!opening.explanation.empty())
         explainClassTable(opening);
@@ -812,7 +823,7 @@ bool MainWindow::openMission(const QString& path) {
                           .arg(QFileInfo(path).fileName())
                           .arg(document_->robots().size());
     for (const auto& warning : warnings)
-        message += QStringLiteral(" ") + QString::fromStdString(warning);
+        message += QStringLiteral(" ") + asSentence(warning);
     showStatus(message, 15000);
     if (opening)
         explainClassTable(*opening);

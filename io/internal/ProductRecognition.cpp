@@ -168,24 +168,24 @@ std::optional<ProductMatch> recogniseProduct(const LoadedRaster& raster) {
     if (const Candidate* found = chosen(candidates, [&](const Candidate& candidate) {
             return mentionsAny(metadata, candidate.preset->productWords);
         }))
-        return matchOf(*found, "the file's metadata names it");
+        return matchOf(*found, "its metadata");
     const std::string fileName = lowercase(std::filesystem::path(raster.path).filename().string());
     if (const Candidate* found = chosen(candidates, [&](const Candidate& candidate) {
             return mentionsAny(fileName, candidate.preset->productWords);
         }))
-        return matchOf(*found, "the file name names it");
+        return matchOf(*found, "its file name");
     if (hasNames(raster)) {
         // The file names its classes: a product is recognised only by those names.
         if (const Candidate* found = chosen(candidates, [&](const Candidate& candidate) {
                 return nameAgreement(raster, *candidate.preset) >= kMatchingShare;
             }))
-            return matchOf(*found, "the file's class names are the product's");
+            return matchOf(*found, "its class names");
         return std::nullopt;
     }
     if (const Candidate* found = chosen(candidates, [&](const Candidate& candidate) {
             return colourAgreement(raster, *candidate.preset) >= kMatchingShare;
         }))
-        return matchOf(*found, "the file's palette is the product's");
+        return matchOf(*found, "its palette");
     const std::string crs = lowercase(raster.sourceCrsName);
     constexpr std::size_t kFewestCodes = 3; // one or two codes fit too many schemes
     if (raster.classPixelCounts.size() < kFewestCodes)
@@ -193,13 +193,12 @@ std::optional<ProductMatch> recogniseProduct(const LoadedRaster& raster) {
     if (const Candidate* found = chosen(candidates, [&](const Candidate& candidate) {
             return candidate.preset->codeEvidence == CodeEvidence::Alone;
         }))
-        return matchOf(*found, "its values are the product's codes");
+        return matchOf(*found, "its codes");
     if (const Candidate* found = chosen(candidates, [&](const Candidate& candidate) {
             return candidate.preset->codeEvidence == CodeEvidence::WithCrs &&
                    mentionsAny(crs, candidate.preset->crsWords);
         }))
-        return matchOf(*found, "its values are the product's codes and its CRS (" + raster.sourceCrsName +
-                                   ") is one the product comes in");
+        return matchOf(*found, "its codes and its CRS (" + raster.sourceCrsName + ")");
     return std::nullopt;
 }
 

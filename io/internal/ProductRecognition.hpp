@@ -10,7 +10,7 @@ namespace mcpp::io::internal {
 struct ProductMatch {
     std::string preset;      // a preset name of presetDefinitions()
     std::string productName; // "ESA WorldCover"
-    std::string evidence;    // "the file's metadata names it"
+    std::string evidence;    // what recognised it: "its metadata", "its palette", ...
 };
 
 // Which well-known land-cover product the raster is, from, in this order: its metadata or its file name

@@ -505,7 +505,7 @@ void TestBatchEndToEnd::rasterAloneGetsTheRecognisedProductsTable() {
     QVERIFY(QFileInfo(out + "/plan.geojson").size() > 0);
     QVERIFY2(run.standardOutput.contains("mcpp: Recognised Land Cover of Canada"),
              qPrintable(run.standardOutput));
-    QVERIFY(run.standardOutput.contains("preset canada-landcover applied"));
+    QVERIFY(run.standardOutput.contains("applied preset canada-landcover"));
 
     const auto onWater = runMcpp({"--batch", "--raster", raster, "--start", "-1482755,729735", "--out",
                                   scratch_.filePath("recognised-water")});
