@@ -44,6 +44,7 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QSettings>
+#include <QStandardItemModel>
 #include <QStatusBar>
 #include <QTableView>
 #include <QTimer>
@@ -61,6 +62,7 @@ namespace {
 const QString kRasterFolderKey = QStringLiteral("folders/raster");
 const QString kMissionFolderKey = QStringLiteral("folders/mission");
 const QString kExportFolderKey = QStringLiteral("folders/export");
+const QString kOwnTableData = QStringLiteral("<own table>"); // preset box: neither a preset nor the legend
 const QString kSampleShownKey = QStringLiteral("sampleShown");
 const QString kRasterFilter =
     QObject::tr("Land-cover rasters (*.tif *.tiff *.img *.vrt *.asc *.gpkg *.nc);;All files (*)");
@@ -185,6 +187,10 @@ void MainWindow::createDocks() {
         presetCombo_->setItemData(presetCombo_->count() - 1, QString::fromStdString(preset.description),
                                   Qt::ToolTipRole);
     }
+    // Shown, never chosen: the table was loaded from a CSV or edited away from the raster's legend.
+    presetCombo_->addItem(tr("Own table (loaded or edited)"), kOwnTableData);
+    if (auto* items = qobject_cast<QStandardItemModel*>(presetCombo_->model()))
+        items->item(presetCombo_->count() - 1)->setEnabled(false);
     presetCombo_->setToolTip(tr("Replace speeds, FOVs and passability with a preset's (one undoable step)"));
     presetRow->addWidget(presetCombo_, 1);
     auto* loadCsv = new QPushButton(tr("Load CSV…"), classesWidget);
@@ -440,10 +446,11 @@ void MainWindow::createActions() {
                                   "one after another, and compare their plans"));
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
-    helpMenu->addAction(tr("Open &sample mission"), this, [this] {
+    auto* sampleAction = helpMenu->addAction(tr("Open &sample mission"), this, [this] {
         if (maybeSave())
             openSampleMission(true);
     });
+    sampleAction->setObjectName(QStringLiteral("openSampleAction"));
     helpMenu->addAction(tr("&About mcpp"), this, [this] {
         QMessageBox about(QMessageBox::NoIcon, tr("About mcpp"), aboutText(), QMessageBox::Close, this);
         about.setObjectName(QStringLiteral("aboutBox"));
@@ -579,6 +586,9 @@ void MainWindow::restoreSettings() {
 }
 
 QString MainWindow::dialogFolder(const QString& key) const {
+    // Missions, class tables and exports go beside the saved mission; rasters come from where the last did.
+    if (key != kRasterFolderKey && !document_->missionPath().isEmpty())
+        return QFileInfo(document_->missionPath()).absolutePath();
     return QSettings().value(key, QDir::homePath()).toString();
 }
 
@@ -667,7 +677,11 @@ bool MainWindow::loadClassTable(const QString& path) {
 
 void MainWindow::syncPresetCombo() {
     const QSignalBlocker blocker(presetCombo_);
-    const int index = presetCombo_->findData(QString::fromStdString(document_->mission().preset));
+    const QString preset = QString::fromStdString(document_->mission().preset);
+    int index = presetCombo_->findData(preset);
+    if (preset.isEmpty() && document_->hasMap() &&
+        !(document_->classes() == io::classTableForRaster(*document_->raster())))
+        index = presetCombo_->findData(kOwnTableData);
     presetCombo_->setCurrentIndex(std::max(index, 0));
 }
 
@@ -721,7 +735,15 @@ void MainWindow::openSampleMission(bool plan) {
         showStatus(tr("The sample mission samples/zion-nlcd/mission.json was not found beside the program."));
         return;
     }
-    if (openMission(sample) && plan && !document_->robots().empty())
+    // An untitled copy: Save asks where, so the bundled file is never overwritten or remembered as a folder.
+    openingSample_ = true;
+    const bool opened = openMission(sample);
+    openingSample_ = false;
+    if (!opened)
+        return;
+    document_->setMissionPath(QString());
+    updateTitle();
+    if (plan && !document_->robots().empty())
         startPlanning();
 }
 
@@ -748,7 +770,10 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     }
     mission.preset = opening.preset;
     mission.classes = opening.table;
-    mission.planner = document_->hasMap() ? document_->plannerChoice() : defaultPlannerChoice();
+    // The planner the user works with stays; its settings start from the defaults on a new map (a purity
+    // tolerance tuned for another map is not a choice made for this one).
+    mission.planner =
+        defaultPlannerChoice(document_->hasMap() ? document_->plannerChoice().planner : std::string());
     const std::vector<std::string> warnings = raster->warnings;
     document_->reset(std::move(raster), std::move(mission), QString());
     undoStack_->clear();
@@ -815,9 +840,11 @@ bool MainWindow::openMission(const QString& path) {
                      QFileInfo(path).absoluteFilePath());
     undoStack_->clear();
     settingsModified_ = false;
-    RecentFiles::add(path);
-    rememberFolder(kMissionFolderKey, path);
-    rebuildRecentMenu();
+    if (!openingSample_) {
+        RecentFiles::add(path);
+        rememberFolder(kMissionFolderKey, path);
+        rebuildRecentMenu();
+    }
     updateTitle();
     QString message = tr("Opened mission %1 with %2 robots.")
                           .arg(QFileInfo(path).fileName())
@@ -1134,10 +1161,10 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                    15000);
     } else if (outcome.cancelled) {
         showStatus(tr("Planning cancelled; the previous plan, if any, is kept."));
-    } else {
-        reportError(tr("Planning failed"), outcome.error);
     }
-    updateActions();
+    updateActions(); // before any dialog: Cancel must not stay enabled behind it
+    if (!outcome.plan && !outcome.cancelled)
+        reportError(tr("Planning failed"), outcome.error);
     emit planningFinished(outcome.plan != nullptr);
 }
 

@@ -180,6 +180,7 @@ class MainWindow : public QMainWindow {
     std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on
     qint64 planningStartedAt_ = 0;
     bool settingsModified_ = false;
+    bool openingSample_ = false; // the bundled sample opens as an untitled copy
     bool dialogsEnabled_ = true;
     bool openSampleOnFirstStart_ = true;
 };

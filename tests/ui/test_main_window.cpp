@@ -1,3 +1,4 @@
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "tests/support/TestData.hpp"
 #include "ui/ApplicationResources.hpp"
@@ -419,6 +420,61 @@ class TestMainWindow : public QObject {
         window.setOpenSampleOnFirstStart(false);
         QVERIFY2(window.openMission(sample), qPrintable(window.lastError()));
         QVERIFY(!window.document()->robots().empty());
+        QCOMPARE(window.document()->missionPath(), QFileInfo(sample).absoluteFilePath());
+    }
+
+    // From the Help menu (and on a first start) the sample is an untitled copy: saving asks where, and
+    // neither the recent files nor the dialogs' folders point into the bundled samples.
+    void theSampleOpensAsAnUntitledCopy() {
+        const QString sample = ui::findSampleMission();
+        if (sample.isEmpty())
+            QSKIP("samples/zion-nlcd/mission.json is not there yet");
+        QSettings().clear();
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        auto* action = window.findChild<QAction*>(QStringLiteral("openSampleAction"));
+        QVERIFY(action != nullptr);
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        action->trigger();
+        QVERIFY(window.document()->hasMap());
+        QVERIFY(window.document()->missionPath().isEmpty());
+        QVERIFY(window.windowTitle().contains(QStringLiteral("unsaved")));
+        QVERIFY(!QSettings().contains(QStringLiteral("folders/mission")));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+    }
+
+    // A new map starts from the planner's default settings; the planner itself stays.
+    void aNewRasterStartsFromDefaultSettings() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif")));
+        PlannerChoice tuned = switchPlanner(window.document()->plannerChoice(), "darp");
+        tuned.parameters.set("convergence_tolerance", ParameterValue(0.05));
+        QVERIFY(!(tuned == defaultPlannerChoice("darp")));
+        window.document()->setPlannerChoice(tuned);
+        QVERIFY(window.openRaster(dataPath("landcover/corine2006_swiss_ls100.tif")));
+        QCOMPARE(window.document()->plannerChoice().planner, std::string("darp"));
+        QVERIFY(window.document()->plannerChoice() == defaultPlannerChoice("darp"));
+    }
+
+    // A class table loaded from a CSV is neither a preset nor the legend: the preset box says so.
+    void presetBoxNamesALoadedTable() {
+        QTemporaryDir directory;
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif")));
+        QCOMPARE(window.presetCombo()->currentData().toString(), QStringLiteral("nlcd-simplified"));
+        const QString csv = directory.filePath("own.csv");
+        QVERIFY(writeFile(csv, "value,name,speed_mps,fov_m,passable\n1,Water,0,10,false\n2,Town,0,10,false\n"
+                               "3,Rock,2,20,true\n4,Wood,0.4,5,true\n5,Scrub,1,10,true\n6,Meadow,2,20,true\n"
+                               "7,Fields,1,10,true\n8,Marsh,0.2,5,true\n"));
+        QVERIFY2(window.loadClassTable(csv), qPrintable(window.lastError()));
+        QVERIFY(window.presetCombo()->currentText().startsWith(QStringLiteral("Own table")));
+        window.undoStack()->undo();
+        QCOMPARE(window.presetCombo()->currentData().toString(), QStringLiteral("nlcd-simplified"));
     }
 };
 
