@@ -189,6 +189,64 @@ bool ClassTableModel::refuse(const QString& reason) {
     return false;
 }
 
+QString ClassTableModel::speedProblem(double speed, const QString& className) {
+    if (!std::isfinite(speed))
+        return tr("Speed of %1 must be a finite number.").arg(className);
+    if (speed < 0.0)
+        return tr("Speed of %1 cannot be negative; use 0 or clear Passable to make it an obstacle.")
+            .arg(className);
+    if (speed > kMaximumSpeedMetresPerSecond)
+        return tr("Speed of %1 cannot be above %2 m/s.").arg(className).arg(kMaximumSpeedMetresPerSecond);
+    return {};
+}
+
+QString ClassTableModel::fieldOfViewProblem(double fieldOfView, const QString& className) {
+    if (!std::isfinite(fieldOfView))
+        return tr("FOV of %1 must be a finite number.").arg(className);
+    if (fieldOfView <= 0.0)
+        return tr("FOV of %1 must be greater than 0 m.").arg(className);
+    if (fieldOfView > kMaximumFieldOfViewMetres)
+        return tr("FOV of %1 cannot be above %2 m.").arg(className).arg(kMaximumFieldOfViewMetres);
+    return {};
+}
+
+bool ClassTableModel::editRows(const QList<int>& rows, const ClassBulkEdit& edit) {
+    if (rows.isEmpty())
+        return refuse(tr("Select the classes to change first (click rows with Ctrl or Shift)."));
+    if (!(edit.fieldOfViewFactor > 0.0) || !std::isfinite(edit.fieldOfViewFactor))
+        return refuse(tr("The FOV factor must be a number greater than 0."));
+    const ClassTable before = document_->classes();
+    ClassTable after = before;
+    for (const int row : rows) {
+        if (row < 0 || row >= rowCount())
+            continue;
+        LandCoverClass edited = before.classes()[static_cast<std::size_t>(row)];
+        const QString className = QString::fromStdString(edited.name);
+        if (edit.speed) {
+            if (const QString problem = speedProblem(*edit.speed, className); !problem.isEmpty())
+                return refuse(problem);
+            edited.speedMetresPerSecond = *edit.speed;
+        }
+        if (edit.fieldOfView)
+            edited.fieldOfViewMetres = *edit.fieldOfView;
+        edited.fieldOfViewMetres *= edit.fieldOfViewFactor;
+        if (const QString problem = fieldOfViewProblem(edited.fieldOfViewMetres, className);
+            !problem.isEmpty())
+            return refuse(problem);
+        if (edit.passable)
+            edited.passable = *edit.passable;
+        after.set(edited);
+    }
+    if (after == before)
+        return true;
+    const QString preset = QString::fromStdString(document_->mission().preset);
+    undoStack_->push(
+        new ClassTableEditCommand(document_, before, preset, after, preset,
+                                  tr("Edit %n classes", nullptr, static_cast<int>(rows.size()))));
+    lastRefusal_.clear();
+    return true;
+}
+
 bool ClassTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
     if (!index.isValid() || index.row() >= rowCount())
         return false;
@@ -219,22 +277,13 @@ bool ClassTableModel::setData(const QModelIndex& index, const QVariant& value, i
         if (!std::isfinite(number))
             return refuse(tr("%1 of %2 must be a finite number.").arg(what, className));
         if (index.column() == Speed) {
-            if (number < 0.0)
-                return refuse(
-                    tr("Speed of %1 cannot be negative; use 0 or clear Passable to make it an obstacle.")
-                        .arg(className));
-            if (number > kMaximumSpeedMetresPerSecond)
-                return refuse(tr("Speed of %1 cannot be above %2 m/s.")
-                                  .arg(className)
-                                  .arg(kMaximumSpeedMetresPerSecond));
+            if (const QString problem = speedProblem(number, className); !problem.isEmpty())
+                return refuse(problem);
             edited.speedMetresPerSecond = number;
             description = tr("Set speed of %1 to %2 m/s").arg(className).arg(number);
         } else {
-            if (number <= 0.0)
-                return refuse(tr("FOV of %1 must be greater than 0 m.").arg(className));
-            if (number > kMaximumFieldOfViewMetres)
-                return refuse(
-                    tr("FOV of %1 cannot be above %2 m.").arg(className).arg(kMaximumFieldOfViewMetres));
+            if (const QString problem = fieldOfViewProblem(number, className); !problem.isEmpty())
+                return refuse(problem);
             edited.fieldOfViewMetres = number;
             description = tr("Set FOV of %1 to %2 m").arg(className).arg(number);
         }

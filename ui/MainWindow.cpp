@@ -6,6 +6,7 @@
 #include "io/PlanExport.hpp"
 #include "render/PlanImageWriter.hpp"
 #include "ui/ApplicationResources.hpp"
+#include "ui/ClassBulkEditDialog.hpp"
 #include "ui/ClassTableBanner.hpp"
 #include "ui/ClassTableEditCommand.hpp"
 #include "ui/ClassTableModel.hpp"
@@ -81,8 +82,11 @@ QString perRobotPath(const QString& path, int robot, int robots) {
         QStringLiteral("%1-robot%2%3").arg(info.completeBaseName()).arg(robot + 1).arg(suffix));
 }
 
+// No thousands separators: "228,269.3, 12,469.5" cannot be read back; pairs are labelled X and Y instead.
 QString formatCoordinate(double value) {
-    return QLocale::system().toString(value, 'f', 1);
+    QLocale locale = QLocale::system();
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'f', 1);
 }
 
 QString formatDegrees(double value, QChar positive, QChar negative) {
@@ -197,6 +201,11 @@ void MainWindow::createDocks() {
     loadCsv->setObjectName(QStringLiteral("loadClassCsvButton"));
     auto* saveCsv = new QPushButton(tr("Save CSV…"), classesWidget);
     saveCsv->setObjectName(QStringLiteral("saveClassCsvButton"));
+    auto* editSelected = new QPushButton(tr("Edit selected…"), classesWidget);
+    editSelected->setObjectName(QStringLiteral("editSelectedClassesButton"));
+    editSelected->setToolTip(tr("Set speed, FOV or passability of every selected class at once, or scale "
+                                "their FOVs (select rows with Ctrl or Shift; Ctrl+A for all)"));
+    presetRow->addWidget(editSelected);
     presetRow->addWidget(loadCsv);
     presetRow->addWidget(saveCsv);
     classesLayout->addLayout(presetRow);
@@ -207,6 +216,7 @@ void MainWindow::createDocks() {
     classView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     classView_->horizontalHeader()->setSectionResizeMode(ClassTableModel::Name, QHeaderView::Stretch);
     classView_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    classView_->setSelectionMode(QAbstractItemView::ExtendedSelection);
     classView_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                                 QAbstractItemView::AnyKeyPressed);
     classesLayout->addWidget(classView_, 1);
@@ -215,6 +225,19 @@ void MainWindow::createDocks() {
     connect(classModel_, &ClassTableModel::editRefused, this, [this](const QString& reason) {
         showStatus(reason);
         QToolTip::showText(QCursor::pos(), reason, classView_);
+    });
+    connect(editSelected, &QPushButton::clicked, this, [this] {
+        QList<int> rows;
+        for (const QModelIndex& index : classView_->selectionModel()->selectedRows())
+            rows << index.row();
+        if (rows.isEmpty()) {
+            showStatus(
+                tr("Select the classes to change first (click rows with Ctrl or Shift; Ctrl+A for all)."));
+            return;
+        }
+        ClassBulkEditDialog dialog(static_cast<int>(rows.size()), this);
+        if (dialog.exec() == QDialog::Accepted && !classModel_->editRows(rows, dialog.edit()))
+            reportError(tr("Cannot edit classes"), classModel_->lastRefusal());
     });
     connect(loadCsv, &QPushButton::clicked, this, [this] {
         if (!document_->hasMap())
@@ -1172,7 +1195,7 @@ void MainWindow::placeStart(MapPoint point) {
     if (robotModel_->addRobot(point)) {
         const int robot = static_cast<int>(document_->robots().size()) - 1;
         canvas_->setSelectedStart(robot);
-        showStatus(tr("Added %1 at %2, %3.")
+        showStatus(tr("Added %1 at X %2  Y %3.")
                        .arg(QString::fromStdString(document_->robots().back().name),
                             formatCoordinate(point.x), formatCoordinate(point.y)));
     }

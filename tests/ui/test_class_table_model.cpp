@@ -1,7 +1,11 @@
+#include "ui/ClassBulkEditDialog.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/MissionDocument.hpp"
 #include "ui/RobotTableModel.hpp"
 
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QSignalSpy>
 #include <QUndoStack>
 #include <QtTest>
@@ -73,6 +77,64 @@ class TestClassTableModel : public QObject {
         QCOMPARE(undoStack_->count(), 1);
         undoStack_->undo();
         QCOMPARE(document_->classes().find(1)->speedMetresPerSecond, 2.0);
+    }
+
+    // Several rows at once, as one undo step; a value one row may not take refuses the whole edit.
+    void bulkEditChangesEverySelectedRowInOneStep() {
+        ui::ClassBulkEdit edit;
+        edit.speed = 1.5;
+        edit.passable = true;
+        edit.fieldOfViewFactor = 2.0;
+        QVERIFY(classes_->editRows({0, 1}, edit));
+        QCOMPARE(undoStack_->count(), 1);
+        for (const std::int32_t value : {1, 2}) {
+            const LandCoverClass* row = document_->classes().find(value);
+            QCOMPARE(row->speedMetresPerSecond, 1.5);
+            QVERIFY(row->passable);
+            QCOMPARE(row->fieldOfViewMetres, 20.0);
+        }
+        QCOMPARE(document_->classes().find(1)->name, std::string("Grass")); // untouched parts stay
+        undoStack_->undo();
+        QVERIFY(document_->classes() == smallMission().classes);
+
+        ui::ClassBulkEdit fieldOfView;
+        fieldOfView.fieldOfView = 5.0;
+        fieldOfView.fieldOfViewFactor = 3.0;
+        QVERIFY(classes_->editRows({1}, fieldOfView));
+        QCOMPARE(document_->classes().find(2)->fieldOfViewMetres, 15.0);
+        QCOMPARE(document_->classes().find(1)->fieldOfViewMetres, 10.0);
+        QCOMPARE(undoStack_->count(), 1);
+
+        QSignalSpy refused(classes_.get(), &ui::ClassTableModel::editRefused);
+        const ClassTable before = document_->classes();
+        ui::ClassBulkEdit tooWide;
+        tooWide.speed = 2.0;
+        tooWide.fieldOfViewFactor = 1e4; // 150 km for Water
+        QVERIFY(!classes_->editRows({0, 1}, tooWide));
+        QVERIFY(document_->classes() == before);
+        QCOMPARE(undoStack_->count(), 1);
+        QCOMPARE(refused.count(), 1);
+        QVERIFY2(classes_->lastRefusal().contains(QStringLiteral("FOV")),
+                 qPrintable(classes_->lastRefusal()));
+        QVERIFY(!classes_->editRows({}, edit));
+        QVERIFY(classes_->lastRefusal().contains(QStringLiteral("Select")));
+    }
+
+    void bulkEditDialogSetsOnlyWhatIsTicked() {
+        ui::ClassBulkEditDialog dialog(3);
+        QVERIFY(dialog.windowTitle().contains(QStringLiteral("3")));
+        QVERIFY(!dialog.speed->isEnabled());
+        dialog.speed->setValue(2.5); // not ticked: ignored
+        dialog.passableCheck->setChecked(true);
+        dialog.passable->setCurrentIndex(1);
+        dialog.fieldOfViewFactor->setValue(0.5);
+        ui::ClassBulkEdit edit = dialog.edit();
+        QVERIFY(!edit.speed && !edit.fieldOfView);
+        QCOMPARE(edit.passable, std::optional<bool>(false));
+        QCOMPARE(edit.fieldOfViewFactor, 0.5);
+        dialog.speedCheck->setChecked(true);
+        QVERIFY(dialog.speed->isEnabled());
+        QCOMPARE(dialog.edit().speed, std::optional<double>(2.5));
     }
 
     void refusesInvalidEditsSayingWhy() {
