@@ -1,5 +1,7 @@
 #include "ui/MainWindow.hpp"
 
+#include "core/decomposition/FieldOfViewRounding.hpp"
+#include "core/decomposition/LandCoverSamples.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "io/MissionInputs.hpp"
@@ -587,6 +589,8 @@ void MainWindow::connectDocument() {
     connect(document_, &MissionDocument::settingsChanged, this,
             [this] { settingsPanel_->setChoice(document_->plannerChoice()); });
     connect(document_, &MissionDocument::classesChanged, this, &MainWindow::syncPresetCombo);
+    connect(document_, &MissionDocument::classesChanged, this, &MainWindow::updateSizeWarning);
+    connect(classTableBanner_, &ClassTableBanner::fitRequested, this, &MainWindow::scaleFieldsOfViewToFit);
     connect(document_, &MissionDocument::planChanged, this, [this] {
         updateResults();
         updateActions();
@@ -694,7 +698,7 @@ bool MainWindow::loadClassTable(const QString& path) {
     undoStack_->push(new ClassTableEditCommand(
         document_, document_->classes(), QString::fromStdString(document_->mission().preset), table.value(),
         QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
-    classTableBanner_->hide();
+    classTableBanner_->clearExplanation();
     return true;
 }
 
@@ -711,7 +715,70 @@ void MainWindow::syncPresetCombo() {
 void MainWindow::explainClassTable(const io::OpeningClassTable& opening) {
     const QString text = QString::fromStdString(opening.explanation);
     classTableBanner_->showExplanation(text, !opening.preset.empty());
+    updateSizeWarning();
     messageLog_->add(text);
+}
+
+void MainWindow::updateSizeWarning() {
+    fitFactor_ = 0.0;
+    const io::LoadedRaster* raster = document_->raster();
+    if (raster == nullptr) {
+        classTableBanner_->clearSizeWarning();
+        return;
+    }
+    std::vector<std::int32_t> present;
+    for (const auto& [value, count] : raster->classPixelCounts)
+        present.push_back(value);
+    const std::vector<RoundedFieldOfView> rounded = roundFieldsOfView(document_->classes(), present);
+    if (rounded.empty()) {
+        classTableBanner_->clearSizeWarning();
+        return;
+    }
+    double fovMin = rounded.front().roundedMetres;
+    int levels = 1;
+    for (const RoundedFieldOfView& entry : rounded) {
+        fovMin = std::min(fovMin, entry.roundedMetres);
+        levels = std::max(levels, entry.level);
+    }
+    // The quadtree's grid: whole top cells of 2^(levels-1) smallest cells across the map.
+    const double topCell = 2.0 * fovMin * std::ldexp(1.0, levels - 1);
+    const auto bottomCells = [&](double length) {
+        return static_cast<std::int64_t>(std::max(1.0, std::ceil(length / topCell - 1e-9))) << (levels - 1);
+    };
+    const CellBudgetEstimate estimate =
+        estimateCellBudget(fovMin, bottomCells(raster->grid.width()), bottomCells(raster->grid.height()));
+    if (estimate.fits()) {
+        classTableBanner_->clearSizeWarning();
+        return;
+    }
+    fitFactor_ = std::ceil(estimate.fittingFieldOfView / fovMin * 100.0) / 100.0;
+    const QString text = tr("Too fine to plan on this machine: the smallest FOV, %1 m, makes %2 million "
+                            "cells, which need %3 GB "
+                            "of memory; %4 GB are available. Scaling every FOV by %5 (smallest %6 m) fits.")
+                             .arg(fovMin)
+                             .arg(static_cast<double>(estimate.bottomCells) / 1e6, 0, 'f', 1)
+                             .arg(static_cast<double>(estimate.neededBytes) / 1e9, 0, 'f', 1)
+                             .arg(static_cast<double>(estimate.allowedBytes) / 1e9, 0, 'f', 1)
+                             .arg(fitFactor_)
+                             .arg(fovMin * fitFactor_);
+    if (!classTableBanner_->hasSizeWarning())
+        messageLog_->add(text);
+    classTableBanner_->showSizeWarning(text, tr("Scale FOVs ×%1").arg(fitFactor_));
+}
+
+void MainWindow::scaleFieldsOfViewToFit() {
+    if (!(fitFactor_ > 0.0))
+        return;
+    QList<int> rows;
+    for (int row = 0; row < classModel_->rowCount(); ++row)
+        rows << row;
+    ClassBulkEdit edit;
+    edit.fieldOfViewFactor = fitFactor_;
+    if (classModel_->editRows(rows, edit))
+        showStatus(
+            tr("Scaled every FOV by %1 to fit this machine's memory (Ctrl+Z undoes it).").arg(fitFactor_));
+    else
+        reportError(tr("Cannot scale FOVs"), classModel_->lastRefusal());
 }
 
 void MainWindow::showStatus(const QString& message, int timeoutMilliseconds) {
@@ -814,7 +881,7 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     if (!opening.explanation.empty())
         explainClassTable(opening);
     else
-        classTableBanner_->hide();
+        classTableBanner_->clearExplanation();
     return true;
 }
 
@@ -878,7 +945,7 @@ bool MainWindow::openMission(const QString& path) {
     if (opening)
         explainClassTable(*opening);
     else
-        classTableBanner_->hide();
+        classTableBanner_->clearExplanation();
     return true;
 }
 
@@ -1227,7 +1294,7 @@ bool MainWindow::applyPreset(const QString& preset) {
     undoStack_->push(new ClassTableEditCommand(document_, document_->classes(), presetBefore, table, preset,
                                                tr("Apply preset %1").arg(label)));
     showStatus(tr("Applied %1 to the class table.").arg(label));
-    classTableBanner_->hide();
+    classTableBanner_->clearExplanation();
     return true;
 }
 

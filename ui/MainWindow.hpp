@@ -119,6 +119,10 @@ class MainWindow : public QMainWindow {
     void syncPresetCombo();
     // Says where the class table of a newly opened raster came from: banner, status bar and message log.
     void explainClassTable(const io::OpeningClassTable& opening);
+    // Warns in the banner when the table's smallest FOV makes more cells than this machine can plan, and
+    // offers the factor that fits; scaleFieldsOfViewToFit applies it as one undoable edit.
+    void updateSizeWarning();
+    void scaleFieldsOfViewToFit();
     void showStatus(const QString& message, int timeoutMilliseconds = 8000);
     void reportError(const QString& title, const QString& message);
     // Save/Discard/Cancel on unsaved changes; true when it is fine to replace the mission.
@@ -180,6 +184,7 @@ class MainWindow : public QMainWindow {
     std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on
     qint64 planningStartedAt_ = 0;
     bool settingsModified_ = false;
+    double fitFactor_ = 0.0;     // FOV factor the banner offers; 0 when the table fits
     bool openingSample_ = false; // the bundled sample opens as an untitled copy
     bool dialogsEnabled_ = true;
     bool openSampleOnFirstStart_ = true;

@@ -158,30 +158,51 @@ SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelC
     return samples;
 }
 
-void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows) {
-    // Said before any work starts, rather than failing for want of memory minutes later.
-    const std::int64_t budget = memoryBudgetBytes();
-    const std::int64_t needed = columns * rows * bytesPerBottomCell;
-    if (needed <= budget)
-        return;
+CellBudgetEstimate estimateCellBudget(double fovMin, std::int64_t columns, std::int64_t rows) {
+    CellBudgetEstimate estimate;
+    estimate.bottomCells = columns * rows;
+    estimate.allowedBytes = memoryBudgetBytes();
+    estimate.neededBytes = estimate.bottomCells * bytesPerBottomCell;
+    estimate.fittingFieldOfView = fovMin;
+    if (estimate.fits())
+        return estimate;
     // Cells shrink with the square of the field of view: the smallest FOV whose grid fits, rounded up.
     const double width = static_cast<double>(columns) * 2.0 * fovMin;
     const double height = static_cast<double>(rows) * 2.0 * fovMin;
-    double fitting = fovMin * std::sqrt(static_cast<double>(needed) / static_cast<double>(budget));
+    const double budget = static_cast<double>(estimate.allowedBytes);
+    double fitting = fovMin * std::sqrt(static_cast<double>(estimate.neededBytes) / budget);
     const auto fits = [&](double fov) {
         const double cells = std::ceil(width / (2.0 * fov)) * std::ceil(height / (2.0 * fov));
-        return cells * static_cast<double>(bytesPerBottomCell) <= static_cast<double>(budget);
+        return cells * static_cast<double>(bytesPerBottomCell) <= budget;
     };
     const double step = std::pow(10.0, std::floor(std::log10(fitting)) - 1.0); // two significant digits
     fitting = std::ceil(fitting / step) * step;
     while (!fits(fitting))
         fitting += step;
+    estimate.fittingFieldOfView = fitting;
+    return estimate;
+}
+
+CellBudgetEstimate estimateCellBudgetForExtent(double width, double height, double fovMin) {
+    const auto cells = [fovMin](double length) {
+        return std::max<std::int64_t>(1,
+                                      static_cast<std::int64_t>(std::ceil(length / (2.0 * fovMin) - 1e-9)));
+    };
+    return estimateCellBudget(fovMin, cells(width), cells(height));
+}
+
+void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows) {
+    // Said before any work starts, rather than failing for want of memory minutes later.
+    const CellBudgetEstimate estimate = estimateCellBudget(fovMin, columns, rows);
+    if (estimate.fits())
+        return;
     throw PlanningError(Kind::InvalidParameter,
                         "the smallest field of view (" + describeMetres(fovMin) + " m) makes " +
                             std::to_string(columns) + " x " + std::to_string(rows) +
-                            " bottom cells, which need " + describeGigabytes(needed) +
-                            " of memory to plan; this machine allows " + describeGigabytes(budget) +
-                            ". A smallest field of view of " + describeMetres(fitting) +
+                            " bottom cells, which need " + describeGigabytes(estimate.neededBytes) +
+                            " of memory to plan; this machine allows " +
+                            describeGigabytes(estimate.allowedBytes) + ". A smallest field of view of " +
+                            describeMetres(estimate.fittingFieldOfView) +
                             " m would fit: raise the field of view of the classes, or crop the raster");
 }
 

@@ -51,6 +51,18 @@ void checkDecompositionInputs(const ClassGrid& grid, const ClassTable& classes,
 // pixel codes are moved in when the pixels themselves serve.
 [[nodiscard]] SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelCodes,
                                     double squareSize, std::int64_t columns, std::int64_t rows);
+// What planning a grid of columns x rows smallest cells needs against memoryBudgetBytes(), and the
+// smallest FOV whose grid over the same extent fits (two significant digits, rounded up).
+struct CellBudgetEstimate {
+    std::int64_t bottomCells = 0;
+    std::int64_t neededBytes = 0;
+    std::int64_t allowedBytes = 0;
+    double fittingFieldOfView = 0.0; // the FOV itself when it fits
+    [[nodiscard]] bool fits() const { return neededBytes <= allowedBytes; }
+};
+[[nodiscard]] CellBudgetEstimate estimateCellBudget(double fovMin, std::int64_t columns, std::int64_t rows);
+// The same for a map of this extent in metres, cells of 2 x fovMin (before the quadtree's rounding up).
+[[nodiscard]] CellBudgetEstimate estimateCellBudgetForExtent(double width, double height, double fovMin);
 // Throws PlanningError when a grid of columns x rows smallest cells would need more memory than
 // memoryBudgetBytes() allows, naming the FOV that makes it so and the smallest FOV that would fit.
 void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows);

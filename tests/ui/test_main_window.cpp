@@ -1,3 +1,5 @@
+#include "core/decomposition/LandCoverSamples.hpp"
+#include "core/model/MemoryBudget.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "tests/support/TestData.hpp"
@@ -19,6 +21,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -457,6 +460,36 @@ class TestMainWindow : public QObject {
         QVERIFY(window.openRaster(dataPath("landcover/corine2006_swiss_ls100.tif")));
         QCOMPARE(window.document()->plannerChoice().planner, std::string("darp"));
         QVERIFY(window.document()->plannerChoice() == defaultPlannerChoice("darp"));
+    }
+
+    // A preset too fine for the machine's memory is caught on opening, not after Plan: the banner says so
+    // and its button scales every FOV to the smallest that fits, as one undoable edit.
+    void offersToScaleFieldsOfViewThatAreTooFine() {
+        const std::int64_t budget = memoryBudgetBytes();
+        setMemoryBudgetBytes(100'000'000);
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        window.show();
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif"))); // 34 x 43 km, forests at 5 m
+        ui::ClassTableBanner* banner = window.classTableBanner();
+        QVERIFY(banner->hasSizeWarning());
+        QVERIFY(banner->isWarning());
+        QVERIFY2(banner->text().contains(QStringLiteral("Too fine")), qPrintable(banner->text()));
+        auto* fit = banner->findChild<QPushButton*>(QStringLiteral("classTableFitButton"));
+        QVERIFY(fit != nullptr && fit->isVisible());
+        const double forestBefore = window.document()->classes().find(4)->fieldOfViewMetres;
+        const int steps = window.undoStack()->count();
+        fit->click();
+        QVERIFY(!banner->hasSizeWarning());
+        QCOMPARE(window.undoStack()->count(), steps + 1);
+        const double forestAfter = window.document()->classes().find(4)->fieldOfViewMetres;
+        QVERIFY(forestAfter > 5.0 * forestBefore);
+        const ClassGrid& grid = *window.document()->grid();
+        QVERIFY(estimateCellBudgetForExtent(grid.width(), grid.height(), forestAfter).fits());
+        window.undoStack()->undo();
+        QVERIFY(banner->hasSizeWarning());
+        setMemoryBudgetBytes(budget);
     }
 
     // A class table loaded from a CSV is neither a preset nor the legend: the preset box says so.
