@@ -261,6 +261,7 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     io::ExportContext context{plan, raster_.georeference, classes_, mission_.exports};
     context.grid = &raster_.grid;
     context.drawImage = render::planImageWriter(planImageSide);
+    context.robotNames = io::robotNames(mission_);
     const int robots = static_cast<int>(plan.paths.size());
 
     struct Output {

@@ -533,4 +533,12 @@ std::string resolveRasterPath(const Mission& mission, const std::string& mission
     return (fs::path(missionPath).parent_path() / raster).lexically_normal().string();
 }
 
+std::vector<std::string> robotNames(const Mission& mission) {
+    std::vector<std::string> names;
+    names.reserve(mission.robots.size());
+    for (const RobotSpec& robot : mission.robots)
+        names.push_back(robot.name);
+    return names;
+}
+
 } // namespace mcpp::io

@@ -46,6 +46,9 @@ struct Mission {
 };
 
 [[nodiscard]] Result<Mission> loadMission(const std::string& path);
+// Each robot's name in order, as exports name them.
+[[nodiscard]] std::vector<std::string> robotNames(const Mission& mission);
+
 // The same from the file's text; path names it in messages and anchors a relative raster path.
 [[nodiscard]] Result<Mission> parseMission(const std::string& text, const std::string& path);
 [[nodiscard]] Status saveMission(const Mission& mission, const std::string& path); // atomic

@@ -36,6 +36,8 @@ struct ExportContext {
     // Set from another thread to stop a writer at its next feature, row or file; it then fails with
     // "cancelled" and leaves no file behind.
     const std::atomic<bool>* cancelRequested = nullptr;
+    // Each robot's name, by robot index, for the exports that show names (pictures, ...).
+    std::vector<std::string> robotNames = {};
 
     [[nodiscard]] bool cancelled() const { return cancelRequested != nullptr && cancelRequested->load(); }
     // The plan's region outlines, traced on first use and shared by every writer of this context (and its

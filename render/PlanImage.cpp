@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.hpp"
 #include "render/PlanRenderer.hpp"
+#include "render/PlanSheet.hpp"
 
 #include <QBuffer>
 #include <QDir>
@@ -78,13 +79,17 @@ bool writeWhole(const QString& path, const QByteArray& bytes, QString* error) {
 } // namespace
 
 bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error, const RegionOutlines* outlines) {
+                  QSize maxSize, QString* error, const RegionOutlines* outlines,
+                  const std::vector<std::string>& robotNames) {
     if (!checkInputs(grid, maxSize, path, error))
         return false;
+    const PlanSheet sheet(grid, classes, plan, outlines, robotNames, maxSize);
     // The picture has no transparency: three bytes a pixel, and light compression, write several times
     // faster than the default for a few per cent more bytes.
-    const QImage image =
-        renderPlanImage(grid, classes, &plan, maxSize, {}, outlines).convertToFormat(QImage::Format_RGB888);
+    QImage image(sheet.size(), QImage::Format_RGB888);
+    QPainter painter(&image);
+    sheet.paint(painter);
+    painter.end();
     QBuffer encoded;
     encoded.open(QIODevice::WriteOnly);
     constexpr int lightCompression = 80; // Qt's PNG "quality": 0 = smallest file, 100 = no compression
@@ -96,7 +101,8 @@ bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& 
 }
 
 bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error, const RegionOutlines* outlines) {
+                  QSize maxSize, QString* error, const RegionOutlines* outlines,
+                  const std::vector<std::string>& robotNames) {
     if (!checkInputs(grid, maxSize, path, error))
         return false;
     const QFileInfo info(path);
@@ -105,27 +111,21 @@ bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& 
                  QStringLiteral("cannot write %1: folder %2 does not exist").arg(path, info.absolutePath()));
         return false;
     }
-    const QSize size = fittedSize(grid, maxSize);
+    const PlanSheet sheet(grid, classes, plan, outlines, robotNames, maxSize);
     QBuffer drawing;
     drawing.open(QIODevice::WriteOnly);
     QSvgGenerator generator;
     generator.setOutputDevice(&drawing);
-    generator.setSize(size);
-    generator.setViewBox(QRect(QPoint(0, 0), size));
-    generator.setTitle(QStringLiteral("mcpp coverage plan"));
+    generator.setSize(sheet.size());
+    generator.setViewBox(QRect(QPoint(0, 0), sheet.size()));
+    generator.setTitle(sheet.title());
     generator.setDescription(QString::fromStdString("Planner: " + plan.planner));
-
-    PlanRenderer renderer;
-    renderer.setMap(&grid, &classes);
-    renderer.setPlan(&plan, outlines);
     QPainter painter;
     if (!painter.begin(&generator)) {
         setError(error, QStringLiteral("cannot write %1: the file could not be opened").arg(path));
         return false;
     }
-    painter.fillRect(QRect(QPoint(0, 0), size), Qt::white);
-    renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)),
-                   QRectF(QPointF(0, 0), QSizeF(size)));
+    sheet.paint(painter);
     if (!painter.end()) {
         setError(error, QStringLiteral("cannot write %1: drawing failed").arg(path));
         return false;

@@ -9,6 +9,8 @@
 #include <QImage>
 #include <QSize>
 #include <QString>
+#include <string>
+#include <vector>
 
 namespace mcpp::render {
 
@@ -19,11 +21,14 @@ namespace mcpp::render {
                                      QSize maxSize, const MapLayers& layers = {},
                                      const RegionOutlines* outlines = nullptr);
 
-// Writes the image as PNG. On failure returns false and says why in *error (when error is not null).
+// Writes the plan's map sheet (PlanSheet: title, map fitted into maxSize with scale bar and north arrow,
+// legend naming the robots) as PNG. On failure returns false and says why in *error (when not null).
 bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error, const RegionOutlines* outlines = nullptr);
-// Writes the same picture as SVG (vector paths and cells; the land cover embedded as an image).
+                  QSize maxSize, QString* error, const RegionOutlines* outlines = nullptr,
+                  const std::vector<std::string>& robotNames = {});
+// Writes the same sheet as SVG (vector paths and cells; the land cover embedded as an image).
 bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error, const RegionOutlines* outlines = nullptr);
+                  QSize maxSize, QString* error, const RegionOutlines* outlines = nullptr,
+                  const std::vector<std::string>& robotNames = {});
 
 } // namespace mcpp::render

@@ -10,11 +10,12 @@ io::ImageWriter planImageWriter(int pngSide) {
             return io::Status::failure(path + ": there is no map to draw");
         QString error;
         const QString file = QString::fromStdString(path);
-        const bool written = format == io::ImageFormat::Png
-                                 ? writePlanPng(*context.grid, context.classes, context.plan, file,
-                                                QSize(pngSide, pngSide), &error, &context.outlines())
-                                 : writePlanSvg(*context.grid, context.classes, context.plan, file,
-                                                QSize(1600, 1600), &error, &context.outlines());
+        const bool written =
+            format == io::ImageFormat::Png
+                ? writePlanPng(*context.grid, context.classes, context.plan, file, QSize(pngSide, pngSide),
+                               &error, &context.outlines(), context.robotNames)
+                : writePlanSvg(*context.grid, context.classes, context.plan, file, QSize(1600, 1600), &error,
+                               &context.outlines(), context.robotNames);
         return written ? io::Status() : io::Status::failure(path + ": " + error.toStdString());
     };
 }

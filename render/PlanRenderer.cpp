@@ -410,6 +410,7 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
         visible = visible.intersected(
             deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY));
     std::vector<std::vector<QRectF>> rectanglesByLevel(static_cast<std::size_t>(levels) + 1);
+    std::vector<double> levelPixels(static_cast<std::size_t>(levels) + 1, 0.0);
     const double scale = std::abs(worldToDevice.m11());
     for (const Cell& cell : graph.cells()) {
         if (cell.size * scale < kSmallestOutlinedCellPixels)
@@ -419,9 +420,10 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
             continue;
         const auto level = static_cast<std::size_t>(std::clamp(cell.level, 1, levels));
         rectanglesByLevel[level].push_back(rectangle);
+        levelPixels[level] = rectangle.width();
     }
     painter.save();
-    painter.setClipRect(visible);
+    painter.setClipRect(visible, Qt::IntersectClip); // within any clip the caller set
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setBrush(Qt::NoBrush);
     for (std::size_t level = 1; level < rectanglesByLevel.size(); ++level) {
@@ -429,7 +431,8 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
         if (rectangles.empty())
             continue;
         QColor outline = RobotPalette::levelColour(static_cast<int>(level), levels);
-        outline.setAlpha(110);
+        // Outlines a few pixels apart would hide the land cover under a mesh: they fade in as cells grow.
+        outline.setAlpha(static_cast<int>(std::clamp(10.0 * (levelPixels[level] - 4.0), 25.0, 110.0)));
         QPen pen(outline, 0.0); // cosmetic: one device pixel at any zoom
         painter.setPen(pen);
         painter.drawRects(rectangles.data(), static_cast<int>(rectangles.size()));

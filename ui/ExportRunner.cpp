@@ -22,6 +22,7 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
     context.grid = &job.raster->grid;
     context.drawImage = render::planImageWriter(job.imageSide);
     context.cancelRequested = &cancelRequested;
+    context.robotNames = job.robotNames;
     const int files = static_cast<int>(job.files.size());
     for (int file = 0; file < files; ++file) {
         if (cancelRequested.load()) {

@@ -26,6 +26,7 @@ struct ExportJob {
     std::shared_ptr<const io::LoadedRaster> raster;
     ClassTable classes;
     io::ExportSettings settings;
+    std::vector<std::string> robotNames;
     int imageSide = 3000;
 };
 

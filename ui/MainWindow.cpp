@@ -1016,6 +1016,7 @@ bool MainWindow::exportPlan(const std::string& formatKey, const QString& path) {
     job.raster = document_->sharedRaster();
     job.classes = document_->classes();
     job.settings = document_->mission().exports;
+    job.robotNames = io::robotNames(document_->mission());
     job.imageSide = exportImageSide;
     const int robots = static_cast<int>(job.plan->paths.size());
     const int files = format->perRobot ? robots : 1;

@@ -1,5 +1,6 @@
 #include "ui/MapCanvas.hpp"
 
+#include "render/MapDecorations.hpp"
 #include "ui/MissionDocument.hpp"
 
 #include <QKeyEvent>
@@ -136,12 +137,7 @@ void MapCanvas::zoomAround(QPointF devicePoint, double factor) {
 }
 
 double MapCanvas::scaleBarMetres() const {
-    const double metres = kScaleBarTargetPixels / scale_;
-    const double magnitude = std::pow(10.0, std::floor(std::log10(metres)));
-    for (const double step : {5.0, 2.0, 1.0})
-        if (step * magnitude <= metres)
-            return step * magnitude;
-    return magnitude;
+    return render::scaleBarMetres(scale_, kScaleBarTargetPixels);
 }
 
 int MapCanvas::startAt(QPointF devicePoint) const {
@@ -218,35 +214,11 @@ void MapCanvas::paintBanner(QPainter& painter, const QString& text, const QColor
 }
 
 void MapCanvas::paintScaleBar(QPainter& painter) const {
-    const double metres = scaleBarMetres();
-    const double pixels = metres * scale_;
-    const QString label = metres >= 1000.0 ? tr("%1 km").arg(metres / 1000.0) : tr("%1 m").arg(metres);
-    const QFontMetrics metrics(painter.font());
-    const QRectF box(10, height() - 44,
-                     std::max(pixels, static_cast<double>(metrics.horizontalAdvance(label))) + 20, 34);
-    painter.setRenderHint(QPainter::Antialiasing, false);
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(255, 255, 255, 210));
-    painter.drawRect(box);
-    const double left = box.left() + 10;
-    const double baseline = box.bottom() - 8;
-    painter.setPen(QPen(Qt::black, 2.0));
-    painter.drawLine(QPointF(left, baseline), QPointF(left + pixels, baseline));
-    painter.drawLine(QPointF(left, baseline - 6), QPointF(left, baseline));
-    painter.drawLine(QPointF(left + pixels, baseline - 6), QPointF(left + pixels, baseline));
-    painter.drawText(QRectF(left, box.top() + 2, pixels, 16), Qt::AlignCenter, label);
+    render::paintScaleBar(painter, QPointF(10, height() - 10), scale_, kScaleBarTargetPixels);
 }
 
 void MapCanvas::paintNorthArrow(QPainter& painter) const {
-    const QPointF tip(width() - 24, 40);
-    painter.setRenderHint(QPainter::Antialiasing, true);
-    painter.setPen(QPen(Qt::black, 1.0));
-    painter.setBrush(Qt::black);
-    painter.drawPolygon(QPolygonF({tip, tip + QPointF(7, 20), tip + QPointF(0, 15), tip + QPointF(-7, 20)}));
-    QFont font = painter.font();
-    font.setBold(true);
-    painter.setFont(font);
-    painter.drawText(QRectF(tip.x() - 10, tip.y() + 20, 20, 16), Qt::AlignCenter, QStringLiteral("N"));
+    render::paintNorthArrow(painter, QPointF(width() - 24, 40));
 }
 
 void MapCanvas::mousePressEvent(QMouseEvent* event) {

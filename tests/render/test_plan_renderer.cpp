@@ -1,6 +1,8 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "render/PlanImage.hpp"
+#include "render/PlanLegend.hpp"
 #include "render/PlanRenderer.hpp"
+#include "render/PlanSheet.hpp"
 #include "render/RobotPalette.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -192,21 +194,65 @@ class TestPlanRenderer : public QObject {
                  qPrintable(QStringLiteral("%1 of %2 map pixels show a path").arg(changed).arg(onMap)));
     }
 
-    void writesPngAndSvg() {
+    // The exported picture is a map sheet: title, the map fitted as asked, scale bar, north arrow and a
+    // legend with the classes (obstacles marked) and the robots by name.
+    void writesPngAndSvgSheets() {
         QTemporaryDir directory;
-        const Plan plan = eastboundPlan();
+        Plan plan = eastboundPlan();
+        plan.metrics.robots.resize(1);
+        plan.metrics.robots[0].timeSeconds = 5400.0;
+        const std::vector<std::string> names{"Scout"};
         QString error;
         const QString png = directory.filePath(QStringLiteral("plan.png"));
-        QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, png, QSize(800, 800), &error),
+        QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, png, QSize(800, 800), &error,
+                                      nullptr, names),
                  qPrintable(error));
+        const render::PlanSheet sheet(twoClassGrid(), twoClassTable(), plan, nullptr, names, QSize(800, 800));
+        QCOMPARE(sheet.mapArea().size(), QSize(800, 400));
         QImage readBack(png);
-        QCOMPARE(readBack.size(), QSize(800, 400));
+        QCOMPARE(readBack.size(), sheet.size());
+        QVERIFY(readBack.width() > 800 + 50 && readBack.height() > 400);
+        // The legend's swatches carry the class and robot colours; the map's left half is meadow.
+        const QRect legend = sheet.legendArea().toAlignedRect();
+        QVERIFY(legend.left() > sheet.mapArea().right());
+        const auto legendHolds = [&](QColor colour) {
+            for (int y = legend.top(); y <= legend.bottom(); ++y)
+                for (int x = legend.left(); x <= std::min(legend.right(), legend.left() + 30); ++x)
+                    if (near(readBack.pixelColor(x, y), colour, 3))
+                        return true;
+            return false;
+        };
+        QVERIFY(legendHolds(QColor::fromRgb(kMeadow)));
+        QVERIFY(legendHolds(QColor::fromRgb(kWater)));
+        QVERIFY(legendHolds(render::RobotPalette::colour(0)));
+        QVERIFY(near(readBack.pixelColor(sheet.mapArea().left() + 100, sheet.mapArea().top() + 100),
+                     QColor::fromRgb(kMeadow), 40));
+
         const QString svg = directory.filePath(QStringLiteral("plan.svg"));
-        QVERIFY2(render::writePlanSvg(twoClassGrid(), twoClassTable(), plan, svg, QSize(800, 800), &error),
+        QVERIFY2(render::writePlanSvg(twoClassGrid(), twoClassTable(), plan, svg, QSize(800, 800), &error,
+                                      nullptr, names),
                  qPrintable(error));
         QFile file(svg);
         QVERIFY(file.open(QIODevice::ReadOnly));
-        QVERIFY(file.readAll().contains("<svg"));
+        const QByteArray text = file.readAll();
+        QVERIFY(text.contains("<svg"));
+        for (const char* words : {"Water (obstacle)", "Meadow", "Scout", "1 h 30 min", "Coverage plan: test"})
+            QVERIFY2(text.contains(words), words);
+    }
+
+    void legendListsClassesRobotsAndOverlays() {
+        Plan plan = eastboundPlan();
+        plan.metrics.unreachableAreaSquareMetres = 25000.0;
+        const auto sections = render::planLegend(twoClassTable(), &plan, {});
+        QCOMPARE(sections.size(), std::size_t{3});
+        QCOMPARE(sections[0].items.size(), std::size_t{2});
+        QCOMPARE(sections[0].items[1].symbol, render::LegendSymbol::Obstacle);
+        QCOMPARE(sections[1].items.front().label.left(7),
+                 QStringLiteral("Robot 1")); // unnamed: numbered as on the map
+        QCOMPARE(sections[1].items.front().marker, QStringLiteral("1"));
+        QVERIFY(sections[2].items.back().label.contains(QStringLiteral("2.5 ha")));
+        QCOMPARE(render::planLegend(twoClassTable(), nullptr, {}).size(),
+                 std::size_t{1}); // no plan: classes only
     }
 
     void reportsUnwritablePaths() {

@@ -1,0 +1,190 @@
+#include "render/PlanLegend.hpp"
+
+#include "core/model/HumanUnits.hpp"
+#include "render/RobotPalette.hpp"
+
+#include <QFontMetricsF>
+#include <algorithm>
+
+namespace mcpp::render {
+
+namespace {
+
+constexpr double kSymbolWidth = 22.0;
+constexpr double kGap = 6.0;
+constexpr double kSectionGap = 8.0;
+
+QColor colourOf(std::uint32_t rgb) {
+    return QColor::fromRgb(static_cast<int>(rgb >> 16U & 0xffU), static_cast<int>(rgb >> 8U & 0xffU),
+                           static_cast<int>(rgb & 0xffU));
+}
+
+QString robotLabel(const Plan& plan, std::size_t robot, const std::vector<std::string>& names) {
+    QString label = robot < names.size() && !names[robot].empty() ? QString::fromStdString(names[robot])
+                                                                  : QStringLiteral("Robot %1").arg(robot + 1);
+    if (robot < plan.metrics.robots.size())
+        label += QStringLiteral(" — %1").arg(
+            QString::fromStdString(formatDuration(plan.metrics.robots[robot].timeSeconds)));
+    return label;
+}
+
+double lineHeight(const QFontMetricsF& metrics) {
+    return std::max(metrics.height(), 14.0) + 3.0;
+}
+
+void paintSymbol(QPainter& painter, const LegendItem& item, const QRectF& box) {
+    const QRectF swatch = box.adjusted(2.0, 2.0, -2.0, -2.0);
+    switch (item.symbol) {
+    case LegendSymbol::Swatch:
+    case LegendSymbol::Obstacle:
+        painter.setPen(QPen(QColor(60, 60, 60), 0.8));
+        painter.setBrush(item.colour);
+        painter.drawRect(swatch);
+        if (item.symbol == LegendSymbol::Obstacle) {
+            painter.setPen(QPen(QColor(30, 30, 30), 1.2));
+            painter.drawLine(swatch.topLeft(), swatch.bottomRight());
+        }
+        break;
+    case LegendSymbol::RegionTint: {
+        QColor tint = item.colour;
+        tint.setAlpha(90);
+        painter.setPen(QPen(item.colour, 1.5));
+        painter.setBrush(tint);
+        painter.drawRect(swatch);
+        break;
+    }
+    case LegendSymbol::PathLine:
+        painter.setPen(QPen(QColor(255, 255, 255, 190), 4.0, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(QPointF(swatch.left(), swatch.center().y()),
+                         QPointF(swatch.right(), swatch.center().y()));
+        painter.setPen(QPen(item.colour, 2.0, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(QPointF(swatch.left(), swatch.center().y()),
+                         QPointF(swatch.right(), swatch.center().y()));
+        break;
+    case LegendSymbol::StartMarker: {
+        const double radius = std::min(swatch.width(), swatch.height()) / 2.0;
+        painter.setPen(QPen(QColor(20, 20, 20), 1.2));
+        painter.setBrush(item.colour);
+        painter.drawEllipse(swatch.center(), radius, radius);
+        if (!item.marker.isEmpty()) {
+            QFont font = painter.font();
+            font.setBold(true);
+            font.setPixelSize(std::max(7, static_cast<int>(radius * 1.3)));
+            painter.save();
+            painter.setFont(font);
+            painter.setPen(Qt::white);
+            painter.drawText(
+                QRectF(swatch.center().x() - radius, swatch.center().y() - radius, 2 * radius, 2 * radius),
+                Qt::AlignCenter, item.marker);
+            painter.restore();
+        }
+        break;
+    }
+    case LegendSymbol::Unreachable:
+        painter.setPen(QPen(QColor(140, 0, 0), 0.8));
+        painter.setBrush(QBrush(QColor(140, 0, 0, 220), Qt::BDiagPattern));
+        painter.drawRect(swatch);
+        break;
+    case LegendSymbol::CellOutline:
+        painter.setPen(QPen(item.colour, 1.0));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(swatch);
+        painter.drawLine(QPointF(swatch.center().x(), swatch.top()),
+                         QPointF(swatch.center().x(), swatch.bottom()));
+        painter.drawLine(QPointF(swatch.left(), swatch.center().y()),
+                         QPointF(swatch.right(), swatch.center().y()));
+        break;
+    }
+}
+
+} // namespace
+
+std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* plan,
+                                      const std::vector<std::string>& robotNames) {
+    std::vector<LegendSection> sections;
+    LegendSection landCover{QStringLiteral("Land cover"), {}};
+    for (const LandCoverClass& entry : classes.classes()) {
+        const bool wall = !entry.isTraversable();
+        landCover.items.push_back(
+            {wall ? LegendSymbol::Obstacle : LegendSymbol::Swatch,
+             colourOf(entry.colorRgb),
+             QString::fromStdString(entry.name) + (wall ? QStringLiteral(" (obstacle)") : QString()),
+             {}});
+    }
+    sections.push_back(std::move(landCover));
+    if (plan != nullptr && !plan->paths.empty()) {
+        LegendSection robots{QStringLiteral("Robots (start, region, path)"), {}};
+        for (std::size_t robot = 0; robot < plan->paths.size(); ++robot)
+            robots.items.push_back({LegendSymbol::StartMarker, RobotPalette::colour(static_cast<int>(robot)),
+                                    robotLabel(*plan, robot, robotNames), QString::number(robot + 1)});
+        sections.push_back(std::move(robots));
+        LegendSection overlays{QStringLiteral("On the map"), {}};
+        const QColor first = RobotPalette::colour(0);
+        overlays.items.push_back(
+            {LegendSymbol::RegionTint, first, QStringLiteral("Region a robot covers"), {}});
+        overlays.items.push_back({LegendSymbol::PathLine, first, QStringLiteral("Its path"), {}});
+        overlays.items.push_back({LegendSymbol::CellOutline,
+                                  RobotPalette::levelColour(1, 2),
+                                  QStringLiteral("Cells (smaller where the view is shorter)"),
+                                  {}});
+        if (plan->metrics.unreachableAreaSquareMetres > 0.0)
+            overlays.items.push_back(
+                {LegendSymbol::Unreachable,
+                 {},
+                 QStringLiteral("Unreachable: %1")
+                     .arg(QString::fromStdString(formatArea(plan->metrics.unreachableAreaSquareMetres))),
+                 {}});
+        sections.push_back(std::move(overlays));
+    }
+    return sections;
+}
+
+QSizeF legendSize(const std::vector<LegendSection>& sections, const QFont& font) {
+    QFont bold = font;
+    bold.setBold(true);
+    const QFontMetricsF metrics(font);
+    const QFontMetricsF boldMetrics(bold);
+    double width = 0.0;
+    double height = 0.0;
+    for (const LegendSection& section : sections) {
+        width = std::max(width, boldMetrics.horizontalAdvance(section.title));
+        height += lineHeight(boldMetrics);
+        for (const LegendItem& item : section.items) {
+            width = std::max(width, kSymbolWidth + kGap + metrics.horizontalAdvance(item.label));
+            height += lineHeight(metrics);
+        }
+        height += kSectionGap;
+    }
+    return {std::ceil(width), std::ceil(std::max(0.0, height - kSectionGap))};
+}
+
+void paintLegend(QPainter& painter, QPointF topLeft, const std::vector<LegendSection>& sections) {
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    const QFont font = painter.font();
+    QFont bold = font;
+    bold.setBold(true);
+    const QFontMetricsF metrics(font);
+    const QFontMetricsF boldMetrics(bold);
+    double y = topLeft.y();
+    for (const LegendSection& section : sections) {
+        painter.setFont(bold);
+        painter.setPen(QColor(30, 30, 30));
+        painter.drawText(QRectF(topLeft.x(), y, 2000.0, lineHeight(boldMetrics)),
+                         Qt::AlignLeft | Qt::AlignVCenter, section.title);
+        y += lineHeight(boldMetrics);
+        painter.setFont(font);
+        for (const LegendItem& item : section.items) {
+            const double height = lineHeight(metrics);
+            paintSymbol(painter, item, QRectF(topLeft.x(), y + (height - 14.0) / 2.0, kSymbolWidth, 14.0));
+            painter.setPen(QColor(30, 30, 30));
+            painter.drawText(QRectF(topLeft.x() + kSymbolWidth + kGap, y, 2000.0, height),
+                             Qt::AlignLeft | Qt::AlignVCenter, item.label);
+            y += height;
+        }
+        y += kSectionGap;
+    }
+    painter.restore();
+}
+
+} // namespace mcpp::render

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "core/model/ClassTable.hpp"
+#include "core/model/Plan.hpp"
+
+#include <QColor>
+#include <QFont>
+#include <QPainter>
+#include <QString>
+#include <string>
+#include <vector>
+
+namespace mcpp::render {
+
+// How a legend line shows its colour: as the map draws that thing.
+enum class LegendSymbol { Swatch, Obstacle, RegionTint, PathLine, StartMarker, Unreachable, CellOutline };
+
+struct LegendItem {
+    LegendSymbol symbol = LegendSymbol::Swatch;
+    QColor colour;
+    QString label;
+    QString marker; // text inside a start marker
+};
+
+struct LegendSection {
+    QString title;
+    std::vector<LegendItem> items;
+};
+
+// What the map shows, for the window's legend and the exported pictures: the land-cover classes (obstacles
+// marked), each robot by colour, number, name and time when there is a plan, and what the overlays mean.
+[[nodiscard]] std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* plan,
+                                                    const std::vector<std::string>& robotNames);
+
+// The size the legend needs in this font, and the legend itself drawn from topLeft.
+[[nodiscard]] QSizeF legendSize(const std::vector<LegendSection>& sections, const QFont& font);
+void paintLegend(QPainter& painter, QPointF topLeft, const std::vector<LegendSection>& sections);
+
+} // namespace mcpp::render

@@ -1,0 +1,87 @@
+#include "render/PlanSheet.hpp"
+
+#include "core/model/HumanUnits.hpp"
+#include "render/MapDecorations.hpp"
+#include "render/PlanRenderer.hpp"
+
+#include <QFontMetricsF>
+#include <algorithm>
+#include <cmath>
+
+namespace mcpp::render {
+
+namespace {
+
+QSize fittedSize(const ClassGrid& grid, QSize maxSize) {
+    const double width = std::max(grid.width(), 1e-9);
+    const double height = std::max(grid.height(), 1e-9);
+    const double scale = std::min(maxSize.width() / width, maxSize.height() / height);
+    return {std::max(1, static_cast<int>(std::lround(width * scale))),
+            std::max(1, static_cast<int>(std::lround(height * scale)))};
+}
+
+QString titleOf(const Plan& plan) {
+    const std::size_t robots = plan.paths.size();
+    return QStringLiteral("Coverage plan: %1, %2 %3, makespan %4 (%5 × the lower bound)")
+        .arg(QString::fromStdString(plan.planner))
+        .arg(robots)
+        .arg(robots == 1 ? QStringLiteral("robot") : QStringLiteral("robots"))
+        .arg(QString::fromStdString(formatDuration(plan.metrics.makespanSeconds)))
+        .arg(plan.metrics.ratio, 0, 'f', 3);
+}
+
+} // namespace
+
+PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan,
+                     const RegionOutlines* outlines, const std::vector<std::string>& robotNames,
+                     QSize maxMapSize)
+    : grid_(grid), classes_(classes), plan_(plan), outlines_(outlines),
+      sections_(planLegend(classes, &plan, robotNames)), title_(titleOf(plan)) {
+    const QSize mapSize = fittedSize(grid, maxMapSize);
+    // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
+    const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);
+    font_.setPixelSize(textPixels);
+    titleFont_.setPixelSize(textPixels + 4);
+    titleFont_.setBold(true);
+    const int margin = textPixels + 4;
+    const int titleHeight = static_cast<int>(std::ceil(QFontMetricsF(titleFont_).height())) + margin / 2;
+    const QSizeF legend = legendSize(sections_, font_);
+    map_ = QRect(QPoint(margin, margin + titleHeight), mapSize);
+    legend_ = QRectF(QPointF(map_.right() + 1 + margin, map_.top()), legend);
+    const int width = std::max(
+        static_cast<int>(std::ceil(legend_.right())) + margin,
+        static_cast<int>(std::ceil(QFontMetricsF(titleFont_).horizontalAdvance(title_))) + 2 * margin);
+    const int height =
+        static_cast<int>(std::ceil(std::max<double>(map_.bottom() + 1, legend_.bottom()))) + margin;
+    size_ = QSize(width, height);
+}
+
+void PlanSheet::paint(QPainter& painter) const {
+    painter.fillRect(QRect(QPoint(0, 0), size_), Qt::white);
+    painter.setFont(titleFont_);
+    painter.setPen(QColor(20, 20, 20));
+    painter.drawText(QRectF(map_.left(), 0, size_.width() - map_.left(), map_.top()),
+                     Qt::AlignLeft | Qt::AlignVCenter, title_);
+
+    PlanRenderer renderer;
+    renderer.setMap(&grid_, &classes_);
+    renderer.setPlan(&plan_, outlines_);
+    painter.save();
+    painter.setClipRect(map_);
+    // The renderer draws in device coordinates: the map's placement goes into its transform.
+    const QTransform worldToSheet = PlanRenderer::fitTransform(grid_, QSizeF(map_.size())) *
+                                    QTransform::fromTranslate(map_.left(), map_.top());
+    renderer.paint(painter, worldToSheet, QRectF(map_));
+    painter.restore();
+    painter.setPen(QPen(QColor(90, 90, 90), 1.0));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(QRectF(map_).adjusted(-0.5, -0.5, 0.5, 0.5));
+
+    painter.setFont(font_);
+    const double pixelsPerMetre = map_.width() / std::max(grid_.width(), 1e-9);
+    paintScaleBar(painter, QPointF(map_.left() + 8, map_.bottom() - 8), pixelsPerMetre, map_.width() / 5.0);
+    paintNorthArrow(painter, QPointF(map_.right() - 20, map_.top() + 10));
+    paintLegend(painter, legend_.topLeft(), sections_);
+}
+
+} // namespace mcpp::render

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "core/model/ClassGrid.hpp"
+#include "core/model/ClassTable.hpp"
+#include "core/model/Plan.hpp"
+#include "core/outlines/RegionOutlines.hpp"
+#include "render/PlanLegend.hpp"
+
+#include <QPainter>
+#include <QRect>
+#include <QSize>
+#include <string>
+#include <vector>
+
+namespace mcpp::render {
+
+// The exported picture of a plan as a map sheet: a title, the map fitted into maxMapSize with a scale bar
+// and a north arrow, and the legend beside it (classes, robots with names and times, overlays).
+class PlanSheet {
+  public:
+    PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan,
+              const RegionOutlines* outlines, const std::vector<std::string>& robotNames, QSize maxMapSize);
+    [[nodiscard]] QSize size() const { return size_; }
+    [[nodiscard]] QRect mapArea() const { return map_; }
+    [[nodiscard]] QRectF legendArea() const { return legend_; }
+    [[nodiscard]] const QString& title() const { return title_; }
+    void paint(QPainter& painter) const;
+
+  private:
+    const ClassGrid& grid_;
+    const ClassTable& classes_;
+    const Plan& plan_;
+    const RegionOutlines* outlines_;
+    std::vector<LegendSection> sections_;
+    QString title_;
+    QFont font_;
+    QFont titleFont_;
+    QSize size_;
+    QRect map_;
+    QRectF legend_;
+};
+
+} // namespace mcpp::render
