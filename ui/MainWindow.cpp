@@ -16,6 +16,7 @@
 #include "ui/ComparisonRunner.hpp"
 #include "ui/ExportRunner.hpp"
 #include "ui/LayersPanel.hpp"
+#include "ui/LegendPanel.hpp"
 #include "ui/MapCanvas.hpp"
 #include "ui/MessageLog.hpp"
 #include "ui/PlannerSettingsPanel.hpp"
@@ -46,6 +47,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardItemModel>
 #include <QStatusBar>
@@ -324,6 +326,15 @@ void MainWindow::createDocks() {
     comparisonDock_ =
         makeDock(QStringLiteral("comparisonDock"), tr("Compare planners"), comparisonPanel_, this);
     addDockWidget(Qt::LeftDockWidgetArea, layersDock);
+    legendPanel_ = new LegendPanel(document_, this);
+    auto* legendScroll = new QScrollArea(this);
+    legendScroll->setWidget(legendPanel_);
+    legendScroll->setWidgetResizable(true);
+    legendScroll->setFrameShape(QFrame::NoFrame);
+    auto* legendDock = makeDock(QStringLiteral("legendDock"), tr("Legend"), legendScroll, this);
+    addDockWidget(Qt::LeftDockWidgetArea, legendDock);
+    tabifyDockWidget(layersDock, legendDock);
+    layersDock->raise();
     addDockWidget(Qt::LeftDockWidgetArea, robotsDock);
     addDockWidget(Qt::LeftDockWidgetArea, settingsDock);
     addDockWidget(Qt::RightDockWidgetArea, resultsDock);

@@ -32,6 +32,7 @@ class ComparisonPanel;
 class ComparisonRunner;
 class ExportRunner;
 class LayersPanel;
+class LegendPanel;
 class MapCanvas;
 class MessageLog;
 class PlannerSettingsPanel;
@@ -86,6 +87,7 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] QTableView* robotTableView() const { return robotView_; }
     [[nodiscard]] ResultsPanel* resultsPanel() const { return resultsPanel_; }
     [[nodiscard]] LayersPanel* layersPanel() const { return layersPanel_; }
+    [[nodiscard]] LegendPanel* legendPanel() const { return legendPanel_; }
     [[nodiscard]] PlannerSettingsPanel* plannerSettingsPanel() const { return settingsPanel_; }
     [[nodiscard]] QComboBox* presetCombo() const { return presetCombo_; }
     [[nodiscard]] const QString& lastError() const { return lastError_; }
@@ -158,6 +160,7 @@ class MainWindow : public QMainWindow {
     QTableView* robotView_ = nullptr;
     QComboBox* presetCombo_ = nullptr;
     LayersPanel* layersPanel_ = nullptr;
+    LegendPanel* legendPanel_ = nullptr;
     PlannerSettingsPanel* settingsPanel_ = nullptr;
     ResultsPanel* resultsPanel_ = nullptr;
     MessageLog* messageLog_ = nullptr;

@@ -1,5 +1,6 @@
 #include "ui/ResultsPanel.hpp"
 
+#include "core/model/HumanUnits.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QBarCategoryAxis>
@@ -104,11 +105,7 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
 QString ResultsPanel::formatDuration(double seconds) {
     if (!std::isfinite(seconds))
         return QStringLiteral("–");
-    const auto total = static_cast<long long>(std::llround(seconds));
-    return QStringLiteral("%1:%2:%3")
-        .arg(total / 3600)
-        .arg((total / 60) % 60, 2, 10, QLatin1Char('0'))
-        .arg(total % 60, 2, 10, QLatin1Char('0'));
+    return QString::fromStdString(mcpp::formatDuration(seconds));
 }
 
 QString ResultsPanel::makespanText() const {
@@ -191,8 +188,9 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     double longestValue = 0.0;
     for (std::size_t i = 0; i < robots.size(); ++i) {
         const int robot = robots[i].robot;
-        categories << (robot < names.size() ? names[robot] : tr("Robot %1").arg(robot + 1));
-        auto* set = new QBarSet(categories.back());
+        // Names do not fit under narrow bars; the numbers are the ones on the map's start markers.
+        categories << QString::number(robot + 1);
+        auto* set = new QBarSet(robot < names.size() ? names[robot] : tr("Robot %1").arg(robot + 1));
         set->setColor(render::RobotPalette::colour(robot));
         set->setBorderColor(render::RobotPalette::colour(robot).darker(130));
         for (std::size_t j = 0; j < robots.size(); ++j)
@@ -204,6 +202,7 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     chart->addSeries(series);
     auto* categoryAxis = new QBarCategoryAxis;
     categoryAxis->append(categories);
+    categoryAxis->setTitleText(tr("robot, numbered as on the map"));
     chart->addAxis(categoryAxis, Qt::AlignBottom);
     series->attachAxis(categoryAxis);
     auto* valueAxis = new QValueAxis;

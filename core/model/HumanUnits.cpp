@@ -80,8 +80,12 @@ std::string formatDuration(double seconds) {
     const long long minutes = total / 60 % 60;
     const long long rest = total % 60;
     const auto part = [](long long amount, const char* unit) { return std::to_string(amount) + " " + unit; };
-    if (days > 0)
+    // Minutes still tell robots apart over a few days; over weeks they are noise.
+    constexpr long long kDaysWithMinutes = 10;
+    if (days >= kDaysWithMinutes)
         return part(days, "d") + (hours > 0 ? " " + part(hours, "h") : "");
+    if (days > 0)
+        return part(days, "d") + " " + part(hours, "h") + (minutes > 0 ? " " + part(minutes, "min") : "");
     if (hours > 0)
         return part(hours, "h") + (minutes > 0 ? " " + part(minutes, "min") : "");
     return part(minutes, "min") + (rest > 0 ? " " + part(rest, "s") : "");

@@ -69,6 +69,8 @@ class TestHumanUnits : public QObject {
         QTest::newRow("hours") << 3.0 * 3600 + 12 * 60 + 10 << "3 h 12 min";
         QTest::newRow("days") << 8909.0 * 3600 + 53 * 60 << "371 d 5 h";
         QTest::newRow("whole hour") << 7200.0 << "2 h";
+        QTest::newRow("a day and a half") << 33.0 * 3600 + 54 * 60 + 46 << "1 d 9 h 54 min";
+        QTest::newRow("a whole day") << 86400.0 << "1 d 0 h";
     }
     void durations() {
         QFETCH(double, seconds);

@@ -7,6 +7,7 @@
 #include "ui/ClassTableBanner.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/ComparisonPanel.hpp"
+#include "ui/LegendPanel.hpp"
 #include "ui/MainWindow.hpp"
 #include "ui/MapCanvas.hpp"
 #include "ui/MessageLog.hpp"
@@ -259,6 +260,13 @@ class TestMainWindow : public QObject {
         qInfo("planned in %lld ms", static_cast<long long>(planningTime.elapsed()));
         QVERIFY(document->plan() != nullptr);
         QVERIFY(!document->planStale());
+
+        // The legend follows: classes, then each robot by name with its time.
+        const auto& legend = window.legendPanel()->sections();
+        QCOMPARE(legend.size(), std::size_t{3});
+        QCOMPARE(legend[0].items.size(), document->classes().size());
+        QCOMPARE(legend[1].items.size(), document->robots().size());
+        QVERIFY(legend[1].items[0].label.startsWith(QString::fromStdString(document->robots()[0].name)));
 
         // Results.
         QTableWidget* results = window.resultsPanel()->robotTable();

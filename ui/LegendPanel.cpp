@@ -1,0 +1,48 @@
+#include "ui/LegendPanel.hpp"
+
+#include "io/Mission.hpp"
+#include "ui/MissionDocument.hpp"
+
+#include <QPainter>
+
+namespace mcpp::ui {
+
+namespace {
+constexpr int kPadding = 8;
+} // namespace
+
+LegendPanel::LegendPanel(MissionDocument* document, QWidget* parent) : QWidget(parent), document_(document) {
+    setObjectName(QStringLiteral("legendPanel"));
+    for (const auto signal : {&MissionDocument::mapChanged, &MissionDocument::classesChanged,
+                              &MissionDocument::robotsChanged, &MissionDocument::planChanged})
+        connect(document_, signal, this, &LegendPanel::rebuild);
+    rebuild();
+}
+
+void LegendPanel::rebuild() {
+    sections_.clear();
+    if (document_->hasMap())
+        sections_ =
+            render::planLegend(document_->classes(), document_->plan(), io::robotNames(document_->mission()));
+    setMinimumSize(sizeHint());
+    updateGeometry();
+    update();
+}
+
+QSize LegendPanel::sizeHint() const {
+    const QSizeF size = render::legendSize(sections_, font());
+    return {static_cast<int>(size.width()) + 2 * kPadding, static_cast<int>(size.height()) + 2 * kPadding};
+}
+
+void LegendPanel::paintEvent(QPaintEvent* /*event*/) {
+    QPainter painter(this);
+    if (sections_.empty()) {
+        painter.setPen(palette().color(QPalette::PlaceholderText));
+        painter.drawText(rect().adjusted(kPadding, kPadding, -kPadding, -kPadding),
+                         Qt::AlignLeft | Qt::TextWordWrap, tr("Open a map to see its legend."));
+        return;
+    }
+    render::paintLegend(painter, QPointF(kPadding, kPadding), sections_);
+}
+
+} // namespace mcpp::ui
