@@ -145,6 +145,12 @@ void BatchRunner::assembleMission() {
 void BatchRunner::applyOverrides() {
     if (options_.band)
         mission_.band = *options_.band;
+    // Given on the command line, relative to where the command runs, like --raster.
+    const auto absolute = [](const std::string& path) { return std::filesystem::absolute(path).string(); };
+    if (!options_.areaPath.empty())
+        mission_.area.includePath = absolute(options_.areaPath);
+    if (!options_.noGoPath.empty())
+        mission_.area.excludePath = absolute(options_.noGoPath);
     if (options_.planner)
         mission_.planner = switchPlanner(mission_.planner, *options_.planner);
     if (options_.missingAsObstacle)

@@ -39,6 +39,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--open-paths", "", true, false},      FlagSpec{"--quiet", "", true, false},
     FlagSpec{"--dense-paths", "", true, false},     FlagSpec{"--cell-polygons", "", true, false},
     FlagSpec{"--threads", "N", true, false},        FlagSpec{"--compare", "NAMES", true, false},
+    FlagSpec{"--area", "FILE", true, false},        FlagSpec{"--no-go", "FILE", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -232,6 +233,10 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             options.classesPath = value;
         } else if (flag == "--preset") {
             options.preset = value;
+        } else if (flag == "--area") {
+            options.areaPath = value;
+        } else if (flag == "--no-go") {
+            options.noGoPath = value;
         } else if (flag == "--start") {
             ++startCount;
             const auto point = parsePoint(value);
@@ -372,6 +377,9 @@ std::string CommandLine::usage() {
            "  --start-crs EPSG:N       CRS of the --start coordinates, e.g. EPSG:4326 for "
            "longitude,latitude\n"
            "  --band N                 raster band holding the classes (default 1)\n"
+           "  --area FILE              plan only inside the polygons of this vector file (any format\n"
+           "                           GDAL reads; reprojected to the raster's CRS)\n"
+           "  --no-go FILE             leave out the polygons of this vector file (no-go zones)\n"
            "  --planner NAME           planner to run (default mcpp-mlct; the list is below)\n"
            "  --param KEY=VALUE        a parameter of the planner (the list is below); repeatable\n"
            "  --purity F               same as --param purity_tolerance=F: a class covering at most this\n"
@@ -391,10 +399,9 @@ std::string CommandLine::usage() {
            "                           (default: the machine's cores); the files are the same whatever N\n"
            "  -q, --quiet              no progress lines, warnings or summary; errors are still printed\n"
            "\n"
-           "Mission files (format: docs/mission-format.md) may be combined with --band, --planner,\n"
-           "--param, --purity, --missing-as-obstacle, --open-paths, --dense-paths and --cell-polygons, "
-           "which\n"
-           "override the mission's values.\n"
+           "Mission files (format: docs/mission-format.md) may be combined with --band, --area, --no-go,\n"
+           "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths and\n"
+           "--cell-polygons, which override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"

@@ -38,6 +38,8 @@ struct CommandLineOptions {
     std::string outputDirectory;
     std::optional<std::string> planner;
     std::optional<int> band;
+    std::string areaPath;                      // --area: plan only inside its polygons
+    std::string noGoPath;                      // --no-go: leave its polygons out
     std::vector<ParameterOverride> parameters; // --param, --purity, --open-paths, in the order given
     bool missingAsObstacle = false;
     bool quiet = false;

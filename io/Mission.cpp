@@ -409,7 +409,7 @@ Result<Mission> parseMission(const std::string& text, const std::string& path) {
         return fail();
     }
     if (!reader.onlyKeys(root, "",
-                         {"format", "version", "raster", "classes", "robots", "planner", "exports"}))
+                         {"format", "version", "raster", "area", "classes", "robots", "planner", "exports"}))
         return fail();
 
     QJsonObject raster;
@@ -431,6 +431,14 @@ Result<Mission> parseMission(const std::string& text, const std::string& path) {
     if (reader.failed())
         return fail();
 
+    if (const QJsonValue area = root.value(QLatin1String("area")); !area.isUndefined()) {
+        QJsonObject object;
+        if (!reader.object(area, "area", object) ||
+            !reader.onlyKeys(object, "area", {"include", "exclude"}) ||
+            !reader.optional(object, "area", "include", mission.area.includePath, &MissionReader::string) ||
+            !reader.optional(object, "area", "exclude", mission.area.excludePath, &MissionReader::string))
+            return fail();
+    }
     if (const QJsonValue classes = root.value(QLatin1String("classes")); !classes.isUndefined()) {
         if (!readClasses(reader, classes, mission))
             return fail();
@@ -476,6 +484,13 @@ std::string missionToJson(const Mission& mission) {
     JsonValue& raster = root.add("raster", JsonValue::object());
     raster.add("path", mission.rasterPath);
     raster.add("band", mission.band);
+    if (!mission.area.empty()) {
+        JsonValue& area = root.add("area", JsonValue::object());
+        if (!mission.area.includePath.empty())
+            area.add("include", mission.area.includePath);
+        if (!mission.area.excludePath.empty())
+            area.add("exclude", mission.area.excludePath);
+    }
 
     JsonValue& classes = root.add("classes", JsonValue::object());
     classes.add("preset", mission.preset);
@@ -525,12 +540,16 @@ Status saveMission(const Mission& mission, const std::string& path) {
     return internal::writeFileAtomically(path, missionToJson(mission));
 }
 
-std::string resolveRasterPath(const Mission& mission, const std::string& missionPath) {
+std::string resolveMissionPath(const std::string& written, const std::string& missionPath) {
     namespace fs = std::filesystem;
-    const fs::path raster(mission.rasterPath);
-    if (raster.empty() || raster.is_absolute() || mission.rasterPath.rfind("/vsi", 0) == 0)
-        return mission.rasterPath;
-    return (fs::path(missionPath).parent_path() / raster).lexically_normal().string();
+    const fs::path path(written);
+    if (path.empty() || path.is_absolute() || written.rfind("/vsi", 0) == 0)
+        return written;
+    return (fs::path(missionPath).parent_path() / path).lexically_normal().string();
+}
+
+std::string resolveRasterPath(const Mission& mission, const std::string& missionPath) {
+    return resolveMissionPath(mission.rasterPath, missionPath);
 }
 
 std::vector<std::string> robotNames(const Mission& mission) {

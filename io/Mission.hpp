@@ -30,11 +30,22 @@ struct ExportSettings {
     friend bool operator==(const ExportSettings&, const ExportSettings&) = default;
 };
 
+// Where to plan on the map: inside the include polygons (the whole map when none), outside the exclude
+// polygons (no-go zones). Vector files GDAL reads; paths as written, relative to the mission's folder.
+struct AreaOfInterest {
+    std::string includePath;
+    std::string excludePath;
+
+    [[nodiscard]] bool empty() const { return includePath.empty() && excludePath.empty(); }
+    friend bool operator==(const AreaOfInterest&, const AreaOfInterest&) = default;
+};
+
 // A mission file (docs/mission-format.md): everything needed to plan again.
 struct Mission {
     int version = 2;        // the format version this mcpp writes; files of version 1 are read and upgraded
     std::string rasterPath; // as written in the file: relative to the mission file's folder when relative
     int band = 1;
+    AreaOfInterest area;
     std::string preset; // used when classes is empty
     ClassTable classes;
     bool missingClassesAsObstacles = false;
@@ -46,6 +57,10 @@ struct Mission {
 };
 
 [[nodiscard]] Result<Mission> loadMission(const std::string& path);
+// A path of the mission file (raster, area files) as the program opens it: relative ones from the
+// mission's folder.
+[[nodiscard]] std::string resolveMissionPath(const std::string& written, const std::string& missionPath);
+
 // Each robot's name in order, as exports name them.
 [[nodiscard]] std::vector<std::string> robotNames(const Mission& mission);
 

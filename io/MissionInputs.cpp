@@ -4,6 +4,7 @@
 #include "core/model/StartPointCheck.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
+#include "io/AreaOfInterest.hpp"
 #include "io/ClassTableSources.hpp"
 
 #include <cmath>
@@ -44,7 +45,15 @@ FieldNamer missionFileFields(const std::string& missionPath) {
 Result<LoadedRaster> loadMissionRaster(const Mission& mission, const std::string& missionPath) {
     RasterLoadOptions options;
     options.band = mission.band;
-    return loadLandCoverRaster(resolveRasterPath(mission, missionPath), options);
+    auto raster = loadLandCoverRaster(resolveRasterPath(mission, missionPath), options);
+    if (!raster || mission.area.empty())
+        return raster;
+    if (Status area =
+            applyAreaOfInterest(raster.value(), resolveMissionPath(mission.area.includePath, missionPath),
+                                resolveMissionPath(mission.area.excludePath, missionPath));
+        !area)
+        return Result<LoadedRaster>::failure(area.error());
+    return raster;
 }
 
 Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& raster,

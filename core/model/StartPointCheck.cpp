@@ -36,8 +36,10 @@ std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const 
                                      " to " + fixed(grid.maxX()) + ", y " + fixed(grid.minY()) + " to " +
                                      fixed(grid.originY) + ")"};
     if (grid.isOutside(pixel->column, pixel->row))
-        return StartPointProblem{Kind::StartOutsideArea,
-                                 describePoint(point) + " is on a nodata pixel, outside the task area"};
+        return StartPointProblem{
+            Kind::StartOutsideArea,
+            describePoint(point) +
+                " is outside the task area (a nodata pixel, or outside the area of interest)"};
     const std::int32_t value = grid.valueAt(pixel->column, pixel->row);
     const LandCoverClass* landCover = classes.find(value);
     if (landCover == nullptr)

@@ -1,0 +1,163 @@
+#include "io/AreaOfInterest.hpp"
+
+#include "core/model/HumanUnits.hpp"
+#include "io/internal/GdalSupport.hpp"
+
+#include <gdal_alg.h>
+#include <ogrsf_frmts.h>
+#include <vector>
+
+namespace mcpp::io {
+
+namespace {
+
+using internal::QuietGdalErrors;
+
+struct OwnedGeometries {
+    std::vector<OGRGeometry*> geometries;
+    OwnedGeometries() = default;
+    OwnedGeometries(const OwnedGeometries&) = delete;
+    OwnedGeometries& operator=(const OwnedGeometries&) = delete;
+    ~OwnedGeometries() {
+        for (OGRGeometry* geometry : geometries)
+            OGRGeometryFactory::destroyGeometry(geometry);
+    }
+};
+
+// Planning metres = CRS units x metresPerUnit: polygons in feet are scaled like the raster was.
+void scaleRings(OGRGeometry& geometry, double factor) {
+    if (factor == 1.0)
+        return;
+    if (auto* collection = dynamic_cast<OGRGeometryCollection*>(&geometry)) {
+        for (int index = 0; index < collection->getNumGeometries(); ++index)
+            scaleRings(*collection->getGeometryRef(index), factor);
+        return;
+    }
+    if (auto* polygon = dynamic_cast<OGRPolygon*>(&geometry)) {
+        for (OGRLinearRing* ring : *polygon)
+            for (int point = 0; point < ring->getNumPoints(); ++point)
+                ring->setPoint(point, ring->getX(point) * factor, ring->getY(point) * factor);
+    }
+}
+
+// Every polygon of every layer, in the raster's planning frame.
+Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, OwnedGeometries& out) {
+    using Count = Result<int>;
+    internal::ensureGdalRegistered();
+    const QuietGdalErrors quiet;
+    internal::DatasetPointer dataset(
+        GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+    if (!dataset)
+        return Count::failure(path + ": cannot be opened as a vector file" + QuietGdalErrors::detail());
+    std::unique_ptr<OGRSpatialReference> planning;
+    if (raster.georeference.hasCrs())
+        planning = internal::spatialReferenceFromDefinition(raster.georeference.wkt());
+    const double metresPerUnit = raster.georeference.metresPerUnit();
+    int count = 0;
+    for (OGRLayer* layer : dataset->GetLayers()) {
+        std::unique_ptr<OGRCoordinateTransformation> toPlanning;
+        if (const OGRSpatialReference* source = layer->GetSpatialRef(); source != nullptr && planning) {
+            std::unique_ptr<OGRSpatialReference> traditional(source->Clone());
+            traditional->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+            toPlanning.reset(OGRCreateCoordinateTransformation(traditional.get(), planning.get()));
+            if (!toPlanning)
+                return Count::failure(path + ": its CRS cannot be converted to the raster's (" +
+                                      raster.georeference.name() + ")" + QuietGdalErrors::detail());
+        }
+        for (auto& feature : *layer) {
+            const OGRGeometry* geometry = feature->GetGeometryRef();
+            if (geometry == nullptr)
+                continue;
+            const OGRwkbGeometryType type = wkbFlatten(geometry->getGeometryType());
+            if (type != wkbPolygon && type != wkbMultiPolygon)
+                continue;
+            OGRGeometry* copy = geometry->clone();
+            out.geometries.push_back(copy);
+            if (toPlanning && copy->transform(toPlanning.get()) != OGRERR_NONE)
+                return Count::failure(path + ": feature " + std::to_string(feature->GetFID()) +
+                                      " cannot be converted to the raster's CRS" + QuietGdalErrors::detail());
+            scaleRings(*copy, metresPerUnit);
+            ++count;
+        }
+    }
+    if (count == 0)
+        return Count::failure(path + ": holds no polygons (an area needs polygons or multipolygons)");
+    return count;
+}
+
+// 1 where a polygon covers the pixel's centre, on the raster's grid.
+Result<std::vector<std::uint8_t>> rasterise(const std::string& path, const LoadedRaster& raster) {
+    using Mask = Result<std::vector<std::uint8_t>>;
+    OwnedGeometries polygons;
+    if (auto read = readPolygons(path, raster, polygons); !read)
+        return Mask::failure(read.error());
+    const ClassGrid& grid = raster.grid;
+    GDALDriver* memory = GetGDALDriverManager()->GetDriverByName("MEM");
+    internal::DatasetPointer canvas(memory->Create("", grid.columns, grid.rows, 1, GDT_Byte, nullptr));
+    double transform[6] = {grid.originX, grid.pixelWidth, 0.0, grid.originY, 0.0, -grid.pixelHeight};
+    canvas->SetGeoTransform(transform);
+    int bands[1] = {1};
+    double burn[1] = {1.0};
+    const QuietGdalErrors quiet;
+    if (GDALRasterizeGeometries(canvas.get(), 1, bands, static_cast<int>(polygons.geometries.size()),
+                                reinterpret_cast<OGRGeometryH*>(polygons.geometries.data()), nullptr, nullptr,
+                                burn, nullptr, nullptr, nullptr) != CE_None)
+        return Mask::failure(path + ": its polygons could not be laid on the raster" +
+                             QuietGdalErrors::detail());
+    std::vector<std::uint8_t> mask(static_cast<std::size_t>(grid.columns) *
+                                   static_cast<std::size_t>(grid.rows));
+    if (canvas->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, grid.columns, grid.rows, mask.data(), grid.columns,
+                                           grid.rows, GDT_Byte, 0, 0, nullptr) != CE_None)
+        return Mask::failure(path + ": its polygons could not be laid on the raster" +
+                             QuietGdalErrors::detail());
+    return mask;
+}
+
+} // namespace
+
+Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
+                           const std::string& excludePath) {
+    if (includePath.empty() && excludePath.empty())
+        return {};
+    ClassGrid& grid = raster.grid;
+    if (grid.outside.empty())
+        grid.outside.assign(grid.values.size(), 0);
+    std::vector<std::uint8_t> include;
+    std::vector<std::uint8_t> exclude;
+    if (!includePath.empty()) {
+        auto mask = rasterise(includePath, raster);
+        if (!mask)
+            return Status::failure(mask.error());
+        include = std::move(mask.value());
+    }
+    if (!excludePath.empty()) {
+        auto mask = rasterise(excludePath, raster);
+        if (!mask)
+            return Status::failure(mask.error());
+        exclude = std::move(mask.value());
+    }
+    std::map<std::int32_t, std::int64_t> counts;
+    std::int64_t inside = 0;
+    for (std::size_t pixel = 0; pixel < grid.values.size(); ++pixel) {
+        if (grid.outside[pixel] != 0)
+            continue;
+        if ((!include.empty() && include[pixel] == 0) || (!exclude.empty() && exclude[pixel] != 0)) {
+            grid.outside[pixel] = 1;
+            continue;
+        }
+        ++counts[grid.values[pixel]];
+        ++inside;
+    }
+    if (inside == 0) {
+        const std::string files = includePath.empty() ? excludePath : includePath;
+        return Status::failure(files + ": the area leaves no pixel of " + raster.path +
+                               " to plan on (do the polygons overlap the map, in the right CRS?)");
+    }
+    raster.classPixelCounts = std::move(counts);
+    const double pixelArea = grid.pixelWidth * grid.pixelHeight;
+    raster.warnings.push_back("area of interest: planning on " +
+                              formatArea(static_cast<double>(inside) * pixelArea) + " of the map");
+    return {};
+}
+
+} // namespace mcpp::io

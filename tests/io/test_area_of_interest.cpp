@@ -1,0 +1,156 @@
+// Areas of interest and no-go zones from vector files laid on the raster's grid.
+
+#include "io/AreaOfInterest.hpp"
+#include "io/Mission.hpp"
+#include "io/MissionInputs.hpp"
+#include "tests/support/TestData.hpp"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace mcpp;
+using namespace mcpp::io;
+
+namespace {
+
+LoadedRaster zion() {
+    auto raster = loadLandCoverRaster(test::testDataPath("landcover/nlcd.tif"));
+    if (!raster)
+        qFatal("%s", raster.error().c_str());
+    return std::move(raster.value());
+}
+
+bool writeText(const QString& path, const QByteArray& text) {
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(text) == text.size();
+}
+
+// A GeoJSON FeatureCollection of one rectangle; crs names the CRS of its coordinates (empty: none given,
+// which GeoJSON readers take as WGS84 longitude, latitude).
+QByteArray rectangleJson(double west, double south, double east, double north, const QString& crs) {
+    const QString ring = QStringLiteral("[[%1,%2],[%3,%2],[%3,%4],[%1,%4],[%1,%2]]")
+                             .arg(west, 0, 'f', 6)
+                             .arg(south, 0, 'f', 6)
+                             .arg(east, 0, 'f', 6)
+                             .arg(north, 0, 'f', 6);
+    const QString crsMember =
+        crs.isEmpty()
+            ? QString()
+            : QStringLiteral("\"crs\":{\"type\":\"name\",\"properties\":{\"name\":\"%1\"}},").arg(crs);
+    return QStringLiteral(
+               "{\"type\":\"FeatureCollection\",%1\"features\":[{\"type\":\"Feature\",\"properties\":{},"
+               "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[%2]}}]}")
+        .arg(crsMember, ring)
+        .toUtf8();
+}
+
+std::int64_t insidePixels(const LoadedRaster& raster) {
+    std::int64_t inside = 0;
+    for (const auto& [value, count] : raster.classPixelCounts)
+        inside += count;
+    return inside;
+}
+
+// Whether the pixel whose centre is nearest to (x, y) is inside the task area.
+bool insideAt(const LoadedRaster& raster, double x, double y) {
+    const ClassGrid& grid = raster.grid;
+    const int column = static_cast<int>((x - grid.originX) / grid.pixelWidth);
+    const int row = static_cast<int>((grid.originY - y) / grid.pixelHeight);
+    return !grid.isOutside(column, row);
+}
+
+} // namespace
+
+class AreaOfInterestTest : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void includeKeepsOnlyThePolygonAndExcludeCutsAHole() {
+        QTemporaryDir folder;
+        const QString area = folder.filePath("area.geojson");
+        const QString noGo = folder.filePath("no-go.geojson");
+        QVERIFY(
+            writeText(area, rectangleJson(305000, 4130000, 325000, 4150000, "urn:ogc:def:crs:EPSG::26912")));
+        QVERIFY(
+            writeText(noGo, rectangleJson(310000, 4135000, 315000, 4140000, "urn:ogc:def:crs:EPSG::26912")));
+        LoadedRaster raster = zion();
+        const double pixelArea = raster.grid.pixelWidth * raster.grid.pixelHeight;
+        QVERIFY(applyAreaOfInterest(raster, area.toStdString(), noGo.toStdString()).ok());
+        const double area_m2 = static_cast<double>(insidePixels(raster)) * pixelArea;
+        const double expected = 20000.0 * 20000.0 - 5000.0 * 5000.0; // the raster covers the whole rectangle
+        QVERIFY2(std::abs(area_m2 - expected) / expected < 0.01, qPrintable(QString::number(area_m2)));
+        QVERIFY(insideAt(raster, 306000, 4131000));
+        QVERIFY(!insideAt(raster, 304000, 4131000)); // west of the area
+        QVERIFY(!insideAt(raster, 312500, 4137500)); // in the no-go zone
+        QVERIFY(insideAt(raster, 316000, 4137500));
+        QVERIFY(raster.warnings.back().find("area of interest") != std::string::npos);
+        std::int64_t outsideFlags = 0;
+        for (const std::uint8_t flag : raster.grid.outside)
+            outsideFlags += flag != 0;
+        QCOMPARE(outsideFlags + insidePixels(raster), static_cast<std::int64_t>(raster.grid.values.size()));
+    }
+
+    // The same rectangle given in longitude and latitude is taken to the raster's CRS.
+    void polygonsInAnotherCrsAreReprojected() {
+        QTemporaryDir folder;
+        const QString lonLat = folder.filePath("area.geojson");
+        // About 305-325 km east, 4130-4150 km north in UTM 12N.
+        QVERIFY(writeText(lonLat, rectangleJson(-113.2, 37.32, -113.0, 37.48, QString())));
+        LoadedRaster raster = zion();
+        QVERIFY(applyAreaOfInterest(raster, lonLat.toStdString(), {}).ok());
+        QVERIFY(insideAt(raster, 315000, 4140000));
+        QVERIFY(!insideAt(raster, 330000, 4140000));
+        QVERIFY(!insideAt(raster, 315000, 4120000));
+    }
+
+    void badAreaFilesAreRefusedNamingTheFile_data() {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("fragment");
+        QTest::newRow("not a vector file") << QByteArray("this is not GeoJSON") << "cannot be opened";
+        QTest::newRow("points only") << QByteArray(
+                                            R"({"type":"FeatureCollection","features":[{"type":"Feature",
+            "properties":{},"geometry":{"type":"Point","coordinates":[-113.1,37.4]}}]})")
+                                     << "no polygons";
+        QTest::newRow("far from the map")
+            << rectangleJson(10.0, 45.0, 10.1, 45.1, QString()) << "leaves no pixel";
+    }
+
+    void badAreaFilesAreRefusedNamingTheFile() {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, fragment);
+        QTemporaryDir folder;
+        const QString path = folder.filePath("area.geojson");
+        QVERIFY(writeText(path, content));
+        LoadedRaster raster = zion();
+        const Status status = applyAreaOfInterest(raster, path.toStdString(), {});
+        QVERIFY(!status.ok());
+        QVERIFY2(status.error().find("area.geojson") != std::string::npos, status.error().c_str());
+        QVERIFY2(status.error().find(fragment.toStdString()) != std::string::npos, status.error().c_str());
+        const Status missing = applyAreaOfInterest(raster, folder.filePath("absent.gpkg").toStdString(), {});
+        QVERIFY(!missing.ok() && missing.error().find("absent.gpkg") != std::string::npos);
+    }
+
+    // A mission names its area files relative to itself; they round-trip and apply when it loads.
+    void missionsCarryTheirArea() {
+        QTemporaryDir folder;
+        QVERIFY(writeText(folder.filePath("area.geojson"),
+                          rectangleJson(305000, 4130000, 325000, 4150000, "urn:ogc:def:crs:EPSG::26912")));
+        Mission mission;
+        mission.rasterPath = test::testDataPath("landcover/nlcd.tif");
+        mission.area.includePath = "area.geojson";
+        mission.robots.push_back({"one", {315000, 4140000}, {}});
+        const std::string path = folder.filePath("mission.json").toStdString();
+        QVERIFY(saveMission(mission, path).ok());
+        auto loaded = loadMission(path);
+        QVERIFY(loaded.ok());
+        QCOMPARE(loaded.value().area, mission.area);
+        auto raster = loadMissionRaster(loaded.value(), path);
+        QVERIFY2(raster.ok(), raster.ok() ? "" : raster.error().c_str());
+        QVERIFY(!insideAt(raster.value(), 304000, 4140000));
+        QVERIFY(insideAt(raster.value(), 315000, 4140000));
+    }
+};
+
+QTEST_GUILESS_MAIN(AreaOfInterestTest)
+#include "test_area_of_interest.moc"
