@@ -465,6 +465,27 @@ void MainWindow::createActions() {
             canvas_->setTool(MapCanvas::Tool::PlaceStart);
     });
     planMenu->addSeparator();
+    const QString vectorFilter =
+        tr("Vector files (*.gpkg *.geojson *.json *.shp *.kml *.gml *.fgb);;All files (*)");
+    auto* areaAction = planMenu->addAction(tr("&Area of interest from file…"), this, [this, vectorFilter] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Area of interest"),
+                                                          dialogFolder(kMissionFolderKey), vectorFilter);
+        if (!path.isEmpty())
+            setAreaFiles(path, QString::fromStdString(document_->mission().area.excludePath));
+    });
+    areaAction->setObjectName(QStringLiteral("areaOfInterestAction"));
+    areaAction->setToolTip(tr("Plan only inside the polygons of a vector file"));
+    auto* noGoAction = planMenu->addAction(tr("&No-go zones from file…"), this, [this, vectorFilter] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("No-go zones"),
+                                                          dialogFolder(kMissionFolderKey), vectorFilter);
+        if (!path.isEmpty())
+            setAreaFiles(QString::fromStdString(document_->mission().area.includePath), path);
+    });
+    noGoAction->setObjectName(QStringLiteral("noGoZonesAction"));
+    auto* clearAreaAction =
+        planMenu->addAction(tr("C&lear area and no-go zones"), this, [this] { setAreaFiles({}, {}); });
+    clearAreaAction->setObjectName(QStringLiteral("clearAreaAction"));
+    planMenu->addSeparator();
     planAction_ = planMenu->addAction(actionIcon("plan"), tr("&Plan"), this, &MainWindow::startPlanning);
     planAction_->setObjectName(QStringLiteral("planAction"));
     planAction_->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(Qt::CTRL | Qt::Key_Return)});
@@ -730,6 +751,39 @@ void MainWindow::explainClassTable(const io::OpeningClassTable& opening) {
     messageLog_->add(text);
 }
 
+bool MainWindow::setAreaFiles(const QString& includePath, const QString& excludePath) {
+    if (!document_->hasMap())
+        return false;
+    io::Mission mission = document_->mission();
+    // Read again from the file, so that clearing or changing the area starts from the whole map.
+    mission.rasterPath = document_->raster()->path;
+    const auto absolute = [](const QString& path) {
+        return path.isEmpty() ? std::string() : QFileInfo(path).absoluteFilePath().toStdString();
+    };
+    mission.area.includePath = absolute(includePath);
+    mission.area.excludePath = absolute(excludePath);
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    auto raster = io::loadMissionRaster(mission, std::string());
+    QApplication::restoreOverrideCursor();
+    if (!raster.ok()) {
+        reportError(tr("Cannot use the area"), QString::fromStdString(raster.error()));
+        return false;
+    }
+    runner_->cancel();
+    mission.rasterPath = document_->mission().rasterPath;
+    const bool wholeMap = mission.area.empty();
+    const std::vector<std::string> warnings = raster.value().warnings;
+    document_->reset(std::make_shared<io::LoadedRaster>(std::move(raster.value())), std::move(mission),
+                     document_->missionPath());
+    settingsModified_ = true;
+    updateTitle();
+    updateActions();
+    showStatus(wholeMap ? tr("Planning on the whole map again.")
+                        : asSentence(warnings.empty() ? std::string() : warnings.back()),
+               15000);
+    return true;
+}
+
 void MainWindow::updateSizeWarning() {
     fitFactor_ = 0.0;
     const io::LoadedRaster* raster = document_->raster();
@@ -930,6 +984,9 @@ bool MainWindow::openMission(const QString& path) {
         return false;
     }
     mission.classes = std::move(classes.value());
+    // The window holds the area files by absolute path; saving writes them relative again.
+    mission.area.includePath = io::resolveMissionPath(mission.area.includePath, missionPath);
+    mission.area.excludePath = io::resolveMissionPath(mission.area.excludePath, missionPath);
     // The window keeps every start in the planning frame; saving writes them back in the CRS's units.
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         mission.robots[robot].start = starts.value()[robot];
@@ -970,6 +1027,12 @@ bool MainWindow::saveMission(const QString& path) {
     const QString rasterAbsolute =
         QFileInfo(QString::fromStdString(document_->raster()->path)).absoluteFilePath();
     mission.rasterPath = QFileInfo(path).absoluteDir().relativeFilePath(rasterAbsolute).toStdString();
+    for (std::string* areaPath : {&mission.area.includePath, &mission.area.excludePath})
+        if (!areaPath->empty())
+            *areaPath = QFileInfo(path)
+                            .absoluteDir()
+                            .relativeFilePath(QString::fromStdString(*areaPath))
+                            .toStdString();
     for (io::RobotSpec& robot : mission.robots)
         robot.start = document_->raster()->georeference.toCrsUnits(robot.start);
     const auto status = io::saveMission(mission, path.toStdString());

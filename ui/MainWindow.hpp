@@ -95,6 +95,9 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] MessageLog* messageLog() const { return messageLog_; }
     [[nodiscard]] ClassTableBanner* classTableBanner() const { return classTableBanner_; }
     [[nodiscard]] bool isMissionModified() const;
+    // Plans only inside the polygons of includePath and outside those of excludePath (vector files; empty
+    // for none): the raster is read again with the area, the robots and classes kept, the plan dropped.
+    bool setAreaFiles(const QString& includePath, const QString& excludePath);
     // Applies a class-table preset to the open raster as one undoable edit.
     bool applyPreset(const QString& preset);
 

@@ -500,6 +500,62 @@ class TestMainWindow : public QObject {
         setMemoryBudgetBytes(budget);
     }
 
+    // An area from a vector file limits the task area; the robots stay, the mission saves it relative to
+    // itself, and clearing it gives the whole map back.
+    void areaOfInterestLimitsThePlan() {
+        QTemporaryDir directory;
+        const QString area = directory.filePath("area.geojson");
+        QVERIFY(writeFile(area, R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":
+            "urn:ogc:def:crs:EPSG::26912"}},"features":[{"type":"Feature","properties":{},"geometry":{"type":
+            "Polygon","coordinates":[[[305000,4130000],[325000,4130000],[325000,4150000],[305000,4150000],
+            [305000,4130000]]]}}]})"));
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif")));
+        const auto insideCount = [&window] {
+            std::int64_t inside = 0;
+            for (const auto& [value, count] : window.document()->raster()->classPixelCounts)
+                inside += count;
+            return inside;
+        };
+        const std::int64_t whole = insideCount();
+        QVERIFY(window.robotTableModel()->addRobot({315000, 4140000}));
+        QVERIFY2(window.setAreaFiles(area, QString()), qPrintable(window.lastError()));
+        const std::int64_t limited = insideCount();
+        const ClassGrid& grid = *window.document()->grid();
+        const double limitedArea = static_cast<double>(limited) * grid.pixelWidth * grid.pixelHeight;
+        QVERIFY2(std::abs(limitedArea - 4e8) / 4e8 < 0.01, qPrintable(QString::number(limitedArea)));
+        QCOMPARE(window.document()->robots().size(), std::size_t{1});
+        QVERIFY(window.isMissionModified());
+
+        const QString saved = directory.filePath("mission.json");
+        QVERIFY(window.saveMission(saved));
+        QFile file(saved);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
+        QCOMPARE(json.value("area").toObject().value("include").toString(), QStringLiteral("area.geojson"));
+
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        for (int row = 0; row < window.classTableModel()->rowCount(); ++row)
+            QVERIFY(window.classTableModel()->setData(
+                window.classTableModel()->index(row, ui::ClassTableModel::FieldOfView),
+                QStringLiteral("200")));
+        QVERIFY(window.startPlanning());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
+        for (const Waypoint& waypoint : window.document()->plan()->paths[0].waypoints) {
+            QVERIFY(waypoint.x > 305000 - 400 && waypoint.x < 325000 + 400);
+            QVERIFY(waypoint.y > 4130000 - 400 && waypoint.y < 4150000 + 400);
+        }
+
+        QVERIFY(window.setAreaFiles({}, {}));
+        QCOMPARE(insideCount(), whole);
+        QVERIFY(!window.setAreaFiles(directory.filePath("absent.gpkg"), {}));
+        QVERIFY(window.lastError().contains(QStringLiteral("absent.gpkg")));
+        QCOMPARE(insideCount(), whole); // a refused area leaves the map as it was
+    }
+
     // A class table loaded from a CSV is neither a preset nor the legend: the preset box says so.
     void presetBoxNamesALoadedTable() {
         QTemporaryDir directory;
