@@ -16,14 +16,6 @@ namespace mcpp::render {
 
 namespace {
 
-QSize fittedSize(const ClassGrid& grid, QSize maxSize) {
-    const double width = std::max(grid.width(), 1e-9);
-    const double height = std::max(grid.height(), 1e-9);
-    const double scale = std::min(maxSize.width() / width, maxSize.height() / height);
-    return {std::max(1, static_cast<int>(std::lround(width * scale))),
-            std::max(1, static_cast<int>(std::lround(height * scale)))};
-}
-
 void setError(QString* error, const QString& message) {
     if (error != nullptr)
         *error = message;
@@ -50,7 +42,7 @@ QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const P
                        const MapLayers& layers, const RegionOutlines* outlines) {
     if (grid.columns <= 0 || grid.rows <= 0 || maxSize.width() <= 0 || maxSize.height() <= 0)
         return {};
-    const QSize size = fittedSize(grid, maxSize);
+    const QSize size = PlanSheet::fittedMapSize(grid, maxSize);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::white);
 

@@ -12,14 +12,6 @@ namespace mcpp::render {
 
 namespace {
 
-QSize fittedSize(const ClassGrid& grid, QSize maxSize) {
-    const double width = std::max(grid.width(), 1e-9);
-    const double height = std::max(grid.height(), 1e-9);
-    const double scale = std::min(maxSize.width() / width, maxSize.height() / height);
-    return {std::max(1, static_cast<int>(std::lround(width * scale))),
-            std::max(1, static_cast<int>(std::lround(height * scale)))};
-}
-
 QString titleOf(const Plan& plan) {
     const std::size_t robots = plan.paths.size();
     return QStringLiteral("Coverage plan: %1, %2 %3, makespan %4 (%5 × the lower bound)")
@@ -32,12 +24,20 @@ QString titleOf(const Plan& plan) {
 
 } // namespace
 
+QSize PlanSheet::fittedMapSize(const ClassGrid& grid, QSize maxSize) {
+    const double width = std::max(grid.width(), 1e-9);
+    const double height = std::max(grid.height(), 1e-9);
+    const double scale = std::min(maxSize.width() / width, maxSize.height() / height);
+    return {std::max(1, static_cast<int>(std::lround(width * scale))),
+            std::max(1, static_cast<int>(std::lround(height * scale)))};
+}
+
 PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan,
                      const RegionOutlines* outlines, const std::vector<std::string>& robotNames,
                      QSize maxMapSize)
     : grid_(grid), classes_(classes), plan_(plan), outlines_(outlines),
       sections_(planLegend(classes, &plan, robotNames)), title_(titleOf(plan)) {
-    const QSize mapSize = fittedSize(grid, maxMapSize);
+    const QSize mapSize = fittedMapSize(grid, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
     const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);
     font_.setPixelSize(textPixels);

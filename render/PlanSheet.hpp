@@ -20,6 +20,8 @@ class PlanSheet {
   public:
     PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan,
               const RegionOutlines* outlines, const std::vector<std::string>& robotNames, QSize maxMapSize);
+    // The map's size fitted into maxSize, keeping its aspect.
+    [[nodiscard]] static QSize fittedMapSize(const ClassGrid& grid, QSize maxSize);
     [[nodiscard]] QSize size() const { return size_; }
     [[nodiscard]] QRect mapArea() const { return map_; }
     [[nodiscard]] QRectF legendArea() const { return legend_; }
