@@ -126,9 +126,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     if (plan == nullptr) {
         for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, warnings_})
             label->setText(QStringLiteral("–"));
-        chartView_->chart()->removeAllSeries();
-        for (auto* axis : chartView_->chart()->axes())
-            chartView_->chart()->removeAxis(axis);
+        clearChart();
         setStale(false);
         return;
     }
@@ -165,13 +163,18 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     showChart(*plan, names);
 }
 
-void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
+void ResultsPanel::clearChart() {
     QChart* chart = chartView_->chart();
     chart->removeAllSeries();
     for (auto* axis : chart->axes()) {
         chart->removeAxis(axis); // the chart gives up the axis: it is ours to delete
         delete axis;
     }
+}
+
+void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
+    clearChart();
+    QChart* chart = chartView_->chart();
     const auto& robots = plan.metrics.robots;
     if (robots.empty())
         return;

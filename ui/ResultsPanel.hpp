@@ -32,6 +32,7 @@ class ResultsPanel : public QWidget {
     [[nodiscard]] static QString formatDuration(double seconds);
 
   private:
+    void clearChart();
     void showChart(const Plan& plan, const QStringList& names);
 
     QLabel* staleLabel_;
