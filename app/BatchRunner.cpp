@@ -138,7 +138,7 @@ void BatchRunner::assembleMission() {
     }
     for (std::size_t i = 0; i < options_.starts.size(); ++i) {
         mission_.robots.push_back(
-            io::RobotSpec{"robot " + std::to_string(i), options_.starts[i], options_.startCrs});
+            io::RobotSpec{"Robot " + std::to_string(i + 1), options_.starts[i], options_.startCrs});
     }
 }
 
@@ -244,8 +244,10 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         if (error.kind() == PlanningError::Kind::Cancelled)
             internalError(std::string("planning cancelled: ") + error.what());
         if (error.robot() >= 0) {
+            // Robots are numbered from 1, as the --start flags are; a mission's array counts from 0.
+            const bool namesRobot = error.detail().find("robot ") != std::string::npos;
             const std::string numbering =
-                options_.missionFromFlags() ? " (robots are numbered from 0 in --start order)" : "";
+                namesRobot && !options_.missionFromFlags() ? " (robot n is robots[n-1] of the mission)" : "";
             badInput(fieldName(io::MissionField::start(error.robot())) + ": " + error.detail() + numbering);
         }
         if (!error.parameter().empty())

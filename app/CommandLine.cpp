@@ -373,7 +373,7 @@ std::string CommandLine::usage() {
            "  --start X,Y              a robot's start; give it once per robot. Coordinates are in the\n"
            "                           raster's CRS (longitude,latitude for a geographic raster) unless\n"
            "                           --start-crs says otherwise. Errors number the --start flags from 1\n"
-           "                           in the order given; robots in the outputs count from 0\n"
+           "                           in the order given, as the outputs number the robots\n"
            "  --start-crs EPSG:N       CRS of the --start coordinates, e.g. EPSG:4326 for "
            "longitude,latitude\n"
            "  --band N                 raster band holding the classes (default 1)\n"
@@ -410,9 +410,9 @@ std::string CommandLine::usage() {
            "\n"
            "Outputs in DIR: plan.geojson, report.json, report.csv, plan.gpkg, regions.tif (the robot of "
            "each\n"
-           "sub-cell as a GeoTIFF), plan.png and per robot i\n"
-           "(numbered from 0, as in the \"robot\" fields of plan.geojson and report.json) robot_<i>.plan\n"
-           "(QGroundControl), robot_<i>.waypoints (QGC WPL 110) and robot_<i>.csv.\n"
+           "sub-cell as a GeoTIFF), plan.png and per robot n\n"
+           "(numbered from 1, as on the map and in the \"robot\" fields of plan.geojson and report.json)\n"
+           "robot_<n>.plan (QGroundControl), robot_<n>.waypoints (QGC WPL 110) and robot_<n>.csv.\n"
            "\n"
            "Planners (mcpp --help-planner NAME lists one's parameters for --param):\n";
     std::size_t plannerWidth = 0;

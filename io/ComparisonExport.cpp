@@ -1,5 +1,6 @@
 #include "io/ComparisonExport.hpp"
 
+#include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -102,7 +103,7 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         JsonValue& robots = item.add("robots", JsonValue::array());
         for (const RobotMetrics& robot : metrics.robots) {
             JsonValue& entry = robots.push(JsonValue::object());
-            entry.add("robot", robot.robot);
+            entry.add("robot", robotNumber(robot.robot));
             entry.add("length_m", robot.lengthMetres);
             entry.add("time_s", robot.timeSeconds);
             entry.add("turns", robot.turns);

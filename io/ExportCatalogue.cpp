@@ -96,7 +96,7 @@ const ExportFormat* findExportFormat(const std::string& key) {
 }
 
 std::string robotFileName(int robot, const ExportFormat& format) {
-    return "robot_" + std::to_string(robot) + "." + format.extension;
+    return "robot_" + std::to_string(robotNumber(robot)) + "." + format.extension;
 }
 
 } // namespace mcpp::io

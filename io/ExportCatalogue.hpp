@@ -32,8 +32,8 @@ struct ExportFormat {
 [[nodiscard]] const std::vector<ExportFormat>& exportFormats();
 // The format with this key, or nullptr.
 [[nodiscard]] const ExportFormat* findExportFormat(const std::string& key);
-// Batch mode's name for robot i's file of a per-robot format: robot_<i>.<extension>, i counted from 0 as in
-// the "robot" fields of plan.geojson and report.json.
+// Batch mode's name for a robot's file of a per-robot format: robot_<n>.<extension>, n its number from 1
+// as in the "robot" fields of plan.geojson and report.json.
 [[nodiscard]] std::string robotFileName(int robot, const ExportFormat& format);
 
 } // namespace mcpp::io

@@ -7,4 +7,11 @@ const RegionOutlines& ExportContext::outlines() const {
     return outlineCache->outlines;
 }
 
+std::string ExportContext::robotName(int robot) const {
+    const auto index = static_cast<std::size_t>(robot);
+    if (robot >= 0 && index < robotNames.size() && !robotNames[index].empty())
+        return robotNames[index];
+    return "Robot " + std::to_string(robotNumber(robot));
+}
+
 } // namespace mcpp::io

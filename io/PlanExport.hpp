@@ -36,10 +36,12 @@ struct ExportContext {
     // Set from another thread to stop a writer at its next feature, row or file; it then fails with
     // "cancelled" and leaves no file behind.
     const std::atomic<bool>* cancelRequested = nullptr;
-    // Each robot's name, by robot index, for the exports that show names (pictures, ...).
+    // Each robot's name, by robot index, for the exports that show names.
     std::vector<std::string> robotNames = {};
 
     [[nodiscard]] bool cancelled() const { return cancelRequested != nullptr && cancelRequested->load(); }
+    // The robot's name from robotNames, or "Robot <number>" when it has none.
+    [[nodiscard]] std::string robotName(int robot) const;
     // The plan's region outlines, traced on first use and shared by every writer of this context (and its
     // copies), whichever thread asks first.
     [[nodiscard]] const RegionOutlines& outlines() const;
@@ -51,6 +53,11 @@ struct ExportContext {
     std::shared_ptr<OutlineCache> outlineCache = std::make_shared<OutlineCache>(); // for outlines() only
 };
 
+// Robots are numbered from 1 in every file, as on the map and in the legend; plans index them from 0.
+[[nodiscard]] constexpr int robotNumber(int robot) {
+    return robot + 1;
+}
+
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.
 [[nodiscard]] Status writePlanGeoJson(const ExportContext& context, const std::string& path);
 // GeoPackage in the raster's CRS: layers regions, paths, starts, unreachable, and cells when
@@ -59,8 +66,8 @@ struct ExportContext {
 [[nodiscard]] Status writePlanKml(const ExportContext& context, const std::string& path);
 [[nodiscard]] Status writePlanGpx(const ExportContext& context, const std::string& path);
 // regions.tif: the robot covering each sub-cell of the planning grid, as a tiled, compressed GeoTIFF in the
-// raster's CRS with a colour table in the robots' colours. Value = robot index from 0; 254 for passable land
-// no robot reaches; nodata 255 elsewhere (UInt16 with 65534 and 65535 from 254 robots on).
+// raster's CRS with a colour table in the robots' colours. Value = robot number from 1; 255 for passable land
+// no robot reaches; nodata 0 elsewhere (UInt16 with 65535 from 255 robots on).
 [[nodiscard]] Status writeRegionRaster(const ExportContext& context, const std::string& path);
 
 // The waypoints a robot's waypoint files get: all of them, or, with mergeCollinear, without the points that

@@ -131,13 +131,24 @@ Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::st
     return features;
 }
 
+// Every layer names a robot by its number from 1 and its name.
+void setRobotFields(OGRFeature& feature, const ExportContext& context, int robot) {
+    feature.SetField("robot", robotNumber(robot));
+    feature.SetField("robot_name", context.robotName(robot).c_str());
+}
+
 // The layers GeoPackage and KML share. KML readers show a feature's "name", so `named` adds one.
-Status writeRegionLayer(VectorFileWriter& writer, std::vector<internal::RegionFeature>& regions,
-                        const OGRSpatialReference* crs, bool named) {
+Status writeRegionLayer(VectorFileWriter& writer, const ExportContext& context,
+                        std::vector<internal::RegionFeature>& regions, const OGRSpatialReference* crs,
+                        bool named) {
     auto layer = writer.layer("regions", crs, wkbMultiPolygon);
     if (!layer)
         return Status::failure(layer.error());
-    Fields fields{{{"robot", OFTInteger}, {"cost_s", OFTReal}, {"area_m2", OFTReal}, {"cells", OFTInteger}}};
+    Fields fields{{{"robot", OFTInteger},
+                   {"robot_name", OFTString},
+                   {"cost_s", OFTReal},
+                   {"area_m2", OFTReal},
+                   {"cells", OFTInteger}}};
     if (named)
         fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
     if (Status status = createFields(writer, layer.value(), fields); !status)
@@ -145,8 +156,8 @@ Status writeRegionLayer(VectorFileWriter& writer, std::vector<internal::RegionFe
     for (auto& region : regions) {
         OGRFeature feature(layer.value()->GetLayerDefn());
         if (named)
-            feature.SetField("name", ("robot " + std::to_string(region.robot) + " region").c_str());
-        feature.SetField("robot", region.robot);
+            feature.SetField("name", (context.robotName(region.robot) + " region").c_str());
+        setRobotFields(feature, context, region.robot);
         feature.SetField("cost_s", region.costSeconds);
         feature.SetField("area_m2", region.areaSquareMetres);
         feature.SetField("cells", region.cells);
@@ -157,12 +168,16 @@ Status writeRegionLayer(VectorFileWriter& writer, std::vector<internal::RegionFe
     return {};
 }
 
-Status writePathLayer(VectorFileWriter& writer, std::vector<internal::PathFeature>& paths,
-                      const OGRSpatialReference* crs, bool named) {
+Status writePathLayer(VectorFileWriter& writer, const ExportContext& context,
+                      std::vector<internal::PathFeature>& paths, const OGRSpatialReference* crs, bool named) {
     auto layer = writer.layer("paths", crs, wkbLineString);
     if (!layer)
         return Status::failure(layer.error());
-    Fields fields{{{"robot", OFTInteger}, {"length_m", OFTReal}, {"time_s", OFTReal}, {"turns", OFTInteger}}};
+    Fields fields{{{"robot", OFTInteger},
+                   {"robot_name", OFTString},
+                   {"length_m", OFTReal},
+                   {"time_s", OFTReal},
+                   {"turns", OFTInteger}}};
     if (named)
         fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
     if (Status status = createFields(writer, layer.value(), fields); !status)
@@ -170,8 +185,8 @@ Status writePathLayer(VectorFileWriter& writer, std::vector<internal::PathFeatur
     for (auto& line : paths) {
         OGRFeature feature(layer.value()->GetLayerDefn());
         if (named)
-            feature.SetField("name", ("robot " + std::to_string(line.robot) + " path").c_str());
-        feature.SetField("robot", line.robot);
+            feature.SetField("name", (context.robotName(line.robot) + " path").c_str());
+        setRobotFields(feature, context, line.robot);
         feature.SetField("length_m", line.lengthMetres);
         feature.SetField("time_s", line.timeSeconds);
         feature.SetField("turns", line.turns);
@@ -182,12 +197,13 @@ Status writePathLayer(VectorFileWriter& writer, std::vector<internal::PathFeatur
     return {};
 }
 
-Status writeStartLayer(VectorFileWriter& writer, std::vector<internal::StartFeature>& starts,
-                       const OGRSpatialReference* crs, bool named) {
+Status writeStartLayer(VectorFileWriter& writer, const ExportContext& context,
+                       std::vector<internal::StartFeature>& starts, const OGRSpatialReference* crs,
+                       bool named) {
     auto layer = writer.layer("starts", crs, wkbPoint);
     if (!layer)
         return Status::failure(layer.error());
-    Fields fields{{{"robot", OFTInteger}}};
+    Fields fields{{{"robot", OFTInteger}, {"robot_name", OFTString}}};
     if (named)
         fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
     if (Status status = createFields(writer, layer.value(), fields); !status)
@@ -195,8 +211,8 @@ Status writeStartLayer(VectorFileWriter& writer, std::vector<internal::StartFeat
     for (auto& start : starts) {
         OGRFeature feature(layer.value()->GetLayerDefn());
         if (named)
-            feature.SetField("name", ("robot " + std::to_string(start.robot) + " start").c_str());
-        feature.SetField("robot", start.robot);
+            feature.SetField("name", (context.robotName(start.robot) + " start").c_str());
+        setRobotFields(feature, context, start.robot);
         feature.SetGeometryDirectly(start.geometry.release());
         if (Status status = writer.add(layer.value(), feature); !status)
             return status;
@@ -255,7 +271,8 @@ Status writeCellLayer(VectorFileWriter& writer, const ExportContext& context,
         feature.SetField("fov", cell.fieldOfView());
         feature.SetField("speed", cell.speedMetresPerSecond);
         feature.SetField("free_sub_cells", cell.freeSubCellCount());
-        feature.SetField("robot", index < owner.size() ? owner[index] : -1);
+        if (index < owner.size() && owner[index] >= 0)
+            feature.SetField("robot", robotNumber(owner[index]));
         feature.SetGeometryDirectly(internal::cellSquare(graph, cell, metresPerUnit).release());
         if (Status status = writer.add(cells.value(), feature); !status)
             return status;
@@ -283,6 +300,7 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
     OGRLayer* plan = layer.value();
     const Fields fields{{{"kind", OFTString},
                          {"robot", OFTInteger},
+                         {"robot_name", OFTString},
                          {"cost_s", OFTReal},
                          {"area_m2", OFTReal},
                          {"cells", OFTInteger},
@@ -295,7 +313,7 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
     for (auto& region : features.value().regions) {
         OGRFeature feature(plan->GetLayerDefn());
         feature.SetField("kind", "region");
-        feature.SetField("robot", region.robot);
+        setRobotFields(feature, context, region.robot);
         feature.SetField("cost_s", region.costSeconds);
         feature.SetField("area_m2", region.areaSquareMetres);
         feature.SetField("cells", region.cells);
@@ -306,7 +324,7 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
     for (auto& line : features.value().paths) {
         OGRFeature feature(plan->GetLayerDefn());
         feature.SetField("kind", "path");
-        feature.SetField("robot", line.robot);
+        setRobotFields(feature, context, line.robot);
         feature.SetField("length_m", line.lengthMetres);
         feature.SetField("time_s", line.timeSeconds);
         feature.SetField("turns", line.turns);
@@ -317,7 +335,7 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
     for (auto& start : features.value().starts) {
         OGRFeature feature(plan->GetLayerDefn());
         feature.SetField("kind", "start");
-        feature.SetField("robot", start.robot);
+        setRobotFields(feature, context, start.robot);
         feature.SetGeometryDirectly(start.geometry.release());
         if (Status status = writer.add(plan, feature); !status)
             return status;
@@ -348,11 +366,11 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
     writer.dataset().StartTransaction();
 
     PlanFeatures& planFeatures = features.value();
-    if (Status status = writeRegionLayer(writer, planFeatures.regions, crs.get(), false); !status)
+    if (Status status = writeRegionLayer(writer, context, planFeatures.regions, crs.get(), false); !status)
         return status;
-    if (Status status = writePathLayer(writer, planFeatures.paths, crs.get(), false); !status)
+    if (Status status = writePathLayer(writer, context, planFeatures.paths, crs.get(), false); !status)
         return status;
-    if (Status status = writeStartLayer(writer, planFeatures.starts, crs.get(), false); !status)
+    if (Status status = writeStartLayer(writer, context, planFeatures.starts, crs.get(), false); !status)
         return status;
 
     if (context.settings.cellPolygons) {
@@ -379,11 +397,11 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
     const auto wgs84 = internal::wgs84SpatialReference();
 
     PlanFeatures& planFeatures = features.value();
-    if (Status status = writeRegionLayer(writer, planFeatures.regions, wgs84.get(), true); !status)
+    if (Status status = writeRegionLayer(writer, context, planFeatures.regions, wgs84.get(), true); !status)
         return status;
-    if (Status status = writePathLayer(writer, planFeatures.paths, wgs84.get(), true); !status)
+    if (Status status = writePathLayer(writer, context, planFeatures.paths, wgs84.get(), true); !status)
         return status;
-    if (Status status = writeStartLayer(writer, planFeatures.starts, wgs84.get(), true); !status)
+    if (Status status = writeStartLayer(writer, context, planFeatures.starts, wgs84.get(), true); !status)
         return status;
     if (!planFeatures.unreachable.empty()) {
         if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, wgs84.get(), true);
@@ -417,7 +435,7 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
                 exportedWaypoints(coverage, context.settings.mergeCollinear);
             if (waypoints.empty())
                 continue;
-            const std::string name = "robot " + std::to_string(coverage.robot);
+            const std::string name = context.robotName(coverage.robot);
             if (pass == 0) {
                 OGRPoint home(waypoints.front().x / metresPerUnit, waypoints.front().y / metresPerUnit);
                 if (home.transform(transformation.value().get()) != OGRERR_NONE) {
@@ -440,7 +458,7 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
             }
             OGRFeature routeFeature(routes.value()->GetLayerDefn());
             routeFeature.SetField("name", name.c_str());
-            routeFeature.SetField("number", coverage.robot);
+            routeFeature.SetField("number", robotNumber(coverage.robot));
             routeFeature.SetGeometry(&route);
             if (Status status = writer.add(routes.value(), routeFeature); !status)
                 return status;

@@ -14,16 +14,17 @@ namespace {
 
 using internal::QuietGdalErrors;
 
+// Robots by their number from 1, as in every other file; 0 is nodata so that the number is the value.
 struct Encoding {
     GDALDataType type = GDT_Byte;
-    unsigned nodata = 255;
-    unsigned unreachable = 254;
+    unsigned nodata = 0;
+    unsigned unreachable = 255;
 };
 
 Encoding encodingFor(int robots) {
-    if (robots < 254)
+    if (robots < 255)
         return {};
-    return {GDT_UInt16, 65535, 65534};
+    return {GDT_UInt16, 0, 65535};
 }
 
 GDALColorTable colourTable(int robots, const Encoding& encoding) {
@@ -31,7 +32,7 @@ GDALColorTable colourTable(int robots, const Encoding& encoding) {
     for (int robot = 0; robot < robots; ++robot) {
         const RgbColour colour = robotColour(robot);
         const GDALColorEntry entry{colour.red, colour.green, colour.blue, 255};
-        table.SetColorEntry(robot, &entry);
+        table.SetColorEntry(robotNumber(robot), &entry);
     }
     const GDALColorEntry grey{160, 160, 160, 255};
     table.SetColorEntry(static_cast<int>(encoding.unreachable), &grey);
@@ -50,7 +51,7 @@ Status writeRows(GDALRasterBand& band, const LabelGrid& labels, const Encoding& 
             return Status::failure(path + ": cancelled");
         for (int c = 0; c < labels.columns; ++c) {
             const std::int32_t label = labels.labels[labels.index(c, r)];
-            const unsigned value = label >= 0                  ? static_cast<unsigned>(label)
+            const unsigned value = label >= 0                  ? static_cast<unsigned>(robotNumber(label))
                                    : label == unreachableLabel ? encoding.unreachable
                                                                : encoding.nodata;
             row[static_cast<std::size_t>(c)] = static_cast<Value>(value);
@@ -80,7 +81,7 @@ Status describe(GDALDataset& dataset, const ExportContext& context, const LabelG
         return Status::failure(path + ": cannot set the CRS" + QuietGdalErrors::detail());
     }
     dataset.SetMetadataItem("MCPP_VALUES",
-                            "robot index from 0; 254 (65534 as UInt16) passable but unreachable");
+                            "robot number from 1; 255 (65535 as UInt16) passable but unreachable; 0 nodata");
     dataset.SetMetadataItem("MCPP_PLANNER", context.plan.planner.c_str());
     return {};
 }

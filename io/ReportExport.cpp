@@ -18,7 +18,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     JsonValue& robots = root.add("robots", JsonValue::array());
     for (const RobotMetrics& robot : metrics.robots) {
         JsonValue& item = robots.push(JsonValue::object());
-        item.add("robot", robot.robot);
+        item.add("robot", robotNumber(robot.robot));
+        item.add("name", context.robotName(robot.robot));
         item.add("cells", robot.cells);
         item.add("area_m2", robot.areaSquareMetres);
         item.add("length_m", robot.lengthMetres);
@@ -56,10 +57,11 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
 }
 
 Status writeReportCsv(const ExportContext& context, const std::string& path) {
-    std::string text = "robot,cells,area_m2,length_m,time_s,turns,cost_s\n";
+    std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
-        text += std::to_string(robot.robot) + "," + std::to_string(robot.cells) + "," +
-                internal::formatShortest(robot.areaSquareMetres) + "," +
+        text += std::to_string(robotNumber(robot.robot)) + "," +
+                internal::quoteCsvField(context.robotName(robot.robot)) + "," + std::to_string(robot.cells) +
+                "," + internal::formatShortest(robot.areaSquareMetres) + "," +
                 internal::formatShortest(robot.lengthMetres) + "," +
                 internal::formatShortest(robot.timeSeconds) + "," + std::to_string(robot.turns) + "," +
                 internal::formatShortest(robot.costSeconds) + "\n";

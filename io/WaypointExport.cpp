@@ -38,9 +38,11 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
     using Points = std::vector<GeoWaypoint>;
     const CoveragePath* coverage = pathOfRobot(context.plan, robot);
     if (coverage == nullptr)
-        return Result<Points>::failure(path + ": the plan has no path for robot " + std::to_string(robot));
+        return Result<Points>::failure(path + ": the plan has no path for robot " +
+                                       std::to_string(robotNumber(robot)));
     if (coverage->waypoints.empty())
-        return Result<Points>::failure(path + ": robot " + std::to_string(robot) + " has no waypoints");
+        return Result<Points>::failure(path + ": robot " + std::to_string(robotNumber(robot)) +
+                                       " has no waypoints");
     if (needCrs && !context.georeference.hasCrs()) {
         return Result<Points>::failure(path +
                                        ": the map has no CRS, so waypoints have no latitude and longitude");

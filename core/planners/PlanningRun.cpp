@@ -72,7 +72,7 @@ std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
         } else if (ownerOfCell[static_cast<std::size_t>(cell)] >= 0) {
             problem = StartPointProblem{Kind::StartsShareCell,
                                         describePoint(start) + " is in the same cell as robot " +
-                                            std::to_string(ownerOfCell[static_cast<std::size_t>(cell)])};
+                                            std::to_string(ownerOfCell[static_cast<std::size_t>(cell)] + 1)};
         }
         if (problem) {
             if (!snap)
@@ -84,7 +84,7 @@ std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
             const Cell& target = graph.cell(cell);
             start = {target.centreX(), target.centreY()};
             addIssue(IssueSeverity::Warning, "start-moved",
-                     "robot " + std::to_string(robot) + " start " + problem->detail + "; moved to " +
+                     "robot " + std::to_string(robot + 1) + " start " + problem->detail + "; moved to " +
                          describePoint(start));
         }
         ownerOfCell[static_cast<std::size_t>(cell)] = robotIndex;

@@ -321,13 +321,13 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
     QStringList expected{"plan.geojson", "report.json", "plan.png", "regions.tif", "plan.gpkg"};
     for (int robot = 0; robot < robots; ++robot) {
         for (const char* extension : {".plan", ".waypoints", ".csv"}) {
-            expected << QStringLiteral("robot_%1%2").arg(robot).arg(QLatin1String(extension));
+            expected << QStringLiteral("robot_%1%2").arg(robot + 1).arg(QLatin1String(extension));
         }
     }
     for (const auto& name : expected) {
         QVERIFY2(QFileInfo(out.filePath(name)).size() > 0, qPrintable(name));
     }
-    QVERIFY(!QFileInfo::exists(out.filePath(QStringLiteral("robot_%1.plan").arg(robots))));
+    QVERIFY(!QFileInfo::exists(out.filePath(QStringLiteral("robot_%1.plan").arg(robots + 1))));
 
     // plan.geojson: a WGS84 FeatureCollection with one region, path and start per robot.
     const auto geoJson = readJsonObject(out.filePath("plan.geojson"));
@@ -363,8 +363,9 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
         }
         robotsByKind[kind].insert(properties.value("robot").toInt(-1));
     }
+    // Robots are numbered from 1 in every file, as on the map.
     QSet<int> everyRobot;
-    for (int robot = 0; robot < robots; ++robot)
+    for (int robot = 1; robot <= robots; ++robot)
         everyRobot.insert(robot);
     for (const char* kind : {"region", "path", "start"})
         QCOMPARE(robotsByKind.value(kind), everyRobot);
@@ -376,7 +377,8 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
     double longest = 0.0;
     for (int robot = 0; robot < robots; ++robot) {
         const auto item = robotReports.at(robot).toObject();
-        QCOMPARE(item.value("robot").toInt(-1), robot);
+        QCOMPARE(item.value("robot").toInt(-1), robot + 1);
+        QVERIFY(!item.value("name").toString().isEmpty());
         QVERIFY(item.value("cells").toInt() > 0);
         QVERIFY(item.value("length_m").toDouble() > 0.0);
         longest = std::max(longest, item.value("time_s").toDouble());
@@ -400,12 +402,12 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
 
     // Waypoint files have the structure their readers expect.
     for (int robot = 0; robot < robots; ++robot) {
-        const auto plan = readJsonObject(out.filePath(QStringLiteral("robot_%1.plan").arg(robot)));
+        const auto plan = readJsonObject(out.filePath(QStringLiteral("robot_%1.plan").arg(robot + 1)));
         QCOMPARE(plan.value("fileType").toString(), QStringLiteral("Plan"));
-        QFile waypoints(out.filePath(QStringLiteral("robot_%1.waypoints").arg(robot)));
+        QFile waypoints(out.filePath(QStringLiteral("robot_%1.waypoints").arg(robot + 1)));
         QVERIFY(waypoints.open(QIODevice::ReadOnly));
         QCOMPARE(waypoints.readLine().trimmed(), QByteArray("QGC WPL 110"));
-        QFile csv(out.filePath(QStringLiteral("robot_%1.csv").arg(robot)));
+        QFile csv(out.filePath(QStringLiteral("robot_%1.csv").arg(robot + 1)));
         QVERIFY(csv.open(QIODevice::ReadOnly));
         QVERIFY(csv.readAll().count('\n') >= 3); // header and at least two waypoints
     }
@@ -465,7 +467,7 @@ void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
     const QString out = scratch_.filePath("rerun");
     auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", out, "--quiet"});
     QCOMPARE(run.exitCode, 0);
-    QVERIFY(QFileInfo::exists(out + "/robot_2.plan"));
+    QVERIFY(QFileInfo::exists(out + "/robot_3.plan"));
     auto arguments = syntheticFlags();
     arguments << "--start"
               << "431040,5301040"
@@ -474,8 +476,8 @@ void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
               << "--out" << out;
     run = runMcpp(arguments);
     checkOutputs(out, 2, run);
-    QVERIFY(!QFileInfo::exists(out + "/robot_2.waypoints"));
-    QVERIFY(!QFileInfo::exists(out + "/robot_2.csv"));
+    QVERIFY(!QFileInfo::exists(out + "/robot_3.waypoints"));
+    QVERIFY(!QFileInfo::exists(out + "/robot_3.csv"));
 }
 
 void TestBatchEndToEnd::missingAsObstacleTurnsTheErrorIntoAWarning() {
@@ -630,7 +632,7 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
         << QStringList{"--start-crs"};
     QTest::newRow("two robots in one cell")
         << (flags + QStringList{"--start", "431050,5301050", "--start", "431055,5301055", "--out", out})
-        << QStringList{"--start 2", "same cell as robot 0", "numbered from 0"};
+        << QStringList{"--start 2", "same cell as robot 1"};
     QTest::newRow("--out is a file") << QStringList{"--batch", mission, "--out",
                                                     samplePath("synthetic/classes.csv")}
                                      << QStringList{"--out", "classes.csv", "not a folder"};

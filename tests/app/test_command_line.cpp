@@ -303,9 +303,9 @@ void TestCommandLine::usageDocumentsEveryFlag() {
                              "--version",
                              "plan.geojson",
                              "report.json",
-                             "robot_<i>.plan",
-                             "robot_<i>.waypoints",
-                             "robot_<i>.csv",
+                             "robot_<n>.plan",
+                             "robot_<n>.waypoints",
+                             "robot_<n>.csv",
                              "plan.png",
                              "mcpp-mlct"}) {
         QVERIFY2(usage.contains(QLatin1String(flag)), flag);

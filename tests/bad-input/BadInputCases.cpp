@@ -160,7 +160,7 @@ std::vector<BadInputCase> makeCases() {
         {"two starts in one cell",
          onRaster("good.tif", "good.csv", {"--start", kStart, "--start", "500056,5000346"}),
          2,
-         "same cell as robot 0",
+         "same cell as robot 1",
          Gui::None,
          {}},
         {"start that is NaN",

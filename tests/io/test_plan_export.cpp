@@ -90,9 +90,13 @@ class PlanExportTest : public QObject {
     ClassTable classes_;
     QTemporaryDir folder_;
 
+    // The first robot has a name, the second none (it is then "Robot 2").
     ExportContext context(ExportSettings settings = {}) const {
-        return ExportContext{plan_, reference_, classes_, settings};
+        ExportContext exportContext{plan_, reference_, classes_, settings};
+        exportContext.robotNames = {"Scout", ""};
+        return exportContext;
     }
+    static std::string expectedName(int robot) { return robot == 0 ? "Scout" : "Robot 2"; }
     std::string file(const char* name) const { return folder_.filePath(name).toStdString(); }
 
   private slots:
@@ -110,7 +114,10 @@ class PlanExportTest : public QObject {
             ++kinds[kind];
             const OGRGeometry* geometry = feature->GetGeometryRef();
             QVERIFY(geometry != nullptr && geometry->IsValid());
-            const int robot = feature->GetFieldAsInteger("robot");
+            // Files number robots from 1; the plan indexes them from 0.
+            const int robot = feature->GetFieldAsInteger("robot") - 1;
+            if (kind != "unreachable")
+                QCOMPARE(std::string(feature->GetFieldAsString("robot_name")), expectedName(robot));
             if (kind == "region") {
                 const auto& metrics = plan_.metrics.robots[static_cast<std::size_t>(robot)];
                 QCOMPARE(feature->GetFieldAsDouble("area_m2"), metrics.areaSquareMetres);
@@ -171,7 +178,7 @@ class PlanExportTest : public QObject {
         Dataset dataset = openVector(path);
         for (auto& feature : *dataset->GetLayer(0)) {
             if (std::string(feature->GetFieldAsString("kind")) != "region" ||
-                feature->GetFieldAsInteger("robot") != 0)
+                feature->GetFieldAsInteger("robot") != 1)
                 continue;
             // NW + NE dissolved into one 20 x 10 m rectangle: one polygon, no hole, no inner edge.
             const OGRGeometry* geometry = feature->GetGeometryRef();
@@ -202,7 +209,7 @@ class PlanExportTest : public QObject {
         OGRLayer* paths = dataset->GetLayerByName("paths");
         for (auto& feature : *paths) {
             const CoveragePath& coverage =
-                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot"))];
+                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)];
             const OGRLineString* line = feature->GetGeometryRef()->toLineString();
             QCOMPARE(static_cast<std::size_t>(line->getNumPoints()), coverage.waypoints.size());
             for (int i = 0; i < line->getNumPoints(); ++i) {
@@ -217,8 +224,11 @@ class PlanExportTest : public QObject {
             QCOMPARE(feature->GetFieldAsInteger("class"), cell.classValue);
             QCOMPARE(feature->GetFieldAsDouble("fov"), cell.size / 2);
             QCOMPARE(feature->GetFieldAsDouble("speed"), cell.speedMetresPerSecond);
-            QCOMPARE(feature->GetFieldAsInteger("robot"),
-                     plan_.regions.robotOfCell[static_cast<std::size_t>(index)]);
+            const int owner = plan_.regions.robotOfCell[static_cast<std::size_t>(index)];
+            if (owner >= 0)
+                QCOMPARE(feature->GetFieldAsInteger("robot"), owner + 1);
+            else
+                QVERIFY(!feature->IsFieldSetAndNotNull(feature->GetFieldIndex("robot")));
             QCOMPARE(feature->GetGeometryRef()->toPolygon()->get_Area(), cell.size * cell.size);
         }
         // Writing again replaces the file; by default without cells and with turning points only.
@@ -227,7 +237,7 @@ class PlanExportTest : public QObject {
         QVERIFY(small->GetLayerByName("cells") == nullptr);
         for (auto& feature : *small->GetLayerByName("paths")) {
             const CoveragePath& coverage =
-                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot"))];
+                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)];
             const OGRLineString* line = feature->GetGeometryRef()->toLineString();
             QCOMPARE(static_cast<std::size_t>(line->getNumPoints()), turningPoints(coverage).size());
             QVERIFY(std::abs(line->get_Length() - coverage.lengthMetres) <= 1e-9 * coverage.lengthMetres);
@@ -294,7 +304,8 @@ class PlanExportTest : public QObject {
         QCOMPARE(routes->GetFeatureCount(), GIntBig{2});
         int robot = 0;
         for (auto& feature : *routes) {
-            QCOMPARE(std::string(feature->GetFieldAsString("name")), "robot " + std::to_string(robot));
+            QCOMPARE(std::string(feature->GetFieldAsString("name")), expectedName(robot));
+            QCOMPARE(feature->GetFieldAsInteger("number"), robot + 1);
             QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(),
                               plan_.paths[static_cast<std::size_t>(robot)].waypoints, reference_) < 1e-7);
             ++robot;
@@ -325,7 +336,9 @@ class PlanExportTest : public QObject {
         const QJsonObject second = robots[1].toObject();
         for (const char* key : {"robot", "cells", "area_m2", "length_m", "time_s", "turns"})
             QVERIFY2(second.contains(key), key);
-        QCOMPARE(second["robot"].toInt(), 1);
+        QCOMPARE(second["robot"].toInt(), 2);
+        QCOMPARE(second["name"].toString(), QString("Robot 2"));
+        QCOMPARE(robots[0].toObject()["name"].toString(), QString("Scout"));
         QCOMPARE(second["area_m2"].toDouble(), 400.0);
         QCOMPARE(second["time_s"].toDouble(), 33.33);
         const QJsonObject timings = report["timings_ms"].toObject();
@@ -342,9 +355,9 @@ class PlanExportTest : public QObject {
         std::ifstream input(csv);
         std::string header, line;
         std::getline(input, header);
-        QCOMPARE(header, std::string("robot,cells,area_m2,length_m,time_s,turns,cost_s"));
+        QCOMPARE(header, std::string("robot,name,cells,area_m2,length_m,time_s,turns,cost_s"));
         std::getline(input, line);
-        QCOMPARE(line, std::string("0,2,200,40,80,3,80"));
+        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80"));
     }
 
     void turningPointsDropOnlyCollinearPoints() {
@@ -387,7 +400,7 @@ class PlanExportTest : public QObject {
             if (std::string(feature->GetFieldAsString("kind")) != "path")
                 continue;
             const CoveragePath& coverage =
-                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot"))];
+                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)];
             QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(), coverage.waypoints, reference_) <
                     1e-7);
             ++paths;
@@ -415,17 +428,17 @@ class PlanExportTest : public QObject {
         QCOMPARE(std::string(dataset->GetSpatialRef()->GetAuthorityCode(nullptr)), std::string("26912"));
         GDALRasterBand* band = dataset->GetRasterBand(1);
         int hasNodata = 0;
-        QCOMPARE(band->GetNoDataValue(&hasNodata), 255.0);
+        QCOMPARE(band->GetNoDataValue(&hasNodata), 0.0);
         QVERIFY(hasNodata);
         QVERIFY(band->GetColorTable() != nullptr);
-        QCOMPARE(band->GetColorTable()->GetColorEntry(0)->c1, short{0xe6});
+        QCOMPARE(band->GetColorTable()->GetColorEntry(1)->c1, short{0xe6});
         std::vector<std::uint8_t> values(32);
         QCOMPARE(band->RasterIO(GF_Read, 0, 0, 8, 4, values.data(), 8, 4, GDT_Byte, 0, 0, nullptr), CE_None);
-        // NW, NE of robot 0; SW unreachable; SE blocked; the 20 m cell of robot 1.
-        const std::vector<std::uint8_t> expected{0,   0,   0,   0,   1, 1, 1, 1, //
-                                                 0,   0,   0,   0,   1, 1, 1, 1, //
-                                                 254, 254, 255, 255, 1, 1, 1, 1, //
-                                                 254, 254, 255, 255, 1, 1, 1, 1};
+        // NW, NE of robot 1; SW unreachable; SE blocked; the 20 m cell of robot 2.
+        const std::vector<std::uint8_t> expected{1,   1,   1, 1, 2, 2, 2, 2, //
+                                                 1,   1,   1, 1, 2, 2, 2, 2, //
+                                                 255, 255, 0, 0, 2, 2, 2, 2, //
+                                                 255, 255, 0, 0, 2, 2, 2, 2};
         QCOMPARE(values, expected);
 
         // Pixel for pixel: the centre of each pixel lies in the region polygon of the robot it names.

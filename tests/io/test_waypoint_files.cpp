@@ -219,7 +219,8 @@ class WaypointFilesTest : public QObject {
     void unknownRobotIsAnError() {
         Status status = writeQGroundControlPlan(context(), 5, file("robot5.plan"));
         QVERIFY(!status.ok());
-        QVERIFY(status.error().find("robot 5") != std::string::npos);
+        // Robot index 5 is the sixth robot: messages number robots from 1, as the files do.
+        QVERIFY(status.error().find("robot 6") != std::string::npos);
     }
 };
 
