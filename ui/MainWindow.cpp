@@ -6,6 +6,7 @@
 #include "io/ExportCatalogue.hpp"
 #include "io/MissionInputs.hpp"
 #include "io/PlanExport.hpp"
+#include "io/PlanFile.hpp"
 #include "render/PlanImageWriter.hpp"
 #include "ui/ApplicationResources.hpp"
 #include "ui/ClassBulkEditDialog.hpp"
@@ -58,6 +59,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
 namespace mcpp::ui {
@@ -678,7 +680,7 @@ void MainWindow::rebuildRecentMenu() {
 }
 
 bool MainWindow::isMissionModified() const {
-    return !undoStack_->isClean() || settingsModified_;
+    return !undoStack_->isClean() || settingsModified_ || planUnsaved_;
 }
 
 void MainWindow::updateTitle() {
@@ -933,6 +935,7 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     document_->reset(std::move(raster), std::move(mission), QString());
     undoStack_->clear();
     settingsModified_ = false;
+    planUnsaved_ = false;
     RecentFiles::add(path);
     rememberFolder(kRasterFolderKey, path);
     rebuildRecentMenu();
@@ -959,6 +962,7 @@ bool MainWindow::openMission(const QString& path) {
     }
     io::Mission mission = std::move(loaded.value());
     const std::string missionPath = path.toStdString();
+    const std::string savedInputs = io::planInputsFingerprint(mission, missionPath);
     const QString rasterPath = QString::fromStdString(io::resolveRasterPath(mission, missionPath));
     QApplication::setOverrideCursor(Qt::WaitCursor);
     auto raster = io::loadMissionRaster(mission, missionPath);
@@ -1003,10 +1007,12 @@ bool MainWindow::openMission(const QString& path) {
         rememberFolder(kMissionFolderKey, path);
         rebuildRecentMenu();
     }
+    planUnsaved_ = false;
     updateTitle();
     QString message = tr("Opened mission %1 with %2 robots.")
                           .arg(QFileInfo(path).fileName())
                           .arg(document_->robots().size());
+    message += restorePlanBeside(QFileInfo(path).absoluteFilePath(), savedInputs);
     for (const auto& warning : warnings)
         message += QStringLiteral(" ") + asSentence(warning);
     showStatus(message, 15000);
@@ -1042,14 +1048,67 @@ bool MainWindow::saveMission(const QString& path) {
         return false;
     }
     document_->setMissionPath(QFileInfo(path).absoluteFilePath());
+    const QString planNote = savePlanBeside(QFileInfo(path).absoluteFilePath(),
+                                            io::planInputsFingerprint(mission, path.toStdString()));
     undoStack_->setClean();
     settingsModified_ = false;
+    planUnsaved_ = false;
     RecentFiles::add(path);
     rememberFolder(kMissionFolderKey, path);
     rebuildRecentMenu();
     updateTitle();
-    showStatus(tr("Saved mission to %1").arg(path));
+    showStatus(tr("Saved mission to %1.").arg(path) + planNote);
     return true;
+}
+
+QString MainWindow::savePlanBeside(const QString& missionPath, const std::string& fingerprint) {
+    const std::string planPath = io::planFilePath(missionPath.toStdString());
+    const Plan* plan = document_->plan();
+    if (plan == nullptr || document_->planStale()) {
+        // A plan file left from earlier inputs would only be refused on the next open.
+        std::error_code ignored;
+        std::filesystem::remove(planPath, ignored);
+        return {};
+    }
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    const io::Status saved = io::savePlanFile(*plan, fingerprint, planPath);
+    QApplication::restoreOverrideCursor();
+    if (!saved.ok()) {
+        messageLog_->add(
+            tr("The plan was not saved with the mission: %1").arg(QString::fromStdString(saved.error())));
+        return tr(" The plan could not be saved beside it (see Messages).");
+    }
+    return tr(" The plan is saved beside it in %1.")
+        .arg(QFileInfo(QString::fromStdString(planPath)).fileName());
+}
+
+QString MainWindow::restorePlanBeside(const QString& missionPath, const std::string& fingerprint) {
+    const std::string planPath = io::planFilePath(missionPath.toStdString());
+    if (!QFileInfo::exists(QString::fromStdString(planPath)))
+        return {};
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    auto loaded = io::loadPlanFile(planPath, fingerprint);
+    QApplication::restoreOverrideCursor();
+    if (!loaded.ok()) {
+        messageLog_->add(asSentence(loaded.error()));
+        return tr(" Its saved plan cannot be read (see Messages): press Plan to plan again.");
+    }
+    if (!loaded.value()) {
+        return tr(" Its saved plan was made from other inputs (the raster, area, classes, starts or planner "
+                  "have changed since): press Plan to plan again.");
+    }
+    auto plan = std::make_shared<const Plan>(std::move(*loaded.value()));
+    const double makespan = plan->metrics.makespanSeconds;
+    document_->setPlan(std::move(plan), document_->currentInputs());
+    return tr(" Restored its saved plan (makespan %1).").arg(ResultsPanel::formatDuration(makespan));
+}
+
+void MainWindow::notePlanToSave() {
+    // An untitled mission's plan is saved with it anyway; only a saved mission becomes modified.
+    if (document_->missionPath().isEmpty())
+        return;
+    planUnsaved_ = true;
+    updateTitle();
 }
 
 void MainWindow::chooseExport(const std::string& formatKey) {
@@ -1256,6 +1315,7 @@ void MainWindow::showComparedPlan(int row) {
     PlanInputs inputs = comparisonInputs_;
     inputs.planner = choice;
     document_->setPlan(comparison_.plans[static_cast<std::size_t>(row)], inputs);
+    notePlanToSave();
     showStatus(tr("Showing the plan of %1.").arg(QString::fromStdString(choice.planner)));
 }
 
@@ -1318,6 +1378,7 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
         static_cast<double>(QDateTime::currentMSecsSinceEpoch() - planningStartedAt_) / 1000.0;
     if (outcome.plan) {
         document_->setPlan(outcome.plan, planningInputs_);
+        notePlanToSave();
         const auto& metrics = outcome.plan->metrics;
         showStatus(tr("Planned in %1 s: makespan %2, %3 × the lower bound.")
                        .arg(seconds, 0, 'f', 1)

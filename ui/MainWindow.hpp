@@ -134,6 +134,13 @@ class MainWindow : public QMainWindow {
     bool maybeSave();
     void openFile(const QString& path);
     void openSampleMission(bool plan);
+    // The plan beside a mission file (io/PlanFile): written on save when it is up to date, restored on open
+    // when the mission's inputs are those it was planned from. Returns a sentence for the status bar.
+    // The fingerprint is of the mission as its file holds it (io::planInputsFingerprint).
+    QString savePlanBeside(const QString& missionPath, const std::string& fingerprint);
+    QString restorePlanBeside(const QString& missionPath, const std::string& fingerprint);
+    // A new plan of a saved mission makes the mission modified, so that it is saved with the mission.
+    void notePlanToSave();
     void showCursor(MapPoint point);
     void handlePlanningFinished(const PlanningOutcome& outcome);
     void handleExportFinished(const ExportOutcome& outcome);
@@ -190,6 +197,7 @@ class MainWindow : public QMainWindow {
     std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on
     qint64 planningStartedAt_ = 0;
     bool settingsModified_ = false;
+    bool planUnsaved_ = false;   // a saved mission's new plan, written beside it on the next save
     double fitFactor_ = 0.0;     // FOV factor the banner offers; 0 when the table fits
     bool openingSample_ = false; // the bundled sample opens as an untitled copy
     bool dialogsEnabled_ = true;

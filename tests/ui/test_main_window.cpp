@@ -2,6 +2,7 @@
 #include "core/model/MemoryBudget.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ExportCatalogue.hpp"
+#include "io/Mission.hpp"
 #include "tests/support/TestData.hpp"
 #include "ui/ApplicationResources.hpp"
 #include "ui/ClassTableBanner.hpp"
@@ -327,6 +328,34 @@ class TestMainWindow : public QObject {
         QCOMPARE(reopened.document()->robots().size(), std::size_t{3});
         QCOMPARE(reopened.document()->classes().classes()[static_cast<std::size_t>(row)].speedMetresPerSecond,
                  2.5);
+
+        // The plan was saved beside the mission and comes back without planning, up to date.
+        QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("mission.mcpp-plan"))));
+        QVERIFY(reopened.lastStatusMessage().contains(QStringLiteral("Restored its saved plan")));
+        QVERIFY(reopened.document()->plan() != nullptr);
+        QVERIFY(!reopened.document()->planStale());
+        QCOMPARE(reopened.document()->plan()->metrics.makespanSeconds,
+                 document->plan()->metrics.makespanSeconds);
+        QCOMPARE(reopened.document()->plan()->paths.size(), document->plan()->paths.size());
+        QCOMPARE(reopened.resultsPanel()->robotTable()->rowCount(), 3);
+        QVERIFY(!reopened.isMissionModified());
+        // A new plan of a saved mission is a change to save.
+        QSignalSpy replanned(&reopened, &ui::MainWindow::planningFinished);
+        QVERIFY(reopened.startPlanning());
+        QTRY_COMPARE_WITH_TIMEOUT(replanned.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY(reopened.isMissionModified());
+
+        // A start moved in the file since: the saved plan is for other inputs and is not shown.
+        auto edited = io::loadMission(missionPath.toStdString());
+        QVERIFY(edited.ok());
+        edited.value().robots[0].start.x += 0.5; // half a metre: the same pixel, another start
+        QVERIFY(io::saveMission(edited.value(), missionPath.toStdString()).ok());
+        ui::MainWindow changed;
+        changed.setDialogsEnabled(false);
+        changed.setOpenSampleOnFirstStart(false);
+        QVERIFY2(changed.openMission(missionPath), qPrintable(changed.lastError()));
+        QVERIFY(changed.document()->plan() == nullptr);
+        QVERIFY(changed.lastStatusMessage().contains(QStringLiteral("made from other inputs")));
     }
 
     void cancelsPlanning() {

@@ -1,0 +1,359 @@
+#include "io/PlanFile.hpp"
+
+#include "io/AtomicFile.hpp"
+#include "io/internal/CompressedReader.hpp"
+#include "io/internal/CompressedWriter.hpp"
+#include "io/internal/TextFiles.hpp"
+
+#include <QCryptographicHash>
+#include <filesystem>
+#include <fstream>
+
+namespace mcpp::io {
+
+namespace {
+
+using internal::CompressedReader;
+using internal::CompressedWriter;
+
+constexpr const char* formatLine = "MCPP-PLAN 1";
+constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
+static_assert(sizeof(Waypoint) == 40, "waypoints are saved as their bytes: x, y, cell, class, speed, time");
+
+// Size and time of last change of a file: a different file at the same path changes them.
+std::string fileIdentity(const std::string& path) {
+    if (path.empty())
+        return "-";
+    std::error_code error;
+    const auto size = std::filesystem::file_size(path, error);
+    const auto changed = std::filesystem::last_write_time(path, error);
+    return std::to_string(size) + " " + std::to_string(changed.time_since_epoch().count());
+}
+
+void putParameters(CompressedWriter& out, const ParameterValues& parameters) {
+    out.put(static_cast<std::uint64_t>(parameters.all().size()));
+    for (const auto& [key, value] : parameters.all()) {
+        out.put(key);
+        out.put(static_cast<std::uint8_t>(value.index()));
+        std::visit(
+            [&](const auto& held) {
+                using Held = std::decay_t<decltype(held)>;
+                if constexpr (std::is_same_v<Held, bool>)
+                    out.put(static_cast<std::uint8_t>(held));
+                else
+                    out.put(held);
+            },
+            value);
+    }
+}
+
+ParameterValues getParameters(CompressedReader& in) {
+    ParameterValues parameters;
+    for (std::size_t count = in.getCount(10); count > 0; --count) {
+        std::string key = in.getString();
+        switch (in.get<std::uint8_t>()) {
+        case 0:
+            parameters.set(key, in.get<std::uint8_t>() != 0);
+            break;
+        case 1:
+            parameters.set(key, in.get<int>());
+            break;
+        case 2:
+            parameters.set(key, in.get<double>());
+            break;
+        case 3:
+            parameters.set(key, in.getString());
+            break;
+        default:
+            throw CompressedReader::DamagedData("a parameter of unknown type");
+        }
+    }
+    return parameters;
+}
+
+void putCells(CompressedWriter& out, const CellGraph& graph) {
+    const GridFrame& frame = graph.frame();
+    out.put(frame.originX);
+    out.put(frame.originY);
+    out.put(frame.bottomCellSize);
+    out.put(frame.columns);
+    out.put(frame.rows);
+    out.put(frame.levels);
+    out.put(static_cast<std::uint64_t>(graph.size()));
+    for (const Cell& cell : graph.cells()) {
+        out.put(cell.column);
+        out.put(cell.row);
+        out.put(cell.span);
+        out.put(cell.level);
+        out.put(cell.minX);
+        out.put(cell.minY);
+        out.put(cell.size);
+        out.put(cell.classValue);
+        out.put(cell.speedMetresPerSecond);
+        out.put(cell.passableAreaSquareMetres);
+        out.put(cell.freeSubCells);
+    }
+    out.putAll(graph.adjacency().offsets());
+    out.putAll(graph.adjacency().neighbours());
+    out.put(static_cast<std::uint64_t>(graph.fieldsOfView.size()));
+    for (const RoundedFieldOfView& rounded : graph.fieldsOfView) {
+        out.put(rounded.classValue);
+        out.put(rounded.originalMetres);
+        out.put(rounded.roundedMetres);
+        out.put(rounded.level);
+    }
+    out.put(graph.passableAreaSquareMetres);
+}
+
+void checkAdjacency(const std::vector<int>& offsets, const std::vector<int>& neighbours, std::size_t cells) {
+    if (offsets.size() != cells + 1 || offsets.front() != 0 ||
+        static_cast<std::size_t>(offsets.back()) != neighbours.size())
+        throw CompressedReader::DamagedData("neighbour lists that do not match the cells");
+    for (std::size_t i = 0; i + 1 < offsets.size(); ++i)
+        if (offsets[i] > offsets[i + 1])
+            throw CompressedReader::DamagedData("neighbour lists out of order");
+    for (const int neighbour : neighbours)
+        if (neighbour < 0 || static_cast<std::size_t>(neighbour) >= cells)
+            throw CompressedReader::DamagedData("a neighbour that is not a cell");
+}
+
+CellGraph getCells(CompressedReader& in) {
+    GridFrame frame;
+    frame.originX = in.get<double>();
+    frame.originY = in.get<double>();
+    frame.bottomCellSize = in.get<double>();
+    frame.columns = in.get<int>();
+    frame.rows = in.get<int>();
+    frame.levels = in.get<int>();
+    std::vector<Cell> cells(in.getCount(61));
+    for (Cell& cell : cells) {
+        cell.column = in.get<int>();
+        cell.row = in.get<int>();
+        cell.span = in.get<int>();
+        cell.level = in.get<int>();
+        cell.minX = in.get<double>();
+        cell.minY = in.get<double>();
+        cell.size = in.get<double>();
+        cell.classValue = in.get<std::int32_t>();
+        cell.speedMetresPerSecond = in.get<double>();
+        cell.passableAreaSquareMetres = in.get<double>();
+        cell.freeSubCells = in.get<std::uint8_t>();
+        if (cell.span <= 0 || cell.column < 0 || cell.row < 0)
+            throw CompressedReader::DamagedData("a cell with no place on the grid");
+    }
+    std::vector<int> offsets = in.getAll<int>();
+    std::vector<int> neighbours = in.getAll<int>();
+    checkAdjacency(offsets, neighbours, cells.size());
+    CellGraph graph(frame, std::move(cells), NeighbourTopology(std::move(offsets), std::move(neighbours)));
+    graph.fieldsOfView.resize(in.getCount(24));
+    for (RoundedFieldOfView& rounded : graph.fieldsOfView) {
+        rounded.classValue = in.get<std::int32_t>();
+        rounded.originalMetres = in.get<double>();
+        rounded.roundedMetres = in.get<double>();
+        rounded.level = in.get<int>();
+    }
+    graph.passableAreaSquareMetres = in.get<double>();
+    return graph;
+}
+
+void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths) {
+    out.put(static_cast<std::uint64_t>(paths.size()));
+    for (const CoveragePath& path : paths) {
+        out.put(path.robot);
+        out.put(path.lengthMetres);
+        out.put(path.timeSeconds);
+        out.put(path.turns);
+        out.put(path.repeatedSubCellVisits);
+        out.put(static_cast<std::uint8_t>(path.closed));
+        out.putAll(path.waypoints);
+    }
+}
+
+std::vector<CoveragePath> getPaths(CompressedReader& in, std::size_t cells) {
+    std::vector<CoveragePath> paths(in.getCount(37));
+    for (CoveragePath& path : paths) {
+        path.robot = in.get<int>();
+        path.lengthMetres = in.get<double>();
+        path.timeSeconds = in.get<double>();
+        path.turns = in.get<int>();
+        path.repeatedSubCellVisits = in.get<int>();
+        path.closed = in.get<std::uint8_t>() != 0;
+        path.waypoints = in.getAll<Waypoint>();
+        if (path.robot < 0 || static_cast<std::size_t>(path.robot) >= paths.size())
+            throw CompressedReader::DamagedData("a path of no robot");
+        for (const Waypoint& waypoint : path.waypoints)
+            if (waypoint.cell < -1 || waypoint.cell >= static_cast<int>(cells))
+                throw CompressedReader::DamagedData("a waypoint in no cell");
+    }
+    return paths;
+}
+
+void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
+    out.put(static_cast<std::uint64_t>(metrics.robots.size()));
+    for (const RobotMetrics& robot : metrics.robots) {
+        out.put(robot.robot);
+        out.put(robot.cells);
+        out.put(robot.areaSquareMetres);
+        out.put(robot.lengthMetres);
+        out.put(robot.timeSeconds);
+        out.put(robot.costSeconds);
+        out.put(robot.turns);
+    }
+    for (const double figure :
+         {metrics.makespanSeconds, metrics.lowerBoundSeconds, metrics.ratio, metrics.passableAreaSquareMetres,
+          metrics.coveredAreaSquareMetres, metrics.coveredFraction, metrics.unreachableAreaSquareMetres,
+          metrics.repeatedFraction})
+        out.put(figure);
+    out.put(static_cast<std::uint64_t>(metrics.stageMilliseconds.size()));
+    for (const auto& [stage, milliseconds] : metrics.stageMilliseconds) {
+        out.put(stage);
+        out.put(milliseconds);
+    }
+}
+
+PlanMetrics getMetrics(CompressedReader& in) {
+    PlanMetrics metrics;
+    metrics.robots.resize(in.getCount(44));
+    for (RobotMetrics& robot : metrics.robots) {
+        robot.robot = in.get<int>();
+        robot.cells = in.get<int>();
+        robot.areaSquareMetres = in.get<double>();
+        robot.lengthMetres = in.get<double>();
+        robot.timeSeconds = in.get<double>();
+        robot.costSeconds = in.get<double>();
+        robot.turns = in.get<int>();
+    }
+    for (double* figure :
+         {&metrics.makespanSeconds, &metrics.lowerBoundSeconds, &metrics.ratio,
+          &metrics.passableAreaSquareMetres, &metrics.coveredAreaSquareMetres, &metrics.coveredFraction,
+          &metrics.unreachableAreaSquareMetres, &metrics.repeatedFraction})
+        *figure = in.get<double>();
+    for (std::size_t count = in.getCount(16); count > 0; --count) {
+        std::string stage = in.getString();
+        metrics.stageMilliseconds.emplace_back(std::move(stage), in.get<double>());
+    }
+    return metrics;
+}
+
+void putIssues(CompressedWriter& out, const std::vector<PlanIssue>& issues) {
+    out.put(static_cast<std::uint64_t>(issues.size()));
+    for (const PlanIssue& issue : issues) {
+        out.put(static_cast<std::uint8_t>(issue.severity == IssueSeverity::Warning));
+        out.put(issue.code);
+        out.put(issue.message);
+    }
+}
+
+std::vector<PlanIssue> getIssues(CompressedReader& in) {
+    std::vector<PlanIssue> issues(in.getCount(17));
+    for (PlanIssue& issue : issues) {
+        issue.severity = in.get<std::uint8_t>() != 0 ? IssueSeverity::Warning : IssueSeverity::Information;
+        issue.code = in.getString();
+        issue.message = in.getString();
+    }
+    return issues;
+}
+
+void checkRegions(const RegionAllocation& regions, std::size_t cells, std::size_t robots) {
+    if (regions.robotOfCell.size() != cells || regions.startCell.size() != robots ||
+        regions.costSeconds.size() != robots)
+        throw CompressedReader::DamagedData("regions that do not match the cells and robots");
+    for (const int robot : regions.robotOfCell)
+        if (robot < -1 || robot >= static_cast<int>(robots))
+            throw CompressedReader::DamagedData("a cell of no robot");
+    for (const int cell : regions.startCell)
+        if (cell < -1 || cell >= static_cast<int>(cells))
+            throw CompressedReader::DamagedData("a start in no cell");
+}
+
+Plan readPlan(CompressedReader& in) {
+    Plan plan;
+    plan.planner = in.getString();
+    plan.parameters = getParameters(in);
+    plan.cells = getCells(in);
+    plan.regions.robotOfCell = in.getAll<int>();
+    plan.regions.startCell = in.getAll<int>();
+    plan.regions.costSeconds = in.getAll<double>();
+    plan.paths = getPaths(in, plan.cells.size());
+    checkRegions(plan.regions, plan.cells.size(), plan.paths.size());
+    plan.metrics = getMetrics(in);
+    plan.issues = getIssues(in);
+    if (in.get<std::uint32_t>() != endMarker || !in.atEnd())
+        throw CompressedReader::DamagedData("unexpected bytes at the end");
+    return plan;
+}
+
+// The header: the format line and the fingerprint line, then the compressed plan.
+std::string header(const std::string& fingerprint) {
+    return std::string(formatLine) + "\n" + fingerprint + "\n";
+}
+
+} // namespace
+
+std::string planFilePath(const std::string& missionPath) {
+    std::filesystem::path path(missionPath);
+    return path.replace_extension(".mcpp-plan").string();
+}
+
+std::string planInputsFingerprint(const Mission& mission, const std::string& missionPath) {
+    Mission inputs = mission;
+    inputs.rasterPath = std::filesystem::absolute(resolveRasterPath(mission, missionPath)).string();
+    for (std::string* area : {&inputs.area.includePath, &inputs.area.excludePath})
+        if (!area->empty())
+            *area = std::filesystem::absolute(resolveMissionPath(*area, missionPath)).string();
+    inputs.exports = {};
+    for (RobotSpec& robot : inputs.robots)
+        robot.name.clear();
+    const std::string text = missionToJson(inputs) + "\n" + fileIdentity(inputs.rasterPath) + "\n" +
+                             fileIdentity(inputs.area.includePath) + "\n" +
+                             fileIdentity(inputs.area.excludePath) + "\n";
+    return QCryptographicHash::hash(QByteArray::fromStdString(text), QCryptographicHash::Sha256)
+        .toHex()
+        .toStdString();
+}
+
+Status savePlanFile(const Plan& plan, const std::string& fingerprint, const std::string& path) {
+    CompressedWriter out;
+    out.put(plan.planner);
+    putParameters(out, plan.parameters);
+    putCells(out, plan.cells);
+    out.putAll(plan.regions.robotOfCell);
+    out.putAll(plan.regions.startCell);
+    out.putAll(plan.regions.costSeconds);
+    putPaths(out, plan.paths);
+    putMetrics(out, plan.metrics);
+    putIssues(out, plan.issues);
+    out.put(endMarker);
+    return writeFileAtomically(path, header(fingerprint) + out.finish());
+}
+
+Result<std::optional<Plan>> loadPlanFile(const std::string& path, const std::string& fingerprint) {
+    using Loaded = Result<std::optional<Plan>>;
+    std::ifstream file(path, std::ios::binary);
+    if (!file)
+        return Loaded::failure(path + ": cannot read the saved plan");
+    std::string format;
+    std::string savedFingerprint;
+    std::getline(file, format);
+    std::getline(file, savedFingerprint);
+    if (format != formatLine)
+        return Loaded::failure(path + ": not a plan file of this version of mcpp (first line \"" +
+                               format.substr(0, 40) + "\")");
+    if (savedFingerprint != fingerprint)
+        return std::optional<Plan>();
+    file.close();
+    auto bytes = internal::readWholeFile(path);
+    if (!bytes)
+        return Loaded::failure(bytes.error());
+    const std::size_t start = header(fingerprint).size();
+    try {
+        CompressedReader in(std::string_view(bytes.value()).substr(start));
+        return std::optional<Plan>(readPlan(in));
+    } catch (const CompressedReader::DamagedData& damage) {
+        return Loaded::failure(path + ": the saved plan is damaged (" + damage.what() + ")");
+    } catch (const std::bad_alloc&) {
+        return Loaded::failure(path + ": the saved plan is damaged (it claims more memory than there is)");
+    }
+}
+
+} // namespace mcpp::io

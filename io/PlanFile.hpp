@@ -1,0 +1,32 @@
+#pragma once
+
+#include "core/model/Plan.hpp"
+#include "io/Mission.hpp"
+#include "io/Result.hpp"
+
+#include <optional>
+#include <string>
+
+namespace mcpp::io {
+
+// A plan saved beside its mission (mission.json -> mission.mcpp-plan), so that reopening the mission shows
+// the plan without planning again. The file names the inputs it was planned from by a fingerprint; a plan
+// whose inputs have changed since is not restored.
+
+// Where the plan of a mission file is kept.
+[[nodiscard]] std::string planFilePath(const std::string& missionPath);
+
+// A fingerprint of what a plan depends on, from the mission as its file holds it: the raster file (path,
+// band, size, time of last change), the area files likewise, the class table, the starts, the planner and its
+// parameters. Robot names and export settings are left out: they do not change a plan.
+[[nodiscard]] std::string planInputsFingerprint(const Mission& mission, const std::string& missionPath);
+
+// Writes the plan with the fingerprint of its inputs (atomic). Layers of the plan are not saved.
+[[nodiscard]] Status savePlanFile(const Plan& plan, const std::string& fingerprint, const std::string& path);
+
+// The plan in the file when its fingerprint is `fingerprint`; nothing when it was planned from other
+// inputs. A file that cannot be read or is damaged is an error naming it.
+[[nodiscard]] Result<std::optional<Plan>> loadPlanFile(const std::string& path,
+                                                       const std::string& fingerprint);
+
+} // namespace mcpp::io

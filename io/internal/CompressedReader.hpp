@@ -1,0 +1,53 @@
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace mcpp::io::internal {
+
+// Reads what CompressedWriter wrote, inflating one chunk at a time. Any inconsistency (a chunk that does not
+// inflate to its size, reading past the end, a count larger than what is left) throws DamagedData.
+class CompressedReader {
+  public:
+    struct DamagedData : std::runtime_error {
+        using std::runtime_error::runtime_error;
+    };
+
+    explicit CompressedReader(std::string_view compressed) : input_(compressed) {}
+
+    template <typename Value> Value get() {
+        static_assert(std::is_arithmetic_v<Value>);
+        Value value{};
+        take(&value, sizeof(Value));
+        return value;
+    }
+    std::string getString();
+    template <typename Value> std::vector<Value> getAll() {
+        const std::uint64_t count = get<std::uint64_t>();
+        if (count > remainingBound() / sizeof(Value))
+            throw DamagedData("a list longer than the file");
+        std::vector<Value> values(static_cast<std::size_t>(count));
+        take(values.data(), values.size() * sizeof(Value));
+        return values;
+    }
+    // A count of items each at least minimumBytes long, checked against what is left.
+    std::size_t getCount(std::size_t minimumBytes);
+    [[nodiscard]] bool atEnd() const { return position_ == chunk_.size() && inputPosition_ == input_.size(); }
+
+  private:
+    void take(void* destination, std::size_t bytes);
+    void nextChunk();
+    [[nodiscard]] std::uint64_t remainingBound() const;
+
+    std::string_view input_;
+    std::size_t inputPosition_ = 0;
+    std::string chunk_;
+    std::size_t position_ = 0;
+};
+
+} // namespace mcpp::io::internal

@@ -1,0 +1,200 @@
+// A plan saved beside its mission comes back whole, only for the inputs it was planned from; a damaged
+// file is refused with its name and never crashes the reader.
+#include "core/planners/MlctPlanner.hpp"
+#include "io/Mission.hpp"
+#include "io/PlanFile.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+#include "tests/support/TestData.hpp"
+
+#include <QTemporaryDir>
+#include <QtTest>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+using namespace mcpp;
+
+namespace {
+
+Plan plannedMap() {
+    test::RandomMapSpec spec;
+    spec.columns = 24;
+    spec.rows = 18;
+    spec.landCovers = 3;
+    spec.obstacleFraction = 0.08;
+    spec.fovPixels = 1.0;
+    spec.robots = 3;
+    spec.seed = 7;
+    return MlctPlanner{}.plan(test::randomProblem(spec), {});
+}
+
+bool sameWaypoints(const std::vector<Waypoint>& a, const std::vector<Waypoint>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Waypoint& x, const Waypoint& y) {
+        return x.x == y.x && x.y == y.y && x.cell == y.cell && x.classValue == y.classValue &&
+               x.speedMetresPerSecond == y.speedMetresPerSecond && x.cumulativeSeconds == y.cumulativeSeconds;
+    });
+}
+
+void compareCells(const CellGraph& a, const CellGraph& b) {
+    QCOMPARE(a.size(), b.size());
+    QCOMPARE(a.frame().columns, b.frame().columns);
+    QCOMPARE(a.frame().bottomCellSize, b.frame().bottomCellSize);
+    QCOMPARE(a.frame().originX, b.frame().originX);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const Cell& x = a.cells()[i];
+        const Cell& y = b.cells()[i];
+        QVERIFY(x.column == y.column && x.row == y.row && x.span == y.span && x.level == y.level);
+        QVERIFY(x.minX == y.minX && x.minY == y.minY && x.size == y.size && x.classValue == y.classValue);
+        QVERIFY(x.speedMetresPerSecond == y.speedMetresPerSecond &&
+                x.passableAreaSquareMetres == y.passableAreaSquareMetres && x.freeSubCells == y.freeSubCells);
+    }
+    QCOMPARE(a.adjacency().offsets(), b.adjacency().offsets());
+    QCOMPARE(a.adjacency().neighbours(), b.adjacency().neighbours());
+    QCOMPARE(a.fieldsOfView.size(), b.fieldsOfView.size());
+    QCOMPARE(a.passableAreaSquareMetres, b.passableAreaSquareMetres);
+    // The locator is rebuilt: every cell is found at its centre.
+    for (std::size_t i = 0; i < b.size(); ++i)
+        QCOMPARE(b.cellAt({b.cells()[i].centreX(), b.cells()[i].centreY()}), static_cast<int>(i));
+}
+
+std::string bytesOf(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+void writeBytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+} // namespace
+
+class TestPlanFile : public QObject {
+    Q_OBJECT
+
+  private:
+    QTemporaryDir folder_;
+    std::string file(const char* name) const { return folder_.filePath(name).toStdString(); }
+
+  private slots:
+    void planComesBackWhole() {
+        const Plan plan = plannedMap();
+        QCOMPARE(plan.paths.size(), std::size_t{3});
+        const std::string path = file("whole.mcpp-plan");
+        const io::Status saved = io::savePlanFile(plan, "inputs-a", path);
+        QVERIFY2(saved.ok(), saved.error().c_str());
+        auto loaded = io::loadPlanFile(path, "inputs-a");
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        QVERIFY(loaded.value().has_value());
+        const Plan& back = *loaded.value();
+        QCOMPARE(back.planner, plan.planner);
+        QVERIFY(back.parameters == plan.parameters);
+        compareCells(plan.cells, back.cells);
+        QCOMPARE(back.regions.robotOfCell, plan.regions.robotOfCell);
+        QCOMPARE(back.regions.startCell, plan.regions.startCell);
+        QCOMPARE(back.regions.costSeconds, plan.regions.costSeconds);
+        QCOMPARE(back.paths.size(), plan.paths.size());
+        for (std::size_t robot = 0; robot < plan.paths.size(); ++robot) {
+            const CoveragePath& a = plan.paths[robot];
+            const CoveragePath& b = back.paths[robot];
+            QVERIFY(a.robot == b.robot && a.lengthMetres == b.lengthMetres && a.timeSeconds == b.timeSeconds);
+            QVERIFY(a.turns == b.turns && a.repeatedSubCellVisits == b.repeatedSubCellVisits &&
+                    a.closed == b.closed);
+            QVERIFY(sameWaypoints(a.waypoints, b.waypoints));
+        }
+        QCOMPARE(back.metrics.makespanSeconds, plan.metrics.makespanSeconds);
+        QCOMPARE(back.metrics.ratio, plan.metrics.ratio);
+        QCOMPARE(back.metrics.coveredFraction, plan.metrics.coveredFraction);
+        QCOMPARE(back.metrics.robots.size(), plan.metrics.robots.size());
+        QCOMPARE(back.metrics.robots[2].turns, plan.metrics.robots[2].turns);
+        QCOMPARE(back.metrics.stageMilliseconds, plan.metrics.stageMilliseconds);
+        QVERIFY(back.issues == plan.issues);
+        // Saving what was read gives the same bytes: nothing is lost or reordered.
+        QVERIFY(io::savePlanFile(back, "inputs-a", file("again.mcpp-plan")).ok());
+        QCOMPARE(bytesOf(file("again.mcpp-plan")), bytesOf(path));
+    }
+
+    void otherInputsAreNotRestored() {
+        const std::string path = file("other.mcpp-plan");
+        QVERIFY(io::savePlanFile(plannedMap(), "inputs-a", path).ok());
+        auto loaded = io::loadPlanFile(path, "inputs-b");
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        QVERIFY(!loaded.value().has_value());
+    }
+
+    void damagedFilesAreRefusedByName() {
+        const std::string path = file("good.mcpp-plan");
+        QVERIFY(io::savePlanFile(plannedMap(), "inputs-a", path).ok());
+        const std::string good = bytesOf(path);
+        const std::string damaged = file("damaged.mcpp-plan");
+        // Cut anywhere after the header, or with bytes changed: an error naming the file, never a crash.
+        std::mt19937 random(11);
+        const std::size_t header = good.find('\n', good.find('\n') + 1) + 1;
+        for (int trial = 0; trial < 60; ++trial) {
+            std::string bytes = good;
+            if (trial % 2 == 0) {
+                bytes.resize(header + random() % (good.size() - header));
+            } else {
+                for (int flip = 0; flip < 4; ++flip)
+                    bytes[header + random() % (good.size() - header)] ^=
+                        static_cast<char>(1 + random() % 255);
+            }
+            writeBytes(damaged, bytes);
+            auto loaded = io::loadPlanFile(damaged, "inputs-a");
+            QVERIFY2(!loaded.ok(), qPrintable(QStringLiteral("trial %1 read a damaged file").arg(trial)));
+            QVERIFY(loaded.error().find(damaged) == 0);
+        }
+        writeBytes(damaged, "{\"fileType\": \"Plan\"}\n");
+        auto other = io::loadPlanFile(damaged, "inputs-a");
+        QVERIFY(!other.ok() && other.error().find("not a plan file") != std::string::npos);
+        auto missing = io::loadPlanFile(file("missing.mcpp-plan"), "inputs-a");
+        QVERIFY(!missing.ok() && missing.error().find("missing.mcpp-plan") != std::string::npos);
+    }
+
+    void planFileSitsBesideTheMission() {
+        QCOMPARE(io::planFilePath("/data/survey/mission.json"),
+                 std::string("/data/survey/mission.mcpp-plan"));
+        QCOMPARE(io::planFilePath("field.v2.json"), std::string("field.v2.mcpp-plan"));
+    }
+
+    void fingerprintFollowsWhatThePlanDependsOn() {
+        // A mission beside its own copy of the sample raster, so the test may touch the raster.
+        const std::string raster = file("land.tif");
+        std::filesystem::copy_file(test::sourcePath("samples/zion-nlcd/nlcd.tif"), raster,
+                                   std::filesystem::copy_options::overwrite_existing);
+        const std::string missionPath = file("mission.json");
+        auto loaded = io::loadMission(test::sourcePath("samples/zion-nlcd/mission.json"));
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        io::Mission mission = loaded.value();
+        mission.rasterPath = "land.tif"; // relative to the mission, as saved
+        const std::string base = io::planInputsFingerprint(mission, missionPath);
+        QCOMPARE(base.size(), std::size_t{64});
+        QCOMPARE(io::planInputsFingerprint(mission, missionPath), base);
+
+        io::Mission renamed = mission;
+        renamed.robots[0].name = "Another name";
+        renamed.exports.altitudeMetres = 55.0;
+        QCOMPARE(io::planInputsFingerprint(renamed, missionPath), base);
+
+        io::Mission moved = mission;
+        moved.robots[1].start.x += 30.0;
+        QVERIFY(io::planInputsFingerprint(moved, missionPath) != base);
+        io::Mission slower = mission;
+        auto landCover =
+            *std::find_if(slower.classes.classes().begin(), slower.classes.classes().end(),
+                          [](const LandCoverClass& candidate) { return candidate.isTraversable(); });
+        landCover.speedMetresPerSecond *= 0.5;
+        slower.classes.set(landCover);
+        QVERIFY(io::planInputsFingerprint(slower, missionPath) != base);
+        io::Mission otherPlanner = mission;
+        otherPlanner.planner.planner = "darp";
+        QVERIFY(io::planInputsFingerprint(otherPlanner, missionPath) != base);
+
+        // The raster changed on disk (same path): the fingerprint changes.
+        std::filesystem::last_write_time(raster,
+                                         std::filesystem::last_write_time(raster) + std::chrono::seconds(5));
+        QVERIFY(io::planInputsFingerprint(mission, missionPath) != base);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestPlanFile)
+#include "test_plan_file.moc"
