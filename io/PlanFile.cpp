@@ -6,6 +6,8 @@
 #include "io/internal/TextFiles.hpp"
 
 #include <QCryptographicHash>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -18,7 +20,6 @@ using internal::CompressedWriter;
 
 constexpr const char* formatLine = "MCPP-PLAN 1";
 constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
-static_assert(sizeof(Waypoint) == 40, "waypoints are saved as their bytes: x, y, cell, class, speed, time");
 
 // Size and time of last change of a file: a different file at the same path changes them.
 std::string fileIdentity(const std::string& path) {
@@ -156,7 +157,104 @@ CellGraph getCells(CompressedReader& in) {
     return graph;
 }
 
-void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths) {
+// Waypoints are most of a plan. Most lie at a sub-cell centre of their cell and take its land cover and
+// speed, and their times follow from the path (measurePath's sum): such a point is saved as its cell and a
+// tag naming the sub-cell. Whatever does not follow exactly, bit for bit, is saved as it is.
+enum WaypointTag : std::uint8_t { explicitPoint = 4, explicitLandCover = 8 };
+
+std::uint8_t waypointTag(const Waypoint& waypoint, const CellGraph& graph) {
+    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size())
+        return explicitPoint | explicitLandCover;
+    const Cell& cell = graph.cell(waypoint.cell);
+    std::uint8_t tag = explicitPoint;
+    for (const SubCell subCell : subCellsCounterClockwise) {
+        const MapPoint centre = cell.subCellCentre(subCell);
+        if (centre.x == waypoint.x && centre.y == waypoint.y)
+            tag = static_cast<std::uint8_t>(subCell);
+    }
+    if (waypoint.classValue != cell.classValue || waypoint.speedMetresPerSecond != cell.speedMetresPerSecond)
+        tag |= explicitLandCover;
+    return tag;
+}
+
+// The times measurePath gives the waypoints, in the same order of operations.
+void fillTimes(std::vector<Waypoint>& waypoints) {
+    double time = 0.0;
+    if (!waypoints.empty())
+        waypoints.front().cumulativeSeconds = 0.0;
+    for (std::size_t i = 1; i < waypoints.size(); ++i) {
+        const Waypoint& from = waypoints[i - 1];
+        const double dx = waypoints[i].x - from.x;
+        const double dy = waypoints[i].y - from.y;
+        const double segment = std::sqrt(dx * dx + dy * dy);
+        time += segment / 2.0 / from.speedMetresPerSecond + segment / 2.0 / waypoints[i].speedMetresPerSecond;
+        waypoints[i].cumulativeSeconds = time;
+    }
+}
+
+bool timesFollow(const std::vector<Waypoint>& waypoints) {
+    std::vector<Waypoint> measured = waypoints;
+    fillTimes(measured);
+    return std::equal(
+        waypoints.begin(), waypoints.end(), measured.begin(),
+        [](const Waypoint& a, const Waypoint& b) { return a.cumulativeSeconds == b.cumulativeSeconds; });
+}
+
+void putWaypoints(CompressedWriter& out, const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
+    const bool derivedTimes = timesFollow(waypoints);
+    out.put(static_cast<std::uint8_t>(derivedTimes));
+    out.put(static_cast<std::uint64_t>(waypoints.size()));
+    for (const Waypoint& waypoint : waypoints) {
+        const std::uint8_t tag = waypointTag(waypoint, graph);
+        out.put(waypoint.cell);
+        out.put(tag);
+        if ((tag & explicitPoint) != 0) {
+            out.put(waypoint.x);
+            out.put(waypoint.y);
+        }
+        if ((tag & explicitLandCover) != 0) {
+            out.put(waypoint.classValue);
+            out.put(waypoint.speedMetresPerSecond);
+        }
+        if (!derivedTimes)
+            out.put(waypoint.cumulativeSeconds);
+    }
+}
+
+std::vector<Waypoint> getWaypoints(CompressedReader& in, const CellGraph& graph) {
+    const bool derivedTimes = in.get<std::uint8_t>() != 0;
+    std::vector<Waypoint> waypoints(in.getCount(5));
+    for (Waypoint& waypoint : waypoints) {
+        waypoint.cell = in.get<int>();
+        const auto tag = in.get<std::uint8_t>();
+        const bool inGraph = waypoint.cell >= 0 && static_cast<std::size_t>(waypoint.cell) < graph.size();
+        if (waypoint.cell < -1 ||
+            (!inGraph && (tag & (explicitPoint | explicitLandCover)) != (explicitPoint | explicitLandCover)))
+            throw CompressedReader::DamagedData("a waypoint in no cell");
+        if ((tag & explicitPoint) != 0) {
+            waypoint.x = in.get<double>();
+            waypoint.y = in.get<double>();
+        } else {
+            const MapPoint centre = graph.cell(waypoint.cell).subCellCentre(static_cast<SubCell>(tag & 3U));
+            waypoint.x = centre.x;
+            waypoint.y = centre.y;
+        }
+        if ((tag & explicitLandCover) != 0) {
+            waypoint.classValue = in.get<std::int32_t>();
+            waypoint.speedMetresPerSecond = in.get<double>();
+        } else {
+            waypoint.classValue = graph.cell(waypoint.cell).classValue;
+            waypoint.speedMetresPerSecond = graph.cell(waypoint.cell).speedMetresPerSecond;
+        }
+        if (!derivedTimes)
+            waypoint.cumulativeSeconds = in.get<double>();
+    }
+    if (derivedTimes)
+        fillTimes(waypoints);
+    return waypoints;
+}
+
+void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths, const CellGraph& graph) {
     out.put(static_cast<std::uint64_t>(paths.size()));
     for (const CoveragePath& path : paths) {
         out.put(path.robot);
@@ -165,12 +263,12 @@ void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths) {
         out.put(path.turns);
         out.put(path.repeatedSubCellVisits);
         out.put(static_cast<std::uint8_t>(path.closed));
-        out.putAll(path.waypoints);
+        putWaypoints(out, path.waypoints, graph);
     }
 }
 
-std::vector<CoveragePath> getPaths(CompressedReader& in, std::size_t cells) {
-    std::vector<CoveragePath> paths(in.getCount(37));
+std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph) {
+    std::vector<CoveragePath> paths(in.getCount(38));
     for (CoveragePath& path : paths) {
         path.robot = in.get<int>();
         path.lengthMetres = in.get<double>();
@@ -178,12 +276,9 @@ std::vector<CoveragePath> getPaths(CompressedReader& in, std::size_t cells) {
         path.turns = in.get<int>();
         path.repeatedSubCellVisits = in.get<int>();
         path.closed = in.get<std::uint8_t>() != 0;
-        path.waypoints = in.getAll<Waypoint>();
+        path.waypoints = getWaypoints(in, graph);
         if (path.robot < 0 || static_cast<std::size_t>(path.robot) >= paths.size())
             throw CompressedReader::DamagedData("a path of no robot");
-        for (const Waypoint& waypoint : path.waypoints)
-            if (waypoint.cell < -1 || waypoint.cell >= static_cast<int>(cells))
-                throw CompressedReader::DamagedData("a waypoint in no cell");
     }
     return paths;
 }
@@ -274,7 +369,7 @@ Plan readPlan(CompressedReader& in) {
     plan.regions.robotOfCell = in.getAll<int>();
     plan.regions.startCell = in.getAll<int>();
     plan.regions.costSeconds = in.getAll<double>();
-    plan.paths = getPaths(in, plan.cells.size());
+    plan.paths = getPaths(in, plan.cells);
     checkRegions(plan.regions, plan.cells.size(), plan.paths.size());
     plan.metrics = getMetrics(in);
     plan.issues = getIssues(in);
@@ -320,7 +415,7 @@ Status savePlanFile(const Plan& plan, const std::string& fingerprint, const std:
     out.putAll(plan.regions.robotOfCell);
     out.putAll(plan.regions.startCell);
     out.putAll(plan.regions.costSeconds);
-    putPaths(out, plan.paths);
+    putPaths(out, plan.paths, plan.cells);
     putMetrics(out, plan.metrics);
     putIssues(out, plan.issues);
     out.put(endMarker);
@@ -341,13 +436,15 @@ Result<std::optional<Plan>> loadPlanFile(const std::string& path, const std::str
                                format.substr(0, 40) + "\")");
     if (savedFingerprint != fingerprint)
         return std::optional<Plan>();
-    file.close();
-    auto bytes = internal::readWholeFile(path);
-    if (!bytes)
-        return Loaded::failure(bytes.error());
-    const std::size_t start = header(fingerprint).size();
+    // The rest in one read: the compressed plan, inflated a chunk at a time.
+    const auto start = file.tellg();
+    file.seekg(0, std::ios::end);
+    std::string bytes(static_cast<std::size_t>(file.tellg() - start), '\0');
+    file.seekg(start);
+    if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+        return Loaded::failure(path + ": cannot read the saved plan");
     try {
-        CompressedReader in(std::string_view(bytes.value()).substr(start));
+        CompressedReader in(bytes);
         return std::optional<Plan>(readPlan(in));
     } catch (const CompressedReader::DamagedData& damage) {
         return Loaded::failure(path + ": the saved plan is damaged (" + damage.what() + ")");

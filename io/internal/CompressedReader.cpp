@@ -1,6 +1,5 @@
 #include "io/internal/CompressedReader.hpp"
 
-#include <QByteArray>
 #include <algorithm>
 
 namespace mcpp::io::internal {
@@ -24,16 +23,16 @@ std::size_t CompressedReader::getCount(std::size_t minimumBytes) {
 std::uint64_t CompressedReader::remainingBound() const {
     // Raw bytes left in this chunk plus an upper bound for the rest: a zlib stream inflates at most about
     // 1032 times, and the chunk headers state their raw sizes, which nextChunk checks.
-    return (chunk_.size() - position_) + static_cast<std::uint64_t>(input_.size() - inputPosition_) * 1032U;
+    return (chunkSize() - position_) + static_cast<std::uint64_t>(input_.size() - inputPosition_) * 1032U;
 }
 
 void CompressedReader::take(void* destination, std::size_t bytes) {
     auto* out = static_cast<char*>(destination);
     while (bytes > 0) {
-        if (position_ == chunk_.size())
+        if (position_ == chunkSize())
             nextChunk();
-        const std::size_t available = std::min(bytes, chunk_.size() - position_);
-        std::memcpy(out, chunk_.data() + position_, available);
+        const std::size_t available = std::min(bytes, chunkSize() - position_);
+        std::memcpy(out, chunk_.constData() + position_, available);
         position_ += available;
         out += available;
         bytes -= available;
@@ -50,13 +49,12 @@ void CompressedReader::nextChunk() {
     if (compressedSize > input_.size() - inputPosition_ || rawSize == 0 ||
         rawSize > compressedSize * 1032U + 64U)
         throw DamagedData("a damaged block");
-    const QByteArray inflated = qUncompress(reinterpret_cast<const uchar*>(input_.data() + inputPosition_),
-                                            static_cast<qsizetype>(compressedSize));
-    if (static_cast<std::uint64_t>(inflated.size()) != rawSize)
+    chunk_ = qUncompress(reinterpret_cast<const uchar*>(input_.data() + inputPosition_),
+                         static_cast<qsizetype>(compressedSize));
+    position_ = 0;
+    if (static_cast<std::uint64_t>(chunk_.size()) != rawSize)
         throw DamagedData("a block that does not inflate to its size");
     inputPosition_ += static_cast<std::size_t>(compressedSize);
-    chunk_.assign(inflated.constData(), static_cast<std::size_t>(inflated.size()));
-    position_ = 0;
 }
 
 } // namespace mcpp::io::internal

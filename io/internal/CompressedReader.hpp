@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QByteArray>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -37,16 +38,18 @@ class CompressedReader {
     }
     // A count of items each at least minimumBytes long, checked against what is left.
     std::size_t getCount(std::size_t minimumBytes);
-    [[nodiscard]] bool atEnd() const { return position_ == chunk_.size() && inputPosition_ == input_.size(); }
+    [[nodiscard]] bool atEnd() const { return position_ == chunkSize() && inputPosition_ == input_.size(); }
 
   private:
     void take(void* destination, std::size_t bytes);
     void nextChunk();
     [[nodiscard]] std::uint64_t remainingBound() const;
+    [[nodiscard]] std::size_t chunkSize() const { return static_cast<std::size_t>(chunk_.size()); }
 
     std::string_view input_;
     std::size_t inputPosition_ = 0;
-    std::string chunk_;
+    QByteArray chunk_; // the inflated chunk, read in place
+
     std::size_t position_ = 0;
 };
 

@@ -113,6 +113,24 @@ class TestPlanFile : public QObject {
         QCOMPARE(bytesOf(file("again.mcpp-plan")), bytesOf(path));
     }
 
+    void waypointsOffTheGridComeBackAsTheyWere() {
+        // Most waypoints are saved as a cell and a sub-cell; these are not and must come back exactly.
+        Plan plan = plannedMap();
+        std::vector<Waypoint>& first = plan.paths[0].waypoints;
+        QVERIFY(first.size() > 10);
+        first[3].x += 0.123;                                 // not a sub-cell centre
+        first[5].classValue = 4711;                          // another land cover than its cell's
+        first[6].speedMetresPerSecond *= 0.5;                // another speed
+        first[7].cell = -1;                                  // in no cell
+        plan.paths[1].waypoints[4].cumulativeSeconds += 1.0; // times that do not follow from the path
+        const std::string path = file("unusual.mcpp-plan");
+        QVERIFY(io::savePlanFile(plan, "inputs-a", path).ok());
+        auto loaded = io::loadPlanFile(path, "inputs-a");
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        for (std::size_t robot = 0; robot < plan.paths.size(); ++robot)
+            QVERIFY(sameWaypoints(loaded.value()->paths[robot].waypoints, plan.paths[robot].waypoints));
+    }
+
     void otherInputsAreNotRestored() {
         const std::string path = file("other.mcpp-plan");
         QVERIFY(io::savePlanFile(plannedMap(), "inputs-a", path).ok());
