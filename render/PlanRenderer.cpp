@@ -290,6 +290,12 @@ QTransform PlanRenderer::fitTransform(const ClassGrid& grid, const QSizeF& size,
 }
 
 void PlanRenderer::paint(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const {
+    paintMap(painter, worldToDevice, deviceArea);
+    paintStartMarkers(painter, worldToDevice);
+}
+
+void PlanRenderer::paintMap(QPainter& painter, const QTransform& worldToDevice,
+                            const QRectF& deviceArea) const {
     painter.save();
     painter.setTransform(QTransform());
     if (layers_.landCover)
@@ -309,8 +315,15 @@ void PlanRenderer::paint(QPainter& painter, const QTransform& worldToDevice, con
             paintPaths(painter, worldToDevice, deviceArea);
         painter.setOpacity(1.0);
     }
-    if (layers_.starts)
-        paintStarts(painter, worldToDevice);
+    painter.restore();
+}
+
+void PlanRenderer::paintStartMarkers(QPainter& painter, const QTransform& worldToDevice) const {
+    if (!layers_.starts)
+        return;
+    painter.save();
+    painter.setTransform(QTransform());
+    paintStarts(painter, worldToDevice);
     painter.restore();
 }
 

@@ -43,6 +43,10 @@ class PlanRenderer {
     // Draws everything visible inside deviceArea (device pixels). worldToDevice must be an axis-aligned
     // scale with y flipped (map north up) plus a translation.
     void paint(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    // The two parts of paint: the map (land cover and plan layers), which a view may keep as an image
+    // while the starts above it move, and the start markers.
+    void paintMap(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintStartMarkers(QPainter& painter, const QTransform& worldToDevice) const;
 
     // The transform that fits the grid into a device area of `size`, centred, keeping aspect.
     [[nodiscard]] static QTransform fitTransform(const ClassGrid& grid, const QSizeF& size,

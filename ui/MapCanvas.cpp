@@ -17,6 +17,8 @@ namespace {
 constexpr double kMarkerHitRadiusPixels = 13.0;
 constexpr double kDragThresholdPixels = 4.0;
 constexpr double kScaleBarTargetPixels = 130.0;
+// How long the view must rest after a zoom or pan step before the map is drawn afresh.
+constexpr int kRedrawAfterMilliseconds = 150;
 
 } // namespace
 
@@ -26,6 +28,9 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
     setFocusPolicy(Qt::StrongFocus);
     setAttribute(Qt::WA_OpaquePaintEvent);
     setMinimumSize(200, 150);
+    redrawTimer_.setSingleShot(true);
+    redrawTimer_.setInterval(kRedrawAfterMilliseconds);
+    connect(&redrawTimer_, &QTimer::timeout, this, qOverload<>(&QWidget::update));
     connect(document_, &MissionDocument::mapChanged, this, [this] {
         refreshMap();
         fitPending_ = true;
@@ -39,10 +44,12 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
     });
     connect(document_, &MissionDocument::planChanged, this, [this] {
         renderer_.setPlan(document_->plan());
+        mapImage_.invalidate();
         update();
     });
     connect(document_, &MissionDocument::staleChanged, this, [this](bool stale) {
         renderer_.setPlanStale(stale);
+        mapImage_.invalidate();
         update();
     });
     refreshMap();
@@ -55,6 +62,7 @@ void MapCanvas::refreshMap() {
     if (renderer_.plan() != document_->plan())
         renderer_.setPlan(document_->plan());
     renderer_.setPlanStale(document_->planStale());
+    mapImage_.invalidate();
     refreshStarts();
 }
 
@@ -73,6 +81,7 @@ void MapCanvas::setTool(Tool tool) {
 
 void MapCanvas::setLayers(const render::MapLayers& layers) {
     renderer_.setLayers(layers);
+    mapImage_.invalidate();
     update();
 }
 
@@ -133,7 +142,16 @@ void MapCanvas::zoomAround(QPointF devicePoint, double factor) {
     // Keep the map point under the cursor where it was.
     centre_ = {anchor.x - (devicePoint.x() - width() / 2.0) / scale_,
                anchor.y + (devicePoint.y() - height() / 2.0) / scale_};
+    viewMoved();
+}
+
+void MapCanvas::viewMoved() {
+    redrawTimer_.start();
     update();
+}
+
+bool MapCanvas::isViewMoving() const {
+    return redrawTimer_.isActive();
 }
 
 double MapCanvas::scaleBarMetres() const {
@@ -173,7 +191,7 @@ void MapCanvas::resizeEvent(QResizeEvent* event) {
         zoomToFit();
 }
 
-void MapCanvas::paintEvent(QPaintEvent* event) {
+void MapCanvas::paintEvent(QPaintEvent* /*event*/) {
     QPainter painter(this);
     painter.fillRect(rect(), QColor(232, 232, 228));
     if (!document_->hasMap()) {
@@ -187,7 +205,13 @@ void MapCanvas::paintEvent(QPaintEvent* event) {
                "here, or choose Help ▸ Open sample mission."));
         return;
     }
-    renderer_.paint(painter, worldToDevice(), QRectF(event->rect()));
+    // While the view moves, the last drawing stands in, scaled and shifted; the map is drawn afresh when
+    // the view rests or what it shows changes.
+    const QTransform view = worldToDevice();
+    if (!mapImage_.fits(view, size(), devicePixelRatioF()) && !(mapImage_.canPreview() && isViewMoving()))
+        mapImage_.render(renderer_, view, size(), devicePixelRatioF());
+    mapImage_.draw(painter, view);
+    renderer_.paintStartMarkers(painter, view);
     paintScaleBar(painter);
     paintNorthArrow(painter);
     if (document_->planStale())
@@ -251,7 +275,7 @@ void MapCanvas::mouseMoveEvent(QMouseEvent* event) {
         const QPointF delta = position - lastPosition_;
         centre_.x -= delta.x() / scale_;
         centre_.y += delta.y() / scale_;
-        update();
+        viewMoved();
     } else if (gesture_ == Gesture::DragStart && farEnough) {
         dragPoint_ = mapPointAt(position);
         refreshStarts();

@@ -3,9 +3,11 @@
 #include "core/model/MapPoint.hpp"
 #include "render/MapLayers.hpp"
 #include "render/PlanRenderer.hpp"
+#include "ui/MapImageCache.hpp"
 
 #include <QPoint>
 #include <QPointF>
+#include <QTimer>
 #include <QWidget>
 #include <optional>
 
@@ -38,6 +40,8 @@ class MapCanvas : public QWidget {
     [[nodiscard]] QTransform worldToDevice() const;
     // The length shown by the scale bar, in metres.
     [[nodiscard]] double scaleBarMetres() const;
+    // A zoom or pan step was taken recently: the map shows its last drawing, scaled, until the view rests.
+    [[nodiscard]] bool isViewMoving() const;
 
     QSize sizeHint() const override { return {900, 700}; }
 
@@ -68,6 +72,7 @@ class MapCanvas : public QWidget {
     void refreshMap();
     void refreshStarts();
     void zoomAround(QPointF devicePoint, double factor);
+    void viewMoved();
     [[nodiscard]] int startAt(QPointF devicePoint) const;
     void paintScaleBar(QPainter& painter) const;
     void paintNorthArrow(QPainter& painter) const;
@@ -76,6 +81,8 @@ class MapCanvas : public QWidget {
 
     MissionDocument* document_;
     render::PlanRenderer renderer_;
+    MapImageCache mapImage_;
+    QTimer redrawTimer_;
     Tool tool_ = Tool::Pan;
     double scale_ = 1.0; // device pixels per metre
     MapPoint centre_;

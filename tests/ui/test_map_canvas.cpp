@@ -111,6 +111,47 @@ class TestMapCanvas : public QObject {
         QCOMPARE(removed.count(), 1);
     }
 
+    void zoomStepsShowTheLastDrawingScaledUntilTheViewRests() {
+        // Grass on the west half, water on the east: the border is the thing to follow.
+        auto raster = squareRaster();
+        for (int row = 0; row < 50; ++row)
+            for (int column = 50; column < 100; ++column)
+                raster->grid.values[static_cast<std::size_t>(row * 100 + column)] = 2;
+        io::Mission mission;
+        mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 2.0, 30.0, true},
+                                      LandCoverClass{2, "Water", 0x2040a0, 0.0, 30.0, false}});
+        document_->reset(raster, mission, QString());
+        canvas_->zoomToFit();
+        const auto colourAt = [&](QPointF point) {
+            return canvas_->grab().toImage().pixelColor(point.toPoint());
+        };
+        const QPointF border = canvas_->devicePointOf({501500.0, 4099250.0});
+        const QPointF cursor = border - QPointF(40, 0); // on grass, 40 px west of the border
+        const QPointF probe = border + QPointF(8, 0);   // on water, just east of it
+        QCOMPARE(colourAt(probe), QColor(0x2040a0));
+
+        // Zoomed in twice around the cursor: the border moves east past the probe. Straight after the
+        // steps the view still moves, and the last drawing, scaled, already shows it there.
+        QWheelEvent wheel(cursor, canvas_->mapToGlobal(cursor), QPoint(), QPoint(0, 240), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(canvas_.get(), &wheel);
+        QVERIFY(canvas_->isViewMoving());
+        QVERIFY(canvas_->devicePointOf({501500.0, 4099250.0}).x() > probe.x() + 4.0);
+        QCOMPARE(colourAt(probe), QColor(0x80c080));
+        QVERIFY(canvas_->isViewMoving());
+        // Once the view rests the map is drawn afresh at the new view, with the same result.
+        QTRY_VERIFY_WITH_TIMEOUT(!canvas_->isViewMoving(), 2000);
+        QCOMPARE(colourAt(probe), QColor(0x80c080));
+
+        // A change of what is shown is never previewed from the old drawing: layers off while the view
+        // moves leave the background at once.
+        QApplication::sendEvent(canvas_.get(), &wheel);
+        QVERIFY(canvas_->isViewMoving());
+        render::MapLayers none{false, false, false, false, false, false};
+        canvas_->setLayers(none);
+        QCOMPARE(colourAt(cursor), QColor(232, 232, 228));
+    }
+
     void scaleBarIsARoundNumber() {
         const double metres = canvas_->scaleBarMetres();
         const double mantissa = metres / std::pow(10.0, std::floor(std::log10(metres)));
