@@ -10,6 +10,7 @@ struct MapLayers {
     bool paths = true;
     bool starts = true;
     bool unreachable = true;
+    bool crossings = true; // cells whose path crosses small impassable patches
 
     friend bool operator==(const MapLayers&, const MapLayers&) = default;
 };

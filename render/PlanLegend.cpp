@@ -85,6 +85,11 @@ void paintSymbol(QPainter& painter, const LegendItem& item, const QRectF& box) {
         painter.setBrush(QBrush(QColor(140, 0, 0, 220), Qt::BDiagPattern));
         painter.drawRect(swatch);
         break;
+    case LegendSymbol::Crossing:
+        painter.setPen(QPen(RobotPalette::crossingColour(), 1.0, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(swatch.adjusted(1.0, 1.0, -1.0, -1.0));
+        break;
     case LegendSymbol::CellOutline:
         painter.setPen(QPen(item.colour, 1.0));
         painter.setBrush(Qt::NoBrush);
@@ -133,6 +138,14 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
                  {},
                  QStringLiteral("Unreachable: %1")
                      .arg(QString::fromStdString(formatArea(plan->metrics.unreachableAreaSquareMetres))),
+                 {}});
+        const auto& cells = plan->cells.cells();
+        if (std::any_of(cells.begin(), cells.end(),
+                        [](const Cell& cell) { return cell.crossesImpassableLand(); }))
+            overlays.items.push_back(
+                {LegendSymbol::Crossing,
+                 {},
+                 QStringLiteral("Path crosses some impassable land (within the blocked threshold)"),
                  {}});
         sections.push_back(std::move(overlays));
     }

@@ -13,7 +13,16 @@
 namespace mcpp::render {
 
 // How a legend line shows its colour: as the map draws that thing.
-enum class LegendSymbol { Swatch, Obstacle, RegionTint, PathLine, StartMarker, Unreachable, CellOutline };
+enum class LegendSymbol {
+    Swatch,
+    Obstacle,
+    RegionTint,
+    PathLine,
+    StartMarker,
+    Unreachable,
+    CellOutline,
+    Crossing
+};
 
 struct LegendItem {
     LegendSymbol symbol = LegendSymbol::Swatch;

@@ -178,6 +178,12 @@ void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     plan_ = plan;
     prepareRegions(outlines);
     preparePaths();
+    crossingCells_.clear();
+    if (plan_ == nullptr)
+        return;
+    for (const Cell& cell : plan_->cells.cells())
+        if (cell.crossesImpassableLand())
+            crossingCells_.emplace_back(cell.minX, cell.minY, cell.size, cell.size);
 }
 
 void PlanRenderer::prepareRegions(const RegionOutlines* given) {
@@ -311,6 +317,8 @@ void PlanRenderer::paintMap(QPainter& painter, const QTransform& worldToDevice,
             paintQuadTree(painter, worldToDevice, deviceArea);
         if (layers_.regions)
             paintRegionBorders(painter, worldToDevice, deviceArea);
+        if (layers_.crossings)
+            paintCrossings(painter, worldToDevice, deviceArea);
         if (layers_.paths)
             paintPaths(painter, worldToDevice, deviceArea);
         painter.setOpacity(1.0);
@@ -482,6 +490,22 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
             drawPolylineInPieces(painter, run);
             drawArrows(painter, run, colour);
         }
+    }
+}
+
+void PlanRenderer::paintCrossings(QPainter& painter, const QTransform& worldToDevice,
+                                  const QRectF& deviceArea) const {
+    // Zoomed out, the marks would cover the map in dashes: they show once a cell is a few pixels wide.
+    constexpr double smallestPixels = 6.0;
+    const double pixelsPerMetre = std::abs(worldToDevice.m11());
+    const QRectF visible = worldToDevice.inverted().mapRect(deviceArea);
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    painter.setPen(QPen(RobotPalette::crossingColour(), 1.0, Qt::DashLine));
+    painter.setBrush(Qt::NoBrush);
+    for (const QRectF& cell : crossingCells_) {
+        if (cell.width() * pixelsPerMetre < smallestPixels || !cell.intersects(visible))
+            continue;
+        painter.drawRect(worldToDevice.mapRect(cell).adjusted(1.5, 1.5, -1.5, -1.5));
     }
 }
 

@@ -85,12 +85,14 @@ class PlanRenderer {
     void paintUnreachable(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintQuadTree(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintPaths(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintCrossings(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
 
     std::vector<GridImage> landCoverPyramid_; // halved again and again, for zoomed-out views
     std::vector<GridImage> regionPyramid_;
     std::vector<Outline> regionBorders_;
     std::vector<Outline> unreachableOutlines_;
+    std::vector<QRectF> crossingCells_; // world rectangles of cells whose path crosses impassable land
     std::vector<PathLine> pathLines_;
     double meanStepMetres_ = 0.0; // mean distance between consecutive waypoints
     const ClassGrid* grid_ = nullptr;

@@ -11,6 +11,8 @@ class RobotPalette {
     [[nodiscard]] static int size();
     // Outline colour for quadtree cells of a level (1 = top), from a dark-to-light ramp.
     [[nodiscard]] static QColor levelColour(int level, int levels);
+    // Dashes around cells whose path crosses impassable land: dark red, like the unreachable hatching.
+    [[nodiscard]] static QColor crossingColour() { return {150, 0, 20}; }
 };
 
 } // namespace mcpp::render

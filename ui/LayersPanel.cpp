@@ -21,6 +21,9 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
                         tr("Numbered start markers; drag to move"));
     unreachable_ = addToggle(QStringLiteral("layerUnreachable"), tr("Unreachable"),
                              tr("Hatched: passable cells no robot can reach"));
+    crossings_ = addToggle(QStringLiteral("layerCrossings"), tr("Obstacles crossed"),
+                           tr("Dashed: cells with some impassable land that the path crosses, as the "
+                              "blocked threshold allows; hover over one for the figures"));
     layout->addStretch(1);
 }
 
@@ -42,19 +45,22 @@ render::MapLayers LayersPanel::layers() const {
     layers.paths = paths_->isChecked();
     layers.starts = starts_->isChecked();
     layers.unreachable = unreachable_->isChecked();
+    layers.crossings = crossings_->isChecked();
     return layers;
 }
 
 void LayersPanel::setLayers(const render::MapLayers& layers) {
     const QSignalBlocker blockers[] = {QSignalBlocker(landCover_), QSignalBlocker(quadTree_),
                                        QSignalBlocker(regions_),   QSignalBlocker(paths_),
-                                       QSignalBlocker(starts_),    QSignalBlocker(unreachable_)};
+                                       QSignalBlocker(starts_),    QSignalBlocker(unreachable_),
+                                       QSignalBlocker(crossings_)};
     landCover_->setChecked(layers.landCover);
     quadTree_->setChecked(layers.quadTree);
     regions_->setChecked(layers.regions);
     paths_->setChecked(layers.paths);
     starts_->setChecked(layers.starts);
     unreachable_->setChecked(layers.unreachable);
+    crossings_->setChecked(layers.crossings);
     emit layersChanged(this->layers());
 }
 

@@ -29,6 +29,7 @@ class LayersPanel : public QWidget {
     QCheckBox* paths_;
     QCheckBox* starts_;
     QCheckBox* unreachable_;
+    QCheckBox* crossings_;
 };
 
 } // namespace mcpp::ui

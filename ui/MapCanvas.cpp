@@ -1,11 +1,14 @@
 #include "ui/MapCanvas.hpp"
 
 #include "render/MapDecorations.hpp"
+#include "ui/CellToolTip.hpp"
 #include "ui/MissionDocument.hpp"
 
+#include <QHelpEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolTip>
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
@@ -189,6 +192,18 @@ void MapCanvas::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     if (fitPending_)
         zoomToFit();
+}
+
+bool MapCanvas::event(QEvent* event) {
+    if (event->type() != QEvent::ToolTip || !document_->hasMap())
+        return QWidget::event(event);
+    const auto* help = static_cast<QHelpEvent*>(event);
+    const QString text = cellToolTip(*document_, mapPointAt(help->pos()));
+    if (text.isEmpty())
+        QToolTip::hideText();
+    else
+        QToolTip::showText(help->globalPos(), text, this);
+    return true;
 }
 
 void MapCanvas::paintEvent(QPaintEvent* /*event*/) {

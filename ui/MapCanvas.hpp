@@ -59,6 +59,7 @@ class MapCanvas : public QWidget {
     void selectedStartChanged(int robot);
 
   protected:
+    bool event(QEvent* event) override;
     void paintEvent(QPaintEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;

@@ -63,6 +63,27 @@ bool near(QColor actual, QColor expected, int tolerance = 8) {
            std::abs(actual.blue() - expected.blue()) <= tolerance;
 }
 
+// Scattered water pixels on grass, sub-cells of 2 x 2 pixels: a sub-cell with one water pixel in four is
+// kept (25 % < the 50 % blocked threshold), so the path crosses water there.
+struct CrossingScene {
+    PlanningProblem problem;
+    Plan plan;
+};
+
+CrossingScene crossingScene() {
+    test::RandomMapSpec spec;
+    spec.columns = 24;
+    spec.rows = 24;
+    spec.obstacleFraction = 0.04;
+    spec.fovPixels = 2.0;
+    spec.robots = 2;
+    spec.seed = 5;
+    CrossingScene scene{test::randomProblem(spec), {}};
+    scene.problem.planner = defaultPlannerChoice("mcpp-mlct");
+    scene.plan = makePlanner("mcpp-mlct")->plan(scene.problem, {});
+    return scene;
+}
+
 } // namespace
 
 class TestPlanRenderer : public QObject {
@@ -238,6 +259,42 @@ class TestPlanRenderer : public QObject {
         QVERIFY(text.contains("<svg"));
         for (const char* words : {"Water (obstacle)", "Meadow", "Scout", "1 h 30 min", "Coverage plan: test"})
             QVERIFY2(text.contains(words), words);
+    }
+
+    void marksCellsWhosePathCrossesImpassableLand() {
+        const CrossingScene scene = crossingScene();
+        const auto& cells = scene.plan.cells.cells();
+        const auto crossing = std::count_if(cells.begin(), cells.end(),
+                                            [](const Cell& cell) { return cell.crossesImpassableLand(); });
+        QVERIFY2(crossing > 0, "the scene should have cells with some water in their free sub-cells");
+        const auto countDashes = [&](bool layerOn) {
+            render::PlanRenderer renderer;
+            renderer.setMap(&scene.problem.grid, &scene.problem.classes);
+            renderer.setPlan(&scene.plan);
+            render::MapLayers layers{false, false, false, false, false, false, layerOn};
+            renderer.setLayers(layers);
+            QImage image(960, 960, QImage::Format_ARGB32_Premultiplied);
+            image.fill(Qt::white);
+            QPainter painter(&image);
+            renderer.paint(painter,
+                           render::PlanRenderer::fitTransform(scene.problem.grid, QSizeF(image.size())),
+                           QRectF(0, 0, 960, 960));
+            painter.end();
+            int dashes = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    dashes +=
+                        near(image.pixelColor(x, y), render::RobotPalette::crossingColour(), 20) ? 1 : 0;
+            return dashes;
+        };
+        QVERIFY(countDashes(true) > 20 * crossing);
+        QCOMPARE(countDashes(false), 0);
+        // The legend says what the dashes mean.
+        const auto sections = render::planLegend(scene.problem.classes, &scene.plan, {});
+        const auto& overlays = sections.back().items;
+        QVERIFY(std::any_of(overlays.begin(), overlays.end(), [](const render::LegendItem& item) {
+            return item.symbol == render::LegendSymbol::Crossing;
+        }));
     }
 
     void legendListsClassesRobotsAndOverlays() {

@@ -1,3 +1,6 @@
+#include "core/planners/PlannerRegistry.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+#include "ui/CellToolTip.hpp"
 #include "ui/MapCanvas.hpp"
 #include "ui/MissionDocument.hpp"
 
@@ -147,9 +150,55 @@ class TestMapCanvas : public QObject {
         // moves leave the background at once.
         QApplication::sendEvent(canvas_.get(), &wheel);
         QVERIFY(canvas_->isViewMoving());
-        render::MapLayers none{false, false, false, false, false, false};
+        render::MapLayers none{false, false, false, false, false, false, false};
         canvas_->setLayers(none);
         QCOMPARE(colourAt(cursor), QColor(232, 232, 228));
+    }
+
+    void toolTipExplainsCellsWhosePathCrossesWater() {
+        // Scattered water pixels; sub-cells of 2 x 2 pixels keep one water pixel in four (blocked threshold).
+        test::RandomMapSpec spec;
+        spec.columns = 24;
+        spec.rows = 24;
+        spec.obstacleFraction = 0.04;
+        spec.fovPixels = 2.0;
+        spec.seed = 5;
+        PlanningProblem problem = test::randomProblem(spec);
+        problem.planner = defaultPlannerChoice("mcpp-mlct");
+        auto raster = std::make_shared<io::LoadedRaster>();
+        raster->grid = problem.grid;
+        io::Mission mission;
+        mission.classes = problem.classes;
+        mission.robots = {{"Scout", problem.starts[0], ""}, {"", problem.starts[1], ""}};
+        document_->reset(raster, mission, QString());
+        document_->setPlan(std::make_shared<const Plan>(makePlanner("mcpp-mlct")->plan(problem, {})),
+                           document_->currentInputs());
+        const Plan& plan = *document_->plan();
+        int crossing = -1;
+        int plain = -1;
+        for (std::size_t id = 0; id < plan.cells.size(); ++id) {
+            const Cell& cell = plan.cells.cell(static_cast<int>(id));
+            if (plan.regions.robotOfCell[id] < 0)
+                continue;
+            if (cell.crossesImpassableLand() && crossing < 0)
+                crossing = static_cast<int>(id);
+            if (cell.impassableFraction() == 0.0 && plain < 0)
+                plain = static_cast<int>(id);
+        }
+        QVERIFY(crossing >= 0 && plain >= 0);
+        const Cell& cell = plan.cells.cell(crossing);
+        const QString text = ui::cellToolTip(*document_, {cell.centreX(), cell.centreY()});
+        QVERIFY2(text.contains(QStringLiteral("impassable (water)")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("50% of them (Blocked threshold)")), qPrintable(text));
+        const int owner = plan.regions.robotOfCell[static_cast<std::size_t>(crossing)];
+        QVERIFY(text.contains(owner == 0 ? QStringLiteral("Scout (robot 1)")
+                                         : QStringLiteral("Robot 2 (robot 2)")));
+        const Cell& other = plan.cells.cell(plain);
+        const QString plainText = ui::cellToolTip(*document_, {other.centreX(), other.centreY()});
+        QVERIFY(plainText.startsWith(QStringLiteral("Covered by")));
+        QVERIFY(!plainText.contains(QStringLiteral("impassable")));
+        // Off the plan's cells there is nothing to say.
+        QVERIFY(ui::cellToolTip(*document_, {problem.grid.originX - 50.0, problem.grid.originY}).isEmpty());
     }
 
     void scaleBarIsARoundNumber() {
