@@ -1,6 +1,7 @@
 #include "io/AreaOfInterest.hpp"
 
 #include "core/model/HumanUnits.hpp"
+#include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
 
 #include <gdal_alg.h>
@@ -158,6 +159,35 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
     raster.warnings.push_back("area of interest: planning on " +
                               formatArea(static_cast<double>(inside) * pixelArea) + " of the map");
     return {};
+}
+
+Status writeAreaPolygons(const std::string& path, const std::vector<std::vector<MapPoint>>& rings,
+                         const GeoReference& georeference) {
+    internal::ensureGdalRegistered();
+    const QuietGdalErrors quiet;
+    internal::DatasetFile file(path);
+    if (Status status = file.create("GeoJSON", 0, 0, 0, GDT_Unknown); !status)
+        return status;
+    std::unique_ptr<OGRSpatialReference> crs;
+    if (georeference.hasCrs())
+        crs = internal::spatialReferenceFromDefinition(georeference.wkt());
+    OGRLayer* layer = file.dataset().CreateLayer("area", crs.get(), wkbPolygon, nullptr);
+    if (layer == nullptr)
+        return Status::failure(path + ": cannot create the layer" + QuietGdalErrors::detail());
+    const double metresPerUnit = georeference.metresPerUnit();
+    for (const std::vector<MapPoint>& corners : rings) {
+        auto ring = std::make_unique<OGRLinearRing>();
+        for (const MapPoint& corner : corners)
+            ring->addPoint(corner.x / metresPerUnit, corner.y / metresPerUnit);
+        ring->closeRings();
+        OGRPolygon polygon;
+        polygon.addRingDirectly(ring.release());
+        OGRFeature feature(layer->GetLayerDefn());
+        feature.SetGeometry(&polygon);
+        if (layer->CreateFeature(&feature) != OGRERR_NONE)
+            return Status::failure(path + ": cannot write a polygon" + QuietGdalErrors::detail());
+    }
+    return file.commit();
 }
 
 } // namespace mcpp::io

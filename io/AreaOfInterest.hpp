@@ -1,9 +1,12 @@
 #pragma once
 
+#include "core/model/MapPoint.hpp"
+#include "io/GeoReference.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Result.hpp"
 
 #include <string>
+#include <vector>
 
 namespace mcpp::io {
 
@@ -14,5 +17,11 @@ namespace mcpp::io {
 // how much of the map is left. Errors name the file and what is wrong with it.
 [[nodiscard]] Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
                                          const std::string& excludePath);
+
+// Writes polygons drawn on the map (rings of corners in the planning frame, metres) as a GeoJSON file in the
+// planning CRS, for a mission's area.include or area.exclude to name. Written atomically.
+[[nodiscard]] Status writeAreaPolygons(const std::string& path,
+                                       const std::vector<std::vector<MapPoint>>& rings,
+                                       const GeoReference& georeference);
 
 } // namespace mcpp::io

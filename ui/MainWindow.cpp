@@ -2,6 +2,7 @@
 
 #include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
+#include "io/AreaOfInterest.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "io/MissionInputs.hpp"
@@ -51,6 +52,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QStandardItemModel>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableView>
 #include <QTimer>
@@ -456,8 +458,32 @@ void MainWindow::createActions() {
     placeToolAction_->setCheckable(true);
     placeToolAction_->setShortcut(QKeySequence(Qt::Key_S));
     placeToolAction_->setToolTip(tr("Click on the map to add a robot start there (S)"));
+    drawAreaAction_ = planMenu->addAction(tr("&Draw area of interest"));
+    drawAreaAction_->setObjectName(QStringLiteral("drawAreaAction"));
+    drawAreaAction_->setCheckable(true);
+    drawAreaAction_->setToolTip(tr(
+        "Click the corners of the area to plan on the map and double-click to finish, or drag a rectangle"));
+    drawNoGoAction_ = planMenu->addAction(tr("Draw &no-go zone"));
+    drawNoGoAction_->setObjectName(QStringLiteral("drawNoGoAction"));
+    drawNoGoAction_->setCheckable(true);
+    drawNoGoAction_->setToolTip(
+        tr("Click the corners of a zone to leave out and double-click to finish, or drag a rectangle"));
     tools->addAction(panToolAction_);
     tools->addAction(placeToolAction_);
+    tools->addAction(drawAreaAction_);
+    tools->addAction(drawNoGoAction_);
+    for (QAction* draw : {drawAreaAction_, drawNoGoAction_}) {
+        connect(draw, &QAction::toggled, this, [this](bool on) {
+            if (!on)
+                return;
+            canvas_->setTool(MapCanvas::Tool::DrawArea);
+            showStatus(
+                tr("Click the corners on the map, then double-click or press Enter to finish; or drag a "
+                   "rectangle. Backspace takes back a corner, Esc starts again."),
+                0);
+        });
+    }
+    connect(canvas_, &MapCanvas::areaDrawn, this, &MainWindow::useDrawnArea);
     connect(panToolAction_, &QAction::toggled, this, [this](bool on) {
         if (on)
             canvas_->setTool(MapCanvas::Tool::Pan);
@@ -1028,6 +1054,8 @@ bool MainWindow::saveMission(const QString& path) {
         reportError(tr("Cannot save mission"), tr("Open a raster before saving a mission."));
         return false;
     }
+    if (!keepDrawnAreasBeside(path))
+        return false;
     io::Mission mission = document_->mission();
     // Relative to the mission's folder so the pair can be moved together.
     const QString rasterAbsolute =
@@ -1101,6 +1129,80 @@ QString MainWindow::restorePlanBeside(const QString& missionPath, const std::str
     const double makespan = plan->metrics.makespanSeconds;
     document_->setPlan(std::move(plan), document_->currentInputs());
     return tr(" Restored its saved plan (makespan %1).").arg(ResultsPanel::formatDuration(makespan));
+}
+
+QString MainWindow::drawnAreaPath(bool exclude) const {
+    const QString suffix = exclude ? QStringLiteral("-no-go.geojson") : QStringLiteral("-area.geojson");
+    const QString current = QString::fromStdString(exclude ? document_->mission().area.excludePath
+                                                           : document_->mission().area.includePath);
+    QString folder;
+    QString base;
+    if (!document_->missionPath().isEmpty()) {
+        folder = QFileInfo(document_->missionPath()).absolutePath();
+        base = QFileInfo(document_->missionPath()).completeBaseName();
+    } else {
+        folder = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                 QStringLiteral("/drawn-areas");
+        QDir().mkpath(folder);
+        base = QFileInfo(QString::fromStdString(document_->raster()->path)).completeBaseName();
+    }
+    // Never over a file the user made: the name of the drawn file in use, or one not taken yet.
+    QString path = QDir(folder).filePath(base + suffix);
+    for (int number = 2; QFileInfo::exists(path) && QFileInfo(path).absoluteFilePath() != current; ++number)
+        path = QDir(folder).filePath(base + QStringLiteral("-%1").arg(number) + suffix);
+    return path;
+}
+
+void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
+    const bool exclude = drawNoGoAction_->isChecked();
+    panToolAction_->setChecked(true);
+    if (!document_->hasMap())
+        return;
+    const io::AreaOfInterest area = document_->mission().area;
+    const QString path = drawnAreaPath(exclude);
+    // No-go zones add up while the drawn file is in use; an area of interest replaces the last one.
+    std::vector<std::vector<MapPoint>> rings{ring};
+    if (exclude) {
+        if (QFileInfo(QString::fromStdString(area.excludePath)).absoluteFilePath() != path)
+            drawnNoGoZones_.clear();
+        drawnNoGoZones_.push_back(ring);
+        rings = drawnNoGoZones_;
+    }
+    const io::Status written =
+        io::writeAreaPolygons(path.toStdString(), rings, document_->raster()->georeference);
+    if (!written.ok()) {
+        reportError(tr("Cannot use the area"), QString::fromStdString(written.error()));
+        return;
+    }
+    if (exclude)
+        setAreaFiles(QString::fromStdString(area.includePath), path);
+    else
+        setAreaFiles(path, QString::fromStdString(area.excludePath));
+}
+
+bool MainWindow::keepDrawnAreasBeside(const QString& missionPath) {
+    const QString drawnFolder =
+        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/drawn-areas/");
+    io::AreaOfInterest area = document_->mission().area;
+    const QString folder = QFileInfo(missionPath).absolutePath();
+    const QString base = QFileInfo(missionPath).completeBaseName();
+    for (auto [path, suffix] : {std::pair{&area.includePath, QStringLiteral("-area.geojson")},
+                                std::pair{&area.excludePath, QStringLiteral("-no-go.geojson")}}) {
+        const QString current = QString::fromStdString(*path);
+        if (current.isEmpty() || !QFileInfo(current).absoluteFilePath().startsWith(drawnFolder))
+            continue;
+        QString target = QDir(folder).filePath(base + suffix);
+        for (int number = 2; QFileInfo::exists(target); ++number)
+            target = QDir(folder).filePath(base + QStringLiteral("-%1").arg(number) + suffix);
+        if (!QFile::copy(current, target)) {
+            reportError(tr("Cannot save mission"),
+                        tr("Cannot copy the drawn area %1 to %2.").arg(current, target));
+            return false;
+        }
+        *path = target.toStdString();
+    }
+    document_->setAreaPaths(area);
+    return true;
 }
 
 void MainWindow::notePlanToSave() {

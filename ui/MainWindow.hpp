@@ -141,6 +141,12 @@ class MainWindow : public QMainWindow {
     QString restorePlanBeside(const QString& missionPath, const std::string& fingerprint);
     // A new plan of a saved mission makes the mission modified, so that it is saved with the mission.
     void notePlanToSave();
+    // Areas drawn on the map (Plan > Draw area of interest / Draw no-go zone) become GeoJSON files: beside
+    // a saved mission, else in the application's data folder until the mission is saved.
+    void useDrawnArea(const std::vector<MapPoint>& ring);
+    [[nodiscard]] QString drawnAreaPath(bool exclude) const;
+    // Saving a mission copies area files drawn before it had a folder beside it; returns false on failure.
+    bool keepDrawnAreasBeside(const QString& missionPath);
     void showCursor(MapPoint point);
     void handlePlanningFinished(const PlanningOutcome& outcome);
     void handleExportFinished(const ExportOutcome& outcome);
@@ -185,6 +191,9 @@ class MainWindow : public QMainWindow {
     QAction* cancelAction_ = nullptr;
     QAction* panToolAction_ = nullptr;
     QAction* placeToolAction_ = nullptr;
+    QAction* drawAreaAction_ = nullptr;
+    QAction* drawNoGoAction_ = nullptr;
+    std::vector<std::vector<MapPoint>> drawnNoGoZones_; // the polygons of the drawn no-go file
     QAction* removeRobotAction_ = nullptr;
     QList<QAction*> exportActions_;
     QString crsName_;

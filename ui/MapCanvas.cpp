@@ -79,6 +79,9 @@ void MapCanvas::refreshStarts() {
 
 void MapCanvas::setTool(Tool tool) {
     tool_ = tool;
+    drawing_.clear();
+    drawingCursor_.reset();
+    update();
     updateCursor(mapFromGlobal(QCursor::pos()));
 }
 
@@ -182,7 +185,7 @@ void MapCanvas::updateCursor(QPointF devicePoint) {
         setCursor(Qt::SizeAllCursor);
     else if (startAt(devicePoint) >= 0)
         setCursor(Qt::OpenHandCursor);
-    else if (tool_ == Tool::PlaceStart)
+    else if (tool_ == Tool::PlaceStart || tool_ == Tool::DrawArea)
         setCursor(Qt::CrossCursor);
     else
         setCursor(Qt::ArrowCursor);
@@ -227,6 +230,7 @@ void MapCanvas::paintEvent(QPaintEvent* /*event*/) {
         mapImage_.render(renderer_, view, size(), devicePixelRatioF());
     mapImage_.draw(painter, view);
     renderer_.paintStartMarkers(painter, view);
+    paintDrawing(painter);
     paintScaleBar(painter);
     paintNorthArrow(painter);
     if (document_->planStale())
@@ -284,8 +288,15 @@ void MapCanvas::mouseMoveEvent(QMouseEvent* event) {
     if (document_->hasMap())
         emit cursorMoved(mapPointAt(position));
     const bool farEnough = QLineF(position, pressPosition_).length() >= kDragThresholdPixels;
-    if (gesture_ == Gesture::Click && farEnough)
-        gesture_ = Gesture::Pan; // a click that moves becomes a pan
+    if (gesture_ == Gesture::Click && farEnough) {
+        // A click that moves becomes a pan, or a rectangle when drawing an area that has no corner yet.
+        gesture_ = tool_ == Tool::DrawArea && drawing_.empty() ? Gesture::DragRectangle : Gesture::Pan;
+    }
+    if (tool_ == Tool::DrawArea && document_->hasMap()) {
+        drawingCursor_ = mapPointAt(position);
+        if (!drawing_.empty() || gesture_ == Gesture::DragRectangle)
+            update();
+    }
     if (gesture_ == Gesture::Pan) {
         const QPointF delta = position - lastPosition_;
         centre_.x -= delta.x() / scale_;
@@ -310,13 +321,73 @@ void MapCanvas::mouseReleaseEvent(QMouseEvent* event) {
         refreshStarts();
         if (target)
             emit moveStartRequested(robot, *target);
+    } else if (gesture == Gesture::DragRectangle) {
+        const MapPoint a = mapPointAt(pressPosition_);
+        const MapPoint b = mapPointAt(event->position());
+        drawingCursor_.reset();
+        update();
+        emit areaDrawn({{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}});
     } else if (gesture == Gesture::Click && event->button() == Qt::LeftButton && document_->hasMap()) {
-        if (tool_ == Tool::PlaceStart)
+        if (tool_ == Tool::DrawArea) {
+            drawing_.push_back(mapPointAt(event->position()));
+            update();
+        } else if (tool_ == Tool::PlaceStart)
             emit placeStartRequested(mapPointAt(event->position()));
         else
             setSelectedStart(-1);
     }
     updateCursor(event->position());
+}
+
+void MapCanvas::mouseDoubleClickEvent(QMouseEvent* event) {
+    // The double-click's first click has usually added this corner already; finishDrawing drops repeats.
+    if (tool_ == Tool::DrawArea && event->button() == Qt::LeftButton) {
+        gesture_ = Gesture::None;
+        drawing_.push_back(mapPointAt(event->position()));
+        finishDrawing();
+        return;
+    }
+    QWidget::mouseDoubleClickEvent(event);
+}
+
+void MapCanvas::finishDrawing() {
+    std::vector<MapPoint> ring;
+    for (const MapPoint& corner : drawing_)
+        if (ring.empty() || std::hypot(corner.x - ring.back().x, corner.y - ring.back().y) * scale_ >= 1.0)
+            ring.push_back(corner);
+    drawing_.clear();
+    drawingCursor_.reset();
+    update();
+    if (ring.size() >= 3)
+        emit areaDrawn(ring);
+}
+
+void MapCanvas::paintDrawing(QPainter& painter) const {
+    if (tool_ != Tool::DrawArea)
+        return;
+    QPolygonF corners;
+    if (gesture_ == Gesture::DragRectangle && drawingCursor_) {
+        const QPointF a = pressPosition_;
+        const QPointF b = devicePointOf(*drawingCursor_);
+        corners << a << QPointF(b.x(), a.y()) << b << QPointF(a.x(), b.y()) << a;
+    } else {
+        for (const MapPoint& corner : drawing_)
+            corners << devicePointOf(corner);
+        if (drawingCursor_ && !drawing_.empty())
+            corners << devicePointOf(*drawingCursor_) << devicePointOf(drawing_.front());
+    }
+    if (corners.size() < 2)
+        return;
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setPen(QPen(QColor(255, 255, 255, 200), 4.0));
+    painter.drawPolyline(corners);
+    painter.setPen(QPen(QColor(20, 20, 20), 1.5, Qt::DashLine));
+    painter.drawPolyline(corners);
+    painter.setBrush(Qt::white);
+    for (const MapPoint& corner : drawing_)
+        painter.drawEllipse(devicePointOf(corner), 3.0, 3.0);
+    painter.restore();
 }
 
 void MapCanvas::wheelEvent(QWheelEvent* event) {
@@ -327,6 +398,22 @@ void MapCanvas::wheelEvent(QWheelEvent* event) {
 }
 
 void MapCanvas::keyPressEvent(QKeyEvent* event) {
+    if (tool_ == Tool::DrawArea && !drawing_.empty()) {
+        if (event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter) {
+            finishDrawing();
+            return;
+        }
+        if (event->key() == Qt::Key_Backspace) {
+            drawing_.pop_back();
+            update();
+            return;
+        }
+        if (event->key() == Qt::Key_Escape) {
+            drawing_.clear();
+            update();
+            return;
+        }
+    }
     if ((event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace) && selectedStart_ >= 0) {
         emit removeStartRequested(selectedStart_);
         return;

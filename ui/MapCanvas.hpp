@@ -10,6 +10,7 @@
 #include <QTimer>
 #include <QWidget>
 #include <optional>
+#include <vector>
 
 namespace mcpp::ui {
 
@@ -22,7 +23,9 @@ class MapCanvas : public QWidget {
     Q_OBJECT
 
   public:
-    enum class Tool { Pan, PlaceStart };
+    // DrawArea: click the corners of a polygon and double-click (or Enter) to finish it, or drag a
+    // rectangle; Backspace takes back a corner, Escape drops the drawing.
+    enum class Tool { Pan, PlaceStart, DrawArea };
 
     explicit MapCanvas(MissionDocument* document, QWidget* parent = nullptr);
 
@@ -57,6 +60,8 @@ class MapCanvas : public QWidget {
     void moveStartRequested(int robot, mcpp::MapPoint point);
     void removeStartRequested(int robot);
     void selectedStartChanged(int robot);
+    // A polygon drawn with the DrawArea tool, in map coordinates (at least three corners, not closed).
+    void areaDrawn(const std::vector<mcpp::MapPoint>& ring);
 
   protected:
     bool event(QEvent* event) override;
@@ -65,6 +70,7 @@ class MapCanvas : public QWidget {
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
     void leaveEvent(QEvent* event) override;
@@ -79,6 +85,8 @@ class MapCanvas : public QWidget {
     void paintNorthArrow(QPainter& painter) const;
     void paintBanner(QPainter& painter, const QString& text, const QColor& colour) const;
     void updateCursor(QPointF devicePoint);
+    void paintDrawing(QPainter& painter) const;
+    void finishDrawing();
 
     MissionDocument* document_;
     render::PlanRenderer renderer_;
@@ -91,12 +99,15 @@ class MapCanvas : public QWidget {
     int selectedStart_ = -1;
 
     // One press-move-release gesture.
-    enum class Gesture { None, Pan, DragStart, Click };
+    enum class Gesture { None, Pan, DragStart, Click, DragRectangle };
     Gesture gesture_ = Gesture::None;
     QPointF pressPosition_;
     QPointF lastPosition_;
     int draggedStart_ = -1;
     std::optional<MapPoint> dragPoint_;
+    // The polygon being drawn with the DrawArea tool, and the cursor for its next corner.
+    std::vector<MapPoint> drawing_;
+    std::optional<MapPoint> drawingCursor_;
 };
 
 } // namespace mcpp::ui

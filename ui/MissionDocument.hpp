@@ -56,6 +56,8 @@ class MissionDocument : public QObject {
     void setRobots(std::vector<io::RobotSpec> robots);
     void setPlannerChoice(const PlannerChoice& choice);
     void setMissionPath(const QString& path);
+    // The area files' paths only (the same polygons, moved or copied elsewhere): nothing to redraw.
+    void setAreaPaths(const io::AreaOfInterest& area) { mission_.area = area; }
     void setPlan(std::shared_ptr<const Plan> plan, PlanInputs inputs);
 
     // Why a robot cannot start at this point (outside the map, nodata, obstacle class, on another start's

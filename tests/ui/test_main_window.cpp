@@ -585,6 +585,75 @@ class TestMainWindow : public QObject {
         QCOMPARE(insideCount(), whole); // a refused area leaves the map as it was
     }
 
+    // Plan > Draw area of interest and Draw no-go zone: clicked corners and a dragged rectangle limit the map
+    // like area files do, and travel with the mission when it is saved.
+    void areasDrawnOnTheMapLimitThePlan() {
+        QTemporaryDir directory;
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif")));
+        QApplication::processEvents();
+        ui::MapCanvas* canvas = window.canvas();
+        canvas->zoomToFit();
+        const auto insideArea = [&window] {
+            std::int64_t inside = 0;
+            for (const auto& [value, count] : window.document()->raster()->classPixelCounts)
+                inside += count;
+            const ClassGrid& grid = *window.document()->grid();
+            return static_cast<double>(inside) * grid.pixelWidth * grid.pixelHeight;
+        };
+        const auto at = [canvas](double x, double y) { return canvas->devicePointOf({x, y}).toPoint(); };
+
+        // A 20 x 20 km square by its corners, finished with Enter.
+        window.findChild<QAction*>(QStringLiteral("drawAreaAction"))->trigger();
+        QCOMPARE(canvas->tool(), ui::MapCanvas::Tool::DrawArea);
+        for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+                 {305000, 4130000}, {325000, 4130000}, {325000, 4150000}, {305000, 4150000}})
+            QTest::mouseClick(canvas, Qt::LeftButton, {}, at(x, y));
+        QTest::keyClick(canvas, Qt::Key_Return);
+        QCOMPARE(canvas->tool(), ui::MapCanvas::Tool::Pan);
+        const QString drawnArea = QString::fromStdString(window.document()->mission().area.includePath);
+        QVERIFY2(drawnArea.endsWith(QStringLiteral("-area.geojson")), qPrintable(drawnArea));
+        const double square = insideArea();
+        QVERIFY2(std::abs(square - 4e8) / 4e8 < 0.05, qPrintable(QString::number(square)));
+
+        // A 5 x 5 km no-go rectangle dragged inside it.
+        window.findChild<QAction*>(QStringLiteral("drawNoGoAction"))->trigger();
+        QTest::mousePress(canvas, Qt::LeftButton, {}, at(310000, 4140000));
+        QTest::mouseMove(canvas, at(312500, 4137500));
+        QTest::mouseMove(canvas, at(315000, 4135000));
+        QTest::mouseRelease(canvas, Qt::LeftButton, {}, at(315000, 4135000));
+        QVERIFY(!window.document()->mission().area.excludePath.empty());
+        const double cut = square - insideArea();
+        QVERIFY2(std::abs(cut - 2.5e7) / 2.5e7 < 0.1, qPrintable(QString::number(cut)));
+
+        // Saved, the drawn files go beside the mission and the mission names them there.
+        QVERIFY(window.robotTableModel()->addRobot({320000, 4145000}));
+        const QString saved = directory.filePath("survey.json");
+        QVERIFY2(window.saveMission(saved), qPrintable(window.lastError()));
+        QVERIFY(QFileInfo::exists(directory.filePath("survey-area.geojson")));
+        QVERIFY(QFileInfo::exists(directory.filePath("survey-no-go.geojson")));
+        QFile file(saved);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QJsonObject area = QJsonDocument::fromJson(file.readAll()).object().value("area").toObject();
+        QCOMPARE(area.value("include").toString(), QStringLiteral("survey-area.geojson"));
+        QCOMPARE(area.value("exclude").toString(), QStringLiteral("survey-no-go.geojson"));
+        ui::MainWindow reopened;
+        reopened.setDialogsEnabled(false);
+        reopened.setOpenSampleOnFirstStart(false);
+        QVERIFY2(reopened.openMission(saved), qPrintable(reopened.lastError()));
+        std::int64_t inside = 0;
+        for (const auto& [value, count] : reopened.document()->raster()->classPixelCounts)
+            inside += count;
+        QCOMPARE(static_cast<double>(inside) * reopened.document()->grid()->pixelWidth *
+                     reopened.document()->grid()->pixelHeight,
+                 insideArea());
+    }
+
     // A class table loaded from a CSV is neither a preset nor the legend: the preset box says so.
     void presetBoxNamesALoadedTable() {
         QTemporaryDir directory;

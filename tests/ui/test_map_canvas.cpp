@@ -201,6 +201,26 @@ class TestMapCanvas : public QObject {
         QVERIFY(ui::cellToolTip(*document_, {problem.grid.originX - 50.0, problem.grid.originY}).isEmpty());
     }
 
+    void drawsAnAreaByItsCorners() {
+        QSignalSpy drawn(canvas_.get(), &ui::MapCanvas::areaDrawn);
+        canvas_->setTool(ui::MapCanvas::Tool::DrawArea);
+        for (const QPoint corner : {QPoint(100, 100), QPoint(300, 100), QPoint(300, 300), QPoint(250, 280)})
+            QTest::mouseClick(canvas_.get(), Qt::LeftButton, {}, corner);
+        QTest::keyClick(canvas_.get(), Qt::Key_Backspace); // takes back (250, 280)
+        QCOMPARE(drawn.count(), 0);
+        QTest::mouseDClick(canvas_.get(), Qt::LeftButton, {}, QPoint(100, 300));
+        QCOMPARE(drawn.count(), 1);
+        const auto ring = drawn.first().first().value<std::vector<MapPoint>>();
+        QCOMPARE(ring.size(), std::size_t{4});
+        const MapPoint last = canvas_->mapPointAt(QPoint(100, 300));
+        QVERIFY(std::abs(ring.back().x - last.x) < 1e-6 && std::abs(ring.back().y - last.y) < 1e-6);
+        // Two corners make no area.
+        QTest::mouseClick(canvas_.get(), Qt::LeftButton, {}, QPoint(100, 100));
+        QTest::mouseClick(canvas_.get(), Qt::LeftButton, {}, QPoint(200, 100));
+        QTest::keyClick(canvas_.get(), Qt::Key_Return);
+        QCOMPARE(drawn.count(), 1);
+    }
+
     void scaleBarIsARoundNumber() {
         const double metres = canvas_->scaleBarMetres();
         const double mantissa = metres / std::pow(10.0, std::floor(std::log10(metres)));
