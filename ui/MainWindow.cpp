@@ -806,9 +806,23 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
     settingsModified_ = true;
     updateTitle();
     updateActions();
-    showStatus(wholeMap ? tr("Planning on the whole map again.")
-                        : asSentence(warnings.empty() ? std::string() : warnings.back()),
-               15000);
+    QString message = wholeMap ? tr("Planning on the whole map again.")
+                               : asSentence(warnings.empty() ? std::string() : warnings.back());
+    // Starts the new area leaves out are kept, to be moved: say so now rather than at Plan.
+    QStringList outside;
+    for (std::size_t robot = 0; robot < document_->robots().size(); ++robot)
+        if (document_->startProblem(document_->robots()[robot].start, static_cast<int>(robot)))
+            outside << QString::fromStdString(document_->robots()[robot].name);
+    if (outside.size() == 1)
+        message +=
+            QStringLiteral(" ") +
+            tr("%1's start is now outside the task area: move it inside before planning.").arg(outside[0]);
+    else if (outside.size() > 1)
+        message += QStringLiteral(" ") + tr("%1 starts are now outside the task area (%2): move them inside "
+                                            "before planning.")
+                                             .arg(outside.size())
+                                             .arg(outside.join(QStringLiteral(", ")));
+    showStatus(message, 15000);
     return true;
 }
 
