@@ -277,6 +277,8 @@ void MainWindow::createDocks() {
     robotView_->setModel(robotModel_);
     robotView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     robotView_->horizontalHeader()->setStretchLastSection(true);
+    // The colour shows beside the name: the table fits the dock without scrolling sideways.
+    robotView_->hideColumn(RobotTableModel::Colour);
     robotView_->setSelectionBehavior(QAbstractItemView::SelectRows);
     robotView_->setSelectionMode(QAbstractItemView::SingleSelection);
     robotsLayout->addWidget(robotView_, 1);

@@ -35,6 +35,8 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
     case Name:
         if (text)
             return QString::fromStdString(robot.name);
+        if (role == Qt::DecorationRole) // the colour beside the name, as in the results and the legend
+            return render::RobotPalette::colour(index.row());
         break;
     case Colour:
         if (role == Qt::DecorationRole)
@@ -44,11 +46,11 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
         break;
     case Easting:
         if (text)
-            return QString::number(robot.start.x, 'f', role == Qt::EditRole ? 3 : 1);
+            return QString::number(robot.start.x, 'f', role == Qt::EditRole ? 3 : 0);
         break;
     case Northing:
         if (text)
-            return QString::number(robot.start.y, 'f', role == Qt::EditRole ? 3 : 1);
+            return QString::number(robot.start.y, 'f', role == Qt::EditRole ? 3 : 0);
         break;
     case Longitude:
     case Latitude: {
@@ -59,7 +61,7 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
             return QStringLiteral("–");
         const double degrees =
             index.column() == Longitude ? lonLat.value().longitude : lonLat.value().latitude;
-        return QString::number(degrees, 'f', 6);
+        return QString::number(degrees, 'f', role == Qt::EditRole ? 7 : 5); // 5 decimals: about a metre
     }
     default:
         break;
