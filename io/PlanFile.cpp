@@ -126,6 +126,9 @@ CellGraph getCells(CompressedReader& in) {
     frame.columns = in.get<int>();
     frame.rows = in.get<int>();
     frame.levels = in.get<int>();
+    if (!std::isfinite(frame.originX) || !std::isfinite(frame.originY) || !(frame.bottomCellSize > 0.0) ||
+        !std::isfinite(frame.bottomCellSize) || frame.columns < 0 || frame.rows < 0 || frame.levels < 1)
+        throw CompressedReader::DamagedData("a grid with no place on the map");
     std::vector<Cell> cells(in.getCount(61));
     for (Cell& cell : cells) {
         cell.column = in.get<int>();
@@ -139,7 +142,8 @@ CellGraph getCells(CompressedReader& in) {
         cell.speedMetresPerSecond = in.get<double>();
         cell.passableAreaSquareMetres = in.get<double>();
         cell.freeSubCells = in.get<std::uint8_t>();
-        if (cell.span <= 0 || cell.column < 0 || cell.row < 0)
+        if (cell.span <= 0 || cell.column < 0 || cell.row < 0 || !std::isfinite(cell.minX) ||
+            !std::isfinite(cell.minY) || !(cell.size > 0.0) || !std::isfinite(cell.size))
             throw CompressedReader::DamagedData("a cell with no place on the grid");
     }
     std::vector<int> offsets = in.getAll<int>();
@@ -443,13 +447,21 @@ Result<std::optional<Plan>> loadPlanFile(const std::string& path, const std::str
     file.seekg(start);
     if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
         return Loaded::failure(path + ": cannot read the saved plan");
+    auto plan = parsePlanBody(bytes, path);
+    if (!plan)
+        return Loaded::failure(plan.error());
+    return std::optional<Plan>(std::move(plan.value()));
+}
+
+Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path) {
     try {
-        CompressedReader in(bytes);
-        return std::optional<Plan>(readPlan(in));
+        CompressedReader in(compressed);
+        return readPlan(in);
     } catch (const CompressedReader::DamagedData& damage) {
-        return Loaded::failure(path + ": the saved plan is damaged (" + damage.what() + ")");
+        return Result<Plan>::failure(path + ": the saved plan is damaged (" + damage.what() + ")");
     } catch (const std::bad_alloc&) {
-        return Loaded::failure(path + ": the saved plan is damaged (it claims more memory than there is)");
+        return Result<Plan>::failure(path +
+                                     ": the saved plan is damaged (it claims more memory than there is)");
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace mcpp::io {
 
@@ -28,5 +29,9 @@ namespace mcpp::io {
 // inputs. A file that cannot be read or is damaged is an error naming it.
 [[nodiscard]] Result<std::optional<Plan>> loadPlanFile(const std::string& path,
                                                        const std::string& fingerprint);
+
+// The plan from the bytes after a plan file's two header lines (for readers of other sources and the fuzzer);
+// `path` names the source in errors.
+[[nodiscard]] Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path);
 
 } // namespace mcpp::io

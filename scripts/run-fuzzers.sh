@@ -14,7 +14,7 @@ if [ "${1:-}" = "--seconds" ]; then limit=(-max_total_time="$2"); shift 2; fi
 if [ "${1:-}" = "--runs" ]; then limit=(-runs="$2"); shift 2; fi
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
-  harnesses=(fuzz_mission fuzz_class_table_csv fuzz_legend_csv fuzz_qgis_style fuzz_raster_legend)
+  harnesses=(fuzz_mission fuzz_class_table_csv fuzz_legend_csv fuzz_qgis_style fuzz_raster_legend fuzz_plan_file)
 fi
 bash scripts/install-dependencies.sh
 cmake --preset fuzz >/dev/null

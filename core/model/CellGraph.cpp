@@ -32,7 +32,7 @@ int CellGraph::cellAt(MapPoint point) const {
         return -1;
     const double column = std::floor((point.x - frame_.originX) / frame_.bottomCellSize);
     const double row = std::floor((frame_.originY - point.y) / frame_.bottomCellSize);
-    if (column < 0 || row < 0 || column >= frame_.columns || row >= frame_.rows)
+    if (!(column >= 0 && row >= 0 && column < frame_.columns && row < frame_.rows)) // false for NaN too
         return -1;
     for (const auto& [span, keys] : locator_) {
         const std::uint64_t key =

@@ -19,7 +19,7 @@ class CompressedReader {
         using std::runtime_error::runtime_error;
     };
 
-    explicit CompressedReader(std::string_view compressed) : input_(compressed) {}
+    explicit CompressedReader(std::string_view compressed);
 
     template <typename Value> Value get() {
         static_assert(std::is_arithmetic_v<Value>);
@@ -48,7 +48,8 @@ class CompressedReader {
 
     std::string_view input_;
     std::size_t inputPosition_ = 0;
-    QByteArray chunk_; // the inflated chunk, read in place
+    QByteArray chunk_;                // the inflated chunk, read in place
+    std::uint64_t rawBytesAhead_ = 0; // in the chunks not yet inflated, as their headers say
 
     std::size_t position_ = 0;
 };

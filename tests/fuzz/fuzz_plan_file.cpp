@@ -1,0 +1,38 @@
+// libFuzzer harness: the plan saved beside a mission, read back from any bytes; never a crash, never an
+// allocation beyond what the bytes can hold. The first byte chooses what the rest is: the compressed body as
+// it is on disk (mostly refused by zlib's checksum), or the plan's raw fields, compressed here, so that
+// every structural check of the reader is reached.
+#include "io/PlanFile.hpp"
+
+#include <QByteArray>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+namespace {
+
+std::string compressedChunk(const std::uint8_t* data, std::size_t size) {
+    const QByteArray compressed = qCompress(data, static_cast<qsizetype>(size), 1);
+    std::string chunk(16, '\0');
+    const std::uint64_t sizes[2] = {size, static_cast<std::uint64_t>(compressed.size())};
+    std::memcpy(chunk.data(), sizes, sizeof(sizes));
+    chunk.append(compressed.constData(), static_cast<std::size_t>(compressed.size()));
+    return chunk;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 2)
+        return 0;
+    const bool raw = (data[0] & 1) != 0;
+    const std::string body = raw ? compressedChunk(data + 1, size - 1)
+                                 : std::string(reinterpret_cast<const char*>(data) + 1, size - 1);
+    auto plan = mcpp::io::parsePlanBody(body, "fuzz.mcpp-plan");
+    if (plan.ok() && plan.value().cells.size() > 0) {
+        // What the window does with a restored plan first: find cells.
+        const mcpp::Cell& cell = plan.value().cells.cell(0);
+        (void)plan.value().cells.cellAt({cell.centreX(), cell.centreY()});
+    }
+    return 0;
+}
