@@ -71,13 +71,7 @@ struct CrossingScene {
 };
 
 CrossingScene crossingScene() {
-    test::RandomMapSpec spec;
-    spec.columns = 24;
-    spec.rows = 24;
-    spec.obstacleFraction = 0.04;
-    spec.fovPixels = 2.0;
-    spec.robots = 2;
-    spec.seed = 5;
+    const test::RandomMapSpec spec = test::waterCrossingSpec();
     CrossingScene scene{test::randomProblem(spec), {}};
     scene.problem.planner = defaultPlannerChoice("mcpp-mlct");
     scene.plan = makePlanner("mcpp-mlct")->plan(scene.problem, {});

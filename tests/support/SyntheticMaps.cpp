@@ -47,6 +47,17 @@ PlanningProblem drawnProblem(const std::vector<std::string>& rows, const std::ve
     return problem;
 }
 
+RandomMapSpec waterCrossingSpec() {
+    RandomMapSpec spec;
+    spec.columns = 24;
+    spec.rows = 24;
+    spec.obstacleFraction = 0.04;
+    spec.fovPixels = 2.0;
+    spec.robots = 2;
+    spec.seed = 5;
+    return spec;
+}
+
 PlanningProblem randomProblem(const RandomMapSpec& spec) {
     std::mt19937 random(spec.seed);
     PlanningProblem problem;

@@ -25,6 +25,10 @@ struct RandomMapSpec {
 // cells of the bottom level. Deterministic for a seed.
 [[nodiscard]] PlanningProblem randomProblem(const RandomMapSpec& spec);
 
+// 24 x 24 pixels of grass with 4 % water pixels scattered, sub-cells of 2 x 2 pixels, two robots: some
+// sub-cells keep one water pixel in four (under the 50 % blocked threshold), so paths cross water there.
+[[nodiscard]] RandomMapSpec waterCrossingSpec();
+
 // A one-class grid of columns x rows pixels of `pixelSize` metres, FOV = pixelSize / 2, so each pixel is one
 // bottom cell. Obstacles (value 99) where `blocked` says.
 [[nodiscard]] PlanningProblem uniformProblem(int columns, int rows, double pixelSize,

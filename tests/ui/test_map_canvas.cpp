@@ -157,12 +157,7 @@ class TestMapCanvas : public QObject {
 
     void toolTipExplainsCellsWhosePathCrossesWater() {
         // Scattered water pixels; sub-cells of 2 x 2 pixels keep one water pixel in four (blocked threshold).
-        test::RandomMapSpec spec;
-        spec.columns = 24;
-        spec.rows = 24;
-        spec.obstacleFraction = 0.04;
-        spec.fovPixels = 2.0;
-        spec.seed = 5;
+        const test::RandomMapSpec spec = test::waterCrossingSpec();
         PlanningProblem problem = test::randomProblem(spec);
         problem.planner = defaultPlannerChoice("mcpp-mlct");
         auto raster = std::make_shared<io::LoadedRaster>();
