@@ -2,6 +2,7 @@
 
 #include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
+#include "core/decomposition/QuadTreeGridSize.hpp"
 #include "io/AreaOfInterest.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
@@ -849,13 +850,9 @@ void MainWindow::updateSizeWarning() {
         fovMin = std::min(fovMin, entry.roundedMetres);
         levels = std::max(levels, entry.level);
     }
-    // The quadtree's grid: whole top cells of 2^(levels-1) smallest cells across the map.
-    const double topCell = 2.0 * fovMin * std::ldexp(1.0, levels - 1);
-    const auto bottomCells = [&](double length) {
-        return static_cast<std::int64_t>(std::max(1.0, std::ceil(length / topCell - 1e-9))) << (levels - 1);
-    };
-    const CellBudgetEstimate estimate =
-        estimateCellBudget(fovMin, bottomCells(raster->grid.width()), bottomCells(raster->grid.height()));
+    const QuadTreeGridSize size =
+        quadTreeGridSize(raster->grid.width(), raster->grid.height(), fovMin, levels);
+    const CellBudgetEstimate estimate = estimateCellBudget(fovMin, size.bottomColumns, size.bottomRows);
     if (estimate.fits()) {
         classTableBanner_->clearSizeWarning();
         return;

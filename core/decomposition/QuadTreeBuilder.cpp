@@ -2,6 +2,7 @@
 
 #include "core/decomposition/LandCoverCounter.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
+#include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <algorithm>
@@ -52,13 +53,14 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     tree.levels = levels;
     tree.fovMin = fovMin;
     const double bottomSize = 2.0 * fovMin;
-    tree.topCellSize = bottomSize * std::ldexp(1.0, levels - 1);
+    const QuadTreeGridSize size = quadTreeGridSize(grid.width(), grid.height(), fovMin, levels);
+    tree.topCellSize = size.topCellSize;
     tree.originX = grid.originX;
     tree.originY = grid.originY;
-    tree.topColumns = std::max(1, static_cast<int>(std::ceil(grid.width() / tree.topCellSize - 1e-9)));
-    tree.topRows = std::max(1, static_cast<int>(std::ceil(grid.height() / tree.topCellSize - 1e-9)));
-    const std::int64_t bottomColumns = static_cast<std::int64_t>(tree.topColumns) << (levels - 1);
-    const std::int64_t bottomRows = static_cast<std::int64_t>(tree.topRows) << (levels - 1);
+    tree.topColumns = size.topColumns;
+    tree.topRows = size.topRows;
+    const std::int64_t bottomColumns = size.bottomColumns;
+    const std::int64_t bottomRows = size.bottomRows;
     checkCellBudget(fovMin, bottomColumns, bottomRows);
     const SampleGrid samples =
         sampleGrid(grid, std::move(pixels.codes), bottomSize, bottomColumns, bottomRows);

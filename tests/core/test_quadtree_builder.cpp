@@ -1,4 +1,5 @@
 #include "core/decomposition/QuadTreeBuilder.hpp"
+#include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningError.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -32,6 +33,21 @@ int countActiveAtLevel(const QuadTree& tree, int level) {
 class QuadTreeBuilderTest : public QObject {
     Q_OBJECT
   private slots:
+    void gridCoversTheMapInWholeTopCells() {
+        // FOV 5 m over three levels: bottom cells of 10 m, top cells of 40 m.
+        const QuadTreeGridSize exact = quadTreeGridSize(120.0, 80.0, 5.0, 3);
+        QCOMPARE(exact.topCellSize, 40.0);
+        QCOMPARE(exact.topColumns, 3);
+        QCOMPARE(exact.topRows, 2);
+        QCOMPARE(exact.bottomColumns, std::int64_t{12});
+        QCOMPARE(exact.bottomRows, std::int64_t{8});
+        // Rounding noise adds no top cell; a metre more does.
+        QCOMPARE(quadTreeGridSize(120.0 + 1e-11, 80.0, 5.0, 3).topColumns, 3);
+        QCOMPARE(quadTreeGridSize(121.0, 80.0, 5.0, 3).topColumns, 4);
+        // A map smaller than one top cell still has one.
+        QCOMPARE(quadTreeGridSize(3.0, 3.0, 5.0, 3).bottomRows, std::int64_t{4});
+    }
+
     // The paper's example: FOVs 5, 7 and 21 m round down to 5, 5 and 20 m, giving three levels.
     void paperFieldOfViewExample() {
         ClassTable table({{1, "farm", 0, 1.0, 5.0, true},
