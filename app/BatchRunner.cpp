@@ -191,9 +191,13 @@ void BatchRunner::loadRaster() {
 
 PlanningProblem BatchRunner::prepareProblem() {
     const io::FieldNamer names = fieldNamer();
+    if (mission_.classes.empty() && mission_.preset.empty()) {
+        // Neither rows nor a preset: the table the raster's product or legend gives, read once and said.
+        io::OpeningClassTable opening = io::openingClassTable(raster_);
+        note(opening.explanation);
+        mission_.classes = std::move(opening.table);
+    }
     classes_ = valueOrBadInput(io::missionClasses(mission_, raster_, names));
-    if (mission_.classes.empty() && mission_.preset.empty())
-        note(io::openingClassTable(raster_).explanation);
     // The batch contract takes --start in the raster file's CRS; mission files keep planning-CRS units.
     const auto units =
         options_.missionFromFlags() ? io::StartUnits::RasterFileCrs : io::StartUnits::PlanningCrs;

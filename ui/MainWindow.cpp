@@ -1018,6 +1018,7 @@ bool MainWindow::openMission(const QString& path) {
     if (mission.classes.empty() && mission.preset.empty()) {
         opening = io::openingClassTable(raster.value());
         mission.preset = opening->preset; // the preset box then names what was applied
+        mission.classes = opening->table; // read once: missionClasses below takes these rows
     }
     auto classes = io::missionClasses(mission, raster.value(), names);
     auto starts = classes ? io::missionStarts(mission, raster.value(), io::StartUnits::PlanningCrs, names)
