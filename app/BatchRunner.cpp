@@ -288,7 +288,7 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             continue;
         if (format.needsLongitudeLatitude && !raster_.georeference.hasCrs()) {
             withoutCrs += (withoutCrs.empty() ? "" : ", ") +
-                          (format.perRobot ? "robot_<i>." + format.extension : format.batchFileName);
+                          (format.perRobot ? "robot_<n>." + format.extension : format.batchFileName);
             continue;
         }
         if (!format.perRobot) {

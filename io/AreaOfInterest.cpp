@@ -98,11 +98,12 @@ Result<std::vector<std::uint8_t>> rasterise(const std::string& path, const Loade
     double transform[6] = {grid.originX, grid.pixelWidth, 0.0, grid.originY, 0.0, -grid.pixelHeight};
     canvas->SetGeoTransform(transform);
     int bands[1] = {1};
-    double burn[1] = {1.0};
+    // One burn value per polygon and band: GDAL reads as many as it is given polygons.
+    const std::vector<double> burn(polygons.geometries.size(), 1.0);
     const QuietGdalErrors quiet;
     if (GDALRasterizeGeometries(canvas.get(), 1, bands, static_cast<int>(polygons.geometries.size()),
                                 reinterpret_cast<OGRGeometryH*>(polygons.geometries.data()), nullptr, nullptr,
-                                burn, nullptr, nullptr, nullptr) != CE_None)
+                                burn.data(), nullptr, nullptr, nullptr) != CE_None)
         return Mask::failure(path + ": its polygons could not be laid on the raster" +
                              QuietGdalErrors::detail());
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(grid.columns) *
@@ -162,19 +163,34 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
 }
 
 Status writeAreaPolygons(const std::string& path, const std::vector<std::vector<MapPoint>>& rings,
-                         const GeoReference& georeference) {
+                         const LoadedRaster& raster, const std::string& keepPolygonsOf) {
     internal::ensureGdalRegistered();
     const QuietGdalErrors quiet;
+    OwnedGeometries kept;
+    if (!keepPolygonsOf.empty()) {
+        if (auto read = readPolygons(keepPolygonsOf, raster, kept); !read)
+            return Status::failure(read.error());
+    }
     internal::DatasetFile file(path);
     if (Status status = file.create("GeoJSON", 0, 0, 0, GDT_Unknown); !status)
         return status;
     std::unique_ptr<OGRSpatialReference> crs;
-    if (georeference.hasCrs())
-        crs = internal::spatialReferenceFromDefinition(georeference.wkt());
-    OGRLayer* layer = file.dataset().CreateLayer("area", crs.get(), wkbPolygon, nullptr);
+    if (raster.georeference.hasCrs())
+        crs = internal::spatialReferenceFromDefinition(raster.georeference.wkt());
+    OGRLayer* layer = file.dataset().CreateLayer("area", crs.get(), wkbUnknown, nullptr);
     if (layer == nullptr)
         return Status::failure(path + ": cannot create the layer" + QuietGdalErrors::detail());
-    const double metresPerUnit = georeference.metresPerUnit();
+    const double metresPerUnit = raster.georeference.metresPerUnit();
+    const auto add = [&](const OGRGeometry& geometry) {
+        OGRFeature feature(layer->GetLayerDefn());
+        feature.SetGeometry(&geometry);
+        return layer->CreateFeature(&feature) == OGRERR_NONE;
+    };
+    for (OGRGeometry* geometry : kept.geometries) {
+        scaleRings(*geometry, 1.0 / metresPerUnit); // planning metres back to the CRS's units
+        if (!add(*geometry))
+            return Status::failure(path + ": cannot write a polygon" + QuietGdalErrors::detail());
+    }
     for (const std::vector<MapPoint>& corners : rings) {
         auto ring = std::make_unique<OGRLinearRing>();
         for (const MapPoint& corner : corners)
@@ -182,9 +198,7 @@ Status writeAreaPolygons(const std::string& path, const std::vector<std::vector<
         ring->closeRings();
         OGRPolygon polygon;
         polygon.addRingDirectly(ring.release());
-        OGRFeature feature(layer->GetLayerDefn());
-        feature.SetGeometry(&polygon);
-        if (layer->CreateFeature(&feature) != OGRERR_NONE)
+        if (!add(polygon))
             return Status::failure(path + ": cannot write a polygon" + QuietGdalErrors::detail());
     }
     return file.commit();

@@ -1,7 +1,6 @@
 #pragma once
 
 #include "core/model/MapPoint.hpp"
-#include "io/GeoReference.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Result.hpp"
 
@@ -19,9 +18,10 @@ namespace mcpp::io {
                                          const std::string& excludePath);
 
 // Writes polygons drawn on the map (rings of corners in the planning frame, metres) as a GeoJSON file in the
-// planning CRS, for a mission's area.include or area.exclude to name. Written atomically.
+// raster's planning CRS, for a mission's area.include or area.exclude to name; with keepPolygonsOf, the
+// polygons of that vector file come first (no-go zones drawn one after another add up). Written atomically.
 [[nodiscard]] Status writeAreaPolygons(const std::string& path,
                                        const std::vector<std::vector<MapPoint>>& rings,
-                                       const GeoReference& georeference);
+                                       const LoadedRaster& raster, const std::string& keepPolygonsOf = {});
 
 } // namespace mcpp::io

@@ -1,5 +1,6 @@
 #include "io/PlanFile.hpp"
 
+#include "core/model/MemoryBudget.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/internal/CompressedReader.hpp"
 #include "io/internal/CompressedWriter.hpp"
@@ -21,14 +22,22 @@ using internal::CompressedWriter;
 constexpr const char* formatLine = "MCPP-PLAN 1";
 constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
 
-// Size and time of last change of a file: a different file at the same path changes them.
+// Size and time of last change of a file: a different file at the same path changes them. Empty when they
+// cannot be read (a path GDAL reads through a virtual file system, a file gone).
 std::string fileIdentity(const std::string& path) {
     if (path.empty())
         return "-";
-    std::error_code error;
-    const auto size = std::filesystem::file_size(path, error);
-    const auto changed = std::filesystem::last_write_time(path, error);
+    std::error_code sizeError;
+    std::error_code timeError;
+    const auto size = std::filesystem::file_size(path, sizeError);
+    const auto changed = std::filesystem::last_write_time(path, timeError);
+    if (sizeError || timeError)
+        return {};
     return std::to_string(size) + " " + std::to_string(changed.time_since_epoch().count());
+}
+
+std::string absoluteNormal(const std::string& path) {
+    return std::filesystem::absolute(path).lexically_normal().string();
 }
 
 void putParameters(CompressedWriter& out, const ParameterValues& parameters) {
@@ -129,6 +138,11 @@ CellGraph getCells(CompressedReader& in) {
     if (!std::isfinite(frame.originX) || !std::isfinite(frame.originY) || !(frame.bottomCellSize > 0.0) ||
         !std::isfinite(frame.bottomCellSize) || frame.columns < 0 || frame.rows < 0 || frame.levels < 1)
         throw CompressedReader::DamagedData("a grid with no place on the map");
+    // A grid no plan of this machine could have (planning refuses such maps) would make the outlines of a
+    // restored plan allocate without bound.
+    if (static_cast<double>(frame.columns) * frame.rows * bytesPerBottomCell >
+        static_cast<double>(memoryBudgetBytes()))
+        throw CompressedReader::DamagedData("a grid larger than this machine can plan");
     std::vector<Cell> cells(in.getCount(61));
     for (Cell& cell : cells) {
         cell.column = in.get<int>();
@@ -142,7 +156,9 @@ CellGraph getCells(CompressedReader& in) {
         cell.speedMetresPerSecond = in.get<double>();
         cell.passableAreaSquareMetres = in.get<double>();
         cell.freeSubCells = in.get<std::uint8_t>();
-        if (cell.span <= 0 || cell.column < 0 || cell.row < 0 || !std::isfinite(cell.minX) ||
+        if (cell.span <= 0 || cell.column < 0 || cell.row < 0 ||
+            std::int64_t{cell.column} + cell.span > frame.columns ||
+            std::int64_t{cell.row} + cell.span > frame.rows || !std::isfinite(cell.minX) ||
             !std::isfinite(cell.minY) || !(cell.size > 0.0) || !std::isfinite(cell.size))
             throw CompressedReader::DamagedData("a cell with no place on the grid");
     }
@@ -227,8 +243,12 @@ void putWaypoints(CompressedWriter& out, const std::vector<Waypoint>& waypoints,
 
 std::vector<Waypoint> getWaypoints(CompressedReader& in, const CellGraph& graph) {
     const bool derivedTimes = in.get<std::uint8_t>() != 0;
-    std::vector<Waypoint> waypoints(in.getCount(5));
-    for (Waypoint& waypoint : waypoints) {
+    // Grown as they are read: a damaged count cannot claim ten times the memory the bytes stand for.
+    const std::size_t count = in.getCount(5);
+    std::vector<Waypoint> waypoints;
+    waypoints.reserve(std::min<std::size_t>(count, std::size_t{1} << 16U));
+    for (std::size_t index = 0; index < count; ++index) {
+        Waypoint& waypoint = waypoints.emplace_back();
         waypoint.cell = in.get<int>();
         const auto tag = in.get<std::uint8_t>();
         const bool inGraph = waypoint.cell >= 0 && static_cast<std::size_t>(waypoint.cell) < graph.size();
@@ -376,6 +396,9 @@ Plan readPlan(CompressedReader& in) {
     plan.paths = getPaths(in, plan.cells);
     checkRegions(plan.regions, plan.cells.size(), plan.paths.size());
     plan.metrics = getMetrics(in);
+    for (const RobotMetrics& robot : plan.metrics.robots)
+        if (robot.robot < 0 || static_cast<std::size_t>(robot.robot) >= plan.paths.size())
+            throw CompressedReader::DamagedData("figures of no robot");
     plan.issues = getIssues(in);
     if (in.get<std::uint32_t>() != endMarker || !in.atEnd())
         throw CompressedReader::DamagedData("unexpected bytes at the end");
@@ -394,18 +417,31 @@ std::string planFilePath(const std::string& missionPath) {
     return path.replace_extension(".mcpp-plan").string();
 }
 
+std::string inputFilesIdentity(const std::vector<std::string>& paths) {
+    std::string identity;
+    for (const std::string& path : paths) {
+        const std::string file = fileIdentity(path);
+        if (file.empty())
+            return {};
+        identity += (path.empty() ? std::string() : absoluteNormal(path)) + " " + file + "\n";
+    }
+    return identity;
+}
+
 std::string planInputsFingerprint(const Mission& mission, const std::string& missionPath) {
     Mission inputs = mission;
-    inputs.rasterPath = std::filesystem::absolute(resolveRasterPath(mission, missionPath)).string();
+    inputs.rasterPath = absoluteNormal(resolveRasterPath(mission, missionPath));
     for (std::string* area : {&inputs.area.includePath, &inputs.area.excludePath})
         if (!area->empty())
-            *area = std::filesystem::absolute(resolveMissionPath(*area, missionPath)).string();
+            *area = absoluteNormal(resolveMissionPath(*area, missionPath));
     inputs.exports = {};
     for (RobotSpec& robot : inputs.robots)
         robot.name.clear();
-    const std::string text = missionToJson(inputs) + "\n" + fileIdentity(inputs.rasterPath) + "\n" +
-                             fileIdentity(inputs.area.includePath) + "\n" +
-                             fileIdentity(inputs.area.excludePath) + "\n";
+    const std::string files =
+        inputFilesIdentity({inputs.rasterPath, inputs.area.includePath, inputs.area.excludePath});
+    if (files.empty())
+        return {};
+    const std::string text = missionToJson(inputs) + "\n" + files;
     return QCryptographicHash::hash(QByteArray::fromStdString(text), QCryptographicHash::Sha256)
         .toHex()
         .toStdString();

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace mcpp::io {
 
@@ -20,7 +21,13 @@ namespace mcpp::io {
 // A fingerprint of what a plan depends on, from the mission as its file holds it: the raster file (path,
 // band, size, time of last change), the area files likewise, the class table, the starts, the planner and its
 // parameters. Robot names and export settings are left out: they do not change a plan.
+// Empty when a file's size or time cannot be read: such a plan is neither saved nor restored.
 [[nodiscard]] std::string planInputsFingerprint(const Mission& mission, const std::string& missionPath);
+
+// The paths, sizes and times of last change of input files (empty paths allowed), or empty when one cannot
+// be read: kept when the files are read, compared before a plan is saved, so that a plan made from files
+// since rewritten is not saved as theirs.
+[[nodiscard]] std::string inputFilesIdentity(const std::vector<std::string>& paths);
 
 // Writes the plan with the fingerprint of its inputs (atomic). Layers of the plan are not saved.
 [[nodiscard]] Status savePlanFile(const Plan& plan, const std::string& fingerprint, const std::string& path);

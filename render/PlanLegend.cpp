@@ -140,8 +140,11 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
                      .arg(QString::fromStdString(formatArea(plan->metrics.unreachableAreaSquareMetres))),
                  {}});
         const auto& cells = plan->cells.cells();
-        if (std::any_of(cells.begin(), cells.end(),
-                        [](const Cell& cell) { return cell.crossesImpassableLand(); }))
+        const auto& owner = plan->regions.robotOfCell;
+        bool crossed = false;
+        for (std::size_t id = 0; id < cells.size() && id < owner.size() && !crossed; ++id)
+            crossed = owner[id] >= 0 && cells[id].crossesImpassableLand();
+        if (crossed)
             overlays.items.push_back(
                 {LegendSymbol::Crossing,
                  {},

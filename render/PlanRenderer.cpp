@@ -181,9 +181,13 @@ void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     crossingCells_.clear();
     if (plan_ == nullptr)
         return;
-    for (const Cell& cell : plan_->cells.cells())
-        if (cell.crossesImpassableLand())
+    // Only cells a robot covers: no path crosses the others.
+    const auto& owner = plan_->regions.robotOfCell;
+    for (std::size_t id = 0; id < plan_->cells.size(); ++id) {
+        const Cell& cell = plan_->cells.cells()[id];
+        if (id < owner.size() && owner[id] >= 0 && cell.crossesImpassableLand())
             crossingCells_.emplace_back(cell.minX, cell.minY, cell.size, cell.size);
+    }
 }
 
 void PlanRenderer::prepareRegions(const RegionOutlines* given) {

@@ -95,7 +95,7 @@ QString cellToolTip(const MissionDocument& document, MapPoint point) {
         const QString name = static_cast<std::size_t>(robot) < robots.size() && !robots[robot].name.empty()
                                  ? QString::fromStdString(robots[static_cast<std::size_t>(robot)].name)
                                  : tr("Robot %1").arg(robot + 1);
-        who = tr("Covered by %1 (robot %2).").arg(name).arg(robot + 1);
+        who = tr("Covered by %1 (robot %2).").arg(name, QString::number(robot + 1));
     }
     QString text =
         who + QStringLiteral("\n") +
@@ -104,7 +104,7 @@ QString cellToolTip(const MissionDocument& document, MapPoint point) {
             .arg(cell.level)
             .arg(className(document.classes(), cell.classValue),
                  tr("%1 m/s").arg(QString::fromStdString(formatQuantity(cell.speedMetresPerSecond, 3))));
-    if (cell.crossesImpassableLand())
+    if (robot >= 0 && cell.crossesImpassableLand())
         text += QStringLiteral("\n") + crossingSentence(document, *plan, cell);
     if (document.planStale())
         text += QStringLiteral("\n") + tr("The plan is out of date.");

@@ -647,6 +647,7 @@ void MainWindow::connectDocument() {
             if (crsName_.isEmpty())
                 crsName_ = QString::fromStdString(raster->georeference.name());
         }
+        rememberInputFiles();
         updateActions();
     });
     connect(document_, &MissionDocument::settingsChanged, this,
@@ -1106,11 +1107,14 @@ bool MainWindow::saveMission(const QString& path) {
 QString MainWindow::savePlanBeside(const QString& missionPath, const std::string& fingerprint) {
     const std::string planPath = io::planFilePath(missionPath.toStdString());
     const Plan* plan = document_->plan();
-    if (plan == nullptr || document_->planStale()) {
-        // A plan file left from earlier inputs would only be refused on the next open.
-        std::error_code ignored;
-        std::filesystem::remove(planPath, ignored);
+    // A plan file already there is left alone: one made from other inputs is refused on the next open, and
+    // one this mcpp cannot read may be another version's.
+    if (plan == nullptr || document_->planStale() || fingerprint.empty())
         return {};
+    if (inputFilesAtLoad_.empty() || currentInputFiles() != inputFilesAtLoad_) {
+        messageLog_->add(tr("The raster or area files have changed on disk since they were read, so the plan "
+                            "was not saved with the mission: open the mission again and plan."));
+        return tr(" The plan was not saved with it: its input files have changed on disk (see Messages).");
     }
     QApplication::setOverrideCursor(Qt::WaitCursor);
     const io::Status saved = io::savePlanFile(*plan, fingerprint, planPath);
@@ -1128,6 +1132,9 @@ QString MainWindow::restorePlanBeside(const QString& missionPath, const std::str
     const std::string planPath = io::planFilePath(missionPath.toStdString());
     if (!QFileInfo::exists(QString::fromStdString(planPath)))
         return {};
+    if (fingerprint.empty())
+        return tr(" Its saved plan is not shown: the raster's or an area file's size and time cannot be read "
+                  "to check it is the one planned. Press Plan to plan again.");
     QApplication::setOverrideCursor(Qt::WaitCursor);
     auto loaded = io::loadPlanFile(planPath, fingerprint);
     QApplication::restoreOverrideCursor();
@@ -1145,10 +1152,24 @@ QString MainWindow::restorePlanBeside(const QString& missionPath, const std::str
     return tr(" Restored its saved plan (makespan %1).").arg(ResultsPanel::formatDuration(makespan));
 }
 
+namespace {
+
+// folder/base-kind.geojson, or base-kind-2.geojson, ... : the first name no file has.
+QString freeAreaFileName(const QString& folder, const QString& base, const QString& kind) {
+    QString path = QDir(folder).filePath(QStringLiteral("%1-%2.geojson").arg(base, kind));
+    for (int number = 2; QFileInfo::exists(path); ++number)
+        path = QDir(folder).filePath(QStringLiteral("%1-%2-%3.geojson").arg(base, kind).arg(number));
+    return path;
+}
+
+} // namespace
+
 QString MainWindow::drawnAreaPath(bool exclude) const {
-    const QString suffix = exclude ? QStringLiteral("-no-go.geojson") : QStringLiteral("-area.geojson");
-    const QString current = QString::fromStdString(exclude ? document_->mission().area.excludePath
-                                                           : document_->mission().area.includePath);
+    const QString kind = exclude ? QStringLiteral("no-go") : QStringLiteral("area");
+    const std::string& inUse =
+        exclude ? document_->mission().area.excludePath : document_->mission().area.includePath;
+    const QString current =
+        inUse.empty() ? QString() : QFileInfo(QString::fromStdString(inUse)).absoluteFilePath();
     QString folder;
     QString base;
     if (!document_->missionPath().isEmpty()) {
@@ -1160,11 +1181,10 @@ QString MainWindow::drawnAreaPath(bool exclude) const {
         QDir().mkpath(folder);
         base = QFileInfo(QString::fromStdString(document_->raster()->path)).completeBaseName();
     }
-    // Never over a file the user made: the name of the drawn file in use, or one not taken yet.
-    QString path = QDir(folder).filePath(base + suffix);
-    for (int number = 2; QFileInfo::exists(path) && QFileInfo(path).absoluteFilePath() != current; ++number)
-        path = QDir(folder).filePath(base + QStringLiteral("-%1").arg(number) + suffix);
-    return path;
+    // Never over a file the user made: the file this window drew and uses, or a name not taken yet.
+    if (drawnFiles_.contains(current) && QFileInfo(current).absolutePath() == QDir(folder).absolutePath())
+        return current;
+    return freeAreaFileName(folder, base, kind);
 }
 
 void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
@@ -1174,24 +1194,31 @@ void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
         return;
     const io::AreaOfInterest area = document_->mission().area;
     const QString path = drawnAreaPath(exclude);
-    // No-go zones add up while the drawn file is in use; an area of interest replaces the last one.
-    std::vector<std::vector<MapPoint>> rings{ring};
-    if (exclude) {
-        if (QFileInfo(QString::fromStdString(area.excludePath)).absoluteFilePath() != path)
-            drawnNoGoZones_.clear();
-        drawnNoGoZones_.push_back(ring);
-        rings = drawnNoGoZones_;
-    }
-    const io::Status written =
-        io::writeAreaPolygons(path.toStdString(), rings, document_->raster()->georeference);
+    // Written beside its final name and tried first: an area the map refuses changes no file in use.
+    const QString trial = path + QStringLiteral(".trial");
+    // No-go zones add up (the polygons of the file in use come first); an area of interest replaces the last.
+    const io::Status written = io::writeAreaPolygons(trial.toStdString(), {ring}, *document_->raster(),
+                                                     exclude ? area.excludePath : std::string());
     if (!written.ok()) {
         reportError(tr("Cannot use the area"), QString::fromStdString(written.error()));
         return;
     }
-    if (exclude)
-        setAreaFiles(QString::fromStdString(area.includePath), path);
-    else
-        setAreaFiles(path, QString::fromStdString(area.excludePath));
+    const bool used = exclude ? setAreaFiles(QString::fromStdString(area.includePath), trial)
+                              : setAreaFiles(trial, QString::fromStdString(area.excludePath));
+    if (!used) {
+        QFile::remove(trial);
+        return;
+    }
+    QFile::remove(path);
+    if (!QFile::rename(trial, path)) {
+        reportError(tr("Cannot use the area"), tr("Cannot move %1 to %2.").arg(trial, path));
+        return;
+    }
+    io::AreaOfInterest placed = document_->mission().area;
+    (exclude ? placed.excludePath : placed.includePath) = path.toStdString();
+    document_->setAreaPaths(placed);
+    drawnFiles_.insert(path);
+    rememberInputFiles();
 }
 
 bool MainWindow::keepDrawnAreasBeside(const QString& missionPath) {
@@ -1200,14 +1227,12 @@ bool MainWindow::keepDrawnAreasBeside(const QString& missionPath) {
     io::AreaOfInterest area = document_->mission().area;
     const QString folder = QFileInfo(missionPath).absolutePath();
     const QString base = QFileInfo(missionPath).completeBaseName();
-    for (auto [path, suffix] : {std::pair{&area.includePath, QStringLiteral("-area.geojson")},
-                                std::pair{&area.excludePath, QStringLiteral("-no-go.geojson")}}) {
+    for (auto [path, kind] : {std::pair{&area.includePath, QStringLiteral("area")},
+                              std::pair{&area.excludePath, QStringLiteral("no-go")}}) {
         const QString current = QString::fromStdString(*path);
         if (current.isEmpty() || !QFileInfo(current).absoluteFilePath().startsWith(drawnFolder))
             continue;
-        QString target = QDir(folder).filePath(base + suffix);
-        for (int number = 2; QFileInfo::exists(target); ++number)
-            target = QDir(folder).filePath(base + QStringLiteral("-%1").arg(number) + suffix);
+        const QString target = freeAreaFileName(folder, base, kind);
         if (!QFile::copy(current, target)) {
             reportError(tr("Cannot save mission"),
                         tr("Cannot copy the drawn area %1 to %2.").arg(current, target));
@@ -1216,7 +1241,19 @@ bool MainWindow::keepDrawnAreasBeside(const QString& missionPath) {
         *path = target.toStdString();
     }
     document_->setAreaPaths(area);
+    rememberInputFiles(); // the same polygons, in their copies
     return true;
+}
+
+std::string MainWindow::currentInputFiles() const {
+    if (!document_->hasMap())
+        return {};
+    const io::AreaOfInterest& area = document_->mission().area;
+    return io::inputFilesIdentity({document_->raster()->path, area.includePath, area.excludePath});
+}
+
+void MainWindow::rememberInputFiles() {
+    inputFilesAtLoad_ = currentInputFiles();
 }
 
 void MainWindow::notePlanToSave() {

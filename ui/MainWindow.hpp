@@ -6,6 +6,7 @@
 #include "ui/MissionDocument.hpp"
 
 #include <QMainWindow>
+#include <QSet>
 #include <QString>
 #include <string>
 #include <vector>
@@ -141,6 +142,10 @@ class MainWindow : public QMainWindow {
     QString restorePlanBeside(const QString& missionPath, const std::string& fingerprint);
     // A new plan of a saved mission makes the mission modified, so that it is saved with the mission.
     void notePlanToSave();
+    // The raster and area files as they were when read (io::inputFilesIdentity), to tell whether they have
+    // been rewritten on disk since.
+    [[nodiscard]] std::string currentInputFiles() const;
+    void rememberInputFiles();
     // Areas drawn on the map (Plan > Draw area of interest / Draw no-go zone) become GeoJSON files: beside
     // a saved mission, else in the application's data folder until the mission is saved.
     void useDrawnArea(const std::vector<MapPoint>& ring);
@@ -193,7 +198,7 @@ class MainWindow : public QMainWindow {
     QAction* placeToolAction_ = nullptr;
     QAction* drawAreaAction_ = nullptr;
     QAction* drawNoGoAction_ = nullptr;
-    std::vector<std::vector<MapPoint>> drawnNoGoZones_; // the polygons of the drawn no-go file
+    QSet<QString> drawnFiles_; // area files this window drew, the only ones it writes again
     QAction* removeRobotAction_ = nullptr;
     QList<QAction*> exportActions_;
     QString crsName_;
@@ -206,9 +211,10 @@ class MainWindow : public QMainWindow {
     std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on
     qint64 planningStartedAt_ = 0;
     bool settingsModified_ = false;
-    bool planUnsaved_ = false;   // a saved mission's new plan, written beside it on the next save
-    double fitFactor_ = 0.0;     // FOV factor the banner offers; 0 when the table fits
-    bool openingSample_ = false; // the bundled sample opens as an untitled copy
+    bool planUnsaved_ = false;
+    std::string inputFilesAtLoad_; // a saved mission's new plan, written beside it on the next save
+    double fitFactor_ = 0.0;       // FOV factor the banner offers; 0 when the table fits
+    bool openingSample_ = false;   // the bundled sample opens as an untitled copy
     bool dialogsEnabled_ = true;
     bool openSampleOnFirstStart_ = true;
 };

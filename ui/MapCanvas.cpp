@@ -19,6 +19,7 @@ namespace {
 
 constexpr double kMarkerHitRadiusPixels = 13.0;
 constexpr double kDragThresholdPixels = 4.0;
+constexpr double kSmallestRectanglePixels = 10.0;
 constexpr double kScaleBarTargetPixels = 130.0;
 // How long the view must rest after a zoom or pan step before the map is drawn afresh.
 constexpr int kRedrawAfterMilliseconds = 150;
@@ -326,7 +327,10 @@ void MapCanvas::mouseReleaseEvent(QMouseEvent* event) {
         const MapPoint b = mapPointAt(event->position());
         drawingCursor_.reset();
         update();
-        emit areaDrawn({{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}});
+        // A slip of the hand while clicking the first corner is no rectangle.
+        const QPointF size = event->position() - pressPosition_;
+        if (std::abs(size.x()) >= kSmallestRectanglePixels && std::abs(size.y()) >= kSmallestRectanglePixels)
+            emit areaDrawn({{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}});
     } else if (gesture == Gesture::Click && event->button() == Qt::LeftButton && document_->hasMap()) {
         if (tool_ == Tool::DrawArea) {
             drawing_.push_back(mapPointAt(event->position()));

@@ -91,6 +91,29 @@ class AreaOfInterestTest : public QObject {
         QCOMPARE(outsideFlags + insidePixels(raster), static_cast<std::int64_t>(raster.grid.values.size()));
     }
 
+    // Every polygon of a file counts, and drawn polygons written by writeAreaPolygons come back: two no-go
+    // zones, the second added to a file holding the first.
+    void everyPolygonOfAFileCounts() {
+        QTemporaryDir folder;
+        LoadedRaster raster = zion();
+        const double pixelArea = raster.grid.pixelWidth * raster.grid.pixelHeight;
+        const std::int64_t whole = insidePixels(raster);
+        const std::string first = folder.filePath("first.geojson").toStdString();
+        const std::string both = folder.filePath("both.geojson").toStdString();
+        const std::vector<MapPoint> west{
+            {310000, 4135000}, {315000, 4135000}, {315000, 4140000}, {310000, 4140000}};
+        const std::vector<MapPoint> east{
+            {318000, 4143000}, {323000, 4143000}, {323000, 4148000}, {318000, 4148000}};
+        QVERIFY(writeAreaPolygons(first, {west}, raster).ok());
+        QVERIFY(writeAreaPolygons(both, {east}, raster, first).ok());
+        QVERIFY(applyAreaOfInterest(raster, std::string(), both).ok());
+        const double cut = static_cast<double>(whole - insidePixels(raster)) * pixelArea;
+        QVERIFY2(std::abs(cut - 5e7) / 5e7 < 0.01, qPrintable(QString::number(cut)));
+        QVERIFY(!insideAt(raster, 312500, 4137500));
+        QVERIFY(!insideAt(raster, 320500, 4145500));
+        QVERIFY(insideAt(raster, 316500, 4141500));
+    }
+
     // The same rectangle given in longitude and latitude is taken to the raster's CRS.
     void polygonsInAnotherCrsAreReprojected() {
         QTemporaryDir folder;

@@ -6,6 +6,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 #include "tests/support/TestData.hpp"
 
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <filesystem>
@@ -207,10 +208,20 @@ class TestPlanFile : public QObject {
         otherPlanner.planner.planner = "darp";
         QVERIFY(io::planInputsFingerprint(otherPlanner, missionPath) != base);
 
+        // What the window keeps when it reads the files: empty (unknown) for a file that is not there.
+        const std::string identity = io::inputFilesIdentity({raster, std::string(), std::string()});
+        QVERIFY(!identity.empty());
+        QVERIFY(io::inputFilesIdentity({raster, file("no-such-area.geojson"), std::string()}).empty());
+        // A path with ".." names the same file: the same fingerprint.
+        io::Mission roundabout = mission;
+        roundabout.rasterPath = "../" + QFileInfo(folder_.path()).fileName().toStdString() + "/land.tif";
+        QCOMPARE(io::planInputsFingerprint(roundabout, missionPath), base);
+
         // The raster changed on disk (same path): the fingerprint changes.
         std::filesystem::last_write_time(raster,
                                          std::filesystem::last_write_time(raster) + std::chrono::seconds(5));
         QVERIFY(io::planInputsFingerprint(mission, missionPath) != base);
+        QVERIFY(io::inputFilesIdentity({raster, std::string(), std::string()}) != identity);
     }
 };
 

@@ -24,6 +24,7 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -617,7 +618,8 @@ class TestMainWindow : public QObject {
         QTest::keyClick(canvas, Qt::Key_Return);
         QCOMPARE(canvas->tool(), ui::MapCanvas::Tool::Pan);
         const QString drawnArea = QString::fromStdString(window.document()->mission().area.includePath);
-        QVERIFY2(drawnArea.endsWith(QStringLiteral("-area.geojson")), qPrintable(drawnArea));
+        QVERIFY2(QRegularExpression(QStringLiteral("-area(-[0-9]+)?\\.geojson$")).match(drawnArea).hasMatch(),
+                 qPrintable(drawnArea));
         const double square = insideArea();
         QVERIFY2(std::abs(square - 4e8) / 4e8 < 0.05, qPrintable(QString::number(square)));
 
@@ -631,17 +633,49 @@ class TestMainWindow : public QObject {
         const double cut = square - insideArea();
         QVERIFY2(std::abs(cut - 2.5e7) / 2.5e7 < 0.1, qPrintable(QString::number(cut)));
 
-        // Saved, the drawn files go beside the mission and the mission names them there.
+        // An area of interest off the map is refused and changes no file in use.
+        const auto dragRectangle = [canvas](QPoint from, QPoint to) {
+            QTest::mousePress(canvas, Qt::LeftButton, {}, from);
+            QTest::mouseMove(canvas, (from + to) / 2);
+            QTest::mouseMove(canvas, to);
+            QTest::mouseRelease(canvas, Qt::LeftButton, {}, to);
+        };
+        const io::AreaOfInterest before = window.document()->mission().area;
+        window.findChild<QAction*>(QStringLiteral("drawAreaAction"))->trigger();
+        dragRectangle(QPoint(3, 3), QPoint(30, 30));
+        QVERIFY2(window.lastError().contains(QStringLiteral("leaves no pixel")),
+                 qPrintable(window.lastError()));
+        QVERIFY(window.document()->mission().area == before);
+        QCOMPARE(insideArea(), square - cut);
+        QVERIFY(QDir(QFileInfo(QString::fromStdString(before.excludePath)).absolutePath())
+                    .entryList({QStringLiteral("*.trial")}, QDir::Files)
+                    .isEmpty());
+
+        // Saved, the drawn files go beside the mission and the mission names them there; a file of the user's
+        // with the name the area would take is left as it was.
+        QVERIFY(writeFile(directory.filePath("survey-area.geojson"), "the user's own notes"));
         QVERIFY(window.robotTableModel()->addRobot({320000, 4145000}));
         const QString saved = directory.filePath("survey.json");
         QVERIFY2(window.saveMission(saved), qPrintable(window.lastError()));
-        QVERIFY(QFileInfo::exists(directory.filePath("survey-area.geojson")));
+        QFile own(directory.filePath("survey-area.geojson"));
+        QVERIFY(own.open(QIODevice::ReadOnly));
+        QCOMPARE(own.readAll(), QByteArray("the user's own notes"));
+        QVERIFY(QFileInfo::exists(directory.filePath("survey-area-2.geojson")));
         QVERIFY(QFileInfo::exists(directory.filePath("survey-no-go.geojson")));
         QFile file(saved);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QJsonObject area = QJsonDocument::fromJson(file.readAll()).object().value("area").toObject();
-        QCOMPARE(area.value("include").toString(), QStringLiteral("survey-area.geojson"));
+        QCOMPARE(area.value("include").toString(), QStringLiteral("survey-area-2.geojson"));
         QCOMPARE(area.value("exclude").toString(), QStringLiteral("survey-no-go.geojson"));
+
+        // A second no-go zone adds to the first, in a file of its own (the saved one stays as it was).
+        window.findChild<QAction*>(QStringLiteral("drawNoGoAction"))->trigger();
+        dragRectangle(at(318000, 4148000), at(323000, 4143000));
+        QCOMPARE(QFileInfo(QString::fromStdString(window.document()->mission().area.excludePath)).fileName(),
+                 QStringLiteral("survey-no-go-2.geojson"));
+        const double bothCut = square - insideArea();
+        QVERIFY2(std::abs(bothCut - 5e7) / 5e7 < 0.1, qPrintable(QString::number(bothCut)));
+        QVERIFY(window.saveMission(saved));
         ui::MainWindow reopened;
         reopened.setDialogsEnabled(false);
         reopened.setOpenSampleOnFirstStart(false);
