@@ -1,5 +1,6 @@
 #include "render/PlanLegend.hpp"
 
+#include "core/coverage/ImpassableCrossings.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "render/RobotPalette.hpp"
 
@@ -105,7 +106,7 @@ void paintSymbol(QPainter& painter, const LegendItem& item, const QRectF& box) {
 } // namespace
 
 std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* plan,
-                                      const std::vector<std::string>& robotNames) {
+                                      const std::vector<std::string>& robotNames, const ClassGrid* grid) {
     std::vector<LegendSection> sections;
     LegendSection landCover{QStringLiteral("Land cover"), {}};
     for (const LandCoverClass& entry : classes.classes()) {
@@ -139,11 +140,8 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
                  QStringLiteral("Unreachable: %1")
                      .arg(QString::fromStdString(formatArea(plan->metrics.unreachableAreaSquareMetres))),
                  {}});
-        const auto& cells = plan->cells.cells();
-        const auto& owner = plan->regions.robotOfCell;
-        bool crossed = false;
-        for (std::size_t id = 0; id < cells.size() && id < owner.size() && !crossed; ++id)
-            crossed = owner[id] >= 0 && cells[id].crossesImpassableLand();
+        const bool crossed =
+            grid != nullptr && !impassableCrossings(plan->cells, plan->regions, *grid, classes, 1).empty();
         if (crossed)
             overlays.items.push_back(
                 {LegendSymbol::Crossing,

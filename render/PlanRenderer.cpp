@@ -1,5 +1,6 @@
 #include "render/PlanRenderer.hpp"
 
+#include "core/coverage/ImpassableCrossings.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "core/outlines/RegionOutlines.hpp"
 #include "io/PlanExport.hpp"
@@ -179,14 +180,12 @@ void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     prepareRegions(outlines);
     preparePaths();
     crossingCells_.clear();
-    if (plan_ == nullptr)
+    if (plan_ == nullptr || grid_ == nullptr || classes_ == nullptr)
         return;
-    // Only cells a robot covers: no path crosses the others.
-    const auto& owner = plan_->regions.robotOfCell;
-    for (std::size_t id = 0; id < plan_->cells.size(); ++id) {
-        const Cell& cell = plan_->cells.cells()[id];
-        if (id < owner.size() && owner[id] >= 0 && cell.crossesImpassableLand())
-            crossingCells_.emplace_back(cell.minX, cell.minY, cell.size, cell.size);
+    for (const ImpassableCrossing& crossing :
+         impassableCrossings(plan_->cells, plan_->regions, *grid_, *classes_)) {
+        const Cell& cell = plan_->cells.cell(crossing.cell);
+        crossingCells_.emplace_back(cell.minX, cell.minY, cell.size, cell.size);
     }
 }
 

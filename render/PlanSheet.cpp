@@ -36,7 +36,7 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
                      const RegionOutlines* outlines, const std::vector<std::string>& robotNames,
                      QSize maxMapSize)
     : grid_(grid), classes_(classes), plan_(plan), outlines_(outlines),
-      sections_(planLegend(classes, &plan, robotNames)), title_(titleOf(plan)) {
+      sections_(planLegend(classes, &plan, robotNames, &grid)), title_(titleOf(plan)) {
     const QSize mapSize = fittedMapSize(grid, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
     const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);

@@ -1,5 +1,6 @@
 #include "ui/CellToolTip.hpp"
 
+#include "core/coverage/ImpassableCrossings.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "ui/MissionDocument.hpp"
 
@@ -25,56 +26,34 @@ QString className(const ClassTable& classes, std::int32_t value) {
     return found != nullptr ? QString::fromStdString(found->name) : tr("class %1").arg(value);
 }
 
-// Pixels of impassable classes whose centres lie in the cell, by class.
-std::map<std::int32_t, std::int64_t> impassablePixels(const ClassGrid& grid, const ClassTable& classes,
-                                                      const Cell& cell) {
-    std::map<std::int32_t, std::int64_t> counts;
-    const int firstColumn =
-        std::max(0, static_cast<int>(std::floor((cell.minX - grid.originX) / grid.pixelWidth)));
-    const int lastColumn = std::min(
-        grid.columns - 1, static_cast<int>(std::floor((cell.maxX() - grid.originX) / grid.pixelWidth)));
-    const int firstRow =
-        std::max(0, static_cast<int>(std::floor((grid.originY - cell.maxY()) / grid.pixelHeight)));
-    const int lastRow =
-        std::min(grid.rows - 1, static_cast<int>(std::floor((grid.originY - cell.minY) / grid.pixelHeight)));
-    for (int row = firstRow; row <= lastRow; ++row) {
-        const double y = grid.originY - (row + 0.5) * grid.pixelHeight;
-        if (y < cell.minY || y >= cell.maxY())
-            continue;
-        for (int column = firstColumn; column <= lastColumn; ++column) {
-            const double x = grid.originX + (column + 0.5) * grid.pixelWidth;
-            if (x < cell.minX || x >= cell.maxX() || grid.isOutside(column, row))
-                continue;
-            const std::int32_t value = grid.valueAt(column, row);
-            const LandCoverClass* found = classes.find(value);
-            if (found == nullptr || !found->isTraversable())
-                ++counts[value];
-        }
-    }
-    return counts;
-}
-
+// Empty where the cell's free sub-cells hold no impassable pixel.
 QString crossingSentence(const MissionDocument& document, const Plan& plan, const Cell& cell) {
-    QStringList parts;
-    if (const ClassGrid* grid = document.grid()) {
-        const auto counts = impassablePixels(*grid, document.classes(), cell);
-        // Most of it first.
-        std::vector<std::pair<std::int64_t, std::int32_t>> byCount;
-        for (const auto& [value, count] : counts)
-            byCount.emplace_back(count, value);
-        std::sort(byCount.rbegin(), byCount.rend());
-        for (const auto& entry : byCount)
-            parts << className(document.classes(), entry.second);
+    const ClassGrid* grid = document.grid();
+    if (grid == nullptr)
+        return {};
+    std::int64_t pixels = 0;
+    const auto counts = impassableClassesIn(cell, *grid, document.classes(), pixels);
+    std::int64_t impassable = 0;
+    std::vector<std::pair<std::int64_t, std::int32_t>> byCount; // most of it first
+    for (const auto& [value, count] : counts) {
+        byCount.emplace_back(count, value);
+        impassable += count;
     }
+    if (impassable == 0 || pixels == 0)
+        return {};
+    std::sort(byCount.rbegin(), byCount.rend());
+    QStringList parts;
+    for (const auto& entry : byCount)
+        parts << (entry.second == outsideTaskArea ? tr("outside the task area")
+                                                  : className(document.classes(), entry.second));
     const ParameterValue* threshold = plan.parameters.find("blocked_threshold");
     QString why = tr("cells are covered while obstacles take up to the blocked threshold");
     if (threshold != nullptr && std::holds_alternative<double>(*threshold))
         why = tr("cells are covered while obstacles take up to %1 of them (Blocked threshold)")
                   .arg(percent(std::get<double>(*threshold)));
-    const QString classes =
-        parts.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(parts.join(QStringLiteral(", ")));
-    return tr("%1 of this cell is impassable%2: the path crosses it because %3.")
-        .arg(percent(cell.impassableFraction()), classes, why);
+    return tr("%1 of this cell is impassable (%2): the path crosses it because %3.")
+        .arg(percent(static_cast<double>(impassable) / static_cast<double>(pixels)),
+             parts.join(QStringLiteral(", ")), why);
 }
 
 } // namespace
@@ -104,8 +83,10 @@ QString cellToolTip(const MissionDocument& document, MapPoint point) {
             .arg(cell.level)
             .arg(className(document.classes(), cell.classValue),
                  tr("%1 m/s").arg(QString::fromStdString(formatQuantity(cell.speedMetresPerSecond, 3))));
-    if (robot >= 0 && cell.crossesImpassableLand())
-        text += QStringLiteral("\n") + crossingSentence(document, *plan, cell);
+    if (robot >= 0) {
+        if (const QString crossing = crossingSentence(document, *plan, cell); !crossing.isEmpty())
+            text += QStringLiteral("\n") + crossing;
+    }
     if (document.planStale())
         text += QStringLiteral("\n") + tr("The plan is out of date.");
     return text;

@@ -22,8 +22,8 @@ LegendPanel::LegendPanel(MissionDocument* document, QWidget* parent) : QWidget(p
 void LegendPanel::rebuild() {
     sections_.clear();
     if (document_->hasMap())
-        sections_ =
-            render::planLegend(document_->classes(), document_->plan(), io::robotNames(document_->mission()));
+        sections_ = render::planLegend(document_->classes(), document_->plan(),
+                                       io::robotNames(document_->mission()), document_->grid());
     setMinimumSize(sizeHint());
     updateGeometry();
     update();

@@ -2,7 +2,6 @@
 
 #include "core/model/MapPoint.hpp"
 
-#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -62,15 +61,6 @@ struct Cell {
             return east ? SubCell::NorthEast : SubCell::NorthWest;
         return east ? SubCell::SouthEast : SubCell::SouthWest;
     }
-    // The area of its free sub-cells, and the share of it that is impassable land the robot crosses anyway
-    // (cells are kept while their obstacle share stays under the blocked threshold).
-    [[nodiscard]] double freeAreaSquareMetres() const { return size * size * freeSubCellCount() / 4.0; }
-    [[nodiscard]] double impassableFraction() const {
-        const double free = freeAreaSquareMetres();
-        return free > 0.0 ? std::max(0.0, 1.0 - passableAreaSquareMetres / free) : 0.0;
-    }
-    // The path crosses impassable land here (a share above rounding noise).
-    [[nodiscard]] bool crossesImpassableLand() const { return impassableFraction() > 1e-3; }
     // Seconds to cover it (spec 4): a coverage walk passes each free sub-cell once, a quarter of 2 x size.
     [[nodiscard]] double coverSeconds() const {
         return 2.0 * size * (freeSubCellCount() / 4.0) / speedMetresPerSecond;

@@ -1,3 +1,4 @@
+#include "core/coverage/ImpassableCrossings.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "render/PlanImage.hpp"
 #include "render/PlanLegend.hpp"
@@ -257,10 +258,15 @@ class TestPlanRenderer : public QObject {
 
     void marksCellsWhosePathCrossesImpassableLand() {
         const CrossingScene scene = crossingScene();
-        const auto& cells = scene.plan.cells.cells();
-        const auto crossing = std::count_if(cells.begin(), cells.end(),
-                                            [](const Cell& cell) { return cell.crossesImpassableLand(); });
+        const auto crossings = impassableCrossings(scene.plan.cells, scene.plan.regions, scene.problem.grid,
+                                                   scene.problem.classes);
+        const auto crossing = static_cast<std::int64_t>(crossings.size());
         QVERIFY2(crossing > 0, "the scene should have cells with some water in their free sub-cells");
+        // A quarter of a sub-cell's pixels at most (one water pixel in four), and never a cell of no robot.
+        for (const ImpassableCrossing& found : crossings) {
+            QVERIFY(found.impassableShare > 0.0 && found.impassableShare <= 0.25);
+            QVERIFY(scene.plan.regions.robotOfCell[static_cast<std::size_t>(found.cell)] >= 0);
+        }
         const auto countDashes = [&](bool layerOn) {
             render::PlanRenderer renderer;
             renderer.setMap(&scene.problem.grid, &scene.problem.classes);
@@ -284,7 +290,7 @@ class TestPlanRenderer : public QObject {
         QVERIFY(countDashes(true) > 20 * crossing);
         QCOMPARE(countDashes(false), 0);
         // The legend says what the dashes mean.
-        const auto sections = render::planLegend(scene.problem.classes, &scene.plan, {});
+        const auto sections = render::planLegend(scene.problem.classes, &scene.plan, {}, &scene.problem.grid);
         const auto& overlays = sections.back().items;
         QVERIFY(std::any_of(overlays.begin(), overlays.end(), [](const render::LegendItem& item) {
             return item.symbol == render::LegendSymbol::Crossing;

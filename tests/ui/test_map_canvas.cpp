@@ -1,3 +1,4 @@
+#include "core/coverage/ImpassableCrossings.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 #include "ui/CellToolTip.hpp"
@@ -169,15 +170,16 @@ class TestMapCanvas : public QObject {
         document_->setPlan(std::make_shared<const Plan>(makePlanner("mcpp-mlct")->plan(problem, {})),
                            document_->currentInputs());
         const Plan& plan = *document_->plan();
-        int crossing = -1;
-        int plain = -1;
-        for (std::size_t id = 0; id < plan.cells.size(); ++id) {
-            const Cell& cell = plan.cells.cell(static_cast<int>(id));
-            if (plan.regions.robotOfCell[id] < 0)
-                continue;
-            if (cell.crossesImpassableLand() && crossing < 0)
-                crossing = static_cast<int>(id);
-            if (cell.impassableFraction() == 0.0 && plain < 0)
+        const auto crossings = impassableCrossings(plan.cells, plan.regions, problem.grid, problem.classes);
+        QVERIFY(!crossings.empty());
+        const int crossing = crossings.front().cell;
+        int plain = -1; // a covered cell with no water in it
+        for (std::size_t id = 0; id < plan.cells.size() && plain < 0; ++id) {
+            std::int64_t pixels = 0;
+            if (plan.regions.robotOfCell[id] >= 0 &&
+                impassableClassesIn(plan.cells.cell(static_cast<int>(id)), problem.grid, problem.classes,
+                                    pixels)
+                    .empty())
                 plain = static_cast<int>(id);
         }
         QVERIFY(crossing >= 0 && plain >= 0);
