@@ -35,14 +35,7 @@ Scene& scene(int size) {
     if (made)
         return *made;
     made = std::make_unique<Scene>();
-    test::RandomMapSpec spec;
-    spec.columns = size;
-    spec.rows = size;
-    spec.landCovers = 3;
-    spec.obstacleFraction = 0.05;
-    spec.robots = 4;
-    spec.seed = 7;
-    PlanningProblem problem = test::randomProblem(spec);
+    PlanningProblem problem = test::randomProblem(test::multiCoverSpec(size, 4));
     problem.planner = defaultPlannerChoice("mcpp-mlct");
     auto plan = std::make_shared<const Plan>(makePlanner("mcpp-mlct")->plan(problem, {}));
     auto raster = std::make_shared<io::LoadedRaster>();

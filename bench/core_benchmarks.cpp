@@ -43,14 +43,7 @@ PlanningProblem uniformWithObstacles(int size, int robots, std::uint32_t seed) {
 
 // Three land covers (FOV 5, 10, 20 m) in patches, 5% obstacles; `size` bottom cells a side.
 PlanningProblem multiCover(int size, int robots, std::uint32_t seed) {
-    test::RandomMapSpec spec;
-    spec.columns = size;
-    spec.rows = size;
-    spec.landCovers = 3;
-    spec.obstacleFraction = 0.05;
-    spec.robots = robots;
-    spec.seed = seed;
-    return test::randomProblem(spec);
+    return test::randomProblem(test::multiCoverSpec(size, robots, seed));
 }
 
 void runPlanner(benchmark::State& state, PlanningProblem problem,

@@ -18,20 +18,13 @@ using namespace mcpp;
 
 namespace {
 
-// Three land covers (FOV 5, 10, 20 m) in patches, 5% obstacles, as in mcpp_core_benchmarks.
+// The map of mcpp_core_benchmarks' multiCoverMap, planned once.
 const Plan& plannedMap(int size, int robots) {
     static std::map<std::pair<int, int>, Plan> plans;
     auto found = plans.find({size, robots});
     if (found != plans.end())
         return found->second;
-    test::RandomMapSpec spec;
-    spec.columns = size;
-    spec.rows = size;
-    spec.landCovers = 3;
-    spec.obstacleFraction = 0.05;
-    spec.robots = robots;
-    spec.seed = 1;
-    PlanningProblem problem = test::randomProblem(spec);
+    PlanningProblem problem = test::randomProblem(test::multiCoverSpec(size, robots));
     problem.planner = defaultPlannerChoice("mcpp-mlct");
     return plans.emplace(std::pair{size, robots}, makePlanner("mcpp-mlct")->plan(problem, {})).first->second;
 }

@@ -23,14 +23,7 @@ struct Scene {
 const Scene& scene() {
     static const std::unique_ptr<Scene> made = [] {
         auto result = std::make_unique<Scene>();
-        test::RandomMapSpec spec;
-        spec.columns = 1024;
-        spec.rows = 1024;
-        spec.landCovers = 3;
-        spec.obstacleFraction = 0.05;
-        spec.robots = 4;
-        spec.seed = 7;
-        result->problem = test::randomProblem(spec);
+        result->problem = test::randomProblem(test::multiCoverSpec(1024, 4));
         result->problem.planner = defaultPlannerChoice("mcpp-mlct");
         result->plan = makePlanner("mcpp-mlct")->plan(result->problem, {});
         return result;

@@ -1,5 +1,6 @@
 #include "io/PlanFile.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/internal/CompressedReader.hpp"
@@ -197,24 +198,9 @@ std::uint8_t waypointTag(const Waypoint& waypoint, const CellGraph& graph) {
     return tag;
 }
 
-// The times measurePath gives the waypoints, in the same order of operations.
-void fillTimes(std::vector<Waypoint>& waypoints) {
-    double time = 0.0;
-    if (!waypoints.empty())
-        waypoints.front().cumulativeSeconds = 0.0;
-    for (std::size_t i = 1; i < waypoints.size(); ++i) {
-        const Waypoint& from = waypoints[i - 1];
-        const double dx = waypoints[i].x - from.x;
-        const double dy = waypoints[i].y - from.y;
-        const double segment = std::sqrt(dx * dx + dy * dy);
-        time += segment / 2.0 / from.speedMetresPerSecond + segment / 2.0 / waypoints[i].speedMetresPerSecond;
-        waypoints[i].cumulativeSeconds = time;
-    }
-}
-
 bool timesFollow(const std::vector<Waypoint>& waypoints) {
     std::vector<Waypoint> measured = waypoints;
-    fillTimes(measured);
+    fillCumulativeSeconds(measured);
     return std::equal(
         waypoints.begin(), waypoints.end(), measured.begin(),
         [](const Waypoint& a, const Waypoint& b) { return a.cumulativeSeconds == b.cumulativeSeconds; });
@@ -274,7 +260,7 @@ std::vector<Waypoint> getWaypoints(CompressedReader& in, const CellGraph& graph)
             waypoint.cumulativeSeconds = in.get<double>();
     }
     if (derivedTimes)
-        fillTimes(waypoints);
+        fillCumulativeSeconds(waypoints);
     return waypoints;
 }
 

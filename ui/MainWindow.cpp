@@ -62,7 +62,6 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <cmath>
-#include <filesystem>
 #include <optional>
 
 namespace mcpp::ui {
@@ -1154,6 +1153,11 @@ QString MainWindow::restorePlanBeside(const QString& missionPath, const std::str
 
 namespace {
 
+// Where areas drawn for an untitled mission wait until it is saved.
+QString drawnAreasFolder() {
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/drawn-areas");
+}
+
 // folder/base-kind.geojson, or base-kind-2.geojson, ... : the first name no file has.
 QString freeAreaFileName(const QString& folder, const QString& base, const QString& kind) {
     QString path = QDir(folder).filePath(QStringLiteral("%1-%2.geojson").arg(base, kind));
@@ -1176,8 +1180,7 @@ QString MainWindow::drawnAreaPath(bool exclude) const {
         folder = QFileInfo(document_->missionPath()).absolutePath();
         base = QFileInfo(document_->missionPath()).completeBaseName();
     } else {
-        folder = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
-                 QStringLiteral("/drawn-areas");
+        folder = drawnAreasFolder();
         QDir().mkpath(folder);
         base = QFileInfo(QString::fromStdString(document_->raster()->path)).completeBaseName();
     }
@@ -1222,8 +1225,7 @@ void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
 }
 
 bool MainWindow::keepDrawnAreasBeside(const QString& missionPath) {
-    const QString drawnFolder =
-        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/drawn-areas/");
+    const QString drawnFolder = drawnAreasFolder() + QStringLiteral("/");
     io::AreaOfInterest area = document_->mission().area;
     const QString folder = QFileInfo(missionPath).absolutePath();
     const QString base = QFileInfo(missionPath).completeBaseName();

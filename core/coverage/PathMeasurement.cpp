@@ -64,23 +64,35 @@ int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph)
     return repeats;
 }
 
-void measurePath(CoveragePath& path, const CellGraph& graph) {
-    double length = 0.0;
+namespace {
+
+double segmentLength(const Waypoint& from, const Waypoint& to) {
+    const double dx = to.x - from.x;
+    const double dy = to.y - from.y;
+    return std::sqrt(dx * dx + dy * dy);
+}
+
+} // namespace
+
+double fillCumulativeSeconds(std::vector<Waypoint>& waypoints) {
     double time = 0.0;
-    if (!path.waypoints.empty())
-        path.waypoints.front().cumulativeSeconds = 0.0;
-    for (std::size_t i = 1; i < path.waypoints.size(); ++i) {
-        const Waypoint& from = path.waypoints[i - 1];
-        Waypoint& to = path.waypoints[i];
-        const double dx = to.x - from.x;
-        const double dy = to.y - from.y;
-        const double segment = std::sqrt(dx * dx + dy * dy);
-        length += segment;
-        time += travelSeconds(segment, from.speedMetresPerSecond, to.speedMetresPerSecond);
+    if (!waypoints.empty())
+        waypoints.front().cumulativeSeconds = 0.0;
+    for (std::size_t i = 1; i < waypoints.size(); ++i) {
+        const Waypoint& from = waypoints[i - 1];
+        Waypoint& to = waypoints[i];
+        time += travelSeconds(segmentLength(from, to), from.speedMetresPerSecond, to.speedMetresPerSecond);
         to.cumulativeSeconds = time;
     }
+    return time;
+}
+
+void measurePath(CoveragePath& path, const CellGraph& graph) {
+    double length = 0.0;
+    for (std::size_t i = 1; i < path.waypoints.size(); ++i)
+        length += segmentLength(path.waypoints[i - 1], path.waypoints[i]);
     path.lengthMetres = length;
-    path.timeSeconds = time;
+    path.timeSeconds = fillCumulativeSeconds(path.waypoints);
     path.turns = countTurns(path.waypoints);
     path.repeatedSubCellVisits = countRepeatedSubCellVisits(path, graph);
 }

@@ -19,6 +19,10 @@ namespace mcpp {
 // sub-cell it began in. Points that are no sub-cell centre (a start point, say) are not visits.
 [[nodiscard]] int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph);
 
+// Sets each waypoint's cumulativeSeconds from the path before it (travelSeconds per segment) and returns
+// the whole time. measurePath and the plan-file reader use it, so times read back are the ones planned.
+double fillCumulativeSeconds(std::vector<Waypoint>& waypoints);
+
 // Fills length, time, cumulative times, turns and repeated visits from the waypoints. Each segment is
 // travelled half at the speed of the waypoint it leaves and half at the speed of the one it reaches.
 void measurePath(CoveragePath& path, const CellGraph& graph);

@@ -47,6 +47,17 @@ PlanningProblem drawnProblem(const std::vector<std::string>& rows, const std::ve
     return problem;
 }
 
+RandomMapSpec multiCoverSpec(int size, int robots, std::uint32_t seed) {
+    RandomMapSpec spec;
+    spec.columns = size;
+    spec.rows = size;
+    spec.landCovers = 3;
+    spec.obstacleFraction = 0.05;
+    spec.robots = robots;
+    spec.seed = seed;
+    return spec;
+}
+
 RandomMapSpec waterCrossingSpec() {
     RandomMapSpec spec;
     spec.columns = 24;

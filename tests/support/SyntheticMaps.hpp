@@ -25,6 +25,10 @@ struct RandomMapSpec {
 // cells of the bottom level. Deterministic for a seed.
 [[nodiscard]] PlanningProblem randomProblem(const RandomMapSpec& spec);
 
+// The benchmarks' multi-cover map: size x size pixels of three land covers (FOV 5, 10, 20 m) in patches and
+// 5 % scattered obstacles.
+[[nodiscard]] RandomMapSpec multiCoverSpec(int size, int robots, std::uint32_t seed = 7);
+
 // 24 x 24 pixels of grass with 4 % water pixels scattered, sub-cells of 2 x 2 pixels, two robots: some
 // sub-cells keep one water pixel in four (under the 50 % blocked threshold), so paths cross water there.
 [[nodiscard]] RandomMapSpec waterCrossingSpec();
