@@ -159,6 +159,11 @@ void BatchRunner::applyOverrides() {
         mission_.exports.densePaths = true;
     if (options_.cellPolygons)
         mission_.exports.cellPolygons = true;
+    if (options_.maxWaypoints) {
+        mission_.exports.vehicle.maxWaypoints = *options_.maxWaypoints;
+        for (io::RobotSpec& robot : mission_.robots)
+            robot.vehicle.maxWaypoints.reset();
+    }
     const auto planner = findPlannerDescription(mission_.planner.planner);
     if (!planner)
         badInput(fieldName(io::MissionField::of(Part::Planner)) + ": " +
@@ -274,7 +279,11 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     context.grid = &raster_.grid;
     context.drawImage = render::planImageWriter(planImageSide);
     context.robotNames = io::robotNames(mission_);
+    context.vehicles = io::robotVehicles(mission_);
     const int robots = static_cast<int>(plan.paths.size());
+    std::vector<std::size_t> missionParts(static_cast<std::size_t>(robots), 1);
+    for (int robot = 0; robot < robots; ++robot)
+        missionParts[static_cast<std::size_t>(robot)] = noteSplitMission(context, robot);
 
     struct Output {
         const io::ExportFormat* format;
@@ -337,20 +346,47 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             internalError(namingFile((directory / outputs[i].name).string(), results[i].error()));
         warn(outputs[i].name + " not written: " + results[i].error());
     }
-    removeStaleRobotFiles(robots, folder);
+    removeStaleRobotFiles(missionParts, folder);
 }
 
-void BatchRunner::removeStaleRobotFiles(int robots, const std::string& folder) const {
-    // Waypoint files of robots a previous run in this folder had and this one has not would mislead.
+std::size_t BatchRunner::noteSplitMission(const io::ExportContext& context, int robot) {
+    const io::AutopilotMission mission = io::autopilotMissionOf(context, robot);
+    if (mission.parts.size() <= 1)
+        return 1;
+    const std::string name = "robot_" + std::to_string(io::robotNumber(robot));
+    note(context.robotName(robot) + "'s mission has " + std::to_string(mission.items) +
+         " items, more than its autopilot's " + std::to_string(context.vehicle(robot).maxWaypoints) +
+         ": written in " + std::to_string(mission.parts.size()) + " parts, " + name + "_part_1 to " + name +
+         "_part_" + std::to_string(mission.parts.size()) + " (.plan and .waypoints), each beginning where " +
+         "the one before it ended");
+    return mission.parts.size();
+}
+
+void BatchRunner::removeStaleRobotFiles(const std::vector<std::size_t>& missionParts,
+                                        const std::string& folder) const {
+    // Waypoint files a previous run in this folder wrote and this one has not would mislead: those of
+    // robots it no longer has, a whole mission now split into parts, parts of a mission now whole or shorter.
     namespace fs = std::filesystem;
     const fs::path directory(folder);
     std::error_code code;
-    for (int robot = robots;; ++robot) {
+    for (std::size_t robot = 0;; ++robot) {
+        const bool planned = robot < missionParts.size();
+        const std::size_t parts = planned ? missionParts[robot] : 0;
         bool removed = false;
-        for (const io::ExportFormat& format : io::exportFormats())
-            if (format.inBatchOutputs && format.perRobot)
-                removed = fs::remove(directory / io::robotFileName(robot, format), code) || removed;
-        if (!removed)
+        for (const io::ExportFormat& format : io::exportFormats()) {
+            if (!format.inBatchOutputs || !format.perRobot)
+                continue;
+            const std::string whole =
+                (directory / io::robotFileName(static_cast<int>(robot), format)).string();
+            if (!planned || (format.splitByItemLimit && parts > 1))
+                removed = fs::remove(whole, code) || removed;
+            if (!format.splitByItemLimit)
+                continue;
+            for (std::size_t part = parts > 1 ? parts : 0; fs::remove(io::missionPartPath(whole, part), code);
+                 ++part)
+                removed = true;
+        }
+        if (!planned && !removed)
             break;
     }
 }

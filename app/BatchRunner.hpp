@@ -9,6 +9,7 @@
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
 #include "io/MissionInputs.hpp"
+#include "io/PlanExport.hpp"
 
 #include <optional>
 #include <ostream>
@@ -40,7 +41,9 @@ class BatchRunner {
     Plan runPlanner(const PlanningProblem& problem);
     // Every batch output on workerThreads() threads (set from --threads), report.json last.
     void writeOutputs(const Plan& plan, const std::string& folder);
-    void removeStaleRobotFiles(int robots, const std::string& folder) const;
+    void removeStaleRobotFiles(const std::vector<std::size_t>& missionParts, const std::string& folder) const;
+    // Says when a robot's mission is above its autopilot's item limit; the number of parts it is written in.
+    std::size_t noteSplitMission(const io::ExportContext& context, int robot);
     void printSummary(const Plan& plan) const;
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.
     void writeComparison(const std::vector<io::ComparisonRow>& rows,

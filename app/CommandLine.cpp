@@ -5,6 +5,7 @@
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/VehicleSettings.hpp"
 
 #include <algorithm>
 #include <array>
@@ -40,6 +41,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--dense-paths", "", true, false},     FlagSpec{"--cell-polygons", "", true, false},
     FlagSpec{"--threads", "N", true, false},        FlagSpec{"--compare", "NAMES", true, false},
     FlagSpec{"--area", "FILE", true, false},        FlagSpec{"--no-go", "FILE", true, false},
+    FlagSpec{"--max-waypoints", "N", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -50,6 +52,15 @@ const FlagSpec* findFlag(std::string_view name) {
     const auto found = std::find_if(flagSpecs.begin(), flagSpecs.end(),
                                     [name](const FlagSpec& spec) { return spec.name == name; });
     return found == flagSpecs.end() ? nullptr : &*found;
+}
+
+std::optional<int> parseNonNegativeInteger(std::string_view text) {
+    text = trimmedText(text);
+    int value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0)
+        return std::nullopt;
+    return value;
 }
 
 std::optional<int> parsePositiveInteger(std::string_view text) {
@@ -303,6 +314,13 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             if (!threads || *threads > 64)
                 return failure("--threads: " + quoted(value) + " is not a thread count (1 to 64)");
             options.threads = *threads;
+        } else if (flag == "--max-waypoints") {
+            const auto limit = parseNonNegativeInteger(value);
+            if (!limit || (*limit != 0 && *limit < io::minimumMaxWaypoints))
+                return failure("--max-waypoints: " + quoted(value) +
+                               " is not an item limit (0 for none, or " +
+                               std::to_string(io::minimumMaxWaypoints) + " or more mission items)");
+            options.maxWaypoints = *limit;
         } else if (flag == "--dense-paths") {
             options.densePaths = true;
         } else if (flag == "--cell-polygons") {
@@ -395,13 +413,17 @@ std::string CommandLine::usage() {
            "  --dense-paths            paths in plan.geojson and plan.gpkg through every sub-cell centre\n"
            "                           instead of only their turning points\n"
            "  --cell-polygons          add a polygon per cell to plan.gpkg (layer cells; big on large maps)\n"
+           "  --max-waypoints N        mission items each robot's autopilot holds, home included (default\n"
+           "                           700; 0 for no limit). A longer mission is written in consecutive\n"
+           "                           parts, robot_<n>_part_<j>.plan and .waypoints, each beginning where\n"
+           "                           the one before it ended\n"
            "  --threads N              plan the robots' paths and write the outputs on N threads\n"
            "                           (default: the machine's cores); the files are the same whatever N\n"
            "  -q, --quiet              no progress lines, warnings or summary; errors are still printed\n"
            "\n"
            "Mission files (format: docs/mission-format.md) may be combined with --band, --area, --no-go,\n"
-           "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths and\n"
-           "--cell-polygons, which override the mission's values.\n"
+           "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths,\n"
+           "--cell-polygons and --max-waypoints, which override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"
@@ -412,7 +434,8 @@ std::string CommandLine::usage() {
            "each\n"
            "sub-cell as a GeoTIFF), plan.png and per robot n\n"
            "(numbered from 1, as on the map and in the \"robot\" fields of plan.geojson and report.json)\n"
-           "robot_<n>.plan (QGroundControl), robot_<n>.waypoints (QGC WPL 110) and robot_<n>.csv.\n"
+           "robot_<n>.plan (QGroundControl), robot_<n>.waypoints (QGC WPL 110) and robot_<n>.csv; a mission\n"
+           "above its robot's item limit is written as robot_<n>_part_<j>.plan and .waypoints instead.\n"
            "\n"
            "Planners (mcpp --help-planner NAME lists one's parameters for --param):\n";
     std::size_t plannerWidth = 0;

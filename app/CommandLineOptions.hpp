@@ -47,6 +47,7 @@ struct CommandLineOptions {
     bool densePaths = false;                  // --dense-paths
     bool cellPolygons = false;                // --cell-polygons
     int threads = 0;                          // --threads; 0: the machine's cores (mcpp::workerThreads)
+    std::optional<int> maxWaypoints;          // --max-waypoints: every robot's autopilot item limit
 
     [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }
 };

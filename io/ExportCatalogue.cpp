@@ -43,6 +43,11 @@ ExportFormat inLongitudeLatitude(ExportFormat result) {
     return result;
 }
 
+ExportFormat splitByItemLimit(ExportFormat result) {
+    result.splitByItemLimit = true;
+    return result;
+}
+
 ExportFormat perRobot(ExportFormat result) {
     result.perRobot = true;
     return result;
@@ -60,14 +65,14 @@ std::vector<ExportFormat> makeCatalogue() {
                 "regions.tif", false),
         inLongitudeLatitude(format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml))),
         inLongitudeLatitude(format("gpx", "GPX", "gpx", "GPX (*.gpx)", wholePlan(writePlanGpx))),
-        inBatch(
-            inLongitudeLatitude(perRobot(format("qgc-plan", "QGroundControl plan per robot", "plan",
-                                                "QGroundControl plan (*.plan)", writeQGroundControlPlan))),
-            {}, true),
-        inBatch(
-            inLongitudeLatitude(perRobot(format("qgc-wpl", "Waypoint list (QGC WPL) per robot", "waypoints",
-                                                "Waypoint list (*.waypoints *.txt)", writeWaypointList))),
-            {}, true),
+        inBatch(splitByItemLimit(inLongitudeLatitude(
+                    perRobot(format("qgc-plan", "QGroundControl plan per robot", "plan",
+                                    "QGroundControl plan (*.plan)", writeQGroundControlPlan)))),
+                {}, true),
+        inBatch(splitByItemLimit(inLongitudeLatitude(
+                    perRobot(format("qgc-wpl", "Waypoint list (QGC WPL) per robot", "waypoints",
+                                    "Waypoint list (*.waypoints *.txt)", writeWaypointList)))),
+                {}, true),
         inBatch(inLongitudeLatitude(perRobot(format("waypoint-csv", "Waypoint CSV per robot", "csv",
                                                     "CSV (*.csv)", writeWaypointCsv))),
                 {}, true),

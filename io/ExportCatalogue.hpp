@@ -19,6 +19,8 @@ struct ExportFormat {
     bool perRobot = false; // one file per robot
     // Written in WGS84 longitude and latitude, so impossible for a map without a CRS.
     bool needsLongitudeLatitude = false;
+    // An autopilot file: a mission above the robot's item limit is written in parts (missionPartPath).
+    bool splitByItemLimit = false;
     // Batch mode: whether it writes this format, under which name (whole-plan formats; per-robot files are
     // robot_<i>.<extension>), and whether a failure ends the run (else it is a warning).
     bool inBatchOutputs = false;

@@ -14,4 +14,9 @@ std::string ExportContext::robotName(int robot) const {
     return "Robot " + std::to_string(robotNumber(robot));
 }
 
+const VehicleSettings& ExportContext::vehicle(int robot) const {
+    const auto index = static_cast<std::size_t>(robot);
+    return robot >= 0 && index < vehicles.size() ? vehicles[index] : settings.vehicle;
+}
+
 } // namespace mcpp::io

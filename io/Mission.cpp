@@ -113,6 +113,17 @@ class MissionReader {
         return true;
     }
 
+    bool vehicleType(const QJsonValue& value, const std::string& path, VehicleType& out) {
+        std::string key;
+        if (!string(value, path, key))
+            return false;
+        const auto type = vehicleTypeFromKey(key);
+        if (!type)
+            return fail(path, "\"" + key + "\" is not a vehicle type (rover, multirotor, fixed-wing)");
+        out = *type;
+        return true;
+    }
+
     // Optional members: absent leaves `out` as it is.
     template <typename T, typename Read>
     bool optional(const QJsonObject& object, const std::string& path, const char* key, T& out, Read read) {
@@ -120,6 +131,18 @@ class MissionReader {
         if (value.isUndefined())
             return true;
         return (this->*read)(value, join(path, key), out);
+    }
+    template <typename T, typename Read>
+    bool optional(const QJsonObject& object, const std::string& path, const char* key, std::optional<T>& out,
+                  Read read) {
+        const QJsonValue value = object.value(QLatin1String(key));
+        if (value.isUndefined())
+            return true;
+        T readValue{};
+        if (!(this->*read)(value, join(path, key), readValue))
+            return false;
+        out = readValue;
+        return true;
     }
     template <typename T, typename Read>
     bool required(const QJsonObject& object, const std::string& path, const char* key, T& out, Read read) {
@@ -199,14 +222,53 @@ bool readClasses(MissionReader& reader, const QJsonValue& value, Mission& missio
     return true;
 }
 
+// The autopilot settings a robot or the exports may give; absent ones stay unset.
+bool readVehicle(MissionReader& reader, const QJsonObject& object, const std::string& path,
+                 VehicleOverrides& vehicle) {
+    if (!reader.optional(object, path, "vehicle", vehicle.type, &MissionReader::vehicleType) ||
+        !reader.optional(object, path, "altitude_m", vehicle.altitudeMetres, &MissionReader::number) ||
+        !reader.optional(object, path, "cruise_speed_mps", vehicle.cruiseSpeedMetresPerSecond,
+                         &MissionReader::number) ||
+        !reader.optional(object, path, "max_waypoints", vehicle.maxWaypoints, &MissionReader::integer)) {
+        return false;
+    }
+    if (vehicle.altitudeMetres && (*vehicle.altitudeMetres < 0.0 || *vehicle.altitudeMetres > 10000.0))
+        return reader.fail(MissionReader::join(path, "altitude_m"), "must be between 0 and 10000 m");
+    if (vehicle.cruiseSpeedMetresPerSecond &&
+        (*vehicle.cruiseSpeedMetresPerSecond < 0.0 || *vehicle.cruiseSpeedMetresPerSecond > 1000.0)) {
+        return reader.fail(MissionReader::join(path, "cruise_speed_mps"),
+                           "must be between 0 (land-cover speeds) and 1000 m/s");
+    }
+    if (vehicle.maxWaypoints && *vehicle.maxWaypoints != 0 && *vehicle.maxWaypoints < minimumMaxWaypoints) {
+        return reader.fail(MissionReader::join(path, "max_waypoints"),
+                           "must be 0 (no limit) or at least " + std::to_string(minimumMaxWaypoints) +
+                               " mission items");
+    }
+    return true;
+}
+
+void writeVehicle(JsonValue& object, const VehicleOverrides& vehicle) {
+    if (vehicle.type)
+        object.add("vehicle", vehicleTypeKey(*vehicle.type));
+    if (vehicle.altitudeMetres)
+        object.add("altitude_m", *vehicle.altitudeMetres);
+    if (vehicle.cruiseSpeedMetresPerSecond)
+        object.add("cruise_speed_mps", *vehicle.cruiseSpeedMetresPerSecond);
+    if (vehicle.maxWaypoints)
+        object.add("max_waypoints", *vehicle.maxWaypoints);
+}
+
 bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string& path, RobotSpec& robot) {
     QJsonObject object;
     if (!reader.object(value, path, object))
         return false;
-    if (!reader.onlyKeys(object, path, {"name", "start", "start_crs"}))
+    if (!reader.onlyKeys(
+            object, path,
+            {"name", "start", "start_crs", "vehicle", "altitude_m", "cruise_speed_mps", "max_waypoints"}))
         return false;
     if (!reader.optional(object, path, "name", robot.name, &MissionReader::string) ||
-        !reader.optional(object, path, "start_crs", robot.startCrs, &MissionReader::string)) {
+        !reader.optional(object, path, "start_crs", robot.startCrs, &MissionReader::string) ||
+        !readVehicle(reader, object, path, robot.vehicle)) {
         return false;
     }
     const QJsonValue start = object.value(QLatin1String("start"));
@@ -311,20 +373,23 @@ bool readExports(MissionReader& reader, const QJsonValue& value, ExportSettings&
     QJsonObject object;
     if (!reader.object(value, path, object))
         return false;
-    if (!reader.onlyKeys(
-            object, path,
-            {"altitude_m", "cruise_speed_mps", "merge_collinear", "dense_paths", "cell_polygons"}))
+    if (!reader.onlyKeys(object, path,
+                         {"vehicle", "altitude_m", "cruise_speed_mps", "max_waypoints", "speed_tolerance",
+                          "merge_collinear", "dense_paths", "cell_polygons"}))
         return false;
-    if (!reader.optional(object, path, "altitude_m", exports.altitudeMetres, &MissionReader::number) ||
-        !reader.optional(object, path, "cruise_speed_mps", exports.cruiseSpeedMetresPerSecond,
-                         &MissionReader::number) ||
+    VehicleOverrides vehicle;
+    if (!readVehicle(reader, object, path, vehicle))
+        return false;
+    exports.vehicle = vehicle.over(exports.vehicle);
+    if (!reader.optional(object, path, "speed_tolerance", exports.speedTolerance, &MissionReader::number) ||
         !reader.optional(object, path, "merge_collinear", exports.mergeCollinear, &MissionReader::boolean) ||
         !reader.optional(object, path, "dense_paths", exports.densePaths, &MissionReader::boolean) ||
         !reader.optional(object, path, "cell_polygons", exports.cellPolygons, &MissionReader::boolean)) {
         return false;
     }
-    if (exports.cruiseSpeedMetresPerSecond < 0.0)
-        return reader.fail("exports.cruise_speed_mps", "must be >= 0");
+    if (exports.speedTolerance < 0.0 || exports.speedTolerance >= 1.0)
+        return reader.fail("exports.speed_tolerance",
+                           "must be from 0 (every change) up to, not including, 1");
     return true;
 }
 
@@ -515,6 +580,7 @@ std::string missionToJson(const Mission& mission) {
         start.push(robot.start.y);
         if (!robot.startCrs.empty())
             item.add("start_crs", robot.startCrs);
+        writeVehicle(item, robot.vehicle);
     }
 
     JsonValue& planner = root.add("planner", JsonValue::object());
@@ -524,8 +590,11 @@ std::string missionToJson(const Mission& mission) {
         parameters.add(key, jsonOf(value));
 
     JsonValue& exports = root.add("exports", JsonValue::object());
-    exports.add("altitude_m", mission.exports.altitudeMetres);
-    exports.add("cruise_speed_mps", mission.exports.cruiseSpeedMetresPerSecond);
+    exports.add("vehicle", vehicleTypeKey(mission.exports.vehicle.type));
+    exports.add("altitude_m", mission.exports.vehicle.altitudeMetres);
+    exports.add("cruise_speed_mps", mission.exports.vehicle.cruiseSpeedMetresPerSecond);
+    exports.add("max_waypoints", mission.exports.vehicle.maxWaypoints);
+    exports.add("speed_tolerance", mission.exports.speedTolerance);
     exports.add("merge_collinear", mission.exports.mergeCollinear);
     exports.add("dense_paths", mission.exports.densePaths);
     exports.add("cell_polygons", mission.exports.cellPolygons);
@@ -558,6 +627,14 @@ std::vector<std::string> robotNames(const Mission& mission) {
     for (const RobotSpec& robot : mission.robots)
         names.push_back(robot.name);
     return names;
+}
+
+std::vector<VehicleSettings> robotVehicles(const Mission& mission) {
+    std::vector<VehicleSettings> vehicles;
+    vehicles.reserve(mission.robots.size());
+    for (const RobotSpec& robot : mission.robots)
+        vehicles.push_back(robot.vehicle.over(mission.exports.vehicle));
+    return vehicles;
 }
 
 } // namespace mcpp::io

@@ -6,6 +6,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/GeoReference.hpp"
 #include "io/Result.hpp"
+#include "io/VehicleSettings.hpp"
 
 #include <string>
 #include <vector>
@@ -15,14 +16,17 @@ namespace mcpp::io {
 struct RobotSpec {
     std::string name;
     MapPoint start;
-    std::string startCrs; // empty: the raster's CRS
+    std::string startCrs;          // empty: the raster's CRS
+    VehicleOverrides vehicle = {}; // its own autopilot settings; the rest from the mission's exports
 
     friend bool operator==(const RobotSpec&, const RobotSpec&) = default;
 };
 
 struct ExportSettings {
-    double altitudeMetres = 30.0;            // waypoint altitude above home
-    double cruiseSpeedMetresPerSecond = 0.0; // 0: use the land-cover speed
+    VehicleSettings vehicle; // every robot's, unless it has its own
+    // A new speed is commanded in waypoint files only where the land-cover speed differs from the one in
+    // force by more than this fraction of it.
+    double speedTolerance = 0.1;
     bool mergeCollinear = true;
     bool densePaths = false;   // vector paths through every sub-cell centre instead of their turning points
     bool cellPolygons = false; // a polygon per cell in the GeoPackage (big on large maps)
@@ -63,6 +67,8 @@ struct Mission {
 
 // Each robot's name in order, as exports name them.
 [[nodiscard]] std::vector<std::string> robotNames(const Mission& mission);
+// Each robot's vehicle in order: its own settings over the mission's.
+[[nodiscard]] std::vector<VehicleSettings> robotVehicles(const Mission& mission);
 
 // The same from the file's text; path names it in messages and anchors a relative raster path.
 [[nodiscard]] Result<Mission> parseMission(const std::string& text, const std::string& path);

@@ -3,6 +3,7 @@
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
 #include "core/outlines/RegionOutlines.hpp"
+#include "io/AutopilotMission.hpp"
 #include "io/GeoReference.hpp"
 #include "io/Mission.hpp"
 #include "io/Result.hpp"
@@ -38,10 +39,13 @@ struct ExportContext {
     const std::atomic<bool>* cancelRequested = nullptr;
     // Each robot's name, by robot index, for the exports that show names.
     std::vector<std::string> robotNames = {};
+    // Each robot's vehicle, by robot index; settings.vehicle for a robot not in it.
+    std::vector<VehicleSettings> vehicles = {};
 
     [[nodiscard]] bool cancelled() const { return cancelRequested != nullptr && cancelRequested->load(); }
     // The robot's name from robotNames, or "Robot <number>" when it has none.
     [[nodiscard]] std::string robotName(int robot) const;
+    [[nodiscard]] const VehicleSettings& vehicle(int robot) const;
     // The plan's region outlines, traced on first use and shared by every writer of this context (and its
     // copies), whichever thread asks first.
     [[nodiscard]] const RegionOutlines& outlines() const;
@@ -79,7 +83,13 @@ struct ExportContext {
 // direction; a point on the straight segment between its neighbours is left out, whatever its land cover.
 [[nodiscard]] std::vector<Waypoint> turningPoints(const CoveragePath& path);
 
-// Per robot waypoint files.
+// The mission a robot's autopilot files hold (empty when the plan has no path for it), with the parts its
+// vehicle's item limit splits it into.
+[[nodiscard]] AutopilotMission autopilotMissionOf(const ExportContext& context, int robot);
+
+// Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive
+// parts beside `path` (missionPartPath), each beginning where the one before it ended, and `path` itself is
+// not written.
 [[nodiscard]] Status writeQGroundControlPlan(const ExportContext& context, int robot,
                                              const std::string& path);
 [[nodiscard]] Status writeWaypointList(const ExportContext& context, int robot,

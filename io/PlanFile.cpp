@@ -421,8 +421,10 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
         if (!area->empty())
             *area = absoluteNormal(resolveMissionPath(*area, missionPath));
     inputs.exports = {};
-    for (RobotSpec& robot : inputs.robots)
+    for (RobotSpec& robot : inputs.robots) { // names and vehicles shape the files, not the plan
         robot.name.clear();
+        robot.vehicle = {};
+    }
     const std::string files =
         inputFilesIdentity({inputs.rasterPath, inputs.area.includePath, inputs.area.excludePath});
     if (files.empty())

@@ -26,6 +26,12 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("time_s", robot.timeSeconds);
         item.add("turns", robot.turns);
         item.add("cost_s", robot.costSeconds);
+        const VehicleSettings& vehicle = context.vehicle(robot.robot);
+        const AutopilotMission mission = autopilotMissionOf(context, robot.robot);
+        item.add("vehicle", vehicleTypeKey(vehicle.type));
+        item.add("max_waypoints", vehicle.maxWaypoints);
+        item.add("mission_items", mission.items);
+        item.add("mission_parts", static_cast<int>(mission.parts.size()));
     }
     root.add("makespan_s", metrics.makespanSeconds);
     root.add("lower_bound_s", metrics.lowerBoundSeconds);
@@ -57,14 +63,16 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
 }
 
 Status writeReportCsv(const ExportContext& context, const std::string& path) {
-    std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s\n";
+    std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
+        const AutopilotMission mission = autopilotMissionOf(context, robot.robot);
         text += std::to_string(robotNumber(robot.robot)) + "," +
                 internal::quoteCsvField(context.robotName(robot.robot)) + "," + std::to_string(robot.cells) +
                 "," + internal::formatShortest(robot.areaSquareMetres) + "," +
                 internal::formatShortest(robot.lengthMetres) + "," +
                 internal::formatShortest(robot.timeSeconds) + "," + std::to_string(robot.turns) + "," +
-                internal::formatShortest(robot.costSeconds) + "\n";
+                internal::formatShortest(robot.costSeconds) + "," + std::to_string(mission.items) + "," +
+                std::to_string(mission.parts.size()) + "\n";
     }
     return internal::writeFileAtomically(path, text);
 }

@@ -1,3 +1,4 @@
+#include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
@@ -18,6 +19,8 @@ constexpr int frameGlobal = 0;
 constexpr int frameMission = 2;
 constexpr int firmwarePx4 = 12;        // MAV_AUTOPILOT_PX4, as in QGroundControl's samples
 constexpr int vehicleGroundRover = 10; // MAV_TYPE_GROUND_ROVER
+constexpr int vehicleQuadrotor = 2;    // MAV_TYPE_QUADROTOR
+constexpr int vehicleFixedWing = 1;    // MAV_TYPE_FIXED_WING
 
 const CoveragePath* pathOfRobot(const Plan& plan, int robot) {
     for (const CoveragePath& path : plan.paths) {
@@ -69,12 +72,6 @@ double fieldOfViewAt(const Plan& plan, const Waypoint& waypoint) {
     return plan.cells.cell(waypoint.cell).fieldOfView();
 }
 
-// The speed a robot is told to drive on the segment ending at this waypoint.
-double commandedSpeed(const ExportContext& context, const Waypoint& waypoint) {
-    return context.settings.cruiseSpeedMetresPerSecond > 0.0 ? context.settings.cruiseSpeedMetresPerSecond
-                                                             : waypoint.speedMetresPerSecond;
-}
-
 bool collinearAndBetween(const Waypoint& a, const Waypoint& b, const Waypoint& c) {
     const double abX = b.x - a.x, abY = b.y - a.y, acX = c.x - a.x, acY = c.y - a.y;
     const double lengthAc = std::hypot(acX, acY);
@@ -124,52 +121,81 @@ std::vector<Waypoint> turningPoints(const CoveragePath& path) {
     return kept;
 }
 
-Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {
-    auto points = geoWaypoints(context, robot, path, true);
-    if (!points)
-        return Status::failure(points.error());
-    const double altitude = context.settings.altitudeMetres;
-    const GeoWaypoint& home = points.value().front();
+namespace {
 
+// The mission's points from `first` to `last` with their longitude and latitude.
+Result<std::vector<GeoWaypoint>> geoPoints(const ExportContext& context, const AutopilotMission& mission,
+                                           const MissionPart& part, const std::string& path) {
+    std::vector<GeoWaypoint> points;
+    points.reserve(part.last - part.first + 1);
+    for (std::size_t i = part.first; i <= part.last; ++i) {
+        const Waypoint& waypoint = mission.points[i];
+        auto lonLat = context.georeference.toWgs84({waypoint.x, waypoint.y});
+        if (!lonLat)
+            return Result<std::vector<GeoWaypoint>>::failure(path + ": " + lonLat.error());
+        points.push_back({waypoint, lonLat.value().longitude, lonLat.value().latitude});
+    }
+    return points;
+}
+
+int mavlinkVehicleType(VehicleType type) {
+    switch (type) {
+    case VehicleType::Multirotor:
+        return vehicleQuadrotor;
+    case VehicleType::FixedWing:
+        return vehicleFixedWing;
+    case VehicleType::Rover:
+        break;
+    }
+    return vehicleGroundRover;
+}
+
+void addSpeedChange(JsonValue& items, int& jumpId, double speed) {
+    JsonValue& change = items.push(JsonValue::object());
+    change.add("autoContinue", true);
+    change.add("command", commandChangeSpeed);
+    change.add("doJumpId", jumpId++);
+    change.add("frame", frameMission);
+    JsonValue& params = change.add("params", JsonValue::array());
+    for (const double value : {1.0, speed, -1.0, 0.0, 0.0, 0.0, 0.0})
+        params.push(value);
+    change.add("type", "SimpleItem");
+}
+
+void addWaypoint(JsonValue& items, int& jumpId, const GeoWaypoint& point, double altitude) {
+    JsonValue& item = items.push(JsonValue::object());
+    item.add("AMSLAltAboveTerrain", JsonValue());
+    item.add("Altitude", altitude);
+    item.add("AltitudeMode", 1);
+    item.add("autoContinue", true);
+    item.add("command", commandWaypoint);
+    item.add("doJumpId", jumpId++);
+    item.add("frame", frameGlobalRelativeAltitude);
+    JsonValue& params = item.add("params", JsonValue::array());
+    params.push(0);
+    params.push(0);
+    params.push(0);
+    params.push(JsonValue());
+    params.push(point.latitude);
+    params.push(point.longitude);
+    params.push(altitude);
+    item.add("type", "SimpleItem");
+}
+
+// One QGroundControl plan: the part's first speed is the mission's cruise speed, later ones are items.
+std::string qGroundControlPlanText(const AutopilotMission& mission, const MissionPart& part,
+                                   const std::vector<GeoWaypoint>& points, const VehicleSettings& vehicle) {
+    const double altitude = vehicle.altitudeMetres;
     JsonValue items = JsonValue::array();
     int jumpId = 1;
-    double currentSpeed = commandedSpeed(context, home.waypoint);
-    for (std::size_t i = 0; i < points.value().size(); ++i) {
-        const GeoWaypoint& point = points.value()[i];
-        const double speed = commandedSpeed(context, point.waypoint);
-        if (i > 0 && speed != currentSpeed && speed > 0.0) {
-            // Land-cover speeds change along the path: tell the vehicle before it drives the segment.
-            JsonValue& change = items.push(JsonValue::object());
-            change.add("autoContinue", true);
-            change.add("command", commandChangeSpeed);
-            change.add("doJumpId", jumpId++);
-            change.add("frame", frameMission);
-            JsonValue& params = change.add("params", JsonValue::array());
-            for (const double value : {1.0, speed, -1.0, 0.0, 0.0, 0.0, 0.0})
-                params.push(value);
-            change.add("type", "SimpleItem");
-            currentSpeed = speed;
-        }
-        JsonValue& item = items.push(JsonValue::object());
-        item.add("AMSLAltAboveTerrain", JsonValue());
-        item.add("Altitude", altitude);
-        item.add("AltitudeMode", 1);
-        item.add("autoContinue", true);
-        item.add("command", commandWaypoint);
-        item.add("doJumpId", jumpId++);
-        item.add("frame", frameGlobalRelativeAltitude);
-        JsonValue& params = item.add("params", JsonValue::array());
-        params.push(0);
-        params.push(0);
-        params.push(0);
-        params.push(JsonValue());
-        params.push(point.latitude);
-        params.push(point.longitude);
-        params.push(altitude);
-        item.add("type", "SimpleItem");
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const std::size_t point = part.first + i;
+        if (i > 0 && mission.changesSpeedAt(point))
+            addSpeedChange(items, jumpId, mission.commandedSpeeds[point]);
+        addWaypoint(items, jumpId, points[i], altitude);
     }
-
-    const double cruise = commandedSpeed(context, home.waypoint);
+    const double cruise = mission.commandedSpeeds[part.first];
+    const GeoWaypoint& home = points.front();
     JsonValue root = JsonValue::object();
     root.add("fileType", "Plan");
     JsonValue& fence = root.add("geoFence", JsonValue::object());
@@ -177,29 +203,28 @@ Status writeQGroundControlPlan(const ExportContext& context, int robot, const st
     fence.add("polygons", JsonValue::array());
     fence.add("version", 2);
     root.add("groundStation", "QGroundControl");
-    JsonValue& mission = root.add("mission", JsonValue::object());
-    mission.add("cruiseSpeed", cruise);
-    mission.add("firmwareType", firmwarePx4);
-    mission.add("globalPlanAltitudeMode", 1);
-    mission.add("hoverSpeed", cruise);
-    mission.add("items", std::move(items));
-    JsonValue& homePosition = mission.add("plannedHomePosition", JsonValue::array());
+    JsonValue& plan = root.add("mission", JsonValue::object());
+    plan.add("cruiseSpeed", cruise);
+    plan.add("firmwareType", firmwarePx4);
+    plan.add("globalPlanAltitudeMode", 1);
+    plan.add("hoverSpeed", cruise);
+    plan.add("items", std::move(items));
+    JsonValue& homePosition = plan.add("plannedHomePosition", JsonValue::array());
     homePosition.push(home.latitude);
     homePosition.push(home.longitude);
     homePosition.push(0.0);
-    mission.add("vehicleType", vehicleGroundRover);
-    mission.add("version", 2);
+    plan.add("vehicleType", mavlinkVehicleType(vehicle.type));
+    plan.add("version", 2);
     JsonValue& rally = root.add("rallyPoints", JsonValue::object());
     rally.add("points", JsonValue::array());
     rally.add("version", 2);
     root.add("version", 1);
-    return internal::writeFileAtomically(path, root.toText());
+    return root.toText();
 }
 
-Status writeWaypointList(const ExportContext& context, int robot, const std::string& path) {
-    auto points = geoWaypoints(context, robot, path, true);
-    if (!points)
-        return Status::failure(points.error());
+// One QGC WPL 110 file: home, the speed the part starts with, then waypoints and speed changes.
+std::string waypointListText(const AutopilotMission& mission, const MissionPart& part,
+                             const std::vector<GeoWaypoint>& points, const VehicleSettings& vehicle) {
     const auto row = [](int index, int current, int frame, int command, const std::array<double, 4>& params,
                         double latitude, double longitude, double altitude) {
         std::string text = std::to_string(index) + "\t" + std::to_string(current) + "\t" +
@@ -209,23 +234,71 @@ Status writeWaypointList(const ExportContext& context, int robot, const std::str
         return text + "\t" + fixed(latitude, 8) + "\t" + fixed(longitude, 8) + "\t" + fixed(altitude, 6) +
                "\t1\n";
     };
-    const GeoWaypoint& home = points.value().front();
+    const auto speedRow = [&](int index, double speed) {
+        return row(index, 0, frameGlobalRelativeAltitude, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
+    };
+    const GeoWaypoint& home = points.front();
     std::string text = "QGC WPL 110\n";
     text += row(0, 1, frameGlobal, commandWaypoint, {0, 0, 0, 0}, home.latitude, home.longitude, 0.0);
     int index = 1;
-    double currentSpeed = commandedSpeed(context, home.waypoint);
-    for (std::size_t i = 0; i < points.value().size(); ++i) {
-        const GeoWaypoint& point = points.value()[i];
-        const double speed = commandedSpeed(context, point.waypoint);
-        if (i > 0 && speed != currentSpeed && speed > 0.0) {
-            text +=
-                row(index++, 0, frameGlobalRelativeAltitude, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
-            currentSpeed = speed;
-        }
-        text += row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0}, point.latitude,
-                    point.longitude, context.settings.altitudeMetres);
+    if (mission.commandedSpeeds[part.first] > 0.0)
+        text += speedRow(index++, mission.commandedSpeeds[part.first]);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const std::size_t point = part.first + i;
+        if (i > 0 && mission.changesSpeedAt(point))
+            text += speedRow(index++, mission.commandedSpeeds[point]);
+        text += row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0},
+                    points[i].latitude, points[i].longitude, vehicle.altitudeMetres);
     }
-    return internal::writeFileAtomically(path, text);
+    return text;
+}
+
+using MissionText = std::string (*)(const AutopilotMission&, const MissionPart&,
+                                    const std::vector<GeoWaypoint>&, const VehicleSettings&);
+
+// The robot's mission in one file at `path`, or, above its vehicle's item limit, in parts beside it.
+Status writeMissionFiles(const ExportContext& context, int robot, const std::string& path, MissionText text) {
+    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
+    const std::string number = std::to_string(robotNumber(robot));
+    if (coverage == nullptr)
+        return Status::failure(path + ": the plan has no path for robot " + number);
+    if (coverage->waypoints.empty())
+        return Status::failure(path + ": robot " + number + " has no waypoints");
+    if (!context.georeference.hasCrs())
+        return Status::failure(path + ": the map has no CRS, so waypoints have no latitude and longitude");
+    const VehicleSettings& vehicle = context.vehicle(robot);
+    const AutopilotMission mission = autopilotMissionOf(context, robot);
+    const bool split = mission.parts.size() > 1;
+    for (std::size_t part = 0; part < mission.parts.size(); ++part) {
+        const std::string file = split ? missionPartPath(path, part) : path;
+        auto points = geoPoints(context, mission, mission.parts[part], file);
+        if (!points)
+            return Status::failure(points.error());
+        if (auto written = internal::writeFileAtomically(
+                file, text(mission, mission.parts[part], points.value(), vehicle));
+            !written) {
+            return written;
+        }
+    }
+    return {};
+}
+
+} // namespace
+
+AutopilotMission autopilotMissionOf(const ExportContext& context, int robot) {
+    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
+    if (coverage == nullptr)
+        return {};
+    return autopilotMission(*coverage, context.vehicle(robot), context.settings.speedTolerance,
+                            context.settings.mergeCollinear);
+}
+
+Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {
+    return writeMissionFiles(context, robot, path, qGroundControlPlanText);
+}
+
+Status writeWaypointList(const ExportContext& context, int robot, const std::string& path) {
+    return writeMissionFiles(context, robot, path, waypointListText);
 }
 
 Status writeWaypointCsv(const ExportContext& context, int robot, const std::string& path) {

@@ -3,6 +3,7 @@
 #include "io/ExportCatalogue.hpp"
 #include "render/PlanImageWriter.hpp"
 
+#include <QFileInfo>
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 
@@ -23,6 +24,7 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
     context.drawImage = render::planImageWriter(job.imageSide);
     context.cancelRequested = &cancelRequested;
     context.robotNames = job.robotNames;
+    context.vehicles = job.vehicles;
     const int files = static_cast<int>(job.files.size());
     for (int file = 0; file < files; ++file) {
         if (cancelRequested.load()) {
@@ -37,7 +39,26 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
                                 .arg(path, QString::fromStdString(status.error()));
             return outcome;
         }
-        outcome.written << path;
+        const io::AutopilotMission mission =
+            format->splitByItemLimit ? io::autopilotMissionOf(context, robot) : io::AutopilotMission{};
+        if (mission.parts.size() <= 1) {
+            outcome.written << path;
+        } else {
+            for (std::size_t part = 0; part < mission.parts.size(); ++part)
+                outcome.written << QString::fromStdString(io::missionPartPath(path.toStdString(), part));
+            outcome.notes << QObject::tr(
+                                 "%1's mission has %2 items, more than its autopilot's %3: written in %4 "
+                                 "parts, each beginning where the one before it ended (%5 to %6).")
+                                 .arg(QString::fromStdString(context.robotName(robot)))
+                                 .arg(mission.items)
+                                 .arg(context.vehicle(robot).maxWaypoints)
+                                 .arg(mission.parts.size())
+                                 .arg(QFileInfo(
+                                          outcome.written.at(outcome.written.size() -
+                                                             static_cast<qsizetype>(mission.parts.size())))
+                                          .fileName(),
+                                      QFileInfo(outcome.written.back()).fileName());
+        }
         progress(file + 1, files);
     }
     return outcome;
@@ -83,10 +104,10 @@ bool ExportRunner::start(ExportJob job) {
         try {
             return runJob(job, *cancelFlag, progress);
         } catch (const std::bad_alloc&) {
-            return ExportOutcome{{}, QObject::tr("Out of memory while exporting."), false};
+            return ExportOutcome{{}, {}, QObject::tr("Out of memory while exporting."), false};
         } catch (const std::exception& error) {
             return ExportOutcome{
-                {}, QObject::tr("Export failed: %1").arg(QString::fromStdString(error.what())), false};
+                {}, {}, QObject::tr("Export failed: %1").arg(QString::fromStdString(error.what())), false};
         }
     };
     watcher_.setFuture(QtConcurrent::run(std::move(work)));

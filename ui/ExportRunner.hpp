@@ -27,12 +27,14 @@ struct ExportJob {
     ClassTable classes;
     io::ExportSettings settings;
     std::vector<std::string> robotNames;
+    std::vector<io::VehicleSettings> vehicles; // by robot
     int imageSide = 3000;
 };
 
 struct ExportOutcome {
     QStringList written;
-    QString error; // empty on success
+    QStringList notes; // what the user should know about the files, such as a mission split into parts
+    QString error;     // empty on success
     bool cancelled = false;
 };
 

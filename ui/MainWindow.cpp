@@ -28,6 +28,8 @@
 #include "ui/ResultsPanel.hpp"
 #include "ui/RobotTableModel.hpp"
 #include "ui/SampleMission.hpp"
+#include "ui/VehicleSettingsDialog.hpp"
+#include "ui/VehicleSettingsEditCommand.hpp"
 
 #include <QAction>
 #include <QActionGroup>
@@ -531,6 +533,11 @@ void MainWindow::createActions() {
     compareAction_->setObjectName(QStringLiteral("compareAction"));
     compareAction_->setToolTip(tr("Run the planners checked in the Compare planners panel on this mission, "
                                   "one after another, and compare their plans"));
+    planMenu->addSeparator();
+    vehiclesAction_ = planMenu->addAction(tr("Robot &vehicles…"), this, &MainWindow::editVehicles);
+    vehiclesAction_->setObjectName(QStringLiteral("vehiclesAction"));
+    vehiclesAction_->setToolTip(tr("Vehicle type, altitude, cruise speed and autopilot item limit of each "
+                                   "robot's waypoint files"));
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     auto* sampleAction = helpMenu->addAction(tr("Open &sample mission"), this, [this] {
@@ -1305,6 +1312,7 @@ bool MainWindow::exportPlan(const std::string& formatKey, const QString& path) {
     job.classes = document_->classes();
     job.settings = document_->mission().exports;
     job.robotNames = io::robotNames(document_->mission());
+    job.vehicles = io::robotVehicles(document_->mission());
     job.imageSide = exportImageSide;
     const int robots = static_cast<int>(job.plan->paths.size());
     const int files = format->perRobot ? robots : 1;
@@ -1328,6 +1336,21 @@ void MainWindow::cancelExport() {
     stageLabel_->setText(tr("Cancelling…"));
 }
 
+void MainWindow::editVehicles() {
+    VehicleSettingsDialog dialog(document_->mission(), this);
+    dialog.setObjectName(QStringLiteral("vehicleSettingsDialog"));
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const io::ExportSettings exports = dialog.exports();
+    std::vector<io::VehicleOverrides> vehicles = dialog.vehicles();
+    std::vector<io::VehicleOverrides> current;
+    for (const io::RobotSpec& robot : document_->robots())
+        current.push_back(robot.vehicle);
+    if (exports == document_->mission().exports && vehicles == current)
+        return;
+    undoStack_->push(new VehicleSettingsEditCommand(document_, exports, std::move(vehicles)));
+}
+
 bool MainWindow::isExporting() const {
     return exportRunner_->isRunning();
 }
@@ -1345,6 +1368,8 @@ void MainWindow::handleExportFinished(const ExportOutcome& outcome) {
         if (exportStale_)
             message += tr(" (note: the plan is out of date)");
         showStatus(message);
+        for (const QString& note : outcome.notes)
+            messageLog_->add(note);
     }
     emit exportFinished(!outcome.cancelled && outcome.error.isEmpty());
 }

@@ -64,6 +64,8 @@ class MainWindow : public QMainWindow {
     // (exportFinished says how it went); false when no export could start.
     bool exportPlan(const std::string& formatKey, const QString& path);
     void cancelExport();
+    // The robots' autopilot settings in a dialog; one undo step.
+    void editVehicles();
     [[nodiscard]] bool isExporting() const;
     bool startPlanning();
     // Runs these planners on the mission one after another in the background; the comparison panel then
@@ -177,6 +179,7 @@ class MainWindow : public QMainWindow {
     ComparisonPanel* comparisonPanel_ = nullptr;
     QDockWidget* comparisonDock_ = nullptr;
     QAction* compareAction_ = nullptr;
+    QAction* vehiclesAction_ = nullptr;
     QTableView* classView_ = nullptr;
     QTableView* robotView_ = nullptr;
     QComboBox* presetCombo_ = nullptr;

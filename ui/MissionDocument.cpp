@@ -65,6 +65,14 @@ void MissionDocument::setPlannerChoice(const PlannerChoice& choice) {
     emitStaleIfChanged();
 }
 
+void MissionDocument::setVehicles(const io::ExportSettings& exports,
+                                  const std::vector<io::VehicleOverrides>& vehicles) {
+    mission_.exports = exports;
+    for (std::size_t robot = 0; robot < mission_.robots.size() && robot < vehicles.size(); ++robot)
+        mission_.robots[robot].vehicle = vehicles[robot];
+    emit robotsChanged();
+}
+
 void MissionDocument::setMissionPath(const QString& path) {
     missionPath_ = path;
     emit missionPathChanged(path);

@@ -56,6 +56,9 @@ class MissionDocument : public QObject {
     void setRobots(std::vector<io::RobotSpec> robots);
     void setPlannerChoice(const PlannerChoice& choice);
     void setMissionPath(const QString& path);
+    // The waypoint files' settings: the mission's exports and each robot's vehicle (robots otherwise as
+    // they are). They shape the exported files, not the plan.
+    void setVehicles(const io::ExportSettings& exports, const std::vector<io::VehicleOverrides>& vehicles);
     // The area files' paths only (the same polygons, moved or copied elsewhere): nothing to redraw.
     void setAreaPaths(const io::AreaOfInterest& area) { mission_.area = area; }
     void setPlan(std::shared_ptr<const Plan> plan, PlanInputs inputs);

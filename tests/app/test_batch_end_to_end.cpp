@@ -71,6 +71,7 @@ class TestBatchEndToEnd : public QObject {
     void rerunWithFewerRobotsRemovesTheirFiles();
     void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
+    void missionsAboveTheItemLimitAreSplit();
     void rasterAloneGetsTheRecognisedProductsTable();
     void outputsAreTheSameWhateverTheThreadCount();
     void comparePlannersOnOneMission();
@@ -319,15 +320,31 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
              qPrintable(run.standardOutput));
     const QDir out(directory);
     QStringList expected{"plan.geojson", "report.json", "plan.png", "regions.tif", "plan.gpkg"};
+    const auto reportRobots = readJsonObject(out.filePath("report.json")).value("robots").toArray();
+    QCOMPARE(reportRobots.size(), robots);
     for (int robot = 0; robot < robots; ++robot) {
-        for (const char* extension : {".plan", ".waypoints", ".csv"}) {
-            expected << QStringLiteral("robot_%1%2").arg(robot + 1).arg(QLatin1String(extension));
+        expected << QStringLiteral("robot_%1.csv").arg(robot + 1);
+        // An autopilot mission above its item limit comes in parts instead of one file.
+        const int parts = reportRobots[robot].toObject().value("mission_parts").toInt();
+        QVERIFY(parts >= 1);
+        for (const char* extension : {".plan", ".waypoints"}) {
+            const QString whole = QStringLiteral("robot_%1%2").arg(robot + 1).arg(QLatin1String(extension));
+            if (parts == 1) {
+                expected << whole;
+                continue;
+            }
+            QVERIFY2(!QFileInfo::exists(out.filePath(whole)), qPrintable(whole));
+            for (int part = 1; part <= parts; ++part)
+                expected << QStringLiteral("robot_%1_part_%2%3")
+                                .arg(robot + 1)
+                                .arg(part)
+                                .arg(QLatin1String(extension));
         }
     }
     for (const auto& name : expected) {
         QVERIFY2(QFileInfo(out.filePath(name)).size() > 0, qPrintable(name));
     }
-    QVERIFY(!QFileInfo::exists(out.filePath(QStringLiteral("robot_%1.plan").arg(robots + 1))));
+    QVERIFY(!QFileInfo::exists(out.filePath(QStringLiteral("robot_%1.csv").arg(robots + 1))));
 
     // plan.geojson: a WGS84 FeatureCollection with one region, path and start per robot.
     const auto geoJson = readJsonObject(out.filePath("plan.geojson"));
@@ -402,9 +419,11 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
 
     // Waypoint files have the structure their readers expect.
     for (int robot = 0; robot < robots; ++robot) {
-        const auto plan = readJsonObject(out.filePath(QStringLiteral("robot_%1.plan").arg(robot + 1)));
+        const bool split = reportRobots[robot].toObject().value("mission_parts").toInt() > 1;
+        const QString stem = QStringLiteral("robot_%1%2").arg(robot + 1).arg(split ? "_part_1" : "");
+        const auto plan = readJsonObject(out.filePath(stem + ".plan"));
         QCOMPARE(plan.value("fileType").toString(), QStringLiteral("Plan"));
-        QFile waypoints(out.filePath(QStringLiteral("robot_%1.waypoints").arg(robot + 1)));
+        QFile waypoints(out.filePath(stem + ".waypoints"));
         QVERIFY(waypoints.open(QIODevice::ReadOnly));
         QCOMPARE(waypoints.readLine().trimmed(), QByteArray("QGC WPL 110"));
         QFile csv(out.filePath(QStringLiteral("robot_%1.csv").arg(robot + 1)));
@@ -520,6 +539,57 @@ void TestBatchEndToEnd::readmeSampleRuns() {
     const QString out = scratch_.filePath("zion");
     const auto run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--out", out});
     checkOutputs(out, 5, run);
+}
+
+// --max-waypoints splits each mission into parts that hold at most that many items and join up end to
+// start; a run without the limit in the same folder leaves whole files and no stale part.
+void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
+    const QString out = scratch_.filePath("split");
+    const int limit = 40;
+    auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--max-waypoints",
+                        QString::number(limit), "--out", out});
+    checkOutputs(out, 3, run);
+    if (QTest::currentTestFailed())
+        return;
+    const auto robots = readJsonObject(out + "/report.json").value("robots").toArray();
+    int splitRobots = 0;
+    for (qsizetype robot = 0; robot < robots.size(); ++robot) {
+        const QJsonObject figures = robots[robot].toObject();
+        QCOMPARE(figures.value("max_waypoints").toInt(), limit);
+        const int parts = figures.value("mission_parts").toInt();
+        QVERIFY(figures.value("mission_items").toInt() > (parts > 1 ? limit : 0));
+        if (parts == 1)
+            continue;
+        ++splitRobots;
+        QVERIFY2(run.standardOutput.contains(QStringLiteral("robot_%1_part_%2").arg(robot + 1).arg(parts)),
+                 qPrintable(run.standardOutput));
+        QJsonArray previousEnd;
+        for (int part = 1; part <= parts; ++part) {
+            const auto plan =
+                readJsonObject(QStringLiteral("%1/robot_%2_part_%3.plan").arg(out).arg(robot + 1).arg(part));
+            const QJsonArray items = plan.value("mission").toObject().value("items").toArray();
+            QVERIFY(items.size() + 2 <= limit); // with the home position and the cruise speed
+            QJsonArray start, end;
+            for (const QJsonValue& item : items) {
+                if (item.toObject().value("command").toInt() != 16)
+                    continue;
+                if (start.isEmpty())
+                    start = item.toObject().value("params").toArray();
+                end = item.toObject().value("params").toArray();
+            }
+            if (part > 1) {
+                QCOMPARE(start[4].toDouble(), previousEnd[4].toDouble());
+                QCOMPARE(start[5].toDouble(), previousEnd[5].toDouble());
+            }
+            previousEnd = end;
+        }
+    }
+    QVERIFY(splitRobots > 0);
+
+    run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--max-waypoints", "0", "--out", out});
+    checkOutputs(out, 3, run);
+    const QStringList parts = QDir(out).entryList({QStringLiteral("*_part_*")});
+    QVERIFY2(parts.isEmpty(), qPrintable(parts.join(", ")));
 }
 
 void TestBatchEndToEnd::everyPlannerRunsFromTheCommandLine_data() {

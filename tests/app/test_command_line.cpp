@@ -238,6 +238,12 @@ void TestCommandLine::errors_data() {
     QTest::newRow("--purity negative")
         << words("--batch m.json --out o --purity -0.1")
         << "--purity: expected a number from 0 up to (not including) 1, got -0.1";
+    QTest::newRow("--max-waypoints too small")
+        << words("--batch m.json --out o --max-waypoints 3")
+        << "--max-waypoints: \"3\" is not an item limit (0 for none, or 6 or more mission items)";
+    QTest::newRow("--max-waypoints negative")
+        << words("--batch m.json --out o --max-waypoints -700")
+        << "--max-waypoints: \"-700\" is not an item limit (0 for none, or 6 or more mission items)";
     QTest::newRow("--param without value")
         << words("--batch m.json --out o --param closed_tour") << "--param: \"closed_tour\" is not KEY=VALUE";
     QTest::newRow("--param without key")

@@ -98,6 +98,22 @@ std::vector<MissionMutation> missionMutations() {
          "exports.cruise_speed_mps"},
         {"merge_collinear", R"("merge_collinear": true)", R"("merge_collinear": null)",
          "exports.merge_collinear"},
+        {"cruise_speed_mps negative", R"("cruise_speed_mps": 0)", R"("cruise_speed_mps": -2)",
+         "exports.cruise_speed_mps"},
+        {"altitude_m negative", R"("altitude_m": 30)", R"("altitude_m": -5)", "exports.altitude_m"},
+        {"exports vehicle unknown", R"("merge_collinear": true)",
+         R"("merge_collinear": true, "vehicle": "boat")", "exports.vehicle"},
+        {"exports max_waypoints too small", R"("merge_collinear": true)",
+         R"("merge_collinear": true, "max_waypoints": 3)", "exports.max_waypoints"},
+        {"exports max_waypoints fraction", R"("merge_collinear": true)",
+         R"("merge_collinear": true, "max_waypoints": 70.5)", "exports.max_waypoints"},
+        {"exports speed_tolerance", R"("merge_collinear": true)",
+         R"("merge_collinear": true, "speed_tolerance": 1.5)", "exports.speed_tolerance"},
+        {"robot vehicle", R"("name": "a")", R"("name": "a", "vehicle": 2)", "robots[0].vehicle"},
+        {"robot max_waypoints", R"("name": "a")", R"("name": "a", "max_waypoints": 1)",
+         "robots[0].max_waypoints"},
+        {"robot altitude_m", R"("name": "b")", R"("name": "b", "altitude_m": "high")",
+         "robots[1].altitude_m"},
     };
 }
 

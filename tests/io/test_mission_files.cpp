@@ -39,14 +39,20 @@ Mission sampleMission() {
     mission.robots = {RobotSpec{"alpha", {318819.349, 4132665.467}, ""},
                       RobotSpec{"beta", {-113.05, 37.3}, "EPSG:4326"},
                       RobotSpec{"", {1e-7, 123456789.123456789}, ""}};
+    // The second robot flies its own drone; the others take the mission's vehicle.
+    mission.robots[1].vehicle.type = VehicleType::Multirotor;
+    mission.robots[1].vehicle.altitudeMetres = 45.5;
+    mission.robots[1].vehicle.maxWaypoints = 0;
     mission.planner.parameters.set("purity_tolerance", 0.05);
     mission.planner.parameters.set("blocked_threshold", 0.6);
     mission.planner.parameters.set("closed_tour", false);
     mission.planner.parameters.set("rebalance_iterations", 250);
     mission.planner.parameters.set("snap_starts_to_free_cells", true);
-    mission.exports.altitudeMetres = 12.5;
-    mission.exports.cruiseSpeedMetresPerSecond = 1.2;
+    mission.exports.vehicle.altitudeMetres = 12.5;
+    mission.exports.vehicle.cruiseSpeedMetresPerSecond = 1.2;
     mission.exports.mergeCollinear = false;
+    mission.exports.vehicle.maxWaypoints = 350;
+    mission.exports.speedTolerance = 0.25;
     return mission;
 }
 
@@ -106,6 +112,24 @@ class MissionFilesTest : public QObject {
         // Shortest round-trip numbers, not fixed decimals.
         QVERIFY(text.find("0.30000000000000004") != std::string::npos);
         QVERIFY(text.find("\"altitude_m\": 12.5") != std::string::npos);
+        // A robot's own vehicle values only; the others take the mission's.
+        const QJsonObject beta = root["robots"].toArray()[1].toObject();
+        QCOMPARE(beta["vehicle"].toString(), QString("multirotor"));
+        QCOMPARE(beta["altitude_m"].toDouble(), 45.5);
+        QCOMPARE(beta["max_waypoints"].toInt(), 0);
+        QVERIFY(!beta.contains("cruise_speed_mps"));
+        QVERIFY(!root["robots"].toArray()[0].toObject().contains("vehicle"));
+        const QJsonObject exports = root["exports"].toObject();
+        QCOMPARE(exports["vehicle"].toString(), QString("rover"));
+        QCOMPARE(exports["max_waypoints"].toInt(), 350);
+        QCOMPARE(exports["speed_tolerance"].toDouble(), 0.25);
+        const std::vector<VehicleSettings> vehicles = robotVehicles(sampleMission());
+        QCOMPARE(vehicles[0].maxWaypoints, 350);
+        QCOMPARE(vehicles[0].altitudeMetres, 12.5);
+        QCOMPARE(vehicles[1].maxWaypoints, 0);
+        QCOMPARE(vehicles[1].altitudeMetres, 45.5);
+        QCOMPARE(vehicles[1].cruiseSpeedMetresPerSecond, 1.2);
+        QVERIFY(vehicles[1].type == VehicleType::Multirotor);
     }
 
     void minimalMissionGetsDefaults() {
@@ -125,7 +149,7 @@ class MissionFilesTest : public QObject {
         QCOMPARE(mission.planner.planner, defaults.planner);
         QCOMPARE(mission.planner.parameters.real("blocked_threshold"), 0.5);
         QVERIFY(mission.planner.parameters == defaults.parameters);
-        QCOMPARE(mission.exports.altitudeMetres, ExportSettings{}.altitudeMetres);
+        QCOMPARE(mission.exports.vehicle.altitudeMetres, ExportSettings{}.vehicle.altitudeMetres);
         // Saving fills in every key; that file reads back to the same mission and writes the same bytes.
         const std::string full = folder.filePath("full.json").toStdString();
         QVERIFY(saveMission(mission, full).ok());

@@ -341,6 +341,10 @@ class PlanExportTest : public QObject {
         QCOMPARE(robots[0].toObject()["name"].toString(), QString("Scout"));
         QCOMPARE(second["area_m2"].toDouble(), 400.0);
         QCOMPARE(second["time_s"].toDouble(), 33.33);
+        QCOMPARE(robots[0].toObject()["mission_items"].toInt(), 7);
+        QCOMPARE(robots[0].toObject()["mission_parts"].toInt(), 1);
+        QCOMPARE(robots[0].toObject()["max_waypoints"].toInt(), 700);
+        QCOMPARE(robots[0].toObject()["vehicle"].toString(), QString("rover"));
         const QJsonObject timings = report["timings_ms"].toObject();
         QCOMPARE(timings.size(), 3);
         QCOMPARE(timings["allocation"].toDouble(), 2.25);
@@ -355,9 +359,12 @@ class PlanExportTest : public QObject {
         std::ifstream input(csv);
         std::string header, line;
         std::getline(input, header);
-        QCOMPARE(header, std::string("robot,name,cells,area_m2,length_m,time_s,turns,cost_s"));
+        QCOMPARE(
+            header,
+            std::string("robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts"));
         std::getline(input, line);
-        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80"));
+        // Home, the first speed and five turning points (the straight top run's two inner points go).
+        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1"));
     }
 
     void turningPointsDropOnlyCollinearPoints() {

@@ -191,7 +191,7 @@ class TestPlanFile : public QObject {
 
         io::Mission renamed = mission;
         renamed.robots[0].name = "Another name";
-        renamed.exports.altitudeMetres = 55.0;
+        renamed.exports.vehicle.altitudeMetres = 55.0;
         QCOMPARE(io::planInputsFingerprint(renamed, missionPath), base);
 
         io::Mission moved = mission;

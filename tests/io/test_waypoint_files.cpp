@@ -89,7 +89,7 @@ class WaypointFilesTest : public QObject {
         QVERIFY(!sample.isEmpty());
         const std::string path = file("robot0.plan");
         ExportSettings settings;
-        settings.altitudeMetres = 25.0;
+        settings.vehicle.altitudeMetres = 25.0;
         settings.mergeCollinear = false;
         Status written = writeQGroundControlPlan(context(settings), 0, path);
         QVERIFY2(written.ok(), written.error().c_str());
@@ -154,7 +154,7 @@ class WaypointFilesTest : public QObject {
         QCOMPARE(changes, 1);
         // A fixed cruise speed: no speed items, cruiseSpeed set.
         ExportSettings cruise;
-        cruise.cruiseSpeedMetresPerSecond = 2.0;
+        cruise.vehicle.cruiseSpeedMetresPerSecond = 2.0;
         QVERIFY(writeQGroundControlPlan(context(cruise), 1, path).ok());
         const QJsonObject mission = readJson(path)["mission"].toObject();
         QCOMPARE(mission["cruiseSpeed"].toDouble(), 2.0);
@@ -173,22 +173,24 @@ class WaypointFilesTest : public QObject {
         std::string header;
         const auto rows = tabRows(path, header);
         QCOMPARE(header, sampleHeader);
-        QCOMPARE(rows.size(), plan_.paths[0].waypoints.size() + 1);
+        // Home, the speed the vehicle starts at, then one row per waypoint.
+        QCOMPARE(rows.size(), plan_.paths[0].waypoints.size() + 2);
         for (std::size_t i = 0; i < rows.size(); ++i) {
             QCOMPARE(rows[i].size(), sample[0].size());
             QCOMPARE(rows[i][0], std::to_string(i));
-            QCOMPARE(rows[i][3], std::string("16"));
+            QCOMPARE(rows[i][3], std::string(i == 1 ? "178" : "16"));
             QCOMPARE(rows[i][11], std::string("1"));
         }
+        QCOMPARE(std::stod(rows[1][5]), 0.5);   // DO_CHANGE_SPEED's second parameter: the land-cover speed
         QCOMPARE(rows[0][1], std::string("1")); // home row is current, as QGroundControl writes it
         QCOMPARE(rows[0][2], std::string("0"));
-        QCOMPARE(rows[1][2], std::string("3"));
+        QCOMPARE(rows[2][2], std::string("3"));
         const Waypoint& first = plan_.paths[0].waypoints[0];
         const LonLat expected = reference_.toWgs84({first.x, first.y}).value();
-        QVERIFY(std::abs(std::stod(rows[1][8]) - expected.latitude) < 1e-7);
-        QVERIFY(std::abs(std::stod(rows[1][9]) - expected.longitude) < 1e-7);
-        QCOMPARE(std::stod(rows[1][10]), ExportSettings{}.altitudeMetres);
-        QCOMPARE(rows[0][8], rows[1][8]);
+        QVERIFY(std::abs(std::stod(rows[2][8]) - expected.latitude) < 1e-7);
+        QVERIFY(std::abs(std::stod(rows[2][9]) - expected.longitude) < 1e-7);
+        QCOMPARE(std::stod(rows[2][10]), ExportSettings{}.vehicle.altitudeMetres);
+        QCOMPARE(rows[0][8], rows[2][8]);
     }
 
     void waypointCsv() {

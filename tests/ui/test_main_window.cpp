@@ -312,8 +312,19 @@ class TestMainWindow : public QObject {
         // PNG and per-robot waypoint exports.
         QVERIFY(exportAndWait("png", directory.filePath(QStringLiteral("plan.png"))));
         QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
+        // Waypoint files follow the robots' vehicles: no limit, one file per robot; a limit the mission is
+        // above, consecutive parts instead.
+        io::ExportSettings exports = window.document()->mission().exports;
+        exports.vehicle.maxWaypoints = 0;
+        window.document()->setVehicles(exports, {});
         QVERIFY(exportAndWait("qgc-plan", directory.filePath(QStringLiteral("mission.plan"))));
         QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("mission-robot3.plan"))));
+        exports.vehicle.maxWaypoints = 8;
+        window.document()->setVehicles(exports, {});
+        QVERIFY(exportAndWait("qgc-plan", directory.filePath(QStringLiteral("split.plan"))));
+        QVERIFY(!QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3.plan"))));
+        QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3_part_1.plan"))));
+        QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3_part_2.plan"))));
         QVERIFY(!exportAndWait("geojson", QStringLiteral("/no/such/folder/plan.geojson")));
         QVERIFY(!window.isExporting());
         QVERIFY(window.lastError().contains(QStringLiteral("/no/such/folder/plan.geojson")));

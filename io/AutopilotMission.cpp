@@ -1,0 +1,126 @@
+#include "io/AutopilotMission.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace mcpp::io {
+namespace {
+
+// Mission items every part has besides its waypoints and speed changes: the home position and the speed
+// the vehicle starts with.
+constexpr int itemsBesideWaypoints = 2;
+
+bool collinearAndBetween(const Waypoint& a, const Waypoint& b, const Waypoint& c) {
+    const double abX = b.x - a.x, abY = b.y - a.y, acX = c.x - a.x, acY = c.y - a.y;
+    const double lengthAc = std::hypot(acX, acY);
+    if (lengthAc == 0.0)
+        return false;
+    const double cross = abX * acY - abY * acX;
+    if (std::abs(cross) > 1e-9 * lengthAc * std::max(lengthAc, 1.0))
+        return false;
+    const double along = (abX * acX + abY * acY) / (lengthAc * lengthAc);
+    return along > 0.0 && along < 1.0;
+}
+
+// The speed in force at each waypoint: a new one only when it differs enough from the one before.
+std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, const VehicleSettings& vehicle,
+                                    double speedTolerance) {
+    std::vector<double> speeds(waypoints.size(), vehicle.cruiseSpeedMetresPerSecond);
+    if (vehicle.cruiseSpeedMetresPerSecond > 0.0 || waypoints.empty())
+        return speeds;
+    double current = roundedSpeed(waypoints.front().speedMetresPerSecond);
+    for (std::size_t i = 0; i < waypoints.size(); ++i) {
+        const double wanted = roundedSpeed(waypoints[i].speedMetresPerSecond);
+        // A relative margin keeps a change of exactly the tolerance (1.1 after 1.0 at 10%) below it.
+        if (wanted > 0.0 && std::abs(wanted - current) > speedTolerance * current * (1.0 + 1e-9))
+            current = wanted;
+        speeds[i] = current;
+    }
+    return speeds;
+}
+
+void mergeStraightStretches(AutopilotMission& mission) {
+    std::vector<Waypoint>& points = mission.points;
+    std::vector<double>& speeds = mission.commandedSpeeds;
+    if (points.size() < 3)
+        return;
+    std::size_t kept = 0;
+    for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+        // Dropping point i is exact when the segment after it is commanded the same speed.
+        if (collinearAndBetween(points[kept], points[i], points[i + 1]) && speeds[i] == speeds[i + 1])
+            continue;
+        ++kept;
+        points[kept] = points[i];
+        speeds[kept] = speeds[i];
+    }
+    ++kept;
+    points[kept] = points.back();
+    speeds[kept] = speeds.back();
+    points.resize(kept + 1);
+    speeds.resize(kept + 1);
+}
+
+int itemsOf(const AutopilotMission& mission, std::size_t first, std::size_t last) {
+    int items = itemsBesideWaypoints + 1;
+    for (std::size_t point = first + 1; point <= last; ++point)
+        items += mission.changesSpeedAt(point) ? 2 : 1;
+    return items;
+}
+
+void splitIntoParts(AutopilotMission& mission, int maxWaypoints) {
+    const std::size_t count = mission.points.size();
+    mission.items = count == 0 ? 0 : itemsOf(mission, 0, count - 1);
+    if (count == 0)
+        return;
+    if (maxWaypoints <= 0 || mission.items <= maxWaypoints || count < 2) {
+        mission.parts.push_back({0, count - 1, mission.items});
+        return;
+    }
+    MissionPart part{0, 0, itemsBesideWaypoints + 1};
+    for (std::size_t point = 1; point < count; ++point) {
+        const int added = mission.changesSpeedAt(point) ? 2 : 1;
+        if (part.items + added > maxWaypoints && part.last > part.first) {
+            mission.parts.push_back(part);
+            part = {part.last, part.last, itemsBesideWaypoints + 1};
+        }
+        part.last = point;
+        part.items += added;
+    }
+    mission.parts.push_back(part);
+}
+
+} // namespace
+
+double roundedSpeed(double metresPerSecond) {
+    if (!(metresPerSecond > 0.0) || !std::isfinite(metresPerSecond))
+        return 0.0;
+    const int digitsBeforePoint = static_cast<int>(std::floor(std::log10(metresPerSecond))) + 1;
+    const int decimals = 2 - digitsBeforePoint;
+    // Divide by a power of ten rather than multiply by its inverse, so that 0.32 comes out as 0.32.
+    if (decimals > 0) {
+        const double scale = std::pow(10.0, decimals);
+        return std::round(metresPerSecond * scale) / scale;
+    }
+    const double scale = std::pow(10.0, -decimals);
+    return std::round(metresPerSecond / scale) * scale;
+}
+
+AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
+                                  double speedTolerance, bool mergeCollinear) {
+    AutopilotMission mission;
+    mission.points = path.waypoints;
+    mission.commandedSpeeds = commandedSpeeds(mission.points, vehicle, speedTolerance);
+    if (mergeCollinear)
+        mergeStraightStretches(mission);
+    splitIntoParts(mission, vehicle.maxWaypoints);
+    return mission;
+}
+
+std::string missionPartPath(const std::string& path, std::size_t part) {
+    const std::filesystem::path file(path);
+    const std::string name =
+        file.stem().string() + "_part_" + std::to_string(part + 1) + file.extension().string();
+    return (file.parent_path() / name).string();
+}
+
+} // namespace mcpp::io

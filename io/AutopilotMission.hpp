@@ -1,0 +1,48 @@
+#pragma once
+
+#include "core/model/CoveragePath.hpp"
+#include "io/VehicleSettings.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mcpp::io {
+
+// Consecutive waypoints of a mission, first and last included; a part after the first begins at the
+// waypoint where the one before it ended.
+struct MissionPart {
+    std::size_t first = 0;
+    std::size_t last = 0;
+    int items = 0; // its mission items, home and first speed command included
+};
+
+// A robot's path as an autopilot flies it: its turning points and the points where the commanded speed
+// changes, the speed commanded on the segment that ends at each point, and the parts the vehicle's item
+// limit splits it into.
+struct AutopilotMission {
+    std::vector<Waypoint> points;
+    std::vector<double> commandedSpeeds; // by point; the first is the speed the mission starts with
+    std::vector<MissionPart> parts;
+    int items = 0; // of the whole mission in one file
+
+    // Whether the vehicle is told a new speed before driving to this point.
+    [[nodiscard]] bool changesSpeedAt(std::size_t point) const {
+        return point > 0 && commandedSpeeds[point] != commandedSpeeds[point - 1];
+    }
+};
+
+// A land-cover speed as a vehicle is told it: two significant digits (0.3168 -> 0.32 m/s, 12.34 -> 12).
+[[nodiscard]] double roundedSpeed(double metresPerSecond);
+
+// The mission of a path. Speeds: the vehicle's cruise speed when it has one, else each waypoint's rounded
+// land-cover speed, commanded anew only where it differs from the speed in force by more than
+// speedTolerance (a fraction of that speed; 0 commands every change). With mergeCollinear, a point on the
+// straight segment between its neighbours that commands no new speed is left out. Parts hold at most the
+// vehicle's maxWaypoints items (home, a first speed command, waypoints and speed changes).
+[[nodiscard]] AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
+                                                double speedTolerance, bool mergeCollinear);
+
+// The file of one part of a split mission: "out/robot_1.plan" -> "out/robot_1_part_2.plan" (part from 0).
+[[nodiscard]] std::string missionPartPath(const std::string& path, std::size_t part);
+
+} // namespace mcpp::io

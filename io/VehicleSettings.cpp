@@ -1,0 +1,59 @@
+#include "io/VehicleSettings.hpp"
+
+namespace mcpp::io {
+
+std::string vehicleTypeKey(VehicleType type) {
+    switch (type) {
+    case VehicleType::Multirotor:
+        return "multirotor";
+    case VehicleType::FixedWing:
+        return "fixed-wing";
+    case VehicleType::Rover:
+        break;
+    }
+    return "rover";
+}
+
+std::optional<VehicleType> vehicleTypeFromKey(const std::string& key) {
+    for (const VehicleType type : {VehicleType::Rover, VehicleType::Multirotor, VehicleType::FixedWing})
+        if (vehicleTypeKey(type) == key)
+            return type;
+    return std::nullopt;
+}
+
+std::string vehicleTypeLabel(VehicleType type) {
+    switch (type) {
+    case VehicleType::Multirotor:
+        return "Multirotor";
+    case VehicleType::FixedWing:
+        return "Fixed wing";
+    case VehicleType::Rover:
+        break;
+    }
+    return "Rover";
+}
+
+VehicleSettings VehicleOverrides::over(const VehicleSettings& defaults) const {
+    VehicleSettings settings = defaults;
+    settings.type = type.value_or(defaults.type);
+    settings.altitudeMetres = altitudeMetres.value_or(defaults.altitudeMetres);
+    settings.cruiseSpeedMetresPerSecond =
+        cruiseSpeedMetresPerSecond.value_or(defaults.cruiseSpeedMetresPerSecond);
+    settings.maxWaypoints = maxWaypoints.value_or(defaults.maxWaypoints);
+    return settings;
+}
+
+VehicleOverrides VehicleOverrides::between(const VehicleSettings& defaults, const VehicleSettings& wanted) {
+    VehicleOverrides overrides;
+    if (wanted.type != defaults.type)
+        overrides.type = wanted.type;
+    if (wanted.altitudeMetres != defaults.altitudeMetres)
+        overrides.altitudeMetres = wanted.altitudeMetres;
+    if (wanted.cruiseSpeedMetresPerSecond != defaults.cruiseSpeedMetresPerSecond)
+        overrides.cruiseSpeedMetresPerSecond = wanted.cruiseSpeedMetresPerSecond;
+    if (wanted.maxWaypoints != defaults.maxWaypoints)
+        overrides.maxWaypoints = wanted.maxWaypoints;
+    return overrides;
+}
+
+} // namespace mcpp::io

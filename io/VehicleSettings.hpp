@@ -1,0 +1,51 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace mcpp::io {
+
+// What kind of vehicle flies or drives a robot's waypoint files; it sets the file's vehicle type.
+enum class VehicleType { Rover, Multirotor, FixedWing };
+
+// The mission file's name of a vehicle type ("rover", "multirotor", "fixed-wing") and back.
+[[nodiscard]] std::string vehicleTypeKey(VehicleType type);
+[[nodiscard]] std::optional<VehicleType> vehicleTypeFromKey(const std::string& key);
+// For people: "Rover", "Multirotor", "Fixed wing".
+[[nodiscard]] std::string vehicleTypeLabel(VehicleType type);
+
+// What a robot's autopilot needs in its waypoint files.
+struct VehicleSettings {
+    VehicleType type = VehicleType::Rover;
+    double altitudeMetres = 30.0;            // waypoint altitude above home
+    double cruiseSpeedMetresPerSecond = 0.0; // 0: the land-cover speeds
+    // Mission items the autopilot holds, its home included (ArduPilot boards hold a few hundred to about
+    // 700); a longer mission is split into consecutive parts. 0: no limit.
+    int maxWaypoints = 700;
+
+    friend bool operator==(const VehicleSettings&, const VehicleSettings&) = default;
+};
+
+// A robot's own values; those it leaves out come from the mission's defaults.
+struct VehicleOverrides {
+    std::optional<VehicleType> type;
+    std::optional<double> altitudeMetres;
+    std::optional<double> cruiseSpeedMetresPerSecond;
+    std::optional<int> maxWaypoints;
+
+    [[nodiscard]] bool empty() const {
+        return !type && !altitudeMetres && !cruiseSpeedMetresPerSecond && !maxWaypoints;
+    }
+    [[nodiscard]] VehicleSettings over(const VehicleSettings& defaults) const;
+    // The overrides that make `wanted` from `defaults`: only the values that differ.
+    [[nodiscard]] static VehicleOverrides between(const VehicleSettings& defaults,
+                                                  const VehicleSettings& wanted);
+
+    friend bool operator==(const VehicleOverrides&, const VehicleOverrides&) = default;
+};
+
+// The smallest item limit that leaves room for a part's home, its first speed and two waypoints with a
+// speed change between them.
+constexpr int minimumMaxWaypoints = 6;
+
+} // namespace mcpp::io

@@ -1,0 +1,95 @@
+// The robot vehicles dialog: what it shows, robots following the "all robots" row, what it hands back.
+
+#include "ui/VehicleSettingsDialog.hpp"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTest>
+
+using namespace mcpp;
+using namespace mcpp::io;
+
+namespace {
+
+Mission threeRobots() {
+    Mission mission;
+    mission.robots = {RobotSpec{"alpha", {1, 2}, ""}, RobotSpec{"beta", {3, 4}, ""},
+                      RobotSpec{"", {5, 6}, ""}};
+    mission.exports.vehicle.altitudeMetres = 30.0;
+    mission.exports.vehicle.maxWaypoints = 700;
+    mission.robots[1].vehicle.altitudeMetres = 60.0; // beta flies higher
+    mission.robots[1].vehicle.type = VehicleType::Multirotor;
+    return mission;
+}
+
+template <typename Widget> Widget* cell(QTableWidget* table, int row, int column) {
+    return qobject_cast<Widget*>(table->cellWidget(row, column));
+}
+
+} // namespace
+
+class VehicleSettingsDialogTest : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void showsEachRobotsVehicle() {
+        ui::VehicleSettingsDialog dialog(threeRobots());
+        auto* table = dialog.findChild<QTableWidget*>();
+        QVERIFY(table != nullptr);
+        QCOMPARE(table->rowCount(), 4);
+        QCOMPARE(table->verticalHeaderItem(0)->text(), QStringLiteral("All robots"));
+        QCOMPARE(table->verticalHeaderItem(2)->text(), QStringLiteral("beta"));
+        QCOMPARE(table->verticalHeaderItem(3)->text(), QStringLiteral("Robot 3"));
+        QCOMPARE(cell<QDoubleSpinBox>(table, 1, 1)->value(), 30.0);
+        QCOMPARE(cell<QDoubleSpinBox>(table, 2, 1)->value(), 60.0);
+        QCOMPARE(cell<QComboBox>(table, 2, 0)->currentText(), QStringLiteral("Multirotor"));
+        QCOMPARE(cell<QSpinBox>(table, 3, 3)->value(), 700);
+        // Nothing changed: no robot gets values of its own besides beta's.
+        const auto vehicles = dialog.vehicles();
+        QCOMPARE(vehicles.size(), std::size_t{3});
+        QVERIFY(vehicles[0].empty());
+        QVERIFY(vehicles[1] == threeRobots().robots[1].vehicle);
+        QVERIFY(dialog.exports() == threeRobots().exports);
+    }
+
+    void robotsFollowTheAllRobotsRowUnlessTheyHaveTheirOwn() {
+        ui::VehicleSettingsDialog dialog(threeRobots());
+        auto* table = dialog.findChild<QTableWidget*>();
+        cell<QDoubleSpinBox>(table, 0, 1)->setValue(40.0);
+        cell<QSpinBox>(table, 0, 3)->setValue(250);
+        QCOMPARE(cell<QDoubleSpinBox>(table, 1, 1)->value(), 40.0);
+        QCOMPARE(cell<QDoubleSpinBox>(table, 2, 1)->value(), 60.0); // its own
+        QCOMPARE(cell<QSpinBox>(table, 2, 3)->value(), 250);
+        // Robot 3 gets its own item limit.
+        cell<QSpinBox>(table, 3, 3)->setValue(0);
+        const ExportSettings exports = dialog.exports();
+        QCOMPARE(exports.vehicle.altitudeMetres, 40.0);
+        QCOMPARE(exports.vehicle.maxWaypoints, 250);
+        const auto vehicles = dialog.vehicles();
+        QVERIFY(vehicles[0].empty());
+        QCOMPARE(vehicles[1].altitudeMetres.value_or(-1.0), 60.0);
+        QVERIFY(!vehicles[1].maxWaypoints);
+        QCOMPARE(vehicles[2].maxWaypoints.value_or(-1), 0);
+        QVERIFY(!vehicles[2].altitudeMetres);
+    }
+
+    void speedToleranceInPercent() {
+        Mission mission = threeRobots();
+        mission.exports.speedTolerance = 0.2;
+        ui::VehicleSettingsDialog dialog(mission);
+        auto spins = dialog.findChildren<QDoubleSpinBox*>();
+        QDoubleSpinBox* tolerance = nullptr;
+        for (QDoubleSpinBox* spin : spins)
+            if (spin->suffix() == QStringLiteral(" %"))
+                tolerance = spin;
+        QVERIFY(tolerance != nullptr);
+        QCOMPARE(tolerance->value(), 20.0);
+        tolerance->setValue(5.0);
+        QCOMPARE(dialog.exports().speedTolerance, 0.05);
+    }
+};
+
+QTEST_MAIN(VehicleSettingsDialogTest)
+#include "test_vehicle_settings_dialog.moc"

@@ -1,0 +1,153 @@
+#include "ui/VehicleSettingsDialog.hpp"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace mcpp::ui {
+
+VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget* parent)
+    : QDialog(parent), exports_(mission.exports), shownDefaults_(mission.exports.vehicle) {
+    setWindowTitle(tr("Robot vehicles"));
+    auto* layout = new QVBoxLayout(this);
+    auto* intro = new QLabel(tr("What each robot's waypoint files (.plan, .waypoints) tell its autopilot. A "
+                                "mission with more items than the limit is written in parts, each beginning "
+                                "where the one before it ended."),
+                             this);
+    intro->setWordWrap(true);
+    layout->addWidget(intro);
+
+    table_ = new QTableWidget(static_cast<int>(mission.robots.size()) + 1, 4, this);
+    table_->setHorizontalHeaderLabels(
+        {tr("Vehicle"), tr("Altitude (m)"), tr("Cruise speed (m/s)"), tr("Item limit")});
+    table_->horizontalHeaderItem(2)->setToolTip(tr("0: each land-cover class's speed"));
+    table_->horizontalHeaderItem(3)->setToolTip(
+        tr("Mission items the autopilot holds, home included; 0: no limit"));
+    QStringList names{tr("All robots")};
+    for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
+        const std::string& name = mission.robots[robot].name;
+        names << (name.empty() ? tr("Robot %1").arg(robot + 1) : QString::fromStdString(name));
+    }
+    table_->setVerticalHeaderLabels(names);
+    const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(mission);
+    rows_.push_back(addRow(0, names[0], mission.exports.vehicle));
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
+        rows_.push_back(
+            addRow(static_cast<int>(robot) + 1, names[static_cast<qsizetype>(robot) + 1], vehicles[robot]));
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->setSelectionMode(QAbstractItemView::NoSelection);
+    layout->addWidget(table_);
+
+    auto* form = new QFormLayout;
+    speedTolerance_ = new QDoubleSpinBox(this);
+    speedTolerance_->setRange(0.0, 99.0);
+    speedTolerance_->setDecimals(0);
+    speedTolerance_->setSuffix(QStringLiteral(" %"));
+    speedTolerance_->setValue(exports_.speedTolerance * 100.0);
+    speedTolerance_->setToolTip(
+        tr("A new speed is commanded only where the land-cover speed differs from the "
+           "speed in force by more than this share of it. Speeds are rounded to two "
+           "significant digits."));
+    form->addRow(tr("Speed change tolerance:"), speedTolerance_);
+    layout->addLayout(form);
+
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    layout->addWidget(buttons);
+    resize(620, 180 + 32 * static_cast<int>(rows_.size()));
+}
+
+VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString& name,
+                                                         const io::VehicleSettings& settings) {
+    Row widgets;
+    widgets.type = new QComboBox(table_);
+    for (const io::VehicleType type :
+         {io::VehicleType::Rover, io::VehicleType::Multirotor, io::VehicleType::FixedWing}) {
+        widgets.type->addItem(QString::fromStdString(io::vehicleTypeLabel(type)), static_cast<int>(type));
+    }
+    widgets.altitude = new QDoubleSpinBox(table_);
+    widgets.altitude->setRange(0.0, 10000.0);
+    widgets.altitude->setDecimals(1);
+    widgets.cruiseSpeed = new QDoubleSpinBox(table_);
+    widgets.cruiseSpeed->setRange(0.0, 1000.0);
+    widgets.cruiseSpeed->setDecimals(2);
+    widgets.cruiseSpeed->setSpecialValueText(tr("land cover"));
+    widgets.maxWaypoints = new QSpinBox(table_);
+    widgets.maxWaypoints->setRange(0, 1000000);
+    widgets.maxWaypoints->setSpecialValueText(tr("no limit"));
+    show(widgets, settings);
+    table_->setCellWidget(row, 0, widgets.type);
+    table_->setCellWidget(row, 1, widgets.altitude);
+    table_->setCellWidget(row, 2, widgets.cruiseSpeed);
+    table_->setCellWidget(row, 3, widgets.maxWaypoints);
+    for (QWidget* widget : std::initializer_list<QWidget*>{widgets.type, widgets.altitude,
+                                                           widgets.cruiseSpeed, widgets.maxWaypoints})
+        widget->setAccessibleName(name);
+    if (row == 0) {
+        connect(widgets.type, &QComboBox::currentIndexChanged, this, &VehicleSettingsDialog::followDefaults);
+        connect(widgets.altitude, &QDoubleSpinBox::valueChanged, this,
+                &VehicleSettingsDialog::followDefaults);
+        connect(widgets.cruiseSpeed, &QDoubleSpinBox::valueChanged, this,
+                &VehicleSettingsDialog::followDefaults);
+        connect(widgets.maxWaypoints, &QSpinBox::valueChanged, this, &VehicleSettingsDialog::followDefaults);
+    }
+    return widgets;
+}
+
+io::VehicleSettings VehicleSettingsDialog::settingsOf(const Row& row) {
+    io::VehicleSettings settings;
+    settings.type = static_cast<io::VehicleType>(row.type->currentData().toInt());
+    settings.altitudeMetres = row.altitude->value();
+    settings.cruiseSpeedMetresPerSecond = row.cruiseSpeed->value();
+    settings.maxWaypoints = row.maxWaypoints->value();
+    return settings;
+}
+
+void VehicleSettingsDialog::show(const Row& row, const io::VehicleSettings& settings) {
+    row.type->setCurrentIndex(row.type->findData(static_cast<int>(settings.type)));
+    row.altitude->setValue(settings.altitudeMetres);
+    row.cruiseSpeed->setValue(settings.cruiseSpeedMetresPerSecond);
+    row.maxWaypoints->setValue(settings.maxWaypoints);
+}
+
+void VehicleSettingsDialog::followDefaults() {
+    // Robots that had the old "all robots" value take the new one; those with their own keep it.
+    const io::VehicleSettings defaults = settingsOf(rows_.front());
+    for (std::size_t i = 1; i < rows_.size(); ++i) {
+        io::VehicleSettings robot = settingsOf(rows_[i]);
+        if (robot.type == shownDefaults_.type)
+            robot.type = defaults.type;
+        if (robot.altitudeMetres == shownDefaults_.altitudeMetres)
+            robot.altitudeMetres = defaults.altitudeMetres;
+        if (robot.cruiseSpeedMetresPerSecond == shownDefaults_.cruiseSpeedMetresPerSecond)
+            robot.cruiseSpeedMetresPerSecond = defaults.cruiseSpeedMetresPerSecond;
+        if (robot.maxWaypoints == shownDefaults_.maxWaypoints)
+            robot.maxWaypoints = defaults.maxWaypoints;
+        show(rows_[i], robot);
+    }
+    shownDefaults_ = defaults;
+}
+
+io::ExportSettings VehicleSettingsDialog::exports() const {
+    io::ExportSettings exports = exports_;
+    exports.vehicle = settingsOf(rows_.front());
+    exports.speedTolerance = speedTolerance_->value() / 100.0;
+    return exports;
+}
+
+std::vector<io::VehicleOverrides> VehicleSettingsDialog::vehicles() const {
+    const io::VehicleSettings defaults = settingsOf(rows_.front());
+    std::vector<io::VehicleOverrides> overrides;
+    for (std::size_t i = 1; i < rows_.size(); ++i)
+        overrides.push_back(io::VehicleOverrides::between(defaults, settingsOf(rows_[i])));
+    return overrides;
+}
+
+} // namespace mcpp::ui

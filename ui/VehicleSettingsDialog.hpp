@@ -1,0 +1,48 @@
+#pragma once
+
+#include "io/Mission.hpp"
+
+#include <QDialog>
+#include <vector>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QSpinBox;
+class QTableWidget;
+
+namespace mcpp::ui {
+
+// The robots' autopilots: vehicle type, altitude, cruise speed and item limit for all robots and for each
+// one, and the speed tolerance of waypoint files. A robot whose value equals the "all robots" row follows
+// that row when it changes.
+class VehicleSettingsDialog : public QDialog {
+    Q_OBJECT
+
+  public:
+    VehicleSettingsDialog(const io::Mission& mission, QWidget* parent = nullptr);
+
+    [[nodiscard]] io::ExportSettings exports() const;
+    // Each robot's own values: only those that differ from the "all robots" row.
+    [[nodiscard]] std::vector<io::VehicleOverrides> vehicles() const;
+
+  private:
+    struct Row {
+        QComboBox* type = nullptr;
+        QDoubleSpinBox* altitude = nullptr;
+        QDoubleSpinBox* cruiseSpeed = nullptr;
+        QSpinBox* maxWaypoints = nullptr;
+    };
+
+    Row addRow(int row, const QString& name, const io::VehicleSettings& settings);
+    [[nodiscard]] static io::VehicleSettings settingsOf(const Row& row);
+    static void show(const Row& row, const io::VehicleSettings& settings);
+    void followDefaults();
+
+    io::ExportSettings exports_;
+    QTableWidget* table_ = nullptr;
+    QDoubleSpinBox* speedTolerance_ = nullptr;
+    std::vector<Row> rows_; // the "all robots" row first
+    io::VehicleSettings shownDefaults_;
+};
+
+} // namespace mcpp::ui
