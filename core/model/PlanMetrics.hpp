@@ -16,12 +16,23 @@ struct RobotMetrics {
     int turns = 0;
 };
 
+// A robot that starts in a part of the map cut off from the part most robots share: it can cover only
+// its pocket, whatever the allocation.
+struct ConfinedRobot {
+    int robot = 0;
+    double pocketAreaSquareMetres = 0.0;
+    int robotsInPocket = 1;
+};
+
 // What a plan reports (spec section 6).
 struct PlanMetrics {
     std::vector<RobotMetrics> robots;
     double makespanSeconds = 0.0;
-    double lowerBoundSeconds = 0.0; // sum of all reachable cell costs / robots
-    double ratio = 0.0;             // makespan / lower bound
+    // No plan can finish sooner: the largest, over the map's connected parts holding starts, of the part's
+    // cell costs divided by the robots starting in it.
+    double lowerBoundSeconds = 0.0;
+    std::vector<ConfinedRobot> confinedRobots; // robots outside the largest such part
+    double ratio = 0.0;                        // makespan / lower bound
     double passableAreaSquareMetres = 0.0;
     double coveredAreaSquareMetres = 0.0;
     double coveredFraction = 0.0; // of the passable area

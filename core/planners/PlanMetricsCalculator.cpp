@@ -1,8 +1,61 @@
 #include "core/planners/PlanMetricsCalculator.hpp"
 
+#include "core/allocation/StartComponents.hpp"
+
 #include <algorithm>
 
 namespace mcpp {
+
+namespace {
+
+struct PartFigures {
+    double costSeconds = 0.0;
+    double areaSquareMetres = 0.0;
+};
+
+PartFigures figuresOf(const Plan& plan, const StartComponent& part) {
+    PartFigures figures;
+    for (const int id : part.cells) {
+        const auto index = static_cast<std::size_t>(id);
+        if (index >= plan.regions.robotOfCell.size() || plan.regions.robotOfCell[index] < 0)
+            continue;
+        const Cell& cell = plan.cells.cell(id);
+        figures.costSeconds += cell.coverSeconds();
+        figures.areaSquareMetres += cell.passableAreaSquareMetres;
+    }
+    return figures;
+}
+
+} // namespace
+
+// Robots cannot leave the connected part they start in, so each part must be covered by its own robots.
+void PlanMetricsCalculator::boundByConnectedParts(Plan& plan) {
+    PlanMetrics& metrics = plan.metrics;
+    metrics.confinedRobots.clear();
+    const std::vector<int>& starts = plan.regions.startCell;
+    for (const int start : starts)
+        if (start < 0 || static_cast<std::size_t>(start) >= plan.cells.size())
+            return; // a planner without start cells keeps the whole-map bound
+    const std::vector<StartComponent> parts = componentsWithStarts(plan.cells, starts);
+    if (parts.size() < 2)
+        return;
+    std::vector<PartFigures> figures;
+    std::size_t largest = 0;
+    for (const StartComponent& part : parts) {
+        figures.push_back(figuresOf(plan, part));
+        if (figures.back().areaSquareMetres > figures[largest].areaSquareMetres)
+            largest = figures.size() - 1;
+        metrics.lowerBoundSeconds = std::max(
+            metrics.lowerBoundSeconds, figures.back().costSeconds / static_cast<double>(part.robots.size()));
+    }
+    for (std::size_t part = 0; part < parts.size(); ++part) {
+        if (part == largest)
+            continue;
+        for (const int robot : parts[part].robots)
+            metrics.confinedRobots.push_back(
+                {robot, figures[part].areaSquareMetres, static_cast<int>(parts[part].robots.size())});
+    }
+}
 
 void PlanMetricsCalculator::compute(Plan& plan) const {
     PlanMetrics& metrics = plan.metrics;
@@ -45,6 +98,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         metrics.makespanSeconds = std::max(metrics.makespanSeconds, robotMetrics.timeSeconds);
     }
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : totalCost / static_cast<double>(robots);
+    boundByConnectedParts(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;
     metrics.passableAreaSquareMetres = graph.passableAreaSquareMetres;

@@ -9,6 +9,10 @@ namespace mcpp {
 class PlanMetricsCalculator {
   public:
     void compute(Plan& plan) const;
+
+  private:
+    // Raises the lower bound to what the robots of each connected part need and lists confined robots.
+    static void boundByConnectedParts(Plan& plan);
 };
 
 } // namespace mcpp

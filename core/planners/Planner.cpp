@@ -44,6 +44,17 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
     }
 }
 
+std::string confinedRobotMessage(const ConfinedRobot& confined) {
+    const std::string others =
+        confined.robotsInPocket > 1
+            ? " with " + std::to_string(confined.robotsInPocket - 1) + " other robot(s)"
+            : "";
+    return "robot " + std::to_string(confined.robot + 1) +
+           " starts in a part of the map cut off from the rest (" +
+           formatArea(confined.pocketAreaSquareMetres) + ") and can cover only that part" + others +
+           "; the lower bound counts each part with its own robots";
+}
+
 } // namespace
 
 ParameterSpec Planner::snapStartsParameter() {
@@ -78,6 +89,8 @@ Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progr
         planningRun.addIssue(IssueSeverity::Warning, "unreachable-area",
                              formatArea(plan.metrics.unreachableAreaSquareMetres) +
                                  " of passable land cannot be reached by any robot");
+    for (const ConfinedRobot& confined : plan.metrics.confinedRobots)
+        planningRun.addIssue(IssueSeverity::Information, "confined-robot", confinedRobotMessage(confined));
     progress.report("done", 1.0);
     return plan;
 }

@@ -78,6 +78,32 @@ class DarpTest : public QObject {
         QVERIFY(!hasIssue(plan, "not-converged"));
     }
 
+    // A robot walled into a pocket of 8 cells can cover only those; the other two share the 48 cells
+    // beyond the wall. No plan beats 24 cells (96 s) for the pair, so that is the lower bound, not the
+    // whole map's 56 cells over three robots, and the walled-in robot is named with its pocket's area.
+    void walledInRobotBoundsByItsPart() {
+        PlanningProblem problem = test::drawnProblem(rowsOf(8, "....##........................"),
+                                                     {{0.5, 0.5}, {6.5, 0.5}, {29.5, 7.5}});
+        const Plan plan = planWithDarp(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QCOMPARE(cellsOf(plan, 0), 8);
+        const double cellSeconds = plan.cells.cell(0).coverSeconds();
+        QCOMPARE(plan.metrics.lowerBoundSeconds, 24.0 * cellSeconds);
+        QVERIFY2(plan.metrics.ratio <= 1.05, qPrintable(QString::number(plan.metrics.ratio))); // 1.6 before
+        QCOMPARE(plan.metrics.confinedRobots.size(), std::size_t{1});
+        QCOMPARE(plan.metrics.confinedRobots[0].robot, 0);
+        QCOMPARE(plan.metrics.confinedRobots[0].pocketAreaSquareMetres,
+                 8.0 * plan.cells.cell(0).passableAreaSquareMetres);
+        QVERIFY(hasIssue(plan, "confined-robot"));
+        // Without the wall nobody is confined and the bound is the whole map's over three robots.
+        PlanningProblem open =
+            test::drawnProblem(rowsOf(8, std::string(30, '.')), {{0.5, 0.5}, {6.5, 0.5}, {29.5, 7.5}});
+        const Plan openPlan = planWithDarp(open);
+        QVERIFY(openPlan.metrics.confinedRobots.empty());
+        QCOMPARE(openPlan.metrics.lowerBoundSeconds, 60.0 * cellSeconds / 3.0);
+        QVERIFY(!hasIssue(openPlan, "confined-robot"));
+    }
+
     // Half the corridor is mud: DARP balances time, so the robot on the mud side gets fewer cells, and the
     // two regions' cover times differ by at most one mud cell.
     void mudCostsTimeNotArea() {
