@@ -1,5 +1,6 @@
 #include "io/AutopilotMission.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -37,6 +38,24 @@ std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, cons
         speeds[i] = current;
     }
     return speeds;
+}
+
+// Each straight leg flown at the slowest speed commanded along it, so that speeds change only at turns:
+// never faster than a land cover allows, with no waypoint in the middle of a leg.
+void slowestSpeedPerLeg(AutopilotMission& mission) {
+    const std::vector<Waypoint>& points = mission.points;
+    std::vector<double>& speeds = mission.commandedSpeeds;
+    std::size_t legStart = 0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const bool legEnds =
+            i + 1 == points.size() || !collinearAndBetween(points[i - 1], points[i], points[i + 1]);
+        if (!legEnds)
+            continue;
+        const auto first = speeds.begin() + static_cast<std::ptrdiff_t>(legStart + 1);
+        const auto last = speeds.begin() + static_cast<std::ptrdiff_t>(i + 1);
+        std::fill(first, last, *std::min_element(first, last));
+        legStart = i;
+    }
 }
 
 void mergeStraightStretches(AutopilotMission& mission) {
@@ -106,11 +125,13 @@ double roundedSpeed(double metresPerSecond) {
 }
 
 AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
-                                  double speedTolerance, bool mergeCollinear) {
+                                  const ExportSettings& settings) {
     AutopilotMission mission;
     mission.points = path.waypoints;
-    mission.commandedSpeeds = commandedSpeeds(mission.points, vehicle, speedTolerance);
-    if (mergeCollinear)
+    mission.commandedSpeeds = commandedSpeeds(mission.points, vehicle, settings.speedTolerance);
+    if (settings.speedChangesAtTurnsOnly)
+        slowestSpeedPerLeg(mission);
+    if (settings.mergeCollinear)
         mergeStraightStretches(mission);
     splitIntoParts(mission, vehicle.maxWaypoints);
     return mission;

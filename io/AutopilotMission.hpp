@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/CoveragePath.hpp"
+#include "io/Mission.hpp"
 #include "io/VehicleSettings.hpp"
 
 #include <string>
@@ -36,11 +37,12 @@ struct AutopilotMission {
 
 // The mission of a path. Speeds: the vehicle's cruise speed when it has one, else each waypoint's rounded
 // land-cover speed, commanded anew only where it differs from the speed in force by more than
-// speedTolerance (a fraction of that speed; 0 commands every change). With mergeCollinear, a point on the
-// straight segment between its neighbours that commands no new speed is left out. Parts hold at most the
-// vehicle's maxWaypoints items (home, a first speed command, waypoints and speed changes).
+// settings.speedTolerance (a fraction of that speed; 0 commands every change); with
+// speedChangesAtTurnsOnly, each straight leg at the slowest of its speeds. With mergeCollinear, a point on
+// the straight segment between its neighbours that commands no new speed is left out. Parts hold at most
+// the vehicle's maxWaypoints items (home, a first speed command, waypoints and speed changes).
 [[nodiscard]] AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
-                                                double speedTolerance, bool mergeCollinear);
+                                                const ExportSettings& settings);
 
 // The file of one part of a split mission: "out/robot_1.plan" -> "out/robot_1_part_2.plan" (part from 0).
 [[nodiscard]] std::string missionPartPath(const std::string& path, std::size_t part);

@@ -375,13 +375,15 @@ bool readExports(MissionReader& reader, const QJsonValue& value, ExportSettings&
         return false;
     if (!reader.onlyKeys(object, path,
                          {"vehicle", "altitude_m", "cruise_speed_mps", "max_waypoints", "speed_tolerance",
-                          "merge_collinear", "dense_paths", "cell_polygons"}))
+                          "speed_changes_at_turns_only", "merge_collinear", "dense_paths", "cell_polygons"}))
         return false;
     VehicleOverrides vehicle;
     if (!readVehicle(reader, object, path, vehicle))
         return false;
     exports.vehicle = vehicle.over(exports.vehicle);
     if (!reader.optional(object, path, "speed_tolerance", exports.speedTolerance, &MissionReader::number) ||
+        !reader.optional(object, path, "speed_changes_at_turns_only", exports.speedChangesAtTurnsOnly,
+                         &MissionReader::boolean) ||
         !reader.optional(object, path, "merge_collinear", exports.mergeCollinear, &MissionReader::boolean) ||
         !reader.optional(object, path, "dense_paths", exports.densePaths, &MissionReader::boolean) ||
         !reader.optional(object, path, "cell_polygons", exports.cellPolygons, &MissionReader::boolean)) {
@@ -595,6 +597,7 @@ std::string missionToJson(const Mission& mission) {
     exports.add("cruise_speed_mps", mission.exports.vehicle.cruiseSpeedMetresPerSecond);
     exports.add("max_waypoints", mission.exports.vehicle.maxWaypoints);
     exports.add("speed_tolerance", mission.exports.speedTolerance);
+    exports.add("speed_changes_at_turns_only", mission.exports.speedChangesAtTurnsOnly);
     exports.add("merge_collinear", mission.exports.mergeCollinear);
     exports.add("dense_paths", mission.exports.densePaths);
     exports.add("cell_polygons", mission.exports.cellPolygons);

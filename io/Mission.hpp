@@ -27,6 +27,9 @@ struct ExportSettings {
     // A new speed is commanded in waypoint files only where the land-cover speed differs from the one in
     // force by more than this fraction of it.
     double speedTolerance = 0.1;
+    // Each straight leg of a waypoint file at the slowest land-cover speed along it: speeds change only at
+    // turns, and a leg needs no waypoint in its middle (fewer mission items, a longer flight).
+    bool speedChangesAtTurnsOnly = false;
     bool mergeCollinear = true;
     bool densePaths = false;   // vector paths through every sub-cell centre instead of their turning points
     bool cellPolygons = false; // a polygon per cell in the GeoPackage (big on large maps)

@@ -289,8 +289,7 @@ AutopilotMission autopilotMissionOf(const ExportContext& context, int robot) {
     const CoveragePath* coverage = pathOfRobot(context.plan, robot);
     if (coverage == nullptr)
         return {};
-    return autopilotMission(*coverage, context.vehicle(robot), context.settings.speedTolerance,
-                            context.settings.mergeCollinear);
+    return autopilotMission(*coverage, context.vehicle(robot), context.settings);
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

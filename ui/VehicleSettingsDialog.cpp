@@ -1,5 +1,6 @@
 #include "ui/VehicleSettingsDialog.hpp"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -55,6 +56,13 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
            "speed in force by more than this share of it. Speeds are rounded to two "
            "significant digits."));
     form->addRow(tr("Speed change tolerance:"), speedTolerance_);
+    atTurnsOnly_ =
+        new QCheckBox(tr("Change speed only at turns (each straight leg at its slowest speed)"), this);
+    atTurnsOnly_->setChecked(exports_.speedChangesAtTurnsOnly);
+    atTurnsOnly_->setToolTip(
+        tr("Fewer mission items: no waypoint in the middle of a straight leg. The vehicle "
+           "never goes faster than a land cover allows, so the flight takes longer."));
+    form->addRow(QString(), atTurnsOnly_);
     layout->addLayout(form);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
@@ -139,6 +147,7 @@ io::ExportSettings VehicleSettingsDialog::exports() const {
     io::ExportSettings exports = exports_;
     exports.vehicle = settingsOf(rows_.front());
     exports.speedTolerance = speedTolerance_->value() / 100.0;
+    exports.speedChangesAtTurnsOnly = atTurnsOnly_->isChecked();
     return exports;
 }
 

@@ -5,6 +5,7 @@
 #include <QDialog>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QSpinBox;
@@ -41,6 +42,7 @@ class VehicleSettingsDialog : public QDialog {
     io::ExportSettings exports_;
     QTableWidget* table_ = nullptr;
     QDoubleSpinBox* speedTolerance_ = nullptr;
+    QCheckBox* atTurnsOnly_ = nullptr;
     std::vector<Row> rows_; // the "all robots" row first
     io::VehicleSettings shownDefaults_;
 };

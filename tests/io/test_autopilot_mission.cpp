@@ -47,6 +47,14 @@ bool onSegment(const Waypoint& a, const Waypoint& b, const Waypoint& p) {
            along <= length * length + 1e-9;
 }
 
+ExportSettings shaping(double speedTolerance, bool mergeCollinear, bool atTurnsOnly = false) {
+    ExportSettings settings;
+    settings.speedTolerance = speedTolerance;
+    settings.mergeCollinear = mergeCollinear;
+    settings.speedChangesAtTurnsOnly = atTurnsOnly;
+    return settings;
+}
+
 QJsonObject readJson(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
@@ -75,7 +83,7 @@ class AutopilotMissionTest : public QObject {
         const CoveragePath path = lawnmower(4, 9, 2.0, 3.0);
         VehicleSettings vehicle;
         vehicle.maxWaypoints = 0;
-        const AutopilotMission mission = autopilotMission(path, vehicle, 0.1, true);
+        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, true));
         // Rows alternate 2 and 3 m/s: a change at every row; the 5% bumps inside rows are not commanded.
         int changes = 0;
         for (std::size_t i = 0; i < mission.points.size(); ++i) {
@@ -85,14 +93,14 @@ class AutopilotMissionTest : public QObject {
         }
         QCOMPARE(changes, 3);
         // With no tolerance every rounded change is commanded: into and out of each bump too.
-        const AutopilotMission exact = autopilotMission(path, vehicle, 0.0, true);
+        const AutopilotMission exact = autopilotMission(path, vehicle, shaping(0.0, true));
         int exactChanges = 0;
         for (std::size_t i = 0; i < exact.points.size(); ++i)
             exactChanges += exact.changesSpeedAt(i) ? 1 : 0;
         QCOMPARE(exactChanges, 3 + 4 * 2);
         // A cruise speed replaces them all.
         vehicle.cruiseSpeedMetresPerSecond = 5.0;
-        const AutopilotMission cruise = autopilotMission(path, vehicle, 0.1, true);
+        const AutopilotMission cruise = autopilotMission(path, vehicle, shaping(0.1, true));
         for (std::size_t i = 0; i < cruise.points.size(); ++i)
             QVERIFY(!cruise.changesSpeedAt(i) && cruise.commandedSpeeds[i] == 5.0);
     }
@@ -101,7 +109,7 @@ class AutopilotMissionTest : public QObject {
         const CoveragePath path = lawnmower(6, 11, 1.0, 1.5);
         VehicleSettings vehicle;
         vehicle.maxWaypoints = 0;
-        const AutopilotMission mission = autopilotMission(path, vehicle, 0.1, true);
+        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, true));
         QVERIFY(mission.points.size() < path.waypoints.size());
         // Each row keeps its two ends: 12 points.
         QCOMPARE(mission.points.size(), std::size_t{12});
@@ -114,6 +122,28 @@ class AutopilotMissionTest : public QObject {
         }
     }
 
+    void speedsChangeOnlyAtTurnsWhenAsked() {
+        CoveragePath path = lawnmower(6, 11, 2.0, 3.0);
+        for (std::size_t i = 0; i < path.waypoints.size(); i += 11)
+            path.waypoints[i + 3].speedMetresPerSecond = 0.5; // a patch of mud in every row
+        VehicleSettings vehicle;
+        vehicle.maxWaypoints = 0;
+        const AutopilotMission anywhere = autopilotMission(path, vehicle, shaping(0.1, true));
+        const AutopilotMission atTurns = autopilotMission(path, vehicle, shaping(0.1, true, true));
+        QVERIFY(anywhere.points.size() > 12);             // the mud's points stay in the middle of rows
+        QCOMPARE(atTurns.points.size(), std::size_t{12}); // each row's two ends
+        QVERIFY(atTurns.items < anywhere.items);
+        // Every leg goes no faster than the slowest land cover along it.
+        std::size_t point = 1;
+        for (std::size_t i = 1; i < path.waypoints.size(); ++i) {
+            if (!onSegment(atTurns.points[point - 1], atTurns.points[point], path.waypoints[i]))
+                ++point;
+            QVERIFY(point < atTurns.points.size());
+            QVERIFY(atTurns.commandedSpeeds[point] <= roundedSpeed(path.waypoints[i].speedMetresPerSecond));
+        }
+        QCOMPARE(atTurns.commandedSpeeds[1], 0.5);
+    }
+
     void partsJoinUpAndHoldAtMostTheLimit() {
         std::mt19937 random(11);
         for (int trial = 0; trial < 40; ++trial) {
@@ -122,7 +152,7 @@ class AutopilotMissionTest : public QObject {
             const CoveragePath path = lawnmower(rows, columns, 1.0 + random() % 5, 7.0);
             VehicleSettings vehicle;
             vehicle.maxWaypoints = minimumMaxWaypoints + static_cast<int>(random() % 40);
-            const AutopilotMission mission = autopilotMission(path, vehicle, 0.1, random() % 2 == 0);
+            const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, random() % 2 == 0));
             QVERIFY(!mission.parts.empty());
             QCOMPARE(mission.parts.front().first, std::size_t{0});
             QCOMPARE(mission.parts.back().last, mission.points.size() - 1);
@@ -154,7 +184,7 @@ class AutopilotMissionTest : public QObject {
         const CoveragePath path = lawnmower(40, 20, 1.0, 2.0);
         VehicleSettings vehicle;
         vehicle.maxWaypoints = 0;
-        const AutopilotMission mission = autopilotMission(path, vehicle, 0.1, false);
+        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, false));
         QCOMPARE(mission.parts.size(), std::size_t{1});
         QCOMPARE(mission.points.size(), path.waypoints.size());
         QCOMPARE(mission.items, 2 + 800 + 39); // home, first speed, waypoints, a change per row

@@ -53,6 +53,7 @@ Mission sampleMission() {
     mission.exports.mergeCollinear = false;
     mission.exports.vehicle.maxWaypoints = 350;
     mission.exports.speedTolerance = 0.25;
+    mission.exports.speedChangesAtTurnsOnly = true;
     return mission;
 }
 
@@ -123,6 +124,7 @@ class MissionFilesTest : public QObject {
         QCOMPARE(exports["vehicle"].toString(), QString("rover"));
         QCOMPARE(exports["max_waypoints"].toInt(), 350);
         QCOMPARE(exports["speed_tolerance"].toDouble(), 0.25);
+        QCOMPARE(exports["speed_changes_at_turns_only"].toBool(), true);
         const std::vector<VehicleSettings> vehicles = robotVehicles(sampleMission());
         QCOMPARE(vehicles[0].maxWaypoints, 350);
         QCOMPARE(vehicles[0].altitudeMetres, 12.5);

@@ -2,6 +2,7 @@
 
 #include "ui/VehicleSettingsDialog.hpp"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSpinBox>
@@ -88,6 +89,10 @@ class VehicleSettingsDialogTest : public QObject {
         QCOMPARE(tolerance->value(), 20.0);
         tolerance->setValue(5.0);
         QCOMPARE(dialog.exports().speedTolerance, 0.05);
+        auto* atTurns = dialog.findChild<QCheckBox*>();
+        QVERIFY(atTurns != nullptr && !atTurns->isChecked());
+        atTurns->setChecked(true);
+        QVERIFY(dialog.exports().speedChangesAtTurnsOnly);
     }
 };
 
