@@ -79,6 +79,19 @@ void mergeStraightStretches(AutopilotMission& mission) {
     speeds.resize(kept + 1);
 }
 
+double flightSeconds(const AutopilotMission& mission) {
+    double seconds = 0.0;
+    for (std::size_t i = 1; i < mission.points.size(); ++i) {
+        const double speed = mission.commandedSpeeds[i];
+        if (!(speed > 0.0))
+            return 0.0;
+        const Waypoint& from = mission.points[i - 1];
+        const Waypoint& to = mission.points[i];
+        seconds += std::hypot(to.x - from.x, to.y - from.y) / speed;
+    }
+    return seconds;
+}
+
 int itemsOf(const AutopilotMission& mission, std::size_t first, std::size_t last) {
     int items = itemsBesideWaypoints + 1;
     for (std::size_t point = first + 1; point <= last; ++point)
@@ -134,6 +147,7 @@ AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSetting
     if (settings.mergeCollinear)
         mergeStraightStretches(mission);
     splitIntoParts(mission, vehicle.maxWaypoints);
+    mission.seconds = flightSeconds(mission);
     return mission;
 }
 

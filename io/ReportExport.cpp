@@ -32,6 +32,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("max_waypoints", vehicle.maxWaypoints);
         item.add("mission_items", mission.items);
         item.add("mission_parts", static_cast<int>(mission.parts.size()));
+        item.add("mission_time_s", mission.seconds);
     }
     root.add("makespan_s", metrics.makespanSeconds);
     root.add("lower_bound_s", metrics.lowerBoundSeconds);

@@ -142,6 +142,12 @@ class AutopilotMissionTest : public QObject {
             QVERIFY(atTurns.commandedSpeeds[point] <= roundedSpeed(path.waypoints[i].speedMetresPerSecond));
         }
         QCOMPARE(atTurns.commandedSpeeds[1], 0.5);
+        // Flown at the slowest speed of every row: six rows of 100 m at 0.5 m/s, five 10 m steps at their
+        // rows' speeds (3, 2, 3, 2, 3 m/s).
+        const double expected = 6 * 100.0 / 0.5 + 10.0 / 3 + 10.0 / 2 + 10.0 / 3 + 10.0 / 2 + 10.0 / 3;
+        QVERIFY2(std::abs(atTurns.seconds - expected) < 1e-9,
+                 qPrintable(QStringLiteral("%1 s, expected %2 s").arg(atTurns.seconds).arg(expected)));
+        QVERIFY(anywhere.seconds < atTurns.seconds);
     }
 
     void partsJoinUpAndHoldAtMostTheLimit() {
