@@ -64,12 +64,8 @@ std::optional<int> parseNonNegativeInteger(std::string_view text) {
 }
 
 std::optional<int> parsePositiveInteger(std::string_view text) {
-    text = trimmedText(text);
-    int value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 1)
-        return std::nullopt;
-    return value;
+    const auto value = parseNonNegativeInteger(text);
+    return value && *value >= 1 ? value : std::nullopt;
 }
 
 std::optional<MapPoint> parsePoint(std::string_view text) {

@@ -1,5 +1,7 @@
 #include "io/AutopilotMission.hpp"
 
+#include "io/internal/StraightLine.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -7,21 +9,11 @@
 namespace mcpp::io {
 namespace {
 
+using internal::collinearAndBetween;
+
 // Mission items every part has besides its waypoints and speed changes: the home position and the speed
 // the vehicle starts with.
 constexpr int itemsBesideWaypoints = 2;
-
-bool collinearAndBetween(const Waypoint& a, const Waypoint& b, const Waypoint& c) {
-    const double abX = b.x - a.x, abY = b.y - a.y, acX = c.x - a.x, acY = c.y - a.y;
-    const double lengthAc = std::hypot(acX, acY);
-    if (lengthAc == 0.0)
-        return false;
-    const double cross = abX * acY - abY * acX;
-    if (std::abs(cross) > 1e-9 * lengthAc * std::max(lengthAc, 1.0))
-        return false;
-    const double along = (abX * acX + abY * acY) / (lengthAc * lengthAc);
-    return along > 0.0 && along < 1.0;
-}
 
 // The speed in force at each waypoint: a new one only when it differs enough from the one before.
 std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, const VehicleSettings& vehicle,

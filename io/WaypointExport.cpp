@@ -1,6 +1,7 @@
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
+#include "io/internal/StraightLine.hpp"
 #include "io/internal/TextFiles.hpp"
 
 #include <cmath>
@@ -8,6 +9,8 @@
 namespace mcpp::io {
 
 namespace {
+
+using internal::collinearAndBetween;
 
 using internal::JsonValue;
 
@@ -70,19 +73,6 @@ double fieldOfViewAt(const Plan& plan, const Waypoint& waypoint) {
     if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= plan.cells.size())
         return 0.0;
     return plan.cells.cell(waypoint.cell).fieldOfView();
-}
-
-bool collinearAndBetween(const Waypoint& a, const Waypoint& b, const Waypoint& c) {
-    const double abX = b.x - a.x, abY = b.y - a.y, acX = c.x - a.x, acY = c.y - a.y;
-    const double lengthAc = std::hypot(acX, acY);
-    if (lengthAc == 0.0)
-        return false;
-    const double cross = abX * acY - abY * acX;
-    const double tolerance = 1e-9 * lengthAc * std::max(lengthAc, 1.0);
-    if (std::abs(cross) > tolerance)
-        return false;
-    const double along = (abX * acX + abY * acY) / (lengthAc * lengthAc);
-    return along > 0.0 && along < 1.0;
 }
 
 std::string fixed(double value, int decimals) {
