@@ -350,7 +350,7 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
 }
 
 std::size_t BatchRunner::noteSplitMission(const io::ExportContext& context, int robot) {
-    const io::AutopilotMission mission = io::autopilotMissionOf(context, robot);
+    const io::AutopilotMission& mission = io::autopilotMissionOf(context, robot);
     if (mission.parts.size() <= 1)
         return 1;
     const std::string name = "robot_" + std::to_string(io::robotNumber(robot));

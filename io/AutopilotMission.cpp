@@ -34,9 +34,7 @@ std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, cons
 
 // Each straight leg flown at the slowest speed commanded along it, so that speeds change only at turns:
 // never faster than a land cover allows, with no waypoint in the middle of a leg.
-void slowestSpeedPerLeg(AutopilotMission& mission) {
-    const std::vector<Waypoint>& points = mission.points;
-    std::vector<double>& speeds = mission.commandedSpeeds;
+void slowestSpeedPerLeg(const std::vector<Waypoint>& points, std::vector<double>& speeds) {
     std::size_t legStart = 0;
     for (std::size_t i = 1; i < points.size(); ++i) {
         const bool legEnds =
@@ -50,25 +48,26 @@ void slowestSpeedPerLeg(AutopilotMission& mission) {
     }
 }
 
-void mergeStraightStretches(AutopilotMission& mission) {
-    std::vector<Waypoint>& points = mission.points;
-    std::vector<double>& speeds = mission.commandedSpeeds;
-    if (points.size() < 3)
+// The points the mission keeps and their speeds, read from the whole path without copying it (a large
+// map's paths hold tens of millions of points).
+void keepPoints(const std::vector<Waypoint>& points, const std::vector<double>& speeds, bool mergeCollinear,
+                AutopilotMission& mission) {
+    const auto keep = [&](std::size_t i) {
+        mission.points.push_back(points[i]);
+        mission.commandedSpeeds.push_back(speeds[i]);
+    };
+    if (points.empty())
         return;
-    std::size_t kept = 0;
+    keep(0);
     for (std::size_t i = 1; i + 1 < points.size(); ++i) {
         // Dropping point i is exact when the segment after it is commanded the same speed.
-        if (collinearAndBetween(points[kept], points[i], points[i + 1]) && speeds[i] == speeds[i + 1])
+        if (mergeCollinear && collinearAndBetween(mission.points.back(), points[i], points[i + 1]) &&
+            speeds[i] == speeds[i + 1])
             continue;
-        ++kept;
-        points[kept] = points[i];
-        speeds[kept] = speeds[i];
+        keep(i);
     }
-    ++kept;
-    points[kept] = points.back();
-    speeds[kept] = speeds.back();
-    points.resize(kept + 1);
-    speeds.resize(kept + 1);
+    if (points.size() > 1)
+        keep(points.size() - 1);
 }
 
 double flightSeconds(const AutopilotMission& mission) {
@@ -132,12 +131,10 @@ double roundedSpeed(double metresPerSecond) {
 AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
                                   const ExportSettings& settings) {
     AutopilotMission mission;
-    mission.points = path.waypoints;
-    mission.commandedSpeeds = commandedSpeeds(mission.points, vehicle, settings.speedTolerance);
+    std::vector<double> speeds = commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
     if (settings.speedChangesAtTurnsOnly)
-        slowestSpeedPerLeg(mission);
-    if (settings.mergeCollinear)
-        mergeStraightStretches(mission);
+        slowestSpeedPerLeg(path.waypoints, speeds);
+    keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
     splitIntoParts(mission, vehicle.maxWaypoints);
     mission.seconds = flightSeconds(mission);
     return mission;

@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -55,6 +56,17 @@ struct ExportContext {
         RegionOutlines outlines;
     };
     std::shared_ptr<OutlineCache> outlineCache = std::make_shared<OutlineCache>(); // for outlines() only
+
+    // Each robot's autopilot mission, made once for its waypoint files and the reports.
+    struct MissionCache {
+        struct Entry {
+            std::once_flag made;
+            AutopilotMission mission;
+        };
+        std::mutex mutex; // guards entries
+        std::map<int, std::shared_ptr<Entry>> entries;
+    };
+    std::shared_ptr<MissionCache> missionCache = std::make_shared<MissionCache>(); // autopilotMissionOf only
 };
 
 // Robots are numbered from 1 in every file, as on the map and in the legend; plans index them from 0.
@@ -84,8 +96,8 @@ struct ExportContext {
 [[nodiscard]] std::vector<Waypoint> turningPoints(const CoveragePath& path);
 
 // The mission a robot's autopilot files hold (empty when the plan has no path for it), with the parts its
-// vehicle's item limit splits it into.
-[[nodiscard]] AutopilotMission autopilotMissionOf(const ExportContext& context, int robot);
+// vehicle's item limit splits it into; made on first use and shared by the context's copies.
+[[nodiscard]] const AutopilotMission& autopilotMissionOf(const ExportContext& context, int robot);
 
 // Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive
 // parts beside `path` (missionPartPath), each beginning where the one before it ended, and `path` itself is

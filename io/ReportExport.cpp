@@ -27,7 +27,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("turns", robot.turns);
         item.add("cost_s", robot.costSeconds);
         const VehicleSettings& vehicle = context.vehicle(robot.robot);
-        const AutopilotMission mission = autopilotMissionOf(context, robot.robot);
+        const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
         item.add("vehicle", vehicleTypeKey(vehicle.type));
         item.add("max_waypoints", vehicle.maxWaypoints);
         item.add("mission_items", mission.items);
@@ -66,7 +66,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
 Status writeReportCsv(const ExportContext& context, const std::string& path) {
     std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
-        const AutopilotMission mission = autopilotMissionOf(context, robot.robot);
+        const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
         text += std::to_string(robotNumber(robot.robot)) + "," +
                 internal::quoteCsvField(context.robotName(robot.robot)) + "," + std::to_string(robot.cells) +
                 "," + internal::formatShortest(robot.areaSquareMetres) + "," +

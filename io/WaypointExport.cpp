@@ -257,7 +257,7 @@ Status writeMissionFiles(const ExportContext& context, int robot, const std::str
     if (!context.georeference.hasCrs())
         return Status::failure(path + ": the map has no CRS, so waypoints have no latitude and longitude");
     const VehicleSettings& vehicle = context.vehicle(robot);
-    const AutopilotMission mission = autopilotMissionOf(context, robot);
+    const AutopilotMission& mission = autopilotMissionOf(context, robot);
     const bool split = mission.parts.size() > 1;
     for (std::size_t part = 0; part < mission.parts.size(); ++part) {
         const std::string file = split ? missionPartPath(path, part) : path;
@@ -275,11 +275,20 @@ Status writeMissionFiles(const ExportContext& context, int robot, const std::str
 
 } // namespace
 
-AutopilotMission autopilotMissionOf(const ExportContext& context, int robot) {
-    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
-    if (coverage == nullptr)
-        return {};
-    return autopilotMission(*coverage, context.vehicle(robot), context.settings);
+const AutopilotMission& autopilotMissionOf(const ExportContext& context, int robot) {
+    std::shared_ptr<ExportContext::MissionCache::Entry> entry;
+    {
+        const std::lock_guard lock(context.missionCache->mutex);
+        auto& slot = context.missionCache->entries[robot];
+        if (!slot)
+            slot = std::make_shared<ExportContext::MissionCache::Entry>();
+        entry = slot;
+    }
+    std::call_once(entry->made, [&] {
+        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot))
+            entry->mission = autopilotMission(*coverage, context.vehicle(robot), context.settings);
+    });
+    return entry->mission;
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

@@ -11,6 +11,21 @@ namespace mcpp::ui {
 
 namespace {
 
+// What the user should know about a mission written in parts.
+QString splitMissionNote(const io::ExportContext& context, int robot, const QString& path) {
+    const io::AutopilotMission& mission = io::autopilotMissionOf(context, robot);
+    const auto partName = [&](std::size_t part) {
+        return QFileInfo(QString::fromStdString(io::missionPartPath(path.toStdString(), part))).fileName();
+    };
+    return QObject::tr("%1's mission has %2 items, more than its autopilot's %3: written in %4 parts, each "
+                       "beginning where the one before it ended (%5 to %6).")
+        .arg(QString::fromStdString(context.robotName(robot)))
+        .arg(mission.items)
+        .arg(context.vehicle(robot).maxWaypoints)
+        .arg(mission.parts.size())
+        .arg(partName(0), partName(mission.parts.size() - 1));
+}
+
 ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelRequested,
                      const std::function<void(int, int)>& progress) {
     ExportOutcome outcome;
@@ -39,25 +54,14 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
                                 .arg(path, QString::fromStdString(status.error()));
             return outcome;
         }
-        const io::AutopilotMission mission =
-            format->splitByItemLimit ? io::autopilotMissionOf(context, robot) : io::AutopilotMission{};
-        if (mission.parts.size() <= 1) {
+        const std::size_t parts =
+            format->splitByItemLimit ? io::autopilotMissionOf(context, robot).parts.size() : 1;
+        if (parts <= 1) {
             outcome.written << path;
         } else {
-            for (std::size_t part = 0; part < mission.parts.size(); ++part)
+            for (std::size_t part = 0; part < parts; ++part)
                 outcome.written << QString::fromStdString(io::missionPartPath(path.toStdString(), part));
-            outcome.notes << QObject::tr(
-                                 "%1's mission has %2 items, more than its autopilot's %3: written in %4 "
-                                 "parts, each beginning where the one before it ended (%5 to %6).")
-                                 .arg(QString::fromStdString(context.robotName(robot)))
-                                 .arg(mission.items)
-                                 .arg(context.vehicle(robot).maxWaypoints)
-                                 .arg(mission.parts.size())
-                                 .arg(QFileInfo(
-                                          outcome.written.at(outcome.written.size() -
-                                                             static_cast<qsizetype>(mission.parts.size())))
-                                          .fileName(),
-                                      QFileInfo(outcome.written.back()).fileName());
+            outcome.notes << splitMissionNote(context, robot, path);
         }
         progress(file + 1, files);
     }
