@@ -281,9 +281,6 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     context.robotNames = io::robotNames(mission_);
     context.vehicles = io::robotVehicles(mission_);
     const int robots = static_cast<int>(plan.paths.size());
-    std::vector<std::size_t> missionParts(static_cast<std::size_t>(robots), 1);
-    for (int robot = 0; robot < robots; ++robot)
-        missionParts[static_cast<std::size_t>(robot)] = noteSplitMission(context, robot);
 
     struct Output {
         const io::ExportFormat* format;
@@ -346,6 +343,10 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             internalError(namingFile((directory / outputs[i].name).string(), results[i].error()));
         warn(outputs[i].name + " not written: " + results[i].error());
     }
+    // After the writers, which made each robot's mission on both cores.
+    std::vector<std::size_t> missionParts(static_cast<std::size_t>(robots), 1);
+    for (int robot = 0; robot < robots; ++robot)
+        missionParts[static_cast<std::size_t>(robot)] = noteSplitMission(context, robot);
     removeStaleRobotFiles(missionParts, folder);
 }
 
