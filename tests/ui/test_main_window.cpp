@@ -325,6 +325,10 @@ class TestMainWindow : public QObject {
         QVERIFY(!QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3.plan"))));
         QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3_part_1.plan"))));
         QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3_part_2.plan"))));
+        const QString note = window.messageLog()->messages().last();
+        QVERIFY2(note.contains(QStringLiteral("more than its autopilot's 8")) &&
+                     note.contains(QStringLiteral("split-robot3_part_1.plan")),
+                 qPrintable(note));
         QVERIFY(!exportAndWait("geojson", QStringLiteral("/no/such/folder/plan.geojson")));
         QVERIFY(!window.isExporting());
         QVERIFY(window.lastError().contains(QStringLiteral("/no/such/folder/plan.geojson")));
