@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <sys/resource.h>
@@ -343,49 +344,53 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             internalError(namingFile((directory / outputs[i].name).string(), results[i].error()));
         warn(outputs[i].name + " not written: " + results[i].error());
     }
-    // After the writers, which made each robot's mission on both cores.
-    std::vector<std::size_t> missionParts(static_cast<std::size_t>(robots), 1);
+    // Parts of each robot's autopilot files this run wrote (0: none), by robot and format key.
+    std::map<std::pair<int, std::string>, std::size_t> partsWritten;
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const io::ExportFormat& format = *outputs[i].format;
+        if (format.splitByItemLimit && results[i])
+            partsWritten[{outputs[i].robot, format.key}] =
+                io::autopilotMissionOf(context, outputs[i].robot).parts.size();
+    }
     for (int robot = 0; robot < robots; ++robot)
-        missionParts[static_cast<std::size_t>(robot)] = noteSplitMission(context, robot);
-    removeStaleRobotFiles(missionParts, folder);
+        if (partsWritten.count({robot, "qgc-plan"}) != 0)
+            noteSplitMission(context, robot);
+    removeStaleRobotFiles(robots, partsWritten, folder);
 }
 
-std::size_t BatchRunner::noteSplitMission(const io::ExportContext& context, int robot) {
+void BatchRunner::noteSplitMission(const io::ExportContext& context, int robot) {
     const io::AutopilotMission& mission = io::autopilotMissionOf(context, robot);
     if (mission.parts.size() <= 1)
-        return 1;
+        return;
     const std::string name = "robot_" + std::to_string(io::robotNumber(robot));
     note(context.robotName(robot) + "'s mission has " + std::to_string(mission.items) +
          " items, more than its autopilot's " + std::to_string(context.vehicle(robot).maxWaypoints) +
          ": written in " + std::to_string(mission.parts.size()) + " parts, " + name + "_part_1 to " + name +
          "_part_" + std::to_string(mission.parts.size()) + " (.plan and .waypoints), each beginning where " +
          "the one before it ended");
-    return mission.parts.size();
 }
 
-void BatchRunner::removeStaleRobotFiles(const std::vector<std::size_t>& missionParts,
-                                        const std::string& folder) const {
+void BatchRunner::removeStaleRobotFiles(
+    int robots, const std::map<std::pair<int, std::string>, std::size_t>& partsWritten,
+    const std::string& folder) const {
     // Waypoint files a previous run in this folder wrote and this one has not would mislead: those of
     // robots it no longer has, a whole mission now split into parts, parts of a mission now whole or shorter.
     namespace fs = std::filesystem;
     const fs::path directory(folder);
     std::error_code code;
-    for (std::size_t robot = 0;; ++robot) {
-        const bool planned = robot < missionParts.size();
-        const std::size_t parts = planned ? missionParts[robot] : 0;
+    for (int robot = 0;; ++robot) {
+        const bool planned = robot < robots;
         bool removed = false;
         for (const io::ExportFormat& format : io::exportFormats()) {
             if (!format.inBatchOutputs || !format.perRobot)
                 continue;
-            const std::string whole =
-                (directory / io::robotFileName(static_cast<int>(robot), format)).string();
-            if (!planned || (format.splitByItemLimit && parts > 1))
+            const auto written = partsWritten.find({robot, format.key});
+            const std::size_t parts = written == partsWritten.end() ? 0 : written->second;
+            const std::string whole = (directory / io::robotFileName(robot, format)).string();
+            if (!planned)
                 removed = fs::remove(whole, code) || removed;
-            if (!format.splitByItemLimit)
-                continue;
-            for (std::size_t part = parts > 1 ? parts : 0; fs::remove(io::missionPartPath(whole, part), code);
-                 ++part)
-                removed = true;
+            if (format.splitByItemLimit)
+                removed = io::removeStaleMissionFiles(whole, parts) || removed;
         }
         if (!planned && !removed)
             break;

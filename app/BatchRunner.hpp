@@ -11,6 +11,7 @@
 #include "io/MissionInputs.hpp"
 #include "io/PlanExport.hpp"
 
+#include <map>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -41,9 +42,12 @@ class BatchRunner {
     Plan runPlanner(const PlanningProblem& problem);
     // Every batch output on workerThreads() threads (set from --threads), report.json last.
     void writeOutputs(const Plan& plan, const std::string& folder);
-    void removeStaleRobotFiles(const std::vector<std::size_t>& missionParts, const std::string& folder) const;
-    // Says when a robot's mission is above its autopilot's item limit; the number of parts it is written in.
-    std::size_t noteSplitMission(const io::ExportContext& context, int robot);
+    // partsWritten: the parts of each robot's autopilot files this run wrote, by robot and format key.
+    void removeStaleRobotFiles(int robots,
+                               const std::map<std::pair<int, std::string>, std::size_t>& partsWritten,
+                               const std::string& folder) const;
+    // Says when a robot's mission, as written, is above its autopilot's item limit.
+    void noteSplitMission(const io::ExportContext& context, int robot);
     void printSummary(const Plan& plan) const;
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.
     void writeComparison(const std::vector<io::ComparisonRow>& rows,

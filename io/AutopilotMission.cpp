@@ -32,20 +32,42 @@ std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, cons
     return speeds;
 }
 
-// Each straight leg flown at the slowest speed commanded along it, so that speeds change only at turns:
-// never faster than a land cover allows, with no waypoint in the middle of a leg.
-void slowestSpeedPerLeg(const std::vector<Waypoint>& points, std::vector<double>& speeds) {
+// The slowest land-cover speed of the waypoints from first to last, rounded down: no segment between them
+// is then driven faster than its land cover allows.
+double slowestSpeed(const std::vector<Waypoint>& waypoints, std::size_t first, std::size_t last) {
+    double slowest = 0.0;
+    for (std::size_t i = first; i <= last; ++i) {
+        const double speed = waypoints[i].speedMetresPerSecond;
+        if (speed > 0.0 && (slowest == 0.0 || speed < slowest))
+            slowest = speed;
+    }
+    return roundedDownSpeed(slowest);
+}
+
+// Each straight leg at the slowest speed along it, so that speeds change only at turns, with no waypoint in
+// the middle of a leg. The tolerance only keeps a slower speed into a leg that allows a little more, never
+// the reverse.
+std::vector<double> slowestSpeedPerLeg(const std::vector<Waypoint>& waypoints, double speedTolerance) {
+    std::vector<double> speeds(waypoints.size(), 0.0);
+    if (waypoints.empty())
+        return speeds;
+    double current = 0.0;
     std::size_t legStart = 0;
-    for (std::size_t i = 1; i < points.size(); ++i) {
-        const bool legEnds =
-            i + 1 == points.size() || !collinearAndBetween(points[i - 1], points[i], points[i + 1]);
+    for (std::size_t i = 1; i < waypoints.size(); ++i) {
+        const bool legEnds = i + 1 == waypoints.size() ||
+                             !collinearAndBetween(waypoints[i - 1], waypoints[i], waypoints[i + 1]);
         if (!legEnds)
             continue;
-        const auto first = speeds.begin() + static_cast<std::ptrdiff_t>(legStart + 1);
-        const auto last = speeds.begin() + static_cast<std::ptrdiff_t>(i + 1);
-        std::fill(first, last, *std::min_element(first, last));
+        const double slowest = slowestSpeed(waypoints, legStart, i);
+        if (current == 0.0 || slowest < current || slowest > current * (1.0 + speedTolerance) * (1.0 + 1e-9))
+            current = slowest;
+        std::fill(speeds.begin() + static_cast<std::ptrdiff_t>(legStart + 1),
+                  speeds.begin() + static_cast<std::ptrdiff_t>(i + 1), current);
+        if (legStart == 0)
+            speeds[0] = current;
         legStart = i;
     }
+    return speeds;
 }
 
 // The points the mission keeps and their speeds, read from the whole path without copying it (a large
@@ -114,6 +136,17 @@ void splitIntoParts(AutopilotMission& mission, int maxWaypoints) {
 
 } // namespace
 
+double roundedDownSpeed(double metresPerSecond) {
+    if (!(metresPerSecond > 0.0) || !std::isfinite(metresPerSecond))
+        return 0.0;
+    const int decimals = 1 - static_cast<int>(std::floor(std::log10(metresPerSecond)));
+    const double scale = std::pow(10.0, std::abs(decimals));
+    // A hair above the product, so that 0.29 * 100 = 28.999999999999996 still rounds down to 29.
+    const double down = decimals > 0 ? std::floor(metresPerSecond * scale * (1.0 + 1e-12)) / scale
+                                     : std::floor(metresPerSecond / scale * (1.0 + 1e-12)) * scale;
+    return down > 0.0 ? down : metresPerSecond;
+}
+
 double roundedSpeed(double metresPerSecond) {
     if (!(metresPerSecond > 0.0) || !std::isfinite(metresPerSecond))
         return 0.0;
@@ -131,9 +164,10 @@ double roundedSpeed(double metresPerSecond) {
 AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
                                   const ExportSettings& settings) {
     AutopilotMission mission;
-    std::vector<double> speeds = commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
-    if (settings.speedChangesAtTurnsOnly)
-        slowestSpeedPerLeg(path.waypoints, speeds);
+    const bool byLeg = settings.speedChangesAtTurnsOnly && !(vehicle.cruiseSpeedMetresPerSecond > 0.0);
+    const std::vector<double> speeds =
+        byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
+              : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
     keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
     splitIntoParts(mission, vehicle.maxWaypoints);
     mission.seconds = flightSeconds(mission);
@@ -145,6 +179,15 @@ std::string missionPartPath(const std::string& path, std::size_t part) {
     const std::string name =
         file.stem().string() + "_part_" + std::to_string(part + 1) + file.extension().string();
     return (file.parent_path() / name).string();
+}
+
+bool removeStaleMissionFiles(const std::string& path, std::size_t parts) {
+    std::error_code code;
+    bool removed = parts > 1 && std::filesystem::remove(path, code);
+    for (std::size_t part = parts > 1 ? parts : 0; std::filesystem::remove(missionPartPath(path, part), code);
+         ++part)
+        removed = true;
+    return removed;
 }
 
 } // namespace mcpp::io

@@ -37,11 +37,14 @@ struct AutopilotMission {
 
 // A land-cover speed as a vehicle is told it: two significant digits (0.3168 -> 0.32 m/s, 12.34 -> 12).
 [[nodiscard]] double roundedSpeed(double metresPerSecond);
+// The same rounded down (0.3168 -> 0.31, 12.34 -> 12), for speeds that must not exceed the land cover's.
+[[nodiscard]] double roundedDownSpeed(double metresPerSecond);
 
 // The mission of a path. Speeds: the vehicle's cruise speed when it has one, else each waypoint's rounded
 // land-cover speed, commanded anew only where it differs from the speed in force by more than
 // settings.speedTolerance (a fraction of that speed; 0 commands every change); with
-// speedChangesAtTurnsOnly, each straight leg at the slowest of its speeds. With mergeCollinear, a point on
+// speedChangesAtTurnsOnly, each straight leg at the slowest land-cover speed along it, rounded down (a leg
+// keeps the speed before it when it would allow at most the tolerance more). With mergeCollinear, a point on
 // the straight segment between its neighbours that commands no new speed is left out. Parts hold at most
 // the vehicle's maxWaypoints items (home, a first speed command, waypoints and speed changes).
 [[nodiscard]] AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
@@ -49,5 +52,10 @@ struct AutopilotMission {
 
 // The file of one part of a split mission: "out/robot_1.plan" -> "out/robot_1_part_2.plan" (part from 0).
 [[nodiscard]] std::string missionPartPath(const std::string& path, std::size_t part);
+
+// Removes what an earlier export to `path` left that this one did not write: the whole file when the mission
+// was written in parts, parts from `parts` on (all of them when it was written whole: parts 1, or not at
+// all: 0). True when a file went.
+bool removeStaleMissionFiles(const std::string& path, std::size_t parts);
 
 } // namespace mcpp::io

@@ -57,7 +57,8 @@ struct ExportContext {
     };
     std::shared_ptr<OutlineCache> outlineCache = std::make_shared<OutlineCache>(); // for outlines() only
 
-    // Each robot's autopilot mission, made once for its waypoint files and the reports.
+    // Each robot's autopilot mission, made once for its waypoint files and the reports. Keyed by robot only:
+    // a copy of the context shares it, so a copy must not change settings or vehicles.
     struct MissionCache {
         struct Entry {
             std::once_flag made;

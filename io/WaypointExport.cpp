@@ -172,12 +172,17 @@ void addWaypoint(JsonValue& items, int& jumpId, const GeoWaypoint& point, double
     item.add("type", "SimpleItem");
 }
 
-// One QGroundControl plan: the part's first speed is the mission's cruise speed, later ones are items.
+// One QGroundControl plan: the part's first speed as its first item and its cruise speed, then waypoints and
+// speed changes.
 std::string qGroundControlPlanText(const AutopilotMission& mission, const MissionPart& part,
                                    const std::vector<GeoWaypoint>& points, const VehicleSettings& vehicle) {
     const double altitude = vehicle.altitudeMetres;
     JsonValue items = JsonValue::array();
     int jumpId = 1;
+    // cruiseSpeed is only QGroundControl's planning default: the vehicle is told its speed by an item, which
+    // matters most for a part that begins mid-field.
+    if (mission.commandedSpeeds[part.first] > 0.0)
+        addSpeedChange(items, jumpId, mission.commandedSpeeds[part.first]);
     for (std::size_t i = 0; i < points.size(); ++i) {
         const std::size_t point = part.first + i;
         if (i > 0 && mission.changesSpeedAt(point))

@@ -56,6 +56,8 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
         }
         const std::size_t parts =
             format->splitByItemLimit ? io::autopilotMissionOf(context, robot).parts.size() : 1;
+        if (format->splitByItemLimit)
+            io::removeStaleMissionFiles(path.toStdString(), parts); // an earlier export's other form
         if (parts <= 1) {
             outcome.written << path;
         } else {

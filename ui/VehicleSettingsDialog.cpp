@@ -48,9 +48,10 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     auto* form = new QFormLayout;
     speedTolerance_ = new QDoubleSpinBox(this);
     speedTolerance_->setRange(0.0, 99.0);
-    speedTolerance_->setDecimals(0);
+    speedTolerance_->setDecimals(1);
     speedTolerance_->setSuffix(QStringLiteral(" %"));
     speedTolerance_->setValue(exports_.speedTolerance * 100.0);
+    shownTolerance_ = speedTolerance_->value();
     speedTolerance_->setToolTip(
         tr("A new speed is commanded only where the land-cover speed differs from the "
            "speed in force by more than this share of it. Speeds are rounded to two "
@@ -70,6 +71,7 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
     resize(620, 180 + 32 * static_cast<int>(rows_.size()));
+    shownDefaults_ = settingsOf(rows_.front()); // as the boxes show them, for followDefaults
 }
 
 VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString& name,
@@ -82,13 +84,14 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     }
     widgets.altitude = new QDoubleSpinBox(table_);
     widgets.altitude->setRange(0.0, 10000.0);
-    widgets.altitude->setDecimals(1);
+    widgets.altitude->setDecimals(3); // as many as a mission file is likely to hold, so OK changes nothing
     widgets.cruiseSpeed = new QDoubleSpinBox(table_);
     widgets.cruiseSpeed->setRange(0.0, 1000.0);
-    widgets.cruiseSpeed->setDecimals(2);
+    widgets.cruiseSpeed->setDecimals(3);
     widgets.cruiseSpeed->setSpecialValueText(tr("land cover"));
     widgets.maxWaypoints = new QSpinBox(table_);
-    widgets.maxWaypoints->setRange(0, 1000000);
+    // Below the smallest limit a mission can be split by, the box says "no limit" (0 in the mission).
+    widgets.maxWaypoints->setRange(io::minimumMaxWaypoints - 1, 1000000);
     widgets.maxWaypoints->setSpecialValueText(tr("no limit"));
     show(widgets, settings);
     table_->setCellWidget(row, 0, widgets.type);
@@ -114,7 +117,8 @@ io::VehicleSettings VehicleSettingsDialog::settingsOf(const Row& row) {
     settings.type = static_cast<io::VehicleType>(row.type->currentData().toInt());
     settings.altitudeMetres = row.altitude->value();
     settings.cruiseSpeedMetresPerSecond = row.cruiseSpeed->value();
-    settings.maxWaypoints = row.maxWaypoints->value();
+    settings.maxWaypoints =
+        row.maxWaypoints->value() < io::minimumMaxWaypoints ? 0 : row.maxWaypoints->value();
     return settings;
 }
 
@@ -122,7 +126,8 @@ void VehicleSettingsDialog::show(const Row& row, const io::VehicleSettings& sett
     row.type->setCurrentIndex(row.type->findData(static_cast<int>(settings.type)));
     row.altitude->setValue(settings.altitudeMetres);
     row.cruiseSpeed->setValue(settings.cruiseSpeedMetresPerSecond);
-    row.maxWaypoints->setValue(settings.maxWaypoints);
+    row.maxWaypoints->setValue(settings.maxWaypoints == 0 ? io::minimumMaxWaypoints - 1
+                                                          : settings.maxWaypoints);
 }
 
 void VehicleSettingsDialog::followDefaults() {
@@ -146,7 +151,9 @@ void VehicleSettingsDialog::followDefaults() {
 io::ExportSettings VehicleSettingsDialog::exports() const {
     io::ExportSettings exports = exports_;
     exports.vehicle = settingsOf(rows_.front());
-    exports.speedTolerance = speedTolerance_->value() / 100.0;
+    // Unchanged in the box, the mission's own value stays, unrounded.
+    if (speedTolerance_->value() != shownTolerance_)
+        exports.speedTolerance = speedTolerance_->value() / 100.0;
     exports.speedChangesAtTurnsOnly = atTurnsOnly_->isChecked();
     return exports;
 }

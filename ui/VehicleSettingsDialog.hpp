@@ -43,6 +43,7 @@ class VehicleSettingsDialog : public QDialog {
     QTableWidget* table_ = nullptr;
     QDoubleSpinBox* speedTolerance_ = nullptr;
     QCheckBox* atTurnsOnly_ = nullptr;
+    double shownTolerance_ = 0.0;
     std::vector<Row> rows_; // the "all robots" row first
     io::VehicleSettings shownDefaults_;
 };

@@ -16,8 +16,8 @@ struct RobotMetrics {
     int turns = 0;
 };
 
-// A robot that starts in a part of the map cut off from the part most robots share: it can cover only
-// its pocket, whatever the allocation.
+// A robot that starts in a part of the map cut off from the largest part (by area) holding starts: it can
+// cover only its pocket, whatever the allocation.
 struct ConfinedRobot {
     int robot = 0;
     double pocketAreaSquareMetres = 0.0;

@@ -546,8 +546,13 @@ void TestBatchEndToEnd::readmeSampleRuns() {
 void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
     const QString out = scratch_.filePath("split");
     const int limit = 40;
-    auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--max-waypoints",
-                        QString::number(limit), "--out", out});
+    // First whole files, then parts in the same folder: the whole files of the first run go.
+    auto run =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--max-waypoints", "0", "--out", out});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY(QFileInfo::exists(out + "/robot_1.plan"));
+    run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--max-waypoints", QString::number(limit),
+                   "--out", out});
     checkOutputs(out, 3, run);
     if (QTest::currentTestFailed())
         return;
@@ -561,6 +566,8 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
         if (parts == 1)
             continue;
         ++splitRobots;
+        QVERIFY(!QFileInfo::exists(QStringLiteral("%1/robot_%2.plan").arg(out).arg(robot + 1)));
+        QVERIFY(!QFileInfo::exists(QStringLiteral("%1/robot_%2.waypoints").arg(out).arg(robot + 1)));
         QVERIFY2(run.standardOutput.contains(QStringLiteral("robot_%1_part_%2").arg(robot + 1).arg(parts)),
                  qPrintable(run.standardOutput));
         QJsonArray previousEnd;
@@ -568,7 +575,8 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
             const auto plan =
                 readJsonObject(QStringLiteral("%1/robot_%2_part_%3.plan").arg(out).arg(robot + 1).arg(part));
             const QJsonArray items = plan.value("mission").toObject().value("items").toArray();
-            QVERIFY(items.size() + 2 <= limit); // with the home position and the cruise speed
+            QVERIFY(items.size() + 1 <= limit);                          // with the home position
+            QCOMPARE(items[0].toObject().value("command").toInt(), 178); // the speed the part starts at
             QJsonArray start, end;
             for (const QJsonValue& item : items) {
                 if (item.toObject().value("command").toInt() != 16)

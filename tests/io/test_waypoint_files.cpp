@@ -112,9 +112,17 @@ class WaypointFilesTest : public QObject {
             if (item.toObject()["command"].toInt() == 16)
                 sampleWaypoint = item.toObject();
         }
-        const QJsonArray items = mission["items"].toArray();
+        const QJsonArray allItems = mission["items"].toArray();
+        // The vehicle is told its speed first (cruiseSpeed is only the ground station's default).
+        const QJsonObject speed = allItems[0].toObject();
+        QCOMPARE(speed["command"].toInt(), 178);
+        QCOMPARE(speed["doJumpId"].toInt(), 1);
+        QCOMPARE(speed["params"].toArray()[1].toDouble(), 0.5);
+        QJsonArray items;
+        for (qsizetype i = 1; i < allItems.size(); ++i)
+            items.append(allItems[i]);
         QCOMPARE(items.size(), static_cast<qsizetype>(plan_.paths[0].waypoints.size()));
-        int jump = 1;
+        int jump = 2;
         for (qsizetype i = 0; i < items.size(); ++i) {
             const QJsonObject item = items[i].toObject();
             QVERIFY(keysOf(item) == keysOf(sampleWaypoint));
@@ -135,7 +143,7 @@ class WaypointFilesTest : public QObject {
         }
         const QJsonArray home = mission["plannedHomePosition"].toArray();
         QCOMPARE(home.size(), 3);
-        QCOMPARE(home[0].toDouble(), items[0].toObject()["params"].toArray()[4].toDouble());
+        QCOMPARE(home[0].toDouble(), items[0].toObject()["params"].toArray()[4].toDouble()); // first waypoint
         QCOMPARE(home[1].toDouble(), items[0].toObject()["params"].toArray()[5].toDouble());
     }
 
@@ -143,23 +151,24 @@ class WaypointFilesTest : public QObject {
         const std::string path = file("robot1.plan");
         QVERIFY(writeQGroundControlPlan(context(), 1, path).ok());
         const QJsonArray items = readJson(path)["mission"].toObject()["items"].toArray();
-        int changes = 0;
+        std::vector<double> speeds;
         for (const QJsonValue& value : items) {
             const QJsonObject item = value.toObject();
-            if (item["command"].toInt() != 178)
-                continue;
-            ++changes;
-            QCOMPARE(item["params"].toArray()[1].toDouble(), 1.0);
+            if (item["command"].toInt() == 178)
+                speeds.push_back(item["params"].toArray()[1].toDouble());
         }
-        QCOMPARE(changes, 1);
-        // A fixed cruise speed: no speed items, cruiseSpeed set.
+        // The speed it starts at (the 20 m cell's 1.5 m/s), then the one change, to 1 m/s.
+        QCOMPARE(speeds, (std::vector<double>{1.5, 1.0}));
+        // A fixed cruise speed: one speed item at the start, cruiseSpeed set.
         ExportSettings cruise;
         cruise.vehicle.cruiseSpeedMetresPerSecond = 2.0;
         QVERIFY(writeQGroundControlPlan(context(cruise), 1, path).ok());
         const QJsonObject mission = readJson(path)["mission"].toObject();
         QCOMPARE(mission["cruiseSpeed"].toDouble(), 2.0);
-        for (const QJsonValue& value : mission["items"].toArray())
-            QCOMPARE(value.toObject()["command"].toInt(), 16);
+        const QJsonArray cruiseItems = mission["items"].toArray();
+        QCOMPARE(cruiseItems[0].toObject()["params"].toArray()[1].toDouble(), 2.0);
+        for (qsizetype i = 0; i < cruiseItems.size(); ++i)
+            QCOMPARE(cruiseItems[i].toObject()["command"].toInt(), i == 0 ? 178 : 16);
     }
 
     void waypointListMatchesQgcWpl110() {

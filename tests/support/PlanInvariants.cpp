@@ -320,41 +320,43 @@ std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& 
     return violations;
 }
 
-// The makespan no plan can beat, found apart from the planner's code: the covered cells split into
-// connected pieces, and each piece's cost is shared only by the robots that start in it (a robot may own no
-// cell of its piece when others cover it for it, as MSTC's do).
+// The makespan no plan can beat, found apart from the planner's code: the cell graph splits into connected
+// pieces, and the cost of a piece's covered cells is shared only by the robots that start in it (a robot
+// may own no cell of its piece when others cover it for it, as MSTC's do).
 double connectedPartsLowerBound(const Plan& plan) {
     const auto& owner = plan.regions.robotOfCell;
-    std::vector<int> piece(owner.size(), -1);
+    std::vector<int> piece(plan.cells.size(), -1);
     double bound = 0.0;
-    int pieces = 0;
-    for (std::size_t seed = 0; seed < owner.size(); ++seed) {
-        if (owner[seed] < 0 || piece[seed] >= 0)
+    int piecesWithStarts = 0;
+    for (std::size_t seed = 0; seed < piece.size(); ++seed) {
+        if (piece[seed] >= 0)
             continue;
         std::vector<int> stack{static_cast<int>(seed)};
-        piece[seed] = pieces;
+        piece[seed] = static_cast<int>(seed);
         double cost = 0.0;
         std::set<int> cells;
         while (!stack.empty()) {
             const int cell = stack.back();
             stack.pop_back();
-            cost += plan.cells.cell(cell).coverSeconds();
+            const auto index = static_cast<std::size_t>(cell);
+            if (index < owner.size() && owner[index] >= 0)
+                cost += plan.cells.cell(cell).coverSeconds();
             cells.insert(cell);
             for (const int next : plan.cells.neighbours(cell)) {
-                const auto index = static_cast<std::size_t>(next);
-                if (owner[index] >= 0 && piece[index] < 0) {
-                    piece[index] = pieces;
+                if (piece[static_cast<std::size_t>(next)] < 0) {
+                    piece[static_cast<std::size_t>(next)] = static_cast<int>(seed);
                     stack.push_back(next);
                 }
             }
         }
-        ++pieces;
         const auto robots = std::count_if(plan.regions.startCell.begin(), plan.regions.startCell.end(),
                                           [&](int start) { return cells.count(start) != 0; });
-        if (robots > 0)
+        if (robots > 0) {
+            ++piecesWithStarts;
             bound = std::max(bound, cost / static_cast<double>(robots));
+        }
     }
-    return pieces > 1 ? bound : 0.0;
+    return piecesWithStarts > 1 ? bound : 0.0;
 }
 
 std::vector<std::string> checkTimes(const Plan& plan) {

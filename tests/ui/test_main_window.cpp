@@ -329,6 +329,12 @@ class TestMainWindow : public QObject {
         QVERIFY2(note.contains(QStringLiteral("more than its autopilot's 8")) &&
                      note.contains(QStringLiteral("split-robot3_part_1.plan")),
                  qPrintable(note));
+        // Exported whole to the same name again: the parts of the earlier export go.
+        exports.vehicle.maxWaypoints = 0;
+        window.document()->setVehicles(exports, {});
+        QVERIFY(exportAndWait("qgc-plan", directory.filePath(QStringLiteral("split.plan"))));
+        QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3.plan"))));
+        QVERIFY(!QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3_part_1.plan"))));
         QVERIFY(!exportAndWait("geojson", QStringLiteral("/no/such/folder/plan.geojson")));
         QVERIFY(!window.isExporting());
         QVERIFY(window.lastError().contains(QStringLiteral("/no/such/folder/plan.geojson")));

@@ -63,8 +63,11 @@ class VehicleSettingsDialogTest : public QObject {
         QCOMPARE(cell<QDoubleSpinBox>(table, 1, 1)->value(), 40.0);
         QCOMPARE(cell<QDoubleSpinBox>(table, 2, 1)->value(), 60.0); // its own
         QCOMPARE(cell<QSpinBox>(table, 2, 3)->value(), 250);
-        // Robot 3 gets its own item limit.
-        cell<QSpinBox>(table, 3, 3)->setValue(0);
+        // Robot 3 gets its own item limit: none. The box cannot go below the smallest limit that works.
+        QSpinBox* limit = cell<QSpinBox>(table, 3, 3);
+        limit->setValue(3);
+        QCOMPARE(limit->value(), minimumMaxWaypoints - 1);
+        QCOMPARE(limit->text(), QStringLiteral("no limit"));
         const ExportSettings exports = dialog.exports();
         QCOMPARE(exports.vehicle.altitudeMetres, 40.0);
         QCOMPARE(exports.vehicle.maxWaypoints, 250);
@@ -74,6 +77,19 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(!vehicles[1].maxWaypoints);
         QCOMPARE(vehicles[2].maxWaypoints.value_or(-1), 0);
         QVERIFY(!vehicles[2].altitudeMetres);
+    }
+
+    // Values the boxes cannot show exactly come back unchanged: OK without an edit changes nothing.
+    void untouchedValuesComeBackUnchanged() {
+        Mission mission = threeRobots();
+        mission.exports.speedTolerance = 0.1234;
+        mission.exports.vehicle.altitudeMetres = 30.125;
+        mission.exports.vehicle.maxWaypoints = 0;
+        ui::VehicleSettingsDialog dialog(mission);
+        QVERIFY(dialog.exports() == mission.exports);
+        const auto vehicles = dialog.vehicles();
+        QVERIFY(vehicles[0].empty());
+        QVERIFY(vehicles[1] == mission.robots[1].vehicle);
     }
 
     void speedToleranceInPercent() {
@@ -87,6 +103,7 @@ class VehicleSettingsDialogTest : public QObject {
                 tolerance = spin;
         QVERIFY(tolerance != nullptr);
         QCOMPARE(tolerance->value(), 20.0);
+        QCOMPARE(dialog.exports().speedTolerance, 0.2);
         tolerance->setValue(5.0);
         QCOMPARE(dialog.exports().speedTolerance, 0.05);
         auto* atTurns = dialog.findChild<QCheckBox*>();
