@@ -359,15 +359,11 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
 }
 
 void BatchRunner::noteSplitMission(const io::ExportContext& context, int robot) {
-    const io::AutopilotMission& mission = io::autopilotMissionOf(context, robot);
-    if (mission.parts.size() <= 1)
-        return;
-    const std::string name = "robot_" + std::to_string(io::robotNumber(robot));
-    note(context.robotName(robot) + "'s mission has " + std::to_string(mission.items) +
-         " items, more than its autopilot's " + std::to_string(context.vehicle(robot).maxWaypoints) +
-         ": written in " + std::to_string(mission.parts.size()) + " parts, " + name + "_part_1 to " + name +
-         "_part_" + std::to_string(mission.parts.size()) + " (.plan and .waypoints), each beginning where " +
-         "the one before it ended");
+    // Named by the .plan file; the .waypoints files are split the same way.
+    const std::string message =
+        io::splitMissionNote(context, robot, "robot_" + std::to_string(io::robotNumber(robot)) + ".plan");
+    if (!message.empty())
+        note(message + ", and the same parts of the .waypoints file");
 }
 
 void BatchRunner::removeStaleRobotFiles(

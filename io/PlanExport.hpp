@@ -99,6 +99,9 @@ struct ExportContext {
 // The mission a robot's autopilot files hold (empty when the plan has no path for it), with the parts its
 // vehicle's item limit splits it into; made on first use and shared by the context's copies.
 [[nodiscard]] const AutopilotMission& autopilotMissionOf(const ExportContext& context, int robot);
+// What a user should know when a robot's mission is written in parts beside `path` (its whole-file name);
+// empty when it is written whole.
+[[nodiscard]] std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path);
 
 // Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive
 // parts beside `path` (missionPartPath), each beginning where the one before it ended, and `path` itself is

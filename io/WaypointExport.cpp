@@ -5,6 +5,7 @@
 #include "io/internal/TextFiles.hpp"
 
 #include <cmath>
+#include <filesystem>
 
 namespace mcpp::io {
 
@@ -294,6 +295,20 @@ const AutopilotMission& autopilotMissionOf(const ExportContext& context, int rob
             entry->mission = autopilotMission(*coverage, context.vehicle(robot), context.settings);
     });
     return entry->mission;
+}
+
+std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path) {
+    const AutopilotMission& mission = autopilotMissionOf(context, robot);
+    if (mission.parts.size() <= 1)
+        return {};
+    const auto partName = [&](std::size_t part) {
+        return std::filesystem::path(missionPartPath(path, part)).filename().string();
+    };
+    return context.robotName(robot) + "'s mission has " + std::to_string(mission.items) +
+           " items, more than its autopilot's " + std::to_string(context.vehicle(robot).maxWaypoints) +
+           ": written in " + std::to_string(mission.parts.size()) +
+           " parts, each beginning where the one before it ended (" + partName(0) + " to " +
+           partName(mission.parts.size() - 1) + ")";
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

@@ -3,28 +3,12 @@
 #include "io/ExportCatalogue.hpp"
 #include "render/PlanImageWriter.hpp"
 
-#include <QFileInfo>
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 
 namespace mcpp::ui {
 
 namespace {
-
-// What the user should know about a mission written in parts.
-QString splitMissionNote(const io::ExportContext& context, int robot, const QString& path) {
-    const io::AutopilotMission& mission = io::autopilotMissionOf(context, robot);
-    const auto partName = [&](std::size_t part) {
-        return QFileInfo(QString::fromStdString(io::missionPartPath(path.toStdString(), part))).fileName();
-    };
-    return QObject::tr("%1's mission has %2 items, more than its autopilot's %3: written in %4 parts, each "
-                       "beginning where the one before it ended (%5 to %6).")
-        .arg(QString::fromStdString(context.robotName(robot)))
-        .arg(mission.items)
-        .arg(context.vehicle(robot).maxWaypoints)
-        .arg(mission.parts.size())
-        .arg(partName(0), partName(mission.parts.size() - 1));
-}
 
 ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelRequested,
                      const std::function<void(int, int)>& progress) {
@@ -63,7 +47,9 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
         } else {
             for (std::size_t part = 0; part < parts; ++part)
                 outcome.written << QString::fromStdString(io::missionPartPath(path.toStdString(), part));
-            outcome.notes << splitMissionNote(context, robot, path);
+            outcome.notes << QString::fromStdString(
+                                 io::splitMissionNote(context, robot, path.toStdString())) +
+                                 QStringLiteral(".");
         }
         progress(file + 1, files);
     }

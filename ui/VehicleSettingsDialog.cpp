@@ -29,7 +29,8 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
         {tr("Vehicle"), tr("Altitude (m)"), tr("Cruise speed (m/s)"), tr("Item limit")});
     table_->horizontalHeaderItem(2)->setToolTip(tr("0: each land-cover class's speed"));
     table_->horizontalHeaderItem(3)->setToolTip(
-        tr("Mission items the autopilot holds, home included; 0: no limit"));
+        tr("Mission items the autopilot holds, home included; step below %1 for no limit")
+            .arg(io::minimumMaxWaypoints));
     QStringList names{tr("All robots")};
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         const std::string& name = mission.robots[robot].name;
