@@ -170,7 +170,9 @@ AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSetting
               : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
     keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
     splitIntoParts(mission, vehicle.maxWaypoints);
-    mission.seconds = flightSeconds(mission);
+    const double flight = flightSeconds(mission);
+    // Turns are made at the same points, so they cost what the plan priced them at.
+    mission.seconds = flight > 0.0 ? flight + path.turnSeconds : 0.0;
     return mission;
 }
 

@@ -25,8 +25,8 @@ struct AutopilotMission {
     std::vector<double> commandedSpeeds; // by point; the first is the speed the mission starts with
     std::vector<MissionPart> parts;
     int items = 0; // of the whole mission in one file
-    // The time to fly it at the commanded speeds (each segment at the speed commanded for it); 0 when a
-    // speed is unknown.
+    // The time to fly it at the commanded speeds (each segment at the speed commanded for it) with the
+    // plan's turn time; 0 when a speed is unknown.
     double seconds = 0.0;
 
     // Whether the vehicle is told a new speed before driving to this point.

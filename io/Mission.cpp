@@ -310,7 +310,9 @@ bool readParameter(MissionReader& reader, const QJsonValue& value, const std::st
     }
     case ParameterType::Real: {
         double real = 0.0;
-        if (!reader.number(value, path, real))
+        if (!spec.automatic.empty() && value.isString() && value.toString().toStdString() == spec.automatic)
+            real = automaticParameterValue;
+        else if (!reader.number(value, path, real))
             return false;
         parameter = real;
         break;
@@ -411,7 +413,8 @@ std::vector<std::pair<std::string, ParameterValue>> orderedParameters(const Plan
     if (const auto description = findPlannerDescription(choice.planner))
         for (const ParameterSpec& spec : description->parameters)
             if (const ParameterValue* value = choice.parameters.find(spec.key))
-                ordered.emplace_back(spec.key, *value);
+                ordered.emplace_back(spec.key,
+                                     spec.isAutomatic(*value) ? ParameterValue(spec.automatic) : *value);
     for (const auto& parameter : choice.parameters.all())
         if (std::none_of(ordered.begin(), ordered.end(),
                          [&](const auto& entry) { return entry.first == parameter.first; }))

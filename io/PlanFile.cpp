@@ -20,7 +20,7 @@ namespace {
 using internal::CompressedReader;
 using internal::CompressedWriter;
 
-constexpr const char* formatLine = "MCPP-PLAN 1";
+constexpr const char* formatLine = "MCPP-PLAN 2";
 constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
 
 // Size and time of last change of a file: a different file at the same path changes them. Empty when they
@@ -100,6 +100,7 @@ void putCells(CompressedWriter& out, const CellGraph& graph) {
         out.put(cell.minY);
         out.put(cell.size);
         out.put(cell.classValue);
+        out.put(cell.turnSecondsPer90Degrees);
         out.put(cell.speedMetresPerSecond);
         out.put(cell.passableAreaSquareMetres);
         out.put(cell.freeSubCells);
@@ -144,7 +145,7 @@ CellGraph getCells(CompressedReader& in) {
     if (static_cast<double>(frame.columns) * frame.rows * bytesPerBottomCell >
         static_cast<double>(memoryBudgetBytes()))
         throw CompressedReader::DamagedData("a grid larger than this machine can plan");
-    std::vector<Cell> cells(in.getCount(61));
+    std::vector<Cell> cells(in.getCount(65));
     for (Cell& cell : cells) {
         cell.column = in.get<int>();
         cell.row = in.get<int>();
@@ -154,13 +155,15 @@ CellGraph getCells(CompressedReader& in) {
         cell.minY = in.get<double>();
         cell.size = in.get<double>();
         cell.classValue = in.get<std::int32_t>();
+        cell.turnSecondsPer90Degrees = in.get<float>();
         cell.speedMetresPerSecond = in.get<double>();
         cell.passableAreaSquareMetres = in.get<double>();
         cell.freeSubCells = in.get<std::uint8_t>();
         if (cell.span <= 0 || cell.column < 0 || cell.row < 0 ||
             std::int64_t{cell.column} + cell.span > frame.columns ||
             std::int64_t{cell.row} + cell.span > frame.rows || !std::isfinite(cell.minX) ||
-            !std::isfinite(cell.minY) || !(cell.size > 0.0) || !std::isfinite(cell.size))
+            !std::isfinite(cell.minY) || !(cell.size > 0.0) || !std::isfinite(cell.size) ||
+            !(cell.turnSecondsPer90Degrees >= 0.0F) || !std::isfinite(cell.turnSecondsPer90Degrees))
             throw CompressedReader::DamagedData("a cell with no place on the grid");
     }
     std::vector<int> offsets = in.getAll<int>();
@@ -198,16 +201,16 @@ std::uint8_t waypointTag(const Waypoint& waypoint, const CellGraph& graph) {
     return tag;
 }
 
-bool timesFollow(const std::vector<Waypoint>& waypoints) {
+bool timesFollow(const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
     std::vector<Waypoint> measured = waypoints;
-    fillCumulativeSeconds(measured);
+    fillCumulativeSeconds(measured, graph);
     return std::equal(
         waypoints.begin(), waypoints.end(), measured.begin(),
         [](const Waypoint& a, const Waypoint& b) { return a.cumulativeSeconds == b.cumulativeSeconds; });
 }
 
 void putWaypoints(CompressedWriter& out, const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
-    const bool derivedTimes = timesFollow(waypoints);
+    const bool derivedTimes = timesFollow(waypoints, graph);
     out.put(static_cast<std::uint8_t>(derivedTimes));
     out.put(static_cast<std::uint64_t>(waypoints.size()));
     for (const Waypoint& waypoint : waypoints) {
@@ -260,7 +263,7 @@ std::vector<Waypoint> getWaypoints(CompressedReader& in, const CellGraph& graph)
             waypoint.cumulativeSeconds = in.get<double>();
     }
     if (derivedTimes)
-        fillCumulativeSeconds(waypoints);
+        fillCumulativeSeconds(waypoints, graph);
     return waypoints;
 }
 
@@ -270,6 +273,7 @@ void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths, con
         out.put(path.robot);
         out.put(path.lengthMetres);
         out.put(path.timeSeconds);
+        out.put(path.turnSeconds);
         out.put(path.turns);
         out.put(path.repeatedSubCellVisits);
         out.put(static_cast<std::uint8_t>(path.closed));
@@ -278,11 +282,12 @@ void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths, con
 }
 
 std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph) {
-    std::vector<CoveragePath> paths(in.getCount(38));
+    std::vector<CoveragePath> paths(in.getCount(46));
     for (CoveragePath& path : paths) {
         path.robot = in.get<int>();
         path.lengthMetres = in.get<double>();
         path.timeSeconds = in.get<double>();
+        path.turnSeconds = in.get<double>();
         path.turns = in.get<int>();
         path.repeatedSubCellVisits = in.get<int>();
         path.closed = in.get<std::uint8_t>() != 0;
@@ -301,6 +306,7 @@ void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
         out.put(robot.areaSquareMetres);
         out.put(robot.lengthMetres);
         out.put(robot.timeSeconds);
+        out.put(robot.turnSeconds);
         out.put(robot.costSeconds);
         out.put(robot.turns);
     }
@@ -318,13 +324,14 @@ void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
 
 PlanMetrics getMetrics(CompressedReader& in) {
     PlanMetrics metrics;
-    metrics.robots.resize(in.getCount(44));
+    metrics.robots.resize(in.getCount(52));
     for (RobotMetrics& robot : metrics.robots) {
         robot.robot = in.get<int>();
         robot.cells = in.get<int>();
         robot.areaSquareMetres = in.get<double>();
         robot.lengthMetres = in.get<double>();
         robot.timeSeconds = in.get<double>();
+        robot.turnSeconds = in.get<double>();
         robot.costSeconds = in.get<double>();
         robot.turns = in.get<int>();
     }

@@ -1,3 +1,5 @@
+#include "core/parameters/ParameterResolution.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
@@ -13,8 +15,14 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     JsonValue root = JsonValue::object();
     root.add("planner", context.plan.planner);
     JsonValue& parameters = root.add("parameters", JsonValue::object());
-    for (const auto& [key, value] : context.plan.parameters.all())
-        std::visit([&, name = key](const auto& held) { parameters.add(name, held); }, value);
+    const auto planner = findPlannerDescription(context.plan.planner);
+    for (const auto& [key, value] : context.plan.parameters.all()) {
+        const ParameterSpec* spec = planner ? findParameter(planner->parameters, key) : nullptr;
+        if (spec != nullptr && spec->isAutomatic(value))
+            parameters.add(key, spec->automatic);
+        else
+            std::visit([&, name = key](const auto& held) { parameters.add(name, held); }, value);
+    }
     JsonValue& robots = root.add("robots", JsonValue::array());
     for (const RobotMetrics& robot : metrics.robots) {
         JsonValue& item = robots.push(JsonValue::object());
@@ -25,6 +33,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("length_m", robot.lengthMetres);
         item.add("time_s", robot.timeSeconds);
         item.add("turns", robot.turns);
+        item.add("turn_time_s", robot.turnSeconds);
         item.add("cost_s", robot.costSeconds);
         const VehicleSettings& vehicle = context.vehicle(robot.robot);
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
@@ -64,7 +73,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
 }
 
 Status writeReportCsv(const ExportContext& context, const std::string& path) {
-    std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts\n";
+    std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,turn_time_s,cost_s,mission_items,mission_parts\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
         text += std::to_string(robotNumber(robot.robot)) + "," +
@@ -72,7 +81,7 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
                 "," + internal::formatShortest(robot.areaSquareMetres) + "," +
                 internal::formatShortest(robot.lengthMetres) + "," +
                 internal::formatShortest(robot.timeSeconds) + "," + std::to_string(robot.turns) + "," +
-                internal::formatShortest(robot.costSeconds) + "," + std::to_string(mission.items) + "," +
+                internal::formatShortest(robot.turnSeconds) + "," + internal::formatShortest(robot.costSeconds) + "," + std::to_string(mission.items) + "," +
                 std::to_string(mission.parts.size()) + "\n";
     }
     return internal::writeFileAtomically(path, text);

@@ -123,7 +123,9 @@ QWidget* PlannerSettingsPanel::makeEditor(const ParameterSpec& spec) {
         const int decimals = decimalsFor(spec);
         const double smallest = std::pow(10.0, -decimals);
         spin->setDecimals(decimals);
-        spin->setRange(std::isfinite(spec.minimum) ? spec.minimum : -1e9,
+        // An automatic value sits one step below the range, where the box shows its word instead.
+        const double lowest = std::isfinite(spec.minimum) ? spec.minimum : -1e9;
+        spin->setRange(spec.automatic.empty() ? lowest : lowest - smallest,
                        std::isfinite(spec.maximum)
                            ? (spec.maximumIncluded ? spec.maximum : spec.maximum - smallest)
                            : 1e9);
@@ -132,8 +134,12 @@ QWidget* PlannerSettingsPanel::makeEditor(const ParameterSpec& spec) {
                                                    : 1.0));
         if (!spec.unit.empty())
             spin->setSuffix(QStringLiteral(" ") + QString::fromStdString(spec.unit));
-        connect(spin, &QDoubleSpinBox::valueChanged, this,
-                [this, spec](double value) { parameterEdited(spec, value); });
+        if (!spec.automatic.empty())
+            spin->setSpecialValueText(QString::fromStdString(spec.automatic));
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, spec, spin](double value) {
+            const bool automatic = !spec.automatic.empty() && value == spin->minimum();
+            parameterEdited(spec, automatic ? automaticParameterValue : value);
+        });
         editor = spin;
         break;
     }
@@ -163,8 +169,9 @@ void PlannerSettingsPanel::showValues() {
         else if (auto* spin = qobject_cast<QSpinBox*>(editor))
             spin->setValue(std::get<int>(value));
         else if (auto* real = qobject_cast<QDoubleSpinBox*>(editor))
-            real->setValue(std::holds_alternative<int>(value) ? std::get<int>(value)
-                                                              : std::get<double>(value));
+            real->setValue(spec.isAutomatic(value) ? real->minimum()
+                           : std::holds_alternative<int>(value) ? std::get<int>(value)
+                                                                : std::get<double>(value));
         else if (auto* combo = qobject_cast<QComboBox*>(editor))
             combo->setCurrentText(QString::fromStdString(std::get<std::string>(value)));
     }

@@ -72,19 +72,46 @@ double segmentLength(const Waypoint& from, const Waypoint& to) {
     return std::sqrt(dx * dx + dy * dy);
 }
 
+// Seconds per 90 degrees of turn at a waypoint: its cell's.
+double turnPrice(const Waypoint& waypoint, const CellGraph& graph) {
+    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size())
+        return 0.0;
+    return graph.cell(waypoint.cell).turnSecondsPer90Degrees;
+}
+
 } // namespace
 
-double fillCumulativeSeconds(std::vector<Waypoint>& waypoints) {
-    double time = 0.0;
+PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph) {
+    constexpr double quarterTurn = 1.5707963267948966;
+    PathSeconds seconds;
     if (!waypoints.empty())
         waypoints.front().cumulativeSeconds = 0.0;
+    bool haveDirection = false;
+    double directionX = 0.0;
+    double directionY = 0.0;
     for (std::size_t i = 1; i < waypoints.size(); ++i) {
         const Waypoint& from = waypoints[i - 1];
         Waypoint& to = waypoints[i];
-        time += travelSeconds(segmentLength(from, to), from.speedMetresPerSecond, to.speedMetresPerSecond);
-        to.cumulativeSeconds = time;
+        const double length = segmentLength(from, to);
+        if (length > 0.0) {
+            const double x = (to.x - from.x) / length;
+            const double y = (to.y - from.y) / length;
+            const double price = turnPrice(from, graph);
+            if (haveDirection && price > 0.0) {
+                const double angle =
+                    std::abs(std::atan2(directionX * y - directionY * x, directionX * x + directionY * y));
+                const double turn = angle / quarterTurn * price;
+                seconds.turning += turn;
+                seconds.total += turn;
+            }
+            haveDirection = true;
+            directionX = x;
+            directionY = y;
+        }
+        seconds.total += travelSeconds(length, from.speedMetresPerSecond, to.speedMetresPerSecond);
+        to.cumulativeSeconds = seconds.total;
     }
-    return time;
+    return seconds;
 }
 
 void measurePath(CoveragePath& path, const CellGraph& graph) {
@@ -92,7 +119,9 @@ void measurePath(CoveragePath& path, const CellGraph& graph) {
     for (std::size_t i = 1; i < path.waypoints.size(); ++i)
         length += segmentLength(path.waypoints[i - 1], path.waypoints[i]);
     path.lengthMetres = length;
-    path.timeSeconds = fillCumulativeSeconds(path.waypoints);
+    const PathSeconds seconds = fillCumulativeSeconds(path.waypoints, graph);
+    path.timeSeconds = seconds.total;
+    path.turnSeconds = seconds.turning;
     path.turns = countTurns(path.waypoints);
     path.repeatedSubCellVisits = countRepeatedSubCellVisits(path, graph);
 }

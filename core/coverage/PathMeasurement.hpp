@@ -19,9 +19,16 @@ namespace mcpp {
 // sub-cell it began in. Points that are no sub-cell centre (a start point, say) are not visits.
 [[nodiscard]] int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph);
 
-// Sets each waypoint's cumulativeSeconds from the path before it (travelSeconds per segment) and returns
-// the whole time. measurePath and the plan-file reader use it, so times read back are the ones planned.
-double fillCumulativeSeconds(std::vector<Waypoint>& waypoints);
+struct PathSeconds {
+    double total = 0.0;
+    double turning = 0.0; // the part of it spent on turns
+};
+
+// Sets each waypoint's cumulativeSeconds from the path before it and returns the whole time: travelSeconds
+// per segment and, before leaving a point, the turn made there, at its cell's price per 90 degrees in
+// proportion to the angle (none at a point in no cell). measurePath and the plan-file reader use it, so
+// times read back are the ones planned.
+PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph);
 
 // Fills length, time, cumulative times, turns and repeated visits from the waypoints. Each segment is
 // travelled half at the speed of the waypoint it leaves and half at the speed of the one it reaches.

@@ -26,6 +26,7 @@ struct Cell {
     double minY = 0.0;
     double size = 0.0;                       // side in metres
     std::int32_t classValue = 0;             // majority passable land cover
+    float turnSecondsPer90Degrees = 0.0F;    // what a turn costs here (CellGraph::applyTurnTime)
     double speedMetresPerSecond = 0.0;       // harmonic mean over its passable pixels
     double passableAreaSquareMetres = 0.0;   // passable pixels inside its free sub-cells
     std::uint8_t freeSubCells = allSubCells; // bit i: sub-cell i (SubCell order) may be entered
@@ -61,10 +62,17 @@ struct Cell {
             return east ? SubCell::NorthEast : SubCell::NorthWest;
         return east ? SubCell::SouthEast : SubCell::SouthWest;
     }
-    // Seconds to cover it (spec 4): a coverage walk passes each free sub-cell once, a quarter of 2 x size.
-    [[nodiscard]] double coverSeconds() const {
+    // Seconds of travel to cover it (spec 4): a coverage walk passes each free sub-cell once, a quarter of
+    // 2 x size. No walk covers the cell in less.
+    [[nodiscard]] double travelSeconds() const {
         return 2.0 * size * (freeSubCellCount() / 4.0) / speedMetresPerSecond;
     }
+    // Seconds to cover it, turns included at the rate coverage walks make them: the allocation's cost.
+    [[nodiscard]] double coverSeconds() const {
+        return travelSeconds() + expectedTurnsPerSubCell * freeSubCellCount() * turnSecondsPer90Degrees;
+    }
+    // Turns a coverage walk makes per sub-cell, on average over the uniform benchmark grids' plans.
+    static constexpr double expectedTurnsPerSubCell = 0.5;
 };
 
 } // namespace mcpp

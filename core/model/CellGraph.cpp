@@ -44,4 +44,9 @@ int CellGraph::cellAt(MapPoint point) const {
     return -1;
 }
 
+void CellGraph::applyTurnTime(const TurnTimeModel& model) {
+    for (Cell& cell : cells_)
+        cell.turnSecondsPer90Degrees = static_cast<float>(model.secondsPer90Degrees(cell.speedMetresPerSecond));
+}
+
 } // namespace mcpp

@@ -4,6 +4,7 @@
 #include "core/model/GridFrame.hpp"
 #include "core/model/NeighbourTopology.hpp"
 #include "core/model/RoundedFieldOfView.hpp"
+#include "core/model/TurnTimeModel.hpp"
 
 #include <cstdint>
 #include <span>
@@ -30,6 +31,8 @@ class CellGraph {
     [[nodiscard]] const NeighbourTopology& adjacency() const { return adjacency_; }
     // The cell holding the point, or -1 where there is none (obstacle, outside, beyond the grid).
     [[nodiscard]] int cellAt(MapPoint point) const;
+    // Gives every cell the time a turn costs there, so its cost counts turns. Decompositions leave it 0.
+    void applyTurnTime(const TurnTimeModel& model);
 
     // What the decomposition found out about the map, for reports.
     std::vector<RoundedFieldOfView> fieldsOfView;

@@ -22,6 +22,7 @@ struct CoveragePath {
     std::vector<Waypoint> waypoints; // the first is the robot's start point
     double lengthMetres = 0.0;
     double timeSeconds = 0.0;
+    double turnSeconds = 0.0; // the part of timeSeconds lost to turns
     int turns = 0;
     int repeatedSubCellVisits = 0; // sub-cell centres passed again (not counting a closed tour's return)
     bool closed = true;

@@ -12,6 +12,7 @@ struct RobotMetrics {
     double areaSquareMetres = 0.0;
     double lengthMetres = 0.0;
     double timeSeconds = 0.0;
+    double turnSeconds = 0.0; // the part of timeSeconds lost to turns
     double costSeconds = 0.0; // allocation cost of its region
     int turns = 0;
 };
@@ -28,8 +29,9 @@ struct ConfinedRobot {
 struct PlanMetrics {
     std::vector<RobotMetrics> robots;
     double makespanSeconds = 0.0;
-    // No plan can finish sooner: the largest, over the map's connected parts holding starts, of the part's
-    // cell costs divided by the robots starting in it.
+    // No plan making these turns can finish sooner: the largest, over the map's connected parts holding
+    // starts, of the part's cells' travel time and its robots' turn time, divided by the robots starting
+    // in it. The ratio to it measures balance of real time; turns are counted apart.
     double lowerBoundSeconds = 0.0;
     std::vector<ConfinedRobot> confinedRobots; // robots outside the largest such part
     double ratio = 0.0;                        // makespan / lower bound

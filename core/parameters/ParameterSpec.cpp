@@ -41,7 +41,8 @@ std::string ParameterSpec::expected() const {
     case ParameterType::Real:
         break;
     }
-    const std::string kind = type == ParameterType::Integer ? "a whole number" : "a number";
+    const std::string kind = (automatic.empty() ? "" : automatic + " or ") +
+                             (type == ParameterType::Integer ? "a whole number" : "a number");
     const bool bounded = std::isfinite(maximum);
     if (!std::isfinite(minimum))
         return bounded ? kind + " up to " + number(maximum) : kind;
@@ -51,7 +52,18 @@ std::string ParameterSpec::expected() const {
            number(maximum);
 }
 
+bool ParameterSpec::isAutomatic(const ParameterValue& value) const {
+    if (automatic.empty() || type != ParameterType::Real)
+        return false;
+    const auto* real = std::get_if<double>(&value);
+    const auto* whole = std::get_if<int>(&value);
+    return (real != nullptr && *real == automaticParameterValue) ||
+           (whole != nullptr && *whole == static_cast<int>(automaticParameterValue));
+}
+
 std::optional<std::string> ParameterSpec::problemWith(const ParameterValue& value) const {
+    if (isAutomatic(value))
+        return std::nullopt;
     const auto wrong = [&] { return "expected " + expected(); };
     switch (type) {
     case ParameterType::Boolean:
@@ -104,7 +116,9 @@ std::optional<ParameterValue> ParameterSpec::parse(std::string_view text, std::s
         break;
     }
     case ParameterType::Real:
-        if (const auto real = parseFiniteNumber(word))
+        if (!automatic.empty() && lowered(word) == lowered(automatic))
+            value = automaticParameterValue;
+        else if (const auto real = parseFiniteNumber(word))
             value = *real;
         break;
     }
@@ -120,6 +134,8 @@ std::optional<ParameterValue> ParameterSpec::parse(std::string_view text, std::s
 }
 
 std::string ParameterSpec::format(const ParameterValue& value) const {
+    if (isAutomatic(value))
+        return automatic;
     if (const auto* flag = std::get_if<bool>(&value))
         return *flag ? "true" : "false";
     if (const auto* whole = std::get_if<int>(&value))

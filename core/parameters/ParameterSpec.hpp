@@ -12,6 +12,9 @@ namespace mcpp {
 
 enum class ParameterType { Boolean, Integer, Real, Choice };
 
+// The value a Real parameter with an `automatic` word holds when the planner is to work it out itself.
+inline constexpr double automaticParameterValue = -1.0;
+
 // One parameter as a planner (or one of its stages) declares it. The command line, mission files, the
 // settings panel and validation are all derived from this declaration.
 struct ParameterSpec {
@@ -25,6 +28,9 @@ struct ParameterSpec {
     std::vector<std::string> choices;
     std::string unit; // "m", "s", "%"... or empty
     std::string help; // one sentence
+    // For a Real: the word ("auto") that stands for automaticParameterValue, a value the planner works out
+    // itself; typed, saved and shown as the word. Empty: the parameter always holds a number in range.
+    std::string automatic;
 
     // Why the value does not fit the declaration (wrong type, out of range, unknown word), or nothing.
     [[nodiscard]] std::optional<std::string> problemWith(const ParameterValue& value) const;
@@ -33,6 +39,8 @@ struct ParameterSpec {
     [[nodiscard]] std::optional<ParameterValue> parse(std::string_view text, std::string* error) const;
     // The value as parse() reads it back.
     [[nodiscard]] std::string format(const ParameterValue& value) const;
+    // Whether the value is the automatic one of a parameter that has it.
+    [[nodiscard]] bool isAutomatic(const ParameterValue& value) const;
     // "a number from 0 up to (not including) 1", "true or false", "one of: a, b", for messages and help.
     [[nodiscard]] std::string expected() const;
 };

@@ -5,7 +5,9 @@ namespace mcpp {
 CellGraph gridStage(PlanningRun& run, GridCellRule rule) {
     return run.stage("grid", [&] {
         const UniformGridDecomposition grid(DecompositionOptions::from(run.parameters()), rule);
-        return grid.decompose(run.problem().grid, run.problem().classes, run.progress());
+        CellGraph cells = grid.decompose(run.problem().grid, run.problem().classes, run.progress());
+        cells.applyTurnTime(TurnTimeModel::from(run.parameters()));
+        return cells;
     });
 }
 

@@ -34,7 +34,9 @@ void MlctPlanner::run(PlanningRun& run) const {
         });
         return run.stage("topology", [&] {
             progress.report("topology", 0.0);
-            return cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
+            CellGraph cells = cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
+            cells.applyTurnTime(TurnTimeModel::from(parameters));
+            return cells;
         });
     }();
     const std::vector<int> startCells = run.locateStarts();

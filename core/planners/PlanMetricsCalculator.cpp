@@ -9,7 +9,7 @@ namespace mcpp {
 namespace {
 
 struct PartFigures {
-    double costSeconds = 0.0;
+    double secondsNoPlanBeats = 0.0; // its cells' travel time and its robots' turn time
     double areaSquareMetres = 0.0;
 };
 
@@ -20,9 +20,12 @@ PartFigures figuresOf(const Plan& plan, const StartComponent& part) {
         if (index >= plan.regions.robotOfCell.size() || plan.regions.robotOfCell[index] < 0)
             continue;
         const Cell& cell = plan.cells.cell(id);
-        figures.costSeconds += cell.coverSeconds();
+        figures.secondsNoPlanBeats += cell.travelSeconds();
         figures.areaSquareMetres += cell.passableAreaSquareMetres;
     }
+    for (const int robot : part.robots)
+        if (static_cast<std::size_t>(robot) < plan.paths.size())
+            figures.secondsNoPlanBeats += plan.paths[static_cast<std::size_t>(robot)].turnSeconds;
     return figures;
 }
 
@@ -46,7 +49,8 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan) {
         if (figures.back().areaSquareMetres > figures[largest].areaSquareMetres)
             largest = figures.size() - 1;
         metrics.lowerBoundSeconds = std::max(
-            metrics.lowerBoundSeconds, figures.back().costSeconds / static_cast<double>(part.robots.size()));
+            metrics.lowerBoundSeconds,
+            figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
     }
     for (std::size_t part = 0; part < parts.size(); ++part) {
         if (part == largest)
@@ -63,7 +67,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     const std::size_t robots = plan.regions.startCell.size();
     metrics.robots.assign(robots, {});
     plan.regions.costSeconds.assign(robots, 0.0);
-    double totalCost = 0.0;
+    double secondsNoPlanBeats = 0.0; // travel over every covered cell, and the turns the paths make
     double covered = 0.0;
     double unreachable = 0.0;
     std::size_t subCells = 0;
@@ -79,7 +83,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         robotMetrics.areaSquareMetres += cell.size * cell.size * cell.freeSubCellCount() / 4.0;
         robotMetrics.costSeconds += cell.coverSeconds();
         plan.regions.costSeconds[static_cast<std::size_t>(robot)] += cell.coverSeconds();
-        totalCost += cell.coverSeconds();
+        secondsNoPlanBeats += cell.travelSeconds();
         covered += cell.passableAreaSquareMetres;
         subCells += static_cast<std::size_t>(cell.freeSubCellCount());
     }
@@ -92,12 +96,14 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
             const CoveragePath& path = plan.paths[robot];
             robotMetrics.lengthMetres = path.lengthMetres;
             robotMetrics.timeSeconds = path.timeSeconds;
+            robotMetrics.turnSeconds = path.turnSeconds;
+            secondsNoPlanBeats += path.turnSeconds;
             robotMetrics.turns = path.turns;
             repeats += static_cast<std::size_t>(path.repeatedSubCellVisits);
         }
         metrics.makespanSeconds = std::max(metrics.makespanSeconds, robotMetrics.timeSeconds);
     }
-    metrics.lowerBoundSeconds = robots == 0 ? 0.0 : totalCost / static_cast<double>(robots);
+    metrics.lowerBoundSeconds = robots == 0 ? 0.0 : secondsNoPlanBeats / static_cast<double>(robots);
     boundByConnectedParts(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;

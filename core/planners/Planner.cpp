@@ -4,6 +4,7 @@
 #include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/StartPointCheck.hpp"
+#include "core/model/TurnTimeModel.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -66,6 +67,8 @@ ParameterSpec Planner::snapStartsParameter() {
 
 PlannerDescription Planner::description() const {
     PlannerDescription own = describe();
+    own.parameters.push_back(TurnTimeModel::turnSecondsParameter());
+    own.parameters.push_back(TurnTimeModel::accelerationParameter());
     own.parameters.push_back(snapStartsParameter());
     return own;
 }

@@ -57,6 +57,9 @@ class PlannerInvariantsTest : public QObject {
         problem.planner = defaultPlannerChoice(description.name);
         if (problem.planner.parameters.has("closed_tour"))
             problem.planner.parameters.set("closed_tour", seed % 5 != 0);
+        // Turns free, at a fixed price, or priced from the speed.
+        if (seed % 3 == 1)
+            problem.planner.parameters.set("turn_s", seed % 2 == 0 ? 0.0 : 2.5);
         if (problem.planner.parameters.has("balanced"))
             problem.planner.parameters.set("balanced", seed % 2 == 0);
         Plan plan;

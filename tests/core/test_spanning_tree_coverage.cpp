@@ -73,8 +73,10 @@ class SpanningTreeCoverageTest : public QObject {
         const CoveragePath& path = plan.paths.front();
         QCOMPARE(path.waypoints.size(), std::size_t{5});
         QCOMPARE(path.lengthMetres, 20.0);
-        QCOMPARE(path.timeSeconds, 20.0);
         QCOMPARE(path.turns, 3);
+        // 20 m at 1 m/s, and three quarter turns at the automatic 1 s each (1 m/s over 1 m/s2).
+        QCOMPARE(path.turnSeconds, 3.0);
+        QCOMPARE(path.timeSeconds, 23.0);
     }
 
     // On a uniform grid a closed STC tour steps FOV metres between sub-cells, 4 per cell.

@@ -34,6 +34,10 @@ std::vector<MissionMutation> missionVersion2Mutations() {
          "planner.parameters.purity_tolerance"},
         {"v2 parameter integer", R"("rebalance_iterations": 10)", R"("rebalance_iterations": -3)",
          "planner.parameters.rebalance_iterations"},
+        {"v2 turn time negative", R"("closed_tour": false)", R"("closed_tour": false, "turn_s": -3)",
+         "planner.parameters.turn_s"},
+        {"v2 turn time word", R"("closed_tour": false)", R"("closed_tour": false, "turn_s": "fast")",
+         "planner.parameters.turn_s"},
         {"v2 flat parameter", R"("name": "mcpp-mlct", )", R"("name": "mcpp-mlct", "closed_tour": true, )",
          "planner.closed_tour"},
     };

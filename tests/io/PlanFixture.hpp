@@ -92,8 +92,8 @@ inline Plan makeFixturePlan(double originX = 301900.0, double originY = 4154080.
     plan.paths = {first, second};
 
     PlanMetrics& metrics = plan.metrics;
-    metrics.robots = {RobotMetrics{0, 2, 200.0, 40.0, 80.0, 80.0, 3},
-                      RobotMetrics{1, 1, 400.0, 40.0, 33.33, 53.3, 4}};
+    metrics.robots = {RobotMetrics{0, 2, 200.0, 40.0, 80.0, 0.0, 80.0, 3},
+                      RobotMetrics{1, 1, 400.0, 40.0, 33.33, 0.0, 53.3, 4}};
     metrics.makespanSeconds = 80.0;
     metrics.lowerBoundSeconds = 66.65;
     metrics.ratio = 80.0 / 66.65;

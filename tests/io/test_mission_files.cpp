@@ -48,6 +48,7 @@ Mission sampleMission() {
     mission.planner.parameters.set("closed_tour", false);
     mission.planner.parameters.set("rebalance_iterations", 250);
     mission.planner.parameters.set("snap_starts_to_free_cells", true);
+    mission.planner.parameters.set("turn_s", 2.5);
     mission.exports.vehicle.altitudeMetres = 12.5;
     mission.exports.vehicle.cruiseSpeedMetresPerSecond = 1.2;
     mission.exports.mergeCollinear = false;
@@ -110,6 +111,7 @@ class MissionFilesTest : public QObject {
         QCOMPARE(parameters["purity_tolerance"].toDouble(), 0.05);
         QCOMPARE(parameters["rebalance_iterations"].toInt(), 250);
         QCOMPARE(parameters["closed_tour"].toBool(), false);
+        QCOMPARE(parameters["turn_s"].toDouble(), 2.5);
         // Shortest round-trip numbers, not fixed decimals.
         QVERIFY(text.find("0.30000000000000004") != std::string::npos);
         QVERIFY(text.find("\"altitude_m\": 12.5") != std::string::npos);
@@ -159,6 +161,9 @@ class MissionFilesTest : public QObject {
         QVERIFY(reloaded.ok());
         compareMissions(reloaded.value(), mission);
         QCOMPARE(missionToJson(reloaded.value()), readBytes(full));
+        // The automatic turn time is saved as its word and read back as automatic.
+        QVERIFY(readBytes(full).find("\"turn_s\": \"auto\"") != std::string::npos);
+        QVERIFY(TurnTimeModel::from(reloaded.value().planner.parameters).fixedSecondsPer90Degrees < 0.0);
     }
 
     void rasterPathIsRelativeToTheMissionFile() {

@@ -1,0 +1,203 @@
+// What turns cost: the turn time model, path times with turns on hand-made paths, the parameter that sets
+// it, and plans whose costs, times and bounds count turns (or, at 0, do not).
+#include "core/coverage/PathMeasurement.hpp"
+#include "core/parameters/ParameterResolution.hpp"
+#include "core/planners/MlctPlanner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+
+using namespace mcpp;
+
+Q_DECLARE_METATYPE(std::vector<mcpp::Waypoint>)
+
+namespace {
+
+// One 100 m cell whose turns cost `turnSeconds` per 90 degrees.
+CellGraph oneCell(double turnSeconds) {
+    GridFrame frame;
+    frame.originX = 0.0;
+    frame.originY = 100.0;
+    frame.bottomCellSize = 100.0;
+    frame.columns = 1;
+    frame.rows = 1;
+    Cell cell;
+    cell.size = 100.0;
+    cell.speedMetresPerSecond = 2.0;
+    cell.turnSecondsPer90Degrees = static_cast<float>(turnSeconds);
+    return CellGraph(frame, {cell}, NeighbourTopology({0, 0}, {}));
+}
+
+// A path through the cell at 2 m/s, or in no cell where `inCell` is false.
+std::vector<Waypoint> pathOf(std::initializer_list<MapPoint> points, bool inCell = true) {
+    std::vector<Waypoint> waypoints;
+    for (const MapPoint point : points)
+        waypoints.push_back({point.x, point.y, inCell ? 0 : -1, 1, 2.0, 0.0});
+    return waypoints;
+}
+
+Plan planned(PlanningProblem problem, const ParameterValue& turnSeconds) {
+    problem.planner = defaultPlannerChoice(MlctPlanner::plannerName);
+    problem.planner.parameters.set("turn_s", turnSeconds);
+    return makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+}
+
+} // namespace
+
+class TurnTimeTest : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void automaticTurnTimeIsSpeedOverAcceleration() {
+        TurnTimeModel model;
+        QCOMPARE(model.secondsPer90Degrees(3.0), 3.0); // 1 m/s2 by default
+        model.accelerationMetresPerSecondSquared = 2.5;
+        QCOMPARE(model.secondsPer90Degrees(15.0), 6.0);
+        QCOMPARE(model.secondsPer90Degrees(0.0), 0.0);
+        model.fixedSecondsPer90Degrees = 4.0;
+        QCOMPARE(model.secondsPer90Degrees(15.0), 4.0);
+        model.fixedSecondsPer90Degrees = 0.0;
+        QCOMPARE(model.secondsPer90Degrees(15.0), 0.0);
+    }
+
+    // time = length / speed + quarter turns x turn_s, whatever the path's shape.
+    void pathTimeIsTravelPlusTurns_data() {
+        QTest::addColumn<std::vector<Waypoint>>("waypoints");
+        QTest::addColumn<double>("length");
+        QTest::addColumn<double>("quarterTurns");
+        QTest::newRow("square tour") << pathOf({{10, 10}, {30, 10}, {30, 30}, {10, 30}, {10, 10}}) << 80.0
+                                     << 3.0;
+        QTest::newRow("straight with a middle point") << pathOf({{10, 10}, {20, 10}, {40, 10}}) << 30.0 << 0.0;
+        QTest::newRow("U-turn counts two quarters") << pathOf({{10, 10}, {30, 10}, {10, 10}}) << 40.0 << 2.0;
+        QTest::newRow("45-degree bend counts half") << pathOf({{10, 10}, {20, 10}, {30, 20}})
+                                                    << 10.0 + std::hypot(10.0, 10.0) << 0.5;
+        QTest::newRow("repeated point turns once")
+            << pathOf({{10, 10}, {20, 10}, {20, 10}, {20, 30}}) << 30.0 << 1.0;
+        QTest::newRow("boustrophedon") << pathOf({{10, 10}, {50, 10}, {50, 20}, {10, 20}, {10, 30}, {50, 30}})
+                                       << 140.0 << 4.0;
+    }
+    void pathTimeIsTravelPlusTurns() {
+        QFETCH(std::vector<Waypoint>, waypoints);
+        QFETCH(double, length);
+        QFETCH(double, quarterTurns);
+        const double turnSeconds = 2.5;
+        const CellGraph graph = oneCell(turnSeconds);
+        CoveragePath path;
+        path.waypoints = waypoints;
+        path.closed = false;
+        measurePath(path, graph);
+        QCOMPARE(path.lengthMetres, length);
+        QCOMPARE(path.turnSeconds, quarterTurns * turnSeconds);
+        QCOMPARE(path.timeSeconds, length / 2.0 + quarterTurns * turnSeconds);
+        QCOMPARE(path.waypoints.back().cumulativeSeconds, path.timeSeconds);
+        // With free turns the same path takes its travel time only.
+        measurePath(path, oneCell(0.0));
+        QCOMPARE(path.timeSeconds, length / 2.0);
+        QCOMPARE(path.turnSeconds, 0.0);
+    }
+
+    // The turn is paid at the corner: points after it are reached that much later, points before it not.
+    void cumulativeTimesPayTheTurnAtTheCorner() {
+        std::vector<Waypoint> waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}});
+        const PathSeconds seconds = fillCumulativeSeconds(waypoints, oneCell(4.0));
+        QCOMPARE(waypoints[1].cumulativeSeconds, 10.0);
+        QCOMPARE(waypoints[2].cumulativeSeconds, 24.0);
+        QCOMPARE(seconds.total, 24.0);
+        QCOMPARE(seconds.turning, 4.0);
+    }
+
+    void pointsInNoCellTurnForFree() {
+        std::vector<Waypoint> waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}}, false);
+        QCOMPARE(fillCumulativeSeconds(waypoints, oneCell(4.0)).turning, 0.0);
+    }
+
+    void turnSecondsParameterTakesAuto() {
+        const ParameterSpec spec = TurnTimeModel::turnSecondsParameter();
+        QVERIFY(spec.isAutomatic(spec.defaultValue));
+        std::string error;
+        const auto automatic = spec.parse("Auto", &error);
+        QVERIFY(automatic.has_value());
+        QVERIFY(spec.isAutomatic(*automatic));
+        QCOMPARE(spec.format(*automatic), std::string("auto"));
+        const auto fixed = spec.parse("2.5", &error);
+        QVERIFY(fixed.has_value());
+        QCOMPARE(std::get<double>(*fixed), 2.5);
+        QCOMPARE(spec.format(*fixed), std::string("2.5"));
+        QVERIFY(!spec.parse("-0.5", &error).has_value());
+        QCOMPARE(error, std::string("expected auto or a number from 0 to 600, got -0.5"));
+        QVERIFY(!spec.parse("fast", &error).has_value());
+        QVERIFY(spec.problemWith(ParameterValue(-2.0)).has_value());
+        const ParameterValues values = [] {
+            ParameterValues given;
+            given.set("turn_s", 3.0);
+            given.set("turn_acceleration", 2.0);
+            return given;
+        }();
+        QCOMPARE(TurnTimeModel::from(values).secondsPer90Degrees(10.0), 3.0);
+        QVERIFY(TurnTimeModel::from({}).fixedSecondsPer90Degrees < 0.0);
+    }
+
+    // Every planner declares the turn parameters, so the command line, missions and the panel offer them.
+    void everyPlannerDeclaresTheTurnParameters() {
+        for (const PlannerDescription& planner : plannerDescriptions()) {
+            QVERIFY2(findParameter(planner.parameters, "turn_s") != nullptr, planner.name.c_str());
+            QVERIFY2(findParameter(planner.parameters, "turn_acceleration") != nullptr, planner.name.c_str());
+        }
+    }
+
+    // At turn_s 0 a plan is timed as travel alone: cells cost their travel, paths take length / speed and
+    // the bound is the cells' travel over the robots. With a turn time each of them counts turns.
+    void zeroTurnTimeKeepsTravelTimes() {
+        PlanningProblem problem = test::uniformProblem(24, 16, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 2, 2), test::pixelCentre(problem.grid, 20, 13)};
+        const Plan free = planned(problem, 0.0);
+        QVERIFY(test::checkAllInvariants(problem, free).empty());
+        double travel = 0.0;
+        for (const Cell& cell : free.cells.cells()) {
+            QCOMPARE(cell.coverSeconds(), cell.travelSeconds());
+            travel += cell.travelSeconds();
+        }
+        for (const CoveragePath& path : free.paths) {
+            QCOMPARE(path.turnSeconds, 0.0);
+            QVERIFY(path.turns > 0);
+            QCOMPARE(path.timeSeconds, path.lengthMetres / 1.0); // the uniform map's speed is 1 m/s
+        }
+        QCOMPARE(free.metrics.lowerBoundSeconds, travel / 2.0);
+
+        const Plan turning = planned(problem, 3.0);
+        const auto violations = test::checkAllInvariants(problem, turning);
+        QVERIFY2(violations.empty(), test::describe(violations).c_str());
+        double turnSeconds = 0.0;
+        for (const CoveragePath& path : turning.paths) {
+            // Grid paths turn by quarter turns only.
+            QCOMPARE(path.turnSeconds, 3.0 * path.turns);
+            QCOMPARE(path.timeSeconds, path.lengthMetres / 1.0 + 3.0 * path.turns);
+            turnSeconds += path.turnSeconds;
+        }
+        for (const Cell& cell : turning.cells.cells())
+            QCOMPARE(cell.coverSeconds(), cell.travelSeconds() + 0.5 * cell.freeSubCellCount() * 3.0);
+        QCOMPARE(turning.metrics.lowerBoundSeconds, (travel + turnSeconds) / 2.0);
+        QVERIFY(turning.metrics.ratio >= 1.0);
+    }
+
+    // The automatic turn time follows the land cover's speed: a turn on a fast class costs more.
+    void automaticTurnTimeFollowsTheCellsSpeed() {
+        const PlanningProblem problem = test::drawnProblem(
+            {"........mmmmmmmm", "........mmmmmmmm", "........mmmmmmmm", "........mmmmmmmm"}, {{0.5, 0.5}});
+        const Plan plan = planned(problem, automaticParameterValue);
+        bool sawGrass = false;
+        bool sawMud = false;
+        for (const Cell& cell : plan.cells.cells()) {
+            QCOMPARE(double(cell.turnSecondsPer90Degrees), cell.speedMetresPerSecond / 1.0);
+            sawGrass = sawGrass || cell.speedMetresPerSecond == 1.0;
+            sawMud = sawMud || cell.speedMetresPerSecond == 0.5;
+        }
+        QVERIFY(sawGrass && sawMud);
+        QVERIFY(test::checkAllInvariants(problem, plan).empty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TurnTimeTest)
+#include "test_turn_time.moc"
