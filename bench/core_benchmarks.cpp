@@ -1,5 +1,7 @@
 // Benchmarks of the MCPP-MLCT pipeline. Run: build/release/bench/mcpp_core_benchmarks
-// Counters: ratio = makespan / lower bound, cells = active cells, peak_rss_mb = process peak memory so far.
+// Counters: ratio = makespan / lower bound, makespan_s, turn_time_s = time all robots lose turning (turn_s
+// auto by default: speed / 1 m/s2, here 1 s per 90 degrees), cells = active cells, peak_rss_mb = process
+// peak memory so far. The *_free_turns cases plan with turn_s 0, as before turns were timed.
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -58,10 +60,15 @@ void runPlanner(benchmark::State& state, PlanningProblem problem,
         benchmark::ClobberMemory();
     }
     int turns = 0;
-    for (const auto& path : plan.paths)
+    double turnSeconds = 0.0;
+    for (const auto& path : plan.paths) {
         turns += path.turns;
+        turnSeconds += path.turnSeconds;
+    }
     state.counters["ratio"] = plan.metrics.ratio;
     state.counters["turns"] = turns;
+    state.counters["makespan_s"] = plan.metrics.makespanSeconds;
+    state.counters["turn_time_s"] = turnSeconds;
     state.counters["cells"] = static_cast<double>(plan.cells.size());
     state.counters["peak_rss_mb"] = peakResidentMegabytes();
     for (const auto& [stage, milliseconds] : plan.metrics.stageMilliseconds)
@@ -72,6 +79,22 @@ void uniformGrid(benchmark::State& state, const std::string& planner) {
     runPlanner(state,
                uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
                planner);
+}
+
+// Turns free (turn_s 0): the times and ratios of plans before turns were timed.
+void uniformGridFreeTurns(benchmark::State& state, const std::string& planner) {
+    ParameterValues freeTurns;
+    freeTurns.set("turn_s", 0.0);
+    runPlanner(state,
+               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+               planner, freeTurns);
+}
+
+void multiCoverMapFreeTurns(benchmark::State& state) {
+    ParameterValues freeTurns;
+    freeTurns.set("turn_s", 0.0);
+    runPlanner(state, multiCover(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 7),
+               "mcpp-mlct", freeTurns);
 }
 
 // MSTC with balanced pieces (its `balanced` parameter).
@@ -93,6 +116,9 @@ void multiCoverMap(benchmark::State& state) {
 BENCHMARK_CAPTURE(uniformGrid, mcpp_mlct, std::string("mcpp-mlct"))
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(uniformGridFreeTurns, mcpp_mlct_free_turns, std::string("mcpp-mlct"))
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(uniformGrid, darp, std::string("darp"))
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
@@ -112,6 +138,7 @@ BENCHMARK_CAPTURE(uniformGrid, full_spiral_stc, std::string("full-spiral-stc"))
     ->ArgsProduct({{49, 100, 200}, {1}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(multiCoverMap)->ArgsProduct({{128}, {2, 4, 8, 16, 32}})->Unit(benchmark::kMillisecond);
+BENCHMARK(multiCoverMapFreeTurns)->ArgsProduct({{128}, {2, 4, 8, 16, 32}})->Unit(benchmark::kMillisecond);
 BENCHMARK(multiCoverMap)->ArgsProduct({{256, 512, 1024}, {16}})->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();

@@ -169,7 +169,7 @@ void PlannerSettingsPanel::showValues() {
         else if (auto* spin = qobject_cast<QSpinBox*>(editor))
             spin->setValue(std::get<int>(value));
         else if (auto* real = qobject_cast<QDoubleSpinBox*>(editor))
-            real->setValue(spec.isAutomatic(value) ? real->minimum()
+            real->setValue(spec.isAutomatic(value)              ? real->minimum()
                            : std::holds_alternative<int>(value) ? std::get<int>(value)
                                                                 : std::get<double>(value));
         else if (auto* combo = qobject_cast<QComboBox*>(editor))

@@ -46,7 +46,8 @@ int CellGraph::cellAt(MapPoint point) const {
 
 void CellGraph::applyTurnTime(const TurnTimeModel& model) {
     for (Cell& cell : cells_)
-        cell.turnSecondsPer90Degrees = static_cast<float>(model.secondsPer90Degrees(cell.speedMetresPerSecond));
+        cell.turnSecondsPer90Degrees =
+            static_cast<float>(model.secondsPer90Degrees(cell.speedMetresPerSecond));
 }
 
 } // namespace mcpp

@@ -48,9 +48,9 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan) {
         figures.push_back(figuresOf(plan, part));
         if (figures.back().areaSquareMetres > figures[largest].areaSquareMetres)
             largest = figures.size() - 1;
-        metrics.lowerBoundSeconds = std::max(
-            metrics.lowerBoundSeconds,
-            figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
+        metrics.lowerBoundSeconds =
+            std::max(metrics.lowerBoundSeconds,
+                     figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
     }
     for (std::size_t part = 0; part < parts.size(); ++part) {
         if (part == largest)

@@ -69,14 +69,15 @@ class TurnTimeTest : public QObject {
         QTest::addColumn<double>("quarterTurns");
         QTest::newRow("square tour") << pathOf({{10, 10}, {30, 10}, {30, 30}, {10, 30}, {10, 10}}) << 80.0
                                      << 3.0;
-        QTest::newRow("straight with a middle point") << pathOf({{10, 10}, {20, 10}, {40, 10}}) << 30.0 << 0.0;
+        QTest::newRow("straight with a middle point")
+            << pathOf({{10, 10}, {20, 10}, {40, 10}}) << 30.0 << 0.0;
         QTest::newRow("U-turn counts two quarters") << pathOf({{10, 10}, {30, 10}, {10, 10}}) << 40.0 << 2.0;
-        QTest::newRow("45-degree bend counts half") << pathOf({{10, 10}, {20, 10}, {30, 20}})
-                                                    << 10.0 + std::hypot(10.0, 10.0) << 0.5;
+        QTest::newRow("45-degree bend counts half")
+            << pathOf({{10, 10}, {20, 10}, {30, 20}}) << 10.0 + std::hypot(10.0, 10.0) << 0.5;
         QTest::newRow("repeated point turns once")
             << pathOf({{10, 10}, {20, 10}, {20, 10}, {20, 30}}) << 30.0 << 1.0;
-        QTest::newRow("boustrophedon") << pathOf({{10, 10}, {50, 10}, {50, 20}, {10, 20}, {10, 30}, {50, 30}})
-                                       << 140.0 << 4.0;
+        QTest::newRow("boustrophedon")
+            << pathOf({{10, 10}, {50, 10}, {50, 20}, {10, 20}, {10, 30}, {50, 30}}) << 140.0 << 4.0;
     }
     void pathTimeIsTravelPlusTurns() {
         QFETCH(std::vector<Waypoint>, waypoints);
@@ -177,7 +178,7 @@ class TurnTimeTest : public QObject {
             turnSeconds += path.turnSeconds;
         }
         for (const Cell& cell : turning.cells.cells())
-            QCOMPARE(cell.coverSeconds(), cell.travelSeconds() + 0.5 * cell.freeSubCellCount() * 3.0);
+            QCOMPARE(cell.coverSeconds(), cell.travelSeconds() + 0.2 * cell.freeSubCellCount() * 3.0);
         QCOMPARE(turning.metrics.lowerBoundSeconds, (travel + turnSeconds) / 2.0);
         QVERIFY(turning.metrics.ratio >= 1.0);
     }

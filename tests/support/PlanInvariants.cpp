@@ -409,7 +409,7 @@ std::vector<std::string> checkTimes(const Plan& plan) {
         totalCost += covered.coverSeconds();
         totalTravel += covered.travelSeconds();
         const double turns = covered.coverSeconds() - covered.travelSeconds();
-        const double expected = 0.5 * covered.freeSubCellCount() * covered.turnSecondsPer90Degrees;
+        const double expected = 0.2 * covered.freeSubCellCount() * covered.turnSecondsPer90Degrees;
         if (std::abs(turns - expected) > 1e-9 * std::max(1.0, expected))
             violations.push_back(text("cell " + std::to_string(cell) + " turn cost", turns, expected));
     }
