@@ -104,6 +104,7 @@ void putCells(CompressedWriter& out, const CellGraph& graph) {
         out.put(cell.speedMetresPerSecond);
         out.put(cell.passableAreaSquareMetres);
         out.put(cell.freeSubCells);
+        out.put(cell.expectedTurnsPerSubCell);
     }
     out.putAll(graph.adjacency().offsets());
     out.putAll(graph.adjacency().neighbours());
@@ -145,7 +146,7 @@ CellGraph getCells(CompressedReader& in) {
     if (static_cast<double>(frame.columns) * frame.rows * bytesPerBottomCell >
         static_cast<double>(memoryBudgetBytes()))
         throw CompressedReader::DamagedData("a grid larger than this machine can plan");
-    std::vector<Cell> cells(in.getCount(65));
+    std::vector<Cell> cells(in.getCount(69));
     for (Cell& cell : cells) {
         cell.column = in.get<int>();
         cell.row = in.get<int>();
@@ -159,11 +160,13 @@ CellGraph getCells(CompressedReader& in) {
         cell.speedMetresPerSecond = in.get<double>();
         cell.passableAreaSquareMetres = in.get<double>();
         cell.freeSubCells = in.get<std::uint8_t>();
+        cell.expectedTurnsPerSubCell = in.get<float>();
         if (cell.span <= 0 || cell.column < 0 || cell.row < 0 ||
             std::int64_t{cell.column} + cell.span > frame.columns ||
             std::int64_t{cell.row} + cell.span > frame.rows || !std::isfinite(cell.minX) ||
             !std::isfinite(cell.minY) || !(cell.size > 0.0) || !std::isfinite(cell.size) ||
-            !(cell.turnSecondsPer90Degrees >= 0.0F) || !std::isfinite(cell.turnSecondsPer90Degrees))
+            !(cell.turnSecondsPer90Degrees >= 0.0F) || !std::isfinite(cell.turnSecondsPer90Degrees) ||
+            !(cell.expectedTurnsPerSubCell >= 0.0F) || !std::isfinite(cell.expectedTurnsPerSubCell))
             throw CompressedReader::DamagedData("a cell with no place on the grid");
     }
     std::vector<int> offsets = in.getAll<int>();

@@ -30,6 +30,10 @@ struct Cell {
     double speedMetresPerSecond = 0.0;       // harmonic mean over its passable pixels
     double passableAreaSquareMetres = 0.0;   // passable pixels inside its free sub-cells
     std::uint8_t freeSubCells = allSubCells; // bit i: sub-cell i (SubCell order) may be entered
+    // Turns a coverage walk makes here per sub-cell, for the cost: 0.2 on the uniform benchmark grids with
+    // 15 % obstacles (26 965 turns over 135 000 sub-cells, 200 x 200 with 4 robots); a planner may measure
+    // it on a first plan (calibrateTurnRates).
+    float expectedTurnsPerSubCell = 0.2F;
 
     [[nodiscard]] double maxX() const { return minX + size; }
     [[nodiscard]] double maxY() const { return minY + size; }
@@ -69,12 +73,9 @@ struct Cell {
     }
     // Seconds to cover it, turns included at the rate coverage walks make them: the allocation's cost.
     [[nodiscard]] double coverSeconds() const {
-        return travelSeconds() + expectedTurnsPerSubCell * freeSubCellCount() * turnSecondsPer90Degrees;
+        return travelSeconds() +
+               double(expectedTurnsPerSubCell) * freeSubCellCount() * double(turnSecondsPer90Degrees);
     }
-    // Turns a coverage walk makes per sub-cell: 0.2 on the uniform benchmark grids with 15 % obstacles
-    // (26 965 turns over 135 000 sub-cells, 200 x 200 with 4 robots). Of the rates tried on the Zion
-    // sample (0 to 0.5) it also balances real time best there.
-    static constexpr double expectedTurnsPerSubCell = 0.2;
 };
 
 } // namespace mcpp

@@ -50,4 +50,9 @@ void CellGraph::applyTurnTime(const TurnTimeModel& model) {
             static_cast<float>(model.secondsPer90Degrees(cell.speedMetresPerSecond));
 }
 
+void CellGraph::setExpectedTurns(const std::vector<float>& turnsPerSubCell) {
+    for (std::size_t id = 0; id < cells_.size() && id < turnsPerSubCell.size(); ++id)
+        cells_[id].expectedTurnsPerSubCell = turnsPerSubCell[id];
+}
+
 } // namespace mcpp

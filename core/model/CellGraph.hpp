@@ -33,6 +33,8 @@ class CellGraph {
     [[nodiscard]] int cellAt(MapPoint point) const;
     // Gives every cell the time a turn costs there, so its cost counts turns. Decompositions leave it 0.
     void applyTurnTime(const TurnTimeModel& model);
+    // Sets the turns each cell's cost expects per sub-cell.
+    void setExpectedTurns(const std::vector<float>& turnsPerSubCell);
 
     // What the decomposition found out about the map, for reports.
     std::vector<RoundedFieldOfView> fieldsOfView;

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <functional>
+#include <string>
 #include <string_view>
 
 namespace mcpp {
@@ -25,6 +26,17 @@ class ProgressReporter {
     }
     // Throws PlanningError(Kind::Cancelled) when the caller asked to stop.
     void throwIfCancelled() const;
+    // A reporter for work done again inside a later stage: whatever it reports shows as `stage`, its
+    // fraction scaled into [from, to]; cancelling still stops it.
+    [[nodiscard]] ProgressReporter within(std::string stage, double from, double to) const {
+        Callback outer = callback_;
+        return ProgressReporter(
+            [outer, stage = std::move(stage), from, to](std::string_view, double fraction) {
+                if (outer)
+                    outer(stage, from + (to - from) * fraction);
+            },
+            cancelRequested_);
+    }
 
   private:
     Callback callback_;

@@ -46,7 +46,7 @@ class MlctPlannerTest : public QObject {
         QCOMPARE(plan.metrics.coveredFraction, 1.0);
         QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 0.0);
         QVERIFY(plan.metrics.ratio >= 1.0 && plan.metrics.ratio < 1.03);
-        QCOMPARE(plan.metrics.stageMilliseconds.size(), std::size_t{5});
+        QCOMPARE(plan.metrics.stageMilliseconds.size(), std::size_t{6});
     }
 
     void startOnObstacleIsNamed() {
@@ -105,7 +105,8 @@ class MlctPlannerTest : public QObject {
                 stages.emplace_back(stage);
         });
         (void)MlctPlanner{}.plan(problem, reporter);
-        QCOMPARE(stages, (std::vector<std::string>{"quadtree", "topology", "allocation", "paths", "done"}));
+        QCOMPARE(stages, (std::vector<std::string>{"quadtree", "topology", "allocation", "paths",
+                                                   "turn balance", "done"}));
         std::atomic<bool> cancel{true};
         try {
             (void)MlctPlanner{}.plan(problem, ProgressReporter({}, &cancel));

@@ -1,6 +1,7 @@
 // What turns cost: the turn time model, path times with turns on hand-made paths, the parameter that sets
 // it, and plans whose costs, times and bounds count turns (or, at 0, do not).
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/TurnCalibration.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -178,9 +179,44 @@ class TurnTimeTest : public QObject {
             turnSeconds += path.turnSeconds;
         }
         for (const Cell& cell : turning.cells.cells())
-            QCOMPARE(cell.coverSeconds(), cell.travelSeconds() + 0.2 * cell.freeSubCellCount() * 3.0);
+            QCOMPARE(cell.coverSeconds(), cell.travelSeconds() + double(cell.expectedTurnsPerSubCell) *
+                                                                     cell.freeSubCellCount() * 3.0);
         QCOMPARE(turning.metrics.lowerBoundSeconds, (travel + turnSeconds) / 2.0);
         QVERIFY(turning.metrics.ratio >= 1.0);
+    }
+
+    // Each region's cells take the turns per sub-cell its robot's path made; cells of no region keep theirs.
+    void calibrationGivesEachRegionItsPathsTurnRate() {
+        GridFrame frame;
+        frame.originY = 10.0;
+        frame.bottomCellSize = 10.0;
+        frame.columns = 3;
+        frame.rows = 1;
+        std::vector<Cell> cells(3);
+        for (int column = 0; column < 3; ++column) {
+            Cell& cell = cells[static_cast<std::size_t>(column)];
+            cell.column = column;
+            cell.minX = 10.0 * column;
+            cell.size = 10.0;
+            cell.speedMetresPerSecond = 1.0;
+            cell.turnSecondsPer90Degrees = 2.0F;
+        }
+        cells[1].freeSubCells = 0b0011; // two free sub-cells
+        CellGraph graph(frame, cells, NeighbourTopology({0, 1, 3, 4}, {1, 0, 2, 1}));
+        RegionAllocation regions;
+        regions.robotOfCell = {0, 0, -1};
+        regions.startCell = {0};
+        std::vector<CoveragePath> paths(1);
+        paths[0].turnSeconds = 9.0; // 4.5 quarter turns over 6 sub-cells priced 2 s each
+        QVERIFY(calibrateTurnRates(graph, regions, paths));
+        QCOMPARE(graph.cell(0).expectedTurnsPerSubCell, 0.75F);
+        QCOMPARE(graph.cell(1).expectedTurnsPerSubCell, 0.75F);
+        QCOMPARE(graph.cell(2).expectedTurnsPerSubCell, 0.2F);
+        QCOMPARE(graph.cell(1).coverSeconds(), 10.0 + 0.75 * 2 * 2.0);
+        // Free turns leave nothing to calibrate.
+        graph.applyTurnTime(TurnTimeModel{0.0, 1.0});
+        QVERIFY(!calibrateTurnRates(graph, regions, paths));
+        QCOMPARE(graph.cell(0).expectedTurnsPerSubCell, 0.75F);
     }
 
     // The automatic turn time follows the land cover's speed: a turn on a fast class costs more.

@@ -409,7 +409,10 @@ std::vector<std::string> checkTimes(const Plan& plan) {
         totalCost += covered.coverSeconds();
         totalTravel += covered.travelSeconds();
         const double turns = covered.coverSeconds() - covered.travelSeconds();
-        const double expected = 0.2 * covered.freeSubCellCount() * covered.turnSecondsPer90Degrees;
+        const double expected = double(covered.expectedTurnsPerSubCell) * covered.freeSubCellCount() *
+                                double(covered.turnSecondsPer90Degrees);
+        if (!(covered.expectedTurnsPerSubCell >= 0.0F))
+            violations.push_back("cell " + std::to_string(cell) + " expects a negative turn rate");
         if (std::abs(turns - expected) > 1e-9 * std::max(1.0, expected))
             violations.push_back(text("cell " + std::to_string(cell) + " turn cost", turns, expected));
     }
