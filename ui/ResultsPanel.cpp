@@ -145,8 +145,14 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         table_->setItem(r, 2, numberItem(hectares(robot.areaSquareMetres), robot.areaSquareMetres));
         table_->setItem(
             r, 3, numberItem(tr("%1 km").arg(robot.lengthMetres / 1000.0, 0, 'f', 2), robot.lengthMetres));
-        table_->setItem(r, 4, numberItem(formatDuration(robot.timeSeconds), robot.timeSeconds));
-        table_->setItem(r, 5, numberItem(QString::number(robot.turns), robot.turns));
+        auto* time = numberItem(formatDuration(robot.timeSeconds), robot.timeSeconds);
+        auto* turns = numberItem(QString::number(robot.turns), robot.turns);
+        const QString turning = tr("%1 of it lost slowing down for turns and speeding up again (turn_s)")
+                                    .arg(formatDuration(robot.turnSeconds));
+        time->setToolTip(turning);
+        turns->setToolTip(turning);
+        table_->setItem(r, 4, time);
+        table_->setItem(r, 5, turns);
     }
     makespan_->setText(formatDuration(metrics.makespanSeconds));
     lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));

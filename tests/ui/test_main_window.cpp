@@ -274,6 +274,9 @@ class TestMainWindow : public QObject {
         QTableWidget* results = window.resultsPanel()->robotTable();
         QCOMPARE(results->rowCount(), 3);
         QVERIFY(window.resultsPanel()->makespanText() != QStringLiteral("–"));
+        // Times count turns (turn_s auto), and the time says how much of it.
+        QVERIFY(document->plan()->metrics.robots[0].turnSeconds > 0.0);
+        QVERIFY(results->item(0, 4)->toolTip().contains("lost slowing down for turns"));
         QVERIFY(window.resultsPanel()->ratioText().toDouble() >= 0.99);
 
         // Undo the speed edit, then the last start: the plan goes stale, visibly.
