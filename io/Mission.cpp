@@ -310,9 +310,12 @@ bool readParameter(MissionReader& reader, const QJsonValue& value, const std::st
     }
     case ParameterType::Real: {
         double real = 0.0;
-        if (!spec.automatic.empty() && value.isString() && value.toString().toStdString() == spec.automatic)
+        if (!spec.automatic.empty() && value.isString()) {
+            if (value.toString().compare(QString::fromStdString(spec.automatic), Qt::CaseInsensitive) != 0)
+                return reader.fail(path, "expected " + spec.expected() + ", got \"" +
+                                             value.toString().toStdString() + "\"");
             real = automaticParameterValue;
-        else if (!reader.number(value, path, real))
+        } else if (!reader.number(value, path, real))
             return false;
         parameter = real;
         break;

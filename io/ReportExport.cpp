@@ -74,7 +74,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
 
 Status writeReportCsv(const ExportContext& context, const std::string& path) {
     std::string text =
-        "robot,name,cells,area_m2,length_m,time_s,turns,turn_time_s,cost_s,mission_items,mission_parts\n";
+        "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts,turn_time_s\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
         text += std::to_string(robotNumber(robot.robot)) + "," +
@@ -82,9 +82,9 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
                 "," + internal::formatShortest(robot.areaSquareMetres) + "," +
                 internal::formatShortest(robot.lengthMetres) + "," +
                 internal::formatShortest(robot.timeSeconds) + "," + std::to_string(robot.turns) + "," +
-                internal::formatShortest(robot.turnSeconds) + "," +
                 internal::formatShortest(robot.costSeconds) + "," + std::to_string(mission.items) + "," +
-                std::to_string(mission.parts.size()) + "\n";
+                std::to_string(mission.parts.size()) + "," + internal::formatShortest(robot.turnSeconds) +
+                "\n";
     }
     return internal::writeFileAtomically(path, text);
 }

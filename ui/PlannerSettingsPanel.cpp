@@ -123,21 +123,23 @@ QWidget* PlannerSettingsPanel::makeEditor(const ParameterSpec& spec) {
         const int decimals = decimalsFor(spec);
         const double smallest = std::pow(10.0, -decimals);
         spin->setDecimals(decimals);
-        // An automatic value sits one step below the range, where the box shows its word instead.
+        const double step = std::max(smallest, std::isfinite(spec.maximum - spec.minimum)
+                                                   ? (spec.maximum - spec.minimum) / 100.0
+                                                   : 1.0);
+        // An automatic value sits one step below the range, where the box shows its word instead: one
+        // step up from it is the range's start.
         const double lowest = std::isfinite(spec.minimum) ? spec.minimum : -1e9;
-        spin->setRange(spec.automatic.empty() ? lowest : lowest - smallest,
+        spin->setRange(spec.automatic.empty() ? lowest : lowest - step,
                        std::isfinite(spec.maximum)
                            ? (spec.maximumIncluded ? spec.maximum : spec.maximum - smallest)
                            : 1e9);
-        spin->setSingleStep(std::max(smallest, std::isfinite(spec.maximum - spec.minimum)
-                                                   ? (spec.maximum - spec.minimum) / 100.0
-                                                   : 1.0));
+        spin->setSingleStep(step);
         if (!spec.unit.empty())
             spin->setSuffix(QStringLiteral(" ") + QString::fromStdString(spec.unit));
         if (!spec.automatic.empty())
             spin->setSpecialValueText(QString::fromStdString(spec.automatic));
-        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, spec, spin](double value) {
-            const bool automatic = !spec.automatic.empty() && value == spin->minimum();
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, spec](double value) {
+            const bool automatic = !spec.automatic.empty() && value < spec.minimum;
             parameterEdited(spec, automatic ? automaticParameterValue : value);
         });
         editor = spin;

@@ -72,17 +72,20 @@ double segmentLength(const Waypoint& from, const Waypoint& to) {
     return std::sqrt(dx * dx + dy * dy);
 }
 
-// Seconds per 90 degrees of turn at a waypoint: its cell's.
-double turnPrice(const Waypoint& waypoint, const CellGraph& graph) {
-    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size())
-        return 0.0;
-    return graph.cell(waypoint.cell).turnSecondsPer90Degrees;
-}
-
 } // namespace
 
-PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph) {
+double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX, double outY,
+                     const CellGraph& graph) {
     constexpr double quarterTurn = 1.5707963267948966;
+    if (corner.cell < 0 || static_cast<std::size_t>(corner.cell) >= graph.size())
+        return 0.0;
+    const double price = graph.cell(corner.cell).turnSecondsPer90Degrees;
+    if (!(price > 0.0))
+        return 0.0;
+    return std::abs(std::atan2(inX * outY - inY * outX, inX * outX + inY * outY)) / quarterTurn * price;
+}
+
+PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph) {
     PathSeconds seconds;
     if (!waypoints.empty())
         waypoints.front().cumulativeSeconds = 0.0;
@@ -96,11 +99,8 @@ PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGr
         if (length > 0.0) {
             const double x = (to.x - from.x) / length;
             const double y = (to.y - from.y) / length;
-            const double price = turnPrice(from, graph);
-            if (haveDirection && price > 0.0) {
-                const double angle =
-                    std::abs(std::atan2(directionX * y - directionY * x, directionX * x + directionY * y));
-                const double turn = angle / quarterTurn * price;
+            if (haveDirection) {
+                const double turn = turnSecondsAt(from, directionX, directionY, x, y, graph);
                 seconds.turning += turn;
                 seconds.total += turn;
             }

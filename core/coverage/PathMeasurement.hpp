@@ -19,6 +19,11 @@ namespace mcpp {
 // sub-cell it began in. Points that are no sub-cell centre (a start point, say) are not visits.
 [[nodiscard]] int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph);
 
+// Seconds lost turning at `corner` from the way in (dx, dy) to the way out: the angle between them in
+// quarter turns, at the corner's cell's price per 90 degrees (none at a point in no cell).
+[[nodiscard]] double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX, double outY,
+                                   const CellGraph& graph);
+
 struct PathSeconds {
     double total = 0.0;
     double turning = 0.0; // the part of it spent on turns

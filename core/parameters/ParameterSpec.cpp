@@ -56,9 +56,7 @@ bool ParameterSpec::isAutomatic(const ParameterValue& value) const {
     if (automatic.empty() || type != ParameterType::Real)
         return false;
     const auto* real = std::get_if<double>(&value);
-    const auto* whole = std::get_if<int>(&value);
-    return (real != nullptr && *real == automaticParameterValue) ||
-           (whole != nullptr && *whole == static_cast<int>(automaticParameterValue));
+    return real != nullptr && *real == automaticParameterValue;
 }
 
 std::optional<std::string> ParameterSpec::problemWith(const ParameterValue& value) const {

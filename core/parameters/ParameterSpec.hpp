@@ -12,8 +12,9 @@ namespace mcpp {
 
 enum class ParameterType { Boolean, Integer, Real, Choice };
 
-// The value a Real parameter with an `automatic` word holds when the planner is to work it out itself.
-inline constexpr double automaticParameterValue = -1.0;
+// The value a Real parameter with an `automatic` word holds when the planner is to work it out itself: no
+// number typed on the command line or in a mission file can be it.
+inline constexpr double automaticParameterValue = -std::numeric_limits<double>::infinity();
 
 // One parameter as a planner (or one of its stages) declares it. The command line, mission files, the
 // settings panel and validation are all derived from this declaration.

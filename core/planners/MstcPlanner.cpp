@@ -36,13 +36,18 @@ std::vector<Waypoint> partTour(const CellGraph& graph, const StartComponent& par
     return best;
 }
 
-std::vector<double> stepSeconds(const std::vector<Waypoint>& tour) {
+// Each step of the closed tour: its travel and the turn at its end, as measurePath times them, so that
+// pieces of equal time are what the paths take.
+std::vector<double> stepSeconds(const std::vector<Waypoint>& tour, const CellGraph& graph) {
     std::vector<double> seconds(tour.size(), 0.0);
     for (std::size_t i = 0; i < tour.size(); ++i) {
         const Waypoint& a = tour[i];
         const Waypoint& b = tour[(i + 1) % tour.size()];
+        const Waypoint& c = tour[(i + 2) % tour.size()];
         const double length = std::hypot(b.x - a.x, b.y - a.y);
         seconds[i] = travelSeconds(length, a.speedMetresPerSecond, b.speedMetresPerSecond);
+        if (length > 0.0 && (c.x != b.x || c.y != b.y))
+            seconds[i] += turnSecondsAt(b, b.x - a.x, b.y - a.y, c.x - b.x, c.y - b.y, graph);
     }
     return seconds;
 }
@@ -100,7 +105,7 @@ void MstcPlanner::run(PlanningRun& run) const {
             for (int robot : part.robots)
                 positions.push_back(tourPosition(tour, startCells[static_cast<std::size_t>(robot)],
                                                  starts[static_cast<std::size_t>(robot)]));
-            const TourSplitter splitter(stepSeconds(tour));
+            const TourSplitter splitter(stepSeconds(tour, plan.cells));
             const std::vector<TourSplitter::Share> shares = parameters.boolean("balanced")
                                                                 ? splitter.balancedPieces(positions)
                                                                 : splitter.forwardPieces(positions);

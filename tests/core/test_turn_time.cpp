@@ -127,10 +127,12 @@ class TurnTimeTest : public QObject {
         QVERIFY(fixed.has_value());
         QCOMPARE(std::get<double>(*fixed), 2.5);
         QCOMPARE(spec.format(*fixed), std::string("2.5"));
+        QVERIFY(!spec.parse("-1", &error).has_value()); // a number is a number, never the automatic value
         QVERIFY(!spec.parse("-0.5", &error).has_value());
         QCOMPARE(error, std::string("expected auto or a number from 0 to 600, got -0.5"));
         QVERIFY(!spec.parse("fast", &error).has_value());
         QVERIFY(spec.problemWith(ParameterValue(-2.0)).has_value());
+        QVERIFY(spec.problemWith(ParameterValue(-1)).has_value());
         const ParameterValues values = [] {
             ParameterValues given;
             given.set("turn_s", 3.0);

@@ -36,6 +36,8 @@ std::vector<MissionMutation> missionVersion2Mutations() {
          "planner.parameters.rebalance_iterations"},
         {"v2 turn time negative", R"("closed_tour": false)", R"("closed_tour": false, "turn_s": -3)",
          "planner.parameters.turn_s"},
+        {"v2 turn time minus one", R"("closed_tour": false)", R"("closed_tour": false, "turn_s": -1)",
+         "planner.parameters.turn_s"},
         {"v2 turn time word", R"("closed_tour": false)", R"("closed_tour": false, "turn_s": "fast")",
          "planner.parameters.turn_s"},
         {"v2 flat parameter", R"("name": "mcpp-mlct", )", R"("name": "mcpp-mlct", "closed_tour": true, )",

@@ -161,7 +161,13 @@ class MissionFilesTest : public QObject {
         QVERIFY(reloaded.ok());
         compareMissions(reloaded.value(), mission);
         QCOMPARE(missionToJson(reloaded.value()), readBytes(full));
-        // The automatic turn time is saved as its word and read back as automatic.
+        // The automatic turn time is saved as its word and read back as automatic, in any case.
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}],
+                            "planner": {"name": "mcpp-mlct", "parameters": {"turn_s": "Auto"}}})");
+        auto capitalised = loadMission(path);
+        QVERIFY2(capitalised.ok(), capitalised.ok() ? "" : capitalised.error().c_str());
+        QVERIFY(TurnTimeModel::from(capitalised.value().planner.parameters).fixedSecondsPer90Degrees < 0.0);
         QVERIFY(readBytes(full).find("\"turn_s\": \"auto\"") != std::string::npos);
         QVERIFY(TurnTimeModel::from(reloaded.value().planner.parameters).fixedSecondsPer90Degrees < 0.0);
     }

@@ -415,6 +415,12 @@ std::vector<std::string> checkTimes(const Plan& plan) {
             violations.push_back("cell " + std::to_string(cell) + " expects a negative turn rate");
         if (std::abs(turns - expected) > 1e-9 * std::max(1.0, expected))
             violations.push_back(text("cell " + std::to_string(cell) + " turn cost", turns, expected));
+        // The price follows the plan's turn parameters (a planner that forgot it would price turns at 0).
+        const double price =
+            TurnTimeModel::from(plan.parameters).secondsPer90Degrees(covered.speedMetresPerSecond);
+        if (std::abs(double(covered.turnSecondsPer90Degrees) - price) > 1e-6 * std::max(1.0, price))
+            violations.push_back(
+                text("cell " + std::to_string(cell) + " turn price", covered.turnSecondsPer90Degrees, price));
     }
     double sumOfRegions = 0.0;
     for (double cost : plan.regions.costSeconds)

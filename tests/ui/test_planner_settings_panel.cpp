@@ -76,6 +76,23 @@ class TestPlannerSettingsPanel : public QObject {
         QCOMPARE(panel.choice().parameters.boolean("closed_tour"), false);
     }
 
+    // The turn time shows "auto" one step below its range: one step up is 0 s, one step down auto again.
+    void turnTimeStepsBetweenAutoAndNumbers() {
+        ui::PlannerSettingsPanel panel;
+        panel.setChoice(defaultPlannerChoice("mcpp-mlct"));
+        auto* turn = qobject_cast<QDoubleSpinBox*>(panel.editorOf("turn_s"));
+        QVERIFY(turn != nullptr);
+        QCOMPARE(turn->text(), QString("auto"));
+        turn->stepUp();
+        QCOMPARE(panel.choice().parameters.real("turn_s"), 0.0);
+        turn->setValue(4.5);
+        QCOMPARE(panel.choice().parameters.real("turn_s"), 4.5);
+        turn->setValue(turn->minimum());
+        const ParameterSpec spec = TurnTimeModel::turnSecondsParameter();
+        QVERIFY(spec.isAutomatic(*panel.choice().parameters.find("turn_s")));
+        QCOMPARE(turn->text(), QString("auto"));
+    }
+
     void showingAChoiceIsNoEdit() {
         ui::PlannerSettingsPanel panel;
         QSignalSpy edited(&panel, &ui::PlannerSettingsPanel::choiceEdited);
