@@ -80,9 +80,11 @@ double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX
     if (corner.cell < 0 || static_cast<std::size_t>(corner.cell) >= graph.size())
         return 0.0;
     const double price = graph.cell(corner.cell).turnSecondsPer90Degrees;
-    if (!(price > 0.0))
+    const double cross = inX * outY - inY * outX;
+    const double dot = inX * outX + inY * outY;
+    if (!(price > 0.0) || (cross == 0.0 && dot > 0.0)) // free, or straight on (most steps of a path)
         return 0.0;
-    return std::abs(std::atan2(inX * outY - inY * outX, inX * outX + inY * outY)) / quarterTurn * price;
+    return std::abs(std::atan2(cross, dot)) / quarterTurn * price;
 }
 
 PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph) {
@@ -112,6 +114,13 @@ PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGr
         to.cumulativeSeconds = seconds.total;
     }
     return seconds;
+}
+
+double longestPathSeconds(const std::vector<CoveragePath>& paths) {
+    double longest = 0.0;
+    for (const CoveragePath& path : paths)
+        longest = std::max(longest, path.timeSeconds);
+    return longest;
 }
 
 void measurePath(CoveragePath& path, const CellGraph& graph) {

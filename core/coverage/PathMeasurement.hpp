@@ -35,6 +35,9 @@ struct PathSeconds {
 // times read back are the ones planned.
 PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph);
 
+// The longest of the paths' times: the makespan of measured paths.
+[[nodiscard]] double longestPathSeconds(const std::vector<CoveragePath>& paths);
+
 // Fills length, time, cumulative times, turns and repeated visits from the waypoints. Each segment is
 // travelled half at the speed of the waypoint it leaves and half at the speed of the one it reaches.
 void measurePath(CoveragePath& path, const CellGraph& graph);

@@ -1,5 +1,7 @@
 #include "core/coverage/TurnReduction.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
+
 #include <algorithm>
 #include <numeric>
 
@@ -9,13 +11,6 @@ namespace {
 int totalTurns(const std::vector<CoveragePath>& paths) {
     return std::accumulate(paths.begin(), paths.end(), 0,
                            [](int sum, const CoveragePath& path) { return sum + path.turns; });
-}
-
-double longestTime(const std::vector<CoveragePath>& paths) {
-    double longest = 0.0;
-    for (const CoveragePath& path : paths)
-        longest = std::max(longest, path.timeSeconds);
-    return longest;
 }
 
 // The regions a cell could join: those holding at least two of its neighbours, when its own region holds
@@ -67,7 +62,7 @@ TurnReduction::Outcome TurnReduction::improve(const CellGraph& graph, RegionAllo
     };
     for (int round = 0; round < rounds_; ++round) {
         int moved = 0;
-        const double makespan = longestTime(paths);
+        const double makespan = longestPathSeconds(paths);
         for (int cell = 0; cell < static_cast<int>(graph.size()); ++cell) {
             const int donor = owner[static_cast<std::size_t>(cell)];
             if (donor < 0 || regions.startCell[static_cast<std::size_t>(donor)] == cell)

@@ -1,6 +1,7 @@
 #include "core/planners/MlctPlanner.hpp"
 
 #include "core/allocation/AzimuthTrendAllocator.hpp"
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/TurnCalibration.hpp"
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
@@ -12,13 +13,6 @@
 
 namespace mcpp {
 namespace {
-
-double makespanOf(const std::vector<CoveragePath>& paths) {
-    double longest = 0.0;
-    for (const CoveragePath& path : paths)
-        longest = std::max(longest, path.timeSeconds);
-    return longest;
-}
 
 // Whether turns take a share of some robot's time that a better estimate of them could rebalance: on slow
 // land covers they are a rounding error (0.05 % of the time on the WorldCover crop) and a second
@@ -80,7 +74,7 @@ void MlctPlanner::run(PlanningRun& run) const {
             allocator.allocate(plan.cells, startCells, progress.within("turn balance", 0.0, 0.5));
         std::vector<CoveragePath> paths =
             coverage.plan(plan.cells, regions, run.starts(), progress.within("turn balance", 0.5, 1.0));
-        if (makespanOf(paths) < makespanOf(plan.paths)) {
+        if (longestPathSeconds(paths) < longestPathSeconds(plan.paths)) {
             plan.regions = std::move(regions);
             plan.paths = std::move(paths);
         }
