@@ -1,6 +1,8 @@
 #include "core/coverage/SpanningTreeBuilder.hpp"
 
 #include "core/coverage/CellIndexScope.hpp"
+#include "core/coverage/RegionAdjacency.hpp"
+#include "core/coverage/TurnMinimisingTree.hpp"
 
 #include <algorithm>
 #include <array>
@@ -68,6 +70,25 @@ SpanningTree SpanningTreeBuilder::preferring(std::vector<int> cells, int rootCel
         rootNode = local[rootCell];
     } // the scope must clear the shared index before the cells move into the tree
     return SpanningTree(std::move(cells), rootNode, edges);
+}
+
+SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCell) const {
+    std::vector<std::pair<int, int>> edges;
+    int rootNode = 0;
+    {
+        const CellIndexScope local(index_, cells);
+        const RegionAdjacency adjacency(graph_, cells, local);
+        edges = TurnMinimisingTree(adjacency, {}).edges();
+        rootNode = local[rootCell];
+    } // the scope must clear the shared index before the cells move into the tree
+    return SpanningTree(std::move(cells), rootNode, edges);
+}
+
+SpanningTree SpanningTreeBuilder::candidate(int which, std::vector<int> cells, int rootCell) const {
+    if (which == 0)
+        return fewestTurns(std::move(cells), rootCell);
+    return preferring(std::move(cells), rootCell,
+                      which == 1 ? EdgeDirection::EastWest : EdgeDirection::NorthSouth);
 }
 
 SpanningTree SpanningTreeBuilder::spiral(std::vector<int> cells, int rootCell) const {

@@ -21,6 +21,14 @@ class SpanningTreeBuilder {
     [[nodiscard]] SpanningTree preferring(std::vector<int> cells, int rootCell,
                                           EdgeDirection preferred) const;
 
+    // A tree that turns little (TurnMinimisingTree): straight runs joined where that adds the fewest turns.
+    [[nodiscard]] SpanningTree fewestTurns(std::vector<int> cells, int rootCell) const;
+
+    // The trees coverage planners choose among by the turns of their walks: fewestTurns first, then
+    // preferring east-west and north-south (these win now and then on mixed cell sizes).
+    static constexpr int candidateCount = 3;
+    [[nodiscard]] SpanningTree candidate(int which, std::vector<int> cells, int rootCell) const;
+
     // Spiral-STC (Gabriely & Rimon): a depth-first tree grown from the start, each cell scanning its
     // neighbours counter-clockwise from the one it was entered from and entering the first new one.
     [[nodiscard]] SpanningTree spiral(std::vector<int> cells, int rootCell) const;

@@ -33,8 +33,8 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
     SpanningTree best;
     PathShape bestShape;
     bool haveBest = false;
-    for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
-        SpanningTree tree = trees.preferring(cells, startCell, preference);
+    for (int candidate = 0; candidate < SpanningTreeBuilder::candidateCount; ++candidate) {
+        SpanningTree tree = trees.candidate(candidate, cells, startCell);
         const PathShape shape = walker.walkShape(tree, start, closedTour_);
         if (!haveBest || shape.turns() < bestShape.turns() ||
             (shape.turns() == bestShape.turns() && shape.lengthMetres() < bestShape.lengthMetres() - 1e-9)) {

@@ -6,8 +6,8 @@
 namespace mcpp {
 
 // Improved STC on mixed-size cells (spec section 5): a spanning tree over each region from its start cell,
-// circumnavigated counter-clockwise through the centres of every cell's four sub-cells. Two trees are tried
-// per region, one preferring east-west edges and one north-south, and the path with fewer turns is kept.
+// circumnavigated counter-clockwise through the centres of every cell's four sub-cells. Each region tries
+// the builder's candidate trees (the turn-minimising one first) and keeps the walk with the fewest turns.
 class SpanningTreeCoverage final : public CoveragePathPlanner {
   public:
     // closedTour: tours end where they start; otherwise paths stop at the last sub-cell.
@@ -19,7 +19,7 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                  const std::vector<MapPoint>& starts,
                                                  const ProgressReporter& progress) const override;
 
-    // One robot's path over its region's cells: the fewer-turn of the two trees. scratchIndex: one int per
+    // One robot's path over its region's cells: the fewest-turn candidate tree's. scratchIndex: one int per
     // graph cell, all -1, left so.
     [[nodiscard]] CoveragePath regionPath(const CellGraph& graph, const std::vector<int>& cells,
                                           int startCell, int robot, MapPoint start,

@@ -1,6 +1,7 @@
 #include "core/planners/MlctPlanner.hpp"
 
 #include "core/allocation/AzimuthTrendAllocator.hpp"
+#include "core/allocation/BorderStraightening.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/TurnCalibration.hpp"
@@ -33,7 +34,8 @@ PlannerDescription MlctPlanner::describe() const {
     description.summary = "quadtree cells sized by field of view, azimuth-trend regions, improved STC";
     description.parameters = {
         DecompositionOptions::purityToleranceParameter(), DecompositionOptions::blockedThresholdParameter(),
-        AzimuthTrendAllocator::rebalanceIterationsParameter(), SpanningTreeCoverage::closedTourParameter()};
+        AzimuthTrendAllocator::rebalanceIterationsParameter(), BorderStraightening::slackParameter(),
+        SpanningTreeCoverage::closedTourParameter()};
     return description;
 }
 
@@ -57,10 +59,11 @@ void MlctPlanner::run(PlanningRun& run) const {
         });
     }();
     const std::vector<int> startCells = run.locateStarts();
-    plan.regions = run.stage("allocation", [&] {
-        const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
-        return allocator.allocate(plan.cells, startCells, progress);
-    });
+    const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
+    const BorderStraightening straightening(plan.cells, parameters.real("fewer_turns_slack") / 100.0);
+    plan.regions =
+        run.stage("allocation", [&] { return allocator.allocate(plan.cells, startCells, progress); });
+    run.stage("straight borders", [&] { return straightening.straighten(plan.regions); });
     const SpanningTreeCoverage coverage(parameters.boolean("closed_tour"));
     plan.paths =
         run.stage("paths", [&] { return coverage.plan(plan.cells, plan.regions, run.starts(), progress); });
@@ -69,9 +72,9 @@ void MlctPlanner::run(PlanningRun& run) const {
     run.stage("turn balance", [&] {
         if (!turnsWeigh(plan.paths) || !calibrateTurnRates(plan.cells, plan.regions, plan.paths))
             return 0;
-        const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
         RegionAllocation regions =
             allocator.allocate(plan.cells, startCells, progress.within("turn balance", 0.0, 0.5));
+        straightening.straighten(regions);
         std::vector<CoveragePath> paths =
             coverage.plan(plan.cells, regions, run.starts(), progress.within("turn balance", 0.5, 1.0));
         if (longestPathSeconds(paths) < longestPathSeconds(plan.paths)) {

@@ -14,7 +14,7 @@
 namespace mcpp {
 namespace {
 
-// The tour of one part as a cycle (the closing return dropped), the one of the two trees that turns least.
+// The tour of one part as a cycle (the closing return dropped), of the candidate tree that turns least.
 std::vector<Waypoint> partTour(const CellGraph& graph, const StartComponent& part, int rootCell,
                                MapPoint start) {
     std::vector<int> scratchIndex(graph.size(), -1);
@@ -22,9 +22,9 @@ std::vector<Waypoint> partTour(const CellGraph& graph, const StartComponent& par
     TreeCircumnavigation walker(graph);
     std::vector<Waypoint> best;
     int fewestTurns = std::numeric_limits<int>::max();
-    for (auto preference : {EdgeDirection::EastWest, EdgeDirection::NorthSouth}) {
+    for (int candidate = 0; candidate < SpanningTreeBuilder::candidateCount; ++candidate) {
         std::vector<Waypoint> walk =
-            walker.walk(trees.preferring(part.cells, rootCell, preference), start, true);
+            walker.walk(trees.candidate(candidate, part.cells, rootCell), start, true);
         if (walk.size() > 1)
             walk.pop_back();
         const int turns = countTurns(walk);

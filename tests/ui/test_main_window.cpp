@@ -665,8 +665,26 @@ class TestMainWindow : public QObject {
             QTest::mouseRelease(canvas, Qt::LeftButton, {}, to);
         };
         const io::AreaOfInterest before = window.document()->mission().area;
+        // A small square beside the map, on whichever side the view leaves room once zoomed out a step.
+        canvas->zoomOut();
+        const ClassGrid& grid = *window.document()->grid();
+        const double middleX = grid.originX + grid.width() / 2.0;
+        const double middleY = grid.minY() + grid.height() / 2.0;
+        const double side = 0.03 * std::max(grid.width(), grid.height());
+        std::pair<QPoint, QPoint> offMap;
+        for (const auto& [x, y] :
+             std::vector<std::pair<double, double>>{{grid.originX - 2.0 * side, middleY},
+                                                    {grid.originX + grid.width() + side, middleY},
+                                                    {middleX, grid.originY + side},
+                                                    {middleX, grid.minY() - 2.0 * side}}) {
+            const QPoint from = at(x, y + side);
+            const QPoint to = at(x + side, y);
+            if (canvas->rect().contains(from) && canvas->rect().contains(to))
+                offMap = {from, to};
+        }
+        QVERIFY(offMap.first != offMap.second);
         window.findChild<QAction*>(QStringLiteral("drawAreaAction"))->trigger();
-        dragRectangle(QPoint(3, 3), QPoint(30, 30));
+        dragRectangle(offMap.first, offMap.second);
         QVERIFY2(window.lastError().contains(QStringLiteral("leaves no pixel")),
                  qPrintable(window.lastError()));
         QVERIFY(window.document()->mission().area == before);

@@ -1,0 +1,16 @@
+#pragma once
+
+#include "core/coverage/RegionAdjacency.hpp"
+
+#include <vector>
+
+namespace mcpp {
+
+// The fewest straight runs ("bricks", as in TMSTC*) a region's cells split into: each cell lies in one
+// east-west or one north-south run of equal cells. Two straight adjacencies conflict when they meet at a
+// cell from perpendicular sides; the largest conflict-free set of them is the complement of a minimum
+// vertex cover of that bipartite graph (Konig), found by Hopcroft-Karp matching.
+// Returns, per adjacency of `adjacency`, whether it joins two cells of one run.
+[[nodiscard]] std::vector<char> straightRuns(const RegionAdjacency& adjacency);
+
+} // namespace mcpp

@@ -1,0 +1,264 @@
+#include "core/coverage/TurnMinimisingTree.hpp"
+
+#include "core/coverage/StraightRuns.hpp"
+
+#include <bit>
+#include <numeric>
+
+namespace mcpp {
+namespace {
+
+constexpr unsigned eastWest = 0b0101U;
+constexpr unsigned northSouth = 0b1010U;
+
+unsigned bitOf(CellSide side) {
+    return 1U << static_cast<unsigned>(side);
+}
+
+// Turns a walk makes in a cell joined on the sides in `mask` (an unjoined cell will be a leaf), by mask.
+constexpr std::array<int, 16> turnsByMask = [] {
+    std::array<int, 16> turns{};
+    for (unsigned mask = 0; mask < 16; ++mask) {
+        const int sides = std::popcount(mask);
+        turns[mask] = sides == 4 ? 4 : (sides == 2 && (mask == eastWest || mask == northSouth) ? 0 : 2);
+    }
+    return turns;
+}();
+
+int turnsInCell(unsigned mask) {
+    return turnsByMask[mask];
+}
+
+unsigned maskOf(const std::array<std::uint16_t, 4>& counts) {
+    unsigned mask = 0;
+    for (unsigned side = 0; side < 4; ++side)
+        if (counts[side] > 0)
+            mask |= 1U << side;
+    return mask;
+}
+
+class DisjointSets {
+  public:
+    explicit DisjointSets(std::size_t count) : root_(count) { std::iota(root_.begin(), root_.end(), 0); }
+    int find(int x) {
+        while (root_[static_cast<std::size_t>(x)] != x) {
+            root_[static_cast<std::size_t>(x)] =
+                root_[static_cast<std::size_t>(root_[static_cast<std::size_t>(x)])];
+            x = root_[static_cast<std::size_t>(x)];
+        }
+        return x;
+    }
+    bool unite(int a, int b) {
+        a = find(a);
+        b = find(b);
+        if (a == b)
+            return false;
+        root_[static_cast<std::size_t>(a)] = b;
+        return true;
+    }
+
+  private:
+    std::vector<int> root_;
+};
+
+} // namespace
+
+TurnMinimisingTree::TurnMinimisingTree(const RegionAdjacency& adjacency, Options options)
+    : adjacency_(adjacency), options_(options), sides_(adjacency.nodeCount(), SideCounts{}),
+      inTree_(adjacency.edges().size(), 0) {
+    joinRuns(straightRuns(adjacency));
+    rootTree();
+    for (int pass = 0; pass < options_.swapPasses; ++pass) {
+        int swaps = 0;
+        for (std::size_t edge = 0; edge < inTree_.size(); ++edge)
+            if (inTree_[edge] == 0 && trySwap(static_cast<int>(edge)))
+                ++swaps;
+        if (swaps == 0)
+            break;
+    }
+}
+
+int TurnMinimisingTree::turnChangeAdding(int node, CellSide side) const {
+    const SideCounts& counts = sides_[static_cast<std::size_t>(node)];
+    if (counts[static_cast<std::size_t>(side)] > 0)
+        return 0;
+    const unsigned mask = maskOf(counts);
+    return turnsInCell(mask | bitOf(side)) - turnsInCell(mask);
+}
+
+int TurnMinimisingTree::turnChangeRemoving(int node, CellSide side) const {
+    const SideCounts& counts = sides_[static_cast<std::size_t>(node)];
+    if (counts[static_cast<std::size_t>(side)] > 1)
+        return 0;
+    const unsigned mask = maskOf(counts);
+    return turnsInCell(mask & ~bitOf(side)) - turnsInCell(mask);
+}
+
+int TurnMinimisingTree::joinCost(int edge) const {
+    const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
+    return turnChangeAdding(e.first, e.sideOfFirst) + turnChangeAdding(e.second, oppositeSide(e.sideOfFirst));
+}
+
+void TurnMinimisingTree::link(int edge) {
+    const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
+    inTree_[static_cast<std::size_t>(edge)] = 1;
+    ++sides_[static_cast<std::size_t>(e.first)][static_cast<std::size_t>(e.sideOfFirst)];
+    ++sides_[static_cast<std::size_t>(e.second)][static_cast<std::size_t>(oppositeSide(e.sideOfFirst))];
+}
+
+void TurnMinimisingTree::unlink(int edge) {
+    const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
+    inTree_[static_cast<std::size_t>(edge)] = 0;
+    --sides_[static_cast<std::size_t>(e.first)][static_cast<std::size_t>(e.sideOfFirst)];
+    --sides_[static_cast<std::size_t>(e.second)][static_cast<std::size_t>(oppositeSide(e.sideOfFirst))];
+}
+
+// Kruskal with costs that change as cells gain sides: a bucket queue by cost (-4..4), each edge re-queued
+// when one of its cells changes, and re-checked when it comes out.
+void TurnMinimisingTree::joinRuns(const std::vector<char>& inRuns) {
+    const auto& edges = adjacency_.edges();
+    DisjointSets components(adjacency_.nodeCount());
+    for (std::size_t edge = 0; edge < edges.size(); ++edge)
+        if (inRuns[edge] != 0 && components.unite(edges[edge].first, edges[edge].second))
+            link(static_cast<int>(edge));
+    constexpr int lowest = -4;
+    std::array<std::vector<int>, 9> buckets;
+    std::array<std::size_t, 9> heads{};
+    auto queue = [&](int edge) {
+        buckets[static_cast<std::size_t>(joinCost(edge) - lowest)].push_back(edge);
+    };
+    for (std::size_t edge = 0; edge < edges.size(); ++edge)
+        if (inTree_[edge] == 0)
+            queue(static_cast<int>(edge));
+    for (;;) {
+        std::size_t bucket = 0;
+        while (bucket < buckets.size() && heads[bucket] == buckets[bucket].size())
+            ++bucket;
+        if (bucket == buckets.size())
+            return;
+        const int edge = buckets[bucket][heads[bucket]++];
+        const auto& e = edges[static_cast<std::size_t>(edge)];
+        if (components.find(e.first) == components.find(e.second))
+            continue;
+        const auto cost = static_cast<std::size_t>(joinCost(edge) - lowest);
+        if (cost > bucket) {
+            buckets[cost].push_back(edge);
+            continue;
+        }
+        components.unite(e.first, e.second);
+        link(edge);
+        for (int node : {e.first, e.second})
+            for (const auto& incidence : adjacency_.incident(node))
+                if (inTree_[static_cast<std::size_t>(incidence.edge)] == 0 &&
+                    components.find(incidence.other) != components.find(node))
+                    queue(incidence.edge);
+    }
+}
+
+void TurnMinimisingTree::rootTree() {
+    const std::size_t count = adjacency_.nodeCount();
+    parent_.assign(count, -1);
+    parentEdge_.assign(count, -1);
+    stamp_.assign(count, 0);
+    std::vector<char> seen(count, 0);
+    std::vector<int> queue;
+    for (std::size_t root = 0; root < count; ++root) {
+        if (seen[root] != 0)
+            continue;
+        seen[root] = 1;
+        queue.assign(1, static_cast<int>(root));
+        for (std::size_t head = 0; head < queue.size(); ++head)
+            for (const auto& incidence : adjacency_.incident(queue[head])) {
+                if (inTree_[static_cast<std::size_t>(incidence.edge)] == 0 ||
+                    seen[static_cast<std::size_t>(incidence.other)] != 0)
+                    continue;
+                seen[static_cast<std::size_t>(incidence.other)] = 1;
+                parent_[static_cast<std::size_t>(incidence.other)] = queue[head];
+                parentEdge_[static_cast<std::size_t>(incidence.other)] = incidence.edge;
+                queue.push_back(incidence.other);
+            }
+    }
+}
+
+// Adds `edge` if dropping some tree edge of the cycle it closes lowers the turn count.
+bool TurnMinimisingTree::trySwap(int edge) {
+    const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
+    const int u = e.first;
+    const int v = e.second;
+    ++stampValue_;
+    int meeting = -1;
+    {
+        int node = u;
+        for (int step = 0; node >= 0 && step <= options_.cycleLimit;
+             ++step, node = parent_[static_cast<std::size_t>(node)])
+            stamp_[static_cast<std::size_t>(node)] = stampValue_;
+        node = v;
+        for (int step = 0; node >= 0 && step <= options_.cycleLimit;
+             ++step, node = parent_[static_cast<std::size_t>(node)])
+            if (stamp_[static_cast<std::size_t>(node)] == stampValue_) {
+                meeting = node;
+                break;
+            }
+    }
+    if (meeting < 0)
+        return false;
+    const int adding = joinCost(edge);
+    link(edge);
+    int bestChange = 0;
+    int bestChild = -1;
+    for (int end : {u, v})
+        for (int node = end; node != meeting; node = parent_[static_cast<std::size_t>(node)]) {
+            const auto& dropped =
+                adjacency_.edges()[static_cast<std::size_t>(parentEdge_[static_cast<std::size_t>(node)])];
+            const int change = turnChangeRemoving(dropped.first, dropped.sideOfFirst) +
+                               turnChangeRemoving(dropped.second, oppositeSide(dropped.sideOfFirst));
+            if (bestChild < 0 || change < bestChange) {
+                bestChange = change;
+                bestChild = node;
+            }
+        }
+    if (bestChild < 0 || adding + bestChange >= 0) {
+        unlink(edge);
+        return false;
+    }
+    // bestChild's subtree holds u or v: re-hang it from that end through the new edge.
+    bool onFirstSide = false;
+    for (int node = u; node != meeting; node = parent_[static_cast<std::size_t>(node)])
+        onFirstSide = onFirstSide || node == bestChild;
+    unlink(parentEdge_[static_cast<std::size_t>(bestChild)]);
+    if (onFirstSide)
+        reverseChain(u, bestChild, v, edge);
+    else
+        reverseChain(v, bestChild, u, edge);
+    return true;
+}
+
+// Makes `from` the top of the chain from..to (to's parent edge already dropped) and hangs it from newParent.
+void TurnMinimisingTree::reverseChain(int from, int to, int newParent, int viaEdge) {
+    std::vector<int> chain{from};
+    while (chain.back() != to)
+        chain.push_back(parent_[static_cast<std::size_t>(chain.back())]);
+    for (std::size_t i = chain.size() - 1; i > 0; --i) {
+        parent_[static_cast<std::size_t>(chain[i])] = chain[i - 1];
+        parentEdge_[static_cast<std::size_t>(chain[i])] = parentEdge_[static_cast<std::size_t>(chain[i - 1])];
+    }
+    parent_[static_cast<std::size_t>(from)] = newParent;
+    parentEdge_[static_cast<std::size_t>(from)] = viaEdge;
+}
+
+std::vector<std::pair<int, int>> TurnMinimisingTree::edges() const {
+    std::vector<std::pair<int, int>> result;
+    for (std::size_t edge = 0; edge < inTree_.size(); ++edge)
+        if (inTree_[edge] != 0)
+            result.emplace_back(adjacency_.edges()[edge].first, adjacency_.edges()[edge].second);
+    return result;
+}
+
+int TurnMinimisingTree::estimatedTurns() const {
+    int turns = 0;
+    for (const auto& counts : sides_)
+        turns += turnsInCell(maskOf(counts));
+    return turns;
+}
+
+} // namespace mcpp

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "core/coverage/RegionAdjacency.hpp"
+
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace mcpp {
+
+// A spanning tree over a region whose circumnavigation turns little. A coverage walk turns twice in a cell
+// the tree enters from one side (a leaf), from two perpendicular sides or from three, four times in a cell
+// joined on all four, and never in a cell joined on two opposite sides only. The tree is built in three
+// steps: the fewest straight runs (straightRuns), joined where that adds the fewest turns (cheapest first,
+// costs updated as cells gain sides), then edge swaps that lower the count, each closing a cycle of at most
+// `cycleLimit` cells so the work stays linear in the region's size.
+class TurnMinimisingTree {
+  public:
+    struct Options {
+        int cycleLimit = 64;
+        int swapPasses = 4;
+    };
+
+    explicit TurnMinimisingTree(const RegionAdjacency& adjacency, Options options);
+
+    // Tree edges as (node, node) pairs; a forest if the region is not connected.
+    [[nodiscard]] std::vector<std::pair<int, int>> edges() const;
+    // Turns the walk round the tree makes by the count above (exact on a grid of equal cells).
+    [[nodiscard]] int estimatedTurns() const;
+
+  private:
+    using SideCounts = std::array<std::uint16_t, 4>;
+
+    [[nodiscard]] int turnChangeAdding(int node, CellSide side) const;
+    [[nodiscard]] int turnChangeRemoving(int node, CellSide side) const;
+    [[nodiscard]] int joinCost(int edge) const;
+    void link(int edge);
+    void unlink(int edge);
+    void joinRuns(const std::vector<char>& inRuns);
+    void rootTree();
+    bool trySwap(int edge);
+    void reverseChain(int from, int to, int newParent, int viaEdge);
+
+    const RegionAdjacency& adjacency_;
+    Options options_;
+    std::vector<SideCounts> sides_;
+    std::vector<char> inTree_;
+    std::vector<int> parent_;
+    std::vector<int> parentEdge_;
+    std::vector<int> stamp_;
+    int stampValue_ = 0;
+};
+
+} // namespace mcpp
