@@ -1,6 +1,7 @@
 #include "core/allocation/BorderStraightening.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 namespace mcpp {
 namespace {
@@ -12,7 +13,7 @@ constexpr std::size_t south = 3;
 
 // Cells a connectivity check may visit: regions are checked near the moved cell only.
 constexpr std::size_t searchLimit = 256;
-// Passes over the cells; later passes move few (on the benchmark grids the third moves under 5 %).
+// Passes over the border; later passes move few (on the benchmark grids the third moves under 5 %).
 constexpr int passLimit = 8;
 
 } // namespace
@@ -89,7 +90,7 @@ bool BorderStraightening::staysConnectedWithout(int cell, const std::vector<int>
 
 // Tries the cell in each neighbouring region, restoring its owner after each trial.
 int BorderStraightening::bestMove(int cell, std::vector<int>& owner, const std::vector<double>& cost,
-                                  double ceiling) const {
+                                  double ceiling, bool& refused) const {
     const int from = owner[static_cast<std::size_t>(cell)];
     const double cellCost = graph_.cell(static_cast<std::size_t>(cell)).coverSeconds();
     int before = -1; // counted when a first region could take the cell: most cells are inside theirs
@@ -97,8 +98,12 @@ int BorderStraightening::bestMove(int cell, std::vector<int>& owner, const std::
     int bestChange = 0;
     for (int neighbour : graph_.neighbours(cell)) {
         const int to = owner[static_cast<std::size_t>(neighbour)];
-        if (to < 0 || to == from || to == best || cost[static_cast<std::size_t>(to)] + cellCost > ceiling)
+        if (to < 0 || to == from || to == best)
             continue;
+        if (cost[static_cast<std::size_t>(to)] + cellCost > ceiling) {
+            refused = true;
+            continue;
+        }
         if (before < 0)
             before = blockedAround(cell, owner);
         owner[static_cast<std::size_t>(cell)] = to;
@@ -112,36 +117,123 @@ int BorderStraightening::bestMove(int cell, std::vector<int>& owner, const std::
     return best;
 }
 
+// Blocked cells among the given ones and their neighbours, each counted once.
+int BorderStraightening::blockedNear(const std::vector<int>& cells, const std::vector<int>& owner) const {
+    std::vector<int> near(cells);
+    for (int cell : cells)
+        for (int neighbour : graph_.neighbours(cell))
+            near.push_back(neighbour);
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    int count = 0;
+    for (int cell : near)
+        if (blocksRuns(cell, owner))
+            ++count;
+    return count;
+}
+
+// A cell with the next one along a straight line in its region, both to a neighbouring region: a border
+// step that no single move straightens.
+int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ceiling) const {
+    std::vector<int>& owner = regions.robotOfCell;
+    std::vector<double>& cost = regions.costSeconds;
+    const int from = owner[static_cast<std::size_t>(cell)];
+    for (std::size_t side = 0; side < 4; ++side) {
+        const int partner = straightNeighbour(cell, side);
+        if (partner < 0 || owner[static_cast<std::size_t>(partner)] != from || isStart(partner, regions))
+            continue;
+        const double pairCost = graph_.cell(static_cast<std::size_t>(cell)).coverSeconds() +
+                                graph_.cell(static_cast<std::size_t>(partner)).coverSeconds();
+        const std::vector<int> pair{cell, partner};
+        for (int neighbour : graph_.neighbours(cell)) {
+            const int to = owner[static_cast<std::size_t>(neighbour)];
+            if (to < 0 || to == from || cost[static_cast<std::size_t>(to)] + pairCost > ceiling)
+                continue;
+            const int before = blockedNear(pair, owner);
+            owner[static_cast<std::size_t>(cell)] = to;
+            owner[static_cast<std::size_t>(partner)] = to;
+            const int after = blockedNear(pair, owner);
+            owner[static_cast<std::size_t>(cell)] = from;
+            owner[static_cast<std::size_t>(partner)] = from;
+            if (after >= before || !staysConnectedWithout(cell, owner))
+                continue;
+            owner[static_cast<std::size_t>(cell)] = to;
+            const bool connected = staysConnectedWithout(partner, owner);
+            owner[static_cast<std::size_t>(cell)] = from;
+            if (!connected)
+                continue;
+            owner[static_cast<std::size_t>(cell)] = to;
+            owner[static_cast<std::size_t>(partner)] = to;
+            cost[static_cast<std::size_t>(from)] -= pairCost;
+            cost[static_cast<std::size_t>(to)] += pairCost;
+            return partner;
+        }
+    }
+    return -1;
+}
+
+bool BorderStraightening::onBorder(int cell, const std::vector<int>& owner) const {
+    const int region = owner[static_cast<std::size_t>(cell)];
+    for (int neighbour : graph_.neighbours(cell)) {
+        const int other = owner[static_cast<std::size_t>(neighbour)];
+        if (other >= 0 && other != region)
+            return true;
+    }
+    return false;
+}
+
+bool BorderStraightening::isStart(int cell, const RegionAllocation& regions) {
+    return std::find(regions.startCell.begin(), regions.startCell.end(), cell) != regions.startCell.end();
+}
+
 int BorderStraightening::straighten(RegionAllocation& regions) const {
     std::vector<int>& owner = regions.robotOfCell;
     std::vector<double>& cost = regions.costSeconds;
     if (cost.empty())
         return 0;
     const double ceiling = *std::max_element(cost.begin(), cost.end()) * (1.0 + slack_);
-    auto isStart = [&](int cell) {
-        return std::find(regions.startCell.begin(), regions.startCell.end(), cell) != regions.startCell.end();
-    };
-    // Every pass looks at every cell: a move elsewhere may have made room under the ceiling.
+    // The first pass looks at every cell, later ones at those near a move and those a region refused for
+    // its cost: moves elsewhere may have made room under the ceiling since.
+    std::vector<int> pending(graph_.size());
+    std::iota(pending.begin(), pending.end(), 0);
+    std::vector<int> queuedFor(graph_.size(), 0);
     int moved = 0;
-    for (int pass = 0; pass < passLimit; ++pass) {
-        int movedThisPass = 0;
-        for (std::size_t id = 0; id < graph_.size(); ++id) {
-            const int cell = static_cast<int>(id);
-            const int from = owner[id];
-            if (from < 0)
+    for (int pass = 1; pass <= passLimit && !pending.empty(); ++pass) {
+        std::vector<int> next;
+        const auto queue = [&](int cell) {
+            if (queuedFor[static_cast<std::size_t>(cell)] != pass) {
+                queuedFor[static_cast<std::size_t>(cell)] = pass;
+                next.push_back(cell);
+            }
+        };
+        for (int cell : pending) {
+            const int from = owner[static_cast<std::size_t>(cell)];
+            if (from < 0 || !onBorder(cell, owner) || isStart(cell, regions))
                 continue;
-            const int to = bestMove(cell, owner, cost, ceiling);
-            if (to < 0 || isStart(cell) || !staysConnectedWithout(cell, owner))
+            bool refused = false;
+            const int to = bestMove(cell, owner, cost, ceiling, refused);
+            int partner = -1;
+            if (to >= 0 && staysConnectedWithout(cell, owner)) {
+                const double cellCost = graph_.cell(static_cast<std::size_t>(cell)).coverSeconds();
+                owner[static_cast<std::size_t>(cell)] = to;
+                cost[static_cast<std::size_t>(from)] -= cellCost;
+                cost[static_cast<std::size_t>(to)] += cellCost;
+                ++moved;
+            } else if ((partner = movePair(cell, regions, ceiling)) >= 0) {
+                moved += 2;
+            } else {
+                if (refused)
+                    queue(cell);
                 continue;
-            const double cellCost = graph_.cell(id).coverSeconds();
-            owner[id] = to;
-            cost[static_cast<std::size_t>(from)] -= cellCost;
-            cost[static_cast<std::size_t>(to)] += cellCost;
-            ++movedThisPass;
+            }
+            for (int changed : {cell, partner})
+                if (changed >= 0)
+                    for (int neighbour : graph_.neighbours(changed))
+                        for (int around : graph_.neighbours(neighbour))
+                            queue(around);
         }
-        moved += movedThisPass;
-        if (movedThisPass == 0)
-            break;
+        std::sort(next.begin(), next.end()); // cell order, as the first pass
+        pending = std::move(next);
     }
     return moved;
 }

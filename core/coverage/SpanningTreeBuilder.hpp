@@ -25,7 +25,9 @@ class SpanningTreeBuilder {
     [[nodiscard]] SpanningTree fewestTurns(std::vector<int> cells, int rootCell) const;
 
     // The trees coverage planners choose among by the turns of their walks: fewestTurns first, then
-    // preferring east-west and north-south (these win now and then on mixed cell sizes).
+    // preferring east-west and north-south. On one cell size fewestTurns always won in the benchmarks;
+    // on quadtree maps the others win some regions (a forest map of 4.8 M cells: 54 990 turns with
+    // fewestTurns alone, 50 746 with the best of the three).
     static constexpr int candidateCount = 3;
     [[nodiscard]] SpanningTree candidate(int which, std::vector<int> cells, int rootCell) const;
 

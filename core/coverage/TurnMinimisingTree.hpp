@@ -19,7 +19,7 @@ class TurnMinimisingTree {
   public:
     struct Options {
         int cycleLimit = 64;
-        int swapPasses = 4;
+        int swapPasses = 2;
     };
 
     explicit TurnMinimisingTree(const RegionAdjacency& adjacency, Options options);

@@ -3,6 +3,7 @@
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 #include "core/allocation/BorderStraightening.hpp"
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/TurnCalibration.hpp"
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
@@ -82,6 +83,13 @@ void MlctPlanner::run(PlanningRun& run) const {
             plan.paths = std::move(paths);
         }
         return 0;
+    });
+    // Costs only estimate path times: border cells pass from the longest path to shorter neighbours, paths
+    // replanned, while that shortens the longest. Bounded to about half a second of replanning.
+    const PathTimeBalancing balancing(coverage,
+                                      std::min<std::size_t>(250'000 + 2 * plan.cells.size(), 1'000'000));
+    run.stage("path balance", [&] {
+        return balancing.balance(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });
 }
 

@@ -46,7 +46,7 @@ class MlctPlannerTest : public QObject {
         QCOMPARE(plan.metrics.coveredFraction, 1.0);
         QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 0.0);
         QVERIFY(plan.metrics.ratio >= 1.0 && plan.metrics.ratio < 1.03);
-        QCOMPARE(plan.metrics.stageMilliseconds.size(), std::size_t{7});
+        QCOMPARE(plan.metrics.stageMilliseconds.size(), std::size_t{8});
     }
 
     void startOnObstacleIsNamed() {
