@@ -90,6 +90,15 @@ void uniformGridFreeTurns(benchmark::State& state, const std::string& planner) {
                planner, freeTurns);
 }
 
+// MCPP-MLCT's balance-for-turns trade: fewer_turns_slack of range(2) tenths of a percent.
+void uniformGridTurnSlack(benchmark::State& state) {
+    ParameterValues slack;
+    slack.set("fewer_turns_slack", static_cast<double>(state.range(2)) / 10.0);
+    runPlanner(state,
+               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+               "mcpp-mlct", slack);
+}
+
 void multiCoverMapFreeTurns(benchmark::State& state) {
     ParameterValues freeTurns;
     freeTurns.set("turn_s", 0.0);
@@ -118,6 +127,9 @@ BENCHMARK_CAPTURE(uniformGrid, mcpp_mlct, std::string("mcpp-mlct"))
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(uniformGridFreeTurns, mcpp_mlct_free_turns, std::string("mcpp-mlct"))
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridTurnSlack)
+    ->ArgsProduct({{49, 200}, {8, 20}, {0, 2, 10, 50}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(uniformGrid, darp, std::string("darp"))
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})

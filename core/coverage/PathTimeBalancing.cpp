@@ -44,76 +44,178 @@ bool balanced(const std::vector<CoveragePath>& paths) {
     return paths.empty() || longest <= 1.002 * total / static_cast<double>(paths.size());
 }
 
+// One balancing run: regions, their cells and paths, kept in step.
+class Balancer {
+  public:
+    Balancer(const CellGraph& graph, const SpanningTreeCoverage& coverage, RegionAllocation& regions,
+             std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts)
+        : graph_(graph), coverage_(coverage), regions_(regions), paths_(paths), starts_(starts),
+          cells_(cellsByRobot(regions)), scratchIndex_(graph.size(), -1) {}
+
+    [[nodiscard]] std::size_t longest() const {
+        return static_cast<std::size_t>(std::max_element(paths_.begin(), paths_.end(),
+                                                         [](const CoveragePath& a, const CoveragePath& b) {
+                                                             return a.timeSeconds < b.timeSeconds;
+                                                         }) -
+                                        paths_.begin());
+    }
+
+    // Regions reachable from `from` through neighbouring regions, each with the chain leading to it,
+    // the shortest paths first.
+    [[nodiscard]] std::vector<std::vector<int>> chainsFrom(int from) const {
+        const std::size_t robots = paths_.size();
+        std::vector<std::vector<char>> touches(robots, std::vector<char>(robots, 0));
+        for (std::size_t id = 0; id < graph_.size(); ++id) {
+            const int a = regions_.robotOfCell[id];
+            if (a < 0)
+                continue;
+            for (int neighbour : graph_.neighbours(static_cast<int>(id))) {
+                const int b = regions_.robotOfCell[static_cast<std::size_t>(neighbour)];
+                if (b >= 0 && b != a)
+                    touches[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)] = 1;
+            }
+        }
+        std::vector<int> previous(robots, -2);
+        std::vector<int> queue{from};
+        previous[static_cast<std::size_t>(from)] = -1;
+        for (std::size_t head = 0; head < queue.size(); ++head)
+            for (std::size_t next = 0; next < robots; ++next)
+                if (touches[static_cast<std::size_t>(queue[head])][next] != 0 && previous[next] == -2) {
+                    previous[next] = queue[head];
+                    queue.push_back(static_cast<int>(next));
+                }
+        std::vector<int> targets(queue.begin() + 1, queue.end());
+        std::stable_sort(targets.begin(), targets.end(), [&](int a, int b) {
+            return paths_[static_cast<std::size_t>(a)].timeSeconds <
+                   paths_[static_cast<std::size_t>(b)].timeSeconds;
+        });
+        std::vector<std::vector<int>> chains;
+        for (int target : targets) {
+            std::vector<int> chain;
+            for (int at = target; at >= 0; at = previous[static_cast<std::size_t>(at)])
+                chain.push_back(at);
+            std::reverse(chain.begin(), chain.end());
+            chains.push_back(std::move(chain));
+        }
+        return chains;
+    }
+
+    // Passes one cell along each link of the chain and replans its regions; keeps the change when every
+    // new path is shorter than `makespan`. Returns the cells planned.
+    std::size_t tryChain(const std::vector<int>& chain, double makespan, bool& accepted) {
+        std::vector<std::pair<int, int>> passed; // cell, giver
+        accepted = false;
+        for (std::size_t link = 0; link + 1 < chain.size(); ++link) {
+            const int cell = cellToPass(chain[link], chain[link + 1]);
+            if (cell < 0)
+                break;
+            moveCell(cell, chain[link], chain[link + 1]);
+            passed.emplace_back(cell, chain[link]);
+        }
+        if (passed.size() + 1 != chain.size()) {
+            undo(passed);
+            return 0;
+        }
+        std::vector<CoveragePath> replanned;
+        std::size_t planned = 0;
+        bool shorter = true;
+        for (int robot : chain) {
+            const auto r = static_cast<std::size_t>(robot);
+            replanned.push_back(coverage_.regionPath(graph_, cells_[r], regions_.startCell[r], robot,
+                                                     starts_[r], scratchIndex_));
+            planned += cells_[r].size();
+            shorter = shorter && replanned.back().timeSeconds < makespan - 1e-9;
+        }
+        if (!shorter) {
+            undo(passed);
+            return planned;
+        }
+        for (std::size_t i = 0; i < chain.size(); ++i)
+            paths_[static_cast<std::size_t>(chain[i])] = std::move(replanned[i]);
+        accepted = true;
+        return planned;
+    }
+
+    [[nodiscard]] std::size_t cellsIn(const std::vector<int>& chain) const {
+        std::size_t count = 0;
+        for (int robot : chain)
+            count += cells_[static_cast<std::size_t>(robot)].size();
+        return count;
+    }
+
+  private:
+    // The giver's border cell next to the receiver that it can spare, most surrounded by the receiver.
+    [[nodiscard]] int cellToPass(int giver, int receiver) const {
+        const auto& owner = regions_.robotOfCell;
+        int best = -1;
+        int bestContacts = 0;
+        for (int cell : cells_[static_cast<std::size_t>(giver)]) {
+            if (cell == regions_.startCell[static_cast<std::size_t>(giver)])
+                continue;
+            int contacts = 0;
+            for (int neighbour : graph_.neighbours(cell))
+                contacts += owner[static_cast<std::size_t>(neighbour)] == receiver ? 1 : 0;
+            if (contacts > bestContacts &&
+                connectedWithout(graph_, owner, cell, cells_[static_cast<std::size_t>(giver)].size())) {
+                best = cell;
+                bestContacts = contacts;
+            }
+        }
+        return best;
+    }
+
+    void moveCell(int cell, int from, int to) {
+        auto& giverCells = cells_[static_cast<std::size_t>(from)];
+        auto& takerCells = cells_[static_cast<std::size_t>(to)];
+        giverCells.erase(std::lower_bound(giverCells.begin(), giverCells.end(), cell));
+        takerCells.insert(std::lower_bound(takerCells.begin(), takerCells.end(), cell), cell);
+        regions_.robotOfCell[static_cast<std::size_t>(cell)] = to;
+        const double cost = graph_.cell(cell).coverSeconds();
+        regions_.costSeconds[static_cast<std::size_t>(from)] -= cost;
+        regions_.costSeconds[static_cast<std::size_t>(to)] += cost;
+    }
+
+    void undo(const std::vector<std::pair<int, int>>& passed) {
+        for (auto it = passed.rbegin(); it != passed.rend(); ++it)
+            moveCell(it->first, regions_.robotOfCell[static_cast<std::size_t>(it->first)], it->second);
+    }
+
+    const CellGraph& graph_;
+    const SpanningTreeCoverage& coverage_;
+    RegionAllocation& regions_;
+    std::vector<CoveragePath>& paths_;
+    const std::vector<MapPoint>& starts_;
+    std::vector<std::vector<int>> cells_;
+    std::vector<int> scratchIndex_;
+};
+
 } // namespace
 
 int PathTimeBalancing::balance(const CellGraph& graph, RegionAllocation& regions,
                                std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts,
                                const ProgressReporter& progress) const {
-    std::vector<std::vector<int>> cells = cellsByRobot(regions);
-    std::vector<int>& owner = regions.robotOfCell;
-    std::vector<int> scratchIndex(graph.size(), -1);
-    const auto replan = [&](std::size_t robot) {
-        return coverage_.regionPath(graph, cells[robot], regions.startCell[robot], static_cast<int>(robot),
-                                    starts[robot], scratchIndex);
-    };
+    Balancer balancer(graph, coverage_, regions, paths, starts);
     std::size_t spent = 0;
     int moved = 0;
     while (spent < cellBudget_ && !balanced(paths)) {
         progress.throwIfCancelled();
-        const auto longest =
-            static_cast<std::size_t>(std::max_element(paths.begin(), paths.end(),
-                                                      [](const CoveragePath& a, const CoveragePath& b) {
-                                                          return a.timeSeconds < b.timeSeconds;
-                                                      }) -
-                                     paths.begin());
+        const std::size_t longest = balancer.longest();
         const double makespan = paths[longest].timeSeconds;
-        // Border cells of the longest region, with the neighbouring region each could go to, shortest first.
-        std::vector<std::pair<double, std::pair<int, int>>> offers;
-        for (int cell : cells[longest]) {
-            if (cell == regions.startCell[longest])
-                continue;
-            for (int neighbour : graph.neighbours(cell)) {
-                const int other = owner[static_cast<std::size_t>(neighbour)];
-                if (other >= 0 && static_cast<std::size_t>(other) != longest &&
-                    paths[static_cast<std::size_t>(other)].timeSeconds < makespan)
-                    offers.push_back({paths[static_cast<std::size_t>(other)].timeSeconds, {cell, other}});
-            }
-        }
-        std::sort(offers.begin(), offers.end());
-        offers.erase(std::unique(offers.begin(), offers.end()), offers.end());
-        bool improved = false;
+        bool accepted = false;
         int trials = 0;
-        for (const auto& [time, offer] : offers) {
-            const auto [cell, other] = offer;
-            const auto receiver = static_cast<std::size_t>(other);
-            if (spent >= cellBudget_ || trials == trialsPerStep)
+        for (const auto& chain : balancer.chainsFrom(static_cast<int>(longest))) {
+            if (trials++ == trialsPerStep ||
+                paths[static_cast<std::size_t>(chain.back())].timeSeconds >= makespan)
                 break;
-            if (!connectedWithout(graph, owner, cell, cells[longest].size()))
+            if (spent + balancer.cellsIn(chain) > cellBudget_)
                 continue;
-            auto& giverCells = cells[longest];
-            auto& takerCells = cells[receiver];
-            giverCells.erase(std::find(giverCells.begin(), giverCells.end(), cell));
-            takerCells.insert(std::lower_bound(takerCells.begin(), takerCells.end(), cell), cell);
-            owner[static_cast<std::size_t>(cell)] = other;
-            ++trials;
-            CoveragePath giverPath = replan(longest);
-            CoveragePath takerPath = replan(receiver);
-            spent += giverCells.size() + takerCells.size();
-            if (std::max(giverPath.timeSeconds, takerPath.timeSeconds) < makespan - 1e-9) {
-                const double cellCost = graph.cell(cell).coverSeconds();
-                regions.costSeconds[longest] -= cellCost;
-                regions.costSeconds[receiver] += cellCost;
-                paths[longest] = std::move(giverPath);
-                paths[receiver] = std::move(takerPath);
-                ++moved;
-                improved = true;
+            spent += balancer.tryChain(chain, makespan, accepted);
+            if (accepted) {
+                moved += static_cast<int>(chain.size()) - 1;
                 break;
             }
-            owner[static_cast<std::size_t>(cell)] = static_cast<int>(longest);
-            takerCells.erase(std::lower_bound(takerCells.begin(), takerCells.end(), cell));
-            giverCells.insert(std::lower_bound(giverCells.begin(), giverCells.end(), cell), cell);
         }
-        if (!improved)
+        if (!accepted)
             break;
     }
     return moved;

@@ -11,11 +11,12 @@
 
 namespace mcpp {
 
-// The last step to balance: costs estimate each path's time, the paths are the time. The robot with the
-// longest path gives a border cell to a neighbouring region whose path is shorter, both paths are planned
-// again, and the move stays when the longer of the two new paths is shorter than the old longest. It stops
-// when the longest path has no such move or the trials run out (each replans two regions, so the budget is
-// counted in cells planned).
+// The last step to balance: costs estimate each path's time, the paths are the time. The region with the
+// longest path passes a border cell along a chain of neighbouring regions to one whose path is shorter
+// (the shortest first, a direct neighbour being a chain of one), the chain's paths are planned again, and
+// the change stays when every new path is shorter than the old longest. It stops when the paths are within
+// 0.2 % of their mean, when no chain helps the longest, or when the budget, counted in cells planned, is
+// spent (a chain whose regions do not fit in what is left is not tried).
 class PathTimeBalancing {
   public:
     PathTimeBalancing(const SpanningTreeCoverage& coverage, std::size_t cellBudget)
