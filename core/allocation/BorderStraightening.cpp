@@ -66,7 +66,8 @@ int BorderStraightening::blockedAround(int cell, const std::vector<int>& owner) 
 }
 
 // Whether the cell's region neighbours still reach each other without it, searching near it only.
-bool BorderStraightening::staysConnectedWithout(int cell, const std::vector<int>& owner) const {
+bool BorderStraightening::staysConnectedWithout(int cell, const std::vector<int>& owner,
+                                                VisitMarks& marks) const {
     const int region = owner[static_cast<std::size_t>(cell)];
     std::vector<int> targets;
     for (int neighbour : graph_.neighbours(cell))
@@ -74,14 +75,18 @@ bool BorderStraightening::staysConnectedWithout(int cell, const std::vector<int>
             targets.push_back(neighbour);
     if (targets.size() <= 1)
         return !targets.empty();
-    std::vector<int> seen{cell, targets.front()};
+    const int mark = ++marks.value;
+    marks.stamp[static_cast<std::size_t>(cell)] = mark;
+    marks.stamp[static_cast<std::size_t>(targets.front())] = mark;
+    std::vector<int> queue{targets.front()};
     std::size_t found = 1;
-    for (std::size_t head = 1; head < seen.size() && seen.size() < searchLimit; ++head)
-        for (int next : graph_.neighbours(seen[head])) {
+    for (std::size_t head = 0; head < queue.size() && queue.size() < searchLimit; ++head)
+        for (int next : graph_.neighbours(queue[head])) {
             if (owner[static_cast<std::size_t>(next)] != region ||
-                std::find(seen.begin(), seen.end(), next) != seen.end())
+                marks.stamp[static_cast<std::size_t>(next)] == mark)
                 continue;
-            seen.push_back(next);
+            marks.stamp[static_cast<std::size_t>(next)] = mark;
+            queue.push_back(next);
             if (std::find(targets.begin(), targets.end(), next) != targets.end() && ++found == targets.size())
                 return true;
         }
@@ -134,7 +139,8 @@ int BorderStraightening::blockedNear(const std::vector<int>& cells, const std::v
 
 // A cell with the next one along a straight line in its region, both to a neighbouring region: a border
 // step that no single move straightens.
-int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ceiling) const {
+int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ceiling,
+                                  VisitMarks& marks) const {
     std::vector<int>& owner = regions.robotOfCell;
     std::vector<double>& cost = regions.costSeconds;
     const int from = owner[static_cast<std::size_t>(cell)];
@@ -145,20 +151,22 @@ int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ce
         const double pairCost = graph_.cell(static_cast<std::size_t>(cell)).coverSeconds() +
                                 graph_.cell(static_cast<std::size_t>(partner)).coverSeconds();
         const std::vector<int> pair{cell, partner};
+        int before = -1; // counted once a region could take the pair
         for (int neighbour : graph_.neighbours(cell)) {
             const int to = owner[static_cast<std::size_t>(neighbour)];
             if (to < 0 || to == from || cost[static_cast<std::size_t>(to)] + pairCost > ceiling)
                 continue;
-            const int before = blockedNear(pair, owner);
+            if (before < 0)
+                before = blockedNear(pair, owner);
             owner[static_cast<std::size_t>(cell)] = to;
             owner[static_cast<std::size_t>(partner)] = to;
             const int after = blockedNear(pair, owner);
             owner[static_cast<std::size_t>(cell)] = from;
             owner[static_cast<std::size_t>(partner)] = from;
-            if (after >= before || !staysConnectedWithout(cell, owner))
+            if (after >= before || !staysConnectedWithout(cell, owner, marks))
                 continue;
             owner[static_cast<std::size_t>(cell)] = to;
-            const bool connected = staysConnectedWithout(partner, owner);
+            const bool connected = staysConnectedWithout(partner, owner, marks);
             owner[static_cast<std::size_t>(cell)] = from;
             if (!connected)
                 continue;
@@ -197,6 +205,7 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
     std::vector<int> pending(graph_.size());
     std::iota(pending.begin(), pending.end(), 0);
     std::vector<int> queuedFor(graph_.size(), 0);
+    VisitMarks marks{std::vector<int>(graph_.size(), 0)};
     int moved = 0;
     for (int pass = 1; pass <= passLimit && !pending.empty(); ++pass) {
         std::vector<int> next;
@@ -213,13 +222,13 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
             bool refused = false;
             const int to = bestMove(cell, owner, cost, ceiling, refused);
             int partner = -1;
-            if (to >= 0 && staysConnectedWithout(cell, owner)) {
+            if (to >= 0 && staysConnectedWithout(cell, owner, marks)) {
                 const double cellCost = graph_.cell(static_cast<std::size_t>(cell)).coverSeconds();
                 owner[static_cast<std::size_t>(cell)] = to;
                 cost[static_cast<std::size_t>(from)] -= cellCost;
                 cost[static_cast<std::size_t>(to)] += cellCost;
                 ++moved;
-            } else if ((partner = movePair(cell, regions, ceiling)) >= 0) {
+            } else if ((partner = movePair(cell, regions, ceiling, marks)) >= 0) {
                 moved += 2;
             } else {
                 if (refused)

@@ -1,37 +1,15 @@
 #include "core/coverage/PathTimeBalancing.hpp"
 
 #include <algorithm>
+#include <cassert>
 
 namespace mcpp {
 namespace {
 
-// Whether the region stays in one piece without the cell (a full search: regions here are small).
-bool connectedWithout(const CellGraph& graph, const std::vector<int>& owner, int cell, std::size_t size) {
-    const int region = owner[static_cast<std::size_t>(cell)];
-    int first = -1;
-    for (int neighbour : graph.neighbours(cell))
-        if (owner[static_cast<std::size_t>(neighbour)] == region) {
-            first = neighbour;
-            break;
-        }
-    if (first < 0)
-        return false;
-    std::vector<int> queue{first};
-    std::vector<char> seen(owner.size(), 0);
-    seen[static_cast<std::size_t>(first)] = 1;
-    seen[static_cast<std::size_t>(cell)] = 1;
-    for (std::size_t head = 0; head < queue.size(); ++head)
-        for (int next : graph.neighbours(queue[head]))
-            if (owner[static_cast<std::size_t>(next)] == region &&
-                seen[static_cast<std::size_t>(next)] == 0) {
-                seen[static_cast<std::size_t>(next)] = 1;
-                queue.push_back(next);
-            }
-    return queue.size() + 1 == size;
-}
-
 // Moves tried for one longest path before giving up: when the likeliest fail, the rest seldom help.
 constexpr int trialsPerStep = 32;
+// Cells a connectivity check may visit: a giver's cell whose neighbours do not meet again nearby is kept.
+constexpr std::size_t searchLimit = 256;
 
 // Within 0.2 % of the mean path time: what is left would cost more planning than it saves.
 bool balanced(const std::vector<CoveragePath>& paths) {
@@ -44,13 +22,22 @@ bool balanced(const std::vector<CoveragePath>& paths) {
     return paths.empty() || longest <= 1.002 * total / static_cast<double>(paths.size());
 }
 
-// One balancing run: regions, their cells and paths, kept in step.
+// One balancing run: regions, their cells, which regions touch, and paths, kept in step.
 class Balancer {
   public:
     Balancer(const CellGraph& graph, const SpanningTreeCoverage& coverage, RegionAllocation& regions,
              std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts)
         : graph_(graph), coverage_(coverage), regions_(regions), paths_(paths), starts_(starts),
-          cells_(cellsByRobot(regions)), scratchIndex_(graph.size(), -1) {}
+          cells_(cellsByRobot(regions)), scratchIndex_(graph.size(), -1), stamp_(graph.size(), 0),
+          touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
+        // Costs in the units of the cells as they are now (a turn calibration may have changed them).
+        regions_.costSeconds.assign(paths.size(), 0.0);
+        for (std::size_t robot = 0; robot < cells_.size(); ++robot) {
+            for (int cell : cells_[robot])
+                regions_.costSeconds[robot] += graph.cell(cell).coverSeconds();
+            findContacts(robot);
+        }
+    }
 
     [[nodiscard]] std::size_t longest() const {
         return static_cast<std::size_t>(std::max_element(paths_.begin(), paths_.end(),
@@ -60,27 +47,16 @@ class Balancer {
                                         paths_.begin());
     }
 
-    // Regions reachable from `from` through neighbouring regions, each with the chain leading to it,
-    // the shortest paths first.
+    // Regions reachable from `from` through neighbouring regions, each with the chain leading to it, the
+    // shortest paths first.
     [[nodiscard]] std::vector<std::vector<int>> chainsFrom(int from) const {
         const std::size_t robots = paths_.size();
-        std::vector<std::vector<char>> touches(robots, std::vector<char>(robots, 0));
-        for (std::size_t id = 0; id < graph_.size(); ++id) {
-            const int a = regions_.robotOfCell[id];
-            if (a < 0)
-                continue;
-            for (int neighbour : graph_.neighbours(static_cast<int>(id))) {
-                const int b = regions_.robotOfCell[static_cast<std::size_t>(neighbour)];
-                if (b >= 0 && b != a)
-                    touches[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)] = 1;
-            }
-        }
         std::vector<int> previous(robots, -2);
         std::vector<int> queue{from};
         previous[static_cast<std::size_t>(from)] = -1;
         for (std::size_t head = 0; head < queue.size(); ++head)
             for (std::size_t next = 0; next < robots; ++next)
-                if (touches[static_cast<std::size_t>(queue[head])][next] != 0 && previous[next] == -2) {
+                if (touches_[static_cast<std::size_t>(queue[head])][next] != 0 && previous[next] == -2) {
                     previous[next] = queue[head];
                     queue.push_back(static_cast<int>(next));
                 }
@@ -98,6 +74,13 @@ class Balancer {
             chains.push_back(std::move(chain));
         }
         return chains;
+    }
+
+    [[nodiscard]] std::size_t cellsIn(const std::vector<int>& chain) const {
+        std::size_t count = 0;
+        for (int robot : chain)
+            count += cells_[static_cast<std::size_t>(robot)].size();
+        return count;
     }
 
     // Passes one cell along each link of the chain and replans its regions; keeps the change when every
@@ -132,20 +115,60 @@ class Balancer {
         }
         for (std::size_t i = 0; i < chain.size(); ++i)
             paths_[static_cast<std::size_t>(chain[i])] = std::move(replanned[i]);
+        for (int robot : chain)
+            findContacts(static_cast<std::size_t>(robot));
         accepted = true;
         return planned;
     }
 
-    [[nodiscard]] std::size_t cellsIn(const std::vector<int>& chain) const {
-        std::size_t count = 0;
-        for (int robot : chain)
-            count += cells_[static_cast<std::size_t>(robot)].size();
-        return count;
+  private:
+    // The regions this one touches, both ways round (contact is mutual).
+    void findContacts(std::size_t robot) {
+        for (std::size_t other = 0; other < touches_.size(); ++other) {
+            touches_[robot][other] = 0;
+            touches_[other][robot] = 0;
+        }
+        for (int cell : cells_[robot])
+            for (int neighbour : graph_.neighbours(cell)) {
+                const int other = regions_.robotOfCell[static_cast<std::size_t>(neighbour)];
+                if (other >= 0 && static_cast<std::size_t>(other) != robot) {
+                    touches_[robot][static_cast<std::size_t>(other)] = 1;
+                    touches_[static_cast<std::size_t>(other)][robot] = 1;
+                }
+            }
     }
 
-  private:
+    // Whether the cell's region neighbours still reach each other without it, searching near it only.
+    [[nodiscard]] bool spareable(int cell) {
+        const auto& owner = regions_.robotOfCell;
+        const int region = owner[static_cast<std::size_t>(cell)];
+        std::vector<int> targets;
+        for (int neighbour : graph_.neighbours(cell))
+            if (owner[static_cast<std::size_t>(neighbour)] == region)
+                targets.push_back(neighbour);
+        if (targets.size() <= 1)
+            return !targets.empty();
+        ++stampValue_;
+        stamp_[static_cast<std::size_t>(cell)] = stampValue_;
+        stamp_[static_cast<std::size_t>(targets.front())] = stampValue_;
+        std::vector<int> queue{targets.front()};
+        std::size_t found = 1;
+        for (std::size_t head = 0; head < queue.size() && queue.size() < searchLimit; ++head)
+            for (int next : graph_.neighbours(queue[head])) {
+                if (owner[static_cast<std::size_t>(next)] != region ||
+                    stamp_[static_cast<std::size_t>(next)] == stampValue_)
+                    continue;
+                stamp_[static_cast<std::size_t>(next)] = stampValue_;
+                queue.push_back(next);
+                if (std::find(targets.begin(), targets.end(), next) != targets.end() &&
+                    ++found == targets.size())
+                    return true;
+            }
+        return false;
+    }
+
     // The giver's border cell next to the receiver that it can spare, most surrounded by the receiver.
-    [[nodiscard]] int cellToPass(int giver, int receiver) const {
+    [[nodiscard]] int cellToPass(int giver, int receiver) {
         const auto& owner = regions_.robotOfCell;
         int best = -1;
         int bestContacts = 0;
@@ -155,8 +178,7 @@ class Balancer {
             int contacts = 0;
             for (int neighbour : graph_.neighbours(cell))
                 contacts += owner[static_cast<std::size_t>(neighbour)] == receiver ? 1 : 0;
-            if (contacts > bestContacts &&
-                connectedWithout(graph_, owner, cell, cells_[static_cast<std::size_t>(giver)].size())) {
+            if (contacts > bestContacts && spareable(cell)) {
                 best = cell;
                 bestContacts = contacts;
             }
@@ -167,7 +189,9 @@ class Balancer {
     void moveCell(int cell, int from, int to) {
         auto& giverCells = cells_[static_cast<std::size_t>(from)];
         auto& takerCells = cells_[static_cast<std::size_t>(to)];
-        giverCells.erase(std::lower_bound(giverCells.begin(), giverCells.end(), cell));
+        const auto at = std::lower_bound(giverCells.begin(), giverCells.end(), cell);
+        assert(at != giverCells.end() && *at == cell); // cells_ stays sorted and in step with the owners
+        giverCells.erase(at);
         takerCells.insert(std::lower_bound(takerCells.begin(), takerCells.end(), cell), cell);
         regions_.robotOfCell[static_cast<std::size_t>(cell)] = to;
         const double cost = graph_.cell(cell).coverSeconds();
@@ -187,6 +211,9 @@ class Balancer {
     const std::vector<MapPoint>& starts_;
     std::vector<std::vector<int>> cells_;
     std::vector<int> scratchIndex_;
+    std::vector<int> stamp_;
+    int stampValue_ = 0;
+    std::vector<std::vector<char>> touches_;
 };
 
 } // namespace
@@ -194,6 +221,8 @@ class Balancer {
 int PathTimeBalancing::balance(const CellGraph& graph, RegionAllocation& regions,
                                std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts,
                                const ProgressReporter& progress) const {
+    if (paths.size() < 2 || balanced(paths))
+        return 0;
     Balancer balancer(graph, coverage_, regions, paths, starts);
     std::size_t spent = 0;
     int moved = 0;

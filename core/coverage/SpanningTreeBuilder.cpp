@@ -84,6 +84,11 @@ SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCe
     return SpanningTree(std::move(cells), rootNode, edges);
 }
 
+int SpanningTreeBuilder::candidatesFor(const std::vector<int>& cells) const {
+    const auto differs = [&](int cell) { return graph_.cell(cell).span != graph_.cell(cells.front()).span; };
+    return !cells.empty() && std::any_of(cells.begin(), cells.end(), differs) ? candidateCount : 1;
+}
+
 SpanningTree SpanningTreeBuilder::candidate(int which, std::vector<int> cells, int rootCell) const {
     if (which == 0)
         return fewestTurns(std::move(cells), rootCell);

@@ -25,10 +25,11 @@ class SpanningTreeBuilder {
     [[nodiscard]] SpanningTree fewestTurns(std::vector<int> cells, int rootCell) const;
 
     // The trees coverage planners choose among by the turns of their walks: fewestTurns first, then
-    // preferring east-west and north-south. On one cell size fewestTurns always won in the benchmarks;
-    // on quadtree maps the others win some regions (a forest map of 4.8 M cells: 54 990 turns with
-    // fewestTurns alone, 50 746 with the best of the three).
+    // preferring east-west and north-south. On one cell size fewestTurns won every region of the benchmarks,
+    // so the others are built only where cells differ in size; there they win some regions (a forest map of
+    // 4.8 M cells: 54 990 turns with fewestTurns alone, 50 746 with the best of the three).
     static constexpr int candidateCount = 3;
+    [[nodiscard]] int candidatesFor(const std::vector<int>& cells) const;
     [[nodiscard]] SpanningTree candidate(int which, std::vector<int> cells, int rootCell) const;
 
     // Spiral-STC (Gabriely & Rimon): a depth-first tree grown from the start, each cell scanning its

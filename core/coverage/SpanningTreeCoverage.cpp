@@ -29,11 +29,12 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
                                               std::vector<int>& scratchIndex) const {
     const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
-    // Both trees are judged by the shape of their walk; only the better one's path is stored.
+    // Candidate trees are judged by the shape of their walk; only the best one's path is stored.
     SpanningTree best;
     PathShape bestShape;
     bool haveBest = false;
-    for (int candidate = 0; candidate < SpanningTreeBuilder::candidateCount; ++candidate) {
+    const int candidates = trees.candidatesFor(cells);
+    for (int candidate = 0; candidate < candidates; ++candidate) {
         SpanningTree tree = trees.candidate(candidate, cells, startCell);
         const PathShape shape = walker.walkShape(tree, start, closedTour_);
         if (!haveBest || shape.turns() < bestShape.turns() ||

@@ -9,7 +9,9 @@ namespace mcpp {
 // The fewest straight runs ("bricks", as in TMSTC*) a region's cells split into: each cell lies in one
 // east-west or one north-south run of equal cells. Two straight adjacencies conflict when they meet at a
 // cell from perpendicular sides; the largest conflict-free set of them is the complement of a minimum
-// vertex cover of that bipartite graph (Konig), found by Hopcroft-Karp matching.
+// vertex cover of that bipartite graph (Konig), found by Hopcroft-Karp matching. The matching stops after
+// 16 phases, so on maps of a million cells the set may fall a few runs short of the largest; it is always
+// conflict-free.
 // Returns, per adjacency of `adjacency`, whether it joins two cells of one run.
 [[nodiscard]] std::vector<char> straightRuns(const RegionAdjacency& adjacency);
 

@@ -185,20 +185,26 @@ bool TurnMinimisingTree::trySwap(int edge) {
     const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
     const int u = e.first;
     const int v = e.second;
-    ++stampValue_;
+    // The lowest common ancestor: both walks climb in turn, and the first cell one reaches that the other
+    // has passed is it. Each climbs at most cycleLimit cells.
+    const int fromFirst = ++stampValue_;
+    const int fromSecond = ++stampValue_;
     int meeting = -1;
-    {
-        int node = u;
-        for (int step = 0; node >= 0 && step <= options_.cycleLimit;
-             ++step, node = parent_[static_cast<std::size_t>(node)])
-            stamp_[static_cast<std::size_t>(node)] = stampValue_;
-        node = v;
-        for (int step = 0; node >= 0 && step <= options_.cycleLimit;
-             ++step, node = parent_[static_cast<std::size_t>(node)])
-            if (stamp_[static_cast<std::size_t>(node)] == stampValue_) {
-                meeting = node;
-                break;
-            }
+    int a = u;
+    int b = v;
+    for (int step = 0; step <= options_.cycleLimit && meeting < 0 && (a >= 0 || b >= 0); ++step) {
+        if (a >= 0) {
+            if (stamp_[static_cast<std::size_t>(a)] == fromSecond)
+                meeting = a;
+            stamp_[static_cast<std::size_t>(a)] = fromFirst;
+            a = parent_[static_cast<std::size_t>(a)];
+        }
+        if (b >= 0 && meeting < 0) {
+            if (stamp_[static_cast<std::size_t>(b)] == fromFirst)
+                meeting = b;
+            stamp_[static_cast<std::size_t>(b)] = fromSecond;
+            b = parent_[static_cast<std::size_t>(b)];
+        }
     }
     if (meeting < 0)
         return false;
@@ -235,7 +241,8 @@ bool TurnMinimisingTree::trySwap(int edge) {
 
 // Makes `from` the top of the chain from..to (to's parent edge already dropped) and hangs it from newParent.
 void TurnMinimisingTree::reverseChain(int from, int to, int newParent, int viaEdge) {
-    std::vector<int> chain{from};
+    std::vector<int>& chain = chain_;
+    chain.assign(1, from);
     while (chain.back() != to)
         chain.push_back(parent_[static_cast<std::size_t>(chain.back())]);
     for (std::size_t i = chain.size() - 1; i > 0; --i) {

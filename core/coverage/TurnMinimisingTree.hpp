@@ -13,8 +13,8 @@ namespace mcpp {
 // the tree enters from one side (a leaf), from two perpendicular sides or from three, four times in a cell
 // joined on all four, and never in a cell joined on two opposite sides only. The tree is built in three
 // steps: the fewest straight runs (straightRuns), joined where that adds the fewest turns (cheapest first,
-// costs updated as cells gain sides), then edge swaps that lower the count, each closing a cycle of at most
-// `cycleLimit` cells so the work stays linear in the region's size.
+// costs updated as cells gain sides), then edge swaps that lower the count, each closing a cycle whose two
+// sides climb at most `cycleLimit` cells each, so the work stays linear in the region's size.
 class TurnMinimisingTree {
   public:
     struct Options {
@@ -50,6 +50,7 @@ class TurnMinimisingTree {
     std::vector<int> parentEdge_;
     std::vector<int> stamp_;
     int stampValue_ = 0;
+    std::vector<int> chain_; // reverseChain's buffer
 };
 
 } // namespace mcpp

@@ -22,7 +22,8 @@ std::vector<Waypoint> partTour(const CellGraph& graph, const StartComponent& par
     TreeCircumnavigation walker(graph);
     std::vector<Waypoint> best;
     int fewestTurns = std::numeric_limits<int>::max();
-    for (int candidate = 0; candidate < SpanningTreeBuilder::candidateCount; ++candidate) {
+    const int candidates = trees.candidatesFor(part.cells);
+    for (int candidate = 0; candidate < candidates; ++candidate) {
         std::vector<Waypoint> walk =
             walker.walk(trees.candidate(candidate, part.cells, rootCell), start, true);
         if (walk.size() > 1)

@@ -104,13 +104,19 @@ class PathTimeBalancingTest : public QObject {
         QCOMPARE(split.regions.robotOfCell, owner);
     }
 
-    // No budget, no replanning.
+    // A budget below what one chain would replan (the two regions hold 64 cells): nothing is tried.
     void budgetIsHonoured() {
         Split split(6);
         const SpanningTreeCoverage coverage;
         std::vector<CoveragePath> paths = coverage.plan(split.graph, split.regions, split.starts, {});
-        QCOMPARE(PathTimeBalancing(coverage, 0).balance(split.graph, split.regions, paths, split.starts, {}),
+        const std::vector<int> owner = split.regions.robotOfCell;
+        const double before = longestPathSeconds(paths);
+        QCOMPARE(PathTimeBalancing(coverage, 63).balance(split.graph, split.regions, paths, split.starts, {}),
                  0);
+        QCOMPARE(split.regions.robotOfCell, owner);
+        QCOMPARE(longestPathSeconds(paths), before);
+        QVERIFY(PathTimeBalancing(coverage, 64).balance(split.graph, split.regions, paths, split.starts, {}) >
+                0);
     }
 };
 

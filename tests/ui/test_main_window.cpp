@@ -670,7 +670,11 @@ class TestMainWindow : public QObject {
         const ClassGrid& grid = *window.document()->grid();
         const double middleX = grid.originX + grid.width() / 2.0;
         const double middleY = grid.minY() + grid.height() / 2.0;
-        const double side = 0.03 * std::max(grid.width(), grid.height());
+        // 30 pixels a side on screen, well over the 10 pixels a drag must cover to count as a rectangle.
+        const double metresPerPixel =
+            grid.width() / std::max(1.0, static_cast<double>(at(grid.originX + grid.width(), middleY).x() -
+                                                             at(grid.originX, middleY).x()));
+        const double side = 30.0 * metresPerPixel;
         std::pair<QPoint, QPoint> offMap;
         for (const auto& [x, y] :
              std::vector<std::pair<double, double>>{{grid.originX - 2.0 * side, middleY},
