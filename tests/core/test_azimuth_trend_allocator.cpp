@@ -7,6 +7,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -130,6 +131,35 @@ class AzimuthTrendAllocatorTest : public QObject {
                                     .arg(mean)));
             QVERIFY(maximumOverMean(plan.regions) < 1.03);
         }
+    }
+
+    // The core benchmark's 49 x 49 grid with 20 robots (seed 2020): the growth wraps two regions in bands one
+    // cell wide that cannot spare a single cell; before pieces could move, they kept 85 cells against 104.
+    void regionsWalledInByThinBandsStillGetTheirShare() {
+        std::mt19937 random(2020);
+        std::bernoulli_distribution obstacle(0.15);
+        std::vector<bool> blocked(49 * 49);
+        for (std::size_t i = 0; i < blocked.size(); ++i)
+            blocked[i] = obstacle(random);
+        auto problem = test::uniformProblem(49, 49, 10.0, blocked, {});
+        std::uniform_int_distribution<int> position(0, 48);
+        std::set<std::pair<int, int>> used;
+        while (problem.starts.size() < 20) {
+            const int column = position(random);
+            const int row = position(random);
+            if (blocked[static_cast<std::size_t>(row * 49 + column)] || !used.insert({column, row}).second)
+                continue;
+            problem.starts.push_back(test::pixelCentre(problem.grid, column, row));
+        }
+        const Plan plan = allocateOnly(problem);
+        QVERIFY2(test::checkRegions(plan).empty(),
+                 qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+        const auto counts = cellsPerRobot(plan.regions);
+        const double mean = std::accumulate(counts.begin(), counts.end(), 0.0) / 20.0;
+        const auto [smallest, largest] = std::minmax_element(counts.begin(), counts.end());
+        QVERIFY2(
+            *smallest >= std::floor(mean) - 1 && *largest <= std::ceil(mean) + 1,
+            qPrintable(QString("regions of %1 to %2 cells, mean %3").arg(*smallest).arg(*largest).arg(mean)));
     }
 
     void sameInputSameAllocation() {
