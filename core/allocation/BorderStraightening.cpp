@@ -65,34 +65,6 @@ int BorderStraightening::blockedAround(int cell, const std::vector<int>& owner) 
     return count;
 }
 
-// Whether the cell's region neighbours still reach each other without it, searching near it only.
-bool BorderStraightening::staysConnectedWithout(int cell, const std::vector<int>& owner,
-                                                VisitMarks& marks) const {
-    const int region = owner[static_cast<std::size_t>(cell)];
-    std::vector<int> targets;
-    for (int neighbour : graph_.neighbours(cell))
-        if (owner[static_cast<std::size_t>(neighbour)] == region)
-            targets.push_back(neighbour);
-    if (targets.size() <= 1)
-        return !targets.empty();
-    const int mark = ++marks.value;
-    marks.stamp[static_cast<std::size_t>(cell)] = mark;
-    marks.stamp[static_cast<std::size_t>(targets.front())] = mark;
-    std::vector<int> queue{targets.front()};
-    std::size_t found = 1;
-    for (std::size_t head = 0; head < queue.size() && queue.size() < searchLimit; ++head)
-        for (int next : graph_.neighbours(queue[head])) {
-            if (owner[static_cast<std::size_t>(next)] != region ||
-                marks.stamp[static_cast<std::size_t>(next)] == mark)
-                continue;
-            marks.stamp[static_cast<std::size_t>(next)] = mark;
-            queue.push_back(next);
-            if (std::find(targets.begin(), targets.end(), next) != targets.end() && ++found == targets.size())
-                return true;
-        }
-    return false;
-}
-
 // Tries the cell in each neighbouring region, restoring its owner after each trial.
 int BorderStraightening::bestMove(int cell, std::vector<int>& owner, const std::vector<double>& cost,
                                   double ceiling, bool& refused) const {
@@ -140,7 +112,7 @@ int BorderStraightening::blockedNear(const std::vector<int>& cells, const std::v
 // A cell with the next one along a straight line in its region, both to a neighbouring region: a border
 // step that no single move straightens.
 int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ceiling,
-                                  VisitMarks& marks) const {
+                                  LocalConnectivity& connectivity) const {
     std::vector<int>& owner = regions.robotOfCell;
     std::vector<double>& cost = regions.costSeconds;
     const int from = owner[static_cast<std::size_t>(cell)];
@@ -163,10 +135,10 @@ int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ce
             const int after = blockedNear(pair, owner);
             owner[static_cast<std::size_t>(cell)] = from;
             owner[static_cast<std::size_t>(partner)] = from;
-            if (after >= before || !staysConnectedWithout(cell, owner, marks))
+            if (after >= before || !connectivity.canRemove(cell, owner))
                 continue;
             owner[static_cast<std::size_t>(cell)] = to;
-            const bool connected = staysConnectedWithout(partner, owner, marks);
+            const bool connected = connectivity.canRemove(partner, owner);
             owner[static_cast<std::size_t>(cell)] = from;
             if (!connected)
                 continue;
@@ -205,7 +177,7 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
     std::vector<int> pending(graph_.size());
     std::iota(pending.begin(), pending.end(), 0);
     std::vector<int> queuedFor(graph_.size(), 0);
-    VisitMarks marks{std::vector<int>(graph_.size(), 0)};
+    LocalConnectivity connectivity(graph_, searchLimit);
     int moved = 0;
     for (int pass = 1; pass <= passLimit && !pending.empty(); ++pass) {
         std::vector<int> next;
@@ -222,13 +194,13 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
             bool refused = false;
             const int to = bestMove(cell, owner, cost, ceiling, refused);
             int partner = -1;
-            if (to >= 0 && staysConnectedWithout(cell, owner, marks)) {
+            if (to >= 0 && connectivity.canRemove(cell, owner)) {
                 const double cellCost = graph_.cell(static_cast<std::size_t>(cell)).coverSeconds();
                 owner[static_cast<std::size_t>(cell)] = to;
                 cost[static_cast<std::size_t>(from)] -= cellCost;
                 cost[static_cast<std::size_t>(to)] += cellCost;
                 ++moved;
-            } else if ((partner = movePair(cell, regions, ceiling, marks)) >= 0) {
+            } else if ((partner = movePair(cell, regions, ceiling, connectivity)) >= 0) {
                 moved += 2;
             } else {
                 if (refused)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/CellGraph.hpp"
+#include "core/model/LocalConnectivity.hpp"
 #include "core/model/RegionAllocation.hpp"
 #include "core/parameters/ParameterSpec.hpp"
 
@@ -26,20 +27,12 @@ class BorderStraightening {
     int straighten(RegionAllocation& regions) const;
 
   private:
-    // Marks for the local connectivity searches: one stamp per graph cell, a new value per search.
-    struct VisitMarks {
-        std::vector<int> stamp;
-        int value = 0;
-    };
-
     [[nodiscard]] bool blocksRuns(int cell, const std::vector<int>& owner) const;
     [[nodiscard]] int blockedAround(int cell, const std::vector<int>& owner) const;
-    [[nodiscard]] bool staysConnectedWithout(int cell, const std::vector<int>& owner,
-                                             VisitMarks& marks) const;
     [[nodiscard]] int straightNeighbour(int cell, std::size_t side) const;
     [[nodiscard]] int blockedNear(const std::vector<int>& cells, const std::vector<int>& owner) const;
     // Moves the cell with a partner when that helps; returns the partner, -1 when nothing moved.
-    int movePair(int cell, RegionAllocation& regions, double ceiling, VisitMarks& marks) const;
+    int movePair(int cell, RegionAllocation& regions, double ceiling, LocalConnectivity& connectivity) const;
     [[nodiscard]] bool onBorder(int cell, const std::vector<int>& owner) const;
     [[nodiscard]] static bool isStart(int cell, const RegionAllocation& regions);
     // The region the cell is best moved to, -1 if none lowers the count; `refused` is set when a

@@ -1,5 +1,7 @@
 #include "core/coverage/PathTimeBalancing.hpp"
 
+#include "core/model/LocalConnectivity.hpp"
+
 #include <algorithm>
 #include <cassert>
 
@@ -28,7 +30,7 @@ class Balancer {
     Balancer(const CellGraph& graph, const SpanningTreeCoverage& coverage, RegionAllocation& regions,
              std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts)
         : graph_(graph), coverage_(coverage), regions_(regions), paths_(paths), starts_(starts),
-          cells_(cellsByRobot(regions)), scratchIndex_(graph.size(), -1), stamp_(graph.size(), 0),
+          cells_(cellsByRobot(regions)), scratchIndex_(graph.size(), -1), connectivity_(graph, searchLimit),
           touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
         // Costs in the units of the cells as they are now (a turn calibration may have changed them).
         regions_.costSeconds.assign(paths.size(), 0.0);
@@ -138,35 +140,6 @@ class Balancer {
             }
     }
 
-    // Whether the cell's region neighbours still reach each other without it, searching near it only.
-    [[nodiscard]] bool spareable(int cell) {
-        const auto& owner = regions_.robotOfCell;
-        const int region = owner[static_cast<std::size_t>(cell)];
-        std::vector<int> targets;
-        for (int neighbour : graph_.neighbours(cell))
-            if (owner[static_cast<std::size_t>(neighbour)] == region)
-                targets.push_back(neighbour);
-        if (targets.size() <= 1)
-            return !targets.empty();
-        ++stampValue_;
-        stamp_[static_cast<std::size_t>(cell)] = stampValue_;
-        stamp_[static_cast<std::size_t>(targets.front())] = stampValue_;
-        std::vector<int> queue{targets.front()};
-        std::size_t found = 1;
-        for (std::size_t head = 0; head < queue.size() && queue.size() < searchLimit; ++head)
-            for (int next : graph_.neighbours(queue[head])) {
-                if (owner[static_cast<std::size_t>(next)] != region ||
-                    stamp_[static_cast<std::size_t>(next)] == stampValue_)
-                    continue;
-                stamp_[static_cast<std::size_t>(next)] = stampValue_;
-                queue.push_back(next);
-                if (std::find(targets.begin(), targets.end(), next) != targets.end() &&
-                    ++found == targets.size())
-                    return true;
-            }
-        return false;
-    }
-
     // The giver's border cell next to the receiver that it can spare, most surrounded by the receiver.
     [[nodiscard]] int cellToPass(int giver, int receiver) {
         const auto& owner = regions_.robotOfCell;
@@ -178,7 +151,7 @@ class Balancer {
             int contacts = 0;
             for (int neighbour : graph_.neighbours(cell))
                 contacts += owner[static_cast<std::size_t>(neighbour)] == receiver ? 1 : 0;
-            if (contacts > bestContacts && spareable(cell)) {
+            if (contacts > bestContacts && connectivity_.canRemove(cell, owner)) {
                 best = cell;
                 bestContacts = contacts;
             }
@@ -211,8 +184,7 @@ class Balancer {
     const std::vector<MapPoint>& starts_;
     std::vector<std::vector<int>> cells_;
     std::vector<int> scratchIndex_;
-    std::vector<int> stamp_;
-    int stampValue_ = 0;
+    LocalConnectivity connectivity_;
     std::vector<std::vector<char>> touches_;
 };
 

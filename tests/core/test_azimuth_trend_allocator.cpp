@@ -28,6 +28,26 @@ Plan allocateOnly(const PlanningProblem& problem) {
     return plan;
 }
 
+// A 49 x 49 grid with 15 % obstacles and `robots` starts on free cells, drawn from `random` in the order the
+// core benchmark draws them.
+PlanningProblem uniformWithStarts(std::mt19937& random, int robots) {
+    std::vector<bool> blocked(49 * 49);
+    std::bernoulli_distribution obstacle(0.15);
+    for (std::size_t i = 0; i < blocked.size(); ++i)
+        blocked[i] = obstacle(random);
+    auto problem = test::uniformProblem(49, 49, 10.0, blocked, {});
+    std::uniform_int_distribution<int> position(0, 48);
+    std::set<std::pair<int, int>> used;
+    while (static_cast<int>(problem.starts.size()) < robots) {
+        const int column = position(random);
+        const int row = position(random);
+        if (blocked[static_cast<std::size_t>(row * 49 + column)] || !used.insert({column, row}).second)
+            continue;
+        problem.starts.push_back(test::pixelCentre(problem.grid, column, row));
+    }
+    return problem;
+}
+
 double maximumOverMean(const RegionAllocation& allocation) {
     double maximum = 0.0;
     double sum = 0.0;
@@ -99,21 +119,7 @@ class AzimuthTrendAllocatorTest : public QObject {
     void balancesUniformGridsWithObstacles() {
         std::mt19937 random(7);
         for (int robots : {2, 4, 8, 14, 20}) {
-            std::vector<bool> blocked(49 * 49);
-            std::bernoulli_distribution obstacle(0.15);
-            for (std::size_t i = 0; i < blocked.size(); ++i)
-                blocked[i] = obstacle(random);
-            auto problem = test::uniformProblem(49, 49, 10.0, blocked, {});
-            std::uniform_int_distribution<int> position(0, 48);
-            std::set<std::pair<int, int>> used;
-            while (static_cast<int>(problem.starts.size()) < robots) {
-                const int column = position(random);
-                const int row = position(random);
-                if (blocked[static_cast<std::size_t>(row * 49 + column)] ||
-                    !used.insert({column, row}).second)
-                    continue;
-                problem.starts.push_back(test::pixelCentre(problem.grid, column, row));
-            }
+            const auto problem = uniformWithStarts(random, robots);
             const Plan plan = allocateOnly(problem);
             QVERIFY2(test::checkRegions(plan).empty(),
                      qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
@@ -137,20 +143,7 @@ class AzimuthTrendAllocatorTest : public QObject {
     // cell wide that cannot spare a single cell; before pieces could move, they kept 85 cells against 104.
     void regionsWalledInByThinBandsStillGetTheirShare() {
         std::mt19937 random(2020);
-        std::bernoulli_distribution obstacle(0.15);
-        std::vector<bool> blocked(49 * 49);
-        for (std::size_t i = 0; i < blocked.size(); ++i)
-            blocked[i] = obstacle(random);
-        auto problem = test::uniformProblem(49, 49, 10.0, blocked, {});
-        std::uniform_int_distribution<int> position(0, 48);
-        std::set<std::pair<int, int>> used;
-        while (problem.starts.size() < 20) {
-            const int column = position(random);
-            const int row = position(random);
-            if (blocked[static_cast<std::size_t>(row * 49 + column)] || !used.insert({column, row}).second)
-                continue;
-            problem.starts.push_back(test::pixelCentre(problem.grid, column, row));
-        }
+        const auto problem = uniformWithStarts(random, 20);
         const Plan plan = allocateOnly(problem);
         QVERIFY2(test::checkRegions(plan).empty(),
                  qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));

@@ -2,6 +2,7 @@
 #include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/decomposition/UniformGridDecomposition.hpp"
+#include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -40,24 +41,6 @@ struct Split {
     }
 };
 
-bool connected(const CellGraph& graph, const std::vector<int>& owner, int region) {
-    std::vector<int> members;
-    for (std::size_t id = 0; id < owner.size(); ++id)
-        if (owner[id] == region)
-            members.push_back(static_cast<int>(id));
-    std::vector<int> queue{members.front()};
-    std::vector<char> seen(owner.size(), 0);
-    seen[static_cast<std::size_t>(members.front())] = 1;
-    for (std::size_t head = 0; head < queue.size(); ++head)
-        for (int next : graph.neighbours(queue[head]))
-            if (owner[static_cast<std::size_t>(next)] == region &&
-                seen[static_cast<std::size_t>(next)] == 0) {
-                seen[static_cast<std::size_t>(next)] = 1;
-                queue.push_back(next);
-            }
-    return queue.size() == members.size();
-}
-
 } // namespace
 
 class PathTimeBalancingTest : public QObject {
@@ -80,7 +63,7 @@ class PathTimeBalancingTest : public QObject {
         for (int robot : {0, 1}) {
             QCOMPARE(split.regions.robotOfCell[static_cast<std::size_t>(split.regions.startCell[robot])],
                      robot);
-            QVERIFY(connected(split.graph, split.regions.robotOfCell, robot));
+            QVERIFY(test::regionIsConnected(split.graph, split.regions.robotOfCell, robot));
             const CoveragePath replanned = coverage.plan(split.graph, split.regions, split.starts, {})[robot];
             QCOMPARE(paths[static_cast<std::size_t>(robot)].timeSeconds, replanned.timeSeconds);
             double cost = 0.0;

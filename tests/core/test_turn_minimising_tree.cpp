@@ -8,6 +8,7 @@
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/coverage/TurnMinimisingTree.hpp"
 #include "core/decomposition/UniformGridDecomposition.hpp"
+#include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -83,26 +84,6 @@ int cellsOffStraightRuns(const GridCells& grid, const std::vector<int>& owner) {
             ++count;
     }
     return count;
-}
-
-bool regionConnected(const CellGraph& graph, const std::vector<int>& owner, int region) {
-    std::vector<int> members;
-    for (std::size_t id = 0; id < owner.size(); ++id)
-        if (owner[id] == region)
-            members.push_back(static_cast<int>(id));
-    if (members.empty())
-        return false;
-    std::vector<char> seen(owner.size(), 0);
-    std::vector<int> queue{members.front()};
-    seen[static_cast<std::size_t>(members.front())] = 1;
-    for (std::size_t head = 0; head < queue.size(); ++head)
-        for (int next : graph.neighbours(queue[head]))
-            if (owner[static_cast<std::size_t>(next)] == region &&
-                seen[static_cast<std::size_t>(next)] == 0) {
-                seen[static_cast<std::size_t>(next)] = 1;
-                queue.push_back(next);
-            }
-    return queue.size() == members.size();
 }
 
 RegionAllocation allocationOf(const CellGraph& graph, const std::vector<int>& owner,
@@ -320,7 +301,7 @@ class TurnMinimisingTreeTest : public QObject {
         QCOMPARE(regions.robotOfCell[static_cast<std::size_t>(grid.at(0, 7))], 0);
         QCOMPARE(regions.robotOfCell[static_cast<std::size_t>(grid.at(7, 0))], 1);
         for (int region : {0, 1}) {
-            QVERIFY(regionConnected(grid.graph, regions.robotOfCell, region));
+            QVERIFY(test::regionIsConnected(grid.graph, regions.robotOfCell, region));
             QVERIFY(regions.costSeconds[static_cast<std::size_t>(region)] <= ceiling + 1e-9);
         }
         const RegionAllocation recount = allocationOf(grid.graph, regions.robotOfCell, regions.startCell);
@@ -355,7 +336,7 @@ class TurnMinimisingTreeTest : public QObject {
                 most * (1.0 + slack) + 1e-9);
         for (std::size_t robot = 0; robot < starts.size(); ++robot) {
             QCOMPARE(regions.robotOfCell[static_cast<std::size_t>(starts[robot])], static_cast<int>(robot));
-            QVERIFY(regionConnected(grid.graph, regions.robotOfCell, static_cast<int>(robot)));
+            QVERIFY(test::regionIsConnected(grid.graph, regions.robotOfCell, static_cast<int>(robot)));
         }
     }
 };

@@ -556,4 +556,22 @@ std::string describe(const std::vector<std::string>& violations, std::size_t lim
     return out;
 }
 
+bool regionIsConnected(const CellGraph& graph, const std::vector<int>& owner, int region) {
+    const auto first = std::find(owner.begin(), owner.end(), region);
+    if (first == owner.end())
+        return false;
+    const auto members = static_cast<std::size_t>(std::count(owner.begin(), owner.end(), region));
+    std::vector<char> seen(owner.size(), 0);
+    std::vector<int> queue{static_cast<int>(first - owner.begin())};
+    seen[static_cast<std::size_t>(queue.front())] = 1;
+    for (std::size_t head = 0; head < queue.size(); ++head)
+        for (int next : graph.neighbours(queue[head]))
+            if (owner[static_cast<std::size_t>(next)] == region &&
+                seen[static_cast<std::size_t>(next)] == 0) {
+                seen[static_cast<std::size_t>(next)] = 1;
+                queue.push_back(next);
+            }
+    return queue.size() == members;
+}
+
 } // namespace mcpp::test

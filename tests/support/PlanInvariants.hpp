@@ -38,6 +38,9 @@ namespace mcpp::test {
                                                            const QuadTree& tree);
 
 // At most the first `limit` violations, one per line, for a test failure message.
+// Whether the cells `owner` gives to `region` are one connected piece (false when it has none).
+[[nodiscard]] bool regionIsConnected(const CellGraph& graph, const std::vector<int>& owner, int region);
+
 [[nodiscard]] std::string describe(const std::vector<std::string>& violations, std::size_t limit = 10);
 
 } // namespace mcpp::test

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "core/model/CellGraph.hpp"
+
+#include <vector>
+
+namespace mcpp {
+
+// Whether a region stays in one piece without one of its cells, judged near the cell: the cell's
+// neighbours in the region must reach each other within `searchLimit` cells of search. A region that only
+// reconnects through a long loop counts as cut, which keeps the check cheap and never splits a region.
+// One instance serves many checks on one graph (a stamp per cell, no clearing between them).
+class LocalConnectivity {
+  public:
+    LocalConnectivity(const CellGraph& graph, std::size_t searchLimit)
+        : graph_(graph), searchLimit_(searchLimit), stamp_(graph.size(), 0) {}
+
+    // owner: the region of every graph cell. False for a region's only cell.
+    [[nodiscard]] bool canRemove(int cell, const std::vector<int>& owner);
+
+  private:
+    const CellGraph& graph_;
+    std::size_t searchLimit_;
+    std::vector<int> stamp_;
+    int stampValue_ = 0;
+    std::vector<int> targets_;
+    std::vector<int> queue_;
+};
+
+} // namespace mcpp
