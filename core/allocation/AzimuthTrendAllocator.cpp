@@ -2,6 +2,7 @@
 
 #include "core/allocation/BorderExchange.hpp"
 #include "core/allocation/StartComponents.hpp"
+#include "core/model/LocalConnectivity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,7 +39,7 @@ class Allocation {
           owner_(static_cast<std::size_t>(cellCount_), unreachable),
           cost_(static_cast<std::size_t>(cellCount_)), x_(static_cast<std::size_t>(cellCount_)),
           y_(static_cast<std::size_t>(cellCount_)), area_(static_cast<std::size_t>(cellCount_)),
-          visitStamp_(static_cast<std::size_t>(cellCount_), 0), robots_(startCells.size()) {
+          connectivity_(graph), robots_(startCells.size()) {
         for (int cell = 0; cell < cellCount_; ++cell) {
             const Cell& graphCell = graph.cell(cell);
             cost_[static_cast<std::size_t>(cell)] = graphCell.coverSeconds();
@@ -270,33 +271,11 @@ class Allocation {
     static constexpr std::size_t wideSearch = 256;
 
     bool removalKeepsConnected(int cell, std::size_t searchLimit = wideSearch) {
+        if (connectivity_.canRemove(cell, owner_, searchLimit))
+            return true;
+        // A cell none of its region touches can go as long as it is not the region's last.
         const int owner = owner_[static_cast<std::size_t>(cell)];
-        std::vector<int>& sameOwner = scratchNeighbours_;
-        sameOwner.clear();
-        for (int neighbour : graph_.neighbours(cell))
-            if (owner_[static_cast<std::size_t>(neighbour)] == owner)
-                sameOwner.push_back(neighbour);
-        if (sameOwner.size() <= 1)
-            return !sameOwner.empty() || robots_[static_cast<std::size_t>(owner)].cells > 1;
-        ++stamp_;
-        visitStamp_[static_cast<std::size_t>(cell)] = stamp_;
-        std::vector<int>& queue = scratchQueue_;
-        queue.assign(1, sameOwner.front());
-        visitStamp_[static_cast<std::size_t>(sameOwner.front())] = stamp_;
-        std::size_t found = 1;
-        for (std::size_t head = 0;
-             head < queue.size() && found < sameOwner.size() && queue.size() < searchLimit; ++head) {
-            for (int neighbour : graph_.neighbours(queue[head])) {
-                if (owner_[static_cast<std::size_t>(neighbour)] != owner ||
-                    visitStamp_[static_cast<std::size_t>(neighbour)] == stamp_)
-                    continue;
-                visitStamp_[static_cast<std::size_t>(neighbour)] = stamp_;
-                if (std::find(sameOwner.begin(), sameOwner.end(), neighbour) != sameOwner.end())
-                    ++found;
-                queue.push_back(neighbour);
-            }
-        }
-        return found == sameOwner.size();
+        return !touchesRegion(cell, owner) && robots_[static_cast<std::size_t>(owner)].cells > 1;
     }
 
     // The first of `cells` (at most `maxTries` of them) whose removal surely keeps its region connected:
@@ -598,16 +577,13 @@ class Allocation {
     std::vector<double> x_;
     std::vector<double> y_;
     std::vector<double> area_;
-    std::vector<int> visitStamp_;
-    int stamp_ = 0;
+    LocalConnectivity connectivity_;
     std::vector<RobotState> robots_;
     int unassignedCount_ = 0;
     int reachableCount_ = 0;
     double unassignedX_ = 0.0;
     double unassignedY_ = 0.0;
     double unassignedArea_ = 0.0;
-    std::vector<int> scratchNeighbours_;
-    std::vector<int> scratchQueue_;
     std::vector<int> boundaryIndex_;
     std::vector<int> boundaryOwner_;
     std::vector<std::vector<int>> boundaries_;

@@ -135,10 +135,10 @@ int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ce
             const int after = blockedNear(pair, owner);
             owner[static_cast<std::size_t>(cell)] = from;
             owner[static_cast<std::size_t>(partner)] = from;
-            if (after >= before || !connectivity.canRemove(cell, owner))
+            if (after >= before || !connectivity.canRemove(cell, owner, searchLimit))
                 continue;
             owner[static_cast<std::size_t>(cell)] = to;
-            const bool connected = connectivity.canRemove(partner, owner);
+            const bool connected = connectivity.canRemove(partner, owner, searchLimit);
             owner[static_cast<std::size_t>(cell)] = from;
             if (!connected)
                 continue;
@@ -177,7 +177,7 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
     std::vector<int> pending(graph_.size());
     std::iota(pending.begin(), pending.end(), 0);
     std::vector<int> queuedFor(graph_.size(), 0);
-    LocalConnectivity connectivity(graph_, searchLimit);
+    LocalConnectivity connectivity(graph_);
     int moved = 0;
     for (int pass = 1; pass <= passLimit && !pending.empty(); ++pass) {
         std::vector<int> next;
@@ -194,7 +194,7 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
             bool refused = false;
             const int to = bestMove(cell, owner, cost, ceiling, refused);
             int partner = -1;
-            if (to >= 0 && connectivity.canRemove(cell, owner)) {
+            if (to >= 0 && connectivity.canRemove(cell, owner, searchLimit)) {
                 const double cellCost = graph_.cell(static_cast<std::size_t>(cell)).coverSeconds();
                 owner[static_cast<std::size_t>(cell)] = to;
                 cost[static_cast<std::size_t>(from)] -= cellCost;

@@ -30,7 +30,7 @@ class Balancer {
     Balancer(const CellGraph& graph, const SpanningTreeCoverage& coverage, RegionAllocation& regions,
              std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts)
         : graph_(graph), coverage_(coverage), regions_(regions), paths_(paths), starts_(starts),
-          cells_(cellsByRobot(regions)), scratchIndex_(graph.size(), -1), connectivity_(graph, searchLimit),
+          cells_(cellsByRobot(regions)), scratchIndex_(graph.size(), -1), connectivity_(graph),
           touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
         // Costs in the units of the cells as they are now (a turn calibration may have changed them).
         regions_.costSeconds.assign(paths.size(), 0.0);
@@ -151,7 +151,7 @@ class Balancer {
             int contacts = 0;
             for (int neighbour : graph_.neighbours(cell))
                 contacts += owner[static_cast<std::size_t>(neighbour)] == receiver ? 1 : 0;
-            if (contacts > bestContacts && connectivity_.canRemove(cell, owner)) {
+            if (contacts > bestContacts && connectivity_.canRemove(cell, owner, searchLimit)) {
                 best = cell;
                 bestContacts = contacts;
             }

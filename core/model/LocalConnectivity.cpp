@@ -4,7 +4,7 @@
 
 namespace mcpp {
 
-bool LocalConnectivity::canRemove(int cell, const std::vector<int>& owner) {
+bool LocalConnectivity::canRemove(int cell, const std::vector<int>& owner, std::size_t searchLimit) {
     const int region = owner[static_cast<std::size_t>(cell)];
     targets_.clear();
     for (int neighbour : graph_.neighbours(cell))
@@ -17,7 +17,7 @@ bool LocalConnectivity::canRemove(int cell, const std::vector<int>& owner) {
     stamp_[static_cast<std::size_t>(targets_.front())] = mark;
     queue_.assign(1, targets_.front());
     std::size_t found = 1;
-    for (std::size_t head = 0; head < queue_.size() && queue_.size() < searchLimit_; ++head)
+    for (std::size_t head = 0; head < queue_.size() && queue_.size() < searchLimit; ++head)
         for (int next : graph_.neighbours(queue_[head])) {
             if (owner[static_cast<std::size_t>(next)] != region ||
                 stamp_[static_cast<std::size_t>(next)] == mark)

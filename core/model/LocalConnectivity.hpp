@@ -12,15 +12,13 @@ namespace mcpp {
 // One instance serves many checks on one graph (a stamp per cell, no clearing between them).
 class LocalConnectivity {
   public:
-    LocalConnectivity(const CellGraph& graph, std::size_t searchLimit)
-        : graph_(graph), searchLimit_(searchLimit), stamp_(graph.size(), 0) {}
+    explicit LocalConnectivity(const CellGraph& graph) : graph_(graph), stamp_(graph.size(), 0) {}
 
-    // owner: the region of every graph cell. False for a region's only cell.
-    [[nodiscard]] bool canRemove(int cell, const std::vector<int>& owner);
+    // owner: the region of every graph cell. False for a cell none of its region touches.
+    [[nodiscard]] bool canRemove(int cell, const std::vector<int>& owner, std::size_t searchLimit);
 
   private:
     const CellGraph& graph_;
-    std::size_t searchLimit_;
     std::vector<int> stamp_;
     int stampValue_ = 0;
     std::vector<int> targets_;
