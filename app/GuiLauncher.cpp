@@ -1,5 +1,7 @@
 #include "app/GuiLauncher.hpp"
 
+#include "io/CrsDatabaseWarmUp.hpp"
+
 #include <QApplication>
 #include <QString>
 #include <iostream>
@@ -11,6 +13,7 @@
 namespace mcpp::app {
 
 int GuiLauncher::run(char* programName, const std::string& fileToOpen) {
+    const io::CrsDatabaseWarmUp warmUp; // while the window is built, before a raster is opened
     // Only the program name goes to Qt: every other argument is mcpp's and was parsed already.
     int qtArgumentCount = 1;
     char* qtArguments[] = {programName, nullptr};

@@ -3,6 +3,7 @@
 #include "app/GuiLauncher.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/ParallelFor.hpp"
+#include "io/CrsDatabaseWarmUp.hpp"
 
 #include <QGuiApplication>
 #include <QMessageLogContext>
@@ -23,6 +24,7 @@ void batchMessageHandler(QtMsgType type, const QMessageLogContext& /*context*/, 
 }
 
 int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
+    const mcpp::io::CrsDatabaseWarmUp warmUp;
     // plan.png is painted with QPainter, which needs a QGuiApplication; offscreen needs no display.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");

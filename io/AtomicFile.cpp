@@ -41,13 +41,13 @@ bool writeAll(int descriptor, std::string_view bytes) {
 
 } // namespace
 
-Status writeFileAtomically(const std::string& path, std::string_view bytes) {
+Status writeFileAtomically(const std::string& path, std::string_view bytes, Sync sync) {
     const std::string temporary = temporaryNameBeside(path);
     // 0666 less the umask, as any new file of the user's.
     const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (descriptor < 0)
         return Status::failure(path + ": cannot write: " + reason());
-    const bool written = writeAll(descriptor, bytes) && ::fsync(descriptor) == 0;
+    const bool written = writeAll(descriptor, bytes) && (sync == Sync::BySystem || ::fsync(descriptor) == 0);
     const std::string writeError = written ? std::string() : reason();
     const bool closed = ::close(descriptor) == 0;
     if (!written || !closed) {

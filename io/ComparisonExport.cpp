@@ -77,7 +77,7 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
             text += "," + (planned ? formatShortest(stageMilliseconds(metrics, stage)) : std::string());
         text += "," + internal::quoteCsvField(row.message) + "\n";
     }
-    return internal::writeFileAtomically(path, text);
+    return internal::writeFileAtomically(path, text, Sync::BySystem);
 }
 
 Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::string& path) {
@@ -114,7 +114,7 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         item.add("planning_ms", row.planningMilliseconds);
         item.add("peak_memory_mb", row.peakMemoryMegabytes);
     }
-    return internal::writeFileAtomically(path, root.toText());
+    return internal::writeFileAtomically(path, root.toText(), Sync::BySystem);
 }
 
 } // namespace mcpp::io

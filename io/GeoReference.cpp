@@ -97,25 +97,46 @@ MapPoint GeoReference::fromCrsUnits(MapPoint crsPoint) const {
 }
 
 Result<LonLat> GeoReference::toWgs84(MapPoint point) const {
+    auto lonLats = toWgs84(std::vector<MapPoint>{point});
+    if (!lonLats)
+        return Result<LonLat>::failure(lonLats.error());
+    return lonLats.value().front();
+}
+
+Result<std::vector<LonLat>> GeoReference::toWgs84(const std::vector<MapPoint>& points) const {
+    using LonLats = std::vector<LonLat>;
     if (!hasCrs())
-        return Result<LonLat>::failure("the map has no CRS, so its points have no longitude and latitude");
+        return Result<LonLats>::failure("the map has no CRS, so its points have no longitude and latitude");
     QuietGdalErrors quiet;
-    std::lock_guard lock(state_->mutex);
-    if (!state_->toWgs84) {
-        const auto wgs84 = internal::wgs84SpatialReference();
-        state_->toWgs84 = makeTransformation(*state_->crs, *wgs84);
-        if (!state_->toWgs84)
-            return Result<LonLat>::failure("no transformation from " + name() + " to WGS84" + quiet.detail());
+    std::vector<double> x(points.size()), y(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const MapPoint crsPoint = toCrsUnits(points[i]);
+        x[i] = crsPoint.x;
+        y[i] = crsPoint.y;
     }
-    const MapPoint crsPoint = toCrsUnits(point);
-    double x = crsPoint.x;
-    double y = crsPoint.y;
-    if (!transformPoint(*state_->toWgs84, x, y)) {
-        return Result<LonLat>::failure("point (" + formatQuantity(point.x, 12) + ", " +
-                                       formatQuantity(point.y, 12) + ") cannot be transformed to WGS84" +
-                                       quiet.detail());
+    std::vector<int> success(points.size(), 0);
+    {
+        std::lock_guard lock(state_->mutex);
+        if (!state_->toWgs84) {
+            const auto wgs84 = internal::wgs84SpatialReference();
+            state_->toWgs84 = makeTransformation(*state_->crs, *wgs84);
+            if (!state_->toWgs84)
+                return Result<LonLats>::failure("no transformation from " + name() + " to WGS84" +
+                                                quiet.detail());
+        }
+        if (!points.empty())
+            state_->toWgs84->Transform(points.size(), x.data(), y.data(), nullptr, nullptr, success.data());
     }
-    return LonLat{x, y};
+    LonLats lonLats(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (success[i] == 0 || !std::isfinite(x[i]) || !std::isfinite(y[i])) {
+            return Result<LonLats>::failure("point (" + formatQuantity(points[i].x, 12) + ", " +
+                                            formatQuantity(points[i].y, 12) +
+                                            ") cannot be transformed to WGS84" + quiet.detail());
+        }
+        lonLats[i] = {x[i], y[i]};
+    }
+    return lonLats;
 }
 
 Result<MapPoint> GeoReference::fromWgs84(LonLat lonLat) const {

@@ -1,9 +1,12 @@
 #include "io/PlanExport.hpp"
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
+#include "io/internal/GeoJsonText.hpp"
 #include "io/internal/PlanGeometry.hpp"
+#include "io/internal/TextFiles.hpp"
 
 #include <ogrsf_frmts.h>
+#include <optional>
 
 namespace mcpp::io {
 
@@ -118,6 +121,26 @@ Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transfo
     return {};
 }
 
+// RFC 7946 (and KML readers) want features that cross the antimeridian cut in two there, each part on its
+// own side, rather than one running the long way round the globe.
+void cutAtTheAntimeridian(PlanFeatures& features) {
+    const char* const options[] = {"WRAPDATELINE=YES", nullptr};
+    const auto cut = [&](std::unique_ptr<OGRGeometry>& geometry) {
+        if (!geometry || geometry->IsEmpty())
+            return;
+        std::unique_ptr<OGRGeometry> wrapped(
+            OGRGeometryFactory::transformWithOptions(geometry.get(), nullptr, const_cast<char**>(options)));
+        if (wrapped)
+            geometry = std::move(wrapped);
+    };
+    for (auto& region : features.regions)
+        cut(region.geometry);
+    for (auto& line : features.paths)
+        cut(line.geometry);
+    for (auto& part : features.unreachable)
+        cut(part.geometry);
+}
+
 Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::string& path) {
     auto features = internal::buildPlanFeatures(context);
     if (!features)
@@ -128,6 +151,8 @@ Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::st
     if (Status status = transformAll(features.value(), *transformation.value(), path); !status) {
         return Result<PlanFeatures>::failure(status.error());
     }
+    if (internal::spansTheAntimeridian(features.value()))
+        cutAtTheAntimeridian(features.value());
     return features;
 }
 
@@ -288,67 +313,10 @@ Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
     auto features = featuresInWgs84(context, path);
     if (!features)
         return Status::failure(features.error());
-    VectorFileWriter writer(path, "GeoJSON", context);
-    if (Status status = writer.open(); !status)
-        return status;
-    const auto wgs84 = internal::wgs84SpatialReference();
-    // RFC 7946: WGS84, right-hand rings; 9 decimals keep coordinates well within 1e-7 degrees.
-    const char* const layerOptions[] = {"RFC7946=YES", "COORDINATE_PRECISION=9", "WRITE_NAME=NO", nullptr};
-    auto layer = writer.layer("plan", wgs84.get(), wkbUnknown, layerOptions);
-    if (!layer)
-        return Status::failure(layer.error());
-    OGRLayer* plan = layer.value();
-    const Fields fields{{{"kind", OFTString},
-                         {"robot", OFTInteger},
-                         {"robot_name", OFTString},
-                         {"cost_s", OFTReal},
-                         {"area_m2", OFTReal},
-                         {"cells", OFTInteger},
-                         {"length_m", OFTReal},
-                         {"time_s", OFTReal},
-                         {"turns", OFTInteger}}};
-    if (Status status = createFields(writer, plan, fields); !status)
-        return status;
-
-    for (auto& region : features.value().regions) {
-        OGRFeature feature(plan->GetLayerDefn());
-        feature.SetField("kind", "region");
-        setRobotFields(feature, context, region.robot);
-        feature.SetField("cost_s", region.costSeconds);
-        feature.SetField("area_m2", region.areaSquareMetres);
-        feature.SetField("cells", region.cells);
-        feature.SetGeometryDirectly(region.geometry.release());
-        if (Status status = writer.add(plan, feature); !status)
-            return status;
-    }
-    for (auto& line : features.value().paths) {
-        OGRFeature feature(plan->GetLayerDefn());
-        feature.SetField("kind", "path");
-        setRobotFields(feature, context, line.robot);
-        feature.SetField("length_m", line.lengthMetres);
-        feature.SetField("time_s", line.timeSeconds);
-        feature.SetField("turns", line.turns);
-        feature.SetGeometryDirectly(line.geometry.release());
-        if (Status status = writer.add(plan, feature); !status)
-            return status;
-    }
-    for (auto& start : features.value().starts) {
-        OGRFeature feature(plan->GetLayerDefn());
-        feature.SetField("kind", "start");
-        setRobotFields(feature, context, start.robot);
-        feature.SetGeometryDirectly(start.geometry.release());
-        if (Status status = writer.add(plan, feature); !status)
-            return status;
-    }
-    for (auto& part : features.value().unreachable) {
-        OGRFeature feature(plan->GetLayerDefn());
-        feature.SetField("kind", "unreachable");
-        feature.SetField("area_m2", part.areaSquareMetres);
-        feature.SetGeometryDirectly(part.geometry.release());
-        if (Status status = writer.add(plan, feature); !status)
-            return status;
-    }
-    return writer.commit();
+    const std::optional<std::string> text = internal::planGeoJsonText(context, features.value());
+    if (!text)
+        return Status::failure(path + ": cancelled");
+    return internal::writeFileAtomically(path, *text, Sync::BySystem);
 }
 
 Status writePlanGeoPackage(const ExportContext& context, const std::string& path) {

@@ -69,7 +69,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("code", issue.code);
         item.add("message", issue.message);
     }
-    return internal::writeFileAtomically(path, root.toText());
+    return internal::writeFileAtomically(path, root.toText(), Sync::BySystem);
 }
 
 Status writeReportCsv(const ExportContext& context, const std::string& path) {
@@ -86,7 +86,7 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
                 std::to_string(mission.parts.size()) + "," + internal::formatShortest(robot.turnSeconds) +
                 "\n";
     }
-    return internal::writeFileAtomically(path, text);
+    return internal::writeFileAtomically(path, text, Sync::BySystem);
 }
 
 } // namespace mcpp::io

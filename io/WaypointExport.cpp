@@ -40,6 +40,22 @@ struct GeoWaypoint {
     double latitude = 0.0;
 };
 
+// Fills in the points' longitude and latitude, all in one transformation.
+Status placeOnWgs84(const ExportContext& context, std::vector<GeoWaypoint>& points) {
+    std::vector<MapPoint> mapPoints;
+    mapPoints.reserve(points.size());
+    for (const GeoWaypoint& point : points)
+        mapPoints.push_back({point.waypoint.x, point.waypoint.y});
+    auto lonLats = context.georeference.toWgs84(mapPoints);
+    if (!lonLats)
+        return Status::failure(lonLats.error());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        points[i].longitude = lonLats.value()[i].longitude;
+        points[i].latitude = lonLats.value()[i].latitude;
+    }
+    return {};
+}
+
 Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int robot,
                                               const std::string& path, bool needCrs) {
     using Points = std::vector<GeoWaypoint>;
@@ -54,17 +70,14 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
         return Result<Points>::failure(path +
                                        ": the map has no CRS, so waypoints have no latitude and longitude");
     }
+    const std::vector<Waypoint> waypoints = exportedWaypoints(*coverage, context.settings.mergeCollinear);
     Points points;
-    for (const Waypoint& waypoint : exportedWaypoints(*coverage, context.settings.mergeCollinear)) {
-        GeoWaypoint point{waypoint, std::nan(""), std::nan("")};
-        if (context.georeference.hasCrs()) {
-            auto lonLat = context.georeference.toWgs84({waypoint.x, waypoint.y});
-            if (!lonLat)
-                return Result<Points>::failure(path + ": " + lonLat.error());
-            point.longitude = lonLat.value().longitude;
-            point.latitude = lonLat.value().latitude;
-        }
-        points.push_back(point);
+    points.reserve(waypoints.size());
+    for (const Waypoint& waypoint : waypoints)
+        points.push_back({waypoint, std::nan(""), std::nan("")});
+    if (context.georeference.hasCrs()) {
+        if (Status placed = placeOnWgs84(context, points); !placed)
+            return Result<Points>::failure(path + ": " + placed.error());
     }
     return points;
 }
@@ -119,13 +132,10 @@ Result<std::vector<GeoWaypoint>> geoPoints(const ExportContext& context, const A
                                            const MissionPart& part, const std::string& path) {
     std::vector<GeoWaypoint> points;
     points.reserve(part.last - part.first + 1);
-    for (std::size_t i = part.first; i <= part.last; ++i) {
-        const Waypoint& waypoint = mission.points[i];
-        auto lonLat = context.georeference.toWgs84({waypoint.x, waypoint.y});
-        if (!lonLat)
-            return Result<std::vector<GeoWaypoint>>::failure(path + ": " + lonLat.error());
-        points.push_back({waypoint, lonLat.value().longitude, lonLat.value().latitude});
-    }
+    for (std::size_t i = part.first; i <= part.last; ++i)
+        points.push_back({mission.points[i]});
+    if (Status placed = placeOnWgs84(context, points); !placed)
+        return Result<std::vector<GeoWaypoint>>::failure(path + ": " + placed.error());
     return points;
 }
 
@@ -271,7 +281,7 @@ Status writeMissionFiles(const ExportContext& context, int robot, const std::str
         if (!points)
             return Status::failure(points.error());
         if (auto written = internal::writeFileAtomically(
-                file, text(mission, mission.parts[part], points.value(), vehicle));
+                file, text(mission, mission.parts[part], points.value(), vehicle), Sync::BySystem);
             !written) {
             return written;
         }
@@ -337,7 +347,7 @@ Status writeWaypointCsv(const ExportContext& context, int robot, const std::stri
                 internal::formatShortest(fieldOfViewAt(context.plan, waypoint)) + "," +
                 internal::formatShortest(waypoint.cumulativeSeconds) + "\n";
     }
-    return internal::writeFileAtomically(path, text);
+    return internal::writeFileAtomically(path, text, Sync::BySystem);
 }
 
 } // namespace mcpp::io

@@ -2,9 +2,9 @@
 
 #include "io/AtomicFile.hpp"
 #include "render/PlanImage.hpp"
+#include "render/PngEncoder.hpp"
 #include "render/RobotPalette.hpp"
 
-#include <QBuffer>
 #include <QPainter>
 #include <algorithm>
 #include <cmath>
@@ -144,14 +144,13 @@ QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
 
 bool writeComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
                           const std::vector<ComparisonPanel>& panels, const QString& path, QString* error) {
-    const QImage sheet = renderComparisonSheet(grid, classes, panels).convertToFormat(QImage::Format_RGB888);
-    QBuffer encoded;
-    encoded.open(QIODevice::WriteOnly);
+    const QByteArray encoded = encodePng(renderComparisonSheet(grid, classes, panels));
     const io::Status written =
-        sheet.save(&encoded, "PNG", 80)
-            ? io::writeFileAtomically(path.toStdString(),
-                                      std::string_view(encoded.data().constData(),
-                                                       static_cast<std::size_t>(encoded.data().size())))
+        !encoded.isEmpty()
+            ? io::writeFileAtomically(
+                  path.toStdString(),
+                  std::string_view(encoded.constData(), static_cast<std::size_t>(encoded.size())),
+                  io::Sync::BySystem)
             : io::Status::failure(path.toStdString() + ": PNG encoding failed");
     if (!written && error != nullptr)
         *error = QString::fromStdString(written.error());

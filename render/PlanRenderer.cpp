@@ -49,8 +49,9 @@ void drawArrow(QPainter& painter, QPointF tip, QPointF direction, const QColor& 
 }
 
 // Qt strokes a wide polyline as one polygon whose filling slows down sharply as the line crosses itself
-// (coverage paths pass close by themselves all the time); pieces of a few hundred points draw the same
-// picture, joined by their round caps, many times faster.
+// (coverage paths pass close by themselves all the time); pieces of eight segments draw the same picture,
+// their square caps meeting like mitred corners, many times faster. Wide pens are opaque throughout: Qt
+// fills a translucent one's whole outline with the winding rule, four times slower.
 void drawPolylineInPieces(QPainter& painter, const QPolygonF& line) {
     constexpr qsizetype piece = 8;
     for (qsizetype first = 0; first + 1 < line.size(); first += piece) {
@@ -394,10 +395,10 @@ void PlanRenderer::paintRegions(QPainter& painter, const QTransform& worldToDevi
 
 void PlanRenderer::paintRegionBorders(QPainter& painter, const QTransform& worldToDevice,
                                       const QRectF& deviceArea) const {
-    // A dark line round every region, so regions read as areas.
+    // A dark line round every region, so regions read as areas (opaque: see drawPolylineInPieces).
     const QRectF visible = worldToDevice.inverted().mapRect(deviceArea);
     painter.setRenderHint(QPainter::Antialiasing, true);
-    painter.setPen(QPen(QColor(30, 30, 30, 200), 1.5));
+    painter.setPen(QPen(QColor(45, 45, 45), 1.5, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
     painter.setBrush(Qt::NoBrush);
     const QRectF visibleDevice = deviceArea.adjusted(-2.0, -2.0, 2.0, 2.0);
     for (const Outline& outline : regionBorders_) {
@@ -479,7 +480,7 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
         QColor faded = colour;
         faded.setAlpha(150);
         for (const QPolygonF& run : visibleRuns(line.points, worldToDevice, visibleDevice)) {
-            // A pale casing under the line keeps it readable over any land-cover colour.
+            // A white casing under the line keeps it readable over any land-cover colour.
             painter.setBrush(Qt::NoBrush);
             if (dense) {
                 // A one-pixel cosmetic pen is drawn line by line, with no outline to fill.
@@ -487,9 +488,9 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
                 painter.drawPolyline(run);
                 continue;
             }
-            painter.setPen(QPen(QColor(255, 255, 255, 190), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            painter.setPen(QPen(Qt::white, 4.0, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
             drawPolylineInPieces(painter, run);
-            painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
             drawPolylineInPieces(painter, run);
             drawArrows(painter, run, colour);
         }

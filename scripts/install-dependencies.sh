@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config git ca-certificates
   qt6-base-dev qt6-base-dev-tools qt6-charts-dev qt6-svg-dev libqt6opengl6-dev qt6-qpa-plugins libgl-dev
-  libgdal-dev gdal-bin libeigen3-dev libboost-dev libbenchmark-dev
+  libgdal-dev gdal-bin libeigen3-dev libboost-dev libbenchmark-dev libdeflate-dev
   xvfb xauth fonts-dejavu-core python3 clang-format clang libclang-rt-14-dev
 )
 # Extra packages a caller needs besides these (the packaging scripts pass theirs).

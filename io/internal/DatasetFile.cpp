@@ -67,7 +67,8 @@ Status DatasetFile::commit() {
     if (bytes == nullptr)
         return Status::failure(path_ + ": the driver wrote no file" + QuietGdalErrors::detail());
     return writeFileAtomically(
-        path_, std::string_view(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size)));
+        path_, std::string_view(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size)),
+        Sync::BySystem); // every dataset written this way is an export
 }
 
 } // namespace mcpp::io::internal

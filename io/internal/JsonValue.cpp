@@ -2,6 +2,8 @@
 
 #include "io/internal/TextFiles.hpp"
 
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -24,55 +26,82 @@ std::string JsonValue::toText() const {
     return out;
 }
 
+namespace {
+
+char escapeLetter(char character) {
+    switch (character) {
+    case '"':
+        return '"';
+    case '\\':
+        return '\\';
+    case '\n':
+        return 'n';
+    case '\r':
+        return 'r';
+    case '\t':
+        return 't';
+    case '\b':
+        return 'b';
+    case '\f':
+        return 'f';
+    default:
+        return 0;
+    }
+}
+
+bool needsEscape(char character) {
+    return character == '"' || character == '\\' || static_cast<unsigned char>(character) < 0x20;
+}
+
+} // namespace
+
+void appendJsonNumber(std::string& out, double value) {
+    if (!std::isfinite(value)) {
+        out += "null";
+        return;
+    }
+    std::array<char, 32> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    out.append(buffer.data(), result.ptr);
+}
+
+void appendJsonString(std::string& out, std::string_view text) {
+    out += '"';
+    // Most text needs no escape and is copied in runs.
+    std::size_t runStart = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (!needsEscape(text[i]))
+            continue; // UTF-8 passes through unchanged
+        out.append(text.substr(runStart, i - runStart));
+        runStart = i + 1;
+        if (const char letter = escapeLetter(text[i]); letter != 0) {
+            out += '\\';
+            out += letter;
+        } else {
+            std::array<char, 8> escaped{};
+            std::snprintf(escaped.data(), escaped.size(), "\\u%04x",
+                          static_cast<unsigned>(static_cast<unsigned char>(text[i])));
+            out += escaped.data();
+        }
+    }
+    out.append(text.substr(runStart));
+    out += '"';
+}
+
 std::string formatJsonNumber(double value) {
-    if (!std::isfinite(value))
-        return "null";
-    return formatShortest(value);
+    std::string out;
+    appendJsonNumber(out, value);
+    return out;
 }
 
 std::string quoteJsonString(const std::string& text) {
-    std::string out = "\"";
-    for (const char character : text) {
-        const auto byte = static_cast<unsigned char>(character);
-        switch (character) {
-        case '"':
-            out += "\\\"";
-            break;
-        case '\\':
-            out += "\\\\";
-            break;
-        case '\n':
-            out += "\\n";
-            break;
-        case '\r':
-            out += "\\r";
-            break;
-        case '\t':
-            out += "\\t";
-            break;
-        case '\b':
-            out += "\\b";
-            break;
-        case '\f':
-            out += "\\f";
-            break;
-        default:
-            if (byte < 0x20) {
-                char escaped[8];
-                std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(byte));
-                out += escaped;
-            } else {
-                out += character; // UTF-8 passes through unchanged
-            }
-        }
-    }
-    out += '"';
+    std::string out;
+    appendJsonString(out, text);
     return out;
 }
 
 void JsonValue::write(std::string& out, int indent) const {
-    const std::string padding(static_cast<std::size_t>(indent + 2), ' ');
-    const std::string closing(static_cast<std::size_t>(indent), ' ');
+    const auto padding = static_cast<std::size_t>(indent + 2);
     switch (kind_) {
     case Kind::Null:
         out += "null";
@@ -80,14 +109,17 @@ void JsonValue::write(std::string& out, int indent) const {
     case Kind::Boolean:
         out += boolean_ ? "true" : "false";
         return;
-    case Kind::Integer:
-        out += std::to_string(integer_);
+    case Kind::Integer: {
+        std::array<char, 24> buffer{};
+        const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), integer_);
+        out.append(buffer.data(), result.ptr);
         return;
+    }
     case Kind::Number:
-        out += formatJsonNumber(number_);
+        appendJsonNumber(out, number_);
         return;
     case Kind::String:
-        out += quoteJsonString(text_);
+        appendJsonString(out, text_);
         return;
     case Kind::Array: {
         if (items_.empty()) {
@@ -109,11 +141,12 @@ void JsonValue::write(std::string& out, int indent) const {
         }
         out += "[\n";
         for (std::size_t i = 0; i < items_.size(); ++i) {
-            out += padding;
+            out.append(padding, ' ');
             items_[i].write(out, indent + 2);
             out += i + 1 < items_.size() ? ",\n" : "\n";
         }
-        out += closing + "]";
+        out.append(static_cast<std::size_t>(indent), ' ');
+        out += ']';
         return;
     }
     case Kind::Object: {
@@ -123,11 +156,14 @@ void JsonValue::write(std::string& out, int indent) const {
         }
         out += "{\n";
         for (std::size_t i = 0; i < members_.size(); ++i) {
-            out += padding + quoteJsonString(members_[i].first) + ": ";
+            out.append(padding, ' ');
+            appendJsonString(out, members_[i].first);
+            out += ": ";
             members_[i].second.write(out, indent + 2);
             out += i + 1 < members_.size() ? ",\n" : "\n";
         }
-        out += closing + "}";
+        out.append(static_cast<std::size_t>(indent), ' ');
+        out += '}';
         return;
     }
     }

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -48,5 +49,8 @@ class JsonValue {
 // Shortest text that reads back as the same double ("30", "0.1", "1e+20"); "null" for NaN and infinities.
 [[nodiscard]] std::string formatJsonNumber(double value);
 [[nodiscard]] std::string quoteJsonString(const std::string& text);
+// The same, appended to `out` (no temporary strings: a big file's text is built this way).
+void appendJsonNumber(std::string& out, double value);
+void appendJsonString(std::string& out, std::string_view text);
 
 } // namespace mcpp::io::internal

@@ -45,13 +45,12 @@ std::unique_ptr<OGRPolygon> polygonOf(const OutlinePolygon& outline, const Label
 PathFeature pathFeature(const CoveragePath& path, double metresPerUnit, bool densePaths) {
     PathFeature feature;
     feature.robot = path.robot;
-    feature.geometry = std::make_unique<OGRLineString>();
+    auto line = std::make_unique<OGRLineString>();
     const std::vector<Waypoint> points = densePaths ? path.waypoints : turningPoints(path);
-    feature.geometry->setNumPoints(static_cast<int>(points.size()), FALSE);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        feature.geometry->setPoint(static_cast<int>(i), points[i].x / metresPerUnit,
-                                   points[i].y / metresPerUnit);
-    }
+    line->setNumPoints(static_cast<int>(points.size()), FALSE);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        line->setPoint(static_cast<int>(i), points[i].x / metresPerUnit, points[i].y / metresPerUnit);
+    feature.geometry = std::move(line);
     feature.lengthMetres = path.lengthMetres;
     feature.timeSeconds = path.timeSeconds;
     feature.turns = path.turns;
@@ -144,8 +143,9 @@ Result<PlanFeatures> buildPlanFeatures(const ExportContext& context) {
             features.unreachable.push_back(UnreachableFeature{
                 polygonOf(outline, labels, metresPerUnit), static_cast<double>(outline.pixels) * pixelArea});
         } else if (outline.label >= 0 && static_cast<std::size_t>(outline.label) < features.regions.size()) {
-            features.regions[static_cast<std::size_t>(outline.label)].geometry->addGeometryDirectly(
-                polygonOf(outline, labels, metresPerUnit).release());
+            features.regions[static_cast<std::size_t>(outline.label)]
+                .geometry->toMultiPolygon()
+                ->addGeometryDirectly(polygonOf(outline, labels, metresPerUnit).release());
         }
     }
     for (const CoveragePath& path : plan.paths) {

@@ -13,7 +13,9 @@ namespace mcpp::io::internal {
 
 struct RegionFeature {
     int robot = 0;
-    std::unique_ptr<OGRMultiPolygon> geometry; // CRS units; empty for a robot without cells
+    // Built as a multipolygon in CRS units, empty for a robot without cells; in WGS84 it may be cut at the
+    // antimeridian, as may the other features' geometries.
+    std::unique_ptr<OGRGeometry> geometry;
     double costSeconds = 0.0;
     double areaSquareMetres = 0.0;
     int cells = 0;
@@ -21,7 +23,7 @@ struct RegionFeature {
 
 struct PathFeature {
     int robot = 0;
-    std::unique_ptr<OGRLineString> geometry;
+    std::unique_ptr<OGRGeometry> geometry; // a line string
     double lengthMetres = 0.0;
     double timeSeconds = 0.0;
     int turns = 0;
@@ -33,7 +35,7 @@ struct StartFeature {
 };
 
 struct UnreachableFeature {
-    std::unique_ptr<OGRPolygon> geometry;
+    std::unique_ptr<OGRGeometry> geometry; // a polygon
     double areaSquareMetres = 0.0;
 };
 

@@ -12,8 +12,8 @@
 
 namespace mcpp::io::internal {
 
-Status writeFileAtomically(const std::string& path, const std::string& contents) {
-    return io::writeFileAtomically(path, std::string_view(contents));
+Status writeFileAtomically(const std::string& path, const std::string& contents, Sync sync) {
+    return io::writeFileAtomically(path, std::string_view(contents), sync);
 }
 
 Result<std::string> readWholeFile(const std::string& path) {

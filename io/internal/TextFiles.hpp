@@ -1,5 +1,6 @@
 #pragma once
 
+#include "io/AtomicFile.hpp"
 #include "io/Result.hpp"
 
 #include <string>
@@ -8,7 +9,8 @@
 namespace mcpp::io::internal {
 
 // Writes the whole file or nothing (io::writeFileAtomically): a failed save leaves an older file untouched.
-[[nodiscard]] Status writeFileAtomically(const std::string& path, const std::string& contents);
+[[nodiscard]] Status writeFileAtomically(const std::string& path, const std::string& contents,
+                                         Sync sync = Sync::ToDisk);
 // The whole file, or an error naming it.
 [[nodiscard]] Result<std::string> readWholeFile(const std::string& path);
 

@@ -79,6 +79,36 @@ double areaInCrs(const OGRGeometry& geometry, const GeoReference& reference) {
     return -1.0;
 }
 
+// The largest change of longitude between consecutive vertices of any line or ring of a geometry.
+double longestLongitudeStep(const OGRGeometry& geometry) {
+    switch (wkbFlatten(geometry.getGeometryType())) {
+    case wkbLineString:
+    case wkbLinearRing: {
+        const OGRSimpleCurve& curve = *geometry.toSimpleCurve();
+        double longest = 0.0;
+        for (int i = 1; i < curve.getNumPoints(); ++i)
+            longest = std::max(longest, std::abs(curve.getX(i) - curve.getX(i - 1)));
+        return longest;
+    }
+    case wkbPolygon: {
+        double longest = 0.0;
+        for (const OGRLinearRing* ring : *geometry.toPolygon())
+            longest = std::max(longest, longestLongitudeStep(*ring));
+        return longest;
+    }
+    case wkbMultiPolygon:
+    case wkbMultiLineString:
+    case wkbGeometryCollection: {
+        double longest = 0.0;
+        for (const OGRGeometry* part : *geometry.toGeometryCollection())
+            longest = std::max(longest, longestLongitudeStep(*part));
+        return longest;
+    }
+    default:
+        return 0.0;
+    }
+}
+
 } // namespace
 
 class PlanExportTest : public QObject {
@@ -170,6 +200,43 @@ class PlanExportTest : public QObject {
             }
             QVERIFY(twiceArea > 0.0);
         }
+    }
+
+    // Readers guess a GeoJSON field's type from its values: reals are written with a decimal point even
+    // when whole (the unreachable area is 100 m2), so they read back as reals, and counts as integers.
+    void geoJsonFieldsKeepTheirTypes() {
+        const std::string path = file("types.geojson");
+        QVERIFY(writePlanGeoJson(context(), path).ok());
+        Dataset dataset = openVector(path);
+        OGRFeatureDefn* definition = dataset->GetLayer(0)->GetLayerDefn();
+        for (const char* name : {"cost_s", "area_m2", "length_m", "time_s"})
+            QCOMPARE(definition->GetFieldDefn(definition->GetFieldIndex(name))->GetType(), OFTReal);
+        for (const char* name : {"robot", "cells", "turns"})
+            QCOMPARE(definition->GetFieldDefn(definition->GetFieldIndex(name))->GetType(), OFTInteger);
+    }
+
+    // A plan across the antimeridian (UTM zone 60 at 60 degrees north, 180 degrees through robot 1's region
+    // and path): no feature may run the long way round the globe, from +180 to -180 degrees.
+    void geoJsonAcrossTheAntimeridian() {
+        const GeoReference zone60 = GeoReference::fromDefinition("EPSG:32660").value();
+        const MapPoint antimeridian = zone60.fromWgs84({180.0, 60.0}).value();
+        const Plan plan = test::makeFixturePlan(antimeridian.x - 15.0, antimeridian.y + 10.0);
+        ExportContext across{plan, zone60, classes_, {}};
+        const std::string path = file("antimeridian.geojson");
+        const Status written = writePlanGeoJson(across, path);
+        QVERIFY2(written.ok(), written.error().c_str());
+        Dataset dataset = openVector(path);
+        QVERIFY(dataset != nullptr);
+        int features = 0;
+        for (auto& feature : *dataset->GetLayer(0)) {
+            const OGRGeometry* geometry = feature->GetGeometryRef();
+            QVERIFY2(longestLongitudeStep(*geometry) < 1.0, feature->GetFieldAsString("kind"));
+            OGREnvelope envelope;
+            geometry->getEnvelope(&envelope);
+            QVERIFY(envelope.MinX >= -180.0 && envelope.MaxX <= 180.0);
+            ++features;
+        }
+        QCOMPARE(features, 7);
     }
 
     void regionOfTwoCellsIsOnePolygon() {

@@ -243,6 +243,36 @@ class RasterLoadingTest : public QObject {
         QCOMPARE(raster.georeference.toCrsUnits({raster.grid.originX, raster.grid.originY}).x, 6000000.0);
     }
 
+    // Exports take a path's points to WGS84 in one call: the same results as one by one, in feet CRSs too,
+    // and a point PROJ cannot place is named.
+    void manyPointsGoToWgs84AsOneByOne() {
+        // UTM 12N in metres and California zone 3 in US feet, each with points inside its area.
+        const std::vector<std::pair<const char*, MapPoint>> crss{{"EPSG:26912", {400000.0, 4100000.0}},
+                                                                 {"EPSG:2227", {1830000.0, 640000.0}}};
+        for (const auto& [definition, origin] : crss) {
+            const GeoReference reference = GeoReference::fromDefinition(definition).value();
+            std::vector<MapPoint> points;
+            for (int i = 0; i < 50; ++i)
+                points.push_back({origin.x + 997.0 * i, origin.y + 1511.0 * i});
+            const auto together = reference.toWgs84(points);
+            QVERIFY(together.ok());
+            QCOMPARE(together.value().size(), points.size());
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                const LonLat alone = reference.toWgs84(points[i]).value();
+                QCOMPARE(together.value()[i].longitude, alone.longitude);
+                QCOMPARE(together.value()[i].latitude, alone.latitude);
+            }
+            QVERIFY(reference.toWgs84(std::vector<MapPoint>{}).value().empty());
+        }
+        // Far outside the transverse Mercator's domain: the whole call fails, naming the point.
+        const GeoReference utm = GeoReference::fromDefinition("EPSG:26912").value();
+        const auto failed = utm.toWgs84(std::vector<MapPoint>{{400000.0, 4100000.0}, {1e30, -1e30}});
+        QVERIFY(!failed.ok());
+        QVERIFY2(failed.error().find("point (1000000000000000") != std::string::npos &&
+                     failed.error().find("cannot be transformed to WGS84") != std::string::npos,
+                 failed.error().c_str());
+    }
+
     void noCrsIsPlannedInItsOwnUnits() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("nocrs.tif").toStdString();

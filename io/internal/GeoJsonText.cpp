@@ -1,0 +1,241 @@
+#include "io/internal/GeoJsonText.hpp"
+
+#include "io/internal/JsonValue.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+namespace mcpp::io::internal {
+
+namespace {
+
+constexpr int kCoordinateDecimals = 9; // well within 1e-7 degrees, about a centimetre
+
+// A longitude or latitude with 9 decimals, trailing zeros dropped ("14.07", "7.0").
+void appendCoordinate(std::string& out, double value) {
+    std::array<char, 48> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                      std::chars_format::fixed, kCoordinateDecimals);
+    std::string_view text(buffer.data(), static_cast<std::size_t>(result.ptr - buffer.data()));
+    while (text.size() > 2 && text.back() == '0' && text[text.size() - 2] != '.')
+        text.remove_suffix(1);
+    out.append(text);
+}
+
+// A real field keeps a decimal point, so that readers guessing types from the text keep it real.
+void appendReal(std::string& out, double value) {
+    const std::size_t start = out.size();
+    appendJsonNumber(out, value);
+    if (out.find_first_of(".en", start) == std::string::npos)
+        out += ".0";
+}
+
+void appendPoint(std::string& out, double x, double y) {
+    out += '[';
+    appendCoordinate(out, x);
+    out += ',';
+    appendCoordinate(out, y);
+    out += ']';
+}
+
+// Twice the signed area in degrees: positive when the ring runs counter-clockwise.
+double signedArea(const OGRSimpleCurve& ring) {
+    double sum = 0.0;
+    const int points = ring.getNumPoints();
+    for (int i = 0; i + 1 < points; ++i)
+        sum += ring.getX(i) * ring.getY(i + 1) - ring.getX(i + 1) * ring.getY(i);
+    return sum;
+}
+
+void appendCurve(std::string& out, const OGRSimpleCurve& curve, bool reversed) {
+    out += '[';
+    const int points = curve.getNumPoints();
+    for (int k = 0; k < points; ++k) {
+        const int i = reversed ? points - 1 - k : k;
+        if (k > 0)
+            out += ',';
+        appendPoint(out, curve.getX(i), curve.getY(i));
+    }
+    out += ']';
+}
+
+void appendPolygonRings(std::string& out, const OGRPolygon& polygon) {
+    out += '[';
+    for (int r = 0; r < polygon.getNumInteriorRings() + 1; ++r) {
+        const OGRLinearRing& ring = r == 0 ? *polygon.getExteriorRing() : *polygon.getInteriorRing(r - 1);
+        const bool exterior = r == 0;
+        if (r > 0)
+            out += ',';
+        appendCurve(out, ring, (signedArea(ring) > 0.0) != exterior);
+    }
+    out += ']';
+}
+
+void appendGeometry(std::string& out, const OGRGeometry* geometry) {
+    if (geometry == nullptr || geometry->IsEmpty()) {
+        out += "null";
+        return;
+    }
+    switch (wkbFlatten(geometry->getGeometryType())) {
+    case wkbPoint: {
+        const auto* point = geometry->toPoint();
+        out += "{\"type\":\"Point\",\"coordinates\":";
+        appendPoint(out, point->getX(), point->getY());
+        break;
+    }
+    case wkbLineString:
+        out += "{\"type\":\"LineString\",\"coordinates\":";
+        appendCurve(out, *geometry->toLineString(), false);
+        break;
+    case wkbPolygon:
+        out += "{\"type\":\"Polygon\",\"coordinates\":";
+        appendPolygonRings(out, *geometry->toPolygon());
+        break;
+    case wkbMultiLineString: {
+        const auto* parts = geometry->toMultiLineString();
+        out += "{\"type\":\"MultiLineString\",\"coordinates\":[";
+        for (int i = 0; i < parts->getNumGeometries(); ++i) {
+            if (i > 0)
+                out += ',';
+            appendCurve(out, *parts->getGeometryRef(i), false);
+        }
+        out += ']';
+        break;
+    }
+    case wkbMultiPolygon: {
+        const auto* parts = geometry->toMultiPolygon();
+        if (parts->getNumGeometries() == 1) {
+            appendGeometry(out, parts->getGeometryRef(0)); // a Polygon, as OGR writes it
+            return;
+        }
+        out += "{\"type\":\"MultiPolygon\",\"coordinates\":[";
+        for (int i = 0; i < parts->getNumGeometries(); ++i) {
+            if (i > 0)
+                out += ',';
+            appendPolygonRings(out, *parts->getGeometryRef(i));
+        }
+        out += ']';
+        break;
+    }
+    case wkbGeometryCollection: {
+        const auto* parts = geometry->toGeometryCollection();
+        out += "{\"type\":\"GeometryCollection\",\"geometries\":[";
+        for (int i = 0; i < parts->getNumGeometries(); ++i) {
+            if (i > 0)
+                out += ',';
+            appendGeometry(out, parts->getGeometryRef(i));
+        }
+        out += ']';
+        break;
+    }
+    default:
+        out += "null";
+        return;
+    }
+    out += '}';
+}
+
+bool spansHalfTheGlobe(const OGRGeometry* geometry) {
+    if (geometry == nullptr || geometry->IsEmpty())
+        return false;
+    OGREnvelope envelope;
+    geometry->getEnvelope(&envelope);
+    return envelope.MaxX - envelope.MinX > 180.0;
+}
+
+// Builds one feature line: {"type":"Feature","properties":{...},"geometry":...}
+class FeatureLine {
+  public:
+    FeatureLine(std::string& out, const char* kind) : out_(out) {
+        out_ += "{\"type\":\"Feature\",\"properties\":{\"kind\":";
+        appendJsonString(out_, kind);
+    }
+    FeatureLine& robot(const ExportContext& context, int robot) {
+        integer("robot", robotNumber(robot));
+        out_ += ",\"robot_name\":";
+        appendJsonString(out_, context.robotName(robot));
+        return *this;
+    }
+    FeatureLine& integer(const char* key, long long value) {
+        name(key);
+        std::array<char, 24> buffer{};
+        const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+        out_.append(buffer.data(), result.ptr);
+        return *this;
+    }
+    FeatureLine& real(const char* key, double value) {
+        name(key);
+        appendReal(out_, value);
+        return *this;
+    }
+    void geometry(const OGRGeometry* geometry, bool last) {
+        out_ += "},\"geometry\":";
+        appendGeometry(out_, geometry);
+        out_ += last ? "}\n" : "},\n";
+    }
+
+  private:
+    void name(const char* key) {
+        out_ += ",\"";
+        out_ += key;
+        out_ += "\":";
+    }
+    std::string& out_;
+};
+
+} // namespace
+
+bool spansTheAntimeridian(const PlanFeatures& features) {
+    for (const auto& region : features.regions)
+        if (spansHalfTheGlobe(region.geometry.get()))
+            return true;
+    for (const auto& line : features.paths)
+        if (spansHalfTheGlobe(line.geometry.get()))
+            return true;
+    for (const auto& part : features.unreachable)
+        if (spansHalfTheGlobe(part.geometry.get()))
+            return true;
+    return false;
+}
+
+std::optional<std::string> planGeoJsonText(const ExportContext& context, const PlanFeatures& features) {
+    const std::size_t count = features.regions.size() + features.paths.size() + features.starts.size() +
+                              features.unreachable.size();
+    std::size_t written = 0;
+    std::string out = "{\n\"type\": \"FeatureCollection\",\n\"features\": [\n";
+    for (const auto& region : features.regions) {
+        if (context.cancelled())
+            return std::nullopt;
+        FeatureLine(out, "region")
+            .robot(context, region.robot)
+            .real("cost_s", region.costSeconds)
+            .real("area_m2", region.areaSquareMetres)
+            .integer("cells", region.cells)
+            .geometry(region.geometry.get(), ++written == count);
+    }
+    for (const auto& line : features.paths) {
+        if (context.cancelled())
+            return std::nullopt;
+        FeatureLine(out, "path")
+            .robot(context, line.robot)
+            .real("length_m", line.lengthMetres)
+            .real("time_s", line.timeSeconds)
+            .integer("turns", line.turns)
+            .geometry(line.geometry.get(), ++written == count);
+    }
+    for (const auto& start : features.starts)
+        FeatureLine(out, "start")
+            .robot(context, start.robot)
+            .geometry(start.geometry.get(), ++written == count);
+    for (const auto& part : features.unreachable) {
+        FeatureLine(out, "unreachable")
+            .real("area_m2", part.areaSquareMetres)
+            .geometry(part.geometry.get(), ++written == count);
+    }
+    out += "]\n}\n";
+    return out;
+}
+
+} // namespace mcpp::io::internal
