@@ -216,25 +216,35 @@ class PlanExportTest : public QObject {
     }
 
     // A plan across the antimeridian (UTM zone 60 at 60 degrees north, 180 degrees through robot 1's region
-    // and path): no feature may run the long way round the globe, from +180 to -180 degrees.
-    void geoJsonAcrossTheAntimeridian() {
+    // and path), in GeoJSON and KML: no feature may run the long way round the globe, from +180 to -180.
+    void featuresAreCutAtTheAntimeridian_data() {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("GeoJSON") << "antimeridian.geojson";
+        QTest::newRow("KML") << "antimeridian.kml";
+    }
+    void featuresAreCutAtTheAntimeridian() {
+        QFETCH(QString, name);
         const GeoReference zone60 = GeoReference::fromDefinition("EPSG:32660").value();
         const MapPoint antimeridian = zone60.fromWgs84({180.0, 60.0}).value();
         const Plan plan = test::makeFixturePlan(antimeridian.x - 15.0, antimeridian.y + 10.0);
         ExportContext across{plan, zone60, classes_, {}};
-        const std::string path = file("antimeridian.geojson");
-        const Status written = writePlanGeoJson(across, path);
+        const std::string path = folder_.filePath(name).toStdString();
+        const Status written =
+            name.endsWith(".kml") ? writePlanKml(across, path) : writePlanGeoJson(across, path);
         QVERIFY2(written.ok(), written.error().c_str());
         Dataset dataset = openVector(path);
         QVERIFY(dataset != nullptr);
         int features = 0;
-        for (auto& feature : *dataset->GetLayer(0)) {
-            const OGRGeometry* geometry = feature->GetGeometryRef();
-            QVERIFY2(longestLongitudeStep(*geometry) < 1.0, feature->GetFieldAsString("kind"));
-            OGREnvelope envelope;
-            geometry->getEnvelope(&envelope);
-            QVERIFY(envelope.MinX >= -180.0 && envelope.MaxX <= 180.0);
-            ++features;
+        for (int layer = 0; layer < dataset->GetLayerCount(); ++layer) {
+            for (auto& feature : *dataset->GetLayer(layer)) {
+                const OGRGeometry* geometry = feature->GetGeometryRef();
+                QVERIFY(geometry != nullptr);
+                QVERIFY2(longestLongitudeStep(*geometry) < 1.0, dataset->GetLayer(layer)->GetName());
+                OGREnvelope envelope;
+                geometry->getEnvelope(&envelope);
+                QVERIFY(envelope.MinX >= -180.0 && envelope.MaxX <= 180.0);
+                ++features;
+            }
         }
         QCOMPARE(features, 7);
     }
