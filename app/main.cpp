@@ -10,6 +10,8 @@
 #include <QString>
 #include <QtGlobal>
 #include <iostream>
+#include <limits>
+#include <malloc.h>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -23,7 +25,19 @@ void batchMessageHandler(QtMsgType type, const QMessageLogContext& /*context*/, 
         std::cerr << "mcpp: qt: " << message.toStdString() << '\n';
 }
 
+// A batch run is one process per plan: the large blocks each stage frees are better kept for the next stage
+// than returned to the system and faulted in again, page by zeroed page (on a 4.8 M-cell map that was 30 000
+// page faults and a second of system time, a tenth of the planning, for 5 % more peak memory). The window
+// keeps glibc's defaults, so that memory goes back to the system between plans.
+void keepFreedMemoryForReuse() {
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+    mallopt(M_MMAP_MAX, 0);                                     // large blocks from the heap, not from mmap
+    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max()); // and never handed back
+#endif
+}
+
 int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
+    keepFreedMemoryForReuse();
     const mcpp::io::CrsDatabaseWarmUp warmUp;
     // plan.png is painted with QPainter, which needs a QGuiApplication; offscreen needs no display.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))

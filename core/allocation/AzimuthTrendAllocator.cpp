@@ -298,8 +298,6 @@ class Allocation {
     bool stealFromNeighbour(int robot) {
         RobotState& state = robots_[static_cast<std::size_t>(robot)];
         auto& border = state.foreignBorder;
-        std::sort(border.begin(), border.end());
-        border.erase(std::unique(border.begin(), border.end()), border.end());
         const double centreX = state.centreX();
         const double centreY = state.centreY();
         const double towardsX = unassignedArea_ > 0 ? unassignedX_ / unassignedArea_ - centreX : 0.0;
@@ -311,10 +309,15 @@ class Allocation {
         };
         std::vector<Candidate> candidates;
         std::size_t kept = 0;
+        // A stuck robot steals again and again from a border of thousands of cells: duplicates go by a stamp
+        // per call and only the best candidates are ordered, so a steal is linear in the border.
+        ++stealStamp_;
         for (int cell : border) {
             const int owner = owner_[static_cast<std::size_t>(cell)];
-            if (owner < 0 || owner == robot || !touchesRegion(cell, robot))
+            if (owner < 0 || owner == robot || stealSeen_[static_cast<std::size_t>(cell)] == stealStamp_ ||
+                !touchesRegion(cell, robot))
                 continue;
+            stealSeen_[static_cast<std::size_t>(cell)] = stealStamp_;
             border[kept++] = cell;
             const RobotState& donor = robots_[static_cast<std::size_t>(owner)];
             if (cell == donor.startCell)
@@ -326,18 +329,21 @@ class Allocation {
             candidates.push_back({dx * towardsX + dy * towardsY >= 0.0, std::sqrt(dx * dx + dy * dy), cell});
         }
         border.resize(kept);
-        std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        const auto before = [](const Candidate& a, const Candidate& b) {
             if (a.facingUnassigned != b.facingUnassigned)
                 return a.facingUnassigned;
             if (a.distance != b.distance)
                 return a.distance < b.distance;
             return a.cell < b.cell;
-        });
+        };
+        const auto best = candidates.begin() + std::min<std::ptrdiff_t>(stealTries, std::ssize(candidates));
+        std::partial_sort(candidates.begin(), best, candidates.end(), before);
+        candidates.erase(best, candidates.end());
         std::vector<int>& ordered = scratchCells_;
         ordered.clear();
         for (const auto& candidate : candidates)
             ordered.push_back(candidate.cell);
-        const int chosen = firstRemovable(ordered, 32);
+        const int chosen = firstRemovable(ordered, stealTries);
         if (chosen >= 0) {
             const int donor = owner_[static_cast<std::size_t>(chosen)];
             give(chosen, robot);
@@ -591,6 +597,10 @@ class Allocation {
     std::vector<int> lastChain_;
     std::vector<std::pair<double, int>> scratchCandidates_;
     std::vector<int> scratchCells_;
+    static constexpr int stealTries = 32; // border cells a steal tries, best first
+    std::vector<std::uint32_t> stealSeen_ =
+        std::vector<std::uint32_t>(static_cast<std::size_t>(cellCount_), 0);
+    std::uint32_t stealStamp_ = 0;
     std::vector<char> handOverKnown_;
     std::vector<char> handOverPossible_;
 };
