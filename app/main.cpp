@@ -25,11 +25,12 @@ void batchMessageHandler(QtMsgType type, const QMessageLogContext& /*context*/, 
         std::cerr << "mcpp: qt: " << message.toStdString() << '\n';
 }
 
-// A batch run is one process per plan: blocks of up to 32 MB that a stage frees are kept for the next stage
-// rather than handed back to the system and faulted in again, page by zeroed page. On a 4.8 M-cell map that
-// is 54 000 page faults instead of 62 000-86 000 and 2.1-2.5 s of system time instead of 2.7-3.7 s, for 2 %
-// more peak memory; heap blocks for everything (no mmap) saved more time but took up to 17 % more memory. The
-// window keeps glibc's defaults, so that memory goes back to the system between plans.
+// A batch run is a short-lived process: blocks of up to 32 MB that a stage frees are kept for the next stage
+// (or the next planner of --compare) rather than handed back to the system and faulted in again, page by
+// zeroed page. On a 4.8 M-cell map that is 54 000 page faults instead of 62 000-86 000 and 2.1-2.5 s of
+// system time instead of 2.7-3.7 s, for 2 % more peak memory; heap blocks for everything (no mmap) saved more
+// time but took up to 17 % more memory. The window keeps glibc's defaults, so that memory goes back to the
+// system between plans.
 void keepFreedMemoryForReuse() {
 #if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
     constexpr int largestReusedBlock = 32 << 20; // glibc's ceiling for this setting
@@ -40,10 +41,12 @@ void keepFreedMemoryForReuse() {
 
 int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
     keepFreedMemoryForReuse();
-    const mcpp::io::CrsDatabaseWarmUp warmUp;
     // plan.png is painted with QPainter, which needs a QGuiApplication; offscreen needs no display.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
+    // After the last change to the environment: the warm-up thread reads it (glibc's setenv is not safe
+    // beside a getenv on another thread).
+    const mcpp::io::CrsDatabaseWarmUp warmUp;
     qInstallMessageHandler(batchMessageHandler);
     mcpp::setWorkerThreads(options.threads);
     int qtArgumentCount = 1;

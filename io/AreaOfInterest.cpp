@@ -201,7 +201,7 @@ Status writeAreaPolygons(const std::string& path, const std::vector<std::vector<
         if (!add(polygon))
             return Status::failure(path + ": cannot write a polygon" + QuietGdalErrors::detail());
     }
-    return file.commit();
+    return file.commit(Sync::ToDisk); // an area the user drew
 }
 
 } // namespace mcpp::io

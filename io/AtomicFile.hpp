@@ -8,8 +8,8 @@
 namespace mcpp::io {
 
 // Whether a write is on the disk when it returns. The user's own files (missions, class tables, saved
-// plans) are synced; exports, which the mission makes again, are left to the system to flush: a sync cost
-// about 1.5 ms a file, a third of the time of writing a 20-robot plan's 108 files.
+// plans, drawn areas) are synced; exports, which the mission makes again, are left to the system to flush: a
+// sync cost about 1.5 ms a file, a third of the time of writing a 20-robot plan's 108 files.
 enum class Sync { ToDisk, BySystem };
 
 // Writes the whole file or nothing: the bytes go to a temporary file beside `path`, every write checked

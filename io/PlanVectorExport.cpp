@@ -5,6 +5,7 @@
 #include "io/internal/PlanGeometry.hpp"
 #include "io/internal/TextFiles.hpp"
 
+#include <cmath>
 #include <ogrsf_frmts.h>
 #include <optional>
 
@@ -56,7 +57,7 @@ class VectorFileWriter {
     }
 
     GDALDataset& dataset() { return file_.dataset(); }
-    Status commit() { return file_.commit(); }
+    Status commit() { return file_.commit(Sync::BySystem); } // exports: the mission makes them again
 
   private:
     internal::DatasetFile file_;
@@ -96,6 +97,18 @@ Result<std::unique_ptr<OGRCoordinateTransformation>> toWgs84(const GeoReference&
     return transformation;
 }
 
+// Into WGS84, every coordinate finite (the GeoJSON text would otherwise hold "inf").
+bool transformed(OGRGeometry& geometry, OGRCoordinateTransformation& transformation) {
+    if (geometry.IsEmpty())
+        return true;
+    if (geometry.transform(&transformation) != OGRERR_NONE)
+        return false;
+    OGREnvelope envelope;
+    geometry.getEnvelope(&envelope);
+    return std::isfinite(envelope.MinX) && std::isfinite(envelope.MaxX) && std::isfinite(envelope.MinY) &&
+           std::isfinite(envelope.MaxY);
+}
+
 Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transformation,
                     const std::string& path) {
     const auto fail = [&](const char* what) {
@@ -103,19 +116,19 @@ Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transfo
                                QuietGdalErrors::detail());
     };
     for (auto& region : features.regions) {
-        if (!region.geometry->IsEmpty() && region.geometry->transform(&transformation) != OGRERR_NONE)
+        if (!transformed(*region.geometry, transformation))
             return fail("a region");
     }
     for (auto& line : features.paths) {
-        if (line.geometry->transform(&transformation) != OGRERR_NONE)
+        if (!transformed(*line.geometry, transformation))
             return fail("a path");
     }
     for (auto& start : features.starts) {
-        if (start.geometry->transform(&transformation) != OGRERR_NONE)
+        if (!transformed(*start.geometry, transformation))
             return fail("a start");
     }
     for (auto& part : features.unreachable) {
-        if (part.geometry->transform(&transformation) != OGRERR_NONE)
+        if (!transformed(*part.geometry, transformation))
             return fail("an unreachable area");
     }
     return {};

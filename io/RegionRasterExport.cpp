@@ -113,7 +113,7 @@ Status writeRegionRaster(const ExportContext& context, const std::string& path) 
                                : writeRows<std::uint16_t>(band, labels, encoding, context, path);
     if (!written)
         return written;
-    return file.commit();
+    return file.commit(Sync::BySystem);
 }
 
 } // namespace mcpp::io

@@ -311,6 +311,8 @@ class Allocation {
         std::size_t kept = 0;
         // A stuck robot steals again and again from a border of thousands of cells: duplicates go by a stamp
         // per call and only the best candidates are ordered, so a steal is linear in the border.
+        if (stealSeen_.empty()) // allocated by the first steal, so not at all for plans without one
+            stealSeen_.assign(static_cast<std::size_t>(cellCount_), 0);
         ++stealStamp_;
         for (int cell : border) {
             const int owner = owner_[static_cast<std::size_t>(cell)];
@@ -597,9 +599,8 @@ class Allocation {
     std::vector<int> lastChain_;
     std::vector<std::pair<double, int>> scratchCandidates_;
     std::vector<int> scratchCells_;
-    static constexpr int stealTries = 32; // border cells a steal tries, best first
-    std::vector<std::uint32_t> stealSeen_ =
-        std::vector<std::uint32_t>(static_cast<std::size_t>(cellCount_), 0);
+    static constexpr int stealTries = 32;  // border cells a steal tries, best first
+    std::vector<std::uint32_t> stealSeen_; // stealStamp_ of the last steal that looked at each cell
     std::uint32_t stealStamp_ = 0;
     std::vector<char> handOverKnown_;
     std::vector<char> handOverPossible_;

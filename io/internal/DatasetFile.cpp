@@ -57,7 +57,7 @@ Status DatasetFile::create(const char* driverName, int columns, int rows, int ba
     return {};
 }
 
-Status DatasetFile::commit() {
+Status DatasetFile::commit(Sync sync) {
     CPLErrorReset();
     dataset_.reset(); // flushes and closes
     if (CPLGetLastErrorType() == CE_Failure)
@@ -67,8 +67,7 @@ Status DatasetFile::commit() {
     if (bytes == nullptr)
         return Status::failure(path_ + ": the driver wrote no file" + QuietGdalErrors::detail());
     return writeFileAtomically(
-        path_, std::string_view(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size)),
-        Sync::BySystem); // every dataset written this way is an export
+        path_, std::string_view(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size)), sync);
 }
 
 } // namespace mcpp::io::internal

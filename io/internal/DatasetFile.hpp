@@ -2,6 +2,7 @@
 
 // Private to mcpp_io.
 
+#include "io/AtomicFile.hpp"
 #include "io/Result.hpp"
 #include "io/internal/GdalSupport.hpp"
 
@@ -24,8 +25,9 @@ class DatasetFile {
                                 const char* const* options = nullptr);
     [[nodiscard]] GDALDataset& dataset() { return *dataset_; }
     [[nodiscard]] const std::string& path() const { return path_; }
-    // Closes the dataset (flushing it) and writes the file into place.
-    [[nodiscard]] Status commit();
+    // Closes the dataset (flushing it) and writes the file into place: exports left to the system to flush,
+    // files the user drew synced to the disk (io::Sync).
+    [[nodiscard]] Status commit(Sync sync);
 
   private:
     std::string path_;

@@ -63,6 +63,10 @@ void appendCurve(std::string& out, const OGRSimpleCurve& curve, bool reversed) {
 
 void appendPolygonRings(std::string& out, const OGRPolygon& polygon) {
     out += '[';
+    if (polygon.IsEmpty()) {
+        out += ']';
+        return;
+    }
     for (int r = 0; r < polygon.getNumInteriorRings() + 1; ++r) {
         const OGRLinearRing& ring = r == 0 ? *polygon.getExteriorRing() : *polygon.getInteriorRing(r - 1);
         const bool exterior = r == 0;

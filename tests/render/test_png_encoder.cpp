@@ -2,9 +2,9 @@
 
 #include <QImage>
 #include <QtTest>
-#include <array>
 #include <cstdint>
 #include <random>
+#include <vector>
 
 using namespace mcpp;
 
@@ -99,13 +99,21 @@ class PngEncoderTest : public QObject {
                 QCOMPARE(comparable.pixel(x, y), image.pixel(x, y));
     }
 
-    // Other formats are converted first: a premultiplied picture (as the map canvas paints) comes out as the
-    // colours it shows.
+    // Other formats are converted first: three-byte pixels, and a premultiplied picture (as the map canvas
+    // paints) comes out with its colours and alpha unpremultiplied, as PNG stores them.
     void otherFormatsAreConverted() {
         QImage image(40, 20, QImage::Format_RGB888);
         image.fill(QColor(12, 200, 99));
-        const QImage decoded = QImage::fromData(render::encodePng(image), "PNG");
-        QCOMPARE(decoded.pixelColor(39, 19), QColor(12, 200, 99));
+        QCOMPARE(QImage::fromData(render::encodePng(image), "PNG").pixelColor(39, 19), QColor(12, 200, 99));
+
+        QImage translucent(30, 10, QImage::Format_ARGB32_Premultiplied);
+        translucent.fill(QColor(200, 100, 40, 128));
+        const QImage decoded =
+            QImage::fromData(render::encodePng(translucent), "PNG").convertToFormat(QImage::Format_ARGB32);
+        const QColor expected = translucent.convertToFormat(QImage::Format_ARGB32).pixelColor(29, 9);
+        QCOMPARE(decoded.pixelColor(29, 9), expected);
+        QCOMPARE(decoded.pixelColor(29, 9).alpha(), 128);
+        QVERIFY(std::abs(decoded.pixelColor(0, 0).red() - 200) <= 2); // not the premultiplied 100
     }
 
     // Chunks in order, each with a correct CRC; compressed data above a mebibyte in several IDAT chunks.
