@@ -134,12 +134,19 @@ Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transfo
     return {};
 }
 
+// Whether a geometry in WGS84 spans more than 180 degrees of longitude: it crosses the antimeridian.
+bool spansHalfTheGlobe(const OGRGeometry& geometry) {
+    OGREnvelope envelope;
+    geometry.getEnvelope(&envelope);
+    return envelope.MaxX - envelope.MinX > 180.0;
+}
+
 // RFC 7946 (and KML readers) want features that cross the antimeridian cut in two there, each part on its
 // own side, rather than one running the long way round the globe.
 void cutAtTheAntimeridian(PlanFeatures& features) {
     const char* const options[] = {"WRAPDATELINE=YES", nullptr};
     const auto cut = [&](std::unique_ptr<OGRGeometry>& geometry) {
-        if (!geometry || geometry->IsEmpty())
+        if (!geometry || geometry->IsEmpty() || !spansHalfTheGlobe(*geometry))
             return;
         std::unique_ptr<OGRGeometry> wrapped(
             OGRGeometryFactory::transformWithOptions(geometry.get(), nullptr, const_cast<char**>(options)));
@@ -164,8 +171,7 @@ Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::st
     if (Status status = transformAll(features.value(), *transformation.value(), path); !status) {
         return Result<PlanFeatures>::failure(status.error());
     }
-    if (internal::spansTheAntimeridian(features.value()))
-        cutAtTheAntimeridian(features.value());
+    cutAtTheAntimeridian(features.value());
     return features;
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstring>
 #include <libdeflate.h>
 #include <memory>
 #include <vector>
@@ -16,10 +15,15 @@ namespace {
 constexpr int kCompressionLevel = 4;
 constexpr std::uint8_t kFilterUp = 2;
 
+// PNG stores its numbers most significant byte first.
+std::array<std::uint8_t, 4> bigEndian(std::uint32_t value) {
+    return {static_cast<std::uint8_t>(value >> 24), static_cast<std::uint8_t>(value >> 16),
+            static_cast<std::uint8_t>(value >> 8), static_cast<std::uint8_t>(value)};
+}
+
 void appendBigEndian(QByteArray& bytes, std::uint32_t value) {
-    const std::array<char, 4> big{static_cast<char>(value >> 24), static_cast<char>(value >> 16),
-                                  static_cast<char>(value >> 8), static_cast<char>(value)};
-    bytes.append(big.data(), 4);
+    const auto big = bigEndian(value);
+    bytes.append(reinterpret_cast<const char*>(big.data()), 4);
 }
 
 // A chunk: length, type, data and the CRC-32 of type and data.
@@ -73,6 +77,18 @@ struct CompressorDeleter {
     void operator()(libdeflate_compressor* compressor) const { libdeflate_free_compressor(compressor); }
 };
 
+// The zlib stream of the filtered rows (its size is the bytes used); size 0 when compression fails.
+ByteBuffer compressedRows(const ByteBuffer& rows) {
+    const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
+        libdeflate_alloc_compressor(kCompressionLevel));
+    if (!compressor)
+        return ByteBuffer(0);
+    ByteBuffer compressed(libdeflate_zlib_compress_bound(compressor.get(), rows.size));
+    compressed.size = libdeflate_zlib_compress(compressor.get(), rows.bytes.get(), rows.size,
+                                               compressed.bytes.get(), compressed.size);
+    return compressed;
+}
+
 } // namespace
 
 QByteArray encodePng(const QImage& image) {
@@ -80,32 +96,21 @@ QByteArray encodePng(const QImage& image) {
         return {};
     const bool opaque = !image.hasAlphaChannel();
     const QImage pixels = image.convertToFormat(opaque ? QImage::Format_RGB32 : QImage::Format_ARGB32);
-    const int channels = opaque ? 3 : 4;
-    const ByteBuffer rows = filteredRows(pixels, channels);
-
-    const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
-        libdeflate_alloc_compressor(kCompressionLevel));
-    if (!compressor)
-        return {};
-    const ByteBuffer compressed(libdeflate_zlib_compress_bound(compressor.get(), rows.size));
-    const std::size_t compressedSize = libdeflate_zlib_compress(compressor.get(), rows.bytes.get(), rows.size,
-                                                                compressed.bytes.get(), compressed.size);
+    const ByteBuffer compressed = compressedRows(filteredRows(pixels, opaque ? 3 : 4));
+    const std::size_t compressedSize = compressed.size;
     if (compressedSize == 0)
         return {};
 
     QByteArray bytes;
     bytes.reserve(static_cast<qsizetype>(compressedSize) + 64);
     bytes.append("\x89PNG\r\n\x1a\n", 8);
-    std::array<std::uint8_t, 13> header{};
-    const auto putBigEndian = [&header](std::size_t at, std::uint32_t value) {
-        for (int i = 0; i < 4; ++i)
-            header[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(value >> (24 - 8 * i));
-    };
-    putBigEndian(0, static_cast<std::uint32_t>(pixels.width()));
-    putBigEndian(4, static_cast<std::uint32_t>(pixels.height()));
-    header[8] = 8;              // bits per channel
+    std::array<std::uint8_t, 13> header{}; // 8 bits a channel; compression, filtering, interlace all 0
+    const auto width = bigEndian(static_cast<std::uint32_t>(pixels.width()));
+    const auto height = bigEndian(static_cast<std::uint32_t>(pixels.height()));
+    std::copy(width.begin(), width.end(), header.begin());
+    std::copy(height.begin(), height.end(), header.begin() + 4);
+    header[8] = 8;
     header[9] = opaque ? 2 : 6; // colour type: RGB or RGBA
-    // header[10..12]: deflate compression, adaptive filtering, no interlace (all zero)
     appendChunk(bytes, "IHDR", header.data(), header.size());
     // Several IDAT chunks of at most a mebibyte: readers are kinder to them than to one huge chunk.
     constexpr std::size_t kChunkBytes = std::size_t{1} << 20;

@@ -606,11 +606,6 @@ class Allocation {
     std::vector<char> handOverPossible_;
 };
 
-// The cell moves of Allocation only pass single cells a donor can spare nearby. A region walled in by thin
-// neighbours (a band one cell wide wrapped round it) gets nothing that way: on the 49 x 49 benchmark grid
-// with 20 robots two regions were left at 1 700 s of cover against 2 100 s. BorderExchange also passes a
-// cell with what hangs on it, and settles every part of the map whose costs are further than a cell from
-// their fair share.
 // Whether every region is within `slack` of the mean of `robots`' costs.
 bool within(const RegionAllocation& regions, const std::vector<int>& robots, double slack) {
     double total = 0.0;
@@ -622,6 +617,11 @@ bool within(const RegionAllocation& regions, const std::vector<int>& robots, dou
     });
 }
 
+// The cell moves of Allocation only pass single cells a donor can spare nearby. A region walled in by thin
+// neighbours (a band one cell wide wrapped round it) gets nothing that way: on the 49 x 49 benchmark grid
+// with 20 robots two regions were left at 1 700 s of cover against 2 100 s. BorderExchange also passes a
+// cell with what hangs on it, and settles every part of the map whose costs are further than a cell from
+// their fair share.
 void settleWithPieces(const CellGraph& graph, RegionAllocation& regions) {
     // Most allocations are settled already: then the parts of the map need not be found.
     double largestCell = 0.0;

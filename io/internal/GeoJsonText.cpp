@@ -61,20 +61,75 @@ void appendCurve(std::string& out, const OGRSimpleCurve& curve, bool reversed) {
     out += ']';
 }
 
+// RFC 7946 ring order: the exterior counter-clockwise, holes clockwise.
 void appendPolygonRings(std::string& out, const OGRPolygon& polygon) {
     out += '[';
-    if (polygon.IsEmpty()) {
-        out += ']';
-        return;
-    }
-    for (int r = 0; r < polygon.getNumInteriorRings() + 1; ++r) {
-        const OGRLinearRing& ring = r == 0 ? *polygon.getExteriorRing() : *polygon.getInteriorRing(r - 1);
-        const bool exterior = r == 0;
-        if (r > 0)
+    bool exterior = true;
+    for (const OGRLinearRing* ring : polygon) {
+        if (!exterior)
             out += ',';
-        appendCurve(out, ring, (signedArea(ring) > 0.0) != exterior);
+        appendCurve(out, *ring, (signedArea(*ring) > 0.0) != exterior);
+        exterior = false;
     }
     out += ']';
+}
+
+void appendGeometry(std::string& out, const OGRGeometry* geometry);
+
+// "[a,b,...]": each part of a collection as appendPart writes it.
+template <typename Collection, typename AppendPart>
+void appendParts(std::string& out, const Collection& parts, AppendPart appendPart) {
+    out += '[';
+    for (int i = 0; i < parts.getNumGeometries(); ++i) {
+        if (i > 0)
+            out += ',';
+        appendPart(*parts.getGeometryRef(i));
+    }
+    out += ']';
+}
+
+// The geometry object's body after its opening brace: its type and coordinates (or member geometries).
+void appendTypeAndCoordinates(std::string& out, const OGRGeometry& geometry) {
+    const auto typed = [&out](const char* type, const char* member) {
+        out += "\"type\":\"";
+        out += type;
+        out += "\",\"";
+        out += member;
+        out += "\":";
+    };
+    switch (wkbFlatten(geometry.getGeometryType())) {
+    case wkbPoint:
+        typed("Point", "coordinates");
+        appendPoint(out, geometry.toPoint()->getX(), geometry.toPoint()->getY());
+        return;
+    case wkbLineString:
+        typed("LineString", "coordinates");
+        appendCurve(out, *geometry.toLineString(), false);
+        return;
+    case wkbPolygon:
+        typed("Polygon", "coordinates");
+        appendPolygonRings(out, *geometry.toPolygon());
+        return;
+    case wkbMultiLineString:
+        typed("MultiLineString", "coordinates");
+        appendParts(out, *geometry.toMultiLineString(),
+                    [&out](const OGRLineString& line) { appendCurve(out, line, false); });
+        return;
+    case wkbMultiPolygon:
+        typed("MultiPolygon", "coordinates");
+        appendParts(out, *geometry.toMultiPolygon(),
+                    [&out](const OGRPolygon& polygon) { appendPolygonRings(out, polygon); });
+        return;
+    case wkbGeometryCollection: // as cutting at the antimeridian may leave
+        typed("GeometryCollection", "geometries");
+        appendParts(out, *geometry.toGeometryCollection(),
+                    [&out](const OGRGeometry& part) { appendGeometry(out, &part); });
+        return;
+    default: // no other kind comes from a plan
+        typed("GeometryCollection", "geometries");
+        out += "[]";
+        return;
+    }
 }
 
 void appendGeometry(std::string& out, const OGRGeometry* geometry) {
@@ -82,71 +137,13 @@ void appendGeometry(std::string& out, const OGRGeometry* geometry) {
         out += "null";
         return;
     }
-    switch (wkbFlatten(geometry->getGeometryType())) {
-    case wkbPoint: {
-        const auto* point = geometry->toPoint();
-        out += "{\"type\":\"Point\",\"coordinates\":";
-        appendPoint(out, point->getX(), point->getY());
-        break;
-    }
-    case wkbLineString:
-        out += "{\"type\":\"LineString\",\"coordinates\":";
-        appendCurve(out, *geometry->toLineString(), false);
-        break;
-    case wkbPolygon:
-        out += "{\"type\":\"Polygon\",\"coordinates\":";
-        appendPolygonRings(out, *geometry->toPolygon());
-        break;
-    case wkbMultiLineString: {
-        const auto* parts = geometry->toMultiLineString();
-        out += "{\"type\":\"MultiLineString\",\"coordinates\":[";
-        for (int i = 0; i < parts->getNumGeometries(); ++i) {
-            if (i > 0)
-                out += ',';
-            appendCurve(out, *parts->getGeometryRef(i), false);
-        }
-        out += ']';
-        break;
-    }
-    case wkbMultiPolygon: {
-        const auto* parts = geometry->toMultiPolygon();
-        if (parts->getNumGeometries() == 1) {
-            appendGeometry(out, parts->getGeometryRef(0)); // a Polygon, as OGR writes it
-            return;
-        }
-        out += "{\"type\":\"MultiPolygon\",\"coordinates\":[";
-        for (int i = 0; i < parts->getNumGeometries(); ++i) {
-            if (i > 0)
-                out += ',';
-            appendPolygonRings(out, *parts->getGeometryRef(i));
-        }
-        out += ']';
-        break;
-    }
-    case wkbGeometryCollection: {
-        const auto* parts = geometry->toGeometryCollection();
-        out += "{\"type\":\"GeometryCollection\",\"geometries\":[";
-        for (int i = 0; i < parts->getNumGeometries(); ++i) {
-            if (i > 0)
-                out += ',';
-            appendGeometry(out, parts->getGeometryRef(i));
-        }
-        out += ']';
-        break;
-    }
-    default:
-        out += "null";
-        return;
-    }
+    // A multipolygon of one part is written as a Polygon, as OGR writes it.
+    if (wkbFlatten(geometry->getGeometryType()) == wkbMultiPolygon &&
+        geometry->toMultiPolygon()->getNumGeometries() == 1)
+        geometry = geometry->toMultiPolygon()->getGeometryRef(0);
+    out += '{';
+    appendTypeAndCoordinates(out, *geometry);
     out += '}';
-}
-
-bool spansHalfTheGlobe(const OGRGeometry* geometry) {
-    if (geometry == nullptr || geometry->IsEmpty())
-        return false;
-    OGREnvelope envelope;
-    geometry->getEnvelope(&envelope);
-    return envelope.MaxX - envelope.MinX > 180.0;
 }
 
 // Builds one feature line: {"type":"Feature","properties":{...},"geometry":...}
@@ -190,19 +187,6 @@ class FeatureLine {
 };
 
 } // namespace
-
-bool spansTheAntimeridian(const PlanFeatures& features) {
-    for (const auto& region : features.regions)
-        if (spansHalfTheGlobe(region.geometry.get()))
-            return true;
-    for (const auto& line : features.paths)
-        if (spansHalfTheGlobe(line.geometry.get()))
-            return true;
-    for (const auto& part : features.unreachable)
-        if (spansHalfTheGlobe(part.geometry.get()))
-            return true;
-    return false;
-}
 
 std::optional<std::string> planGeoJsonText(const ExportContext& context, const PlanFeatures& features) {
     const std::size_t count = features.regions.size() + features.paths.size() + features.starts.size() +

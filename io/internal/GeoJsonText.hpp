@@ -8,10 +8,6 @@
 
 namespace mcpp::io::internal {
 
-// Whether a feature (in WGS84) spans more than 180 degrees of longitude: it crosses the antimeridian and
-// must be cut there.
-[[nodiscard]] bool spansTheAntimeridian(const PlanFeatures& features);
-
 // The plan's features, already in WGS84 longitude and latitude, as RFC 7946 GeoJSON text: one feature per
 // line, coordinates to 9 decimals, exterior rings counter-clockwise and holes clockwise. Written directly,
 // several times faster than OGR's GeoJSON driver, which builds a JSON object per coordinate. Nothing when

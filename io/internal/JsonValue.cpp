@@ -3,7 +3,6 @@
 #include "io/internal/TextFiles.hpp"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -60,9 +59,7 @@ void appendJsonNumber(std::string& out, double value) {
         out += "null";
         return;
     }
-    std::array<char, 32> buffer{};
-    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    out.append(buffer.data(), result.ptr);
+    out += formatShortest(value);
 }
 
 void appendJsonString(std::string& out, std::string_view text) {
@@ -88,18 +85,6 @@ void appendJsonString(std::string& out, std::string_view text) {
     out += '"';
 }
 
-std::string formatJsonNumber(double value) {
-    std::string out;
-    appendJsonNumber(out, value);
-    return out;
-}
-
-std::string quoteJsonString(const std::string& text) {
-    std::string out;
-    appendJsonString(out, text);
-    return out;
-}
-
 void JsonValue::write(std::string& out, int indent) const {
     const auto padding = static_cast<std::size_t>(indent + 2);
     switch (kind_) {
@@ -109,12 +94,9 @@ void JsonValue::write(std::string& out, int indent) const {
     case Kind::Boolean:
         out += boolean_ ? "true" : "false";
         return;
-    case Kind::Integer: {
-        std::array<char, 24> buffer{};
-        const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), integer_);
-        out.append(buffer.data(), result.ptr);
+    case Kind::Integer:
+        out += std::to_string(integer_);
         return;
-    }
     case Kind::Number:
         appendJsonNumber(out, number_);
         return;

@@ -46,10 +46,8 @@ class JsonValue {
     std::vector<std::pair<std::string, JsonValue>> members_;
 };
 
-// Shortest text that reads back as the same double ("30", "0.1", "1e+20"); "null" for NaN and infinities.
-[[nodiscard]] std::string formatJsonNumber(double value);
-[[nodiscard]] std::string quoteJsonString(const std::string& text);
-// The same, appended to `out` (no temporary strings: a big file's text is built this way).
+// Appended to `out`, so a big file's text is built without temporary strings: the shortest text that reads
+// back as the same double ("30", "0.1", "1e+20"), "null" for NaN and infinities; a quoted, escaped string.
 void appendJsonNumber(std::string& out, double value);
 void appendJsonString(std::string& out, std::string_view text);
 

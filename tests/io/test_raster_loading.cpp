@@ -34,6 +34,17 @@ const LegendEntry* legendEntry(const LoadedRaster& raster, std::int32_t value) {
     return nullptr;
 }
 
+// OGR's own transformation from a CRS (its file units) to WGS84 longitude, latitude: the tests' oracle.
+std::unique_ptr<OGRCoordinateTransformation> oracleToWgs84(const char* definition) {
+    OGRSpatialReference crs;
+    crs.SetFromUserInput(definition);
+    crs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    OGRSpatialReference wgs84;
+    wgs84.SetWellKnownGeogCS("WGS84");
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    return std::unique_ptr<OGRCoordinateTransformation>(OGRCreateCoordinateTransformation(&crs, &wgs84));
+}
+
 std::int64_t insidePixels(const ClassGrid& grid) {
     std::int64_t count = 0;
     for (int row = 0; row < grid.rows; ++row) {
@@ -226,14 +237,7 @@ class RasterLoadingTest : public QObject {
         QVERIFY(std::abs(raster.grid.originY - 2100000.0 * usFoot) < 1e-6);
         QVERIFY(std::abs(raster.grid.width() - 1000.0 * usFoot) < 1e-9);
         // The metre frame maps to the same place as the raw feet coordinates do.
-        OGRSpatialReference feet;
-        feet.SetFromUserInput("EPSG:2227");
-        feet.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-        OGRSpatialReference wgs84;
-        wgs84.SetWellKnownGeogCS("WGS84");
-        wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-        std::unique_ptr<OGRCoordinateTransformation> transformation(
-            OGRCreateCoordinateTransformation(&feet, &wgs84));
+        const auto transformation = oracleToWgs84("EPSG:2227");
         double x = 6000000.0, y = 2100000.0;
         QVERIFY(transformation->Transform(1, &x, &y));
         auto lonLat = raster.georeference.toWgs84({raster.grid.originX, raster.grid.originY});
@@ -258,15 +262,8 @@ class RasterLoadingTest : public QObject {
             const auto together = reference.toWgs84(points);
             QVERIFY(together.ok());
             QCOMPARE(together.value().size(), points.size());
-            OGRSpatialReference crs;
-            crs.SetFromUserInput(definition);
-            crs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-            OGRSpatialReference wgs84;
-            wgs84.SetWellKnownGeogCS("WGS84");
-            wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-            std::unique_ptr<OGRCoordinateTransformation> oracle(
-                OGRCreateCoordinateTransformation(&crs, &wgs84));
-            const double metresPerUnit = crs.GetLinearUnits(nullptr);
+            const auto oracle = oracleToWgs84(definition);
+            const double metresPerUnit = reference.metresPerUnit();
             for (std::size_t i = 0; i < points.size(); ++i) {
                 double x = points[i].x / metresPerUnit, y = points[i].y / metresPerUnit;
                 QVERIFY(oracle->Transform(1, &x, &y));
