@@ -1563,7 +1563,7 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
         showStatus(tr("Planned in %1 s: makespan %2, %3 × the lower bound.")
                        .arg(seconds, 0, 'f', 1)
                        .arg(ResultsPanel::formatDuration(metrics.makespanSeconds))
-                       .arg(metrics.ratio, 0, 'f', 2),
+                       .arg(metrics.ratio, 0, 'f', 3), // as the results panel and plan.png give it
                    15000);
     } else if (outcome.cancelled) {
         showStatus(tr("Planning cancelled; the previous plan, if any, is kept."));
