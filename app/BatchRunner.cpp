@@ -354,16 +354,20 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     }
     for (int robot = 0; robot < robots; ++robot)
         if (partsWritten.count({robot, "qgc-plan"}) != 0)
-            noteSplitMission(context, robot);
+            noteMissionFiles(context, robot);
     removeStaleRobotFiles(robots, partsWritten, folder);
 }
 
-void BatchRunner::noteSplitMission(const io::ExportContext& context, int robot) {
+void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) {
     // Named by the .plan file; the .waypoints files are split the same way.
     const std::string message =
         io::splitMissionNote(context, robot, "robot_" + std::to_string(io::robotNumber(robot)) + ".plan");
     if (!message.empty())
         note(message + ", and the same parts of the .waypoints file");
+    const std::string sorties =
+        io::sortieFilesNote(context, robot, "robot_" + std::to_string(io::robotNumber(robot)) + ".plan");
+    if (!sorties.empty())
+        note(sorties + ", and as .waypoints files");
 }
 
 void BatchRunner::removeStaleRobotFiles(

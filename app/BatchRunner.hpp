@@ -46,8 +46,9 @@ class BatchRunner {
     void removeStaleRobotFiles(int robots,
                                const std::map<std::pair<int, std::string>, std::size_t>& partsWritten,
                                const std::string& folder) const;
-    // Says when a robot's mission, as written, is above its autopilot's item limit.
-    void noteSplitMission(const io::ExportContext& context, int robot);
+    // Says when a robot's mission, as written, is above its autopilot's item limit, and when it is also
+    // written sortie by sortie.
+    void noteMissionFiles(const io::ExportContext& context, int robot);
     void printSummary(const Plan& plan) const;
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.
     void writeComparison(const std::vector<io::ComparisonRow>& rows,

@@ -183,6 +183,13 @@ std::string missionPartPath(const std::string& path, std::size_t part) {
     return (file.parent_path() / name).string();
 }
 
+std::string missionSortiePath(const std::string& path, std::size_t sortie) {
+    const std::filesystem::path file(path);
+    const std::string name =
+        file.stem().string() + "_sortie_" + std::to_string(sortie + 1) + file.extension().string();
+    return (file.parent_path() / name).string();
+}
+
 bool removeStaleMissionFiles(const std::string& path, std::size_t parts) {
     std::error_code code;
     bool removed = parts > 1 && std::filesystem::remove(path, code);

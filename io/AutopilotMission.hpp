@@ -53,6 +53,10 @@ struct AutopilotMission {
 // The file of one part of a split mission: "out/robot_1.plan" -> "out/robot_1_part_2.plan" (part from 0).
 [[nodiscard]] std::string missionPartPath(const std::string& path, std::size_t part);
 
+// The file of one sortie of a robot that charges between flights: "out/robot_1.plan" ->
+// "out/robot_1_sortie_2.plan" (sortie from 0). A sortie above the item limit is split into its own parts.
+[[nodiscard]] std::string missionSortiePath(const std::string& path, std::size_t sortie);
+
 // Removes what an earlier export to `path` left that this one did not write: the whole file when the mission
 // was written in parts, parts from `parts` on (all of them when it was written whole: parts 1, or not at
 // all: 0). True when a file went.

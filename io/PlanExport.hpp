@@ -96,6 +96,10 @@ struct ExportContext {
 // direction; a point on the straight segment between its neighbours is left out, whatever its land cover.
 [[nodiscard]] std::vector<Waypoint> turningPoints(const CoveragePath& path);
 
+// What to tell the user when the robot flies several sorties, each written beside `path` as its own mission
+// (missionSortiePath); empty when it flies one.
+[[nodiscard]] std::string sortieFilesNote(const ExportContext& context, int robot, const std::string& path);
+
 // The mission a robot's autopilot files hold (empty when the plan has no path for it), with the parts its
 // vehicle's item limit splits it into; made on first use and shared by the context's copies.
 [[nodiscard]] const AutopilotMission& autopilotMissionOf(const ExportContext& context, int robot);
@@ -105,7 +109,8 @@ struct ExportContext {
 
 // Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive
 // parts beside `path` (missionPartPath), each beginning where the one before it ended, and `path` itself is
-// not written.
+// not written. A robot that flies several sorties also gets each sortie as a mission of its own
+// (missionSortiePath), split the same way.
 [[nodiscard]] Status writeQGroundControlPlan(const ExportContext& context, int robot,
                                              const std::string& path);
 [[nodiscard]] Status writeWaypointList(const ExportContext& context, int robot,

@@ -1,14 +1,55 @@
+#include "core/coverage/PathMeasurement.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
 
+#include <algorithm>
 #include <variant>
 
 namespace mcpp::io {
 
 using internal::JsonValue;
+
+namespace {
+
+double chargingSeconds(const CoveragePath& path) {
+    double seconds = 0.0;
+    for (const PathPause& pause : path.pauses)
+        seconds += pause.seconds;
+    return seconds;
+}
+
+// A battery robot's sorties: how many, their times, the charges between them and what lies out of range.
+void addSorties(JsonValue& item, const Plan& plan, const RobotSorties& robot) {
+    const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
+    item.add("battery_s", robot.enduranceSeconds);
+    item.add("sorties", static_cast<int>(robot.sorties.size()));
+    item.add("charges", robot.charges());
+    item.add("charging_s", chargingSeconds(path));
+    JsonValue& times = item.add("sortie_times_s", JsonValue::array());
+    double longest = 0.0;
+    for (const Sortie& sortie : robot.sorties) {
+        times.push(sortieSeconds(path, sortie));
+        longest = std::max(longest, sortieSeconds(path, sortie));
+    }
+    item.add("longest_sortie_s", longest);
+    item.add("out_of_range_area_m2", robot.outOfRangeAreaSquareMetres);
+}
+
+std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
+    const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
+    double longest = 0.0;
+    for (const Sortie& sortie : robot.sorties)
+        longest = std::max(longest, sortieSeconds(path, sortie));
+    return "," + std::to_string(robot.sorties.size()) + "," + std::to_string(robot.charges()) + "," +
+           internal::formatShortest(chargingSeconds(path)) + "," + internal::formatShortest(longest) + "," +
+           internal::formatShortest(robot.outOfRangeAreaSquareMetres);
+}
+
+} // namespace
 
 Status writeReportJson(const ExportContext& context, const std::string& path) {
     const PlanMetrics& metrics = context.plan.metrics;
@@ -24,6 +65,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
             std::visit([&, name = key](const auto& held) { parameters.add(name, held); }, value);
     }
     JsonValue& robots = root.add("robots", JsonValue::array());
+    const SortieLayer* sorties = sortieLayerOf(context.plan);
     for (const RobotMetrics& robot : metrics.robots) {
         JsonValue& item = robots.push(JsonValue::object());
         item.add("robot", robotNumber(robot.robot));
@@ -42,6 +84,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("mission_items", mission.items);
         item.add("mission_parts", static_cast<int>(mission.parts.size()));
         item.add("mission_time_s", mission.seconds);
+        if (sorties != nullptr)
+            addSorties(item, context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
     }
     root.add("makespan_s", metrics.makespanSeconds);
     root.add("lower_bound_s", metrics.lowerBoundSeconds);
@@ -73,8 +117,11 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
 }
 
 Status writeReportCsv(const ExportContext& context, const std::string& path) {
-    std::string text =
-        "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts,turn_time_s\n";
+    // Battery plans add their sortie columns at the end, so readers of the others see no change.
+    const SortieLayer* sorties = sortieLayerOf(context.plan);
+    std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts,"
+                       "turn_time_s";
+    text += sorties == nullptr ? "\n" : ",sorties,charges,charging_s,longest_sortie_s,out_of_range_area_m2\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
         text += std::to_string(robotNumber(robot.robot)) + "," +
@@ -83,8 +130,10 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
                 internal::formatShortest(robot.lengthMetres) + "," +
                 internal::formatShortest(robot.timeSeconds) + "," + std::to_string(robot.turns) + "," +
                 internal::formatShortest(robot.costSeconds) + "," + std::to_string(mission.items) + "," +
-                std::to_string(mission.parts.size()) + "," + internal::formatShortest(robot.turnSeconds) +
-                "\n";
+                std::to_string(mission.parts.size()) + "," + internal::formatShortest(robot.turnSeconds);
+        if (sorties != nullptr)
+            text += sortieColumns(context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
+        text += "\n";
     }
     return internal::writeFileAtomically(path, text, Sync::BySystem);
 }

@@ -1,3 +1,4 @@
+#include "core/model/SortieLayer.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
@@ -32,6 +33,28 @@ const CoveragePath* pathOfRobot(const Plan& plan, int robot) {
             return &path;
     }
     return nullptr;
+}
+
+const RobotSorties* sortiesOfRobot(const Plan& plan, int robot) {
+    if (const SortieLayer* layer = sortieLayerOf(plan))
+        for (const RobotSorties& sorties : layer->robots())
+            if (sorties.robot == robot)
+                return &sorties;
+    return nullptr;
+}
+
+// A sortie's stretch of the path, as a path of its own.
+CoveragePath sortiePath(const CoveragePath& path, const Sortie& sortie) {
+    CoveragePath flight;
+    flight.robot = path.robot;
+    flight.closed = true;
+    const auto first = path.waypoints.begin() + static_cast<std::ptrdiff_t>(sortie.firstWaypoint);
+    flight.waypoints.assign(first,
+                            path.waypoints.begin() + static_cast<std::ptrdiff_t>(sortie.lastWaypoint) + 1);
+    const double start = flight.waypoints.front().cumulativeSeconds;
+    for (Waypoint& waypoint : flight.waypoints)
+        waypoint.cumulativeSeconds -= start;
+    return flight;
 }
 
 struct GeoWaypoint {
@@ -262,18 +285,9 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
 using MissionText = std::string (*)(const AutopilotMission&, const MissionPart&,
                                     const std::vector<GeoWaypoint>&, const VehicleSettings&);
 
-// The robot's mission in one file at `path`, or, above its vehicle's item limit, in parts beside it.
-Status writeMissionFiles(const ExportContext& context, int robot, const std::string& path, MissionText text) {
-    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
-    const std::string number = std::to_string(robotNumber(robot));
-    if (coverage == nullptr)
-        return Status::failure(path + ": the plan has no path for robot " + number);
-    if (coverage->waypoints.empty())
-        return Status::failure(path + ": robot " + number + " has no waypoints");
-    if (!context.georeference.hasCrs())
-        return Status::failure(path + ": the map has no CRS, so waypoints have no latitude and longitude");
-    const VehicleSettings& vehicle = context.vehicle(robot);
-    const AutopilotMission& mission = autopilotMissionOf(context, robot);
+// One mission in one file at `path`, or, above the vehicle's item limit, in parts beside it.
+Status writeMission(const ExportContext& context, const AutopilotMission& mission, const std::string& path,
+                    MissionText text, const VehicleSettings& vehicle) {
     const bool split = mission.parts.size() > 1;
     for (std::size_t part = 0; part < mission.parts.size(); ++part) {
         const std::string file = split ? missionPartPath(path, part) : path;
@@ -287,6 +301,52 @@ Status writeMissionFiles(const ExportContext& context, int robot, const std::str
         }
     }
     return {};
+}
+
+// Sortie files an earlier export to `path` wrote beyond the `written` ones of this one.
+void removeStaleSortieFiles(const std::string& path, std::size_t written) {
+    std::error_code code;
+    for (std::size_t sortie = written;; ++sortie) {
+        const std::string file = missionSortiePath(path, sortie);
+        const bool removed = std::filesystem::remove(file, code);
+        if (!removeStaleMissionFiles(file, 0) && !removed)
+            break;
+    }
+}
+
+// Each sortie of a robot that flies several as a mission of its own beside the whole one.
+Status writeSortieMissions(const ExportContext& context, int robot, const CoveragePath& coverage,
+                           const std::string& path, MissionText text) {
+    const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
+    const std::size_t count = sorties == nullptr || sorties->sorties.size() < 2 ? 0 : sorties->sorties.size();
+    for (std::size_t sortie = 0; sortie < count; ++sortie) {
+        const CoveragePath flight = sortiePath(coverage, sorties->sorties[sortie]);
+        const AutopilotMission mission = autopilotMission(flight, context.vehicle(robot), context.settings);
+        const std::string file = missionSortiePath(path, sortie);
+        if (auto written = writeMission(context, mission, file, text, context.vehicle(robot)); !written)
+            return written;
+        removeStaleMissionFiles(file, mission.parts.size());
+    }
+    removeStaleSortieFiles(path, count);
+    return {};
+}
+
+// The robot's mission in one file at `path`, or, above its vehicle's item limit, in parts beside it; and
+// for a robot that flies several sorties, each sortie's mission too.
+Status writeMissionFiles(const ExportContext& context, int robot, const std::string& path, MissionText text) {
+    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
+    const std::string number = std::to_string(robotNumber(robot));
+    if (coverage == nullptr)
+        return Status::failure(path + ": the plan has no path for robot " + number);
+    if (coverage->waypoints.empty())
+        return Status::failure(path + ": robot " + number + " has no waypoints");
+    if (!context.georeference.hasCrs())
+        return Status::failure(path + ": the map has no CRS, so waypoints have no latitude and longitude");
+    if (auto written =
+            writeMission(context, autopilotMissionOf(context, robot), path, text, context.vehicle(robot));
+        !written)
+        return written;
+    return writeSortieMissions(context, robot, *coverage, path, text);
 }
 
 } // namespace
@@ -305,6 +365,18 @@ const AutopilotMission& autopilotMissionOf(const ExportContext& context, int rob
             entry->mission = autopilotMission(*coverage, context.vehicle(robot), context.settings);
     });
     return entry->mission;
+}
+
+std::string sortieFilesNote(const ExportContext& context, int robot, const std::string& path) {
+    const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
+    if (sorties == nullptr || sorties->sorties.size() < 2)
+        return {};
+    const auto name = [&](std::size_t sortie) {
+        return std::filesystem::path(missionSortiePath(path, sortie)).filename().string();
+    };
+    return context.robotName(robot) + " flies " + std::to_string(sorties->sorties.size()) +
+           " sorties from its charger, each also written as a mission of its own (" + name(0) + " to " +
+           name(sorties->sorties.size() - 1) + ")";
 }
 
 std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path) {

@@ -51,6 +51,10 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
                                  io::splitMissionNote(context, robot, path.toStdString())) +
                                  QStringLiteral(".");
         }
+        if (format->splitByItemLimit)
+            if (const std::string sorties = io::sortieFilesNote(context, robot, path.toStdString());
+                !sorties.empty())
+                outcome.notes << QString::fromStdString(sorties) + QStringLiteral(".");
         progress(file + 1, files);
     }
     return outcome;

@@ -1117,6 +1117,9 @@ QString MainWindow::savePlanBeside(const QString& missionPath, const std::string
     // one this mcpp cannot read may be another version's.
     if (plan == nullptr || document_->planStale() || fingerprint.empty())
         return {};
+    if (!plan->layers.empty())
+        return tr(" Its plan is not saved with it: plan files do not hold sorties, so opening the mission "
+                  "plans again.");
     if (inputFilesAtLoad_.empty() || currentInputFiles() != inputFilesAtLoad_) {
         messageLog_->add(tr("The raster or area files have changed on disk since they were read, so the plan "
                             "was not saved with the mission: open the mission again and plan."));

@@ -123,13 +123,32 @@ double longestPathSeconds(const std::vector<CoveragePath>& paths) {
     return longest;
 }
 
+double addPauses(std::vector<Waypoint>& waypoints, const std::vector<PathPause>& pauses) {
+    double waited = 0.0;
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < waypoints.size(); ++i) {
+        waypoints[i].cumulativeSeconds += waited;
+        for (; next < pauses.size() && pauses[next].waypoint == i; ++next)
+            waited += pauses[next].seconds;
+    }
+    return waited;
+}
+
+double pausedSecondsBetween(const std::vector<PathPause>& pauses, std::size_t first, std::size_t last) {
+    double waited = 0.0;
+    for (const PathPause& pause : pauses)
+        if (pause.waypoint >= first && pause.waypoint < last)
+            waited += pause.seconds;
+    return waited;
+}
+
 void measurePath(CoveragePath& path, const CellGraph& graph) {
     double length = 0.0;
     for (std::size_t i = 1; i < path.waypoints.size(); ++i)
         length += segmentLength(path.waypoints[i - 1], path.waypoints[i]);
     path.lengthMetres = length;
     const PathSeconds seconds = fillCumulativeSeconds(path.waypoints, graph);
-    path.timeSeconds = seconds.total;
+    path.timeSeconds = seconds.total + addPauses(path.waypoints, path.pauses);
     path.turnSeconds = seconds.turning;
     path.turns = countTurns(path.waypoints);
     path.repeatedSubCellVisits = countRepeatedSubCellVisits(path, graph);

@@ -2,6 +2,7 @@
 
 #include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
+#include "core/model/Sortie.hpp"
 
 #include <vector>
 
@@ -35,11 +36,29 @@ struct PathSeconds {
 // times read back are the ones planned.
 PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph);
 
+// Adds each pause to the cumulative seconds of the waypoints after it; returns the time paused. Pauses at
+// waypoints the path does not have are ignored.
+double addPauses(std::vector<Waypoint>& waypoints, const std::vector<PathPause>& pauses);
+
+// The seconds paused at waypoints first .. last - 1: what the cumulative seconds of `last` hold of pauses
+// since `first`.
+[[nodiscard]] double pausedSecondsBetween(const std::vector<PathPause>& pauses, std::size_t first,
+                                          std::size_t last);
+
+// Travel and turning from a sortie's first waypoint to its last (the charge before it not counted), from
+// the measured cumulative seconds.
+[[nodiscard]] inline double sortieSeconds(const CoveragePath& path, const Sortie& sortie) {
+    return path.waypoints[sortie.lastWaypoint].cumulativeSeconds -
+           path.waypoints[sortie.firstWaypoint].cumulativeSeconds -
+           pausedSecondsBetween(path.pauses, sortie.firstWaypoint, sortie.lastWaypoint);
+}
+
 // The longest of the paths' times: the makespan of measured paths.
 [[nodiscard]] double longestPathSeconds(const std::vector<CoveragePath>& paths);
 
-// Fills length, time, cumulative times, turns and repeated visits from the waypoints. Each segment is
-// travelled half at the speed of the waypoint it leaves and half at the speed of the one it reaches.
+// Fills length, time (pauses included), cumulative times, turns and repeated visits from the waypoints. Each
+// segment is travelled half at the speed of the waypoint it leaves and half at the speed of the one it
+// reaches.
 void measurePath(CoveragePath& path, const CellGraph& graph);
 
 // A robot's path from a walk through sub-cell centres: its start point first when the walk does not begin

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -17,12 +18,20 @@ struct Waypoint {
     double cumulativeSeconds = 0.0; // time from the start to reach this point
 };
 
+// A stop on the way: the robot waits `seconds` at a waypoint before leaving it (a battery charge, say).
+struct PathPause {
+    std::size_t waypoint = 0;
+    double seconds = 0.0;
+};
+
 struct CoveragePath {
     int robot = 0;
     std::vector<Waypoint> waypoints; // the first is the robot's start point
     double lengthMetres = 0.0;
     double timeSeconds = 0.0;
     double turnSeconds = 0.0; // the part of timeSeconds lost to turns
+    std::vector<PathPause>
+        pauses; // by waypoint, ascending; their time is in timeSeconds and cumulativeSeconds
     int turns = 0;
     int repeatedSubCellVisits = 0; // sub-cell centres passed again (not counting a closed tour's return)
     bool closed = true;

@@ -7,6 +7,7 @@
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/MstcPlanner.hpp"
 #include "core/planners/SpiralStcPlanner.hpp"
+#include "core/planners/WavefrontBatteryPlanner.hpp"
 
 #include <functional>
 
@@ -22,8 +23,13 @@ template <typename PlannerType> Factory factory() {
 // One line per planner: adding a planner means its files, its tests and a line here.
 const std::vector<Factory>& factories() {
     static const std::vector<Factory> all{
-        factory<MlctPlanner>(), factory<SpiralStcPlanner>(), factory<FullSpiralStcPlanner>(),
-        factory<DarpPlanner>(), factory<DarpTurnsPlanner>(), factory<MstcPlanner>(),
+        factory<MlctPlanner>(),
+        factory<SpiralStcPlanner>(),
+        factory<FullSpiralStcPlanner>(),
+        factory<DarpPlanner>(),
+        factory<DarpTurnsPlanner>(),
+        factory<MstcPlanner>(),
+        factory<WavefrontBatteryPlanner>(),
     };
     return all;
 }

@@ -60,6 +60,10 @@ class PlannerInvariantsTest : public QObject {
         // Turns free, at a fixed price, or priced from the speed.
         if (seed % 3 == 1)
             problem.planner.parameters.set("turn_s", seed % 2 == 0 ? 0.0 : 2.5);
+        // Batteries that last, that force many sorties, and that leave far cells out of range.
+        if (problem.planner.parameters.has("battery_s"))
+            problem.planner.parameters.set("battery_s",
+                                           seed % 4 == 0 ? 1e6 : (seed % 4 == 1 ? 1200.0 : 300.0));
         if (problem.planner.parameters.has("balanced"))
             problem.planner.parameters.set("balanced", seed % 2 == 0);
         Plan plan;

@@ -1,5 +1,7 @@
 #include "tests/support/PlanInvariants.hpp"
 
+#include "core/model/SortieLayer.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -441,6 +443,8 @@ std::vector<std::string> checkTimes(const Plan& plan) {
             const Waypoint& b = path.waypoints[i];
             const double segment = std::hypot(b.x - a.x, b.y - a.y);
             length += segment;
+            for (const PathPause& pause : path.pauses)
+                time += pause.waypoint == i - 1 ? pause.seconds : 0.0;
             time += segment / 2.0 / a.speedMetresPerSecond + segment / 2.0 / b.speedMetresPerSecond +
                     turnSecondsAt(path, i - 1, plan.cells);
             if (std::abs(b.cumulativeSeconds - time) > 1e-6 * std::max(1.0, time))
@@ -470,11 +474,81 @@ std::vector<std::string> checkTimes(const Plan& plan) {
     return violations;
 }
 
+namespace {
+
+// A sortie's travel and turning, recounted from its waypoints.
+double sortieSecondsOf(const CoveragePath& path, const Sortie& sortie, const CellGraph& cells) {
+    double seconds = 0.0;
+    for (std::size_t i = sortie.firstWaypoint + 1; i <= sortie.lastWaypoint; ++i) {
+        const Waypoint& a = path.waypoints[i - 1];
+        const Waypoint& b = path.waypoints[i];
+        const double segment = std::hypot(b.x - a.x, b.y - a.y);
+        seconds += segment / 2.0 / a.speedMetresPerSecond + segment / 2.0 / b.speedMetresPerSecond +
+                   turnSecondsAt(path, i - 1, cells);
+    }
+    return seconds;
+}
+
+std::vector<std::string> checkRobotSorties(const Plan& plan, const RobotSorties& robot) {
+    std::vector<std::string> violations;
+    const std::string who = "robot " + std::to_string(robot.robot);
+    const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
+    if (robot.sorties.empty() || robot.sorties.front().firstWaypoint != 0 ||
+        robot.sorties.back().lastWaypoint + 1 != path.waypoints.size())
+        return {who + " sorties do not span its path"};
+    if (path.pauses.size() != robot.sorties.size() - 1)
+        violations.push_back(who + " charges " + std::to_string(path.pauses.size()) + " times in " +
+                             std::to_string(robot.sorties.size()) + " sorties");
+    for (std::size_t j = 0; j < robot.sorties.size(); ++j) {
+        const Sortie& sortie = robot.sorties[j];
+        const std::string which = who + " sortie " + std::to_string(j + 1);
+        if (j > 0 && sortie.firstWaypoint != robot.sorties[j - 1].lastWaypoint)
+            violations.push_back(which + " does not begin where the one before ended");
+        for (const std::size_t end : {sortie.firstWaypoint, sortie.lastWaypoint}) {
+            const Waypoint& point = path.waypoints[end];
+            if (std::hypot(point.x - robot.charger.x, point.y - robot.charger.y) > 1e-6)
+                violations.push_back(
+                    text(which + " has an end away from the charger", point.x, robot.charger.x));
+        }
+        const double seconds = sortieSecondsOf(path, sortie, plan.cells);
+        if (seconds > robot.enduranceSeconds * (1.0 + 1e-9))
+            violations.push_back(text(which + " outlasts the battery", seconds, robot.enduranceSeconds));
+        if (j + 1 < robot.sorties.size() &&
+            (j >= path.pauses.size() || path.pauses[j].waypoint != sortie.lastWaypoint ||
+             path.pauses[j].seconds != robot.rechargeSeconds))
+            violations.push_back(which + " is not followed by a charge");
+    }
+    for (const int cell : robot.outOfRangeCells)
+        if (plan.regions.robotOfCell[static_cast<std::size_t>(cell)] >= 0)
+            violations.push_back(who + " leaves cell " + std::to_string(cell) +
+                                 " out of range, yet it is covered");
+    return violations;
+}
+
+} // namespace
+
+// Every sortie starts and ends at its robot's charger, lasts no longer than the battery, and is followed by
+// a charge; together they make the path.
+std::vector<std::string> checkSorties(const Plan& plan) {
+    const SortieLayer* layer = sortieLayerOf(plan);
+    if (layer == nullptr)
+        return {};
+    if (layer->robots().size() != plan.paths.size())
+        return {"sorties are given for " + std::to_string(layer->robots().size()) + " of " +
+                std::to_string(plan.paths.size()) + " robots"};
+    std::vector<std::string> violations;
+    for (const RobotSorties& robot : layer->robots()) {
+        const auto found = checkRobotSorties(plan, robot);
+        violations.insert(violations.end(), found.begin(), found.end());
+    }
+    return violations;
+}
+
 std::vector<std::string> checkAllInvariants(const PlanningProblem& problem, const Plan& plan,
                                             const PlannerPromises& promises) {
     std::vector<std::string> all;
     for (auto&& part : {checkCells(plan), checkRegions(plan, promises), checkPaths(problem, plan, promises),
-                        checkTimes(plan)})
+                        checkTimes(plan), checkSorties(plan)})
         all.insert(all.end(), part.begin(), part.end());
     return all;
 }

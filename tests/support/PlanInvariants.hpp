@@ -14,6 +14,9 @@ namespace mcpp::test {
 // alone. Each checker returns the violations found (empty when the plan holds), each naming the cell,
 // robot or waypoint concerned. Where a planner promises less (PlannerPromises), less is checked.
 
+// Sorties of battery plans: from the charger and back, within the endurance, a charge between two.
+[[nodiscard]] std::vector<std::string> checkSorties(const Plan& plan);
+
 // Cells lie on the frame's bottom grid, never overlap and have a positive speed; neighbour lists are
 // symmetric, list no cell twice and name exactly the cells sharing a border of positive length.
 [[nodiscard]] std::vector<std::string> checkCells(const Plan& plan);

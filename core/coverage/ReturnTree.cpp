@@ -1,0 +1,113 @@
+#include "core/coverage/ReturnTree.hpp"
+
+#include "core/coverage/PathMeasurement.hpp"
+
+#include <cmath>
+#include <functional>
+#include <queue>
+
+namespace mcpp {
+namespace {
+
+// Unit direction from a to b, as a path's measurement takes it.
+void direction(double ax, double ay, double bx, double by, double& dx, double& dy) {
+    const double x = bx - ax;
+    const double y = by - ay;
+    const double length = std::sqrt(x * x + y * y);
+    dx = length > 0.0 ? x / length : 0.0;
+    dy = length > 0.0 ? y / length : 0.0;
+}
+
+} // namespace
+
+ReturnTree::ReturnTree(const SubCellNodes& nodes, const CellGraph& graph, const std::vector<char>& usable,
+                       int root, MapPoint charger)
+    : nodes_(nodes), graph_(graph), root_(root), parent_(static_cast<std::size_t>(nodes.size()), unreached),
+      secondsHome_(static_cast<std::size_t>(nodes.size()), 0.0) {
+    charger_ = nodes.waypoint(root);
+    charger_.x = charger.x;
+    charger_.y = charger.y;
+    const Waypoint& rootPoint = nodes.waypoint(root);
+    const double apart = std::hypot(rootPoint.x - charger.x, rootPoint.y - charger.y);
+    chargerApart_ = apart > 1e-9;
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+    std::vector<char> settled(parent_.size(), 0);
+    parent_[static_cast<std::size_t>(root)] = atRoot;
+    secondsHome_[static_cast<std::size_t>(root)] =
+        chargerApart_ ? travelSeconds(apart, rootPoint.speedMetresPerSecond, rootPoint.speedMetresPerSecond)
+                      : 0.0;
+    open.emplace(secondsHome_[static_cast<std::size_t>(root)], root);
+    while (!open.empty()) {
+        const auto [seconds, node] = open.top();
+        open.pop();
+        if (settled[static_cast<std::size_t>(node)] != 0)
+            continue;
+        settled[static_cast<std::size_t>(node)] = 1;
+        const Waypoint& here = nodes.waypoint(node);
+        for (int side = 0; side < 4; ++side) {
+            const int next = nodes.neighbour(node, side);
+            if (next == SubCellNodes::none || usable[static_cast<std::size_t>(next)] == 0 ||
+                settled[static_cast<std::size_t>(next)] != 0)
+                continue;
+            const Waypoint& there = nodes.waypoint(next);
+            double dx = 0.0;
+            double dy = 0.0;
+            direction(there.x, there.y, here.x, here.y, dx, dy);
+            // The way from `next` enters `node` along (dx, dy) and turns there onto node's own way home.
+            const double candidate = nodes.stepSeconds(next, node) + secondsHomeArriving(node, dx, dy);
+            const auto index = static_cast<std::size_t>(next);
+            if (parent_[index] == unreached || candidate < secondsHome_[index]) {
+                parent_[index] = node;
+                secondsHome_[index] = candidate;
+                open.emplace(candidate, next);
+            }
+        }
+    }
+}
+
+bool ReturnTree::nextPoint(int node, double& x, double& y) const {
+    const int parent = parent_[static_cast<std::size_t>(node)];
+    if (parent >= 0) {
+        x = nodes_.waypoint(parent).x;
+        y = nodes_.waypoint(parent).y;
+        return true;
+    }
+    if (parent == atRoot && chargerApart_) {
+        x = charger_.x;
+        y = charger_.y;
+        return true;
+    }
+    return false;
+}
+
+double ReturnTree::secondsHomeArriving(int node, double dx, double dy) const {
+    double nextX = 0.0;
+    double nextY = 0.0;
+    const double home = secondsHome(node);
+    if ((dx == 0.0 && dy == 0.0) || !nextPoint(node, nextX, nextY))
+        return home;
+    const Waypoint& here = nodes_.waypoint(node);
+    double outX = 0.0;
+    double outY = 0.0;
+    direction(here.x, here.y, nextX, nextY, outX, outY);
+    return turnSecondsAt(here, dx, dy, outX, outY, graph_) + home;
+}
+
+double ReturnTree::worstTurnSeconds(int node) const {
+    return 2.0 * double(graph_.cell(nodes_.waypoint(node).cell).turnSecondsPer90Degrees);
+}
+
+double ReturnTree::worstTurnAtCharger() const {
+    return charger_.cell < 0 ? 0.0 : 2.0 * double(graph_.cell(charger_.cell).turnSecondsPer90Degrees);
+}
+
+std::vector<int> ReturnTree::wayHome(int node) const {
+    std::vector<int> way;
+    for (int at = parent_[static_cast<std::size_t>(node)]; at >= 0;
+         at = parent_[static_cast<std::size_t>(at)])
+        way.push_back(at);
+    return way;
+}
+
+} // namespace mcpp

@@ -1,0 +1,349 @@
+#include "core/coverage/WavefrontCoverage.hpp"
+
+#include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/ReturnTree.hpp"
+#include "core/coverage/SubCellNodes.hpp"
+#include "core/model/HumanUnits.hpp"
+#include "core/model/PlanningError.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <queue>
+#include <set>
+
+namespace mcpp {
+namespace {
+
+constexpr int sideStep = 3; // the modified wavefront's weights (Zelinsky et al., as seed 002 counts them)
+constexpr int diagonalStep = 4;
+
+// Wavefront numbers from the root over the usable nodes, diagonals through a usable side neighbour.
+std::vector<int> wavefrontNumbers(const SubCellNodes& nodes, const std::vector<char>& usable, int root) {
+    std::vector<int> number(static_cast<std::size_t>(nodes.size()), std::numeric_limits<int>::max());
+    using Entry = std::pair<int, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+    const auto offer = [&](int node, int value) {
+        if (node == SubCellNodes::none || usable[static_cast<std::size_t>(node)] == 0 ||
+            value >= number[static_cast<std::size_t>(node)])
+            return;
+        number[static_cast<std::size_t>(node)] = value;
+        open.emplace(value, node);
+    };
+    offer(root, 0);
+    while (!open.empty()) {
+        const auto [value, node] = open.top();
+        open.pop();
+        if (value != number[static_cast<std::size_t>(node)])
+            continue;
+        for (int side = 0; side < 4; ++side) {
+            const int next = nodes.neighbour(node, side);
+            offer(next, value + sideStep);
+            if (next == SubCellNodes::none || usable[static_cast<std::size_t>(next)] == 0)
+                continue;
+            // East or west first, then north or south: each diagonal is reached through either side node.
+            offer(nodes.neighbour(next, (side + 1) % 4), value + diagonalStep);
+            offer(nodes.neighbour(next, (side + 3) % 4), value + diagonalStep);
+        }
+    }
+    return number;
+}
+
+// A path as it grows, timed exactly as fillCumulativeSeconds will time it.
+class PathClock {
+  public:
+    explicit PathClock(const CellGraph& graph) : graph_(graph) {}
+
+    [[nodiscard]] const std::vector<Waypoint>& waypoints() const { return waypoints_; }
+    [[nodiscard]] std::vector<Waypoint> take() { return std::move(waypoints_); }
+    [[nodiscard]] double elapsed() const { return elapsed_; }
+    [[nodiscard]] std::size_t lastIndex() const { return waypoints_.size() - 1; }
+    [[nodiscard]] double secondsToAppend(const Waypoint& next) const {
+        double turn = 0.0;
+        double travel = 0.0;
+        measure(next, turn, travel);
+        return turn + travel;
+    }
+    // The unit direction of a step from the last point to `next`.
+    void directionTo(const Waypoint& next, double& dx, double& dy) const {
+        const Waypoint& last = waypoints_.back();
+        const double length = std::hypot(next.x - last.x, next.y - last.y);
+        dx = length > 0.0 ? (next.x - last.x) / length : 0.0;
+        dy = length > 0.0 ? (next.y - last.y) / length : 0.0;
+    }
+    void append(const Waypoint& next) {
+        if (!waypoints_.empty()) {
+            double turn = 0.0;
+            double travel = 0.0;
+            measure(next, turn, travel);
+            elapsed_ += turn; // added as fillCumulativeSeconds adds, so the sums agree to the last bit
+            elapsed_ += travel;
+            double dx = 0.0;
+            double dy = 0.0;
+            directionTo(next, dx, dy);
+            if (dx != 0.0 || dy != 0.0) {
+                haveDirection_ = true;
+                directionX_ = dx;
+                directionY_ = dy;
+            }
+        }
+        waypoints_.push_back(next);
+    }
+
+  private:
+    void measure(const Waypoint& next, double& turn, double& travel) const {
+        if (waypoints_.empty())
+            return;
+        const Waypoint& last = waypoints_.back();
+        const double dx = next.x - last.x;
+        const double dy = next.y - last.y;
+        const double length = std::sqrt(dx * dx + dy * dy);
+        if (length > 0.0 && haveDirection_)
+            turn = turnSecondsAt(last, directionX_, directionY_, dx / length, dy / length, graph_);
+        travel = travelSeconds(length, last.speedMetresPerSecond, next.speedMetresPerSecond);
+    }
+
+    const CellGraph& graph_;
+    std::vector<Waypoint> waypoints_;
+    double elapsed_ = 0.0;
+    bool haveDirection_ = false;
+    double directionX_ = 0.0;
+    double directionY_ = 0.0;
+};
+
+// One robot's walk over its usable nodes, in sorties.
+class Walk {
+  public:
+    Walk(const SubCellNodes& nodes, const CellGraph& graph, const ReturnTree& tree, std::vector<char> usable,
+         double enduranceSeconds, const ProgressReporter& progress)
+        : nodes_(nodes), tree_(tree), usable_(std::move(usable)), endurance_(enduranceSeconds),
+          progress_(progress), clock_(graph), visited_(usable_.size(), 0),
+          wave_(wavefrontNumbers(nodes, usable_, tree.root())), distance_(usable_.size(), unset),
+          cameFrom_(usable_.size(), SubCellNodes::none) {
+        remaining_ = static_cast<int>(std::count(usable_.begin(), usable_.end(), char(1)));
+    }
+
+    void run(std::vector<Sortie>& sorties, std::vector<std::size_t>& charges) {
+        clock_.append(tree_.charger());
+        current_ = tree_.root();
+        if (tree_.chargerApart())
+            step(current_);
+        else
+            markVisited(current_);
+        for (std::size_t steps = 0; remaining_ > 0; ++steps) {
+            if (steps % 4096 == 0)
+                progress_.throwIfCancelled();
+            const std::vector<int> route = nextRoute();
+            if (route.empty())
+                break;
+            for (const int next : route) {
+                if (!canStep(next)) {
+                    charge(sorties, charges);
+                    flyOutTo(route.back());
+                    break;
+                }
+                step(next);
+            }
+        }
+        goHome();
+        sorties.push_back({sortieFirst_, clock_.lastIndex()});
+    }
+
+    [[nodiscard]] std::vector<Waypoint> takeWaypoints() { return clock_.take(); }
+
+  private:
+    static constexpr double unset = -1.0;
+
+    void markVisited(int node) {
+        if (visited_[static_cast<std::size_t>(node)] == 0) {
+            visited_[static_cast<std::size_t>(node)] = 1;
+            --remaining_;
+        }
+    }
+    void step(int node) {
+        double dx = 0.0;
+        double dy = 0.0;
+        clock_.directionTo(nodes_.waypoint(node), dx, dy);
+        for (int side = 0; side < 4; ++side)
+            if (nodes_.neighbour(current_, side) == node)
+                heading_ = side;
+        clock_.append(nodes_.waypoint(node));
+        markVisited(node);
+        current_ = node;
+    }
+    [[nodiscard]] bool canStep(int next) const {
+        if (!std::isfinite(endurance_))
+            return true;
+        double dx = 0.0;
+        double dy = 0.0;
+        clock_.directionTo(nodes_.waypoint(next), dx, dy);
+        const double needed = clock_.elapsed() - sortieStartSeconds_ +
+                              clock_.secondsToAppend(nodes_.waypoint(next)) +
+                              tree_.secondsHomeArriving(next, dx, dy);
+        return needed <= endurance_ * (1.0 - 1e-12);
+    }
+    void goHome() {
+        for (const int node : tree_.wayHome(current_))
+            step(node);
+        if (tree_.chargerApart()) {
+            clock_.append(tree_.charger());
+            current_ = tree_.root();
+            heading_ = -1;
+        }
+    }
+    void charge(std::vector<Sortie>& sorties, std::vector<std::size_t>& charges) {
+        goHome();
+        sorties.push_back({sortieFirst_, clock_.lastIndex()});
+        charges.push_back(clock_.lastIndex());
+        sortieFirst_ = clock_.lastIndex();
+        sortieStartSeconds_ = clock_.elapsed();
+    }
+    // From the charger along the reverse of the target's way home.
+    void flyOutTo(int target) {
+        std::vector<int> way = tree_.wayHome(target);
+        std::reverse(way.begin(), way.end());
+        way.push_back(target);
+        current_ = tree_.root();
+        for (const int node : way)
+            if (node != tree_.root() || tree_.chargerApart())
+                step(node);
+    }
+    // The unvisited side neighbour farthest out by wavefront number (straight on when tied), else the
+    // quickest way to the nearest unvisited node.
+    [[nodiscard]] std::vector<int> nextRoute() {
+        int best = SubCellNodes::none;
+        for (int side = 0; side < 4; ++side) {
+            const int next = nodes_.neighbour(current_, side);
+            if (!isOpen(next))
+                continue;
+            const auto value = wave_[static_cast<std::size_t>(next)];
+            const auto bestValue = best == SubCellNodes::none ? -1 : wave_[static_cast<std::size_t>(best)];
+            if (value > bestValue || (value == bestValue && side == heading_))
+                best = next;
+        }
+        if (best != SubCellNodes::none)
+            return {best};
+        return wayToNearestUnvisited();
+    }
+    [[nodiscard]] bool isOpen(int node) const {
+        return node != SubCellNodes::none && usable_[static_cast<std::size_t>(node)] != 0 &&
+               visited_[static_cast<std::size_t>(node)] == 0;
+    }
+    [[nodiscard]] std::vector<int> wayToNearestUnvisited() {
+        using Entry = std::pair<double, int>;
+        std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+        std::vector<std::size_t> touched;
+        const auto offer = [&](int node, int from, double seconds) {
+            const auto index = static_cast<std::size_t>(node);
+            if (distance_[index] != unset && distance_[index] <= seconds)
+                return;
+            if (distance_[index] == unset)
+                touched.push_back(index);
+            distance_[index] = seconds;
+            cameFrom_[index] = from;
+            open.emplace(seconds, node);
+        };
+        offer(current_, SubCellNodes::none, 0.0);
+        int found = SubCellNodes::none;
+        while (!open.empty() && found == SubCellNodes::none) {
+            const auto [seconds, node] = open.top();
+            open.pop();
+            if (seconds != distance_[static_cast<std::size_t>(node)])
+                continue;
+            if (isOpen(node)) {
+                found = node;
+                break;
+            }
+            for (int side = 0; side < 4; ++side) {
+                const int next = nodes_.neighbour(node, side);
+                if (next != SubCellNodes::none && usable_[static_cast<std::size_t>(next)] != 0)
+                    offer(next, node, seconds + nodes_.stepSeconds(node, next));
+            }
+        }
+        std::vector<int> route;
+        for (int at = found; at != SubCellNodes::none && at != current_;
+             at = cameFrom_[static_cast<std::size_t>(at)])
+            route.push_back(at);
+        std::reverse(route.begin(), route.end());
+        for (const std::size_t index : touched)
+            distance_[index] = unset;
+        return route;
+    }
+
+    const SubCellNodes& nodes_;
+    const ReturnTree& tree_;
+    std::vector<char> usable_;
+    double endurance_;
+    const ProgressReporter& progress_;
+    PathClock clock_;
+    std::vector<char> visited_;
+    std::vector<int> wave_;
+    std::vector<double> distance_; // scratch for wayToNearestUnvisited
+    std::vector<int> cameFrom_;
+    int remaining_ = 0;
+    int current_ = SubCellNodes::none;
+    int heading_ = -1; // side of the last step, -1 before any
+    std::size_t sortieFirst_ = 0;
+    double sortieStartSeconds_ = 0.0;
+};
+
+// Whether a robot can fly out to the node, turn any way there and come home on one charge.
+bool withinRange(const ReturnTree& tree, int node, double enduranceSeconds) {
+    const double roundTrip =
+        tree.worstTurnAtCharger() + 2.0 * tree.secondsHome(node) + tree.worstTurnSeconds(node);
+    return roundTrip <= enduranceSeconds * (1.0 - 1e-12);
+}
+
+} // namespace
+
+WavefrontCoverage::Result WavefrontCoverage::cover(int robot, const std::vector<int>& cells, int startCell,
+                                                   MapPoint start, const ProgressReporter& progress) const {
+    const SubCellNodes nodes(graph_, cells);
+    const int root = nodes.nearestIn(startCell, start);
+    if (root == SubCellNodes::none)
+        throw PlanningError::aboutStart(PlanningError::Kind::StartOnObstacle, robot,
+                                        "lies in a cell with no free sub-cell");
+    Result result;
+    result.sorties.robot = robot;
+    result.sorties.charger = start;
+    result.sorties.enduranceSeconds = battery_.enduranceSeconds;
+    result.sorties.rechargeSeconds = battery_.rechargeSeconds;
+    std::vector<char> usable(static_cast<std::size_t>(nodes.size()), 1);
+    std::unique_ptr<ReturnTree> tree;
+    // Leaving cells out lengthens other ways home, so repeat until every cell left is within range.
+    while (true) {
+        progress.throwIfCancelled();
+        tree = std::make_unique<ReturnTree>(nodes, graph_, usable, root, start);
+        std::set<int> outOfRange;
+        for (int node = 0; node < nodes.size(); ++node)
+            if (usable[static_cast<std::size_t>(node)] != 0 &&
+                (!tree->reaches(node) || !withinRange(*tree, node, battery_.enduranceSeconds)))
+                outOfRange.insert(nodes.waypoint(node).cell);
+        if (outOfRange.empty())
+            break;
+        if (outOfRange.count(startCell) != 0)
+            throw PlanningError::aboutParameter(
+                "battery_s", formatDuration(battery_.enduranceSeconds) + " is too short for robot " +
+                                 std::to_string(robot + 1) +
+                                 " to cover the cell at its start and return to its charger");
+        for (const int cell : outOfRange) {
+            for (const int node : nodes.ofCell(cell))
+                usable[static_cast<std::size_t>(node)] = 0;
+            result.sorties.outOfRangeCells.push_back(cell);
+            result.sorties.outOfRangeAreaSquareMetres += graph_.cell(cell).passableAreaSquareMetres;
+        }
+    }
+    std::sort(result.sorties.outOfRangeCells.begin(), result.sorties.outOfRangeCells.end());
+    Walk walk(nodes, graph_, *tree, std::move(usable), battery_.enduranceSeconds, progress);
+    std::vector<std::size_t> charges;
+    walk.run(result.sorties.sorties, charges);
+    result.path.robot = robot;
+    result.path.closed = true;
+    result.path.waypoints = walk.takeWaypoints();
+    for (const std::size_t waypoint : charges)
+        result.path.pauses.push_back({waypoint, battery_.rechargeSeconds});
+    return result;
+}
+
+} // namespace mcpp

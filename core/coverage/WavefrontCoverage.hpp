@@ -1,0 +1,43 @@
+#pragma once
+
+#include "core/model/CellGraph.hpp"
+#include "core/model/CoveragePath.hpp"
+#include "core/model/ProgressReporter.hpp"
+#include "core/model/Sortie.hpp"
+
+#include <limits>
+#include <vector>
+
+namespace mcpp {
+
+// Wavefront coverage of one robot's region on a battery (seed 002, after Zelinsky et al.). Every free
+// sub-cell gets a wavefront number from the charger (3 per side step, 4 per diagonal one); the robot steps
+// to the unvisited side neighbour of the highest number, so it works from far to near, and when none is
+// left it takes the quickest way to the nearest unvisited sub-cell. Before each step it checks that the
+// charge left would still bring it home from there; when it would not, it goes home by its return tree,
+// charges, flies straight back out to where it was heading and goes on. Cells of the region it could not
+// reach and leave again on one charge are left out and reported.
+class WavefrontCoverage {
+  public:
+    struct Battery {
+        double enduranceSeconds = std::numeric_limits<double>::infinity(); // travel and turning per charge
+        double rechargeSeconds = 0.0;
+    };
+    struct Result {
+        CoveragePath path; // not yet measured; its pauses are the charges
+        RobotSorties sorties;
+    };
+
+    WavefrontCoverage(const CellGraph& graph, Battery battery) : graph_(graph), battery_(battery) {}
+
+    // cells: the robot's region, holding startCell, of a single-level grid. Throws PlanningError when one
+    // charge cannot cover the start cell and come back.
+    [[nodiscard]] Result cover(int robot, const std::vector<int>& cells, int startCell, MapPoint start,
+                               const ProgressReporter& progress) const;
+
+  private:
+    const CellGraph& graph_;
+    Battery battery_;
+};
+
+} // namespace mcpp

@@ -1,0 +1,156 @@
+#include "core/coverage/PathMeasurement.hpp"
+#include "core/model/PlanningError.hpp"
+#include "core/model/SortieLayer.hpp"
+#include "core/planners/PlannerRegistry.hpp"
+#include "core/planners/WavefrontBatteryPlanner.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+#include <cmath>
+#include <set>
+
+using namespace mcpp;
+
+namespace {
+
+std::vector<std::string> rowsOf(int count, const std::string& row) {
+    return std::vector<std::string>(static_cast<std::size_t>(count), row);
+}
+
+Plan planOnBattery(PlanningProblem& problem, double batterySeconds, double rechargeSeconds,
+                   double turnSeconds) {
+    problem.planner = defaultPlannerChoice(WavefrontBatteryPlanner::plannerName);
+    problem.planner.parameters.set("battery_s", batterySeconds);
+    problem.planner.parameters.set("recharge_s", rechargeSeconds);
+    problem.planner.parameters.set("turn_s", turnSeconds);
+    return makePlanner(WavefrontBatteryPlanner::plannerName)->plan(problem, {});
+}
+
+std::string violationsOf(const PlanningProblem& problem, const Plan& plan) {
+    return test::describe(test::checkAllInvariants(
+        problem, plan, makePlanner(WavefrontBatteryPlanner::plannerName)->description().promises));
+}
+
+const RobotSorties& sortiesOf(const Plan& plan, int robot) {
+    return sortieLayerOf(plan)->robots().at(static_cast<std::size_t>(robot));
+}
+
+} // namespace
+
+// Wavefront coverage on a battery, on drawn maps of one-metre sub-cells (cells of 2 x 2 m) at 1 m/s, so a
+// step between sub-cell centres takes one second.
+class WavefrontBatteryTest : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void aBatteryThatLastsFliesOneSortie() {
+        PlanningProblem problem = test::drawnProblem(rowsOf(10, std::string(10, '.')), {{0.5, 0.5}});
+        const Plan plan = planOnBattery(problem, 1e6, 100.0, 0.0);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        const RobotSorties& robot = sortiesOf(plan, 0);
+        QCOMPARE(robot.sorties.size(), std::size_t(1));
+        QCOMPARE(robot.charges(), 0);
+        QVERIFY(plan.paths[0].pauses.empty());
+        QCOMPARE(plan.metrics.coveredFraction, 1.0);
+        // 100 sub-cells: at least 99 steps out and back to the start.
+        QVERIFY(plan.paths[0].lengthMetres >= 100.0);
+    }
+
+    void sortiesStayWithinTheBattery_data() {
+        QTest::addColumn<double>("turnSeconds");
+        QTest::newRow("free turns") << 0.0;
+        QTest::newRow("2.5 s per turn") << 2.5;
+    }
+    // Each sortie ends at the charger no later than the battery allows; the path's time is the sorties'
+    // plus a recharge between each two.
+    void sortiesStayWithinTheBattery() {
+        QFETCH(double, turnSeconds);
+        PlanningProblem problem = test::drawnProblem(rowsOf(40, std::string(40, '.')), {{0.5, 0.5}});
+        const double battery = 240.0;
+        const double recharge = 300.0;
+        const Plan plan = planOnBattery(problem, battery, recharge, turnSeconds);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        const RobotSorties& robot = sortiesOf(plan, 0);
+        const CoveragePath& path = plan.paths[0];
+        QVERIFY(robot.sorties.size() > 5); // 1 600 sub-cells at up to 240 s a sortie
+        QCOMPARE(robot.charges(), static_cast<int>(robot.sorties.size()) - 1);
+        double flying = 0.0;
+        for (const Sortie& sortie : robot.sorties) {
+            const double seconds = sortieSeconds(path, sortie);
+            QVERIFY2(seconds <= battery * (1.0 + 1e-9), qPrintable(QString::number(seconds)));
+            flying += seconds;
+        }
+        QVERIFY(std::abs(path.timeSeconds - (flying + robot.charges() * recharge)) < 1e-6);
+        QCOMPARE(plan.metrics.makespanSeconds, path.timeSeconds);
+        QCOMPARE(plan.metrics.coveredFraction, 1.0);
+        QCOMPARE(robot.outOfRangeAreaSquareMetres, 0.0);
+    }
+
+    // A corridor two sub-cells wide from the charger: a sub-cell n steps away is a round trip of 2n seconds,
+    // so on 101 s the cells whose far sub-cell lies beyond 50 steps (cells 25 to 49) are out of range.
+    void cellsBeyondHalfTheBatteryAreLeftOut() {
+        PlanningProblem problem = test::drawnProblem(rowsOf(2, std::string(100, '.')), {{0.5, 0.5}});
+        const Plan plan = planOnBattery(problem, 101.0, 10.0, 0.0);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        const RobotSorties& robot = sortiesOf(plan, 0);
+        QCOMPARE(robot.outOfRangeCells.size(), std::size_t(25));
+        for (const int cell : robot.outOfRangeCells)
+            QVERIFY(plan.cells.cell(cell).column >= 25);
+        QCOMPARE(robot.outOfRangeAreaSquareMetres, 100.0);
+        QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 100.0);
+        QCOMPARE(plan.metrics.coveredAreaSquareMetres, 100.0);
+        bool reported = false;
+        for (const PlanIssue& issue : plan.issues)
+            reported = reported ||
+                       (issue.code == "beyond-battery" && issue.message.find("100 m") != std::string::npos);
+        QVERIFY(reported);
+    }
+
+    void aBatteryTooShortToLeaveIsRefused() {
+        PlanningProblem problem = test::drawnProblem(rowsOf(4, std::string(4, '.')), {{0.5, 0.5}});
+        try {
+            (void)planOnBattery(problem, 1.0, 0.0, 0.0);
+            QFAIL("a one-second battery was accepted");
+        } catch (const PlanningError& error) {
+            QCOMPARE(QString::fromStdString(error.parameter()), QString("battery_s"));
+            QVERIFY2(std::string(error.what()).find("robot 1") != std::string::npos, error.what());
+        }
+    }
+
+    // The walk works from far to near: the sub-cells it covers in its first half lie farther from the
+    // charger, on average, than those of its second half.
+    void coverageRunsFromFarToNear() {
+        PlanningProblem problem = test::drawnProblem(rowsOf(30, std::string(30, '.')), {{0.5, 0.5}});
+        const Plan plan = planOnBattery(problem, 1e6, 0.0, 0.0);
+        std::set<std::pair<double, double>> seen;
+        std::vector<double> distances;
+        for (const Waypoint& point : plan.paths[0].waypoints)
+            if (seen.insert({point.x, point.y}).second)
+                distances.push_back(std::hypot(point.x - problem.starts[0].x, point.y - problem.starts[0].y));
+        QCOMPARE(distances.size(), std::size_t(900));
+        double firstHalf = 0.0;
+        double secondHalf = 0.0;
+        for (std::size_t i = 0; i < distances.size(); ++i)
+            (i < distances.size() / 2 ? firstHalf : secondHalf) += distances[i];
+        QVERIFY2(firstHalf > 1.3 * secondHalf, qPrintable(QString("%1 %2").arg(firstHalf).arg(secondHalf)));
+    }
+
+    // Two robots, each from its own charger, with sorties of their own.
+    void eachRobotFliesFromItsOwnCharger() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(20, std::string(40, '.')), {{0.5, 0.5}, {39.5, 19.5}});
+        const Plan plan = planOnBattery(problem, 150.0, 60.0, 0.0);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        for (int robot = 0; robot < 2; ++robot) {
+            const RobotSorties& sorties = sortiesOf(plan, robot);
+            QCOMPARE(sorties.robot, robot);
+            QCOMPARE(sorties.charger.x, problem.starts[static_cast<std::size_t>(robot)].x);
+            QVERIFY(sorties.sorties.size() > 1);
+        }
+        QCOMPARE(plan.metrics.coveredFraction, 1.0);
+    }
+};
+
+QTEST_APPLESS_MAIN(WavefrontBatteryTest)
+#include "test_wavefront_battery.moc"
