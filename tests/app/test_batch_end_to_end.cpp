@@ -72,6 +72,7 @@ class TestBatchEndToEnd : public QObject {
     void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
     void missionsAboveTheItemLimitAreSplit();
+    void batteryPlansWriteEachSortie();
     void rasterAloneGetsTheRecognisedProductsTable();
     void outputsAreTheSameWhateverTheThreadCount();
     void comparePlannersOnOneMission();
@@ -84,7 +85,8 @@ class TestBatchEndToEnd : public QObject {
     RunResult
     runMcpp(const QStringList& arguments, int timeoutMilliseconds = 600000,
             const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) const;
-    void checkOutputs(const QString& directory, int robots, const RunResult& run) const;
+    void checkOutputs(const QString& directory, int robots, const RunResult& run,
+                      const QString& planner = QStringLiteral("mcpp-mlct")) const;
     QStringList syntheticFlags() const;
 
     QString executable_;
@@ -314,7 +316,8 @@ void TestBatchEndToEnd::syntheticSampleNeedsThreeLevels() {
     QCOMPARE(levelsWithActiveCells, (QSet<int>{1, 2, 3}));
 }
 
-void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const RunResult& run) const {
+void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const RunResult& run,
+                                     const QString& planner) const {
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
     QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp: planned %1 robots").arg(robots)),
              qPrintable(run.standardOutput));
@@ -411,7 +414,7 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
                             .arg(lowerBound)));
     const double covered = report.value("covered_fraction").toDouble();
     QVERIFY(covered > 0.5 && covered <= 1.0 + 1e-9);
-    QCOMPARE(report.value("planner").toString(), QStringLiteral("mcpp-mlct"));
+    QCOMPARE(report.value("planner").toString(), planner);
     // What the run took, written last so it includes the other files.
     const auto process = report.value("process_ms").toObject();
     for (const char* step : {"read_raster", "plan", "write_outputs"})
@@ -598,6 +601,76 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
     checkOutputs(out, 3, run);
     const QStringList parts = QDir(out).entryList({QStringLiteral("*_part_*")});
     QVERIFY2(parts.isEmpty(), qPrintable(parts.join(", ")));
+}
+
+// The first and last waypoint (command 16) of a QGroundControl plan, as [latitude, longitude].
+QPair<QPointF, QPointF> planEnds(const QJsonObject& plan) {
+    QPointF first;
+    QPointF last;
+    bool seen = false;
+    for (const QJsonValue& item : plan.value("mission").toObject().value("items").toArray()) {
+        if (item.toObject().value("command").toInt() != 16)
+            continue;
+        const QJsonArray params = item.toObject().value("params").toArray();
+        last = QPointF(params[4].toDouble(), params[5].toDouble());
+        if (!seen)
+            first = last;
+        seen = true;
+    }
+    return {first, last};
+}
+
+// A battery plan: sorties within the battery, their times adding up to the robot's with the charges, each
+// sortie a mission of its own from the charger and back; a rerun on a battery that lasts leaves no sortie
+// file behind.
+void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
+    const QString out = scratch_.filePath("battery");
+    const double battery = 600.0;
+    const double recharge = 60.0;
+    auto run =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--planner", "wavefront-battery", "--param",
+                 "battery_s=600", "--param", "recharge_s=60", "--max-waypoints", "0", "--out", out});
+    checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
+    if (QTest::currentTestFailed())
+        return;
+    const auto robots = readJsonObject(out + "/report.json").value("robots").toArray();
+    for (qsizetype robot = 0; robot < robots.size(); ++robot) {
+        const QJsonObject figures = robots[robot].toObject();
+        const int sorties = figures.value("sorties").toInt();
+        QVERIFY2(sorties > 1, qPrintable(QString::number(sorties)));
+        QCOMPARE(figures.value("charges").toInt(), sorties - 1);
+        QCOMPARE(figures.value("charging_s").toDouble(), (sorties - 1) * recharge);
+        const QJsonArray times = figures.value("sortie_times_s").toArray();
+        QCOMPARE(times.size(), sorties);
+        double flying = 0.0;
+        for (const QJsonValue& time : times) {
+            QVERIFY(time.toDouble() <= battery * (1.0 + 1e-9));
+            flying += time.toDouble();
+        }
+        QVERIFY(nearlyEqual(figures.value("time_s").toDouble(), flying + (sorties - 1) * recharge));
+        QVERIFY2(run.standardOutput.contains(
+                     QStringLiteral("robot_%1_sortie_%2.plan").arg(robot + 1).arg(sorties)),
+                 qPrintable(run.standardOutput));
+        const auto whole =
+            planEnds(readJsonObject(QStringLiteral("%1/robot_%2.plan").arg(out).arg(robot + 1)));
+        for (int sortie = 1; sortie <= sorties; ++sortie) {
+            const QString file =
+                QStringLiteral("%1/robot_%2_sortie_%3.plan").arg(out).arg(robot + 1).arg(sortie);
+            QVERIFY2(QFileInfo::exists(file), qPrintable(file));
+            const auto ends = planEnds(readJsonObject(file));
+            QCOMPARE(ends.first, whole.first); // the charger
+            QCOMPARE(ends.second, whole.first);
+            QVERIFY(QFileInfo::exists(
+                QStringLiteral("%1/robot_%2_sortie_%3.waypoints").arg(out).arg(robot + 1).arg(sortie)));
+        }
+        QVERIFY(!QFileInfo::exists(
+            QStringLiteral("%1/robot_%2_sortie_%3.plan").arg(out).arg(robot + 1).arg(sorties + 1)));
+    }
+    run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--planner", "wavefront-battery",
+                   "--param", "battery_s=1000000", "--out", out});
+    checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
+    const QStringList stale = QDir(out).entryList({QStringLiteral("*_sortie_*")});
+    QVERIFY2(stale.isEmpty(), qPrintable(stale.join(", ")));
 }
 
 void TestBatchEndToEnd::everyPlannerRunsFromTheCommandLine_data() {
