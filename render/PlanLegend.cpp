@@ -2,6 +2,7 @@
 
 #include "core/coverage/ImpassableCrossings.hpp"
 #include "core/model/HumanUnits.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QFontMetricsF>
@@ -119,7 +120,10 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
     }
     sections.push_back(std::move(landCover));
     if (plan != nullptr && !plan->paths.empty()) {
-        LegendSection robots{QStringLiteral("Robots (start, region, path)"), {}};
+        const bool onBatteries = sortieLayerOf(*plan) != nullptr;
+        LegendSection robots{onBatteries ? QStringLiteral("Robots (start and charger, region, path)")
+                                         : QStringLiteral("Robots (start, region, path)"),
+                             {}};
         for (std::size_t robot = 0; robot < plan->paths.size(); ++robot)
             robots.items.push_back({LegendSymbol::StartMarker, RobotPalette::colour(static_cast<int>(robot)),
                                     robotLabel(*plan, robot, robotNames), QString::number(robot + 1)});
@@ -129,6 +133,11 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
         overlays.items.push_back(
             {LegendSymbol::RegionTint, first, QStringLiteral("Region a robot covers"), {}});
         overlays.items.push_back({LegendSymbol::PathLine, first, QStringLiteral("Its path"), {}});
+        if (onBatteries)
+            overlays.items.push_back({LegendSymbol::PathLine,
+                                      RobotPalette::alternateSortieColour(0),
+                                      QStringLiteral("Every second sortie, darker"),
+                                      {}});
         overlays.items.push_back({LegendSymbol::CellOutline,
                                   RobotPalette::levelColour(1, 2),
                                   QStringLiteral("Cells (smaller where the view is shorter)"),

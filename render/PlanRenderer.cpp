@@ -1,6 +1,7 @@
 #include "render/PlanRenderer.hpp"
 
 #include "core/coverage/ImpassableCrossings.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "core/outlines/RegionOutlines.hpp"
 #include "io/PlanExport.hpp"
@@ -19,6 +20,14 @@
 namespace mcpp::render {
 
 namespace {
+
+const RobotSorties* sortiesOf(const Plan& plan, int robot) {
+    if (const SortieLayer* layer = sortieLayerOf(plan))
+        for (const RobotSorties& sorties : layer->robots())
+            if (sorties.robot == robot)
+                return &sorties;
+    return nullptr;
+}
 
 constexpr double kArrowSpacingPixels = 90.0;
 constexpr double kArrowLengthPixels = 10.0;
@@ -245,6 +254,20 @@ void PlanRenderer::prepareRegions(const RegionOutlines* given) {
     }
 }
 
+void PlanRenderer::addPathLine(const CoveragePath& path, bool alternate) {
+    PathLine line;
+    line.robot = path.robot;
+    line.alternate = alternate;
+    const std::vector<Waypoint> corners = io::turningPoints(path);
+    line.points.reserve(static_cast<qsizetype>(corners.size()) + 1);
+    for (const Waypoint& waypoint : corners)
+        line.points << QPointF(waypoint.x, waypoint.y);
+    if (path.closed && line.points.front() != line.points.back())
+        line.points << line.points.front();
+    line.bounds = line.points.boundingRect();
+    pathLines_.push_back(std::move(line));
+}
+
 void PlanRenderer::preparePaths() {
     pathLines_.clear();
     meanStepMetres_ = 0.0;
@@ -259,16 +282,22 @@ void PlanRenderer::preparePaths() {
             length += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x,
                                  path.waypoints[i].y - path.waypoints[i - 1].y);
         steps += path.waypoints.size() - 1;
-        PathLine line;
-        line.robot = path.robot;
-        const std::vector<Waypoint> corners = io::turningPoints(path);
-        line.points.reserve(static_cast<qsizetype>(corners.size()) + 1);
-        for (const Waypoint& waypoint : corners)
-            line.points << QPointF(waypoint.x, waypoint.y);
-        if (path.closed && line.points.front() != line.points.back())
-            line.points << line.points.front();
-        line.bounds = line.points.boundingRect();
-        pathLines_.push_back(std::move(line));
+        const RobotSorties* sorties = sortiesOf(*plan_, path.robot);
+        if (sorties == nullptr || sorties->sorties.size() < 2) {
+            addPathLine(path, false);
+            continue;
+        }
+        // Each sortie a line of its own, every second one darker, so the flights between charges show.
+        for (std::size_t sortie = 0; sortie < sorties->sorties.size(); ++sortie) {
+            const Sortie& flight = sorties->sorties[sortie];
+            CoveragePath part;
+            part.robot = path.robot;
+            part.closed = true;
+            part.waypoints.assign(path.waypoints.begin() + static_cast<std::ptrdiff_t>(flight.firstWaypoint),
+                                  path.waypoints.begin() + static_cast<std::ptrdiff_t>(flight.lastWaypoint) +
+                                      1);
+            addPathLine(part, sortie % 2 == 1);
+        }
     }
     meanStepMetres_ = steps == 0 ? 0.0 : length / static_cast<double>(steps);
 }
@@ -476,7 +505,8 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
     for (const PathLine& line : pathLines_) {
         if (!touches(line.bounds, visible))
             continue;
-        const QColor colour = RobotPalette::colour(line.robot);
+        const QColor colour = line.alternate ? RobotPalette::alternateSortieColour(line.robot)
+                                             : RobotPalette::colour(line.robot);
         QColor faded = colour;
         faded.setAlpha(150);
         for (const QPolygonF& run : visibleRuns(line.points, worldToDevice, visibleDevice)) {

@@ -63,7 +63,8 @@ class PlanRenderer {
     };
     struct PathLine {
         int robot = 0;
-        QPolygonF points; // world coordinates, turning points only
+        bool alternate = false; // every second sortie of a robot on a battery, drawn darker
+        QPolygonF points;       // world coordinates, turning points only
         QRectF bounds;
     };
     // An image covering a rectangle of the map, drawn like the land cover.
@@ -73,6 +74,7 @@ class PlanRenderer {
     };
     void prepareRegions(const RegionOutlines* given);
     void preparePaths();
+    void addPathLine(const CoveragePath& path, bool alternate);
     void drawGridImage(QPainter& painter, const GridImage& grid, const QTransform& worldToDevice,
                        const QRectF& deviceArea) const;
     void drawPyramid(QPainter& painter, const std::vector<GridImage>& pyramid,

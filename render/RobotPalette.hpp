@@ -9,6 +9,8 @@ class RobotPalette {
   public:
     [[nodiscard]] static QColor colour(int robot);
     [[nodiscard]] static int size();
+    // Every second sortie of a robot on a battery: its colour, darker, so flights between charges show.
+    [[nodiscard]] static QColor alternateSortieColour(int robot) { return colour(robot).darker(170); }
     // Outline colour for quadtree cells of a level (1 = top), from a dark-to-light ramp.
     [[nodiscard]] static QColor levelColour(int level, int levels);
     // Dashes around cells whose path crosses impassable land: dark red, like the unreachable hatching.

@@ -1,6 +1,8 @@
 #include "ui/ResultsPanel.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/model/HumanUnits.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QBarCategoryAxis>
@@ -15,11 +17,14 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QValueAxis>
+#include <algorithm>
 #include <cmath>
 
 namespace mcpp::ui {
 
 namespace {
+
+constexpr int sortiesColumn = 6; // shown for robots on batteries only
 
 QString hectares(double squareMetres) {
     return QObject::tr("%1 ha").arg(squareMetres / 10'000.0, 0, 'f', 1);
@@ -30,6 +35,25 @@ QTableWidgetItem* numberItem(const QString& text, double sortValue) {
     item->setData(Qt::UserRole, sortValue);
     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+    return item;
+}
+
+// A battery robot's sorties, with the charges, the longest flight and what lay out of range in the tooltip.
+QTableWidgetItem* sortiesItem(const Plan& plan, const RobotSorties& robot) {
+    const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
+    double longest = 0.0;
+    for (const Sortie& sortie : robot.sorties)
+        longest = std::max(longest, sortieSeconds(path, sortie));
+    auto* item = numberItem(QString::number(robot.sorties.size()), static_cast<double>(robot.sorties.size()));
+    QString tip = QObject::tr("%1 charges of %2 each; longest sortie %3 of a %4 battery")
+                      .arg(robot.charges())
+                      .arg(QString::fromStdString(formatDuration(robot.rechargeSeconds)),
+                           QString::fromStdString(formatDuration(longest)),
+                           QString::fromStdString(formatDuration(robot.enduranceSeconds)));
+    if (robot.outOfRangeAreaSquareMetres > 0.0)
+        tip += QObject::tr("; %1 of its region out of range, not covered")
+                   .arg(QString::fromStdString(formatArea(robot.outOfRangeAreaSquareMetres)));
+    item->setToolTip(tip);
     return item;
 }
 
@@ -74,10 +98,11 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     summary->addRow(tr("Warnings"), warnings_);
     layout->addLayout(summary);
 
-    table_ = new QTableWidget(0, 6, this);
+    table_ = new QTableWidget(0, 7, this);
     table_->setObjectName(QStringLiteral("resultsTable"));
     table_->setHorizontalHeaderLabels(
-        {tr("Robot"), tr("Cells"), tr("Area"), tr("Length"), tr("Time"), tr("Turns")});
+        {tr("Robot"), tr("Cells"), tr("Area"), tr("Length"), tr("Time"), tr("Turns"), tr("Sorties")});
+    table_->setColumnHidden(sortiesColumn, true);
     table_->verticalHeader()->hide();
     // Figures keep their width; the robot's name takes what is left (elided), so every column shows.
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -132,6 +157,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     }
     const PlanMetrics& metrics = plan->metrics;
     table_->setRowCount(static_cast<int>(metrics.robots.size()));
+    const SortieLayer* sorties = sortieLayerOf(*plan);
     for (std::size_t row = 0; row < metrics.robots.size(); ++row) {
         const RobotMetrics& robot = metrics.robots[row];
         const QString name =
@@ -153,7 +179,10 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         turns->setToolTip(turning);
         table_->setItem(r, 4, time);
         table_->setItem(r, 5, turns);
+        if (sorties != nullptr && row < sorties->robots().size())
+            table_->setItem(r, sortiesColumn, sortiesItem(*plan, sorties->robots()[row]));
     }
+    table_->setColumnHidden(sortiesColumn, sorties == nullptr);
     makespan_->setText(formatDuration(metrics.makespanSeconds));
     lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
     ratio_->setText(QString::number(metrics.ratio, 'f', 3));

@@ -1,4 +1,5 @@
 #include "core/coverage/ImpassableCrossings.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "render/PlanImage.hpp"
 #include "render/PlanLegend.hpp"
@@ -110,6 +111,42 @@ class TestPlanRenderer : public QObject {
         // Far from the path the land cover shows unchanged.
         QVERIFY(near(image.pixelColor(40, 20), QColor::fromRgb(kMeadow)));
         QVERIFY(near(image.pixelColor(350, 180), QColor::fromRgb(kWater)));
+    }
+
+    // Two sorties from a charger at the west end: out and back along y = 4950, then along y = 4915. The
+    // second is drawn darker (device rows 100 and 170), and the legend says so.
+    void drawsEverySecondSortieDarker() {
+        Plan plan;
+        plan.planner = "test";
+        CoveragePath path;
+        path.closed = true;
+        for (const auto& [x, y] : std::vector<std::pair<double, double>>{{1005, 4950},
+                                                                         {1095, 4950},
+                                                                         {1005, 4950},
+                                                                         {1005, 4915},
+                                                                         {1095, 4915},
+                                                                         {1005, 4915},
+                                                                         {1005, 4950}}) {
+            Waypoint waypoint;
+            waypoint.x = x;
+            waypoint.y = y;
+            path.waypoints.push_back(waypoint);
+        }
+        plan.paths.push_back(path);
+        RobotSorties robot;
+        robot.charger = {1005, 4950};
+        robot.sorties = {{0, 2}, {2, 6}};
+        plan.layers.push_back(std::make_shared<SortieLayer>(std::vector<RobotSorties>{robot}));
+        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200));
+        const QColor first = image.pixelColor(60, 100);
+        const QColor second = image.pixelColor(60, 170);
+        QVERIFY2(near(first, render::RobotPalette::colour(0), 30), qPrintable(first.name()));
+        QVERIFY2(near(second, render::RobotPalette::alternateSortieColour(0), 30), qPrintable(second.name()));
+        QVERIFY(!near(first, second, 30));
+        const auto sections = render::planLegend(twoClassTable(), &plan, {});
+        QVERIFY(std::any_of(sections.back().items.begin(), sections.back().items.end(),
+                            [](const render::LegendItem& item) { return item.label.contains("sortie"); }));
+        QVERIFY(sections[1].title.contains("charger"));
     }
 
     void hidesPathsWhenTheLayerIsOff() {
