@@ -1,8 +1,11 @@
 #include "core/planners/PlanMetricsCalculator.hpp"
 
 #include "core/allocation/StartComponents.hpp"
+#include "core/model/SortieLayer.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace mcpp {
 
@@ -61,6 +64,24 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan) {
     }
 }
 
+// The busiest robot travels at least the bound; on one charge it flies at most the longest endurance, so
+// it charges at least ceil(bound / endurance) - 1 times, each for at least the shortest recharge.
+void PlanMetricsCalculator::boundByCharges(Plan& plan) {
+    const SortieLayer* layer = sortieLayerOf(plan);
+    if (layer == nullptr || layer->robots().empty())
+        return;
+    double endurance = 0.0;
+    double recharge = std::numeric_limits<double>::infinity();
+    for (const RobotSorties& robot : layer->robots()) {
+        endurance = std::max(endurance, robot.enduranceSeconds);
+        recharge = std::min(recharge, robot.rechargeSeconds);
+    }
+    const double travel = plan.metrics.lowerBoundSeconds;
+    if (!(endurance > 0.0) || !std::isfinite(endurance) || travel <= endurance)
+        return;
+    plan.metrics.lowerBoundSeconds = travel + (std::ceil(travel / endurance) - 1.0) * recharge;
+}
+
 void PlanMetricsCalculator::compute(Plan& plan) const {
     PlanMetrics& metrics = plan.metrics;
     const CellGraph& graph = plan.cells;
@@ -105,6 +126,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     }
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : secondsNoPlanBeats / static_cast<double>(robots);
     boundByConnectedParts(plan);
+    boundByCharges(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;
     metrics.passableAreaSquareMetres = graph.passableAreaSquareMetres;

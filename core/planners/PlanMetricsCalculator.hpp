@@ -13,6 +13,8 @@ class PlanMetricsCalculator {
   private:
     // Raises the lower bound to what the robots of each connected part need and lists confined robots.
     static void boundByConnectedParts(Plan& plan);
+    // Raises the lower bound by the charges a robot on a battery must make to fly it.
+    static void boundByCharges(Plan& plan);
 };
 
 } // namespace mcpp

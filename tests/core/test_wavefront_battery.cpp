@@ -83,6 +83,12 @@ class WavefrontBatteryTest : public QObject {
         }
         QVERIFY(std::abs(path.timeSeconds - (flying + robot.charges() * recharge)) < 1e-6);
         QCOMPARE(plan.metrics.makespanSeconds, path.timeSeconds);
+        // 1 600 sub-cells take 1 600 s at least, so 7 sorties and 6 charges at least: no plan beats 3 400 s
+        // (turns add their time).
+        QVERIFY(plan.metrics.lowerBoundSeconds >= 3400.0 - 1e-6);
+        if (turnSeconds == 0.0)
+            QCOMPARE(plan.metrics.lowerBoundSeconds, 3400.0);
+        QVERIFY(plan.metrics.ratio >= 1.0);
         QCOMPARE(plan.metrics.coveredFraction, 1.0);
         QCOMPARE(robot.outOfRangeAreaSquareMetres, 0.0);
     }

@@ -463,10 +463,16 @@ std::vector<std::string> checkTimes(const Plan& plan) {
     const PlanMetrics& metrics = plan.metrics;
     if (std::abs(metrics.makespanSeconds - makespan) > 1e-6 * std::max(1.0, makespan))
         violations.push_back(text("makespan", metrics.makespanSeconds, makespan));
-    const double lowerBound =
-        plan.paths.empty()
-            ? 0.0
-            : std::max(totalTravel / static_cast<double>(plan.paths.size()), connectedPartsLowerBound(plan));
+    double lowerBound = plan.paths.empty() ? 0.0
+                                           : std::max(totalTravel / static_cast<double>(plan.paths.size()),
+                                                      connectedPartsLowerBound(plan));
+    // On batteries the busiest robot also charges between the sorties its share takes at least.
+    if (const SortieLayer* sorties = sortieLayerOf(plan); sorties != nullptr && !sorties->robots().empty()) {
+        const RobotSorties& any = sorties->robots().front();
+        const auto flights = static_cast<int>(std::ceil(lowerBound / any.enduranceSeconds));
+        if (flights > 1)
+            lowerBound += (flights - 1) * any.rechargeSeconds;
+    }
     if (std::abs(metrics.lowerBoundSeconds - lowerBound) > 1e-6 * std::max(1.0, lowerBound))
         violations.push_back(text("lower bound", metrics.lowerBoundSeconds, lowerBound));
     if (lowerBound > 0 && std::abs(metrics.ratio - makespan / lowerBound) > 1e-9)
