@@ -1,6 +1,7 @@
 #include "core/planners/WavefrontBatteryPlanner.hpp"
 
 #include "core/allocation/AzimuthTrendAllocator.hpp"
+#include "core/allocation/BatteryRange.hpp"
 #include "core/coverage/WavefrontCoverage.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/ParallelFor.hpp"
@@ -23,6 +24,15 @@ std::string outOfRangeMessage(const RobotSorties& robot) {
     return formatArea(robot.outOfRangeAreaSquareMetres) + " of robot " + std::to_string(robot.robot + 1) +
            "'s region lies beyond half its battery (" + formatDuration(robot.enduranceSeconds) +
            ") from its charger and is not covered";
+}
+
+std::string beyondEveryChargerMessage(const CellGraph& cells, const std::vector<int>& ids,
+                                      const BatteryRange& range) {
+    double area = 0.0;
+    for (const int id : ids)
+        area += cells.cell(id).passableAreaSquareMetres;
+    return formatArea(area) + " lies beyond half the battery (" + formatDuration(range.enduranceSeconds) +
+           ") from every charger and is not covered";
 }
 
 } // namespace
@@ -53,8 +63,16 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     plan.cells = gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
     const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
-    plan.regions =
-        run.stage("allocation", [&] { return allocator.allocate(plan.cells, startCells, run.progress()); });
+    const BatteryRange range{parameters.real("battery_s")};
+    std::vector<int> beyondEveryCharger;
+    plan.regions = run.stage("allocation", [&] {
+        auto allocation = range.allocationGraph(plan.cells, startCells);
+        beyondEveryCharger = std::move(allocation.outOfRange);
+        return allocator.allocate(allocation.graph, startCells, run.progress());
+    });
+    if (!beyondEveryCharger.empty())
+        run.addIssue(IssueSeverity::Warning, "beyond-every-charger",
+                     beyondEveryChargerMessage(plan.cells, beyondEveryCharger, range));
     const WavefrontCoverage coverage(plan.cells,
                                      {parameters.real("battery_s"), parameters.real("recharge_s")});
     const std::vector<std::vector<int>> cells = regionCells(plan.regions);

@@ -95,22 +95,52 @@ class WavefrontBatteryTest : public QObject {
 
     // A corridor two sub-cells wide from the charger: a sub-cell n steps away is a round trip of 2n seconds,
     // so on 101 s the cells whose far sub-cell lies beyond 50 steps (cells 25 to 49) are out of range.
+    // Cells 26 to 49, whose centres lie beyond 50 s of the charger's cell, are left out before allocation
+    // (beyond every charger); cell 25 by the robot's own check of its sub-cells.
     void cellsBeyondHalfTheBatteryAreLeftOut() {
         PlanningProblem problem = test::drawnProblem(rowsOf(2, std::string(100, '.')), {{0.5, 0.5}});
         const Plan plan = planOnBattery(problem, 101.0, 10.0, 0.0);
         QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
         const RobotSorties& robot = sortiesOf(plan, 0);
-        QCOMPARE(robot.outOfRangeCells.size(), std::size_t(25));
-        for (const int cell : robot.outOfRangeCells)
-            QVERIFY(plan.cells.cell(cell).column >= 25);
-        QCOMPARE(robot.outOfRangeAreaSquareMetres, 100.0);
+        QCOMPARE(robot.outOfRangeCells.size(), std::size_t(1));
+        QCOMPARE(plan.cells.cell(robot.outOfRangeCells.front()).column, 25);
+        QCOMPARE(robot.outOfRangeAreaSquareMetres, 4.0);
+        for (std::size_t id = 0; id < plan.cells.size(); ++id)
+            QCOMPARE(plan.regions.robotOfCell[id] >= 0, plan.cells.cell(static_cast<int>(id)).column < 25);
         QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 100.0);
         QCOMPARE(plan.metrics.coveredAreaSquareMetres, 100.0);
-        bool reported = false;
+        std::set<std::string> codes;
         for (const PlanIssue& issue : plan.issues)
-            reported = reported ||
-                       (issue.code == "beyond-battery" && issue.message.find("100 m") != std::string::npos);
-        QVERIFY(reported);
+            codes.insert(issue.code + ": " + issue.message);
+        QVERIFY(
+            codes.count("beyond-battery: 4 m2 of robot 1's region lies beyond half its battery (1 min 41 s) "
+                        "from its charger and is not covered") == 1);
+        QVERIFY(
+            codes.count("beyond-every-charger: 96 m2 lies beyond half the battery (1 min 41 s) from every "
+                        "charger and is not covered") == 1);
+    }
+
+    // Two chargers 60 m apart on a 100 m corridor, 40 s of battery: a cell 2 m further from a charger's cell
+    // is 2 s further, so cells 10 or more cells from both chargers (the ends and the middle) are out of
+    // range of every one.
+    void cellsOutOfEveryChargersRangeAreLeftToNoRobot() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(2, std::string(100, '.')), {{20.5, 0.5}, {80.5, 0.5}});
+        const Plan plan = planOnBattery(problem, 40.0, 10.0, 0.0);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        for (std::size_t id = 0; id < plan.cells.size(); ++id) {
+            const int column = plan.cells.cell(static_cast<int>(id)).column;
+            const int nearest =
+                std::min(std::abs(column - 10), std::abs(column - 40)); // cells from a charger's
+            if (2 * nearest * 2 >= 70)                                  // 2 m cells at 1 m/s
+                QCOMPARE(plan.regions.robotOfCell[id], -1);
+        }
+        QVERIFY(plan.metrics.coveredFraction < 1.0);
+        QVERIFY(plan.regions.robotOfCell.front() == -1 && plan.regions.robotOfCell.back() == -1);
+        bool warned = false;
+        for (const PlanIssue& issue : plan.issues)
+            warned = warned || issue.code == "beyond-every-charger";
+        QVERIFY(warned);
     }
 
     void aBatteryTooShortToLeaveIsRefused() {

@@ -1,0 +1,67 @@
+#include "core/allocation/BatteryRange.hpp"
+
+#include "core/coverage/PathMeasurement.hpp"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+
+namespace mcpp {
+
+std::vector<double> BatteryRange::secondsFromChargers(const CellGraph& graph,
+                                                      const std::vector<int>& startCells) {
+    std::vector<double> seconds(graph.size(), std::numeric_limits<double>::infinity());
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+    for (const int start : startCells) {
+        seconds[static_cast<std::size_t>(start)] = 0.0;
+        open.emplace(0.0, start);
+    }
+    while (!open.empty()) {
+        const auto [reached, id] = open.top();
+        open.pop();
+        if (reached != seconds[static_cast<std::size_t>(id)])
+            continue;
+        const Cell& here = graph.cell(id);
+        for (const int next : graph.neighbours(id)) {
+            const Cell& there = graph.cell(next);
+            const double step =
+                travelSeconds(std::hypot(there.centreX() - here.centreX(), there.centreY() - here.centreY()),
+                              here.speedMetresPerSecond, there.speedMetresPerSecond);
+            if (reached + step < seconds[static_cast<std::size_t>(next)]) {
+                seconds[static_cast<std::size_t>(next)] = reached + step;
+                open.emplace(reached + step, next);
+            }
+        }
+    }
+    return seconds;
+}
+
+BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& graph,
+                                                            const std::vector<int>& startCells) const {
+    const std::vector<double> seconds = secondsFromChargers(graph, startCells);
+    AllocationGraph result;
+    std::vector<char> inRange(graph.size(), 0);
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        inRange[id] = withinRange(seconds[id]) ? 1 : 0;
+        if (inRange[id] == 0 && std::isfinite(seconds[id]))
+            result.outOfRange.push_back(static_cast<int>(id));
+    }
+    std::vector<int> offsets{0};
+    std::vector<int> neighbours;
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        if (inRange[id] != 0)
+            for (const int next : graph.neighbours(static_cast<int>(id)))
+                if (inRange[static_cast<std::size_t>(next)] != 0)
+                    neighbours.push_back(next);
+        offsets.push_back(static_cast<int>(neighbours.size()));
+    }
+    result.graph =
+        CellGraph(graph.frame(), graph.cells(), NeighbourTopology(std::move(offsets), std::move(neighbours)));
+    result.graph.fieldsOfView = graph.fieldsOfView;
+    result.graph.passableAreaSquareMetres = graph.passableAreaSquareMetres;
+    return result;
+}
+
+} // namespace mcpp

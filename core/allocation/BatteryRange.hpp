@@ -1,0 +1,32 @@
+#pragma once
+
+#include "core/model/CellGraph.hpp"
+
+#include <vector>
+
+namespace mcpp {
+
+// Where robots on batteries can work: a cell is in range when some charger's robot can fly out to it and
+// back on one charge, judged from cell centre to cell centre.
+struct BatteryRange {
+    double enduranceSeconds = 0.0;
+
+    [[nodiscard]] bool withinRange(double secondsFromCharger) const {
+        return 2.0 * secondsFromCharger < enduranceSeconds;
+    }
+    // Seconds of travel from each cell's centre to the nearest start cell's, through neighbours (infinity
+    // where none is reachable).
+    [[nodiscard]] static std::vector<double> secondsFromChargers(const CellGraph& graph,
+                                                                 const std::vector<int>& startCells);
+
+    struct AllocationGraph {
+        CellGraph graph;
+        std::vector<int> outOfRange; // cells farther than half the endurance from every charger
+    };
+    // The graph to allocate on: the same cells and ids, those beyond every charger's range cut off from
+    // their neighbours so that no region takes them and no region's balance counts them.
+    [[nodiscard]] AllocationGraph allocationGraph(const CellGraph& graph,
+                                                  const std::vector<int>& startCells) const;
+};
+
+} // namespace mcpp
