@@ -2,6 +2,7 @@
 // Counters: ratio = makespan / lower bound, makespan_s, turn_time_s = time all robots lose turning (turn_s
 // auto by default: speed / 1 m/s2, here 1 s per 90 degrees), cells = active cells, peak_rss_mb = process
 // peak memory so far. The *_free_turns cases plan with turn_s 0, as before turns were timed.
+#include "core/model/SortieLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -70,6 +71,13 @@ void runPlanner(benchmark::State& state, PlanningProblem problem,
     state.counters["makespan_s"] = plan.metrics.makespanSeconds;
     state.counters["turn_time_s"] = turnSeconds;
     state.counters["cells"] = static_cast<double>(plan.cells.size());
+    state.counters["covered"] = plan.metrics.coveredFraction;
+    if (const SortieLayer* sorties = sortieLayerOf(plan)) {
+        int flights = 0;
+        for (const RobotSorties& robot : sorties->robots())
+            flights += static_cast<int>(robot.sorties.size());
+        state.counters["sorties"] = flights;
+    }
     state.counters["peak_rss_mb"] = peakResidentMegabytes();
     for (const auto& [stage, milliseconds] : plan.metrics.stageMilliseconds)
         state.counters[stage + "_ms"] = milliseconds;
@@ -115,6 +123,17 @@ void uniformGridBalancedMstc(benchmark::State& state) {
                "mstc", balanced);
 }
 
+// Wavefront coverage on a battery of range(2) seconds with 600 s recharges (1 m/s: a 49 x 49 grid of 10 m
+// pixels is 48 000 s of work).
+void uniformGridBattery(benchmark::State& state) {
+    ParameterValues battery;
+    battery.set("battery_s", static_cast<double>(state.range(2)));
+    battery.set("recharge_s", 600.0);
+    runPlanner(state,
+               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+               "wavefront-battery", battery);
+}
+
 void multiCoverMap(benchmark::State& state) {
     runPlanner(state, multiCover(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 7));
 }
@@ -139,6 +158,9 @@ BENCHMARK_CAPTURE(uniformGrid, darp_turns, std::string("darp-turns"))
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(uniformGrid, mstc, std::string("mstc"))
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridBattery)
+    ->ArgsProduct({{49, 100, 200}, {1, 4, 20}, {1200, 3600}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridBalancedMstc)
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})

@@ -2,6 +2,7 @@
 
 #include "core/coverage/PathMeasurement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -62,6 +63,56 @@ BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& gra
     result.graph.fieldsOfView = graph.fieldsOfView;
     result.graph.passableAreaSquareMetres = graph.passableAreaSquareMetres;
     return result;
+}
+
+std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>& robotOfCell,
+                                        const std::vector<int>& startCells,
+                                        const std::vector<int>& leftOut) const {
+    std::vector<char> open(graph.size(), 0);
+    for (const int id : leftOut)
+        open[static_cast<std::size_t>(id)] = 1;
+    std::vector<double> seconds(graph.size(), std::numeric_limits<double>::infinity());
+    std::vector<int> reachedBy(graph.size(), -1);
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
+        seconds[static_cast<std::size_t>(startCells[robot])] = 0.0;
+        reachedBy[static_cast<std::size_t>(startCells[robot])] = static_cast<int>(robot);
+        queue.emplace(0.0, startCells[robot]);
+    }
+    while (!queue.empty()) {
+        const auto [reached, id] = queue.top();
+        queue.pop();
+        if (reached != seconds[static_cast<std::size_t>(id)])
+            continue;
+        const int robot = reachedBy[static_cast<std::size_t>(id)];
+        const Cell& here = graph.cell(id);
+        for (const int next : graph.neighbours(id)) {
+            const auto index = static_cast<std::size_t>(next);
+            if (robotOfCell[index] != robot && open[index] == 0)
+                continue; // another robot's region, or a cell nobody may take
+            const Cell& there = graph.cell(next);
+            const double step =
+                travelSeconds(std::hypot(there.centreX() - here.centreX(), there.centreY() - here.centreY()),
+                              here.speedMetresPerSecond, there.speedMetresPerSecond);
+            if (reached + step < seconds[index] && (open[index] == 0 || withinRange(reached + step))) {
+                seconds[index] = reached + step;
+                reachedBy[index] = robot;
+                queue.emplace(reached + step, next);
+            }
+        }
+    }
+    std::vector<int> gained;
+    for (const int id : leftOut) {
+        const int robot = reachedBy[static_cast<std::size_t>(id)];
+        if (robot < 0)
+            continue;
+        robotOfCell[static_cast<std::size_t>(id)] = robot;
+        gained.push_back(robot);
+    }
+    std::sort(gained.begin(), gained.end());
+    gained.erase(std::unique(gained.begin(), gained.end()), gained.end());
+    return gained;
 }
 
 } // namespace mcpp

@@ -27,6 +27,13 @@ struct BatteryRange {
     // their neighbours so that no region takes them and no region's balance counts them.
     [[nodiscard]] AllocationGraph allocationGraph(const CellGraph& graph,
                                                   const std::vector<int>& startCells) const;
+
+    // Cells their robots left out of range, handed to a robot whose charger reaches them: ways grow from
+    // the chargers through their own regions' cells and the left-out ones, quickest first, and a left-out
+    // cell goes to the robot whose way reaches it within range (robotOfCell: -1 where left out). Returns
+    // the robots that gained cells, ascending.
+    std::vector<int> handOver(const CellGraph& graph, std::vector<int>& robotOfCell,
+                              const std::vector<int>& startCells, const std::vector<int>& leftOut) const;
 };
 
 } // namespace mcpp

@@ -9,6 +9,8 @@
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
+#include <numeric>
+
 namespace mcpp {
 namespace {
 
@@ -33,6 +35,17 @@ std::string beyondEveryChargerMessage(const CellGraph& cells, const std::vector<
         area += cells.cell(id).passableAreaSquareMetres;
     return formatArea(area) + " lies beyond half the battery (" + formatDuration(range.enduranceSeconds) +
            ") from every charger and is not covered";
+}
+
+// A robot's left-out cells are those it was the last to leave out (others may have taken the rest).
+void keepOwnLeftOutCells(RobotSorties& robot, const std::vector<int>& leftOutBy, const CellGraph& cells) {
+    robot.outOfRangeCells.clear();
+    robot.outOfRangeAreaSquareMetres = 0.0;
+    for (std::size_t cell = 0; cell < leftOutBy.size(); ++cell)
+        if (leftOutBy[cell] == robot.robot) {
+            robot.outOfRangeCells.push_back(static_cast<int>(cell));
+            robot.outOfRangeAreaSquareMetres += cells.cell(static_cast<int>(cell)).passableAreaSquareMetres;
+        }
 }
 
 } // namespace
@@ -75,19 +88,41 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
                      beyondEveryChargerMessage(plan.cells, beyondEveryCharger, range));
     const WavefrontCoverage coverage(plan.cells,
                                      {parameters.real("battery_s"), parameters.real("recharge_s")});
-    const std::vector<std::vector<int>> cells = regionCells(plan.regions);
     std::vector<WavefrontCoverage::Result> results(startCells.size());
-    run.stage("paths", [&] {
-        parallelFor(results.size(), [&](std::size_t robot, int) {
-            results[robot] = coverage.cover(static_cast<int>(robot), cells[robot], startCells[robot],
-                                            run.starts()[robot], run.progress());
+    std::vector<int> leftOutBy(plan.cells.size(), -1); // the robot that last left each cell out of range
+    const auto cover = [&](const std::vector<int>& robots) {
+        const std::vector<std::vector<int>> cells = regionCells(plan.regions);
+        parallelFor(robots.size(), [&](std::size_t i, int) {
+            const auto robot = static_cast<std::size_t>(robots[i]);
+            results[robot] = coverage.cover(robots[i], cells[robot], startCells[robot], run.starts()[robot],
+                                            run.progress());
         });
+        for (const int robot : robots)
+            for (const int cell : results[static_cast<std::size_t>(robot)].sorties.outOfRangeCells) {
+                plan.regions.robotOfCell[static_cast<std::size_t>(cell)] = -1;
+                leftOutBy[static_cast<std::size_t>(cell)] = robot;
+            }
+    };
+    run.stage("paths", [&] {
+        std::vector<int> everyRobot(startCells.size());
+        std::iota(everyRobot.begin(), everyRobot.end(), 0);
+        cover(everyRobot);
+        // What a robot could not reach may be in reach of a neighbour's charger: hand it over, plan again.
+        std::vector<int> leftOut;
+        for (std::size_t cell = 0; cell < leftOutBy.size(); ++cell)
+            if (leftOutBy[cell] >= 0)
+                leftOut.push_back(static_cast<int>(cell));
+        const std::vector<int> gained =
+            range.handOver(plan.cells, plan.regions.robotOfCell, startCells, leftOut);
+        for (const int cell : leftOut)
+            if (plan.regions.robotOfCell[static_cast<std::size_t>(cell)] >= 0)
+                leftOutBy[static_cast<std::size_t>(cell)] = -1;
+        cover(gained);
         return 0;
     });
     std::vector<RobotSorties> sorties;
     for (WavefrontCoverage::Result& result : results) {
-        for (const int cell : result.sorties.outOfRangeCells)
-            plan.regions.robotOfCell[static_cast<std::size_t>(cell)] = -1;
+        keepOwnLeftOutCells(result.sorties, leftOutBy, plan.cells);
         if (result.sorties.outOfRangeAreaSquareMetres > 0.0)
             run.addIssue(IssueSeverity::Warning, "beyond-battery", outOfRangeMessage(result.sorties));
         plan.paths.push_back(std::move(result.path));

@@ -143,6 +143,27 @@ class WavefrontBatteryTest : public QObject {
         QVERIFY(warned);
     }
 
+    // Robots at cells 0 and 30 of a 50-cell corridor, 70 s of battery (17 cells out and back): the even
+    // split gives robot 1 cells beyond its reach that robot 2's charger reaches; they are handed over.
+    void cellsOutOfOwnRangeGoToARobotThatReachesThem() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(2, std::string(100, '.')), {{0.5, 0.5}, {60.5, 0.5}});
+        const Plan plan = planOnBattery(problem, 70.0, 10.0, 0.0);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        int handedOver = 0;
+        for (std::size_t id = 0; id < plan.cells.size(); ++id) {
+            const int column = plan.cells.cell(static_cast<int>(id)).column;
+            if (column <= 15 || std::abs(column - 30) <= 15)
+                QVERIFY2(plan.regions.robotOfCell[id] >= 0, qPrintable(QString::number(column)));
+            if (column < 20 && plan.regions.robotOfCell[id] == 1)
+                ++handedOver;
+        }
+        QVERIFY(handedOver > 0);
+        // Cells 0 to 47 are within 17 cells of a charger; left with robot 1, cells 18 to 24 would be lost.
+        QVERIFY2(plan.metrics.coveredAreaSquareMetres >= 45 * 4.0,
+                 qPrintable(QString::number(plan.metrics.coveredAreaSquareMetres)));
+    }
+
     void aBatteryTooShortToLeaveIsRefused() {
         PlanningProblem problem = test::drawnProblem(rowsOf(4, std::string(4, '.')), {{0.5, 0.5}});
         try {
