@@ -211,6 +211,7 @@ PlanningProblem BatchRunner::prepareProblem() {
     io::PreparedProblem prepared = valueOrBadInput(io::planningProblem(
         raster_, classes_, mission_.missingClassesAsObstacles, std::move(starts), mission_.planner, names));
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
+    prepared.problem.batterySeconds = io::robotBatteries(mission_);
     return std::move(prepared.problem);
 }
 

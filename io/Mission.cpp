@@ -262,10 +262,15 @@ bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string
     QJsonObject object;
     if (!reader.object(value, path, object))
         return false;
-    if (!reader.onlyKeys(
-            object, path,
-            {"name", "start", "start_crs", "vehicle", "altitude_m", "cruise_speed_mps", "max_waypoints"}))
+    if (!reader.onlyKeys(object, path,
+                         {"name", "start", "start_crs", "vehicle", "altitude_m", "cruise_speed_mps",
+                          "max_waypoints", "battery_s"}))
         return false;
+    if (!reader.optional(object, path, "battery_s", robot.batterySeconds, &MissionReader::number))
+        return false;
+    if (robot.batterySeconds && (*robot.batterySeconds < 1.0 || *robot.batterySeconds > 1e7))
+        return reader.fail(MissionReader::join(path, "battery_s"),
+                           "must be between 1 s and 10 000 000 s of travel on one charge");
     if (!reader.optional(object, path, "name", robot.name, &MissionReader::string) ||
         !reader.optional(object, path, "start_crs", robot.startCrs, &MissionReader::string) ||
         !readVehicle(reader, object, path, robot.vehicle)) {
@@ -589,6 +594,8 @@ std::string missionToJson(const Mission& mission) {
         if (!robot.startCrs.empty())
             item.add("start_crs", robot.startCrs);
         writeVehicle(item, robot.vehicle);
+        if (robot.batterySeconds)
+            item.add("battery_s", *robot.batterySeconds);
     }
 
     JsonValue& planner = root.add("planner", JsonValue::object());
@@ -636,6 +643,13 @@ std::vector<std::string> robotNames(const Mission& mission) {
     for (const RobotSpec& robot : mission.robots)
         names.push_back(robot.name);
     return names;
+}
+
+std::vector<double> robotBatteries(const Mission& mission) {
+    std::vector<double> batteries;
+    for (const RobotSpec& robot : mission.robots)
+        batteries.push_back(robot.batterySeconds.value_or(0.0));
+    return batteries;
 }
 
 std::vector<VehicleSettings> robotVehicles(const Mission& mission) {

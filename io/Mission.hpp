@@ -8,6 +8,7 @@
 #include "io/Result.hpp"
 #include "io/VehicleSettings.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct RobotSpec {
     MapPoint start;
     std::string startCrs;          // empty: the raster's CRS
     VehicleOverrides vehicle = {}; // its own autopilot settings; the rest from the mission's exports
+    std::optional<double> batterySeconds = {}; // its own battery, for planners that fly on batteries
 
     friend bool operator==(const RobotSpec&, const RobotSpec&) = default;
 };
@@ -72,6 +74,8 @@ struct Mission {
 [[nodiscard]] std::vector<std::string> robotNames(const Mission& mission);
 // Each robot's vehicle in order: its own settings over the mission's.
 [[nodiscard]] std::vector<VehicleSettings> robotVehicles(const Mission& mission);
+// Each robot's own battery in seconds in order, 0 where it has none (the planner's battery_s then).
+[[nodiscard]] std::vector<double> robotBatteries(const Mission& mission);
 
 // The same from the file's text; path names it in messages and anchors a relative raster path.
 [[nodiscard]] Result<Mission> parseMission(const std::string& text, const std::string& path);

@@ -13,6 +13,9 @@ struct PlanningProblem {
     ClassGrid grid;
     ClassTable classes;
     std::vector<MapPoint> starts; // one per robot, in the grid's frame
+    // Each robot's own battery in seconds, for planners that fly on batteries; missing or 0: the planner's
+    // battery_s.
+    std::vector<double> batterySeconds;
     PlannerChoice planner;
 };
 

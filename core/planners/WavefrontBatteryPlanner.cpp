@@ -9,6 +9,7 @@
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 namespace mcpp {
@@ -35,6 +36,15 @@ std::string beyondEveryChargerMessage(const CellGraph& cells, const std::vector<
         area += cells.cell(id).passableAreaSquareMetres;
     return formatArea(area) + " lies beyond half the battery (" + formatDuration(range.enduranceSeconds) +
            ") from every charger and is not covered";
+}
+
+// Each robot's endurance: its own where the problem gives one, else the planner's.
+std::vector<double> robotBatteries(const PlanningProblem& problem, double plannerBattery) {
+    std::vector<double> batteries(problem.starts.size(), plannerBattery);
+    for (std::size_t robot = 0; robot < batteries.size() && robot < problem.batterySeconds.size(); ++robot)
+        if (problem.batterySeconds[robot] > 0.0)
+            batteries[robot] = problem.batterySeconds[robot];
+    return batteries;
 }
 
 // A robot's left-out cells are those it was the last to leave out (others may have taken the rest).
@@ -76,7 +86,8 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     plan.cells = gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
     const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
-    const BatteryRange range{parameters.real("battery_s")};
+    const std::vector<double> batteries = robotBatteries(run.problem(), parameters.real("battery_s"));
+    const BatteryRange range{*std::max_element(batteries.begin(), batteries.end())};
     std::vector<int> beyondEveryCharger;
     plan.regions = run.stage("allocation", [&] {
         auto allocation = range.allocationGraph(plan.cells, startCells);
@@ -86,14 +97,13 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     if (!beyondEveryCharger.empty())
         run.addIssue(IssueSeverity::Warning, "beyond-every-charger",
                      beyondEveryChargerMessage(plan.cells, beyondEveryCharger, range));
-    const WavefrontCoverage coverage(plan.cells,
-                                     {parameters.real("battery_s"), parameters.real("recharge_s")});
     std::vector<WavefrontCoverage::Result> results(startCells.size());
     std::vector<int> leftOutBy(plan.cells.size(), -1); // the robot that last left each cell out of range
     const auto cover = [&](const std::vector<int>& robots) {
         const std::vector<std::vector<int>> cells = regionCells(plan.regions);
         parallelFor(robots.size(), [&](std::size_t i, int) {
             const auto robot = static_cast<std::size_t>(robots[i]);
+            const WavefrontCoverage coverage(plan.cells, {batteries[robot], parameters.real("recharge_s")});
             results[robot] = coverage.cover(robots[i], cells[robot], startCells[robot], run.starts()[robot],
                                             run.progress());
         });

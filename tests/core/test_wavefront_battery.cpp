@@ -164,6 +164,23 @@ class WavefrontBatteryTest : public QObject {
                  qPrintable(QString::number(plan.metrics.coveredAreaSquareMetres)));
     }
 
+    // A robot with a battery of its own flies sorties within it; the other within the planner's.
+    void aRobotsOwnBatteryBoundsItsSorties() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(20, std::string(40, '.')), {{0.5, 0.5}, {39.5, 19.5}});
+        problem.batterySeconds = {0.0, 90.0};
+        const Plan plan = planOnBattery(problem, 300.0, 60.0, 0.0);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        QCOMPARE(sortiesOf(plan, 0).enduranceSeconds, 300.0);
+        QCOMPARE(sortiesOf(plan, 1).enduranceSeconds, 90.0);
+        double longestOfRobot2 = 0.0;
+        for (const Sortie& sortie : sortiesOf(plan, 1).sorties)
+            longestOfRobot2 = std::max(longestOfRobot2, sortieSeconds(plan.paths[1], sortie));
+        QVERIFY(longestOfRobot2 <= 90.0 * (1.0 + 1e-9));
+        QVERIFY(longestOfRobot2 > 60.0); // the short battery is used, not left half empty
+        QVERIFY(sortiesOf(plan, 1).sorties.size() > sortiesOf(plan, 0).sorties.size());
+    }
+
     void aBatteryTooShortToLeaveIsRefused() {
         PlanningProblem problem = test::drawnProblem(rowsOf(4, std::string(4, '.')), {{0.5, 0.5}});
         try {

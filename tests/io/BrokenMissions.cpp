@@ -123,6 +123,9 @@ std::vector<MissionMutation> missionMutations() {
          "robots[0].max_waypoints"},
         {"robot altitude_m", R"("name": "b")", R"("name": "b", "altitude_m": "high")",
          "robots[1].altitude_m"},
+        {"robot battery_s zero", R"("name": "a")", R"("name": "a", "battery_s": 0)", "robots[0].battery_s"},
+        {"robot battery_s text", R"("name": "b")", R"("name": "b", "battery_s": "1 h")",
+         "robots[1].battery_s"},
     };
 }
 

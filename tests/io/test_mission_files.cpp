@@ -43,6 +43,7 @@ Mission sampleMission() {
     mission.robots[1].vehicle.type = VehicleType::Multirotor;
     mission.robots[1].vehicle.altitudeMetres = 45.5;
     mission.robots[1].vehicle.maxWaypoints = 0;
+    mission.robots[2].batterySeconds = 1500.0; // its own battery, for battery planners
     mission.planner.parameters.set("purity_tolerance", 0.05);
     mission.planner.parameters.set("blocked_threshold", 0.6);
     mission.planner.parameters.set("closed_tour", false);
@@ -134,6 +135,9 @@ class MissionFilesTest : public QObject {
         QCOMPARE(vehicles[1].altitudeMetres, 45.5);
         QCOMPARE(vehicles[1].cruiseSpeedMetresPerSecond, 1.2);
         QVERIFY(vehicles[1].type == VehicleType::Multirotor);
+        QCOMPARE(root["robots"].toArray()[2].toObject()["battery_s"].toDouble(), 1500.0);
+        QVERIFY(!beta.contains("battery_s"));
+        QCOMPARE(robotBatteries(sampleMission()), (std::vector<double>{0.0, 0.0, 1500.0}));
     }
 
     void minimalMissionGetsDefaults() {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -468,10 +469,15 @@ std::vector<std::string> checkTimes(const Plan& plan) {
                                                       connectedPartsLowerBound(plan));
     // On batteries the busiest robot also charges between the sorties its share takes at least.
     if (const SortieLayer* sorties = sortieLayerOf(plan); sorties != nullptr && !sorties->robots().empty()) {
-        const RobotSorties& any = sorties->robots().front();
-        const auto flights = static_cast<int>(std::ceil(lowerBound / any.enduranceSeconds));
+        double longest = 0.0;
+        double shortestCharge = std::numeric_limits<double>::infinity();
+        for (const RobotSorties& robot : sorties->robots()) {
+            longest = std::max(longest, robot.enduranceSeconds);
+            shortestCharge = std::min(shortestCharge, robot.rechargeSeconds);
+        }
+        const auto flights = static_cast<int>(std::ceil(lowerBound / longest));
         if (flights > 1)
-            lowerBound += (flights - 1) * any.rechargeSeconds;
+            lowerBound += (flights - 1) * shortestCharge;
     }
     if (std::abs(metrics.lowerBoundSeconds - lowerBound) > 1e-6 * std::max(1.0, lowerBound))
         violations.push_back(text("lower bound", metrics.lowerBoundSeconds, lowerBound));
