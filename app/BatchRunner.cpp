@@ -390,6 +390,8 @@ void BatchRunner::removeStaleRobotFiles(
             const std::string whole = (directory / io::robotFileName(robot, format)).string();
             if (!planned)
                 removed = fs::remove(whole, code) || removed;
+            if (!planned && format.splitByItemLimit)
+                io::removeStaleSortieFiles(whole, 0);
             if (format.splitByItemLimit)
                 removed = io::removeStaleMissionFiles(whole, parts) || removed;
         }

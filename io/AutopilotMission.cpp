@@ -199,4 +199,14 @@ bool removeStaleMissionFiles(const std::string& path, std::size_t parts) {
     return removed;
 }
 
+void removeStaleSortieFiles(const std::string& path, std::size_t written) {
+    std::error_code code;
+    for (std::size_t sortie = written;; ++sortie) {
+        const std::string file = missionSortiePath(path, sortie);
+        const bool removed = std::filesystem::remove(file, code);
+        if (!removeStaleMissionFiles(file, 0) && !removed)
+            break;
+    }
+}
+
 } // namespace mcpp::io

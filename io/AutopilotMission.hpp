@@ -61,5 +61,8 @@ struct AutopilotMission {
 // was written in parts, parts from `parts` on (all of them when it was written whole: parts 1, or not at
 // all: 0). True when a file went.
 bool removeStaleMissionFiles(const std::string& path, std::size_t parts);
+// Removes the sortie files (and their parts) an earlier export to `path` wrote from sortie `written` on,
+// up to the first sortie number it finds none for.
+void removeStaleSortieFiles(const std::string& path, std::size_t written);
 
 } // namespace mcpp::io

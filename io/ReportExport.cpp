@@ -16,10 +16,7 @@ using internal::JsonValue;
 namespace {
 
 double chargingSeconds(const CoveragePath& path) {
-    double seconds = 0.0;
-    for (const PathPause& pause : path.pauses)
-        seconds += pause.seconds;
-    return seconds;
+    return pausedSecondsBetween(path.pauses, 0, path.waypoints.size());
 }
 
 // A battery robot's sorties: how many, their times, the charges between them and what lies out of range.
@@ -30,20 +27,15 @@ void addSorties(JsonValue& item, const Plan& plan, const RobotSorties& robot) {
     item.add("charges", robot.charges());
     item.add("charging_s", chargingSeconds(path));
     JsonValue& times = item.add("sortie_times_s", JsonValue::array());
-    double longest = 0.0;
-    for (const Sortie& sortie : robot.sorties) {
+    for (const Sortie& sortie : robot.sorties)
         times.push(sortieSeconds(path, sortie));
-        longest = std::max(longest, sortieSeconds(path, sortie));
-    }
-    item.add("longest_sortie_s", longest);
+    item.add("longest_sortie_s", longestSortieSeconds(path, robot.sorties));
     item.add("out_of_range_area_m2", robot.outOfRangeAreaSquareMetres);
 }
 
 std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
     const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
-    double longest = 0.0;
-    for (const Sortie& sortie : robot.sorties)
-        longest = std::max(longest, sortieSeconds(path, sortie));
+    const double longest = longestSortieSeconds(path, robot.sorties);
     return "," + std::to_string(robot.sorties.size()) + "," + std::to_string(robot.charges()) + "," +
            internal::formatShortest(chargingSeconds(path)) + "," + internal::formatShortest(longest) + "," +
            internal::formatShortest(robot.outOfRangeAreaSquareMetres);

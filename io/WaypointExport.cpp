@@ -1,3 +1,4 @@
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
@@ -33,28 +34,6 @@ const CoveragePath* pathOfRobot(const Plan& plan, int robot) {
             return &path;
     }
     return nullptr;
-}
-
-const RobotSorties* sortiesOfRobot(const Plan& plan, int robot) {
-    if (const SortieLayer* layer = sortieLayerOf(plan))
-        for (const RobotSorties& sorties : layer->robots())
-            if (sorties.robot == robot)
-                return &sorties;
-    return nullptr;
-}
-
-// A sortie's stretch of the path, as a path of its own.
-CoveragePath sortiePath(const CoveragePath& path, const Sortie& sortie) {
-    CoveragePath flight;
-    flight.robot = path.robot;
-    flight.closed = true;
-    const auto first = path.waypoints.begin() + static_cast<std::ptrdiff_t>(sortie.firstWaypoint);
-    flight.waypoints.assign(first,
-                            path.waypoints.begin() + static_cast<std::ptrdiff_t>(sortie.lastWaypoint) + 1);
-    const double start = flight.waypoints.front().cumulativeSeconds;
-    for (Waypoint& waypoint : flight.waypoints)
-        waypoint.cumulativeSeconds -= start;
-    return flight;
 }
 
 struct GeoWaypoint {
@@ -303,22 +282,13 @@ Status writeMission(const ExportContext& context, const AutopilotMission& missio
     return {};
 }
 
-// Sortie files an earlier export to `path` wrote beyond the `written` ones of this one.
-void removeStaleSortieFiles(const std::string& path, std::size_t written) {
-    std::error_code code;
-    for (std::size_t sortie = written;; ++sortie) {
-        const std::string file = missionSortiePath(path, sortie);
-        const bool removed = std::filesystem::remove(file, code);
-        if (!removeStaleMissionFiles(file, 0) && !removed)
-            break;
-    }
-}
-
 // Each sortie of a robot that flies several as a mission of its own beside the whole one.
 Status writeSortieMissions(const ExportContext& context, int robot, const CoveragePath& coverage,
                            const std::string& path, MissionText text) {
     const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
-    const std::size_t count = sorties == nullptr || sorties->sorties.size() < 2 ? 0 : sorties->sorties.size();
+    if (sorties == nullptr)
+        return {}; // no battery plan: files beside `path` named like sorties are not ours to remove
+    const std::size_t count = sorties->sorties.size() < 2 ? 0 : sorties->sorties.size();
     for (std::size_t sortie = 0; sortie < count; ++sortie) {
         const CoveragePath flight = sortiePath(coverage, sorties->sorties[sortie]);
         const AutopilotMission mission = autopilotMission(flight, context.vehicle(robot), context.settings);

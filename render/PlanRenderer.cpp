@@ -1,6 +1,7 @@
 #include "render/PlanRenderer.hpp"
 
 #include "core/coverage/ImpassableCrossings.hpp"
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "core/outlines/RegionOutlines.hpp"
@@ -20,14 +21,6 @@
 namespace mcpp::render {
 
 namespace {
-
-const RobotSorties* sortiesOf(const Plan& plan, int robot) {
-    if (const SortieLayer* layer = sortieLayerOf(plan))
-        for (const RobotSorties& sorties : layer->robots())
-            if (sorties.robot == robot)
-                return &sorties;
-    return nullptr;
-}
 
 constexpr double kArrowSpacingPixels = 90.0;
 constexpr double kArrowLengthPixels = 10.0;
@@ -282,22 +275,14 @@ void PlanRenderer::preparePaths() {
             length += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x,
                                  path.waypoints[i].y - path.waypoints[i - 1].y);
         steps += path.waypoints.size() - 1;
-        const RobotSorties* sorties = sortiesOf(*plan_, path.robot);
+        const RobotSorties* sorties = sortiesOfRobot(*plan_, path.robot);
         if (sorties == nullptr || sorties->sorties.size() < 2) {
             addPathLine(path, false);
             continue;
         }
         // Each sortie a line of its own, every second one darker, so the flights between charges show.
-        for (std::size_t sortie = 0; sortie < sorties->sorties.size(); ++sortie) {
-            const Sortie& flight = sorties->sorties[sortie];
-            CoveragePath part;
-            part.robot = path.robot;
-            part.closed = true;
-            part.waypoints.assign(path.waypoints.begin() + static_cast<std::ptrdiff_t>(flight.firstWaypoint),
-                                  path.waypoints.begin() + static_cast<std::ptrdiff_t>(flight.lastWaypoint) +
-                                      1);
-            addPathLine(part, sortie % 2 == 1);
-        }
+        for (std::size_t sortie = 0; sortie < sorties->sorties.size(); ++sortie)
+            addPathLine(sortiePath(path, sorties->sorties[sortie]), sortie % 2 == 1);
     }
     meanStepMetres_ = steps == 0 ? 0.0 : length / static_cast<double>(steps);
 }

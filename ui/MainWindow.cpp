@@ -3,6 +3,7 @@
 #include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
 #include "core/decomposition/QuadTreeGridSize.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "io/AreaOfInterest.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
@@ -1117,7 +1118,7 @@ QString MainWindow::savePlanBeside(const QString& missionPath, const std::string
     // one this mcpp cannot read may be another version's.
     if (plan == nullptr || document_->planStale() || fingerprint.empty())
         return {};
-    if (!plan->layers.empty())
+    if (sortieLayerOf(*plan) != nullptr)
         return tr(" Its plan is not saved with it: plan files do not hold sorties, so opening the mission "
                   "plans again.");
     if (inputFilesAtLoad_.empty() || currentInputFiles() != inputFilesAtLoad_) {

@@ -40,10 +40,8 @@ QTableWidgetItem* numberItem(const QString& text, double sortValue) {
 
 // A battery robot's sorties, with the charges, the longest flight and what lay out of range in the tooltip.
 QTableWidgetItem* sortiesItem(const Plan& plan, const RobotSorties& robot) {
-    const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
-    double longest = 0.0;
-    for (const Sortie& sortie : robot.sorties)
-        longest = std::max(longest, sortieSeconds(path, sortie));
+    const double longest =
+        longestSortieSeconds(plan.paths[static_cast<std::size_t>(robot.robot)], robot.sorties);
     auto* item = numberItem(QString::number(robot.sorties.size()), static_cast<double>(robot.sorties.size()));
     QString tip = QObject::tr("%1 charges of %2 each; longest sortie %3 of a %4 battery")
                       .arg(robot.charges())

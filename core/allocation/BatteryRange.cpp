@@ -67,10 +67,7 @@ BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& gra
 
 std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>& robotOfCell,
                                         const std::vector<int>& startCells,
-                                        const std::vector<int>& leftOut) const {
-    std::vector<char> open(graph.size(), 0);
-    for (const int id : leftOut)
-        open[static_cast<std::size_t>(id)] = 1;
+                                        const std::vector<int>& leftOutBy) const {
     std::vector<double> seconds(graph.size(), std::numeric_limits<double>::infinity());
     std::vector<int> reachedBy(graph.size(), -1);
     using Entry = std::pair<double, int>;
@@ -89,13 +86,14 @@ std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>
         const Cell& here = graph.cell(id);
         for (const int next : graph.neighbours(id)) {
             const auto index = static_cast<std::size_t>(next);
-            if (robotOfCell[index] != robot && open[index] == 0)
-                continue; // another robot's region, or a cell nobody may take
+            const bool open = leftOutBy[index] >= 0 && leftOutBy[index] != robot;
+            if (robotOfCell[index] != robot && !open)
+                continue; // another robot's region, a cell nobody may take, or one this robot cannot reach
             const Cell& there = graph.cell(next);
             const double step =
                 travelSeconds(std::hypot(there.centreX() - here.centreX(), there.centreY() - here.centreY()),
                               here.speedMetresPerSecond, there.speedMetresPerSecond);
-            if (reached + step < seconds[index] && (open[index] == 0 || withinRange(reached + step))) {
+            if (reached + step < seconds[index] && (!open || withinRange(reached + step))) {
                 seconds[index] = reached + step;
                 reachedBy[index] = robot;
                 queue.emplace(reached + step, next);
@@ -103,12 +101,11 @@ std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>
         }
     }
     std::vector<int> gained;
-    for (const int id : leftOut) {
-        const int robot = reachedBy[static_cast<std::size_t>(id)];
-        if (robot < 0)
+    for (std::size_t id = 0; id < leftOutBy.size(); ++id) {
+        if (leftOutBy[id] < 0 || reachedBy[id] < 0)
             continue;
-        robotOfCell[static_cast<std::size_t>(id)] = robot;
-        gained.push_back(robot);
+        robotOfCell[id] = reachedBy[id];
+        gained.push_back(reachedBy[id]);
     }
     std::sort(gained.begin(), gained.end());
     gained.erase(std::unique(gained.begin(), gained.end()), gained.end());

@@ -28,12 +28,13 @@ struct BatteryRange {
     [[nodiscard]] AllocationGraph allocationGraph(const CellGraph& graph,
                                                   const std::vector<int>& startCells) const;
 
-    // Cells their robots left out of range, handed to a robot whose charger reaches them: ways grow from
-    // the chargers through their own regions' cells and the left-out ones, quickest first, and a left-out
-    // cell goes to the robot whose way reaches it within range (robotOfCell: -1 where left out). Returns
-    // the robots that gained cells, ascending.
+    // Cells their robots left out of range, handed to another robot whose charger reaches them: ways grow
+    // from the chargers through their own regions' cells and the left-out ones (never one the robot itself
+    // left out), quickest first, and a left-out cell goes to the robot whose way reaches it within range.
+    // leftOutBy: by cell, the robot that left it out, or -1 (robotOfCell is -1 there). Returns the robots
+    // that gained cells, ascending.
     std::vector<int> handOver(const CellGraph& graph, std::vector<int>& robotOfCell,
-                              const std::vector<int>& startCells, const std::vector<int>& leftOut) const;
+                              const std::vector<int>& startCells, const std::vector<int>& leftOutBy) const;
 };
 
 } // namespace mcpp

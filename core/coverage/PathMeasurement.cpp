@@ -116,6 +116,35 @@ PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGr
     return seconds;
 }
 
+CoveragePath sortiePath(const CoveragePath& path, const Sortie& sortie) {
+    CoveragePath flight;
+    flight.robot = path.robot;
+    flight.closed = true;
+    const auto first = path.waypoints.begin() + static_cast<std::ptrdiff_t>(sortie.firstWaypoint);
+    flight.waypoints.assign(first,
+                            path.waypoints.begin() + static_cast<std::ptrdiff_t>(sortie.lastWaypoint) + 1);
+    const double start = flight.waypoints.front().cumulativeSeconds;
+    for (Waypoint& waypoint : flight.waypoints)
+        waypoint.cumulativeSeconds -= start;
+    return flight;
+}
+
+double longestSortieSeconds(const CoveragePath& path, const std::vector<Sortie>& sorties) {
+    double longest = 0.0;
+    for (const Sortie& sortie : sorties)
+        longest = std::max(longest, sortieSeconds(path, sortie));
+    return longest;
+}
+
+Direction unitDirection(double fromX, double fromY, double toX, double toY) {
+    const double alongX = toX - fromX;
+    const double alongY = toY - fromY;
+    const double length = std::sqrt(alongX * alongX + alongY * alongY);
+    if (!(length > 0.0))
+        return {};
+    return {alongX / length, alongY / length};
+}
+
 double longestPathSeconds(const std::vector<CoveragePath>& paths) {
     double longest = 0.0;
     for (const CoveragePath& path : paths)

@@ -53,6 +53,19 @@ double addPauses(std::vector<Waypoint>& waypoints, const std::vector<PathPause>&
            pausedSecondsBetween(path.pauses, sortie.firstWaypoint, sortie.lastWaypoint);
 }
 
+// A sortie's stretch of the path as a path of its own, its times counted from the sortie's start.
+[[nodiscard]] CoveragePath sortiePath(const CoveragePath& path, const Sortie& sortie);
+
+// The longest of a robot's sorties, as sortieSeconds times them.
+[[nodiscard]] double longestSortieSeconds(const CoveragePath& path, const std::vector<Sortie>& sorties);
+
+struct Direction {
+    double x = 0.0;
+    double y = 0.0;
+};
+// The unit direction from a to b as measurements take it; (0, 0) when they coincide.
+[[nodiscard]] Direction unitDirection(double fromX, double fromY, double toX, double toY);
+
 // The longest of the paths' times: the makespan of measured paths.
 [[nodiscard]] double longestPathSeconds(const std::vector<CoveragePath>& paths);
 

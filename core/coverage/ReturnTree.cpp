@@ -7,19 +7,6 @@
 #include <queue>
 
 namespace mcpp {
-namespace {
-
-// Unit direction from a to b, as a path's measurement takes it.
-void direction(double ax, double ay, double bx, double by, double& dx, double& dy) {
-    const double x = bx - ax;
-    const double y = by - ay;
-    const double length = std::sqrt(x * x + y * y);
-    dx = length > 0.0 ? x / length : 0.0;
-    dy = length > 0.0 ? y / length : 0.0;
-}
-
-} // namespace
-
 ReturnTree::ReturnTree(const SubCellNodes& nodes, const CellGraph& graph, const std::vector<char>& usable,
                        int root, MapPoint charger)
     : nodes_(nodes), graph_(graph), root_(root), parent_(static_cast<std::size_t>(nodes.size()), unreached),
@@ -51,11 +38,9 @@ ReturnTree::ReturnTree(const SubCellNodes& nodes, const CellGraph& graph, const 
                 settled[static_cast<std::size_t>(next)] != 0)
                 continue;
             const Waypoint& there = nodes.waypoint(next);
-            double dx = 0.0;
-            double dy = 0.0;
-            direction(there.x, there.y, here.x, here.y, dx, dy);
-            // The way from `next` enters `node` along (dx, dy) and turns there onto node's own way home.
-            const double candidate = nodes.stepSeconds(next, node) + secondsHomeArriving(node, dx, dy);
+            // The way from `next` enters `node` and turns there onto node's own way home.
+            const Direction in = unitDirection(there.x, there.y, here.x, here.y);
+            const double candidate = nodes.stepSeconds(next, node) + secondsHomeArriving(node, in.x, in.y);
             const auto index = static_cast<std::size_t>(next);
             if (parent_[index] == unreached || candidate < secondsHome_[index]) {
                 parent_[index] = node;
@@ -81,17 +66,15 @@ bool ReturnTree::nextPoint(int node, double& x, double& y) const {
     return false;
 }
 
-double ReturnTree::secondsHomeArriving(int node, double dx, double dy) const {
+double ReturnTree::secondsHomeArriving(int node, double inX, double inY) const {
     double nextX = 0.0;
     double nextY = 0.0;
     const double home = secondsHome(node);
-    if ((dx == 0.0 && dy == 0.0) || !nextPoint(node, nextX, nextY))
+    if ((inX == 0.0 && inY == 0.0) || !nextPoint(node, nextX, nextY))
         return home;
     const Waypoint& here = nodes_.waypoint(node);
-    double outX = 0.0;
-    double outY = 0.0;
-    direction(here.x, here.y, nextX, nextY, outX, outY);
-    return turnSecondsAt(here, dx, dy, outX, outY, graph_) + home;
+    const Direction out = unitDirection(here.x, here.y, nextX, nextY);
+    return turnSecondsAt(here, inX, inY, out.x, out.y, graph_) + home;
 }
 
 double ReturnTree::worstTurnSeconds(int node) const {

@@ -23,8 +23,9 @@ class ReturnTree {
     [[nodiscard]] int root() const { return root_; }
     // Seconds from the node home, turns after it included.
     [[nodiscard]] double secondsHome(int node) const { return secondsHome_[static_cast<std::size_t>(node)]; }
-    // Seconds home for a robot that reached the node moving along (dx, dy): the turn there, then the way.
-    [[nodiscard]] double secondsHomeArriving(int node, double dx, double dy) const;
+    // Seconds home for a robot that reached the node moving along the unit vector (inX, inY): the turn
+    // there, then the way.
+    [[nodiscard]] double secondsHomeArriving(int node, double inX, double inY) const;
     // The most a robot can spend turning at the node: a U-turn at its cell's price.
     [[nodiscard]] double worstTurnSeconds(int node) const;
     [[nodiscard]] double worstTurnAtCharger() const;

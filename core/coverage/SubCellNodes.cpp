@@ -10,8 +10,8 @@ namespace mcpp {
 namespace {
 
 struct LatticeOffset {
-    int dx = 0; // sub-cells east
-    int dy = 0; // sub-cells south
+    int east = 0;  // sub-cells
+    int south = 0; // sub-cells
 };
 
 constexpr std::array<LatticeOffset, 4> offsets{{{1, 0}, {0, -1}, {-1, 0}, {0, 1}}}; // by Direction
@@ -63,16 +63,16 @@ SubCellNodes::SubCellNodes(const CellGraph& graph, const std::vector<int>& cells
         const int x = 2 * cell.column + (isEast(own) ? 1 : 0);
         const int y = 2 * cell.row + (isSouth(own) ? 1 : 0);
         for (int direction = 0; direction < 4; ++direction) {
-            const int nx = x + offsets[static_cast<std::size_t>(direction)].dx;
-            const int ny = y + offsets[static_cast<std::size_t>(direction)].dy;
-            const int column = nx >= 0 ? nx / 2 : -1;
-            const int row = ny >= 0 ? ny / 2 : -1;
+            const int nextX = x + offsets[static_cast<std::size_t>(direction)].east;
+            const int nextY = y + offsets[static_cast<std::size_t>(direction)].south;
+            const int column = nextX >= 0 ? nextX / 2 : -1;
+            const int row = nextY >= 0 ? nextY / 2 : -1;
             const int other = column == cell.column && row == cell.row
                                   ? node.waypoint.cell
                                   : neighbourAt(graph, node.waypoint.cell, column, row);
             if (other >= 0)
                 node.neighbour[static_cast<std::size_t>(direction)] =
-                    at(other, subCellOf(nx % 2 == 1, ny % 2 == 1));
+                    at(other, subCellOf(nextX % 2 == 1, nextY % 2 == 1));
         }
     }
 }

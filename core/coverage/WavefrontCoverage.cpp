@@ -1,5 +1,6 @@
 #include "core/coverage/WavefrontCoverage.hpp"
 
+#include "core/coverage/PathClock.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/ReturnTree.hpp"
 #include "core/coverage/SubCellNodes.hpp"
@@ -16,6 +17,9 @@
 namespace mcpp {
 namespace {
 
+// A sortie is planned to end this share of the battery early: sums of many steps round differently in
+// the planner and in the measurement.
+constexpr double rangeMargin = 1e-9;
 constexpr int sideStep = 3; // the modified wavefront's weights (Zelinsky et al., as seed 002 counts them)
 constexpr int diagonalStep = 4;
 
@@ -49,68 +53,6 @@ std::vector<int> wavefrontNumbers(const SubCellNodes& nodes, const std::vector<c
     }
     return number;
 }
-
-// A path as it grows, timed exactly as fillCumulativeSeconds will time it.
-class PathClock {
-  public:
-    explicit PathClock(const CellGraph& graph) : graph_(graph) {}
-
-    [[nodiscard]] const std::vector<Waypoint>& waypoints() const { return waypoints_; }
-    [[nodiscard]] std::vector<Waypoint> take() { return std::move(waypoints_); }
-    [[nodiscard]] double elapsed() const { return elapsed_; }
-    [[nodiscard]] std::size_t lastIndex() const { return waypoints_.size() - 1; }
-    [[nodiscard]] double secondsToAppend(const Waypoint& next) const {
-        double turn = 0.0;
-        double travel = 0.0;
-        measure(next, turn, travel);
-        return turn + travel;
-    }
-    // The unit direction of a step from the last point to `next`.
-    void directionTo(const Waypoint& next, double& dx, double& dy) const {
-        const Waypoint& last = waypoints_.back();
-        const double length = std::hypot(next.x - last.x, next.y - last.y);
-        dx = length > 0.0 ? (next.x - last.x) / length : 0.0;
-        dy = length > 0.0 ? (next.y - last.y) / length : 0.0;
-    }
-    void append(const Waypoint& next) {
-        if (!waypoints_.empty()) {
-            double turn = 0.0;
-            double travel = 0.0;
-            measure(next, turn, travel);
-            elapsed_ += turn; // added as fillCumulativeSeconds adds, so the sums agree to the last bit
-            elapsed_ += travel;
-            double dx = 0.0;
-            double dy = 0.0;
-            directionTo(next, dx, dy);
-            if (dx != 0.0 || dy != 0.0) {
-                haveDirection_ = true;
-                directionX_ = dx;
-                directionY_ = dy;
-            }
-        }
-        waypoints_.push_back(next);
-    }
-
-  private:
-    void measure(const Waypoint& next, double& turn, double& travel) const {
-        if (waypoints_.empty())
-            return;
-        const Waypoint& last = waypoints_.back();
-        const double dx = next.x - last.x;
-        const double dy = next.y - last.y;
-        const double length = std::sqrt(dx * dx + dy * dy);
-        if (length > 0.0 && haveDirection_)
-            turn = turnSecondsAt(last, directionX_, directionY_, dx / length, dy / length, graph_);
-        travel = travelSeconds(length, last.speedMetresPerSecond, next.speedMetresPerSecond);
-    }
-
-    const CellGraph& graph_;
-    std::vector<Waypoint> waypoints_;
-    double elapsed_ = 0.0;
-    bool haveDirection_ = false;
-    double directionX_ = 0.0;
-    double directionY_ = 0.0;
-};
 
 // One robot's walk over its usable nodes, in sorties.
 class Walk {
@@ -162,9 +104,6 @@ class Walk {
         }
     }
     void step(int node) {
-        double dx = 0.0;
-        double dy = 0.0;
-        clock_.directionTo(nodes_.waypoint(node), dx, dy);
         for (int side = 0; side < 4; ++side)
             if (nodes_.neighbour(current_, side) == node)
                 heading_ = side;
@@ -175,13 +114,12 @@ class Walk {
     [[nodiscard]] bool canStep(int next) const {
         if (!std::isfinite(endurance_))
             return true;
-        double dx = 0.0;
-        double dy = 0.0;
-        clock_.directionTo(nodes_.waypoint(next), dx, dy);
-        const double needed = clock_.elapsed() - sortieStartSeconds_ +
-                              clock_.secondsToAppend(nodes_.waypoint(next)) +
-                              tree_.secondsHomeArriving(next, dx, dy);
-        return needed <= endurance_ * (1.0 - 1e-12);
+        const Waypoint& here = clock_.waypoints().back();
+        const Waypoint& there = nodes_.waypoint(next);
+        const Direction way = unitDirection(here.x, here.y, there.x, there.y);
+        const double needed = clock_.elapsed() - sortieStartSeconds_ + clock_.secondsToAppend(there) +
+                              tree_.secondsHomeArriving(next, way.x, way.y);
+        return needed <= endurance_ * (1.0 - rangeMargin);
     }
     void goHome() {
         for (const int node : tree_.wayHome(current_))
@@ -292,10 +230,48 @@ class Walk {
 bool withinRange(const ReturnTree& tree, int node, double enduranceSeconds) {
     const double roundTrip =
         tree.worstTurnAtCharger() + 2.0 * tree.secondsHome(node) + tree.worstTurnSeconds(node);
-    return roundTrip <= enduranceSeconds * (1.0 - 1e-12);
+    return roundTrip <= enduranceSeconds * (1.0 - rangeMargin);
+}
+
+// The cells out of range with the tree over the usable nodes: unreached, or too far to fly out to, turn
+// any way and come back on one charge.
+std::set<int> cellsOutOfRange(const SubCellNodes& nodes, const ReturnTree& tree,
+                              const std::vector<char>& usable, double enduranceSeconds) {
+    std::set<int> outOfRange;
+    for (int node = 0; node < nodes.size(); ++node)
+        if (usable[static_cast<std::size_t>(node)] != 0 &&
+            (!tree.reaches(node) || !withinRange(tree, node, enduranceSeconds)))
+            outOfRange.insert(nodes.waypoint(node).cell);
+    return outOfRange;
 }
 
 } // namespace
+
+std::unique_ptr<ReturnTree> WavefrontCoverage::treeWithinRange(const SubCellNodes& nodes, int root, int robot,
+                                                               int startCell, MapPoint start,
+                                                               std::vector<char>& usable,
+                                                               RobotSorties& sorties,
+                                                               const ProgressReporter& progress) const {
+    // Leaving cells out lengthens other ways home, so repeat until every cell left is within range.
+    while (true) {
+        progress.throwIfCancelled();
+        auto tree = std::make_unique<ReturnTree>(nodes, graph_, usable, root, start);
+        const std::set<int> outOfRange = cellsOutOfRange(nodes, *tree, usable, battery_.enduranceSeconds);
+        if (outOfRange.empty())
+            return tree;
+        if (outOfRange.count(startCell) != 0)
+            throw PlanningError::aboutParameter(
+                "battery_s", formatDuration(battery_.enduranceSeconds) + " is too short for robot " +
+                                 std::to_string(robot + 1) +
+                                 " to cover the cell at its start and return to its charger");
+        for (const int cell : outOfRange) {
+            for (const int node : nodes.ofCell(cell))
+                usable[static_cast<std::size_t>(node)] = 0;
+            sorties.outOfRangeCells.push_back(cell);
+            sorties.outOfRangeAreaSquareMetres += graph_.cell(cell).passableAreaSquareMetres;
+        }
+    }
+}
 
 WavefrontCoverage::Result WavefrontCoverage::cover(int robot, const std::vector<int>& cells, int startCell,
                                                    MapPoint start, const ProgressReporter& progress) const {
@@ -310,30 +286,7 @@ WavefrontCoverage::Result WavefrontCoverage::cover(int robot, const std::vector<
     result.sorties.enduranceSeconds = battery_.enduranceSeconds;
     result.sorties.rechargeSeconds = battery_.rechargeSeconds;
     std::vector<char> usable(static_cast<std::size_t>(nodes.size()), 1);
-    std::unique_ptr<ReturnTree> tree;
-    // Leaving cells out lengthens other ways home, so repeat until every cell left is within range.
-    while (true) {
-        progress.throwIfCancelled();
-        tree = std::make_unique<ReturnTree>(nodes, graph_, usable, root, start);
-        std::set<int> outOfRange;
-        for (int node = 0; node < nodes.size(); ++node)
-            if (usable[static_cast<std::size_t>(node)] != 0 &&
-                (!tree->reaches(node) || !withinRange(*tree, node, battery_.enduranceSeconds)))
-                outOfRange.insert(nodes.waypoint(node).cell);
-        if (outOfRange.empty())
-            break;
-        if (outOfRange.count(startCell) != 0)
-            throw PlanningError::aboutParameter(
-                "battery_s", formatDuration(battery_.enduranceSeconds) + " is too short for robot " +
-                                 std::to_string(robot + 1) +
-                                 " to cover the cell at its start and return to its charger");
-        for (const int cell : outOfRange) {
-            for (const int node : nodes.ofCell(cell))
-                usable[static_cast<std::size_t>(node)] = 0;
-            result.sorties.outOfRangeCells.push_back(cell);
-            result.sorties.outOfRangeAreaSquareMetres += graph_.cell(cell).passableAreaSquareMetres;
-        }
-    }
+    const auto tree = treeWithinRange(nodes, root, robot, startCell, start, usable, result.sorties, progress);
     std::sort(result.sorties.outOfRangeCells.begin(), result.sorties.outOfRangeCells.end());
     Walk walk(nodes, graph_, *tree, std::move(usable), battery_.enduranceSeconds, progress);
     std::vector<std::size_t> charges;

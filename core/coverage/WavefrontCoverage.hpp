@@ -3,20 +3,24 @@
 #include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
 #include "core/model/ProgressReporter.hpp"
-#include "core/model/Sortie.hpp"
+#include "core/model/RobotSorties.hpp"
 
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace mcpp {
+
+class ReturnTree;
+class SubCellNodes;
 
 // Wavefront coverage of one robot's region on a battery (seed 002, after Zelinsky et al.). Every free
 // sub-cell gets a wavefront number from the charger (3 per side step, 4 per diagonal one); the robot steps
 // to the unvisited side neighbour of the highest number, so it works from far to near, and when none is
 // left it takes the quickest way to the nearest unvisited sub-cell. Before each step it checks that the
 // charge left would still bring it home from there; when it would not, it goes home by its return tree,
-// charges, flies straight back out to where it was heading and goes on. Cells of the region it could not
-// reach and leave again on one charge are left out and reported.
+// charges, flies back out along the way home of where it was heading, reversed, and goes on. Cells of the
+// region it could not reach and leave again on one charge are left out and reported.
 class WavefrontCoverage {
   public:
     struct Battery {
@@ -36,6 +40,12 @@ class WavefrontCoverage {
                                const ProgressReporter& progress) const;
 
   private:
+    // The return tree over the usable nodes once every cell out of range is left out of them (and listed
+    // in `sorties`).
+    [[nodiscard]] std::unique_ptr<ReturnTree>
+    treeWithinRange(const SubCellNodes& nodes, int root, int robot, int startCell, MapPoint start,
+                    std::vector<char>& usable, RobotSorties& sorties, const ProgressReporter& progress) const;
+
     const CellGraph& graph_;
     Battery battery_;
 };

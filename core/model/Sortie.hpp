@@ -1,9 +1,6 @@
 #pragma once
 
-#include "core/model/MapPoint.hpp"
-
 #include <cstddef>
-#include <vector>
 
 namespace mcpp {
 
@@ -12,19 +9,6 @@ namespace mcpp {
 struct Sortie {
     std::size_t firstWaypoint = 0;
     std::size_t lastWaypoint = 0;
-};
-
-// A robot that covers its region in sorties from a charger.
-struct RobotSorties {
-    int robot = 0;
-    MapPoint charger;
-    double enduranceSeconds = 0.0; // travel and turning one charge allows
-    double rechargeSeconds = 0.0;  // spent at the charger between two sorties
-    std::vector<Sortie> sorties;
-    double outOfRangeAreaSquareMetres = 0.0; // passable land of its region beyond half the endurance
-    std::vector<int> outOfRangeCells;        // those cells, left to no robot
-
-    [[nodiscard]] int charges() const { return sorties.empty() ? 0 : static_cast<int>(sorties.size()) - 1; }
 };
 
 } // namespace mcpp

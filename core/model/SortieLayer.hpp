@@ -2,7 +2,7 @@
 
 #include "core/model/Plan.hpp"
 #include "core/model/PlanLayer.hpp"
-#include "core/model/Sortie.hpp"
+#include "core/model/RobotSorties.hpp"
 
 #include <memory>
 #include <vector>
@@ -27,6 +27,15 @@ class SortieLayer final : public PlanLayer {
     for (const std::shared_ptr<const PlanLayer>& layer : plan.layers)
         if (const auto* sorties = dynamic_cast<const SortieLayer*>(layer.get()))
             return sorties;
+    return nullptr;
+}
+
+// One robot's sorties in the plan's sortie layer, or null when it has none.
+[[nodiscard]] inline const RobotSorties* sortiesOfRobot(const Plan& plan, int robot) {
+    if (const SortieLayer* layer = sortieLayerOf(plan))
+        for (const RobotSorties& sorties : layer->robots())
+            if (sorties.robot == robot)
+                return &sorties;
     return nullptr;
 }
 

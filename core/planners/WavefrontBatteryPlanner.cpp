@@ -2,6 +2,7 @@
 
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 #include "core/allocation/BatteryRange.hpp"
+#include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/WavefrontCoverage.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/ParallelFor.hpp"
@@ -14,14 +15,6 @@
 
 namespace mcpp {
 namespace {
-
-std::vector<std::vector<int>> regionCells(const RegionAllocation& regions) {
-    std::vector<std::vector<int>> cells(regions.startCell.size());
-    for (std::size_t id = 0; id < regions.robotOfCell.size(); ++id)
-        if (const int robot = regions.robotOfCell[id]; robot >= 0)
-            cells[static_cast<std::size_t>(robot)].push_back(static_cast<int>(id));
-    return cells;
-}
 
 std::string outOfRangeMessage(const RobotSorties& robot) {
     return formatArea(robot.outOfRangeAreaSquareMetres) + " of robot " + std::to_string(robot.robot + 1) +
@@ -58,6 +51,55 @@ void keepOwnLeftOutCells(RobotSorties& robot, const std::vector<int>& leftOutBy,
         }
 }
 
+// The regions, drawn on the cells in some charger's range; the others are left out and warned of.
+RegionAllocation allocateWithinRange(PlanningRun& run, const BatteryRange& range,
+                                     const std::vector<int>& startCells) {
+    const CellGraph& cells = run.plan().cells;
+    const AzimuthTrendAllocator allocator(run.parameters().integer("rebalance_iterations"));
+    const BatteryRange::AllocationGraph allocation = range.allocationGraph(cells, startCells);
+    if (!allocation.outOfRange.empty())
+        run.addIssue(IssueSeverity::Warning, "beyond-every-charger",
+                     beyondEveryChargerMessage(cells, allocation.outOfRange, range));
+    return allocator.allocate(allocation.graph, startCells, run.progress());
+}
+
+struct RobotsOnBatteries {
+    std::vector<WavefrontCoverage::Result> results; // by robot
+    std::vector<int> leftOutBy;                     // by cell: the robot that last left it out, or -1
+};
+
+// Plans the robots' regions (in parallel) and takes the cells they leave out of their regions.
+void coverRegions(PlanningRun& run, const std::vector<int>& robots, const std::vector<int>& startCells,
+                  const std::vector<double>& batteries, RobotsOnBatteries& state) {
+    Plan& plan = run.plan();
+    const std::vector<std::vector<int>> cells = cellsByRobot(plan.regions);
+    const double recharge = run.parameters().real("recharge_s");
+    parallelFor(robots.size(), [&](std::size_t i, int) {
+        const auto robot = static_cast<std::size_t>(robots[i]);
+        const WavefrontCoverage coverage(plan.cells, {batteries[robot], recharge});
+        state.results[robot] =
+            coverage.cover(robots[i], cells[robot], startCells[robot], run.starts()[robot], run.progress());
+    });
+    for (const int robot : robots)
+        for (const int cell : state.results[static_cast<std::size_t>(robot)].sorties.outOfRangeCells) {
+            plan.regions.robotOfCell[static_cast<std::size_t>(cell)] = -1;
+            state.leftOutBy[static_cast<std::size_t>(cell)] = robot;
+        }
+}
+
+void addPathsAndSorties(PlanningRun& run, RobotsOnBatteries& state) {
+    Plan& plan = run.plan();
+    std::vector<RobotSorties> sorties;
+    for (WavefrontCoverage::Result& result : state.results) {
+        keepOwnLeftOutCells(result.sorties, state.leftOutBy, plan.cells);
+        if (result.sorties.outOfRangeAreaSquareMetres > 0.0)
+            run.addIssue(IssueSeverity::Warning, "beyond-battery", outOfRangeMessage(result.sorties));
+        plan.paths.push_back(std::move(result.path));
+        sorties.push_back(std::move(result.sorties));
+    }
+    plan.layers.push_back(std::make_shared<SortieLayer>(std::move(sorties)));
+}
+
 } // namespace
 
 PlannerDescription WavefrontBatteryPlanner::describe() const {
@@ -85,60 +127,25 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     Plan& plan = run.plan();
     plan.cells = gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
-    const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
     const std::vector<double> batteries = robotBatteries(run.problem(), parameters.real("battery_s"));
     const BatteryRange range{*std::max_element(batteries.begin(), batteries.end())};
-    std::vector<int> beyondEveryCharger;
-    plan.regions = run.stage("allocation", [&] {
-        auto allocation = range.allocationGraph(plan.cells, startCells);
-        beyondEveryCharger = std::move(allocation.outOfRange);
-        return allocator.allocate(allocation.graph, startCells, run.progress());
-    });
-    if (!beyondEveryCharger.empty())
-        run.addIssue(IssueSeverity::Warning, "beyond-every-charger",
-                     beyondEveryChargerMessage(plan.cells, beyondEveryCharger, range));
-    std::vector<WavefrontCoverage::Result> results(startCells.size());
-    std::vector<int> leftOutBy(plan.cells.size(), -1); // the robot that last left each cell out of range
-    const auto cover = [&](const std::vector<int>& robots) {
-        const std::vector<std::vector<int>> cells = regionCells(plan.regions);
-        parallelFor(robots.size(), [&](std::size_t i, int) {
-            const auto robot = static_cast<std::size_t>(robots[i]);
-            const WavefrontCoverage coverage(plan.cells, {batteries[robot], parameters.real("recharge_s")});
-            results[robot] = coverage.cover(robots[i], cells[robot], startCells[robot], run.starts()[robot],
-                                            run.progress());
-        });
-        for (const int robot : robots)
-            for (const int cell : results[static_cast<std::size_t>(robot)].sorties.outOfRangeCells) {
-                plan.regions.robotOfCell[static_cast<std::size_t>(cell)] = -1;
-                leftOutBy[static_cast<std::size_t>(cell)] = robot;
-            }
-    };
+    plan.regions = run.stage("allocation", [&] { return allocateWithinRange(run, range, startCells); });
+    RobotsOnBatteries robots{std::vector<WavefrontCoverage::Result>(startCells.size()),
+                             std::vector<int>(plan.cells.size(), -1)};
     run.stage("paths", [&] {
         std::vector<int> everyRobot(startCells.size());
         std::iota(everyRobot.begin(), everyRobot.end(), 0);
-        cover(everyRobot);
-        // What a robot could not reach may be in reach of a neighbour's charger: hand it over, plan again.
-        std::vector<int> leftOut;
-        for (std::size_t cell = 0; cell < leftOutBy.size(); ++cell)
-            if (leftOutBy[cell] >= 0)
-                leftOut.push_back(static_cast<int>(cell));
+        coverRegions(run, everyRobot, startCells, batteries, robots);
+        // What a robot could not reach may be in reach of another's charger: hand it over, plan again.
         const std::vector<int> gained =
-            range.handOver(plan.cells, plan.regions.robotOfCell, startCells, leftOut);
-        for (const int cell : leftOut)
-            if (plan.regions.robotOfCell[static_cast<std::size_t>(cell)] >= 0)
-                leftOutBy[static_cast<std::size_t>(cell)] = -1;
-        cover(gained);
+            range.handOver(plan.cells, plan.regions.robotOfCell, startCells, robots.leftOutBy);
+        for (std::size_t cell = 0; cell < robots.leftOutBy.size(); ++cell)
+            if (plan.regions.robotOfCell[cell] >= 0)
+                robots.leftOutBy[cell] = -1;
+        coverRegions(run, gained, startCells, batteries, robots);
         return 0;
     });
-    std::vector<RobotSorties> sorties;
-    for (WavefrontCoverage::Result& result : results) {
-        keepOwnLeftOutCells(result.sorties, leftOutBy, plan.cells);
-        if (result.sorties.outOfRangeAreaSquareMetres > 0.0)
-            run.addIssue(IssueSeverity::Warning, "beyond-battery", outOfRangeMessage(result.sorties));
-        plan.paths.push_back(std::move(result.path));
-        sorties.push_back(std::move(result.sorties));
-    }
-    plan.layers.push_back(std::make_shared<SortieLayer>(std::move(sorties)));
+    addPathsAndSorties(run, robots);
 }
 
 } // namespace mcpp
