@@ -10,33 +10,55 @@
 
 namespace mcpp {
 
-std::vector<double> BatteryRange::secondsFromChargers(const CellGraph& graph,
-                                                      const std::vector<int>& startCells) {
-    std::vector<double> seconds(graph.size(), std::numeric_limits<double>::infinity());
+namespace {
+
+struct Growth {
+    std::vector<double> seconds; // by cell: travel from the charger that reached it (infinity: none)
+    std::vector<int> reachedBy;  // by cell: that charger's robot, or -1
+};
+
+// Ways from every start cell at once through neighbouring cells (centre to centre), quickest first; a
+// robot's way enters a cell only where mayEnter(robot, cell, seconds there) allows.
+template <typename MayEnter>
+Growth growFromChargers(const CellGraph& graph, const std::vector<int>& startCells, MayEnter mayEnter) {
+    Growth growth{std::vector<double>(graph.size(), std::numeric_limits<double>::infinity()),
+                  std::vector<int>(graph.size(), -1)};
     using Entry = std::pair<double, int>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-    for (const int start : startCells) {
-        seconds[static_cast<std::size_t>(start)] = 0.0;
-        open.emplace(0.0, start);
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
+        growth.seconds[static_cast<std::size_t>(startCells[robot])] = 0.0;
+        growth.reachedBy[static_cast<std::size_t>(startCells[robot])] = static_cast<int>(robot);
+        queue.emplace(0.0, startCells[robot]);
     }
-    while (!open.empty()) {
-        const auto [reached, id] = open.top();
-        open.pop();
-        if (reached != seconds[static_cast<std::size_t>(id)])
+    while (!queue.empty()) {
+        const auto [reached, id] = queue.top();
+        queue.pop();
+        if (reached != growth.seconds[static_cast<std::size_t>(id)])
             continue;
+        const int robot = growth.reachedBy[static_cast<std::size_t>(id)];
         const Cell& here = graph.cell(id);
         for (const int next : graph.neighbours(id)) {
             const Cell& there = graph.cell(next);
-            const double step =
+            const double seconds =
+                reached +
                 travelSeconds(std::hypot(there.centreX() - here.centreX(), there.centreY() - here.centreY()),
                               here.speedMetresPerSecond, there.speedMetresPerSecond);
-            if (reached + step < seconds[static_cast<std::size_t>(next)]) {
-                seconds[static_cast<std::size_t>(next)] = reached + step;
-                open.emplace(reached + step, next);
+            const auto index = static_cast<std::size_t>(next);
+            if (seconds < growth.seconds[index] && mayEnter(robot, index, seconds)) {
+                growth.seconds[index] = seconds;
+                growth.reachedBy[index] = robot;
+                queue.emplace(seconds, next);
             }
         }
     }
-    return seconds;
+    return growth;
+}
+
+} // namespace
+
+std::vector<double> BatteryRange::secondsFromChargers(const CellGraph& graph,
+                                                      const std::vector<int>& startCells) {
+    return growFromChargers(graph, startCells, [](int, std::size_t, double) { return true; }).seconds;
 }
 
 BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& graph,
@@ -68,44 +90,18 @@ BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& gra
 std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>& robotOfCell,
                                         const std::vector<int>& startCells,
                                         const std::vector<int>& leftOutBy) const {
-    std::vector<double> seconds(graph.size(), std::numeric_limits<double>::infinity());
-    std::vector<int> reachedBy(graph.size(), -1);
-    using Entry = std::pair<double, int>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
-        seconds[static_cast<std::size_t>(startCells[robot])] = 0.0;
-        reachedBy[static_cast<std::size_t>(startCells[robot])] = static_cast<int>(robot);
-        queue.emplace(0.0, startCells[robot]);
-    }
-    while (!queue.empty()) {
-        const auto [reached, id] = queue.top();
-        queue.pop();
-        if (reached != seconds[static_cast<std::size_t>(id)])
-            continue;
-        const int robot = reachedBy[static_cast<std::size_t>(id)];
-        const Cell& here = graph.cell(id);
-        for (const int next : graph.neighbours(id)) {
-            const auto index = static_cast<std::size_t>(next);
-            const bool open = leftOutBy[index] >= 0 && leftOutBy[index] != robot;
-            if (robotOfCell[index] != robot && !open)
-                continue; // another robot's region, a cell nobody may take, or one this robot cannot reach
-            const Cell& there = graph.cell(next);
-            const double step =
-                travelSeconds(std::hypot(there.centreX() - here.centreX(), there.centreY() - here.centreY()),
-                              here.speedMetresPerSecond, there.speedMetresPerSecond);
-            if (reached + step < seconds[index] && (!open || withinRange(reached + step))) {
-                seconds[index] = reached + step;
-                reachedBy[index] = robot;
-                queue.emplace(reached + step, next);
-            }
-        }
-    }
+    // A robot's way keeps to its own region and the cells others left out, within its range.
+    const Growth growth =
+        growFromChargers(graph, startCells, [&](int robot, std::size_t cell, double seconds) {
+            const bool open = leftOutBy[cell] >= 0 && leftOutBy[cell] != robot;
+            return open ? withinRange(seconds) : robotOfCell[cell] == robot;
+        });
     std::vector<int> gained;
     for (std::size_t id = 0; id < leftOutBy.size(); ++id) {
-        if (leftOutBy[id] < 0 || reachedBy[id] < 0)
+        if (leftOutBy[id] < 0 || growth.reachedBy[id] < 0)
             continue;
-        robotOfCell[id] = reachedBy[id];
-        gained.push_back(reachedBy[id]);
+        robotOfCell[id] = growth.reachedBy[id];
+        gained.push_back(growth.reachedBy[id]);
     }
     std::sort(gained.begin(), gained.end());
     gained.erase(std::unique(gained.begin(), gained.end()), gained.end());

@@ -164,10 +164,14 @@ double addPauses(std::vector<Waypoint>& waypoints, const std::vector<PathPause>&
 }
 
 double pausedSecondsBetween(const std::vector<PathPause>& pauses, std::size_t first, std::size_t last) {
+    // Pauses are in waypoint order: a sortie's are found without passing the whole path's.
+    const auto byWaypoint = [](const PathPause& pause, std::size_t waypoint) {
+        return pause.waypoint < waypoint;
+    };
     double waited = 0.0;
-    for (const PathPause& pause : pauses)
-        if (pause.waypoint >= first && pause.waypoint < last)
-            waited += pause.seconds;
+    for (auto pause = std::lower_bound(pauses.begin(), pauses.end(), first, byWaypoint);
+         pause != pauses.end() && pause->waypoint < last; ++pause)
+        waited += pause->seconds;
     return waited;
 }
 

@@ -66,7 +66,7 @@ class Walk {
         remaining_ = static_cast<int>(std::count(usable_.begin(), usable_.end(), char(1)));
     }
 
-    void run(std::vector<Sortie>& sorties, std::vector<std::size_t>& charges) {
+    void run(std::vector<Sortie>& sorties) {
         clock_.append(tree_.charger());
         current_ = tree_.root();
         if (tree_.chargerApart())
@@ -81,7 +81,7 @@ class Walk {
                 break;
             for (const int next : route) {
                 if (!canStep(next)) {
-                    charge(sorties, charges);
+                    charge(sorties);
                     flyOutTo(route.back());
                     break;
                 }
@@ -130,10 +130,9 @@ class Walk {
             heading_ = -1;
         }
     }
-    void charge(std::vector<Sortie>& sorties, std::vector<std::size_t>& charges) {
+    void charge(std::vector<Sortie>& sorties) {
         goHome();
         sorties.push_back({sortieFirst_, clock_.lastIndex()});
-        charges.push_back(clock_.lastIndex());
         sortieFirst_ = clock_.lastIndex();
         sortieStartSeconds_ = clock_.elapsed();
     }
@@ -289,13 +288,13 @@ WavefrontCoverage::Result WavefrontCoverage::cover(int robot, const std::vector<
     const auto tree = treeWithinRange(nodes, root, robot, startCell, start, usable, result.sorties, progress);
     std::sort(result.sorties.outOfRangeCells.begin(), result.sorties.outOfRangeCells.end());
     Walk walk(nodes, graph_, *tree, std::move(usable), battery_.enduranceSeconds, progress);
-    std::vector<std::size_t> charges;
-    walk.run(result.sorties.sorties, charges);
+    walk.run(result.sorties.sorties);
     result.path.robot = robot;
     result.path.closed = true;
     result.path.waypoints = walk.takeWaypoints();
-    for (const std::size_t waypoint : charges)
-        result.path.pauses.push_back({waypoint, battery_.rechargeSeconds});
+    // A charge at the end of every sortie but the last.
+    for (std::size_t sortie = 0; sortie + 1 < result.sorties.sorties.size(); ++sortie)
+        result.path.pauses.push_back({result.sorties.sorties[sortie].lastWaypoint, battery_.rechargeSeconds});
     return result;
 }
 

@@ -40,15 +40,20 @@ std::vector<double> robotBatteries(const PlanningProblem& problem, double planne
     return batteries;
 }
 
-// A robot's left-out cells are those it was the last to leave out (others may have taken the rest).
-void keepOwnLeftOutCells(RobotSorties& robot, const std::vector<int>& leftOutBy, const CellGraph& cells) {
-    robot.outOfRangeCells.clear();
-    robot.outOfRangeAreaSquareMetres = 0.0;
-    for (std::size_t cell = 0; cell < leftOutBy.size(); ++cell)
-        if (leftOutBy[cell] == robot.robot) {
-            robot.outOfRangeCells.push_back(static_cast<int>(cell));
-            robot.outOfRangeAreaSquareMetres += cells.cell(static_cast<int>(cell)).passableAreaSquareMetres;
-        }
+// Each robot's left-out cells are those it was the last to leave out (others may have taken the rest).
+void keepOwnLeftOutCells(std::vector<WavefrontCoverage::Result>& results, const std::vector<int>& leftOutBy,
+                         const CellGraph& cells) {
+    for (WavefrontCoverage::Result& result : results) {
+        result.sorties.outOfRangeCells.clear();
+        result.sorties.outOfRangeAreaSquareMetres = 0.0;
+    }
+    for (std::size_t cell = 0; cell < leftOutBy.size(); ++cell) {
+        if (leftOutBy[cell] < 0)
+            continue;
+        RobotSorties& robot = results[static_cast<std::size_t>(leftOutBy[cell])].sorties;
+        robot.outOfRangeCells.push_back(static_cast<int>(cell));
+        robot.outOfRangeAreaSquareMetres += cells.cell(static_cast<int>(cell)).passableAreaSquareMetres;
+    }
 }
 
 // The regions, drawn on the cells in some charger's range; the others are left out and warned of.
@@ -89,9 +94,9 @@ void coverRegions(PlanningRun& run, const std::vector<int>& robots, const std::v
 
 void addPathsAndSorties(PlanningRun& run, RobotsOnBatteries& state) {
     Plan& plan = run.plan();
+    keepOwnLeftOutCells(state.results, state.leftOutBy, plan.cells);
     std::vector<RobotSorties> sorties;
     for (WavefrontCoverage::Result& result : state.results) {
-        keepOwnLeftOutCells(result.sorties, state.leftOutBy, plan.cells);
         if (result.sorties.outOfRangeAreaSquareMetres > 0.0)
             run.addIssue(IssueSeverity::Warning, "beyond-battery", outOfRangeMessage(result.sorties));
         plan.paths.push_back(std::move(result.path));
