@@ -43,16 +43,28 @@ QTableWidgetItem* sortiesItem(const Plan& plan, const RobotSorties& robot) {
     const double longest =
         longestSortieSeconds(plan.paths[static_cast<std::size_t>(robot.robot)], robot.sorties);
     auto* item = numberItem(QString::number(robot.sorties.size()), static_cast<double>(robot.sorties.size()));
-    QString tip = QObject::tr("%1 charges of %2 each; longest sortie %3 of a %4 battery")
-                      .arg(robot.charges())
-                      .arg(QString::fromStdString(formatDuration(robot.rechargeSeconds)),
-                           QString::fromStdString(formatDuration(longest)),
-                           QString::fromStdString(formatDuration(robot.enduranceSeconds)));
+    QString tip =
+        QObject::tr("%1 charges of %2 each; longest sortie %3 of a %4 battery")
+            .arg(robot.charges())
+            .arg(ResultsPanel::formatDuration(robot.rechargeSeconds), ResultsPanel::formatDuration(longest),
+                 ResultsPanel::formatDuration(robot.enduranceSeconds));
     if (robot.outOfRangeAreaSquareMetres > 0.0)
         tip += QObject::tr("; %1 of its region out of range, not covered")
                    .arg(QString::fromStdString(formatArea(robot.outOfRangeAreaSquareMetres)));
     item->setToolTip(tip);
     return item;
+}
+
+// For a robot on a battery: the part of its time spent at the charger.
+QString chargingNote(const Plan& plan, int robot) {
+    if (robot < 0 || static_cast<std::size_t>(robot) >= plan.paths.size())
+        return {};
+    const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot)];
+    if (path.pauses.empty())
+        return {};
+    return QObject::tr("; %1 of it charging (%2 charges)")
+        .arg(ResultsPanel::formatDuration(pausedSecondsBetween(path.pauses, 0, path.waypoints.size())))
+        .arg(path.pauses.size());
 }
 
 QLabel* valueLabel(const QString& objectName, QWidget* parent) {
@@ -173,7 +185,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         auto* turns = numberItem(QString::number(robot.turns), robot.turns);
         const QString turning = tr("%1 of it lost slowing down for turns and speeding up again (turn_s)")
                                     .arg(formatDuration(robot.turnSeconds));
-        time->setToolTip(turning);
+        time->setToolTip(turning + chargingNote(*plan, robot.robot));
         turns->setToolTip(turning);
         table_->setItem(r, 4, time);
         table_->setItem(r, 5, turns);

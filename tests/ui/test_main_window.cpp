@@ -1,8 +1,10 @@
 #include "core/decomposition/LandCoverSamples.hpp"
 #include "core/model/MemoryBudget.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "io/Mission.hpp"
+#include "tests/support/SyntheticMaps.hpp"
 #include "tests/support/TestData.hpp"
 #include "ui/ApplicationResources.hpp"
 #include "ui/ClassTableBanner.hpp"
@@ -93,6 +95,25 @@ class TestMainWindow : public QObject {
     Q_OBJECT
 
   private slots:
+    // A battery plan's results: the Sorties column, its tooltip, and the charging time in the time's.
+    void resultsShowTheSortiesOfBatteryPlans() {
+        PlanningProblem problem = test::drawnProblem(std::vector<std::string>(20, std::string(40, '.')),
+                                                     {{0.5, 0.5}, {39.5, 19.5}});
+        problem.planner = defaultPlannerChoice("wavefront-battery");
+        problem.planner.parameters.set("battery_s", 150.0);
+        const Plan plan = makePlanner("wavefront-battery")->plan(problem, {});
+        ui::ResultsPanel panel;
+        panel.showPlan(&plan, {QStringLiteral("west"), QStringLiteral("east")});
+        QTableWidget* table = panel.robotTable();
+        QVERIFY(!table->isColumnHidden(6));
+        const auto* layer = sortieLayerOf(plan);
+        QVERIFY(layer != nullptr);
+        QCOMPARE(table->item(0, 6)->text(), QString::number(layer->robots()[0].sorties.size()));
+        QVERIFY2(table->item(0, 6)->toolTip().contains("charges of 10 min each"),
+                 qPrintable(table->item(0, 6)->toolTip()));
+        QVERIFY2(table->item(0, 4)->toolTip().contains("charging"), qPrintable(table->item(0, 4)->toolTip()));
+    }
+
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QCoreApplication::setOrganizationName(QStringLiteral("mcpp"));
@@ -278,6 +299,7 @@ class TestMainWindow : public QObject {
         QVERIFY(document->plan()->metrics.robots[0].turnSeconds > 0.0);
         QVERIFY(results->item(0, 4)->toolTip().contains("lost slowing down for turns"));
         QVERIFY(window.resultsPanel()->ratioText().toDouble() >= 0.99);
+        QVERIFY(results->isColumnHidden(6)); // no sorties without batteries
 
         // Undo the speed edit, then the last start: the plan goes stale, visibly.
         window.undoStack()->undo();
