@@ -61,6 +61,9 @@ std::optional<std::string> ClassTable::validate() const {
         if (c.fieldOfViewMetres > kMaximumFieldOfViewMetres)
             return where.str() + ": field of view " + formatQuantity(c.fieldOfViewMetres) +
                    " m is beyond any sensor (at most " + formatDistance(kMaximumFieldOfViewMetres) + ")";
+        if (c.detectionProbability && !(*c.detectionProbability >= 0.0 && *c.detectionProbability <= 1.0))
+            return where.str() + ": detection probability " + formatQuantity(*c.detectionProbability) +
+                   " is not between 0 and 1";
     }
     return std::nullopt;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace mcpp {
@@ -18,6 +19,9 @@ struct LandCoverClass {
     double speedMetresPerSecond = 1.0;
     double fieldOfViewMetres = 10.0;
     bool passable = true;
+    // Chance the sensor sees a target in this land cover right beside the path (p0 of the detection model,
+    // 0 to 1); unset: the planner's default.
+    std::optional<double> detectionProbability = {};
 
     // Speed <= 0 or passable == false makes the class an obstacle (spec section 1).
     [[nodiscard]] bool isTraversable() const { return passable && speedMetresPerSecond > 0.0; }

@@ -1,6 +1,7 @@
 #include "core/planners/PlanMetricsCalculator.hpp"
 
 #include "core/allocation/StartComponents.hpp"
+#include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
 
 #include <algorithm>
@@ -51,9 +52,11 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan) {
         figures.push_back(figuresOf(plan, part));
         if (figures.back().areaSquareMetres > figures[largest].areaSquareMetres)
             largest = figures.size() - 1;
-        metrics.lowerBoundSeconds =
-            std::max(metrics.lowerBoundSeconds,
-                     figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
+        // A detection plan need not pass every sub-cell, so a part's travel over its cells bounds nothing.
+        if (detectionLayerOf(plan) == nullptr)
+            metrics.lowerBoundSeconds =
+                std::max(metrics.lowerBoundSeconds,
+                         figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
     }
     for (std::size_t part = 0; part < parts.size(); ++part) {
         if (part == largest)
@@ -89,6 +92,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     metrics.robots.assign(robots, {});
     plan.regions.costSeconds.assign(robots, 0.0);
     double secondsNoPlanBeats = 0.0; // travel over every covered cell, and the turns the paths make
+    double cellTravelSeconds = 0.0;
     double covered = 0.0;
     double unreachable = 0.0;
     std::size_t subCells = 0;
@@ -105,6 +109,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         robotMetrics.costSeconds += cell.coverSeconds();
         plan.regions.costSeconds[static_cast<std::size_t>(robot)] += cell.coverSeconds();
         secondsNoPlanBeats += cell.travelSeconds();
+        cellTravelSeconds += cell.travelSeconds();
         covered += cell.passableAreaSquareMetres;
         subCells += static_cast<std::size_t>(cell.freeSubCellCount());
     }
@@ -124,6 +129,8 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         }
         metrics.makespanSeconds = std::max(metrics.makespanSeconds, robotMetrics.timeSeconds);
     }
+    if (const DetectionLayer* detection = detectionLayerOf(plan))
+        secondsNoPlanBeats += detection->summary().travelSecondsNoPlanBeats - cellTravelSeconds;
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : secondsNoPlanBeats / static_cast<double>(robots);
     boundByConnectedParts(plan);
     boundByCharges(plan);

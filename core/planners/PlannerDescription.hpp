@@ -12,6 +12,9 @@ struct PlannerPromises {
     bool regionsConnected = true;          // each region is connected and holds its robot's start cell
     bool pathsCoverOwnRegion = true;       // each robot passes every free sub-cell of its own region
     bool everyReachableCellCovered = true; // every cell connected to a start belongs to some region
+    // Some robot passes the centre of every free sub-cell of the regions (a planner whose sensor model
+    // sees farther spaces its passes out instead).
+    bool passesEverySubCell = true;
 };
 
 // How a planner presents itself to the command line, mission files and the window.

@@ -1,6 +1,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 
 #include "core/parameters/ParameterResolution.hpp"
+#include "core/planners/CppiedPlanner.hpp"
 #include "core/planners/DarpPlanner.hpp"
 #include "core/planners/DarpTurnsPlanner.hpp"
 #include "core/planners/FullSpiralStcPlanner.hpp"
@@ -30,6 +31,7 @@ const std::vector<Factory>& factories() {
         factory<DarpTurnsPlanner>(),
         factory<MstcPlanner>(),
         factory<WavefrontBatteryPlanner>(),
+        factory<CppiedPlanner>(),
     };
     return all;
 }

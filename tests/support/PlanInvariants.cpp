@@ -1,5 +1,6 @@
 #include "tests/support/PlanInvariants.hpp"
 
+#include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
 
 #include <algorithm>
@@ -301,7 +302,7 @@ std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& 
             violations.push_back(who + " reports " + std::to_string(path.repeatedSubCellVisits) +
                                  " repeated visits but makes " + std::to_string(repeats));
     }
-    for (std::size_t id = 0; id < graph.size(); ++id) {
+    for (std::size_t id = 0; id < graph.size() && promises.passesEverySubCell; ++id) {
         const int robot = owner[id];
         if (robot < 0)
             continue;
@@ -467,6 +468,18 @@ std::vector<std::string> checkTimes(const Plan& plan) {
     double lowerBound = plan.paths.empty() ? 0.0
                                            : std::max(totalTravel / static_cast<double>(plan.paths.size()),
                                                       connectedPartsLowerBound(plan));
+    // A detection plan's bound counts the passes its targets need instead of every sub-cell's; it must
+    // still hold.
+    if (const DetectionLayer* detection = detectionLayerOf(plan);
+        detection != nullptr && !plan.paths.empty()) {
+        double turning = 0.0;
+        for (const CoveragePath& path : plan.paths)
+            turning += path.turnSeconds;
+        lowerBound = (detection->summary().travelSecondsNoPlanBeats + turning) /
+                     static_cast<double>(plan.paths.size());
+        if (makespan < lowerBound * (1.0 - 1e-9))
+            violations.push_back(text("makespan beats the detection lower bound", makespan, lowerBound));
+    }
     // On batteries the busiest robot also charges between the sorties its share takes at least.
     if (const SortieLayer* sorties = sortieLayerOf(plan); sorties != nullptr && !sorties->robots().empty()) {
         double longest = 0.0;
@@ -556,11 +569,136 @@ std::vector<std::string> checkSorties(const Plan& plan) {
     return violations;
 }
 
+namespace {
+
+// The integral from 0 to x >= 0 of the sensor profile: p0 to half the field of view, then down to 0 at it.
+double profileIntegral(double p0, double fieldOfView, double x) {
+    const double half = fieldOfView / 2.0;
+    if (x <= half)
+        return p0 * x;
+    const double y = std::min(x, fieldOfView);
+    return p0 * half + p0 / half * (fieldOfView * (y - half) - (y * y - half * half) / 2.0);
+}
+
+// The profile's exact mean over the lattice cell `offset` cells to the side of a pass.
+double cellMean(double p0, double fieldOfView, double cellSize, int offset) {
+    const int k = std::abs(offset);
+    if (k == 0)
+        return 2.0 * profileIntegral(p0, fieldOfView, cellSize / 2.0) / cellSize;
+    return (profileIntegral(p0, fieldOfView, (k + 0.5) * cellSize) -
+            profileIntegral(p0, fieldOfView, (k - 0.5) * cellSize)) /
+           cellSize;
+}
+
+struct RecountedDetection {
+    std::vector<double> probability;
+    std::vector<int> cellAt; // the cell whose free sub-cell is there, or -1
+};
+
+// Every pass of every path, recounted on the layer's lattice: straight through a centre one pass in the
+// heading, at a turn one in each, at an end one in the heading of its step, a path on one centre both.
+RecountedDetection recountDetection(const PlanningProblem& problem, const Plan& plan,
+                                    const DetectionGrid& grid) {
+    RecountedDetection recount;
+    const auto size = static_cast<std::size_t>(grid.columns) * static_cast<std::size_t>(grid.rows);
+    recount.probability.assign(size, 0.0);
+    recount.cellAt.assign(size, -1);
+    auto centre = [&](int column, int row) {
+        return MapPoint{grid.originX + (column + 0.5) * grid.cellSize,
+                        grid.originY - (row + 0.5) * grid.cellSize};
+    };
+    double widest = 0.0;
+    for (const LandCoverClass& landCover : problem.classes.classes())
+        widest = std::max(widest, landCover.fieldOfViewMetres);
+    for (int row = 0; row < grid.rows; ++row)
+        for (int column = 0; column < grid.columns; ++column) {
+            const MapPoint point = centre(column, row);
+            const int cell = plan.cells.cellAt(point);
+            if (cell >= 0 && plan.cells.cell(cell).isFree(plan.cells.cell(cell).subCellAt(point)))
+                recount.cellAt[static_cast<std::size_t>(row * grid.columns + column)] = cell;
+        }
+    const double fallback = plan.parameters.real("detection_probability");
+    const int reach = static_cast<int>(std::ceil(widest / grid.cellSize)) + 1;
+    auto pass = [&](int column, int row, bool horizontal) {
+        for (int offset = -reach; offset <= reach; ++offset) {
+            const int c = horizontal ? column : column + offset;
+            const int r = horizontal ? row + offset : row;
+            if (c < 0 || r < 0 || c >= grid.columns || r >= grid.rows)
+                continue;
+            const auto index = static_cast<std::size_t>(r * grid.columns + c);
+            if (recount.cellAt[index] < 0)
+                continue;
+            const LandCoverClass* landCover =
+                problem.classes.find(plan.cells.cell(recount.cellAt[index]).classValue);
+            const double chance = cellMean(landCover->detectionProbability.value_or(fallback),
+                                           landCover->fieldOfViewMetres, grid.cellSize, offset);
+            recount.probability[index] += (1.0 - recount.probability[index]) * chance;
+        }
+    };
+    for (const CoveragePath& path : plan.paths) {
+        std::vector<std::pair<int, int>> centres;
+        for (const Waypoint& waypoint : path.waypoints) {
+            const int column = static_cast<int>(std::floor((waypoint.x - grid.originX) / grid.cellSize));
+            const int row = static_cast<int>(std::floor((grid.originY - waypoint.y) / grid.cellSize));
+            const MapPoint at = centre(column, row);
+            if (std::hypot(at.x - waypoint.x, at.y - waypoint.y) > 1e-6 * grid.cellSize)
+                continue;
+            if (centres.empty() || centres.back() != std::make_pair(column, row))
+                centres.emplace_back(column, row);
+        }
+        for (std::size_t i = 0; i < centres.size(); ++i) {
+            std::set<bool> headings; // true: east-west
+            if (i > 0)
+                headings.insert(centres[i - 1].second == centres[i].second);
+            if (i + 1 < centres.size())
+                headings.insert(centres[i + 1].second == centres[i].second);
+            if (centres.size() == 1)
+                headings = {true, false};
+            for (const bool horizontal : headings)
+                pass(centres[i].first, centres[i].second, horizontal);
+        }
+    }
+    return recount;
+}
+
+} // namespace
+
+std::vector<std::string> checkDetection(const PlanningProblem& problem, const Plan& plan) {
+    const DetectionLayer* layer = detectionLayerOf(plan);
+    if (layer == nullptr)
+        return {};
+    std::vector<std::string> violations;
+    const DetectionGrid& grid = layer->grid();
+    const RecountedDetection recount = recountDetection(problem, plan, grid);
+    const double required = layer->summary().requiredProbability;
+    for (std::size_t index = 0; index < recount.probability.size(); ++index) {
+        const std::string where = "detection cell " + std::to_string(index);
+        const int cell = recount.cellAt[index];
+        if (cell < 0) {
+            if (!std::isnan(grid.probability[index]) || !std::isnan(grid.required[index]))
+                violations.push_back(where + " has values off the free sub-cells");
+            continue;
+        }
+        if (std::abs(grid.probability[index] - recount.probability[index]) > 1e-4)
+            violations.push_back(
+                text(where + " probability", grid.probability[index], recount.probability[index]));
+        const bool covered = plan.regions.robotOfCell[static_cast<std::size_t>(cell)] >= 0;
+        if (covered != !std::isnan(grid.required[index]))
+            violations.push_back(where + " is a target where no robot covers it, or the reverse");
+        if (covered && grid.required[index] > 0.0F && recount.probability[index] < required - 1e-6)
+            violations.push_back(
+                text(where + " stays below the required probability", recount.probability[index], required));
+    }
+    if (violations.size() > 10)
+        violations.resize(10);
+    return violations;
+}
+
 std::vector<std::string> checkAllInvariants(const PlanningProblem& problem, const Plan& plan,
                                             const PlannerPromises& promises) {
     std::vector<std::string> all;
     for (auto&& part : {checkCells(plan), checkRegions(plan, promises), checkPaths(problem, plan, promises),
-                        checkTimes(plan), checkSorties(plan)})
+                        checkTimes(plan), checkSorties(plan), checkDetection(problem, plan)})
         all.insert(all.end(), part.begin(), part.end());
     return all;
 }

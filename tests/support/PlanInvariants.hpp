@@ -16,6 +16,9 @@ namespace mcpp::test {
 
 // Sorties of battery plans: from the charger and back, within the endurance, a charge between two.
 [[nodiscard]] std::vector<std::string> checkSorties(const Plan& plan);
+// Plans with a detection layer: what every path sees, recounted apart from the planner's code (an exact
+// integral of the sensor profile), matches the layer, and every target reaches the required probability.
+[[nodiscard]] std::vector<std::string> checkDetection(const PlanningProblem& problem, const Plan& plan);
 
 // Cells lie on the frame's bottom grid, never overlap and have a positive speed; neighbour lists are
 // symmetric, list no cell twice and name exactly the cells sharing a border of positive length.

@@ -1,0 +1,64 @@
+#pragma once
+
+#include "core/model/Plan.hpp"
+#include "core/model/PlanLayer.hpp"
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace mcpp {
+
+// What a plan's passes see, cell by cell of the sub-cell lattice (half a grid cell): the chance a target
+// there has been seen, and the chance the plan had to reach. NaN where no free sub-cell lies or no robot
+// covers it.
+struct DetectionGrid {
+    double originX = 0.0; // western edge
+    double originY = 0.0; // northern edge
+    double cellSize = 1.0;
+    int columns = 0;
+    int rows = 0;
+    std::vector<float> probability; // row-major from the north-west
+    std::vector<float> required;    // the required probability, 0 where the land cover hides targets
+};
+
+// Figures over the targets: the lattice cells a robot covers whose land cover can be seen at all.
+struct DetectionSummary {
+    double requiredProbability = 0.0;
+    double minimum = 0.0;
+    double mean = 0.0;
+    double shareMet = 0.0; // targets at or above the required probability
+    std::size_t targets = 0;
+    std::size_t unmetTargets = 0;
+    double undetectableAreaSquareMetres = 0.0; // covered cells whose land cover has p0 = 0
+    // Travel no plan seeing every target at the required probability beats, all robots together: each
+    // target needs passes whose probabilities add up to at least D (C' - C <= p), one pass position sees
+    // at most the strip's sum of the best class's probabilities, a node counts at most two passes (a turn)
+    // and each step between nodes takes at least a lattice cell at the top speed.
+    double travelSecondsNoPlanBeats = 0.0;
+};
+
+class DetectionLayer final : public PlanLayer {
+  public:
+    static constexpr const char* kindName = "detection";
+
+    DetectionLayer(DetectionGrid grid, DetectionSummary summary)
+        : grid_(std::move(grid)), summary_(summary) {}
+    [[nodiscard]] std::string kind() const override { return kindName; }
+    [[nodiscard]] const DetectionGrid& grid() const { return grid_; }
+    [[nodiscard]] const DetectionSummary& summary() const { return summary_; }
+
+  private:
+    DetectionGrid grid_;
+    DetectionSummary summary_;
+};
+
+// The plan's detection layer, or null when its planner does not model detection.
+[[nodiscard]] inline const DetectionLayer* detectionLayerOf(const Plan& plan) {
+    for (const std::shared_ptr<const PlanLayer>& layer : plan.layers)
+        if (const auto* detection = dynamic_cast<const DetectionLayer*>(layer.get()))
+            return detection;
+    return nullptr;
+}
+
+} // namespace mcpp
