@@ -294,6 +294,12 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     for (const io::ExportFormat& format : io::exportFormats()) {
         if (!format.inBatchOutputs)
             continue;
+        if (!io::formatApplies(format, plan)) {
+            // Left from a plan that had it, it would describe another plan.
+            std::error_code ignored;
+            std::filesystem::remove(directory / format.batchFileName, ignored);
+            continue;
+        }
         if (format.needsLongitudeLatitude && !raster_.georeference.hasCrs()) {
             withoutCrs += (withoutCrs.empty() ? "" : ", ") +
                           (format.perRobot ? "robot_<n>." + format.extension : format.batchFileName);

@@ -88,7 +88,7 @@ Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string
     // Column index of each known column; -1 when absent.
     std::vector<std::string> header;
     int valueColumn = -1, nameColumn = -1, speedColumn = -1, fovColumn = -1, passableColumn = -1,
-        colorColumn = -1;
+        colorColumn = -1, detectionColumn = -1;
     for (std::size_t i = 0; i < fields.size(); ++i) {
         const std::string column = internal::lowercase(trimmed(fields[i]));
         header.push_back(column);
@@ -105,9 +105,12 @@ Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string
             slot = &passableColumn;
         else if (column == "color" || column == "colour")
             slot = &colorColumn;
+        else if (column == "detection_probability")
+            slot = &detectionColumn;
         if (slot == nullptr) {
             return failure(1, "column " + std::to_string(i + 1) + ": unknown column \"" + trimmed(fields[i]) +
-                                  "\" (expected value,name,speed_mps,fov_m,passable and optionally color)");
+                                  "\" (expected value,name,speed_mps,fov_m,passable and optionally color, "
+                                  "detection_probability)");
         }
         if (*slot >= 0)
             return failure(1, "column " + std::to_string(i + 1) + ": \"" + column + "\" appears twice");
@@ -163,6 +166,13 @@ Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string
                 return bad(colorColumn, "is not a colour (#rrggbb)");
             entry.colorRgb = *color;
         }
+        if (detectionColumn >= 0 && !cell(detectionColumn).empty()) {
+            double probability = 0.0;
+            if (!parseDouble(cell(detectionColumn), probability) ||
+                !(probability >= 0.0 && probability <= 1.0))
+                return bad(detectionColumn, "is not a probability from 0 to 1");
+            entry.detectionProbability = probability;
+        }
         if (entry.passable && entry.speedMetresPerSecond > 0.0 && !(entry.fieldOfViewMetres > 0.0)) {
             return bad(fovColumn, "must be > 0 for a passable class");
         }
@@ -176,12 +186,21 @@ Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string
 }
 
 Status saveClassTableCsv(const ClassTable& table, const std::string& path) {
-    std::string text = "value,name,speed_mps,fov_m,passable,color\n";
+    // The detection column only where some class gives one, so tables without it read as before.
+    const bool detection =
+        std::any_of(table.classes().begin(), table.classes().end(),
+                    [](const LandCoverClass& entry) { return entry.detectionProbability; });
+    std::string text = std::string("value,name,speed_mps,fov_m,passable,color") +
+                       (detection ? ",detection_probability" : "") + "\n";
     for (const LandCoverClass& entry : table.classes()) {
         text += std::to_string(entry.value) + "," + internal::quoteCsvField(entry.name) + "," +
                 internal::formatShortest(entry.speedMetresPerSecond) + "," +
                 internal::formatShortest(entry.fieldOfViewMetres) + "," +
-                (entry.passable ? "true" : "false") + "," + internal::formatColor(entry.colorRgb) + "\n";
+                (entry.passable ? "true" : "false") + "," + internal::formatColor(entry.colorRgb);
+        if (detection)
+            text += "," +
+                    (entry.detectionProbability ? internal::formatShortest(*entry.detectionProbability) : "");
+        text += "\n";
     }
     return internal::writeFileAtomically(path, text);
 }

@@ -1,5 +1,7 @@
 #include "io/ExportCatalogue.hpp"
 
+#include "core/model/DetectionLayer.hpp"
+
 #include <algorithm>
 
 namespace mcpp::io {
@@ -48,6 +50,11 @@ ExportFormat splitByItemLimit(ExportFormat result) {
     return result;
 }
 
+ExportFormat onlyWithDetection(ExportFormat result) {
+    result.appliesTo = [](const Plan& plan) { return detectionLayerOf(plan) != nullptr; };
+    return result;
+}
+
 ExportFormat perRobot(ExportFormat result) {
     result.perRobot = true;
     return result;
@@ -63,6 +70,9 @@ std::vector<ExportFormat> makeCatalogue() {
         inBatch(format("regions-tif", "Regions raster (GeoTIFF)", "tif", "GeoTIFF (*.tif *.tiff)",
                        wholePlan(writeRegionRaster)),
                 "regions.tif", false),
+        inBatch(onlyWithDetection(format("detection-tif", "Detection raster (GeoTIFF)", "tif",
+                                         "GeoTIFF (*.tif *.tiff)", wholePlan(writeDetectionRaster))),
+                "detection.tif", true),
         inLongitudeLatitude(format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml))),
         inLongitudeLatitude(format("gpx", "GPX", "gpx", "GPX (*.gpx)", wholePlan(writePlanGpx))),
         inBatch(splitByItemLimit(inLongitudeLatitude(
@@ -91,6 +101,10 @@ std::vector<ExportFormat> makeCatalogue() {
 const std::vector<ExportFormat>& exportFormats() {
     static const std::vector<ExportFormat> catalogue = makeCatalogue();
     return catalogue;
+}
+
+bool formatApplies(const ExportFormat& format, const Plan& plan) {
+    return !format.appliesTo || format.appliesTo(plan);
 }
 
 const ExportFormat* findExportFormat(const std::string& key) {

@@ -26,12 +26,16 @@ struct ExportFormat {
     bool inBatchOutputs = false;
     std::string batchFileName;
     bool requiredInBatch = false;
+    // Whether the plan has what the format writes (a detection raster needs a detection layer); empty: any.
+    std::function<bool(const Plan& plan)> appliesTo;
     // robot is ignored by whole-plan formats.
     std::function<Status(const ExportContext& context, int robot, const std::string& path)> write;
 };
 
 // Every format, in menu order.
 [[nodiscard]] const std::vector<ExportFormat>& exportFormats();
+// Whether the format can write this plan.
+[[nodiscard]] bool formatApplies(const ExportFormat& format, const Plan& plan);
 // The format with this key, or nullptr.
 [[nodiscard]] const ExportFormat* findExportFormat(const std::string& key);
 // Batch mode's name for a robot's file of a per-robot format: robot_<n>.<extension>, n its number from 1

@@ -162,7 +162,9 @@ bool readClass(MissionReader& reader, const QJsonValue& value, const std::string
     QJsonObject object;
     if (!reader.object(value, path, object))
         return false;
-    if (!reader.onlyKeys(object, path, {"value", "name", "color", "speed_mps", "fov_m", "passable"}))
+    if (!reader.onlyKeys(
+            object, path,
+            {"value", "name", "color", "speed_mps", "fov_m", "passable", "detection_probability"}))
         return false;
     int classValue = 0;
     std::string color = "#808080";
@@ -181,6 +183,16 @@ bool readClass(MissionReader& reader, const QJsonValue& value, const std::string
     entry.colorRgb = *rgb;
     if (entry.speedMetresPerSecond < 0.0)
         return reader.fail(MissionReader::join(path, "speed_mps"), "must be >= 0");
+    if (object.contains("detection_probability")) {
+        double probability = 0.0;
+        if (!reader.required(object, path, "detection_probability", probability, &MissionReader::number))
+            return false;
+        if (!(probability >= 0.0 && probability <= 1.0))
+            return reader.fail(MissionReader::join(path, "detection_probability"),
+                               "must be a probability from 0 to 1, got " +
+                                   internal::formatShortest(probability));
+        entry.detectionProbability = probability;
+    }
     return true;
 }
 
@@ -582,6 +594,8 @@ std::string missionToJson(const Mission& mission) {
         row.add("speed_mps", entry.speedMetresPerSecond);
         row.add("fov_m", entry.fieldOfViewMetres);
         row.add("passable", entry.passable);
+        if (entry.detectionProbability)
+            row.add("detection_probability", *entry.detectionProbability);
     }
 
     JsonValue& robots = root.add("robots", JsonValue::array());

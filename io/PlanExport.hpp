@@ -86,6 +86,10 @@ struct ExportContext {
 // raster's CRS with a colour table in the robots' colours. Value = robot number from 1; 255 for passable land
 // no robot reaches; nodata 0 elsewhere (UInt16 with 65535 from 255 robots on).
 [[nodiscard]] Status writeRegionRaster(const ExportContext& context, const std::string& path);
+// detection.tif, for plans with a detection layer (CPPIED): on the lattice of half grid cells in the
+// raster's CRS, band 1 the chance a target is seen, band 2 the chance required (0 where the land cover
+// hides targets); Float32, nodata -1 where no robot goes.
+[[nodiscard]] Status writeDetectionRaster(const ExportContext& context, const std::string& path);
 
 // The waypoints a robot's waypoint files get: all of them, or, with mergeCollinear, without the points that
 // lie on the straight segment between their neighbours at the same speed and class (time and shape

@@ -1,4 +1,5 @@
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -31,6 +32,18 @@ void addSorties(JsonValue& item, const Plan& plan, const RobotSorties& robot) {
         times.push(sortieSeconds(path, sortie));
     item.add("longest_sortie_s", longestSortieSeconds(path, robot.sorties));
     item.add("out_of_range_area_m2", robot.outOfRangeAreaSquareMetres);
+}
+
+// What the passes see over the targets (lattice cells a robot covers whose land cover can be seen).
+void addDetection(JsonValue& root, const DetectionSummary& summary) {
+    JsonValue& detection = root.add("detection", JsonValue::object());
+    detection.add("required_probability", summary.requiredProbability);
+    detection.add("minimum", summary.minimum);
+    detection.add("mean", summary.mean);
+    detection.add("share_met", summary.shareMet);
+    detection.add("targets", static_cast<double>(summary.targets));
+    detection.add("unmet_targets", static_cast<double>(summary.unmetTargets));
+    detection.add("undetectable_area_m2", summary.undetectableAreaSquareMetres);
 }
 
 std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
@@ -87,6 +100,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     root.add("covered_area_m2", metrics.coveredAreaSquareMetres);
     root.add("unreachable_area_m2", metrics.unreachableAreaSquareMetres);
     root.add("repeated_fraction", metrics.repeatedFraction);
+    if (const DetectionLayer* detection = detectionLayerOf(context.plan))
+        addDetection(root, detection->summary());
     JsonValue& timings = root.add("timings_ms", JsonValue::object());
     for (const auto& [stage, milliseconds] : metrics.stageMilliseconds)
         timings.add(stage, milliseconds);

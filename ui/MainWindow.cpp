@@ -741,9 +741,13 @@ void MainWindow::updateActions() {
     for (QAction* action : exportActions_) {
         const io::ExportFormat* format = io::findExportFormat(action->data().toString().toStdString());
         const bool placeable = hasCrs || format == nullptr || !format->needsLongitudeLatitude;
-        action->setEnabled(document_->plan() != nullptr && !planning && !exporting && placeable);
-        action->setToolTip(placeable ? QString()
-                                     : tr("The map has no CRS: this format needs longitude and latitude"));
+        const Plan* plan = document_->plan();
+        const bool applies = plan == nullptr || format == nullptr || io::formatApplies(*format, *plan);
+        action->setEnabled(plan != nullptr && !planning && !exporting && placeable && applies);
+        action->setToolTip(!placeable ? tr("The map has no CRS: this format needs longitude and latitude")
+                           : !applies
+                               ? tr("Only plans that model what the sensor sees (CPPIED) have this layer")
+                               : QString());
     }
     compareAction_->setEnabled(hasMap && !planning && !exporting && !document_->robots().empty());
     comparisonPanel_->setRunning(planning || exporting);

@@ -19,6 +19,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
+#include <gdal_priv.h>
+#include <memory>
 
 namespace {
 
@@ -73,6 +75,7 @@ class TestBatchEndToEnd : public QObject {
     void readmeSampleRuns();
     void missionsAboveTheItemLimitAreSplit();
     void batteryPlansWriteEachSortie();
+    void detectionPlansWriteTheDetectionRaster();
     void rasterAloneGetsTheRecognisedProductsTable();
     void outputsAreTheSameWhateverTheThreadCount();
     void comparePlannersOnOneMission();
@@ -323,6 +326,11 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
              qPrintable(run.standardOutput));
     const QDir out(directory);
     QStringList expected{"plan.geojson", "report.json", "plan.png", "regions.tif", "plan.gpkg"};
+    // Only a planner that models detection writes the detection raster.
+    const bool detection = mcpp::makePlanner(planner.toStdString())->name() == "cppied";
+    if (detection)
+        expected << "detection.tif";
+    QCOMPARE(QFileInfo::exists(out.filePath("detection.tif")), detection);
     const auto reportRobots = readJsonObject(out.filePath("report.json")).value("robots").toArray();
     QCOMPARE(reportRobots.size(), robots);
     for (int robot = 0; robot < robots; ++robot) {
@@ -671,6 +679,54 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
     checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
     const QStringList stale = QDir(out).entryList({QStringLiteral("*_sortie_*")});
     QVERIFY2(stale.isEmpty(), qPrintable(stale.join(", ")));
+}
+
+// CPPIED: detection.tif lies on the plan's lattice in the raster's CRS; every cell a robot covers is seen
+// at least as likely as band 2 asks, and report.json's figures are those of the file. A rerun with another
+// planner leaves no detection.tif behind.
+void TestBatchEndToEnd::detectionPlansWriteTheDetectionRaster() {
+    const QString out = scratch_.filePath("detection");
+    auto run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--planner", "cppied", "--param",
+                        "required_probability=0.9", "--out", out});
+    checkOutputs(out, 5, run, QStringLiteral("cppied"));
+    if (QTest::currentTestFailed())
+        return;
+    const std::string path = (out + "/detection.tif").toStdString();
+    GDALAllRegister();
+    const std::unique_ptr<GDALDataset> dataset(GDALDataset::FromHandle(
+        GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    QVERIFY2(dataset != nullptr, path.c_str());
+    QCOMPARE(dataset->GetRasterCount(), 2);
+    QVERIFY(QString(dataset->GetProjectionRef()).contains("UTM zone 12N"));
+    const int columns = dataset->GetRasterXSize();
+    const int rows = dataset->GetRasterYSize();
+    std::vector<float> seen(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
+    std::vector<float> required(seen.size());
+    QCOMPARE(dataset->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, columns, rows, seen.data(), columns, rows,
+                                                 GDT_Float32, 0, 0, nullptr),
+             CE_None);
+    QCOMPARE(dataset->GetRasterBand(2)->RasterIO(GF_Read, 0, 0, columns, rows, required.data(), columns, rows,
+                                                 GDT_Float32, 0, 0, nullptr),
+             CE_None);
+    std::size_t targets = 0;
+    double minimum = 1.0;
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+        if (required[i] <= 0.0F)
+            continue;
+        ++targets;
+        QCOMPARE(required[i], 0.9F);
+        QVERIFY2(seen[i] >= 0.9F - 1e-6F, qPrintable(QString("cell %1: %2").arg(i).arg(seen[i])));
+        minimum = std::min(minimum, double(seen[i]));
+    }
+    const QJsonObject detection = readJsonObject(out + "/report.json").value("detection").toObject();
+    QCOMPARE(detection.value("targets").toDouble(), double(targets));
+    QVERIFY(targets > 10000);
+    QVERIFY(std::abs(detection.value("minimum").toDouble() - minimum) < 1e-6);
+    QCOMPARE(detection.value("share_met").toDouble(), 1.0);
+    QCOMPARE(detection.value("required_probability").toDouble(), 0.9);
+    run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--out", out});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    QVERIFY(!QFileInfo::exists(out + "/detection.tif"));
 }
 
 void TestBatchEndToEnd::everyPlannerRunsFromTheCommandLine_data() {

@@ -2,6 +2,7 @@
 // comparison files) is made to fail half way through by a file-size limit (RLIMIT_FSIZE, as a full disk
 // would), and the file it was replacing is found intact, with no partial or temporary file beside it.
 #include "PlanFixture.hpp"
+#include "core/model/DetectionLayer.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ComparisonExport.hpp"
 #include "io/ExportCatalogue.hpp"
@@ -53,6 +54,7 @@ class TestAtomicOutputs : public QObject {
 
   private:
     Plan plan_ = test::makeFixturePlan();
+    Plan planWithDetection_;
     GeoReference reference_ = GeoReference::fromDefinition("EPSG:26912").value();
     ClassTable classes_;
     ClassGrid grid_;
@@ -70,13 +72,27 @@ class TestAtomicOutputs : public QObject {
         grid_.originX = plan_.cells.frame().originX;
         grid_.originY = plan_.cells.frame().originY;
         grid_.values = {4, 4, 6, 6, 4, 4, 6, 6};
+        planWithDetection_ = plan_;
+        DetectionGrid detection;
+        detection.originX = grid_.originX;
+        detection.originY = grid_.originY;
+        detection.cellSize = 5.0;
+        detection.columns = 8;
+        detection.rows = 4;
+        for (int cell = 0; cell < detection.columns * detection.rows; ++cell) {
+            detection.probability.push_back(0.9F + 0.003F * static_cast<float>(cell));
+            detection.required.push_back(0.9F);
+        }
+        planWithDetection_.layers.push_back(std::make_shared<DetectionLayer>(detection, DetectionSummary{}));
     }
 
     void failedWriteKeepsThePreviousFile_data() {
         QTest::addColumn<Writer>("writer");
         for (const ExportFormat& format : exportFormats()) {
             addCase("export " + format.key, [this, &format](const std::string& path) {
-                ExportContext context{plan_, reference_, classes_, {}};
+                // A format for what only some plans have gets a plan that has it.
+                const Plan& plan = formatApplies(format, plan_) ? plan_ : planWithDetection_;
+                ExportContext context{plan, reference_, classes_, {}};
                 context.grid = &grid_;
                 context.drawImage = render::planImageWriter(512);
                 return format.write(context, 0, path);

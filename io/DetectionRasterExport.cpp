@@ -1,0 +1,86 @@
+#include "core/model/DetectionLayer.hpp"
+#include "io/PlanExport.hpp"
+#include "io/internal/DatasetFile.hpp"
+#include "io/internal/GdalSupport.hpp"
+
+#include <cmath>
+#include <gdal_priv.h>
+
+namespace mcpp::io {
+
+namespace {
+
+using internal::QuietGdalErrors;
+
+// No probability is negative, and QGIS shows a number as nodata more readily than NaN.
+constexpr float noDetectionData = -1.0F;
+
+Status describe(GDALDataset& dataset, const ExportContext& context, const DetectionGrid& grid,
+                const std::string& path) {
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    double transform[6] = {
+        grid.originX / metresPerUnit,  grid.cellSize / metresPerUnit, 0.0, grid.originY / metresPerUnit, 0.0,
+        -grid.cellSize / metresPerUnit};
+    if (dataset.SetGeoTransform(transform) != CE_None)
+        return Status::failure(path + ": cannot set the grid's position" + QuietGdalErrors::detail());
+    if (context.georeference.hasCrs() && dataset.SetProjection(context.georeference.wkt().c_str()) != CE_None)
+        return Status::failure(path + ": cannot set the CRS" + QuietGdalErrors::detail());
+    dataset.SetMetadataItem("MCPP_VALUES", "band 1: chance a target in the cell is seen by the plan; band 2: "
+                                           "chance it had to be seen (0 where the land cover hides targets); "
+                                           "-1 where no robot goes");
+    dataset.SetMetadataItem("MCPP_PLANNER", context.plan.planner.c_str());
+    return {};
+}
+
+Status writeBand(GDALRasterBand& band, const std::vector<float>& values, const DetectionGrid& grid,
+                 const char* description, const ExportContext& context, const std::string& path) {
+    band.SetDescription(description);
+    band.SetNoDataValue(noDetectionData);
+    std::vector<float> row(static_cast<std::size_t>(grid.columns));
+    for (int r = 0; r < grid.rows; ++r) {
+        if (context.cancelled())
+            return Status::failure(path + ": cancelled");
+        for (int c = 0; c < grid.columns; ++c) {
+            const float value = values[static_cast<std::size_t>(r) * static_cast<std::size_t>(grid.columns) +
+                                       static_cast<std::size_t>(c)];
+            row[static_cast<std::size_t>(c)] = std::isnan(value) ? noDetectionData : value;
+        }
+        if (band.RasterIO(GF_Write, 0, r, grid.columns, 1, row.data(), grid.columns, 1, GDT_Float32, 0, 0,
+                          nullptr) != CE_None)
+            return Status::failure(path + ": cannot write row " + std::to_string(r) +
+                                   QuietGdalErrors::detail());
+    }
+    return {};
+}
+
+} // namespace
+
+Status writeDetectionRaster(const ExportContext& context, const std::string& path) {
+    QuietGdalErrors quiet;
+    const DetectionLayer* layer = detectionLayerOf(context.plan);
+    if (layer == nullptr)
+        return Status::failure(path + ": the plan has no detection layer (only " +
+                               std::string("CPPIED plans model what the sensor sees)"));
+    const DetectionGrid& grid = layer->grid();
+    if (grid.columns == 0 || grid.rows == 0)
+        return Status::failure(path + ": the plan has no cells");
+    internal::DatasetFile file(path);
+    const char* const options[] = {"TILED=YES",   "BLOCKXSIZE=256", "BLOCKYSIZE=256",   "COMPRESS=DEFLATE",
+                                   "PREDICTOR=3", "ZLEVEL=6",       "BIGTIFF=IF_SAFER", nullptr};
+    if (Status status = file.create("GTiff", grid.columns, grid.rows, 2, GDT_Float32, options); !status)
+        return status;
+    GDALDataset& dataset = file.dataset();
+    if (Status status = describe(dataset, context, grid, path); !status)
+        return status;
+    if (Status status = writeBand(*dataset.GetRasterBand(1), grid.probability, grid, "detection probability",
+                                  context, path);
+        !status)
+        return status;
+    if (Status status =
+            writeBand(*dataset.GetRasterBand(2), grid.required, grid, "required probability", context, path);
+        !status)
+        return status;
+    return file.commit(Sync::BySystem);
+}
+
+} // namespace mcpp::io
