@@ -11,6 +11,7 @@ struct MapLayers {
     bool starts = true;
     bool unreachable = true;
     bool crossings = true; // cells whose path crosses small impassable patches
+    bool detection = true; // what a detection plan's passes see, in place of the region tint
 
     friend bool operator==(const MapLayers&, const MapLayers&) = default;
 };

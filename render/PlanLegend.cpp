@@ -1,8 +1,10 @@
 #include "render/PlanLegend.hpp"
 
 #include "core/coverage/ImpassableCrossings.hpp"
+#include "core/model/DetectionLayer.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "render/DetectionPalette.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QFontMetricsF>
@@ -130,8 +132,27 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
         sections.push_back(std::move(robots));
         LegendSection overlays{QStringLiteral("On the map"), {}};
         const QColor first = RobotPalette::colour(0);
-        overlays.items.push_back(
-            {LegendSymbol::RegionTint, first, QStringLiteral("Region a robot covers"), {}});
+        if (const DetectionLayer* detection = detectionLayerOf(*plan)) {
+            const QString required = QString::number(detection->summary().requiredProbability, 'g', 3);
+            overlays.items.push_back({LegendSymbol::Swatch,
+                                      DetectionPalette::met(),
+                                      QStringLiteral("Targets seen with %1 or more").arg(required),
+                                      {}});
+            overlays.items.push_back({LegendSymbol::Swatch,
+                                      DetectionPalette::halfway(),
+                                      QStringLiteral("Seen half as likely as required"),
+                                      {}});
+            overlays.items.push_back(
+                {LegendSymbol::Swatch, DetectionPalette::unseen(), QStringLiteral("Not seen"), {}});
+            if (detection->summary().undetectableAreaSquareMetres > 0.0)
+                overlays.items.push_back({LegendSymbol::Swatch,
+                                          DetectionPalette::hidden(),
+                                          QStringLiteral("Land cover that hides targets"),
+                                          {}});
+        } else {
+            overlays.items.push_back(
+                {LegendSymbol::RegionTint, first, QStringLiteral("Region a robot covers"), {}});
+        }
         overlays.items.push_back({LegendSymbol::PathLine, first, QStringLiteral("Its path"), {}});
         if (onBatteries)
             overlays.items.push_back({LegendSymbol::PathLine,

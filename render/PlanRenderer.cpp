@@ -2,10 +2,12 @@
 
 #include "core/coverage/ImpassableCrossings.hpp"
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "core/outlines/RegionOutlines.hpp"
 #include "io/PlanExport.hpp"
+#include "render/DetectionPalette.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QFont>
@@ -181,6 +183,7 @@ void PlanRenderer::setMap(const ClassGrid* grid, const ClassTable* classes) {
 void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     plan_ = plan;
     prepareRegions(outlines);
+    prepareDetection();
     preparePaths();
     crossingCells_.clear();
     if (plan_ == nullptr || grid_ == nullptr || classes_ == nullptr)
@@ -245,6 +248,40 @@ void PlanRenderer::prepareRegions(const RegionOutlines* given) {
         for (const OutlineRing& hole : outline.holes)
             add(hole);
     }
+}
+
+void PlanRenderer::prepareDetection() {
+    detectionPyramid_.clear();
+    const DetectionLayer* layer = plan_ == nullptr ? nullptr : detectionLayerOf(*plan_);
+    if (layer == nullptr || layer->grid().columns == 0 || layer->grid().rows == 0)
+        return;
+    const DetectionGrid& grid = layer->grid();
+    // One image pixel per lattice cell, or per block of them on the largest maps (the worst of the block).
+    constexpr std::int64_t largestImage = 16'000'000;
+    int step = 1;
+    while (static_cast<std::int64_t>(grid.columns / step) * (grid.rows / step) > largestImage)
+        ++step;
+    const int width = (grid.columns + step - 1) / step;
+    const int height = (grid.rows + step - 1) / step;
+    QImage image(width, height, QImage::Format_ARGB32);
+    image.fill(qRgba(0, 0, 0, 0));
+    for (int row = 0; row < grid.rows; ++row) {
+        auto* line = reinterpret_cast<QRgb*>(image.scanLine(row / step));
+        for (int column = 0; column < grid.columns; ++column) {
+            const std::size_t index =
+                static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.columns) + column;
+            if (std::isnan(grid.required[index]))
+                continue;
+            const QRgb colour = DetectionPalette::colour(grid.probability[index], grid.required[index]);
+            QRgb& pixel = line[column / step];
+            // Of a block, the least seen cell shows: a gap must not vanish when zoomed out.
+            if (qAlpha(pixel) == 0 || qGreen(colour) < qGreen(pixel))
+                pixel = colour;
+        }
+    }
+    const double size = grid.cellSize * step;
+    detectionPyramid_ =
+        pyramidOf(image, QRectF(grid.originX, grid.originY - height * size, width * size, height * size));
 }
 
 void PlanRenderer::addPathLine(const CoveragePath& path, bool alternate) {
@@ -327,7 +364,11 @@ void PlanRenderer::paintMap(QPainter& painter, const QTransform& worldToDevice,
     if (plan_ != nullptr) {
         if (planStale_)
             painter.setOpacity(0.45);
-        if (layers_.regions)
+        // A detection plan shows what its passes see where other plans tint their regions.
+        const bool detection = layers_.detection && !detectionPyramid_.empty();
+        if (detection)
+            drawPyramid(painter, detectionPyramid_, worldToDevice, deviceArea);
+        if (layers_.regions && !detection)
             paintRegions(painter, worldToDevice, deviceArea);
         if (layers_.unreachable)
             paintUnreachable(painter, worldToDevice, deviceArea);

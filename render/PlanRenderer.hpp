@@ -73,6 +73,7 @@ class PlanRenderer {
         QRectF world; // x = west..east, y = south..north
     };
     void prepareRegions(const RegionOutlines* given);
+    void prepareDetection();
     void preparePaths();
     void addPathLine(const CoveragePath& path, bool alternate);
     void drawGridImage(QPainter& painter, const GridImage& grid, const QTransform& worldToDevice,
@@ -92,6 +93,7 @@ class PlanRenderer {
 
     std::vector<GridImage> landCoverPyramid_; // halved again and again, for zoomed-out views
     std::vector<GridImage> regionPyramid_;
+    std::vector<GridImage> detectionPyramid_; // empty when the plan has no detection layer
     std::vector<Outline> regionBorders_;
     std::vector<Outline> unreachableOutlines_;
     std::vector<QRectF> crossingCells_; // world rectangles of cells whose path crosses impassable land

@@ -24,6 +24,9 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     crossings_ = addToggle(QStringLiteral("layerCrossings"), tr("Obstacles crossed"),
                            tr("Dashed: cells with some impassable land that the path crosses, as the "
                               "blocked threshold allows; hover over one for the figures"));
+    detection_ = addToggle(QStringLiteral("layerDetection"), tr("Detection"),
+                           tr("For CPPIED plans: how likely the passes see a target in each cell, from red "
+                              "(not seen) to green (the required probability), in place of the region tint"));
     layout->addStretch(1);
 }
 
@@ -46,6 +49,7 @@ render::MapLayers LayersPanel::layers() const {
     layers.starts = starts_->isChecked();
     layers.unreachable = unreachable_->isChecked();
     layers.crossings = crossings_->isChecked();
+    layers.detection = detection_->isChecked();
     return layers;
 }
 
@@ -53,7 +57,7 @@ void LayersPanel::setLayers(const render::MapLayers& layers) {
     const QSignalBlocker blockers[] = {QSignalBlocker(landCover_), QSignalBlocker(quadTree_),
                                        QSignalBlocker(regions_),   QSignalBlocker(paths_),
                                        QSignalBlocker(starts_),    QSignalBlocker(unreachable_),
-                                       QSignalBlocker(crossings_)};
+                                       QSignalBlocker(crossings_), QSignalBlocker(detection_)};
     landCover_->setChecked(layers.landCover);
     quadTree_->setChecked(layers.quadTree);
     regions_->setChecked(layers.regions);
@@ -61,6 +65,7 @@ void LayersPanel::setLayers(const render::MapLayers& layers) {
     starts_->setChecked(layers.starts);
     unreachable_->setChecked(layers.unreachable);
     crossings_->setChecked(layers.crossings);
+    detection_->setChecked(layers.detection);
     emit layersChanged(this->layers());
 }
 

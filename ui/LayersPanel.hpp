@@ -30,6 +30,7 @@ class LayersPanel : public QWidget {
     QCheckBox* starts_;
     QCheckBox* unreachable_;
     QCheckBox* crossings_;
+    QCheckBox* detection_;
 };
 
 } // namespace mcpp::ui

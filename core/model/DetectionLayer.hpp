@@ -3,6 +3,7 @@
 #include "core/model/Plan.hpp"
 #include "core/model/PlanLayer.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -31,11 +32,19 @@ struct DetectionSummary {
     std::size_t targets = 0;
     std::size_t unmetTargets = 0;
     double undetectableAreaSquareMetres = 0.0; // covered cells whose land cover has p0 = 0
-    // Travel no plan seeing every target at the required probability beats, all robots together: each
-    // target needs passes whose probabilities add up to at least D (C' - C <= p), one pass position sees
-    // at most the strip's sum of the best class's probabilities, a node counts at most two passes (a turn)
-    // and each step between nodes takes at least a lattice cell at the top speed.
-    double travelSecondsNoPlanBeats = 0.0;
+    // Passes no plan seeing every target at the required probability makes fewer of: each target needs
+    // passes whose probabilities add up to at least D (C' - C <= p), and one pass sees at most the strip's
+    // sum of the best class's probabilities.
+    double passesNoPlanBeats = 0.0;
+    double secondsPerStep = 0.0; // the quickest step between lattice centres: a cell at the top speed
+
+    // Travel no plan beats, all robots together: a centre passed straight counts one pass, a turning one
+    // (at least one quarter turn) at most two, and each robot's path has one step fewer than centres.
+    [[nodiscard]] double travelSecondsNoPlanBeats(int turns, std::size_t robots) const {
+        const double centres = std::max(passesNoPlanBeats / 2.0, passesNoPlanBeats - turns);
+        const double steps = centres - static_cast<double>(robots);
+        return steps > 0.0 ? steps * secondsPerStep : 0.0;
+    }
 };
 
 class DetectionLayer final : public PlanLayer {

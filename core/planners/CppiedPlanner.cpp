@@ -106,9 +106,8 @@ std::string undetectableClasses(const Plan& plan, const ClassTable& classes, con
     return joined;
 }
 
-// See DetectionSummary::travelSecondsNoPlanBeats.
-double travelNoPlanBeats(const DetectionSummary& summary, const DetectionModel& model, const Plan& plan,
-                         double cellSize) {
+// See DetectionSummary::passesNoPlanBeats.
+void boundPasses(DetectionSummary& summary, const DetectionModel& model, const Plan& plan, double cellSize) {
     double stripSum = 0.0;
     for (int offset = -model.reach(); offset <= model.reach(); ++offset) {
         double best = 0.0;
@@ -120,10 +119,9 @@ double travelNoPlanBeats(const DetectionSummary& summary, const DetectionModel& 
     for (const Cell& cell : plan.cells.cells())
         fastest = std::max(fastest, cell.speedMetresPerSecond);
     if (stripSum <= 0.0 || fastest <= 0.0)
-        return 0.0;
-    const double passes = static_cast<double>(summary.targets) * summary.requiredProbability / stripSum;
-    const double steps = passes / 2.0 - static_cast<double>(plan.paths.size());
-    return std::max(0.0, steps) * cellSize / fastest;
+        return;
+    summary.passesNoPlanBeats = static_cast<double>(summary.targets) * summary.requiredProbability / stripSum;
+    summary.secondsPerStep = cellSize / fastest;
 }
 
 void warnOfMisses(PlanningRun& run, const DetectionSummary& summary, const DetectionModel& model) {
@@ -192,7 +190,7 @@ void CppiedPlanner::run(PlanningRun& run) const {
     DetectionGrid grid =
         run.stage("detection", [&] { return detectionGrid(plan, lattice, model, required); });
     DetectionSummary summary = summarise(grid, required);
-    summary.travelSecondsNoPlanBeats = travelNoPlanBeats(summary, model, plan, lattice.cellSize());
+    boundPasses(summary, model, plan, lattice.cellSize());
     warnOfMisses(run, summary, model);
     plan.layers.push_back(std::make_shared<DetectionLayer>(std::move(grid), summary));
 }

@@ -130,7 +130,8 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         metrics.makespanSeconds = std::max(metrics.makespanSeconds, robotMetrics.timeSeconds);
     }
     if (const DetectionLayer* detection = detectionLayerOf(plan))
-        secondsNoPlanBeats += detection->summary().travelSecondsNoPlanBeats - cellTravelSeconds;
+        secondsNoPlanBeats +=
+            detection->summary().travelSecondsNoPlanBeats(metrics.totalTurns(), robots) - cellTravelSeconds;
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : secondsNoPlanBeats / static_cast<double>(robots);
     boundByConnectedParts(plan);
     boundByCharges(plan);

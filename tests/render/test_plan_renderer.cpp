@@ -1,4 +1,5 @@
 #include "core/coverage/ImpassableCrossings.hpp"
+#include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "render/PlanImage.hpp"
@@ -147,6 +148,44 @@ class TestPlanRenderer : public QObject {
         QVERIFY(std::any_of(sections.back().items.begin(), sections.back().items.end(),
                             [](const render::LegendItem& item) { return item.label.contains("sortie"); }));
         QVERIFY(sections[1].title.contains("charger"));
+    }
+
+    // A detection layer over the meadow half: its western half seen as required (green), its eastern
+    // half not seen (red); switched off, the meadow shows plain. The legend explains the colours.
+    void drawsWhatTheSensorSees() {
+        Plan plan = eastboundPlan();
+        DetectionGrid grid;
+        grid.originX = 1000.0;
+        grid.originY = 5000.0;
+        grid.cellSize = 10.0;
+        grid.columns = 10;
+        grid.rows = 10;
+        for (int row = 0; row < grid.rows; ++row)
+            for (int column = 0; column < grid.columns; ++column) {
+                grid.probability.push_back(column < 5 ? 0.97F : 0.0F);
+                grid.required.push_back(0.95F);
+            }
+        DetectionSummary summary;
+        summary.requiredProbability = 0.95;
+        plan.layers.push_back(std::make_shared<DetectionLayer>(grid, summary));
+        render::MapLayers layers;
+        layers.paths = false;
+        layers.starts = false;
+        const QImage image =
+            render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
+        const QColor seen = image.pixelColor(40, 40);
+        const QColor unseen = image.pixelColor(160, 40);
+        QVERIFY2(seen.green() > seen.red() + 20, qPrintable(seen.name()));
+        QVERIFY2(unseen.red() > unseen.green() + 40, qPrintable(unseen.name()));
+        layers.detection = false;
+        layers.regions = false;
+        const QImage plain =
+            render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
+        QVERIFY(near(plain.pixelColor(160, 40), QColor::fromRgb(kMeadow)));
+        const auto sections = render::planLegend(twoClassTable(), &plan, {});
+        QVERIFY(
+            std::any_of(sections.back().items.begin(), sections.back().items.end(),
+                        [](const render::LegendItem& item) { return item.label.contains("0.95 or more"); }));
     }
 
     void hidesPathsWhenTheLayerIsOff() {

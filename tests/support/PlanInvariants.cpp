@@ -473,9 +473,12 @@ std::vector<std::string> checkTimes(const Plan& plan) {
     if (const DetectionLayer* detection = detectionLayerOf(plan);
         detection != nullptr && !plan.paths.empty()) {
         double turning = 0.0;
-        for (const CoveragePath& path : plan.paths)
+        int turns = 0;
+        for (const CoveragePath& path : plan.paths) {
             turning += path.turnSeconds;
-        lowerBound = (detection->summary().travelSecondsNoPlanBeats + turning) /
+            turns += path.turns;
+        }
+        lowerBound = (detection->summary().travelSecondsNoPlanBeats(turns, plan.paths.size()) + turning) /
                      static_cast<double>(plan.paths.size());
         if (makespan < lowerBound * (1.0 - 1e-9))
             violations.push_back(text("makespan beats the detection lower bound", makespan, lowerBound));
