@@ -103,6 +103,14 @@ QVariant ClassTableModel::data(const QModelIndex& index, int role) const {
         if (role == Qt::CheckStateRole)
             return landCoverClass.passable ? Qt::Checked : Qt::Unchecked;
         break;
+    case Detection:
+        if (display)
+            return landCoverClass.detectionProbability ? number(*landCoverClass.detectionProbability)
+                                                       : tr("default");
+        if (edit)
+            return landCoverClass.detectionProbability ? number(*landCoverClass.detectionProbability)
+                                                       : QString();
+        break;
     case RoundedFieldOfView:
         if (display)
             return hasRounded ? number(rounded->second.roundedMetres) : QStringLiteral("–");
@@ -139,6 +147,9 @@ QVariant ClassTableModel::data(const QModelIndex& index, int role) const {
             return tr("Quadtree level whose sub-cells have this class's rounded FOV (1 = largest cells).");
         if (index.column() == Share)
             return tr("Share of the raster's task-area pixels in this class.");
+        if (index.column() == Detection)
+            return tr("For CPPIED: the chance one pass sees a target right beside it in this land cover (0 "
+                      "to 1); empty: the planner's sensor detection.");
         if (!landCoverClass.isTraversable())
             return tr("Obstacle: robots do not enter this class.");
     }
@@ -161,6 +172,8 @@ QVariant ClassTableModel::headerData(int section, Qt::Orientation orientation, i
         return tr("FOV (m)");
     case Passable:
         return tr("Passable");
+    case Detection:
+        return tr("Detection");
     case RoundedFieldOfView:
         return tr("Rounded FOV (m)");
     case Level:
@@ -176,7 +189,8 @@ Qt::ItemFlags ClassTableModel::flags(const QModelIndex& index) const {
     if (!index.isValid())
         return Qt::NoItemFlags;
     Qt::ItemFlags result = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
-    if (index.column() == Name || index.column() == Speed || index.column() == FieldOfView)
+    if (index.column() == Name || index.column() == Speed || index.column() == FieldOfView ||
+        index.column() == Detection)
         result |= Qt::ItemIsEditable;
     if (index.column() == Passable)
         result |= Qt::ItemIsUserCheckable;
@@ -247,6 +261,24 @@ bool ClassTableModel::editRows(const QList<int>& rows, const ClassBulkEdit& edit
     return true;
 }
 
+bool ClassTableModel::setDetection(LandCoverClass& edited, const QString& text, const QString& className,
+                                   QString& description) {
+    if (text.isEmpty()) {
+        edited.detectionProbability.reset();
+        description = tr("Use the planner's detection for %1").arg(className);
+        return true;
+    }
+    bool isNumber = false;
+    const double probability = text.toDouble(&isNumber);
+    if (!isNumber || !(probability >= 0.0 && probability <= 1.0))
+        return refuse(tr("Detection of %1 must be a probability from 0 to 1; \"%2\" is not. Leave it empty "
+                         "for the planner's.")
+                          .arg(className, text));
+    edited.detectionProbability = probability;
+    description = tr("Set detection of %1 to %2").arg(className).arg(probability);
+    return true;
+}
+
 bool ClassTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
     if (!index.isValid() || index.row() >= rowCount())
         return false;
@@ -267,6 +299,9 @@ bool ClassTableModel::setData(const QModelIndex& index, const QVariant& value, i
             return refuse(tr("A class name cannot be empty."));
         edited.name = name.toStdString();
         description = tr("Rename class %1").arg(edited.value);
+    } else if (index.column() == Detection) {
+        if (!setDetection(edited, value.toString().trimmed(), className, description))
+            return false;
     } else if (index.column() == Speed || index.column() == FieldOfView) {
         bool isNumber = false;
         const double number = value.toString().trimmed().toDouble(&isNumber);

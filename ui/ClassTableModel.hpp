@@ -34,6 +34,7 @@ class ClassTableModel : public QAbstractTableModel {
         Speed,
         FieldOfView,
         Passable,
+        Detection,
         RoundedFieldOfView,
         Level,
         Share,
@@ -64,6 +65,9 @@ class ClassTableModel : public QAbstractTableModel {
     // Empty when the value is fine, else why not, naming the class.
     [[nodiscard]] static QString speedProblem(double speed, const QString& className);
     [[nodiscard]] static QString fieldOfViewProblem(double fieldOfView, const QString& className);
+    // Sets or clears (empty text) a class's own detection probability; false when refused.
+    bool setDetection(LandCoverClass& edited, const QString& text, const QString& className,
+                      QString& description);
     void reload();
     bool refuse(const QString& reason);
 

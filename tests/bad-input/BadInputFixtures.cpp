@@ -208,6 +208,8 @@ QString writeClassTables(const QDir& dir) {
         {"nan-speed.csv", classTable("1,Grass,nan,20,true")},
         {"absurd-speed.csv", classTable("1,Grass,1e9,20,true")},
         {"zero-fov.csv", classTable("1,Grass,2,0,true")},
+        {"detection-above-one.csv",
+         "value,name,speed_mps,fov_m,passable,detection_probability\n1,Grass,2,20,true,1.2\n"},
         {"negative-fov.csv", classTable("1,Grass,2,-5,true")},
         {"nan-fov.csv", classTable("1,Grass,2,nan,true")},
         {"absurd-fov.csv", classTable("1,Grass,2,1e12,true")},

@@ -244,10 +244,16 @@ class ClassTablesTest : public QObject {
         const std::string path = folder.filePath("classes.csv").toStdString();
         ClassTable table = preset("nlcd"); // names with commas
         table.set(LandCoverClass{7, "Quote \"here\"", 0x123456, 0.25, 7.5, true});
+        // One class with its own detection probability: the column is written, empty for the others.
+        LandCoverClass forest{8, "Under trees", 0x225522, 0.5, 5.0, true};
+        forest.detectionProbability = 0.35;
+        table.set(forest);
         QVERIFY(saveClassTableCsv(table, path).ok());
         auto loaded = loadClassTableCsv(path);
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
         QVERIFY(loaded.value() == table);
+        QCOMPARE(*loaded.value().find(8)->detectionProbability, 0.35);
+        QVERIFY(!loaded.value().find(7)->detectionProbability);
     }
 
     void csvWithoutColorColumnAndOtherOrder() {

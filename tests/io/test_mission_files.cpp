@@ -35,6 +35,9 @@ Mission sampleMission() {
     mission.classes = presetClassTable("nlcd-simplified").value();
     mission.classes.set(
         LandCoverClass{9, "Ünïcode \"quoted\", with comma", 0x0a0b0c, 0.1 + 0.2, 1.0 / 3.0, true});
+    LandCoverClass forest{10, "Under trees", 0x225522, 0.5, 5.0, true};
+    forest.detectionProbability = 0.35; // what a sensor sees through the canopy, for detection planners
+    mission.classes.set(forest);
     mission.missingClassesAsObstacles = true;
     mission.robots = {RobotSpec{"alpha", {318819.349, 4132665.467}, ""},
                       RobotSpec{"beta", {-113.05, 37.3}, "EPSG:4326"},
@@ -106,7 +109,10 @@ class MissionFilesTest : public QObject {
         QCOMPARE(root["format"].toString(), QString("mcpp-mission"));
         QCOMPARE(root["robots"].toArray().size(), 3);
         QCOMPARE(root["robots"].toArray()[1].toObject()["start_crs"].toString(), QString("EPSG:4326"));
-        QCOMPARE(root["classes"].toObject()["table"].toArray().size(), 9);
+        const QJsonArray table = root["classes"].toObject()["table"].toArray();
+        QCOMPARE(table.size(), 10);
+        QCOMPARE(table[9].toObject()["detection_probability"].toDouble(), 0.35);
+        QVERIFY(!table[8].toObject().contains("detection_probability"));
         QCOMPARE(root["planner"].toObject()["name"].toString(), QString("mcpp-mlct"));
         const QJsonObject parameters = root["planner"].toObject()["parameters"].toObject();
         QCOMPARE(parameters["purity_tolerance"].toDouble(), 0.05);

@@ -79,6 +79,25 @@ class TestClassTableModel : public QObject {
         QCOMPARE(document_->classes().find(1)->speedMetresPerSecond, 2.0);
     }
 
+    // A class's own detection probability: set, shown, refused outside 0 to 1, cleared back to the
+    // planner's default by an empty cell, each an undo step.
+    void editsTheDetectionProbability() {
+        const auto detection = classes_->index(0, ui::ClassTableModel::Detection);
+        QCOMPARE(classes_->data(detection).toString(), QStringLiteral("default"));
+        QVERIFY(classes_->flags(detection) & Qt::ItemIsEditable);
+        QVERIFY(classes_->setData(detection, QStringLiteral("0.4")));
+        QCOMPARE(*document_->classes().find(1)->detectionProbability, 0.4);
+        QCOMPARE(classes_->data(detection).toString(), QStringLiteral("0.4"));
+        QVERIFY(!classes_->setData(detection, QStringLiteral("1.3")));
+        QVERIFY(classes_->lastRefusal().contains(QStringLiteral("0 to 1")));
+        QCOMPARE(*document_->classes().find(1)->detectionProbability, 0.4);
+        QVERIFY(classes_->setData(detection, QString()));
+        QVERIFY(!document_->classes().find(1)->detectionProbability);
+        QCOMPARE(undoStack_->count(), 2);
+        undoStack_->undo();
+        QCOMPARE(*document_->classes().find(1)->detectionProbability, 0.4);
+    }
+
     // Several rows at once, as one undo step; a value one row may not take refuses the whole edit.
     void bulkEditChangesEverySelectedRowInOneStep() {
         ui::ClassBulkEdit edit;
