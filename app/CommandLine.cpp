@@ -433,6 +433,8 @@ std::string CommandLine::usage() {
            "(numbered from 1, as on the map and in the \"robot\" fields of plan.geojson and report.json)\n"
            "robot_<n>.plan (QGroundControl), robot_<n>.waypoints (QGC WPL 110) and robot_<n>.csv; a mission\n"
            "above its robot's item limit is written as robot_<n>_part_<j>.plan and .waypoints instead.\n"
+           "Battery plans add robot_<n>_sortie_<j>.plan and .waypoints per sortie; detection plans (cppied)\n"
+           "add detection.tif (the chance a target is seen per sub-cell, and the chance required).\n"
            "\n"
            "Planners (mcpp --help-planner NAME lists one's parameters for --param):\n";
     std::size_t plannerWidth = 0;

@@ -2,6 +2,7 @@
 // Counters: ratio = makespan / lower bound, makespan_s, turn_time_s = time all robots lose turning (turn_s
 // auto by default: speed / 1 m/s2, here 1 s per 90 degrees), cells = active cells, peak_rss_mb = process
 // peak memory so far. The *_free_turns cases plan with turn_s 0, as before turns were timed.
+#include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -78,6 +79,18 @@ void runPlanner(benchmark::State& state, PlanningProblem problem,
             flights += static_cast<int>(robot.sorties.size());
         state.counters["sorties"] = flights;
     }
+    if (const DetectionLayer* detection = detectionLayerOf(plan)) {
+        state.counters["detection_min"] = detection->summary().minimum;
+        state.counters["detection_mean"] = detection->summary().mean;
+        state.counters["share_met"] = detection->summary().shareMet;
+        // Balance: the longest robot time over the mean one.
+        double sum = 0.0;
+        for (const auto& path : plan.paths)
+            sum += path.timeSeconds;
+        state.counters["longest_over_mean"] =
+            plan.paths.empty() ? 0.0
+                               : plan.metrics.makespanSeconds * static_cast<double>(plan.paths.size()) / sum;
+    }
     state.counters["peak_rss_mb"] = peakResidentMegabytes();
     for (const auto& [stage, milliseconds] : plan.metrics.stageMilliseconds)
         state.counters[stage + "_ms"] = milliseconds;
@@ -134,6 +147,22 @@ void uniformGridBattery(benchmark::State& state) {
                "wavefront-battery", battery);
 }
 
+// CPPIED with a sensor of range(2) percent p0 on the uniform grids (one land cover, FOV one pixel), every
+// cell to be seen with 0.95.
+void uniformGridDetection(benchmark::State& state) {
+    ParameterValues detection;
+    detection.set("detection_probability", static_cast<double>(state.range(2)) / 100.0);
+    runPlanner(state,
+               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+               "cppied", detection);
+}
+
+// CPPIED on the multi-cover maps: three land covers of different fields of view.
+void multiCoverDetection(benchmark::State& state) {
+    runPlanner(state, multiCover(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 7),
+               "cppied");
+}
+
 void multiCoverMap(benchmark::State& state) {
     runPlanner(state, multiCover(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 7));
 }
@@ -162,6 +191,10 @@ BENCHMARK_CAPTURE(uniformGrid, mstc, std::string("mstc"))
 BENCHMARK(uniformGridBattery)
     ->ArgsProduct({{49, 100, 200}, {1, 4, 20}, {1200, 3600}})
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridDetection)
+    ->ArgsProduct({{49, 100, 200}, {1, 4, 20}, {90, 100}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(multiCoverDetection)->ArgsProduct({{128, 512}, {4, 16}})->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridBalancedMstc)
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);

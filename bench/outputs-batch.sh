@@ -5,6 +5,7 @@
 # size, and the whole-process target of 1.5 x (read + plan) + 0.2 s.
 #   bench/outputs-batch.sh [MCPP] [CASE...]
 # MCPP defaults to build/release/app/mcpp; CASE names pick cases (default: all), e.g. uniform-200-20.
+# MCPP_EXTRA_ARGS is added to every run, e.g. MCPP_EXTRA_ARGS="--planner cppied".
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 mcpp="${1:-$root/build/release/app/mcpp}"
@@ -29,7 +30,8 @@ run_case() {
     shift 2
     selected "$name" || return 0
     local out="$scratch/out-$name"
-    /usr/bin/time -f '%e %M' -o "$scratch/time" "$mcpp" --batch "$@" --out "$out" -q ||
+    # shellcheck disable=SC2086
+    /usr/bin/time -f '%e %M' -o "$scratch/time" "$mcpp" --batch "$@" ${MCPP_EXTRA_ARGS:-} --out "$out" -q ||
         { echo "$name: mcpp failed" >&2; return 0; }
     read -r wall kilobytes <"$scratch/time"
     local bytes

@@ -1,6 +1,7 @@
 #include "ui/ResultsPanel.hpp"
 
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/model/DetectionLayer.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "render/RobotPalette.hpp"
@@ -97,6 +98,9 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     covered_ = valueLabel(QStringLiteral("coveredLabel"), this);
     unreachable_ = valueLabel(QStringLiteral("unreachableLabel"), this);
     planner_ = valueLabel(QStringLiteral("plannerLabel"), this);
+    detection_ = valueLabel(QStringLiteral("detectionLabel"), this);
+    detection_->setToolTip(tr("The chance a target in a covered cell is seen, over every cell the sensor "
+                              "can see: the least, the mean and the share at the required probability"));
     warnings_ = valueLabel(QStringLiteral("warningsLabel"), this);
     warnings_->setWordWrap(true);
     summary->addRow(tr("Makespan"), makespan_);
@@ -105,7 +109,10 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     summary->addRow(tr("Covered"), covered_);
     summary->addRow(tr("Unreachable"), unreachable_);
     summary->addRow(tr("Planner"), planner_);
+    summary->addRow(tr("Detection"), detection_);
     summary->addRow(tr("Warnings"), warnings_);
+    summary_ = summary;
+    summary->setRowVisible(detection_, false);
     layout->addLayout(summary);
 
     table_ = new QTableWidget(0, 7, this);
@@ -159,8 +166,10 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     table_->setSortingEnabled(false);
     table_->setRowCount(0);
     if (plan == nullptr) {
-        for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, warnings_})
+        for (QLabel* label :
+             {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, detection_, warnings_})
             label->setText(QStringLiteral("–"));
+        summary_->setRowVisible(detection_, false);
         clearChart();
         setStale(false);
         return;
@@ -201,6 +210,16 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
                           .arg(metrics.coveredFraction * 100.0, 0, 'f', 1));
     unreachable_->setText(hectares(metrics.unreachableAreaSquareMetres));
     planner_->setText(QString::fromStdString(plan->planner));
+    const DetectionLayer* detection = detectionLayerOf(*plan);
+    summary_->setRowVisible(detection_, detection != nullptr);
+    if (detection != nullptr) {
+        const DetectionSummary& seen = detection->summary();
+        detection_->setText(tr("least %1, mean %2; %3 % of the cells at %4 or more")
+                                .arg(seen.minimum, 0, 'f', 3)
+                                .arg(seen.mean, 0, 'f', 3)
+                                .arg(seen.shareMet * 100.0, 0, 'f', 1)
+                                .arg(seen.requiredProbability));
+    }
     QStringList warnings;
     for (const auto& warning : plan->warnings())
         warnings << QString::fromStdString(warning);

@@ -7,6 +7,7 @@
 
 class QChart;
 class QChartView;
+class QFormLayout;
 class QLabel;
 class QTableWidget;
 
@@ -43,6 +44,8 @@ class ResultsPanel : public QWidget {
     QLabel* covered_;
     QLabel* unreachable_;
     QLabel* planner_;
+    QLabel* detection_; // only for plans with a detection layer
+    QFormLayout* summary_;
     QLabel* warnings_;
     QChartView* chartView_;
 };

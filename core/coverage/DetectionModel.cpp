@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace mcpp {
 namespace {
@@ -58,6 +59,28 @@ double DetectionModel::atDistance(double nearProbability, double fieldOfViewMetr
     if (distance >= fieldOfViewMetres)
         return 0.0;
     return nearProbability * (fieldOfViewMetres - distance) / half;
+}
+
+double DetectionModel::passesPerCell(int profile, double required) const {
+    if (nearProbability(profile) <= 0.0)
+        return 0.0;
+    double best = std::numeric_limits<double>::infinity();
+    for (int spacing = 1; spacing <= 2 * reach_ + 1; ++spacing) {
+        // The target between lines that sees them worst: its chance of being missed by one pass of each.
+        double worstMiss = 0.0;
+        for (int first = 0; first < spacing; ++first) {
+            double miss = 1.0;
+            for (int offset = first - spacing * (reach_ / spacing + 1); offset <= reach_; offset += spacing)
+                miss *= 1.0 - probability(profile, offset);
+            worstMiss = std::max(worstMiss, miss);
+        }
+        if (worstMiss >= 1.0)
+            break; // lines this far apart leave some target unseen
+        // Fractional: the greedy adds single passes where one round falls short, not a whole round.
+        const double passes = worstMiss <= 0.0 ? 1.0 : std::log(1.0 - required) / std::log(worstMiss);
+        best = std::min(best, std::max(1.0, passes) / spacing);
+    }
+    return best;
 }
 
 int DetectionModel::profileOf(std::int32_t classValue) const {

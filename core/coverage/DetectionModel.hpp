@@ -33,6 +33,11 @@ class DetectionModel {
         return byOffset_[static_cast<std::size_t>(profile * (reach_ + 1) + distance)];
     }
     [[nodiscard]] int profiles() const { return static_cast<int>(nearProbability_.size()); }
+    // Passes per lattice cell that parallel passes over land of one profile need for every target to reach
+    // the required probability: the fewest m / w over a spacing of w cells and m >= 1 passes per line
+    // (fractional: ln(1 - D) / ln(miss)), for the worst-placed target. 0 for a profile whose targets cannot
+    // be seen.
+    [[nodiscard]] double passesPerCell(int profile, double required) const;
     // The largest offset any class is seen at: a pass's strip is 2 x reach + 1 cells wide.
     [[nodiscard]] int reach() const { return reach_; }
     // The probability of seeing at lateral distance d metres, before averaging over a cell.

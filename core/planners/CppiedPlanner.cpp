@@ -124,6 +124,19 @@ void boundPasses(DetectionSummary& summary, const DetectionModel& model, const P
     summary.secondsPerStep = cellSize / fastest;
 }
 
+// The grid priced for detection: a cell's travel time scaled by the passes its land cover needs per
+// lattice cell (fewer where the sensor sees far, more where it often misses), so that the regions share
+// the passes and not the area. Land whose targets cannot be seen is priced as crossed once in a while.
+CellGraph priceForDetection(const CellGraph& cells, const DetectionModel& model, double required) {
+    constexpr double crossedOnly = 0.25;
+    std::vector<Cell> priced = cells.cells();
+    for (Cell& cell : priced) {
+        const double passes = model.passesPerCell(model.profileOf(cell.classValue), required);
+        cell.speedMetresPerSecond /= passes > 0.0 ? passes : crossedOnly;
+    }
+    return CellGraph(cells.frame(), std::move(priced), cells.adjacency());
+}
+
 void warnOfMisses(PlanningRun& run, const DetectionSummary& summary, const DetectionModel& model) {
     if (summary.undetectableAreaSquareMetres > 0.0)
         run.addIssue(IssueSeverity::Warning, "undetectable",
@@ -166,14 +179,14 @@ void CppiedPlanner::run(PlanningRun& run) const {
     Plan& plan = run.plan();
     plan.cells = gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
-    plan.regions = run.stage("allocation", [&] {
-        return AzimuthTrendAllocator(parameters.integer("rebalance_iterations"))
-            .allocate(plan.cells, startCells, run.progress());
-    });
     const double required = parameters.real("required_probability");
     const DetectionLattice lattice(plan.cells);
     const DetectionModel model(run.problem().classes, parameters.real("detection_probability"),
                                lattice.cellSize());
+    plan.regions = run.stage("allocation", [&] {
+        return AzimuthTrendAllocator(parameters.integer("rebalance_iterations"))
+            .allocate(priceForDetection(plan.cells, model, required), startCells, run.progress());
+    });
     run.stage("paths", [&] {
         const std::vector<std::vector<int>> cells = cellsByRobot(plan.regions);
         std::vector<CoveragePath> paths(startCells.size());

@@ -67,6 +67,24 @@ class CppiedTest : public QObject {
         QCOMPARE(model.profileOf(7), DetectionModel::noProfile);
     }
 
+    // The allocation's price: passes per lattice cell that parallel lines need for the worst-placed target.
+    // By hand on 1 m cells: FOV 1 m, p0 1: one pass per line (1); p0 0.5: a line misses 0.5 x 0.875^2 =
+    // 0.3828, so ln 0.05 / ln 0.3828 = 3.12 passes reach 0.95; FOV 4 m, p0 1: lines 3 apart see everything
+    // (at most 1/3).
+    void pricesPassesPerCell() {
+        ClassTable classes;
+        classes.set({1, "open", 0x88cc44, 1.0, 1.0, true});
+        LandCoverClass dim{2, "dim", 0x448822, 1.0, 1.0, true};
+        dim.detectionProbability = 0.5;
+        classes.set(dim);
+        classes.set({3, "wide", 0xcccc44, 1.0, 4.0, true});
+        const DetectionModel model(classes, 1.0, 1.0);
+        QCOMPARE(model.passesPerCell(model.profileOf(1), 0.95), 1.0);
+        QVERIFY(std::abs(model.passesPerCell(model.profileOf(2), 0.95) -
+                         std::log(0.05) / std::log(0.3828125)) < 1e-3);
+        QVERIFY(model.passesPerCell(model.profileOf(3), 0.95) <= 1.0 / 3.0 + 1e-12);
+    }
+
     // A class's own p0 wins over the planner's default; a class with p0 0 is never seen.
     void aClassGivesItsOwnDetectionProbability() {
         ClassTable classes;

@@ -114,6 +114,26 @@ class TestMainWindow : public QObject {
         QVERIFY2(table->item(0, 4)->toolTip().contains("charging"), qPrintable(table->item(0, 4)->toolTip()));
     }
 
+    // A CPPIED plan shows its detection figures under the summary; another planner's plan hides the row.
+    void resultsShowWhatADetectionPlanSees() {
+        PlanningProblem problem = test::drawnProblem(std::vector<std::string>(12, std::string(16, '.')),
+                                                     {{0.5, 0.5}, {15.5, 11.5}});
+        problem.planner = defaultPlannerChoice("cppied");
+        problem.planner.parameters.set("required_probability", 0.9);
+        const Plan plan = makePlanner("cppied")->plan(problem, {});
+        ui::ResultsPanel panel;
+        panel.showPlan(&plan, {QStringLiteral("west"), QStringLiteral("east")});
+        auto* detection = panel.findChild<QLabel*>(QStringLiteral("detectionLabel"));
+        QVERIFY(detection != nullptr);
+        QVERIFY2(detection->text().contains("100.0 % of the cells at 0.9 or more"),
+                 qPrintable(detection->text()));
+        QVERIFY(!detection->isHidden());
+        problem.planner = defaultPlannerChoice("mcpp-mlct");
+        const Plan other = makePlanner("mcpp-mlct")->plan(problem, {});
+        panel.showPlan(&other, {});
+        QVERIFY(detection->isHidden());
+    }
+
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QCoreApplication::setOrganizationName(QStringLiteral("mcpp"));
