@@ -34,17 +34,25 @@ bool DetectionSegmentSelection::isTarget(const std::vector<char>& own, const Det
 double DetectionSegmentSelection::passGain(const std::vector<char>& own, const DetectionAccumulator& seen,
                                            LatticePosition position, bool horizontal,
                                            double overlapPenalty) const {
+    // The hottest loop of the planner: it walks the strip by index, clipped to the window once.
+    const LatticeWindow& window = seen.window();
+    const int across = horizontal ? position.row - window.row : position.column - window.column;
+    const int width = horizontal ? window.rows : window.columns;
+    const int first = std::max(-model_.reach(), -across);
+    const int last = std::min(model_.reach(), width - 1 - across);
+    const auto stride = static_cast<std::ptrdiff_t>(horizontal ? window.columns : 1);
+    const auto centre = static_cast<std::ptrdiff_t>(window.index(position));
+    const double* probability = seen.probabilities().data();
     double gain = 0.0;
-    const int reach = model_.reach();
-    for (int offset = -reach; offset <= reach; ++offset) {
-        const LatticePosition target = horizontal ? LatticePosition{position.column, position.row + offset}
-                                                  : LatticePosition{position.column + offset, position.row};
-        if (!isTarget(own, seen, target))
+    for (int offset = first; offset <= last; ++offset) {
+        const auto index = static_cast<std::size_t>(centre + offset * stride);
+        if (own[index] == 0)
             continue;
-        const double chance = model_.probability(seen.profileAt(seen.window().index(target)), offset);
+        // Land whose targets cannot be seen has chance 0 everywhere: no target.
+        const double chance = model_.probability(seen.profileAt(index), offset);
         if (chance <= 0.0)
             continue;
-        const double before = seen.at(target);
+        const double before = probability[index];
         if (before >= required_ - metTolerance)
             gain -= overlapPenalty;
         else
@@ -85,6 +93,7 @@ DetectionSegmentSelection::LineGains DetectionSegmentSelection::lineGains(const 
 
 DetectionSegmentSelection::Round DetectionSegmentSelection::bestRound(const std::vector<char>& own,
                                                                       const DetectionAccumulator& seen,
+                                                                      const std::vector<char>& nearUnmet,
                                                                       bool horizontal,
                                                                       double overlapPenalty) const {
     const LatticeWindow& window = seen.window();
@@ -97,7 +106,10 @@ DetectionSegmentSelection::Round DetectionSegmentSelection::bestRound(const std:
     std::vector<double> best(static_cast<std::size_t>(lines) + 1, 0.0); // best[i]: over the first i lines
     std::vector<char> taken(static_cast<std::size_t>(lines), 0);
     for (int line = 0; line < lines; ++line) {
-        round.gains.push_back(lineGains(own, seen, line, horizontal, overlapPenalty));
+        // A pass along a line out of reach of every unmet target gains nothing.
+        round.gains.push_back(nearUnmet[static_cast<std::size_t>(line)] != 0
+                                  ? lineGains(own, seen, line, horizontal, overlapPenalty)
+                                  : LineGains{});
         const auto index = static_cast<std::size_t>(line);
         const double with =
             round.gains[index].total + best[static_cast<std::size_t>(std::max(0, line + 1 - spacing))];
@@ -122,6 +134,29 @@ bool DetectionSegmentSelection::isOwn(const std::vector<char>& own, const Lattic
     return step >= 0 && step < steps && own[window.index(along(window, line, step, horizontal))] != 0;
 }
 
+DetectionSegmentSelection::UnmetLines
+DetectionSegmentSelection::unmetLines(const std::vector<char>& own, const DetectionAccumulator& seen) const {
+    const LatticeWindow& window = seen.window();
+    const int reach = model_.reach();
+    UnmetLines unmet{0, std::vector<char>(static_cast<std::size_t>(window.rows), 0),
+                     std::vector<char>(static_cast<std::size_t>(window.columns), 0)};
+    const auto mark = [reach](std::vector<char>& lines, int line) {
+        const int last = std::min(static_cast<int>(lines.size()) - 1, line + reach);
+        for (int near = std::max(0, line - reach); near <= last; ++near)
+            lines[static_cast<std::size_t>(near)] = 1;
+    };
+    for (int row = 0; row < window.rows; ++row)
+        for (int column = 0; column < window.columns; ++column) {
+            const LatticePosition position{window.column + column, window.row + row};
+            if (!isTarget(own, seen, position) || seen.at(position) >= required_ - metTolerance)
+                continue;
+            ++unmet.targets;
+            mark(unmet.rows, row);
+            mark(unmet.columns, column);
+        }
+    return unmet;
+}
+
 std::size_t DetectionSegmentSelection::unmetTargets(const std::vector<char>& own,
                                                     const DetectionAccumulator& seen) const {
     const LatticeWindow& window = seen.window();
@@ -140,19 +175,22 @@ std::vector<DetectionSegment> DetectionSegmentSelection::select(const std::vecto
                                                                 const ProgressReporter& progress) const {
     std::vector<DetectionSegment> segments;
     const LatticeWindow window = seen.window();
-    for (int roundNumber = 0; unmetTargets(own, seen) > 0; ++roundNumber) {
+    const auto better = [](const Round& a, const Round& b) { return a.total < b.total; };
+    for (int roundNumber = 0;; ++roundNumber) {
+        const UnmetLines unmet = unmetLines(own, seen);
+        if (unmet.targets == 0)
+            break;
         if (roundNumber == maximumRounds)
             throw PlanningError(PlanningError::Kind::InvalidParameter,
                                 "the detection passes stopped gaining before every target was seen");
         progress.throwIfCancelled();
-        Round round = std::max(bestRound(own, seen, true, overlapPenaltyPerTarget),
-                               bestRound(own, seen, false, overlapPenaltyPerTarget),
-                               [](const Round& a, const Round& b) { return a.total < b.total; });
+        Round round = std::max(bestRound(own, seen, unmet.rows, true, overlapPenaltyPerTarget),
+                               bestRound(own, seen, unmet.columns, false, overlapPenaltyPerTarget), better);
         // Where every pass would sweep more finished ground than it gains, drop the penalty: the last
         // targets must be reached all the same, and each one gains on its own centre.
         if (round.total <= 0.0)
-            round = std::max(bestRound(own, seen, true, 0.0), bestRound(own, seen, false, 0.0),
-                             [](const Round& a, const Round& b) { return a.total < b.total; });
+            round = std::max(bestRound(own, seen, unmet.rows, true, 0.0),
+                             bestRound(own, seen, unmet.columns, false, 0.0), better);
         // Only a region of one place has no pass to run: the robot stands there and looks both ways.
         if (round.total <= 0.0)
             break;

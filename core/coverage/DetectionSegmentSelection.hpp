@@ -34,6 +34,12 @@ class DetectionSegmentSelection {
         double total = 0.0;
         std::vector<Stretch> stretches;
     };
+    // The targets still short, and the lines within reach of one (window rows and columns).
+    struct UnmetLines {
+        std::size_t targets = 0;
+        std::vector<char> rows;
+        std::vector<char> columns;
+    };
     struct Round {
         double total = 0.0;
         bool horizontal = true;
@@ -48,7 +54,9 @@ class DetectionSegmentSelection {
     [[nodiscard]] LineGains lineGains(const std::vector<char>& own, const DetectionAccumulator& seen,
                                       int line, bool horizontal, double overlapPenalty) const;
     [[nodiscard]] Round bestRound(const std::vector<char>& own, const DetectionAccumulator& seen,
-                                  bool horizontal, double overlapPenalty) const;
+                                  const std::vector<char>& nearUnmet, bool horizontal,
+                                  double overlapPenalty) const;
+    [[nodiscard]] UnmetLines unmetLines(const std::vector<char>& own, const DetectionAccumulator& seen) const;
     [[nodiscard]] static bool isOwn(const std::vector<char>& own, const LatticeWindow& window, int line,
                                     int step, bool horizontal);
     [[nodiscard]] static LatticePosition along(const LatticeWindow& window, int line, int step,
