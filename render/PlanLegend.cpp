@@ -135,6 +135,10 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
         if (const DetectionLayer* detection = detectionLayerOf(*plan)) {
             const QString required = QString::number(detection->summary().requiredProbability, 'g', 3);
             overlays.items.push_back({LegendSymbol::Swatch,
+                                      DetectionPalette::certain(),
+                                      QStringLiteral("Targets seen for certain"),
+                                      {}});
+            overlays.items.push_back({LegendSymbol::Swatch,
                                       DetectionPalette::met(),
                                       QStringLiteral("Targets seen with %1 or more").arg(required),
                                       {}});

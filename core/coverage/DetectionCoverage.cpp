@@ -102,7 +102,7 @@ class NodeRoutes {
     [[nodiscard]] double estimate(int from, int to) const {
         const Waypoint& a = nodes_.waypoint(from);
         const Waypoint& b = nodes_.waypoint(to);
-        return std::hypot(a.x - b.x, a.y - b.y) / fastest_;
+        return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)) / fastest_;
     }
     void touch(int node, double seconds, int cameFrom) {
         if (seconds_[static_cast<std::size_t>(node)] == infinity)
