@@ -12,6 +12,8 @@ namespace {
 constexpr double overlapPenaltyPerTarget = 0.01;
 // A target counts as seen at the required probability within this much of it (rounding of C' updates).
 constexpr double metTolerance = 1e-9;
+// Places already seen enough that a pass flies over rather than ending and starting again beyond them.
+constexpr int bridgedGap = 3;
 // Rounds before giving up: each round raises some target, so only a defect of the model could use them.
 constexpr int maximumRounds = 100000;
 
@@ -69,6 +71,7 @@ DetectionSegmentSelection::LineGains DetectionSegmentSelection::lineGains(const 
     const int steps = horizontal ? window.columns : window.rows;
     LineGains gains;
     bool inStretch = false;
+    int ownSince = 0; // the first step of the unbroken run of the robot's places up to here
     for (int step = 0; step < steps; ++step) {
         const LatticePosition position = along(window, line, step, horizontal);
         // A pass needs room to run in its heading: a place with no neighbour along the line is passed
@@ -76,13 +79,19 @@ DetectionSegmentSelection::LineGains DetectionSegmentSelection::lineGains(const 
         const bool canRun =
             own[window.index(position)] != 0 && (isOwn(own, window, line, step - 1, horizontal) ||
                                                  isOwn(own, window, line, step + 1, horizontal));
+        if (own[window.index(position)] == 0)
+            ownSince = step + 1;
         const double gain = canRun ? passGain(own, seen, position, horizontal, overlapPenalty) : 0.0;
         // A pass stops at the first place it gains nothing (the seed's H = -infinity there).
         if (gain <= 0.0) {
             inStretch = false;
             continue;
         }
-        if (!inStretch)
+        // Flying on over a short gap costs less than the two turns and the way round of a new pass.
+        const bool bridges = !gains.stretches.empty() &&
+                             step - gains.stretches.back().last - 1 <= bridgedGap &&
+                             gains.stretches.back().last >= ownSince;
+        if (!inStretch && !bridges)
             gains.stretches.push_back({step, step});
         gains.stretches.back().last = step;
         gains.total += gain;
