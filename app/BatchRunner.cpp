@@ -296,8 +296,13 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             continue;
         if (!io::formatApplies(format, plan)) {
             // Left from a plan that had it, it would describe another plan.
-            std::error_code ignored;
-            std::filesystem::remove(directory / format.batchFileName, ignored);
+            std::error_code failed;
+            if (!format.perRobot && !format.batchFileName.empty() &&
+                !fs::remove(directory / format.batchFileName, failed) && failed)
+                warn("cannot remove " + format.batchFileName +
+                     " left by an earlier run, which describes another "
+                     "plan: " +
+                     failed.message());
             continue;
         }
         if (format.needsLongitudeLatitude && !raster_.georeference.hasCrs()) {

@@ -195,6 +195,19 @@ void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     }
 }
 
+namespace {
+
+// Pixels of a grid per image pixel side: 1, or more on grids beyond 16 million cells.
+int imageStep(int columns, int rows) {
+    constexpr std::int64_t largestImage = 16'000'000;
+    int step = 1;
+    while (static_cast<std::int64_t>(columns / step) * (rows / step) > largestImage)
+        ++step;
+    return step;
+}
+
+} // namespace
+
 void PlanRenderer::prepareRegions(const RegionOutlines* given) {
     regionPyramid_.clear();
     regionBorders_.clear();
@@ -207,10 +220,7 @@ void PlanRenderer::prepareRegions(const RegionOutlines* given) {
     const RegionOutlines& outlines = given != nullptr ? *given : traced;
     const LabelGrid& labels = outlines.labels;
     // One image pixel per sub-cell, or per block of them on maps beyond 16 million sub-cells.
-    constexpr std::int64_t largestImage = 16'000'000;
-    int step = 1;
-    while (static_cast<std::int64_t>(labels.columns / step) * (labels.rows / step) > largestImage)
-        ++step;
+    const int step = imageStep(labels.columns, labels.rows);
     const int width = (labels.columns + step - 1) / step;
     const int height = (labels.rows + step - 1) / step;
     QImage image(width, height, QImage::Format_ARGB32);
@@ -256,27 +266,37 @@ void PlanRenderer::prepareDetection() {
     if (layer == nullptr || layer->grid().columns == 0 || layer->grid().rows == 0)
         return;
     const DetectionGrid& grid = layer->grid();
-    // One image pixel per lattice cell, or per block of them on the largest maps (the worst of the block).
-    constexpr std::int64_t largestImage = 16'000'000;
-    int step = 1;
-    while (static_cast<std::int64_t>(grid.columns / step) * (grid.rows / step) > largestImage)
-        ++step;
+    // One image pixel per lattice cell, or per block of them on the largest maps.
+    const int step = imageStep(grid.columns, grid.rows);
     const int width = (grid.columns + step - 1) / step;
     const int height = (grid.rows + step - 1) / step;
-    QImage image(width, height, QImage::Format_ARGB32);
-    image.fill(qRgba(0, 0, 0, 0));
-    for (int row = 0; row < grid.rows; ++row) {
-        auto* line = reinterpret_cast<QRgb*>(image.scanLine(row / step));
+    // Of a block, the cell seen least for what it needs shows: a gap must not vanish when zoomed out.
+    std::vector<std::size_t> shown(static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
+                                   grid.required.size());
+    const auto share = [&grid](std::size_t index) {
+        return grid.required[index] > 0.0F ? grid.probability[index] / grid.required[index] : 2.0F;
+    };
+    for (int row = 0; row < grid.rows; ++row)
         for (int column = 0; column < grid.columns; ++column) {
             const std::size_t index =
                 static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.columns) + column;
             if (std::isnan(grid.required[index]))
                 continue;
-            const QRgb colour = DetectionPalette::colour(grid.probability[index], grid.required[index]);
-            QRgb& pixel = line[column / step];
-            // Of a block, the least seen cell shows: a gap must not vanish when zoomed out.
-            if (qAlpha(pixel) == 0 || qGreen(colour) < qGreen(pixel))
-                pixel = colour;
+            std::size_t& block =
+                shown[static_cast<std::size_t>(row / step) * static_cast<std::size_t>(width) +
+                      static_cast<std::size_t>(column / step)];
+            if (block == grid.required.size() || share(index) < share(block))
+                block = index;
+        }
+    QImage image(width, height, QImage::Format_ARGB32);
+    for (int row = 0; row < height; ++row) {
+        auto* line = reinterpret_cast<QRgb*>(image.scanLine(row));
+        for (int column = 0; column < width; ++column) {
+            const std::size_t index = shown[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) +
+                                            static_cast<std::size_t>(column)];
+            line[column] = index == grid.required.size()
+                               ? qRgba(0, 0, 0, 0)
+                               : DetectionPalette::colour(grid.probability[index], grid.required[index]);
         }
     }
     const double size = grid.cellSize * step;

@@ -31,11 +31,20 @@ DetectionAccumulator::DetectionAccumulator(const DetectionLattice& lattice, cons
                                            const DetectionModel& model, LatticeWindow window)
     : lattice_(lattice), model_(model), window_(window), probability_(window.size(), 0.0),
       profile_(window.size(), DetectionModel::noProfile) {
+    // Neighbouring cells mostly share a land cover: look a class up only when it changes.
+    std::int32_t lastClass = 0;
+    int lastProfile = model.profileOf(lastClass);
     for (int row = window.row; row < window.row + window.rows; ++row)
         for (int column = window.column; column < window.column + window.columns; ++column) {
             const LatticePosition position{column, row};
-            if (const int cell = lattice.cellAt(position); cell >= 0)
-                profile_[window.index(position)] = model.profileOf(graph.cell(cell).classValue);
+            const int cell = lattice.cellAt(position);
+            if (cell < 0)
+                continue;
+            if (const std::int32_t landCover = graph.cell(cell).classValue; landCover != lastClass) {
+                lastClass = landCover;
+                lastProfile = model.profileOf(landCover);
+            }
+            profile_[window.index(position)] = lastProfile;
         }
 }
 

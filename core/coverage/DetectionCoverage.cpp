@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 
 namespace mcpp {
@@ -30,7 +31,12 @@ RegionLattice regionLattice(const SubCellNodes& nodes, const DetectionLattice& l
     std::vector<LatticePosition> positions;
     int minColumn = std::numeric_limits<int>::max(), minRow = minColumn, maxColumn = -1, maxRow = -1;
     for (int node = 0; node < nodes.size(); ++node) {
-        const LatticePosition position = *lattice.centreAt({nodes.waypoint(node).x, nodes.waypoint(node).y});
+        const std::optional<LatticePosition> centre =
+            lattice.centreAt({nodes.waypoint(node).x, nodes.waypoint(node).y});
+        if (!centre)
+            throw PlanningError(PlanningError::Kind::InvalidGrid,
+                                "a sub-cell centre lies off the detection lattice");
+        const LatticePosition position = *centre;
         positions.push_back(position);
         minColumn = std::min(minColumn, position.column);
         minRow = std::min(minRow, position.row);
@@ -168,34 +174,28 @@ CoveragePath pathOf(int robot, const std::vector<int>& flown, const SubCellNodes
 
 } // namespace
 
-DetectionCoverage::Result DetectionCoverage::cover(int robot, const std::vector<int>& cells, int startCell,
-                                                   MapPoint start, const ProgressReporter& progress) const {
+CoveragePath DetectionCoverage::cover(int robot, const std::vector<int>& cells, int startCell, MapPoint start,
+                                      const ProgressReporter& progress) const {
     const SubCellNodes nodes(graph_, cells);
-    const int root = nodes.nearestIn(startCell, start);
-    if (root == SubCellNodes::none)
-        throw PlanningError::aboutStart(PlanningError::Kind::StartOnObstacle, robot,
-                                        "lies in a cell with no free sub-cell");
+    const int root = nodes.startNode(robot, startCell, start);
     const RegionLattice region = regionLattice(nodes, lattice_);
     const DetectionSegmentSelection selection(model_, required_);
     DetectionAccumulator planned(lattice_, graph_, model_, region.window);
-    std::vector<DetectionSegment> segments = selection.select(region.own, planned, progress);
-    std::vector<int> flown = flyPasses(segments, region, lattice_, nodes, root);
-    Result result;
-    result.passes = segments.size();
+    std::vector<int> flown =
+        flyPasses(selection.select(region.own, planned, progress), region, lattice_, nodes, root);
     for (int attempt = 0;; ++attempt) {
-        result.path = pathOf(robot, flown, nodes, graph_.cell(startCell), startCell, start);
+        CoveragePath path = pathOf(robot, flown, nodes, graph_.cell(startCell), startCell, start);
         DetectionAccumulator seen(lattice_, graph_, model_, region.window);
-        seen.addPath(result.path);
-        result.unmetTargets = selection.unmetTargets(region.own, seen);
-        if (result.unmetTargets == 0 || attempt == maximumReplans)
-            break;
+        seen.addPath(path);
+        if (attempt == maximumReplans || selection.unmetTargets(region.own, seen) == 0)
+            return path;
         // The passes for what is short are flown after the rest, so nothing already seen is lost.
         const std::vector<DetectionSegment> more = selection.select(region.own, seen, progress);
+        if (more.empty())
+            return path; // nothing gains any more; the plan's summary counts what stays short
         const std::vector<int> after = flyPasses(more, region, lattice_, nodes, flown.back());
         flown.insert(flown.end(), after.begin() + 1, after.end());
-        result.passes += more.size();
     }
-    return result;
 }
 
 } // namespace mcpp

@@ -17,19 +17,14 @@ namespace mcpp {
 // turns and joining legs included; passes for whatever is still short are flown after the rest.
 class DetectionCoverage {
   public:
-    struct Result {
-        CoveragePath path; // not yet measured; open: it ends after its last pass
-        std::size_t passes = 0;
-        std::size_t unmetTargets = 0; // lattice cells of the region still below the required probability
-    };
-
     DetectionCoverage(const CellGraph& graph, const DetectionLattice& lattice, const DetectionModel& model,
                       double requiredProbability)
         : graph_(graph), lattice_(lattice), model_(model), required_(requiredProbability) {}
 
-    // cells: the robot's region, holding startCell, of a single-level grid.
-    [[nodiscard]] Result cover(int robot, const std::vector<int>& cells, int startCell, MapPoint start,
-                               const ProgressReporter& progress) const;
+    // cells: the robot's region, holding startCell, of a single-level grid. The path is not yet measured;
+    // it is open: it ends after its last pass.
+    [[nodiscard]] CoveragePath cover(int robot, const std::vector<int>& cells, int startCell, MapPoint start,
+                                     const ProgressReporter& progress) const;
 
   private:
     const CellGraph& graph_;

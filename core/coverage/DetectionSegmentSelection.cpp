@@ -190,8 +190,9 @@ std::vector<DetectionSegment> DetectionSegmentSelection::select(const std::vecto
         if (unmet.targets == 0)
             break;
         if (roundNumber == maximumRounds)
-            throw PlanningError(PlanningError::Kind::InvalidParameter,
-                                "the detection passes stopped gaining before every target was seen");
+            throw PlanningError::aboutParameter("required_probability",
+                                                "the detection passes stopped gaining before every target "
+                                                "reached it");
         progress.throwIfCancelled();
         Round round = std::max(bestRound(own, seen, unmet.rows, true, overlapPenaltyPerTarget),
                                bestRound(own, seen, unmet.columns, false, overlapPenaltyPerTarget), better);

@@ -10,6 +10,8 @@ namespace {
 
 // Candidates each 2-opt move looks at: the passes with an end nearest the leg it would replace.
 constexpr int neighboursPerEnd = 8;
+// Routes of this many passes or fewer try every reversal, not only those the nearest ends suggest.
+constexpr std::size_t everyPairUpTo = 300;
 // Full sweeps of 2-opt moves at most; each sweep that improves nothing ends it sooner.
 constexpr int maximumSweeps = 30;
 
@@ -107,9 +109,11 @@ class EndBuckets {
     std::vector<std::vector<int>> buckets_;
 };
 
-std::vector<SegmentTour::Visit> nearestFirst(const std::vector<SegmentTour::Pass>& passes, MapPoint start) {
+} // namespace
+
+std::vector<SegmentTour::Visit> SegmentTour::nearestFirst(const std::vector<Pass>& passes, MapPoint start) {
     EndBuckets buckets(passes, start);
-    std::vector<SegmentTour::Visit> visits;
+    std::vector<Visit> visits;
     MapPoint at = start;
     while (visits.size() < passes.size()) {
         const int end = buckets.nearest(at, 1).front();
@@ -120,6 +124,8 @@ std::vector<SegmentTour::Visit> nearestFirst(const std::vector<SegmentTour::Pass
     }
     return visits;
 }
+
+namespace {
 
 // 2-opt over an open route of passes, each flown in either direction.
 class TwoOpt {
@@ -133,16 +139,19 @@ class TwoOpt {
 
     std::vector<SegmentTour::Visit> improve() {
         const EndBuckets buckets(passes_, start_);
+        const bool everyPair = visits_.size() <= everyPairUpTo;
         for (int sweep = 0; sweep < maximumSweeps; ++sweep) {
             bool improved = false;
-            for (std::size_t first = 0; first < visits_.size(); ++first)
-                for (const int end : buckets.nearest(before(first), neighboursPerEnd)) {
-                    const std::size_t last = positionOf_[static_cast<std::size_t>(end / 2)];
-                    if (last >= first && gainOfReversing(first, last) > 1e-9) {
-                        reverse(first, last);
-                        improved = true;
-                    }
+            for (std::size_t first = 0; first < visits_.size(); ++first) {
+                if (everyPair) {
+                    for (std::size_t last = first; last < visits_.size(); ++last)
+                        improved = tryReversing(first, last) || improved;
+                    continue;
                 }
+                for (const int end : buckets.nearest(before(first), neighboursPerEnd))
+                    improved =
+                        tryReversing(first, positionOf_[static_cast<std::size_t>(end / 2)]) || improved;
+            }
             if (!improved)
                 break;
         }
@@ -162,6 +171,12 @@ class TwoOpt {
     }
     [[nodiscard]] MapPoint before(std::size_t position) const {
         return position == 0 ? start_ : exit(position - 1);
+    }
+    bool tryReversing(std::size_t first, std::size_t last) {
+        if (last < first || gainOfReversing(first, last) <= 1e-9)
+            return false;
+        reverse(first, last);
+        return true;
     }
     // Metres saved by flying visits first..last in the opposite order, each the other way.
     [[nodiscard]] double gainOfReversing(std::size_t first, std::size_t last) const {

@@ -21,6 +21,8 @@ class SegmentTour {
     };
 
     [[nodiscard]] static std::vector<Visit> order(const std::vector<Pass>& passes, MapPoint start);
+    // The first step of order(): each time the pass with the end nearest where the robot is, from that end.
+    [[nodiscard]] static std::vector<Visit> nearestFirst(const std::vector<Pass>& passes, MapPoint start);
     // Metres of straight legs from the start through the visits, passes themselves not counted.
     [[nodiscard]] static double legMetres(const std::vector<Pass>& passes, MapPoint start,
                                           const std::vector<Visit>& visits);

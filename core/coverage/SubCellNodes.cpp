@@ -1,6 +1,7 @@
 #include "core/coverage/SubCellNodes.hpp"
 
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/model/PlanningError.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -108,6 +109,14 @@ int SubCellNodes::nearestIn(int cell, MapPoint point) const {
         }
     }
     return best;
+}
+
+int SubCellNodes::startNode(int robot, int cell, MapPoint start) const {
+    const int node = nearestIn(cell, start);
+    if (node == none)
+        throw PlanningError::aboutStart(PlanningError::Kind::StartOnObstacle, robot,
+                                        "lies in a cell with no free sub-cell");
+    return node;
 }
 
 double SubCellNodes::stepSeconds(int from, int to) const {

@@ -33,6 +33,9 @@ class SubCellNodes {
     [[nodiscard]] int at(int cell, SubCell subCell) const;
     // The node of `cell` nearest the point, or none when the cell has no free sub-cell here.
     [[nodiscard]] int nearestIn(int cell, MapPoint point) const;
+    // Where robot `robot` starting at `start` in `cell` begins its walk; throws PlanningError when the cell
+    // has no free sub-cell.
+    [[nodiscard]] int startNode(int robot, int cell, MapPoint start) const;
     // The nodes of one of the cells, in SubCell order.
     [[nodiscard]] std::vector<int> ofCell(int cell) const;
     // Seconds to travel between two neighbouring nodes (half at each one's speed).

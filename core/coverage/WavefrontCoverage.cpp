@@ -275,10 +275,7 @@ std::unique_ptr<ReturnTree> WavefrontCoverage::treeWithinRange(const SubCellNode
 WavefrontCoverage::Result WavefrontCoverage::cover(int robot, const std::vector<int>& cells, int startCell,
                                                    MapPoint start, const ProgressReporter& progress) const {
     const SubCellNodes nodes(graph_, cells);
-    const int root = nodes.nearestIn(startCell, start);
-    if (root == SubCellNodes::none)
-        throw PlanningError::aboutStart(PlanningError::Kind::StartOnObstacle, robot,
-                                        "lies in a cell with no free sub-cell");
+    const int root = nodes.startNode(robot, startCell, start);
     Result result;
     result.sorties.robot = robot;
     result.sorties.charger = start;

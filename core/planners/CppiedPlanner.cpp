@@ -43,6 +43,7 @@ DetectionSummary summarise(const DetectionGrid& grid, double required) {
     summary.requiredProbability = required;
     summary.minimum = 1.0;
     double sum = 0.0;
+    double seenUpToRequired = 0.0; // for the lower bound
     for (std::size_t index = 0; index < grid.required.size(); ++index) {
         const float target = grid.required[index];
         if (std::isnan(target))
@@ -55,12 +56,14 @@ DetectionSummary summarise(const DetectionGrid& grid, double required) {
         const double seen = grid.probability[index];
         summary.minimum = std::min(summary.minimum, seen);
         sum += seen;
+        seenUpToRequired += std::min(seen, required);
         if (seen < target - 1e-6)
             ++summary.unmetTargets;
     }
     if (summary.targets == 0)
         summary.minimum = 0.0;
     summary.mean = summary.targets == 0 ? 0.0 : sum / static_cast<double>(summary.targets);
+    summary.passesNoPlanBeats = seenUpToRequired; // divided by the strip's sum in boundPasses
     summary.shareMet = summary.targets == 0 ? 1.0
                                             : 1.0 - static_cast<double>(summary.unmetTargets) /
                                                         static_cast<double>(summary.targets);
@@ -79,11 +82,12 @@ DetectionGrid detectionGrid(const Plan& plan, const DetectionLattice& lattice, c
     grid.cellSize = lattice.cellSize();
     grid.columns = lattice.whole().columns;
     grid.rows = lattice.whole().rows;
+    grid.required = requiredByPosition(plan, lattice, seen, required);
+    // Values only where a robot goes, as in the required band.
     grid.probability.assign(lattice.whole().size(), notATarget);
     for (std::size_t index = 0; index < grid.probability.size(); ++index)
-        if (seen.profileAt(index) != DetectionModel::noProfile)
+        if (!std::isnan(grid.required[index]))
             grid.probability[index] = static_cast<float>(seen.probabilities()[index]);
-    grid.required = requiredByPosition(plan, lattice, seen, required);
     return grid;
 }
 
@@ -118,9 +122,11 @@ void boundPasses(DetectionSummary& summary, const DetectionModel& model, const P
     double fastest = 0.0;
     for (const Cell& cell : plan.cells.cells())
         fastest = std::max(fastest, cell.speedMetresPerSecond);
-    if (stripSum <= 0.0 || fastest <= 0.0)
+    if (stripSum <= 0.0 || fastest <= 0.0) {
+        summary.passesNoPlanBeats = 0.0;
         return;
-    summary.passesNoPlanBeats = static_cast<double>(summary.targets) * summary.requiredProbability / stripSum;
+    }
+    summary.passesNoPlanBeats /= stripSum;
     summary.secondsPerStep = cellSize / fastest;
 }
 
@@ -129,10 +135,16 @@ void boundPasses(DetectionSummary& summary, const DetectionModel& model, const P
 // the passes and not the area. Land whose targets cannot be seen is priced as crossed once in a while.
 CellGraph priceForDetection(const CellGraph& cells, const DetectionModel& model, double required) {
     constexpr double crossedOnly = 0.25;
+    std::vector<double> passesOfProfile(static_cast<std::size_t>(model.profiles()));
+    for (int profile = 0; profile < model.profiles(); ++profile) {
+        const double passes = model.passesPerCell(profile, required);
+        passesOfProfile[static_cast<std::size_t>(profile)] = passes > 0.0 ? passes : crossedOnly;
+    }
     std::vector<Cell> priced = cells.cells();
     for (Cell& cell : priced) {
-        const double passes = model.passesPerCell(model.profileOf(cell.classValue), required);
-        cell.speedMetresPerSecond /= passes > 0.0 ? passes : crossedOnly;
+        const int profile = model.profileOf(cell.classValue);
+        if (profile != DetectionModel::noProfile)
+            cell.speedMetresPerSecond /= passesOfProfile[static_cast<std::size_t>(profile)];
     }
     return CellGraph(cells.frame(), std::move(priced), cells.adjacency());
 }
@@ -192,10 +204,8 @@ void CppiedPlanner::run(PlanningRun& run) const {
         std::vector<CoveragePath> paths(startCells.size());
         const DetectionCoverage coverage(plan.cells, lattice, model, required);
         parallelFor(startCells.size(), [&](std::size_t robot, int) {
-            paths[robot] = coverage
-                               .cover(static_cast<int>(robot), cells[robot], startCells[robot],
-                                      run.starts()[robot], run.progress())
-                               .path;
+            paths[robot] = coverage.cover(static_cast<int>(robot), cells[robot], startCells[robot],
+                                          run.starts()[robot], run.progress());
         });
         plan.paths = std::move(paths);
         return 0;

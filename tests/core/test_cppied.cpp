@@ -8,7 +8,10 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 
 using namespace mcpp;
 
@@ -199,30 +202,44 @@ class CppiedTest : public QObject {
         QCOMPARE(SegmentTour::legMetres(passes, {0.0, 0.0}, visits), 9.0);
     }
 
-    // 2-opt never leaves a tour longer than the nearest-first one it starts from: on scattered passes the
-    // legs are at most those of flying them in the order given.
-    void theTourIsNoLongerThanTheGivenOrder() {
-        std::vector<SegmentTour::Pass> passes;
-        unsigned state = 7;
-        auto next = [&state] {
-            state = state * 1103515245U + 12345U;
-            return static_cast<double>((state >> 8) % 1000);
-        };
-        for (int i = 0; i < 60; ++i) {
-            const double x = next();
-            const double y = next();
-            passes.push_back({{x, y}, {x + 20.0, y}});
+    // On small scattered cases 2-opt shortens the nearest-first tour on some and lengthens it on none, and
+    // stays within 20 % of the best of every order and direction, found by trying them all (1.147 measured;
+    // nearest-first alone is 1.216 on these cases).
+    void theTourIsNearTheBestOrder() {
+        double worst = 1.0;
+        int shortened = 0;
+        for (unsigned seed = 1; seed <= 12; ++seed) {
+            unsigned state = seed;
+            auto next = [&state] {
+                state = state * 1103515245U + 12345U;
+                return static_cast<double>((state >> 8) % 100);
+            };
+            std::vector<SegmentTour::Pass> passes;
+            for (int i = 0; i < 7; ++i) {
+                const MapPoint from{next(), next()};
+                passes.push_back({from, {from.x + next() / 4.0, from.y}});
+            }
+            const MapPoint start{0.0, 0.0};
+            const double found = SegmentTour::legMetres(passes, start, SegmentTour::order(passes, start));
+            const double nearest =
+                SegmentTour::legMetres(passes, start, SegmentTour::nearestFirst(passes, start));
+            QVERIFY(found <= nearest + 1e-9);
+            shortened += found < nearest - 1e-9 ? 1 : 0;
+            std::vector<int> order(passes.size());
+            std::iota(order.begin(), order.end(), 0);
+            double best = std::numeric_limits<double>::infinity();
+            do {
+                for (unsigned flips = 0; flips < (1U << passes.size()); ++flips) {
+                    std::vector<SegmentTour::Visit> visits;
+                    for (std::size_t k = 0; k < order.size(); ++k)
+                        visits.push_back({order[k], ((flips >> k) & 1U) != 0});
+                    best = std::min(best, SegmentTour::legMetres(passes, start, visits));
+                }
+            } while (std::next_permutation(order.begin(), order.end()));
+            worst = std::max(worst, found / best);
         }
-        std::vector<SegmentTour::Visit> given;
-        for (int i = 0; i < 60; ++i)
-            given.push_back({i, false});
-        const std::vector<SegmentTour::Visit> visits = SegmentTour::order(passes, {0.0, 0.0});
-        std::vector<int> seen(60, 0);
-        for (const SegmentTour::Visit& visit : visits)
-            ++seen[static_cast<std::size_t>(visit.pass)];
-        QVERIFY(std::all_of(seen.begin(), seen.end(), [](int count) { return count == 1; }));
-        QVERIFY(SegmentTour::legMetres(passes, {0.0, 0.0}, visits) <
-                0.5 * SegmentTour::legMetres(passes, {0.0, 0.0}, given));
+        QVERIFY2(worst <= 1.2, qPrintable(QString::number(worst)));
+        QVERIFY(shortened > 0);
     }
 };
 

@@ -682,10 +682,13 @@ std::vector<std::string> checkDetection(const PlanningProblem& problem, const Pl
                 violations.push_back(where + " has values off the free sub-cells");
             continue;
         }
-        if (std::abs(grid.probability[index] - recount.probability[index]) > 1e-4)
+        const bool covered = plan.regions.robotOfCell[static_cast<std::size_t>(cell)] >= 0;
+        if (covered != !std::isnan(grid.probability[index]))
+            violations.push_back(where +
+                                 " has a probability where no robot covers it, or none where one does");
+        if (covered && std::abs(grid.probability[index] - recount.probability[index]) > 1e-4)
             violations.push_back(
                 text(where + " probability", grid.probability[index], recount.probability[index]));
-        const bool covered = plan.regions.robotOfCell[static_cast<std::size_t>(cell)] >= 0;
         if (covered != !std::isnan(grid.required[index]))
             violations.push_back(where + " is a target where no robot covers it, or the reverse");
         if (covered && grid.required[index] > 0.0F && recount.probability[index] < required - 1e-6)
