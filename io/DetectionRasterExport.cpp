@@ -15,20 +15,15 @@ using internal::QuietGdalErrors;
 // No probability is negative, and QGIS shows a number as nodata more readily than NaN.
 constexpr float noDetectionData = -1.0F;
 
-Status describe(GDALDataset& dataset, const ExportContext& context, const DetectionGrid& grid,
-                const std::string& path) {
-    const double metresPerUnit = context.georeference.metresPerUnit();
-    double transform[6] = {
-        grid.originX / metresPerUnit,  grid.cellSize / metresPerUnit, 0.0, grid.originY / metresPerUnit, 0.0,
-        -grid.cellSize / metresPerUnit};
-    if (dataset.SetGeoTransform(transform) != CE_None)
-        return Status::failure(path + ": cannot set the grid's position" + QuietGdalErrors::detail());
-    if (context.georeference.hasCrs() && dataset.SetProjection(context.georeference.wkt().c_str()) != CE_None)
-        return Status::failure(path + ": cannot set the CRS" + QuietGdalErrors::detail());
-    dataset.SetMetadataItem("MCPP_VALUES", "band 1: chance a target in the cell is seen by the plan; band 2: "
-                                           "chance it had to be seen (0 where the land cover hides targets); "
-                                           "-1 where no robot goes");
-    dataset.SetMetadataItem("MCPP_PLANNER", context.plan.planner.c_str());
+Status describe(internal::DatasetFile& file, const ExportContext& context, const DetectionGrid& grid) {
+    if (Status placed = file.placeOnMap(context.georeference, grid.originX, grid.originY, grid.cellSize);
+        !placed)
+        return placed;
+    file.dataset().SetMetadataItem("MCPP_VALUES",
+                                   "band 1: chance a target in the cell is seen by the plan; band 2: "
+                                   "chance it had to be seen (0 where the land cover hides targets); "
+                                   "-1 where no robot goes");
+    file.dataset().SetMetadataItem("MCPP_PLANNER", context.plan.planner.c_str());
     return {};
 }
 
@@ -36,18 +31,19 @@ Status writeBand(GDALRasterBand& band, const std::vector<float>& values, const D
                  const char* description, const ExportContext& context, const std::string& path) {
     band.SetDescription(description);
     band.SetNoDataValue(noDetectionData);
-    std::vector<float> row(static_cast<std::size_t>(grid.columns));
-    for (int r = 0; r < grid.rows; ++r) {
+    std::vector<float> line(static_cast<std::size_t>(grid.columns));
+    for (int row = 0; row < grid.rows; ++row) {
         if (context.cancelled())
             return Status::failure(path + ": cancelled");
-        for (int c = 0; c < grid.columns; ++c) {
-            const float value = values[static_cast<std::size_t>(r) * static_cast<std::size_t>(grid.columns) +
-                                       static_cast<std::size_t>(c)];
-            row[static_cast<std::size_t>(c)] = std::isnan(value) ? noDetectionData : value;
+        for (int column = 0; column < grid.columns; ++column) {
+            const float value =
+                values[static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.columns) +
+                       static_cast<std::size_t>(column)];
+            line[static_cast<std::size_t>(column)] = std::isnan(value) ? noDetectionData : value;
         }
-        if (band.RasterIO(GF_Write, 0, r, grid.columns, 1, row.data(), grid.columns, 1, GDT_Float32, 0, 0,
+        if (band.RasterIO(GF_Write, 0, row, grid.columns, 1, line.data(), grid.columns, 1, GDT_Float32, 0, 0,
                           nullptr) != CE_None)
-            return Status::failure(path + ": cannot write row " + std::to_string(r) +
+            return Status::failure(path + ": cannot write row " + std::to_string(row) +
                                    QuietGdalErrors::detail());
     }
     return {};
@@ -59,8 +55,8 @@ Status writeDetectionRaster(const ExportContext& context, const std::string& pat
     QuietGdalErrors quiet;
     const DetectionLayer* layer = detectionLayerOf(context.plan);
     if (layer == nullptr)
-        return Status::failure(path + ": the plan has no detection layer (only " +
-                               std::string("CPPIED plans model what the sensor sees)"));
+        return Status::failure(path + ": the plan has no detection layer (only CPPIED plans model what the "
+                                      "sensor sees)");
     const DetectionGrid& grid = layer->grid();
     if (grid.columns == 0 || grid.rows == 0)
         return Status::failure(path + ": the plan has no cells");
@@ -69,9 +65,9 @@ Status writeDetectionRaster(const ExportContext& context, const std::string& pat
                                    "PREDICTOR=3", "ZLEVEL=6",       "BIGTIFF=IF_SAFER", nullptr};
     if (Status status = file.create("GTiff", grid.columns, grid.rows, 2, GDT_Float32, options); !status)
         return status;
-    GDALDataset& dataset = file.dataset();
-    if (Status status = describe(dataset, context, grid, path); !status)
+    if (Status status = describe(file, context, grid); !status)
         return status;
+    GDALDataset& dataset = file.dataset();
     if (Status status = writeBand(*dataset.GetRasterBand(1), grid.probability, grid, "detection probability",
                                   context, path);
         !status)

@@ -65,21 +65,12 @@ Status writeRows(GDALRasterBand& band, const LabelGrid& labels, const Encoding& 
     return {};
 }
 
-Status describe(GDALDataset& dataset, const ExportContext& context, const LabelGrid& labels,
-                const std::string& path) {
-    const double metresPerUnit = context.georeference.metresPerUnit();
-    double transform[6] = {labels.originX / metresPerUnit,
-                           labels.pixelSize / metresPerUnit,
-                           0.0,
-                           labels.originY / metresPerUnit,
-                           0.0,
-                           -labels.pixelSize / metresPerUnit};
-    if (dataset.SetGeoTransform(transform) != CE_None)
-        return Status::failure(path + ": cannot set the grid's position" + QuietGdalErrors::detail());
-    if (context.georeference.hasCrs() &&
-        dataset.SetProjection(context.georeference.wkt().c_str()) != CE_None) {
-        return Status::failure(path + ": cannot set the CRS" + QuietGdalErrors::detail());
-    }
+Status describe(internal::DatasetFile& file, const ExportContext& context, const LabelGrid& labels) {
+    if (Status placed =
+            file.placeOnMap(context.georeference, labels.originX, labels.originY, labels.pixelSize);
+        !placed)
+        return placed;
+    GDALDataset& dataset = file.dataset();
     dataset.SetMetadataItem("MCPP_VALUES",
                             "robot number from 1; 255 (65535 as UInt16) passable but unreachable; 0 nodata");
     dataset.SetMetadataItem("MCPP_PLANNER", context.plan.planner.c_str());
@@ -100,9 +91,9 @@ Status writeRegionRaster(const ExportContext& context, const std::string& path) 
                                    "PREDICTOR=2", "ZLEVEL=6",       "BIGTIFF=IF_SAFER", nullptr};
     if (Status status = file.create("GTiff", labels.columns, labels.rows, 1, encoding.type, options); !status)
         return status;
-    GDALDataset& dataset = file.dataset();
-    if (Status status = describe(dataset, context, labels, path); !status)
+    if (Status status = describe(file, context, labels); !status)
         return status;
+    GDALDataset& dataset = file.dataset();
     GDALRasterBand& band = *dataset.GetRasterBand(1);
     band.SetNoDataValue(encoding.nodata);
     GDALColorTable table = colourTable(robots, encoding);

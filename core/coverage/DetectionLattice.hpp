@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/coverage/LatticePosition.hpp"
+#include "core/coverage/LatticeWindow.hpp"
 #include "core/model/Cell.hpp"
 #include "core/model/CellGraph.hpp"
 #include "core/model/MapPoint.hpp"
@@ -9,32 +11,6 @@
 #include <vector>
 
 namespace mcpp {
-
-// A place on the sub-cell lattice: column east, row south, from the grid's north-west corner.
-struct LatticePosition {
-    int column = 0;
-    int row = 0;
-};
-
-// A rectangle of lattice positions, with row-major indices inside it.
-struct LatticeWindow {
-    int column = 0;
-    int row = 0;
-    int columns = 0;
-    int rows = 0;
-
-    [[nodiscard]] bool contains(LatticePosition position) const {
-        return position.column >= column && position.row >= row && position.column < column + columns &&
-               position.row < row + rows;
-    }
-    [[nodiscard]] std::size_t index(LatticePosition position) const {
-        return static_cast<std::size_t>(position.row - row) * static_cast<std::size_t>(columns) +
-               static_cast<std::size_t>(position.column - column);
-    }
-    [[nodiscard]] std::size_t size() const {
-        return static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
-    }
-};
 
 // The free sub-cells of a single-level grid as a lattice of squares of half a cell: where a detection
 // planner's passes run and what they see.

@@ -41,6 +41,19 @@ DatasetFile::~DatasetFile() {
     VSIRmdirRecursive(memoryFolder_.c_str()); // the file and any journal a driver left beside it
 }
 
+Status DatasetFile::placeOnMap(const GeoReference& georeference, double originX, double originY,
+                               double pixelSize) {
+    const double metresPerUnit = georeference.metresPerUnit();
+    double transform[6] = {
+        originX / metresPerUnit,   pixelSize / metresPerUnit, 0.0, originY / metresPerUnit, 0.0,
+        -pixelSize / metresPerUnit};
+    if (dataset_->SetGeoTransform(transform) != CE_None)
+        return Status::failure(path_ + ": cannot set the grid's position" + QuietGdalErrors::detail());
+    if (georeference.hasCrs() && dataset_->SetProjection(georeference.wkt().c_str()) != CE_None)
+        return Status::failure(path_ + ": cannot set the CRS" + QuietGdalErrors::detail());
+    return {};
+}
+
 Status DatasetFile::create(const char* driverName, int columns, int rows, int bands, GDALDataType type,
                            const char* const* options) {
     ensureGdalRegistered();

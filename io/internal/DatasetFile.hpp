@@ -3,6 +3,7 @@
 // Private to mcpp_io.
 
 #include "io/AtomicFile.hpp"
+#include "io/GeoReference.hpp"
 #include "io/Result.hpp"
 #include "io/internal/GdalSupport.hpp"
 
@@ -25,6 +26,10 @@ class DatasetFile {
                                 const char* const* options = nullptr);
     [[nodiscard]] GDALDataset& dataset() { return *dataset_; }
     [[nodiscard]] const std::string& path() const { return path_; }
+    // Places a raster of square pixels of `pixelSize` planning metres, its north-west corner at
+    // (originX, originY), in the map's CRS (its own units); the CRS is written when the map has one.
+    [[nodiscard]] Status placeOnMap(const GeoReference& georeference, double originX, double originY,
+                                    double pixelSize);
     // Closes the dataset (flushing it) and writes the file into place: exports left to the system to flush,
     // files the user drew synced to the disk (io::Sync).
     [[nodiscard]] Status commit(Sync sync);

@@ -697,6 +697,18 @@ void TestBatchEndToEnd::detectionPlansWriteTheDetectionRaster() {
         GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     QVERIFY2(dataset != nullptr, path.c_str());
     QCOMPARE(dataset->GetRasterCount(), 2);
+    // On the plan's lattice: sub-cells of the grid, anchored where regions.tif (the same sub-cells) is.
+    const std::string regionsPath = (out + "/regions.tif").toStdString();
+    const std::unique_ptr<GDALDataset> regions(GDALDataset::FromHandle(
+        GDALOpenEx(regionsPath.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    QVERIFY(regions != nullptr);
+    double placed[6] = {};
+    double regionsPlaced[6] = {};
+    QCOMPARE(dataset->GetGeoTransform(placed), CE_None);
+    QCOMPARE(regions->GetGeoTransform(regionsPlaced), CE_None);
+    for (const int term : {0, 1, 3, 5})
+        QVERIFY2(std::abs(placed[term] - regionsPlaced[term]) < 1e-6,
+                 qPrintable(QString("%1: %2 vs %3").arg(term).arg(placed[term]).arg(regionsPlaced[term])));
     QVERIFY(QString(dataset->GetProjectionRef()).contains("UTM zone 12N"));
     const int columns = dataset->GetRasterXSize();
     const int rows = dataset->GetRasterYSize();
@@ -711,6 +723,8 @@ void TestBatchEndToEnd::detectionPlansWriteTheDetectionRaster() {
     std::size_t targets = 0;
     double minimum = 1.0;
     for (std::size_t i = 0; i < seen.size(); ++i) {
+        // Nodata (-1) in both bands where no robot goes, values in both elsewhere.
+        QCOMPARE(seen[i] < 0.0F, required[i] < 0.0F);
         if (required[i] <= 0.0F)
             continue;
         ++targets;
