@@ -41,10 +41,7 @@ std::optional<LatticePosition> DetectionLattice::centreAt(MapPoint point) const 
 }
 
 SubCell DetectionLattice::subCellAt(LatticePosition position) {
-    const bool east = position.column % 2 == 1;
-    if (position.row % 2 == 1)
-        return east ? SubCell::SouthEast : SubCell::SouthWest;
-    return east ? SubCell::NorthEast : SubCell::NorthWest;
+    return subCellOf(position.column % 2 == 1, position.row % 2 == 1);
 }
 
 } // namespace mcpp

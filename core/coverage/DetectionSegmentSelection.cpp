@@ -168,15 +168,7 @@ DetectionSegmentSelection::unmetLines(const std::vector<char>& own, const Detect
 
 std::size_t DetectionSegmentSelection::unmetTargets(const std::vector<char>& own,
                                                     const DetectionAccumulator& seen) const {
-    const LatticeWindow& window = seen.window();
-    std::size_t unmet = 0;
-    for (int row = window.row; row < window.row + window.rows; ++row)
-        for (int column = window.column; column < window.column + window.columns; ++column) {
-            const LatticePosition position{column, row};
-            if (isTarget(own, seen, position) && seen.at(position) < required_ - metTolerance)
-                ++unmet;
-        }
-    return unmet;
+    return unmetLines(own, seen).targets;
 }
 
 std::vector<DetectionSegment> DetectionSegmentSelection::select(const std::vector<char>& own,

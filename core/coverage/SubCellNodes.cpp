@@ -24,12 +24,6 @@ bool isSouth(SubCell subCell) {
     return subCell == SubCell::SouthWest || subCell == SubCell::SouthEast;
 }
 
-SubCell subCellOf(bool east, bool south) {
-    if (south)
-        return east ? SubCell::SouthEast : SubCell::SouthWest;
-    return east ? SubCell::NorthEast : SubCell::NorthWest;
-}
-
 // The side neighbour of `cell` at (column, row) among the grid's neighbours, or -1.
 int neighbourAt(const CellGraph& graph, int cell, int column, int row) {
     for (const int other : graph.neighbours(cell)) {

@@ -14,6 +14,13 @@ inline constexpr std::array<SubCell, 4> subCellsCounterClockwise{SubCell::NorthW
                                                                  SubCell::SouthEast, SubCell::NorthEast};
 inline constexpr std::uint8_t allSubCells = 0b1111;
 
+// The sub-cell in the east or west half and the south or north half of a cell.
+[[nodiscard]] constexpr SubCell subCellOf(bool east, bool south) {
+    if (south)
+        return east ? SubCell::SouthEast : SubCell::SouthWest;
+    return east ? SubCell::NorthEast : SubCell::NorthWest;
+}
+
 // One square of a planning decomposition: a quadtree leaf, or a cell of a uniform grid. A robot covers it
 // by passing the centres of its free sub-cells, whose side (half the cell's) is the robot's swath there.
 struct Cell {
