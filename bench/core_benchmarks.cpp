@@ -8,8 +8,6 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <benchmark/benchmark.h>
-#include <random>
-#include <set>
 #include <string>
 #include <sys/resource.h>
 
@@ -21,28 +19,6 @@ double peakResidentMegabytes() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
-// The DARP / DMSTC set-up: one land cover, 15% random obstacles, random starts on free cells.
-PlanningProblem uniformWithObstacles(int size, int robots, std::uint32_t seed) {
-    std::mt19937 random(seed);
-    std::bernoulli_distribution obstacle(0.15);
-    std::vector<bool> blocked(static_cast<std::size_t>(size * size));
-    for (std::size_t i = 0; i < blocked.size(); ++i)
-        blocked[i] = obstacle(random);
-    auto problem = test::uniformProblem(size, size, 10.0, blocked, {});
-    std::uniform_int_distribution<int> position(0, size - 1);
-    std::set<std::pair<int, int>> used;
-    while (static_cast<int>(problem.starts.size()) < robots) {
-        const int column = position(random);
-        const int row = position(random);
-        if (blocked[static_cast<std::size_t>(row * size + column)] || !used.insert({column, row}).second)
-            continue;
-        // The north-west sub-cell centre: robots start on the coverage grid, as in DARP.
-        const MapPoint centre = test::pixelCentre(problem.grid, column, row);
-        problem.starts.push_back({centre.x - 2.5, centre.y + 2.5});
-    }
-    return problem;
 }
 
 // Three land covers (FOV 5, 10, 20 m) in patches, 5% obstacles; `size` bottom cells a side.
@@ -97,27 +73,30 @@ void runPlanner(benchmark::State& state, PlanningProblem problem,
 }
 
 void uniformGrid(benchmark::State& state, const std::string& planner) {
-    runPlanner(state,
-               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
-               planner);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        planner);
 }
 
 // Turns free (turn_s 0): the times and ratios of plans before turns were timed.
 void uniformGridFreeTurns(benchmark::State& state, const std::string& planner) {
     ParameterValues freeTurns;
     freeTurns.set("turn_s", 0.0);
-    runPlanner(state,
-               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
-               planner, freeTurns);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        planner, freeTurns);
 }
 
 // MCPP-MLCT's balance-for-turns trade: fewer_turns_slack of range(2) tenths of a percent.
 void uniformGridTurnSlack(benchmark::State& state) {
     ParameterValues slack;
     slack.set("fewer_turns_slack", static_cast<double>(state.range(2)) / 10.0);
-    runPlanner(state,
-               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
-               "mcpp-mlct", slack);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        "mcpp-mlct", slack);
 }
 
 void multiCoverMapFreeTurns(benchmark::State& state) {
@@ -131,9 +110,10 @@ void multiCoverMapFreeTurns(benchmark::State& state) {
 void uniformGridBalancedMstc(benchmark::State& state) {
     ParameterValues balanced;
     balanced.set("balanced", true);
-    runPlanner(state,
-               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
-               "mstc", balanced);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        "mstc", balanced);
 }
 
 // Wavefront coverage on a battery of range(2) seconds with 600 s recharges (1 m/s: a 49 x 49 grid of 10 m
@@ -142,9 +122,10 @@ void uniformGridBattery(benchmark::State& state) {
     ParameterValues battery;
     battery.set("battery_s", static_cast<double>(state.range(2)));
     battery.set("recharge_s", 600.0);
-    runPlanner(state,
-               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
-               "wavefront-battery", battery);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        "wavefront-battery", battery);
 }
 
 // CPPIED with a sensor of range(2) percent p0 on the uniform grids (one land cover, FOV one pixel), every
@@ -152,9 +133,10 @@ void uniformGridBattery(benchmark::State& state) {
 void uniformGridDetection(benchmark::State& state) {
     ParameterValues detection;
     detection.set("detection_probability", static_cast<double>(state.range(2)) / 100.0);
-    runPlanner(state,
-               uniformWithObstacles(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
-               "cppied", detection);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        "cppied", detection);
 }
 
 // CPPIED on the multi-cover maps: three land covers of different fields of view.

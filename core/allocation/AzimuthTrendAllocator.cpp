@@ -1,6 +1,6 @@
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 
-#include "core/allocation/BorderExchange.hpp"
+#include "core/allocation/PieceSettlement.hpp"
 #include "core/allocation/StartComponents.hpp"
 #include "core/model/LocalConnectivity.hpp"
 
@@ -606,66 +606,6 @@ class Allocation {
     std::vector<char> handOverPossible_;
 };
 
-// Whether every region is within `slack` of the mean of `robots`' costs.
-bool within(const RegionAllocation& regions, const std::vector<int>& robots, double slack) {
-    double total = 0.0;
-    for (int robot : robots)
-        total += regions.costSeconds[static_cast<std::size_t>(robot)];
-    const double fairShare = total / static_cast<double>(robots.size());
-    return std::all_of(robots.begin(), robots.end(), [&](int robot) {
-        return std::abs(regions.costSeconds[static_cast<std::size_t>(robot)] - fairShare) <= slack;
-    });
-}
-
-// The cell moves of Allocation only pass single cells a donor can spare nearby. A region walled in by thin
-// neighbours (a band one cell wide wrapped round it) gets nothing that way: on the 49 x 49 benchmark grid
-// with 20 robots two regions were left at 1 700 s of cover against 2 100 s. BorderExchange also passes a
-// cell with what hangs on it, and settles every part of the map whose costs are further than a cell from
-// their fair share.
-void settleWithPieces(const CellGraph& graph, RegionAllocation& regions) {
-    // Most allocations are settled already: then the parts of the map need not be found.
-    double largestCell = 0.0;
-    for (std::size_t cell = 0; cell < graph.size(); ++cell)
-        largestCell = std::max(largestCell, graph.cell(static_cast<int>(cell)).coverSeconds());
-    std::vector<int> everyRobot(regions.startCell.size());
-    std::iota(everyRobot.begin(), everyRobot.end(), 0);
-    if (everyRobot.size() < 2 || within(regions, everyRobot, largestCell))
-        return;
-    std::vector<int> scratch(graph.size(), -1);
-    for (const StartComponent& part : componentsWithStarts(graph, regions.startCell)) {
-        if (part.robots.size() < 2)
-            continue;
-        if (within(regions, part.robots, largestCell))
-            continue;
-        const CellIndexScope local(scratch, part.cells);
-        std::vector<int> regionOfRobot(regions.startCell.size(), -1);
-        std::vector<int> starts;
-        for (std::size_t index = 0; index < part.robots.size(); ++index) {
-            regionOfRobot[static_cast<std::size_t>(part.robots[index])] = static_cast<int>(index);
-            starts.push_back(local[regions.startCell[static_cast<std::size_t>(part.robots[index])]]);
-        }
-        std::vector<double> weights;
-        std::vector<int> owner;
-        for (int cell : part.cells) {
-            weights.push_back(graph.cell(cell).coverSeconds());
-            owner.push_back(
-                regionOfRobot[static_cast<std::size_t>(regions.robotOfCell[static_cast<std::size_t>(cell)])]);
-        }
-        BorderExchange exchange(graph, part.cells, local, std::move(weights), starts,
-                                [](int, int, int) { return std::int64_t{0}; });
-        exchange.balance(owner, largestCell);
-        for (std::size_t i = 0; i < part.cells.size(); ++i) {
-            const int robot = part.robots[static_cast<std::size_t>(owner[i])];
-            regions.robotOfCell[static_cast<std::size_t>(part.cells[i])] = robot;
-        }
-    }
-    std::fill(regions.costSeconds.begin(), regions.costSeconds.end(), 0.0);
-    for (std::size_t cell = 0; cell < regions.robotOfCell.size(); ++cell)
-        if (regions.robotOfCell[cell] >= 0)
-            regions.costSeconds[static_cast<std::size_t>(regions.robotOfCell[cell])] +=
-                graph.cell(static_cast<int>(cell)).coverSeconds();
-}
-
 } // namespace
 
 ParameterSpec AzimuthTrendAllocator::rebalanceIterationsParameter() {
@@ -685,7 +625,7 @@ RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const s
         rebalanceIterations_ > 0 ? rebalanceIterations_ : std::max(1000, static_cast<int>(graph.size()));
     (void)allocation.rebalance(cap);
     RegionAllocation result = allocation.result();
-    settleWithPieces(graph, result);
+    settleRegionsWithPieces(graph, result);
     progress.report("allocation", 1.0);
     return result;
 }

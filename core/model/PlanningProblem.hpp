@@ -3,6 +3,7 @@
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
+#include "core/model/SpeedEvent.hpp"
 #include "core/parameters/PlannerChoice.hpp"
 
 #include <vector>
@@ -16,6 +17,8 @@ struct PlanningProblem {
     // Each robot's own battery in seconds, for planners that fly on batteries; missing or 0: the planner's
     // battery_s.
     std::vector<double> batterySeconds;
+    // What happens to the robots during the mission (slowing down, stopping), for planners that simulate it.
+    std::vector<SpeedEvent> events;
     PlannerChoice planner;
 };
 

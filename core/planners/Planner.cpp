@@ -3,6 +3,7 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningError.hpp"
+#include "core/model/SpeedEventCheck.hpp"
 #include "core/model/StartPointCheck.hpp"
 #include "core/model/TurnTimeModel.hpp"
 #include "core/parameters/ParameterResolution.hpp"
@@ -45,6 +46,24 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
     }
 }
 
+void checkEvents(const PlanningProblem& problem) {
+    for (std::size_t index = 0; index < problem.events.size(); ++index)
+        if (const auto wrong = speedEventProblem(problem.events[index], problem.starts.size()))
+            throw PlanningError(Kind::InvalidParameter, "event " + std::to_string(index + 1) + " " +
+                                                            wrong->field + ": " + wrong->detail);
+}
+
+std::string eventsIgnoredMessage(const PlannerDescription& planner) {
+    std::string simulating;
+    for (const PlannerDescription& other : plannerDescriptions())
+        if (other.simulatesEvents)
+            simulating += (simulating.empty() ? "" : ", ") + other.name;
+    return planner.label +
+           " plans without events: the mission's events are left out (planners that "
+           "play them: " +
+           simulating + ")";
+}
+
 std::string confinedRobotMessage(const ConfinedRobot& confined) {
     const std::string others =
         confined.robotsInPocket > 1
@@ -74,13 +93,21 @@ PlannerDescription Planner::description() const {
 }
 
 Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progress) const {
+    return plan(problem, problem.planner.parameters, progress);
+}
+
+Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
+                   const ProgressReporter& progress) const {
     const PlannerDescription planner = description();
-    ParameterValues parameters = resolveParameters(planner.parameters, problem.planner.parameters);
+    ParameterValues parameters = resolveParameters(planner.parameters, given);
     checkStarts(planner, problem, parameters.boolean("snap_starts_to_free_cells"));
+    checkEvents(problem);
     Plan plan;
     plan.planner = planner.name;
     plan.parameters = parameters;
     PlanningRun planningRun(problem, std::move(parameters), progress, plan);
+    if (!problem.events.empty() && !planner.simulatesEvents)
+        planningRun.addIssue(IssueSeverity::Warning, "events-ignored", eventsIgnoredMessage(planner));
     run(planningRun);
     planningRun.stage("metrics", [&] {
         for (CoveragePath& path : plan.paths)

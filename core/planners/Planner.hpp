@@ -19,6 +19,9 @@ class Planner {
     [[nodiscard]] PlannerDescription description() const;
     [[nodiscard]] std::string name() const { return describe().name; }
     [[nodiscard]] Plan plan(const PlanningProblem& problem, const ProgressReporter& progress) const;
+    // The same with parameters given here instead of the problem's (a planner that runs another beside it).
+    [[nodiscard]] Plan plan(const PlanningProblem& problem, const ParameterValues& given,
+                            const ProgressReporter& progress) const;
 
     // Parameters the base class reads for every planner.
     [[nodiscard]] static ParameterSpec snapStartsParameter();

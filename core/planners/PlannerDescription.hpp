@@ -23,6 +23,7 @@ struct PlannerDescription {
     std::string label;   // for people, e.g. "MCPP-MLCT"
     std::string summary; // one line for --help and the planner list
     bool singleRobot = false;
+    bool simulatesEvents = false; // plays the problem's events; other planners warn that they ignore them
     PlannerPromises promises;
     std::vector<ParameterSpec> parameters; // the planner's and its stages', then those every planner has
 };

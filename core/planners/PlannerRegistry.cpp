@@ -4,6 +4,7 @@
 #include "core/planners/CppiedPlanner.hpp"
 #include "core/planners/DarpPlanner.hpp"
 #include "core/planners/DarpTurnsPlanner.hpp"
+#include "core/planners/MdstcPlanner.hpp"
 #include "core/planners/FullSpiralStcPlanner.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/MstcPlanner.hpp"
@@ -32,6 +33,7 @@ const std::vector<Factory>& factories() {
         factory<MstcPlanner>(),
         factory<WavefrontBatteryPlanner>(),
         factory<CppiedPlanner>(),
+        factory<MdstcPlanner>(),
     };
     return all;
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
+#include <utility>
 
 namespace mcpp::test {
 
@@ -26,6 +28,27 @@ PlanningProblem uniformProblem(int columns, int rows, double pixelSize, const st
     problem.classes.set({1, "grass", 0x88cc44, 1.0, pixelSize / 2.0, true});
     problem.classes.set({99, "water", 0x2255cc, 0.0, pixelSize / 2.0, false});
     problem.starts = starts;
+    return problem;
+}
+
+PlanningProblem obstacleGridProblem(int size, int robots, std::uint32_t seed) {
+    std::mt19937 random(seed);
+    std::bernoulli_distribution obstacle(0.15);
+    std::vector<bool> blocked(static_cast<std::size_t>(size * size));
+    for (std::size_t i = 0; i < blocked.size(); ++i)
+        blocked[i] = obstacle(random);
+    auto problem = uniformProblem(size, size, 10.0, blocked, {});
+    std::uniform_int_distribution<int> position(0, size - 1);
+    std::set<std::pair<int, int>> used;
+    while (static_cast<int>(problem.starts.size()) < robots) {
+        const int column = position(random);
+        const int row = position(random);
+        if (blocked[static_cast<std::size_t>(row * size + column)] || !used.insert({column, row}).second)
+            continue;
+        // The north-west sub-cell centre: robots start on the coverage grid, as in DARP.
+        const MapPoint centre = pixelCentre(problem.grid, column, row);
+        problem.starts.push_back({centre.x - 2.5, centre.y + 2.5});
+    }
     return problem;
 }
 

@@ -39,6 +39,10 @@ struct RandomMapSpec {
                                              const std::vector<bool>& blocked,
                                              const std::vector<MapPoint>& starts);
 
+// The DARP / DMSTC set-up: size x size pixels of one land cover (10 m pixels, FOV 5 m, 1 m/s), 15 % random
+// obstacles, robots at random free cells. Deterministic for a seed.
+[[nodiscard]] PlanningProblem obstacleGridProblem(int size, int robots, std::uint32_t seed);
+
 // A map drawn as text, north row first, one-metre pixels that are one sub-cell each (FOV 1 m, so cells of
 // 2 x 2 pixels): '#' water, 'm' mud (half speed), anything else grass. Starts are given in metres east and
 // south of the north-west corner.

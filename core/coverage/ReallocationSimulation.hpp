@@ -1,0 +1,63 @@
+#pragma once
+
+#include "core/allocation/RemainingWorkExchange.hpp"
+#include "core/coverage/DynamicTreeWalk.hpp"
+#include "core/model/CellGraph.hpp"
+#include "core/model/CoveragePath.hpp"
+#include "core/model/ProgressReporter.hpp"
+#include "core/model/RobotTimeline.hpp"
+#include "core/model/SpeedEvent.hpp"
+#include "core/model/SpeedSchedule.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace mcpp {
+
+// MDSTC as the mission unfolds (seed 003): regions grown from the starts, each robot on its DSTC walk, and
+// the exchange moving free border cells toward whoever will finish first, at a steady rhythm and whenever
+// an event changes a robot's speed, a robot stops or one runs out of work. Robots act in the order of their
+// clocks, one cell move at a time; a stopped robot's unfinished cells go back to the pool for the others.
+class ReallocationSimulation {
+  public:
+    struct Result {
+        std::vector<CoveragePath> paths;   // the driven paths, by robot (waypoints only; measured later)
+        std::vector<RobotTimeline> robots; // when each point is reached, under the events
+        std::vector<int> firstRegions;     // by cell: the region expansion's robot
+        std::vector<int> finalRegions;     // by cell: the robot that covered it, -1 for none
+        std::vector<int> uncoveredCells;   // reachable cells nobody covered (every robot near them stopped)
+    };
+
+    ReallocationSimulation(const CellGraph& graph, std::vector<SpeedEvent> events);
+
+    [[nodiscard]] Result run(const std::vector<int>& startCells, const std::vector<MapPoint>& starts,
+                             const ProgressReporter& progress);
+
+  private:
+    enum class State { Driving, Idle, Stopped };
+    struct Robot {
+        std::unique_ptr<DynamicTreeWalk> walk;
+        SpeedSchedule schedule;
+        std::vector<double> secondsAt; // real time at each waypoint so far
+        double clock = 0.0;            // real time at its last waypoint, or when it last woke
+        State state = State::Driving;
+    };
+
+    [[nodiscard]] std::vector<int> firstDivision(const std::vector<int>& startCells) const;
+    int exchange(double now, int maxMoves);
+    [[nodiscard]] bool act(int robot);
+    void stop(int robot, std::size_t reachedWaypoints);
+    void timeNewWaypoints(int robot);
+    [[nodiscard]] Result finish();
+
+    const CellGraph& graph_;
+    std::vector<SpeedEvent> events_;
+    SubCellNodes nodes_;
+    RemainingWorkExchange exchange_;
+    std::vector<int> owner_;
+    std::vector<char> entered_;
+    std::vector<int> firstRegions_;
+    std::vector<Robot> robots_;
+};
+
+} // namespace mcpp

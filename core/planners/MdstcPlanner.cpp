@@ -1,0 +1,114 @@
+#include "core/planners/MdstcPlanner.hpp"
+
+#include "core/coverage/ReallocationSimulation.hpp"
+#include "core/model/HumanUnits.hpp"
+#include "core/model/SpeedSchedule.hpp"
+#include "core/model/TimelineLayer.hpp"
+#include "core/model/TurnTimeModel.hpp"
+#include "core/planners/GridStage.hpp"
+#include "core/planners/MlctPlanner.hpp"
+#include "core/planners/PlanningRun.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace mcpp {
+namespace {
+
+constexpr const char* compareKey = "compare_static";
+
+// The static plan's parameters: MCPP-MLCT's defaults, with this run's turn model and start snapping.
+ParameterValues staticParameters(const ParameterValues& own) {
+    ParameterValues given;
+    for (const ParameterSpec& shared :
+         {TurnTimeModel::turnSecondsParameter(), TurnTimeModel::accelerationParameter(),
+          Planner::snapStartsParameter()})
+        if (const ParameterValue* value = own.find(shared.key))
+            given.set(shared.key, *value);
+    return given;
+}
+
+// When each robot of the static plan would be done under the events.
+std::vector<double> staticCompletions(const Plan& plan, const std::vector<SpeedEvent>& events) {
+    std::vector<double> completions;
+    for (const CoveragePath& path : plan.paths)
+        completions.push_back(SpeedSchedule(events, path.robot).finishTime(0.0, path.timeSeconds));
+    return completions;
+}
+
+RegionAllocation regionsOf(const CellGraph& cells, const std::vector<int>& robotOfCell,
+                           const std::vector<int>& startCells) {
+    RegionAllocation regions;
+    regions.robotOfCell = robotOfCell;
+    regions.startCell = startCells;
+    regions.costSeconds.assign(startCells.size(), 0.0);
+    for (std::size_t cell = 0; cell < robotOfCell.size(); ++cell)
+        if (robotOfCell[cell] >= 0)
+            regions.costSeconds[static_cast<std::size_t>(robotOfCell[cell])] +=
+                cells.cell(static_cast<int>(cell)).coverSeconds();
+    return regions;
+}
+
+void reportLeftUncovered(PlanningRun& run, const std::vector<int>& uncovered) {
+    if (uncovered.empty())
+        return;
+    double area = 0.0;
+    for (const int cell : uncovered)
+        area += run.plan().cells.cell(cell).passableAreaSquareMetres;
+    run.addIssue(IssueSeverity::Warning, "left-uncovered",
+                 formatArea(area) + " stays uncovered: every robot that could reach it stopped first");
+}
+
+} // namespace
+
+PlannerDescription MdstcPlanner::describe() const {
+    PlannerDescription description;
+    description.name = plannerName;
+    description.label = "MDSTC";
+    description.summary =
+        "regions re-divided while robots drive, for missions where robots slow down or stop";
+    description.simulatesEvents = true;
+    // A region may gain cells it reaches only by a detour, through other regions.
+    description.promises.regionsConnected = false;
+    description.promises.pathsCoverOwnRegion = false;
+    description.parameters = {
+        DecompositionOptions::blockedThresholdParameter(),
+        booleanParameter(compareKey, "Compare with a static plan", true,
+                         "Also plan MCPP-MLCT and run it through the same events without re-allocation, "
+                         "so the report shows what re-allocation saved (takes about as long again)")};
+    return description;
+}
+
+void MdstcPlanner::run(PlanningRun& run) const {
+    Plan& plan = run.plan();
+    const PlanningProblem& problem = run.problem();
+    plan.cells = gridStage(run, GridCellRule::WholeCell);
+    const std::vector<int> startCells = run.locateStarts();
+    ReallocationSimulation simulation(plan.cells, problem.events);
+    ReallocationSimulation::Result result =
+        run.stage("simulation", [&] { return simulation.run(startCells, run.starts(), run.progress()); });
+    plan.regions = regionsOf(plan.cells, result.finalRegions, startCells);
+    plan.paths = std::move(result.paths);
+    reportLeftUncovered(run, result.uncoveredCells);
+
+    TimelineLayer::Summary summary;
+    summary.events = problem.events;
+    for (const RobotTimeline& robot : result.robots)
+        summary.makespanSeconds = std::max(summary.makespanSeconds, robot.completionSeconds);
+    if (run.parameters().boolean(compareKey)) {
+        const Plan staticPlan = run.stage("static plan", [&] {
+            return MlctPlanner{}.plan(problem, staticParameters(run.parameters()),
+                                      run.progress().within("static plan", 0.0, 1.0));
+        });
+        const std::vector<double> completions = staticCompletions(staticPlan, problem.events);
+        for (std::size_t r = 0; r < result.robots.size() && r < completions.size(); ++r)
+            result.robots[r].staticCompletionSeconds = completions[r];
+        summary.staticPlanner = MlctPlanner::plannerName;
+        summary.staticMakespanSeconds = *std::max_element(completions.begin(), completions.end());
+        summary.staticPlanMakespanSeconds = staticPlan.metrics.makespanSeconds;
+    }
+    plan.layers.push_back(std::make_shared<TimelineLayer>(std::move(summary), std::move(result.robots),
+                                                          std::move(result.firstRegions)));
+}
+
+} // namespace mcpp

@@ -1,0 +1,211 @@
+#include "core/allocation/RegionExpansion.hpp"
+#include "core/model/PlanningError.hpp"
+#include "core/model/SpeedSchedule.hpp"
+#include "core/model/TimelineLayer.hpp"
+#include "core/planners/MdstcPlanner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+using namespace mcpp;
+
+namespace {
+
+Plan planMdstc(PlanningProblem problem, const std::vector<SpeedEvent>& events) {
+    problem.planner = defaultPlannerChoice(MdstcPlanner::plannerName);
+    problem.events = events;
+    return makePlanner(MdstcPlanner::plannerName)->plan(problem, {});
+}
+
+std::string violationsOf(const PlanningProblem& problem, const Plan& plan) {
+    return test::describe(test::checkAllInvariants(
+        problem, plan, makePlanner(MdstcPlanner::plannerName)->description().promises));
+}
+
+bool hasIssue(const Plan& plan, const std::string& code) {
+    return std::any_of(plan.issues.begin(), plan.issues.end(),
+                       [&](const PlanIssue& issue) { return issue.code == code; });
+}
+
+const TimelineLayer& timelineOf(const Plan& plan) {
+    const TimelineLayer* timeline = timelineLayerOf(plan);
+    if (timeline == nullptr)
+        throw std::runtime_error("the plan has no timeline");
+    return *timeline;
+}
+
+std::string plannerError(const PlanningProblem& problem, const std::vector<SpeedEvent>& events) {
+    try {
+        static_cast<void>(planMdstc(problem, events));
+    } catch (const PlanningError& error) {
+        return error.what();
+    }
+    return {};
+}
+
+} // namespace
+
+// MDSTC on the DARP / DMSTC grids (10 m cells of one land cover at 1 m/s, 15 % obstacles).
+class MdstcTest : public QObject {
+    Q_OBJECT
+
+  private slots:
+    // Robot 0 at half speed from 100 s and stopped at 300 s: 150 s of full-speed driving take 100 + 50 / 0.5
+    // s; 250 s never end, unless it starts again at 500 s at twice the speed (500 + 50 / 2).
+    void aScheduleTimesDrivingThroughItsEvents() {
+        const std::vector<SpeedEvent> events{{100.0, 0, 0.5}, {300.0, 0, 0.0}, {50.0, 1, 0.1}};
+        const SpeedSchedule schedule(events, 0);
+        QCOMPARE(schedule.factorAt(99.0), 1.0);
+        QCOMPARE(schedule.factorAt(100.0), 0.5);
+        QCOMPARE(schedule.finishTime(0.0, 50.0), 50.0);
+        QCOMPARE(schedule.finishTime(0.0, 150.0), 200.0);
+        QVERIFY(std::isinf(schedule.finishTime(0.0, 250.0)));
+        QVERIFY(schedule.stoppedFrom(300.0));
+        QVERIFY(!schedule.stoppedFrom(299.0));
+        std::vector<SpeedEvent> resumed = events;
+        resumed.push_back({500.0, 0, 2.0});
+        const SpeedSchedule again(resumed, 0);
+        QCOMPARE(again.finishTime(0.0, 250.0), 525.0);
+        QVERIFY(!again.stoppedFrom(300.0));
+    }
+
+    // Taking turns from opposite corners of an open 10 x 10 map, two regions split it evenly: each in one
+    // piece, every cell claimed.
+    void regionsGrowInTurns() {
+        PlanningProblem problem = test::uniformProblem(10, 10, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 9, 9)};
+        const Plan plan = planMdstc(problem, {});
+        const std::vector<int> cells{plan.cells.cellAt(problem.starts[0]),
+                                     plan.cells.cellAt(problem.starts[1])};
+        const std::vector<int> owner = expandRegions(plan.cells, cells);
+        const auto first = std::count(owner.begin(), owner.end(), 0);
+        const auto second = std::count(owner.begin(), owner.end(), 1);
+        QCOMPARE(first + second, 100);
+        QVERIFY2(std::abs(first - second) <= 2, qPrintable(QString("%1 against %2").arg(first).arg(second)));
+    }
+
+    // Without events, the plan holds the shared invariants (every free sub-cell passed, times as measured),
+    // the real times are the measured ones and its makespan is within 3 % of MCPP-MLCT's static plan.
+    void withoutEventsItMatchesTheStaticPlan_data() {
+        QTest::addColumn<int>("size");
+        QTest::addColumn<int>("robots");
+        QTest::newRow("49 x 49, 2 robots") << 49 << 2;
+        QTest::newRow("49 x 49, 8 robots") << 49 << 8;
+        QTest::newRow("49 x 49, 20 robots") << 49 << 20;
+        QTest::newRow("100 x 100, 4 robots") << 100 << 4;
+    }
+    void withoutEventsItMatchesTheStaticPlan() {
+        QFETCH(int, size);
+        QFETCH(int, robots);
+        const PlanningProblem problem = test::obstacleGridProblem(size, robots, 2020);
+        const Plan plan = planMdstc(problem, {});
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        const TimelineLayer& timeline = timelineOf(plan);
+        for (const RobotTimeline& robot : timeline.robots()) {
+            const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
+            QCOMPARE(robot.secondsAtWaypoint.size(), path.waypoints.size());
+            for (std::size_t i = 0; i < path.waypoints.size(); ++i)
+                QVERIFY(std::abs(robot.secondsAtWaypoint[i] - path.waypoints[i].cumulativeSeconds) <=
+                        1e-6 * (1.0 + path.timeSeconds));
+        }
+        const double ratio = timeline.summary().makespanSeconds / timeline.summary().staticMakespanSeconds;
+        qInfo("%d x %d, %d robots: MDSTC %.0f s, static %.0f s, ratio to static %.4f, to bound %.4f", size,
+              size, robots, timeline.summary().makespanSeconds, timeline.summary().staticMakespanSeconds,
+              ratio, plan.metrics.ratio);
+        QVERIFY2(ratio <= 1.03, qPrintable(QString::number(ratio)));
+    }
+
+    // Robot 0 drops to half speed a quarter of the way through: the others take over cells nobody has
+    // entered, and the mission ends before the static plan's under the same event.
+    void aSlowRobotIsHelpedByTheOthers_data() {
+        QTest::addColumn<int>("size");
+        QTest::addColumn<int>("robots");
+        QTest::newRow("49 x 49, 4 robots") << 49 << 4;
+        QTest::newRow("49 x 49, 8 robots") << 49 << 8;
+        QTest::newRow("100 x 100, 8 robots") << 100 << 8;
+    }
+    void aSlowRobotIsHelpedByTheOthers() {
+        QFETCH(int, size);
+        QFETCH(int, robots);
+        const PlanningProblem problem = test::obstacleGridProblem(size, robots, 2020);
+        const double quarter = timelineOf(planMdstc(problem, {})).summary().makespanSeconds / 4.0;
+        const Plan plan = planMdstc(problem, {{quarter, 0, 0.5}});
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        const TimelineLayer& timeline = timelineOf(plan);
+        const TimelineLayer::Summary& summary = timeline.summary();
+        qInfo("%d x %d, %d robots, robot 0 at half speed from %.0f s: MDSTC %.0f s, static %.0f s (%.3f)",
+              size, size, robots, quarter, summary.makespanSeconds, summary.staticMakespanSeconds,
+              summary.makespanSeconds / summary.staticMakespanSeconds);
+        QVERIFY(summary.makespanSeconds < summary.staticMakespanSeconds);
+        std::size_t takenOver = 0;
+        for (const RobotTimeline& robot : timeline.robots()) {
+            QVERIFY(std::is_sorted(robot.secondsAtWaypoint.begin(), robot.secondsAtWaypoint.end()));
+            QCOMPARE(robot.completionSeconds, robot.secondsAtWaypoint.back());
+            if (robot.robot != 0)
+                takenOver += robot.cellsTakenOver.size();
+        }
+        QVERIFY(takenOver > 0);
+        // Robot 0's part after the event took twice its measured time.
+        const RobotTimeline& slow = timeline.robots().front();
+        const CoveragePath& path = plan.paths.front();
+        const double nominalAfter = path.timeSeconds - quarter;
+        QVERIFY(std::abs(slow.completionSeconds - (quarter + 2.0 * nominalAfter)) <= 1e-6 * path.timeSeconds);
+    }
+
+    // Robot 1 stops for good at a quarter: the others cover all it left, its path ends where it stopped, and
+    // the static plan never finishes.
+    void aStoppedRobotsWorkIsTakenOver() {
+        const PlanningProblem problem = test::obstacleGridProblem(49, 5, 2020);
+        const double quarter = timelineOf(planMdstc(problem, {})).summary().makespanSeconds / 4.0;
+        const Plan plan = planMdstc(problem, {{quarter, 1, 0.0}});
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        QVERIFY(!hasIssue(plan, "left-uncovered"));
+        const TimelineLayer& timeline = timelineOf(plan);
+        const RobotTimeline& stopped = timeline.robots()[1];
+        QVERIFY(stopped.stopped);
+        QVERIFY(stopped.completionSeconds <= quarter);
+        QVERIFY(std::isinf(timeline.summary().staticMakespanSeconds));
+        QVERIFY(std::isinf(stopped.staticCompletionSeconds));
+        QVERIFY(std::isfinite(timeline.summary().makespanSeconds));
+    }
+
+    // Events that cannot happen are refused, naming the event, the field and the value.
+    void impossibleEventsAreRefused_data() {
+        QTest::addColumn<double>("time");
+        QTest::addColumn<int>("robot");
+        QTest::addColumn<double>("factor");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("before the start")
+            << -5.0 << 0 << 0.5 << "event 1 time_s: must be 0 s or later, got -5 s";
+        QTest::newRow("no such robot") << 10.0 << 3 << 0.5 << "event 1 robot: there is no robot 3";
+        QTest::newRow("negative factor") << 10.0 << 0 << -0.5 << "event 1 speed_factor: must be from 0";
+        QTest::newRow("not a number") << 10.0 << 0 << std::nan("") << "speed_factor";
+    }
+    void impossibleEventsAreRefused() {
+        QFETCH(double, time);
+        QFETCH(int, robot);
+        QFETCH(double, factor);
+        QFETCH(QString, expected);
+        const PlanningProblem problem = test::obstacleGridProblem(20, 3, 2020);
+        const std::string message = plannerError(problem, {{time, robot, factor}});
+        QVERIFY2(QString::fromStdString(message).contains(expected), message.c_str());
+    }
+
+    // A planner that plans without events says it left them out.
+    void otherPlannersSayTheyIgnoreEvents() {
+        PlanningProblem problem = test::obstacleGridProblem(20, 2, 2020);
+        problem.events = {{10.0, 0, 0.5}};
+        const Plan plan = makePlanner("mcpp-mlct")->plan(problem, {});
+        QVERIFY(hasIssue(plan, "events-ignored"));
+        QVERIFY(timelineLayerOf(plan) == nullptr);
+    }
+};
+
+QTEST_GUILESS_MAIN(MdstcTest)
+#include "test_mdstc.moc"
