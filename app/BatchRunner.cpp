@@ -5,6 +5,8 @@
 #include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/ProgressReporter.hpp"
+#include "core/model/SpeedEventCheck.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
@@ -16,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -143,6 +146,16 @@ void BatchRunner::assembleMission() {
     }
 }
 
+// --event flags join the mission's events once its robots are known.
+void BatchRunner::addEventFlags() {
+    for (const SpeedEvent& event : options_.events) {
+        if (const auto wrong = speedEventProblem(event, mission_.robots.size()))
+            badInput("--event " + formatQuantity(event.timeSeconds) + ":" + std::to_string(event.robot) +
+                     ":" + formatQuantity(event.speedFactor) + ": " + wrong->field + ": " + wrong->detail);
+        mission_.events.push_back(event);
+    }
+}
+
 void BatchRunner::applyOverrides() {
     if (options_.band)
         mission_.band = *options_.band;
@@ -165,6 +178,7 @@ void BatchRunner::applyOverrides() {
         for (io::RobotSpec& robot : mission_.robots)
             robot.vehicle.maxWaypoints.reset();
     }
+    addEventFlags();
     const auto planner = findPlannerDescription(mission_.planner.planner);
     if (!planner)
         badInput(fieldName(io::MissionField::of(Part::Planner)) + ": " +
@@ -211,7 +225,7 @@ PlanningProblem BatchRunner::prepareProblem() {
     io::PreparedProblem prepared = valueOrBadInput(io::planningProblem(
         raster_, classes_, mission_.missingClassesAsObstacles, std::move(starts), mission_.planner, names));
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
-    prepared.problem.batterySeconds = io::robotBatteries(mission_);
+    io::applyRobotSettings(mission_, prepared.problem);
     return std::move(prepared.problem);
 }
 
@@ -528,6 +542,25 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 
+namespace {
+
+// "under 2 events: done in 2 d 5 h; the static mcpp-mlct plan through the same events: never (a robot
+// stops with work left)".
+std::string eventsSummary(const TimelineLayer::Summary& summary) {
+    std::string text = "under " + std::to_string(summary.events.size()) +
+                       (summary.events.size() == 1 ? " event" : " events") + ": done in " +
+                       formatDuration(summary.makespanSeconds);
+    if (summary.staticPlanner.empty())
+        return text;
+    text += "; the static " + summary.staticPlanner + " plan through the same events: ";
+    if (std::isinf(summary.staticMakespanSeconds))
+        return text + "never done (a robot stops with work left)";
+    return text + formatDuration(summary.staticMakespanSeconds) + " (" +
+           formatPercent(1.0 - summary.makespanSeconds / summary.staticMakespanSeconds) + " saved)";
+}
+
+} // namespace
+
 void BatchRunner::printSummary(const Plan& plan) const {
     if (options_.quiet)
         return;
@@ -536,9 +569,10 @@ void BatchRunner::printSummary(const Plan& plan) const {
             << " with " << plan.planner << ": makespan " << formatDuration(metrics.makespanSeconds)
             << ", lower bound " << formatDuration(metrics.lowerBoundSeconds) << ", ratio "
             << formatNumber(metrics.ratio, 3) << ", covered " << formatPercent(metrics.coveredFraction)
-            << " of the passable area\n"
-            << "mcpp: outputs in " << options_.outputDirectory << '\n'
-            << std::flush;
+            << " of the passable area\n";
+    if (const TimelineLayer* timeline = timelineLayerOf(plan))
+        output_ << "mcpp: " << eventsSummary(timeline->summary()) << '\n';
+    output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 
 void BatchRunner::note(const std::string& message) {

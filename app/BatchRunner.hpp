@@ -36,6 +36,7 @@ class BatchRunner {
     [[nodiscard]] PlannerChoice comparedPlanner(const std::string& name) const;
     void assembleMission();
     void applyOverrides();
+    void addEventFlags();
     void loadRaster();
     PlanningProblem prepareProblem();
     void checkOutputFolder() const;

@@ -1,6 +1,7 @@
 #include "app/CommandLine.hpp"
 
 #include "core/decomposition/DecompositionOptions.hpp"
+#include "core/model/SpeedEventCheck.hpp"
 #include "core/parameters/NumberText.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -41,7 +42,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--dense-paths", "", true, false},     FlagSpec{"--cell-polygons", "", true, false},
     FlagSpec{"--threads", "N", true, false},        FlagSpec{"--compare", "NAMES", true, false},
     FlagSpec{"--area", "FILE", true, false},        FlagSpec{"--no-go", "FILE", true, false},
-    FlagSpec{"--max-waypoints", "N", true, false},
+    FlagSpec{"--max-waypoints", "N", true, false},  FlagSpec{"--event", "T:ROBOT:FACTOR", true, true},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -61,6 +62,20 @@ std::optional<int> parseNonNegativeInteger(std::string_view text) {
     if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0)
         return std::nullopt;
     return value;
+}
+
+// "300:0:0.5": from 300 s on, robot 0 at half speed.
+std::optional<SpeedEvent> parseEvent(std::string_view text) {
+    const std::size_t first = text.find(':');
+    const std::size_t second = first == std::string_view::npos ? first : text.find(':', first + 1);
+    if (second == std::string_view::npos || text.find(':', second + 1) != std::string_view::npos)
+        return std::nullopt;
+    const auto time = parseFiniteNumber(text.substr(0, first));
+    const auto robot = parseNonNegativeInteger(text.substr(first + 1, second - first - 1));
+    const auto factor = parseFiniteNumber(text.substr(second + 1));
+    if (!time || !robot || !factor)
+        return std::nullopt;
+    return SpeedEvent{*time, *robot, *factor};
 }
 
 std::optional<int> parsePositiveInteger(std::string_view text) {
@@ -310,6 +325,16 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             if (!threads || *threads > 64)
                 return failure("--threads: " + quoted(value) + " is not a thread count (1 to 64)");
             options.threads = *threads;
+        } else if (flag == "--event") {
+            const auto event = parseEvent(value);
+            if (!event)
+                return failure("--event " + quoted(value) +
+                               ": expected TIME_S:ROBOT:SPEED_FACTOR, e.g. 300:0:0.5 (robot 0 at half speed "
+                               "from 300 s)");
+            // The robot is checked once the mission says how many there are.
+            if (const auto wrong = speedEventProblem(*event, static_cast<std::size_t>(event->robot) + 1))
+                return failure("--event " + quoted(value) + ": " + wrong->field + ": " + wrong->detail);
+            options.events.push_back(*event);
         } else if (flag == "--max-waypoints") {
             const auto limit = parseNonNegativeInteger(value);
             if (!limit || (*limit != 0 && *limit < io::minimumMaxWaypoints))
@@ -414,6 +439,11 @@ std::string CommandLine::usage() {
            "                           robot's own. A longer mission is written in consecutive parts,\n"
            "                           robot_<n>_part_<j>.plan and .waypoints, each beginning where the\n"
            "                           one before it ended\n"
+           "  --event T:ROBOT:FACTOR   from T seconds on, robot ROBOT (counted from 0: the first\n"
+           "                           start, robot_1 in the outputs) drives at FACTOR times its speeds\n"
+           "                           (0.5 half speed, 0 stopped); repeatable, added to the mission's\n"
+           "                           events. Played by mdstc; report.json then gives each robot's\n"
+           "                           completion_s and the static plan's static_makespan_s\n"
            "  --threads N              plan the robots' paths and write the outputs on N threads\n"
            "                           (default: the machine's cores); the files are the same whatever N\n"
            "  -q, --quiet              no progress lines, warnings or summary; errors are still printed\n"

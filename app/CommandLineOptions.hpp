@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/MapPoint.hpp"
+#include "core/model/SpeedEvent.hpp"
 
 #include <optional>
 #include <string>
@@ -48,6 +49,7 @@ struct CommandLineOptions {
     bool cellPolygons = false;                // --cell-polygons
     int threads = 0;                          // --threads; 0: the machine's cores (mcpp::workerThreads)
     std::optional<int> maxWaypoints;          // --max-waypoints: every robot's autopilot item limit
+    std::vector<SpeedEvent> events;           // --event, in the order given
 
     [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }
 };

@@ -1,5 +1,6 @@
 #include "io/Mission.hpp"
 
+#include "core/model/SpeedEventCheck.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
@@ -270,6 +271,33 @@ void writeVehicle(JsonValue& object, const VehicleOverrides& vehicle) {
         object.add("max_waypoints", *vehicle.maxWaypoints);
 }
 
+bool readEvent(MissionReader& reader, const QJsonValue& value, const std::string& path,
+               std::size_t robotCount, SpeedEvent& event) {
+    QJsonObject object;
+    if (!reader.object(value, path, object) ||
+        !reader.onlyKeys(object, path, {"time_s", "robot", "speed_factor"}) ||
+        !reader.required(object, path, "time_s", event.timeSeconds, &MissionReader::number) ||
+        !reader.required(object, path, "robot", event.robot, &MissionReader::integer) ||
+        !reader.required(object, path, "speed_factor", event.speedFactor, &MissionReader::number))
+        return false;
+    if (const auto wrong = speedEventProblem(event, robotCount))
+        return reader.fail(MissionReader::join(path, wrong->field), wrong->detail);
+    return true;
+}
+
+bool readEvents(MissionReader& reader, const QJsonValue& value, Mission& mission) {
+    if (!value.isArray())
+        return reader.wrongType("events", value, "an array of events");
+    const QJsonArray events = value.toArray();
+    for (qsizetype i = 0; i < events.size(); ++i) {
+        SpeedEvent event;
+        if (!readEvent(reader, events.at(i), MissionReader::index("events", i), mission.robots.size(), event))
+            return false;
+        mission.events.push_back(event);
+    }
+    return true;
+}
+
 bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string& path, RobotSpec& robot) {
     QJsonObject object;
     if (!reader.object(value, path, object))
@@ -498,8 +526,9 @@ Result<Mission> parseMission(const std::string& text, const std::string& path) {
                                    std::to_string(currentVersion) + ")");
         return fail();
     }
-    if (!reader.onlyKeys(root, "",
-                         {"format", "version", "raster", "area", "classes", "robots", "planner", "exports"}))
+    if (!reader.onlyKeys(
+            root, "",
+            {"format", "version", "raster", "area", "classes", "robots", "events", "planner", "exports"}))
         return fail();
 
     QJsonObject raster;
@@ -555,6 +584,10 @@ Result<Mission> parseMission(const std::string& text, const std::string& path) {
         mission.robots.push_back(robot);
     }
 
+    if (const QJsonValue events = root.value(QLatin1String("events")); !events.isUndefined()) {
+        if (!readEvents(reader, events, mission))
+            return fail();
+    }
     if (const QJsonValue planner = root.value(QLatin1String("planner")); !planner.isUndefined()) {
         if (!readPlanner(reader, planner, mission.version, mission.planner))
             return fail();
@@ -612,6 +645,16 @@ std::string missionToJson(const Mission& mission) {
             item.add("battery_s", *robot.batterySeconds);
     }
 
+    if (!mission.events.empty()) {
+        JsonValue& events = root.add("events", JsonValue::array());
+        for (const SpeedEvent& event : mission.events) {
+            JsonValue& item = events.push(JsonValue::object());
+            item.add("time_s", event.timeSeconds);
+            item.add("robot", event.robot);
+            item.add("speed_factor", event.speedFactor);
+        }
+    }
+
     JsonValue& planner = root.add("planner", JsonValue::object());
     planner.add("name", mission.planner.planner);
     JsonValue& parameters = planner.add("parameters", JsonValue::object());
@@ -664,6 +707,11 @@ std::vector<double> robotBatteries(const Mission& mission) {
     for (const RobotSpec& robot : mission.robots)
         batteries.push_back(robot.batterySeconds.value_or(0.0));
     return batteries;
+}
+
+void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
+    problem.batterySeconds = robotBatteries(mission);
+    problem.events = mission.events;
 }
 
 std::vector<VehicleSettings> robotVehicles(const Mission& mission) {

@@ -2,6 +2,8 @@
 
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
+#include "core/model/PlanningProblem.hpp"
+#include "core/model/SpeedEvent.hpp"
 #include "core/parameters/PlannerChoice.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/GeoReference.hpp"
@@ -59,6 +61,7 @@ struct Mission {
     ClassTable classes;
     bool missingClassesAsObstacles = false;
     std::vector<RobotSpec> robots;
+    std::vector<SpeedEvent> events; // robots slowing down or stopping, for planners that simulate them
     PlannerChoice planner = defaultPlannerChoice(); // every parameter of the planner, defaults filled in
     ExportSettings exports;
 
@@ -76,6 +79,9 @@ struct Mission {
 [[nodiscard]] std::vector<VehicleSettings> robotVehicles(const Mission& mission);
 // Each robot's own battery in seconds in order, 0 where it has none (the planner's battery_s then).
 [[nodiscard]] std::vector<double> robotBatteries(const Mission& mission);
+// What a planning problem takes from the mission beside the map and the starts: the robots' batteries and
+// the events. The one place batch and window runs fill them.
+void applyRobotSettings(const Mission& mission, PlanningProblem& problem);
 
 // The same from the file's text; path names it in messages and anchors a relative raster path.
 [[nodiscard]] Result<Mission> parseMission(const std::string& text, const std::string& path);

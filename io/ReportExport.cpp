@@ -1,6 +1,7 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/PlanExport.hpp"
@@ -46,6 +47,32 @@ void addDetection(JsonValue& root, const DetectionSummary& summary) {
     detection.add("undetectable_area_m2", summary.undetectableAreaSquareMetres);
 }
 
+// A simulated robot: when it was done under the events, what it took over, when the static plan's would be.
+void addTimeline(JsonValue& item, const RobotTimeline& robot) {
+    item.add("completion_s", robot.completionSeconds);
+    item.add("stopped", robot.stopped);
+    item.add("cells_taken_over", static_cast<int>(robot.cellsTakenOver.size()));
+    item.add("taken_over_area_m2", robot.takenOverAreaSquareMetres);
+    item.add("static_completion_s", robot.staticCompletionSeconds); // null: stopped before the end
+}
+
+// The events played and what re-allocation saved against the static plan run through them.
+void addEvents(JsonValue& root, const TimelineLayer::Summary& summary) {
+    JsonValue& events = root.add("events", JsonValue::array());
+    for (const SpeedEvent& event : summary.events) {
+        JsonValue& item = events.push(JsonValue::object());
+        item.add("time_s", event.timeSeconds);
+        item.add("robot", event.robot);
+        item.add("speed_factor", event.speedFactor);
+    }
+    root.add("makespan_under_events_s", summary.makespanSeconds);
+    if (summary.staticPlanner.empty())
+        return;
+    root.add("static_planner", summary.staticPlanner);
+    root.add("static_makespan_s", summary.staticMakespanSeconds); // null: a robot stopped with work left
+    root.add("static_plan_makespan_s", summary.staticPlanMakespanSeconds);
+}
+
 std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
     const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
     const double longest = longestSortieSeconds(path, robot.sorties);
@@ -71,6 +98,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     }
     JsonValue& robots = root.add("robots", JsonValue::array());
     const SortieLayer* sorties = sortieLayerOf(context.plan);
+    const TimelineLayer* timeline = timelineLayerOf(context.plan);
     for (const RobotMetrics& robot : metrics.robots) {
         JsonValue& item = robots.push(JsonValue::object());
         item.add("robot", robotNumber(robot.robot));
@@ -91,6 +119,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("mission_time_s", mission.seconds);
         if (sorties != nullptr)
             addSorties(item, context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
+        if (timeline != nullptr)
+            addTimeline(item, timeline->robots()[static_cast<std::size_t>(robot.robot)]);
     }
     root.add("makespan_s", metrics.makespanSeconds);
     root.add("lower_bound_s", metrics.lowerBoundSeconds);
@@ -102,6 +132,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     root.add("repeated_fraction", metrics.repeatedFraction);
     if (const DetectionLayer* detection = detectionLayerOf(context.plan))
         addDetection(root, detection->summary());
+    if (timeline != nullptr)
+        addEvents(root, timeline->summary());
     JsonValue& timings = root.add("timings_ms", JsonValue::object());
     for (const auto& [stage, milliseconds] : metrics.stageMilliseconds)
         timings.add(stage, milliseconds);

@@ -1448,7 +1448,7 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
         choices.push_back(switchPlanner(document_->plannerChoice(), name));
     comparisonInputs_ = document_->currentInputs();
     comparisonRaster_ = document_->sharedRaster();
-    prepared.value().problem.batterySeconds = io::robotBatteries(document_->mission());
+    io::applyRobotSettings(document_->mission(), prepared.value().problem);
     if (!comparisonRunner_->start(std::move(prepared.value().problem), std::move(choices)))
         return false;
     showBusy(tr("Comparing…"), true);
@@ -1534,7 +1534,7 @@ bool MainWindow::startPlanning() {
         return false;
     }
     planningInputs_ = document_->currentInputs();
-    prepared.value().problem.batterySeconds = io::robotBatteries(document_->mission());
+    io::applyRobotSettings(document_->mission(), prepared.value().problem);
     if (!runner_->start(std::move(prepared.value().problem)))
         return false;
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();

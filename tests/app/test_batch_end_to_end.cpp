@@ -76,6 +76,7 @@ class TestBatchEndToEnd : public QObject {
     void missionsAboveTheItemLimitAreSplit();
     void batteryPlansWriteEachSortie();
     void detectionPlansWriteTheDetectionRaster();
+    void eventsArePlayedAndComparedWithTheStaticPlan();
     void rasterAloneGetsTheRecognisedProductsTable();
     void outputsAreTheSameWhateverTheThreadCount();
     void comparePlannersOnOneMission();
@@ -741,6 +742,46 @@ void TestBatchEndToEnd::detectionPlansWriteTheDetectionRaster() {
     run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--out", out});
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
     QVERIFY(!QFileInfo::exists(out + "/detection.tif"));
+}
+
+// MDSTC on the Zion sample with robot 1 (index 0) at half speed from 30 000 s and robot 3 stopping at
+// 60 000 s: report.json gives the events, each robot's completion, and the static plan's figures under the
+// same events (never done: a robot stops with work left).
+void TestBatchEndToEnd::eventsArePlayedAndComparedWithTheStaticPlan() {
+    const QString out = scratch_.filePath("events");
+    const auto run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--planner", "mdstc",
+                              "--event", "30000:0:0.5", "--event", "60000:2:0", "--out", out});
+    checkOutputs(out, 5, run, QStringLiteral("mdstc"));
+    if (QTest::currentTestFailed())
+        return;
+    QVERIFY2(run.standardOutput.contains("under 2 events"), qPrintable(run.standardOutput));
+    const QJsonObject report = readJsonObject(out + "/report.json");
+    const QJsonArray events = report.value("events").toArray();
+    QCOMPARE(events.size(), 2);
+    QCOMPARE(events[0].toObject().value("time_s").toDouble(), 30000.0);
+    QCOMPARE(events[1].toObject().value("robot").toInt(), 2);
+    QCOMPARE(events[1].toObject().value("speed_factor").toDouble(), 0.0);
+    double latest = 0.0;
+    int takenOver = 0;
+    const QJsonArray robots = report.value("robots").toArray();
+    for (const QJsonValue& value : robots) {
+        const QJsonObject robot = value.toObject();
+        latest = std::max(latest, robot.value("completion_s").toDouble());
+        takenOver += robot.value("cells_taken_over").toInt();
+    }
+    QCOMPARE(report.value("makespan_under_events_s").toDouble(), latest);
+    QVERIFY(takenOver > 0);
+    // The stopped robot was done when it stopped; the static plan's never finishes.
+    const QJsonObject stopped = robots[2].toObject();
+    QVERIFY(stopped.value("stopped").toBool());
+    QVERIFY(stopped.value("completion_s").toDouble() <= 60000.0);
+    QVERIFY(stopped.value("static_completion_s").isNull());
+    QVERIFY(report.value("static_makespan_s").isNull());
+    QCOMPARE(report.value("static_planner").toString(), QString("mcpp-mlct"));
+    QVERIFY(report.value("static_plan_makespan_s").toDouble() > 0.0);
+    // The others covered all the stopped robot left.
+    for (const QJsonValue& issue : report.value("issues").toArray())
+        QVERIFY(issue.toObject().value("code").toString() != QString("left-uncovered"));
 }
 
 void TestBatchEndToEnd::everyPlannerRunsFromTheCommandLine_data() {

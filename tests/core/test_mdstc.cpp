@@ -183,7 +183,8 @@ class MdstcTest : public QObject {
         QTest::addColumn<QString>("expected");
         QTest::newRow("before the start")
             << -5.0 << 0 << 0.5 << "event 1 time_s: must be 0 s or later, got -5 s";
-        QTest::newRow("no such robot") << 10.0 << 3 << 0.5 << "event 1 robot: there is no robot 3";
+        QTest::newRow("no such robot")
+            << 10.0 << 3 << 0.5 << "event 1 robot: robot 3 does not exist: the 3 robots are numbered 0 to 2";
         QTest::newRow("negative factor") << 10.0 << 0 << -0.5 << "event 1 speed_factor: must be from 0";
         QTest::newRow("not a number") << 10.0 << 0 << std::nan("") << "speed_factor";
     }

@@ -130,6 +130,23 @@ std::vector<MissionMutation> missionMutations() {
         {"robot battery_s zero", R"("name": "a")", R"("name": "a", "battery_s": 0)", "robots[0].battery_s"},
         {"robot battery_s text", R"("name": "b")", R"("name": "b", "battery_s": "1 h")",
          "robots[1].battery_s"},
+        {"events not an array", R"("exports": {"altitude_m": 30)",
+         R"("events": 5, "exports": {"altitude_m": 30)", "events"},
+        {"event before the start", R"("exports": {"altitude_m": 30)",
+         R"("events": [{"time_s": -1, "robot": 0, "speed_factor": 0.5}], "exports": {"altitude_m": 30)",
+         "events[0].time_s"},
+        {"event for a third robot", R"("exports": {"altitude_m": 30)",
+         R"("events": [{"time_s": 1, "robot": 0, "speed_factor": 0.5}, {"time_s": 60, "robot": 2, "speed_factor": 0}], "exports": {"altitude_m": 30)",
+         "events[1].robot"},
+        {"event speed factor negative", R"("exports": {"altitude_m": 30)",
+         R"("events": [{"time_s": 1, "robot": 1, "speed_factor": -0.5}], "exports": {"altitude_m": 30)",
+         "events[0].speed_factor"},
+        {"event without a time", R"("exports": {"altitude_m": 30)",
+         R"("events": [{"robot": 1, "speed_factor": 0.5}], "exports": {"altitude_m": 30)",
+         "events[0].time_s"},
+        {"event unknown key", R"("exports": {"altitude_m": 30)",
+         R"("events": [{"time_s": 1, "robot": 1, "factor": 0.5}], "exports": {"altitude_m": 30)",
+         "events[0].factor"},
     };
 }
 

@@ -46,7 +46,8 @@ Mission sampleMission() {
     mission.robots[1].vehicle.type = VehicleType::Multirotor;
     mission.robots[1].vehicle.altitudeMetres = 45.5;
     mission.robots[1].vehicle.maxWaypoints = 0;
-    mission.robots[2].batterySeconds = 1500.0; // its own battery, for battery planners
+    mission.robots[2].batterySeconds = 1500.0;           // its own battery, for battery planners
+    mission.events = {{120.5, 1, 0.5}, {600.0, 0, 0.0}}; // robot 1 at half speed, then robot 0 stops
     mission.planner.parameters.set("purity_tolerance", 0.05);
     mission.planner.parameters.set("blocked_threshold", 0.6);
     mission.planner.parameters.set("closed_tour", false);
@@ -144,6 +145,11 @@ class MissionFilesTest : public QObject {
         QCOMPARE(root["robots"].toArray()[2].toObject()["battery_s"].toDouble(), 1500.0);
         QVERIFY(!beta.contains("battery_s"));
         QCOMPARE(robotBatteries(sampleMission()), (std::vector<double>{0.0, 0.0, 1500.0}));
+        const QJsonArray events = root["events"].toArray();
+        QCOMPARE(events.size(), 2);
+        QCOMPARE(events[0].toObject()["time_s"].toDouble(), 120.5);
+        QCOMPARE(events[0].toObject()["robot"].toInt(), 1);
+        QCOMPARE(events[1].toObject()["speed_factor"].toDouble(), 0.0);
     }
 
     void minimalMissionGetsDefaults() {
