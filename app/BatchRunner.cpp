@@ -7,6 +7,7 @@
 #include "core/model/ProgressReporter.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/model/TimelineLayer.hpp"
+#include "core/model/TimelineText.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
@@ -542,25 +543,6 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 
-namespace {
-
-// "under 2 events: done in 2 d 5 h; the static mcpp-mlct plan through the same events: never (a robot
-// stops with work left)".
-std::string eventsSummary(const TimelineLayer::Summary& summary) {
-    std::string text = "under " + std::to_string(summary.events.size()) +
-                       (summary.events.size() == 1 ? " event" : " events") + ": done in " +
-                       formatDuration(summary.makespanSeconds);
-    if (summary.staticPlanner.empty())
-        return text;
-    text += "; the static " + summary.staticPlanner + " plan through the same events: ";
-    if (std::isinf(summary.staticMakespanSeconds))
-        return text + "never done (a robot stops with work left)";
-    return text + formatDuration(summary.staticMakespanSeconds) + " (" +
-           formatPercent(1.0 - summary.makespanSeconds / summary.staticMakespanSeconds) + " saved)";
-}
-
-} // namespace
-
 void BatchRunner::printSummary(const Plan& plan) const {
     if (options_.quiet)
         return;
@@ -571,7 +553,7 @@ void BatchRunner::printSummary(const Plan& plan) const {
             << formatNumber(metrics.ratio, 3) << ", covered " << formatPercent(metrics.coveredFraction)
             << " of the passable area\n";
     if (const TimelineLayer* timeline = timelineLayerOf(plan))
-        output_ << "mcpp: " << eventsSummary(timeline->summary()) << '\n';
+        output_ << "mcpp: " << timelineSentence(timeline->summary()) << '\n';
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 

@@ -4,6 +4,7 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "core/outlines/RegionOutlines.hpp"
 #include "io/PlanExport.hpp"
@@ -398,7 +399,9 @@ void PlanRenderer::paintMap(QPainter& painter, const QTransform& worldToDevice,
             paintRegionBorders(painter, worldToDevice, deviceArea);
         if (layers_.crossings)
             paintCrossings(painter, worldToDevice, deviceArea);
-        if (layers_.paths)
+        if (layers_.paths && timelineSeconds_ && timelineLayerOf(*plan_) != nullptr)
+            paintPathsAt(painter, worldToDevice, deviceArea, *timelineSeconds_);
+        else if (layers_.paths)
             paintPaths(painter, worldToDevice, deviceArea);
         painter.setOpacity(1.0);
     }
@@ -540,6 +543,28 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
     painter.restore();
 }
 
+void PlanRenderer::drawPathLine(QPainter& painter, const QPolygonF& points, const QColor& colour,
+                                const QTransform& worldToDevice, const QRectF& visibleDevice,
+                                bool dense) const {
+    QColor faded = colour;
+    faded.setAlpha(150);
+    for (const QPolygonF& run : visibleRuns(points, worldToDevice, visibleDevice)) {
+        painter.setBrush(Qt::NoBrush);
+        if (dense) {
+            // A one-pixel cosmetic pen is drawn line by line, with no outline to fill.
+            painter.setPen(QPen(faded, 0.0));
+            painter.drawPolyline(run);
+            continue;
+        }
+        // A white casing under the line keeps it readable over any land-cover colour.
+        painter.setPen(QPen(Qt::white, 4.0, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
+        drawPolylineInPieces(painter, run);
+        painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
+        drawPolylineInPieces(painter, run);
+        drawArrows(painter, run, colour);
+    }
+}
+
 void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice,
                               const QRectF& deviceArea) const {
     painter.setRenderHint(QPainter::Antialiasing, true);
@@ -553,23 +578,43 @@ void PlanRenderer::paintPaths(QPainter& painter, const QTransform& worldToDevice
             continue;
         const QColor colour = line.alternate ? RobotPalette::alternateSortieColour(line.robot)
                                              : RobotPalette::colour(line.robot);
-        QColor faded = colour;
-        faded.setAlpha(150);
-        for (const QPolygonF& run : visibleRuns(line.points, worldToDevice, visibleDevice)) {
-            // A white casing under the line keeps it readable over any land-cover colour.
-            painter.setBrush(Qt::NoBrush);
-            if (dense) {
-                // A one-pixel cosmetic pen is drawn line by line, with no outline to fill.
-                painter.setPen(QPen(faded, 0.0));
-                painter.drawPolyline(run);
-                continue;
-            }
-            painter.setPen(QPen(Qt::white, 4.0, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
-            drawPolylineInPieces(painter, run);
-            painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
-            drawPolylineInPieces(painter, run);
-            drawArrows(painter, run, colour);
+        drawPathLine(painter, line.points, colour, worldToDevice, visibleDevice, dense);
+    }
+}
+
+// Each robot's path up to `seconds` of the timeline and a dot where it is then (ringed black once it has
+// stopped for good).
+void PlanRenderer::paintPathsAt(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea,
+                                double seconds) const {
+    const TimelineLayer* timeline = timelineLayerOf(*plan_);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    const bool dense = meanStepMetres_ * std::abs(worldToDevice.m11()) < 12.0;
+    const QRectF visibleDevice = deviceArea.adjusted(-10.0, -10.0, 10.0, 10.0);
+    for (const RobotTimeline& robot : timeline->robots()) {
+        const std::vector<Waypoint>& waypoints =
+            plan_->paths[static_cast<std::size_t>(robot.robot)].waypoints;
+        const std::vector<double>& at = robot.secondsAtWaypoint;
+        if (waypoints.empty() || at.size() != waypoints.size())
+            continue;
+        const auto reached =
+            static_cast<std::size_t>(std::upper_bound(at.begin(), at.end(), seconds) - at.begin());
+        QPolygonF driven;
+        driven.reserve(static_cast<qsizetype>(reached) + 1);
+        for (std::size_t i = 0; i < std::max<std::size_t>(reached, 1); ++i)
+            driven << QPointF(waypoints[i].x, waypoints[i].y);
+        if (reached > 0 && reached < waypoints.size()) {
+            const double share = (seconds - at[reached - 1]) / std::max(at[reached] - at[reached - 1], 1e-9);
+            const Waypoint& from = waypoints[reached - 1];
+            const Waypoint& to = waypoints[reached];
+            driven << QPointF(from.x + (to.x - from.x) * share, from.y + (to.y - from.y) * share);
         }
+        const QColor colour = RobotPalette::colour(robot.robot);
+        if (driven.size() > 1)
+            drawPathLine(painter, driven, colour, worldToDevice, visibleDevice, dense);
+        const bool stopped = robot.stopped && reached >= waypoints.size();
+        painter.setPen(QPen(stopped ? QColor(Qt::black) : QColor(Qt::white), 2.0));
+        painter.setBrush(colour);
+        painter.drawEllipse(worldToDevice.map(driven.back()), 6.0, 6.0);
     }
 }
 

@@ -12,6 +12,7 @@
 #include <QRectF>
 #include <QSizeF>
 #include <QTransform>
+#include <optional>
 #include <vector>
 
 class QPainter;
@@ -30,6 +31,10 @@ class PlanRenderer {
     // Start points to draw; when empty the first waypoint of each path is used.
     void setStarts(std::vector<MapPoint> starts);
     void setLayers(const MapLayers& layers) { layers_ = layers; }
+    // A plan simulated over time shown at one moment: each path as driven so far, each robot where it is.
+    // Empty: the whole paths.
+    void setTimelineSeconds(std::optional<double> seconds) { timelineSeconds_ = seconds; }
+    [[nodiscard]] std::optional<double> timelineSeconds() const { return timelineSeconds_; }
     // A plan that no longer matches the inputs is drawn faded.
     void setPlanStale(bool stale) { planStale_ = stale; }
     // The start drawn with a selection ring, -1 for none.
@@ -88,6 +93,10 @@ class PlanRenderer {
     void paintUnreachable(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintQuadTree(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintPaths(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintPathsAt(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea,
+                      double seconds) const;
+    void drawPathLine(QPainter& painter, const QPolygonF& points, const QColor& colour,
+                      const QTransform& worldToDevice, const QRectF& visibleDevice, bool dense) const;
     void paintCrossings(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
 
@@ -107,6 +116,7 @@ class PlanRenderer {
     QImage landCoverImage_;
     bool planStale_ = false;
     int selectedStart_ = -1;
+    std::optional<double> timelineSeconds_;
 };
 
 } // namespace mcpp::render

@@ -4,6 +4,7 @@
 #include "core/decomposition/LandCoverSamples.hpp"
 #include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "io/AreaOfInterest.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
@@ -18,6 +19,7 @@
 #include "ui/ClassTableModel.hpp"
 #include "ui/ComparisonPanel.hpp"
 #include "ui/ComparisonRunner.hpp"
+#include "ui/EventTableModel.hpp"
 #include "ui/ExportRunner.hpp"
 #include "ui/LayersPanel.hpp"
 #include "ui/LegendPanel.hpp"
@@ -29,6 +31,7 @@
 #include "ui/ResultsPanel.hpp"
 #include "ui/RobotTableModel.hpp"
 #include "ui/SampleMission.hpp"
+#include "ui/TimelineBar.hpp"
 #include "ui/VehicleSettingsDialog.hpp"
 #include "ui/VehicleSettingsEditCommand.hpp"
 
@@ -127,7 +130,8 @@ QDockWidget* makeDock(const QString& objectName, const QString& title, QWidget* 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), document_(new MissionDocument(this)), undoStack_(new QUndoStack(this)),
       canvas_(new MapCanvas(document_, this)), classModel_(new ClassTableModel(document_, undoStack_, this)),
-      robotModel_(new RobotTableModel(document_, undoStack_, this)), runner_(new PlanningRunner(this)),
+      robotModel_(new RobotTableModel(document_, undoStack_, this)),
+      eventModel_(new EventTableModel(document_, undoStack_, this)), runner_(new PlanningRunner(this)),
       exportRunner_(new ExportRunner(this)), comparisonRunner_(new ComparisonRunner(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowIcon(actionIcon("mcpp"));
@@ -138,6 +142,9 @@ MainWindow::MainWindow(QWidget* parent)
     centreLayout->setSpacing(0);
     centreLayout->addWidget(classTableBanner_);
     centreLayout->addWidget(canvas_, 1);
+    timelineBar_ = new TimelineBar(centre);
+    timelineBar_->hide();
+    centreLayout->addWidget(timelineBar_);
     setCentralWidget(centre);
     setAcceptDrops(true);
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
@@ -313,6 +320,8 @@ void MainWindow::createDocks() {
             robotView_->selectRow(robot);
     });
 
+    auto* eventsWidget = createEventsWidget();
+
     settingsPanel_ = new PlannerSettingsPanel(this);
     connect(settingsPanel_, &PlannerSettingsPanel::choiceEdited, this, [this](const PlannerChoice& choice) {
         document_->setPlannerChoice(choice);
@@ -326,6 +335,7 @@ void MainWindow::createDocks() {
     auto* classesDock =
         makeDock(QStringLiteral("classesDock"), tr("Land-cover classes"), classesWidget, this);
     auto* robotsDock = makeDock(QStringLiteral("robotsDock"), tr("Robots"), robotsWidget, this);
+    auto* eventsDock = makeDock(QStringLiteral("eventsDock"), tr("Events"), eventsWidget, this);
     auto* settingsDock = makeDock(QStringLiteral("plannerDock"), tr("Planner"), settingsPanel_, this);
     auto* resultsDock = makeDock(QStringLiteral("resultsDock"), tr("Results"), resultsPanel_, this);
     comparisonPanel_ = new ComparisonPanel(this);
@@ -345,6 +355,9 @@ void MainWindow::createDocks() {
     tabifyDockWidget(layersDock, legendDock);
     layersDock->raise();
     addDockWidget(Qt::LeftDockWidgetArea, robotsDock);
+    addDockWidget(Qt::LeftDockWidgetArea, eventsDock);
+    tabifyDockWidget(robotsDock, eventsDock);
+    robotsDock->raise();
     addDockWidget(Qt::LeftDockWidgetArea, settingsDock);
     addDockWidget(Qt::RightDockWidgetArea, resultsDock);
     addDockWidget(Qt::RightDockWidgetArea, comparisonDock_);
@@ -665,7 +678,10 @@ void MainWindow::connectDocument() {
     connect(document_, &MissionDocument::planChanged, this, [this] {
         updateResults();
         updateActions();
+        updateTimeline();
     });
+    connect(timelineBar_, &TimelineBar::secondsChanged, canvas_,
+            [this](double seconds) { canvas_->setTimelineSeconds(seconds); });
     connect(document_, &MissionDocument::robotsChanged, this, [this] {
         updateResults();
         updateActions();
@@ -752,6 +768,55 @@ void MainWindow::updateActions() {
     compareAction_->setEnabled(hasMap && !planning && !exporting && !document_->robots().empty());
     comparisonPanel_->setRunning(planning || exporting);
     comparisonPanel_->setRobotCount(static_cast<int>(document_->robots().size()));
+}
+
+// The timeline shows under the map for plans simulated over time, at the end of the mission at first.
+void MainWindow::updateTimeline() {
+    const Plan* plan = document_->plan();
+    const TimelineLayer* timeline = plan != nullptr ? timelineLayerOf(*plan) : nullptr;
+    if (timeline == nullptr) {
+        timelineBar_->hide();
+        canvas_->setTimelineSeconds(std::nullopt);
+        return;
+    }
+    std::vector<double> eventSeconds;
+    for (const SpeedEvent& event : timeline->summary().events)
+        eventSeconds.push_back(event.timeSeconds);
+    timelineBar_->setTimeline(timeline->summary().makespanSeconds, eventSeconds);
+    canvas_->setTimelineSeconds(timelineBar_->seconds());
+    timelineBar_->show();
+}
+
+// Events: a table of when which robot slows down or stops, plus add/remove.
+QWidget* MainWindow::createEventsWidget() {
+    auto* widget = new QWidget(this);
+    auto* layout = new QVBoxLayout(widget);
+    layout->setContentsMargins(4, 4, 4, 4);
+    auto* view = new QTableView(widget);
+    view->setObjectName(QStringLiteral("eventTableView"));
+    view->setModel(eventModel_);
+    view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    view->horizontalHeader()->setStretchLastSection(true);
+    view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view->setSelectionMode(QAbstractItemView::SingleSelection);
+    view->setToolTip(tr("From its time on, the robot drives at its speed factor times its land-cover speeds "
+                        "(0.5 half speed, 0 stopped). Robots count from 0. Played by MDSTC"));
+    layout->addWidget(view, 1);
+    auto* buttons = new QHBoxLayout;
+    auto* add = new QPushButton(tr("Add"), widget);
+    add->setObjectName(QStringLiteral("addEventButton"));
+    auto* remove = new QPushButton(tr("Remove"), widget);
+    remove->setObjectName(QStringLiteral("removeEventButton"));
+    buttons->addWidget(add);
+    buttons->addWidget(remove);
+    buttons->addStretch(1);
+    layout->addLayout(buttons);
+    connect(add, &QPushButton::clicked, eventModel_, [this] { static_cast<void>(eventModel_->addEvent()); });
+    connect(remove, &QPushButton::clicked, eventModel_,
+            [this, view] { static_cast<void>(eventModel_->removeEvent(view->currentIndex().row())); });
+    connect(eventModel_, &EventTableModel::editRefused, this,
+            [this](const QString& reason) { showStatus(reason); });
+    return widget;
 }
 
 void MainWindow::updateResults() {

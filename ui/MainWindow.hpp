@@ -31,6 +31,7 @@ class ClassTableBanner;
 class ClassTableModel;
 class ComparisonPanel;
 class ComparisonRunner;
+class EventTableModel;
 class ExportRunner;
 class LayersPanel;
 class LegendPanel;
@@ -40,6 +41,7 @@ class PlannerSettingsPanel;
 class PlanningRunner;
 class ResultsPanel;
 class RobotTableModel;
+class TimelineBar;
 struct ExportOutcome;
 struct PlanningOutcome;
 
@@ -124,6 +126,8 @@ class MainWindow : public QMainWindow {
     void updateTitle();
     void updateActions();
     void updateResults();
+    void updateTimeline();
+    [[nodiscard]] QWidget* createEventsWidget();
     void syncPresetCombo();
     // Says where the class table of a newly opened raster came from: banner, status bar and message log.
     void explainClassTable(const io::OpeningClassTable& opening);
@@ -173,6 +177,8 @@ class MainWindow : public QMainWindow {
     MapCanvas* canvas_;
     ClassTableModel* classModel_;
     RobotTableModel* robotModel_;
+    EventTableModel* eventModel_ = nullptr;
+    TimelineBar* timelineBar_ = nullptr;
     PlanningRunner* runner_;
     ExportRunner* exportRunner_;
     ComparisonRunner* comparisonRunner_;

@@ -86,6 +86,14 @@ void MapCanvas::setTool(Tool tool) {
     updateCursor(mapFromGlobal(QCursor::pos()));
 }
 
+void MapCanvas::setTimelineSeconds(std::optional<double> seconds) {
+    if (renderer_.timelineSeconds() == seconds)
+        return;
+    renderer_.setTimelineSeconds(seconds);
+    mapImage_.invalidate();
+    update();
+}
+
 void MapCanvas::setLayers(const render::MapLayers& layers) {
     renderer_.setLayers(layers);
     mapImage_.invalidate();

@@ -32,6 +32,8 @@ class MapCanvas : public QWidget {
     void setTool(Tool tool);
     [[nodiscard]] Tool tool() const { return tool_; }
     void setLayers(const render::MapLayers& layers);
+    // Shows a plan simulated over time at one moment (render::PlanRenderer::setTimelineSeconds).
+    void setTimelineSeconds(std::optional<double> seconds);
     [[nodiscard]] const render::MapLayers& layers() const { return renderer_.layers(); }
     void setSelectedStart(int robot);
     [[nodiscard]] int selectedStart() const { return selectedStart_; }

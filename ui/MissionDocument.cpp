@@ -43,7 +43,7 @@ bool MissionDocument::planStale() const {
 }
 
 PlanInputs MissionDocument::currentInputs() const {
-    return {mission_.classes, starts(), mission_.planner};
+    return {mission_.classes, starts(), mission_.planner, mission_.events};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {
@@ -56,6 +56,12 @@ void MissionDocument::setClasses(const ClassTable& classes, const QString& prese
 void MissionDocument::setRobots(std::vector<io::RobotSpec> robots) {
     mission_.robots = std::move(robots);
     emit robotsChanged();
+    emitStaleIfChanged();
+}
+
+void MissionDocument::setEvents(std::vector<SpeedEvent> events) {
+    mission_.events = std::move(events);
+    emit eventsChanged();
     emitStaleIfChanged();
 }
 

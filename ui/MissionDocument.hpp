@@ -20,6 +20,7 @@ struct PlanInputs {
     ClassTable classes;
     std::vector<MapPoint> starts;
     PlannerChoice planner;
+    std::vector<SpeedEvent> events = {};
 
     friend bool operator==(const PlanInputs&, const PlanInputs&) = default;
 };
@@ -44,6 +45,7 @@ class MissionDocument : public QObject {
     [[nodiscard]] const io::Mission& mission() const { return mission_; }
     [[nodiscard]] const ClassTable& classes() const { return mission_.classes; }
     [[nodiscard]] const std::vector<io::RobotSpec>& robots() const { return mission_.robots; }
+    [[nodiscard]] const std::vector<SpeedEvent>& events() const { return mission_.events; }
     [[nodiscard]] std::vector<MapPoint> starts() const;
     [[nodiscard]] const PlannerChoice& plannerChoice() const { return mission_.planner; }
     [[nodiscard]] const QString& missionPath() const { return missionPath_; }
@@ -54,6 +56,7 @@ class MissionDocument : public QObject {
 
     void setClasses(const ClassTable& classes, const QString& preset);
     void setRobots(std::vector<io::RobotSpec> robots);
+    void setEvents(std::vector<SpeedEvent> events);
     void setPlannerChoice(const PlannerChoice& choice);
     void setMissionPath(const QString& path);
     // The waypoint files' settings: the mission's exports and each robot's vehicle (robots otherwise as
@@ -75,6 +78,7 @@ class MissionDocument : public QObject {
     void mapChanged();
     void classesChanged();
     void robotsChanged();
+    void eventsChanged();
     void settingsChanged();
     void planChanged();
     void staleChanged(bool stale);

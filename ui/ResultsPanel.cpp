@@ -4,6 +4,8 @@
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/model/TimelineLayer.hpp"
+#include "core/model/TimelineText.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QBarCategoryAxis>
@@ -68,6 +70,18 @@ QString chargingNote(const Plan& plan, int robot) {
         .arg(path.pauses.size());
 }
 
+// For plans played through events: when the robot was really done, and whether it stopped.
+QString completionNote(const Plan& plan, int robot) {
+    const TimelineLayer* timeline = timelineLayerOf(plan);
+    if (timeline == nullptr || robot < 0 || static_cast<std::size_t>(robot) >= timeline->robots().size())
+        return {};
+    const RobotTimeline& played = timeline->robots()[static_cast<std::size_t>(robot)];
+    return played.stopped ? QObject::tr("; under the events it stopped at %1")
+                                .arg(ResultsPanel::formatDuration(played.completionSeconds))
+                          : QObject::tr("; under the events it is done at %1")
+                                .arg(ResultsPanel::formatDuration(played.completionSeconds));
+}
+
 QLabel* valueLabel(const QString& objectName, QWidget* parent) {
     auto* label = new QLabel(QStringLiteral("–"), parent);
     label->setObjectName(objectName);
@@ -101,6 +115,10 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     detection_ = valueLabel(QStringLiteral("detectionLabel"), this);
     detection_->setToolTip(tr("The chance a target in a covered cell is seen, over every cell the sensor "
                               "can see: the least, the mean and the share at the required probability"));
+    timeline_ = valueLabel(QStringLiteral("timelineLabel"), this);
+    timeline_->setWordWrap(true);
+    timeline_->setToolTip(tr("The mission played through its events, beside a static plan run through the "
+                             "same events without re-allocation"));
     warnings_ = valueLabel(QStringLiteral("warningsLabel"), this);
     warnings_->setWordWrap(true);
     summary->addRow(tr("Makespan"), makespan_);
@@ -110,9 +128,11 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     summary->addRow(tr("Unreachable"), unreachable_);
     summary->addRow(tr("Planner"), planner_);
     summary->addRow(tr("Detection"), detection_);
+    summary->addRow(tr("Events"), timeline_);
     summary->addRow(tr("Warnings"), warnings_);
     summary_ = summary;
     summary->setRowVisible(detection_, false);
+    summary->setRowVisible(timeline_, false);
     layout->addLayout(summary);
 
     table_ = new QTableWidget(0, 7, this);
@@ -166,10 +186,11 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     table_->setSortingEnabled(false);
     table_->setRowCount(0);
     if (plan == nullptr) {
-        for (QLabel* label :
-             {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, detection_, warnings_})
+        for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, detection_,
+                              timeline_, warnings_})
             label->setText(QStringLiteral("–"));
         summary_->setRowVisible(detection_, false);
+        summary_->setRowVisible(timeline_, false);
         clearChart();
         setStale(false);
         return;
@@ -194,7 +215,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         auto* turns = numberItem(QString::number(robot.turns), robot.turns);
         const QString turning = tr("%1 of it lost slowing down for turns and speeding up again (turn_s)")
                                     .arg(formatDuration(robot.turnSeconds));
-        time->setToolTip(turning + chargingNote(*plan, robot.robot));
+        time->setToolTip(turning + chargingNote(*plan, robot.robot) + completionNote(*plan, robot.robot));
         turns->setToolTip(turning);
         table_->setItem(r, 4, time);
         table_->setItem(r, 5, turns);
@@ -220,6 +241,10 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
                                 .arg(seen.shareMet * 100.0, 0, 'f', 1)
                                 .arg(seen.requiredProbability));
     }
+    const TimelineLayer* timeline = timelineLayerOf(*plan);
+    summary_->setRowVisible(timeline_, timeline != nullptr);
+    if (timeline != nullptr)
+        timeline_->setText(QString::fromStdString(timelineSentence(timeline->summary())));
     QStringList warnings;
     for (const auto& warning : plan->warnings())
         warnings << QString::fromStdString(warning);

@@ -45,6 +45,7 @@ class ResultsPanel : public QWidget {
     QLabel* unreachable_;
     QLabel* planner_;
     QLabel* detection_; // only for plans with a detection layer
+    QLabel* timeline_;  // only for plans simulated over time with events
     QFormLayout* summary_;
     QLabel* warnings_;
     QChartView* chartView_;

@@ -1,6 +1,7 @@
 #include "core/coverage/ImpassableCrossings.hpp"
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "render/PlanImage.hpp"
 #include "render/PlanLegend.hpp"
@@ -186,6 +187,42 @@ class TestPlanRenderer : public QObject {
         QVERIFY(
             std::any_of(sections.back().items.begin(), sections.back().items.end(),
                         [](const render::LegendItem& item) { return item.label.contains("0.95 or more"); }));
+    }
+
+    // A plan played through time, shown 5 s into a 20 s path: the first quarter is drawn, with the robot's
+    // dot where it is; the rest of the way is not driven yet. Without a time, the whole path shows.
+    void drawsThePathAsDrivenSoFar() {
+        Plan plan = eastboundPlan();
+        RobotTimeline robot;
+        robot.secondsAtWaypoint = {0.0, 10.0, 20.0};
+        robot.completionSeconds = 20.0;
+        plan.layers.push_back(std::make_shared<TimelineLayer>(TimelineLayer::Summary{}, std::vector{robot},
+                                                              std::vector<int>{}));
+        const ClassGrid grid = twoClassGrid();
+        const ClassTable classes = twoClassTable();
+        const auto draw = [&](std::optional<double> seconds) {
+            QImage image(400, 200, QImage::Format_ARGB32_Premultiplied);
+            render::PlanRenderer renderer;
+            renderer.setMap(&grid, &classes);
+            renderer.setPlan(&plan);
+            render::MapLayers layers;
+            layers.starts = false;
+            renderer.setLayers(layers);
+            renderer.setTimelineSeconds(seconds);
+            QPainter painter(&image);
+            renderer.paint(painter, render::PlanRenderer::fitTransform(grid, QSizeF(400, 200)),
+                           QRectF(0, 0, 400, 200));
+            return image;
+        };
+        const QColor colour = render::RobotPalette::colour(0);
+        // World x 1005..1095 along y 4950 is image x 10..190 at y 100; at 5 s the robot is at x 1027.5.
+        const QImage early = draw(5.0);
+        QVERIFY2(near(early.pixelColor(30, 100), colour, 30), qPrintable(early.pixelColor(30, 100).name()));
+        QVERIFY2(near(early.pixelColor(55, 100), colour, 30), qPrintable(early.pixelColor(55, 100).name()));
+        QVERIFY2(near(early.pixelColor(150, 100), QColor::fromRgb(kMeadow)),
+                 qPrintable(early.pixelColor(150, 100).name()));
+        const QImage whole = draw(std::nullopt);
+        QVERIFY2(near(whole.pixelColor(150, 100), colour, 30), qPrintable(whole.pixelColor(150, 100).name()));
     }
 
     void hidesPathsWhenTheLayerIsOff() {

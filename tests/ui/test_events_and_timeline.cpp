@@ -1,0 +1,154 @@
+#include "core/model/TimelineLayer.hpp"
+#include "ui/EventTableModel.hpp"
+#include "ui/MissionDocument.hpp"
+#include "ui/ResultsPanel.hpp"
+#include "ui/TimelineBar.hpp"
+
+#include <QLabel>
+#include <QSignalSpy>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+// 10 x 10 pixels of grass, two robots.
+std::shared_ptr<io::LoadedRaster> grassRaster() {
+    auto raster = std::make_shared<io::LoadedRaster>();
+    raster->path = "synthetic.tif";
+    ClassGrid& grid = raster->grid;
+    grid.columns = 10;
+    grid.rows = 10;
+    grid.originX = 0.0;
+    grid.originY = 100.0;
+    grid.pixelWidth = 10.0;
+    grid.pixelHeight = 10.0;
+    grid.values.assign(100, 1);
+    grid.outside.assign(100, 0);
+    raster->classPixelCounts = {{1, 100}};
+    return raster;
+}
+
+io::Mission twoRobotMission() {
+    io::Mission mission;
+    mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 2.0, 10.0, true}});
+    mission.robots = {io::RobotSpec{"east", {75.0, 55.0}, ""}, io::RobotSpec{"west", {25.0, 55.0}, ""}};
+    return mission;
+}
+
+} // namespace
+
+class TestEventsAndTimeline : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void init() {
+        document_ = std::make_unique<ui::MissionDocument>();
+        undoStack_ = std::make_unique<QUndoStack>();
+        document_->reset(grassRaster(), twoRobotMission(), QString());
+        events_ = std::make_unique<ui::EventTableModel>(document_.get(), undoStack_.get());
+    }
+
+    // An added event (robot 0 at half speed) is edited, shown with the robot's name, and undone step by step.
+    void eventsAreAddedEditedAndUndone() {
+        QVERIFY(events_->addEvent());
+        QCOMPARE(events_->rowCount(), 1);
+        QCOMPARE(document_->events().front().speedFactor, 0.5);
+        QVERIFY(events_->setData(events_->index(0, ui::EventTableModel::Robot), 1));
+        QVERIFY(events_->setData(events_->index(0, ui::EventTableModel::Time), 300));
+        QVERIFY(events_->setData(events_->index(0, ui::EventTableModel::SpeedFactor), 0));
+        const SpeedEvent edited = document_->events().front();
+        QCOMPARE(edited.robot, 1);
+        QCOMPARE(edited.timeSeconds, 300.0);
+        QCOMPARE(edited.speedFactor, 0.0);
+        QCOMPARE(events_->data(events_->index(0, ui::EventTableModel::Robot)).toString(),
+                 QString("1 · west"));
+        QVERIFY(
+            events_->data(events_->index(0, ui::EventTableModel::SpeedFactor)).toString().contains("stops"));
+        undoStack_->undo();
+        QCOMPARE(document_->events().front().speedFactor, 0.5);
+        undoStack_->undo();
+        undoStack_->undo();
+        undoStack_->undo();
+        QCOMPARE(events_->rowCount(), 0);
+    }
+
+    // Values the planner would refuse are refused here, with the reason, and change nothing.
+    void impossibleValuesAreRefused_data() {
+        QTest::addColumn<int>("column");
+        QTest::addColumn<QString>("value");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("time before the start") << int(ui::EventTableModel::Time) << "-10"
+                                               << "0 s or later";
+        QTest::newRow("no such robot") << int(ui::EventTableModel::Robot) << "2"
+                                       << "robot 2 does not exist";
+        QTest::newRow("half a robot") << int(ui::EventTableModel::Robot) << "0.5"
+                                      << "not a robot number";
+        QTest::newRow("negative factor") << int(ui::EventTableModel::SpeedFactor) << "-1"
+                                         << "got -1";
+        QTest::newRow("not a number") << int(ui::EventTableModel::SpeedFactor) << "fast"
+                                      << "not a number";
+    }
+    void impossibleValuesAreRefused() {
+        QFETCH(int, column);
+        QFETCH(QString, value);
+        QFETCH(QString, reason);
+        QVERIFY(events_->addEvent());
+        const std::vector<SpeedEvent> before = document_->events();
+        QSignalSpy refused(events_.get(), &ui::EventTableModel::editRefused);
+        QVERIFY(!events_->setData(events_->index(0, column), value));
+        QCOMPARE(refused.count(), 1);
+        QVERIFY2(refused.front().front().toString().contains(reason),
+                 qPrintable(refused.front().front().toString()));
+        QVERIFY(document_->events() == before);
+    }
+
+    // An event edit makes the plan stale, like any other input.
+    void anEventMakesThePlanStale() {
+        document_->setPlan(std::make_shared<Plan>(), document_->currentInputs());
+        QVERIFY(!document_->planStale());
+        QVERIFY(events_->addEvent());
+        QVERIFY(document_->planStale());
+    }
+
+    // The bar starts at the end of the mission, moves through it and reports the time it shows.
+    void theTimelineBarShowsATime() {
+        ui::TimelineBar bar;
+        bar.setTimeline(1000.0, {250.0});
+        QCOMPARE(bar.seconds(), 1000.0);
+        QSignalSpy changed(&bar, &ui::TimelineBar::secondsChanged);
+        bar.setSeconds(250.0);
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(changed.front().front().toDouble(), 250.0);
+        QVERIFY(!bar.isPlaying());
+    }
+
+    // A plan played through events says in the results how long it took and what the static plan would.
+    void resultsSayWhatReallocationSaved() {
+        Plan plan;
+        plan.planner = "mdstc";
+        TimelineLayer::Summary summary;
+        summary.events = {{100.0, 0, 0.5}};
+        summary.makespanSeconds = 3600.0;
+        summary.staticPlanner = "mcpp-mlct";
+        summary.staticMakespanSeconds = 7200.0;
+        plan.layers.push_back(
+            std::make_shared<TimelineLayer>(summary, std::vector<RobotTimeline>{}, std::vector<int>{}));
+        ui::ResultsPanel panel;
+        panel.showPlan(&plan, {});
+        const auto* label = panel.findChild<QLabel*>(QStringLiteral("timelineLabel"));
+        QVERIFY(label != nullptr);
+        QVERIFY2(label->text().contains("1 h") && label->text().contains("50") &&
+                     label->text().contains("saved"),
+                 qPrintable(label->text()));
+    }
+
+  private:
+    std::unique_ptr<ui::MissionDocument> document_;
+    std::unique_ptr<QUndoStack> undoStack_;
+    std::unique_ptr<ui::EventTableModel> events_;
+};
+
+QTEST_MAIN(TestEventsAndTimeline)
+#include "test_events_and_timeline.moc"
