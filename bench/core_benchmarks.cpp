@@ -4,6 +4,7 @@
 // peak memory so far. The *_free_turns cases plan with turn_s 0, as before turns were timed.
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -66,6 +67,12 @@ void runPlanner(benchmark::State& state, PlanningProblem problem,
         state.counters["longest_over_mean"] =
             plan.paths.empty() ? 0.0
                                : plan.metrics.makespanSeconds * static_cast<double>(plan.paths.size()) / sum;
+    }
+    if (const TimelineLayer* timeline = timelineLayerOf(plan)) {
+        const TimelineLayer::Summary& summary = timeline->summary();
+        state.counters["under_events_s"] = summary.makespanSeconds;
+        state.counters["static_s"] = summary.staticMakespanSeconds;
+        state.counters["over_static"] = summary.makespanSeconds / summary.staticMakespanSeconds;
     }
     state.counters["peak_rss_mb"] = peakResidentMegabytes();
     for (const auto& [stage, milliseconds] : plan.metrics.stageMilliseconds)
@@ -145,6 +152,25 @@ void multiCoverDetection(benchmark::State& state) {
                "cppied");
 }
 
+// MDSTC on the uniform grids without events: its makespan over the static MCPP-MLCT plan's (over_static).
+void uniformGridMdstc(benchmark::State& state) {
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        "mdstc");
+}
+
+// MDSTC with robot 0 at half speed from a quarter of its makespan without events, against the static plan
+// run through the same event.
+void uniformGridMdstcSlowRobot(benchmark::State& state) {
+    PlanningProblem problem =
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020);
+    problem.planner = defaultPlannerChoice("mdstc");
+    const Plan calm = makePlanner("mdstc")->plan(problem, {});
+    problem.events = {{timelineLayerOf(calm)->summary().makespanSeconds / 4.0, 0, 0.5}};
+    runPlanner(state, problem, "mdstc");
+}
+
 void multiCoverMap(benchmark::State& state) {
     runPlanner(state, multiCover(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 7));
 }
@@ -160,6 +186,10 @@ BENCHMARK_CAPTURE(uniformGridFreeTurns, mcpp_mlct_free_turns, std::string("mcpp-
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridTurnSlack)
     ->ArgsProduct({{49, 200}, {8, 20}, {0, 2, 10, 50}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridMdstc)->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridMdstcSlowRobot)
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(uniformGrid, darp, std::string("darp"))
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
