@@ -48,12 +48,13 @@ void addDetection(JsonValue& root, const DetectionSummary& summary) {
 }
 
 // A simulated robot: when it was done under the events, what it took over, when the static plan's would be.
-void addTimeline(JsonValue& item, const RobotTimeline& robot) {
+void addTimeline(JsonValue& item, const RobotTimeline& robot, bool compared) {
     item.add("completion_s", robot.completionSeconds);
     item.add("stopped", robot.stopped);
     item.add("cells_taken_over", static_cast<int>(robot.cellsTakenOver.size()));
     item.add("taken_over_area_m2", robot.takenOverAreaSquareMetres);
-    item.add("static_completion_s", robot.staticCompletionSeconds); // null: stopped before the end
+    if (compared)
+        item.add("static_completion_s", robot.staticCompletionSeconds); // null: stopped before the end
 }
 
 // The events played and what re-allocation saved against the static plan run through them.
@@ -120,7 +121,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         if (sorties != nullptr)
             addSorties(item, context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
         if (timeline != nullptr)
-            addTimeline(item, timeline->robots()[static_cast<std::size_t>(robot.robot)]);
+            addTimeline(item, timeline->robots()[static_cast<std::size_t>(robot.robot)],
+                        !timeline->summary().staticPlanner.empty());
     }
     root.add("makespan_s", metrics.makespanSeconds);
     root.add("lower_bound_s", metrics.lowerBoundSeconds);

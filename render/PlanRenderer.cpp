@@ -591,6 +591,8 @@ void PlanRenderer::paintPathsAt(QPainter& painter, const QTransform& worldToDevi
     const bool dense = meanStepMetres_ * std::abs(worldToDevice.m11()) < 12.0;
     const QRectF visibleDevice = deviceArea.adjusted(-10.0, -10.0, 10.0, 10.0);
     for (const RobotTimeline& robot : timeline->robots()) {
+        if (robot.robot < 0 || static_cast<std::size_t>(robot.robot) >= plan_->paths.size())
+            continue;
         const std::vector<Waypoint>& waypoints =
             plan_->paths[static_cast<std::size_t>(robot.robot)].waypoints;
         const std::vector<double>& at = robot.secondsAtWaypoint;

@@ -7,6 +7,7 @@
 
 #include <QUndoStack>
 #include <algorithm>
+#include <cmath>
 
 namespace mcpp::ui {
 
@@ -33,13 +34,14 @@ QVariant EventTableModel::data(const QModelIndex& index, int role) const {
         return {};
     const SpeedEvent& event = document_->events()[static_cast<std::size_t>(index.row())];
     if (role == Qt::EditRole) {
+        // As text: a spin box would round a factor such as 0.125 to two decimals.
         switch (index.column()) {
         case Time:
-            return event.timeSeconds;
+            return QString::fromStdString(formatQuantity(event.timeSeconds));
         case Robot:
-            return event.robot;
+            return QString::number(event.robot);
         default:
-            return event.speedFactor;
+            return QString::fromStdString(formatQuantity(event.speedFactor));
         }
     }
     if (role == Qt::ToolTipRole && index.column() == Time)
@@ -95,7 +97,7 @@ bool EventTableModel::setData(const QModelIndex& index, const QVariant& value, i
         event.timeSeconds = typed;
         break;
     case Robot:
-        if (typed != static_cast<double>(static_cast<int>(typed)))
+        if (!(typed >= -1.0 && typed <= 1e6) || typed != std::floor(typed))
             return refuse(tr("Robot: %1 is not a robot number (0, 1, 2, ...)").arg(value.toString()));
         event.robot = static_cast<int>(typed);
         break;
@@ -107,6 +109,8 @@ bool EventTableModel::setData(const QModelIndex& index, const QVariant& value, i
         return refuse(tr("Event %1 %2: %3")
                           .arg(index.row() + 1)
                           .arg(QString::fromStdString(wrong->field), QString::fromStdString(wrong->detail)));
+    if (after == document_->events())
+        return true; // the same value: nothing to undo
     undoStack_->push(new EventsEditCommand(document_, document_->events(), after,
                                            tr("Edit event %1").arg(index.row() + 1)));
     return true;
@@ -116,8 +120,10 @@ bool EventTableModel::addEvent() {
     if (document_->robots().empty())
         return refuse(tr("Place a robot first: an event slows a robot down or stops it"));
     std::vector<SpeedEvent> after = document_->events();
-    const double last = after.empty() ? 0.0 : after.back().timeSeconds;
-    after.push_back({last + 600.0, 0, 0.5});
+    double latest = 0.0;
+    for (const SpeedEvent& event : after)
+        latest = std::max(latest, event.timeSeconds);
+    after.push_back({after.empty() ? 600.0 : latest + 600.0, 0, 0.5});
     undoStack_->push(new EventsEditCommand(document_, document_->events(), after, tr("Add event")));
     return true;
 }

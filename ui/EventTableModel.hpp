@@ -27,7 +27,8 @@ class EventTableModel : public QAbstractTableModel {
     [[nodiscard]] Qt::ItemFlags flags(const QModelIndex& index) const override;
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
-    // A new event after the last one: the first robot at half speed. False, with the reason, without robots.
+    // A new event 10 minutes after the latest one: the first robot at half speed. False, with the reason,
+    // without robots.
     bool addEvent();
     bool removeEvent(int row);
 

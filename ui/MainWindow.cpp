@@ -775,6 +775,7 @@ void MainWindow::updateTimeline() {
     const Plan* plan = document_->plan();
     const TimelineLayer* timeline = plan != nullptr ? timelineLayerOf(*plan) : nullptr;
     if (timeline == nullptr) {
+        timelineBar_->stop();
         timelineBar_->hide();
         canvas_->setTimelineSeconds(std::nullopt);
         return;

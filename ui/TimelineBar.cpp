@@ -47,9 +47,11 @@ TimelineBar::TimelineBar(QWidget* parent)
 }
 
 void TimelineBar::setTimeline(double makespanSeconds, const std::vector<double>& eventSeconds) {
-    timer_->stop();
-    play_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+    stop();
     makespanSeconds_ = makespanSeconds;
+    // A mission of no length has nothing to play.
+    play_->setEnabled(makespanSeconds > 0.0);
+    slider_->setEnabled(makespanSeconds > 0.0);
     std::vector<int> marks;
     for (const double time : eventSeconds)
         if (makespanSeconds > 0.0 && time <= makespanSeconds)
@@ -73,10 +75,14 @@ bool TimelineBar::isPlaying() const {
     return timer_->isActive();
 }
 
+void TimelineBar::stop() {
+    timer_->stop();
+    play_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+}
+
 void TimelineBar::togglePlay() {
     if (timer_->isActive()) {
-        timer_->stop();
-        play_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+        stop();
         return;
     }
     if (slider_->value() >= steps)

@@ -25,6 +25,7 @@ class TimelineBar : public QWidget {
     [[nodiscard]] double seconds() const;
     void setSeconds(double seconds);
     [[nodiscard]] bool isPlaying() const;
+    void stop();
 
   signals:
     void secondsChanged(double seconds);

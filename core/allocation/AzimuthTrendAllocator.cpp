@@ -1,13 +1,11 @@
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 
 #include "core/allocation/PieceSettlement.hpp"
-#include "core/allocation/StartComponents.hpp"
 #include "core/model/LocalConnectivity.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <queue>
 
 namespace mcpp {

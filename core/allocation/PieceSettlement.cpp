@@ -1,6 +1,7 @@
 #include "core/allocation/PieceSettlement.hpp"
 
 #include "core/allocation/BorderExchange.hpp"
+#include "core/allocation/RegionCosts.hpp"
 #include "core/allocation/StartComponents.hpp"
 #include "core/coverage/CellIndexScope.hpp"
 
@@ -62,11 +63,7 @@ void settleRegionsWithPieces(const CellGraph& graph, RegionAllocation& regions) 
             regions.robotOfCell[static_cast<std::size_t>(part.cells[i])] = robot;
         }
     }
-    std::fill(regions.costSeconds.begin(), regions.costSeconds.end(), 0.0);
-    for (std::size_t cell = 0; cell < regions.robotOfCell.size(); ++cell)
-        if (regions.robotOfCell[cell] >= 0)
-            regions.costSeconds[static_cast<std::size_t>(regions.robotOfCell[cell])] +=
-                graph.cell(static_cast<int>(cell)).coverSeconds();
+    regions.costSeconds = regionCosts(graph, regions.robotOfCell, regions.costSeconds.size());
 }
 
 } // namespace mcpp

@@ -149,7 +149,8 @@ int RemainingWorkExchange::handOverBlock(int maxMoves) {
                                               (work_[static_cast<std::size_t>(to)] + drive) * fromFactor) /
                                                  (fromFactor + toFactor)
                                            : freeWork(from) / static_cast<double>(robotCount);
-    if (wanted < blockCells * largestCellSeconds_)
+    // A stopped robot's cells go whatever their number: nobody else will cover them.
+    if (fromFactor > 0.0 && wanted < blockCells * largestCellSeconds_)
         return 0;
     return growBlock(seed, to, std::min(wanted, freeWork(from)), maxMoves);
 }
@@ -160,41 +161,52 @@ double RemainingWorkExchange::freeWork(int robot) const {
 }
 
 // The free cell of `donor` fewest steps from where `receiver` is, and the steps; -1 when none.
-std::pair<int, int> RemainingWorkExchange::nearestFreeCell(int donor, int receiver) const {
+std::pair<int, int> RemainingWorkExchange::nearestFreeCell(int donor, int receiver) {
     const int from = (*robots_)[static_cast<std::size_t>(receiver)].cell;
     if (from < 0)
         return {-1, 0};
-    std::vector<int> steps(graph_.size(), -1);
-    steps[static_cast<std::size_t>(from)] = 0;
+    const int stamp = nextStamp();
+    steps_[static_cast<std::size_t>(from)] = 0;
+    seen_[static_cast<std::size_t>(from)] = stamp;
     std::vector<int> queue{from};
     for (std::size_t head = 0; head < queue.size(); ++head) {
         const int at = queue[head];
         for (const int next : graph_.neighbours(at)) {
-            if (steps[static_cast<std::size_t>(next)] >= 0)
+            if (seen_[static_cast<std::size_t>(next)] == stamp)
                 continue;
-            steps[static_cast<std::size_t>(next)] = steps[static_cast<std::size_t>(at)] + 1;
+            seen_[static_cast<std::size_t>(next)] = stamp;
+            steps_[static_cast<std::size_t>(next)] = steps_[static_cast<std::size_t>(at)] + 1;
             if ((*owner_)[static_cast<std::size_t>(next)] == donor && isFree(next))
-                return {next, steps[static_cast<std::size_t>(next)]};
+                return {next, steps_[static_cast<std::size_t>(next)]};
             queue.push_back(next);
         }
     }
     return {-1, 0};
 }
 
+// A fresh mark for the scratch arrays, so no search clears them.
+int RemainingWorkExchange::nextStamp() {
+    if (seen_.size() != graph_.size()) {
+        seen_.assign(graph_.size(), 0);
+        steps_.assign(graph_.size(), 0);
+    }
+    return ++stamp_;
+}
+
 // Hands `seed` and the free cells of its region nearest it to `receiver`, up to `seconds` of cover time.
 int RemainingWorkExchange::growBlock(int seed, int receiver, double seconds, int maxMoves) {
     const int donor = (*owner_)[static_cast<std::size_t>(seed)];
     std::vector<int> block{seed};
-    std::vector<char> taken(graph_.size(), 0);
-    taken[static_cast<std::size_t>(seed)] = 1;
+    const int stamp = nextStamp();
+    seen_[static_cast<std::size_t>(seed)] = stamp;
     double total = 0.0;
     for (std::size_t head = 0; head < block.size() && total < seconds && static_cast<int>(head) < maxMoves;
          ++head) {
         total += graph_.cell(block[head]).coverSeconds();
         for (const int next : graph_.neighbours(block[head]))
-            if (taken[static_cast<std::size_t>(next)] == 0 &&
+            if (seen_[static_cast<std::size_t>(next)] != stamp &&
                 (*owner_)[static_cast<std::size_t>(next)] == donor && isFree(next)) {
-                taken[static_cast<std::size_t>(next)] = 1;
+                seen_[static_cast<std::size_t>(next)] = stamp;
                 block.push_back(next);
             }
     }
@@ -245,9 +257,7 @@ int RemainingWorkExchange::givableCell(int donor, int receiver) {
             bestScore = score;
         }
     }
-    candidates.resize(kept);
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    candidates.resize(kept); // a cell listed twice costs a second look, no more
     if (best < 0)
         candidates.clear(); // nothing the donor can spare here now
     return best;

@@ -33,7 +33,8 @@ class RemainingWorkExchange {
     [[nodiscard]] int givableCell(int donor, int receiver);
     [[nodiscard]] int handOverBlock(int maxMoves);
     [[nodiscard]] double freeWork(int robot) const;
-    [[nodiscard]] std::pair<int, int> nearestFreeCell(int donor, int receiver) const;
+    [[nodiscard]] std::pair<int, int> nearestFreeCell(int donor, int receiver);
+    [[nodiscard]] int nextStamp();
     int growBlock(int seed, int receiver, double seconds, int maxMoves);
     void move(int cell, int receiver);
     [[nodiscard]] int countIn(int cell, int region) const;
@@ -52,7 +53,10 @@ class RemainingWorkExchange {
     std::vector<int>* owner_ = nullptr;
     const std::vector<char>* entered_ = nullptr;
     const std::vector<Robot>* robots_ = nullptr;
-    std::vector<double> work_;            // by robot: seconds of work left at full speed
+    std::vector<double> work_; // by robot: seconds of work left at full speed
+    std::vector<int> seen_;    // by cell: the stamp of the last search that reached it
+    std::vector<int> steps_;   // by cell: steps from where that search began
+    int stamp_ = 0;
     std::vector<std::vector<int>> links_; // by (donor, receiver): free donor cells next to the receiver
 };
 

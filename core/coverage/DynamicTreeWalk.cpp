@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <unordered_map>
 
 namespace mcpp {
 namespace {
@@ -10,11 +11,12 @@ namespace {
 // Sides counter-clockwise from east (SubCellNodes::Direction); sub-cells by their counter-clockwise index
 // (SubCell). Circling counter-clockwise, a robot leaves a cell eastwards from its south-east sub-cell and
 // enters the south-west one of the cell beyond, and so on round.
-int exitSubCell(int direction) {
-    return (direction + 2) % 4;
-}
 int opposite(int direction) {
     return (direction + 2) % 4;
+}
+// By these two numberings the sub-cell a robot leaves by is the index of the opposite side.
+int exitSubCell(int direction) {
+    return opposite(direction);
 }
 
 } // namespace
@@ -67,6 +69,7 @@ void DynamicTreeWalk::circleTo(int subCellIndex) {
 
 void DynamicTreeWalk::enter(int cell, int node, int parentDirection, bool root, std::vector<char>& entered) {
     entered[static_cast<std::size_t>(cell)] = 1;
+    ++cellsEntered_;
     if (root)
         treeStartSubCell_ = subCellIndexOf(node);
     frames_.push_back({cell, parentDirection, 0, root, 0, 0});
@@ -110,8 +113,10 @@ bool DynamicTreeWalk::advance(const std::vector<int>& owner, std::vector<char>& 
     const int unpassed = 4 - std::popcount(done.passed);
     committedSeconds_ =
         std::max(0.0, committedSeconds_ - unpassed * graph_.cell(done.cell).coverSeconds() / 4.0);
+    lastClosedCell_ = done.cell;
     if (!done.root) {
         circleTo(exitSubCell(done.parentDirection));
+        lastClosedWaypoint_ = clock_.lastIndex();
         stepTo(nodes_.neighbour(node_, done.parentDirection));
         return true;
     }
@@ -120,22 +125,24 @@ bool DynamicTreeWalk::advance(const std::vector<int>& owner, std::vector<char>& 
     const int last = (treeStartSubCell_ + 3) % 4;
     if (!(done.children > 0 && subCellIndexOf(node_) == treeStartSubCell_))
         circleTo(last);
+    lastClosedWaypoint_ = clock_.lastIndex();
     return true;
 }
 
 // The shortest way over sub-cells to the nearest cell of its region nobody entered; false when none is left.
 bool DynamicTreeWalk::startTree(const std::vector<int>& owner, std::vector<char>& entered) {
-    std::vector<int> previous(static_cast<std::size_t>(nodes_.size()), SubCellNodes::none);
-    previous[static_cast<std::size_t>(node_)] = node_;
+    // Most such drives are short: a map of the nodes reached costs far less than an array the map's size.
+    std::unordered_map<int, int> previous;
+    previous.reserve(4096);
+    previous.emplace(node_, node_);
     std::vector<int> queue{node_};
     int found = SubCellNodes::none;
     for (std::size_t head = 0; head < queue.size() && found == SubCellNodes::none; ++head) {
         const int at = queue[head];
         for (int direction = 0; direction < 4 && found == SubCellNodes::none; ++direction) {
             const int next = nodes_.neighbour(at, direction);
-            if (next == SubCellNodes::none || previous[static_cast<std::size_t>(next)] != SubCellNodes::none)
+            if (next == SubCellNodes::none || !previous.emplace(next, at).second)
                 continue;
-            previous[static_cast<std::size_t>(next)] = at;
             queue.push_back(next);
             const auto cell = static_cast<std::size_t>(nodes_.waypoint(next).cell);
             if (owner[cell] == robot_ && entered[cell] == 0)
@@ -145,7 +152,7 @@ bool DynamicTreeWalk::startTree(const std::vector<int>& owner, std::vector<char>
     if (found == SubCellNodes::none)
         return false;
     std::vector<int> way;
-    for (int at = found; at != node_; at = previous[static_cast<std::size_t>(at)])
+    for (int at = found; at != node_; at = previous.at(at))
         way.push_back(at);
     for (auto it = way.rbegin(); it != way.rend(); ++it)
         stepTo(*it);
@@ -154,10 +161,12 @@ bool DynamicTreeWalk::startTree(const std::vector<int>& owner, std::vector<char>
     return true;
 }
 
-std::vector<int> DynamicTreeWalk::abandonOpenCells() {
+std::vector<int> DynamicTreeWalk::abandonUnfinishedCells(std::size_t reachedWaypoints) {
     std::vector<int> cells;
     for (const Frame& frame : frames_)
         cells.push_back(frame.cell);
+    if (lastClosedCell_ >= 0 && lastClosedWaypoint_ >= reachedWaypoints)
+        cells.push_back(lastClosedCell_);
     frames_.clear();
     committedSeconds_ = 0.0;
     return cells;

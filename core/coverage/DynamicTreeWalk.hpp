@@ -30,8 +30,14 @@ class DynamicTreeWalk {
     [[nodiscard]] const std::vector<double>& nominalSecondsAt() const { return nominalSecondsAt_; }
     // Work it has committed to: the cover time of the sub-cells of cells it has entered and not yet passed.
     [[nodiscard]] double committedSeconds() const { return committedSeconds_; }
-    // Lets go of the cells it has entered and not circled (it stopped): nobody has covered them whole.
-    [[nodiscard]] std::vector<int> abandonOpenCells();
+    // Whether its current tree is done (it must look for more of its region before it moves again).
+    [[nodiscard]] bool treeDone() const { return frames_.empty(); }
+    // How many cells it has entered so far.
+    [[nodiscard]] std::size_t cellsEntered() const { return cellsEntered_; }
+    // Lets go of the cells it has not finished by its first `reachedWaypoints` points (it stopped there):
+    // those it has entered and not circled, and one it was finishing on the way out. Nobody covered them
+    // whole.
+    [[nodiscard]] std::vector<int> abandonUnfinishedCells(std::size_t reachedWaypoints);
     [[nodiscard]] std::vector<Waypoint> takeWaypoints() { return clock_.take(); }
 
   private:
@@ -62,6 +68,9 @@ class DynamicTreeWalk {
     int node_ = SubCellNodes::none;
     int treeStartSubCell_ = 0;
     double committedSeconds_ = 0.0;
+    std::size_t cellsEntered_ = 0;
+    int lastClosedCell_ = -1;            // the cell the last move finished circling
+    std::size_t lastClosedWaypoint_ = 0; // its last point
 };
 
 } // namespace mcpp

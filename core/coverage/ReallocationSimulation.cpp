@@ -1,6 +1,7 @@
 #include "core/coverage/ReallocationSimulation.hpp"
 
 #include "core/allocation/PieceSettlement.hpp"
+#include "core/allocation/RegionCosts.hpp"
 #include "core/allocation/RegionExpansion.hpp"
 
 #include <algorithm>
@@ -30,7 +31,10 @@ std::vector<double> eventTimes(const std::vector<SpeedEvent>& events) {
 } // namespace
 
 ReallocationSimulation::ReallocationSimulation(const CellGraph& graph, std::vector<SpeedEvent> events)
-    : graph_(graph), events_(std::move(events)), nodes_(graph, everyCell(graph)), exchange_(graph) {}
+    : graph_(graph), events_(std::move(events)), nodes_(graph, everyCell(graph)), exchange_(graph) {
+    for (const Cell& cell : graph.cells())
+        meanCellSeconds_ += cell.coverSeconds() / static_cast<double>(graph.size());
+}
 
 ReallocationSimulation::Result ReallocationSimulation::run(const std::vector<int>& startCells,
                                                            const std::vector<MapPoint>& starts,
@@ -46,46 +50,30 @@ ReallocationSimulation::Result ReallocationSimulation::run(const std::vector<int
                                                             startCells[r], entered_);
         timeNewWaypoints(static_cast<int>(r));
     }
-    const int everyMove = static_cast<int>(graph_.size());
-    exchange(0.0, everyMove);
-
-    using Turn = std::pair<double, int>; // (clock, robot): the robot that is furthest behind acts next
-    std::priority_queue<Turn, std::vector<Turn>, std::greater<>> turns;
+    exchange(0.0, static_cast<int>(graph_.size()));
+    countFreeCells();
     for (std::size_t r = 0; r < robots_.size(); ++r)
         if (robots_[r].state == State::Driving)
-            turns.emplace(robots_[r].clock, static_cast<int>(r));
+            turns_.emplace(robots_[r].clock, static_cast<int>(r));
+    playEvents(progress);
+    return finish();
+}
+
+// Robots act in the order of their clocks, one cell move at a time, until none has anything left to do.
+void ReallocationSimulation::playEvents(const ProgressReporter& progress) {
     const std::vector<double> changes = eventTimes(events_);
     std::size_t nextChange = 0;
     // Between events, a rebalance every so many cell moves keeps slow drifts in check at a bounded cost.
-    const int rhythm = std::max(8 * static_cast<int>(robots_.size()), everyMove / 64);
-    int movesSinceExchange = 0;
+    const int rhythm = std::max(8 * static_cast<int>(robots_.size()), static_cast<int>(graph_.size()) / 64);
     std::size_t movesInAll = 0;
     const std::size_t moveLimit = 64 * graph_.size() + 1024; // never spin, whatever the exchange does
-
-    const auto rebalance = [&](double now) {
-        const bool moved = exchange(now, everyMove) > 0;
-        movesSinceExchange = 0;
-        if (!moved)
-            return;
-        std::vector<char> holdsFreeCell(robots_.size(), 0);
-        for (std::size_t cell = 0; cell < owner_.size(); ++cell)
-            if (owner_[cell] >= 0 && entered_[cell] == 0)
-                holdsFreeCell[static_cast<std::size_t>(owner_[cell])] = 1;
-        for (std::size_t r = 0; r < robots_.size(); ++r)
-            if (robots_[r].state == State::Idle && holdsFreeCell[r] != 0) {
-                robots_[r].state = State::Driving;
-                robots_[r].clock = std::max(robots_[r].clock, now);
-                turns.emplace(robots_[r].clock, static_cast<int>(r));
-            }
-    };
-
-    while (!turns.empty() && movesInAll < moveLimit) {
-        const auto [now, r] = turns.top();
-        turns.pop();
+    while (!turns_.empty() && movesInAll < moveLimit) {
+        const auto [now, r] = turns_.top();
+        turns_.pop();
         Robot& robot = robots_[static_cast<std::size_t>(r)];
         if (robot.state != State::Driving)
             continue;
-        bool due = movesSinceExchange >= rhythm;
+        bool due = movesSinceExchange_ >= rhythm;
         for (; nextChange < changes.size() && changes[nextChange] <= now; ++nextChange)
             due = true;
         if (robot.schedule.stoppedFrom(robot.clock)) {
@@ -101,16 +89,36 @@ ReallocationSimulation::Result ReallocationSimulation::run(const std::vector<int
             rebalance(now);
             continue;
         }
-        ++movesSinceExchange;
-        if (++movesInAll % 4096 == 0) {
-            progress.throwIfCancelled();
-            const auto entered = std::count(entered_.begin(), entered_.end(), char{1});
-            progress.report("simulation", static_cast<double>(entered) / static_cast<double>(owner_.size()));
-        }
-        if (robot.state == State::Driving)
-            turns.emplace(robot.clock, r);
+        ++movesSinceExchange_;
+        if (++movesInAll % 4096 == 0)
+            reportProgress(progress);
+        if (robot.state == State::Stopped) // it stopped on the way: the others take over now
+            rebalance(robot.clock);
+        else
+            turns_.emplace(robot.clock, r);
     }
-    return finish();
+    if (movesInAll >= moveLimit)
+        gaveUp_ = true;
+}
+
+void ReallocationSimulation::reportProgress(const ProgressReporter& progress) const {
+    progress.throwIfCancelled();
+    const auto entered = std::count(entered_.begin(), entered_.end(), char{1});
+    progress.report("simulation", static_cast<double>(entered) / static_cast<double>(owner_.size()));
+}
+
+// Exchanges cells and wakes the idle robots that got some, at `now` (they waited until then).
+void ReallocationSimulation::rebalance(double now) {
+    movesSinceExchange_ = 0;
+    if (exchange(now, static_cast<int>(graph_.size())) == 0)
+        return;
+    countFreeCells();
+    for (std::size_t r = 0; r < robots_.size(); ++r)
+        if (robots_[r].state == State::Idle && robots_[r].freeCells > 0) {
+            robots_[r].state = State::Driving;
+            robots_[r].clock = std::max(robots_[r].clock, now);
+            turns_.emplace(robots_[r].clock, static_cast<int>(r));
+        }
 }
 
 // The regions grown from the starts in turns, then evened out before anyone moves (seed 003, figure 6 b).
@@ -118,11 +126,7 @@ std::vector<int> ReallocationSimulation::firstDivision(const std::vector<int>& s
     RegionAllocation regions;
     regions.robotOfCell = expandRegions(graph_, startCells);
     regions.startCell = startCells;
-    regions.costSeconds.assign(startCells.size(), 0.0);
-    for (std::size_t cell = 0; cell < regions.robotOfCell.size(); ++cell)
-        if (regions.robotOfCell[cell] >= 0)
-            regions.costSeconds[static_cast<std::size_t>(regions.robotOfCell[cell])] +=
-                graph_.cell(static_cast<int>(cell)).coverSeconds();
+    regions.costSeconds = regionCosts(graph_, regions.robotOfCell, startCells.size());
     settleRegionsWithPieces(graph_, regions);
     return regions.robotOfCell;
 }
@@ -130,19 +134,45 @@ std::vector<int> ReallocationSimulation::firstDivision(const std::vector<int>& s
 int ReallocationSimulation::exchange(double now, int maxMoves) {
     std::vector<RemainingWorkExchange::Robot> robots(robots_.size());
     for (std::size_t r = 0; r < robots_.size(); ++r) {
-        robots[r].speedFactor = robots_[r].state == State::Stopped ? 0.0 : robots_[r].schedule.factorAt(now);
+        robots[r].speedFactor = effectiveFactor(static_cast<int>(r), now);
         robots[r].committedSeconds = robots_[r].walk->committedSeconds();
         robots[r].cell = robots_[r].walk->waypoints().back().cell;
     }
-    const int moved = exchange_.exchange(owner_, entered_, robots, maxMoves);
-    return moved;
+    return exchange_.exchange(owner_, entered_, robots, maxMoves);
 }
 
+// The robot's speed over the work it has left, from `now` through its coming events: a pause counts as
+// slower driving, not as a stop; 0 only when it stops for good first.
+double ReallocationSimulation::effectiveFactor(int robot, double now) const {
+    const Robot& state = robots_[static_cast<std::size_t>(robot)];
+    if (state.state == State::Stopped)
+        return 0.0;
+    const double work =
+        state.walk->committedSeconds() + static_cast<double>(std::max(state.freeCells, 1)) * meanCellSeconds_;
+    const double done = state.schedule.finishTime(std::max(now, state.clock), work);
+    return std::isinf(done) ? 0.0 : work / std::max(done - now, 1e-9);
+}
+
+// One move of the robot's walk; false when it has nothing left to do. A robot whose tree is done and whose
+// region holds no free cell is idle without searching the map for one.
 bool ReallocationSimulation::act(int robot) {
-    if (!robots_[static_cast<std::size_t>(robot)].walk->advance(owner_, entered_))
+    Robot& state = robots_[static_cast<std::size_t>(robot)];
+    if (state.walk->treeDone() && state.freeCells == 0)
         return false;
+    const std::size_t enteredBefore = state.walk->cellsEntered();
+    if (!state.walk->advance(owner_, entered_))
+        return false;
+    state.freeCells -= static_cast<int>(state.walk->cellsEntered() - enteredBefore);
     timeNewWaypoints(robot);
     return true;
+}
+
+void ReallocationSimulation::countFreeCells() {
+    for (Robot& robot : robots_)
+        robot.freeCells = 0;
+    for (std::size_t cell = 0; cell < owner_.size(); ++cell)
+        if (owner_[cell] >= 0 && entered_[cell] == 0)
+            ++robots_[static_cast<std::size_t>(owner_[cell])].freeCells;
 }
 
 // Real times for the waypoints the walk just added; a robot that stops for good on the way stops there.
@@ -161,25 +191,21 @@ void ReallocationSimulation::timeNewWaypoints(int robot) {
     }
 }
 
-// The robot stops for good after its first `reachedWaypoints` points: the cells it has not finished, and
-// those of the points it never reached, are nobody's work done and go back to the pool.
+// The robot stops for good after its first `reachedWaypoints` points: the cells it has not finished are
+// nobody's work done and go back to the pool.
 void ReallocationSimulation::stop(int robot, std::size_t reachedWaypoints) {
     Robot& state = robots_[static_cast<std::size_t>(robot)];
     state.state = State::Stopped;
-    for (const int cell : state.walk->abandonOpenCells())
+    for (const int cell : state.walk->abandonUnfinishedCells(reachedWaypoints))
         entered_[static_cast<std::size_t>(cell)] = 0;
-    const std::vector<Waypoint>& waypoints = state.walk->waypoints();
-    for (std::size_t i = reachedWaypoints; i < waypoints.size(); ++i) {
-        const auto cell = static_cast<std::size_t>(waypoints[i].cell);
-        if (owner_[cell] == robot)
-            entered_[cell] = 0;
-    }
+    countFreeCells();
 }
 
 ReallocationSimulation::Result ReallocationSimulation::finish() {
     Result result;
     result.firstRegions = firstRegions_;
     result.finalRegions = owner_;
+    result.gaveUp = gaveUp_;
     for (std::size_t cell = 0; cell < owner_.size(); ++cell)
         if (owner_[cell] >= 0 && entered_[cell] == 0) {
             result.finalRegions[cell] = -1;

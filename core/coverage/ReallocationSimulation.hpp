@@ -9,7 +9,10 @@
 #include "core/model/SpeedEvent.hpp"
 #include "core/model/SpeedSchedule.hpp"
 
+#include <functional>
 #include <memory>
+#include <queue>
+#include <utility>
 #include <vector>
 
 namespace mcpp {
@@ -26,6 +29,7 @@ class ReallocationSimulation {
         std::vector<int> firstRegions;     // by cell: the region expansion's robot
         std::vector<int> finalRegions;     // by cell: the robot that covered it, -1 for none
         std::vector<int> uncoveredCells;   // reachable cells nobody covered (every robot near them stopped)
+        bool gaveUp = false;               // stopped at the move limit: the exchange kept moving cells
     };
 
     ReallocationSimulation(const CellGraph& graph, std::vector<SpeedEvent> events);
@@ -41,12 +45,18 @@ class ReallocationSimulation {
         std::vector<double> secondsAt; // real time at each waypoint so far
         double clock = 0.0;            // real time at its last waypoint, or when it last woke
         State state = State::Driving;
+        int freeCells = 0; // cells of its region nobody has entered, as of the last count
     };
 
     [[nodiscard]] std::vector<int> firstDivision(const std::vector<int>& startCells) const;
+    void playEvents(const ProgressReporter& progress);
+    void rebalance(double now);
+    void reportProgress(const ProgressReporter& progress) const;
+    [[nodiscard]] double effectiveFactor(int robot, double now) const;
     int exchange(double now, int maxMoves);
     [[nodiscard]] bool act(int robot);
     void stop(int robot, std::size_t reachedWaypoints);
+    void countFreeCells();
     void timeNewWaypoints(int robot);
     [[nodiscard]] Result finish();
 
@@ -58,6 +68,11 @@ class ReallocationSimulation {
     std::vector<char> entered_;
     std::vector<int> firstRegions_;
     std::vector<Robot> robots_;
+    using Turn = std::pair<double, int>; // (clock, robot): the robot that is furthest behind acts next
+    std::priority_queue<Turn, std::vector<Turn>, std::greater<>> turns_;
+    int movesSinceExchange_ = 0;
+    double meanCellSeconds_ = 0.0;
+    bool gaveUp_ = false; // the move limit ended the simulation
 };
 
 } // namespace mcpp

@@ -11,9 +11,12 @@ struct RobotTimeline {
     std::vector<double> secondsAtWaypoint; // by waypoint of the plan's path: time since the start
     double completionSeconds = 0.0;        // when it passed its last point
     bool stopped = false;                  // an event stopped it for good; others covered what it left
-    std::vector<int> cellsTakenOver;       // cells of another robot's first region it covered
+    // Cells of another robot's first region (as grown from the starts) it covered: the evening out before
+    // anyone moves counts too, so a mission without events has some.
+    std::vector<int> cellsTakenOver;
     double takenOverAreaSquareMetres = 0.0;
-    // The static plan's robot under the same events: when it would be done (infinity when stopped first).
+    // The static plan's robot under the same events: when it would be done (infinity when stopped first);
+    // 0 when the plan was not compared with a static one.
     double staticCompletionSeconds = 0.0;
 };
 

@@ -1,6 +1,8 @@
 #include "core/planners/MdstcPlanner.hpp"
 
+#include "core/allocation/RegionCosts.hpp"
 #include "core/coverage/ReallocationSimulation.hpp"
+#include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/SpeedSchedule.hpp"
 #include "core/model/TimelineLayer.hpp"
@@ -17,9 +19,11 @@ namespace {
 
 constexpr const char* compareKey = "compare_static";
 
-// The static plan's parameters: MCPP-MLCT's defaults, with this run's turn model and start snapping.
+// The static plan's parameters: MCPP-MLCT's defaults, with this run's turn model and start snapping, and
+// open paths like MDSTC's (a return to the start would make the static plan look slower than it is).
 ParameterValues staticParameters(const ParameterValues& own) {
     ParameterValues given;
+    given.set(SpanningTreeCoverage::closedTourParameter().key, false);
     for (const ParameterSpec& shared :
          {TurnTimeModel::turnSecondsParameter(), TurnTimeModel::accelerationParameter(),
           Planner::snapStartsParameter()})
@@ -29,34 +33,31 @@ ParameterValues staticParameters(const ParameterValues& own) {
 }
 
 // When each robot of the static plan would be done under the events.
-std::vector<double> staticCompletions(const Plan& plan, const std::vector<SpeedEvent>& events) {
-    std::vector<double> completions;
+std::vector<double> staticCompletions(const Plan& plan, const std::vector<SpeedEvent>& events,
+                                      std::size_t robots) {
+    std::vector<double> completions(robots, 0.0);
     for (const CoveragePath& path : plan.paths)
-        completions.push_back(SpeedSchedule(events, path.robot).finishTime(0.0, path.timeSeconds));
+        if (path.robot >= 0 && static_cast<std::size_t>(path.robot) < robots)
+            completions[static_cast<std::size_t>(path.robot)] =
+                SpeedSchedule(events, path.robot).finishTime(0.0, path.timeSeconds);
     return completions;
 }
 
 RegionAllocation regionsOf(const CellGraph& cells, const std::vector<int>& robotOfCell,
                            const std::vector<int>& startCells) {
-    RegionAllocation regions;
-    regions.robotOfCell = robotOfCell;
-    regions.startCell = startCells;
-    regions.costSeconds.assign(startCells.size(), 0.0);
-    for (std::size_t cell = 0; cell < robotOfCell.size(); ++cell)
-        if (robotOfCell[cell] >= 0)
-            regions.costSeconds[static_cast<std::size_t>(robotOfCell[cell])] +=
-                cells.cell(static_cast<int>(cell)).coverSeconds();
-    return regions;
+    return {robotOfCell, startCells, regionCosts(cells, robotOfCell, startCells.size())};
 }
 
-void reportLeftUncovered(PlanningRun& run, const std::vector<int>& uncovered) {
+void reportLeftUncovered(PlanningRun& run, const std::vector<int>& uncovered, bool gaveUp) {
     if (uncovered.empty())
         return;
     double area = 0.0;
     for (const int cell : uncovered)
         area += run.plan().cells.cell(cell).passableAreaSquareMetres;
     run.addIssue(IssueSeverity::Warning, "left-uncovered",
-                 formatArea(area) + " stays uncovered: every robot that could reach it stopped first");
+                 formatArea(area) +
+                     (gaveUp ? " stays uncovered: the simulation stopped at its move limit"
+                             : " stays uncovered: every robot that could reach it stopped first"));
 }
 
 } // namespace
@@ -89,7 +90,7 @@ void MdstcPlanner::run(PlanningRun& run) const {
         run.stage("simulation", [&] { return simulation.run(startCells, run.starts(), run.progress()); });
     plan.regions = regionsOf(plan.cells, result.finalRegions, startCells);
     plan.paths = std::move(result.paths);
-    reportLeftUncovered(run, result.uncoveredCells);
+    reportLeftUncovered(run, result.uncoveredCells, result.gaveUp);
 
     TimelineLayer::Summary summary;
     summary.events = problem.events;
@@ -100,11 +101,13 @@ void MdstcPlanner::run(PlanningRun& run) const {
             return MlctPlanner{}.plan(problem, staticParameters(run.parameters()),
                                       run.progress().within("static plan", 0.0, 1.0));
         });
-        const std::vector<double> completions = staticCompletions(staticPlan, problem.events);
-        for (std::size_t r = 0; r < result.robots.size() && r < completions.size(); ++r)
+        const std::vector<double> completions =
+            staticCompletions(staticPlan, problem.events, result.robots.size());
+        for (std::size_t r = 0; r < result.robots.size(); ++r)
             result.robots[r].staticCompletionSeconds = completions[r];
         summary.staticPlanner = MlctPlanner::plannerName;
-        summary.staticMakespanSeconds = *std::max_element(completions.begin(), completions.end());
+        for (const double completion : completions)
+            summary.staticMakespanSeconds = std::max(summary.staticMakespanSeconds, completion);
         summary.staticPlanMakespanSeconds = staticPlan.metrics.makespanSeconds;
     }
     plan.layers.push_back(std::make_shared<TimelineLayer>(std::move(summary), std::move(result.robots),

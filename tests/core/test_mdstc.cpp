@@ -2,6 +2,7 @@
 #include "core/model/PlanningError.hpp"
 #include "core/model/SpeedSchedule.hpp"
 #include "core/model/TimelineLayer.hpp"
+#include "core/model/TimelineText.hpp"
 #include "core/planners/MdstcPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/PlanInvariants.hpp"
@@ -175,6 +176,22 @@ class MdstcTest : public QObject {
         QVERIFY(std::isfinite(timeline.summary().makespanSeconds));
     }
 
+    // Robot 1 pauses from a quarter to half way: a pause is not a stop. It keeps its region's core, the
+    // others take some of its border, and the mission ends before the static plan's under the same pause.
+    void aPausedRobotIsNotAStoppedOne() {
+        const PlanningProblem problem = test::obstacleGridProblem(49, 4, 2020);
+        const double quarter = timelineOf(planMdstc(problem, {})).summary().makespanSeconds / 4.0;
+        const Plan plan = planMdstc(problem, {{quarter, 1, 0.0}, {2.0 * quarter, 1, 1.0}});
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        const TimelineLayer& timeline = timelineOf(plan);
+        const RobotTimeline& paused = timeline.robots()[1];
+        QVERIFY(!paused.stopped);
+        QVERIFY(paused.completionSeconds > 2.0 * quarter);
+        QVERIFY(std::isfinite(timeline.summary().staticMakespanSeconds));
+        QVERIFY(timeline.summary().makespanSeconds < timeline.summary().staticMakespanSeconds);
+        QVERIFY(!hasIssue(plan, "left-uncovered"));
+    }
+
     // Events that cannot happen are refused, naming the event, the field and the value.
     void impossibleEventsAreRefused_data() {
         QTest::addColumn<double>("time");
@@ -196,6 +213,23 @@ class MdstcTest : public QObject {
         const PlanningProblem problem = test::obstacleGridProblem(20, 3, 2020);
         const std::string message = plannerError(problem, {{time, robot, factor}});
         QVERIFY2(QString::fromStdString(message).contains(expected), message.c_str());
+    }
+
+    // The one line the batch summary and the window show: saved, less, or never done.
+    void theTimelineIsSaidInOneLine() {
+        TimelineLayer::Summary summary;
+        summary.makespanSeconds = 3600.0;
+        summary.staticPlanner = "mcpp-mlct";
+        summary.staticMakespanSeconds = 3000.0;
+        QCOMPARE(QString::fromStdString(timelineSentence(summary)),
+                 QString("without events: done in 1 h; the static mcpp-mlct plan: 50 min (20% less)"));
+        summary.events = {{60.0, 0, 0.5}};
+        summary.staticMakespanSeconds = 7200.0;
+        QVERIFY(QString::fromStdString(timelineSentence(summary)).endsWith("2 h (50% saved)"));
+        summary.staticMakespanSeconds = std::numeric_limits<double>::infinity();
+        QVERIFY(QString::fromStdString(timelineSentence(summary)).contains("1 event: done in 1 h"));
+        QVERIFY(QString::fromStdString(timelineSentence(summary))
+                    .endsWith("never done (a robot stops with work left)"));
     }
 
     // A planner that plans without events says it left them out.

@@ -1,0 +1,15 @@
+#include "core/allocation/RegionCosts.hpp"
+
+namespace mcpp {
+
+std::vector<double> regionCosts(const CellGraph& graph, const std::vector<int>& robotOfCell,
+                                std::size_t robots) {
+    std::vector<double> costs(robots, 0.0);
+    for (std::size_t cell = 0; cell < robotOfCell.size(); ++cell)
+        if (robotOfCell[cell] >= 0)
+            costs[static_cast<std::size_t>(robotOfCell[cell])] +=
+                graph.cell(static_cast<int>(cell)).coverSeconds();
+    return costs;
+}
+
+} // namespace mcpp
