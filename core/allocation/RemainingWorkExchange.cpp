@@ -1,6 +1,7 @@
 #include "core/allocation/RemainingWorkExchange.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <numeric>
 
@@ -130,27 +131,32 @@ int RemainingWorkExchange::handOverBlock(int maxMoves) {
         return 0;
     // A robot with nothing free left drives over (it would have to leave its region anyway); one with work
     // of its own only to help a robot an event slowed down.
-    const bool fromSlowed = (*robots_)[static_cast<std::size_t>(from)].speedFactor < 1.0;
+    const bool fromSlowed = (*robots_)[static_cast<std::size_t>(from)].speedFactor < 0.999;
     for (int r = 0; r < robotCount; ++r)
         if (r != from && (*robots_)[static_cast<std::size_t>(r)].speedFactor > 0.0 &&
             (fromSlowed || freeWork(r) <= 0.0) && (to < 0 || timeLeft(r) < timeLeft(to)))
             to = r;
     if (to < 0)
         return 0;
+    const double fromFactor = (*robots_)[static_cast<std::size_t>(from)].speedFactor;
+    const double toFactor = (*robots_)[static_cast<std::size_t>(to)].speedFactor;
+    // The work that leaves both with the same time: (Wa - x) / fa = (Wb + drive + x) / fb. A stopped robot's
+    // cells go whatever their number: nobody else will cover them.
+    const auto wantedAfter = [&](double drive) {
+        return fromFactor > 0.0 ? (work_[static_cast<std::size_t>(from)] * toFactor -
+                                   (work_[static_cast<std::size_t>(to)] + drive) * fromFactor) /
+                                      (fromFactor + toFactor)
+                                : std::max(freeWork(from) / static_cast<double>(robotCount), 1.0);
+    };
+    const double worthIt = fromFactor > 0.0 ? blockCells * largestCellSeconds_ : 0.0;
+    if (wantedAfter(0.0) < worthIt) // not even without the drive: no need to look for a block
+        return 0;
     const auto [seed, steps] = nearestFreeCell(from, to);
     if (seed < 0)
         return 0;
     // The drive over, a cell crossed in half the time it takes to cover.
-    const double drive = steps * largestCellSeconds_ / 2.0;
-    const double fromFactor = (*robots_)[static_cast<std::size_t>(from)].speedFactor;
-    const double toFactor = (*robots_)[static_cast<std::size_t>(to)].speedFactor;
-    // The work that leaves both with the same time: (Wa - x) / fa = (Wb + drive + x) / fb.
-    const double wanted = fromFactor > 0.0 ? (work_[static_cast<std::size_t>(from)] * toFactor -
-                                              (work_[static_cast<std::size_t>(to)] + drive) * fromFactor) /
-                                                 (fromFactor + toFactor)
-                                           : freeWork(from) / static_cast<double>(robotCount);
-    // A stopped robot's cells go whatever their number: nobody else will cover them.
-    if (fromFactor > 0.0 && wanted < blockCells * largestCellSeconds_)
+    const double wanted = wantedAfter(steps * largestCellSeconds_ / 2.0);
+    if (wanted < worthIt)
         return 0;
     return growBlock(seed, to, std::min(wanted, freeWork(from)), maxMoves);
 }
@@ -242,25 +248,24 @@ int RemainingWorkExchange::countIn(int cell, int region) const {
 int RemainingWorkExchange::givableCell(int donor, int receiver) {
     std::vector<int>& candidates = link(donor, receiver);
     const bool donorStopped = (*robots_)[static_cast<std::size_t>(donor)].speedFactor <= 0.0;
-    int best = -1;
-    int bestScore = std::numeric_limits<int>::min();
+    std::vector<std::pair<int, int>> scored; // (score, cell), most surrounded by the receiver first
     std::size_t kept = 0;
     for (const int cell : candidates) {
         if ((*owner_)[static_cast<std::size_t>(cell)] != donor || !isFree(cell) ||
             !touchesFreeCellOf(cell, receiver))
             continue;
         candidates[kept++] = cell;
-        const int score = countIn(cell, receiver) - countIn(cell, donor);
-        if (score > bestScore &&
-            (donorStopped || connectivity_.canRemove(cell, *owner_, connectivitySearchLimit))) {
-            best = cell;
-            bestScore = score;
-        }
+        scored.emplace_back(countIn(cell, receiver) - countIn(cell, donor), cell);
     }
-    candidates.resize(kept); // a cell listed twice costs a second look, no more
-    if (best < 0)
-        candidates.clear(); // nothing the donor can spare here now
-    return best;
+    candidates.resize(kept);
+    std::sort(scored.begin(), scored.end(), std::greater<>());
+    scored.erase(std::unique(scored.begin(), scored.end()), scored.end());
+    // The connectivity check is the dear part: it runs on the best first and stops at the first it allows.
+    for (const auto& [score, cell] : scored)
+        if (donorStopped || connectivity_.canRemove(cell, *owner_, connectivitySearchLimit))
+            return cell;
+    candidates.clear(); // nothing the donor can spare here now
+    return -1;
 }
 
 void RemainingWorkExchange::move(int cell, int receiver) {

@@ -31,10 +31,7 @@ std::vector<double> eventTimes(const std::vector<SpeedEvent>& events) {
 } // namespace
 
 ReallocationSimulation::ReallocationSimulation(const CellGraph& graph, std::vector<SpeedEvent> events)
-    : graph_(graph), events_(std::move(events)), nodes_(graph, everyCell(graph)), exchange_(graph) {
-    for (const Cell& cell : graph.cells())
-        meanCellSeconds_ += cell.coverSeconds() / static_cast<double>(graph.size());
-}
+    : graph_(graph), events_(std::move(events)), nodes_(graph, everyCell(graph)), exchange_(graph) {}
 
 ReallocationSimulation::Result ReallocationSimulation::run(const std::vector<int>& startCells,
                                                            const std::vector<MapPoint>& starts,
@@ -134,23 +131,18 @@ std::vector<int> ReallocationSimulation::firstDivision(const std::vector<int>& s
 int ReallocationSimulation::exchange(double now, int maxMoves) {
     std::vector<RemainingWorkExchange::Robot> robots(robots_.size());
     for (std::size_t r = 0; r < robots_.size(); ++r) {
-        robots[r].speedFactor = effectiveFactor(static_cast<int>(r), now);
+        robots[r].speedFactor = currentFactor(static_cast<int>(r), now);
         robots[r].committedSeconds = robots_[r].walk->committedSeconds();
         robots[r].cell = robots_[r].walk->waypoints().back().cell;
     }
     return exchange_.exchange(owner_, entered_, robots, maxMoves);
 }
 
-// The robot's speed over the work it has left, from `now` through its coming events: a pause counts as
-// slower driving, not as a stop; 0 only when it stops for good first.
-double ReallocationSimulation::effectiveFactor(int robot, double now) const {
+// The robot's speed factor as known at `now`: the simulation plays the events as they come and foresees
+// none. A robot at 0 gives its free cells away; should it start again, it is idle and gets cells back.
+double ReallocationSimulation::currentFactor(int robot, double now) const {
     const Robot& state = robots_[static_cast<std::size_t>(robot)];
-    if (state.state == State::Stopped)
-        return 0.0;
-    const double work =
-        state.walk->committedSeconds() + static_cast<double>(std::max(state.freeCells, 1)) * meanCellSeconds_;
-    const double done = state.schedule.finishTime(std::max(now, state.clock), work);
-    return std::isinf(done) ? 0.0 : work / std::max(done - now, 1e-9);
+    return state.state == State::Stopped ? 0.0 : state.schedule.factorAt(now);
 }
 
 // One move of the robot's walk; false when it has nothing left to do. A robot whose tree is done and whose

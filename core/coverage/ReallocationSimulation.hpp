@@ -52,7 +52,7 @@ class ReallocationSimulation {
     void playEvents(const ProgressReporter& progress);
     void rebalance(double now);
     void reportProgress(const ProgressReporter& progress) const;
-    [[nodiscard]] double effectiveFactor(int robot, double now) const;
+    [[nodiscard]] double currentFactor(int robot, double now) const;
     int exchange(double now, int maxMoves);
     [[nodiscard]] bool act(int robot);
     void stop(int robot, std::size_t reachedWaypoints);
@@ -71,7 +71,6 @@ class ReallocationSimulation {
     using Turn = std::pair<double, int>; // (clock, robot): the robot that is furthest behind acts next
     std::priority_queue<Turn, std::vector<Turn>, std::greater<>> turns_;
     int movesSinceExchange_ = 0;
-    double meanCellSeconds_ = 0.0;
     bool gaveUp_ = false; // the move limit ended the simulation
 };
 

@@ -176,8 +176,9 @@ class MdstcTest : public QObject {
         QVERIFY(std::isfinite(timeline.summary().makespanSeconds));
     }
 
-    // Robot 1 pauses from a quarter to half way: a pause is not a stop. It keeps its region's core, the
-    // others take some of its border, and the mission ends before the static plan's under the same pause.
+    // Robot 1 pauses from a quarter to half way: the others take its free cells as for a stop (nobody
+    // knows it will start again), it finishes what it had begun once it does, gets cells again, and the
+    // mission ends before the static plan's under the same pause.
     void aPausedRobotIsNotAStoppedOne() {
         const PlanningProblem problem = test::obstacleGridProblem(49, 4, 2020);
         const double quarter = timelineOf(planMdstc(problem, {})).summary().makespanSeconds / 4.0;
