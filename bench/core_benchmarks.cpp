@@ -160,6 +160,16 @@ void uniformGridMdstc(benchmark::State& state) {
         "mdstc");
 }
 
+// The same with turns free (turn_s 0), for MDSTC and its static plan alike.
+void uniformGridMdstcFreeTurns(benchmark::State& state) {
+    ParameterValues freeTurns;
+    freeTurns.set("turn_s", 0.0);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        "mdstc", freeTurns);
+}
+
 // MDSTC with robot 0 at half speed from a quarter of its makespan without events, against the static plan
 // run through the same event.
 void uniformGridMdstcSlowRobot(benchmark::State& state) {
@@ -188,6 +198,9 @@ BENCHMARK(uniformGridTurnSlack)
     ->ArgsProduct({{49, 200}, {8, 20}, {0, 2, 10, 50}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridMdstc)->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridMdstcFreeTurns)
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridMdstcSlowRobot)
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
