@@ -4,6 +4,7 @@
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/internal/EventsJson.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/LegendReader.hpp"
@@ -645,15 +646,8 @@ std::string missionToJson(const Mission& mission) {
             item.add("battery_s", *robot.batterySeconds);
     }
 
-    if (!mission.events.empty()) {
-        JsonValue& events = root.add("events", JsonValue::array());
-        for (const SpeedEvent& event : mission.events) {
-            JsonValue& item = events.push(JsonValue::object());
-            item.add("time_s", event.timeSeconds);
-            item.add("robot", event.robot);
-            item.add("speed_factor", event.speedFactor);
-        }
-    }
+    if (!mission.events.empty())
+        internal::addEvents(root, mission.events);
 
     JsonValue& planner = root.add("planner", JsonValue::object());
     planner.add("name", mission.planner.planner);

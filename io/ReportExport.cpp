@@ -5,6 +5,7 @@
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/PlanExport.hpp"
+#include "io/internal/EventsJson.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -58,14 +59,8 @@ void addTimeline(JsonValue& item, const RobotTimeline& robot, bool compared) {
 }
 
 // The events played and what re-allocation saved against the static plan run through them.
-void addEvents(JsonValue& root, const TimelineLayer::Summary& summary) {
-    JsonValue& events = root.add("events", JsonValue::array());
-    for (const SpeedEvent& event : summary.events) {
-        JsonValue& item = events.push(JsonValue::object());
-        item.add("time_s", event.timeSeconds);
-        item.add("robot", event.robot);
-        item.add("speed_factor", event.speedFactor);
-    }
+void addTimelineSummary(JsonValue& root, const TimelineLayer::Summary& summary) {
+    internal::addEvents(root, summary.events);
     root.add("makespan_under_events_s", summary.makespanSeconds);
     if (summary.staticPlanner.empty())
         return;
@@ -135,7 +130,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     if (const DetectionLayer* detection = detectionLayerOf(context.plan))
         addDetection(root, detection->summary());
     if (timeline != nullptr)
-        addEvents(root, timeline->summary());
+        addTimelineSummary(root, timeline->summary());
     JsonValue& timings = root.add("timings_ms", JsonValue::object());
     for (const auto& [stage, milliseconds] : metrics.stageMilliseconds)
         timings.add(stage, milliseconds);
