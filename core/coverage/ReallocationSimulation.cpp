@@ -100,8 +100,12 @@ void ReallocationSimulation::playEvents(const ProgressReporter& progress) {
 
 void ReallocationSimulation::reportProgress(const ProgressReporter& progress) const {
     progress.throwIfCancelled();
-    const auto entered = std::count(entered_.begin(), entered_.end(), char{1});
-    progress.report("simulation", static_cast<double>(entered) / static_cast<double>(owner_.size()));
+    // Cells entered so far, from the walks' counts: counting the map here would cost a pass per report.
+    std::size_t entered = 0;
+    for (const Robot& robot : robots_)
+        entered += robot.walk->cellsEntered();
+    progress.report("simulation",
+                    std::min(1.0, static_cast<double>(entered) / static_cast<double>(owner_.size())));
 }
 
 // Exchanges cells and wakes the idle robots that got some, at `now` (they waited until then).
@@ -215,15 +219,17 @@ ReallocationSimulation::Result ReallocationSimulation::finish() {
         timeline.completionSeconds = robot.secondsAt.empty() ? 0.0 : robot.secondsAt.back();
         timeline.secondsAtWaypoint = std::move(robot.secondsAt);
         timeline.stopped = robot.state == State::Stopped;
-        for (std::size_t cell = 0; cell < owner_.size(); ++cell)
-            if (result.finalRegions[cell] == static_cast<int>(r) &&
-                firstRegions_[cell] != static_cast<int>(r)) {
-                timeline.cellsTakenOver.push_back(static_cast<int>(cell));
-                timeline.takenOverAreaSquareMetres +=
-                    graph_.cell(static_cast<int>(cell)).passableAreaSquareMetres;
-            }
         result.paths.push_back(std::move(path));
         result.robots.push_back(std::move(timeline));
+    }
+    // One pass over the map for every robot's taken-over cells.
+    for (std::size_t cell = 0; cell < owner_.size(); ++cell) {
+        const int robot = result.finalRegions[cell];
+        if (robot < 0 || firstRegions_[cell] == robot)
+            continue;
+        RobotTimeline& timeline = result.robots[static_cast<std::size_t>(robot)];
+        timeline.cellsTakenOver.push_back(static_cast<int>(cell));
+        timeline.takenOverAreaSquareMetres += graph_.cell(static_cast<int>(cell)).passableAreaSquareMetres;
     }
     return result;
 }
