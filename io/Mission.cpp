@@ -1,5 +1,6 @@
 #include "io/Mission.hpp"
 
+#include "core/model/BatteryEndurance.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -309,9 +310,9 @@ bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string
         return false;
     if (!reader.optional(object, path, "battery_s", robot.batterySeconds, &MissionReader::number))
         return false;
-    if (robot.batterySeconds && (*robot.batterySeconds < 1.0 || *robot.batterySeconds > 1e7))
-        return reader.fail(MissionReader::join(path, "battery_s"),
-                           "must be between 1 s and 10 000 000 s of travel on one charge");
+    if (robot.batterySeconds)
+        if (const auto problem = BatteryEndurance::problem(*robot.batterySeconds))
+            return reader.fail(MissionReader::join(path, "battery_s"), *problem);
     if (!reader.optional(object, path, "name", robot.name, &MissionReader::string) ||
         !reader.optional(object, path, "start_crs", robot.startCrs, &MissionReader::string) ||
         !readVehicle(reader, object, path, robot.vehicle)) {

@@ -5,6 +5,7 @@
 #include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/AreaOfInterest.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
@@ -289,6 +290,7 @@ void MainWindow::createDocks() {
     robotView_->horizontalHeader()->setStretchLastSection(true);
     // The colour shows beside the name: the table fits the dock without scrolling sideways.
     robotView_->hideColumn(RobotTableModel::Colour);
+    showBatteryColumnForBatteryPlanners();
     robotView_->setSelectionBehavior(QAbstractItemView::SelectRows);
     robotView_->setSelectionMode(QAbstractItemView::SingleSelection);
     robotsLayout->addWidget(robotView_, 1);
@@ -670,8 +672,10 @@ void MainWindow::connectDocument() {
         rememberInputFiles();
         updateActions();
     });
-    connect(document_, &MissionDocument::settingsChanged, this,
-            [this] { settingsPanel_->setChoice(document_->plannerChoice()); });
+    connect(document_, &MissionDocument::settingsChanged, this, [this] {
+        settingsPanel_->setChoice(document_->plannerChoice());
+        showBatteryColumnForBatteryPlanners();
+    });
     connect(document_, &MissionDocument::classesChanged, this, &MainWindow::syncPresetCombo);
     connect(document_, &MissionDocument::classesChanged, this, &MainWindow::updateSizeWarning);
     connect(classTableBanner_, &ClassTableBanner::fitRequested, this, &MainWindow::scaleFieldsOfViewToFit);
@@ -687,6 +691,15 @@ void MainWindow::connectDocument() {
         updateActions();
     });
     connect(document_, &MissionDocument::staleChanged, resultsPanel_, &ResultsPanel::setStale);
+}
+
+// A robot's own battery matters only to planners that fly on batteries: the others keep the table narrow.
+void MainWindow::showBatteryColumnForBatteryPlanners() {
+    const auto description = findPlannerDescription(document_->plannerChoice().planner);
+    const bool batteries =
+        description && std::any_of(description->parameters.begin(), description->parameters.end(),
+                                   [](const ParameterSpec& spec) { return spec.key == "battery_s"; });
+    robotView_->setColumnHidden(RobotTableModel::Battery, !batteries);
 }
 
 void MainWindow::restoreSettings() {

@@ -121,6 +121,7 @@ class MainWindow : public QMainWindow {
     void createActions();
     void createStatusBar();
     void connectDocument();
+    void showBatteryColumnForBatteryPlanners();
     void restoreSettings();
     void rebuildRecentMenu();
     void updateTitle();

@@ -43,7 +43,7 @@ bool MissionDocument::planStale() const {
 }
 
 PlanInputs MissionDocument::currentInputs() const {
-    return {mission_.classes, starts(), mission_.planner, mission_.events};
+    return {mission_.classes, starts(), mission_.planner, mission_.events, io::robotBatteries(mission_)};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {

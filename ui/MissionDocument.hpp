@@ -21,6 +21,7 @@ struct PlanInputs {
     std::vector<MapPoint> starts;
     PlannerChoice planner;
     std::vector<SpeedEvent> events = {};
+    std::vector<double> batteries = {}; // each robot's own, 0 where it has none
 
     friend bool operator==(const PlanInputs&, const PlanInputs&) = default;
 };

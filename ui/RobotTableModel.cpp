@@ -1,9 +1,12 @@
 #include "ui/RobotTableModel.hpp"
 
+#include "core/model/BatteryEndurance.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "render/RobotPalette.hpp"
 #include "ui/MissionDocument.hpp"
 #include "ui/RobotsEditCommand.hpp"
 
+#include <QRegularExpression>
 #include <QUndoStack>
 
 namespace mcpp::ui {
@@ -63,6 +66,15 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
             index.column() == Longitude ? lonLat.value().longitude : lonLat.value().latitude;
         return QString::number(degrees, 'f', role == Qt::EditRole ? 7 : 5); // 5 decimals: about a metre
     }
+    case Battery:
+        if (text && robot.batterySeconds)
+            return QString::fromStdString(formatQuantity(*robot.batterySeconds / 60.0, 4));
+        if (role == Qt::ToolTipRole)
+            return robot.batterySeconds
+                       ? tr("%1 of travel on one charge")
+                             .arg(QString::fromStdString(formatDuration(*robot.batterySeconds)))
+                       : tr("The planner's battery endurance (type minutes here to give this robot its own)");
+        break;
     default:
         break;
     }
@@ -89,6 +101,8 @@ QVariant RobotTableModel::headerData(int section, Qt::Orientation orientation, i
         return tr("Longitude");
     case Latitude:
         return tr("Latitude");
+    case Battery:
+        return tr("Battery (min)");
     default:
         return {};
     }
@@ -125,6 +139,8 @@ bool RobotTableModel::setData(const QModelIndex& index, const QVariant& value, i
             new RobotsEditCommand(document_, document_->robots(), after, tr("Rename %1").arg(name)));
         return true;
     }
+    if (index.column() == Battery)
+        return setBattery(row, value.toString());
     bool isNumber = false;
     const double number = value.toString().trimmed().toDouble(&isNumber);
     if (!isNumber)
@@ -151,6 +167,32 @@ bool RobotTableModel::setData(const QModelIndex& index, const QVariant& value, i
         return false;
     }
     return moveRobot(row, start);
+}
+
+// Minutes, or a number with its unit ("90 s", "1.5 h"); empty gives the robot the planner's battery again.
+bool RobotTableModel::setBattery(int robot, const QString& text) {
+    static const QRegularExpression pattern(
+        QStringLiteral(R"(^\s*([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(s|min|h)?\s*$)"));
+    std::optional<double> seconds;
+    if (!text.trimmed().isEmpty()) {
+        const QRegularExpressionMatch match = pattern.match(text);
+        if (!match.hasMatch())
+            return refuse(tr("Battery: \"%1\" is not a duration; type minutes, or a number with s, min or h.")
+                              .arg(text));
+        const QString unit = match.captured(2);
+        const double perUnit = unit == QLatin1String("s") ? 1.0 : unit == QLatin1String("h") ? 3600.0 : 60.0;
+        seconds = match.captured(1).toDouble() * perUnit;
+        if (const auto problem = BatteryEndurance::problem(*seconds))
+            return refuse(tr("Battery: %1.").arg(QString::fromStdString(*problem)));
+    }
+    auto after = document_->robots();
+    auto& edited = after[static_cast<std::size_t>(robot)];
+    if (edited.batterySeconds == seconds)
+        return true;
+    edited.batterySeconds = seconds;
+    undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after,
+                                           tr("Battery of %1").arg(QString::fromStdString(edited.name))));
+    return true;
 }
 
 bool RobotTableModel::addRobot(MapPoint start) {

@@ -10,13 +10,14 @@ namespace mcpp::ui {
 
 class MissionDocument;
 
-// The robots of the open mission: name, colour and start in the map CRS and in WGS84. Edits of the name
-// or a coordinate go through the undo stack; a start the map refuses is reported through editRefused.
+// The robots of the open mission: name, colour, start in the map CRS and in WGS84, and the robot's own
+// battery for planners that fly on batteries. Edits go through the undo stack; a value the mission would
+// refuse is reported through editRefused.
 class RobotTableModel : public QAbstractTableModel {
     Q_OBJECT
 
   public:
-    enum Column { Name, Colour, Easting, Northing, Longitude, Latitude, ColumnCount };
+    enum Column { Name, Colour, Easting, Northing, Longitude, Latitude, Battery, ColumnCount };
 
     RobotTableModel(MissionDocument* document, QUndoStack* undoStack, QObject* parent = nullptr);
 
@@ -39,6 +40,7 @@ class RobotTableModel : public QAbstractTableModel {
 
   private:
     bool refuse(const QString& reason);
+    bool setBattery(int robot, const QString& text);
 
     MissionDocument* document_;
     QUndoStack* undoStack_;

@@ -4,6 +4,7 @@
 #include "core/allocation/BatteryRange.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/WavefrontCoverage.hpp"
+#include "core/model/BatteryEndurance.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/ParallelFor.hpp"
 #include "core/model/SortieLayer.hpp"
@@ -117,7 +118,8 @@ PlannerDescription WavefrontBatteryPlanner::describe() const {
     description.parameters = {
         DecompositionOptions::blockedThresholdParameter(),
         AzimuthTrendAllocator::rebalanceIterationsParameter(),
-        realParameter("battery_s", "Battery endurance", 1200.0, 1.0, 1e7,
+        realParameter("battery_s", "Battery endurance", 1200.0, BatteryEndurance::minimumSeconds,
+                      BatteryEndurance::maximumSeconds,
                       "Seconds of travel and turning on one charge; each sortie starts and ends at the "
                       "robot's charger (its start) within it",
                       "s"),

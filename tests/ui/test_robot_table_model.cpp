@@ -1,0 +1,140 @@
+#include "ui/MainWindow.hpp"
+#include "ui/MissionDocument.hpp"
+#include "ui/RobotTableModel.hpp"
+
+#include <QSignalSpy>
+#include <QTableView>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+// 10 x 10 pixels of grass, two robots, the second with its own 30-minute battery.
+std::shared_ptr<io::LoadedRaster> grassRaster() {
+    auto raster = std::make_shared<io::LoadedRaster>();
+    raster->path = "synthetic.tif";
+    ClassGrid& grid = raster->grid;
+    grid.columns = 10;
+    grid.rows = 10;
+    grid.originX = 0.0;
+    grid.originY = 100.0;
+    grid.pixelWidth = 10.0;
+    grid.pixelHeight = 10.0;
+    grid.values.assign(100, 1);
+    grid.outside.assign(100, 0);
+    raster->classPixelCounts = {{1, 100}};
+    return raster;
+}
+
+io::Mission twoRobotMission() {
+    io::Mission mission;
+    mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 2.0, 10.0, true}});
+    mission.robots = {io::RobotSpec{"east", {75.0, 55.0}, ""}, io::RobotSpec{"west", {25.0, 55.0}, ""}};
+    mission.robots[1].batterySeconds = 1800.0;
+    return mission;
+}
+
+} // namespace
+
+class TestRobotTableModel : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void init() {
+        document_ = std::make_unique<ui::MissionDocument>();
+        undoStack_ = std::make_unique<QUndoStack>();
+        document_->reset(grassRaster(), twoRobotMission(), QString());
+        robots_ = std::make_unique<ui::RobotTableModel>(document_.get(), undoStack_.get());
+    }
+
+    // The battery shows in minutes; a robot without one shows nothing and says whose it uses.
+    void batteryShowsInMinutes() {
+        QCOMPARE(robots_->data(batteryOf(1)).toString(), QString("30"));
+        QVERIFY(robots_->data(batteryOf(1), Qt::ToolTipRole).toString().startsWith("30 min"));
+        QVERIFY(robots_->data(batteryOf(0)).toString().isEmpty());
+        QVERIFY(robots_->data(batteryOf(0), Qt::ToolTipRole).toString().contains("planner's"));
+    }
+
+    // Typed in minutes or with a unit, stored in seconds, undone one edit at a time; empty gives the robot
+    // the planner's battery again.
+    void batteryEditsAreStoredAndUndone_data() {
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<double>("seconds");
+        QTest::newRow("minutes") << "20" << 1200.0;
+        QTest::newRow("decimal minutes") << "2.5" << 150.0;
+        QTest::newRow("seconds") << "90 s" << 90.0;
+        QTest::newRow("minutes named") << "45min" << 2700.0;
+        QTest::newRow("hours") << " 1.5 h " << 5400.0;
+    }
+    void batteryEditsAreStoredAndUndone() {
+        QFETCH(QString, typed);
+        QFETCH(double, seconds);
+        QSignalSpy stale(document_.get(), &ui::MissionDocument::staleChanged);
+        document_->setPlan(std::make_shared<Plan>(), document_->currentInputs());
+        QVERIFY(robots_->setData(batteryOf(0), typed));
+        QCOMPARE(document_->robots()[0].batterySeconds.value_or(-1.0), seconds);
+        QVERIFY(document_->planStale()); // another battery, another plan
+        QVERIFY(robots_->setData(batteryOf(1), QString()));
+        QVERIFY(!document_->robots()[1].batterySeconds.has_value());
+        undoStack_->undo();
+        QCOMPARE(document_->robots()[1].batterySeconds.value_or(-1.0), 1800.0);
+        undoStack_->undo();
+        QVERIFY(!document_->robots()[0].batterySeconds.has_value());
+        QVERIFY(!document_->planStale());
+    }
+
+    // What a mission file would refuse is refused here with the reason, and nothing changes.
+    void impossibleBatteriesAreRefused_data() {
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("zero") << "0"
+                              << "must be between 1 s and";
+        QTest::newRow("negative") << "-5"
+                                  << "got -300 s";
+        QTest::newRow("half a second") << "0.5 s"
+                                       << "got 0.5 s";
+        QTest::newRow("years") << "1e6 h"
+                               << "must be between";
+        QTest::newRow("words") << "all day"
+                               << "not a duration";
+        QTest::newRow("days") << "2 d"
+                              << "not a duration";
+    }
+    void impossibleBatteriesAreRefused() {
+        QFETCH(QString, typed);
+        QFETCH(QString, reason);
+        QSignalSpy refused(robots_.get(), &ui::RobotTableModel::editRefused);
+        QVERIFY(!robots_->setData(batteryOf(1), typed));
+        QCOMPARE(refused.count(), 1);
+        const QString message = refused.front().front().toString();
+        QVERIFY2(message.startsWith("Battery: ") && message.contains(reason), qPrintable(message));
+        QCOMPARE(document_->robots()[1].batterySeconds.value_or(-1.0), 1800.0);
+        QCOMPARE(undoStack_->count(), 0);
+    }
+
+    // The column shows only while the planner flies on batteries.
+    void batteryColumnFollowsThePlanner() {
+        ui::MainWindow window;
+        auto* view = window.findChild<QTableView*>(QStringLiteral("robotTableView"));
+        QVERIFY(view != nullptr);
+        QVERIFY(view->isColumnHidden(ui::RobotTableModel::Battery));
+        window.document()->setPlannerChoice({"wavefront-battery", {}});
+        QVERIFY(!view->isColumnHidden(ui::RobotTableModel::Battery));
+        window.document()->setPlannerChoice({"mdstc", {}});
+        QVERIFY(view->isColumnHidden(ui::RobotTableModel::Battery));
+    }
+
+  private:
+    [[nodiscard]] QModelIndex batteryOf(int robot) const {
+        return robots_->index(robot, ui::RobotTableModel::Battery);
+    }
+
+    std::unique_ptr<ui::MissionDocument> document_;
+    std::unique_ptr<QUndoStack> undoStack_;
+    std::unique_ptr<ui::RobotTableModel> robots_;
+};
+
+QTEST_MAIN(TestRobotTableModel)
+#include "test_robot_table_model.moc"
