@@ -131,6 +131,10 @@ Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transfo
         if (!transformed(*part.geometry, transformation))
             return fail("an unreachable area");
     }
+    for (auto& part : features.takenOver) {
+        if (!transformed(*part.geometry, transformation))
+            return fail("an area taken over");
+    }
     return {};
 }
 
@@ -158,6 +162,8 @@ void cutAtTheAntimeridian(PlanFeatures& features) {
     for (auto& line : features.paths)
         cut(line.geometry);
     for (auto& part : features.unreachable)
+        cut(part.geometry);
+    for (auto& part : features.takenOver)
         cut(part.geometry);
 }
 
@@ -286,6 +292,34 @@ Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::Unr
     return {};
 }
 
+// What each robot took over from others' first regions: written for plans simulated over time, even when
+// nobody took anything over (an empty layer says so).
+Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& context,
+                           std::vector<internal::TakenOverFeature>& parts, const OGRSpatialReference* crs,
+                           bool named) {
+    auto layer = writer.layer("taken_over", crs, wkbMultiPolygon);
+    if (!layer)
+        return Status::failure(layer.error());
+    Fields fields{
+        {{"robot", OFTInteger}, {"robot_name", OFTString}, {"area_m2", OFTReal}, {"cells", OFTInteger}}};
+    if (named)
+        fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status)
+        return status;
+    for (auto& part : parts) {
+        OGRFeature feature(layer.value()->GetLayerDefn());
+        if (named)
+            feature.SetField("name", (context.robotName(part.robot) + " took over").c_str());
+        setRobotFields(feature, context, part.robot);
+        feature.SetField("area_m2", part.areaSquareMetres);
+        feature.SetField("cells", part.cells);
+        feature.SetGeometryDirectly(part.geometry.release());
+        if (Status status = writer.add(layer.value(), feature); !status)
+            return status;
+    }
+    return {};
+}
+
 // A polygon per cell with its land cover and robot: asked for explicitly, as it is big on large maps.
 Status writeCellLayer(VectorFileWriter& writer, const ExportContext& context,
                       const OGRSpatialReference* crs) {
@@ -366,6 +400,11 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
     }
     if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, crs.get(), false); !status)
         return status;
+    if (planFeatures.simulatedOverTime) {
+        if (Status status = writeTakenOverLayer(writer, context, planFeatures.takenOver, crs.get(), false);
+            !status)
+            return status;
+    }
     if (writer.dataset().CommitTransaction() != OGRERR_NONE) {
         return Status::failure(path + ": cannot commit" + QuietGdalErrors::detail());
     }
@@ -392,6 +431,11 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
         return status;
     if (!planFeatures.unreachable.empty()) {
         if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, wgs84.get(), true);
+            !status)
+            return status;
+    }
+    if (!planFeatures.takenOver.empty()) {
+        if (Status status = writeTakenOverLayer(writer, context, planFeatures.takenOver, wgs84.get(), true);
             !status)
             return status;
     }

@@ -9,12 +9,14 @@ namespace mcpp {
 
 namespace {
 
-// Fills the pixels of one free sub-cell: a square of span x span pixels of the sub-cell grid.
-void fillSubCell(LabelGrid& grid, const Cell& cell, SubCell subCell, std::int32_t label) {
+// Fills the pixels of one free sub-cell: a square of span x span pixels of the sub-cell grid, whose
+// north-west corner is bottom-grid column `west`, row `north`.
+void fillSubCell(LabelGrid& grid, const Cell& cell, SubCell subCell, std::int32_t label, int west,
+                 int north) {
     const bool east = subCell == SubCell::NorthEast || subCell == SubCell::SouthEast;
     const bool south = subCell == SubCell::SouthWest || subCell == SubCell::SouthEast;
-    const int firstColumn = 2 * cell.column + (east ? cell.span : 0);
-    const int firstRow = 2 * cell.row + (south ? cell.span : 0);
+    const int firstColumn = 2 * (cell.column - west) + (east ? cell.span : 0);
+    const int firstRow = 2 * (cell.row - north) + (south ? cell.span : 0);
     for (int row = firstRow; row < firstRow + cell.span; ++row) {
         const auto begin = grid.labels.begin() + static_cast<std::ptrdiff_t>(grid.index(firstColumn, row));
         std::fill(begin, begin + cell.span, label);
@@ -23,33 +25,53 @@ void fillSubCell(LabelGrid& grid, const Cell& cell, SubCell subCell, std::int32_
 
 } // namespace
 
-LabelGrid regionLabels(const Plan& plan) {
-    const CellGraph& graph = plan.cells;
+LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& labelOfCell, bool cropped) {
     const GridFrame& frame = graph.frame();
-    int columns = frame.columns;
-    int rows = frame.rows;
-    for (const Cell& cell : graph.cells()) {
-        columns = std::max(columns, cell.column + cell.span);
-        rows = std::max(rows, cell.row + cell.span);
+    // The box on the bottom grid: the frame (and any cell beyond it), or the labelled cells only.
+    int west = 0;
+    int north = 0;
+    int east = cropped ? 0 : frame.columns;
+    int south = cropped ? 0 : frame.rows;
+    bool first = true;
+    for (std::size_t id = 0; id < labelOfCell.size() && id < graph.size(); ++id) {
+        const Cell& cell = graph.cell(static_cast<int>(id));
+        if (cropped && labelOfCell[id] == LabelGrid::noLabel)
+            continue;
+        if (cropped && first) {
+            west = cell.column;
+            north = cell.row;
+            first = false;
+        }
+        west = std::min(west, cell.column);
+        north = std::min(north, cell.row);
+        east = std::max(east, cell.column + cell.span);
+        south = std::max(south, cell.row + cell.span);
     }
     LabelGrid grid;
-    grid.columns = 2 * columns;
-    grid.rows = 2 * rows;
-    grid.originX = frame.originX;
-    grid.originY = frame.originY;
+    grid.columns = 2 * (east - west);
+    grid.rows = 2 * (south - north);
+    grid.originX = frame.x(west);
+    grid.originY = frame.y(north);
     grid.pixelSize = frame.bottomCellSize / 2.0;
     grid.labels.assign(static_cast<std::size_t>(grid.columns) * static_cast<std::size_t>(grid.rows),
                        LabelGrid::noLabel);
-    const auto& owner = plan.regions.robotOfCell;
-    for (std::size_t id = 0; id < owner.size() && id < graph.size(); ++id) {
+    for (std::size_t id = 0; id < labelOfCell.size() && id < graph.size(); ++id) {
+        if (labelOfCell[id] == LabelGrid::noLabel)
+            continue;
         const Cell& cell = graph.cell(static_cast<int>(id));
-        const std::int32_t label = owner[id] >= 0 ? owner[id] : unreachableLabel;
-        for (const SubCell subCell : subCellsCounterClockwise) {
+        for (const SubCell subCell : subCellsCounterClockwise)
             if (cell.isFree(subCell))
-                fillSubCell(grid, cell, subCell, label);
-        }
+                fillSubCell(grid, cell, subCell, labelOfCell[id], west, north);
     }
     return grid;
+}
+
+LabelGrid regionLabels(const Plan& plan) {
+    std::vector<std::int32_t> labels(plan.cells.size(), LabelGrid::noLabel);
+    const auto& owner = plan.regions.robotOfCell;
+    for (std::size_t id = 0; id < owner.size() && id < labels.size(); ++id)
+        labels[id] = owner[id] >= 0 ? owner[id] : unreachableLabel;
+    return cellLabels(plan.cells, labels, false);
 }
 
 RegionOutlines regionOutlines(const Plan& plan) {

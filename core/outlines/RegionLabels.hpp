@@ -15,4 +15,10 @@ inline constexpr std::int32_t unreachableLabel = -2;
 // map, blocked sub-cells). Exports draw region polygons and regions.tif from this one grid, so they agree.
 [[nodiscard]] LabelGrid regionLabels(const Plan& plan);
 
+// Any labels of cells on the same sub-cell grid: each free sub-cell of a cell takes the cell's label; cells
+// labelled LabelGrid::noLabel stay empty. `cropped` keeps only the box around the labelled cells (a few
+// cells of a large map need not cost a grid of the whole map).
+[[nodiscard]] LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& labelOfCell,
+                                   bool cropped);
+
 } // namespace mcpp

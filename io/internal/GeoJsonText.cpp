@@ -190,7 +190,7 @@ class FeatureLine {
 
 std::optional<std::string> planGeoJsonText(const ExportContext& context, const PlanFeatures& features) {
     const std::size_t count = features.regions.size() + features.paths.size() + features.starts.size() +
-                              features.unreachable.size();
+                              features.unreachable.size() + features.takenOver.size();
     std::size_t written = 0;
     std::string out = "{\n\"type\": \"FeatureCollection\",\n\"features\": [\n";
     for (const auto& region : features.regions) {
@@ -220,6 +220,13 @@ std::optional<std::string> planGeoJsonText(const ExportContext& context, const P
     for (const auto& part : features.unreachable) {
         FeatureLine(out, "unreachable")
             .real("area_m2", part.areaSquareMetres)
+            .geometry(part.geometry.get(), ++written == count);
+    }
+    for (const auto& part : features.takenOver) {
+        FeatureLine(out, "taken_over")
+            .robot(context, part.robot)
+            .real("area_m2", part.areaSquareMetres)
+            .integer("cells", part.cells)
             .geometry(part.geometry.get(), ++written == count);
     }
     out += "]\n}\n";

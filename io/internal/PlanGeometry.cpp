@@ -1,5 +1,7 @@
 #include "io/internal/PlanGeometry.hpp"
 
+#include "core/model/TimelineLayer.hpp"
+#include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "io/PlanExport.hpp"
 
@@ -107,6 +109,39 @@ std::vector<RegionFeature> emptyRegions(const Plan& plan) {
     return regions;
 }
 
+// What each robot of a plan simulated over time took over from others, traced on a grid cropped to those
+// cells.
+void addTakenOver(const Plan& plan, double metresPerUnit, PlanFeatures& features) {
+    const TimelineLayer* timeline = timelineLayerOf(plan);
+    if (timeline == nullptr)
+        return;
+    features.simulatedOverTime = true;
+    std::vector<std::int32_t> labels(plan.cells.size(), LabelGrid::noLabel);
+    std::vector<int> featureOfRobot(static_cast<std::size_t>(robotCount(plan)), -1);
+    for (const RobotTimeline& robot : timeline->robots()) {
+        if (robot.cellsTakenOver.empty() || robot.robot < 0 ||
+            static_cast<std::size_t>(robot.robot) >= featureOfRobot.size())
+            continue;
+        TakenOverFeature feature{robot.robot, std::make_unique<OGRMultiPolygon>(), 0.0,
+                                 static_cast<int>(robot.cellsTakenOver.size())};
+        for (const int id : robot.cellsTakenOver) {
+            labels[static_cast<std::size_t>(id)] = robot.robot;
+            const Cell& cell = plan.cells.cell(id);
+            feature.areaSquareMetres += cell.size * cell.size * cell.freeSubCellCount() / 4.0;
+        }
+        featureOfRobot[static_cast<std::size_t>(robot.robot)] = static_cast<int>(features.takenOver.size());
+        features.takenOver.push_back(std::move(feature));
+    }
+    if (features.takenOver.empty())
+        return;
+    const LabelGrid grid = cellLabels(plan.cells, labels, true);
+    for (const OutlinePolygon& outline : traceOutlines(grid)) {
+        const int feature = featureOfRobot[static_cast<std::size_t>(outline.label)];
+        features.takenOver[static_cast<std::size_t>(feature)].geometry->toMultiPolygon()->addGeometryDirectly(
+            polygonOf(outline, grid, metresPerUnit).release());
+    }
+}
+
 } // namespace
 
 int robotCount(const Plan& plan) {
@@ -153,6 +188,7 @@ Result<PlanFeatures> buildPlanFeatures(const ExportContext& context) {
             features.paths.push_back(pathFeature(path, metresPerUnit, densePaths));
     }
     addStarts(plan, metresPerUnit, features);
+    addTakenOver(plan, metresPerUnit, features);
     return features;
 }
 

@@ -39,6 +39,14 @@ struct UnreachableFeature {
     double areaSquareMetres = 0.0;
 };
 
+// The cells a robot covered that were first given to another (a plan simulated with re-allocation).
+struct TakenOverFeature {
+    int robot = 0;
+    std::unique_ptr<OGRGeometry> geometry; // a multipolygon
+    double areaSquareMetres = 0.0;         // of its free sub-cells, as the regions count it
+    int cells = 0;
+};
+
 // The plan's vector content in the raster CRS's units (planning metres / metresPerUnit). Region and
 // unreachable polygons are the outlines of the sub-cell grid of core/outlines/RegionLabels, traced, not
 // unions of cells; paths are their turning points unless densePaths asks for every waypoint.
@@ -47,6 +55,9 @@ struct PlanFeatures {
     std::vector<PathFeature> paths;
     std::vector<StartFeature> starts;
     std::vector<UnreachableFeature> unreachable; // one per connected part
+    // One per robot that took cells over; the layer exists only for plans simulated over time.
+    std::vector<TakenOverFeature> takenOver;
+    bool simulatedOverTime = false;
 };
 
 // From the context's plan, its (shared) region outlines, its CRS's units and its dense-paths setting.

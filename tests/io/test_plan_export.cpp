@@ -2,6 +2,7 @@
 // coordinates within 1e-7 degrees of the plan, CRS of the GeoPackage.
 
 #include "PlanFixture.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "io/PlanExport.hpp"
 
@@ -128,6 +129,11 @@ class PlanExportTest : public QObject {
     }
     static std::string expectedName(int robot) { return robot == 0 ? "Scout" : "Robot 2"; }
     std::string file(const char* name) const { return folder_.filePath(name).toStdString(); }
+    std::string writtenGeoPackage(const char* name) const {
+        const std::string path = file(name);
+        const Status written = writePlanGeoPackage(context(), path);
+        return written.ok() ? path : std::string();
+    }
 
   private slots:
     void geoJsonReadsBackWithOgr() {
@@ -325,6 +331,58 @@ class PlanExportTest : public QObject {
             const double area = geometry->toMultiPolygon()->get_Area();
             QVERIFY(std::abs(area - feature->GetFieldAsDouble("area_m2")) <= 1e-6 * area);
         }
+    }
+
+    // A plan simulated over time adds what each robot took over from others: here robot 2 took robot 1's
+    // two 10 m cells, one 20 x 10 m rectangle. GeoJSON, GeoPackage and KML carry it; a plan without a
+    // timeline has no such layer.
+    void takenOverCellsAreTheirOwnLayer() {
+        QVERIFY(!openVector(writtenGeoPackage("static.gpkg"))->GetLayerByName("taken_over"));
+        RobotTimeline second;
+        second.robot = 1;
+        second.cellsTakenOver = {0, 1};
+        plan_.layers.push_back(std::make_shared<TimelineLayer>(
+            TimelineLayer::Summary{}, std::vector<RobotTimeline>{{}, second}, std::vector<int>{0, 0, -1, 1}));
+        const double originX = plan_.cells.frame().originX;
+        const double originY = plan_.cells.frame().originY;
+
+        Dataset geoPackage = openVector(writtenGeoPackage("simulated.gpkg"));
+        OGRLayer* layer = geoPackage->GetLayerByName("taken_over");
+        QVERIFY(layer != nullptr);
+        QCOMPARE(layer->GetFeatureCount(), GIntBig{1});
+        std::unique_ptr<OGRFeature> part(layer->GetNextFeature());
+        QCOMPARE(part->GetFieldAsInteger("robot"), 2);
+        QCOMPARE(part->GetFieldAsInteger("cells"), 2);
+        QCOMPARE(part->GetFieldAsDouble("area_m2"), 200.0);
+        OGREnvelope box;
+        part->GetGeometryRef()->getEnvelope(&box);
+        QCOMPARE(box.MinX, originX);
+        QCOMPARE(box.MaxX, originX + 20.0);
+        QCOMPARE(box.MinY, originY - 10.0);
+        QCOMPARE(box.MaxY, originY);
+        QCOMPARE(part->GetGeometryRef()->toMultiPolygon()->get_Area(), 200.0);
+
+        const std::string geoJson = file("simulated.geojson");
+        QVERIFY(writePlanGeoJson(context(), geoJson).ok());
+        Dataset json = openVector(geoJson);
+        int found = 0;
+        for (auto& feature : *json->GetLayer(0)) {
+            if (std::string(feature->GetFieldAsString("kind")) != "taken_over")
+                continue;
+            ++found;
+            QCOMPARE(feature->GetFieldAsInteger("robot"), 2);
+            QCOMPARE(std::string(feature->GetFieldAsString("robot_name")), expectedName(1));
+            QVERIFY(std::abs(areaInCrs(*feature->GetGeometryRef(), reference_) - 200.0) <
+                    0.01); // 1e-7 degrees
+        }
+        QCOMPARE(found, 1);
+
+        const std::string kml = file("simulated.kml");
+        QVERIFY(writePlanKml(context(), kml).ok());
+        Dataset kmlFile = openVector(kml);
+        QVERIFY(kmlFile->GetLayerByName("taken_over") != nullptr);
+        QCOMPARE(kmlFile->GetLayerByName("taken_over")->GetFeatureCount(), GIntBig{1});
+        plan_.layers.clear();
     }
 
     void geoPackageInFeetKeepsFeet() {
