@@ -227,6 +227,7 @@ PlanningProblem BatchRunner::prepareProblem() {
         raster_, classes_, mission_.missingClassesAsObstacles, std::move(starts), mission_.planner, names));
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
     io::applyRobotSettings(mission_, prepared.problem);
+    prepared.problem.chargers = valueOrBadInput(io::missionChargers(mission_, raster_, units, names));
     return std::move(prepared.problem);
 }
 
@@ -587,6 +588,8 @@ std::string BatchRunner::fieldName(const io::MissionField& field) const {
     case Part::StartCrs:
         if (!fromFile)
             return "--start-crs";
+        break;
+    case Part::Charger: // mission files only
         break;
     case Part::Planner:
         if (options_.planner || !fromFile)

@@ -300,13 +300,27 @@ bool readEvents(MissionReader& reader, const QJsonValue& value, Mission& mission
     return true;
 }
 
+// A point as [x, y], two finite numbers.
+bool readPoint(MissionReader& reader, const QJsonObject& object, const std::string& path, const char* key,
+               MapPoint& point) {
+    const QJsonValue value = object.value(QLatin1String(key));
+    const QJsonArray coordinates = value.toArray();
+    if (!value.isArray() || coordinates.size() != 2 || !coordinates.at(0).isDouble() ||
+        !coordinates.at(1).isDouble() || !std::isfinite(coordinates.at(0).toDouble()) ||
+        !std::isfinite(coordinates.at(1).toDouble())) {
+        return reader.fail(MissionReader::join(path, key), "expected an array of two numbers");
+    }
+    point = {coordinates.at(0).toDouble(), coordinates.at(1).toDouble()};
+    return true;
+}
+
 bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string& path, RobotSpec& robot) {
     QJsonObject object;
     if (!reader.object(value, path, object))
         return false;
     if (!reader.onlyKeys(object, path,
                          {"name", "start", "start_crs", "vehicle", "altitude_m", "cruise_speed_mps",
-                          "max_waypoints", "battery_s"}))
+                          "max_waypoints", "battery_s", "charger"}))
         return false;
     if (!reader.optional(object, path, "battery_s", robot.batterySeconds, &MissionReader::number))
         return false;
@@ -318,17 +332,13 @@ bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string
         !readVehicle(reader, object, path, robot.vehicle)) {
         return false;
     }
-    const QJsonValue start = object.value(QLatin1String("start"));
-    const std::string startPath = path + ".start";
-    if (start.isUndefined())
-        return reader.fail(startPath, "missing");
-    const QJsonArray coordinates = start.toArray();
-    if (!start.isArray() || coordinates.size() != 2 || !coordinates.at(0).isDouble() ||
-        !coordinates.at(1).isDouble() || !std::isfinite(coordinates.at(0).toDouble()) ||
-        !std::isfinite(coordinates.at(1).toDouble())) {
-        return reader.fail(startPath, "expected an array of two numbers");
-    }
-    robot.start = {coordinates.at(0).toDouble(), coordinates.at(1).toDouble()};
+    if (object.value(QLatin1String("start")).isUndefined())
+        return reader.fail(path + ".start", "missing");
+    if (!readPoint(reader, object, path, "start", robot.start))
+        return false;
+    if (!object.value(QLatin1String("charger")).isUndefined() &&
+        !readPoint(reader, object, path, "charger", robot.charger.emplace()))
+        return false;
     if (!robot.startCrs.empty()) {
         internal::QuietGdalErrors quiet;
         if (!internal::spatialReferenceFromDefinition(robot.startCrs)) {
@@ -645,6 +655,11 @@ std::string missionToJson(const Mission& mission) {
         writeVehicle(item, robot.vehicle);
         if (robot.batterySeconds)
             item.add("battery_s", *robot.batterySeconds);
+        if (robot.charger) {
+            JsonValue& charger = item.add("charger", JsonValue::array());
+            charger.push(robot.charger->x);
+            charger.push(robot.charger->y);
+        }
     }
 
     if (!mission.events.empty())

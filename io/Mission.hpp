@@ -22,6 +22,8 @@ struct RobotSpec {
     std::string startCrs;          // empty: the raster's CRS
     VehicleOverrides vehicle = {}; // its own autopilot settings; the rest from the mission's exports
     std::optional<double> batterySeconds = {}; // its own battery, for planners that fly on batteries
+    // Where it charges, for planners that fly on batteries, in the start's CRS; none: at its start.
+    std::optional<MapPoint> charger = {};
 
     friend bool operator==(const RobotSpec&, const RobotSpec&) = default;
 };

@@ -33,6 +33,8 @@ FieldNamer missionFileFields(const std::string& missionPath) {
             return missionPath + ": " + robotField(field.robot, "start");
         case Part::StartCrs:
             return missionPath + ": " + robotField(field.robot, "start_crs");
+        case Part::Charger:
+            return missionPath + ": " + robotField(field.robot, "charger");
         case Part::Planner:
             return missionPath + ": planner.name";
         case Part::Parameter:
@@ -70,6 +72,24 @@ Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& ra
     return table;
 }
 
+namespace {
+
+// A point of a robot (its start or charger) in the planning frame: from its start_crs when it has one,
+// else from the units the caller reads starts in.
+Result<MapPoint> toPlanningFrame(const RobotSpec& spec, MapPoint point, const LoadedRaster& raster,
+                                 StartUnits units) {
+    if (!spec.startCrs.empty())
+        return raster.georeference.fromCrs(spec.startCrs, point);
+    if (units == StartUnits::RasterFileCrs && raster.warpedFromGeographic) {
+        // Only the file CRS's name survives loading; WGS84 is the fallback, metres from any other datum.
+        Result<MapPoint> converted = raster.georeference.fromCrs(raster.sourceCrsName, point);
+        return converted ? converted : raster.georeference.fromCrs("EPSG:4326", point);
+    }
+    return raster.georeference.fromCrsUnits(point);
+}
+
+} // namespace
+
 Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const LoadedRaster& raster,
                                             StartUnits units, const FieldNamer& names) {
     using Starts = Result<std::vector<MapPoint>>;
@@ -79,24 +99,32 @@ Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const Loaded
         const RobotSpec& spec = mission.robots[i];
         if (!std::isfinite(spec.start.x) || !std::isfinite(spec.start.y))
             return Starts::failure(names(MissionField::start(robot)) + ": not a finite point");
-        Result<MapPoint> start = spec.start;
-        if (!spec.startCrs.empty()) {
-            start = raster.georeference.fromCrs(spec.startCrs, spec.start);
-            if (!start)
-                return Starts::failure(names(MissionField::startCrs(robot)) + ": " + start.error());
-        } else if (units == StartUnits::RasterFileCrs && raster.warpedFromGeographic) {
-            // Only the file CRS's name survives loading; WGS84 is the fallback, metres from any other datum.
-            start = raster.georeference.fromCrs(raster.sourceCrsName, spec.start);
-            if (!start)
-                start = raster.georeference.fromCrs("EPSG:4326", spec.start);
-        } else {
-            start = raster.georeference.fromCrsUnits(spec.start);
-        }
+        const Result<MapPoint> start = toPlanningFrame(spec, spec.start, raster, units);
         if (!start)
-            return Starts::failure(names(MissionField::start(robot)) + ": " + start.error());
+            return Starts::failure(
+                names(spec.startCrs.empty() ? MissionField::start(robot) : MissionField::startCrs(robot)) +
+                ": " + start.error());
         starts.push_back(start.value());
     }
     return starts;
+}
+
+Result<std::vector<std::optional<MapPoint>>> missionChargers(const Mission& mission,
+                                                             const LoadedRaster& raster, StartUnits units,
+                                                             const FieldNamer& names) {
+    using Chargers = Result<std::vector<std::optional<MapPoint>>>;
+    std::vector<std::optional<MapPoint>> chargers(mission.robots.size());
+    for (std::size_t i = 0; i < mission.robots.size(); ++i) {
+        const RobotSpec& spec = mission.robots[i];
+        if (!spec.charger)
+            continue;
+        const Result<MapPoint> charger = toPlanningFrame(spec, *spec.charger, raster, units);
+        if (!charger)
+            return Chargers::failure(names(MissionField::charger(static_cast<int>(i))) + ": " +
+                                     charger.error());
+        chargers[i] = charger.value();
+    }
+    return chargers;
 }
 
 Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names) {

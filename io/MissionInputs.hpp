@@ -9,6 +9,7 @@
 #include "io/Result.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,14 +22,15 @@ namespace mcpp::io {
 struct MissionField {
     // MissingClassesOption names the switch that treats classes without a row as obstacles, bare: it is
     // offered as advice, not blamed.
-    enum class Part { Raster, Classes, MissingClassesOption, Start, StartCrs, Planner, Parameter };
+    enum class Part { Raster, Classes, MissingClassesOption, Start, StartCrs, Charger, Planner, Parameter };
     Part part = Part::Raster;
-    int robot = -1;  // Start, StartCrs: the robot, counted from 0
+    int robot = -1;  // Start, StartCrs, Charger: the robot, counted from 0
     std::string key; // Parameter: its key
 
     [[nodiscard]] static MissionField of(Part part) { return {part, -1, {}}; }
     [[nodiscard]] static MissionField start(int robot) { return {Part::Start, robot, {}}; }
     [[nodiscard]] static MissionField startCrs(int robot) { return {Part::StartCrs, robot, {}}; }
+    [[nodiscard]] static MissionField charger(int robot) { return {Part::Charger, robot, {}}; }
     [[nodiscard]] static MissionField parameter(std::string key) {
         return {Part::Parameter, -1, std::move(key)};
     }
@@ -53,6 +55,13 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 // Each robot's start in the planning frame (metres).
 [[nodiscard]] Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const LoadedRaster& raster,
                                                           StartUnits units, const FieldNamer& names);
+
+// Each robot's charger in the planning frame (metres), read like its start; none where it charges at its
+// start.
+[[nodiscard]] Result<std::vector<std::optional<MapPoint>>> missionChargers(const Mission& mission,
+                                                                           const LoadedRaster& raster,
+                                                                           StartUnits units,
+                                                                           const FieldNamer& names);
 
 // The planner's name is known and every parameter is one it declares, with a value that fits.
 [[nodiscard]] Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names);

@@ -99,6 +99,7 @@ class PlanRenderer {
                       const QTransform& worldToDevice, const QRectF& visibleDevice, bool dense) const;
     void paintCrossings(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
+    void paintChargers(QPainter& painter, const QTransform& worldToDevice) const;
 
     std::vector<GridImage> landCoverPyramid_; // halved again and again, for zoomed-out views
     std::vector<GridImage> regionPyramid_;

@@ -693,13 +693,16 @@ void MainWindow::connectDocument() {
     connect(document_, &MissionDocument::staleChanged, resultsPanel_, &ResultsPanel::setStale);
 }
 
-// A robot's own battery matters only to planners that fly on batteries: the others keep the table narrow.
+// A robot's own battery and charger matter only to planners that fly on batteries: the others keep the
+// table narrow.
 void MainWindow::showBatteryColumnForBatteryPlanners() {
     const auto description = findPlannerDescription(document_->plannerChoice().planner);
     const bool batteries =
         description && std::any_of(description->parameters.begin(), description->parameters.end(),
                                    [](const ParameterSpec& spec) { return spec.key == "battery_s"; });
-    robotView_->setColumnHidden(RobotTableModel::Battery, !batteries);
+    for (const int column :
+         {RobotTableModel::Battery, RobotTableModel::ChargerEasting, RobotTableModel::ChargerNorthing})
+        robotView_->setColumnHidden(column, !batteries);
 }
 
 void MainWindow::restoreSettings() {
@@ -1114,8 +1117,10 @@ bool MainWindow::openMission(const QString& path) {
     auto classes = io::missionClasses(mission, raster.value(), names);
     auto starts = classes ? io::missionStarts(mission, raster.value(), io::StartUnits::PlanningCrs, names)
                           : io::Result<std::vector<MapPoint>>::failure(classes.error());
-    if (!starts.ok()) {
-        reportError(tr("Cannot open mission"), QString::fromStdString(starts.error()));
+    auto chargers = starts ? io::missionChargers(mission, raster.value(), io::StartUnits::PlanningCrs, names)
+                           : io::Result<std::vector<std::optional<MapPoint>>>::failure(starts.error());
+    if (!chargers.ok()) {
+        reportError(tr("Cannot open mission"), QString::fromStdString(chargers.error()));
         return false;
     }
     mission.classes = std::move(classes.value());
@@ -1125,6 +1130,7 @@ bool MainWindow::openMission(const QString& path) {
     // The window keeps every start in the planning frame; saving writes them back in the CRS's units.
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         mission.robots[robot].start = starts.value()[robot];
+        mission.robots[robot].charger = chargers.value()[robot];
         mission.robots[robot].startCrs.clear();
     }
     runner_->cancel();
@@ -1172,8 +1178,11 @@ bool MainWindow::saveMission(const QString& path) {
                             .absoluteDir()
                             .relativeFilePath(QString::fromStdString(*areaPath))
                             .toStdString();
-    for (io::RobotSpec& robot : mission.robots)
+    for (io::RobotSpec& robot : mission.robots) {
         robot.start = document_->raster()->georeference.toCrsUnits(robot.start);
+        if (robot.charger)
+            robot.charger = document_->raster()->georeference.toCrsUnits(*robot.charger);
+    }
     const auto status = io::saveMission(mission, path.toStdString());
     if (!status.ok()) {
         reportError(tr("Cannot save mission"),
@@ -1490,6 +1499,10 @@ io::FieldNamer MainWindow::fieldNamer() const {
             if (field.robot >= 0 && static_cast<std::size_t>(field.robot) < robots.size())
                 return robots[static_cast<std::size_t>(field.robot)].name + "'s start";
             return "robot " + std::to_string(field.robot + 1) + "'s start";
+        case Part::Charger:
+            if (field.robot >= 0 && static_cast<std::size_t>(field.robot) < robots.size())
+                return robots[static_cast<std::size_t>(field.robot)].name + "'s charger";
+            return "robot " + std::to_string(field.robot + 1) + "'s charger";
         case Part::Planner:
             return "the planner";
         case Part::Parameter:
@@ -1528,6 +1541,7 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     comparisonInputs_ = document_->currentInputs();
     comparisonRaster_ = document_->sharedRaster();
     io::applyRobotSettings(document_->mission(), prepared.value().problem);
+    prepared.value().problem.chargers = document_->chargers(); // the window keeps them in the planning frame
     if (!comparisonRunner_->start(std::move(prepared.value().problem), std::move(choices)))
         return false;
     showBusy(tr("Comparing…"), true);
@@ -1614,6 +1628,7 @@ bool MainWindow::startPlanning() {
     }
     planningInputs_ = document_->currentInputs();
     io::applyRobotSettings(document_->mission(), prepared.value().problem);
+    prepared.value().problem.chargers = document_->chargers(); // the window keeps them in the planning frame
     if (!runner_->start(std::move(prepared.value().problem)))
         return false;
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();

@@ -36,6 +36,14 @@ std::vector<MapPoint> MissionDocument::starts() const {
     return points;
 }
 
+std::vector<std::optional<MapPoint>> MissionDocument::chargers() const {
+    std::vector<std::optional<MapPoint>> points;
+    points.reserve(mission_.robots.size());
+    for (const auto& robot : mission_.robots)
+        points.push_back(robot.charger);
+    return points;
+}
+
 bool MissionDocument::planStale() const {
     if (!plan_)
         return false;
@@ -43,7 +51,8 @@ bool MissionDocument::planStale() const {
 }
 
 PlanInputs MissionDocument::currentInputs() const {
-    return {mission_.classes, starts(), mission_.planner, mission_.events, io::robotBatteries(mission_)};
+    return {mission_.classes, starts(), mission_.planner, mission_.events, io::robotBatteries(mission_),
+            chargers()};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {
@@ -109,20 +118,22 @@ std::optional<std::int32_t> MissionDocument::classValueAt(MapPoint point) const 
     return grid.valueAt(pixel->column, pixel->row);
 }
 
-std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreRobot) const {
+std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreRobot,
+                                                     const QString& what) const {
     if (!raster_)
         return tr("Open a land-cover raster before placing robots.");
     const ClassGrid& grid = raster_->grid;
+    const QString name = what.isEmpty() ? tr("Start") : what;
     if (const auto problem = startPointProblem(grid, mission_.classes, point))
-        return tr("Start %1.").arg(QString::fromStdString(problem->detail));
+        return tr("%1 %2.").arg(name, QString::fromStdString(problem->detail));
     const auto pixel = grid.pixelAt(point);
     for (std::size_t robot = 0; robot < mission_.robots.size(); ++robot) {
         if (static_cast<int>(robot) == ignoreRobot)
             continue;
         const auto other = grid.pixelAt(mission_.robots[robot].start);
         if (other && other->column == pixel->column && other->row == pixel->row)
-            return tr("Start %1 is on the same pixel as %2's start.")
-                .arg(QString::fromStdString(describePoint(point)),
+            return tr("%1 %2 is on the same pixel as %3's start.")
+                .arg(name, QString::fromStdString(describePoint(point)),
                      QString::fromStdString(mission_.robots[robot].name));
     }
     return std::nullopt;

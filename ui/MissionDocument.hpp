@@ -22,6 +22,7 @@ struct PlanInputs {
     PlannerChoice planner;
     std::vector<SpeedEvent> events = {};
     std::vector<double> batteries = {}; // each robot's own, 0 where it has none
+    std::vector<std::optional<MapPoint>> chargers = {};
 
     friend bool operator==(const PlanInputs&, const PlanInputs&) = default;
 };
@@ -48,6 +49,8 @@ class MissionDocument : public QObject {
     [[nodiscard]] const std::vector<io::RobotSpec>& robots() const { return mission_.robots; }
     [[nodiscard]] const std::vector<SpeedEvent>& events() const { return mission_.events; }
     [[nodiscard]] std::vector<MapPoint> starts() const;
+    // Each robot's charger in the planning frame, none where it charges at its start.
+    [[nodiscard]] std::vector<std::optional<MapPoint>> chargers() const;
     [[nodiscard]] const PlannerChoice& plannerChoice() const { return mission_.planner; }
     [[nodiscard]] const QString& missionPath() const { return missionPath_; }
     [[nodiscard]] const Plan* plan() const { return plan_.get(); }
@@ -69,7 +72,9 @@ class MissionDocument : public QObject {
 
     // Why a robot cannot start at this point (outside the map, nodata, obstacle class, on another start's
     // pixel), or nothing when it can. ignoreRobot skips one robot when moving it.
-    [[nodiscard]] std::optional<QString> startProblem(MapPoint point, int ignoreRobot = -1) const;
+    // `what` names the point in the message ("Start" when empty; a charger is checked by the same rule).
+    [[nodiscard]] std::optional<QString> startProblem(MapPoint point, int ignoreRobot = -1,
+                                                      const QString& what = {}) const;
     // The raster value under a point, or nothing outside the map or on nodata.
     [[nodiscard]] std::optional<std::int32_t> classValueAt(MapPoint point) const;
     // "Robot N" with the smallest N not in use.

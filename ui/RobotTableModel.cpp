@@ -75,6 +75,16 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
                              .arg(QString::fromStdString(formatDuration(*robot.batterySeconds)))
                        : tr("The planner's battery endurance (type minutes here to give this robot its own)");
         break;
+    case ChargerEasting:
+    case ChargerNorthing:
+        if (text && robot.charger)
+            return QString::number(index.column() == ChargerEasting ? robot.charger->x : robot.charger->y,
+                                   'f', role == Qt::EditRole ? 3 : 0);
+        if (role == Qt::ToolTipRole)
+            return robot.charger
+                       ? tr("Where this robot charges; every sortie ends here (empty: at its start)")
+                       : tr("At its start (type a coordinate to place the charger elsewhere)");
+        break;
     default:
         break;
     }
@@ -103,6 +113,10 @@ QVariant RobotTableModel::headerData(int section, Qt::Orientation orientation, i
         return tr("Latitude");
     case Battery:
         return tr("Battery (min)");
+    case ChargerEasting:
+        return tr("Charger X (m)");
+    case ChargerNorthing:
+        return tr("Charger Y (m)");
     default:
         return {};
     }
@@ -141,6 +155,8 @@ bool RobotTableModel::setData(const QModelIndex& index, const QVariant& value, i
     }
     if (index.column() == Battery)
         return setBattery(row, value.toString());
+    if (index.column() == ChargerEasting || index.column() == ChargerNorthing)
+        return setCharger(row, index.column(), value.toString());
     bool isNumber = false;
     const double number = value.toString().trimmed().toDouble(&isNumber);
     if (!isNumber)
@@ -192,6 +208,29 @@ bool RobotTableModel::setBattery(int robot, const QString& text) {
     edited.batterySeconds = seconds;
     undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after,
                                            tr("Battery of %1").arg(QString::fromStdString(edited.name))));
+    return true;
+}
+
+// One coordinate of the charger; the other is the start's until given. Empty puts it back at the start.
+bool RobotTableModel::setCharger(int robot, int column, const QString& text) {
+    auto after = document_->robots();
+    auto& edited = after[static_cast<std::size_t>(robot)];
+    std::optional<MapPoint> charger;
+    if (!text.trimmed().isEmpty()) {
+        bool isNumber = false;
+        const double number = text.trimmed().toDouble(&isNumber);
+        if (!isNumber)
+            return refuse(tr("Charger: \"%1\" is not a number.").arg(text));
+        charger = edited.charger.value_or(edited.start);
+        (column == ChargerEasting ? charger->x : charger->y) = number;
+        if (const auto problem = document_->startProblem(*charger, robot, tr("Charger")))
+            return refuse(*problem);
+    }
+    if (edited.charger == charger)
+        return true;
+    edited.charger = charger;
+    undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after,
+                                           tr("Charger of %1").arg(QString::fromStdString(edited.name))));
     return true;
 }
 

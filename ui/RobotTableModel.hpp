@@ -10,14 +10,25 @@ namespace mcpp::ui {
 
 class MissionDocument;
 
-// The robots of the open mission: name, colour, start in the map CRS and in WGS84, and the robot's own
-// battery for planners that fly on batteries. Edits go through the undo stack; a value the mission would
-// refuse is reported through editRefused.
+// The robots of the open mission: name, colour, start in the map CRS and in WGS84, and for planners that
+// fly on batteries the robot's own battery and its charger (empty: at its start). Edits go through the undo
+// stack; a value the mission would refuse is reported through editRefused.
 class RobotTableModel : public QAbstractTableModel {
     Q_OBJECT
 
   public:
-    enum Column { Name, Colour, Easting, Northing, Longitude, Latitude, Battery, ColumnCount };
+    enum Column {
+        Name,
+        Colour,
+        Easting,
+        Northing,
+        Longitude,
+        Latitude,
+        Battery,
+        ChargerEasting,
+        ChargerNorthing,
+        ColumnCount
+    };
 
     RobotTableModel(MissionDocument* document, QUndoStack* undoStack, QObject* parent = nullptr);
 
@@ -41,6 +52,7 @@ class RobotTableModel : public QAbstractTableModel {
   private:
     bool refuse(const QString& reason);
     bool setBattery(int robot, const QString& text);
+    bool setCharger(int robot, int column, const QString& text);
 
     MissionDocument* document_;
     QUndoStack* undoStack_;

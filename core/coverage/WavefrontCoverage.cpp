@@ -66,7 +66,11 @@ class Walk {
         remaining_ = static_cast<int>(std::count(usable_.begin(), usable_.end(), char(1)));
     }
 
-    void run(std::vector<Sortie>& sorties) {
+    // transit: the points from the start to the charger when the robot starts elsewhere; they count
+    // against the first charge.
+    void run(const std::vector<Waypoint>& transit, std::vector<Sortie>& sorties) {
+        for (std::size_t point = 0; point + 1 < transit.size(); ++point)
+            clock_.append(transit[point]);
         clock_.append(tree_.charger());
         current_ = tree_.root();
         if (tree_.chargerApart())
@@ -247,22 +251,22 @@ std::set<int> cellsOutOfRange(const SubCellNodes& nodes, const ReturnTree& tree,
 } // namespace
 
 std::unique_ptr<ReturnTree> WavefrontCoverage::treeWithinRange(const SubCellNodes& nodes, int root, int robot,
-                                                               int startCell, MapPoint start,
+                                                               int chargerCell, MapPoint charger,
                                                                std::vector<char>& usable,
                                                                RobotSorties& sorties,
                                                                const ProgressReporter& progress) const {
     // Leaving cells out lengthens other ways home, so repeat until every cell left is within range.
     while (true) {
         progress.throwIfCancelled();
-        auto tree = std::make_unique<ReturnTree>(nodes, graph_, usable, root, start);
+        auto tree = std::make_unique<ReturnTree>(nodes, graph_, usable, root, charger);
         const std::set<int> outOfRange = cellsOutOfRange(nodes, *tree, usable, battery_.enduranceSeconds);
         if (outOfRange.empty())
             return tree;
-        if (outOfRange.count(startCell) != 0)
-            throw PlanningError::aboutParameter(
-                "battery_s", formatDuration(battery_.enduranceSeconds) + " is too short for robot " +
-                                 std::to_string(robot + 1) +
-                                 " to cover the cell at its start and return to its charger");
+        if (outOfRange.count(chargerCell) != 0)
+            throw PlanningError::aboutParameter("battery_s",
+                                                formatDuration(battery_.enduranceSeconds) +
+                                                    " is too short for robot " + std::to_string(robot + 1) +
+                                                    " to cover the cell of its charger and return to it");
         for (const int cell : outOfRange) {
             for (const int node : nodes.ofCell(cell))
                 usable[static_cast<std::size_t>(node)] = 0;
@@ -272,22 +276,24 @@ std::unique_ptr<ReturnTree> WavefrontCoverage::treeWithinRange(const SubCellNode
     }
 }
 
-WavefrontCoverage::Result WavefrontCoverage::cover(int robot, const std::vector<int>& cells, int startCell,
-                                                   MapPoint start, const ProgressReporter& progress) const {
+WavefrontCoverage::Result WavefrontCoverage::cover(int robot, const std::vector<int>& cells, int chargerCell,
+                                                   MapPoint charger, const std::vector<Waypoint>& transit,
+                                                   const ProgressReporter& progress) const {
     const SubCellNodes nodes(graph_, cells);
-    const int root = nodes.startNode(robot, startCell, start);
+    const int root = nodes.startNode(robot, chargerCell, charger);
     Result result;
     result.sorties.robot = robot;
-    result.sorties.charger = start;
+    result.sorties.charger = charger;
     result.sorties.enduranceSeconds = battery_.enduranceSeconds;
     result.sorties.rechargeSeconds = battery_.rechargeSeconds;
     std::vector<char> usable(static_cast<std::size_t>(nodes.size()), 1);
-    const auto tree = treeWithinRange(nodes, root, robot, startCell, start, usable, result.sorties, progress);
+    const auto tree =
+        treeWithinRange(nodes, root, robot, chargerCell, charger, usable, result.sorties, progress);
     std::sort(result.sorties.outOfRangeCells.begin(), result.sorties.outOfRangeCells.end());
     Walk walk(nodes, graph_, *tree, std::move(usable), battery_.enduranceSeconds, progress);
-    walk.run(result.sorties.sorties);
+    walk.run(transit, result.sorties.sorties);
     result.path.robot = robot;
-    result.path.closed = true;
+    result.path.closed = transit.empty(); // a robot that started elsewhere ends at its charger
     result.path.waypoints = walk.takeWaypoints();
     // A charge at the end of every sortie but the last.
     for (std::size_t sortie = 0; sortie + 1 < result.sorties.sorties.size(); ++sortie)

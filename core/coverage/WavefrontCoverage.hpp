@@ -34,16 +34,17 @@ class WavefrontCoverage {
 
     WavefrontCoverage(const CellGraph& graph, Battery battery) : graph_(graph), battery_(battery) {}
 
-    // cells: the robot's region, holding startCell, of a single-level grid. Throws PlanningError when one
-    // charge cannot cover the start cell and come back.
-    [[nodiscard]] Result cover(int robot, const std::vector<int>& cells, int startCell, MapPoint start,
-                               const ProgressReporter& progress) const;
+    // cells: the robot's region, holding chargerCell, of a single-level grid. transit: the flight from the
+    // robot's start to the charger (ChargerTransit) when it starts elsewhere, else empty; the first sortie
+    // begins with it. Throws PlanningError when one charge cannot cover the charger's cell and come back.
+    [[nodiscard]] Result cover(int robot, const std::vector<int>& cells, int chargerCell, MapPoint charger,
+                               const std::vector<Waypoint>& transit, const ProgressReporter& progress) const;
 
   private:
     // The return tree over the usable nodes once every cell out of range is left out of them (and listed
     // in `sorties`).
     [[nodiscard]] std::unique_ptr<ReturnTree>
-    treeWithinRange(const SubCellNodes& nodes, int root, int robot, int startCell, MapPoint start,
+    treeWithinRange(const SubCellNodes& nodes, int root, int robot, int chargerCell, MapPoint charger,
                     std::vector<char>& usable, RobotSorties& sorties, const ProgressReporter& progress) const;
 
     const CellGraph& graph_;

@@ -6,6 +6,7 @@
 #include "core/model/SpeedEvent.hpp"
 #include "core/parameters/PlannerChoice.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace mcpp {
@@ -17,6 +18,9 @@ struct PlanningProblem {
     // Each robot's own battery in seconds, for planners that fly on batteries; missing or 0: the planner's
     // battery_s.
     std::vector<double> batterySeconds;
+    // Each robot's charger in the grid's frame, for planners that fly on batteries; missing or none: its
+    // start.
+    std::vector<std::optional<MapPoint>> chargers;
     // What happens to the robots during the mission (slowing down, stopping), for planners that simulate it.
     std::vector<SpeedEvent> events;
     PlannerChoice planner;

@@ -2,12 +2,15 @@
 
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 #include "core/allocation/BatteryRange.hpp"
+#include "core/coverage/ChargerTransit.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/WavefrontCoverage.hpp"
 #include "core/model/BatteryEndurance.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/ParallelFor.hpp"
+#include "core/model/PlanningError.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/model/StartPointCheck.hpp"
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
@@ -69,13 +72,66 @@ RegionAllocation allocateWithinRange(PlanningRun& run, const BatteryRange& range
     return allocator.allocate(allocation.graph, startCells, run.progress());
 }
 
+// Where each robot works from: its charger (its start unless the problem gives one) and, for a robot that
+// starts elsewhere, its flight from the start to the charger.
+struct Chargers {
+    std::vector<MapPoint> points;
+    std::vector<int> cells;                      // the regions grow from these
+    std::vector<std::vector<Waypoint>> transits; // by robot; empty when it starts at its charger
+};
+
+int chargerCell(PlanningRun& run, int robot, MapPoint point) {
+    const std::string who = "robot " + std::to_string(robot + 1) + " charger ";
+    if (const auto problem = startPointProblem(run.problem().grid, run.problem().classes, point))
+        throw PlanningError(problem->kind, who + problem->detail);
+    const int cell = run.plan().cells.cellAt(point);
+    if (cell < 0)
+        throw PlanningError(PlanningError::Kind::StartOnObstacle,
+                            who + describePoint(point) +
+                                " lies in no cell of the planning grid: obstacles fill most of its cell");
+    return cell;
+}
+
+Chargers locateChargers(PlanningRun& run, const std::vector<int>& startCells,
+                        const std::vector<double>& batteries) {
+    const std::vector<std::optional<MapPoint>>& given = run.problem().chargers;
+    const auto hasOwn = [&](std::size_t r) {
+        return r < given.size() && given[r] && !(*given[r] == run.starts()[r]);
+    };
+    Chargers chargers{run.starts(), startCells, std::vector<std::vector<Waypoint>>(startCells.size())};
+    // Robots charging at their start first: a charger placed elsewhere must keep clear of them.
+    std::vector<int> robotOfCell(run.plan().cells.size(), -1);
+    for (std::size_t r = 0; r < startCells.size(); ++r)
+        if (!hasOwn(r))
+            robotOfCell[static_cast<std::size_t>(startCells[r])] = static_cast<int>(r);
+    for (std::size_t r = 0; r < startCells.size(); ++r) {
+        if (!hasOwn(r))
+            continue;
+        const auto robot = static_cast<int>(r);
+        chargers.points[r] = *given[r];
+        chargers.cells[r] = chargerCell(run, robot, chargers.points[r]);
+        int& owner = robotOfCell[static_cast<std::size_t>(chargers.cells[r])];
+        if (owner >= 0)
+            throw PlanningError(PlanningError::Kind::StartsShareCell,
+                                "robot " + std::to_string(robot + 1) + " charger " +
+                                    describePoint(chargers.points[r]) + " is in the same cell as robot " +
+                                    std::to_string(owner + 1) +
+                                    (hasOwn(static_cast<std::size_t>(owner)) ? "'s charger" : "'s start"));
+        owner = robot;
+        chargers.transits[r] = ChargerTransit(run.plan().cells)
+                                   .way(robot, run.starts()[r], startCells[r], chargers.points[r],
+                                        chargers.cells[r], batteries[r]);
+    }
+    return chargers;
+}
+
 struct RobotsOnBatteries {
     std::vector<WavefrontCoverage::Result> results; // by robot
     std::vector<int> leftOutBy;                     // by cell: the robot that last left it out, or -1
 };
 
 // Plans the robots' regions (in parallel) and takes the cells they leave out of their regions.
-void coverRegions(PlanningRun& run, const std::vector<int>& robots, const std::vector<int>& startCells,
+void coverRegions(PlanningRun& run, const std::vector<int>& robots, const Chargers& chargers,
                   const std::vector<double>& batteries, RobotsOnBatteries& state) {
     Plan& plan = run.plan();
     const std::vector<std::vector<int>> cells = cellsByRobot(plan.regions);
@@ -84,7 +140,8 @@ void coverRegions(PlanningRun& run, const std::vector<int>& robots, const std::v
         const auto robot = static_cast<std::size_t>(robots[i]);
         const WavefrontCoverage coverage(plan.cells, {batteries[robot], recharge});
         state.results[robot] =
-            coverage.cover(robots[i], cells[robot], startCells[robot], run.starts()[robot], run.progress());
+            coverage.cover(robots[i], cells[robot], chargers.cells[robot], chargers.points[robot],
+                           chargers.transits[robot], run.progress());
     });
     for (const int robot : robots)
         for (const int cell : state.results[static_cast<std::size_t>(robot)].sorties.outOfRangeCells) {
@@ -121,7 +178,7 @@ PlannerDescription WavefrontBatteryPlanner::describe() const {
         realParameter("battery_s", "Battery endurance", 1200.0, BatteryEndurance::minimumSeconds,
                       BatteryEndurance::maximumSeconds,
                       "Seconds of travel and turning on one charge; each sortie starts and ends at the "
-                      "robot's charger (its start) within it",
+                      "robot's charger (its start unless given) within it",
                       "s"),
         realParameter("recharge_s", "Recharge time", 600.0, 0.0, 1e7,
                       "Seconds at the charger between two sorties", "s"),
@@ -136,20 +193,21 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     const std::vector<int> startCells = run.locateStarts();
     const std::vector<double> batteries = robotBatteries(run.problem(), parameters.real("battery_s"));
     const BatteryRange range{*std::max_element(batteries.begin(), batteries.end())};
-    plan.regions = run.stage("allocation", [&] { return allocateWithinRange(run, range, startCells); });
+    const Chargers chargers = locateChargers(run, startCells, batteries);
+    plan.regions = run.stage("allocation", [&] { return allocateWithinRange(run, range, chargers.cells); });
     RobotsOnBatteries robots{std::vector<WavefrontCoverage::Result>(startCells.size()),
                              std::vector<int>(plan.cells.size(), -1)};
     run.stage("paths", [&] {
         std::vector<int> everyRobot(startCells.size());
         std::iota(everyRobot.begin(), everyRobot.end(), 0);
-        coverRegions(run, everyRobot, startCells, batteries, robots);
+        coverRegions(run, everyRobot, chargers, batteries, robots);
         // What a robot could not reach may be in reach of another's charger: hand it over, plan again.
         const std::vector<int> gained =
-            range.handOver(plan.cells, plan.regions.robotOfCell, startCells, robots.leftOutBy);
+            range.handOver(plan.cells, plan.regions.robotOfCell, chargers.cells, robots.leftOutBy);
         for (std::size_t cell = 0; cell < robots.leftOutBy.size(); ++cell)
             if (plan.regions.robotOfCell[cell] >= 0)
                 robots.leftOutBy[cell] = -1;
-        coverRegions(run, gained, startCells, batteries, robots);
+        coverRegions(run, gained, chargers, batteries, robots);
         return 0;
     });
     addPathsAndSorties(run, robots);

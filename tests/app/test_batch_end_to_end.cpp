@@ -75,6 +75,7 @@ class TestBatchEndToEnd : public QObject {
     void readmeSampleRuns();
     void missionsAboveTheItemLimitAreSplit();
     void batteryPlansWriteEachSortie();
+    void aChargerAwayFromTheStartIsWhereSortiesEnd();
     void detectionPlansWriteTheDetectionRaster();
     void eventsArePlayedAndComparedWithTheStaticPlan();
     void rasterAloneGetsTheRecognisedProductsTable();
@@ -386,6 +387,14 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
             QVERIFY(std::abs(first.at(0).toDouble()) <= 180.0 && std::abs(first.at(1).toDouble()) <= 90.0);
         } else if (kind == "start") {
             QCOMPARE(geometryType, QStringLiteral("Point"));
+        } else if (kind == "taken_over") { // plans simulated with events: what each robot took over
+            QVERIFY(geometryType == QStringLiteral("Polygon") ||
+                    geometryType == QStringLiteral("MultiPolygon"));
+            QVERIFY(properties.value("area_m2").toDouble() > 0.0);
+            QVERIFY(properties.value("cells").toInt() > 0);
+            const int robot = properties.value("robot").toInt(-1);
+            QVERIFY(robot >= 1 && robot <= robots);
+            continue;
         } else {
             QCOMPARE(kind, QStringLiteral("unreachable"));
             continue;
@@ -680,6 +689,39 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
     checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
     const QStringList stale = QDir(out).entryList({QStringLiteral("*_sortie_*")});
     QVERIFY2(stale.isEmpty(), qPrintable(stale.join(", ")));
+}
+
+// A charger away from the start (robots[0].charger): the first sortie begins at the start, every sortie
+// ends at the charger and the next begins there.
+void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
+    auto mission = readJsonObject(samplePath("synthetic/mission.json"));
+    auto raster = mission.value("raster").toObject();
+    raster.insert("path", samplePath("synthetic/synthetic.asc"));
+    mission.insert("raster", raster);
+    auto robots = mission.value("robots").toArray();
+    auto first = robots.at(0).toObject();
+    first.insert("charger", QJsonArray{431100, 5301150});
+    robots.replace(0, first);
+    mission.insert("robots", robots);
+    const QString path = scratch_.filePath("charger.json");
+    QVERIFY(writeText(path, QJsonDocument(mission).toJson()));
+    const QString out = scratch_.filePath("charger");
+    auto run = runMcpp({"--batch", path, "--planner", "wavefront-battery", "--param", "battery_s=600",
+                        "--max-waypoints", "0", "--out", out});
+    checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
+    if (QTest::currentTestFailed())
+        return;
+    const auto whole = planEnds(readJsonObject(out + "/robot_1.plan"));
+    QVERIFY(whole.first != whole.second); // from the start to the charger
+    const int sorties =
+        readJsonObject(out + "/report.json").value("robots").toArray()[0].toObject().value("sorties").toInt();
+    QVERIFY2(sorties > 1, qPrintable(QString::number(sorties)));
+    for (int sortie = 1; sortie <= sorties; ++sortie) {
+        const auto ends =
+            planEnds(readJsonObject(QStringLiteral("%1/robot_1_sortie_%2.plan").arg(out).arg(sortie)));
+        QCOMPARE(ends.first, sortie == 1 ? whole.first : whole.second);
+        QCOMPARE(ends.second, whole.second);
+    }
 }
 
 // CPPIED: detection.tif lies on the plan's lattice in the raster's CRS; every cell a robot covers is seen

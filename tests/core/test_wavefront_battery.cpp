@@ -224,6 +224,83 @@ class WavefrontBatteryTest : public QObject {
         }
         QCOMPARE(plan.metrics.coveredFraction, 1.0);
     }
+
+    // A charger away from the start: the robot flies there first (on its first charge), its region grows
+    // from the charger, and every sortie ends there; the other robot still flies from its start.
+    void aRobotFliesFromAChargerAwayFromItsStart() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(20, std::string(40, '.')), {{0.5, 0.5}, {39.5, 19.5}});
+        const MapPoint charger = mapPointAt(problem, 15.5, 10.5);
+        problem.chargers = {charger};
+        const Plan plan = planOnBattery(problem, 150.0, 60.0, 0.0);
+        const RobotSorties& robot = sortiesOf(plan, 0);
+        const CoveragePath& path = plan.paths[0];
+        QCOMPARE(robot.charger, charger);
+        QVERIFY(!path.closed);
+        QCOMPARE(path.waypoints.front().x, problem.starts[0].x); // it begins where it stands
+        QCOMPARE(path.waypoints.front().y, problem.starts[0].y);
+        QVERIFY(robot.sorties.size() > 1);
+        QCOMPARE(robot.sorties.front().firstWaypoint, std::size_t(0));
+        for (std::size_t sortie = 0; sortie < robot.sorties.size(); ++sortie) {
+            const Waypoint& end = path.waypoints[robot.sorties[sortie].lastWaypoint];
+            QCOMPARE((MapPoint{end.x, end.y}), charger);
+            if (sortie > 0) {
+                const Waypoint& begin = path.waypoints[robot.sorties[sortie].firstWaypoint];
+                QCOMPARE((MapPoint{begin.x, begin.y}), charger);
+            }
+            QVERIFY(sortieSeconds(path, robot.sorties[sortie]) <= 150.0 + 1e-6);
+        }
+        // The region holds the charger's cell; the first sortie's way to it (15 m east, 10 m south)
+        // counts against the first charge.
+        QCOMPARE(plan.regions.robotOfCell[static_cast<std::size_t>(plan.cells.cellAt(charger))], 0);
+        QVERIFY(sortieSeconds(path, robot.sorties.front()) >= 25.0);
+        QCOMPARE(plan.metrics.coveredFraction, 1.0);
+        QCOMPARE(sortiesOf(plan, 1).charger, problem.starts[1]);
+        QVERIFY(plan.paths[1].closed);
+    }
+
+    // A charger the robot cannot use is refused, naming the robot and what is wrong.
+    void chargersThatCannotBeUsedAreRefused_data() {
+        QTest::addColumn<double>("east");
+        QTest::addColumn<double>("south");
+        QTest::addColumn<double>("battery");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("on water") << 10.5 << 2.5 << 1000.0 << "robot 1 charger";
+        QTest::newRow("in the other robot's cell")
+            << 39.0 << 19.0 << 1000.0 << "same cell as robot 2's start";
+        QTest::newRow("on an island") << 2.5 << 2.5 << 1000.0 << "no passable way";
+        QTest::newRow("farther than one charge")
+            << 30.5 << 2.5 << 5.0 << "to fly from its start to its charger";
+    }
+    void chargersThatCannotBeUsedAreRefused() {
+        QFETCH(double, east);
+        QFETCH(double, south);
+        QFETCH(double, battery);
+        QFETCH(QString, expected);
+        // Water (whole cells) cuts the north-west corner's island (columns 0-7, rows 0-5) from the rest.
+        std::vector<std::string> rows = rowsOf(20, std::string(40, '.'));
+        for (int row = 0; row < 6; ++row)
+            rows[static_cast<std::size_t>(row)].replace(8, 4, "####");
+        rows[6].replace(0, 12, std::string(12, '#'));
+        rows[7].replace(0, 12, std::string(12, '#'));
+        PlanningProblem problem = test::drawnProblem(rows, {{0.5, 0.5}, {39.5, 19.5}});
+        if (expected != "robot 1 charger") // these start on the mainland
+            problem = test::drawnProblem(rows, {{20.5, 0.5}, {39.5, 19.5}});
+        problem.chargers = {mapPointAt(problem, east, south)};
+        try {
+            (void)planOnBattery(problem, battery, 0.0, 0.0);
+            QFAIL("the charger was accepted");
+        } catch (const PlanningError& error) {
+            QVERIFY2(QString(error.what()).contains(expected), error.what());
+            QVERIFY2(QString(error.what()).contains("robot 1"), error.what());
+        }
+    }
+
+  private:
+    // The point `east` metres east and `south` metres south of the map's north-west corner.
+    static MapPoint mapPointAt(const PlanningProblem& problem, double east, double south) {
+        return {problem.grid.originX + east, problem.grid.originY - south};
+    }
 };
 
 QTEST_APPLESS_MAIN(WavefrontBatteryTest)

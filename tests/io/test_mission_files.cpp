@@ -46,8 +46,9 @@ Mission sampleMission() {
     mission.robots[1].vehicle.type = VehicleType::Multirotor;
     mission.robots[1].vehicle.altitudeMetres = 45.5;
     mission.robots[1].vehicle.maxWaypoints = 0;
-    mission.robots[2].batterySeconds = 1500.0;           // its own battery, for battery planners
-    mission.events = {{120.5, 1, 0.5}, {600.0, 0, 0.0}}; // robot 1 at half speed, then robot 0 stops
+    mission.robots[2].batterySeconds = 1500.0;                  // its own battery, for battery planners
+    mission.robots[2].charger = MapPoint{302000.5, 4154000.25}; // and its charger away from its start
+    mission.events = {{120.5, 1, 0.5}, {600.0, 0, 0.0}};        // robot 1 at half speed, then robot 0 stops
     mission.planner.parameters.set("purity_tolerance", 0.05);
     mission.planner.parameters.set("blocked_threshold", 0.6);
     mission.planner.parameters.set("closed_tour", false);
@@ -144,6 +145,11 @@ class MissionFilesTest : public QObject {
         QVERIFY(vehicles[1].type == VehicleType::Multirotor);
         QCOMPARE(root["robots"].toArray()[2].toObject()["battery_s"].toDouble(), 1500.0);
         QVERIFY(!beta.contains("battery_s"));
+        const QJsonArray charger = root["robots"].toArray()[2].toObject()["charger"].toArray();
+        QCOMPARE(charger.size(), 2);
+        QCOMPARE(charger[0].toDouble(), 302000.5);
+        QCOMPARE(charger[1].toDouble(), 4154000.25);
+        QVERIFY(!beta.contains("charger"));
         QCOMPARE(robotBatteries(sampleMission()), (std::vector<double>{0.0, 0.0, 1500.0}));
         const QJsonArray events = root["events"].toArray();
         QCOMPARE(events.size(), 2);

@@ -114,19 +114,65 @@ class TestRobotTableModel : public QObject {
         QCOMPARE(undoStack_->count(), 0);
     }
 
-    // The column shows only while the planner flies on batteries.
+    // A charger takes the start's other coordinate until both are typed; empty puts it back at the start.
+    void chargerIsPlacedByItsCoordinates() {
+        QVERIFY(robots_->data(chargerOf(0, ui::RobotTableModel::ChargerEasting)).toString().isEmpty());
+        QVERIFY(robots_->setData(chargerOf(0, ui::RobotTableModel::ChargerEasting), "60"));
+        QCOMPARE(document_->robots()[0].charger.value_or(MapPoint{}), (MapPoint{60.0, 55.0}));
+        QVERIFY(robots_->setData(chargerOf(0, ui::RobotTableModel::ChargerNorthing), "35"));
+        QCOMPARE(document_->robots()[0].charger.value_or(MapPoint{}), (MapPoint{60.0, 35.0}));
+        QCOMPARE(robots_->data(chargerOf(0, ui::RobotTableModel::ChargerNorthing)).toString(), QString("35"));
+        QCOMPARE(document_->chargers()[0].value_or(MapPoint{}), (MapPoint{60.0, 35.0}));
+        QVERIFY(robots_->setData(chargerOf(0, ui::RobotTableModel::ChargerEasting), ""));
+        QVERIFY(!document_->robots()[0].charger.has_value());
+        undoStack_->undo();
+        QCOMPARE(document_->robots()[0].charger.value_or(MapPoint{}), (MapPoint{60.0, 35.0}));
+    }
+
+    void impossibleChargersAreRefused_data() {
+        QTest::addColumn<int>("column");
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("words") << int(ui::RobotTableModel::ChargerEasting) << "by the van"
+                               << "not a number";
+        QTest::newRow("off the map") << int(ui::RobotTableModel::ChargerEasting) << "500"
+                                     << "outside";
+        QTest::newRow("on the other start") << int(ui::RobotTableModel::ChargerEasting) << "25"
+                                            << "same pixel as west's start";
+    }
+    void impossibleChargersAreRefused() {
+        QFETCH(int, column);
+        QFETCH(QString, typed);
+        QFETCH(QString, reason);
+        QSignalSpy refused(robots_.get(), &ui::RobotTableModel::editRefused);
+        QVERIFY(!robots_->setData(chargerOf(0, column), typed));
+        QCOMPARE(refused.count(), 1);
+        const QString message = refused.front().front().toString();
+        QVERIFY2(message.startsWith("Charger") && message.contains(reason), qPrintable(message));
+        QVERIFY(!document_->robots()[0].charger.has_value());
+    }
+
+    // The battery and charger columns show only while the planner flies on batteries.
     void batteryColumnFollowsThePlanner() {
         ui::MainWindow window;
         auto* view = window.findChild<QTableView*>(QStringLiteral("robotTableView"));
         QVERIFY(view != nullptr);
-        QVERIFY(view->isColumnHidden(ui::RobotTableModel::Battery));
+        const auto batteryColumnsHidden = [&](bool hidden) {
+            for (const int column : {ui::RobotTableModel::Battery, ui::RobotTableModel::ChargerEasting,
+                                     ui::RobotTableModel::ChargerNorthing})
+                if (view->isColumnHidden(column) != hidden)
+                    return false;
+            return true;
+        };
+        QVERIFY(batteryColumnsHidden(true));
         window.document()->setPlannerChoice({"wavefront-battery", {}});
-        QVERIFY(!view->isColumnHidden(ui::RobotTableModel::Battery));
+        QVERIFY(batteryColumnsHidden(false));
         window.document()->setPlannerChoice({"mdstc", {}});
-        QVERIFY(view->isColumnHidden(ui::RobotTableModel::Battery));
+        QVERIFY(batteryColumnsHidden(true));
     }
 
   private:
+    [[nodiscard]] QModelIndex chargerOf(int robot, int column) const { return robots_->index(robot, column); }
     [[nodiscard]] QModelIndex batteryOf(int robot) const {
         return robots_->index(robot, ui::RobotTableModel::Battery);
     }
