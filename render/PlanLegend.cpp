@@ -4,6 +4,7 @@
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "render/DetectionPalette.hpp"
 #include "render/RobotPalette.hpp"
 
@@ -87,6 +88,11 @@ void paintSymbol(QPainter& painter, const LegendItem& item, const QRectF& box) {
     case LegendSymbol::Unreachable:
         painter.setPen(QPen(QColor(140, 0, 0), 0.8));
         painter.setBrush(QBrush(QColor(140, 0, 0, 220), Qt::BDiagPattern));
+        painter.drawRect(swatch);
+        break;
+    case LegendSymbol::TakenOver:
+        painter.setPen(QPen(item.colour.darker(140), 0.8));
+        painter.setBrush(QBrush(item.colour.darker(140), Qt::FDiagPattern));
         painter.drawRect(swatch);
         break;
     case LegendSymbol::Crossing:
@@ -174,6 +180,14 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
                  QStringLiteral("Unreachable: %1")
                      .arg(QString::fromStdString(formatArea(plan->metrics.unreachableAreaSquareMetres))),
                  {}});
+        if (const TimelineLayer* timeline = timelineLayerOf(*plan);
+            timeline != nullptr &&
+            std::any_of(timeline->robots().begin(), timeline->robots().end(),
+                        [](const RobotTimeline& robot) { return !robot.cellsTakenOver.empty(); }))
+            overlays.items.push_back({LegendSymbol::TakenOver,
+                                      first,
+                                      QStringLiteral("Cells it took over from another robot"),
+                                      {}});
         const bool crossed =
             grid != nullptr && !impassableCrossings(plan->cells, plan->regions, *grid, classes, 1).empty();
         if (crossed)

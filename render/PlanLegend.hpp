@@ -21,6 +21,7 @@ enum class LegendSymbol {
     PathLine,
     StartMarker,
     Unreachable,
+    TakenOver,
     CellOutline,
     Crossing
 };

@@ -5,6 +5,7 @@
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
+#include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "core/outlines/RegionOutlines.hpp"
 #include "io/PlanExport.hpp"
@@ -19,6 +20,7 @@
 #include <QPolygonF>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 namespace mcpp::render {
@@ -185,6 +187,7 @@ void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     plan_ = plan;
     prepareRegions(outlines);
     prepareDetection();
+    prepareTakenOver();
     preparePaths();
     crossingCells_.clear();
     if (plan_ == nullptr || grid_ == nullptr || classes_ == nullptr)
@@ -254,6 +257,38 @@ void PlanRenderer::prepareRegions(const RegionOutlines* given) {
                 polygon << QPointF(labels.x(vertex.column), labels.y(vertex.row));
             polygon << polygon.front();
             target.push_back({polygon, polygon.boundingRect()});
+        };
+        add(outline.exterior);
+        for (const OutlineRing& hole : outline.holes)
+            add(hole);
+    }
+}
+
+// The cells each robot of a plan simulated over time took over from others, traced on a grid cropped to
+// them.
+void PlanRenderer::prepareTakenOver() {
+    takenOverOutlines_.clear();
+    const TimelineLayer* timeline = plan_ == nullptr ? nullptr : timelineLayerOf(*plan_);
+    if (timeline == nullptr)
+        return;
+    std::vector<std::int32_t> labels(plan_->cells.size(), LabelGrid::noLabel);
+    bool any = false;
+    for (const RobotTimeline& robot : timeline->robots())
+        for (const int cell : robot.cellsTakenOver) {
+            labels[static_cast<std::size_t>(cell)] = robot.robot;
+            any = true;
+        }
+    if (!any)
+        return;
+    const LabelGrid grid = cellLabels(plan_->cells, labels, true);
+    for (const OutlinePolygon& outline : traceOutlines(grid)) {
+        const auto add = [&](const OutlineRing& ring) {
+            QPolygonF polygon;
+            polygon.reserve(static_cast<qsizetype>(ring.size()) + 1);
+            for (const GridVertex& vertex : ring)
+                polygon << QPointF(grid.x(vertex.column), grid.y(vertex.row));
+            polygon << polygon.front();
+            takenOverOutlines_.push_back({outline.label, {polygon, polygon.boundingRect()}});
         };
         add(outline.exterior);
         for (const OutlineRing& hole : outline.holes)
@@ -391,6 +426,8 @@ void PlanRenderer::paintMap(QPainter& painter, const QTransform& worldToDevice,
             drawPyramid(painter, detectionPyramid_, worldToDevice, deviceArea);
         if (layers_.regions && !detection)
             paintRegions(painter, worldToDevice, deviceArea);
+        if (layers_.regions && !detection)
+            paintTakenOver(painter, worldToDevice, deviceArea);
         if (layers_.unreachable)
             paintUnreachable(painter, worldToDevice, deviceArea);
         if (layers_.quadTree)
@@ -501,6 +538,24 @@ void PlanRenderer::paintUnreachable(QPainter& painter, const QTransform& worldTo
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setPen(Qt::NoPen);
     painter.fillPath(area, QBrush(QColor(140, 0, 0, 220), Qt::BDiagPattern));
+}
+
+// Hatched in the colour of the robot that took them over, over the region tint of the robot that covered
+// them (the same robot: the tint says who, the hatch says "not its own at first").
+void PlanRenderer::paintTakenOver(QPainter& painter, const QTransform& worldToDevice,
+                                  const QRectF& deviceArea) const {
+    const QRectF visible = worldToDevice.inverted().mapRect(deviceArea);
+    std::map<int, QPainterPath> areas;
+    for (const auto& [robot, outline] : takenOverOutlines_)
+        if (touches(outline.bounds, visible)) {
+            QPainterPath& area = areas[robot];
+            area.setFillRule(Qt::OddEvenFill);
+            area.addPolygon(worldToDevice.map(outline.ring));
+        }
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    painter.setPen(Qt::NoPen);
+    for (const auto& [robot, area] : areas)
+        painter.fillPath(area, QBrush(RobotPalette::colour(robot).darker(140), Qt::FDiagPattern));
 }
 
 void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDevice,

@@ -13,6 +13,7 @@
 #include <QSizeF>
 #include <QTransform>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QPainter;
@@ -79,6 +80,7 @@ class PlanRenderer {
     };
     void prepareRegions(const RegionOutlines* given);
     void prepareDetection();
+    void prepareTakenOver();
     void preparePaths();
     void addPathLine(const CoveragePath& path, bool alternate);
     void drawGridImage(QPainter& painter, const GridImage& grid, const QTransform& worldToDevice,
@@ -91,6 +93,7 @@ class PlanRenderer {
     void paintRegionBorders(QPainter& painter, const QTransform& worldToDevice,
                             const QRectF& deviceArea) const;
     void paintUnreachable(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintTakenOver(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintQuadTree(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintPaths(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintPathsAt(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea,
@@ -106,6 +109,7 @@ class PlanRenderer {
     std::vector<GridImage> detectionPyramid_; // empty when the plan has no detection layer
     std::vector<Outline> regionBorders_;
     std::vector<Outline> unreachableOutlines_;
+    std::vector<std::pair<int, Outline>> takenOverOutlines_; // by robot: the cells it took over from others
     std::vector<QRectF> crossingCells_; // world rectangles of cells whose path crosses impassable land
     std::vector<PathLine> pathLines_;
     double meanStepMetres_ = 0.0; // mean distance between consecutive waypoints

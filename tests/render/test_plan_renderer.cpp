@@ -269,6 +269,46 @@ class TestPlanRenderer : public QObject {
         QVERIFY(sawHatch);
     }
 
+    // In a plan simulated over time, the cells a robot took over from another are hatched in its colour;
+    // its own cells are only tinted.
+    void hatchesTheCellsARobotTookOver() {
+        Plan plan;
+        GridFrame frame;
+        frame.originX = 1000.0;
+        frame.originY = 5000.0;
+        frame.bottomCellSize = 100.0;
+        frame.columns = 2;
+        frame.rows = 1;
+        Cell own;
+        own.minX = 1000.0;
+        own.minY = 4900.0;
+        own.size = 100.0;
+        own.speedMetresPerSecond = 1.0;
+        Cell takenOver = own;
+        takenOver.column = 1;
+        takenOver.minX = 1100.0;
+        plan.cells = CellGraph(frame, {own, takenOver}, NeighbourTopology({0, 1, 2}, {1, 0}));
+        plan.regions.robotOfCell = {0, 0};
+        RobotTimeline robot;
+        robot.cellsTakenOver = {1};
+        plan.layers.push_back(std::make_shared<TimelineLayer>(TimelineLayer::Summary{}, std::vector{robot},
+                                                              std::vector<int>{0, 1}));
+        render::MapLayers layers;
+        layers.quadTree = false;
+        layers.starts = false;
+        const QImage image =
+            render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200), layers);
+        const QColor hatch = render::RobotPalette::colour(0).darker(140);
+        const auto sawHatch = [&](int fromX, int toX) {
+            for (int x = fromX; x < toX; ++x)
+                if (near(image.pixelColor(x, 100), hatch, 20))
+                    return true;
+            return false;
+        };
+        QVERIFY(!sawHatch(10, 190));
+        QVERIFY(sawHatch(210, 390));
+    }
+
     // A planned map seen whole, half-way in and close up: the paths show in their robot's colour at every
     // zoom (thin lines while passes are a few pixels apart, full lines with arrows closer in).
     void pathsShowAtEveryZoom_data() {
