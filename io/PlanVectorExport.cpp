@@ -292,8 +292,7 @@ Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::Unr
     return {};
 }
 
-// What each robot took over from others' first regions: written for plans simulated over time, even when
-// nobody took anything over (an empty layer says so).
+// What each robot took over from others' first regions, for plans simulated over time.
 Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& context,
                            std::vector<internal::TakenOverFeature>& parts, const OGRSpatialReference* crs,
                            bool named) {

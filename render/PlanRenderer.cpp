@@ -733,36 +733,39 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
     paintChargers(painter, worldToDevice);
 }
 
-// A charger away from its robot's start: a square in the robot's colour with a white bolt-like bar, so it
-// reads as the place the robot lands, not a second robot.
+// A charger away from its robot's start: a square in the robot's colour with a white bolt, so it reads as
+// the place the robot lands, not a second robot.
 void PlanRenderer::paintChargers(QPainter& painter, const QTransform& worldToDevice) const {
-    if (plan_ == nullptr)
-        return;
-    const SortieLayer* sorties = sortieLayerOf(*plan_);
-    if (sorties == nullptr)
-        return;
-    for (const RobotSorties& robot : sorties->robots()) {
-        const auto r = static_cast<std::size_t>(robot.robot);
-        if (r >= plan_->paths.size() || plan_->paths[r].waypoints.empty())
-            continue;
-        const Waypoint& start = plan_->paths[r].waypoints.front();
-        if (std::hypot(start.x - robot.charger.x, start.y - robot.charger.y) < 1e-6)
-            continue;
-        const QPointF centre = worldToDevice.map(QPointF(robot.charger.x, robot.charger.y));
-        const double half = kStartRadiusPixels;
-        painter.setPen(QPen(QColor(20, 20, 20), 1.5));
-        painter.setBrush(RobotPalette::colour(robot.robot));
-        painter.drawRect(QRectF(centre.x() - half, centre.y() - half, 2.0 * half, 2.0 * half));
-        const QPolygonF bolt{{centre.x() + 0.15 * half, centre.y() - 0.75 * half},
-                             {centre.x() - 0.45 * half, centre.y() + 0.1 * half},
-                             {centre.x() + 0.05 * half, centre.y() + 0.1 * half},
-                             {centre.x() - 0.15 * half, centre.y() + 0.75 * half},
-                             {centre.x() + 0.45 * half, centre.y() - 0.1 * half},
-                             {centre.x() - 0.05 * half, centre.y() - 0.1 * half}};
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(Qt::white);
-        painter.drawPolygon(bolt);
-    }
+    std::vector<std::pair<int, MapPoint>> chargers;
+    for (std::size_t robot = 0; robot < chargers_.size(); ++robot)
+        if (chargers_[robot])
+            chargers.emplace_back(static_cast<int>(robot), *chargers_[robot]);
+    const SortieLayer* sorties = plan_ == nullptr ? nullptr : sortieLayerOf(*plan_);
+    if (chargers_.empty() && sorties != nullptr)
+        for (const RobotSorties& robot : sorties->robots()) {
+            const auto index = static_cast<std::size_t>(robot.robot);
+            if (index < plan_->paths.size() && !plan_->paths[index].waypoints.empty() &&
+                !plan_->paths[index].closed) // an open battery path: it flew from its start to its charger
+                chargers.emplace_back(robot.robot, robot.charger);
+        }
+    for (const auto& [robot, point] : chargers)
+        drawCharger(painter, worldToDevice.map(QPointF(point.x, point.y)), RobotPalette::colour(robot));
+}
+
+void PlanRenderer::drawCharger(QPainter& painter, QPointF centre, const QColor& colour) {
+    const double half = kStartRadiusPixels;
+    painter.setPen(QPen(QColor(20, 20, 20), 1.5));
+    painter.setBrush(colour);
+    painter.drawRect(QRectF(centre.x() - half, centre.y() - half, 2.0 * half, 2.0 * half));
+    const QPolygonF bolt{{centre.x() + 0.15 * half, centre.y() - 0.75 * half},
+                         {centre.x() - 0.45 * half, centre.y() + 0.1 * half},
+                         {centre.x() + 0.05 * half, centre.y() + 0.1 * half},
+                         {centre.x() - 0.15 * half, centre.y() + 0.75 * half},
+                         {centre.x() + 0.45 * half, centre.y() - 0.1 * half},
+                         {centre.x() - 0.05 * half, centre.y() - 0.1 * half}};
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(Qt::white);
+    painter.drawPolygon(bolt);
 }
 
 } // namespace mcpp::render

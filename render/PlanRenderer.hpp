@@ -31,6 +31,9 @@ class PlanRenderer {
     void setPlan(const Plan* plan, const RegionOutlines* outlines = nullptr);
     // Start points to draw; when empty the first waypoint of each path is used.
     void setStarts(std::vector<MapPoint> starts);
+    // Each robot's charger away from its start, as placed (none: at its start); without them, those of
+    // the plan's sorties.
+    void setChargers(std::vector<std::optional<MapPoint>> chargers) { chargers_ = std::move(chargers); }
     void setLayers(const MapLayers& layers) { layers_ = layers; }
     // A plan simulated over time shown at one moment: each path as driven so far, each robot where it is.
     // Empty: the whole paths.
@@ -103,13 +106,15 @@ class PlanRenderer {
     void paintCrossings(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
     void paintChargers(QPainter& painter, const QTransform& worldToDevice) const;
+    static void drawCharger(QPainter& painter, QPointF centre, const QColor& colour);
 
     std::vector<GridImage> landCoverPyramid_; // halved again and again, for zoomed-out views
     std::vector<GridImage> regionPyramid_;
     std::vector<GridImage> detectionPyramid_; // empty when the plan has no detection layer
     std::vector<Outline> regionBorders_;
     std::vector<Outline> unreachableOutlines_;
-    std::vector<std::pair<int, Outline>> takenOverOutlines_; // by robot: the cells it took over from others
+    std::vector<std::pair<int, Outline>> takenOverOutlines_;
+    std::vector<std::optional<MapPoint>> chargers_; // by robot: the cells it took over from others
     std::vector<QRectF> crossingCells_; // world rectangles of cells whose path crosses impassable land
     std::vector<PathLine> pathLines_;
     double meanStepMetres_ = 0.0; // mean distance between consecutive waypoints

@@ -693,13 +693,17 @@ void MainWindow::connectDocument() {
     connect(document_, &MissionDocument::staleChanged, resultsPanel_, &ResultsPanel::setStale);
 }
 
+// Batteries, events and chargers, as batch mode adds them; the window keeps chargers in the planning frame.
+void MainWindow::addRobotSettings(PlanningProblem& problem) const {
+    io::applyRobotSettings(document_->mission(), problem);
+    problem.chargers = document_->chargers();
+}
+
 // A robot's own battery and charger matter only to planners that fly on batteries: the others keep the
 // table narrow.
 void MainWindow::showBatteryColumnForBatteryPlanners() {
     const auto description = findPlannerDescription(document_->plannerChoice().planner);
-    const bool batteries =
-        description && std::any_of(description->parameters.begin(), description->parameters.end(),
-                                   [](const ParameterSpec& spec) { return spec.key == "battery_s"; });
+    const bool batteries = description && description->fliesOnBatteries();
     for (const int column :
          {RobotTableModel::Battery, RobotTableModel::ChargerEasting, RobotTableModel::ChargerNorthing})
         robotView_->setColumnHidden(column, !batteries);
@@ -1540,8 +1544,7 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
         choices.push_back(switchPlanner(document_->plannerChoice(), name));
     comparisonInputs_ = document_->currentInputs();
     comparisonRaster_ = document_->sharedRaster();
-    io::applyRobotSettings(document_->mission(), prepared.value().problem);
-    prepared.value().problem.chargers = document_->chargers(); // the window keeps them in the planning frame
+    addRobotSettings(prepared.value().problem);
     if (!comparisonRunner_->start(std::move(prepared.value().problem), std::move(choices)))
         return false;
     showBusy(tr("Comparing…"), true);
@@ -1627,8 +1630,7 @@ bool MainWindow::startPlanning() {
         return false;
     }
     planningInputs_ = document_->currentInputs();
-    io::applyRobotSettings(document_->mission(), prepared.value().problem);
-    prepared.value().problem.chargers = document_->chargers(); // the window keeps them in the planning frame
+    addRobotSettings(prepared.value().problem);
     if (!runner_->start(std::move(prepared.value().problem)))
         return false;
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();

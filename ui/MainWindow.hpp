@@ -121,6 +121,7 @@ class MainWindow : public QMainWindow {
     void createActions();
     void createStatusBar();
     void connectDocument();
+    void addRobotSettings(PlanningProblem& problem) const;
     void showBatteryColumnForBatteryPlanners();
     void restoreSettings();
     void rebuildRecentMenu();

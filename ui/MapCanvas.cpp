@@ -1,5 +1,6 @@
 #include "ui/MapCanvas.hpp"
 
+#include "core/planners/PlannerRegistry.hpp"
 #include "render/MapDecorations.hpp"
 #include "ui/CellToolTip.hpp"
 #include "ui/MissionDocument.hpp"
@@ -46,6 +47,7 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
         if (selectedStart_ >= static_cast<int>(document_->robots().size()))
             setSelectedStart(-1);
     });
+    connect(document_, &MissionDocument::settingsChanged, this, &MapCanvas::refreshStarts);
     connect(document_, &MissionDocument::planChanged, this, [this] {
         renderer_.setPlan(document_->plan());
         mapImage_.invalidate();
@@ -75,6 +77,10 @@ void MapCanvas::refreshStarts() {
     if (dragPoint_ && draggedStart_ >= 0 && draggedStart_ < static_cast<int>(starts.size()))
         starts[static_cast<std::size_t>(draggedStart_)] = *dragPoint_;
     renderer_.setStarts(std::move(starts));
+    // Chargers show while the planner flies on batteries, the only ones that use them.
+    const auto planner = findPlannerDescription(document_->plannerChoice().planner);
+    renderer_.setChargers(planner && planner->fliesOnBatteries() ? document_->chargers()
+                                                                 : std::vector<std::optional<MapPoint>>{});
     update();
 }
 

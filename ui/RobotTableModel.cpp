@@ -8,6 +8,7 @@
 
 #include <QRegularExpression>
 #include <QUndoStack>
+#include <cmath>
 
 namespace mcpp::ui {
 
@@ -67,8 +68,9 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
         return QString::number(degrees, 'f', role == Qt::EditRole ? 7 : 5); // 5 decimals: about a metre
     }
     case Battery:
-        if (text && robot.batterySeconds)
-            return QString::fromStdString(formatQuantity(*robot.batterySeconds / 60.0, 4));
+        if (text && robot.batterySeconds) // all the digits to edit: a cell tabbed through changes nothing
+            return QString::fromStdString(
+                formatQuantity(*robot.batterySeconds / 60.0, role == Qt::EditRole ? 15 : 4));
         if (role == Qt::ToolTipRole)
             return robot.batterySeconds
                        ? tr("%1 of travel on one charge")
@@ -83,7 +85,7 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
         if (role == Qt::ToolTipRole)
             return robot.charger
                        ? tr("Where this robot charges; every sortie ends here (empty: at its start)")
-                       : tr("At its start (type a coordinate to place the charger elsewhere)");
+                       : tr("At its start (type a coordinate, or \"x, y\", to place the charger elsewhere)");
         break;
     default:
         break;
@@ -203,7 +205,9 @@ bool RobotTableModel::setBattery(int robot, const QString& text) {
     }
     auto after = document_->robots();
     auto& edited = after[static_cast<std::size_t>(robot)];
-    if (edited.batterySeconds == seconds)
+    const bool same = edited.batterySeconds.has_value() == seconds.has_value() &&
+                      (!seconds || std::abs(*seconds - *edited.batterySeconds) <= 1e-9 * *seconds);
+    if (same)
         return true;
     edited.batterySeconds = seconds;
     undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after,
@@ -211,18 +215,26 @@ bool RobotTableModel::setBattery(int robot, const QString& text) {
     return true;
 }
 
-// One coordinate of the charger; the other is the start's until given. Empty puts it back at the start.
+// One coordinate of the charger (the other is the start's until given), or both as "x, y" in either
+// column. Empty puts it back at the start.
 bool RobotTableModel::setCharger(int robot, int column, const QString& text) {
     auto after = document_->robots();
     auto& edited = after[static_cast<std::size_t>(robot)];
     std::optional<MapPoint> charger;
     if (!text.trimmed().isEmpty()) {
-        bool isNumber = false;
-        const double number = text.trimmed().toDouble(&isNumber);
-        if (!isNumber)
-            return refuse(tr("Charger: \"%1\" is not a number.").arg(text));
+        const QStringList parts = text.trimmed().split(QRegularExpression(QStringLiteral("[,;\\s]+")));
+        std::vector<double> numbers;
+        for (const QString& part : parts) {
+            bool isNumber = false;
+            numbers.push_back(part.toDouble(&isNumber));
+            if (!isNumber || numbers.size() > 2)
+                return refuse(tr("Charger: \"%1\" is not a coordinate, nor \"x, y\".").arg(text));
+        }
         charger = edited.charger.value_or(edited.start);
-        (column == ChargerEasting ? charger->x : charger->y) = number;
+        if (numbers.size() == 2)
+            charger = MapPoint{numbers[0], numbers[1]};
+        else
+            (column == ChargerEasting ? charger->x : charger->y) = numbers.front();
         if (const auto problem = document_->startProblem(*charger, robot, tr("Charger")))
             return refuse(*problem);
     }

@@ -13,7 +13,7 @@
 namespace mcpp {
 namespace {
 
-// A node's waypoint moved to a point of its sub-cell (the start or the charger), keeping its land cover.
+// A node's waypoint moved to a point of its sub-cell (the start), keeping its land cover.
 Waypoint pointIn(const SubCellNodes& nodes, int node, MapPoint point) {
     Waypoint waypoint = nodes.waypoint(node);
     waypoint.x = point.x;
@@ -25,13 +25,21 @@ bool samePlace(const Waypoint& a, const Waypoint& b) {
     return std::hypot(a.x - b.x, a.y - b.y) <= 1e-9;
 }
 
+std::unique_ptr<SubCellNodes> everySubCell(const CellGraph& graph) {
+    std::vector<int> everyCell(graph.size());
+    std::iota(everyCell.begin(), everyCell.end(), 0);
+    return std::make_unique<SubCellNodes>(graph, everyCell);
+}
+
 } // namespace
+
+ChargerTransit::ChargerTransit(const CellGraph& graph) : graph_(graph), nodes_(everySubCell(graph)) {}
+
+ChargerTransit::~ChargerTransit() = default;
 
 std::vector<Waypoint> ChargerTransit::way(int robot, MapPoint start, int startCell, MapPoint charger,
                                           int chargerCell, double enduranceSeconds) const {
-    std::vector<int> everyCell(graph_.size());
-    std::iota(everyCell.begin(), everyCell.end(), 0);
-    const SubCellNodes nodes(graph_, everyCell);
+    const SubCellNodes& nodes = *nodes_;
     const int root = nodes.startNode(robot, chargerCell, charger);
     const int from = nodes.startNode(robot, startCell, start);
     const ReturnTree tree(nodes, graph_, std::vector<char>(static_cast<std::size_t>(nodes.size()), 1), root,
@@ -54,10 +62,11 @@ std::vector<Waypoint> ChargerTransit::way(int robot, MapPoint start, int startCe
     for (const Waypoint& point : points)
         clock.append(point);
     if (clock.elapsed() > enduranceSeconds)
-        throw PlanningError::aboutParameter(
-            "battery_s", who + " needs " + formatDuration(clock.elapsed()) +
-                             " to fly from its start to its charger, more than one charge (" +
-                             formatDuration(enduranceSeconds) + ")");
+        throw PlanningError(
+            PlanningError::Kind::InvalidParameter,
+            who + " needs " + formatDuration(clock.elapsed()) +
+                " to fly from its start to its charger, more than one charge of its battery (" +
+                formatDuration(enduranceSeconds) + ")");
     return points;
 }
 

@@ -73,6 +73,8 @@ struct Cell {
             return east ? SubCell::NorthEast : SubCell::NorthWest;
         return east ? SubCell::SouthEast : SubCell::SouthWest;
     }
+    // The area of its free sub-cells: what region and taken-over polygons cover of it.
+    [[nodiscard]] double freeAreaSquareMetres() const { return size * size * freeSubCellCount() / 4.0; }
     // Seconds of travel to cover it (spec 4): a coverage walk passes each free sub-cell once, a quarter of
     // 2 x size. No walk covers the cell in less.
     [[nodiscard]] double travelSeconds() const {

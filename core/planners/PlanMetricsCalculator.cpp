@@ -105,7 +105,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         }
         RobotMetrics& robotMetrics = metrics.robots[static_cast<std::size_t>(robot)];
         ++robotMetrics.cells;
-        robotMetrics.areaSquareMetres += cell.size * cell.size * cell.freeSubCellCount() / 4.0;
+        robotMetrics.areaSquareMetres += cell.freeAreaSquareMetres();
         robotMetrics.costSeconds += cell.coverSeconds();
         plan.regions.costSeconds[static_cast<std::size_t>(robot)] += cell.coverSeconds();
         cellTravelSeconds += cell.travelSeconds();

@@ -26,6 +26,14 @@ struct PlannerDescription {
     bool simulatesEvents = false; // plays the problem's events; other planners warn that they ignore them
     PlannerPromises promises;
     std::vector<ParameterSpec> parameters; // the planner's and its stages', then those every planner has
+
+    // Robots fly on batteries (it declares battery_s): their own batteries and chargers matter to it.
+    [[nodiscard]] bool fliesOnBatteries() const {
+        for (const ParameterSpec& spec : parameters)
+            if (spec.key == "battery_s")
+                return true;
+        return false;
+    }
 };
 
 } // namespace mcpp

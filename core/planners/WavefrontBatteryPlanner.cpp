@@ -15,6 +15,7 @@
 #include "core/planners/PlanningRun.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace mcpp {
@@ -92,35 +93,46 @@ int chargerCell(PlanningRun& run, int robot, MapPoint point) {
     return cell;
 }
 
+// Whether the problem places the robot's charger away from its start (a millimetre off, after a round trip
+// through another CRS, is still at the start).
+bool chargesElsewhere(const PlanningRun& run, std::size_t robot) {
+    const std::vector<std::optional<MapPoint>>& given = run.problem().chargers;
+    if (robot >= given.size() || !given[robot])
+        return false;
+    const MapPoint start = run.starts()[robot];
+    return std::hypot(given[robot]->x - start.x, given[robot]->y - start.y) > 1e-3;
+}
+
 Chargers locateChargers(PlanningRun& run, const std::vector<int>& startCells,
                         const std::vector<double>& batteries) {
-    const std::vector<std::optional<MapPoint>>& given = run.problem().chargers;
-    const auto hasOwn = [&](std::size_t r) {
-        return r < given.size() && given[r] && !(*given[r] == run.starts()[r]);
-    };
     Chargers chargers{run.starts(), startCells, std::vector<std::vector<Waypoint>>(startCells.size())};
     // Robots charging at their start first: a charger placed elsewhere must keep clear of them.
     std::vector<int> robotOfCell(run.plan().cells.size(), -1);
-    for (std::size_t r = 0; r < startCells.size(); ++r)
-        if (!hasOwn(r))
-            robotOfCell[static_cast<std::size_t>(startCells[r])] = static_cast<int>(r);
-    for (std::size_t r = 0; r < startCells.size(); ++r) {
-        if (!hasOwn(r))
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot)
+        if (!chargesElsewhere(run, robot))
+            robotOfCell[static_cast<std::size_t>(startCells[robot])] = static_cast<int>(robot);
+    std::optional<ChargerTransit> transit;
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
+        if (!chargesElsewhere(run, robot))
             continue;
-        const auto robot = static_cast<int>(r);
-        chargers.points[r] = *given[r];
-        chargers.cells[r] = chargerCell(run, robot, chargers.points[r]);
-        int& owner = robotOfCell[static_cast<std::size_t>(chargers.cells[r])];
+        const auto index = static_cast<int>(robot);
+        chargers.points[robot] = *run.problem().chargers[robot];
+        chargers.cells[robot] = chargerCell(run, index, chargers.points[robot]);
+        int& owner = robotOfCell[static_cast<std::size_t>(chargers.cells[robot])];
         if (owner >= 0)
-            throw PlanningError(PlanningError::Kind::StartsShareCell,
-                                "robot " + std::to_string(robot + 1) + " charger " +
-                                    describePoint(chargers.points[r]) + " is in the same cell as robot " +
-                                    std::to_string(owner + 1) +
-                                    (hasOwn(static_cast<std::size_t>(owner)) ? "'s charger" : "'s start"));
-        owner = robot;
-        chargers.transits[r] = ChargerTransit(run.plan().cells)
-                                   .way(robot, run.starts()[r], startCells[r], chargers.points[r],
-                                        chargers.cells[r], batteries[r]);
+            throw PlanningError(
+                PlanningError::Kind::StartsShareCell,
+                "robot " + std::to_string(index + 1) + " charger " + describePoint(chargers.points[robot]) +
+                    " is in the same cell as robot " + std::to_string(owner + 1) +
+                    (chargesElsewhere(run, static_cast<std::size_t>(owner)) ? "'s charger"
+                                                                            : "'s start and charger"));
+        owner = index;
+        if (!transit)
+            transit.emplace(run.plan().cells);
+        chargers.transits[robot] =
+            transit->way(index, run.starts()[robot], startCells[robot], chargers.points[robot],
+                         chargers.cells[robot], batteries[robot]);
+        run.progress().throwIfCancelled();
     }
     return chargers;
 }
@@ -193,7 +205,8 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     const std::vector<int> startCells = run.locateStarts();
     const std::vector<double> batteries = robotBatteries(run.problem(), parameters.real("battery_s"));
     const BatteryRange range{*std::max_element(batteries.begin(), batteries.end())};
-    const Chargers chargers = locateChargers(run, startCells, batteries);
+    const Chargers chargers =
+        run.stage("chargers", [&] { return locateChargers(run, startCells, batteries); });
     plan.regions = run.stage("allocation", [&] { return allocateWithinRange(run, range, chargers.cells); });
     RobotsOnBatteries robots{std::vector<WavefrontCoverage::Result>(startCells.size()),
                              std::vector<int>(plan.cells.size(), -1)};

@@ -104,7 +104,7 @@ std::vector<RegionFeature> emptyRegions(const Plan& plan) {
         const Cell& cell = plan.cells.cell(static_cast<int>(id));
         RegionFeature& region = regions[static_cast<std::size_t>(owner[id])];
         ++region.cells;
-        region.areaSquareMetres += cell.size * cell.size * cell.freeSubCellCount() / 4.0;
+        region.areaSquareMetres += cell.freeAreaSquareMetres();
     }
     return regions;
 }
@@ -126,8 +126,7 @@ void addTakenOver(const Plan& plan, double metresPerUnit, PlanFeatures& features
                                  static_cast<int>(robot.cellsTakenOver.size())};
         for (const int id : robot.cellsTakenOver) {
             labels[static_cast<std::size_t>(id)] = robot.robot;
-            const Cell& cell = plan.cells.cell(id);
-            feature.areaSquareMetres += cell.size * cell.size * cell.freeSubCellCount() / 4.0;
+            feature.areaSquareMetres += plan.cells.cell(id).freeAreaSquareMetres();
         }
         featureOfRobot[static_cast<std::size_t>(robot.robot)] = static_cast<int>(features.takenOver.size());
         features.takenOver.push_back(std::move(feature));

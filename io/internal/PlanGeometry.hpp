@@ -55,7 +55,8 @@ struct PlanFeatures {
     std::vector<PathFeature> paths;
     std::vector<StartFeature> starts;
     std::vector<UnreachableFeature> unreachable; // one per connected part
-    // One per robot that took cells over; the layer exists only for plans simulated over time.
+    // One per robot that took cells over, for plans simulated over time (GeoPackage then writes the layer
+    // even when empty; KML only when it has features).
     std::vector<TakenOverFeature> takenOver;
     bool simulatedOverTime = false;
 };

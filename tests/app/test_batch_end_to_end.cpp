@@ -813,6 +813,14 @@ void TestBatchEndToEnd::eventsArePlayedAndComparedWithTheStaticPlan() {
     }
     QCOMPARE(report.value("makespan_under_events_s").toDouble(), latest);
     QVERIFY(takenOver > 0);
+    // What they took over is also a vector layer: its cells add up to the report's.
+    int takenOverInGeoJson = 0;
+    for (const QJsonValue& feature : readJsonObject(out + "/plan.geojson").value("features").toArray()) {
+        const QJsonObject properties = feature.toObject().value("properties").toObject();
+        if (properties.value("kind").toString() == QStringLiteral("taken_over"))
+            takenOverInGeoJson += properties.value("cells").toInt();
+    }
+    QCOMPARE(takenOverInGeoJson, takenOver);
     // The stopped robot was done when it stopped; the static plan's never finishes.
     const QJsonObject stopped = robots[2].toObject();
     QVERIFY(stopped.value("stopped").toBool());

@@ -333,16 +333,18 @@ class PlanExportTest : public QObject {
         }
     }
 
-    // A plan simulated over time adds what each robot took over from others: here robot 2 took robot 1's
-    // two 10 m cells, one 20 x 10 m rectangle. GeoJSON, GeoPackage and KML carry it; a plan without a
-    // timeline has no such layer.
+    // A plan simulated over time adds what each robot took over from others: here robot 1 took the 20 m
+    // cell east of the split one (so the traced grid is cropped away from the map's north-west corner).
+    // GeoJSON, GeoPackage and KML carry it; a plan without a timeline has no such layer.
     void takenOverCellsAreTheirOwnLayer() {
         QVERIFY(!openVector(writtenGeoPackage("static.gpkg"))->GetLayerByName("taken_over"));
+        RobotTimeline first;
+        first.cellsTakenOver = {3};
         RobotTimeline second;
         second.robot = 1;
-        second.cellsTakenOver = {0, 1};
-        plan_.layers.push_back(std::make_shared<TimelineLayer>(
-            TimelineLayer::Summary{}, std::vector<RobotTimeline>{{}, second}, std::vector<int>{0, 0, -1, 1}));
+        plan_.layers.push_back(std::make_shared<TimelineLayer>(TimelineLayer::Summary{},
+                                                               std::vector<RobotTimeline>{first, second},
+                                                               std::vector<int>{0, 0, -1, 1}));
         const double originX = plan_.cells.frame().originX;
         const double originY = plan_.cells.frame().originY;
 
@@ -351,16 +353,16 @@ class PlanExportTest : public QObject {
         QVERIFY(layer != nullptr);
         QCOMPARE(layer->GetFeatureCount(), GIntBig{1});
         std::unique_ptr<OGRFeature> part(layer->GetNextFeature());
-        QCOMPARE(part->GetFieldAsInteger("robot"), 2);
-        QCOMPARE(part->GetFieldAsInteger("cells"), 2);
-        QCOMPARE(part->GetFieldAsDouble("area_m2"), 200.0);
+        QCOMPARE(part->GetFieldAsInteger("robot"), 1);
+        QCOMPARE(part->GetFieldAsInteger("cells"), 1);
+        QCOMPARE(part->GetFieldAsDouble("area_m2"), 400.0);
         OGREnvelope box;
         part->GetGeometryRef()->getEnvelope(&box);
-        QCOMPARE(box.MinX, originX);
-        QCOMPARE(box.MaxX, originX + 20.0);
-        QCOMPARE(box.MinY, originY - 10.0);
+        QCOMPARE(box.MinX, originX + 20.0);
+        QCOMPARE(box.MaxX, originX + 40.0);
+        QCOMPARE(box.MinY, originY - 20.0);
         QCOMPARE(box.MaxY, originY);
-        QCOMPARE(part->GetGeometryRef()->toMultiPolygon()->get_Area(), 200.0);
+        QCOMPARE(part->GetGeometryRef()->toMultiPolygon()->get_Area(), 400.0);
 
         const std::string geoJson = file("simulated.geojson");
         QVERIFY(writePlanGeoJson(context(), geoJson).ok());
@@ -370,9 +372,9 @@ class PlanExportTest : public QObject {
             if (std::string(feature->GetFieldAsString("kind")) != "taken_over")
                 continue;
             ++found;
-            QCOMPARE(feature->GetFieldAsInteger("robot"), 2);
-            QCOMPARE(std::string(feature->GetFieldAsString("robot_name")), expectedName(1));
-            QVERIFY(std::abs(areaInCrs(*feature->GetGeometryRef(), reference_) - 200.0) <
+            QCOMPARE(feature->GetFieldAsInteger("robot"), 1);
+            QCOMPARE(std::string(feature->GetFieldAsString("robot_name")), expectedName(0));
+            QVERIFY(std::abs(areaInCrs(*feature->GetGeometryRef(), reference_) - 400.0) <
                     0.01); // 1e-7 degrees
         }
         QCOMPARE(found, 1);

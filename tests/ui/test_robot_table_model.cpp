@@ -71,7 +71,6 @@ class TestRobotTableModel : public QObject {
     void batteryEditsAreStoredAndUndone() {
         QFETCH(QString, typed);
         QFETCH(double, seconds);
-        QSignalSpy stale(document_.get(), &ui::MissionDocument::staleChanged);
         document_->setPlan(std::make_shared<Plan>(), document_->currentInputs());
         QVERIFY(robots_->setData(batteryOf(0), typed));
         QCOMPARE(document_->robots()[0].batterySeconds.value_or(-1.0), seconds);
@@ -83,6 +82,15 @@ class TestRobotTableModel : public QObject {
         undoStack_->undo();
         QVERIFY(!document_->robots()[0].batterySeconds.has_value());
         QVERIFY(!document_->planStale());
+    }
+
+    // A cell tabbed through commits its edit text unchanged: the battery stays as it was, with no undo step.
+    void aBatteryTabbedThroughStaysAsItWas() {
+        QVERIFY(robots_->setData(batteryOf(0), "1234 s"));
+        QCOMPARE(undoStack_->count(), 1);
+        QVERIFY(robots_->setData(batteryOf(0), robots_->data(batteryOf(0), Qt::EditRole)));
+        QCOMPARE(document_->robots()[0].batterySeconds.value_or(-1.0), 1234.0);
+        QCOMPARE(undoStack_->count(), 1);
     }
 
     // What a mission file would refuse is refused here with the reason, and nothing changes.
@@ -125,6 +133,10 @@ class TestRobotTableModel : public QObject {
         QCOMPARE(document_->chargers()[0].value_or(MapPoint{}), (MapPoint{60.0, 35.0}));
         QVERIFY(robots_->setData(chargerOf(0, ui::RobotTableModel::ChargerEasting), ""));
         QVERIFY(!document_->robots()[0].charger.has_value());
+        // Both at once, where one coordinate alone would fall on the other robot's start pixel (25, 55).
+        QVERIFY(robots_->setData(chargerOf(0, ui::RobotTableModel::ChargerNorthing), "25, 85"));
+        QCOMPARE(document_->robots()[0].charger.value_or(MapPoint{}), (MapPoint{25.0, 85.0}));
+        undoStack_->undo();
         undoStack_->undo();
         QCOMPARE(document_->robots()[0].charger.value_or(MapPoint{}), (MapPoint{60.0, 35.0}));
     }
@@ -134,7 +146,9 @@ class TestRobotTableModel : public QObject {
         QTest::addColumn<QString>("typed");
         QTest::addColumn<QString>("reason");
         QTest::newRow("words") << int(ui::RobotTableModel::ChargerEasting) << "by the van"
-                               << "not a number";
+                               << "not a coordinate";
+        QTest::newRow("three numbers") << int(ui::RobotTableModel::ChargerNorthing) << "1, 2, 3"
+                                       << "not a coordinate";
         QTest::newRow("off the map") << int(ui::RobotTableModel::ChargerEasting) << "500"
                                      << "outside";
         QTest::newRow("on the other start") << int(ui::RobotTableModel::ChargerEasting) << "25"
