@@ -12,7 +12,8 @@ class SubCellNodes;
 
 // The flight of a robot whose charger is not at its start: the quickest way over any passable sub-cells
 // (other robots' regions too) from the start to the charger, turns counted as a path's measurement counts
-// them. It is the beginning of the robot's first sortie.
+// them, searched near the two (the whole map when no way joins them there). It begins the robot's first
+// sortie.
 class ChargerTransit {
   public:
     explicit ChargerTransit(const CellGraph& graph);
@@ -24,8 +25,12 @@ class ChargerTransit {
                                             int chargerCell, double enduranceSeconds) const;
 
   private:
+    // The way over these nodes, or nothing when they join no way.
+    [[nodiscard]] std::vector<Waypoint> wayThrough(const SubCellNodes& nodes, int robot, MapPoint start,
+                                                   int startCell, MapPoint charger, int chargerCell) const;
+
     const CellGraph& graph_;
-    std::unique_ptr<SubCellNodes> nodes_; // every free sub-cell of the map, made once for every robot
+    mutable std::unique_ptr<SubCellNodes> everySubCell_; // made at the first robot that needs the whole map
 };
 
 } // namespace mcpp

@@ -259,6 +259,28 @@ class WavefrontBatteryTest : public QObject {
         QVERIFY(plan.paths[1].closed);
     }
 
+    // Water between the start and the charger, open only far to the south: the way goes round through the
+    // gap, outside the neighbourhood the search tries first.
+    void aChargerBehindWaterIsReachedTheLongWayRound() {
+        std::vector<std::string> rows = rowsOf(20, std::string(12, '.'));
+        for (int row = 0; row < 18; ++row)
+            rows[static_cast<std::size_t>(row)].replace(2, 2, "##");
+        PlanningProblem problem = test::drawnProblem(rows, {{0.5, 0.5}});
+        problem.chargers = {mapPointAt(problem, 6.5, 0.5)};
+        const Plan plan = planOnBattery(problem, 1e6, 0.0, 0.0);
+        const RobotSorties& robot = sortiesOf(plan, 0);
+        QCOMPARE(robot.sorties.size(), std::size_t(1));
+        // Down to row 18, across and back up: at least 17 + 17 + 6 one-metre steps before the charger.
+        const CoveragePath& path = plan.paths[0];
+        std::size_t reached = 0;
+        while (reached < path.waypoints.size() &&
+               !(MapPoint{path.waypoints[reached].x, path.waypoints[reached].y} == robot.charger))
+            ++reached;
+        QVERIFY(reached < path.waypoints.size());
+        QVERIFY2(path.waypoints[reached].cumulativeSeconds >= 40.0,
+                 qPrintable(QString::number(path.waypoints[reached].cumulativeSeconds)));
+    }
+
     // A charger the robot cannot use is refused, naming the robot and what is wrong.
     void chargersThatCannotBeUsedAreRefused_data() {
         QTest::addColumn<double>("east");
