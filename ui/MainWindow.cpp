@@ -293,6 +293,10 @@ void MainWindow::createDocks() {
     showBatteryColumnForBatteryPlanners();
     robotView_->setSelectionBehavior(QAbstractItemView::SelectRows);
     robotView_->setSelectionMode(QAbstractItemView::SingleSelection);
+    // Room for two robots at least (one looked like the only one), still fitting a 1000-pixel screen.
+    robotView_->setMinimumHeight(robotView_->horizontalHeader()->sizeHint().height() +
+                                 2 * robotView_->verticalHeader()->defaultSectionSize() +
+                                 2 * robotView_->frameWidth());
     robotsLayout->addWidget(robotView_, 1);
     auto* robotButtons = new QHBoxLayout;
     auto* addRobot = new QPushButton(tr("Add on map"), robotsWidget);
