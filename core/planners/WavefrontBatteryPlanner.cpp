@@ -184,6 +184,8 @@ PlannerDescription WavefrontBatteryPlanner::describe() const {
     description.summary = "wavefront coverage from far to near, in sorties from each robot's charger";
     // Cells beyond a battery's reach are left to no robot.
     description.promises.everyReachableCellCovered = false;
+    // A robot whose charger is away from its start crosses others' regions on its first flight there; the
+    // shared invariant suite plans without chargers, where every path keeps to its own region.
     description.parameters = {
         DecompositionOptions::blockedThresholdParameter(),
         AzimuthTrendAllocator::rebalanceIterationsParameter(),

@@ -82,6 +82,27 @@ CrossingScene crossingScene() {
     return scene;
 }
 
+// Two 100 m cells side by side, west at (1000, 4900): image x 10-190 and 210-390 at 400 x 200 pixels.
+Plan twoCellPlan() {
+    Plan plan;
+    GridFrame frame;
+    frame.originX = 1000.0;
+    frame.originY = 5000.0;
+    frame.bottomCellSize = 100.0;
+    frame.columns = 2;
+    frame.rows = 1;
+    Cell west;
+    west.minX = 1000.0;
+    west.minY = 4900.0;
+    west.size = 100.0;
+    west.speedMetresPerSecond = 1.0;
+    Cell east = west;
+    east.column = 1;
+    east.minX = 1100.0;
+    plan.cells = CellGraph(frame, {west, east}, NeighbourTopology({0, 1, 2}, {1, 0}));
+    return plan;
+}
+
 } // namespace
 
 class TestPlanRenderer : public QObject {
@@ -236,22 +257,7 @@ class TestPlanRenderer : public QObject {
     }
 
     void tintsRegionsAndHatchesUnreachableCells() {
-        Plan plan;
-        GridFrame frame;
-        frame.originX = 1000.0;
-        frame.originY = 5000.0;
-        frame.bottomCellSize = 100.0;
-        frame.columns = 2;
-        frame.rows = 1;
-        Cell owned;
-        owned.minX = 1000.0;
-        owned.minY = 4900.0;
-        owned.size = 100.0;
-        owned.speedMetresPerSecond = 1.0;
-        Cell lost = owned;
-        lost.column = 1;
-        lost.minX = 1100.0;
-        plan.cells = CellGraph(frame, {owned, lost}, NeighbourTopology({0, 1, 2}, {1, 0}));
+        Plan plan = twoCellPlan();
         plan.regions.robotOfCell = {1, -1};
         render::MapLayers layers;
         layers.quadTree = false;
@@ -272,22 +278,7 @@ class TestPlanRenderer : public QObject {
     // In a plan simulated over time, the cells a robot took over from another are hatched in its colour;
     // its own cells are only tinted.
     void hatchesTheCellsARobotTookOver() {
-        Plan plan;
-        GridFrame frame;
-        frame.originX = 1000.0;
-        frame.originY = 5000.0;
-        frame.bottomCellSize = 100.0;
-        frame.columns = 2;
-        frame.rows = 1;
-        Cell own;
-        own.minX = 1000.0;
-        own.minY = 4900.0;
-        own.size = 100.0;
-        own.speedMetresPerSecond = 1.0;
-        Cell takenOver = own;
-        takenOver.column = 1;
-        takenOver.minX = 1100.0;
-        plan.cells = CellGraph(frame, {own, takenOver}, NeighbourTopology({0, 1, 2}, {1, 0}));
+        Plan plan = twoCellPlan();
         plan.regions.robotOfCell = {0, 0};
         RobotTimeline robot;
         robot.cellsTakenOver = {1};

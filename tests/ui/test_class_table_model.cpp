@@ -1,3 +1,4 @@
+#include "GrassMission.hpp"
 #include "ui/ClassBulkEditDialog.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/MissionDocument.hpp"
@@ -16,17 +17,8 @@ namespace {
 
 // 10 x 10 pixels of 10 m: grass everywhere but a water column at x = 5 and one nodata pixel.
 std::shared_ptr<io::LoadedRaster> smallRaster() {
-    auto raster = std::make_shared<io::LoadedRaster>();
-    raster->path = "synthetic.tif";
+    auto raster = test::grassRaster();
     ClassGrid& grid = raster->grid;
-    grid.columns = 10;
-    grid.rows = 10;
-    grid.originX = 0.0;
-    grid.originY = 100.0;
-    grid.pixelWidth = 10.0;
-    grid.pixelHeight = 10.0;
-    grid.values.assign(100, 1);
-    grid.outside.assign(100, 0);
     for (int row = 0; row < 10; ++row)
         grid.values[grid.index(5, row)] = 2;
     grid.outside[grid.index(0, 0)] = 1;

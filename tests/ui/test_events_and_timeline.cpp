@@ -1,3 +1,4 @@
+#include "GrassMission.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "ui/EventTableModel.hpp"
 #include "ui/MissionDocument.hpp"
@@ -11,34 +12,6 @@
 
 using namespace mcpp;
 
-namespace {
-
-// 10 x 10 pixels of grass, two robots.
-std::shared_ptr<io::LoadedRaster> grassRaster() {
-    auto raster = std::make_shared<io::LoadedRaster>();
-    raster->path = "synthetic.tif";
-    ClassGrid& grid = raster->grid;
-    grid.columns = 10;
-    grid.rows = 10;
-    grid.originX = 0.0;
-    grid.originY = 100.0;
-    grid.pixelWidth = 10.0;
-    grid.pixelHeight = 10.0;
-    grid.values.assign(100, 1);
-    grid.outside.assign(100, 0);
-    raster->classPixelCounts = {{1, 100}};
-    return raster;
-}
-
-io::Mission twoRobotMission() {
-    io::Mission mission;
-    mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 2.0, 10.0, true}});
-    mission.robots = {io::RobotSpec{"east", {75.0, 55.0}, ""}, io::RobotSpec{"west", {25.0, 55.0}, ""}};
-    return mission;
-}
-
-} // namespace
-
 class TestEventsAndTimeline : public QObject {
     Q_OBJECT
 
@@ -46,7 +19,7 @@ class TestEventsAndTimeline : public QObject {
     void init() {
         document_ = std::make_unique<ui::MissionDocument>();
         undoStack_ = std::make_unique<QUndoStack>();
-        document_->reset(grassRaster(), twoRobotMission(), QString());
+        document_->reset(test::grassRaster(), test::twoRobotMission(), QString());
         events_ = std::make_unique<ui::EventTableModel>(document_.get(), undoStack_.get());
     }
 
