@@ -199,6 +199,23 @@ void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     }
 }
 
+std::vector<PlanRenderer::Outline> PlanRenderer::outlineRings(const OutlinePolygon& outline,
+                                                              const LabelGrid& grid) {
+    std::vector<PlanRenderer::Outline> rings;
+    const auto add = [&](const OutlineRing& ring) {
+        QPolygonF polygon;
+        polygon.reserve(static_cast<qsizetype>(ring.size()) + 1);
+        for (const GridVertex& vertex : ring)
+            polygon << QPointF(grid.x(vertex.column), grid.y(vertex.row));
+        polygon << polygon.front();
+        rings.push_back({polygon, polygon.boundingRect()});
+    };
+    add(outline.exterior);
+    for (const OutlineRing& hole : outline.holes)
+        add(hole);
+    return rings;
+}
+
 namespace {
 
 // Pixels of a grid per image pixel side: 1, or more on grids beyond 16 million cells.
@@ -250,17 +267,8 @@ void PlanRenderer::prepareRegions(const RegionOutlines* given) {
         auto& target = outline.label == unreachableLabel ? unreachableOutlines_ : regionBorders_;
         if (outline.label < 0 && outline.label != unreachableLabel)
             continue;
-        const auto add = [&](const OutlineRing& ring) {
-            QPolygonF polygon;
-            polygon.reserve(static_cast<qsizetype>(ring.size()) + 1);
-            for (const GridVertex& vertex : ring)
-                polygon << QPointF(labels.x(vertex.column), labels.y(vertex.row));
-            polygon << polygon.front();
-            target.push_back({polygon, polygon.boundingRect()});
-        };
-        add(outline.exterior);
-        for (const OutlineRing& hole : outline.holes)
-            add(hole);
+        const std::vector<Outline> rings = outlineRings(outline, labels);
+        target.insert(target.end(), rings.begin(), rings.end());
     }
 }
 
@@ -268,32 +276,12 @@ void PlanRenderer::prepareRegions(const RegionOutlines* given) {
 // them.
 void PlanRenderer::prepareTakenOver() {
     takenOverOutlines_.clear();
-    const TimelineLayer* timeline = plan_ == nullptr ? nullptr : timelineLayerOf(*plan_);
-    if (timeline == nullptr)
+    if (plan_ == nullptr)
         return;
-    std::vector<std::int32_t> labels(plan_->cells.size(), LabelGrid::noLabel);
-    bool any = false;
-    for (const RobotTimeline& robot : timeline->robots())
-        for (const int cell : robot.cellsTakenOver) {
-            labels[static_cast<std::size_t>(cell)] = robot.robot;
-            any = true;
-        }
-    if (!any)
-        return;
-    const LabelGrid grid = cellLabels(plan_->cells, labels, true);
-    for (const OutlinePolygon& outline : traceOutlines(grid)) {
-        const auto add = [&](const OutlineRing& ring) {
-            QPolygonF polygon;
-            polygon.reserve(static_cast<qsizetype>(ring.size()) + 1);
-            for (const GridVertex& vertex : ring)
-                polygon << QPointF(grid.x(vertex.column), grid.y(vertex.row));
-            polygon << polygon.front();
-            takenOverOutlines_.push_back({outline.label, {polygon, polygon.boundingRect()}});
-        };
-        add(outline.exterior);
-        for (const OutlineRing& hole : outline.holes)
-            add(hole);
-    }
+    const LabelGrid grid = takenOverLabels(*plan_);
+    for (const OutlinePolygon& outline : traceOutlines(grid))
+        for (const Outline& ring : outlineRings(outline, grid))
+            takenOverOutlines_.emplace_back(outline.label, ring);
 }
 
 void PlanRenderer::prepareDetection() {

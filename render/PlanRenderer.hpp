@@ -91,6 +91,9 @@ class PlanRenderer {
     void drawPyramid(QPainter& painter, const std::vector<GridImage>& pyramid,
                      const QTransform& worldToDevice, const QRectF& deviceArea) const;
     [[nodiscard]] static std::vector<GridImage> pyramidOf(QImage image, const QRectF& world);
+    // An outline's rings (exterior, then holes) as closed polygons in planning metres.
+    [[nodiscard]] static std::vector<Outline> outlineRings(const OutlinePolygon& outline,
+                                                           const LabelGrid& grid);
     void paintLandCover(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintRegions(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintRegionBorders(QPainter& painter, const QTransform& worldToDevice,

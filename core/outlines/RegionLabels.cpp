@@ -1,5 +1,6 @@
 #include "core/outlines/RegionLabels.hpp"
 
+#include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionOutlines.hpp"
 
@@ -72,6 +73,21 @@ LabelGrid regionLabels(const Plan& plan) {
     for (std::size_t id = 0; id < owner.size() && id < labels.size(); ++id)
         labels[id] = owner[id] >= 0 ? owner[id] : unreachableLabel;
     return cellLabels(plan.cells, labels, false);
+}
+
+LabelGrid takenOverLabels(const Plan& plan) {
+    const TimelineLayer* timeline = timelineLayerOf(plan);
+    if (timeline == nullptr)
+        return {};
+    std::vector<std::int32_t> labels(plan.cells.size(), LabelGrid::noLabel);
+    bool any = false;
+    for (const RobotTimeline& robot : timeline->robots())
+        for (const int cell : robot.cellsTakenOver)
+            if (robot.robot >= 0 && cell >= 0 && static_cast<std::size_t>(cell) < labels.size()) {
+                labels[static_cast<std::size_t>(cell)] = robot.robot;
+                any = true;
+            }
+    return any ? cellLabels(plan.cells, labels, true) : LabelGrid{};
 }
 
 RegionOutlines regionOutlines(const Plan& plan) {

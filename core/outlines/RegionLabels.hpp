@@ -21,4 +21,8 @@ inline constexpr std::int32_t unreachableLabel = -2;
 [[nodiscard]] LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& labelOfCell,
                                    bool cropped);
 
+// The cells each robot of a plan simulated over time took over from others, labelled by robot on a grid
+// cropped to them: what exports and the map outline. An empty grid when no robot took any over.
+[[nodiscard]] LabelGrid takenOverLabels(const Plan& plan);
+
 } // namespace mcpp

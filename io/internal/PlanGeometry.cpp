@@ -116,7 +116,6 @@ void addTakenOver(const Plan& plan, double metresPerUnit, PlanFeatures& features
     if (timeline == nullptr)
         return;
     features.simulatedOverTime = true;
-    std::vector<std::int32_t> labels(plan.cells.size(), LabelGrid::noLabel);
     std::vector<int> featureOfRobot(static_cast<std::size_t>(robotCount(plan)), -1);
     for (const RobotTimeline& robot : timeline->robots()) {
         if (robot.cellsTakenOver.empty() || robot.robot < 0 ||
@@ -124,20 +123,18 @@ void addTakenOver(const Plan& plan, double metresPerUnit, PlanFeatures& features
             continue;
         TakenOverFeature feature{robot.robot, std::make_unique<OGRMultiPolygon>(), 0.0,
                                  static_cast<int>(robot.cellsTakenOver.size())};
-        for (const int id : robot.cellsTakenOver) {
-            labels[static_cast<std::size_t>(id)] = robot.robot;
+        for (const int id : robot.cellsTakenOver)
             feature.areaSquareMetres += plan.cells.cell(id).freeAreaSquareMetres();
-        }
         featureOfRobot[static_cast<std::size_t>(robot.robot)] = static_cast<int>(features.takenOver.size());
         features.takenOver.push_back(std::move(feature));
     }
-    if (features.takenOver.empty())
-        return;
-    const LabelGrid grid = cellLabels(plan.cells, labels, true);
+    const LabelGrid grid = takenOverLabels(plan);
     for (const OutlinePolygon& outline : traceOutlines(grid)) {
         const int feature = featureOfRobot[static_cast<std::size_t>(outline.label)];
-        features.takenOver[static_cast<std::size_t>(feature)].geometry->toMultiPolygon()->addGeometryDirectly(
-            polygonOf(outline, grid, metresPerUnit).release());
+        if (feature >= 0)
+            features.takenOver[static_cast<std::size_t>(feature)]
+                .geometry->toMultiPolygon()
+                ->addGeometryDirectly(polygonOf(outline, grid, metresPerUnit).release());
     }
 }
 
