@@ -1,163 +1,243 @@
 #include "core/coverage/DynamicTreeWalk.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
-#include <cstdint>
-#include <unordered_map>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
 
 namespace mcpp {
 namespace {
 
-// Sides counter-clockwise from east (SubCellNodes::Direction); sub-cells by their counter-clockwise index
-// (SubCell). Circling counter-clockwise, a robot leaves a cell eastwards from its south-east sub-cell and
-// enters the south-west one of the cell beyond, and so on round.
-int opposite(int direction) {
-    return (direction + 2) % 4;
+int itemOf(SubCell subCell) {
+    return -1 - static_cast<int>(subCell);
 }
-// By these two numberings the sub-cell a robot leaves by is the index of the opposite side.
-int exitSubCell(int direction) {
-    return opposite(direction);
+SubCell subCellOfItem(int item) {
+    return static_cast<SubCell>(-1 - item);
+}
+
+// The sub-cell of a cell whose centre is nearest a point (inside the cell or not).
+SubCell nearestSubCell(const Cell& cell, const Waypoint& point) {
+    return cell.subCellAt(
+        {std::clamp(point.x, cell.minX, cell.maxX()), std::clamp(point.y, cell.minY, cell.maxY())});
 }
 
 } // namespace
 
-DynamicTreeWalk::DynamicTreeWalk(const CellGraph& graph, const SubCellNodes& nodes, int robot, MapPoint start,
-                                 int startCell, std::vector<char>& entered)
-    : graph_(graph), nodes_(nodes), robot_(robot), clock_(graph) {
+DynamicTreeWalk::DynamicTreeWalk(const CellGraph& graph, int robot, MapPoint start, int startCell,
+                                 std::vector<char>& entered)
+    : graph_(graph), robot_(robot), clock_(graph) {
     const Cell& cell = graph.cell(startCell);
     clock_.append({start.x, start.y, startCell, cell.classValue, cell.speedMetresPerSecond, 0.0});
     nominalSecondsAt_.push_back(0.0);
-    const int first = nodes.startNode(robot, startCell, start);
-    stepTo(first);
-    const int subCell = subCellIndexOf(first);
-    enter(startCell, first, (subCell + 1) % 4, true, entered);
+    enter(startCell, -1, entered);
 }
 
-int DynamicTreeWalk::subCellIndexOf(int node) const {
-    const Waypoint& point = nodes_.waypoint(node);
-    return static_cast<int>(graph_.cell(point.cell).subCellAt({point.x, point.y}));
+// The cell's round, counter-clockwise from its north-west sub-cell: each corner sub-cell, then the
+// neighbours along the side after it in the order the walk passes them (as TreeCircumnavigation orders a
+// tree's).
+void DynamicTreeWalk::appendRound(int cell) {
+    const Cell& self = graph_.cell(cell);
+    const double tolerance = 1e-9 * self.size;
+    std::array<std::vector<std::pair<double, int>>, 4> sides; // west, south, east, north
+    for (const int id : graph_.neighbours(cell)) {
+        const Cell& other = graph_.cell(id);
+        if (other.maxX() <= self.minX + tolerance)
+            sides[0].emplace_back(-other.centreY(), id);
+        else if (other.maxY() <= self.minY + tolerance)
+            sides[1].emplace_back(other.centreX(), id);
+        else if (other.minX >= self.maxX() - tolerance)
+            sides[2].emplace_back(other.centreY(), id);
+        else
+            sides[3].emplace_back(-other.centreX(), id);
+    }
+    for (std::size_t side = 0; side < 4; ++side) {
+        arena_.push_back(itemOf(subCellsCounterClockwise[side]));
+        std::sort(sides[side].begin(), sides[side].end());
+        for (const auto& entry : sides[side])
+            arena_.push_back(entry.second);
+    }
 }
 
-void DynamicTreeWalk::stepTo(int node) {
-    const Waypoint& point = nodes_.waypoint(node);
+// Opens a cell: its round begins just after the cell it came from, or, for a tree's first cell, at the
+// sub-cell nearest the robot.
+void DynamicTreeWalk::enter(int cell, int parent, std::vector<char>& entered) {
+    entered[static_cast<std::size_t>(cell)] = 1;
+    ++cellsEntered_;
+    committedSeconds_ += graph_.cell(cell).coverSeconds();
+    const std::size_t start = arena_.size();
+    appendRound(cell);
+    const auto begin = arena_.begin() + static_cast<std::ptrdiff_t>(start);
+    auto first = begin;
+    if (parent >= 0) {
+        first = std::find(begin, arena_.end(), parent);
+    } else {
+        const Waypoint& at = clock_.waypoints().back();
+        first = std::find(begin, arena_.end(), itemOf(nearestSubCell(graph_.cell(cell), at)));
+    }
+    std::rotate(begin, first, arena_.end());
+    frameOfCell_[cell] = frames_.size();
+    frames_.push_back({cell, start, arena_.size(), parent >= 0 ? start + 1 : start, 0});
+    passedThrough_.push_back(cell);
+}
+
+void DynamicTreeWalk::stepTo(int cell, SubCell subCell) {
+    const Cell& target = graph_.cell(cell);
+    const MapPoint centre = target.subCellCentre(subCell);
     const Waypoint& last = clock_.waypoints().back();
-    if (point.x != last.x || point.y != last.y) {
-        clock_.append(point);
+    if (centre.x != last.x || centre.y != last.y) {
+        clock_.append({centre.x, centre.y, cell, target.classValue, target.speedMetresPerSecond, 0.0});
         nominalSecondsAt_.push_back(clock_.elapsed());
     }
-    node_ = node;
-    if (!frames_.empty() && frames_.back().cell == point.cell)
-        markPassed(frames_.back(), subCellIndexOf(node));
+    if (!frames_.empty() && frames_.back().cell == cell)
+        markPassed(frames_.back(), subCell);
+}
+
+// Passes a sub-cell of the open cell. When the last point lies in a cell that does not touch it (the tree
+// went down or up through a cell without passing a sub-cell of it), the way goes through the cells between,
+// as TreeCircumnavigation bridges them.
+void DynamicTreeWalk::pass(int cell, SubCell subCell) {
+    int from = clock_.waypoints().back().cell;
+    if (from != cell && !graph_.areNeighbours(from, cell)) {
+        std::vector<int> between;
+        for (const int through : passedThrough_)
+            if (through != from && through != cell)
+                between.push_back(through);
+        for (std::size_t i = 0; i < between.size(); ++i) {
+            const int next = i + 1 < between.size() ? between[i + 1] : cell;
+            if (from == next || graph_.areNeighbours(from, next))
+                continue;
+            stepTo(between[i], nearestSubCell(graph_.cell(between[i]), clock_.waypoints().back()));
+            from = between[i];
+        }
+    }
+    passedThrough_.clear();
+    stepTo(cell, subCell);
 }
 
 // Counts a sub-cell of an open cell as passed: the work committed to shrinks by its share of the cell.
-void DynamicTreeWalk::markPassed(Frame& frame, int subCellIndex) {
-    const auto bit = static_cast<std::uint8_t>(1U << static_cast<unsigned>(subCellIndex));
+void DynamicTreeWalk::markPassed(Frame& frame, SubCell subCell) {
+    const auto bit = static_cast<std::uint8_t>(1U << static_cast<unsigned>(subCell));
     if ((frame.passed & bit) != 0)
         return;
     frame.passed |= bit;
-    committedSeconds_ -= graph_.cell(frame.cell).coverSeconds() / 4.0;
+    committedSeconds_ = std::max(0.0, committedSeconds_ - graph_.cell(frame.cell).coverSeconds() / 4.0);
 }
 
-void DynamicTreeWalk::circleTo(int subCellIndex) {
-    const int cell = nodes_.waypoint(node_).cell;
-    for (int index = subCellIndexOf(node_); index != subCellIndex;) {
-        index = (index + 1) % 4;
-        stepTo(nodes_.at(cell, static_cast<SubCell>(index)));
-    }
-}
-
-void DynamicTreeWalk::enter(int cell, int node, int parentDirection, bool root, std::vector<char>& entered) {
-    entered[static_cast<std::size_t>(cell)] = 1;
-    ++cellsEntered_;
-    if (root)
-        treeStartSubCell_ = subCellIndexOf(node);
-    frames_.push_back({cell, parentDirection, 0, root, 0, 0});
-    committedSeconds_ += graph_.cell(cell).coverSeconds();
-    markPassed(frames_.back(), subCellIndexOf(node));
-}
-
-// The node a robot steps onto leaving `cell` by `direction` into a cell of its region nobody has entered,
-// or none.
-int DynamicTreeWalk::openSide(int cell, int direction, const std::vector<int>& owner,
-                              const std::vector<char>& entered) const {
-    const int exit = nodes_.at(cell, static_cast<SubCell>(exitSubCell(direction)));
-    const int beyond = exit == SubCellNodes::none ? SubCellNodes::none : nodes_.neighbour(exit, direction);
-    if (beyond == SubCellNodes::none)
-        return SubCellNodes::none;
-    const auto next = static_cast<std::size_t>(nodes_.waypoint(beyond).cell);
-    return owner[next] == robot_ && entered[next] == 0 ? beyond : SubCellNodes::none;
+bool DynamicTreeWalk::mayEnter(int from, int cell, const std::vector<int>& owner,
+                               const std::vector<char>& entered) const {
+    if (plannedParent_ == nullptr)
+        return true;
+    const int planned = (*plannedParent_)[static_cast<std::size_t>(cell)];
+    if (planned < 0 || planned == from || owner[static_cast<std::size_t>(planned)] != robot_)
+        return true;
+    const char mark = entered[static_cast<std::size_t>(planned)];
+    if (mark != 1)
+        return mark == 2; // not yet entered: it will come to the cell; done: it went by without it
+    const auto open = frameOfCell_.find(planned);
+    if (open == frameOfCell_.end())
+        return true;
+    // Open, so an ancestor of `from`: it comes to the cell later unless its round has passed it.
+    const Frame& frame = frames_[open->second];
+    const auto begin = arena_.begin() + static_cast<std::ptrdiff_t>(frame.start);
+    const auto end = arena_.begin() + static_cast<std::ptrdiff_t>(frame.end);
+    const auto at = std::find(begin, end, cell);
+    return at == end || static_cast<std::size_t>(at - arena_.begin()) < frame.next;
 }
 
 bool DynamicTreeWalk::advance(const std::vector<int>& owner, std::vector<char>& entered) {
     if (frames_.empty())
         return startTree(owner, entered);
-    Frame& frame = frames_.back();
-    const int sides = frame.root ? 4 : 3;
-    while (frame.scanned < sides) {
-        const int direction = (frame.parentDirection + 1 + frame.scanned) % 4;
-        ++frame.scanned;
-        const int beyond = openSide(frame.cell, direction, owner, entered);
-        if (beyond == SubCellNodes::none)
+    while (frames_.back().next < frames_.back().end) {
+        Frame& frame = frames_.back();
+        const int item = arena_[frame.next++];
+        if (item < 0) {
+            pass(frame.cell, subCellOfItem(item));
             continue;
-        const int next = nodes_.waypoint(beyond).cell;
-        ++frame.children;
-        circleTo(exitSubCell(direction));
-        stepTo(beyond);
-        enter(next, beyond, opposite(direction), false, entered);
+        }
+        const auto next = static_cast<std::size_t>(item);
+        if (owner[next] != robot_ || entered[next] != 0 || !mayEnter(frame.cell, item, owner, entered))
+            continue;
+        enter(item, frame.cell, entered);
         return true;
     }
-    const Frame done = frame;
-    frames_.pop_back();
-    // What is left of it is passed on the way out below; the cell leaves the open ones.
-    const int unpassed = 4 - std::popcount(done.passed);
-    committedSeconds_ =
-        std::max(0.0, committedSeconds_ - unpassed * graph_.cell(done.cell).coverSeconds() / 4.0);
-    lastClosedCell_ = done.cell;
-    if (!done.root) {
-        circleTo(exitSubCell(done.parentDirection));
-        lastClosedWaypoint_ = clock_.lastIndex();
-        stepTo(nodes_.neighbour(node_, done.parentDirection));
-        return true;
-    }
-    // The tree's first cell: round to the sub-cell before the one it began in, unless the last return
-    // already closed the circle.
-    const int last = (treeStartSubCell_ + 3) % 4;
-    if (!(done.children > 0 && subCellIndexOf(node_) == treeStartSubCell_))
-        circleTo(last);
-    lastClosedWaypoint_ = clock_.lastIndex();
+    closeFrame(entered);
     return true;
 }
 
-// The shortest way over sub-cells to the nearest cell of its region nobody entered; false when none is left.
-bool DynamicTreeWalk::startTree(const std::vector<int>& owner, std::vector<char>& entered) {
-    // Most such drives are short: a map of the nodes reached costs far less than an array the map's size.
-    std::unordered_map<int, int> previous;
-    previous.reserve(4096);
-    previous.emplace(node_, node_);
-    std::vector<int> queue{node_};
-    int found = SubCellNodes::none;
-    for (std::size_t head = 0; head < queue.size() && found == SubCellNodes::none; ++head) {
-        const int at = queue[head];
-        for (int direction = 0; direction < 4 && found == SubCellNodes::none; ++direction) {
-            const int next = nodes_.neighbour(at, direction);
-            if (next == SubCellNodes::none || !previous.emplace(next, at).second)
+// Finishes the open cell; the walk carries on round the cell it came from.
+void DynamicTreeWalk::closeFrame(std::vector<char>& entered) {
+    const Frame done = frames_.back();
+    // Whatever of it was not passed (only bridged past) leaves the open work now.
+    const int unpassed = 4 - std::popcount(static_cast<unsigned>(done.passed));
+    committedSeconds_ =
+        std::max(0.0, committedSeconds_ - unpassed * graph_.cell(done.cell).coverSeconds() / 4.0);
+    lastClosedCell_ = done.cell;
+    lastClosedWaypoint_ = clock_.lastIndex();
+    entered[static_cast<std::size_t>(done.cell)] = 2;
+    frameOfCell_.erase(done.cell);
+    arena_.resize(done.start);
+    frames_.pop_back();
+    if (!frames_.empty())
+        passedThrough_.push_back(frames_.back().cell);
+}
+
+// The cells from the robot's to the nearest cell of its region nobody entered, by the distance between
+// cell centres; empty when none is left. Most such drives are short: a map of the cells reached costs far
+// less than an array the map's size.
+std::vector<int> DynamicTreeWalk::wayToNearestFreeCell(const std::vector<int>& owner,
+                                                       const std::vector<char>& entered) const {
+    struct Reached {
+        double distance = 0.0;
+        int previous = -1;
+    };
+    const int origin = clock_.waypoints().back().cell;
+    std::unordered_map<int, Reached> reached;
+    reached.reserve(4096);
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+    reached[origin] = {0.0, origin};
+    queue.emplace(0.0, origin);
+    while (!queue.empty()) {
+        const auto [distance, at] = queue.top();
+        queue.pop();
+        if (distance > reached[at].distance)
+            continue;
+        const auto index = static_cast<std::size_t>(at);
+        if (owner[index] == robot_ && entered[index] == 0) {
+            std::vector<int> way;
+            for (int cell = at; cell != origin; cell = reached[cell].previous)
+                way.push_back(cell);
+            std::reverse(way.begin(), way.end());
+            return way;
+        }
+        const Cell& here = graph_.cell(at);
+        for (const int next : graph_.neighbours(at)) {
+            const Cell& there = graph_.cell(next);
+            const double through =
+                distance + std::hypot(there.centreX() - here.centreX(), there.centreY() - here.centreY());
+            const auto [slot, isNew] = reached.try_emplace(next, Reached{through, at});
+            if (!isNew && through >= slot->second.distance)
                 continue;
-            queue.push_back(next);
-            const auto cell = static_cast<std::size_t>(nodes_.waypoint(next).cell);
-            if (owner[cell] == robot_ && entered[cell] == 0)
-                found = next;
+            slot->second = {through, at};
+            queue.emplace(through, next);
         }
     }
-    if (found == SubCellNodes::none)
+    return {};
+}
+
+// Drives to the nearest cell of its region nobody entered and begins a tree there; false when none is left.
+bool DynamicTreeWalk::startTree(const std::vector<int>& owner, std::vector<char>& entered) {
+    const std::vector<int> way = wayToNearestFreeCell(owner, entered);
+    if (way.empty())
         return false;
-    std::vector<int> way;
-    for (int at = found; at != node_; at = previous.at(at))
-        way.push_back(at);
-    for (auto it = way.rbegin(); it != way.rend(); ++it)
-        stepTo(*it);
-    const int subCell = subCellIndexOf(found);
-    enter(nodes_.waypoint(found).cell, found, (subCell + 1) % 4, true, entered);
+    passedThrough_.clear();
+    for (const int cell : way)
+        stepTo(cell, nearestSubCell(graph_.cell(cell), clock_.waypoints().back()));
+    enter(way.back(), -1, entered);
     return true;
 }
 
@@ -168,6 +248,9 @@ std::vector<int> DynamicTreeWalk::abandonUnfinishedCells(std::size_t reachedWayp
     if (lastClosedCell_ >= 0 && lastClosedWaypoint_ >= reachedWaypoints)
         cells.push_back(lastClosedCell_);
     frames_.clear();
+    arena_.clear();
+    frameOfCell_.clear();
+    passedThrough_.clear();
     committedSeconds_ = 0.0;
     return cells;
 }

@@ -3,6 +3,7 @@
 #include "core/allocation/PieceSettlement.hpp"
 #include "core/allocation/RegionCosts.hpp"
 #include "core/allocation/RegionExpansion.hpp"
+#include "core/coverage/SpanningTreeCoverage.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,12 +14,6 @@
 
 namespace mcpp {
 namespace {
-
-std::vector<int> everyCell(const CellGraph& graph) {
-    std::vector<int> cells(graph.size());
-    std::iota(cells.begin(), cells.end(), 0);
-    return cells;
-}
 
 std::vector<double> eventTimes(const std::vector<SpeedEvent>& events) {
     std::vector<double> times;
@@ -31,23 +26,26 @@ std::vector<double> eventTimes(const std::vector<SpeedEvent>& events) {
 } // namespace
 
 ReallocationSimulation::ReallocationSimulation(const CellGraph& graph, std::vector<SpeedEvent> events)
-    : graph_(graph), events_(std::move(events)), nodes_(graph, everyCell(graph)), exchange_(graph) {}
+    : graph_(graph), events_(std::move(events)), exchange_(graph) {}
 
-ReallocationSimulation::Result ReallocationSimulation::run(const std::vector<int>& startCells,
+ReallocationSimulation::Result ReallocationSimulation::run(const RegionAllocation& division,
                                                            const std::vector<MapPoint>& starts,
                                                            const ProgressReporter& progress) {
-    owner_ = firstDivision(startCells);
+    const std::vector<int>& startCells = division.startCell;
+    owner_ = division.robotOfCell;
     firstRegions_ = owner_;
     entered_.assign(graph_.size(), 0);
     robots_.clear();
     robots_.resize(startCells.size());
     for (std::size_t r = 0; r < robots_.size(); ++r) {
         robots_[r].schedule = SpeedSchedule(events_, static_cast<int>(r));
-        robots_[r].walk = std::make_unique<DynamicTreeWalk>(graph_, nodes_, static_cast<int>(r), starts[r],
+        robots_[r].walk = std::make_unique<DynamicTreeWalk>(graph_, static_cast<int>(r), starts[r],
                                                             startCells[r], entered_);
         timeNewWaypoints(static_cast<int>(r));
     }
-    exchange(0.0, static_cast<int>(graph_.size()));
+    planTrees(startCells, starts);
+    for (Robot& robot : robots_)
+        robot.walk->followPlannedTrees(&plannedParent_);
     countFreeCells();
     for (std::size_t r = 0; r < robots_.size(); ++r)
         if (robots_[r].state == State::Driving)
@@ -60,7 +58,8 @@ ReallocationSimulation::Result ReallocationSimulation::run(const std::vector<int
 void ReallocationSimulation::playEvents(const ProgressReporter& progress) {
     const std::vector<double> changes = eventTimes(events_);
     std::size_t nextChange = 0;
-    // Between events, a rebalance every so many cell moves keeps slow drifts in check at a bounded cost.
+    // After the first event, a rebalance every so many cell moves keeps slow drifts in check at a bounded
+    // cost. Before it the walks drive the planned trees: moving cells then would only break them up.
     const int rhythm = std::max(8 * static_cast<int>(robots_.size()), static_cast<int>(graph_.size()) / 64);
     std::size_t movesInAll = 0;
     const std::size_t moveLimit = 64 * graph_.size() + 1024; // never spin, whatever the exchange does
@@ -70,7 +69,7 @@ void ReallocationSimulation::playEvents(const ProgressReporter& progress) {
         Robot& robot = robots_[static_cast<std::size_t>(r)];
         if (robot.state != State::Driving)
             continue;
-        bool due = movesSinceExchange_ >= rhythm;
+        bool due = nextChange > 0 && movesSinceExchange_ >= rhythm;
         for (; nextChange < changes.size() && changes[nextChange] <= now; ++nextChange)
             due = true;
         if (robot.schedule.stoppedFrom(robot.clock)) {
@@ -123,13 +122,36 @@ void ReallocationSimulation::rebalance(double now) {
 }
 
 // The regions grown from the starts in turns, then evened out before anyone moves (seed 003, figure 6 b).
-std::vector<int> ReallocationSimulation::firstDivision(const std::vector<int>& startCells) const {
+RegionAllocation ReallocationSimulation::firstDivision(const CellGraph& graph,
+                                                       const std::vector<int>& startCells) {
     RegionAllocation regions;
-    regions.robotOfCell = expandRegions(graph_, startCells);
+    regions.robotOfCell = expandRegions(graph, startCells);
     regions.startCell = startCells;
-    regions.costSeconds = regionCosts(graph_, regions.robotOfCell, startCells.size());
-    settleRegionsWithPieces(graph_, regions);
-    return regions.robotOfCell;
+    regions.costSeconds = regionCosts(graph, regions.robotOfCell, startCells.size());
+    settleRegionsWithPieces(graph, regions);
+    return regions;
+}
+
+// Each region's MCPP-MLCT tree (the candidate whose walk turns least), as the walks' plan: without events
+// they drive it as the static plan would.
+void ReallocationSimulation::planTrees(const std::vector<int>& startCells,
+                                       const std::vector<MapPoint>& starts) {
+    plannedParent_.assign(graph_.size(), -1);
+    std::vector<std::vector<int>> cells(startCells.size());
+    for (std::size_t cell = 0; cell < owner_.size(); ++cell)
+        if (owner_[cell] >= 0)
+            cells[static_cast<std::size_t>(owner_[cell])].push_back(static_cast<int>(cell));
+    std::vector<int> scratch(graph_.size(), -1);
+    const SpanningTreeCoverage coverage(false);
+    for (std::size_t r = 0; r < startCells.size(); ++r) {
+        if (cells[r].empty() || owner_[static_cast<std::size_t>(startCells[r])] != static_cast<int>(r))
+            continue;
+        const SpanningTree tree =
+            coverage.bestTree(graph_, cells[r], startCells[r], starts[r], scratch).first;
+        for (int node = 0; node < static_cast<int>(tree.size()); ++node)
+            if (const int parent = tree.parent(node); parent >= 0)
+                plannedParent_[static_cast<std::size_t>(tree.cellOf(node))] = tree.cellOf(parent);
+    }
 }
 
 int ReallocationSimulation::exchange(double now, int maxMoves) {

@@ -5,6 +5,7 @@
 #include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
 #include "core/model/ProgressReporter.hpp"
+#include "core/model/RegionAllocation.hpp"
 #include "core/model/RobotTimeline.hpp"
 #include "core/model/SpeedEvent.hpp"
 #include "core/model/SpeedSchedule.hpp"
@@ -17,10 +18,11 @@
 
 namespace mcpp {
 
-// MDSTC as the mission unfolds (seed 003): regions grown from the starts, each robot on its DSTC walk, and
-// the exchange moving free border cells toward whoever will finish first, at a steady rhythm and whenever
-// an event changes a robot's speed, a robot stops or one runs out of work. Robots act in the order of their
-// clocks, one cell move at a time; a stopped robot's unfinished cells go back to the pool for the others.
+// MDSTC as the mission unfolds (seed 003): regions grown from the starts, each robot on its DSTC walk along
+// its region's planned tree, and the exchange moving free border cells toward whoever will finish first
+// whenever an event changes a robot's speed, a robot stops or one runs out of work, and at a steady rhythm
+// once an event has come. Robots act in the order of their clocks, one cell move at a time; a stopped
+// robot's unfinished cells go back to the pool for the others.
 class ReallocationSimulation {
   public:
     struct Result {
@@ -34,8 +36,13 @@ class ReallocationSimulation {
 
     ReallocationSimulation(const CellGraph& graph, std::vector<SpeedEvent> events);
 
-    [[nodiscard]] Result run(const std::vector<int>& startCells, const std::vector<MapPoint>& starts,
+    // `division`: the regions the robots set out with (firstDivision, balanced), each holding its start cell.
+    [[nodiscard]] Result run(const RegionAllocation& division, const std::vector<MapPoint>& starts,
                              const ProgressReporter& progress);
+
+    // The regions grown from the starts in turns, then evened out before anyone moves (seed 003, figure 6 b).
+    [[nodiscard]] static RegionAllocation firstDivision(const CellGraph& graph,
+                                                        const std::vector<int>& startCells);
 
   private:
     enum class State { Driving, Idle, Stopped };
@@ -48,7 +55,6 @@ class ReallocationSimulation {
         int freeCells = 0; // cells of its region nobody has entered, as of the last count
     };
 
-    [[nodiscard]] std::vector<int> firstDivision(const std::vector<int>& startCells) const;
     void playEvents(const ProgressReporter& progress);
     void rebalance(double now);
     void reportProgress(const ProgressReporter& progress) const;
@@ -57,16 +63,17 @@ class ReallocationSimulation {
     [[nodiscard]] bool act(int robot);
     void stop(int robot, std::size_t reachedWaypoints);
     void countFreeCells();
+    void planTrees(const std::vector<int>& startCells, const std::vector<MapPoint>& starts);
     void timeNewWaypoints(int robot);
     [[nodiscard]] Result finish();
 
     const CellGraph& graph_;
     std::vector<SpeedEvent> events_;
-    SubCellNodes nodes_;
     RemainingWorkExchange exchange_;
     std::vector<int> owner_;
     std::vector<char> entered_;
     std::vector<int> firstRegions_;
+    std::vector<int> plannedParent_; // by cell: where the walks' planned trees enter it from, -1 for none
     std::vector<Robot> robots_;
     using Turn = std::pair<double, int>; // (clock, robot): the robot that is furthest behind acts next
     std::priority_queue<Turn, std::vector<Turn>, std::greater<>> turns_;

@@ -24,9 +24,10 @@ ParameterSpec SpanningTreeCoverage::closedTourParameter() {
                             "Closed tours end where they start; open paths stop at the last cell");
 }
 
-CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std::vector<int>& cells,
-                                              int startCell, int robot, MapPoint start,
-                                              std::vector<int>& scratchIndex) const {
+std::pair<SpanningTree, PathShape> SpanningTreeCoverage::bestTree(const CellGraph& graph,
+                                                                  const std::vector<int>& cells,
+                                                                  int startCell, MapPoint start,
+                                                                  std::vector<int>& scratchIndex) const {
     const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
     // Candidate trees are judged by the shape of their walk; only the best one's path is stored.
@@ -44,8 +45,16 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
             haveBest = true;
         }
     }
+    return {std::move(best), bestShape};
+}
+
+CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std::vector<int>& cells,
+                                              int startCell, int robot, MapPoint start,
+                                              std::vector<int>& scratchIndex) const {
+    const auto [tree, shape] = bestTree(graph, cells, startCell, start, scratchIndex);
+    TreeCircumnavigation walker(graph);
     CoveragePath path =
-        pathFromWalk(robot, start, walker.walk(best, start, closedTour_, bestShape.points()), closedTour_);
+        pathFromWalk(robot, start, walker.walk(tree, start, closedTour_, shape.points()), closedTour_);
     measurePath(path, graph);
     return path;
 }

@@ -1,7 +1,11 @@
 #pragma once
 
 #include "core/coverage/CoveragePathPlanner.hpp"
+#include "core/coverage/PathShape.hpp"
+#include "core/coverage/SpanningTree.hpp"
 #include "core/parameters/ParameterSpec.hpp"
+
+#include <utility>
 
 namespace mcpp {
 
@@ -24,6 +28,12 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
     [[nodiscard]] CoveragePath regionPath(const CellGraph& graph, const std::vector<int>& cells,
                                           int startCell, int robot, MapPoint start,
                                           std::vector<int>& scratchIndex) const;
+
+    // The candidate tree whose walk turns least (then is shortest), with that walk's shape.
+    [[nodiscard]] std::pair<SpanningTree, PathShape> bestTree(const CellGraph& graph,
+                                                              const std::vector<int>& cells, int startCell,
+                                                              MapPoint start,
+                                                              std::vector<int>& scratchIndex) const;
 
   private:
     bool closedTour_;

@@ -1,8 +1,10 @@
 #include "core/planners/MdstcPlanner.hpp"
 
 #include "core/allocation/RegionCosts.hpp"
+#include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/ReallocationSimulation.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
+#include "core/coverage/TurnCalibration.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/SpeedSchedule.hpp"
 #include "core/model/TimelineLayer.hpp"
@@ -10,6 +12,7 @@
 #include "core/planners/GridStage.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlanningRun.hpp"
+#include "core/planners/QuadTreeStage.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -18,6 +21,7 @@ namespace mcpp {
 namespace {
 
 constexpr const char* compareKey = "compare_static";
+constexpr const char* quadTreeKey = "quadtree_cells";
 
 // The static plan's parameters: MCPP-MLCT's defaults, with this run's turn model and start snapping, and
 // open paths like MDSTC's (a return to the start would make the static plan look slower than it is).
@@ -26,7 +30,8 @@ ParameterValues staticParameters(const ParameterValues& own) {
     given.set(SpanningTreeCoverage::closedTourParameter().key, false);
     for (const ParameterSpec& shared :
          {TurnTimeModel::turnSecondsParameter(), TurnTimeModel::accelerationParameter(),
-          Planner::snapStartsParameter()})
+          Planner::snapStartsParameter(), DecompositionOptions::purityToleranceParameter(),
+          DecompositionOptions::blockedThresholdParameter()})
         if (const ParameterValue* value = own.find(shared.key))
             given.set(shared.key, *value);
     return given;
@@ -60,6 +65,22 @@ void reportLeftUncovered(PlanningRun& run, const std::vector<int>& uncovered, bo
                              : " stays uncovered: every robot that could reach it stopped first"));
 }
 
+// The regions the robots set out with: grown from the starts in turns (seed 003), then balanced on the
+// paths the walks will follow (MCPP-MLCT trees), as MCPP-MLCT balances its own. The trees turn far less than
+// the cost's default rate: the rate measured on a first division prices the cells before the final one.
+RegionAllocation firstDivision(PlanningRun& run, CellGraph& cells, const std::vector<int>& startCells) {
+    const SpanningTreeCoverage coverage(false);
+    RegionAllocation division = ReallocationSimulation::firstDivision(cells, startCells);
+    std::vector<CoveragePath> paths = coverage.plan(cells, division, run.starts(), run.progress());
+    if (calibrateTurnRates(cells, division, paths)) {
+        division = ReallocationSimulation::firstDivision(cells, startCells);
+        paths = coverage.plan(cells, division, run.starts(), run.progress());
+    }
+    const PathTimeBalancing balancing(coverage, std::min<std::size_t>(250'000 + 2 * cells.size(), 1'000'000));
+    balancing.balance(cells, division, paths, run.starts(), run.progress());
+    return division;
+}
+
 } // namespace
 
 PlannerDescription MdstcPlanner::describe() const {
@@ -73,7 +94,12 @@ PlannerDescription MdstcPlanner::describe() const {
     description.promises.regionsConnected = false;
     description.promises.pathsCoverOwnRegion = false;
     description.parameters = {
-        DecompositionOptions::blockedThresholdParameter(),
+        booleanParameter(
+            quadTreeKey, "Cells sized by field of view", true,
+            "Drive on MCPP-MLCT's quadtree, whose cells grow with each land cover's field of view, "
+            "as the static plan does; off: on the uniform grid of 2 x the smallest field of view, "
+            "as the seed does (slower wherever fields of view differ)"),
+        DecompositionOptions::purityToleranceParameter(), DecompositionOptions::blockedThresholdParameter(),
         booleanParameter(compareKey, "Compare with a static plan", true,
                          "Also plan MCPP-MLCT and run it through the same events without re-allocation, "
                          "so the report shows what re-allocation saved (takes about as long again)")};
@@ -83,11 +109,14 @@ PlannerDescription MdstcPlanner::describe() const {
 void MdstcPlanner::run(PlanningRun& run) const {
     Plan& plan = run.plan();
     const PlanningProblem& problem = run.problem();
-    plan.cells = gridStage(run, GridCellRule::WholeCell);
+    plan.cells =
+        run.parameters().boolean(quadTreeKey) ? quadTreeStage(run) : gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
+    const RegionAllocation division =
+        run.stage("first division", [&] { return firstDivision(run, plan.cells, startCells); });
     ReallocationSimulation simulation(plan.cells, problem.events);
     ReallocationSimulation::Result result =
-        run.stage("simulation", [&] { return simulation.run(startCells, run.starts(), run.progress()); });
+        run.stage("simulation", [&] { return simulation.run(division, run.starts(), run.progress()); });
     plan.regions = regionsOf(plan.cells, result.finalRegions, startCells);
     plan.paths = std::move(result.paths);
     reportLeftUncovered(run, result.uncoveredCells, result.gaveUp);

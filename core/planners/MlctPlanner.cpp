@@ -6,10 +6,9 @@
 #include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/TurnCalibration.hpp"
-#include "core/decomposition/NeighbourTopologyBuilder.hpp"
-#include "core/decomposition/QuadTreeBuilder.hpp"
-#include "core/decomposition/QuadTreeDecomposition.hpp"
+#include "core/decomposition/DecompositionOptions.hpp"
 #include "core/planners/PlanningRun.hpp"
+#include "core/planners/QuadTreeStage.hpp"
 
 #include <algorithm>
 
@@ -41,24 +40,10 @@ PlannerDescription MlctPlanner::describe() const {
 }
 
 void MlctPlanner::run(PlanningRun& run) const {
-    const PlanningProblem& problem = run.problem();
     const ParameterValues& parameters = run.parameters();
     const ProgressReporter& progress = run.progress();
     Plan& plan = run.plan();
-    // The quadtree holds every node of the hierarchy: freed once the cell graph is built, it leaves room for
-    // the paths on large maps.
-    plan.cells = [&] {
-        const QuadTree tree = run.stage("quadtree", [&] {
-            return QuadTreeBuilder{}.build(problem.grid, problem.classes,
-                                           DecompositionOptions::from(parameters), progress);
-        });
-        return run.stage("topology", [&] {
-            progress.report("topology", 0.0);
-            CellGraph cells = cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
-            cells.applyTurnTime(TurnTimeModel::from(parameters));
-            return cells;
-        });
-    }();
+    plan.cells = quadTreeStage(run);
     const std::vector<int> startCells = run.locateStarts();
     const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
     const BorderStraightening straightening(plan.cells, parameters.real("fewer_turns_slack") / 100.0);

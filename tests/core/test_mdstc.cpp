@@ -122,6 +122,40 @@ class MdstcTest : public QObject {
         QVERIFY2(ratio <= 1.03, qPrintable(QString::number(ratio)));
     }
 
+    // On a map of three fields of view (5, 10 and 20 m) MDSTC drives the quadtree's cells of several sizes,
+    // as the static plan does; on the uniform grid of the smallest it would cover the open land four times
+    // over.
+    void onCellsOfSeveralSizesItMatchesTheStaticPlan_data() {
+        QTest::addColumn<int>("size");
+        QTest::addColumn<int>("robots");
+        QTest::newRow("128 x 128, 2 robots") << 128 << 2;
+        QTest::newRow("128 x 128, 8 robots") << 128 << 8;
+        QTest::newRow("256 x 256, 16 robots") << 256 << 16;
+    }
+    void onCellsOfSeveralSizesItMatchesTheStaticPlan() {
+        QFETCH(int, size);
+        QFETCH(int, robots);
+        const PlanningProblem problem = test::randomProblem(test::multiCoverSpec(size, robots));
+        const Plan plan = planMdstc(problem, {});
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        int largest = 1;
+        for (const Cell& cell : plan.cells.cells())
+            largest = std::max(largest, cell.span);
+        QVERIFY(largest >= 4);
+        const TimelineLayer::Summary& summary = timelineOf(plan).summary();
+        const double ratio = summary.makespanSeconds / summary.staticMakespanSeconds;
+        PlanningProblem onGrid = problem;
+        onGrid.planner = defaultPlannerChoice(MdstcPlanner::plannerName);
+        onGrid.planner.parameters.set("quadtree_cells", false);
+        const Plan gridPlan = makePlanner(MdstcPlanner::plannerName)->plan(onGrid, {});
+        qInfo("%d x %d, %d robots: MDSTC %.0f s, static %.0f s, ratio to static %.4f, to bound %.4f; on the "
+              "uniform grid %.0f s",
+              size, size, robots, summary.makespanSeconds, summary.staticMakespanSeconds, ratio,
+              plan.metrics.ratio, gridPlan.metrics.makespanSeconds);
+        QVERIFY2(ratio <= 1.03, qPrintable(QString::number(ratio)));
+        QVERIFY(gridPlan.metrics.makespanSeconds > summary.makespanSeconds);
+    }
+
     // Robot 0 drops to half speed a quarter of the way through: the others take over cells nobody has
     // entered, and the mission ends before the static plan's under the same event.
     void aSlowRobotIsHelpedByTheOthers_data() {

@@ -1,0 +1,14 @@
+#pragma once
+
+#include "core/model/CellGraph.hpp"
+#include "core/planners/PlanningRun.hpp"
+
+namespace mcpp {
+
+// MCPP-MLCT's first stages: the quadtree whose cells grow with each land cover's field of view ("quadtree"),
+// then its leaves and which of them touch ("topology"), each cell priced for turns by the run's turn
+// parameters. The quadtree holds every node of the hierarchy: it is freed once the cell graph is built,
+// which leaves room for the paths on large maps.
+[[nodiscard]] CellGraph quadTreeStage(PlanningRun& run);
+
+} // namespace mcpp
