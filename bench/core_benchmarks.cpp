@@ -181,6 +181,12 @@ void uniformGridMdstcSlowRobot(benchmark::State& state) {
     runPlanner(state, problem, "mdstc");
 }
 
+// MDSTC without events on the multi-cover maps (FOVs 5, 10 and 20 m): quadtree cells of several sizes.
+void multiCoverMdstc(benchmark::State& state) {
+    runPlanner(state, multiCover(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 7),
+               "mdstc");
+}
+
 void multiCoverMap(benchmark::State& state) {
     runPlanner(state, multiCover(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 7));
 }
@@ -201,6 +207,7 @@ BENCHMARK(uniformGridMdstc)->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})->U
 BENCHMARK(uniformGridMdstcFreeTurns)
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(multiCoverMdstc)->ArgsProduct({{128, 256, 512}, {2, 8, 32}})->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridMdstcSlowRobot)
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
