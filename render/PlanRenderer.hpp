@@ -116,8 +116,8 @@ class PlanRenderer {
     std::vector<GridImage> detectionPyramid_; // empty when the plan has no detection layer
     std::vector<Outline> regionBorders_;
     std::vector<Outline> unreachableOutlines_;
-    std::vector<std::pair<int, Outline>> takenOverOutlines_;
-    std::vector<std::optional<MapPoint>> chargers_; // by robot: the cells it took over from others
+    std::vector<std::pair<int, Outline>> takenOverOutlines_; // (robot, outline): the cells it took over
+    std::vector<std::optional<MapPoint>> chargers_;          // by robot: a charger away from its start
     std::vector<QRectF> crossingCells_; // world rectangles of cells whose path crosses impassable land
     std::vector<PathLine> pathLines_;
     double meanStepMetres_ = 0.0; // mean distance between consecutive waypoints

@@ -1,8 +1,9 @@
 #include "core/coverage/DynamicTreeWalk.hpp"
 
+#include "core/coverage/RoundOrder.hpp"
+
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -25,6 +26,22 @@ SubCell nearestSubCell(const Cell& cell, const Waypoint& point) {
         {std::clamp(point.x, cell.minX, cell.maxX()), std::clamp(point.y, cell.minY, cell.maxY())});
 }
 
+// Where a tree's walk begins: the sub-cell nearest the robot, the first in counter-clockwise order from the
+// north-west on a tie (a start at the cell's centre), as TreeCircumnavigation begins.
+SubCell startingSubCell(const Cell& cell, const Waypoint& point) {
+    SubCell best = SubCell::NorthWest;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (const SubCell subCell : subCellsCounterClockwise) {
+        const MapPoint centre = cell.subCellCentre(subCell);
+        const double distance = std::hypot(centre.x - point.x, centre.y - point.y);
+        if (distance < bestDistance - 1e-12) {
+            bestDistance = distance;
+            best = subCell;
+        }
+    }
+    return best;
+}
+
 } // namespace
 
 DynamicTreeWalk::DynamicTreeWalk(const CellGraph& graph, int robot, MapPoint start, int startCell,
@@ -37,22 +54,13 @@ DynamicTreeWalk::DynamicTreeWalk(const CellGraph& graph, int robot, MapPoint sta
 }
 
 // The cell's round, counter-clockwise from its north-west sub-cell: each corner sub-cell, then the
-// neighbours along the side after it in the order the walk passes them (as TreeCircumnavigation orders a
-// tree's).
+// neighbours along the side after it in the order the walk passes them.
 void DynamicTreeWalk::appendRound(int cell) {
     const Cell& self = graph_.cell(cell);
-    const double tolerance = 1e-9 * self.size;
     std::array<std::vector<std::pair<double, int>>, 4> sides; // west, south, east, north
     for (const int id : graph_.neighbours(cell)) {
-        const Cell& other = graph_.cell(id);
-        if (other.maxX() <= self.minX + tolerance)
-            sides[0].emplace_back(-other.centreY(), id);
-        else if (other.maxY() <= self.minY + tolerance)
-            sides[1].emplace_back(other.centreX(), id);
-        else if (other.minX >= self.maxX() - tolerance)
-            sides[2].emplace_back(other.centreY(), id);
-        else
-            sides[3].emplace_back(-other.centreX(), id);
+        const RoundPlace place = roundPlaceOf(self, graph_.cell(id));
+        sides[static_cast<std::size_t>(place.side)].emplace_back(place.position, id);
     }
     for (std::size_t side = 0; side < 4; ++side) {
         arena_.push_back(itemOf(subCellsCounterClockwise[side]));
@@ -75,12 +83,12 @@ void DynamicTreeWalk::enter(int cell, int parent, std::vector<char>& entered) {
     if (parent >= 0) {
         first = std::find(begin, arena_.end(), parent);
     } else {
-        const Waypoint& at = clock_.waypoints().back();
-        first = std::find(begin, arena_.end(), itemOf(nearestSubCell(graph_.cell(cell), at)));
+        first = std::find(begin, arena_.end(),
+                          itemOf(startingSubCell(graph_.cell(cell), clock_.waypoints().back())));
     }
     std::rotate(begin, first, arena_.end());
     frameOfCell_[cell] = frames_.size();
-    frames_.push_back({cell, start, arena_.size(), parent >= 0 ? start + 1 : start, 0});
+    frames_.push_back({cell, start, arena_.size(), parent >= 0 ? start + 1 : start, 0, notYet});
     passedThrough_.push_back(cell);
 }
 
@@ -124,6 +132,8 @@ void DynamicTreeWalk::markPassed(Frame& frame, SubCell subCell) {
     if ((frame.passed & bit) != 0)
         return;
     frame.passed |= bit;
+    if (frame.passed == allSubCells)
+        frame.wholeAt = clock_.lastIndex();
     committedSeconds_ = std::max(0.0, committedSeconds_ - graph_.cell(frame.cell).coverSeconds() / 4.0);
 }
 
@@ -168,15 +178,12 @@ bool DynamicTreeWalk::advance(const std::vector<int>& owner, std::vector<char>& 
     return true;
 }
 
-// Finishes the open cell; the walk carries on round the cell it came from.
+// Finishes the open cell (its round passed all its sub-cells); the walk carries on round the cell it came
+// from.
 void DynamicTreeWalk::closeFrame(std::vector<char>& entered) {
     const Frame done = frames_.back();
-    // Whatever of it was not passed (only bridged past) leaves the open work now.
-    const int unpassed = 4 - std::popcount(static_cast<unsigned>(done.passed));
-    committedSeconds_ =
-        std::max(0.0, committedSeconds_ - unpassed * graph_.cell(done.cell).coverSeconds() / 4.0);
     lastClosedCell_ = done.cell;
-    lastClosedWaypoint_ = clock_.lastIndex();
+    lastClosedWholeAt_ = done.wholeAt;
     entered[static_cast<std::size_t>(done.cell)] = 2;
     frameOfCell_.erase(done.cell);
     arena_.resize(done.start);
@@ -244,9 +251,11 @@ bool DynamicTreeWalk::startTree(const std::vector<int>& owner, std::vector<char>
 std::vector<int> DynamicTreeWalk::abandonUnfinishedCells(std::size_t reachedWaypoints) {
     std::vector<int> cells;
     for (const Frame& frame : frames_)
-        cells.push_back(frame.cell);
-    if (lastClosedCell_ >= 0 && lastClosedWaypoint_ >= reachedWaypoints)
+        if (frame.wholeAt == notYet || frame.wholeAt >= reachedWaypoints)
+            cells.push_back(frame.cell);
+    if (lastClosedCell_ >= 0 && lastClosedWholeAt_ >= reachedWaypoints)
         cells.push_back(lastClosedCell_);
+    lastClosedCell_ = -1;
     frames_.clear();
     arena_.clear();
     frameOfCell_.clear();

@@ -43,9 +43,9 @@ class DynamicTreeWalk {
     [[nodiscard]] bool treeDone() const { return frames_.empty(); }
     // How many cells it has entered so far.
     [[nodiscard]] std::size_t cellsEntered() const { return cellsEntered_; }
-    // Lets go of the cells it has not finished by its first `reachedWaypoints` points (it stopped there):
-    // those it has entered and not circled, and one it was finishing on the way out. Nobody covered them
-    // whole.
+    // Lets go of the cells it has not covered whole by its first `reachedWaypoints` points (it stopped
+    // there, during its last move): open cells with a sub-cell not yet passed by then, and the last cell it
+    // finished, when it finished after that. Open cells it had passed whole stay its own.
     [[nodiscard]] std::vector<int> abandonUnfinishedCells(std::size_t reachedWaypoints);
     [[nodiscard]] std::vector<Waypoint> takeWaypoints() { return clock_.take(); }
 
@@ -57,8 +57,10 @@ class DynamicTreeWalk {
         std::size_t start = 0; // where its items begin in arena_ (the first is skipped below a tree's root)
         std::size_t end = 0;
         std::size_t next = 0;
-        std::uint8_t passed = 0; // bit per sub-cell (SubCell order) the robot has passed
+        std::uint8_t passed = 0;      // bit per sub-cell (SubCell order) the robot has passed
+        std::size_t wholeAt = notYet; // the waypoint that passed its last sub-cell
     };
+    static constexpr std::size_t notYet = static_cast<std::size_t>(-1);
 
     void appendRound(int cell);
     void enter(int cell, int parent, std::vector<char>& entered);
@@ -83,8 +85,8 @@ class DynamicTreeWalk {
     const std::vector<int>* plannedParent_ = nullptr;
     double committedSeconds_ = 0.0;
     std::size_t cellsEntered_ = 0;
-    int lastClosedCell_ = -1;            // the cell the last move finished circling
-    std::size_t lastClosedWaypoint_ = 0; // its last point
+    int lastClosedCell_ = -1;                // the cell the last move finished
+    std::size_t lastClosedWholeAt_ = notYet; // the waypoint that passed its last sub-cell
 };
 
 } // namespace mcpp

@@ -22,6 +22,11 @@ class PathTimeBalancing {
     PathTimeBalancing(const SpanningTreeCoverage& coverage, std::size_t cellBudget)
         : coverage_(coverage), cellBudget_(cellBudget) {}
 
+    // The budget planners give it: about half a second of replanning on any map.
+    [[nodiscard]] static std::size_t budgetFor(const CellGraph& graph) {
+        return std::min<std::size_t>(250'000 + 2 * graph.size(), 1'000'000);
+    }
+
     // Returns the cells moved.
     int balance(const CellGraph& graph, RegionAllocation& regions, std::vector<CoveragePath>& paths,
                 const std::vector<MapPoint>& starts, const ProgressReporter& progress) const;

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <numeric>
 #include <queue>
 #include <utility>
 
@@ -59,7 +58,8 @@ void ReallocationSimulation::playEvents(const ProgressReporter& progress) {
     const std::vector<double> changes = eventTimes(events_);
     std::size_t nextChange = 0;
     // After the first event, a rebalance every so many cell moves keeps slow drifts in check at a bounded
-    // cost. Before it the walks drive the planned trees: moving cells then would only break them up.
+    // cost. Before it the walks drive the planned trees, balanced on their paths: cells move then only to a
+    // robot that has run out of work.
     const int rhythm = std::max(8 * static_cast<int>(robots_.size()), static_cast<int>(graph_.size()) / 64);
     std::size_t movesInAll = 0;
     const std::size_t moveLimit = 64 * graph_.size() + 1024; // never spin, whatever the exchange does

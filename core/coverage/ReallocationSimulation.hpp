@@ -71,7 +71,7 @@ class ReallocationSimulation {
     std::vector<SpeedEvent> events_;
     RemainingWorkExchange exchange_;
     std::vector<int> owner_;
-    std::vector<char> entered_;
+    std::vector<char> entered_; // by cell: 0 nobody has entered it, 1 a walk has it open, 2 done
     std::vector<int> firstRegions_;
     std::vector<int> plannedParent_; // by cell: where the walks' planned trees enter it from, -1 for none
     std::vector<Robot> robots_;

@@ -30,7 +30,7 @@ std::pair<SpanningTree, PathShape> SpanningTreeCoverage::bestTree(const CellGrap
                                                                   std::vector<int>& scratchIndex) const {
     const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
-    // Candidate trees are judged by the shape of their walk; only the best one's path is stored.
+    // Candidate trees are judged by the shape of their walk, which is measured without being stored.
     SpanningTree best;
     PathShape bestShape;
     bool haveBest = false;

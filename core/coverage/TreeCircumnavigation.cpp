@@ -1,5 +1,7 @@
 #include "core/coverage/TreeCircumnavigation.hpp"
 
+#include "core/coverage/RoundOrder.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -77,19 +79,11 @@ class ShapeSink {
 // Appends the cell's sub-cells and tree neighbours, counter-clockwise round it from the north-west.
 void TreeCircumnavigation::appendSlots(const SpanningTree& tree, int node, std::vector<int>& out) {
     const Cell& self = graph_.cell(tree.cellOf(node));
-    const double tolerance = 1e-9 * self.size;
     for (auto& side : sides_)
         side.clear(); // west, south, east, north: (position along the walk, neighbour)
     for (int neighbour : tree.neighbours(node)) {
-        const Cell& other = graph_.cell(tree.cellOf(neighbour));
-        if (other.maxX() <= self.minX + tolerance)
-            sides_[0].emplace_back(-other.centreY(), neighbour);
-        else if (other.maxY() <= self.minY + tolerance)
-            sides_[1].emplace_back(other.centreX(), neighbour);
-        else if (other.minX >= self.maxX() - tolerance)
-            sides_[2].emplace_back(other.centreY(), neighbour);
-        else
-            sides_[3].emplace_back(-other.centreX(), neighbour);
+        const RoundPlace place = roundPlaceOf(self, graph_.cell(tree.cellOf(neighbour)));
+        sides_[static_cast<std::size_t>(place.side)].emplace_back(place.position, neighbour);
     }
     for (int side = 0; side < 4; ++side) {
         out.push_back(-1 - side); // the corner sub-cell before this side: NW, SW, SE, NE

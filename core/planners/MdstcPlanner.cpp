@@ -1,6 +1,7 @@
 #include "core/planners/MdstcPlanner.hpp"
 
 #include "core/allocation/RegionCosts.hpp"
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/ReallocationSimulation.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
@@ -66,18 +67,26 @@ void reportLeftUncovered(PlanningRun& run, const std::vector<int>& uncovered, bo
 }
 
 // The regions the robots set out with: grown from the starts in turns (seed 003), then balanced on the
-// paths the walks will follow (MCPP-MLCT trees), as MCPP-MLCT balances its own. The trees turn far less than
-// the cost's default rate: the rate measured on a first division prices the cells before the final one.
-RegionAllocation firstDivision(PlanningRun& run, CellGraph& cells, const std::vector<int>& startCells) {
+// paths the walks will follow (MCPP-MLCT trees), as MCPP-MLCT balances its own. Those trees turn less than
+// the cost's default rate: the rate measured on the grown regions prices the cells for a second growth, kept
+// when its longest path is shorter.
+RegionAllocation balancedDivision(PlanningRun& run, CellGraph& cells, const std::vector<int>& startCells) {
+    const ProgressReporter& progress = run.progress();
     const SpanningTreeCoverage coverage(false);
     RegionAllocation division = ReallocationSimulation::firstDivision(cells, startCells);
-    std::vector<CoveragePath> paths = coverage.plan(cells, division, run.starts(), run.progress());
+    std::vector<CoveragePath> paths =
+        coverage.plan(cells, division, run.starts(), progress.within("first division", 0.0, 0.3));
     if (calibrateTurnRates(cells, division, paths)) {
-        division = ReallocationSimulation::firstDivision(cells, startCells);
-        paths = coverage.plan(cells, division, run.starts(), run.progress());
+        RegionAllocation priced = ReallocationSimulation::firstDivision(cells, startCells);
+        std::vector<CoveragePath> pricedPaths =
+            coverage.plan(cells, priced, run.starts(), progress.within("first division", 0.3, 0.6));
+        if (longestPathSeconds(pricedPaths) < longestPathSeconds(paths)) {
+            division = std::move(priced);
+            paths = std::move(pricedPaths);
+        }
     }
-    const PathTimeBalancing balancing(coverage, std::min<std::size_t>(250'000 + 2 * cells.size(), 1'000'000));
-    balancing.balance(cells, division, paths, run.starts(), run.progress());
+    const PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(cells));
+    balancing.balance(cells, division, paths, run.starts(), progress.within("first division", 0.6, 1.0));
     return division;
 }
 
@@ -113,7 +122,7 @@ void MdstcPlanner::run(PlanningRun& run) const {
         run.parameters().boolean(quadTreeKey) ? quadTreeStage(run) : gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
     const RegionAllocation division =
-        run.stage("first division", [&] { return firstDivision(run, plan.cells, startCells); });
+        run.stage("first division", [&] { return balancedDivision(run, plan.cells, startCells); });
     ReallocationSimulation simulation(plan.cells, problem.events);
     ReallocationSimulation::Result result =
         run.stage("simulation", [&] { return simulation.run(division, run.starts(), run.progress()); });

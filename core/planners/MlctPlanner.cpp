@@ -71,8 +71,7 @@ void MlctPlanner::run(PlanningRun& run) const {
     });
     // Costs only estimate path times: border cells pass from the longest path to shorter neighbours, paths
     // replanned, while that shortens the longest. Bounded to about half a second of replanning.
-    const PathTimeBalancing balancing(coverage,
-                                      std::min<std::size_t>(250'000 + 2 * plan.cells.size(), 1'000'000));
+    const PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(plan.cells));
     run.stage("path balance", [&] {
         return balancing.balance(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });

@@ -124,13 +124,15 @@ void addTakenOver(const Plan& plan, double metresPerUnit, PlanFeatures& features
         TakenOverFeature feature{robot.robot, std::make_unique<OGRMultiPolygon>(), 0.0,
                                  static_cast<int>(robot.cellsTakenOver.size())};
         for (const int id : robot.cellsTakenOver)
-            feature.areaSquareMetres += plan.cells.cell(id).freeAreaSquareMetres();
+            if (id >= 0 && static_cast<std::size_t>(id) < plan.cells.size())
+                feature.areaSquareMetres += plan.cells.cell(id).freeAreaSquareMetres();
         featureOfRobot[static_cast<std::size_t>(robot.robot)] = static_cast<int>(features.takenOver.size());
         features.takenOver.push_back(std::move(feature));
     }
     const LabelGrid grid = takenOverLabels(plan);
     for (const OutlinePolygon& outline : traceOutlines(grid)) {
-        const int feature = featureOfRobot[static_cast<std::size_t>(outline.label)];
+        const auto robot = static_cast<std::size_t>(outline.label);
+        const int feature = robot < featureOfRobot.size() ? featureOfRobot[robot] : -1;
         if (feature >= 0)
             features.takenOver[static_cast<std::size_t>(feature)]
                 .geometry->toMultiPolygon()
