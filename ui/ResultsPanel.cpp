@@ -28,6 +28,22 @@ namespace mcpp::ui {
 namespace {
 
 constexpr int sortiesColumn = 6; // shown for robots on batteries only
+constexpr int timeColumn = 4;    // "Done at" for plans played through events
+
+// The robot's mission under the plan's events, when it was played through some.
+const RobotTimeline* playedUnderEvents(const Plan& plan, int robot) {
+    const TimelineLayer* timeline = timelineLayerOf(plan);
+    if (timeline == nullptr || timeline->summary().events.empty() || robot < 0 ||
+        static_cast<std::size_t>(robot) >= timeline->robots().size())
+        return nullptr;
+    return &timeline->robots()[static_cast<std::size_t>(robot)];
+}
+
+// What the chart shows per robot: its time, or when it is done under the events.
+double chartSeconds(const Plan& plan, const RobotMetrics& robot) {
+    const RobotTimeline* played = playedUnderEvents(plan, robot.robot);
+    return played != nullptr ? played->completionSeconds : robot.timeSeconds;
+}
 
 QString hectares(double squareMetres) {
     return QObject::tr("%1 ha").arg(squareMetres / 10'000.0, 0, 'f', 1);
@@ -80,6 +96,13 @@ QString completionNote(const Plan& plan, int robot) {
                                 .arg(ResultsPanel::formatDuration(played.completionSeconds))
                           : QObject::tr("; under the events it is done at %1")
                                 .arg(ResultsPanel::formatDuration(played.completionSeconds));
+}
+
+// When the robot is done under the events, or when it stopped for good.
+QTableWidgetItem* doneItem(const RobotTimeline& played) {
+    const QString time = ResultsPanel::formatDuration(played.completionSeconds);
+    return numberItem(played.stopped ? QObject::tr("stopped at %1").arg(time) : time,
+                      played.completionSeconds);
 }
 
 QLabel* valueLabel(const QString& objectName, QWidget* parent) {
@@ -211,18 +234,31 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         table_->setItem(r, 2, numberItem(hectares(robot.areaSquareMetres), robot.areaSquareMetres));
         table_->setItem(
             r, 3, numberItem(tr("%1 km").arg(robot.lengthMetres / 1000.0, 0, 'f', 2), robot.lengthMetres));
-        auto* time = numberItem(formatDuration(robot.timeSeconds), robot.timeSeconds);
+        const RobotTimeline* played = playedUnderEvents(*plan, robot.robot);
+        auto* time = played != nullptr ? doneItem(*played)
+                                       : numberItem(formatDuration(robot.timeSeconds), robot.timeSeconds);
         auto* turns = numberItem(QString::number(robot.turns), robot.turns);
         const QString turning = tr("%1 of it lost slowing down for turns and speeding up again (turn_s)")
                                     .arg(formatDuration(robot.turnSeconds));
-        time->setToolTip(turning + chargingNote(*plan, robot.robot) + completionNote(*plan, robot.robot));
+        const QString fullSpeed =
+            played != nullptr ? tr("%1 at full speed; ").arg(formatDuration(robot.timeSeconds)) : QString();
+        time->setToolTip(fullSpeed + turning + chargingNote(*plan, robot.robot) +
+                         (played != nullptr ? QString() : completionNote(*plan, robot.robot)));
         turns->setToolTip(turning);
-        table_->setItem(r, 4, time);
+        table_->setItem(r, timeColumn, time);
         table_->setItem(r, 5, turns);
         if (sorties != nullptr && row < sorties->robots().size())
             table_->setItem(r, sortiesColumn, sortiesItem(*plan, sorties->robots()[row]));
     }
     table_->setColumnHidden(sortiesColumn, sorties == nullptr);
+    // Under events what a user waits for is when each robot is done; its full-speed time is in the tooltip.
+    const bool underEvents =
+        !metrics.robots.empty() && playedUnderEvents(*plan, metrics.robots.front().robot) != nullptr;
+    table_->horizontalHeaderItem(timeColumn)->setText(underEvents ? tr("Done at") : tr("Time"));
+    table_->horizontalHeaderItem(timeColumn)
+        ->setToolTip(underEvents ? tr("When it is done under the events (slowed down, waiting for cells) or "
+                                      "stopped; the tooltip gives its time at full speed")
+                                 : tr("Driving at full speed, turns included"));
     makespan_->setText(formatDuration(metrics.makespanSeconds));
     lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
     ratio_->setText(QString::number(metrics.ratio, 'f', 3));
@@ -267,13 +303,15 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     const auto& robots = plan.metrics.robots;
     if (robots.empty())
         return;
+    chart->setTitle(playedUnderEvents(plan, robots.front().robot) != nullptr ? tr("Done at, under the events")
+                                                                             : tr("Time per robot"));
 
     // One set per robot with a value only in its own category: each bar takes its robot's colour.
     auto* series = new QStackedBarSeries;
     QStringList categories;
     double longestSeconds = 0.0;
     for (const auto& robot : robots)
-        longestSeconds = std::max(longestSeconds, robot.timeSeconds);
+        longestSeconds = std::max(longestSeconds, chartSeconds(plan, robot));
     // Hours once the longest run passes two hours: "34" reads better than "2040".
     const bool inHours = longestSeconds > 7200.0;
     const double unitSeconds = inHours ? 3600.0 : 60.0;
@@ -286,9 +324,9 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
         set->setColor(render::RobotPalette::colour(robot));
         set->setBorderColor(render::RobotPalette::colour(robot).darker(130));
         for (std::size_t j = 0; j < robots.size(); ++j)
-            *set << (j == i ? robots[i].timeSeconds / unitSeconds : 0.0);
+            *set << (j == i ? chartSeconds(plan, robots[i]) / unitSeconds : 0.0);
         series->append(set);
-        longestValue = std::max(longestValue, robots[i].timeSeconds / unitSeconds);
+        longestValue = std::max(longestValue, chartSeconds(plan, robots[i]) / unitSeconds);
     }
     series->setBarWidth(0.7);
     chart->addSeries(series);

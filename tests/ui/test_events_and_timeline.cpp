@@ -5,8 +5,12 @@
 #include "ui/ResultsPanel.hpp"
 #include "ui/TimelineBar.hpp"
 
+#include <QBarSet>
+#include <QChartView>
 #include <QLabel>
 #include <QSignalSpy>
+#include <QStackedBarSeries>
+#include <QTableWidget>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -115,6 +119,49 @@ class TestEventsAndTimeline : public QObject {
         QVERIFY2(label->text().contains("1 h") && label->text().contains("50") &&
                      label->text().contains("saved"),
                  qPrintable(label->text()));
+    }
+
+    // Under events the table says when each robot is done (or stopped), its full-speed time in the tooltip,
+    // and the chart shows those times; without events neither changes.
+    void theResultsShowWhenEachRobotIsDone() {
+        Plan plan;
+        plan.planner = "mdstc";
+        plan.metrics.robots.resize(2);
+        for (int robot = 0; robot < 2; ++robot) {
+            plan.metrics.robots[static_cast<std::size_t>(robot)].robot = robot;
+            plan.metrics.robots[static_cast<std::size_t>(robot)].timeSeconds = 3600.0;
+        }
+        std::vector<RobotTimeline> robots(2);
+        robots[0] = {0, {}, 5400.0, false, {}, 0.0, 0.0};
+        robots[1] = {1, {}, 1800.0, true, {}, 0.0, 0.0};
+        TimelineLayer::Summary summary;
+        summary.events = {{900.0, 0, 0.5}, {1800.0, 1, 0.0}};
+        plan.layers.push_back(std::make_shared<TimelineLayer>(summary, robots, std::vector<int>{}));
+        ui::ResultsPanel panel;
+        panel.showPlan(&plan, {});
+        const auto* table = panel.findChild<QTableWidget*>(QStringLiteral("resultsTable"));
+        QVERIFY(table != nullptr);
+        QCOMPARE(table->horizontalHeaderItem(4)->text(), QString("Done at"));
+        QCOMPARE(table->item(0, 4)->text(), QString("1 h 30 min"));
+        QVERIFY2(table->item(0, 4)->toolTip().startsWith("1 h at full speed"),
+                 qPrintable(table->item(0, 4)->toolTip()));
+        QCOMPARE(table->item(1, 4)->text(), QString("stopped at 30 min"));
+        const auto* chart = panel.findChild<QChartView*>(QStringLiteral("timeChart"));
+        QVERIFY(chart != nullptr);
+        QVERIFY(chart->chart()->title().contains("events"));
+        const auto* series = qobject_cast<QStackedBarSeries*>(chart->chart()->series().front());
+        QVERIFY(series != nullptr);
+        QCOMPARE(series->barSets().at(0)->at(0), 90.0); // minutes
+        QCOMPARE(series->barSets().at(1)->at(1), 30.0);
+
+        plan.layers.clear();
+        summary.events.clear();
+        plan.layers.push_back(std::make_shared<TimelineLayer>(summary, robots, std::vector<int>{}));
+        panel.showPlan(&plan, {});
+        QCOMPARE(table->horizontalHeaderItem(4)->text(), QString("Time"));
+        QCOMPARE(table->item(0, 4)->text(), QString("1 h"));
+        QCOMPARE(qobject_cast<QStackedBarSeries*>(chart->chart()->series().front())->barSets().at(0)->at(0),
+                 60.0);
     }
 
   private:
