@@ -248,22 +248,33 @@ int RemainingWorkExchange::countIn(int cell, int region) const {
 int RemainingWorkExchange::givableCell(int donor, int receiver) {
     std::vector<int>& candidates = link(donor, receiver);
     const bool donorStopped = (*robots_)[static_cast<std::size_t>(donor)].speedFactor <= 0.0;
-    std::vector<std::pair<int, int>> scored; // (score, cell), most surrounded by the receiver first
+    std::vector<std::pair<int, int>> scored; // (score, cell)
+    // Moves add a cell's neighbours again and again: kept once each, the list stays the border's length.
+    if (listed_.size() != graph_.size())
+        listed_.assign(graph_.size(), 0);
     std::size_t kept = 0;
     for (const int cell : candidates) {
-        if ((*owner_)[static_cast<std::size_t>(cell)] != donor || !isFree(cell) ||
+        const auto index = static_cast<std::size_t>(cell);
+        if (listed_[index] != 0 || (*owner_)[index] != donor || !isFree(cell) ||
             !touchesFreeCellOf(cell, receiver))
             continue;
+        listed_[index] = 1;
         candidates[kept++] = cell;
         scored.emplace_back(countIn(cell, receiver) - countIn(cell, donor), cell);
     }
     candidates.resize(kept);
-    std::sort(scored.begin(), scored.end(), std::greater<>());
-    scored.erase(std::unique(scored.begin(), scored.end()), scored.end());
-    // The connectivity check is the dear part: it runs on the best first and stops at the first it allows.
-    for (const auto& [score, cell] : scored)
+    for (const int cell : candidates)
+        listed_[static_cast<std::size_t>(cell)] = 0;
+    // The connectivity check is the dear part: it runs on the most surrounded by the receiver first and
+    // stops at the first it allows, usually the first. A heap orders no more of a long border than that.
+    std::make_heap(scored.begin(), scored.end());
+    while (!scored.empty()) {
+        std::pop_heap(scored.begin(), scored.end());
+        const int cell = scored.back().second;
+        scored.pop_back();
         if (donorStopped || connectivity_.canRemove(cell, *owner_, connectivitySearchLimit))
             return cell;
+    }
     candidates.clear(); // nothing the donor can spare here now
     return -1;
 }

@@ -56,6 +56,7 @@ class RemainingWorkExchange {
     std::vector<double> work_; // by robot: seconds of work left at full speed
     std::vector<int> seen_;    // by cell: the stamp of the last search that reached it
     std::vector<int> steps_;   // by cell: steps from where that search began
+    std::vector<char> listed_; // by cell: already kept in the candidate list being cleaned (scratch)
     int stamp_ = 0;
     std::vector<std::vector<int>> links_; // by (donor, receiver): free donor cells next to the receiver
 };
