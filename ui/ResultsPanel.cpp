@@ -257,7 +257,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     table_->horizontalHeaderItem(timeColumn)->setText(underEvents ? tr("Done at") : tr("Time"));
     table_->horizontalHeaderItem(timeColumn)
         ->setToolTip(underEvents ? tr("When it is done under the events (slowed down, waiting for cells) or "
-                                      "stopped; the tooltip gives its time at full speed")
+                                      "stopped; each robot's tooltip gives its time at full speed")
                                  : tr("Driving at full speed, turns included"));
     makespan_->setText(formatDuration(metrics.makespanSeconds));
     lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
@@ -290,6 +290,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
 
 void ResultsPanel::clearChart() {
     QChart* chart = chartView_->chart();
+    chart->setTitle(tr("Time per robot"));
     chart->removeAllSeries();
     for (auto* axis : chart->axes()) {
         chart->removeAxis(axis); // the chart gives up the axis: it is ours to delete
@@ -303,8 +304,8 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     const auto& robots = plan.metrics.robots;
     if (robots.empty())
         return;
-    chart->setTitle(playedUnderEvents(plan, robots.front().robot) != nullptr ? tr("Done at, under the events")
-                                                                             : tr("Time per robot"));
+    if (playedUnderEvents(plan, robots.front().robot) != nullptr)
+        chart->setTitle(tr("Done at, under the events"));
 
     // One set per robot with a value only in its own category: each bar takes its robot's colour.
     auto* series = new QStackedBarSeries;

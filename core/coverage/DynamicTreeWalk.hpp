@@ -45,7 +45,7 @@ class DynamicTreeWalk {
     [[nodiscard]] std::size_t cellsEntered() const { return cellsEntered_; }
     // Lets go of the cells it has not covered whole by its first `reachedWaypoints` points (it stopped
     // there, during its last move): open cells with a sub-cell not yet passed by then, and the last cell it
-    // finished, when it finished after that. Open cells it had passed whole stay its own.
+    // finished, when its last sub-cell was passed after that. Open cells it had passed whole stay its own.
     [[nodiscard]] std::vector<int> abandonUnfinishedCells(std::size_t reachedWaypoints);
     [[nodiscard]] std::vector<Waypoint> takeWaypoints() { return clock_.take(); }
 
@@ -85,7 +85,7 @@ class DynamicTreeWalk {
     const std::vector<int>* plannedParent_ = nullptr;
     double committedSeconds_ = 0.0;
     std::size_t cellsEntered_ = 0;
-    int lastClosedCell_ = -1;                // the cell the last move finished
+    int lastClosedCell_ = -1;                // the last cell it finished
     std::size_t lastClosedWholeAt_ = notYet; // the waypoint that passed its last sub-cell
 };
 

@@ -7,6 +7,7 @@
 #include "core/model/ProgressReporter.hpp"
 #include "core/model/RegionAllocation.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace mcpp {

@@ -71,7 +71,8 @@ class ReallocationSimulation {
     std::vector<SpeedEvent> events_;
     RemainingWorkExchange exchange_;
     std::vector<int> owner_;
-    std::vector<char> entered_; // by cell: 0 nobody has entered it, 1 a walk has it open, 2 done
+    std::vector<char> entered_; // by cell: 0 nobody has entered it, 1 a walk has it open (or a stopped robot
+                                // kept it, covered whole), 2 done
     std::vector<int> firstRegions_;
     std::vector<int> plannedParent_; // by cell: where the walks' planned trees enter it from, -1 for none
     std::vector<Robot> robots_;

@@ -160,6 +160,7 @@ class TestEventsAndTimeline : public QObject {
         panel.showPlan(&plan, {});
         QCOMPARE(table->horizontalHeaderItem(4)->text(), QString("Time"));
         QCOMPARE(table->item(0, 4)->text(), QString("1 h"));
+        QCOMPARE(chart->chart()->title(), QString("Time per robot"));
         QCOMPARE(qobject_cast<QStackedBarSeries*>(chart->chart()->series().front())->barSets().at(0)->at(0),
                  60.0);
     }
