@@ -45,6 +45,24 @@ void runPlanner(benchmark::State& state, PlanningProblem problem,
         turnSeconds += path.turnSeconds;
     }
     state.counters["ratio"] = plan.metrics.ratio;
+    // balance = longest path / mean path; connector_time_s = what all paths spend stepping between cells of
+    // different sizes beyond their cells' travel, which the lower bound counts like turns;
+    // ratio_before_connectors = the makespan over the bound without them, the ratio as the sections of
+    // docs/benchmarks.md before 2026-11-25 give it.
+    double pathSeconds = 0.0;
+    double connectorSeconds = 0.0;
+    for (const auto& path : plan.paths) {
+        pathSeconds += path.timeSeconds;
+        connectorSeconds += path.connectorSeconds;
+    }
+    if (!plan.paths.empty() && pathSeconds > 0.0) {
+        const double robots = static_cast<double>(plan.paths.size());
+        state.counters["balance"] = plan.metrics.makespanSeconds * robots / pathSeconds;
+        state.counters["connector_time_s"] = connectorSeconds;
+        const double boundBefore = plan.metrics.lowerBoundSeconds - connectorSeconds / robots;
+        if (boundBefore > 0.0)
+            state.counters["ratio_before_connectors"] = plan.metrics.makespanSeconds / boundBefore;
+    }
     state.counters["turns"] = turns;
     state.counters["makespan_s"] = plan.metrics.makespanSeconds;
     state.counters["turn_time_s"] = turnSeconds;

@@ -20,7 +20,7 @@ namespace {
 using internal::CompressedReader;
 using internal::CompressedWriter;
 
-constexpr const char* formatLine = "MCPP-PLAN 2";
+constexpr const char* formatLine = "MCPP-PLAN 3";
 constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
 
 // Size and time of last change of a file: a different file at the same path changes them. Empty when they
@@ -277,6 +277,7 @@ void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths, con
         out.put(path.lengthMetres);
         out.put(path.timeSeconds);
         out.put(path.turnSeconds);
+        out.put(path.connectorSeconds);
         out.put(path.turns);
         out.put(path.repeatedSubCellVisits);
         out.put(static_cast<std::uint8_t>(path.closed));
@@ -291,6 +292,7 @@ std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph)
         path.lengthMetres = in.get<double>();
         path.timeSeconds = in.get<double>();
         path.turnSeconds = in.get<double>();
+        path.connectorSeconds = in.get<double>();
         path.turns = in.get<int>();
         path.repeatedSubCellVisits = in.get<int>();
         path.closed = in.get<std::uint8_t>() != 0;
@@ -310,6 +312,7 @@ void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
         out.put(robot.lengthMetres);
         out.put(robot.timeSeconds);
         out.put(robot.turnSeconds);
+        out.put(robot.connectorSeconds);
         out.put(robot.costSeconds);
         out.put(robot.turns);
     }
@@ -335,6 +338,7 @@ PlanMetrics getMetrics(CompressedReader& in) {
         robot.lengthMetres = in.get<double>();
         robot.timeSeconds = in.get<double>();
         robot.turnSeconds = in.get<double>();
+        robot.connectorSeconds = in.get<double>();
         robot.costSeconds = in.get<double>();
         robot.turns = in.get<int>();
     }

@@ -105,6 +105,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("time_s", robot.timeSeconds);
         item.add("turns", robot.turns);
         item.add("turn_time_s", robot.turnSeconds);
+        item.add("connector_time_s", robot.connectorSeconds);
         item.add("cost_s", robot.costSeconds);
         const VehicleSettings& vehicle = context.vehicle(robot.robot);
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
@@ -156,7 +157,7 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
     // Battery plans add their sortie columns at the end, so readers of the others see no change.
     const SortieLayer* sorties = sortieLayerOf(context.plan);
     std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts,"
-                       "turn_time_s";
+                       "turn_time_s,connector_time_s";
     text += sorties == nullptr ? "\n" : ",sorties,charges,charging_s,longest_sortie_s,out_of_range_area_m2\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
@@ -166,7 +167,8 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
                 internal::formatShortest(robot.lengthMetres) + "," +
                 internal::formatShortest(robot.timeSeconds) + "," + std::to_string(robot.turns) + "," +
                 internal::formatShortest(robot.costSeconds) + "," + std::to_string(mission.items) + "," +
-                std::to_string(mission.parts.size()) + "," + internal::formatShortest(robot.turnSeconds);
+                std::to_string(mission.parts.size()) + "," + internal::formatShortest(robot.turnSeconds) +
+                "," + internal::formatShortest(robot.connectorSeconds);
         if (sorties != nullptr)
             text += sortieColumns(context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
         text += "\n";

@@ -238,8 +238,11 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         auto* time = played != nullptr ? doneItem(*played)
                                        : numberItem(formatDuration(robot.timeSeconds), robot.timeSeconds);
         auto* turns = numberItem(QString::number(robot.turns), robot.turns);
-        const QString turning = tr("%1 of it lost slowing down for turns and speeding up again (turn_s)")
-                                    .arg(formatDuration(robot.turnSeconds));
+        QString turning = tr("%1 of it lost slowing down for turns and speeding up again (turn_s)")
+                              .arg(formatDuration(robot.turnSeconds));
+        if (robot.connectorSeconds > 0.0)
+            turning += tr("; %1 on slanting steps between cells of different sizes")
+                           .arg(formatDuration(robot.connectorSeconds));
         const QString fullSpeed =
             played != nullptr ? tr("%1 at full speed; ").arg(formatDuration(robot.timeSeconds)) : QString();
         time->setToolTip(fullSpeed + turning + chargingNote(*plan, robot.robot) +

@@ -175,6 +175,27 @@ double pausedSecondsBetween(const std::vector<PathPause>& pauses, std::size_t fi
     return waited;
 }
 
+double connectorSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
+    double seconds = 0.0;
+    for (std::size_t i = 1; i < waypoints.size(); ++i) {
+        const Waypoint& from = waypoints[i - 1];
+        const Waypoint& to = waypoints[i];
+        if (from.cell < 0 || to.cell < 0 || from.cell == to.cell ||
+            static_cast<std::size_t>(std::max(from.cell, to.cell)) >= graph.size())
+            continue;
+        const Cell& a = graph.cell(from.cell);
+        const Cell& b = graph.cell(to.cell);
+        if (a.span == b.span || !graph.areNeighbours(from.cell, to.cell))
+            continue;
+        // The cells' travel counts a quarter of each cell's side on the way out of one sub-cell and into
+        // the other; the step takes the rest (less, now and then, where the faster cell is the smaller).
+        seconds +=
+            travelSeconds(segmentLength(from, to), from.speedMetresPerSecond, to.speedMetresPerSecond) -
+            a.size / 4.0 / from.speedMetresPerSecond - b.size / 4.0 / to.speedMetresPerSecond;
+    }
+    return seconds;
+}
+
 void measurePath(CoveragePath& path, const CellGraph& graph) {
     double length = 0.0;
     for (std::size_t i = 1; i < path.waypoints.size(); ++i)
@@ -183,6 +204,7 @@ void measurePath(CoveragePath& path, const CellGraph& graph) {
     const PathSeconds seconds = fillCumulativeSeconds(path.waypoints, graph);
     path.timeSeconds = seconds.total + addPauses(path.waypoints, path.pauses);
     path.turnSeconds = seconds.turning;
+    path.connectorSeconds = connectorSeconds(path.waypoints, graph);
     path.turns = countTurns(path.waypoints);
     path.repeatedSubCellVisits = countRepeatedSubCellVisits(path, graph);
 }

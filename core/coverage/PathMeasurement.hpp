@@ -20,6 +20,14 @@ namespace mcpp {
 // sub-cell it began in. Points that are no sub-cell centre (a start point, say) are not visits.
 [[nodiscard]] int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph);
 
+// Seconds a path spends on steps between neighbouring cells of different sizes beyond what the cells'
+// travel counts for them (a quarter of each cell's side, at its speed): a sub-cell of a large cell and one
+// of a small cell beside it never lie in one line, so such a step slants. A step is timed half at each
+// end's speed, so where the smaller cell is faster a step may take a little less than that count; the
+// sum is what the paths spend beyond their cells' travel on such steps, the part of path time the lower
+// bound counts like turns.
+[[nodiscard]] double connectorSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph);
+
 // Seconds lost turning at `corner` from the way in (dx, dy) to the way out: the angle between them in
 // quarter turns, at the corner's cell's price per 90 degrees (none at a point in no cell).
 [[nodiscard]] double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX, double outY,

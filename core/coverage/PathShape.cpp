@@ -2,11 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace mcpp {
 
-void PathShape::add(double x, double y) {
+void PathShape::add(double x, double y, double speedMetresPerSecond, double turnSecondsPer90Degrees) {
     ++points_;
+    const double fromSpeed = lastSpeed_;
+    const double cornerPrice = lastTurnPrice_;
+    lastSpeed_ = speedMetresPerSecond;
+    lastTurnPrice_ = turnSecondsPer90Degrees;
     if (!havePoint_) {
         havePoint_ = true;
         lastX_ = x;
@@ -19,10 +24,18 @@ void PathShape::add(double x, double y) {
     lastY_ = y;
     const double length = std::sqrt(dx * dx + dy * dy);
     length_ += length;
+    if (fromSpeed > 0.0 && speedMetresPerSecond > 0.0)
+        seconds_ += length / 2.0 / fromSpeed + length / 2.0 / speedMetresPerSecond;
     if (length < 1e-9)
         return;
     const double ux = dx / length;
     const double uy = dy / length;
+    if (haveDirection_ && cornerPrice > 0.0) {
+        const double cross = directionX_ * uy - directionY_ * ux;
+        const double dot = directionX_ * ux + directionY_ * uy;
+        if (cross != 0.0 || dot <= 0.0) // most steps go straight on
+            seconds_ += std::abs(std::atan2(cross, dot)) / (std::numbers::pi / 2.0) * cornerPrice;
+    }
     if (haveDirection_ && std::abs(ux * directionY_ - uy * directionX_) +
                                   std::max(0.0, -(ux * directionX_ + uy * directionY_)) >
                               1e-6)

@@ -78,7 +78,12 @@ SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCe
     {
         const CellIndexScope local(index_, cells);
         const RegionAdjacency adjacency(graph_, cells, local);
-        edges = TurnMinimisingTree(adjacency, {}).edges();
+        if (candidatesFor(cells) > 1) {
+            const SizeChangeConnectors connectors(graph_, cells, adjacency);
+            edges = TurnMinimisingTree(adjacency, {}, &connectors).edges();
+        } else {
+            edges = TurnMinimisingTree(adjacency, {}).edges();
+        }
         rootNode = local[rootCell];
     } // the scope must clear the shared index before the cells move into the tree
     return SpanningTree(std::move(cells), rootNode, edges);

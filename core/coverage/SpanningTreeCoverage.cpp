@@ -24,6 +24,23 @@ ParameterSpec SpanningTreeCoverage::closedTourParameter() {
                             "Closed tours end where they start; open paths stop at the last cell");
 }
 
+namespace {
+
+// Walks are compared by time (travel and turns at their cells' price), then turns, then length: where
+// turns are free, the one that turns less.
+bool isQuicker(const PathShape& walk, const PathShape& than) {
+    constexpr double relativeMargin = 1e-9;
+    if (walk.seconds() < than.seconds() * (1.0 - relativeMargin))
+        return true;
+    if (walk.seconds() > than.seconds() * (1.0 + relativeMargin))
+        return false;
+    if (walk.turns() != than.turns())
+        return walk.turns() < than.turns();
+    return walk.lengthMetres() < than.lengthMetres() - 1e-9;
+}
+
+} // namespace
+
 std::pair<SpanningTree, PathShape> SpanningTreeCoverage::bestTree(const CellGraph& graph,
                                                                   const std::vector<int>& cells,
                                                                   int startCell, MapPoint start,
@@ -38,8 +55,7 @@ std::pair<SpanningTree, PathShape> SpanningTreeCoverage::bestTree(const CellGrap
     for (int candidate = 0; candidate < candidates; ++candidate) {
         SpanningTree tree = trees.candidate(candidate, cells, startCell);
         const PathShape shape = walker.walkShape(tree, start, closedTour_);
-        if (!haveBest || shape.turns() < bestShape.turns() ||
-            (shape.turns() == bestShape.turns() && shape.lengthMetres() < bestShape.lengthMetres() - 1e-9)) {
+        if (!haveBest || isQuicker(shape, bestShape)) {
             best = std::move(tree);
             bestShape = shape;
             haveBest = true;

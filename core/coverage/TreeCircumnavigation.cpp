@@ -41,30 +41,38 @@ class WaypointSink {
 };
 
 // Measures the path pathFromWalk would make of the walk: the start point first when the walk does not
-// begin there, and back to it at the end of a closed tour.
+// begin there (in the first point's cell), and back to it at the end of a closed tour.
 class ShapeSink {
   public:
-    ShapeSink(MapPoint start, bool closed) : start_(start), closed_(closed) {}
+    ShapeSink(const CellGraph& graph, MapPoint start, bool closed)
+        : graph_(graph), start_(start), closed_(closed) {}
     void push(const Waypoint& waypoint) {
         if (!haveFirst_) {
             haveFirst_ = true;
             first_ = waypoint;
             startIsOnWalk_ = std::hypot(waypoint.x - start_.x, waypoint.y - start_.y) < 1e-9;
             if (!startIsOnWalk_)
-                shape_.add(start_.x, start_.y);
+                add(start_, waypoint);
         }
         last_ = waypoint;
-        shape_.add(waypoint.x, waypoint.y);
+        add({waypoint.x, waypoint.y}, waypoint);
     }
     [[nodiscard]] const Waypoint& back() const { return last_; }
     [[nodiscard]] const Waypoint& front() const { return first_; }
     [[nodiscard]] PathShape finish() {
         if (haveFirst_ && closed_ && !startIsOnWalk_)
-            shape_.add(start_.x, start_.y);
+            add(start_, first_);
         return shape_;
     }
 
   private:
+    // A point, with the speed and turn price of the waypoint whose cell it lies in.
+    void add(MapPoint point, const Waypoint& inCell) {
+        shape_.add(point.x, point.y, inCell.speedMetresPerSecond,
+                   graph_.cell(inCell.cell).turnSecondsPer90Degrees);
+    }
+
+    const CellGraph& graph_;
     MapPoint start_;
     bool closed_;
     bool haveFirst_ = false;
@@ -154,7 +162,7 @@ std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPo
 }
 
 PathShape TreeCircumnavigation::walkShape(const SpanningTree& tree, MapPoint start, bool closed) {
-    ShapeSink sink(start, closed);
+    ShapeSink sink(graph_, start, closed);
     traverse(tree, start, closed, sink);
     return sink.finish();
 }

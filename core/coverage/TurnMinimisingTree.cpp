@@ -63,9 +63,10 @@ class DisjointSets {
 
 } // namespace
 
-TurnMinimisingTree::TurnMinimisingTree(const RegionAdjacency& adjacency, Options options)
-    : adjacency_(adjacency), options_(options), sides_(adjacency.nodeCount(), SideCounts{}),
-      inTree_(adjacency.edges().size(), 0) {
+TurnMinimisingTree::TurnMinimisingTree(const RegionAdjacency& adjacency, Options options,
+                                       const SizeChangeConnectors* connectors)
+    : adjacency_(adjacency), options_(options), connectors_(connectors),
+      sides_(adjacency.nodeCount(), SideCounts{}), inTree_(adjacency.edges().size(), 0) {
     joinRuns(straightRuns(adjacency));
     rootTree();
     for (int pass = 0; pass < options_.swapPasses; ++pass) {
@@ -97,6 +98,27 @@ int TurnMinimisingTree::turnChangeRemoving(int node, CellSide side) const {
 int TurnMinimisingTree::joinCost(int edge) const {
     const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
     return turnChangeAdding(e.first, e.sideOfFirst) + turnChangeAdding(e.second, oppositeSide(e.sideOfFirst));
+}
+
+// What adding an edge changes, for a swap: turns, or with connectors, seconds (turns at their cells'
+// price and the steps between cells of different sizes).
+double TurnMinimisingTree::swapCostAdding(int edge) {
+    if (connectors_ == nullptr)
+        return joinCost(edge);
+    const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
+    return turnChangeAdding(e.first, e.sideOfFirst) * connectors_->turnSeconds(e.first) +
+           turnChangeAdding(e.second, oppositeSide(e.sideOfFirst)) * connectors_->turnSeconds(e.second) +
+           connectors_->changeOnToggle(edge, inTree_);
+}
+
+double TurnMinimisingTree::swapCostRemoving(int edge) {
+    const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
+    const int first = turnChangeRemoving(e.first, e.sideOfFirst);
+    const int second = turnChangeRemoving(e.second, oppositeSide(e.sideOfFirst));
+    if (connectors_ == nullptr)
+        return first + second;
+    return first * connectors_->turnSeconds(e.first) + second * connectors_->turnSeconds(e.second) +
+           connectors_->changeOnToggle(edge, inTree_);
 }
 
 void TurnMinimisingTree::link(int edge) {
@@ -180,7 +202,7 @@ void TurnMinimisingTree::rootTree() {
     }
 }
 
-// Adds `edge` if dropping some tree edge of the cycle it closes lowers the turn count.
+// Adds `edge` if dropping some tree edge of the cycle it closes lowers the turn count (or the time).
 bool TurnMinimisingTree::trySwap(int edge) {
     const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
     const int u = e.first;
@@ -208,22 +230,20 @@ bool TurnMinimisingTree::trySwap(int edge) {
     }
     if (meeting < 0)
         return false;
-    const int adding = joinCost(edge);
+    const double adding = swapCostAdding(edge);
     link(edge);
-    int bestChange = 0;
+    double bestChange = 0.0;
     int bestChild = -1;
     for (int end : {u, v})
         for (int node = end; node != meeting; node = parent_[static_cast<std::size_t>(node)]) {
-            const auto& dropped =
-                adjacency_.edges()[static_cast<std::size_t>(parentEdge_[static_cast<std::size_t>(node)])];
-            const int change = turnChangeRemoving(dropped.first, dropped.sideOfFirst) +
-                               turnChangeRemoving(dropped.second, oppositeSide(dropped.sideOfFirst));
+            const double change = swapCostRemoving(parentEdge_[static_cast<std::size_t>(node)]);
             if (bestChild < 0 || change < bestChange) {
                 bestChange = change;
                 bestChild = node;
             }
         }
-    if (bestChild < 0 || adding + bestChange >= 0) {
+    // Turn counts are whole numbers; seconds need a margin so that rounding never swaps back and forth.
+    if (bestChild < 0 || adding + bestChange >= -1e-9) {
         unlink(edge);
         return false;
     }

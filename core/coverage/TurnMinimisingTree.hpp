@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/coverage/RegionAdjacency.hpp"
+#include "core/coverage/SizeChangeConnectors.hpp"
 
 #include <array>
 #include <cstdint>
@@ -14,7 +15,9 @@ namespace mcpp {
 // joined on all four, and never in a cell joined on two opposite sides only. The tree is built in three
 // steps: the fewest straight runs (straightRuns), joined where that adds the fewest turns (cheapest first,
 // costs updated as cells gain sides), then edge swaps that lower the count, each closing a cycle whose two
-// sides climb at most `cycleLimit` cells each, so the work stays linear in the region's size.
+// sides climb at most `cycleLimit` cells each, so the work stays linear in the region's size. Where cells
+// differ in size, the swaps weigh time instead: turns at their cells' price and the steps between cells of
+// different sizes (SizeChangeConnectors).
 class TurnMinimisingTree {
   public:
     struct Options {
@@ -22,7 +25,9 @@ class TurnMinimisingTree {
         int swapPasses = 2;
     };
 
-    explicit TurnMinimisingTree(const RegionAdjacency& adjacency, Options options);
+    // connectors: null where every cell has one size.
+    TurnMinimisingTree(const RegionAdjacency& adjacency, Options options,
+                       const SizeChangeConnectors* connectors = nullptr);
 
     // Tree edges as (node, node) pairs; a forest if the region is not connected.
     [[nodiscard]] std::vector<std::pair<int, int>> edges() const;
@@ -35,6 +40,8 @@ class TurnMinimisingTree {
     [[nodiscard]] int turnChangeAdding(int node, CellSide side) const;
     [[nodiscard]] int turnChangeRemoving(int node, CellSide side) const;
     [[nodiscard]] int joinCost(int edge) const;
+    [[nodiscard]] double swapCostAdding(int edge);
+    [[nodiscard]] double swapCostRemoving(int edge);
     void link(int edge);
     void unlink(int edge);
     void joinRuns(const std::vector<char>& inRuns);
@@ -44,6 +51,7 @@ class TurnMinimisingTree {
 
     const RegionAdjacency& adjacency_;
     Options options_;
+    const SizeChangeConnectors* connectors_;
     std::vector<SideCounts> sides_;
     std::vector<char> inTree_;
     std::vector<int> parent_;

@@ -35,6 +35,9 @@ struct CoveragePath {
     int turns = 0;
     int repeatedSubCellVisits = 0; // sub-cell centres passed again (not counting a closed tour's return)
     bool closed = true;
+    // The part of timeSeconds that steps between cells of different sizes take beyond their cells' travel
+    // (connectorSeconds in PathMeasurement).
+    double connectorSeconds = 0.0;
 };
 
 } // namespace mcpp

@@ -15,6 +15,7 @@ struct RobotMetrics {
     double turnSeconds = 0.0; // the part of timeSeconds lost to turns
     double costSeconds = 0.0; // allocation cost of its region
     int turns = 0;
+    double connectorSeconds = 0.0; // the part of timeSeconds spent slanting between cells of different sizes
 };
 
 // A robot that starts in a part of the map cut off from the largest part (by area) holding starts: it can
@@ -29,9 +30,10 @@ struct ConfinedRobot {
 struct PlanMetrics {
     std::vector<RobotMetrics> robots;
     double makespanSeconds = 0.0;
-    // No plan making these turns can finish sooner: the largest, over the map's connected parts holding
-    // starts, of the part's cells' travel time and its robots' turn time, divided by the robots starting
-    // in it. The ratio to it measures balance of real time; turns are counted apart.
+    // No plan making these turns and these steps between cells of different sizes can finish sooner: the
+    // largest, over the map's connected parts holding starts, of the part's cells' travel time and its
+    // robots' turn and connector time, divided by the robots starting in it. The ratio to it measures
+    // balance of real time; turns and connectors are counted apart.
     double lowerBoundSeconds = 0.0;
     std::vector<ConfinedRobot> confinedRobots; // robots outside the largest such part
     double ratio = 0.0;                        // makespan / lower bound

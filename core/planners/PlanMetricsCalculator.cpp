@@ -13,7 +13,7 @@ namespace mcpp {
 namespace {
 
 struct PartFigures {
-    double secondsNoPlanBeats = 0.0; // its cells' travel time and its robots' turn time
+    double secondsNoPlanBeats = 0.0; // its cells' travel time and its robots' turn and connector time
     double areaSquareMetres = 0.0;
 };
 
@@ -29,7 +29,8 @@ PartFigures figuresOf(const Plan& plan, const StartComponent& part) {
     }
     for (const int robot : part.robots)
         if (static_cast<std::size_t>(robot) < plan.paths.size())
-            figures.secondsNoPlanBeats += plan.paths[static_cast<std::size_t>(robot)].turnSeconds;
+            figures.secondsNoPlanBeats += plan.paths[static_cast<std::size_t>(robot)].turnSeconds +
+                                          plan.paths[static_cast<std::size_t>(robot)].connectorSeconds;
     return figures;
 }
 
@@ -91,7 +92,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     const std::size_t robots = plan.regions.startCell.size();
     metrics.robots.assign(robots, {});
     plan.regions.costSeconds.assign(robots, 0.0);
-    double secondsNoPlanBeats = 0.0; // the turns the paths make, and below the travel no plan beats
+    double secondsNoPlanBeats = 0.0; // the turns and connectors the paths make, and the travel no plan beats
     double cellTravelSeconds = 0.0;  // over every covered cell
     double covered = 0.0;
     double unreachable = 0.0;
@@ -122,7 +123,8 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
             robotMetrics.lengthMetres = path.lengthMetres;
             robotMetrics.timeSeconds = path.timeSeconds;
             robotMetrics.turnSeconds = path.turnSeconds;
-            secondsNoPlanBeats += path.turnSeconds;
+            robotMetrics.connectorSeconds = path.connectorSeconds;
+            secondsNoPlanBeats += path.turnSeconds + path.connectorSeconds;
             robotMetrics.turns = path.turns;
             repeats += static_cast<std::size_t>(path.repeatedSubCellVisits);
         }

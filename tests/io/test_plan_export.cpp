@@ -497,10 +497,10 @@ class PlanExportTest : public QObject {
         std::string header, line;
         std::getline(input, header);
         QCOMPARE(header, std::string("robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,"
-                                     "mission_parts,turn_time_s"));
+                                     "mission_parts,turn_time_s,connector_time_s"));
         std::getline(input, line);
         // Home, the first speed and five turning points (the straight top run's two inner points go).
-        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1,0"));
+        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1,0,0"));
     }
 
     void turningPointsDropOnlyCollinearPoints() {

@@ -360,7 +360,7 @@ double connectedPartsLowerBound(const Plan& plan) {
                 continue;
             ++robots;
             if (robot < plan.paths.size())
-                cost += plan.paths[robot].turnSeconds;
+                cost += plan.paths[robot].turnSeconds + plan.paths[robot].connectorSeconds;
         }
         if (robots > 0) {
             ++piecesWithStarts;
@@ -395,6 +395,31 @@ double turnSecondsAt(const CoveragePath& path, std::size_t i, const CellGraph& c
     return angle / (std::numbers::pi / 2.0) * cells.cell(here.cell).turnSecondsPer90Degrees;
 }
 
+// Steps between cells of different sizes that share a side, timed half at each end's speed, less a quarter
+// of each cell's side at its speed; worked out from the cells' squares, not the graph's links.
+double connectorSecondsOf(const CoveragePath& path, const CellGraph& cells) {
+    double seconds = 0.0;
+    for (std::size_t i = 1; i < path.waypoints.size(); ++i) {
+        const Waypoint& a = path.waypoints[i - 1];
+        const Waypoint& b = path.waypoints[i];
+        if (a.cell < 0 || b.cell < 0 || a.cell == b.cell)
+            continue;
+        const Cell& from = cells.cell(a.cell);
+        const Cell& to = cells.cell(b.cell);
+        const double tolerance = 1e-9 * std::max(from.size, to.size);
+        const double overlapX = std::min(from.maxX(), to.maxX()) - std::max(from.minX, to.minX);
+        const double overlapY = std::min(from.maxY(), to.maxY()) - std::max(from.minY, to.minY);
+        const bool shareSide = (std::abs(overlapX) < tolerance && overlapY > tolerance) ||
+                               (std::abs(overlapY) < tolerance && overlapX > tolerance);
+        if (from.size == to.size || !shareSide)
+            continue;
+        const double step = std::hypot(b.x - a.x, b.y - a.y);
+        seconds += step / 2.0 / a.speedMetresPerSecond + step / 2.0 / b.speedMetresPerSecond -
+                   from.size / 4.0 / a.speedMetresPerSecond - to.size / 4.0 / b.speedMetresPerSecond;
+    }
+    return seconds;
+}
+
 double turnSecondsOf(const CoveragePath& path, const CellGraph& cells) {
     double seconds = 0.0;
     for (std::size_t i = 0; i < path.waypoints.size(); ++i)
@@ -405,7 +430,7 @@ double turnSecondsOf(const CoveragePath& path, const CellGraph& cells) {
 std::vector<std::string> checkTimes(const Plan& plan) {
     std::vector<std::string> violations;
     double totalCost = 0.0;
-    double totalTravel = 0.0; // the covered cells' travel time, and below, the turns' time
+    double totalTravel = 0.0; // the covered cells' travel time, and below, the turns' and connectors'
     for (std::size_t cell = 0; cell < plan.regions.robotOfCell.size(); ++cell) {
         if (plan.regions.robotOfCell[cell] < 0)
             continue;
@@ -440,6 +465,11 @@ std::vector<std::string> checkTimes(const Plan& plan) {
             violations.push_back(
                 text("robot " + std::to_string(path.robot) + " turn time", path.turnSeconds, turning));
         totalTravel += turning;
+        const double connectors = connectorSecondsOf(path, plan.cells);
+        if (std::abs(connectors - path.connectorSeconds) > 1e-6 * std::max(1.0, connectors))
+            violations.push_back(text("robot " + std::to_string(path.robot) + " connector time",
+                                      path.connectorSeconds, connectors));
+        totalTravel += connectors;
         for (std::size_t i = 1; i < path.waypoints.size(); ++i) {
             const Waypoint& a = path.waypoints[i - 1];
             const Waypoint& b = path.waypoints[i];
@@ -475,7 +505,7 @@ std::vector<std::string> checkTimes(const Plan& plan) {
         double turning = 0.0;
         int turns = 0;
         for (const CoveragePath& path : plan.paths) {
-            turning += path.turnSeconds;
+            turning += path.turnSeconds + path.connectorSeconds;
             turns += path.turns;
         }
         lowerBound = (detection->summary().travelSecondsNoPlanBeats(turns, plan.paths.size()) + turning) /

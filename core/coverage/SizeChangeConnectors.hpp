@@ -1,0 +1,45 @@
+#pragma once
+
+#include "core/coverage/RegionAdjacency.hpp"
+#include "core/model/CellGraph.hpp"
+
+#include <vector>
+
+namespace mcpp {
+
+// The time a walk round a spanning tree spends stepping between cells of different sizes beyond one pass
+// of each sub-cell. Going round a large cell, the walk passes each side from one corner sub-cell to the
+// next; a smaller tree neighbour on that side is a detour in at its near sub-cell and out at its far one,
+// and those steps run slantwise. With one of two half-side neighbours joined, the way back to the large
+// cell's next corner is a diagonal of 1.4 times the straight step; with both joined, each step is within
+// 6 % of it. The cost of a side therefore depends on which of its smaller neighbours the tree joins; it is
+// charged to the larger cell of each pair (equal cells step straight).
+class SizeChangeConnectors {
+  public:
+    // cells: the region's graph cells, in the adjacency's node order.
+    SizeChangeConnectors(const CellGraph& graph, const std::vector<int>& cells,
+                         const RegionAdjacency& adjacency)
+        : graph_(graph), cells_(cells), adjacency_(adjacency) {}
+
+    // The larger cell of an edge's two, whose side carries the edge's connector time; -1 for equal cells.
+    [[nodiscard]] int largerEnd(int edge) const;
+    // Seconds beyond one pass of each sub-cell that the walk spends on `side` of `node`, with the tree's
+    // edges marked in `inTree`.
+    [[nodiscard]] double sideSeconds(int node, CellSide side, const std::vector<char>& inTree) const;
+    // How sideSeconds at the edge's larger end changes when the edge goes in or out of the tree.
+    [[nodiscard]] double changeOnToggle(int edge, std::vector<char>& inTree) const;
+    // What a 90-degree turn costs in the node's cell (a small floor, so that turns still break ties when
+    // they are free).
+    [[nodiscard]] double turnSeconds(int node) const;
+
+  private:
+    [[nodiscard]] const Cell& cellOf(int node) const {
+        return graph_.cell(cells_[static_cast<std::size_t>(node)]);
+    }
+
+    const CellGraph& graph_;
+    const std::vector<int>& cells_;
+    const RegionAdjacency& adjacency_;
+};
+
+} // namespace mcpp
