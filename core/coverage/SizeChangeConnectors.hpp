@@ -3,6 +3,7 @@
 #include "core/coverage/RegionAdjacency.hpp"
 #include "core/model/CellGraph.hpp"
 
+#include <array>
 #include <vector>
 
 namespace mcpp {
@@ -18,8 +19,7 @@ class SizeChangeConnectors {
   public:
     // cells: the region's graph cells, in the adjacency's node order.
     SizeChangeConnectors(const CellGraph& graph, const std::vector<int>& cells,
-                         const RegionAdjacency& adjacency)
-        : graph_(graph), cells_(cells), adjacency_(adjacency) {}
+                         const RegionAdjacency& adjacency);
 
     // The larger cell of an edge's two, whose side carries the edge's connector time; -1 for equal cells.
     [[nodiscard]] int largerEnd(int edge) const;
@@ -27,12 +27,26 @@ class SizeChangeConnectors {
     // edges marked in `inTree`.
     [[nodiscard]] double sideSeconds(int node, CellSide side, const std::vector<char>& inTree) const;
     // How sideSeconds at the edge's larger end changes when the edge goes in or out of the tree.
-    [[nodiscard]] double changeOnToggle(int edge, std::vector<char>& inTree) const;
+    [[nodiscard]] double changeOnToggle(int edge, const std::vector<char>& inTree) const;
     // What a 90-degree turn costs in the node's cell (a small floor, so that turns still break ties when
     // they are free).
     [[nodiscard]] double turnSeconds(int node) const;
 
   private:
+    struct Neighbour {
+        double along = 0.0; // position in the walk's order
+        int node = 0;
+        int edge = 0;
+    };
+    using Neighbours = std::array<Neighbour, 16>;
+
+    // The smaller neighbours on a side joined in `inTree`, and the one by `alsoEdge` (-1: none), in the
+    // walk's order; returns how many.
+    std::size_t smallerNeighbours(int node, CellSide side, const std::vector<char>& inTree, int alsoEdge,
+                                  Neighbours& out) const;
+    // The side's seconds with `neighbours` joined, all but the one by `leftOutEdge` (-1: none).
+    [[nodiscard]] double passSeconds(int node, CellSide side, const Neighbours& neighbours, std::size_t count,
+                                     int leftOutEdge) const;
     [[nodiscard]] const Cell& cellOf(int node) const {
         return graph_.cell(cells_[static_cast<std::size_t>(node)]);
     }
@@ -40,6 +54,9 @@ class SizeChangeConnectors {
     const CellGraph& graph_;
     const std::vector<int>& cells_;
     const RegionAdjacency& adjacency_;
+    // By edge and by node: swaps ask for them at every edge of a cycle.
+    std::vector<int> largerEnd_;
+    std::vector<double> turnSeconds_;
 };
 
 } // namespace mcpp

@@ -54,7 +54,8 @@ std::pair<SpanningTree, PathShape> SpanningTreeCoverage::bestTree(const CellGrap
     const int candidates = trees.candidatesFor(cells);
     for (int candidate = 0; candidate < candidates; ++candidate) {
         SpanningTree tree = trees.candidate(candidate, cells, startCell);
-        const PathShape shape = walker.walkShape(tree, start, closedTour_);
+        // A lone candidate needs no time: its shape only sizes the path.
+        const PathShape shape = walker.walkShape(tree, start, closedTour_, candidates > 1);
         if (!haveBest || isQuicker(shape, bestShape)) {
             best = std::move(tree);
             bestShape = shape;

@@ -44,8 +44,8 @@ class WaypointSink {
 // begin there (in the first point's cell), and back to it at the end of a closed tour.
 class ShapeSink {
   public:
-    ShapeSink(const CellGraph& graph, MapPoint start, bool closed)
-        : graph_(graph), start_(start), closed_(closed) {}
+    ShapeSink(const CellGraph& graph, MapPoint start, bool closed, bool timed)
+        : graph_(graph), start_(start), closed_(closed), timed_(timed) {}
     void push(const Waypoint& waypoint) {
         if (!haveFirst_) {
             haveFirst_ = true;
@@ -68,13 +68,17 @@ class ShapeSink {
   private:
     // A point, with the speed and turn price of the waypoint whose cell it lies in.
     void add(MapPoint point, const Waypoint& inCell) {
-        shape_.add(point.x, point.y, inCell.speedMetresPerSecond,
-                   graph_.cell(inCell.cell).turnSecondsPer90Degrees);
+        if (timed_)
+            shape_.add(point.x, point.y, inCell.speedMetresPerSecond,
+                       graph_.cell(inCell.cell).turnSecondsPer90Degrees);
+        else
+            shape_.add(point.x, point.y);
     }
 
     const CellGraph& graph_;
     MapPoint start_;
     bool closed_;
+    bool timed_;
     bool haveFirst_ = false;
     bool startIsOnWalk_ = true;
     Waypoint first_;
@@ -161,8 +165,8 @@ std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPo
     return path;
 }
 
-PathShape TreeCircumnavigation::walkShape(const SpanningTree& tree, MapPoint start, bool closed) {
-    ShapeSink sink(graph_, start, closed);
+PathShape TreeCircumnavigation::walkShape(const SpanningTree& tree, MapPoint start, bool closed, bool timed) {
+    ShapeSink sink(graph_, start, closed, timed);
     traverse(tree, start, closed, sink);
     return sink.finish();
 }

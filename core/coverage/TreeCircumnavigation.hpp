@@ -24,9 +24,11 @@ class TreeCircumnavigation {
     // of waypoints that outgrows its vector costs a copy and twice the memory.
     [[nodiscard]] std::vector<Waypoint> walk(const SpanningTree& tree, MapPoint start, bool closed,
                                              std::size_t capacity = 0);
-    // The length and turns of the path pathFromWalk would make of walk(tree, start, closed), without
-    // storing it: choosing between trees this way keeps one path in memory instead of two.
-    [[nodiscard]] PathShape walkShape(const SpanningTree& tree, MapPoint start, bool closed);
+    // The length and turns of the path pathFromWalk would make of walk(tree, start, closed), and with
+    // `timed` its time, without storing it: choosing between trees this way keeps one path in memory
+    // instead of two.
+    [[nodiscard]] PathShape walkShape(const SpanningTree& tree, MapPoint start, bool closed,
+                                      bool timed = true);
     // Waypoints of the last walk that pass a cell again to bridge cells that do not touch.
     [[nodiscard]] int bridgeVisits() const { return bridgeVisits_; }
 

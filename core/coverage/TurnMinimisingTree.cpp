@@ -106,8 +106,8 @@ double TurnMinimisingTree::swapCostAdding(int edge) {
     if (connectors_ == nullptr)
         return joinCost(edge);
     const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
-    return turnChangeAdding(e.first, e.sideOfFirst) * connectors_->turnSeconds(e.first) +
-           turnChangeAdding(e.second, oppositeSide(e.sideOfFirst)) * connectors_->turnSeconds(e.second) +
+    return turnSecondsOf(e.first, turnChangeAdding(e.first, e.sideOfFirst)) +
+           turnSecondsOf(e.second, turnChangeAdding(e.second, oppositeSide(e.sideOfFirst))) +
            connectors_->changeOnToggle(edge, inTree_);
 }
 
@@ -117,8 +117,12 @@ double TurnMinimisingTree::swapCostRemoving(int edge) {
     const int second = turnChangeRemoving(e.second, oppositeSide(e.sideOfFirst));
     if (connectors_ == nullptr)
         return first + second;
-    return first * connectors_->turnSeconds(e.first) + second * connectors_->turnSeconds(e.second) +
+    return turnSecondsOf(e.first, first) + turnSecondsOf(e.second, second) +
            connectors_->changeOnToggle(edge, inTree_);
+}
+
+double TurnMinimisingTree::turnSecondsOf(int node, int turns) const {
+    return turns == 0 ? 0.0 : turns * connectors_->turnSeconds(node);
 }
 
 void TurnMinimisingTree::link(int edge) {

@@ -42,6 +42,7 @@ class TurnMinimisingTree {
     [[nodiscard]] int joinCost(int edge) const;
     [[nodiscard]] double swapCostAdding(int edge);
     [[nodiscard]] double swapCostRemoving(int edge);
+    [[nodiscard]] double turnSecondsOf(int node, int turns) const;
     void link(int edge);
     void unlink(int edge);
     void joinRuns(const std::vector<char>& inRuns);
