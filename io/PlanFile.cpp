@@ -286,7 +286,7 @@ void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths, con
 }
 
 std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph) {
-    std::vector<CoveragePath> paths(in.getCount(46));
+    std::vector<CoveragePath> paths(in.getCount(54));
     for (CoveragePath& path : paths) {
         path.robot = in.get<int>();
         path.lengthMetres = in.get<double>();
@@ -330,7 +330,7 @@ void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
 
 PlanMetrics getMetrics(CompressedReader& in) {
     PlanMetrics metrics;
-    metrics.robots.resize(in.getCount(52));
+    metrics.robots.resize(in.getCount(60));
     for (RobotMetrics& robot : metrics.robots) {
         robot.robot = in.get<int>();
         robot.cells = in.get<int>();

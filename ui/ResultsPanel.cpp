@@ -74,6 +74,18 @@ QTableWidgetItem* sortiesItem(const Plan& plan, const RobotSorties& robot) {
     return item;
 }
 
+// Where a path steps between cells of different sizes, whose sub-cells never line up: what those steps take
+// beyond the cells' own travel (a second or more either way; it can be less where the small cells are
+// faster).
+QString connectorNote(const RobotMetrics& robot) {
+    if (std::abs(robot.connectorSeconds) < 1.0)
+        return {};
+    return robot.connectorSeconds > 0.0 ? QObject::tr("; %1 more on steps between cells of different sizes")
+                                              .arg(ResultsPanel::formatDuration(robot.connectorSeconds))
+                                        : QObject::tr("; %1 less on steps between cells of different sizes")
+                                              .arg(ResultsPanel::formatDuration(-robot.connectorSeconds));
+}
+
 // For a robot on a battery: the part of its time spent at the charger.
 QString chargingNote(const Plan& plan, int robot) {
     if (robot < 0 || static_cast<std::size_t>(robot) >= plan.paths.size())
@@ -238,16 +250,13 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         auto* time = played != nullptr ? doneItem(*played)
                                        : numberItem(formatDuration(robot.timeSeconds), robot.timeSeconds);
         auto* turns = numberItem(QString::number(robot.turns), robot.turns);
-        QString turning = tr("%1 of it lost slowing down for turns and speeding up again (turn_s)")
-                              .arg(formatDuration(robot.turnSeconds));
-        if (robot.connectorSeconds > 0.0)
-            turning += tr("; %1 on slanting steps between cells of different sizes")
-                           .arg(formatDuration(robot.connectorSeconds));
+        const QString turnNote = tr("%1 of it lost slowing down for turns and speeding up again (turn_s)")
+                                     .arg(formatDuration(robot.turnSeconds));
         const QString fullSpeed =
             played != nullptr ? tr("%1 at full speed; ").arg(formatDuration(robot.timeSeconds)) : QString();
-        time->setToolTip(fullSpeed + turning + chargingNote(*plan, robot.robot) +
+        time->setToolTip(fullSpeed + turnNote + connectorNote(robot) + chargingNote(*plan, robot.robot) +
                          (played != nullptr ? QString() : completionNote(*plan, robot.robot)));
-        turns->setToolTip(turning);
+        turns->setToolTip(turnNote);
         table_->setItem(r, timeColumn, time);
         table_->setItem(r, 5, turns);
         if (sorties != nullptr && row < sorties->robots().size())

@@ -187,11 +187,8 @@ double connectorSeconds(const std::vector<Waypoint>& waypoints, const CellGraph&
         const Cell& b = graph.cell(to.cell);
         if (a.span == b.span || !graph.areNeighbours(from.cell, to.cell))
             continue;
-        // The cells' travel counts a quarter of each cell's side on the way out of one sub-cell and into
-        // the other; the step takes the rest (less, now and then, where the faster cell is the smaller).
-        seconds +=
-            travelSeconds(segmentLength(from, to), from.speedMetresPerSecond, to.speedMetresPerSecond) -
-            a.size / 4.0 / from.speedMetresPerSecond - b.size / 4.0 / to.speedMetresPerSecond;
+        seconds += secondsBeyondCellTravel(segmentLength(from, to), a.size, from.speedMetresPerSecond, b.size,
+                                           to.speedMetresPerSecond);
     }
     return seconds;
 }

@@ -20,12 +20,16 @@ namespace mcpp {
 // sub-cell it began in. Points that are no sub-cell centre (a start point, say) are not visits.
 [[nodiscard]] int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph);
 
-// Seconds a path spends on steps between neighbouring cells of different sizes beyond what the cells'
-// travel counts for them (a quarter of each cell's side, at its speed): a sub-cell of a large cell and one
-// of a small cell beside it never lie in one line, so such a step slants. A step is timed half at each
-// end's speed, so where the smaller cell is faster a step may take a little less than that count; the
-// sum is what the paths spend beyond their cells' travel on such steps, the part of path time the lower
-// bound counts like turns.
+// What a step between sub-cell centres takes beyond the quarter of each cell's side, at its speed, that
+// the cells' travel counts for it (the step is timed half at each end's speed, so this may be negative).
+[[nodiscard]] inline double secondsBeyondCellTravel(double lengthMetres, double fromCellSize,
+                                                    double fromSpeed, double toCellSize, double toSpeed) {
+    return travelSeconds(lengthMetres, fromSpeed, toSpeed) - fromCellSize / 4.0 / fromSpeed -
+           toCellSize / 4.0 / toSpeed;
+}
+
+// secondsBeyondCellTravel over a path's steps between neighbouring cells of different sizes, whose sub-cells
+// never lie in one line: the part of path time the lower bound counts like turns.
 [[nodiscard]] double connectorSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph);
 
 // Seconds lost turning at `corner` from the way in (dx, dy) to the way out: the angle between them in

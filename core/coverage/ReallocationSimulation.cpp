@@ -132,7 +132,7 @@ RegionAllocation ReallocationSimulation::firstDivision(const CellGraph& graph,
     return regions;
 }
 
-// Each region's MCPP-MLCT tree (the candidate whose walk turns least), as the walks' plan: without events
+// Each region's MCPP-MLCT tree (the candidate whose walk is quickest), as the walks' plan: without events
 // they drive it as the static plan would.
 void ReallocationSimulation::planTrees(const std::vector<int>& startCells,
                                        const std::vector<MapPoint>& starts) {

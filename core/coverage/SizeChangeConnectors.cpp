@@ -1,5 +1,7 @@
 #include "core/coverage/SizeChangeConnectors.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -32,12 +34,16 @@ SidePassage passageOf(CellSide side) {
     return {SubCell::SouthWest, SubCell::SouthEast, SubCell::NorthWest, SubCell::NorthEast, true, 1.0};
 }
 
-// A step's length beyond one sub-cell's half side at each end: what a straight step between sub-cells
-// of these cells would be.
-double excessMetres(MapPoint from, double fromCellSize, MapPoint to, double toCellSize) {
+double speedOf(const Cell& cell) {
+    return cell.speedMetresPerSecond > 0.0 ? cell.speedMetresPerSecond : 1.0;
+}
+
+// A step from a sub-cell centre of one cell to one of another, timed as paths are beyond the cells' travel.
+double stepSeconds(MapPoint from, const Cell& fromCell, MapPoint to, const Cell& toCell) {
     const double dx = to.x - from.x;
     const double dy = to.y - from.y;
-    return std::sqrt(dx * dx + dy * dy) - (fromCellSize + toCellSize) / 4.0;
+    return secondsBeyondCellTravel(std::sqrt(dx * dx + dy * dy), fromCell.size, speedOf(fromCell),
+                                   toCell.size, speedOf(toCell));
 }
 
 } // namespace
@@ -64,56 +70,51 @@ int SizeChangeConnectors::largerEnd(int edge) const {
     return largerEnd_[static_cast<std::size_t>(edge)];
 }
 
-std::size_t SizeChangeConnectors::smallerNeighbours(int node, CellSide side, const std::vector<char>& inTree,
-                                                    int alsoEdge, Neighbours& out) const {
+const std::vector<SizeChangeConnectors::Neighbour>&
+SizeChangeConnectors::smallerNeighbours(int node, CellSide side, const std::vector<char>& inTree,
+                                        int alsoEdge) const {
     const int span = cellOf(node).span;
     const SidePassage passage = passageOf(side);
-    std::size_t count = 0;
+    std::vector<Neighbour>& found = neighbours_;
+    found.clear();
     for (const auto& incidence : adjacency_.incident(node)) {
         if (incidence.side != side ||
             (inTree[static_cast<std::size_t>(incidence.edge)] == 0 && incidence.edge != alsoEdge))
             continue;
         const Cell& other = cellOf(incidence.other);
-        if (other.span >= span || count == out.size())
+        if (other.span >= span)
             continue;
         const double along = (passage.alongX ? other.centreX() : other.centreY()) * passage.sign;
-        // Insertion in the walk's order: a side holds a few neighbours at most.
-        std::size_t at = count++;
-        for (; at > 0 && out[at - 1].along > along; --at)
-            out[at] = out[at - 1];
-        out[at] = {along, incidence.other, incidence.edge};
+        // Insertion in the walk's order: a side holds a few neighbours, as many as its size over theirs.
+        found.push_back({along, incidence.other, incidence.edge});
+        for (std::size_t at = found.size() - 1; at > 0 && found[at - 1].along > along; --at)
+            std::swap(found[at], found[at - 1]);
     }
-    return count;
+    return found;
 }
 
-double SizeChangeConnectors::passSeconds(int node, CellSide side, const Neighbours& neighbours,
-                                         std::size_t count, int leftOutEdge) const {
+double SizeChangeConnectors::passSeconds(int node, CellSide side, const std::vector<Neighbour>& neighbours,
+                                         int leftOutEdge) const {
     const Cell& self = cellOf(node);
     const SidePassage passage = passageOf(side);
-    double excess = 0.0;
+    double seconds = 0.0;
     MapPoint from = self.subCellCentre(passage.first);
-    double fromSize = self.size;
-    bool any = false;
-    for (std::size_t i = 0; i < count; ++i) {
-        if (neighbours[i].edge == leftOutEdge)
+    const Cell* fromCell = &self;
+    for (const Neighbour& neighbour : neighbours) {
+        if (neighbour.edge == leftOutEdge)
             continue;
-        const Cell& other = cellOf(neighbours[i].node);
-        excess += excessMetres(from, fromSize, other.subCellCentre(passage.entry), other.size);
+        const Cell& other = cellOf(neighbour.node);
+        seconds += stepSeconds(from, *fromCell, other.subCellCentre(passage.entry), other);
         from = other.subCellCentre(passage.exit);
-        fromSize = other.size;
-        any = true;
+        fromCell = &other;
     }
-    if (!any)
+    if (fromCell == &self)
         return 0.0;
-    excess += excessMetres(from, fromSize, self.subCellCentre(passage.last), self.size);
-    const double speed = self.speedMetresPerSecond > 0.0 ? self.speedMetresPerSecond : 1.0;
-    return excess / speed;
+    return seconds + stepSeconds(from, *fromCell, self.subCellCentre(passage.last), self);
 }
 
 double SizeChangeConnectors::sideSeconds(int node, CellSide side, const std::vector<char>& inTree) const {
-    Neighbours neighbours;
-    const std::size_t count = smallerNeighbours(node, side, inTree, -1, neighbours);
-    return passSeconds(node, side, neighbours, count, -1);
+    return passSeconds(node, side, smallerNeighbours(node, side, inTree, -1), -1);
 }
 
 double SizeChangeConnectors::changeOnToggle(int edge, const std::vector<char>& inTree) const {
@@ -123,10 +124,9 @@ double SizeChangeConnectors::changeOnToggle(int edge, const std::vector<char>& i
     const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
     const CellSide side = larger == e.first ? e.sideOfFirst : oppositeSide(e.sideOfFirst);
     // The side's joined neighbours and this edge's, costed with and without it, from one look round.
-    Neighbours neighbours;
-    const std::size_t count = smallerNeighbours(larger, side, inTree, edge, neighbours);
-    const double with = passSeconds(larger, side, neighbours, count, -1);
-    const double without = passSeconds(larger, side, neighbours, count, edge);
+    const std::vector<Neighbour>& neighbours = smallerNeighbours(larger, side, inTree, edge);
+    const double with = passSeconds(larger, side, neighbours, -1);
+    const double without = passSeconds(larger, side, neighbours, edge);
     return inTree[static_cast<std::size_t>(edge)] != 0 ? without - with : with - without;
 }
 

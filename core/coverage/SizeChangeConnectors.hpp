@@ -3,18 +3,19 @@
 #include "core/coverage/RegionAdjacency.hpp"
 #include "core/model/CellGraph.hpp"
 
-#include <array>
 #include <vector>
 
 namespace mcpp {
 
-// The time a walk round a spanning tree spends stepping between cells of different sizes beyond one pass
-// of each sub-cell. Going round a large cell, the walk passes each side from one corner sub-cell to the
-// next; a smaller tree neighbour on that side is a detour in at its near sub-cell and out at its far one,
-// and those steps run slantwise. With one of two half-side neighbours joined, the way back to the large
-// cell's next corner is a diagonal of 1.4 times the straight step; with both joined, each step is within
-// 6 % of it. The cost of a side therefore depends on which of its smaller neighbours the tree joins; it is
-// charged to the larger cell of each pair (equal cells step straight).
+// The time a walk round a spanning tree spends stepping between cells of different sizes beyond their
+// cells' travel (secondsBeyondCellTravel, as paths measure it). Going round a large cell, the walk passes
+// each side from one corner sub-cell to the next; a smaller tree neighbour on that side is a detour in at its
+// near sub-cell and out at its far one, and those steps run slantwise. With one of two half-side neighbours
+// joined, the way back to the large cell's next corner is a diagonal of 1.4 times the straight step; with
+// both joined, each step is within 6 % of it. The cost of a side therefore depends on which of its smaller
+// neighbours the tree joins; it is charged to the larger cell of each pair (equal cells step straight). Two
+// joined neighbours that do not touch are costed as one step, where the walk bridges through the cells
+// between them.
 class SizeChangeConnectors {
   public:
     // cells: the region's graph cells, in the adjacency's node order.
@@ -23,8 +24,8 @@ class SizeChangeConnectors {
 
     // The larger cell of an edge's two, whose side carries the edge's connector time; -1 for equal cells.
     [[nodiscard]] int largerEnd(int edge) const;
-    // Seconds beyond one pass of each sub-cell that the walk spends on `side` of `node`, with the tree's
-    // edges marked in `inTree`.
+    // Seconds beyond its cells' travel that the walk spends on `side` of `node`, with the tree's edges
+    // marked in `inTree`.
     [[nodiscard]] double sideSeconds(int node, CellSide side, const std::vector<char>& inTree) const;
     // How sideSeconds at the edge's larger end changes when the edge goes in or out of the tree.
     [[nodiscard]] double changeOnToggle(int edge, const std::vector<char>& inTree) const;
@@ -38,14 +39,13 @@ class SizeChangeConnectors {
         int node = 0;
         int edge = 0;
     };
-    using Neighbours = std::array<Neighbour, 16>;
 
     // The smaller neighbours on a side joined in `inTree`, and the one by `alsoEdge` (-1: none), in the
-    // walk's order; returns how many.
-    std::size_t smallerNeighbours(int node, CellSide side, const std::vector<char>& inTree, int alsoEdge,
-                                  Neighbours& out) const;
+    // walk's order, in a buffer the next call reuses.
+    const std::vector<Neighbour>& smallerNeighbours(int node, CellSide side, const std::vector<char>& inTree,
+                                                    int alsoEdge) const;
     // The side's seconds with `neighbours` joined, all but the one by `leftOutEdge` (-1: none).
-    [[nodiscard]] double passSeconds(int node, CellSide side, const Neighbours& neighbours, std::size_t count,
+    [[nodiscard]] double passSeconds(int node, CellSide side, const std::vector<Neighbour>& neighbours,
                                      int leftOutEdge) const;
     [[nodiscard]] const Cell& cellOf(int node) const {
         return graph_.cell(cells_[static_cast<std::size_t>(node)]);
@@ -57,6 +57,7 @@ class SizeChangeConnectors {
     // By edge and by node: swaps ask for them at every edge of a cycle.
     std::vector<int> largerEnd_;
     std::vector<double> turnSeconds_;
+    mutable std::vector<Neighbour> neighbours_; // smallerNeighbours' buffer: one tree's swaps, one thread
 };
 
 } // namespace mcpp

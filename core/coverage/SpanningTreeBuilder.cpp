@@ -2,6 +2,7 @@
 
 #include "core/coverage/CellIndexScope.hpp"
 #include "core/coverage/RegionAdjacency.hpp"
+#include "core/coverage/SizeChangeConnectors.hpp"
 #include "core/coverage/TurnMinimisingTree.hpp"
 
 #include <algorithm>
@@ -78,7 +79,7 @@ SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCe
     {
         const CellIndexScope local(index_, cells);
         const RegionAdjacency adjacency(graph_, cells, local);
-        if (candidatesFor(cells) > 1) {
+        if (cellsDifferInSize(cells)) {
             const SizeChangeConnectors connectors(graph_, cells, adjacency);
             edges = TurnMinimisingTree(adjacency, {}, &connectors).edges();
         } else {
@@ -89,9 +90,13 @@ SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCe
     return SpanningTree(std::move(cells), rootNode, edges);
 }
 
-int SpanningTreeBuilder::candidatesFor(const std::vector<int>& cells) const {
+bool SpanningTreeBuilder::cellsDifferInSize(const std::vector<int>& cells) const {
     const auto differs = [&](int cell) { return graph_.cell(cell).span != graph_.cell(cells.front()).span; };
-    return !cells.empty() && std::any_of(cells.begin(), cells.end(), differs) ? candidateCount : 1;
+    return !cells.empty() && std::any_of(cells.begin(), cells.end(), differs);
+}
+
+int SpanningTreeBuilder::candidatesFor(const std::vector<int>& cells) const {
+    return cellsDifferInSize(cells) ? candidateCount : 1;
 }
 
 SpanningTree SpanningTreeBuilder::candidate(int which, std::vector<int> cells, int rootCell) const {

@@ -21,15 +21,17 @@ class SpanningTreeBuilder {
     [[nodiscard]] SpanningTree preferring(std::vector<int> cells, int rootCell,
                                           EdgeDirection preferred) const;
 
-    // A tree that turns little (TurnMinimisingTree): straight runs joined where that adds the fewest turns.
+    // A tree that turns little (TurnMinimisingTree): straight runs joined where that adds the fewest turns;
+    // where cells differ in size, its swaps weigh time, the steps between sizes included.
     [[nodiscard]] SpanningTree fewestTurns(std::vector<int> cells, int rootCell) const;
 
-    // The trees coverage planners choose among by the turns of their walks: fewestTurns first, then
+    // The trees coverage planners choose among by the time of their walks: fewestTurns first, then
     // preferring east-west and north-south. On one cell size fewestTurns won every region of the benchmarks,
     // so the others are built only where cells differ in size; there they win some regions (a forest map of
     // 4.8 M cells: 54 990 turns with fewestTurns alone, 50 746 with the best of the three).
     static constexpr int candidateCount = 3;
     [[nodiscard]] int candidatesFor(const std::vector<int>& cells) const;
+    [[nodiscard]] bool cellsDifferInSize(const std::vector<int>& cells) const;
     [[nodiscard]] SpanningTree candidate(int which, std::vector<int> cells, int rootCell) const;
 
     // Spiral-STC (Gabriely & Rimon): a depth-first tree grown from the start, each cell scanning its

@@ -11,7 +11,7 @@ namespace mcpp {
 
 // Improved STC on mixed-size cells (spec section 5): a spanning tree over each region from its start cell,
 // circumnavigated counter-clockwise through the centres of every cell's four sub-cells. Each region tries
-// the builder's candidate trees (the turn-minimising one first) and keeps the walk with the fewest turns.
+// the builder's candidate trees (the turn-minimising one first) and keeps the quickest walk.
 class SpanningTreeCoverage final : public CoveragePathPlanner {
   public:
     // closedTour: tours end where they start; otherwise paths stop at the last sub-cell.
@@ -23,13 +23,14 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                  const std::vector<MapPoint>& starts,
                                                  const ProgressReporter& progress) const override;
 
-    // One robot's path over its region's cells: the fewest-turn candidate tree's. scratchIndex: one int per
+    // One robot's path over its region's cells: the quickest candidate tree's. scratchIndex: one int per
     // graph cell, all -1, left so.
     [[nodiscard]] CoveragePath regionPath(const CellGraph& graph, const std::vector<int>& cells,
                                           int startCell, int robot, MapPoint start,
                                           std::vector<int>& scratchIndex) const;
 
-    // The candidate tree whose walk turns least (then is shortest), with that walk's shape.
+    // The candidate tree whose walk is quickest (travel and turns; then turns least, then is shortest), with
+    // that walk's shape.
     [[nodiscard]] std::pair<SpanningTree, PathShape> bestTree(const CellGraph& graph,
                                                               const std::vector<int>& cells, int startCell,
                                                               MapPoint start,

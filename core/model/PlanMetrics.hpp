@@ -15,7 +15,7 @@ struct RobotMetrics {
     double turnSeconds = 0.0; // the part of timeSeconds lost to turns
     double costSeconds = 0.0; // allocation cost of its region
     int turns = 0;
-    double connectorSeconds = 0.0; // the part of timeSeconds spent slanting between cells of different sizes
+    double connectorSeconds = 0.0; // what its steps between cells of different sizes take beyond their travel
 };
 
 // A robot that starts in a part of the map cut off from the largest part (by area) holding starts: it can

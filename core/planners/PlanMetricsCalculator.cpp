@@ -92,8 +92,9 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     const std::size_t robots = plan.regions.startCell.size();
     metrics.robots.assign(robots, {});
     plan.regions.costSeconds.assign(robots, 0.0);
-    double secondsNoPlanBeats = 0.0; // the turns and connectors the paths make, and the travel no plan beats
+    double secondsNoPlanBeats = 0.0; // the turns the paths make, and below the travel no plan beats
     double cellTravelSeconds = 0.0;  // over every covered cell
+    double connectorSeconds = 0.0;   // the paths' steps between cells of different sizes, beyond that travel
     double covered = 0.0;
     double unreachable = 0.0;
     std::size_t subCells = 0;
@@ -124,17 +125,19 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
             robotMetrics.timeSeconds = path.timeSeconds;
             robotMetrics.turnSeconds = path.turnSeconds;
             robotMetrics.connectorSeconds = path.connectorSeconds;
-            secondsNoPlanBeats += path.turnSeconds + path.connectorSeconds;
+            secondsNoPlanBeats += path.turnSeconds;
+            connectorSeconds += path.connectorSeconds;
             robotMetrics.turns = path.turns;
             repeats += static_cast<std::size_t>(path.repeatedSubCellVisits);
         }
         metrics.makespanSeconds = std::max(metrics.makespanSeconds, robotMetrics.timeSeconds);
     }
-    // A detection plan need not pass every sub-cell: its travel bound counts the passes its targets need.
+    // A detection plan need not pass every sub-cell: its travel bound counts the passes its targets need,
+    // at top speed, so the steps between cells' sub-cells that connector time adds to are not in it.
     const DetectionLayer* detection = detectionLayerOf(plan);
     secondsNoPlanBeats += detection != nullptr
                               ? detection->summary().travelSecondsNoPlanBeats(metrics.totalTurns(), robots)
-                              : cellTravelSeconds;
+                              : cellTravelSeconds + connectorSeconds;
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : secondsNoPlanBeats / static_cast<double>(robots);
     boundByConnectedParts(plan);
     boundByCharges(plan);

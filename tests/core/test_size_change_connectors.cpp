@@ -6,6 +6,7 @@
 #include "core/coverage/RegionAdjacency.hpp"
 #include "core/coverage/SizeChangeConnectors.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
+#include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/coverage/TurnMinimisingTree.hpp"
 #include "core/planners/MlctPlanner.hpp"
@@ -61,9 +62,55 @@ int edgeBetween(const RegionAdjacency& adjacency, int a, int b) {
 
 // Going north along the large cell's east side: from its south-east sub-cell (15, 5) to its north-east one
 // (15, 15); the small cells are entered at their south-west sub-cell and left from their north-west one.
-const double straightStep = (20.0 + 10.0) / 4.0;                  // 7.5 m
-const double shortSlant = std::hypot(7.5, 2.5) - straightStep;    // to the sub-cell beside the corner
-const double diagonalSlant = std::hypot(7.5, 7.5) - straightStep; // to the sub-cell across the side
+const double shortStep = std::hypot(7.5, 2.5);    // to the sub-cell beside the corner
+const double diagonalStep = std::hypot(7.5, 7.5); // to the sub-cell across the side
+
+// A step between the large cell (2 m/s) and a small one (1 m/s), half at each speed, less the quarter of
+// each cell's side their travel counts: 5 m at 2 m/s and 2.5 m at 1 m/s.
+double beyondTravel(double step) {
+    return step / 2.0 / 2.0 + step / 2.0 / 1.0 - 5.0 / 2.0 - 2.5 / 1.0;
+}
+
+// A random map of three fields of view (5, 10 and 20 m), 48 x 40 pixels, three robots.
+test::RandomMapSpec multiSizeSpec(int seed) {
+    test::RandomMapSpec spec;
+    spec.columns = 48;
+    spec.rows = 40;
+    spec.seed = static_cast<unsigned>(seed);
+    spec.landCovers = 3;
+    spec.obstacleFraction = 0.04;
+    spec.robots = 3;
+    return spec;
+}
+
+std::vector<int> cellsOf(const Plan& plan, int robot) {
+    std::vector<int> cells;
+    for (std::size_t cell = 0; cell < plan.regions.robotOfCell.size(); ++cell)
+        if (plan.regions.robotOfCell[cell] == robot)
+            cells.push_back(static_cast<int>(cell));
+    return cells;
+}
+
+// sideSeconds over every side of every cell of a tree.
+double sidesOf(const CellGraph& graph, const SpanningTree& tree) {
+    std::vector<int> cells;
+    for (int node = 0; node < static_cast<int>(tree.size()); ++node)
+        cells.push_back(tree.cellOf(node));
+    std::vector<int> index(graph.size(), -1);
+    const CellIndexScope local(index, cells);
+    const RegionAdjacency adjacency(graph, cells, local);
+    const SizeChangeConnectors connectors(graph, cells, adjacency);
+    std::vector<char> inTree(adjacency.edges().size(), 0);
+    for (std::size_t edge = 0; edge < inTree.size(); ++edge) {
+        const auto& e = adjacency.edges()[edge];
+        inTree[edge] = tree.parent(e.first) == e.second || tree.parent(e.second) == e.first ? 1 : 0;
+    }
+    double seconds = 0.0;
+    for (int node = 0; node < static_cast<int>(cells.size()); ++node)
+        for (const CellSide side : {CellSide::East, CellSide::North, CellSide::West, CellSide::South})
+            seconds += connectors.sideSeconds(node, side, inTree);
+    return seconds;
+}
 
 } // namespace
 
@@ -91,13 +138,13 @@ class SizeChangeConnectorsTest : public QObject {
         std::vector<char> inTree(adjacency.edges().size(), 0);
         QCOMPARE(connectors.sideSeconds(0, CellSide::East, inTree), 0.0);
         inTree[static_cast<std::size_t>(toSouth)] = 1;
-        const double oneJoined = (shortSlant + diagonalSlant) / 2.0; // at the large cell's 2 m/s
+        const double oneJoined = beyondTravel(shortStep) + beyondTravel(diagonalStep);
         QVERIFY(std::abs(connectors.sideSeconds(0, CellSide::East, inTree) - oneJoined) < 1e-9);
         inTree[static_cast<std::size_t>(toSouth)] = 0;
         inTree[static_cast<std::size_t>(toNorth)] = 1;
         QVERIFY(std::abs(connectors.sideSeconds(0, CellSide::East, inTree) - oneJoined) < 1e-9);
         const double change = connectors.changeOnToggle(toSouth, inTree);
-        QVERIFY(std::abs(change - (2.0 * shortSlant / 2.0 - oneJoined)) < 1e-9);
+        QVERIFY(std::abs(change - (2.0 * beyondTravel(shortStep) - oneJoined)) < 1e-9);
         QCOMPARE(inTree[static_cast<std::size_t>(toSouth)], char(0)); // left as it was
         QCOMPARE(connectors.sideSeconds(0, CellSide::North, inTree), 0.0);
         QCOMPARE(connectors.turnSeconds(0), 1.0);
@@ -153,21 +200,11 @@ class SizeChangeConnectorsTest : public QObject {
 
     // A candidate walk's shape carries the time measurePath gives its path, so trees are chosen by it.
     void aWalkShapeIsTimedAsItsPath() {
-        test::RandomMapSpec spec;
-        spec.columns = 48;
-        spec.rows = 40;
-        spec.seed = 3;
-        spec.landCovers = 3;
-        spec.obstacleFraction = 0.04;
-        spec.robots = 3;
-        const Plan plan = MlctPlanner{}.plan(test::randomProblem(spec), {});
+        const Plan plan = MlctPlanner{}.plan(test::randomProblem(multiSizeSpec(3)), {});
         std::vector<int> scratch(plan.cells.size(), -1);
         TreeCircumnavigation walker(plan.cells);
         for (int robot = 0; robot < 3; ++robot) {
-            std::vector<int> cells;
-            for (std::size_t cell = 0; cell < plan.regions.robotOfCell.size(); ++cell)
-                if (plan.regions.robotOfCell[cell] == robot)
-                    cells.push_back(static_cast<int>(cell));
+            const std::vector<int> cells = cellsOf(plan, robot);
             const SpanningTreeBuilder builder(plan.cells, scratch);
             const int startCell = plan.regions.startCell[static_cast<std::size_t>(robot)];
             const auto& first = plan.paths[static_cast<std::size_t>(robot)].waypoints.front();
@@ -186,6 +223,66 @@ class SizeChangeConnectorsTest : public QObject {
                                         .arg(shape.seconds())
                                         .arg(path.timeSeconds)));
                 QCOMPARE(shape.turns(), path.turns);
+            }
+        }
+    }
+
+    // On maps of three fields of view, wherever the walk needs no bridge, the sides' connector time added
+    // up over the tree is what the measured walk spends on steps between sizes: the model and the walk
+    // agree on every side (east, north, west and south) and both speeds of each step.
+    void theSidesAddUpToTheWalksConnectorTime() {
+        int compared = 0;
+        for (int seed = 1; seed <= 4; ++seed) {
+            const Plan plan = MlctPlanner{}.plan(test::randomProblem(multiSizeSpec(seed)), {});
+            std::vector<int> scratch(plan.cells.size(), -1);
+            TreeCircumnavigation walker(plan.cells);
+            for (int robot = 0; robot < 3; ++robot) {
+                const std::vector<int> cells = cellsOf(plan, robot);
+                const int startCell = plan.regions.startCell[static_cast<std::size_t>(robot)];
+                const SpanningTree tree =
+                    SpanningTreeBuilder(plan.cells, scratch).fewestTurns(cells, startCell);
+                const auto& first = plan.paths[static_cast<std::size_t>(robot)].waypoints.front();
+                CoveragePath path = pathFromWalk(robot, {first.x, first.y},
+                                                 walker.walk(tree, {first.x, first.y}, true), true);
+                if (walker.bridgeVisits() > 0)
+                    continue;
+                measurePath(path, plan.cells);
+                const double modelled = sidesOf(plan.cells, tree);
+                QVERIFY2(std::abs(modelled - path.connectorSeconds) < 1e-6 * std::max(1.0, modelled),
+                         qPrintable(QString("seed %1, robot %2: %3 s modelled, %4 s walked")
+                                        .arg(seed)
+                                        .arg(robot)
+                                        .arg(modelled)
+                                        .arg(path.connectorSeconds)));
+                if (path.connectorSeconds != 0.0)
+                    ++compared;
+            }
+        }
+        QVERIFY(compared >= 4);
+    }
+
+    // No candidate walk is quicker than the one chosen (on these maps the turn-minimising tree's walk is
+    // also the one that turns least, so turns alone would choose the same).
+    void noCandidateIsQuickerThanTheChosenOne() {
+        for (int seed = 1; seed <= 4; ++seed) {
+            const Plan plan = MlctPlanner{}.plan(test::randomProblem(multiSizeSpec(seed)), {});
+            std::vector<int> scratch(plan.cells.size(), -1);
+            TreeCircumnavigation walker(plan.cells);
+            const SpanningTreeCoverage coverage;
+            for (int robot = 0; robot < 3; ++robot) {
+                const std::vector<int> cells = cellsOf(plan, robot);
+                const int startCell = plan.regions.startCell[static_cast<std::size_t>(robot)];
+                const auto& first = plan.paths[static_cast<std::size_t>(robot)].waypoints.front();
+                const MapPoint start{first.x, first.y};
+                const PathShape best = coverage.bestTree(plan.cells, cells, startCell, start, scratch).second;
+                QVERIFY(best.seconds() > 0.0);
+                const SpanningTreeBuilder builder(plan.cells, scratch);
+                QCOMPARE(builder.candidatesFor(cells), SpanningTreeBuilder::candidateCount);
+                for (int candidate = 0; candidate < builder.candidatesFor(cells); ++candidate) {
+                    const PathShape shape =
+                        walker.walkShape(builder.candidate(candidate, cells, startCell), start, true);
+                    QVERIFY(best.seconds() <= shape.seconds() * (1.0 + 1e-9));
+                }
             }
         }
     }

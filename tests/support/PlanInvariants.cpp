@@ -505,7 +505,7 @@ std::vector<std::string> checkTimes(const Plan& plan) {
         double turning = 0.0;
         int turns = 0;
         for (const CoveragePath& path : plan.paths) {
-            turning += path.turnSeconds + path.connectorSeconds;
+            turning += path.turnSeconds;
             turns += path.turns;
         }
         lowerBound = (detection->summary().travelSecondsNoPlanBeats(turns, plan.paths.size()) + turning) /
