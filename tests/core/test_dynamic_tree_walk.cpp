@@ -27,11 +27,7 @@ Plan quadTreePlan(int seed, int landCovers, int robots) {
 }
 
 std::vector<int> cellsOf(const Plan& plan, int robot) {
-    std::vector<int> cells;
-    for (std::size_t cell = 0; cell < plan.regions.robotOfCell.size(); ++cell)
-        if (plan.regions.robotOfCell[cell] == robot)
-            cells.push_back(static_cast<int>(cell));
-    return cells;
+    return cellsByRobot(plan.regions)[static_cast<std::size_t>(robot)];
 }
 
 // Drives a walk until it has nothing left to enter.

@@ -84,11 +84,7 @@ test::RandomMapSpec multiSizeSpec(int seed) {
 }
 
 std::vector<int> cellsOf(const Plan& plan, int robot) {
-    std::vector<int> cells;
-    for (std::size_t cell = 0; cell < plan.regions.robotOfCell.size(); ++cell)
-        if (plan.regions.robotOfCell[cell] == robot)
-            cells.push_back(static_cast<int>(cell));
-    return cells;
+    return cellsByRobot(plan.regions)[static_cast<std::size_t>(robot)];
 }
 
 // sideSeconds over every side of every cell of a tree.
