@@ -76,10 +76,13 @@ double segmentLength(const Waypoint& from, const Waypoint& to) {
 
 double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX, double outY,
                      const CellGraph& graph) {
-    constexpr double quarterTurn = 1.5707963267948966;
     if (corner.cell < 0 || static_cast<std::size_t>(corner.cell) >= graph.size())
         return 0.0;
-    const double price = graph.cell(corner.cell).turnSecondsPer90Degrees;
+    return turnSecondsBetween(inX, inY, outX, outY, graph.cell(corner.cell).turnSecondsPer90Degrees);
+}
+
+double turnSecondsBetween(double inX, double inY, double outX, double outY, double price) {
+    constexpr double quarterTurn = 1.5707963267948966;
     const double cross = inX * outY - inY * outX;
     const double dot = inX * outX + inY * outY;
     if (!(price > 0.0) || (cross == 0.0 && dot > 0.0)) // free, or straight on (most steps of a path)

@@ -32,6 +32,10 @@ namespace mcpp {
 // never lie in one line: the part of path time the lower bound counts like turns.
 [[nodiscard]] double connectorSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph);
 
+// Seconds lost turning from the unit direction in to the unit direction out, at `price` per 90 degrees, in
+// proportion to the angle (none going straight on).
+[[nodiscard]] double turnSecondsBetween(double inX, double inY, double outX, double outY, double price);
+
 // Seconds lost turning at `corner` from the way in (dx, dy) to the way out: the angle between them in
 // quarter turns, at the corner's cell's price per 90 degrees (none at a point in no cell).
 [[nodiscard]] double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX, double outY,

@@ -1,8 +1,9 @@
 #include "core/coverage/PathShape.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace mcpp {
 
@@ -25,17 +26,13 @@ void PathShape::add(double x, double y, double speedMetresPerSecond, double turn
     const double length = std::sqrt(dx * dx + dy * dy);
     length_ += length;
     if (fromSpeed > 0.0 && speedMetresPerSecond > 0.0)
-        seconds_ += length / 2.0 / fromSpeed + length / 2.0 / speedMetresPerSecond;
+        seconds_ += travelSeconds(length, fromSpeed, speedMetresPerSecond);
     if (length < 1e-9)
         return;
     const double ux = dx / length;
     const double uy = dy / length;
-    if (haveDirection_ && cornerPrice > 0.0) {
-        const double cross = directionX_ * uy - directionY_ * ux;
-        const double dot = directionX_ * ux + directionY_ * uy;
-        if (cross != 0.0 || dot <= 0.0) // most steps go straight on
-            seconds_ += std::abs(std::atan2(cross, dot)) / (std::numbers::pi / 2.0) * cornerPrice;
-    }
+    if (haveDirection_)
+        seconds_ += turnSecondsBetween(directionX_, directionY_, ux, uy, cornerPrice);
     if (haveDirection_ && std::abs(ux * directionY_ - uy * directionX_) +
                                   std::max(0.0, -(ux * directionX_ + uy * directionY_)) >
                               1e-6)

@@ -28,9 +28,10 @@ PartFigures figuresOf(const Plan& plan, const StartComponent& part) {
         figures.areaSquareMetres += cell.passableAreaSquareMetres;
     }
     for (const int robot : part.robots)
-        if (static_cast<std::size_t>(robot) < plan.paths.size())
-            figures.secondsNoPlanBeats += plan.paths[static_cast<std::size_t>(robot)].turnSeconds +
-                                          plan.paths[static_cast<std::size_t>(robot)].connectorSeconds;
+        if (static_cast<std::size_t>(robot) < plan.paths.size()) {
+            const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot)];
+            figures.secondsNoPlanBeats += path.turnSeconds + path.connectorSeconds;
+        }
     return figures;
 }
 

@@ -50,6 +50,19 @@ CellGraph largeCellAndTwoHalves(double largeSpeed, double smallSpeed) {
     return CellGraph(frame, {large, south, north}, NeighbourTopology({0, 2, 4, 6}, {1, 2, 0, 2, 0, 1}));
 }
 
+// A region's adjacency and connector model, its cells indexed for as long as it lives.
+struct RegionConnectors {
+    RegionConnectors(const CellGraph& graph, std::vector<int> regionCells)
+        : cells(std::move(regionCells)), index(graph.size(), -1), local(index, cells),
+          adjacency(graph, cells, local), connectors(graph, cells, adjacency) {}
+
+    std::vector<int> cells;
+    std::vector<int> index;
+    CellIndexScope local;
+    RegionAdjacency adjacency;
+    SizeChangeConnectors connectors;
+};
+
 // The region's edge joining two of its nodes.
 int edgeBetween(const RegionAdjacency& adjacency, int a, int b) {
     const auto& edges = adjacency.edges();
@@ -92,10 +105,9 @@ double sidesOf(const CellGraph& graph, const SpanningTree& tree) {
     std::vector<int> cells;
     for (int node = 0; node < static_cast<int>(tree.size()); ++node)
         cells.push_back(tree.cellOf(node));
-    std::vector<int> index(graph.size(), -1);
-    const CellIndexScope local(index, cells);
-    const RegionAdjacency adjacency(graph, cells, local);
-    const SizeChangeConnectors connectors(graph, cells, adjacency);
+    const RegionConnectors region(graph, cells);
+    const RegionAdjacency& adjacency = region.adjacency;
+    const SizeChangeConnectors& connectors = region.connectors;
     std::vector<char> inTree(adjacency.edges().size(), 0);
     for (std::size_t edge = 0; edge < inTree.size(); ++edge) {
         const auto& e = adjacency.edges()[edge];
@@ -118,11 +130,9 @@ class SizeChangeConnectorsTest : public QObject {
     // each step leans by a quarter of the small cell only.
     void aSideCostsWhatItsJoinedNeighboursMakeTheWalkSlant() {
         const CellGraph graph = largeCellAndTwoHalves(2.0, 1.0);
-        const std::vector<int> cells{0, 1, 2};
-        std::vector<int> index(graph.size(), -1);
-        const CellIndexScope local(index, cells);
-        const RegionAdjacency adjacency(graph, cells, local);
-        const SizeChangeConnectors connectors(graph, cells, adjacency);
+        const RegionConnectors region(graph, {0, 1, 2});
+        const RegionAdjacency& adjacency = region.adjacency;
+        const SizeChangeConnectors& connectors = region.connectors;
         const int toSouth = edgeBetween(adjacency, 0, 1);
         const int toNorth = edgeBetween(adjacency, 0, 2);
         const int between = edgeBetween(adjacency, 1, 2);
@@ -149,11 +159,9 @@ class SizeChangeConnectorsTest : public QObject {
     // Both trees turn as often by the count of sides, but one walks back across the large cell's side.
     void theTreeJoinsBothHalvesWhereStepsBetweenSizesCount() {
         const CellGraph graph = largeCellAndTwoHalves(1.0, 1.0);
-        const std::vector<int> cells{0, 1, 2};
-        std::vector<int> index(graph.size(), -1);
-        const CellIndexScope local(index, cells);
-        const RegionAdjacency adjacency(graph, cells, local);
-        const SizeChangeConnectors connectors(graph, cells, adjacency);
+        const RegionConnectors region(graph, {0, 1, 2});
+        const RegionAdjacency& adjacency = region.adjacency;
+        const SizeChangeConnectors& connectors = region.connectors;
         const auto joinsBoth = [](const std::vector<std::pair<int, int>>& edges) {
             int large = 0;
             for (const auto& [a, b] : edges)
