@@ -1,8 +1,10 @@
 #include "core/decomposition/QuadTreeDecomposition.hpp"
 
+#include <utility>
+
 namespace mcpp {
 
-CellGraph cellGraphOfQuadTree(const QuadTree& tree, NeighbourTopology topology) {
+CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology) {
     GridFrame frame;
     frame.originX = tree.originX;
     frame.originY = tree.originY;
@@ -27,9 +29,12 @@ CellGraph cellGraphOfQuadTree(const QuadTree& tree, NeighbourTopology topology) 
         cell.passableAreaSquareMetres = quadCell.passableAreaSquareMetres;
         cells.push_back(cell);
     }
+    const double passableArea = tree.passableAreaSquareMetres;
+    std::vector<RoundedFieldOfView> fieldsOfView = std::move(tree.roundedFieldsOfView);
+    tree = QuadTree{}; // freed before the graph's locator is built: on large maps the peak of planning
     CellGraph graph(frame, std::move(cells), std::move(topology));
-    graph.fieldsOfView = tree.roundedFieldsOfView;
-    graph.passableAreaSquareMetres = tree.passableAreaSquareMetres;
+    graph.fieldsOfView = std::move(fieldsOfView);
+    graph.passableAreaSquareMetres = passableArea;
     return graph;
 }
 

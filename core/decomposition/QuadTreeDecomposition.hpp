@@ -7,7 +7,8 @@
 namespace mcpp {
 
 // The hierarchical quadtree of spec sections 2 and 3 as a cell graph: its active cells, in active-index
-// order, with the neighbours the topology found for them at any level.
-[[nodiscard]] CellGraph cellGraphOfQuadTree(const QuadTree& tree, NeighbourTopology topology);
+// order, with the neighbours the topology found for them at any level. Takes the tree to free it before
+// the graph is indexed.
+[[nodiscard]] CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology);
 
 } // namespace mcpp

@@ -15,7 +15,13 @@ std::uint64_t placementKey(long long row, long long column) {
 
 CellGraph::CellGraph(GridFrame frame, std::vector<Cell> cells, NeighbourTopology adjacency)
     : frame_(frame), cells_(std::move(cells)), adjacency_(std::move(adjacency)) {
+    // Reserved exactly: grown by doubling, the keys of an 18 M-cell map held 0.8 GB instead of 0.3 GB.
+    std::map<int, std::size_t> cellsOfSpan;
+    for (const Cell& cell : cells_)
+        ++cellsOfSpan[cell.span];
     std::map<int, std::vector<std::pair<std::uint64_t, int>>> bySpan;
+    for (const auto& [span, count] : cellsOfSpan)
+        bySpan[span].reserve(count);
     for (std::size_t id = 0; id < cells_.size(); ++id) {
         const Cell& cell = cells_[id];
         bySpan[cell.span].emplace_back(placementKey(cell.row / cell.span, cell.column / cell.span),
