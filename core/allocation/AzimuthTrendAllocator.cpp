@@ -319,10 +319,7 @@ class Allocation {
                 continue;
             stealSeen_[static_cast<std::size_t>(cell)] = stealStamp_;
             border[kept++] = cell;
-            const RobotState& donor = robots_[static_cast<std::size_t>(owner)];
-            if (cell == donor.startCell)
-                continue;
-            if (!(state.cost + cost_[static_cast<std::size_t>(cell)] < donor.cost - 1e-9))
+            if (!lowersLargerCost(robot, cell))
                 continue;
             const double dx = x_[static_cast<std::size_t>(cell)] - centreX;
             const double dy = y_[static_cast<std::size_t>(cell)] - centreY;
@@ -344,18 +341,58 @@ class Allocation {
         for (const auto& candidate : candidates)
             ordered.push_back(candidate.cell);
         const int chosen = firstRemovable(ordered, stealTries);
-        if (chosen >= 0) {
-            const int donor = owner_[static_cast<std::size_t>(chosen)];
-            give(chosen, robot);
-            pushNeighbours(robot, chosen);
-            robots_[static_cast<std::size_t>(donor)].finished = false;
-            // The donor may now reach cells again through its remaining border.
-            for (int neighbour : graph_.neighbours(chosen))
-                if (owner_[static_cast<std::size_t>(neighbour)] == donor)
-                    pushNeighbours(donor, neighbour);
+        if (chosen < 0)
+            return false;
+        if (!takeStolen(robot, chosen) || kept < batchStealBorder)
             return true;
-        }
-        return false;
+        // The scan above is linear in a border of thousands of cells: while the robot would steal again
+        // next, it takes the following candidates of the same order instead of scanning again. Short
+        // borders are scanned afresh for each cell, as the order moves with the region's centre.
+        const auto after = std::find(ordered.begin(), ordered.end(), chosen) + 1;
+        for (auto it = after; it != ordered.end() && isNextToSteal(robot); ++it)
+            if (stillStealable(robot, *it) && removalKeepsConnected(*it, localSearch) &&
+                !takeStolen(robot, *it))
+                break;
+        return true;
+    }
+
+    // Gives a stolen cell to the robot; false when that opened unassigned cells to it, which it takes next.
+    bool takeStolen(int robot, int cell) {
+        const int donor = owner_[static_cast<std::size_t>(cell)];
+        const std::size_t frontierBefore = robots_[static_cast<std::size_t>(robot)].frontier.size();
+        give(cell, robot);
+        pushNeighbours(robot, cell);
+        robots_[static_cast<std::size_t>(donor)].finished = false;
+        // The donor may now reach cells again through its remaining border.
+        for (int neighbour : graph_.neighbours(cell))
+            if (owner_[static_cast<std::size_t>(neighbour)] == donor)
+                pushNeighbours(donor, neighbour);
+        return robots_[static_cast<std::size_t>(robot)].frontier.size() == frontierBefore;
+    }
+
+    // Whether the growth loop would pick this robot again, with nothing to rekey first.
+    bool isNextToSteal(int robot) const {
+        const RobotState& state = robots_[static_cast<std::size_t>(robot)];
+        if (state.cells >= 2 * state.cellsAtLastRekey)
+            return false;
+        for (const RobotState& other : robots_)
+            if (!other.finished && other.cost < state.cost)
+                return false;
+        return true;
+    }
+
+    // Whether the robot may take the cell from its owner: not the owner's start, and the larger of the two
+    // costs falls.
+    bool lowersLargerCost(int robot, int cell) const {
+        const RobotState& donor = robots_[static_cast<std::size_t>(owner_[static_cast<std::size_t>(cell)])];
+        return cell != donor.startCell &&
+               robots_[static_cast<std::size_t>(robot)].cost + cost_[static_cast<std::size_t>(cell)] <
+                   donor.cost - 1e-9;
+    }
+
+    bool stillStealable(int robot, int cell) const {
+        const int owner = owner_[static_cast<std::size_t>(cell)];
+        return owner >= 0 && owner != robot && lowersLargerCost(robot, cell) && touchesRegion(cell, robot);
     }
 
     // Boundary cells of each region (a neighbour belongs to another robot), kept up to date on every move.
@@ -597,7 +634,9 @@ class Allocation {
     std::vector<int> lastChain_;
     std::vector<std::pair<double, int>> scratchCandidates_;
     std::vector<int> scratchCells_;
-    static constexpr int stealTries = 32;  // border cells a steal tries, best first
+    static constexpr int stealTries = 32; // border cells a steal tries, best first
+    static constexpr std::size_t batchStealBorder =
+        1024;                              // border cells from which one scan serves several steals
     std::vector<std::uint32_t> stealSeen_; // stealStamp_ of the last steal that looked at each cell
     std::uint32_t stealStamp_ = 0;
     std::vector<char> handOverKnown_;

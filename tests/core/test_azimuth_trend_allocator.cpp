@@ -116,6 +116,26 @@ class AzimuthTrendAllocatorTest : public QObject {
             QVERIFY2(std::abs(count - 300) <= 1, qPrintable(QString::number(count)));
     }
 
+    // The same at a size where the boxed-in robot's border runs to thousands of cells, so that one look along
+    // it serves several steals.
+    void enclosedRobotOfALargeMapTakesItsShare() {
+        constexpr int side = 800;
+        constexpr int robots = 6;
+        auto problem = test::uniformProblem(side, side, 10.0, {}, {});
+        for (int robot = 0; robot < robots; ++robot) { // on the diagonal, as in the forest benchmark map
+            const int pixel = 50 + robot * (side - 100) / (robots - 1);
+            problem.starts.push_back(test::pixelCentre(problem.grid, pixel, pixel));
+        }
+        const Plan plan = allocateOnly(problem);
+        QVERIFY2(test::checkRegions(plan).empty(),
+                 qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+        const auto counts = cellsPerRobot(plan.regions);
+        const double mean = std::accumulate(counts.begin(), counts.end(), 0.0) / robots;
+        for (int count : counts)
+            QVERIFY2(std::abs(count - mean) <= 0.001 * mean,
+                     qPrintable(QString("%1 cells against a mean of %2").arg(count).arg(mean)));
+    }
+
     void balancesUniformGridsWithObstacles() {
         std::mt19937 random(7);
         for (int robots : {2, 4, 8, 14, 20}) {
