@@ -119,7 +119,7 @@ def forest(side, robots, folder):
         # On a diagonal, clear of the lakes (which start 100 pixels into every 300).
         pixel = 50 + (i * (side - 100)) // max(1, robots - 1) if robots > 1 else side // 2
         pixel = pixel - pixel % 300 + 50
-        if pixel >= side:  # the last start of a side that is a multiple of 300 plus 250
+        if pixel >= side:  # the last start of a side that is a multiple of 300 plus 50
             pixel -= 300
         starts.append((WEST + (pixel + 0.5) * 10.0, NORTH - (pixel + 0.5) * 10.0))
     return tif, starts

@@ -108,9 +108,11 @@ class Allocation {
                 pushNeighbours(robot, cell);
                 continue;
             }
-            if (stealBudget > 0 && stealFromNeighbour(robot)) {
-                --stealBudget;
-                continue;
+            if (stealBudget > 0) {
+                if (const int stolen = stealFromNeighbour(robot); stolen > 0) {
+                    stealBudget -= stolen;
+                    continue;
+                }
             }
             state.finished = true;
         }
@@ -293,7 +295,8 @@ class Allocation {
 
     // A stuck robot takes a border cell of a neighbour when that lowers the larger of the two costs:
     // first cells on the side facing the still unassigned area (nu), then the rest (fu), nearest first.
-    bool stealFromNeighbour(int robot) {
+    // Returns how many cells it took.
+    int stealFromNeighbour(int robot) {
         RobotState& state = robots_[static_cast<std::size_t>(robot)];
         auto& border = state.foreignBorder;
         const double centreX = state.centreX();
@@ -342,18 +345,22 @@ class Allocation {
             ordered.push_back(candidate.cell);
         const int chosen = firstRemovable(ordered, stealTries);
         if (chosen < 0)
-            return false;
+            return 0;
+        int stolen = 1;
         if (!takeStolen(robot, chosen) || kept < batchStealBorder)
-            return true;
+            return stolen;
         // The scan above is linear in a border of thousands of cells: while the robot would steal again
         // next, it takes the following candidates of the same order instead of scanning again. Short
         // borders are scanned afresh for each cell, as the order moves with the region's centre.
         const auto after = std::find(ordered.begin(), ordered.end(), chosen) + 1;
-        for (auto it = after; it != ordered.end() && isNextToSteal(robot); ++it)
-            if (stillStealable(robot, *it) && removalKeepsConnected(*it, localSearch) &&
-                !takeStolen(robot, *it))
+        for (auto it = after; it != ordered.end() && isNextToSteal(robot); ++it) {
+            if (!stillStealable(robot, *it) || !removalKeepsConnected(*it, localSearch))
+                continue;
+            ++stolen;
+            if (!takeStolen(robot, *it))
                 break;
-        return true;
+        }
+        return stolen;
     }
 
     // Gives a stolen cell to the robot; false when that opened unassigned cells to it, which it takes next.
@@ -370,14 +377,18 @@ class Allocation {
         return robots_[static_cast<std::size_t>(robot)].frontier.size() == frontierBefore;
     }
 
-    // Whether the growth loop would pick this robot again, with nothing to rekey first.
+    // Whether the growth loop would pick this robot again (the cheapest unfinished one, the lowest index
+    // among equals), with nothing to rekey first.
     bool isNextToSteal(int robot) const {
         const RobotState& state = robots_[static_cast<std::size_t>(robot)];
         if (state.cells >= 2 * state.cellsAtLastRekey)
             return false;
-        for (const RobotState& other : robots_)
-            if (!other.finished && other.cost < state.cost)
+        for (std::size_t other = 0; other < robots_.size(); ++other) {
+            const RobotState& rival = robots_[other];
+            if (!rival.finished &&
+                (rival.cost < state.cost || (rival.cost == state.cost && static_cast<int>(other) < robot)))
                 return false;
+        }
         return true;
     }
 
@@ -635,8 +646,8 @@ class Allocation {
     std::vector<std::pair<double, int>> scratchCandidates_;
     std::vector<int> scratchCells_;
     static constexpr int stealTries = 32; // border cells a steal tries, best first
-    static constexpr std::size_t batchStealBorder =
-        1024;                              // border cells from which one scan serves several steals
+    // Border cells from which one look along the border serves several steals.
+    static constexpr std::size_t batchStealBorder = 1024;
     std::vector<std::uint32_t> stealSeen_; // stealStamp_ of the last steal that looked at each cell
     std::uint32_t stealStamp_ = 0;
     std::vector<char> handOverKnown_;

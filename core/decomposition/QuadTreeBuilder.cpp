@@ -205,6 +205,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     {
         std::vector<QuadCell> stack;
         for (int row = 0; row < tree.topRows; ++row) {
+            progress.throwIfCancelled();
             for (int column = 0; column < tree.topColumns; ++column) {
                 stack.push_back(topCell(row, column));
                 while (!stack.empty()) {

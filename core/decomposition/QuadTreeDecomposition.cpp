@@ -31,7 +31,7 @@ CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology) {
     }
     const double passableArea = tree.passableAreaSquareMetres;
     std::vector<RoundedFieldOfView> fieldsOfView = std::move(tree.roundedFieldsOfView);
-    tree = QuadTree{}; // freed before the graph's locator is built: on large maps the peak of planning
+    tree = QuadTree{}; // freed before the graph's locator is built: the decomposition stage's peak
     CellGraph graph(frame, std::move(cells), std::move(topology));
     graph.fieldsOfView = std::move(fieldsOfView);
     graph.passableAreaSquareMetres = passableArea;

@@ -116,7 +116,8 @@ class QuadTreeBuilderTest : public QObject {
             }
         }
         QCOMPARE(wood, 1);
-        // Counted before they are stored: a large map's tree takes no memory beyond its cells.
+        // Counted before they are stored: a large map's tree takes no memory beyond its cells (libstdc++
+        // reserves exactly what is asked).
         QCOMPARE(tree.cells.size(), std::size_t{1 + 4 + 4});
         QCOMPARE(tree.cells.capacity(), tree.cells.size());
         QCOMPARE(tree.activeCells.capacity(), tree.activeCells.size());
