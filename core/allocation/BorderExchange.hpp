@@ -25,8 +25,12 @@ class BorderExchange {
                    std::vector<double> weights, std::vector<int> startCells, Preference preference);
 
     // Exchanges cells until every region is within `toleranceSeconds` of the fair share, no chain can pass
-    // a cell or the moves run out. `owner` holds each cell's region; returns the largest error left.
+    // a cell, the moves run out or the exchanges stop getting closer; then keeps the closest division seen.
+    // `owner` holds each cell's region; returns the largest error left.
     double balance(std::vector<int>& owner, double toleranceSeconds);
+
+    // Chains passed along in the last balance, those that moved no cell included.
+    [[nodiscard]] std::size_t exchangesMade() const { return exchanges_; }
 
   private:
     struct Candidate {
@@ -39,6 +43,10 @@ class BorderExchange {
         int moved;     // cells that changed hands
         bool complete; // every link passed at least one
     };
+    struct Move {
+        int cell;
+        int previousOwner;
+    };
     using CandidateQueue = std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>>;
 
     [[nodiscard]] std::size_t pair(int donor, int receiver) const;
@@ -48,6 +56,7 @@ class BorderExchange {
     [[nodiscard]] std::vector<int> reachedFrom(int from) const;
     Passage passAlong(const std::vector<int>& chain, int cellsPerLink, double pieceSeconds);
     void move(int cell, int receiver);
+    void returnToBest();
     [[nodiscard]] int givableCell(int donor, int receiver);
     [[nodiscard]] std::vector<int> givablePiece(int donor, int receiver, double limitSeconds);
     [[nodiscard]] std::vector<int> hangingOn(int cell, int region, double limitSeconds);
@@ -67,6 +76,8 @@ class BorderExchange {
     std::vector<double> cost_;
     std::vector<CandidateQueue> queues_; // per (donor, receiver)
     std::vector<char> closed_;           // per (donor, receiver): no cell to give since the last exchange
+    std::size_t exchanges_ = 0;
+    std::vector<Move> movesSinceBest_; // undone at the end when a later exchange did not improve on them
     std::vector<int> visitStamp_;
     int stamp_ = 0;
 };
