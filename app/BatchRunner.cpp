@@ -142,8 +142,10 @@ void BatchRunner::assembleMission() {
         mission_.preset = options_.preset;
     }
     for (std::size_t i = 0; i < options_.starts.size(); ++i) {
-        mission_.robots.push_back(
-            io::RobotSpec{"Robot " + std::to_string(i + 1), options_.starts[i], options_.startCrs});
+        io::RobotSpec robot{"Robot " + std::to_string(i + 1), options_.starts[i], options_.startCrs};
+        if (i < options_.chargers.size())
+            robot.charger = options_.chargers[i];
+        mission_.robots.push_back(std::move(robot));
     }
 }
 
@@ -589,7 +591,9 @@ std::string BatchRunner::fieldName(const io::MissionField& field) const {
         if (!fromFile)
             return "--start-crs";
         break;
-    case Part::Charger: // mission files only
+    case Part::Charger:
+        if (!fromFile)
+            return "--charger " + std::to_string(field.robot + 1);
         break;
     case Part::Planner:
         if (options_.planner || !fromFile)

@@ -43,6 +43,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--threads", "N", true, false},        FlagSpec{"--compare", "NAMES", true, false},
     FlagSpec{"--area", "FILE", true, false},        FlagSpec{"--no-go", "FILE", true, false},
     FlagSpec{"--max-waypoints", "N", true, false},  FlagSpec{"--event", "T:ROBOT:FACTOR", true, true},
+    FlagSpec{"--charger", "X,Y", true, true},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -266,6 +267,12 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 return failure("--start " + std::to_string(startCount) + ": " + quoted(value) +
                                " is not X,Y");
             options.starts.push_back(*point);
+        } else if (flag == "--charger") {
+            const auto point = parsePoint(value);
+            if (!point)
+                return failure("--charger " + std::to_string(options.chargers.size() + 1) + ": " +
+                               quoted(value) + " is not X,Y");
+            options.chargers.push_back(*point);
         } else if (flag == "--start-crs") {
             if (!isEpsgCode(value))
                 return failure("--start-crs: " + quoted(value) + " is not EPSG:N");
@@ -371,7 +378,8 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
         return failure("--compare and --planner cannot be used together: --compare names the planners");
     if (!positionals.empty()) {
         options.missionPath = positionals.front();
-        for (const std::string_view flag : {"--raster", "--classes", "--preset", "--start", "--start-crs"}) {
+        for (const std::string_view flag :
+             {"--raster", "--classes", "--preset", "--start", "--start-crs", "--charger"}) {
             if (given(flag))
                 return failure(std::string(flag) +
                                " cannot be combined with a mission file; the mission gives it");
@@ -383,6 +391,11 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             return failure("--classes and --preset cannot be used together");
         if (options.starts.empty())
             return failure("--raster needs at least one --start X,Y");
+        if (options.chargers.size() > options.starts.size())
+            return failure("--charger: " + std::to_string(options.chargers.size()) + " chargers but " +
+                           std::to_string(options.starts.size()) + " --start" +
+                           (options.starts.size() == 1 ? "" : " flags") +
+                           ": give at most one per --start, in the same order");
     }
     if (options.outputDirectory.empty())
         return failure("--batch needs --out DIR");
@@ -413,8 +426,11 @@ std::string CommandLine::usage() {
            "                           raster's CRS (longitude,latitude for a geographic raster) unless\n"
            "                           --start-crs says otherwise. Errors number the --start flags from 1\n"
            "                           in the order given, as the outputs number the robots\n"
-           "  --start-crs EPSG:N       CRS of the --start coordinates, e.g. EPSG:4326 for "
-           "longitude,latitude\n"
+           "  --start-crs EPSG:N       CRS of the --start and --charger coordinates, e.g. EPSG:4326 for\n"
+           "                           longitude,latitude\n"
+           "  --charger X,Y            where a robot charges, for planners that fly on batteries\n"
+           "                           (wavefront-battery); the first --charger is the first --start's\n"
+           "                           robot's, and so on. Robots without one charge at their start\n"
            "  --band N                 raster band holding the classes (default 1)\n"
            "  --area FILE              plan only inside the polygons of this vector file (any format\n"
            "                           GDAL reads; reprojected to the raster's CRS)\n"

@@ -272,6 +272,14 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
                                       "stopped; each robot's tooltip gives its time at full speed")
                                  : tr("Driving at full speed, turns included"));
     makespan_->setText(formatDuration(metrics.makespanSeconds));
+    // Under events the makespan is still the plan's at full speed; the Events row says when it is done.
+    if (auto* makespanName = qobject_cast<QLabel*>(summary_->labelForField(makespan_)))
+        makespanName->setText(underEvents ? tr("Makespan at full speed") : tr("Makespan"));
+    makespan_->setToolTip(underEvents
+                              ? tr("The slowest robot's time driving at full speed, as planned before "
+                                   "the events; when the mission is done under them is in the "
+                                   "Events row")
+                              : tr("The slowest robot's time, turns included"));
     lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
     ratio_->setText(QString::number(metrics.ratio, 'f', 3));
     covered_->setText(tr("%1 (%2 % of the passable area)")

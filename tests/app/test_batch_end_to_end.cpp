@@ -722,6 +722,41 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
         QCOMPARE(ends.first, sortie == 1 ? whole.first : whole.second);
         QCOMPARE(ends.second, whole.second);
     }
+
+    // The same mission given by flags, the charger by --charger: the same sorties and times.
+    const QString byFlags = scratch_.filePath("charger-flags");
+    run = runMcpp({"--batch",
+                   "--raster",
+                   samplePath("synthetic/synthetic.asc"),
+                   "--classes",
+                   samplePath("synthetic/classes.csv"),
+                   "--start",
+                   "431040,5301040",
+                   "--start",
+                   "431230,5301280",
+                   "--start",
+                   "431420,5301060",
+                   "--charger",
+                   "431100,5301150",
+                   "--planner",
+                   "wavefront-battery",
+                   "--param",
+                   "battery_s=600",
+                   "--max-waypoints",
+                   "0",
+                   "--out",
+                   byFlags});
+    checkOutputs(byFlags, 3, run, QStringLiteral("wavefront-battery"));
+    if (QTest::currentTestFailed())
+        return;
+    QCOMPARE(planEnds(readJsonObject(byFlags + "/robot_1.plan")), whole);
+    const auto robotsOf = [](const QString& folder) {
+        return readJsonObject(folder + "/report.json").value("robots").toArray();
+    };
+    for (int robot = 0; robot < 3; ++robot)
+        for (const char* field : {"sorties", "time_s", "cells"})
+            QCOMPARE(robotsOf(byFlags)[robot].toObject().value(field),
+                     robotsOf(out)[robot].toObject().value(field));
 }
 
 // CPPIED: detection.tif lies on the plan's lattice in the raster's CRS; every cell a robot covers is seen

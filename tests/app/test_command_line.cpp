@@ -133,8 +133,8 @@ void TestCommandLine::missionFileTakesOverrideFlags() {
 void TestCommandLine::batchWithEveryFlag() {
     const auto result = CommandLine::parse(split(
         "--batch --raster map.tif --classes table.csv --start 318000.5,4130000 --start 319000,4131000.25 "
-        "--start -113.1,37.2 --start-crs EPSG:4326 --planner mcpp-mlct --band 2 --purity 0.25 "
-        "--missing-as-obstacle --open-paths --quiet --out results"));
+        "--start -113.1,37.2 --start-crs EPSG:4326 --charger 318100,4130200.5 --planner mcpp-mlct --band 2 "
+        "--purity 0.25 --missing-as-obstacle --open-paths --quiet --out results"));
     QVERIFY2(result.ok(), result.error.c_str());
     const auto& options = result.options;
     QCOMPARE(static_cast<int>(options.mode), static_cast<int>(RunMode::Batch));
@@ -150,6 +150,9 @@ void TestCommandLine::batchWithEveryFlag() {
     QCOMPARE(options.starts[2].x, -113.1);
     QCOMPARE(options.starts[2].y, 37.2);
     QCOMPARE(options.startCrs, std::string("EPSG:4326"));
+    QCOMPARE(options.chargers.size(), std::size_t{1}); // the first robot's; the others charge at their starts
+    QCOMPARE(options.chargers[0].x, 318100.0);
+    QCOMPARE(options.chargers[0].y, 4130200.5);
     QCOMPARE(options.planner.value_or(""), std::string("mcpp-mlct"));
     QCOMPARE(options.band.value_or(0), 2);
     QCOMPARE(options.parameters.size(), std::size_t{2});
@@ -228,6 +231,15 @@ void TestCommandLine::errors_data() {
         << words(flagMission + " --start-crs EPSG:") << "--start-crs: \"EPSG:\" is not EPSG:N";
     QTest::newRow("--start-crs bad code")
         << words(flagMission + " --start-crs EPSG:43x6") << "--start-crs: \"EPSG:43x6\" is not EPSG:N";
+    QTest::newRow("second --charger not a point")
+        << words(raster + "--preset p --start 30,40 --charger 1,2 --charger 3")
+        << "--charger 2: \"3\" is not X,Y";
+    QTest::newRow("more chargers than starts")
+        << words(raster + "--preset p --charger 1,2 --charger 3,4")
+        << "--charger: 2 chargers but 1 --start: give at most one per --start, in the same order";
+    QTest::newRow("mission and --charger")
+        << words("--batch m.json --charger 1,2 --out o")
+        << "--charger cannot be combined with a mission file; the mission gives it";
     QTest::newRow("--band zero") << words("--batch m.json --out o --band 0")
                                  << "--band: \"0\" is not a band number (1, 2, ...)";
     QTest::newRow("--band text") << words("--batch m.json --out o --band two")
@@ -297,6 +309,7 @@ void TestCommandLine::usageDocumentsEveryFlag() {
                              "--preset",
                              "--start X,Y",
                              "--start-crs",
+                             "--charger X,Y",
                              "--planner",
                              "--band",
                              "--purity",

@@ -7,6 +7,7 @@
 
 #include <QBarSet>
 #include <QChartView>
+#include <QFormLayout>
 #include <QLabel>
 #include <QSignalSpy>
 #include <QStackedBarSeries>
@@ -146,6 +147,15 @@ class TestEventsAndTimeline : public QObject {
         QVERIFY2(table->item(0, 4)->toolTip().startsWith("1 h at full speed"),
                  qPrintable(table->item(0, 4)->toolTip()));
         QCOMPARE(table->item(1, 4)->text(), QString("stopped at 30 min"));
+        // The makespan row is the plan at full speed, and says so beside the Events row.
+        const auto* makespan = panel.findChild<QLabel*>(QStringLiteral("makespanLabel"));
+        QVERIFY(makespan != nullptr);
+        auto* summaryForm = panel.findChild<QFormLayout*>();
+        QVERIFY(summaryForm != nullptr);
+        const auto* makespanName =
+            qobject_cast<QLabel*>(summaryForm->labelForField(const_cast<QLabel*>(makespan)));
+        QVERIFY(makespanName != nullptr);
+        QCOMPARE(makespanName->text(), QString("Makespan at full speed"));
         const auto* chart = panel.findChild<QChartView*>(QStringLiteral("timeChart"));
         QVERIFY(chart != nullptr);
         QVERIFY(chart->chart()->title().contains("events"));
@@ -159,6 +169,7 @@ class TestEventsAndTimeline : public QObject {
         plan.layers.push_back(std::make_shared<TimelineLayer>(summary, robots, std::vector<int>{}));
         panel.showPlan(&plan, {});
         QCOMPARE(table->horizontalHeaderItem(4)->text(), QString("Time"));
+        QCOMPARE(makespanName->text(), QString("Makespan"));
         QCOMPARE(table->item(0, 4)->text(), QString("1 h"));
         QCOMPARE(chart->chart()->title(), QString("Time per robot"));
         QCOMPARE(qobject_cast<QStackedBarSeries*>(chart->chart()->series().front())->barSets().at(0)->at(0),
