@@ -31,16 +31,14 @@ int RemainingWorkExchange::exchange(std::vector<int>& owner, const std::vector<c
         work_[r] = robots[r].committedSeconds;
     links_.assign(robotCount * robotCount, {});
 
+    if (looked_.size() != graph_.size())
+        looked_.assign(graph_.size(), 0);
     for (int cell = 0; cell < static_cast<int>(graph_.size()); ++cell) {
         const int donor = owner[static_cast<std::size_t>(cell)];
         if (donor < 0 || !isFree(cell))
             continue;
         work_[static_cast<std::size_t>(donor)] += graph_.cell(cell).coverSeconds();
-        for (const int neighbour : graph_.neighbours(cell)) {
-            const int receiver = owner[static_cast<std::size_t>(neighbour)];
-            if (receiver >= 0 && receiver != donor && isFree(neighbour))
-                link(donor, receiver).push_back(cell);
-        }
+        offerToEveryNeighbour(cell);
     }
     int moved = 0;
     while (moved < maxMoves) {
@@ -243,42 +241,61 @@ int RemainingWorkExchange::countIn(int cell, int region) const {
     return count;
 }
 
-// The free cell of `donor` next to `receiver` most surrounded by the receiver (smooth borders) that the
-// donor can spare without falling apart near it; -1 when there is none. Stale entries are dropped.
-int RemainingWorkExchange::givableCell(int donor, int receiver) {
-    std::vector<int>& candidates = link(donor, receiver);
-    const bool donorStopped = (*robots_)[static_cast<std::size_t>(donor)].speedFactor <= 0.0;
-    std::vector<std::pair<int, int>> scored; // (score, cell)
-    // Moves add a cell's neighbours again and again: kept once each, the list stays the border's length.
-    if (listed_.size() != graph_.size())
-        listed_.assign(graph_.size(), 0);
-    std::size_t kept = 0;
-    for (const int cell : candidates) {
-        const auto index = static_cast<std::size_t>(cell);
-        if (listed_[index] != 0 || (*owner_)[index] != donor || !isFree(cell) ||
-            !touchesFreeCellOf(cell, receiver))
-            continue;
-        listed_[index] = 1;
-        candidates[kept++] = cell;
-        scored.emplace_back(countIn(cell, receiver) - countIn(cell, donor), cell);
+// Offers `cell` to each other region owning a free cell beside it, at its score there.
+void RemainingWorkExchange::offerToEveryNeighbour(int cell) {
+    const int donor = (*owner_)[static_cast<std::size_t>(cell)];
+    for (const int neighbour : graph_.neighbours(cell)) {
+        const int receiver = (*owner_)[static_cast<std::size_t>(neighbour)];
+        if (receiver >= 0 && receiver != donor && isFree(neighbour))
+            offer(cell, donor, receiver);
     }
-    candidates.resize(kept);
-    for (const int cell : candidates)
-        listed_[static_cast<std::size_t>(cell)] = 0;
-    // The connectivity check is the dear part: it runs on the most surrounded by the receiver first and
-    // stops at the first it allows, usually the first. A heap orders no more of a long border than that.
-    std::make_heap(scored.begin(), scored.end());
-    while (!scored.empty()) {
-        std::pop_heap(scored.begin(), scored.end());
-        const int cell = scored.back().second;
-        scored.pop_back();
-        if (donorStopped || connectivity_.canRemove(cell, *owner_, connectivitySearchLimit))
-            return cell;
-    }
-    candidates.clear(); // nothing the donor can spare here now
-    return -1;
 }
 
+// Puts `cell` of `donor` on its link to `receiver`, scored by how surrounded by the receiver it is.
+void RemainingWorkExchange::offer(int cell, int donor, int receiver) {
+    std::vector<Candidate>& candidates = link(donor, receiver);
+    candidates.push_back({countIn(cell, receiver) - countIn(cell, donor), cell});
+    std::push_heap(candidates.begin(), candidates.end());
+}
+
+// The free cell of `donor` next to `receiver` most surrounded by the receiver (smooth borders) that the
+// donor can spare without falling apart near it; -1 when there is none. Each link's candidates are a heap
+// whose entries are checked as they come up: one that changed hands or no longer touches the receiver's
+// free cells is dropped, one whose score changed goes back at its new score, and one the donor cannot spare
+// is dropped until a move beside it offers it again. Before, the whole border was scored for every cell
+// moved, which on 3 M cells made a robot's stop take minutes.
+int RemainingWorkExchange::givableCell(int donor, int receiver) {
+    std::vector<Candidate>& candidates = link(donor, receiver);
+    const bool donorStopped = (*robots_)[static_cast<std::size_t>(donor)].speedFactor <= 0.0;
+    std::vector<int> seen; // cells looked at in this call: their other entries are repeats
+    int found = -1;
+    while (!candidates.empty() && found < 0) {
+        std::pop_heap(candidates.begin(), candidates.end());
+        const Candidate top = candidates.back();
+        candidates.pop_back();
+        const auto index = static_cast<std::size_t>(top.cell);
+        if (looked_[index] != 0 || (*owner_)[index] != donor || !isFree(top.cell) ||
+            !touchesFreeCellOf(top.cell, receiver))
+            continue;
+        const int score = countIn(top.cell, receiver) - countIn(top.cell, donor);
+        if (score != top.score) {
+            candidates.push_back({score, top.cell});
+            std::push_heap(candidates.begin(), candidates.end());
+            continue;
+        }
+        looked_[index] = 1;
+        seen.push_back(top.cell);
+        // The connectivity check is the dear part: it runs on the most surrounded cells first.
+        if (donorStopped || connectivity_.canRemove(top.cell, *owner_, connectivitySearchLimit))
+            found = top.cell;
+    }
+    for (const int cell : seen)
+        looked_[static_cast<std::size_t>(cell)] = 0;
+    return found;
+}
+
+// Hands `cell` over and offers what the move opened: the donor's free cells beside it to the receiver,
+// and the cell itself to the other regions beside it.
 void RemainingWorkExchange::move(int cell, int receiver) {
     const int donor = (*owner_)[static_cast<std::size_t>(cell)];
     const double seconds = graph_.cell(cell).coverSeconds();
@@ -287,10 +304,12 @@ void RemainingWorkExchange::move(int cell, int receiver) {
     (*owner_)[static_cast<std::size_t>(cell)] = receiver;
     for (const int neighbour : graph_.neighbours(cell)) {
         const int other = (*owner_)[static_cast<std::size_t>(neighbour)];
-        if (other == donor && isFree(neighbour))
-            link(donor, receiver).push_back(neighbour);
-        else if (other >= 0 && other != receiver && isFree(neighbour))
-            link(receiver, other).push_back(cell);
+        if (other < 0 || !isFree(neighbour))
+            continue;
+        if (other == donor)
+            offer(neighbour, donor, receiver);
+        else if (other != receiver)
+            offer(cell, receiver, other);
     }
 }
 

@@ -28,6 +28,14 @@ class RemainingWorkExchange {
                  int maxMoves);
 
   private:
+    struct Candidate {
+        int score; // the receiver's cells beside it, less the donor's
+        int cell;
+        friend bool operator<(const Candidate& a, const Candidate& b) {
+            return a.score != b.score ? a.score < b.score : a.cell < b.cell;
+        }
+    };
+
     [[nodiscard]] double timeLeft(int robot) const;
     [[nodiscard]] std::vector<int> nextChain() const;
     [[nodiscard]] int givableCell(int donor, int receiver);
@@ -37,13 +45,15 @@ class RemainingWorkExchange {
     [[nodiscard]] int nextStamp();
     int growBlock(int seed, int receiver, double seconds, int maxMoves);
     void move(int cell, int receiver);
+    void offer(int cell, int donor, int receiver);
+    void offerToEveryNeighbour(int cell);
     [[nodiscard]] int countIn(int cell, int region) const;
     [[nodiscard]] bool touchesFreeCellOf(int cell, int region) const;
     [[nodiscard]] bool isFree(int cell) const { return (*entered_)[static_cast<std::size_t>(cell)] == 0; }
-    [[nodiscard]] std::vector<int>& link(int donor, int receiver) {
+    [[nodiscard]] std::vector<Candidate>& link(int donor, int receiver) {
         return links_[static_cast<std::size_t>(donor) * robots_->size() + static_cast<std::size_t>(receiver)];
     }
-    [[nodiscard]] const std::vector<int>& link(int donor, int receiver) const {
+    [[nodiscard]] const std::vector<Candidate>& link(int donor, int receiver) const {
         return links_[static_cast<std::size_t>(donor) * robots_->size() + static_cast<std::size_t>(receiver)];
     }
 
@@ -56,9 +66,11 @@ class RemainingWorkExchange {
     std::vector<double> work_; // by robot: seconds of work left at full speed
     std::vector<int> seen_;    // by cell: the stamp of the last search that reached it
     std::vector<int> steps_;   // by cell: steps from where that search began
-    std::vector<char> listed_; // by cell: already kept in the candidate list being cleaned (scratch)
+    std::vector<char> looked_; // by cell: already looked at by the givableCell under way (scratch)
     int stamp_ = 0;
-    std::vector<std::vector<int>> links_; // by (donor, receiver): free donor cells next to the receiver
+    // By (donor, receiver): a heap of free donor cells offered to the receiver, best first; entries may be
+    // stale (givableCell checks them).
+    std::vector<std::vector<Candidate>> links_;
 };
 
 } // namespace mcpp
