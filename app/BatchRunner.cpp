@@ -143,8 +143,7 @@ void BatchRunner::assembleMission() {
     }
     for (std::size_t i = 0; i < options_.starts.size(); ++i) {
         io::RobotSpec robot{"Robot " + std::to_string(i + 1), options_.starts[i], options_.startCrs};
-        if (i < options_.chargers.size())
-            robot.charger = options_.chargers[i];
+        robot.charger = options_.chargers[i];
         mission_.robots.push_back(std::move(robot));
     }
 }
@@ -593,7 +592,7 @@ std::string BatchRunner::fieldName(const io::MissionField& field) const {
         break;
     case Part::Charger:
         if (!fromFile)
-            return "--charger " + std::to_string(field.robot + 1);
+            return "--charger after --start " + std::to_string(field.robot + 1);
         break;
     case Part::Planner:
         if (options_.planner || !fromFile)

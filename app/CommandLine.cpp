@@ -204,6 +204,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
     std::vector<std::string> positionals;
     std::vector<std::string_view> seen; // flags in the order given
     int startCount = 0;
+    std::string chargerWithoutStart; // the first --charger given before any --start
     bool onlyPositionalsFollow = false;
 
     for (std::size_t i = 0; i < arguments.size(); ++i) {
@@ -267,12 +268,23 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 return failure("--start " + std::to_string(startCount) + ": " + quoted(value) +
                                " is not X,Y");
             options.starts.push_back(*point);
+            options.chargers.emplace_back();
         } else if (flag == "--charger") {
+            // It belongs to the robot of the --start before it; one with none is reported once it is
+            // known whether a mission file gives the robots instead.
+            if (options.starts.empty()) {
+                if (chargerWithoutStart.empty())
+                    chargerWithoutStart = value;
+                continue;
+            }
+            const std::string which = "--charger after --start " + std::to_string(options.starts.size());
             const auto point = parsePoint(value);
             if (!point)
-                return failure("--charger " + std::to_string(options.chargers.size() + 1) + ": " +
-                               quoted(value) + " is not X,Y");
-            options.chargers.push_back(*point);
+                return failure(which + ": " + quoted(value) + " is not X,Y");
+            std::optional<MapPoint>& charger = options.chargers[options.starts.size() - 1];
+            if (charger)
+                return failure(which + ": that robot has a --charger already");
+            charger = *point;
         } else if (flag == "--start-crs") {
             if (!isEpsgCode(value))
                 return failure("--start-crs: " + quoted(value) + " is not EPSG:N");
@@ -391,11 +403,9 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             return failure("--classes and --preset cannot be used together");
         if (options.starts.empty())
             return failure("--raster needs at least one --start X,Y");
-        if (options.chargers.size() > options.starts.size())
-            return failure("--charger: " + std::to_string(options.chargers.size()) + " chargers but " +
-                           std::to_string(options.starts.size()) + " --start" +
-                           (options.starts.size() == 1 ? "" : " flags") +
-                           ": give at most one per --start, in the same order");
+        if (!chargerWithoutStart.empty())
+            return failure("--charger " + quoted(chargerWithoutStart) +
+                           " comes before any --start: give it after the --start of its robot");
     }
     if (options.outputDirectory.empty())
         return failure("--batch needs --out DIR");
@@ -409,9 +419,8 @@ std::string CommandLine::usage() {
            "  mcpp [MISSION.json | RASTER]\n"
            "      Opens the planner window, optionally with a mission or a land-cover raster.\n"
            "  mcpp --batch MISSION.json --out DIR [options]\n"
-           "  mcpp --batch --raster FILE [--classes TABLE.csv | --preset NAME] --start X,Y [--start X,Y "
-           "...]\n"
-           "       [--start-crs EPSG:N] --out DIR [options]\n"
+           "  mcpp --batch --raster FILE [--classes TABLE.csv | --preset NAME] --start X,Y [--charger X,Y]\n"
+           "       [--start X,Y [--charger X,Y] ...] [--start-crs EPSG:N] --out DIR [options]\n"
            "      Plans without a window and writes the outputs into DIR.\n"
            "\n"
            "Batch flags:\n"
@@ -428,9 +437,9 @@ std::string CommandLine::usage() {
            "                           in the order given, as the outputs number the robots\n"
            "  --start-crs EPSG:N       CRS of the --start and --charger coordinates, e.g. EPSG:4326 for\n"
            "                           longitude,latitude\n"
-           "  --charger X,Y            where a robot charges, for planners that fly on batteries\n"
-           "                           (wavefront-battery); the first --charger is the first --start's\n"
-           "                           robot's, and so on. Robots without one charge at their start\n"
+           "  --charger X,Y            where the robot of the --start before it charges, for planners\n"
+           "                           that fly on batteries (wavefront-battery); robots without one\n"
+           "                           charge at their start\n"
            "  --band N                 raster band holding the classes (default 1)\n"
            "  --area FILE              plan only inside the polygons of this vector file (any format\n"
            "                           GDAL reads; reprojected to the raster's CRS)\n"

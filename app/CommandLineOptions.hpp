@@ -28,15 +28,15 @@ struct ParameterOverride {
 // What the command line asked for. Optional fields left empty keep the mission's (or the default) value.
 struct CommandLineOptions {
     RunMode mode = RunMode::Gui;
-    std::string guiFile;            // mission or raster to open in GUI mode; may be empty
-    std::string helpPlanner;        // --help-planner
-    std::string missionPath;        // batch mode from a mission file
-    std::string rasterPath;         // batch mode with the mission given by flags
-    std::string classesPath;        // --classes
-    std::string preset;             // --preset
-    std::vector<MapPoint> starts;   // --start, in the order given
-    std::string startCrs;           // --start-crs; empty: the raster's CRS
-    std::vector<MapPoint> chargers; // --charger, the robots' in the order of their starts
+    std::string guiFile;                           // mission or raster to open in GUI mode; may be empty
+    std::string helpPlanner;                       // --help-planner
+    std::string missionPath;                       // batch mode from a mission file
+    std::string rasterPath;                        // batch mode with the mission given by flags
+    std::string classesPath;                       // --classes
+    std::string preset;                            // --preset
+    std::vector<MapPoint> starts;                  // --start, in the order given
+    std::string startCrs;                          // --start-crs; empty: the raster's CRS
+    std::vector<std::optional<MapPoint>> chargers; // by start: the --charger given after it, if any
     std::string outputDirectory;
     std::optional<std::string> planner;
     std::optional<int> band;

@@ -141,6 +141,7 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(staleLabel_);
 
     auto* summary = new QFormLayout;
+    summary->setObjectName(QStringLiteral("resultsSummary"));
     makespan_ = valueLabel(QStringLiteral("makespanLabel"), this);
     lowerBound_ = valueLabel(QStringLiteral("lowerBoundLabel"), this);
     ratio_ = valueLabel(QStringLiteral("ratioLabel"), this);
@@ -209,6 +210,17 @@ QString ResultsPanel::makespanText() const {
     return makespan_->text();
 }
 
+// Under events the makespan is still the plan's at full speed; the Events row says when it is done.
+void ResultsPanel::describeMakespan(bool underEvents) {
+    if (auto* makespanName = qobject_cast<QLabel*>(summary_->labelForField(makespan_)))
+        makespanName->setText(underEvents ? tr("Makespan at full speed") : tr("Makespan"));
+    makespan_->setToolTip(underEvents
+                              ? tr("The slowest robot's time driving at full speed, as planned before "
+                                   "the events; when the mission is done under them is in the "
+                                   "Events row")
+                              : tr("The slowest robot's time, turns included"));
+}
+
 QString ResultsPanel::ratioText() const {
     return ratio_->text();
 }
@@ -226,6 +238,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
             label->setText(QStringLiteral("–"));
         summary_->setRowVisible(detection_, false);
         summary_->setRowVisible(timeline_, false);
+        describeMakespan(false);
         clearChart();
         setStale(false);
         return;
@@ -272,14 +285,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
                                       "stopped; each robot's tooltip gives its time at full speed")
                                  : tr("Driving at full speed, turns included"));
     makespan_->setText(formatDuration(metrics.makespanSeconds));
-    // Under events the makespan is still the plan's at full speed; the Events row says when it is done.
-    if (auto* makespanName = qobject_cast<QLabel*>(summary_->labelForField(makespan_)))
-        makespanName->setText(underEvents ? tr("Makespan at full speed") : tr("Makespan"));
-    makespan_->setToolTip(underEvents
-                              ? tr("The slowest robot's time driving at full speed, as planned before "
-                                   "the events; when the mission is done under them is in the "
-                                   "Events row")
-                              : tr("The slowest robot's time, turns included"));
+    describeMakespan(underEvents);
     lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
     ratio_->setText(QString::number(metrics.ratio, 'f', 3));
     covered_->setText(tr("%1 (%2 % of the passable area)")

@@ -39,18 +39,18 @@ double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds)
     closed_.assign(regionCount_ * regionCount_, 0);
     for (int c = 0; c < static_cast<int>(owner.size()); ++c)
         offerNeighboursOf(c);
-    double bestError = largestError();
+    Spread best = spread();
+    errorWhenStopped_ = best.largest;
     movesSinceBest_.clear();
-    // Near balance, chains can pass the same cells round in a cycle without getting closer (20 robots on
-    // 49 x 49 cells went round a cycle of about a thousand exchanges until the move cap, 150 ms): the
-    // exchange stops after this many exchanges without a new best, and keeps the best.
+    // Near balance, chains can pass the same cells round in a cycle without getting closer: the exchange
+    // stops after this many exchanges that moved cells without a new best, and keeps the best.
     const std::size_t stallExchanges = std::max<std::size_t>(64, 8 * regionCount_);
     std::size_t exchangesSinceBest = 0;
     exchanges_ = 0;
     // Each exchange moves at least one cell; a cell should not need to cross more than a few borders.
     bool reopen = false;
-    for (std::size_t moves = 0;
-         moves < 8 * owner.size() && bestError > toleranceSeconds && exchangesSinceBest < stallExchanges;) {
+    for (std::size_t moves = 0; moves < 8 * owner.size() && best.largest > toleranceSeconds &&
+                                exchangesSinceBest < stallExchanges;) {
         if (reopen) // borders have moved: a link closed before may have cells to give now
             std::fill(closed_.begin(), closed_.end(), 0);
         const std::vector<int> chain = nextChain();
@@ -63,19 +63,41 @@ double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds)
         const Passage passage = passAlong(chain, cellsPerLink, gap / 2.0);
         moves += static_cast<std::size_t>(std::max(passage.moved, 1));
         reopen = passage.complete;
-        const double error = largestError();
         ++exchanges_;
+        if (passage.moved == 0)
+            continue; // it only closed a link
         ++exchangesSinceBest;
-        if (error < bestError) {
-            bestError = error;
+        if (const Spread now = spread(); isCloser(now, best)) {
+            best = now;
             movesSinceBest_.clear();
             exchangesSinceBest = 0;
         }
     }
+    errorWhenStopped_ = largestError();
     returnToBest();
     const double error = largestError();
     owner_ = nullptr;
     return error;
+}
+
+// Whether `a` is nearer balance than `b`: a smaller largest error, or the same with the others nearer
+// their share (one region that cannot move would otherwise hide what the rest gained). The margins keep
+// the rounding of running sums from counting a division met before as a new one.
+bool BorderExchange::isCloser(const Spread& a, const Spread& b) const {
+    const double margin = 1e-9 * fairShare_;
+    if (a.largest < b.largest - margin)
+        return true;
+    return a.largest <= b.largest + margin && a.squares < b.squares - margin * fairShare_;
+}
+
+BorderExchange::Spread BorderExchange::spread() const {
+    Spread result;
+    for (double cost : cost_) {
+        const double error = cost - fairShare_;
+        result.largest = std::max(result.largest, std::abs(error));
+        result.squares += error * error;
+    }
+    return result;
 }
 
 // Undoes the moves made since the smallest error was reached, latest first.

@@ -31,6 +31,8 @@ class BorderExchange {
 
     // Chains passed along in the last balance, those that moved no cell included.
     [[nodiscard]] std::size_t exchangesMade() const { return exchanges_; }
+    // The largest error of the division the last balance stopped at, before it went back to the best.
+    [[nodiscard]] double errorWhenStopped() const { return errorWhenStopped_; }
 
   private:
     struct Candidate {
@@ -42,6 +44,10 @@ class BorderExchange {
     struct Passage {
         int moved;     // cells that changed hands
         bool complete; // every link passed at least one
+    };
+    struct Spread {
+        double largest = 0.0; // the largest distance of a region's cost from the fair share
+        double squares = 0.0; // the sum of the squared distances
     };
     struct Move {
         int cell;
@@ -63,6 +69,8 @@ class BorderExchange {
     [[nodiscard]] bool isRemovable(int cell, int region);
     [[nodiscard]] int countIn(int cell, int region) const;
     [[nodiscard]] double largestError() const;
+    [[nodiscard]] Spread spread() const;
+    [[nodiscard]] bool isCloser(const Spread& a, const Spread& b) const;
 
     std::vector<int> adjacencyStart_; // local adjacency, compressed rows
     std::vector<int> adjacency_;
@@ -77,6 +85,7 @@ class BorderExchange {
     std::vector<CandidateQueue> queues_; // per (donor, receiver)
     std::vector<char> closed_;           // per (donor, receiver): no cell to give since the last exchange
     std::size_t exchanges_ = 0;
+    double errorWhenStopped_ = 0.0;
     std::vector<Move> movesSinceBest_; // undone at the end when a later exchange did not improve on them
     std::vector<int> visitStamp_;
     int stamp_ = 0;

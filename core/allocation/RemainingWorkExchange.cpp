@@ -31,8 +31,8 @@ int RemainingWorkExchange::exchange(std::vector<int>& owner, const std::vector<c
         work_[r] = robots[r].committedSeconds;
     links_.assign(robotCount * robotCount, {});
 
-    if (looked_.size() != graph_.size())
-        looked_.assign(graph_.size(), 0);
+    if (lookedAt_.size() != graph_.size())
+        lookedAt_.assign(graph_.size(), 0);
     for (int cell = 0; cell < static_cast<int>(graph_.size()); ++cell) {
         const int donor = owner[static_cast<std::size_t>(cell)];
         if (donor < 0 || !isFree(cell))
@@ -259,38 +259,39 @@ void RemainingWorkExchange::offer(int cell, int donor, int receiver) {
 }
 
 // The free cell of `donor` next to `receiver` most surrounded by the receiver (smooth borders) that the
-// donor can spare without falling apart near it; -1 when there is none. Each link's candidates are a heap
-// whose entries are checked as they come up: one that changed hands or no longer touches the receiver's
-// free cells is dropped, one whose score changed goes back at its new score, and one the donor cannot spare
-// is dropped until a move beside it offers it again. Before, the whole border was scored for every cell
-// moved, which on 3 M cells made a robot's stop take minutes.
+// donor can spare without falling apart near it; -1 when there is none. A link's candidates are a heap
+// ranked by the score each had when offered, checked as they come up: one that changed hands or no longer
+// touches the receiver's free cells is dropped, one whose score fell goes back at its new score (one whose
+// score rose since waits at the old one), and one the donor cannot spare is dropped until a move of a cell
+// beside it to the receiver offers it again. Rescoring the whole border for every cell moved took minutes
+// on maps of millions of cells.
 int RemainingWorkExchange::givableCell(int donor, int receiver) {
     std::vector<Candidate>& candidates = link(donor, receiver);
     const bool donorStopped = (*robots_)[static_cast<std::size_t>(donor)].speedFactor <= 0.0;
-    std::vector<int> seen; // cells looked at in this call: their other entries are repeats
+    std::vector<int> lookedAt; // in this call: their other entries are repeats
     int found = -1;
     while (!candidates.empty() && found < 0) {
         std::pop_heap(candidates.begin(), candidates.end());
         const Candidate top = candidates.back();
         candidates.pop_back();
         const auto index = static_cast<std::size_t>(top.cell);
-        if (looked_[index] != 0 || (*owner_)[index] != donor || !isFree(top.cell) ||
+        if (lookedAt_[index] != 0 || (*owner_)[index] != donor || !isFree(top.cell) ||
             !touchesFreeCellOf(top.cell, receiver))
             continue;
         const int score = countIn(top.cell, receiver) - countIn(top.cell, donor);
-        if (score != top.score) {
+        if (score < top.score) {
             candidates.push_back({score, top.cell});
             std::push_heap(candidates.begin(), candidates.end());
             continue;
         }
-        looked_[index] = 1;
-        seen.push_back(top.cell);
+        lookedAt_[index] = 1;
+        lookedAt.push_back(top.cell);
         // The connectivity check is the dear part: it runs on the most surrounded cells first.
         if (donorStopped || connectivity_.canRemove(top.cell, *owner_, connectivitySearchLimit))
             found = top.cell;
     }
-    for (const int cell : seen)
-        looked_[static_cast<std::size_t>(cell)] = 0;
+    for (const int cell : lookedAt)
+        lookedAt_[static_cast<std::size_t>(cell)] = 0;
     return found;
 }
 

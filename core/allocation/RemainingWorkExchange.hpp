@@ -63,10 +63,10 @@ class RemainingWorkExchange {
     std::vector<int>* owner_ = nullptr;
     const std::vector<char>* entered_ = nullptr;
     const std::vector<Robot>* robots_ = nullptr;
-    std::vector<double> work_; // by robot: seconds of work left at full speed
-    std::vector<int> seen_;    // by cell: the stamp of the last search that reached it
-    std::vector<int> steps_;   // by cell: steps from where that search began
-    std::vector<char> looked_; // by cell: already looked at by the givableCell under way (scratch)
+    std::vector<double> work_;   // by robot: seconds of work left at full speed
+    std::vector<int> seen_;      // by cell: the stamp of the last search that reached it
+    std::vector<int> steps_;     // by cell: steps from where that search began
+    std::vector<char> lookedAt_; // by cell: already looked at by the givableCell under way (scratch)
     int stamp_ = 0;
     // By (donor, receiver): a heap of free donor cells offered to the receiver, best first; entries may be
     // stale (givableCell checks them).

@@ -11,6 +11,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "core/planners/PlanningRun.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace mcpp {
@@ -64,6 +65,17 @@ std::string eventsIgnoredMessage(const PlannerDescription& planner) {
            simulating + ")";
 }
 
+std::string chargersIgnoredMessage(const PlannerDescription& planner) {
+    std::string onBatteries;
+    for (const PlannerDescription& other : plannerDescriptions())
+        if (other.fliesOnBatteries())
+            onBatteries += (onBatteries.empty() ? "" : ", ") + other.name;
+    return planner.label +
+           " plans without batteries: the robots' chargers are left out (planners that fly "
+           "on batteries: " +
+           onBatteries + ")";
+}
+
 std::string confinedRobotMessage(const ConfinedRobot& confined) {
     const std::string others =
         confined.robotsInPocket > 1
@@ -108,6 +120,11 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
     PlanningRun planningRun(problem, std::move(parameters), progress, plan);
     if (!problem.events.empty() && !planner.simulatesEvents)
         planningRun.addIssue(IssueSeverity::Warning, "events-ignored", eventsIgnoredMessage(planner));
+    const bool anyCharger =
+        std::any_of(problem.chargers.begin(), problem.chargers.end(),
+                    [](const std::optional<MapPoint>& charger) { return charger.has_value(); });
+    if (anyCharger && !planner.fliesOnBatteries())
+        planningRun.addIssue(IssueSeverity::Warning, "chargers-ignored", chargersIgnoredMessage(planner));
     run(planningRun);
     planningRun.stage("metrics", [&] {
         for (CoveragePath& path : plan.paths)

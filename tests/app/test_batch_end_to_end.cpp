@@ -725,27 +725,14 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
 
     // The same mission given by flags, the charger by --charger: the same sorties and times.
     const QString byFlags = scratch_.filePath("charger-flags");
-    run = runMcpp({"--batch",
-                   "--raster",
-                   samplePath("synthetic/synthetic.asc"),
-                   "--classes",
-                   samplePath("synthetic/classes.csv"),
-                   "--start",
-                   "431040,5301040",
-                   "--start",
-                   "431230,5301280",
-                   "--start",
-                   "431420,5301060",
-                   "--charger",
-                   "431100,5301150",
-                   "--planner",
-                   "wavefront-battery",
-                   "--param",
-                   "battery_s=600",
-                   "--max-waypoints",
-                   "0",
-                   "--out",
-                   byFlags});
+    const QStringList flags{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes",
+                            samplePath("synthetic/classes.csv")};
+    // The charger belongs to the --start before it.
+    const QStringList robotFlags{"--start", "431040,5301040", "--charger", "431100,5301150",
+                                 "--start", "431230,5301280", "--start",   "431420,5301060"};
+    run = runMcpp(flags + robotFlags +
+                  QStringList{"--planner", "wavefront-battery", "--param", "battery_s=600", "--max-waypoints",
+                              "0", "--out", byFlags});
     checkOutputs(byFlags, 3, run, QStringLiteral("wavefront-battery"));
     if (QTest::currentTestFailed())
         return;
@@ -757,6 +744,12 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
         for (const char* field : {"sorties", "time_s", "cells"})
             QCOMPARE(robotsOf(byFlags)[robot].toObject().value(field),
                      robotsOf(out)[robot].toObject().value(field));
+    // A planner without batteries plans as without the charger, and says it left it out.
+    const QString withoutBatteries = scratch_.filePath("charger-mlct");
+    run = runMcpp(flags + robotFlags + QStringList{"--out", withoutBatteries});
+    checkOutputs(withoutBatteries, 3, run);
+    QVERIFY2(run.standardError.contains(QStringLiteral("chargers are left out")),
+             qPrintable(run.standardError));
 }
 
 // CPPIED: detection.tif lies on the plan's lattice in the raster's CRS; every cell a robot covers is seen

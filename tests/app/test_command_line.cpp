@@ -150,9 +150,12 @@ void TestCommandLine::batchWithEveryFlag() {
     QCOMPARE(options.starts[2].x, -113.1);
     QCOMPARE(options.starts[2].y, 37.2);
     QCOMPARE(options.startCrs, std::string("EPSG:4326"));
-    QCOMPARE(options.chargers.size(), std::size_t{1}); // the first robot's; the others charge at their starts
-    QCOMPARE(options.chargers[0].x, 318100.0);
-    QCOMPARE(options.chargers[0].y, 4130200.5);
+    // The robot of the --start before it, the third; the others charge at their starts.
+    QCOMPARE(options.chargers.size(), std::size_t{3});
+    QVERIFY(!options.chargers[0] && !options.chargers[1]);
+    QVERIFY(options.chargers[2].has_value());
+    QCOMPARE(options.chargers[2]->x, 318100.0);
+    QCOMPARE(options.chargers[2]->y, 4130200.5);
     QCOMPARE(options.planner.value_or(""), std::string("mcpp-mlct"));
     QCOMPARE(options.band.value_or(0), 2);
     QCOMPARE(options.parameters.size(), std::size_t{2});
@@ -231,12 +234,15 @@ void TestCommandLine::errors_data() {
         << words(flagMission + " --start-crs EPSG:") << "--start-crs: \"EPSG:\" is not EPSG:N";
     QTest::newRow("--start-crs bad code")
         << words(flagMission + " --start-crs EPSG:43x6") << "--start-crs: \"EPSG:43x6\" is not EPSG:N";
-    QTest::newRow("second --charger not a point")
-        << words(raster + "--preset p --start 30,40 --charger 1,2 --charger 3")
-        << "--charger 2: \"3\" is not X,Y";
-    QTest::newRow("more chargers than starts")
+    QTest::newRow("--charger not a point")
+        << words(raster + "--preset p --charger 1,2 --start 30,40 --charger 3")
+        << "--charger after --start 2: \"3\" is not X,Y";
+    QTest::newRow("two chargers for one start")
         << words(raster + "--preset p --charger 1,2 --charger 3,4")
-        << "--charger: 2 chargers but 1 --start: give at most one per --start, in the same order";
+        << "--charger after --start 1: that robot has a --charger already";
+    QTest::newRow("--charger before any --start")
+        << words("--batch --raster map.tif --charger 1,2 --start 10,20 --out out")
+        << "--charger \"1,2\" comes before any --start: give it after the --start of its robot";
     QTest::newRow("mission and --charger")
         << words("--batch m.json --charger 1,2 --out o")
         << "--charger cannot be combined with a mission file; the mission gives it";

@@ -147,15 +147,18 @@ class TestEventsAndTimeline : public QObject {
         QVERIFY2(table->item(0, 4)->toolTip().startsWith("1 h at full speed"),
                  qPrintable(table->item(0, 4)->toolTip()));
         QCOMPARE(table->item(1, 4)->text(), QString("stopped at 30 min"));
-        // The makespan row is the plan at full speed, and says so beside the Events row.
+        // The makespan row is the plan at full speed, and says so; the Events row says when it is done.
         const auto* makespan = panel.findChild<QLabel*>(QStringLiteral("makespanLabel"));
         QVERIFY(makespan != nullptr);
-        auto* summaryForm = panel.findChild<QFormLayout*>();
+        auto* summaryForm = panel.findChild<QFormLayout*>(QStringLiteral("resultsSummary"));
         QVERIFY(summaryForm != nullptr);
         const auto* makespanName =
             qobject_cast<QLabel*>(summaryForm->labelForField(const_cast<QLabel*>(makespan)));
         QVERIFY(makespanName != nullptr);
         QCOMPARE(makespanName->text(), QString("Makespan at full speed"));
+        panel.showPlan(nullptr, {}); // a cleared panel does not keep the wording of the events
+        QCOMPARE(makespanName->text(), QString("Makespan"));
+        panel.showPlan(&plan, {});
         const auto* chart = panel.findChild<QChartView*>(QStringLiteral("timeChart"));
         QVERIFY(chart != nullptr);
         QVERIFY(chart->chart()->title().contains("events"));
