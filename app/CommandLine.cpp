@@ -283,7 +283,8 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 return failure(which + ": " + quoted(value) + " is not X,Y");
             std::optional<MapPoint>& charger = options.chargers[options.starts.size() - 1];
             if (charger)
-                return failure(which + ": that robot has a --charger already");
+                return failure("--start " + std::to_string(options.starts.size()) +
+                               " has a --charger already: give one --charger after each --start");
             charger = *point;
         } else if (flag == "--start-crs") {
             if (!isEpsgCode(value))

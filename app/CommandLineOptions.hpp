@@ -36,7 +36,7 @@ struct CommandLineOptions {
     std::string preset;                            // --preset
     std::vector<MapPoint> starts;                  // --start, in the order given
     std::string startCrs;                          // --start-crs; empty: the raster's CRS
-    std::vector<std::optional<MapPoint>> chargers; // by start: the --charger given after it, if any
+    std::vector<std::optional<MapPoint>> chargers; // one per start (parse keeps them in step): its --charger
     std::string outputDirectory;
     std::optional<std::string> planner;
     std::optional<int> band;

@@ -198,6 +198,7 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     splitter->addWidget(table_);
     splitter->addWidget(chartView_);
     layout->addWidget(splitter, 1);
+    describeTimes(false);
 }
 
 QString ResultsPanel::formatDuration(double seconds) {
@@ -210,8 +211,14 @@ QString ResultsPanel::makespanText() const {
     return makespan_->text();
 }
 
-// Under events the makespan is still the plan's at full speed; the Events row says when it is done.
-void ResultsPanel::describeMakespan(bool underEvents) {
+// Under events what a user waits for is when each robot is done (its full-speed time is in the tooltip),
+// while the makespan is still the plan's at full speed; the Events row says when the mission is done.
+void ResultsPanel::describeTimes(bool underEvents) {
+    table_->horizontalHeaderItem(timeColumn)->setText(underEvents ? tr("Done at") : tr("Time"));
+    table_->horizontalHeaderItem(timeColumn)
+        ->setToolTip(underEvents ? tr("When it is done under the events (slowed down, waiting for cells) or "
+                                      "stopped; each robot's tooltip gives its time at full speed")
+                                 : tr("Driving at full speed, turns included"));
     if (auto* makespanName = qobject_cast<QLabel*>(summary_->labelForField(makespan_)))
         makespanName->setText(underEvents ? tr("Makespan at full speed") : tr("Makespan"));
     makespan_->setToolTip(underEvents
@@ -238,7 +245,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
             label->setText(QStringLiteral("–"));
         summary_->setRowVisible(detection_, false);
         summary_->setRowVisible(timeline_, false);
-        describeMakespan(false);
+        describeTimes(false);
         clearChart();
         setStale(false);
         return;
@@ -276,16 +283,10 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
             table_->setItem(r, sortiesColumn, sortiesItem(*plan, sorties->robots()[row]));
     }
     table_->setColumnHidden(sortiesColumn, sorties == nullptr);
-    // Under events what a user waits for is when each robot is done; its full-speed time is in the tooltip.
     const bool underEvents =
         !metrics.robots.empty() && playedUnderEvents(*plan, metrics.robots.front().robot) != nullptr;
-    table_->horizontalHeaderItem(timeColumn)->setText(underEvents ? tr("Done at") : tr("Time"));
-    table_->horizontalHeaderItem(timeColumn)
-        ->setToolTip(underEvents ? tr("When it is done under the events (slowed down, waiting for cells) or "
-                                      "stopped; each robot's tooltip gives its time at full speed")
-                                 : tr("Driving at full speed, turns included"));
     makespan_->setText(formatDuration(metrics.makespanSeconds));
-    describeMakespan(underEvents);
+    describeTimes(underEvents);
     lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
     ratio_->setText(QString::number(metrics.ratio, 'f', 3));
     covered_->setText(tr("%1 (%2 % of the passable area)")

@@ -33,7 +33,7 @@ class ResultsPanel : public QWidget {
     [[nodiscard]] static QString formatDuration(double seconds);
 
   private:
-    void describeMakespan(bool underEvents);
+    void describeTimes(bool underEvents);
     void clearChart();
     void showChart(const Plan& plan, const QStringList& names);
 

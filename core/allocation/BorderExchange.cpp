@@ -47,7 +47,8 @@ double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds)
     const std::size_t stallExchanges = std::max<std::size_t>(64, 8 * regionCount_);
     std::size_t exchangesSinceBest = 0;
     exchanges_ = 0;
-    // Each exchange moves at least one cell; a cell should not need to cross more than a few borders.
+    // The cap counts each exchange as at least one move, so exchanges that only close a link are bounded
+    // too; a cell should not need to cross more than a few borders.
     bool reopen = false;
     for (std::size_t moves = 0; moves < 8 * owner.size() && best.largest > toleranceSeconds &&
                                 exchangesSinceBest < stallExchanges;) {
@@ -100,7 +101,7 @@ BorderExchange::Spread BorderExchange::spread() const {
     return result;
 }
 
-// Undoes the moves made since the smallest error was reached, latest first.
+// Undoes the moves made since the division nearest balance (isCloser), latest first.
 void BorderExchange::returnToBest() {
     for (auto entry = movesSinceBest_.rbegin(); entry != movesSinceBest_.rend(); ++entry) {
         const auto index = static_cast<std::size_t>(entry->cell);

@@ -262,13 +262,13 @@ void RemainingWorkExchange::offer(int cell, int donor, int receiver) {
 // donor can spare without falling apart near it; -1 when there is none. A link's candidates are a heap
 // ranked by the score each had when offered, checked as they come up: one that changed hands or no longer
 // touches the receiver's free cells is dropped, one whose score fell goes back at its new score (one whose
-// score rose since waits at the old one), and one the donor cannot spare is dropped until a move of a cell
-// beside it to the receiver offers it again. Rescoring the whole border for every cell moved took minutes
-// on maps of millions of cells.
+// score rose since was ranked at the old one and is taken as it is when it comes up), and one the donor
+// cannot spare is dropped until a move of a cell beside it to the receiver offers it again. Rescoring the
+// whole border for every cell moved took minutes on maps of millions of cells.
 int RemainingWorkExchange::givableCell(int donor, int receiver) {
     std::vector<Candidate>& candidates = link(donor, receiver);
     const bool donorStopped = (*robots_)[static_cast<std::size_t>(donor)].speedFactor <= 0.0;
-    std::vector<int> lookedAt; // in this call: their other entries are repeats
+    std::vector<int> cellsLookedAt; // in this call: their other entries are repeats
     int found = -1;
     while (!candidates.empty() && found < 0) {
         std::pop_heap(candidates.begin(), candidates.end());
@@ -285,12 +285,12 @@ int RemainingWorkExchange::givableCell(int donor, int receiver) {
             continue;
         }
         lookedAt_[index] = 1;
-        lookedAt.push_back(top.cell);
+        cellsLookedAt.push_back(top.cell);
         // The connectivity check is the dear part: it runs on the most surrounded cells first.
         if (donorStopped || connectivity_.canRemove(top.cell, *owner_, connectivitySearchLimit))
             found = top.cell;
     }
-    for (const int cell : lookedAt)
+    for (const int cell : cellsLookedAt)
         lookedAt_[static_cast<std::size_t>(cell)] = 0;
     return found;
 }

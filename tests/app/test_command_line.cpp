@@ -239,7 +239,7 @@ void TestCommandLine::errors_data() {
         << "--charger after --start 2: \"3\" is not X,Y";
     QTest::newRow("two chargers for one start")
         << words(raster + "--preset p --charger 1,2 --charger 3,4")
-        << "--charger after --start 1: that robot has a --charger already";
+        << "--start 1 has a --charger already: give one --charger after each --start";
     QTest::newRow("--charger before any --start")
         << words("--batch --raster map.tif --charger 1,2 --start 10,20 --out out")
         << "--charger \"1,2\" comes before any --start: give it after the --start of its robot";

@@ -4,6 +4,7 @@
 
 #include <QtTest>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -177,6 +178,31 @@ class BorderExchangeTest : public QObject {
         QCOMPARE(exchange.balance(owner, 1.0), 0.0);
         for (int column = 0; column < 10; ++column)
             QCOMPARE(owner[static_cast<std::size_t>(drawn.at(column, 0))], column < 5 ? 0 : 1);
+    }
+
+    // A corridor of 40 cells: region 0 is its start alone at the west end, behind region 1's start, so it
+    // can neither give nor take and its error stays the largest however the others share. Regions 1 and 2
+    // still even out (to within a cell): a division nearer balance for them counts though the largest error
+    // does not change.
+    void regionsEvenOutBesideOneThatCannotChange() {
+        DrawnCells drawn({std::string(80, '.'), std::string(80, '.')});
+        QCOMPARE(drawn.graph.size(), std::size_t{40});
+        std::vector<int> owner(drawn.graph.size(), 2);
+        owner[static_cast<std::size_t>(drawn.at(0, 0))] = 0;
+        owner[static_cast<std::size_t>(drawn.at(1, 0))] = 1;
+        const CellIndexScope local(drawn.scratch, drawn.cells);
+        const std::vector<double> weights(drawn.graph.size(), 4.0);
+        BorderExchange exchange(drawn.graph, drawn.cells, local, weights,
+                                {drawn.at(0, 0), drawn.at(1, 0), drawn.at(39, 0)},
+                                [](int, int, int) { return std::int64_t{0}; });
+        const double error = exchange.balance(owner, 1.0);
+        std::array<int, 3> cells{};
+        for (int region : owner)
+            ++cells[static_cast<std::size_t>(region)];
+        QCOMPARE(cells[0], 1);
+        QVERIFY2(std::abs(cells[1] - cells[2]) <= 1,
+                 qPrintable(QStringLiteral("%1 against %2 cells").arg(cells[1]).arg(cells[2])));
+        QCOMPARE(error, 160.0 / 3.0 - 4.0); // region 0's, the fair share less its one cell
     }
 
     // Twenty regions on a crowded grid seldom reach a cell's error: chains can then pass cells round in a

@@ -276,6 +276,16 @@ class MdstcTest : public QObject {
         QVERIFY(hasIssue(plan, "events-ignored"));
         QVERIFY(timelineLayerOf(plan) == nullptr);
     }
+
+    // A planner without batteries says it left the robots' chargers out; one that flies on them does not.
+    void plannersWithoutBatteriesSayTheyIgnoreChargers() {
+        PlanningProblem problem = test::obstacleGridProblem(20, 2, 2020);
+        problem.chargers = {problem.starts[0], std::nullopt};
+        QVERIFY(hasIssue(makePlanner("mcpp-mlct")->plan(problem, {}), "chargers-ignored"));
+        QVERIFY(!hasIssue(makePlanner("wavefront-battery")->plan(problem, {}), "chargers-ignored"));
+        problem.chargers.clear();
+        QVERIFY(!hasIssue(makePlanner("mcpp-mlct")->plan(problem, {}), "chargers-ignored"));
+    }
 };
 
 QTEST_GUILESS_MAIN(MdstcTest)

@@ -158,6 +158,7 @@ class TestEventsAndTimeline : public QObject {
         QCOMPARE(makespanName->text(), QString("Makespan at full speed"));
         panel.showPlan(nullptr, {}); // a cleared panel does not keep the wording of the events
         QCOMPARE(makespanName->text(), QString("Makespan"));
+        QCOMPARE(table->horizontalHeaderItem(4)->text(), QString("Time"));
         panel.showPlan(&plan, {});
         const auto* chart = panel.findChild<QChartView*>(QStringLiteral("timeChart"));
         QVERIFY(chart != nullptr);
