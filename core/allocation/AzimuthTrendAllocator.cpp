@@ -316,9 +316,7 @@ class Allocation {
             stealSeen_.assign(static_cast<std::size_t>(cellCount_), 0);
         ++stealStamp_;
         for (int cell : border) {
-            const int owner = owner_[static_cast<std::size_t>(cell)];
-            if (owner < 0 || owner == robot || stealSeen_[static_cast<std::size_t>(cell)] == stealStamp_ ||
-                !touchesRegion(cell, robot))
+            if (stealSeen_[static_cast<std::size_t>(cell)] == stealStamp_ || !isOnForeignBorder(robot, cell))
                 continue;
             stealSeen_[static_cast<std::size_t>(cell)] = stealStamp_;
             border[kept++] = cell;
@@ -401,9 +399,14 @@ class Allocation {
                    donor.cost - 1e-9;
     }
 
-    bool stillStealable(int robot, int cell) const {
+    // Whether another robot owns the cell and it touches this robot's region.
+    bool isOnForeignBorder(int robot, int cell) const {
         const int owner = owner_[static_cast<std::size_t>(cell)];
-        return owner >= 0 && owner != robot && lowersLargerCost(robot, cell) && touchesRegion(cell, robot);
+        return owner >= 0 && owner != robot && touchesRegion(cell, robot);
+    }
+
+    bool stillStealable(int robot, int cell) const {
+        return isOnForeignBorder(robot, cell) && lowersLargerCost(robot, cell);
     }
 
     // Boundary cells of each region (a neighbour belongs to another robot), kept up to date on every move.

@@ -74,9 +74,9 @@ double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds)
             exchangesSinceBest = 0;
         }
     }
-    errorWhenStopped_ = largestError();
+    errorWhenStopped_ = spread().largest;
     returnToBest();
-    const double error = largestError();
+    const double error = spread().largest;
     owner_ = nullptr;
     return error;
 }
@@ -339,13 +339,6 @@ bool BorderExchange::isRemovable(int cell, int region) {
         }
     }
     return found == inRegion.size();
-}
-
-double BorderExchange::largestError() const {
-    double largest = 0.0;
-    for (double cost : cost_)
-        largest = std::max(largest, std::abs(cost - fairShare_));
-    return largest;
 }
 
 } // namespace mcpp

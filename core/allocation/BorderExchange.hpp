@@ -68,7 +68,6 @@ class BorderExchange {
     [[nodiscard]] std::vector<int> hangingOn(int cell, int region, double limitSeconds);
     [[nodiscard]] bool isRemovable(int cell, int region);
     [[nodiscard]] int countIn(int cell, int region) const;
-    [[nodiscard]] double largestError() const;
     [[nodiscard]] Spread spread() const;
     [[nodiscard]] bool isCloser(const Spread& a, const Spread& b) const;
 

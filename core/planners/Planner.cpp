@@ -54,26 +54,25 @@ void checkEvents(const PlanningProblem& problem) {
                                                             wrong->field + ": " + wrong->detail);
 }
 
-std::string eventsIgnoredMessage(const PlannerDescription& planner) {
-    std::string simulating;
+// The names of the registered planners that `has` holds for, comma-separated.
+template <typename Predicate> std::string plannerNamesWhere(Predicate has) {
+    std::string names;
     for (const PlannerDescription& other : plannerDescriptions())
-        if (other.simulatesEvents)
-            simulating += (simulating.empty() ? "" : ", ") + other.name;
+        if (has(other))
+            names += (names.empty() ? "" : ", ") + other.name;
+    return names;
+}
+
+std::string eventsIgnoredMessage(const PlannerDescription& planner) {
     return planner.label +
-           " plans without events: the mission's events are left out (planners that "
-           "play them: " +
-           simulating + ")";
+           " plans without events: the mission's events are left out (planners that play them: " +
+           plannerNamesWhere([](const PlannerDescription& other) { return other.simulatesEvents; }) + ")";
 }
 
 std::string chargersIgnoredMessage(const PlannerDescription& planner) {
-    std::string onBatteries;
-    for (const PlannerDescription& other : plannerDescriptions())
-        if (other.fliesOnBatteries())
-            onBatteries += (onBatteries.empty() ? "" : ", ") + other.name;
     return planner.label +
-           " plans without batteries: the robots' chargers are left out (planners that fly "
-           "on batteries: " +
-           onBatteries + ")";
+           " plans without batteries: the robots' chargers are left out (planners that fly on batteries: " +
+           plannerNamesWhere([](const PlannerDescription& other) { return other.fliesOnBatteries(); }) + ")";
 }
 
 std::string confinedRobotMessage(const ConfinedRobot& confined) {

@@ -1,5 +1,4 @@
 #include "core/allocation/BorderExchange.hpp"
-#include "core/decomposition/UniformGridDecomposition.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -21,8 +20,7 @@ struct DrawnCells {
 
     explicit DrawnCells(const std::vector<std::string>& rows) {
         const PlanningProblem problem = test::drawnProblem(rows, {});
-        graph = UniformGridDecomposition(DecompositionOptions{}, GridCellRule::WholeCell)
-                    .decompose(problem.grid, problem.classes);
+        graph = test::cellPerPixelGraph(problem);
         cells.resize(graph.size());
         std::iota(cells.begin(), cells.end(), 0);
         scratch.assign(graph.size(), -1);
@@ -50,8 +48,7 @@ struct CrowdedGrid {
 
     explicit CrowdedGrid(std::uint32_t seed) {
         const PlanningProblem problem = test::obstacleGridProblem(49, 1, seed);
-        graph = UniformGridDecomposition(DecompositionOptions{}, GridCellRule::WholeCell)
-                    .decompose(problem.grid, problem.classes);
+        graph = test::cellPerPixelGraph(problem);
         cells = largestPart();
         scratch.assign(graph.size(), -1);
         std::mt19937 random(seed);

@@ -1,7 +1,6 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
-#include "core/decomposition/UniformGridDecomposition.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -21,8 +20,7 @@ struct Split {
     // robot 1 (start in the south-east cell) the rest.
     explicit Split(int border) {
         PlanningProblem problem = test::uniformProblem(8, 8, 10.0, std::vector<bool>(64, false), {});
-        graph = UniformGridDecomposition(DecompositionOptions{}, GridCellRule::WholeCell)
-                    .decompose(problem.grid, problem.classes);
+        graph = test::cellPerPixelGraph(problem);
         regions.robotOfCell.resize(graph.size());
         regions.costSeconds.assign(2, 0.0);
         regions.startCell.assign(2, -1);

@@ -1,5 +1,4 @@
 #include "core/allocation/RemainingWorkExchange.hpp"
-#include "core/decomposition/UniformGridDecomposition.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -21,8 +20,7 @@ struct RunningMission {
 
     explicit RunningMission(std::uint32_t seed) {
         const PlanningProblem problem = test::obstacleGridProblem(60, 1, seed);
-        graph = UniformGridDecomposition(DecompositionOptions{}, GridCellRule::WholeCell)
-                    .decompose(problem.grid, problem.classes);
+        graph = test::cellPerPixelGraph(problem);
         owner.assign(graph.size(), -1);
         entered.assign(graph.size(), 0);
         std::mt19937 random(seed);

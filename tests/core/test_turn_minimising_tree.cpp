@@ -7,7 +7,6 @@
 #include "core/coverage/StraightRuns.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/coverage/TurnMinimisingTree.hpp"
-#include "core/decomposition/UniformGridDecomposition.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -37,8 +36,7 @@ struct GridCells {
         for (std::size_t i = 0; i < blocked.size(); ++i)
             blocked[i] = obstacle(random);
         const PlanningProblem problem = test::uniformProblem(columns, rows, 10.0, blocked, {});
-        graph = UniformGridDecomposition(DecompositionOptions{}, GridCellRule::WholeCell)
-                    .decompose(problem.grid, problem.classes);
+        graph = test::cellPerPixelGraph(problem);
         cells.resize(graph.size());
         std::iota(cells.begin(), cells.end(), 0);
         scratch.assign(graph.size(), -1);

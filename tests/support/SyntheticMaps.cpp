@@ -1,5 +1,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 
+#include "core/decomposition/UniformGridDecomposition.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -7,6 +9,11 @@
 #include <utility>
 
 namespace mcpp::test {
+
+CellGraph cellPerPixelGraph(const PlanningProblem& problem) {
+    return UniformGridDecomposition(DecompositionOptions{}, GridCellRule::WholeCell)
+        .decompose(problem.grid, problem.classes);
+}
 
 MapPoint pixelCentre(const ClassGrid& grid, int column, int row) {
     return {grid.originX + (column + 0.5) * grid.pixelWidth, grid.originY - (row + 0.5) * grid.pixelHeight};

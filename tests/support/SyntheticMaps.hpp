@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/CellGraph.hpp"
 #include "core/model/PlanningProblem.hpp"
 
 #include <cstdint>
@@ -48,6 +49,10 @@ struct RandomMapSpec {
 // south of the north-west corner.
 [[nodiscard]] PlanningProblem drawnProblem(const std::vector<std::string>& rows,
                                            const std::vector<MapPoint>& starts);
+
+// The problem's map as one planning cell per whole pixel (a uniform grid, no quadtree), for tests of the
+// stages after decomposition.
+[[nodiscard]] CellGraph cellPerPixelGraph(const PlanningProblem& problem);
 
 // The centre of pixel (column, row) of a grid.
 [[nodiscard]] MapPoint pixelCentre(const ClassGrid& grid, int column, int row);
