@@ -141,9 +141,10 @@ double roundedDownSpeed(double metresPerSecond) {
         return 0.0;
     const int decimals = 1 - static_cast<int>(std::floor(std::log10(metresPerSecond)));
     const double scale = std::pow(10.0, std::abs(decimals));
-    // A hair above the product, so that 0.29 * 100 = 28.999999999999996 still rounds down to 29.
-    const double down = decimals > 0 ? std::floor(metresPerSecond * scale * (1.0 + 1e-12)) / scale
-                                     : std::floor(metresPerSecond / scale * (1.0 + 1e-12)) * scale;
+    // A hair above the product, so that 0.29 * 100 = 28.999999999999996 still rounds down to 29, and a
+    // float speed (0.7F is 0.69999998807907) still rounds down to 0.7.
+    const double down = decimals > 0 ? std::floor(metresPerSecond * scale * (1.0 + 1e-7)) / scale
+                                     : std::floor(metresPerSecond / scale * (1.0 + 1e-7)) * scale;
     return down > 0.0 ? down : metresPerSecond;
 }
 

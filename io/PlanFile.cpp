@@ -95,13 +95,13 @@ void putCells(CompressedWriter& out, const CellGraph& graph) {
         out.put(cell.column);
         out.put(cell.row);
         out.put(cell.span);
-        out.put(cell.level);
+        out.put(int{cell.level});
         out.put(cell.minX);
         out.put(cell.minY);
         out.put(cell.size);
         out.put(cell.classValue);
         out.put(cell.turnSecondsPer90Degrees);
-        out.put(cell.speedMetresPerSecond);
+        out.put(double{cell.speedMetresPerSecond});
         out.put(cell.passableAreaSquareMetres);
         out.put(cell.freeSubCells);
         out.put(cell.expectedTurnsPerSubCell);
@@ -151,16 +151,19 @@ CellGraph getCells(CompressedReader& in) {
         cell.column = in.get<int>();
         cell.row = in.get<int>();
         cell.span = in.get<int>();
-        cell.level = in.get<int>();
+        const int level = in.get<int>();
         cell.minX = in.get<double>();
         cell.minY = in.get<double>();
         cell.size = in.get<double>();
         cell.classValue = in.get<std::int32_t>();
         cell.turnSecondsPer90Degrees = in.get<float>();
-        cell.speedMetresPerSecond = in.get<double>();
+        cell.speedMetresPerSecond = static_cast<float>(in.get<double>());
         cell.passableAreaSquareMetres = in.get<double>();
         cell.freeSubCells = in.get<std::uint8_t>();
         cell.expectedTurnsPerSubCell = in.get<float>();
+        if (level < 1 || level > frame.levels || level > 255)
+            throw CompressedReader::DamagedData("a cell on no level of the quadtree");
+        cell.level = static_cast<std::uint8_t>(level);
         if (cell.span <= 0 || cell.column < 0 || cell.row < 0 ||
             std::int64_t{cell.column} + cell.span > frame.columns ||
             std::int64_t{cell.row} + cell.span > frame.rows || !std::isfinite(cell.minX) ||
@@ -199,7 +202,7 @@ std::uint8_t waypointTag(const Waypoint& waypoint, const CellGraph& graph) {
         if (centre.x == waypoint.x && centre.y == waypoint.y)
             tag = static_cast<std::uint8_t>(subCell);
     }
-    if (waypoint.classValue != cell.classValue || waypoint.speedMetresPerSecond != cell.speedMetresPerSecond)
+    if (waypoint.speedMetresPerSecond != cell.speedMetresPerSecond)
         tag |= explicitLandCover;
     return tag;
 }
@@ -225,8 +228,10 @@ void putWaypoints(CompressedWriter& out, const std::vector<Waypoint>& waypoints,
             out.put(waypoint.y);
         }
         if ((tag & explicitLandCover) != 0) {
-            out.put(waypoint.classValue);
-            out.put(waypoint.speedMetresPerSecond);
+            // The land cover is the cell's (files before waypoints lost theirs may hold another).
+            const bool inGraph = waypoint.cell >= 0 && static_cast<std::size_t>(waypoint.cell) < graph.size();
+            out.put(inGraph ? graph.cell(waypoint.cell).classValue : std::int32_t{0});
+            out.put(double{waypoint.speedMetresPerSecond});
         }
         if (!derivedTimes)
             out.put(waypoint.cumulativeSeconds);
@@ -256,10 +261,9 @@ std::vector<Waypoint> getWaypoints(CompressedReader& in, const CellGraph& graph)
             waypoint.y = centre.y;
         }
         if ((tag & explicitLandCover) != 0) {
-            waypoint.classValue = in.get<std::int32_t>();
-            waypoint.speedMetresPerSecond = in.get<double>();
+            in.get<std::int32_t>(); // the land cover, which is the cell's
+            waypoint.speedMetresPerSecond = static_cast<float>(in.get<double>());
         } else {
-            waypoint.classValue = graph.cell(waypoint.cell).classValue;
             waypoint.speedMetresPerSecond = graph.cell(waypoint.cell).speedMetresPerSecond;
         }
         if (!derivedTimes)

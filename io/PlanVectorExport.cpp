@@ -343,10 +343,10 @@ Status writeCellLayer(VectorFileWriter& writer, const ExportContext& context,
         const Cell& cell = graph.cell(static_cast<int>(index));
         OGRFeature feature(cells.value()->GetLayerDefn());
         feature.SetField("cell", static_cast<int>(index));
-        feature.SetField("level", cell.level);
+        feature.SetField("level", int{cell.level});
         feature.SetField("class", static_cast<int>(cell.classValue));
         feature.SetField("fov", cell.fieldOfView());
-        feature.SetField("speed", cell.speedMetresPerSecond);
+        feature.SetField("speed", internal::decimalDouble(cell.speedMetresPerSecond));
         feature.SetField("free_sub_cells", cell.freeSubCellCount());
         if (index < owner.size() && owner[index] >= 0)
             feature.SetField("robot", robotNumber(owner[index]));

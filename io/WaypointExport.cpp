@@ -91,6 +91,13 @@ double fieldOfViewAt(const Plan& plan, const Waypoint& waypoint) {
     return plan.cells.cell(waypoint.cell).fieldOfView();
 }
 
+// The land cover where a waypoint lies: its cell's; empty for a point in no cell.
+std::string landCoverAt(const Plan& plan, const Waypoint& waypoint) {
+    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= plan.cells.size())
+        return {};
+    return std::to_string(plan.cells.cell(waypoint.cell).classValue);
+}
+
 std::string fixed(double value, int decimals) {
     return internal::formatFixed(value, decimals);
 }
@@ -106,8 +113,7 @@ std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeColl
         const Waypoint& next = path.waypoints[i + 1];
         // Dropping `current` is exact when the robot drives the whole of previous -> next at next's speed.
         const bool redundant = collinearAndBetween(kept.back(), current, next) &&
-                               current.speedMetresPerSecond == next.speedMetresPerSecond &&
-                               current.classValue == next.classValue;
+                               current.speedMetresPerSecond == next.speedMetresPerSecond;
         if (!redundant)
             kept.push_back(current);
     }
@@ -384,8 +390,8 @@ Status writeWaypointCsv(const ExportContext& context, int robot, const std::stri
         };
         text += std::to_string(index++) + "," + internal::formatShortest(waypoint.x) + "," +
                 internal::formatShortest(waypoint.y) + "," + coordinate(point.longitude) + "," +
-                coordinate(point.latitude) + "," + std::to_string(waypoint.classValue) + "," +
-                internal::formatShortest(waypoint.speedMetresPerSecond) + "," +
+                coordinate(point.latitude) + "," + landCoverAt(context.plan, waypoint) + "," +
+                internal::formatShortestFloat(waypoint.speedMetresPerSecond) + "," +
                 internal::formatShortest(fieldOfViewAt(context.plan, waypoint)) + "," +
                 internal::formatShortest(waypoint.cumulativeSeconds) + "\n";
     }

@@ -564,7 +564,7 @@ void PlanRenderer::paintQuadTree(QPainter& painter, const QTransform& worldToDev
         const QRectF rectangle = deviceRectOf(worldToDevice, cell);
         if (rectangle.width() < kSmallestOutlinedCellPixels || !rectangle.intersects(visible))
             continue;
-        const auto level = static_cast<std::size_t>(std::clamp(cell.level, 1, levels));
+        const auto level = static_cast<std::size_t>(std::clamp(int{cell.level}, 1, levels));
         rectanglesByLevel[level].push_back(rectangle);
         levelPixels[level] = rectangle.width();
     }

@@ -80,7 +80,7 @@ QString cellToolTip(const MissionDocument& document, MapPoint point) {
         who + QStringLiteral("\n") +
         tr("Cell of %1 (level %2): %3, %4.")
             .arg(QString::fromStdString(formatDistance(cell.size)))
-            .arg(cell.level)
+            .arg(int{cell.level})
             .arg(className(document.classes(), cell.classValue),
                  tr("%1 m/s").arg(QString::fromStdString(formatQuantity(cell.speedMetresPerSecond, 3))));
     if (robot >= 0) {

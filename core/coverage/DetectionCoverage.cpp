@@ -62,7 +62,7 @@ class NodeRoutes {
         : nodes_(nodes), seconds_(static_cast<std::size_t>(nodes.size()), infinity),
           cameFrom_(static_cast<std::size_t>(nodes.size()), SubCellNodes::none) {
         for (int node = 0; node < nodes.size(); ++node)
-            fastest_ = std::max(fastest_, nodes.waypoint(node).speedMetresPerSecond);
+            fastest_ = std::max(fastest_, double{nodes.waypoint(node).speedMetresPerSecond});
     }
 
     // The nodes after `from` up to and including `to`.
@@ -161,8 +161,7 @@ CoveragePath pathOf(int robot, const std::vector<int>& flown, const SubCellNodes
     CoveragePath path;
     path.robot = robot;
     path.closed = false;
-    path.waypoints.push_back(
-        {start.x, start.y, startCellId, startCell.classValue, startCell.speedMetresPerSecond, 0.0});
+    path.waypoints.push_back({start.x, start.y, startCellId, startCell.speedMetresPerSecond, 0.0});
     for (const int node : flown) {
         const Waypoint& waypoint = nodes.waypoint(node);
         const Waypoint& last = path.waypoints.back();

@@ -6,17 +6,17 @@
 
 namespace mcpp {
 
-// A point of a robot's path, with the land cover and speed of the cell it lies in. A segment is travelled
-// half at the speed of the waypoint it leaves and half at the speed of the one it reaches. Kept small: a
-// large map's paths hold tens of millions of them (the field of view there is the cell's, half its side).
+// A point of a robot's path, with the speed of the cell it lies in (the cell also gives its land cover and
+// field of view). A segment is travelled half at the speed of the waypoint it leaves and half at the speed
+// of the one it reaches. 32 bytes: a large map's paths hold tens of millions of them (four per cell).
 struct Waypoint {
     double x = 0.0;
     double y = 0.0;
-    int cell = -1;               // cell of the plan's cell graph the point lies in
-    std::int32_t classValue = 0; // land cover of that cell
-    double speedMetresPerSecond = 0.0;
-    double cumulativeSeconds = 0.0; // time from the start to reach this point
+    int cell = -1;                     // cell of the plan's cell graph the point lies in
+    float speedMetresPerSecond = 0.0F; // a float, as the cell's speed is
+    double cumulativeSeconds = 0.0;    // time from the start to reach this point
 };
+static_assert(sizeof(Waypoint) == 32);
 
 // A stop on the way: the robot waits `seconds` at a waypoint before leaving it (a battery charge, say).
 struct PathPause {

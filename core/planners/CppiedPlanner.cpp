@@ -121,7 +121,7 @@ void boundPasses(DetectionSummary& summary, const DetectionModel& model, const P
     }
     double fastest = 0.0;
     for (const Cell& cell : plan.cells.cells())
-        fastest = std::max(fastest, cell.speedMetresPerSecond);
+        fastest = std::max(fastest, double{cell.speedMetresPerSecond});
     if (stripSum <= 0.0 || fastest <= 0.0) {
         summary.passesNoPlanBeats = 0.0;
         return;
@@ -144,7 +144,8 @@ CellGraph priceForDetection(const CellGraph& cells, const DetectionModel& model,
     for (Cell& cell : priced) {
         const int profile = model.profileOf(cell.classValue);
         if (profile != DetectionModel::noProfile)
-            cell.speedMetresPerSecond /= passesOfProfile[static_cast<std::size_t>(profile)];
+            cell.speedMetresPerSecond = static_cast<float>(
+                cell.speedMetresPerSecond / passesOfProfile[static_cast<std::size_t>(profile)]);
     }
     return CellGraph(cells.frame(), std::move(priced), cells.adjacency());
 }

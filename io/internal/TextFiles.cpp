@@ -37,6 +37,19 @@ std::string formatShortest(double value) {
     return std::string(buffer.data(), result.ptr);
 }
 
+std::string formatShortestFloat(float value) {
+    std::array<char, 64> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    return std::string(buffer.data(), result.ptr);
+}
+
+double decimalDouble(float value) {
+    const std::string text = formatShortestFloat(value);
+    double parsed = value;
+    std::from_chars(text.data(), text.data() + text.size(), parsed);
+    return parsed;
+}
+
 std::string formatFixed(double value, int decimals) {
     std::array<char, 64> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,

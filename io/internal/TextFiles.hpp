@@ -16,6 +16,10 @@ namespace mcpp::io::internal {
 
 // Shortest decimal text that reads back as the same double.
 [[nodiscard]] std::string formatShortest(double value);
+// Shortest decimal text that reads back as the same float: 0.3F gives "0.3", not 0.30000001192092896.
+[[nodiscard]] std::string formatShortestFloat(float value);
+// The double that text stands for: a float speed as a double field, 0.3F as 0.3.
+[[nodiscard]] double decimalDouble(float value);
 // printf-style fixed decimals, e.g. formatFixed(1.5, 6) == "1.500000".
 [[nodiscard]] std::string formatFixed(double value, int decimals);
 

@@ -35,7 +35,7 @@ CellGraph oneCell(double turnSeconds) {
 std::vector<Waypoint> pathOf(std::initializer_list<MapPoint> points, bool inCell = true) {
     std::vector<Waypoint> waypoints;
     for (const MapPoint point : points)
-        waypoints.push_back({point.x, point.y, inCell ? 0 : -1, 1, 2.0, 0.0});
+        waypoints.push_back({point.x, point.y, inCell ? 0 : -1, 2.0F, 0.0});
     return waypoints;
 }
 

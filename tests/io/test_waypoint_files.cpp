@@ -227,6 +227,28 @@ class WaypointFilesTest : public QObject {
         QCOMPARE(std::stod(fields[8]), 13.33);
     }
 
+    void waypointCsvWritesFloatSpeedsAsTheirDecimals() {
+        // Speeds are floats; 0.3F is 0.30000001192092896 as a double, and the file must say 0.3.
+        Waypoint& waypoint = plan_.paths[1].waypoints[2];
+        const float kept = waypoint.speedMetresPerSecond;
+        waypoint.speedMetresPerSecond = 0.3F;
+        const std::string path = file("robot1-speeds.csv");
+        const bool written = writeWaypointCsv(context(), 1, path).ok();
+        waypoint.speedMetresPerSecond = kept;
+        QVERIFY(written);
+        std::ifstream input(path);
+        std::string line;
+        for (int skipped = 0; skipped < 3; ++skipped)
+            std::getline(input, line);
+        std::getline(input, line);
+        std::vector<std::string> fields;
+        std::stringstream stream(line);
+        while (std::getline(stream, line, ','))
+            fields.push_back(line);
+        QCOMPARE(fields.size(), std::size_t{9});
+        QCOMPARE(fields[6], std::string("0.3"));
+    }
+
     void unknownRobotIsAnError() {
         Status status = writeQGroundControlPlan(context(), 5, file("robot5.plan"));
         QVERIFY(!status.ok());
