@@ -187,9 +187,10 @@ CellGraph getCells(CompressedReader& in) {
     return graph;
 }
 
-// Waypoints are most of a plan. Most lie at a sub-cell centre of their cell and take its land cover and
-// speed, and their times follow from the path (measurePath's sum): such a point is saved as its cell and a
-// tag naming the sub-cell. Whatever does not follow exactly, bit for bit, is saved as it is.
+// Waypoints are most of a plan. Most lie at a sub-cell centre of their cell and take its speed: such a
+// point is saved as its cell and a tag naming the sub-cell. Whatever does not follow exactly, bit for bit,
+// is saved as it is. Their times follow from the path (cumulativeSeconds); files written before waypoints
+// stopped holding them may hold them all, and those are skipped.
 enum WaypointTag : std::uint8_t { explicitPoint = 4, explicitLandCover = 8 };
 
 std::uint8_t waypointTag(const Waypoint& waypoint, const CellGraph& graph) {
@@ -207,17 +208,8 @@ std::uint8_t waypointTag(const Waypoint& waypoint, const CellGraph& graph) {
     return tag;
 }
 
-bool timesFollow(const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
-    std::vector<Waypoint> measured = waypoints;
-    fillCumulativeSeconds(measured, graph);
-    return std::equal(
-        waypoints.begin(), waypoints.end(), measured.begin(),
-        [](const Waypoint& a, const Waypoint& b) { return a.cumulativeSeconds == b.cumulativeSeconds; });
-}
-
 void putWaypoints(CompressedWriter& out, const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
-    const bool derivedTimes = timesFollow(waypoints, graph);
-    out.put(static_cast<std::uint8_t>(derivedTimes));
+    out.put(std::uint8_t{1}); // the times follow from the path
     out.put(static_cast<std::uint64_t>(waypoints.size()));
     for (const Waypoint& waypoint : waypoints) {
         const std::uint8_t tag = waypointTag(waypoint, graph);
@@ -233,8 +225,6 @@ void putWaypoints(CompressedWriter& out, const std::vector<Waypoint>& waypoints,
             out.put(inGraph ? graph.cell(waypoint.cell).classValue : std::int32_t{0});
             out.put(double{waypoint.speedMetresPerSecond});
         }
-        if (!derivedTimes)
-            out.put(waypoint.cumulativeSeconds);
     }
 }
 
@@ -267,10 +257,8 @@ std::vector<Waypoint> getWaypoints(CompressedReader& in, const CellGraph& graph)
             waypoint.speedMetresPerSecond = graph.cell(waypoint.cell).speedMetresPerSecond;
         }
         if (!derivedTimes)
-            waypoint.cumulativeSeconds = in.get<double>();
+            in.get<double>(); // a time, which follows from the path
     }
-    if (derivedTimes)
-        fillCumulativeSeconds(waypoints, graph);
     return waypoints;
 }
 

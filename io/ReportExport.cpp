@@ -31,8 +31,8 @@ void addSorties(JsonValue& item, const Plan& plan, const RobotSorties& robot) {
     item.add("charging_s", chargingSeconds(path));
     JsonValue& times = item.add("sortie_times_s", JsonValue::array());
     for (const Sortie& sortie : robot.sorties)
-        times.push(sortieSeconds(path, sortie));
-    item.add("longest_sortie_s", longestSortieSeconds(path, robot.sorties));
+        times.push(sortieSeconds(path, sortie, plan.cells));
+    item.add("longest_sortie_s", longestSortieSeconds(path, robot.sorties, plan.cells));
     item.add("out_of_range_area_m2", robot.outOfRangeAreaSquareMetres);
 }
 
@@ -71,7 +71,7 @@ void addTimelineSummary(JsonValue& root, const TimelineLayer::Summary& summary) 
 
 std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
     const CoveragePath& path = plan.paths[static_cast<std::size_t>(robot.robot)];
-    const double longest = longestSortieSeconds(path, robot.sorties);
+    const double longest = longestSortieSeconds(path, robot.sorties, plan.cells);
     return "," + std::to_string(robot.sorties.size()) + "," + std::to_string(robot.charges()) + "," +
            internal::formatShortest(chargingSeconds(path)) + "," + internal::formatShortest(longest) + "," +
            internal::formatShortest(robot.outOfRangeAreaSquareMetres);

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <numeric>
 
 namespace mcpp::io {
 
@@ -38,6 +39,7 @@ const CoveragePath* pathOfRobot(const Plan& plan, int robot) {
 
 struct GeoWaypoint {
     Waypoint waypoint;
+    double cumulativeSeconds = 0.0; // time from the start to reach it
     double longitude = 0.0;
     double latitude = 0.0;
 };
@@ -72,11 +74,12 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
         return Result<Points>::failure(path +
                                        ": the map has no CRS, so waypoints have no latitude and longitude");
     }
-    const std::vector<Waypoint> waypoints = exportedWaypoints(*coverage, context.settings.mergeCollinear);
+    const std::vector<std::size_t> kept = exportedWaypointIndices(*coverage, context.settings.mergeCollinear);
+    const std::vector<double> seconds = cumulativeSeconds(*coverage, context.plan.cells);
     Points points;
-    points.reserve(waypoints.size());
-    for (const Waypoint& waypoint : waypoints)
-        points.push_back({waypoint, std::nan(""), std::nan("")});
+    points.reserve(kept.size());
+    for (const std::size_t index : kept)
+        points.push_back({coverage->waypoints[index], seconds[index], std::nan(""), std::nan("")});
     if (context.georeference.hasCrs()) {
         if (Status placed = placeOnWgs84(context, points); !placed)
             return Result<Points>::failure(path + ": " + placed.error());
@@ -104,20 +107,30 @@ std::string fixed(double value, int decimals) {
 
 } // namespace
 
-std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeCollinear) {
-    if (!mergeCollinear || path.waypoints.size() < 3)
-        return path.waypoints;
-    std::vector<Waypoint> kept{path.waypoints.front()};
-    for (std::size_t i = 1; i + 1 < path.waypoints.size(); ++i) {
-        const Waypoint& current = path.waypoints[i];
-        const Waypoint& next = path.waypoints[i + 1];
-        // Dropping `current` is exact when the robot drives the whole of previous -> next at next's speed.
-        const bool redundant = collinearAndBetween(kept.back(), current, next) &&
-                               current.speedMetresPerSecond == next.speedMetresPerSecond;
-        if (!redundant)
-            kept.push_back(current);
+std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, bool mergeCollinear) {
+    const std::vector<Waypoint>& waypoints = path.waypoints;
+    std::vector<std::size_t> kept;
+    if (!mergeCollinear || waypoints.size() < 3) {
+        kept.resize(waypoints.size());
+        std::iota(kept.begin(), kept.end(), std::size_t{0});
+        return kept;
     }
-    kept.push_back(path.waypoints.back());
+    kept.push_back(0);
+    for (std::size_t i = 1; i + 1 < waypoints.size(); ++i) {
+        // Dropping point i is exact when the robot drives the whole of previous -> next at next's speed.
+        const bool redundant = collinearAndBetween(waypoints[kept.back()], waypoints[i], waypoints[i + 1]) &&
+                               waypoints[i].speedMetresPerSecond == waypoints[i + 1].speedMetresPerSecond;
+        if (!redundant)
+            kept.push_back(i);
+    }
+    kept.push_back(waypoints.size() - 1);
+    return kept;
+}
+
+std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeCollinear) {
+    std::vector<Waypoint> kept;
+    for (const std::size_t index : exportedWaypointIndices(path, mergeCollinear))
+        kept.push_back(path.waypoints[index]);
     return kept;
 }
 
@@ -393,7 +406,7 @@ Status writeWaypointCsv(const ExportContext& context, int robot, const std::stri
                 coordinate(point.latitude) + "," + landCoverAt(context.plan, waypoint) + "," +
                 internal::formatShortestFloat(waypoint.speedMetresPerSecond) + "," +
                 internal::formatShortest(fieldOfViewAt(context.plan, waypoint)) + "," +
-                internal::formatShortest(waypoint.cumulativeSeconds) + "\n";
+                internal::formatShortest(point.cumulativeSeconds) + "\n";
     }
     return internal::writeFileAtomically(path, text, Sync::BySystem);
 }

@@ -60,7 +60,7 @@ QTableWidgetItem* numberItem(const QString& text, double sortValue) {
 // A battery robot's sorties, with the charges, the longest flight and what lay out of range in the tooltip.
 QTableWidgetItem* sortiesItem(const Plan& plan, const RobotSorties& robot) {
     const double longest =
-        longestSortieSeconds(plan.paths[static_cast<std::size_t>(robot.robot)], robot.sorties);
+        longestSortieSeconds(plan.paths[static_cast<std::size_t>(robot.robot)], robot.sorties, plan.cells);
     auto* item = numberItem(QString::number(robot.sorties.size()), static_cast<double>(robot.sorties.size()));
     QString tip =
         QObject::tr("%1 charges of %2 each; longest sortie %3 of a %4 battery")

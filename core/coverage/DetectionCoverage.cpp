@@ -161,7 +161,7 @@ CoveragePath pathOf(int robot, const std::vector<int>& flown, const SubCellNodes
     CoveragePath path;
     path.robot = robot;
     path.closed = false;
-    path.waypoints.push_back({start.x, start.y, startCellId, startCell.speedMetresPerSecond, 0.0});
+    path.waypoints.push_back({start.x, start.y, startCellId, startCell.speedMetresPerSecond});
     for (const int node : flown) {
         const Waypoint& waypoint = nodes.waypoint(node);
         const Waypoint& last = path.waypoints.back();

@@ -48,7 +48,7 @@ DynamicTreeWalk::DynamicTreeWalk(const CellGraph& graph, int robot, MapPoint sta
                                  std::vector<char>& entered)
     : graph_(graph), robot_(robot), clock_(graph) {
     const Cell& cell = graph.cell(startCell);
-    clock_.append({start.x, start.y, startCell, cell.speedMetresPerSecond, 0.0});
+    clock_.append({start.x, start.y, startCell, cell.speedMetresPerSecond});
     nominalSecondsAt_.push_back(0.0);
     enter(startCell, -1, entered);
 }
@@ -97,7 +97,7 @@ void DynamicTreeWalk::stepTo(int cell, SubCell subCell) {
     const MapPoint centre = target.subCellCentre(subCell);
     const Waypoint& last = clock_.waypoints().back();
     if (centre.x != last.x || centre.y != last.y) {
-        clock_.append({centre.x, centre.y, cell, target.speedMetresPerSecond, 0.0});
+        clock_.append({centre.x, centre.y, cell, target.speedMetresPerSecond});
         nominalSecondsAt_.push_back(clock_.elapsed());
     }
     if (!frames_.empty() && frames_.back().cell == cell)

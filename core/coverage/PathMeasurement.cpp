@@ -90,33 +90,77 @@ double turnSecondsBetween(double inX, double inY, double outX, double outY, doub
     return std::abs(std::atan2(cross, dot)) / quarterTurn * price;
 }
 
-PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph) {
+namespace {
+
+// The unit direction of the last step of non-zero length that ends at or before waypoint `index`.
+std::optional<Direction> wayInto(const std::vector<Waypoint>& waypoints, std::size_t index) {
+    for (std::size_t i = index; i > 0; --i) {
+        const double length = segmentLength(waypoints[i - 1], waypoints[i]);
+        if (length > 0.0)
+            return Direction{(waypoints[i].x - waypoints[i - 1].x) / length,
+                             (waypoints[i].y - waypoints[i - 1].y) / length};
+    }
+    return std::nullopt;
+}
+
+// Times waypoints first .. last: travelSeconds per step and, before leaving a point, the turn made there
+// (at `first`, from the way the path came in). Calls atWaypoint(i, seconds since first) for each.
+template <typename AtWaypoint>
+PathSeconds walkSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph, std::size_t first,
+                        std::size_t last, AtWaypoint&& atWaypoint) {
     PathSeconds seconds;
-    if (!waypoints.empty())
-        waypoints.front().cumulativeSeconds = 0.0;
-    bool haveDirection = false;
-    double directionX = 0.0;
-    double directionY = 0.0;
-    for (std::size_t i = 1; i < waypoints.size(); ++i) {
+    if (first >= waypoints.size())
+        return seconds;
+    std::optional<Direction> direction = wayInto(waypoints, first);
+    atWaypoint(first, 0.0);
+    for (std::size_t i = first + 1; i <= last && i < waypoints.size(); ++i) {
         const Waypoint& from = waypoints[i - 1];
-        Waypoint& to = waypoints[i];
+        const Waypoint& to = waypoints[i];
         const double length = segmentLength(from, to);
         if (length > 0.0) {
-            const double x = (to.x - from.x) / length;
-            const double y = (to.y - from.y) / length;
-            if (haveDirection) {
-                const double turn = turnSecondsAt(from, directionX, directionY, x, y, graph);
+            const Direction out{(to.x - from.x) / length, (to.y - from.y) / length};
+            if (direction) {
+                const double turn = turnSecondsAt(from, direction->x, direction->y, out.x, out.y, graph);
                 seconds.turning += turn;
                 seconds.total += turn;
             }
-            haveDirection = true;
-            directionX = x;
-            directionY = y;
+            direction = out;
         }
         seconds.total += travelSeconds(length, from.speedMetresPerSecond, to.speedMetresPerSecond);
-        to.cumulativeSeconds = seconds.total;
+        atWaypoint(i, seconds.total);
     }
     return seconds;
+}
+
+} // namespace
+
+PathSeconds pathSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
+    if (waypoints.empty())
+        return {};
+    return walkSeconds(waypoints, graph, 0, waypoints.size() - 1, [](std::size_t, double) {});
+}
+
+std::vector<double> cumulativeSeconds(const CoveragePath& path, const CellGraph& graph) {
+    std::vector<double> seconds(path.waypoints.size(), 0.0);
+    if (seconds.empty())
+        return seconds;
+    walkSeconds(path.waypoints, graph, 0, seconds.size() - 1,
+                [&seconds](std::size_t i, double total) { seconds[i] = total; });
+    // A pause at a waypoint delays every waypoint after it.
+    double waited = 0.0;
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < seconds.size(); ++i) {
+        seconds[i] += waited;
+        for (; next < path.pauses.size() && path.pauses[next].waypoint == i; ++next)
+            waited += path.pauses[next].seconds;
+    }
+    return seconds;
+}
+
+double sortieSeconds(const CoveragePath& path, const Sortie& sortie, const CellGraph& graph) {
+    return walkSeconds(path.waypoints, graph, sortie.firstWaypoint, sortie.lastWaypoint,
+                       [](std::size_t, double) {})
+        .total;
 }
 
 CoveragePath sortiePath(const CoveragePath& path, const Sortie& sortie) {
@@ -126,16 +170,14 @@ CoveragePath sortiePath(const CoveragePath& path, const Sortie& sortie) {
     const auto first = path.waypoints.begin() + static_cast<std::ptrdiff_t>(sortie.firstWaypoint);
     flight.waypoints.assign(first,
                             path.waypoints.begin() + static_cast<std::ptrdiff_t>(sortie.lastWaypoint) + 1);
-    const double start = flight.waypoints.front().cumulativeSeconds;
-    for (Waypoint& waypoint : flight.waypoints)
-        waypoint.cumulativeSeconds -= start;
     return flight;
 }
 
-double longestSortieSeconds(const CoveragePath& path, const std::vector<Sortie>& sorties) {
+double longestSortieSeconds(const CoveragePath& path, const std::vector<Sortie>& sorties,
+                            const CellGraph& graph) {
     double longest = 0.0;
     for (const Sortie& sortie : sorties)
-        longest = std::max(longest, sortieSeconds(path, sortie));
+        longest = std::max(longest, sortieSeconds(path, sortie, graph));
     return longest;
 }
 
@@ -153,17 +195,6 @@ double longestPathSeconds(const std::vector<CoveragePath>& paths) {
     for (const CoveragePath& path : paths)
         longest = std::max(longest, path.timeSeconds);
     return longest;
-}
-
-double addPauses(std::vector<Waypoint>& waypoints, const std::vector<PathPause>& pauses) {
-    double waited = 0.0;
-    std::size_t next = 0;
-    for (std::size_t i = 0; i < waypoints.size(); ++i) {
-        waypoints[i].cumulativeSeconds += waited;
-        for (; next < pauses.size() && pauses[next].waypoint == i; ++next)
-            waited += pauses[next].seconds;
-    }
-    return waited;
 }
 
 double pausedSecondsBetween(const std::vector<PathPause>& pauses, std::size_t first, std::size_t last) {
@@ -201,8 +232,8 @@ void measurePath(CoveragePath& path, const CellGraph& graph) {
     for (std::size_t i = 1; i < path.waypoints.size(); ++i)
         length += segmentLength(path.waypoints[i - 1], path.waypoints[i]);
     path.lengthMetres = length;
-    const PathSeconds seconds = fillCumulativeSeconds(path.waypoints, graph);
-    path.timeSeconds = seconds.total + addPauses(path.waypoints, path.pauses);
+    const PathSeconds seconds = pathSeconds(path.waypoints, graph);
+    path.timeSeconds = seconds.total + pausedSecondsBetween(path.pauses, 0, path.waypoints.size());
     path.turnSeconds = seconds.turning;
     path.connectorSeconds = connectorSeconds(path.waypoints, graph);
     path.turns = countTurns(path.waypoints);

@@ -4,6 +4,7 @@
 #include "core/model/CoveragePath.hpp"
 #include "core/model/Sortie.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace mcpp {
@@ -46,34 +47,30 @@ struct PathSeconds {
     double turning = 0.0; // the part of it spent on turns
 };
 
-// Sets each waypoint's cumulativeSeconds from the path before it and returns the whole time: travelSeconds
-// per segment and, before leaving a point, the turn made there, at its cell's price per 90 degrees in
-// proportion to the angle (none at a point in no cell). measurePath and the plan-file reader use it, so
-// times read back are the ones planned.
-PathSeconds fillCumulativeSeconds(std::vector<Waypoint>& waypoints, const CellGraph& graph);
+// The whole time of a path, pauses left out: travelSeconds per segment and, before leaving a point, the
+// turn made there, at its cell's price per 90 degrees in proportion to the angle (none at a point in no
+// cell). measurePath, cumulativeSeconds and PathClock all time a path this way, in the same order of sums.
+[[nodiscard]] PathSeconds pathSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph);
 
-// Adds each pause to the cumulative seconds of the waypoints after it; returns the time paused. Pauses at
-// waypoints the path does not have are ignored.
-double addPauses(std::vector<Waypoint>& waypoints, const std::vector<PathPause>& pauses);
+// The time from the start to reach each waypoint, pauses included. Waypoints do not store it: a large
+// map's paths hold tens of millions of them, and a writer needs the times of one path at a time.
+[[nodiscard]] std::vector<double> cumulativeSeconds(const CoveragePath& path, const CellGraph& graph);
 
 // The seconds paused at waypoints first .. last - 1: what the cumulative seconds of `last` hold of pauses
 // since `first`.
 [[nodiscard]] double pausedSecondsBetween(const std::vector<PathPause>& pauses, std::size_t first,
                                           std::size_t last);
 
-// Travel and turning from a sortie's first waypoint to its last (the charge before it not counted), from
-// the measured cumulative seconds.
-[[nodiscard]] inline double sortieSeconds(const CoveragePath& path, const Sortie& sortie) {
-    return path.waypoints[sortie.lastWaypoint].cumulativeSeconds -
-           path.waypoints[sortie.firstWaypoint].cumulativeSeconds -
-           pausedSecondsBetween(path.pauses, sortie.firstWaypoint, sortie.lastWaypoint);
-}
+// Travel and turning from a sortie's first waypoint to its last (the charge before it not counted; the
+// turn at its first waypoint counted from the way the path came in).
+[[nodiscard]] double sortieSeconds(const CoveragePath& path, const Sortie& sortie, const CellGraph& graph);
 
-// A sortie's stretch of the path as a path of its own, its times counted from the sortie's start.
+// A sortie's stretch of the path as a path of its own.
 [[nodiscard]] CoveragePath sortiePath(const CoveragePath& path, const Sortie& sortie);
 
 // The longest of a robot's sorties, as sortieSeconds times them.
-[[nodiscard]] double longestSortieSeconds(const CoveragePath& path, const std::vector<Sortie>& sorties);
+[[nodiscard]] double longestSortieSeconds(const CoveragePath& path, const std::vector<Sortie>& sorties,
+                                          const CellGraph& graph);
 
 struct Direction {
     double x = 0.0;

@@ -61,7 +61,7 @@ Waypoint SubCellLattice::waypointAt(Position position) const {
     const int id = cellAt(position);
     const Cell& cell = graph_.cell(id);
     const MapPoint centre = cell.subCellCentre(subCellOf(position.x % 2, position.y % 2));
-    return {centre.x, centre.y, id, cell.speedMetresPerSecond, 0.0};
+    return {centre.x, centre.y, id, cell.speedMetresPerSecond};
 }
 
 std::vector<SubCellLattice::Position> SubCellLattice::reachableFrom(Position start) const {

@@ -46,7 +46,7 @@ SubCellNodes::SubCellNodes(const CellGraph& graph, const std::vector<int>& cells
                 continue;
             Node node;
             const MapPoint centre = cell.subCellCentre(subCell);
-            node.waypoint = {centre.x, centre.y, cells_[slot], cell.speedMetresPerSecond, 0.0};
+            node.waypoint = {centre.x, centre.y, cells_[slot], cell.speedMetresPerSecond};
             nodeOfSubCell_[slot * 4 + static_cast<std::size_t>(subCell)] = static_cast<int>(nodes_.size());
             nodes_.push_back(node);
         }

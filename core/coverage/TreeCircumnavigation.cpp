@@ -114,7 +114,7 @@ bool TreeCircumnavigation::adjacent(const SpanningTree& tree, int a, int b) cons
 Waypoint TreeCircumnavigation::waypointAt(const SpanningTree& tree, int node, MapPoint point) const {
     const int id = tree.cellOf(node);
     const Cell& cell = graph_.cell(id);
-    return {point.x, point.y, id, cell.speedMetresPerSecond, 0.0};
+    return {point.x, point.y, id, cell.speedMetresPerSecond};
 }
 
 template <typename Sink>

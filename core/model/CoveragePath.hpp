@@ -8,15 +8,15 @@ namespace mcpp {
 
 // A point of a robot's path, with the speed of the cell it lies in (the cell also gives its land cover and
 // field of view). A segment is travelled half at the speed of the waypoint it leaves and half at the speed
-// of the one it reaches. 32 bytes: a large map's paths hold tens of millions of them (four per cell).
+// of the one it reaches. 24 bytes: a large map's paths hold tens of millions of them (four per cell), so
+// the time to reach a point is worked out when asked for (cumulativeSeconds in PathMeasurement).
 struct Waypoint {
     double x = 0.0;
     double y = 0.0;
     int cell = -1;                     // cell of the plan's cell graph the point lies in
     float speedMetresPerSecond = 0.0F; // a float, as the cell's speed is
-    double cumulativeSeconds = 0.0;    // time from the start to reach this point
 };
-static_assert(sizeof(Waypoint) == 32);
+static_assert(sizeof(Waypoint) == 24);
 
 // A stop on the way: the robot waits `seconds` at a waypoint before leaving it (a battery charge, say).
 struct PathPause {
@@ -29,9 +29,8 @@ struct CoveragePath {
     std::vector<Waypoint> waypoints; // the first is the robot's start point
     double lengthMetres = 0.0;
     double timeSeconds = 0.0;
-    double turnSeconds = 0.0; // the part of timeSeconds lost to turns
-    std::vector<PathPause>
-        pauses; // by waypoint, ascending; their time is in timeSeconds and cumulativeSeconds
+    double turnSeconds = 0.0;      // the part of timeSeconds lost to turns
+    std::vector<PathPause> pauses; // by waypoint, ascending; their time is in timeSeconds
     int turns = 0;
     int repeatedSubCellVisits = 0; // sub-cell centres passed again (not counting a closed tour's return)
     bool closed = true;

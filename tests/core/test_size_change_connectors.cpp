@@ -181,7 +181,7 @@ class SizeChangeConnectorsTest : public QObject {
         const CellGraph graph = largeCellAndTwoHalves(1.0, 2.0);
         const auto at = [&](double x, double y, int cell) {
             const Cell& in = graph.cell(cell);
-            return Waypoint{x, y, cell, in.speedMetresPerSecond, 0.0};
+            return Waypoint{x, y, cell, in.speedMetresPerSecond};
         };
         CoveragePath path;
         path.closed = false;

@@ -35,7 +35,7 @@ CellGraph oneCell(double turnSeconds) {
 std::vector<Waypoint> pathOf(std::initializer_list<MapPoint> points, bool inCell = true) {
     std::vector<Waypoint> waypoints;
     for (const MapPoint point : points)
-        waypoints.push_back({point.x, point.y, inCell ? 0 : -1, 2.0F, 0.0});
+        waypoints.push_back({point.x, point.y, inCell ? 0 : -1, 2.0F});
     return waypoints;
 }
 
@@ -93,7 +93,7 @@ class TurnTimeTest : public QObject {
         QCOMPARE(path.lengthMetres, length);
         QCOMPARE(path.turnSeconds, quarterTurns * turnSeconds);
         QCOMPARE(path.timeSeconds, length / 2.0 + quarterTurns * turnSeconds);
-        QCOMPARE(path.waypoints.back().cumulativeSeconds, path.timeSeconds);
+        QCOMPARE(cumulativeSeconds(path, graph).back(), path.timeSeconds);
         // With free turns the same path takes its travel time only.
         measurePath(path, oneCell(0.0));
         QCOMPARE(path.timeSeconds, length / 2.0);
@@ -102,17 +102,21 @@ class TurnTimeTest : public QObject {
 
     // The turn is paid at the corner: points after it are reached that much later, points before it not.
     void cumulativeTimesPayTheTurnAtTheCorner() {
-        std::vector<Waypoint> waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}});
-        const PathSeconds seconds = fillCumulativeSeconds(waypoints, oneCell(4.0));
-        QCOMPARE(waypoints[1].cumulativeSeconds, 10.0);
-        QCOMPARE(waypoints[2].cumulativeSeconds, 24.0);
+        CoveragePath path;
+        path.waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}});
+        const CellGraph graph = oneCell(4.0);
+        const PathSeconds seconds = pathSeconds(path.waypoints, graph);
+        const std::vector<double> reached = cumulativeSeconds(path, graph);
+        QCOMPARE(reached[0], 0.0);
+        QCOMPARE(reached[1], 10.0);
+        QCOMPARE(reached[2], 24.0);
         QCOMPARE(seconds.total, 24.0);
         QCOMPARE(seconds.turning, 4.0);
     }
 
     void pointsInNoCellTurnForFree() {
-        std::vector<Waypoint> waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}}, false);
-        QCOMPARE(fillCumulativeSeconds(waypoints, oneCell(4.0)).turning, 0.0);
+        const std::vector<Waypoint> waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}}, false);
+        QCOMPARE(pathSeconds(waypoints, oneCell(4.0)).turning, 0.0);
     }
 
     void turnSecondsParameterTakesAuto() {

@@ -77,7 +77,7 @@ class WavefrontBatteryTest : public QObject {
         QCOMPARE(robot.charges(), static_cast<int>(robot.sorties.size()) - 1);
         double flying = 0.0;
         for (const Sortie& sortie : robot.sorties) {
-            const double seconds = sortieSeconds(path, sortie);
+            const double seconds = sortieSeconds(path, sortie, plan.cells);
             QVERIFY2(seconds <= battery * (1.0 + 1e-9), qPrintable(QString::number(seconds)));
             flying += seconds;
         }
@@ -175,7 +175,7 @@ class WavefrontBatteryTest : public QObject {
         QCOMPARE(sortiesOf(plan, 1).enduranceSeconds, 90.0);
         double longestOfRobot2 = 0.0;
         for (const Sortie& sortie : sortiesOf(plan, 1).sorties)
-            longestOfRobot2 = std::max(longestOfRobot2, sortieSeconds(plan.paths[1], sortie));
+            longestOfRobot2 = std::max(longestOfRobot2, sortieSeconds(plan.paths[1], sortie, plan.cells));
         QVERIFY(longestOfRobot2 <= 90.0 * (1.0 + 1e-9));
         QVERIFY(longestOfRobot2 > 60.0); // the short battery is used, not left half empty
         QVERIFY(sortiesOf(plan, 1).sorties.size() > sortiesOf(plan, 0).sorties.size());
@@ -248,12 +248,12 @@ class WavefrontBatteryTest : public QObject {
                 const Waypoint& begin = path.waypoints[robot.sorties[sortie].firstWaypoint];
                 QCOMPARE((MapPoint{begin.x, begin.y}), charger);
             }
-            QVERIFY(sortieSeconds(path, robot.sorties[sortie]) <= 150.0 + 1e-6);
+            QVERIFY(sortieSeconds(path, robot.sorties[sortie], plan.cells) <= 150.0 + 1e-6);
         }
         // The region holds the charger's cell; the first sortie's way to it (15 m east, 10 m south)
         // counts against the first charge.
         QCOMPARE(plan.regions.robotOfCell[static_cast<std::size_t>(plan.cells.cellAt(charger))], 0);
-        QVERIFY(sortieSeconds(path, robot.sorties.front()) >= 25.0);
+        QVERIFY(sortieSeconds(path, robot.sorties.front(), plan.cells) >= 25.0);
         QCOMPARE(plan.metrics.coveredFraction, 1.0);
         QCOMPARE(sortiesOf(plan, 1).charger, problem.starts[1]);
         QVERIFY(plan.paths[1].closed);
@@ -277,8 +277,8 @@ class WavefrontBatteryTest : public QObject {
                !(MapPoint{path.waypoints[reached].x, path.waypoints[reached].y} == robot.charger))
             ++reached;
         QVERIFY(reached < path.waypoints.size());
-        QVERIFY2(path.waypoints[reached].cumulativeSeconds >= 40.0,
-                 qPrintable(QString::number(path.waypoints[reached].cumulativeSeconds)));
+        const double seconds = cumulativeSeconds(path, plan.cells)[reached];
+        QVERIFY2(seconds >= 40.0, qPrintable(QString::number(seconds)));
     }
 
     // A charger the robot cannot use is refused, naming the robot and what is wrong.

@@ -27,13 +27,12 @@ inline Cell makeCell(const GridFrame& frame, int column, int row, int span, std:
     return cell;
 }
 
-inline Waypoint makeWaypoint(double x, double y, int cell, double speed, double seconds) {
+inline Waypoint makeWaypoint(double x, double y, int cell, double speed) {
     Waypoint waypoint;
     waypoint.x = x;
     waypoint.y = y;
     waypoint.cell = cell;
     waypoint.speedMetresPerSecond = static_cast<float>(speed);
-    waypoint.cumulativeSeconds = seconds;
     return waypoint;
 }
 
@@ -61,13 +60,13 @@ inline Plan makeFixturePlan(double originX = 301900.0, double originY = 4154080.
     CoveragePath first;
     first.robot = 0;
     first.waypoints = {
-        makeWaypoint(originX + 2.5, originY - 2.5, 0, 0.5, 0),
-        makeWaypoint(originX + 7.5, originY - 2.5, 0, 0.5, 10),
-        makeWaypoint(originX + 12.5, originY - 2.5, 1, 0.5, 20),
-        makeWaypoint(originX + 17.5, originY - 2.5, 1, 0.5, 30),
-        makeWaypoint(originX + 17.5, originY - 7.5, 1, 0.5, 40),
-        makeWaypoint(originX + 2.5, originY - 7.5, 0, 0.5, 70),
-        makeWaypoint(originX + 2.5, originY - 2.5, 0, 0.5, 80),
+        makeWaypoint(originX + 2.5, originY - 2.5, 0, 0.5),
+        makeWaypoint(originX + 7.5, originY - 2.5, 0, 0.5),
+        makeWaypoint(originX + 12.5, originY - 2.5, 1, 0.5),
+        makeWaypoint(originX + 17.5, originY - 2.5, 1, 0.5),
+        makeWaypoint(originX + 17.5, originY - 7.5, 1, 0.5),
+        makeWaypoint(originX + 2.5, originY - 7.5, 0, 0.5),
+        makeWaypoint(originX + 2.5, originY - 2.5, 0, 0.5),
     };
     first.lengthMetres = 40.0;
     first.timeSeconds = 80.0;
@@ -77,11 +76,11 @@ inline Plan makeFixturePlan(double originX = 301900.0, double originY = 4154080.
     CoveragePath second;
     second.robot = 1;
     second.waypoints = {
-        makeWaypoint(originX + 25.0, originY - 5.0, 3, 1.5, 0),
-        makeWaypoint(originX + 35.0, originY - 5.0, 3, 1.5, 6.67),
-        makeWaypoint(originX + 35.0, originY - 15.0, 3, 1.5, 13.33),
-        makeWaypoint(originX + 25.0, originY - 15.0, 3, 1.0, 23.33),
-        makeWaypoint(originX + 25.0, originY - 5.0, 3, 1.0, 33.33),
+        makeWaypoint(originX + 25.0, originY - 5.0, 3, 1.5),
+        makeWaypoint(originX + 35.0, originY - 5.0, 3, 1.5),
+        makeWaypoint(originX + 35.0, originY - 15.0, 3, 1.5),
+        makeWaypoint(originX + 25.0, originY - 15.0, 3, 1.0),
+        makeWaypoint(originX + 25.0, originY - 5.0, 3, 1.0),
     };
     second.lengthMetres = 40.0;
     second.timeSeconds = 33.33;

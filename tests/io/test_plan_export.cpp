@@ -511,7 +511,7 @@ class PlanExportTest : public QObject {
                                                             {2, 2}, {1, 2}, {2, 2}, {3, 2}, {3, 2}, {3, 3},
                                                             {3, 4}, {4, 5}, {5, 6}, {6, 6}};
         for (std::size_t i = 0; i < points.size(); ++i) {
-            path.waypoints.push_back(test::makeWaypoint(points[i].first, points[i].second, 0, 1.0, 0.0));
+            path.waypoints.push_back(test::makeWaypoint(points[i].first, points[i].second, 0, 1.0));
         }
         const std::vector<Waypoint> kept = turningPoints(path);
         const std::vector<std::pair<double, double>> expected{{0, 0}, {3, 0}, {3, 2}, {1, 2}, {3, 2},
