@@ -1,5 +1,7 @@
 #include "core/outlines/OutlineTracer.hpp"
 
+#include "core/outlines/LabelPatches.hpp"
+
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -49,11 +51,14 @@ bool inside(const OutlineRing& ring, double x, double y) {
 
 class Tracer {
   public:
-    explicit Tracer(const LabelGrid& grid)
-        : grid_(grid), patch_(grid.labels.size(), -1), visited_(grid.labels.size(), 0) {}
+    explicit Tracer(const LabelGrid& grid) : grid_(grid), patches_(grid), visited_(grid.labels.size(), 0) {
+        polygons_.reserve(static_cast<std::size_t>(patches_.count()));
+        for (int patch = 0; patch < patches_.count(); ++patch)
+            polygons_.push_back(OutlinePolygon{patches_.label(patch), {}, {}, patches_.pixels(patch)});
+        pending_.resize(polygons_.size());
+    }
 
     std::vector<OutlinePolygon> run() {
-        findPatches();
         for (int row = 0; row < grid_.rows; ++row) {
             for (int column = 0; column < grid_.columns; ++column) {
                 const std::int32_t label = grid_.labels[grid_.index(column, row)];
@@ -84,40 +89,6 @@ class Tracer {
         return (visited_[grid_.index(column, row)] >> side & 1U) != 0;
     }
 
-    // Patches by flood fill, numbered in the order of their first pixel.
-    void findPatches() {
-        std::vector<std::size_t> stack;
-        const auto columns = static_cast<std::size_t>(grid_.columns);
-        for (std::size_t start = 0; start < grid_.labels.size(); ++start) {
-            const std::int32_t label = grid_.labels[start];
-            if (label == LabelGrid::noLabel || patch_[start] >= 0)
-                continue;
-            const int id = static_cast<int>(polygons_.size());
-            polygons_.push_back(OutlinePolygon{label, {}, {}, 0});
-            pending_.emplace_back();
-            patch_[start] = id;
-            stack.push_back(start);
-            while (!stack.empty()) {
-                const std::size_t pixel = stack.back();
-                stack.pop_back();
-                ++polygons_.back().pixels;
-                const int column = static_cast<int>(pixel % columns);
-                const int row = static_cast<int>(pixel / columns);
-                for (int side = 0; side < 4; ++side) {
-                    const int nextColumn = column + outwardColumn[side];
-                    const int nextRow = row + outwardRow[side];
-                    if (!same(nextColumn, nextRow, label))
-                        continue;
-                    const std::size_t next = grid_.index(nextColumn, nextRow);
-                    if (patch_[next] < 0) {
-                        patch_[next] = id;
-                        stack.push_back(next);
-                    }
-                }
-            }
-        }
-    }
-
     // Walks the boundary with the patch on the left, turning left first: at a corner where two pixels of the
     // label meet only diagonally the walk keeps to the pixel it is on, so patches join through sides only.
     void traceRing(int startColumn, int startRow, int startSide, std::int32_t label) {
@@ -144,7 +115,7 @@ class Tracer {
                 side = (side + 3) & 3;
             }
         } while (column != startColumn || row != startRow || side != startSide);
-        splitAndFile(corners, pinched, patch_[grid_.index(startColumn, startRow)]);
+        splitAndFile(corners, pinched, patches_.patchAt(startColumn, startRow));
     }
 
     // Cuts the walk into simple rings at the corners it passed twice, and files each as exterior or hole.
@@ -217,7 +188,7 @@ class Tracer {
     }
 
     const LabelGrid& grid_;
-    std::vector<int> patch_;
+    LabelPatches patches_;
     std::vector<std::uint8_t> visited_;
     std::vector<OutlinePolygon> polygons_;
     std::vector<Pending> pending_;
