@@ -29,6 +29,9 @@
 #include <sys/resource.h>
 #include <system_error>
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace mcpp::app {
 namespace {
@@ -101,13 +104,24 @@ int BatchRunner::run() {
     }
 }
 
+namespace {
+
+// Hands memory the process has freed back to the system: glibc keeps freed heap pages until asked.
+void returnFreedMemory() {
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
+}
+
+} // namespace
+
 void BatchRunner::execute() {
     assembleMission();
     applyOverrides();
     auto started = std::chrono::steady_clock::now();
     loadRaster();
     processMilliseconds_.emplace_back("read_raster", millisecondsSince(started));
-    const PlanningProblem problem = prepareProblem();
+    PlanningProblem problem = prepareProblem();
     checkOutputFolder();
     for (const auto& warning : pendingWarnings_)
         warn(warning);
@@ -115,6 +129,10 @@ void BatchRunner::execute() {
     started = std::chrono::steady_clock::now();
     const Plan plan = runPlanner(problem);
     processMilliseconds_.emplace_back("plan", millisecondsSince(started));
+    // The writers need the plan and the raster as read, not the problem's copy of its classes; on a large
+    // map the planner's freed memory and that copy are a few hundred megabytes the writers can reuse.
+    problem = PlanningProblem{};
+    returnFreedMemory();
     for (const auto& warning : plan.warnings())
         warn(warning);
     writeOutputs(plan, options_.outputDirectory);

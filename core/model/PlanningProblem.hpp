@@ -11,10 +11,13 @@
 
 namespace mcpp {
 
+// The most robots one plan takes: robot numbers label region outlines in 16 bits (LabelGrid).
+inline constexpr std::size_t mostRobots = 32767;
+
 struct PlanningProblem {
     ClassGrid grid;
     ClassTable classes;
-    std::vector<MapPoint> starts; // one per robot, in the grid's frame
+    std::vector<MapPoint> starts; // one per robot, in the grid's frame; at most mostRobots
     // Each robot's own battery in seconds, for planners that fly on batteries; missing or 0: the planner's
     // battery_s.
     std::vector<double> batterySeconds;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <climits>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -7,16 +8,19 @@
 namespace mcpp {
 
 // A raster of integer labels on a square grid of the planning frame, row 0 at the north, anchored at its
-// north-west corner. Pixels without a label hold noLabel.
+// north-west corner. Pixels without a label hold noLabel. Labels are robots (and a few negative marks), so
+// 16 bits hold them: a large plan's grid has tens of millions of pixels.
 struct LabelGrid {
-    static constexpr std::int32_t noLabel = -1;
+    using Label = std::int16_t;
+    static constexpr Label noLabel = -1;
+    static constexpr int largestLabel = INT16_MAX;
 
     int columns = 0;
     int rows = 0;
     double originX = 0.0; // planning metres
     double originY = 0.0;
     double pixelSize = 1.0;
-    std::vector<std::int32_t> labels; // row-major
+    std::vector<Label> labels; // row-major
 
     [[nodiscard]] std::size_t index(int column, int row) const {
         return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
@@ -25,7 +29,7 @@ struct LabelGrid {
     [[nodiscard]] bool contains(int column, int row) const {
         return column >= 0 && row >= 0 && column < columns && row < rows;
     }
-    [[nodiscard]] std::int32_t at(int column, int row) const {
+    [[nodiscard]] Label at(int column, int row) const {
         return contains(column, row) ? labels[index(column, row)] : noLabel;
     }
     [[nodiscard]] double x(double column) const { return originX + column * pixelSize; }

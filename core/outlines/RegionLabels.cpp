@@ -1,5 +1,6 @@
 #include "core/outlines/RegionLabels.hpp"
 
+#include "core/model/PlanningProblem.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionOutlines.hpp"
@@ -8,11 +9,14 @@
 
 namespace mcpp {
 
+// Robot numbers and unreachableLabel fit a label.
+static_assert(mostRobots <= LabelGrid::largestLabel && unreachableLabel >= INT16_MIN);
+
 namespace {
 
 // Fills the pixels of one free sub-cell: a square of span x span pixels of the sub-cell grid, whose
 // north-west corner is bottom-grid column `west`, row `north`.
-void fillSubCell(LabelGrid& grid, const Cell& cell, SubCell subCell, std::int32_t label, int west,
+void fillSubCell(LabelGrid& grid, const Cell& cell, SubCell subCell, LabelGrid::Label label, int west,
                  int north) {
     const bool east = subCell == SubCell::NorthEast || subCell == SubCell::SouthEast;
     const bool south = subCell == SubCell::SouthWest || subCell == SubCell::SouthEast;
@@ -62,7 +66,7 @@ LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& la
         const Cell& cell = graph.cell(static_cast<int>(id));
         for (const SubCell subCell : subCellsCounterClockwise)
             if (cell.isFree(subCell))
-                fillSubCell(grid, cell, subCell, labelOfCell[id], west, north);
+                fillSubCell(grid, cell, subCell, static_cast<LabelGrid::Label>(labelOfCell[id]), west, north);
     }
     return grid;
 }

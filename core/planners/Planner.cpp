@@ -31,6 +31,10 @@ std::string multiRobotPlanners() {
 void checkStarts(const PlannerDescription& planner, const PlanningProblem& problem, bool snap) {
     if (problem.starts.empty())
         throw PlanningError(Kind::InvalidParameter, "no robots: give at least one start point");
+    if (problem.starts.size() > mostRobots)
+        throw PlanningError(Kind::TooManyRobots, std::to_string(problem.starts.size()) +
+                                                     " robots: one plan takes at most " +
+                                                     std::to_string(mostRobots));
     if (planner.singleRobot && problem.starts.size() > 1)
         throw PlanningError(
             Kind::InvalidParameter,

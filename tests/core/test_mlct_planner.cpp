@@ -84,6 +84,9 @@ class MlctPlannerTest : public QObject {
         problem = lakeProblem();
         problem.starts.assign(150, problem.starts[0]);
         expectError(problem, PlanningError::Kind::TooManyRobots, "150 robots but only 91");
+        problem.starts.assign(mostRobots + 1, problem.starts[0]); // more than region labels can number
+        expectError(problem, PlanningError::Kind::TooManyRobots,
+                    "32768 robots: one plan takes at most 32767");
     }
 
     void snappingMovesABadStartWithAWarning() {

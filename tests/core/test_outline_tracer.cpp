@@ -213,14 +213,9 @@ class OutlineTracerTest : public QObject {
         QCOMPARE(labels.columns, 4);
         QCOMPARE(labels.rows, 2);
         QCOMPARE(labels.pixelSize, 5.0);
-        const std::vector<std::int32_t> expected{0,
-                                                 0,
-                                                 unreachableLabel,
-                                                 unreachableLabel,
-                                                 0,
-                                                 LabelGrid::noLabel,
-                                                 unreachableLabel,
-                                                 unreachableLabel};
+        const LabelGrid::Label unreachable = unreachableLabel;
+        const std::vector<LabelGrid::Label> expected{
+            0, 0, unreachable, unreachable, 0, LabelGrid::noLabel, unreachable, unreachable};
         QCOMPARE(labels.labels, expected);
         QCOMPARE(labels.x(4), 120.0);
         QCOMPARE(labels.y(2), 40.0);
