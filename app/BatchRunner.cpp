@@ -36,6 +36,13 @@
 namespace mcpp::app {
 namespace {
 
+// Hands memory the process has freed back to the system: glibc keeps freed heap pages until asked.
+void returnFreedMemory() {
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
+}
+
 using Part = io::MissionField::Part;
 
 constexpr int planImageSide = 1600;
@@ -103,17 +110,6 @@ int BatchRunner::run() {
         return BatchFailure::internalError;
     }
 }
-
-namespace {
-
-// Hands memory the process has freed back to the system: glibc keeps freed heap pages until asked.
-void returnFreedMemory() {
-#ifdef __GLIBC__
-    malloc_trim(0);
-#endif
-}
-
-} // namespace
 
 void BatchRunner::execute() {
     assembleMission();

@@ -1,6 +1,7 @@
 #include "io/AutopilotMission.hpp"
 
 #include "io/internal/StraightLine.hpp"
+#include "io/internal/TextFiles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +38,7 @@ std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, cons
 double slowestSpeed(const std::vector<Waypoint>& waypoints, std::size_t first, std::size_t last) {
     double slowest = 0.0;
     for (std::size_t i = first; i <= last; ++i) {
-        const double speed = waypoints[i].speedMetresPerSecond;
+        const double speed = internal::decimalDouble(waypoints[i].speedMetresPerSecond); // 0.7F as 0.7
         if (speed > 0.0 && (slowest == 0.0 || speed < slowest))
             slowest = speed;
     }
@@ -141,10 +142,9 @@ double roundedDownSpeed(double metresPerSecond) {
         return 0.0;
     const int decimals = 1 - static_cast<int>(std::floor(std::log10(metresPerSecond)));
     const double scale = std::pow(10.0, std::abs(decimals));
-    // A hair above the product, so that 0.29 * 100 = 28.999999999999996 still rounds down to 29, and a
-    // float speed (0.7F is 0.69999998807907) still rounds down to 0.7.
-    const double down = decimals > 0 ? std::floor(metresPerSecond * scale * (1.0 + 1e-7)) / scale
-                                     : std::floor(metresPerSecond / scale * (1.0 + 1e-7)) * scale;
+    // A hair above the product, so that 0.29 * 100 = 28.999999999999996 still rounds down to 29.
+    const double down = decimals > 0 ? std::floor(metresPerSecond * scale * (1.0 + 1e-12)) / scale
+                                     : std::floor(metresPerSecond / scale * (1.0 + 1e-12)) * scale;
     return down > 0.0 ? down : metresPerSecond;
 }
 

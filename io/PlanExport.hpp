@@ -92,11 +92,13 @@ struct ExportContext {
 [[nodiscard]] Status writeDetectionRaster(const ExportContext& context, const std::string& path);
 
 // The waypoints a robot's waypoint files get: all of them, or, with mergeCollinear, without the points that
-// lie on the straight segment between their neighbours at the same speed (time and shape
+// lie on the straight segment between their neighbours at the same speed and land cover (time and shape
 // unchanged).
-[[nodiscard]] std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeCollinear);
+[[nodiscard]] std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, const CellGraph& cells,
+                                                      bool mergeCollinear);
 // The indices in the path of exportedWaypoints' points.
-[[nodiscard]] std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, bool mergeCollinear);
+[[nodiscard]] std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path,
+                                                               const CellGraph& cells, bool mergeCollinear);
 
 // The shape of a path as lines in GeoJSON, GeoPackage, KML and GPX: its ends and the points where it changes
 // direction; a point on the straight segment between its neighbours is left out, whatever its land cover.

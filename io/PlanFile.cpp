@@ -2,6 +2,7 @@
 
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/MemoryBudget.hpp"
+#include "core/model/PlanningProblem.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/internal/CompressedReader.hpp"
 #include "io/internal/CompressedWriter.hpp"
@@ -279,6 +280,8 @@ void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths, con
 
 std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph) {
     std::vector<CoveragePath> paths(in.getCount(54));
+    if (paths.size() > mostRobots) // more than region outlines can number
+        throw CompressedReader::DamagedData("more robots than one plan takes");
     for (CoveragePath& path : paths) {
         path.robot = in.get<int>();
         path.lengthMetres = in.get<double>();

@@ -462,7 +462,7 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
     for (int pass = 0; pass < 2; ++pass) {
         for (const CoveragePath& coverage : context.plan.paths) {
             const std::vector<Waypoint> waypoints =
-                exportedWaypoints(coverage, context.settings.mergeCollinear);
+                exportedWaypoints(coverage, context.plan.cells, context.settings.mergeCollinear);
             if (waypoints.empty())
                 continue;
             const std::string name = context.robotName(coverage.robot);

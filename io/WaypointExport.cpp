@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numeric>
+#include <optional>
 
 namespace mcpp::io {
 
@@ -74,7 +75,8 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
         return Result<Points>::failure(path +
                                        ": the map has no CRS, so waypoints have no latitude and longitude");
     }
-    const std::vector<std::size_t> kept = exportedWaypointIndices(*coverage, context.settings.mergeCollinear);
+    const std::vector<std::size_t> kept =
+        exportedWaypointIndices(*coverage, context.plan.cells, context.settings.mergeCollinear);
     const std::vector<double> seconds = cumulativeSeconds(*coverage, context.plan.cells);
     Points points;
     points.reserve(kept.size());
@@ -94,11 +96,16 @@ double fieldOfViewAt(const Plan& plan, const Waypoint& waypoint) {
     return plan.cells.cell(waypoint.cell).fieldOfView();
 }
 
-// The land cover where a waypoint lies: its cell's; empty for a point in no cell.
+// The land cover where a waypoint lies: its cell's; none for a point in no cell.
+std::optional<std::int32_t> landCoverOf(const CellGraph& cells, const Waypoint& waypoint) {
+    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= cells.size())
+        return std::nullopt;
+    return cells.cell(waypoint.cell).classValue;
+}
+
 std::string landCoverAt(const Plan& plan, const Waypoint& waypoint) {
-    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= plan.cells.size())
-        return {};
-    return std::to_string(plan.cells.cell(waypoint.cell).classValue);
+    const auto value = landCoverOf(plan.cells, waypoint);
+    return value ? std::to_string(*value) : std::string();
 }
 
 std::string fixed(double value, int decimals) {
@@ -107,7 +114,8 @@ std::string fixed(double value, int decimals) {
 
 } // namespace
 
-std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, bool mergeCollinear) {
+std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, const CellGraph& cells,
+                                                 bool mergeCollinear) {
     const std::vector<Waypoint>& waypoints = path.waypoints;
     std::vector<std::size_t> kept;
     if (!mergeCollinear || waypoints.size() < 3) {
@@ -119,7 +127,8 @@ std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, bool 
     for (std::size_t i = 1; i + 1 < waypoints.size(); ++i) {
         // Dropping point i is exact when the robot drives the whole of previous -> next at next's speed.
         const bool redundant = collinearAndBetween(waypoints[kept.back()], waypoints[i], waypoints[i + 1]) &&
-                               waypoints[i].speedMetresPerSecond == waypoints[i + 1].speedMetresPerSecond;
+                               waypoints[i].speedMetresPerSecond == waypoints[i + 1].speedMetresPerSecond &&
+                               landCoverOf(cells, waypoints[i]) == landCoverOf(cells, waypoints[i + 1]);
         if (!redundant)
             kept.push_back(i);
     }
@@ -127,9 +136,10 @@ std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, bool 
     return kept;
 }
 
-std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, bool mergeCollinear) {
+std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, const CellGraph& cells,
+                                        bool mergeCollinear) {
     std::vector<Waypoint> kept;
-    for (const std::size_t index : exportedWaypointIndices(path, mergeCollinear))
+    for (const std::size_t index : exportedWaypointIndices(path, cells, mergeCollinear))
         kept.push_back(path.waypoints[index]);
     return kept;
 }

@@ -14,7 +14,7 @@
 namespace mcpp {
 namespace {
 
-// A node's waypoint moved to a point of its sub-cell (the start), keeping its land cover.
+// A node's waypoint moved to a point of its sub-cell (the start), keeping its cell and speed.
 Waypoint pointIn(const SubCellNodes& nodes, int node, MapPoint point) {
     Waypoint waypoint = nodes.waypoint(node);
     waypoint.x = point.x;

@@ -28,7 +28,7 @@ double PathClock::secondsToAppend(const Waypoint& next) const {
 void PathClock::append(const Waypoint& next) {
     if (!waypoints_.empty()) {
         const Step step = stepTo(next);
-        elapsed_ += step.turn; // in fillCumulativeSeconds' order, so both sums round alike
+        elapsed_ += step.turn; // in pathSeconds' order, so both sums round alike
         elapsed_ += step.travel;
         const Direction direction = unitDirection(waypoints_.back().x, waypoints_.back().y, next.x, next.y);
         if (direction.x != 0.0 || direction.y != 0.0) {

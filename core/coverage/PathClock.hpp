@@ -7,7 +7,7 @@
 
 namespace mcpp {
 
-// A path as it grows, timed as fillCumulativeSeconds will time it (same formulas, same order of sums):
+// A path as it grows, timed as pathSeconds will time it (same formulas, same order of sums):
 // a planner that must keep within a time, a battery's, asks it what the next point would cost.
 class PathClock {
   public:

@@ -82,7 +82,7 @@ struct Direction {
 // The longest of the paths' times: the makespan of measured paths.
 [[nodiscard]] double longestPathSeconds(const std::vector<CoveragePath>& paths);
 
-// Fills length, time (pauses included), cumulative times, turns and repeated visits from the waypoints. Each
+// Fills length, time (pauses included), turns and repeated visits from the waypoints. Each
 // segment is travelled half at the speed of the waypoint it leaves and half at the speed of the one it
 // reaches.
 void measurePath(CoveragePath& path, const CellGraph& graph);

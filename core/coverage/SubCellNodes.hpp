@@ -17,7 +17,7 @@ class SubCellNodes {
     static constexpr int none = -1;
 
     struct Node {
-        Waypoint waypoint; // the sub-cell centre, with its cell's land cover and speed
+        Waypoint waypoint;                                    // the sub-cell centre, with its cell's speed
         std::array<int, 4> neighbour{none, none, none, none}; // by Direction
     };
 

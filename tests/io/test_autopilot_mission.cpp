@@ -156,6 +156,9 @@ class AutopilotMissionTest : public QObject {
         dip.waypoints[2].speedMetresPerSecond = 1.96;
         const AutopilotMission dipped = autopilotMission(dip, vehicle, shaping(0.1, true, true));
         QCOMPARE(dipped.commandedSpeeds[1], 1.9);
+        // Speeds are floats: 0.7F is 0.69999998807907, and is flown at 0.7, not rounded down to 0.69.
+        const CoveragePath slowRows = lawnmower(2, 5, 0.7, 0.7);
+        QCOMPARE(autopilotMission(slowRows, vehicle, shaping(0.1, true, true)).commandedSpeeds[1], 0.7);
         QCOMPARE(roundedDownSpeed(0.3168316831), 0.31);
         QCOMPARE(roundedDownSpeed(0.29), 0.29);
         QCOMPARE(roundedDownSpeed(12.34), 12.0);

@@ -72,14 +72,14 @@ class WaypointFilesTest : public QObject {
 
   private slots:
     void mergingCollinearPoints() {
-        const std::vector<Waypoint> all = exportedWaypoints(plan_.paths[0], false);
+        const std::vector<Waypoint> all = exportedWaypoints(plan_.paths[0], plan_.cells, false);
         QCOMPARE(all.size(), plan_.paths[0].waypoints.size());
-        const std::vector<Waypoint> merged = exportedWaypoints(plan_.paths[0], true);
+        const std::vector<Waypoint> merged = exportedWaypoints(plan_.paths[0], plan_.cells, true);
         QCOMPARE(merged.size(), std::size_t{5}); // the two inner points of the straight top run go
         QCOMPARE(merged[1].x, plan_.paths[0].waypoints[3].x);
-        QCOMPARE(exportedWaypointIndices(plan_.paths[0], true)[1], std::size_t{3});
+        QCOMPARE(exportedWaypointIndices(plan_.paths[0], plan_.cells, true)[1], std::size_t{3});
         // A speed change keeps its point even on a straight line.
-        const std::vector<Waypoint> second = exportedWaypoints(plan_.paths[1], true);
+        const std::vector<Waypoint> second = exportedWaypoints(plan_.paths[1], plan_.cells, true);
         QCOMPARE(second.size(), plan_.paths[1].waypoints.size());
     }
 
