@@ -36,13 +36,13 @@ std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, cons
 // The slowest land-cover speed of the waypoints from first to last, rounded down: no segment between them
 // is then driven faster than its land cover allows.
 double slowestSpeed(const std::vector<Waypoint>& waypoints, std::size_t first, std::size_t last) {
-    double slowest = 0.0;
+    float slowest = 0.0F;
     for (std::size_t i = first; i <= last; ++i) {
-        const double speed = internal::decimalDouble(waypoints[i].speedMetresPerSecond); // 0.7F as 0.7
-        if (speed > 0.0 && (slowest == 0.0 || speed < slowest))
+        const float speed = waypoints[i].speedMetresPerSecond;
+        if (speed > 0.0F && (slowest == 0.0F || speed < slowest))
             slowest = speed;
     }
-    return roundedDownSpeed(slowest);
+    return roundedDownSpeed(internal::decimalDouble(slowest)); // 0.7F as 0.7, not 0.69999998807907
 }
 
 // Each straight leg at the slowest speed along it, so that speeds change only at turns, with no waypoint in

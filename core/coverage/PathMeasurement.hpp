@@ -4,7 +4,6 @@
 #include "core/model/CoveragePath.hpp"
 #include "core/model/Sortie.hpp"
 
-#include <optional>
 #include <vector>
 
 namespace mcpp {

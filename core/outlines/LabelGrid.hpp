@@ -1,8 +1,8 @@
 #pragma once
 
-#include <climits>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace mcpp {
@@ -13,7 +13,7 @@ namespace mcpp {
 struct LabelGrid {
     using Label = std::int16_t;
     static constexpr Label noLabel = -1;
-    static constexpr int largestLabel = INT16_MAX;
+    static constexpr int largestLabel = std::numeric_limits<Label>::max();
 
     int columns = 0;
     int rows = 0;

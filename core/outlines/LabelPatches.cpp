@@ -17,7 +17,7 @@ void LabelPatches::findRuns(const LabelGrid& grid) {
         rowStart_.push_back(runs_.size());
         int column = 0;
         while (column < grid.columns) {
-            const std::int32_t label = grid.labels[grid.index(column, row)];
+            const LabelGrid::Label label = grid.labels[grid.index(column, row)];
             const int first = column;
             while (column < grid.columns && grid.labels[grid.index(column, row)] == label)
                 ++column;
@@ -35,7 +35,7 @@ void LabelPatches::joinRowToTheOneAbove(const LabelGrid& grid, int row) {
     for (std::size_t here = aboveEnd; here < rowStart_[static_cast<std::size_t>(row) + 1]; ++here) {
         while (above < aboveEnd && runs_[above].endColumn <= runs_[here].firstColumn)
             ++above;
-        const std::int32_t label = grid.labels[grid.index(runs_[here].firstColumn, row)];
+        const LabelGrid::Label label = grid.labels[grid.index(runs_[here].firstColumn, row)];
         for (std::size_t other = above; other < aboveEnd && runs_[other].firstColumn < runs_[here].endColumn;
              ++other) {
             if (grid.labels[grid.index(runs_[other].firstColumn, row - 1)] != label)

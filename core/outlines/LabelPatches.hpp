@@ -15,7 +15,7 @@ class LabelPatches {
     explicit LabelPatches(const LabelGrid& grid);
 
     [[nodiscard]] int count() const { return static_cast<int>(labels_.size()); }
-    [[nodiscard]] std::int32_t label(int patch) const { return labels_[static_cast<std::size_t>(patch)]; }
+    [[nodiscard]] LabelGrid::Label label(int patch) const { return labels_[static_cast<std::size_t>(patch)]; }
     [[nodiscard]] std::int64_t pixels(int patch) const { return pixels_[static_cast<std::size_t>(patch)]; }
     // The patch of a pixel; -1 for a pixel with no label or outside the grid.
     [[nodiscard]] int patchAt(int column, int row) const;
@@ -34,7 +34,7 @@ class LabelPatches {
 
     std::vector<std::size_t> rowStart_; // runs of row r: rowStart_[r] .. rowStart_[r + 1] - 1
     std::vector<Run> runs_;
-    std::vector<std::int32_t> labels_;
+    std::vector<LabelGrid::Label> labels_;
     std::vector<std::int64_t> pixels_;
 };
 

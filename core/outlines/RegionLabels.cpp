@@ -6,11 +6,13 @@
 #include "core/outlines/RegionOutlines.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace mcpp {
 
 // Robot numbers and unreachableLabel fit a label.
-static_assert(mostRobots <= LabelGrid::largestLabel && unreachableLabel >= INT16_MIN);
+static_assert(mostRobots <= LabelGrid::largestLabel &&
+              unreachableLabel >= std::numeric_limits<LabelGrid::Label>::min());
 
 namespace {
 
