@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 namespace mcpp::io {
 
@@ -95,7 +96,7 @@ void putCells(CompressedWriter& out, const CellGraph& graph) {
     for (const Cell& cell : graph.cells()) {
         out.put(cell.column);
         out.put(cell.row);
-        out.put(cell.span);
+        out.put(int{cell.span});
         out.put(int{cell.level});
         out.put(cell.minX);
         out.put(cell.minY);
@@ -103,7 +104,7 @@ void putCells(CompressedWriter& out, const CellGraph& graph) {
         out.put(cell.classValue);
         out.put(cell.turnSecondsPer90Degrees);
         out.put(double{cell.speedMetresPerSecond});
-        out.put(cell.passableAreaSquareMetres);
+        out.put(double{cell.passableAreaSquareMetres});
         out.put(cell.freeSubCells);
         out.put(cell.expectedTurnsPerSubCell);
     }
@@ -151,7 +152,7 @@ CellGraph getCells(CompressedReader& in) {
     for (Cell& cell : cells) {
         cell.column = in.get<int>();
         cell.row = in.get<int>();
-        cell.span = in.get<int>();
+        const int span = in.get<int>();
         const int level = in.get<int>();
         cell.minX = in.get<double>();
         cell.minY = in.get<double>();
@@ -159,14 +160,16 @@ CellGraph getCells(CompressedReader& in) {
         cell.classValue = in.get<std::int32_t>();
         cell.turnSecondsPer90Degrees = in.get<float>();
         cell.speedMetresPerSecond = static_cast<float>(in.get<double>());
-        cell.passableAreaSquareMetres = in.get<double>();
+        cell.passableAreaSquareMetres = static_cast<float>(in.get<double>());
         cell.freeSubCells = in.get<std::uint8_t>();
         cell.expectedTurnsPerSubCell = in.get<float>();
         if (level < 1 || level > frame.levels || level > 255)
             throw CompressedReader::DamagedData("a cell on no level of the quadtree");
         cell.level = static_cast<std::uint8_t>(level);
-        if (cell.span <= 0 || cell.column < 0 || cell.row < 0 ||
-            std::int64_t{cell.column} + cell.span > frame.columns ||
+        if (span <= 0 || span > std::numeric_limits<std::uint16_t>::max())
+            throw CompressedReader::DamagedData("a cell larger than any quadtree makes");
+        cell.span = static_cast<std::uint16_t>(span);
+        if (cell.column < 0 || cell.row < 0 || std::int64_t{cell.column} + cell.span > frame.columns ||
             std::int64_t{cell.row} + cell.span > frame.rows || !std::isfinite(cell.minX) ||
             !std::isfinite(cell.minY) || !(cell.size > 0.0) || !std::isfinite(cell.size) ||
             !(cell.turnSecondsPer90Degrees >= 0.0F) || !std::isfinite(cell.turnSecondsPer90Degrees) ||

@@ -17,6 +17,16 @@ namespace {
 
 using Kind = PlanningError::Kind;
 
+// 16 levels keep a cell's span, 2^15 bottom cells at most, in 16 bits (Cell::span).
+constexpr int mostQuadTreeLevels = 16;
+
+[[noreturn]] void throwTooManyLevels(int levels) {
+    throw PlanningError(Kind::InvalidClassTable,
+                        "fields of view differ by more than a factor 2^15; the quadtree "
+                        "would need " +
+                            std::to_string(levels) + " levels, at most 16 are planned");
+}
+
 } // namespace
 
 QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes,
@@ -46,10 +56,11 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
             if (dense[code].value == rounded.classValue)
                 levelOfCode[code] = rounded.level;
     }
-    if (levels > 20)
-        throw PlanningError(Kind::InvalidClassTable, "fields of view differ by more than a factor 2^19; "
-                                                     "the quadtree would need " +
-                                                         std::to_string(levels) + " levels");
+    // Past 20 levels the grid's size in bottom cells would overflow; the budget's message, which says what
+    // field of view fits, goes first for the rest.
+    constexpr int levelsBeforeOverflow = 20;
+    if (levels > levelsBeforeOverflow)
+        throwTooManyLevels(levels);
     tree.levels = levels;
     tree.fovMin = fovMin;
     const double bottomSize = 2.0 * fovMin;
@@ -62,6 +73,8 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     const std::int64_t bottomColumns = size.bottomColumns;
     const std::int64_t bottomRows = size.bottomRows;
     checkCellBudget(fovMin, bottomColumns, bottomRows);
+    if (levels > mostQuadTreeLevels)
+        throwTooManyLevels(levels);
     const SampleGrid samples =
         sampleGrid(grid, std::move(pixels.codes), bottomSize, bottomColumns, bottomRows);
     const double sampleArea = samples.sampleWidth * samples.sampleHeight;

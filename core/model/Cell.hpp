@@ -27,13 +27,14 @@ struct Cell {
     // Placement on the decomposition's bottom grid (squares of the smallest cell side), row 0 at the north.
     int column = 0;
     int row = 0;
-    int span = 1;                            // side in bottom cells
+    // Side in bottom cells: 2^15 at most, as the quadtree has at most 16 levels (QuadTreeBuilder).
+    std::uint16_t span = 1;
     std::uint8_t level = 1;                  // quadtree level, 1 = top; 1 for a single-level grid
     std::uint8_t freeSubCells = allSubCells; // bit i: sub-cell i (SubCell order) may be entered
+    std::int32_t classValue = 0;             // majority passable land cover
     double minX = 0.0;
     double minY = 0.0;
     double size = 0.0;                    // side in metres
-    std::int32_t classValue = 0;          // majority passable land cover
     float turnSecondsPer90Degrees = 0.0F; // what a turn costs here (CellGraph::applyTurnTime)
     // Harmonic mean over its passable pixels. A float, like its waypoints' speeds: seven digits are more
     // than any class table knows, and a large map holds tens of millions of cells and waypoints.
@@ -42,7 +43,9 @@ struct Cell {
     // 15 % obstacles (26 965 turns over 135 000 sub-cells, 200 x 200 with 4 robots); a planner may measure
     // it on a first plan (calibrateTurnRates).
     float expectedTurnsPerSubCell = 0.2F;
-    double passableAreaSquareMetres = 0.0; // passable pixels inside its free sub-cells
+    // Passable pixels inside its free sub-cells. A float (seven digits): sums over cells are taken in
+    // doubles.
+    float passableAreaSquareMetres = 0.0F;
 
     [[nodiscard]] double maxX() const { return minX + size; }
     [[nodiscard]] double maxY() const { return minY + size; }
@@ -88,6 +91,6 @@ struct Cell {
                double(expectedTurnsPerSubCell) * freeSubCellCount() * double(turnSecondsPer90Degrees);
     }
 };
-static_assert(sizeof(Cell) == 64);
+static_assert(sizeof(Cell) == 56);
 
 } // namespace mcpp

@@ -141,7 +141,7 @@ class MdstcTest : public QObject {
         QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
         int largest = 1;
         for (const Cell& cell : plan.cells.cells())
-            largest = std::max(largest, cell.span);
+            largest = std::max(largest, int{cell.span});
         QVERIFY(largest >= 4);
         const TimelineLayer::Summary& summary = timelineOf(plan).summary();
         const double ratio = summary.makespanSeconds / summary.staticMakespanSeconds;

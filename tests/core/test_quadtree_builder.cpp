@@ -239,6 +239,20 @@ class QuadTreeBuilderTest : public QObject {
             const QuadTree tree = QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), fittingFov, {});
             QVERIFY(tree.activeCount() <= 1000000);
         }
+        // Fields of view 2^16 apart need 17 levels, past what a cell's span holds; even where the memory
+        // budget would let such a grid through, it is refused by name before any cell is made.
+        setMemoryBudgetBytes(std::numeric_limits<std::int64_t>::max());
+        ClassTable farApart({{1, "grass", 0, 1.0, 1.0, true}, {2, "sea", 0, 1.0, 65536.0, true}});
+        ClassGrid twoClasses = filledGrid(4, 4, 1);
+        twoClasses.values[0] = 2;
+        try {
+            (void)QuadTreeBuilder{}.build(twoClasses, farApart, {});
+            QFAIL("17 quadtree levels must be refused");
+        } catch (const PlanningError& error) {
+            QCOMPARE(error.kind(), PlanningError::Kind::InvalidClassTable);
+            QVERIFY2(std::string(error.what()).find("would need 17 levels") != std::string::npos,
+                     error.what());
+        }
         setMemoryBudgetBytes(machine);
         DecompositionOptions badPurity;
         badPurity.purityTolerance = std::nan("");
