@@ -181,6 +181,7 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     table_->setTextElideMode(Qt::ElideRight);
+    table_->setWordWrap(false); // wrapped, a name with a space went onto two lines instead of eliding
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setMinimumHeight(110);
 

@@ -114,6 +114,27 @@ class TurnTimeTest : public QObject {
         QCOMPARE(seconds.turning, 4.0);
     }
 
+    // A sortie that begins at a corner pays the turn there: sorties laid end to end take the path's time,
+    // each the difference of the cumulative times at its ends.
+    void sortiesPayTheTurnWhereTheyBegin() {
+        CoveragePath path;
+        path.waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}, {30, 50}, {10, 50}, {10, 30}});
+        const CellGraph graph = oneCell(4.0);
+        const std::vector<double> reached = cumulativeSeconds(path, graph);
+        const std::vector<Sortie> sorties{{0, 1}, {1, 3}, {3, 5}};
+        double total = 0.0;
+        for (const Sortie& sortie : sorties) {
+            const double seconds = sortieSeconds(path, sortie, graph);
+            QCOMPARE(seconds, reached[sortie.lastWaypoint] - reached[sortie.firstWaypoint]);
+            total += seconds;
+        }
+        // 100 m at 2 m/s and three corners of 4 s: the one at (30, 10) opens the second sortie.
+        QCOMPARE(sortieSeconds(path, sorties[1], graph), 24.0);
+        QCOMPARE(total, pathSeconds(path.waypoints, graph).total);
+        QCOMPARE(total, 62.0);
+        QCOMPARE(longestSortieSeconds(path, sorties, graph), 28.0); // two corners in the last
+    }
+
     void pointsInNoCellTurnForFree() {
         const std::vector<Waypoint> waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}}, false);
         QCOMPARE(pathSeconds(waypoints, oneCell(4.0)).turning, 0.0);
