@@ -1,5 +1,6 @@
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
+#include "core/decomposition/QuadTreeDecomposition.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -67,6 +68,39 @@ class NeighbourTopologyTest : public QObject {
                 QCOMPARE(list.size(), found.size());
             }
         }
+    }
+
+    // The graph's point lookup, which keeps only cell ids per cell size, finds every cell of mixed-level
+    // graphs from any of its sub-cell centres, and nothing beyond the grid.
+    void everyCellIsFoundByItsPoints() {
+        int spansSeen = 0;
+        for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+            test::RandomMapSpec spec;
+            spec.columns = 30 + static_cast<int>(seed % 5);
+            spec.rows = 26 + static_cast<int>(seed % 3);
+            spec.landCovers = 1 + static_cast<int>(seed % 4);
+            spec.obstacleFraction = 0.02 * (seed % 8);
+            spec.seed = seed;
+            spec.robots = 0;
+            const auto problem = test::randomProblem(spec);
+            QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, {});
+            NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
+            const CellGraph graph = cellGraphOfQuadTree(std::move(tree), std::move(topology));
+            std::set<int> spans;
+            for (std::size_t id = 0; id < graph.size(); ++id) {
+                const Cell& cell = graph.cell(static_cast<int>(id));
+                spans.insert(cell.span);
+                QCOMPARE(graph.cellAt({cell.centreX(), cell.centreY()}), static_cast<int>(id));
+                for (const SubCell subCell : subCellsCounterClockwise)
+                    QCOMPARE(graph.cellAt(cell.subCellCentre(subCell)), static_cast<int>(id));
+            }
+            spansSeen = std::max(spansSeen, static_cast<int>(spans.size()));
+            const GridFrame& frame = graph.frame();
+            QCOMPARE(graph.cellAt({frame.originX - 1.0, frame.originY - 1.0}), -1);
+            QCOMPARE(graph.cellAt({frame.originX + 1.0, frame.originY + 1.0}), -1);
+            QCOMPARE(graph.cellAt({std::nan(""), frame.originY - 1.0}), -1);
+        }
+        QVERIFY(spansSeen >= 3); // cells of three sizes at least, so every size's list is searched
     }
 };
 
