@@ -31,8 +31,11 @@ void PathShape::add(double x, double y, double speedMetresPerSecond, double turn
         return;
     const double ux = dx / length;
     const double uy = dy / length;
-    if (haveDirection_)
-        seconds_ += turnSecondsBetween(directionX_, directionY_, ux, uy, cornerPrice);
+    if (haveDirection_) {
+        const double turning = turnSecondsBetween(directionX_, directionY_, ux, uy, cornerPrice);
+        seconds_ += turning;
+        turningSeconds_ += turning;
+    }
     if (haveDirection_ && std::abs(ux * directionY_ - uy * directionX_) +
                                   std::max(0.0, -(ux * directionX_ + uy * directionY_)) >
                               1e-6)

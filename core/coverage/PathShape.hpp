@@ -16,6 +16,8 @@ class PathShape {
     [[nodiscard]] double lengthMetres() const { return length_; }
     // Travel and turning, when every point came with a speed.
     [[nodiscard]] double seconds() const { return seconds_; }
+    // The part of seconds() spent turning.
+    [[nodiscard]] double turningSeconds() const { return turningSeconds_; }
     [[nodiscard]] std::size_t points() const { return points_; }
 
   private:
@@ -28,6 +30,7 @@ class PathShape {
     double lastSpeed_ = 0.0;
     double lastTurnPrice_ = 0.0;
     double seconds_ = 0.0;
+    double turningSeconds_ = 0.0;
     int turns_ = 0;
     double length_ = 0.0;
     std::size_t points_ = 0;

@@ -41,10 +41,9 @@ bool isQuicker(const PathShape& walk, const PathShape& than) {
 
 } // namespace
 
-std::pair<SpanningTree, PathShape> SpanningTreeCoverage::bestTree(const CellGraph& graph,
-                                                                  const std::vector<int>& cells,
-                                                                  int startCell, MapPoint start,
-                                                                  std::vector<int>& scratchIndex) const {
+std::pair<SpanningTree, PathShape>
+SpanningTreeCoverage::bestTree(const CellGraph& graph, const std::vector<int>& cells, int startCell,
+                               MapPoint start, std::vector<int>& scratchIndex, bool timed) const {
     const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
     // Candidate trees are judged by the shape of their walk, which is measured without being stored.
@@ -55,7 +54,7 @@ std::pair<SpanningTree, PathShape> SpanningTreeCoverage::bestTree(const CellGrap
     for (int candidate = 0; candidate < candidates; ++candidate) {
         SpanningTree tree = trees.candidate(candidate, cells, startCell);
         // A lone candidate needs no time: its shape only sizes the path.
-        const PathShape shape = walker.walkShape(tree, start, closedTour_, candidates > 1);
+        const PathShape shape = walker.walkShape(tree, start, closedTour_, timed || candidates > 1);
         if (!haveBest || isQuicker(shape, bestShape)) {
             best = std::move(tree);
             bestShape = shape;
@@ -76,14 +75,14 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
     return path;
 }
 
-std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, const RegionAllocation& regions,
-                                                     const std::vector<MapPoint>& starts,
-                                                     const ProgressReporter& progress) const {
+std::vector<SpanningTreeCoverage::RegionTree>
+SpanningTreeCoverage::planTrees(const CellGraph& graph, const RegionAllocation& regions,
+                                const std::vector<MapPoint>& starts, const ProgressReporter& progress) const {
     const std::size_t robots = regions.startCell.size();
     const auto regionCells = cellsByRobot(regions);
-    // Regions are planned side by side, each into its own slot: the same paths whatever the thread count.
+    // Regions are planned side by side, each into its own slot: the same trees whatever the thread count.
     std::vector<std::vector<int>> scratchIndex(static_cast<std::size_t>(workerThreads()));
-    std::vector<CoveragePath> paths(robots);
+    std::vector<RegionTree> trees(robots);
     std::mutex progressMutex;
     std::size_t finished = 0;
     progress.report("paths", 0.0);
@@ -92,13 +91,38 @@ std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, con
         std::vector<int>& scratch = scratchIndex[static_cast<std::size_t>(worker)];
         if (scratch.size() != graph.size())
             scratch.assign(graph.size(), -1);
-        paths[robot] = regionPath(graph, regionCells[robot], regions.startCell[robot],
-                                  static_cast<int>(robot), starts[robot], scratch);
+        auto [tree, shape] =
+            bestTree(graph, regionCells[robot], regions.startCell[robot], starts[robot], scratch, true);
+        trees[robot] = {std::move(tree), shape};
         const std::lock_guard lock(progressMutex);
         progress.report("paths", static_cast<double>(++finished) / static_cast<double>(robots));
     });
     progress.report("paths", 1.0);
+    return trees;
+}
+
+std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph,
+                                                          std::vector<RegionTree> trees,
+                                                          const std::vector<MapPoint>& starts,
+                                                          const ProgressReporter& progress) const {
+    std::vector<CoveragePath> paths(trees.size());
+    parallelFor(trees.size(), [&](std::size_t robot, int) {
+        progress.throwIfCancelled();
+        TreeCircumnavigation walker(graph);
+        RegionTree& planned = trees[robot];
+        std::vector<Waypoint> walk =
+            walker.walk(planned.tree, starts[robot], closedTour_, planned.shape.points());
+        planned.tree = SpanningTree(); // its memory is the path's now
+        paths[robot] = pathFromWalk(static_cast<int>(robot), starts[robot], std::move(walk), closedTour_);
+        measurePath(paths[robot], graph);
+    });
     return paths;
+}
+
+std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, const RegionAllocation& regions,
+                                                     const std::vector<MapPoint>& starts,
+                                                     const ProgressReporter& progress) const {
+    return walkTrees(graph, planTrees(graph, regions, starts, progress), starts, progress);
 }
 
 } // namespace mcpp

@@ -29,12 +29,26 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                           int startCell, int robot, MapPoint start,
                                           std::vector<int>& scratchIndex) const;
 
+    // A region's quickest tree with its walk's shape, timed: what its path is made from.
+    struct RegionTree {
+        SpanningTree tree;
+        PathShape shape;
+    };
+    // Every region's quickest tree, not yet walked: two divisions are compared by their trees' shapes while
+    // holding a quarter of what their paths would take (24 bytes a cell against four 24-byte waypoints).
+    [[nodiscard]] std::vector<RegionTree> planTrees(const CellGraph& graph, const RegionAllocation& regions,
+                                                    const std::vector<MapPoint>& starts,
+                                                    const ProgressReporter& progress) const;
+    // The paths round the trees, each tree freed once walked.
+    [[nodiscard]] std::vector<CoveragePath> walkTrees(const CellGraph& graph, std::vector<RegionTree> trees,
+                                                      const std::vector<MapPoint>& starts,
+                                                      const ProgressReporter& progress) const;
     // The candidate tree whose walk is quickest (travel and turns; then turns least, then is shortest), with
-    // that walk's shape.
+    // that walk's shape; timed when there was more than one candidate, or always when `timed`.
     [[nodiscard]] std::pair<SpanningTree, PathShape> bestTree(const CellGraph& graph,
                                                               const std::vector<int>& cells, int startCell,
-                                                              MapPoint start,
-                                                              std::vector<int>& scratchIndex) const;
+                                                              MapPoint start, std::vector<int>& scratchIndex,
+                                                              bool timed = false) const;
 
   private:
     bool closedTour_;

@@ -6,7 +6,16 @@ namespace mcpp {
 
 bool calibrateTurnRates(CellGraph& graph, const RegionAllocation& regions,
                         const std::vector<CoveragePath>& paths) {
-    const std::size_t robots = std::min(regions.startCell.size(), paths.size());
+    std::vector<double> turning;
+    turning.reserve(paths.size());
+    for (const CoveragePath& path : paths)
+        turning.push_back(path.turnSeconds);
+    return calibrateTurnRates(graph, regions, turning);
+}
+
+bool calibrateTurnRates(CellGraph& graph, const RegionAllocation& regions,
+                        const std::vector<double>& turningSecondsByRobot) {
+    const std::size_t robots = std::min(regions.startCell.size(), turningSecondsByRobot.size());
     const auto robotOf = [&](std::size_t id) {
         const int robot = id < regions.robotOfCell.size() ? regions.robotOfCell[id] : -1;
         return robot >= 0 && static_cast<std::size_t>(robot) < robots ? static_cast<std::size_t>(robot)
@@ -19,7 +28,7 @@ bool calibrateTurnRates(CellGraph& graph, const RegionAllocation& regions,
         rates[robotOf(id)] += cell.freeSubCellCount() * double(cell.turnSecondsPer90Degrees);
     }
     for (std::size_t robot = 0; robot < robots; ++robot)
-        rates[robot] = rates[robot] > 0.0 ? paths[robot].turnSeconds / rates[robot] : -1.0;
+        rates[robot] = rates[robot] > 0.0 ? turningSecondsByRobot[robot] / rates[robot] : -1.0;
     rates[robots] = -1.0; // cells of no region keep their rate
     std::vector<float> cellRates;
     cellRates.reserve(graph.size());

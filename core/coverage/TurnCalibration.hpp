@@ -14,5 +14,8 @@ namespace mcpp {
 // measured. Returns whether any rate changed (nothing to do when turns are free).
 bool calibrateTurnRates(CellGraph& graph, const RegionAllocation& regions,
                         const std::vector<CoveragePath>& paths);
+// The same from each robot's time spent turning, as its path would measure it.
+bool calibrateTurnRates(CellGraph& graph, const RegionAllocation& regions,
+                        const std::vector<double>& turningSecondsByRobot);
 
 } // namespace mcpp
