@@ -5,6 +5,7 @@
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/model/ParallelFor.hpp"
 
+#include <algorithm>
 #include <mutex>
 
 namespace mcpp {
@@ -17,6 +18,21 @@ std::vector<std::vector<int>> cellsByRobot(const RegionAllocation& regions) {
             cells[static_cast<std::size_t>(robot)].push_back(static_cast<int>(cell));
     }
     return cells;
+}
+
+double longestWalkSeconds(const std::vector<SpanningTreeCoverage::RegionTree>& trees) {
+    double longest = 0.0;
+    for (const SpanningTreeCoverage::RegionTree& planned : trees)
+        longest = std::max(longest, planned.shape.seconds());
+    return longest;
+}
+
+std::vector<double> turningSecondsOf(const std::vector<SpanningTreeCoverage::RegionTree>& trees) {
+    std::vector<double> seconds;
+    seconds.reserve(trees.size());
+    for (const SpanningTreeCoverage::RegionTree& planned : trees)
+        seconds.push_back(planned.shape.turningSeconds());
+    return seconds;
 }
 
 ParameterSpec SpanningTreeCoverage::closedTourParameter() {

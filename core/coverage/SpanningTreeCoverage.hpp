@@ -54,6 +54,12 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
     bool closedTour_;
 };
 
+// The longest of the trees' walks, in seconds.
+[[nodiscard]] double longestWalkSeconds(const std::vector<SpanningTreeCoverage::RegionTree>& trees);
+// Each tree's walk's time spent turning, by robot.
+[[nodiscard]] std::vector<double>
+turningSecondsOf(const std::vector<SpanningTreeCoverage::RegionTree>& trees);
+
 // The cells of each robot's region, in cell-id order.
 [[nodiscard]] std::vector<std::vector<int>> cellsByRobot(const RegionAllocation& regions);
 

@@ -74,17 +74,20 @@ RegionAllocation balancedDivision(PlanningRun& run, CellGraph& cells, const std:
     const ProgressReporter& progress = run.progress();
     const SpanningTreeCoverage coverage(false);
     RegionAllocation division = ReallocationSimulation::firstDivision(cells, startCells);
-    std::vector<CoveragePath> paths =
-        coverage.plan(cells, division, run.starts(), progress.within("first division", 0.0, 0.3));
-    if (calibrateTurnRates(cells, division, paths)) {
+    // Compared by their trees, the two divisions hold a quarter of their paths' memory; only the one kept
+    // is walked.
+    std::vector<SpanningTreeCoverage::RegionTree> trees =
+        coverage.planTrees(cells, division, run.starts(), progress.within("first division", 0.0, 0.3));
+    if (calibrateTurnRates(cells, division, turningSecondsOf(trees))) {
         RegionAllocation priced = ReallocationSimulation::firstDivision(cells, startCells);
-        std::vector<CoveragePath> pricedPaths =
-            coverage.plan(cells, priced, run.starts(), progress.within("first division", 0.3, 0.6));
-        if (longestPathSeconds(pricedPaths) < longestPathSeconds(paths)) {
+        std::vector<SpanningTreeCoverage::RegionTree> pricedTrees =
+            coverage.planTrees(cells, priced, run.starts(), progress.within("first division", 0.3, 0.6));
+        if (longestWalkSeconds(pricedTrees) < longestWalkSeconds(trees)) {
             division = std::move(priced);
-            paths = std::move(pricedPaths);
+            trees = std::move(pricedTrees);
         }
     }
+    std::vector<CoveragePath> paths = coverage.walkTrees(cells, std::move(trees), run.starts(), progress);
     const PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(cells));
     balancing.balance(cells, division, paths, run.starts(), progress.within("first division", 0.6, 1.0));
     return division;

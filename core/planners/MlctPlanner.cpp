@@ -26,21 +26,6 @@ bool turnsWeigh(const std::vector<RegionTree>& trees) {
     });
 }
 
-std::vector<double> turningSecondsOf(const std::vector<RegionTree>& trees) {
-    std::vector<double> seconds;
-    seconds.reserve(trees.size());
-    for (const RegionTree& planned : trees)
-        seconds.push_back(planned.shape.turningSeconds());
-    return seconds;
-}
-
-double longestWalkSeconds(const std::vector<RegionTree>& trees) {
-    double longest = 0.0;
-    for (const RegionTree& planned : trees)
-        longest = std::max(longest, planned.shape.seconds());
-    return longest;
-}
-
 } // namespace
 
 PlannerDescription MlctPlanner::describe() const {
