@@ -142,7 +142,9 @@ class TestEventsAndTimeline : public QObject {
         panel.showPlan(&plan, {});
         const auto* table = panel.findChild<QTableWidget*>(QStringLiteral("resultsTable"));
         QVERIFY(table != nullptr);
-        QVERIFY(!table->wordWrap()); // a robot's name in a narrow column is elided on one line
+        // A robot's name in a narrow column is elided on one line and shown whole on hover.
+        QVERIFY(!table->wordWrap());
+        QCOMPARE(table->item(0, 0)->toolTip(), table->item(0, 0)->text());
         QCOMPARE(table->horizontalHeaderItem(4)->text(), QString("Done at"));
         QCOMPARE(table->item(0, 4)->text(), QString("1 h 30 min"));
         QVERIFY2(table->item(0, 4)->toolTip().startsWith("1 h at full speed"),
