@@ -20,6 +20,18 @@ bool shareBorder(const QuadCell& a, const QuadCell& b) {
     return (touchX && overlapY > tolerance) || (touchY && overlapX > tolerance);
 }
 
+// A map of one to four land covers and up to 19 % obstacles, without robots, drawn from the seed.
+PlanningProblem randomMap(std::uint32_t seed, int columns, int rows) {
+    test::RandomMapSpec spec;
+    spec.columns = columns;
+    spec.rows = rows;
+    spec.landCovers = 1 + static_cast<int>(seed % 4);
+    spec.obstacleFraction = 0.01 * (seed % 20);
+    spec.seed = seed;
+    spec.robots = 0;
+    return test::randomProblem(spec);
+}
+
 } // namespace
 
 class NeighbourTopologyTest : public QObject {
@@ -41,14 +53,8 @@ class NeighbourTopologyTest : public QObject {
     // Against a brute-force geometric search on mixed-level trees with obstacles.
     void matchesBruteForceOnRandomMaps() {
         for (std::uint32_t seed = 1; seed <= 30; ++seed) {
-            test::RandomMapSpec spec;
-            spec.columns = 24 + static_cast<int>(seed % 7);
-            spec.rows = 20 + static_cast<int>(seed % 5);
-            spec.landCovers = 1 + static_cast<int>(seed % 4);
-            spec.obstacleFraction = 0.01 * (seed % 20);
-            spec.seed = seed;
-            spec.robots = 0;
-            const auto problem = test::randomProblem(spec);
+            const auto problem =
+                randomMap(seed, 24 + static_cast<int>(seed % 7), 20 + static_cast<int>(seed % 5));
             const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, {});
             const NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
             for (std::size_t a = 0; a < tree.activeCount(); ++a) {
@@ -75,14 +81,8 @@ class NeighbourTopologyTest : public QObject {
     void everyCellIsFoundByItsPoints() {
         int spansSeen = 0;
         for (std::uint32_t seed = 1; seed <= 12; ++seed) {
-            test::RandomMapSpec spec;
-            spec.columns = 30 + static_cast<int>(seed % 5);
-            spec.rows = 26 + static_cast<int>(seed % 3);
-            spec.landCovers = 1 + static_cast<int>(seed % 4);
-            spec.obstacleFraction = 0.02 * (seed % 8);
-            spec.seed = seed;
-            spec.robots = 0;
-            const auto problem = test::randomProblem(spec);
+            const auto problem =
+                randomMap(seed, 30 + static_cast<int>(seed % 5), 26 + static_cast<int>(seed % 3));
             QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, {});
             NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
             const CellGraph graph = cellGraphOfQuadTree(std::move(tree), std::move(topology));
