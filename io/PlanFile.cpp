@@ -166,8 +166,9 @@ CellGraph getCells(CompressedReader& in) {
         if (level < 1 || level > frame.levels || level > 255)
             throw CompressedReader::DamagedData("a cell on no level of the quadtree");
         cell.level = static_cast<std::uint8_t>(level);
-        if (span <= 0 || span > std::numeric_limits<std::uint16_t>::max())
-            throw CompressedReader::DamagedData("a cell larger than any quadtree makes");
+        // Spans are powers of two up to the largest a quadtree makes; 0 would divide by zero in lookups.
+        if (span <= 0 || span > largestSpan || (span & (span - 1)) != 0)
+            throw CompressedReader::DamagedData("a cell of a size no quadtree makes");
         cell.span = static_cast<std::uint16_t>(span);
         if (cell.column < 0 || cell.row < 0 || std::int64_t{cell.column} + cell.span > frame.columns ||
             std::int64_t{cell.row} + cell.span > frame.rows || !std::isfinite(cell.minX) ||

@@ -261,7 +261,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         auto* nameItem = new QTableWidgetItem(name);
         nameItem->setData(Qt::DecorationRole, render::RobotPalette::colour(robot.robot));
         nameItem->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
-        nameItem->setToolTip(name); // the whole name where the column elides it
+        nameItem->setToolTip(name); // whole, for when the column elides it
         const int r = static_cast<int>(row);
         table_->setItem(r, 0, nameItem);
         table_->setItem(r, 1, numberItem(QString::number(robot.cells), robot.cells));

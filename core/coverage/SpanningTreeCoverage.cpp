@@ -27,6 +27,14 @@ double longestWalkSeconds(const std::vector<SpanningTreeCoverage::RegionTree>& t
     return longest;
 }
 
+bool walksQuicker(const std::vector<SpanningTreeCoverage::RegionTree>& trees,
+                  const std::vector<SpanningTreeCoverage::RegionTree>& than) {
+    // A margin, as between candidate trees: walk shapes and measured paths add the same times in another
+    // order, and a tie must not be decided by rounding.
+    constexpr double relativeMargin = 1e-9;
+    return longestWalkSeconds(trees) < longestWalkSeconds(than) * (1.0 - relativeMargin);
+}
+
 std::vector<double> turningSecondsOf(const std::vector<SpanningTreeCoverage::RegionTree>& trees) {
     std::vector<double> seconds;
     seconds.reserve(trees.size());
@@ -93,7 +101,8 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
 
 std::vector<SpanningTreeCoverage::RegionTree>
 SpanningTreeCoverage::planTrees(const CellGraph& graph, const RegionAllocation& regions,
-                                const std::vector<MapPoint>& starts, const ProgressReporter& progress) const {
+                                const std::vector<MapPoint>& starts, const ProgressReporter& progress,
+                                bool timed) const {
     const std::size_t robots = regions.startCell.size();
     const auto regionCells = cellsByRobot(regions);
     // Regions are planned side by side, each into its own slot: the same trees whatever the thread count.
@@ -108,7 +117,7 @@ SpanningTreeCoverage::planTrees(const CellGraph& graph, const RegionAllocation& 
         if (scratch.size() != graph.size())
             scratch.assign(graph.size(), -1);
         auto [tree, shape] =
-            bestTree(graph, regionCells[robot], regions.startCell[robot], starts[robot], scratch, true);
+            bestTree(graph, regionCells[robot], regions.startCell[robot], starts[robot], scratch, timed);
         trees[robot] = {std::move(tree), shape};
         const std::lock_guard lock(progressMutex);
         progress.report("paths", static_cast<double>(++finished) / static_cast<double>(robots));
@@ -122,15 +131,20 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
                                                           const std::vector<MapPoint>& starts,
                                                           const ProgressReporter& progress) const {
     std::vector<CoveragePath> paths(trees.size());
+    std::mutex progressMutex;
+    std::size_t finished = 0;
+    progress.report("waypoints", 0.0);
     parallelFor(trees.size(), [&](std::size_t robot, int) {
         progress.throwIfCancelled();
         TreeCircumnavigation walker(graph);
         RegionTree& planned = trees[robot];
         std::vector<Waypoint> walk =
             walker.walk(planned.tree, starts[robot], closedTour_, planned.shape.points());
-        planned.tree = SpanningTree(); // its memory is the path's now
+        planned.tree = SpanningTree(); // freed once walked: all trees and all paths are never held together
         paths[robot] = pathFromWalk(static_cast<int>(robot), starts[robot], std::move(walk), closedTour_);
         measurePath(paths[robot], graph);
+        const std::lock_guard lock(progressMutex);
+        progress.report("waypoints", static_cast<double>(++finished) / static_cast<double>(paths.size()));
     });
     return paths;
 }
@@ -138,7 +152,7 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
 std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, const RegionAllocation& regions,
                                                      const std::vector<MapPoint>& starts,
                                                      const ProgressReporter& progress) const {
-    return walkTrees(graph, planTrees(graph, regions, starts, progress), starts, progress);
+    return walkTrees(graph, planTrees(graph, regions, starts, progress, false), starts, progress);
 }
 
 } // namespace mcpp

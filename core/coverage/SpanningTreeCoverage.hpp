@@ -36,10 +36,11 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
     };
     // Every region's quickest tree, not yet walked: two divisions are compared by their trees' shapes while
     // holding a quarter of what their paths would take (24 bytes a cell against four 24-byte waypoints).
+    // `timed`: every shape timed, for comparing; otherwise only where candidates were compared.
     [[nodiscard]] std::vector<RegionTree> planTrees(const CellGraph& graph, const RegionAllocation& regions,
                                                     const std::vector<MapPoint>& starts,
-                                                    const ProgressReporter& progress) const;
-    // The paths round the trees, each tree freed once walked.
+                                                    const ProgressReporter& progress, bool timed) const;
+    // The paths round the trees, each tree freed once walked (progress reported as "waypoints").
     [[nodiscard]] std::vector<CoveragePath> walkTrees(const CellGraph& graph, std::vector<RegionTree> trees,
                                                       const std::vector<MapPoint>& starts,
                                                       const ProgressReporter& progress) const;
@@ -54,6 +55,9 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
     bool closedTour_;
 };
 
+// Whether the trees' longest walk is shorter than the other trees', beyond rounding.
+[[nodiscard]] bool walksQuicker(const std::vector<SpanningTreeCoverage::RegionTree>& trees,
+                                const std::vector<SpanningTreeCoverage::RegionTree>& than);
 // The longest of the trees' walks, in seconds.
 [[nodiscard]] double longestWalkSeconds(const std::vector<SpanningTreeCoverage::RegionTree>& trees);
 // Each tree's walk's time spent turning, by robot.

@@ -5,15 +5,6 @@
 namespace mcpp {
 
 bool calibrateTurnRates(CellGraph& graph, const RegionAllocation& regions,
-                        const std::vector<CoveragePath>& paths) {
-    std::vector<double> turning;
-    turning.reserve(paths.size());
-    for (const CoveragePath& path : paths)
-        turning.push_back(path.turnSeconds);
-    return calibrateTurnRates(graph, regions, turning);
-}
-
-bool calibrateTurnRates(CellGraph& graph, const RegionAllocation& regions,
                         const std::vector<double>& turningSecondsByRobot) {
     const std::size_t robots = std::min(regions.startCell.size(), turningSecondsByRobot.size());
     const auto robotOf = [&](std::size_t id) {

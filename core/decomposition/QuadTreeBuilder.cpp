@@ -3,6 +3,7 @@
 #include "core/decomposition/LandCoverCounter.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
 #include "core/decomposition/QuadTreeGridSize.hpp"
+#include "core/model/Cell.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <algorithm>
@@ -17,14 +18,12 @@ namespace {
 
 using Kind = PlanningError::Kind;
 
-// 16 levels keep a cell's span, 2^15 bottom cells at most, in 16 bits (Cell::span).
-constexpr int mostQuadTreeLevels = 16;
-
+// Past mostQuadTreeLevels (Cell.hpp) a cell's span would not fit its 16 bits.
 [[noreturn]] void throwTooManyLevels(int levels) {
     throw PlanningError(Kind::InvalidClassTable,
-                        "fields of view differ by more than a factor 2^15; the quadtree "
-                        "would need " +
-                            std::to_string(levels) + " levels, at most 16 are planned");
+                        "fields of view differ by a factor of 2^" + std::to_string(mostQuadTreeLevels) +
+                            " or more; the quadtree would need " + std::to_string(levels) +
+                            " levels, at most " + std::to_string(mostQuadTreeLevels) + " are planned");
 }
 
 } // namespace

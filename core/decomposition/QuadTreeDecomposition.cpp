@@ -14,6 +14,8 @@ CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology) {
     frame.rows = tree.levels > 0 ? tree.rowsAt(tree.levels) : 0;
     std::vector<Cell> cells;
     cells.reserve(tree.activeCount());
+    // What storing areas as floats changed, added to the total so that the cells never add up to more.
+    double rounding = 0.0;
     for (std::size_t active = 0; active < tree.activeCount(); ++active) {
         const QuadCell& quadCell = tree.active(static_cast<int>(active));
         Cell cell;
@@ -26,10 +28,11 @@ CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology) {
         cell.size = quadCell.size;
         cell.classValue = quadCell.classValue;
         cell.speedMetresPerSecond = quadCell.speedMetresPerSecond;
-        cell.passableAreaSquareMetres = quadCell.passableAreaSquareMetres;
+        cell.passableAreaSquareMetres = static_cast<float>(quadCell.passableAreaSquareMetres);
+        rounding += double{cell.passableAreaSquareMetres} - quadCell.passableAreaSquareMetres;
         cells.push_back(cell);
     }
-    const double passableArea = tree.passableAreaSquareMetres;
+    const double passableArea = tree.passableAreaSquareMetres + rounding;
     std::vector<RoundedFieldOfView> fieldsOfView = std::move(tree.roundedFieldsOfView);
     tree = QuadTree{}; // freed before the graph's locator is built: the decomposition stage's peak
     CellGraph graph(frame, std::move(cells), std::move(topology));

@@ -106,6 +106,8 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
 
     GridFrame frame{grid.originX, grid.originY, shape.cellSize, shape.columns, shape.rows, 1};
     std::vector<Cell> cells;
+    // What storing areas as floats changed, added to the total so that the cells never add up to more.
+    double rounding = 0.0;
     LandCoverCounter landCover(samples, dense);
     for (int row = 0; row < shape.rows; ++row) {
         for (int column = 0; column < shape.columns; ++column) {
@@ -155,7 +157,9 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
             cell.size = shape.cellSize;
             cell.minY = frame.y(row) - shape.cellSize;
             cell.freeSubCells = free;
-            cell.passableAreaSquareMetres = static_cast<double>(freePassable) * samples.sampleArea();
+            const double area = static_cast<double>(freePassable) * samples.sampleArea();
+            cell.passableAreaSquareMetres = static_cast<float>(area);
+            rounding += double{cell.passableAreaSquareMetres} - area;
             const LandCoverCounter::Result found =
                 landCover.of(cell.minX, cell.maxX(), cell.minY, cell.maxY());
             cell.classValue = found.classValue;
@@ -174,7 +178,7 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
     NeighbourTopology adjacency = gridNeighbours(frame, cells);
     CellGraph graph(frame, std::move(cells), std::move(adjacency));
     graph.fieldsOfView = fieldsOfView;
-    graph.passableAreaSquareMetres = passableSamples * samples.sampleArea();
+    graph.passableAreaSquareMetres = passableSamples * samples.sampleArea() + rounding;
     progress.report("grid", 1.0);
     return graph;
 }

@@ -5,6 +5,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <limits>
 
 namespace mcpp {
 
@@ -23,11 +24,15 @@ inline constexpr std::uint8_t allSubCells = 0b1111;
 
 // One square of a planning decomposition: a quadtree leaf, or a cell of a uniform grid. A robot covers it
 // by passing the centres of its free sub-cells, whose side (half the cell's) is the robot's swath there.
+// Levels a quadtree may have: its largest cells span 2^15 bottom cells, which Cell::span holds in 16 bits.
+inline constexpr int mostQuadTreeLevels = 16;
+inline constexpr int largestSpan = 1 << (mostQuadTreeLevels - 1);
+
 struct Cell {
     // Placement on the decomposition's bottom grid (squares of the smallest cell side), row 0 at the north.
     int column = 0;
     int row = 0;
-    // Side in bottom cells: 2^15 at most, as the quadtree has at most 16 levels (QuadTreeBuilder).
+    // Side in bottom cells: 2^15 at most, as a quadtree has at most mostQuadTreeLevels levels.
     std::uint16_t span = 1;
     std::uint8_t level = 1;                  // quadtree level, 1 = top; 1 for a single-level grid
     std::uint8_t freeSubCells = allSubCells; // bit i: sub-cell i (SubCell order) may be entered
@@ -92,5 +97,6 @@ struct Cell {
     }
 };
 static_assert(sizeof(Cell) == 56);
+static_assert(largestSpan <= std::numeric_limits<decltype(Cell::span)>::max());
 
 } // namespace mcpp

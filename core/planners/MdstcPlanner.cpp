@@ -77,12 +77,12 @@ RegionAllocation balancedDivision(PlanningRun& run, CellGraph& cells, const std:
     // Compared by their trees, the two divisions hold a quarter of their paths' memory; only the one kept
     // is walked.
     std::vector<SpanningTreeCoverage::RegionTree> trees =
-        coverage.planTrees(cells, division, run.starts(), progress.within("first division", 0.0, 0.3));
+        coverage.planTrees(cells, division, run.starts(), progress.within("first division", 0.0, 0.3), true);
     if (calibrateTurnRates(cells, division, turningSecondsOf(trees))) {
         RegionAllocation priced = ReallocationSimulation::firstDivision(cells, startCells);
-        std::vector<SpanningTreeCoverage::RegionTree> pricedTrees =
-            coverage.planTrees(cells, priced, run.starts(), progress.within("first division", 0.3, 0.6));
-        if (longestWalkSeconds(pricedTrees) < longestWalkSeconds(trees)) {
+        std::vector<SpanningTreeCoverage::RegionTree> pricedTrees = coverage.planTrees(
+            cells, priced, run.starts(), progress.within("first division", 0.3, 0.6), true);
+        if (walksQuicker(pricedTrees, trees)) {
             division = std::move(priced);
             trees = std::move(pricedTrees);
         }

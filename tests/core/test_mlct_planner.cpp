@@ -115,7 +115,7 @@ class MlctPlannerTest : public QObject {
         });
         (void)MlctPlanner{}.plan(problem, reporter);
         QCOMPARE(stages, (std::vector<std::string>{"quadtree", "topology", "allocation", "paths",
-                                                   "turn balance", "done"}));
+                                                   "turn balance", "waypoints", "done"}));
         std::atomic<bool> cancel{true};
         try {
             (void)MlctPlanner{}.plan(problem, ProgressReporter({}, &cancel));

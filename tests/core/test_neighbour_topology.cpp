@@ -77,9 +77,11 @@ class NeighbourTopologyTest : public QObject {
     }
 
     // The graph's point lookup, which keeps only cell ids per cell size, finds every cell of mixed-level
-    // graphs from any of its sub-cell centres, and nothing beyond the grid.
+    // graphs from any of its sub-cell centres; a bottom cell that no cell covers (an obstacle) and points
+    // beyond the grid find none.
     void everyCellIsFoundByItsPoints() {
         int spansSeen = 0;
+        int holesSeen = 0;
         for (std::uint32_t seed = 1; seed <= 12; ++seed) {
             const auto problem =
                 randomMap(seed, 30 + static_cast<int>(seed % 5), 26 + static_cast<int>(seed % 3));
@@ -96,11 +98,32 @@ class NeighbourTopologyTest : public QObject {
             }
             spansSeen = std::max(spansSeen, static_cast<int>(spans.size()));
             const GridFrame& frame = graph.frame();
+            // Every bottom cell of the grid, by its centre: its cell, or none where no cell covers it.
+            std::vector<int> owner(static_cast<std::size_t>(frame.columns) * frame.rows, -1);
+            for (std::size_t id = 0; id < graph.size(); ++id) {
+                const Cell& cell = graph.cell(static_cast<int>(id));
+                for (int row = cell.row; row < cell.row + cell.span; ++row)
+                    for (int column = cell.column; column < cell.column + cell.span; ++column)
+                        owner[static_cast<std::size_t>(row) * frame.columns + column] = static_cast<int>(id);
+            }
+            for (int row = 0; row < frame.rows; ++row)
+                for (int column = 0; column < frame.columns; ++column) {
+                    const int expected = owner[static_cast<std::size_t>(row) * frame.columns + column];
+                    holesSeen += expected < 0 ? 1 : 0;
+                    const MapPoint centre{frame.originX + (column + 0.5) * frame.bottomCellSize,
+                                          frame.originY - (row + 0.5) * frame.bottomCellSize};
+                    QCOMPARE(graph.cellAt(centre), expected);
+                }
+            const double east = frame.originX + frame.columns * frame.bottomCellSize;
+            const double south = frame.originY - frame.rows * frame.bottomCellSize;
+            QCOMPARE(graph.cellAt({east + 1.0, frame.originY - 1.0}), -1);
+            QCOMPARE(graph.cellAt({frame.originX + 1.0, south - 1.0}), -1);
             QCOMPARE(graph.cellAt({frame.originX - 1.0, frame.originY - 1.0}), -1);
             QCOMPARE(graph.cellAt({frame.originX + 1.0, frame.originY + 1.0}), -1);
             QCOMPARE(graph.cellAt({std::nan(""), frame.originY - 1.0}), -1);
         }
         QVERIFY(spansSeen >= 3); // cells of three sizes at least, so every size's list is searched
+        QVERIFY(holesSeen > 0);  // and searches that find nothing
     }
 };
 

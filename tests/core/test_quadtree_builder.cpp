@@ -28,6 +28,20 @@ int countActiveAtLevel(const QuadTree& tree, int level) {
     return count;
 }
 
+// Sets the memory budget while it lives and gives the machine's back after, however the test ends.
+class BudgetForScope {
+  public:
+    explicit BudgetForScope(std::int64_t bytes) : machine_(memoryBudgetBytes()) {
+        setMemoryBudgetBytes(bytes);
+    }
+    ~BudgetForScope() { setMemoryBudgetBytes(machine_); }
+    BudgetForScope(const BudgetForScope&) = delete;
+    BudgetForScope& operator=(const BudgetForScope&) = delete;
+
+  private:
+    std::int64_t machine_;
+};
+
 } // namespace
 
 class QuadTreeBuilderTest : public QObject {
@@ -221,39 +235,42 @@ class QuadTreeBuilderTest : public QObject {
                      error.what());
         }
         // With less memory the message names the smallest FOV that fits, and that FOV does fit.
-        const std::int64_t machine = memoryBudgetBytes();
-        setMemoryBudgetBytes(std::int64_t{400} * 1000 * 1000); // a million bottom cells
-        try {
-            (void)QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), tinyFov, {});
-            QFAIL("a grid above the memory budget must be refused");
-        } catch (const PlanningError& error) {
-            const std::string message = error.what();
-            QVERIFY2(message.find("10.0 GB of memory") != std::string::npos, error.what());
-            QVERIFY2(message.find("this machine allows 0.4 GB") != std::string::npos, error.what());
-            const std::string marker = "A smallest field of view of ";
-            const auto at = message.find(marker);
-            QVERIFY2(at != std::string::npos, error.what());
-            const double fitting = std::stod(message.substr(at + marker.size()));
-            QVERIFY2(fitting >= 5.0 && fitting <= 5.5, error.what()); // 10 km / 2 FOV <= 1000 cells a side
-            ClassTable fittingFov({{1, "grass", 0, 1.0, fitting, true}});
-            const QuadTree tree = QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), fittingFov, {});
-            QVERIFY(tree.activeCount() <= 1000000);
+        {
+            const BudgetForScope small(std::int64_t{400} * 1000 * 1000); // a million bottom cells
+            try {
+                (void)QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), tinyFov, {});
+                QFAIL("a grid above the memory budget must be refused");
+            } catch (const PlanningError& error) {
+                const std::string message = error.what();
+                QVERIFY2(message.find("10.0 GB of memory") != std::string::npos, error.what());
+                QVERIFY2(message.find("this machine allows 0.4 GB") != std::string::npos, error.what());
+                const std::string marker = "A smallest field of view of ";
+                const auto at = message.find(marker);
+                QVERIFY2(at != std::string::npos, error.what());
+                const double fitting = std::stod(message.substr(at + marker.size()));
+                QVERIFY2(fitting >= 5.0 && fitting <= 5.5,
+                         error.what()); // 10 km / 2 FOV <= 1000 cells a side
+                ClassTable fittingFov({{1, "grass", 0, 1.0, fitting, true}});
+                const QuadTree tree = QuadTreeBuilder{}.build(filledGrid(100, 100, 1, 100.0), fittingFov, {});
+                QVERIFY(tree.activeCount() <= 1000000);
+            }
         }
         // Fields of view 2^16 apart need 17 levels, past what a cell's span holds; even where the memory
         // budget would let such a grid through, it is refused by name before any cell is made.
-        setMemoryBudgetBytes(std::numeric_limits<std::int64_t>::max());
-        ClassTable farApart({{1, "grass", 0, 1.0, 1.0, true}, {2, "sea", 0, 1.0, 65536.0, true}});
-        ClassGrid twoClasses = filledGrid(4, 4, 1);
-        twoClasses.values[0] = 2;
-        try {
-            (void)QuadTreeBuilder{}.build(twoClasses, farApart, {});
-            QFAIL("17 quadtree levels must be refused");
-        } catch (const PlanningError& error) {
-            QCOMPARE(error.kind(), PlanningError::Kind::InvalidClassTable);
-            QVERIFY2(std::string(error.what()).find("would need 17 levels") != std::string::npos,
-                     error.what());
+        {
+            const BudgetForScope unlimited(std::numeric_limits<std::int64_t>::max());
+            ClassTable farApart({{1, "grass", 0, 1.0, 1.0, true}, {2, "sea", 0, 1.0, 65536.0, true}});
+            ClassGrid twoClasses = filledGrid(4, 4, 1);
+            twoClasses.values[0] = 2;
+            try {
+                (void)QuadTreeBuilder{}.build(twoClasses, farApart, {});
+                QFAIL("17 quadtree levels must be refused");
+            } catch (const PlanningError& error) {
+                QCOMPARE(error.kind(), PlanningError::Kind::InvalidClassTable);
+                QVERIFY2(std::string(error.what()).find("would need 17 levels") != std::string::npos,
+                         error.what());
+            }
         }
-        setMemoryBudgetBytes(machine);
         DecompositionOptions badPurity;
         badPurity.purityTolerance = std::nan("");
         QVERIFY_THROWS_EXCEPTION(PlanningError,

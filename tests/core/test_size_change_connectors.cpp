@@ -227,6 +227,12 @@ class SizeChangeConnectorsTest : public QObject {
                                         .arg(shape.seconds())
                                         .arg(path.timeSeconds)));
                 QCOMPARE(shape.turns(), path.turns);
+                QVERIFY2(std::abs(shape.turningSeconds() - path.turnSeconds) < 1e-9 * path.timeSeconds,
+                         qPrintable(QString("robot %1, candidate %2: %3 s turning against %4 s")
+                                        .arg(robot)
+                                        .arg(candidate)
+                                        .arg(shape.turningSeconds())
+                                        .arg(path.turnSeconds)));
             }
         }
     }

@@ -233,16 +233,15 @@ class TurnTimeTest : public QObject {
         RegionAllocation regions;
         regions.robotOfCell = {0, 0, -1};
         regions.startCell = {0};
-        std::vector<CoveragePath> paths(1);
-        paths[0].turnSeconds = 9.0; // 4.5 quarter turns over 6 sub-cells priced 2 s each
-        QVERIFY(calibrateTurnRates(graph, regions, paths));
+        const std::vector<double> turning{9.0}; // 4.5 quarter turns over 6 sub-cells priced 2 s each
+        QVERIFY(calibrateTurnRates(graph, regions, turning));
         QCOMPARE(graph.cell(0).expectedTurnsPerSubCell, 0.75F);
         QCOMPARE(graph.cell(1).expectedTurnsPerSubCell, 0.75F);
         QCOMPARE(graph.cell(2).expectedTurnsPerSubCell, 0.2F);
         QCOMPARE(graph.cell(1).coverSeconds(), 10.0 + 0.75 * 2 * 2.0);
         // Free turns leave nothing to calibrate.
         graph.applyTurnTime(TurnTimeModel{0.0, 1.0});
-        QVERIFY(!calibrateTurnRates(graph, regions, paths));
+        QVERIFY(!calibrateTurnRates(graph, regions, turning));
         QCOMPARE(graph.cell(0).expectedTurnsPerSubCell, 0.75F);
     }
 
