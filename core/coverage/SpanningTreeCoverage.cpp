@@ -20,6 +20,24 @@ std::vector<std::vector<int>> cellsByRobot(const RegionAllocation& regions) {
     return cells;
 }
 
+namespace {
+
+// Walks and measured paths add the same times in other orders: a tie must not be decided by rounding.
+constexpr double relativeMargin = 1e-9;
+
+// Walks are compared by time (travel and turns at their cells' price), then turns, then length: where
+// turns are free, the one that turns less.
+bool isQuicker(const PathShape& walk, const PathShape& than) {
+    if (walk.seconds() < than.seconds() * (1.0 - relativeMargin))
+        return true;
+    if (walk.seconds() > than.seconds() * (1.0 + relativeMargin))
+        return false;
+    if (walk.turns() != than.turns())
+        return walk.turns() < than.turns();
+    return walk.lengthMetres() < than.lengthMetres() - 1e-9;
+}
+
+// The longest of the trees' walks, in seconds.
 double longestWalkSeconds(const std::vector<SpanningTreeCoverage::RegionTree>& trees) {
     double longest = 0.0;
     for (const SpanningTreeCoverage::RegionTree& planned : trees)
@@ -27,11 +45,10 @@ double longestWalkSeconds(const std::vector<SpanningTreeCoverage::RegionTree>& t
     return longest;
 }
 
+} // namespace
+
 bool walksQuicker(const std::vector<SpanningTreeCoverage::RegionTree>& trees,
                   const std::vector<SpanningTreeCoverage::RegionTree>& than) {
-    // A margin, as between candidate trees: walk shapes and measured paths add the same times in another
-    // order, and a tie must not be decided by rounding.
-    constexpr double relativeMargin = 1e-9;
     return longestWalkSeconds(trees) < longestWalkSeconds(than) * (1.0 - relativeMargin);
 }
 
@@ -47,23 +64,6 @@ ParameterSpec SpanningTreeCoverage::closedTourParameter() {
     return booleanParameter("closed_tour", "Return to start", true,
                             "Closed tours end where they start; open paths stop at the last cell");
 }
-
-namespace {
-
-// Walks are compared by time (travel and turns at their cells' price), then turns, then length: where
-// turns are free, the one that turns less.
-bool isQuicker(const PathShape& walk, const PathShape& than) {
-    constexpr double relativeMargin = 1e-9;
-    if (walk.seconds() < than.seconds() * (1.0 - relativeMargin))
-        return true;
-    if (walk.seconds() > than.seconds() * (1.0 + relativeMargin))
-        return false;
-    if (walk.turns() != than.turns())
-        return walk.turns() < than.turns();
-    return walk.lengthMetres() < than.lengthMetres() - 1e-9;
-}
-
-} // namespace
 
 std::pair<SpanningTree, PathShape>
 SpanningTreeCoverage::bestTree(const CellGraph& graph, const std::vector<int>& cells, int startCell,

@@ -58,8 +58,6 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
 // Whether the trees' longest walk is shorter than the other trees', beyond rounding.
 [[nodiscard]] bool walksQuicker(const std::vector<SpanningTreeCoverage::RegionTree>& trees,
                                 const std::vector<SpanningTreeCoverage::RegionTree>& than);
-// The longest of the trees' walks, in seconds.
-[[nodiscard]] double longestWalkSeconds(const std::vector<SpanningTreeCoverage::RegionTree>& trees);
 // Each tree's walk's time spent turning, by robot.
 [[nodiscard]] std::vector<double>
 turningSecondsOf(const std::vector<SpanningTreeCoverage::RegionTree>& trees);

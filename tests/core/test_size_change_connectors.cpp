@@ -220,19 +220,21 @@ class SizeChangeConnectorsTest : public QObject {
                 CoveragePath path = pathFromWalk(robot, start, walker.walk(tree, start, true), true);
                 measurePath(path, plan.cells);
                 QVERIFY(path.turnSeconds > 0.0);
-                QVERIFY2(std::abs(shape.seconds() - path.timeSeconds) < 1e-9 * path.timeSeconds,
-                         qPrintable(QString("robot %1, candidate %2: %3 s against %4 s")
-                                        .arg(robot)
-                                        .arg(candidate)
-                                        .arg(shape.seconds())
-                                        .arg(path.timeSeconds)));
+                // Shape and measured path agree to rounding, in the path's whole time.
+                const auto describe = [&](double fromShape, double measured, const char* what) {
+                    return QString("robot %1, candidate %2: %3 s %4 against %5 s")
+                        .arg(robot)
+                        .arg(candidate)
+                        .arg(fromShape)
+                        .arg(what)
+                        .arg(measured);
+                };
+                const double tolerance = 1e-9 * path.timeSeconds;
+                QVERIFY2(std::abs(shape.seconds() - path.timeSeconds) < tolerance,
+                         qPrintable(describe(shape.seconds(), path.timeSeconds, "in all")));
                 QCOMPARE(shape.turns(), path.turns);
-                QVERIFY2(std::abs(shape.turningSeconds() - path.turnSeconds) < 1e-9 * path.timeSeconds,
-                         qPrintable(QString("robot %1, candidate %2: %3 s turning against %4 s")
-                                        .arg(robot)
-                                        .arg(candidate)
-                                        .arg(shape.turningSeconds())
-                                        .arg(path.turnSeconds)));
+                QVERIFY2(std::abs(shape.turningSeconds() - path.turnSeconds) < tolerance,
+                         qPrintable(describe(shape.turningSeconds(), path.turnSeconds, "turning")));
             }
         }
     }
