@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <mutex>
+#include <vector>
 
 namespace mcpp::io {
 
@@ -19,7 +20,9 @@ struct GeoReference::State {
     std::string authorityCode;
     // OGRCoordinateTransformation is not thread-safe; copies share these, so calls take the lock.
     mutable std::mutex mutex;
-    mutable std::unique_ptr<OGRCoordinateTransformation> toWgs84;
+    // Transformations to WGS84 not in use: each writer thread borrows one, so that exports written side
+    // by side do not wait for each other's points.
+    mutable std::vector<std::unique_ptr<OGRCoordinateTransformation>> idleToWgs84;
     mutable std::unique_ptr<OGRCoordinateTransformation> fromWgs84;
 };
 
@@ -115,17 +118,23 @@ Result<std::vector<LonLat>> GeoReference::toWgs84(const std::vector<MapPoint>& p
         y[i] = crsPoint.y;
     }
     std::vector<int> success(points.size(), 0);
+    std::unique_ptr<OGRCoordinateTransformation> transformation;
     {
         std::lock_guard lock(state_->mutex);
-        if (!state_->toWgs84) {
-            const auto wgs84 = internal::wgs84SpatialReference();
-            state_->toWgs84 = makeTransformation(*state_->crs, *wgs84);
-            if (!state_->toWgs84)
-                return Result<LonLats>::failure("no transformation from " + name() + " to WGS84" +
-                                                quiet.detail());
+        if (!state_->idleToWgs84.empty()) {
+            transformation = std::move(state_->idleToWgs84.back());
+            state_->idleToWgs84.pop_back();
+        } else {
+            transformation = makeTransformation(*state_->crs, *internal::wgs84SpatialReference());
         }
-        if (!points.empty())
-            state_->toWgs84->Transform(points.size(), x.data(), y.data(), nullptr, nullptr, success.data());
+    }
+    if (!transformation)
+        return Result<LonLats>::failure("no transformation from " + name() + " to WGS84" + quiet.detail());
+    if (!points.empty())
+        transformation->Transform(points.size(), x.data(), y.data(), nullptr, nullptr, success.data());
+    {
+        std::lock_guard lock(state_->mutex);
+        state_->idleToWgs84.push_back(std::move(transformation));
     }
     LonLats lonLats(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {

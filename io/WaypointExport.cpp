@@ -17,8 +17,6 @@ namespace {
 
 using internal::collinearAndBetween;
 
-using internal::JsonValue;
-
 // MAVLink numbers used by QGroundControl plans and QGC WPL files.
 constexpr int commandWaypoint = 16;     // MAV_CMD_NAV_WAYPOINT
 constexpr int commandChangeSpeed = 178; // MAV_CMD_DO_CHANGE_SPEED
@@ -182,81 +180,112 @@ int mavlinkVehicleType(VehicleType type) {
     return vehicleGroundRover;
 }
 
-void addSpeedChange(JsonValue& items, int& jumpId, double speed) {
-    JsonValue& change = items.push(JsonValue::object());
-    change.add("autoContinue", true);
-    change.add("command", commandChangeSpeed);
-    change.add("doJumpId", jumpId++);
-    change.add("frame", frameMission);
-    JsonValue& params = change.add("params", JsonValue::array());
-    for (const double value : {1.0, speed, -1.0, 0.0, 0.0, 0.0, 0.0})
-        params.push(value);
-    change.add("type", "SimpleItem");
+// QGroundControl plans hold thousands of items: their text is written straight out, laid out as
+// JsonValue lays out a document (two spaces an indent, scalar arrays on one line), without building the
+// tree of values first, which took three quarters of the writing time.
+void appendNumber(std::string& out, double value) {
+    internal::appendJsonNumber(out, value);
 }
 
-void addWaypoint(JsonValue& items, int& jumpId, const GeoWaypoint& point, double altitude) {
-    JsonValue& item = items.push(JsonValue::object());
-    item.add("AMSLAltAboveTerrain", JsonValue());
-    item.add("Altitude", altitude);
-    item.add("AltitudeMode", 1);
-    item.add("autoContinue", true);
-    item.add("command", commandWaypoint);
-    item.add("doJumpId", jumpId++);
-    item.add("frame", frameGlobalRelativeAltitude);
-    JsonValue& params = item.add("params", JsonValue::array());
-    params.push(0);
-    params.push(0);
-    params.push(0);
-    params.push(JsonValue());
-    params.push(point.latitude);
-    params.push(point.longitude);
-    params.push(altitude);
-    item.add("type", "SimpleItem");
+void appendSpeedChange(std::string& out, int& jumpId, double speed) {
+    out += "      {\n"
+           "        \"autoContinue\": true,\n"
+           "        \"command\": " +
+           std::to_string(commandChangeSpeed) + ",\n        \"doJumpId\": " + std::to_string(jumpId++) +
+           ",\n        \"frame\": " + std::to_string(frameMission) + ",\n        \"params\": [1, ";
+    appendNumber(out, speed);
+    out += ", -1, 0, 0, 0, 0],\n"
+           "        \"type\": \"SimpleItem\"\n"
+           "      }";
+}
+
+void appendWaypoint(std::string& out, int& jumpId, const GeoWaypoint& point, double altitude) {
+    out += "      {\n"
+           "        \"AMSLAltAboveTerrain\": null,\n"
+           "        \"Altitude\": ";
+    appendNumber(out, altitude);
+    out += ",\n        \"AltitudeMode\": 1,\n"
+           "        \"autoContinue\": true,\n"
+           "        \"command\": " +
+           std::to_string(commandWaypoint) + ",\n        \"doJumpId\": " + std::to_string(jumpId++) +
+           ",\n        \"frame\": " + std::to_string(frameGlobalRelativeAltitude) +
+           ",\n        \"params\": [0, 0, 0, null, ";
+    appendNumber(out, point.latitude);
+    out += ", ";
+    appendNumber(out, point.longitude);
+    out += ", ";
+    appendNumber(out, altitude);
+    out += "],\n"
+           "        \"type\": \"SimpleItem\"\n"
+           "      }";
+}
+
+// The items array's body: one item an element, separated as JsonValue separates them.
+std::string qGroundControlItems(const AutopilotMission& mission, const MissionPart& part,
+                                const std::vector<GeoWaypoint>& points, double altitude) {
+    std::string out;
+    out.reserve(points.size() * 300);
+    int jumpId = 1;
+    const auto separate = [&] {
+        if (!out.empty())
+            out += ",\n";
+    };
+    // cruiseSpeed is only QGroundControl's planning default: the vehicle is told its speed by an item, which
+    // matters most for a part that begins mid-field.
+    if (mission.commandedSpeeds[part.first] > 0.0)
+        appendSpeedChange(out, jumpId, mission.commandedSpeeds[part.first]);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const std::size_t point = part.first + i;
+        if (i > 0 && mission.changesSpeedAt(point)) {
+            separate();
+            appendSpeedChange(out, jumpId, mission.commandedSpeeds[point]);
+        }
+        separate();
+        appendWaypoint(out, jumpId, points[i], altitude);
+    }
+    return out;
 }
 
 // One QGroundControl plan: the part's first speed as its first item and its cruise speed, then waypoints and
 // speed changes.
 std::string qGroundControlPlanText(const AutopilotMission& mission, const MissionPart& part,
                                    const std::vector<GeoWaypoint>& points, const VehicleSettings& vehicle) {
-    const double altitude = vehicle.altitudeMetres;
-    JsonValue items = JsonValue::array();
-    int jumpId = 1;
-    // cruiseSpeed is only QGroundControl's planning default: the vehicle is told its speed by an item, which
-    // matters most for a part that begins mid-field.
-    if (mission.commandedSpeeds[part.first] > 0.0)
-        addSpeedChange(items, jumpId, mission.commandedSpeeds[part.first]);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const std::size_t point = part.first + i;
-        if (i > 0 && mission.changesSpeedAt(point))
-            addSpeedChange(items, jumpId, mission.commandedSpeeds[point]);
-        addWaypoint(items, jumpId, points[i], altitude);
-    }
     const double cruise = mission.commandedSpeeds[part.first];
     const GeoWaypoint& home = points.front();
-    JsonValue root = JsonValue::object();
-    root.add("fileType", "Plan");
-    JsonValue& fence = root.add("geoFence", JsonValue::object());
-    fence.add("circles", JsonValue::array());
-    fence.add("polygons", JsonValue::array());
-    fence.add("version", 2);
-    root.add("groundStation", "QGroundControl");
-    JsonValue& plan = root.add("mission", JsonValue::object());
-    plan.add("cruiseSpeed", cruise);
-    plan.add("firmwareType", firmwarePx4);
-    plan.add("globalPlanAltitudeMode", 1);
-    plan.add("hoverSpeed", cruise);
-    plan.add("items", std::move(items));
-    JsonValue& homePosition = plan.add("plannedHomePosition", JsonValue::array());
-    homePosition.push(home.latitude);
-    homePosition.push(home.longitude);
-    homePosition.push(0.0);
-    plan.add("vehicleType", mavlinkVehicleType(vehicle.type));
-    plan.add("version", 2);
-    JsonValue& rally = root.add("rallyPoints", JsonValue::object());
-    rally.add("points", JsonValue::array());
-    rally.add("version", 2);
-    root.add("version", 1);
-    return root.toText();
+    const std::string items = qGroundControlItems(mission, part, points, vehicle.altitudeMetres);
+    std::string out;
+    out.reserve(items.size() + 1024);
+    out += "{\n"
+           "  \"fileType\": \"Plan\",\n"
+           "  \"geoFence\": {\n"
+           "    \"circles\": [],\n"
+           "    \"polygons\": [],\n"
+           "    \"version\": 2\n"
+           "  },\n"
+           "  \"groundStation\": \"QGroundControl\",\n"
+           "  \"mission\": {\n"
+           "    \"cruiseSpeed\": ";
+    appendNumber(out, cruise);
+    out += ",\n    \"firmwareType\": " + std::to_string(firmwarePx4) +
+           ",\n    \"globalPlanAltitudeMode\": 1,\n    \"hoverSpeed\": ";
+    appendNumber(out, cruise);
+    out += ",\n    \"items\": ";
+    out += items.empty() ? "[]" : "[\n" + items + "\n    ]";
+    out += ",\n    \"plannedHomePosition\": [";
+    appendNumber(out, home.latitude);
+    out += ", ";
+    appendNumber(out, home.longitude);
+    out += ", 0],\n    \"vehicleType\": " + std::to_string(mavlinkVehicleType(vehicle.type)) +
+           ",\n"
+           "    \"version\": 2\n"
+           "  },\n"
+           "  \"rallyPoints\": {\n"
+           "    \"points\": [],\n"
+           "    \"version\": 2\n"
+           "  },\n"
+           "  \"version\": 1\n"
+           "}\n";
+    return out;
 }
 
 // One QGC WPL 110 file: home, the speed the part starts with, then waypoints and speed changes.

@@ -109,7 +109,7 @@ bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& 
     QPainter painter(&image);
     sheet.paint(painter);
     painter.end();
-    const QByteArray encoded = encodePng(image);
+    const QByteArray encoded = encodePng(std::move(image));
     if (encoded.isEmpty()) {
         setError(error, QStringLiteral("cannot write %1: PNG encoding failed").arg(path));
         return false;

@@ -26,8 +26,6 @@ struct RobotState {
     // Frontier of unassigned cells keyed by cost_un at push time (lazy: stale entries are skipped).
     std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> frontier;
     std::vector<int> foreignBorder; // cells of other robots seen next to this region
-    double centreX() const { return sumX / area; }
-    double centreY() const { return sumY / area; }
 };
 
 class Allocation {
@@ -37,7 +35,8 @@ class Allocation {
           owner_(static_cast<std::size_t>(cellCount_), unreachable),
           cost_(static_cast<std::size_t>(cellCount_)), x_(static_cast<std::size_t>(cellCount_)),
           y_(static_cast<std::size_t>(cellCount_)), area_(static_cast<std::size_t>(cellCount_)),
-          connectivity_(graph), robots_(startCells.size()) {
+          connectivity_(graph), robots_(startCells.size()), centreX_(startCells.size()),
+          centreY_(startCells.size()) {
         for (int cell = 0; cell < cellCount_; ++cell) {
             const Cell& graphCell = graph.cell(cell);
             cost_[static_cast<std::size_t>(cell)] = graphCell.coverSeconds();
@@ -166,20 +165,31 @@ class Allocation {
                          dy * dy); // std::hypot guards overflow we cannot meet, at several times the cost
     }
 
+    double distanceToCentre(int cell, int robot) const {
+        return distance(cell, centreX_[static_cast<std::size_t>(robot)],
+                        centreY_[static_cast<std::size_t>(robot)]);
+    }
+
     // cost_un: distance to the robot's own centre minus the mean distance to the other centres.
     double growthKey(int robot, int cell) const {
-        const auto& own = robots_[static_cast<std::size_t>(robot)];
-        double key = distance(cell, own.centreX(), own.centreY());
-        if (robots_.size() > 1) {
+        double key = distanceToCentre(cell, robot);
+        const auto robots = static_cast<int>(robots_.size());
+        if (robots > 1) {
             double others = 0.0;
-            for (std::size_t other = 0; other < robots_.size(); ++other) {
-                if (static_cast<int>(other) == robot)
-                    continue;
-                others += distance(cell, robots_[other].centreX(), robots_[other].centreY());
-            }
-            key -= others / static_cast<double>(robots_.size() - 1);
+            for (int other = 0; other < robots; ++other)
+                if (other != robot)
+                    others += distanceToCentre(cell, other);
+            key -= others / static_cast<double>(robots - 1);
         }
         return key;
+    }
+
+    // The region's area-weighted centre Ca, kept beside the sums: growth keys read every robot's centre
+    // for every cell they weigh.
+    void updateCentre(int robot) {
+        const RobotState& state = robots_[static_cast<std::size_t>(robot)];
+        centreX_[static_cast<std::size_t>(robot)] = state.sumX / state.area;
+        centreY_[static_cast<std::size_t>(robot)] = state.sumY / state.area;
     }
 
     bool touchesRegion(int cell, int robot) const {
@@ -206,6 +216,7 @@ class Allocation {
             donor.sumY -= y;
             donor.area -= area;
             --donor.cells;
+            updateCentre(previous);
         }
         RobotState& receiver = robots_[static_cast<std::size_t>(robot)];
         receiver.cost += cost_[static_cast<std::size_t>(cell)];
@@ -213,7 +224,9 @@ class Allocation {
         receiver.sumY += y;
         receiver.area += area;
         ++receiver.cells;
+        updateCentre(robot);
         owner_[static_cast<std::size_t>(cell)] = robot;
+        facingFrom_ = -1;
         if (!boundaryIndex_.empty())
             updateBoundaryAround(cell);
     }
@@ -299,8 +312,8 @@ class Allocation {
     int stealFromNeighbour(int robot) {
         RobotState& state = robots_[static_cast<std::size_t>(robot)];
         auto& border = state.foreignBorder;
-        const double centreX = state.centreX();
-        const double centreY = state.centreY();
+        const double centreX = centreX_[static_cast<std::size_t>(robot)];
+        const double centreY = centreY_[static_cast<std::size_t>(robot)];
         const double towardsX = unassignedArea_ > 0 ? unassignedX_ / unassignedArea_ - centreX : 0.0;
         const double towardsY = unassignedArea_ > 0 ? unassignedY_ / unassignedArea_ - centreY : 0.0;
         struct Candidate {
@@ -502,8 +515,7 @@ class Allocation {
                 continue;
             if (!(receiver.cost + cost_[static_cast<std::size_t>(cell)] < receiverCostLimit))
                 continue;
-            const double score = distance(cell, receiver.centreX(), receiver.centreY()) -
-                                 distance(cell, donor.centreX(), donor.centreY());
+            const double score = distanceToCentre(cell, to) - distanceToCentre(cell, from);
             candidates.emplace_back(score, cell);
         }
         std::sort(candidates.begin(), candidates.end());
@@ -534,13 +546,31 @@ class Allocation {
     }
 
     bool searchHandOver(int from, int to) {
-        const RobotState& donor = robots_[static_cast<std::size_t>(from)];
-        std::vector<int>& facing = scratchCells_;
-        facing.clear();
-        for (int cell : boundaries_[static_cast<std::size_t>(from)])
-            if (cell != donor.startCell && touchesRegion(cell, to))
-                facing.push_back(cell);
-        return firstRemovable(facing, 64) >= 0;
+        if (facingFrom_ != from)
+            collectFacing(from);
+        return firstRemovable(facingByRegion_[static_cast<std::size_t>(to)], 64) >= 0;
+    }
+
+    // The border cells of `from` (not its start) next to each other region, in the order of its boundary
+    // list: one look along the border serves the searches towards all its neighbours until a cell moves.
+    void collectFacing(int from) {
+        facingByRegion_.resize(robots_.size());
+        for (std::vector<int>& facing : facingByRegion_)
+            facing.clear();
+        const int start = robots_[static_cast<std::size_t>(from)].startCell;
+        for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
+            if (cell == start)
+                continue;
+            for (int neighbour : graph_.neighbours(cell)) {
+                const int other = owner_[static_cast<std::size_t>(neighbour)];
+                if (other < 0 || other == from)
+                    continue;
+                std::vector<int>& facing = facingByRegion_[static_cast<std::size_t>(other)];
+                if (facing.empty() || facing.back() != cell)
+                    facing.push_back(cell);
+            }
+        }
+        facingFrom_ = from;
     }
 
     // Finds regions the richest can pass a cell to, directly or through a chain of regions each able to
@@ -636,6 +666,8 @@ class Allocation {
     std::vector<double> area_;
     LocalConnectivity connectivity_;
     std::vector<RobotState> robots_;
+    std::vector<double> centreX_; // by robot: sumX / area, updated with them
+    std::vector<double> centreY_;
     int unassignedCount_ = 0;
     int reachableCount_ = 0;
     double unassignedX_ = 0.0;
@@ -653,6 +685,8 @@ class Allocation {
     static constexpr std::size_t batchStealBorder = 1024;
     std::vector<std::uint32_t> stealSeen_; // stealStamp_ of the last steal that looked at each cell
     std::uint32_t stealStamp_ = 0;
+    std::vector<std::vector<int>> facingByRegion_; // collectFacing's lists, by the region they face
+    int facingFrom_ = -1;                          // whose border they are; -1 once a cell has moved
     std::vector<char> handOverKnown_;
     std::vector<char> handOverPossible_;
 };
