@@ -101,15 +101,6 @@ std::optional<std::int32_t> landCoverOf(const CellGraph& cells, const Waypoint& 
     return cells.cell(waypoint.cell).classValue;
 }
 
-std::string landCoverAt(const Plan& plan, const Waypoint& waypoint) {
-    const auto value = landCoverOf(plan.cells, waypoint);
-    return value ? std::to_string(*value) : std::string();
-}
-
-std::string fixed(double value, int decimals) {
-    return internal::formatFixed(value, decimals);
-}
-
 } // namespace
 
 std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, const CellGraph& cells,
@@ -291,30 +282,42 @@ std::string qGroundControlPlanText(const AutopilotMission& mission, const Missio
 // One QGC WPL 110 file: home, the speed the part starts with, then waypoints and speed changes.
 std::string waypointListText(const AutopilotMission& mission, const MissionPart& part,
                              const std::vector<GeoWaypoint>& points, const VehicleSettings& vehicle) {
-    const auto row = [](int index, int current, int frame, int command, const std::array<double, 4>& params,
-                        double latitude, double longitude, double altitude) {
-        std::string text = std::to_string(index) + "\t" + std::to_string(current) + "\t" +
-                           std::to_string(frame) + "\t" + std::to_string(command);
-        for (const double param : params)
-            text += "\t" + fixed(param, 6);
-        return text + "\t" + fixed(latitude, 8) + "\t" + fixed(longitude, 8) + "\t" + fixed(altitude, 6) +
-               "\t1\n";
+    std::string text = "QGC WPL 110\n";
+    text.reserve(points.size() * 120);
+    const auto row = [&text](int index, int current, int frame, int command,
+                             const std::array<double, 4>& params, double latitude, double longitude,
+                             double altitude) {
+        text += std::to_string(index);
+        for (const int field : {current, frame, command}) {
+            text += '\t';
+            text += std::to_string(field);
+        }
+        for (const double param : params) {
+            text += '\t';
+            internal::appendFixed(text, param, 6);
+        }
+        text += '\t';
+        internal::appendFixed(text, latitude, 8);
+        text += '\t';
+        internal::appendFixed(text, longitude, 8);
+        text += '\t';
+        internal::appendFixed(text, altitude, 6);
+        text += "\t1\n";
     };
     const auto speedRow = [&](int index, double speed) {
-        return row(index, 0, frameGlobalRelativeAltitude, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
+        row(index, 0, frameGlobalRelativeAltitude, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
     };
     const GeoWaypoint& home = points.front();
-    std::string text = "QGC WPL 110\n";
-    text += row(0, 1, frameGlobal, commandWaypoint, {0, 0, 0, 0}, home.latitude, home.longitude, 0.0);
+    row(0, 1, frameGlobal, commandWaypoint, {0, 0, 0, 0}, home.latitude, home.longitude, 0.0);
     int index = 1;
     if (mission.commandedSpeeds[part.first] > 0.0)
-        text += speedRow(index++, mission.commandedSpeeds[part.first]);
+        speedRow(index++, mission.commandedSpeeds[part.first]);
     for (std::size_t i = 0; i < points.size(); ++i) {
         const std::size_t point = part.first + i;
         if (i > 0 && mission.changesSpeedAt(point))
-            text += speedRow(index++, mission.commandedSpeeds[point]);
-        text += row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0},
-                    points[i].latitude, points[i].longitude, vehicle.altitudeMetres);
+            speedRow(index++, mission.commandedSpeeds[point]);
+        row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0}, points[i].latitude,
+            points[i].longitude, vehicle.altitudeMetres);
     }
     return text;
 }
@@ -434,18 +437,32 @@ Status writeWaypointCsv(const ExportContext& context, int robot, const std::stri
     if (!points)
         return Status::failure(points.error());
     std::string text = "index,x,y,lon,lat,class,speed_mps,fov_m,cumulative_s\n";
+    text.reserve(points.value().size() * 100);
+    const auto field = [&text](double value) {
+        text += ',';
+        internal::appendShortest(text, value);
+    };
+    const auto coordinate = [&text](double value) { // none without a CRS
+        text += ',';
+        if (!std::isnan(value))
+            internal::appendShortest(text, value);
+    };
     int index = 0;
     for (const GeoWaypoint& point : points.value()) {
         const Waypoint& waypoint = point.waypoint;
-        const auto coordinate = [](double value) {
-            return std::isnan(value) ? std::string() : internal::formatShortest(value);
-        };
-        text += std::to_string(index++) + "," + internal::formatShortest(waypoint.x) + "," +
-                internal::formatShortest(waypoint.y) + "," + coordinate(point.longitude) + "," +
-                coordinate(point.latitude) + "," + landCoverAt(context.plan, waypoint) + "," +
-                internal::formatShortestFloat(waypoint.speedMetresPerSecond) + "," +
-                internal::formatShortest(fieldOfViewAt(context.plan, waypoint)) + "," +
-                internal::formatShortest(point.cumulativeSeconds) + "\n";
+        text += std::to_string(index++);
+        field(waypoint.x);
+        field(waypoint.y);
+        coordinate(point.longitude);
+        coordinate(point.latitude);
+        text += ',';
+        if (const auto landCover = landCoverOf(context.plan.cells, waypoint))
+            text += std::to_string(*landCover);
+        text += ',';
+        internal::appendShortestFloat(text, waypoint.speedMetresPerSecond);
+        field(fieldOfViewAt(context.plan, waypoint));
+        field(point.cumulativeSeconds);
+        text += '\n';
     }
     return internal::writeFileAtomically(path, text, Sync::BySystem);
 }

@@ -32,15 +32,34 @@ Result<std::string> readWholeFile(const std::string& path) {
 }
 
 std::string formatShortest(double value) {
-    std::array<char, 64> buffer{};
-    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    return std::string(buffer.data(), result.ptr);
+    std::string text;
+    appendShortest(text, value);
+    return text;
 }
 
 std::string formatShortestFloat(float value) {
+    std::string text;
+    appendShortestFloat(text, value);
+    return text;
+}
+
+void appendShortest(std::string& out, double value) {
     std::array<char, 64> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    return std::string(buffer.data(), result.ptr);
+    out.append(buffer.data(), result.ptr);
+}
+
+void appendShortestFloat(std::string& out, float value) {
+    std::array<char, 64> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    out.append(buffer.data(), result.ptr);
+}
+
+void appendFixed(std::string& out, double value, int decimals) {
+    std::array<char, 64> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                      std::chars_format::fixed, decimals);
+    out.append(buffer.data(), result.ptr);
 }
 
 double decimalDouble(float value) {
@@ -51,10 +70,9 @@ double decimalDouble(float value) {
 }
 
 std::string formatFixed(double value, int decimals) {
-    std::array<char, 64> buffer{};
-    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                      std::chars_format::fixed, decimals);
-    return std::string(buffer.data(), result.ptr);
+    std::string text;
+    appendFixed(text, value, decimals);
+    return text;
 }
 
 bool splitCsvLine(const std::string& line, std::vector<std::string>& fields) {

@@ -22,6 +22,10 @@ namespace mcpp::io::internal {
 [[nodiscard]] double decimalDouble(float value);
 // printf-style fixed decimals, e.g. formatFixed(1.5, 6) == "1.500000".
 [[nodiscard]] std::string formatFixed(double value, int decimals);
+// The same texts added to the end of `out`, for files of many rows: no string is made per number.
+void appendShortest(std::string& out, double value);
+void appendShortestFloat(std::string& out, float value);
+void appendFixed(std::string& out, double value, int decimals);
 
 // One CSV record split into fields (RFC 4180 quoting; no line breaks inside fields).
 // Returns false on an unterminated quote.
