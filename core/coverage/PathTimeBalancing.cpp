@@ -1,6 +1,7 @@
 #include "core/coverage/PathTimeBalancing.hpp"
 
 #include "core/model/LocalConnectivity.hpp"
+#include "core/model/ParallelFor.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -30,8 +31,8 @@ class Balancer {
     Balancer(const CellGraph& graph, const SpanningTreeCoverage& coverage, RegionAllocation& regions,
              std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts)
         : graph_(graph), coverage_(coverage), regions_(regions), paths_(paths), starts_(starts),
-          cells_(cellsByRobot(regions)), scratchIndex_(graph.size(), -1), connectivity_(graph),
-          touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
+          cells_(cellsByRobot(regions)), scratchByWorker_(static_cast<std::size_t>(workerThreads())),
+          connectivity_(graph), touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
         // Costs in the units of the cells as they are now (a turn calibration may have changed them).
         regions_.costSeconds.assign(paths.size(), 0.0);
         for (std::size_t robot = 0; robot < cells_.size(); ++robot) {
@@ -101,15 +102,22 @@ class Balancer {
             undo(passed);
             return 0;
         }
-        std::vector<CoveragePath> replanned;
+        // The chain's regions are replanned side by side, each into its own slot: the same paths whatever the
+        // thread count.
+        std::vector<CoveragePath> replanned(chain.size());
+        parallelFor(chain.size(), [&](std::size_t link, int worker) {
+            std::vector<int>& scratch = scratchByWorker_[static_cast<std::size_t>(worker)];
+            if (scratch.size() != graph_.size())
+                scratch.assign(graph_.size(), -1);
+            const auto r = static_cast<std::size_t>(chain[link]);
+            replanned[link] = coverage_.regionPath(graph_, cells_[r], regions_.startCell[r], chain[link],
+                                                   starts_[r], scratch);
+        });
         std::size_t planned = 0;
         bool shorter = true;
-        for (int robot : chain) {
-            const auto r = static_cast<std::size_t>(robot);
-            replanned.push_back(coverage_.regionPath(graph_, cells_[r], regions_.startCell[r], robot,
-                                                     starts_[r], scratchIndex_));
-            planned += cells_[r].size();
-            shorter = shorter && replanned.back().timeSeconds < makespan - 1e-9;
+        for (std::size_t link = 0; link < chain.size(); ++link) {
+            planned += cells_[static_cast<std::size_t>(chain[link])].size();
+            shorter = shorter && replanned[link].timeSeconds < makespan - 1e-9;
         }
         if (!shorter) {
             undo(passed);
@@ -183,7 +191,7 @@ class Balancer {
     std::vector<CoveragePath>& paths_;
     const std::vector<MapPoint>& starts_;
     std::vector<std::vector<int>> cells_;
-    std::vector<int> scratchIndex_;
+    std::vector<std::vector<int>> scratchByWorker_; // regionPath's index, one per thread, made on first use
     LocalConnectivity connectivity_;
     std::vector<std::vector<char>> touches_;
 };

@@ -2,6 +2,7 @@
 
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/HumanUnits.hpp"
+#include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/model/StartPointCheck.hpp"
@@ -130,8 +131,8 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
         planningRun.addIssue(IssueSeverity::Warning, "chargers-ignored", chargersIgnoredMessage(planner));
     run(planningRun);
     planningRun.stage("metrics", [&] {
-        for (CoveragePath& path : plan.paths)
-            measurePath(path, plan.cells);
+        parallelFor(plan.paths.size(),
+                    [&](std::size_t path, int) { measurePath(plan.paths[path], plan.cells); });
         PlanMetricsCalculator{}.compute(plan);
         return 0;
     });
