@@ -60,10 +60,10 @@ int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
     std::cout.flush();
     std::cerr.flush();
     std::fflush(nullptr);
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
     // Every output is written and closed: tearing down PROJ's database cache, fontconfig and the plan's
     // memory would only make the caller wait about 10 ms longer. Sanitizer builds exit normally, so that
-    // the leak check runs.
+    // their checks at exit run.
     std::_Exit(exitCode);
 #endif
     return exitCode;

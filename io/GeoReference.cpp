@@ -18,7 +18,8 @@ struct GeoReference::State {
     std::string wkt;
     std::string name;
     std::string authorityCode;
-    // OGRCoordinateTransformation is not thread-safe; copies share these, so calls take the lock.
+    // OGRCoordinateTransformation is not thread-safe and copies share these: the lock guards the
+    // transformations kept here, and a transformation is used by one thread at a time.
     mutable std::mutex mutex;
     // Transformations to WGS84 not in use: each writer thread borrows one, so that exports written side
     // by side do not wait for each other's points.

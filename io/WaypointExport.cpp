@@ -261,7 +261,13 @@ std::string qGroundControlPlanText(const AutopilotMission& mission, const Missio
            ",\n    \"globalPlanAltitudeMode\": 1,\n    \"hoverSpeed\": ";
     appendNumber(out, cruise);
     out += ",\n    \"items\": ";
-    out += items.empty() ? "[]" : "[\n" + items + "\n    ]";
+    if (items.empty()) {
+        out += "[]";
+    } else {
+        out += "[\n";
+        out += items;
+        out += "\n    ]";
+    }
     out += ",\n    \"plannedHomePosition\": [";
     appendNumber(out, home.latitude);
     out += ", ";

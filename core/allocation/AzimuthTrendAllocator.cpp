@@ -424,6 +424,7 @@ class Allocation {
 
     // Boundary cells of each region (a neighbour belongs to another robot), kept up to date on every move.
     void buildBoundaries() {
+        facingFrom_ = -1; // the facing lists follow the boundary lists' order
         boundaryIndex_.assign(static_cast<std::size_t>(cellCount_), -1);
         boundaryOwner_.assign(static_cast<std::size_t>(cellCount_), -1);
         boundaries_.assign(robots_.size(), {});

@@ -24,6 +24,29 @@ std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& gr
     return {waypoint.cell, static_cast<int>(subCell)};
 }
 
+// countRepeatedSubCellVisits' count from the sorted visits: each visit beyond a sub-cell's first repeats.
+int repeatedVisitsBySorting(const CoveragePath& path, const CellGraph& graph) {
+    std::vector<std::int64_t> visits;
+    visits.reserve(path.waypoints.size());
+    std::pair<int, int> first{-1, 0};
+    std::pair<int, int> last{-1, 0};
+    for (const Waypoint& waypoint : path.waypoints) {
+        const auto visited = subCellVisited(waypoint, graph);
+        if (visited.first < 0)
+            continue;
+        if (visits.empty())
+            first = visited;
+        last = visited;
+        visits.push_back(std::int64_t{visited.first} * 4 + visited.second);
+    }
+    std::sort(visits.begin(), visits.end());
+    const auto distinct = std::unique(visits.begin(), visits.end()) - visits.begin();
+    auto repeats = static_cast<int>(std::ssize(visits) - distinct);
+    if (path.closed && visits.size() > 1 && last == first)
+        --repeats; // the return that closes the tour
+    return repeats;
+}
+
 } // namespace
 
 int countTurns(const std::vector<Waypoint>& waypoints) {
@@ -35,8 +58,11 @@ int countTurns(const std::vector<Waypoint>& waypoints) {
 
 int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph) {
     // One bit per sub-cell, cleared again afterwards, so a call costs the path's length and not the map's
-    // size (and nothing is sorted).
+    // size (and nothing is sorted). A thread that has none yet, as those path balance starts for each chain
+    // it tries, sorts the visits of a path much shorter than the map instead of clearing a byte a cell.
     thread_local std::vector<std::uint8_t> seen;
+    if (seen.size() < graph.size() && path.waypoints.size() < graph.size() / 16)
+        return repeatedVisitsBySorting(path, graph);
     if (seen.size() < graph.size())
         seen.resize(graph.size(), 0);
     std::pair<int, int> first{-1, 0};

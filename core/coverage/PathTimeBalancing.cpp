@@ -31,8 +31,8 @@ class Balancer {
     Balancer(const CellGraph& graph, const SpanningTreeCoverage& coverage, RegionAllocation& regions,
              std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts)
         : graph_(graph), coverage_(coverage), regions_(regions), paths_(paths), starts_(starts),
-          cells_(cellsByRobot(regions)), scratchByWorker_(static_cast<std::size_t>(workerThreads())),
-          connectivity_(graph), touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
+          cells_(cellsByRobot(regions)), connectivity_(graph),
+          touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
         // Costs in the units of the cells as they are now (a turn calibration may have changed them).
         regions_.costSeconds.assign(paths.size(), 0.0);
         for (std::size_t robot = 0; robot < cells_.size(); ++robot) {
@@ -105,6 +105,7 @@ class Balancer {
         // The chain's regions are replanned side by side, each into its own slot: the same paths whatever the
         // thread count.
         std::vector<CoveragePath> replanned(chain.size());
+        scratchByWorker_.resize(std::max(scratchByWorker_.size(), static_cast<std::size_t>(workerThreads())));
         parallelFor(chain.size(), [&](std::size_t link, int worker) {
             std::vector<int>& scratch = scratchByWorker_[static_cast<std::size_t>(worker)];
             if (scratch.size() != graph_.size())

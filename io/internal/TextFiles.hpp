@@ -22,7 +22,7 @@ namespace mcpp::io::internal {
 [[nodiscard]] double decimalDouble(float value);
 // printf-style fixed decimals, e.g. formatFixed(1.5, 6) == "1.500000".
 [[nodiscard]] std::string formatFixed(double value, int decimals);
-// The same texts added to the end of `out`, for files of many rows: no string is made per number.
+// The same texts added to the end of `out`, for files of many rows: no string is made per decimal number.
 void appendShortest(std::string& out, double value);
 void appendShortestFloat(std::string& out, float value);
 void appendFixed(std::string& out, double value, int decimals);

@@ -2,6 +2,7 @@
 
 #include "PlanFixture.hpp"
 #include "io/PlanExport.hpp"
+#include "io/internal/JsonValue.hpp"
 #include "tests/support/TestData.hpp"
 
 #include <QFile>
@@ -30,6 +31,31 @@ QJsonObject readJson(const std::string& path) {
 std::set<QString> keysOf(const QJsonObject& object) {
     const QStringList keys = object.keys();
     return {keys.begin(), keys.end()};
+}
+
+// The JsonValue (insertion-ordered) of a parsed document: QJsonObject keeps keys sorted, as the plans
+// write them.
+internal::JsonValue jsonValueOf(const QJsonValue& value) {
+    if (value.isObject()) {
+        internal::JsonValue object = internal::JsonValue::object();
+        const QJsonObject members = value.toObject();
+        for (auto member = members.begin(); member != members.end(); ++member)
+            object.add(member.key().toStdString(), jsonValueOf(member.value()));
+        return object;
+    }
+    if (value.isArray()) {
+        internal::JsonValue array = internal::JsonValue::array();
+        for (const QJsonValue& item : value.toArray())
+            array.push(jsonValueOf(item));
+        return array;
+    }
+    if (value.isBool())
+        return {value.toBool()};
+    if (value.isDouble())
+        return {value.toDouble()};
+    if (value.isString())
+        return {value.toString().toStdString()};
+    return {};
 }
 
 std::vector<std::vector<std::string>> tabRows(const std::string& path, std::string& header) {
@@ -145,6 +171,22 @@ class WaypointFilesTest : public QObject {
         QCOMPARE(home.size(), 3);
         QCOMPARE(home[0].toDouble(), items[0].toObject()["params"].toArray()[4].toDouble()); // first waypoint
         QCOMPARE(home[1].toDouble(), items[0].toObject()["params"].toArray()[5].toDouble());
+    }
+
+    // The plans are written as text directly: laid out byte for byte as JsonValue writes the same
+    // document (two-space indents, arrays of numbers on one line), with and without speed changes.
+    void qgroundControlPlanIsLaidOutAsJsonValueWritesIt() {
+        for (const int robot : {0, 1}) {
+            const std::string path = file("layout.plan");
+            QVERIFY(writeQGroundControlPlan(context(), robot, path).ok());
+            QFile written(QString::fromStdString(path));
+            QVERIFY(written.open(QIODevice::ReadOnly));
+            const QByteArray text = written.readAll();
+            const QJsonDocument parsed = QJsonDocument::fromJson(text);
+            QVERIFY(parsed.isObject());
+            const std::string expected = jsonValueOf(parsed.object()).toText();
+            QCOMPARE(text.toStdString(), expected);
+        }
     }
 
     void speedChangesBecomeChangeSpeedItems() {

@@ -89,6 +89,19 @@ class PngEncoderTest : public QObject {
                 QCOMPARE(decoded.pixel(x, y), image.pixel(x, y));
     }
 
+    // Rows padded beyond their pixels (an image over a buffer of its own layout) are packed over the same.
+    void paddedRowsReadBackPixelForPixel() {
+        const QImage source = noise(9, 5, QImage::Format_RGB32, 15);
+        constexpr qsizetype bytesPerLine = 9 * 4 + 12;
+        std::vector<uchar> buffer(static_cast<std::size_t>(bytesPerLine) * 5, 0xAB);
+        QImage padded(buffer.data(), 9, 5, bytesPerLine, QImage::Format_RGB32);
+        for (int y = 0; y < 5; ++y)
+            for (int x = 0; x < 9; ++x)
+                padded.setPixel(x, y, source.pixel(x, y));
+        const QImage decoded = QImage::fromData(render::encodePng(std::move(padded)), "PNG");
+        QCOMPARE(decoded.convertToFormat(QImage::Format_RGB32), source);
+    }
+
     void transparencyIsKept() {
         const QImage image = noise(64, 33, QImage::Format_ARGB32, 12);
         const QImage decoded = QImage::fromData(render::encodePng(image), "PNG");
@@ -137,7 +150,7 @@ class PngEncoderTest : public QObject {
     }
 
     // Map pictures are flat colour: a banded picture compresses to a small fraction of its pixels (each
-    // unfiltered row is one run of matches of the row above, at most 258 bytes each: about 2 %).
+    // unfiltered row is a run of matches of the row above, at most 258 bytes each: under 2 %).
     void mapLikePicturesCompressWell() {
         QImage image(1200, 900, QImage::Format_RGB32);
         for (int y = 0; y < image.height(); ++y)
