@@ -15,6 +15,7 @@ namespace mcpp::io {
 
 namespace {
 
+using internal::appendJsonNumber;
 using internal::collinearAndBetween;
 
 // MAVLink numbers used by QGroundControl plans and QGC WPL files.
@@ -174,17 +175,13 @@ int mavlinkVehicleType(VehicleType type) {
 // QGroundControl plans hold thousands of items: their text is written straight out, laid out as
 // JsonValue lays out a document (two spaces an indent, scalar arrays on one line), without building the
 // tree of values first, which took three quarters of the writing time.
-void appendNumber(std::string& out, double value) {
-    internal::appendJsonNumber(out, value);
-}
-
 void appendSpeedChange(std::string& out, int& jumpId, double speed) {
     out += "      {\n"
            "        \"autoContinue\": true,\n"
            "        \"command\": " +
            std::to_string(commandChangeSpeed) + ",\n        \"doJumpId\": " + std::to_string(jumpId++) +
            ",\n        \"frame\": " + std::to_string(frameMission) + ",\n        \"params\": [1, ";
-    appendNumber(out, speed);
+    appendJsonNumber(out, speed);
     out += ", -1, 0, 0, 0, 0],\n"
            "        \"type\": \"SimpleItem\"\n"
            "      }";
@@ -194,18 +191,18 @@ void appendWaypoint(std::string& out, int& jumpId, const GeoWaypoint& point, dou
     out += "      {\n"
            "        \"AMSLAltAboveTerrain\": null,\n"
            "        \"Altitude\": ";
-    appendNumber(out, altitude);
+    appendJsonNumber(out, altitude);
     out += ",\n        \"AltitudeMode\": 1,\n"
            "        \"autoContinue\": true,\n"
            "        \"command\": " +
            std::to_string(commandWaypoint) + ",\n        \"doJumpId\": " + std::to_string(jumpId++) +
            ",\n        \"frame\": " + std::to_string(frameGlobalRelativeAltitude) +
            ",\n        \"params\": [0, 0, 0, null, ";
-    appendNumber(out, point.latitude);
+    appendJsonNumber(out, point.latitude);
     out += ", ";
-    appendNumber(out, point.longitude);
+    appendJsonNumber(out, point.longitude);
     out += ", ";
-    appendNumber(out, altitude);
+    appendJsonNumber(out, altitude);
     out += "],\n"
            "        \"type\": \"SimpleItem\"\n"
            "      }";
@@ -256,10 +253,10 @@ std::string qGroundControlPlanText(const AutopilotMission& mission, const Missio
            "  \"groundStation\": \"QGroundControl\",\n"
            "  \"mission\": {\n"
            "    \"cruiseSpeed\": ";
-    appendNumber(out, cruise);
+    appendJsonNumber(out, cruise);
     out += ",\n    \"firmwareType\": " + std::to_string(firmwarePx4) +
            ",\n    \"globalPlanAltitudeMode\": 1,\n    \"hoverSpeed\": ";
-    appendNumber(out, cruise);
+    appendJsonNumber(out, cruise);
     out += ",\n    \"items\": ";
     if (items.empty()) {
         out += "[]";
@@ -269,9 +266,9 @@ std::string qGroundControlPlanText(const AutopilotMission& mission, const Missio
         out += "\n    ]";
     }
     out += ",\n    \"plannedHomePosition\": [";
-    appendNumber(out, home.latitude);
+    appendJsonNumber(out, home.latitude);
     out += ", ";
-    appendNumber(out, home.longitude);
+    appendJsonNumber(out, home.longitude);
     out += ", 0],\n    \"vehicleType\": " + std::to_string(mavlinkVehicleType(vehicle.type)) +
            ",\n"
            "    \"version\": 2\n"

@@ -24,26 +24,46 @@ std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& gr
     return {waypoint.cell, static_cast<int>(subCell)};
 }
 
-// countRepeatedSubCellVisits' count from the sorted visits: each visit beyond a sub-cell's first repeats.
-int repeatedVisitsBySorting(const CoveragePath& path, const CellGraph& graph) {
+// Whether a closed tour's last sub-cell visit returns to its first: that return is no repeated coverage.
+bool returnsToFirstVisit(const CoveragePath& path, const CellGraph& graph) {
+    if (!path.closed)
+        return false;
+    const auto visits = [&](const Waypoint& waypoint) { return subCellVisited(waypoint, graph).first >= 0; };
+    const auto firstVisit = std::find_if(path.waypoints.begin(), path.waypoints.end(), visits);
+    const auto lastVisit = std::find_if(path.waypoints.rbegin(), path.waypoints.rend(), visits);
+    return firstVisit != path.waypoints.end() && firstVisit != lastVisit.base() - 1 &&
+           subCellVisited(*firstVisit, graph) == subCellVisited(*lastVisit, graph);
+}
+
+// Visits beyond each sub-cell's first, counted by sorting the visits: for a thread without a visit map.
+int repeatsBySorting(const CoveragePath& path, const CellGraph& graph) {
     std::vector<std::int64_t> visits;
     visits.reserve(path.waypoints.size());
-    std::pair<int, int> first{-1, 0};
-    std::pair<int, int> last{-1, 0};
+    for (const Waypoint& waypoint : path.waypoints)
+        if (const auto visited = subCellVisited(waypoint, graph); visited.first >= 0)
+            visits.push_back(std::int64_t{visited.first} * 4 + visited.second);
+    std::sort(visits.begin(), visits.end());
+    return static_cast<int>(std::ssize(visits) -
+                            (std::unique(visits.begin(), visits.end()) - visits.begin()));
+}
+
+// The same with one bit a sub-cell, cleared again afterwards, so a call costs the path's length.
+int repeatsByMarking(const CoveragePath& path, const CellGraph& graph, std::vector<std::uint8_t>& seen) {
+    int repeats = 0;
     for (const Waypoint& waypoint : path.waypoints) {
         const auto visited = subCellVisited(waypoint, graph);
         if (visited.first < 0)
             continue;
-        if (visits.empty())
-            first = visited;
-        last = visited;
-        visits.push_back(std::int64_t{visited.first} * 4 + visited.second);
+        std::uint8_t& marks = seen[static_cast<std::size_t>(visited.first)];
+        const auto bit = static_cast<std::uint8_t>(1U << static_cast<unsigned>(visited.second));
+        if ((marks & bit) != 0)
+            ++repeats;
+        marks = static_cast<std::uint8_t>(marks | bit);
     }
-    std::sort(visits.begin(), visits.end());
-    const auto distinct = std::unique(visits.begin(), visits.end()) - visits.begin();
-    auto repeats = static_cast<int>(std::ssize(visits) - distinct);
-    if (path.closed && visits.size() > 1 && last == first)
-        --repeats; // the return that closes the tour
+    for (const Waypoint& waypoint : path.waypoints) {
+        if (waypoint.cell >= 0 && static_cast<std::size_t>(waypoint.cell) < seen.size())
+            seen[static_cast<std::size_t>(waypoint.cell)] = 0;
+    }
     return repeats;
 }
 
@@ -57,38 +77,19 @@ int countTurns(const std::vector<Waypoint>& waypoints) {
 }
 
 int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph) {
-    // One bit per sub-cell, cleared again afterwards, so a call costs the path's length and not the map's
-    // size (and nothing is sorted). A thread that has none yet, as those path balance starts for each chain
-    // it tries, sorts the visits of a path much shorter than the map instead of clearing a byte a cell.
+    // A visit map of one byte a cell, kept by each thread, so a call costs the path's length and not the
+    // map's size. A thread without one yet (path balance starts threads for each chain it tries) sorts the
+    // visits of a path much shorter than the map rather than clearing a byte a cell first.
     thread_local std::vector<std::uint8_t> seen;
-    if (seen.size() < graph.size() && path.waypoints.size() < graph.size() / 16)
-        return repeatedVisitsBySorting(path, graph);
-    if (seen.size() < graph.size())
-        seen.resize(graph.size(), 0);
-    std::pair<int, int> first{-1, 0};
-    std::pair<int, int> last{-1, 0};
-    int visits = 0;
     int repeats = 0;
-    for (const Waypoint& waypoint : path.waypoints) {
-        const auto visited = subCellVisited(waypoint, graph);
-        if (visited.first < 0)
-            continue;
-        if (visits++ == 0)
-            first = visited;
-        last = visited;
-        std::uint8_t& marks = seen[static_cast<std::size_t>(visited.first)];
-        const auto bit = static_cast<std::uint8_t>(1U << static_cast<unsigned>(visited.second));
-        if ((marks & bit) != 0)
-            ++repeats;
-        marks = static_cast<std::uint8_t>(marks | bit);
+    if (seen.size() < graph.size() && path.waypoints.size() < graph.size() / 16) {
+        repeats = repeatsBySorting(path, graph);
+    } else {
+        if (seen.size() < graph.size())
+            seen.resize(graph.size(), 0);
+        repeats = repeatsByMarking(path, graph, seen);
     }
-    for (const Waypoint& waypoint : path.waypoints) {
-        if (waypoint.cell >= 0 && static_cast<std::size_t>(waypoint.cell) < seen.size())
-            seen[static_cast<std::size_t>(waypoint.cell)] = 0;
-    }
-    if (path.closed && visits > 1 && last == first)
-        --repeats; // the return that closes the tour
-    return repeats;
+    return returnsToFirstVisit(path, graph) ? repeats - 1 : repeats;
 }
 
 namespace {

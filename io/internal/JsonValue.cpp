@@ -59,7 +59,7 @@ void appendJsonNumber(std::string& out, double value) {
         out += "null";
         return;
     }
-    out += formatShortest(value);
+    appendShortest(out, value);
 }
 
 void appendJsonString(std::string& out, std::string_view text) {
