@@ -1,6 +1,7 @@
 #include "app/BatchRunner.hpp"
 
 #include "app/BatchFailure.hpp"
+#include "app/WriterWarmUp.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
@@ -123,7 +124,10 @@ void BatchRunner::execute() {
         warn(warning);
     pendingWarnings_.clear();
     started = std::chrono::steady_clock::now();
-    const Plan plan = runPlanner(problem);
+    const Plan plan = [&] {
+        const WriterWarmUp warmUp(raster_.georeference, workerThreads());
+        return runPlanner(problem);
+    }();
     processMilliseconds_.emplace_back("plan", millisecondsSince(started));
     // The writers need the plan and the raster as read, not the problem's copy of its classes; on a large
     // map the planner's freed memory and that copy are a few hundred megabytes the writers can reuse.

@@ -2,6 +2,7 @@
 
 #include "core/model/HumanUnits.hpp"
 #include "io/internal/GdalSupport.hpp"
+#include "io/internal/TransformationLoan.hpp"
 
 #include <cmath>
 #include <mutex>
@@ -119,23 +120,14 @@ Result<std::vector<LonLat>> GeoReference::toWgs84(const std::vector<MapPoint>& p
         y[i] = crsPoint.y;
     }
     std::vector<int> success(points.size(), 0);
-    std::unique_ptr<OGRCoordinateTransformation> transformation;
     {
-        std::lock_guard lock(state_->mutex);
-        if (!state_->idleToWgs84.empty()) {
-            transformation = std::move(state_->idleToWgs84.back());
-            state_->idleToWgs84.pop_back();
-        } else {
-            transformation = makeTransformation(*state_->crs, *internal::wgs84SpatialReference());
-        }
-    }
-    if (!transformation)
-        return Result<LonLats>::failure("no transformation from " + name() + " to WGS84" + quiet.detail());
-    if (!points.empty())
-        transformation->Transform(points.size(), x.data(), y.data(), nullptr, nullptr, success.data());
-    {
-        std::lock_guard lock(state_->mutex);
-        state_->idleToWgs84.push_back(std::move(transformation));
+        const internal::TransformationLoan transformation(*this);
+        if (transformation.get() == nullptr)
+            return Result<LonLats>::failure("no transformation from " + name() + " to WGS84" +
+                                            quiet.detail());
+        if (!points.empty())
+            transformation.get()->Transform(points.size(), x.data(), y.data(), nullptr, nullptr,
+                                            success.data());
     }
     LonLats lonLats(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -148,6 +140,42 @@ Result<std::vector<LonLat>> GeoReference::toWgs84(const std::vector<MapPoint>& p
     }
     return lonLats;
 }
+
+void GeoReference::prepareTransformationsToWgs84(int count) const {
+    if (!hasCrs())
+        return;
+    QuietGdalErrors quiet;
+    const auto wgs84 = internal::wgs84SpatialReference();
+    // Under the lock, as every use of the CRS object here: its const methods may touch caches.
+    const std::lock_guard lock(state_->mutex);
+    while (static_cast<int>(state_->idleToWgs84.size()) < count) {
+        auto made = makeTransformation(*state_->crs, *wgs84);
+        if (!made)
+            return; // the writers will say why
+        state_->idleToWgs84.push_back(std::move(made));
+    }
+}
+
+namespace internal {
+
+TransformationLoan::TransformationLoan(const GeoReference& reference) : state_(reference.state_) {
+    const std::lock_guard lock(state_->mutex);
+    if (state_->idleToWgs84.empty()) {
+        transformation_ = makeTransformation(*state_->crs, *wgs84SpatialReference());
+        return;
+    }
+    transformation_ = std::move(state_->idleToWgs84.back());
+    state_->idleToWgs84.pop_back();
+}
+
+TransformationLoan::~TransformationLoan() {
+    if (!transformation_)
+        return;
+    const std::lock_guard lock(state_->mutex);
+    state_->idleToWgs84.push_back(std::move(transformation_));
+}
+
+} // namespace internal
 
 Result<MapPoint> GeoReference::fromWgs84(LonLat lonLat) const {
     if (!hasCrs())

@@ -9,6 +9,10 @@
 
 namespace mcpp::io {
 
+namespace internal {
+class TransformationLoan;
+}
+
 struct LonLat {
     double longitude = 0.0;
     double latitude = 0.0;
@@ -42,7 +46,13 @@ class GeoReference {
     // A planning-frame point into another CRS (e.g. "EPSG:4326" gives longitude, latitude).
     [[nodiscard]] Result<MapPoint> toCrs(const std::string& definition, MapPoint point) const;
 
+    // Makes transformations to WGS84 until `count` wait unused for the threads that will need them. A
+    // thread's first one costs milliseconds of CRS-database lookups: a batch run has them made on its spare
+    // core while it plans, so that its writers find them ready. Nothing without a CRS.
+    void prepareTransformationsToWgs84(int count) const;
+
   private:
+    friend class internal::TransformationLoan; // lends the transformations kept here
     struct State;
     std::shared_ptr<const State> state_;
 };

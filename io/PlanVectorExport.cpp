@@ -4,6 +4,7 @@
 #include "io/internal/GeoJsonText.hpp"
 #include "io/internal/PlanGeometry.hpp"
 #include "io/internal/TextFiles.hpp"
+#include "io/internal/TransformationLoan.hpp"
 
 #include <cmath>
 #include <ogrsf_frmts.h>
@@ -77,24 +78,18 @@ Status createFields(VectorFileWriter& writer, OGRLayer* layer, const Fields& fie
     return {};
 }
 
-// Transformation from the plan's CRS to WGS84 longitude, latitude.
-Result<std::unique_ptr<OGRCoordinateTransformation>> toWgs84(const GeoReference& georeference,
-                                                             const std::string& path) {
-    using Transformation = std::unique_ptr<OGRCoordinateTransformation>;
+// A transformation from the plan's CRS to WGS84 longitude, latitude, borrowed from its georeference.
+Result<std::unique_ptr<internal::TransformationLoan>> toWgs84(const GeoReference& georeference,
+                                                              const std::string& path) {
+    using Loan = std::unique_ptr<internal::TransformationLoan>;
     if (!georeference.hasCrs()) {
-        return Result<Transformation>::failure(
+        return Result<Loan>::failure(
             path + ": the map has no CRS, so the plan cannot be written in longitude and latitude");
     }
-    auto source = internal::spatialReferenceFromDefinition(georeference.wkt());
-    const auto wgs84 = internal::wgs84SpatialReference();
-    if (!source)
-        return Result<Transformation>::failure(path + ": the map's CRS is not usable" +
-                                               QuietGdalErrors::detail());
-    Transformation transformation(OGRCreateCoordinateTransformation(source.get(), wgs84.get()));
-    if (!transformation)
-        return Result<Transformation>::failure(path + ": no transformation to WGS84" +
-                                               QuietGdalErrors::detail());
-    return transformation;
+    auto loan = std::make_unique<internal::TransformationLoan>(georeference);
+    if (loan->get() == nullptr)
+        return Result<Loan>::failure(path + ": no transformation to WGS84" + QuietGdalErrors::detail());
+    return loan;
 }
 
 // Into WGS84, every coordinate finite (the GeoJSON text would otherwise hold "inf").
@@ -174,7 +169,7 @@ Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::st
     auto transformation = toWgs84(context.georeference, path);
     if (!transformation)
         return Result<PlanFeatures>::failure(transformation.error());
-    if (Status status = transformAll(features.value(), *transformation.value(), path); !status) {
+    if (Status status = transformAll(features.value(), *transformation.value()->get(), path); !status) {
         return Result<PlanFeatures>::failure(status.error());
     }
     cutAtTheAntimeridian(features.value());
@@ -468,7 +463,7 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
             const std::string name = context.robotName(coverage.robot);
             if (pass == 0) {
                 OGRPoint home(waypoints.front().x / metresPerUnit, waypoints.front().y / metresPerUnit);
-                if (home.transform(transformation.value().get()) != OGRERR_NONE) {
+                if (home.transform(transformation.value()->get()) != OGRERR_NONE) {
                     return Status::failure(path + ": cannot transform a start to WGS84" +
                                            QuietGdalErrors::detail());
                 }
@@ -482,7 +477,7 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
             OGRLineString route;
             for (const Waypoint& waypoint : waypoints)
                 route.addPoint(waypoint.x / metresPerUnit, waypoint.y / metresPerUnit);
-            if (route.transform(transformation.value().get()) != OGRERR_NONE) {
+            if (route.transform(transformation.value()->get()) != OGRERR_NONE) {
                 return Status::failure(path + ": cannot transform " + name + "'s route to WGS84" +
                                        QuietGdalErrors::detail());
             }

@@ -148,16 +148,23 @@ std::vector<Waypoint> turningPoints(const CoveragePath& path) {
 
 namespace {
 
-// The mission's points from `first` to `last` with their longitude and latitude.
-Result<std::vector<GeoWaypoint>> geoPoints(const ExportContext& context, const AutopilotMission& mission,
-                                           const MissionPart& part, const std::string& path) {
+// The mission's points from `first` to `last` with their longitude and latitude (`lonLats`: those of all the
+// mission's points).
+std::vector<GeoWaypoint> geoPoints(const AutopilotMission& mission, const MissionPart& part,
+                                   const std::vector<LonLat>& lonLats) {
     std::vector<GeoWaypoint> points;
     points.reserve(part.last - part.first + 1);
     for (std::size_t i = part.first; i <= part.last; ++i)
-        points.push_back({mission.points[i]});
-    if (Status placed = placeOnWgs84(context, points); !placed)
-        return Result<std::vector<GeoWaypoint>>::failure(path + ": " + placed.error());
+        points.push_back({mission.points[i], 0.0, lonLats[i].longitude, lonLats[i].latitude});
     return points;
+}
+
+Result<std::vector<LonLat>> lonLatsOf(const ExportContext& context, const AutopilotMission& mission) {
+    std::vector<MapPoint> mapPoints;
+    mapPoints.reserve(mission.points.size());
+    for (const Waypoint& point : mission.points)
+        mapPoints.push_back({point.x, point.y});
+    return context.georeference.toWgs84(mapPoints);
 }
 
 int mavlinkVehicleType(VehicleType type) {
@@ -325,20 +332,48 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
     return text;
 }
 
+// The robot's cache entry, its mission made.
+ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context, int robot) {
+    std::shared_ptr<ExportContext::MissionCache::Entry> entry;
+    {
+        const std::lock_guard lock(context.missionCache->mutex);
+        auto& slot = context.missionCache->entries[robot];
+        if (!slot)
+            slot = std::make_shared<ExportContext::MissionCache::Entry>();
+        entry = slot;
+    }
+    std::call_once(entry->made, [&] {
+        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot))
+            entry->mission = autopilotMission(*coverage, context.vehicle(robot), context.settings);
+    });
+    return *entry; // the cache keeps it as long as the context
+}
+
+// The robot's mission with its points' longitude and latitude.
+const ExportContext::MissionCache::Entry& placedMissionOf(const ExportContext& context, int robot) {
+    ExportContext::MissionCache::Entry& entry = missionEntryOf(context, robot);
+    std::call_once(entry.placed, [&] {
+        auto lonLats = lonLatsOf(context, entry.mission);
+        if (lonLats)
+            entry.lonLats = std::move(lonLats.value());
+        else
+            entry.placeError = lonLats.error();
+    });
+    return entry;
+}
+
 using MissionText = std::string (*)(const AutopilotMission&, const MissionPart&,
                                     const std::vector<GeoWaypoint>&, const VehicleSettings&);
 
 // One mission in one file at `path`, or, above the vehicle's item limit, in parts beside it.
-Status writeMission(const ExportContext& context, const AutopilotMission& mission, const std::string& path,
-                    MissionText text, const VehicleSettings& vehicle) {
+Status writeMission(const AutopilotMission& mission, const std::vector<LonLat>& lonLats,
+                    const std::string& path, MissionText text, const VehicleSettings& vehicle) {
     const bool split = mission.parts.size() > 1;
     for (std::size_t part = 0; part < mission.parts.size(); ++part) {
         const std::string file = split ? missionPartPath(path, part) : path;
-        auto points = geoPoints(context, mission, mission.parts[part], file);
-        if (!points)
-            return Status::failure(points.error());
+        const std::vector<GeoWaypoint> points = geoPoints(mission, mission.parts[part], lonLats);
         if (auto written = internal::writeFileAtomically(
-                file, text(mission, mission.parts[part], points.value(), vehicle), Sync::BySystem);
+                file, text(mission, mission.parts[part], points, vehicle), Sync::BySystem);
             !written) {
             return written;
         }
@@ -357,7 +392,11 @@ Status writeSortieMissions(const ExportContext& context, int robot, const Covera
         const CoveragePath flight = sortiePath(coverage, sorties->sorties[sortie]);
         const AutopilotMission mission = autopilotMission(flight, context.vehicle(robot), context.settings);
         const std::string file = missionSortiePath(path, sortie);
-        if (auto written = writeMission(context, mission, file, text, context.vehicle(robot)); !written)
+        auto lonLats = lonLatsOf(context, mission);
+        if (!lonLats)
+            return Status::failure(file + ": " + lonLats.error());
+        if (auto written = writeMission(mission, lonLats.value(), file, text, context.vehicle(robot));
+            !written)
             return written;
         removeStaleMissionFiles(file, mission.parts.size());
     }
@@ -376,8 +415,10 @@ Status writeMissionFiles(const ExportContext& context, int robot, const std::str
         return Status::failure(path + ": robot " + number + " has no waypoints");
     if (!context.georeference.hasCrs())
         return Status::failure(path + ": the map has no CRS, so waypoints have no latitude and longitude");
-    if (auto written =
-            writeMission(context, autopilotMissionOf(context, robot), path, text, context.vehicle(robot));
+    const ExportContext::MissionCache::Entry& entry = placedMissionOf(context, robot);
+    if (!entry.placeError.empty())
+        return Status::failure(path + ": " + entry.placeError);
+    if (auto written = writeMission(entry.mission, entry.lonLats, path, text, context.vehicle(robot));
         !written)
         return written;
     return writeSortieMissions(context, robot, *coverage, path, text);
@@ -386,19 +427,7 @@ Status writeMissionFiles(const ExportContext& context, int robot, const std::str
 } // namespace
 
 const AutopilotMission& autopilotMissionOf(const ExportContext& context, int robot) {
-    std::shared_ptr<ExportContext::MissionCache::Entry> entry;
-    {
-        const std::lock_guard lock(context.missionCache->mutex);
-        auto& slot = context.missionCache->entries[robot];
-        if (!slot)
-            slot = std::make_shared<ExportContext::MissionCache::Entry>();
-        entry = slot;
-    }
-    std::call_once(entry->made, [&] {
-        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot))
-            entry->mission = autopilotMission(*coverage, context.vehicle(robot), context.settings);
-    });
-    return entry->mission;
+    return missionEntryOf(context, robot).mission;
 }
 
 std::string sortieFilesNote(const ExportContext& context, int robot, const std::string& path) {

@@ -32,6 +32,13 @@ QSize PlanSheet::fittedMapSize(const ClassGrid& grid, QSize maxSize) {
             std::max(1, static_cast<int>(std::lround(height * scale)))};
 }
 
+void PlanSheet::prepareFonts() {
+    QFont bold;
+    bold.setBold(true);
+    // Measuring a text resolves its font, which reads fontconfig's files and caches once for the process.
+    static_cast<void>(QFontMetricsF(bold).horizontalAdvance(QStringLiteral("Coverage plan")));
+}
+
 PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan,
                      const RegionOutlines* outlines, const std::vector<std::string>& robotNames,
                      QSize maxMapSize)

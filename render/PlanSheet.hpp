@@ -22,6 +22,9 @@ class PlanSheet {
               const RegionOutlines* outlines, const std::vector<std::string>& robotNames, QSize maxMapSize);
     // The map's size fitted into maxSize, keeping its aspect.
     [[nodiscard]] static QSize fittedMapSize(const ClassGrid& grid, QSize maxSize);
+    // Loads the font database, which the first sheet of a process otherwise waits for; safe on any thread
+    // once the QGuiApplication exists.
+    static void prepareFonts();
     [[nodiscard]] QSize size() const { return size_; }
     [[nodiscard]] QRect mapArea() const { return map_; }
     [[nodiscard]] QRectF legendArea() const { return legend_; }

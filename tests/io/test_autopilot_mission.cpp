@@ -227,6 +227,11 @@ class AutopilotMissionTest : public QObject {
         QVERIFY(!QFileInfo::exists(whole)); // a mission the autopilot cannot hold is not written whole
         const AutopilotMission mission = autopilotMissionOf(context, 0);
         QVERIFY(mission.parts.size() > 2);
+        // The mission's points are placed on WGS84 once for all its files: each part holds its own slice.
+        std::vector<MapPoint> missionPoints;
+        for (const Waypoint& point : mission.points)
+            missionPoints.push_back({point.x, point.y});
+        const std::vector<LonLat> lonLats = reference.toWgs84(missionPoints).value();
         QJsonArray previousLast;
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
             const QString path = QString::fromStdString(missionPartPath(whole.toStdString(), part));
@@ -236,13 +241,18 @@ class AutopilotMissionTest : public QObject {
             QCOMPARE(static_cast<int>(items.size()) + 1, mission.parts[part].items); // + home
             QCOMPARE(items[0].toObject()["command"].toInt(), 178);                   // its starting speed
             QJsonArray first, last;
+            std::size_t point = mission.parts[part].first;
             for (const QJsonValue& item : items) {
                 if (item.toObject()["command"].toInt() != 16)
                     continue;
                 if (first.isEmpty())
                     first = item.toObject()["params"].toArray();
                 last = item.toObject()["params"].toArray();
+                QCOMPARE(last[4].toDouble(), lonLats[point].latitude);
+                QCOMPARE(last[5].toDouble(), lonLats[point].longitude);
+                ++point;
             }
+            QCOMPARE(point, mission.parts[part].last + 1);
             if (part > 0) {
                 QCOMPARE(first[4].toDouble(), previousLast[4].toDouble());
                 QCOMPARE(first[5].toDouble(), previousLast[5].toDouble());

@@ -12,6 +12,7 @@
 #include <gdal_priv.h>
 #include <numeric>
 #include <ogr_spatialref.h>
+#include <thread>
 
 using namespace mcpp;
 using namespace mcpp::io;
@@ -281,6 +282,40 @@ class RasterLoadingTest : public QObject {
         QVERIFY2(failed.error().find("point (1000000000000000") != std::string::npos &&
                      failed.error().find("cannot be transformed to WGS84") != std::string::npos,
                  failed.error().c_str());
+    }
+
+    // A batch run makes its writers' transformations on a spare thread while it plans: made there, on a
+    // thread since ended, and then used by several threads at once, they place every point where one made
+    // on the spot does (NAD83 to WGS84 picks among datum shifts; UTM in WGS84 needs none).
+    void transformationsMadeAheadOnAnotherThreadAgree() {
+        for (const char* definition : {"EPSG:26912", "EPSG:32633"}) {
+            const GeoReference fresh = GeoReference::fromDefinition(definition).value();
+            const GeoReference prepared = GeoReference::fromDefinition(definition).value();
+            std::thread([&prepared] { prepared.prepareTransformationsToWgs84(3); }).join();
+            const MapPoint origin = std::string(definition) == "EPSG:26912" ? MapPoint{400000.0, 4100000.0}
+                                                                            : MapPoint{431000.0, 5398000.0};
+            std::vector<MapPoint> points;
+            for (int i = 0; i < 40; ++i)
+                points.push_back({origin.x + 613.0 * i, origin.y + 911.0 * i});
+            const std::vector<LonLat> expected = fresh.toWgs84(points).value();
+            std::vector<std::vector<LonLat>> placed(3);
+            std::vector<std::thread> writers;
+            for (std::size_t writer = 0; writer < placed.size(); ++writer)
+                writers.emplace_back([&, writer] {
+                    if (auto lonLats = prepared.toWgs84(points))
+                        placed[writer] = std::move(lonLats.value());
+                });
+            for (std::thread& writer : writers)
+                writer.join();
+            for (const std::vector<LonLat>& lonLats : placed) {
+                QCOMPARE(lonLats.size(), expected.size());
+                for (std::size_t i = 0; i < expected.size(); ++i) {
+                    QCOMPARE(lonLats[i].longitude, expected[i].longitude);
+                    QCOMPARE(lonLats[i].latitude, expected[i].latitude);
+                }
+            }
+        }
+        GeoReference().prepareTransformationsToWgs84(2); // no CRS: nothing to make, and no failure
     }
 
     void noCrsIsPlannedInItsOwnUnits() {
