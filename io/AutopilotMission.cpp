@@ -23,8 +23,14 @@ std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, cons
     if (vehicle.cruiseSpeedMetresPerSecond > 0.0 || waypoints.empty())
         return speeds;
     double current = roundedSpeed(waypoints.front().speedMetresPerSecond);
+    // Runs of waypoints share a land cover's speed: rounded once a run (a logarithm and a power each time).
+    float lastSpeed = waypoints.front().speedMetresPerSecond;
+    double wanted = current;
     for (std::size_t i = 0; i < waypoints.size(); ++i) {
-        const double wanted = roundedSpeed(waypoints[i].speedMetresPerSecond);
+        if (waypoints[i].speedMetresPerSecond != lastSpeed) {
+            lastSpeed = waypoints[i].speedMetresPerSecond;
+            wanted = roundedSpeed(lastSpeed);
+        }
         // A relative margin keeps a change of exactly the tolerance (1.1 after 1.0 at 10%) below it.
         if (wanted > 0.0 && std::abs(wanted - current) > speedTolerance * current * (1.0 + 1e-9))
             current = wanted;
