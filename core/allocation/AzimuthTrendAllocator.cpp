@@ -143,6 +143,17 @@ class Allocation {
         return moves;
     }
 
+    // Takes an earlier division's cells as they were; false when it leaves a reachable cell unassigned.
+    bool adopt(const RegionAllocation& division) {
+        for (int cell = 0; cell < cellCount_; ++cell) {
+            const int robot = division.robotOfCell[static_cast<std::size_t>(cell)];
+            const int owner = owner_[static_cast<std::size_t>(cell)];
+            if (owner == unassigned && robot >= 0 && robot < static_cast<int>(robots_.size()))
+                give(cell, robot);
+        }
+        return unassignedCount_ == 0;
+    }
+
     RegionAllocation result() const {
         RegionAllocation allocation;
         allocation.robotOfCell.resize(static_cast<std::size_t>(cellCount_));
@@ -693,6 +704,23 @@ class Allocation {
 };
 
 } // namespace
+
+RegionAllocation AzimuthTrendAllocator::rebalance(const CellGraph& graph, const std::vector<int>& startCells,
+                                                  const RegionAllocation& division,
+                                                  const ProgressReporter& progress) const {
+    progress.report("allocation", 0.0);
+    Allocation allocation(graph, startCells, progress);
+    if (division.robotOfCell.size() != graph.size() || !allocation.adopt(division))
+        return allocate(graph, startCells, progress);
+    progress.report("allocation", 0.8);
+    const int cap =
+        rebalanceIterations_ > 0 ? rebalanceIterations_ : std::max(1000, static_cast<int>(graph.size()));
+    (void)allocation.rebalance(cap);
+    RegionAllocation result = allocation.result();
+    settleRegionsWithPieces(graph, result);
+    progress.report("allocation", 1.0);
+    return result;
+}
 
 ParameterSpec AzimuthTrendAllocator::rebalanceIterationsParameter() {
     return integerParameter(

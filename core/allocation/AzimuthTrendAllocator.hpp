@@ -18,6 +18,11 @@ class AzimuthTrendAllocator final : public RegionAllocator {
 
     [[nodiscard]] RegionAllocation allocate(const CellGraph& graph, const std::vector<int>& startCells,
                                             const ProgressReporter& progress) const override;
+    // `division` evened out again after the cells' costs changed: its cells move along chains of adjacent
+    // regions while the largest cost falls, as after growth, without growing the regions anew.
+    [[nodiscard]] RegionAllocation rebalance(const CellGraph& graph, const std::vector<int>& startCells,
+                                             const RegionAllocation& division,
+                                             const ProgressReporter& progress) const;
 
   private:
     int rebalanceIterations_;

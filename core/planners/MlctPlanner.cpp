@@ -57,13 +57,14 @@ void MlctPlanner::run(PlanningRun& run) const {
     // robot).
     std::vector<RegionTree> trees = run.stage(
         "paths", [&] { return coverage.planTrees(plan.cells, plan.regions, run.starts(), progress, true); });
-    // Turns are not spread evenly: a second allocation with each region's measured turn rate balances real
-    // time better. The faster division is kept.
+    // Turns are not spread evenly: the division evened out again with each region's measured turn rate
+    // balances real time better. The faster division is kept. Evened out from where it stands rather than
+    // grown anew: as balanced on the benchmark maps, in a fraction of the time.
     run.stage("turn balance", [&] {
         if (!turnsWeigh(trees) || !calibrateTurnRates(plan.cells, plan.regions, turningSecondsOf(trees)))
             return 0;
-        RegionAllocation regions =
-            allocator.allocate(plan.cells, startCells, progress.within("turn balance", 0.0, 0.5));
+        RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions,
+                                                       progress.within("turn balance", 0.0, 0.5));
         straightening.straighten(regions);
         std::vector<RegionTree> second = coverage.planTrees(plan.cells, regions, run.starts(),
                                                             progress.within("turn balance", 0.5, 1.0), true);

@@ -2,6 +2,7 @@
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/decomposition/QuadTreeDecomposition.hpp"
+#include "core/model/TurnTimeModel.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -186,6 +187,72 @@ class AzimuthTrendAllocatorTest : public QObject {
         spec.seed = 11;
         const auto problem = test::randomProblem(spec);
         QCOMPARE(allocateOnly(problem).regions.robotOfCell, allocateOnly(problem).regions.robotOfCell);
+    }
+
+    // The turn balance's second division: once one region's cells cost more (its path turns more than
+    // expected), the division is evened out from where it stands. Every reachable cell keeps a robot, the
+    // regions stay whole, each start stays with its robot, and the largest cost falls below what the old
+    // division costs at the new prices.
+    void rebalanceEvensOutADivisionAfterCostsChange() {
+        std::mt19937 random(23);
+        const PlanningProblem problem = uniformWithStarts(random, 6);
+        Plan plan = allocateOnly(problem);
+        TurnTimeModel turns;
+        turns.fixedSecondsPer90Degrees = 2.0;
+        plan.cells.applyTurnTime(turns);
+        std::vector<float> turnsPerSubCell(plan.cells.size(), 0.2F);
+        for (std::size_t cell = 0; cell < turnsPerSubCell.size(); ++cell)
+            if (plan.regions.robotOfCell[cell] == 0)
+                turnsPerSubCell[cell] = 1.0F;
+        plan.cells.setExpectedTurns(turnsPerSubCell);
+        std::vector<double> oldCosts(plan.regions.startCell.size(), 0.0);
+        for (std::size_t cell = 0; cell < plan.cells.size(); ++cell)
+            if (const int robot = plan.regions.robotOfCell[cell]; robot >= 0)
+                oldCosts[static_cast<std::size_t>(robot)] +=
+                    plan.cells.cell(static_cast<int>(cell)).coverSeconds();
+
+        const AzimuthTrendAllocator allocator;
+        Plan rebalanced = plan;
+        rebalanced.regions = allocator.rebalance(plan.cells, plan.regions.startCell, plan.regions, {});
+        const auto problems = test::checkRegions(rebalanced);
+        QVERIFY2(problems.empty(), qPrintable(QString::fromStdString(test::describe(problems))));
+        QCOMPARE(rebalanced.regions.startCell, plan.regions.startCell);
+        for (std::size_t robot = 0; robot < plan.regions.startCell.size(); ++robot)
+            QCOMPARE(rebalanced.regions.robotOfCell[static_cast<std::size_t>(plan.regions.startCell[robot])],
+                     static_cast<int>(robot));
+        for (std::size_t cell = 0; cell < plan.cells.size(); ++cell)
+            QCOMPARE(rebalanced.regions.robotOfCell[cell] >= 0, plan.regions.robotOfCell[cell] >= 0);
+        const double oldLargest = *std::max_element(oldCosts.begin(), oldCosts.end());
+        const double newLargest =
+            *std::max_element(rebalanced.regions.costSeconds.begin(), rebalanced.regions.costSeconds.end());
+        QVERIFY2(newLargest < 0.9 * oldLargest,
+                 qPrintable(QStringLiteral("largest cost %1 s, was %2 s").arg(newLargest).arg(oldLargest)));
+        QVERIFY(maximumOverMean(rebalanced.regions) < 1.05);
+        QVERIFY(cellsPerRobot(rebalanced.regions)[0] < cellsPerRobot(plan.regions)[0]);
+        // Evened out from where it stood: fewer cells change robot than between it and a division grown anew
+        // at the new costs (102 against 151 here).
+        const auto changed = [&](const RegionAllocation& other) {
+            int count = 0;
+            for (std::size_t cell = 0; cell < plan.cells.size(); ++cell)
+                count += other.robotOfCell[cell] != plan.regions.robotOfCell[cell] ? 1 : 0;
+            return count;
+        };
+        const int moved = changed(rebalanced.regions);
+        const int regrown = changed(allocator.allocate(plan.cells, plan.regions.startCell, {}));
+        QVERIFY2(
+            moved > 0 && moved < regrown,
+            qPrintable(QStringLiteral("%1 cells moved, %2 differ when grown anew").arg(moved).arg(regrown)));
+    }
+
+    // A division that does not cover the map (here none at all) cannot be evened out: a new one is grown.
+    void rebalanceOfNoDivisionAllocatesAnew() {
+        std::mt19937 random(5);
+        const PlanningProblem problem = uniformWithStarts(random, 4);
+        const Plan plan = allocateOnly(problem);
+        const AzimuthTrendAllocator allocator;
+        const RegionAllocation none;
+        QCOMPARE(allocator.rebalance(plan.cells, plan.regions.startCell, none, {}).robotOfCell,
+                 plan.regions.robotOfCell);
     }
 };
 
