@@ -244,6 +244,26 @@ class AzimuthTrendAllocatorTest : public QObject {
             qPrintable(QStringLiteral("%1 cells moved, %2 differ when grown anew").arg(moved).arg(regrown)));
     }
 
+    // A division far from even at the new costs (one region's cells ten times dearer) would take tens of
+    // thousands of moves one cell at a time: the regions are grown anew instead.
+    void divisionFarFromEvenIsGrownAnew() {
+        auto problem = test::uniformProblem(130, 130, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 10, 10), test::pixelCentre(problem.grid, 120, 120)};
+        Plan plan = allocateOnly(problem);
+        TurnTimeModel turns;
+        turns.fixedSecondsPer90Degrees = 20.0;
+        plan.cells.applyTurnTime(turns);
+        std::vector<float> turnsPerSubCell(plan.cells.size(), 0.0F);
+        for (std::size_t cell = 0; cell < turnsPerSubCell.size(); ++cell)
+            if (plan.regions.robotOfCell[cell] == 0)
+                turnsPerSubCell[cell] = 1.0F;
+        plan.cells.setExpectedTurns(turnsPerSubCell);
+        const AzimuthTrendAllocator allocator;
+        const RegionAllocation grown = allocator.allocate(plan.cells, plan.regions.startCell, {});
+        QCOMPARE(allocator.rebalance(plan.cells, plan.regions.startCell, plan.regions, {}).robotOfCell,
+                 grown.robotOfCell);
+    }
+
     // A division that does not cover the map (here none at all) cannot be evened out: a new one is grown.
     void rebalanceOfNoDivisionAllocatesAnew() {
         std::mt19937 random(5);
