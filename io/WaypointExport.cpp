@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <numeric>
 #include <optional>
+#include <unordered_map>
 
 namespace mcpp::io {
 
@@ -44,18 +45,52 @@ struct GeoWaypoint {
     double latitude = 0.0;
 };
 
-// Fills in the points' longitude and latitude, all in one transformation.
-Status placeOnWgs84(const ExportContext& context, std::vector<GeoWaypoint>& points) {
+const ExportContext::MissionCache::Entry& placedMissionOf(const ExportContext& context, int robot);
+
+// A place on the map as a key: equal coordinates, equal key.
+struct PlaceKey {
+    double x = 0.0;
+    double y = 0.0;
+    bool operator==(const PlaceKey& other) const { return x == other.x && y == other.y; }
+};
+
+struct PlaceKeyHash {
+    std::size_t operator()(const PlaceKey& key) const {
+        return std::hash<double>{}(key.x) ^ (std::hash<double>{}(key.y) * 0x9E3779B97F4A7C15ULL);
+    }
+};
+
+// Fills in the points' longitude and latitude: those of the robot's mission points from its mission, which
+// its waypoint files have placed or will place anyway; the others all in one transformation.
+Status placeOnWgs84(const ExportContext& context, int robot, std::vector<GeoWaypoint>& points) {
+    const ExportContext::MissionCache::Entry& mission = placedMissionOf(context, robot);
+    std::unordered_map<PlaceKey, LonLat, PlaceKeyHash> placed;
+    if (mission.placeError.empty()) {
+        placed.reserve(mission.lonLats.size());
+        for (std::size_t i = 0; i < mission.lonLats.size(); ++i)
+            placed.emplace(PlaceKey{mission.mission.points[i].x, mission.mission.points[i].y},
+                           mission.lonLats[i]);
+    }
+    std::vector<std::size_t> unplaced;
     std::vector<MapPoint> mapPoints;
-    mapPoints.reserve(points.size());
-    for (const GeoWaypoint& point : points)
-        mapPoints.push_back({point.waypoint.x, point.waypoint.y});
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto found = placed.find({points[i].waypoint.x, points[i].waypoint.y});
+        if (found != placed.end()) {
+            points[i].longitude = found->second.longitude;
+            points[i].latitude = found->second.latitude;
+            continue;
+        }
+        unplaced.push_back(i);
+        mapPoints.push_back({points[i].waypoint.x, points[i].waypoint.y});
+    }
+    if (unplaced.empty())
+        return {};
     auto lonLats = context.georeference.toWgs84(mapPoints);
     if (!lonLats)
         return Status::failure(lonLats.error());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        points[i].longitude = lonLats.value()[i].longitude;
-        points[i].latitude = lonLats.value()[i].latitude;
+    for (std::size_t k = 0; k < unplaced.size(); ++k) {
+        points[unplaced[k]].longitude = lonLats.value()[k].longitude;
+        points[unplaced[k]].latitude = lonLats.value()[k].latitude;
     }
     return {};
 }
@@ -82,7 +117,7 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
     for (const std::size_t index : kept)
         points.push_back({coverage->waypoints[index], seconds[index], std::nan(""), std::nan("")});
     if (context.georeference.hasCrs()) {
-        if (Status placed = placeOnWgs84(context, points); !placed)
+        if (Status placed = placeOnWgs84(context, robot, points); !placed)
             return Result<Points>::failure(path + ": " + placed.error());
     }
     return points;

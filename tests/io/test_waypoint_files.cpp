@@ -268,6 +268,17 @@ class WaypointFilesTest : public QObject {
         QCOMPARE(std::stod(fields[5]), 6.0);
         QVERIFY(std::abs(std::stod(fields[8]) - 20.0 / 1.5) <
                 1e-9); // two 10 m legs at 1.5 m/s, no turn price
+        // Every row where its x and y lie, whether the robot's mission placed the point (its turns) or the
+        // CSV did (the points between them).
+        for (const std::string& row : lines) {
+            std::vector<double> values;
+            std::stringstream columns(row);
+            for (std::string field; std::getline(columns, field, ',');)
+                values.push_back(field.empty() ? 0.0 : std::stod(field));
+            const LonLat place = reference_.toWgs84({values[1], values[2]}).value();
+            QCOMPARE(values[3], place.longitude);
+            QCOMPARE(values[4], place.latitude);
+        }
     }
 
     void waypointCsvWritesFloatSpeedsAsTheirDecimals() {
