@@ -716,6 +716,20 @@ class Allocation {
     std::vector<char> handOverPossible_;
 };
 
+// The cells moved along chains of adjacent regions while the largest cost falls, then any region left in
+// pieces settled.
+RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int rebalanceIterations,
+                           const ProgressReporter& progress) {
+    progress.report("allocation", 0.8);
+    const int cap =
+        rebalanceIterations > 0 ? rebalanceIterations : std::max(1000, static_cast<int>(graph.size()));
+    (void)allocation.rebalance(cap);
+    RegionAllocation result = allocation.result();
+    settleRegionsWithPieces(graph, result);
+    progress.report("allocation", 1.0);
+    return result;
+}
+
 } // namespace
 
 RegionAllocation AzimuthTrendAllocator::rebalance(const CellGraph& graph, const std::vector<int>& startCells,
@@ -731,14 +745,7 @@ RegionAllocation AzimuthTrendAllocator::rebalance(const CellGraph& graph, const 
     if (division.robotOfCell.size() != graph.size() || !allocation.adopt(division) ||
         allocation.movesToEvenOut() > mostMoves)
         return allocate(graph, startCells, progress);
-    progress.report("allocation", 0.8);
-    const int cap =
-        rebalanceIterations_ > 0 ? rebalanceIterations_ : std::max(1000, static_cast<int>(graph.size()));
-    (void)allocation.rebalance(cap);
-    RegionAllocation result = allocation.result();
-    settleRegionsWithPieces(graph, result);
-    progress.report("allocation", 1.0);
-    return result;
+    return evenedOut(allocation, graph, rebalanceIterations_, progress);
 }
 
 ParameterSpec AzimuthTrendAllocator::rebalanceIterationsParameter() {
@@ -753,14 +760,7 @@ RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const s
     progress.report("allocation", 0.0);
     Allocation allocation(graph, startCells, progress);
     allocation.grow();
-    progress.report("allocation", 0.8);
-    const int cap =
-        rebalanceIterations_ > 0 ? rebalanceIterations_ : std::max(1000, static_cast<int>(graph.size()));
-    (void)allocation.rebalance(cap);
-    RegionAllocation result = allocation.result();
-    settleRegionsWithPieces(graph, result);
-    progress.report("allocation", 1.0);
-    return result;
+    return evenedOut(allocation, graph, rebalanceIterations_, progress);
 }
 
 } // namespace mcpp

@@ -67,6 +67,19 @@ std::vector<int> cellsPerRobot(const RegionAllocation& allocation) {
     return counts;
 }
 
+// Turns of `secondsPer90Degrees` each, one per sub-cell of robot 0's region and `turnsElsewhere` per sub-cell
+// of the others: robot 0's cells become dearer, as when the turn balance measures its path turning more.
+void chargeTurnsToFirstRobot(Plan& plan, double secondsPer90Degrees, float turnsElsewhere) {
+    TurnTimeModel turns;
+    turns.fixedSecondsPer90Degrees = secondsPer90Degrees;
+    plan.cells.applyTurnTime(turns);
+    std::vector<float> turnsPerSubCell(plan.cells.size(), turnsElsewhere);
+    for (std::size_t cell = 0; cell < turnsPerSubCell.size(); ++cell)
+        if (plan.regions.robotOfCell[cell] == 0)
+            turnsPerSubCell[cell] = 1.0F;
+    plan.cells.setExpectedTurns(turnsPerSubCell);
+}
+
 } // namespace
 
 class AzimuthTrendAllocatorTest : public QObject {
@@ -197,14 +210,7 @@ class AzimuthTrendAllocatorTest : public QObject {
         std::mt19937 random(23);
         const PlanningProblem problem = uniformWithStarts(random, 6);
         Plan plan = allocateOnly(problem);
-        TurnTimeModel turns;
-        turns.fixedSecondsPer90Degrees = 2.0;
-        plan.cells.applyTurnTime(turns);
-        std::vector<float> turnsPerSubCell(plan.cells.size(), 0.2F);
-        for (std::size_t cell = 0; cell < turnsPerSubCell.size(); ++cell)
-            if (plan.regions.robotOfCell[cell] == 0)
-                turnsPerSubCell[cell] = 1.0F;
-        plan.cells.setExpectedTurns(turnsPerSubCell);
+        chargeTurnsToFirstRobot(plan, 2.0, 0.2F);
         std::vector<double> oldCosts(plan.regions.startCell.size(), 0.0);
         for (std::size_t cell = 0; cell < plan.cells.size(); ++cell)
             if (const int robot = plan.regions.robotOfCell[cell]; robot >= 0)
@@ -244,20 +250,13 @@ class AzimuthTrendAllocatorTest : public QObject {
             qPrintable(QStringLiteral("%1 cells moved, %2 differ when grown anew").arg(moved).arg(regrown)));
     }
 
-    // A division far from even at the new costs (one region's cells ten times dearer) would take tens of
-    // thousands of moves one cell at a time: the regions are grown anew instead.
+    // A division far from even at the new costs (a 20 s turn at every sub-cell of one region, none in the
+    // other) would take thousands of moves one cell at a time: the regions are grown anew instead.
     void divisionFarFromEvenIsGrownAnew() {
         auto problem = test::uniformProblem(130, 130, 10.0, {}, {});
         problem.starts = {test::pixelCentre(problem.grid, 10, 10), test::pixelCentre(problem.grid, 120, 120)};
         Plan plan = allocateOnly(problem);
-        TurnTimeModel turns;
-        turns.fixedSecondsPer90Degrees = 20.0;
-        plan.cells.applyTurnTime(turns);
-        std::vector<float> turnsPerSubCell(plan.cells.size(), 0.0F);
-        for (std::size_t cell = 0; cell < turnsPerSubCell.size(); ++cell)
-            if (plan.regions.robotOfCell[cell] == 0)
-                turnsPerSubCell[cell] = 1.0F;
-        plan.cells.setExpectedTurns(turnsPerSubCell);
+        chargeTurnsToFirstRobot(plan, 20.0, 0.0F);
         const AzimuthTrendAllocator allocator;
         const RegionAllocation grown = allocator.allocate(plan.cells, plan.regions.startCell, {});
         QCOMPARE(allocator.rebalance(plan.cells, plan.regions.startCell, plan.regions, {}).robotOfCell,
