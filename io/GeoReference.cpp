@@ -2,6 +2,7 @@
 
 #include "core/model/HumanUnits.hpp"
 #include "io/internal/GdalSupport.hpp"
+#include "io/internal/GeoReferenceState.hpp"
 #include "io/internal/TransformationLoan.hpp"
 
 #include <cmath>
@@ -12,28 +13,7 @@ namespace mcpp::io {
 
 using internal::QuietGdalErrors;
 
-struct GeoReference::State {
-    std::unique_ptr<OGRSpatialReference> crs;
-    double metresPerUnit = 1.0;
-    // Read once: OGRSpatialReference's const methods may touch caches, and exports run on several threads.
-    std::string wkt;
-    std::string name;
-    std::string authorityCode;
-    // OGRCoordinateTransformation is not thread-safe and copies share these: the lock guards the
-    // transformations kept here, and a transformation is used by one thread at a time.
-    mutable std::mutex mutex;
-    // Transformations to WGS84 not in use: each writer thread borrows one, so that exports written side
-    // by side do not wait for each other's points.
-    mutable std::vector<std::unique_ptr<OGRCoordinateTransformation>> idleToWgs84;
-    mutable std::unique_ptr<OGRCoordinateTransformation> fromWgs84;
-};
-
 namespace {
-
-std::unique_ptr<OGRCoordinateTransformation> makeTransformation(const OGRSpatialReference& from,
-                                                                const OGRSpatialReference& to) {
-    return std::unique_ptr<OGRCoordinateTransformation>(OGRCreateCoordinateTransformation(&from, &to));
-}
 
 bool transformPoint(OGRCoordinateTransformation& transformation, double& x, double& y) {
     int success = 0;
@@ -146,36 +126,18 @@ void GeoReference::prepareTransformationsToWgs84(int count) const {
         return;
     QuietGdalErrors quiet;
     const auto wgs84 = internal::wgs84SpatialReference();
-    // Under the lock, as every use of the CRS object here: its const methods may touch caches.
-    const std::lock_guard lock(state_->mutex);
-    while (static_cast<int>(state_->idleToWgs84.size()) < count) {
-        auto made = makeTransformation(*state_->crs, *wgs84);
+    for (;;) {
+        // Under the lock, as every use of the CRS object here (its const methods may touch caches); taken
+        // anew for each, so that a writer that comes early waits for one transformation at most.
+        const std::lock_guard lock(state_->mutex);
+        if (static_cast<int>(state_->idleToWgs84.size()) >= count)
+            return;
+        auto made = internal::transformationBetween(*state_->crs, *wgs84);
         if (!made)
             return; // the writers will say why
         state_->idleToWgs84.push_back(std::move(made));
     }
 }
-
-namespace internal {
-
-TransformationLoan::TransformationLoan(const GeoReference& reference) : state_(reference.state_) {
-    const std::lock_guard lock(state_->mutex);
-    if (state_->idleToWgs84.empty()) {
-        transformation_ = makeTransformation(*state_->crs, *wgs84SpatialReference());
-        return;
-    }
-    transformation_ = std::move(state_->idleToWgs84.back());
-    state_->idleToWgs84.pop_back();
-}
-
-TransformationLoan::~TransformationLoan() {
-    if (!transformation_)
-        return;
-    const std::lock_guard lock(state_->mutex);
-    state_->idleToWgs84.push_back(std::move(transformation_));
-}
-
-} // namespace internal
 
 Result<MapPoint> GeoReference::fromWgs84(LonLat lonLat) const {
     if (!hasCrs())
@@ -185,7 +147,7 @@ Result<MapPoint> GeoReference::fromWgs84(LonLat lonLat) const {
     std::lock_guard lock(state_->mutex);
     if (!state_->fromWgs84) {
         const auto wgs84 = internal::wgs84SpatialReference();
-        state_->fromWgs84 = makeTransformation(*wgs84, *state_->crs);
+        state_->fromWgs84 = internal::transformationBetween(*wgs84, *state_->crs);
         if (!state_->fromWgs84) {
             return Result<MapPoint>::failure("no transformation from WGS84 to " + name() + quiet.detail());
         }
@@ -211,7 +173,7 @@ Result<MapPoint> GeoReference::fromCrs(const std::string& definition, MapPoint p
         return Result<MapPoint>::failure("the map has no CRS, so a point in " + definition +
                                          " cannot be placed on it");
     std::unique_lock lock(state_->mutex);
-    const auto transformation = makeTransformation(*source, *state_->crs);
+    const auto transformation = internal::transformationBetween(*source, *state_->crs);
     lock.unlock();
     double x = point.x;
     double y = point.y;
@@ -233,7 +195,7 @@ Result<MapPoint> GeoReference::toCrs(const std::string& definition, MapPoint poi
     if (!hasCrs())
         return Result<MapPoint>::failure("the map has no CRS, so its points cannot go to " + definition);
     std::unique_lock lock(state_->mutex);
-    const auto transformation = makeTransformation(*state_->crs, *target);
+    const auto transformation = internal::transformationBetween(*state_->crs, *target);
     lock.unlock();
     const MapPoint crsPoint = toCrsUnits(point);
     double x = crsPoint.x;

@@ -57,8 +57,9 @@ struct ExportContext {
     };
     std::shared_ptr<OutlineCache> outlineCache = std::make_shared<OutlineCache>(); // for outlines() only
 
-    // Each robot's autopilot mission, made once for its waypoint files and the reports. Keyed by robot only:
-    // a copy of the context shares it, so a copy must not change settings or vehicles.
+    // Each robot's autopilot mission, made and placed on WGS84 once for its waypoint files, its CSV and the
+    // reports. Keyed by robot only: a copy of the context shares it, so a copy must not change settings or
+    // vehicles.
     struct MissionCache {
         struct Entry {
             std::once_flag made;
@@ -72,7 +73,7 @@ struct ExportContext {
         std::mutex mutex; // guards entries
         std::map<int, std::shared_ptr<Entry>> entries;
     };
-    std::shared_ptr<MissionCache> missionCache = std::make_shared<MissionCache>(); // autopilotMissionOf only
+    std::shared_ptr<MissionCache> missionCache = std::make_shared<MissionCache>(); // WaypointExport.cpp only
 };
 
 // Robots are numbered from 1 in every file, as on the map and in the legend; plans index them from 0.

@@ -98,6 +98,9 @@ bool transformed(OGRGeometry& geometry, OGRCoordinateTransformation& transformat
         return true;
     if (geometry.transform(&transformation) != OGRERR_NONE)
         return false;
+    // transform() hands the geometry the transformation's own CRS object, which the next writer to borrow
+    // the transformation would share across threads; the layers carry the CRS.
+    geometry.assignSpatialReference(nullptr);
     OGREnvelope envelope;
     geometry.getEnvelope(&envelope);
     return std::isfinite(envelope.MinX) && std::isfinite(envelope.MaxX) && std::isfinite(envelope.MinY) &&

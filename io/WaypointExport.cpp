@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <numeric>
 #include <optional>
-#include <unordered_map>
 
 namespace mcpp::io {
 
@@ -45,43 +44,72 @@ struct GeoWaypoint {
     double latitude = 0.0;
 };
 
-const ExportContext::MissionCache::Entry& placedMissionOf(const ExportContext& context, int robot);
+Result<std::vector<LonLat>> lonLatsOf(const ExportContext& context, const AutopilotMission& mission) {
+    std::vector<MapPoint> mapPoints;
+    mapPoints.reserve(mission.points.size());
+    for (const Waypoint& point : mission.points)
+        mapPoints.push_back({point.x, point.y});
+    return context.georeference.toWgs84(mapPoints);
+}
 
-// A place on the map as a key: equal coordinates, equal key.
-struct PlaceKey {
-    double x = 0.0;
-    double y = 0.0;
-    bool operator==(const PlaceKey& other) const { return x == other.x && y == other.y; }
-};
-
-struct PlaceKeyHash {
-    std::size_t operator()(const PlaceKey& key) const {
-        return std::hash<double>{}(key.x) ^ (std::hash<double>{}(key.y) * 0x9E3779B97F4A7C15ULL);
+// The robot's cache entry, its mission made.
+ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context, int robot) {
+    std::shared_ptr<ExportContext::MissionCache::Entry> entry;
+    {
+        const std::lock_guard lock(context.missionCache->mutex);
+        auto& slot = context.missionCache->entries[robot];
+        if (!slot)
+            slot = std::make_shared<ExportContext::MissionCache::Entry>();
+        entry = slot;
     }
-};
+    std::call_once(entry->made, [&] {
+        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot))
+            entry->mission = autopilotMission(*coverage, context.vehicle(robot), context.settings);
+    });
+    return *entry; // the cache keeps it as long as the context
+}
 
-// Fills in the points' longitude and latitude: those of the robot's mission points from its mission, which
-// its waypoint files have placed or will place anyway; the others all in one transformation.
-Status placeOnWgs84(const ExportContext& context, int robot, std::vector<GeoWaypoint>& points) {
+// The robot's mission with its points' longitude and latitude.
+const ExportContext::MissionCache::Entry& placedMissionOf(const ExportContext& context, int robot) {
+    ExportContext::MissionCache::Entry& entry = missionEntryOf(context, robot);
+    std::call_once(entry.placed, [&] {
+        auto lonLats = lonLatsOf(context, entry.mission);
+        if (lonLats)
+            entry.lonLats = std::move(lonLats.value());
+        else
+            entry.placeError = lonLats.error();
+    });
+    return entry;
+}
+
+// Fills in the longitude and latitude of `points`, the path's points at `kept`. The robot's mission was made
+// from the same path and placed on WGS84 once for its waypoint files: a point where the mission's next point
+// lies takes its place from there, found walking the path and the mission side by side; the rest are
+// transformed all in one.
+Status placeOnWgs84(const ExportContext& context, int robot, const CoveragePath& path,
+                    const std::vector<std::size_t>& kept, std::vector<GeoWaypoint>& points) {
     const ExportContext::MissionCache::Entry& mission = placedMissionOf(context, robot);
-    std::unordered_map<PlaceKey, LonLat, PlaceKeyHash> placed;
-    if (mission.placeError.empty()) {
-        placed.reserve(mission.lonLats.size());
-        for (std::size_t i = 0; i < mission.lonLats.size(); ++i)
-            placed.emplace(PlaceKey{mission.mission.points[i].x, mission.mission.points[i].y},
-                           mission.lonLats[i]);
-    }
+    const std::vector<Waypoint>& missionPoints = mission.mission.points;
+    const std::size_t placed = mission.placeError.empty() ? mission.lonLats.size() : 0;
     std::vector<std::size_t> unplaced;
     std::vector<MapPoint> mapPoints;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const auto found = placed.find({points[i].waypoint.x, points[i].waypoint.y});
-        if (found != placed.end()) {
-            points[i].longitude = found->second.longitude;
-            points[i].latitude = found->second.latitude;
-            continue;
+    std::size_t next = 0; // the first mission point not met yet along the path
+    for (std::size_t index = 0, row = 0; index < path.waypoints.size() && row < kept.size(); ++index) {
+        const Waypoint& waypoint = path.waypoints[index];
+        const bool met =
+            next < placed && missionPoints[next].x == waypoint.x && missionPoints[next].y == waypoint.y;
+        if (kept[row] == index) {
+            if (met) {
+                points[row].longitude = mission.lonLats[next].longitude;
+                points[row].latitude = mission.lonLats[next].latitude;
+            } else {
+                unplaced.push_back(row);
+                mapPoints.push_back({waypoint.x, waypoint.y});
+            }
+            ++row;
         }
-        unplaced.push_back(i);
-        mapPoints.push_back({points[i].waypoint.x, points[i].waypoint.y});
+        if (met)
+            ++next;
     }
     if (unplaced.empty())
         return {};
@@ -117,7 +145,7 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
     for (const std::size_t index : kept)
         points.push_back({coverage->waypoints[index], seconds[index], std::nan(""), std::nan("")});
     if (context.georeference.hasCrs()) {
-        if (Status placed = placeOnWgs84(context, robot, points); !placed)
+        if (Status placed = placeOnWgs84(context, robot, *coverage, kept, points); !placed)
             return Result<Points>::failure(path + ": " + placed.error());
     }
     return points;
@@ -192,14 +220,6 @@ std::vector<GeoWaypoint> geoPoints(const AutopilotMission& mission, const Missio
     for (std::size_t i = part.first; i <= part.last; ++i)
         points.push_back({mission.points[i], 0.0, lonLats[i].longitude, lonLats[i].latitude});
     return points;
-}
-
-Result<std::vector<LonLat>> lonLatsOf(const ExportContext& context, const AutopilotMission& mission) {
-    std::vector<MapPoint> mapPoints;
-    mapPoints.reserve(mission.points.size());
-    for (const Waypoint& point : mission.points)
-        mapPoints.push_back({point.x, point.y});
-    return context.georeference.toWgs84(mapPoints);
 }
 
 int mavlinkVehicleType(VehicleType type) {
@@ -365,36 +385,6 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
             points[i].longitude, vehicle.altitudeMetres);
     }
     return text;
-}
-
-// The robot's cache entry, its mission made.
-ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context, int robot) {
-    std::shared_ptr<ExportContext::MissionCache::Entry> entry;
-    {
-        const std::lock_guard lock(context.missionCache->mutex);
-        auto& slot = context.missionCache->entries[robot];
-        if (!slot)
-            slot = std::make_shared<ExportContext::MissionCache::Entry>();
-        entry = slot;
-    }
-    std::call_once(entry->made, [&] {
-        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot))
-            entry->mission = autopilotMission(*coverage, context.vehicle(robot), context.settings);
-    });
-    return *entry; // the cache keeps it as long as the context
-}
-
-// The robot's mission with its points' longitude and latitude.
-const ExportContext::MissionCache::Entry& placedMissionOf(const ExportContext& context, int robot) {
-    ExportContext::MissionCache::Entry& entry = missionEntryOf(context, robot);
-    std::call_once(entry.placed, [&] {
-        auto lonLats = lonLatsOf(context, entry.mission);
-        if (lonLats)
-            entry.lonLats = std::move(lonLats.value());
-        else
-            entry.placeError = lonLats.error();
-    });
-    return entry;
 }
 
 using MissionText = std::string (*)(const AutopilotMission&, const MissionPart&,

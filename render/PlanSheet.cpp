@@ -35,7 +35,8 @@ QSize PlanSheet::fittedMapSize(const ClassGrid& grid, QSize maxSize) {
 void PlanSheet::prepareFonts() {
     QFont bold;
     bold.setBold(true);
-    // Measuring a text resolves its font, which reads fontconfig's files and caches once for the process.
+    // Measuring a text resolves its font: the font database (fontconfig's files and caches) is loaded once
+    // for the process; the font engine made here is this thread's and goes with it.
     static_cast<void>(QFontMetricsF(bold).horizontalAdvance(QStringLiteral("Coverage plan")));
 }
 

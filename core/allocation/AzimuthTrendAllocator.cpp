@@ -740,12 +740,13 @@ RegionAllocation AzimuthTrendAllocator::rebalance(const CellGraph& graph, const 
     // instead of 1.9 s); far more take longer (17.6 M cells with a fast robot, 13 662 moves: 23 s instead
     // of 16 s).
     constexpr double mostMoves = 4096.0;
-    progress.report("allocation", 0.0);
-    Allocation allocation(graph, startCells, progress);
-    if (division.robotOfCell.size() != graph.size() || !allocation.adopt(division) ||
-        allocation.movesToEvenOut() > mostMoves)
-        return allocate(graph, startCells, progress);
-    return evenedOut(allocation, graph, rebalanceIterations_, progress);
+    if (division.robotOfCell.size() == graph.size() && division.startCell == startCells) {
+        progress.report("allocation", 0.0);
+        Allocation allocation(graph, startCells, progress);
+        if (allocation.adopt(division) && allocation.movesToEvenOut() <= mostMoves)
+            return evenedOut(allocation, graph, rebalanceIterations_, progress);
+    } // gone before a new one is grown: on a large map each holds hundreds of megabytes
+    return allocate(graph, startCells, progress);
 }
 
 ParameterSpec AzimuthTrendAllocator::rebalanceIterationsParameter() {

@@ -19,8 +19,9 @@ class AzimuthTrendAllocator final : public RegionAllocator {
     [[nodiscard]] RegionAllocation allocate(const CellGraph& graph, const std::vector<int>& startCells,
                                             const ProgressReporter& progress) const override;
     // `division` evened out again after the cells' costs changed: its cells move along chains of adjacent
-    // regions while the largest cost falls, as after growth, without growing the regions anew. Grown anew
-    // when the division does not cover the map or is too far from even for moves one cell at a time.
+    // regions while the largest cost falls, as after growth (at most rebalance_iterations moves), without
+    // growing the regions anew. Grown anew when the division does not cover the map from these starts or is
+    // too far from even for moves one cell at a time.
     [[nodiscard]] RegionAllocation rebalance(const CellGraph& graph, const std::vector<int>& startCells,
                                              const RegionAllocation& division,
                                              const ProgressReporter& progress) const;

@@ -66,6 +66,11 @@ std::unique_ptr<OGRSpatialReference> wgs84SpatialReference() {
     return reference;
 }
 
+std::unique_ptr<OGRCoordinateTransformation> transformationBetween(const OGRSpatialReference& from,
+                                                                   const OGRSpatialReference& to) {
+    return std::unique_ptr<OGRCoordinateTransformation>(OGRCreateCoordinateTransformation(&from, &to));
+}
+
 std::string wktOf(const OGRSpatialReference& reference) {
     char* text = nullptr;
     const char* const options[] = {"FORMAT=WKT2_2019", "MULTILINE=NO", nullptr};

@@ -38,6 +38,9 @@ using DatasetPointer = std::unique_ptr<GDALDataset, DatasetCloser>;
 [[nodiscard]] std::unique_ptr<OGRSpatialReference>
 spatialReferenceFromDefinition(const std::string& definition);
 [[nodiscard]] std::unique_ptr<OGRSpatialReference> wgs84SpatialReference();
+// Null when PROJ finds no way from one to the other; GDAL's last error says why.
+[[nodiscard]] std::unique_ptr<OGRCoordinateTransformation>
+transformationBetween(const OGRSpatialReference& from, const OGRSpatialReference& to);
 [[nodiscard]] std::string wktOf(const OGRSpatialReference& reference);
 
 } // namespace mcpp::io::internal

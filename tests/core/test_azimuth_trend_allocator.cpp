@@ -263,15 +263,29 @@ class AzimuthTrendAllocatorTest : public QObject {
                  grown.robotOfCell);
     }
 
-    // A division that does not cover the map (here none at all) cannot be evened out: a new one is grown.
-    void rebalanceOfNoDivisionAllocatesAnew() {
+    // A division that does not cover the map cannot be evened out: none at all, one with a reachable cell
+    // left to no robot, one from other starts. A new one is grown, the same as allocate() grows.
+    void divisionNotCoveringTheMapIsGrownAnew() {
         std::mt19937 random(5);
         const PlanningProblem problem = uniformWithStarts(random, 4);
-        const Plan plan = allocateOnly(problem);
+        Plan plan = allocateOnly(problem);
+        chargeTurnsToFirstRobot(plan, 2.0, 0.2F);
         const AzimuthTrendAllocator allocator;
-        const RegionAllocation none;
-        QCOMPARE(allocator.rebalance(plan.cells, plan.regions.startCell, none, {}).robotOfCell,
-                 plan.regions.robotOfCell);
+        const std::vector<int>& starts = plan.regions.startCell;
+        const RegionAllocation grown = allocator.allocate(plan.cells, starts, {});
+        RegionAllocation withHole = plan.regions;
+        for (std::size_t cell = 0; cell < withHole.robotOfCell.size(); ++cell)
+            if (withHole.robotOfCell[cell] >= 0 &&
+                std::find(starts.begin(), starts.end(), static_cast<int>(cell)) == starts.end()) {
+                withHole.robotOfCell[cell] = -1;
+                break;
+            }
+        RegionAllocation otherStarts = plan.regions;
+        std::swap(otherStarts.startCell.front(), otherStarts.startCell.back());
+        for (const RegionAllocation& division : {RegionAllocation{}, withHole, otherStarts})
+            QCOMPARE(allocator.rebalance(plan.cells, starts, division, {}).robotOfCell, grown.robotOfCell);
+        // The same division whole is evened out where it stands, not grown anew.
+        QVERIFY(allocator.rebalance(plan.cells, starts, plan.regions, {}).robotOfCell != grown.robotOfCell);
     }
 };
 
