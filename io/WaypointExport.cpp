@@ -44,6 +44,7 @@ struct GeoWaypoint {
     double latitude = 0.0;
 };
 
+// Every point of the mission in longitude and latitude, in one transformation.
 Result<std::vector<LonLat>> lonLatsOf(const ExportContext& context, const AutopilotMission& mission) {
     std::vector<MapPoint> mapPoints;
     mapPoints.reserve(mission.points.size());
