@@ -3,6 +3,7 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningProblem.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/internal/CompressedReader.hpp"
 #include "io/internal/CompressedWriter.hpp"
@@ -144,7 +145,7 @@ CellGraph getCells(CompressedReader& in) {
         throw CompressedReader::DamagedData("a grid with no place on the map");
     // A grid no plan of this machine could have (planning refuses such maps) would make the outlines of a
     // restored plan allocate without bound.
-    if (static_cast<double>(frame.columns) * frame.rows * bytesPerBottomCell >
+    if (static_cast<double>(frame.columns) * frame.rows * static_cast<double>(leastBytesPerBottomCell()) >
         static_cast<double>(memoryBudgetBytes()))
         throw CompressedReader::DamagedData("a grid larger than this machine can plan");
     std::vector<Cell> cells(in.getCount(69));

@@ -73,7 +73,7 @@ void ClassTableBanner::refresh() {
     if (!sizeWarning_.isEmpty())
         parts << sizeWarning_;
     label_->setText(parts.join(QLatin1Char('\n')));
-    fitButton_->setVisible(!sizeWarning_.isEmpty());
+    fitButton_->setVisible(!sizeWarning_.isEmpty() && !fitButton_->text().isEmpty());
     // Fixed light colours with dark text read the same under light and dark desktop themes.
     setStyleSheet(isWarning()
                       ? QStringLiteral("#classTableBanner { background: #fff4d6; border: 1px solid #e0b84c; }"

@@ -2,7 +2,6 @@
 
 #include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
-#include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -679,6 +678,7 @@ void MainWindow::connectDocument() {
     connect(document_, &MissionDocument::settingsChanged, this, [this] {
         settingsPanel_->setChoice(document_->plannerChoice());
         showBatteryColumnForBatteryPlanners();
+        updateSizeWarning(); // planners need different memory per cell
     });
     connect(document_, &MissionDocument::classesChanged, this, &MainWindow::syncPresetCombo);
     connect(document_, &MissionDocument::classesChanged, this, &MainWindow::updateSizeWarning);
@@ -952,26 +952,32 @@ void MainWindow::updateSizeWarning() {
         fovMin = std::min(fovMin, entry.roundedMetres);
         levels = std::max(levels, entry.level);
     }
-    const QuadTreeGridSize size =
-        quadTreeGridSize(raster->grid.width(), raster->grid.height(), fovMin, levels);
-    const CellBudgetEstimate estimate = estimateCellBudget(fovMin, size.bottomColumns, size.bottomRows);
+    const auto planner = findPlannerDescription(document_->plannerChoice().planner);
+    const CellBudgetEstimate estimate =
+        estimateCellBudget(raster->grid.width(), raster->grid.height(), fovMin, levels,
+                           planner ? planner->bytesPerBottomCell : unmeasuredBytesPerBottomCell);
     if (estimate.fits()) {
         classTableBanner_->clearSizeWarning();
         return;
     }
     fitFactor_ = std::ceil(estimate.fittingFieldOfView / fovMin * 100.0) / 100.0;
-    const QString text = tr("Too fine to plan on this machine: the smallest FOV, %1 m, makes %2 million "
-                            "cells, which need %3 GB "
-                            "of memory; %4 GB are available. Scaling every FOV by %5 (smallest %6 m) fits.")
+    const QString need = tr("Too fine to plan on this machine: the smallest FOV, %1 m, makes %2 million "
+                            "cells, which need %3 GB of memory; %4 GB are available.")
                              .arg(fovMin)
                              .arg(static_cast<double>(estimate.bottomCells) / 1e6, 0, 'f', 1)
                              .arg(static_cast<double>(estimate.neededBytes) / 1e9, 0, 'f', 1)
-                             .arg(static_cast<double>(estimate.allowedBytes) / 1e9, 0, 'f', 1)
-                             .arg(fitFactor_)
-                             .arg(fovMin * fitFactor_);
+                             .arg(static_cast<double>(estimate.allowedBytes) / 1e9, 0, 'f', 1);
+    const QString text =
+        fitFactor_ > 0.0
+            ? need + QStringLiteral(" ") +
+                  tr("Scaling every FOV by %1 (smallest %2 m) fits.").arg(fitFactor_).arg(fovMin * fitFactor_)
+            : need + QStringLiteral(" ") +
+                  tr("No scaling fits while the FOVs need %1 quadtree levels: bring them closer.")
+                      .arg(levels);
     if (!classTableBanner_->hasSizeWarning())
         messageLog_->add(text);
-    classTableBanner_->showSizeWarning(text, tr("Scale FOVs ×%1").arg(fitFactor_));
+    classTableBanner_->showSizeWarning(text,
+                                       fitFactor_ > 0.0 ? tr("Scale FOVs ×%1").arg(fitFactor_) : QString());
 }
 
 void MainWindow::scaleFieldsOfViewToFit() {

@@ -16,8 +16,10 @@ ParameterSpec DecompositionOptions::blockedThresholdParameter() {
         "A smallest cell whose share of obstacle and outside pixels exceeds this is left out");
 }
 
-DecompositionOptions DecompositionOptions::from(const ParameterValues& values) {
+DecompositionOptions DecompositionOptions::from(const ParameterValues& values,
+                                                std::int64_t bytesPerBottomCell) {
     DecompositionOptions options;
+    options.bytesPerBottomCell = bytesPerBottomCell;
     if (values.has("purity_tolerance"))
         options.purityTolerance = values.real("purity_tolerance");
     if (values.has("blocked_threshold"))

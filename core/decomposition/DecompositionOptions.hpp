@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/MemoryBudget.hpp"
 #include "core/parameters/ParameterSpec.hpp"
 #include "core/parameters/ParameterValues.hpp"
 
@@ -12,11 +13,15 @@ struct DecompositionOptions {
     // A smallest cell (or sub-cell, for the grid planners) whose obstacle + outside fraction exceeds this
     // is blocked.
     double blockedThreshold = 0.5;
+    // The planner's peak memory per smallest cell: a grid needing more than the machine allows is refused
+    // before it is built.
+    std::int64_t bytesPerBottomCell = unmeasuredBytesPerBottomCell;
 
     [[nodiscard]] static ParameterSpec purityToleranceParameter();
     [[nodiscard]] static ParameterSpec blockedThresholdParameter();
     // The options from resolved parameter values; keys a planner does not declare keep their defaults.
-    [[nodiscard]] static DecompositionOptions from(const ParameterValues& values);
+    [[nodiscard]] static DecompositionOptions
+    from(const ParameterValues& values, std::int64_t bytesPerBottomCell = unmeasuredBytesPerBottomCell);
 };
 
 } // namespace mcpp

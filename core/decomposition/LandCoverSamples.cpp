@@ -1,5 +1,6 @@
 #include "core/decomposition/LandCoverSamples.hpp"
 
+#include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningError.hpp"
@@ -158,52 +159,55 @@ SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelC
     return samples;
 }
 
-CellBudgetEstimate estimateCellBudget(double fovMin, std::int64_t columns, std::int64_t rows) {
+CellBudgetEstimate estimateCellBudget(double width, double height, double fovMin, int levels,
+                                      std::int64_t bytesPerCell) {
+    const auto bottomCells = [&](double fov) {
+        const QuadTreeGridSize size = quadTreeGridSize(width, height, fov, levels);
+        return size.bottomColumns * size.bottomRows;
+    };
     CellBudgetEstimate estimate;
-    estimate.bottomCells = columns * rows;
+    estimate.bottomCells = bottomCells(fovMin);
     estimate.allowedBytes = memoryBudgetBytes();
-    estimate.neededBytes = estimate.bottomCells * bytesPerBottomCell;
+    estimate.neededBytes = estimate.bottomCells * bytesPerCell;
     estimate.fittingFieldOfView = fovMin;
     if (estimate.fits())
         return estimate;
-    // Cells shrink with the square of the field of view: the smallest FOV whose grid fits, rounded up.
-    const double width = static_cast<double>(columns) * 2.0 * fovMin;
-    const double height = static_cast<double>(rows) * 2.0 * fovMin;
+    // One top cell is the least a quadtree of these levels makes: where even that does not fit, no FOV does
+    // (fields of view far apart), and fittingFieldOfView stays 0.
     const double budget = static_cast<double>(estimate.allowedBytes);
+    estimate.fittingFieldOfView = 0.0;
+    if (std::ldexp(1.0, 2 * (levels - 1)) * static_cast<double>(bytesPerCell) > budget)
+        return estimate;
+    // Cells shrink with the square of the field of view: the smallest FOV whose grid fits, rounded up.
+    const auto step = [](double fov) { return std::pow(10.0, std::floor(std::log10(fov)) - 1.0); };
     double fitting = fovMin * std::sqrt(static_cast<double>(estimate.neededBytes) / budget);
-    const auto fits = [&](double fov) {
-        const double cells = std::ceil(width / (2.0 * fov)) * std::ceil(height / (2.0 * fov));
-        return cells * static_cast<double>(bytesPerBottomCell) <= budget;
-    };
-    const double step = std::pow(10.0, std::floor(std::log10(fitting)) - 1.0); // two significant digits
-    fitting = std::ceil(fitting / step) * step;
-    while (!fits(fitting))
-        fitting += step;
+    fitting = std::ceil(fitting / step(fitting)) * step(fitting); // two significant digits
+    while (static_cast<double>(bottomCells(fitting)) * static_cast<double>(bytesPerCell) > budget)
+        fitting += step(fitting);
     estimate.fittingFieldOfView = fitting;
     return estimate;
 }
 
-CellBudgetEstimate estimateCellBudgetForExtent(double width, double height, double fovMin) {
-    const auto cells = [fovMin](double length) {
-        return std::max<std::int64_t>(1,
-                                      static_cast<std::int64_t>(std::ceil(length / (2.0 * fovMin) - 1e-9)));
-    };
-    return estimateCellBudget(fovMin, cells(width), cells(height));
-}
-
-void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows) {
+void checkCellBudget(double width, double height, double fovMin, int levels, std::int64_t bytesPerCell) {
     // Said before any work starts, rather than failing for want of memory minutes later.
-    const CellBudgetEstimate estimate = estimateCellBudget(fovMin, columns, rows);
+    const CellBudgetEstimate estimate = estimateCellBudget(width, height, fovMin, levels, bytesPerCell);
     if (estimate.fits())
         return;
+    const QuadTreeGridSize size = quadTreeGridSize(width, height, fovMin, levels);
+    const std::string remedy =
+        estimate.fittingFieldOfView > 0.0
+            ? "A smallest field of view of " + describeMetres(estimate.fittingFieldOfView) +
+                  " m would fit: raise the field of view of the classes, or crop the raster"
+            : "No field of view fits while the classes' fields of view need a quadtree of " +
+                  std::to_string(levels) + " levels (a top cell spans " +
+                  std::to_string(std::int64_t{1} << (levels - 1)) +
+                  " bottom cells a side): bring them closer";
     throw PlanningError(Kind::InvalidParameter,
                         "the smallest field of view (" + describeMetres(fovMin) + " m) makes " +
-                            std::to_string(columns) + " x " + std::to_string(rows) +
+                            std::to_string(size.bottomColumns) + " x " + std::to_string(size.bottomRows) +
                             " bottom cells, which need " + describeGigabytes(estimate.neededBytes) +
                             " of memory to plan; this machine allows " +
-                            describeGigabytes(estimate.allowedBytes) + ". A smallest field of view of " +
-                            describeMetres(estimate.fittingFieldOfView) +
-                            " m would fit: raise the field of view of the classes, or crop the raster");
+                            describeGigabytes(estimate.allowedBytes) + ". " + remedy);
 }
 
 double overlapLength(double a0, double a1, double b0, double b1) {

@@ -51,21 +51,24 @@ void checkDecompositionInputs(const ClassGrid& grid, const ClassTable& classes,
 // pixel codes are moved in when the pixels themselves serve.
 [[nodiscard]] SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelCodes,
                                     double squareSize, std::int64_t columns, std::int64_t rows);
-// What planning a grid of columns x rows smallest cells needs against memoryBudgetBytes(), and the
-// smallest FOV whose grid over the same extent fits (two significant digits, rounded up).
+// What planning a map needs against memoryBudgetBytes(), and the smallest FOV whose grid over the same
+// extent fits (two significant digits, rounded up).
 struct CellBudgetEstimate {
     std::int64_t bottomCells = 0;
     std::int64_t neededBytes = 0;
     std::int64_t allowedBytes = 0;
-    double fittingFieldOfView = 0.0; // the FOV itself when it fits
+    double fittingFieldOfView = 0.0; // the FOV itself when it fits; 0 when no FOV does
     [[nodiscard]] bool fits() const { return neededBytes <= allowedBytes; }
 };
-[[nodiscard]] CellBudgetEstimate estimateCellBudget(double fovMin, std::int64_t columns, std::int64_t rows);
-// The same for a map of this extent in metres, cells of 2 x fovMin (before the quadtree's rounding up).
-[[nodiscard]] CellBudgetEstimate estimateCellBudgetForExtent(double width, double height, double fovMin);
-// Throws PlanningError when a grid of columns x rows smallest cells would need more memory than
-// memoryBudgetBytes() allows, naming the FOV that makes it so and the smallest FOV that would fit.
-void checkCellBudget(double fovMin, std::int64_t columns, std::int64_t rows);
+// A map of width x height metres planned on smallest cells of 2 x fovMin, as many as whole top cells of a
+// quadtree of `levels` levels hold (1: a uniform grid), at bytesPerCell each (the planner's peak memory per
+// smallest cell, PlannerDescription::bytesPerBottomCell). The fitting FOV is searched on the same grid:
+// every FOV scaled alike keeps the levels.
+[[nodiscard]] CellBudgetEstimate estimateCellBudget(double width, double height, double fovMin, int levels,
+                                                    std::int64_t bytesPerCell);
+// Throws PlanningError when that grid would need more memory than memoryBudgetBytes() allows, naming the
+// FOV that makes it so and the smallest FOV that would fit.
+void checkCellBudget(double width, double height, double fovMin, int levels, std::int64_t bytesPerCell);
 
 // Length of the overlap of [a0, a1) and [b0, b1).
 [[nodiscard]] double overlapLength(double a0, double a1, double b0, double b1);

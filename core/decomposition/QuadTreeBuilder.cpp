@@ -71,7 +71,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     tree.topRows = size.topRows;
     const std::int64_t bottomColumns = size.bottomColumns;
     const std::int64_t bottomRows = size.bottomRows;
-    checkCellBudget(fovMin, bottomColumns, bottomRows);
+    checkCellBudget(grid.width(), grid.height(), fovMin, levels, options.bytesPerBottomCell);
     if (levels > mostQuadTreeLevels)
         throwTooManyLevels(levels);
     const SampleGrid samples =

@@ -83,7 +83,7 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
     shape.cellSize = 2.0 * fovMin;
     shape.columns = std::max(1, static_cast<int>(std::ceil(grid.width() / shape.cellSize - 1e-9)));
     shape.rows = std::max(1, static_cast<int>(std::ceil(grid.height() / shape.cellSize - 1e-9)));
-    checkCellBudget(fovMin, shape.columns, shape.rows);
+    checkCellBudget(grid.width(), grid.height(), fovMin, 1, options_.bytesPerBottomCell);
     progress.throwIfCancelled();
 
     const std::vector<PixelCodes::DenseClass> dense = pixels.classes;

@@ -1,7 +1,9 @@
 #pragma once
 
+#include "core/model/MemoryBudget.hpp"
 #include "core/parameters/ParameterSpec.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,9 @@ struct PlannerDescription {
     bool simulatesEvents = false; // plays the problem's events; other planners warn that they ignore them
     PlannerPromises promises;
     std::vector<ParameterSpec> parameters; // the planner's and its stages', then those every planner has
+    // Peak memory per cell of the finest grid, outputs included: a map that would need more than the
+    // machine allows is refused before any work starts, naming a field of view that fits.
+    std::int64_t bytesPerBottomCell = unmeasuredBytesPerBottomCell;
 
     // Robots fly on batteries (it declares battery_s): their own batteries and chargers matter to it.
     [[nodiscard]] bool fliesOnBatteries() const {

@@ -11,6 +11,7 @@
 #include "core/planners/SpiralStcPlanner.hpp"
 #include "core/planners/WavefrontBatteryPlanner.hpp"
 
+#include <algorithm>
 #include <functional>
 
 namespace mcpp {
@@ -59,6 +60,13 @@ std::optional<PlannerDescription> findPlannerDescription(const std::string& name
         if (description.name == name)
             return description;
     return std::nullopt;
+}
+
+std::int64_t leastBytesPerBottomCell() {
+    std::int64_t least = unmeasuredBytesPerBottomCell;
+    for (const PlannerDescription& description : plannerDescriptions())
+        least = std::min(least, description.bytesPerBottomCell);
+    return least;
 }
 
 std::string unknownPlannerMessage(const std::string& name) {

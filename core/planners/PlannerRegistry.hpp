@@ -16,6 +16,9 @@ namespace mcpp {
 [[nodiscard]] std::vector<std::string> availablePlanners();
 // The description of the planner of that name, or nothing.
 [[nodiscard]] std::optional<PlannerDescription> findPlannerDescription(const std::string& name);
+// The least memory per cell of the finest grid any planner declares: no plan of a larger grid fits the
+// budget.
+[[nodiscard]] std::int64_t leastBytesPerBottomCell();
 // "unknown planner \"x\" (available: a, b, c)"
 [[nodiscard]] std::string unknownPlannerMessage(const std::string& name);
 // Nullptr when the name is unknown; an empty name is the default planner.

@@ -5,6 +5,7 @@
 #include "core/model/ProgressReporter.hpp"
 
 #include <chrono>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,9 +17,9 @@ namespace mcpp {
 class PlanningRun {
   public:
     PlanningRun(const PlanningProblem& problem, ParameterValues parameters, const ProgressReporter& progress,
-                Plan& plan)
+                Plan& plan, std::int64_t bytesPerBottomCell)
         : problem_(problem), parameters_(std::move(parameters)), progress_(progress), plan_(plan),
-          starts_(problem.starts) {}
+          starts_(problem.starts), bytesPerBottomCell_(bytesPerBottomCell) {}
 
     [[nodiscard]] const PlanningProblem& problem() const { return problem_; }
     // Every declared parameter, checked, defaults filled in.
@@ -26,6 +27,8 @@ class PlanningRun {
     [[nodiscard]] const ProgressReporter& progress() const { return progress_; }
     [[nodiscard]] Plan& plan() { return plan_; }
     [[nodiscard]] const std::vector<MapPoint>& starts() const { return starts_; }
+    // The planner's peak memory per cell of the finest grid (PlannerDescription::bytesPerBottomCell).
+    [[nodiscard]] std::int64_t bytesPerBottomCell() const { return bytesPerBottomCell_; }
 
     // Runs one stage of the planner and records how long it took under its name.
     template <typename Work> auto stage(const char* name, Work&& work) {
@@ -52,6 +55,7 @@ class PlanningRun {
     const ProgressReporter& progress_;
     Plan& plan_;
     std::vector<MapPoint> starts_;
+    std::int64_t bytesPerBottomCell_;
 };
 
 } // namespace mcpp

@@ -11,7 +11,8 @@ namespace mcpp {
 CellGraph quadTreeStage(PlanningRun& run) {
     QuadTree tree = run.stage("quadtree", [&] {
         return QuadTreeBuilder{}.build(run.problem().grid, run.problem().classes,
-                                       DecompositionOptions::from(run.parameters()), run.progress());
+                                       DecompositionOptions::from(run.parameters(), run.bytesPerBottomCell()),
+                                       run.progress());
     });
     return run.stage("topology", [&] {
         run.progress().report("topology", 0.0);

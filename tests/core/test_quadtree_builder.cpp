@@ -2,6 +2,7 @@
 #include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningError.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -271,10 +272,93 @@ class QuadTreeBuilderTest : public QObject {
                          error.what());
             }
         }
+        // With several levels the grid rounds up to whole top cells: the FOV named as fitting is searched on
+        // that grid, so a table scaled to it is built.
+        {
+            const BudgetForScope small(std::int64_t{40} * 1000 * 1000); // 100 000 cells at 400 bytes
+            ClassGrid twoClasses = filledGrid(1030, 1030, 1);
+            for (std::size_t pixel = 0; pixel < twoClasses.values.size(); pixel += 7)
+                twoClasses.values[pixel] = 2;
+            try {
+                (void)QuadTreeBuilder{}.build(
+                    twoClasses,
+                    ClassTable({{1, "grass", 0, 1.0, 1.0, true}, {2, "scrub", 0, 1.0, 8.0, true}}), {});
+                QFAIL("a grid above the memory budget must be refused");
+            } catch (const PlanningError& error) {
+                const std::string message = error.what();
+                const std::string marker = "A smallest field of view of ";
+                const auto at = message.find(marker);
+                QVERIFY2(at != std::string::npos, error.what());
+                const double fitting = std::stod(message.substr(at + marker.size()));
+                const QuadTree tree =
+                    QuadTreeBuilder{}.build(twoClasses,
+                                            ClassTable({{1, "grass", 0, 1.0, fitting, true},
+                                                        {2, "scrub", 0, 1.0, 8.0 * fitting, true}}),
+                                            {});
+                QVERIFY(tree.levels == 4);
+            }
+        }
+        // Fields of view far apart make a quadtree whose one top cell is already too much: no FOV is named
+        // as fitting, the message says why instead (and is reached at once).
+        {
+            const BudgetForScope small(std::int64_t{400} * 1000 * 1000);
+            ClassGrid twoClasses = filledGrid(100, 100, 1);
+            twoClasses.values[0] = 2;
+            try {
+                (void)QuadTreeBuilder{}.build(
+                    twoClasses,
+                    ClassTable({{1, "grass", 0, 1.0, 1.0, true}, {2, "sea", 0, 1.0, 4096.0, true}}), {});
+                QFAIL("a quadtree of 13 levels cannot fit 0.4 GB");
+            } catch (const PlanningError& error) {
+                const std::string message = error.what();
+                QVERIFY2(message.find(
+                             "No field of view fits while the classes' fields of view need a quadtree of 13 "
+                             "levels (a top cell spans 4096 bottom cells a side)") != std::string::npos,
+                         error.what());
+                QVERIFY2(message.find("A smallest field of view") == std::string::npos, error.what());
+            }
+        }
+        // A planner measured at scale declares what it takes per cell, and is held to that figure alone.
+        {
+            const BudgetForScope small(std::int64_t{300} * 1000 * 1000); // a million cells at 300 bytes
+            DecompositionOptions measured;
+            measured.bytesPerBottomCell = 250;
+            const QuadTree tree = QuadTreeBuilder{}.build(
+                filledGrid(1000, 1000, 1, 2.0), ClassTable({{1, "grass", 0, 1.0, 1.0, true}}), measured);
+            QCOMPARE(tree.activeCount(), std::size_t{1000000});
+            QVERIFY_THROWS_EXCEPTION(
+                PlanningError, (void)QuadTreeBuilder{}.build(filledGrid(1000, 1000, 1, 2.0),
+                                                             ClassTable({{1, "grass", 0, 1.0, 1.0, true}}),
+                                                             DecompositionOptions{}));
+        }
         DecompositionOptions badPurity;
         badPurity.purityTolerance = std::nan("");
         QVERIFY_THROWS_EXCEPTION(PlanningError,
                                  (void)QuadTreeBuilder{}.build(filledGrid(4, 4, 1), table, badPurity));
+    }
+
+    // Each planner is refused by its own figure: MCPP-MLCT, measured on large maps, plans a grid that a
+    // planner at the unmeasured figure is refused, with the memory message.
+    void plannersAreHeldToTheirOwnMemoryFigure() {
+        const std::int64_t mlctBytes = findPlannerDescription("mcpp-mlct")->bytesPerBottomCell;
+        QVERIFY(mlctBytes < unmeasuredBytesPerBottomCell);
+        QCOMPARE(findPlannerDescription("darp")->bytesPerBottomCell, unmeasuredBytesPerBottomCell);
+        QCOMPARE(leastBytesPerBottomCell(), mlctBytes);
+        PlanningProblem problem = test::obstacleGridProblem(49, 2, 2020); // 49 x 49 cells of 10 m
+        const std::int64_t cells = 49 * 49;
+        const BudgetForScope between(cells * (mlctBytes + unmeasuredBytesPerBottomCell) / 2);
+        for (const std::string name : {"mcpp-mlct", "darp"}) {
+            problem.planner = defaultPlannerChoice(name);
+            try {
+                const Plan plan = makePlanner(name)->plan(problem, {});
+                QVERIFY2(name == "mcpp-mlct", name.c_str());
+                QCOMPARE(plan.paths.size(), std::size_t{2});
+            } catch (const PlanningError& error) {
+                QVERIFY2(name == "darp", error.what());
+                QVERIFY2(std::string(error.what()).find("49 x 49 bottom cells") != std::string::npos,
+                         error.what());
+            }
+        }
     }
 };
 
