@@ -598,6 +598,12 @@ class TestMainWindow : public QObject {
                     .activeCount() > 0);
         window.undoStack()->undo();
         QVERIFY(banner->hasSizeWarning());
+        // A planner not measured at scale needs more per cell: the warning follows the planner chosen.
+        const QString mlctWarning = banner->text();
+        window.document()->setPlannerChoice(switchPlanner(window.document()->plannerChoice(), "darp"));
+        QVERIFY(banner->hasSizeWarning());
+        QVERIFY2(banner->text() != mlctWarning, qPrintable(banner->text()));
+        QVERIFY2(banner->text().contains(QStringLiteral("5.8 GB of memory")), qPrintable(banner->text()));
         setMemoryBudgetBytes(budget);
     }
 
