@@ -74,6 +74,26 @@ namespace mcpp::ui {
 
 namespace {
 
+// The size warning: what the map needs against what the machine allows, and what fits.
+QString tooFineText(const CellBudgetEstimate& estimate, double fovMin, int levels, double fitFactor) {
+    const QString need = QObject::tr("Too fine to plan on this machine: the smallest FOV, %1 m, makes %2 "
+                                     "million cells, which need %3 GB of memory; %4 GB are available.")
+                             .arg(fovMin)
+                             .arg(static_cast<double>(estimate.bottomCells) / 1e6, 0, 'f', 1)
+                             .arg(static_cast<double>(estimate.neededBytes) / 1e9, 0, 'f', 1)
+                             .arg(static_cast<double>(estimate.allowedBytes) / 1e9, 0, 'f', 1);
+    if (fitFactor > 0.0)
+        return need + QStringLiteral(" ") +
+               QObject::tr("Scaling every FOV by %1 (smallest %2 m) fits.")
+                   .arg(fitFactor)
+                   .arg(fovMin * fitFactor);
+    if (levels > 1)
+        return need + QStringLiteral(" ") +
+               QObject::tr("No scaling fits while the FOVs need %1 quadtree levels: bring them closer.")
+                   .arg(levels);
+    return need;
+}
+
 const QString kRasterFolderKey = QStringLiteral("folders/raster");
 const QString kMissionFolderKey = QStringLiteral("folders/mission");
 const QString kExportFolderKey = QStringLiteral("folders/export");
@@ -952,7 +972,11 @@ void MainWindow::updateSizeWarning() {
         fovMin = std::min(fovMin, entry.roundedMetres);
         levels = std::max(levels, entry.level);
     }
-    const auto planner = findPlannerDescription(document_->plannerChoice().planner);
+    // As the chosen planner will plan: its cells (quadtree or uniform grid) and its memory per cell.
+    const PlannerChoice& choice = document_->plannerChoice();
+    const auto planner = findPlannerDescription(choice.planner);
+    if (planner && !planner->plansOnQuadTree(choice.parameters))
+        levels = 1;
     const CellBudgetEstimate estimate =
         estimateCellBudget(raster->grid.width(), raster->grid.height(), fovMin, levels,
                            planner ? planner->bytesPerBottomCell : unmeasuredBytesPerBottomCell);
@@ -960,20 +984,9 @@ void MainWindow::updateSizeWarning() {
         classTableBanner_->clearSizeWarning();
         return;
     }
-    fitFactor_ = std::ceil(estimate.fittingFieldOfView / fovMin * 100.0) / 100.0;
-    const QString need = tr("Too fine to plan on this machine: the smallest FOV, %1 m, makes %2 million "
-                            "cells, which need %3 GB of memory; %4 GB are available.")
-                             .arg(fovMin)
-                             .arg(static_cast<double>(estimate.bottomCells) / 1e6, 0, 'f', 1)
-                             .arg(static_cast<double>(estimate.neededBytes) / 1e9, 0, 'f', 1)
-                             .arg(static_cast<double>(estimate.allowedBytes) / 1e9, 0, 'f', 1);
-    const QString text =
-        fitFactor_ > 0.0
-            ? need + QStringLiteral(" ") +
-                  tr("Scaling every FOV by %1 (smallest %2 m) fits.").arg(fitFactor_).arg(fovMin * fitFactor_)
-            : need + QStringLiteral(" ") +
-                  tr("No scaling fits while the FOVs need %1 quadtree levels: bring them closer.")
-                      .arg(levels);
+    // The rounding margin keeps 1.7000000000000002 at 1.70.
+    fitFactor_ = std::ceil(estimate.fittingFieldOfView / fovMin * 100.0 - 1e-9) / 100.0;
+    const QString text = tooFineText(estimate, fovMin, levels, fitFactor_);
     if (!classTableBanner_->hasSizeWarning())
         messageLog_->add(text);
     classTableBanner_->showSizeWarning(text,

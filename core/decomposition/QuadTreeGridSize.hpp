@@ -6,6 +6,7 @@ namespace mcpp {
 
 // The quadtree's grid over a map: whole top cells of 2^(levels - 1) smallest cells (2 x fovMin) across it.
 // One rule for the decomposition and for estimates made before planning (the window's size warning).
+// levels: 1 to 20 (more would overflow the bottom counts).
 struct QuadTreeGridSize {
     double topCellSize = 0.0;
     int topColumns = 1;

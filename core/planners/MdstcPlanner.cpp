@@ -102,6 +102,8 @@ PlannerDescription MdstcPlanner::describe() const {
     description.summary =
         "regions re-divided while robots drive, for missions where robots slow down or stop";
     description.simulatesEvents = true;
+    description.quadTreeCells = true;
+    description.quadTreeSwitch = quadTreeKey;
     // A region may gain cells it reaches only by a detour, through other regions.
     description.promises.regionsConnected = false;
     description.promises.pathsCoverOwnRegion = false;

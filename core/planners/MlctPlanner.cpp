@@ -37,9 +37,11 @@ PlannerDescription MlctPlanner::describe() const {
         DecompositionOptions::purityToleranceParameter(), DecompositionOptions::blockedThresholdParameter(),
         AzimuthTrendAllocator::rebalanceIterationsParameter(), BorderStraightening::slackParameter(),
         SpanningTreeCoverage::closedTourParameter()};
-    // Measured peaks, outputs included: 244 bytes a cell on 17.6 M cells with a fast robot (the turn balance
-    // plans a second division), 212 on a 48 M-cell tile (docs/benchmarks.md); with room to spare.
+    // Measured peaks, outputs included: 244 bytes a bottom cell on 18.06 M (forest-4250 with a fast robot:
+    // the turn balance plans a second division), 212 on a 48 M-cell tile (docs/benchmarks.md); with room to
+    // spare.
     description.bytesPerBottomCell = 280;
+    description.quadTreeCells = true;
     return description;
 }
 

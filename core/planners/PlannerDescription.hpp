@@ -2,6 +2,7 @@
 
 #include "core/model/MemoryBudget.hpp"
 #include "core/parameters/ParameterSpec.hpp"
+#include "core/parameters/ParameterValues.hpp"
 
 #include <cstdint>
 #include <string>
@@ -31,6 +32,16 @@ struct PlannerDescription {
     // Peak memory per cell of the finest grid, outputs included: a map that would need more than the
     // machine allows is refused before any work starts, naming a field of view that fits.
     std::int64_t bytesPerBottomCell = unmeasuredBytesPerBottomCell;
+    // Plans on the quadtree whose cells grow with each field of view, rather than on the uniform grid of
+    // 2 x the smallest FOV; where quadTreeSwitch names a boolean parameter, that parameter chooses.
+    bool quadTreeCells = false;
+    std::string quadTreeSwitch;
+
+    [[nodiscard]] bool plansOnQuadTree(const ParameterValues& values) const {
+        if (!quadTreeSwitch.empty() && values.has(quadTreeSwitch))
+            return values.boolean(quadTreeSwitch);
+        return quadTreeCells;
+    }
 
     // Robots fly on batteries (it declares battery_s): their own batteries and chargers matter to it.
     [[nodiscard]] bool fliesOnBatteries() const {

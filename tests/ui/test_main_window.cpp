@@ -598,12 +598,18 @@ class TestMainWindow : public QObject {
                     .activeCount() > 0);
         window.undoStack()->undo();
         QVERIFY(banner->hasSizeWarning());
-        // A planner not measured at scale needs more per cell: the warning follows the planner chosen.
+        // A planner not measured at scale needs more per cell, and a grid planner plans on the uniform grid
+        // of 2 x the smallest FOV (no top cells to round up to): the warning follows the planner chosen.
         const QString mlctWarning = banner->text();
         window.document()->setPlannerChoice(switchPlanner(window.document()->plannerChoice(), "darp"));
         QVERIFY(banner->hasSizeWarning());
         QVERIFY2(banner->text() != mlctWarning, qPrintable(banner->text()));
-        QVERIFY2(banner->text().contains(QStringLiteral("5.8 GB of memory")), qPrintable(banner->text()));
+        const ClassGrid& grid = *window.document()->grid();
+        const double gridCells = std::ceil(grid.width() / (2.0 * forestBefore) - 1e-9) *
+                                 std::ceil(grid.height() / (2.0 * forestBefore) - 1e-9);
+        const QString darpNeed =
+            QStringLiteral("%1 GB of memory").arg(gridCells * unmeasuredBytesPerBottomCell / 1e9, 0, 'f', 1);
+        QVERIFY2(banner->text().contains(darpNeed), qPrintable(banner->text() + " / " + darpNeed));
         setMemoryBudgetBytes(budget);
     }
 
