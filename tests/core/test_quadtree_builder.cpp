@@ -273,8 +273,8 @@ class QuadTreeBuilderTest : public QObject {
             }
         }
         // With several levels the grid rounds up to whole top cells: the FOV named as fitting is searched on
-        // that grid, so a table scaled to it is built (on the grid without that rounding, 1.6 m would seem to
-        // fit: 313 x 313 cells, but a quadtree of 25.6 m top cells makes 320 x 320).
+        // that grid, so a table scaled to it is built (a search without that rounding named 1.6 m, 315 x 315
+        // cells, but a quadtree of 25.6 m top cells makes 320 x 320).
         {
             const BudgetForScope small(std::int64_t{40} * 1000 * 1000); // 100 000 cells at 400 bytes
             ClassGrid twoClasses = filledGrid(1000, 1000, 1);
