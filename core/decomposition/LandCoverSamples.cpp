@@ -14,9 +14,6 @@
 namespace mcpp {
 namespace {
 
-// Past this many levels a quadtree's bottom counts would overflow (QuadTreeBuilder refuses such trees).
-constexpr int mostCountedLevels = 20;
-
 using Kind = PlanningError::Kind;
 
 std::string describePair(double x, double y) {
@@ -167,15 +164,14 @@ CellBudgetEstimate estimateCellBudget(double width, double height, double fovMin
                                       std::int64_t bytesPerCell) {
     // Counted in doubles: a field of view of micrometres makes more cells than 64 bits hold.
     const auto bottomCells = [&](double fov) {
-        const QuadTreeGridSize size =
-            quadTreeGridSize(width, height, fov, std::min(levels, mostCountedLevels));
+        const QuadTreeGridSize size = quadTreeGridSize(width, height, fov, std::min(levels, mostSizedLevels));
         return static_cast<double>(size.bottomColumns) * static_cast<double>(size.bottomRows);
     };
     const auto saturated = [](double count) {
         return count < 9e18 ? static_cast<std::int64_t>(count) : std::numeric_limits<std::int64_t>::max();
     };
     const double cells =
-        levels > mostCountedLevels ? std::numeric_limits<double>::infinity() : bottomCells(fovMin);
+        levels > mostSizedLevels ? std::numeric_limits<double>::infinity() : bottomCells(fovMin);
     CellBudgetEstimate estimate;
     estimate.bottomCells = saturated(cells);
     estimate.allowedBytes = memoryBudgetBytes();
@@ -187,7 +183,7 @@ CellBudgetEstimate estimateCellBudget(double width, double height, double fovMin
     // (fields of view far apart), and fittingFieldOfView stays 0.
     const double budget = static_cast<double>(estimate.allowedBytes);
     estimate.fittingFieldOfView = 0.0;
-    if (levels > mostCountedLevels ||
+    if (levels > mostSizedLevels ||
         std::ldexp(1.0, 2 * (levels - 1)) * static_cast<double>(bytesPerCell) > budget)
         return estimate;
     // Cells shrink with the square of the field of view: the smallest FOV whose grid fits, rounded up.
@@ -205,17 +201,16 @@ void checkCellBudget(double width, double height, double fovMin, int levels, std
     const CellBudgetEstimate estimate = estimateCellBudget(width, height, fovMin, levels, bytesPerCell);
     if (estimate.fits())
         return;
-    const QuadTreeGridSize size =
-        quadTreeGridSize(width, height, fovMin, std::min(levels, mostCountedLevels));
-    std::string remedy = "A smallest field of view of " + describeMetres(estimate.fittingFieldOfView) +
-                         " m would fit: raise the field of view of the classes, or crop the raster";
-    if (!(estimate.fittingFieldOfView > 0.0) && levels > 1)
+    const QuadTreeGridSize size = quadTreeGridSize(width, height, fovMin, std::min(levels, mostSizedLevels));
+    std::string remedy = "Not even one cell fits in the memory allowed";
+    if (estimate.fittingFieldOfView > 0.0)
+        remedy = "A smallest field of view of " + describeMetres(estimate.fittingFieldOfView) +
+                 " m would fit: raise the field of view of the classes, or crop the raster";
+    else if (levels > 1)
         remedy = "No field of view fits while the classes' fields of view need a quadtree of " +
                  std::to_string(levels) + " levels (a top cell spans " +
                  std::to_string(std::int64_t{1} << std::min(levels - 1, 62)) +
                  " bottom cells a side): bring them closer";
-    else if (!(estimate.fittingFieldOfView > 0.0))
-        remedy = "Not even one cell fits in the memory allowed";
     throw PlanningError(Kind::InvalidParameter,
                         "the smallest field of view (" + describeMetres(fovMin) + " m) makes " +
                             std::to_string(size.bottomColumns) + " x " + std::to_string(size.bottomRows) +

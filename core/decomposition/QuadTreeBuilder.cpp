@@ -55,10 +55,9 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
             if (dense[code].value == rounded.classValue)
                 levelOfCode[code] = rounded.level;
     }
-    // Past 20 levels the grid's size in bottom cells would overflow; the budget's message, which says what
-    // field of view fits, goes first for the rest.
-    constexpr int levelsBeforeOverflow = 20;
-    if (levels > levelsBeforeOverflow)
+    // Past mostSizedLevels the grid's size in bottom cells would overflow; the budget's message, which says
+    // what field of view fits, goes first for the rest.
+    if (levels > mostSizedLevels)
         throwTooManyLevels(levels);
     tree.levels = levels;
     tree.fovMin = fovMin;
