@@ -75,13 +75,17 @@ namespace mcpp::ui {
 namespace {
 
 // The size warning: what the map needs against what the machine allows, and what fits.
-QString tooFineText(const CellBudgetEstimate& estimate, double fovMin, int levels, double fitFactor) {
-    const QString need = QObject::tr("Too fine to plan on this machine: the smallest FOV, %1 m, makes %2 "
-                                     "million cells, which need %3 GB of memory; %4 GB are available.")
-                             .arg(fovMin)
-                             .arg(static_cast<double>(estimate.bottomCells) / 1e6, 0, 'f', 1)
-                             .arg(static_cast<double>(estimate.neededBytes) / 1e9, 0, 'f', 1)
-                             .arg(static_cast<double>(estimate.allowedBytes) / 1e9, 0, 'f', 1);
+// The planner is named: planners need different memory per cell.
+QString tooFineText(const QString& planner, const CellBudgetEstimate& estimate, double fovMin, int levels,
+                    double fitFactor) {
+    const QString need =
+        QObject::tr("Too fine to plan with %1 on this machine: the smallest FOV, %2 m, makes "
+                    "%3 million cells, which need %4 GB of memory; %5 GB are available.")
+            .arg(planner)
+            .arg(fovMin)
+            .arg(static_cast<double>(estimate.bottomCells) / 1e6, 0, 'f', 1)
+            .arg(static_cast<double>(estimate.neededBytes) / 1e9, 0, 'f', 1)
+            .arg(static_cast<double>(estimate.allowedBytes) / 1e9, 0, 'f', 1);
     if (fitFactor > 0.0)
         return need + QStringLiteral(" ") +
                QObject::tr("Scaling every FOV by %1 (smallest %2 m) fits.")
@@ -986,7 +990,8 @@ void MainWindow::updateSizeWarning() {
     }
     // The rounding margin keeps 1.7000000000000002 at 1.70.
     fitFactor_ = std::ceil(estimate.fittingFieldOfView / fovMin * 100.0 - 1e-9) / 100.0;
-    const QString text = tooFineText(estimate, fovMin, levels, fitFactor_);
+    const QString text = tooFineText(planner ? QString::fromStdString(planner->label) : tr("this planner"),
+                                     estimate, fovMin, levels, fitFactor_);
     if (!classTableBanner_->hasSizeWarning())
         messageLog_->add(text);
     classTableBanner_->showSizeWarning(text,

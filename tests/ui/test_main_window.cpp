@@ -579,7 +579,8 @@ class TestMainWindow : public QObject {
         ui::ClassTableBanner* banner = window.classTableBanner();
         QVERIFY(banner->hasSizeWarning());
         QVERIFY(banner->isWarning());
-        QVERIFY2(banner->text().contains(QStringLiteral("Too fine")), qPrintable(banner->text()));
+        QVERIFY2(banner->text().contains(QStringLiteral("Too fine to plan with MCPP-MLCT")),
+                 qPrintable(banner->text()));
         auto* fit = banner->findChild<QPushButton*>(QStringLiteral("classTableFitButton"));
         QVERIFY(fit != nullptr && fit->isVisible());
         const double forestBefore = window.document()->classes().find(4)->fieldOfViewMetres;
@@ -604,6 +605,7 @@ class TestMainWindow : public QObject {
         window.document()->setPlannerChoice(switchPlanner(window.document()->plannerChoice(), "darp"));
         QVERIFY(banner->hasSizeWarning());
         QVERIFY2(banner->text() != mlctWarning, qPrintable(banner->text()));
+        QVERIFY2(banner->text().contains(QStringLiteral("with DARP")), qPrintable(banner->text()));
         const ClassGrid& grid = *window.document()->grid();
         const double gridCells = std::ceil(grid.width() / (2.0 * forestBefore) - 1e-9) *
                                  std::ceil(grid.height() / (2.0 * forestBefore) - 1e-9);
