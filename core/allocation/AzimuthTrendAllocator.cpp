@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 
 namespace mcpp {
 namespace {
@@ -250,9 +251,13 @@ class Allocation {
         ++receiver.cells;
         updateCentre(robot);
         owner_[static_cast<std::size_t>(cell)] = robot;
-        facingFrom_ = -1;
-        if (!boundaryIndex_.empty())
+        if (!boundaryIndex_.empty()) {
             updateBoundaryAround(cell);
+            forgetFacingAround(cell, previous);
+            if (previous >= 0)
+                regionVersion_[static_cast<std::size_t>(previous)] = ++lastVersion_;
+            regionVersion_[static_cast<std::size_t>(robot)] = ++lastVersion_;
+        }
     }
 
     void pushNeighbours(int robot, int cell) {
@@ -308,6 +313,22 @@ class Allocation {
     static constexpr std::size_t wideSearch = 256;
 
     bool removalKeepsConnected(int cell, std::size_t searchLimit = wideSearch) {
+        if (regionVersion_.empty())
+            return checkRemoval(cell, searchLimit);
+        // While regions are evened out, most checks fall on regions no move has changed since they were
+        // made. The answer depends on the owner's cells alone, so it holds while the owner's version does.
+        const int owner = owner_[static_cast<std::size_t>(cell)];
+        const std::uint64_t version = regionVersion_[static_cast<std::size_t>(owner)];
+        const std::uint64_t key = static_cast<std::uint64_t>(cell) * 2 + (searchLimit == wideSearch ? 1 : 0);
+        const auto [entry, added] = removalKnown_.try_emplace(key, 0);
+        if (!added && entry->second >> 1 == version)
+            return (entry->second & 1) != 0;
+        const bool removable = checkRemoval(cell, searchLimit);
+        entry->second = version << 1 | (removable ? 1 : 0);
+        return removable;
+    }
+
+    bool checkRemoval(int cell, std::size_t searchLimit) {
         if (connectivity_.canRemove(cell, owner_, searchLimit))
             return true;
         // A cell none of its region touches can go as long as it is not the region's last.
@@ -448,7 +469,12 @@ class Allocation {
 
     // Boundary cells of each region (a neighbour belongs to another robot), kept up to date on every move.
     void buildBoundaries() {
-        facingFrom_ = -1; // the facing lists follow the boundary lists' order
+        // The facing lists follow the boundary lists' order.
+        facingByRegion_.assign(robots_.size(), {});
+        facingKnown_.assign(robots_.size(), 0);
+        regionVersion_.resize(robots_.size());
+        for (std::uint64_t& version : regionVersion_)
+            version = ++lastVersion_;
         boundaryIndex_.assign(static_cast<std::size_t>(cellCount_), -1);
         boundaryOwner_.assign(static_cast<std::size_t>(cellCount_), -1);
         boundaries_.assign(robots_.size(), {});
@@ -531,13 +557,10 @@ class Allocation {
     // The best cell `from` can hand to `to`: on their common border, not the start, keeping `from` connected,
     // and leaving the receiver below `receiverCostLimit`.
     int cellToHandOver(int from, int to, double receiverCostLimit) {
-        const RobotState& donor = robots_[static_cast<std::size_t>(from)];
         const RobotState& receiver = robots_[static_cast<std::size_t>(to)];
         std::vector<std::pair<double, int>>& candidates = scratchCandidates_;
         candidates.clear();
-        for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
-            if (cell == donor.startCell || !touchesRegion(cell, to))
-                continue;
+        for (int cell : facing(from, to)) {
             if (!(receiver.cost + cost_[static_cast<std::size_t>(cell)] < receiverCostLimit))
                 continue;
             const double score = distanceToCentre(cell, to) - distanceToCentre(cell, from);
@@ -570,18 +593,32 @@ class Allocation {
         }
     }
 
-    bool searchHandOver(int from, int to) {
-        if (facingFrom_ != from)
+    bool searchHandOver(int from, int to) { return firstRemovable(facing(from, to), 64) >= 0; }
+
+    // The border cells of `from` (not its start) next to `to`, in the order of its boundary list. One look
+    // along the border serves the searches towards all its neighbours, and stays until a move changes
+    // that border or a region beside it: most moves leave most regions' lists as they were.
+    const std::vector<int>& facing(int from, int to) {
+        if (facingKnown_[static_cast<std::size_t>(from)] == 0)
             collectFacing(from);
-        return firstRemovable(facingByRegion_[static_cast<std::size_t>(to)], 64) >= 0;
+        return facingByRegion_[static_cast<std::size_t>(from)][static_cast<std::size_t>(to)];
     }
 
-    // The border cells of `from` (not its start) next to each other region, in the order of its boundary
-    // list: one look along the border serves the searches towards all its neighbours until a cell moves.
+    // A cell changed owner: the lists of its old and new regions and of the regions beside it change.
+    void forgetFacingAround(int cell, int previous) {
+        if (previous >= 0)
+            facingKnown_[static_cast<std::size_t>(previous)] = 0;
+        facingKnown_[static_cast<std::size_t>(owner_[static_cast<std::size_t>(cell)])] = 0;
+        for (int neighbour : graph_.neighbours(cell))
+            if (const int owner = owner_[static_cast<std::size_t>(neighbour)]; owner >= 0)
+                facingKnown_[static_cast<std::size_t>(owner)] = 0;
+    }
+
     void collectFacing(int from) {
-        facingByRegion_.resize(robots_.size());
-        for (std::vector<int>& facing : facingByRegion_)
-            facing.clear();
+        std::vector<std::vector<int>>& lists = facingByRegion_[static_cast<std::size_t>(from)];
+        lists.resize(robots_.size());
+        for (std::vector<int>& list : lists)
+            list.clear();
         const int start = robots_[static_cast<std::size_t>(from)].startCell;
         for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
             if (cell == start)
@@ -590,12 +627,12 @@ class Allocation {
                 const int other = owner_[static_cast<std::size_t>(neighbour)];
                 if (other < 0 || other == from)
                     continue;
-                std::vector<int>& facing = facingByRegion_[static_cast<std::size_t>(other)];
-                if (facing.empty() || facing.back() != cell)
-                    facing.push_back(cell);
+                std::vector<int>& list = lists[static_cast<std::size_t>(other)];
+                if (list.empty() || list.back() != cell)
+                    list.push_back(cell);
             }
         }
-        facingFrom_ = from;
+        facingKnown_[static_cast<std::size_t>(from)] = 1;
     }
 
     // Finds regions the richest can pass a cell to, directly or through a chain of regions each able to
@@ -710,8 +747,14 @@ class Allocation {
     static constexpr std::size_t batchStealBorder = 1024;
     std::vector<std::uint32_t> stealSeen_; // stealStamp_ of the last steal that looked at each cell
     std::uint32_t stealStamp_ = 0;
-    std::vector<std::vector<int>> facingByRegion_; // collectFacing's lists, by the region they face
-    int facingFrom_ = -1;                          // whose border they are; -1 once a cell has moved
+    // collectFacing's lists, by region and the region they face, and whether each region's are up to date.
+    std::vector<std::vector<std::vector<int>>> facingByRegion_;
+    std::vector<char> facingKnown_;
+    // While evening out: each region's version, new whenever it gains or loses a cell, and the removal
+    // checks made, by cell and search width, with the version of the owner they were made for.
+    std::vector<std::uint64_t> regionVersion_;
+    std::uint64_t lastVersion_ = 0;
+    std::unordered_map<std::uint64_t, std::uint64_t> removalKnown_;
     std::vector<char> handOverKnown_;
     std::vector<char> handOverPossible_;
 };
