@@ -1,12 +1,12 @@
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 
+#include "core/allocation/GrowthFrontier.hpp"
 #include "core/allocation/PieceSettlement.hpp"
 #include "core/model/LocalConnectivity.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <queue>
 #include <unordered_map>
 
 namespace mcpp {
@@ -25,7 +25,9 @@ struct RobotState {
     bool finished = false;
     int startCell = -1;
     // Frontier of unassigned cells keyed by cost_un at push time (lazy: stale entries are skipped).
-    std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> frontier;
+    GrowthFrontier frontier;
+    // Whether a cell was ever taken from the region: until then every frontier entry touches it.
+    bool lostCell = false;
     std::vector<int> foreignBorder; // cells of other robots seen next to this region
 };
 
@@ -236,6 +238,7 @@ class Allocation {
             unassignedArea_ -= area;
         } else if (previous >= 0) {
             RobotState& donor = robots_[static_cast<std::size_t>(previous)];
+            donor.lostCell = true;
             donor.cost -= cost_[static_cast<std::size_t>(cell)];
             donor.sumX -= x;
             donor.sumY -= y;
@@ -265,7 +268,7 @@ class Allocation {
         for (int neighbour : graph_.neighbours(cell)) {
             const int owner = owner_[static_cast<std::size_t>(neighbour)];
             if (owner == unassigned) {
-                state.frontier.emplace(growthKey(robot, neighbour), neighbour);
+                state.frontier.push(growthKey(robot, neighbour), neighbour);
             } else if (owner >= 0 && owner != robot) {
                 state.foreignBorder.push_back(neighbour);
                 robots_[static_cast<std::size_t>(owner)].foreignBorder.push_back(cell);
@@ -285,7 +288,7 @@ class Allocation {
         cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
         for (int cell : cells)
             if (owner_[static_cast<std::size_t>(cell)] == unassigned)
-                state.frontier.emplace(growthKey(robot, cell), cell);
+                state.frontier.push(growthKey(robot, cell), cell);
         state.cellsAtLastRekey = state.cells;
     }
 
@@ -297,7 +300,7 @@ class Allocation {
             const int owner = owner_[static_cast<std::size_t>(cell)];
             if (owner == unassigned) {
                 // A cell taken from this robot may have cut it off from an old frontier entry.
-                if (touchesRegion(cell, robot))
+                if (!state.lostCell || touchesRegion(cell, robot))
                     return cell;
             } else if (owner >= 0 && owner != robot) {
                 state.foreignBorder.push_back(cell);
