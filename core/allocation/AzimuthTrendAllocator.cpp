@@ -36,16 +36,13 @@ class Allocation {
     Allocation(const CellGraph& graph, const std::vector<int>& startCells, const ProgressReporter& progress)
         : graph_(graph), progress_(progress), cellCount_(static_cast<int>(graph.size())),
           owner_(static_cast<std::size_t>(cellCount_), unreachable),
-          cost_(static_cast<std::size_t>(cellCount_)), x_(static_cast<std::size_t>(cellCount_)),
-          y_(static_cast<std::size_t>(cellCount_)), area_(static_cast<std::size_t>(cellCount_)),
-          connectivity_(graph), robots_(startCells.size()), centreX_(startCells.size()),
-          centreY_(startCells.size()) {
+          cells_(static_cast<std::size_t>(cellCount_)), connectivity_(graph), robots_(startCells.size()),
+          centreX_(startCells.size()), centreY_(startCells.size()) {
         for (int cell = 0; cell < cellCount_; ++cell) {
             const Cell& graphCell = graph.cell(cell);
-            cost_[static_cast<std::size_t>(cell)] = graphCell.coverSeconds();
-            x_[static_cast<std::size_t>(cell)] = graphCell.centreX();
-            y_[static_cast<std::size_t>(cell)] = graphCell.centreY();
-            area_[static_cast<std::size_t>(cell)] = graphCell.size * graphCell.size;
+            cells_[static_cast<std::size_t>(cell)] = {graphCell.centreX(), graphCell.centreY(),
+                                                      graphCell.size * graphCell.size,
+                                                      graphCell.coverSeconds()};
         }
         // Cells in no start's component are unreachable from the outset and never considered.
         std::vector<int> queue(startCells.begin(), startCells.end());
@@ -62,9 +59,10 @@ class Allocation {
         for (int cell = 0; cell < cellCount_; ++cell) {
             if (owner_[static_cast<std::size_t>(cell)] == unassigned) {
                 ++unassignedCount_;
-                unassignedX_ += x_[static_cast<std::size_t>(cell)] * area_[static_cast<std::size_t>(cell)];
-                unassignedY_ += y_[static_cast<std::size_t>(cell)] * area_[static_cast<std::size_t>(cell)];
-                unassignedArea_ += area_[static_cast<std::size_t>(cell)];
+                const CellFigures& figures = cells_[static_cast<std::size_t>(cell)];
+                unassignedX_ += figures.x * figures.area;
+                unassignedY_ += figures.y * figures.area;
+                unassignedArea_ += figures.area;
             }
         }
         reachableCount_ = unassignedCount_;
@@ -186,8 +184,8 @@ class Allocation {
 
   private:
     double distance(int cell, double x, double y) const {
-        const double dx = x_[static_cast<std::size_t>(cell)] - x;
-        const double dy = y_[static_cast<std::size_t>(cell)] - y;
+        const double dx = cells_[static_cast<std::size_t>(cell)].x - x;
+        const double dy = cells_[static_cast<std::size_t>(cell)].y - y;
         return std::sqrt(dx * dx +
                          dy * dy); // std::hypot guards overflow we cannot meet, at several times the cost
     }
@@ -228,9 +226,10 @@ class Allocation {
 
     void give(int cell, int robot) {
         const int previous = owner_[static_cast<std::size_t>(cell)];
-        const double area = area_[static_cast<std::size_t>(cell)];
-        const double x = x_[static_cast<std::size_t>(cell)] * area;
-        const double y = y_[static_cast<std::size_t>(cell)] * area;
+        const CellFigures& figures = cells_[static_cast<std::size_t>(cell)];
+        const double area = figures.area;
+        const double x = figures.x * area;
+        const double y = figures.y * area;
         if (previous == unassigned) {
             --unassignedCount_;
             unassignedX_ -= x;
@@ -239,7 +238,7 @@ class Allocation {
         } else if (previous >= 0) {
             RobotState& donor = robots_[static_cast<std::size_t>(previous)];
             donor.lostCell = true;
-            donor.cost -= cost_[static_cast<std::size_t>(cell)];
+            donor.cost -= figures.cost;
             donor.sumX -= x;
             donor.sumY -= y;
             donor.area -= area;
@@ -247,7 +246,7 @@ class Allocation {
             updateCentre(previous);
         }
         RobotState& receiver = robots_[static_cast<std::size_t>(robot)];
-        receiver.cost += cost_[static_cast<std::size_t>(cell)];
+        receiver.cost += figures.cost;
         receiver.sumX += x;
         receiver.sumY += y;
         receiver.area += area;
@@ -383,8 +382,8 @@ class Allocation {
             border[kept++] = cell;
             if (!lowersLargerCost(robot, cell))
                 continue;
-            const double dx = x_[static_cast<std::size_t>(cell)] - centreX;
-            const double dy = y_[static_cast<std::size_t>(cell)] - centreY;
+            const double dx = cells_[static_cast<std::size_t>(cell)].x - centreX;
+            const double dy = cells_[static_cast<std::size_t>(cell)].y - centreY;
             candidates.push_back({dx * towardsX + dy * towardsY >= 0.0, std::sqrt(dx * dx + dy * dy), cell});
         }
         border.resize(kept);
@@ -456,7 +455,7 @@ class Allocation {
     bool lowersLargerCost(int robot, int cell) const {
         const RobotState& donor = robots_[static_cast<std::size_t>(owner_[static_cast<std::size_t>(cell)])];
         return cell != donor.startCell &&
-               robots_[static_cast<std::size_t>(robot)].cost + cost_[static_cast<std::size_t>(cell)] <
+               robots_[static_cast<std::size_t>(robot)].cost + cells_[static_cast<std::size_t>(cell)].cost <
                    donor.cost - 1e-9;
     }
 
@@ -564,7 +563,7 @@ class Allocation {
         std::vector<std::pair<double, int>>& candidates = scratchCandidates_;
         candidates.clear();
         for (int cell : facing(from, to)) {
-            if (!(receiver.cost + cost_[static_cast<std::size_t>(cell)] < receiverCostLimit))
+            if (!(receiver.cost + cells_[static_cast<std::size_t>(cell)].cost < receiverCostLimit))
                 continue;
             const double score = distanceToCentre(cell, to) - distanceToCentre(cell, from);
             candidates.emplace_back(score, cell);
@@ -725,10 +724,14 @@ class Allocation {
     const ProgressReporter& progress_;
     int cellCount_;
     std::vector<int> owner_;
-    std::vector<double> cost_;
-    std::vector<double> x_;
-    std::vector<double> y_;
-    std::vector<double> area_;
+    // What the growth reads of a cell, side by side: taking a cell reads all four, weighing one its centre.
+    struct CellFigures {
+        double x = 0.0; // centre
+        double y = 0.0;
+        double area = 0.0;
+        double cost = 0.0; // seconds to cover it
+    };
+    std::vector<CellFigures> cells_;
     LocalConnectivity connectivity_;
     std::vector<RobotState> robots_;
     std::vector<double> centreX_; // by robot: sumX / area, updated with them
