@@ -22,18 +22,36 @@ CellGraph::CellGraph(GridFrame frame, std::vector<Cell> cells, NeighbourTopology
     std::map<int, std::size_t> cellsOfSpan;
     for (const Cell& cell : cells_)
         ++cellsOfSpan[cell.span];
-    for (const auto& [span, count] : cellsOfSpan) {
-        // Sorted by a key computed once per cell; the keys are dropped when the ids are in order.
-        std::vector<std::pair<std::uint64_t, int>> keys;
-        keys.reserve(count);
-        for (std::size_t id = 0; id < cells_.size(); ++id)
-            if (cells_[id].span == span)
-                keys.emplace_back(keyOf(cells_[id]), static_cast<int>(id));
-        std::sort(keys.begin(), keys.end());
-        std::vector<int> ids(keys.size());
-        std::transform(keys.begin(), keys.end(), ids.begin(), [](const auto& key) { return key.second; });
-        locator_.emplace_back(span, std::move(ids));
+    for (const auto& [span, count] : cellsOfSpan)
+        locator_.emplace_back(span, idsInPlacementOrder(span, count));
+}
+
+// The cells of one span ordered by placement. Decompositions mostly list cells in that order already (a
+// uniform grid or a one-level quadtree row by row): then the ids are taken as they are, without sorting
+// tens of millions of keys.
+std::vector<int> CellGraph::idsInPlacementOrder(int span, std::size_t count) const {
+    std::vector<int> ids;
+    ids.reserve(count);
+    bool ordered = true;
+    std::uint64_t previousKey = 0;
+    for (std::size_t id = 0; id < cells_.size(); ++id) {
+        if (cells_[id].span != span)
+            continue;
+        const std::uint64_t key = keyOf(cells_[id]);
+        ordered = ordered && (ids.empty() || previousKey < key);
+        previousKey = key;
+        ids.push_back(static_cast<int>(id));
     }
+    if (ordered)
+        return ids;
+    // Sorted by a key computed once per cell; the keys are dropped when the ids are in order.
+    std::vector<std::pair<std::uint64_t, int>> keys;
+    keys.reserve(count);
+    for (int id : ids)
+        keys.emplace_back(keyOf(cells_[static_cast<std::size_t>(id)]), id);
+    std::sort(keys.begin(), keys.end());
+    std::transform(keys.begin(), keys.end(), ids.begin(), [](const auto& key) { return key.second; });
+    return ids;
 }
 
 int CellGraph::cellAt(MapPoint point) const {

@@ -41,6 +41,8 @@ class CellGraph {
     double passableAreaSquareMetres = 0.0; // every passable pixel, in a cell or not
 
   private:
+    [[nodiscard]] std::vector<int> idsInPlacementOrder(int span, std::size_t count) const;
+
     GridFrame frame_;
     std::vector<Cell> cells_;
     NeighbourTopology adjacency_;
