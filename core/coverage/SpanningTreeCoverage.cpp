@@ -103,6 +103,40 @@ std::vector<SpanningTreeCoverage::RegionTree>
 SpanningTreeCoverage::planTrees(const CellGraph& graph, const RegionAllocation& regions,
                                 const std::vector<MapPoint>& starts, const ProgressReporter& progress,
                                 bool timed) const {
+    return planTreesKeeping(graph, regions, starts, progress, timed,
+                            std::vector<const RegionTree*>(regions.startCell.size(), nullptr));
+}
+
+std::vector<SpanningTreeCoverage::RegionTree> SpanningTreeCoverage::replanTrees(
+    const CellGraph& graph, const RegionAllocation& regions, const RegionAllocation& earlier,
+    const std::vector<RegionTree>& earlierTrees, const std::vector<MapPoint>& starts,
+    const ProgressReporter& progress, bool timed) const {
+    const std::size_t robots = regions.startCell.size();
+    std::vector<const RegionTree*> kept(robots, nullptr);
+    const bool comparable = earlier.robotOfCell.size() == regions.robotOfCell.size() &&
+                            earlier.startCell == regions.startCell && earlierTrees.size() == robots;
+    if (comparable) {
+        std::vector<char> changed(robots, 0);
+        for (std::size_t id = 0; id < regions.robotOfCell.size(); ++id) {
+            const int before = earlier.robotOfCell[id];
+            const int now = regions.robotOfCell[id];
+            if (before == now)
+                continue;
+            for (const int robot : {before, now})
+                if (robot >= 0 && static_cast<std::size_t>(robot) < robots)
+                    changed[static_cast<std::size_t>(robot)] = 1;
+        }
+        for (std::size_t robot = 0; robot < robots; ++robot)
+            if (changed[robot] == 0)
+                kept[robot] = &earlierTrees[robot];
+    }
+    return planTreesKeeping(graph, regions, starts, progress, timed, kept);
+}
+
+std::vector<SpanningTreeCoverage::RegionTree>
+SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAllocation& regions,
+                                       const std::vector<MapPoint>& starts, const ProgressReporter& progress,
+                                       bool timed, const std::vector<const RegionTree*>& kept) const {
     const std::size_t robots = regions.startCell.size();
     const auto regionCells = cellsByRobot(regions);
     // Regions are planned side by side, each into its own slot: the same trees whatever the thread count.
@@ -113,12 +147,16 @@ SpanningTreeCoverage::planTrees(const CellGraph& graph, const RegionAllocation& 
     progress.report("paths", 0.0);
     parallelFor(robots, [&](std::size_t robot, int worker) {
         progress.throwIfCancelled();
-        std::vector<int>& scratch = scratchIndex[static_cast<std::size_t>(worker)];
-        if (scratch.size() != graph.size())
-            scratch.assign(graph.size(), -1);
-        auto [tree, shape] =
-            bestTree(graph, regionCells[robot], regions.startCell[robot], starts[robot], scratch, timed);
-        trees[robot] = {std::move(tree), shape};
+        if (kept[robot] != nullptr) {
+            trees[robot] = *kept[robot];
+        } else {
+            std::vector<int>& scratch = scratchIndex[static_cast<std::size_t>(worker)];
+            if (scratch.size() != graph.size())
+                scratch.assign(graph.size(), -1);
+            auto [tree, shape] =
+                bestTree(graph, regionCells[robot], regions.startCell[robot], starts[robot], scratch, timed);
+            trees[robot] = {std::move(tree), shape};
+        }
         const std::lock_guard lock(progressMutex);
         progress.report("paths", static_cast<double>(++finished) / static_cast<double>(robots));
     });

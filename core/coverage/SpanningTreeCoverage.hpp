@@ -40,6 +40,13 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
     [[nodiscard]] std::vector<RegionTree> planTrees(const CellGraph& graph, const RegionAllocation& regions,
                                                     const std::vector<MapPoint>& starts,
                                                     const ProgressReporter& progress, bool timed) const;
+    // planTrees for a division evened out from `earlier`: a region whose cells and start are those it had
+    // there keeps its tree (a copy: a tree depends on nothing else), the others are planned anew.
+    [[nodiscard]] std::vector<RegionTree> replanTrees(const CellGraph& graph, const RegionAllocation& regions,
+                                                      const RegionAllocation& earlier,
+                                                      const std::vector<RegionTree>& earlierTrees,
+                                                      const std::vector<MapPoint>& starts,
+                                                      const ProgressReporter& progress, bool timed) const;
     // The paths round the trees, each tree freed once walked (progress reported as "waypoints").
     [[nodiscard]] std::vector<CoveragePath> walkTrees(const CellGraph& graph, std::vector<RegionTree> trees,
                                                       const std::vector<MapPoint>& starts,
@@ -52,6 +59,13 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                               bool timed = false) const;
 
   private:
+    // planTrees, where a robot with a tree in `kept` takes a copy of it instead.
+    [[nodiscard]] std::vector<RegionTree> planTreesKeeping(const CellGraph& graph,
+                                                           const RegionAllocation& regions,
+                                                           const std::vector<MapPoint>& starts,
+                                                           const ProgressReporter& progress, bool timed,
+                                                           const std::vector<const RegionTree*>& kept) const;
+
     bool closedTour_;
 };
 

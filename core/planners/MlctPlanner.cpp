@@ -72,8 +72,9 @@ void MlctPlanner::run(PlanningRun& run) const {
         RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions,
                                                        progress.within("turn balance", 0.0, 0.5));
         straightening.straighten(regions);
-        std::vector<RegionTree> second = coverage.planTrees(plan.cells, regions, run.starts(),
-                                                            progress.within("turn balance", 0.5, 1.0), true);
+        std::vector<RegionTree> second =
+            coverage.replanTrees(plan.cells, regions, plan.regions, trees, run.starts(),
+                                 progress.within("turn balance", 0.5, 1.0), true);
         if (walksQuicker(second, trees)) {
             plan.regions = std::move(regions);
             trees = std::move(second);
