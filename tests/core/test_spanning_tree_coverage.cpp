@@ -135,6 +135,68 @@ class SpanningTreeCoverageTest : public QObject {
             levels.insert(cell.level);
         QCOMPARE(levels.size(), std::size_t{3});
     }
+
+    // A second division keeps the trees of the regions it leaves as they were (taken from the earlier
+    // trees, not planned again) and plans the others anew.
+    void replannedTreesKeepOnlyUnchangedRegions() {
+        auto problem = test::uniformProblem(12, 12, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 11, 0),
+                          test::pixelCentre(problem.grid, 6, 11)};
+        const Plan plan = planOf(problem);
+        const SpanningTreeCoverage coverage;
+        const RegionAllocation& earlier = plan.regions;
+        const RegionAllocation later = withOneCellMoved(plan.cells, earlier, 0, 1);
+        QVERIFY(later.robotOfCell != earlier.robotOfCell);
+        const auto earlierTrees = coverage.planTrees(plan.cells, earlier, problem.starts, {}, true);
+        const auto laterTrees = coverage.planTrees(plan.cells, later, problem.starts, {}, true);
+        // Robot 2's earlier tree stands in for a stranger's: a kept tree must be the one given.
+        auto given = earlierTrees;
+        given[2] = earlierTrees[0];
+        const auto replanned =
+            coverage.replanTrees(plan.cells, later, earlier, given, problem.starts, {}, true);
+        QCOMPARE(replanned.size(), std::size_t{3});
+        QCOMPARE(replanned[2].shape.lengthMetres(), earlierTrees[0].shape.lengthMetres());
+        QCOMPARE(replanned[2].shape.turns(), earlierTrees[0].shape.turns());
+        for (std::size_t robot : {std::size_t{0}, std::size_t{1}}) {
+            QCOMPARE(replanned[robot].shape.lengthMetres(), laterTrees[robot].shape.lengthMetres());
+            QCOMPARE(replanned[robot].shape.turns(), laterTrees[robot].shape.turns());
+            QVERIFY(replanned[robot].shape.lengthMetres() != earlierTrees[robot].shape.lengthMetres());
+        }
+    }
+
+  private:
+    // `division` with one cell of `from` that touches `to` handed to `to`, `from` staying in one piece.
+    static RegionAllocation withOneCellMoved(const CellGraph& cells, const RegionAllocation& division,
+                                             int from, int to) {
+        for (std::size_t cell = 0; cell < division.robotOfCell.size(); ++cell) {
+            if (division.robotOfCell[cell] != from ||
+                division.startCell[static_cast<std::size_t>(from)] == static_cast<int>(cell))
+                continue;
+            const auto around = cells.neighbours(static_cast<int>(cell));
+            if (std::none_of(around.begin(), around.end(), [&](int other) {
+                    return division.robotOfCell[static_cast<std::size_t>(other)] == to;
+                }))
+                continue;
+            RegionAllocation moved = division;
+            moved.robotOfCell[cell] = to;
+            if (staysInOnePiece(cells, moved, from))
+                return moved;
+        }
+        return division;
+    }
+
+    static bool staysInOnePiece(const CellGraph& cells, const RegionAllocation& division, int robot) {
+        const auto regions = cellsByRobot(division);
+        const std::vector<int>& own = regions[static_cast<std::size_t>(robot)];
+        std::set<int> reached{division.startCell[static_cast<std::size_t>(robot)]};
+        std::vector<int> queue(reached.begin(), reached.end());
+        for (std::size_t head = 0; head < queue.size(); ++head)
+            for (int next : cells.neighbours(queue[head]))
+                if (division.robotOfCell[static_cast<std::size_t>(next)] == robot &&
+                    reached.insert(next).second)
+                    queue.push_back(next);
+        return reached.size() == own.size();
+    }
 };
 
 QTEST_APPLESS_MAIN(SpanningTreeCoverageTest)
