@@ -1,4 +1,5 @@
 #include "core/allocation/AzimuthTrendAllocator.hpp"
+#include "core/allocation/GrowthFrontier.hpp"
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/decomposition/QuadTreeDecomposition.hpp"
@@ -9,6 +10,7 @@
 
 #include <QtTest>
 #include <numeric>
+#include <queue>
 #include <random>
 #include <set>
 
@@ -286,6 +288,35 @@ class AzimuthTrendAllocatorTest : public QObject {
             QCOMPARE(allocator.rebalance(plan.cells, starts, division, {}).robotOfCell, grown.robotOfCell);
         // The same division whole is evened out where it stands, not grown anew.
         QVERIFY(allocator.rebalance(plan.cells, starts, plan.regions, {}).robotOfCell != grown.robotOfCell);
+    }
+
+    // The growth takes frontier cells smallest key first, ties by the smaller cell, as a binary heap would:
+    // pushes and pops interleaved, with repeated keys and repeated entries.
+    void growthFrontierTakesTheSmallestFirst() {
+        std::mt19937 random(7);
+        std::uniform_int_distribution<int> keys(0, 40);
+        std::uniform_int_distribution<int> cells(0, 25);
+        GrowthFrontier frontier;
+        std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> heap;
+        int popped = 0;
+        for (int step = 0; step < 5000; ++step) {
+            if (heap.empty() || random() % 3 != 0) {
+                const double key = keys(random) / 4.0;
+                const int cell = cells(random);
+                frontier.push(key, cell);
+                heap.emplace(key, cell);
+            } else {
+                QCOMPARE(frontier.top(), heap.top());
+                frontier.pop();
+                heap.pop();
+                ++popped;
+            }
+            QCOMPARE(frontier.size(), heap.size());
+        }
+        for (; !heap.empty(); heap.pop(), frontier.pop(), ++popped)
+            QCOMPARE(frontier.top(), heap.top());
+        QVERIFY(frontier.empty());
+        QVERIFY(popped > 1000);
     }
 };
 
