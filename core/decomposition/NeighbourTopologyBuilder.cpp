@@ -75,8 +75,8 @@ NeighbourTopology NeighbourTopologyBuilder::build(const QuadTree& tree) const {
                 } else if (candidate.state == CellState::Auxiliary) {
                     // Pushed in reverse so the neighbours come out in a fixed order along the side.
                     const auto& pair = childrenOnSide[static_cast<std::size_t>(facing)];
-                    descent.push_back(candidate.children[static_cast<std::size_t>(pair[1])]);
-                    descent.push_back(candidate.children[static_cast<std::size_t>(pair[0])]);
+                    descent.push_back(candidate.child(pair[1]));
+                    descent.push_back(candidate.child(pair[0]));
                 }
             }
         }

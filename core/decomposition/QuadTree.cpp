@@ -18,7 +18,7 @@ int QuadTree::leafAt(double x, double y) const {
         const bool north = y >= cell.centreY();
         // children: north-west, north-east, south-east, south-west
         const int child = north ? (east ? 1 : 0) : (east ? 2 : 3);
-        index = cell.children[static_cast<std::size_t>(child)];
+        index = cell.child(child);
     }
     return index;
 }

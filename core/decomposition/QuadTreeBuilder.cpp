@@ -169,7 +169,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
                                       (cell.size * cell.size);
         const double passableFraction =
             total == 0 ? 0.0 : insideFraction * static_cast<double>(passable) / static_cast<double>(total);
-        cell.obstacleFraction = 1.0 - passableFraction;
+        const double obstacleFraction = 1.0 - passableFraction;
         cell.passableAreaSquareMetres = static_cast<double>(passable) * sampleArea;
         const double deeperFraction = total == 0 ? 1.0
                                                  : (1.0 - insideFraction) + insideFraction *
@@ -178,8 +178,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
         if (passable == 0)
             cell.state = CellState::Blocked;
         else if (cell.level == levels)
-            cell.state =
-                cell.obstacleFraction > options.blockedThreshold ? CellState::Blocked : CellState::Active;
+            cell.state = obstacleFraction > options.blockedThreshold ? CellState::Blocked : CellState::Active;
         else if (deeperFraction <= tolerance + 1e-12)
             cell.state = CellState::Active;
         else
@@ -246,14 +245,11 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
         QuadCell cell = tree.cells[static_cast<std::size_t>(index)];
         judge(cell);
         if (cell.state == CellState::Auxiliary) {
-            for (int child = 0; child < 4; ++child) {
-                QuadCell childCell = childOf(cell, child);
-                childCell.parent = index;
-                cell.children[static_cast<std::size_t>(child)] = static_cast<int>(tree.cells.size());
-                tree.cells.push_back(childCell);
-            }
+            cell.firstChild = static_cast<int>(tree.cells.size());
+            for (int child = 0; child < 4; ++child)
+                tree.cells.push_back(childOf(cell, child));
             for (int child = 3; child >= 0; --child)
-                pending.push_back(cell.children[static_cast<std::size_t>(child)]);
+                pending.push_back(cell.child(child));
         }
         if (cell.state == CellState::Active) {
             cell.activeIndex = static_cast<int>(tree.activeCells.size());

@@ -750,9 +750,8 @@ std::vector<std::string> checkQuadTreeTiling(const PlanningProblem& problem, con
     for (std::size_t index = 0; index < tree.cells.size(); ++index) {
         const QuadCell& cell = tree.cells[index];
         if (cell.state == CellState::Auxiliary) {
-            for (int child : cell.children)
-                if (child < 0)
-                    violations.push_back("auxiliary cell " + std::to_string(index) + " lacks a child");
+            if (cell.firstChild < 0 || static_cast<std::size_t>(cell.firstChild) + 4 > tree.cells.size())
+                violations.push_back("auxiliary cell " + std::to_string(index) + " lacks its children");
             continue;
         }
         const int span = 1 << (bottom - cell.level);
