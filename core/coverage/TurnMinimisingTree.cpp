@@ -208,9 +208,9 @@ void TurnMinimisingTree::rootTree() {
 
 // Adds `edge` if dropping some tree edge of the cycle it closes lowers the turn count (or the time).
 bool TurnMinimisingTree::trySwap(int edge) {
-    // Counted in whole turns, dropping a tree edge saves at most two turns at each of its ends (a cell
-    // joined on three or four sides keeps two): an edge that adds four can never pay for itself, and its
-    // cycle is not looked for. Across a comb's teeth, that is most edges.
+    // Counted in whole turns, dropping a tree edge saves at most two turns at each of its ends (a walk
+    // turns 0, 2 or 4 times in a cell): an edge that adds four can never pay for itself, and its cycle is
+    // not looked for. Across a comb's teeth, that is most edges.
     constexpr int mostTurnsSavedByDropping = 4;
     if (connectors_ == nullptr && joinCost(edge) >= mostTurnsSavedByDropping)
         return false;
