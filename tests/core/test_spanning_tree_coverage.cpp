@@ -179,23 +179,10 @@ class SpanningTreeCoverageTest : public QObject {
                 continue;
             RegionAllocation moved = division;
             moved.robotOfCell[cell] = to;
-            if (staysInOnePiece(cells, moved, from))
+            if (test::regionIsConnected(cells, moved.robotOfCell, from))
                 return moved;
         }
         return division;
-    }
-
-    static bool staysInOnePiece(const CellGraph& cells, const RegionAllocation& division, int robot) {
-        const auto regions = cellsByRobot(division);
-        const std::vector<int>& own = regions[static_cast<std::size_t>(robot)];
-        std::set<int> reached{division.startCell[static_cast<std::size_t>(robot)]};
-        std::vector<int> queue(reached.begin(), reached.end());
-        for (std::size_t head = 0; head < queue.size(); ++head)
-            for (int next : cells.neighbours(queue[head]))
-                if (division.robotOfCell[static_cast<std::size_t>(next)] == robot &&
-                    reached.insert(next).second)
-                    queue.push_back(next);
-        return reached.size() == own.size();
     }
 };
 
