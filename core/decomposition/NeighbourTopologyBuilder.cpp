@@ -85,4 +85,31 @@ NeighbourTopology NeighbourTopologyBuilder::build(const QuadTree& tree) const {
     return NeighbourTopology(std::move(offsets), std::move(neighbours));
 }
 
+NeighbourTopology NeighbourTopologyBuilder::build(const OneLevelQuadTree& grid) const {
+    const auto columns = static_cast<std::size_t>(grid.frame.columns);
+    std::vector<int> indexAt(columns * static_cast<std::size_t>(grid.frame.rows), -1);
+    for (std::size_t index = 0; index < grid.cells.size(); ++index)
+        indexAt[static_cast<std::size_t>(grid.cells[index].row) * columns +
+                static_cast<std::size_t>(grid.cells[index].column)] = static_cast<int>(index);
+    std::vector<int> offsets;
+    std::vector<int> neighbours;
+    offsets.reserve(grid.cells.size() + 1);
+    neighbours.reserve(grid.cells.size() * 4);
+    offsets.push_back(0);
+    for (const Cell& cell : grid.cells) {
+        for (int side = North; side <= West; ++side) {
+            const int row = cell.row + rowStep[static_cast<std::size_t>(side)];
+            const int column = cell.column + columnStep[static_cast<std::size_t>(side)];
+            if (row < 0 || column < 0 || row >= grid.frame.rows || column >= grid.frame.columns)
+                continue;
+            const int neighbour =
+                indexAt[static_cast<std::size_t>(row) * columns + static_cast<std::size_t>(column)];
+            if (neighbour >= 0)
+                neighbours.push_back(neighbour);
+        }
+        offsets.push_back(static_cast<int>(neighbours.size()));
+    }
+    return NeighbourTopology(std::move(offsets), std::move(neighbours));
+}
+
 } // namespace mcpp

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/decomposition/OneLevelQuadTree.hpp"
 #include "core/decomposition/QuadTree.hpp"
 #include "core/model/NeighbourTopology.hpp"
 
@@ -11,6 +12,9 @@ namespace mcpp {
 class NeighbourTopologyBuilder {
   public:
     [[nodiscard]] NeighbourTopology build(const QuadTree& tree) const;
+    // The same lists for a one-level tree's grid: each cell's neighbours north, east, south and west, in
+    // the order the tree's lists give them.
+    [[nodiscard]] NeighbourTopology build(const OneLevelQuadTree& grid) const;
 };
 
 } // namespace mcpp

@@ -26,20 +26,105 @@ using Kind = PlanningError::Kind;
                             " levels, at most " + std::to_string(mostQuadTreeLevels) + " are planned");
 }
 
-} // namespace
+// What the tree and the one-level grid are both made from: the tree's frame (no cells yet), the samples,
+// and their counts per cell of every level by bucket: the level a passable sample needs (1..l), obstacle,
+// outside.
+struct SampleCounts {
+    QuadTree frame;
+    SampleGrid samples;
+    std::vector<PixelCodes::DenseClass> classes;
+    std::vector<std::vector<std::uint32_t>> byLevel;
+    int buckets = 0;
+    double sampleArea = 0.0;
 
-QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes,
-                                const DecompositionOptions& options, const ProgressReporter& progress) const {
+    [[nodiscard]] std::size_t columnsAt(int level) const {
+        return static_cast<std::size_t>(frame.topColumns) << (level - 1);
+    }
+    [[nodiscard]] std::size_t rowsAt(int level) const {
+        return static_cast<std::size_t>(frame.topRows) << (level - 1);
+    }
+    [[nodiscard]] const std::uint32_t* of(int level, int row, int column) const {
+        return &byLevel[static_cast<std::size_t>(level - 1)]
+                       [(static_cast<std::size_t>(row) * columnsAt(level) +
+                         static_cast<std::size_t>(column)) *
+                        static_cast<std::size_t>(buckets)];
+    }
+};
+
+// Adds each cell's children's counts into it, from the level above the bottom up to the top.
+void addUpLevels(SampleCounts& counts) {
+    const auto buckets = static_cast<std::size_t>(counts.buckets);
+    for (int level = counts.frame.levels - 1; level >= 1; --level) {
+        auto& parent = counts.byLevel[static_cast<std::size_t>(level - 1)];
+        const auto& child = counts.byLevel[static_cast<std::size_t>(level)];
+        const std::size_t parentColumns = counts.columnsAt(level);
+        const std::size_t childColumns = counts.columnsAt(level + 1);
+        for (std::size_t row = 0; row < counts.rowsAt(level); ++row) {
+            for (std::size_t column = 0; column < parentColumns; ++column) {
+                std::uint32_t* target = &parent[(row * parentColumns + column) * buckets];
+                for (std::size_t dy = 0; dy < 2; ++dy) {
+                    for (std::size_t dx = 0; dx < 2; ++dx) {
+                        const std::uint32_t* source =
+                            &child[((2 * row + dy) * childColumns + 2 * column + dx) * buckets];
+                        for (std::size_t b = 0; b < buckets; ++b)
+                            target[b] += source[b];
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Counts the bottom cells' samples by bucket, then every level's.
+void countBuckets(SampleCounts& counts, const std::vector<int>& levelOfCode) {
+    const int levels = counts.frame.levels;
+    const int obstacleBucket = levels; // zero-based: levels 1..l are buckets 0..l-1
+    const int outsideBucket = levels + 1;
+    std::vector<int> bucketOfCode(counts.classes.size());
+    for (std::size_t code = 0; code < counts.classes.size(); ++code)
+        bucketOfCode[code] = counts.classes[code].traversable ? levelOfCode[code] - 1 : obstacleBucket;
+    counts.byLevel.resize(static_cast<std::size_t>(levels));
+    for (int level = 1; level <= levels; ++level)
+        counts.byLevel[static_cast<std::size_t>(level - 1)].assign(
+            counts.columnsAt(level) * counts.rowsAt(level) * static_cast<std::size_t>(counts.buckets), 0U);
+    auto& bottom = counts.byLevel[static_cast<std::size_t>(levels - 1)];
+    const std::size_t columnsAtBottom = counts.columnsAt(levels);
+    const SampleGrid& samples = counts.samples;
+    const double bottomSize = 2.0 * counts.frame.fovMin;
+    std::vector<std::size_t> cellColumnOfSample(static_cast<std::size_t>(samples.columns));
+    for (int column = 0; column < samples.columns; ++column) {
+        const double x = samples.originX + (column + 0.5) * samples.sampleWidth;
+        cellColumnOfSample[static_cast<std::size_t>(column)] =
+            static_cast<std::size_t>(std::floor((x - counts.frame.originX) / bottomSize));
+    }
+    for (int row = 0; row < samples.rows; ++row) {
+        const double y = samples.originY - (row + 0.5) * samples.sampleHeight;
+        const auto cellRow = static_cast<std::size_t>(std::floor((counts.frame.originY - y) / bottomSize));
+        const std::uint16_t* rowCodes = samples.row(row);
+        for (int column = 0; column < samples.columns; ++column) {
+            const std::uint16_t code = rowCodes[column];
+            const int bucket = code == PixelCodes::outside    ? outsideBucket
+                               : code == PixelCodes::obstacle ? obstacleBucket
+                                                              : bucketOfCode[code];
+            const std::size_t cell =
+                cellRow * columnsAtBottom + cellColumnOfSample[static_cast<std::size_t>(column)];
+            ++bottom[cell * static_cast<std::size_t>(counts.buckets) + static_cast<std::size_t>(bucket)];
+        }
+    }
+    addUpLevels(counts);
+}
+
+// The tree's frame from the class table's rounded FOVs, and the samples counted per cell of every level.
+SampleCounts countSamples(const ClassGrid& grid, const ClassTable& classes,
+                          const DecompositionOptions& options, const ProgressReporter& progress) {
     checkDecompositionInputs(grid, classes, options);
     progress.report("quadtree", 0.0);
 
     PixelCodes pixels = codePixels(grid, classes);
-    const auto& dense = pixels.classes;
-    constexpr std::uint16_t outsideCode = PixelCodes::outside;
-    constexpr std::uint16_t obstacleCode = PixelCodes::obstacle;
     progress.throwIfCancelled();
 
-    QuadTree tree;
+    SampleCounts counts;
+    QuadTree& tree = counts.frame;
     tree.roundedFieldsOfView = roundFieldsOfView(classes, pixels.presentValues());
     if (tree.roundedFieldsOfView.empty())
         throw PlanningError(Kind::NoPassableCell,
@@ -47,12 +132,12 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
                             "an obstacle (speed 0 or not passable)");
     int levels = 1;
     double fovMin = std::numeric_limits<double>::infinity();
-    std::vector<int> levelOfCode(dense.size(), 0); // quadtree level each passable class needs
+    std::vector<int> levelOfCode(pixels.classes.size(), 0); // quadtree level each passable class needs
     for (const auto& rounded : tree.roundedFieldsOfView) {
         levels = std::max(levels, rounded.level);
         fovMin = std::min(fovMin, rounded.roundedMetres);
-        for (std::size_t code = 0; code < dense.size(); ++code)
-            if (dense[code].value == rounded.classValue)
+        for (std::size_t code = 0; code < pixels.classes.size(); ++code)
+            if (pixels.classes[code].value == rounded.classValue)
                 levelOfCode[code] = rounded.level;
     }
     // Past mostSizedLevels the grid's size in bottom cells would overflow; the budget's message, which says
@@ -61,128 +146,81 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
         throwTooManyLevels(levels);
     tree.levels = levels;
     tree.fovMin = fovMin;
-    const double bottomSize = 2.0 * fovMin;
     const QuadTreeGridSize size = quadTreeGridSize(grid.width(), grid.height(), fovMin, levels);
     tree.topCellSize = size.topCellSize;
     tree.originX = grid.originX;
     tree.originY = grid.originY;
     tree.topColumns = size.topColumns;
     tree.topRows = size.topRows;
-    const std::int64_t bottomColumns = size.bottomColumns;
-    const std::int64_t bottomRows = size.bottomRows;
     checkCellBudget(grid.width(), grid.height(), fovMin, levels, options.bytesPerBottomCell);
     if (levels > mostQuadTreeLevels)
         throwTooManyLevels(levels);
-    const SampleGrid samples =
-        sampleGrid(grid, std::move(pixels.codes), bottomSize, bottomColumns, bottomRows);
-    const double sampleArea = samples.sampleWidth * samples.sampleHeight;
+    counts.classes = pixels.classes;
+    counts.samples =
+        sampleGrid(grid, std::move(pixels.codes), 2.0 * fovMin, size.bottomColumns, size.bottomRows);
+    counts.sampleArea = counts.samples.sampleWidth * counts.samples.sampleHeight;
     progress.report("quadtree", 0.2);
     progress.throwIfCancelled();
 
-    // Count samples per bottom cell by bucket: the level a passable sample needs (1..l), obstacle, outside.
-    const int buckets = levels + 2;
-    const int obstacleBucket = levels; // zero-based: levels 1..l are buckets 0..l-1
-    const int outsideBucket = levels + 1;
-    std::vector<int> bucketOfCode(dense.size());
-    for (std::size_t code = 0; code < dense.size(); ++code)
-        bucketOfCode[code] = dense[code].traversable ? levelOfCode[code] - 1 : obstacleBucket;
-    std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(levels));
-    auto levelColumns = [&](int level) { return static_cast<std::size_t>(tree.topColumns) << (level - 1); };
-    auto levelRows = [&](int level) { return static_cast<std::size_t>(tree.topRows) << (level - 1); };
-    for (int level = 1; level <= levels; ++level)
-        counts[static_cast<std::size_t>(level - 1)].assign(
-            levelColumns(level) * levelRows(level) * static_cast<std::size_t>(buckets), 0U);
-    {
-        auto& bottom = counts[static_cast<std::size_t>(levels - 1)];
-        const std::size_t columnsAtBottom = levelColumns(levels);
-        std::vector<std::size_t> cellColumnOfSample(static_cast<std::size_t>(samples.columns));
-        for (int column = 0; column < samples.columns; ++column) {
-            const double x = samples.originX + (column + 0.5) * samples.sampleWidth;
-            cellColumnOfSample[static_cast<std::size_t>(column)] =
-                static_cast<std::size_t>(std::floor((x - tree.originX) / bottomSize));
-        }
-        for (int row = 0; row < samples.rows; ++row) {
-            const double y = samples.originY - (row + 0.5) * samples.sampleHeight;
-            const auto cellRow = static_cast<std::size_t>(std::floor((tree.originY - y) / bottomSize));
-            const std::uint16_t* rowCodes =
-                samples.codes.data() +
-                static_cast<std::size_t>(row) * static_cast<std::size_t>(samples.columns);
-            for (int column = 0; column < samples.columns; ++column) {
-                const std::uint16_t code = rowCodes[column];
-                const int bucket = code == outsideCode    ? outsideBucket
-                                   : code == obstacleCode ? obstacleBucket
-                                                          : bucketOfCode[code];
-                const std::size_t cell =
-                    cellRow * columnsAtBottom + cellColumnOfSample[static_cast<std::size_t>(column)];
-                ++bottom[cell * static_cast<std::size_t>(buckets) + static_cast<std::size_t>(bucket)];
-            }
-        }
-        for (int level = levels - 1; level >= 1; --level) {
-            auto& parent = counts[static_cast<std::size_t>(level - 1)];
-            const auto& child = counts[static_cast<std::size_t>(level)];
-            const std::size_t parentColumns = levelColumns(level);
-            const std::size_t childColumns = levelColumns(level + 1);
-            for (std::size_t row = 0; row < levelRows(level); ++row) {
-                for (std::size_t column = 0; column < parentColumns; ++column) {
-                    std::uint32_t* target =
-                        &parent[(row * parentColumns + column) * static_cast<std::size_t>(buckets)];
-                    for (std::size_t dy = 0; dy < 2; ++dy) {
-                        for (std::size_t dx = 0; dx < 2; ++dx) {
-                            const std::uint32_t* source =
-                                &child[((2 * row + dy) * childColumns + 2 * column + dx) *
-                                       static_cast<std::size_t>(buckets)];
-                            for (int b = 0; b < buckets; ++b)
-                                target[b] += source[b];
-                        }
-                    }
-                }
-            }
-        }
-    }
+    counts.buckets = levels + 2;
+    countBuckets(counts, levelOfCode);
     progress.report("quadtree", 0.5);
     progress.throwIfCancelled();
+    return counts;
+}
 
-    // Top-down: split a cell while samples needing a deeper level, obstacles or outside area exceed the
-    // tolerance.
-    const double rasterMaxX = grid.maxX();
-    const double rasterMinY = grid.minY();
-    const double tolerance = options.purityTolerance;
-    // Sets a cell's passable share and area, and whether it is blocked, active or split (auxiliary).
-    auto judge = [&](QuadCell& cell) {
-        const std::uint32_t* bucketCounts =
-            &counts[static_cast<std::size_t>(cell.level - 1)]
-                   [(static_cast<std::size_t>(cell.row) * levelColumns(cell.level) +
-                     static_cast<std::size_t>(cell.column)) *
-                    static_cast<std::size_t>(buckets)];
-        std::uint64_t total = 0;
-        std::uint64_t passable = 0;
-        std::uint64_t deeper = 0;
-        for (int b = 0; b < buckets; ++b) {
-            total += bucketCounts[b];
-            if (b < levels)
-                passable += bucketCounts[b];
-            if (b >= cell.level)
-                deeper += bucketCounts[b]; // bucket b holds level b + 1
-        }
-        const double insideFraction = overlapLength(cell.minX, cell.maxX(), grid.originX, rasterMaxX) *
-                                      overlapLength(cell.minY, cell.maxY(), rasterMinY, grid.originY) /
-                                      (cell.size * cell.size);
-        const double passableFraction =
-            total == 0 ? 0.0 : insideFraction * static_cast<double>(passable) / static_cast<double>(total);
-        const double obstacleFraction = 1.0 - passableFraction;
-        cell.passableAreaSquareMetres = static_cast<double>(passable) * sampleArea;
-        const double deeperFraction = total == 0 ? 1.0
-                                                 : (1.0 - insideFraction) + insideFraction *
-                                                                                static_cast<double>(deeper) /
-                                                                                static_cast<double>(total);
-        if (passable == 0)
-            cell.state = CellState::Blocked;
-        else if (cell.level == levels)
-            cell.state = obstacleFraction > options.blockedThreshold ? CellState::Blocked : CellState::Active;
-        else if (deeperFraction <= tolerance + 1e-12)
-            cell.state = CellState::Active;
-        else
-            cell.state = CellState::Auxiliary;
+// A cell's verdict: blocked, active or split (auxiliary), with the area of its passable samples. Split while
+// samples needing a deeper level, obstacles or outside area exceed the tolerance.
+struct Verdict {
+    CellState state = CellState::Blocked;
+    double passableAreaSquareMetres = 0.0;
+};
+
+Verdict judge(const SampleCounts& counts, const ClassGrid& grid, const DecompositionOptions& options,
+              int level, int row, int column, double minX, double minY, double size) {
+    const int levels = counts.frame.levels;
+    const std::uint32_t* bucketCounts = counts.of(level, row, column);
+    std::uint64_t total = 0;
+    std::uint64_t passable = 0;
+    std::uint64_t deeper = 0;
+    for (int b = 0; b < counts.buckets; ++b) {
+        total += bucketCounts[b];
+        if (b < levels)
+            passable += bucketCounts[b];
+        if (b >= level)
+            deeper += bucketCounts[b]; // bucket b holds level b + 1
+    }
+    const double insideFraction = overlapLength(minX, minX + size, grid.originX, grid.maxX()) *
+                                  overlapLength(minY, minY + size, grid.minY(), grid.originY) / (size * size);
+    const double passableFraction =
+        total == 0 ? 0.0 : insideFraction * static_cast<double>(passable) / static_cast<double>(total);
+    const double obstacleFraction = 1.0 - passableFraction;
+    Verdict verdict;
+    verdict.passableAreaSquareMetres = static_cast<double>(passable) * counts.sampleArea;
+    const double deeperFraction = total == 0 ? 1.0
+                                             : (1.0 - insideFraction) + insideFraction *
+                                                                            static_cast<double>(deeper) /
+                                                                            static_cast<double>(total);
+    if (passable == 0)
+        verdict.state = CellState::Blocked;
+    else if (level == levels)
+        verdict.state = obstacleFraction > options.blockedThreshold ? CellState::Blocked : CellState::Active;
+    else if (deeperFraction <= options.purityTolerance + 1e-12)
+        verdict.state = CellState::Active;
+    else
+        verdict.state = CellState::Auxiliary;
+    return verdict;
+}
+
+// The tree, top-down from the top cells: each split cell's four children follow it.
+QuadTree growTree(const SampleCounts& counts, const ClassGrid& grid, const DecompositionOptions& options,
+                  const ProgressReporter& progress) {
+    QuadTree tree = counts.frame; // copied: judging reads the frame's levels and top grid
+    const auto judgeCell = [&](QuadCell& cell) {
+        const Verdict verdict =
+            judge(counts, grid, options, cell.level, cell.row, cell.column, cell.minX, cell.minY, cell.size);
+        cell.state = verdict.state;
+        cell.passableAreaSquareMetres = verdict.passableAreaSquareMetres;
     };
     auto topCell = [&](int row, int column) {
         QuadCell cell;
@@ -222,7 +260,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
                     QuadCell cell = stack.back();
                     stack.pop_back();
                     ++cellCount;
-                    judge(cell);
+                    judgeCell(cell);
                     activeCount += cell.state == CellState::Active ? 1 : 0;
                     if (cell.state == CellState::Auxiliary)
                         for (int child = 0; child < 4; ++child)
@@ -243,7 +281,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
         const int index = pending.back();
         pending.pop_back();
         QuadCell cell = tree.cells[static_cast<std::size_t>(index)];
-        judge(cell);
+        judgeCell(cell);
         if (cell.state == CellState::Auxiliary) {
             cell.firstChild = static_cast<int>(tree.cells.size());
             for (int child = 0; child < 4; ++child)
@@ -267,7 +305,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
         if (cell.state != CellState::Auxiliary)
             passableTotal += cell.passableAreaSquareMetres;
     tree.passableAreaSquareMetres = passableTotal;
-    LandCoverCounter landCover(samples, dense);
+    LandCoverCounter landCover(counts.samples, counts.classes);
     for (int cellIndex : tree.activeCells) {
         QuadCell& cell = tree.cells[static_cast<std::size_t>(cellIndex)];
         const LandCoverCounter::Result found = landCover.of(cell.minX, cell.maxX(), cell.minY, cell.maxY());
@@ -276,6 +314,72 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
     }
     progress.report("quadtree", 1.0);
     return tree;
+}
+
+// The grid of a one-level tree's cells, each as cellGraphOfQuadTree would make it of the leaf, row by row.
+OneLevelQuadTree gridOfBottomCells(const SampleCounts& counts, const ClassGrid& grid,
+                                   const DecompositionOptions& options, const ProgressReporter& progress) {
+    const QuadTree& tree = counts.frame;
+    OneLevelQuadTree result;
+    result.frame = {tree.originX, tree.originY, 2.0 * tree.fovMin, tree.topColumns, tree.topRows, 1};
+    result.roundedFieldsOfView = tree.roundedFieldsOfView;
+    const auto minXOf = [&](int column) { return tree.originX + column * tree.topCellSize; };
+    const auto minYOf = [&](int row) { return tree.originY - (row + 1) * tree.topCellSize; };
+    // Counted first so the cells take exactly their memory.
+    std::size_t activeCount = 0;
+    for (int row = 0; row < tree.topRows; ++row)
+        for (int column = 0; column < tree.topColumns; ++column)
+            activeCount +=
+                judge(counts, grid, options, 1, row, column, minXOf(column), minYOf(row), tree.topCellSize)
+                            .state == CellState::Active
+                    ? 1
+                    : 0;
+    progress.report("quadtree", 0.8);
+    progress.throwIfCancelled();
+    result.cells.reserve(activeCount);
+    LandCoverCounter landCover(counts.samples, counts.classes);
+    for (int row = 0; row < tree.topRows; ++row) {
+        for (int column = 0; column < tree.topColumns; ++column) {
+            Cell cell;
+            cell.column = column;
+            cell.row = row;
+            cell.minX = minXOf(column);
+            cell.minY = minYOf(row);
+            cell.size = tree.topCellSize;
+            const Verdict verdict =
+                judge(counts, grid, options, 1, row, column, cell.minX, cell.minY, cell.size);
+            result.passableAreaSquareMetres += verdict.passableAreaSquareMetres;
+            if (verdict.state != CellState::Active)
+                continue;
+            cell.passableAreaSquareMetres = static_cast<float>(verdict.passableAreaSquareMetres);
+            result.areaRounding += double{cell.passableAreaSquareMetres} - verdict.passableAreaSquareMetres;
+            const LandCoverCounter::Result found =
+                landCover.of(cell.minX, cell.maxX(), cell.minY, cell.maxY());
+            cell.classValue = found.classValue;
+            cell.speedMetresPerSecond = static_cast<float>(found.speedMetresPerSecond);
+            result.cells.push_back(cell);
+        }
+        if ((row & 255) == 0)
+            progress.throwIfCancelled();
+    }
+    progress.report("quadtree", 1.0);
+    return result;
+}
+
+} // namespace
+
+QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes,
+                                const DecompositionOptions& options, const ProgressReporter& progress) const {
+    return growTree(countSamples(grid, classes, options, progress), grid, options, progress);
+}
+
+QuadTreeLeaves QuadTreeBuilder::buildLeaves(const ClassGrid& grid, const ClassTable& classes,
+                                            const DecompositionOptions& options,
+                                            const ProgressReporter& progress) const {
+    SampleCounts counts = countSamples(grid, classes, options, progress);
+    if (counts.frame.levels == 1)
+        return gridOfBottomCells(counts, grid, options, progress);
+    return growTree(counts, grid, options, progress);
 }
 
 } // namespace mcpp

@@ -1,5 +1,7 @@
 #include "core/decomposition/QuadTreeDecomposition.hpp"
 
+#include "core/decomposition/NeighbourTopologyBuilder.hpp"
+
 #include <utility>
 
 namespace mcpp {
@@ -39,6 +41,23 @@ CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology) {
     graph.fieldsOfView = std::move(fieldsOfView);
     graph.passableAreaSquareMetres = passableArea;
     return graph;
+}
+
+CellGraph cellGraphOfQuadTree(OneLevelQuadTree grid, NeighbourTopology topology) {
+    CellGraph graph(grid.frame, std::move(grid.cells), std::move(topology));
+    graph.fieldsOfView = std::move(grid.roundedFieldsOfView);
+    graph.passableAreaSquareMetres = grid.passableAreaSquareMetres + grid.areaRounding;
+    return graph;
+}
+
+CellGraph cellGraphOfLeaves(QuadTreeLeaves leaves) {
+    if (auto* grid = std::get_if<OneLevelQuadTree>(&leaves)) {
+        NeighbourTopology topology = NeighbourTopologyBuilder{}.build(*grid);
+        return cellGraphOfQuadTree(std::move(*grid), std::move(topology));
+    }
+    auto& tree = std::get<QuadTree>(leaves);
+    NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
+    return cellGraphOfQuadTree(std::move(tree), std::move(topology));
 }
 
 } // namespace mcpp

@@ -1,6 +1,8 @@
 #pragma once
 
+#include "core/decomposition/OneLevelQuadTree.hpp"
 #include "core/decomposition/QuadTree.hpp"
+#include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/model/CellGraph.hpp"
 #include "core/model/NeighbourTopology.hpp"
 
@@ -10,5 +12,9 @@ namespace mcpp {
 // order, with the neighbours the topology found for them at any level. Takes the tree to free it before
 // the graph is indexed.
 [[nodiscard]] CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology);
+// The same graph of a one-level tree's grid.
+[[nodiscard]] CellGraph cellGraphOfQuadTree(OneLevelQuadTree grid, NeighbourTopology topology);
+// The graph of either, with the neighbours found for it.
+[[nodiscard]] CellGraph cellGraphOfLeaves(QuadTreeLeaves leaves);
 
 } // namespace mcpp

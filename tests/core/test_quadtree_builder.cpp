@@ -1,4 +1,6 @@
+#include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
+#include "core/decomposition/QuadTreeDecomposition.hpp"
 #include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningError.hpp"
@@ -6,6 +8,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <random>
 
 using namespace mcpp;
 
@@ -188,6 +191,63 @@ class QuadTreeBuilderTest : public QObject {
         // active).
         QCOMPARE(tree.activeCount(), std::size_t{2});
         QCOMPARE(tree.passableAreaSquareMetres, 23.0);
+    }
+
+    // A tree of one level is made as its grid, without nodes; the graph must be the tree's, field for field.
+    void oneLevelGridIsTheTreesGraph() {
+        ClassTable table({{1, "grass", 0, 1.5, 2.0, true},
+                          {2, "scrub", 0, 0.7, 2.0, true},
+                          {9, "lake", 0, 0.0, 1.0, false}});
+        ClassGrid grid = filledGrid(37, 29, 1); // 4 m cells: the top grid spills over east and south
+        grid.originX = 500000.0;
+        grid.originY = 4100000.0;
+        grid.outside.assign(grid.values.size(), 0);
+        std::mt19937 random(11);
+        for (std::size_t i = 0; i < grid.values.size(); ++i) {
+            const auto draw = random() % 10;
+            grid.values[i] = draw < 5 ? 1 : draw < 8 ? 2 : 9;
+            grid.outside[i] = random() % 13 == 0 ? 1 : 0;
+        }
+        DecompositionOptions options;
+        options.blockedThreshold = 0.4;
+        const QuadTreeLeaves leaves = QuadTreeBuilder{}.buildLeaves(grid, table, options);
+        QVERIFY(std::holds_alternative<OneLevelQuadTree>(leaves));
+        const CellGraph fromGrid = cellGraphOfLeaves(leaves);
+        QuadTree tree = QuadTreeBuilder{}.build(grid, table, options);
+        const NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
+        const CellGraph fromTree = cellGraphOfQuadTree(std::move(tree), topology);
+
+        QVERIFY(fromTree.size() > 20 && fromTree.size() < 90); // some blocked, most active
+        QCOMPARE(fromGrid.size(), fromTree.size());
+        QCOMPARE(fromGrid.frame().columns, fromTree.frame().columns);
+        QCOMPARE(fromGrid.frame().rows, fromTree.frame().rows);
+        QCOMPARE(fromGrid.frame().bottomCellSize, fromTree.frame().bottomCellSize);
+        QCOMPARE(fromGrid.passableAreaSquareMetres, fromTree.passableAreaSquareMetres);
+        QCOMPARE(fromGrid.fieldsOfView.size(), fromTree.fieldsOfView.size());
+        for (int id = 0; id < static_cast<int>(fromTree.size()); ++id) {
+            const Cell& a = fromGrid.cell(id);
+            const Cell& b = fromTree.cell(id);
+            QCOMPARE(a.column, b.column);
+            QCOMPARE(a.row, b.row);
+            QCOMPARE(a.span, b.span);
+            QCOMPARE(a.level, b.level);
+            QCOMPARE(a.freeSubCells, b.freeSubCells);
+            QCOMPARE(a.classValue, b.classValue);
+            QCOMPARE(a.minX, b.minX);
+            QCOMPARE(a.minY, b.minY);
+            QCOMPARE(a.size, b.size);
+            QCOMPARE(a.speedMetresPerSecond, b.speedMetresPerSecond);
+            QCOMPARE(a.passableAreaSquareMetres, b.passableAreaSquareMetres);
+            const auto gridNeighbours = fromGrid.neighbours(id);
+            const auto treeNeighbours = fromTree.neighbours(id);
+            QVERIFY(std::equal(gridNeighbours.begin(), gridNeighbours.end(), treeNeighbours.begin(),
+                               treeNeighbours.end()));
+        }
+        // Both classes at one size, and a class that needs cells of another: the tree is kept.
+        ClassTable twoSizes({{1, "grass", 0, 1.5, 2.0, true},
+                             {2, "scrub", 0, 0.7, 4.0, true},
+                             {9, "lake", 0, 0.0, 1.0, false}});
+        QVERIFY(std::holds_alternative<QuadTree>(QuadTreeBuilder{}.buildLeaves(grid, twoSizes, options)));
     }
 
     void coarsePixelsAreSampledAtCellCentres() {
