@@ -239,6 +239,8 @@ double pausedSecondsBetween(const std::vector<PathPause>& pauses, std::size_t fi
 
 double connectorSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
     double seconds = 0.0;
+    if (graph.hasOneCellSize())
+        return seconds; // a pass over a path of hundreds of millions of points for nothing
     for (std::size_t i = 1; i < waypoints.size(); ++i) {
         const Waypoint& from = waypoints[i - 1];
         const Waypoint& to = waypoints[i];

@@ -29,6 +29,9 @@ class CellGraph {
     [[nodiscard]] std::span<const int> neighbours(int id) const { return adjacency_.of(id); }
     [[nodiscard]] bool areNeighbours(int a, int b) const { return adjacency_.areNeighbours(a, b); }
     [[nodiscard]] const NeighbourTopology& adjacency() const { return adjacency_; }
+    // Whether every cell has the same span (a grid, or a quadtree of one level): then no step joins cells of
+    // different sizes.
+    [[nodiscard]] bool hasOneCellSize() const { return locator_.size() <= 1; }
     // The cell holding the point, or -1 where there is none (obstacle, outside, beyond the grid).
     [[nodiscard]] int cellAt(MapPoint point) const;
     // Gives every cell the time a turn costs there, so its cost counts turns. Decompositions leave it 0.
