@@ -325,15 +325,14 @@ OneLevelQuadTree gridOfBottomCells(const SampleCounts& counts, const ClassGrid& 
     result.roundedFieldsOfView = tree.roundedFieldsOfView;
     const auto minXOf = [&](int column) { return tree.originX + column * tree.topCellSize; };
     const auto minYOf = [&](int row) { return tree.originY - (row + 1) * tree.topCellSize; };
+    const auto verdictAt = [&](int row, int column) {
+        return judge(counts, grid, options, 1, row, column, minXOf(column), minYOf(row), tree.topCellSize);
+    };
     // Counted first so the cells take exactly their memory.
     std::size_t activeCount = 0;
     for (int row = 0; row < tree.topRows; ++row)
         for (int column = 0; column < tree.topColumns; ++column)
-            activeCount +=
-                judge(counts, grid, options, 1, row, column, minXOf(column), minYOf(row), tree.topCellSize)
-                            .state == CellState::Active
-                    ? 1
-                    : 0;
+            activeCount += verdictAt(row, column).state == CellState::Active ? 1U : 0U;
     progress.report("quadtree", 0.8);
     progress.throwIfCancelled();
     result.cells.reserve(activeCount);
@@ -346,8 +345,7 @@ OneLevelQuadTree gridOfBottomCells(const SampleCounts& counts, const ClassGrid& 
             cell.minX = minXOf(column);
             cell.minY = minYOf(row);
             cell.size = tree.topCellSize;
-            const Verdict verdict =
-                judge(counts, grid, options, 1, row, column, cell.minX, cell.minY, cell.size);
+            const Verdict verdict = verdictAt(row, column);
             result.passableAreaSquareMetres += verdict.passableAreaSquareMetres;
             if (verdict.state != CellState::Active)
                 continue;
@@ -376,7 +374,7 @@ QuadTree QuadTreeBuilder::build(const ClassGrid& grid, const ClassTable& classes
 QuadTreeLeaves QuadTreeBuilder::buildLeaves(const ClassGrid& grid, const ClassTable& classes,
                                             const DecompositionOptions& options,
                                             const ProgressReporter& progress) const {
-    SampleCounts counts = countSamples(grid, classes, options, progress);
+    const SampleCounts counts = countSamples(grid, classes, options, progress);
     if (counts.frame.levels == 1)
         return gridOfBottomCells(counts, grid, options, progress);
     return growTree(counts, grid, options, progress);
