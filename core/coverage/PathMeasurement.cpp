@@ -257,14 +257,18 @@ double connectorSeconds(const std::vector<Waypoint>& waypoints, const CellGraph&
     return seconds;
 }
 
+void timePath(CoveragePath& path, const CellGraph& graph) {
+    const PathSeconds seconds = pathSeconds(path.waypoints, graph);
+    path.timeSeconds = seconds.total + pausedSecondsBetween(path.pauses, 0, path.waypoints.size());
+    path.turnSeconds = seconds.turning;
+}
+
 void measurePath(CoveragePath& path, const CellGraph& graph) {
     double length = 0.0;
     for (std::size_t i = 1; i < path.waypoints.size(); ++i)
         length += segmentLength(path.waypoints[i - 1], path.waypoints[i]);
     path.lengthMetres = length;
-    const PathSeconds seconds = pathSeconds(path.waypoints, graph);
-    path.timeSeconds = seconds.total + pausedSecondsBetween(path.pauses, 0, path.waypoints.size());
-    path.turnSeconds = seconds.turning;
+    timePath(path, graph);
     path.connectorSeconds = connectorSeconds(path.waypoints, graph);
     path.turns = countTurns(path.waypoints);
     path.repeatedSubCellVisits = countRepeatedSubCellVisits(path, graph);

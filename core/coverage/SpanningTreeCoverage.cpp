@@ -180,7 +180,7 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
             walker.walk(planned.tree, starts[robot], closedTour_, planned.shape.points());
         planned.tree = SpanningTree(); // freed once walked: all trees and all paths are never held together
         paths[robot] = pathFromWalk(static_cast<int>(robot), starts[robot], std::move(walk), closedTour_);
-        measurePath(paths[robot], graph);
+        timePath(paths[robot], graph);
         const std::lock_guard lock(progressMutex);
         progress.report("waypoints", static_cast<double>(++finished) / static_cast<double>(paths.size()));
     });
@@ -190,7 +190,10 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
 std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, const RegionAllocation& regions,
                                                      const std::vector<MapPoint>& starts,
                                                      const ProgressReporter& progress) const {
-    return walkTrees(graph, planTrees(graph, regions, starts, progress, false), starts, progress);
+    std::vector<CoveragePath> paths =
+        walkTrees(graph, planTrees(graph, regions, starts, progress, false), starts, progress);
+    parallelFor(paths.size(), [&](std::size_t robot, int) { measurePath(paths[robot], graph); });
+    return paths;
 }
 
 } // namespace mcpp

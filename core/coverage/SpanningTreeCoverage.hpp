@@ -47,7 +47,8 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                       const std::vector<RegionTree>& earlierTrees,
                                                       const std::vector<MapPoint>& starts,
                                                       const ProgressReporter& progress, bool timed) const;
-    // The paths round the trees, each tree freed once walked (progress reported as "waypoints").
+    // The paths round the trees, each tree freed once walked (progress reported as "waypoints"). Timed only
+    // (timePath): a planner's metrics stage measures every path once, at the end.
     [[nodiscard]] std::vector<CoveragePath> walkTrees(const CellGraph& graph, std::vector<RegionTree> trees,
                                                       const std::vector<MapPoint>& starts,
                                                       const ProgressReporter& progress) const;
