@@ -328,6 +328,22 @@ void PlanRenderer::prepareDetection() {
         pyramidOf(image, QRectF(grid.originX, grid.originY - height * size, width * size, height * size));
 }
 
+namespace {
+
+// A path's length as measured; summed here only for a path not measured (one made by hand): on a large map
+// a pass over hundreds of millions of waypoints.
+double lengthOf(const CoveragePath& path) {
+    if (path.lengthMetres > 0.0)
+        return path.lengthMetres;
+    double length = 0.0;
+    for (std::size_t i = 1; i < path.waypoints.size(); ++i)
+        length += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x,
+                             path.waypoints[i].y - path.waypoints[i - 1].y);
+    return length;
+}
+
+} // namespace
+
 void PlanRenderer::addPathLine(const CoveragePath& path, bool alternate) {
     PathLine line;
     line.robot = path.robot;
@@ -352,9 +368,7 @@ void PlanRenderer::preparePaths() {
     for (const CoveragePath& path : plan_->paths) {
         if (path.waypoints.size() < 2)
             continue;
-        for (std::size_t i = 1; i < path.waypoints.size(); ++i)
-            length += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x,
-                                 path.waypoints[i].y - path.waypoints[i - 1].y);
+        length += lengthOf(path);
         steps += path.waypoints.size() - 1;
         const RobotSorties* sorties = sortiesOfRobot(*plan_, path.robot);
         if (sorties == nullptr || sorties->sorties.size() < 2) {
