@@ -115,7 +115,8 @@ void paintSymbol(QPainter& painter, const LegendItem& item, const QRectF& box) {
 } // namespace
 
 std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* plan,
-                                      const std::vector<std::string>& robotNames, const ClassGrid* grid) {
+                                      const std::vector<std::string>& robotNames, const ClassGrid* grid,
+                                      const std::vector<ImpassableCrossing>* crossings) {
     std::vector<LegendSection> sections;
     LegendSection landCover{QStringLiteral("Land cover"), {}};
     for (const LandCoverClass& entry : classes.classes()) {
@@ -189,7 +190,10 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
                                       QStringLiteral("Cells it took over from another robot"),
                                       {}});
         const bool crossed =
-            grid != nullptr && !impassableCrossings(plan->cells, plan->regions, *grid, classes, 1).empty();
+            crossings != nullptr
+                ? !crossings->empty()
+                : grid != nullptr &&
+                      !impassableCrossings(plan->cells, plan->regions, *grid, classes, 1).empty();
         if (crossed)
             overlays.items.push_back(
                 {LegendSymbol::Crossing,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/coverage/ImpassableCrossings.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
@@ -40,10 +41,11 @@ struct LegendSection {
 
 // What the map shows, for the window's legend and the exported pictures: the land-cover classes (obstacles
 // marked), each robot by colour, number, name and time when there is a plan, and what the overlays mean
-// (with the land cover `grid`, also whether any path crosses impassable land).
-[[nodiscard]] std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* plan,
-                                                    const std::vector<std::string>& robotNames,
-                                                    const ClassGrid* grid = nullptr);
+// (with the land cover `grid`, also whether any path crosses impassable land; `crossings`: the plan's, when
+// the caller has found them already, else looked for here).
+[[nodiscard]] std::vector<LegendSection>
+planLegend(const ClassTable& classes, const Plan* plan, const std::vector<std::string>& robotNames,
+           const ClassGrid* grid = nullptr, const std::vector<ImpassableCrossing>* crossings = nullptr);
 
 // The size the legend needs in this font, and the legend itself drawn from topLeft.
 [[nodiscard]] QSizeF legendSize(const std::vector<LegendSection>& sections, const QFont& font);

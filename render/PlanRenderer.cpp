@@ -183,7 +183,8 @@ void PlanRenderer::setMap(const ClassGrid* grid, const ClassTable* classes) {
                                           grid_->originY - grid_->minY()));
 }
 
-void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
+void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines,
+                           const std::vector<ImpassableCrossing>* crossings) {
     plan_ = plan;
     prepareRegions(outlines);
     prepareDetection();
@@ -192,8 +193,10 @@ void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines) {
     crossingCells_.clear();
     if (plan_ == nullptr || grid_ == nullptr || classes_ == nullptr)
         return;
-    for (const ImpassableCrossing& crossing :
-         impassableCrossings(plan_->cells, plan_->regions, *grid_, *classes_)) {
+    const std::vector<ImpassableCrossing> found =
+        crossings != nullptr ? std::vector<ImpassableCrossing>{}
+                             : impassableCrossings(plan_->cells, plan_->regions, *grid_, *classes_);
+    for (const ImpassableCrossing& crossing : crossings != nullptr ? *crossings : found) {
         const Cell& cell = plan_->cells.cell(crossing.cell);
         crossingCells_.emplace_back(cell.minX, cell.minY, cell.size, cell.size);
     }

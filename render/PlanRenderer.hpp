@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/coverage/ImpassableCrossings.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
@@ -28,7 +29,9 @@ class PlanRenderer {
     // Rebuilds the cached land-cover image; call again when the class colours change.
     void setMap(const ClassGrid* grid, const ClassTable* classes);
     // outlines: the plan's, when the caller has them already (exports share one tracing); else traced here.
-    void setPlan(const Plan* plan, const RegionOutlines* outlines = nullptr);
+    // crossings: the plan's cells over impassable land, when the caller has found them; else found here.
+    void setPlan(const Plan* plan, const RegionOutlines* outlines = nullptr,
+                 const std::vector<ImpassableCrossing>* crossings = nullptr);
     // Start points to draw; when empty the first waypoint of each path is used.
     void setStarts(std::vector<MapPoint> starts);
     // Each robot's charger away from its start, as placed (none: at its start); without them, those of

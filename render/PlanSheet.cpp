@@ -44,7 +44,8 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
                      const RegionOutlines* outlines, const std::vector<std::string>& robotNames,
                      QSize maxMapSize)
     : grid_(grid), classes_(classes), plan_(plan), outlines_(outlines),
-      sections_(planLegend(classes, &plan, robotNames, &grid)), title_(titleOf(plan)) {
+      crossings_(impassableCrossings(plan.cells, plan.regions, grid, classes)),
+      sections_(planLegend(classes, &plan, robotNames, &grid, &crossings_)), title_(titleOf(plan)) {
     const QSize mapSize = fittedMapSize(grid, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
     const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);
@@ -73,7 +74,7 @@ void PlanSheet::paint(QPainter& painter) const {
 
     PlanRenderer renderer;
     renderer.setMap(&grid_, &classes_);
-    renderer.setPlan(&plan_, outlines_);
+    renderer.setPlan(&plan_, outlines_, &crossings_);
     painter.save();
     painter.setClipRect(map_);
     // The renderer draws in device coordinates: the map's placement goes into its transform.

@@ -36,6 +36,8 @@ class PlanSheet {
     const ClassTable& classes_;
     const Plan& plan_;
     const RegionOutlines* outlines_;
+    // Found once for the legend and the map: a scan of every cell's pixels.
+    std::vector<ImpassableCrossing> crossings_;
     std::vector<LegendSection> sections_;
     QString title_;
     QFont font_;

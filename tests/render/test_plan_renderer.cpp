@@ -433,12 +433,19 @@ class TestPlanRenderer : public QObject {
         };
         QVERIFY(countDashes(true) > 20 * crossing);
         QCOMPARE(countDashes(false), 0);
-        // The legend says what the dashes mean.
-        const auto sections = render::planLegend(scene.problem.classes, &scene.plan, {}, &scene.problem.grid);
-        const auto& overlays = sections.back().items;
-        QVERIFY(std::any_of(overlays.begin(), overlays.end(), [](const render::LegendItem& item) {
-            return item.symbol == render::LegendSymbol::Crossing;
-        }));
+        // The legend says what the dashes mean, looking for crossings itself or told what was found.
+        const auto mentionsCrossing = [](const std::vector<render::LegendSection>& sections) {
+            const auto& overlays = sections.back().items;
+            return std::any_of(overlays.begin(), overlays.end(), [](const render::LegendItem& item) {
+                return item.symbol == render::LegendSymbol::Crossing;
+            });
+        };
+        const auto& classes = scene.problem.classes;
+        QVERIFY(mentionsCrossing(render::planLegend(classes, &scene.plan, {}, &scene.problem.grid)));
+        QVERIFY(
+            mentionsCrossing(render::planLegend(classes, &scene.plan, {}, &scene.problem.grid, &crossings)));
+        const std::vector<ImpassableCrossing> none;
+        QVERIFY(!mentionsCrossing(render::planLegend(classes, &scene.plan, {}, &scene.problem.grid, &none)));
     }
 
     void legendListsClassesRobotsAndOverlays() {
