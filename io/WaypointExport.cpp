@@ -140,11 +140,11 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
     }
     const std::vector<std::size_t> kept =
         exportedWaypointIndices(*coverage, context.plan.cells, context.settings.mergeCollinear);
-    const std::vector<double> seconds = cumulativeSeconds(*coverage, context.plan.cells);
+    const std::vector<double> seconds = cumulativeSecondsAt(*coverage, context.plan.cells, kept);
     Points points;
     points.reserve(kept.size());
-    for (const std::size_t index : kept)
-        points.push_back({coverage->waypoints[index], seconds[index], std::nan(""), std::nan("")});
+    for (std::size_t k = 0; k < kept.size(); ++k)
+        points.push_back({coverage->waypoints[kept[k]], seconds[k], std::nan(""), std::nan("")});
     if (context.georeference.hasCrs()) {
         if (Status placed = placeOnWgs84(context, robot, *coverage, kept, points); !placed)
             return Result<Points>::failure(path + ": " + placed.error());

@@ -185,6 +185,27 @@ std::vector<double> cumulativeSeconds(const CoveragePath& path, const CellGraph&
     return seconds;
 }
 
+std::vector<double> cumulativeSecondsAt(const CoveragePath& path, const CellGraph& graph,
+                                        const std::vector<std::size_t>& indices) {
+    std::vector<double> seconds(indices.size(), 0.0);
+    if (path.waypoints.empty())
+        return seconds;
+    std::size_t wanted = 0;
+    walkSeconds(path.waypoints, graph, 0, path.waypoints.size() - 1, [&](std::size_t i, double total) {
+        for (; wanted < indices.size() && indices[wanted] == i; ++wanted)
+            seconds[wanted] = total;
+    });
+    // A pause at a waypoint delays every waypoint after it, added in the order cumulativeSeconds adds them.
+    double waited = 0.0;
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        for (; next < path.pauses.size() && path.pauses[next].waypoint < indices[k]; ++next)
+            waited += path.pauses[next].seconds;
+        seconds[k] += waited;
+    }
+    return seconds;
+}
+
 double sortieSeconds(const CoveragePath& path, const Sortie& sortie, const CellGraph& graph) {
     return walkSeconds(path.waypoints, graph, sortie.firstWaypoint, sortie.lastWaypoint,
                        [](std::size_t, double) {})

@@ -54,6 +54,10 @@ struct PathSeconds {
 // The time from the start to reach each waypoint, pauses included. Waypoints do not store it: a large
 // map's paths hold tens of millions of them, and a writer needs the times of one path at a time.
 [[nodiscard]] std::vector<double> cumulativeSeconds(const CoveragePath& path, const CellGraph& graph);
+// The same times at some waypoints only (`indices`, ascending), the rest not held: an exporter keeps a few
+// thousand of a path's hundreds of millions of points.
+[[nodiscard]] std::vector<double> cumulativeSecondsAt(const CoveragePath& path, const CellGraph& graph,
+                                                      const std::vector<std::size_t>& indices);
 
 // The seconds paused at waypoints first .. last - 1: what the cumulative seconds of `last` hold of pauses
 // since `first`.

@@ -114,6 +114,23 @@ class TurnTimeTest : public QObject {
         QCOMPARE(seconds.turning, 4.0);
     }
 
+    // Times asked at some waypoints only are those of every waypoint's, pauses before each included.
+    void cumulativeTimesAtSomeWaypointsAreTheSame() {
+        CoveragePath path;
+        path.waypoints = pathOf({{10, 10}, {30, 10}, {30, 30}, {30, 50}, {10, 50}, {10, 30}});
+        path.pauses = {{1, 7.0}, {3, 0.5}, {3, 2.0}};
+        const CellGraph graph = oneCell(4.0);
+        const std::vector<double> every = cumulativeSeconds(path, graph);
+        const std::vector<std::size_t> indices{0, 1, 2, 3, 5};
+        const std::vector<double> some = cumulativeSecondsAt(path, graph, indices);
+        QCOMPARE(some.size(), indices.size());
+        for (std::size_t k = 0; k < indices.size(); ++k)
+            QCOMPARE(some[k], every[indices[k]]);
+        QCOMPARE(some[1], 10.0);              // the pause at waypoint 1 delays only what comes after it
+        QCOMPARE(some[2], 10.0 + 14.0 + 7.0); // the corner's 4 s, 10 m at 2 m/s and that pause
+        QVERIFY(cumulativeSecondsAt(path, graph, {}).empty());
+    }
+
     // A sortie that begins at a corner pays the turn there: sorties laid end to end take the path's time,
     // each the difference of the cumulative times at its ends.
     void sortiesPayTheTurnWhereTheyBegin() {
