@@ -10,7 +10,7 @@ namespace mcpp {
 
 // A quadtree of a single level, where every class present needs the same cell size: a grid of its bottom
 // cells. Made straight from the sample counts, listed as the tree lists its leaves (row by row), it spares
-// the tree's 64-byte nodes, a third of the memory of a map of tens of millions of cells.
+// the tree's 64-byte nodes (4.4 GB on a map of 69 million cells) and their topology search.
 struct OneLevelQuadTree {
     GridFrame frame;
     std::vector<Cell> cells; // the active leaves, row by row
