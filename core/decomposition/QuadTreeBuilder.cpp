@@ -325,17 +325,9 @@ OneLevelQuadTree gridOfBottomCells(const SampleCounts& counts, const ClassGrid& 
     result.roundedFieldsOfView = tree.roundedFieldsOfView;
     const auto minXOf = [&](int column) { return tree.originX + column * tree.topCellSize; };
     const auto minYOf = [&](int row) { return tree.originY - (row + 1) * tree.topCellSize; };
-    const auto verdictAt = [&](int row, int column) {
-        return judge(counts, grid, options, 1, row, column, minXOf(column), minYOf(row), tree.topCellSize);
-    };
-    // Counted first so the cells take exactly their memory.
-    std::size_t activeCount = 0;
-    for (int row = 0; row < tree.topRows; ++row)
-        for (int column = 0; column < tree.topColumns; ++column)
-            activeCount += verdictAt(row, column).state == CellState::Active ? 1U : 0U;
-    progress.report("quadtree", 0.8);
-    progress.throwIfCancelled();
-    result.cells.reserve(activeCount);
+    // Room for every bottom cell, of which only the pages the active cells fill become resident: one
+    // judging pass, and no copy as the vector grows.
+    result.cells.reserve(static_cast<std::size_t>(tree.topRows) * static_cast<std::size_t>(tree.topColumns));
     LandCoverCounter landCover(counts.samples, counts.classes);
     for (int row = 0; row < tree.topRows; ++row) {
         for (int column = 0; column < tree.topColumns; ++column) {
@@ -345,7 +337,8 @@ OneLevelQuadTree gridOfBottomCells(const SampleCounts& counts, const ClassGrid& 
             cell.minX = minXOf(column);
             cell.minY = minYOf(row);
             cell.size = tree.topCellSize;
-            const Verdict verdict = verdictAt(row, column);
+            const Verdict verdict =
+                judge(counts, grid, options, 1, row, column, cell.minX, cell.minY, cell.size);
             result.passableAreaSquareMetres += verdict.passableAreaSquareMetres;
             if (verdict.state != CellState::Active)
                 continue;
@@ -357,8 +350,10 @@ OneLevelQuadTree gridOfBottomCells(const SampleCounts& counts, const ClassGrid& 
             cell.speedMetresPerSecond = static_cast<float>(found.speedMetresPerSecond);
             result.cells.push_back(cell);
         }
-        if ((row & 255) == 0)
+        if ((row & 255) == 0) {
             progress.throwIfCancelled();
+            progress.report("quadtree", 0.5 + 0.5 * row / tree.topRows);
+        }
     }
     progress.report("quadtree", 1.0);
     return result;
