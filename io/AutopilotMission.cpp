@@ -16,27 +16,54 @@ using internal::collinearAndBetween;
 // the vehicle starts with.
 constexpr int itemsBesideWaypoints = 2;
 
+// A commanded speed along a path as steps: each holds from its first waypoint up to the next step's. A large
+// map's path holds tens of millions of waypoints and changes speed at a few thousand of them: a speed per
+// waypoint took 8 bytes each (370 MB for one robot on a 69 M-cell map).
+struct SpeedStep {
+    std::size_t first = 0;
+    double speed = 0.0;
+};
+using SpeedSteps = std::vector<SpeedStep>; // by first waypoint, ascending; the first step begins at 0
+
+// Reads the speed of waypoints taken in ascending order.
+class SpeedCursor {
+  public:
+    explicit SpeedCursor(const SpeedSteps& steps) : steps_(steps) {}
+    [[nodiscard]] double at(std::size_t waypoint) {
+        while (next_ < steps_.size() && steps_[next_].first <= waypoint)
+            speed_ = steps_[next_++].speed;
+        return speed_;
+    }
+
+  private:
+    const SpeedSteps& steps_;
+    std::size_t next_ = 0;
+    double speed_ = 0.0;
+};
+
 // The speed in force at each waypoint: a new one only when it differs enough from the one before.
-std::vector<double> commandedSpeeds(const std::vector<Waypoint>& waypoints, const VehicleSettings& vehicle,
-                                    double speedTolerance) {
-    std::vector<double> speeds(waypoints.size(), vehicle.cruiseSpeedMetresPerSecond);
+SpeedSteps commandedSpeeds(const std::vector<Waypoint>& waypoints, const VehicleSettings& vehicle,
+                           double speedTolerance) {
+    SpeedSteps steps{{0, vehicle.cruiseSpeedMetresPerSecond}};
     if (vehicle.cruiseSpeedMetresPerSecond > 0.0 || waypoints.empty())
-        return speeds;
+        return steps;
     double current = roundedSpeed(waypoints.front().speedMetresPerSecond);
+    steps.front().speed = current;
     // Runs of waypoints share a land cover's speed: rounded once a run (a logarithm and a power each time).
     float lastSpeed = waypoints.front().speedMetresPerSecond;
     double wanted = current;
     for (std::size_t i = 0; i < waypoints.size(); ++i) {
-        if (waypoints[i].speedMetresPerSecond != lastSpeed) {
-            lastSpeed = waypoints[i].speedMetresPerSecond;
-            wanted = roundedSpeed(lastSpeed);
-        }
+        if (waypoints[i].speedMetresPerSecond == lastSpeed)
+            continue;
+        lastSpeed = waypoints[i].speedMetresPerSecond;
+        wanted = roundedSpeed(lastSpeed);
         // A relative margin keeps a change of exactly the tolerance (1.1 after 1.0 at 10%) below it.
-        if (wanted > 0.0 && std::abs(wanted - current) > speedTolerance * current * (1.0 + 1e-9))
+        if (wanted > 0.0 && std::abs(wanted - current) > speedTolerance * current * (1.0 + 1e-9)) {
             current = wanted;
-        speeds[i] = current;
+            steps.push_back({i, current});
+        }
     }
-    return speeds;
+    return steps;
 }
 
 // The slowest land-cover speed of the waypoints from first to last, rounded down: no segment between them
@@ -53,11 +80,10 @@ double slowestSpeed(const std::vector<Waypoint>& waypoints, std::size_t first, s
 
 // Each straight leg at the slowest speed along it, so that speeds change only at turns, with no waypoint in
 // the middle of a leg. The tolerance only keeps a slower speed into a leg that allows a little more, never
-// the reverse.
-std::vector<double> slowestSpeedPerLeg(const std::vector<Waypoint>& waypoints, double speedTolerance) {
-    std::vector<double> speeds(waypoints.size(), 0.0);
-    if (waypoints.empty())
-        return speeds;
+// the reverse. A leg's speed holds from the waypoint after its start to its end; the first leg's from the
+// path's start.
+SpeedSteps slowestSpeedPerLeg(const std::vector<Waypoint>& waypoints, double speedTolerance) {
+    SpeedSteps steps{{0, 0.0}};
     double current = 0.0;
     std::size_t legStart = 0;
     for (std::size_t i = 1; i < waypoints.size(); ++i) {
@@ -68,22 +94,24 @@ std::vector<double> slowestSpeedPerLeg(const std::vector<Waypoint>& waypoints, d
         const double slowest = slowestSpeed(waypoints, legStart, i);
         if (current == 0.0 || slowest < current || slowest > current * (1.0 + speedTolerance) * (1.0 + 1e-9))
             current = slowest;
-        std::fill(speeds.begin() + static_cast<std::ptrdiff_t>(legStart + 1),
-                  speeds.begin() + static_cast<std::ptrdiff_t>(i + 1), current);
         if (legStart == 0)
-            speeds[0] = current;
+            steps.front().speed = current;
+        else if (current != steps.back().speed)
+            steps.push_back({legStart + 1, current});
         legStart = i;
     }
-    return speeds;
+    return steps;
 }
 
 // The points the mission keeps and their speeds, read from the whole path without copying it (a large
 // map's paths hold tens of millions of points).
-void keepPoints(const std::vector<Waypoint>& points, const std::vector<double>& speeds, bool mergeCollinear,
+void keepPoints(const std::vector<Waypoint>& points, const SpeedSteps& speeds, bool mergeCollinear,
                 AutopilotMission& mission) {
+    SpeedCursor speedHere(speeds);
+    SpeedCursor speedNext(speeds);
     const auto keep = [&](std::size_t i) {
         mission.points.push_back(points[i]);
-        mission.commandedSpeeds.push_back(speeds[i]);
+        mission.commandedSpeeds.push_back(speedHere.at(i));
     };
     if (points.empty())
         return;
@@ -91,7 +119,7 @@ void keepPoints(const std::vector<Waypoint>& points, const std::vector<double>& 
     for (std::size_t i = 1; i + 1 < points.size(); ++i) {
         // Dropping point i is exact when the segment after it is commanded the same speed.
         if (mergeCollinear && collinearAndBetween(mission.points.back(), points[i], points[i + 1]) &&
-            speeds[i] == speeds[i + 1])
+            speedHere.at(i) == speedNext.at(i + 1))
             continue;
         keep(i);
     }
@@ -172,9 +200,8 @@ AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSetting
                                   const ExportSettings& settings) {
     AutopilotMission mission;
     const bool byLeg = settings.speedChangesAtTurnsOnly && !(vehicle.cruiseSpeedMetresPerSecond > 0.0);
-    const std::vector<double> speeds =
-        byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
-              : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
+    const SpeedSteps speeds = byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
+                                    : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
     keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
     splitIntoParts(mission, vehicle.maxWaypoints);
     const double flight = flightSeconds(mission);

@@ -3,6 +3,7 @@
 #include "PlanFixture.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
+#include "io/internal/StraightLine.hpp"
 
 #include <QFile>
 #include <QFileInfo>
@@ -62,12 +63,54 @@ QJsonObject readJson(const QString& path) {
     return QJsonDocument::fromJson(file.readAll()).object();
 }
 
+// The straight-line test for any three points, as collinearAndBetween makes it off the grid's lines.
+bool generalCollinearAndBetween(const Waypoint& a, const Waypoint& b, const Waypoint& c) {
+    const double abX = b.x - a.x, abY = b.y - a.y, acX = c.x - a.x, acY = c.y - a.y;
+    const double lengthAc = std::hypot(acX, acY);
+    if (lengthAc == 0.0)
+        return false;
+    const double cross = abX * acY - abY * acX;
+    if (std::abs(cross) > 1e-9 * lengthAc * std::max(lengthAc, 1.0))
+        return false;
+    const double along = (abX * acX + abY * acY) / (lengthAc * lengthAc);
+    return along > 0.0 && along < 1.0;
+}
+
 } // namespace
 
 class AutopilotMissionTest : public QObject {
     Q_OBJECT
 
   private slots:
+    // Points on a line of the grid take a shortcut past std::hypot; it must answer as the general test
+    // does, ends, repeated points and spacings that are not whole numbers (US survey feet) included.
+    void gridLinePointsAreTestedAsAnyOthers() {
+        std::mt19937 random(20261126);
+        std::uniform_int_distribution<int> step(-3, 3);
+        int compared = 0;
+        int between = 0;
+        for (const double spacing : {10.0, 1.25, 0.3048006096 * 7.0, 0.1}) {
+            for (int trial = 0; trial < 20000; ++trial) {
+                const bool alongColumn = trial % 2 == 0;
+                const double fixed = (alongColumn ? 431215.0 : 5399615.0) + spacing * step(random);
+                const double start = (alongColumn ? 5399615.0 : 431215.0) + spacing * step(random);
+                Waypoint points[3];
+                for (Waypoint& point : points) {
+                    const double moving = start + spacing * step(random);
+                    point.x = alongColumn ? fixed : moving;
+                    point.y = alongColumn ? moving : fixed;
+                }
+                const bool expected = generalCollinearAndBetween(points[0], points[1], points[2]);
+                QCOMPARE(internal::collinearAndBetween(points[0], points[1], points[2]), expected);
+                between += expected ? 1 : 0;
+                ++compared;
+            }
+        }
+        // Both answers were given many times over.
+        QVERIFY(between > compared / 10);
+        QVERIFY(between < compared - compared / 10);
+    }
+
     void speedsAreRoundedToTwoSignificantDigits() {
         QCOMPARE(roundedSpeed(0.3168316831), 0.32);
         QCOMPARE(roundedSpeed(12.34), 12.0);
