@@ -1,3 +1,4 @@
+#include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -107,6 +108,33 @@ class DarpTest : public QObject {
             openTurnSeconds += path.turnSeconds;
         QCOMPARE(openPlan.metrics.lowerBoundSeconds, (60.0 * travelSeconds + openTurnSeconds) / 3.0);
         QVERIFY(!hasIssue(openPlan, "confined-robot"));
+    }
+
+    // Regions that do not touch can still share one connected part: with the cells between two regions
+    // left to nobody, the part holds all three robots and none is confined; walled off, one is.
+    void regionsApartShareTheirPart() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(2, std::string(30, '.')), {{0.5, 0.5}, {14.5, 0.5}, {29.5, 0.5}});
+        Plan plan = planWithDarp(problem);
+        QVERIFY(plan.metrics.confinedRobots.empty());
+        std::vector<int>& owner = plan.regions.robotOfCell;
+        std::vector<int> border;
+        for (int cell = 0; cell < static_cast<int>(plan.cells.size()); ++cell)
+            for (const int neighbour : plan.cells.neighbours(cell))
+                if (owner[static_cast<std::size_t>(cell)] == 0 &&
+                    owner[static_cast<std::size_t>(neighbour)] == 1)
+                    border.push_back(cell);
+        QVERIFY(!border.empty());
+        for (const int cell : border)
+            owner[static_cast<std::size_t>(cell)] = -1;
+        PlanMetricsCalculator{}.compute(plan);
+        QVERIFY(plan.metrics.confinedRobots.empty());
+        // The same cells as obstacles wall robot 0 in.
+        PlanningProblem walled = test::drawnProblem(rowsOf(2, "......##......................"),
+                                                    {{0.5, 0.5}, {14.5, 0.5}, {29.5, 0.5}});
+        const Plan walledPlan = planWithDarp(walled);
+        QCOMPARE(walledPlan.metrics.confinedRobots.size(), std::size_t{1});
+        QCOMPARE(walledPlan.metrics.confinedRobots[0].robot, 0);
     }
 
     // Half the corridor is mud: DARP balances time, so the robot on the mud side gets fewer cells, and the
