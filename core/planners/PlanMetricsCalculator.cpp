@@ -38,7 +38,7 @@ PartFigures figuresOf(const Plan& plan, const StartComponent& part) {
 // Whether every robot's region touches the others', region to region: then all the starts lie in one
 // connected part. Each robot's cells lie in the part of its start (regions grow from the starts and its path
 // walks them), and cells that touch lie in one part. A pass over the cells' neighbours, where finding the
-// parts searches the whole graph (5 s of the metrics' 7 s on a map of 69 M cells, with one part).
+// parts searches the whole graph (the metrics took 7.2 s with it, 4.0 s without, on a map of 69 M cells).
 bool regionsJoinEveryRobot(const Plan& plan) {
     const std::vector<int>& owner = plan.regions.robotOfCell;
     const std::size_t robots = plan.regions.startCell.size();
