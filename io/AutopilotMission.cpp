@@ -16,9 +16,10 @@ using internal::collinearAndBetween;
 // the vehicle starts with.
 constexpr int itemsBesideWaypoints = 2;
 
-// A commanded speed along a path as steps: each holds from its first waypoint up to the next step's. A large
-// map's path holds tens of millions of waypoints and changes speed at a few thousand of them: a speed per
-// waypoint took 8 bytes each (370 MB for one robot on a 69 M-cell map).
+// A commanded speed along a path as steps: each holds from its first waypoint up to the next step's. A step
+// begins only where the land cover's speed changes, at most once a cell (two waypoints): a large map's path
+// holds tens of millions of waypoints, and a speed per waypoint took 8 bytes each (370 MB for one robot on
+// a 69 M-cell map).
 struct SpeedStep {
     std::size_t first = 0;
     double speed = 0.0;
@@ -41,7 +42,7 @@ class SpeedCursor {
     double speed_ = 0.0;
 };
 
-// The speed in force at each waypoint: a new one only when it differs enough from the one before.
+// The commanded speed along the path, as steps: a new one only when it differs enough from the one before.
 SpeedSteps commandedSpeeds(const std::vector<Waypoint>& waypoints, const VehicleSettings& vehicle,
                            double speedTolerance) {
     SpeedSteps steps{{0, vehicle.cruiseSpeedMetresPerSecond}};

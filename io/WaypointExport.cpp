@@ -180,7 +180,7 @@ std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, const
     kept.push_back(0);
     for (std::size_t i = 1; i + 1 < waypoints.size(); ++i) {
         // Dropping point i is exact when the robot drives the whole of previous -> next at next's speed.
-        // Points of one cell share its land cover: most pairs are, and skip reading their cells.
+        // Most neighbouring points share a cell, and so its land cover: no need to read it.
         const bool redundant = collinearAndBetween(waypoints[kept.back()], waypoints[i], waypoints[i + 1]) &&
                                waypoints[i].speedMetresPerSecond == waypoints[i + 1].speedMetresPerSecond &&
                                (waypoints[i].cell == waypoints[i + 1].cell ||

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/CellGraph.hpp"
+#include "core/model/RegionAllocation.hpp"
 
 #include <vector>
 
@@ -17,5 +18,11 @@ struct StartComponent {
 // are in none.
 [[nodiscard]] std::vector<StartComponent> componentsWithStarts(const CellGraph& graph,
                                                                const std::vector<int>& startCells);
+
+// Whether the robots' regions are all linked, region touching region: then every start cell
+// (regions.startCell) lies in one connected part, for each robot's cells lie in its start's part (regions
+// grow from the start cells, and paths walk them) and cells that touch lie in one part. False also where a
+// robot has no cells; componentsWithStarts then tells.
+[[nodiscard]] bool regionsLinkEveryRobot(const CellGraph& graph, const RegionAllocation& regions);
 
 } // namespace mcpp

@@ -10,9 +10,10 @@ namespace mcpp::io::internal {
 // Whether b lies on the straight segment from a to c, strictly between its ends: a point a path can drop
 // without changing its shape.
 [[nodiscard]] inline bool collinearAndBetween(const Waypoint& a, const Waypoint& b, const Waypoint& c) {
-    // Most points of a path lie on a line of the grid with their neighbours. There the general test below
-    // comes to this without std::hypot (which gives |y| for hypot(0, y)), bit for bit, at a fraction of the
-    // cost: a path of tens of millions of points is tested several times over when it is written.
+    // Most points of a path lie on a line of the grid with their neighbours. There, for finite coordinates,
+    // the general test below comes to this without std::hypot (which gives |y| for hypot(0, y)), bit for
+    // bit, at a fraction of the cost: a path of tens of millions of points is tested several times over
+    // when it is written.
     const bool alongColumn = a.x == b.x && b.x == c.x;
     if (alongColumn || (a.y == b.y && b.y == c.y)) {
         const double ab = alongColumn ? b.y - a.y : b.x - a.x;

@@ -1,3 +1,4 @@
+#include "core/allocation/StartComponents.hpp"
 #include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/PlanInvariants.hpp"
@@ -111,12 +112,18 @@ class DarpTest : public QObject {
     }
 
     // Regions that do not touch can still share one connected part: with the cells between two regions
-    // left to nobody, the part holds all three robots and none is confined; walled off, one is.
+    // left to nobody, the regions no longer link every robot, yet the part holds all three robots and none
+    // is confined; walled off, one is.
     void regionsApartShareTheirPart() {
-        PlanningProblem problem =
-            test::drawnProblem(rowsOf(2, std::string(30, '.')), {{0.5, 0.5}, {14.5, 0.5}, {29.5, 0.5}});
+        const std::vector<MapPoint> starts{{0.5, 0.5}, {14.5, 0.5}, {29.5, 0.5}};
+        PlanningProblem problem = test::drawnProblem(rowsOf(2, std::string(30, '.')), starts);
         Plan plan = planWithDarp(problem);
         QVERIFY(plan.metrics.confinedRobots.empty());
+        QVERIFY(regionsLinkEveryRobot(plan.cells, plan.regions)); // 0 touches 1, 1 touches 2
+        // A robot without cells links nothing.
+        RegionAllocation withoutRobot2 = plan.regions;
+        std::replace(withoutRobot2.robotOfCell.begin(), withoutRobot2.robotOfCell.end(), 2, 1);
+        QVERIFY(!regionsLinkEveryRobot(plan.cells, withoutRobot2));
         std::vector<int>& owner = plan.regions.robotOfCell;
         std::vector<int> border;
         for (int cell = 0; cell < static_cast<int>(plan.cells.size()); ++cell)
@@ -127,12 +134,13 @@ class DarpTest : public QObject {
         QVERIFY(!border.empty());
         for (const int cell : border)
             owner[static_cast<std::size_t>(cell)] = -1;
+        QVERIFY(!regionsLinkEveryRobot(plan.cells, plan.regions));
         PlanMetricsCalculator{}.compute(plan);
         QVERIFY(plan.metrics.confinedRobots.empty());
-        // The same cells as obstacles wall robot 0 in.
-        PlanningProblem walled = test::drawnProblem(rowsOf(2, "......##......................"),
-                                                    {{0.5, 0.5}, {14.5, 0.5}, {29.5, 0.5}});
+        // Obstacles across the corridor wall robot 0 in.
+        PlanningProblem walled = test::drawnProblem(rowsOf(2, "......##......................"), starts);
         const Plan walledPlan = planWithDarp(walled);
+        QVERIFY(!regionsLinkEveryRobot(walledPlan.cells, walledPlan.regions));
         QCOMPARE(walledPlan.metrics.confinedRobots.size(), std::size_t{1});
         QCOMPARE(walledPlan.metrics.confinedRobots[0].robot, 0);
     }

@@ -1,5 +1,6 @@
 #include "tests/support/PlanInvariants.hpp"
 
+#include "core/allocation/StartComponents.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
@@ -186,6 +187,34 @@ std::vector<std::string> checkCells(const Plan& plan) {
     return violations;
 }
 
+namespace {
+
+// Each robot's cells lie in the connected part of its start cell: the metrics' pocket bound relies on it.
+void checkRobotsStayInTheirPart(const Plan& plan, std::vector<std::string>& violations) {
+    const std::vector<int>& starts = plan.regions.startCell;
+    for (const int start : starts)
+        if (start < 0 || static_cast<std::size_t>(start) >= plan.cells.size())
+            return;
+    std::vector<int> partOfCell(plan.cells.size(), -1);
+    std::vector<int> partOfRobot(starts.size(), -1);
+    const std::vector<StartComponent> parts = componentsWithStarts(plan.cells, starts);
+    for (std::size_t part = 0; part < parts.size(); ++part) {
+        for (const int cell : parts[part].cells)
+            partOfCell[static_cast<std::size_t>(cell)] = static_cast<int>(part);
+        for (const int robot : parts[part].robots)
+            partOfRobot[static_cast<std::size_t>(robot)] = static_cast<int>(part);
+    }
+    for (std::size_t cell = 0; cell < plan.cells.size(); ++cell) {
+        const int robot = plan.regions.robotOfCell[cell];
+        if (robot >= 0 && static_cast<std::size_t>(robot) < starts.size() &&
+            partOfCell[cell] != partOfRobot[static_cast<std::size_t>(robot)])
+            violations.push_back(cellName(static_cast<int>(cell)) + " of robot " + std::to_string(robot) +
+                                 " lies outside its start's connected part");
+    }
+}
+
+} // namespace
+
 std::vector<std::string> checkRegions(const Plan& plan, const PlannerPromises& promises) {
     std::vector<std::string> violations;
     const auto& owner = plan.regions.robotOfCell;
@@ -204,6 +233,7 @@ std::vector<std::string> checkRegions(const Plan& plan, const PlannerPromises& p
         if (!reachable[cell] && owner[cell] >= 0)
             violations.push_back("unreachable " + cellName(static_cast<int>(cell)) + " has a robot");
     }
+    checkRobotsStayInTheirPart(plan, violations);
     if (!promises.regionsConnected)
         return violations;
     for (std::size_t robot = 0; robot < robots; ++robot) {
