@@ -63,27 +63,14 @@ QJsonObject readJson(const QString& path) {
     return QJsonDocument::fromJson(file.readAll()).object();
 }
 
-// The straight-line test for any three points, as collinearAndBetween makes it off the grid's lines.
-bool generalCollinearAndBetween(const Waypoint& a, const Waypoint& b, const Waypoint& c) {
-    const double abX = b.x - a.x, abY = b.y - a.y, acX = c.x - a.x, acY = c.y - a.y;
-    const double lengthAc = std::hypot(acX, acY);
-    if (lengthAc == 0.0)
-        return false;
-    const double cross = abX * acY - abY * acX;
-    if (std::abs(cross) > 1e-9 * lengthAc * std::max(lengthAc, 1.0))
-        return false;
-    const double along = (abX * acX + abY * acY) / (lengthAc * lengthAc);
-    return along > 0.0 && along < 1.0;
-}
-
 } // namespace
 
 class AutopilotMissionTest : public QObject {
     Q_OBJECT
 
   private slots:
-    // Points on a line of the grid take a shortcut past std::hypot; it must answer as the general test
-    // does, ends, repeated points and spacings that are not whole numbers (US survey feet) included.
+    // Points on a line of the grid take a shortcut past std::hypot; it must answer as the test for any three
+    // points does, ends, repeated points and spacings that are not whole numbers (US survey feet) included.
     void gridLinePointsAreTestedAsAnyOthers() {
         std::mt19937 random(20261126);
         std::uniform_int_distribution<int> step(-3, 3);
@@ -100,7 +87,7 @@ class AutopilotMissionTest : public QObject {
                     point.x = alongColumn ? fixed : moving;
                     point.y = alongColumn ? moving : fixed;
                 }
-                const bool expected = generalCollinearAndBetween(points[0], points[1], points[2]);
+                const bool expected = internal::collinearAndBetweenAnywhere(points[0], points[1], points[2]);
                 QCOMPARE(internal::collinearAndBetween(points[0], points[1], points[2]), expected);
                 between += expected ? 1 : 0;
                 ++compared;
