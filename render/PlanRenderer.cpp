@@ -193,10 +193,12 @@ void PlanRenderer::setPlan(const Plan* plan, const RegionOutlines* outlines,
     crossingCells_.clear();
     if (plan_ == nullptr || grid_ == nullptr || classes_ == nullptr)
         return;
-    const std::vector<ImpassableCrossing> found =
-        crossings != nullptr ? std::vector<ImpassableCrossing>{}
-                             : impassableCrossings(plan_->cells, plan_->regions, *grid_, *classes_);
-    for (const ImpassableCrossing& crossing : crossings != nullptr ? *crossings : found) {
+    std::vector<ImpassableCrossing> found;
+    if (crossings == nullptr) {
+        found = impassableCrossings(plan_->cells, plan_->regions, *grid_, *classes_);
+        crossings = &found;
+    }
+    for (const ImpassableCrossing& crossing : *crossings) {
         const Cell& cell = plan_->cells.cell(crossing.cell);
         crossingCells_.emplace_back(cell.minX, cell.minY, cell.size, cell.size);
     }
@@ -336,13 +338,7 @@ namespace {
 // A path's length as measured; summed here only for a path not measured (one made by hand): on a large map
 // a pass over hundreds of millions of waypoints.
 double lengthOf(const CoveragePath& path) {
-    if (path.lengthMetres > 0.0)
-        return path.lengthMetres;
-    double length = 0.0;
-    for (std::size_t i = 1; i < path.waypoints.size(); ++i)
-        length += std::hypot(path.waypoints[i].x - path.waypoints[i - 1].x,
-                             path.waypoints[i].y - path.waypoints[i - 1].y);
-    return length;
+    return path.lengthMetres > 0.0 ? path.lengthMetres : pathLengthMetres(path.waypoints);
 }
 
 } // namespace

@@ -284,11 +284,15 @@ void timePath(CoveragePath& path, const CellGraph& graph) {
     path.turnSeconds = seconds.turning;
 }
 
-void measurePath(CoveragePath& path, const CellGraph& graph) {
+double pathLengthMetres(const std::vector<Waypoint>& waypoints) {
     double length = 0.0;
-    for (std::size_t i = 1; i < path.waypoints.size(); ++i)
-        length += segmentLength(path.waypoints[i - 1], path.waypoints[i]);
-    path.lengthMetres = length;
+    for (std::size_t i = 1; i < waypoints.size(); ++i)
+        length += segmentLength(waypoints[i - 1], waypoints[i]);
+    return length;
+}
+
+void measurePath(CoveragePath& path, const CellGraph& graph) {
+    path.lengthMetres = pathLengthMetres(path.waypoints);
     timePath(path, graph);
     path.connectorSeconds = connectorSeconds(path.waypoints, graph);
     path.turns = countTurns(path.waypoints);

@@ -89,6 +89,8 @@ struct Direction {
 // segment is travelled half at the speed of the waypoint it leaves and half at the speed of the one it
 // reaches.
 void measurePath(CoveragePath& path, const CellGraph& graph);
+// The length of the line through the waypoints, as measurePath measures it.
+[[nodiscard]] double pathLengthMetres(const std::vector<Waypoint>& waypoints);
 // Fills only the time (pauses included) and the part of it spent turning, as measurePath does: what a
 // planner compares paths by before its last stage. A pass over the waypoints instead of five.
 void timePath(CoveragePath& path, const CellGraph& graph);

@@ -190,10 +190,16 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
 std::vector<CoveragePath> SpanningTreeCoverage::plan(const CellGraph& graph, const RegionAllocation& regions,
                                                      const std::vector<MapPoint>& starts,
                                                      const ProgressReporter& progress) const {
-    std::vector<CoveragePath> paths =
-        walkTrees(graph, planTrees(graph, regions, starts, progress, false), starts, progress);
+    std::vector<CoveragePath> paths = timedPlan(graph, regions, starts, progress);
     parallelFor(paths.size(), [&](std::size_t robot, int) { measurePath(paths[robot], graph); });
     return paths;
+}
+
+std::vector<CoveragePath> SpanningTreeCoverage::timedPlan(const CellGraph& graph,
+                                                          const RegionAllocation& regions,
+                                                          const std::vector<MapPoint>& starts,
+                                                          const ProgressReporter& progress) const {
+    return walkTrees(graph, planTrees(graph, regions, starts, progress, false), starts, progress);
 }
 
 } // namespace mcpp

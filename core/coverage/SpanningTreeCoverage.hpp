@@ -22,6 +22,10 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
     [[nodiscard]] std::vector<CoveragePath> plan(const CellGraph& graph, const RegionAllocation& regions,
                                                  const std::vector<MapPoint>& starts,
                                                  const ProgressReporter& progress) const override;
+    // The same paths timed only (timePath), for a planner whose metrics stage measures them at the end.
+    [[nodiscard]] std::vector<CoveragePath> timedPlan(const CellGraph& graph, const RegionAllocation& regions,
+                                                      const std::vector<MapPoint>& starts,
+                                                      const ProgressReporter& progress) const;
 
     // One robot's path over its region's cells: the quickest candidate tree's. scratchIndex: one int per
     // graph cell, all -1, left so.

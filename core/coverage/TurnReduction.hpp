@@ -25,6 +25,7 @@ class TurnReduction {
 
     TurnReduction(const SpanningTreeCoverage& coverage, int rounds) : coverage_(coverage), rounds_(rounds) {}
 
+    // `paths` measured (measurePath): their turns are what it weighs.
     Outcome improve(const CellGraph& graph, RegionAllocation& regions, std::vector<CoveragePath>& paths,
                     const std::vector<MapPoint>& starts, const ProgressReporter& progress) const;
 

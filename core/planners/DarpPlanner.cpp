@@ -39,7 +39,8 @@ void DarpPlanner::run(PlanningRun& run) const {
     }
     plan.paths = run.stage("paths", [&] {
         const SpanningTreeCoverage coverage(parameters.boolean("closed_tour"));
-        return coverage.plan(plan.cells, plan.regions, run.starts(), run.progress());
+        // The metrics stage measures the paths.
+        return coverage.timedPlan(plan.cells, plan.regions, run.starts(), run.progress());
     });
 }
 

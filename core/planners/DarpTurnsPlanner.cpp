@@ -1,6 +1,8 @@
 #include "core/planners/DarpTurnsPlanner.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/TurnReduction.hpp"
+#include "core/model/ParallelFor.hpp"
 #include "core/planners/PlanningRun.hpp"
 
 #include <string>
@@ -25,6 +27,9 @@ void DarpTurnsPlanner::run(PlanningRun& run) const {
     const SpanningTreeCoverage coverage(run.parameters().boolean("closed_tour"));
     const TurnReduction reduction(coverage, run.parameters().integer("turn_reduction_rounds"));
     const TurnReduction::Outcome outcome = run.stage("turns", [&] {
+        // DARP's paths are only timed; the reduction weighs their turns.
+        parallelFor(plan.paths.size(),
+                    [&](std::size_t path, int) { measurePath(plan.paths[path], plan.cells); });
         return reduction.improve(plan.cells, plan.regions, plan.paths, run.starts(), run.progress());
     });
     run.addIssue(IssueSeverity::Information, "turns-reduced",
