@@ -2,9 +2,12 @@
 // few vectors of hundreds of megabytes, and the kernel faults them in 4 KiB at a time: on a 5-million-cell
 // map a third of the run went to page faults. Blocks of several megabytes are therefore marked for
 // transparent huge pages (2 MiB), which the kernel honours where it is set to "madvise", as Debian ships
-// it; nothing changes where huge pages are off. Sanitizer builds keep their own allocator.
+// it; nothing changes where huge pages are off. The largest are also faulted in ahead on another thread
+// (BackgroundPrefault). Sanitizer builds keep their own allocator.
 
 #if !defined(__SANITIZE_ADDRESS__)
+
+#include "app/BackgroundPrefault.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -25,10 +28,32 @@ void adviseHugePages(void* block, std::size_t size) {
         madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
 }
 
+// Blocks the size of a large plan's arrays (tens of millions of cells) are faulted in on another thread;
+// smaller ones are filled before the other thread would get far.
+constexpr std::size_t prefaultedBlock = std::size_t{64} << 20;
+
+// Never destroyed: blocks are freed until the very end of the program, after static destructors.
+mcpp::app::BackgroundPrefault& prefault() {
+    static auto* const shared = new mcpp::app::BackgroundPrefault;
+    return *shared;
+}
+
+void adviseLargeBlock(void* block, std::size_t size) {
+    adviseHugePages(block, size);
+    if (size >= prefaultedBlock)
+        prefault().request(block, size);
+}
+
+void release(void* block) noexcept {
+    if (block != nullptr)
+        prefault().forget(block);
+    std::free(block);
+}
+
 void* allocate(std::size_t size) noexcept {
     void* block = std::malloc(size == 0 ? 1 : size);
     if (block != nullptr && size >= largeBlock)
-        adviseHugePages(block, size);
+        adviseLargeBlock(block, size);
     return block;
 }
 
@@ -38,7 +63,7 @@ void* allocateAligned(std::size_t size, std::align_val_t alignment) noexcept {
     if (posix_memalign(&block, align, size == 0 ? 1 : size) != 0)
         return nullptr;
     if (size >= largeBlock)
-        adviseHugePages(block, size);
+        adviseLargeBlock(block, size);
     return block;
 }
 
@@ -78,40 +103,40 @@ void* operator new[](std::size_t size, std::align_val_t alignment, const std::no
 }
 
 void operator delete(void* block) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete[](void* block) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete(void* block, std::size_t) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete[](void* block, std::size_t) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete(void* block, const std::nothrow_t&) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete[](void* block, const std::nothrow_t&) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete(void* block, std::align_val_t) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete[](void* block, std::align_val_t) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete(void* block, std::size_t, std::align_val_t) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete[](void* block, std::size_t, std::align_val_t) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete(void* block, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(block);
+    release(block);
 }
 void operator delete[](void* block, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(block);
+    release(block);
 }
 
 #endif
