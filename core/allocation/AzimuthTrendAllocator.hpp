@@ -3,16 +3,27 @@
 #include "core/allocation/RegionAllocator.hpp"
 #include "core/parameters/ParameterSpec.hpp"
 
+#include <cstddef>
+
 namespace mcpp {
 
 // The azimuth trend method of spec section 4: the least loaded robot grows towards its own centre and
 // away from the others; a robot with no free cell next to it takes border cells from a richer neighbour;
 // afterwards cells move along chains of adjacent regions from the most to the least loaded robot while
-// the maximum cost falls.
+// the maximum cost falls. On a map of more than mostCellsGrownOneByOne cells the regions grow on blocks of
+// blockSide x blockSide bottom cells (CellBlocks), each cell then takes its block's robot, cells cut off
+// from their region's start go to a neighbouring region, and the cells move one by one only where a region
+// ended further than a block from its share: growing 69 million cells one at a time took about a minute,
+// most of it waiting on memory, and blocks of 16 take a tenth of that.
 class AzimuthTrendAllocator final : public RegionAllocator {
   public:
+    static constexpr std::size_t defaultMostCellsGrownOneByOne = 8'000'000;
+    static constexpr int blockSide = 4;
+
     // rebalanceIterations: cap on cell moves after growth; 0 picks one from the problem size.
-    explicit AzimuthTrendAllocator(int rebalanceIterations = 0) : rebalanceIterations_(rebalanceIterations) {}
+    explicit AzimuthTrendAllocator(int rebalanceIterations = 0,
+                                   std::size_t mostCellsGrownOneByOne = defaultMostCellsGrownOneByOne)
+        : rebalanceIterations_(rebalanceIterations), mostCellsGrownOneByOne_(mostCellsGrownOneByOne) {}
 
     [[nodiscard]] static ParameterSpec rebalanceIterationsParameter();
 
@@ -28,6 +39,7 @@ class AzimuthTrendAllocator final : public RegionAllocator {
 
   private:
     int rebalanceIterations_;
+    std::size_t mostCellsGrownOneByOne_;
 };
 
 } // namespace mcpp

@@ -19,7 +19,8 @@ using namespace mcpp;
 namespace {
 
 // Runs the stages up to allocation and packs them into a plan for the shared checkers.
-Plan allocateOnly(const PlanningProblem& problem) {
+Plan allocateOnly(const PlanningProblem& problem,
+                  const AzimuthTrendAllocator& allocator = AzimuthTrendAllocator{}) {
     Plan plan;
     const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes,
                                                   DecompositionOptions::from(problem.planner.parameters));
@@ -27,8 +28,16 @@ Plan allocateOnly(const PlanningProblem& problem) {
     std::vector<int> startCells;
     for (const MapPoint& start : problem.starts)
         startCells.push_back(plan.cells.cellAt(start));
-    plan.regions = AzimuthTrendAllocator{}.allocate(plan.cells, startCells, {});
+    plan.regions = allocator.allocate(plan.cells, startCells, {});
     return plan;
+}
+
+// The most a region grown on blocks may end from the mean: the dearest block's cost.
+double dearestBlock(const Plan& plan) {
+    double dearestCell = 0.0;
+    for (const Cell& cell : plan.cells.cells())
+        dearestCell = std::max(dearestCell, cell.coverSeconds());
+    return AzimuthTrendAllocator::blockSide * AzimuthTrendAllocator::blockSide * dearestCell;
 }
 
 // A 49 x 49 grid with 15 % obstacles and `robots` starts on free cells, drawn from `random` in the order the
@@ -190,6 +199,42 @@ class AzimuthTrendAllocatorTest : public QObject {
         QVERIFY2(
             *smallest >= std::floor(mean) - 1 && *largest <= std::ceil(mean) + 1,
             qPrintable(QString("regions of %1 to %2 cells, mean %3").arg(*smallest).arg(*largest).arg(mean)));
+    }
+
+    // A map above mostCellsGrownOneByOne cells grows its regions on blocks of cells (forced here on small
+    // maps): the regions are whole, hold their starts and every reachable cell, and each ends within a
+    // block's cost of the mean; obstacles cut blocks in two, and on the quadtree map blocks hold cells of
+    // several sizes.
+    void regionsGrownOnBlocksAreWholeAndEven() {
+        const AzimuthTrendAllocator onBlocks(0, 0);
+        std::vector<PlanningProblem> problems;
+        for (std::uint32_t seed : {3U, 8U, 21U})
+            problems.push_back(test::obstacleGridProblem(64, 5, seed));
+        test::RandomMapSpec spec = test::multiCoverSpec(128, 6);
+        problems.push_back(test::randomProblem(spec));
+        for (const PlanningProblem& problem : problems) {
+            const Plan plan = allocateOnly(problem, onBlocks);
+            QVERIFY2(test::checkRegions(plan).empty(),
+                     qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+            const double mean =
+                std::accumulate(plan.regions.costSeconds.begin(), plan.regions.costSeconds.end(), 0.0) /
+                static_cast<double>(plan.regions.costSeconds.size());
+            for (double cost : plan.regions.costSeconds)
+                QVERIFY2(std::abs(cost - mean) <= dearestBlock(plan),
+                         qPrintable(QString("region cost %1 s, mean %2 s").arg(cost).arg(mean)));
+            // Grown another way than cell by cell.
+            QVERIFY(plan.regions.robotOfCell != allocateOnly(problem).regions.robotOfCell);
+        }
+    }
+
+    // Starts that share a block cannot grow apart on blocks: the regions are grown cell by cell.
+    void startsSharingABlockAreGrownCellByCell() {
+        auto problem = test::uniformProblem(32, 32, 10.0, std::vector<bool>(32 * 32, false), {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 1, 1)};
+        const AzimuthTrendAllocator onBlocks(0, 0);
+        const Plan plan = allocateOnly(problem, onBlocks);
+        QVERIFY(test::checkRegions(plan).empty());
+        QCOMPARE(plan.regions.robotOfCell, allocateOnly(problem).regions.robotOfCell);
     }
 
     void sameInputSameAllocation() {

@@ -1,0 +1,97 @@
+#include "core/allocation/CellBlocks.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace mcpp {
+
+namespace {
+
+// Block ids by cell, numbered in the order of each block's first cell.
+std::vector<int> numberBlocks(const CellGraph& graph, int side, int& blockCount) {
+    const GridFrame& frame = graph.frame();
+    const std::int64_t blockColumns = (static_cast<std::int64_t>(frame.columns) + side - 1) / side;
+    const std::int64_t blockRows = (static_cast<std::int64_t>(frame.rows) + side - 1) / side;
+    std::vector<int> idOfPlace(static_cast<std::size_t>(blockColumns * blockRows), -1);
+    std::vector<int> blockOfCell(graph.size());
+    blockCount = 0;
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        const Cell& cell = graph.cell(static_cast<int>(id));
+        const auto place = static_cast<std::size_t>(cell.row / side * blockColumns + cell.column / side);
+        if (idOfPlace[place] < 0)
+            idOfPlace[place] = blockCount++;
+        blockOfCell[id] = idOfPlace[place];
+    }
+    return blockOfCell;
+}
+
+std::vector<CellFigures> summedFigures(const CellGraph& graph, const std::vector<int>& blockOfCell,
+                                       int blockCount) {
+    std::vector<CellFigures> blocks(static_cast<std::size_t>(blockCount));
+    for (std::size_t id = 0; id < blockOfCell.size(); ++id) {
+        CellFigures& block = blocks[static_cast<std::size_t>(blockOfCell[id])];
+        const Cell& cell = graph.cell(static_cast<int>(id));
+        const double area = cell.size * cell.size;
+        block.x += cell.centreX() * area;
+        block.y += cell.centreY() * area;
+        block.area += area;
+        block.cost += cell.coverSeconds();
+    }
+    for (CellFigures& block : blocks) {
+        block.x /= block.area;
+        block.y /= block.area;
+    }
+    return blocks;
+}
+
+// Cell ids listed block by block (a counting sort): cellsOf[offsets[b] ... offsets[b + 1]).
+void cellsByBlock(const std::vector<int>& blockOfCell, int blockCount, std::vector<int>& offsets,
+                  std::vector<int>& cellsOf) {
+    offsets.assign(static_cast<std::size_t>(blockCount) + 1, 0);
+    for (int block : blockOfCell)
+        ++offsets[static_cast<std::size_t>(block) + 1];
+    for (std::size_t block = 0; block < static_cast<std::size_t>(blockCount); ++block)
+        offsets[block + 1] += offsets[block];
+    std::vector<int> next(offsets.begin(), offsets.end() - 1);
+    cellsOf.resize(blockOfCell.size());
+    for (std::size_t id = 0; id < blockOfCell.size(); ++id)
+        cellsOf[static_cast<std::size_t>(next[static_cast<std::size_t>(blockOfCell[id])]++)] =
+            static_cast<int>(id);
+}
+
+NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>& blockOfCell,
+                                 int blockCount) {
+    std::vector<int> cellOffsets;
+    std::vector<int> cellsOf;
+    cellsByBlock(blockOfCell, blockCount, cellOffsets, cellsOf);
+    std::vector<int> offsets(static_cast<std::size_t>(blockCount) + 1, 0);
+    std::vector<int> neighbours;
+    neighbours.reserve(static_cast<std::size_t>(blockCount) * 4);
+    for (std::size_t block = 0; block < static_cast<std::size_t>(blockCount); ++block) {
+        const auto first = neighbours.size();
+        for (int at = cellOffsets[block]; at < cellOffsets[block + 1]; ++at)
+            for (int neighbour : graph.neighbours(cellsOf[static_cast<std::size_t>(at)])) {
+                const int other = blockOfCell[static_cast<std::size_t>(neighbour)];
+                if (other != static_cast<int>(block) &&
+                    std::find(neighbours.begin() + static_cast<std::ptrdiff_t>(first), neighbours.end(),
+                              other) == neighbours.end())
+                    neighbours.push_back(other);
+            }
+        std::sort(neighbours.begin() + static_cast<std::ptrdiff_t>(first), neighbours.end());
+        offsets[block + 1] = static_cast<int>(neighbours.size());
+    }
+    return {std::move(offsets), std::move(neighbours)};
+}
+
+} // namespace
+
+CellBlocks groupIntoBlocks(const CellGraph& graph, int side) {
+    CellBlocks blocks;
+    int blockCount = 0;
+    blocks.blockOfCell = numberBlocks(graph, side, blockCount);
+    blocks.figures = summedFigures(graph, blocks.blockOfCell, blockCount);
+    blocks.adjacency = blockAdjacency(graph, blocks.blockOfCell, blockCount);
+    return blocks;
+}
+
+} // namespace mcpp

@@ -1,0 +1,22 @@
+#pragma once
+
+#include "core/allocation/CellFigures.hpp"
+#include "core/model/CellGraph.hpp"
+#include "core/model/NeighbourTopology.hpp"
+
+#include <vector>
+
+namespace mcpp {
+
+// A graph's cells grouped into square blocks of `side` x `side` bottom cells (each cell in the block that
+// holds its north-west corner), and which blocks touch: the coarse graph on which the regions of a very
+// large map are grown before they are settled cell by cell.
+struct CellBlocks {
+    std::vector<int> blockOfCell;     // by cell id; blocks are numbered in the order of their first cell
+    std::vector<CellFigures> figures; // by block: area and cost summed, centre weighted by area
+    NeighbourTopology adjacency;      // blocks holding two neighbouring cells, ascending
+};
+
+[[nodiscard]] CellBlocks groupIntoBlocks(const CellGraph& graph, int side);
+
+} // namespace mcpp
