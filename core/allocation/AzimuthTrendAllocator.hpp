@@ -10,11 +10,12 @@ namespace mcpp {
 // The azimuth trend method of spec section 4: the least loaded robot grows towards its own centre and
 // away from the others; a robot with no free cell next to it takes border cells from a richer neighbour;
 // afterwards cells move along chains of adjacent regions from the most to the least loaded robot while
-// the maximum cost falls. On a map of more than mostCellsGrownOneByOne cells the regions grow on blocks of
-// blockSide x blockSide bottom cells (CellBlocks), each cell then takes its block's robot, cells cut off
-// from their region's start go to a neighbouring region, and the cells move one by one only where a region
-// ended further than a block from its share: growing 69 million cells one at a time took about a minute,
-// most of it waiting on memory, and blocks of 16 take a tenth of that.
+// the maximum cost falls. On a map of more than mostCellsGrownOneByOne cells the regions first grow and
+// even out on blocks of blockSide x blockSide bottom cells (CellBlocks); each cell then takes its block's
+// robot and cells cut off from their region's start join a neighbouring region (reconnectRegions). Growing
+// 69 million cells one at a time took about a minute, most of it waiting on memory; blocks of 16 take a
+// tenth of that. Where a region ends further than a block's cost from the mean, the map is grown cell by
+// cell after all, as evening out cell by cell would leave a notch for every cell it moves.
 class AzimuthTrendAllocator final : public RegionAllocator {
   public:
     static constexpr std::size_t defaultMostCellsGrownOneByOne = 8'000'000;
