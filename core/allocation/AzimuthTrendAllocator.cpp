@@ -804,6 +804,7 @@ std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std:
     RegionAllocation division;
     division.startCell = startCells;
     double largestBlockCost = 0.0;
+    bool linked = false;
     {
         const CellBlocks blocks = groupIntoBlocks(graph, AzimuthTrendAllocator::blockSide);
         std::vector<int> blockStarts;
@@ -825,12 +826,16 @@ std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std:
         for (std::size_t cell = 0; cell < graph.size(); ++cell)
             division.robotOfCell[cell] =
                 coarseRegions.robotOfCell[static_cast<std::size_t>(blocks.blockOfCell[cell])];
+        division.costSeconds = coarseRegions.costSeconds;
+        linked = blocks.everyBlockConnected;
     }
-    // Obstacles inside blocks may cut a region; the cells it loses or gains move its cost.
-    reconnectRegions(graph, startCells, division.robotOfCell);
-    division.costSeconds = regionCosts(graph, division.robotOfCell, startCells.size());
-    if (!withinOfTheMean(division.costSeconds, largestBlockCost))
-        return std::nullopt;
+    if (!linked) {
+        // Obstacles that cut a block may cut a region; the cells it loses or gains move its cost.
+        reconnectRegions(graph, startCells, division.robotOfCell);
+        division.costSeconds = regionCosts(graph, division.robotOfCell, startCells.size());
+        if (!withinOfTheMean(division.costSeconds, largestBlockCost))
+            return std::nullopt;
+    }
     progress.report("allocation", 1.0);
     return division;
 }

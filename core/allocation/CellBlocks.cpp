@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <span>
 
 namespace mcpp {
 
@@ -59,18 +60,35 @@ void cellsByBlock(const std::vector<int>& blockOfCell, int blockCount, std::vect
             static_cast<int>(id);
 }
 
-NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>& blockOfCell,
-                                 int blockCount) {
+// Whether `cells` (a block's, a few) are linked through each other alone; `members` is scratch.
+bool linkedWithin(const CellGraph& graph, std::span<const int> cells, std::vector<int>& members) {
+    members.assign(1, cells.front());
+    for (std::size_t head = 0; head < members.size(); ++head)
+        for (int neighbour : graph.neighbours(members[head]))
+            if (std::find(cells.begin(), cells.end(), neighbour) != cells.end() &&
+                std::find(members.begin(), members.end(), neighbour) == members.end())
+                members.push_back(neighbour);
+    return members.size() == cells.size();
+}
+
+// Which blocks touch, and whether each block's cells are linked among themselves.
+NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>& blockOfCell, int blockCount,
+                                 bool& everyBlockConnected) {
     std::vector<int> cellOffsets;
     std::vector<int> cellsOf;
     cellsByBlock(blockOfCell, blockCount, cellOffsets, cellsOf);
     std::vector<int> offsets(static_cast<std::size_t>(blockCount) + 1, 0);
     std::vector<int> neighbours;
     neighbours.reserve(static_cast<std::size_t>(blockCount) * 4);
+    std::vector<int> members;
+    everyBlockConnected = true;
     for (std::size_t block = 0; block < static_cast<std::size_t>(blockCount); ++block) {
         const auto first = neighbours.size();
-        for (int at = cellOffsets[block]; at < cellOffsets[block + 1]; ++at)
-            for (int neighbour : graph.neighbours(cellsOf[static_cast<std::size_t>(at)])) {
+        const std::span<const int> cells(
+            cellsOf.data() + cellOffsets[block],
+            static_cast<std::size_t>(cellOffsets[block + 1] - cellOffsets[block]));
+        for (int cell : cells)
+            for (int neighbour : graph.neighbours(cell)) {
                 const int other = blockOfCell[static_cast<std::size_t>(neighbour)];
                 if (other != static_cast<int>(block) &&
                     std::find(neighbours.begin() + static_cast<std::ptrdiff_t>(first), neighbours.end(),
@@ -79,6 +97,8 @@ NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>&
             }
         std::sort(neighbours.begin() + static_cast<std::ptrdiff_t>(first), neighbours.end());
         offsets[block + 1] = static_cast<int>(neighbours.size());
+        if (everyBlockConnected && cells.size() > 1)
+            everyBlockConnected = linkedWithin(graph, cells, members);
     }
     return {std::move(offsets), std::move(neighbours)};
 }
@@ -90,7 +110,7 @@ CellBlocks groupIntoBlocks(const CellGraph& graph, int side) {
     int blockCount = 0;
     blocks.blockOfCell = numberBlocks(graph, side, blockCount);
     blocks.figures = summedFigures(graph, blocks.blockOfCell, blockCount);
-    blocks.adjacency = blockAdjacency(graph, blocks.blockOfCell, blockCount);
+    blocks.adjacency = blockAdjacency(graph, blocks.blockOfCell, blockCount, blocks.everyBlockConnected);
     return blocks;
 }
 

@@ -15,6 +15,9 @@ struct CellBlocks {
     std::vector<int> blockOfCell;     // by cell id; blocks are numbered in the order of their first cell
     std::vector<CellFigures> figures; // by block: area and cost summed, centre weighted by area
     NeighbourTopology adjacency;      // blocks holding two neighbouring cells, ascending
+    // Whether every block's cells are linked among themselves: then a connected set of blocks is a connected
+    // set of cells.
+    bool everyBlockConnected = false;
 };
 
 [[nodiscard]] CellBlocks groupIntoBlocks(const CellGraph& graph, int side);

@@ -35,6 +35,12 @@ class RegionAdjacency {
     // localIndex: the region's position of every graph cell, -1 outside (a CellIndexScope).
     template <typename LocalIndex>
     RegionAdjacency(const CellGraph& graph, const std::vector<int>& cells, const LocalIndex& localIndex) {
+        // Half the cells' neighbours, at most one edge each: a region of millions of cells would otherwise
+        // grow its edges through a dozen copies, each into memory never touched before.
+        std::size_t neighbourEnds = 0;
+        for (int cell : cells)
+            neighbourEnds += graph.neighbours(cell).size();
+        edges_.reserve(neighbourEnds / 2);
         for (std::size_t a = 0; a < cells.size(); ++a)
             for (int neighbour : graph.neighbours(cells[a])) {
                 const int b = localIndex[neighbour];

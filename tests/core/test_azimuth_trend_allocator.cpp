@@ -212,6 +212,13 @@ class AzimuthTrendAllocatorTest : public QObject {
             problems.push_back(test::obstacleGridProblem(64, 5, seed));
         test::RandomMapSpec spec = test::multiCoverSpec(128, 6);
         problems.push_back(test::randomProblem(spec));
+        // No obstacle: every block is linked within itself, so the cells take their blocks' robots as they
+        // are.
+        PlanningProblem open = test::uniformProblem(61, 61, 10.0, std::vector<bool>(61 * 61, false), {});
+        for (const auto& [column, row] :
+             std::vector<std::pair<int, int>>{{2, 2}, {58, 3}, {30, 30}, {5, 57}, {57, 57}})
+            open.starts.push_back(test::pixelCentre(open.grid, column, row));
+        problems.push_back(open);
         for (const PlanningProblem& problem : problems) {
             const Plan plan = allocateOnly(problem, onBlocks);
             QVERIFY2(test::checkRegions(plan).empty(),

@@ -21,6 +21,23 @@ CellGraph quadTreeGraph(const PlanningProblem& problem) {
     return cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
 }
 
+// Whether every block's cells are linked through cells of the block, the slow way.
+bool blocksLinkedWithin(const CellGraph& graph, const std::vector<int>& blockOfCell) {
+    for (std::size_t first = 0; first < graph.size(); ++first) {
+        std::set<int> reached{static_cast<int>(first)};
+        std::vector<int> queue{static_cast<int>(first)};
+        for (std::size_t head = 0; head < queue.size(); ++head)
+            for (int neighbour : graph.neighbours(queue[head]))
+                if (blockOfCell[static_cast<std::size_t>(neighbour)] == blockOfCell[first] &&
+                    reached.insert(neighbour).second)
+                    queue.push_back(neighbour);
+        const auto members = std::count(blockOfCell.begin(), blockOfCell.end(), blockOfCell[first]);
+        if (static_cast<std::ptrdiff_t>(reached.size()) != members)
+            return false;
+    }
+    return true;
+}
+
 // Checks the blocks against what they say, worked out the slow way from every cell.
 void checkBlocks(const CellGraph& graph, int side) {
     const CellBlocks blocks = groupIntoBlocks(graph, side);
@@ -72,6 +89,7 @@ void checkBlocks(const CellGraph& graph, int side) {
             QVERIFY(listed.insert({static_cast<int>(block), other}).second); // each once
     }
     QCOMPARE(listed, touching);
+    QCOMPARE(blocks.everyBlockConnected, blocksLinkedWithin(graph, blocks.blockOfCell));
 }
 
 } // namespace
@@ -99,6 +117,20 @@ class TestCellBlocks : public QObject {
         QVERIFY(!graph.hasOneCellSize());
         for (int side : {2, 4, 8})
             checkBlocks(graph, side);
+    }
+
+    // Blocks cut off at the grid's edges are still whole; one obstacle pixel splitting a block is not.
+    void blocksLinkedWithinThemselves() {
+        std::vector<bool> blocked(37 * 37, false);
+        const PlanningProblem open = test::uniformProblem(37, 37, 10.0, blocked, {});
+        QVERIFY(groupIntoBlocks(test::cellPerPixelGraph(open), 4).everyBlockConnected);
+        // A block's corner cell cut off by obstacles on its two inner sides.
+        blocked[static_cast<std::size_t>(0 * 37 + 1)] = true;
+        blocked[static_cast<std::size_t>(1 * 37 + 0)] = true;
+        const PlanningProblem cut = test::uniformProblem(37, 37, 10.0, blocked, {});
+        const CellGraph graph = test::cellPerPixelGraph(cut);
+        QVERIFY(!groupIntoBlocks(graph, 4).everyBlockConnected);
+        checkBlocks(graph, 4);
     }
 
     void blocksOfOneCellEachAreTheCells() {
