@@ -2,17 +2,16 @@
 
 #include <cerrno>
 #include <cstdint>
-#include <system_error>
 
 #ifdef __linux__
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace mcpp::app {
 
 namespace {
 
-constexpr std::uintptr_t pageBytes = 4096;
 // Steps of a huge page: each is one system call, and a block freed meanwhile is noticed between them.
 constexpr std::uintptr_t stepBytes = std::uintptr_t{2} << 20;
 
@@ -40,14 +39,14 @@ void BackgroundPrefault::request(void* block, std::size_t bytes) noexcept {
         if (!thread_.joinable()) {
             try {
                 thread_ = std::thread([this] { run(); });
-            } catch (const std::system_error&) {
+            } catch (...) { // no thread to be had, or no memory for it
                 unsupported_.store(true);
                 return;
             }
         }
         // A block still waiting is dropped: its owner has most likely filled it by now.
         waiting_ = {static_cast<char*>(block), bytes};
-        waitingStart_.store(block, std::memory_order_relaxed);
+        waitingStart_.store(block, std::memory_order_release);
     }
     wake_.notify_one();
 #else
@@ -57,16 +56,22 @@ void BackgroundPrefault::request(void* block, std::size_t bytes) noexcept {
 }
 
 void BackgroundPrefault::forget(const void* block) noexcept {
-    if (block == nullptr || (block != waitingStart_.load(std::memory_order_relaxed) &&
-                             block != activeStart_.load(std::memory_order_relaxed)))
+    // The helper marks a block active before it stops marking it waiting: a block is always seen in one.
+    if (block == nullptr || (block != waitingStart_.load(std::memory_order_acquire) &&
+                             block != activeStart_.load(std::memory_order_acquire)))
         return;
-    const std::lock_guard lock(mutex_);
-    if (waiting_.start == block) {
-        waiting_ = {};
-        waitingStart_.store(nullptr, std::memory_order_relaxed);
+    {
+        const std::lock_guard lock(mutex_);
+        if (waiting_.start == block) {
+            waiting_ = {};
+            waitingStart_.store(nullptr, std::memory_order_release);
+        }
+        // Noticed before the helper's next step; the step under way may still fault in a 2 MB range the
+        // program maps anew meanwhile, which costs memory, never contents.
+        if (activeStart_.load(std::memory_order_relaxed) == block)
+            activeDropped_.store(true);
     }
-    if (activeStart_.load(std::memory_order_relaxed) == block)
-        activeDropped_.store(true);
+    idle_.notify_all();
 }
 
 void BackgroundPrefault::waitUntilIdle() {
@@ -81,15 +86,15 @@ void BackgroundPrefault::run() {
         if (stopping_)
             return;
         const Range range = waiting_;
-        waiting_ = {};
-        waitingStart_.store(nullptr, std::memory_order_relaxed);
-        activeStart_.store(range.start, std::memory_order_relaxed);
         activeDropped_.store(false);
+        activeStart_.store(range.start, std::memory_order_release);
+        waiting_ = {};
+        waitingStart_.store(nullptr, std::memory_order_release);
         busy_ = true;
         lock.unlock();
         faultIn(range);
         lock.lock();
-        activeStart_.store(nullptr, std::memory_order_relaxed);
+        activeStart_.store(nullptr, std::memory_order_release);
         busy_ = false;
         if (waiting_.start == nullptr)
             idle_.notify_all();
@@ -99,6 +104,7 @@ void BackgroundPrefault::run() {
 void BackgroundPrefault::faultIn(Range range) {
 #ifdef MADV_POPULATE_WRITE
     // Whole pages inside the block only: the pages at its ends may hold other blocks' bytes.
+    static const auto pageBytes = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
     const auto begin = (reinterpret_cast<std::uintptr_t>(range.start) + pageBytes - 1) & ~(pageBytes - 1);
     const auto end = (reinterpret_cast<std::uintptr_t>(range.start) + range.bytes) & ~(pageBytes - 1);
     for (std::uintptr_t stepEnd = end; stepEnd > begin && !activeDropped_.load();) {

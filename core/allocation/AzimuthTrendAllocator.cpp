@@ -800,7 +800,7 @@ RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int r
 // out cell by cell moves thousands of single cells, each leaving a notch a path turns around (on a forest
 // with lakes, 7 % more turns than regions grown cell by cell), so such maps are grown cell by cell.
 std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std::vector<int>& startCells,
-                                              const ProgressReporter& progress) {
+                                              int rebalanceIterations, const ProgressReporter& progress) {
     RegionAllocation division;
     division.startCell = startCells;
     double largestBlockCost = 0.0;
@@ -818,7 +818,9 @@ std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std:
             largestBlockCost = std::max(largestBlockCost, block.cost);
         Allocation coarse(blocks.adjacency, blocks.figures, blockStarts, progress);
         coarse.grow();
-        (void)coarse.rebalance(std::max(1000, static_cast<int>(blocks.figures.size())));
+        (void)coarse.rebalance(rebalanceIterations > 0
+                                   ? rebalanceIterations
+                                   : std::max(1000, static_cast<int>(blocks.figures.size())));
         const RegionAllocation coarseRegions = coarse.result();
         if (!withinOfTheMean(coarseRegions.costSeconds, largestBlockCost))
             return std::nullopt;
@@ -870,7 +872,7 @@ RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const s
                                                  const ProgressReporter& progress) const {
     progress.report("allocation", 0.0);
     if (graph.size() > mostCellsGrownOneByOne_) {
-        if (auto grown = grownOnBlocks(graph, startCells, progress))
+        if (auto grown = grownOnBlocks(graph, startCells, rebalanceIterations_, progress))
             return std::move(*grown);
     }
     Allocation allocation(graph.adjacency(), cellFiguresOf(graph), startCells, progress);

@@ -27,11 +27,11 @@ void reconnectRegions(const CellGraph& graph, const std::vector<int>& startCells
                       std::vector<int>& robotOfCell) {
     std::vector<std::uint8_t> reached(graph.size(), 0);
     std::vector<int> queue;
-    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
-        const int start = startCells[robot];
-        robotOfCell[static_cast<std::size_t>(start)] = static_cast<int>(robot);
-        markReached(graph, static_cast<int>(robot), start, robotOfCell, reached, queue);
-    }
+    // Every start is its robot's before any region is searched: a start inside another region cuts it.
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot)
+        robotOfCell[static_cast<std::size_t>(startCells[robot])] = static_cast<int>(robot);
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot)
+        markReached(graph, static_cast<int>(robot), startCells[robot], robotOfCell, reached, queue);
     // Cells cut off from their region's start are nobody's until a region reaches them.
     queue.clear();
     for (std::size_t cell = 0; cell < graph.size(); ++cell) {

@@ -19,7 +19,11 @@ class MappedBlock {
   public:
     explicit MappedBlock(std::size_t bytes)
         : bytes_(bytes), start_(static_cast<char*>(mmap(nullptr, bytes, PROT_READ | PROT_WRITE,
-                                                        MAP_PRIVATE | MAP_ANONYMOUS, -1, 0))) {}
+                                                        MAP_PRIVATE | MAP_ANONYMOUS, -1, 0))) {
+        // Pages of the base size, so that one write makes one page resident wherever huge pages are on.
+        if (start_ != MAP_FAILED)
+            madvise(start_, bytes_, MADV_NOHUGEPAGE);
+    }
     ~MappedBlock() {
         if (start_ != MAP_FAILED)
             munmap(start_, bytes_);

@@ -1,5 +1,6 @@
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 #include "core/allocation/GrowthFrontier.hpp"
+#include "core/allocation/RegionCosts.hpp"
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/decomposition/QuadTreeDecomposition.hpp"
@@ -229,6 +230,11 @@ class AzimuthTrendAllocatorTest : public QObject {
             for (double cost : plan.regions.costSeconds)
                 QVERIFY2(std::abs(cost - mean) <= dearestBlock(plan),
                          qPrintable(QString("region cost %1 s, mean %2 s").arg(cost).arg(mean)));
+            // The costs said are the costs of the cells given.
+            const std::vector<double> costs =
+                regionCosts(plan.cells, plan.regions.robotOfCell, plan.regions.startCell.size());
+            for (std::size_t robot = 0; robot < costs.size(); ++robot)
+                QVERIFY(std::abs(plan.regions.costSeconds[robot] - costs[robot]) <= 1e-9 * costs[robot]);
             // Grown another way than cell by cell.
             QVERIFY(plan.regions.robotOfCell != allocateOnly(problem).regions.robotOfCell);
         }

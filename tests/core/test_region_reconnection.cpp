@@ -90,6 +90,15 @@ class TestRegionReconnection : public QObject {
         QCOMPARE(ownersOf(division, 3), expected);
     }
 
+    // Robot 1's start in the middle of robot 0's row cuts it: the far end is robot 1's, as its start
+    // reaches it and robot 0's does not.
+    void aStartInsideAnotherRegionCutsIt() {
+        DrawnDivision division = drawn({"....."}, {"00000"}, {{0, 0}, {2, 0}});
+        reconnectRegions(division.graph, division.startCells, division.robotOfCell);
+        const std::vector<std::string> expected{"00111"};
+        QCOMPARE(ownersOf(division, 1), expected);
+    }
+
     void aStartGivenAwayIsGivenBack() {
         // Robot 1's start lies in robot 0's cells: the start is its own again and the cells it reaches stay.
         DrawnDivision division = drawn({"....", "...."}, {"0000", "0011"}, {{0, 0}, {1, 1}});
