@@ -91,6 +91,8 @@ SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCe
 }
 
 bool SpanningTreeBuilder::cellsDifferInSize(const std::vector<int>& cells) const {
+    if (graph_.hasOneCellSize()) // no need to read millions of cells to learn it
+        return false;
     const auto differs = [&](int cell) { return graph_.cell(cell).span != graph_.cell(cells.front()).span; };
     return !cells.empty() && std::any_of(cells.begin(), cells.end(), differs);
 }
