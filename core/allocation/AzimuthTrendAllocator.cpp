@@ -771,16 +771,6 @@ class Allocation {
     std::vector<char> handOverPossible_;
 };
 
-// Whether every cost is within `slack` of their mean.
-bool withinOfTheMean(const std::vector<double>& costs, double slack) {
-    double total = 0.0;
-    for (double cost : costs)
-        total += cost;
-    const double mean = total / static_cast<double>(costs.size());
-    return std::all_of(costs.begin(), costs.end(),
-                       [&](double cost) { return std::abs(cost - mean) <= slack; });
-}
-
 // The cells moved along chains of adjacent regions while the largest cost falls, then any region left in
 // pieces settled.
 RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int rebalanceIterations,

@@ -8,41 +8,33 @@ namespace mcpp {
 
 namespace {
 
-// Block ids by cell, numbered in the order of each block's first cell.
-std::vector<int> numberBlocks(const CellGraph& graph, int side, int& blockCount) {
+// Block ids by cell, numbered in the order of each block's first cell, and the blocks' figures: one pass
+// over cells that on a large map fill gigabytes.
+void numberBlocks(const CellGraph& graph, int side, CellBlocks& blocks) {
     const GridFrame& frame = graph.frame();
     const std::int64_t blockColumns = (static_cast<std::int64_t>(frame.columns) + side - 1) / side;
     const std::int64_t blockRows = (static_cast<std::int64_t>(frame.rows) + side - 1) / side;
     std::vector<int> idOfPlace(static_cast<std::size_t>(blockColumns * blockRows), -1);
-    std::vector<int> blockOfCell(graph.size());
-    blockCount = 0;
+    blocks.blockOfCell.resize(graph.size());
     for (std::size_t id = 0; id < graph.size(); ++id) {
         const Cell& cell = graph.cell(static_cast<int>(id));
         const auto place = static_cast<std::size_t>(cell.row / side * blockColumns + cell.column / side);
-        if (idOfPlace[place] < 0)
-            idOfPlace[place] = blockCount++;
-        blockOfCell[id] = idOfPlace[place];
+        if (idOfPlace[place] < 0) {
+            idOfPlace[place] = static_cast<int>(blocks.figures.size());
+            blocks.figures.emplace_back();
+        }
+        blocks.blockOfCell[id] = idOfPlace[place];
+        CellFigures& block = blocks.figures[static_cast<std::size_t>(idOfPlace[place])];
+        const CellFigures figures = figuresOf(cell);
+        block.x += figures.x * figures.area;
+        block.y += figures.y * figures.area;
+        block.area += figures.area;
+        block.cost += figures.cost;
     }
-    return blockOfCell;
-}
-
-std::vector<CellFigures> summedFigures(const CellGraph& graph, const std::vector<int>& blockOfCell,
-                                       int blockCount) {
-    std::vector<CellFigures> blocks(static_cast<std::size_t>(blockCount));
-    for (std::size_t id = 0; id < blockOfCell.size(); ++id) {
-        CellFigures& block = blocks[static_cast<std::size_t>(blockOfCell[id])];
-        const Cell& cell = graph.cell(static_cast<int>(id));
-        const double area = cell.size * cell.size;
-        block.x += cell.centreX() * area;
-        block.y += cell.centreY() * area;
-        block.area += area;
-        block.cost += cell.coverSeconds();
-    }
-    for (CellFigures& block : blocks) {
+    for (CellFigures& block : blocks.figures) {
         block.x /= block.area;
         block.y /= block.area;
     }
-    return blocks;
 }
 
 // Cell ids listed block by block (a counting sort): cellsOf[offsets[b] ... offsets[b + 1]).
@@ -107,9 +99,8 @@ NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>&
 
 CellBlocks groupIntoBlocks(const CellGraph& graph, int side) {
     CellBlocks blocks;
-    int blockCount = 0;
-    blocks.blockOfCell = numberBlocks(graph, side, blockCount);
-    blocks.figures = summedFigures(graph, blocks.blockOfCell, blockCount);
+    numberBlocks(graph, side, blocks);
+    const auto blockCount = static_cast<int>(blocks.figures.size());
     blocks.adjacency = blockAdjacency(graph, blocks.blockOfCell, blockCount, blocks.everyBlockConnected);
     return blocks;
 }

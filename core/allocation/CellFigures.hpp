@@ -15,6 +15,9 @@ struct CellFigures {
     double cost = 0.0; // seconds to cover it
 };
 
+// One cell's figures.
+[[nodiscard]] CellFigures figuresOf(const Cell& cell);
+
 // The figures of every cell of the graph, by cell id.
 [[nodiscard]] std::vector<CellFigures> cellFiguresOf(const CellGraph& graph);
 

@@ -15,13 +15,11 @@ namespace {
 
 // Whether every region is within `slack` of the mean of `robots`' costs.
 bool within(const RegionAllocation& regions, const std::vector<int>& robots, double slack) {
-    double total = 0.0;
+    std::vector<double> costs;
+    costs.reserve(robots.size());
     for (int robot : robots)
-        total += regions.costSeconds[static_cast<std::size_t>(robot)];
-    const double fairShare = total / static_cast<double>(robots.size());
-    return std::all_of(robots.begin(), robots.end(), [&](int robot) {
-        return std::abs(regions.costSeconds[static_cast<std::size_t>(robot)] - fairShare) <= slack;
-    });
+        costs.push_back(regions.costSeconds[static_cast<std::size_t>(robot)]);
+    return withinOfTheMean(costs, slack);
 }
 
 } // namespace

@@ -11,4 +11,7 @@ namespace mcpp {
 [[nodiscard]] std::vector<double> regionCosts(const CellGraph& graph, const std::vector<int>& robotOfCell,
                                               std::size_t robots);
 
+// Whether every cost is within `slack` of their mean.
+[[nodiscard]] bool withinOfTheMean(const std::vector<double>& costs, double slack);
+
 } // namespace mcpp
