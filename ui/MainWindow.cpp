@@ -1694,8 +1694,11 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
         document_->setPlan(outcome.plan, planningInputs_);
         notePlanToSave();
         const auto& metrics = outcome.plan->metrics;
-        showStatus(tr("Planned in %1 s: makespan %2, %3 × the lower bound.")
-                       .arg(seconds, 0, 'f', 1)
+        // A small map plans in milliseconds, which "0.0 s" would hide.
+        const QString took =
+            seconds < 1.0 ? tr("%1 ms").arg(qRound(seconds * 1000.0)) : tr("%1 s").arg(seconds, 0, 'f', 1);
+        showStatus(tr("Planned in %1: makespan %2, %3 × the lower bound.")
+                       .arg(took)
                        .arg(ResultsPanel::formatDuration(metrics.makespanSeconds))
                        .arg(metrics.ratio, 0, 'f', 3), // as the results panel and plan.png give it
                    15000);
