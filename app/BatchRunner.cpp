@@ -357,13 +357,20 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
              withoutCrs);
     const auto isReport = [&](std::size_t i) { return outputs[i].format->key == "report-json"; };
     // report.json comes last, so that it can say how long the others took; the picture, the longest on
-    // small plans, first, so that the rest are written beside it.
+    // small plans, first, so that the rest are written beside it. The robots' files come next: the
+    // picture traces the region outlines, which the other whole-plan files wait for, and meanwhile the
+    // second thread has the robots' files to write (on a 69 M-cell map it otherwise idled for 3 s).
+    const auto rank = [&](std::size_t i) {
+        if (outputs[i].format->key == "png")
+            return 0;
+        return outputs[i].robot >= 0 ? 1 : 2;
+    };
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < outputs.size(); ++i)
         if (!isReport(i))
             order.push_back(i);
-    std::stable_partition(order.begin(), order.end(),
-                          [&](std::size_t i) { return outputs[i].format->key == "png"; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
     std::vector<io::Status> results(outputs.size());
     const auto write = [&](std::size_t i) {
         results[i] =

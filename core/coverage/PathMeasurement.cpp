@@ -19,7 +19,8 @@ std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& gr
     const MapPoint point{waypoint.x, waypoint.y};
     const SubCell subCell = cell.subCellAt(point);
     const MapPoint centre = cell.subCellCentre(subCell);
-    if (std::hypot(centre.x - point.x, centre.y - point.y) > 1e-6 * cell.size)
+    const bool onCentre = centre.x == point.x && centre.y == point.y; // most points: no distance to work out
+    if (!onCentre && std::hypot(centre.x - point.x, centre.y - point.y) > 1e-6 * cell.size)
         return {-1, 0};
     return {waypoint.cell, static_cast<int>(subCell)};
 }
@@ -95,17 +96,16 @@ int countRepeatedSubCellVisits(const CoveragePath& path, const CellGraph& graph)
 namespace {
 
 double segmentLength(const Waypoint& from, const Waypoint& to) {
-    const double dx = to.x - from.x;
-    const double dy = to.y - from.y;
-    return std::sqrt(dx * dx + dy * dy);
+    return stepOf(to.x - from.x, to.y - from.y).length;
 }
 
 } // namespace
 
 double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX, double outY,
                      const CellGraph& graph) {
-    if (corner.cell < 0 || static_cast<std::size_t>(corner.cell) >= graph.size())
-        return 0.0;
+    const bool straightOn = inX * outY - inY * outX == 0.0 && inX * outX + inY * outY > 0.0;
+    if (straightOn || corner.cell < 0 || static_cast<std::size_t>(corner.cell) >= graph.size())
+        return 0.0; // straight on, most steps of a path, costs nothing whatever the cell's price
     return turnSecondsBetween(inX, inY, outX, outY, graph.cell(corner.cell).turnSecondsPer90Degrees);
 }
 
@@ -144,9 +144,10 @@ PathSeconds walkSeconds(const std::vector<Waypoint>& waypoints, const CellGraph&
     for (std::size_t i = first + 1; i <= last && i < waypoints.size(); ++i) {
         const Waypoint& from = waypoints[i - 1];
         const Waypoint& to = waypoints[i];
-        const double length = segmentLength(from, to);
+        const Step step = stepOf(to.x - from.x, to.y - from.y);
+        const double length = step.length;
         if (length > 0.0) {
-            const Direction out{(to.x - from.x) / length, (to.y - from.y) / length};
+            const Direction out{step.x, step.y};
             if (direction) {
                 const double turn = turnSecondsAt(from, direction->x, direction->y, out.x, out.y, graph);
                 seconds.turning += turn;
@@ -292,10 +293,14 @@ double pathLengthMetres(const std::vector<Waypoint>& waypoints) {
 }
 
 void measurePath(CoveragePath& path, const CellGraph& graph) {
-    path.lengthMetres = pathLengthMetres(path.waypoints);
+    // Length and turns in one pass: the shape adds the steps' lengths as pathLengthMetres does.
+    PathShape shape;
+    for (const Waypoint& waypoint : path.waypoints)
+        shape.add(waypoint.x, waypoint.y);
+    path.lengthMetres = shape.lengthMetres();
+    path.turns = shape.turns();
     timePath(path, graph);
     path.connectorSeconds = connectorSeconds(path.waypoints, graph);
-    path.turns = countTurns(path.waypoints);
     path.repeatedSubCellVisits = countRepeatedSubCellVisits(path, graph);
 }
 

@@ -4,13 +4,38 @@
 #include "core/model/CoveragePath.hpp"
 #include "core/model/Sortie.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace mcpp {
 
 // The time to travel `lengthMetres` from a point at one speed to a point at another: half the way at each.
+// At one speed (most steps) the two halves are the same number, worked out once.
 [[nodiscard]] inline double travelSeconds(double lengthMetres, double fromSpeed, double toSpeed) {
-    return lengthMetres / 2.0 / fromSpeed + lengthMetres / 2.0 / toSpeed;
+    const double firstHalf = lengthMetres / 2.0 / fromSpeed;
+    return firstHalf + (fromSpeed == toSpeed ? firstHalf : lengthMetres / 2.0 / toSpeed);
+}
+
+// A step's length and, where it is not zero, its unit direction.
+struct Step {
+    double length = 0.0;
+    double x = 0.0;
+    double y = 0.0;
+};
+
+// Most steps of a coverage path run along an axis: those skip the square root and the divisions and give
+// the same bits (the square root of a rounded square is the number squared, short of under- or overflow).
+[[nodiscard]] inline Step stepOf(double dx, double dy) {
+    constexpr double tiny = 1e-150;
+    constexpr double huge = 1e150;
+    if (dx == 0.0 && std::abs(dy) > tiny && std::abs(dy) < huge)
+        return {std::abs(dy), dx, std::copysign(1.0, dy)};
+    if (dy == 0.0 && std::abs(dx) > tiny && std::abs(dx) < huge)
+        return {std::abs(dx), std::copysign(1.0, dx), dy};
+    const double length = std::sqrt(dx * dx + dy * dy);
+    if (length == 0.0)
+        return {};
+    return {length, dx / length, dy / length};
 }
 
 // Direction changes along a polyline; steps of zero length are skipped and a U-turn counts once.

@@ -23,14 +23,15 @@ void PathShape::add(double x, double y, double speedMetresPerSecond, double turn
     const double dy = y - lastY_;
     lastX_ = x;
     lastY_ = y;
-    const double length = std::sqrt(dx * dx + dy * dy);
+    const Step step = stepOf(dx, dy);
+    const double length = step.length;
     length_ += length;
     if (fromSpeed > 0.0 && speedMetresPerSecond > 0.0)
         seconds_ += travelSeconds(length, fromSpeed, speedMetresPerSecond);
     if (length < 1e-9)
         return;
-    const double ux = dx / length;
-    const double uy = dy / length;
+    const double ux = step.x;
+    const double uy = step.y;
     if (haveDirection_) {
         const double turning = turnSecondsBetween(directionX_, directionY_, ux, uy, cornerPrice);
         seconds_ += turning;

@@ -23,7 +23,9 @@ SpanningTree::SpanningTree(std::vector<int> cells, int root, const std::vector<s
     depth_.assign(count, 0);
     if (count == 0)
         return;
-    std::vector<int> queue{root_};
+    std::vector<int> queue;
+    queue.reserve(count);
+    queue.push_back(root_);
     std::vector<char> seen(count, 0);
     seen[static_cast<std::size_t>(root_)] = 1;
     for (std::size_t head = 0; head < queue.size(); ++head) {

@@ -11,7 +11,15 @@
 namespace mcpp {
 
 std::vector<std::vector<int>> cellsByRobot(const RegionAllocation& regions) {
-    std::vector<std::vector<int>> cells(regions.startCell.size());
+    const std::size_t robots = regions.startCell.size();
+    // Counted first: a region of millions of cells would otherwise grow through a dozen copies.
+    std::vector<std::size_t> counts(robots, 0);
+    for (const int robot : regions.robotOfCell)
+        if (robot >= 0 && static_cast<std::size_t>(robot) < robots)
+            ++counts[static_cast<std::size_t>(robot)];
+    std::vector<std::vector<int>> cells(robots);
+    for (std::size_t robot = 0; robot < robots; ++robot)
+        cells[robot].reserve(counts[robot]);
     for (std::size_t cell = 0; cell < regions.robotOfCell.size(); ++cell) {
         const int robot = regions.robotOfCell[cell];
         if (robot >= 0 && static_cast<std::size_t>(robot) < cells.size())
@@ -177,7 +185,7 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
         TreeCircumnavigation walker(graph);
         RegionTree& planned = trees[robot];
         std::vector<Waypoint> walk =
-            walker.walk(planned.tree, starts[robot], closedTour_, planned.shape.points());
+            walker.walkFromStart(planned.tree, starts[robot], closedTour_, planned.shape.points());
         planned.tree = SpanningTree(); // freed once walked: all trees and all paths are never held together
         paths[robot] = pathFromWalk(static_cast<int>(robot), starts[robot], std::move(walk), closedTour_);
         timePath(paths[robot], graph);

@@ -16,7 +16,7 @@ class BipartiteMatching {
   public:
     BipartiteMatching(std::vector<int> offsets, std::vector<int> targets, std::size_t rightCount)
         : offsets_(std::move(offsets)), targets_(std::move(targets)), leftCount_(offsets_.size() - 1),
-          matchOfLeft_(leftCount_, -1), matchOfRight_(rightCount, -1), distance_(leftCount_) {}
+          matchOfLeft_(leftCount_, -1), matchOfRight_(rightCount, -1), distance_(leftCount_, unreached) {}
 
     void solve() {
         // A greedy first matching leaves Hopcroft-Karp a few long paths instead of many phases.
@@ -27,12 +27,19 @@ class BipartiteMatching {
                     matchOfLeft_[left] = right;
                     break;
                 }
+        // Only free left vertices start a path, and a left vertex is matched only by its own path: each
+        // phase works through the free ones of the last, in order, instead of through every left vertex.
+        for (std::size_t left = 0; left < leftCount_; ++left)
+            if (matchOfLeft_[left] < 0)
+                freeLeft_.push_back(static_cast<int>(left));
         // Phases past a few add a handful of runs on maps of a million cells but cost seconds: the last
         // ones find paths of hundreds of edges one or two at a time.
-        for (int phase = 0; phase < phaseLimit && layer(); ++phase)
-            for (std::size_t left = 0; left < leftCount_; ++left)
-                if (matchOfLeft_[left] < 0)
-                    augment(static_cast<int>(left));
+        for (int phase = 0; phase < phaseLimit && layer(); ++phase) {
+            for (const int left : freeLeft_)
+                augment(left);
+            std::erase_if(freeLeft_,
+                          [&](int left) { return matchOfLeft_[static_cast<std::size_t>(left)] >= 0; });
+        }
     }
     [[nodiscard]] const std::vector<int>& matchOfLeft() const { return matchOfLeft_; }
     [[nodiscard]] const std::vector<int>& matchOfRight() const { return matchOfRight_; }
@@ -47,14 +54,15 @@ class BipartiteMatching {
     static constexpr int unreached = std::numeric_limits<int>::max();
     static constexpr int phaseLimit = 16;
 
-    // Breadth-first layers from the free left vertices; true while an augmenting path exists.
+    // Breadth-first layers from the free left vertices; true while an augmenting path exists. Only the
+    // last phase's queue holds distances to clear: a vertex gets one only when it is queued.
     bool layer() {
-        std::vector<int> queue;
-        for (std::size_t left = 0; left < leftCount_; ++left) {
-            distance_[left] = matchOfLeft_[left] < 0 ? 0 : unreached;
-            if (matchOfLeft_[left] < 0)
-                queue.push_back(static_cast<int>(left));
-        }
+        std::vector<int>& queue = queue_;
+        for (const int left : queue)
+            distance_[static_cast<std::size_t>(left)] = unreached;
+        queue.assign(freeLeft_.begin(), freeLeft_.end());
+        for (const int left : queue)
+            distance_[static_cast<std::size_t>(left)] = 0;
         int shortest = unreached; // layers beyond the shortest augmenting path are of no use this phase
         for (std::size_t head = 0; head < queue.size(); ++head) {
             const int left = queue[head];
@@ -117,6 +125,8 @@ class BipartiteMatching {
     std::vector<int> matchOfLeft_;
     std::vector<int> matchOfRight_;
     std::vector<int> distance_;
+    std::vector<int> freeLeft_; // ascending
+    std::vector<int> queue_;    // layer's, kept for its capacity and to clear its distances
     std::vector<Frame> stack_;
 };
 
@@ -128,6 +138,14 @@ std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
     std::vector<int> vertexOfEdge(edges.size(), -1);
     std::vector<int> leftEdges;
     std::vector<int> rightEdges;
+    const auto horizontal =
+        static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [](const auto& edge) {
+            return edge.straight && isHorizontal(edge.sideOfFirst);
+        }));
+    leftEdges.reserve(horizontal);
+    rightEdges.reserve(static_cast<std::size_t>(std::count_if(
+                           edges.begin(), edges.end(), [](const auto& edge) { return edge.straight; })) -
+                       horizontal);
     for (std::size_t e = 0; e < edges.size(); ++e) {
         if (!edges[e].straight)
             continue;
@@ -138,6 +156,9 @@ std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
     // A conflict for every east-west and north-south straight adjacency sharing a cell.
     std::vector<int> offsets(leftEdges.size() + 1, 0);
     std::vector<int> targets;
+    // A cell has at most one equal neighbour in its column on either side, so an east-west adjacency
+    // conflicts with at most four north-south ones.
+    targets.reserve(4 * leftEdges.size());
     auto conflictsOf = [&](int edge, auto&& visit) {
         for (int node :
              {edges[static_cast<std::size_t>(edge)].first, edges[static_cast<std::size_t>(edge)].second})

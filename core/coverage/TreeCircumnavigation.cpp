@@ -40,6 +40,38 @@ class WaypointSink {
     std::vector<Waypoint>& path_;
 };
 
+// Collects the path pathFromWalk would make of the walk: the start point first when the walk does not
+// begin there (in the first point's cell), and back to it at the end of a closed tour.
+class StartedWaypointSink {
+  public:
+    StartedWaypointSink(std::vector<Waypoint>& path, MapPoint start, bool closed)
+        : path_(path), start_(start), closed_(closed) {}
+    void push(const Waypoint& waypoint) {
+        if (path_.empty() && std::hypot(waypoint.x - start_.x, waypoint.y - start_.y) >= 1e-9) {
+            Waypoint origin = waypoint;
+            origin.x = start_.x;
+            origin.y = start_.y;
+            path_.push_back(origin);
+            firstOfWalk_ = 1;
+        }
+        path_.push_back(waypoint);
+    }
+    [[nodiscard]] const Waypoint& back() const { return path_.back(); }
+    [[nodiscard]] const Waypoint& front() const {
+        return path_[firstOfWalk_];
+    } // the walk's, as traverse wants
+    void finish() {
+        if (closed_ && firstOfWalk_ == 1)
+            path_.push_back(path_.front());
+    }
+
+  private:
+    std::vector<Waypoint>& path_;
+    MapPoint start_;
+    bool closed_;
+    std::size_t firstOfWalk_ = 0;
+};
+
 // Measures the path pathFromWalk would make of the walk: the start point first when the walk does not
 // begin there (in the first point's cell), and back to it at the end of a closed tour.
 class ShapeSink {
@@ -162,6 +194,16 @@ std::vector<Waypoint> TreeCircumnavigation::walk(const SpanningTree& tree, MapPo
     path.reserve(std::max(capacity, tree.size() * 4 + 2));
     WaypointSink sink(path);
     traverse(tree, start, closed, sink);
+    return path;
+}
+
+std::vector<Waypoint> TreeCircumnavigation::walkFromStart(const SpanningTree& tree, MapPoint start,
+                                                          bool closed, std::size_t capacity) {
+    std::vector<Waypoint> path;
+    path.reserve(std::max(capacity, tree.size() * 4 + 2));
+    StartedWaypointSink sink(path, start, closed);
+    traverse(tree, start, closed, sink);
+    sink.finish();
     return path;
 }
 

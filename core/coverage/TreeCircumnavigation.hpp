@@ -24,6 +24,10 @@ class TreeCircumnavigation {
     // of waypoints that outgrows its vector costs a copy and twice the memory.
     [[nodiscard]] std::vector<Waypoint> walk(const SpanningTree& tree, MapPoint start, bool closed,
                                              std::size_t capacity = 0);
+    // The waypoints pathFromWalk makes of walk(tree, start, closed), written in place: on a region of
+    // millions of cells, putting the start point before the walk afterwards moves every waypoint.
+    [[nodiscard]] std::vector<Waypoint> walkFromStart(const SpanningTree& tree, MapPoint start, bool closed,
+                                                      std::size_t capacity = 0);
     // The length and turns of the path pathFromWalk would make of walk(tree, start, closed), and with
     // `timed` its time, without storing it: choosing between trees this way keeps one path in memory
     // instead of two.

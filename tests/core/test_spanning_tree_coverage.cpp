@@ -25,6 +25,8 @@ QString violations(const PlanningProblem& problem, const Plan& plan) {
 
 class SpanningTreeCoverageTest : public QObject {
     Q_OBJECT
+    int startsOffTheWalk_ = 0; // over walkShapeIsThePathsShape's rows
+
   private slots:
     // Trees are chosen by the shape of their walk without storing it: it must be the shape of the path.
     void walkShapeIsThePathsShape_data() {
@@ -60,9 +62,23 @@ class SpanningTreeCoverageTest : public QObject {
                 measurePath(path, plan.cells);
                 QCOMPARE(shape.turns(), path.turns);
                 QCOMPARE(shape.lengthMetres(), path.lengthMetres);
+                // The path written in place from the start is that path, point for point.
+                const std::vector<Waypoint> inPlace = walker.walkFromStart(tree, start, closed);
+                QCOMPARE(inPlace.size(), path.waypoints.size());
+                for (std::size_t i = 0; i < inPlace.size(); ++i) {
+                    QCOMPARE(inPlace[i].x, path.waypoints[i].x);
+                    QCOMPARE(inPlace[i].y, path.waypoints[i].y);
+                    QCOMPARE(inPlace[i].cell, path.waypoints[i].cell);
+                    QCOMPARE(inPlace[i].speedMetresPerSecond, path.waypoints[i].speedMetresPerSecond);
+                }
+                const Waypoint& first = walker.walk(tree, start, closed).front();
+                startsOffTheWalk_ += first.x != start.x || first.y != start.y ? 1 : 0;
             }
         }
     }
+
+    // Some of those paths put their start point before the walk, so walkFromStart was tried on both kinds.
+    void someStartsLayOffTheWalk() { QVERIFY(startsOffTheWalk_ > 0); }
 
     void singleCellIsASquareTour() {
         auto problem = test::uniformProblem(1, 1, 10.0, {}, {});

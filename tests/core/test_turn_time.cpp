@@ -9,6 +9,10 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
 
 using namespace mcpp;
 
@@ -45,12 +49,47 @@ Plan planned(PlanningProblem problem, const ParameterValue& turnSeconds) {
     return makePlanner(MlctPlanner::plannerName)->plan(problem, {});
 }
 
+// Whether two numbers have the same bits (QCOMPARE on doubles allows a relative error).
+bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
 } // namespace
 
 class TurnTimeTest : public QObject {
     Q_OBJECT
 
   private slots:
+    // Steps along an axis take a shortcut past the square root and the divisions; lengths, directions and
+    // times must keep every bit of the plain formulas, or plans would change with it.
+    void stepShortcutsKeepTheBits() {
+        std::mt19937 random(20261126);
+        std::uniform_real_distribution<double> metres(-5000.0, 5000.0);
+        std::uniform_real_distribution<double> speed(0.1, 30.0);
+        int axisSteps = 0;
+        for (int trial = 0; trial < 20000; ++trial) {
+            double dx = metres(random);
+            double dy = metres(random);
+            if (trial % 4 == 1)
+                dx = trial % 8 == 1 ? 0.0 : -0.0;
+            if (trial % 4 == 2)
+                dy = 0.0;
+            if (trial % 97 == 0)
+                dx *= 1e-12; // tiny steps too
+            axisSteps += dx == 0.0 || dy == 0.0 ? 1 : 0;
+            const double length = std::sqrt(dx * dx + dy * dy);
+            const Step step = stepOf(dx, dy);
+            QVERIFY2(sameBits(step.length, length), qPrintable(QString("%1 %2").arg(dx).arg(dy)));
+            QVERIFY(sameBits(step.x, dx / length));
+            QVERIFY(sameBits(step.y, dy / length));
+            const double from = speed(random);
+            const double to = trial % 3 == 0 ? speed(random) : from;
+            QVERIFY(sameBits(travelSeconds(length, from, to), length / 2.0 / from + length / 2.0 / to));
+        }
+        QVERIFY(axisSteps > 9000); // the shortcut was taken
+        QCOMPARE(stepOf(0.0, 0.0).length, 0.0);
+    }
+
     void automaticTurnTimeIsSpeedOverAcceleration() {
         TurnTimeModel model;
         QCOMPARE(model.secondsPer90Degrees(3.0), 3.0); // 1 m/s2 by default
