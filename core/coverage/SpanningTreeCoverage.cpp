@@ -187,6 +187,7 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
         std::vector<Waypoint> walk =
             walker.walkFromStart(planned.tree, starts[robot], closedTour_, planned.shape.points());
         planned.tree = SpanningTree(); // freed once walked: all trees and all paths are never held together
+        // The walk already begins (and a closed one ends) at the start: pathFromWalk moves no waypoint.
         paths[robot] = pathFromWalk(static_cast<int>(robot), starts[robot], std::move(walk), closedTour_);
         timePath(paths[robot], graph);
         const std::lock_guard lock(progressMutex);
