@@ -71,7 +71,8 @@ class SpanningTreeCoverageTest : public QObject {
                     QCOMPARE(inPlace[i].cell, path.waypoints[i].cell);
                     QCOMPARE(inPlace[i].speedMetresPerSecond, path.waypoints[i].speedMetresPerSecond);
                 }
-                const Waypoint& first = walker.walk(tree, start, closed).front();
+                const Waypoint first =
+                    walker.walk(tree, start, closed).front(); // a copy: the walk is a temporary
                 startsOffTheWalk_ += first.x != start.x || first.y != start.y ? 1 : 0;
             }
         }
