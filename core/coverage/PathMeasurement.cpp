@@ -311,7 +311,7 @@ CoveragePath pathFromWalk(int robot, MapPoint start, std::vector<Waypoint> walk,
     if (walk.empty())
         return path;
     const Waypoint first = walk.front();
-    const bool startIsOnWalk = std::hypot(first.x - start.x, first.y - start.y) < 1e-9;
+    const bool startIsOnWalk = mcpp::startIsOnWalk(first, start);
     // The walk becomes the path in place: on big regions a copy costs as much as the walk itself.
     path.waypoints = std::move(walk);
     if (!startIsOnWalk) {

@@ -120,6 +120,12 @@ void measurePath(CoveragePath& path, const CellGraph& graph);
 // planner compares paths by before its last stage. A pass over the waypoints instead of five.
 void timePath(CoveragePath& path, const CellGraph& graph);
 
+// Whether a walk whose first waypoint is `first` begins at the robot's start; if not, the path puts the
+// start point (in the first waypoint's cell) before the walk, and a closed tour returns to it.
+[[nodiscard]] inline bool startIsOnWalk(const Waypoint& first, MapPoint start) {
+    return std::hypot(first.x - start.x, first.y - start.y) < 1e-9;
+}
+
 // A robot's path from a walk through sub-cell centres: its start point first when the walk does not begin
 // there and, for a closed tour, the way back to it at the end. Not yet measured.
 [[nodiscard]] CoveragePath pathFromWalk(int robot, MapPoint start, std::vector<Waypoint> walk, bool closed);

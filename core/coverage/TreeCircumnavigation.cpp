@@ -1,5 +1,6 @@
 #include "core/coverage/TreeCircumnavigation.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/RoundOrder.hpp"
 
 #include <algorithm>
@@ -47,7 +48,7 @@ class StartedWaypointSink {
     StartedWaypointSink(std::vector<Waypoint>& path, MapPoint start, bool closed)
         : path_(path), start_(start), closed_(closed) {}
     void push(const Waypoint& waypoint) {
-        if (path_.empty() && std::hypot(waypoint.x - start_.x, waypoint.y - start_.y) >= 1e-9) {
+        if (path_.empty() && !startIsOnWalk(waypoint, start_)) {
             Waypoint origin = waypoint;
             origin.x = start_.x;
             origin.y = start_.y;
@@ -57,9 +58,8 @@ class StartedWaypointSink {
         path_.push_back(waypoint);
     }
     [[nodiscard]] const Waypoint& back() const { return path_.back(); }
-    [[nodiscard]] const Waypoint& front() const {
-        return path_[firstOfWalk_];
-    } // the walk's, as traverse wants
+    // The walk's first waypoint, as traverse wants, not the start point before it.
+    [[nodiscard]] const Waypoint& front() const { return path_[firstOfWalk_]; }
     void finish() {
         if (closed_ && firstOfWalk_ == 1)
             path_.push_back(path_.front());
@@ -82,7 +82,7 @@ class ShapeSink {
         if (!haveFirst_) {
             haveFirst_ = true;
             first_ = waypoint;
-            startIsOnWalk_ = std::hypot(waypoint.x - start_.x, waypoint.y - start_.y) < 1e-9;
+            startIsOnWalk_ = startIsOnWalk(waypoint, start_);
             if (!startIsOnWalk_)
                 add(start_, waypoint);
         }
