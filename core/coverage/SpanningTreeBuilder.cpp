@@ -83,7 +83,9 @@ SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCe
             const SizeChangeConnectors connectors(graph_, cells, adjacency);
             edges = TurnMinimisingTree(adjacency, {}, &connectors).edges();
         } else {
-            edges = TurnMinimisingTree(adjacency, {}).edges();
+            TurnMinimisingTree::Options options;
+            options.plateauRounds = plateauRounds_;
+            edges = TurnMinimisingTree(adjacency, options).edges();
         }
         rootNode = local[rootCell];
     } // the scope must clear the shared index before the cells move into the tree

@@ -12,9 +12,10 @@ enum class EdgeDirection { EastWest, NorthSouth };
 // Spanning trees over a region of a cell graph, rooted at the start cell.
 class SpanningTreeBuilder {
   public:
-    // scratchIndex: one int per graph cell, all -1; the builder leaves it so.
-    SpanningTreeBuilder(const CellGraph& graph, std::vector<int>& scratchIndex)
-        : graph_(graph), index_(scratchIndex) {}
+    // scratchIndex: one int per graph cell, all -1; the builder leaves it so. plateauRounds: fewestTurns'
+    // search across plateaus of equal turns (TurnMinimisingTree::Options), 0 for none.
+    SpanningTreeBuilder(const CellGraph& graph, std::vector<int>& scratchIndex, int plateauRounds = 0)
+        : graph_(graph), index_(scratchIndex), plateauRounds_(plateauRounds) {}
 
     // Kruskal over the region's adjacencies, the preferred direction's edges first: long straight spines
     // give boustrophedon-like paths with few turns (DARP's idea; spec 5).
@@ -41,6 +42,7 @@ class SpanningTreeBuilder {
   private:
     const CellGraph& graph_;
     std::vector<int>& index_;
+    int plateauRounds_;
 };
 
 } // namespace mcpp

@@ -77,6 +77,61 @@ TurnMinimisingTree::TurnMinimisingTree(const RegionAdjacency& adjacency, Options
         if (swaps == 0)
             break;
     }
+    if (connectors_ == nullptr && options_.plateauRounds > 0)
+        searchPlateaus();
+}
+
+void TurnMinimisingTree::searchPlateaus() {
+    turns_ = estimatedTurns();
+    changedInRound_.assign(adjacency_.nodeCount(), 0);
+    int fewest = turns_;
+    std::vector<char> fewestTree = inTree_;
+    std::vector<int> order(inTree_.size());
+    std::iota(order.begin(), order.end(), 0);
+    const auto changedNow = [&](int node) {
+        return changedInRound_[static_cast<std::size_t>(node)] == round_;
+    };
+    for (round_ = 1; round_ <= options_.plateauRounds; ++round_) {
+        shuffle(order);
+        for (const int edge : order)
+            if (inTree_[static_cast<std::size_t>(edge)] == 0)
+                trySwap(edge, Accept::FewerOrAsMany);
+        // Only a swap near a moved cell can have begun to pay.
+        for (const int edge : order) {
+            const auto& e = adjacency_.edges()[static_cast<std::size_t>(edge)];
+            if (inTree_[static_cast<std::size_t>(edge)] == 0 && (changedNow(e.first) || changedNow(e.second)))
+                trySwap(edge);
+        }
+        if (turns_ < fewest) {
+            fewest = turns_;
+            fewestTree = inTree_;
+        }
+    }
+    if (turns_ != fewest)
+        restore(fewestTree);
+    changedInRound_ = {};
+}
+
+void TurnMinimisingTree::shuffle(std::vector<int>& order) {
+    for (std::size_t i = order.size(); i > 1; --i) {
+        shuffleState_ ^= shuffleState_ << 13U;
+        shuffleState_ ^= shuffleState_ >> 17U;
+        shuffleState_ ^= shuffleState_ << 5U;
+        std::swap(order[i - 1], order[shuffleState_ % i]);
+    }
+}
+
+void TurnMinimisingTree::restore(const std::vector<char>& tree) {
+    for (std::size_t edge = 0; edge < inTree_.size(); ++edge) {
+        if (inTree_[edge] == tree[edge])
+            continue;
+        if (tree[edge] != 0)
+            link(static_cast<int>(edge));
+        else
+            unlink(static_cast<int>(edge));
+    }
+    rootTree();
+    turns_ = estimatedTurns();
 }
 
 int TurnMinimisingTree::turnChangeAdding(int node, CellSide side) const {
@@ -217,7 +272,7 @@ void TurnMinimisingTree::rootTree() {
 }
 
 // Adds `edge` if dropping some tree edge of the cycle it closes lowers the turn count (or the time).
-bool TurnMinimisingTree::trySwap(int edge) {
+bool TurnMinimisingTree::trySwap(int edge, Accept accept) {
     // Counted in whole turns, dropping a tree edge saves at most two turns at each of its ends (a walk
     // turns 0, 2 or 4 times in a cell): an edge that adds four can never pay for itself, and its cycle is
     // not looked for. Across a comb's teeth, that is most edges.
@@ -252,21 +307,17 @@ bool TurnMinimisingTree::trySwap(int edge) {
         return false;
     const double adding = swapCostAdding(edge);
     link(edge);
-    double bestChange = 0.0;
-    int bestChild = -1;
-    for (int end : {u, v})
-        for (int node = end; node != meeting; node = parent_[static_cast<std::size_t>(node)]) {
-            const double change = swapCostRemoving(parentEdge_[static_cast<std::size_t>(node)]);
-            if (bestChild < 0 || change < bestChange) {
-                bestChange = change;
-                bestChild = node;
-            }
-        }
+    const auto [bestChild, bestChange] = edgeToDrop(u, v, meeting, adding, accept);
     // Turn counts are whole numbers; seconds need a margin so that rounding never swaps back and forth.
-    if (bestChild < 0 || adding + bestChange >= -1e-9) {
+    const double wanted = accept == Accept::Fewer ? -1e-9 : 1e-9;
+    if (bestChild < 0 || adding + bestChange >= wanted) {
         unlink(edge);
         return false;
     }
+    turns_ += static_cast<int>(adding + bestChange); // searchPlateaus runs on turns only
+    if (!changedInRound_.empty())
+        for (const int node : {u, v, bestChild, parent_[static_cast<std::size_t>(bestChild)]})
+            changedInRound_[static_cast<std::size_t>(node)] = round_;
     // bestChild's subtree holds u or v: re-hang it from that end through the new edge.
     bool onFirstSide = false;
     for (int node = u; node != meeting; node = parent_[static_cast<std::size_t>(node)])
@@ -277,6 +328,22 @@ bool TurnMinimisingTree::trySwap(int edge) {
     else
         reverseChain(v, bestChild, u, edge);
     return true;
+}
+
+// The tree edge of the cycle through u and v (below `meeting`) whose removal changes the count least, as
+// the cell it hangs from and the change; for FewerOrAsMany, the first that keeps the count or lowers it.
+TurnMinimisingTree::Drop TurnMinimisingTree::edgeToDrop(int u, int v, int meeting, double adding,
+                                                        Accept accept) {
+    Drop best;
+    for (int end : {u, v})
+        for (int node = end; node != meeting; node = parent_[static_cast<std::size_t>(node)]) {
+            const double change = swapCostRemoving(parentEdge_[static_cast<std::size_t>(node)]);
+            if (best.child < 0 || change < best.change)
+                best = {node, change};
+            if (accept == Accept::FewerOrAsMany && adding + best.change < 1e-9)
+                return best;
+        }
+    return best;
 }
 
 // Makes `from` the top of the chain from..to (to's parent edge already dropped) and hangs it from newParent.

@@ -18,11 +18,15 @@ namespace mcpp {
 // sides climb at most `cycleLimit` cells each, so the work stays linear in the region's size. Where cells
 // differ in size, the swaps weigh time instead: turns at their cells' price and the steps between cells of
 // different sizes (SizeChangeConnectors).
+// With plateauRounds, on cells of one size, the swaps go on across plateaus: each round takes every swap
+// that keeps the count (in a seeded shuffled order, so the tree is the same on every run), then the swaps
+// that lower it around the cells those moved; the tree with the fewest turns seen is kept.
 class TurnMinimisingTree {
   public:
     struct Options {
         int cycleLimit = 64;
         int swapPasses = 2;
+        int plateauRounds = 0;
     };
 
     // connectors: null where every cell has one size.
@@ -47,7 +51,16 @@ class TurnMinimisingTree {
     void unlink(int edge);
     void joinRuns(const std::vector<char>& inRuns);
     void rootTree();
-    bool trySwap(int edge);
+    enum class Accept { Fewer, FewerOrAsMany };
+    struct Drop {
+        int child = -1;
+        double change = 0.0;
+    };
+    bool trySwap(int edge, Accept accept = Accept::Fewer);
+    [[nodiscard]] Drop edgeToDrop(int u, int v, int meeting, double adding, Accept accept);
+    void searchPlateaus();
+    void shuffle(std::vector<int>& order);
+    void restore(const std::vector<char>& tree);
     void reverseChain(int from, int to, int newParent, int viaEdge);
 
     const RegionAdjacency& adjacency_;
@@ -60,6 +73,12 @@ class TurnMinimisingTree {
     std::vector<int> stamp_;
     int stampValue_ = 0;
     std::vector<int> chain_; // reverseChain's buffer
+    // searchPlateaus' state: the count as swaps change it, the round a cell last changed in, and the
+    // shuffle's generator (xorshift32: the same sequence on every platform).
+    int turns_ = 0;
+    int round_ = 0;
+    std::vector<int> changedInRound_;
+    std::uint32_t shuffleState_ = 2463534242U;
 };
 
 } // namespace mcpp

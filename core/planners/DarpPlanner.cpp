@@ -2,6 +2,7 @@
 
 #include "core/allocation/DarpAllocator.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
+#include "core/coverage/TurnSearch.hpp"
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
@@ -19,10 +20,26 @@ PlannerDescription DarpPlanner::describe() const {
     for (ParameterSpec& spec : DarpAllocator::Options::parameters())
         description.parameters.push_back(std::move(spec));
     description.parameters.push_back(SpanningTreeCoverage::closedTourParameter());
+    description.parameters.push_back(TurnSearch::roundsParameter());
     return description;
 }
 
 void DarpPlanner::run(PlanningRun& run) const {
+    planRegionsAndPaths(run);
+    searchTurns(run);
+}
+
+void DarpPlanner::searchTurns(PlanningRun& run) const {
+    Plan& plan = run.plan();
+    const TurnSearch search(
+        run.parameters().boolean("closed_tour"),
+        TurnSearch::roundsFor(plan.cells, run.parameters().integer("turn_search_rounds")));
+    run.stage("turn search", [&] {
+        return search.improve(plan.cells, plan.regions, plan.paths, run.starts(), run.progress());
+    });
+}
+
+void DarpPlanner::planRegionsAndPaths(PlanningRun& run) const {
     const ParameterValues& parameters = run.parameters();
     Plan& plan = run.plan();
     plan.cells = gridStage(run, GridCellRule::WholeCell);

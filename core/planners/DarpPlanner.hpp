@@ -14,6 +14,10 @@ class DarpPlanner : public Planner {
   protected:
     [[nodiscard]] PlannerDescription describe() const override;
     void run(PlanningRun& run) const override;
+    // DARP's regions and their paths, timed only: run() without the last search for fewer turns.
+    void planRegionsAndPaths(PlanningRun& run) const;
+    // The last stage, "turn search" (TurnSearch), with the rounds of turn_search_rounds.
+    void searchTurns(PlanningRun& run) const;
 };
 
 } // namespace mcpp

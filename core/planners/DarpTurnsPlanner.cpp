@@ -22,7 +22,7 @@ PlannerDescription DarpTurnsPlanner::describe() const {
 }
 
 void DarpTurnsPlanner::run(PlanningRun& run) const {
-    DarpPlanner::run(run);
+    planRegionsAndPaths(run);
     Plan& plan = run.plan();
     const SpanningTreeCoverage coverage(run.parameters().boolean("closed_tour"));
     const TurnReduction reduction(coverage, run.parameters().integer("turn_reduction_rounds"));
@@ -36,6 +36,8 @@ void DarpTurnsPlanner::run(PlanningRun& run) const {
                  "turn reduction moved " + std::to_string(outcome.cellsMoved) +
                      " cells: " + std::to_string(outcome.turnsBefore) + " turns before, " +
                      std::to_string(outcome.turnsAfter) + " after");
+    // After the reduction, whose replans build trees without the search.
+    searchTurns(run);
 }
 
 } // namespace mcpp

@@ -5,6 +5,7 @@
 #include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/TurnCalibration.hpp"
+#include "core/coverage/TurnSearch.hpp"
 #include "core/decomposition/DecompositionOptions.hpp"
 #include "core/planners/PlanningRun.hpp"
 #include "core/planners/QuadTreeStage.hpp"
@@ -33,10 +34,12 @@ PlannerDescription MlctPlanner::describe() const {
     description.name = plannerName;
     description.label = "MCPP-MLCT";
     description.summary = "quadtree cells sized by field of view, azimuth-trend regions, improved STC";
-    description.parameters = {
-        DecompositionOptions::purityToleranceParameter(), DecompositionOptions::blockedThresholdParameter(),
-        AzimuthTrendAllocator::rebalanceIterationsParameter(), BorderStraightening::slackParameter(),
-        SpanningTreeCoverage::closedTourParameter()};
+    description.parameters = {DecompositionOptions::purityToleranceParameter(),
+                              DecompositionOptions::blockedThresholdParameter(),
+                              AzimuthTrendAllocator::rebalanceIterationsParameter(),
+                              BorderStraightening::slackParameter(),
+                              SpanningTreeCoverage::closedTourParameter(),
+                              TurnSearch::roundsParameter()};
     // Measured peaks, outputs included: 244 bytes a bottom cell on 18.06 M (forest-4250 with a fast robot:
     // the turn balance plans a second division), 212 on a 48 M-cell tile (docs/benchmarks.md); with room to
     // spare.
@@ -89,6 +92,11 @@ void MlctPlanner::run(PlanningRun& run) const {
     const PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(plan.cells));
     run.stage("path balance", [&] {
         return balancing.balance(plan.cells, plan.regions, plan.paths, run.starts(), progress);
+    });
+    const TurnSearch turnSearch(parameters.boolean("closed_tour"),
+                                TurnSearch::roundsFor(plan.cells, parameters.integer("turn_search_rounds")));
+    run.stage("turn search", [&] {
+        return turnSearch.improve(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });
 }
 

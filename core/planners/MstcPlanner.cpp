@@ -5,6 +5,7 @@
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/TourSplitter.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
+#include "core/coverage/TurnSearch.hpp"
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
@@ -16,10 +17,11 @@ namespace {
 
 // The tour of one part as a cycle (the closing return dropped), of the candidate tree that turns least. On
 // MSTC's uniform grid there is one candidate; time and turns would choose alike between more.
+// plateauRounds: the turn-minimising tree's search across plateaus of equal turns.
 std::vector<Waypoint> partTour(const CellGraph& graph, const StartComponent& part, int rootCell,
-                               MapPoint start) {
+                               MapPoint start, int plateauRounds) {
     std::vector<int> scratchIndex(graph.size(), -1);
-    const SpanningTreeBuilder trees(graph, scratchIndex);
+    const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds);
     TreeCircumnavigation walker(graph);
     std::vector<Waypoint> best;
     int fewestTurns = std::numeric_limits<int>::max();
@@ -83,6 +85,7 @@ PlannerDescription MstcPlanner::describe() const {
                          "Cut the tour into pieces of equal time, each robot walking along the tour (through "
                          "other pieces, forwards or backwards) to its own; otherwise each robot covers the "
                          "tour from its start to the next robot's"),
+        TurnSearch::roundsParameter(),
     };
     return description;
 }
@@ -98,11 +101,14 @@ void MstcPlanner::run(PlanningRun& run) const {
     plan.paths.resize(starts.size());
     const std::vector<StartComponent> parts =
         run.stage("allocation", [&] { return componentsWithStarts(plan.cells, startCells); });
+    // One tree, built once: its search runs within it, not as a stage of its own.
+    const int plateauRounds = TurnSearch::roundsFor(plan.cells, parameters.integer("turn_search_rounds"));
     run.stage("paths", [&] {
         for (const StartComponent& part : parts) {
             run.progress().throwIfCancelled();
             const auto first = static_cast<std::size_t>(part.robots.front());
-            const std::vector<Waypoint> tour = partTour(plan.cells, part, startCells[first], starts[first]);
+            const std::vector<Waypoint> tour =
+                partTour(plan.cells, part, startCells[first], starts[first], plateauRounds);
             std::vector<int> positions;
             for (int robot : part.robots)
                 positions.push_back(tourPosition(tour, startCells[static_cast<std::size_t>(robot)],

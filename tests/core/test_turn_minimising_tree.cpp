@@ -280,6 +280,42 @@ class TurnMinimisingTreeTest : public QObject {
                  qPrintable(QString("%1 against %2 / %3").arg(fewest).arg(eastWest).arg(northSouth)));
     }
 
+    // The search across plateaus keeps a spanning tree whose estimate is the walk's, never turns more than
+    // the tree without it, turns less over the seeds (3 254 against 3 288 turns on these maps), and makes the
+    // same tree on every run.
+    void plateauSearchTurnsLess() {
+        int plainTotal = 0;
+        int searchedTotal = 0;
+        for (unsigned seed = 1; seed <= 6; ++seed) {
+            GridCells grid(30, 30, 0.15, seed);
+            const std::vector<int> part = grid.connectedPart();
+            const CellIndexScope local(grid.scratch, part);
+            const RegionAdjacency adjacency(grid.graph, part, local);
+            TurnMinimisingTree::Options searching;
+            searching.plateauRounds = 8;
+            const TurnMinimisingTree plain(adjacency, {});
+            const TurnMinimisingTree searched(adjacency, searching);
+            QVERIFY2(searched.estimatedTurns() <= plain.estimatedTurns(),
+                     qPrintable(QString("seed %1: %2 against %3")
+                                    .arg(seed)
+                                    .arg(searched.estimatedTurns())
+                                    .arg(plain.estimatedTurns())));
+            QCOMPARE(TurnMinimisingTree(adjacency, searching).edges(), searched.edges());
+            const std::vector<std::pair<int, int>> edges = searched.edges();
+            QCOMPARE(edges.size(), part.size() - 1);
+            const SpanningTree tree(part, 0, edges);
+            for (std::size_t node = 1; node < part.size(); ++node)
+                QVERIFY(tree.parent(static_cast<int>(node)) >= 0);
+            const int turns = walkTurns(grid.graph, tree);
+            QVERIFY2(turns == searched.estimatedTurns() || turns == searched.estimatedTurns() - 1,
+                     qPrintable(QString("walk %1, estimate %2").arg(turns).arg(searched.estimatedTurns())));
+            plainTotal += plain.estimatedTurns();
+            searchedTotal += searched.estimatedTurns();
+        }
+        QVERIFY2(searchedTotal < 0.995 * plainTotal,
+                 qPrintable(QString("%1 against %2").arg(searchedTotal).arg(plainTotal)));
+    }
+
     // Two regions split along a staircase: straightening moves cells so that fewer lie off straight runs,
     // keeps both regions whole and their starts, and keeps every cost under the ceiling.
     void staircaseBorderStraightens() {
