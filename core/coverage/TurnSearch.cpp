@@ -10,13 +10,26 @@
 #include <atomic>
 
 namespace mcpp {
+namespace {
+
+// Walk shapes and timed paths add the same times in other orders: within rounding they take as long, and
+// the walk gains only by turning less (which counts where turns are free, turn_s 0).
+bool isGain(const PathShape& walk, const CoveragePath& path) {
+    constexpr double relativeMargin = 1e-9;
+    if (walk.seconds() < path.timeSeconds * (1.0 - relativeMargin))
+        return true;
+    return walk.seconds() <= path.timeSeconds * (1.0 + relativeMargin) &&
+           walk.turns() < countTurns(path.waypoints);
+}
+
+} // namespace
 
 ParameterSpec TurnSearch::roundsParameter() {
     return integerParameter("turn_search_rounds", "Turn search rounds", 4, 0, 64,
                             "Rounds of the last search for fewer turns: each region's tree is built again "
                             "and its edges swapped where the turns stay as many, then where they fall; more "
                             "rounds, fewer turns and longer planning. 0 skips it. Maps above 500 000 cells "
-                            "get fewer rounds, maps from 2 million none");
+                            "get fewer rounds, maps above 2 million none");
 }
 
 int TurnSearch::roundsFor(const CellGraph& graph, int wanted) {
@@ -46,8 +59,7 @@ int TurnSearch::improve(const CellGraph& graph, const RegionAllocation& regions,
             return;
         const auto [tree, shape] =
             coverage.bestTree(graph, region, regions.startCell[robot], starts[robot], scratch, true);
-        // Walk shapes and timed paths add the same times in other orders: a tie is no gain.
-        if (shape.seconds() >= paths[robot].timeSeconds * (1.0 - 1e-9))
+        if (!isGain(shape, paths[robot]))
             return;
         TreeCircumnavigation walker(graph);
         CoveragePath path =

@@ -13,16 +13,16 @@ namespace mcpp {
 
 // The last step for fewer turns: each region's turn-minimising tree built again with its search across
 // plateaus of equal turns (TurnMinimisingTree::Options::plateauRounds), and the region's path replaced where
-// the new walk is quicker. It comes after the balancing steps, whose many replans stay cheap; a path only
-// ever gets quicker, so the makespan cannot grow. Regions whose cells differ in size are left as they are:
-// there the tree weighs time, not turns.
+// the new walk is quicker, or as quick and turns less. It comes after the balancing steps, whose many
+// replans stay cheap; no path gets slower (beyond rounding), so neither does the makespan. Regions whose
+// cells differ in size are left as they are: there the tree weighs time, not turns.
 class TurnSearch {
   public:
     TurnSearch(bool closedTour, int rounds) : closedTour_(closedTour), rounds_(rounds) {}
 
     [[nodiscard]] static ParameterSpec roundsParameter();
     // The rounds to run of the `wanted` ones (the parameter's value) on this map: all of them up to
-    // 2 million / wanted cells, fewer above, none from 2 million cells, where rebuilding the trees alone
+    // 2 million / wanted cells, fewer above, none above 2 million cells, where rebuilding the trees alone
     // would take seconds.
     [[nodiscard]] static int roundsFor(const CellGraph& graph, int wanted);
 

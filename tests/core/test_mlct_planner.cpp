@@ -55,11 +55,19 @@ class MlctPlannerTest : public QObject {
                                                    "turn search", "metrics"}));
     }
 
-    // The last search for fewer turns only ever replaces a path by a quicker one: robot by robot, no path
-    // is slower than without it, and on a benchmark grid the plan turns less (49 x 49 with 8 robots:
-    // 1 644 turns against 1 674).
+    // The last search for fewer turns never makes a path slower: robot by robot, no path takes longer than
+    // without it, and on a benchmark grid the plan turns less (49 x 49 with 8 robots: 1 650 turns against
+    // 1 674), also where turns are free and only their count can gain.
+    void turnSearchOnlyQuickens_data() {
+        QTest::addColumn<bool>("freeTurns");
+        QTest::newRow("turns timed") << false;
+        QTest::newRow("turns free") << true;
+    }
     void turnSearchOnlyQuickens() {
+        QFETCH(bool, freeTurns);
         PlanningProblem problem = test::obstacleGridProblem(49, 8, 2020);
+        if (freeTurns)
+            problem.planner.parameters.set("turn_s", 0.0);
         problem.planner.parameters.set("turn_search_rounds", 0);
         const Plan without = MlctPlanner{}.plan(problem, {});
         problem.planner.parameters.set("turn_search_rounds", 4);
@@ -70,13 +78,13 @@ class MlctPlannerTest : public QObject {
         int turnsWithout = 0;
         int turnsWith = 0;
         for (std::size_t robot = 0; robot < with.paths.size(); ++robot) {
-            QVERIFY(with.paths[robot].timeSeconds <= without.paths[robot].timeSeconds * (1.0 + 1e-12));
+            QVERIFY(with.paths[robot].timeSeconds <= without.paths[robot].timeSeconds * (1.0 + 1e-9));
             turnsWithout += without.paths[robot].turns;
             turnsWith += with.paths[robot].turns;
         }
         QVERIFY2(turnsWith < turnsWithout,
                  qPrintable(QString("%1 against %2").arg(turnsWith).arg(turnsWithout)));
-        QVERIFY(with.metrics.makespanSeconds <= without.metrics.makespanSeconds * (1.0 + 1e-12));
+        QVERIFY(with.metrics.makespanSeconds <= without.metrics.makespanSeconds * (1.0 + 1e-9));
     }
 
     void startOnObstacleIsNamed() {
