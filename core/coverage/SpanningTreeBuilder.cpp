@@ -92,6 +92,26 @@ SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCe
     return SpanningTree(std::move(cells), rootNode, edges);
 }
 
+std::optional<SpanningTree> SpanningTreeBuilder::fewestTurnsSearched(std::vector<int> cells,
+                                                                     int rootCell) const {
+    if (plateauRounds_ <= 0 || cells.empty() || cellsDifferInSize(cells))
+        return std::nullopt;
+    std::vector<std::pair<int, int>> edges;
+    int rootNode = 0;
+    {
+        const CellIndexScope local(index_, cells);
+        const RegionAdjacency adjacency(graph_, cells, local);
+        TurnMinimisingTree::Options options;
+        options.plateauRounds = plateauRounds_;
+        const TurnMinimisingTree tree(adjacency, options);
+        if (!tree.searchLowered())
+            return std::nullopt;
+        edges = tree.edges();
+        rootNode = local[rootCell];
+    } // the scope must clear the shared index before the cells move into the tree
+    return SpanningTree(std::move(cells), rootNode, edges);
+}
+
 bool SpanningTreeBuilder::cellsDifferInSize(const std::vector<int>& cells) const {
     if (graph_.hasOneCellSize()) // no need to read millions of cells to learn it
         return false;

@@ -3,6 +3,7 @@
 #include "core/coverage/SpanningTree.hpp"
 #include "core/model/CellGraph.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace mcpp {
@@ -25,6 +26,10 @@ class SpanningTreeBuilder {
     // A tree that turns little (TurnMinimisingTree): straight runs joined where that adds the fewest turns;
     // where cells differ in size, its swaps weigh time, the steps between sizes included.
     [[nodiscard]] SpanningTree fewestTurns(std::vector<int> cells, int rootCell) const;
+    // fewestTurns with the search across plateaus where that search lowers the turns; nothing where it
+    // does not (the tree is then fewestTurns' without it), where cells differ in size (their tree weighs
+    // time) or without plateau rounds.
+    [[nodiscard]] std::optional<SpanningTree> fewestTurnsSearched(std::vector<int> cells, int rootCell) const;
 
     // The trees coverage planners choose among by the time of their walks: fewestTurns first, then
     // preferring east-west and north-south. On one cell size fewestTurns won every region of the benchmarks,

@@ -76,7 +76,7 @@ ParameterSpec SpanningTreeCoverage::closedTourParameter() {
 std::pair<SpanningTree, PathShape>
 SpanningTreeCoverage::bestTree(const CellGraph& graph, const std::vector<int>& cells, int startCell,
                                MapPoint start, std::vector<int>& scratchIndex, bool timed) const {
-    const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds_);
+    const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
     // Candidate trees are judged by the shape of their walk, which is measured without being stored.
     SpanningTree best;

@@ -14,10 +14,8 @@ namespace mcpp {
 // the builder's candidate trees (the turn-minimising one first) and keeps the quickest walk.
 class SpanningTreeCoverage final : public CoveragePathPlanner {
   public:
-    // closedTour: tours end where they start; otherwise paths stop at the last sub-cell. plateauRounds: the
-    // turn-minimising tree's search across plateaus of equal turns (TurnMinimisingTree), 0 for none.
-    explicit SpanningTreeCoverage(bool closedTour = true, int plateauRounds = 0)
-        : closedTour_(closedTour), plateauRounds_(plateauRounds) {}
+    // closedTour: tours end where they start; otherwise paths stop at the last sub-cell.
+    explicit SpanningTreeCoverage(bool closedTour = true) : closedTour_(closedTour) {}
 
     [[nodiscard]] static ParameterSpec closedTourParameter();
 
@@ -74,7 +72,6 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                            const std::vector<const RegionTree*>& kept) const;
 
     bool closedTour_;
-    int plateauRounds_;
 };
 
 // Whether the trees' longest walk is shorter than the other trees', beyond rounding.

@@ -84,6 +84,7 @@ TurnMinimisingTree::TurnMinimisingTree(const RegionAdjacency& adjacency, Options
 void TurnMinimisingTree::searchPlateaus() {
     turns_ = estimatedTurns();
     changedInRound_.assign(adjacency_.nodeCount(), 0);
+    const int initial = turns_;
     int fewest = turns_;
     std::vector<char> fewestTree = inTree_;
     std::vector<int> order(inTree_.size());
@@ -107,8 +108,11 @@ void TurnMinimisingTree::searchPlateaus() {
             fewestTree = inTree_;
         }
     }
-    if (turns_ != fewest)
+    // Sideways swaps after the last gain leave the count but not the tree: back to the tree of the gain, or
+    // to the tree built without the search.
+    if (inTree_ != fewestTree)
         restore(fewestTree);
+    searchLowered_ = fewest < initial;
     changedInRound_ = {};
 }
 

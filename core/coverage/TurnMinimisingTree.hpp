@@ -37,6 +37,8 @@ class TurnMinimisingTree {
     [[nodiscard]] std::vector<std::pair<int, int>> edges() const;
     // Turns the walk round the tree makes by the count above (exact on a grid of equal cells).
     [[nodiscard]] int estimatedTurns() const;
+    // Whether the search across plateaus found a cheaper tree; if not, the tree is the one built without it.
+    [[nodiscard]] bool searchLowered() const { return searchLowered_; }
 
   private:
     using SideCounts = std::array<std::uint16_t, 4>;
@@ -76,6 +78,7 @@ class TurnMinimisingTree {
     // searchPlateaus' state: the count as swaps change it, the round a cell last changed in, and the
     // shuffle's generator (xorshift32: the same sequence on every platform).
     int turns_ = 0;
+    bool searchLowered_ = false;
     int round_ = 0;
     std::vector<int> changedInRound_;
     std::uint32_t shuffleState_ = 2463534242U;

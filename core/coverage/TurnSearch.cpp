@@ -12,14 +12,14 @@
 namespace mcpp {
 namespace {
 
-// Walk shapes and timed paths add the same times in other orders: within rounding they take as long, and
-// the walk gains only by turning less (which counts where turns are free, turn_s 0).
-bool isGain(const PathShape& walk, const CoveragePath& path) {
+// Paths within rounding of each other take as long: the new one then gains only by turning less (which
+// counts where turns are free, turn_s 0).
+bool isGain(const CoveragePath& walked, const CoveragePath& path) {
     constexpr double relativeMargin = 1e-9;
-    if (walk.seconds() < path.timeSeconds * (1.0 - relativeMargin))
+    if (walked.timeSeconds < path.timeSeconds * (1.0 - relativeMargin))
         return true;
-    return walk.seconds() <= path.timeSeconds * (1.0 + relativeMargin) &&
-           walk.turns() < countTurns(path.waypoints);
+    return walked.timeSeconds <= path.timeSeconds * (1.0 + relativeMargin) &&
+           countTurns(walked.waypoints) < countTurns(path.waypoints);
 }
 
 } // namespace
@@ -44,7 +44,6 @@ int TurnSearch::improve(const CellGraph& graph, const RegionAllocation& regions,
                         const ProgressReporter& progress) const {
     if (rounds_ <= 0)
         return 0;
-    const SpanningTreeCoverage coverage(closedTour_, rounds_);
     const std::vector<std::vector<int>> cells = cellsByRobot(regions);
     std::vector<std::vector<int>> scratchByWorker(static_cast<std::size_t>(workerThreads()));
     std::atomic<int> improved = 0;
@@ -54,18 +53,20 @@ int TurnSearch::improve(const CellGraph& graph, const RegionAllocation& regions,
         std::vector<int>& scratch = scratchByWorker[static_cast<std::size_t>(worker)];
         if (scratch.size() != graph.size())
             scratch.assign(graph.size(), -1);
-        const std::vector<int>& region = cells[robot];
-        if (region.empty() || SpanningTreeBuilder(graph, scratch).cellsDifferInSize(region))
-            return;
-        const auto [tree, shape] =
-            coverage.bestTree(graph, region, regions.startCell[robot], starts[robot], scratch, true);
-        if (!isGain(shape, paths[robot]))
+        // The region's path was walked round the tree fewestTurns builds without the search (its only
+        // candidate on cells of one size): where the search gains nothing, there is nothing to walk.
+        const std::optional<SpanningTree> tree =
+            SpanningTreeBuilder(graph, scratch, rounds_)
+                .fewestTurnsSearched(cells[robot], regions.startCell[robot]);
+        if (!tree)
             return;
         TreeCircumnavigation walker(graph);
         CoveragePath path =
             pathFromWalk(static_cast<int>(robot), starts[robot],
-                         walker.walkFromStart(tree, starts[robot], closedTour_, shape.points()), closedTour_);
+                         walker.walkFromStart(*tree, starts[robot], closedTour_), closedTour_);
         timePath(path, graph);
+        if (!isGain(path, paths[robot]))
+            return;
         paths[robot] = std::move(path);
         ++improved;
     });
