@@ -24,7 +24,7 @@ function(mcpp_link_gdal_dependencies_first target)
   foreach(name libxerces-c libgeos libcrypto libpoppler libkmldom libsqlite3 libnetcdf liblapack
           libhdf5_serial libproj)
     string(REGEX MATCH "${name}[-.][^ \t]* => ([^ \t]+)" found "${loaded}")
-    if(found)
+    if(found AND IS_ABSOLUTE "${CMAKE_MATCH_1}" AND EXISTS "${CMAKE_MATCH_1}") # not "=> not found"
       list(APPEND first ${CMAKE_MATCH_1})
     endif()
   endforeach()
