@@ -21,9 +21,8 @@ class TurnSearch {
     TurnSearch(bool closedTour, int rounds) : closedTour_(closedTour), rounds_(rounds) {}
 
     [[nodiscard]] static ParameterSpec roundsParameter();
-    // The rounds to run of the `wanted` ones (the parameter's value) on this map: all of them up to
-    // 2 million / wanted cells, fewer above, none above 2 million cells, where rebuilding the trees alone
-    // would take seconds.
+    // The rounds to run of the `wanted` ones (the parameter's value) on this map: at most 160 000 / cells,
+    // at least one, and none above 2 million cells.
     [[nodiscard]] static int roundsFor(const CellGraph& graph, int wanted);
 
     // Returns the paths made quicker. Each is timed (timePath), as the waypoints stage leaves them.
