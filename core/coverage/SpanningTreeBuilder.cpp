@@ -73,43 +73,52 @@ SpanningTree SpanningTreeBuilder::preferring(std::vector<int> cells, int rootCel
     return SpanningTree(std::move(cells), rootNode, edges);
 }
 
-SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCell) const {
-    std::vector<std::pair<int, int>> edges;
+// The tree of the edges `edgesOf` picks over the region's adjacency (given the region's cells too), rooted
+// at rootCell; nothing where it picks none.
+template <typename EdgesOf>
+std::optional<SpanningTree> SpanningTreeBuilder::treeOver(std::vector<int> cells, int rootCell,
+                                                          EdgesOf edgesOf) const {
+    std::optional<std::vector<std::pair<int, int>>> edges;
     int rootNode = 0;
     {
         const CellIndexScope local(index_, cells);
         const RegionAdjacency adjacency(graph_, cells, local);
-        if (cellsDifferInSize(cells)) {
-            const SizeChangeConnectors connectors(graph_, cells, adjacency);
-            edges = TurnMinimisingTree(adjacency, {}, &connectors).edges();
-        } else {
-            TurnMinimisingTree::Options options;
-            options.plateauRounds = plateauRounds_;
-            edges = TurnMinimisingTree(adjacency, options).edges();
-        }
+        edges = edgesOf(adjacency, cells);
         rootNode = local[rootCell];
     } // the scope must clear the shared index before the cells move into the tree
-    return SpanningTree(std::move(cells), rootNode, edges);
+    if (!edges)
+        return std::nullopt;
+    return SpanningTree(std::move(cells), rootNode, *edges);
+}
+
+SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCell) const {
+    const bool mixedSizes = cellsDifferInSize(cells);
+    return *treeOver(std::move(cells), rootCell,
+                     [&](const RegionAdjacency& adjacency, const std::vector<int>& regionCells) {
+                         if (mixedSizes) {
+                             const SizeChangeConnectors connectors(graph_, regionCells, adjacency);
+                             return std::optional(TurnMinimisingTree(adjacency, {}, &connectors).edges());
+                         }
+                         TurnMinimisingTree::Options options;
+                         options.plateauRounds = plateauRounds_;
+                         return std::optional(TurnMinimisingTree(adjacency, options).edges());
+                     });
 }
 
 std::optional<SpanningTree> SpanningTreeBuilder::fewestTurnsSearched(std::vector<int> cells,
                                                                      int rootCell) const {
     if (plateauRounds_ <= 0 || cells.empty() || cellsDifferInSize(cells))
         return std::nullopt;
-    std::vector<std::pair<int, int>> edges;
-    int rootNode = 0;
-    {
-        const CellIndexScope local(index_, cells);
-        const RegionAdjacency adjacency(graph_, cells, local);
-        TurnMinimisingTree::Options options;
-        options.plateauRounds = plateauRounds_;
-        const TurnMinimisingTree tree(adjacency, options);
-        if (!tree.searchLowered())
-            return std::nullopt;
-        edges = tree.edges();
-        rootNode = local[rootCell];
-    } // the scope must clear the shared index before the cells move into the tree
-    return SpanningTree(std::move(cells), rootNode, edges);
+    return treeOver(std::move(cells), rootCell,
+                    [&](const RegionAdjacency& adjacency,
+                        const std::vector<int>&) -> std::optional<std::vector<std::pair<int, int>>> {
+                        TurnMinimisingTree::Options options;
+                        options.plateauRounds = plateauRounds_;
+                        const TurnMinimisingTree tree(adjacency, options);
+                        if (!tree.searchLowered())
+                            return std::nullopt;
+                        return tree.edges();
+                    });
 }
 
 bool SpanningTreeBuilder::cellsDifferInSize(const std::vector<int>& cells) const {

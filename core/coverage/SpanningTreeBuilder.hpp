@@ -45,6 +45,10 @@ class SpanningTreeBuilder {
     [[nodiscard]] SpanningTree spiral(std::vector<int> cells, int rootCell) const;
 
   private:
+    template <typename EdgesOf>
+    [[nodiscard]] std::optional<SpanningTree> treeOver(std::vector<int> cells, int rootCell,
+                                                       EdgesOf edgesOf) const;
+
     const CellGraph& graph_;
     std::vector<int>& index_;
     int plateauRounds_;

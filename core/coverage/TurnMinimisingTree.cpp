@@ -134,8 +134,7 @@ void TurnMinimisingTree::restore(const std::vector<char>& tree) {
         else
             unlink(static_cast<int>(edge));
     }
-    rootTree();
-    turns_ = estimatedTurns();
+    rootTree(); // the count needs no recount: the search ends here
 }
 
 int TurnMinimisingTree::turnChangeAdding(int node, CellSide side) const {

@@ -34,7 +34,8 @@ ParameterSpec TurnSearch::roundsParameter() {
         "none");
 }
 
-int TurnSearch::roundsFor(const CellGraph& graph, int wanted) {
+int TurnSearch::roundsFor(const CellGraph& graph, const ParameterValues& parameters) {
+    const int wanted = parameters.integer(roundsParameter().key);
     // A round takes about 1 ms per 10 000 cells (2.7 ms on 200 x 200 with 15 % obstacles), after building
     // the trees again, which costs about five rounds: many rounds where they cost little, one on large maps,
     // none where building the trees again alone would take seconds.
@@ -45,6 +46,11 @@ int TurnSearch::roundsFor(const CellGraph& graph, int wanted) {
         return 0;
     return static_cast<int>(
         std::min(static_cast<std::size_t>(wanted), std::max<std::size_t>(1, cellRounds / cells)));
+}
+
+TurnSearch TurnSearch::forPlan(const CellGraph& graph, const ParameterValues& parameters) {
+    return {parameters.boolean(SpanningTreeCoverage::closedTourParameter().key),
+            roundsFor(graph, parameters)};
 }
 
 int TurnSearch::improve(const CellGraph& graph, const RegionAllocation& regions,

@@ -6,6 +6,7 @@
 #include "core/model/ProgressReporter.hpp"
 #include "core/model/RegionAllocation.hpp"
 #include "core/parameters/ParameterSpec.hpp"
+#include "core/parameters/ParameterValues.hpp"
 
 #include <vector>
 
@@ -21,9 +22,11 @@ class TurnSearch {
     TurnSearch(bool closedTour, int rounds) : closedTour_(closedTour), rounds_(rounds) {}
 
     [[nodiscard]] static ParameterSpec roundsParameter();
-    // The rounds to run of the `wanted` ones (the parameter's value) on this map: at most 160 000 / cells,
-    // at least one, and none above 2 million cells.
-    [[nodiscard]] static int roundsFor(const CellGraph& graph, int wanted);
+    // The rounds to run on this map of those turn_search_rounds asks for: at most 160 000 / cells, at
+    // least one, and none above 2 million cells.
+    [[nodiscard]] static int roundsFor(const CellGraph& graph, const ParameterValues& parameters);
+    // The search a planner with the closed_tour and turn_search_rounds parameters runs on this map.
+    [[nodiscard]] static TurnSearch forPlan(const CellGraph& graph, const ParameterValues& parameters);
 
     // Returns the paths made quicker. Each is timed (timePath), as the waypoints stage leaves them.
     int improve(const CellGraph& graph, const RegionAllocation& regions, std::vector<CoveragePath>& paths,

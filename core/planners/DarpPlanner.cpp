@@ -31,9 +31,7 @@ void DarpPlanner::run(PlanningRun& run) const {
 
 void DarpPlanner::searchTurns(PlanningRun& run) const {
     Plan& plan = run.plan();
-    const TurnSearch search(
-        run.parameters().boolean("closed_tour"),
-        TurnSearch::roundsFor(plan.cells, run.parameters().integer("turn_search_rounds")));
+    const TurnSearch search = TurnSearch::forPlan(plan.cells, run.parameters());
     run.stage("turn search", [&] {
         return search.improve(plan.cells, plan.regions, plan.paths, run.starts(), run.progress());
     });

@@ -93,8 +93,7 @@ void MlctPlanner::run(PlanningRun& run) const {
     run.stage("path balance", [&] {
         return balancing.balance(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });
-    const TurnSearch turnSearch(parameters.boolean("closed_tour"),
-                                TurnSearch::roundsFor(plan.cells, parameters.integer("turn_search_rounds")));
+    const TurnSearch turnSearch = TurnSearch::forPlan(plan.cells, parameters);
     run.stage("turn search", [&] {
         return turnSearch.improve(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });

@@ -102,7 +102,7 @@ void MstcPlanner::run(PlanningRun& run) const {
     const std::vector<StartComponent> parts =
         run.stage("allocation", [&] { return componentsWithStarts(plan.cells, startCells); });
     // One tree, built once: its search runs within it, not as a stage of its own.
-    const int plateauRounds = TurnSearch::roundsFor(plan.cells, parameters.integer("turn_search_rounds"));
+    const int plateauRounds = TurnSearch::roundsFor(plan.cells, parameters);
     run.stage("paths", [&] {
         for (const StartComponent& part : parts) {
             run.progress().throwIfCancelled();
