@@ -127,6 +127,17 @@ void uniformGridTurnSlack(benchmark::State& state) {
         "mcpp-mlct", slack);
 }
 
+// MCPP-MLCT's regions grown on tree pieces of range(2) tenths of a percent of a robot's fair share (0: cell
+// by cell).
+void uniformGridTreePieces(benchmark::State& state) {
+    ParameterValues share;
+    share.set("tree_piece_share", static_cast<double>(state.range(2)) / 10.0);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        "mcpp-mlct", share);
+}
+
 void multiCoverMapFreeTurns(benchmark::State& state) {
     ParameterValues freeTurns;
     freeTurns.set("turn_s", 0.0);
@@ -223,6 +234,9 @@ BENCHMARK_CAPTURE(uniformGridFreeTurns, mcpp_mlct_free_turns, std::string("mcpp-
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridTurnSlack)
     ->ArgsProduct({{49, 200}, {8, 20}, {0, 2, 10, 50}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridTreePieces)
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}, {0, 30, 60, 120, 250}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridMdstc)->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridMdstcFreeTurns)

@@ -8,6 +8,22 @@ namespace mcpp {
 
 namespace {
 
+// Adds a cell's figures to its block's: the centre summed weighted by area until divideCentres.
+void addFigures(const Cell& cell, CellFigures& block) {
+    const CellFigures figures = figuresOf(cell);
+    block.x += figures.x * figures.area;
+    block.y += figures.y * figures.area;
+    block.area += figures.area;
+    block.cost += figures.cost;
+}
+
+void divideCentres(std::vector<CellFigures>& blocks) {
+    for (CellFigures& block : blocks) {
+        block.x /= block.area;
+        block.y /= block.area;
+    }
+}
+
 // Block ids by cell, numbered in the order of each block's first cell, and the blocks' figures: one pass
 // over cells that on a large map fill gigabytes.
 void numberBlocks(const CellGraph& graph, int side, CellBlocks& blocks) {
@@ -24,17 +40,9 @@ void numberBlocks(const CellGraph& graph, int side, CellBlocks& blocks) {
             blocks.figures.emplace_back();
         }
         blocks.blockOfCell[id] = idOfPlace[place];
-        CellFigures& block = blocks.figures[static_cast<std::size_t>(idOfPlace[place])];
-        const CellFigures figures = figuresOf(cell);
-        block.x += figures.x * figures.area;
-        block.y += figures.y * figures.area;
-        block.area += figures.area;
-        block.cost += figures.cost;
+        addFigures(cell, blocks.figures[static_cast<std::size_t>(idOfPlace[place])]);
     }
-    for (CellFigures& block : blocks.figures) {
-        block.x /= block.area;
-        block.y /= block.area;
-    }
+    divideCentres(blocks.figures);
 }
 
 // Cell ids listed block by block (a counting sort): cellsOf[offsets[b] ... offsets[b + 1]).
@@ -76,9 +84,10 @@ bool linkedWithin(const CellGraph& graph, std::span<const int> cells, int block,
     return members.size() == cells.size();
 }
 
-// Which blocks touch, and whether each block's cells are linked among themselves.
+// Which blocks touch, and whether each block's cells are linked among themselves (not checked where
+// `linksKnown`: the caller made them so).
 NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>& blockOfCell, int blockCount,
-                                 bool& everyBlockConnected) {
+                                 bool& everyBlockConnected, bool linksKnown = false) {
     std::vector<int> cellOffsets;
     std::vector<int> cellsOf;
     cellsByBlock(blockOfCell, blockCount, cellOffsets, cellsOf);
@@ -103,7 +112,7 @@ NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>&
             }
         std::sort(neighbours.begin() + static_cast<std::ptrdiff_t>(first), neighbours.end());
         offsets[block + 1] = static_cast<int>(neighbours.size());
-        if (everyBlockConnected && cells.size() > 1)
+        if (!linksKnown && everyBlockConnected && cells.size() > 1)
             everyBlockConnected =
                 linkedWithin(graph, cells, static_cast<int>(block), blockOfCell, members, reached);
     }
@@ -117,6 +126,19 @@ CellBlocks groupIntoBlocks(const CellGraph& graph, int side) {
     numberBlocks(graph, side, blocks);
     const auto blockCount = static_cast<int>(blocks.figures.size());
     blocks.adjacency = blockAdjacency(graph, blocks.blockOfCell, blockCount, blocks.everyBlockConnected);
+    return blocks;
+}
+
+CellBlocks groupIntoConnectedBlocks(const CellGraph& graph, std::vector<int> blockOfCell, int blockCount) {
+    CellBlocks blocks;
+    blocks.blockOfCell = std::move(blockOfCell);
+    blocks.figures.assign(static_cast<std::size_t>(blockCount), {});
+    for (std::size_t id = 0; id < graph.size(); ++id)
+        addFigures(graph.cell(static_cast<int>(id)),
+                   blocks.figures[static_cast<std::size_t>(blocks.blockOfCell[id])]);
+    divideCentres(blocks.figures);
+    blocks.adjacency =
+        blockAdjacency(graph, blocks.blockOfCell, blockCount, blocks.everyBlockConnected, true);
     return blocks;
 }
 

@@ -22,4 +22,9 @@ struct CellBlocks {
 
 [[nodiscard]] CellBlocks groupIntoBlocks(const CellGraph& graph, int side);
 
+// The graph's cells grouped as `blockOfCell` says (blocks 0..blockCount-1, none empty), each block's cells
+// linked among themselves: the caller made them so.
+[[nodiscard]] CellBlocks groupIntoConnectedBlocks(const CellGraph& graph, std::vector<int> blockOfCell,
+                                                  int blockCount);
+
 } // namespace mcpp

@@ -37,6 +37,7 @@ PlannerDescription MlctPlanner::describe() const {
     description.parameters = {DecompositionOptions::purityToleranceParameter(),
                               DecompositionOptions::blockedThresholdParameter(),
                               AzimuthTrendAllocator::rebalanceIterationsParameter(),
+                              AzimuthTrendAllocator::treePieceShareParameter(),
                               BorderStraightening::slackParameter(),
                               SpanningTreeCoverage::closedTourParameter(),
                               TurnSearch::roundsParameter()};
@@ -54,7 +55,8 @@ void MlctPlanner::run(PlanningRun& run) const {
     Plan& plan = run.plan();
     plan.cells = quadTreeStage(run);
     const std::vector<int> startCells = run.locateStarts();
-    const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
+    const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"),
+                                          parameters.real("tree_piece_share") / 100.0);
     const BorderStraightening straightening(plan.cells, parameters.real("fewer_turns_slack") / 100.0);
     plan.regions =
         run.stage("allocation", [&] { return allocator.allocate(plan.cells, startCells, progress); });

@@ -207,7 +207,7 @@ class AzimuthTrendAllocatorTest : public QObject {
     // block's cost of the mean; obstacles cut blocks in two, and on the quadtree map blocks hold cells of
     // several sizes.
     void regionsGrownOnBlocksAreWholeAndEven() {
-        const AzimuthTrendAllocator onBlocks(0, 0);
+        const AzimuthTrendAllocator onBlocks(0, 0.0, 0);
         std::vector<PlanningProblem> problems;
         for (std::uint32_t seed : {3U, 8U, 21U})
             problems.push_back(test::obstacleGridProblem(64, 5, seed));
@@ -240,11 +240,38 @@ class AzimuthTrendAllocatorTest : public QObject {
         }
     }
 
+    // With a tree piece share, a map of one cell size grows its regions on pieces of a whole-map tree and
+    // evens them out cell by cell: the regions are whole, hold their starts and every reachable cell, say
+    // their costs right and end as even as regions grown cell by cell (largest over mean within 1 %); a map
+    // of several cell sizes is grown cell by cell as before.
+    void regionsGrownOnTreePiecesAreWholeAndEven() {
+        const AzimuthTrendAllocator onPieces(0, 0.03);
+        for (std::uint32_t seed : {3U, 8U, 21U}) {
+            const PlanningProblem problem = test::obstacleGridProblem(64, 5, seed);
+            const Plan plan = allocateOnly(problem, onPieces);
+            QVERIFY2(test::checkRegions(plan).empty(),
+                     qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+            const std::vector<double> costs =
+                regionCosts(plan.cells, plan.regions.robotOfCell, plan.regions.startCell.size());
+            for (std::size_t robot = 0; robot < costs.size(); ++robot)
+                QVERIFY(std::abs(plan.regions.costSeconds[robot] - costs[robot]) <= 1e-9 * costs[robot]);
+            const Plan byCell = allocateOnly(problem);
+            QVERIFY(plan.regions.robotOfCell != byCell.regions.robotOfCell);
+            QVERIFY2(maximumOverMean(plan.regions) <= maximumOverMean(byCell.regions) + 0.01,
+                     qPrintable(QString("%1 against %2")
+                                    .arg(maximumOverMean(plan.regions))
+                                    .arg(maximumOverMean(byCell.regions))));
+        }
+        const PlanningProblem severalSizes = test::randomProblem(test::multiCoverSpec(128, 6));
+        QCOMPARE(allocateOnly(severalSizes, onPieces).regions.robotOfCell,
+                 allocateOnly(severalSizes).regions.robotOfCell);
+    }
+
     // Starts that share a block cannot grow apart on blocks: the regions are grown cell by cell.
     void startsSharingABlockAreGrownCellByCell() {
         auto problem = test::uniformProblem(32, 32, 10.0, std::vector<bool>(32 * 32, false), {});
         problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 1, 1)};
-        const AzimuthTrendAllocator onBlocks(0, 0);
+        const AzimuthTrendAllocator onBlocks(0, 0.0, 0);
         const Plan plan = allocateOnly(problem, onBlocks);
         QVERIFY(test::checkRegions(plan).empty());
         QCOMPARE(plan.regions.robotOfCell, allocateOnly(problem).regions.robotOfCell);

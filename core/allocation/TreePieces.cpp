@@ -1,0 +1,122 @@
+#include "core/allocation/TreePieces.hpp"
+
+#include "core/coverage/RegionAdjacency.hpp"
+#include "core/coverage/TurnMinimisingTree.hpp"
+
+#include <numeric>
+
+namespace mcpp {
+namespace {
+
+// Every cell is its own region position: the whole graph is one region.
+struct WholeGraphIndex {
+    int operator[](int cell) const { return cell; }
+};
+
+// The tree (a forest where the map falls apart) as parent links, with its cells in breadth-first order
+// from each part's lowest cell: parents come before their children.
+struct RootedForest {
+    std::vector<int> order;
+    std::vector<int> parent;
+};
+
+RootedForest rootForest(std::size_t cellCount, const std::vector<std::pair<int, int>>& edges) {
+    std::vector<int> offsets(cellCount + 1, 0);
+    for (const auto& [a, b] : edges) {
+        ++offsets[static_cast<std::size_t>(a) + 1];
+        ++offsets[static_cast<std::size_t>(b) + 1];
+    }
+    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+    std::vector<int> next(offsets.begin(), offsets.end() - 1);
+    std::vector<int> linked(edges.size() * 2);
+    for (const auto& [a, b] : edges) {
+        linked[static_cast<std::size_t>(next[static_cast<std::size_t>(a)]++)] = b;
+        linked[static_cast<std::size_t>(next[static_cast<std::size_t>(b)]++)] = a;
+    }
+    RootedForest forest;
+    forest.parent.assign(cellCount, -1);
+    forest.order.reserve(cellCount);
+    std::vector<char> seen(cellCount, 0);
+    for (std::size_t root = 0; root < cellCount; ++root) {
+        if (seen[root] != 0)
+            continue;
+        seen[root] = 1;
+        forest.order.push_back(static_cast<int>(root));
+        for (std::size_t head = forest.order.size() - 1; head < forest.order.size(); ++head) {
+            const auto cell = static_cast<std::size_t>(forest.order[head]);
+            for (int at = offsets[cell]; at < offsets[cell + 1]; ++at) {
+                const int other = linked[static_cast<std::size_t>(at)];
+                if (seen[static_cast<std::size_t>(other)] == 0) {
+                    seen[static_cast<std::size_t>(other)] = 1;
+                    forest.parent[static_cast<std::size_t>(other)] = static_cast<int>(cell);
+                    forest.order.push_back(other);
+                }
+            }
+        }
+    }
+    return forest;
+}
+
+// The cells that head a piece: a subtree becomes a piece once it costs pieceCost, or where joining its
+// parent's would put two starts in one piece (worked bottom-up).
+std::vector<char> pieceHeads(const CellGraph& graph, const RootedForest& forest,
+                             const std::vector<int>& startCells, double pieceCost) {
+    const std::size_t cellCount = graph.size();
+    std::vector<double> open(cellCount);
+    std::vector<char> holdsStart(cellCount, 0);
+    for (std::size_t cell = 0; cell < cellCount; ++cell)
+        open[cell] = graph.cell(static_cast<int>(cell)).coverSeconds();
+    for (int start : startCells)
+        holdsStart[static_cast<std::size_t>(start)] = 1;
+    std::vector<char> heads(cellCount, 0);
+    for (auto at = forest.order.rbegin(); at != forest.order.rend(); ++at) {
+        const auto cell = static_cast<std::size_t>(*at);
+        const int parent = forest.parent[cell];
+        const auto up = static_cast<std::size_t>(parent);
+        if (parent < 0 || open[cell] >= pieceCost || (holdsStart[cell] != 0 && holdsStart[up] != 0)) {
+            heads[cell] = 1;
+            continue;
+        }
+        open[up] += open[cell];
+        holdsStart[up] = static_cast<char>(holdsStart[up] | holdsStart[cell]);
+    }
+    return heads;
+}
+
+CellBlocks piecesOf(const CellGraph& graph, const RootedForest& forest, const std::vector<char>& heads) {
+    std::vector<int> pieceOfCell(graph.size(), -1);
+    int pieces = 0;
+    for (int cell : forest.order) {
+        const auto at = static_cast<std::size_t>(cell);
+        pieceOfCell[at] =
+            heads[at] != 0 ? pieces++ : pieceOfCell[static_cast<std::size_t>(forest.parent[at])];
+    }
+    return groupIntoConnectedBlocks(graph, std::move(pieceOfCell), pieces);
+}
+
+} // namespace
+
+std::vector<CellBlocks> treePieces(const CellGraph& graph, const std::vector<int>& startCells,
+                                   const std::vector<double>& pieceCosts) {
+    const std::size_t cellCount = graph.size();
+    std::vector<int> cells(cellCount);
+    std::iota(cells.begin(), cells.end(), 0);
+    std::vector<std::pair<int, int>> edges;
+    {
+        const RegionAdjacency adjacency(graph, cells, WholeGraphIndex{});
+        edges = TurnMinimisingTree(adjacency, {}).edges();
+    }
+    const RootedForest forest = rootForest(cellCount, edges);
+    std::vector<CellBlocks> levels;
+    std::vector<char> coarserHeads(cellCount, 0);
+    for (double pieceCost : pieceCosts) {
+        std::vector<char> heads = pieceHeads(graph, forest, startCells, pieceCost);
+        for (std::size_t cell = 0; cell < cellCount; ++cell)
+            heads[cell] = static_cast<char>(heads[cell] | coarserHeads[cell]);
+        levels.push_back(piecesOf(graph, forest, heads));
+        coarserHeads = std::move(heads);
+    }
+    return levels;
+}
+
+} // namespace mcpp
