@@ -864,14 +864,12 @@ ParameterSpec AzimuthTrendAllocator::treePieceShareParameter() {
     return realParameter("tree_piece_share", "Tree piece size", 3.0, 0.0, 50.0,
                          "Regions are grown from pieces of one tree over the whole map that turns little, "
                          "each this share of a robot's fair share, so that their borders cut few straight "
-                         "runs; 0 grows them cell by cell. Maps of one cell size, at most 50 000 cells a "
-                         "robot",
+                         "runs; 0 grows them cell by cell. Maps of at most 50 000 cells a robot",
                          "%");
 }
 
 bool AzimuthTrendAllocator::growsOnTreePieces(const CellGraph& graph, std::size_t robots) const {
-    return treePieceShare_ > 0.0 && robots > 0 && graph.hasOneCellSize() &&
-           graph.size() <= mostCellsOnTreePiecesPerRobot * robots;
+    return treePieceShare_ > 0.0 && robots > 0 && graph.size() <= mostCellsOnTreePiecesPerRobot_ * robots;
 }
 
 // The division of coarser pieces carried onto finer ones (or cells) that lie within them.

@@ -1,6 +1,7 @@
 #include "core/allocation/TreePieces.hpp"
 
 #include "core/coverage/RegionAdjacency.hpp"
+#include "core/coverage/SizeChangeConnectors.hpp"
 #include "core/coverage/TurnMinimisingTree.hpp"
 
 #include <numeric>
@@ -104,7 +105,12 @@ std::vector<CellBlocks> treePieces(const CellGraph& graph, const std::vector<int
     std::vector<std::pair<int, int>> edges;
     {
         const RegionAdjacency adjacency(graph, cells, WholeGraphIndex{});
-        edges = TurnMinimisingTree(adjacency, {}).edges();
+        if (graph.hasOneCellSize()) {
+            edges = TurnMinimisingTree(adjacency, {}).edges();
+        } else {
+            const SizeChangeConnectors connectors(graph, cells, adjacency);
+            edges = TurnMinimisingTree(adjacency, {}, &connectors).edges();
+        }
     }
     const RootedForest forest = rootForest(cellCount, edges);
     std::vector<CellBlocks> levels;

@@ -10,8 +10,8 @@ namespace mcpp {
 // The map cut into pieces of one turn-minimising tree over all of it (TurnMinimisingTree): subtrees of
 // about `pieceCost` seconds each, cut bottom-up where a subtree reaches that cost, and never two starts in
 // one piece. Regions grown from such pieces have borders where the whole map's tree is cut, so their own
-// trees turn nearly as little as it does: the cost of a border lies in the straight runs it cuts. For
-// graphs of one cell size.
+// trees turn nearly as little as it does: the cost of a border lies in the straight runs it cuts. Where
+// cells differ in size the tree weighs time, the steps between sizes included, as a region's tree does.
 // pieceCosts: one level of pieces per cost, dearest first; each level's pieces lie within the last one's.
 [[nodiscard]] std::vector<CellBlocks> treePieces(const CellGraph& graph, const std::vector<int>& startCells,
                                                  const std::vector<double>& pieceCosts);

@@ -240,14 +240,17 @@ class AzimuthTrendAllocatorTest : public QObject {
         }
     }
 
-    // With a tree piece share, a map of one cell size grows its regions on pieces of a whole-map tree and
-    // evens them out cell by cell: the regions are whole, hold their starts and every reachable cell, say
-    // their costs right and end as even as regions grown cell by cell (largest over mean within 1 %); a map
-    // of several cell sizes is grown cell by cell as before.
+    // With a tree piece share, a map grows its regions on pieces of a whole-map tree and evens them out
+    // cell by cell: the regions are whole, hold their starts and every reachable cell, say their costs
+    // right and end as even as regions grown cell by cell (largest over mean within 1 %), on one cell size
+    // and on several; a map of more than 50 000 cells a robot is grown cell by cell as before.
     void regionsGrownOnTreePiecesAreWholeAndEven() {
         const AzimuthTrendAllocator onPieces(0, 0.03);
-        for (std::uint32_t seed : {3U, 8U, 21U}) {
-            const PlanningProblem problem = test::obstacleGridProblem(64, 5, seed);
+        std::vector<PlanningProblem> problems;
+        for (std::uint32_t seed : {3U, 8U, 21U})
+            problems.push_back(test::obstacleGridProblem(64, 5, seed));
+        problems.push_back(test::randomProblem(test::multiCoverSpec(128, 6)));
+        for (const PlanningProblem& problem : problems) {
             const Plan plan = allocateOnly(problem, onPieces);
             QVERIFY2(test::checkRegions(plan).empty(),
                      qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
@@ -262,9 +265,13 @@ class AzimuthTrendAllocatorTest : public QObject {
                                     .arg(maximumOverMean(plan.regions))
                                     .arg(maximumOverMean(byCell.regions))));
         }
-        const PlanningProblem severalSizes = test::randomProblem(test::multiCoverSpec(128, 6));
-        QCOMPARE(allocateOnly(severalSizes, onPieces).regions.robotOfCell,
-                 allocateOnly(severalSizes).regions.robotOfCell);
+        // Two robots on 128 x 128 cells: 8 192 cells each, then at most 2 000 a robot.
+        const PlanningProblem large = test::obstacleGridProblem(128, 2, 5);
+        const AzimuthTrendAllocator smallRegionsOnly(
+            0, 0.03, AzimuthTrendAllocator::defaultMostCellsGrownOneByOne, 2'000);
+        QCOMPARE(allocateOnly(large, smallRegionsOnly).regions.robotOfCell,
+                 allocateOnly(large).regions.robotOfCell);
+        QVERIFY(allocateOnly(large, onPieces).regions.robotOfCell != allocateOnly(large).regions.robotOfCell);
     }
 
     // Starts that share a block cannot grow apart on blocks: the regions are grown cell by cell.

@@ -130,7 +130,7 @@ class DynamicTreeWalkTest : public QObject {
     // stopped: open cells it went all round stay covered, so nobody covers them twice. Stops after 10 to 300
     // moves, at the last move's first point and at its end.
     void aStopLetsGoOfWhatItHasNotCoveredWhole() {
-        const Plan plan = quadTreePlan(5, 3, 2);
+        const Plan plan = quadTreePlan(2, 3, 2);
         const auto& first = plan.paths.front().waypoints.front();
         int keptWholeOpen = 0;
         for (int moves = 10; moves <= 300; moves += 10)
