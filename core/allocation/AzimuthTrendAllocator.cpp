@@ -6,13 +6,13 @@
 #include "core/allocation/PieceSettlement.hpp"
 #include "core/allocation/RegionCosts.hpp"
 #include "core/allocation/RegionReconnection.hpp"
+#include "core/allocation/StartComponents.hpp"
 #include "core/allocation/TreePieces.hpp"
 #include "core/model/LocalConnectivity.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <optional>
 #include <unordered_map>
 
@@ -773,18 +773,81 @@ class Allocation {
     std::vector<char> handOverPossible_;
 };
 
+// The cap on chain moves: the setting, or one from the problem size.
+int moveCap(int rebalanceIterations, std::size_t cells) {
+    return rebalanceIterations > 0 ? rebalanceIterations : std::max(1000, static_cast<int>(cells));
+}
+
 // The cells moved along chains of adjacent regions while the largest cost falls, then any region left in
 // pieces settled.
 RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int rebalanceIterations,
                            const ProgressReporter& progress) {
     progress.report("allocation", 0.8);
-    const int cap =
-        rebalanceIterations > 0 ? rebalanceIterations : std::max(1000, static_cast<int>(graph.size()));
-    (void)allocation.rebalance(cap);
+    (void)allocation.rebalance(moveCap(rebalanceIterations, graph.size()));
     RegionAllocation result = allocation.result();
     settleRegionsWithPieces(graph, result);
     progress.report("allocation", 1.0);
     return result;
+}
+
+RegionAllocation grownCellByCell(const CellGraph& graph, const std::vector<int>& startCells,
+                                 int rebalanceIterations, const ProgressReporter& progress) {
+    Allocation allocation(graph.adjacency(), cellFiguresOf(graph), startCells, progress);
+    allocation.grow();
+    return evenedOut(allocation, graph, rebalanceIterations, progress);
+}
+
+// The blocks (or pieces) that hold the start cells.
+std::vector<int> startsOn(const std::vector<int>& blockOfCell, const std::vector<int>& startCells) {
+    std::vector<int> starts;
+    for (int start : startCells)
+        starts.push_back(blockOfCell[static_cast<std::size_t>(start)]);
+    return starts;
+}
+
+// A division of blocks given cell by cell: each cell takes its block's robot; the costs are the blocks'.
+RegionAllocation cellsTakeTheirBlocks(const RegionAllocation& blocks, const std::vector<int>& blockOfCell,
+                                      const std::vector<int>& startCells) {
+    RegionAllocation division;
+    division.startCell = startCells;
+    division.costSeconds = blocks.costSeconds;
+    division.robotOfCell.resize(blockOfCell.size());
+    for (std::size_t cell = 0; cell < blockOfCell.size(); ++cell)
+        division.robotOfCell[cell] = blocks.robotOfCell[static_cast<std::size_t>(blockOfCell[cell])];
+    return division;
+}
+
+// Each finer piece takes the robot of the coarser piece it lies in: the cells' owners, which is all
+// Allocation::adopt reads.
+RegionAllocation finerTakeTheirCoarser(const RegionAllocation& coarser, const CellBlocks& coarserPieces,
+                                       const CellBlocks& finerPieces) {
+    RegionAllocation division;
+    division.robotOfCell.assign(finerPieces.figures.size(), -1);
+    for (std::size_t cell = 0; cell < finerPieces.blockOfCell.size(); ++cell)
+        division.robotOfCell[static_cast<std::size_t>(finerPieces.blockOfCell[cell])] =
+            coarser.robotOfCell[static_cast<std::size_t>(coarserPieces.blockOfCell[cell])];
+    return division;
+}
+
+// Grown on the coarsest pieces and evened out on each level in turn; the division of the finest pieces.
+// Nothing where a finer level cannot adopt a coarser one's division (its pieces lie within the coarser
+// ones, so it always can).
+std::optional<RegionAllocation> evenedOutOnPieces(const std::vector<CellBlocks>& levels,
+                                                  const std::vector<int>& startCells, int rebalanceIterations,
+                                                  const ProgressReporter& progress) {
+    RegionAllocation division;
+    for (std::size_t level = 0; level < levels.size(); ++level) {
+        const CellBlocks& pieces = levels[level];
+        Allocation allocation(pieces.adjacency, pieces.figures, startsOn(pieces.blockOfCell, startCells),
+                              progress);
+        if (level == 0)
+            allocation.grow();
+        else if (!allocation.adopt(finerTakeTheirCoarser(division, levels[level - 1], pieces)))
+            return std::nullopt;
+        (void)allocation.rebalance(moveCap(rebalanceIterations, pieces.figures.size()));
+        division = allocation.result();
+    }
+    return division;
 }
 
 // The regions grown and evened out on blocks, each cell given its block's robot and made whole. Nothing when
@@ -794,14 +857,11 @@ RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int r
 std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std::vector<int>& startCells,
                                               int rebalanceIterations, const ProgressReporter& progress) {
     RegionAllocation division;
-    division.startCell = startCells;
     double largestBlockCost = 0.0;
     bool linked = false;
     {
         const CellBlocks blocks = groupIntoBlocks(graph, AzimuthTrendAllocator::blockSide);
-        std::vector<int> blockStarts;
-        for (int start : startCells)
-            blockStarts.push_back(blocks.blockOfCell[static_cast<std::size_t>(start)]);
+        const std::vector<int> blockStarts = startsOn(blocks.blockOfCell, startCells);
         std::vector<int> distinct = blockStarts;
         std::sort(distinct.begin(), distinct.end());
         if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end())
@@ -810,17 +870,11 @@ std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std:
             largestBlockCost = std::max(largestBlockCost, block.cost);
         Allocation coarse(blocks.adjacency, blocks.figures, blockStarts, progress);
         coarse.grow();
-        (void)coarse.rebalance(rebalanceIterations > 0
-                                   ? rebalanceIterations
-                                   : std::max(1000, static_cast<int>(blocks.figures.size())));
+        (void)coarse.rebalance(moveCap(rebalanceIterations, blocks.figures.size()));
         const RegionAllocation coarseRegions = coarse.result();
         if (!withinOfTheMean(coarseRegions.costSeconds, largestBlockCost))
             return std::nullopt;
-        division.robotOfCell.resize(graph.size());
-        for (std::size_t cell = 0; cell < graph.size(); ++cell)
-            division.robotOfCell[cell] =
-                coarseRegions.robotOfCell[static_cast<std::size_t>(blocks.blockOfCell[cell])];
-        division.costSeconds = coarseRegions.costSeconds;
+        division = cellsTakeTheirBlocks(coarseRegions, blocks.blockOfCell, startCells);
         linked = blocks.everyBlockConnected;
     }
     if (!linked) {
@@ -864,65 +918,42 @@ ParameterSpec AzimuthTrendAllocator::treePieceShareParameter() {
     return realParameter("tree_piece_share", "Tree piece size", 3.0, 0.0, 50.0,
                          "Regions are grown from pieces of one tree over the whole map that turns little, "
                          "each this share of a robot's fair share, so that their borders cut few straight "
-                         "runs; 0 grows them cell by cell. Maps of at most 50 000 cells a robot",
+                         "runs; 0 grows them as before, cell by cell. Maps of at most 50 000 cells a "
+                         "robot",
                          "%");
 }
 
+// One robot's region is the whole map however it is grown; above mostCellsGrownOneByOne cells the regions
+// grow on blocks.
 bool AzimuthTrendAllocator::growsOnTreePieces(const CellGraph& graph, std::size_t robots) const {
-    return treePieceShare_ > 0.0 && robots > 0 && graph.size() <= mostCellsOnTreePiecesPerRobot_ * robots;
+    return treePieceShare_ > 0.0 && robots > 1 && graph.size() <= mostCellsGrownOneByOne_ &&
+           (graph.size() + robots - 1) / robots <= mostCellsOnTreePiecesPerRobot_;
 }
 
-// The division of coarser pieces carried onto finer ones (or cells) that lie within them.
-RegionAllocation carriedOnto(const RegionAllocation& division, const std::vector<int>& coarserOfCell,
-                             const std::vector<int>& finerOfCell, std::size_t finerCount) {
-    RegionAllocation carried;
-    carried.robotOfCell.assign(finerCount, -1);
-    for (std::size_t cell = 0; cell < coarserOfCell.size(); ++cell)
-        carried.robotOfCell[static_cast<std::size_t>(finerOfCell[cell])] =
-            division.robotOfCell[static_cast<std::size_t>(coarserOfCell[cell])];
-    carried.costSeconds = division.costSeconds;
-    return carried;
-}
-
-// Grown on the coarsest pieces, evened out on each finer level, then cell by cell (grown cell by cell where
-// a division cannot be adopted).
+// Grown and evened out on two levels of pieces, then evened out cell by cell.
 RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph,
                                                           const std::vector<int>& startCells,
                                                           const ProgressReporter& progress) const {
-    double totalCost = 0.0;
-    for (std::size_t cell = 0; cell < graph.size(); ++cell)
-        totalCost += graph.cell(static_cast<int>(cell)).coverSeconds();
-    const double fairShare = totalCost / static_cast<double>(startCells.size());
+    // The fair share of the parts the robots can reach: a large part no start reaches would make the
+    // pieces too large.
+    double reachableCost = 0.0;
+    for (const StartComponent& component : componentsWithStarts(graph, startCells))
+        for (int cell : component.cells)
+            reachableCost += graph.cell(cell).coverSeconds();
+    const double pieceCost = treePieceShare_ * reachableCost / static_cast<double>(startCells.size());
     // Pieces of an eighth of that within: evened out on them, the division has little left to move cell by
     // cell (one level alone took 18 s of cell moves on a 480 x 480 grid with 8 robots, two 0.26 s).
-    const std::vector<double> pieceCosts{treePieceShare_ * fairShare, treePieceShare_ * fairShare / 8.0};
-    const std::vector<CellBlocks> levels = treePieces(graph, startCells, pieceCosts);
-    const auto grownCellByCell = [&] {
-        Allocation grown(graph.adjacency(), cellFiguresOf(graph), startCells, progress);
-        grown.grow();
-        return evenedOut(grown, graph, rebalanceIterations_, progress);
-    };
-    RegionAllocation division;
-    for (std::size_t level = 0; level < levels.size(); ++level) {
-        const CellBlocks& pieces = levels[level];
-        std::vector<int> pieceStarts;
-        for (int start : startCells)
-            pieceStarts.push_back(pieces.blockOfCell[static_cast<std::size_t>(start)]);
-        Allocation allocation(pieces.adjacency, pieces.figures, pieceStarts, progress);
-        if (level == 0)
-            allocation.grow();
-        else if (!allocation.adopt(carriedOnto(division, levels[level - 1].blockOfCell, pieces.blockOfCell,
-                                               pieces.figures.size())))
-            return grownCellByCell();
-        (void)allocation.rebalance(std::max(1000, static_cast<int>(pieces.figures.size())));
-        division = allocation.result();
+    std::optional<RegionAllocation> division;
+    std::vector<int> finestPieceOfCell;
+    {
+        const std::vector<CellBlocks> levels = treePieces(graph, startCells, {pieceCost, pieceCost / 8.0});
+        division = evenedOutOnPieces(levels, startCells, rebalanceIterations_, progress);
+        finestPieceOfCell = levels.back().blockOfCell;
     }
-    std::vector<int> cellIds(graph.size());
-    std::iota(cellIds.begin(), cellIds.end(), 0);
     Allocation allocation(graph.adjacency(), cellFiguresOf(graph), startCells, progress);
-    if (allocation.adopt(carriedOnto(division, levels.back().blockOfCell, cellIds, graph.size())))
+    if (division && allocation.adopt(cellsTakeTheirBlocks(*division, finestPieceOfCell, startCells)))
         return evenedOut(allocation, graph, rebalanceIterations_, progress);
-    return grownCellByCell();
+    return grownCellByCell(graph, startCells, rebalanceIterations_, progress);
 }
 
 RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const std::vector<int>& startCells,
@@ -934,9 +965,7 @@ RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const s
         if (auto grown = grownOnBlocks(graph, startCells, rebalanceIterations_, progress))
             return std::move(*grown);
     }
-    Allocation allocation(graph.adjacency(), cellFiguresOf(graph), startCells, progress);
-    allocation.grow();
-    return evenedOut(allocation, graph, rebalanceIterations_, progress);
+    return grownCellByCell(graph, startCells, rebalanceIterations_, progress);
 }
 
 } // namespace mcpp

@@ -59,7 +59,9 @@ RootedForest rootForest(std::size_t cellCount, const std::vector<std::pair<int, 
 }
 
 // The cells that head a piece: a subtree becomes a piece once it costs pieceCost, or where joining its
-// parent's would put two starts in one piece (worked bottom-up).
+// parent's would put two starts in one piece (worked bottom-up). A finer level sums its costs across the
+// coarser level's cuts and then cuts there too: respecting those cuts in the sums gave as few turns, but on
+// a 480 x 480 grid with 8 robots a division the evening out took 13 s over instead of 0.3 s.
 std::vector<char> pieceHeads(const CellGraph& graph, const RootedForest& forest,
                              const std::vector<int>& startCells, double pieceCost) {
     const std::size_t cellCount = graph.size();
@@ -73,13 +75,17 @@ std::vector<char> pieceHeads(const CellGraph& graph, const RootedForest& forest,
     for (auto at = forest.order.rbegin(); at != forest.order.rend(); ++at) {
         const auto cell = static_cast<std::size_t>(*at);
         const int parent = forest.parent[cell];
-        const auto up = static_cast<std::size_t>(parent);
-        if (parent < 0 || open[cell] >= pieceCost || (holdsStart[cell] != 0 && holdsStart[up] != 0)) {
+        if (parent < 0) {
             heads[cell] = 1;
             continue;
         }
-        open[up] += open[cell];
-        holdsStart[up] = static_cast<char>(holdsStart[up] | holdsStart[cell]);
+        const auto parentIndex = static_cast<std::size_t>(parent);
+        if (open[cell] >= pieceCost || (holdsStart[cell] != 0 && holdsStart[parentIndex] != 0)) {
+            heads[cell] = 1;
+            continue;
+        }
+        open[parentIndex] += open[cell];
+        holdsStart[parentIndex] = static_cast<char>(holdsStart[parentIndex] | holdsStart[cell]);
     }
     return heads;
 }

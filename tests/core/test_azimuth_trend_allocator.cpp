@@ -265,13 +265,19 @@ class AzimuthTrendAllocatorTest : public QObject {
                                     .arg(maximumOverMean(plan.regions))
                                     .arg(maximumOverMean(byCell.regions))));
         }
-        // Two robots on 128 x 128 cells: 8 192 cells each, then at most 2 000 a robot.
+        // The limit of cells a robot, at its edge: two robots on a 128 x 128 grid grow on pieces where the
+        // limit is half the cells (rounded up) and cell by cell one below it; one robot always cell by cell.
         const PlanningProblem large = test::obstacleGridProblem(128, 2, 5);
-        const AzimuthTrendAllocator smallRegionsOnly(
-            0, 0.03, AzimuthTrendAllocator::defaultMostCellsGrownOneByOne, 2'000);
-        QCOMPARE(allocateOnly(large, smallRegionsOnly).regions.robotOfCell,
-                 allocateOnly(large).regions.robotOfCell);
-        QVERIFY(allocateOnly(large, onPieces).regions.robotOfCell != allocateOnly(large).regions.robotOfCell);
+        const Plan byCell = allocateOnly(large);
+        const std::size_t half = (byCell.cells.size() + 1) / 2;
+        const AzimuthTrendAllocator atTheLimit(0, 0.03, AzimuthTrendAllocator::defaultMostCellsGrownOneByOne,
+                                               half);
+        const AzimuthTrendAllocator belowTheLimit(
+            0, 0.03, AzimuthTrendAllocator::defaultMostCellsGrownOneByOne, half - 1);
+        QVERIFY(allocateOnly(large, atTheLimit).regions.robotOfCell != byCell.regions.robotOfCell);
+        QCOMPARE(allocateOnly(large, belowTheLimit).regions.robotOfCell, byCell.regions.robotOfCell);
+        const PlanningProblem alone = test::obstacleGridProblem(64, 1, 5);
+        QCOMPARE(allocateOnly(alone, onPieces).regions.robotOfCell, allocateOnly(alone).regions.robotOfCell);
     }
 
     // Starts that share a block cannot grow apart on blocks: the regions are grown cell by cell.

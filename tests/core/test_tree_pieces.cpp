@@ -1,4 +1,7 @@
 #include "core/allocation/TreePieces.hpp"
+#include "core/decomposition/NeighbourTopologyBuilder.hpp"
+#include "core/decomposition/QuadTreeBuilder.hpp"
+#include "core/decomposition/QuadTreeDecomposition.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -52,7 +55,6 @@ void checkPieces(const CellGraph& graph, const CellBlocks& pieces, const std::ve
         for (int other : pieces.adjacency.of(static_cast<int>(piece)))
             listed.insert({static_cast<int>(piece), other});
     QCOMPARE(listed, touching);
-    QVERIFY(pieces.everyBlockConnected);
     std::set<int> startPieces;
     for (int start : starts)
         QVERIFY(startPieces.insert(pieces.blockOfCell[static_cast<std::size_t>(start)]).second);
@@ -126,6 +128,23 @@ class TestTreePieces : public QObject {
         }
     }
 
+    // On a quadtree of several cell sizes the tree weighs time; the pieces are still linked, touch as said
+    // and keep starts apart.
+    void piecesOfCellsOfSeveralSizes() {
+        test::RandomMapSpec spec = test::multiCoverSpec(64, 6);
+        const PlanningProblem problem = test::randomProblem(spec);
+        const QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes,
+                                                      DecompositionOptions::from(problem.planner.parameters));
+        const CellGraph graph = cellGraphOfQuadTree(tree, NeighbourTopologyBuilder{}.build(tree));
+        QVERIFY(!graph.hasOneCellSize());
+        std::vector<int> starts;
+        for (const MapPoint& start : problem.starts)
+            starts.push_back(graph.cellAt(start));
+        const std::vector<CellBlocks> levels = treePieces(graph, starts, {6 * graph.cell(0).coverSeconds()});
+        checkPieces(graph, levels.front(), starts);
+        QVERIFY(levels.front().figures.size() < graph.size());
+    }
+
     // A piece cheaper than a cell is a cell; without a limit, every piece holds one start, or is a part of
     // the map that holds none.
     void limitsOfThePieceCost() {
@@ -138,6 +157,7 @@ class TestTreePieces : public QObject {
         std::set<int> partsWithStarts;
         for (int start : starts)
             partsWithStarts.insert(part[static_cast<std::size_t>(start)]);
+        QVERIFY(static_cast<std::size_t>(partCount) > partsWithStarts.size()); // a part without a start
         const std::size_t expected =
             starts.size() + static_cast<std::size_t>(partCount) - partsWithStarts.size();
         QCOMPARE(whole.figures.size(), expected);
