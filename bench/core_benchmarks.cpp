@@ -117,25 +117,25 @@ void uniformGridFreeTurns(benchmark::State& state, const std::string& planner) {
         planner, freeTurns);
 }
 
-// MCPP-MLCT's balance-for-turns trade: fewer_turns_slack of range(2) tenths of a percent.
-void uniformGridTurnSlack(benchmark::State& state) {
-    ParameterValues slack;
-    slack.set("fewer_turns_slack", static_cast<double>(state.range(2)) / 10.0);
+// MCPP-MLCT on the grid of range(0) cells a side with range(1) robots, the percent parameter `key` set to
+// range(2) tenths of a percent.
+void uniformGridWithPercent(benchmark::State& state, const std::string& key) {
+    ParameterValues percent;
+    percent.set(key, static_cast<double>(state.range(2)) / 10.0);
     runPlanner(
         state,
         test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
-        "mcpp-mlct", slack);
+        "mcpp-mlct", percent);
 }
 
-// MCPP-MLCT's regions grown on tree pieces of range(2) tenths of a percent of a robot's fair share (0: cell
-// by cell).
+// MCPP-MLCT's balance-for-turns trade.
+void uniformGridTurnSlack(benchmark::State& state) {
+    uniformGridWithPercent(state, "fewer_turns_slack");
+}
+
+// MCPP-MLCT's regions grown on tree pieces of a share of a robot's fair share (0: cell by cell).
 void uniformGridTreePieces(benchmark::State& state) {
-    ParameterValues share;
-    share.set("tree_piece_share", static_cast<double>(state.range(2)) / 10.0);
-    runPlanner(
-        state,
-        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
-        "mcpp-mlct", share);
+    uniformGridWithPercent(state, "tree_piece_share");
 }
 
 void multiCoverMapFreeTurns(benchmark::State& state) {
