@@ -946,10 +946,10 @@ RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph
     std::optional<RegionAllocation> division;
     std::vector<int> finestPieceOfCell;
     {
-        const std::vector<CellBlocks> levels = treePieces(graph, startCells, {pieceCost, pieceCost / 8.0});
+        std::vector<CellBlocks> levels = treePieces(graph, startCells, {pieceCost, pieceCost / 8.0});
         division = evenedOutOnPieces(levels, startCells, rebalanceIterations_, progress);
-        finestPieceOfCell = levels.back().blockOfCell;
-    }
+        finestPieceOfCell = std::move(levels.back().blockOfCell);
+    } // the pieces' figures and adjacency gone before the cells' allocation is made
     Allocation allocation(graph.adjacency(), cellFiguresOf(graph), startCells, progress);
     if (division && allocation.adopt(cellsTakeTheirBlocks(*division, finestPieceOfCell, startCells)))
         return evenedOut(allocation, graph, rebalanceIterations_, progress);

@@ -1,8 +1,7 @@
 #include "core/allocation/TreePieces.hpp"
 
 #include "core/coverage/RegionAdjacency.hpp"
-#include "core/coverage/SizeChangeConnectors.hpp"
-#include "core/coverage/TurnMinimisingTree.hpp"
+#include "core/coverage/SpanningTreeBuilder.hpp"
 
 #include <numeric>
 
@@ -111,12 +110,7 @@ std::vector<CellBlocks> treePieces(const CellGraph& graph, const std::vector<int
     std::vector<std::pair<int, int>> edges;
     {
         const RegionAdjacency adjacency(graph, cells, WholeGraphIndex{});
-        if (graph.hasOneCellSize()) {
-            edges = TurnMinimisingTree(adjacency, {}).edges();
-        } else {
-            const SizeChangeConnectors connectors(graph, cells, adjacency);
-            edges = TurnMinimisingTree(adjacency, {}, &connectors).edges();
-        }
+        edges = fewestTurnEdges(graph, cells, adjacency, !graph.hasOneCellSize(), 0);
     }
     const RootedForest forest = rootForest(cellCount, edges);
     std::vector<CellBlocks> levels;

@@ -91,17 +91,24 @@ std::optional<SpanningTree> SpanningTreeBuilder::treeOver(std::vector<int> cells
     return SpanningTree(std::move(cells), rootNode, *edges);
 }
 
+std::vector<std::pair<int, int>> fewestTurnEdges(const CellGraph& graph, const std::vector<int>& cells,
+                                                 const RegionAdjacency& adjacency, bool cellsDifferInSize,
+                                                 int plateauRounds) {
+    if (cellsDifferInSize) {
+        const SizeChangeConnectors connectors(graph, cells, adjacency);
+        return TurnMinimisingTree(adjacency, {}, &connectors).edges();
+    }
+    TurnMinimisingTree::Options options;
+    options.plateauRounds = plateauRounds;
+    return TurnMinimisingTree(adjacency, options).edges();
+}
+
 SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCell) const {
     const bool mixedSizes = cellsDifferInSize(cells);
     return *treeOver(std::move(cells), rootCell,
                      [&](const RegionAdjacency& adjacency, const std::vector<int>& regionCells) {
-                         if (mixedSizes) {
-                             const SizeChangeConnectors connectors(graph_, regionCells, adjacency);
-                             return std::optional(TurnMinimisingTree(adjacency, {}, &connectors).edges());
-                         }
-                         TurnMinimisingTree::Options options;
-                         options.plateauRounds = plateauRounds_;
-                         return std::optional(TurnMinimisingTree(adjacency, options).edges());
+                         return std::optional(
+                             fewestTurnEdges(graph_, regionCells, adjacency, mixedSizes, plateauRounds_));
                      });
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/coverage/RegionAdjacency.hpp"
 #include "core/coverage/SpanningTree.hpp"
 #include "core/model/CellGraph.hpp"
 
@@ -9,6 +10,14 @@
 namespace mcpp {
 
 enum class EdgeDirection { EastWest, NorthSouth };
+
+// The edges (node pairs of `adjacency`) of the tree fewestTurns builds over `cells`: a TurnMinimisingTree
+// whose swaps weigh time where the cells differ in size (SizeChangeConnectors), turns otherwise, then with
+// plateauRounds of its search. A forest where the cells are not connected.
+[[nodiscard]] std::vector<std::pair<int, int>> fewestTurnEdges(const CellGraph& graph,
+                                                               const std::vector<int>& cells,
+                                                               const RegionAdjacency& adjacency,
+                                                               bool cellsDifferInSize, int plateauRounds);
 
 // Spanning trees over a region of a cell graph, rooted at the start cell.
 class SpanningTreeBuilder {
