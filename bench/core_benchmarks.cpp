@@ -1,6 +1,7 @@
 // Benchmarks of the MCPP-MLCT pipeline. Run: build/release/bench/mcpp_core_benchmarks
 // Counters: ratio = makespan / lower bound, makespan_s, turn_time_s = time all robots lose turning (turn_s
-// auto by default: speed / 1 m/s2, here 1 s per 90 degrees), cells = active cells, peak_rss_mb = process
+// auto by default: speed / 1 m/s2, here 1 s per 90 degrees), border_km = length of the borders between
+// regions (how compact they are), cells = active cells, peak_rss_mb = process
 // peak memory so far. The *_free_turns cases plan with turn_s 0, as before turns were timed.
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/SortieLayer.hpp"
@@ -8,6 +9,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
+#include <algorithm>
 #include <benchmark/benchmark.h>
 #include <string>
 #include <sys/resource.h>
@@ -25,6 +27,24 @@ double peakResidentMegabytes() {
 // Three land covers (FOV 5, 10, 20 m) in patches, 5% obstacles; `size` bottom cells a side.
 PlanningProblem multiCover(int size, int robots, std::uint32_t seed) {
     return test::randomProblem(test::multiCoverSpec(size, robots, seed));
+}
+
+// Length of the borders between regions, each counted once (the map's edge not counted): how compact the
+// regions are, as a user sees them on the map.
+double regionBorderKilometres(const Plan& plan) {
+    const std::vector<int>& robotOf = plan.regions.robotOfCell;
+    if (robotOf.size() != plan.cells.size())
+        return 0.0;
+    double metres = 0.0;
+    for (int cell = 0; cell < static_cast<int>(plan.cells.size()); ++cell) {
+        const int robot = robotOf[static_cast<std::size_t>(cell)];
+        for (int other : plan.cells.neighbours(cell)) {
+            const int otherRobot = robotOf[static_cast<std::size_t>(other)];
+            if (other > cell && robot >= 0 && otherRobot >= 0 && otherRobot != robot)
+                metres += std::min(plan.cells.cell(cell).size, plan.cells.cell(other).size);
+        }
+    }
+    return metres / 1000.0;
 }
 
 void runPlanner(benchmark::State& state, PlanningProblem problem,
@@ -67,6 +87,7 @@ void runPlanner(benchmark::State& state, PlanningProblem problem,
             state.counters["ratio_before_connectors"] = plan.metrics.makespanSeconds / boundBefore;
     }
     state.counters["turns"] = turns;
+    state.counters["border_km"] = regionBorderKilometres(plan);
     state.counters["makespan_s"] = plan.metrics.makespanSeconds;
     state.counters["turn_time_s"] = turnSeconds;
     state.counters["cells"] = static_cast<double>(plan.cells.size());

@@ -915,11 +915,12 @@ ParameterSpec AzimuthTrendAllocator::rebalanceIterationsParameter() {
 }
 
 ParameterSpec AzimuthTrendAllocator::treePieceShareParameter() {
-    return realParameter("tree_piece_share", "Tree piece size", 3.0, 0.0, 50.0,
-                         "Regions are grown from pieces of one tree over the whole map that turns little, "
-                         "each this share of a robot's fair share, so that their borders cut few straight "
-                         "runs; 0 grows them as before, cell by cell. Maps of at most 50 000 cells a "
-                         "robot",
+    return realParameter("tree_piece_share", "Tree piece size", 0.0, 0.0, 50.0,
+                         "Above 0, regions are grown from pieces of one tree over the whole map that turns "
+                         "little, each this share of a robot's fair share (3 % works well), so that their "
+                         "borders cut few straight runs: fewer turns (0.4-8 % on the maps measured), but "
+                         "regions interlock along those runs. 0, the default, grows compact regions cell by "
+                         "cell. Maps of at most 50 000 cells a robot",
                          "%");
 }
 

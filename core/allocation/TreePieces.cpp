@@ -3,6 +3,9 @@
 #include "core/coverage/RegionAdjacency.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace mcpp {
@@ -57,10 +60,59 @@ RootedForest rootForest(std::size_t cellCount, const std::vector<std::pair<int, 
     return forest;
 }
 
-// The cells that head a piece: a subtree becomes a piece once it costs pieceCost, or where joining its
-// parent's would put two starts in one piece (worked bottom-up). A finer level sums its costs across the
-// coarser level's cuts and then cuts there too: respecting those cuts in the sums gave as few turns, but on
-// a 480 x 480 grid with 8 robots a division the evening out took 13 s over instead of 0.3 s.
+// The cells that head a piece: a subtree becomes a piece once it costs pieceCost or reaches the longest
+// side, or where joining its parent's would put two starts in one piece (worked bottom-up). A finer level
+// sums its costs across the coarser level's cuts and then cuts there too: respecting those cuts in the sums
+// gave as few turns, but on a 480 x 480 grid with 8 robots a division the evening out took 13 s over instead
+// of 0.3 s. A piece may reach this many times the side of a square of its cost. A turn-minimising tree over a
+// whole map runs straight across it, and uncut, its subtrees are strips: on the Zion sample, regions grown
+// from them interlocked in strips a few cells high and 5 km long (three times the border of compact regions).
+constexpr double longestPieceSideOverSquareSide = 2.0;
+
+// Extent on the bottom grid of each subtree summed so far (by the cell that heads it).
+struct SubtreeExtents {
+    std::vector<int> west, east, north, south;
+
+    explicit SubtreeExtents(const CellGraph& graph) {
+        const std::size_t cellCount = graph.size();
+        west.resize(cellCount);
+        east.resize(cellCount);
+        north.resize(cellCount);
+        south.resize(cellCount);
+        for (std::size_t at = 0; at < cellCount; ++at) {
+            const Cell& cell = graph.cell(static_cast<int>(at));
+            west[at] = cell.column;
+            east[at] = cell.column + cell.span;
+            north[at] = cell.row;
+            south[at] = cell.row + cell.span;
+        }
+    }
+    [[nodiscard]] int longestSide(std::size_t at) const {
+        return std::max(east[at] - west[at], south[at] - north[at]);
+    }
+    void add(std::size_t into, std::size_t from) {
+        west[into] = std::min(west[into], west[from]);
+        east[into] = std::max(east[into], east[from]);
+        north[into] = std::min(north[into], north[from]);
+        south[into] = std::max(south[into], south[from]);
+    }
+};
+
+// The side, in bottom cells, beyond which a subtree is cut off as a piece: longestPieceSideOverSquareSide
+// times the side of a square that costs pieceCost at the map's mean cost per bottom cell.
+double longestPieceSide(const CellGraph& graph, double pieceCost) {
+    double seconds = 0.0;
+    double bottomCells = 0.0;
+    for (std::size_t at = 0; at < graph.size(); ++at) {
+        const Cell& cell = graph.cell(static_cast<int>(at));
+        seconds += cell.coverSeconds();
+        bottomCells += static_cast<double>(cell.span) * cell.span;
+    }
+    if (seconds <= 0.0)
+        return std::numeric_limits<double>::infinity();
+    return longestPieceSideOverSquareSide * std::sqrt(pieceCost * bottomCells / seconds);
+}
+
 std::vector<char> pieceHeads(const CellGraph& graph, const RootedForest& forest,
                              const std::vector<int>& startCells, double pieceCost) {
     const std::size_t cellCount = graph.size();
@@ -68,6 +120,8 @@ std::vector<char> pieceHeads(const CellGraph& graph, const RootedForest& forest,
     std::vector<char> holdsStart(cellCount, 0);
     for (std::size_t cell = 0; cell < cellCount; ++cell)
         open[cell] = graph.cell(static_cast<int>(cell)).coverSeconds();
+    const double longestSide = longestPieceSide(graph, pieceCost);
+    SubtreeExtents extents(graph);
     for (int start : startCells)
         holdsStart[static_cast<std::size_t>(start)] = 1;
     std::vector<char> heads(cellCount, 0);
@@ -79,11 +133,13 @@ std::vector<char> pieceHeads(const CellGraph& graph, const RootedForest& forest,
             continue;
         }
         const auto parentIndex = static_cast<std::size_t>(parent);
-        if (open[cell] >= pieceCost || (holdsStart[cell] != 0 && holdsStart[parentIndex] != 0)) {
+        if (open[cell] >= pieceCost || extents.longestSide(cell) >= longestSide ||
+            (holdsStart[cell] != 0 && holdsStart[parentIndex] != 0)) {
             heads[cell] = 1;
             continue;
         }
         open[parentIndex] += open[cell];
+        extents.add(parentIndex, cell);
         holdsStart[parentIndex] = static_cast<char>(holdsStart[parentIndex] | holdsStart[cell]);
     }
     return heads;

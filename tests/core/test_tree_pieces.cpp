@@ -5,6 +5,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <algorithm>
 #include <set>
 #include <utility>
 
@@ -143,6 +144,34 @@ class TestTreePieces : public QObject {
         const std::vector<CellBlocks> levels = treePieces(graph, starts, {6 * graph.cell(0).coverSeconds()});
         checkPieces(graph, levels.front(), starts);
         QVERIFY(levels.front().figures.size() < graph.size());
+    }
+
+    // On open ground the whole map's tree runs straight across it: its pieces are still cut short of
+    // strips, no side longer than four times the side of a square of their cost (here 64 cells: 32 cells).
+    void piecesStayCompact() {
+        const int columns = 120;
+        const int rows = 30;
+        const PlanningProblem problem =
+            test::uniformProblem(columns, rows, 10.0, std::vector<bool>(columns * rows, false), {});
+        const CellGraph graph = test::cellPerPixelGraph(problem);
+        const std::vector<int> starts = spreadStarts(graph, 2);
+        const CellBlocks pieces = treePieces(graph, starts, {64 * graph.cell(0).coverSeconds()}).front();
+        checkPieces(graph, pieces, starts);
+        std::vector<int> west(pieces.figures.size(), columns), east(pieces.figures.size(), -1);
+        std::vector<int> north(pieces.figures.size(), rows), south(pieces.figures.size(), -1);
+        for (std::size_t cell = 0; cell < graph.size(); ++cell) {
+            const auto piece = static_cast<std::size_t>(pieces.blockOfCell[cell]);
+            const Cell& square = graph.cell(static_cast<int>(cell));
+            west[piece] = std::min(west[piece], square.column);
+            east[piece] = std::max(east[piece], square.column);
+            north[piece] = std::min(north[piece], square.row);
+            south[piece] = std::max(south[piece], square.row);
+        }
+        int longest = 0;
+        for (std::size_t piece = 0; piece < pieces.figures.size(); ++piece)
+            longest = std::max({longest, east[piece] - west[piece] + 1, south[piece] - north[piece] + 1});
+        QVERIFY2(longest <= 32, qPrintable(QString::number(longest)));
+        QVERIFY(pieces.figures.size() < graph.size() / 16); // still pieces of many cells
     }
 
     // A piece cheaper than a cell is a cell; without a limit, every piece holds one start, or is a part of
