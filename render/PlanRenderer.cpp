@@ -419,6 +419,12 @@ void PlanRenderer::paintMap(QPainter& painter, const QTransform& worldToDevice,
     if (layers_.landCover)
         paintLandCover(painter, worldToDevice, deviceArea);
     if (plan_ != nullptr) {
+        // Cells along the raster's east and south edges may reach past it (a raster of an odd number of
+        // pixels under cells of two): what lies there is no map, so the plan is drawn within the raster.
+        if (grid_ != nullptr)
+            painter.setClipRect(
+                deviceRectOf(worldToDevice, grid_->originX, grid_->minY(), grid_->maxX(), grid_->originY),
+                painter.hasClipping() ? Qt::IntersectClip : Qt::ReplaceClip);
         if (planStale_)
             painter.setOpacity(0.45);
         // A detection plan shows what its passes see where other plans tint their regions.

@@ -103,6 +103,40 @@ Plan twoCellPlan() {
     return plan;
 }
 
+// Three columns and two rows of 80 m cells from (1000, 5000), all robot 0's: over the 200 x 100 m raster
+// of twoClassGrid they reach 40 m past its east edge and 60 m past its south edge.
+Plan overhangingPlan() {
+    Plan plan;
+    GridFrame frame;
+    frame.originX = 1000.0;
+    frame.originY = 5000.0;
+    frame.bottomCellSize = 80.0;
+    frame.columns = 3;
+    frame.rows = 2;
+    std::vector<Cell> cells;
+    std::vector<int> offsets{0};
+    std::vector<int> neighbours;
+    for (int row = 0; row < 2; ++row)
+        for (int column = 0; column < 3; ++column) {
+            Cell cell;
+            cell.column = column;
+            cell.row = row;
+            cell.minX = 1000.0 + 80.0 * column;
+            cell.minY = 5000.0 - 80.0 * (row + 1);
+            cell.size = 80.0;
+            cell.speedMetresPerSecond = 1.0;
+            cells.push_back(cell);
+            for (const auto& [dc, dr] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}})
+                if (column + dc >= 0 && column + dc < 3 && row + dr >= 0 && row + dr < 2)
+                    neighbours.push_back((row + dr) * 3 + column + dc);
+            offsets.push_back(static_cast<int>(neighbours.size()));
+        }
+    plan.cells =
+        CellGraph(frame, std::move(cells), NeighbourTopology(std::move(offsets), std::move(neighbours)));
+    plan.regions.robotOfCell.assign(6, 0);
+    return plan;
+}
+
 } // namespace
 
 class TestPlanRenderer : public QObject {
@@ -273,6 +307,33 @@ class TestPlanRenderer : public QObject {
             sawHatch = pixel.red() > pixel.green() + 40 && pixel.red() > pixel.blue() + 40;
         }
         QVERIFY(sawHatch);
+    }
+
+    // Cells along the raster's east and south edges may reach past it (odd rasters under cells of two
+    // pixels): their tint, outlines and borders stop at the raster's edge, where the canvas shows no map.
+    void drawsThePlanWithinTheRaster() {
+        const Plan plan = overhangingPlan();
+        const ClassGrid grid = twoClassGrid(); // 1000-1200 x 4900-5000
+        const ClassTable classes = twoClassTable();
+        render::PlanRenderer renderer;
+        renderer.setMap(&grid, &classes);
+        renderer.setPlan(&plan);
+        QImage image(500, 400, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        // 2 pixels a metre: x 1000-1250 on 0-500, y 5000-4800 on 0-400.
+        const QTransform worldToDevice(2.0, 0.0, 0.0, -2.0, -2000.0, 10000.0);
+        {
+            QPainter painter(&image);
+            renderer.paint(painter, worldToDevice, QRectF(0, 0, 500, 400));
+        }
+        QVERIFY(!near(image.pixelColor(100, 100), QColor::fromRgb(kMeadow))); // tinted on the raster
+        for (int x = 3; x < 500; x += 7)
+            for (int y = 3; y < 400; y += 7) {
+                if (x < 400 && y < 200)
+                    continue; // on the raster
+                QVERIFY2(image.pixelColor(x, y) == QColor(Qt::white),
+                         qPrintable(QString("%1, %2: %3").arg(x).arg(y).arg(image.pixelColor(x, y).name())));
+            }
     }
 
     // In a plan simulated over time, the cells a robot took over from another are hatched in its colour;
