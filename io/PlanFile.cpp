@@ -22,7 +22,9 @@ namespace {
 using internal::CompressedReader;
 using internal::CompressedWriter;
 
-constexpr const char* formatLine = "MCPP-PLAN 3";
+constexpr const char* formatLine = "MCPP-PLAN 4";
+// Read as well: the same but for the paths' counts of walked waypoints (none had its straight runs merged).
+constexpr const char* formatLineWithoutWalkedCounts = "MCPP-PLAN 3";
 constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
 
 // Size and time of last change of a file: a different file at the same path changes them. Empty when they
@@ -278,11 +280,14 @@ void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths, con
         out.put(path.turns);
         out.put(path.repeatedSubCellVisits);
         out.put(static_cast<std::uint8_t>(path.closed));
+        out.put(static_cast<std::uint64_t>(path.walkedWaypoints));
         putWaypoints(out, path.waypoints, graph);
+        if (path.runsMerged())
+            out.putAll(std::vector<std::uint8_t>(path.runFollows.begin(), path.runFollows.end()));
     }
 }
 
-std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph) {
+std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph, bool withWalkedCounts) {
     std::vector<CoveragePath> paths(in.getCount(54));
     if (paths.size() > mostRobots) // more than region outlines can number
         throw CompressedReader::DamagedData("more robots than one plan takes");
@@ -295,7 +300,15 @@ std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph)
         path.turns = in.get<int>();
         path.repeatedSubCellVisits = in.get<int>();
         path.closed = in.get<std::uint8_t>() != 0;
+        if (withWalkedCounts)
+            path.walkedWaypoints = static_cast<std::size_t>(in.get<std::uint64_t>());
         path.waypoints = getWaypoints(in, graph);
+        if (path.runsMerged()) {
+            const std::vector<std::uint8_t> runFollows = in.getAll<std::uint8_t>();
+            if (path.walkedWaypoints < path.waypoints.size() || runFollows.size() != path.waypoints.size())
+                throw CompressedReader::DamagedData("a path whose merged runs do not add up");
+            path.runFollows.assign(runFollows.begin(), runFollows.end());
+        }
         if (path.robot < 0 || static_cast<std::size_t>(path.robot) >= paths.size())
             throw CompressedReader::DamagedData("a path of no robot");
     }
@@ -384,7 +397,7 @@ void checkRegions(const RegionAllocation& regions, std::size_t cells, std::size_
             throw CompressedReader::DamagedData("a start in no cell");
 }
 
-Plan readPlan(CompressedReader& in) {
+Plan readPlan(CompressedReader& in, bool withWalkedCounts) {
     Plan plan;
     plan.planner = in.getString();
     plan.parameters = getParameters(in);
@@ -392,7 +405,7 @@ Plan readPlan(CompressedReader& in) {
     plan.regions.robotOfCell = in.getAll<int>();
     plan.regions.startCell = in.getAll<int>();
     plan.regions.costSeconds = in.getAll<double>();
-    plan.paths = getPaths(in, plan.cells);
+    plan.paths = getPaths(in, plan.cells, withWalkedCounts);
     checkRegions(plan.regions, plan.cells.size(), plan.paths.size());
     plan.metrics = getMetrics(in);
     for (const RobotMetrics& robot : plan.metrics.robots)
@@ -472,7 +485,7 @@ Result<std::optional<Plan>> loadPlanFile(const std::string& path, const std::str
     std::string savedFingerprint;
     std::getline(file, format);
     std::getline(file, savedFingerprint);
-    if (format != formatLine)
+    if (format != formatLine && format != formatLineWithoutWalkedCounts)
         return Loaded::failure(path + ": not a plan file of this version of mcpp (first line \"" +
                                format.substr(0, 40) + "\")");
     if (savedFingerprint != fingerprint)
@@ -484,16 +497,16 @@ Result<std::optional<Plan>> loadPlanFile(const std::string& path, const std::str
     file.seekg(start);
     if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
         return Loaded::failure(path + ": cannot read the saved plan");
-    auto plan = parsePlanBody(bytes, path);
+    auto plan = parsePlanBody(bytes, path, format == formatLine);
     if (!plan)
         return Loaded::failure(plan.error());
     return std::optional<Plan>(std::move(plan.value()));
 }
 
-Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path) {
+Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path, bool withWalkedCounts) {
     try {
         CompressedReader in(compressed);
-        return readPlan(in);
+        return readPlan(in, withWalkedCounts);
     } catch (const CompressedReader::DamagedData& damage) {
         return Result<Plan>::failure(path + ": the saved plan is damaged (" + damage.what() + ")");
     } catch (const std::bad_alloc&) {

@@ -38,7 +38,9 @@ namespace mcpp::io {
                                                        const std::string& fingerprint);
 
 // The plan from the bytes after a plan file's two header lines (for readers of other sources and the fuzzer);
-// `path` names the source in errors.
-[[nodiscard]] Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path);
+// `path` names the source in errors. withWalkedCounts: false for the body of a file of the format before
+// (MCPP-PLAN 3), whose paths hold every waypoint they walked.
+[[nodiscard]] Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path,
+                                         bool withWalkedCounts = true);
 
 } // namespace mcpp::io

@@ -376,7 +376,7 @@ void PlanRenderer::preparePaths() {
         if (path.waypoints.size() < 2)
             continue;
         length += lengthOf(path);
-        steps += path.waypoints.size() - 1;
+        steps += std::max(path.waypoints.size(), path.walkedWaypoints) - 1; // the walk's, runs merged or not
         const RobotSorties* sorties = sortiesOfRobot(*plan_, path.robot);
         if (sorties == nullptr || sorties->sorties.size() < 2) {
             addPathLine(path, false);

@@ -293,6 +293,8 @@ double pathLengthMetres(const std::vector<Waypoint>& waypoints) {
 }
 
 void measurePath(CoveragePath& path, const CellGraph& graph) {
+    if (path.runsMerged())
+        return; // measured before its straight runs were merged, from every waypoint
     // Length and turns in one pass: the shape adds the steps' lengths as pathLengthMetres does.
     PathShape shape;
     for (const Waypoint& waypoint : path.waypoints)

@@ -112,7 +112,7 @@ struct Direction {
 
 // Fills length, time (pauses included), turns and repeated visits from the waypoints. Each
 // segment is travelled half at the speed of the waypoint it leaves and half at the speed of the one it
-// reaches.
+// reaches. A path whose straight runs were merged keeps the measures it had before.
 void measurePath(CoveragePath& path, const CellGraph& graph);
 // The length of the line through the waypoints, as measurePath measures it.
 [[nodiscard]] double pathLengthMetres(const std::vector<Waypoint>& waypoints);

@@ -2,6 +2,7 @@
 
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
+#include "core/coverage/StraightRunMerging.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/model/ParallelFor.hpp"
 
@@ -189,7 +190,12 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
         planned.tree = SpanningTree(); // freed once walked: all trees and all paths are never held together
         // The walk already begins (and a closed one ends) at the start: pathFromWalk moves no waypoint.
         paths[robot] = pathFromWalk(static_cast<int>(robot), starts[robot], std::move(walk), closedTour_);
-        timePath(paths[robot], graph);
+        if (graph.size() >= cellsForMergedRuns_) {
+            measurePath(paths[robot], graph);
+            mergeStraightRuns(paths[robot], graph); // before the next robot's walk takes memory
+        } else {
+            timePath(paths[robot], graph);
+        }
         const std::lock_guard lock(progressMutex);
         progress.report("waypoints", static_cast<double>(++finished) / static_cast<double>(paths.size()));
     });

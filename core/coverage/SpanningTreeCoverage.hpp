@@ -5,6 +5,7 @@
 #include "core/coverage/SpanningTree.hpp"
 #include "core/parameters/ParameterSpec.hpp"
 
+#include <limits>
 #include <utility>
 
 namespace mcpp {
@@ -14,8 +15,16 @@ namespace mcpp {
 // the builder's candidate trees (the turn-minimising one first) and keeps the quickest walk.
 class SpanningTreeCoverage final : public CoveragePathPlanner {
   public:
+    // Where a planner's paths may have their straight runs merged (mergeStraightRuns): on maps of this
+    // many cells or more. On the 69 M-cell tile every waypoint of all paths, held at once, took 6.6 GB.
+    static constexpr std::size_t fewestCellsForMergedRuns = 4'000'000;
+    static constexpr std::size_t neverMergeRuns = std::numeric_limits<std::size_t>::max();
+
     // closedTour: tours end where they start; otherwise paths stop at the last sub-cell.
-    explicit SpanningTreeCoverage(bool closedTour = true) : closedTour_(closedTour) {}
+    // cellsForMergedRuns: from how many cells on walkTrees merges straight runs; by default never, as
+    // planners that follow their robots waypoint by waypoint (MDSTC) need them all.
+    explicit SpanningTreeCoverage(bool closedTour = true, std::size_t cellsForMergedRuns = neverMergeRuns)
+        : closedTour_(closedTour), cellsForMergedRuns_(cellsForMergedRuns) {}
 
     [[nodiscard]] static ParameterSpec closedTourParameter();
 
@@ -52,7 +61,8 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                       const std::vector<MapPoint>& starts,
                                                       const ProgressReporter& progress, bool timed) const;
     // The paths round the trees, each tree freed once walked (progress reported as "waypoints"). Timed only
-    // (timePath): a planner's metrics stage measures every path once, at the end.
+    // (timePath): a planner's metrics stage measures every path once, at the end. On maps of
+    // cellsForMergedRuns cells or more each path is measured as walked and its straight runs merged.
     [[nodiscard]] std::vector<CoveragePath> walkTrees(const CellGraph& graph, std::vector<RegionTree> trees,
                                                       const std::vector<MapPoint>& starts,
                                                       const ProgressReporter& progress) const;
@@ -72,6 +82,7 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                            const std::vector<const RegionTree*>& kept) const;
 
     bool closedTour_;
+    std::size_t cellsForMergedRuns_;
 };
 
 // Whether the trees' longest walk is shorter than the other trees', beyond rounding.

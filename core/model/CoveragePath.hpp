@@ -37,6 +37,14 @@ struct CoveragePath {
     // The part of timeSeconds that steps between cells of different sizes take beyond their cells' travel
     // (connectorSeconds in PathMeasurement).
     double connectorSeconds = 0.0;
+    // 0 while `waypoints` holds every sub-cell centre the robot passes. On large plans the waypoints along
+    // straight runs are merged into the runs' ends once the path is measured (mergeStraightRuns), and this
+    // is how many waypoints the path had: its measures are those of all of them.
+    std::size_t walkedWaypoints = 0;
+    // Once runs are merged, by waypoint: whether waypoints were left out between it and the next.
+    std::vector<bool> runFollows;
+
+    [[nodiscard]] bool runsMerged() const { return walkedWaypoints > 0; }
 };
 
 } // namespace mcpp

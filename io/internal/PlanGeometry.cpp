@@ -1,5 +1,6 @@
 #include "io/internal/PlanGeometry.hpp"
 
+#include "core/coverage/StraightRunMerging.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionLabels.hpp"
@@ -44,11 +45,12 @@ std::unique_ptr<OGRPolygon> polygonOf(const OutlinePolygon& outline, const Label
     return polygon;
 }
 
-PathFeature pathFeature(const CoveragePath& path, double metresPerUnit, bool densePaths) {
+PathFeature pathFeature(const CoveragePath& path, const CellGraph& cells, double metresPerUnit,
+                        bool densePaths) {
     PathFeature feature;
     feature.robot = path.robot;
     auto line = std::make_unique<OGRLineString>();
-    const std::vector<Waypoint> points = densePaths ? path.waypoints : turningPoints(path);
+    const std::vector<Waypoint> points = densePaths ? walkedWaypoints(path, cells) : turningPoints(path);
     line->setNumPoints(static_cast<int>(points.size()), FALSE);
     for (std::size_t i = 0; i < points.size(); ++i)
         line->setPoint(static_cast<int>(i), points[i].x / metresPerUnit, points[i].y / metresPerUnit);
@@ -183,7 +185,7 @@ Result<PlanFeatures> buildPlanFeatures(const ExportContext& context) {
     }
     for (const CoveragePath& path : plan.paths) {
         if (!path.waypoints.empty())
-            features.paths.push_back(pathFeature(path, metresPerUnit, densePaths));
+            features.paths.push_back(pathFeature(path, plan.cells, metresPerUnit, densePaths));
     }
     addStarts(plan, metresPerUnit, features);
     addTakenOver(plan, metresPerUnit, features);

@@ -1,7 +1,7 @@
 // libFuzzer harness: the plan saved beside a mission, read back from any bytes; never a crash, never an
 // allocation beyond what the bytes can hold. The first byte chooses what the rest is: the compressed body as
 // it is on disk (mostly refused by zlib's checksum), or the plan's raw fields, compressed here, so that
-// every structural check of the reader is reached.
+// every structural check of the reader is reached; its second bit, which format (MCPP-PLAN 4 or 3).
 #include "io/PlanFile.hpp"
 
 #include <QByteArray>
@@ -28,7 +28,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool raw = (data[0] & 1) != 0;
     const std::string body = raw ? compressedChunk(data + 1, size - 1)
                                  : std::string(reinterpret_cast<const char*>(data) + 1, size - 1);
-    auto plan = mcpp::io::parsePlanBody(body, "fuzz.mcpp-plan");
+    const bool beforeWalkedCounts = (data[0] & 2) != 0; // the body of a file of the format before
+    auto plan = mcpp::io::parsePlanBody(body, "fuzz.mcpp-plan", !beforeWalkedCounts);
     if (plan.ok() && plan.value().cells.size() > 0) {
         // What the window does with a restored plan first: find cells.
         const mcpp::Cell& cell = plan.value().cells.cell(0);

@@ -2,6 +2,7 @@
 // coordinates within 1e-7 degrees of the plan, CRS of the GeoPackage.
 
 #include "PlanFixture.hpp"
+#include "core/coverage/StraightRunMerging.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "io/PlanExport.hpp"
@@ -545,6 +546,33 @@ class PlanExportTest : public QObject {
                 plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)];
             QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(), coverage.waypoints, reference_) <
                     1e-7);
+            ++paths;
+        }
+        QCOMPARE(paths, 2);
+    }
+
+    // A path whose straight runs were merged (large plans) still exports every sub-cell centre on request.
+    void densePathsOfMergedRuns() {
+        const Plan whole = plan_;
+        for (CoveragePath& coverage : plan_.paths)
+            mergeStraightRuns(coverage, plan_.cells);
+        QVERIFY(plan_.paths.front().runsMerged());
+        const std::string path = file("dense-merged.geojson");
+        ExportSettings dense;
+        dense.densePaths = true;
+        const Status written = writePlanGeoJson(context(dense), path);
+        plan_ = whole;
+        QVERIFY(written.ok());
+        Dataset dataset = openVector(path);
+        int paths = 0;
+        for (auto& feature : *dataset->GetLayer(0)) {
+            if (std::string(feature->GetFieldAsString("kind")) != "path")
+                continue;
+            const CoveragePath& coverage =
+                whole.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)];
+            const OGRLineString& line = *feature->GetGeometryRef()->toLineString();
+            QCOMPARE(static_cast<std::size_t>(line.getNumPoints()), coverage.waypoints.size());
+            QVERIFY(lineError(line, coverage.waypoints, reference_) < 1e-7);
             ++paths;
         }
         QCOMPARE(paths, 2);

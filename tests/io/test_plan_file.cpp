@@ -1,5 +1,6 @@
 // A plan saved beside its mission comes back whole, only for the inputs it was planned from; a damaged
 // file is refused with its name and never crashes the reader.
+#include "core/coverage/StraightRunMerging.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "io/Mission.hpp"
 #include "io/PlanFile.hpp"
@@ -112,6 +113,43 @@ class TestPlanFile : public QObject {
         // Saving what was read gives the same bytes: nothing is lost or reordered.
         QVERIFY(io::savePlanFile(back, "inputs-a", file("again.mcpp-plan")).ok());
         QCOMPARE(bytesOf(file("again.mcpp-plan")), bytesOf(path));
+    }
+
+    // A large plan's paths with their straight runs merged come back merged, with the count of waypoints
+    // they walked, so that they are neither measured again (their repeated visits counted from what is
+    // left) nor drawn as if each step were a run.
+    void mergedPathsComeBackMerged() {
+        Plan plan = plannedMap();
+        mergeStraightRuns(plan.paths[1], plan.cells);
+        QVERIFY(plan.paths[1].runsMerged());
+        const std::string path = file("merged.mcpp-plan");
+        QVERIFY(io::savePlanFile(plan, "inputs-m", path).ok());
+        auto loaded = io::loadPlanFile(path, "inputs-m");
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        const Plan& back = *loaded.value();
+        for (std::size_t robot = 0; robot < plan.paths.size(); ++robot) {
+            QCOMPARE(back.paths[robot].walkedWaypoints, plan.paths[robot].walkedWaypoints);
+            QVERIFY(back.paths[robot].runFollows == plan.paths[robot].runFollows);
+            QVERIFY(sameWaypoints(back.paths[robot].waypoints, plan.paths[robot].waypoints));
+        }
+        QVERIFY(!back.paths[0].runsMerged());
+    }
+
+    // A file of the format before (MCPP-PLAN 3: no counts of walked waypoints) is still read.
+    void filesOfTheFormatBeforeAreRead() {
+        const std::string seed =
+            bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body"));
+        QVERIFY(seed.size() > 1);
+        const auto before = io::parsePlanBody(std::string_view(seed).substr(1), "seed", false);
+        QVERIFY2(before.ok(), before.ok() ? "" : before.error().c_str());
+        QVERIFY(!before.value().paths.empty());
+        for (const CoveragePath& path : before.value().paths)
+            QVERIFY(!path.runsMerged());
+        writeBytes(file("format3.mcpp-plan"), "MCPP-PLAN 3\ninputs-3\n" + seed.substr(1));
+        auto loaded = io::loadPlanFile(file("format3.mcpp-plan"), "inputs-3");
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        QVERIFY(loaded.value().has_value());
+        QCOMPARE(loaded.value()->paths.size(), before.value().paths.size());
     }
 
     void waypointsOffTheGridComeBackAsTheyWere() {
