@@ -1,3 +1,4 @@
+#include "core/coverage/StraightRunMerging.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
@@ -459,8 +460,11 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
     // GPX wants every <wpt> before the first <rte>: starts first, then the routes.
     for (int pass = 0; pass < 2; ++pass) {
         for (const CoveragePath& coverage : context.plan.paths) {
+            // Collinear points kept on request: every waypoint walked, runs merged or not.
             const std::vector<Waypoint> waypoints =
-                exportedWaypoints(coverage, context.plan.cells, context.settings.mergeCollinear);
+                context.settings.mergeCollinear || !coverage.runsMerged()
+                    ? exportedWaypoints(coverage, context.plan.cells, context.settings.mergeCollinear)
+                    : walkedWaypoints(coverage, context.plan.cells);
             if (waypoints.empty())
                 continue;
             const std::string name = context.robotName(coverage.robot);

@@ -1,4 +1,5 @@
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/StraightRunMerging.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
@@ -64,8 +65,13 @@ ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context,
         entry = slot;
     }
     std::call_once(entry->made, [&] {
-        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot))
-            entry->mission = autopilotMission(*coverage, context.vehicle(robot), context.settings);
+        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot)) {
+            // Collinear points kept on request: every waypoint walked, runs merged or not.
+            entry->mission = context.settings.mergeCollinear || !coverage->runsMerged()
+                                 ? autopilotMission(*coverage, context.vehicle(robot), context.settings)
+                                 : autopilotMission(withEveryWaypoint(*coverage, context.plan.cells),
+                                                    context.vehicle(robot), context.settings);
+        }
     });
     return *entry; // the cache keeps it as long as the context
 }
@@ -131,6 +137,12 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
     if (coverage == nullptr)
         return Result<Points>::failure(path + ": the plan has no path for robot " +
                                        std::to_string(robotNumber(robot)));
+    // Collinear points kept on request: every waypoint walked, runs merged or not.
+    CoveragePath whole;
+    if (!context.settings.mergeCollinear && coverage->runsMerged()) {
+        whole = withEveryWaypoint(*coverage, context.plan.cells);
+        coverage = &whole;
+    }
     if (coverage->waypoints.empty())
         return Result<Points>::failure(path + ": robot " + std::to_string(robotNumber(robot)) +
                                        " has no waypoints");

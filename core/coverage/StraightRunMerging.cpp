@@ -16,16 +16,20 @@ bool isSubCellStep(const Waypoint& from, const Waypoint& to, double cellSize) {
     return std::abs(length - cellSize / 2.0) <= 1e-9 * cellSize;
 }
 
-// Whether the walk goes straight on through waypoint b, in steps of one sub-cell, with one speed and one
-// cell size from a through b to c: b can be left out and put back from a and c.
+// Whether the walk goes straight on through waypoint b, in steps of one sub-cell, with one speed, one
+// cell size and one land cover from a through b to c: b can be left out and put back from a and c.
 bool insideStraightRun(const Waypoint& a, const Waypoint& b, const Waypoint& c, const CellGraph& graph) {
     if (!inGraph(a, graph) || !inGraph(b, graph) || !inGraph(c, graph))
         return false;
     if (a.speedMetresPerSecond != b.speedMetresPerSecond || b.speedMetresPerSecond != c.speedMetresPerSecond)
         return false;
-    const double size = graph.cell(b.cell).size;
-    if (graph.cell(a.cell).size != size || graph.cell(c.cell).size != size)
-        return false;
+    const Cell& middle = graph.cell(b.cell);
+    for (const Waypoint* side : {&a, &c}) {
+        const Cell& cell = graph.cell(side->cell);
+        if (cell.size != middle.size || cell.classValue != middle.classValue)
+            return false; // a change of size or of land cover, which exports show
+    }
+    const double size = middle.size;
     const double inX = b.x - a.x, inY = b.y - a.y, outX = c.x - b.x, outY = c.y - b.y;
     return inX * outY - inY * outX == 0.0 && inX * outX + inY * outY > 0.0 && isSubCellStep(a, b, size) &&
            isSubCellStep(b, c, size);
@@ -87,6 +91,16 @@ std::vector<Waypoint> walkedWaypoints(const CoveragePath& path, const CellGraph&
         }
     }
     return walked;
+}
+
+CoveragePath withEveryWaypoint(const CoveragePath& path, const CellGraph& graph) {
+    CoveragePath whole = path;
+    if (!path.runsMerged())
+        return whole;
+    whole.waypoints = walkedWaypoints(path, graph);
+    whole.walkedWaypoints = 0;
+    whole.runFollows.clear();
+    return whole;
 }
 
 } // namespace mcpp

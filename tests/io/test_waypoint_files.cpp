@@ -1,8 +1,11 @@
 // Per-robot waypoint files compared with real files from QGroundControl, MAVSDK and ArduPilot.
 
 #include "PlanFixture.hpp"
+#include "core/coverage/StraightRunMerging.hpp"
+#include "core/planners/MlctPlanner.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
+#include "tests/support/SyntheticMaps.hpp"
 #include "tests/support/TestData.hpp"
 
 #include <QFile>
@@ -107,6 +110,71 @@ class WaypointFilesTest : public QObject {
         // A speed change keeps its point even on a straight line.
         const std::vector<Waypoint> second = exportedWaypoints(plan_.paths[1], plan_.cells, true);
         QCOMPARE(second.size(), plan_.paths[1].waypoints.size());
+    }
+
+    // Asked to keep collinear points, the files of a path whose straight runs were merged (large plans)
+    // hold every waypoint it walked, as those of the whole path do.
+    void collinearPointsOfMergedRunsOnRequest() {
+        ExportSettings settings;
+        settings.mergeCollinear = false;
+        const Plan whole = plan_;
+        std::string header;
+        QVERIFY(writeWaypointList(context(settings), 0, file("whole.waypoints")).ok());
+        QVERIFY(writeWaypointCsv(context(settings), 0, file("whole.csv")).ok());
+        for (CoveragePath& path : plan_.paths)
+            mergeStraightRuns(path, plan_.cells);
+        const bool merged = plan_.paths[0].runsMerged();
+        const bool listWritten = writeWaypointList(context(settings), 0, file("merged.waypoints")).ok();
+        const bool csvWritten = writeWaypointCsv(context(settings), 0, file("merged.csv")).ok();
+        plan_ = whole;
+        QVERIFY(merged && listWritten && csvWritten);
+        const auto wholeRows = tabRows(file("whole.waypoints"), header);
+        const auto mergedRows = tabRows(file("merged.waypoints"), header);
+        QCOMPARE(mergedRows.size(), wholeRows.size());
+        for (std::size_t row = 0; row < wholeRows.size(); ++row)
+            for (std::size_t field : {8U, 9U}) // latitude, longitude
+                QVERIFY(std::abs(std::stod(mergedRows[row][field]) - std::stod(wholeRows[row][field])) <
+                        1e-9);
+        const auto lines = [](const std::string& path) {
+            std::ifstream csv(path);
+            std::size_t count = 0;
+            for (std::string line; std::getline(csv, line);)
+                ++count;
+            return count;
+        };
+        QCOMPARE(lines(file("merged.csv")), lines(file("whole.csv")));
+        QCOMPARE(lines(file("whole.csv")), plan_.paths[0].waypoints.size() + 1);
+    }
+
+    // What the files keep by default (turning points, speed and land-cover changes) is the same whether
+    // the path's straight runs were merged or not: on a planned map of three land covers, two of them
+    // alike but for their names.
+    void mergedRunsExportTheSamePoints() {
+        test::RandomMapSpec spec;
+        spec.columns = 40;
+        spec.rows = 30;
+        spec.landCovers = 3;
+        spec.obstacleFraction = 0.05;
+        spec.robots = 3;
+        spec.seed = 5;
+        PlanningProblem problem = test::randomProblem(spec);
+        // Wood as fast as grass and seen as far: a change of land cover with no change of speed or size.
+        problem.classes.set({2, "wood", 0x705030U, 2.0, 10.0, true});
+        problem.classes.set({1, "grass", 0x404040U, 2.0, 10.0, true});
+        const Plan planned = MlctPlanner{}.plan(problem, {});
+        for (const CoveragePath& path : planned.paths) {
+            CoveragePath merged = path;
+            mergeStraightRuns(merged, planned.cells);
+            QVERIFY(merged.waypoints.size() < path.waypoints.size());
+            const std::vector<Waypoint> expected = exportedWaypoints(path, planned.cells, true);
+            const std::vector<Waypoint> actual = exportedWaypoints(merged, planned.cells, true);
+            QCOMPARE(actual.size(), expected.size());
+            for (std::size_t i = 0; i < expected.size(); ++i)
+                QVERIFY(actual[i].x == expected[i].x && actual[i].y == expected[i].y &&
+                        actual[i].cell == expected[i].cell &&
+                        actual[i].speedMetresPerSecond == expected[i].speedMetresPerSecond);
+            QCOMPARE(turningPoints(merged).size(), turningPoints(path).size());
+        }
     }
 
     void qgroundControlPlanMatchesTheSampleStructure() {
