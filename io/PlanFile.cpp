@@ -1,6 +1,7 @@
 #include "io/PlanFile.hpp"
 
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/StraightRunMerging.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -305,7 +306,10 @@ std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph,
         path.waypoints = getWaypoints(in, graph);
         if (path.runsMerged()) {
             const std::vector<std::uint8_t> runFollows = in.getAll<std::uint8_t>();
-            if (path.walkedWaypoints < path.waypoints.size() || runFollows.size() != path.waypoints.size())
+            const bool walkFits =
+                path.walkedWaypoints >= path.waypoints.size() &&
+                path.walkedWaypoints <= path.waypoints.size() + mostWalkedWaypointsPerCell * graph.size();
+            if (!walkFits || runFollows.size() != path.waypoints.size())
                 throw CompressedReader::DamagedData("a path whose merged runs do not add up");
             path.runFollows.assign(runFollows.begin(), runFollows.end());
         }

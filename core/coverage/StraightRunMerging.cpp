@@ -1,5 +1,6 @@
 #include "core/coverage/StraightRunMerging.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mcpp {
@@ -35,6 +36,45 @@ bool insideStraightRun(const Waypoint& a, const Waypoint& b, const Waypoint& c, 
            isSubCellStep(b, c, size);
 }
 
+// The cell holding `point`: `near` when it does (most steps of a run stay in their cell or the next).
+int cellHolding(const CellGraph& graph, MapPoint point, int near) {
+    const Cell& cell = graph.cell(near);
+    if (point.x >= cell.minX && point.x < cell.maxX() && point.y >= cell.minY && point.y < cell.maxY())
+        return near;
+    return graph.cellAt(point);
+}
+
+// The waypoints a merged run from `from` to `to` left out, at most `room` of them: evenly spaced at half the
+// cells' side, each put on its sub-cell's centre as the walk put it. Nothing when the run does not divide
+// into such steps or would exceed `room` (a damaged plan file).
+void putBackRun(const Waypoint& from, const Waypoint& to, const CellGraph& graph, std::size_t room,
+                std::vector<Waypoint>& walked) {
+    const double step = graph.cell(from.cell).size / 2.0;
+    const double length = std::hypot(to.x - from.x, to.y - from.y);
+    const double steps = std::round(length / step);
+    if (steps < 2.0 || steps - 1.0 > static_cast<double>(room) ||
+        std::abs(steps * step - length) > 1e-9 * length)
+        return;
+    int cell = from.cell;
+    for (double k = 1.0; k < steps; k += 1.0) {
+        Waypoint between = from;
+        const MapPoint point{from.x + (to.x - from.x) * (k / steps), from.y + (to.y - from.y) * (k / steps)};
+        const int holding = cellHolding(graph, point, cell);
+        if (holding >= 0) {
+            cell = holding;
+            const Cell& square = graph.cell(cell);
+            const MapPoint centre = square.subCellCentre(square.subCellAt(point));
+            between.cell = cell;
+            between.x = centre.x;
+            between.y = centre.y;
+        } else {
+            between.x = point.x;
+            between.y = point.y;
+        }
+        walked.push_back(between);
+    }
+}
+
 } // namespace
 
 void mergeStraightRuns(CoveragePath& path, const CellGraph& graph) {
@@ -57,6 +97,8 @@ void mergeStraightRuns(CoveragePath& path, const CellGraph& graph) {
             keep(i);
     keep(walked - 1);
     runFollows.push_back(false); // the last waypoint: nothing follows
+    if (kept == walked)
+        return; // no straight run: the path stays as it was
     waypoints.resize(kept);
     waypoints.shrink_to_fit(); // the point: hand the memory back
     path.walkedWaypoints = walked;
@@ -66,29 +108,17 @@ void mergeStraightRuns(CoveragePath& path, const CellGraph& graph) {
 std::vector<Waypoint> walkedWaypoints(const CoveragePath& path, const CellGraph& graph) {
     if (!path.runsMerged())
         return path.waypoints;
+    const std::vector<Waypoint>& kept = path.waypoints;
     std::vector<Waypoint> walked;
-    walked.reserve(path.walkedWaypoints);
-    for (std::size_t i = 0; i < path.waypoints.size(); ++i) {
-        const Waypoint& from = path.waypoints[i];
-        walked.push_back(from);
-        if (i >= path.runFollows.size() || !path.runFollows[i] || i + 1 == path.waypoints.size() ||
-            !inGraph(from, graph))
+    walked.reserve(std::min(path.walkedWaypoints, kept.size() + mostWalkedWaypointsPerCell * graph.size()));
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        walked.push_back(kept[i]);
+        if (i >= path.runFollows.size() || !path.runFollows[i] || i + 1 == kept.size() ||
+            !inGraph(kept[i], graph))
             continue;
-        const Waypoint& to = path.waypoints[i + 1];
-        const double step = graph.cell(from.cell).size / 2.0;
-        const double length = std::hypot(to.x - from.x, to.y - from.y);
-        const auto steps = static_cast<long>(std::llround(length / step));
-        if (steps < 2 || std::abs(static_cast<double>(steps) * step - length) > 1e-9 * length)
-            continue;
-        for (long k = 1; k < steps; ++k) {
-            const double share = static_cast<double>(k) / static_cast<double>(steps);
-            Waypoint between = from;
-            between.x = from.x + (to.x - from.x) * share;
-            between.y = from.y + (to.y - from.y) * share;
-            const int cell = graph.cellAt({between.x, between.y});
-            between.cell = cell >= 0 ? cell : from.cell;
-            walked.push_back(between);
-        }
+        const std::size_t room =
+            path.walkedWaypoints - std::min(path.walkedWaypoints, walked.size() + kept.size() - i - 1);
+        putBackRun(kept[i], kept[i + 1], graph, room, walked);
     }
     return walked;
 }

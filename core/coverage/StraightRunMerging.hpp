@@ -7,6 +7,10 @@
 
 namespace mcpp {
 
+// How many waypoints a walk may pass per cell of the map at most: a walk passes each of a cell's four
+// sub-cell centres about once; a count beyond this is no walk of the map (a damaged plan file).
+inline constexpr std::size_t mostWalkedWaypointsPerCell = 8;
+
 // A measured path with the waypoints inside its straight runs left out: a waypoint stays where the path
 // turns, begins or ends, where the speed, the cell size or the land cover changes on either side of it, and
 // off sub-cell steps (a point outside the graph, a step of no length). What is left times, measures and

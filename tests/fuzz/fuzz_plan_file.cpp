@@ -2,6 +2,7 @@
 // allocation beyond what the bytes can hold. The first byte chooses what the rest is: the compressed body as
 // it is on disk (mostly refused by zlib's checksum), or the plan's raw fields, compressed here, so that
 // every structural check of the reader is reached; its second bit, which format (MCPP-PLAN 4 or 3).
+#include "core/coverage/StraightRunMerging.hpp"
 #include "io/PlanFile.hpp"
 
 #include <QByteArray>
@@ -34,6 +35,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // What the window does with a restored plan first: find cells.
         const mcpp::Cell& cell = plan.value().cells.cell(0);
         (void)plan.value().cells.cellAt({cell.centreX(), cell.centreY()});
+        // What a dense export does with a path whose straight runs were merged: put them back.
+        for (const mcpp::CoveragePath& path : plan.value().paths)
+            (void)mcpp::walkedWaypoints(path, plan.value().cells);
     }
     return 0;
 }

@@ -135,6 +135,27 @@ class TestPlanFile : public QObject {
         QVERIFY(!back.paths[0].runsMerged());
     }
 
+    // Merged runs that cannot be this map's walk are refused as damage, before anything expands them.
+    void mergedRunsThatDoNotAddUpAreRefused() {
+        Plan plan = plannedMap();
+        mergeStraightRuns(plan.paths[0], plan.cells);
+        QVERIFY(plan.paths[0].runsMerged());
+        for (const std::size_t walked :
+             {plan.paths[0].waypoints.size() - 1, plan.paths[0].waypoints.size() + 9 * plan.cells.size()}) {
+            Plan damaged = plan;
+            damaged.paths[0].walkedWaypoints = walked;
+            QVERIFY(io::savePlanFile(damaged, "inputs-d", file("damaged.mcpp-plan")).ok());
+            const auto loaded = io::loadPlanFile(file("damaged.mcpp-plan"), "inputs-d");
+            QVERIFY(!loaded.ok());
+            QVERIFY2(loaded.error().find("merged runs do not add up") != std::string::npos,
+                     loaded.error().c_str());
+        }
+        Plan shortFlags = plan;
+        shortFlags.paths[0].runFollows.pop_back();
+        QVERIFY(io::savePlanFile(shortFlags, "inputs-d", file("damaged.mcpp-plan")).ok());
+        QVERIFY(!io::loadPlanFile(file("damaged.mcpp-plan"), "inputs-d").ok());
+    }
+
     // A file of the format before (MCPP-PLAN 3: no counts of walked waypoints) is still read.
     void filesOfTheFormatBeforeAreRead() {
         const std::string seed =
@@ -143,8 +164,6 @@ class TestPlanFile : public QObject {
         const auto before = io::parsePlanBody(std::string_view(seed).substr(1), "seed", false);
         QVERIFY2(before.ok(), before.ok() ? "" : before.error().c_str());
         QVERIFY(!before.value().paths.empty());
-        for (const CoveragePath& path : before.value().paths)
-            QVERIFY(!path.runsMerged());
         writeBytes(file("format3.mcpp-plan"), "MCPP-PLAN 3\ninputs-3\n" + seed.substr(1));
         auto loaded = io::loadPlanFile(file("format3.mcpp-plan"), "inputs-3");
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
