@@ -60,13 +60,9 @@ RootedForest rootForest(std::size_t cellCount, const std::vector<std::pair<int, 
     return forest;
 }
 
-// The cells that head a piece: a subtree becomes a piece once it costs pieceCost or reaches the longest
-// side, or where joining its parent's would put two starts in one piece (worked bottom-up). A finer level
-// sums its costs across the coarser level's cuts and then cuts there too: respecting those cuts in the sums
-// gave as few turns, but on a 480 x 480 grid with 8 robots a division the evening out took 13 s over instead
-// of 0.3 s. A piece may reach this many times the side of a square of its cost. A turn-minimising tree over a
-// whole map runs straight across it, and uncut, its subtrees are strips: on the Zion sample, regions grown
-// from them interlocked in strips a few cells high and 5 km long (three times the border of compact regions).
+// A piece may reach this many times the side of a square of its cost. A turn-minimising tree over a whole
+// map runs straight across it, and uncut, its subtrees are strips: on the Zion sample, regions grown from
+// them interlocked in strips a few cells high and 5 km long (three times the border of compact regions).
 constexpr double longestPieceSideOverSquareSide = 2.0;
 
 // Extent on the bottom grid of each subtree summed so far (by the cell that heads it).
@@ -113,6 +109,11 @@ double longestPieceSide(const CellGraph& graph, double pieceCost) {
     return longestPieceSideOverSquareSide * std::sqrt(pieceCost * bottomCells / seconds);
 }
 
+// The cells that head a piece: a subtree becomes a piece once it costs pieceCost or reaches the longest
+// side, or where joining its parent's would put two starts in one piece (worked bottom-up). A finer level
+// sums its costs across the coarser level's cuts and then cuts there too: respecting those cuts in the sums
+// gave as few turns, but on a 480 x 480 grid with 8 robots a division the evening out took 13 s over instead
+// of 0.3 s.
 std::vector<char> pieceHeads(const CellGraph& graph, const RootedForest& forest,
                              const std::vector<int>& startCells, double pieceCost) {
     const std::size_t cellCount = graph.size();
