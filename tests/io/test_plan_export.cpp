@@ -123,6 +123,28 @@ class PlanExportTest : public QObject {
     QTemporaryDir folder_;
 
     // The first robot has a name, the second none (it is then "Robot 2").
+    // The GeoJSON written with dense paths holds every waypoint of the whole plan's paths (`whole`, or the
+    // plan itself), point for point.
+    void checkDensePaths(const std::string& path, const Plan* whole = nullptr) {
+        ExportSettings dense;
+        dense.densePaths = true;
+        QVERIFY(writePlanGeoJson(context(dense), path).ok());
+        const Plan& reference = whole != nullptr ? *whole : plan_;
+        Dataset dataset = openVector(path);
+        int paths = 0;
+        for (auto& feature : *dataset->GetLayer(0)) {
+            if (std::string(feature->GetFieldAsString("kind")) != "path")
+                continue;
+            const CoveragePath& coverage =
+                reference.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)];
+            const OGRLineString& line = *feature->GetGeometryRef()->toLineString();
+            QCOMPARE(static_cast<std::size_t>(line.getNumPoints()), coverage.waypoints.size());
+            QVERIFY(lineError(line, coverage.waypoints, reference_) < 1e-7);
+            ++paths;
+        }
+        QCOMPARE(paths, 2);
+    }
+
     ExportContext context(ExportSettings settings = {}) const {
         ExportContext exportContext{plan_, reference_, classes_, settings};
         exportContext.robotNames = {"Scout", ""};
@@ -532,24 +554,7 @@ class PlanExportTest : public QObject {
         QVERIFY(std::abs(length(kept) - length(path.waypoints)) < 1e-12);
     }
 
-    void densePathsOnRequest() {
-        const std::string path = file("dense.geojson");
-        ExportSettings dense;
-        dense.densePaths = true;
-        QVERIFY(writePlanGeoJson(context(dense), path).ok());
-        Dataset dataset = openVector(path);
-        int paths = 0;
-        for (auto& feature : *dataset->GetLayer(0)) {
-            if (std::string(feature->GetFieldAsString("kind")) != "path")
-                continue;
-            const CoveragePath& coverage =
-                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)];
-            QVERIFY(lineError(*feature->GetGeometryRef()->toLineString(), coverage.waypoints, reference_) <
-                    1e-7);
-            ++paths;
-        }
-        QCOMPARE(paths, 2);
-    }
+    void densePathsOnRequest() { checkDensePaths(file("dense.geojson")); }
 
     // A path whose straight runs were merged (large plans) still exports every sub-cell centre on request.
     void densePathsOfMergedRuns() {
@@ -557,25 +562,8 @@ class PlanExportTest : public QObject {
         for (CoveragePath& coverage : plan_.paths)
             mergeStraightRuns(coverage, plan_.cells);
         QVERIFY(plan_.paths.front().runsMerged());
-        const std::string path = file("dense-merged.geojson");
-        ExportSettings dense;
-        dense.densePaths = true;
-        const Status written = writePlanGeoJson(context(dense), path);
+        checkDensePaths(file("dense-merged.geojson"), &whole);
         plan_ = whole;
-        QVERIFY(written.ok());
-        Dataset dataset = openVector(path);
-        int paths = 0;
-        for (auto& feature : *dataset->GetLayer(0)) {
-            if (std::string(feature->GetFieldAsString("kind")) != "path")
-                continue;
-            const CoveragePath& coverage =
-                whole.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)];
-            const OGRLineString& line = *feature->GetGeometryRef()->toLineString();
-            QCOMPARE(static_cast<std::size_t>(line.getNumPoints()), coverage.waypoints.size());
-            QVERIFY(lineError(line, coverage.waypoints, reference_) < 1e-7);
-            ++paths;
-        }
-        QCOMPARE(paths, 2);
     }
 
     void regionRasterAgreesWithRegionPolygons() {
