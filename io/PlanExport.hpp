@@ -102,6 +102,10 @@ struct ExportContext {
 // unchanged).
 [[nodiscard]] std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, const CellGraph& cells,
                                                       bool mergeCollinear);
+// The path a robot's waypoint files are made from: `path`, or, where collinear points are kept and its
+// straight runs were merged (large plans), `whole` filled with every waypoint it walked.
+[[nodiscard]] const CoveragePath& pathForWaypointFiles(const CoveragePath& path, const CellGraph& cells,
+                                                       bool mergeCollinear, CoveragePath& whole);
 // The indices in the path of exportedWaypoints' points.
 [[nodiscard]] std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path,
                                                                const CellGraph& cells, bool mergeCollinear);

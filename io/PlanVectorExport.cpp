@@ -1,4 +1,3 @@
-#include "core/coverage/StraightRunMerging.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
@@ -460,11 +459,10 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
     // GPX wants every <wpt> before the first <rte>: starts first, then the routes.
     for (int pass = 0; pass < 2; ++pass) {
         for (const CoveragePath& coverage : context.plan.paths) {
-            // Collinear points kept on request: every waypoint walked, runs merged or not.
-            const std::vector<Waypoint> waypoints =
-                context.settings.mergeCollinear || !coverage.runsMerged()
-                    ? exportedWaypoints(coverage, context.plan.cells, context.settings.mergeCollinear)
-                    : walkedWaypoints(coverage, context.plan.cells);
+            CoveragePath whole;
+            const std::vector<Waypoint> waypoints = exportedWaypoints(
+                pathForWaypointFiles(coverage, context.plan.cells, context.settings.mergeCollinear, whole),
+                context.plan.cells, context.settings.mergeCollinear);
             if (waypoints.empty())
                 continue;
             const std::string name = context.robotName(coverage.robot);

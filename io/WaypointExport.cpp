@@ -66,11 +66,10 @@ ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context,
     }
     std::call_once(entry->made, [&] {
         if (const CoveragePath* coverage = pathOfRobot(context.plan, robot)) {
-            // Collinear points kept on request: every waypoint walked, runs merged or not.
-            entry->mission = context.settings.mergeCollinear || !coverage->runsMerged()
-                                 ? autopilotMission(*coverage, context.vehicle(robot), context.settings)
-                                 : autopilotMission(withEveryWaypoint(*coverage, context.plan.cells),
-                                                    context.vehicle(robot), context.settings);
+            CoveragePath whole;
+            entry->mission = autopilotMission(
+                pathForWaypointFiles(*coverage, context.plan.cells, context.settings.mergeCollinear, whole),
+                context.vehicle(robot), context.settings);
         }
     });
     return *entry; // the cache keeps it as long as the context
@@ -137,12 +136,8 @@ Result<std::vector<GeoWaypoint>> geoWaypoints(const ExportContext& context, int 
     if (coverage == nullptr)
         return Result<Points>::failure(path + ": the plan has no path for robot " +
                                        std::to_string(robotNumber(robot)));
-    // Collinear points kept on request: every waypoint walked, runs merged or not.
     CoveragePath whole;
-    if (!context.settings.mergeCollinear && coverage->runsMerged()) {
-        whole = withEveryWaypoint(*coverage, context.plan.cells);
-        coverage = &whole;
-    }
+    coverage = &pathForWaypointFiles(*coverage, context.plan.cells, context.settings.mergeCollinear, whole);
     if (coverage->waypoints.empty())
         return Result<Points>::failure(path + ": robot " + std::to_string(robotNumber(robot)) +
                                        " has no waypoints");
@@ -202,6 +197,14 @@ std::vector<std::size_t> exportedWaypointIndices(const CoveragePath& path, const
     }
     kept.push_back(waypoints.size() - 1);
     return kept;
+}
+
+const CoveragePath& pathForWaypointFiles(const CoveragePath& path, const CellGraph& cells,
+                                         bool mergeCollinear, CoveragePath& whole) {
+    if (mergeCollinear || !path.runsMerged())
+        return path;
+    whole = withEveryWaypoint(path, cells);
+    return whole;
 }
 
 std::vector<Waypoint> exportedWaypoints(const CoveragePath& path, const CellGraph& cells,

@@ -94,9 +94,8 @@ struct SubtreeExtents {
     }
 };
 
-// The side, in bottom cells, beyond which a subtree is cut off as a piece: longestPieceSideOverSquareSide
-// times the side of a square that costs pieceCost at the map's mean cost per bottom cell.
-double longestPieceSide(const CellGraph& graph, double pieceCost) {
+// Bottom cells a second of cover time takes on this map, on average: what turns a piece's cost into its size.
+double bottomCellsPerSecond(const CellGraph& graph) {
     double seconds = 0.0;
     double bottomCells = 0.0;
     for (std::size_t at = 0; at < graph.size(); ++at) {
@@ -104,9 +103,7 @@ double longestPieceSide(const CellGraph& graph, double pieceCost) {
         seconds += cell.coverSeconds();
         bottomCells += static_cast<double>(cell.span) * cell.span;
     }
-    if (seconds <= 0.0)
-        return std::numeric_limits<double>::infinity();
-    return longestPieceSideOverSquareSide * std::sqrt(pieceCost * bottomCells / seconds);
+    return seconds > 0.0 ? bottomCells / seconds : std::numeric_limits<double>::infinity();
 }
 
 // The cells that head a piece: a subtree becomes a piece once it costs pieceCost or reaches the longest
@@ -115,13 +112,14 @@ double longestPieceSide(const CellGraph& graph, double pieceCost) {
 // gave as few turns, but on a 480 x 480 grid with 8 robots a division the evening out took 13 s over instead
 // of 0.3 s.
 std::vector<char> pieceHeads(const CellGraph& graph, const RootedForest& forest,
-                             const std::vector<int>& startCells, double pieceCost) {
+                             const std::vector<int>& startCells, double pieceCost, double cellsPerSecond) {
     const std::size_t cellCount = graph.size();
     std::vector<double> open(cellCount);
     std::vector<char> holdsStart(cellCount, 0);
     for (std::size_t cell = 0; cell < cellCount; ++cell)
         open[cell] = graph.cell(static_cast<int>(cell)).coverSeconds();
-    const double longestSide = longestPieceSide(graph, pieceCost);
+    // The side, in bottom cells, beyond which a subtree is cut off as a piece.
+    const double longestSide = longestPieceSideOverSquareSide * std::sqrt(pieceCost * cellsPerSecond);
     SubtreeExtents extents(graph);
     for (int start : startCells)
         holdsStart[static_cast<std::size_t>(start)] = 1;
@@ -172,8 +170,9 @@ std::vector<CellBlocks> treePieces(const CellGraph& graph, const std::vector<int
     const RootedForest forest = rootForest(cellCount, edges);
     std::vector<CellBlocks> levels;
     std::vector<char> coarserHeads(cellCount, 0);
+    const double cellsPerSecond = bottomCellsPerSecond(graph); // once for every level
     for (double pieceCost : pieceCosts) {
-        std::vector<char> heads = pieceHeads(graph, forest, startCells, pieceCost);
+        std::vector<char> heads = pieceHeads(graph, forest, startCells, pieceCost, cellsPerSecond);
         for (std::size_t cell = 0; cell < cellCount; ++cell)
             heads[cell] = static_cast<char>(heads[cell] | coarserHeads[cell]);
         levels.push_back(piecesOf(graph, forest, heads));

@@ -1,5 +1,7 @@
 #include "core/coverage/StraightRunMerging.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,7 +15,7 @@ bool inGraph(const Waypoint& waypoint, const CellGraph& graph) {
 // Whether a step from `from` to `to` is one sub-cell of `to`'s cell long (a robot's step between
 // neighbouring sub-cell centres of cells of one size).
 bool isSubCellStep(const Waypoint& from, const Waypoint& to, double cellSize) {
-    const double length = std::hypot(to.x - from.x, to.y - from.y);
+    const double length = stepOf(to.x - from.x, to.y - from.y).length; // no square root along an axis
     return std::abs(length - cellSize / 2.0) <= 1e-9 * cellSize;
 }
 
@@ -50,7 +52,7 @@ int cellHolding(const CellGraph& graph, MapPoint point, int near) {
 void putBackRun(const Waypoint& from, const Waypoint& to, const CellGraph& graph, std::size_t room,
                 std::vector<Waypoint>& walked) {
     const double step = graph.cell(from.cell).size / 2.0;
-    const double length = std::hypot(to.x - from.x, to.y - from.y);
+    const double length = stepOf(to.x - from.x, to.y - from.y).length;
     const double steps = std::round(length / step);
     if (steps < 2.0 || steps - 1.0 > static_cast<double>(room) ||
         std::abs(steps * step - length) > 1e-9 * length)
