@@ -151,8 +151,10 @@ CellGraph getCells(CompressedReader& in) {
     if (static_cast<double>(frame.columns) * frame.rows * static_cast<double>(leastBytesPerBottomCell()) >
         static_cast<double>(memoryBudgetBytes()))
         throw CompressedReader::DamagedData("a grid larger than this machine can plan");
-    std::vector<Cell> cells(in.getCount(69));
-    for (Cell& cell : cells) {
+    // A cell's square is kept in the file for other readers; the graph works it out from the frame again.
+    std::vector<CellRecord> cells(in.getCount(69));
+    for (CellRecord& record : cells) {
+        Cell cell;
         cell.column = in.get<int>();
         cell.row = in.get<int>();
         const int span = in.get<int>();
@@ -179,6 +181,7 @@ CellGraph getCells(CompressedReader& in) {
             !(cell.turnSecondsPer90Degrees >= 0.0F) || !std::isfinite(cell.turnSecondsPer90Degrees) ||
             !(cell.expectedTurnsPerSubCell >= 0.0F) || !std::isfinite(cell.expectedTurnsPerSubCell))
             throw CompressedReader::DamagedData("a cell with no place on the grid");
+        record = recordOf(cell);
     }
     std::vector<int> offsets = in.getAll<int>();
     std::vector<int> neighbours = in.getAll<int>();

@@ -80,8 +80,8 @@ BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& gra
                     neighbours.push_back(next);
         offsets.push_back(static_cast<int>(neighbours.size()));
     }
-    result.graph =
-        CellGraph(graph.frame(), graph.cells(), NeighbourTopology(std::move(offsets), std::move(neighbours)));
+    result.graph = CellGraph(graph.frame(), graph.records(),
+                             NeighbourTopology(std::move(offsets), std::move(neighbours)));
     result.graph.fieldsOfView = graph.fieldsOfView;
     result.graph.passableAreaSquareMetres = graph.passableAreaSquareMetres;
     return result;

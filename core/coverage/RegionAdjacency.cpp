@@ -3,18 +3,18 @@
 namespace mcpp {
 namespace {
 
-CellSide sideOf(const Cell& from, const Cell& to) {
-    const double tolerance = 1e-9 * from.size;
-    if (to.minX >= from.maxX() - tolerance)
+// From the cells' placement on the bottom grid (row 0 at the north): exact, and no square to work out.
+CellSide sideOf(const CellRecord& from, const CellRecord& to) {
+    if (to.column >= from.column + from.span)
         return CellSide::East;
-    if (to.maxX() <= from.minX + tolerance)
+    if (to.column + to.span <= from.column)
         return CellSide::West;
-    return to.minY >= from.maxY() - tolerance ? CellSide::North : CellSide::South;
+    return to.row + to.span <= from.row ? CellSide::North : CellSide::South;
 }
 
 } // namespace
 
-void RegionAdjacency::add(const Cell& from, const Cell& to, int a, int b) {
+void RegionAdjacency::add(const CellRecord& from, const CellRecord& to, int a, int b) {
     const CellSide side = sideOf(from, to);
     const bool horizontal = side == CellSide::East || side == CellSide::West;
     const bool sameLine = horizontal ? from.row == to.row : from.column == to.column;

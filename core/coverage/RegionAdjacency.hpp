@@ -45,7 +45,7 @@ class RegionAdjacency {
             for (int neighbour : graph.neighbours(cells[a])) {
                 const int b = localIndex[neighbour];
                 if (b > static_cast<int>(a))
-                    add(graph.cell(cells[a]), graph.cell(neighbour), static_cast<int>(a), b);
+                    add(graph.record(cells[a]), graph.record(neighbour), static_cast<int>(a), b);
             }
         index(cells.size());
     }
@@ -59,7 +59,7 @@ class RegionAdjacency {
     }
 
   private:
-    void add(const Cell& from, const Cell& to, int a, int b);
+    void add(const CellRecord& from, const CellRecord& to, int a, int b);
     void index(std::size_t nodes);
 
     std::vector<Edge> edges_;

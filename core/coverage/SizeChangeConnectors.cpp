@@ -95,22 +95,24 @@ SizeChangeConnectors::smallerNeighbours(int node, CellSide side, const std::vect
 
 double SizeChangeConnectors::passSeconds(int node, CellSide side, const std::vector<Neighbour>& neighbours,
                                          int leftOutEdge) const {
-    const Cell& self = cellOf(node);
+    const Cell self = cellOf(node);
     const SidePassage passage = passageOf(side);
     double seconds = 0.0;
     MapPoint from = self.subCellCentre(passage.first);
-    const Cell* fromCell = &self;
+    Cell fromCell = self;
+    bool passedAny = false;
     for (const Neighbour& neighbour : neighbours) {
         if (neighbour.edge == leftOutEdge)
             continue;
-        const Cell& other = cellOf(neighbour.node);
-        seconds += stepSeconds(from, *fromCell, other.subCellCentre(passage.entry), other);
+        const Cell other = cellOf(neighbour.node);
+        seconds += stepSeconds(from, fromCell, other.subCellCentre(passage.entry), other);
         from = other.subCellCentre(passage.exit);
-        fromCell = &other;
+        fromCell = other;
+        passedAny = true;
     }
-    if (fromCell == &self)
+    if (!passedAny)
         return 0.0;
-    return seconds + stepSeconds(from, *fromCell, self.subCellCentre(passage.last), self);
+    return seconds + stepSeconds(from, fromCell, self.subCellCentre(passage.last), self);
 }
 
 double SizeChangeConnectors::sideSeconds(int node, CellSide side, const std::vector<char>& inTree) const {

@@ -47,9 +47,7 @@ class SizeChangeConnectors {
     // The side's seconds with `neighbours` joined, all but the one by `leftOutEdge` (-1: none).
     [[nodiscard]] double passSeconds(int node, CellSide side, const std::vector<Neighbour>& neighbours,
                                      int leftOutEdge) const;
-    [[nodiscard]] const Cell& cellOf(int node) const {
-        return graph_.cell(cells_[static_cast<std::size_t>(node)]);
-    }
+    [[nodiscard]] Cell cellOf(int node) const { return graph_.cell(cells_[static_cast<std::size_t>(node)]); }
 
     const CellGraph& graph_;
     const std::vector<int>& cells_;

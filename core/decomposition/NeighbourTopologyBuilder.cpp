@@ -96,7 +96,7 @@ NeighbourTopology NeighbourTopologyBuilder::build(const OneLevelQuadTree& grid) 
     offsets.reserve(grid.cells.size() + 1);
     neighbours.reserve(grid.cells.size() * 4);
     offsets.push_back(0);
-    for (const Cell& cell : grid.cells) {
+    for (const CellRecord& cell : grid.cells) {
         for (int side = North; side <= West; ++side) {
             const int row = cell.row + rowStep[static_cast<std::size_t>(side)];
             const int column = cell.column + columnStep[static_cast<std::size_t>(side)];

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/model/Cell.hpp"
+#include "core/model/CellRecord.hpp"
 #include "core/model/GridFrame.hpp"
 #include "core/model/RoundedFieldOfView.hpp"
 
@@ -13,7 +13,7 @@ namespace mcpp {
 // the tree's 64-byte nodes (4.4 GB on a map of 69 million cells) and their topology search.
 struct OneLevelQuadTree {
     GridFrame frame;
-    std::vector<Cell> cells; // the active leaves, row by row
+    std::vector<CellRecord> cells; // the active leaves, row by row
     std::vector<RoundedFieldOfView> roundedFieldsOfView;
     double passableAreaSquareMetres = 0.0; // all passable pixels, in any cell
     // What storing the cells' areas as floats changed, added to the total as the tree's graph adds it.

@@ -4,6 +4,7 @@
 #include "core/decomposition/LandCoverSamples.hpp"
 #include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/Cell.hpp"
+#include "core/model/CellRecord.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <algorithm>
@@ -323,29 +324,26 @@ OneLevelQuadTree gridOfBottomCells(const SampleCounts& counts, const ClassGrid& 
     OneLevelQuadTree result;
     result.frame = {tree.originX, tree.originY, 2.0 * tree.fovMin, tree.topColumns, tree.topRows, 1};
     result.roundedFieldsOfView = tree.roundedFieldsOfView;
-    const auto minXOf = [&](int column) { return tree.originX + column * tree.topCellSize; };
-    const auto minYOf = [&](int row) { return tree.originY - (row + 1) * tree.topCellSize; };
     // Room for every bottom cell, of which only the pages the active cells fill become resident: one
     // judging pass, and no copy as the vector grows.
     result.cells.reserve(static_cast<std::size_t>(tree.topRows) * static_cast<std::size_t>(tree.topColumns));
     LandCoverCounter landCover(counts.samples, counts.classes);
     for (int row = 0; row < tree.topRows; ++row) {
         for (int column = 0; column < tree.topColumns; ++column) {
-            Cell cell;
+            CellRecord cell;
             cell.column = column;
             cell.row = row;
-            cell.minX = minXOf(column);
-            cell.minY = minYOf(row);
-            cell.size = tree.topCellSize;
-            const Verdict verdict =
-                judge(counts, grid, options, 1, row, column, cell.minX, cell.minY, cell.size);
+            const CellSquare square = squareOf(result.frame, column, row, 1);
+            const double minX = square.minX;
+            const double minY = square.minY;
+            const double size = square.size;
+            const Verdict verdict = judge(counts, grid, options, 1, row, column, minX, minY, size);
             result.passableAreaSquareMetres += verdict.passableAreaSquareMetres;
             if (verdict.state != CellState::Active)
                 continue;
             cell.passableAreaSquareMetres = static_cast<float>(verdict.passableAreaSquareMetres);
             result.areaRounding += double{cell.passableAreaSquareMetres} - verdict.passableAreaSquareMetres;
-            const LandCoverCounter::Result found =
-                landCover.of(cell.minX, cell.maxX(), cell.minY, cell.maxY());
+            const LandCoverCounter::Result found = landCover.of(minX, minX + size, minY, minY + size);
             cell.classValue = found.classValue;
             cell.speedMetresPerSecond = static_cast<float>(found.speedMetresPerSecond);
             result.cells.push_back(cell);

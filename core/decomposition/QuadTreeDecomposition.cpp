@@ -14,20 +14,17 @@ CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology) {
     frame.levels = tree.levels;
     frame.columns = tree.levels > 0 ? tree.columnsAt(tree.levels) : 0;
     frame.rows = tree.levels > 0 ? tree.rowsAt(tree.levels) : 0;
-    std::vector<Cell> cells;
+    std::vector<CellRecord> cells;
     cells.reserve(tree.activeCount());
     // What storing areas as floats changed, added to the total so that the cells never add up to more.
     double rounding = 0.0;
     for (std::size_t active = 0; active < tree.activeCount(); ++active) {
         const QuadCell& quadCell = tree.active(static_cast<int>(active));
-        Cell cell;
+        CellRecord cell;
         cell.span = 1 << (tree.levels - quadCell.level);
         cell.column = quadCell.column * cell.span;
         cell.row = quadCell.row * cell.span;
         cell.level = quadCell.level;
-        cell.minX = quadCell.minX;
-        cell.minY = quadCell.minY;
-        cell.size = quadCell.size;
         cell.classValue = quadCell.classValue;
         cell.speedMetresPerSecond = quadCell.speedMetresPerSecond;
         cell.passableAreaSquareMetres = static_cast<float>(quadCell.passableAreaSquareMetres);

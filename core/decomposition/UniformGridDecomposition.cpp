@@ -4,6 +4,7 @@
 #include "core/decomposition/GridNeighbours.hpp"
 #include "core/decomposition/LandCoverCounter.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
+#include "core/model/CellRecord.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <algorithm>
@@ -155,7 +156,7 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
             cell.level = 1;
             cell.minX = frame.x(column);
             cell.size = shape.cellSize;
-            cell.minY = frame.y(row) - shape.cellSize;
+            cell.minY = squareOf(frame, column, row, 1).minY; // as the graph works it out again
             cell.freeSubCells = free;
             const double area = static_cast<double>(freePassable) * samples.sampleArea();
             cell.passableAreaSquareMetres = static_cast<float>(area);
@@ -176,7 +177,7 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
     for (std::uint32_t count : counts.passable)
         passableSamples += count;
     NeighbourTopology adjacency = gridNeighbours(frame, cells);
-    CellGraph graph(frame, std::move(cells), std::move(adjacency));
+    CellGraph graph(frame, cells, std::move(adjacency));
     graph.fieldsOfView = fieldsOfView;
     graph.passableAreaSquareMetres = passableSamples * samples.sampleArea() + rounding;
     progress.report("grid", 1.0);

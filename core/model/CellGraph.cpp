@@ -11,16 +11,27 @@ std::uint64_t placementKey(long long row, long long column) {
     return (static_cast<std::uint64_t>(row) << 32U) | static_cast<std::uint64_t>(column);
 }
 
-std::uint64_t keyOf(const Cell& cell) {
+std::uint64_t keyOf(const CellRecord& cell) {
     return placementKey(cell.row / cell.span, cell.column / cell.span);
+}
+
+std::vector<CellRecord> recordsOf(const std::vector<Cell>& cells) {
+    std::vector<CellRecord> records;
+    records.reserve(cells.size());
+    for (const Cell& cell : cells)
+        records.push_back(recordOf(cell));
+    return records;
 }
 
 } // namespace
 
-CellGraph::CellGraph(GridFrame frame, std::vector<Cell> cells, NeighbourTopology adjacency)
-    : frame_(frame), cells_(std::move(cells)), adjacency_(std::move(adjacency)) {
+CellGraph::CellGraph(GridFrame frame, const std::vector<Cell>& cells, NeighbourTopology adjacency)
+    : CellGraph(frame, recordsOf(cells), std::move(adjacency)) {}
+
+CellGraph::CellGraph(GridFrame frame, std::vector<CellRecord> records, NeighbourTopology adjacency)
+    : frame_(frame), records_(std::move(records)), adjacency_(std::move(adjacency)) {
     std::map<int, std::size_t> cellsOfSpan;
-    for (const Cell& cell : cells_)
+    for (const CellRecord& cell : records_)
         ++cellsOfSpan[cell.span];
     for (const auto& [span, count] : cellsOfSpan)
         locator_.emplace_back(span, idsInPlacementOrder(span, count));
@@ -34,10 +45,10 @@ std::vector<int> CellGraph::idsInPlacementOrder(int span, std::size_t count) con
     ids.reserve(count);
     bool ordered = true;
     std::uint64_t previousKey = 0;
-    for (std::size_t id = 0; id < cells_.size(); ++id) {
-        if (cells_[id].span != span)
+    for (std::size_t id = 0; id < records_.size(); ++id) {
+        if (records_[id].span != span)
             continue;
-        const std::uint64_t key = keyOf(cells_[id]);
+        const std::uint64_t key = keyOf(records_[id]);
         ordered = ordered && (ids.empty() || previousKey < key);
         previousKey = key;
         ids.push_back(static_cast<int>(id));
@@ -48,7 +59,7 @@ std::vector<int> CellGraph::idsInPlacementOrder(int span, std::size_t count) con
     std::vector<std::pair<std::uint64_t, int>> keys;
     keys.reserve(count);
     for (int id : ids)
-        keys.emplace_back(keyOf(cells_[static_cast<std::size_t>(id)]), id);
+        keys.emplace_back(keyOf(records_[static_cast<std::size_t>(id)]), id);
     std::sort(keys.begin(), keys.end());
     std::transform(keys.begin(), keys.end(), ids.begin(), [](const auto& key) { return key.second; });
     return ids;
@@ -65,23 +76,23 @@ int CellGraph::cellAt(MapPoint point) const {
         const std::uint64_t key =
             placementKey(static_cast<long long>(row) / span, static_cast<long long>(column) / span);
         const auto found = std::lower_bound(ids.begin(), ids.end(), key, [&](int id, std::uint64_t wanted) {
-            return keyOf(cell(id)) < wanted;
+            return keyOf(record(id)) < wanted;
         });
-        if (found != ids.end() && keyOf(cell(*found)) == key)
+        if (found != ids.end() && keyOf(record(*found)) == key)
             return *found;
     }
     return -1;
 }
 
 void CellGraph::applyTurnTime(const TurnTimeModel& model) {
-    for (Cell& cell : cells_)
+    for (CellRecord& cell : records_)
         cell.turnSecondsPer90Degrees =
             static_cast<float>(model.secondsPer90Degrees(cell.speedMetresPerSecond));
 }
 
 void CellGraph::setExpectedTurns(const std::vector<float>& turnsPerSubCell) {
-    for (std::size_t id = 0; id < cells_.size() && id < turnsPerSubCell.size(); ++id)
-        cells_[id].expectedTurnsPerSubCell = turnsPerSubCell[id];
+    for (std::size_t id = 0; id < records_.size() && id < turnsPerSubCell.size(); ++id)
+        records_[id].expectedTurnsPerSubCell = turnsPerSubCell[id];
 }
 
 } // namespace mcpp

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "core/model/Cell.hpp"
+#include "core/model/CellRange.hpp"
+#include "core/model/CellRecord.hpp"
 #include "core/model/GridFrame.hpp"
 #include "core/model/NeighbourTopology.hpp"
 #include "core/model/RoundedFieldOfView.hpp"
@@ -19,13 +21,19 @@ namespace mcpp {
 class CellGraph {
   public:
     CellGraph() = default;
-    CellGraph(GridFrame frame, std::vector<Cell> cells, NeighbourTopology adjacency);
+    CellGraph(GridFrame frame, std::vector<CellRecord> records, NeighbourTopology adjacency);
+    // Cells made by hand or changed by a planner: each must lie where its column, row and span place it on
+    // the frame, as only those are kept.
+    CellGraph(GridFrame frame, const std::vector<Cell>& cells, NeighbourTopology adjacency);
 
     [[nodiscard]] const GridFrame& frame() const { return frame_; }
-    [[nodiscard]] std::size_t size() const { return cells_.size(); }
-    [[nodiscard]] bool empty() const { return cells_.empty(); }
-    [[nodiscard]] const Cell& cell(int id) const { return cells_[static_cast<std::size_t>(id)]; }
-    [[nodiscard]] const std::vector<Cell>& cells() const { return cells_; }
+    [[nodiscard]] std::size_t size() const { return records_.size(); }
+    [[nodiscard]] bool empty() const { return records_.empty(); }
+    // A cell, whole: its square worked out from the frame.
+    [[nodiscard]] Cell cell(int id) const { return cellOf(records_[static_cast<std::size_t>(id)], frame_); }
+    [[nodiscard]] CellRange cells() const { return {records_, frame_}; }
+    [[nodiscard]] const CellRecord& record(int id) const { return records_[static_cast<std::size_t>(id)]; }
+    [[nodiscard]] const std::vector<CellRecord>& records() const { return records_; }
     [[nodiscard]] std::span<const int> neighbours(int id) const { return adjacency_.of(id); }
     [[nodiscard]] bool areNeighbours(int a, int b) const { return adjacency_.areNeighbours(a, b); }
     [[nodiscard]] const NeighbourTopology& adjacency() const { return adjacency_; }
@@ -47,7 +55,7 @@ class CellGraph {
     [[nodiscard]] std::vector<int> idsInPlacementOrder(int span, std::size_t count) const;
 
     GridFrame frame_;
-    std::vector<Cell> cells_;
+    std::vector<CellRecord> records_;
     NeighbourTopology adjacency_;
     // Per distinct span: its cells sorted by (row / span, column / span), for cellAt. Ids only, the key
     // worked out from the cell: 4 bytes a cell instead of 16 (70 MB instead of 280 MB on 17.6 M cells).

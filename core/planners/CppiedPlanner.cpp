@@ -140,8 +140,8 @@ CellGraph priceForDetection(const CellGraph& cells, const DetectionModel& model,
         const double passes = model.passesPerCell(profile, required);
         passesOfProfile[static_cast<std::size_t>(profile)] = passes > 0.0 ? passes : crossedOnly;
     }
-    std::vector<Cell> priced = cells.cells();
-    for (Cell& cell : priced) {
+    std::vector<CellRecord> priced = cells.records();
+    for (CellRecord& cell : priced) {
         const int profile = model.profileOf(cell.classValue);
         if (profile != DetectionModel::noProfile)
             cell.speedMetresPerSecond = static_cast<float>(

@@ -55,7 +55,7 @@ Reachability reachableSubCells(const CellGraph& graph, const SubCellLattice& lat
             static_cast<std::uint8_t>(1U << static_cast<unsigned>(cell.subCellAt({centre.x, centre.y})));
     }
     Reachability result;
-    std::vector<Cell> cells = graph.cells();
+    std::vector<Cell> cells = graph.cells().toVector();
     for (std::size_t id = 0; id < cells.size(); ++id) {
         if (reached[id] == 0 || reached[id] == cells[id].freeSubCells)
             continue;
@@ -68,7 +68,7 @@ Reachability reachableSubCells(const CellGraph& graph, const SubCellLattice& lat
         cells[id].freeSubCells = reached[id];
     }
     NeighbourTopology adjacency = gridNeighbours(graph.frame(), cells);
-    result.graph = CellGraph(graph.frame(), std::move(cells), std::move(adjacency));
+    result.graph = CellGraph(graph.frame(), cells, std::move(adjacency));
     result.graph.fieldsOfView = graph.fieldsOfView;
     result.graph.passableAreaSquareMetres = graph.passableAreaSquareMetres;
     return result;

@@ -41,11 +41,11 @@ PlannerDescription MlctPlanner::describe() const {
                               BorderStraightening::slackParameter(),
                               SpanningTreeCoverage::closedTourParameter(),
                               TurnSearch::roundsParameter()};
-    // Measured peaks, outputs included, since paths of maps of 4 M cells or more merge their straight runs:
-    // 193 bytes a bottom cell on 18.06 M (forest-4250 with a fast robot: the turn balance plans a second
-    // division), 162 on the 69 M-cell tile (docs/benchmarks.md); with room to spare. Below 4 M cells, where
-    // paths keep every waypoint, 244 on the same kind of map is still under a gigabyte.
-    description.bytesPerBottomCell = 240;
+    // Measured peaks, outputs included, since a graph keeps 32 bytes a cell and paths of maps of 4 M cells
+    // or more merge their straight runs: 153-166 bytes a bottom cell on 18.06 M (forest-4250 with a fast
+    // robot: the turn balance plans a second division), 133 on the 69 M-cell tile (docs/benchmarks.md); with
+    // room to spare. Below 4 M cells, where paths keep every waypoint, more a cell, still under a gigabyte.
+    description.bytesPerBottomCell = 210;
     description.quadTreeCells = true;
     return description;
 }

@@ -76,6 +76,46 @@ class NeighbourTopologyTest : public QObject {
         }
     }
 
+    // A graph keeps 32 bytes a cell and works each square out from the frame again: on mixed-level trees
+    // the squares are those the quadtree made, bit for bit (walks compare points exactly), and the other
+    // fields are those of the leaf.
+    void cellsComeBackWithTheTreesSquares() {
+        int deepest = 0;
+        for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+            const auto problem =
+                randomMap(seed, 30 + static_cast<int>(seed % 5), 26 + static_cast<int>(seed % 3));
+            QuadTree tree = QuadTreeBuilder{}.build(problem.grid, problem.classes, {});
+            std::vector<QuadCell> leaves;
+            for (std::size_t active = 0; active < tree.activeCount(); ++active)
+                leaves.push_back(tree.active(static_cast<int>(active)));
+            NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
+            const CellGraph graph = cellGraphOfQuadTree(std::move(tree), std::move(topology));
+            QCOMPARE(graph.size(), leaves.size());
+            for (std::size_t id = 0; id < graph.size(); ++id) {
+                const Cell cell = graph.cell(static_cast<int>(id));
+                const QuadCell& leaf = leaves[id];
+                deepest = std::max(deepest, int{leaf.level});
+                QVERIFY2(cell.minX == leaf.minX && cell.minY == leaf.minY && cell.size == leaf.size,
+                         qPrintable(QString("seed %1 cell %2: (%3, %4, %5) against the tree's (%6, %7, %8)")
+                                        .arg(seed)
+                                        .arg(id)
+                                        .arg(cell.minX, 0, 'g', 17)
+                                        .arg(cell.minY, 0, 'g', 17)
+                                        .arg(cell.size, 0, 'g', 17)
+                                        .arg(leaf.minX, 0, 'g', 17)
+                                        .arg(leaf.minY, 0, 'g', 17)
+                                        .arg(leaf.size, 0, 'g', 17)));
+                QCOMPARE(int{cell.level}, int{leaf.level});
+                QCOMPARE(cell.classValue, leaf.classValue);
+                QCOMPARE(cell.speedMetresPerSecond, static_cast<float>(leaf.speedMetresPerSecond));
+                const Cell again = graph.cells()[id];
+                QCOMPARE(again.minX, cell.minX);
+                QCOMPARE(again.row, cell.row);
+            }
+        }
+        QVERIFY(deepest >= 3); // children of children were worked out, not only top cells
+    }
+
     // The graph's point lookup, which keeps only cell ids per cell size, finds every cell of mixed-level
     // graphs from any of its sub-cell centres; a bottom cell that no cell covers (an obstacle) and points
     // beyond the grid find none.
