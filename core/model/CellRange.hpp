@@ -40,7 +40,8 @@ class CellRange {
         const GridFrame* frame_ = nullptr;
     };
 
-    CellRange(const std::vector<CellRecord>& records, const GridFrame& frame) : records_(records), frame_(frame) {}
+    CellRange(const std::vector<CellRecord>& records, const GridFrame& frame)
+        : records_(records), frame_(frame) {}
 
     [[nodiscard]] Iterator begin() const { return {records_.data(), &frame_}; }
     [[nodiscard]] Iterator end() const { return {records_.data() + records_.size(), &frame_}; }

@@ -35,13 +35,13 @@ struct CellSquare {
 };
 [[nodiscard]] inline CellSquare squareOf(const GridFrame& frame, int column, int row, int span) {
     if (frame.levels == 1 && span == 1) [[likely]] // a grid: every cell is a top cell
-        return {frame.originX + column * frame.bottomCellSize, frame.originY - (row + 1) * frame.bottomCellSize,
-                frame.bottomCellSize};
+        return {frame.originX + column * frame.bottomCellSize,
+                frame.originY - (row + 1) * frame.bottomCellSize, frame.bottomCellSize};
     const int spanShift = std::countr_zero(static_cast<unsigned>(span));
     const int topShift = std::max(frame.levels - 1, spanShift);
     double size = frame.bottomCellSize * static_cast<double>(1U << static_cast<unsigned>(topShift)); // exact
-    CellSquare square{frame.originX + (column >> topShift) * size, frame.originY - ((row >> topShift) + 1) * size,
-                      size};
+    CellSquare square{frame.originX + (column >> topShift) * size,
+                      frame.originY - ((row >> topShift) + 1) * size, size};
     for (int shift = topShift - 1; shift >= spanShift; --shift) {
         size /= 2.0;
         square.minX += ((column >> shift) & 1) * size;
