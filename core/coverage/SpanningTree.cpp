@@ -41,6 +41,23 @@ SpanningTree::SpanningTree(std::vector<int> cells, int root, const std::vector<s
     }
 }
 
+void SpanningTree::pack() {
+    std::vector<int>().swap(offsets_);
+    std::vector<int>().swap(targets_);
+    std::vector<int>().swap(depth_);
+    packed_ = true;
+}
+
+// The same lists and depths again: the edges are those to each node's parent, and the tree's parents and
+// depths from its root are unique. The walk orders a node's neighbours by place, not by list order.
+void SpanningTree::unpack() {
+    if (!packed_)
+        return;
+    const std::vector<std::pair<int, int>> treeEdges = edges();
+    std::vector<int>().swap(parent_);
+    *this = SpanningTree(std::move(cells_), root_, treeEdges);
+}
+
 std::vector<std::pair<int, int>> SpanningTree::edges() const {
     std::vector<std::pair<int, int>> result;
     for (std::size_t node = 0; node < cells_.size(); ++node)

@@ -147,7 +147,7 @@ SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAlloc
                                        const std::vector<MapPoint>& starts, const ProgressReporter& progress,
                                        bool timed, const std::vector<const RegionTree*>& kept) const {
     const std::size_t robots = regions.startCell.size();
-    const auto regionCells = cellsByRobot(regions);
+    auto regionCells = cellsByRobot(regions);
     // Regions are planned side by side, each into its own slot: the same trees whatever the thread count.
     std::vector<std::vector<int>> scratchIndex(static_cast<std::size_t>(workerThreads()));
     std::vector<RegionTree> trees(robots);
@@ -165,6 +165,10 @@ SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAlloc
             auto [tree, shape] =
                 bestTree(graph, regionCells[robot], regions.startCell[robot], starts[robot], scratch, timed);
             trees[robot] = {std::move(tree), shape};
+            std::vector<int>().swap(regionCells[robot]); // the tree holds its cells now
+            // On large maps the trees wait packed beside the regions still planned.
+            if (graph.size() >= cellsForMergedRuns_)
+                trees[robot].tree.pack();
         }
         const std::lock_guard lock(progressMutex);
         progress.report("paths", static_cast<double>(++finished) / static_cast<double>(robots));
@@ -185,6 +189,7 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
         progress.throwIfCancelled();
         TreeCircumnavigation walker(graph);
         RegionTree& planned = trees[robot];
+        planned.tree.unpack();
         std::vector<Waypoint> walk =
             walker.walkFromStart(planned.tree, starts[robot], closedTour_, planned.shape.points());
         planned.tree = SpanningTree(); // freed once walked: all trees and all paths are never held together

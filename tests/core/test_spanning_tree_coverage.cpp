@@ -1,6 +1,7 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
+#include "core/coverage/StraightRunMerging.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "tests/support/PlanInvariants.hpp"
@@ -74,6 +75,80 @@ class SpanningTreeCoverageTest : public QObject {
                 const Waypoint first =
                     walker.walk(tree, start, closed).front(); // a copy: the walk is a temporary
                 startsOffTheWalk_ += first.x != start.x || first.y != start.y ? 1 : 0;
+            }
+        }
+    }
+
+    // A tree packed while it waits (cells and parents only) comes back unpacked with the same neighbours,
+    // parents and depths, and walks point for point as before.
+    void aPackedTreeWalksAsBefore() {
+        for (int seed = 1; seed <= 6; ++seed) {
+            test::RandomMapSpec spec;
+            spec.seed = static_cast<unsigned>(seed);
+            spec.landCovers = 1 + seed % 3;
+            spec.obstacleFraction = 0.05 * (seed % 3);
+            spec.robots = 2;
+            const PlanningProblem problem = test::randomProblem(spec);
+            const Plan plan = planOf(problem);
+            const auto cells = cellsByRobot(plan.regions);
+            std::vector<int> scratch(plan.cells.size(), -1);
+            const SpanningTreeBuilder trees(plan.cells, scratch);
+            TreeCircumnavigation walker(plan.cells);
+            for (std::size_t robot = 0; robot < cells.size(); ++robot) {
+                const SpanningTree tree = trees.fewestTurns(cells[robot], plan.regions.startCell[robot]);
+                SpanningTree packed = tree;
+                packed.pack();
+                QVERIFY(packed.packed());
+                QCOMPARE(packed.cells(), tree.cells());
+                packed.unpack();
+                QVERIFY(!packed.packed());
+                QCOMPARE(packed.root(), tree.root());
+                for (int node = 0; node < static_cast<int>(tree.size()); ++node) {
+                    QCOMPARE(packed.parent(node), tree.parent(node));
+                    QCOMPARE(packed.depth(node), tree.depth(node));
+                    const auto before = tree.neighbours(node);
+                    const auto after = packed.neighbours(node);
+                    QCOMPARE(std::set<int>(after.begin(), after.end()),
+                             std::set<int>(before.begin(), before.end()));
+                }
+                const MapPoint start = problem.starts[robot];
+                const std::vector<Waypoint> walked = walker.walkFromStart(tree, start, true);
+                const std::vector<Waypoint> again = walker.walkFromStart(packed, start, true);
+                QCOMPARE(again.size(), walked.size());
+                for (std::size_t i = 0; i < walked.size(); ++i) {
+                    QCOMPARE(again[i].x, walked[i].x);
+                    QCOMPARE(again[i].y, walked[i].y);
+                    QCOMPARE(again[i].cell, walked[i].cell);
+                }
+            }
+        }
+    }
+
+    // Above the size for merged runs the planned trees wait packed; walked, their paths hold the same
+    // points as those of trees kept whole.
+    void packedTreesPlanTheSamePaths() {
+        test::RandomMapSpec spec;
+        spec.seed = 4;
+        spec.landCovers = 2;
+        spec.obstacleFraction = 0.1;
+        spec.robots = 3;
+        const PlanningProblem problem = test::randomProblem(spec);
+        const Plan plan = planOf(problem);
+        const SpanningTreeCoverage whole;
+        const SpanningTreeCoverage packing(true, 1);
+        auto wholeTrees = whole.planTrees(plan.cells, plan.regions, problem.starts, {}, true);
+        auto packedTrees = packing.planTrees(plan.cells, plan.regions, problem.starts, {}, true);
+        for (const auto& planned : packedTrees)
+            QVERIFY(planned.tree.packed());
+        const auto wholePaths = whole.walkTrees(plan.cells, std::move(wholeTrees), problem.starts, {});
+        const auto packedPaths = packing.walkTrees(plan.cells, std::move(packedTrees), problem.starts, {});
+        QCOMPARE(packedPaths.size(), wholePaths.size());
+        for (std::size_t robot = 0; robot < wholePaths.size(); ++robot) {
+            const std::vector<Waypoint> walked = walkedWaypoints(packedPaths[robot], plan.cells);
+            QCOMPARE(walked.size(), wholePaths[robot].waypoints.size());
+            for (std::size_t i = 0; i < walked.size(); ++i) {
+                QCOMPARE(walked[i].x, wholePaths[robot].waypoints[i].x);
+                QCOMPARE(walked[i].y, wholePaths[robot].waypoints[i].y);
             }
         }
     }
