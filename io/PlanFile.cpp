@@ -146,6 +146,8 @@ CellGraph getCells(CompressedReader& in) {
     if (!std::isfinite(frame.originX) || !std::isfinite(frame.originY) || !(frame.bottomCellSize > 0.0) ||
         !std::isfinite(frame.bottomCellSize) || frame.columns < 0 || frame.rows < 0 || frame.levels < 1)
         throw CompressedReader::DamagedData("a grid with no place on the map");
+    if (frame.levels > mostQuadTreeLevels)
+        throw CompressedReader::DamagedData("a quadtree of more levels than any planner makes");
     // A grid no plan of this machine could have (planning refuses such maps) would make the outlines of a
     // restored plan allocate without bound.
     if (static_cast<double>(frame.columns) * frame.rows * static_cast<double>(leastBytesPerBottomCell()) >

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 namespace mcpp {
 namespace {
@@ -30,6 +32,11 @@ CellGraph::CellGraph(GridFrame frame, const std::vector<Cell>& cells, NeighbourT
 
 CellGraph::CellGraph(GridFrame frame, std::vector<CellRecord> records, NeighbourTopology adjacency)
     : frame_(frame), records_(std::move(records)), adjacency_(std::move(adjacency)) {
+    // Squares are worked out level by level from the top cells: a frame must have the levels a quadtree
+    // can.
+    if (frame_.levels > mostQuadTreeLevels || (frame_.levels < 1 && !records_.empty()))
+        throw std::invalid_argument("a cell graph of " + std::to_string(frame_.levels) +
+                                    " levels; a quadtree has 1 to " + std::to_string(mostQuadTreeLevels));
     std::map<int, std::size_t> cellsOfSpan;
     for (const CellRecord& cell : records_)
         ++cellsOfSpan[cell.span];

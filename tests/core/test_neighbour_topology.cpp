@@ -116,6 +116,19 @@ class NeighbourTopologyTest : public QObject {
         QVERIFY(deepest >= 3); // children of children were worked out, not only top cells
     }
 
+    // Squares are worked out level by level: a frame of more levels than a quadtree has is refused, not
+    // shifted past the width of an int.
+    void framesOfTooManyLevelsAreRefused() {
+        GridFrame frame;
+        frame.columns = 1;
+        frame.rows = 1;
+        frame.levels = mostQuadTreeLevels + 1;
+        const std::vector<CellRecord> one(1);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CellGraph(frame, one, NeighbourTopology({0, 0}, {})));
+        frame.levels = mostQuadTreeLevels;
+        QCOMPARE(CellGraph(frame, one, NeighbourTopology({0, 0}, {})).size(), std::size_t{1});
+    }
+
     // The graph's point lookup, which keeps only cell ids per cell size, finds every cell of mixed-level
     // graphs from any of its sub-cell centres; a bottom cell that no cell covers (an obstacle) and points
     // beyond the grid find none.
