@@ -18,26 +18,29 @@ void RegionAdjacency::add(const CellRecord& from, const CellRecord& to, int a, i
     const CellSide side = sideOf(from, to);
     const bool horizontal = side == CellSide::East || side == CellSide::West;
     const bool sameLine = horizontal ? from.row == to.row : from.column == to.column;
-    edges_.push_back({a, b, side, from.span == to.span && sameLine});
+    Edge& edge = edges_.emplace_back();
+    edge.first = a;
+    edge.second = b;
+    edge.sideOfFirst = side;
+    edge.straight = from.span == to.span && sameLine;
 }
 
 void RegionAdjacency::index(std::size_t nodes) {
+    // Counted, summed to each node's end, then filled from the back with the edges in reverse: each node's
+    // edges come out in increasing order and its start is left behind, with no second array of offsets.
     offsets_.assign(nodes + 1, 0);
     for (const Edge& edge : edges_) {
-        ++offsets_[static_cast<std::size_t>(edge.first) + 1];
-        ++offsets_[static_cast<std::size_t>(edge.second) + 1];
+        ++offsets_[static_cast<std::size_t>(edge.first)];
+        ++offsets_[static_cast<std::size_t>(edge.second)];
     }
-    for (std::size_t i = 0; i < nodes; ++i)
-        offsets_[i + 1] += offsets_[i];
+    for (std::size_t i = 1; i <= nodes; ++i)
+        offsets_[i] += offsets_[i - 1];
     incidences_.resize(2 * edges_.size());
-    std::vector<int> fill(offsets_.begin(), offsets_.end() - 1);
-    for (std::size_t e = 0; e < edges_.size(); ++e) {
+    for (std::size_t e = edges_.size(); e-- > 0;) {
         const Edge& edge = edges_[e];
         const int id = static_cast<int>(e);
-        incidences_[static_cast<std::size_t>(fill[static_cast<std::size_t>(edge.first)]++)] = {
-            id, edge.second, edge.sideOfFirst};
-        incidences_[static_cast<std::size_t>(fill[static_cast<std::size_t>(edge.second)]++)] = {
-            id, edge.first, oppositeSide(edge.sideOfFirst)};
+        incidences_[static_cast<std::size_t>(--offsets_[static_cast<std::size_t>(edge.first)])] = id;
+        incidences_[static_cast<std::size_t>(--offsets_[static_cast<std::size_t>(edge.second)])] = id;
     }
 }
 

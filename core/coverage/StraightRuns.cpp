@@ -160,8 +160,8 @@ std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
     // conflicts with at most four north-south ones.
     targets.reserve(4 * leftEdges.size());
     auto conflictsOf = [&](int edge, auto&& visit) {
-        for (int node :
-             {edges[static_cast<std::size_t>(edge)].first, edges[static_cast<std::size_t>(edge)].second})
+        const auto& ends = edges[static_cast<std::size_t>(edge)];
+        for (const int node : {ends.first, static_cast<int>(ends.second)})
             for (const auto& incidence : adjacency.incident(node))
                 if (edges[static_cast<std::size_t>(incidence.edge)].straight && !isHorizontal(incidence.side))
                     visit(vertexOfEdge[static_cast<std::size_t>(incidence.edge)]);

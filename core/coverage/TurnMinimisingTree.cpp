@@ -240,7 +240,7 @@ void TurnMinimisingTree::joinRuns(const std::vector<char>& inRuns) {
         }
         components.unite(e.first, e.second);
         link(edge);
-        for (int node : {e.first, e.second})
+        for (const int node : {e.first, static_cast<int>(e.second)})
             for (const auto& incidence : adjacency_.incident(node))
                 if (inTree_[static_cast<std::size_t>(incidence.edge)] == 0 &&
                     components.find(incidence.other) != components.find(node))

@@ -132,7 +132,7 @@ class TurnMinimisingTreeTest : public QObject {
             QVERIFY(edges[e].straight);
             const bool horizontal =
                 edges[e].sideOfFirst == CellSide::East || edges[e].sideOfFirst == CellSide::West;
-            for (int node : {edges[e].first, edges[e].second})
+            for (int node : {edges[e].first, int{edges[e].second}})
                 keptSides[static_cast<std::size_t>(node)] |= horizontal ? 1U : 2U;
             ++keptCount;
         }
@@ -177,7 +177,7 @@ class TurnMinimisingTreeTest : public QObject {
         std::vector<std::vector<int>> conflicts(left.size());
         for (std::size_t l = 0; l < left.size(); ++l)
             for (int node : {edges[static_cast<std::size_t>(left[l])].first,
-                             edges[static_cast<std::size_t>(left[l])].second})
+                             int{edges[static_cast<std::size_t>(left[l])].second}})
                 for (const auto& incidence : adjacency.incident(node))
                     if (edges[static_cast<std::size_t>(incidence.edge)].straight &&
                         !horizontal(static_cast<std::size_t>(incidence.edge)))
@@ -206,7 +206,7 @@ class TurnMinimisingTreeTest : public QObject {
         std::vector<unsigned> keptSides(adjacency.nodeCount(), 0);
         for (std::size_t e = 0; e < edges.size(); ++e)
             if (kept[e] != 0)
-                for (int node : {edges[e].first, edges[e].second})
+                for (int node : {edges[e].first, int{edges[e].second}})
                     keptSides[static_cast<std::size_t>(node)] |= horizontal(e) ? 1U : 2U;
         QVERIFY(std::none_of(keptSides.begin(), keptSides.end(), [](unsigned sides) { return sides == 3U; }));
         QVERIFY(matching > 100); // the map is big enough for the matching to matter
