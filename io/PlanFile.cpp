@@ -87,6 +87,22 @@ ParameterValues getParameters(CompressedReader& in) {
     return parameters;
 }
 
+// As two lists (offsets, then neighbours), the way a reader of the format finds them, made cell by cell:
+// a grid keeps none to write at once.
+void putNeighbours(CompressedWriter& out, const CellGraph& graph) {
+    out.put(static_cast<std::uint64_t>(graph.size() + 1));
+    std::size_t listed = 0;
+    out.put(0);
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        listed += graph.neighbours(static_cast<int>(id)).size();
+        out.put(static_cast<int>(listed));
+    }
+    out.put(static_cast<std::uint64_t>(listed));
+    for (std::size_t id = 0; id < graph.size(); ++id)
+        for (const int neighbour : graph.neighbours(static_cast<int>(id)))
+            out.put(neighbour);
+}
+
 void putCells(CompressedWriter& out, const CellGraph& graph) {
     const GridFrame& frame = graph.frame();
     out.put(frame.originX);
@@ -111,8 +127,7 @@ void putCells(CompressedWriter& out, const CellGraph& graph) {
         out.put(cell.freeSubCells);
         out.put(cell.expectedTurnsPerSubCell);
     }
-    out.putAll(graph.adjacency().offsets());
-    out.putAll(graph.adjacency().neighbours());
+    putNeighbours(out, graph);
     out.put(static_cast<std::uint64_t>(graph.fieldsOfView.size()));
     for (const RoundedFieldOfView& rounded : graph.fieldsOfView) {
         out.put(rounded.classValue);

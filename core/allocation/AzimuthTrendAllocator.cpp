@@ -9,6 +9,7 @@
 #include "core/allocation/StartComponents.hpp"
 #include "core/allocation/TreePieces.hpp"
 #include "core/model/LocalConnectivity.hpp"
+#include "core/model/NeighbourSource.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,18 +41,18 @@ struct RobotState {
 
 class Allocation {
   public:
-    Allocation(const NeighbourTopology& adjacency, std::vector<CellFigures> figures,
+    Allocation(NeighbourSource neighbours, std::vector<CellFigures> figures,
                const std::vector<int>& startCells, const ProgressReporter& progress)
-        : adjacency_(adjacency), progress_(progress), cellCount_(static_cast<int>(figures.size())),
+        : neighbours_(neighbours), progress_(progress), cellCount_(static_cast<int>(figures.size())),
           owner_(static_cast<std::size_t>(cellCount_), unreachable), cells_(std::move(figures)),
-          connectivity_(adjacency), robots_(startCells.size()), centreX_(startCells.size()),
+          connectivity_(neighbours), robots_(startCells.size()), centreX_(startCells.size()),
           centreY_(startCells.size()) {
         // Cells in no start's component are unreachable from the outset and never considered.
         std::vector<int> queue(startCells.begin(), startCells.end());
         for (int start : startCells)
             owner_[static_cast<std::size_t>(start)] = unassigned;
         for (std::size_t head = 0; head < queue.size(); ++head) {
-            for (int neighbour : adjacency.of(queue[head])) {
+            for (int neighbour : neighbours.of(queue[head])) {
                 if (owner_[static_cast<std::size_t>(neighbour)] == unreachable) {
                     owner_[static_cast<std::size_t>(neighbour)] = unassigned;
                     queue.push_back(neighbour);
@@ -221,7 +222,7 @@ class Allocation {
     }
 
     bool touchesRegion(int cell, int robot) const {
-        for (int neighbour : adjacency_.of(cell))
+        for (int neighbour : neighbours_.of(cell))
             if (owner_[static_cast<std::size_t>(neighbour)] == robot)
                 return true;
         return false;
@@ -267,7 +268,7 @@ class Allocation {
 
     void pushNeighbours(int robot, int cell) {
         RobotState& state = robots_[static_cast<std::size_t>(robot)];
-        for (int neighbour : adjacency_.of(cell)) {
+        for (int neighbour : neighbours_.of(cell)) {
             const int owner = owner_[static_cast<std::size_t>(neighbour)];
             if (owner == unassigned) {
                 state.frontier.push(growthKey(robot, neighbour), neighbour);
@@ -303,7 +304,7 @@ class Allocation {
         const auto next = static_cast<std::size_t>(state.frontier.top().second);
         __builtin_prefetch(&owner_[next]);
         __builtin_prefetch(&cells_[next]);
-        __builtin_prefetch(&adjacency_.offsets()[next]);
+        neighbours_.prefetch(static_cast<int>(next));
     }
 
     int popUnassignedCandidate(int robot) {
@@ -444,7 +445,7 @@ class Allocation {
         pushNeighbours(robot, cell);
         robots_[static_cast<std::size_t>(donor)].finished = false;
         // The donor may now reach cells again through its remaining border.
-        for (int neighbour : adjacency_.of(cell))
+        for (int neighbour : neighbours_.of(cell))
             if (owner_[static_cast<std::size_t>(neighbour)] == donor)
                 pushNeighbours(donor, neighbour);
         return robots_[static_cast<std::size_t>(robot)].frontier.size() == frontierBefore;
@@ -502,7 +503,7 @@ class Allocation {
             const int owner = owner_[static_cast<std::size_t>(cell)];
             if (owner < 0)
                 continue;
-            for (int neighbour : adjacency_.of(cell)) {
+            for (int neighbour : neighbours_.of(cell)) {
                 const int other = owner_[static_cast<std::size_t>(neighbour)];
                 if (other >= 0 && other != owner)
                     ++regionContacts_[static_cast<std::size_t>(owner) * robots_.size() +
@@ -516,7 +517,7 @@ class Allocation {
         const int owner = owner_[static_cast<std::size_t>(cell)];
         bool onBoundary = false;
         if (owner >= 0) {
-            for (int neighbour : adjacency_.of(cell)) {
+            for (int neighbour : neighbours_.of(cell)) {
                 const int other = owner_[static_cast<std::size_t>(neighbour)];
                 if (other >= 0 && other != owner) {
                     onBoundary = true;
@@ -545,7 +546,7 @@ class Allocation {
 
     void updateBoundaryAround(int cell) {
         refreshBoundary(cell);
-        for (int neighbour : adjacency_.of(cell))
+        for (int neighbour : neighbours_.of(cell))
             refreshBoundary(neighbour);
     }
 
@@ -555,7 +556,7 @@ class Allocation {
         forgetHandOvers(from);
         forgetHandOvers(to);
         const std::size_t n = robots_.size();
-        for (int neighbour : adjacency_.of(cell)) {
+        for (int neighbour : neighbours_.of(cell)) {
             const int other = owner_[static_cast<std::size_t>(neighbour)];
             if (other < 0)
                 continue;
@@ -626,7 +627,7 @@ class Allocation {
         if (previous >= 0)
             facingKnown_[static_cast<std::size_t>(previous)] = 0;
         facingKnown_[static_cast<std::size_t>(owner_[static_cast<std::size_t>(cell)])] = 0;
-        for (int neighbour : adjacency_.of(cell))
+        for (int neighbour : neighbours_.of(cell))
             if (const int owner = owner_[static_cast<std::size_t>(neighbour)]; owner >= 0)
                 facingKnown_[static_cast<std::size_t>(owner)] = 0;
     }
@@ -640,7 +641,7 @@ class Allocation {
         for (int cell : boundaries_[static_cast<std::size_t>(from)]) {
             if (cell == start)
                 continue;
-            for (int neighbour : adjacency_.of(cell)) {
+            for (int neighbour : neighbours_.of(cell)) {
                 const int other = owner_[static_cast<std::size_t>(neighbour)];
                 if (other < 0 || other == from)
                     continue;
@@ -735,7 +736,7 @@ class Allocation {
         return false;
     }
 
-    const NeighbourTopology& adjacency_;
+    NeighbourSource neighbours_;
     const ProgressReporter& progress_;
     int cellCount_;
     std::vector<int> owner_;
@@ -792,7 +793,7 @@ RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int r
 
 RegionAllocation grownCellByCell(const CellGraph& graph, const std::vector<int>& startCells,
                                  int rebalanceIterations, const ProgressReporter& progress) {
-    Allocation allocation(graph.adjacency(), cellFiguresOf(graph), startCells, progress);
+    Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
     allocation.grow();
     return evenedOut(allocation, graph, rebalanceIterations, progress);
 }
@@ -900,7 +901,7 @@ RegionAllocation AzimuthTrendAllocator::rebalance(const CellGraph& graph, const 
     constexpr double mostMoves = 4096.0;
     if (division.robotOfCell.size() == graph.size() && division.startCell == startCells) {
         progress.report("allocation", 0.0);
-        Allocation allocation(graph.adjacency(), cellFiguresOf(graph), startCells, progress);
+        Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
         if (allocation.adopt(division) && allocation.movesToEvenOut() <= mostMoves)
             return evenedOut(allocation, graph, rebalanceIterations_, progress);
     } // gone before a new one is grown: on a large map each holds hundreds of megabytes
@@ -951,7 +952,7 @@ RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph
         division = evenedOutOnPieces(levels, startCells, rebalanceIterations_, progress);
         finestPieceOfCell = std::move(levels.back().blockOfCell);
     } // the pieces' figures and adjacency gone before the cells' allocation is made
-    Allocation allocation(graph.adjacency(), cellFiguresOf(graph), startCells, progress);
+    Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
     if (division && allocation.adopt(cellsTakeTheirBlocks(*division, finestPieceOfCell, startCells)))
         return evenedOut(allocation, graph, rebalanceIterations_, progress);
     return grownCellByCell(graph, startCells, rebalanceIterations_, progress);

@@ -16,7 +16,8 @@ std::vector<int> expandRegions(const CellGraph& graph, const std::vector<int>& s
     for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
         const int cell = startCells[robot];
         owner[static_cast<std::size_t>(cell)] = static_cast<int>(robot);
-        frontier[robot].assign(graph.neighbours(cell).begin(), graph.neighbours(cell).end());
+        const NeighbourList around = graph.neighbours(cell);
+        frontier[robot].assign(around.begin(), around.end());
         turns.emplace(graph.cell(cell).coverSeconds(), static_cast<int>(robot));
     }
     while (!turns.empty()) {

@@ -40,17 +40,23 @@ CellGraph cellGraphOfQuadTree(QuadTree tree, NeighbourTopology topology) {
     return graph;
 }
 
-CellGraph cellGraphOfQuadTree(OneLevelQuadTree grid, NeighbourTopology topology) {
-    CellGraph graph(grid.frame, std::move(grid.cells), std::move(topology));
+CellGraph cellGraphOfQuadTree(OneLevelQuadTree grid, bool withLists) {
+    CellGraph graph;
+    if (withLists) {
+        NeighbourTopology topology = NeighbourTopologyBuilder{}.build(grid);
+        graph = CellGraph(grid.frame, std::move(grid.cells), std::move(topology));
+    } else {
+        graph = CellGraph::ofGrid(grid.frame, std::move(grid.cells));
+    }
     graph.fieldsOfView = std::move(grid.roundedFieldsOfView);
     graph.passableAreaSquareMetres = grid.passableAreaSquareMetres + grid.areaRounding;
     return graph;
 }
 
-CellGraph cellGraphOfLeaves(QuadTreeLeaves leaves) {
+CellGraph cellGraphOfLeaves(QuadTreeLeaves leaves, std::size_t fewestCellsWithoutLists) {
     if (auto* grid = std::get_if<OneLevelQuadTree>(&leaves)) {
-        NeighbourTopology topology = NeighbourTopologyBuilder{}.build(*grid);
-        return cellGraphOfQuadTree(std::move(*grid), std::move(topology));
+        const bool withLists = grid->cells.size() < fewestCellsWithoutLists;
+        return cellGraphOfQuadTree(std::move(*grid), withLists);
     }
     auto& tree = std::get<QuadTree>(leaves);
     NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);

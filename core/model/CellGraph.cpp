@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -44,6 +45,50 @@ CellGraph::CellGraph(GridFrame frame, std::vector<CellRecord> records, Neighbour
         locator_.emplace_back(span, idsInPlacementOrder(span, count));
 }
 
+CellGraph CellGraph::ofGrid(GridFrame frame, std::vector<CellRecord> records) {
+    CellGraph graph;
+    graph.frame_ = frame;
+    if (frame.levels != 1)
+        throw std::invalid_argument("a grid's cell graph of " + std::to_string(frame.levels) + " levels");
+    graph.occupancy_ = GridOccupancy(frame.columns, frame.rows, records);
+    graph.records_ = std::move(records);
+    return graph;
+}
+
+CellGraph::CellGraph(const CellGraph& sameCells, std::vector<CellRecord> records)
+    : frame_(sameCells.frame_), records_(std::move(records)), adjacency_(sameCells.adjacency_),
+      occupancy_(sameCells.occupancy_), locator_(sameCells.locator_) {
+    if (records_.size() != sameCells.records_.size())
+        throw std::invalid_argument("a cell graph's figures for " + std::to_string(records_.size()) +
+                                    " cells where it has " + std::to_string(sameCells.records_.size()));
+}
+
+bool CellGraph::areNeighbours(int a, int b) const {
+    if (!occupancy_.empty()) { // grid cells of one size: side by side in a row or a column
+        const CellRecord& first = record(a);
+        const CellRecord& second = record(b);
+        return std::abs(first.column - second.column) + std::abs(first.row - second.row) == 1;
+    }
+    const NeighbourList list = neighbours(a);
+    return std::find(list.begin(), list.end(), b) != list.end();
+}
+
+NeighbourTopology CellGraph::neighbourLists() const {
+    if (occupancy_.empty())
+        return adjacency_;
+    std::vector<int> offsets;
+    std::vector<int> neighbours;
+    offsets.reserve(records_.size() + 1);
+    neighbours.reserve(records_.size() * NeighbourList::mostWorkedOut);
+    offsets.push_back(0);
+    for (std::size_t id = 0; id < records_.size(); ++id) {
+        for (const int neighbour : neighboursOnGrid(static_cast<int>(id)))
+            neighbours.push_back(neighbour);
+        offsets.push_back(static_cast<int>(neighbours.size()));
+    }
+    return {std::move(offsets), std::move(neighbours)};
+}
+
 // The cells of one span ordered by placement. Decompositions mostly list cells in that order already (a
 // uniform grid or a one-level quadtree row by row): then the ids are taken as they are, without sorting
 // tens of millions of keys.
@@ -79,6 +124,8 @@ int CellGraph::cellAt(MapPoint point) const {
     const double row = std::floor((frame_.originY - point.y) / frame_.bottomCellSize);
     if (!(column >= 0 && row >= 0 && column < frame_.columns && row < frame_.rows)) // false for NaN too
         return -1;
+    if (!occupancy_.empty())
+        return occupancy_.idAt(static_cast<int>(column), static_cast<int>(row));
     for (const auto& [span, ids] : locator_) {
         const std::uint64_t key =
             placementKey(static_cast<long long>(row) / span, static_cast<long long>(column) / span);

@@ -4,6 +4,8 @@
 #include "core/model/CellRange.hpp"
 #include "core/model/CellRecord.hpp"
 #include "core/model/GridFrame.hpp"
+#include "core/model/GridOccupancy.hpp"
+#include "core/model/NeighbourList.hpp"
 #include "core/model/NeighbourTopology.hpp"
 #include "core/model/RoundedFieldOfView.hpp"
 #include "core/model/TurnTimeModel.hpp"
@@ -25,6 +27,11 @@ class CellGraph {
     // Cells made by hand or changed by a planner: each must lie where its column, row and span place it on
     // the frame, as only those are kept.
     CellGraph(GridFrame frame, const std::vector<Cell>& cells, NeighbourTopology adjacency);
+    // The cells of a one-level grid, listed row by row (span 1): each cell's neighbours are found on the
+    // grid when asked for, and no lists are kept.
+    static CellGraph ofGrid(GridFrame frame, std::vector<CellRecord> records);
+    // The cells of `sameCells`, in the same places and with the same neighbours, with other figures.
+    CellGraph(const CellGraph& sameCells, std::vector<CellRecord> records);
 
     [[nodiscard]] const GridFrame& frame() const { return frame_; }
     [[nodiscard]] std::size_t size() const { return records_.size(); }
@@ -34,12 +41,25 @@ class CellGraph {
     [[nodiscard]] CellRange cells() const { return {records_, frame_}; }
     [[nodiscard]] const CellRecord& record(int id) const { return records_[static_cast<std::size_t>(id)]; }
     [[nodiscard]] const std::vector<CellRecord>& records() const { return records_; }
-    [[nodiscard]] std::span<const int> neighbours(int id) const { return adjacency_.of(id); }
-    [[nodiscard]] bool areNeighbours(int a, int b) const { return adjacency_.areNeighbours(a, b); }
-    [[nodiscard]] const NeighbourTopology& adjacency() const { return adjacency_; }
+    [[nodiscard]] NeighbourList neighbours(int id) const {
+        if (occupancy_.empty())
+            return NeighbourList(adjacency_.of(id));
+        return neighboursOnGrid(id);
+    }
+    [[nodiscard]] bool areNeighbours(int a, int b) const;
+    // Asks the cache for what neighbours(id) will read.
+    void prefetchNeighbours(int id) const {
+        if (occupancy_.empty())
+            __builtin_prefetch(adjacency_.offsets().data() + id);
+        else
+            __builtin_prefetch(records_.data() + id);
+    }
+    // Every cell's neighbours as lists (cell i's: neighbours()[offsets()[i] ... offsets()[i + 1])), made
+    // for a grid that keeps none.
+    [[nodiscard]] NeighbourTopology neighbourLists() const;
     // Whether every cell has the same span (a grid, or a quadtree of one level): then no step joins cells of
     // different sizes.
-    [[nodiscard]] bool hasOneCellSize() const { return locator_.size() <= 1; }
+    [[nodiscard]] bool hasOneCellSize() const { return !occupancy_.empty() || locator_.size() <= 1; }
     // The cell holding the point, or -1 where there is none (obstacle, outside, beyond the grid).
     [[nodiscard]] int cellAt(MapPoint point) const;
     // Gives every cell the time a turn costs there, so its cost counts turns. Decompositions leave it 0.
@@ -53,10 +73,27 @@ class CellGraph {
 
   private:
     [[nodiscard]] std::vector<int> idsInPlacementOrder(int span, std::size_t count) const;
+    [[nodiscard]] NeighbourList neighboursOnGrid(int id) const {
+        // North, east, south, west: the order the quadtree's neighbour lists give. Cells are listed row by
+        // row, so a cell's east and west neighbours are the ids beside its own: only the rows above and
+        // below need counting.
+        const CellRecord& cell = records_[static_cast<std::size_t>(id)];
+        NeighbourList found;
+        if (const int north = occupancy_.idAt(cell.column, cell.row - 1); north >= 0)
+            found.add(north);
+        if (occupancy_.holds(cell.column + 1, cell.row))
+            found.add(id + 1);
+        if (const int south = occupancy_.idAt(cell.column, cell.row + 1); south >= 0)
+            found.add(south);
+        if (occupancy_.holds(cell.column - 1, cell.row))
+            found.add(id - 1);
+        return found;
+    }
 
     GridFrame frame_;
     std::vector<CellRecord> records_;
-    NeighbourTopology adjacency_;
+    NeighbourTopology adjacency_; // empty where occupancy_ finds the neighbours
+    GridOccupancy occupancy_;
     // Per distinct span: its cells sorted by (row / span, column / span), for cellAt. Ids only, the key
     // worked out from the cell: 4 bytes a cell instead of 16 (70 MB instead of 280 MB on 17.6 M cells).
     std::vector<std::pair<int, std::vector<int>>> locator_;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/model/CellGraph.hpp"
+#include "core/model/NeighbourSource.hpp"
 
 #include <vector>
 
@@ -12,15 +12,14 @@ namespace mcpp {
 // One instance serves many checks on one graph (a stamp per cell, no clearing between them).
 class LocalConnectivity {
   public:
-    explicit LocalConnectivity(const CellGraph& graph) : LocalConnectivity(graph.adjacency()) {}
-    explicit LocalConnectivity(const NeighbourTopology& adjacency)
-        : adjacency_(adjacency), stamp_(adjacency.cellCount(), 0) {}
+    explicit LocalConnectivity(NeighbourSource neighbours)
+        : neighbours_(neighbours), stamp_(neighbours.count(), 0) {}
 
     // owner: the region of every graph cell. False for a cell none of its region touches.
     [[nodiscard]] bool canRemove(int cell, const std::vector<int>& owner, std::size_t searchLimit);
 
   private:
-    const NeighbourTopology& adjacency_;
+    NeighbourSource neighbours_;
     std::vector<int> stamp_;
     int stampValue_ = 0;
     std::vector<int> targets_;

@@ -147,7 +147,7 @@ CellGraph priceForDetection(const CellGraph& cells, const DetectionModel& model,
             cell.speedMetresPerSecond = static_cast<float>(
                 cell.speedMetresPerSecond / passesOfProfile[static_cast<std::size_t>(profile)]);
     }
-    return CellGraph(cells.frame(), std::move(priced), cells.adjacency());
+    return CellGraph(cells, std::move(priced));
 }
 
 void warnOfMisses(PlanningRun& run, const DetectionSummary& summary, const DetectionModel& model) {

@@ -1,9 +1,12 @@
+#include "core/allocation/AzimuthTrendAllocator.hpp"
+#include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/decomposition/QuadTreeDecomposition.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <random>
 #include <set>
 
 using namespace mcpp;
@@ -177,6 +180,137 @@ class NeighbourTopologyTest : public QObject {
         }
         QVERIFY(spansSeen >= 3); // cells of three sizes at least, so every size's list is searched
         QVERIFY(holesSeen > 0);  // and searches that find nothing
+    }
+
+    // A grid's graph keeps no neighbour lists and finds each cell's neighbours on the grid: the same ids,
+    // in the same order, as the lists of the one-level quadtree's builder, on grids with holes of every
+    // shape; every place finds its cell or none; a graph of the same cells with other figures keeps them.
+    void aGridFindsTheNeighboursItsListsWouldHold() {
+        std::size_t holes = 0;
+        for (std::uint32_t seed = 1; seed <= 8; ++seed) {
+            std::mt19937 random(seed);
+            OneLevelQuadTree grid;
+            grid.frame.originX = 600000.0;
+            grid.frame.originY = 5200000.0;
+            grid.frame.bottomCellSize = 20.0;
+            grid.frame.columns = 61 + static_cast<int>(seed); // rows of 62-69 places: words end mid-row
+            grid.frame.rows = 17 + static_cast<int>(seed % 4);
+            grid.frame.levels = 1;
+            for (int row = 0; row < grid.frame.rows; ++row)
+                for (int column = 0; column < grid.frame.columns; ++column) {
+                    if (random() % (2 + seed % 5) == 0) {
+                        ++holes;
+                        continue;
+                    }
+                    CellRecord cell;
+                    cell.column = column;
+                    cell.row = row;
+                    cell.classValue = static_cast<int>(random() % 3);
+                    cell.speedMetresPerSecond = 1.0F;
+                    grid.cells.push_back(cell);
+                }
+            const NeighbourTopology lists = NeighbourTopologyBuilder{}.build(grid);
+            const CellGraph graph = CellGraph::ofGrid(grid.frame, grid.cells);
+            QVERIFY(graph.hasOneCellSize());
+            QCOMPARE(graph.neighbourLists().offsets(), lists.offsets());
+            QCOMPARE(graph.neighbourLists().neighbours(), lists.neighbours());
+            std::vector<CellRecord> faster = grid.cells;
+            for (CellRecord& cell : faster)
+                cell.speedMetresPerSecond = 3.0F;
+            const CellGraph repriced(graph, faster);
+            for (std::size_t id = 0; id < graph.size(); ++id) {
+                const auto expected = lists.of(static_cast<int>(id));
+                const NeighbourList found = graph.neighbours(static_cast<int>(id));
+                QVERIFY(std::equal(found.begin(), found.end(), expected.begin(), expected.end()));
+                const NeighbourList kept = repriced.neighbours(static_cast<int>(id));
+                QVERIFY(std::equal(kept.begin(), kept.end(), expected.begin(), expected.end()));
+                for (const int neighbour : expected)
+                    QVERIFY(graph.areNeighbours(static_cast<int>(id), neighbour));
+                QVERIFY(!graph.areNeighbours(static_cast<int>(id), static_cast<int>(id)));
+                QCOMPARE(repriced.record(static_cast<int>(id)).speedMetresPerSecond, 3.0F);
+            }
+            std::vector<int> owner(static_cast<std::size_t>(grid.frame.columns) * grid.frame.rows, -1);
+            for (std::size_t id = 0; id < grid.cells.size(); ++id)
+                owner[static_cast<std::size_t>(grid.cells[id].row) * grid.frame.columns +
+                      grid.cells[id].column] = static_cast<int>(id);
+            for (int row = 0; row < grid.frame.rows; ++row)
+                for (int column = 0; column < grid.frame.columns; ++column) {
+                    const MapPoint centre{grid.frame.originX + (column + 0.5) * grid.frame.bottomCellSize,
+                                          grid.frame.originY - (row + 0.5) * grid.frame.bottomCellSize};
+                    QCOMPARE(graph.cellAt(centre),
+                             owner[static_cast<std::size_t>(row) * grid.frame.columns + column]);
+                }
+            QCOMPARE(graph.cellAt({grid.frame.originX - 1.0, grid.frame.originY - 1.0}), -1);
+            QCOMPARE(graph.cellAt({grid.frame.originX + 1.0, grid.frame.originY + 1.0}), -1);
+        }
+        QVERIFY(holes > 100);
+    }
+
+    // Only a grid's cells listed row by row, each once, make a grid's graph.
+    void aGridOfCellsOutOfOrderIsRefused() {
+        GridFrame frame;
+        frame.columns = 4;
+        frame.rows = 3;
+        frame.levels = 1;
+        CellRecord first;
+        first.column = 2;
+        first.row = 1;
+        CellRecord second = first;
+        second.column = 1; // west of the first, listed after it
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CellGraph::ofGrid(frame, {first, second}));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CellGraph::ofGrid(frame, {first, first}));
+        CellRecord outside = first;
+        outside.column = 4;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CellGraph::ofGrid(frame, {outside}));
+        CellRecord larger = first;
+        larger.span = 2;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CellGraph::ofGrid(frame, {larger}));
+        second.column = 3;
+        QCOMPARE(CellGraph::ofGrid(frame, {first, second}).neighbours(0).size(), std::size_t{1});
+        frame.levels = 2;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CellGraph::ofGrid(frame, {first, second}));
+    }
+
+    // A large grid's graph finds neighbours on the grid instead of keeping lists: the regions and paths
+    // planned on it are those planned on the lists, point for point.
+    void regionsAndPathsAreTheSameWithoutLists() {
+        for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+            test::RandomMapSpec spec;
+            spec.columns = 64;
+            spec.rows = 48;
+            spec.obstacleFraction = 0.12;
+            spec.robots = 3 + static_cast<int>(seed);
+            spec.seed = seed;
+            const PlanningProblem problem = test::randomProblem(spec);
+            const auto graphOf = [&](std::size_t fewestCellsWithoutLists) {
+                return cellGraphOfLeaves(QuadTreeBuilder{}.buildLeaves(problem.grid, problem.classes, {}),
+                                         fewestCellsWithoutLists);
+            };
+            const CellGraph withLists = graphOf(fewestCellsForGridNeighbours);
+            const CellGraph withoutLists = graphOf(0);
+            QVERIFY(withLists.hasOneCellSize());
+            QVERIFY(withLists.size() > 1000);
+            QCOMPARE(withoutLists.neighbourLists().neighbours(), withLists.neighbourLists().neighbours());
+            std::vector<int> startCells;
+            for (const MapPoint& start : problem.starts)
+                startCells.push_back(withLists.cellAt(start));
+            const AzimuthTrendAllocator allocator;
+            const RegionAllocation regions = allocator.allocate(withLists, startCells, {});
+            QCOMPARE(allocator.allocate(withoutLists, startCells, {}).robotOfCell, regions.robotOfCell);
+            const SpanningTreeCoverage coverage;
+            const auto paths = coverage.plan(withLists, regions, problem.starts, {});
+            const auto pathsWithoutLists = coverage.plan(withoutLists, regions, problem.starts, {});
+            QCOMPARE(pathsWithoutLists.size(), paths.size());
+            for (std::size_t robot = 0; robot < paths.size(); ++robot) {
+                QVERIFY(paths[robot].waypoints.size() > 10);
+                QCOMPARE(pathsWithoutLists[robot].waypoints.size(), paths[robot].waypoints.size());
+                for (std::size_t at = 0; at < paths[robot].waypoints.size(); ++at) {
+                    QCOMPARE(pathsWithoutLists[robot].waypoints[at].x, paths[robot].waypoints[at].x);
+                    QCOMPARE(pathsWithoutLists[robot].waypoints[at].y, paths[robot].waypoints[at].y);
+                }
+                QCOMPARE(pathsWithoutLists[robot].turns, paths[robot].turns);
+            }
+        }
     }
 };
 

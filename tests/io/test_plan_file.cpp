@@ -50,8 +50,8 @@ void compareCells(const CellGraph& a, const CellGraph& b) {
         QVERIFY(x.speedMetresPerSecond == y.speedMetresPerSecond &&
                 x.passableAreaSquareMetres == y.passableAreaSquareMetres && x.freeSubCells == y.freeSubCells);
     }
-    QCOMPARE(a.adjacency().offsets(), b.adjacency().offsets());
-    QCOMPARE(a.adjacency().neighbours(), b.adjacency().neighbours());
+    QCOMPARE(a.neighbourLists().offsets(), b.neighbourLists().offsets());
+    QCOMPARE(a.neighbourLists().neighbours(), b.neighbourLists().neighbours());
     QCOMPARE(a.fieldsOfView.size(), b.fieldsOfView.size());
     QCOMPARE(a.passableAreaSquareMetres, b.passableAreaSquareMetres);
     // The locator is rebuilt: every cell is found at its centre.

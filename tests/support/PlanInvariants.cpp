@@ -117,9 +117,12 @@ std::vector<std::string> checkCells(const Plan& plan) {
     std::vector<std::string> violations;
     const CellGraph& graph = plan.cells;
     const GridFrame& frame = graph.frame();
-    if (graph.adjacency().cellCount() != graph.size())
-        return {"adjacency lists " + std::to_string(graph.adjacency().cellCount()) + " cells for " +
-                std::to_string(graph.size())};
+    for (std::size_t id = 0; id < graph.size(); ++id)
+        for (const int neighbour : graph.neighbours(static_cast<int>(id)))
+            if (neighbour < 0 || static_cast<std::size_t>(neighbour) >= graph.size() ||
+                !graph.areNeighbours(neighbour, static_cast<int>(id)))
+                return {cellName(static_cast<int>(id)) + " lists " + std::to_string(neighbour) +
+                        " as a neighbour, which does not list it back"};
     for (std::size_t id = 0; id < graph.size(); ++id) {
         const Cell& cell = graph.cell(static_cast<int>(id));
         if (!onPlacement(frame, cell))
