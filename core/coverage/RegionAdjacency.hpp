@@ -63,7 +63,6 @@ class RegionAdjacency {
             : edges_(edges), begin_(begin), end_(end), node_(node) {}
         [[nodiscard]] Iterator begin() const { return {edges_, begin_, node_}; }
         [[nodiscard]] Iterator end() const { return {edges_, end_, node_}; }
-        [[nodiscard]] std::size_t size() const { return static_cast<std::size_t>(end_ - begin_); }
 
       private:
         const Edge* edges_;

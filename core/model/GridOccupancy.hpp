@@ -17,7 +17,6 @@ class GridOccupancy {
     GridOccupancy(int columns, int rows, const std::vector<CellRecord>& cells);
 
     [[nodiscard]] bool empty() const { return words_.empty(); }
-    [[nodiscard]] int columns() const { return columns_; }
     // Whether a cell lies at the place (false off the grid).
     [[nodiscard]] bool holds(int column, int row) const {
         if (column < 0 || row < 0 || column >= columns_ || row >= rows_)

@@ -19,7 +19,6 @@ class NeighbourTopology {
     }
     [[nodiscard]] std::size_t cellCount() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
     [[nodiscard]] std::size_t pairCount() const { return neighbours_.size() / 2; }
-    [[nodiscard]] bool areNeighbours(int a, int b) const;
     // The lists as stored, for saving a plan: cell i's neighbours are neighbours()[offsets()[i] ...
     // offsets()[i + 1]).
     [[nodiscard]] const std::vector<int>& offsets() const { return offsets_; }
