@@ -53,8 +53,8 @@ SizeChangeConnectors::SizeChangeConnectors(const CellGraph& graph, const std::ve
     : graph_(graph), cells_(cells), adjacency_(adjacency) {
     largerEnd_.reserve(adjacency.edges().size());
     for (const auto& edge : adjacency.edges()) {
-        const int firstSpan = cellOf(edge.first).span;
-        const int secondSpan = cellOf(edge.second).span;
+        const int firstSpan = recordOf(edge.first).span;
+        const int secondSpan = recordOf(edge.second).span;
         largerEnd_.push_back(firstSpan == secondSpan ? -1
                                                      : (firstSpan > secondSpan ? edge.first : edge.second));
     }
@@ -63,7 +63,7 @@ SizeChangeConnectors::SizeChangeConnectors(const CellGraph& graph, const std::ve
     turnSeconds_.reserve(cells.size());
     for (const int cell : cells)
         turnSeconds_.push_back(
-            std::max(static_cast<double>(graph.cell(cell).turnSecondsPer90Degrees), floorSeconds));
+            std::max(static_cast<double>(graph.record(cell).turnSecondsPer90Degrees), floorSeconds));
 }
 
 int SizeChangeConnectors::largerEnd(int edge) const {
@@ -73,7 +73,7 @@ int SizeChangeConnectors::largerEnd(int edge) const {
 const std::vector<SizeChangeConnectors::Neighbour>&
 SizeChangeConnectors::smallerNeighbours(int node, CellSide side, const std::vector<char>& inTree,
                                         int alsoEdge) const {
-    const int span = cellOf(node).span;
+    const int span = recordOf(node).span;
     const SidePassage passage = passageOf(side);
     std::vector<Neighbour>& found = neighbours_;
     found.clear();
@@ -81,9 +81,9 @@ SizeChangeConnectors::smallerNeighbours(int node, CellSide side, const std::vect
         if (incidence.side != side ||
             (inTree[static_cast<std::size_t>(incidence.edge)] == 0 && incidence.edge != alsoEdge))
             continue;
-        const Cell& other = cellOf(incidence.other);
-        if (other.span >= span)
+        if (recordOf(incidence.other).span >= span)
             continue;
+        const Cell other = cellOf(incidence.other);
         const double along = (passage.alongX ? other.centreX() : other.centreY()) * passage.sign;
         // Insertion in the walk's order: a side holds a few neighbours, as many as its size over theirs.
         found.push_back({along, incidence.other, incidence.edge});

@@ -48,6 +48,10 @@ class SizeChangeConnectors {
     [[nodiscard]] double passSeconds(int node, CellSide side, const std::vector<Neighbour>& neighbours,
                                      int leftOutEdge) const;
     [[nodiscard]] Cell cellOf(int node) const { return graph_.cell(cells_[static_cast<std::size_t>(node)]); }
+    // What the graph keeps of the cell, where its span is all that is asked: no square to work out.
+    [[nodiscard]] const CellRecord& recordOf(int node) const {
+        return graph_.record(cells_[static_cast<std::size_t>(node)]);
+    }
 
     const CellGraph& graph_;
     const std::vector<int>& cells_;
