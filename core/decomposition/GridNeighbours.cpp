@@ -32,27 +32,34 @@ NeighbourTopology gridNeighbours(const GridFrame& frame, const std::vector<Cell>
             return -1;
         return idAt[static_cast<std::size_t>(row) * columns + static_cast<std::size_t>(column)];
     };
-    std::vector<std::vector<int>> lists(cells.size());
-    const auto link = [&](std::size_t a, int b) {
-        lists[a].push_back(b);
-        lists[static_cast<std::size_t>(b)].push_back(static_cast<int>(a));
+    // Each link found twice, once to count and once to place: lists of their own per cell would cost a
+    // vector and a heap block a cell (several gigabytes on a map of tens of millions of cells).
+    const auto forEachLink = [&](auto&& visit) {
+        for (std::size_t id = 0; id < cells.size(); ++id) {
+            const Cell& cell = cells[id];
+            const int east = at(cell.column + 1, cell.row);
+            if (east >= 0 && passableEastward(cell, cells[static_cast<std::size_t>(east)]))
+                visit(id, static_cast<std::size_t>(east));
+            const int south = at(cell.column, cell.row + 1);
+            if (south >= 0 && passableSouthward(cell, cells[static_cast<std::size_t>(south)]))
+                visit(id, static_cast<std::size_t>(south));
+        }
     };
-    for (std::size_t id = 0; id < cells.size(); ++id) {
-        const Cell& cell = cells[id];
-        const int east = at(cell.column + 1, cell.row);
-        if (east >= 0 && passableEastward(cell, cells[static_cast<std::size_t>(east)]))
-            link(id, east);
-        const int south = at(cell.column, cell.row + 1);
-        if (south >= 0 && passableSouthward(cell, cells[static_cast<std::size_t>(south)]))
-            link(id, south);
-    }
-    std::vector<int> offsets{0};
-    std::vector<int> neighbours;
-    for (auto& list : lists) {
-        std::sort(list.begin(), list.end());
-        neighbours.insert(neighbours.end(), list.begin(), list.end());
-        offsets.push_back(static_cast<int>(neighbours.size()));
-    }
+    // Counted at each cell's place, summed to each cell's end, then filled backwards to each one's start.
+    std::vector<int> offsets(cells.size() + 1, 0);
+    forEachLink([&](std::size_t a, std::size_t b) {
+        ++offsets[a];
+        ++offsets[b];
+    });
+    for (std::size_t i = 1; i < offsets.size(); ++i)
+        offsets[i] += offsets[i - 1];
+    std::vector<int> neighbours(static_cast<std::size_t>(offsets.back()));
+    forEachLink([&](std::size_t a, std::size_t b) {
+        neighbours[static_cast<std::size_t>(--offsets[a])] = static_cast<int>(b);
+        neighbours[static_cast<std::size_t>(--offsets[b])] = static_cast<int>(a);
+    });
+    for (std::size_t id = 0; id < cells.size(); ++id)
+        std::sort(neighbours.begin() + offsets[id], neighbours.begin() + offsets[id + 1]);
     return NeighbourTopology(std::move(offsets), std::move(neighbours));
 }
 
