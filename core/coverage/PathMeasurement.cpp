@@ -1,5 +1,6 @@
 #include "core/coverage/PathMeasurement.hpp"
 
+#include "core/coverage/PathMeasurer.hpp"
 #include "core/coverage/PathShape.hpp"
 
 #include <algorithm>
@@ -10,20 +11,6 @@
 
 namespace mcpp {
 namespace {
-
-// The (cell, sub-cell) a waypoint marks when it sits on a sub-cell centre; cell -1 otherwise.
-std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& graph) {
-    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size())
-        return {-1, 0};
-    const Cell& cell = graph.cell(waypoint.cell);
-    const MapPoint point{waypoint.x, waypoint.y};
-    const SubCell subCell = cell.subCellAt(point);
-    const MapPoint centre = cell.subCellCentre(subCell);
-    const bool onCentre = centre.x == point.x && centre.y == point.y; // most points: no distance to work out
-    if (!onCentre && std::hypot(centre.x - point.x, centre.y - point.y) > 1e-6 * cell.size)
-        return {-1, 0};
-    return {waypoint.cell, static_cast<int>(subCell)};
-}
 
 // Whether a closed tour's last sub-cell visit returns to its first: that return is no repeated coverage.
 bool returnsToFirstVisit(const CoveragePath& path, const CellGraph& graph) {
@@ -69,6 +56,19 @@ int repeatsByMarking(const CoveragePath& path, const CellGraph& graph, std::vect
 }
 
 } // namespace
+
+std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& graph) {
+    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size())
+        return {-1, 0};
+    const Cell& cell = graph.cell(waypoint.cell);
+    const MapPoint point{waypoint.x, waypoint.y};
+    const SubCell subCell = cell.subCellAt(point);
+    const MapPoint centre = cell.subCellCentre(subCell);
+    const bool onCentre = centre.x == point.x && centre.y == point.y; // most points: no distance to work out
+    if (!onCentre && std::hypot(centre.x - point.x, centre.y - point.y) > 1e-6 * cell.size)
+        return {-1, 0};
+    return {waypoint.cell, static_cast<int>(subCell)};
+}
 
 int countTurns(const std::vector<Waypoint>& waypoints) {
     PathShape shape;
@@ -144,24 +144,27 @@ PathSeconds walkSeconds(const std::vector<Waypoint>& waypoints, const CellGraph&
     for (std::size_t i = first + 1; i <= last && i < waypoints.size(); ++i) {
         const Waypoint& from = waypoints[i - 1];
         const Waypoint& to = waypoints[i];
-        const Step step = stepOf(to.x - from.x, to.y - from.y);
-        const double length = step.length;
-        if (length > 0.0) {
-            const Direction out{step.x, step.y};
-            if (direction) {
-                const double turn = turnSecondsAt(from, direction->x, direction->y, out.x, out.y, graph);
-                seconds.turning += turn;
-                seconds.total += turn;
-            }
-            direction = out;
-        }
-        seconds.total += travelSeconds(length, from.speedMetresPerSecond, to.speedMetresPerSecond);
+        addStepSeconds(seconds, direction, from, to, stepOf(to.x - from.x, to.y - from.y), graph);
         atWaypoint(i, seconds.total);
     }
     return seconds;
 }
 
 } // namespace
+
+void addStepSeconds(PathSeconds& seconds, std::optional<Direction>& direction, const Waypoint& from,
+                    const Waypoint& to, const Step& step, const CellGraph& graph) {
+    if (step.length > 0.0) {
+        const Direction out{step.x, step.y};
+        if (direction) {
+            const double turn = turnSecondsAt(from, direction->x, direction->y, out.x, out.y, graph);
+            seconds.turning += turn;
+            seconds.total += turn;
+        }
+        direction = out;
+    }
+    seconds.total += travelSeconds(step.length, from.speedMetresPerSecond, to.speedMetresPerSecond);
+}
 
 PathSeconds pathSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
     if (waypoints.empty())
@@ -260,23 +263,12 @@ double pausedSecondsBetween(const std::vector<PathPause>& pauses, std::size_t fi
 }
 
 double connectorSeconds(const std::vector<Waypoint>& waypoints, const CellGraph& graph) {
-    double seconds = 0.0;
     if (graph.hasOneCellSize())
-        return seconds; // a pass over a path of hundreds of millions of points for nothing
-    for (std::size_t i = 1; i < waypoints.size(); ++i) {
-        const Waypoint& from = waypoints[i - 1];
-        const Waypoint& to = waypoints[i];
-        if (from.cell < 0 || to.cell < 0 || from.cell == to.cell ||
-            static_cast<std::size_t>(std::max(from.cell, to.cell)) >= graph.size())
-            continue;
-        const Cell& a = graph.cell(from.cell);
-        const Cell& b = graph.cell(to.cell);
-        if (a.span == b.span || !graph.areNeighbours(from.cell, to.cell))
-            continue;
-        seconds += secondsBeyondCellTravel(segmentLength(from, to), a.size, from.speedMetresPerSecond, b.size,
-                                           to.speedMetresPerSecond);
-    }
-    return seconds;
+        return 0.0; // a pass over a path of hundreds of millions of points for nothing
+    PathMeasurer measurer(graph);
+    for (const Waypoint& waypoint : waypoints)
+        measurer.add(waypoint);
+    return measurer.connectorSeconds();
 }
 
 void timePath(CoveragePath& path, const CellGraph& graph) {
@@ -294,15 +286,11 @@ double pathLengthMetres(const std::vector<Waypoint>& waypoints) {
 
 void measurePath(CoveragePath& path, const CellGraph& graph) {
     if (path.runsMerged())
-        return; // measured before its straight runs were merged, from every waypoint
-    // Length and turns in one pass: the shape adds the steps' lengths as pathLengthMetres does.
-    PathShape shape;
+        return;                   // measured before its straight runs were merged, from every waypoint
+    PathMeasurer measurer(graph); // length, turns, time and connectors in one pass
     for (const Waypoint& waypoint : path.waypoints)
-        shape.add(waypoint.x, waypoint.y);
-    path.lengthMetres = shape.lengthMetres();
-    path.turns = shape.turns();
-    timePath(path, graph);
-    path.connectorSeconds = connectorSeconds(path.waypoints, graph);
+        measurer.add(waypoint);
+    measurer.fill(path);
     path.repeatedSubCellVisits = countRepeatedSubCellVisits(path, graph);
 }
 

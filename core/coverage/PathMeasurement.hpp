@@ -5,6 +5,8 @@
 #include "core/model/Sortie.hpp"
 
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace mcpp {
@@ -37,6 +39,10 @@ struct Step {
         return {};
     return {length, dx / length, dy / length};
 }
+
+// The (cell, sub-cell) a waypoint marks when it sits on a sub-cell centre, the sub-cell as a SubCell's
+// number; cell -1 otherwise (a start point off the centres, a point in no cell).
+[[nodiscard]] std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& graph);
 
 // Direction changes along a polyline; steps of zero length are skipped and a U-turn counts once.
 [[nodiscard]] int countTurns(const std::vector<Waypoint>& waypoints);
@@ -106,6 +112,11 @@ struct Direction {
 };
 // The unit direction from a to b as measurements take it; (0, 0) when they coincide.
 [[nodiscard]] Direction unitDirection(double fromX, double fromY, double toX, double toY);
+
+// One step of a path's time as pathSeconds adds it up: the turn made at `from` from the way in
+// (`direction`, which the step then sets, when it has a length) and the travel to `to`.
+void addStepSeconds(PathSeconds& seconds, std::optional<Direction>& direction, const Waypoint& from,
+                    const Waypoint& to, const Step& step, const CellGraph& graph);
 
 // The longest of the paths' times: the makespan of measured paths.
 [[nodiscard]] double longestPathSeconds(const std::vector<CoveragePath>& paths);

@@ -2,7 +2,6 @@
 
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
-#include "core/coverage/StraightRunMerging.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/model/ParallelFor.hpp"
 
@@ -190,17 +189,18 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
         TreeCircumnavigation walker(graph);
         RegionTree& planned = trees[robot];
         planned.tree.unpack();
-        std::vector<Waypoint> walk =
-            walker.walkFromStart(planned.tree, starts[robot], closedTour_, planned.shape.points());
-        planned.tree = SpanningTree(); // freed once walked: all trees and all paths are never held together
-        // The walk already begins (and a closed one ends) at the start: pathFromWalk moves no waypoint.
-        paths[robot] = pathFromWalk(static_cast<int>(robot), starts[robot], std::move(walk), closedTour_);
         if (graph.size() >= cellsForMergedRuns_) {
-            measurePath(paths[robot], graph);
-            mergeStraightRuns(paths[robot], graph); // before the next robot's walk takes memory
+            paths[robot] =
+                walker.measuredWalk(planned.tree, static_cast<int>(robot), starts[robot], closedTour_);
         } else {
+            // The walk already begins (and a closed one ends) at the start: pathFromWalk moves no waypoint.
+            paths[robot] = pathFromWalk(
+                static_cast<int>(robot), starts[robot],
+                walker.walkFromStart(planned.tree, starts[robot], closedTour_, planned.shape.points()),
+                closedTour_);
             timePath(paths[robot], graph);
         }
+        planned.tree = SpanningTree(); // freed once walked: all trees and all paths are never held together
         const std::lock_guard lock(progressMutex);
         progress.report("waypoints", static_cast<double>(++finished) / static_cast<double>(paths.size()));
     });

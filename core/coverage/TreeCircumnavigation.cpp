@@ -1,7 +1,10 @@
 #include "core/coverage/TreeCircumnavigation.hpp"
 
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/PathMeasurer.hpp"
+#include "core/coverage/RepeatedVisitCounter.hpp"
 #include "core/coverage/RoundOrder.hpp"
+#include "core/coverage/StraightRunMerger.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -118,6 +121,61 @@ class ShapeSink {
     PathShape shape_;
 };
 
+// Makes the path StartedWaypointSink collects, measured and with its straight runs merged as it goes:
+// the whole walk, four waypoints a cell, is never held.
+class MeasuringSink {
+  public:
+    MeasuringSink(const CellGraph& graph, MapPoint start, bool closed)
+        : measurer_(graph), merger_(graph), visits_(graph), start_(start), closed_(closed) {}
+    void push(const Waypoint& waypoint) {
+        if (!haveFirst_) {
+            haveFirst_ = true;
+            first_ = waypoint;
+            if (!startIsOnWalk(waypoint, start_)) {
+                origin_ = waypoint;
+                origin_.x = start_.x;
+                origin_.y = start_.y;
+                haveOrigin_ = true;
+                feed(origin_);
+            }
+        }
+        last_ = waypoint;
+        feed(waypoint);
+    }
+    [[nodiscard]] const Waypoint& back() const { return last_; }
+    // The walk's first waypoint, as traverse wants, not the start point before it.
+    [[nodiscard]] const Waypoint& front() const { return first_; }
+    [[nodiscard]] CoveragePath finish(int robot) {
+        if (closed_ && haveOrigin_)
+            feed(origin_);
+        CoveragePath path;
+        path.robot = robot;
+        path.closed = closed_;
+        measurer_.fill(path);
+        path.repeatedSubCellVisits = visits_.repeats(closed_);
+        merger_.finishInto(path);
+        return path;
+    }
+
+  private:
+    void feed(const Waypoint& waypoint) {
+        measurer_.add(waypoint);
+        merger_.add(waypoint);
+        visits_.add(waypoint);
+    }
+
+    PathMeasurer measurer_;
+    StraightRunMerger merger_;
+    RepeatedVisitCounter visits_;
+    MapPoint start_;
+    bool closed_;
+    bool haveFirst_ = false;
+    bool haveOrigin_ = false;
+    Waypoint first_;
+    Waypoint last_;
+    Waypoint origin_;
+};
+
 } // namespace
 
 // Appends the cell's sub-cells and tree neighbours, counter-clockwise round it from the north-west.
@@ -205,6 +263,13 @@ std::vector<Waypoint> TreeCircumnavigation::walkFromStart(const SpanningTree& tr
     traverse(tree, start, closed, sink);
     sink.finish();
     return path;
+}
+
+CoveragePath TreeCircumnavigation::measuredWalk(const SpanningTree& tree, int robot, MapPoint start,
+                                                bool closed) {
+    MeasuringSink sink(graph_, start, closed);
+    traverse(tree, start, closed, sink);
+    return sink.finish(robot);
 }
 
 PathShape TreeCircumnavigation::walkShape(const SpanningTree& tree, MapPoint start, bool closed, bool timed) {

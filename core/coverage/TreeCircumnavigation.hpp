@@ -28,6 +28,10 @@ class TreeCircumnavigation {
     // millions of cells, putting the start point before the walk afterwards moves every waypoint.
     [[nodiscard]] std::vector<Waypoint> walkFromStart(const SpanningTree& tree, MapPoint start, bool closed,
                                                       std::size_t capacity = 0);
+    // The path pathFromWalk makes of walk(tree, start, closed), measured as measurePath measures it and with
+    // its straight runs merged as mergeStraightRuns merges them, both done as it is walked: on a region of
+    // millions of cells only the waypoints kept are ever held.
+    [[nodiscard]] CoveragePath measuredWalk(const SpanningTree& tree, int robot, MapPoint start, bool closed);
     // The length and turns of the path pathFromWalk would make of walk(tree, start, closed), and with
     // `timed` its time, without storing it: choosing between trees this way keeps one path in memory
     // instead of two.

@@ -22,6 +22,35 @@ QString violations(const PlanningProblem& problem, const Plan& plan) {
     return QString::fromStdString(test::describe(test::checkAllInvariants(problem, plan)));
 }
 
+// The first difference between two paths, field by field and waypoint by waypoint; empty when none.
+QString differenceBetween(const CoveragePath& a, const CoveragePath& b) {
+    if (a.robot != b.robot || a.closed != b.closed)
+        return "robot or closed";
+    if (a.lengthMetres != b.lengthMetres || a.timeSeconds != b.timeSeconds ||
+        a.turnSeconds != b.turnSeconds || a.connectorSeconds != b.connectorSeconds)
+        return QString("measures: length %1 / %2, time %3 / %4")
+            .arg(a.lengthMetres, 0, 'g', 17)
+            .arg(b.lengthMetres, 0, 'g', 17)
+            .arg(a.timeSeconds, 0, 'g', 17)
+            .arg(b.timeSeconds, 0, 'g', 17);
+    if (a.turns != b.turns || a.repeatedSubCellVisits != b.repeatedSubCellVisits)
+        return QString("turns %1 / %2, repeats %3 / %4")
+            .arg(a.turns)
+            .arg(b.turns)
+            .arg(a.repeatedSubCellVisits)
+            .arg(b.repeatedSubCellVisits);
+    if (a.walkedWaypoints != b.walkedWaypoints || a.runFollows != b.runFollows ||
+        a.waypoints.size() != b.waypoints.size())
+        return QString("merged runs: %1 / %2 waypoints").arg(a.waypoints.size()).arg(b.waypoints.size());
+    for (std::size_t i = 0; i < a.waypoints.size(); ++i) {
+        const Waypoint& p = a.waypoints[i];
+        const Waypoint& q = b.waypoints[i];
+        if (p.x != q.x || p.y != q.y || p.cell != q.cell || p.speedMetresPerSecond != q.speedMetresPerSecond)
+            return QString("waypoint %1").arg(i);
+    }
+    return {};
+}
+
 } // namespace
 
 class SpanningTreeCoverageTest : public QObject {
@@ -72,6 +101,14 @@ class SpanningTreeCoverageTest : public QObject {
                     QCOMPARE(inPlace[i].cell, path.waypoints[i].cell);
                     QCOMPARE(inPlace[i].speedMetresPerSecond, path.waypoints[i].speedMetresPerSecond);
                 }
+                // Measured and merged as it is walked, the path is the whole one measured, then merged.
+                CoveragePath merged = path;
+                mergeStraightRuns(merged, plan.cells);
+                QVERIFY(merged.runsMerged() || merged.waypoints.size() < 3);
+                const CoveragePath asWalked =
+                    walker.measuredWalk(tree, static_cast<int>(robot), start, closed);
+                QVERIFY2(differenceBetween(asWalked, merged).isEmpty(),
+                         qPrintable(differenceBetween(asWalked, merged)));
                 const Waypoint first =
                     walker.walk(tree, start, closed).front(); // a copy: the walk is a temporary
                 startsOffTheWalk_ += first.x != start.x || first.y != start.y ? 1 : 0;

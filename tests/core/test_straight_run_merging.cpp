@@ -137,6 +137,9 @@ class TestStraightRunMerging : public QObject {
             QCOMPARE(merged[robot].timeSeconds, measured.timeSeconds);
             QCOMPARE(merged[robot].turns, measured.turns);
             QCOMPARE(merged[robot].repeatedSubCellVisits, measured.repeatedSubCellVisits);
+            QCOMPARE(merged[robot].turnSeconds, measured.turnSeconds);
+            QCOMPARE(merged[robot].connectorSeconds, measured.connectorSeconds);
+            QVERIFY(measured.connectorSeconds != 0.0); // cells of three sizes: the steps between them count
         }
         const std::vector<CoveragePath> below =
             SpanningTreeCoverage(true, plan.cells.size() + 1)
