@@ -22,7 +22,8 @@ enum class EdgeDirection { EastWest, NorthSouth };
 // Spanning trees over a region of a cell graph, rooted at the start cell.
 class SpanningTreeBuilder {
   public:
-    // scratchIndex: one int per graph cell, all -1; the builder leaves it so. plateauRounds: fewestTurns'
+    // scratchIndex: one int per graph cell, all -1, which the builder leaves so; or empty, to number
+    // regions listed in ascending order by rank instead (CellIndexScope). plateauRounds: fewestTurns'
     // search across plateaus of equal turns (TurnMinimisingTree::Options), 0 for none.
     SpanningTreeBuilder(const CellGraph& graph, std::vector<int>& scratchIndex, int plateauRounds = 0)
         : graph_(graph), index_(scratchIndex), plateauRounds_(plateauRounds) {}

@@ -30,6 +30,19 @@ std::vector<std::vector<int>> cellsByRobot(const RegionAllocation& regions) {
 
 namespace {
 
+// One robot's cells, ascending: on a large map a region's list is made when the region is planned, not
+// all regions' lists beforehand (a gigabyte on a map of 69 million cells).
+std::vector<int> cellsOfRobot(const RegionAllocation& regions, int robot) {
+    const auto count =
+        static_cast<std::size_t>(std::count(regions.robotOfCell.begin(), regions.robotOfCell.end(), robot));
+    std::vector<int> cells;
+    cells.reserve(count);
+    for (std::size_t cell = 0; cell < regions.robotOfCell.size(); ++cell)
+        if (regions.robotOfCell[cell] == robot)
+            cells.push_back(static_cast<int>(cell));
+    return cells;
+}
+
 // Walks and measured paths add the same times in other orders: a tie must not be decided by rounding.
 constexpr double relativeMargin = 1e-9;
 
@@ -74,8 +87,8 @@ ParameterSpec SpanningTreeCoverage::closedTourParameter() {
 }
 
 std::pair<SpanningTree, PathShape>
-SpanningTreeCoverage::bestTree(const CellGraph& graph, const std::vector<int>& cells, int startCell,
-                               MapPoint start, std::vector<int>& scratchIndex, bool timed) const {
+SpanningTreeCoverage::bestTree(const CellGraph& graph, std::vector<int> cells, int startCell, MapPoint start,
+                               std::vector<int>& scratchIndex, bool timed) const {
     const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
     // Candidate trees are judged by the shape of their walk, which is measured without being stored.
@@ -84,7 +97,10 @@ SpanningTreeCoverage::bestTree(const CellGraph& graph, const std::vector<int>& c
     bool haveBest = false;
     const int candidates = trees.candidatesFor(cells);
     for (int candidate = 0; candidate < candidates; ++candidate) {
-        SpanningTree tree = trees.candidate(candidate, cells, startCell);
+        // The last candidate takes the cells: a region of millions of cells is not held twice.
+        SpanningTree tree = candidate + 1 == candidates
+                                ? trees.candidate(candidate, std::move(cells), startCell)
+                                : trees.candidate(candidate, cells, startCell);
         // A lone candidate needs no time: its shape only sizes the path.
         const PathShape shape = walker.walkShape(tree, start, closedTour_, timed || candidates > 1);
         if (!haveBest || isQuicker(shape, bestShape)) {
@@ -146,7 +162,8 @@ SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAlloc
                                        const std::vector<MapPoint>& starts, const ProgressReporter& progress,
                                        bool timed, const std::vector<const RegionTree*>& kept) const {
     const std::size_t robots = regions.startCell.size();
-    auto regionCells = cellsByRobot(regions);
+    const bool largeMap = graph.size() >= cellsForMergedRuns_;
+    auto regionCells = largeMap ? std::vector<std::vector<int>>(robots) : cellsByRobot(regions);
     // Regions are planned side by side, each into its own slot: the same trees whatever the thread count.
     std::vector<std::vector<int>> scratchIndex(static_cast<std::size_t>(workerThreads()));
     std::vector<RegionTree> trees(robots);
@@ -159,14 +176,17 @@ SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAlloc
             trees[robot] = *kept[robot];
         } else {
             std::vector<int>& scratch = scratchIndex[static_cast<std::size_t>(worker)];
-            if (scratch.size() != graph.size())
+            // On large maps a region's cells are numbered by rank (CellIndexScope) instead of in an array
+            // of the whole map's size for each thread.
+            if (!largeMap && scratch.size() != graph.size())
                 scratch.assign(graph.size(), -1);
-            auto [tree, shape] =
-                bestTree(graph, regionCells[robot], regions.startCell[robot], starts[robot], scratch, timed);
-            trees[robot] = {std::move(tree), shape};
-            std::vector<int>().swap(regionCells[robot]); // the tree holds its cells now
+            if (largeMap)
+                regionCells[robot] = cellsOfRobot(regions, static_cast<int>(robot));
+            auto [tree, shape] = bestTree(graph, std::move(regionCells[robot]), regions.startCell[robot],
+                                          starts[robot], scratch, timed);
+            trees[robot] = {std::move(tree), shape}; // the tree holds its cells now
             // On large maps the trees wait packed beside the regions still planned.
-            if (graph.size() >= cellsForMergedRuns_)
+            if (largeMap)
                 trees[robot].tree.pack();
         }
         const std::lock_guard lock(progressMutex);

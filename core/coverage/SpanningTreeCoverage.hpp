@@ -37,7 +37,7 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                       const ProgressReporter& progress) const;
 
     // One robot's path over its region's cells: the quickest candidate tree's. scratchIndex: one int per
-    // graph cell, all -1, left so.
+    // graph cell, all -1, left so; or empty (SpanningTreeBuilder).
     [[nodiscard]] CoveragePath regionPath(const CellGraph& graph, const std::vector<int>& cells,
                                           int startCell, int robot, MapPoint start,
                                           std::vector<int>& scratchIndex) const;
@@ -68,9 +68,9 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                       const ProgressReporter& progress) const;
     // The candidate tree whose walk is quickest (travel and turns; then turns least, then is shortest), with
     // that walk's shape; timed when there was more than one candidate, or always when `timed`.
-    [[nodiscard]] std::pair<SpanningTree, PathShape> bestTree(const CellGraph& graph,
-                                                              const std::vector<int>& cells, int startCell,
-                                                              MapPoint start, std::vector<int>& scratchIndex,
+    [[nodiscard]] std::pair<SpanningTree, PathShape> bestTree(const CellGraph& graph, std::vector<int> cells,
+                                                              int startCell, MapPoint start,
+                                                              std::vector<int>& scratchIndex,
                                                               bool timed = false) const;
 
   private:

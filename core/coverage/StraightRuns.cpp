@@ -1,8 +1,8 @@
 #include "core/coverage/StraightRuns.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
-#include <span>
 
 namespace mcpp {
 namespace {
@@ -11,12 +11,62 @@ bool isHorizontal(CellSide side) {
     return side == CellSide::East || side == CellSide::West;
 }
 
-// Hopcroft-Karp over a bipartite graph given as left-vertex adjacency lists (compressed).
+// The north-south straight adjacencies a node takes part in, at most one on either side (a cell has at most
+// one equal neighbour in its column to the north and one to the south), in increasing order; -1 for none.
+using VerticalRuns = std::array<int, 2>;
+
+// At most four: two ends, each with at most one equal neighbour north and one south.
+struct ConflictList {
+    std::array<int, 4> ids{};
+    std::size_t count = 0;
+    [[nodiscard]] const int* begin() const { return ids.data(); }
+    [[nodiscard]] const int* end() const { return ids.data() + count; }
+    [[nodiscard]] std::size_t size() const { return count; }
+    [[nodiscard]] int operator[](std::size_t i) const { return ids[i]; }
+};
+
+// The north-south straight adjacencies (by edge number) an east-west one conflicts with: those of its two
+// ends, in the order the ends' incidences list them. Worked out when asked from 8 bytes a node, where lists
+// of them took 20 bytes an east-west adjacency.
+class Conflicts {
+  public:
+    Conflicts(const RegionAdjacency& adjacency, std::vector<int> leftEdges)
+        : edges_(adjacency.edges()), leftEdges_(std::move(leftEdges)),
+          vertical_(adjacency.nodeCount(), VerticalRuns{-1, -1}) {
+        for (std::size_t node = 0; node < vertical_.size(); ++node) {
+            std::size_t found = 0;
+            for (const auto& incidence : adjacency.incident(static_cast<int>(node)))
+                if (edges_[static_cast<std::size_t>(incidence.edge)].straight &&
+                    !isHorizontal(incidence.side) && found < 2)
+                    vertical_[node][found++] = incidence.edge;
+        }
+    }
+    [[nodiscard]] std::size_t leftCount() const { return leftEdges_.size(); }
+    [[nodiscard]] int edgeOfLeft(std::size_t left) const { return leftEdges_[left]; }
+    // The north-south adjacencies the east-west one `left` conflicts with.
+    [[nodiscard]] ConflictList of(int left) const {
+        ConflictList list;
+        const auto& ends = edges_[static_cast<std::size_t>(leftEdges_[static_cast<std::size_t>(left)])];
+        for (const int node : {ends.first, static_cast<int>(ends.second)})
+            for (const int right : vertical_[static_cast<std::size_t>(node)])
+                if (right >= 0)
+                    list.ids[list.count++] = right;
+        return list;
+    }
+
+  private:
+    const std::vector<RegionAdjacency::Edge>& edges_;
+    std::vector<int> leftEdges_; // the east-west straight adjacencies, by edge number
+    std::vector<VerticalRuns> vertical_;
+};
+
+// Hopcroft-Karp between east-west straight adjacencies (left, numbered in order) and north-south ones
+// (right, by edge number) that conflict.
 class BipartiteMatching {
   public:
-    BipartiteMatching(std::vector<int> offsets, std::vector<int> targets, std::size_t rightCount)
-        : offsets_(std::move(offsets)), targets_(std::move(targets)), leftCount_(offsets_.size() - 1),
-          matchOfLeft_(leftCount_, -1), matchOfRight_(rightCount, -1), distance_(leftCount_, unreached) {}
+    BipartiteMatching(const Conflicts& conflicts, std::size_t rightCount)
+        : conflicts_(conflicts), leftCount_(conflicts.leftCount()), matchOfLeft_(leftCount_, -1),
+          matchOfRight_(rightCount, -1), distance_(leftCount_, unreached) {}
 
     void solve() {
         // A greedy first matching leaves Hopcroft-Karp a few long paths instead of many phases.
@@ -40,14 +90,14 @@ class BipartiteMatching {
             std::erase_if(freeLeft_,
                           [&](int left) { return matchOfLeft_[static_cast<std::size_t>(left)] >= 0; });
         }
+        // Only the matching is read from here on: the search's arrays go before the caller makes its own.
+        for (auto* workspace : {&distance_, &freeLeft_, &queue_})
+            std::vector<int>().swap(*workspace);
+        std::vector<Frame>().swap(stack_);
     }
     [[nodiscard]] const std::vector<int>& matchOfLeft() const { return matchOfLeft_; }
     [[nodiscard]] const std::vector<int>& matchOfRight() const { return matchOfRight_; }
-    [[nodiscard]] std::span<const int> rightOf(int left) const {
-        const auto begin = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(left)]);
-        const auto end = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(left) + 1]);
-        return {targets_.data() + begin, end - begin};
-    }
+    [[nodiscard]] ConflictList rightOf(int left) const { return conflicts_.of(left); }
     [[nodiscard]] std::size_t leftCount() const { return leftCount_; }
 
   private:
@@ -119,8 +169,7 @@ class BipartiteMatching {
         return false;
     }
 
-    std::vector<int> offsets_;
-    std::vector<int> targets_;
+    const Conflicts& conflicts_;
     std::size_t leftCount_;
     std::vector<int> matchOfLeft_;
     std::vector<int> matchOfRight_;
@@ -134,70 +183,44 @@ class BipartiteMatching {
 
 std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
     const auto& edges = adjacency.edges();
-    // Straight adjacencies become vertices: east-west ones on the left, north-south ones on the right.
-    std::vector<int> vertexOfEdge(edges.size(), -1);
+    // East-west straight adjacencies are the left vertices, in edge order; north-south ones the right
+    // vertices, by their edge numbers.
     std::vector<int> leftEdges;
-    std::vector<int> rightEdges;
-    const auto horizontal =
+    leftEdges.reserve(
         static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [](const auto& edge) {
             return edge.straight && isHorizontal(edge.sideOfFirst);
-        }));
-    leftEdges.reserve(horizontal);
-    rightEdges.reserve(static_cast<std::size_t>(std::count_if(
-                           edges.begin(), edges.end(), [](const auto& edge) { return edge.straight; })) -
-                       horizontal);
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-        if (!edges[e].straight)
-            continue;
-        auto& side = isHorizontal(edges[e].sideOfFirst) ? leftEdges : rightEdges;
-        vertexOfEdge[e] = static_cast<int>(side.size());
-        side.push_back(static_cast<int>(e));
-    }
-    // A conflict for every east-west and north-south straight adjacency sharing a cell.
-    std::vector<int> offsets(leftEdges.size() + 1, 0);
-    std::vector<int> targets;
-    // A cell has at most one equal neighbour in its column on either side, so an east-west adjacency
-    // conflicts with at most four north-south ones.
-    targets.reserve(4 * leftEdges.size());
-    auto conflictsOf = [&](int edge, auto&& visit) {
-        const auto& ends = edges[static_cast<std::size_t>(edge)];
-        for (const int node : {ends.first, static_cast<int>(ends.second)})
-            for (const auto& incidence : adjacency.incident(node))
-                if (edges[static_cast<std::size_t>(incidence.edge)].straight && !isHorizontal(incidence.side))
-                    visit(vertexOfEdge[static_cast<std::size_t>(incidence.edge)]);
-    };
-    for (std::size_t left = 0; left < leftEdges.size(); ++left) {
-        conflictsOf(leftEdges[left], [&](int right) { targets.push_back(right); });
-        offsets[left + 1] = static_cast<int>(targets.size());
-    }
-    BipartiteMatching matching(std::move(offsets), std::move(targets), rightEdges.size());
+        })));
+    for (std::size_t e = 0; e < edges.size(); ++e)
+        if (edges[e].straight && isHorizontal(edges[e].sideOfFirst))
+            leftEdges.push_back(static_cast<int>(e));
+    const Conflicts conflicts(adjacency, std::move(leftEdges));
+    BipartiteMatching matching(conflicts, edges.size());
     matching.solve();
     // Konig: left vertices reached from free left vertices by alternating paths, plus right vertices not
     // reached, form the largest independent set.
-    std::vector<char> reachedLeft(leftEdges.size(), 0);
-    std::vector<char> reachedRight(rightEdges.size(), 0);
+    std::vector<char> reachedLeft(conflicts.leftCount(), 0);
+    std::vector<char> kept(edges.size(), 0); // first: right vertices reached
     std::vector<int> queue;
-    for (std::size_t left = 0; left < leftEdges.size(); ++left)
+    for (std::size_t left = 0; left < conflicts.leftCount(); ++left)
         if (matching.matchOfLeft()[left] < 0) {
             reachedLeft[left] = 1;
             queue.push_back(static_cast<int>(left));
         }
     for (std::size_t head = 0; head < queue.size(); ++head)
         for (int right : matching.rightOf(queue[head])) {
-            if (reachedRight[static_cast<std::size_t>(right)] != 0)
+            if (kept[static_cast<std::size_t>(right)] != 0)
                 continue;
-            reachedRight[static_cast<std::size_t>(right)] = 1;
+            kept[static_cast<std::size_t>(right)] = 1;
             const int next = matching.matchOfRight()[static_cast<std::size_t>(right)];
             if (next >= 0 && reachedLeft[static_cast<std::size_t>(next)] == 0) {
                 reachedLeft[static_cast<std::size_t>(next)] = 1;
                 queue.push_back(next);
             }
         }
-    std::vector<char> kept(edges.size(), 0);
-    for (std::size_t left = 0; left < leftEdges.size(); ++left)
-        kept[static_cast<std::size_t>(leftEdges[left])] = reachedLeft[left];
-    for (std::size_t right = 0; right < rightEdges.size(); ++right)
-        kept[static_cast<std::size_t>(rightEdges[right])] = reachedRight[right] == 0 ? 1 : 0;
+    for (std::size_t e = 0; e < edges.size(); ++e)
+        kept[e] = edges[e].straight && !isHorizontal(edges[e].sideOfFirst) && kept[e] == 0 ? 1 : 0;
+    for (std::size_t left = 0; left < conflicts.leftCount(); ++left)
+        kept[static_cast<std::size_t>(conflicts.edgeOfLeft(left))] = reachedLeft[left];
     return kept;
 }
 

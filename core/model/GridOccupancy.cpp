@@ -7,7 +7,7 @@ namespace mcpp {
 GridOccupancy::GridOccupancy(int columns, int rows, const std::vector<CellRecord>& cells)
     : columns_(columns), rows_(rows) {
     const std::uint64_t places = static_cast<std::uint64_t>(columns) * static_cast<std::uint64_t>(rows);
-    words_.assign((places + 63U) / 64U, 0);
+    places_ = RankedIdSet(0, places);
     std::uint64_t previous = 0;
     for (std::size_t id = 0; id < cells.size(); ++id) {
         const CellRecord& cell = cells[id];
@@ -19,14 +19,9 @@ GridOccupancy::GridOccupancy(int columns, int rows, const std::vector<CellRecord
         if (id > 0 && place <= previous)
             throw std::invalid_argument("a grid occupancy of cells not listed row by row");
         previous = place;
-        words_[place / 64U] |= std::uint64_t{1} << (place % 64U);
+        places_.insert(place);
     }
-    heldBefore_.resize(words_.size());
-    std::uint32_t held = 0;
-    for (std::size_t word = 0; word < words_.size(); ++word) {
-        heldBefore_[word] = held;
-        held += bitsSet(words_[word]);
-    }
+    places_.countRanks();
 }
 
 } // namespace mcpp

@@ -1,3 +1,4 @@
+#include "core/coverage/CellIndexScope.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
@@ -8,6 +9,8 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <algorithm>
+#include <random>
 #include <set>
 
 using namespace mcpp;
@@ -114,6 +117,36 @@ class SpanningTreeCoverageTest : public QObject {
                 startsOffTheWalk_ += first.x != start.x || first.y != start.y ? 1 : 0;
             }
         }
+    }
+
+    // A region listed in ascending order is numbered by rank, without an array of the map's size, as the
+    // array numbers it; another order, given no array, makes one. Cells outside the region get -1.
+    void aRegionIsNumberedTheSameByRank() {
+        std::mt19937 random(7);
+        std::vector<int> cells;
+        for (int id = 0; id < 5000; ++id)
+            if (random() % 3 == 0)
+                cells.push_back(id);
+        cells.push_back(70'000); // a gap of more than a 64-id word
+        std::vector<int> array(70'100, -1);
+        std::vector<int> none;
+        {
+            const CellIndexScope byArray(array, cells);
+            const CellIndexScope byRank(none, cells);
+            QVERIFY(none.empty());
+            for (int id = 0; id < 70'100; ++id)
+                QCOMPARE(byRank[id], byArray[id]);
+            QCOMPARE(byRank[cells[10]], 10);
+            QCOMPARE(byRank[70'000], static_cast<int>(cells.size()) - 1);
+        }
+        QVERIFY(std::all_of(array.begin(), array.end(), [](int local) { return local == -1; }));
+        std::vector<int> shuffled = cells;
+        std::shuffle(shuffled.begin(), shuffled.end(), random);
+        const CellIndexScope unsorted(none, shuffled);
+        QCOMPARE(none.size(), std::size_t{70'001});
+        for (std::size_t local = 0; local < shuffled.size(); ++local)
+            QCOMPARE(unsorted[shuffled[local]], static_cast<int>(local));
+        QCOMPARE(unsorted[70'050], -1);
     }
 
     // A tree packed while it waits (cells and parents only) comes back unpacked with the same neighbours,
