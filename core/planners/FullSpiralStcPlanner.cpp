@@ -12,7 +12,6 @@
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
-#include <bit>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -60,7 +59,7 @@ Reachability reachableSubCells(const CellGraph& graph, const SubCellLattice& lat
         if (reached[id] == 0 || reached[id] == cells[id].freeSubCells)
             continue;
         const int before = cells[id].freeSubCellCount();
-        const int after = std::popcount(static_cast<unsigned>(reached[id]));
+        const int after = subCellsIn(reached[id]);
         const double lost = cells[id].passableAreaSquareMetres * (before - after) / before;
         result.enclosedSubCells += before - after;
         result.enclosedArea += lost;
