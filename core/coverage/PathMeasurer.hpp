@@ -18,10 +18,9 @@ class PathMeasurer {
     explicit PathMeasurer(const CellGraph& graph) : graph_(graph), oneCellSize_(graph.hasOneCellSize()) {}
 
     void add(const Waypoint& waypoint);
-    // Length, turns, time (with the path's pauses), turn and connector seconds: measurePath's figures but
-    // the repeated visits.
+    // Length, turns, time (with the path's pauses, by the path's waypoint numbers, so a path being made
+    // has none), turn and connector seconds: measurePath's figures but the repeated visits.
     void fill(CoveragePath& path) const;
-    [[nodiscard]] PathSeconds seconds() const { return seconds_; }
     [[nodiscard]] double connectorSeconds() const { return connectorSeconds_; }
 
   private:

@@ -9,14 +9,23 @@
 #include <mutex>
 
 namespace mcpp {
+namespace {
+
+// How many cells each robot has.
+std::vector<std::size_t> cellCounts(const RegionAllocation& regions) {
+    std::vector<std::size_t> counts(regions.startCell.size(), 0);
+    for (const int robot : regions.robotOfCell)
+        if (robot >= 0 && static_cast<std::size_t>(robot) < counts.size())
+            ++counts[static_cast<std::size_t>(robot)];
+    return counts;
+}
+
+} // namespace
 
 std::vector<std::vector<int>> cellsByRobot(const RegionAllocation& regions) {
     const std::size_t robots = regions.startCell.size();
     // Counted first: a region of millions of cells would otherwise grow through a dozen copies.
-    std::vector<std::size_t> counts(robots, 0);
-    for (const int robot : regions.robotOfCell)
-        if (robot >= 0 && static_cast<std::size_t>(robot) < robots)
-            ++counts[static_cast<std::size_t>(robot)];
+    const std::vector<std::size_t> counts = cellCounts(regions);
     std::vector<std::vector<int>> cells(robots);
     for (std::size_t robot = 0; robot < robots; ++robot)
         cells[robot].reserve(counts[robot]);
@@ -30,11 +39,9 @@ std::vector<std::vector<int>> cellsByRobot(const RegionAllocation& regions) {
 
 namespace {
 
-// One robot's cells, ascending: on a large map a region's list is made when the region is planned, not
-// all regions' lists beforehand (a gigabyte on a map of 69 million cells).
-std::vector<int> cellsOfRobot(const RegionAllocation& regions, int robot) {
-    const auto count =
-        static_cast<std::size_t>(std::count(regions.robotOfCell.begin(), regions.robotOfCell.end(), robot));
+// One robot's cells, ascending (`count` of them): on a large map a region's list is made when the region is
+// planned, not all regions' lists beforehand (a gigabyte on a map of 69 million cells).
+std::vector<int> cellsOfRobot(const RegionAllocation& regions, int robot, std::size_t count) {
     std::vector<int> cells;
     cells.reserve(count);
     for (std::size_t cell = 0; cell < regions.robotOfCell.size(); ++cell)
@@ -164,6 +171,7 @@ SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAlloc
     const std::size_t robots = regions.startCell.size();
     const bool largeMap = graph.size() >= cellsForMergedRuns_;
     auto regionCells = largeMap ? std::vector<std::vector<int>>(robots) : cellsByRobot(regions);
+    const std::vector<std::size_t> counts = largeMap ? cellCounts(regions) : std::vector<std::size_t>{};
     // Regions are planned side by side, each into its own slot: the same trees whatever the thread count.
     std::vector<std::vector<int>> scratchIndex(static_cast<std::size_t>(workerThreads()));
     std::vector<RegionTree> trees(robots);
@@ -181,7 +189,7 @@ SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAlloc
             if (!largeMap && scratch.size() != graph.size())
                 scratch.assign(graph.size(), -1);
             if (largeMap)
-                regionCells[robot] = cellsOfRobot(regions, static_cast<int>(robot));
+                regionCells[robot] = cellsOfRobot(regions, static_cast<int>(robot), counts[robot]);
             auto [tree, shape] = bestTree(graph, std::move(regionCells[robot]), regions.startCell[robot],
                                           starts[robot], scratch, timed);
             trees[robot] = {std::move(tree), shape}; // the tree holds its cells now

@@ -17,7 +17,7 @@ class StraightRunMerger {
 
     void add(const Waypoint& waypoint);
     // Puts the kept waypoints into `path`, with walkedWaypoints and runFollows when a run was merged; a
-    // path of no straight run gets every waypoint and stays unmerged. The merger is spent.
+    // path of no straight run gets every waypoint and stays unmerged. The merger then starts afresh.
     void finishInto(CoveragePath& path);
 
   private:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <stdexcept>
 
 namespace mcpp {
 namespace {
@@ -13,7 +14,7 @@ bool isHorizontal(CellSide side) {
 
 // The north-south straight adjacencies a node takes part in, at most one on either side (a cell has at most
 // one equal neighbour in its column to the north and one to the south), in increasing order; -1 for none.
-using VerticalRuns = std::array<int, 2>;
+using NorthSouthEdges = std::array<int, 2>;
 
 // At most four: two ends, each with at most one equal neighbour north and one south.
 struct ConflictList {
@@ -32,13 +33,17 @@ class Conflicts {
   public:
     Conflicts(const RegionAdjacency& adjacency, std::vector<int> leftEdges)
         : edges_(adjacency.edges()), leftEdges_(std::move(leftEdges)),
-          vertical_(adjacency.nodeCount(), VerticalRuns{-1, -1}) {
+          vertical_(adjacency.nodeCount(), NorthSouthEdges{-1, -1}) {
         for (std::size_t node = 0; node < vertical_.size(); ++node) {
             std::size_t found = 0;
-            for (const auto& incidence : adjacency.incident(static_cast<int>(node)))
-                if (edges_[static_cast<std::size_t>(incidence.edge)].straight &&
-                    !isHorizontal(incidence.side) && found < 2)
-                    vertical_[node][found++] = incidence.edge;
+            for (const auto& incidence : adjacency.incident(static_cast<int>(node))) {
+                if (!edges_[static_cast<std::size_t>(incidence.edge)].straight ||
+                    isHorizontal(incidence.side))
+                    continue;
+                if (found == 2)
+                    throw std::logic_error("a cell with more than two straight north-south neighbours");
+                vertical_[node][found++] = incidence.edge;
+            }
         }
     }
     [[nodiscard]] std::size_t leftCount() const { return leftEdges_.size(); }
@@ -57,7 +62,7 @@ class Conflicts {
   private:
     const std::vector<RegionAdjacency::Edge>& edges_;
     std::vector<int> leftEdges_; // the east-west straight adjacencies, by edge number
-    std::vector<VerticalRuns> vertical_;
+    std::vector<NorthSouthEdges> vertical_;
 };
 
 // Hopcroft-Karp between east-west straight adjacencies (left, numbered in order) and north-south ones

@@ -17,7 +17,7 @@ class GridOccupancy {
     // cells: span-1 cells on a columns x rows grid, listed row by row, each place at most once.
     GridOccupancy(int columns, int rows, const std::vector<CellRecord>& cells);
 
-    [[nodiscard]] bool empty() const { return places_.empty(); }
+    [[nodiscard]] bool empty() const { return !places_.hasRoom(); }
     // Whether a cell lies at the place (false off the grid).
     [[nodiscard]] bool holds(int column, int row) const {
         return onGrid(column, row) && places_.holds(placeOf(column, row));

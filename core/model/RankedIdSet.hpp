@@ -20,7 +20,8 @@ class RankedIdSet {
     // After the last insert, before the first rankOf.
     void countRanks();
 
-    [[nodiscard]] bool empty() const { return words_.empty(); }
+    // Whether it was made with room for any id.
+    [[nodiscard]] bool hasRoom() const { return !words_.empty(); }
     // Whether the id is held (false outside the room).
     [[nodiscard]] bool holds(std::uint64_t id) const {
         if (id < first_ || id - first_ >= size_)
