@@ -58,7 +58,7 @@ int repeatsByMarking(const CoveragePath& path, const CellGraph& graph, std::vect
 } // namespace
 
 std::pair<int, int> subCellVisited(const Waypoint& waypoint, const CellGraph& graph) {
-    if (waypoint.cell < 0 || static_cast<std::size_t>(waypoint.cell) >= graph.size())
+    if (!graph.contains(waypoint.cell))
         return {-1, 0};
     const Cell& cell = graph.cell(waypoint.cell);
     const MapPoint point{waypoint.x, waypoint.y};
@@ -104,7 +104,7 @@ double segmentLength(const Waypoint& from, const Waypoint& to) {
 double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX, double outY,
                      const CellGraph& graph) {
     const bool straightOn = inX * outY - inY * outX == 0.0 && inX * outX + inY * outY > 0.0;
-    if (straightOn || corner.cell < 0 || static_cast<std::size_t>(corner.cell) >= graph.size())
+    if (straightOn || !graph.contains(corner.cell))
         return 0.0; // straight on, most steps of a path, costs nothing whatever the cell's price
     return turnSecondsBetween(inX, inY, outX, outY, graph.cell(corner.cell).turnSecondsPer90Degrees);
 }

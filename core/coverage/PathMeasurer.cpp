@@ -1,7 +1,5 @@
 #include "core/coverage/PathMeasurer.hpp"
 
-#include <algorithm>
-
 namespace mcpp {
 
 void PathMeasurer::add(const Waypoint& waypoint) {
@@ -20,8 +18,7 @@ void PathMeasurer::add(const Waypoint& waypoint) {
 }
 
 void PathMeasurer::addConnector(const Waypoint& from, const Waypoint& to, double length) {
-    if (from.cell < 0 || to.cell < 0 || from.cell == to.cell ||
-        static_cast<std::size_t>(std::max(from.cell, to.cell)) >= graph_.size())
+    if (from.cell == to.cell || !graph_.contains(from.cell) || !graph_.contains(to.cell))
         return;
     const Cell& a = graph_.cell(from.cell);
     const Cell& b = graph_.cell(to.cell);

@@ -7,10 +7,6 @@
 namespace mcpp {
 namespace {
 
-bool inGraph(const Waypoint& waypoint, const CellGraph& graph) {
-    return waypoint.cell >= 0 && static_cast<std::size_t>(waypoint.cell) < graph.size();
-}
-
 // Whether a step from `from` to `to` is one sub-cell of `to`'s cell long (a robot's step between
 // neighbouring sub-cell centres of cells of one size).
 bool isSubCellStep(const Waypoint& from, const Waypoint& to, double cellSize) {
@@ -21,7 +17,7 @@ bool isSubCellStep(const Waypoint& from, const Waypoint& to, double cellSize) {
 // Whether the walk goes straight on through waypoint b, in steps of one sub-cell, with one speed, one
 // cell size and one land cover from a through b to c: b can be left out and put back from a and c.
 bool insideStraightRun(const Waypoint& a, const Waypoint& b, const Waypoint& c, const CellGraph& graph) {
-    if (!inGraph(a, graph) || !inGraph(b, graph) || !inGraph(c, graph))
+    if (!graph.contains(a.cell) || !graph.contains(b.cell) || !graph.contains(c.cell))
         return false;
     if (a.speedMetresPerSecond != b.speedMetresPerSecond || b.speedMetresPerSecond != c.speedMetresPerSecond)
         return false;

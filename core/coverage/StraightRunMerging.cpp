@@ -9,10 +9,6 @@
 namespace mcpp {
 namespace {
 
-bool inGraph(const Waypoint& waypoint, const CellGraph& graph) {
-    return waypoint.cell >= 0 && static_cast<std::size_t>(waypoint.cell) < graph.size();
-}
-
 // The cell holding `point`: `near` when it does (most steps of a run stay in their cell or the next).
 int cellHolding(const CellGraph& graph, MapPoint point, int near) {
     const Cell& cell = graph.cell(near);
@@ -72,7 +68,7 @@ std::vector<Waypoint> walkedWaypoints(const CoveragePath& path, const CellGraph&
     for (std::size_t i = 0; i < kept.size(); ++i) {
         walked.push_back(kept[i]);
         if (i >= path.runFollows.size() || !path.runFollows[i] || i + 1 == kept.size() ||
-            !inGraph(kept[i], graph))
+            !graph.contains(kept[i].cell))
             continue;
         const std::size_t room =
             path.walkedWaypoints - std::min(path.walkedWaypoints, walked.size() + kept.size() - i - 1);

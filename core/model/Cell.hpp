@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/BitCount.hpp"
 #include "core/model/MapPoint.hpp"
 
 #include <array>
@@ -21,10 +22,10 @@ inline constexpr std::uint8_t allSubCells = 0b1111;
     return east ? SubCell::NorthEast : SubCell::NorthWest;
 }
 
-// How many sub-cells a mask of them holds: by hand, as std::popcount is a library call on the baseline
-// x86-64 the project builds for, and cells are counted this way millions of times.
+// How many sub-cells a mask of them holds (bitsSet: std::popcount is a library call on the baseline
+// x86-64, and cells are counted this way millions of times).
 [[nodiscard]] constexpr int subCellsIn(unsigned mask) {
-    return static_cast<int>((mask & 1U) + (mask >> 1U & 1U) + (mask >> 2U & 1U) + (mask >> 3U & 1U));
+    return static_cast<int>(bitsSet(mask));
 }
 
 // One square of a planning decomposition: a quadtree leaf, or a cell of a uniform grid. A robot covers it

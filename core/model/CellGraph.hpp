@@ -36,6 +36,10 @@ class CellGraph {
     [[nodiscard]] const GridFrame& frame() const { return frame_; }
     [[nodiscard]] std::size_t size() const { return records_.size(); }
     [[nodiscard]] bool empty() const { return records_.empty(); }
+    // Whether `id` numbers a cell of the graph (a waypoint off the map has -1).
+    [[nodiscard]] bool contains(int id) const {
+        return id >= 0 && static_cast<std::size_t>(id) < records_.size();
+    }
     // A cell, whole: its square worked out from the frame.
     [[nodiscard]] Cell cell(int id) const { return cellOf(records_[static_cast<std::size_t>(id)], frame_); }
     [[nodiscard]] CellRange cells() const { return {records_, frame_}; }
