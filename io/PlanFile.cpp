@@ -170,6 +170,10 @@ CellGraph getCells(CompressedReader& in) {
         throw CompressedReader::DamagedData("a grid larger than this machine can plan");
     // A cell's square is kept in the file for other readers; the graph works it out from the frame again.
     std::vector<CellRecord> cells(in.getCount(69));
+    std::vector<float> turnSeconds;
+    std::vector<float> expectedTurns;
+    turnSeconds.reserve(cells.size());
+    expectedTurns.reserve(cells.size());
     for (CellRecord& record : cells) {
         Cell cell;
         cell.column = in.get<int>();
@@ -199,11 +203,15 @@ CellGraph getCells(CompressedReader& in) {
             !(cell.expectedTurnsPerSubCell >= 0.0F) || !std::isfinite(cell.expectedTurnsPerSubCell))
             throw CompressedReader::DamagedData("a cell with no place on the grid");
         record = recordOf(cell);
+        turnSeconds.push_back(cell.turnSecondsPer90Degrees);
+        expectedTurns.push_back(cell.expectedTurnsPerSubCell);
     }
     std::vector<int> offsets = in.getAll<int>();
     std::vector<int> neighbours = in.getAll<int>();
     checkAdjacency(offsets, neighbours, cells.size());
     CellGraph graph(frame, std::move(cells), NeighbourTopology(std::move(offsets), std::move(neighbours)));
+    graph.setTurnSeconds(std::move(turnSeconds));
+    graph.setExpectedTurns(expectedTurns);
     graph.fieldsOfView.resize(in.getCount(24));
     for (RoundedFieldOfView& rounded : graph.fieldsOfView) {
         rounded.classValue = in.get<std::int32_t>();

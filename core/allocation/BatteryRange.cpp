@@ -82,6 +82,7 @@ BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& gra
     }
     result.graph = CellGraph(graph.frame(), graph.records(),
                              NeighbourTopology(std::move(offsets), std::move(neighbours)));
+    result.graph.setTurnFigures(graph.turnFigures());
     result.graph.fieldsOfView = graph.fieldsOfView;
     result.graph.passableAreaSquareMetres = graph.passableAreaSquareMetres;
     return result;

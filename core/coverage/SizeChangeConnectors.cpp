@@ -62,8 +62,7 @@ SizeChangeConnectors::SizeChangeConnectors(const CellGraph& graph, const std::ve
     constexpr double floorSeconds = 1e-3;
     turnSeconds_.reserve(cells.size());
     for (const int cell : cells)
-        turnSeconds_.push_back(
-            std::max(static_cast<double>(graph.record(cell).turnSecondsPer90Degrees), floorSeconds));
+        turnSeconds_.push_back(std::max(static_cast<double>(graph.turnSeconds(cell)), floorSeconds));
 }
 
 int SizeChangeConnectors::largerEnd(int edge) const {

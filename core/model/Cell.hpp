@@ -33,6 +33,9 @@ inline constexpr std::uint8_t allSubCells = 0b1111;
 // Levels a quadtree may have: its largest cells span 2^15 bottom cells, which Cell::span holds in 16 bits.
 inline constexpr int mostQuadTreeLevels = 16;
 inline constexpr int largestSpan = 1 << (mostQuadTreeLevels - 1);
+// Turns a coverage walk makes per sub-cell where nothing was measured: 0.2 on the uniform benchmark grids
+// with 15 % obstacles (26 965 turns over 135 000 sub-cells, 200 x 200 with 4 robots).
+inline constexpr float defaultExpectedTurnsPerSubCell = 0.2F;
 
 struct Cell {
     // Placement on the decomposition's bottom grid (squares of the smallest cell side), row 0 at the north.
@@ -50,10 +53,9 @@ struct Cell {
     // Harmonic mean over its passable pixels. A float, like its waypoints' speeds: seven digits are more
     // than any class table knows, and a large map holds tens of millions of cells and waypoints.
     float speedMetresPerSecond = 0.0F;
-    // Turns a coverage walk makes here per sub-cell, for the cost: 0.2 on the uniform benchmark grids with
-    // 15 % obstacles (26 965 turns over 135 000 sub-cells, 200 x 200 with 4 robots); a planner may measure
-    // it on a first plan (calibrateTurnRates).
-    float expectedTurnsPerSubCell = 0.2F;
+    // Turns a coverage walk makes here per sub-cell, for the cost; a planner may measure it on a first plan
+    // (calibrateTurnRates).
+    float expectedTurnsPerSubCell = defaultExpectedTurnsPerSubCell;
     // Passable pixels inside its free sub-cells. A float (seven digits): sums over cells are taken in
     // doubles.
     float passableAreaSquareMetres = 0.0F;

@@ -29,7 +29,18 @@ std::vector<CellRecord> recordsOf(const std::vector<Cell>& cells) {
 } // namespace
 
 CellGraph::CellGraph(GridFrame frame, const std::vector<Cell>& cells, NeighbourTopology adjacency)
-    : CellGraph(frame, recordsOf(cells), std::move(adjacency)) {}
+    : CellGraph(frame, recordsOf(cells), std::move(adjacency)) {
+    std::vector<float> seconds;
+    std::vector<float> turns;
+    seconds.reserve(cells.size());
+    turns.reserve(cells.size());
+    for (const Cell& cell : cells) {
+        seconds.push_back(cell.turnSecondsPer90Degrees);
+        turns.push_back(cell.expectedTurnsPerSubCell);
+    }
+    turns_.setTurnSeconds(std::move(seconds));
+    turns_.setExpectedTurns(std::move(turns));
+}
 
 CellGraph::CellGraph(GridFrame frame, std::vector<CellRecord> records, NeighbourTopology adjacency)
     : frame_(frame), records_(std::move(records)), adjacency_(std::move(adjacency)) {
@@ -56,11 +67,23 @@ CellGraph CellGraph::ofGrid(GridFrame frame, std::vector<CellRecord> records) {
 }
 
 CellGraph::CellGraph(const CellGraph& sameCells, std::vector<CellRecord> records)
-    : frame_(sameCells.frame_), records_(std::move(records)), adjacency_(sameCells.adjacency_),
-      occupancy_(sameCells.occupancy_), locator_(sameCells.locator_) {
+    : frame_(sameCells.frame_), records_(std::move(records)), turns_(sameCells.turns_),
+      adjacency_(sameCells.adjacency_), occupancy_(sameCells.occupancy_), locator_(sameCells.locator_) {
     if (records_.size() != sameCells.records_.size())
         throw std::invalid_argument("a cell graph's figures for " + std::to_string(records_.size()) +
                                     " cells where it has " + std::to_string(sameCells.records_.size()));
+    // Turn times worked out from the speeds stay those of the speeds they were worked out from, as a
+    // planner pricing cells by other speeds expects.
+    const bool speedsChanged = !std::equal(records_.begin(), records_.end(), sameCells.records_.begin(),
+                                           [](const CellRecord& now, const CellRecord& before) {
+                                               return now.speedMetresPerSecond == before.speedMetresPerSecond;
+                                           });
+    if (turns_.followSpeeds() && speedsChanged) {
+        std::vector<float> seconds(records_.size());
+        for (std::size_t id = 0; id < seconds.size(); ++id)
+            seconds[id] = sameCells.turnSeconds(static_cast<int>(id));
+        turns_.setTurnSeconds(std::move(seconds));
+    }
 }
 
 bool CellGraph::areNeighbours(int a, int b) const {
@@ -139,14 +162,23 @@ int CellGraph::cellAt(MapPoint point) const {
 }
 
 void CellGraph::applyTurnTime(const TurnTimeModel& model) {
-    for (CellRecord& cell : records_)
-        cell.turnSecondsPer90Degrees =
-            static_cast<float>(model.secondsPer90Degrees(cell.speedMetresPerSecond));
+    turns_.applyModel(model);
 }
 
 void CellGraph::setExpectedTurns(const std::vector<float>& turnsPerSubCell) {
-    for (std::size_t id = 0; id < records_.size() && id < turnsPerSubCell.size(); ++id)
-        records_[id].expectedTurnsPerSubCell = turnsPerSubCell[id];
+    std::vector<float> turns(records_.size());
+    for (std::size_t id = 0; id < turns.size(); ++id)
+        turns[id] = id < turnsPerSubCell.size() ? turnsPerSubCell[id] : turns_.expectedTurns(id);
+    turns_.setExpectedTurns(std::move(turns));
+}
+
+void CellGraph::setTurnSeconds(std::vector<float> secondsPerCell) {
+    secondsPerCell.resize(records_.size(), 0.0F);
+    turns_.setTurnSeconds(std::move(secondsPerCell));
+}
+
+void CellGraph::setTurnFigures(CellTurnFigures figures) {
+    turns_ = std::move(figures);
 }
 
 } // namespace mcpp

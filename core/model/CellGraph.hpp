@@ -3,6 +3,7 @@
 #include "core/model/Cell.hpp"
 #include "core/model/CellRange.hpp"
 #include "core/model/CellRecord.hpp"
+#include "core/model/CellTurnFigures.hpp"
 #include "core/model/GridFrame.hpp"
 #include "core/model/GridOccupancy.hpp"
 #include "core/model/NeighbourList.hpp"
@@ -41,10 +42,18 @@ class CellGraph {
         return id >= 0 && static_cast<std::size_t>(id) < records_.size();
     }
     // A cell, whole: its square worked out from the frame.
-    [[nodiscard]] Cell cell(int id) const { return cellOf(records_[static_cast<std::size_t>(id)], frame_); }
-    [[nodiscard]] CellRange cells() const { return {records_, frame_}; }
+    [[nodiscard]] Cell cell(int id) const { return cells()[static_cast<std::size_t>(id)]; }
+    [[nodiscard]] CellRange cells() const { return {records_, frame_, turns_}; }
     [[nodiscard]] const CellRecord& record(int id) const { return records_[static_cast<std::size_t>(id)]; }
     [[nodiscard]] const std::vector<CellRecord>& records() const { return records_; }
+    // What a turn costs in cell `id` (CellGraph::applyTurnTime), without making the whole cell.
+    [[nodiscard]] float turnSeconds(int id) const {
+        const auto index = static_cast<std::size_t>(id);
+        return turns_.turnSeconds(index, records_[index].speedMetresPerSecond);
+    }
+    [[nodiscard]] const CellTurnFigures& turnFigures() const { return turns_; }
+    // The turn figures of a graph of the same cells (as many, with the same speeds).
+    void setTurnFigures(CellTurnFigures figures);
     [[nodiscard]] NeighbourList neighbours(int id) const {
         if (occupancy_.empty())
             return NeighbourList(adjacency_.of(id));
@@ -68,8 +77,10 @@ class CellGraph {
     [[nodiscard]] int cellAt(MapPoint point) const;
     // Gives every cell the time a turn costs there, so its cost counts turns. Decompositions leave it 0.
     void applyTurnTime(const TurnTimeModel& model);
-    // Sets the turns each cell's cost expects per sub-cell.
+    // Sets the turns each cell's cost expects per sub-cell (cells past the list's end keep theirs).
     void setExpectedTurns(const std::vector<float>& turnsPerSubCell);
+    // Gives each cell its own turn time (cells past the list's end get 0).
+    void setTurnSeconds(std::vector<float> secondsPerCell);
 
     // What the decomposition found out about the map, for reports.
     std::vector<RoundedFieldOfView> fieldsOfView;
@@ -96,6 +107,7 @@ class CellGraph {
 
     GridFrame frame_;
     std::vector<CellRecord> records_;
+    CellTurnFigures turns_;
     NeighbourTopology adjacency_; // empty where occupancy_ finds the neighbours
     GridOccupancy occupancy_;
     // Per distinct span: its cells sorted by (row / span, column / span), for cellAt. Ids only, the key

@@ -2,6 +2,7 @@
 
 #include "core/model/Cell.hpp"
 #include "core/model/CellRecord.hpp"
+#include "core/model/CellTurnFigures.hpp"
 #include "core/model/GridFrame.hpp"
 
 #include <cstddef>
@@ -22,38 +23,43 @@ class CellRange {
         using reference = Cell;
 
         Iterator() = default;
-        Iterator(const CellRecord* record, const GridFrame* frame) : record_(record), frame_(frame) {}
-        [[nodiscard]] Cell operator*() const { return cellOf(*record_, *frame_); }
+        Iterator(const CellRange* range, std::size_t id) : range_(range), id_(id) {}
+        [[nodiscard]] Cell operator*() const { return (*range_)[id_]; }
         Iterator& operator++() {
-            ++record_;
+            ++id_;
             return *this;
         }
         Iterator operator++(int) {
             Iterator before = *this;
-            ++record_;
+            ++id_;
             return before;
         }
-        [[nodiscard]] bool operator==(const Iterator& other) const { return record_ == other.record_; }
+        [[nodiscard]] bool operator==(const Iterator& other) const { return id_ == other.id_; }
 
       private:
-        const CellRecord* record_ = nullptr;
-        const GridFrame* frame_ = nullptr;
+        const CellRange* range_ = nullptr;
+        std::size_t id_ = 0;
     };
 
-    CellRange(const std::vector<CellRecord>& records, const GridFrame& frame)
-        : records_(records), frame_(frame) {}
+    CellRange(const std::vector<CellRecord>& records, const GridFrame& frame, const CellTurnFigures& turns)
+        : records_(records), frame_(frame), turns_(turns) {}
 
-    [[nodiscard]] Iterator begin() const { return {records_.data(), &frame_}; }
-    [[nodiscard]] Iterator end() const { return {records_.data() + records_.size(), &frame_}; }
+    [[nodiscard]] Iterator begin() const { return {this, 0}; }
+    [[nodiscard]] Iterator end() const { return {this, records_.size()}; }
     [[nodiscard]] std::size_t size() const { return records_.size(); }
     [[nodiscard]] bool empty() const { return records_.empty(); }
-    [[nodiscard]] Cell operator[](std::size_t id) const { return cellOf(records_[id], frame_); }
+    [[nodiscard]] Cell operator[](std::size_t id) const {
+        const CellRecord& record = records_[id];
+        return cellOf(record, frame_, turns_.turnSeconds(id, record.speedMetresPerSecond),
+                      turns_.expectedTurns(id));
+    }
     // Every cell, whole: for a planner that changes a copy of them.
     [[nodiscard]] std::vector<Cell> toVector() const { return {begin(), end()}; }
 
   private:
     const std::vector<CellRecord>& records_;
     const GridFrame& frame_;
+    const CellTurnFigures& turns_;
 };
 
 } // namespace mcpp

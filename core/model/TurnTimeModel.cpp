@@ -2,14 +2,6 @@
 
 namespace mcpp {
 
-double TurnTimeModel::secondsPer90Degrees(double speedMetresPerSecond) const {
-    if (fixedSecondsPer90Degrees >= 0.0)
-        return fixedSecondsPer90Degrees;
-    if (!(speedMetresPerSecond > 0.0) || !(accelerationMetresPerSecondSquared > 0.0))
-        return 0.0;
-    return speedMetresPerSecond / accelerationMetresPerSecondSquared;
-}
-
 ParameterSpec TurnTimeModel::turnSecondsParameter() {
     ParameterSpec spec = realParameter(
         "turn_s", "Time per 90° turn", automaticParameterValue, 0.0, 600.0,

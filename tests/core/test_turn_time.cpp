@@ -301,6 +301,60 @@ class TurnTimeTest : public QObject {
         QCOMPARE(graph.cell(0).expectedTurnsPerSubCell, 0.75F);
     }
 
+    // A graph keeps its turn figures beside its cells: given cell by cell, or worked out from each cell's
+    // speed by a model; a copy priced at other speeds keeps the turn times of the speeds before.
+    void turnFiguresStayWithTheirCells() {
+        GridFrame frame;
+        frame.originY = 10.0;
+        frame.bottomCellSize = 10.0;
+        frame.columns = 3;
+        frame.rows = 1;
+        std::vector<Cell> cells(3);
+        for (int column = 0; column < 3; ++column) {
+            Cell& cell = cells[static_cast<std::size_t>(column)];
+            cell.column = column;
+            cell.minX = 10.0 * column;
+            cell.size = 10.0;
+            cell.speedMetresPerSecond = 1.5F + static_cast<float>(column);
+        }
+        cells[1].turnSecondsPer90Degrees = 2.0F;
+        cells[2].expectedTurnsPerSubCell = 0.5F;
+        CellGraph graph(frame, cells, NeighbourTopology({0, 1, 3, 4}, {1, 0, 2, 1}));
+        QCOMPARE(graph.cell(0).turnSecondsPer90Degrees, 0.0F);
+        QCOMPARE(graph.cell(1).turnSecondsPer90Degrees, 2.0F);
+        QCOMPARE(graph.turnSeconds(1), 2.0F);
+        QCOMPARE(graph.cell(0).expectedTurnsPerSubCell, defaultExpectedTurnsPerSubCell);
+        QCOMPARE(graph.cell(2).expectedTurnsPerSubCell, 0.5F);
+
+        graph.applyTurnTime(TurnTimeModel{automaticParameterValue, 2.0});
+        for (int id = 0; id < 3; ++id)
+            QCOMPARE(graph.cell(id).turnSecondsPer90Degrees, (1.5F + static_cast<float>(id)) / 2.0F);
+        graph.setExpectedTurns({0.25F});
+        QCOMPARE(graph.cell(0).expectedTurnsPerSubCell, 0.25F);
+        QCOMPARE(graph.cell(1).expectedTurnsPerSubCell, defaultExpectedTurnsPerSubCell);
+        QCOMPARE(graph.cell(2).expectedTurnsPerSubCell, 0.5F);
+
+        std::vector<CellRecord> slower = graph.records();
+        for (CellRecord& record : slower)
+            record.speedMetresPerSecond /= 4.0F;
+        const CellGraph priced(graph, std::move(slower));
+        for (int id = 0; id < 3; ++id) {
+            QCOMPARE(priced.cell(id).speedMetresPerSecond, graph.cell(id).speedMetresPerSecond / 4.0F);
+            QCOMPARE(priced.cell(id).turnSecondsPer90Degrees, graph.cell(id).turnSecondsPer90Degrees);
+            QCOMPARE(priced.cell(id).expectedTurnsPerSubCell, graph.cell(id).expectedTurnsPerSubCell);
+        }
+        // The same speeds keep following the model.
+        const CellGraph same(graph, graph.records());
+        QVERIFY(same.turnFigures().followSpeeds());
+        QVERIFY(!priced.turnFigures().followSpeeds());
+
+        CellGraph apart(frame, graph.records(), NeighbourTopology({0, 0, 0, 0}, {}));
+        QCOMPARE(apart.cell(2).turnSecondsPer90Degrees, 0.0F);
+        apart.setTurnFigures(graph.turnFigures());
+        QCOMPARE(apart.cell(2).turnSecondsPer90Degrees, 1.75F);
+        QCOMPARE(apart.cell(2).expectedTurnsPerSubCell, 0.5F);
+    }
+
     // The automatic turn time follows the land cover's speed: a turn on a fast class costs more.
     void automaticTurnTimeFollowsTheCellsSpeed() {
         const PlanningProblem problem = test::drawnProblem(
