@@ -12,10 +12,6 @@ bool isHorizontal(CellSide side) {
     return side == CellSide::East || side == CellSide::West;
 }
 
-// The north-south straight adjacencies a node takes part in, at most one on either side (a cell has at most
-// one equal neighbour in its column to the north and one to the south), in increasing order; -1 for none.
-using NorthSouthEdges = std::array<int, 2>;
-
 // At most four: two ends, each with at most one equal neighbour north and one south.
 struct ConflictList {
     std::array<int, 4> ids{};
@@ -26,23 +22,36 @@ struct ConflictList {
     [[nodiscard]] int operator[](std::size_t i) const { return ids[i]; }
 };
 
-// The north-south straight adjacencies (by edge number) an east-west one conflicts with: those of its two
-// ends, in the order the ends' incidences list them. Worked out when asked from 8 bytes a node, where lists
-// of them took 20 bytes an east-west adjacency.
+// A north-south straight adjacency is numbered by its northern cell: a cell has at most one equal
+// neighbour south of it, so the numbers are the nodes' and the matching keeps one slot a node, not one an
+// adjacency.
+int northernEnd(const RegionAdjacency::Edge& edge) {
+    return edge.sideOfFirst == CellSide::South ? edge.first : static_cast<int>(edge.second);
+}
+
+// The north-south straight adjacencies (by their northern cells) an east-west one conflicts with: those
+// of its two ends, in the order the ends' incidences list them. Worked out when asked from 5 bytes a node:
+// the cell north of it (the adjacency above it), whether it has one below, and which of the two comes
+// first.
 class Conflicts {
   public:
     Conflicts(const RegionAdjacency& adjacency, std::vector<int> leftEdges)
-        : edges_(adjacency.edges()), leftEdges_(std::move(leftEdges)),
-          vertical_(adjacency.nodeCount(), NorthSouthEdges{-1, -1}) {
-        for (std::size_t node = 0; node < vertical_.size(); ++node) {
-            std::size_t found = 0;
+        : edges_(adjacency.edges()), leftEdges_(std::move(leftEdges)), north_(adjacency.nodeCount(), -1),
+          below_(adjacency.nodeCount(), 0) {
+        for (std::size_t node = 0; node < north_.size(); ++node) {
+            int found = 0;
             for (const auto& incidence : adjacency.incident(static_cast<int>(node))) {
                 if (!edges_[static_cast<std::size_t>(incidence.edge)].straight ||
                     isHorizontal(incidence.side))
                     continue;
-                if (found == 2)
+                if (found == 2 ||
+                    (incidence.side == CellSide::North ? north_[node] >= 0 : (below_[node] & hasBelow) != 0))
                     throw std::logic_error("a cell with more than two straight north-south neighbours");
-                vertical_[node][found++] = incidence.edge;
+                if (incidence.side == CellSide::North)
+                    north_[node] = incidence.other;
+                else
+                    below_[node] |= found == 0 ? hasBelow | belowFirst : hasBelow;
+                ++found;
             }
         }
     }
@@ -52,21 +61,32 @@ class Conflicts {
     [[nodiscard]] ConflictList of(int left) const {
         ConflictList list;
         const auto& ends = edges_[static_cast<std::size_t>(leftEdges_[static_cast<std::size_t>(left)])];
-        for (const int node : {ends.first, static_cast<int>(ends.second)})
-            for (const int right : vertical_[static_cast<std::size_t>(node)])
-                if (right >= 0)
-                    list.ids[list.count++] = right;
+        for (const int node : {ends.first, static_cast<int>(ends.second)}) {
+            const auto at = static_cast<std::size_t>(node);
+            const int above = north_[at];
+            const bool hasBelowEdge = (below_[at] & hasBelow) != 0;
+            if (hasBelowEdge && (below_[at] & belowFirst) != 0)
+                list.ids[list.count++] = node;
+            if (above >= 0)
+                list.ids[list.count++] = above;
+            if (hasBelowEdge && (below_[at] & belowFirst) == 0)
+                list.ids[list.count++] = node;
+        }
         return list;
     }
 
   private:
+    static constexpr unsigned char hasBelow = 1;
+    static constexpr unsigned char belowFirst = 2; // listed before the adjacency above
+
     const std::vector<RegionAdjacency::Edge>& edges_;
-    std::vector<int> leftEdges_; // the east-west straight adjacencies, by edge number
-    std::vector<NorthSouthEdges> vertical_;
+    std::vector<int> leftEdges_;       // the east-west straight adjacencies, by edge number
+    std::vector<int> north_;           // the equal cell north of a node in a straight run, or -1
+    std::vector<unsigned char> below_; // hasBelow, belowFirst
 };
 
 // Hopcroft-Karp between east-west straight adjacencies (left, numbered in order) and north-south ones
-// (right, by edge number) that conflict.
+// (right, by northern cell) that conflict.
 class BipartiteMatching {
   public:
     BipartiteMatching(const Conflicts& conflicts, std::size_t rightCount)
@@ -189,7 +209,7 @@ class BipartiteMatching {
 std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
     const auto& edges = adjacency.edges();
     // East-west straight adjacencies are the left vertices, in edge order; north-south ones the right
-    // vertices, by their edge numbers.
+    // vertices, by their northern cells.
     std::vector<int> leftEdges;
     leftEdges.reserve(
         static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [](const auto& edge) {
@@ -199,12 +219,12 @@ std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
         if (edges[e].straight && isHorizontal(edges[e].sideOfFirst))
             leftEdges.push_back(static_cast<int>(e));
     const Conflicts conflicts(adjacency, std::move(leftEdges));
-    BipartiteMatching matching(conflicts, edges.size());
+    BipartiteMatching matching(conflicts, adjacency.nodeCount());
     matching.solve();
     // Konig: left vertices reached from free left vertices by alternating paths, plus right vertices not
     // reached, form the largest independent set.
     std::vector<char> reachedLeft(conflicts.leftCount(), 0);
-    std::vector<char> kept(edges.size(), 0); // first: right vertices reached
+    std::vector<char> reachedRight(adjacency.nodeCount(), 0);
     std::vector<int> queue;
     for (std::size_t left = 0; left < conflicts.leftCount(); ++left)
         if (matching.matchOfLeft()[left] < 0) {
@@ -213,17 +233,21 @@ std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
         }
     for (std::size_t head = 0; head < queue.size(); ++head)
         for (int right : matching.rightOf(queue[head])) {
-            if (kept[static_cast<std::size_t>(right)] != 0)
+            if (reachedRight[static_cast<std::size_t>(right)] != 0)
                 continue;
-            kept[static_cast<std::size_t>(right)] = 1;
+            reachedRight[static_cast<std::size_t>(right)] = 1;
             const int next = matching.matchOfRight()[static_cast<std::size_t>(right)];
             if (next >= 0 && reachedLeft[static_cast<std::size_t>(next)] == 0) {
                 reachedLeft[static_cast<std::size_t>(next)] = 1;
                 queue.push_back(next);
             }
         }
+    std::vector<char> kept(edges.size(), 0);
     for (std::size_t e = 0; e < edges.size(); ++e)
-        kept[e] = edges[e].straight && !isHorizontal(edges[e].sideOfFirst) && kept[e] == 0 ? 1 : 0;
+        kept[e] = edges[e].straight && !isHorizontal(edges[e].sideOfFirst) &&
+                          reachedRight[static_cast<std::size_t>(northernEnd(edges[e]))] == 0
+                      ? 1
+                      : 0;
     for (std::size_t left = 0; left < conflicts.leftCount(); ++left)
         kept[static_cast<std::size_t>(conflicts.edgeOfLeft(left))] = reachedLeft[left];
     return kept;
