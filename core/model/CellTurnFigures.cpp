@@ -1,6 +1,7 @@
 #include "core/model/CellTurnFigures.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace mcpp {
@@ -12,8 +13,9 @@ void CellTurnFigures::applyModel(const TurnTimeModel& model) {
 
 void CellTurnFigures::setTurnSeconds(std::vector<float> secondsOfCell) {
     model_ = TurnTimeModel{0.0};
+    // -0 is kept as given: the graph without a list gives +0.
     const bool allZero = std::all_of(secondsOfCell.begin(), secondsOfCell.end(),
-                                     [](float seconds) { return seconds == 0.0F; });
+                                     [](float seconds) { return seconds == 0.0F && !std::signbit(seconds); });
     turnSecondsOfCell_ = allZero ? std::vector<float>{} : std::move(secondsOfCell);
 }
 

@@ -12,7 +12,7 @@ namespace mcpp {
 // Kept beside the cell records instead of in them, 8 bytes a cell less (550 MB on a map of 69 million
 // cells): on a planned map the turn time follows from the cell's speed and one model, and the expected
 // turns are the default until a planner measures them. Only figures given cell by cell (by hand, from a
-// plan file, measured per region) are kept one a cell.
+// plan file, measured per region) are kept, one for each cell.
 class CellTurnFigures {
   public:
     [[nodiscard]] float turnSeconds(std::size_t id, float speedMetresPerSecond) const {
