@@ -28,20 +28,15 @@ void RegionAdjacency::add(const CellRecord& from, const CellRecord& to, int a, i
 void RegionAdjacency::index(std::size_t nodes) {
     // Counted, summed to each node's end, then filled from the back with the edges in reverse: each node's
     // edges come out in increasing order and its start is left behind, with no second array of offsets.
-    offsets_.assign(nodes + 1, 0);
-    for (const Edge& edge : edges_) {
-        ++offsets_[static_cast<std::size_t>(edge.first)];
-        ++offsets_[static_cast<std::size_t>(edge.second)];
-    }
+    secondOffsets_.assign(nodes + 1, 0);
+    for (const Edge& edge : edges_)
+        ++secondOffsets_[static_cast<std::size_t>(edge.second)];
     for (std::size_t i = 1; i <= nodes; ++i)
-        offsets_[i] += offsets_[i - 1];
-    incidences_.resize(2 * edges_.size());
-    for (std::size_t e = edges_.size(); e-- > 0;) {
-        const Edge& edge = edges_[e];
-        const int id = static_cast<int>(e);
-        incidences_[static_cast<std::size_t>(--offsets_[static_cast<std::size_t>(edge.first)])] = id;
-        incidences_[static_cast<std::size_t>(--offsets_[static_cast<std::size_t>(edge.second)])] = id;
-    }
+        secondOffsets_[i] += secondOffsets_[i - 1];
+    secondEnds_.resize(edges_.size());
+    for (std::size_t e = edges_.size(); e-- > 0;)
+        secondEnds_[static_cast<std::size_t>(--secondOffsets_[static_cast<std::size_t>(edges_[e].second)])] =
+            static_cast<int>(e);
 }
 
 } // namespace mcpp

@@ -36,39 +36,54 @@ class RegionAdjacency {
         int other = 0;
         CellSide side = CellSide::East;
     };
-    // A node's incidences, kept as edge numbers (4 bytes where a whole incidence takes 12: on a region of
-    // tens of millions of cells, hundreds of megabytes) and read back whole from the edges.
+    // A node's incidences in increasing edge number, read back whole from the edges. Edges are numbered
+    // by their first end, so those a node is the first end of are one range and only those it is the
+    // second end of are listed: 16 bytes a node where a list of all took 20 (hundreds of megabytes on a
+    // region of tens of millions of cells). Those it is the second end of come first, their first ends
+    // being lower.
     class IncidenceRange {
       public:
         class Iterator {
           public:
-            Iterator(const Edge* edges, const int* at, int node) : edges_(edges), at_(at), node_(node) {}
+            Iterator(const Edge* edges, const int* listed, const int* listedEnd, int ranged)
+                : edges_(edges), listed_(listed), listedEnd_(listedEnd), ranged_(ranged) {}
             [[nodiscard]] Incidence operator*() const {
-                const Edge& edge = edges_[*at_];
-                return edge.first == node_ ? Incidence{*at_, edge.second, edge.sideOfFirst}
-                                           : Incidence{*at_, edge.first, oppositeSide(edge.sideOfFirst)};
+                if (listed_ != listedEnd_) {
+                    const Edge& edge = edges_[*listed_];
+                    return {*listed_, edge.first, oppositeSide(edge.sideOfFirst)};
+                }
+                const Edge& edge = edges_[ranged_];
+                return {ranged_, edge.second, edge.sideOfFirst};
             }
             Iterator& operator++() {
-                ++at_;
+                if (listed_ != listedEnd_)
+                    ++listed_;
+                else
+                    ++ranged_;
                 return *this;
             }
-            [[nodiscard]] bool operator==(const Iterator& other) const { return at_ == other.at_; }
+            [[nodiscard]] bool operator==(const Iterator& other) const {
+                return listed_ == other.listed_ && ranged_ == other.ranged_;
+            }
 
           private:
             const Edge* edges_;
-            const int* at_;
-            int node_;
+            const int* listed_; // the edges the node is the second end of, then listedEnd_
+            const int* listedEnd_;
+            int ranged_; // then the edges it is the first end of
         };
-        IncidenceRange(const Edge* edges, const int* begin, const int* end, int node)
-            : edges_(edges), begin_(begin), end_(end), node_(node) {}
-        [[nodiscard]] Iterator begin() const { return {edges_, begin_, node_}; }
-        [[nodiscard]] Iterator end() const { return {edges_, end_, node_}; }
+        IncidenceRange(const Edge* edges, const int* listed, const int* listedEnd, int firstEdge, int endEdge)
+            : edges_(edges), listed_(listed), listedEnd_(listedEnd), firstEdge_(firstEdge),
+              endEdge_(endEdge) {}
+        [[nodiscard]] Iterator begin() const { return {edges_, listed_, listedEnd_, firstEdge_}; }
+        [[nodiscard]] Iterator end() const { return {edges_, listedEnd_, listedEnd_, endEdge_}; }
 
       private:
         const Edge* edges_;
-        const int* begin_;
-        const int* end_;
-        int node_;
+        const int* listed_;
+        const int* listedEnd_;
+        int firstEdge_;
+        int endEdge_;
     };
 
     // localIndex: the region's position of every graph cell, -1 outside (a CellIndexScope).
@@ -83,30 +98,36 @@ class RegionAdjacency {
         for (int cell : cells)
             neighbourEnds += graph.neighbours(cell).size();
         edges_.reserve(neighbourEnds / 2);
-        for (std::size_t a = 0; a < cells.size(); ++a)
+        firstEdges_.reserve(cells.size() + 1);
+        for (std::size_t a = 0; a < cells.size(); ++a) {
+            firstEdges_.push_back(static_cast<int>(edges_.size()));
             for (int neighbour : graph.neighbours(cells[a])) {
                 const int b = localIndex[neighbour];
                 if (b > static_cast<int>(a))
                     add(graph.record(cells[a]), graph.record(neighbour), static_cast<int>(a), b);
             }
+        }
+        firstEdges_.push_back(static_cast<int>(edges_.size()));
         index(cells.size());
     }
 
-    [[nodiscard]] std::size_t nodeCount() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
+    [[nodiscard]] std::size_t nodeCount() const { return firstEdges_.empty() ? 0 : firstEdges_.size() - 1; }
     [[nodiscard]] const std::vector<Edge>& edges() const { return edges_; }
     [[nodiscard]] IncidenceRange incident(int node) const {
-        const int* edgeNumbers = incidences_.data();
-        return {edges_.data(), edgeNumbers + offsets_[static_cast<std::size_t>(node)],
-                edgeNumbers + offsets_[static_cast<std::size_t>(node) + 1], node};
+        const auto at = static_cast<std::size_t>(node);
+        const int* listed = secondEnds_.data();
+        return {edges_.data(), listed + secondOffsets_[at], listed + secondOffsets_[at + 1], firstEdges_[at],
+                firstEdges_[at + 1]};
     }
 
   private:
     void add(const CellRecord& from, const CellRecord& to, int a, int b);
     void index(std::size_t nodes);
 
-    std::vector<Edge> edges_;
-    std::vector<int> offsets_;
-    std::vector<int> incidences_; // edge numbers, node by node
+    std::vector<Edge> edges_;        // in increasing first end
+    std::vector<int> firstEdges_;    // node i is the first end of edges firstEdges_[i] .. [i + 1]
+    std::vector<int> secondOffsets_; // and the second end of secondEnds_[secondOffsets_[i] .. [i + 1]]
+    std::vector<int> secondEnds_;    // edge numbers, node by node
 };
 
 } // namespace mcpp
