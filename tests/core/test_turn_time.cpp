@@ -35,6 +35,23 @@ CellGraph oneCell(double turnSeconds) {
     return CellGraph(frame, {cell}, NeighbourTopology({0, 0}, {}));
 }
 
+// A row of three 10 m cells, each of its column's speed, turn time and sub-cells; neighbours in the row.
+CellGraph threeCellRow(const std::vector<Cell>& figures) {
+    GridFrame frame;
+    frame.originY = 10.0;
+    frame.bottomCellSize = 10.0;
+    frame.columns = 3;
+    frame.rows = 1;
+    std::vector<Cell> cells = figures;
+    for (int column = 0; column < 3; ++column) {
+        Cell& cell = cells[static_cast<std::size_t>(column)];
+        cell.column = column;
+        cell.minX = 10.0 * column;
+        cell.size = 10.0;
+    }
+    return CellGraph(frame, cells, NeighbourTopology({0, 1, 3, 4}, {1, 0, 2, 1}));
+}
+
 // A path through the cell at 2 m/s, or in no cell where `inCell` is false.
 std::vector<Waypoint> pathOf(std::initializer_list<MapPoint> points, bool inCell = true) {
     std::vector<Waypoint> waypoints;
@@ -270,22 +287,13 @@ class TurnTimeTest : public QObject {
 
     // Each region's cells take the turns per sub-cell its robot's path made; cells of no region keep theirs.
     void calibrationGivesEachRegionItsPathsTurnRate() {
-        GridFrame frame;
-        frame.originY = 10.0;
-        frame.bottomCellSize = 10.0;
-        frame.columns = 3;
-        frame.rows = 1;
         std::vector<Cell> cells(3);
-        for (int column = 0; column < 3; ++column) {
-            Cell& cell = cells[static_cast<std::size_t>(column)];
-            cell.column = column;
-            cell.minX = 10.0 * column;
-            cell.size = 10.0;
+        for (Cell& cell : cells) {
             cell.speedMetresPerSecond = 1.0;
             cell.turnSecondsPer90Degrees = 2.0F;
         }
         cells[1].freeSubCells = 0b0011; // two free sub-cells
-        CellGraph graph(frame, cells, NeighbourTopology({0, 1, 3, 4}, {1, 0, 2, 1}));
+        CellGraph graph = threeCellRow(cells);
         RegionAllocation regions;
         regions.robotOfCell = {0, 0, -1};
         regions.startCell = {0};
@@ -304,22 +312,12 @@ class TurnTimeTest : public QObject {
     // A graph keeps its turn figures beside its cells: given cell by cell, or worked out from each cell's
     // speed by a model; a copy priced at other speeds keeps the turn times of the speeds before.
     void turnFiguresStayWithTheirCells() {
-        GridFrame frame;
-        frame.originY = 10.0;
-        frame.bottomCellSize = 10.0;
-        frame.columns = 3;
-        frame.rows = 1;
         std::vector<Cell> cells(3);
-        for (int column = 0; column < 3; ++column) {
-            Cell& cell = cells[static_cast<std::size_t>(column)];
-            cell.column = column;
-            cell.minX = 10.0 * column;
-            cell.size = 10.0;
-            cell.speedMetresPerSecond = 1.5F + static_cast<float>(column);
-        }
+        for (std::size_t column = 0; column < 3; ++column)
+            cells[column].speedMetresPerSecond = 1.5F + static_cast<float>(column);
         cells[1].turnSecondsPer90Degrees = 2.0F;
         cells[2].expectedTurnsPerSubCell = 0.5F;
-        CellGraph graph(frame, cells, NeighbourTopology({0, 1, 3, 4}, {1, 0, 2, 1}));
+        CellGraph graph = threeCellRow(cells);
         QCOMPARE(graph.cell(0).turnSecondsPer90Degrees, 0.0F);
         QCOMPARE(graph.cell(1).turnSecondsPer90Degrees, 2.0F);
         QCOMPARE(graph.turnSeconds(1), 2.0F);
@@ -348,7 +346,7 @@ class TurnTimeTest : public QObject {
         QVERIFY(same.turnFigures().followSpeeds());
         QVERIFY(!priced.turnFigures().followSpeeds());
 
-        CellGraph apart(frame, graph.records(), NeighbourTopology({0, 0, 0, 0}, {}));
+        CellGraph apart(graph.frame(), graph.records(), NeighbourTopology({0, 0, 0, 0}, {}));
         QCOMPARE(apart.cell(2).turnSecondsPer90Degrees, 0.0F);
         apart.setTurnFigures(graph.turnFigures());
         QCOMPARE(apart.cell(2).turnSecondsPer90Degrees, 1.75F);
