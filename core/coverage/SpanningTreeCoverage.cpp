@@ -96,13 +96,29 @@ ParameterSpec SpanningTreeCoverage::closedTourParameter() {
 std::pair<SpanningTree, PathShape>
 SpanningTreeCoverage::bestTree(const CellGraph& graph, std::vector<int> cells, int startCell, MapPoint start,
                                std::vector<int>& scratchIndex, bool timed) const {
+    RegionTree best = bestRegionTree(graph, std::move(cells), startCell, -1, start, scratchIndex, timed, 0);
+    return {std::move(best.tree), best.shape};
+}
+
+SpanningTreeCoverage::RegionTree
+SpanningTreeCoverage::bestRegionTree(const CellGraph& graph, std::vector<int> cells, int startCell, int robot,
+                                     MapPoint start, std::vector<int>& scratchIndex, bool timed,
+                                     std::size_t walkLimit) const {
     const SpanningTreeBuilder trees(graph, scratchIndex);
     TreeCircumnavigation walker(graph);
-    // Candidate trees are judged by the shape of their walk, which is measured without being stored.
-    SpanningTree best;
-    PathShape bestShape;
-    bool haveBest = false;
     const int candidates = trees.candidatesFor(cells);
+    if (candidates == 1 && walkLimit > 0) {
+        RegionTree lone{trees.candidate(0, std::move(cells), startCell), {}, std::nullopt};
+        auto [shape, path] = walker.walkShapeAndPath(lone.tree, robot, start, closedTour_, timed, walkLimit);
+        lone.shape = shape;
+        lone.walked = std::move(path);
+        if (lone.walked)
+            lone.tree = SpanningTree(); // the path is made: the tree is not walked again
+        return lone;
+    }
+    // Candidate trees are judged by the shape of their walk, which is measured without being stored.
+    RegionTree best;
+    bool haveBest = false;
     for (int candidate = 0; candidate < candidates; ++candidate) {
         // The last candidate takes the cells: a region of millions of cells is not held twice.
         SpanningTree tree = candidate + 1 == candidates
@@ -110,13 +126,13 @@ SpanningTreeCoverage::bestTree(const CellGraph& graph, std::vector<int> cells, i
                                 : trees.candidate(candidate, cells, startCell);
         // A lone candidate needs no time: its shape only sizes the path.
         const PathShape shape = walker.walkShape(tree, start, closedTour_, timed || candidates > 1);
-        if (!haveBest || isQuicker(shape, bestShape)) {
-            best = std::move(tree);
-            bestShape = shape;
+        if (!haveBest || isQuicker(shape, best.shape)) {
+            best.tree = std::move(tree);
+            best.shape = shape;
             haveBest = true;
         }
     }
-    return {std::move(best), bestShape};
+    return best;
 }
 
 CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std::vector<int>& cells,
@@ -135,7 +151,7 @@ SpanningTreeCoverage::planTrees(const CellGraph& graph, const RegionAllocation& 
                                 const std::vector<MapPoint>& starts, const ProgressReporter& progress,
                                 bool timed) const {
     return planTreesKeeping(graph, regions, starts, progress, timed,
-                            std::vector<const RegionTree*>(regions.startCell.size(), nullptr));
+                            std::vector<const RegionTree*>(regions.startCell.size(), nullptr), true);
 }
 
 std::vector<SpanningTreeCoverage::RegionTree> SpanningTreeCoverage::replanTrees(
@@ -161,13 +177,14 @@ std::vector<SpanningTreeCoverage::RegionTree> SpanningTreeCoverage::replanTrees(
             if (changed[robot] == 0)
                 kept[robot] = &earlierTrees[robot];
     }
-    return planTreesKeeping(graph, regions, starts, progress, timed, kept);
+    return planTreesKeeping(graph, regions, starts, progress, timed, kept, false);
 }
 
 std::vector<SpanningTreeCoverage::RegionTree>
 SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAllocation& regions,
                                        const std::vector<MapPoint>& starts, const ProgressReporter& progress,
-                                       bool timed, const std::vector<const RegionTree*>& kept) const {
+                                       bool timed, const std::vector<const RegionTree*>& kept,
+                                       bool walkSmallPaths) const {
     const std::size_t robots = regions.startCell.size();
     const bool largeMap = graph.size() >= cellsForMergedRuns_;
     auto regionCells = largeMap ? std::vector<std::vector<int>>(robots) : cellsByRobot(regions);
@@ -190,11 +207,12 @@ SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAlloc
                 scratch.assign(graph.size(), -1);
             if (largeMap)
                 regionCells[robot] = cellsOfRobot(regions, static_cast<int>(robot), counts[robot]);
-            auto [tree, shape] = bestTree(graph, std::move(regionCells[robot]), regions.startCell[robot],
-                                          starts[robot], scratch, timed);
-            trees[robot] = {std::move(tree), shape}; // the tree holds its cells now
-            // On large maps the trees wait packed beside the regions still planned.
-            if (largeMap)
+            // The tree holds its cells now. On large maps a path of few waypoints is made as the tree's
+            // walk is measured; otherwise the tree waits packed beside the regions still planned.
+            trees[robot] = bestRegionTree(graph, std::move(regionCells[robot]), regions.startCell[robot],
+                                          static_cast<int>(robot), starts[robot], scratch, timed,
+                                          largeMap && walkSmallPaths ? walkedPathLimit(counts[robot]) : 0);
+            if (largeMap && !trees[robot].walked)
                 trees[robot].tree.pack();
         }
         const std::lock_guard lock(progressMutex);
@@ -217,7 +235,9 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
         TreeCircumnavigation walker(graph);
         RegionTree& planned = trees[robot];
         planned.tree.unpack();
-        if (graph.size() >= cellsForMergedRuns_) {
+        if (planned.walked) {
+            paths[robot] = std::move(*planned.walked);
+        } else if (graph.size() >= cellsForMergedRuns_) {
             paths[robot] =
                 walker.measuredWalk(planned.tree, static_cast<int>(robot), starts[robot], closedTour_);
         } else {

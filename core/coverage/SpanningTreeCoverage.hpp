@@ -6,6 +6,7 @@
 #include "core/parameters/ParameterSpec.hpp"
 
 #include <limits>
+#include <optional>
 #include <utility>
 
 namespace mcpp {
@@ -46,7 +47,14 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
     struct RegionTree {
         SpanningTree tree;
         PathShape shape;
+        // On maps of cellsForMergedRuns cells or more, the path walkTrees would make, when the walk that
+        // measured the shape kept few waypoints (walkedPathLimit); the tree is then dropped, not walked
+        // again.
+        std::optional<CoveragePath> walked;
     };
+    // The most waypoints a path walked while its tree was chosen may keep, for a tree of `cells` cells: one
+    // for 8 cells (3 bytes a cell), less than the packed tree that waits otherwise.
+    [[nodiscard]] static std::size_t walkedPathLimit(std::size_t cells) { return cells / 8; }
     // Every region's quickest tree, not yet walked: two divisions are compared by their trees' shapes while
     // holding a quarter of what their paths would take (24 bytes a cell against four 24-byte waypoints).
     // `timed`: every shape timed, for comparing; otherwise only where candidates were compared.
@@ -54,7 +62,8 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                     const std::vector<MapPoint>& starts,
                                                     const ProgressReporter& progress, bool timed) const;
     // planTrees for a division evened out from `earlier`: a region whose cells and start are those it had
-    // there keeps its tree (a copy: a tree depends on nothing else), the others are planned anew.
+    // there keeps its tree (a copy: a tree depends on nothing else), the others are planned anew. They are
+    // not walked beyond their shapes: a division made to be compared is often let go.
     [[nodiscard]] std::vector<RegionTree> replanTrees(const CellGraph& graph, const RegionAllocation& regions,
                                                       const RegionAllocation& earlier,
                                                       const std::vector<RegionTree>& earlierTrees,
@@ -74,12 +83,16 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                                               bool timed = false) const;
 
   private:
-    // planTrees, where a robot with a tree in `kept` takes a copy of it instead.
-    [[nodiscard]] std::vector<RegionTree> planTreesKeeping(const CellGraph& graph,
-                                                           const RegionAllocation& regions,
-                                                           const std::vector<MapPoint>& starts,
-                                                           const ProgressReporter& progress, bool timed,
-                                                           const std::vector<const RegionTree*>& kept) const;
+    // bestTree, and with `walkLimit` above 0 the lone candidate's path kept when it is that small.
+    [[nodiscard]] RegionTree bestRegionTree(const CellGraph& graph, std::vector<int> cells, int startCell,
+                                            int robot, MapPoint start, std::vector<int>& scratchIndex,
+                                            bool timed, std::size_t walkLimit) const;
+    // planTrees, where a robot with a tree in `kept` takes a copy of it instead; `walkSmallPaths`: on large
+    // maps, paths of few waypoints made as the trees are measured (RegionTree::walked).
+    [[nodiscard]] std::vector<RegionTree>
+    planTreesKeeping(const CellGraph& graph, const RegionAllocation& regions,
+                     const std::vector<MapPoint>& starts, const ProgressReporter& progress, bool timed,
+                     const std::vector<const RegionTree*>& kept, bool walkSmallPaths) const;
 
     bool closedTour_;
     std::size_t cellsForMergedRuns_;

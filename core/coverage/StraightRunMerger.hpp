@@ -19,6 +19,8 @@ class StraightRunMerger {
     // Puts the kept waypoints into `path`, with walkedWaypoints and runFollows when a run was merged; a
     // path of no straight run gets every waypoint and stays unmerged. The merger then starts afresh.
     void finishInto(CoveragePath& path);
+    // Waypoints kept so far (one more is kept when the walk finishes).
+    [[nodiscard]] std::size_t keptCount() const { return kept_.size(); }
 
   private:
     void keep(const Waypoint& waypoint, std::size_t index);

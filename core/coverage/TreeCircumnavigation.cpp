@@ -145,6 +145,7 @@ class MeasuringSink {
     [[nodiscard]] const Waypoint& back() const { return last_; }
     // The walk's first waypoint, as traverse wants, not the start point before it.
     [[nodiscard]] const Waypoint& front() const { return first_; }
+    [[nodiscard]] std::size_t keptWaypoints() const { return merger_.keptCount(); }
     [[nodiscard]] CoveragePath finish(int robot) {
         if (closed_ && haveOrigin_)
             feed(origin_);
@@ -174,6 +175,40 @@ class MeasuringSink {
     Waypoint first_;
     Waypoint last_;
     Waypoint origin_;
+};
+
+// ShapeSink and MeasuringSink fed the same walk; the measuring is given up (and its memory handed back)
+// once the path keeps more waypoints than the limit.
+class ShapeAndMeasuringSink {
+  public:
+    ShapeAndMeasuringSink(const CellGraph& graph, MapPoint start, bool closed, bool timed,
+                          std::size_t waypointLimit)
+        : shape_(graph, start, closed, timed), measuring_(std::in_place, graph, start, closed),
+          waypointLimit_(waypointLimit) {}
+    void push(const Waypoint& waypoint) {
+        shape_.push(waypoint);
+        if (!measuring_)
+            return;
+        measuring_->push(waypoint);
+        if (measuring_->keptWaypoints() > waypointLimit_)
+            measuring_.reset();
+    }
+    [[nodiscard]] const Waypoint& back() const { return shape_.back(); }
+    [[nodiscard]] const Waypoint& front() const { return shape_.front(); }
+    [[nodiscard]] TreeCircumnavigation::ShapeAndPath finish(int robot) {
+        TreeCircumnavigation::ShapeAndPath result{shape_.finish(), std::nullopt};
+        if (measuring_) {
+            result.path = measuring_->finish(robot);
+            if (result.path->waypoints.size() > waypointLimit_)
+                result.path.reset();
+        }
+        return result;
+    }
+
+  private:
+    ShapeSink shape_;
+    std::optional<MeasuringSink> measuring_;
+    std::size_t waypointLimit_;
 };
 
 } // namespace
@@ -268,6 +303,15 @@ std::vector<Waypoint> TreeCircumnavigation::walkFromStart(const SpanningTree& tr
 CoveragePath TreeCircumnavigation::measuredWalk(const SpanningTree& tree, int robot, MapPoint start,
                                                 bool closed) {
     MeasuringSink sink(graph_, start, closed);
+    traverse(tree, start, closed, sink);
+    return sink.finish(robot);
+}
+
+TreeCircumnavigation::ShapeAndPath TreeCircumnavigation::walkShapeAndPath(const SpanningTree& tree, int robot,
+                                                                          MapPoint start, bool closed,
+                                                                          bool timed,
+                                                                          std::size_t waypointLimit) {
+    ShapeAndMeasuringSink sink(graph_, start, closed, timed, waypointLimit);
     traverse(tree, start, closed, sink);
     return sink.finish(robot);
 }

@@ -6,6 +6,7 @@
 #include "core/model/CoveragePath.hpp"
 
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -37,6 +38,14 @@ class TreeCircumnavigation {
     // instead of two.
     [[nodiscard]] PathShape walkShape(const SpanningTree& tree, MapPoint start, bool closed,
                                       bool timed = true);
+    struct ShapeAndPath {
+        PathShape shape;
+        std::optional<CoveragePath> path; // none when it kept more waypoints than the limit
+    };
+    // walkShape and, in the same walk, measuredWalk's path while that keeps at most `waypointLimit`
+    // waypoints: a large region whose path turns little is walked once instead of twice.
+    [[nodiscard]] ShapeAndPath walkShapeAndPath(const SpanningTree& tree, int robot, MapPoint start,
+                                                bool closed, bool timed, std::size_t waypointLimit);
     // Waypoints of the last walk that pass a cell again to bridge cells that do not touch.
     [[nodiscard]] int bridgeVisits() const { return bridgeVisits_; }
 

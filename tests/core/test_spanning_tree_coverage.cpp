@@ -112,6 +112,20 @@ class SpanningTreeCoverageTest : public QObject {
                     walker.measuredWalk(tree, static_cast<int>(robot), start, closed);
                 QVERIFY2(differenceBetween(asWalked, merged).isEmpty(),
                          qPrintable(differenceBetween(asWalked, merged)));
+                // Shape and path in one walk: the same shape, and the path while it stays within the limit.
+                const std::size_t kept = asWalked.waypoints.size();
+                for (const std::size_t limit : {kept, kept - 1}) {
+                    const auto both =
+                        walker.walkShapeAndPath(tree, static_cast<int>(robot), start, closed, true, limit);
+                    QCOMPARE(both.shape.turns(), shape.turns());
+                    QCOMPARE(both.shape.lengthMetres(), shape.lengthMetres());
+                    QCOMPARE(both.shape.seconds(), shape.seconds());
+                    QCOMPARE(both.shape.turningSeconds(), shape.turningSeconds());
+                    QCOMPARE(both.path.has_value(), limit == kept);
+                    if (both.path)
+                        QVERIFY2(differenceBetween(*both.path, asWalked).isEmpty(),
+                                 qPrintable(differenceBetween(*both.path, asWalked)));
+                }
                 // And as the whole path's own sums, by loops of their own, give them.
                 QCOMPARE(asWalked.lengthMetres, pathLengthMetres(path.waypoints));
                 QCOMPARE(asWalked.timeSeconds, pathSeconds(path.waypoints, plan.cells).total);
@@ -214,7 +228,7 @@ class SpanningTreeCoverageTest : public QObject {
         auto wholeTrees = whole.planTrees(plan.cells, plan.regions, problem.starts, {}, true);
         auto packedTrees = packing.planTrees(plan.cells, plan.regions, problem.starts, {}, true);
         for (const auto& planned : packedTrees)
-            QVERIFY(planned.tree.packed());
+            QVERIFY(planned.walked || planned.tree.packed());
         const auto wholePaths = whole.walkTrees(plan.cells, std::move(wholeTrees), problem.starts, {});
         const auto packedPaths = packing.walkTrees(plan.cells, std::move(packedTrees), problem.starts, {});
         QCOMPARE(packedPaths.size(), wholePaths.size());
@@ -225,6 +239,41 @@ class SpanningTreeCoverageTest : public QObject {
                 QCOMPARE(walked[i].x, wholePaths[robot].waypoints[i].x);
                 QCOMPARE(walked[i].y, wholePaths[robot].waypoints[i].y);
             }
+        }
+    }
+
+    // Above the size for merged runs, a path of few waypoints is made while its tree is measured and the
+    // tree let go: walkTrees hands over that path, the one the tree's own walk makes. A replanned division
+    // walks nothing beyond its shapes.
+    void smallPathsAreWalkedWithTheirTrees() {
+        auto problem = test::uniformProblem(48, 40, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 47, 39)};
+        const Plan plan = planOf(problem);
+        const SpanningTreeCoverage large(true, 1);
+        auto trees = large.planTrees(plan.cells, plan.regions, problem.starts, {}, true);
+        const auto replanned =
+            large.replanTrees(plan.cells, plan.regions, RegionAllocation{}, {}, problem.starts, {}, true);
+        for (std::size_t robot = 0; robot < trees.size(); ++robot) {
+            QVERIFY(trees[robot].walked.has_value());
+            QCOMPARE(trees[robot].tree.size(), std::size_t{0});
+            QVERIFY(trees[robot].walked->waypoints.size() <=
+                    SpanningTreeCoverage::walkedPathLimit(cellsByRobot(plan.regions)[robot].size()));
+            QVERIFY(!replanned[robot].walked.has_value());
+            QCOMPARE(replanned[robot].shape.seconds(), trees[robot].shape.seconds());
+        }
+        const auto paths = large.walkTrees(plan.cells, std::move(trees), problem.starts, {});
+        const auto cells = cellsByRobot(plan.regions);
+        std::vector<int> scratch;
+        TreeCircumnavigation walker(plan.cells);
+        for (std::size_t robot = 0; robot < paths.size(); ++robot) {
+            const SpanningTree tree = large
+                                          .bestTree(plan.cells, cells[robot], plan.regions.startCell[robot],
+                                                    problem.starts[robot], scratch, true)
+                                          .first;
+            const CoveragePath expected =
+                walker.measuredWalk(tree, static_cast<int>(robot), problem.starts[robot], true);
+            QVERIFY2(differenceBetween(paths[robot], expected).isEmpty(),
+                     qPrintable(differenceBetween(paths[robot], expected)));
         }
     }
 
