@@ -106,7 +106,7 @@ double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX
     const bool straightOn = inX * outY - inY * outX == 0.0 && inX * outX + inY * outY > 0.0;
     if (straightOn || !graph.contains(corner.cell))
         return 0.0; // straight on, most steps of a path, costs nothing whatever the cell's price
-    return turnSecondsBetween(inX, inY, outX, outY, graph.cell(corner.cell).turnSecondsPer90Degrees);
+    return turnSecondsBetween(inX, inY, outX, outY, graph.turnSeconds(corner.cell));
 }
 
 double turnSecondsBetween(double inX, double inY, double outX, double outY, double price) {

@@ -1,6 +1,7 @@
 #include "core/coverage/StraightRunMerger.hpp"
 
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/model/CellRecord.hpp"
 
 #include <cmath>
 
@@ -17,20 +18,26 @@ bool isSubCellStep(const Waypoint& from, const Waypoint& to, double cellSize) {
 // Whether the walk goes straight on through waypoint b, in steps of one sub-cell, with one speed, one
 // cell size and one land cover from a through b to c: b can be left out and put back from a and c.
 bool insideStraightRun(const Waypoint& a, const Waypoint& b, const Waypoint& c, const CellGraph& graph) {
+    // Straight on first: a turn, the one test most waypoints that are kept fail, needs no cell.
+    const double inX = b.x - a.x, inY = b.y - a.y, outX = c.x - b.x, outY = c.y - b.y;
+    if (!(inX * outY - inY * outX == 0.0 && inX * outX + inY * outY > 0.0))
+        return false;
     if (!graph.contains(a.cell) || !graph.contains(b.cell) || !graph.contains(c.cell))
         return false;
     if (a.speedMetresPerSecond != b.speedMetresPerSecond || b.speedMetresPerSecond != c.speedMetresPerSecond)
         return false;
-    const Cell& middle = graph.cell(b.cell);
+    // Records, not whole cells: a waypoint needs only their sizes and land covers.
+    const auto sizeOf = [&](const CellRecord& cell) {
+        return squareOf(graph.frame(), cell.column, cell.row, cell.span).size;
+    };
+    const CellRecord& middle = graph.record(b.cell);
+    const double size = sizeOf(middle);
     for (const Waypoint* side : {&a, &c}) {
-        const Cell& cell = graph.cell(side->cell);
-        if (cell.size != middle.size || cell.classValue != middle.classValue)
+        const CellRecord& cell = graph.record(side->cell);
+        if (sizeOf(cell) != size || cell.classValue != middle.classValue)
             return false; // a change of size or of land cover, which exports show
     }
-    const double size = middle.size;
-    const double inX = b.x - a.x, inY = b.y - a.y, outX = c.x - b.x, outY = c.y - b.y;
-    return inX * outY - inY * outX == 0.0 && inX * outX + inY * outY > 0.0 && isSubCellStep(a, b, size) &&
-           isSubCellStep(b, c, size);
+    return isSubCellStep(a, b, size) && isSubCellStep(b, c, size);
 }
 
 } // namespace

@@ -104,8 +104,7 @@ class ShapeSink {
     // A point, with the speed and turn price of the waypoint whose cell it lies in.
     void add(MapPoint point, const Waypoint& inCell) {
         if (timed_)
-            shape_.add(point.x, point.y, inCell.speedMetresPerSecond,
-                       graph_.cell(inCell.cell).turnSecondsPer90Degrees);
+            shape_.add(point.x, point.y, inCell.speedMetresPerSecond, graph_.turnSeconds(inCell.cell));
         else
             shape_.add(point.x, point.y);
     }
@@ -238,8 +237,7 @@ bool TreeCircumnavigation::adjacent(const SpanningTree& tree, int a, int b) cons
 
 Waypoint TreeCircumnavigation::waypointAt(const SpanningTree& tree, int node, MapPoint point) const {
     const int id = tree.cellOf(node);
-    const Cell& cell = graph_.cell(id);
-    return {point.x, point.y, id, cell.speedMetresPerSecond};
+    return {point.x, point.y, id, graph_.record(id).speedMetresPerSecond}; // no whole cell: once a waypoint
 }
 
 template <typename Sink>
