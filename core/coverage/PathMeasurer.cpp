@@ -3,7 +3,8 @@
 namespace mcpp {
 
 void PathMeasurer::add(const Waypoint& waypoint) {
-    shape_.add(waypoint.x, waypoint.y);
+    if (tracksShape_)
+        shape_.add(waypoint.x, waypoint.y);
     if (!havePrevious_) {
         havePrevious_ = true;
         previous_ = waypoint;
@@ -28,9 +29,9 @@ void PathMeasurer::addConnector(const Waypoint& from, const Waypoint& to, double
         secondsBeyondCellTravel(length, a.size, from.speedMetresPerSecond, b.size, to.speedMetresPerSecond);
 }
 
-void PathMeasurer::fill(CoveragePath& path) const {
-    path.lengthMetres = shape_.lengthMetres();
-    path.turns = shape_.turns();
+void PathMeasurer::fill(CoveragePath& path, const PathShape& shape) const {
+    path.lengthMetres = shape.lengthMetres();
+    path.turns = shape.turns();
     path.timeSeconds = seconds_.total + pausedSecondsBetween(path.pauses, 0, path.waypoints.size());
     path.turnSeconds = seconds_.turning;
     path.connectorSeconds = connectorSeconds_;

@@ -15,12 +15,17 @@ namespace mcpp {
 // way without being held.
 class PathMeasurer {
   public:
-    explicit PathMeasurer(const CellGraph& graph) : graph_(graph), oneCellSize_(graph.hasOneCellSize()) {}
+    // tracksShape false: the caller follows the same points' shape and gives it to fill (a walk measured
+    // for its shape and its path at once adds each point to one shape, not two).
+    explicit PathMeasurer(const CellGraph& graph, bool tracksShape = true)
+        : graph_(graph), oneCellSize_(graph.hasOneCellSize()), tracksShape_(tracksShape) {}
 
     void add(const Waypoint& waypoint);
     // Length, turns, time (with the path's pauses, by the path's waypoint numbers, so a path being made
     // has none), turn and connector seconds: measurePath's figures but the repeated visits.
-    void fill(CoveragePath& path) const;
+    void fill(CoveragePath& path) const { fill(path, shape_); }
+    // fill, with the length and turns of `shape`: that of the points added, when not tracked here.
+    void fill(CoveragePath& path, const PathShape& shape) const;
     [[nodiscard]] double connectorSeconds() const { return connectorSeconds_; }
 
   private:
@@ -28,6 +33,7 @@ class PathMeasurer {
 
     const CellGraph& graph_;
     bool oneCellSize_;
+    bool tracksShape_;
     PathShape shape_;
     PathSeconds seconds_;
     double connectorSeconds_ = 0.0;

@@ -124,8 +124,9 @@ class ShapeSink {
 // the whole walk, four waypoints a cell, is never held.
 class MeasuringSink {
   public:
-    MeasuringSink(const CellGraph& graph, MapPoint start, bool closed)
-        : measurer_(graph), merger_(graph), visits_(graph), start_(start), closed_(closed) {}
+    // tracksShape false: finish is given the shape of the points fed (PathMeasurer).
+    MeasuringSink(const CellGraph& graph, MapPoint start, bool closed, bool tracksShape = true)
+        : measurer_(graph, tracksShape), merger_(graph), visits_(graph), start_(start), closed_(closed) {}
     void push(const Waypoint& waypoint) {
         if (!haveFirst_) {
             haveFirst_ = true;
@@ -145,13 +146,16 @@ class MeasuringSink {
     // The walk's first waypoint, as traverse wants, not the start point before it.
     [[nodiscard]] const Waypoint& front() const { return first_; }
     [[nodiscard]] std::size_t keptWaypoints() const { return merger_.keptCount(); }
-    [[nodiscard]] CoveragePath finish(int robot) {
+    [[nodiscard]] CoveragePath finish(int robot, const PathShape* shape = nullptr) {
         if (closed_ && haveOrigin_)
             feed(origin_);
         CoveragePath path;
         path.robot = robot;
         path.closed = closed_;
-        measurer_.fill(path);
+        if (shape != nullptr)
+            measurer_.fill(path, *shape);
+        else
+            measurer_.fill(path);
         path.repeatedSubCellVisits = visits_.repeats(closed_);
         merger_.finishInto(path);
         return path;
@@ -177,12 +181,13 @@ class MeasuringSink {
 };
 
 // ShapeSink and MeasuringSink fed the same walk; the measuring is given up (and its memory handed back)
-// once the path keeps more waypoints than the limit.
+// once the path keeps more waypoints than the limit. Both add the same points (the start point before and
+// after the walk alike), so the path's length and turns are read from the shape's.
 class ShapeAndMeasuringSink {
   public:
     ShapeAndMeasuringSink(const CellGraph& graph, MapPoint start, bool closed, bool timed,
                           std::size_t waypointLimit)
-        : shape_(graph, start, closed, timed), measuring_(std::in_place, graph, start, closed),
+        : shape_(graph, start, closed, timed), measuring_(std::in_place, graph, start, closed, false),
           waypointLimit_(waypointLimit) {}
     void push(const Waypoint& waypoint) {
         shape_.push(waypoint);
@@ -197,7 +202,7 @@ class ShapeAndMeasuringSink {
     [[nodiscard]] TreeCircumnavigation::ShapeAndPath finish(int robot) {
         TreeCircumnavigation::ShapeAndPath result{shape_.finish(), std::nullopt};
         if (measuring_) {
-            result.path = measuring_->finish(robot);
+            result.path = measuring_->finish(robot, &result.shape);
             if (result.path->waypoints.size() > waypointLimit_)
                 result.path.reset();
         }
