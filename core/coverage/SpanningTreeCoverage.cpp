@@ -234,7 +234,7 @@ std::vector<CoveragePath> SpanningTreeCoverage::walkTrees(const CellGraph& graph
         progress.throwIfCancelled();
         TreeCircumnavigation walker(graph);
         RegionTree& planned = trees[robot];
-        planned.tree.unpack();
+        planned.tree.unpack(); // an empty tree, where the path was walked, has nothing to unpack
         if (planned.walked) {
             paths[robot] = std::move(*planned.walked);
         } else if (graph.size() >= cellsForMergedRuns_) {

@@ -22,8 +22,9 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
     static constexpr std::size_t neverMergeRuns = std::numeric_limits<std::size_t>::max();
 
     // closedTour: tours end where they start; otherwise paths stop at the last sub-cell.
-    // cellsForMergedRuns: from how many cells on walkTrees merges straight runs; by default never, as
-    // planners that follow their robots waypoint by waypoint (MDSTC) need them all.
+    // cellsForMergedRuns: from how many cells on paths merge their straight runs (made by walkTrees, or by
+    // planTrees when small: RegionTree::walked); by default never, as planners that follow their robots
+    // waypoint by waypoint (MDSTC) need them all.
     explicit SpanningTreeCoverage(bool closedTour = true, std::size_t cellsForMergedRuns = neverMergeRuns)
         : closedTour_(closedTour), cellsForMergedRuns_(cellsForMergedRuns) {}
 
@@ -43,7 +44,7 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
                                           int startCell, int robot, MapPoint start,
                                           std::vector<int>& scratchIndex) const;
 
-    // A region's quickest tree with its walk's shape, timed: what its path is made from.
+    // A region's quickest tree with its walk's shape, timed: what its path is made from, or the path itself.
     struct RegionTree {
         SpanningTree tree;
         PathShape shape;
@@ -53,25 +54,30 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
         std::optional<CoveragePath> walked;
     };
     // The most waypoints a path walked while its tree was chosen may keep, for a tree of `cells` cells: one
-    // for 8 cells (3 bytes a cell), less than the packed tree that waits otherwise.
+    // for 8 cells (3 bytes a cell), less than the packed tree that waits otherwise. While walked, the path
+    // also takes a byte a cell of the whole map to count repeated visits (RepeatedVisitCounter), as a walk
+    // of walkTrees does.
     [[nodiscard]] static std::size_t walkedPathLimit(std::size_t cells) { return cells / 8; }
-    // Every region's quickest tree, not yet walked: two divisions are compared by their trees' shapes while
-    // holding a quarter of what their paths would take (24 bytes a cell against four 24-byte waypoints).
+    // Every region's quickest tree, not yet walked, or on large maps its path when that is small
+    // (RegionTree::walked): two divisions are compared by their trees' shapes while holding a quarter of
+    // what their whole paths would take (24 bytes a cell against four 24-byte waypoints).
     // `timed`: every shape timed, for comparing; otherwise only where candidates were compared.
     [[nodiscard]] std::vector<RegionTree> planTrees(const CellGraph& graph, const RegionAllocation& regions,
                                                     const std::vector<MapPoint>& starts,
                                                     const ProgressReporter& progress, bool timed) const;
     // planTrees for a division evened out from `earlier`: a region whose cells and start are those it had
-    // there keeps its tree (a copy: a tree depends on nothing else), the others are planned anew. They are
-    // not walked beyond their shapes: a division made to be compared is often let go.
+    // there keeps its tree (a copy: a tree depends on nothing else), with its path if it was walked; the
+    // others are planned anew and not walked beyond their shapes: a division made to be compared is often
+    // let go.
     [[nodiscard]] std::vector<RegionTree> replanTrees(const CellGraph& graph, const RegionAllocation& regions,
                                                       const RegionAllocation& earlier,
                                                       const std::vector<RegionTree>& earlierTrees,
                                                       const std::vector<MapPoint>& starts,
                                                       const ProgressReporter& progress, bool timed) const;
-    // The paths round the trees, each tree freed once walked (progress reported as "waypoints"). Timed only
-    // (timePath): a planner's metrics stage measures every path once, at the end. On maps of
-    // cellsForMergedRuns cells or more each path is measured as walked and its straight runs merged.
+    // The paths round the trees, each tree freed once walked (progress reported as "waypoints"); a path
+    // already walked (RegionTree::walked) is handed over. Timed only (timePath): a planner's metrics stage
+    // measures every path once, at the end. On maps of cellsForMergedRuns cells or more each path is
+    // measured as walked and its straight runs merged.
     [[nodiscard]] std::vector<CoveragePath> walkTrees(const CellGraph& graph, std::vector<RegionTree> trees,
                                                       const std::vector<MapPoint>& starts,
                                                       const ProgressReporter& progress) const;

@@ -41,10 +41,10 @@ PlannerDescription MlctPlanner::describe() const {
                               BorderStraightening::slackParameter(),
                               SpanningTreeCoverage::closedTourParameter(),
                               TurnSearch::roundsParameter()};
-    // Measured peaks, outputs included, since a graph keeps 32 bytes a cell and paths of maps of 4 M cells
-    // or more merge their straight runs: 153-166 bytes a bottom cell on 18.06 M (forest-4250 with a fast
-    // robot: the turn balance plans a second division), 133 on the 69 M-cell tile (docs/benchmarks.md); with
-    // room to spare. Below 4 M cells, where paths keep every waypoint, more a cell, still under a gigabyte.
+    // Measured peaks, outputs included, on maps of 4 M cells or more (paths merge their straight runs, large
+    // regions are walked once): 104-110 bytes a bottom cell on forest-4250 with a fast robot (the turn
+    // balance plans a second division), 56-58 on the 69 M-cell tile (docs/benchmarks.md); with room to
+    // spare. Below 4 M cells, where paths keep every waypoint, more a cell, still under a gigabyte.
     description.bytesPerBottomCell = 210;
     description.quadTreeCells = true;
     return description;
@@ -66,7 +66,8 @@ void MlctPlanner::run(PlanningRun& run) const {
                                         SpanningTreeCoverage::fewestCellsForMergedRuns);
     // Trees first, walked once the division is settled: two divisions are compared by their trees, which
     // take a quarter of the memory of their paths (3.7 GB instead of 5.4 GB on 17.6 M cells with a fast
-    // robot).
+    // robot). On large maps a region whose merged path is small is walked as its tree is measured, and its
+    // path waits instead of the tree.
     std::vector<RegionTree> trees = run.stage(
         "paths", [&] { return coverage.planTrees(plan.cells, plan.regions, run.starts(), progress, true); });
     // Turns are not spread evenly: the division evened out again with each region's measured turn rate
