@@ -3,7 +3,7 @@
 namespace mcpp {
 
 void PathMeasurer::add(const Waypoint& waypoint) {
-    if (tracksShape_)
+    if (sharedShape_ == nullptr)
         shape_.add(waypoint.x, waypoint.y);
     if (!havePrevious_) {
         havePrevious_ = true;
@@ -29,7 +29,8 @@ void PathMeasurer::addConnector(const Waypoint& from, const Waypoint& to, double
         secondsBeyondCellTravel(length, a.size, from.speedMetresPerSecond, b.size, to.speedMetresPerSecond);
 }
 
-void PathMeasurer::fill(CoveragePath& path, const PathShape& shape) const {
+void PathMeasurer::fill(CoveragePath& path) const {
+    const PathShape& shape = sharedShape_ != nullptr ? *sharedShape_ : shape_;
     path.lengthMetres = shape.lengthMetres();
     path.turns = shape.turns();
     path.timeSeconds = seconds_.total + pausedSecondsBetween(path.pauses, 0, path.waypoints.size());

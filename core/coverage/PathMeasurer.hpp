@@ -15,17 +15,15 @@ namespace mcpp {
 // way without being held.
 class PathMeasurer {
   public:
-    // tracksShape false: the caller follows the same points' shape and gives it to fill (a walk measured
-    // for its shape and its path at once adds each point to one shape, not two).
-    explicit PathMeasurer(const CellGraph& graph, bool tracksShape = true)
-        : graph_(graph), oneCellSize_(graph.hasOneCellSize()), tracksShape_(tracksShape) {}
+    // sharedShape: a shape the caller adds the same points to, read for length and turns instead of one of
+    // the measurer's own (a walk measured for its shape and its path at once adds each point once).
+    explicit PathMeasurer(const CellGraph& graph, const PathShape* sharedShape = nullptr)
+        : graph_(graph), oneCellSize_(graph.hasOneCellSize()), sharedShape_(sharedShape) {}
 
     void add(const Waypoint& waypoint);
     // Length, turns, time (with the path's pauses, by the path's waypoint numbers, so a path being made
     // has none), turn and connector seconds: measurePath's figures but the repeated visits.
-    void fill(CoveragePath& path) const { fill(path, shape_); }
-    // fill, with the length and turns of `shape`: that of the points added, when not tracked here.
-    void fill(CoveragePath& path, const PathShape& shape) const;
+    void fill(CoveragePath& path) const;
     [[nodiscard]] double connectorSeconds() const { return connectorSeconds_; }
 
   private:
@@ -33,8 +31,8 @@ class PathMeasurer {
 
     const CellGraph& graph_;
     bool oneCellSize_;
-    bool tracksShape_;
-    PathShape shape_;
+    const PathShape* sharedShape_;
+    PathShape shape_; // when no shape is shared
     PathSeconds seconds_;
     double connectorSeconds_ = 0.0;
     bool havePrevious_ = false;

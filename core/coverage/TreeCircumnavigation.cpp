@@ -99,6 +99,8 @@ class ShapeSink {
             add(start_, first_);
         return shape_;
     }
+    // The shape so far (all of it once finished).
+    [[nodiscard]] const PathShape& shape() const { return shape_; }
 
   private:
     // A point, with the speed and turn price of the waypoint whose cell it lies in.
@@ -124,9 +126,9 @@ class ShapeSink {
 // the whole walk, four waypoints a cell, is never held.
 class MeasuringSink {
   public:
-    // tracksShape false: finish is given the shape of the points fed (PathMeasurer).
-    MeasuringSink(const CellGraph& graph, MapPoint start, bool closed, bool tracksShape = true)
-        : measurer_(graph, tracksShape), merger_(graph), visits_(graph), start_(start), closed_(closed) {}
+    // sharedShape: a shape fed the same points, for the length and turns (PathMeasurer).
+    MeasuringSink(const CellGraph& graph, MapPoint start, bool closed, const PathShape* sharedShape = nullptr)
+        : measurer_(graph, sharedShape), merger_(graph), visits_(graph), start_(start), closed_(closed) {}
     void push(const Waypoint& waypoint) {
         if (!haveFirst_) {
             haveFirst_ = true;
@@ -146,16 +148,13 @@ class MeasuringSink {
     // The walk's first waypoint, as traverse wants, not the start point before it.
     [[nodiscard]] const Waypoint& front() const { return first_; }
     [[nodiscard]] std::size_t keptWaypoints() const { return merger_.keptCount(); }
-    [[nodiscard]] CoveragePath finish(int robot, const PathShape* shape = nullptr) {
+    [[nodiscard]] CoveragePath finish(int robot) {
         if (closed_ && haveOrigin_)
             feed(origin_);
         CoveragePath path;
         path.robot = robot;
         path.closed = closed_;
-        if (shape != nullptr)
-            measurer_.fill(path, *shape);
-        else
-            measurer_.fill(path);
+        measurer_.fill(path);
         path.repeatedSubCellVisits = visits_.repeats(closed_);
         merger_.finishInto(path);
         return path;
@@ -182,13 +181,16 @@ class MeasuringSink {
 
 // ShapeSink and MeasuringSink fed the same walk; the measuring is given up (and its memory handed back)
 // once the path keeps more waypoints than the limit. Both add the same points (the start point before and
-// after the walk alike), so the path's length and turns are read from the shape's.
+// after the walk alike), so the path's length and turns are read from the shape's. Neither moved nor copied:
+// the measuring reads the shape where it is.
 class ShapeAndMeasuringSink {
   public:
     ShapeAndMeasuringSink(const CellGraph& graph, MapPoint start, bool closed, bool timed,
                           std::size_t waypointLimit)
-        : shape_(graph, start, closed, timed), measuring_(std::in_place, graph, start, closed, false),
-          waypointLimit_(waypointLimit) {}
+        : shape_(graph, start, closed, timed),
+          measuring_(std::in_place, graph, start, closed, &shape_.shape()), waypointLimit_(waypointLimit) {}
+    ShapeAndMeasuringSink(const ShapeAndMeasuringSink&) = delete;
+    ShapeAndMeasuringSink& operator=(const ShapeAndMeasuringSink&) = delete;
     void push(const Waypoint& waypoint) {
         shape_.push(waypoint);
         if (!measuring_)
@@ -202,7 +204,7 @@ class ShapeAndMeasuringSink {
     [[nodiscard]] TreeCircumnavigation::ShapeAndPath finish(int robot) {
         TreeCircumnavigation::ShapeAndPath result{shape_.finish(), std::nullopt};
         if (measuring_) {
-            result.path = measuring_->finish(robot, &result.shape);
+            result.path = measuring_->finish(robot); // after the shape's finish: its closing point too
             if (result.path->waypoints.size() > waypointLimit_)
                 result.path.reset();
         }
