@@ -1,6 +1,9 @@
 #include "core/allocation/CellBlocks.hpp"
 
+#include "core/model/ParallelFor.hpp"
+
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <span>
 
@@ -84,37 +87,60 @@ bool linkedWithin(const CellGraph& graph, std::span<const int> cells, int block,
     return members.size() == cells.size();
 }
 
+// Appends the blocks that `block` touches, sorted, to `neighbours`.
+void addTouchingBlocks(const CellGraph& graph, std::span<const int> cells, int block,
+                       const std::vector<int>& blockOfCell, std::vector<int>& neighbours) {
+    const auto first = static_cast<std::ptrdiff_t>(neighbours.size());
+    for (int cell : cells)
+        for (int neighbour : graph.neighbours(cell)) {
+            const int other = blockOfCell[static_cast<std::size_t>(neighbour)];
+            if (other != block &&
+                std::find(neighbours.begin() + first, neighbours.end(), other) == neighbours.end())
+                neighbours.push_back(other);
+        }
+    std::sort(neighbours.begin() + first, neighbours.end());
+}
+
 // Which blocks touch, and whether each block's cells are linked among themselves (not checked where
-// `linksKnown`: the caller made them so).
+// `linksKnown`: the caller made them so). Spans of blocks are looked at side by side, each into lists of
+// its own joined in order after: the same lists whatever the number of threads.
 NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>& blockOfCell, int blockCount,
                                  bool& everyBlockConnected, bool linksKnown = false) {
+    constexpr std::size_t blocksPerTask = std::size_t{1} << 15;
     std::vector<int> cellOffsets;
     std::vector<int> cellsOf;
     cellsByBlock(blockOfCell, blockCount, cellOffsets, cellsOf);
-    std::vector<int> offsets(static_cast<std::size_t>(blockCount) + 1, 0);
+    const auto blocks = static_cast<std::size_t>(blockCount);
+    const std::size_t tasks = (blocks + blocksPerTask - 1) / blocksPerTask;
+    std::vector<int> offsets(blocks + 1, 0);
+    std::vector<std::vector<int>> neighboursOfTask(tasks);
+    std::atomic<bool> allConnected{true};
+    parallelFor(tasks, [&](std::size_t task, int) {
+        std::vector<int>& neighbours = neighboursOfTask[task];
+        neighbours.reserve(blocksPerTask * 4);
+        std::vector<int> members;
+        std::vector<char> reached;
+        for (std::size_t block = task * blocksPerTask; block < std::min(blocks, (task + 1) * blocksPerTask);
+             ++block) {
+            const std::span<const int> cells(
+                cellsOf.data() + cellOffsets[block],
+                static_cast<std::size_t>(cellOffsets[block + 1] - cellOffsets[block]));
+            const std::size_t before = neighbours.size();
+            addTouchingBlocks(graph, cells, static_cast<int>(block), blockOfCell, neighbours);
+            offsets[block + 1] = static_cast<int>(neighbours.size() - before);
+            if (!linksKnown && cells.size() > 1 && allConnected.load(std::memory_order_relaxed) &&
+                !linkedWithin(graph, cells, static_cast<int>(block), blockOfCell, members, reached))
+                allConnected.store(false, std::memory_order_relaxed);
+        }
+    });
+    everyBlockConnected = allConnected.load();
+    for (std::size_t block = 0; block < blocks; ++block)
+        offsets[block + 1] += offsets[block];
     std::vector<int> neighbours;
-    neighbours.reserve(static_cast<std::size_t>(blockCount) * 4);
-    std::vector<int> members;
-    std::vector<char> reached;
-    everyBlockConnected = true;
-    for (std::size_t block = 0; block < static_cast<std::size_t>(blockCount); ++block) {
-        const auto first = neighbours.size();
-        const std::span<const int> cells(
-            cellsOf.data() + cellOffsets[block],
-            static_cast<std::size_t>(cellOffsets[block + 1] - cellOffsets[block]));
-        for (int cell : cells)
-            for (int neighbour : graph.neighbours(cell)) {
-                const int other = blockOfCell[static_cast<std::size_t>(neighbour)];
-                if (other != static_cast<int>(block) &&
-                    std::find(neighbours.begin() + static_cast<std::ptrdiff_t>(first), neighbours.end(),
-                              other) == neighbours.end())
-                    neighbours.push_back(other);
-            }
-        std::sort(neighbours.begin() + static_cast<std::ptrdiff_t>(first), neighbours.end());
-        offsets[block + 1] = static_cast<int>(neighbours.size());
-        if (!linksKnown && everyBlockConnected && cells.size() > 1)
-            everyBlockConnected =
-                linkedWithin(graph, cells, static_cast<int>(block), blockOfCell, members, reached);
+    neighbours.reserve(static_cast<std::size_t>(offsets.back()));
+    for (std::vector<int>& list : neighboursOfTask) {
+        neighbours.insert(neighbours.end(), list.begin(), list.end());
+        std::vector<int>().swap(list);
     }
     return {std::move(offsets), std::move(neighbours)};
 }

@@ -11,7 +11,9 @@ namespace mcpp {
 // boundary between pixels: time linear in the pixels and the boundary's length, no polygon unions.
 // Where two pixels of a label meet only at a corner they belong to different patches, so rings never cross;
 // a ring that would touch itself at such a corner is split there into a ring and a hole, as the simple
-// features rules want. Patches come in the order of their first pixel (row by row from the north-west).
+// features rules want. Patches come in the order of their first pixel (row by row from the north-west),
+// and each ring begins at the corner its walk first turns at from the first pixel side of it met in that
+// order: the same rings, vertex for vertex, from one run to the next.
 [[nodiscard]] std::vector<OutlinePolygon> traceOutlines(const LabelGrid& grid);
 
 } // namespace mcpp

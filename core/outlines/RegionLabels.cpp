@@ -1,5 +1,6 @@
 #include "core/outlines/RegionLabels.hpp"
 
+#include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
@@ -16,9 +17,11 @@ static_assert(mostRobots <= LabelGrid::largestLabel &&
 
 namespace {
 
+constexpr std::size_t cellsPerTask = std::size_t{1} << 16;
+
 // Fills the pixels of one free sub-cell: a square of span x span pixels of the sub-cell grid, whose
 // north-west corner is bottom-grid column `west`, row `north`.
-void fillSubCell(LabelGrid& grid, const Cell& cell, SubCell subCell, LabelGrid::Label label, int west,
+void fillSubCell(LabelGrid& grid, const CellRecord& cell, SubCell subCell, LabelGrid::Label label, int west,
                  int north) {
     const bool east = subCell == SubCell::NorthEast || subCell == SubCell::SouthEast;
     const bool south = subCell == SubCell::SouthWest || subCell == SubCell::SouthEast;
@@ -41,7 +44,7 @@ LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& la
     int south = cropped ? 0 : frame.rows;
     bool first = true;
     for (std::size_t id = 0; id < labelOfCell.size() && id < graph.size(); ++id) {
-        const Cell& cell = graph.cell(static_cast<int>(id));
+        const CellRecord& cell = graph.record(static_cast<int>(id));
         if (cropped && labelOfCell[id] == LabelGrid::noLabel)
             continue;
         if (cropped && first) {
@@ -62,14 +65,20 @@ LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& la
     grid.pixelSize = frame.bottomCellSize / 2.0;
     grid.labels.assign(static_cast<std::size_t>(grid.columns) * static_cast<std::size_t>(grid.rows),
                        LabelGrid::noLabel);
-    for (std::size_t id = 0; id < labelOfCell.size() && id < graph.size(); ++id) {
-        if (labelOfCell[id] == LabelGrid::noLabel)
-            continue;
-        const Cell& cell = graph.cell(static_cast<int>(id));
-        for (const SubCell subCell : subCellsCounterClockwise)
-            if (cell.isFree(subCell))
-                fillSubCell(grid, cell, subCell, static_cast<LabelGrid::Label>(labelOfCell[id]), west, north);
-    }
+    // Cells fill pixels of their own, so blocks of cells are filled side by side.
+    const std::size_t cells = std::min(labelOfCell.size(), graph.size());
+    parallelFor((cells + cellsPerTask - 1) / cellsPerTask, [&](std::size_t task, int) {
+        const std::size_t end = std::min(cells, (task + 1) * cellsPerTask);
+        for (std::size_t id = task * cellsPerTask; id < end; ++id) {
+            if (labelOfCell[id] == LabelGrid::noLabel)
+                continue;
+            const CellRecord& cell = graph.record(static_cast<int>(id));
+            for (const SubCell subCell : subCellsCounterClockwise)
+                if ((cell.freeSubCells >> static_cast<unsigned>(subCell) & 1U) != 0)
+                    fillSubCell(grid, cell, subCell, static_cast<LabelGrid::Label>(labelOfCell[id]), west,
+                                north);
+        }
+    });
     return grid;
 }
 

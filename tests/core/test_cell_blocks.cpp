@@ -3,6 +3,7 @@
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/decomposition/QuadTreeDecomposition.hpp"
+#include "core/model/ParallelFor.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
@@ -23,6 +24,9 @@ CellGraph quadTreeGraph(const PlanningProblem& problem) {
 
 // Whether every block's cells are linked through cells of the block, the slow way.
 bool blocksLinkedWithin(const CellGraph& graph, const std::vector<int>& blockOfCell) {
+    std::map<int, std::ptrdiff_t> membersOf;
+    for (const int block : blockOfCell)
+        ++membersOf[block];
     for (std::size_t first = 0; first < graph.size(); ++first) {
         std::set<int> reached{static_cast<int>(first)};
         std::vector<int> queue{static_cast<int>(first)};
@@ -31,8 +35,7 @@ bool blocksLinkedWithin(const CellGraph& graph, const std::vector<int>& blockOfC
                 if (blockOfCell[static_cast<std::size_t>(neighbour)] == blockOfCell[first] &&
                     reached.insert(neighbour).second)
                     queue.push_back(neighbour);
-        const auto members = std::count(blockOfCell.begin(), blockOfCell.end(), blockOfCell[first]);
-        if (static_cast<std::ptrdiff_t>(reached.size()) != members)
+        if (static_cast<std::ptrdiff_t>(reached.size()) != membersOf[blockOfCell[first]])
             return false;
     }
     return true;
@@ -131,6 +134,31 @@ class TestCellBlocks : public QObject {
         const CellGraph graph = test::cellPerPixelGraph(cut);
         QVERIFY(!groupIntoBlocks(graph, 4).everyBlockConnected);
         checkBlocks(graph, 4);
+    }
+
+    // More blocks than one thread takes at a time (2^15): the spans looked at side by side join into the
+    // lists one thread makes, and a block cut in two in a later span is still found.
+    void blocksOfALargeGridAcrossThreads() {
+        constexpr int cells = 400; // 200 x 200 = 40 000 blocks of 2 x 2 cells
+        std::vector<bool> blocked(static_cast<std::size_t>(cells * cells), false);
+        // Block (row 190, column 100), number 38 100: its north-east and south-west cells are water, so
+        // its other two meet at a corner only.
+        blocked[static_cast<std::size_t>(380 * cells + 201)] = true;
+        blocked[static_cast<std::size_t>(381 * cells + 200)] = true;
+        const CellGraph graph =
+            test::cellPerPixelGraph(test::uniformProblem(cells, cells, 10.0, blocked, {}));
+        setWorkerThreads(1);
+        const CellBlocks alone = groupIntoBlocks(graph, 2);
+        setWorkerThreads(2);
+        const CellBlocks sideBySide = groupIntoBlocks(graph, 2);
+        setWorkerThreads(0);
+        QCOMPARE(alone.figures.size(), std::size_t{40000});
+        QVERIFY(!alone.everyBlockConnected);
+        QVERIFY(!sideBySide.everyBlockConnected);
+        QCOMPARE(sideBySide.blockOfCell, alone.blockOfCell);
+        QCOMPARE(sideBySide.adjacency.offsets(), alone.adjacency.offsets());
+        QCOMPARE(sideBySide.adjacency.neighbours(), alone.adjacency.neighbours());
+        checkBlocks(graph, 2);
     }
 
     void blocksOfOneCellEachAreTheCells() {

@@ -2,8 +2,10 @@
 // corner) and random grids, checked against the pixels themselves: every pixel centre lies in the polygon of
 // its own patch and in no other, areas equal pixel counts, rings are simple and keep their orientation.
 
+#include "core/model/ParallelFor.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionLabels.hpp"
+#include "tests/support/SyntheticMaps.hpp"
 
 #include <QTest>
 #include <map>
@@ -189,6 +191,95 @@ class OutlineTracerTest : public QObject {
         }
         const std::string problem = check(grid, traceOutlines(grid));
         QVERIFY2(problem.empty(), problem.c_str());
+    }
+
+    // Grids wide enough that the tracer skips chunks of a region's inside: rectangles of labels, empty
+    // ones among them, and single pixels on and beside the edges of its chunks of 32 columns.
+    void wideGrids_data() {
+        QTest::addColumn<int>("seed");
+        for (int seed = 1; seed <= 12; ++seed)
+            QTest::addRow("seed %d", seed) << seed;
+    }
+
+    void wideGrids() {
+        QFETCH(int, seed);
+        std::mt19937 random(static_cast<unsigned>(seed));
+        LabelGrid grid;
+        grid.columns = 100 + 7 * seed;
+        grid.rows = 12 + seed % 5;
+        grid.labels.assign(static_cast<std::size_t>(grid.columns * grid.rows), 0);
+        const auto label = [&] { return static_cast<LabelGrid::Label>(static_cast<int>(random() % 4) - 1); };
+        for (int rectangle = 0; rectangle < 6; ++rectangle) {
+            const int west = static_cast<int>(random() % static_cast<unsigned>(grid.columns - 10));
+            const int north = static_cast<int>(random() % static_cast<unsigned>(grid.rows - 3));
+            const int width = 1 + static_cast<int>(random() % 60U);
+            const int height = 1 + static_cast<int>(random() % 6U);
+            const LabelGrid::Label value = label();
+            for (int row = north; row < std::min(grid.rows, north + height); ++row)
+                for (int column = west; column < std::min(grid.columns, west + width); ++column)
+                    grid.labels[grid.index(column, row)] = value;
+        }
+        for (const int column : {31, 32, 33, 63, 64, 65, 96, 97})
+            grid.labels[grid.index(
+                column, 1 + static_cast<int>(random() % static_cast<unsigned>(grid.rows - 2)))] = label();
+        const std::string problem = check(grid, traceOutlines(grid));
+        QVERIFY2(problem.empty(), problem.c_str());
+    }
+
+    // The walks around a strip inside a wide patch begin at the first side of them met row by row: the
+    // bottom of the pixel above the strip's west end and the bottom of the strip's west end, each walked
+    // east to the strip's east end.
+    void ringsBeginAtTheFirstSideMetRowByRow() {
+        LabelGrid grid;
+        grid.columns = 100;
+        grid.rows = 9;
+        grid.labels.assign(static_cast<std::size_t>(grid.columns * grid.rows), 0);
+        for (int column = 40; column <= 60; ++column)
+            grid.labels[grid.index(column, 5)] = 1;
+        const auto polygons = traceOutlines(grid);
+        QCOMPARE(polygons.size(), std::size_t{2});
+        QCOMPARE(polygons[0].holes.size(), std::size_t{1});
+        const OutlineRing& hole = polygons[0].holes[0];
+        QCOMPARE(hole.front().column, 61);
+        QCOMPARE(hole.front().row, 5);
+        QCOMPARE(polygons[1].exterior.front().column, 61);
+        QCOMPARE(polygons[1].exterior.front().row, 6);
+    }
+
+    // A plan of more cells than one thread labels at a time (2^16): each free sub-cell's pixel holds its
+    // robot, blocked sub-cells and obstacles none, whatever the number of threads.
+    void regionLabelsOfALargePlan() {
+        const PlanningProblem problem = test::obstacleGridProblem(300, 2, 5);
+        Plan plan;
+        plan.cells = test::cellPerPixelGraph(problem);
+        QVERIFY(plan.cells.size() > std::size_t{1} << 16);
+        plan.regions.robotOfCell.resize(plan.cells.size());
+        for (std::size_t id = 0; id < plan.cells.size(); ++id) {
+            const CellRecord& cell = plan.cells.record(static_cast<int>(id));
+            plan.regions.robotOfCell[id] = (cell.row / 37 + cell.column / 53) % 6 - 1; // -1: unreachable
+        }
+        std::vector<LabelGrid::Label> expected(static_cast<std::size_t>(2 * 300 * 2 * 300),
+                                               LabelGrid::noLabel);
+        for (std::size_t id = 0; id < plan.cells.size(); ++id) {
+            const Cell cell = plan.cells.cell(static_cast<int>(id));
+            const int robot = plan.regions.robotOfCell[id];
+            const auto value = static_cast<LabelGrid::Label>(robot >= 0 ? robot : unreachableLabel);
+            for (const SubCell subCell : subCellsCounterClockwise) {
+                const MapPoint centre = cell.subCellCentre(subCell);
+                const auto column = static_cast<std::size_t>((centre.x - plan.cells.frame().originX) / 5.0);
+                const auto row = static_cast<std::size_t>((plan.cells.frame().originY - centre.y) / 5.0);
+                if (cell.isFree(subCell))
+                    expected[row * 600 + column] = value;
+            }
+        }
+        for (const int threads : {1, 2}) {
+            setWorkerThreads(threads);
+            const LabelGrid labels = regionLabels(plan);
+            QCOMPARE(labels.columns, 600);
+            QCOMPARE(labels.rows, 600);
+            QCOMPARE(labels.labels, expected);
+        }
+        setWorkerThreads(0);
     }
 
     void planRegionsOnTheSubCellGrid() {
