@@ -1,5 +1,7 @@
 #include "core/allocation/BorderStraightening.hpp"
 
+#include "core/model/ParallelFor.hpp"
+
 #include <algorithm>
 #include <numeric>
 
@@ -26,8 +28,8 @@ ParameterSpec BorderStraightening::slackParameter() {
                          "%");
 }
 
-BorderStraightening::BorderStraightening(const CellGraph& graph, double slack)
-    : graph_(graph), slack_(slack) {}
+BorderStraightening::BorderStraightening(const CellGraph& graph, double slack, FirstPass firstPass)
+    : graph_(graph), slack_(slack), firstPass_(firstPass) {}
 
 // The neighbour of equal size in line with the cell on that side, -1 if there is none.
 int BorderStraightening::straightNeighbour(int cell, std::size_t side) const {
@@ -162,6 +164,18 @@ bool BorderStraightening::onBorder(int cell, const std::vector<int>& owner) cons
     return false;
 }
 
+std::vector<bool> BorderStraightening::bordersBeforeMoves(const std::vector<int>& owner) const {
+    // Tasks of whole 64-cell words, so that no two threads write the same word of the bits.
+    constexpr std::size_t cellsPerTask = std::size_t{1} << 16;
+    std::vector<bool> border(graph_.size(), false);
+    parallelFor((graph_.size() + cellsPerTask - 1) / cellsPerTask, [&](std::size_t task, int) {
+        const std::size_t end = std::min(graph_.size(), (task + 1) * cellsPerTask);
+        for (std::size_t cell = task * cellsPerTask; cell < end; ++cell)
+            border[cell] = owner[cell] >= 0 && onBorder(static_cast<int>(cell), owner);
+    });
+    return border;
+}
+
 bool BorderStraightening::isStart(int cell, const RegionAllocation& regions) {
     return std::find(regions.startCell.begin(), regions.startCell.end(), cell) != regions.startCell.end();
 }
@@ -177,6 +191,12 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
     std::vector<int> pending(graph_.size());
     std::iota(pending.begin(), pending.end(), 0);
     std::vector<int> queuedFor(graph_.size(), 0);
+    // The first pass skips cells found off every border beforehand, unless a move changed them or a
+    // neighbour since: the same cells are looked at as when each is asked in turn.
+    const std::vector<bool> onBorderAtFirst = firstPass_ == FirstPass::SkipsInsides
+                                                  ? bordersBeforeMoves(owner)
+                                                  : std::vector<bool>(graph_.size(), true);
+    std::vector<bool> changedAround(graph_.size(), false);
     LocalConnectivity connectivity(graph_);
     int moved = 0;
     for (int pass = 1; pass <= passLimit && !pending.empty(); ++pass) {
@@ -189,7 +209,10 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
         };
         for (int cell : pending) {
             const int from = owner[static_cast<std::size_t>(cell)];
-            if (from < 0 || !onBorder(cell, owner) || isStart(cell, regions))
+            if (from < 0 || (pass == 1 && !onBorderAtFirst[static_cast<std::size_t>(cell)] &&
+                             !changedAround[static_cast<std::size_t>(cell)]))
+                continue;
+            if (!onBorder(cell, owner) || isStart(cell, regions))
                 continue;
             bool refused = false;
             const int to = bestMove(cell, owner, cost, ceiling, refused);
@@ -207,11 +230,16 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
                     queue(cell);
                 continue;
             }
-            for (int changed : {cell, partner})
-                if (changed >= 0)
-                    for (int neighbour : graph_.neighbours(changed))
-                        for (int around : graph_.neighbours(neighbour))
-                            queue(around);
+            for (int changed : {cell, partner}) {
+                if (changed < 0)
+                    continue;
+                changedAround[static_cast<std::size_t>(changed)] = true;
+                for (int neighbour : graph_.neighbours(changed)) {
+                    changedAround[static_cast<std::size_t>(neighbour)] = true;
+                    for (int around : graph_.neighbours(neighbour))
+                        queue(around);
+                }
+            }
         }
         std::sort(next.begin(), next.end()); // cell order, as the first pass
         pending = std::move(next);

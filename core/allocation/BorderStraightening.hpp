@@ -17,8 +17,13 @@ namespace mcpp {
 // grids this takes up to 10 % of the turns away at a slack of 0.2 %.
 class BorderStraightening {
   public:
+    // How the first pass finds the border: cells found off every border beforehand, on every core, are
+    // skipped unless a move changed them or a neighbour since; or each cell is asked in turn, as before that
+    // was done (kept to check that both move the same cells).
+    enum class FirstPass { SkipsInsides, AsksEveryCell };
+
     // slack: the share of the most loaded region's cost any region may grow to beyond it.
-    BorderStraightening(const CellGraph& graph, double slack);
+    BorderStraightening(const CellGraph& graph, double slack, FirstPass firstPass = FirstPass::SkipsInsides);
 
     // The planner parameter, in percent.
     [[nodiscard]] static ParameterSpec slackParameter();
@@ -34,6 +39,8 @@ class BorderStraightening {
     // Moves the cell with a partner when that helps; returns the partner, -1 when nothing moved.
     int movePair(int cell, RegionAllocation& regions, double ceiling, LocalConnectivity& connectivity) const;
     [[nodiscard]] bool onBorder(int cell, const std::vector<int>& owner) const;
+    // Which cells lie on a border before any moves, found on every core.
+    [[nodiscard]] std::vector<bool> bordersBeforeMoves(const std::vector<int>& owner) const;
     [[nodiscard]] static bool isStart(int cell, const RegionAllocation& regions);
     // The region the cell is best moved to, -1 if none lowers the count; `refused` is set when a
     // neighbouring region could not take it for its cost.
@@ -42,6 +49,7 @@ class BorderStraightening {
 
     const CellGraph& graph_;
     double slack_;
+    FirstPass firstPass_;
 };
 
 } // namespace mcpp

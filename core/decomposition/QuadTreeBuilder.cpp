@@ -5,6 +5,7 @@
 #include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/Cell.hpp"
 #include "core/model/CellRecord.hpp"
+#include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <algorithm>
@@ -317,41 +318,77 @@ QuadTree growTree(const SampleCounts& counts, const ClassGrid& grid, const Decom
     return tree;
 }
 
+// One band of a one-level tree's rows, judged on its own thread: its active cells row by row, and the
+// passable area of every cell that has some, in the same order, for the caller to add up.
+struct GridBand {
+    std::vector<CellRecord> cells;
+    std::vector<double> passableAreas;
+    std::vector<double> areaRoundings; // of each active cell's area kept as a float
+};
+
+GridBand judgeBand(const SampleCounts& counts, const ClassGrid& grid, const DecompositionOptions& options,
+                   const GridFrame& frame, int firstRow, int endRow) {
+    GridBand band;
+    LandCoverCounter landCover(counts.samples, counts.classes);
+    for (int row = firstRow; row < endRow; ++row) {
+        for (int column = 0; column < frame.columns; ++column) {
+            const CellSquare square = squareOf(frame, column, row, 1);
+            const Verdict verdict =
+                judge(counts, grid, options, 1, row, column, square.minX, square.minY, square.size);
+            if (verdict.passableAreaSquareMetres != 0.0)
+                band.passableAreas.push_back(verdict.passableAreaSquareMetres);
+            if (verdict.state != CellState::Active)
+                continue;
+            CellRecord cell;
+            cell.column = column;
+            cell.row = row;
+            cell.passableAreaSquareMetres = static_cast<float>(verdict.passableAreaSquareMetres);
+            band.areaRoundings.push_back(double{cell.passableAreaSquareMetres} -
+                                         verdict.passableAreaSquareMetres);
+            const LandCoverCounter::Result found =
+                landCover.of(square.minX, square.minX + square.size, square.minY, square.minY + square.size);
+            cell.classValue = found.classValue;
+            cell.speedMetresPerSecond = static_cast<float>(found.speedMetresPerSecond);
+            band.cells.push_back(cell);
+        }
+    }
+    return band;
+}
+
 // The grid of a one-level tree's cells, each as cellGraphOfQuadTree would make it of the leaf, row by row.
+// Bands of rows are judged side by side, a few at a time, and joined in order: the areas are added up in
+// the order of one thread, so the figures are the same whatever the number of threads.
 OneLevelQuadTree gridOfBottomCells(const SampleCounts& counts, const ClassGrid& grid,
                                    const DecompositionOptions& options, const ProgressReporter& progress) {
+    constexpr int rowsPerBand = 64;
+    constexpr double cellsForBands = 1 << 20;
     const QuadTree& tree = counts.frame;
     OneLevelQuadTree result;
     result.frame = {tree.originX, tree.originY, 2.0 * tree.fovMin, tree.topColumns, tree.topRows, 1};
     result.roundedFieldsOfView = tree.roundedFieldsOfView;
-    // Room for every bottom cell, of which only the pages the active cells fill become resident: one
-    // judging pass, and no copy as the vector grows.
+    // Room for every bottom cell, of which only the pages the active cells fill become resident: no copy
+    // as the vector grows.
     result.cells.reserve(static_cast<std::size_t>(tree.topRows) * static_cast<std::size_t>(tree.topColumns));
-    LandCoverCounter landCover(counts.samples, counts.classes);
-    for (int row = 0; row < tree.topRows; ++row) {
-        for (int column = 0; column < tree.topColumns; ++column) {
-            CellRecord cell;
-            cell.column = column;
-            cell.row = row;
-            const CellSquare square = squareOf(result.frame, column, row, 1);
-            const double minX = square.minX;
-            const double minY = square.minY;
-            const double size = square.size;
-            const Verdict verdict = judge(counts, grid, options, 1, row, column, minX, minY, size);
-            result.passableAreaSquareMetres += verdict.passableAreaSquareMetres;
-            if (verdict.state != CellState::Active)
-                continue;
-            cell.passableAreaSquareMetres = static_cast<float>(verdict.passableAreaSquareMetres);
-            result.areaRounding += double{cell.passableAreaSquareMetres} - verdict.passableAreaSquareMetres;
-            const LandCoverCounter::Result found = landCover.of(minX, minX + size, minY, minY + size);
-            cell.classValue = found.classValue;
-            cell.speedMetresPerSecond = static_cast<float>(found.speedMetresPerSecond);
-            result.cells.push_back(cell);
+    // Small grids in one band: starting threads would cost more than they save.
+    const bool large = static_cast<double>(tree.topRows) * tree.topColumns >= cellsForBands;
+    const auto bandsAtOnce = static_cast<std::size_t>(large ? std::max(1, workerThreads()) : 1);
+    std::vector<GridBand> bands(bandsAtOnce);
+    for (int firstRow = 0; firstRow < tree.topRows; firstRow += rowsPerBand * static_cast<int>(bandsAtOnce)) {
+        progress.throwIfCancelled();
+        parallelFor(bandsAtOnce, [&](std::size_t band, int) {
+            const int from = firstRow + rowsPerBand * static_cast<int>(band);
+            bands[band] = from < tree.topRows ? judgeBand(counts, grid, options, result.frame, from,
+                                                          std::min(tree.topRows, from + rowsPerBand))
+                                              : GridBand{};
+        });
+        for (const GridBand& band : bands) {
+            for (const double area : band.passableAreas)
+                result.passableAreaSquareMetres += area;
+            for (const double rounding : band.areaRoundings)
+                result.areaRounding += rounding;
+            result.cells.insert(result.cells.end(), band.cells.begin(), band.cells.end());
         }
-        if ((row & 255) == 0) {
-            progress.throwIfCancelled();
-            progress.report("quadtree", 0.5 + 0.5 * row / tree.topRows);
-        }
+        progress.report("quadtree", 0.5 + 0.5 * firstRow / tree.topRows);
     }
     progress.report("quadtree", 1.0);
     return result;

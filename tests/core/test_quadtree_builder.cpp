@@ -3,11 +3,14 @@
 #include "core/decomposition/QuadTreeDecomposition.hpp"
 #include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/MemoryBudget.hpp"
+#include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <cmath>
+#include <cstring>
 #include <random>
 
 using namespace mcpp;
@@ -194,11 +197,24 @@ class QuadTreeBuilderTest : public QObject {
     }
 
     // A tree of one level is made as its grid, without nodes; the graph must be the tree's, field for field.
+    // A grid of over a million cells is judged in bands of rows side by side: the same at one thread or two.
+    void oneLevelGridIsTheTreesGraph_data() {
+        QTest::addColumn<int>("columns");
+        QTest::addColumn<int>("rows");
+        QTest::addColumn<double>("pixel");
+        QTest::addRow("37 x 29 pixels, 4 x 4 a cell") << 37 << 29 << 1.0;
+        QTest::addRow("1100 x 1000 pixels, one a cell") << 1100 << 1000 << 4.0;
+    }
+
     void oneLevelGridIsTheTreesGraph() {
+        QFETCH(int, columns);
+        QFETCH(int, rows);
+        QFETCH(double, pixel);
         ClassTable table({{1, "grass", 0, 1.5, 2.0, true},
                           {2, "scrub", 0, 0.7, 2.0, true},
                           {9, "lake", 0, 0.0, 1.0, false}});
-        ClassGrid grid = filledGrid(37, 29, 1); // 4 m cells: the top grid spills over east and south
+        ClassGrid grid =
+            filledGrid(columns, rows, 1, pixel); // 4 m cells: the top grid spills over east and south
         grid.originX = 500000.0;
         grid.originY = 4100000.0;
         grid.outside.assign(grid.values.size(), 0);
@@ -217,7 +233,9 @@ class QuadTreeBuilderTest : public QObject {
         const NeighbourTopology topology = NeighbourTopologyBuilder{}.build(tree);
         const CellGraph fromTree = cellGraphOfQuadTree(std::move(tree), topology);
 
-        QVERIFY(fromTree.size() > 20 && fromTree.size() < 90); // some blocked, most active
+        const auto topCells =
+            static_cast<std::size_t>(std::ceil(columns * pixel / 4.0) * std::ceil(rows * pixel / 4.0));
+        QVERIFY(fromTree.size() > topCells / 4 && fromTree.size() < topCells); // some blocked, most active
         QCOMPARE(fromGrid.size(), fromTree.size());
         QCOMPARE(fromGrid.frame().columns, fromTree.frame().columns);
         QCOMPARE(fromGrid.frame().rows, fromTree.frame().rows);
@@ -243,6 +261,20 @@ class QuadTreeBuilderTest : public QObject {
             QVERIFY(std::equal(gridNeighbours.begin(), gridNeighbours.end(), treeNeighbours.begin(),
                                treeNeighbours.end()));
         }
+        for (const int threads : {1, 2}) {
+            setWorkerThreads(threads);
+            const auto again =
+                std::get<OneLevelQuadTree>(QuadTreeBuilder{}.buildLeaves(grid, table, options));
+            setWorkerThreads(0);
+            const auto& first = std::get<OneLevelQuadTree>(leaves);
+            QCOMPARE(again.passableAreaSquareMetres, first.passableAreaSquareMetres);
+            QCOMPARE(again.areaRounding, first.areaRounding);
+            QCOMPARE(again.cells.size(), first.cells.size());
+            QVERIFY(std::memcmp(again.cells.data(), first.cells.data(),
+                                first.cells.size() * sizeof(CellRecord)) == 0);
+        }
+        if (columns >= 100)
+            return;
         // Both classes at one size, and a class that needs cells of another: the tree is kept.
         ClassTable twoSizes({{1, "grass", 0, 1.5, 2.0, true},
                              {2, "scrub", 0, 0.7, 4.0, true},

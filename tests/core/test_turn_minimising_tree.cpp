@@ -362,20 +362,30 @@ class TurnMinimisingTreeTest : public QObject {
     void allocationsStraightenWithoutLosingBalance_data() {
         QTest::addColumn<unsigned>("seed");
         QTest::addColumn<double>("slack");
+        QTest::addColumn<int>("side");
         for (unsigned seed = 1; seed <= 6; ++seed)
-            QTest::addRow("seed %u", seed) << seed << (seed % 2 == 0 ? 0.0 : 0.01);
+            QTest::addRow("seed %u", seed) << seed << (seed % 2 == 0 ? 0.0 : 0.01) << 24;
+        for (unsigned seed = 7; seed <= 10; ++seed)
+            QTest::addRow("seed %u, 80 x 80", seed) << seed << (seed % 2 == 0 ? 0.0 : 0.01) << 80;
     }
     void allocationsStraightenWithoutLosingBalance() {
         QFETCH(unsigned, seed);
         QFETCH(double, slack);
-        GridCells grid(24, 24, 0.15, seed);
+        QFETCH(int, side);
+        GridCells grid(side, side, 0.15, seed);
         std::vector<int> starts;
         for (int id = 0; static_cast<int>(starts.size()) < 5; id += static_cast<int>(grid.graph.size()) / 5)
             starts.push_back(id);
         RegionAllocation regions = AzimuthTrendAllocator{}.allocate(grid.graph, starts, {});
         const double most = *std::max_element(regions.costSeconds.begin(), regions.costSeconds.end());
         const int before = cellsOffStraightRuns(grid, regions.robotOfCell);
+        RegionAllocation askingEveryCell = regions;
         const int moved = BorderStraightening(grid.graph, slack).straighten(regions);
+        // Skipping the insides found beforehand moves the same cells as asking every cell in turn.
+        QCOMPARE(BorderStraightening(grid.graph, slack, BorderStraightening::FirstPass::AsksEveryCell)
+                     .straighten(askingEveryCell),
+                 moved);
+        QCOMPARE(askingEveryCell.robotOfCell, regions.robotOfCell);
         const int after = cellsOffStraightRuns(grid, regions.robotOfCell);
         QVERIFY(after <= before);
         QCOMPARE(moved > 0, after < before);
