@@ -11,8 +11,9 @@ class PlanMetricsCalculator {
     void compute(Plan& plan) const;
 
   private:
-    // Raises the lower bound to what the robots of each connected part need and lists confined robots.
-    static void boundByConnectedParts(Plan& plan);
+    // Raises the lower bound to what the robots of each connected part need and lists confined robots;
+    // `regionsLinked`: the regions link every robot (regionsLinkEveryRobot), so the map is one part.
+    static void boundByConnectedParts(Plan& plan, bool regionsLinked);
     // Raises the lower bound by the charges a robot on a battery must make to fly it.
     static void boundByCharges(Plan& plan);
 };
