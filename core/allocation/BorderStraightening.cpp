@@ -3,6 +3,7 @@
 #include "core/model/ParallelFor.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
 
 namespace mcpp {
@@ -164,14 +165,14 @@ bool BorderStraightening::onBorder(int cell, const std::vector<int>& owner) cons
     return false;
 }
 
-std::vector<bool> BorderStraightening::bordersBeforeMoves(const std::vector<int>& owner) const {
-    // Tasks of whole 64-cell words, so that no two threads write the same word of the bits.
+std::vector<std::uint8_t> BorderStraightening::bordersBeforeMoves(const std::vector<int>& owner) const {
+    // A byte a cell (not bits), so that threads never write the same word.
     constexpr std::size_t cellsPerTask = std::size_t{1} << 16;
-    std::vector<bool> border(graph_.size(), false);
+    std::vector<std::uint8_t> border(graph_.size(), 0);
     parallelFor((graph_.size() + cellsPerTask - 1) / cellsPerTask, [&](std::size_t task, int) {
         const std::size_t end = std::min(graph_.size(), (task + 1) * cellsPerTask);
         for (std::size_t cell = task * cellsPerTask; cell < end; ++cell)
-            border[cell] = owner[cell] >= 0 && onBorder(static_cast<int>(cell), owner);
+            border[cell] = owner[cell] >= 0 && onBorder(static_cast<int>(cell), owner) ? 1 : 0;
     });
     return border;
 }
@@ -193,9 +194,9 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
     std::vector<int> queuedFor(graph_.size(), 0);
     // The first pass skips cells found off every border beforehand, unless a move changed them or a
     // neighbour since: the same cells are looked at as when each is asked in turn.
-    const std::vector<bool> onBorderAtFirst = firstPass_ == FirstPass::SkipsInsides
-                                                  ? bordersBeforeMoves(owner)
-                                                  : std::vector<bool>(graph_.size(), true);
+    const std::vector<std::uint8_t> onBorderAtFirst = firstPass_ == FirstPass::SkipsInsides
+                                                          ? bordersBeforeMoves(owner)
+                                                          : std::vector<std::uint8_t>(graph_.size(), 1);
     std::vector<bool> changedAround(graph_.size(), false);
     LocalConnectivity connectivity(graph_);
     int moved = 0;
@@ -209,7 +210,7 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
         };
         for (int cell : pending) {
             const int from = owner[static_cast<std::size_t>(cell)];
-            if (from < 0 || (pass == 1 && !onBorderAtFirst[static_cast<std::size_t>(cell)] &&
+            if (from < 0 || (pass == 1 && onBorderAtFirst[static_cast<std::size_t>(cell)] == 0 &&
                              !changedAround[static_cast<std::size_t>(cell)]))
                 continue;
             if (!onBorder(cell, owner) || isStart(cell, regions))

@@ -5,6 +5,7 @@
 #include "core/model/RegionAllocation.hpp"
 #include "core/parameters/ParameterSpec.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace mcpp {
@@ -40,7 +41,7 @@ class BorderStraightening {
     int movePair(int cell, RegionAllocation& regions, double ceiling, LocalConnectivity& connectivity) const;
     [[nodiscard]] bool onBorder(int cell, const std::vector<int>& owner) const;
     // Which cells lie on a border before any moves, found on every core.
-    [[nodiscard]] std::vector<bool> bordersBeforeMoves(const std::vector<int>& owner) const;
+    [[nodiscard]] std::vector<std::uint8_t> bordersBeforeMoves(const std::vector<int>& owner) const;
     [[nodiscard]] static bool isStart(int cell, const RegionAllocation& regions);
     // The region the cell is best moved to, -1 if none lowers the count; `refused` is set when a
     // neighbouring region could not take it for its cost.

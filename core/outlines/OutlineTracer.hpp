@@ -12,8 +12,9 @@ namespace mcpp {
 // Where two pixels of a label meet only at a corner they belong to different patches, so rings never cross;
 // a ring that would touch itself at such a corner is split there into a ring and a hole, as the simple
 // features rules want. Patches come in the order of their first pixel (row by row from the north-west),
-// and each ring begins at the corner its walk first turns at from the first pixel side of it met in that
-// order: the same rings, vertex for vertex, from one run to the next.
+// and each walk begins at the first pixel side of it met in that order, its ring at the first corner it
+// turns at (a ring split off at a pinched corner, at that corner): the same rings, vertex for vertex, from
+// one run to the next.
 [[nodiscard]] std::vector<OutlinePolygon> traceOutlines(const LabelGrid& grid);
 
 } // namespace mcpp

@@ -193,8 +193,8 @@ class OutlineTracerTest : public QObject {
         QVERIFY2(problem.empty(), problem.c_str());
     }
 
-    // Grids wide enough that the tracer skips chunks of a region's inside: rectangles of labels, empty
-    // ones among them, and single pixels on and beside the edges of its chunks of 32 columns.
+    // Grids wide enough that the tracer skips chunks of 32 pixels of a region's inside: rectangles of
+    // labels, empty ones among them, and single pixels about columns 32, 64 and 96.
     void wideGrids_data() {
         QTest::addColumn<int>("seed");
         for (int seed = 1; seed <= 12; ++seed)
@@ -249,9 +249,16 @@ class OutlineTracerTest : public QObject {
     // A plan of more cells than one thread labels at a time (2^16): each free sub-cell's pixel holds its
     // robot, blocked sub-cells and obstacles none, whatever the number of threads.
     void regionLabelsOfALargePlan() {
-        const PlanningProblem problem = test::obstacleGridProblem(300, 2, 5);
+        const CellGraph whole = test::cellPerPixelGraph(test::obstacleGridProblem(300, 2, 5));
+        // One cell in seven with a sub-cell blocked.
+        std::vector<Cell> cells;
+        for (std::size_t id = 0; id < whole.size(); ++id) {
+            cells.push_back(whole.cell(static_cast<int>(id)));
+            if (id % 7 == 0)
+                cells.back().freeSubCells = allSubCells & ~(1U << static_cast<unsigned>(id / 7 % 4));
+        }
         Plan plan;
-        plan.cells = test::cellPerPixelGraph(problem);
+        plan.cells = CellGraph(whole.frame(), cells, whole.neighbourLists());
         QVERIFY(plan.cells.size() > std::size_t{1} << 16);
         plan.regions.robotOfCell.resize(plan.cells.size());
         for (std::size_t id = 0; id < plan.cells.size(); ++id) {

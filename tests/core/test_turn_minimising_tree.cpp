@@ -357,6 +357,30 @@ class TurnMinimisingTreeTest : public QObject {
                              regions.costSeconds[static_cast<std::size_t>(region)]) < 1e-6);
     }
 
+    // More cells than one task of the border search takes (2^16), so its tasks run side by side: two
+    // regions split along a long staircase move the same cells as when every cell is asked in turn.
+    void largeStaircaseStraightensAsAskingEveryCell() {
+        GridCells grid(300, 240, 0.05, 3);
+        QVERIFY(grid.graph.size() > std::size_t{1} << 16);
+        std::vector<int> owner(grid.graph.size());
+        for (std::size_t id = 0; id < owner.size(); ++id) {
+            const Cell& cell = grid.graph.cell(static_cast<int>(id));
+            owner[id] = cell.column * 4 < cell.row * 5 ? 0 : 1;
+        }
+        std::vector<int> starts{-1, -1};
+        for (std::size_t id = 0; id < owner.size(); ++id)
+            if (starts[static_cast<std::size_t>(owner[id])] < 0)
+                starts[static_cast<std::size_t>(owner[id])] = static_cast<int>(id);
+        RegionAllocation skipping = allocationOf(grid.graph, owner, starts);
+        RegionAllocation asking = skipping;
+        const int moved = BorderStraightening(grid.graph, 0.01).straighten(skipping);
+        QVERIFY(moved > 0);
+        QCOMPARE(BorderStraightening(grid.graph, 0.01, BorderStraightening::FirstPass::AsksEveryCell)
+                     .straighten(asking),
+                 moved);
+        QCOMPARE(asking.robotOfCell, skipping.robotOfCell);
+    }
+
     // On allocations of the azimuth trend: never more cells off straight runs, regions whole, starts kept,
     // and with no slack the most loaded region's cost does not rise.
     void allocationsStraightenWithoutLosingBalance_data() {
