@@ -169,9 +169,8 @@ std::vector<std::uint8_t> BorderStraightening::bordersBeforeMoves(const std::vec
     // A byte a cell (not bits), so that threads never write the same word.
     constexpr std::size_t cellsPerTask = std::size_t{1} << 16;
     std::vector<std::uint8_t> border(graph_.size(), 0);
-    parallelFor((graph_.size() + cellsPerTask - 1) / cellsPerTask, [&](std::size_t task, int) {
-        const std::size_t end = std::min(graph_.size(), (task + 1) * cellsPerTask);
-        for (std::size_t cell = task * cellsPerTask; cell < end; ++cell)
+    parallelForRanges(graph_.size(), cellsPerTask, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t cell = begin; cell < end; ++cell)
             border[cell] = owner[cell] >= 0 && onBorder(static_cast<int>(cell), owner) ? 1 : 0;
     });
     return border;

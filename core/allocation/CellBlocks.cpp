@@ -115,13 +115,12 @@ NeighbourTopology blockAdjacency(const CellGraph& graph, const std::vector<int>&
     std::vector<int> offsets(blocks + 1, 0);
     std::vector<std::vector<int>> neighboursOfTask(tasks);
     std::atomic<bool> allConnected{true};
-    parallelFor(tasks, [&](std::size_t task, int) {
+    parallelForRanges(blocks, blocksPerTask, [&](std::size_t task, std::size_t begin, std::size_t end) {
         std::vector<int>& neighbours = neighboursOfTask[task];
-        neighbours.reserve(blocksPerTask * 4);
+        neighbours.reserve((end - begin) * 4);
         std::vector<int> members;
         std::vector<char> reached;
-        for (std::size_t block = task * blocksPerTask; block < std::min(blocks, (task + 1) * blocksPerTask);
-             ++block) {
+        for (std::size_t block = begin; block < end; ++block) {
             const std::span<const int> cells(
                 cellsOf.data() + cellOffsets[block],
                 static_cast<std::size_t>(cellOffsets[block + 1] - cellOffsets[block]));

@@ -28,6 +28,11 @@ inline constexpr std::uint8_t allSubCells = 0b1111;
     return static_cast<int>(bitsSet(mask));
 }
 
+// Whether a mask of free sub-cells holds `subCell` (Cell::isFree, and a CellRecord's freeSubCells).
+[[nodiscard]] constexpr bool holdsSubCell(unsigned mask, SubCell subCell) {
+    return (mask >> static_cast<unsigned>(subCell) & 1U) != 0;
+}
+
 // One square of a planning decomposition: a quadtree leaf, or a cell of a uniform grid. A robot covers it
 // by passing the centres of its free sub-cells, whose side (half the cell's) is the robot's swath there.
 // Levels a quadtree may have: its largest cells span 2^15 bottom cells, which Cell::span holds in 16 bits.
@@ -65,9 +70,7 @@ struct Cell {
     [[nodiscard]] double centreX() const { return minX + size / 2.0; }
     [[nodiscard]] double centreY() const { return minY + size / 2.0; }
     [[nodiscard]] double fieldOfView() const { return size / 2.0; }
-    [[nodiscard]] bool isFree(SubCell subCell) const {
-        return (freeSubCells >> static_cast<unsigned>(subCell) & 1U) != 0;
-    }
+    [[nodiscard]] bool isFree(SubCell subCell) const { return holdsSubCell(freeSubCells, subCell); }
     [[nodiscard]] int freeSubCellCount() const { return subCellsIn(freeSubCells); }
     [[nodiscard]] MapPoint subCellCentre(SubCell subCell) const {
         const double quarter = size / 4.0;

@@ -60,4 +60,12 @@ void parallelFor(std::size_t count, const std::function<void(std::size_t index, 
         std::rethrow_exception(firstError);
 }
 
+void parallelForRanges(
+    std::size_t count, std::size_t perTask,
+    const std::function<void(std::size_t task, std::size_t begin, std::size_t end)>& body) {
+    parallelFor((count + perTask - 1) / perTask, [&](std::size_t task, int) {
+        body(task, task * perTask, std::min(count, (task + 1) * perTask));
+    });
+}
+
 } // namespace mcpp

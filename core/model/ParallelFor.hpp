@@ -15,4 +15,9 @@ void setWorkerThreads(int threads); // 0 = the machine's cores
 // thrown by a body is rethrown here once every thread has stopped taking new indices.
 void parallelFor(std::size_t count, const std::function<void(std::size_t index, int worker)>& body);
 
+// parallelFor over [0, count) in tasks of `perTask` consecutive indices: body(task, begin, end) for each.
+// Tasks are cut the same way whatever the number of threads, so results kept by task are too.
+void parallelForRanges(std::size_t count, std::size_t perTask,
+                       const std::function<void(std::size_t task, std::size_t begin, std::size_t end)>& body);
+
 } // namespace mcpp

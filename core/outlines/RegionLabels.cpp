@@ -67,14 +67,13 @@ LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& la
                        LabelGrid::noLabel);
     // Cells fill pixels of their own, so blocks of cells are filled side by side.
     const std::size_t cells = std::min(labelOfCell.size(), graph.size());
-    parallelFor((cells + cellsPerTask - 1) / cellsPerTask, [&](std::size_t task, int) {
-        const std::size_t end = std::min(cells, (task + 1) * cellsPerTask);
-        for (std::size_t id = task * cellsPerTask; id < end; ++id) {
+    parallelForRanges(cells, cellsPerTask, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t id = begin; id < end; ++id) {
             if (labelOfCell[id] == LabelGrid::noLabel)
                 continue;
             const CellRecord& cell = graph.record(static_cast<int>(id));
             for (const SubCell subCell : subCellsCounterClockwise)
-                if ((cell.freeSubCells >> static_cast<unsigned>(subCell) & 1U) != 0)
+                if (holdsSubCell(cell.freeSubCells, subCell))
                     fillSubCell(grid, cell, subCell, static_cast<LabelGrid::Label>(labelOfCell[id]), west,
                                 north);
         }
