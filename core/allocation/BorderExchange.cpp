@@ -35,6 +35,10 @@ double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds)
     cost_.assign(regionCount_, 0.0);
     for (std::size_t c = 0; c < owner.size(); ++c)
         cost_[static_cast<std::size_t>(owner[c])] += weight_[c];
+    regionVersion_.resize(regionCount_);
+    for (std::uint64_t& version : regionVersion_)
+        version = ++lastVersion_;
+    keptAtVersion_.assign(owner.size(), 0);
     queues_.assign(regionCount_ * regionCount_, {});
     closed_.assign(regionCount_ * regionCount_, 0);
     for (int c = 0; c < static_cast<int>(owner.size()); ++c)
@@ -107,6 +111,8 @@ void BorderExchange::returnToBest() {
         const auto index = static_cast<std::size_t>(entry->cell);
         cost_[static_cast<std::size_t>((*owner_)[index])] -= weight_[index];
         cost_[static_cast<std::size_t>(entry->previousOwner)] += weight_[index];
+        changed((*owner_)[index]);
+        changed(entry->previousOwner);
         (*owner_)[index] = entry->previousOwner;
     }
     movesSinceBest_.clear();
@@ -224,6 +230,8 @@ void BorderExchange::move(int cell, int receiver) {
     movesSinceBest_.push_back({cell, (*owner_)[index]});
     cost_[static_cast<std::size_t>((*owner_)[index])] -= weight_[index];
     cost_[static_cast<std::size_t>(receiver)] += weight_[index];
+    changed((*owner_)[index]);
+    changed(receiver);
     (*owner_)[index] = receiver;
     offerNeighboursOf(cell);
     for (int k = adjacencyStart_[index]; k < adjacencyStart_[index + 1]; ++k)
@@ -248,10 +256,15 @@ int BorderExchange::givableCell(int donor, int receiver) {
             queue.push(now);
             continue;
         }
-        if (top.cell == start_[static_cast<std::size_t>(donor)] || !isRemovable(top.cell, donor))
+        const std::uint64_t version = regionVersion_[static_cast<std::size_t>(donor)];
+        if (top.cell == start_[static_cast<std::size_t>(donor)] || keptAtVersion_[index] == version) {
             waiting.push_back(top);
-        else
+        } else if (!isRemovable(top.cell, donor)) {
+            keptAtVersion_[index] = version;
+            waiting.push_back(top);
+        } else {
             found = top.cell;
+        }
     }
     for (const Candidate& entry : waiting)
         queue.push(entry);
@@ -309,8 +322,13 @@ std::vector<int> BorderExchange::hangingOn(int cell, int region, double limitSec
 }
 
 // True when `region` stays in one piece without `cell`: its neighbours in the region still reach one another.
+void BorderExchange::changed(int region) {
+    regionVersion_[static_cast<std::size_t>(region)] = ++lastVersion_;
+}
+
 bool BorderExchange::isRemovable(int cell, int region) {
-    std::vector<int> inRegion;
+    std::vector<int>& inRegion = inRegion_;
+    inRegion.clear();
     for (int k = adjacencyStart_[static_cast<std::size_t>(cell)];
          k < adjacencyStart_[static_cast<std::size_t>(cell) + 1]; ++k)
         if ((*owner_)[static_cast<std::size_t>(adjacency_[static_cast<std::size_t>(k)])] == region)
@@ -321,7 +339,8 @@ bool BorderExchange::isRemovable(int cell, int region) {
     visitStamp_[static_cast<std::size_t>(cell)] = stamp_;
     visitStamp_[static_cast<std::size_t>(inRegion.front())] = stamp_;
     std::size_t found = 1;
-    std::vector<int> queue{inRegion.front()};
+    std::vector<int>& queue = searchQueue_;
+    queue.assign(1, inRegion.front());
     // Around a cell that can go, its neighbours meet again within a few steps; a longer way round is
     // not looked for, so some cells that could go are kept, and the search stays short.
     constexpr std::size_t searchLimit = 64;

@@ -88,6 +88,15 @@ class BorderExchange {
     std::vector<Move> movesSinceBest_; // undone at the end when a later exchange did not improve on them
     std::vector<int> visitStamp_;
     int stamp_ = 0;
+    // Whether a cell can leave its region depends on that region's cells alone: each region carries a
+    // version, new at every move in or out, and a cell found unable to leave is not searched again until
+    // its region's version changes (corridor regions keep dozens of such cells on their borders).
+    void changed(int region);
+    std::vector<std::uint64_t> regionVersion_;
+    std::vector<std::uint64_t> keptAtVersion_; // per cell: its region's version when it could not leave
+    std::uint64_t lastVersion_ = 0;
+    std::vector<int> inRegion_; // isRemovable's buffers
+    std::vector<int> searchQueue_;
 };
 
 } // namespace mcpp
