@@ -96,8 +96,7 @@ class Allocation {
             int robot = -1;
             for (int candidate = 0; candidate < robotCount; ++candidate) {
                 const RobotState& state = robots_[static_cast<std::size_t>(candidate)];
-                if (!state.finished &&
-                    (robot < 0 || state.cost < robots_[static_cast<std::size_t>(robot)].cost))
+                if (!state.finished && (robot < 0 || weightedCost(candidate) < weightedCost(robot)))
                     robot = candidate;
             }
             if (robot < 0)
@@ -121,6 +120,9 @@ class Allocation {
             state.finished = true;
         }
     }
+
+    // Growth takes turns by cost times this weight: a robot weighted below 1 grows ahead of the others.
+    void setGrowthWeights(std::vector<double> weights) { growthWeights_ = std::move(weights); }
 
     // Moves cells along chains of adjacent regions from the most loaded robot while the maximum falls.
     int rebalance(int iterationCap) {
@@ -187,6 +189,11 @@ class Allocation {
     }
 
   private:
+    double weightedCost(int robot) const {
+        const double cost = robots_[static_cast<std::size_t>(robot)].cost;
+        return growthWeights_.empty() ? cost : cost * growthWeights_[static_cast<std::size_t>(robot)];
+    }
+
     double distance(int cell, double x, double y) const {
         const double dx = cells_[static_cast<std::size_t>(cell)].x - x;
         const double dy = cells_[static_cast<std::size_t>(cell)].y - y;
@@ -755,6 +762,7 @@ class Allocation {
     std::vector<std::vector<int>> boundaries_;
     std::vector<int> regionContacts_;
     std::vector<int> lastChain_;
+    std::vector<double> growthWeights_; // by robot; empty: all 1
     std::vector<std::pair<double, int>> scratchCandidates_;
     std::vector<int> scratchCells_;
     static constexpr int stealTries = 32; // border cells a steal tries, best first
@@ -781,21 +789,109 @@ int moveCap(int rebalanceIterations, std::size_t cells) {
 
 // The cells moved along chains of adjacent regions while the largest cost falls, then any region left in
 // pieces settled.
-RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int rebalanceIterations,
+RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int moves,
                            const ProgressReporter& progress) {
     progress.report("allocation", 0.8);
-    (void)allocation.rebalance(moveCap(rebalanceIterations, graph.size()));
+    (void)allocation.rebalance(moves);
     RegionAllocation result = allocation.result();
     settleRegionsWithPieces(graph, result);
     progress.report("allocation", 1.0);
     return result;
 }
 
+// The robots of each connected part of the map that holds more than one start: a robot alone in a pocket
+// has no one to even out with.
+std::vector<std::vector<int>> robotsSharingParts(const CellGraph& graph, const std::vector<int>& startCells) {
+    std::vector<std::vector<int>> shared;
+    for (StartComponent& part : componentsWithStarts(graph, startCells))
+        if (part.robots.size() > 1)
+            shared.push_back(std::move(part.robots));
+    return shared;
+}
+
+// How uneven a division's costs are: the largest over the mean of the robots sharing its part, at least 1.
+// With `unevenBeyond` (a cost), 1 unless some region also exceeds its part's mean by more than that.
+double unevenness(const std::vector<double>& costs, const std::vector<std::vector<int>>& robotsOfParts,
+                  double unevenBeyond = 0.0) {
+    double largest = 1.0;
+    for (const std::vector<int>& robots : robotsOfParts) {
+        double total = 0.0;
+        double most = 0.0;
+        for (const int robot : robots) {
+            total += costs[static_cast<std::size_t>(robot)];
+            most = std::max(most, costs[static_cast<std::size_t>(robot)]);
+        }
+        const double mean = total / static_cast<double>(robots.size());
+        if (mean > 0.0 && most - mean > unevenBeyond)
+            largest = std::max(largest, most / mean);
+    }
+    return largest;
+}
+
+// Regions grown with these growth weights (none: all 1) and evened out with at most `moves` chain moves.
+RegionAllocation grownAndEvenedOut(const CellGraph& graph, const std::vector<CellFigures>& figures,
+                                   const std::vector<int>& startCells, std::vector<double> weights, int moves,
+                                   const ProgressReporter& progress) {
+    Allocation allocation(graph, figures, startCells, progress);
+    allocation.setGrowthWeights(std::move(weights));
+    allocation.grow();
+    return evenedOut(allocation, graph, moves, progress);
+}
+
+// Regions left further than this from even after evening out (and more than a cell's cost from it, which a
+// map of few cells a robot cannot help) are grown again with weights, on maps of at most
+// weightedGrowthCells cells (each try costs about what the first growth and evening out cost).
+constexpr double unevenAfterEvening = 1.01;
+constexpr int weightedGrowths = 6;
+constexpr std::size_t weightedGrowthCells = 20'000;
+
+// Where the evened-out division stays uneven (starts crowded together, regions walled in by others), the
+// regions are grown again, each robot's turn in the growth going by its cost times a weight: a robot left
+// with too little weighs less next time and grows ahead, as DARP weighs its regions. The most even division
+// is kept, the first one if none beats it.
+RegionAllocation regrownWithWeights(const CellGraph& graph, const std::vector<CellFigures>& figures,
+                                    const std::vector<int>& startCells, RegionAllocation first,
+                                    int rebalanceIterations, const ProgressReporter& progress) {
+    double dearestCell = 0.0;
+    for (const CellFigures& cell : figures)
+        dearestCell = std::max(dearestCell, cell.cost);
+    const std::vector<std::vector<int>> robotsOfParts = robotsSharingParts(graph, startCells);
+    if (unevenness(first.costSeconds, robotsOfParts, dearestCell) <= unevenAfterEvening)
+        return first;
+    const int moves = moveCap(rebalanceIterations, graph.size());
+    std::vector<double> weights(startCells.size(), 1.0);
+    std::vector<double> costs = first.costSeconds;
+    RegionAllocation best = std::move(first);
+    double bestSpread = unevenness(best.costSeconds, robotsOfParts);
+    for (int attempt = 0; attempt < weightedGrowths && bestSpread > unevenAfterEvening; ++attempt) {
+        double total = 0.0;
+        for (const double cost : costs)
+            total += cost;
+        const double mean = total / static_cast<double>(costs.size());
+        for (std::size_t robot = 0; robot < weights.size(); ++robot)
+            if (costs[robot] > 0.0)
+                weights[robot] *= std::sqrt(costs[robot] / mean); // half way: whole steps overshoot
+        const ProgressReporter tries =
+            progress.within("uneven regions grown again", static_cast<double>(attempt) / weightedGrowths,
+                            static_cast<double>(attempt + 1) / weightedGrowths);
+        RegionAllocation regrown = grownAndEvenedOut(graph, figures, startCells, weights, moves, tries);
+        costs = regrown.costSeconds;
+        if (const double spread = unevenness(regrown.costSeconds, robotsOfParts); spread < bestSpread) {
+            bestSpread = spread;
+            best = std::move(regrown);
+        }
+    }
+    return best;
+}
+
 RegionAllocation grownCellByCell(const CellGraph& graph, const std::vector<int>& startCells,
                                  int rebalanceIterations, const ProgressReporter& progress) {
-    Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
-    allocation.grow();
-    return evenedOut(allocation, graph, rebalanceIterations, progress);
+    const std::vector<CellFigures> figures = cellFiguresOf(graph);
+    RegionAllocation division = grownAndEvenedOut(graph, figures, startCells, {},
+                                                  moveCap(rebalanceIterations, graph.size()), progress);
+    if (startCells.size() < 2 || graph.size() > weightedGrowthCells)
+        return division;
+    return regrownWithWeights(graph, figures, startCells, std::move(division), rebalanceIterations, progress);
 }
 
 // The blocks (or pieces) that hold the start cells.
@@ -903,7 +999,7 @@ RegionAllocation AzimuthTrendAllocator::rebalance(const CellGraph& graph, const 
         progress.report("allocation", 0.0);
         Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
         if (allocation.adopt(division) && allocation.movesToEvenOut() <= mostMoves)
-            return evenedOut(allocation, graph, rebalanceIterations_, progress);
+            return evenedOut(allocation, graph, moveCap(rebalanceIterations_, graph.size()), progress);
     } // gone before a new one is grown: on a large map each holds hundreds of megabytes
     return allocate(graph, startCells, progress);
 }
@@ -954,7 +1050,7 @@ RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph
     } // the pieces' figures and adjacency gone before the cells' allocation is made
     Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
     if (division && allocation.adopt(cellsTakeTheirBlocks(*division, finestPieceOfCell, startCells)))
-        return evenedOut(allocation, graph, rebalanceIterations_, progress);
+        return evenedOut(allocation, graph, moveCap(rebalanceIterations_, graph.size()), progress);
     return grownCellByCell(graph, startCells, rebalanceIterations_, progress);
 }
 
