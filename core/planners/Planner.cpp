@@ -91,6 +91,42 @@ std::string confinedRobotMessage(const ConfinedRobot& confined) {
            "; the lower bound counts each part with its own robots";
 }
 
+// "robot 3", "robots 3 and 4", "robots 3, 4 and 10" (counted from 1).
+std::string robotList(const std::vector<int>& robots) {
+    std::string list = robots.size() == 1 ? "robot " : "robots ";
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+        if (i > 0)
+            list += i + 1 == robots.size() ? " and " : ", ";
+        list += std::to_string(robots[i] + 1);
+    }
+    return list;
+}
+
+// Robots left with less than half a fair share where the longest path is well above the bound: most often
+// starts so close together that the others' regions wall theirs in. Empty where there are none.
+std::string unevenPlanMessage(const PlanMetrics& metrics) {
+    constexpr double noticeableRatio = 1.05;
+    if (!(metrics.ratio > noticeableRatio) || !(metrics.lowerBoundSeconds > 0.0))
+        return {};
+    const auto isConfined = [&](int robot) {
+        return std::any_of(metrics.confinedRobots.begin(), metrics.confinedRobots.end(),
+                           [&](const ConfinedRobot& confined) { return confined.robot == robot; });
+    };
+    std::vector<int> shortOfWork;
+    for (const RobotMetrics& robot : metrics.robots)
+        if (robot.timeSeconds < 0.5 * metrics.lowerBoundSeconds && !isConfined(robot.robot))
+            shortOfWork.push_back(robot.robot);
+    if (shortOfWork.empty())
+        return {};
+    std::ostringstream ratio;
+    ratio.precision(3);
+    ratio << metrics.ratio;
+    return robotList(shortOfWork) + (shortOfWork.size() == 1 ? " covers" : " cover") +
+           " less than half of a fair share, and the longest path takes " + ratio.str() +
+           " times the lower bound: starts close together leave robots walled in by the others' regions; "
+           "spread over the area, they even the plan out";
+}
+
 } // namespace
 
 ParameterSpec Planner::snapStartsParameter() {
@@ -142,6 +178,8 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
                                  " of passable land cannot be reached by any robot");
     for (const ConfinedRobot& confined : plan.metrics.confinedRobots)
         planningRun.addIssue(IssueSeverity::Information, "confined-robot", confinedRobotMessage(confined));
+    if (const std::string uneven = unevenPlanMessage(plan.metrics); !uneven.empty())
+        planningRun.addIssue(IssueSeverity::Warning, "uneven-plan", uneven);
     progress.report("done", 1.0);
     return plan;
 }

@@ -167,6 +167,25 @@ class MlctPlannerTest : public QObject {
         QVERIFY(test::checkRegions(plan).empty());
     }
 
+    // Robot 1 starts in a corner whose two neighbours are the other robots' starts: its region is its start
+    // cell alone, and the plan says so, where a balanced one says nothing.
+    void robotWalledInByOtherStartsIsNamed() {
+        auto problem = test::uniformProblem(20, 20, 10.0, std::vector<bool>(20 * 20, false), {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 1, 0),
+                          test::pixelCentre(problem.grid, 0, 1)};
+        const Plan plan = MlctPlanner{}.plan(problem, {});
+        QVERIFY(plan.metrics.ratio > 1.4);
+        const auto uneven = std::find_if(plan.issues.begin(), plan.issues.end(),
+                                         [](const PlanIssue& issue) { return issue.code == "uneven-plan"; });
+        QVERIFY(uneven != plan.issues.end());
+        QCOMPARE(uneven->severity, IssueSeverity::Warning);
+        QVERIFY2(uneven->message.rfind("robot 1 covers less than half of a fair share", 0) == 0,
+                 uneven->message.c_str());
+        const Plan balanced = MlctPlanner{}.plan(lakeProblem(), {});
+        QVERIFY(std::none_of(balanced.issues.begin(), balanced.issues.end(),
+                             [](const PlanIssue& issue) { return issue.code == "uneven-plan"; }));
+    }
+
     void reportsProgressAndHonoursCancel() {
         const auto problem = lakeProblem();
         std::vector<std::string> stages;
