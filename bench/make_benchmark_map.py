@@ -4,6 +4,9 @@
     make_benchmark_map.py uniform SIDE ROBOTS FOLDER
         SIDE x SIDE pixels of 10 m, one class with a 5 m field of view (so a pixel is one planning cell),
         15% obstacle pixels and ROBOTS starts at free pixel centres, both drawn with a fixed seed.
+    make_benchmark_map.py crowded SIDE ROBOTS WINDOW SEED FOLDER
+        The uniform map of SIDE with ROBOTS starts crowded on the free pixels of one WINDOW x WINDOW square
+        (robots setting off from one base), square and starts drawn with SEED.
     make_benchmark_map.py forest SIDE ROBOTS FOLDER
         SIDE x SIDE pixels of 10 m of forest (5 m field of view: one planning cell per pixel, the most cells a
         map of that size can have) with 60 x 60-pixel lakes every 300 pixels; starts spread over the map.
@@ -70,6 +73,21 @@ def uniform(side, robots, folder):
     return tif, [(WEST + (c + 0.5) * 10.0, NORTH - (r + 0.5) * 10.0) for c, r in starts]
 
 
+def crowded(side, robots, window, seed, folder):
+    tif, _ = uniform(side, robots, folder)
+    generator = random.Random(2020 + side * 100 + robots)
+    grid = [[LAKE if generator.random() < 0.15 else FOREST for _ in range(side)] for _ in range(side)]
+    chooser = random.Random(seed)
+    while True:  # a square with room for every start
+        left, top = chooser.randrange(side - window + 1), chooser.randrange(side - window + 1)
+        free = [(c, r) for r in range(top, top + window) for c in range(left, left + window)
+                if grid[r][c] == FOREST]
+        if len(free) >= robots:
+            break
+    starts = chooser.sample(free, robots)
+    return tif, [(WEST + (c + 0.5) * 10.0, NORTH - (r + 0.5) * 10.0) for c, r in starts]
+
+
 def block_class(block_column, block_row):
     return (FOREST, SHRUBLAND, GRASSLAND, FOREST, SHRUBLAND, LAKE, GRASSLAND)[
         (block_column * 3 + block_row * 5) % 7
@@ -130,6 +148,10 @@ def main():
     if kind == "uniform":
         tif, starts = uniform(int(sys.argv[2]), int(sys.argv[3]), sys.argv[4])
         folder = sys.argv[4]
+    elif kind == "crowded":
+        tif, starts = crowded(int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5]),
+                              sys.argv[6])
+        folder = sys.argv[6]
     elif kind == "forest":
         tif, starts = forest(int(sys.argv[2]), int(sys.argv[3]), sys.argv[4])
         folder = sys.argv[4]
