@@ -76,7 +76,7 @@ for side in 316 1000 2000 3000 4000 5000; do
     # shellcheck disable=SC2046
     run_case "$name" "$maps/$name/blocks_${side}x$side.tif" \
         $(python3 "$root/bench/make_benchmark_map.py" blocks "$side" "$side" 6 "$maps/$name")
-    rm -rf "$maps/$name"
+    rm -rf "${maps:?}/$name"
 done
 # The most cells a map can hold for its size: 5.0 M and 18.1 M cells (the second takes about a minute and
 # 6.5 GB, and is run only when named).
@@ -88,7 +88,7 @@ for side in 2240 4250; do
     # shellcheck disable=SC2046
     run_case "$name" "$maps/$name/forest_$side.tif" \
         $(python3 "$root/bench/make_benchmark_map.py" forest "$side" 6 "$maps/$name")
-    rm -rf "$maps/$name"
+    rm -rf "${maps:?}/$name"
 done
 principe="$root/../shared/data/landcover/worldcover2021_principe_crop.tif"
 if [ -f "$principe" ]; then
