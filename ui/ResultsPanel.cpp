@@ -313,6 +313,10 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     QStringList warnings;
     for (const auto& warning : plan->warnings())
         warnings << QString::fromStdString(warning);
+    // Several warnings, each wrapped over lines, would read as one paragraph without a mark before each.
+    if (warnings.size() > 1)
+        for (QString& warning : warnings)
+            warning.prepend(QStringLiteral("• "));
     warnings_->setText(warnings.isEmpty() ? tr("none") : warnings.join(QLatin1Char('\n')));
     showChart(*plan, names);
 }

@@ -134,6 +134,35 @@ class TestMainWindow : public QObject {
         QVERIFY(detection->isHidden());
     }
 
+    // Two warnings (a robot walled in by the others' starts, a pocket no robot reaches) each get a mark, so
+    // that the wrapped sentences do not read as one; a lone warning is shown as it is.
+    void resultsMarkEachOfSeveralWarnings() {
+        std::vector<std::string> rows(20, std::string(40, '.'));
+        for (int row = 10; row < 16; ++row) // a ring of water round a cell of grass, 2 pixels wide
+            for (int column = 30; column < 36; ++column)
+                if (row < 12 || row >= 14 || column < 32 || column >= 34)
+                    rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] = '#';
+        const PlanningProblem problem = test::drawnProblem(rows, {{0.5, 0.5}, {2.5, 0.5}, {0.5, 2.5}});
+        const Plan plan = makePlanner("mcpp-mlct")->plan(problem, {});
+        QCOMPARE(plan.warnings().size(), std::size_t{2});
+        ui::ResultsPanel panel;
+        panel.showPlan(&plan, {});
+        auto* warnings = panel.findChild<QLabel*>(QStringLiteral("warningsLabel"));
+        QVERIFY(warnings != nullptr);
+        const QStringList lines = warnings->text().split(QLatin1Char('\n'));
+        QCOMPARE(lines.size(), 2);
+        for (const QString& line : lines)
+            QVERIFY2(line.startsWith(QStringLiteral("• ")), qPrintable(line));
+        QVERIFY(warnings->text().contains(QStringLiteral("robot 1 covers less than half of a fair share")));
+        std::vector<std::string> open(20, std::string(40, '.'));
+        open[10].replace(30, 2, "##"); // nothing enclosed
+        const Plan lone = makePlanner("mcpp-mlct")
+                              ->plan(test::drawnProblem(open, {{0.5, 0.5}, {2.5, 0.5}, {0.5, 2.5}}), {});
+        QCOMPARE(lone.warnings().size(), std::size_t{1});
+        panel.showPlan(&lone, {});
+        QVERIFY2(!warnings->text().startsWith(QStringLiteral("• ")), qPrintable(warnings->text()));
+    }
+
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QCoreApplication::setOrganizationName(QStringLiteral("mcpp"));
