@@ -321,11 +321,11 @@ std::vector<int> BorderExchange::hangingOn(int cell, int region, double limitSec
     return seconds <= limitSeconds ? piece : std::vector<int>{};
 }
 
-// True when `region` stays in one piece without `cell`: its neighbours in the region still reach one another.
 void BorderExchange::changed(int region) {
     regionVersion_[static_cast<std::size_t>(region)] = ++lastVersion_;
 }
 
+// True when `region` stays in one piece without `cell`: its neighbours in the region still reach one another.
 bool BorderExchange::isRemovable(int cell, int region) {
     std::vector<int>& inRegion = inRegion_;
     inRegion.clear();

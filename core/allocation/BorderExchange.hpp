@@ -67,6 +67,7 @@ class BorderExchange {
     [[nodiscard]] std::vector<int> givablePiece(int donor, int receiver, double limitSeconds);
     [[nodiscard]] std::vector<int> hangingOn(int cell, int region, double limitSeconds);
     [[nodiscard]] bool isRemovable(int cell, int region);
+    void changed(int region); // a cell moved in or out: its version is new
     [[nodiscard]] int countIn(int cell, int region) const;
     [[nodiscard]] Spread spread() const;
     [[nodiscard]] bool isCloser(const Spread& a, const Spread& b) const;
@@ -91,7 +92,6 @@ class BorderExchange {
     // Whether a cell can leave its region depends on that region's cells alone: each region carries a
     // version, new at every move in or out, and a cell found unable to leave is not searched again until
     // its region's version changes (corridor regions keep dozens of such cells on their borders).
-    void changed(int region);
     std::vector<std::uint64_t> regionVersion_;
     std::vector<std::uint64_t> keptAtVersion_; // per cell: its region's version when it could not leave
     std::uint64_t lastVersion_ = 0;

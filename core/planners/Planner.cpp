@@ -91,14 +91,18 @@ std::string confinedRobotMessage(const ConfinedRobot& confined) {
            "; the lower bound counts each part with its own robots";
 }
 
-// "robot 3", "robots 3 and 4", "robots 3, 4 and 10" (counted from 1).
+// "robot 3", "robots 3 and 4", "robots 3, 4 and 10" (counted from 1); past a dozen, "and 40 more".
 std::string robotList(const std::vector<int>& robots) {
+    constexpr std::size_t named = 12;
     std::string list = robots.size() == 1 ? "robot " : "robots ";
-    for (std::size_t i = 0; i < robots.size(); ++i) {
+    const std::size_t shown = robots.size() > named + 1 ? named : robots.size(); // never "and 1 more"
+    for (std::size_t i = 0; i < shown; ++i) {
         if (i > 0)
             list += i + 1 == robots.size() ? " and " : ", ";
         list += std::to_string(robots[i] + 1);
     }
+    if (shown < robots.size())
+        list += " and " + std::to_string(robots.size() - shown) + " more";
     return list;
 }
 
