@@ -839,11 +839,10 @@ RegionAllocation grownAndEvenedOut(const CellGraph& graph, const std::vector<Cel
 }
 
 // Regions left further than this from even after evening out (and more than a cell's cost from it, which a
-// map of few cells a robot cannot help) are grown again with weights, on maps of at most
-// weightedGrowthCells cells (each try costs about what the first growth and evening out cost).
+// map of few cells a robot cannot help) are grown again with weights (each try costs about what the first
+// growth and evening out cost).
 constexpr double unevenAfterEvening = 1.01;
 constexpr int weightedGrowths = 6;
-constexpr std::size_t weightedGrowthCells = 20'000;
 
 // Where the evened-out division stays uneven (starts crowded together, regions walled in by others), the
 // regions are grown again, each robot's turn in the growth going by its cost times a weight: a robot left
@@ -884,13 +883,18 @@ RegionAllocation regrownWithWeights(const CellGraph& graph, const std::vector<Ce
     return best;
 }
 
+// mostCellsGrownAgain: the largest map grown again with weights where the first division stays uneven.
 RegionAllocation grownCellByCell(const CellGraph& graph, const std::vector<int>& startCells,
-                                 int rebalanceIterations, const ProgressReporter& progress) {
+                                 int rebalanceIterations, const ProgressReporter& progress,
+                                 std::size_t mostCellsGrownAgain) {
+    const int moves = moveCap(rebalanceIterations, graph.size());
+    if (startCells.size() < 2 || graph.size() > mostCellsGrownAgain) { // the figures are not kept for tries
+        Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
+        allocation.grow();
+        return evenedOut(allocation, graph, moves, progress);
+    }
     const std::vector<CellFigures> figures = cellFiguresOf(graph);
-    RegionAllocation division = grownAndEvenedOut(graph, figures, startCells, {},
-                                                  moveCap(rebalanceIterations, graph.size()), progress);
-    if (startCells.size() < 2 || graph.size() > weightedGrowthCells)
-        return division;
+    RegionAllocation division = grownAndEvenedOut(graph, figures, startCells, {}, moves, progress);
     return regrownWithWeights(graph, figures, startCells, std::move(division), rebalanceIterations, progress);
 }
 
@@ -1051,7 +1055,7 @@ RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph
     Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
     if (division && allocation.adopt(cellsTakeTheirBlocks(*division, finestPieceOfCell, startCells)))
         return evenedOut(allocation, graph, moveCap(rebalanceIterations_, graph.size()), progress);
-    return grownCellByCell(graph, startCells, rebalanceIterations_, progress);
+    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, mostCellsGrownAgain_);
 }
 
 RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const std::vector<int>& startCells,
@@ -1063,7 +1067,7 @@ RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const s
         if (auto grown = grownOnBlocks(graph, startCells, rebalanceIterations_, progress))
             return std::move(*grown);
     }
-    return grownCellByCell(graph, startCells, rebalanceIterations_, progress);
+    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, mostCellsGrownAgain_);
 }
 
 } // namespace mcpp

@@ -10,18 +10,18 @@ namespace mcpp {
 // The azimuth trend method of spec section 4: the least loaded robot grows towards its own centre and
 // away from the others; a robot with no free cell next to it takes border cells from a richer neighbour;
 // afterwards cells move along chains of adjacent regions from the most to the least loaded robot while
-// the maximum cost falls. Where a map of at most 20 000 cells is still more than 1 % from even after that
-// (starts crowded together, regions walled in near them by others'), it is grown again up to six times,
-// each robot's turn in the growth going by its cost times a weight that falls for robots left short, and
-// the most even division is kept. On a map of more than mostCellsGrownOneByOne cells the regions first grow
-// and even out on blocks of blockSide x blockSide bottom cells (CellBlocks); each cell then takes its block's
-// robot and cells cut off from their region's start join a neighbouring region (reconnectRegions). Growing
-// 69 million cells one at a time took about a minute, most of it waiting on memory; blocks of 16 take a
-// tenth of that. Where a region ends further than a block's cost from the mean, the map is grown cell by
-// cell after all, as evening out cell by cell would leave a notch for every cell it moves.
-// With a tree piece share (none by default), a map of at most mostCellsOnTreePiecesPerRobot cells a robot
-// grows on pieces of a turn-minimising tree over the whole map instead (treePieces), each costing that share
-// of a robot's fair share, is evened out on pieces an eighth of that, then cell by cell: the regions'
+// the maximum cost falls. Where a map of at most mostCellsGrownAgain cells is still more than 1 % (and a
+// cell) from even after that (starts crowded together, regions walled in near them by others'), it is grown
+// again up to six times, each robot's turn in the growth going by its cost times a weight that falls for
+// robots left short, and the most even division is kept. On a map of more than mostCellsGrownOneByOne cells
+// the regions first grow and even out on blocks of blockSide x blockSide bottom cells (CellBlocks); each cell
+// then takes its block's robot and cells cut off from their region's start join a neighbouring region
+// (reconnectRegions). Growing 69 million cells one at a time took about a minute, most of it waiting on
+// memory; blocks of 16 take a tenth of that. Where a region ends further than a block's cost from the mean,
+// the map is grown cell by cell after all, as evening out cell by cell would leave a notch for every cell it
+// moves. With a tree piece share (none by default), a map of at most mostCellsOnTreePiecesPerRobot cells a
+// robot grows on pieces of a turn-minimising tree over the whole map instead (treePieces), each costing that
+// share of a robot's fair share, is evened out on pieces an eighth of that, then cell by cell: the regions'
 // borders follow the tree's cuts, and their paths turn less (1.7 % fewer turns on the uniform benchmark
 // grids, 2.0 % on the multi-cover maps, 8 % on the Zion sample, at a share of 3 %), but the regions
 // interlock along the tree's runs (47-65 % longer borders on those maps). Where regions are larger their
@@ -30,17 +30,21 @@ class AzimuthTrendAllocator final : public RegionAllocator {
   public:
     static constexpr std::size_t defaultMostCellsGrownOneByOne = 8'000'000;
     static constexpr std::size_t defaultMostCellsOnTreePiecesPerRobot = 50'000;
+    static constexpr std::size_t defaultMostCellsGrownAgain = 20'000;
     static constexpr int blockSide = 4;
 
     // rebalanceIterations: cap on cell moves after growth; 0 picks one from the problem size.
     // treePieceShare: a tree piece's cost over a robot's fair share, 0 for growth cell by cell.
+    // mostCellsGrownAgain: the largest map grown again with weights (0: none).
     explicit AzimuthTrendAllocator(
         int rebalanceIterations = 0, double treePieceShare = 0.0,
         std::size_t mostCellsGrownOneByOne = defaultMostCellsGrownOneByOne,
-        std::size_t mostCellsOnTreePiecesPerRobot = defaultMostCellsOnTreePiecesPerRobot)
+        std::size_t mostCellsOnTreePiecesPerRobot = defaultMostCellsOnTreePiecesPerRobot,
+        std::size_t mostCellsGrownAgain = defaultMostCellsGrownAgain)
         : rebalanceIterations_(rebalanceIterations), treePieceShare_(treePieceShare),
           mostCellsGrownOneByOne_(mostCellsGrownOneByOne),
-          mostCellsOnTreePiecesPerRobot_(mostCellsOnTreePiecesPerRobot) {}
+          mostCellsOnTreePiecesPerRobot_(mostCellsOnTreePiecesPerRobot),
+          mostCellsGrownAgain_(mostCellsGrownAgain) {}
 
     [[nodiscard]] static ParameterSpec rebalanceIterationsParameter();
     // The planner parameter for treePieceShare, in percent.
@@ -66,6 +70,7 @@ class AzimuthTrendAllocator final : public RegionAllocator {
     double treePieceShare_;
     std::size_t mostCellsGrownOneByOne_;
     std::size_t mostCellsOnTreePiecesPerRobot_;
+    std::size_t mostCellsGrownAgain_;
 };
 
 } // namespace mcpp

@@ -184,6 +184,21 @@ class MlctPlannerTest : public QObject {
         const Plan balanced = MlctPlanner{}.plan(lakeProblem(), {});
         QVERIFY(std::none_of(balanced.issues.begin(), balanced.issues.end(),
                              [](const PlanIssue& issue) { return issue.code == "uneven-plan"; }));
+        // A fourth robot walled into a pocket of its own: the bound is then one part's share, and the plan
+        // names the pocket (confined-robot) instead.
+        std::vector<bool> blocked(20 * 20, false);
+        for (int row = 14; row < 20; ++row)
+            blocked[static_cast<std::size_t>(row * 20 + 14)] = true;
+        for (int column = 14; column < 20; ++column)
+            blocked[static_cast<std::size_t>(14 * 20 + column)] = true;
+        auto split = test::uniformProblem(20, 20, 10.0, blocked, {});
+        split.starts = problem.starts;
+        split.starts.push_back(test::pixelCentre(split.grid, 18, 18));
+        const Plan pocket = MlctPlanner{}.plan(split, {});
+        QVERIFY(!pocket.metrics.confinedRobots.empty());
+        QVERIFY(pocket.metrics.ratio > 1.05);
+        QVERIFY(std::none_of(pocket.issues.begin(), pocket.issues.end(),
+                             [](const PlanIssue& issue) { return issue.code == "uneven-plan"; }));
     }
 
     void reportsProgressAndHonoursCancel() {
