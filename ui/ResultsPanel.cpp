@@ -10,8 +10,10 @@
 
 #include <QBarCategoryAxis>
 #include <QBarSet>
+#include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
+#include <QEvent>
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -194,6 +196,7 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     chartView_->setObjectName(QStringLiteral("timeChart"));
     chartView_->setRenderHint(QPainter::Antialiasing);
     chartView_->setMinimumHeight(180);
+    chartView_->installEventFilter(this); // the bars' numbers follow the chart's width
 
     auto* splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(table_);
@@ -321,7 +324,22 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     showChart(*plan, names);
 }
 
+int ResultsPanel::robotLabelStep(int robots, int labelsThatFit) {
+    const int fit = std::max(labelsThatFit, 1);
+    for (int step = 1;; step *= 10)
+        for (const int multiple : {1, 2, 5})
+            if ((robots + step * multiple - 1) / (step * multiple) <= fit)
+                return step * multiple;
+}
+
+bool ResultsPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == chartView_ && event->type() == QEvent::Resize && !barNumbers_.isEmpty())
+        numberBars();
+    return QWidget::eventFilter(watched, event);
+}
+
 void ResultsPanel::clearChart() {
+    barNumbers_.clear();
     QChart* chart = chartView_->chart();
     chart->setTitle(tr("Time per robot"));
     chart->removeAllSeries();
@@ -364,11 +382,8 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     }
     series->setBarWidth(0.7);
     chart->addSeries(series);
-    auto* categoryAxis = new QBarCategoryAxis;
-    categoryAxis->append(categories);
-    categoryAxis->setTitleText(tr("robot, numbered as on the map"));
-    chart->addAxis(categoryAxis, Qt::AlignBottom);
-    series->attachAxis(categoryAxis);
+    barNumbers_ = categories;
+    numberBars();
     auto* valueAxis = new QValueAxis;
     valueAxis->setTitleText(inHours ? tr("hours") : tr("minutes"));
     valueAxis->setRange(0.0, std::max(longestValue * 1.1, 1.0));
@@ -376,6 +391,43 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     valueAxis->applyNiceNumbers();
     chart->addAxis(valueAxis, Qt::AlignLeft);
     series->attachAxis(valueAxis);
+}
+
+// Each bar numbered while the numbers fit under their bars; past that (20 robots in a narrow dock showed
+// "..." under every bar) only every second, fifth or tenth robot, and the first, at its bar.
+void ResultsPanel::numberBars() {
+    QChart* chart = chartView_->chart();
+    if (chart->series().isEmpty())
+        return;
+    QAbstractSeries* series = chart->series().front();
+    for (auto* axis : chart->axes(Qt::Horizontal)) {
+        chart->removeAxis(axis);
+        delete axis;
+    }
+    const QFontMetrics metrics(chart->font());
+    const int labelWidth = metrics.horizontalAdvance(barNumbers_.back()) + metrics.averageCharWidth() * 2;
+    const int plotWidth = std::max(chartView_->width() - 70, labelWidth); // less the value axis
+    const int count = static_cast<int>(barNumbers_.size());
+    const int step = robotLabelStep(count, plotWidth / labelWidth);
+    QAbstractAxis* numbers = nullptr;
+    if (step == 1) {
+        auto* categories = new QBarCategoryAxis;
+        categories->append(barNumbers_);
+        numbers = categories;
+    } else {
+        auto* positions = new QCategoryAxis;
+        positions->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+        positions->setRange(-0.5, count - 0.5);
+        positions->setStartValue(-0.5);
+        positions->setGridLineVisible(false);
+        for (int bar = 0; bar < count; ++bar)
+            if (bar == 0 || (bar + 1) % step == 0)
+                positions->append(barNumbers_[bar], bar);
+        numbers = positions;
+    }
+    numbers->setTitleText(tr("robot, numbered as on the map"));
+    chart->addAxis(numbers, Qt::AlignBottom);
+    series->attachAxis(numbers);
 }
 
 } // namespace mcpp::ui

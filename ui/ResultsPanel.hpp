@@ -31,11 +31,18 @@ class ResultsPanel : public QWidget {
 
     // "1:02:03" for 3723 s; "4 min 05 s" style is too long for a table column.
     [[nodiscard]] static QString formatDuration(double seconds);
+    // Every how many robots the chart numbers a bar: 1, 2, 5, 10, 20, 50... so that at most labelsThatFit
+    // numbers stand under the bars.
+    [[nodiscard]] static int robotLabelStep(int robots, int labelsThatFit);
+
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void describeTimes(bool underEvents);
     void clearChart();
     void showChart(const Plan& plan, const QStringList& names);
+    void numberBars();
 
     QLabel* staleLabel_;
     QTableWidget* table_;
@@ -50,6 +57,7 @@ class ResultsPanel : public QWidget {
     QFormLayout* summary_;
     QLabel* warnings_;
     QChartView* chartView_;
+    QStringList barNumbers_; // robot numbers under the chart's bars, in order
 };
 
 } // namespace mcpp::ui

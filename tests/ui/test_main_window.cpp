@@ -19,6 +19,10 @@
 #include "ui/SampleMission.hpp"
 
 #include <QAction>
+#include <QBarCategoryAxis>
+#include <QCategoryAxis>
+#include <QChart>
+#include <QChartView>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QJsonArray>
@@ -161,6 +165,47 @@ class TestMainWindow : public QObject {
         QCOMPARE(lone.warnings().size(), std::size_t{1});
         panel.showPlan(&lone, {});
         QVERIFY2(!warnings->text().startsWith(QStringLiteral("• ")), qPrintable(warnings->text()));
+    }
+
+    void robotLabelStepKeepsTheNumbersThatFit() {
+        QCOMPARE(ui::ResultsPanel::robotLabelStep(20, 20), 1);
+        QCOMPARE(ui::ResultsPanel::robotLabelStep(20, 19), 2);
+        QCOMPARE(ui::ResultsPanel::robotLabelStep(40, 12), 5);
+        QCOMPARE(ui::ResultsPanel::robotLabelStep(1000, 12), 100);
+        QCOMPARE(ui::ResultsPanel::robotLabelStep(5, 0), 5);
+    }
+
+    // 40 robots in a narrow chart: every fifth bar numbered (and the first), each number under its own
+    // bar; in a wide one every bar numbered.
+    void chartNumbersBarsThatFit() {
+        Plan plan;
+        plan.planner = "mcpp-mlct";
+        plan.metrics.robots.resize(40);
+        for (int robot = 0; robot < 40; ++robot) {
+            plan.metrics.robots[static_cast<std::size_t>(robot)].robot = robot;
+            plan.metrics.robots[static_cast<std::size_t>(robot)].timeSeconds = 600.0 + robot;
+        }
+        ui::ResultsPanel panel;
+        panel.show();
+        panel.showPlan(&plan, {});
+        QChartView* view = panel.chartView();
+        view->resize(400, 300);
+        const auto axes = view->chart()->axes(Qt::Horizontal);
+        QCOMPARE(axes.size(), 1);
+        auto* positions = qobject_cast<QCategoryAxis*>(axes.front());
+        QVERIFY(positions != nullptr);
+        const QStringList labels = positions->categoriesLabels();
+        QVERIFY2(labels.size() >= 5 && labels.size() <= 12, qPrintable(labels.join(QLatin1Char(' '))));
+        QCOMPARE(labels.front(), QStringLiteral("1"));
+        for (const QString& label : labels)
+            QCOMPARE(positions->endValue(label), label.toDouble() - 1.0); // bar i stands at i
+        QCOMPARE(view->chart()->series().front()->attachedAxes().count(), 2);
+        view->resize(3000, 300);
+        const auto wide = view->chart()->axes(Qt::Horizontal);
+        QCOMPARE(wide.size(), 1);
+        const auto* every = qobject_cast<QBarCategoryAxis*>(wide.front());
+        QVERIFY(every != nullptr);
+        QCOMPARE(every->count(), 40);
     }
 
     void initTestCase() {
