@@ -829,10 +829,10 @@ double unevenness(const std::vector<double>& costs, const std::vector<std::vecto
 }
 
 // Regions grown with these growth weights (none: all 1) and evened out with at most `moves` chain moves.
-RegionAllocation grownAndEvenedOut(const CellGraph& graph, const std::vector<CellFigures>& figures,
+RegionAllocation grownAndEvenedOut(const CellGraph& graph, std::vector<CellFigures> figures,
                                    const std::vector<int>& startCells, std::vector<double> weights, int moves,
                                    const ProgressReporter& progress) {
-    Allocation allocation(graph, figures, startCells, progress);
+    Allocation allocation(graph, std::move(figures), startCells, progress);
     allocation.setGrowthWeights(std::move(weights));
     allocation.grow();
     return evenedOut(allocation, graph, moves, progress);
@@ -888,11 +888,8 @@ RegionAllocation grownCellByCell(const CellGraph& graph, const std::vector<int>&
                                  int rebalanceIterations, const ProgressReporter& progress,
                                  std::size_t mostCellsGrownAgain) {
     const int moves = moveCap(rebalanceIterations, graph.size());
-    if (startCells.size() < 2 || graph.size() > mostCellsGrownAgain) { // the figures are not kept for tries
-        Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
-        allocation.grow();
-        return evenedOut(allocation, graph, moves, progress);
-    }
+    if (startCells.size() < 2 || graph.size() > mostCellsGrownAgain) // no copy of the figures kept for tries
+        return grownAndEvenedOut(graph, cellFiguresOf(graph), startCells, {}, moves, progress);
     const std::vector<CellFigures> figures = cellFiguresOf(graph);
     RegionAllocation division = grownAndEvenedOut(graph, figures, startCells, {}, moves, progress);
     return regrownWithWeights(graph, figures, startCells, std::move(division), rebalanceIterations, progress);
