@@ -175,8 +175,8 @@ class TestMainWindow : public QObject {
         QCOMPARE(ui::ResultsPanel::robotLabelStep(5, 0), 5);
     }
 
-    // 40 robots in a narrow chart: every fifth bar numbered (and the first), each number under its own
-    // bar; in a wide one every bar numbered.
+    // 40 robots in a narrow chart: every second, fifth or tenth bar numbered (and the first), each under its
+    // own bar; in a wide one every bar numbered.
     void chartNumbersBarsThatFit() {
         Plan plan;
         plan.planner = "mcpp-mlct";
