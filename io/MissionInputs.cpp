@@ -1,5 +1,6 @@
 #include "io/MissionInputs.hpp"
 
+#include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/StartPointCheck.hpp"
 #include "core/parameters/ParameterResolution.hpp"
@@ -88,6 +89,37 @@ Result<MapPoint> toPlanningFrame(const RobotSpec& spec, MapPoint point, const Lo
     return raster.georeference.fromCrsUnits(point);
 }
 
+// Whether a point of the planning frame lies on the map, inside the task area.
+bool onTheMap(const ClassGrid& grid, MapPoint point) {
+    const auto pixel = grid.pixelAt(point);
+    return pixel && !grid.isOutside(pixel->column, pixel->row);
+}
+
+// What helps with a start the planner cannot use: where it lies in longitude and latitude (what a user of a
+// raster in degrees typed, not the UTM metres it is planned in), a hint when latitude and longitude look
+// swapped, and the option that moves starts off obstacles.
+std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& problem, MapPoint start,
+                        const FieldNamer& names) {
+    using Kind = PlanningError::Kind;
+    std::string advice;
+    if (raster.warpedFromGeographic && std::isfinite(start.x) && std::isfinite(start.y)) {
+        if (const auto lonLat = raster.georeference.toWgs84(start); lonLat) {
+            const LonLat& at = lonLat.value();
+            advice += " (longitude " + formatQuantity(at.longitude, 9) + ", latitude " +
+                      formatQuantity(at.latitude, 9) + ")";
+            const auto swapped = raster.georeference.fromCrs("EPSG:4326", {at.latitude, at.longitude});
+            if (problem.kind == Kind::StartOutsideArea && swapped && onTheMap(raster.grid, swapped.value()))
+                advice += "; longitude and latitude the other way round lie on the map: a start in degrees "
+                          "is longitude first";
+        }
+    }
+    if (problem.kind == Kind::StartOnObstacle)
+        advice += "; move it onto passable land, or let the planner start the robot from the nearest free "
+                  "cell (" +
+                  names(MissionField::parameter("snap_starts_to_free_cells")) + " = true)";
+    return advice;
+}
+
 } // namespace
 
 Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const LoadedRaster& raster,
@@ -162,7 +194,8 @@ Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassT
     for (std::size_t robot = 0; robot < starts.size() && !snap; ++robot)
         if (const auto problem = startPointProblem(reconciled.grid, classes, starts[robot]))
             return Prepared::failure(names(MissionField::start(static_cast<int>(robot))) + ": " +
-                                     problem->detail);
+                                     problem->detail +
+                                     startAdvice(reconciled, *problem, starts[robot], names));
     prepared.problem.grid = std::move(reconciled.grid);
     prepared.problem.classes = classes;
     prepared.problem.starts = std::move(starts);

@@ -169,7 +169,11 @@ QString writeRasters(const QDir& dir) {
     geocentric.epsg = 4978;
     RasterSpec eastToWest;
     eastToWest.transform = {kWest, -kPixel, 0, kNorth, 0, -kPixel};
+    RasterSpec degrees; // 40 x 40 pixels of 0.0001 degrees from 10 E, 45.004 N
+    degrees.epsg = 4326;
+    degrees.transform = {10.0, 0.0001, 0, 45.004, 0, -0.0001};
     const std::vector<std::pair<const char*, RasterSpec>> variants{{"float-fraction.tif", fractional},
+                                                                   {"degrees.tif", degrees},
                                                                    {"float-whole.tif", whole},
                                                                    {"rgb.tif", rgb},
                                                                    {"rotated.tif", rotated},
