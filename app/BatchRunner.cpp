@@ -193,11 +193,7 @@ void BatchRunner::applyOverrides() {
         mission_.exports.densePaths = true;
     if (options_.cellPolygons)
         mission_.exports.cellPolygons = true;
-    if (options_.maxWaypoints) {
-        mission_.exports.vehicle.maxWaypoints = *options_.maxWaypoints;
-        for (io::RobotSpec& robot : mission_.robots)
-            robot.vehicle.maxWaypoints.reset();
-    }
+    applyVehicleFlags();
     addEventFlags();
     const auto planner = findPlannerDescription(mission_.planner.planner);
     if (!planner)
@@ -246,6 +242,9 @@ PlanningProblem BatchRunner::prepareProblem() {
         raster_, classes_, mission_.missingClassesAsObstacles, std::move(starts), mission_.planner, names));
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
     io::applyRobotSettings(mission_, prepared.problem);
+    for (const PlanIssue& issue : prepared.problem.notes) // warnings come with the plan's
+        if (issue.severity == IssueSeverity::Information)
+            note(issue.message);
     prepared.problem.chargers = valueOrBadInput(io::missionChargers(mission_, raster_, units, names));
     return std::move(prepared.problem);
 }
@@ -410,6 +409,23 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
         if (partsWritten.count({robot, "qgc-plan"}) != 0)
             noteMissionFiles(context, robot);
     removeStaleRobotFiles(robots, partsWritten, folder);
+}
+
+// Vehicle flags set every robot's value: the mission's default, and no robot keeps its own.
+void BatchRunner::applyVehicleFlags() {
+    io::VehicleSettings& fleet = mission_.exports.vehicle;
+    const auto apply = [this](const auto& flag, auto& setting, auto member) {
+        if (!flag)
+            return;
+        setting = *flag;
+        for (io::RobotSpec& robot : mission_.robots)
+            (robot.vehicle.*member).reset();
+    };
+    apply(options_.maxWaypoints, fleet.maxWaypoints, &io::VehicleOverrides::maxWaypoints);
+    apply(options_.vehicleType, fleet.type, &io::VehicleOverrides::type);
+    apply(options_.altitudeMetres, fleet.altitudeMetres, &io::VehicleOverrides::altitudeMetres);
+    apply(options_.cruiseSpeedMetresPerSecond, fleet.cruiseSpeedMetresPerSecond,
+          &io::VehicleOverrides::cruiseSpeedMetresPerSecond);
 }
 
 void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) {

@@ -43,7 +43,8 @@ constexpr std::array flagSpecs{
     FlagSpec{"--threads", "N", true, false},        FlagSpec{"--compare", "NAMES", true, false},
     FlagSpec{"--area", "FILE", true, false},        FlagSpec{"--no-go", "FILE", true, false},
     FlagSpec{"--max-waypoints", "N", true, false},  FlagSpec{"--event", "T:ROBOT:FACTOR", true, true},
-    FlagSpec{"--charger", "X,Y", true, true},
+    FlagSpec{"--charger", "X,Y", true, true},       FlagSpec{"--vehicle", "TYPE", true, false},
+    FlagSpec{"--altitude", "M", true, false},       FlagSpec{"--cruise-speed", "M/S", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -362,6 +363,22 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                                " is not an item limit (0 for none, or " +
                                std::to_string(io::minimumMaxWaypoints) + " or more mission items)");
             options.maxWaypoints = *limit;
+        } else if (flag == "--vehicle") {
+            options.vehicleType = io::vehicleTypeFromKey(std::string(trimmedText(value)));
+            if (!options.vehicleType)
+                return failure("--vehicle: " + quoted(value) +
+                               " is not a vehicle (rover, multirotor or fixed-wing)");
+        } else if (flag == "--altitude") {
+            options.altitudeMetres = parseFiniteNumber(value);
+            if (!options.altitudeMetres || *options.altitudeMetres < 0.0 || *options.altitudeMetres > 10000.0)
+                return failure("--altitude: " + quoted(value) +
+                               " is not an altitude above home (0 to 10000 metres)");
+        } else if (flag == "--cruise-speed") {
+            options.cruiseSpeedMetresPerSecond = parseFiniteNumber(value);
+            if (!options.cruiseSpeedMetresPerSecond || *options.cruiseSpeedMetresPerSecond < 0.0 ||
+                *options.cruiseSpeedMetresPerSecond > 1000.0)
+                return failure("--cruise-speed: " + quoted(value) +
+                               " is not a speed (0 for the land-cover speeds, up to 1000 m/s)");
         } else if (flag == "--dense-paths") {
             options.densePaths = true;
         } else if (flag == "--cell-polygons") {
@@ -465,6 +482,14 @@ std::string CommandLine::usage() {
            "                           robot's own. A longer mission is written in consecutive parts,\n"
            "                           robot_<n>_part_<j>.plan and .waypoints, each beginning where the\n"
            "                           one before it ended\n"
+           "  --vehicle TYPE           what every robot is: rover (default), multirotor or fixed-wing;\n"
+           "                           sets the waypoint files' vehicle type, and aircraft missions take\n"
+           "                           off from the start and return to it\n"
+           "  --altitude M             waypoint altitude above home in metres (default 30)\n"
+           "  --cruise-speed M/S       every robot's speed in metres per second: the plan uses it over\n"
+           "                           every passable class instead of the class table's speeds (a\n"
+           "                           drone's speed does not follow the ground under it), and the waypoint\n"
+           "                           files command it (0: the land-cover speeds, the default)\n"
            "  --event T:ROBOT:FACTOR   from T seconds on, robot ROBOT (counted from 0: the first\n"
            "                           start, robot_1 in the outputs) drives at FACTOR times its speeds\n"
            "                           (0.5 half speed, 0 stopped); repeatable, added to the mission's\n"
@@ -476,7 +501,8 @@ std::string CommandLine::usage() {
            "\n"
            "Mission files (format: docs/mission-format.md) may be combined with --band, --area, --no-go,\n"
            "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths,\n"
-           "--cell-polygons and --max-waypoints, which override the mission's values.\n"
+           "--cell-polygons, --max-waypoints, --vehicle, --altitude and --cruise-speed, which override the\n"
+           "mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"

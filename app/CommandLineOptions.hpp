@@ -2,6 +2,7 @@
 
 #include "core/model/MapPoint.hpp"
 #include "core/model/SpeedEvent.hpp"
+#include "io/VehicleSettings.hpp"
 
 #include <optional>
 #include <string>
@@ -45,12 +46,15 @@ struct CommandLineOptions {
     std::vector<ParameterOverride> parameters; // --param, --purity, --open-paths, in the order given
     bool missingAsObstacle = false;
     bool quiet = false;
-    std::vector<std::string> comparePlanners; // --compare, resolved to planner names ("all" expanded)
-    bool densePaths = false;                  // --dense-paths
-    bool cellPolygons = false;                // --cell-polygons
-    int threads = 0;                          // --threads; 0: the machine's cores (mcpp::workerThreads)
-    std::optional<int> maxWaypoints;          // --max-waypoints: every robot's autopilot item limit
-    std::vector<SpeedEvent> events;           // --event, in the order given
+    std::vector<std::string> comparePlanners;   // --compare, resolved to planner names ("all" expanded)
+    bool densePaths = false;                    // --dense-paths
+    bool cellPolygons = false;                  // --cell-polygons
+    int threads = 0;                            // --threads; 0: the machine's cores (mcpp::workerThreads)
+    std::optional<int> maxWaypoints;            // --max-waypoints: every robot's autopilot item limit
+    std::optional<io::VehicleType> vehicleType; // --vehicle: every robot's
+    std::optional<double> altitudeMetres;       // --altitude: every robot's waypoint altitude
+    std::optional<double> cruiseSpeedMetresPerSecond; // --cruise-speed: every robot's
+    std::vector<SpeedEvent> events;                   // --event, in the order given
 
     [[nodiscard]] bool missionFromFlags() const { return missionPath.empty(); }
 };

@@ -12,10 +12,6 @@ namespace {
 
 using internal::collinearAndBetween;
 
-// Mission items every part has besides its waypoints and speed changes: the home position and the speed
-// the vehicle starts with.
-constexpr int itemsBesideWaypoints = 2;
-
 // A commanded speed along a path as steps: each holds from its first waypoint up to the next step's. A step
 // begins only where the land cover's speed changes, at most once a cell (two waypoints): a large map's path
 // holds tens of millions of waypoints, and a speed per waypoint took 8 bytes each (370 MB for one robot on
@@ -141,33 +137,47 @@ double flightSeconds(const AutopilotMission& mission) {
     return seconds;
 }
 
-int itemsOf(const AutopilotMission& mission, std::size_t first, std::size_t last) {
-    int items = itemsBesideWaypoints + 1;
-    for (std::size_t point = first + 1; point <= last; ++point)
-        items += mission.changesSpeedAt(point) ? 2 : 1;
-    return items;
-}
-
-void splitIntoParts(AutopilotMission& mission, int maxWaypoints) {
-    const std::size_t count = mission.points.size();
-    mission.items = count == 0 ? 0 : itemsOf(mission, 0, count - 1);
-    if (count == 0)
-        return;
-    if (maxWaypoints <= 0 || mission.items <= maxWaypoints || count < 2) {
-        mission.parts.push_back({0, count - 1, mission.items});
-        return;
-    }
-    MissionPart part{0, 0, itemsBesideWaypoints + 1};
-    for (std::size_t point = 1; point < count; ++point) {
+// The parts a mission splits into when each holds at most `capacity` items, filled one after the other.
+std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, int capacity, int beside) {
+    std::vector<MissionPart> parts;
+    MissionPart part{0, 0, beside + 1};
+    for (std::size_t point = 1; point < mission.points.size(); ++point) {
         const int added = mission.changesSpeedAt(point) ? 2 : 1;
-        if (part.items + added > maxWaypoints && part.last > part.first) {
-            mission.parts.push_back(part);
-            part = {part.last, part.last, itemsBesideWaypoints + 1};
+        if (part.items + added > capacity && part.last > part.first) {
+            parts.push_back(part);
+            part = {part.last, part.last, beside + 1};
         }
         part.last = point;
         part.items += added;
     }
-    mission.parts.push_back(part);
+    parts.push_back(part);
+    return parts;
+}
+
+// As few parts as the limit allows, as even as they can be: the smallest capacity that needs no more parts
+// than filling each to the limit does. Filled to the limit alone, the last part could hold three items.
+void splitIntoParts(AutopilotMission& mission, int maxWaypoints, int beside) {
+    const std::size_t count = mission.points.size();
+    if (count == 0)
+        return;
+    mission.items = beside + 1;
+    for (std::size_t point = 1; point < count; ++point)
+        mission.items += mission.changesSpeedAt(point) ? 2 : 1;
+    if (maxWaypoints <= 0 || mission.items <= maxWaypoints || count < 2) {
+        mission.parts.push_back({0, count - 1, mission.items});
+        return;
+    }
+    const std::size_t fewest = partsFilledUpTo(mission, maxWaypoints, beside).size();
+    int tooSmall = beside + 2; // two waypoints with a speed change between them do not fit
+    int enough = maxWaypoints; // fits in the fewest parts
+    while (enough - tooSmall > 1) {
+        const int capacity = tooSmall + (enough - tooSmall) / 2;
+        if (partsFilledUpTo(mission, capacity, beside).size() <= fewest)
+            enough = capacity;
+        else
+            tooSmall = capacity;
+    }
+    mission.parts = partsFilledUpTo(mission, enough, beside);
 }
 
 } // namespace
@@ -204,7 +214,7 @@ AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSetting
     const SpeedSteps speeds = byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
                                     : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
     keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
-    splitIntoParts(mission, vehicle.maxWaypoints);
+    splitIntoParts(mission, vehicle.maxWaypoints, itemsBesideWaypoints(vehicle.type));
     const double flight = flightSeconds(mission);
     // Turns are made at the same points, so they cost what the plan priced them at.
     mission.seconds = flight > 0.0 ? flight + path.turnSeconds : 0.0;

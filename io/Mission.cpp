@@ -1,6 +1,7 @@
 #include "io/Mission.hpp"
 
 #include "core/model/BatteryEndurance.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -719,9 +720,59 @@ std::vector<double> robotBatteries(const Mission& mission) {
     return batteries;
 }
 
+double fleetCruiseSpeed(const Mission& mission) {
+    const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
+    if (vehicles.empty())
+        return mission.exports.vehicle.cruiseSpeedMetresPerSecond;
+    const double speed = vehicles.front().cruiseSpeedMetresPerSecond;
+    for (const VehicleSettings& vehicle : vehicles)
+        if (vehicle.cruiseSpeedMetresPerSecond != speed)
+            return 0.0;
+    return speed;
+}
+
+namespace {
+
+// Why planning keeps the land-cover speeds although some robots cruise at their own: one plan balances
+// robots of one speed.
+std::string mixedCruiseSpeedsNote(const Mission& mission) {
+    const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
+    std::string speeds;
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot) {
+        const double speed = vehicles[robot].cruiseSpeedMetresPerSecond;
+        const std::string& name = mission.robots[robot].name;
+        speeds += (speeds.empty() ? "" : ", ") +
+                  (name.empty() ? "Robot " + std::to_string(robot + 1) : name) + " " +
+                  (speed > 0.0 ? formatQuantity(speed, 4) + " m/s" : "the land cover's");
+    }
+    return "the robots' cruise speeds differ (" + speeds +
+           "): the plan uses the class table's speeds, and the waypoint files each robot's cruise "
+           "speed; give every robot the same cruise speed to plan at it";
+}
+
+} // namespace
+
 void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     problem.batterySeconds = robotBatteries(mission);
     problem.events = mission.events;
+    const double cruise = fleetCruiseSpeed(mission);
+    if (cruise > 0.0) {
+        std::vector<LandCoverClass> classes = problem.classes.classes();
+        for (LandCoverClass& landCover : classes)
+            if (landCover.isTraversable())
+                landCover.speedMetresPerSecond = cruise;
+        problem.classes = ClassTable(std::move(classes));
+        problem.notes.push_back(
+            {IssueSeverity::Information, "cruise-speed",
+             "every robot cruises at " + formatQuantity(cruise, 4) +
+                 " m/s: the plan uses that speed over every passable class, not the class table's speeds"});
+        return;
+    }
+    const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
+    if (std::any_of(vehicles.begin(), vehicles.end(),
+                    [](const VehicleSettings& vehicle) { return vehicle.cruiseSpeedMetresPerSecond > 0.0; }))
+        problem.notes.push_back(
+            {IssueSeverity::Warning, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission)});
 }
 
 std::vector<VehicleSettings> robotVehicles(const Mission& mission) {

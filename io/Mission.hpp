@@ -81,8 +81,13 @@ struct Mission {
 [[nodiscard]] std::vector<VehicleSettings> robotVehicles(const Mission& mission);
 // Each robot's own battery in seconds in order, 0 where it has none (the planner's battery_s then).
 [[nodiscard]] std::vector<double> robotBatteries(const Mission& mission);
-// What a planning problem takes from the mission beside the map and the starts: the robots' batteries and
-// the events. The one place batch and window runs fill them.
+// The cruise speed the whole fleet flies at, when every robot's vehicle has the same one; 0 when none has
+// one or when they differ.
+[[nodiscard]] double fleetCruiseSpeed(const Mission& mission);
+// What a planning problem takes from the mission beside the map and the starts: the robots' batteries, the
+// events and, when the whole fleet cruises at one speed, that speed over every passable class in place of
+// the land cover's (a drone's speed does not follow the ground under it), so that plan times are the
+// vehicles' (the problem's notes then say so). The one place batch and window runs fill them.
 void applyRobotSettings(const Mission& mission, PlanningProblem& problem);
 
 // The same from the file's text; path names it in messages and anchors a relative raster path.

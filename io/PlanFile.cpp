@@ -479,7 +479,9 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
         if (!area->empty())
             *area = absoluteNormal(resolveMissionPath(*area, missionPath));
     inputs.exports = {};
-    for (RobotSpec& robot : inputs.robots) { // names and vehicles shape the files, not the plan
+    // Vehicles shape the files, not the plan, except for a cruise speed the whole fleet shares.
+    inputs.exports.vehicle.cruiseSpeedMetresPerSecond = fleetCruiseSpeed(mission);
+    for (RobotSpec& robot : inputs.robots) { // names shape the files, not the plan
         robot.name.clear();
         robot.vehicle = {};
     }

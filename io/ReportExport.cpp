@@ -81,6 +81,25 @@ std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
            internal::formatShortest(robot.outOfRangeAreaSquareMetres);
 }
 
+// Robots whose waypoint files are written in parts or sorties: scripts find it among the issues, beside what
+// the run printed.
+void addMissionFileIssues(JsonValue& issues, const ExportContext& context) {
+    for (const RobotMetrics& robot : context.plan.metrics.robots) {
+        const std::string file = "robot_" + std::to_string(robotNumber(robot.robot)) + ".plan";
+        const std::pair<const char*, std::string> notes[] = {
+            {"mission-split", splitMissionNote(context, robot.robot, file)},
+            {"mission-sorties", sortieFilesNote(context, robot.robot, file)}};
+        for (const auto& [code, message] : notes) {
+            if (message.empty())
+                continue;
+            JsonValue& item = issues.push(JsonValue::object());
+            item.add("severity", "information");
+            item.add("code", code);
+            item.add("message", message + ", and the same for its .waypoints file");
+        }
+    }
+}
+
 } // namespace
 
 Status writeReportJson(const ExportContext& context, const std::string& path) {
@@ -154,6 +173,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("code", issue.code);
         item.add("message", issue.message);
     }
+    addMissionFileIssues(issues, context);
     return internal::writeFileAtomically(path, root.toText(), Sync::BySystem);
 }
 

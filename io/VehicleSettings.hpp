@@ -44,8 +44,19 @@ struct VehicleOverrides {
     friend bool operator==(const VehicleOverrides&, const VehicleOverrides&) = default;
 };
 
-// The smallest item limit that leaves room for a part's home, its first speed and two waypoints with a
-// speed change between them.
-constexpr int minimumMaxWaypoints = 6;
+// Whether the vehicle flies: its missions then take off from home first and return to it at the end.
+[[nodiscard]] constexpr bool isAircraft(VehicleType type) {
+    return type != VehicleType::Rover;
+}
+
+// Mission items every part of a mission holds besides its waypoints and speed changes: the home position
+// and the speed the vehicle starts with, and for an aircraft its takeoff and its return to launch.
+[[nodiscard]] constexpr int itemsBesideWaypoints(VehicleType type) {
+    return isAircraft(type) ? 4 : 2;
+}
+
+// The smallest item limit that leaves room, for any vehicle, for a part's items besides its waypoints and
+// two waypoints with a speed change between them.
+constexpr int minimumMaxWaypoints = 8;
 
 } // namespace mcpp::io

@@ -7,6 +7,7 @@
 #include "io/internal/StraightLine.hpp"
 #include "io/internal/TextFiles.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numeric>
@@ -20,8 +21,13 @@ using internal::appendJsonNumber;
 using internal::collinearAndBetween;
 
 // MAVLink numbers used by QGroundControl plans and QGC WPL files.
-constexpr int commandWaypoint = 16;     // MAV_CMD_NAV_WAYPOINT
-constexpr int commandChangeSpeed = 178; // MAV_CMD_DO_CHANGE_SPEED
+constexpr int commandWaypoint = 16;       // MAV_CMD_NAV_WAYPOINT
+constexpr int commandChangeSpeed = 178;   // MAV_CMD_DO_CHANGE_SPEED
+constexpr int commandTakeoff = 22;        // MAV_CMD_NAV_TAKEOFF
+constexpr int commandReturnToLaunch = 20; // MAV_CMD_NAV_RETURN_TO_LAUNCH
+// A fixed-wing aircraft climbs out at no less than this pitch (NAV_TAKEOFF's first parameter); a multirotor
+// climbs straight up.
+constexpr double fixedWingTakeoffPitchDegrees = 15.0;
 constexpr int frameGlobalRelativeAltitude = 3;
 constexpr int frameGlobal = 0;
 constexpr int frameMission = 2;
@@ -267,7 +273,9 @@ void appendSpeedChange(std::string& out, int& jumpId, double speed) {
            "      }";
 }
 
-void appendWaypoint(std::string& out, int& jumpId, const GeoWaypoint& point, double altitude) {
+// A navigation item at a place: a waypoint, or a takeoff (its first parameter the climb-out pitch).
+void appendPlacedItem(std::string& out, int& jumpId, int command, double firstParameter,
+                      const GeoWaypoint& point, double altitude) {
     out += "      {\n"
            "        \"AMSLAltAboveTerrain\": null,\n"
            "        \"Altitude\": ";
@@ -275,9 +283,11 @@ void appendWaypoint(std::string& out, int& jumpId, const GeoWaypoint& point, dou
     out += ",\n        \"AltitudeMode\": 1,\n"
            "        \"autoContinue\": true,\n"
            "        \"command\": " +
-           std::to_string(commandWaypoint) + ",\n        \"doJumpId\": " + std::to_string(jumpId++) +
+           std::to_string(command) + ",\n        \"doJumpId\": " + std::to_string(jumpId++) +
            ",\n        \"frame\": " + std::to_string(frameGlobalRelativeAltitude) +
-           ",\n        \"params\": [0, 0, 0, null, ";
+           ",\n        \"params\": [";
+    appendJsonNumber(out, firstParameter);
+    out += ", 0, 0, null, ";
     appendJsonNumber(out, point.latitude);
     out += ", ";
     appendJsonNumber(out, point.longitude);
@@ -288,9 +298,26 @@ void appendWaypoint(std::string& out, int& jumpId, const GeoWaypoint& point, dou
            "      }";
 }
 
-// The items array's body: one item an element, separated as JsonValue separates them.
+void appendReturnToLaunch(std::string& out, int& jumpId) {
+    out += "      {\n"
+           "        \"autoContinue\": true,\n"
+           "        \"command\": " +
+           std::to_string(commandReturnToLaunch) + ",\n        \"doJumpId\": " + std::to_string(jumpId++) +
+           ",\n        \"frame\": " + std::to_string(frameMission) +
+           ",\n        \"params\": [0, 0, 0, 0, 0, 0, 0],\n"
+           "        \"type\": \"SimpleItem\"\n"
+           "      }";
+}
+
+double takeoffPitch(VehicleType type) {
+    return type == VehicleType::FixedWing ? fixedWingTakeoffPitchDegrees : 0.0;
+}
+
+// The items array's body: one item an element, separated as JsonValue separates them. An aircraft takes off
+// at home first and returns to it at the end of every part.
 std::string qGroundControlItems(const AutopilotMission& mission, const MissionPart& part,
-                                const std::vector<GeoWaypoint>& points, double altitude) {
+                                const std::vector<GeoWaypoint>& points, const GeoWaypoint& home,
+                                const VehicleSettings& vehicle) {
     std::string out;
     out.reserve(points.size() * 300);
     int jumpId = 1;
@@ -298,10 +325,15 @@ std::string qGroundControlItems(const AutopilotMission& mission, const MissionPa
         if (!out.empty())
             out += ",\n";
     };
+    const double altitude = vehicle.altitudeMetres;
+    if (isAircraft(vehicle.type))
+        appendPlacedItem(out, jumpId, commandTakeoff, takeoffPitch(vehicle.type), home, altitude);
     // cruiseSpeed is only QGroundControl's planning default: the vehicle is told its speed by an item, which
     // matters most for a part that begins mid-field.
-    if (mission.commandedSpeeds[part.first] > 0.0)
+    if (mission.commandedSpeeds[part.first] > 0.0) {
+        separate();
         appendSpeedChange(out, jumpId, mission.commandedSpeeds[part.first]);
+    }
     for (std::size_t i = 0; i < points.size(); ++i) {
         const std::size_t point = part.first + i;
         if (i > 0 && mission.changesSpeedAt(point)) {
@@ -309,18 +341,23 @@ std::string qGroundControlItems(const AutopilotMission& mission, const MissionPa
             appendSpeedChange(out, jumpId, mission.commandedSpeeds[point]);
         }
         separate();
-        appendWaypoint(out, jumpId, points[i], altitude);
+        appendPlacedItem(out, jumpId, commandWaypoint, 0.0, points[i], altitude);
+    }
+    if (isAircraft(vehicle.type)) {
+        separate();
+        appendReturnToLaunch(out, jumpId);
     }
     return out;
 }
 
-// One QGroundControl plan: the part's first speed as its first item and its cruise speed, then waypoints and
-// speed changes.
+// One QGroundControl plan: for an aircraft a takeoff, the part's first speed as an item and as its cruise
+// speed, waypoints and speed changes, and for an aircraft a return to launch. Home is the robot's start for
+// every part: that is where it takes off and comes back to.
 std::string qGroundControlPlanText(const AutopilotMission& mission, const MissionPart& part,
-                                   const std::vector<GeoWaypoint>& points, const VehicleSettings& vehicle) {
+                                   const std::vector<GeoWaypoint>& points, const GeoWaypoint& home,
+                                   const VehicleSettings& vehicle) {
     const double cruise = mission.commandedSpeeds[part.first];
-    const GeoWaypoint& home = points.front();
-    const std::string items = qGroundControlItems(mission, part, points, vehicle.altitudeMetres);
+    const std::string items = qGroundControlItems(mission, part, points, home, vehicle);
     std::string out;
     out.reserve(items.size() + 1024);
     out += "{\n"
@@ -362,9 +399,11 @@ std::string qGroundControlPlanText(const AutopilotMission& mission, const Missio
     return out;
 }
 
-// One QGC WPL 110 file: home, the speed the part starts with, then waypoints and speed changes.
+// One QGC WPL 110 file: home (the robot's start), for an aircraft a takeoff, the speed the part starts
+// with, then waypoints and speed changes, and for an aircraft a return to launch.
 std::string waypointListText(const AutopilotMission& mission, const MissionPart& part,
-                             const std::vector<GeoWaypoint>& points, const VehicleSettings& vehicle) {
+                             const std::vector<GeoWaypoint>& points, const GeoWaypoint& home,
+                             const VehicleSettings& vehicle) {
     std::string text = "QGC WPL 110\n";
     text.reserve(points.size() * 120);
     const auto row = [&text](int index, int current, int frame, int command,
@@ -388,11 +427,14 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
         text += "\t1\n";
     };
     const auto speedRow = [&](int index, double speed) {
-        row(index, 0, frameGlobalRelativeAltitude, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
+        row(index, 0, frameMission, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
     };
-    const GeoWaypoint& home = points.front();
     row(0, 1, frameGlobal, commandWaypoint, {0, 0, 0, 0}, home.latitude, home.longitude, 0.0);
     int index = 1;
+    if (isAircraft(vehicle.type)) {
+        row(index++, 0, frameGlobalRelativeAltitude, commandTakeoff, {takeoffPitch(vehicle.type), 0, 0, 0},
+            home.latitude, home.longitude, vehicle.altitudeMetres);
+    }
     if (mission.commandedSpeeds[part.first] > 0.0)
         speedRow(index++, mission.commandedSpeeds[part.first]);
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -402,21 +444,25 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
         row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0}, points[i].latitude,
             points[i].longitude, vehicle.altitudeMetres);
     }
+    if (isAircraft(vehicle.type))
+        row(index, 0, frameMission, commandReturnToLaunch, {0, 0, 0, 0}, 0, 0, 0);
     return text;
 }
 
 using MissionText = std::string (*)(const AutopilotMission&, const MissionPart&,
-                                    const std::vector<GeoWaypoint>&, const VehicleSettings&);
+                                    const std::vector<GeoWaypoint>&, const GeoWaypoint&,
+                                    const VehicleSettings&);
 
 // One mission in one file at `path`, or, above the vehicle's item limit, in parts beside it.
 Status writeMission(const AutopilotMission& mission, const std::vector<LonLat>& lonLats,
                     const std::string& path, MissionText text, const VehicleSettings& vehicle) {
     const bool split = mission.parts.size() > 1;
+    const GeoWaypoint home = geoPoints(mission, {0, 0, 0}, lonLats).front();
     for (std::size_t part = 0; part < mission.parts.size(); ++part) {
         const std::string file = split ? missionPartPath(path, part) : path;
         const std::vector<GeoWaypoint> points = geoPoints(mission, mission.parts[part], lonLats);
         if (auto written = internal::writeFileAtomically(
-                file, text(mission, mission.parts[part], points, vehicle), Sync::BySystem);
+                file, text(mission, mission.parts[part], points, home, vehicle), Sync::BySystem);
             !written) {
             return written;
         }
@@ -485,6 +531,22 @@ std::string sortieFilesNote(const ExportContext& context, int robot, const std::
            name(sorties->sorties.size() - 1) + ")";
 }
 
+namespace {
+
+int fewestItems(const AutopilotMission& mission) {
+    return std::min_element(mission.parts.begin(), mission.parts.end(),
+                            [](const MissionPart& a, const MissionPart& b) { return a.items < b.items; })
+        ->items;
+}
+
+int mostItems(const AutopilotMission& mission) {
+    return std::max_element(mission.parts.begin(), mission.parts.end(),
+                            [](const MissionPart& a, const MissionPart& b) { return a.items < b.items; })
+        ->items;
+}
+
+} // namespace
+
 std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path) {
     const AutopilotMission& mission = autopilotMissionOf(context, robot);
     if (mission.parts.size() <= 1)
@@ -494,9 +556,13 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
     };
     return context.robotName(robot) + "'s mission has " + std::to_string(mission.items) +
            " items, more than its autopilot's " + std::to_string(context.vehicle(robot).maxWaypoints) +
-           ": written in " + std::to_string(mission.parts.size()) +
-           " parts, each beginning where the one before it ended (" + partName(0) + " to " +
-           partName(mission.parts.size() - 1) + ")";
+           ": written in " + std::to_string(mission.parts.size()) + " parts of " +
+           std::to_string(fewestItems(mission)) + " to " + std::to_string(mostItems(mission)) +
+           " items, each beginning where the one before it ended (" + partName(0) + " to " +
+           partName(mission.parts.size() - 1) + ")" +
+           (isAircraft(context.vehicle(robot).type)
+                ? "; each takes off from the robot's start and returns to it"
+                : "");
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

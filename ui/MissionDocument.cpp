@@ -51,8 +51,13 @@ bool MissionDocument::planStale() const {
 }
 
 PlanInputs MissionDocument::currentInputs() const {
-    return {mission_.classes, starts(), mission_.planner, mission_.events, io::robotBatteries(mission_),
-            chargers()};
+    return {mission_.classes,
+            starts(),
+            mission_.planner,
+            mission_.events,
+            io::robotBatteries(mission_),
+            chargers(),
+            io::fleetCruiseSpeed(mission_)};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {
@@ -86,6 +91,7 @@ void MissionDocument::setVehicles(const io::ExportSettings& exports,
     for (std::size_t robot = 0; robot < mission_.robots.size() && robot < vehicles.size(); ++robot)
         mission_.robots[robot].vehicle = vehicles[robot];
     emit robotsChanged();
+    emitStaleIfChanged(); // a cruise speed the whole fleet shares is planned with
 }
 
 void MissionDocument::setMissionPath(const QString& path) {

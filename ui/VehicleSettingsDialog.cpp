@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -19,17 +20,21 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     auto* layout = new QVBoxLayout(this);
     auto* intro = new QLabel(tr("What each robot's waypoint files (.plan, .waypoints) tell its autopilot. A "
                                 "mission with more items than the limit is written in parts, each beginning "
-                                "where the one before it ended."),
+                                "where the one before it ended; aircraft take off from their start and "
+                                "return to it in every part. A cruise speed all robots share is also the "
+                                "speed the plan uses over every passable class."),
                              this);
     intro->setWordWrap(true);
     layout->addWidget(intro);
 
     table_ = new QTableWidget(static_cast<int>(mission.robots.size()) + 1, 4, this);
     table_->setHorizontalHeaderLabels(
-        {tr("Vehicle"), tr("Altitude (m)"), tr("Cruise speed (m/s)"), tr("Item limit")});
-    table_->horizontalHeaderItem(2)->setToolTip(tr("0: each land-cover class's speed"));
+        {tr("Vehicle"), tr("Altitude above home (m)"), tr("Cruise speed (m/s)"), tr("Item limit")});
+    table_->horizontalHeaderItem(2)->setToolTip(
+        tr("0: each land-cover class's speed. When every robot has the same cruise speed, the plan uses it "
+           "over every passable class."));
     table_->horizontalHeaderItem(3)->setToolTip(
-        tr("Mission items the autopilot holds, home included; step below %1 for no limit")
+        tr("Mission items the autopilot holds, home included: %1 or more, or 0 for no limit")
             .arg(io::minimumMaxWaypoints));
     QStringList names{tr("All robots")};
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
@@ -67,7 +72,16 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     form->addRow(QString(), atTurnsOnly_);
     layout->addLayout(form);
 
+    problem_ = new QLabel(this);
+    problem_->setWordWrap(true);
+    problem_->setStyleSheet(QStringLiteral("color: #b00020;"));
+    problem_->hide();
+    layout->addWidget(problem_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    okButton_ = buttons->button(QDialogButtonBox::Ok);
+    for (const Row& row : rows_)
+        connect(row.maxWaypoints, &QSpinBox::valueChanged, this, &VehicleSettingsDialog::checkItemLimits);
+    checkItemLimits();
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
@@ -91,8 +105,9 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     widgets.cruiseSpeed->setDecimals(3);
     widgets.cruiseSpeed->setSpecialValueText(tr("land cover"));
     widgets.maxWaypoints = new QSpinBox(table_);
-    // Below the smallest limit a mission can be split by, the box says "no limit" (0 in the mission).
-    widgets.maxWaypoints->setRange(io::minimumMaxWaypoints - 1, 1000000);
+    // A limit typed below the smallest that works stays as typed, and checkItemLimits says so: clamped, it
+    // would have read "no limit" without a word.
+    widgets.maxWaypoints->setRange(0, 1000000);
     widgets.maxWaypoints->setSpecialValueText(tr("no limit"));
     show(widgets, settings);
     table_->setCellWidget(row, 0, widgets.type);
@@ -118,8 +133,7 @@ io::VehicleSettings VehicleSettingsDialog::settingsOf(const Row& row) {
     settings.type = static_cast<io::VehicleType>(row.type->currentData().toInt());
     settings.altitudeMetres = row.altitude->value();
     settings.cruiseSpeedMetresPerSecond = row.cruiseSpeed->value();
-    settings.maxWaypoints =
-        row.maxWaypoints->value() < io::minimumMaxWaypoints ? 0 : row.maxWaypoints->value();
+    settings.maxWaypoints = row.maxWaypoints->value();
     return settings;
 }
 
@@ -127,8 +141,7 @@ void VehicleSettingsDialog::show(const Row& row, const io::VehicleSettings& sett
     row.type->setCurrentIndex(row.type->findData(static_cast<int>(settings.type)));
     row.altitude->setValue(settings.altitudeMetres);
     row.cruiseSpeed->setValue(settings.cruiseSpeedMetresPerSecond);
-    row.maxWaypoints->setValue(settings.maxWaypoints == 0 ? io::minimumMaxWaypoints - 1
-                                                          : settings.maxWaypoints);
+    row.maxWaypoints->setValue(settings.maxWaypoints);
 }
 
 void VehicleSettingsDialog::followDefaults() {
@@ -147,6 +160,21 @@ void VehicleSettingsDialog::followDefaults() {
         show(rows_[i], robot);
     }
     shownDefaults_ = defaults;
+}
+
+void VehicleSettingsDialog::checkItemLimits() {
+    QStringList wrong;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const int limit = rows_[i].maxWaypoints->value();
+        if (limit > 0 && limit < io::minimumMaxWaypoints)
+            wrong << tr("%1: %2").arg(table_->verticalHeaderItem(static_cast<int>(i))->text()).arg(limit);
+    }
+    problem_->setText(tr("An item limit must be %1 or more mission items, or 0 for no limit. Too small: %2.")
+                          .arg(io::minimumMaxWaypoints)
+                          .arg(wrong.join(QStringLiteral(", "))));
+    problem_->setVisible(!wrong.isEmpty());
+    if (okButton_ != nullptr)
+        okButton_->setEnabled(wrong.isEmpty());
 }
 
 io::ExportSettings VehicleSettingsDialog::exports() const {

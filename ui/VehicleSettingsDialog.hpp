@@ -8,6 +8,8 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
 class QSpinBox;
 class QTableWidget;
 
@@ -38,11 +40,15 @@ class VehicleSettingsDialog : public QDialog {
     [[nodiscard]] static io::VehicleSettings settingsOf(const Row& row);
     static void show(const Row& row, const io::VehicleSettings& settings);
     void followDefaults();
+    // An item limit between 0 (none) and the smallest that works holds OK back and says why.
+    void checkItemLimits();
 
     io::ExportSettings exports_;
     QTableWidget* table_ = nullptr;
     QDoubleSpinBox* speedTolerance_ = nullptr;
     QCheckBox* atTurnsOnly_ = nullptr;
+    QLabel* problem_ = nullptr;
+    QPushButton* okButton_ = nullptr;
     double shownTolerance_ = 0.0;
     std::vector<Row> rows_; // the "all robots" row first
     io::VehicleSettings shownDefaults_;

@@ -3,6 +3,7 @@
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
+#include "core/model/PlanIssue.hpp"
 #include "core/model/SpeedEvent.hpp"
 #include "core/parameters/PlannerChoice.hpp"
 
@@ -27,6 +28,9 @@ struct PlanningProblem {
     // What happens to the robots during the mission (slowing down, stopping), for planners that simulate it.
     std::vector<SpeedEvent> events;
     PlannerChoice planner;
+    // What the caller found while making the problem that the plan should tell its readers (planning at the
+    // fleet's cruise speed, say): the plan's issues begin with these.
+    std::vector<PlanIssue> notes;
 };
 
 } // namespace mcpp

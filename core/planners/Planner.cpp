@@ -159,6 +159,7 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
     Plan plan;
     plan.planner = planner.name;
     plan.parameters = parameters;
+    plan.issues = problem.notes;
     PlanningRun planningRun(problem, std::move(parameters), progress, plan, planner.bytesPerBottomCell);
     if (!problem.events.empty() && !planner.simulatesEvents)
         planningRun.addIssue(IssueSeverity::Warning, "events-ignored", eventsIgnoredMessage(planner));

@@ -134,7 +134,8 @@ void TestCommandLine::batchWithEveryFlag() {
     const auto result = CommandLine::parse(split(
         "--batch --raster map.tif --classes table.csv --start 318000.5,4130000 --start 319000,4131000.25 "
         "--start -113.1,37.2 --start-crs EPSG:4326 --charger 318100,4130200.5 --planner mcpp-mlct --band 2 "
-        "--purity 0.25 --missing-as-obstacle --open-paths --quiet --out results"));
+        "--purity 0.25 --missing-as-obstacle --open-paths --quiet --out results --vehicle multirotor "
+        "--altitude 60 --cruise-speed 8.5"));
     QVERIFY2(result.ok(), result.error.c_str());
     const auto& options = result.options;
     QCOMPARE(static_cast<int>(options.mode), static_cast<int>(RunMode::Batch));
@@ -164,6 +165,9 @@ void TestCommandLine::batchWithEveryFlag() {
     QCOMPARE(options.parameters[1].flag, std::string("--open-paths"));
     QVERIFY(options.quiet);
     QCOMPARE(options.outputDirectory, std::string("results"));
+    QVERIFY(options.vehicleType == mcpp::io::VehicleType::Multirotor);
+    QCOMPARE(options.altitudeMetres.value_or(-1.0), 60.0);
+    QCOMPARE(options.cruiseSpeedMetresPerSecond.value_or(-1.0), 8.5);
 }
 
 void TestCommandLine::batchWithPresetAndShortForms() {
@@ -258,10 +262,19 @@ void TestCommandLine::errors_data() {
         << "--purity: expected a number from 0 up to (not including) 1, got -0.1";
     QTest::newRow("--max-waypoints too small")
         << words("--batch m.json --out o --max-waypoints 3")
-        << "--max-waypoints: \"3\" is not an item limit (0 for none, or 6 or more mission items)";
+        << "--max-waypoints: \"3\" is not an item limit (0 for none, or 8 or more mission items)";
+    QTest::newRow("--vehicle unknown")
+        << words("--batch m.json --out o --vehicle quadcopter")
+        << "--vehicle: \"quadcopter\" is not a vehicle (rover, multirotor or fixed-wing)";
+    QTest::newRow("--altitude negative")
+        << words("--batch m.json --out o --altitude -5")
+        << "--altitude: \"-5\" is not an altitude above home (0 to 10000 metres)";
+    QTest::newRow("--cruise-speed in km/h")
+        << words("--batch m.json --out o --cruise-speed 1200")
+        << "--cruise-speed: \"1200\" is not a speed (0 for the land-cover speeds, up to 1000 m/s)";
     QTest::newRow("--max-waypoints negative")
         << words("--batch m.json --out o --max-waypoints -700")
-        << "--max-waypoints: \"-700\" is not an item limit (0 for none, or 6 or more mission items)";
+        << "--max-waypoints: \"-700\" is not an item limit (0 for none, or 8 or more mission items)";
     QTest::newRow("--param without value")
         << words("--batch m.json --out o --param closed_tour") << "--param: \"closed_tour\" is not KEY=VALUE";
     QTest::newRow("--param without key")

@@ -56,6 +56,21 @@ ExportSettings shaping(double speedTolerance, bool mergeCollinear, bool atTurnsO
     return settings;
 }
 
+// How many parts a mission takes when each is filled to the vehicle's limit before the next begins.
+std::size_t partsFilledToTheLimit(const AutopilotMission& mission, const VehicleSettings& vehicle) {
+    std::size_t parts = 1;
+    int items = itemsBesideWaypoints(vehicle.type) + 1;
+    for (std::size_t point = 1; point < mission.points.size(); ++point) {
+        const int added = mission.changesSpeedAt(point) ? 2 : 1;
+        if (items + added > vehicle.maxWaypoints) {
+            ++parts;
+            items = itemsBesideWaypoints(vehicle.type) + 1;
+        }
+        items += added;
+    }
+    return parts;
+}
+
 QJsonObject readJson(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
@@ -197,13 +212,15 @@ class AutopilotMissionTest : public QObject {
 
     void partsJoinUpAndHoldAtMostTheLimit() {
         std::mt19937 random(11);
-        for (int trial = 0; trial < 40; ++trial) {
+        for (int trial = 0; trial < 60; ++trial) {
             const int rows = 3 + static_cast<int>(random() % 30);
             const int columns = 2 + static_cast<int>(random() % 12);
             const CoveragePath path = lawnmower(rows, columns, 1.0 + random() % 5, 7.0);
             VehicleSettings vehicle;
+            vehicle.type = trial % 3 == 0 ? VehicleType::Multirotor : VehicleType::Rover;
             vehicle.maxWaypoints = minimumMaxWaypoints + static_cast<int>(random() % 40);
-            const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, random() % 2 == 0));
+            const ExportSettings settings = shaping(0.1, random() % 2 == 0);
+            const AutopilotMission mission = autopilotMission(path, vehicle, settings);
             QVERIFY(!mission.parts.empty());
             QCOMPARE(mission.parts.front().first, std::size_t{0});
             QCOMPARE(mission.parts.back().last, mission.points.size() - 1);
@@ -216,15 +233,40 @@ class AutopilotMissionTest : public QObject {
                         QStringLiteral("%1 items, limit %2").arg(piece.items).arg(vehicle.maxWaypoints)));
                 if (part > 0)
                     QCOMPARE(piece.first, mission.parts[part - 1].last); // begins where the last one ended
-                // Parts are as full as they can be: the next point would not have fitted.
-                if (part + 1 < mission.parts.size()) {
-                    const int next = mission.changesSpeedAt(piece.last + 1) ? 2 : 1;
-                    QVERIFY(piece.items + next > vehicle.maxWaypoints);
-                }
+                // Items: what every part holds besides its waypoints, its first point, and each later point
+                // with its speed change.
+                int items = itemsBesideWaypoints(vehicle.type) + 1;
+                for (std::size_t point = piece.first + 1; point <= piece.last; ++point)
+                    items += mission.changesSpeedAt(point) ? 2 : 1;
+                QCOMPARE(piece.items, items);
+            }
+            // As few parts as filling each to the limit gives.
+            QCOMPARE(mission.parts.size(), partsFilledToTheLimit(mission, vehicle));
+            // As even as they can be: a limit one item below the fullest part needs more parts.
+            int fullest = 0;
+            for (const MissionPart& piece : mission.parts)
+                fullest = std::max(fullest, piece.items);
+            if (mission.parts.size() > 1 && fullest - 1 >= minimumMaxWaypoints) {
+                VehicleSettings tighter = vehicle;
+                tighter.maxWaypoints = fullest - 1;
+                QVERIFY(autopilotMission(path, tighter, settings).parts.size() > mission.parts.size());
             }
             if (mission.items <= vehicle.maxWaypoints)
                 QCOMPARE(mission.parts.size(), std::size_t{1});
         }
+    }
+
+    void partsAreEvenNotFilledOneAfterTheOther() {
+        // 800 waypoints, no speed change: 2 + 800 items at a 700 limit fill one part of 700 and leave one
+        // of about 100; even parts hold about 400 each.
+        CoveragePath path = lawnmower(40, 20, 1.0, 1.0);
+        VehicleSettings vehicle;
+        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, false));
+        QCOMPARE(mission.parts.size(), std::size_t{2});
+        QVERIFY2(
+            std::abs(mission.parts[0].items - mission.parts[1].items) <= 1,
+            qPrintable(
+                QStringLiteral("%1 and %2 items").arg(mission.parts[0].items).arg(mission.parts[1].items)));
     }
 
     void noLimitKeepsOnePart() {
@@ -301,6 +343,71 @@ class AutopilotMissionTest : public QObject {
             QVERIFY(file.open(QIODevice::ReadOnly));
             const int rows = static_cast<int>(file.readAll().count('\n')) - 1; // less the header
             QCOMPARE(rows, mission.parts[part].items);
+        }
+
+        // The report says so among its issues, for scripts that read it rather than what the run printed.
+        const QString report = folder.filePath(QStringLiteral("report.json"));
+        QVERIFY(writeReportJson(context, report.toStdString()).ok());
+        QStringList splitMessages;
+        for (const QJsonValue& issue : readJson(report)["issues"].toArray())
+            if (issue.toObject()["code"].toString() == QStringLiteral("mission-split"))
+                splitMessages << issue.toObject()["message"].toString();
+        QCOMPARE(splitMessages.size(), 1);
+        QVERIFY2(splitMessages[0].contains(
+                     QStringLiteral("robot_1_part_1.plan to robot_1_part_%1.plan").arg(mission.parts.size())),
+                 qPrintable(splitMessages[0]));
+        QVERIFY(splitMessages[0].contains(QStringLiteral(".waypoints")));
+    }
+
+    void aircraftTakeOffAtTheStartAndReturnToItInEveryPart() {
+        Plan plan = test::makeFixturePlan();
+        plan.paths[0] = lawnmower(30, 6, 1.0, 2.0);
+        const GeoReference reference = GeoReference::fromDefinition("EPSG:26912").value();
+        const ClassTable classes;
+        ExportSettings settings;
+        settings.vehicle.type = VehicleType::Multirotor;
+        settings.vehicle.altitudeMetres = 45.0;
+        settings.vehicle.maxWaypoints = 40;
+        const ExportContext context{plan, reference, classes, settings};
+        QTemporaryDir folder;
+        const QString whole = folder.filePath(QStringLiteral("robot_1.plan"));
+        QVERIFY(writeQGroundControlPlan(context, 0, whole.toStdString()).ok());
+        const AutopilotMission mission = autopilotMissionOf(context, 0);
+        QVERIFY(mission.parts.size() > 2);
+        const LonLat start = reference.toWgs84({{mission.points[0].x, mission.points[0].y}}).value().front();
+        for (std::size_t part = 0; part < mission.parts.size(); ++part) {
+            const QString path = QString::fromStdString(missionPartPath(whole.toStdString(), part));
+            const QJsonObject plannedMission = readJson(path)["mission"].toObject();
+            QCOMPARE(plannedMission["vehicleType"].toInt(), 2); // a quadrotor
+            const QJsonArray home = plannedMission["plannedHomePosition"].toArray();
+            QCOMPARE(home[0].toDouble(), start.latitude); // every part's home is the robot's start
+            QCOMPARE(home[1].toDouble(), start.longitude);
+            const QJsonArray items = plannedMission["items"].toArray();
+            QCOMPARE(static_cast<int>(items.size()) + 1, mission.parts[part].items);
+            const QJsonObject takeoff = items.first().toObject();
+            QCOMPARE(takeoff["command"].toInt(), 22);
+            QCOMPARE(takeoff["params"].toArray()[4].toDouble(), start.latitude);
+            QCOMPARE(takeoff["params"].toArray()[6].toDouble(), 45.0);
+            QCOMPARE(items[1].toObject()["command"].toInt(), 178);    // then the speed the part starts at
+            QCOMPARE(items.last().toObject()["command"].toInt(), 20); // and back to launch at the end
+            QCOMPARE(items.last().toObject()["frame"].toInt(), 2);
+        }
+        const QString list = folder.filePath(QStringLiteral("robot_1.waypoints"));
+        QVERIFY(writeWaypointList(context, 0, list.toStdString()).ok());
+        for (std::size_t part = 0; part < mission.parts.size(); ++part) {
+            QFile file(QString::fromStdString(missionPartPath(list.toStdString(), part)));
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            QList<QByteArrayList> rows;
+            for (const QByteArray& line : file.readAll().split('\n').mid(1))
+                if (!line.isEmpty())
+                    rows.push_back(line.split('\t'));
+            QCOMPARE(static_cast<int>(rows.size()), mission.parts[part].items);
+            QVERIFY(std::abs(rows[0][8].toDouble() - start.latitude) < 1e-8); // home, to 8 decimals
+            QCOMPARE(rows[1][3], QByteArray("22"));
+            QCOMPARE(rows.last()[3], QByteArray("20"));
+            for (const QByteArrayList& row : rows)
+                if (row[3] == "178")
+                    QCOMPARE(row[2], QByteArray("2")); // a command, not a place: the mission frame
         }
     }
 };

@@ -158,6 +158,48 @@ class MissionFilesTest : public QObject {
         QCOMPARE(events[1].toObject()["speed_factor"].toDouble(), 0.0);
     }
 
+    // A cruise speed the whole fleet shares is what the plan uses over every passable class; speeds that
+    // differ leave the class table's and say why.
+    void fleetCruiseSpeedIsPlannedWith() {
+        Mission mission = sampleMission();
+        for (RobotSpec& robot : mission.robots)
+            robot.vehicle.cruiseSpeedMetresPerSecond.reset();
+        mission.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
+        PlanningProblem problem;
+        problem.classes = ClassTable({{1, "grass", 0x00ff00, 1.5, 10.0, true},
+                                      {2, "forest", 0x008000, 0.5, 5.0, true},
+                                      {3, "water", 0x0000ff, 0.0, 10.0, false}});
+        const ClassTable landCover = problem.classes;
+        PlanningProblem unchanged = problem;
+        applyRobotSettings(mission, unchanged);
+        QVERIFY(unchanged.classes == landCover);
+        QVERIFY(unchanged.notes.empty());
+        QCOMPARE(fleetCruiseSpeed(mission), 0.0);
+
+        mission.exports.vehicle.cruiseSpeedMetresPerSecond = 8.5;
+        QCOMPARE(fleetCruiseSpeed(mission), 8.5);
+        PlanningProblem flown = problem;
+        applyRobotSettings(mission, flown);
+        QCOMPARE(flown.classes.find(1)->speedMetresPerSecond, 8.5);
+        QCOMPARE(flown.classes.find(2)->speedMetresPerSecond, 8.5);
+        QCOMPARE(flown.classes.find(2)->fieldOfViewMetres, 5.0); // what it sees still follows the land cover
+        QVERIFY(!flown.classes.find(3)->isTraversable());
+        QCOMPARE(flown.notes.size(), std::size_t{1});
+        QCOMPARE(flown.notes[0].code, std::string("cruise-speed"));
+        QVERIFY(flown.notes[0].message.find("8.5 m/s") != std::string::npos);
+
+        mission.robots[1].vehicle.cruiseSpeedMetresPerSecond = 6.0;
+        QCOMPARE(fleetCruiseSpeed(mission), 0.0);
+        PlanningProblem mixed = problem;
+        applyRobotSettings(mission, mixed);
+        QVERIFY(mixed.classes == landCover);
+        QCOMPARE(mixed.notes.size(), std::size_t{1});
+        QCOMPARE(mixed.notes[0].code, std::string("cruise-speeds-differ"));
+        QVERIFY(mixed.notes[0].severity == IssueSeverity::Warning);
+        QVERIFY2(mixed.notes[0].message.find("beta 6 m/s") != std::string::npos,
+                 mixed.notes[0].message.c_str());
+    }
+
     void minimalMissionGetsDefaults() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("minimal.json").toStdString();

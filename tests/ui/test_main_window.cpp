@@ -377,6 +377,14 @@ class TestMainWindow : public QObject {
         qInfo("planned in %lld ms", static_cast<long long>(planningTime.elapsed()));
         QVERIFY(document->plan() != nullptr);
         QVERIFY(!document->planStale());
+        // A cruise speed the whole fleet shares is planned with: setting one makes the plan out of date.
+        const io::ExportSettings asPlanned = document->mission().exports;
+        io::ExportSettings flown = asPlanned;
+        flown.vehicle.cruiseSpeedMetresPerSecond = 9.0;
+        document->setVehicles(flown, {});
+        QVERIFY(document->planStale());
+        document->setVehicles(asPlanned, {});
+        QVERIFY(!document->planStale());
 
         // The legend follows: classes, then each robot by name with its time.
         const auto& legend = window.legendPanel()->sections();

@@ -4,7 +4,10 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTest>
@@ -63,11 +66,27 @@ class VehicleSettingsDialogTest : public QObject {
         QCOMPARE(cell<QDoubleSpinBox>(table, 1, 1)->value(), 40.0);
         QCOMPARE(cell<QDoubleSpinBox>(table, 2, 1)->value(), 60.0); // its own
         QCOMPARE(cell<QSpinBox>(table, 2, 3)->value(), 250);
-        // Robot 3 gets its own item limit: none. The box cannot go below the smallest limit that works.
+        // A limit below the smallest that works stays as typed, holds OK back and is named; it is not
+        // turned into "no limit" without a word.
         QSpinBox* limit = cell<QSpinBox>(table, 3, 3);
-        limit->setValue(3);
-        QCOMPARE(limit->value(), minimumMaxWaypoints - 1);
+        auto* buttons = dialog.findChild<QDialogButtonBox*>();
+        QVERIFY(buttons->button(QDialogButtonBox::Ok)->isEnabled());
+        limit->setValue(5);
+        QCOMPARE(limit->value(), 5);
+        QVERIFY(!buttons->button(QDialogButtonBox::Ok)->isEnabled());
+        QLabel* problem = nullptr;
+        for (QLabel* label : dialog.findChildren<QLabel*>())
+            if (label->text().contains(QStringLiteral("Too small")))
+                problem = label;
+        QVERIFY(problem != nullptr);
+        QVERIFY(!problem->isHidden());
+        QVERIFY2(problem->text().contains(QStringLiteral("Robot 3: 5")), qPrintable(problem->text()));
+        QVERIFY(problem->text().contains(QString::number(minimumMaxWaypoints)));
+        // Robot 3 gets its own item limit: none.
+        limit->setValue(0);
         QCOMPARE(limit->text(), QStringLiteral("no limit"));
+        QVERIFY(buttons->button(QDialogButtonBox::Ok)->isEnabled());
+        QVERIFY(problem->isHidden());
         const ExportSettings exports = dialog.exports();
         QCOMPARE(exports.vehicle.altitudeMetres, 40.0);
         QCOMPARE(exports.vehicle.maxWaypoints, 250);
