@@ -159,6 +159,8 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
                              "same events without re-allocation"));
     warnings_ = valueLabel(QStringLiteral("warningsLabel"), this);
     warnings_->setWordWrap(true);
+    notes_ = valueLabel(QStringLiteral("notesLabel"), this);
+    notes_->setWordWrap(true);
     summary->addRow(tr("Makespan"), makespan_);
     summary->addRow(tr("Lower bound"), lowerBound_);
     summary->addRow(tr("Makespan / bound"), ratio_);
@@ -168,9 +170,11 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     summary->addRow(tr("Detection"), detection_);
     summary->addRow(tr("Events"), timeline_);
     summary->addRow(tr("Warnings"), warnings_);
+    summary->addRow(tr("Notes"), notes_);
     summary_ = summary;
     summary->setRowVisible(detection_, false);
     summary->setRowVisible(timeline_, false);
+    summary->setRowVisible(notes_, false);
     layout->addLayout(summary);
 
     table_ = new QTableWidget(0, 7, this);
@@ -245,10 +249,11 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     table_->setRowCount(0);
     if (plan == nullptr) {
         for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, detection_,
-                              timeline_, warnings_})
+                              timeline_, warnings_, notes_})
             label->setText(QStringLiteral("–"));
         summary_->setRowVisible(detection_, false);
         summary_->setRowVisible(timeline_, false);
+        summary_->setRowVisible(notes_, false);
         describeTimes(false);
         clearChart();
         setStale(false);
@@ -321,6 +326,15 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         for (QString& warning : warnings)
             warning.prepend(QStringLiteral("• "));
     warnings_->setText(warnings.isEmpty() ? tr("none") : warnings.join(QLatin1Char('\n')));
+    QStringList notes;
+    for (const PlanIssue& issue : plan->issues)
+        if (issue.severity == IssueSeverity::Information)
+            notes << QString::fromStdString(issue.message);
+    if (notes.size() > 1)
+        for (QString& note : notes)
+            note.prepend(QStringLiteral("• "));
+    notes_->setText(notes.join(QLatin1Char('\n')));
+    summary_->setRowVisible(notes_, !notes.isEmpty());
     showChart(*plan, names);
 }
 

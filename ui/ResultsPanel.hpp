@@ -56,6 +56,7 @@ class ResultsPanel : public QWidget {
     QLabel* timeline_;  // only for plans simulated over time with events
     QFormLayout* summary_;
     QLabel* warnings_;
+    QLabel* notes_; // the plan's information issues (a fleet's cruise speed, robots walled in); only if any
     QChartView* chartView_;
     QStringList barNumbers_; // robot numbers under the chart's bars, in order
 };

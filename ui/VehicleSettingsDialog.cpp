@@ -85,8 +85,8 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
-    resize(620, 180 + 32 * static_cast<int>(rows_.size()));
-    shownDefaults_ = settingsOf(rows_.front()); // as the boxes show them, for followDefaults
+    resize(680, 250 + 32 * static_cast<int>(rows_.size())); // room for the intro and a limit's problem
+    shownDefaults_ = settingsOf(rows_.front());             // as the boxes show them, for followDefaults
 }
 
 VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString& name,

@@ -167,6 +167,25 @@ class TestMainWindow : public QObject {
         QVERIFY2(!warnings->text().startsWith(QStringLiteral("• ")), qPrintable(warnings->text()));
     }
 
+    // What the plan says for information (the speed it planned at) is shown beside the warnings; a plan
+    // without any hides the row.
+    void resultsShowThePlansNotes() {
+        PlanningProblem problem =
+            test::drawnProblem(std::vector<std::string>(8, std::string(8, '.')), {{0.5, 0.5}});
+        problem.notes.push_back({IssueSeverity::Information, "cruise-speed", "every robot cruises at 9 m/s"});
+        const Plan noted = makePlanner("mcpp-mlct")->plan(problem, {});
+        ui::ResultsPanel panel;
+        panel.showPlan(&noted, {});
+        auto* notes = panel.findChild<QLabel*>(QStringLiteral("notesLabel"));
+        QVERIFY(notes != nullptr);
+        QVERIFY(!notes->isHidden());
+        QVERIFY2(notes->text().contains(QStringLiteral("cruises at 9 m/s")), qPrintable(notes->text()));
+        problem.notes.clear();
+        const Plan plain = makePlanner("mcpp-mlct")->plan(problem, {});
+        panel.showPlan(&plain, {});
+        QVERIFY(notes->isHidden());
+    }
+
     void robotLabelStepKeepsTheNumbersThatFit() {
         QCOMPARE(ui::ResultsPanel::robotLabelStep(20, 20), 1);
         QCOMPARE(ui::ResultsPanel::robotLabelStep(20, 19), 2);
