@@ -652,7 +652,7 @@ std::string BatchRunner::fieldName(const io::MissionField& field) const {
         break;
     }
     }
-    return io::missionFileFields(options_.missionPath)(field);
+    return io::missionFileFields(options_.missionPath, io::robotNames(mission_))(field);
 }
 
 io::FieldNamer BatchRunner::fieldNamer() const {

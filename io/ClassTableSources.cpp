@@ -2,6 +2,7 @@
 
 #include "io/internal/ClassTablePresets.hpp"
 #include "io/internal/LegendReader.hpp"
+#include "io/internal/NameSuggestion.hpp"
 #include "io/internal/ProductRecognition.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -59,8 +60,13 @@ Result<ClassTable> presetClassTable(const std::string& name) {
         if (preset.name == name)
             return ClassTable(preset.classes);
     }
-    return Result<ClassTable>::failure("unknown class table preset \"" + name +
-                                       "\" (known: " + knownPresetNames() + ")");
+    std::vector<std::string> names;
+    for (const auto& preset : internal::presetDefinitions())
+        names.push_back(preset.name);
+    const auto meant = internal::closestName(name, names);
+    return Result<ClassTable>::failure("unknown class table preset \"" + name + "\"" +
+                                       (meant ? ": did you mean \"" + *meant + "\"?" : std::string()) +
+                                       " (known: " + knownPresetNames() + ")");
 }
 
 Result<ClassTable> loadClassTableCsv(const std::string& path) {

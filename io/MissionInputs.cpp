@@ -15,14 +15,16 @@ namespace {
 
 using Part = MissionField::Part;
 
-std::string robotField(int robot, const char* field) {
-    return "robots[" + std::to_string(robot) + "]." + field;
+std::string robotField(int robot, const char* field, const std::vector<std::string>& names) {
+    const auto index = static_cast<std::size_t>(robot);
+    const bool named = robot >= 0 && index < names.size() && !names[index].empty();
+    return "robots[" + std::to_string(robot) + "]." + field + (named ? " (" + names[index] + ")" : "");
 }
 
 } // namespace
 
-FieldNamer missionFileFields(const std::string& missionPath) {
-    return [missionPath](const MissionField& field) {
+FieldNamer missionFileFields(const std::string& missionPath, std::vector<std::string> robotNames) {
+    return [missionPath, names = std::move(robotNames)](const MissionField& field) {
         switch (field.part) {
         case Part::Raster:
             return missionPath + ": raster";
@@ -31,11 +33,11 @@ FieldNamer missionFileFields(const std::string& missionPath) {
         case Part::MissingClassesOption:
             return std::string("classes.missing_as_obstacles");
         case Part::Start:
-            return missionPath + ": " + robotField(field.robot, "start");
+            return missionPath + ": " + robotField(field.robot, "start", names);
         case Part::StartCrs:
-            return missionPath + ": " + robotField(field.robot, "start_crs");
+            return missionPath + ": " + robotField(field.robot, "start_crs", names);
         case Part::Charger:
-            return missionPath + ": " + robotField(field.robot, "charger");
+            return missionPath + ": " + robotField(field.robot, "charger", names);
         case Part::Planner:
             return missionPath + ": planner.name";
         case Part::Parameter:

@@ -37,8 +37,10 @@ struct MissionField {
 };
 // How a caller names a field: "mission.json: robots[1].start", "--start 2", "Robot 2's start"...
 using FieldNamer = std::function<std::string(const MissionField&)>;
-// The fields of a mission file, as docs/mission-format.md names them.
-[[nodiscard]] FieldNamer missionFileFields(const std::string& missionPath);
+// The fields of a mission file, as docs/mission-format.md names them; a robot's field also by the robot's
+// name when it has one ("robots[1].start (beta)").
+[[nodiscard]] FieldNamer missionFileFields(const std::string& missionPath,
+                                           std::vector<std::string> robotNames = {});
 
 // The raster the mission names, resolved against the mission file's folder, read with the mission's band.
 [[nodiscard]] Result<LoadedRaster> loadMissionRaster(const Mission& mission, const std::string& missionPath);

@@ -1139,7 +1139,7 @@ bool MainWindow::openMission(const QString& path) {
         return false;
     }
     // The same reading of classes and starts as batch mode, so both plan the same mission.
-    const io::FieldNamer names = io::missionFileFields(missionPath);
+    const io::FieldNamer names = io::missionFileFields(missionPath, io::robotNames(mission));
     std::optional<io::OpeningClassTable> opening;
     if (mission.classes.empty() && mission.preset.empty()) {
         opening = io::openingClassTable(raster.value());

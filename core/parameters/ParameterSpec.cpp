@@ -44,12 +44,13 @@ std::string ParameterSpec::expected() const {
     const std::string kind = (automatic.empty() ? "" : automatic + " or ") +
                              (type == ParameterType::Integer ? "a whole number" : "a number");
     const bool bounded = std::isfinite(maximum);
+    const std::string inUnits = unit.empty() ? "" : " " + unit; // "0 to 600 s": what the numbers count
     if (!std::isfinite(minimum))
-        return bounded ? kind + " up to " + number(maximum) : kind;
+        return bounded ? kind + " up to " + number(maximum) + inUnits : kind;
     if (!bounded)
-        return kind + " of at least " + number(minimum);
+        return kind + " of at least " + number(minimum) + inUnits;
     return kind + " from " + number(minimum) + (maximumIncluded ? " to " : " up to (not including) ") +
-           number(maximum);
+           number(maximum) + inUnits;
 }
 
 bool ParameterSpec::isAutomatic(const ParameterValue& value) const {

@@ -312,6 +312,12 @@ std::vector<BadInputCase> makeCases() {
          "folder.json"},
         {"missing mission", missionFile("absent.json"), 2, "absent.json", Gui::Mission, "absent.json"},
         {"mission robot on water", missionFile("robot-on-water.json"), 2, "Water", Gui::None, {}},
+        {"mission robot on water is named",
+         missionFile("robot-on-water.json"),
+         2,
+         "robot-on-water.json: robots[0].start (swimmer): (500355, 5000045) is on an obstacle",
+         Gui::None,
+         {}},
         // Output folder.
         {"output folder is a file",
          QStringList{"{dir}/good.json", "--out", "{dir}/a-file"},

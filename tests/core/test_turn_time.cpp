@@ -227,7 +227,7 @@ class TurnTimeTest : public QObject {
         QCOMPARE(spec.format(*fixed), std::string("2.5"));
         QVERIFY(!spec.parse("-1", &error).has_value()); // a number is a number, never the automatic value
         QVERIFY(!spec.parse("-0.5", &error).has_value());
-        QCOMPARE(error, std::string("expected auto or a number from 0 to 600, got -0.5"));
+        QCOMPARE(error, std::string("expected auto or a number from 0 to 600 s, got -0.5"));
         QVERIFY(!spec.parse("fast", &error).has_value());
         QVERIFY(spec.problemWith(ParameterValue(-2.0)).has_value());
         QVERIFY(spec.problemWith(ParameterValue(-1)).has_value());
