@@ -57,6 +57,7 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStandardItemModel>
 #include <QStandardPaths>
@@ -360,12 +361,26 @@ void MainWindow::createDocks() {
 
     resultsPanel_ = new ResultsPanel(this);
 
-    auto* layersDock = makeDock(QStringLiteral("layersDock"), tr("Layers"), layersPanel_, this);
+    // Layers and planner settings scroll rather than take the height the robots' table needs: at 1600 x
+    // 1000 their full heights left that table two rows.
+    const auto scrolled = [this](QWidget* panel) {
+        auto* scroll = new QScrollArea(this);
+        scroll->setWidget(panel);
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        // Only up and down: the dock stays as wide as the panel needs.
+        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        scroll->setMinimumWidth(panel->minimumSizeHint().width() +
+                                scroll->verticalScrollBar()->sizeHint().width());
+        return scroll;
+    };
+    auto* layersDock = makeDock(QStringLiteral("layersDock"), tr("Layers"), scrolled(layersPanel_), this);
     auto* classesDock =
         makeDock(QStringLiteral("classesDock"), tr("Land-cover classes"), classesWidget, this);
     auto* robotsDock = makeDock(QStringLiteral("robotsDock"), tr("Robots"), robotsWidget, this);
     auto* eventsDock = makeDock(QStringLiteral("eventsDock"), tr("Events"), eventsWidget, this);
-    auto* settingsDock = makeDock(QStringLiteral("plannerDock"), tr("Planner"), settingsPanel_, this);
+    auto* settingsDock =
+        makeDock(QStringLiteral("plannerDock"), tr("Planner"), scrolled(settingsPanel_), this);
     auto* resultsDock = makeDock(QStringLiteral("resultsDock"), tr("Results"), resultsPanel_, this);
     comparisonPanel_ = new ComparisonPanel(this);
     connect(comparisonPanel_, &ComparisonPanel::compareRequested, this,
@@ -375,11 +390,7 @@ void MainWindow::createDocks() {
         makeDock(QStringLiteral("comparisonDock"), tr("Compare planners"), comparisonPanel_, this);
     addDockWidget(Qt::LeftDockWidgetArea, layersDock);
     legendPanel_ = new LegendPanel(document_, this);
-    auto* legendScroll = new QScrollArea(this);
-    legendScroll->setWidget(legendPanel_);
-    legendScroll->setWidgetResizable(true);
-    legendScroll->setFrameShape(QFrame::NoFrame);
-    auto* legendDock = makeDock(QStringLiteral("legendDock"), tr("Legend"), legendScroll, this);
+    auto* legendDock = makeDock(QStringLiteral("legendDock"), tr("Legend"), scrolled(legendPanel_), this);
     addDockWidget(Qt::LeftDockWidgetArea, legendDock);
     tabifyDockWidget(layersDock, legendDock);
     layersDock->raise();
@@ -398,7 +409,7 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::BottomDockWidgetArea, messagesDock);
     tabifyDockWidget(classesDock, messagesDock);
     classesDock->raise();
-    resizeDocks({layersDock, robotsDock, settingsDock}, {150, 220, 200}, Qt::Vertical);
+    resizeDocks({layersDock, robotsDock, settingsDock}, {120, 240, 260}, Qt::Vertical);
     resizeDocks({layersDock, resultsDock}, {360, 420}, Qt::Horizontal);
     resizeDocks({classesDock}, {250}, Qt::Vertical);
 }
