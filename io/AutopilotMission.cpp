@@ -1,5 +1,6 @@
 #include "io/AutopilotMission.hpp"
 
+#include "io/PlanExport.hpp"
 #include "io/internal/StraightLine.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -219,6 +220,14 @@ AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSetting
     // Turns are made at the same points, so they cost what the plan priced them at.
     mission.seconds = flight > 0.0 ? flight + path.turnSeconds : 0.0;
     return mission;
+}
+
+MissionSize missionSize(const CoveragePath& path, const CellGraph& cells, const VehicleSettings& vehicle,
+                        const ExportSettings& settings) {
+    CoveragePath whole;
+    const AutopilotMission mission = autopilotMission(
+        pathForWaypointFiles(path, cells, settings.mergeCollinear, whole), vehicle, settings);
+    return {mission.items, mission.parts.size()};
 }
 
 std::string missionPartPath(const std::string& path, std::size_t part) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
 #include "io/Mission.hpp"
 #include "io/VehicleSettings.hpp"
@@ -49,6 +50,15 @@ struct AutopilotMission {
 // the vehicle's maxWaypoints items (home, a first speed command, waypoints and speed changes).
 [[nodiscard]] AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
                                                 const ExportSettings& settings);
+
+// How big a robot's waypoint files come out: what the results panel shows before anything is exported.
+struct MissionSize {
+    int items = 0;         // of the whole mission in one file
+    std::size_t parts = 0; // the files the vehicle's item limit splits it into
+};
+// The size of the mission of a robot's path, made as the waypoint files make it (cells: the plan's).
+[[nodiscard]] MissionSize missionSize(const CoveragePath& path, const CellGraph& cells,
+                                      const VehicleSettings& vehicle, const ExportSettings& settings);
 
 // The file of one part of a split mission: "out/robot_1.plan" -> "out/robot_1_part_2.plan" (part from 0).
 [[nodiscard]] std::string missionPartPath(const std::string& path, std::size_t part);

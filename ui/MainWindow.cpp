@@ -68,6 +68,7 @@
 #include <QToolTip>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 #include <optional>
 
@@ -885,6 +886,37 @@ void MainWindow::updateResults() {
         names << QString::fromStdString(robot.name);
     resultsPanel_->showPlan(document_->plan(), names);
     resultsPanel_->setStale(document_->planStale());
+    sizeWaypointFiles();
+}
+
+void MainWindow::sizeWaypointFiles() {
+    const std::shared_ptr<const Plan> plan = document_->sharedPlan();
+    if (!plan)
+        return;
+    if (waypointFileSizes_ == nullptr)
+        waypointFileSizes_ = new QFutureWatcher<std::vector<io::MissionSize>>(this);
+    waypointFileSizes_->disconnect(this);
+    const int asked = ++waypointFileSizesAsked_;
+    const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(document_->mission());
+    const io::ExportSettings settings = document_->mission().exports;
+    connect(waypointFileSizes_, &QFutureWatcherBase::finished, this, [this, asked, vehicles] {
+        if (asked != waypointFileSizesAsked_)
+            return;
+        QStringList names;
+        for (const auto& robot : document_->robots())
+            names << QString::fromStdString(robot.name);
+        resultsPanel_->showWaypointFiles(waypointFileSizes_->result(), vehicles, names);
+    });
+    // A large map's paths hold tens of millions of points: measured beside the window, not in it.
+    waypointFileSizes_->setFuture(QtConcurrent::run([plan, vehicles, settings] {
+        std::vector<io::MissionSize> sizes;
+        for (const CoveragePath& path : plan->paths) {
+            const auto robot = static_cast<std::size_t>(path.robot);
+            const io::VehicleSettings vehicle = robot < vehicles.size() ? vehicles[robot] : settings.vehicle;
+            sizes.push_back(io::missionSize(path, plan->cells, vehicle, settings));
+        }
+        return sizes;
+    }));
 }
 
 bool MainWindow::loadClassTable(const QString& path) {

@@ -1,10 +1,12 @@
 #pragma once
 
 #include "core/model/MapPoint.hpp"
+#include "io/AutopilotMission.hpp"
 #include "io/MissionInputs.hpp"
 #include "ui/ComparisonRunner.hpp"
 #include "ui/MissionDocument.hpp"
 
+#include <QFutureWatcher>
 #include <QMainWindow>
 #include <QSet>
 #include <QString>
@@ -128,6 +130,8 @@ class MainWindow : public QMainWindow {
     void updateTitle();
     void updateActions();
     void updateResults();
+    // Works out the size of each robot's waypoint files for the results panel, off this thread.
+    void sizeWaypointFiles();
     void updateTimeline();
     [[nodiscard]] QWidget* createEventsWidget();
     void syncPresetCombo();
@@ -219,6 +223,8 @@ class MainWindow : public QMainWindow {
     bool exportStale_ = false; // the exported plan was out of date
     ComparisonOutcome comparison_;
     PlanInputs comparisonInputs_;
+    QFutureWatcher<std::vector<io::MissionSize>>* waypointFileSizes_ = nullptr;
+    int waypointFileSizesAsked_ = 0; // the last request: an older one's answer is dropped
     std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on
     qint64 planningStartedAt_ = 0;
     bool settingsModified_ = false;

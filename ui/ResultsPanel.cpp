@@ -161,6 +161,8 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     warnings_->setWordWrap(true);
     notes_ = valueLabel(QStringLiteral("notesLabel"), this);
     notes_->setWordWrap(true);
+    waypointFiles_ = valueLabel(QStringLiteral("waypointFilesLabel"), this);
+    waypointFiles_->setWordWrap(true);
     summary->addRow(tr("Makespan"), makespan_);
     summary->addRow(tr("Lower bound"), lowerBound_);
     summary->addRow(tr("Makespan / bound"), ratio_);
@@ -171,10 +173,12 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     summary->addRow(tr("Events"), timeline_);
     summary->addRow(tr("Warnings"), warnings_);
     summary->addRow(tr("Notes"), notes_);
+    summary->addRow(tr("Waypoint files"), waypointFiles_);
     summary_ = summary;
     summary->setRowVisible(detection_, false);
     summary->setRowVisible(timeline_, false);
     summary->setRowVisible(notes_, false);
+    summary->setRowVisible(waypointFiles_, false);
     layout->addLayout(summary);
 
     table_ = new QTableWidget(0, 7, this);
@@ -249,11 +253,12 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     table_->setRowCount(0);
     if (plan == nullptr) {
         for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, detection_,
-                              timeline_, warnings_, notes_})
+                              timeline_, warnings_, notes_, waypointFiles_})
             label->setText(QStringLiteral("–"));
         summary_->setRowVisible(detection_, false);
         summary_->setRowVisible(timeline_, false);
         summary_->setRowVisible(notes_, false);
+        summary_->setRowVisible(waypointFiles_, false);
         describeTimes(false);
         clearChart();
         setStale(false);
@@ -335,7 +340,61 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
             note.prepend(QStringLiteral("• "));
     notes_->setText(notes.join(QLatin1Char('\n')));
     summary_->setRowVisible(notes_, !notes.isEmpty());
+    summary_->setRowVisible(waypointFiles_, false); // until showWaypointFiles has this plan's
     showChart(*plan, names);
+}
+
+namespace {
+
+QString robotName(const QStringList& names, int robot) {
+    return robot < names.size() && !names[robot].isEmpty() ? names[robot]
+                                                           : ResultsPanel::tr("Robot %1").arg(robot + 1);
+}
+
+} // namespace
+
+void ResultsPanel::showWaypointFiles(const std::vector<io::MissionSize>& sizes,
+                                     const std::vector<io::VehicleSettings>& vehicles,
+                                     const QStringList& names) {
+    waypointFiles_->setText(waypointFilesText(sizes, vehicles, names));
+    QStringList perRobot;
+    for (std::size_t robot = 0; robot < sizes.size(); ++robot)
+        perRobot << tr("%1: %2 items, %3")
+                        .arg(robotName(names, static_cast<int>(robot)))
+                        .arg(sizes[robot].items)
+                        .arg(sizes[robot].parts == 1 ? tr("one file")
+                                                     : tr("%1 parts").arg(sizes[robot].parts));
+    waypointFiles_->setToolTip(perRobot.join(QLatin1Char('\n')));
+    summary_->setRowVisible(waypointFiles_, !sizes.empty());
+}
+
+QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& sizes,
+                                        const std::vector<io::VehicleSettings>& vehicles,
+                                        const QStringList& names) {
+    QStringList split;
+    int largest = 0;
+    for (std::size_t robot = 0; robot < sizes.size(); ++robot) {
+        largest = std::max(largest, sizes[robot].items);
+        if (sizes[robot].parts > 1)
+            split << tr("%1 in %2").arg(robotName(names, static_cast<int>(robot))).arg(sizes[robot].parts);
+    }
+    const bool oneLimit =
+        std::all_of(vehicles.begin(), vehicles.end(), [&](const io::VehicleSettings& vehicle) {
+            return vehicle.maxWaypoints == vehicles.front().maxWaypoints;
+        });
+    const QString limit = !vehicles.empty() && oneLimit && vehicles.front().maxWaypoints > 0
+                              ? tr(" of %1").arg(vehicles.front().maxWaypoints)
+                              : QString();
+    if (split.isEmpty())
+        return tr("one file per robot, the largest %1%2 items").arg(largest).arg(limit);
+    constexpr int named = 6; // more would wrap over many lines
+    const qsizetype count = split.size();
+    if (count > named)
+        split = split.mid(0, named) << tr("…");
+    const QString robots = count == 1 ? tr("1 robot") : tr("%1 robots").arg(count);
+    return tr("%1 above the item limit%2, in parts: %3")
+        .arg(robots, limit.isEmpty() ? QString() : tr(" (%1)").arg(vehicles.front().maxWaypoints),
+             split.join(QStringLiteral(", ")));
 }
 
 int ResultsPanel::robotLabelStep(int robots, int labelsThatFit) {

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "core/model/Plan.hpp"
+#include "io/AutopilotMission.hpp"
+#include "io/VehicleSettings.hpp"
 
 #include <QStringList>
 #include <QWidget>
@@ -23,6 +25,10 @@ class ResultsPanel : public QWidget {
     // names: robot names by index (may be shorter than the plan's robots).
     void showPlan(const Plan* plan, const QStringList& names);
     void setStale(bool stale);
+    // How big each robot's waypoint files come out with its vehicle's item limit (vehicles: by robot); worked
+    // out off the window's thread after each plan, so shown when ready.
+    void showWaypointFiles(const std::vector<io::MissionSize>& sizes,
+                           const std::vector<io::VehicleSettings>& vehicles, const QStringList& names);
 
     [[nodiscard]] QTableWidget* robotTable() const { return table_; }
     [[nodiscard]] QString makespanText() const;
@@ -34,6 +40,11 @@ class ResultsPanel : public QWidget {
     // Every how many robots the chart numbers a bar: 1, 2, 5, 10, 20, 50... so that at most labelsThatFit
     // numbers stand under the bars.
     [[nodiscard]] static int robotLabelStep(int robots, int labelsThatFit);
+    // One line on the robots' waypoint files: "one file per robot, the largest 412 of 700 items", or which
+    // robots' missions are split into how many parts.
+    [[nodiscard]] static QString waypointFilesText(const std::vector<io::MissionSize>& sizes,
+                                                   const std::vector<io::VehicleSettings>& vehicles,
+                                                   const QStringList& names);
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -56,6 +67,7 @@ class ResultsPanel : public QWidget {
     QLabel* timeline_;  // only for plans simulated over time with events
     QFormLayout* summary_;
     QLabel* warnings_;
+    QLabel* waypointFiles_; // the size of the robots' waypoint files, once worked out
     QLabel* notes_; // the plan's information issues (a fleet's cruise speed, robots walled in); only if any
     QChartView* chartView_;
     QStringList barNumbers_; // robot numbers under the chart's bars, in order

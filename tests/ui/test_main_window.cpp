@@ -186,6 +186,25 @@ class TestMainWindow : public QObject {
         QVERIFY(notes->isHidden());
     }
 
+    void waypointFilesSayWhichRobotsAreSplit() {
+        std::vector<io::VehicleSettings> vehicles(3);
+        const QStringList names{QStringLiteral("north"), QString(), QStringLiteral("south")};
+        const QString whole =
+            ui::ResultsPanel::waypointFilesText({{412, 1}, {380, 1}, {55, 1}}, vehicles, names);
+        QCOMPARE(whole, QStringLiteral("one file per robot, the largest 412 of 700 items"));
+        const QString split =
+            ui::ResultsPanel::waypointFilesText({{21075, 31}, {380, 1}, {1400, 2}}, vehicles, names);
+        QCOMPARE(split,
+                 QStringLiteral("2 robots above the item limit (700), in parts: north in 31, south in 2"));
+        vehicles[1].maxWaypoints = 0; // limits differ: none is named
+        const QString unnamedLimit =
+            ui::ResultsPanel::waypointFilesText({{412, 1}, {380, 1}, {55, 1}}, vehicles, names);
+        QCOMPARE(unnamedLimit, QStringLiteral("one file per robot, the largest 412 items"));
+        const QString second =
+            ui::ResultsPanel::waypointFilesText({{380, 1}, {1500, 3}, {55, 1}}, vehicles, names);
+        QCOMPARE(second, QStringLiteral("1 robot above the item limit, in parts: Robot 2 in 3"));
+    }
+
     void robotLabelStepKeepsTheNumbersThatFit() {
         QCOMPARE(ui::ResultsPanel::robotLabelStep(20, 20), 1);
         QCOMPARE(ui::ResultsPanel::robotLabelStep(20, 19), 2);
@@ -396,6 +415,13 @@ class TestMainWindow : public QObject {
         qInfo("planned in %lld ms", static_cast<long long>(planningTime.elapsed()));
         QVERIFY(document->plan() != nullptr);
         QVERIFY(!document->planStale());
+        // The size of the waypoint files follows, worked out beside the window.
+        auto* waypointFiles = window.resultsPanel()->findChild<QLabel*>(QStringLiteral("waypointFilesLabel"));
+        QVERIFY(waypointFiles != nullptr);
+        QTRY_VERIFY(!waypointFiles->isHidden());
+        QVERIFY2(waypointFiles->text().startsWith(QStringLiteral("one file per robot")) ||
+                     waypointFiles->text().contains(QStringLiteral("in parts")),
+                 qPrintable(waypointFiles->text()));
         // A cruise speed the whole fleet shares is planned with: setting one makes the plan out of date.
         const io::ExportSettings asPlanned = document->mission().exports;
         io::ExportSettings flown = asPlanned;
