@@ -234,6 +234,8 @@ PlanningProblem BatchRunner::prepareProblem() {
         mission_.classes = std::move(opening.table);
     }
     classes_ = valueOrBadInput(io::missionClasses(mission_, raster_, names));
+    if (options_.fieldOfViewScale)
+        scaleFieldsOfView(*options_.fieldOfViewScale);
     // The batch contract takes --start in the raster file's CRS; mission files keep planning-CRS units.
     const auto units =
         options_.missionFromFlags() ? io::StartUnits::RasterFileCrs : io::StartUnits::PlanningCrs;
@@ -409,6 +411,17 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
         if (partsWritten.count({robot, "qgc-plan"}) != 0)
             noteMissionFiles(context, robot);
     removeStaleRobotFiles(robots, partsWritten, folder);
+}
+
+// --fov-scale: every class's field of view times the factor, checked as a table is.
+void BatchRunner::scaleFieldsOfView(double factor) {
+    std::vector<LandCoverClass> classes = classes_.classes();
+    for (LandCoverClass& landCover : classes)
+        landCover.fieldOfViewMetres *= factor;
+    classes_ = ClassTable(std::move(classes));
+    if (const auto problem = classes_.validate())
+        badInput("--fov-scale " + formatQuantity(factor) + ": " + *problem);
+    note("every class's field of view times " + formatQuantity(factor) + " (--fov-scale)");
 }
 
 // Vehicle flags set every robot's value: the mission's default, and no robot keeps its own.

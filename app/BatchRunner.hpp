@@ -50,6 +50,7 @@ class BatchRunner {
     // Says when a robot's mission, as written, is above its autopilot's item limit, and when it is also
     // written sortie by sortie.
     void applyVehicleFlags();
+    void scaleFieldsOfView(double factor);
     void noteMissionFiles(const io::ExportContext& context, int robot);
     void printSummary(const Plan& plan) const;
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.

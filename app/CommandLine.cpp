@@ -45,6 +45,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--max-waypoints", "N", true, false},  FlagSpec{"--event", "T:ROBOT:FACTOR", true, true},
     FlagSpec{"--charger", "X,Y", true, true},       FlagSpec{"--vehicle", "TYPE", true, false},
     FlagSpec{"--altitude", "M", true, false},       FlagSpec{"--cruise-speed", "M/S", true, false},
+    FlagSpec{"--fov-scale", "F", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -379,6 +380,12 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 *options.cruiseSpeedMetresPerSecond > 1000.0)
                 return failure("--cruise-speed: " + quoted(value) +
                                " is not a speed (0 for the land-cover speeds, up to 1000 m/s)");
+        } else if (flag == "--fov-scale") {
+            options.fieldOfViewScale = parseFiniteNumber(value);
+            if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||
+                *options.fieldOfViewScale > 1000.0)
+                return failure("--fov-scale: " + quoted(value) +
+                               " is not a factor for the fields of view (more than 0, up to 1000)");
         } else if (flag == "--dense-paths") {
             options.densePaths = true;
         } else if (flag == "--cell-polygons") {
@@ -490,6 +497,9 @@ std::string CommandLine::usage() {
            "                           every passable class instead of the class table's speeds (a\n"
            "                           drone's speed does not follow the ground under it), and the waypoint\n"
            "                           files command it (0: the land-cover speeds, the default)\n"
+           "  --fov-scale F            every class's field of view times F, e.g. 4 for a drone whose\n"
+           "                           camera sees four times as wide as the table's ground robot; land\n"
+           "                           covers keep their proportions (forest half as far as grass)\n"
            "  --event T:ROBOT:FACTOR   from T seconds on, robot ROBOT (counted from 0: the first\n"
            "                           start, robot_1 in the outputs) drives at FACTOR times its speeds\n"
            "                           (0.5 half speed, 0 stopped); repeatable, added to the mission's\n"
@@ -501,8 +511,8 @@ std::string CommandLine::usage() {
            "\n"
            "Mission files (format: docs/mission-format.md) may be combined with --band, --area, --no-go,\n"
            "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths,\n"
-           "--cell-polygons, --max-waypoints, --vehicle, --altitude and --cruise-speed, which override the\n"
-           "mission's values.\n"
+           "--cell-polygons, --max-waypoints, --vehicle, --altitude, --cruise-speed and --fov-scale, which\n"
+           "override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"

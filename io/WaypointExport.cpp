@@ -545,6 +545,14 @@ int mostItems(const AutopilotMission& mission) {
         ->items;
 }
 
+// "538 to 607 items", or "607 items each" when the parts are as big as one another.
+std::string partSizes(const AutopilotMission& mission) {
+    const int fewest = fewestItems(mission);
+    const int most = mostItems(mission);
+    return fewest == most ? std::to_string(most) + " items each"
+                          : std::to_string(fewest) + " to " + std::to_string(most) + " items";
+}
+
 } // namespace
 
 std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path) {
@@ -556,9 +564,8 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
     };
     return context.robotName(robot) + "'s mission has " + std::to_string(mission.items) +
            " items, more than its autopilot's " + std::to_string(context.vehicle(robot).maxWaypoints) +
-           ": written in " + std::to_string(mission.parts.size()) + " parts of " +
-           std::to_string(fewestItems(mission)) + " to " + std::to_string(mostItems(mission)) +
-           " items, each beginning where the one before it ended (" + partName(0) + " to " +
+           ": written in " + std::to_string(mission.parts.size()) + " parts of " + partSizes(mission) +
+           ", each beginning where the one before it ended (" + partName(0) + " to " +
            partName(mission.parts.size() - 1) + ")" +
            (isAircraft(context.vehicle(robot).type)
                 ? "; each takes off from the robot's start and returns to it"

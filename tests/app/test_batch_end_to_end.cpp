@@ -74,6 +74,7 @@ class TestBatchEndToEnd : public QObject {
     void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
     void missionsAboveTheItemLimitAreSplit();
+    void droneFlagsPlanAtTheCruiseSpeed();
     void batteryPlansWriteEachSortie();
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
     void detectionPlansWriteTheDetectionRaster();
@@ -619,6 +620,50 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
     checkOutputs(out, 3, run);
     const QStringList parts = QDir(out).entryList({QStringLiteral("*_part_*")});
     QVERIFY2(parts.isEmpty(), qPrintable(parts.join(", ")));
+}
+
+// --vehicle, --altitude, --cruise-speed and --fov-scale: the plan's times are at the cruise speed, cells are
+// sized by the scaled fields of view, and the waypoint files take off and return to launch.
+void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
+    const QString ground = scratch_.filePath("ground");
+    const QString drone = scratch_.filePath("drone");
+    auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", ground});
+    QCOMPARE(run.exitCode, 0);
+    run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--vehicle", "multirotor", "--altitude",
+                   "45", "--cruise-speed", "6", "--fov-scale", "2", "--out", drone});
+    checkOutputs(drone, 3, run);
+    if (QTest::currentTestFailed())
+        return;
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("every robot cruises at 6 m/s")),
+             qPrintable(run.standardOutput));
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("field of view times 2")),
+             qPrintable(run.standardOutput));
+    const QJsonObject report = readJsonObject(drone + "/report.json");
+    int cells = 0;
+    for (const QJsonValue& value : report.value("robots").toArray()) {
+        const QJsonObject robot = value.toObject();
+        QCOMPARE(robot.value("vehicle").toString(), QStringLiteral("multirotor"));
+        cells += robot.value("cells").toInt();
+        // Time is length at 6 m/s and the time lost at turns (connector time is part of the length's).
+        const double flying = robot.value("time_s").toDouble() - robot.value("turn_time_s").toDouble();
+        const double expected = robot.value("length_m").toDouble() / 6.0;
+        QVERIFY2(std::abs(flying - expected) <= 1e-6 * expected,
+                 qPrintable(QStringLiteral("%1 s flying, %2 s expected").arg(flying).arg(expected)));
+    }
+    int groundCells = 0;
+    for (const QJsonValue& value : readJsonObject(ground + "/report.json").value("robots").toArray())
+        groundCells += value.toObject().value("cells").toInt();
+    QVERIFY2(cells * 3 < groundCells,
+             qPrintable(QStringLiteral("%1 cells, %2 on the ground").arg(cells).arg(groundCells)));
+    bool noted = false;
+    for (const QJsonValue& issue : report.value("issues").toArray())
+        noted = noted || issue.toObject().value("code").toString() == QStringLiteral("cruise-speed");
+    QVERIFY(noted);
+    const QJsonArray items =
+        readJsonObject(drone + "/robot_1.plan").value("mission").toObject().value("items").toArray();
+    QCOMPARE(items.first().toObject().value("command").toInt(), 22);
+    QCOMPARE(items.first().toObject().value("params").toArray()[6].toDouble(), 45.0);
+    QCOMPARE(items.last().toObject().value("command").toInt(), 20);
 }
 
 // The first and last waypoint (command 16) of a QGroundControl plan, as [latitude, longitude].

@@ -135,7 +135,7 @@ void TestCommandLine::batchWithEveryFlag() {
         "--batch --raster map.tif --classes table.csv --start 318000.5,4130000 --start 319000,4131000.25 "
         "--start -113.1,37.2 --start-crs EPSG:4326 --charger 318100,4130200.5 --planner mcpp-mlct --band 2 "
         "--purity 0.25 --missing-as-obstacle --open-paths --quiet --out results --vehicle multirotor "
-        "--altitude 60 --cruise-speed 8.5"));
+        "--altitude 60 --cruise-speed 8.5 --fov-scale 4"));
     QVERIFY2(result.ok(), result.error.c_str());
     const auto& options = result.options;
     QCOMPARE(static_cast<int>(options.mode), static_cast<int>(RunMode::Batch));
@@ -168,6 +168,7 @@ void TestCommandLine::batchWithEveryFlag() {
     QVERIFY(options.vehicleType == mcpp::io::VehicleType::Multirotor);
     QCOMPARE(options.altitudeMetres.value_or(-1.0), 60.0);
     QCOMPARE(options.cruiseSpeedMetresPerSecond.value_or(-1.0), 8.5);
+    QCOMPARE(options.fieldOfViewScale.value_or(-1.0), 4.0);
 }
 
 void TestCommandLine::batchWithPresetAndShortForms() {
@@ -272,6 +273,9 @@ void TestCommandLine::errors_data() {
     QTest::newRow("--cruise-speed in km/h")
         << words("--batch m.json --out o --cruise-speed 1200")
         << "--cruise-speed: \"1200\" is not a speed (0 for the land-cover speeds, up to 1000 m/s)";
+    QTest::newRow("--fov-scale zero")
+        << words("--batch m.json --out o --fov-scale 0")
+        << "--fov-scale: \"0\" is not a factor for the fields of view (more than 0, up to 1000)";
     QTest::newRow("--max-waypoints negative")
         << words("--batch m.json --out o --max-waypoints -700")
         << "--max-waypoints: \"-700\" is not an item limit (0 for none, or 8 or more mission items)";
