@@ -533,24 +533,14 @@ std::string sortieFilesNote(const ExportContext& context, int robot, const std::
 
 namespace {
 
-int fewestItems(const AutopilotMission& mission) {
-    return std::min_element(mission.parts.begin(), mission.parts.end(),
-                            [](const MissionPart& a, const MissionPart& b) { return a.items < b.items; })
-        ->items;
-}
-
-int mostItems(const AutopilotMission& mission) {
-    return std::max_element(mission.parts.begin(), mission.parts.end(),
-                            [](const MissionPart& a, const MissionPart& b) { return a.items < b.items; })
-        ->items;
-}
-
 // "538 to 607 items", or "607 items each" when the parts are as big as one another.
 std::string partSizes(const AutopilotMission& mission) {
-    const int fewest = fewestItems(mission);
-    const int most = mostItems(mission);
-    return fewest == most ? std::to_string(most) + " items each"
-                          : std::to_string(fewest) + " to " + std::to_string(most) + " items";
+    const auto [fewest, most] =
+        std::minmax_element(mission.parts.begin(), mission.parts.end(),
+                            [](const MissionPart& a, const MissionPart& b) { return a.items < b.items; });
+    return fewest->items == most->items
+               ? std::to_string(most->items) + " items each"
+               : std::to_string(fewest->items) + " to " + std::to_string(most->items) + " items";
 }
 
 } // namespace

@@ -391,7 +391,12 @@ void MainWindow::createDocks() {
         makeDock(QStringLiteral("comparisonDock"), tr("Compare planners"), comparisonPanel_, this);
     addDockWidget(Qt::LeftDockWidgetArea, layersDock);
     legendPanel_ = new LegendPanel(document_, this);
-    auto* legendDock = makeDock(QStringLiteral("legendDock"), tr("Legend"), scrolled(legendPanel_), this);
+    // The legend scrolls both ways: long class names must not widen the dock.
+    auto* legendScroll = new QScrollArea(this);
+    legendScroll->setWidget(legendPanel_);
+    legendScroll->setWidgetResizable(true);
+    legendScroll->setFrameShape(QFrame::NoFrame);
+    auto* legendDock = makeDock(QStringLiteral("legendDock"), tr("Legend"), legendScroll, this);
     addDockWidget(Qt::LeftDockWidgetArea, legendDock);
     tabifyDockWidget(layersDock, legendDock);
     layersDock->raise();
