@@ -1,5 +1,6 @@
 #include "io/AutopilotMission.hpp"
 
+#include "core/coverage/PathMeasurement.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/StraightLine.hpp"
 #include "io/internal/TextFiles.hpp"
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace mcpp::io {
 namespace {
@@ -220,6 +222,37 @@ AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSetting
     // Turns are made at the same points, so they cost what the plan priced them at.
     mission.seconds = flight > 0.0 ? flight + path.turnSeconds : 0.0;
     return mission;
+}
+
+double partSeconds(const AutopilotMission& mission, const MissionPart& part, const VehicleSettings& vehicle,
+                   const CellGraph& cells) {
+    // The flight's points and the speed commanded on the leg into each.
+    std::vector<std::pair<Waypoint, double>> flight;
+    const bool fromHome = isAircraft(vehicle.type);
+    if (fromHome)
+        flight.emplace_back(mission.points.front(), 0.0);
+    for (std::size_t point = part.first; point <= part.last; ++point)
+        flight.emplace_back(mission.points[point], mission.commandedSpeeds[point]);
+    if (fromHome)
+        flight.emplace_back(mission.points.front(), mission.commandedSpeeds[part.last]);
+    double seconds = 0.0;
+    std::optional<std::pair<double, double>> heading; // of the last leg of non-zero length
+    for (std::size_t i = 1; i < flight.size(); ++i) {
+        const Waypoint& from = flight[i - 1].first;
+        const Waypoint& to = flight[i].first;
+        const double dx = to.x - from.x;
+        const double dy = to.y - from.y;
+        const double length = std::hypot(dx, dy);
+        if (length == 0.0)
+            continue;
+        if (!(flight[i].second > 0.0))
+            return 0.0;
+        seconds += length / flight[i].second;
+        if (heading)
+            seconds += turnSecondsAt(from, heading->first, heading->second, dx, dy, cells);
+        heading = std::make_pair(dx, dy);
+    }
+    return seconds;
 }
 
 MissionSize missionSize(const CoveragePath& path, const CellGraph& cells, const VehicleSettings& vehicle,

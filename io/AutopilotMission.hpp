@@ -51,6 +51,12 @@ struct AutopilotMission {
 [[nodiscard]] AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
                                                 const ExportSettings& settings);
 
+// Seconds one part of a mission takes at its commanded speeds, turning where the plan prices turns (cells:
+// the plan's); an aircraft's part also flies from home (the mission's first point) to its first waypoint
+// and back from its last, so that each flight can be held against a battery. 0 when a speed is unknown.
+[[nodiscard]] double partSeconds(const AutopilotMission& mission, const MissionPart& part,
+                                 const VehicleSettings& vehicle, const CellGraph& cells);
+
 // How big a robot's waypoint files come out: what the results panel shows before anything is exported.
 struct MissionSize {
     int items = 0;         // of the whole mission in one file

@@ -137,6 +137,10 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("mission_items", mission.items);
         item.add("mission_parts", static_cast<int>(mission.parts.size()));
         item.add("mission_time_s", mission.seconds);
+        // Each file's own flight, for a battery: an aircraft's with its trips to and from the start.
+        JsonValue& partSeconds = item.add("mission_part_seconds", JsonValue::array());
+        for (const MissionPart& part : mission.parts)
+            partSeconds.push(io::partSeconds(mission, part, vehicle, context.plan.cells));
         if (sorties != nullptr)
             addSorties(item, context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
         if (timeline != nullptr)

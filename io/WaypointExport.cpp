@@ -1,5 +1,6 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/StraightRunMerging.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
@@ -543,6 +544,18 @@ std::string partSizes(const AutopilotMission& mission) {
                : std::to_string(fewest->items) + " to " + std::to_string(most->items) + " items";
 }
 
+// "; the longest part takes 24 min 10 s", for a battery; nothing when a speed is unknown.
+std::string longestPartNote(const ExportContext& context, int robot, const AutopilotMission& mission) {
+    const VehicleSettings& vehicle = context.vehicle(robot);
+    double longest = 0.0;
+    for (const MissionPart& part : mission.parts)
+        longest = std::max(longest, partSeconds(mission, part, vehicle, context.plan.cells));
+    if (!(longest > 0.0))
+        return {};
+    return "; the longest part takes " + formatDuration(longest) +
+           (isAircraft(vehicle.type) ? " with its flights to and from the start" : "");
+}
+
 } // namespace
 
 std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path) {
@@ -559,7 +572,8 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
            partName(mission.parts.size() - 1) + ")" +
            (isAircraft(context.vehicle(robot).type)
                 ? "; each takes off from the robot's start and returns to it"
-                : "");
+                : "") +
+           longestPartNote(context, robot, mission);
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

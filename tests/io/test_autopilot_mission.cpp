@@ -1,6 +1,7 @@
 // Autopilot missions: speeds as a vehicle is told them, and missions split by the autopilot's item limit.
 
 #include "PlanFixture.hpp"
+#include "core/coverage/PathMeasurement.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/StraightLine.hpp"
@@ -357,6 +358,59 @@ class AutopilotMissionTest : public QObject {
                      QStringLiteral("robot_1_part_1.plan to robot_1_part_%1.plan").arg(mission.parts.size())),
                  qPrintable(splitMessages[0]));
         QVERIFY(splitMessages[0].contains(QStringLiteral(".waypoints")));
+        QVERIFY(splitMessages[0].contains(QStringLiteral("the longest part takes")));
+        // Each part's own flight time, for a battery.
+        const QJsonArray partTimes =
+            readJson(report)["robots"].toArray()[0].toObject()["mission_part_seconds"].toArray();
+        QCOMPARE(static_cast<std::size_t>(partTimes.size()), mission.parts.size());
+        double total = 0.0;
+        for (const QJsonValue& seconds : partTimes) {
+            QVERIFY(seconds.toDouble() > 0.0);
+            total += seconds.toDouble();
+        }
+        QVERIFY(std::abs(total - mission.seconds) < 1e-6 * mission.seconds); // a rover: no trips, no turns
+    }
+
+    // A part's flight: its legs at their commanded speeds; an aircraft's also from home and back.
+    void partSecondsCountTheTripsToAndFromHome() {
+        AutopilotMission mission;
+        const auto at = [](double x, double y) {
+            Waypoint point;
+            point.x = x;
+            point.y = y;
+            return point;
+        };
+        mission.points = {at(0, 0), at(100, 0), at(100, 100), at(0, 100)};
+        mission.commandedSpeeds = {10.0, 10.0, 5.0, 5.0};
+        const MissionPart second{1, 2, 0};
+        const CellGraph noTurnPrice;
+        VehicleSettings rover;
+        QCOMPARE(partSeconds(mission, second, rover, noTurnPrice), 20.0); // 100 m at 5 m/s
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        // Out to (100, 0) at 10 m/s, on at 5 m/s, and back from (100, 100) at 5 m/s.
+        const double expected = 10.0 + 20.0 + std::hypot(100.0, 100.0) / 5.0;
+        QVERIFY(std::abs(partSeconds(mission, second, drone, noTurnPrice) - expected) < 1e-9);
+        mission.commandedSpeeds[2] = 0.0;
+        QCOMPARE(partSeconds(mission, second, drone, noTurnPrice), 0.0); // a speed unknown
+    }
+
+    // Turns are priced as the plan prices them: one part of a whole mission takes the mission's time.
+    void partSecondsPriceTurnsAsThePlanDoes() {
+        Plan plan = test::makeFixturePlan();
+        TurnTimeModel turns;
+        turns.fixedSecondsPer90Degrees = 2.0;
+        plan.cells.applyTurnTime(turns);
+        CoveragePath path = plan.paths[0];
+        measurePath(path, plan.cells);
+        QVERIFY(path.turnSeconds > 0.0);
+        VehicleSettings rover;
+        rover.maxWaypoints = 0;
+        const AutopilotMission mission = autopilotMission(path, rover, shaping(0.0, true));
+        QCOMPARE(mission.parts.size(), std::size_t{1});
+        const double seconds = partSeconds(mission, mission.parts[0], rover, plan.cells);
+        QVERIFY2(std::abs(seconds - mission.seconds) < 1e-9 * mission.seconds,
+                 qPrintable(QStringLiteral("%1 s, the mission %2 s").arg(seconds).arg(mission.seconds)));
     }
 
     void aircraftTakeOffAtTheStartAndReturnToItInEveryPart() {
