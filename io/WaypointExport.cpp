@@ -534,13 +534,13 @@ std::string sortieFilesNote(const ExportContext& context, int robot, const std::
 
 namespace {
 
-// "538 to 607 items", or "607 items each" when the parts are as big as one another.
+// "538 to 607 items", or "607 items" when the parts are as big as one another.
 std::string partSizes(const AutopilotMission& mission) {
     const auto [fewest, most] =
         std::minmax_element(mission.parts.begin(), mission.parts.end(),
                             [](const MissionPart& a, const MissionPart& b) { return a.items < b.items; });
     return fewest->items == most->items
-               ? std::to_string(most->items) + " items each"
+               ? std::to_string(most->items) + " items"
                : std::to_string(fewest->items) + " to " + std::to_string(most->items) + " items";
 }
 
