@@ -773,6 +773,12 @@ void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
                     [](const VehicleSettings& vehicle) { return vehicle.cruiseSpeedMetresPerSecond > 0.0; }))
         problem.notes.push_back(
             {IssueSeverity::Warning, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission)});
+    else if (std::any_of(vehicles.begin(), vehicles.end(),
+                         [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
+        problem.notes.push_back({IssueSeverity::Warning, "aircraft-at-ground-speeds",
+                                 "aircraft fly at the class table's speeds, which are a ground robot's in "
+                                 "the presets: give them a "
+                                 "cruise speed (--cruise-speed, exports.cruise_speed_mps) for flight times"});
 }
 
 std::vector<VehicleSettings> robotVehicles(const Mission& mission) {

@@ -28,6 +28,15 @@ std::size_t editDistance(const std::string& from, const std::string& to) {
 
 std::optional<std::string> closestName(const std::string& typed, const std::vector<std::string>& known) {
     const std::string wanted = lowercase(typed);
+    // A part of a name ("worldcover" for "esa-worldcover") means that name when it is the only one so.
+    if (wanted.size() >= 3) {
+        std::vector<std::string> holding;
+        for (const std::string& name : known)
+            if (lowercase(name).find(wanted) != std::string::npos)
+                holding.push_back(name);
+        if (holding.size() == 1)
+            return holding.front();
+    }
     std::optional<std::string> best;
     std::size_t bestDistance = std::max<std::size_t>(2, wanted.size() / 4) + 1;
     for (const std::string& name : known) {

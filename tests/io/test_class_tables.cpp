@@ -97,7 +97,7 @@ class ClassTablesTest : public QObject {
         QVERIFY(unknown.error().find("esa-worldcover") != std::string::npos);
         QVERIFY(unknown.error().find("did you mean") == std::string::npos); // nothing that close
         // A name typed in other case, or a letter or two off, gets the one it most likely meant.
-        for (const char* typed : {"ESA-WorldCover", "esa-worldcovr", "esa_worldcover"}) {
+        for (const char* typed : {"ESA-WorldCover", "esa-worldcovr", "esa_worldcover", "worldcover"}) {
             const auto misspelt = presetClassTable(typed);
             QVERIFY(!misspelt.ok());
             QVERIFY2(misspelt.error().find("did you mean \"esa-worldcover\"?") != std::string::npos,

@@ -165,6 +165,7 @@ class MissionFilesTest : public QObject {
         for (RobotSpec& robot : mission.robots)
             robot.vehicle.cruiseSpeedMetresPerSecond.reset();
         mission.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
+        mission.robots[1].vehicle.type.reset(); // rovers all, until the end
         PlanningProblem problem;
         problem.classes = ClassTable({{1, "grass", 0x00ff00, 1.5, 10.0, true},
                                       {2, "forest", 0x008000, 0.5, 5.0, true},
@@ -198,6 +199,18 @@ class MissionFilesTest : public QObject {
         QVERIFY(mixed.notes[0].severity == IssueSeverity::Warning);
         QVERIFY2(mixed.notes[0].message.find("beta 6 m/s") != std::string::npos,
                  mixed.notes[0].message.c_str());
+
+        // A drone without a cruise speed flies at the table's speeds: said, since presets give a ground
+        // robot's.
+        for (RobotSpec& robot : mission.robots)
+            robot.vehicle.cruiseSpeedMetresPerSecond.reset();
+        mission.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
+        mission.robots[1].vehicle.type = VehicleType::Multirotor;
+        PlanningProblem aircraft = problem;
+        applyRobotSettings(mission, aircraft);
+        QVERIFY(aircraft.classes == landCover);
+        QCOMPARE(aircraft.notes.size(), std::size_t{1});
+        QCOMPARE(aircraft.notes[0].code, std::string("aircraft-at-ground-speeds"));
     }
 
     void minimalMissionGetsDefaults() {
