@@ -439,6 +439,7 @@ void BatchRunner::applyVehicleFlags() {
     apply(options_.altitudeMetres, fleet.altitudeMetres, &io::VehicleOverrides::altitudeMetres);
     apply(options_.cruiseSpeedMetresPerSecond, fleet.cruiseSpeedMetresPerSecond,
           &io::VehicleOverrides::cruiseSpeedMetresPerSecond);
+    apply(options_.flightTimeSeconds, fleet.flightTimeSeconds, &io::VehicleOverrides::flightTimeSeconds);
 }
 
 void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) {
@@ -451,6 +452,8 @@ void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) 
         io::sortieFilesNote(context, robot, "robot_" + std::to_string(io::robotNumber(robot)) + ".plan");
     if (!sorties.empty())
         note(sorties + ", and as .waypoints files");
+    if (const std::string tooLong = io::flightTimeWarning(context, robot); !tooLong.empty())
+        warn(tooLong);
 }
 
 void BatchRunner::removeStaleRobotFiles(

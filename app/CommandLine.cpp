@@ -45,7 +45,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--max-waypoints", "N", true, false},  FlagSpec{"--event", "T:ROBOT:FACTOR", true, true},
     FlagSpec{"--charger", "X,Y", true, true},       FlagSpec{"--vehicle", "TYPE", true, false},
     FlagSpec{"--altitude", "M", true, false},       FlagSpec{"--cruise-speed", "M/S", true, false},
-    FlagSpec{"--fov-scale", "F", true, false},
+    FlagSpec{"--fov-scale", "F", true, false},      FlagSpec{"--flight-time", "T", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -79,6 +79,22 @@ std::optional<SpeedEvent> parseEvent(std::string_view text) {
     if (!time || !robot || !factor)
         return std::nullopt;
     return SpeedEvent{*time, *robot, *factor};
+}
+
+// "1500", "1500 s", "25min", "0.5 h": seconds.
+std::optional<double> parseDuration(std::string_view text) {
+    text = trimmedText(text);
+    const std::size_t unitStart = text.find_first_not_of("0123456789.+-eE");
+    std::string_view unit = unitStart == std::string_view::npos ? std::string_view() : text.substr(unitStart);
+    unit = trimmedText(unit);
+    const double perUnit = unit.empty() || unit == "s" ? 1.0
+                           : unit == "min"             ? 60.0
+                           : unit == "h"               ? 3600.0
+                                                       : 0.0;
+    const auto number = parseFiniteNumber(text.substr(0, unitStart));
+    if (!number || perUnit == 0.0)
+        return std::nullopt;
+    return *number * perUnit;
 }
 
 std::optional<int> parsePositiveInteger(std::string_view text) {
@@ -380,6 +396,13 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 *options.cruiseSpeedMetresPerSecond > 1000.0)
                 return failure("--cruise-speed: " + quoted(value) +
                                " is not a speed (0 for the land-cover speeds, up to 1000 m/s)");
+        } else if (flag == "--flight-time") {
+            options.flightTimeSeconds = parseDuration(value);
+            if (!options.flightTimeSeconds)
+                return failure("--flight-time: " + quoted(value) +
+                               " is not a duration (seconds, or a number with s, min or h: 25min)");
+            if (const auto problem = io::flightTimeProblem(*options.flightTimeSeconds))
+                return failure("--flight-time " + quoted(value) + ": " + *problem);
         } else if (flag == "--fov-scale") {
             options.fieldOfViewScale = parseFiniteNumber(value);
             if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||
@@ -497,6 +520,10 @@ std::string CommandLine::usage() {
            "                           every passable class instead of the class table's speeds (a\n"
            "                           drone's speed does not follow the ground under it), and the waypoint\n"
            "                           files command it (0: the land-cover speeds, the default)\n"
+           "  --flight-time T          the longest flight one battery allows, in seconds or with a unit\n"
+           "                           (25min, 0.5h; 0: no limit, the default): each robot's waypoint\n"
+           "                           files are split into parts that each fit it, an aircraft's trips\n"
+           "                           from its start and back included\n"
            "  --fov-scale F            every class's field of view times F, e.g. 4 for a drone whose\n"
            "                           camera sees four times as wide as the table's ground robot; land\n"
            "                           covers keep their proportions (forest half as far as grass)\n"
@@ -511,8 +538,8 @@ std::string CommandLine::usage() {
            "\n"
            "Mission files (format: docs/mission-format.md) may be combined with --band, --area, --no-go,\n"
            "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths,\n"
-           "--cell-polygons, --max-waypoints, --vehicle, --altitude, --cruise-speed and --fov-scale, which\n"
-           "override the mission's values.\n"
+           "--cell-polygons, --max-waypoints, --vehicle, --altitude, --cruise-speed, --flight-time and\n"
+           "--fov-scale, which override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"

@@ -54,6 +54,7 @@ struct CommandLineOptions {
     std::optional<io::VehicleType> vehicleType; // --vehicle: every robot's
     std::optional<double> altitudeMetres;       // --altitude: every robot's waypoint altitude
     std::optional<double> cruiseSpeedMetresPerSecond; // --cruise-speed: every robot's
+    std::optional<double> flightTimeSeconds;          // --flight-time: every robot's, for waypoint files
     std::optional<double> fieldOfViewScale;           // --fov-scale: every class's FOV times it
     std::vector<SpeedEvent> events;                   // --event, in the order given
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <optional>
 
 namespace mcpp::io {
@@ -140,16 +141,133 @@ double flightSeconds(const AutopilotMission& mission) {
     return seconds;
 }
 
-// The parts a mission splits into when each holds at most `capacity` items, filled one after the other.
-std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, int capacity, int beside) {
+// The time of one flight along a part of a mission, kept as points are added, so that a part can be held
+// against a battery point by point: the legs at their commanded speeds, the turns priced as the plan prices
+// them, and for an aircraft the trips from home (the mission's first point) and back.
+class FlightClock {
+  public:
+    FlightClock(const AutopilotMission& mission, const VehicleSettings& vehicle, const CellGraph& cells)
+        : mission_(&mission), cells_(&cells), fromHome_(isAircraft(vehicle.type)) {}
+
+    // A new flight from the part's first point (after the trip to it from home).
+    void begin(std::size_t first) {
+        seconds_ = 0.0;
+        unknown_ = false;
+        heading_.reset();
+        last_ = first;
+        if (fromHome_)
+            fly(mission_->points.front(), mission_->points[first], mission_->commandedSpeeds[first]);
+        tripOut_ = seconds_;
+    }
+    // On to the next point of the mission.
+    void extend() {
+        ++last_;
+        fly(mission_->points[last_ - 1], mission_->points[last_], mission_->commandedSpeeds[last_]);
+    }
+    // The flight ending at the last point added (and back home); 0 when a speed is unknown.
+    [[nodiscard]] double seconds() const {
+        FlightClock ended = *this;
+        if (fromHome_)
+            ended.fly(mission_->points[last_], mission_->points.front(), mission_->commandedSpeeds[last_]);
+        return ended.unknown_ ? 0.0 : ended.seconds_;
+    }
+    // The same without the trips from home and back: the work one flight does.
+    [[nodiscard]] double workSeconds() const { return unknown_ ? 0.0 : seconds_ - tripOut_; }
+
+  private:
+    void fly(const Waypoint& from, const Waypoint& to, double speed) {
+        const double dx = to.x - from.x;
+        const double dy = to.y - from.y;
+        const double length = std::hypot(dx, dy);
+        if (length == 0.0)
+            return;
+        unknown_ = unknown_ || !(speed > 0.0);
+        seconds_ += speed > 0.0 ? length / speed : 0.0;
+        if (heading_)
+            seconds_ += turnSecondsAt(from, heading_->first, heading_->second, dx, dy, *cells_);
+        heading_ = std::make_pair(dx, dy);
+    }
+
+    const AutopilotMission* mission_;
+    const CellGraph* cells_;
+    bool fromHome_ = false;
+    double seconds_ = 0.0;
+    double tripOut_ = 0.0;
+    bool unknown_ = false;
+    std::optional<std::pair<double, double>> heading_; // of the last leg of non-zero length
+    std::size_t last_ = 0;
+};
+
+// Legs split into pieces of at most a twentieth of a flight, so that a part can end part way along a leg
+// longer than what is left of a battery: a survey's straight legs run for kilometres, and a part ending
+// only at turns would lose up to a leg's flight to each cut, or not fit a flight at all.
+void splitLongLegs(AutopilotMission& mission, double flightSeconds) {
+    constexpr double piecesPerFlight = 20.0;
+    const double pieceSeconds = flightSeconds / piecesPerFlight;
+    AutopilotMission split;
+    for (std::size_t point = 0; point < mission.points.size(); ++point) {
+        const double speed = mission.commandedSpeeds[point];
+        if (point > 0 && speed > 0.0) {
+            const Waypoint& from = mission.points[point - 1];
+            const Waypoint& to = mission.points[point];
+            const double seconds = std::hypot(to.x - from.x, to.y - from.y) / speed;
+            const int pieces = static_cast<int>(std::ceil(seconds / pieceSeconds));
+            for (int piece = 1; piece < pieces; ++piece) {
+                const double along = static_cast<double>(piece) / pieces;
+                Waypoint between = along < 0.5 ? from : to; // its cell, for the price of a turn there
+                between.x = from.x + along * (to.x - from.x);
+                between.y = from.y + along * (to.y - from.y);
+                split.points.push_back(between);
+                split.commandedSpeeds.push_back(speed);
+            }
+        }
+        split.points.push_back(mission.points[point]);
+        split.commandedSpeeds.push_back(speed);
+    }
+    mission.points = std::move(split.points);
+    mission.commandedSpeeds = std::move(split.commandedSpeeds);
+}
+
+// What one part may hold: items (home and first speed command included) and seconds of flight (0: any).
+struct PartLimits {
+    int items = 0;
+    double seconds = 0.0;
+};
+
+// The parts a mission splits into when each keeps within the limits, filled one after the other. A part
+// holds at least two points. One whose flight is already longer than the limit (a stretch out of one
+// flight's reach of the start) goes on until its work alone, without the trips, would be: cut at every point,
+// it would make a file a point.
+std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, PartLimits limits, int beside,
+                                         FlightClock clock) {
+    const bool timed = limits.seconds > 0.0;
     std::vector<MissionPart> parts;
     MissionPart part{0, 0, beside + 1};
+    double soFar = 0.0; // seconds of the part's flight so far, when timed
+    if (timed)
+        clock.begin(0);
     for (std::size_t point = 1; point < mission.points.size(); ++point) {
         const int added = mission.changesSpeedAt(point) ? 2 : 1;
-        if (part.items + added > capacity && part.last > part.first) {
+        FlightClock longer = clock;
+        double longerSeconds = 0.0;
+        if (timed) {
+            longer.extend();
+            longerSeconds = longer.seconds();
+        }
+        const bool tooLong = timed && longerSeconds > limits.seconds &&
+                             (soFar <= limits.seconds || longer.workSeconds() > limits.seconds);
+        if ((part.items + added > limits.items || tooLong) && part.last > part.first) {
             parts.push_back(part);
             part = {part.last, part.last, beside + 1};
+            if (timed) {
+                clock.begin(part.first);
+                longer = clock;
+                longer.extend();
+                longerSeconds = longer.seconds();
+            }
         }
+        clock = longer;
+        soFar = longerSeconds;
         part.last = point;
         part.items += added;
     }
@@ -157,30 +275,40 @@ std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, int ca
     return parts;
 }
 
-// As few parts as the limit allows, as even as they can be: the smallest capacity that needs no more parts
-// than filling each to the limit does. Filled to the limit alone, the last part could hold three items.
-void splitIntoParts(AutopilotMission& mission, int maxWaypoints, int beside) {
+// As few parts as the limits allow, as even as they can be: the smallest share of the limits that needs no
+// more parts than filling each to the limits does. Filled to the limits alone, the last part could hold three
+// items or a minute's flight.
+void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, const CellGraph& cells) {
     const std::size_t count = mission.points.size();
     if (count == 0)
         return;
+    const int beside = itemsBesideWaypoints(vehicle.type);
     mission.items = beside + 1;
     for (std::size_t point = 1; point < count; ++point)
         mission.items += mission.changesSpeedAt(point) ? 2 : 1;
-    if (maxWaypoints <= 0 || mission.items <= maxWaypoints || count < 2) {
-        mission.parts.push_back({0, count - 1, mission.items});
-        return;
+    FlightClock clock(mission, vehicle, cells);
+    const int itemLimit = vehicle.maxWaypoints > 0 ? vehicle.maxWaypoints : std::numeric_limits<int>::max();
+    const PartLimits full{itemLimit, vehicle.flightTimeSeconds};
+    std::vector<MissionPart> parts = partsFilledUpTo(mission, full, beside, clock);
+    const std::size_t fewest = parts.size();
+    // Two waypoints with a speed change between them are the least a part holds.
+    const auto share = [&](double fraction) {
+        return PartLimits{std::max(beside + 3, static_cast<int>(std::min<double>(itemLimit, 1e9) * fraction)),
+                          full.seconds * fraction};
+    };
+    double tooSmall = 0.0;
+    double enough = 1.0;
+    while (fewest > 1 && enough - tooSmall > 1e-4) {
+        const double fraction = (tooSmall + enough) / 2.0;
+        std::vector<MissionPart> tried = partsFilledUpTo(mission, share(fraction), beside, clock);
+        if (tried.size() <= fewest) {
+            enough = fraction;
+            parts = std::move(tried);
+        } else {
+            tooSmall = fraction;
+        }
     }
-    const std::size_t fewest = partsFilledUpTo(mission, maxWaypoints, beside).size();
-    int tooSmall = beside + 2; // two waypoints with a speed change between them do not fit
-    int enough = maxWaypoints; // fits in the fewest parts
-    while (enough - tooSmall > 1) {
-        const int capacity = tooSmall + (enough - tooSmall) / 2;
-        if (partsFilledUpTo(mission, capacity, beside).size() <= fewest)
-            enough = capacity;
-        else
-            tooSmall = capacity;
-    }
-    mission.parts = partsFilledUpTo(mission, enough, beside);
+    mission.parts = std::move(parts);
 }
 
 } // namespace
@@ -211,13 +339,17 @@ double roundedSpeed(double metresPerSecond) {
 }
 
 AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
-                                  const ExportSettings& settings) {
+                                  const ExportSettings& settings, const CellGraph& cells) {
     AutopilotMission mission;
     const bool byLeg = settings.speedChangesAtTurnsOnly && !(vehicle.cruiseSpeedMetresPerSecond > 0.0);
     const SpeedSteps speeds = byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
                                     : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
     keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
-    splitIntoParts(mission, vehicle.maxWaypoints, itemsBesideWaypoints(vehicle.type));
+    if (vehicle.flightTimeSeconds > 0.0)
+        splitLongLegs(mission, vehicle.flightTimeSeconds);
+    splitIntoParts(mission, vehicle, cells);
+    for (MissionPart& part : mission.parts)
+        part.seconds = partSeconds(mission, part, vehicle, cells);
     const double flight = flightSeconds(mission);
     // Turns are made at the same points, so they cost what the plan priced them at.
     mission.seconds = flight > 0.0 ? flight + path.turnSeconds : 0.0;
@@ -226,41 +358,25 @@ AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSetting
 
 double partSeconds(const AutopilotMission& mission, const MissionPart& part, const VehicleSettings& vehicle,
                    const CellGraph& cells) {
-    // The flight's points and the speed commanded on the leg into each.
-    std::vector<std::pair<Waypoint, double>> flight;
-    const bool fromHome = isAircraft(vehicle.type);
-    if (fromHome)
-        flight.emplace_back(mission.points.front(), 0.0);
-    for (std::size_t point = part.first; point <= part.last; ++point)
-        flight.emplace_back(mission.points[point], mission.commandedSpeeds[point]);
-    if (fromHome)
-        flight.emplace_back(mission.points.front(), mission.commandedSpeeds[part.last]);
-    double seconds = 0.0;
-    std::optional<std::pair<double, double>> heading; // of the last leg of non-zero length
-    for (std::size_t i = 1; i < flight.size(); ++i) {
-        const Waypoint& from = flight[i - 1].first;
-        const Waypoint& to = flight[i].first;
-        const double dx = to.x - from.x;
-        const double dy = to.y - from.y;
-        const double length = std::hypot(dx, dy);
-        if (length == 0.0)
-            continue;
-        if (!(flight[i].second > 0.0))
-            return 0.0;
-        seconds += length / flight[i].second;
-        if (heading)
-            seconds += turnSecondsAt(from, heading->first, heading->second, dx, dy, cells);
-        heading = std::make_pair(dx, dy);
-    }
-    return seconds;
+    FlightClock clock(mission, vehicle, cells);
+    clock.begin(part.first);
+    for (std::size_t point = part.first; point < part.last; ++point)
+        clock.extend();
+    return clock.seconds();
 }
 
 MissionSize missionSize(const CoveragePath& path, const CellGraph& cells, const VehicleSettings& vehicle,
                         const ExportSettings& settings) {
     CoveragePath whole;
     const AutopilotMission mission = autopilotMission(
-        pathForWaypointFiles(path, cells, settings.mergeCollinear, whole), vehicle, settings);
-    return {mission.items, mission.parts.size()};
+        pathForWaypointFiles(path, cells, settings.mergeCollinear, whole), vehicle, settings, cells);
+    MissionSize size{mission.items, mission.parts.size()};
+    for (const MissionPart& part : mission.parts) {
+        size.longestPartSeconds = std::max(size.longestPartSeconds, part.seconds);
+        if (vehicle.flightTimeSeconds > 0.0 && part.seconds > vehicle.flightTimeSeconds)
+            ++size.partsOverFlightTime;
+    }
+    return size;
 }
 
 std::string missionPartPath(const std::string& path, std::size_t part) {

@@ -15,7 +15,8 @@ namespace mcpp::io {
 struct MissionPart {
     std::size_t first = 0;
     std::size_t last = 0;
-    int items = 0; // its mission items, home and first speed command included
+    int items = 0;        // its mission items, home and first speed command included
+    double seconds = 0.0; // its flight, as partSeconds times it
 };
 
 // A robot's path as an autopilot flies it: its turning points and the points where the commanded speed
@@ -47,9 +48,12 @@ struct AutopilotMission {
 // speedChangesAtTurnsOnly, each straight leg at the slowest land-cover speed along it, rounded down (a leg
 // keeps the speed before it when it would allow at most the tolerance more). With mergeCollinear, a point on
 // the straight segment between its neighbours that commands no new speed is left out. Parts hold at most
-// the vehicle's maxWaypoints items (home, a first speed command, waypoints and speed changes).
+// the vehicle's maxWaypoints items (home, a first speed command, waypoints and speed changes) and each fits
+// its flightTimeSeconds as partSeconds times it (cells: the plan's, for the turns); with a flight time, legs
+// get points along them so that a part can end part way. A part beyond one flight's reach holds a flight's
+// work.
 [[nodiscard]] AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
-                                                const ExportSettings& settings);
+                                                const ExportSettings& settings, const CellGraph& cells);
 
 // Seconds one part of a mission takes at its commanded speeds, turning where the plan prices turns (cells:
 // the plan's); an aircraft's part also flies from home (the mission's first point) to its first waypoint
@@ -60,7 +64,9 @@ struct AutopilotMission {
 // How big a robot's waypoint files come out: what the results panel shows before anything is exported.
 struct MissionSize {
     int items = 0;         // of the whole mission in one file
-    std::size_t parts = 0; // the files the vehicle's item limit splits it into
+    std::size_t parts = 0; // the files the vehicle's item limit and flight time split it into
+    double longestPartSeconds = 0.0;
+    std::size_t partsOverFlightTime = 0; // out of one flight's reach: a part holds at least two points
 };
 // The size of the mission of a robot's path, made as the waypoint files make it (cells: the plan's).
 [[nodiscard]] MissionSize missionSize(const CoveragePath& path, const CellGraph& cells,

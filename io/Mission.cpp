@@ -245,7 +245,8 @@ bool readVehicle(MissionReader& reader, const QJsonObject& object, const std::st
         !reader.optional(object, path, "altitude_m", vehicle.altitudeMetres, &MissionReader::number) ||
         !reader.optional(object, path, "cruise_speed_mps", vehicle.cruiseSpeedMetresPerSecond,
                          &MissionReader::number) ||
-        !reader.optional(object, path, "max_waypoints", vehicle.maxWaypoints, &MissionReader::integer)) {
+        !reader.optional(object, path, "max_waypoints", vehicle.maxWaypoints, &MissionReader::integer) ||
+        !reader.optional(object, path, "flight_time_s", vehicle.flightTimeSeconds, &MissionReader::number)) {
         return false;
     }
     if (vehicle.altitudeMetres && (*vehicle.altitudeMetres < 0.0 || *vehicle.altitudeMetres > 10000.0))
@@ -260,6 +261,9 @@ bool readVehicle(MissionReader& reader, const QJsonObject& object, const std::st
                            "must be 0 (no limit) or at least " + std::to_string(minimumMaxWaypoints) +
                                " mission items");
     }
+    if (vehicle.flightTimeSeconds)
+        if (const auto problem = flightTimeProblem(*vehicle.flightTimeSeconds))
+            return reader.fail(MissionReader::join(path, "flight_time_s"), *problem);
     return true;
 }
 
@@ -272,6 +276,8 @@ void writeVehicle(JsonValue& object, const VehicleOverrides& vehicle) {
         object.add("cruise_speed_mps", *vehicle.cruiseSpeedMetresPerSecond);
     if (vehicle.maxWaypoints)
         object.add("max_waypoints", *vehicle.maxWaypoints);
+    if (vehicle.flightTimeSeconds)
+        object.add("flight_time_s", *vehicle.flightTimeSeconds);
 }
 
 bool readEvent(MissionReader& reader, const QJsonValue& value, const std::string& path,
@@ -321,7 +327,7 @@ bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string
         return false;
     if (!reader.onlyKeys(object, path,
                          {"name", "start", "start_crs", "vehicle", "altitude_m", "cruise_speed_mps",
-                          "max_waypoints", "battery_s", "charger"}))
+                          "max_waypoints", "flight_time_s", "battery_s", "charger"}))
         return false;
     if (!reader.optional(object, path, "battery_s", robot.batterySeconds, &MissionReader::number))
         return false;
@@ -437,8 +443,9 @@ bool readExports(MissionReader& reader, const QJsonValue& value, ExportSettings&
     if (!reader.object(value, path, object))
         return false;
     if (!reader.onlyKeys(object, path,
-                         {"vehicle", "altitude_m", "cruise_speed_mps", "max_waypoints", "speed_tolerance",
-                          "speed_changes_at_turns_only", "merge_collinear", "dense_paths", "cell_polygons"}))
+                         {"vehicle", "altitude_m", "cruise_speed_mps", "max_waypoints", "flight_time_s",
+                          "speed_tolerance", "speed_changes_at_turns_only", "merge_collinear", "dense_paths",
+                          "cell_polygons"}))
         return false;
     VehicleOverrides vehicle;
     if (!readVehicle(reader, object, path, vehicle))
@@ -677,6 +684,7 @@ std::string missionToJson(const Mission& mission) {
     exports.add("altitude_m", mission.exports.vehicle.altitudeMetres);
     exports.add("cruise_speed_mps", mission.exports.vehicle.cruiseSpeedMetresPerSecond);
     exports.add("max_waypoints", mission.exports.vehicle.maxWaypoints);
+    exports.add("flight_time_s", mission.exports.vehicle.flightTimeSeconds);
     exports.add("speed_tolerance", mission.exports.speedTolerance);
     exports.add("speed_changes_at_turns_only", mission.exports.speedChangesAtTurnsOnly);
     exports.add("merge_collinear", mission.exports.mergeCollinear);

@@ -124,6 +124,9 @@ struct ExportContext {
 // What a user should know when a robot's mission is written in parts beside `path` (its whole-file name);
 // empty when it is written whole.
 [[nodiscard]] std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path);
+// What a user must know when some of a robot's mission parts take longer than its vehicle's flight time (a
+// part holds at least two points: its path goes out of one flight's reach); empty when all fit.
+[[nodiscard]] std::string flightTimeWarning(const ExportContext& context, int robot);
 
 // Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive
 // parts beside `path` (missionPartPath), each beginning where the one before it ended, and `path` itself is

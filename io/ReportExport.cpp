@@ -86,14 +86,15 @@ std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
 void addMissionFileIssues(JsonValue& issues, const ExportContext& context) {
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
         const std::string file = "robot_" + std::to_string(robotNumber(robot.robot)) + ".plan";
-        const std::pair<const char*, std::string> notes[] = {
-            {"mission-split", splitMissionNote(context, robot.robot, file)},
-            {"mission-sorties", sortieFilesNote(context, robot.robot, file)}};
-        for (const auto& [code, message] : notes) {
+        const std::tuple<const char*, const char*, std::string> notes[] = {
+            {"information", "mission-split", splitMissionNote(context, robot.robot, file)},
+            {"warning", "flight-time-exceeded", flightTimeWarning(context, robot.robot)},
+            {"information", "mission-sorties", sortieFilesNote(context, robot.robot, file)}};
+        for (const auto& [severity, code, message] : notes) {
             if (message.empty())
                 continue;
             JsonValue& item = issues.push(JsonValue::object());
-            item.add("severity", "information");
+            item.add("severity", severity);
             item.add("code", code);
             item.add("message", message + ", and the same for its .waypoints file");
         }
@@ -134,13 +135,14 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
         item.add("vehicle", vehicleTypeKey(vehicle.type));
         item.add("max_waypoints", vehicle.maxWaypoints);
+        item.add("flight_time_s", vehicle.flightTimeSeconds);
         item.add("mission_items", mission.items);
         item.add("mission_parts", static_cast<int>(mission.parts.size()));
         item.add("mission_time_s", mission.seconds);
         // Each file's own flight, for a battery: an aircraft's with its trips to and from the start.
         JsonValue& partSeconds = item.add("mission_part_seconds", JsonValue::array());
         for (const MissionPart& part : mission.parts)
-            partSeconds.push(io::partSeconds(mission, part, vehicle, context.plan.cells));
+            partSeconds.push(part.seconds);
         if (sorties != nullptr)
             addSorties(item, context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
         if (timeline != nullptr)

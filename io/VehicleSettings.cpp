@@ -1,5 +1,7 @@
 #include "io/VehicleSettings.hpp"
 
+#include "core/model/HumanUnits.hpp"
+
 namespace mcpp::io {
 
 std::string vehicleTypeKey(VehicleType type) {
@@ -40,6 +42,7 @@ VehicleSettings VehicleOverrides::over(const VehicleSettings& defaults) const {
     settings.cruiseSpeedMetresPerSecond =
         cruiseSpeedMetresPerSecond.value_or(defaults.cruiseSpeedMetresPerSecond);
     settings.maxWaypoints = maxWaypoints.value_or(defaults.maxWaypoints);
+    settings.flightTimeSeconds = flightTimeSeconds.value_or(defaults.flightTimeSeconds);
     return settings;
 }
 
@@ -53,7 +56,16 @@ VehicleOverrides VehicleOverrides::between(const VehicleSettings& defaults, cons
         overrides.cruiseSpeedMetresPerSecond = wanted.cruiseSpeedMetresPerSecond;
     if (wanted.maxWaypoints != defaults.maxWaypoints)
         overrides.maxWaypoints = wanted.maxWaypoints;
+    if (wanted.flightTimeSeconds != defaults.flightTimeSeconds)
+        overrides.flightTimeSeconds = wanted.flightTimeSeconds;
     return overrides;
+}
+
+std::optional<std::string> flightTimeProblem(double seconds) {
+    if (seconds == 0.0 || (seconds >= minimumFlightTimeSeconds && seconds <= maximumFlightTimeSeconds))
+        return std::nullopt;
+    return "must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 s), not " +
+           formatQuantity(seconds) + " s";
 }
 
 } // namespace mcpp::io

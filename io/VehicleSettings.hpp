@@ -22,6 +22,9 @@ struct VehicleSettings {
     // Mission items the autopilot holds, its home included (ArduPilot boards hold a few hundred to about
     // 700); a longer mission is split into consecutive parts. 0: no limit.
     int maxWaypoints = 700;
+    // The longest flight one battery allows: a mission whose flight takes longer is split into parts that
+    // each fit it, an aircraft's trips from its start and back included. 0: no limit.
+    double flightTimeSeconds = 0.0;
 
     friend bool operator==(const VehicleSettings&, const VehicleSettings&) = default;
 };
@@ -32,9 +35,10 @@ struct VehicleOverrides {
     std::optional<double> altitudeMetres;
     std::optional<double> cruiseSpeedMetresPerSecond;
     std::optional<int> maxWaypoints;
+    std::optional<double> flightTimeSeconds;
 
     [[nodiscard]] bool empty() const {
-        return !type && !altitudeMetres && !cruiseSpeedMetresPerSecond && !maxWaypoints;
+        return !type && !altitudeMetres && !cruiseSpeedMetresPerSecond && !maxWaypoints && !flightTimeSeconds;
     }
     [[nodiscard]] VehicleSettings over(const VehicleSettings& defaults) const;
     // The overrides that make `wanted` from `defaults`: only the values that differ.
@@ -58,5 +62,11 @@ struct VehicleOverrides {
 // The smallest item limit that leaves room, for any vehicle, for a part's items besides its waypoints and
 // two waypoints with a speed change between them.
 constexpr int minimumMaxWaypoints = 8;
+
+// The shortest flight time a vehicle may be given: below a minute no survey flight is worth a takeoff.
+constexpr double minimumFlightTimeSeconds = 60.0;
+constexpr double maximumFlightTimeSeconds = 3600.0 * 1000.0;
+// What is wrong with a flight time, for any reader to name with its field: 0 (no limit) or 60 s to 1000 h.
+[[nodiscard]] std::optional<std::string> flightTimeProblem(double seconds);
 
 } // namespace mcpp::io

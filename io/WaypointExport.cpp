@@ -76,7 +76,7 @@ ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context,
             CoveragePath whole;
             entry->mission = autopilotMission(
                 pathForWaypointFiles(*coverage, context.plan.cells, context.settings.mergeCollinear, whole),
-                context.vehicle(robot), context.settings);
+                context.vehicle(robot), context.settings, context.plan.cells);
         }
     });
     return *entry; // the cache keeps it as long as the context
@@ -480,7 +480,8 @@ Status writeSortieMissions(const ExportContext& context, int robot, const Covera
     const std::size_t count = sorties->sorties.size() < 2 ? 0 : sorties->sorties.size();
     for (std::size_t sortie = 0; sortie < count; ++sortie) {
         const CoveragePath flight = sortiePath(coverage, sorties->sorties[sortie]);
-        const AutopilotMission mission = autopilotMission(flight, context.vehicle(robot), context.settings);
+        const AutopilotMission mission =
+            autopilotMission(flight, context.vehicle(robot), context.settings, context.plan.cells);
         const std::string file = missionSortiePath(path, sortie);
         auto lonLats = lonLatsOf(context, mission);
         if (!lonLats)
@@ -545,15 +546,32 @@ std::string partSizes(const AutopilotMission& mission) {
 }
 
 // "; the longest part takes 24 min 10 s", for a battery; nothing when a speed is unknown.
-std::string longestPartNote(const ExportContext& context, int robot, const AutopilotMission& mission) {
-    const VehicleSettings& vehicle = context.vehicle(robot);
-    double longest = 0.0;
-    for (const MissionPart& part : mission.parts)
-        longest = std::max(longest, partSeconds(mission, part, vehicle, context.plan.cells));
-    if (!(longest > 0.0))
+std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
+    const auto longest =
+        std::max_element(mission.parts.begin(), mission.parts.end(),
+                         [](const MissionPart& a, const MissionPart& b) { return a.seconds < b.seconds; });
+    if (!(longest->seconds > 0.0))
         return {};
-    return "; the longest part takes " + formatDuration(longest) +
+    return "; the longest part takes " + formatDuration(longest->seconds) +
            (isAircraft(vehicle.type) ? " with its flights to and from the start" : "");
+}
+
+// Why the mission is in parts: "has 21 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min,
+// longer than its 25 min flight time".
+std::string splitReason(const ExportContext& context, int robot, const AutopilotMission& mission) {
+    const VehicleSettings& vehicle = context.vehicle(robot);
+    std::vector<std::string> reasons;
+    if (vehicle.maxWaypoints > 0 && mission.items > vehicle.maxWaypoints)
+        reasons.push_back("has " + std::to_string(mission.items) + " items, more than its autopilot's " +
+                          std::to_string(vehicle.maxWaypoints));
+    const double whole = partSeconds(mission, {0, mission.points.size() - 1}, vehicle, context.plan.cells);
+    if (vehicle.flightTimeSeconds > 0.0 && whole > vehicle.flightTimeSeconds)
+        reasons.push_back("takes " + formatDuration(whole) + ", longer than its " +
+                          formatDuration(vehicle.flightTimeSeconds) + " flight time");
+    std::string reason;
+    for (const std::string& each : reasons)
+        reason += (reason.empty() ? "" : ", and ") + each;
+    return reason;
 }
 
 } // namespace
@@ -562,18 +580,43 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
     const AutopilotMission& mission = autopilotMissionOf(context, robot);
     if (mission.parts.size() <= 1)
         return {};
+    const VehicleSettings& vehicle = context.vehicle(robot);
     const auto partName = [&](std::size_t part) {
         return std::filesystem::path(missionPartPath(path, part)).filename().string();
     };
-    return context.robotName(robot) + "'s mission has " + std::to_string(mission.items) +
-           " items, more than its autopilot's " + std::to_string(context.vehicle(robot).maxWaypoints) +
-           ": written in " + std::to_string(mission.parts.size()) + " parts of " + partSizes(mission) +
+    const std::string aircraft =
+        isAircraft(vehicle.type) ? "; each takes off from the robot's start and returns to it" : "";
+    return context.robotName(robot) + "'s mission " + splitReason(context, robot, mission) + ": written in " +
+           std::to_string(mission.parts.size()) + " parts of " + partSizes(mission) +
            ", each beginning where the one before it ended (" + partName(0) + " to " +
-           partName(mission.parts.size() - 1) + ")" +
-           (isAircraft(context.vehicle(robot).type)
-                ? "; each takes off from the robot's start and returns to it"
-                : "") +
-           longestPartNote(context, robot, mission);
+           partName(mission.parts.size() - 1) + ")" + aircraft + longestPartNote(vehicle, mission);
+}
+
+std::string flightTimeWarning(const ExportContext& context, int robot) {
+    const VehicleSettings& vehicle = context.vehicle(robot);
+    if (!(vehicle.flightTimeSeconds > 0.0))
+        return {};
+    const AutopilotMission& mission = autopilotMissionOf(context, robot);
+    const auto over = std::count_if(mission.parts.begin(), mission.parts.end(), [&](const MissionPart& part) {
+        return part.seconds > vehicle.flightTimeSeconds;
+    });
+    if (over == 0)
+        return {};
+    const double longest =
+        std::max_element(mission.parts.begin(), mission.parts.end(),
+                         [](const MissionPart& a, const MissionPart& b) { return a.seconds < b.seconds; })
+            ->seconds;
+    const std::string which = mission.parts.size() == 1
+                                  ? "its mission takes "
+                                  : std::to_string(over) + " of its " + std::to_string(mission.parts.size()) +
+                                        " mission parts take up to ";
+    const bool aircraft = isAircraft(vehicle.type);
+    return context.robotName(robot) + ": " + which + formatDuration(longest) +
+           (aircraft ? " with the flights to and from its start" : "") + ", longer than its " +
+           formatDuration(vehicle.flightTimeSeconds) + " flight time: " +
+           (aircraft ? "its path goes further from the start than one flight reaches and comes back"
+                     : "its path has stretches longer than one flight") +
+           ". Start robots nearer that ground, or plan with wavefront-battery and chargers";
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

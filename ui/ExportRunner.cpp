@@ -55,6 +55,9 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
             if (const std::string sorties = io::sortieFilesNote(context, robot, path.toStdString());
                 !sorties.empty())
                 outcome.notes << QString::fromStdString(sorties) + QStringLiteral(".");
+        if (format->splitByItemLimit)
+            if (const std::string tooLong = io::flightTimeWarning(context, robot); !tooLong.empty())
+                outcome.notes << QString::fromStdString(tooLong) + QStringLiteral(".");
         progress(file + 1, files);
     }
     return outcome;

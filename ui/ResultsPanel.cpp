@@ -359,11 +359,15 @@ void ResultsPanel::showWaypointFiles(const std::vector<io::MissionSize>& sizes,
     waypointFiles_->setText(waypointFilesText(sizes, vehicles, names));
     QStringList perRobot;
     for (std::size_t robot = 0; robot < sizes.size(); ++robot)
-        perRobot << tr("%1: %2 items, %3")
+        perRobot << tr("%1: %2 items, %3%4")
                         .arg(robotName(names, static_cast<int>(robot)))
                         .arg(sizes[robot].items)
                         .arg(sizes[robot].parts == 1 ? tr("one file")
-                                                     : tr("%1 parts").arg(sizes[robot].parts));
+                                                     : tr("%1 parts").arg(sizes[robot].parts))
+                        .arg(sizes[robot].longestPartSeconds > 0.0
+                                 ? tr(", the longest flight %1")
+                                       .arg(formatDuration(sizes[robot].longestPartSeconds))
+                                 : QString());
     waypointFiles_->setToolTip(perRobot.join(QLatin1Char('\n')));
     summary_->setRowVisible(waypointFiles_, !sizes.empty());
 }
@@ -373,8 +377,10 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
                                         const QStringList& names) {
     QStringList split;
     int largest = 0;
+    std::size_t overFlightTime = 0;
     for (std::size_t robot = 0; robot < sizes.size(); ++robot) {
         largest = std::max(largest, sizes[robot].items);
+        overFlightTime += sizes[robot].partsOverFlightTime;
         if (sizes[robot].parts > 1)
             split << tr("%1 in %2").arg(robotName(names, static_cast<int>(robot))).arg(sizes[robot].parts);
     }
@@ -385,16 +391,26 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
     const QString limit = !vehicles.empty() && oneLimit && vehicles.front().maxWaypoints > 0
                               ? tr(" of %1").arg(vehicles.front().maxWaypoints)
                               : QString();
+    // Parts a flight cannot fly are what a user must not miss.
+    const QString outOfReach =
+        overFlightTime == 0
+            ? QString()
+            : tr("; %1 longer than a flight (out of its reach)")
+                  .arg(overFlightTime == 1 ? tr("1 part") : tr("%1 parts").arg(overFlightTime));
     if (split.isEmpty())
-        return tr("one file per robot, the largest %1%2 items").arg(largest).arg(limit);
+        return tr("one file per robot, the largest %1%2 items").arg(largest).arg(limit) + outOfReach;
     constexpr int named = 6; // more would wrap over many lines
     const qsizetype count = split.size();
     if (count > named)
         split = split.mid(0, named) << tr("…");
     const QString robots = count == 1 ? tr("1 robot") : tr("%1 robots").arg(count);
-    return tr("%1 above the item limit%2, in parts: %3")
-        .arg(robots, limit.isEmpty() ? QString() : tr(" (%1)").arg(vehicles.front().maxWaypoints),
-             split.join(QStringLiteral(", ")));
+    const bool timed = std::any_of(vehicles.begin(), vehicles.end(), [](const io::VehicleSettings& vehicle) {
+        return vehicle.flightTimeSeconds > 0.0;
+    });
+    return tr("%1 above the item limit%2%3, in parts: %4")
+               .arg(robots, limit.isEmpty() ? QString() : tr(" (%1)").arg(vehicles.front().maxWaypoints),
+                    timed ? tr(" or flight time") : QString(), split.join(QStringLiteral(", "))) +
+           outOfReach;
 }
 
 int ResultsPanel::robotLabelStep(int robots, int labelsThatFit) {

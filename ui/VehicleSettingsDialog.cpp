@@ -19,23 +19,27 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     setWindowTitle(tr("Robot vehicles"));
     auto* layout = new QVBoxLayout(this);
     auto* intro = new QLabel(tr("What each robot's waypoint files (.plan, .waypoints) tell its autopilot. A "
-                                "mission with more items than the limit is written in parts, each beginning "
-                                "where the one before it ended; aircraft take off from their start and "
+                                "mission with more items than the limit, or longer than the flight time, is "
+                                "written in parts, each beginning where the one before it ended; aircraft "
+                                "take off from their start and "
                                 "return to it in every part. A cruise speed all robots share is also the "
                                 "speed the plan uses over every passable class."),
                              this);
     intro->setWordWrap(true);
     layout->addWidget(intro);
 
-    table_ = new QTableWidget(static_cast<int>(mission.robots.size()) + 1, 4, this);
-    table_->setHorizontalHeaderLabels(
-        {tr("Vehicle"), tr("Altitude above home (m)"), tr("Cruise speed (m/s)"), tr("Item limit")});
+    table_ = new QTableWidget(static_cast<int>(mission.robots.size()) + 1, 5, this);
+    table_->setHorizontalHeaderLabels({tr("Vehicle"), tr("Altitude above home (m)"), tr("Cruise speed (m/s)"),
+                                       tr("Item limit"), tr("Flight time (min)")});
     table_->horizontalHeaderItem(2)->setToolTip(
         tr("0: each land-cover class's speed. When every robot has the same cruise speed, the plan uses it "
            "over every passable class."));
     table_->horizontalHeaderItem(3)->setToolTip(
         tr("Mission items the autopilot holds, home included: %1 or more, or 0 for no limit")
             .arg(io::minimumMaxWaypoints));
+    table_->horizontalHeaderItem(4)->setToolTip(
+        tr("The longest flight one battery allows. A longer mission is written in parts that each fit it, an "
+           "aircraft's flights from its start and back included. 0: no limit."));
     QStringList names{tr("All robots")};
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         const std::string& name = mission.robots[robot].name;
@@ -79,13 +83,15 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     layout->addWidget(problem_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     okButton_ = buttons->button(QDialogButtonBox::Ok);
-    for (const Row& row : rows_)
-        connect(row.maxWaypoints, &QSpinBox::valueChanged, this, &VehicleSettingsDialog::checkItemLimits);
-    checkItemLimits();
+    for (const Row& row : rows_) {
+        connect(row.maxWaypoints, &QSpinBox::valueChanged, this, &VehicleSettingsDialog::checkLimits);
+        connect(row.flightTime, &QDoubleSpinBox::valueChanged, this, &VehicleSettingsDialog::checkLimits);
+    }
+    checkLimits();
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
-    resize(680, 250 + 32 * static_cast<int>(rows_.size())); // room for the intro and a limit's problem
+    resize(800, 250 + 32 * static_cast<int>(rows_.size())); // room for the intro and a limit's problem
     shownDefaults_ = settingsOf(rows_.front());             // as the boxes show them, for followDefaults
 }
 
@@ -105,17 +111,22 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     widgets.cruiseSpeed->setDecimals(3);
     widgets.cruiseSpeed->setSpecialValueText(tr("land cover"));
     widgets.maxWaypoints = new QSpinBox(table_);
-    // A limit typed below the smallest that works stays as typed, and checkItemLimits says so: clamped, it
+    // A limit typed below the smallest that works stays as typed, and checkLimits says so: clamped, it
     // would have read "no limit" without a word.
     widgets.maxWaypoints->setRange(0, 1000000);
     widgets.maxWaypoints->setSpecialValueText(tr("no limit"));
+    widgets.flightTime = new QDoubleSpinBox(table_);
+    widgets.flightTime->setRange(0.0, io::maximumFlightTimeSeconds / 60.0);
+    widgets.flightTime->setDecimals(3);
+    widgets.flightTime->setSpecialValueText(tr("no limit"));
     show(widgets, settings);
     table_->setCellWidget(row, 0, widgets.type);
     table_->setCellWidget(row, 1, widgets.altitude);
     table_->setCellWidget(row, 2, widgets.cruiseSpeed);
     table_->setCellWidget(row, 3, widgets.maxWaypoints);
-    for (QWidget* widget : std::initializer_list<QWidget*>{widgets.type, widgets.altitude,
-                                                           widgets.cruiseSpeed, widgets.maxWaypoints})
+    table_->setCellWidget(row, 4, widgets.flightTime);
+    for (QWidget* widget : std::initializer_list<QWidget*>{
+             widgets.type, widgets.altitude, widgets.cruiseSpeed, widgets.maxWaypoints, widgets.flightTime})
         widget->setAccessibleName(name);
     if (row == 0) {
         connect(widgets.type, &QComboBox::currentIndexChanged, this, &VehicleSettingsDialog::followDefaults);
@@ -124,6 +135,8 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
         connect(widgets.cruiseSpeed, &QDoubleSpinBox::valueChanged, this,
                 &VehicleSettingsDialog::followDefaults);
         connect(widgets.maxWaypoints, &QSpinBox::valueChanged, this, &VehicleSettingsDialog::followDefaults);
+        connect(widgets.flightTime, &QDoubleSpinBox::valueChanged, this,
+                &VehicleSettingsDialog::followDefaults);
     }
     return widgets;
 }
@@ -134,14 +147,20 @@ io::VehicleSettings VehicleSettingsDialog::settingsOf(const Row& row) {
     settings.altitudeMetres = row.altitude->value();
     settings.cruiseSpeedMetresPerSecond = row.cruiseSpeed->value();
     settings.maxWaypoints = row.maxWaypoints->value();
+    settings.flightTimeSeconds = row.flightTime->value() == row.flightMinutesShown
+                                     ? row.flightSeconds
+                                     : row.flightTime->value() * 60.0;
     return settings;
 }
 
-void VehicleSettingsDialog::show(const Row& row, const io::VehicleSettings& settings) {
+void VehicleSettingsDialog::show(Row& row, const io::VehicleSettings& settings) {
     row.type->setCurrentIndex(row.type->findData(static_cast<int>(settings.type)));
     row.altitude->setValue(settings.altitudeMetres);
     row.cruiseSpeed->setValue(settings.cruiseSpeedMetresPerSecond);
     row.maxWaypoints->setValue(settings.maxWaypoints);
+    row.flightTime->setValue(settings.flightTimeSeconds / 60.0);
+    row.flightSeconds = settings.flightTimeSeconds;
+    row.flightMinutesShown = row.flightTime->value();
 }
 
 void VehicleSettingsDialog::followDefaults() {
@@ -157,24 +176,37 @@ void VehicleSettingsDialog::followDefaults() {
             robot.cruiseSpeedMetresPerSecond = defaults.cruiseSpeedMetresPerSecond;
         if (robot.maxWaypoints == shownDefaults_.maxWaypoints)
             robot.maxWaypoints = defaults.maxWaypoints;
+        if (robot.flightTimeSeconds == shownDefaults_.flightTimeSeconds)
+            robot.flightTimeSeconds = defaults.flightTimeSeconds;
         show(rows_[i], robot);
     }
     shownDefaults_ = defaults;
 }
 
-void VehicleSettingsDialog::checkItemLimits() {
-    QStringList wrong;
+void VehicleSettingsDialog::checkLimits() {
+    QStringList items;
+    QStringList flights;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const QString name = table_->verticalHeaderItem(static_cast<int>(i))->text();
         const int limit = rows_[i].maxWaypoints->value();
         if (limit > 0 && limit < io::minimumMaxWaypoints)
-            wrong << tr("%1: %2").arg(table_->verticalHeaderItem(static_cast<int>(i))->text()).arg(limit);
+            items << tr("%1: %2").arg(name).arg(limit);
+        const double minutes = rows_[i].flightTime->value();
+        if (minutes > 0.0 && minutes * 60.0 < io::minimumFlightTimeSeconds)
+            flights << tr("%1: %2 min").arg(name).arg(minutes);
     }
-    problem_->setText(tr("An item limit must be %1 or more mission items, or 0 for no limit. Too small: %2.")
-                          .arg(io::minimumMaxWaypoints)
-                          .arg(wrong.join(QStringLiteral(", "))));
-    problem_->setVisible(!wrong.isEmpty());
+    QStringList problems;
+    if (!items.isEmpty())
+        problems << tr("An item limit must be %1 or more mission items, or 0 for no limit. Too small: %2.")
+                        .arg(io::minimumMaxWaypoints)
+                        .arg(items.join(QStringLiteral(", ")));
+    if (!flights.isEmpty())
+        problems << tr("A flight time must be at least 1 min, or 0 for no limit. Too short: %1.")
+                        .arg(flights.join(QStringLiteral(", ")));
+    problem_->setText(problems.join(QLatin1Char(' ')));
+    problem_->setVisible(!problems.isEmpty());
     if (okButton_ != nullptr)
-        okButton_->setEnabled(wrong.isEmpty());
+        okButton_->setEnabled(problems.isEmpty());
 }
 
 io::ExportSettings VehicleSettingsDialog::exports() const {

@@ -34,14 +34,19 @@ class VehicleSettingsDialog : public QDialog {
         QDoubleSpinBox* altitude = nullptr;
         QDoubleSpinBox* cruiseSpeed = nullptr;
         QSpinBox* maxWaypoints = nullptr;
+        QDoubleSpinBox* flightTime = nullptr; // minutes
+        // The flight time as given and as the box shows it: minutes to three decimals lose a seconds value
+        // such as 1000 s, so a box left as shown gives back the value as given.
+        double flightSeconds = 0.0;
+        double flightMinutesShown = 0.0;
     };
 
     Row addRow(int row, const QString& name, const io::VehicleSettings& settings);
     [[nodiscard]] static io::VehicleSettings settingsOf(const Row& row);
-    static void show(const Row& row, const io::VehicleSettings& settings);
+    static void show(Row& row, const io::VehicleSettings& settings);
     void followDefaults();
-    // An item limit between 0 (none) and the smallest that works holds OK back and says why.
-    void checkItemLimits();
+    // An item limit or flight time between 0 (none) and the smallest that works holds OK back and says why.
+    void checkLimits();
 
     io::ExportSettings exports_;
     QTableWidget* table_ = nullptr;

@@ -622,15 +622,16 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
     QVERIFY2(parts.isEmpty(), qPrintable(parts.join(", ")));
 }
 
-// --vehicle, --altitude, --cruise-speed and --fov-scale: the plan's times are at the cruise speed, cells are
-// sized by the scaled fields of view, and the waypoint files take off and return to launch.
+// --vehicle, --altitude, --cruise-speed, --fov-scale and --flight-time: the plan's times are at the cruise
+// speed, cells are sized by the scaled fields of view, and the waypoint files are flights that take off and
+// return to launch within the flight time.
 void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
     const QString ground = scratch_.filePath("ground");
     const QString drone = scratch_.filePath("drone");
     auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", ground});
     QCOMPARE(run.exitCode, 0);
     run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--vehicle", "multirotor", "--altitude",
-                   "45", "--cruise-speed", "6", "--fov-scale", "2", "--out", drone});
+                   "45", "--cruise-speed", "6", "--fov-scale", "2", "--flight-time", "3min", "--out", drone});
     checkOutputs(drone, 3, run);
     if (QTest::currentTestFailed())
         return;
@@ -644,6 +645,14 @@ void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
         const QJsonObject robot = value.toObject();
         QCOMPARE(robot.value("vehicle").toString(), QStringLiteral("multirotor"));
         cells += robot.value("cells").toInt();
+        // Each robot's files are flights of at most 3 minutes, trips from the start and back included.
+        QCOMPARE(robot.value("flight_time_s").toDouble(), 180.0);
+        const QJsonArray flights = robot.value("mission_part_seconds").toArray();
+        QVERIFY2(flights.size() > 1, qPrintable(QString::number(flights.size())));
+        QCOMPARE(robot.value("mission_parts").toInt(), flights.size());
+        for (const QJsonValue& flight : flights)
+            QVERIFY2(flight.toDouble() > 0.0 && flight.toDouble() <= 180.0,
+                     qPrintable(QString::number(flight.toDouble())));
         // Time is length at 6 m/s and the time lost at turns (connector time is part of the length's).
         const double flying = robot.value("time_s").toDouble() - robot.value("turn_time_s").toDouble();
         const double expected = robot.value("length_m").toDouble() / 6.0;
@@ -660,7 +669,7 @@ void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
         noted = noted || issue.toObject().value("code").toString() == QStringLiteral("cruise-speed");
     QVERIFY(noted);
     const QJsonArray items =
-        readJsonObject(drone + "/robot_1.plan").value("mission").toObject().value("items").toArray();
+        readJsonObject(drone + "/robot_1_part_1.plan").value("mission").toObject().value("items").toArray();
     QCOMPARE(items.first().toObject().value("command").toInt(), 22);
     QCOMPARE(items.first().toObject().value("params").toArray()[6].toDouble(), 45.0);
     QCOMPARE(items.last().toObject().value("command").toInt(), 20);

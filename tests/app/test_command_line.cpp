@@ -135,7 +135,7 @@ void TestCommandLine::batchWithEveryFlag() {
         "--batch --raster map.tif --classes table.csv --start 318000.5,4130000 --start 319000,4131000.25 "
         "--start -113.1,37.2 --start-crs EPSG:4326 --charger 318100,4130200.5 --planner mcpp-mlct --band 2 "
         "--purity 0.25 --missing-as-obstacle --open-paths --quiet --out results --vehicle multirotor "
-        "--altitude 60 --cruise-speed 8.5 --fov-scale 4"));
+        "--altitude 60 --cruise-speed 8.5 --fov-scale 4 --flight-time 25min"));
     QVERIFY2(result.ok(), result.error.c_str());
     const auto& options = result.options;
     QCOMPARE(static_cast<int>(options.mode), static_cast<int>(RunMode::Batch));
@@ -169,6 +169,7 @@ void TestCommandLine::batchWithEveryFlag() {
     QCOMPARE(options.altitudeMetres.value_or(-1.0), 60.0);
     QCOMPARE(options.cruiseSpeedMetresPerSecond.value_or(-1.0), 8.5);
     QCOMPARE(options.fieldOfViewScale.value_or(-1.0), 4.0);
+    QCOMPARE(options.flightTimeSeconds.value_or(-1.0), 1500.0);
 }
 
 void TestCommandLine::batchWithPresetAndShortForms() {
@@ -273,6 +274,13 @@ void TestCommandLine::errors_data() {
     QTest::newRow("--cruise-speed in km/h")
         << words("--batch m.json --out o --cruise-speed 1200")
         << "--cruise-speed: \"1200\" is not a speed (0 for the land-cover speeds, up to 1000 m/s)";
+    QTest::newRow("--flight-time in parsecs")
+        << words("--batch m.json --out o --flight-time 12parsecs")
+        << "--flight-time: \"12parsecs\" is not a duration (seconds, or a number with s, min or h: 25min)";
+    QTest::newRow("--flight-time of half a minute")
+        << words("--batch m.json --out o --flight-time 30")
+        << "--flight-time \"30\": must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 s), "
+           "not 30 s";
     QTest::newRow("--fov-scale zero")
         << words("--batch m.json --out o --fov-scale 0")
         << "--fov-scale: \"0\" is not a factor for the fields of view (more than 0, up to 1000)";

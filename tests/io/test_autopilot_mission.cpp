@@ -21,6 +21,9 @@ using namespace mcpp::io;
 
 namespace {
 
+// Hand-made paths lie in no cell, so their turns cost nothing.
+const CellGraph noTurnPrice;
+
 // A lawnmower path of `rows` rows of `columns` points 10 m apart, each row a land cover of its own speed
 // (rows alternate between two speeds) and one point in the middle of every row faster than its row.
 CoveragePath lawnmower(int rows, int columns, double slow, double fast) {
@@ -129,7 +132,7 @@ class AutopilotMissionTest : public QObject {
         const CoveragePath path = lawnmower(4, 9, 2.0, 3.0);
         VehicleSettings vehicle;
         vehicle.maxWaypoints = 0;
-        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, true));
+        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, true), noTurnPrice);
         // Rows alternate 2 and 3 m/s: a change at every row; the 5% bumps inside rows are not commanded.
         int changes = 0;
         for (std::size_t i = 0; i < mission.points.size(); ++i) {
@@ -139,14 +142,14 @@ class AutopilotMissionTest : public QObject {
         }
         QCOMPARE(changes, 3);
         // With no tolerance every rounded change is commanded: into and out of each bump too.
-        const AutopilotMission exact = autopilotMission(path, vehicle, shaping(0.0, true));
+        const AutopilotMission exact = autopilotMission(path, vehicle, shaping(0.0, true), noTurnPrice);
         int exactChanges = 0;
         for (std::size_t i = 0; i < exact.points.size(); ++i)
             exactChanges += exact.changesSpeedAt(i) ? 1 : 0;
         QCOMPARE(exactChanges, 3 + 4 * 2);
         // A cruise speed replaces them all.
         vehicle.cruiseSpeedMetresPerSecond = 5.0;
-        const AutopilotMission cruise = autopilotMission(path, vehicle, shaping(0.1, true));
+        const AutopilotMission cruise = autopilotMission(path, vehicle, shaping(0.1, true), noTurnPrice);
         for (std::size_t i = 0; i < cruise.points.size(); ++i)
             QVERIFY(!cruise.changesSpeedAt(i) && cruise.commandedSpeeds[i] == 5.0);
     }
@@ -155,7 +158,7 @@ class AutopilotMissionTest : public QObject {
         const CoveragePath path = lawnmower(6, 11, 1.0, 1.5);
         VehicleSettings vehicle;
         vehicle.maxWaypoints = 0;
-        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, true));
+        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, true), noTurnPrice);
         QVERIFY(mission.points.size() < path.waypoints.size());
         // Each row keeps its two ends: 12 points.
         QCOMPARE(mission.points.size(), std::size_t{12});
@@ -174,8 +177,9 @@ class AutopilotMissionTest : public QObject {
             path.waypoints[i + 3].speedMetresPerSecond = 0.5; // a patch of mud in every row
         VehicleSettings vehicle;
         vehicle.maxWaypoints = 0;
-        const AutopilotMission anywhere = autopilotMission(path, vehicle, shaping(0.1, true));
-        const AutopilotMission atTurns = autopilotMission(path, vehicle, shaping(0.1, true, true));
+        const AutopilotMission anywhere = autopilotMission(path, vehicle, shaping(0.1, true), noTurnPrice);
+        const AutopilotMission atTurns =
+            autopilotMission(path, vehicle, shaping(0.1, true, true), noTurnPrice);
         QVERIFY(anywhere.points.size() > 12);             // the mud's points stay in the middle of rows
         QCOMPARE(atTurns.points.size(), std::size_t{12}); // each row's two ends
         QVERIFY(atTurns.items < anywhere.items);
@@ -200,11 +204,13 @@ class AutopilotMissionTest : public QObject {
         // flown at 1.9, never at 2.
         CoveragePath dip = lawnmower(2, 5, 2.0, 2.0);
         dip.waypoints[2].speedMetresPerSecond = 1.96;
-        const AutopilotMission dipped = autopilotMission(dip, vehicle, shaping(0.1, true, true));
+        const AutopilotMission dipped = autopilotMission(dip, vehicle, shaping(0.1, true, true), noTurnPrice);
         QCOMPARE(dipped.commandedSpeeds[1], 1.9);
         // Speeds are floats: 0.7F is 0.69999998807907, and is flown at 0.7, not rounded down to 0.69.
         const CoveragePath slowRows = lawnmower(2, 5, 0.7, 0.7);
-        QCOMPARE(autopilotMission(slowRows, vehicle, shaping(0.1, true, true)).commandedSpeeds[1], 0.7);
+        QCOMPARE(
+            autopilotMission(slowRows, vehicle, shaping(0.1, true, true), noTurnPrice).commandedSpeeds[1],
+            0.7);
         QCOMPARE(roundedDownSpeed(0.3168316831), 0.31);
         QCOMPARE(roundedDownSpeed(0.29), 0.29);
         QCOMPARE(roundedDownSpeed(12.34), 12.0);
@@ -221,7 +227,7 @@ class AutopilotMissionTest : public QObject {
             vehicle.type = trial % 3 == 0 ? VehicleType::Multirotor : VehicleType::Rover;
             vehicle.maxWaypoints = minimumMaxWaypoints + static_cast<int>(random() % 40);
             const ExportSettings settings = shaping(0.1, random() % 2 == 0);
-            const AutopilotMission mission = autopilotMission(path, vehicle, settings);
+            const AutopilotMission mission = autopilotMission(path, vehicle, settings, noTurnPrice);
             QVERIFY(!mission.parts.empty());
             QCOMPARE(mission.parts.front().first, std::size_t{0});
             QCOMPARE(mission.parts.back().last, mission.points.size() - 1);
@@ -250,11 +256,113 @@ class AutopilotMissionTest : public QObject {
             if (mission.parts.size() > 1 && fullest - 1 >= minimumMaxWaypoints) {
                 VehicleSettings tighter = vehicle;
                 tighter.maxWaypoints = fullest - 1;
-                QVERIFY(autopilotMission(path, tighter, settings).parts.size() > mission.parts.size());
+                QVERIFY(autopilotMission(path, tighter, settings, noTurnPrice).parts.size() >
+                        mission.parts.size());
             }
             if (mission.items <= vehicle.maxWaypoints)
                 QCOMPARE(mission.parts.size(), std::size_t{1});
         }
+    }
+
+    // Each part fits one flight, trips included, and the parts are as few as filling each flight in turn
+    // gives (counted here point by point with partSeconds) and as even as they can be.
+    void partsFitTheFlightTime() {
+        std::mt19937 random(23);
+        for (int trial = 0; trial < 40; ++trial) {
+            const CoveragePath path =
+                lawnmower(4 + static_cast<int>(random() % 20), 3 + static_cast<int>(random() % 20), 1.0, 1.0);
+            VehicleSettings vehicle;
+            vehicle.type = trial % 2 == 0 ? VehicleType::Multirotor : VehicleType::Rover;
+            vehicle.cruiseSpeedMetresPerSecond = 0.5;
+            vehicle.maxWaypoints = 0;
+            const ExportSettings settings = shaping(0.1, true);
+            const double whole = autopilotMission(path, vehicle, settings, noTurnPrice).seconds;
+            // Within reach: a flight three times the longest trip from the start and back.
+            double farthest = 0.0;
+            for (const Waypoint& point : path.waypoints)
+                farthest = std::max(farthest,
+                                    std::hypot(point.x - path.waypoints[0].x, point.y - path.waypoints[0].y));
+            const double trip =
+                isAircraft(vehicle.type) ? 2.0 * farthest / vehicle.cruiseSpeedMetresPerSecond : 0.0;
+            vehicle.flightTimeSeconds =
+                std::max({minimumFlightTimeSeconds, whole / (2.0 + random() % 5), 3.0 * trip});
+            const AutopilotMission mission = autopilotMission(path, vehicle, settings, noTurnPrice);
+            QCOMPARE(mission.parts.front().first, std::size_t{0});
+            QCOMPARE(mission.parts.back().last, mission.points.size() - 1);
+            for (std::size_t part = 0; part < mission.parts.size(); ++part) {
+                const MissionPart& piece = mission.parts[part];
+                if (part > 0)
+                    QCOMPARE(piece.first, mission.parts[part - 1].last);
+                QCOMPARE(piece.seconds, partSeconds(mission, piece, vehicle, noTurnPrice));
+                QVERIFY2(piece.seconds <= vehicle.flightTimeSeconds,
+                         qPrintable(QStringLiteral("%1 s in a %2 s flight")
+                                        .arg(piece.seconds)
+                                        .arg(vehicle.flightTimeSeconds)));
+            }
+            // Parts filled one after the other, point by point, to a flight of `limit`.
+            const auto filledUpTo = [&](double limit) {
+                std::size_t parts = 1;
+                for (std::size_t first = 0, last = 1; last < mission.points.size(); ++last) {
+                    if (partSeconds(mission, {first, last}, vehicle, noTurnPrice) > limit) {
+                        ++parts;
+                        first = last - 1;
+                    }
+                }
+                return parts;
+            };
+            QCOMPARE(mission.parts.size(), filledUpTo(vehicle.flightTimeSeconds));
+            // Even: the same points in flights a little shorter than the longest part need more parts.
+            double longest = 0.0;
+            for (const MissionPart& piece : mission.parts)
+                longest = std::max(longest, piece.seconds);
+            QVERIFY(filledUpTo(longest * 0.99) > mission.parts.size());
+        }
+    }
+
+    // A leg longer than a flight is cut along the way: the parts of one straight 10 km leg each fit a
+    // 5 min flight and together fly the leg, with no speed change added.
+    void longLegsAreCutAlongTheWay() {
+        CoveragePath path;
+        Waypoint from;
+        from.speedMetresPerSecond = 10.0F;
+        Waypoint to = from;
+        to.x = 10000.0;
+        path.waypoints = {from, to};
+        VehicleSettings rover;
+        rover.flightTimeSeconds = 300.0;
+        const AutopilotMission mission = autopilotMission(path, rover, shaping(0.1, true), noTurnPrice);
+        QCOMPARE(mission.parts.size(), std::size_t{4}); // 1000 s of flight
+        double flown = 0.0;
+        for (const MissionPart& part : mission.parts) {
+            QVERIFY(part.seconds <= 300.0);
+            flown += part.seconds;
+        }
+        QVERIFY(std::abs(flown - 1000.0) < 1e-6);
+        for (std::size_t point = 1; point < mission.points.size(); ++point) {
+            QVERIFY(!mission.changesSpeedAt(point));
+            QCOMPARE(mission.points[point].y, 0.0);
+        }
+    }
+
+    // Ground out of one flight's reach: its parts take longer than the flight (the warning's case), but each
+    // holds a flight's work, not two points.
+    void groundOutOfReachTakesAFlightOfWorkAPart() {
+        CoveragePath path = lawnmower(20, 30, 5.0, 5.0); // 10 m steps at 5 m/s: 2 s a step
+        Waypoint home = path.waypoints.front();
+        home.x -= 20000.0; // 4000 s away at 5 m/s
+        path.waypoints.insert(path.waypoints.begin(), home);
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.maxWaypoints = 0;
+        drone.flightTimeSeconds = 600.0;
+        const AutopilotMission mission = autopilotMission(path, drone, shaping(0.1, true), noTurnPrice);
+        // 4000 s out to the lawnmower and 1198 s over it (599 steps): at least 9 flights of 600 s of work.
+        QVERIFY2(mission.parts.size() >= 9 && mission.parts.size() <= 11,
+                 qPrintable(QStringLiteral("%1 parts").arg(mission.parts.size())));
+        // The first flies out 300 s and back; the others cannot come back in time.
+        QVERIFY(mission.parts.front().seconds <= drone.flightTimeSeconds);
+        for (std::size_t part = 1; part < mission.parts.size(); ++part)
+            QVERIFY(mission.parts[part].seconds > drone.flightTimeSeconds);
     }
 
     void partsAreEvenNotFilledOneAfterTheOther() {
@@ -262,7 +370,7 @@ class AutopilotMissionTest : public QObject {
         // of about 100; even parts hold about 400 each.
         CoveragePath path = lawnmower(40, 20, 1.0, 1.0);
         VehicleSettings vehicle;
-        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, false));
+        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, false), noTurnPrice);
         QCOMPARE(mission.parts.size(), std::size_t{2});
         QVERIFY2(
             std::abs(mission.parts[0].items - mission.parts[1].items) <= 1,
@@ -274,7 +382,7 @@ class AutopilotMissionTest : public QObject {
         const CoveragePath path = lawnmower(40, 20, 1.0, 2.0);
         VehicleSettings vehicle;
         vehicle.maxWaypoints = 0;
-        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, false));
+        const AutopilotMission mission = autopilotMission(path, vehicle, shaping(0.1, false), noTurnPrice);
         QCOMPARE(mission.parts.size(), std::size_t{1});
         QCOMPARE(mission.points.size(), path.waypoints.size());
         QCOMPARE(mission.items, 2 + 800 + 39); // home, first speed, waypoints, a change per row
@@ -383,7 +491,6 @@ class AutopilotMissionTest : public QObject {
         mission.points = {at(0, 0), at(100, 0), at(100, 100), at(0, 100)};
         mission.commandedSpeeds = {10.0, 10.0, 5.0, 5.0};
         const MissionPart second{1, 2, 0};
-        const CellGraph noTurnPrice;
         VehicleSettings rover;
         QCOMPARE(partSeconds(mission, second, rover, noTurnPrice), 20.0); // 100 m at 5 m/s
         VehicleSettings drone;
@@ -406,7 +513,7 @@ class AutopilotMissionTest : public QObject {
         QVERIFY(path.turnSeconds > 0.0);
         VehicleSettings rover;
         rover.maxWaypoints = 0;
-        const AutopilotMission mission = autopilotMission(path, rover, shaping(0.0, true));
+        const AutopilotMission mission = autopilotMission(path, rover, shaping(0.0, true), plan.cells);
         QCOMPARE(mission.parts.size(), std::size_t{1});
         const double seconds = partSeconds(mission, mission.parts[0], rover, plan.cells);
         QVERIFY2(std::abs(seconds - mission.seconds) < 1e-9 * mission.seconds,

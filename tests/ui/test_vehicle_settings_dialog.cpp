@@ -98,12 +98,36 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(!vehicles[2].altitudeMetres);
     }
 
+    // A flight time in minutes: all robots follow it, and one under a minute holds OK back.
+    void flightTimeInMinutes() {
+        ui::VehicleSettingsDialog dialog(threeRobots());
+        auto* table = dialog.findChild<QTableWidget*>();
+        QDoubleSpinBox* fleet = cell<QDoubleSpinBox>(table, 0, 4);
+        QCOMPARE(fleet->text(), QStringLiteral("no limit"));
+        fleet->setValue(25.0);
+        QCOMPARE(cell<QDoubleSpinBox>(table, 2, 4)->value(), 25.0);
+        cell<QDoubleSpinBox>(table, 1, 4)->setValue(0.5);
+        auto* buttons = dialog.findChild<QDialogButtonBox*>();
+        QVERIFY(!buttons->button(QDialogButtonBox::Ok)->isEnabled());
+        bool named = false;
+        for (QLabel* label : dialog.findChildren<QLabel*>())
+            named = named || (!label->isHidden() && label->text().contains(QStringLiteral("alpha: 0.5 min")));
+        QVERIFY(named);
+        cell<QDoubleSpinBox>(table, 1, 4)->setValue(18.0);
+        QVERIFY(buttons->button(QDialogButtonBox::Ok)->isEnabled());
+        QCOMPARE(dialog.exports().vehicle.flightTimeSeconds, 1500.0);
+        const auto vehicles = dialog.vehicles();
+        QCOMPARE(vehicles[0].flightTimeSeconds.value_or(-1.0), 1080.0);
+        QVERIFY(!vehicles[1].flightTimeSeconds);
+    }
+
     // Values the boxes cannot show exactly come back unchanged: OK without an edit changes nothing.
     void untouchedValuesComeBackUnchanged() {
         Mission mission = threeRobots();
         mission.exports.speedTolerance = 0.1234;
         mission.exports.vehicle.altitudeMetres = 30.125;
         mission.exports.vehicle.maxWaypoints = 0;
+        mission.exports.vehicle.flightTimeSeconds = 1000.0; // 16.667 min in the box
         ui::VehicleSettingsDialog dialog(mission);
         QVERIFY(dialog.exports() == mission.exports);
         const auto vehicles = dialog.vehicles();
