@@ -741,16 +741,18 @@ double fleetCruiseSpeed(const Mission& mission) {
 
 namespace {
 
+std::string robotLabel(const Mission& mission, std::size_t robot) {
+    const std::string& name = mission.robots[robot].name;
+    return name.empty() ? "Robot " + std::to_string(robot + 1) : name;
+}
+
 // Why planning keeps the land-cover speeds although some robots cruise at their own: one plan balances
 // robots of one speed.
-std::string mixedCruiseSpeedsNote(const Mission& mission) {
-    const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
+std::string mixedCruiseSpeedsNote(const Mission& mission, const std::vector<VehicleSettings>& vehicles) {
     std::string speeds;
     for (std::size_t robot = 0; robot < vehicles.size(); ++robot) {
         const double speed = vehicles[robot].cruiseSpeedMetresPerSecond;
-        const std::string& name = mission.robots[robot].name;
-        speeds += (speeds.empty() ? "" : ", ") +
-                  (name.empty() ? "Robot " + std::to_string(robot + 1) : name) + " " +
+        speeds += (speeds.empty() ? "" : ", ") + robotLabel(mission, robot) + " " +
                   (speed > 0.0 ? formatQuantity(speed, 4) + " m/s" : "the land cover's");
     }
     return "the robots' cruise speeds differ (" + speeds +
@@ -758,11 +760,9 @@ std::string mixedCruiseSpeedsNote(const Mission& mission) {
            "speed; give every robot the same cruise speed to plan at it";
 }
 
-} // namespace
-
-void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
-    problem.batterySeconds = robotBatteries(mission);
-    problem.events = mission.events;
+// A shared cruise speed replaces the class table's speeds; otherwise say why the plan keeps them.
+void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
+                      PlanningProblem& problem) {
     const double cruise = fleetCruiseSpeed(mission);
     if (cruise > 0.0) {
         std::vector<LandCoverClass> classes = problem.classes.classes();
@@ -776,17 +776,72 @@ void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
                  " m/s: the plan uses that speed over every passable class, not the class table's speeds"});
         return;
     }
-    const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     if (std::any_of(vehicles.begin(), vehicles.end(),
                     [](const VehicleSettings& vehicle) { return vehicle.cruiseSpeedMetresPerSecond > 0.0; }))
         problem.notes.push_back(
-            {IssueSeverity::Warning, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission)});
+            {IssueSeverity::Warning, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission, vehicles)});
     else if (std::any_of(vehicles.begin(), vehicles.end(),
                          [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
-        problem.notes.push_back({IssueSeverity::Warning, "aircraft-at-ground-speeds",
-                                 "aircraft fly at the class table's speeds, which are a ground robot's in "
-                                 "the presets: give them a "
-                                 "cruise speed (--cruise-speed, exports.cruise_speed_mps) for flight times"});
+        problem.notes.push_back(
+            {IssueSeverity::Warning, "aircraft-at-ground-speeds",
+             "aircraft fly at the class table's speeds, which are a ground robot's in the presets: give "
+             "them a cruise speed (--cruise-speed, exports.cruise_speed_mps) for flight times"});
+}
+
+// "every aircraft at 150 m", or the robots and their altitudes, five at most: "north 0 m, south 2 m".
+std::string namedAltitudes(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
+                           const std::vector<std::size_t>& robots) {
+    const auto aircraft = std::count_if(vehicles.begin(), vehicles.end(), [](const VehicleSettings& vehicle) {
+        return isAircraft(vehicle.type);
+    });
+    const double first = vehicles[robots.front()].altitudeMetres;
+    const bool oneAltitude = std::all_of(robots.begin(), robots.end(), [&](std::size_t robot) {
+        return vehicles[robot].altitudeMetres == first;
+    });
+    if (oneAltitude && static_cast<std::size_t>(aircraft) == robots.size() && robots.size() > 1)
+        return "every aircraft at " + formatQuantity(first, 4) + " m";
+    constexpr std::size_t named = 5;
+    std::string text;
+    for (std::size_t i = 0; i < robots.size() && i < named; ++i)
+        text += (text.empty() ? "" : ", ") + robotLabel(mission, robots[i]) + " " +
+                formatQuantity(vehicles[robots[i]].altitudeMetres, 4) + " m";
+    return robots.size() > named ? text + " and " + std::to_string(robots.size() - named) + " more" : text;
+}
+
+// Aircraft altitudes a user most likely did not mean: at the height of home, or above what drones may fly
+// without a permit in most countries.
+void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
+                           std::vector<PlanIssue>& notes) {
+    constexpr double lowest = 5.0;    // below the trees and roofs a survey flies over
+    constexpr double highest = 120.0; // the EU's open category; 400 ft in the US
+    std::vector<std::size_t> low;
+    std::vector<std::size_t> high;
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot) {
+        if (isAircraft(vehicles[robot].type) && vehicles[robot].altitudeMetres < lowest)
+            low.push_back(robot);
+        else if (isAircraft(vehicles[robot].type) && vehicles[robot].altitudeMetres > highest)
+            high.push_back(robot);
+    }
+    if (!low.empty())
+        notes.push_back({IssueSeverity::Warning, "altitude-too-low",
+                         "aircraft flying lower than 5 m above home, into trees and roofs (" +
+                             namedAltitudes(mission, vehicles, low) +
+                             "): give a survey altitude (--altitude, exports.altitude_m)"});
+    if (!high.empty())
+        notes.push_back({IssueSeverity::Warning, "altitude-above-120m",
+                         "aircraft flying higher than 120 m (400 ft) above home, above what most countries "
+                         "allow drones without a permit (" +
+                             namedAltitudes(mission, vehicles, high) + ")"});
+}
+
+} // namespace
+
+void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
+    problem.batterySeconds = robotBatteries(mission);
+    problem.events = mission.events;
+    const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
+    applyCruiseSpeed(mission, vehicles, problem);
+    noteAircraftAltitudes(mission, vehicles, problem.notes);
 }
 
 std::vector<VehicleSettings> robotVehicles(const Mission& mission) {

@@ -545,15 +545,19 @@ std::string partSizes(const AutopilotMission& mission) {
                : std::to_string(fewest->items) + " to " + std::to_string(most->items) + " items";
 }
 
-// "; the longest part takes 24 min 10 s", for a battery; nothing when a speed is unknown.
+// "; the parts fly 3 h 2 min in all, the longest 24 min 10 s", for a battery; nothing when a speed is
+// unknown.
 std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
-    const auto longest =
-        std::max_element(mission.parts.begin(), mission.parts.end(),
-                         [](const MissionPart& a, const MissionPart& b) { return a.seconds < b.seconds; });
-    if (!(longest->seconds > 0.0))
+    double longest = 0.0;
+    double all = 0.0;
+    for (const MissionPart& part : mission.parts) {
+        longest = std::max(longest, part.seconds);
+        all += part.seconds;
+    }
+    if (!(longest > 0.0))
         return {};
-    return "; the longest part takes " + formatDuration(longest->seconds) +
-           (isAircraft(vehicle.type) ? " with its flights to and from the start" : "");
+    return "; the parts fly " + formatDuration(all) + " in all, the longest " + formatDuration(longest) +
+           (isAircraft(vehicle.type) ? ", flights to and from the start included" : "");
 }
 
 // Why the mission is in parts: "has 21 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min,

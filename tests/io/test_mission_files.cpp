@@ -217,6 +217,25 @@ class MissionFilesTest : public QObject {
         QVERIFY(aircraft.classes == landCover);
         QCOMPARE(aircraft.notes.size(), std::size_t{1});
         QCOMPARE(aircraft.notes[0].code, std::string("aircraft-at-ground-speeds"));
+
+        // Aircraft at the height of home, or above what drones may fly without a permit, are named; a rover's
+        // altitude means nothing.
+        mission.exports.vehicle.cruiseSpeedMetresPerSecond = 8.0;
+        mission.robots[0].vehicle.altitudeMetres = 0.0;   // a rover
+        mission.robots[1].vehicle.altitudeMetres = 150.0; // a multirotor
+        mission.robots[1].name = "beta";
+        PlanningProblem altitudes = problem;
+        applyRobotSettings(mission, altitudes);
+        QCOMPARE(altitudes.notes.size(), std::size_t{2});
+        QCOMPARE(altitudes.notes[1].code, std::string("altitude-above-120m"));
+        QVERIFY2(altitudes.notes[1].message.find("(beta 150 m)") != std::string::npos,
+                 altitudes.notes[1].message.c_str());
+        mission.robots[1].vehicle.altitudeMetres = 2.0;
+        PlanningProblem low = problem;
+        applyRobotSettings(mission, low);
+        QCOMPARE(low.notes.back().code, std::string("altitude-too-low"));
+        QVERIFY2(low.notes.back().message.find("(beta 2 m)") != std::string::npos,
+                 low.notes.back().message.c_str());
     }
 
     void minimalMissionGetsDefaults() {
