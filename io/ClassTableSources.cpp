@@ -39,10 +39,17 @@ bool parseBoolean(const std::string& text, bool& value) {
     return true;
 }
 
+std::vector<std::string> presetNames() {
+    std::vector<std::string> names;
+    for (const auto& preset : internal::presetDefinitions())
+        names.push_back(preset.name);
+    return names;
+}
+
 std::string knownPresetNames() {
     std::string names;
-    for (const auto& preset : internal::presetDefinitions())
-        names += (names.empty() ? "" : ", ") + preset.name;
+    for (const std::string& name : presetNames())
+        names += (names.empty() ? "" : ", ") + name;
     return names;
 }
 
@@ -60,10 +67,7 @@ Result<ClassTable> presetClassTable(const std::string& name) {
         if (preset.name == name)
             return ClassTable(preset.classes);
     }
-    std::vector<std::string> names;
-    for (const auto& preset : internal::presetDefinitions())
-        names.push_back(preset.name);
-    const auto meant = internal::closestName(name, names);
+    const auto meant = internal::closestName(name, presetNames());
     return Result<ClassTable>::failure("unknown class table preset \"" + name + "\"" +
                                        (meant ? ": did you mean \"" + *meant + "\"?" : std::string()) +
                                        " (known: " + knownPresetNames() + ")");

@@ -76,6 +76,22 @@ std::size_t partsFilledToTheLimit(const AutopilotMission& mission, const Vehicle
     return parts;
 }
 
+// The fixture plan with its first robot on a 30-row lawnmower in UTM zone 12, to export with `settings`.
+struct LawnmowerExport {
+    Plan plan = withLawnmower();
+    GeoReference reference = GeoReference::fromDefinition("EPSG:26912").value();
+    ClassTable classes;
+    ExportSettings settings;
+
+    [[nodiscard]] ExportContext context() const { return {plan, reference, classes, settings}; }
+
+    static Plan withLawnmower() {
+        Plan plan = test::makeFixturePlan();
+        plan.paths[0] = lawnmower(30, 6, 1.0, 2.0);
+        return plan;
+    }
+};
+
 QJsonObject readJson(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
@@ -395,13 +411,10 @@ class AutopilotMissionTest : public QObject {
     }
 
     void splitFilesAreWrittenAndJoinUp() {
-        Plan plan = test::makeFixturePlan();
-        plan.paths[0] = lawnmower(30, 6, 1.0, 2.0);
-        const GeoReference reference = GeoReference::fromDefinition("EPSG:26912").value();
-        const ClassTable classes;
-        ExportSettings settings;
-        settings.vehicle.maxWaypoints = 25;
-        const ExportContext context{plan, reference, classes, settings};
+        LawnmowerExport lawnmowerExport;
+        lawnmowerExport.settings.vehicle.maxWaypoints = 25;
+        const ExportContext context = lawnmowerExport.context();
+        const GeoReference& reference = lawnmowerExport.reference;
         QTemporaryDir folder;
         const QString whole = folder.filePath(QStringLiteral("robot_1.plan"));
         const Status written = writeQGroundControlPlan(context, 0, whole.toStdString());
@@ -525,15 +538,12 @@ class AutopilotMissionTest : public QObject {
     }
 
     void aircraftTakeOffAtTheStartAndReturnToItInEveryPart() {
-        Plan plan = test::makeFixturePlan();
-        plan.paths[0] = lawnmower(30, 6, 1.0, 2.0);
-        const GeoReference reference = GeoReference::fromDefinition("EPSG:26912").value();
-        const ClassTable classes;
-        ExportSettings settings;
-        settings.vehicle.type = VehicleType::Multirotor;
-        settings.vehicle.altitudeMetres = 45.0;
-        settings.vehicle.maxWaypoints = 40;
-        const ExportContext context{plan, reference, classes, settings};
+        LawnmowerExport lawnmowerExport;
+        lawnmowerExport.settings.vehicle.type = VehicleType::Multirotor;
+        lawnmowerExport.settings.vehicle.altitudeMetres = 45.0;
+        lawnmowerExport.settings.vehicle.maxWaypoints = 40;
+        const ExportContext context = lawnmowerExport.context();
+        const GeoReference& reference = lawnmowerExport.reference;
         QTemporaryDir folder;
         const QString whole = folder.filePath(QStringLiteral("robot_1.plan"));
         QVERIFY(writeQGroundControlPlan(context, 0, whole.toStdString()).ok());
