@@ -1,5 +1,6 @@
 #include "core/planners/PlanningRun.hpp"
 
+#include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/StartPointCheck.hpp"
 
@@ -82,10 +83,12 @@ std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
                 throw PlanningError::aboutStart(Kind::TooManyRobots, robotIndex,
                                                 problem->detail + " and no free cell is left");
             const Cell& target = graph.cell(cell);
+            const MapPoint given = start;
             start = {target.centreX(), target.centreY()};
             addIssue(IssueSeverity::Warning, "start-moved",
-                     "robot " + std::to_string(robot + 1) + " start " + problem->detail + "; moved to " +
-                         describePoint(start));
+                     "robot " + std::to_string(robot + 1) + " start " + problem->detail + "; moved " +
+                         formatDistance(std::hypot(start.x - given.x, start.y - given.y)) +
+                         " to the nearest free cell's centre " + describePoint(start));
         }
         ownerOfCell[static_cast<std::size_t>(cell)] = robotIndex;
         startCells.push_back(cell);

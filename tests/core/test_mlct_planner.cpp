@@ -1,3 +1,4 @@
+#include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -163,7 +164,14 @@ class MlctPlannerTest : public QObject {
         const Plan plan = MlctPlanner{}.plan(problem, {});
         QCOMPARE(plan.warnings().size(), std::size_t{1});
         QCOMPARE(plan.issues.front().code, std::string("start-moved"));
-        QVERIFY(plan.warnings()[0].find("moved to") != std::string::npos);
+        // How far, in metres, and where: the cell the robot's path now starts in.
+        const MapPoint given = problem.starts[1];
+        const Waypoint& moved = plan.paths[1].waypoints.front();
+        const Cell& cell = plan.cells.cell(moved.cell);
+        const std::string expected =
+            "moved " + formatDistance(std::hypot(cell.centreX() - given.x, cell.centreY() - given.y)) +
+            " to the nearest free cell's centre";
+        QVERIFY2(plan.warnings()[0].find(expected) != std::string::npos, plan.warnings()[0].c_str());
         QVERIFY(test::checkRegions(plan).empty());
     }
 
