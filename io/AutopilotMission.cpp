@@ -345,7 +345,9 @@ AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSetting
     const SpeedSteps speeds = byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
                                     : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
     keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
-    if (vehicle.flightTimeSeconds > 0.0)
+    // A mission that fits one flight keeps its legs whole.
+    if (vehicle.flightTimeSeconds > 0.0 && !mission.points.empty() &&
+        partSeconds(mission, {0, mission.points.size() - 1}, vehicle, cells) > vehicle.flightTimeSeconds)
         splitLongLegs(mission, vehicle.flightTimeSeconds);
     splitIntoParts(mission, vehicle, cells);
     for (MissionPart& part : mission.parts)

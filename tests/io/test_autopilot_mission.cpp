@@ -359,6 +359,11 @@ class AutopilotMissionTest : public QObject {
             QVERIFY(!mission.changesSpeedAt(point));
             QCOMPARE(mission.points[point].y, 0.0);
         }
+        // A flight long enough for the whole leg keeps it whole: no waypoint along it.
+        rover.flightTimeSeconds = 1200.0;
+        const AutopilotMission whole = autopilotMission(path, rover, shaping(0.1, true), noTurnPrice);
+        QCOMPARE(whole.parts.size(), std::size_t{1});
+        QCOMPARE(whole.points.size(), std::size_t{2});
     }
 
     // Ground out of one flight's reach: its parts take longer than the flight (the warning's case), but each
