@@ -141,8 +141,13 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("mission_time_s", mission.seconds);
         // Each file's own flight, for a battery: an aircraft's with its trips to and from the start.
         JsonValue& partSeconds = item.add("mission_part_seconds", JsonValue::array());
-        for (const MissionPart& part : mission.parts)
+        double flights = 0.0;
+        for (const MissionPart& part : mission.parts) {
             partSeconds.push(part.seconds);
+            flights += part.seconds;
+        }
+        // All the parts' flights, trips included: what the robot flies, battery swaps aside.
+        item.add("mission_flights_s", flights);
         if (sorties != nullptr)
             addSorties(item, context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
         if (timeline != nullptr)

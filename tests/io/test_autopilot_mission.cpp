@@ -499,6 +499,7 @@ class AutopilotMissionTest : public QObject {
             total += seconds.toDouble();
         }
         QVERIFY(std::abs(total - mission.seconds) < 1e-6 * mission.seconds); // a rover: no trips, no turns
+        QCOMPARE(readJson(report)["robots"].toArray()[0].toObject()["mission_flights_s"].toDouble(), total);
     }
 
     // A part's flight: its legs at their commanded speeds; an aircraft's also from home and back.
