@@ -143,11 +143,14 @@ double flightSeconds(const AutopilotMission& mission) {
 
 // The time of one flight along a part of a mission, kept as points are added, so that a part can be held
 // against a battery point by point: the legs at their commanded speeds, the turns priced as the plan prices
-// them, and for an aircraft the trips from home (the mission's first point) and back.
+// them, and for an aircraft its climb to the mission's altitude, the trips from home (the mission's first
+// point) and back, and its descent.
 class FlightClock {
   public:
     FlightClock(const AutopilotMission& mission, const VehicleSettings& vehicle, const CellGraph& cells)
-        : mission_(&mission), cells_(&cells), fromHome_(isAircraft(vehicle.type)) {}
+        : mission_(&mission), cells_(&cells), fromHome_(isAircraft(vehicle.type)),
+          climbSeconds_(fromHome_ ? vehicle.altitudeMetres / climbMetresPerSecond : 0.0),
+          descentSeconds_(fromHome_ ? vehicle.altitudeMetres / descentMetresPerSecond : 0.0) {}
 
     // A new flight from the part's first point (after the trip to it from home).
     void begin(std::size_t first) {
@@ -155,6 +158,7 @@ class FlightClock {
         unknown_ = false;
         heading_.reset();
         last_ = first;
+        seconds_ = climbSeconds_;
         if (fromHome_)
             fly(mission_->points.front(), mission_->points[first], mission_->commandedSpeeds[first]);
         tripOut_ = seconds_;
@@ -169,7 +173,7 @@ class FlightClock {
         FlightClock ended = *this;
         if (fromHome_)
             ended.fly(mission_->points[last_], mission_->points.front(), mission_->commandedSpeeds[last_]);
-        return ended.unknown_ ? 0.0 : ended.seconds_;
+        return ended.unknown_ ? 0.0 : ended.seconds_ + descentSeconds_;
     }
     // The same without the trips from home and back: the work one flight does.
     [[nodiscard]] double workSeconds() const { return unknown_ ? 0.0 : seconds_ - tripOut_; }
@@ -188,9 +192,16 @@ class FlightClock {
         heading_ = std::make_pair(dx, dy);
     }
 
+    // ArduCopter's default climb and descent rates (WPNAV_SPEED_UP, WPNAV_SPEED_DN); a fixed wing climbs
+    // and glides down faster, so its flights come out a little long, never short.
+    static constexpr double climbMetresPerSecond = 2.5;
+    static constexpr double descentMetresPerSecond = 1.5;
+
     const AutopilotMission* mission_;
     const CellGraph* cells_;
     bool fromHome_ = false;
+    double climbSeconds_ = 0.0;
+    double descentSeconds_ = 0.0;
     double seconds_ = 0.0;
     double tripOut_ = 0.0;
     bool unknown_ = false;
@@ -291,6 +302,17 @@ void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, c
     const PartLimits full{itemLimit, vehicle.flightTimeSeconds};
     std::vector<MissionPart> parts = partsFilledUpTo(mission, full, beside, clock);
     const std::size_t fewest = parts.size();
+    // Parts out of one flight's reach go on for a flight's work: with a smaller share of the flight, more of
+    // them would, and parts that fit a flight would no longer.
+    const auto overFlight = [&](const std::vector<MissionPart>& tried) {
+        if (!(full.seconds > 0.0))
+            return std::size_t{0};
+        return static_cast<std::size_t>(
+            std::count_if(tried.begin(), tried.end(), [&](const MissionPart& part) {
+                return partSeconds(mission, part, vehicle, cells) > full.seconds;
+            }));
+    };
+    const std::size_t fewestOver = overFlight(parts);
     // Two waypoints with a speed change between them are the least a part holds.
     const auto share = [&](double fraction) {
         return PartLimits{std::max(beside + 3, static_cast<int>(std::min<double>(itemLimit, 1e9) * fraction)),
@@ -301,7 +323,7 @@ void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, c
     while (fewest > 1 && enough - tooSmall > 1e-4) {
         const double fraction = (tooSmall + enough) / 2.0;
         std::vector<MissionPart> tried = partsFilledUpTo(mission, share(fraction), beside, clock);
-        if (tried.size() <= fewest) {
+        if (tried.size() <= fewest && overFlight(tried) <= fewestOver) {
             enough = fraction;
             parts = std::move(tried);
         } else {

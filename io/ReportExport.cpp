@@ -10,6 +10,7 @@
 #include "io/internal/TextFiles.hpp"
 
 #include <algorithm>
+#include <string_view>
 #include <variant>
 
 namespace mcpp::io {
@@ -83,20 +84,24 @@ std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
 
 // Robots whose waypoint files are written in parts or sorties: scripts find it among the issues, beside what
 // the run printed.
-void addMissionFileIssues(JsonValue& issues, const ExportContext& context) {
+void addMissionFileIssues(JsonValue& issues, JsonValue& warnings, const ExportContext& context) {
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
         const std::string file = "robot_" + std::to_string(robotNumber(robot.robot)) + ".plan";
+        const std::string besideWaypoints = ", and the same for its .waypoints file";
         const std::tuple<const char*, const char*, std::string> notes[] = {
-            {"information", "mission-split", splitMissionNote(context, robot.robot, file)},
+            {"information", "mission-split", splitMissionNote(context, robot.robot, file) + besideWaypoints},
             {"warning", "flight-time-exceeded", flightTimeWarning(context, robot.robot)},
-            {"information", "mission-sorties", sortieFilesNote(context, robot.robot, file)}};
+            {"information", "mission-sorties",
+             sortieFilesNote(context, robot.robot, file) + besideWaypoints}};
         for (const auto& [severity, code, message] : notes) {
-            if (message.empty())
+            if (message.empty() || message == besideWaypoints)
                 continue;
             JsonValue& item = issues.push(JsonValue::object());
             item.add("severity", severity);
             item.add("code", code);
-            item.add("message", message + ", and the same for its .waypoints file");
+            item.add("message", message);
+            if (std::string_view(severity) == "warning")
+                warnings.push(message);
         }
     }
 }
@@ -184,7 +189,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("code", issue.code);
         item.add("message", issue.message);
     }
-    addMissionFileIssues(issues, context);
+    addMissionFileIssues(issues, warnings, context);
     return internal::writeFileAtomically(path, root.toText(), Sync::BySystem);
 }
 

@@ -65,7 +65,7 @@ std::optional<std::string> flightTimeProblem(double seconds) {
     if (seconds == 0.0 || (seconds >= minimumFlightTimeSeconds && seconds <= maximumFlightTimeSeconds))
         return std::nullopt;
     return "must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 s), not " +
-           formatQuantity(seconds) + " s";
+           formatQuantity(seconds, 12) + " s";
 }
 
 } // namespace mcpp::io

@@ -535,14 +535,15 @@ std::string sortieFilesNote(const ExportContext& context, int robot, const std::
 
 namespace {
 
-// "538 to 607 items", or "607 items" when the parts are as big as one another.
+// "538 to 607 items, home included", or "607 items, home included" when the parts are as big as one another.
 std::string partSizes(const AutopilotMission& mission) {
     const auto [fewest, most] =
         std::minmax_element(mission.parts.begin(), mission.parts.end(),
                             [](const MissionPart& a, const MissionPart& b) { return a.items < b.items; });
-    return fewest->items == most->items
-               ? std::to_string(most->items) + " items"
-               : std::to_string(fewest->items) + " to " + std::to_string(most->items) + " items";
+    const std::string sizes = fewest->items == most->items
+                                  ? std::to_string(most->items)
+                                  : std::to_string(fewest->items) + " to " + std::to_string(most->items);
+    return sizes + " items, home included";
 }
 
 // "; the parts fly 3 h 2 min in all, the longest 24 min 10 s", for a battery; nothing when a speed is

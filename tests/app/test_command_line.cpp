@@ -281,6 +281,11 @@ void TestCommandLine::errors_data() {
         << words("--batch m.json --out o --flight-time 30")
         << "--flight-time \"30\": must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 s), "
            "not 30 s";
+    QTest::newRow("--flight-time a second above 1000 h")
+        << words("--batch m.json --out o --flight-time 3600001")
+        << "--flight-time \"3600001\": must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 "
+           "s), "
+           "not 3600001 s";
     QTest::newRow("--fov-scale zero")
         << words("--batch m.json --out o --fov-scale 0")
         << "--fov-scale: \"0\" is not a factor for the fields of view (more than 0, up to 1000)";

@@ -502,7 +502,8 @@ class AutopilotMissionTest : public QObject {
         QCOMPARE(readJson(report)["robots"].toArray()[0].toObject()["mission_flights_s"].toDouble(), total);
     }
 
-    // A part's flight: its legs at their commanded speeds; an aircraft's also from home and back.
+    // A part's flight: its legs at their commanded speeds; an aircraft's also its climb, the trips from home
+    // and back, and its descent.
     void partSecondsCountTheTripsToAndFromHome() {
         AutopilotMission mission;
         const auto at = [](double x, double y) {
@@ -518,8 +519,10 @@ class AutopilotMissionTest : public QObject {
         QCOMPARE(partSeconds(mission, second, rover, noTurnPrice), 20.0); // 100 m at 5 m/s
         VehicleSettings drone;
         drone.type = VehicleType::Multirotor;
-        // Out to (100, 0) at 10 m/s, on at 5 m/s, and back from (100, 100) at 5 m/s.
-        const double expected = 10.0 + 20.0 + std::hypot(100.0, 100.0) / 5.0;
+        drone.altitudeMetres = 60.0;
+        // Up to 60 m at 2.5 m/s, out to (100, 0) at 10 m/s, on at 5 m/s, back from (100, 100) at 5 m/s, and
+        // down at 1.5 m/s.
+        const double expected = 24.0 + 10.0 + 20.0 + std::hypot(100.0, 100.0) / 5.0 + 40.0;
         QVERIFY(std::abs(partSeconds(mission, second, drone, noTurnPrice) - expected) < 1e-9);
         mission.commandedSpeeds[2] = 0.0;
         QCOMPARE(partSeconds(mission, second, drone, noTurnPrice), 0.0); // a speed unknown
