@@ -14,6 +14,11 @@
 namespace mcpp::io {
 namespace {
 
+// ArduCopter's default climb and descent rates (WPNAV_SPEED_UP, WPNAV_SPEED_DN); a fixed wing climbs and
+// glides down faster, so its flights come out a little long, never short.
+constexpr double climbMetresPerSecond = 2.5;
+constexpr double descentMetresPerSecond = 1.5;
+
 using internal::collinearAndBetween;
 
 // A commanded speed along a path as steps: each holds from its first waypoint up to the next step's. A step
@@ -191,11 +196,6 @@ class FlightClock {
             seconds_ += turnSecondsAt(from, heading_->first, heading_->second, dx, dy, *cells_);
         heading_ = std::make_pair(dx, dy);
     }
-
-    // ArduCopter's default climb and descent rates (WPNAV_SPEED_UP, WPNAV_SPEED_DN); a fixed wing climbs
-    // and glides down faster, so its flights come out a little long, never short.
-    static constexpr double climbMetresPerSecond = 2.5;
-    static constexpr double descentMetresPerSecond = 1.5;
 
     const AutopilotMission* mission_;
     const CellGraph* cells_;
@@ -387,6 +387,15 @@ double partSeconds(const AutopilotMission& mission, const MissionPart& part, con
     for (std::size_t point = part.first; point < part.last; ++point)
         clock.extend();
     return clock.seconds();
+}
+
+double flightReachMetres(const VehicleSettings& vehicle) {
+    if (!isAircraft(vehicle.type) || !(vehicle.cruiseSpeedMetresPerSecond > 0.0) ||
+        !(vehicle.flightTimeSeconds > 0.0))
+        return 0.0;
+    const double upAndDown =
+        vehicle.altitudeMetres / climbMetresPerSecond + vehicle.altitudeMetres / descentMetresPerSecond;
+    return std::max(0.0, vehicle.flightTimeSeconds - upAndDown) * vehicle.cruiseSpeedMetresPerSecond / 2.0;
 }
 
 MissionSize missionSize(const CoveragePath& path, const CellGraph& cells, const VehicleSettings& vehicle,

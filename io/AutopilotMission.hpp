@@ -61,6 +61,10 @@ struct AutopilotMission {
 [[nodiscard]] double partSeconds(const AutopilotMission& mission, const MissionPart& part,
                                  const VehicleSettings& vehicle, const CellGraph& cells);
 
+// How far an aircraft at its cruise speed can fly out and come back in one flight, its climb and descent
+// taken out; 0 for a rover, or without a cruise speed or a flight time.
+[[nodiscard]] double flightReachMetres(const VehicleSettings& vehicle);
+
 // How big a robot's waypoint files come out: what the results panel shows before anything is exported.
 struct MissionSize {
     int items = 0;         // of the whole mission in one file

@@ -597,6 +597,24 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
            partName(mission.parts.size() - 1) + ")" + aircraft + longestPartNote(vehicle, mission);
 }
 
+namespace {
+
+// Why an aircraft's flights do not fit: "its farthest waypoint lies 11.2 km from its start, and one flight
+// at 12 m/s reaches 6.8 km out and back"; the distance alone without a cruise speed.
+std::string outOfReachNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
+    double farthest = 0.0;
+    const Waypoint& home = mission.points.front();
+    for (const Waypoint& point : mission.points)
+        farthest = std::max(farthest, std::hypot(point.x - home.x, point.y - home.y));
+    const double reach = flightReachMetres(vehicle);
+    return "its farthest waypoint lies " + formatDistance(farthest) + " from its start" +
+           (reach > 0.0 ? ", and one flight at " + formatQuantity(vehicle.cruiseSpeedMetresPerSecond, 4) +
+                              " m/s reaches " + formatDistance(reach) + " out and back"
+                        : std::string());
+}
+
+} // namespace
+
 std::string flightTimeWarning(const ExportContext& context, int robot) {
     const VehicleSettings& vehicle = context.vehicle(robot);
     if (!(vehicle.flightTimeSeconds > 0.0))
@@ -619,9 +637,8 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
     return context.robotName(robot) + ": " + which + formatDuration(longest) +
            (aircraft ? " with the flights to and from its start" : "") + ", longer than its " +
            formatDuration(vehicle.flightTimeSeconds) + " flight time: " +
-           (aircraft ? "its path goes further from the start than one flight reaches and comes back"
-                     : "its path has stretches longer than one flight") +
-           ". Start robots nearer that ground, or plan with wavefront-battery and chargers";
+           (aircraft ? outOfReachNote(vehicle, mission) : "its path has stretches longer than one flight") +
+           ". Add robots, or start them nearer that ground, or plan with wavefront-battery and chargers";
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

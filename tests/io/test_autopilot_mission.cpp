@@ -546,6 +546,33 @@ class AutopilotMissionTest : public QObject {
                  qPrintable(QStringLiteral("%1 s, the mission %2 s").arg(seconds).arg(mission.seconds)));
     }
 
+    // Flights that cannot fit are named with the distance that makes them too long and one flight's reach.
+    void flightsOutOfReachAreNamed() {
+        LawnmowerExport lawnmowerExport;
+        VehicleSettings& drone = lawnmowerExport.settings.vehicle;
+        drone.type = VehicleType::Multirotor;
+        drone.cruiseSpeedMetresPerSecond = 1.0;
+        drone.maxWaypoints = 0;
+        drone.flightTimeSeconds = 60.0; // 12 s up to 30 m, 20 s down: 14 m out and back
+        QCOMPARE(flightReachMetres(drone), 14.0);
+        const ExportContext context = lawnmowerExport.context();
+        const AutopilotMission& mission = autopilotMissionOf(context, 0);
+        double farthest = 0.0;
+        for (const Waypoint& point : mission.points)
+            farthest =
+                std::max(farthest, std::hypot(point.x - mission.points[0].x, point.y - mission.points[0].y));
+        const std::string warning = flightTimeWarning(context, 0);
+        QVERIFY2(warning.find("its farthest waypoint lies " + formatDistance(farthest) +
+                              " from its start, and one flight at 1 m/s reaches 14 m out and back") !=
+                     std::string::npos,
+                 warning.c_str());
+        // Flights long enough for the whole mission: nothing to say.
+        lawnmowerExport.settings.vehicle.flightTimeSeconds = 3600.0 * 10.0;
+        QVERIFY(flightTimeWarning(lawnmowerExport.context(), 0).empty());
+        drone.type = VehicleType::Rover;
+        QCOMPARE(flightReachMetres(drone), 0.0);
+    }
+
     void aircraftTakeOffAtTheStartAndReturnToItInEveryPart() {
         LawnmowerExport lawnmowerExport;
         lawnmowerExport.settings.vehicle.type = VehicleType::Multirotor;
