@@ -716,6 +716,7 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
         }
     }
     painter.setRenderHint(QPainter::Antialiasing, true);
+    paintFlightReach(painter, worldToDevice, starts);
     // Text needs the font database of a QGuiApplication; without one the markers go unnumbered.
     const bool canDrawText = qobject_cast<QGuiApplication*>(QCoreApplication::instance()) != nullptr;
     if (canDrawText) {
@@ -743,6 +744,22 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
         painter.drawText(box, Qt::AlignCenter, QString::number(robot + 1));
     }
     paintChargers(painter, worldToDevice);
+}
+
+// Under the markers, so that a start stays easy to pick; dashed, so that it does not read as a region border.
+void PlanRenderer::paintFlightReach(QPainter& painter, const QTransform& worldToDevice,
+                                    const std::vector<MapPoint>& starts) const {
+    const double pixelsPerMetre = std::abs(worldToDevice.m11());
+    for (std::size_t robot = 0; robot < starts.size() && robot < flightReach_.size(); ++robot) {
+        if (!(flightReach_[robot] > 0.0))
+            continue;
+        const QPointF centre = worldToDevice.map(QPointF(starts[robot].x, starts[robot].y));
+        const double radius = flightReach_[robot] * pixelsPerMetre;
+        QPen pen(RobotPalette::colour(static_cast<int>(robot)).darker(130), 2.0, Qt::DashLine);
+        painter.setPen(pen);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(centre, radius, radius);
+    }
 }
 
 // A charger away from its robot's start: a square in the robot's colour with a white bolt, so it reads as

@@ -37,6 +37,9 @@ class PlanRenderer {
     // Each robot's charger away from its start, as placed (none: at its start); without them, those of
     // the plan's sorties.
     void setChargers(std::vector<std::optional<MapPoint>> chargers) { chargers_ = std::move(chargers); }
+    // By robot, how far its aircraft flies out and back in one flight (io::flightReachMetres), drawn as a
+    // dashed ring round its start: ground outside cannot be covered from there. 0: no ring.
+    void setFlightReach(std::vector<double> metres) { flightReach_ = std::move(metres); }
     void setLayers(const MapLayers& layers) { layers_ = layers; }
     // A plan simulated over time shown at one moment: each path as driven so far, each robot where it is.
     // Empty: the whole paths.
@@ -112,6 +115,8 @@ class PlanRenderer {
     void paintCrossings(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
     void paintChargers(QPainter& painter, const QTransform& worldToDevice) const;
+    void paintFlightReach(QPainter& painter, const QTransform& worldToDevice,
+                          const std::vector<MapPoint>& starts) const;
     static void drawCharger(QPainter& painter, QPointF centre, const QColor& colour);
 
     std::vector<GridImage> landCoverPyramid_; // halved again and again, for zoomed-out views
@@ -121,6 +126,7 @@ class PlanRenderer {
     std::vector<Outline> unreachableOutlines_;
     std::vector<std::pair<int, Outline>> takenOverOutlines_; // (robot, outline): the cells it took over
     std::vector<std::optional<MapPoint>> chargers_;          // by robot: a charger away from its start
+    std::vector<double> flightReach_;                        // by robot, metres; 0: none
     std::vector<QRectF> crossingCells_; // world rectangles of cells whose path crosses impassable land
     std::vector<PathLine> pathLines_;
     double meanStepMetres_ = 0.0; // mean distance between consecutive waypoints

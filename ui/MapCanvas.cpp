@@ -1,6 +1,7 @@
 #include "ui/MapCanvas.hpp"
 
 #include "core/planners/PlannerRegistry.hpp"
+#include "io/AutopilotMission.hpp"
 #include "render/MapDecorations.hpp"
 #include "ui/CellToolTip.hpp"
 #include "ui/MissionDocument.hpp"
@@ -81,6 +82,10 @@ void MapCanvas::refreshStarts() {
     const auto planner = findPlannerDescription(document_->plannerChoice().planner);
     renderer_.setChargers(planner && planner->fliesOnBatteries() ? document_->chargers()
                                                                  : std::vector<std::optional<MapPoint>>{});
+    std::vector<double> reach;
+    for (const io::VehicleSettings& vehicle : io::robotVehicles(document_->mission()))
+        reach.push_back(io::flightReachMetres(vehicle));
+    renderer_.setFlightReach(std::move(reach));
     update();
 }
 

@@ -206,6 +206,38 @@ class TestPlanRenderer : public QObject {
         QVERIFY(sections[1].title.contains("charger"));
     }
 
+    // An aircraft's reach in one flight: a dashed ring of that radius round its start in the robot's colour,
+    // none without one.
+    void ringsTheGroundAFlightReaches() {
+        const ClassGrid grid = twoClassGrid();
+        const ClassTable classes = twoClassTable();
+        const auto ringPixels = [&](std::vector<double> reach) {
+            render::PlanRenderer renderer;
+            renderer.setMap(&grid, &classes);
+            renderer.setStarts({{1050.0, 4950.0}});
+            renderer.setFlightReach(std::move(reach));
+            QImage image(400, 200, QImage::Format_RGB32);
+            QPainter painter(&image);
+            const QTransform transform = render::PlanRenderer::fitTransform(grid, QSizeF(400, 200));
+            renderer.paint(painter, transform, QRectF(0, 0, 400, 200));
+            painter.end();
+            // 2 pixels a metre: 40 m is a ring of 80 pixels round (100, 100); count its pixels of the
+            // robot's colour, darkened, at 72 angles.
+            int drawn = 0;
+            for (int step = 0; step < 72; ++step) {
+                const double angle = step * 5.0 * 3.14159265358979 / 180.0;
+                const QColor pixel =
+                    image.pixelColor(static_cast<int>(std::lround(100 + 80 * std::cos(angle))),
+                                     static_cast<int>(std::lround(100 + 80 * std::sin(angle))));
+                drawn += near(pixel, render::RobotPalette::colour(0).darker(130), 40) ? 1 : 0;
+            }
+            return drawn;
+        };
+        QVERIFY2(ringPixels({40.0}) > 36, qPrintable(QString::number(ringPixels({40.0}))));
+        QCOMPARE(ringPixels({0.0}), 0);
+        QCOMPARE(ringPixels({}), 0);
+    }
+
     // A detection layer over the meadow half: its western half seen as required (green), its eastern
     // half not seen (red); switched off, the meadow shows plain. The legend explains the colours.
     void drawsWhatTheSensorSees() {
