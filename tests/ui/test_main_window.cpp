@@ -203,6 +203,12 @@ class TestMainWindow : public QObject {
         const QString second =
             ui::ResultsPanel::waypointFilesText({{380, 1}, {1500, 3}, {55, 1}}, vehicles, names);
         QCOMPARE(second, QStringLiteral("1 robot above the item limit, in parts: Robot 2 in 3"));
+        // With a flight time, parts may come from it too, and flights out of reach are counted.
+        vehicles[2].flightTimeSeconds = 1200.0;
+        const QString flights =
+            ui::ResultsPanel::waypointFilesText({{380, 1}, {380, 1}, {90, 6, 1900.0, 2}}, vehicles, names);
+        QCOMPARE(flights, QStringLiteral("1 robot above the item limit or flight time, in parts: south in 6; "
+                                         "2 parts longer than a flight (out of its reach)"));
     }
 
     void robotLabelStepKeepsTheNumbersThatFit() {
