@@ -100,6 +100,11 @@ void paintSymbol(QPainter& painter, const LegendItem& item, const QRectF& box) {
         painter.setBrush(Qt::NoBrush);
         painter.drawRect(swatch.adjusted(1.0, 1.0, -1.0, -1.0));
         break;
+    case LegendSymbol::FlightReach:
+        painter.setPen(QPen(item.colour, 1.5, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(swatch);
+        break;
     case LegendSymbol::CellOutline:
         painter.setPen(QPen(item.colour, 1.0));
         painter.setBrush(Qt::NoBrush);
@@ -203,6 +208,20 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
         sections.push_back(std::move(overlays));
     }
     return sections;
+}
+
+LegendItem flightReachLegendItem() {
+    return {LegendSymbol::FlightReach,
+            RobotPalette::colour(0).darker(130),
+            QStringLiteral("How far one flight reaches and comes back"),
+            {}};
+}
+
+void addFlightReach(std::vector<LegendSection>& sections) {
+    const QString title = QStringLiteral("On the map");
+    if (sections.empty() || sections.back().title != title)
+        sections.push_back({title, {}});
+    sections.back().items.push_back(flightReachLegendItem());
 }
 
 QSizeF legendSize(const std::vector<LegendSection>& sections, const QFont& font) {

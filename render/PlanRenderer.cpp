@@ -755,7 +755,8 @@ void PlanRenderer::paintFlightReach(QPainter& painter, const QTransform& worldTo
             continue;
         const QPointF centre = worldToDevice.map(QPointF(starts[robot].x, starts[robot].y));
         const double radius = flightReach_[robot] * pixelsPerMetre;
-        QPen pen(RobotPalette::colour(static_cast<int>(robot)).darker(130), 2.0, Qt::DashLine);
+        QPen pen(RobotPalette::colour(static_cast<int>(robot)).darker(130), 2.0,
+                 Qt::DashLine); // as the legend
         painter.setPen(pen);
         painter.setBrush(Qt::NoBrush);
         painter.drawEllipse(centre, radius, radius);

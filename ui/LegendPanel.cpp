@@ -1,9 +1,11 @@
 #include "ui/LegendPanel.hpp"
 
+#include "io/AutopilotMission.hpp"
 #include "io/Mission.hpp"
 #include "ui/MissionDocument.hpp"
 
 #include <QPainter>
+#include <algorithm>
 
 namespace mcpp::ui {
 
@@ -21,9 +23,15 @@ LegendPanel::LegendPanel(MissionDocument* document, QWidget* parent) : QWidget(p
 
 void LegendPanel::rebuild() {
     sections_.clear();
-    if (document_->hasMap())
+    if (document_->hasMap()) {
         sections_ = render::planLegend(document_->classes(), document_->plan(),
                                        io::robotNames(document_->mission()), document_->grid());
+        const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(document_->mission());
+        if (std::any_of(vehicles.begin(), vehicles.end(), [](const io::VehicleSettings& vehicle) {
+                return io::flightReachMetres(vehicle) > 0.0;
+            }))
+            render::addFlightReach(sections_);
+    }
     setMinimumSize(sizeHint());
     updateGeometry();
     update();

@@ -238,6 +238,24 @@ class TestPlanRenderer : public QObject {
         QCOMPARE(ringPixels({}), 0);
     }
 
+    // The rings' legend line joins "On the map", or makes it before there is a plan.
+    void legendExplainsTheFlightReach() {
+        std::vector<render::LegendSection> mapOnly = render::planLegend(twoClassTable(), nullptr, {});
+        const std::size_t sections = mapOnly.size();
+        render::addFlightReach(mapOnly);
+        QCOMPARE(mapOnly.size(), sections + 1);
+        QCOMPARE(mapOnly.back().title, QStringLiteral("On the map"));
+        QVERIFY(mapOnly.back().items.back().symbol == render::LegendSymbol::FlightReach);
+        const Plan plan = eastboundPlan();
+        std::vector<render::LegendSection> planned = render::planLegend(twoClassTable(), &plan, {});
+        const std::size_t plannedSections = planned.size();
+        const std::size_t overlays = planned.back().items.size();
+        render::addFlightReach(planned);
+        QCOMPARE(planned.size(), plannedSections);
+        QCOMPARE(planned.back().items.size(), overlays + 1);
+        QVERIFY(planned.back().items.back().label.contains(QStringLiteral("one flight")));
+    }
+
     // A detection layer over the meadow half: its western half seen as required (green), its eastern
     // half not seen (red); switched off, the meadow shows plain. The legend explains the colours.
     void drawsWhatTheSensorSees() {
