@@ -99,11 +99,10 @@ bool writeWhole(const QString& path, const QByteArray& bytes, QString* error) {
 } // namespace
 
 bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error, const RegionOutlines* outlines,
-                  const std::vector<std::string>& robotNames) {
+                  QSize maxSize, QString* error, const SheetExtras& extras) {
     if (!checkInputs(grid, maxSize, path, error))
         return false;
-    const PlanSheet sheet(grid, classes, plan, outlines, robotNames, maxSize);
+    const PlanSheet sheet(grid, classes, plan, extras, maxSize);
     // Painted on 32-bit pixels, the raster engine's fastest format; written as 8-bit RGB.
     QImage image = blankPicture(sheet.size());
     QPainter painter(&image);
@@ -118,8 +117,7 @@ bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& 
 }
 
 bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error, const RegionOutlines* outlines,
-                  const std::vector<std::string>& robotNames) {
+                  QSize maxSize, QString* error, const SheetExtras& extras) {
     if (!checkInputs(grid, maxSize, path, error))
         return false;
     const QFileInfo info(path);
@@ -128,7 +126,7 @@ bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& 
                  QStringLiteral("cannot write %1: folder %2 does not exist").arg(path, info.absolutePath()));
         return false;
     }
-    const PlanSheet sheet(grid, classes, plan, outlines, robotNames, maxSize);
+    const PlanSheet sheet(grid, classes, plan, extras, maxSize);
     QBuffer drawing;
     drawing.open(QIODevice::WriteOnly);
     QSvgGenerator generator;

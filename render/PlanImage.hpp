@@ -5,6 +5,7 @@
 #include "core/model/Plan.hpp"
 #include "core/outlines/RegionOutlines.hpp"
 #include "render/MapLayers.hpp"
+#include "render/PlanSheet.hpp"
 
 #include <QImage>
 #include <QSize>
@@ -24,11 +25,9 @@ namespace mcpp::render {
 // Writes the plan's map sheet (PlanSheet: title, map fitted into maxSize with scale bar and north arrow,
 // legend naming the robots) as PNG. On failure returns false and says why in *error (when not null).
 bool writePlanPng(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error, const RegionOutlines* outlines = nullptr,
-                  const std::vector<std::string>& robotNames = {});
+                  QSize maxSize, QString* error, const SheetExtras& extras = {});
 // Writes the same sheet as SVG (vector paths and cells; the land cover embedded as an image).
 bool writePlanSvg(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, const QString& path,
-                  QSize maxSize, QString* error, const RegionOutlines* outlines = nullptr,
-                  const std::vector<std::string>& robotNames = {});
+                  QSize maxSize, QString* error, const SheetExtras& extras = {});
 
 } // namespace mcpp::render

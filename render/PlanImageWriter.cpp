@@ -1,5 +1,6 @@
 #include "render/PlanImageWriter.hpp"
 
+#include "io/AutopilotMission.hpp"
 #include "render/PlanImage.hpp"
 
 namespace mcpp::render {
@@ -10,12 +11,14 @@ io::ImageWriter planImageWriter(int pngSide) {
             return io::Status::failure(path + ": there is no map to draw");
         QString error;
         const QString file = QString::fromStdString(path);
-        const bool written =
-            format == io::ImageFormat::Png
-                ? writePlanPng(*context.grid, context.classes, context.plan, file, QSize(pngSide, pngSide),
-                               &error, &context.outlines(), context.robotNames)
-                : writePlanSvg(*context.grid, context.classes, context.plan, file, QSize(1600, 1600), &error,
-                               &context.outlines(), context.robotNames);
+        SheetExtras extras{&context.outlines(), context.robotNames, {}};
+        for (std::size_t robot = 0; robot < context.plan.paths.size(); ++robot)
+            extras.flightReach.push_back(io::flightReachMetres(context.vehicle(static_cast<int>(robot))));
+        const bool written = format == io::ImageFormat::Png
+                                 ? writePlanPng(*context.grid, context.classes, context.plan, file,
+                                                QSize(pngSide, pngSide), &error, extras)
+                                 : writePlanSvg(*context.grid, context.classes, context.plan, file,
+                                                QSize(1600, 1600), &error, extras);
         return written ? io::Status() : io::Status::failure(path + ": " + error.toStdString());
     };
 }

@@ -40,12 +40,14 @@ void PlanSheet::prepareFonts() {
     static_cast<void>(QFontMetricsF(bold).horizontalAdvance(QStringLiteral("Coverage plan")));
 }
 
-PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan,
-                     const RegionOutlines* outlines, const std::vector<std::string>& robotNames,
+PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, SheetExtras extras,
                      QSize maxMapSize)
-    : grid_(grid), classes_(classes), plan_(plan), outlines_(outlines),
+    : grid_(grid), classes_(classes), plan_(plan), extras_(std::move(extras)),
       crossings_(impassableCrossings(plan.cells, plan.regions, grid, classes)),
-      sections_(planLegend(classes, &plan, robotNames, &grid, &crossings_)), title_(titleOf(plan)) {
+      sections_(planLegend(classes, &plan, extras_.robotNames, &grid, &crossings_)), title_(titleOf(plan)) {
+    if (std::any_of(extras_.flightReach.begin(), extras_.flightReach.end(),
+                    [](double metres) { return metres > 0.0; }))
+        addFlightReach(sections_);
     const QSize mapSize = fittedMapSize(grid, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
     const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);
@@ -74,7 +76,8 @@ void PlanSheet::paint(QPainter& painter) const {
 
     PlanRenderer renderer;
     renderer.setMap(&grid_, &classes_);
-    renderer.setPlan(&plan_, outlines_, &crossings_);
+    renderer.setPlan(&plan_, extras_.outlines, &crossings_);
+    renderer.setFlightReach(extras_.flightReach);
     painter.save();
     painter.setClipRect(map_);
     // The renderer draws in device coordinates: the map's placement goes into its transform.

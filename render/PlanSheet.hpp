@@ -14,12 +14,19 @@
 
 namespace mcpp::render {
 
+// What a sheet shows beside the plan, when the caller has it.
+struct SheetExtras {
+    const RegionOutlines* outlines = nullptr; // the plan's region outlines; traced here when null
+    std::vector<std::string> robotNames;      // by robot; empty names read "Robot n"
+    std::vector<double> flightReach;          // by robot, metres: rings round aircraft starts
+};
+
 // The exported picture of a plan as a map sheet: a title, the map fitted into maxMapSize with a scale bar
 // and a north arrow, and the legend beside it (classes, robots with names and times, overlays).
 class PlanSheet {
   public:
-    PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan,
-              const RegionOutlines* outlines, const std::vector<std::string>& robotNames, QSize maxMapSize);
+    PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Plan& plan, SheetExtras extras,
+              QSize maxMapSize);
     // The map's size fitted into maxSize, keeping its aspect.
     [[nodiscard]] static QSize fittedMapSize(const ClassGrid& grid, QSize maxSize);
     // Loads the font database, which the first sheet of a process otherwise waits for; safe on any thread
@@ -35,7 +42,7 @@ class PlanSheet {
     const ClassGrid& grid_;
     const ClassTable& classes_;
     const Plan& plan_;
-    const RegionOutlines* outlines_;
+    SheetExtras extras_;
     // Found once for the legend and the map: a scan of every cell's pixels.
     std::vector<ImpassableCrossing> crossings_;
     std::vector<LegendSection> sections_;

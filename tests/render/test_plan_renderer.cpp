@@ -236,6 +236,25 @@ class TestPlanRenderer : public QObject {
         QVERIFY2(ringPixels({40.0}) > 36, qPrintable(QString::number(ringPixels({40.0}))));
         QCOMPARE(ringPixels({0.0}), 0);
         QCOMPARE(ringPixels({}), 0);
+        // The exported sheet draws them too, and its legend says what they are.
+        const Plan plan = eastboundPlan();
+        const auto sheetImage = [&](std::vector<double> reach) {
+            const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, std::move(reach)},
+                                          QSize(400, 400));
+            QImage image(sheet.size(), QImage::Format_RGB32);
+            image.fill(Qt::white);
+            QPainter painter(&image);
+            sheet.paint(painter);
+            return image;
+        };
+        const QImage without = sheetImage({});
+        const QImage with = sheetImage({40.0});
+        QVERIFY(with.height() >= without.height());
+        int differing = 0;
+        for (int y = 0; y < without.height(); ++y)
+            for (int x = 0; x < without.width(); ++x)
+                differing += with.pixel(x, y) != without.pixel(x, y) ? 1 : 0;
+        QVERIFY2(differing > 200, qPrintable(QString::number(differing)));
     }
 
     // The rings' legend line joins "On the map", or makes it before there is a plan.
@@ -476,9 +495,10 @@ class TestPlanRenderer : public QObject {
         QString error;
         const QString png = directory.filePath(QStringLiteral("plan.png"));
         QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, png, QSize(800, 800), &error,
-                                      nullptr, names),
+                                      {nullptr, names, {}}),
                  qPrintable(error));
-        const render::PlanSheet sheet(twoClassGrid(), twoClassTable(), plan, nullptr, names, QSize(800, 800));
+        const render::PlanSheet sheet(twoClassGrid(), twoClassTable(), plan, {nullptr, names, {}},
+                                      QSize(800, 800));
         QCOMPARE(sheet.mapArea().size(), QSize(800, 400));
         QImage readBack(png);
         QCOMPARE(readBack.size(), sheet.size());
@@ -501,7 +521,7 @@ class TestPlanRenderer : public QObject {
 
         const QString svg = directory.filePath(QStringLiteral("plan.svg"));
         QVERIFY2(render::writePlanSvg(twoClassGrid(), twoClassTable(), plan, svg, QSize(800, 800), &error,
-                                      nullptr, names),
+                                      {nullptr, names, {}}),
                  qPrintable(error));
         QFile file(svg);
         QVERIFY(file.open(QIODevice::ReadOnly));
