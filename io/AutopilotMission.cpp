@@ -159,7 +159,6 @@ class FlightClock {
 
     // A new flight from the part's first point (after the trip to it from home).
     void begin(std::size_t first) {
-        seconds_ = 0.0;
         unknown_ = false;
         heading_.reset();
         last_ = first;
@@ -245,7 +244,8 @@ struct PartLimits {
     double seconds = 0.0;
 };
 
-// The parts a mission splits into when each keeps within the limits, filled one after the other. A part
+// The parts a mission splits into when each keeps within the limits, filled one after the other, with their
+// flights' seconds when timed (0 otherwise). A part
 // holds at least two points. One whose flight is already longer than the limit (a stretch out of one
 // flight's reach of the start) goes on until its work alone, without the trips, would be: cut at every point,
 // it would make a file a point.
@@ -268,6 +268,7 @@ std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, PartLi
         const bool tooLong = timed && longerSeconds > limits.seconds &&
                              (soFar <= limits.seconds || longer.workSeconds() > limits.seconds);
         if ((part.items + added > limits.items || tooLong) && part.last > part.first) {
+            part.seconds = soFar;
             parts.push_back(part);
             part = {part.last, part.last, beside + 1};
             if (timed) {
@@ -282,6 +283,7 @@ std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, PartLi
         part.last = point;
         part.items += added;
     }
+    part.seconds = soFar;
     parts.push_back(part);
     return parts;
 }
@@ -308,9 +310,8 @@ void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, c
         if (!(full.seconds > 0.0))
             return std::size_t{0};
         return static_cast<std::size_t>(
-            std::count_if(tried.begin(), tried.end(), [&](const MissionPart& part) {
-                return partSeconds(mission, part, vehicle, cells) > full.seconds;
-            }));
+            std::count_if(tried.begin(), tried.end(),
+                          [&](const MissionPart& part) { return part.seconds > full.seconds; }));
     };
     const std::size_t fewestOver = overFlight(parts);
     // Two waypoints with a speed change between them are the least a part holds.
@@ -387,6 +388,14 @@ double partSeconds(const AutopilotMission& mission, const MissionPart& part, con
     for (std::size_t point = part.first; point < part.last; ++point)
         clock.extend();
     return clock.seconds();
+}
+
+std::vector<double> flightReachesMetres(const std::vector<VehicleSettings>& vehicles) {
+    std::vector<double> reaches;
+    reaches.reserve(vehicles.size());
+    for (const VehicleSettings& vehicle : vehicles)
+        reaches.push_back(flightReachMetres(vehicle));
+    return reaches;
 }
 
 double flightReachMetres(const VehicleSettings& vehicle) {

@@ -64,6 +64,8 @@ struct AutopilotMission {
 // How far an aircraft at its cruise speed can fly out and come back in one flight, its climb and descent
 // taken out; 0 for a rover, or without a cruise speed or a flight time.
 [[nodiscard]] double flightReachMetres(const VehicleSettings& vehicle);
+// The same for each vehicle, in order: what the map rings round the robots' starts.
+[[nodiscard]] std::vector<double> flightReachesMetres(const std::vector<VehicleSettings>& vehicles);
 
 // How big a robot's waypoint files come out: what the results panel shows before anything is exported.
 struct MissionSize {

@@ -217,11 +217,16 @@ LegendItem flightReachLegendItem() {
             {}};
 }
 
-void addFlightReach(std::vector<LegendSection>& sections) {
+void addFlightReach(std::vector<LegendSection>& sections, const std::vector<double>& reaches) {
+    if (std::none_of(reaches.begin(), reaches.end(), [](double metres) { return metres > 0.0; }))
+        return;
     const QString title = QStringLiteral("On the map");
     if (sections.empty() || sections.back().title != title)
         sections.push_back({title, {}});
-    sections.back().items.push_back(flightReachLegendItem());
+    sections.back().items.push_back({LegendSymbol::FlightReach,
+                                     RobotPalette::colour(0).darker(130),
+                                     QStringLiteral("How far one flight reaches and comes back"),
+                                     {}});
 }
 
 QSizeF legendSize(const std::vector<LegendSection>& sections, const QFont& font) {

@@ -48,11 +48,10 @@ struct LegendSection {
 planLegend(const ClassTable& classes, const Plan* plan, const std::vector<std::string>& robotNames,
            const ClassGrid* grid = nullptr, const std::vector<ImpassableCrossing>* crossings = nullptr);
 
-// The line for the dashed rings round aircraft starts (PlanRenderer::setFlightReach), which the window adds
-// to "On the map" when an aircraft has a flight time and a cruise speed.
-[[nodiscard]] LegendItem flightReachLegendItem();
-// Adds it to the legend's "On the map" section, making one when there is no plan yet.
-void addFlightReach(std::vector<LegendSection>& sections);
+// Adds the line for the dashed rings round aircraft starts (PlanRenderer::setFlightReach) to the legend's
+// "On the map" section (making one when there is no plan yet) when any robot's reach (by robot, metres) is
+// drawn.
+void addFlightReach(std::vector<LegendSection>& sections, const std::vector<double>& reaches);
 
 // The size the legend needs in this font, and the legend itself drawn from topLeft.
 [[nodiscard]] QSizeF legendSize(const std::vector<LegendSection>& sections, const QFont& font);

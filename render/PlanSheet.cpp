@@ -45,9 +45,7 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
     : grid_(grid), classes_(classes), plan_(plan), extras_(std::move(extras)),
       crossings_(impassableCrossings(plan.cells, plan.regions, grid, classes)),
       sections_(planLegend(classes, &plan, extras_.robotNames, &grid, &crossings_)), title_(titleOf(plan)) {
-    if (std::any_of(extras_.flightReach.begin(), extras_.flightReach.end(),
-                    [](double metres) { return metres > 0.0; }))
-        addFlightReach(sections_);
+    addFlightReach(sections_, extras_.flightReach);
     const QSize mapSize = fittedMapSize(grid, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
     const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);

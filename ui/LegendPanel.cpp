@@ -5,7 +5,6 @@
 #include "ui/MissionDocument.hpp"
 
 #include <QPainter>
-#include <algorithm>
 
 namespace mcpp::ui {
 
@@ -26,11 +25,7 @@ void LegendPanel::rebuild() {
     if (document_->hasMap()) {
         sections_ = render::planLegend(document_->classes(), document_->plan(),
                                        io::robotNames(document_->mission()), document_->grid());
-        const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(document_->mission());
-        if (std::any_of(vehicles.begin(), vehicles.end(), [](const io::VehicleSettings& vehicle) {
-                return io::flightReachMetres(vehicle) > 0.0;
-            }))
-            render::addFlightReach(sections_);
+        render::addFlightReach(sections_, io::flightReachesMetres(io::robotVehicles(document_->mission())));
     }
     setMinimumSize(sizeHint());
     updateGeometry();

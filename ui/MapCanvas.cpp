@@ -82,10 +82,7 @@ void MapCanvas::refreshStarts() {
     const auto planner = findPlannerDescription(document_->plannerChoice().planner);
     renderer_.setChargers(planner && planner->fliesOnBatteries() ? document_->chargers()
                                                                  : std::vector<std::optional<MapPoint>>{});
-    std::vector<double> reach;
-    for (const io::VehicleSettings& vehicle : io::robotVehicles(document_->mission()))
-        reach.push_back(io::flightReachMetres(vehicle));
-    renderer_.setFlightReach(std::move(reach));
+    renderer_.setFlightReach(io::flightReachesMetres(io::robotVehicles(document_->mission())));
     update();
 }
 

@@ -261,7 +261,7 @@ class TestPlanRenderer : public QObject {
     void legendExplainsTheFlightReach() {
         std::vector<render::LegendSection> mapOnly = render::planLegend(twoClassTable(), nullptr, {});
         const std::size_t sections = mapOnly.size();
-        render::addFlightReach(mapOnly);
+        render::addFlightReach(mapOnly, {0.0, 250.0});
         QCOMPARE(mapOnly.size(), sections + 1);
         QCOMPARE(mapOnly.back().title, QStringLiteral("On the map"));
         QVERIFY(mapOnly.back().items.back().symbol == render::LegendSymbol::FlightReach);
@@ -269,7 +269,7 @@ class TestPlanRenderer : public QObject {
         std::vector<render::LegendSection> planned = render::planLegend(twoClassTable(), &plan, {});
         const std::size_t plannedSections = planned.size();
         const std::size_t overlays = planned.back().items.size();
-        render::addFlightReach(planned);
+        render::addFlightReach(planned, {250.0});
         QCOMPARE(planned.size(), plannedSections);
         QCOMPARE(planned.back().items.size(), overlays + 1);
         QVERIFY(planned.back().items.back().label.contains(QStringLiteral("one flight")));
