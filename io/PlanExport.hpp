@@ -83,7 +83,8 @@ struct ExportContext {
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.
 [[nodiscard]] Status writePlanGeoJson(const ExportContext& context, const std::string& path);
-// GeoPackage in the raster's CRS: layers regions, paths, starts, unreachable, and cells when
+// GeoPackage in the raster's CRS: layers regions, paths, starts, unreachable, missions (each waypoint file
+// part as a line, with its items and time and whether it fits the flight time), and cells when
 // settings.cellPolygons asks for a polygon per cell.
 [[nodiscard]] Status writePlanGeoPackage(const ExportContext& context, const std::string& path);
 [[nodiscard]] Status writePlanKml(const ExportContext& context, const std::string& path);

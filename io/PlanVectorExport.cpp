@@ -6,6 +6,7 @@
 #include "io/internal/TextFiles.hpp"
 #include "io/internal/TransformationLoan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <ogrsf_frmts.h>
 #include <optional>
@@ -317,6 +318,68 @@ Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& contex
     return {};
 }
 
+// How far the part's farthest waypoint lies from the mission's first point, the robot's start.
+double farthestFromStart(const AutopilotMission& mission, const MissionPart& part) {
+    const Waypoint& start = mission.points.front();
+    double farthest = 0.0;
+    for (std::size_t point = part.first; point <= part.last; ++point)
+        farthest = std::max(farthest,
+                            std::hypot(mission.points[point].x - start.x, mission.points[point].y - start.y));
+    return farthest;
+}
+
+// Each robot's waypoint files as lines, one per part (a flight, for a battery), with what it holds and
+// takes: a user sees on the map which flights fit and where those that do not go.
+Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
+                         const OGRSpatialReference* crs) {
+    auto layer = writer.layer("missions", crs, wkbLineString);
+    if (!layer)
+        return Status::failure(layer.error());
+    if (Status status = createFields(writer, layer.value(),
+                                     {{{"robot", OFTInteger},
+                                       {"robot_name", OFTString},
+                                       {"part", OFTInteger},
+                                       {"parts", OFTInteger},
+                                       {"items", OFTInteger},
+                                       {"time_s", OFTReal},
+                                       {"farthest_m", OFTReal},
+                                       {"flight_time_s", OFTReal},
+                                       {"fits_flight", OFTInteger}}});
+        !status) {
+        return status;
+    }
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    for (const CoveragePath& path : context.plan.paths) {
+        const AutopilotMission& mission = autopilotMissionOf(context, path.robot);
+        const double flightTime = context.vehicle(path.robot).flightTimeSeconds;
+        for (std::size_t part = 0; part < mission.parts.size(); ++part) {
+            const MissionPart& piece = mission.parts[part];
+            OGRFeature feature(layer.value()->GetLayerDefn());
+            setRobotFields(feature, context, path.robot);
+            feature.SetField("part", static_cast<int>(part + 1));
+            feature.SetField("parts", static_cast<int>(mission.parts.size()));
+            feature.SetField("items", piece.items);
+            if (piece.seconds > 0.0)
+                feature.SetField("time_s", piece.seconds);
+            feature.SetField("farthest_m", farthestFromStart(mission, piece));
+            if (flightTime > 0.0) {
+                feature.SetField("flight_time_s", flightTime);
+                if (piece.seconds > 0.0)
+                    feature.SetField("fits_flight", piece.seconds <= flightTime ? 1 : 0);
+            }
+            auto line = std::make_unique<OGRLineString>();
+            line->setNumPoints(static_cast<int>(piece.last - piece.first + 1));
+            for (std::size_t point = piece.first; point <= piece.last; ++point)
+                line->setPoint(static_cast<int>(point - piece.first), mission.points[point].x / metresPerUnit,
+                               mission.points[point].y / metresPerUnit);
+            feature.SetGeometryDirectly(line.release());
+            if (Status status = writer.add(layer.value(), feature); !status)
+                return status;
+        }
+    }
+    return {};
+}
+
 // A polygon per cell with its land cover and robot: asked for explicitly, as it is big on large maps.
 Status writeCellLayer(VectorFileWriter& writer, const ExportContext& context,
                       const OGRSpatialReference* crs) {
@@ -396,6 +459,8 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
             return status;
     }
     if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, crs.get(), false); !status)
+        return status;
+    if (Status status = writeMissionLayer(writer, context, crs.get()); !status)
         return status;
     if (planFeatures.simulatedOverTime) {
         if (Status status = writeTakenOverLayer(writer, context, planFeatures.takenOver, crs.get(), false);

@@ -5,6 +5,7 @@
 #include "core/coverage/StraightRunMerging.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
+#include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
 
 #include <QDir>
@@ -14,6 +15,7 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 #include <fstream>
 #include <gdal_priv.h>
 #include <map>
@@ -354,6 +356,74 @@ class PlanExportTest : public QObject {
             const double area = geometry->toMultiPolygon()->get_Area();
             QVERIFY(std::abs(area - feature->GetFieldAsDouble("area_m2")) <= 1e-6 * area);
         }
+    }
+
+    // The missions layer holds every waypoint file part as its line, point for point, the parts of a robot
+    // joining up, with its items and time and whether it fits the vehicle's flight time (a drone on a
+    // lawnmower whose far rows lie beyond one flight's reach; a rover without a flight time beside it).
+    void missionsLayerHoldsEachWaypointFilePart() {
+        Plan plan = test::makeFixturePlan();
+        CoveragePath& lawnmower = plan.paths[0];
+        lawnmower.waypoints.clear();
+        for (int row = 0; row < 12; ++row)
+            for (int step = 0; step < 8; ++step)
+                lawnmower.waypoints.push_back(test::makeWaypoint(
+                    301902.5 + 10.0 * (row % 2 == 0 ? step : 7 - step), 4154077.5 - 10.0 * row, 0, 0.5));
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.cruiseSpeedMetresPerSecond = 2.0;
+        drone.maxWaypoints = 12;
+        drone.flightTimeSeconds = 120.0; // 12 s up, 20 s down: 88 m out and back at 2 m/s
+        ExportContext exportContext{plan, reference_, classes_, ExportSettings{}};
+        exportContext.vehicles = {drone, VehicleSettings{}};
+        const std::string path = file("missions.gpkg");
+        const Status written = writePlanGeoPackage(exportContext, path);
+        QVERIFY2(written.ok(), written.error().c_str());
+        Dataset dataset = openVector(path);
+        OGRLayer* missions = dataset->GetLayerByName("missions");
+        QVERIFY(missions != nullptr);
+        QCOMPARE(std::string(missions->GetSpatialRef()->GetAuthorityCode(nullptr)), std::string("26912"));
+        std::size_t features = 0;
+        int fitting = 0;
+        int tooLong = 0;
+        for (auto& feature : *missions) {
+            ++features;
+            const int robot = feature->GetFieldAsInteger("robot") - 1;
+            const AutopilotMission& mission = autopilotMissionOf(exportContext, robot);
+            const auto part = static_cast<std::size_t>(feature->GetFieldAsInteger("part") - 1);
+            QVERIFY(part < mission.parts.size());
+            QCOMPARE(static_cast<std::size_t>(feature->GetFieldAsInteger("parts")), mission.parts.size());
+            const MissionPart& piece = mission.parts[part];
+            QCOMPARE(feature->GetFieldAsInteger("items"), piece.items);
+            QCOMPARE(feature->GetFieldAsDouble("time_s"), piece.seconds);
+            const OGRLineString* line = feature->GetGeometryRef()->toLineString();
+            QCOMPARE(static_cast<std::size_t>(line->getNumPoints()), piece.last - piece.first + 1);
+            double farthest = 0.0;
+            for (int i = 0; i < line->getNumPoints(); ++i) {
+                const Waypoint& point = mission.points[piece.first + static_cast<std::size_t>(i)];
+                QCOMPARE(line->getX(i), point.x);
+                QCOMPARE(line->getY(i), point.y);
+                farthest = std::max(farthest,
+                                    std::hypot(point.x - mission.points[0].x, point.y - mission.points[0].y));
+            }
+            QCOMPARE(feature->GetFieldAsDouble("farthest_m"), farthest);
+            if (part > 0) // each part begins where the one before it ended
+                QCOMPARE(piece.first, mission.parts[part - 1].last);
+            const int fits = feature->GetFieldIndex("fits_flight");
+            if (robot == 1) {
+                QVERIFY(!feature->IsFieldSetAndNotNull(fits));
+                QVERIFY(!feature->IsFieldSetAndNotNull(feature->GetFieldIndex("flight_time_s")));
+                continue;
+            }
+            QCOMPARE(feature->GetFieldAsDouble("flight_time_s"), 120.0);
+            QCOMPARE(feature->GetFieldAsInteger(fits), piece.seconds <= 120.0 ? 1 : 0);
+            (piece.seconds <= 120.0 ? fitting : tooLong) += 1;
+        }
+        QCOMPARE(features, autopilotMissionOf(exportContext, 0).parts.size() +
+                               autopilotMissionOf(exportContext, 1).parts.size());
+        // Both kinds of flight are there: near rows fit, far ones do not.
+        QVERIFY2(fitting > 0 && tooLong > 0,
+                 qPrintable(QStringLiteral("%1 fit, %2 do not").arg(fitting).arg(tooLong)));
     }
 
     // A plan simulated over time adds what each robot took over from others: here robot 1 took the 20 m
