@@ -82,6 +82,8 @@ class Allocation {
         int steps = 0;
         std::int64_t stealBudget = 4LL * cellCount_ + 1000;
         const int retryInterval = std::max(64, reachableCount_ / (8 * robotCount));
+        if (queueEachCellOnce_ && robots_.size() < 255)
+            queuedBy_.assign(static_cast<std::size_t>(cellCount_), 0);
         while (unassignedCount_ > 0) {
             if ((++steps & 4095) == 0) {
                 progress_.throwIfCancelled();
@@ -119,10 +121,15 @@ class Allocation {
             }
             state.finished = true;
         }
+        std::vector<std::uint8_t>().swap(queuedBy_); // the frontiers are spent
     }
 
     // Growth takes turns by cost times this weight: a robot weighted below 1 grows ahead of the others.
     void setGrowthWeights(std::vector<double> weights) { growthWeights_ = std::move(weights); }
+    // A robot queues a cell once, with its key when first seen, rather than once for each of its cells
+    // beside it: on a large map its frontier holds hundreds of thousands of entries, and taking the
+    // smallest out is most of the growth.
+    void queueEachCellOnce() { queueEachCellOnce_ = true; }
 
     // Moves cells along chains of adjacent regions from the most loaded robot while the maximum falls.
     int rebalance(int iterationCap) {
@@ -278,6 +285,12 @@ class Allocation {
         for (int neighbour : neighbours_.of(cell)) {
             const int owner = owner_[static_cast<std::size_t>(neighbour)];
             if (owner == unassigned) {
+                if (!queuedBy_.empty()) {
+                    auto& queued = queuedBy_[static_cast<std::size_t>(neighbour)];
+                    if (queued == robot + 1)
+                        continue;
+                    queued = static_cast<std::uint8_t>(robot + 1);
+                }
                 state.frontier.push(growthKey(robot, neighbour), neighbour);
             } else if (owner >= 0 && owner != robot) {
                 state.foreignBorder.push_back(neighbour);
@@ -324,6 +337,8 @@ class Allocation {
                 // A cell taken from this robot may have cut it off from an old frontier entry.
                 if (!state.lostCell || touchesRegion(cell, robot))
                     return cell;
+                if (!queuedBy_.empty() && queuedBy_[static_cast<std::size_t>(cell)] == robot + 1)
+                    queuedBy_[static_cast<std::size_t>(cell)] = 0; // may be queued again once it touches
             } else if (owner >= 0 && owner != robot) {
                 state.foreignBorder.push_back(cell);
             }
@@ -763,6 +778,10 @@ class Allocation {
     std::vector<int> regionContacts_;
     std::vector<int> lastChain_;
     std::vector<double> growthWeights_; // by robot; empty: all 1
+    bool queueEachCellOnce_ = false;
+    // While growing so, by cell: 1 + the robot whose frontier took it last; empty otherwise and above 254
+    // robots.
+    std::vector<std::uint8_t> queuedBy_;
     std::vector<std::pair<double, int>> scratchCandidates_;
     std::vector<int> scratchCells_;
     static constexpr int stealTries = 32; // border cells a steal tries, best first
@@ -831,9 +850,11 @@ double unevenness(const std::vector<double>& costs, const std::vector<std::vecto
 // Regions grown with these growth weights (none: all 1) and evened out with at most `moves` chain moves.
 RegionAllocation grownAndEvenedOut(const CellGraph& graph, std::vector<CellFigures> figures,
                                    const std::vector<int>& startCells, std::vector<double> weights, int moves,
-                                   const ProgressReporter& progress) {
+                                   const ProgressReporter& progress, bool queueEachCellOnce = false) {
     Allocation allocation(graph, std::move(figures), startCells, progress);
     allocation.setGrowthWeights(std::move(weights));
+    if (queueEachCellOnce)
+        allocation.queueEachCellOnce();
     allocation.grow();
     return evenedOut(allocation, graph, moves, progress);
 }
@@ -883,15 +904,19 @@ RegionAllocation regrownWithWeights(const CellGraph& graph, const std::vector<Ce
     return best;
 }
 
-// mostCellsGrownAgain: the largest map grown again with weights where the first division stays uneven.
+// limits.mostCellsGrownAgain: the largest map grown again with weights where the first division stays
+// uneven; above limits.mostCellsQueuedAtEachStep cells a robot queues each cell once as it grows.
 RegionAllocation grownCellByCell(const CellGraph& graph, const std::vector<int>& startCells,
                                  int rebalanceIterations, const ProgressReporter& progress,
-                                 std::size_t mostCellsGrownAgain) {
+                                 const AzimuthTrendLimits& limits) {
     const int moves = moveCap(rebalanceIterations, graph.size());
-    if (startCells.size() < 2 || graph.size() > mostCellsGrownAgain) // no copy of the figures kept for tries
-        return grownAndEvenedOut(graph, cellFiguresOf(graph), startCells, {}, moves, progress);
+    const bool queueEachCellOnce = graph.size() > limits.mostCellsQueuedAtEachStep;
+    if (startCells.size() < 2 || graph.size() > limits.mostCellsGrownAgain) // no copy of the figures kept
+        return grownAndEvenedOut(graph, cellFiguresOf(graph), startCells, {}, moves, progress,
+                                 queueEachCellOnce);
     const std::vector<CellFigures> figures = cellFiguresOf(graph);
-    RegionAllocation division = grownAndEvenedOut(graph, figures, startCells, {}, moves, progress);
+    RegionAllocation division =
+        grownAndEvenedOut(graph, figures, startCells, {}, moves, progress, queueEachCellOnce);
     return regrownWithWeights(graph, figures, startCells, std::move(division), rebalanceIterations, progress);
 }
 
@@ -1025,8 +1050,8 @@ ParameterSpec AzimuthTrendAllocator::treePieceShareParameter() {
 // One robot's region is the whole map however it is grown; above mostCellsGrownOneByOne cells the regions
 // grow on blocks.
 bool AzimuthTrendAllocator::growsOnTreePieces(const CellGraph& graph, std::size_t robots) const {
-    return treePieceShare_ > 0.0 && robots > 1 && graph.size() <= mostCellsGrownOneByOne_ &&
-           (graph.size() + robots - 1) / robots <= mostCellsOnTreePiecesPerRobot_;
+    return treePieceShare_ > 0.0 && robots > 1 && graph.size() <= limits_.mostCellsGrownOneByOne &&
+           (graph.size() + robots - 1) / robots <= limits_.mostCellsOnTreePiecesPerRobot;
 }
 
 // Grown and evened out on two levels of pieces, then evened out cell by cell.
@@ -1052,7 +1077,7 @@ RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph
     Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
     if (division && allocation.adopt(cellsTakeTheirBlocks(*division, finestPieceOfCell, startCells)))
         return evenedOut(allocation, graph, moveCap(rebalanceIterations_, graph.size()), progress);
-    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, mostCellsGrownAgain_);
+    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, limits_);
 }
 
 RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const std::vector<int>& startCells,
@@ -1060,11 +1085,11 @@ RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const s
     progress.report("allocation", 0.0);
     if (growsOnTreePieces(graph, startCells.size()))
         return grownOnTreePieces(graph, startCells, progress);
-    if (graph.size() > mostCellsGrownOneByOne_) {
+    if (graph.size() > limits_.mostCellsGrownOneByOne) {
         if (auto grown = grownOnBlocks(graph, startCells, rebalanceIterations_, progress))
             return std::move(*grown);
     }
-    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, mostCellsGrownAgain_);
+    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, limits_);
 }
 
 } // namespace mcpp

@@ -230,7 +230,7 @@ class AzimuthTrendAllocatorTest : public QObject {
     // block's cost of the mean; obstacles cut blocks in two, and on the quadtree map blocks hold cells of
     // several sizes.
     void regionsGrownOnBlocksAreWholeAndEven() {
-        const AzimuthTrendAllocator onBlocks(0, 0.0, 0);
+        const AzimuthTrendAllocator onBlocks(0, 0.0, {.mostCellsGrownOneByOne = 0});
         std::vector<PlanningProblem> problems;
         for (std::uint32_t seed : {3U, 8U, 21U})
             problems.push_back(test::obstacleGridProblem(64, 5, seed));
@@ -293,10 +293,8 @@ class AzimuthTrendAllocatorTest : public QObject {
         const PlanningProblem large = test::obstacleGridProblem(128, 2, 5);
         const Plan byCell = allocateOnly(large);
         const std::size_t half = (byCell.cells.size() + 1) / 2;
-        const AzimuthTrendAllocator atTheLimit(0, 0.03, AzimuthTrendAllocator::defaultMostCellsGrownOneByOne,
-                                               half);
-        const AzimuthTrendAllocator belowTheLimit(
-            0, 0.03, AzimuthTrendAllocator::defaultMostCellsGrownOneByOne, half - 1);
+        const AzimuthTrendAllocator atTheLimit(0, 0.03, {.mostCellsOnTreePiecesPerRobot = half});
+        const AzimuthTrendAllocator belowTheLimit(0, 0.03, {.mostCellsOnTreePiecesPerRobot = half - 1});
         QVERIFY(allocateOnly(large, atTheLimit).regions.robotOfCell != byCell.regions.robotOfCell);
         QCOMPARE(allocateOnly(large, belowTheLimit).regions.robotOfCell, byCell.regions.robotOfCell);
         const PlanningProblem alone = test::obstacleGridProblem(64, 1, 5);
@@ -307,7 +305,7 @@ class AzimuthTrendAllocatorTest : public QObject {
     void startsSharingABlockAreGrownCellByCell() {
         auto problem = test::uniformProblem(32, 32, 10.0, std::vector<bool>(32 * 32, false), {});
         problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 1, 1)};
-        const AzimuthTrendAllocator onBlocks(0, 0.0, 0);
+        const AzimuthTrendAllocator onBlocks(0, 0.0, {.mostCellsGrownOneByOne = 0});
         const Plan plan = allocateOnly(problem, onBlocks);
         QVERIFY(test::checkRegions(plan).empty());
         QCOMPARE(plan.regions.robotOfCell, allocateOnly(problem).regions.robotOfCell);
@@ -418,10 +416,8 @@ class AzimuthTrendAllocatorTest : public QObject {
         for (const unsigned seed : {18U, 24U, 34U}) {
             std::mt19937 random(seed);
             const auto problem = uniformWithCrowdedStarts(random, 8, 6);
-            const Plan once = allocateOnly(
-                problem,
-                AzimuthTrendAllocator(0, 0.0, AzimuthTrendAllocator::defaultMostCellsGrownOneByOne,
-                                      AzimuthTrendAllocator::defaultMostCellsOnTreePiecesPerRobot, 0));
+            const Plan once =
+                allocateOnly(problem, AzimuthTrendAllocator(0, 0.0, {.mostCellsGrownAgain = 0}));
             QVERIFY2(maximumOverMean(once.regions) > 1.1,
                      qPrintable(QString("seed %1 grown once: %2 x the mean")
                                     .arg(seed)
@@ -435,6 +431,37 @@ class AzimuthTrendAllocatorTest : public QObject {
             QCOMPARE(allocateOnly(problem).regions.robotOfCell,
                      plan.regions.robotOfCell); // the same every run
         }
+    }
+
+    // Above mostCellsQueuedAtEachStep cells (forced here on small maps) a robot queues each cell once as it
+    // grows: the regions are still whole, hold their starts and every reachable cell, say their costs right
+    // and end as even as with every key queued (largest over mean within 1 %), on obstacles that make
+    // robots lose cells to others as they grow and on cells of several sizes; they are grown another way.
+    void largeMapsQueueEachCellOnce() {
+        const AzimuthTrendAllocator queuedOnce(0, 0.0,
+                                               {.mostCellsGrownAgain = 0, .mostCellsQueuedAtEachStep = 0});
+        const AzimuthTrendAllocator everyKey(0, 0.0, {.mostCellsGrownAgain = 0});
+        std::vector<PlanningProblem> problems;
+        for (std::uint32_t seed : {3U, 8U, 21U, 34U})
+            problems.push_back(test::obstacleGridProblem(96, 7, seed));
+        problems.push_back(test::randomProblem(test::multiCoverSpec(128, 6)));
+        int grownAnotherWay = 0;
+        for (const PlanningProblem& problem : problems) {
+            const Plan plan = allocateOnly(problem, queuedOnce);
+            QVERIFY2(test::checkRegions(plan).empty(),
+                     qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+            const std::vector<double> costs =
+                regionCosts(plan.cells, plan.regions.robotOfCell, plan.regions.startCell.size());
+            for (std::size_t robot = 0; robot < costs.size(); ++robot)
+                QVERIFY(std::abs(plan.regions.costSeconds[robot] - costs[robot]) <= 1e-9 * costs[robot]);
+            const Plan asBefore = allocateOnly(problem, everyKey);
+            QVERIFY2(maximumOverMean(plan.regions) <= maximumOverMean(asBefore.regions) + 0.01,
+                     qPrintable(QString("%1 against %2")
+                                    .arg(maximumOverMean(plan.regions))
+                                    .arg(maximumOverMean(asBefore.regions))));
+            grownAnotherWay += plan.regions.robotOfCell != asBefore.regions.robotOfCell ? 1 : 0;
+        }
+        QVERIFY(grownAnotherWay > 0);
     }
 
     // The growth takes frontier cells smallest key first, ties by the smaller cell, as a binary heap would:
