@@ -328,6 +328,31 @@ double farthestFromStart(const AutopilotMission& mission, const MissionPart& par
     return farthest;
 }
 
+// One waypoint file's part as a feature of the missions layer: what it holds and takes, and its line.
+void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot,
+                    const AutopilotMission& mission, std::size_t part) {
+    const MissionPart& piece = mission.parts[part];
+    setRobotFields(feature, context, robot);
+    feature.SetField("part", static_cast<int>(part + 1));
+    feature.SetField("parts", static_cast<int>(mission.parts.size()));
+    feature.SetField("items", piece.items);
+    if (piece.seconds > 0.0)
+        feature.SetField("time_s", piece.seconds);
+    feature.SetField("farthest_m", farthestFromStart(mission, piece));
+    if (const double flightTime = context.vehicle(robot).flightTimeSeconds; flightTime > 0.0) {
+        feature.SetField("flight_time_s", flightTime);
+        if (piece.seconds > 0.0)
+            feature.SetField("fits_flight", piece.seconds <= flightTime ? 1 : 0);
+    }
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    auto line = std::make_unique<OGRLineString>();
+    line->setNumPoints(static_cast<int>(piece.last - piece.first + 1));
+    for (std::size_t point = piece.first; point <= piece.last; ++point)
+        line->setPoint(static_cast<int>(point - piece.first), mission.points[point].x / metresPerUnit,
+                       mission.points[point].y / metresPerUnit);
+    feature.SetGeometryDirectly(line.release());
+}
+
 // Each robot's waypoint files as lines, one per part (a flight, for a battery), with what it holds and
 // takes: a user sees on the map which flights fit and where those that do not go.
 Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
@@ -348,31 +373,11 @@ Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
         !status) {
         return status;
     }
-    const double metresPerUnit = context.georeference.metresPerUnit();
     for (const CoveragePath& path : context.plan.paths) {
         const AutopilotMission& mission = autopilotMissionOf(context, path.robot);
-        const double flightTime = context.vehicle(path.robot).flightTimeSeconds;
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
-            const MissionPart& piece = mission.parts[part];
             OGRFeature feature(layer.value()->GetLayerDefn());
-            setRobotFields(feature, context, path.robot);
-            feature.SetField("part", static_cast<int>(part + 1));
-            feature.SetField("parts", static_cast<int>(mission.parts.size()));
-            feature.SetField("items", piece.items);
-            if (piece.seconds > 0.0)
-                feature.SetField("time_s", piece.seconds);
-            feature.SetField("farthest_m", farthestFromStart(mission, piece));
-            if (flightTime > 0.0) {
-                feature.SetField("flight_time_s", flightTime);
-                if (piece.seconds > 0.0)
-                    feature.SetField("fits_flight", piece.seconds <= flightTime ? 1 : 0);
-            }
-            auto line = std::make_unique<OGRLineString>();
-            line->setNumPoints(static_cast<int>(piece.last - piece.first + 1));
-            for (std::size_t point = piece.first; point <= piece.last; ++point)
-                line->setPoint(static_cast<int>(point - piece.first), mission.points[point].x / metresPerUnit,
-                               mission.points[point].y / metresPerUnit);
-            feature.SetGeometryDirectly(line.release());
+            setMissionPart(feature, context, path.robot, mission, part);
             if (Status status = writer.add(layer.value(), feature); !status)
                 return status;
         }

@@ -435,8 +435,8 @@ class AzimuthTrendAllocatorTest : public QObject {
 
     // Above mostCellsQueuedAtEachStep cells (forced here on small maps) a robot queues each cell once as it
     // grows: the regions are still whole, hold their starts and every reachable cell, say their costs right
-    // and end as even as with every key queued (largest over mean within 1 %), on obstacles that make
-    // robots lose cells to others as they grow and on cells of several sizes; they are grown another way.
+    // and end as even as with every key queued (largest over mean within 1 %), on maps with obstacles and
+    // on cells of several sizes; they are grown another way.
     void largeMapsQueueEachCellOnce() {
         const AzimuthTrendAllocator queuedOnce(0, 0.0,
                                                {.mostCellsGrownAgain = 0, .mostCellsQueuedAtEachStep = 0});
