@@ -115,6 +115,17 @@ void chargeTurnsToFirstRobot(Plan& plan, double secondsPer90Degrees, float turns
     plan.cells.setExpectedTurns(turnsPerSubCell);
 }
 
+// Whether the regions are whole, hold their starts and every reachable cell, and say their costs right
+// (QVERIFY here; the caller asks QTest::currentTestFailed()).
+void verifyWholeRegionsWithTheirCosts(const Plan& plan) {
+    QVERIFY2(test::checkRegions(plan).empty(),
+             qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+    const std::vector<double> costs =
+        regionCosts(plan.cells, plan.regions.robotOfCell, plan.regions.startCell.size());
+    for (std::size_t robot = 0; robot < costs.size(); ++robot)
+        QVERIFY(std::abs(plan.regions.costSeconds[robot] - costs[robot]) <= 1e-9 * costs[robot]);
+}
+
 } // namespace
 
 class AzimuthTrendAllocatorTest : public QObject {
@@ -245,19 +256,15 @@ class AzimuthTrendAllocatorTest : public QObject {
         problems.push_back(open);
         for (const PlanningProblem& problem : problems) {
             const Plan plan = allocateOnly(problem, onBlocks);
-            QVERIFY2(test::checkRegions(plan).empty(),
-                     qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+            verifyWholeRegionsWithTheirCosts(plan);
+            if (QTest::currentTestFailed())
+                return;
             const double mean =
                 std::accumulate(plan.regions.costSeconds.begin(), plan.regions.costSeconds.end(), 0.0) /
                 static_cast<double>(plan.regions.costSeconds.size());
             for (double cost : plan.regions.costSeconds)
                 QVERIFY2(std::abs(cost - mean) <= dearestBlock(plan),
                          qPrintable(QString("region cost %1 s, mean %2 s").arg(cost).arg(mean)));
-            // The costs said are the costs of the cells given.
-            const std::vector<double> costs =
-                regionCosts(plan.cells, plan.regions.robotOfCell, plan.regions.startCell.size());
-            for (std::size_t robot = 0; robot < costs.size(); ++robot)
-                QVERIFY(std::abs(plan.regions.costSeconds[robot] - costs[robot]) <= 1e-9 * costs[robot]);
             // Grown another way than cell by cell.
             QVERIFY(plan.regions.robotOfCell != allocateOnly(problem).regions.robotOfCell);
         }
@@ -275,12 +282,9 @@ class AzimuthTrendAllocatorTest : public QObject {
         problems.push_back(test::randomProblem(test::multiCoverSpec(128, 6)));
         for (const PlanningProblem& problem : problems) {
             const Plan plan = allocateOnly(problem, onPieces);
-            QVERIFY2(test::checkRegions(plan).empty(),
-                     qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
-            const std::vector<double> costs =
-                regionCosts(plan.cells, plan.regions.robotOfCell, plan.regions.startCell.size());
-            for (std::size_t robot = 0; robot < costs.size(); ++robot)
-                QVERIFY(std::abs(plan.regions.costSeconds[robot] - costs[robot]) <= 1e-9 * costs[robot]);
+            verifyWholeRegionsWithTheirCosts(plan);
+            if (QTest::currentTestFailed())
+                return;
             const Plan byCell = allocateOnly(problem);
             QVERIFY(plan.regions.robotOfCell != byCell.regions.robotOfCell);
             QVERIFY2(maximumOverMean(plan.regions) <= maximumOverMean(byCell.regions) + 0.01,
@@ -448,12 +452,9 @@ class AzimuthTrendAllocatorTest : public QObject {
         int grownAnotherWay = 0;
         for (const PlanningProblem& problem : problems) {
             const Plan plan = allocateOnly(problem, queuedOnce);
-            QVERIFY2(test::checkRegions(plan).empty(),
-                     qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
-            const std::vector<double> costs =
-                regionCosts(plan.cells, plan.regions.robotOfCell, plan.regions.startCell.size());
-            for (std::size_t robot = 0; robot < costs.size(); ++robot)
-                QVERIFY(std::abs(plan.regions.costSeconds[robot] - costs[robot]) <= 1e-9 * costs[robot]);
+            verifyWholeRegionsWithTheirCosts(plan);
+            if (QTest::currentTestFailed())
+                return;
             const Plan asBefore = allocateOnly(problem, everyKey);
             QVERIFY2(maximumOverMean(plan.regions) <= maximumOverMean(asBefore.regions) + 0.01,
                      qPrintable(QString("%1 against %2")
