@@ -244,11 +244,19 @@ struct PartLimits {
     double seconds = 0.0;
 };
 
+// Whether a part beginning at `first` could fit a flight of `limit` with its next point: a part out of
+// reach ends where ground within reach begins again, so that the flights there fit.
+bool flightFitsFrom(FlightClock clock, std::size_t first, double limit) {
+    clock.begin(first);
+    clock.extend();
+    return clock.seconds() <= limit;
+}
+
 // The parts a mission splits into when each keeps within the limits, filled one after the other, with their
-// flights' seconds when timed (0 otherwise). A part
-// holds at least two points. One whose flight is already longer than the limit (a stretch out of one
-// flight's reach of the start) goes on until its work alone, without the trips, would be: cut at every point,
-// it would make a file a point.
+// flights' seconds when timed (0 otherwise). A part holds at least two points. One whose flight is already
+// longer than the limit (a stretch out of one flight's reach of the start) goes on until its work alone,
+// without the trips, would be (cut at every point, it would make a file a point), or until a part beginning
+// at its last point would fit again.
 std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, PartLimits limits, int beside,
                                          FlightClock clock) {
     const bool timed = limits.seconds > 0.0;
@@ -266,7 +274,8 @@ std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, PartLi
             longerSeconds = longer.seconds();
         }
         const bool tooLong = timed && longerSeconds > limits.seconds &&
-                             (soFar <= limits.seconds || longer.workSeconds() > limits.seconds);
+                             (soFar <= limits.seconds || longer.workSeconds() > limits.seconds ||
+                              flightFitsFrom(clock, part.last, limits.seconds));
         if ((part.items + added > limits.items || tooLong) && part.last > part.first) {
             part.seconds = soFar;
             parts.push_back(part);

@@ -40,8 +40,9 @@ class VectorFileWriter {
         return created;
     }
 
-    Status field(OGRLayer* layer, const char* name, OGRFieldType type) {
+    Status field(OGRLayer* layer, const char* name, OGRFieldType type, OGRFieldSubType subType = OFSTNone) {
         OGRFieldDefn definition(name, type);
+        definition.SetSubType(subType);
         if (layer->CreateField(&definition) != OGRERR_NONE) {
             return Status::failure(file_.path() + ": cannot add field " + name + QuietGdalErrors::detail());
         }
@@ -328,6 +329,13 @@ double farthestFromStart(const AutopilotMission& mission, const MissionPart& par
     return farthest;
 }
 
+// The name batch mode gives the part's .plan and .waypoints files, without the extension: "robot_2" for a
+// mission in one part, "robot_2_part_3" for its third part.
+std::string partFileStem(int robot, std::size_t part, std::size_t parts) {
+    const std::string whole = "robot_" + std::to_string(robotNumber(robot));
+    return parts > 1 ? missionPartPath(whole, part) : whole;
+}
+
 // One waypoint file's part as a feature of the missions layer: what it holds and takes, and its line.
 void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot,
                     const AutopilotMission& mission, std::size_t part) {
@@ -336,8 +344,9 @@ void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot
     feature.SetField("part", static_cast<int>(part + 1));
     feature.SetField("parts", static_cast<int>(mission.parts.size()));
     feature.SetField("items", piece.items);
+    feature.SetField("file", partFileStem(robot, part, mission.parts.size()).c_str());
     if (piece.seconds > 0.0)
-        feature.SetField("time_s", piece.seconds);
+        feature.SetField("part_time_s", piece.seconds);
     feature.SetField("farthest_m", farthestFromStart(mission, piece));
     if (const double flightTime = context.vehicle(robot).flightTimeSeconds; flightTime > 0.0) {
         feature.SetField("flight_time_s", flightTime);
@@ -365,14 +374,16 @@ Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
                                        {"robot_name", OFTString},
                                        {"part", OFTInteger},
                                        {"parts", OFTInteger},
+                                       {"file", OFTString},
                                        {"items", OFTInteger},
-                                       {"time_s", OFTReal},
+                                       {"part_time_s", OFTReal},
                                        {"farthest_m", OFTReal},
-                                       {"flight_time_s", OFTReal},
-                                       {"fits_flight", OFTInteger}}});
+                                       {"flight_time_s", OFTReal}}});
         !status) {
         return status;
     }
+    if (Status status = writer.field(layer.value(), "fits_flight", OFTInteger, OFSTBoolean); !status)
+        return status;
     for (const CoveragePath& path : context.plan.paths) {
         const AutopilotMission& mission = autopilotMissionOf(context, path.robot);
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {

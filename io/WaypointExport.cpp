@@ -600,7 +600,7 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
 namespace {
 
 // Why an aircraft's flights do not fit: "its farthest waypoint lies 11.2 km from its start, and one flight
-// at 12 m/s reaches 6.8 km out and back"; the distance alone without a cruise speed.
+// at 12 m/s goes at most 6.8 km from its start and back"; the distance alone without a cruise speed.
 std::string outOfReachNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
     double farthest = 0.0;
     const Waypoint& home = mission.points.front();
@@ -609,7 +609,7 @@ std::string outOfReachNote(const VehicleSettings& vehicle, const AutopilotMissio
     const double reach = flightReachMetres(vehicle);
     return "its farthest waypoint lies " + formatDistance(farthest) + " from its start" +
            (reach > 0.0 ? ", and one flight at " + formatQuantity(vehicle.cruiseSpeedMetresPerSecond, 4) +
-                              " m/s reaches " + formatDistance(reach) + " out and back"
+                              " m/s goes at most " + formatDistance(reach) + " from its start and back"
                         : std::string());
 }
 
@@ -638,7 +638,9 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
            (aircraft ? " with the flights to and from its start" : "") + ", longer than its " +
            formatDuration(vehicle.flightTimeSeconds) + " flight time: " +
            (aircraft ? outOfReachNote(vehicle, mission) : "its path has stretches longer than one flight") +
-           ". Add robots, or start them nearer that ground, or plan with wavefront-battery and chargers";
+           " (fits_flight 0 in the GeoPackage's missions layer). Add robots, or start them nearer that "
+           "ground, or "
+           "plan with wavefront-battery and chargers";
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

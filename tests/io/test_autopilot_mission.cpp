@@ -387,6 +387,50 @@ class AutopilotMissionTest : public QObject {
             QVERIFY(mission.parts[part].seconds > drone.flightTimeSeconds);
     }
 
+    // Ground out of reach, then ground near the start: the parts out of reach end where ground within
+    // reach begins again, so that every flight over the near ground fits.
+    void partsOutOfReachEndWhereFlightsFitAgain() {
+        CoveragePath path;
+        const auto add = [&path](double x, double y) {
+            Waypoint point;
+            point.x = 301900.0 + x;
+            point.y = 4154080.0 + y;
+            point.speedMetresPerSecond = 5.0F;
+            path.waypoints.push_back(point);
+        };
+        add(0.0, 0.0); // the start
+        for (int row = 0; row < 2;
+             ++row) { // 1.7 km out, beyond the 1.42 km a flight reaches and returns from
+            add(row % 2 == 0 ? 0.0 : 100.0, 1700.0 + 10.0 * row);
+            add(row % 2 == 0 ? 100.0 : 0.0, 1700.0 + 10.0 * row);
+        }
+        for (int row = 0; row < 20; ++row) { // 100 to 290 m out
+            add(row % 2 == 0 ? 0.0 : 400.0, 100.0 + 10.0 * row);
+            add(row % 2 == 0 ? 400.0 : 0.0, 100.0 + 10.0 * row);
+        }
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.cruiseSpeedMetresPerSecond = 5.0;
+        drone.maxWaypoints = 0;
+        drone.flightTimeSeconds = 600.0;
+        const AutopilotMission mission = autopilotMission(path, drone, shaping(0.1, true), noTurnPrice);
+        int tooLong = 0;
+        int nearFlights = 0;
+        for (const MissionPart& part : mission.parts) {
+            tooLong += part.seconds > drone.flightTimeSeconds ? 1 : 0;
+            bool near = false;
+            for (std::size_t point = part.first + 1; point <= part.last; ++point)
+                near = near || mission.points[point].y - mission.points[0].y < 500.0;
+            if (!near)
+                continue;
+            ++nearFlights;
+            QVERIFY2(part.seconds <= drone.flightTimeSeconds,
+                     qPrintable(QStringLiteral("a part over the near ground takes %1 s").arg(part.seconds)));
+        }
+        QVERIFY(tooLong > 0);      // the far ground is out of reach
+        QVERIFY(nearFlights >= 3); // 8 km of near ground: several flights
+    }
+
     void partsAreEvenNotFilledOneAfterTheOther() {
         // 800 waypoints, no speed change: 2 + 800 items at a 700 limit fill one part of 700 and leave one
         // of about 100; even parts hold about 400 each.
@@ -553,7 +597,7 @@ class AutopilotMissionTest : public QObject {
         drone.type = VehicleType::Multirotor;
         drone.cruiseSpeedMetresPerSecond = 1.0;
         drone.maxWaypoints = 0;
-        drone.flightTimeSeconds = 60.0; // 12 s up to 30 m, 20 s down: 14 m out and back
+        drone.flightTimeSeconds = 60.0; // 12 s up to 30 m, 20 s down: 14 m out and 14 m back
         QCOMPARE(flightReachMetres(drone), 14.0);
         const ExportContext context = lawnmowerExport.context();
         const AutopilotMission& mission = autopilotMissionOf(context, 0);
@@ -562,8 +606,9 @@ class AutopilotMissionTest : public QObject {
             farthest =
                 std::max(farthest, std::hypot(point.x - mission.points[0].x, point.y - mission.points[0].y));
         const std::string warning = flightTimeWarning(context, 0);
-        QVERIFY2(warning.find("its farthest waypoint lies " + formatDistance(farthest) +
-                              " from its start, and one flight at 1 m/s reaches 14 m out and back") !=
+        QVERIFY2(warning.find(
+                     "its farthest waypoint lies " + formatDistance(farthest) +
+                     " from its start, and one flight at 1 m/s goes at most 14 m from its start and back") !=
                      std::string::npos,
                  warning.c_str());
         // Flights long enough for the whole mission: nothing to say.

@@ -383,6 +383,10 @@ class PlanExportTest : public QObject {
         OGRLayer* missions = dataset->GetLayerByName("missions");
         QVERIFY(missions != nullptr);
         QCOMPARE(std::string(missions->GetSpatialRef()->GetAuthorityCode(nullptr)), std::string("26912"));
+        // A true-or-false field, as QGIS shows it.
+        const OGRFeatureDefn* definition = missions->GetLayerDefn();
+        QCOMPARE(definition->GetFieldDefn(definition->GetFieldIndex("fits_flight"))->GetSubType(),
+                 OFSTBoolean);
         std::size_t features = 0;
         int fitting = 0;
         int tooLong = 0;
@@ -395,7 +399,11 @@ class PlanExportTest : public QObject {
             QCOMPARE(static_cast<std::size_t>(feature->GetFieldAsInteger("parts")), mission.parts.size());
             const MissionPart& piece = mission.parts[part];
             QCOMPARE(feature->GetFieldAsInteger("items"), piece.items);
-            QCOMPARE(feature->GetFieldAsDouble("time_s"), piece.seconds);
+            QCOMPARE(feature->GetFieldAsDouble("part_time_s"), piece.seconds);
+            // The files batch mode writes: robot_1_part_2.plan and .waypoints; robot_2.plan when whole.
+            const std::string stem = "robot_" + std::to_string(robot + 1) +
+                                     (mission.parts.size() > 1 ? "_part_" + std::to_string(part + 1) : "");
+            QCOMPARE(std::string(feature->GetFieldAsString("file")), stem);
             const OGRLineString* line = feature->GetGeometryRef()->toLineString();
             QCOMPARE(static_cast<std::size_t>(line->getNumPoints()), piece.last - piece.first + 1);
             double farthest = 0.0;
