@@ -399,6 +399,15 @@ double partSeconds(const AutopilotMission& mission, const MissionPart& part, con
     return clock.seconds();
 }
 
+double farthestFromStart(const AutopilotMission& mission, const MissionPart& part) {
+    const Waypoint& start = mission.points.front();
+    double farthest = 0.0;
+    for (std::size_t point = part.first; point <= part.last; ++point)
+        farthest = std::max(farthest,
+                            std::hypot(mission.points[point].x - start.x, mission.points[point].y - start.y));
+    return farthest;
+}
+
 std::vector<double> flightReachesMetres(const std::vector<VehicleSettings>& vehicles) {
     std::vector<double> reaches;
     reaches.reserve(vehicles.size());

@@ -66,6 +66,8 @@ struct AutopilotMission {
 [[nodiscard]] double flightReachMetres(const VehicleSettings& vehicle);
 // The same for each vehicle, in order: what the map rings round the robots' starts.
 [[nodiscard]] std::vector<double> flightReachesMetres(const std::vector<VehicleSettings>& vehicles);
+// How far the part's farthest waypoint lies from the mission's first point, the robot's start.
+[[nodiscard]] double farthestFromStart(const AutopilotMission& mission, const MissionPart& part);
 
 // How big a robot's waypoint files come out: what the results panel shows before anything is exported.
 struct MissionSize {

@@ -115,7 +115,7 @@ const ExportFormat* findExportFormat(const std::string& key) {
 }
 
 std::string robotFileName(int robot, const ExportFormat& format) {
-    return "robot_" + std::to_string(robotNumber(robot)) + "." + format.extension;
+    return robotFileStem(robot) + "." + format.extension;
 }
 
 } // namespace mcpp::io

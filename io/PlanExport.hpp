@@ -80,6 +80,10 @@ struct ExportContext {
 [[nodiscard]] constexpr int robotNumber(int robot) {
     return robot + 1;
 }
+// The name of a robot's own files without the extension, as batch mode writes them: "robot_2".
+[[nodiscard]] inline std::string robotFileStem(int robot) {
+    return "robot_" + std::to_string(robotNumber(robot));
+}
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.
 [[nodiscard]] Status writePlanGeoJson(const ExportContext& context, const std::string& path);

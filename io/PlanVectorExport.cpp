@@ -6,7 +6,6 @@
 #include "io/internal/TextFiles.hpp"
 #include "io/internal/TransformationLoan.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <ogrsf_frmts.h>
 #include <optional>
@@ -319,20 +318,10 @@ Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& contex
     return {};
 }
 
-// How far the part's farthest waypoint lies from the mission's first point, the robot's start.
-double farthestFromStart(const AutopilotMission& mission, const MissionPart& part) {
-    const Waypoint& start = mission.points.front();
-    double farthest = 0.0;
-    for (std::size_t point = part.first; point <= part.last; ++point)
-        farthest = std::max(farthest,
-                            std::hypot(mission.points[point].x - start.x, mission.points[point].y - start.y));
-    return farthest;
-}
-
 // The name batch mode gives the part's .plan and .waypoints files, without the extension: "robot_2" for a
 // mission in one part, "robot_2_part_3" for its third part.
 std::string partFileStem(int robot, std::size_t part, std::size_t parts) {
-    const std::string whole = "robot_" + std::to_string(robotNumber(robot));
+    const std::string whole = robotFileStem(robot);
     return parts > 1 ? missionPartPath(whole, part) : whole;
 }
 

@@ -602,10 +602,7 @@ namespace {
 // Why an aircraft's flights do not fit: "its farthest waypoint lies 11.2 km from its start, and one flight
 // at 12 m/s goes at most 6.8 km from its start and back"; the distance alone without a cruise speed.
 std::string outOfReachNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
-    double farthest = 0.0;
-    const Waypoint& home = mission.points.front();
-    for (const Waypoint& point : mission.points)
-        farthest = std::max(farthest, std::hypot(point.x - home.x, point.y - home.y));
+    const double farthest = farthestFromStart(mission, {0, mission.points.size() - 1});
     const double reach = flightReachMetres(vehicle);
     return "its farthest waypoint lies " + formatDistance(farthest) + " from its start" +
            (reach > 0.0 ? ", and one flight at " + formatQuantity(vehicle.cruiseSpeedMetresPerSecond, 4) +
@@ -639,8 +636,8 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
            formatDuration(vehicle.flightTimeSeconds) + " flight time: " +
            (aircraft ? outOfReachNote(vehicle, mission) : "its path has stretches longer than one flight") +
            " (fits_flight 0 in the GeoPackage's missions layer). Add robots, or start them nearer that "
-           "ground, or "
-           "plan with wavefront-battery and chargers";
+           "ground, "
+           "or plan with wavefront-battery and chargers";
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

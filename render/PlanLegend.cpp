@@ -210,13 +210,6 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
     return sections;
 }
 
-LegendItem flightReachLegendItem() {
-    return {LegendSymbol::FlightReach,
-            RobotPalette::colour(0).darker(130),
-            QStringLiteral("How far one flight reaches and comes back"),
-            {}};
-}
-
 void addFlightReach(std::vector<LegendSection>& sections, const std::vector<double>& reaches) {
     if (std::none_of(reaches.begin(), reaches.end(), [](double metres) { return metres > 0.0; }))
         return;
