@@ -440,6 +440,7 @@ void BatchRunner::applyVehicleFlags() {
     apply(options_.cruiseSpeedMetresPerSecond, fleet.cruiseSpeedMetresPerSecond,
           &io::VehicleOverrides::cruiseSpeedMetresPerSecond);
     apply(options_.flightTimeSeconds, fleet.flightTimeSeconds, &io::VehicleOverrides::flightTimeSeconds);
+    apply(options_.turnaroundSeconds, fleet.turnaroundSeconds, &io::VehicleOverrides::turnaroundSeconds);
 }
 
 void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) {

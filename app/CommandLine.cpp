@@ -46,6 +46,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--charger", "X,Y", true, true},       FlagSpec{"--vehicle", "TYPE", true, false},
     FlagSpec{"--altitude", "M", true, false},       FlagSpec{"--cruise-speed", "M/S", true, false},
     FlagSpec{"--fov-scale", "F", true, false},      FlagSpec{"--flight-time", "T", true, false},
+    FlagSpec{"--turnaround", "T", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -403,6 +404,13 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                                " is not a duration (seconds, or a number with s, min or h: 25min)");
             if (const auto problem = io::flightTimeProblem(*options.flightTimeSeconds))
                 return failure("--flight-time " + quoted(value) + ": " + *problem);
+        } else if (flag == "--turnaround") {
+            options.turnaroundSeconds = parseDuration(value);
+            if (!options.turnaroundSeconds)
+                return failure("--turnaround: " + quoted(value) +
+                               " is not a duration (seconds, or a number with s, min or h: 5min)");
+            if (const auto problem = io::turnaroundProblem(*options.turnaroundSeconds))
+                return failure("--turnaround " + quoted(value) + ": " + *problem);
         } else if (flag == "--fov-scale") {
             options.fieldOfViewScale = parseFiniteNumber(value);
             if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||
@@ -525,6 +533,10 @@ std::string CommandLine::usage() {
            "                           robot's waypoint files are split into parts that each fit it, an\n"
            "                           aircraft's climb, trips from its start and back, and descent\n"
            "                           included. Leave your battery reserve out of it (say 20 of 25 min)\n"
+           "  --turnaround T           time on the ground between two parts of a split mission (battery\n"
+           "                           swap, next part uploaded), in seconds or with a unit (5min; 0, the\n"
+           "                           default: not counted): report.csv's mission_field_s adds it to the\n"
+           "                           flights\n"
            "  --fov-scale F            every class's field of view times F, e.g. 4 for a drone whose\n"
            "                           camera sees four times as wide as the table's ground robot; land\n"
            "                           covers keep their proportions (forest half as far as grass)\n"
@@ -539,8 +551,8 @@ std::string CommandLine::usage() {
            "\n"
            "Mission files (format: docs/mission-format.md) may be combined with --band, --area, --no-go,\n"
            "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths,\n"
-           "--cell-polygons, --max-waypoints, --vehicle, --altitude, --cruise-speed, --flight-time and\n"
-           "--fov-scale, which override the mission's values.\n"
+           "--cell-polygons, --max-waypoints, --vehicle, --altitude, --cruise-speed, --flight-time,\n"
+           "--turnaround and --fov-scale, which override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"

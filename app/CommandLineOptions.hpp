@@ -55,6 +55,7 @@ struct CommandLineOptions {
     std::optional<double> altitudeMetres;       // --altitude: every robot's waypoint altitude
     std::optional<double> cruiseSpeedMetresPerSecond; // --cruise-speed: every robot's
     std::optional<double> flightTimeSeconds;          // --flight-time: every robot's, for waypoint files
+    std::optional<double> turnaroundSeconds;          // --turnaround: every robot's, between mission parts
     std::optional<double> fieldOfViewScale;           // --fov-scale: every class's FOV times it
     std::vector<SpeedEvent> events;                   // --event, in the order given
 

@@ -430,13 +430,27 @@ MissionSize missionSize(const CoveragePath& path, const CellGraph& cells, const 
     CoveragePath whole;
     const AutopilotMission mission = autopilotMission(
         pathForWaypointFiles(path, cells, settings.mergeCollinear, whole), vehicle, settings, cells);
-    MissionSize size{mission.items, mission.parts.size()};
+    const MissionFlights flights = missionFlights(mission, vehicle);
+    return {mission.items, mission.parts.size(), flights.longestSeconds, flights.overFlightTime,
+            flights.fieldSeconds};
+}
+
+bool exceedsFlightTime(const MissionPart& part, const VehicleSettings& vehicle) {
+    return vehicle.flightTimeSeconds > 0.0 && part.seconds > vehicle.flightTimeSeconds;
+}
+
+MissionFlights missionFlights(const AutopilotMission& mission, const VehicleSettings& vehicle) {
+    MissionFlights flights;
     for (const MissionPart& part : mission.parts) {
-        size.longestPartSeconds = std::max(size.longestPartSeconds, part.seconds);
-        if (vehicle.flightTimeSeconds > 0.0 && part.seconds > vehicle.flightTimeSeconds)
-            ++size.partsOverFlightTime;
+        flights.totalSeconds += part.seconds;
+        flights.longestSeconds = std::max(flights.longestSeconds, part.seconds);
+        if (exceedsFlightTime(part, vehicle))
+            ++flights.overFlightTime;
     }
-    return size;
+    const std::size_t turnarounds = mission.parts.empty() ? 0 : mission.parts.size() - 1;
+    flights.fieldSeconds =
+        flights.totalSeconds + static_cast<double>(turnarounds) * vehicle.turnaroundSeconds;
+    return flights;
 }
 
 std::string missionPartPath(const std::string& path, std::size_t part) {

@@ -69,12 +69,25 @@ struct AutopilotMission {
 // How far the part's farthest waypoint lies from the mission's first point, the robot's start.
 [[nodiscard]] double farthestFromStart(const AutopilotMission& mission, const MissionPart& part);
 
+// What a mission's parts fly, held against the vehicle's flight time.
+struct MissionFlights {
+    double totalSeconds = 0.0; // all its parts, an aircraft's trips from and back to its start included
+    double longestSeconds = 0.0;
+    std::size_t overFlightTime = 0; // parts longer than the flight time; none without one
+    // The flights and the vehicle's turnarounds between them: when the robot is done in the field.
+    double fieldSeconds = 0.0;
+};
+// Whether a part takes longer than the vehicle's flight time (never without one, or with a speed unknown).
+[[nodiscard]] bool exceedsFlightTime(const MissionPart& part, const VehicleSettings& vehicle);
+[[nodiscard]] MissionFlights missionFlights(const AutopilotMission& mission, const VehicleSettings& vehicle);
+
 // How big a robot's waypoint files come out: what the results panel shows before anything is exported.
 struct MissionSize {
     int items = 0;         // of the whole mission in one file
     std::size_t parts = 0; // the files the vehicle's item limit and flight time split it into
     double longestPartSeconds = 0.0;
     std::size_t partsOverFlightTime = 0; // out of one flight's reach: a part holds at least two points
+    double fieldSeconds = 0.0;           // the flights and the turnarounds between them
 };
 // The size of the mission of a robot's path, made as the waypoint files make it (cells: the plan's).
 [[nodiscard]] MissionSize missionSize(const CoveragePath& path, const CellGraph& cells,

@@ -337,10 +337,10 @@ void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot
     if (piece.seconds > 0.0)
         feature.SetField("part_time_s", piece.seconds);
     feature.SetField("farthest_m", farthestFromStart(mission, piece));
-    if (const double flightTime = context.vehicle(robot).flightTimeSeconds; flightTime > 0.0) {
-        feature.SetField("flight_time_s", flightTime);
+    if (const VehicleSettings& vehicle = context.vehicle(robot); vehicle.flightTimeSeconds > 0.0) {
+        feature.SetField("flight_time_s", vehicle.flightTimeSeconds);
         if (piece.seconds > 0.0)
-            feature.SetField("fits_flight", piece.seconds <= flightTime ? 1 : 0);
+            feature.SetField("fits_flight", exceedsFlightTime(piece, vehicle) ? 0 : 1);
     }
     const double metresPerUnit = context.georeference.metresPerUnit();
     auto line = std::make_unique<OGRLineString>();

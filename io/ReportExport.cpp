@@ -146,13 +146,15 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("mission_time_s", mission.seconds);
         // Each file's own flight, for a battery: an aircraft's with its trips to and from the start.
         JsonValue& partSeconds = item.add("mission_part_seconds", JsonValue::array());
-        double flights = 0.0;
-        for (const MissionPart& part : mission.parts) {
+        for (const MissionPart& part : mission.parts)
             partSeconds.push(part.seconds);
-            flights += part.seconds;
-        }
         // All the parts' flights, trips included: what the robot flies, battery swaps aside.
-        item.add("mission_flights_s", flights);
+        const MissionFlights flights = missionFlights(mission, vehicle);
+        item.add("mission_flights_s", flights.totalSeconds);
+        item.add("mission_longest_part_s", flights.longestSeconds);
+        item.add("mission_parts_over_flight_time", static_cast<int>(flights.overFlightTime));
+        item.add("turnaround_s", vehicle.turnaroundSeconds);
+        item.add("mission_field_s", flights.fieldSeconds);
         if (sorties != nullptr)
             addSorties(item, context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
         if (timeline != nullptr)
@@ -197,10 +199,13 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
     // Battery plans add their sortie columns at the end, so readers of the others see no change.
     const SortieLayer* sorties = sortieLayerOf(context.plan);
     std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts,"
-                       "turn_time_s,connector_time_s";
+                       "turn_time_s,connector_time_s,flight_time_s,mission_flights_s,mission_longest_part_s,"
+                       "mission_parts_over_flight_time,turnaround_s,mission_field_s";
     text += sorties == nullptr ? "\n" : ",sorties,charges,charging_s,longest_sortie_s,out_of_range_area_m2\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
+        const VehicleSettings& vehicle = context.vehicle(robot.robot);
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
+        const MissionFlights flights = missionFlights(mission, vehicle);
         text += std::to_string(robotNumber(robot.robot)) + "," +
                 internal::quoteCsvField(context.robotName(robot.robot)) + "," + std::to_string(robot.cells) +
                 "," + internal::formatShortest(robot.areaSquareMetres) + "," +
@@ -208,7 +213,13 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
                 internal::formatShortest(robot.timeSeconds) + "," + std::to_string(robot.turns) + "," +
                 internal::formatShortest(robot.costSeconds) + "," + std::to_string(mission.items) + "," +
                 std::to_string(mission.parts.size()) + "," + internal::formatShortest(robot.turnSeconds) +
-                "," + internal::formatShortest(robot.connectorSeconds);
+                "," + internal::formatShortest(robot.connectorSeconds) + "," +
+                internal::formatShortest(vehicle.flightTimeSeconds) + "," +
+                internal::formatShortest(flights.totalSeconds) + "," +
+                internal::formatShortest(flights.longestSeconds) + "," +
+                std::to_string(flights.overFlightTime) + "," +
+                internal::formatShortest(vehicle.turnaroundSeconds) + "," +
+                internal::formatShortest(flights.fieldSeconds);
         if (sorties != nullptr)
             text += sortieColumns(context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
         text += "\n";

@@ -43,6 +43,7 @@ VehicleSettings VehicleOverrides::over(const VehicleSettings& defaults) const {
         cruiseSpeedMetresPerSecond.value_or(defaults.cruiseSpeedMetresPerSecond);
     settings.maxWaypoints = maxWaypoints.value_or(defaults.maxWaypoints);
     settings.flightTimeSeconds = flightTimeSeconds.value_or(defaults.flightTimeSeconds);
+    settings.turnaroundSeconds = turnaroundSeconds.value_or(defaults.turnaroundSeconds);
     return settings;
 }
 
@@ -58,6 +59,8 @@ VehicleOverrides VehicleOverrides::between(const VehicleSettings& defaults, cons
         overrides.maxWaypoints = wanted.maxWaypoints;
     if (wanted.flightTimeSeconds != defaults.flightTimeSeconds)
         overrides.flightTimeSeconds = wanted.flightTimeSeconds;
+    if (wanted.turnaroundSeconds != defaults.turnaroundSeconds)
+        overrides.turnaroundSeconds = wanted.turnaroundSeconds;
     return overrides;
 }
 
@@ -66,6 +69,13 @@ std::optional<std::string> flightTimeProblem(double seconds) {
         return std::nullopt;
     return "must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 s), not " +
            formatQuantity(seconds, 12) + " s";
+}
+
+std::optional<std::string> turnaroundProblem(double seconds) {
+    if (seconds >= 0.0 && seconds <= maximumTurnaroundSeconds)
+        return std::nullopt;
+    return "must be a time on the ground of 0 to 24 h (0 to 86400 s), not " + formatQuantity(seconds, 12) +
+           " s";
 }
 
 } // namespace mcpp::io

@@ -25,6 +25,9 @@ struct VehicleSettings {
     // The longest flight one battery allows: a mission whose flight takes longer is split into parts that
     // each fit it, an aircraft's trips from its start and back included. 0: no limit.
     double flightTimeSeconds = 0.0;
+    // Time on the ground between two parts of a split mission: a battery swap, the next part uploaded. It
+    // adds to the robot's time in the field, not to the plan's balance. 0: not counted.
+    double turnaroundSeconds = 0.0;
 
     friend bool operator==(const VehicleSettings&, const VehicleSettings&) = default;
 };
@@ -36,9 +39,11 @@ struct VehicleOverrides {
     std::optional<double> cruiseSpeedMetresPerSecond;
     std::optional<int> maxWaypoints;
     std::optional<double> flightTimeSeconds;
+    std::optional<double> turnaroundSeconds;
 
     [[nodiscard]] bool empty() const {
-        return !type && !altitudeMetres && !cruiseSpeedMetresPerSecond && !maxWaypoints && !flightTimeSeconds;
+        return !type && !altitudeMetres && !cruiseSpeedMetresPerSecond && !maxWaypoints &&
+               !flightTimeSeconds && !turnaroundSeconds;
     }
     [[nodiscard]] VehicleSettings over(const VehicleSettings& defaults) const;
     // The overrides that make `wanted` from `defaults`: only the values that differ.
@@ -68,5 +73,10 @@ constexpr double minimumFlightTimeSeconds = 60.0;
 constexpr double maximumFlightTimeSeconds = 3600.0 * 1000.0;
 // What is wrong with a flight time, for any reader to name with its field: 0 (no limit) or 60 s to 1000 h.
 [[nodiscard]] std::optional<std::string> flightTimeProblem(double seconds);
+
+// The longest turnaround a vehicle may be given: a day on the ground between two parts.
+constexpr double maximumTurnaroundSeconds = 24.0 * 3600.0;
+// What is wrong with a turnaround time: 0 to 24 h.
+[[nodiscard]] std::optional<std::string> turnaroundProblem(double seconds);
 
 } // namespace mcpp::io

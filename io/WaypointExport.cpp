@@ -546,19 +546,20 @@ std::string partSizes(const AutopilotMission& mission) {
     return sizes + " items, home included";
 }
 
-// "; the parts fly 3 h 2 min in all, the longest 24 min 10 s", for a battery; nothing when a speed is
-// unknown.
+// "; the parts fly 3 h 2 min in all, the longest 24 min 10 s", for a battery, and with turnarounds "; with
+// 5 min between parts, done after 3 h 47 min"; nothing when a speed is unknown.
 std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
-    double longest = 0.0;
-    double all = 0.0;
-    for (const MissionPart& part : mission.parts) {
-        longest = std::max(longest, part.seconds);
-        all += part.seconds;
-    }
-    if (!(longest > 0.0))
+    const MissionFlights flights = missionFlights(mission, vehicle);
+    if (!(flights.longestSeconds > 0.0))
         return {};
-    return "; the parts fly " + formatDuration(all) + " in all, the longest " + formatDuration(longest) +
-           (isAircraft(vehicle.type) ? ", flights to and from the start included" : "");
+    const std::string turnarounds = vehicle.turnaroundSeconds > 0.0
+                                        ? "; with " + formatDuration(vehicle.turnaroundSeconds) +
+                                              " between parts, done after " +
+                                              formatDuration(flights.fieldSeconds)
+                                        : std::string();
+    return "; the parts fly " + formatDuration(flights.totalSeconds) + " in all, the longest " +
+           formatDuration(flights.longestSeconds) +
+           (isAircraft(vehicle.type) ? ", flights to and from the start included" : "") + turnarounds;
 }
 
 // Why the mission is in parts: "has 21 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min,
@@ -617,21 +618,15 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
     if (!(vehicle.flightTimeSeconds > 0.0))
         return {};
     const AutopilotMission& mission = autopilotMissionOf(context, robot);
-    const auto over = std::count_if(mission.parts.begin(), mission.parts.end(), [&](const MissionPart& part) {
-        return part.seconds > vehicle.flightTimeSeconds;
-    });
-    if (over == 0)
+    const MissionFlights flights = missionFlights(mission, vehicle);
+    if (flights.overFlightTime == 0)
         return {};
-    const double longest =
-        std::max_element(mission.parts.begin(), mission.parts.end(),
-                         [](const MissionPart& a, const MissionPart& b) { return a.seconds < b.seconds; })
-            ->seconds;
     const std::string which = mission.parts.size() == 1
                                   ? "its mission takes "
-                                  : std::to_string(over) + " of its " + std::to_string(mission.parts.size()) +
-                                        " mission parts take up to ";
+                                  : std::to_string(flights.overFlightTime) + " of its " +
+                                        std::to_string(mission.parts.size()) + " mission parts take up to ";
     const bool aircraft = isAircraft(vehicle.type);
-    return context.robotName(robot) + ": " + which + formatDuration(longest) +
+    return context.robotName(robot) + ": " + which + formatDuration(flights.longestSeconds) +
            (aircraft ? " with the flights to and from its start" : "") + ", longer than its " +
            formatDuration(vehicle.flightTimeSeconds) + " flight time: " +
            (aircraft ? outOfReachNote(vehicle, mission) : "its path has stretches longer than one flight") +

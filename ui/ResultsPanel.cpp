@@ -365,8 +365,9 @@ void ResultsPanel::showWaypointFiles(const std::vector<io::MissionSize>& sizes,
                         .arg(sizes[robot].parts == 1 ? tr("one file")
                                                      : tr("%1 parts").arg(sizes[robot].parts))
                         .arg(sizes[robot].longestPartSeconds > 0.0
-                                 ? tr(", the longest flight %1")
-                                       .arg(formatDuration(sizes[robot].longestPartSeconds))
+                                 ? tr(", the longest flight %1, done after %2")
+                                       .arg(formatDuration(sizes[robot].longestPartSeconds),
+                                            formatDuration(sizes[robot].fieldSeconds))
                                  : QString());
     waypointFiles_->setToolTip(perRobot.join(QLatin1Char('\n')));
     summary_->setRowVisible(waypointFiles_, !sizes.empty());
@@ -378,9 +379,11 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
     QStringList split;
     int largest = 0;
     std::size_t overFlightTime = 0;
+    double lastDone = 0.0;
     for (std::size_t robot = 0; robot < sizes.size(); ++robot) {
         largest = std::max(largest, sizes[robot].items);
         overFlightTime += sizes[robot].partsOverFlightTime;
+        lastDone = std::max(lastDone, sizes[robot].fieldSeconds);
         if (sizes[robot].parts > 1)
             split << tr("%1 in %2").arg(robotName(names, static_cast<int>(robot))).arg(sizes[robot].parts);
     }
@@ -407,10 +410,13 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
     const bool timed = std::any_of(vehicles.begin(), vehicles.end(), [](const io::VehicleSettings& vehicle) {
         return vehicle.flightTimeSeconds > 0.0;
     });
+    // Split missions end later than the plan's makespan: the trips to each part and the turnarounds.
+    const QString done =
+        lastDone > 0.0 ? tr("; all done in the field after %1").arg(formatDuration(lastDone)) : QString();
     return tr("%1 above the item limit%2%3, in parts: %4")
                .arg(robots, limit.isEmpty() ? QString() : tr(" (%1)").arg(vehicles.front().maxWaypoints),
                     timed ? tr(" or flight time") : QString(), split.join(QStringLiteral(", "))) +
-           outOfReach;
+           outOfReach + done;
 }
 
 int ResultsPanel::robotLabelStep(int robots, int labelsThatFit) {

@@ -13,6 +13,15 @@
 #include <QVBoxLayout>
 
 namespace mcpp::ui {
+namespace {
+
+// The seconds a box of minutes holds: those given while it still shows them, so that minutes to three
+// decimals lose nothing of a value such as 1000 s.
+double secondsIn(const QDoubleSpinBox* minutes, double givenSeconds, double shownMinutes) {
+    return minutes->value() == shownMinutes ? givenSeconds : minutes->value() * 60.0;
+}
+
+} // namespace
 
 VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget* parent)
     : QDialog(parent), exports_(mission.exports), shownDefaults_(mission.exports.vehicle) {
@@ -28,9 +37,9 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     intro->setWordWrap(true);
     layout->addWidget(intro);
 
-    table_ = new QTableWidget(static_cast<int>(mission.robots.size()) + 1, 5, this);
+    table_ = new QTableWidget(static_cast<int>(mission.robots.size()) + 1, 6, this);
     table_->setHorizontalHeaderLabels({tr("Vehicle"), tr("Altitude above home (m)"), tr("Cruise speed (m/s)"),
-                                       tr("Item limit"), tr("Flight time (min)")});
+                                       tr("Item limit"), tr("Flight time (min)"), tr("Turnaround (min)")});
     table_->horizontalHeaderItem(2)->setToolTip(
         tr("0: each land-cover class's speed. When every robot has the same cruise speed, the plan uses it "
            "over every passable class."));
@@ -40,6 +49,9 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     table_->horizontalHeaderItem(4)->setToolTip(
         tr("The longest flight one battery allows. A longer mission is written in parts that each fit it, an "
            "aircraft's flights from its start and back included. 0: no limit."));
+    table_->horizontalHeaderItem(5)->setToolTip(
+        tr("Time on the ground between two parts: a battery swap, the next part uploaded. The report adds it "
+           "to the flights to say when each robot is done. 0: not counted."));
     QStringList names{tr("All robots")};
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         const std::string& name = mission.robots[robot].name;
@@ -91,7 +103,7 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
-    resize(800, 250 + 32 * static_cast<int>(rows_.size())); // room for the intro and a limit's problem
+    resize(900, 250 + 32 * static_cast<int>(rows_.size())); // room for the intro and a limit's problem
     shownDefaults_ = settingsOf(rows_.front());             // as the boxes show them, for followDefaults
 }
 
@@ -119,14 +131,19 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     widgets.flightTime->setRange(0.0, io::maximumFlightTimeSeconds / 60.0);
     widgets.flightTime->setDecimals(3);
     widgets.flightTime->setSpecialValueText(tr("no limit"));
+    widgets.turnaround = new QDoubleSpinBox(table_);
+    widgets.turnaround->setRange(0.0, io::maximumTurnaroundSeconds / 60.0);
+    widgets.turnaround->setDecimals(3);
     show(widgets, settings);
     table_->setCellWidget(row, 0, widgets.type);
     table_->setCellWidget(row, 1, widgets.altitude);
     table_->setCellWidget(row, 2, widgets.cruiseSpeed);
     table_->setCellWidget(row, 3, widgets.maxWaypoints);
     table_->setCellWidget(row, 4, widgets.flightTime);
-    for (QWidget* widget : std::initializer_list<QWidget*>{
-             widgets.type, widgets.altitude, widgets.cruiseSpeed, widgets.maxWaypoints, widgets.flightTime})
+    table_->setCellWidget(row, 5, widgets.turnaround);
+    for (QWidget* widget :
+         std::initializer_list<QWidget*>{widgets.type, widgets.altitude, widgets.cruiseSpeed,
+                                         widgets.maxWaypoints, widgets.flightTime, widgets.turnaround})
         widget->setAccessibleName(name);
     if (row == 0) {
         connect(widgets.type, &QComboBox::currentIndexChanged, this, &VehicleSettingsDialog::followDefaults);
@@ -136,6 +153,8 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
                 &VehicleSettingsDialog::followDefaults);
         connect(widgets.maxWaypoints, &QSpinBox::valueChanged, this, &VehicleSettingsDialog::followDefaults);
         connect(widgets.flightTime, &QDoubleSpinBox::valueChanged, this,
+                &VehicleSettingsDialog::followDefaults);
+        connect(widgets.turnaround, &QDoubleSpinBox::valueChanged, this,
                 &VehicleSettingsDialog::followDefaults);
     }
     return widgets;
@@ -147,9 +166,8 @@ io::VehicleSettings VehicleSettingsDialog::settingsOf(const Row& row) {
     settings.altitudeMetres = row.altitude->value();
     settings.cruiseSpeedMetresPerSecond = row.cruiseSpeed->value();
     settings.maxWaypoints = row.maxWaypoints->value();
-    settings.flightTimeSeconds = row.flightTime->value() == row.flightMinutesShown
-                                     ? row.flightSeconds
-                                     : row.flightTime->value() * 60.0;
+    settings.flightTimeSeconds = secondsIn(row.flightTime, row.flightSeconds, row.flightMinutesShown);
+    settings.turnaroundSeconds = secondsIn(row.turnaround, row.turnaroundSeconds, row.turnaroundMinutesShown);
     return settings;
 }
 
@@ -161,6 +179,9 @@ void VehicleSettingsDialog::show(Row& row, const io::VehicleSettings& settings) 
     row.flightTime->setValue(settings.flightTimeSeconds / 60.0);
     row.flightSeconds = settings.flightTimeSeconds;
     row.flightMinutesShown = row.flightTime->value();
+    row.turnaround->setValue(settings.turnaroundSeconds / 60.0);
+    row.turnaroundSeconds = settings.turnaroundSeconds;
+    row.turnaroundMinutesShown = row.turnaround->value();
 }
 
 void VehicleSettingsDialog::followDefaults() {
@@ -178,6 +199,8 @@ void VehicleSettingsDialog::followDefaults() {
             robot.maxWaypoints = defaults.maxWaypoints;
         if (robot.flightTimeSeconds == shownDefaults_.flightTimeSeconds)
             robot.flightTimeSeconds = defaults.flightTimeSeconds;
+        if (robot.turnaroundSeconds == shownDefaults_.turnaroundSeconds)
+            robot.turnaroundSeconds = defaults.turnaroundSeconds;
         show(rows_[i], robot);
     }
     shownDefaults_ = defaults;

@@ -39,6 +39,9 @@ class VehicleSettingsDialog : public QDialog {
         // such as 1000 s, so a box left as shown gives back the value as given.
         double flightSeconds = 0.0;
         double flightMinutesShown = 0.0;
+        QDoubleSpinBox* turnaround = nullptr; // minutes, given and shown as the flight time
+        double turnaroundSeconds = 0.0;
+        double turnaroundMinutesShown = 0.0;
     };
 
     Row addRow(int row, const QString& name, const io::VehicleSettings& settings);

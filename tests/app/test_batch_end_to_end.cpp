@@ -622,22 +622,25 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
     QVERIFY2(parts.isEmpty(), qPrintable(parts.join(", ")));
 }
 
-// --vehicle, --altitude, --cruise-speed, --fov-scale and --flight-time: the plan's times are at the cruise
-// speed, cells are sized by the scaled fields of view, and the waypoint files are flights that take off and
-// return to launch within the flight time.
+// --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at
+// the cruise speed, cells are sized by the scaled fields of view, and the waypoint files are flights that
+// take off and return to launch within the flight time, with the turnarounds between them in the field time.
 void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
     const QString ground = scratch_.filePath("ground");
     const QString drone = scratch_.filePath("drone");
     auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", ground});
     QCOMPARE(run.exitCode, 0);
     run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--vehicle", "multirotor", "--altitude",
-                   "45", "--cruise-speed", "6", "--fov-scale", "2", "--flight-time", "3min", "--out", drone});
+                   "45", "--cruise-speed", "6", "--fov-scale", "2", "--flight-time", "3min", "--turnaround",
+                   "2min", "--out", drone});
     checkOutputs(drone, 3, run);
     if (QTest::currentTestFailed())
         return;
     QVERIFY2(run.standardOutput.contains(QStringLiteral("every robot cruises at 6 m/s")),
              qPrintable(run.standardOutput));
     QVERIFY2(run.standardOutput.contains(QStringLiteral("field of view times 2")),
+             qPrintable(run.standardOutput));
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("with 2 min between parts, done after")),
              qPrintable(run.standardOutput));
     const QJsonObject report = readJsonObject(drone + "/report.json");
     int cells = 0;
@@ -650,9 +653,19 @@ void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
         const QJsonArray flights = robot.value("mission_part_seconds").toArray();
         QVERIFY2(flights.size() > 1, qPrintable(QString::number(flights.size())));
         QCOMPARE(robot.value("mission_parts").toInt(), flights.size());
-        for (const QJsonValue& flight : flights)
+        double flown = 0.0;
+        for (const QJsonValue& flight : flights) {
             QVERIFY2(flight.toDouble() > 0.0 && flight.toDouble() <= 180.0,
                      qPrintable(QString::number(flight.toDouble())));
+            flown += flight.toDouble();
+        }
+        // Done in the field after the flights and two minutes on the ground between each two.
+        QCOMPARE(robot.value("turnaround_s").toDouble(), 120.0);
+        const double field = flown + 120.0 * static_cast<double>(flights.size() - 1);
+        QVERIFY2(std::abs(robot.value("mission_field_s").toDouble() - field) <= 1e-9 * field,
+                 qPrintable(QStringLiteral("%1 s, %2 s expected")
+                                .arg(robot.value("mission_field_s").toDouble())
+                                .arg(field)));
         // Time is length at 6 m/s and the time lost at turns (connector time is part of the length's).
         const double flying = robot.value("time_s").toDouble() - robot.value("turn_time_s").toDouble();
         const double expected = robot.value("length_m").toDouble() / 6.0;

@@ -135,7 +135,7 @@ void TestCommandLine::batchWithEveryFlag() {
         "--batch --raster map.tif --classes table.csv --start 318000.5,4130000 --start 319000,4131000.25 "
         "--start -113.1,37.2 --start-crs EPSG:4326 --charger 318100,4130200.5 --planner mcpp-mlct --band 2 "
         "--purity 0.25 --missing-as-obstacle --open-paths --quiet --out results --vehicle multirotor "
-        "--altitude 60 --cruise-speed 8.5 --fov-scale 4 --flight-time 25min"));
+        "--altitude 60 --cruise-speed 8.5 --fov-scale 4 --flight-time 25min --turnaround 4.5min"));
     QVERIFY2(result.ok(), result.error.c_str());
     const auto& options = result.options;
     QCOMPARE(static_cast<int>(options.mode), static_cast<int>(RunMode::Batch));
@@ -170,6 +170,7 @@ void TestCommandLine::batchWithEveryFlag() {
     QCOMPARE(options.cruiseSpeedMetresPerSecond.value_or(-1.0), 8.5);
     QCOMPARE(options.fieldOfViewScale.value_or(-1.0), 4.0);
     QCOMPARE(options.flightTimeSeconds.value_or(-1.0), 1500.0);
+    QCOMPARE(options.turnaroundSeconds.value_or(-1.0), 270.0);
 }
 
 void TestCommandLine::batchWithPresetAndShortForms() {
@@ -286,6 +287,13 @@ void TestCommandLine::errors_data() {
         << "--flight-time \"3600001\": must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 "
            "s), "
            "not 3600001 s";
+    QTest::newRow("--turnaround of two days")
+        << words("--batch m.json --out o --turnaround 48h")
+        << "--turnaround \"48h\": must be a time on the ground of 0 to 24 h (0 to 86400 s), not 172800 s";
+    QTest::newRow("--turnaround without a number")
+        << words("--batch m.json --out o --turnaround soon")
+        << "--turnaround: \"soon\" is not a duration (seconds, or a "
+           "number with s, min or h: 5min)";
     QTest::newRow("--fov-scale zero")
         << words("--batch m.json --out o --fov-scale 0")
         << "--fov-scale: \"0\" is not a factor for the fields of view (more than 0, up to 1000)";

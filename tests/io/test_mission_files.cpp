@@ -47,6 +47,7 @@ Mission sampleMission() {
     mission.robots[1].vehicle.altitudeMetres = 45.5;
     mission.robots[1].vehicle.maxWaypoints = 0;
     mission.robots[1].vehicle.flightTimeSeconds = 1320.0;       // its own battery: 22 min
+    mission.robots[1].vehicle.turnaroundSeconds = 90.0;         // and a quicker swap
     mission.robots[2].batterySeconds = 1500.0;                  // its own battery, for battery planners
     mission.robots[2].charger = MapPoint{302000.5, 4154000.25}; // and its charger away from its start
     mission.events = {{120.5, 1, 0.5}, {600.0, 0, 0.0}};        // robot 1 at half speed, then robot 0 stops
@@ -61,6 +62,7 @@ Mission sampleMission() {
     mission.exports.mergeCollinear = false;
     mission.exports.vehicle.maxWaypoints = 350;
     mission.exports.vehicle.flightTimeSeconds = 1500.0;
+    mission.exports.vehicle.turnaroundSeconds = 300.0;
     mission.exports.speedTolerance = 0.25;
     mission.exports.speedChangesAtTurnsOnly = true;
     return mission;
@@ -138,6 +140,8 @@ class MissionFilesTest : public QObject {
         QCOMPARE(exports["max_waypoints"].toInt(), 350);
         QCOMPARE(exports["flight_time_s"].toDouble(), 1500.0);
         QCOMPARE(beta["flight_time_s"].toDouble(), 1320.0);
+        QCOMPARE(exports["turnaround_s"].toDouble(), 300.0);
+        QCOMPARE(beta["turnaround_s"].toDouble(), 90.0);
         QCOMPARE(exports["speed_tolerance"].toDouble(), 0.25);
         QCOMPARE(exports["speed_changes_at_turns_only"].toBool(), true);
         const std::vector<VehicleSettings> vehicles = robotVehicles(sampleMission());
@@ -146,6 +150,8 @@ class MissionFilesTest : public QObject {
         QCOMPARE(vehicles[1].maxWaypoints, 0);
         QCOMPARE(vehicles[0].flightTimeSeconds, 1500.0);
         QCOMPARE(vehicles[1].flightTimeSeconds, 1320.0);
+        QCOMPARE(vehicles[0].turnaroundSeconds, 300.0);
+        QCOMPARE(vehicles[1].turnaroundSeconds, 90.0);
         QCOMPARE(vehicles[1].altitudeMetres, 45.5);
         QCOMPARE(vehicles[1].cruiseSpeedMetresPerSecond, 1.2);
         QVERIFY(vehicles[1].type == VehicleType::Multirotor);

@@ -45,6 +45,32 @@ QJsonObject readJson(const std::string& path) {
     return QJsonDocument::fromJson(file.readAll()).object();
 }
 
+// A CSV file's rows by its header's column names; no field here is quoted.
+std::vector<std::map<std::string, std::string>> readCsvRows(const std::string& path) {
+    std::ifstream input(path);
+    const auto split = [](const std::string& line) {
+        std::vector<std::string> fields;
+        std::size_t from = 0;
+        for (std::size_t comma = line.find(','); comma != std::string::npos; comma = line.find(',', from)) {
+            fields.push_back(line.substr(from, comma - from));
+            from = comma + 1;
+        }
+        fields.push_back(line.substr(from));
+        return fields;
+    };
+    std::string line;
+    std::getline(input, line);
+    const std::vector<std::string> header = split(line);
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(input, line)) {
+        const std::vector<std::string> fields = split(line);
+        std::map<std::string, std::string>& row = rows.emplace_back();
+        for (std::size_t column = 0; column < header.size() && column < fields.size(); ++column)
+            row[header[column]] = fields[column];
+    }
+    return rows;
+}
+
 GeoReference utm12() {
     return GeoReference::fromDefinition("EPSG:26912").value();
 }
@@ -432,6 +458,26 @@ class PlanExportTest : public QObject {
         // Both kinds of flight are there: near rows fit, far ones do not.
         QVERIFY2(fitting > 0 && tooLong > 0,
                  qPrintable(QStringLiteral("%1 fit, %2 do not").arg(fitting).arg(tooLong)));
+        // report.csv counts the same flights: the drone's too long, its longest and all of them in one.
+        const std::string csv = file("missions.csv");
+        QVERIFY(writeReportCsv(exportContext, csv).ok());
+        const std::vector<std::map<std::string, std::string>> rows = readCsvRows(csv);
+        QCOMPARE(rows.size(), std::size_t{2});
+        const AutopilotMission& flown = autopilotMissionOf(exportContext, 0);
+        double total = 0.0;
+        double longest = 0.0;
+        for (const MissionPart& piece : flown.parts) {
+            total += piece.seconds;
+            longest = std::max(longest, piece.seconds);
+        }
+        QCOMPARE(rows[0].at("flight_time_s"), std::string("120"));
+        QCOMPARE(rows[0].at("mission_parts_over_flight_time"), std::to_string(tooLong));
+        QCOMPARE(std::stod(rows[0].at("mission_longest_part_s")), longest);
+        QVERIFY(std::abs(std::stod(rows[0].at("mission_flights_s")) - total) <= 1e-9 * total);
+        QVERIFY(longest > 120.0);
+        // The rover without a flight time: none over.
+        QCOMPARE(rows[1].at("flight_time_s"), std::string("0"));
+        QCOMPARE(rows[1].at("mission_parts_over_flight_time"), std::string("0"));
     }
 
     // A plan simulated over time adds what each robot took over from others: here robot 1 took the 20 m
@@ -598,10 +644,13 @@ class PlanExportTest : public QObject {
         std::string header, line;
         std::getline(input, header);
         QCOMPARE(header, std::string("robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,"
-                                     "mission_parts,turn_time_s,connector_time_s"));
+                                     "mission_parts,turn_time_s,connector_time_s,flight_time_s,"
+                                     "mission_flights_s,mission_longest_part_s,"
+                                     "mission_parts_over_flight_time,turnaround_s,mission_field_s"));
         std::getline(input, line);
         // Home, the first speed and five turning points (the straight top run's two inner points go).
-        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1,0,0"));
+        // No flight time: one part of the whole time, none over, no turnarounds.
+        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1,0,0,0,80,80,0,0,80"));
     }
 
     void turningPointsDropOnlyCollinearPoints() {

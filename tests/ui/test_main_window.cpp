@@ -209,6 +209,11 @@ class TestMainWindow : public QObject {
             ui::ResultsPanel::waypointFilesText({{380, 1}, {380, 1}, {90, 6, 1900.0, 2}}, vehicles, names);
         QCOMPARE(flights, QStringLiteral("1 robot above the item limit or flight time, in parts: south in 6; "
                                          "2 parts longer than a flight (out of its reach)"));
+        // When the last robot is done: its flights and the turnarounds between them.
+        const QString done = ui::ResultsPanel::waypointFilesText(
+            {{380, 1, 0.0, 0, 900.0}, {380, 1}, {90, 6, 1900.0, 2, 9000.0}}, vehicles, names);
+        QVERIFY2(done.endsWith(QStringLiteral("(out of its reach); all done in the field after 2 h 30 min")),
+                 qPrintable(done));
     }
 
     void robotLabelStepKeepsTheNumbersThatFit() {

@@ -121,6 +121,21 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(!vehicles[1].flightTimeSeconds);
     }
 
+    // A turnaround in minutes beside the flight time: robots follow the fleet's, one keeps its own.
+    void turnaroundInMinutes() {
+        ui::VehicleSettingsDialog dialog(threeRobots());
+        auto* table = dialog.findChild<QTableWidget*>();
+        QCOMPARE(table->horizontalHeaderItem(5)->text(), QStringLiteral("Turnaround (min)"));
+        cell<QDoubleSpinBox>(table, 2, 5)->setValue(2.0); // beta's own
+        cell<QDoubleSpinBox>(table, 0, 5)->setValue(5.0);
+        QCOMPARE(cell<QDoubleSpinBox>(table, 1, 5)->value(), 5.0);
+        QCOMPARE(cell<QDoubleSpinBox>(table, 2, 5)->value(), 2.0);
+        QCOMPARE(dialog.exports().vehicle.turnaroundSeconds, 300.0);
+        const auto vehicles = dialog.vehicles();
+        QVERIFY(!vehicles[0].turnaroundSeconds);
+        QCOMPARE(vehicles[1].turnaroundSeconds.value_or(-1.0), 120.0);
+    }
+
     // Values the boxes cannot show exactly come back unchanged: OK without an edit changes nothing.
     void untouchedValuesComeBackUnchanged() {
         Mission mission = threeRobots();
@@ -128,6 +143,7 @@ class VehicleSettingsDialogTest : public QObject {
         mission.exports.vehicle.altitudeMetres = 30.125;
         mission.exports.vehicle.maxWaypoints = 0;
         mission.exports.vehicle.flightTimeSeconds = 1000.0; // 16.667 min in the box
+        mission.exports.vehicle.turnaroundSeconds = 100.0;  // 1.667 min
         ui::VehicleSettingsDialog dialog(mission);
         QVERIFY(dialog.exports() == mission.exports);
         const auto vehicles = dialog.vehicles();
