@@ -31,8 +31,9 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
                                 "mission with more items than the limit, or longer than the flight time, is "
                                 "written in parts, each beginning where the one before it ended; aircraft "
                                 "take off from their start and "
-                                "return to it in every part. A cruise speed all robots share is also the "
-                                "speed the plan uses over every passable class."),
+                                "return to it in every part. The turnaround, the time on the ground between "
+                                "two parts, adds to when each robot is done in the field. A cruise speed all "
+                                "robots share is also the speed the plan uses over every passable class."),
                              this);
     intro->setWordWrap(true);
     layout->addWidget(intro);
