@@ -447,9 +447,13 @@ MissionFlights missionFlights(const AutopilotMission& mission, const VehicleSett
         if (exceedsFlightTime(part, vehicle))
             ++flights.overFlightTime;
     }
+    // Unknown, as the flights, where a speed is unknown: turnarounds alone would read as a time.
+    const bool timed = std::all_of(mission.parts.begin(), mission.parts.end(),
+                                   [](const MissionPart& part) { return part.seconds > 0.0; });
     const std::size_t turnarounds = mission.parts.empty() ? 0 : mission.parts.size() - 1;
-    flights.fieldSeconds =
-        flights.totalSeconds + static_cast<double>(turnarounds) * vehicle.turnaroundSeconds;
+    if (timed)
+        flights.fieldSeconds =
+            flights.totalSeconds + static_cast<double>(turnarounds) * vehicle.turnaroundSeconds;
     return flights;
 }
 

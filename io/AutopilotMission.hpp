@@ -74,7 +74,8 @@ struct MissionFlights {
     double totalSeconds = 0.0; // all its parts, an aircraft's trips from and back to its start included
     double longestSeconds = 0.0;
     std::size_t overFlightTime = 0; // parts longer than the flight time; none without one
-    // The flights and the vehicle's turnarounds between them: when the robot is done in the field.
+    // The flights and the vehicle's turnarounds between them: when the robot is done in the field; 0 when
+    // a part's time is unknown.
     double fieldSeconds = 0.0;
 };
 // Whether a part takes longer than the vehicle's flight time (never without one, or with a speed unknown).

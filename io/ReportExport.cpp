@@ -148,7 +148,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         JsonValue& partSeconds = item.add("mission_part_seconds", JsonValue::array());
         for (const MissionPart& part : mission.parts)
             partSeconds.push(part.seconds);
-        // All the parts' flights, trips included: what the robot flies, battery swaps aside.
+        // All the parts' flights, trips included: what the robot flies; the field time adds the turnarounds.
         const MissionFlights flights = missionFlights(mission, vehicle);
         item.add("mission_flights_s", flights.totalSeconds);
         item.add("mission_longest_part_s", flights.longestSeconds);

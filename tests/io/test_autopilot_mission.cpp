@@ -283,6 +283,25 @@ class AutopilotMissionTest : public QObject {
 
     // Each part fits one flight, trips included, and the parts are as few as filling each flight in turn
     // gives (counted here point by point with partSeconds) and as even as they can be.
+    // A robot is done in the field after its flights and a turnaround between each two; with a part's time
+    // unknown, so is that.
+    void fieldTimeAddsTurnaroundsBetweenParts() {
+        AutopilotMission mission;
+        mission.parts = {{0, 4, 10, 600.0}, {4, 9, 10, 1300.0}, {9, 12, 8, 450.0}};
+        VehicleSettings drone;
+        drone.flightTimeSeconds = 1200.0;
+        drone.turnaroundSeconds = 240.0;
+        const MissionFlights flights = missionFlights(mission, drone);
+        QCOMPARE(flights.totalSeconds, 2350.0);
+        QCOMPARE(flights.longestSeconds, 1300.0);
+        QCOMPARE(flights.overFlightTime, std::size_t{1});
+        QCOMPARE(flights.fieldSeconds, 2350.0 + 2 * 240.0);
+        drone.flightTimeSeconds = 0.0; // no limit: nothing is over it
+        QCOMPARE(missionFlights(mission, drone).overFlightTime, std::size_t{0});
+        mission.parts[1].seconds = 0.0; // a speed unknown
+        QCOMPARE(missionFlights(mission, drone).fieldSeconds, 0.0);
+    }
+
     void partsFitTheFlightTime() {
         std::mt19937 random(23);
         for (int trial = 0; trial < 40; ++trial) {
