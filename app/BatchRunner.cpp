@@ -410,6 +410,8 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     for (int robot = 0; robot < robots; ++robot)
         if (partsWritten.count({robot, "qgc-plan"}) != 0)
             noteMissionFiles(context, robot);
+    if (!partsWritten.empty())
+        fieldTimeNote_ = io::fieldTimeNote(context);
     removeStaleRobotFiles(robots, partsWritten, folder);
 }
 
@@ -612,6 +614,9 @@ void BatchRunner::printSummary(const Plan& plan) const {
             << ", lower bound " << formatDuration(metrics.lowerBoundSeconds) << ", ratio "
             << formatNumber(metrics.ratio, 3) << ", covered " << formatPercent(metrics.coveredFraction)
             << " of the passable area\n";
+    // A split mission's flights, trips and turnarounds take longer than the plan's makespan says.
+    if (!fieldTimeNote_.empty())
+        output_ << "mcpp: " << fieldTimeNote_ << '\n';
     if (const TimelineLayer* timeline = timelineLayerOf(plan))
         output_ << "mcpp: " << timelineSentence(timeline->summary()) << '\n';
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;

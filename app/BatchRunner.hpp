@@ -71,6 +71,7 @@ class BatchRunner {
     io::LoadedRaster raster_;
     ClassTable classes_;
     std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
+    std::string fieldTimeNote_;                // with the summary, when missions are written in parts
     std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan
     int exitCode_ = 0;
 };

@@ -132,6 +132,10 @@ struct ExportContext {
 // What a user must know when some of a robot's mission parts take longer than its vehicle's flight time (a
 // part holds at least two points: its path goes out of one flight's reach); empty when all fit.
 [[nodiscard]] std::string flightTimeWarning(const ExportContext& context, int robot);
+// When the last robot is done in the field where some mission is written in parts: "the last robot, centre,
+// done in the field after 5 d 13 h, its 271 flights and the turnarounds between them included"; empty when
+// every mission is one file or a time is unknown.
+[[nodiscard]] std::string fieldTimeNote(const ExportContext& context);
 
 // Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive
 // parts beside `path` (missionPartPath), each beginning where the one before it ended, and `path` itself is

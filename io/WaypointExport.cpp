@@ -635,6 +635,31 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
            "or plan with wavefront-battery and chargers";
 }
 
+std::string fieldTimeNote(const ExportContext& context) {
+    int last = -1;
+    bool split = false;
+    double lastDone = 0.0;
+    for (int robot = 0; robot < static_cast<int>(context.plan.paths.size()); ++robot) {
+        const AutopilotMission& mission = autopilotMissionOf(context, robot);
+        split = split || mission.parts.size() > 1;
+        const double done = missionFlights(mission, context.vehicle(robot)).fieldSeconds;
+        if (!(done > 0.0))
+            return {};
+        if (done > lastDone) {
+            lastDone = done;
+            last = robot;
+        }
+    }
+    if (!split || last < 0)
+        return {};
+    const std::size_t parts = autopilotMissionOf(context, last).parts.size();
+    const bool aircraft = isAircraft(context.vehicle(last).type);
+    return "the last robot, " + context.robotName(last) + ", done in the field after " +
+           formatDuration(lastDone) + ", its " + std::to_string(parts) + (aircraft ? " flights" : " parts") +
+           (context.vehicle(last).turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") +
+           " included";
+}
+
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {
     return writeMissionFiles(context, robot, path, qGroundControlPlanText);
 }

@@ -1,4 +1,5 @@
 #include "core/model/ClassTable.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/model/ProgressReporter.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -644,6 +645,7 @@ void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
              qPrintable(run.standardOutput));
     const QJsonObject report = readJsonObject(drone + "/report.json");
     int cells = 0;
+    double lastDone = 0.0;
     for (const QJsonValue& value : report.value("robots").toArray()) {
         const QJsonObject robot = value.toObject();
         QCOMPARE(robot.value("vehicle").toString(), QStringLiteral("multirotor"));
@@ -666,12 +668,20 @@ void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
                  qPrintable(QStringLiteral("%1 s, %2 s expected")
                                 .arg(robot.value("mission_field_s").toDouble())
                                 .arg(field)));
+        lastDone = std::max(lastDone, field);
         // Time is length at 6 m/s and the time lost at turns (connector time is part of the length's).
         const double flying = robot.value("time_s").toDouble() - robot.value("turn_time_s").toDouble();
         const double expected = robot.value("length_m").toDouble() / 6.0;
         QVERIFY2(std::abs(flying - expected) <= 1e-6 * expected,
                  qPrintable(QStringLiteral("%1 s flying, %2 s expected").arg(flying).arg(expected)));
     }
+    // The summary gives when the last robot is done: later than the plan's makespan.
+    QVERIFY2(
+        run.standardOutput.contains(QStringLiteral("done in the field after ") +
+                                    QString::fromStdString(mcpp::formatDuration(lastDone))) &&
+            run.standardOutput.contains(QStringLiteral(" flights and the turnarounds between them included")),
+        qPrintable(run.standardOutput));
+    QVERIFY(lastDone > report.value("makespan_s").toDouble());
     int groundCells = 0;
     for (const QJsonValue& value : readJsonObject(ground + "/report.json").value("robots").toArray())
         groundCells += value.toObject().value("cells").toInt();
