@@ -134,7 +134,7 @@ struct ExportContext {
 [[nodiscard]] std::string flightTimeWarning(const ExportContext& context, int robot);
 // When the last robot is done in the field where some mission is written in parts: "the last robot, centre,
 // done in the field after 5 d 13 h, its 271 flights and the turnarounds between them included"; empty when
-// every mission is one file or a time is unknown.
+// no aircraft's mission and no mission with turnarounds is in parts, or a time is unknown.
 [[nodiscard]] std::string fieldTimeNote(const ExportContext& context);
 
 // Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive

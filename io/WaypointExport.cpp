@@ -641,8 +641,11 @@ std::string fieldTimeNote(const ExportContext& context) {
     double lastDone = 0.0;
     for (int robot = 0; robot < static_cast<int>(context.plan.paths.size()); ++robot) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot);
-        split = split || mission.parts.size() > 1;
-        const double done = missionFlights(mission, context.vehicle(robot)).fieldSeconds;
+        const VehicleSettings& vehicle = context.vehicle(robot);
+        // A rover's parts without turnarounds take what its path takes: nothing beyond the makespan to say.
+        split = split ||
+                (mission.parts.size() > 1 && (isAircraft(vehicle.type) || vehicle.turnaroundSeconds > 0.0));
+        const double done = missionFlights(mission, vehicle).fieldSeconds;
         if (!(done > 0.0))
             return {};
         if (done > lastDone) {
