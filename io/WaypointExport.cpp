@@ -641,6 +641,8 @@ std::string fieldTimeNote(const ExportContext& context) {
     double lastDone = 0.0;
     for (int robot = 0; robot < static_cast<int>(context.plan.paths.size()); ++robot) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot);
+        if (mission.parts.empty()) // a robot without a path has no files
+            continue;
         const VehicleSettings& vehicle = context.vehicle(robot);
         // A rover's parts without turnarounds take what its path takes: nothing beyond the makespan to say.
         split = split ||

@@ -3,6 +3,7 @@
 
 #include "PlanFixture.hpp"
 #include "core/coverage/StraightRunMerging.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "io/AutopilotMission.hpp"
@@ -478,6 +479,41 @@ class PlanExportTest : public QObject {
         // The rover without a flight time: none over.
         QCOMPARE(rows[1].at("flight_time_s"), std::string("0"));
         QCOMPARE(rows[1].at("mission_parts_over_flight_time"), std::string("0"));
+    }
+
+    // The summary's field time: the last robot done, its flights and turnarounds; a robot without a path
+    // neither counts nor hides it.
+    void fieldTimeNoteNamesTheLastRobotDone() {
+        Plan plan = test::makeFixturePlan();
+        CoveragePath& lawnmower = plan.paths[0];
+        lawnmower.waypoints.clear();
+        for (int row = 0; row < 12; ++row)
+            for (int step = 0; step < 8; ++step)
+                lawnmower.waypoints.push_back(test::makeWaypoint(
+                    301902.5 + 10.0 * (row % 2 == 0 ? step : 7 - step), 4154077.5 - 10.0 * row, 0, 0.5));
+        plan.paths[1].waypoints.clear();
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.cruiseSpeedMetresPerSecond = 2.0;
+        drone.maxWaypoints = 12;
+        drone.turnaroundSeconds = 300.0;
+        ExportContext exportContext{plan, reference_, classes_, ExportSettings{}};
+        exportContext.vehicles = {drone, drone};
+        const AutopilotMission& mission = autopilotMissionOf(exportContext, 0);
+        QVERIFY(mission.parts.size() > 1);
+        const MissionFlights flights = missionFlights(mission, drone);
+        const std::string note = fieldTimeNote(exportContext);
+        QCOMPARE(note, "the last robot, " + exportContext.robotName(0) + ", done in the field after " +
+                           formatDuration(flights.fieldSeconds) + ", its " +
+                           std::to_string(mission.parts.size()) +
+                           " flights and the turnarounds between them included");
+        // A rover's parts without turnarounds: nothing beyond the plan's time to say.
+        ExportContext rovers{plan, reference_, classes_, ExportSettings{}};
+        VehicleSettings rover;
+        rover.maxWaypoints = 12;
+        rovers.vehicles = {rover, rover};
+        QVERIFY(autopilotMissionOf(rovers, 0).parts.size() > 1);
+        QCOMPARE(fieldTimeNote(rovers), std::string());
     }
 
     // A plan simulated over time adds what each robot took over from others: here robot 1 took the 20 m
