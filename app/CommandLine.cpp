@@ -98,6 +98,22 @@ std::optional<double> parseDuration(std::string_view text) {
     return *number * perUnit;
 }
 
+// A duration flag's value read into `seconds`, or what is wrong with it: not a duration (`example` shows
+// one), or one that `problem` refuses.
+std::optional<std::string> readDurationFlag(std::string_view flag, const std::string& value,
+                                            std::string_view example,
+                                            std::optional<std::string> (*problem)(double),
+                                            std::optional<double>& seconds) {
+    seconds = parseDuration(value);
+    const std::string named = std::string(flag);
+    if (!seconds)
+        return named + ": \"" + value +
+               "\" is not a duration (seconds, or a number with s, min or h: " + std::string(example) + ")";
+    if (const auto refused = problem(*seconds))
+        return named + " \"" + value + "\": " + *refused;
+    return std::nullopt;
+}
+
 std::optional<int> parsePositiveInteger(std::string_view text) {
     const auto value = parseNonNegativeInteger(text);
     return value && *value >= 1 ? value : std::nullopt;
@@ -398,19 +414,13 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 return failure("--cruise-speed: " + quoted(value) +
                                " is not a speed (0 for the land-cover speeds, up to 1000 m/s)");
         } else if (flag == "--flight-time") {
-            options.flightTimeSeconds = parseDuration(value);
-            if (!options.flightTimeSeconds)
-                return failure("--flight-time: " + quoted(value) +
-                               " is not a duration (seconds, or a number with s, min or h: 25min)");
-            if (const auto problem = io::flightTimeProblem(*options.flightTimeSeconds))
-                return failure("--flight-time " + quoted(value) + ": " + *problem);
+            if (auto problem =
+                    readDurationFlag(flag, value, "25min", &io::flightTimeProblem, options.flightTimeSeconds))
+                return failure(std::move(*problem));
         } else if (flag == "--turnaround") {
-            options.turnaroundSeconds = parseDuration(value);
-            if (!options.turnaroundSeconds)
-                return failure("--turnaround: " + quoted(value) +
-                               " is not a duration (seconds, or a number with s, min or h: 5min)");
-            if (const auto problem = io::turnaroundProblem(*options.turnaroundSeconds))
-                return failure("--turnaround " + quoted(value) + ": " + *problem);
+            if (auto problem =
+                    readDurationFlag(flag, value, "5min", &io::turnaroundProblem, options.turnaroundSeconds))
+                return failure(std::move(*problem));
         } else if (flag == "--fov-scale") {
             options.fieldOfViewScale = parseFiniteNumber(value);
             if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||

@@ -46,6 +46,18 @@ QJsonObject readJson(const std::string& path) {
     return QJsonDocument::fromJson(file.readAll()).object();
 }
 
+// The fixture plan with the first robot's path a lawnmower of 12 rows of 8 points, 10 m apart.
+Plan lawnmowerPlan() {
+    Plan plan = test::makeFixturePlan();
+    CoveragePath& lawnmower = plan.paths[0];
+    lawnmower.waypoints.clear();
+    for (int row = 0; row < 12; ++row)
+        for (int step = 0; step < 8; ++step)
+            lawnmower.waypoints.push_back(test::makeWaypoint(
+                301902.5 + 10.0 * (row % 2 == 0 ? step : 7 - step), 4154077.5 - 10.0 * row, 0, 0.5));
+    return plan;
+}
+
 // A CSV file's rows by its header's column names; no field here is quoted.
 std::vector<std::map<std::string, std::string>> readCsvRows(const std::string& path) {
     std::ifstream input(path);
@@ -389,13 +401,7 @@ class PlanExportTest : public QObject {
     // joining up, with its items and time and whether it fits the vehicle's flight time (a drone on a
     // lawnmower whose far rows lie beyond one flight's reach; a rover without a flight time beside it).
     void missionsLayerHoldsEachWaypointFilePart() {
-        Plan plan = test::makeFixturePlan();
-        CoveragePath& lawnmower = plan.paths[0];
-        lawnmower.waypoints.clear();
-        for (int row = 0; row < 12; ++row)
-            for (int step = 0; step < 8; ++step)
-                lawnmower.waypoints.push_back(test::makeWaypoint(
-                    301902.5 + 10.0 * (row % 2 == 0 ? step : 7 - step), 4154077.5 - 10.0 * row, 0, 0.5));
+        Plan plan = lawnmowerPlan();
         VehicleSettings drone;
         drone.type = VehicleType::Multirotor;
         drone.cruiseSpeedMetresPerSecond = 2.0;
@@ -484,13 +490,7 @@ class PlanExportTest : public QObject {
     // The summary's field time: the last robot done, its flights and turnarounds; a robot without a path
     // neither counts nor hides it.
     void fieldTimeNoteNamesTheLastRobotDone() {
-        Plan plan = test::makeFixturePlan();
-        CoveragePath& lawnmower = plan.paths[0];
-        lawnmower.waypoints.clear();
-        for (int row = 0; row < 12; ++row)
-            for (int step = 0; step < 8; ++step)
-                lawnmower.waypoints.push_back(test::makeWaypoint(
-                    301902.5 + 10.0 * (row % 2 == 0 ? step : 7 - step), 4154077.5 - 10.0 * row, 0, 0.5));
+        Plan plan = lawnmowerPlan();
         plan.paths[1].waypoints.clear();
         VehicleSettings drone;
         drone.type = VehicleType::Multirotor;
