@@ -450,7 +450,7 @@ void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) 
     const std::string message =
         io::splitMissionNote(context, robot, "robot_" + std::to_string(io::robotNumber(robot)) + ".plan");
     if (!message.empty())
-        note(message + ", and the same parts of the .waypoints file");
+        note(message + "; the .waypoints file is split into the same parts");
     const std::string sorties =
         io::sortieFilesNote(context, robot, "robot_" + std::to_string(io::robotNumber(robot)) + ".plan");
     if (!sorties.empty())

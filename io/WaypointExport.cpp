@@ -657,12 +657,19 @@ std::string fieldTimeNote(const ExportContext& context) {
     }
     if (!split || last < 0)
         return {};
-    const std::size_t parts = autopilotMissionOf(context, last).parts.size();
+    const AutopilotMission& lastMission = autopilotMissionOf(context, last);
+    const std::size_t parts = lastMission.parts.size();
+    const std::size_t over = missionFlights(lastMission, context.vehicle(last)).overFlightTime;
+    // Flights beyond one battery are counted as flown: the time is then a floor, as the warnings say.
+    const std::string caveat =
+        over == 0 ? std::string()
+                  : " (" + std::to_string(over) +
+                        " of them longer than one battery allows, counted as flown: see the warnings)";
     const bool aircraft = isAircraft(context.vehicle(last).type);
     return "the last robot, " + context.robotName(last) + ", done in the field after " +
            formatDuration(lastDone) + ", its " + std::to_string(parts) + (aircraft ? " flights" : " parts") +
            (context.vehicle(last).turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") +
-           " included";
+           " included" + caveat;
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

@@ -507,6 +507,17 @@ class PlanExportTest : public QObject {
                            formatDuration(flights.fieldSeconds) + ", its " +
                            std::to_string(mission.parts.size()) +
                            " flights and the turnarounds between them included");
+        // Flights beyond one battery are named: the time counts them as flown.
+        ExportContext batteries{plan, reference_, classes_, ExportSettings{}};
+        drone.flightTimeSeconds = 120.0; // the far rows lie out of reach
+        batteries.vehicles = {drone, drone};
+        const std::size_t over = missionFlights(autopilotMissionOf(batteries, 0), drone).overFlightTime;
+        QVERIFY(over > 0);
+        const std::string caveat =
+            " included (" + std::to_string(over) +
+            " of them longer than one battery allows, counted as flown: see the warnings)";
+        const std::string limited = fieldTimeNote(batteries);
+        QVERIFY2(limited.ends_with(caveat), limited.c_str());
         // A rover's parts without turnarounds: nothing beyond the plan's time to say.
         ExportContext rovers{plan, reference_, classes_, ExportSettings{}};
         VehicleSettings rover;
