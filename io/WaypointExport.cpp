@@ -638,7 +638,7 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
 std::string fieldTimeNote(const ExportContext& context) {
     int last = -1;
     bool split = false;
-    double lastDone = 0.0;
+    MissionFlights lastFlights;
     for (int robot = 0; robot < static_cast<int>(context.plan.paths.size()); ++robot) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot);
         if (mission.parts.empty()) // a robot without a path has no files
@@ -647,29 +647,29 @@ std::string fieldTimeNote(const ExportContext& context) {
         // A rover's parts without turnarounds take what its path takes: nothing beyond the makespan to say.
         split = split ||
                 (mission.parts.size() > 1 && (isAircraft(vehicle.type) || vehicle.turnaroundSeconds > 0.0));
-        const double done = missionFlights(mission, vehicle).fieldSeconds;
-        if (!(done > 0.0))
+        const MissionFlights flights = missionFlights(mission, vehicle);
+        if (!(flights.fieldSeconds > 0.0))
             return {};
-        if (done > lastDone) {
-            lastDone = done;
+        if (flights.fieldSeconds > lastFlights.fieldSeconds) {
+            lastFlights = flights;
             last = robot;
         }
     }
     if (!split || last < 0)
         return {};
-    const AutopilotMission& lastMission = autopilotMissionOf(context, last);
-    const std::size_t parts = lastMission.parts.size();
-    const std::size_t over = missionFlights(lastMission, context.vehicle(last)).overFlightTime;
+    const std::size_t over = lastFlights.overFlightTime;
     // Flights beyond one battery are counted as flown: the time is then a floor, as the warnings say.
     const std::string caveat =
         over == 0 ? std::string()
                   : " (" + std::to_string(over) +
                         " of them longer than one battery allows, counted as flown: see the warnings)";
-    const bool aircraft = isAircraft(context.vehicle(last).type);
+    const VehicleSettings& vehicle = context.vehicle(last);
     return "the last robot, " + context.robotName(last) + ", done in the field after " +
-           formatDuration(lastDone) + ", its " + std::to_string(parts) + (aircraft ? " flights" : " parts") +
-           (context.vehicle(last).turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") +
-           " included" + caveat;
+           formatDuration(lastFlights.fieldSeconds) + ", its " +
+           std::to_string(autopilotMissionOf(context, last).parts.size()) +
+           (isAircraft(vehicle.type) ? " flights" : " parts") +
+           (vehicle.turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") + " included" +
+           caveat;
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {
