@@ -4,6 +4,7 @@
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/ParallelFor.hpp"
 #include "io/CrsDatabaseWarmUp.hpp"
+#include "render/PreparedPictureMemory.hpp"
 
 #include <QGuiApplication>
 #include <QMessageLogContext>
@@ -49,6 +50,9 @@ int runBatch(char* programName, const mcpp::app::CommandLineOptions& options) {
     // After the last change to the environment: the warm-up thread reads it (glibc's setenv is not safe
     // beside a getenv on another thread).
     const mcpp::io::CrsDatabaseWarmUp warmUp;
+    // plan.png's sheet: a map of at most 1 600 pixels a side with its title and legend, about 2 100 x 1 700
+    // pixels of 4 bytes.
+    const mcpp::render::PreparedPictureMemory pictureMemory(std::size_t{16} << 20);
     qInstallMessageHandler(batchMessageHandler);
     mcpp::setWorkerThreads(options.threads);
     int qtArgumentCount = 1;

@@ -4,6 +4,7 @@
 #include "render/PlanRenderer.hpp"
 #include "render/PlanSheet.hpp"
 #include "render/PngEncoder.hpp"
+#include "render/PreparedPictureMemory.hpp"
 
 #include <QBuffer>
 #include <QDir>
@@ -42,18 +43,22 @@ bool checkInputs(const ClassGrid& grid, QSize maxSize, const QString& path, QStr
 }
 
 // A picture's pixels in memory marked for transparent huge pages: a 1600-pixel sheet takes 13 MB, which the
-// kernel would otherwise fault in 4 KiB at a time (a fifth of the time of drawing a small plan).
+// kernel would otherwise fault in 4 KiB at a time (a fifth of the time of drawing a small plan). In a batch
+// run they are the block faulted in ahead during start-up (PreparedPictureMemory).
 QImage blankPicture(QSize size) {
-    constexpr std::size_t hugePage = std::size_t{2} << 20;
+    constexpr std::size_t hugePage = PreparedPictureMemory::hugePage;
     const auto bytesPerLine = static_cast<std::size_t>(size.width()) * 4;
     const std::size_t bytes =
         (bytesPerLine * static_cast<std::size_t>(size.height()) + hugePage - 1) / hugePage * hugePage;
-    void* block = std::aligned_alloc(hugePage, bytes);
-    if (block == nullptr)
-        return {size, QImage::Format_RGB32};
+    void* block = PreparedPictureMemory::take(bytes);
+    if (block == nullptr) {
+        block = std::aligned_alloc(hugePage, bytes);
+        if (block == nullptr)
+            return {size, QImage::Format_RGB32};
 #ifdef __linux__
-    madvise(block, bytes, MADV_HUGEPAGE);
+        madvise(block, bytes, MADV_HUGEPAGE);
 #endif
+    }
     return {static_cast<uchar*>(block),
             size.width(),
             size.height(),

@@ -7,6 +7,7 @@
 #include "render/PlanLegend.hpp"
 #include "render/PlanRenderer.hpp"
 #include "render/PlanSheet.hpp"
+#include "render/PreparedPictureMemory.hpp"
 #include "render/RobotPalette.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -482,6 +483,31 @@ class TestPlanRenderer : public QObject {
         // The passes are at most 5 m apart: lines cover a good share of the map at any zoom.
         QVERIFY2(changed * 10 > onMap,
                  qPrintable(QStringLiteral("%1 of %2 map pixels show a path").arg(changed).arg(onMap)));
+    }
+
+    // A batch run paints plan.png into memory faulted in ahead (filled with zeros, not white): the file is
+    // the same byte for byte, and the picture took the block.
+    void picturePaintedIntoPreparedMemoryIsTheSame() {
+        QTemporaryDir directory;
+        const Plan plan = eastboundPlan();
+        QString error;
+        const QString fresh = directory.filePath(QStringLiteral("fresh.png"));
+        QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, fresh, QSize(800, 800), &error),
+                 qPrintable(error));
+        const QString prepared = directory.filePath(QStringLiteral("prepared.png"));
+        {
+            const render::PreparedPictureMemory memory(std::size_t{16} << 20);
+            QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, prepared, QSize(800, 800),
+                                          &error),
+                     qPrintable(error));
+            QVERIFY(render::PreparedPictureMemory::take(1024) == nullptr); // taken by the picture
+        }
+        QFile freshFile(fresh);
+        QFile preparedFile(prepared);
+        QVERIFY(freshFile.open(QIODevice::ReadOnly) && preparedFile.open(QIODevice::ReadOnly));
+        const QByteArray freshBytes = freshFile.readAll();
+        QVERIFY(freshBytes.size() > 1000);
+        QCOMPARE(preparedFile.readAll(), freshBytes);
     }
 
     // The exported picture is a map sheet: title, the map fitted as asked, scale bar, north arrow and a
