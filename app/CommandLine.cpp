@@ -82,22 +82,6 @@ std::optional<SpeedEvent> parseEvent(std::string_view text) {
     return SpeedEvent{*time, *robot, *factor};
 }
 
-// "1500", "1500 s", "25min", "0.5 h": seconds.
-std::optional<double> parseDuration(std::string_view text) {
-    text = trimmedText(text);
-    const std::size_t unitStart = text.find_first_not_of("0123456789.+-eE");
-    std::string_view unit = unitStart == std::string_view::npos ? std::string_view() : text.substr(unitStart);
-    unit = trimmedText(unit);
-    const double perUnit = unit.empty() || unit == "s" ? 1.0
-                           : unit == "min"             ? 60.0
-                           : unit == "h"               ? 3600.0
-                                                       : 0.0;
-    const auto number = parseFiniteNumber(text.substr(0, unitStart));
-    if (!number || perUnit == 0.0)
-        return std::nullopt;
-    return *number * perUnit;
-}
-
 // A duration flag's value read into `seconds`, or what is wrong with it: not a duration (`example` shows
 // one), or one that `problem` refuses.
 std::optional<std::string> readDurationFlag(std::string_view flag, const std::string& value,

@@ -3,6 +3,7 @@
 #include "core/model/BatteryEndurance.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/SpeedEventCheck.hpp"
+#include "core/parameters/NumberText.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
@@ -103,6 +104,12 @@ class MissionReader {
         return true;
     }
     bool number(const QJsonValue& value, const std::string& path, double& out) {
+        if (value.isString() && path.size() > 2 && path.compare(path.size() - 2, 2, "_s") == 0) {
+            const std::string text = value.toString().toStdString();
+            if (const auto seconds = parseDuration(text))
+                return fail(path, "expected a number of seconds, found the text \"" + text + "\": write " +
+                                      formatQuantity(*seconds) + " for " + formatDuration(*seconds));
+        }
         if (!value.isDouble() || !std::isfinite(value.toDouble()))
             return wrongType(path, value, "a number");
         out = value.toDouble();

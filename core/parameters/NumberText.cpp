@@ -27,4 +27,19 @@ std::optional<double> parseFiniteNumber(std::string_view text) {
     return value;
 }
 
+std::optional<double> parseDuration(std::string_view text) {
+    text = trimmedText(text);
+    const std::size_t unitStart = text.find_first_not_of("0123456789.+-eE");
+    std::string_view unit = unitStart == std::string_view::npos ? std::string_view() : text.substr(unitStart);
+    unit = trimmedText(unit);
+    const double perUnit = unit.empty() || unit == "s" ? 1.0
+                           : unit == "min"             ? 60.0
+                           : unit == "h"               ? 3600.0
+                                                       : 0.0;
+    const auto number = parseFiniteNumber(text.substr(0, unitStart));
+    if (!number || perUnit == 0.0)
+        return std::nullopt;
+    return *number * perUnit;
+}
+
 } // namespace mcpp

@@ -280,6 +280,33 @@ class MissionFilesTest : public QObject {
         QVERIFY(TurnTimeModel::from(reloaded.value().planner.parameters).fixedSecondsPer90Degrees < 0.0);
     }
 
+    // Times are seconds: a time written with its unit is refused, with the number to write instead.
+    void timeWithAUnitNamesTheSecondsToWrite() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("units.json").toStdString();
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20], "flight_time_s": "0.5 h"}],
+                            "exports": {"turnaround_s": "5min"}})");
+        auto loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(),
+                 path + ": robots[0].flight_time_s: expected a number of seconds, found the text "
+                        "\"0.5 h\": write 1800 for 30 min");
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "exports": {"turnaround_s": "5min"}})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path +
+                                     ": exports.turnaround_s: expected a number of seconds, found the text "
+                                     "\"5min\": write 300 for 5 min");
+        // Text that is no time keeps the plain message.
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "exports": {"turnaround_s": "soon"}})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path + ": exports.turnaround_s: expected a number, found a string");
+    }
+
     void rasterPathIsRelativeToTheMissionFile() {
         Mission mission;
         mission.rasterPath = "../data/map.tif";
