@@ -74,7 +74,12 @@ std::string formatDuration(double seconds) {
         return "-" + formatDuration(-seconds);
     if (seconds < 60.0)
         return formatQuantity(seconds, seconds < 10.0 ? 2 : 3) + " s";
-    const auto total = static_cast<long long>(std::llround(seconds));
+    // Rounded to the last unit shown, not cut: 1 h 23 min 57 s reads 1 h 24 min.
+    constexpr double kMinutesFrom = 3600.0;
+    constexpr double kHoursFrom = 10 * 86400.0 - 1800.0; // from there on, days and hours only
+    const double shownUnit = seconds >= kHoursFrom ? 3600.0 : seconds >= kMinutesFrom - 30.0 ? 60.0 : 1.0;
+    const auto total =
+        static_cast<long long>(std::llround(seconds / shownUnit)) * static_cast<long long>(shownUnit);
     const long long days = total / 86400;
     const long long hours = total / 3600 % 24;
     const long long minutes = total / 60 % 60;

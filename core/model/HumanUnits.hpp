@@ -16,7 +16,8 @@ namespace mcpp {
 [[nodiscard]] std::string formatDistance(double metres);
 // A fraction (0.5) as a percentage ("50%"); one decimal at most, two for values under 1%.
 [[nodiscard]] std::string formatPercent(double fraction);
-// "45 s", "12 min 5 s", "3 h 12 min", "1 d 9 h 54 min" (minutes kept under ten days), "371 d 5 h".
+// "45 s", "12 min 5 s", "3 h 12 min", "1 d 9 h 54 min" (minutes kept under ten days), "371 d 5 h"; rounded to
+// the last unit shown.
 [[nodiscard]] std::string formatDuration(double seconds);
 
 } // namespace mcpp

@@ -67,9 +67,16 @@ class TestHumanUnits : public QObject {
         QTest::newRow("short") << 2.345 << "2.3 s";
         QTest::newRow("minutes") << 725.0 << "12 min 5 s";
         QTest::newRow("hours") << 3.0 * 3600 + 12 * 60 + 10 << "3 h 12 min";
-        QTest::newRow("days") << 8909.0 * 3600 + 53 * 60 << "371 d 5 h";
+        QTest::newRow("days, rounded to the hour") << 8909.0 * 3600 + 53 * 60 << "371 d 6 h";
+        QTest::newRow("days, down to the hour") << 8909.0 * 3600 + 29 * 60 << "371 d 5 h";
         QTest::newRow("whole hour") << 7200.0 << "2 h";
-        QTest::newRow("a day and a half") << 33.0 * 3600 + 54 * 60 + 46 << "1 d 9 h 54 min";
+        QTest::newRow("a day and a half, rounded to the minute")
+            << 33.0 * 3600 + 54 * 60 + 46 << "1 d 9 h 55 min";
+        QTest::newRow("hours, rounded to the minute") << 5036.8 << "1 h 24 min";
+        QTest::newRow("hours, down to the minute") << 5009.0 << "1 h 23 min";
+        QTest::newRow("just under an hour") << 3590.0 << "1 h";
+        QTest::newRow("minutes keep their seconds") << 3569.0 << "59 min 29 s";
+        QTest::newRow("just under ten days") << 10 * 86400.0 - 60 << "10 d";
         QTest::newRow("a whole day") << 86400.0 << "1 d 0 h";
     }
     void durations() {
