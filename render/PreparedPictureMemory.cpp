@@ -40,7 +40,6 @@ PreparedPictureMemory::PreparedPictureMemory(std::size_t bytes) {
         return;
     }
     block_ = block;
-    bytes_ = bytes;
     const std::lock_guard lock(offerMutex);
     if (offered == nullptr) {
         offered = this;

@@ -7,7 +7,7 @@ namespace mcpp::render {
 
 // The pixels of a batch run's plan.png, faulted in ahead on another thread. A page's first touch is the
 // kernel clearing it, and on a virtual machine the host backing it too: a 2000-pixel sheet's 14 MB took
-// 25-60 ms of the picture's writing on the benchmark machine, the longest writer on small maps, while the
+// 5-47 ms of the picture's writing on the benchmark machine, the longest writer on small maps, while the
 // second core idled through start-up. Made before the raster is read; the picture takes the block once.
 class PreparedPictureMemory {
   public:
@@ -26,7 +26,6 @@ class PreparedPictureMemory {
 
   private:
     void* block_ = nullptr;
-    std::size_t bytes_ = 0;
     std::thread thread_;
 };
 

@@ -74,9 +74,11 @@ std::string formatDuration(double seconds) {
         return "-" + formatDuration(-seconds);
     if (seconds < 60.0)
         return formatQuantity(seconds, seconds < 10.0 ? 2 : 3) + " s";
+    // Minutes still tell robots apart over a few days; over weeks they are noise.
+    constexpr long long kDaysWithMinutes = 10;
     // Rounded to the last unit shown, not cut: 1 h 23 min 57 s reads 1 h 24 min.
     constexpr double kMinutesFrom = 3600.0;
-    constexpr double kHoursFrom = 10 * 86400.0 - 1800.0; // from there on, days and hours only
+    constexpr double kHoursFrom = kDaysWithMinutes * 86400.0 - 1800.0; // days and hours only from there
     const double shownUnit = seconds >= kHoursFrom ? 3600.0 : seconds >= kMinutesFrom - 30.0 ? 60.0 : 1.0;
     const auto total =
         static_cast<long long>(std::llround(seconds / shownUnit)) * static_cast<long long>(shownUnit);
@@ -85,8 +87,6 @@ std::string formatDuration(double seconds) {
     const long long minutes = total / 60 % 60;
     const long long rest = total % 60;
     const auto part = [](long long amount, const char* unit) { return std::to_string(amount) + " " + unit; };
-    // Minutes still tell robots apart over a few days; over weeks they are noise.
-    constexpr long long kDaysWithMinutes = 10;
     if (days >= kDaysWithMinutes)
         return part(days, "d") + (hours > 0 ? " " + part(hours, "h") : "");
     if (days > 0)
