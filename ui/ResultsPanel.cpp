@@ -380,12 +380,18 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
     int largest = 0;
     std::size_t overFlightTime = 0;
     double lastDone = 0.0;
+    // A rover's parts without turnarounds take what its path takes: the makespan says when it is done.
+    bool doneLater = false;
     for (std::size_t robot = 0; robot < sizes.size(); ++robot) {
         largest = std::max(largest, sizes[robot].items);
         overFlightTime += sizes[robot].partsOverFlightTime;
         lastDone = std::max(lastDone, sizes[robot].fieldSeconds);
-        if (sizes[robot].parts > 1)
+        if (sizes[robot].parts > 1) {
             split << tr("%1 in %2").arg(robotName(names, static_cast<int>(robot))).arg(sizes[robot].parts);
+            const io::VehicleSettings& vehicle =
+                robot < vehicles.size() ? vehicles[robot] : io::VehicleSettings{};
+            doneLater = doneLater || io::isAircraft(vehicle.type) || vehicle.turnaroundSeconds > 0.0;
+        }
     }
     const bool oneLimit =
         std::all_of(vehicles.begin(), vehicles.end(), [&](const io::VehicleSettings& vehicle) {
@@ -410,9 +416,11 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
     const bool timed = std::any_of(vehicles.begin(), vehicles.end(), [](const io::VehicleSettings& vehicle) {
         return vehicle.flightTimeSeconds > 0.0;
     });
-    // Split missions end later than the plan's makespan: the trips to each part and the turnarounds.
-    const QString done =
-        lastDone > 0.0 ? tr("; all done in the field after %1").arg(formatDuration(lastDone)) : QString();
+    // An aircraft's split missions end later than the plan's makespan: the trips to each part and the
+    // turnarounds.
+    const QString done = doneLater && lastDone > 0.0
+                             ? tr("; all done in the field after %1").arg(formatDuration(lastDone))
+                             : QString();
     return tr("%1 above the item limit%2%3, in parts: %4")
                .arg(robots, limit.isEmpty() ? QString() : tr(" (%1)").arg(vehicles.front().maxWaypoints),
                     timed ? tr(" or flight time") : QString(), split.join(QStringLiteral(", "))) +

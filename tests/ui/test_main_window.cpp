@@ -209,11 +209,22 @@ class TestMainWindow : public QObject {
             ui::ResultsPanel::waypointFilesText({{380, 1}, {380, 1}, {90, 6, 1900.0, 2}}, vehicles, names);
         QCOMPARE(flights, QStringLiteral("1 robot above the item limit or flight time, in parts: south in 6; "
                                          "2 parts longer than a flight (out of its reach)"));
+        // A rover's parts take what its path takes: the makespan already says when it is done.
+        const QString roverDone = ui::ResultsPanel::waypointFilesText(
+            {{380, 1, 0.0, 0, 900.0}, {380, 1}, {90, 6, 1900.0, 2, 9000.0}}, vehicles, names);
+        QVERIFY2(roverDone.endsWith(QStringLiteral("(out of its reach)")), qPrintable(roverDone));
         // When the last robot is done: its flights and the turnarounds between them.
+        vehicles[2].turnaroundSeconds = 180.0;
         const QString done = ui::ResultsPanel::waypointFilesText(
             {{380, 1, 0.0, 0, 900.0}, {380, 1}, {90, 6, 1900.0, 2, 9000.0}}, vehicles, names);
         QVERIFY2(done.endsWith(QStringLiteral("(out of its reach); all done in the field after 2 h 30 min")),
                  qPrintable(done));
+        vehicles[2].turnaroundSeconds = 0.0;
+        vehicles[2].type = io::VehicleType::Multirotor;
+        const QString flown = ui::ResultsPanel::waypointFilesText(
+            {{380, 1, 0.0, 0, 900.0}, {380, 1}, {90, 6, 1900.0, 2, 9000.0}}, vehicles, names);
+        QVERIFY2(flown.endsWith(QStringLiteral("; all done in the field after 2 h 30 min")),
+                 qPrintable(flown));
     }
 
     void robotLabelStepKeepsTheNumbersThatFit() {
