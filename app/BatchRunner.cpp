@@ -234,6 +234,8 @@ PlanningProblem BatchRunner::prepareProblem() {
         mission_.classes = std::move(opening.table);
     }
     classes_ = valueOrBadInput(io::missionClasses(mission_, raster_, names));
+    if (auto gap = io::presetGapWarning(mission_, raster_))
+        pendingWarnings_.push_back(std::move(*gap));
     if (options_.fieldOfViewScale)
         scaleFieldsOfView(*options_.fieldOfViewScale);
     // The batch contract takes --start in the raster file's CRS; mission files keep planning-CRS units.

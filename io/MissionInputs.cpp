@@ -7,6 +7,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/AreaOfInterest.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/internal/ClassTablePresets.hpp"
 
 #include <cmath>
 
@@ -61,13 +62,80 @@ Result<LoadedRaster> loadMissionRaster(const Mission& mission, const std::string
     return raster;
 }
 
+namespace {
+
+// The raster's classes that neither the mission's own rows nor its preset list, and their pixels.
+struct UnlistedClasses {
+    std::vector<std::int32_t> values;
+    std::int64_t pixels = 0;
+    std::int64_t allPixels = 0;
+};
+
+UnlistedClasses unlistedClasses(const Mission& mission, const ClassTable& preset,
+                                const LoadedRaster& raster) {
+    UnlistedClasses unlisted;
+    for (const auto& [value, count] : raster.classPixelCounts) {
+        unlisted.allPixels += count;
+        if (mission.classes.find(value) == nullptr && preset.find(value) == nullptr) {
+            unlisted.values.push_back(value);
+            unlisted.pixels += count;
+        }
+    }
+    return unlisted;
+}
+
+// "1, 2, 3 and 4 more": the first few values.
+std::string someValues(const std::vector<std::int32_t>& values) {
+    constexpr std::size_t shown = 8;
+    std::string text;
+    for (std::size_t i = 0; i < values.size() && i < shown; ++i)
+        text += (i == 0 ? "" : ", ") + std::to_string(values[i]);
+    if (values.size() > shown)
+        text += " and " + std::to_string(values.size() - shown) + " more";
+    return text;
+}
+
+} // namespace
+
+std::optional<std::string> presetGapWarning(const Mission& mission, const LoadedRaster& raster) {
+    if (mission.preset.empty())
+        return std::nullopt;
+    auto preset = presetClassTable(mission.preset);
+    if (!preset)
+        return std::nullopt;
+    const UnlistedClasses unlisted = unlistedClasses(mission, preset.value(), raster);
+    // None listed is refused (missionClasses), not warned about.
+    if (unlisted.values.empty() || unlisted.allPixels == 0 ||
+        unlisted.values.size() == raster.classPixelCounts.size())
+        return std::nullopt;
+    const double share = static_cast<double>(unlisted.pixels) / static_cast<double>(unlisted.allPixels);
+    const LandCoverClass generic = internal::genericClass(unlisted.values.front());
+    return "preset " + mission.preset + " has no row for " +
+           (unlisted.values.size() == 1 ? "class " : "classes ") + someValues(unlisted.values) + " (" +
+           formatPercent(share) + " of the map): planned as passable at " +
+           formatQuantity(generic.speedMetresPerSecond) + " m/s with a " +
+           formatQuantity(generic.fieldOfViewMetres) +
+           " m field of view; give them rows (--classes), or choose the preset of this raster's product";
+}
+
 Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& raster,
                                   const FieldNamer& names) {
     const std::string where = names(MissionField::of(Part::Classes));
     if (!mission.preset.empty()) {
         // Asking for the preset alone first turns an unknown name into an error instead of a default table.
-        if (auto preset = presetClassTable(mission.preset); !preset)
+        auto preset = presetClassTable(mission.preset);
+        if (!preset)
             return Result<ClassTable>::failure(where + ": " + preset.error());
+        // A preset that knows none of the map's classes is another product's: its plan would mean nothing.
+        const UnlistedClasses unlisted = unlistedClasses(mission, preset.value(), raster);
+        if (!unlisted.values.empty() && unlisted.values.size() == raster.classPixelCounts.size())
+            return Result<ClassTable>::failure(
+                where + ": preset " + mission.preset + " has a row for none of the raster's " +
+                (unlisted.values.size() == 1 ? "class ("
+                                             : std::to_string(unlisted.values.size()) + " classes (") +
+                someValues(unlisted.values) +
+                "): it is another product's legend; choose this raster's (mcpp --help lists the presets), "
+                "or give a class table");
     }
     ClassTable table = missionClassTable(mission.classes, mission.preset, raster);
     if (const auto problem = table.validate())
@@ -118,7 +186,7 @@ std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& pro
     if (problem.kind == Kind::StartOnObstacle)
         advice += "; move it onto passable land, or let the planner start the robot from the nearest free "
                   "cell (" +
-                  names(MissionField::parameter("snap_starts_to_free_cells")) + " = true)";
+                  names(MissionField::parameter("snap_starts_to_free_cells")) + "=true)";
     return advice;
 }
 

@@ -50,6 +50,10 @@ using FieldNamer = std::function<std::string(const MissionField&)>;
 [[nodiscard]] Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& raster,
                                                 const FieldNamer& names);
 
+// Where the mission's preset lists only some of the raster's classes (and its own rows not the rest): a
+// warning naming those classes and their share of the map, which are planned with generic rows.
+[[nodiscard]] std::optional<std::string> presetGapWarning(const Mission& mission, const LoadedRaster& raster);
+
 // What a start without a start_crs is measured in: the planning CRS's own units (mission files; feet for
 // a CRS in feet, the UTM zone's metres for a warped geographic raster), or the raster file's own CRS
 // (batch --start, longitude and latitude for a geographic raster).

@@ -140,6 +140,12 @@ std::vector<BadInputCase> makeCases() {
          "no-such-preset",
          Gui::None,
          {}},
+        {"preset of another product",
+         QStringList{"--raster", "{dir}/good.tif", "--preset", "corine", "--start", kStart, "--out", "{out}"},
+         2,
+         "preset corine has a row for none of the raster's 3 classes (1, 2, 3)",
+         Gui::None,
+         {}},
         // Starts.
         {"start outside the raster",
          onRaster("good.tif", "good.csv", {"--start", "0,0"}),
@@ -157,7 +163,7 @@ std::vector<BadInputCase> makeCases() {
          onRaster("good.tif", "good.csv", {"--start", kOnWater}),
          2,
          "or let the planner start the robot from the nearest free cell (--param "
-         "snap_starts_to_free_cells = true)",
+         "snap_starts_to_free_cells=true)",
          Gui::None,
          {}},
         {"start in degrees with latitude first",

@@ -1,6 +1,7 @@
 // Presets, class tables made for a raster, reconciliation, and the class table CSV.
 
 #include "io/ClassTableSources.hpp"
+#include "io/MissionInputs.hpp"
 #include "tests/support/TestData.hpp"
 
 #include <QTemporaryDir>
@@ -211,6 +212,36 @@ class ClassTablesTest : public QObject {
                  preset("nlcd-simplified").find(2)->speedMetresPerSecond);
         QCOMPARE(missionClassTable(own, "", nlcd), own);
         QCOMPARE(missionClassTable({}, "", nlcd), openingClassTable(nlcd).table);
+    }
+
+    // A preset of another product is refused; one that lacks some classes is planned with a warning that
+    // names them and their share; the mission's own rows fill gaps.
+    void presetOfAnotherProductIsCaught() {
+        const LoadedRaster nlcd = load("landcover/nlcd.tif"); // the eight simplified groups, 1-8
+        Mission mission;
+        mission.preset = "corine";
+        const auto names = [](const MissionField&) { return std::string("--preset"); };
+        const auto refused = missionClasses(mission, nlcd, names);
+        QVERIFY(!refused.ok());
+        QVERIFY2(
+            refused.error().find("preset corine has a row for none of the raster's 8 classes (1, 2, 3, 4, 5, "
+                                 "6, 7, 8)") != std::string::npos,
+            refused.error().c_str());
+        QVERIFY(!presetGapWarning(mission, nlcd)); // refused, not warned about
+
+        mission.preset = "paper"; // values 1-6
+        QVERIFY(missionClasses(mission, nlcd, names).ok());
+        const auto gap = presetGapWarning(mission, nlcd);
+        QVERIFY(gap.has_value());
+        QVERIFY2(gap->find("preset paper has no row for classes 7, 8 (") != std::string::npos, gap->c_str());
+        QVERIFY2(gap->find("planned as passable at 1 m/s with a 10 m field of view") != std::string::npos,
+                 gap->c_str());
+        mission.classes.set({7, "Shrub", 0x556b2f, 2.0, 20.0, true});
+        mission.classes.set({8, "Wetland", 0x4682b4, 0.5, 20.0, true});
+        QVERIFY(!presetGapWarning(mission, nlcd));
+        mission.preset = "nlcd-simplified";
+        mission.classes = ClassTable{};
+        QVERIFY(!presetGapWarning(mission, nlcd));
     }
 
     void unknownClassesGetTheGenericRow() {
