@@ -593,14 +593,23 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
         warn("comparison.png not written: " + error.toStdString());
     if (options_.quiet)
         return;
-    output_ << "mcpp: compared " << rows.size() << " planners on " << mission_.robots.size() << " robots\n";
+    const auto skipped = std::count_if(rows.begin(), rows.end(), [](const io::ComparisonRow& row) {
+        return row.outcome == io::ComparisonRow::Outcome::Skipped;
+    });
+    output_ << "mcpp: compared " << rows.size() - static_cast<std::size_t>(skipped) << " planners on "
+            << mission_.robots.size() << " robots";
+    if (skipped > 0)
+        output_ << ", " << skipped << " skipped";
+    output_ << '\n';
     for (const io::ComparisonRow& row : rows) {
         output_ << "mcpp:   " << row.planner << ": ";
         if (row.outcome != io::ComparisonRow::Outcome::Planned) {
             output_ << io::outcomeName(row.outcome) << " (" << row.message << ")\n";
             continue;
         }
-        output_ << "ratio " << formatNumber(row.metrics.ratio, 3) << ", makespan "
+        // The covered share first: a short makespan of a plan that leaves ground uncovered is no win.
+        output_ << "covered " << formatPercent(row.metrics.coveredFraction) << ", ratio "
+                << formatNumber(row.metrics.ratio, 3) << ", makespan "
                 << formatDuration(row.metrics.makespanSeconds) << ", " << row.metrics.totalTurns()
                 << " turns, planned in " << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
     }

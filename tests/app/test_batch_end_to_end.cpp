@@ -176,6 +176,12 @@ void TestBatchEndToEnd::comparePlannersOnOneMission() {
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
     QVERIFY2(run.standardError.contains(QStringLiteral("planner 2 of 4: darp")),
              qPrintable(run.standardError));
+    // The summary counts the planners that ran and gives each one's covered share first.
+    QVERIFY2(
+        run.standardOutput.contains(QStringLiteral("mcpp: compared 3 planners on 3 robots, 1 skipped\n")),
+        qPrintable(run.standardOutput));
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp:   darp: covered ")),
+             qPrintable(run.standardOutput));
     const QDir folder(out);
     const auto comparison = readJsonObject(folder.filePath("comparison.json"));
     const auto planners = comparison.value("planners").toArray();
