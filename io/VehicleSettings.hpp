@@ -58,6 +58,12 @@ struct VehicleOverrides {
     return type != VehicleType::Rover;
 }
 
+// Whether a mission split into parts ends later than its path takes: an aircraft flies to each part and
+// back, and turnarounds wait between parts. A rover's parts without turnarounds end with its path.
+[[nodiscard]] inline bool splitMissionEndsLater(const VehicleSettings& vehicle) {
+    return isAircraft(vehicle.type) || vehicle.turnaroundSeconds > 0.0;
+}
+
 // Mission items every part of a mission holds besides its waypoints and speed changes: the home position
 // and the speed the vehicle starts with, and for an aircraft its takeoff and its return to launch.
 [[nodiscard]] constexpr int itemsBesideWaypoints(VehicleType type) {

@@ -644,9 +644,7 @@ std::string fieldTimeNote(const ExportContext& context) {
         if (mission.parts.empty()) // a robot without a path has no files
             continue;
         const VehicleSettings& vehicle = context.vehicle(robot);
-        // A rover's parts without turnarounds take what its path takes: nothing beyond the makespan to say.
-        split = split ||
-                (mission.parts.size() > 1 && (isAircraft(vehicle.type) || vehicle.turnaroundSeconds > 0.0));
+        split = split || (mission.parts.size() > 1 && splitMissionEndsLater(vehicle));
         const MissionFlights flights = missionFlights(mission, vehicle);
         if (!(flights.fieldSeconds > 0.0))
             return {};

@@ -380,17 +380,14 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
     int largest = 0;
     std::size_t overFlightTime = 0;
     double lastDone = 0.0;
-    // A rover's parts without turnarounds take what its path takes: the makespan says when it is done.
-    bool doneLater = false;
+    bool doneLater = false; // else the makespan already says when the robots are done
     for (std::size_t robot = 0; robot < sizes.size(); ++robot) {
         largest = std::max(largest, sizes[robot].items);
         overFlightTime += sizes[robot].partsOverFlightTime;
         lastDone = std::max(lastDone, sizes[robot].fieldSeconds);
         if (sizes[robot].parts > 1) {
             split << tr("%1 in %2").arg(robotName(names, static_cast<int>(robot))).arg(sizes[robot].parts);
-            const io::VehicleSettings& vehicle =
-                robot < vehicles.size() ? vehicles[robot] : io::VehicleSettings{};
-            doneLater = doneLater || io::isAircraft(vehicle.type) || vehicle.turnaroundSeconds > 0.0;
+            doneLater = doneLater || (robot < vehicles.size() && io::splitMissionEndsLater(vehicles[robot]));
         }
     }
     const bool oneLimit =
