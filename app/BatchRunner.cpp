@@ -118,6 +118,7 @@ void BatchRunner::execute() {
     auto started = std::chrono::steady_clock::now();
     loadRaster();
     processMilliseconds_.emplace_back("read_raster", millisecondsSince(started));
+    prepareMission();
     PlanningProblem problem = prepareProblem();
     checkOutputFolder();
     for (const auto& warning : pendingWarnings_)
@@ -225,7 +226,7 @@ void BatchRunner::loadRaster() {
     pendingWarnings_.insert(pendingWarnings_.end(), raster_.warnings.begin(), raster_.warnings.end());
 }
 
-PlanningProblem BatchRunner::prepareProblem() {
+void BatchRunner::prepareMission() {
     const io::FieldNamer names = fieldNamer();
     if (mission_.classes.empty() && mission_.preset.empty()) {
         // Neither rows nor a preset: the table the raster's product or legend gives, read once and said.
@@ -241,15 +242,19 @@ PlanningProblem BatchRunner::prepareProblem() {
     // The batch contract takes --start in the raster file's CRS; mission files keep planning-CRS units.
     const auto units =
         options_.missionFromFlags() ? io::StartUnits::RasterFileCrs : io::StartUnits::PlanningCrs;
-    auto starts = valueOrBadInput(io::missionStarts(mission_, raster_, units, names));
+    starts_ = valueOrBadInput(io::missionStarts(mission_, raster_, units, names));
+    chargers_ = valueOrBadInput(io::missionChargers(mission_, raster_, units, names));
+}
+
+PlanningProblem BatchRunner::prepareProblem() {
     io::PreparedProblem prepared = valueOrBadInput(io::planningProblem(
-        raster_, classes_, mission_.missingClassesAsObstacles, std::move(starts), mission_.planner, names));
+        raster_, classes_, mission_.missingClassesAsObstacles, starts_, mission_.planner, fieldNamer()));
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
     io::applyRobotSettings(mission_, prepared.problem);
     for (const PlanIssue& issue : prepared.problem.notes) // warnings come with the plan's
         if (issue.severity == IssueSeverity::Information)
             note(issue.message);
-    prepared.problem.chargers = valueOrBadInput(io::missionChargers(mission_, raster_, units, names));
+    prepared.problem.chargers = chargers_;
     return std::move(prepared.problem);
 }
 
@@ -490,6 +495,19 @@ void BatchRunner::removeStaleRobotFiles(
     }
 }
 
+bool BatchRunner::someComparedPlannerSnapsStarts() const {
+    const auto snaps = [&](const std::string& name) {
+        try {
+            const ParameterValues values =
+                resolveParameters(findPlannerDescription(name)->parameters, comparedPlanner(name).parameters);
+            return values.has("snap_starts_to_free_cells") && values.boolean("snap_starts_to_free_cells");
+        } catch (const std::exception&) {
+            return false; // a bad value is said as that planner's failure when its turn comes
+        }
+    };
+    return std::any_of(options_.comparePlanners.begin(), options_.comparePlanners.end(), snaps);
+}
+
 PlannerChoice BatchRunner::comparedPlanner(const std::string& name) const {
     PlannerChoice choice = switchPlanner(mission_.planner, name);
     const auto planner = findPlannerDescription(name);
@@ -521,7 +539,17 @@ void BatchRunner::executeComparison() {
     auto started = std::chrono::steady_clock::now();
     loadRaster();
     const double readMilliseconds = millisecondsSince(started);
+    // Faults of the mission itself (classes, starts) are said once, not once for each planner.
+    prepareMission();
+    if (!someComparedPlannerSnapsStarts())
+        if (const io::Status starts =
+                io::checkStarts(raster_, classes_, mission_.missingClassesAsObstacles, starts_, fieldNamer());
+            !starts)
+            badInput(starts.error());
     checkOutputFolder();
+    for (const auto& warning : pendingWarnings_)
+        warn(warning);
+    pendingWarnings_.clear();
     const std::size_t robots = mission_.robots.size();
     std::vector<io::ComparisonRow> rows;
     std::vector<std::optional<Plan>> plans;

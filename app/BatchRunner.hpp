@@ -38,7 +38,12 @@ class BatchRunner {
     void applyOverrides();
     void addEventFlags();
     void loadRaster();
+    // The mission's part of the problem, the same whatever the planner: classes_, starts_ and chargers_.
+    void prepareMission();
+    // The problem for mission_.planner, from the mission's part.
     PlanningProblem prepareProblem();
+    // Whether any planner of --compare moves starts off obstacles itself (snap_starts_to_free_cells).
+    [[nodiscard]] bool someComparedPlannerSnapsStarts() const;
     void checkOutputFolder() const;
     Plan runPlanner(const PlanningProblem& problem);
     // Every batch output on workerThreads() threads (set from --threads), report.json last.
@@ -70,6 +75,8 @@ class BatchRunner {
     io::Mission mission_;
     io::LoadedRaster raster_;
     ClassTable classes_;
+    std::vector<MapPoint> starts_; // planning frame
+    std::vector<std::optional<MapPoint>> chargers_;
     std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
     std::string fieldTimeNote_;                // with the summary, when missions are written in parts
     std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan

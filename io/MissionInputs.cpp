@@ -165,29 +165,61 @@ bool onTheMap(const ClassGrid& grid, MapPoint point) {
     return pixel && !grid.isOutside(pixel->column, pixel->row);
 }
 
-// What helps with a start the planner cannot use: where it lies in longitude and latitude (what a user of a
-// raster in degrees typed, not the UTM metres it is planned in), a hint when latitude and longitude look
-// swapped, and the option that moves starts off obstacles.
+// A start as messages name it: its planning-frame coordinates, and its longitude and latitude where the
+// raster is georeferenced (what a user who typed degrees recognises; metres of UTM mean little to most).
+std::string startName(const LoadedRaster& raster, MapPoint start) {
+    const std::string planning = describePoint(start);
+    if (!std::isfinite(start.x) || !std::isfinite(start.y))
+        return planning;
+    const auto lonLat = raster.georeference.toWgs84(start);
+    if (!lonLat)
+        return planning;
+    return planning.substr(0, planning.size() - 1) + "; longitude " +
+           formatQuantity(lonLat.value().longitude, 9) + ", latitude " +
+           formatQuantity(lonLat.value().latitude, 9) + ")";
+}
+
+// What helps with a start the planner cannot use: a hint when longitude and latitude look swapped, and the
+// option that moves starts off obstacles.
 std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& problem, MapPoint start,
                         const FieldNamer& names) {
     using Kind = PlanningError::Kind;
     std::string advice;
-    if (raster.warpedFromGeographic && std::isfinite(start.x) && std::isfinite(start.y)) {
+    if (problem.kind == Kind::StartOutsideArea && std::isfinite(start.x) && std::isfinite(start.y))
         if (const auto lonLat = raster.georeference.toWgs84(start); lonLat) {
             const LonLat& at = lonLat.value();
-            advice += " (longitude " + formatQuantity(at.longitude, 9) + ", latitude " +
-                      formatQuantity(at.latitude, 9) + ")";
             const auto swapped = raster.georeference.fromCrs("EPSG:4326", {at.latitude, at.longitude});
-            if (problem.kind == Kind::StartOutsideArea && swapped && onTheMap(raster.grid, swapped.value()))
+            if (swapped && onTheMap(raster.grid, swapped.value()))
                 advice += "; longitude and latitude the other way round lie on the map: a start in degrees "
                           "is longitude first";
         }
-    }
     if (problem.kind == Kind::StartOnObstacle)
         advice += "; move it onto passable land, or let the planner start the robot from the nearest free "
                   "cell (" +
                   names(MissionField::parameter("snap_starts_to_free_cells")) + "=true)";
     return advice;
+}
+
+// The raster's classes the table lacks refused, or made obstacles where the mission says so.
+Status reconcileAsAsked(LoadedRaster& raster, const ClassTable& classes, bool missingClassesAsObstacles,
+                        const FieldNamer& names) {
+    if (Status status = reconcileRasterWithTable(raster, classes, missingClassesAsObstacles); !status)
+        return Status::failure(status.error() + "; " + names(MissionField::of(Part::MissingClassesOption)) +
+                               " does the latter");
+    return {};
+}
+
+// The first start the planner could not use, on a raster already reconciled with the class table.
+Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& classes,
+                         const std::vector<MapPoint>& starts, const FieldNamer& names) {
+    for (std::size_t robot = 0; robot < starts.size(); ++robot) {
+        const MapPoint start = starts[robot];
+        if (const auto problem =
+                startPointProblem(reconciled.grid, classes, start, startName(reconciled, start)))
+            return Status::failure(names(MissionField::start(static_cast<int>(robot))) + ": " +
+                                   problem->detail + startAdvice(reconciled, *problem, start, names));
+    }
+    return {};
 }
 
 } // namespace
@@ -250,9 +282,8 @@ Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassT
         return Prepared::failure(planner.error());
     LoadedRaster reconciled = raster;
     const std::size_t warningsBefore = reconciled.warnings.size();
-    if (Status status = reconcileRasterWithTable(reconciled, classes, missingClassesAsObstacles); !status)
-        return Prepared::failure(status.error() + "; " + names(MissionField::of(Part::MissingClassesOption)) +
-                                 " does the latter");
+    if (Status status = reconcileAsAsked(reconciled, classes, missingClassesAsObstacles, names); !status)
+        return Prepared::failure(status.error());
     PreparedProblem prepared;
     prepared.warnings.assign(reconciled.warnings.begin() + static_cast<std::ptrdiff_t>(warningsBefore),
                              reconciled.warnings.end());
@@ -261,16 +292,22 @@ Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassT
     // With snapping the planner moves bad starts itself and warns; without, say exactly what is wrong here.
     const bool snap =
         parameters.has("snap_starts_to_free_cells") && parameters.boolean("snap_starts_to_free_cells");
-    for (std::size_t robot = 0; robot < starts.size() && !snap; ++robot)
-        if (const auto problem = startPointProblem(reconciled.grid, classes, starts[robot]))
-            return Prepared::failure(names(MissionField::start(static_cast<int>(robot))) + ": " +
-                                     problem->detail +
-                                     startAdvice(reconciled, *problem, starts[robot], names));
+    if (!snap)
+        if (Status startsUsable = firstStartProblem(reconciled, classes, starts, names); !startsUsable)
+            return Prepared::failure(startsUsable.error());
     prepared.problem.grid = std::move(reconciled.grid);
     prepared.problem.classes = classes;
     prepared.problem.starts = std::move(starts);
     prepared.problem.planner = choice;
     return prepared;
+}
+
+Status checkStarts(const LoadedRaster& raster, const ClassTable& classes, bool missingClassesAsObstacles,
+                   const std::vector<MapPoint>& starts, const FieldNamer& names) {
+    LoadedRaster reconciled = raster;
+    if (Status status = reconcileAsAsked(reconciled, classes, missingClassesAsObstacles, names); !status)
+        return status;
+    return firstStartProblem(reconciled, classes, starts, names);
 }
 
 } // namespace mcpp::io

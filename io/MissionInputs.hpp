@@ -72,6 +72,12 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 // The planner's name is known and every parameter is one it declares, with a value that fits.
 [[nodiscard]] Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names);
 
+// Every start on a pixel robots can start from, judged as planningProblem judges them when the planner is
+// not to move bad starts itself: for checking a mission once before several planners run on it.
+[[nodiscard]] Status checkStarts(const LoadedRaster& raster, const ClassTable& classes,
+                                 bool missingClassesAsObstacles, const std::vector<MapPoint>& starts,
+                                 const FieldNamer& names);
+
 struct PreparedProblem {
     PlanningProblem problem;
     std::vector<std::string> warnings; // e.g. classes without a row treated as obstacles

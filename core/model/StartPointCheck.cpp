@@ -1,5 +1,8 @@
 #include "core/model/StartPointCheck.hpp"
 
+#include "core/model/HumanUnits.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -16,39 +19,61 @@ std::string fixed(double value) {
     return text.str();
 }
 
+// To the centimetre, trailing zeros dropped: "314617.96", "0".
+std::string centimetres(double metres) {
+    std::string text = fixed(metres);
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.')
+        text.pop_back();
+    return text == "-0" ? "0" : text;
+}
+
+// "9.42 km north-east of it": how far outside the raster's extent a point lies, and which way
+// (planning frames are north up).
+std::string beyondTheRaster(const ClassGrid& grid, MapPoint point) {
+    const double west = grid.originX - point.x;
+    const double east = point.x - grid.maxX();
+    const double north = point.y - grid.originY;
+    const double south = grid.minY() - point.y;
+    const double across = std::max({west, east, 0.0});
+    const double along = std::max({north, south, 0.0});
+    if (across == 0.0 && along == 0.0) // on the far edges, which belong to no pixel
+        return "on its far edge";
+    std::string direction = north > 0 ? "north" : south > 0 ? "south" : "";
+    if (west > 0 || east > 0)
+        direction += (direction.empty() ? "" : "-") + std::string(west > 0 ? "west" : "east");
+    return formatDistance(std::hypot(across, along)) + " " + direction + " of it";
+}
+
 } // namespace
 
 std::string describePoint(MapPoint point) {
-    std::ostringstream text;
-    text.precision(12);
-    text << "(" << point.x << ", " << point.y << ")";
-    return text.str();
+    return "(" + centimetres(point.x) + ", " + centimetres(point.y) + ")";
 }
 
 std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const ClassTable& classes,
-                                                   MapPoint point) {
+                                                   MapPoint point, const std::string& pointName) {
+    const std::string named = pointName.empty() ? describePoint(point) : pointName;
     if (!std::isfinite(point.x) || !std::isfinite(point.y))
-        return StartPointProblem{Kind::InvalidParameter, describePoint(point) + " is not a number"};
+        return StartPointProblem{Kind::InvalidParameter, named + " is not a number"};
     const auto pixel = grid.pixelAt(point);
     if (!pixel)
         return StartPointProblem{Kind::StartOutsideArea,
-                                 describePoint(point) + " is outside the raster (x " + fixed(grid.originX) +
-                                     " to " + fixed(grid.maxX()) + ", y " + fixed(grid.minY()) + " to " +
-                                     fixed(grid.originY) + ")"};
+                                 named + " is outside the raster, " + beyondTheRaster(grid, point) + " (x " +
+                                     fixed(grid.originX) + " to " + fixed(grid.maxX()) + ", y " +
+                                     fixed(grid.minY()) + " to " + fixed(grid.originY) + ")"};
     if (grid.isOutside(pixel->column, pixel->row))
         return StartPointProblem{
             Kind::StartOutsideArea,
-            describePoint(point) +
-                " is outside the task area (a nodata pixel, or outside the area of interest)"};
+            named + " is outside the task area (a nodata pixel, or outside the area of interest)"};
     const std::int32_t value = grid.valueAt(pixel->column, pixel->row);
     const LandCoverClass* landCover = classes.find(value);
     if (landCover == nullptr)
-        return StartPointProblem{Kind::InvalidClassTable, describePoint(point) + " is on class " +
-                                                              std::to_string(value) +
+        return StartPointProblem{Kind::InvalidClassTable, named + " is on class " + std::to_string(value) +
                                                               ", which has no row in the class table"};
     if (!landCover->isTraversable()) {
         const std::string name = landCover->name.empty() ? std::string() : " (" + landCover->name + ")";
-        return StartPointProblem{Kind::StartOnObstacle, describePoint(point) + " is on an obstacle: class " +
+        return StartPointProblem{Kind::StartOnObstacle, named + " is on an obstacle: class " +
                                                             std::to_string(value) + name +
                                                             ", which robots cannot cross"};
     }

@@ -17,10 +17,12 @@ struct StartPointProblem {
 };
 
 // The one rule every caller (planners, batch mode, the window) applies to a start point: it must be a number,
-// on the raster, on a pixel inside the task area, of a class the table has and robots can cross.
+// on the raster, on a pixel inside the task area, of a class the table has and robots can cross. The messages
+// name the point `pointName` when given (the caller may know it in degrees too), else by describePoint.
 [[nodiscard]] std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid,
-                                                                 const ClassTable& classes, MapPoint point);
-// "(512300.25, 4120400.5)" with the precision the messages use.
+                                                                 const ClassTable& classes, MapPoint point,
+                                                                 const std::string& pointName = {});
+// "(512300.25, 4120400.5)": to the centimetre, as the messages give planning-frame points.
 [[nodiscard]] std::string describePoint(MapPoint point);
 
 } // namespace mcpp

@@ -255,6 +255,19 @@ void TestBatchEndToEnd::comparePlannersOnOneMission() {
         runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "darp", "--param",
                  "convergence_tolerance=0.9", "--out", scratch_.filePath("compare-none")});
     QCOMPARE(noneCould.exitCode, 2);
+    // A start off the map is the mission's fault whatever the planner: said once, where the user can find
+    // it (how far off and which way, and in degrees), before any planner runs.
+    const auto offTheMap =
+        runMcpp(syntheticFlags() + QStringList{"--start", "431040,5301040", "--start", "431100,5299000",
+                                               "--compare", "mcpp-mlct,darp", "--out", out + "-off"});
+    QCOMPARE(offTheMap.exitCode, 2);
+    QCOMPARE(offTheMap.standardError.count(QStringLiteral("outside the raster")), 1);
+    QVERIFY2(offTheMap.standardError.contains(QStringLiteral("--start 2: (431100, 5299000; longitude ")),
+             qPrintable(offTheMap.standardError));
+    QVERIFY2(offTheMap.standardError.contains(QStringLiteral("m south of it")),
+             qPrintable(offTheMap.standardError));
+    QVERIFY(!offTheMap.standardError.contains(QStringLiteral("planner 1 of 2")));
+    QVERIFY(!QFileInfo::exists(out + "-off"));
 
     // Unknown names and --planner beside --compare are refused before any work.
     auto refused =

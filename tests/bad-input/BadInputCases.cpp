@@ -169,13 +169,15 @@ std::vector<BadInputCase> makeCases() {
         {"start in degrees with latitude first",
          onRaster("degrees.tif", "good.csv", {"--start", "45.002,10.002"}),
          2,
-         "(longitude 45.002, latitude 10.002); longitude and latitude the other way round lie on the map",
+         "; longitude 45.002, latitude 10.002) is outside the raster, 5500 km south-east of it (x 578809.82 "
+         "to "
+         "579127.67, y 4983432.32 to 4983885.02); longitude and latitude the other way round lie on the map",
          Gui::None,
          {}},
         {"start in degrees on water, in the degrees typed",
          onRaster("degrees.tif", "good.csv", {"--start", "10.0035,45.0005"}),
          2,
-         "(longitude 10.0035, latitude 45.0005)",
+         "; longitude 10.0035, latitude 45.0005) is on an obstacle",
          Gui::None,
          {}},
         {"start in nodata",
@@ -321,7 +323,8 @@ std::vector<BadInputCase> makeCases() {
         {"mission robot on water is named",
          missionFile("robot-on-water.json"),
          2,
-         "robot-on-water.json: robots[0].start (swimmer): (500355, 5000045) is on an obstacle",
+         "robot-on-water.json: robots[0].start (swimmer): (500355, 5000045; longitude 15.0045163, latitude "
+         "45.1538822) is on an obstacle",
          Gui::None,
          {}},
         // Output folder.

@@ -136,6 +136,23 @@ class MlctPlannerTest : public QObject {
         expectError(problem, PlanningError::Kind::StartOutsideArea, "nodata");
     }
 
+    // The raster spans x 500000 to 500100, y 3999900 to 4000000: how far off and which way, to the
+    // centimetre.
+    void startOutsideSaysHowFarAndWhichWay() {
+        auto problem = lakeProblem();
+        problem.starts[0] = {500150.504, 4000230.25};
+        expectError(problem, PlanningError::Kind::StartOutsideArea,
+                    "robot 0 start (500150.5, 4000230.25) is outside the raster, 236 m north-east of it (x "
+                    "500000.00 to 500100.00, y 3999900.00 to 4000000.00)");
+        problem.starts[0] = {500050.0, 3999000.0};
+        expectError(problem, PlanningError::Kind::StartOutsideArea,
+                    "is outside the raster, 900 m south of it");
+        problem.starts[0] = {499990.0, 3999950.0};
+        expectError(problem, PlanningError::Kind::StartOutsideArea, "is outside the raster, 10 m west of it");
+        problem.starts[0] = {500100.0, 3999950.0}; // the east edge belongs to no pixel
+        expectError(problem, PlanningError::Kind::StartOutsideArea, "is outside the raster, on its far edge");
+    }
+
     void twoRobotsInOneCellAreRefused() {
         auto problem = lakeProblem();
         problem.starts.push_back(problem.starts[0]);
