@@ -488,7 +488,7 @@ std::string CommandLine::usage() {
            "  --start-crs EPSG:N       CRS of the --start and --charger coordinates, e.g. EPSG:4326 for\n"
            "                           longitude,latitude\n"
            "  --charger X,Y            where the robot of the --start before it charges, for planners\n"
-           "                           that fly on batteries (wavefront-battery); robots without one\n"
+           "                           that run on batteries (wavefront-battery); robots without one\n"
            "                           charge at their start\n"
            "  --band N                 raster band holding the classes (default 1)\n"
            "  --area FILE              plan only inside the polygons of this vector file (any format\n"

@@ -528,7 +528,8 @@ std::string sortieFilesNote(const ExportContext& context, int robot, const std::
     const auto name = [&](std::size_t sortie) {
         return std::filesystem::path(missionSortiePath(path, sortie)).filename().string();
     };
-    return context.robotName(robot) + " flies " + std::to_string(sorties->sorties.size()) +
+    const char* const makes = isAircraft(context.vehicle(robot).type) ? " flies " : " makes ";
+    return context.robotName(robot) + makes + std::to_string(sorties->sorties.size()) +
            " sorties from its charger, each also written as a mission of its own (" + name(0) + " to " +
            name(sorties->sorties.size() - 1) + ")";
 }
@@ -546,8 +547,8 @@ std::string partSizes(const AutopilotMission& mission) {
     return sizes + " items, home included";
 }
 
-// "; the parts fly 3 h 2 min in all, the longest 24 min 10 s", for a battery, and with turnarounds "; with
-// 5 min between parts, done after 3 h 47 min"; nothing when a speed is unknown.
+// "; the parts fly 3 h 2 min in all, the longest 24 min 10 s" ("take" for a rover), for a battery, and with
+// turnarounds "; with 5 min between parts, done after 3 h 47 min"; nothing when a speed is unknown.
 std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
     const MissionFlights flights = missionFlights(mission, vehicle);
     if (!(flights.longestSeconds > 0.0))
@@ -557,7 +558,8 @@ std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMissi
                                               " between parts, done after " +
                                               formatDuration(flights.fieldSeconds)
                                         : std::string();
-    return "; the parts fly " + formatDuration(flights.totalSeconds) + " in all, the longest " +
+    const char* const take = isAircraft(vehicle.type) ? "; the parts fly " : "; the parts take ";
+    return take + formatDuration(flights.totalSeconds) + " in all, the longest " +
            formatDuration(flights.longestSeconds) +
            (isAircraft(vehicle.type) ? ", flights to and from the start included" : "") + turnarounds;
 }

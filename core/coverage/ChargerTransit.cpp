@@ -76,7 +76,7 @@ std::vector<Waypoint> ChargerTransit::way(int robot, MapPoint start, int startCe
         throw PlanningError(
             PlanningError::Kind::InvalidParameter,
             who + " needs " + formatDuration(clock.elapsed()) +
-                " to fly from its start to its charger, more than one charge of its battery (" +
+                " to travel from its start to its charger, more than one charge of its battery (" +
                 formatDuration(enduranceSeconds) + ")");
     return points;
 }

@@ -812,6 +812,11 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
     const int sorties =
         readJsonObject(out + "/report.json").value("robots").toArray()[0].toObject().value("sorties").toInt();
     QVERIFY2(sorties > 1, qPrintable(QString::number(sorties)));
+    // The sample's robots are rovers: they make sorties, they do not fly them.
+    const QString said = run.standardOutput + run.standardError;
+    QVERIFY2(said.contains(QStringLiteral("makes %1 sorties from its charger").arg(sorties)),
+             qPrintable(said));
+    QVERIFY2(!said.contains(QStringLiteral(" fl")), qPrintable(said));
     for (int sortie = 1; sortie <= sorties; ++sortie) {
         const auto ends =
             planEnds(readJsonObject(QStringLiteral("%1/robot_1_sortie_%2.plan").arg(out).arg(sortie)));

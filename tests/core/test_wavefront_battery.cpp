@@ -292,7 +292,7 @@ class WavefrontBatteryTest : public QObject {
             << 39.0 << 19.0 << 1000.0 << "same cell as robot 2's start";
         QTest::newRow("on an island") << 2.5 << 2.5 << 1000.0 << "no passable way";
         QTest::newRow("farther than one charge")
-            << 30.5 << 2.5 << 5.0 << "to fly from its start to its charger";
+            << 30.5 << 2.5 << 5.0 << "to travel from its start to its charger";
     }
     void chargersThatCannotBeUsedAreRefused() {
         QFETCH(double, east);

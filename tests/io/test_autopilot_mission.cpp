@@ -548,8 +548,9 @@ class AutopilotMissionTest : public QObject {
                      QStringLiteral("robot_1_part_1.plan to robot_1_part_%1.plan").arg(mission.parts.size())),
                  qPrintable(splitMessages[0]));
         QVERIFY(splitMessages[0].contains(QStringLiteral(".waypoints")));
-        // The parts' flights in all: a rover's, with no trips and no turns, the mission's time.
-        QVERIFY2(splitMessages[0].contains(QStringLiteral("the parts fly %1 in all, the longest")
+        // The parts' times in all: a rover's ("take", it does not fly), with no trips and no turns, the
+        // mission's time.
+        QVERIFY2(splitMessages[0].contains(QStringLiteral("the parts take %1 in all, the longest")
                                                .arg(QString::fromStdString(formatDuration(mission.seconds)))),
                  qPrintable(splitMessages[0]));
         // Each part's own flight time, for a battery.
