@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -78,10 +79,34 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Sets the kernel's high-water mark of resident memory back to what is resident now, so the next
+// peakMemoryMegabytes() is the peak since (Linux; elsewhere it stays the process's peak so far).
+void restartPeakMemory() {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";
+}
+
+// A line of /proc/self/status in megabytes ("VmHWM:", "VmRSS:"); nothing where the system has none.
+std::optional<double> statusMegabytes(const char* field) {
+    std::ifstream status("/proc/self/status");
+    const std::string prefix(field);
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind(prefix, 0) == 0)
+            return std::strtod(line.c_str() + prefix.size(), nullptr) / 1024.0; // given in kB
+    return std::nullopt;
+}
+
+// The high-water mark of resident memory: since restartPeakMemory() where the kernel keeps one.
 double peakMemoryMegabytes() {
+    if (const auto peak = statusMegabytes("VmHWM:"))
+        return *peak;
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+double residentMegabytes() {
+    return statusMegabytes("VmRSS:").value_or(0.0);
 }
 
 template <typename T> T valueOrBadInput(io::Result<T> result) {
@@ -553,6 +578,7 @@ void BatchRunner::executeComparison() {
     const std::size_t robots = mission_.robots.size();
     std::vector<io::ComparisonRow> rows;
     std::vector<std::optional<Plan>> plans;
+    const double residentWithRaster = residentMegabytes();
     for (std::size_t i = 0; i < options_.comparePlanners.size(); ++i) {
         const std::string& name = options_.comparePlanners[i];
         progress_.report("planner " + std::to_string(i + 1) + " of " +
@@ -573,13 +599,18 @@ void BatchRunner::executeComparison() {
             for (const auto& warning : pendingWarnings_)
                 warn(name + ": " + warning);
             pendingWarnings_.clear();
+            // The plans before this one stay for the comparison sheet: its peak is counted above what they
+            // and the heap they freed hold, as if it ran alone on the raster.
+            returnFreedMemory();
+            const double residentBefore = residentMegabytes();
+            restartPeakMemory();
             started = std::chrono::steady_clock::now();
             Plan plan = runPlanner(problem);
             row.planningMilliseconds = millisecondsSince(started);
             processMilliseconds_ = {{"read_raster", readMilliseconds}, {"plan", row.planningMilliseconds}};
             writeOutputs(plan, (fs::path(options_.outputDirectory) / name).string());
             row.metrics = plan.metrics;
-            row.peakMemoryMegabytes = peakMemoryMegabytes();
+            row.peakMemoryMegabytes = peakMemoryMegabytes() - residentBefore + residentWithRaster;
             plans.back() = std::move(plan);
         } catch (const BatchFailure& failure) {
             row.outcome = io::ComparisonRow::Outcome::Failed;

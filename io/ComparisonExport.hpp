@@ -17,7 +17,9 @@ struct ComparisonRow {
     std::string message; // why it failed or was skipped
     PlanMetrics metrics; // when planned
     double planningMilliseconds = 0.0;
-    double peakMemoryMegabytes = 0.0; // the process's peak so far (planners run one after another)
+    // Resident peak while it planned and wrote its outputs, less what the plans before it kept resident:
+    // about its peak in a run of its own (Linux; elsewhere the process's peak so far).
+    double peakMemoryMegabytes = 0.0;
 };
 
 [[nodiscard]] std::string outcomeName(ComparisonRow::Outcome outcome);

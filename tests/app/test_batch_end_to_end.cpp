@@ -222,6 +222,10 @@ void TestBatchEndToEnd::comparePlannersOnOneMission() {
         }
         QCOMPARE(row.value("turns").toInt(), turns);
         QVERIFY(row.value("planning_ms").toDouble() > 0.0);
+        // Each planner's own peak, not the process's so far: a Qt and GDAL process holds tens of megabytes,
+        // and none of these small plans takes gigabytes (under the sanitizers either).
+        const double peak = row.value("peak_memory_mb").toDouble();
+        QVERIFY2(peak > 10.0 && peak < 4000.0, qPrintable(QString::number(peak)));
         QVERIFY(QFileInfo(folder.filePath(name + "/plan.geojson")).size() > 0);
     }
     const QImage sheet(folder.filePath("comparison.png"));
