@@ -19,6 +19,16 @@ class LocalConnectivity {
     [[nodiscard]] bool canRemove(int cell, const std::vector<int>& owner, std::size_t searchLimit);
 
   private:
+    // Searches wider than this look first for a neighbour cut off with fewer cells than this.
+    static constexpr std::size_t smallSideLimit = 32;
+
+    // Whether some neighbour of `cell` in its region (targets_ after the first) lies in a part of fewer
+    // than smallSideLimit cells that `cell` cuts off from all the others. When it does, the search from
+    // the first neighbour cannot reach it either: the answer is "would cut", as that search would give.
+    bool someNeighbourIsCutOff(int cell, const std::vector<int>& owner);
+    // A stamp no cell holds yet.
+    int nextMark();
+
     NeighbourSource neighbours_;
     std::vector<int> stamp_;
     int stampValue_ = 0;
