@@ -242,12 +242,19 @@ void BatchRunner::applyOverrides() {
 
 void BatchRunner::loadRaster() {
     const std::string missionPath = options_.missionFromFlags() ? std::string() : options_.missionPath;
-    auto loaded = io::loadMissionRaster(mission_, missionPath);
+    auto loaded = io::loadMissionRasterAlone(mission_, missionPath);
     if (!loaded) {
         const std::string rasterPath = io::resolveRasterPath(mission_, missionPath);
         badInput(namingFile(rasterPath, loaded.error()));
     }
     raster_ = std::move(loaded.value());
+    const std::size_t rasterWarnings = raster_.warnings.size();
+    if (const io::Status area = io::applyMissionArea(raster_, mission_, missionPath); !area)
+        badInput("area of interest: " + area.error()); // the message names the polygon file
+    // What the area leaves to plan ("planning on 4.04 km2 of the map") is news, not a warning.
+    for (std::size_t i = rasterWarnings; i < raster_.warnings.size(); ++i)
+        note(raster_.warnings[i]);
+    raster_.warnings.resize(rasterWarnings);
     pendingWarnings_.insert(pendingWarnings_.end(), raster_.warnings.begin(), raster_.warnings.end());
 }
 
@@ -593,11 +600,13 @@ void BatchRunner::executeComparison() {
             rows.push_back(row);
             continue;
         }
+        // What is said while it plans and writes belongs to it: several planners write the same notes.
+        plannerPrefix_ = name + ": ";
         try {
             mission_.planner = comparedPlanner(name);
             const PlanningProblem problem = prepareProblem();
             for (const auto& warning : pendingWarnings_)
-                warn(name + ": " + warning);
+                warn(warning);
             pendingWarnings_.clear();
             // The plans before this one stay for the comparison sheet: its peak is counted above what they
             // and the heap they freed hold, as if it ran alone on the raster.
@@ -615,8 +624,10 @@ void BatchRunner::executeComparison() {
         } catch (const BatchFailure& failure) {
             row.outcome = io::ComparisonRow::Outcome::Failed;
             row.message = failure.what();
+            plannerPrefix_.clear();
             warn(name + " failed: " + row.message);
         }
+        plannerPrefix_.clear();
         rows.push_back(row);
     }
     writeComparison(rows, plans);
@@ -689,17 +700,24 @@ void BatchRunner::printSummary(const Plan& plan) const {
         output_ << "mcpp: " << fieldTimeNote_ << '\n';
     if (const TimelineLayer* timeline = timelineLayerOf(plan))
         output_ << "mcpp: " << timelineSentence(timeline->summary()) << '\n';
+    // Weeks of work usually mean the whole raster was planned when a part of it was meant.
+    constexpr double weeks = 14.0 * 24.0 * 3600.0;
+    if (metrics.makespanSeconds > weeks && mission_.area.empty())
+        output_ << "mcpp: " << (plan.paths.size() == 1 ? "the robot needs " : "the robots need ")
+                << formatDuration(metrics.makespanSeconds)
+                << " for the whole raster: to plan part of it, give the area's polygons (--area FILE, or "
+                   "area.include in a mission file); for a wider sensor footprint, --fov-scale\n";
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 
 void BatchRunner::note(const std::string& message) {
     if (!options_.quiet)
-        output_ << "mcpp: " << message << '\n' << std::flush;
+        output_ << "mcpp: " << plannerPrefix_ << message << '\n' << std::flush;
 }
 
 void BatchRunner::warn(const std::string& message) {
     if (!options_.quiet)
-        diagnostics_ << "mcpp: warning: " << message << '\n' << std::flush;
+        diagnostics_ << "mcpp: warning: " << plannerPrefix_ << message << '\n' << std::flush;
 }
 
 std::string BatchRunner::fieldName(const io::MissionField& field) const {

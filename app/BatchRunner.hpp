@@ -79,6 +79,7 @@ class BatchRunner {
     std::vector<std::optional<MapPoint>> chargers_;
     std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
     std::string fieldTimeNote_;                // with the summary, when missions are written in parts
+    std::string plannerPrefix_;                // "darp: " before notes and warnings while --compare runs it
     std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan
     int exitCode_ = 0;
 };

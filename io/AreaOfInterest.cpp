@@ -4,6 +4,7 @@
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
 
+#include <filesystem>
 #include <gdal_alg.h>
 #include <ogrsf_frmts.h>
 #include <vector>
@@ -46,6 +47,9 @@ Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, Ow
     using Count = Result<int>;
     internal::ensureGdalRegistered();
     const QuietGdalErrors quiet;
+    std::error_code code;
+    if (path.rfind("/vsi", 0) != 0 && !std::filesystem::exists(path, code))
+        return Count::failure(path + ": no such file");
     internal::DatasetPointer dataset(
         GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
     if (!dataset)

@@ -49,17 +49,25 @@ FieldNamer missionFileFields(const std::string& missionPath, std::vector<std::st
 }
 
 Result<LoadedRaster> loadMissionRaster(const Mission& mission, const std::string& missionPath) {
-    RasterLoadOptions options;
-    options.band = mission.band;
-    auto raster = loadLandCoverRaster(resolveRasterPath(mission, missionPath), options);
-    if (!raster || mission.area.empty())
+    auto raster = loadMissionRasterAlone(mission, missionPath);
+    if (!raster)
         return raster;
-    if (Status area =
-            applyAreaOfInterest(raster.value(), resolveMissionPath(mission.area.includePath, missionPath),
-                                resolveMissionPath(mission.area.excludePath, missionPath));
-        !area)
+    if (Status area = applyMissionArea(raster.value(), mission, missionPath); !area)
         return Result<LoadedRaster>::failure(area.error());
     return raster;
+}
+
+Result<LoadedRaster> loadMissionRasterAlone(const Mission& mission, const std::string& missionPath) {
+    RasterLoadOptions options;
+    options.band = mission.band;
+    return loadLandCoverRaster(resolveRasterPath(mission, missionPath), options);
+}
+
+Status applyMissionArea(LoadedRaster& raster, const Mission& mission, const std::string& missionPath) {
+    if (mission.area.empty())
+        return {};
+    return applyAreaOfInterest(raster, resolveMissionPath(mission.area.includePath, missionPath),
+                               resolveMissionPath(mission.area.excludePath, missionPath));
 }
 
 namespace {
@@ -128,14 +136,23 @@ Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& ra
             return Result<ClassTable>::failure(where + ": " + preset.error());
         // A preset that knows none of the map's classes is another product's: its plan would mean nothing.
         const UnlistedClasses unlisted = unlistedClasses(mission, preset.value(), raster);
+        const std::string advice =
+            "choose this raster's (mcpp --help lists the presets), or give a class table";
         if (!unlisted.values.empty() && unlisted.values.size() == raster.classPixelCounts.size())
             return Result<ClassTable>::failure(
                 where + ": preset " + mission.preset + " has a row for none of the raster's " +
                 (unlisted.values.size() == 1 ? "class ("
                                              : std::to_string(unlisted.values.size()) + " classes (") +
-                someValues(unlisted.values) +
-                "): it is another product's legend; choose this raster's (mcpp --help lists the presets), "
-                "or give a class table");
+                someValues(unlisted.values) + "): it is another product's legend; " + advice);
+        // One that knows a few of its values by chance still leaves most of the map to the generic row.
+        if (unlisted.allPixels > 0 && 2 * unlisted.pixels > unlisted.allPixels)
+            return Result<ClassTable>::failure(
+                where + ": preset " + mission.preset + " has no row for classes " +
+                someValues(unlisted.values) + ", " +
+                formatPercent(static_cast<double>(unlisted.pixels) /
+                              static_cast<double>(unlisted.allPixels)) +
+                " of the map: it is most likely another product's legend; " + advice +
+                " (a table may list these classes beside the preset's rows)");
     }
     ClassTable table = missionClassTable(mission.classes, mission.preset, raster);
     if (const auto problem = table.validate())
@@ -165,6 +182,33 @@ bool onTheMap(const ClassGrid& grid, MapPoint point) {
     return pixel && !grid.isOutside(pixel->column, pixel->row);
 }
 
+// Why degrees may not convert: a latitude beyond 90 that would be a longitude, the other way round.
+std::string latitudeFirstHint(MapPoint typed) {
+    if (!(std::fabs(typed.y) > 90.0 && std::fabs(typed.y) <= 180.0 && std::fabs(typed.x) <= 90.0))
+        return {};
+    return "; " + formatQuantity(typed.y, 9) +
+           " is no latitude (they lie between -90 and 90): a start in degrees is "
+           "longitude first (" +
+           formatQuantity(typed.y, 9) + "," + formatQuantity(typed.x, 9) + ")";
+}
+
+// A start outside the map whose numbers look like degrees, typed without a CRS saying so: where they
+// would lie as longitude and latitude (or the other way round), if that is on the map.
+std::string degreesWithoutCrsHint(const LoadedRaster& raster, MapPoint start, const std::string& crsField) {
+    if (raster.warpedFromGeographic || !(std::fabs(start.x) <= 180.0 && std::fabs(start.y) <= 180.0))
+        return {};
+    for (const MapPoint lonLat : {start, MapPoint{start.y, start.x}}) {
+        if (std::fabs(lonLat.y) > 90.0)
+            continue;
+        const auto onMap = raster.georeference.fromCrs("EPSG:4326", lonLat);
+        if (onMap && onTheMap(raster.grid, onMap.value()))
+            return "; as longitude " + formatQuantity(lonLat.x, 9) + ", latitude " +
+                   formatQuantity(lonLat.y, 9) + " it lies on the map: give EPSG:4326 as " + crsField +
+                   (lonLat.x == start.x ? std::string() : std::string(" and longitude first"));
+    }
+    return {};
+}
+
 // A start as messages name it: its planning-frame coordinates, and its longitude and latitude where the
 // raster is georeferenced (what a user who typed degrees recognises; metres of UTM mean little to most).
 std::string startName(const LoadedRaster& raster, MapPoint start) {
@@ -182,9 +226,14 @@ std::string startName(const LoadedRaster& raster, MapPoint start) {
 // What helps with a start the planner cannot use: a hint when longitude and latitude look swapped, and the
 // option that moves starts off obstacles.
 std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& problem, MapPoint start,
-                        const FieldNamer& names) {
+                        int robot, const FieldNamer& names) {
     using Kind = PlanningError::Kind;
     std::string advice;
+    if (problem.kind == Kind::StartOutsideArea && std::isfinite(start.x) && std::isfinite(start.y)) {
+        advice += degreesWithoutCrsHint(raster, start, names(MissionField::startCrs(robot)));
+        if (onTheMap(raster.grid, {start.y, start.x}))
+            advice += "; x and y the other way round lie on the map: x (easting) comes first";
+    }
     if (problem.kind == Kind::StartOutsideArea && std::isfinite(start.x) && std::isfinite(start.y))
         if (const auto lonLat = raster.georeference.toWgs84(start); lonLat) {
             const LonLat& at = lonLat.value();
@@ -217,7 +266,8 @@ Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& class
         if (const auto problem =
                 startPointProblem(reconciled.grid, classes, start, startName(reconciled, start)))
             return Status::failure(names(MissionField::start(static_cast<int>(robot))) + ": " +
-                                   problem->detail + startAdvice(reconciled, *problem, start, names));
+                                   problem->detail +
+                                   startAdvice(reconciled, *problem, start, static_cast<int>(robot), names));
     }
     return {};
 }
@@ -237,7 +287,7 @@ Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const Loaded
         if (!start)
             return Starts::failure(
                 names(spec.startCrs.empty() ? MissionField::start(robot) : MissionField::startCrs(robot)) +
-                ": " + start.error());
+                ": " + start.error() + latitudeFirstHint(spec.start));
         starts.push_back(start.value());
     }
     return starts;

@@ -44,6 +44,12 @@ using FieldNamer = std::function<std::string(const MissionField&)>;
 
 // The raster the mission names, resolved against the mission file's folder, read with the mission's band.
 [[nodiscard]] Result<LoadedRaster> loadMissionRaster(const Mission& mission, const std::string& missionPath);
+// The same in two steps, for callers that name the raster and the area files apart in their messages: the
+// raster alone, then the mission's area of interest (include and exclude polygons) applied to it.
+[[nodiscard]] Result<LoadedRaster> loadMissionRasterAlone(const Mission& mission,
+                                                          const std::string& missionPath);
+[[nodiscard]] Status applyMissionArea(LoadedRaster& raster, const Mission& mission,
+                                      const std::string& missionPath);
 
 // The class table the mission plans with: its own rows and, for the values they lack, its preset's rows
 // for this raster (docs/mission-format.md); checked.

@@ -83,6 +83,7 @@ class TestBatchEndToEnd : public QObject {
     void rasterAloneGetsTheRecognisedProductsTable();
     void outputsAreTheSameWhateverTheThreadCount();
     void comparePlannersOnOneMission();
+    void weeksOfWorkSuggestAnArea();
     void everyPlannerRunsFromTheCommandLine_data();
     void everyPlannerRunsFromTheCommandLine();
     void badInputExitsTwoWithOneLine_data();
@@ -281,6 +282,28 @@ void TestBatchEndToEnd::comparePlannersOnOneMission() {
     refused = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "darp", "--planner",
                        "mstc", "--out", out});
     QCOMPARE(refused.exitCode, 2);
+}
+
+// Robots crawling over the whole raster for weeks: the summary says how to plan part of it instead.
+void TestBatchEndToEnd::weeksOfWorkSuggestAnArea() {
+    const QString slow = scratch_.filePath(QStringLiteral("slow.csv"));
+    QVERIFY(writeText(slow,
+                      "value,name,speed_mps,fov_m,passable,color\n1,Dense forest,0.0008,5,true,#2e7d32\n"
+                      "2,Shrubland,0.0015,10,true,#a5a05a\n3,Grassland,0.003,20,true,#d4e157\n"
+                      "4,Lake,0,10,false,#4f8fd6\n"));
+    const QStringList robot{"--start", "431040,5301040"};
+    auto run =
+        runMcpp(QStringList{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes", slow} +
+                robot + QStringList{"--out", scratch_.filePath("slow")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    QVERIFY2(run.standardOutput.contains(
+                 QStringLiteral("for the whole raster: to plan part of it, give the area's "
+                                "polygons (--area FILE")),
+             qPrintable(run.standardOutput));
+    // At the sample's own speeds the plan takes hours: nothing to suggest.
+    run = runMcpp(syntheticFlags() + robot + QStringList{"--out", scratch_.filePath("quick")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    QVERIFY(!run.standardOutput.contains(QStringLiteral("for the whole raster")));
 }
 
 void TestBatchEndToEnd::samplesAreValidMissions_data() {

@@ -229,6 +229,18 @@ class ClassTablesTest : public QObject {
             refused.error().c_str());
         QVERIFY(!presetGapWarning(mission, nlcd)); // refused, not warned about
 
+        // Swiss CORINE codes 1-44 beside WorldCover's 10, 20, ... 100: a few match by chance, most of the map
+        // does not.
+        const LoadedRaster swiss = load("landcover/corine2006_swiss_ls100.tif");
+        mission.preset = "esa-worldcover";
+        const auto byChance = missionClasses(mission, swiss, names);
+        QVERIFY(!byChance.ok());
+        QVERIFY2(byChance.error().find("preset esa-worldcover has no row for classes ") !=
+                         std::string::npos &&
+                     byChance.error().find("of the map: it is most likely another product's legend") !=
+                         std::string::npos,
+                 byChance.error().c_str());
+
         mission.preset = "paper"; // values 1-6
         QVERIFY(missionClasses(mission, nlcd, names).ok());
         const auto gap = presetGapWarning(mission, nlcd);
