@@ -1,6 +1,8 @@
 #include "render/ComparisonSheet.hpp"
 
+#include "core/model/HumanUnits.hpp"
 #include "io/AtomicFile.hpp"
+#include "render/PlanFrame.hpp"
 #include "render/PlanImage.hpp"
 #include "render/PngEncoder.hpp"
 #include "render/RobotPalette.hpp"
@@ -22,11 +24,11 @@ int columnsFor(std::size_t panels) {
     return static_cast<int>(std::clamp<std::size_t>(panels, 1, 3));
 }
 
-void drawPanel(QPainter& painter, const ClassGrid& grid, const ClassTable& classes,
+void drawPanel(QPainter& painter, const ClassGrid& grid, const ClassGrid& frame, const ClassTable& classes,
                const ComparisonPanel& panel, QRect area) {
     const QRect mapArea(area.left(), area.top(), area.width(), tileSide);
     if (panel.plan != nullptr) {
-        const QImage map = renderPlanImage(grid, classes, panel.plan, mapArea.size());
+        const QImage map = renderPlanImage(grid, classes, panel.plan, mapArea.size(), {}, nullptr, &frame);
         painter.drawImage(mapArea.left() + (mapArea.width() - map.width()) / 2,
                           mapArea.top() + (mapArea.height() - map.height()) / 2, map);
     } else {
@@ -107,8 +109,8 @@ ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan
         panel.caption << QString::fromStdString(io::outcomeName(row.outcome) + ": " + row.message);
         return panel;
     }
-    panel.caption << QStringLiteral("makespan %1 h, %2 x the lower bound")
-                         .arg(row.metrics.makespanSeconds / 3600.0, 0, 'f', 2)
+    panel.caption << QStringLiteral("makespan %1, %2 x the lower bound")
+                         .arg(QString::fromStdString(formatDuration(row.metrics.makespanSeconds)))
                          .arg(row.metrics.ratio, 0, 'f', 3)
                   << QStringLiteral("%1 turns, covered %2 %, planned in %3 s")
                          .arg(row.metrics.totalTurns())
@@ -129,13 +131,18 @@ QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
     sheet.fill(Qt::white);
     QPainter painter(&sheet);
     painter.setRenderHint(QPainter::Antialiasing, true);
+    // Every panel shows the same part of the raster, at the same scale.
+    std::vector<const Plan*> plans;
+    for (const ComparisonPanel& panel : panels)
+        plans.push_back(panel.plan);
+    const ClassGrid frame = planFrame(grid, plans);
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const int column = static_cast<int>(i) % columns;
         const int row = static_cast<int>(i) / columns;
         const QRect area(margin + column * (tileSide + margin),
                          margin + row * (tileSide + captionHeight + margin), tileSide,
                          tileSide + captionHeight);
-        drawPanel(painter, grid, classes, panels[i], area);
+        drawPanel(painter, grid, frame, classes, panels[i], area);
     }
     drawChart(painter, panels, QRect(margin, height - chartHeight - margin, width - 2 * margin, chartHeight));
     painter.end();

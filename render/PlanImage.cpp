@@ -71,10 +71,11 @@ QImage blankPicture(QSize size) {
 } // namespace
 
 QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan, QSize maxSize,
-                       const MapLayers& layers, const RegionOutlines* outlines) {
+                       const MapLayers& layers, const RegionOutlines* outlines, const ClassGrid* frame) {
     if (grid.columns <= 0 || grid.rows <= 0 || maxSize.width() <= 0 || maxSize.height() <= 0)
         return {};
-    const QSize size = PlanSheet::fittedMapSize(grid, maxSize);
+    const ClassGrid& shown = frame != nullptr ? *frame : grid;
+    const QSize size = PlanSheet::fittedMapSize(shown, maxSize);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::white);
 
@@ -83,7 +84,7 @@ QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const P
     renderer.setPlan(plan, outlines);
     renderer.setLayers(layers);
     QPainter painter(&image);
-    renderer.paint(painter, PlanRenderer::fitTransform(grid, QSizeF(size)),
+    renderer.paint(painter, PlanRenderer::fitTransform(shown, QSizeF(size)),
                    QRectF(QPointF(0, 0), QSizeF(size)));
     painter.end();
     return image;

@@ -17,10 +17,12 @@ namespace mcpp::render {
 
 // The map (raster in class colours) and the plan over it, north up, fitted into maxSize keeping aspect.
 // Pixels outside the raster's task area are white. plan may be null to draw the map alone; outlines are the
-// plan's region outlines when the caller has them (traced here otherwise).
+// plan's region outlines when the caller has them (traced here otherwise). frame: the part of the raster to
+// show (planFrame), the whole raster when null.
 [[nodiscard]] QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan,
                                      QSize maxSize, const MapLayers& layers = {},
-                                     const RegionOutlines* outlines = nullptr);
+                                     const RegionOutlines* outlines = nullptr,
+                                     const ClassGrid* frame = nullptr);
 
 // Writes the plan's map sheet (PlanSheet: title, map fitted into maxSize with scale bar and north arrow,
 // legend naming the robots) as PNG. On failure returns false and says why in *error (when not null).

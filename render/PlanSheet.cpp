@@ -2,6 +2,7 @@
 
 #include "core/model/HumanUnits.hpp"
 #include "render/MapDecorations.hpp"
+#include "render/PlanFrame.hpp"
 #include "render/PlanRenderer.hpp"
 
 #include <QFontMetricsF>
@@ -44,9 +45,10 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
                      QSize maxMapSize)
     : grid_(grid), classes_(classes), plan_(plan), extras_(std::move(extras)),
       crossings_(impassableCrossings(plan.cells, plan.regions, grid, classes)),
-      sections_(planLegend(classes, &plan, extras_.robotNames, &grid, &crossings_)), title_(titleOf(plan)) {
+      sections_(planLegend(classes, &plan, extras_.robotNames, &grid, &crossings_)), title_(titleOf(plan)),
+      frame_(planFrame(grid, {&plan})) {
     addFlightReach(sections_, extras_.flightReach);
-    const QSize mapSize = fittedMapSize(grid, maxMapSize);
+    const QSize mapSize = fittedMapSize(frame_, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
     const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);
     font_.setPixelSize(textPixels);
@@ -79,7 +81,7 @@ void PlanSheet::paint(QPainter& painter) const {
     painter.save();
     painter.setClipRect(map_);
     // The renderer draws in device coordinates: the map's placement goes into its transform.
-    const QTransform worldToSheet = PlanRenderer::fitTransform(grid_, QSizeF(map_.size())) *
+    const QTransform worldToSheet = PlanRenderer::fitTransform(frame_, QSizeF(map_.size())) *
                                     QTransform::fromTranslate(map_.left(), map_.top());
     renderer.paint(painter, worldToSheet, QRectF(map_));
     painter.restore();
@@ -88,7 +90,7 @@ void PlanSheet::paint(QPainter& painter) const {
     painter.drawRect(QRectF(map_).adjusted(-0.5, -0.5, 0.5, 0.5));
 
     painter.setFont(font_);
-    const double pixelsPerMetre = map_.width() / std::max(grid_.width(), 1e-9);
+    const double pixelsPerMetre = map_.width() / std::max(frame_.width(), 1e-9);
     paintScaleBar(painter, QPointF(map_.left() + 8, map_.bottom() - 8), pixelsPerMetre, map_.width() / 5.0);
     paintNorthArrow(painter, QPointF(map_.right() - 20, map_.top() + 10));
     paintLegend(painter, legend_.topLeft(), sections_);

@@ -21,7 +21,8 @@ struct SheetExtras {
     std::vector<double> flightReach;          // by robot, metres: rings round aircraft starts
 };
 
-// The exported picture of a plan as a map sheet: a title, the map fitted into maxMapSize with a scale bar
+// The exported picture of a plan as a map sheet: a title, the map (the plan's frame, planFrame) fitted into
+// maxMapSize with a scale bar
 // and a north arrow, and the legend beside it (classes, robots with names and times, overlays).
 class PlanSheet {
   public:
@@ -47,6 +48,7 @@ class PlanSheet {
     std::vector<ImpassableCrossing> crossings_;
     std::vector<LegendSection> sections_;
     QString title_;
+    ClassGrid frame_; // the part of the raster the map shows (planFrame)
     QFont font_;
     QFont titleFont_;
     QSize size_;

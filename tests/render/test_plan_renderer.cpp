@@ -3,6 +3,7 @@
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
+#include "render/PlanFrame.hpp"
 #include "render/PlanImage.hpp"
 #include "render/PlanLegend.hpp"
 #include "render/PlanRenderer.hpp"
@@ -144,6 +145,45 @@ class TestPlanRenderer : public QObject {
     Q_OBJECT
 
   private slots:
+    // A plan over the whole raster shows all of it; one over a small part (an area of interest) shows that
+    // part with a fifth of its extent around it, in whole pixels of the raster.
+    void aSmallPlanIsFramedWithAMargin() {
+        const ClassGrid grid = twoClassGrid(); // x 1000-1200, y 4900-5000, 10 m pixels
+        const Plan whole = twoCellPlan();
+        const ClassGrid wholeFrame = render::planFrame(grid, {&whole});
+        QCOMPARE(wholeFrame.columns, grid.columns);
+        QCOMPARE(wholeFrame.rows, grid.rows);
+        QCOMPARE(wholeFrame.originX, grid.originX);
+        QCOMPARE(wholeFrame.originY, grid.originY);
+        QVERIFY(wholeFrame.values.empty());
+
+        Plan small;
+        GridFrame frame;
+        frame.originX = 1100.0;
+        frame.originY = 4960.0;
+        frame.bottomCellSize = 20.0;
+        frame.columns = 1;
+        frame.rows = 1;
+        Cell cell; // x 1100-1120, y 4940-4960: 4 m of margin reach the pixels of x 1090-1130, y 4930-4970
+        cell.minX = 1100.0;
+        cell.minY = 4940.0;
+        cell.size = 20.0;
+        cell.speedMetresPerSecond = 1.0;
+        small.cells = CellGraph(frame, {cell}, NeighbourTopology({0, 0}, {}));
+        const ClassGrid smallFrame = render::planFrame(grid, {&small});
+        QCOMPARE(smallFrame.originX, 1090.0);
+        QCOMPARE(smallFrame.originY, 4970.0);
+        QCOMPARE(smallFrame.columns, 4);
+        QCOMPARE(smallFrame.rows, 4);
+        // Several plans share one frame that holds them all; none at all shows the raster.
+        QCOMPARE(render::planFrame(grid, {&small, &whole}).columns, grid.columns);
+        QCOMPARE(render::planFrame(grid, {nullptr}).columns, grid.columns);
+        // The picture of the small plan is the frame's shape: square, not the raster's 2 : 1.
+        const QImage image =
+            render::renderPlanImage(grid, twoClassTable(), &small, QSize(400, 200), {}, nullptr, &smallFrame);
+        QCOMPARE(image.size(), QSize(200, 200));
+    }
+
     void fitsKeepingAspect() {
         const QImage image =
             render::renderPlanImage(twoClassGrid(), twoClassTable(), nullptr, QSize(400, 400));
