@@ -80,10 +80,12 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 // Sets the kernel's high-water mark of resident memory back to what is resident now, so the next
-// peakMemoryMegabytes() is the peak since (Linux; elsewhere it stays the process's peak so far).
-void restartPeakMemory() {
+// peakMemoryMegabytes() is the peak since; false where it cannot (not Linux), the peak then the process's.
+bool restartPeakMemory() {
     std::ofstream clear("/proc/self/clear_refs");
     clear << "5";
+    clear.close();
+    return !clear.fail();
 }
 
 // A line of /proc/self/status in megabytes ("VmHWM:", "VmRSS:"); nothing where the system has none.
@@ -146,9 +148,7 @@ void BatchRunner::execute() {
     prepareMission();
     PlanningProblem problem = prepareProblem();
     checkOutputFolder();
-    for (const auto& warning : pendingWarnings_)
-        warn(warning);
-    pendingWarnings_.clear();
+    flushPending();
     started = std::chrono::steady_clock::now();
     const Plan plan = [&] {
         const WriterWarmUp warmUp(raster_.georeference, workerThreads());
@@ -253,7 +253,7 @@ void BatchRunner::loadRaster() {
         badInput("area of interest: " + area.error()); // the message names the polygon file
     // What the area leaves to plan ("planning on 4.04 km2 of the map") is news, not a warning.
     for (std::size_t i = rasterWarnings; i < raster_.warnings.size(); ++i)
-        note(raster_.warnings[i]);
+        pendingNotes_.push_back(raster_.warnings[i]);
     raster_.warnings.resize(rasterWarnings);
     pendingWarnings_.insert(pendingWarnings_.end(), raster_.warnings.begin(), raster_.warnings.end());
 }
@@ -537,7 +537,12 @@ bool BatchRunner::someComparedPlannerSnapsStarts() const {
             return false; // a bad value is said as that planner's failure when its turn comes
         }
     };
-    return std::any_of(options_.comparePlanners.begin(), options_.comparePlanners.end(), snaps);
+    const bool severalRobots = mission_.robots.size() > 1;
+    return std::any_of(
+        options_.comparePlanners.begin(), options_.comparePlanners.end(), [&](const std::string& name) {
+            // One-robot planners are skipped for several robots: their settings do not count.
+            return !(severalRobots && findPlannerDescription(name)->singleRobot) && snaps(name);
+        });
 }
 
 PlannerChoice BatchRunner::comparedPlanner(const std::string& name) const {
@@ -579,12 +584,11 @@ void BatchRunner::executeComparison() {
             !starts)
             badInput(starts.error());
     checkOutputFolder();
-    for (const auto& warning : pendingWarnings_)
-        warn(warning);
-    pendingWarnings_.clear();
+    flushPending();
     const std::size_t robots = mission_.robots.size();
     std::vector<io::ComparisonRow> rows;
     std::vector<std::optional<Plan>> plans;
+    returnFreedMemory();
     const double residentWithRaster = residentMegabytes();
     for (std::size_t i = 0; i < options_.comparePlanners.size(); ++i) {
         const std::string& name = options_.comparePlanners[i];
@@ -603,23 +607,25 @@ void BatchRunner::executeComparison() {
         // What is said while it plans and writes belongs to it: several planners write the same notes.
         plannerPrefix_ = name + ": ";
         try {
+            // The plans before this one stay for the comparison sheet: its peak is counted above what they
+            // and the heap they freed hold, as if it ran alone on the raster (its problem's copy of the
+            // grid included, as there).
+            returnFreedMemory();
+            const double residentBefore = residentMegabytes();
+            const bool ownPeak = restartPeakMemory();
             mission_.planner = comparedPlanner(name);
             const PlanningProblem problem = prepareProblem();
             for (const auto& warning : pendingWarnings_)
                 warn(warning);
             pendingWarnings_.clear();
-            // The plans before this one stay for the comparison sheet: its peak is counted above what they
-            // and the heap they freed hold, as if it ran alone on the raster.
-            returnFreedMemory();
-            const double residentBefore = residentMegabytes();
-            restartPeakMemory();
             started = std::chrono::steady_clock::now();
             Plan plan = runPlanner(problem);
             row.planningMilliseconds = millisecondsSince(started);
             processMilliseconds_ = {{"read_raster", readMilliseconds}, {"plan", row.planningMilliseconds}};
             writeOutputs(plan, (fs::path(options_.outputDirectory) / name).string());
             row.metrics = plan.metrics;
-            row.peakMemoryMegabytes = peakMemoryMegabytes() - residentBefore + residentWithRaster;
+            row.peakMemoryMegabytes =
+                ownPeak ? peakMemoryMegabytes() - residentBefore + residentWithRaster : peakMemoryMegabytes();
             plans.back() = std::move(plan);
         } catch (const BatchFailure& failure) {
             row.outcome = io::ComparisonRow::Outcome::Failed;
@@ -705,9 +711,18 @@ void BatchRunner::printSummary(const Plan& plan) const {
     if (metrics.makespanSeconds > weeks && mission_.area.empty())
         output_ << "mcpp: " << (plan.paths.size() == 1 ? "the robot needs " : "the robots need ")
                 << formatDuration(metrics.makespanSeconds)
-                << " for the whole raster: to plan part of it, give the area's polygons (--area FILE, or "
-                   "area.include in a mission file); for a wider sensor footprint, --fov-scale\n";
+                << " for all the raster's land: to plan part of it, give the area's polygons (--area FILE, "
+                   "or area.include in a mission file); for a wider sensor footprint, --fov-scale\n";
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
+}
+
+void BatchRunner::flushPending() {
+    for (const auto& message : pendingNotes_)
+        note(message);
+    pendingNotes_.clear();
+    for (const auto& warning : pendingWarnings_)
+        warn(warning);
+    pendingWarnings_.clear();
 }
 
 void BatchRunner::note(const std::string& message) {

@@ -61,6 +61,8 @@ class BatchRunner {
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.
     void writeComparison(const std::vector<io::ComparisonRow>& rows,
                          const std::vector<std::optional<Plan>>& plans);
+    // The notes and warnings held back until the input is known to be good.
+    void flushPending();
     void note(const std::string& message);
     void warn(const std::string& message);
 
@@ -78,6 +80,7 @@ class BatchRunner {
     std::vector<MapPoint> starts_; // planning frame
     std::vector<std::optional<MapPoint>> chargers_;
     std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
+    std::vector<std::string> pendingNotes_;    // likewise
     std::string fieldTimeNote_;                // with the summary, when missions are written in parts
     std::string plannerPrefix_;                // "darp: " before notes and warnings while --compare runs it
     std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan

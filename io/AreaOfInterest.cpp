@@ -48,7 +48,8 @@ Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, Ow
     internal::ensureGdalRegistered();
     const QuietGdalErrors quiet;
     std::error_code code;
-    if (path.rfind("/vsi", 0) != 0 && !std::filesystem::exists(path, code))
+    if (path.rfind("/vsi", 0) != 0 && !std::filesystem::exists(path, code) &&
+        !code) // not when it cannot tell
         return Count::failure(path + ": no such file");
     internal::DatasetPointer dataset(
         GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
@@ -148,7 +149,7 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
         if (grid.outside[pixel] != 0)
             continue;
         if ((!include.empty() && include[pixel] == 0) || (!exclude.empty() && exclude[pixel] != 0)) {
-            grid.outside[pixel] = 1;
+            grid.outside[pixel] = ClassGrid::outsideArea;
             continue;
         }
         ++counts[grid.values[pixel]];

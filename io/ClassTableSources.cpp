@@ -322,7 +322,7 @@ Status reconcileRasterWithTable(LoadedRaster& raster, const ClassTable& table, b
     const std::set<std::int32_t> missingSet(missing.begin(), missing.end());
     for (std::size_t i = 0; i < grid.values.size(); ++i) {
         if (grid.outside[i] == 0 && missingSet.count(grid.values[i]) != 0)
-            grid.outside[i] = 1;
+            grid.outside[i] = ClassGrid::outsideUnlisted;
     }
     for (const std::int32_t value : missing)
         raster.classPixelCounts.erase(value);

@@ -147,12 +147,12 @@ Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& ra
         // One that knows a few of its values by chance still leaves most of the map to the generic row.
         if (unlisted.allPixels > 0 && 2 * unlisted.pixels > unlisted.allPixels)
             return Result<ClassTable>::failure(
-                where + ": preset " + mission.preset + " has no row for classes " +
-                someValues(unlisted.values) + ", " +
+                where + ": preset " + mission.preset + " has no row for " +
+                (unlisted.values.size() == 1 ? "class " : "classes ") + someValues(unlisted.values) + ", " +
                 formatPercent(static_cast<double>(unlisted.pixels) /
                               static_cast<double>(unlisted.allPixels)) +
                 " of the map: it is most likely another product's legend; " + advice +
-                " (a table may list these classes beside the preset's rows)");
+                " with rows for these classes (--classes FILE, or rows beside the preset in a mission file)");
     }
     ClassTable table = missionClassTable(mission.classes, mission.preset, raster);
     if (const auto problem = table.validate())
@@ -182,9 +182,12 @@ bool onTheMap(const ClassGrid& grid, MapPoint point) {
     return pixel && !grid.isOutside(pixel->column, pixel->row);
 }
 
-// Why degrees may not convert: a latitude beyond 90 that would be a longitude, the other way round.
-std::string latitudeFirstHint(MapPoint typed) {
-    if (!(std::fabs(typed.y) > 90.0 && std::fabs(typed.y) <= 180.0 && std::fabs(typed.x) <= 90.0))
+// Why degrees may not convert: a latitude beyond 90 that would be a longitude, and the point the other way
+// round converts.
+std::string latitudeFirstHint(const RobotSpec& spec, const LoadedRaster& raster, StartUnits units) {
+    const MapPoint typed = spec.start;
+    if (!(std::fabs(typed.y) > 90.0 && std::fabs(typed.y) <= 180.0 && std::fabs(typed.x) <= 90.0) ||
+        !toPlanningFrame(spec, {typed.y, typed.x}, raster, units))
         return {};
     return "; " + formatQuantity(typed.y, 9) +
            " is no latitude (they lie between -90 and 90): a start in degrees is "
@@ -192,10 +195,11 @@ std::string latitudeFirstHint(MapPoint typed) {
            formatQuantity(typed.y, 9) + "," + formatQuantity(typed.x, 9) + ")";
 }
 
-// A start outside the map whose numbers look like degrees, typed without a CRS saying so: where they
-// would lie as longitude and latitude (or the other way round), if that is on the map.
+// A start outside the map whose numbers look like degrees, typed without a CRS saying so (on a raster
+// warped from degrees, mission files give starts in its planning metres): where they would lie as
+// longitude and latitude (or the other way round), if that is on the map.
 std::string degreesWithoutCrsHint(const LoadedRaster& raster, MapPoint start, const std::string& crsField) {
-    if (raster.warpedFromGeographic || !(std::fabs(start.x) <= 180.0 && std::fabs(start.y) <= 180.0))
+    if (!(std::fabs(start.x) <= 180.0 && std::fabs(start.y) <= 180.0))
         return {};
     for (const MapPoint lonLat : {start, MapPoint{start.y, start.x}}) {
         if (std::fabs(lonLat.y) > 90.0)
@@ -287,7 +291,7 @@ Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const Loaded
         if (!start)
             return Starts::failure(
                 names(spec.startCrs.empty() ? MissionField::start(robot) : MissionField::startCrs(robot)) +
-                ": " + start.error() + latitudeFirstHint(spec.start));
+                ": " + start.error() + latitudeFirstHint(spec, raster, units));
         starts.push_back(start.value());
     }
     return starts;

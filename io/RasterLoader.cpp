@@ -251,7 +251,7 @@ Status readClasses(GDALRasterBand& band, const ReadPlan& plan, const std::string
                 if (masked || isNodata(value) || std::isnan(value)) {
                     if (!masked && !isNodata(value))
                         ++nanPixels;
-                    grid.outside[index] = 1;
+                    grid.outside[index] = ClassGrid::outsideNodata;
                     ++outsidePixels;
                     continue;
                 }

@@ -11,6 +11,7 @@ namespace {
 // Below this share of the raster's width and height the picture closes in on the plans.
 constexpr double wholeRasterShare = 0.8;
 constexpr double marginShare = 0.2;
+constexpr double minimumMarginShare = 0.05;
 
 struct Bounds {
     double minX = std::numeric_limits<double>::infinity();
@@ -53,16 +54,23 @@ ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans
     const Bounds bounds = cellBounds(plans);
     if (bounds.empty() || grid.pixelWidth <= 0.0 || grid.pixelHeight <= 0.0)
         return frame;
-    const double margin = marginShare * std::max(bounds.maxX - bounds.minX, bounds.maxY - bounds.minY);
-    // Whole pixels of the raster, clamped to it.
+    // A fifth of the plans' extent around them, and at least a twentieth of the raster's: a plan of a few
+    // cells keeps some of the land around it.
+    const double margin =
+        std::max(marginShare * std::max(bounds.maxX - bounds.minX, bounds.maxY - bounds.minY),
+                 minimumMarginShare * std::max(grid.width(), grid.height()));
+    // Whole pixels of the raster, clamped to it (in doubles first: cells far off it stay in range).
+    const auto pixelIndex = [](double value, int limit) {
+        return static_cast<int>(std::clamp(value, 0.0, static_cast<double>(limit)));
+    };
     const int firstColumn =
-        std::max(0, static_cast<int>(std::floor((bounds.minX - margin - grid.originX) / grid.pixelWidth)));
-    const int lastColumn = std::min(
-        grid.columns, static_cast<int>(std::ceil((bounds.maxX + margin - grid.originX) / grid.pixelWidth)));
+        pixelIndex(std::floor((bounds.minX - margin - grid.originX) / grid.pixelWidth), grid.columns);
+    const int lastColumn =
+        pixelIndex(std::ceil((bounds.maxX + margin - grid.originX) / grid.pixelWidth), grid.columns);
     const int firstRow =
-        std::max(0, static_cast<int>(std::floor((grid.originY - bounds.maxY - margin) / grid.pixelHeight)));
-    const int lastRow = std::min(
-        grid.rows, static_cast<int>(std::ceil((grid.originY - bounds.minY + margin) / grid.pixelHeight)));
+        pixelIndex(std::floor((grid.originY - bounds.maxY - margin) / grid.pixelHeight), grid.rows);
+    const int lastRow =
+        pixelIndex(std::ceil((grid.originY - bounds.minY + margin) / grid.pixelHeight), grid.rows);
     const int columns = lastColumn - firstColumn;
     const int rows = lastRow - firstRow;
     if (columns <= 0 || rows <= 0 ||

@@ -24,8 +24,11 @@ struct ClassGrid {
     double pixelWidth = 1.0;          // metres, > 0
     double pixelHeight = 1.0;         // metres, > 0
     std::vector<std::int32_t> values; // row-major, columns * rows
-    std::vector<std::uint8_t>
-        outside; // 1 where the pixel is nodata or not part of the task area; may be empty
+    // Why a pixel is not part of the task area (0 where it is); may be empty.
+    std::vector<std::uint8_t> outside;
+    static constexpr std::uint8_t outsideNodata = 1;   // the raster's nodata
+    static constexpr std::uint8_t outsideArea = 2;     // outside the area of interest, or in a no-go zone
+    static constexpr std::uint8_t outsideUnlisted = 3; // a class the table has no row for, left out
 
     [[nodiscard]] std::size_t index(int column, int row) const {
         return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +

@@ -45,6 +45,19 @@ std::string beyondTheRaster(const ClassGrid& grid, MapPoint point) {
     return formatDistance(std::hypot(across, along)) + " " + direction + " of it";
 }
 
+std::string whyOutside(std::uint8_t reason) {
+    switch (reason) {
+    case ClassGrid::outsideNodata:
+        return "the raster has no land cover there (nodata)";
+    case ClassGrid::outsideArea:
+        return "it lies outside the area of interest, or in a no-go zone";
+    case ClassGrid::outsideUnlisted:
+        return "its class has no row in the class table and is left out";
+    default:
+        return "a nodata pixel, or outside the area of interest";
+    }
+}
+
 } // namespace
 
 std::string describePoint(MapPoint point) {
@@ -63,9 +76,9 @@ std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const 
                                      fixed(grid.originX) + " to " + fixed(grid.maxX()) + ", y " +
                                      fixed(grid.minY()) + " to " + fixed(grid.originY) + ")"};
     if (grid.isOutside(pixel->column, pixel->row))
-        return StartPointProblem{
-            Kind::StartOutsideArea,
-            named + " is outside the task area (a nodata pixel, or outside the area of interest)"};
+        return StartPointProblem{Kind::StartOutsideArea,
+                                 named + " is outside the task area: " +
+                                     whyOutside(grid.outside[grid.index(pixel->column, pixel->row)])};
     const std::int32_t value = grid.valueAt(pixel->column, pixel->row);
     const LandCoverClass* landCover = classes.find(value);
     if (landCover == nullptr)

@@ -297,13 +297,13 @@ void TestBatchEndToEnd::weeksOfWorkSuggestAnArea() {
                 robot + QStringList{"--out", scratch_.filePath("slow")});
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
     QVERIFY2(run.standardOutput.contains(
-                 QStringLiteral("for the whole raster: to plan part of it, give the area's "
+                 QStringLiteral("for all the raster's land: to plan part of it, give the area's "
                                 "polygons (--area FILE")),
              qPrintable(run.standardOutput));
     // At the sample's own speeds the plan takes hours: nothing to suggest.
     run = runMcpp(syntheticFlags() + robot + QStringList{"--out", scratch_.filePath("quick")});
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
-    QVERIFY(!run.standardOutput.contains(QStringLiteral("for the whole raster")));
+    QVERIFY(!run.standardOutput.contains(QStringLiteral("for all the raster's land")));
 }
 
 void TestBatchEndToEnd::samplesAreValidMissions_data() {

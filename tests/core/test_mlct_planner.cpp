@@ -136,6 +136,18 @@ class MlctPlannerTest : public QObject {
         expectError(problem, PlanningError::Kind::StartOutsideArea, "nodata");
     }
 
+    // A start on the raster but off the task area says why: nodata, or outside the area of interest.
+    void startOffTheTaskAreaSaysWhy() {
+        auto problem = lakeProblem();
+        problem.grid.outside.assign(problem.grid.values.size(), 0);
+        problem.grid.outside[problem.grid.index(0, 0)] = ClassGrid::outsideArea;
+        expectError(problem, PlanningError::Kind::StartOutsideArea,
+                    "is outside the task area: it lies outside the area of interest, or in a no-go zone");
+        problem.grid.outside[problem.grid.index(0, 0)] = ClassGrid::outsideNodata;
+        expectError(problem, PlanningError::Kind::StartOutsideArea,
+                    "is outside the task area: the raster has no land cover there (nodata)");
+    }
+
     // The raster spans x 500000 to 500100, y 3999900 to 4000000: how far off and which way, to the
     // centimetre.
     void startOutsideSaysHowFarAndWhichWay() {

@@ -285,7 +285,9 @@ class ClassTablesTest : public QObject {
         const std::int64_t water = raster.classPixelCounts.at(18) + raster.classPixelCounts.at(19);
         QVERIFY(reconcileRasterWithTable(raster, table, true).ok());
         QCOMPARE(raster.classPixelCounts.count(18), std::size_t{0});
-        QCOMPARE(std::count(raster.grid.outside.begin(), raster.grid.outside.end(), 1), water);
+        QCOMPARE(
+            std::count(raster.grid.outside.begin(), raster.grid.outside.end(), ClassGrid::outsideUnlisted),
+            water);
         QVERIFY(raster.warnings.back().find("18, 19") != std::string::npos);
         QVERIFY(reconcileRasterWithTable(raster, table, false).ok());
     }

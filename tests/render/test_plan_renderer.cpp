@@ -164,7 +164,7 @@ class TestPlanRenderer : public QObject {
         frame.bottomCellSize = 20.0;
         frame.columns = 1;
         frame.rows = 1;
-        Cell cell; // x 1100-1120, y 4940-4960: 4 m of margin reach the pixels of x 1090-1130, y 4930-4970
+        Cell cell; // x 1100-1120, y 4940-4960: 10 m of margin (a twentieth of 200 m) reach x 1090-1130
         cell.minX = 1100.0;
         cell.minY = 4940.0;
         cell.size = 20.0;
