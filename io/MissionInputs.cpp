@@ -237,8 +237,6 @@ std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& pro
         advice += degreesWithoutCrsHint(raster, start, names(MissionField::startCrs(robot)));
         if (onTheMap(raster.grid, {start.y, start.x}))
             advice += "; x and y the other way round lie on the map: x (easting) comes first";
-    }
-    if (problem.kind == Kind::StartOutsideArea && std::isfinite(start.x) && std::isfinite(start.y))
         if (const auto lonLat = raster.georeference.toWgs84(start); lonLat) {
             const LonLat& at = lonLat.value();
             const auto swapped = raster.georeference.fromCrs("EPSG:4326", {at.latitude, at.longitude});
@@ -246,6 +244,7 @@ std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& pro
                 advice += "; longitude and latitude the other way round lie on the map: a start in degrees "
                           "is longitude first";
         }
+    }
     if (problem.kind == Kind::StartOnObstacle)
         advice += "; move it onto passable land, or let the planner start the robot from the nearest free "
                   "cell (" +

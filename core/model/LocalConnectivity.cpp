@@ -17,23 +17,29 @@ bool LocalConnectivity::canRemove(int cell, const std::vector<int>& owner, std::
     // the other: finding those few first answers the same for a fraction of the search.
     if (searchLimit > smallSideLimit && someNeighbourIsCutOff(cell, owner))
         return false;
+    return search(cell, targets_.front(), owner, searchLimit, targets_.size() - 1) == SearchEnd::FoundAll;
+}
+
+LocalConnectivity::SearchEnd LocalConnectivity::search(int cell, int from, const std::vector<int>& owner,
+                                                       std::size_t limit, std::size_t wanted) {
+    const int region = owner[static_cast<std::size_t>(cell)];
     const int mark = nextMark();
     stamp_[static_cast<std::size_t>(cell)] = mark;
-    stamp_[static_cast<std::size_t>(targets_.front())] = mark;
-    queue_.assign(1, targets_.front());
-    std::size_t found = 1;
-    for (std::size_t head = 0; head < queue_.size() && queue_.size() < searchLimit; ++head)
+    stamp_[static_cast<std::size_t>(from)] = mark;
+    queue_.assign(1, from);
+    std::size_t found = 0;
+    std::size_t head = 0;
+    for (; head < queue_.size() && queue_.size() < limit; ++head)
         for (int next : neighbours_.of(queue_[head])) {
             if (owner[static_cast<std::size_t>(next)] != region ||
                 stamp_[static_cast<std::size_t>(next)] == mark)
                 continue;
             stamp_[static_cast<std::size_t>(next)] = mark;
             queue_.push_back(next);
-            if (std::find(targets_.begin(), targets_.end(), next) != targets_.end() &&
-                ++found == targets_.size())
-                return true;
+            if (std::find(targets_.begin(), targets_.end(), next) != targets_.end() && ++found == wanted)
+                return SearchEnd::FoundAll;
         }
-    return false;
+    return head == queue_.size() ? SearchEnd::RanOut : SearchEnd::HitLimit;
 }
 
 int LocalConnectivity::nextMark() {
@@ -46,29 +52,9 @@ int LocalConnectivity::nextMark() {
 }
 
 bool LocalConnectivity::someNeighbourIsCutOff(int cell, const std::vector<int>& owner) {
-    const int region = owner[static_cast<std::size_t>(cell)];
-    for (std::size_t target = 1; target < targets_.size(); ++target) {
-        const int mark = nextMark();
-        stamp_[static_cast<std::size_t>(cell)] = mark;
-        stamp_[static_cast<std::size_t>(targets_[target])] = mark;
-        queue_.assign(1, targets_[target]);
-        bool exhausted = true; // until the search meets another neighbour or grows past the small side
-        for (std::size_t head = 0; head < queue_.size() && exhausted; ++head)
-            for (int next : neighbours_.of(queue_[head])) {
-                if (owner[static_cast<std::size_t>(next)] != region ||
-                    stamp_[static_cast<std::size_t>(next)] == mark)
-                    continue;
-                stamp_[static_cast<std::size_t>(next)] = mark;
-                queue_.push_back(next);
-                if (queue_.size() >= smallSideLimit ||
-                    std::find(targets_.begin(), targets_.end(), next) != targets_.end()) {
-                    exhausted = false;
-                    break;
-                }
-            }
-        if (exhausted)
+    for (std::size_t target = 1; target < targets_.size(); ++target)
+        if (search(cell, targets_[target], owner, smallSideLimit, 1) == SearchEnd::RanOut)
             return true;
-    }
     return false;
 }
 

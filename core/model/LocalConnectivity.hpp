@@ -29,6 +29,13 @@ class LocalConnectivity {
     // A stamp no cell holds yet.
     int nextMark();
 
+    enum class SearchEnd { FoundAll, RanOut, HitLimit };
+    // Breadth first from `from` through the region of `cell` less `cell`, while fewer than `limit` cells are
+    // queued, until `wanted` of the other neighbours (targets_ but `from`) are found: FoundAll then, RanOut
+    // when every cell it could reach was searched, HitLimit otherwise.
+    SearchEnd search(int cell, int from, const std::vector<int>& owner, std::size_t limit,
+                     std::size_t wanted);
+
     NeighbourSource neighbours_;
     std::vector<int> stamp_;
     int stampValue_ = 0;
