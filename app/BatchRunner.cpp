@@ -142,6 +142,7 @@ int BatchRunner::run() {
 void BatchRunner::execute() {
     assembleMission();
     applyOverrides();
+    checkVehicles();
     auto started = std::chrono::steady_clock::now();
     loadRaster();
     processMilliseconds_.emplace_back("read_raster", millisecondsSince(started));
@@ -231,7 +232,7 @@ void BatchRunner::applyOverrides() {
         const ParameterSpec* spec = findParameter(planner->parameters, parameter.key);
         if (spec == nullptr)
             badInput(parameter.flag + ": planner " + planner->name + " has no parameter " + parameter.key +
-                     " (its parameters: " + parameterKeys(planner->parameters) + ")");
+                     " " + knownParametersNote(parameter.key, planner->parameters));
         std::string problem;
         const auto value = spec->parse(parameter.value, &problem);
         if (!value)
@@ -276,6 +277,25 @@ void BatchRunner::prepareMission() {
         options_.missionFromFlags() ? io::StartUnits::RasterFileCrs : io::StartUnits::PlanningCrs;
     starts_ = valueOrBadInput(io::missionStarts(mission_, raster_, units, names));
     chargers_ = valueOrBadInput(io::missionChargers(mission_, raster_, units, names));
+}
+
+// Settings each fine alone that no vehicle can fly together, checked once flags and robots' own are merged.
+void BatchRunner::checkVehicles() const {
+    const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(mission_);
+    std::vector<std::string> names; // of the robots that cannot fly their settings
+    std::optional<std::string> problem;
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
+        if (auto tooShort = io::flightTooShortProblem(vehicles[robot])) {
+            const std::string& name = mission_.robots[robot].name;
+            names.push_back(name.empty() ? "robot " + std::to_string(robot + 1) : name);
+            problem = problem ? problem : std::move(tooShort);
+        }
+    if (names.empty())
+        return;
+    if (names.size() == vehicles.size() && names.size() > 1)
+        badInput("every robot: " + *problem);
+    badInput(names.front() + (names.size() > 1 ? " and " + std::to_string(names.size() - 1) + " more" : "") +
+             ": " + *problem);
 }
 
 PlanningProblem BatchRunner::prepareProblem() {
@@ -565,6 +585,7 @@ void BatchRunner::executeComparison() {
     namespace fs = std::filesystem;
     assembleMission();
     applyOverrides();
+    checkVehicles();
     for (const ParameterOverride& parameter : options_.parameters) {
         const bool declared = std::any_of(
             options_.comparePlanners.begin(), options_.comparePlanners.end(), [&](const std::string& name) {

@@ -36,6 +36,8 @@ class BatchRunner {
     [[nodiscard]] PlannerChoice comparedPlanner(const std::string& name) const;
     void assembleMission();
     void applyOverrides();
+    // Refuses vehicle settings that cannot fly together (a flight too short for its climb and descent).
+    void checkVehicles() const;
     void addEventFlags();
     void loadRaster();
     // The mission's part of the problem, the same whatever the planner: classes_, starts_ and chargers_.

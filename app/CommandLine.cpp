@@ -1,6 +1,7 @@
 #include "app/CommandLine.hpp"
 
 #include "core/decomposition/DecompositionOptions.hpp"
+#include "core/model/NameSuggestion.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/parameters/NumberText.hpp"
 #include "core/parameters/ParameterResolution.hpp"
@@ -57,6 +58,16 @@ const FlagSpec* findFlag(std::string_view name) {
     const auto found = std::find_if(flagSpecs.begin(), flagSpecs.end(),
                                     [name](const FlagSpec& spec) { return spec.name == name; });
     return found == flagSpecs.end() ? nullptr : &*found;
+}
+
+// "unknown flag --cruise (did you mean --cruise-speed? see mcpp --help)".
+std::string unknownFlagMessage(std::string_view name) {
+    std::vector<std::string> known;
+    for (const FlagSpec& spec : flagSpecs)
+        known.emplace_back(spec.name);
+    const auto meant = closestName(std::string(name), known);
+    return "unknown flag " + std::string(name) + " (" +
+           (meant ? "did you mean " + *meant + "? " : std::string()) + "see mcpp --help)";
 }
 
 std::optional<int> parseNonNegativeInteger(std::string_view text) {
@@ -142,6 +153,16 @@ bool anyPlannerDeclares(const std::string& key) {
         if (findParameter(planner.parameters, key) != nullptr)
             return true;
     return false;
+}
+
+// The key any planner declares that a mistyped one most likely meant.
+std::optional<std::string> closestParameterKey(const std::string& typed) {
+    std::vector<std::string> keys;
+    for (const PlannerDescription& planner : plannerDescriptions())
+        for (const ParameterSpec& spec : planner.parameters)
+            if (std::find(keys.begin(), keys.end(), spec.key) == keys.end())
+                keys.push_back(spec.key);
+    return closestName(typed, keys);
 }
 
 // Words of `text` on lines of at most `width` characters, each line indented.
@@ -244,7 +265,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
         }
         const FlagSpec* spec = findFlag(name);
         if (spec == nullptr)
-            return failure("unknown flag " + std::string(name) + " (see mcpp --help)");
+            return failure(unknownFlagMessage(name));
         if (!spec->repeatable && std::find(seen.begin(), seen.end(), spec->name) != seen.end()) {
             return failure(std::string(spec->name) + " is given more than once");
         }
@@ -318,9 +339,12 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             const std::string key = std::string(trimmedText(std::string_view(value).substr(0, equals)));
             if (equals == std::string::npos || key.empty())
                 return failure("--param: " + quoted(value) + " is not KEY=VALUE");
-            if (!anyPlannerDeclares(key))
-                return failure("--param " + key +
-                               ": no planner has a parameter of that name (see mcpp --help)");
+            if (!anyPlannerDeclares(key)) {
+                const auto meant = closestParameterKey(key);
+                return failure("--param " + key + ": no planner has a parameter of that name (" +
+                               (meant ? "did you mean " + *meant + "? " : std::string()) +
+                               "see mcpp --help-planner NAME)");
+            }
             options.parameters.push_back({key, value.substr(equals + 1), "--param " + key});
         } else if (flag == "--band") {
             const auto band = parsePositiveInteger(value);

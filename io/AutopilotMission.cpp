@@ -14,11 +14,6 @@
 namespace mcpp::io {
 namespace {
 
-// ArduCopter's default climb and descent rates (WPNAV_SPEED_UP, WPNAV_SPEED_DN); a fixed wing climbs and
-// glides down faster, so its flights come out a little long, never short.
-constexpr double climbMetresPerSecond = 2.5;
-constexpr double descentMetresPerSecond = 1.5;
-
 using internal::collinearAndBetween;
 
 // A commanded speed along a path as steps: each holds from its first waypoint up to the next step's. A step
@@ -420,9 +415,8 @@ double flightReachMetres(const VehicleSettings& vehicle) {
     if (!isAircraft(vehicle.type) || !(vehicle.cruiseSpeedMetresPerSecond > 0.0) ||
         !(vehicle.flightTimeSeconds > 0.0))
         return 0.0;
-    const double upAndDown =
-        vehicle.altitudeMetres / climbMetresPerSecond + vehicle.altitudeMetres / descentMetresPerSecond;
-    return std::max(0.0, vehicle.flightTimeSeconds - upAndDown) * vehicle.cruiseSpeedMetresPerSecond / 2.0;
+    return std::max(0.0, vehicle.flightTimeSeconds - climbAndDescentSeconds(vehicle)) *
+           vehicle.cruiseSpeedMetresPerSecond / 2.0;
 }
 
 MissionSize missionSize(const CoveragePath& path, const CellGraph& cells, const VehicleSettings& vehicle,

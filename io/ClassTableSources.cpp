@@ -1,8 +1,8 @@
 #include "io/ClassTableSources.hpp"
 
+#include "core/model/NameSuggestion.hpp"
 #include "io/internal/ClassTablePresets.hpp"
 #include "io/internal/LegendReader.hpp"
-#include "io/internal/NameSuggestion.hpp"
 #include "io/internal/ProductRecognition.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -67,7 +67,7 @@ Result<ClassTable> presetClassTable(const std::string& name) {
         if (preset.name == name)
             return ClassTable(preset.classes);
     }
-    const auto meant = internal::closestName(name, presetNames());
+    const auto meant = closestName(name, presetNames());
     return Result<ClassTable>::failure("unknown class table preset \"" + name + "\"" +
                                        (meant ? ": did you mean \"" + *meant + "\"?" : std::string()) +
                                        " (known: " + knownPresetNames() + ")");

@@ -2,11 +2,13 @@
 
 #include "core/model/BatteryEndurance.hpp"
 #include "core/model/HumanUnits.hpp"
+#include "core/model/NameSuggestion.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/parameters/NumberText.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/internal/ClassTableJson.hpp"
 #include "io/internal/EventsJson.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/JsonValue.hpp"
@@ -72,8 +74,11 @@ class MissionReader {
     bool onlyKeys(const QJsonObject& object, const std::string& path, const std::set<std::string>& allowed) {
         for (auto it = object.begin(); it != object.end(); ++it) {
             const std::string key = it.key().toStdString();
-            if (allowed.count(key) == 0)
-                return fail(join(path, key), "unknown key");
+            if (allowed.count(key) == 0) {
+                const auto meant = closestName(key, {allowed.begin(), allowed.end()});
+                return fail(join(path, key),
+                            "unknown key" + (meant ? ": did you mean \"" + *meant + "\"?" : std::string()));
+            }
         }
         return true;
     }
@@ -441,8 +446,8 @@ bool readPlanner(MissionReader& reader, const QJsonValue& value, int version, Pl
         const std::string keyPath = MissionReader::join(parametersPath, key);
         const ParameterSpec* spec = findParameter(description->parameters, key);
         if (spec == nullptr)
-            return reader.fail(keyPath, "unknown parameter of planner " + choice.planner +
-                                            " (parameters: " + parameterKeys(description->parameters) + ")");
+            return reader.fail(keyPath, "unknown parameter of planner " + choice.planner + " " +
+                                            knownParametersNote(key, description->parameters));
         if (!readParameter(reader, it.value(), keyPath, *spec, values))
             return false;
     }
@@ -651,18 +656,7 @@ std::string missionToJson(const Mission& mission) {
     JsonValue& classes = root.add("classes", JsonValue::object());
     classes.add("preset", mission.preset);
     classes.add("missing_as_obstacles", mission.missingClassesAsObstacles);
-    JsonValue& table = classes.add("table", JsonValue::array());
-    for (const LandCoverClass& entry : mission.classes.classes()) {
-        JsonValue& row = table.push(JsonValue::object());
-        row.add("value", static_cast<int>(entry.value));
-        row.add("name", entry.name);
-        row.add("color", internal::formatColor(entry.colorRgb));
-        row.add("speed_mps", entry.speedMetresPerSecond);
-        row.add("fov_m", entry.fieldOfViewMetres);
-        row.add("passable", entry.passable);
-        if (entry.detectionProbability)
-            row.add("detection_probability", *entry.detectionProbability);
-    }
+    internal::addClassRows(classes.add("table", JsonValue::array()), mission.classes);
 
     JsonValue& robots = root.add("robots", JsonValue::array());
     for (const RobotSpec& robot : mission.robots) {

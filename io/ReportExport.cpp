@@ -5,6 +5,7 @@
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/PlanExport.hpp"
+#include "io/internal/ClassTableJson.hpp"
 #include "io/internal/EventsJson.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
@@ -121,6 +122,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         else
             std::visit([&, name = key](const auto& held) { parameters.add(name, held); }, value);
     }
+    // The table the plan used, as planned: a cruise speed the fleet shares stands in for the class speeds.
+    internal::addClassRows(root.add("classes", JsonValue::array()), context.classes);
     JsonValue& robots = root.add("robots", JsonValue::array());
     const SortieLayer* sorties = sortieLayerOf(context.plan);
     const TimelineLayer* timeline = timelineLayerOf(context.plan);
@@ -144,6 +147,11 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("mission_items", mission.items);
         item.add("mission_parts", static_cast<int>(mission.parts.size()));
         item.add("mission_time_s", mission.seconds);
+        // The whole mission as one flight from the start and back, an aircraft's climb and descent included:
+        // what the console holds against the flight time when it splits the mission.
+        if (!mission.parts.empty())
+            item.add("mission_one_flight_s",
+                     partSeconds(mission, {0, mission.points.size() - 1}, vehicle, context.plan.cells));
         // Each file's own flight, for a battery: an aircraft's with its trips to and from the start.
         JsonValue& partSeconds = item.add("mission_part_seconds", JsonValue::array());
         for (const MissionPart& part : mission.parts)

@@ -71,6 +71,23 @@ std::optional<std::string> flightTimeProblem(double seconds) {
            formatQuantity(seconds, 12) + " s";
 }
 
+double climbAndDescentSeconds(const VehicleSettings& vehicle) {
+    if (!isAircraft(vehicle.type))
+        return 0.0;
+    return vehicle.altitudeMetres / climbMetresPerSecond + vehicle.altitudeMetres / descentMetresPerSecond;
+}
+
+std::optional<std::string> flightTooShortProblem(const VehicleSettings& vehicle) {
+    const double upAndDown = climbAndDescentSeconds(vehicle);
+    if (!(vehicle.flightTimeSeconds > 0.0) || upAndDown < vehicle.flightTimeSeconds)
+        return std::nullopt;
+    return "a flight of " + formatDuration(vehicle.flightTimeSeconds) +
+           " leaves no time to survey: climbing to " + formatQuantity(vehicle.altitudeMetres, 4) +
+           " m and coming back down take " + formatDuration(upAndDown) + " (at " +
+           formatQuantity(climbMetresPerSecond, 3) + " and " + formatQuantity(descentMetresPerSecond, 3) +
+           " m/s); give a longer flight time or a lower altitude";
+}
+
 std::optional<std::string> turnaroundProblem(double seconds) {
     if (seconds >= 0.0 && seconds <= maximumTurnaroundSeconds)
         return std::nullopt;

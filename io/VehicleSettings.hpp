@@ -58,6 +58,17 @@ struct VehicleOverrides {
     return type != VehicleType::Rover;
 }
 
+// The altitude a robot's waypoints are given above home: a rover drives on the ground whatever its settings
+// hold (a mission file's altitude is the fleet's, for its aircraft).
+[[nodiscard]] constexpr double waypointAltitudeMetres(const VehicleSettings& vehicle) {
+    return isAircraft(vehicle.type) ? vehicle.altitudeMetres : 0.0;
+}
+
+// What the time one battery allows is called: an aircraft's "flight time", a rover's "battery time".
+[[nodiscard]] constexpr const char* batteryTimeName(VehicleType type) {
+    return isAircraft(type) ? "flight time" : "battery time";
+}
+
 // Whether a mission split into parts ends later than its path takes: an aircraft flies to each part and
 // back, and turnarounds wait between parts. A rover's parts without turnarounds end with its path.
 [[nodiscard]] inline bool splitMissionEndsLater(const VehicleSettings& vehicle) {
@@ -79,6 +90,16 @@ constexpr double minimumFlightTimeSeconds = 60.0;
 constexpr double maximumFlightTimeSeconds = 3600.0 * 1000.0;
 // What is wrong with a flight time, for any reader to name with its field: 0 (no limit) or 60 s to 1000 h.
 [[nodiscard]] std::optional<std::string> flightTimeProblem(double seconds);
+
+// ArduCopter's default climb and descent rates (WPNAV_SPEED_UP, WPNAV_SPEED_DN); a fixed wing climbs and
+// glides down faster, so its flights come out a little long, never short.
+constexpr double climbMetresPerSecond = 2.5;
+constexpr double descentMetresPerSecond = 1.5;
+// What an aircraft's climb to its altitude and descent back take on every flight; 0 for a rover.
+[[nodiscard]] double climbAndDescentSeconds(const VehicleSettings& vehicle);
+// Why the vehicle cannot survey within its flight time: climbing to its altitude and coming back down take
+// all of it ("a flight of 1 min leaves no time to survey: ...").
+[[nodiscard]] std::optional<std::string> flightTooShortProblem(const VehicleSettings& vehicle);
 
 // The longest turnaround a vehicle may be given: a day on the ground between two parts.
 constexpr double maximumTurnaroundSeconds = 24.0 * 3600.0;

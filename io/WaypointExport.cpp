@@ -326,7 +326,7 @@ std::string qGroundControlItems(const AutopilotMission& mission, const MissionPa
         if (!out.empty())
             out += ",\n";
     };
-    const double altitude = vehicle.altitudeMetres;
+    const double altitude = waypointAltitudeMetres(vehicle);
     if (isAircraft(vehicle.type))
         appendPlacedItem(out, jumpId, commandTakeoff, takeoffPitch(vehicle.type), home, altitude);
     // cruiseSpeed is only QGroundControl's planning default: the vehicle is told its speed by an item, which
@@ -443,7 +443,7 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
         if (i > 0 && mission.changesSpeedAt(point))
             speedRow(index++, mission.commandedSpeeds[point]);
         row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0}, points[i].latitude,
-            points[i].longitude, vehicle.altitudeMetres);
+            points[i].longitude, waypointAltitudeMetres(vehicle));
     }
     if (isAircraft(vehicle.type))
         row(index, 0, frameMission, commandReturnToLaunch, {0, 0, 0, 0}, 0, 0, 0);
@@ -574,8 +574,10 @@ std::string splitReason(const ExportContext& context, int robot, const Autopilot
                           std::to_string(vehicle.maxWaypoints));
     const double whole = partSeconds(mission, {0, mission.points.size() - 1}, vehicle, context.plan.cells);
     if (vehicle.flightTimeSeconds > 0.0 && whole > vehicle.flightTimeSeconds)
-        reasons.push_back("takes " + formatDuration(whole) + ", longer than its " +
-                          formatDuration(vehicle.flightTimeSeconds) + " flight time");
+        reasons.push_back("takes " + formatDuration(whole) +
+                          (isAircraft(vehicle.type) ? " as one flight, climb and descent included" : "") +
+                          ", longer than its " + formatDuration(vehicle.flightTimeSeconds) + " " +
+                          batteryTimeName(vehicle.type));
     std::string reason;
     for (const std::string& each : reasons)
         reason += (reason.empty() ? "" : ", and ") + each;
@@ -630,8 +632,9 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
     const bool aircraft = isAircraft(vehicle.type);
     return context.robotName(robot) + ": " + which + formatDuration(flights.longestSeconds) +
            (aircraft ? " with the flights to and from its start" : "") + ", longer than its " +
-           formatDuration(vehicle.flightTimeSeconds) + " flight time: " +
-           (aircraft ? outOfReachNote(vehicle, mission) : "its path has stretches longer than one flight") +
+           formatDuration(vehicle.flightTimeSeconds) + " " + batteryTimeName(vehicle.type) + ": " +
+           (aircraft ? outOfReachNote(vehicle, mission)
+                     : "its path has stretches longer than one battery lasts") +
            " (fits_flight 0 in the GeoPackage's missions layer). Add robots, or start them nearer that "
            "ground, "
            "or plan with wavefront-battery and chargers";

@@ -3,6 +3,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/AutopilotMission.hpp"
 #include "render/MapDecorations.hpp"
+#include "render/PlanFrame.hpp"
 #include "ui/CellToolTip.hpp"
 #include "ui/MissionDocument.hpp"
 
@@ -52,6 +53,8 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
     connect(document_, &MissionDocument::planChanged, this, [this] {
         renderer_.setPlan(document_->plan());
         mapImage_.invalidate();
+        if (fitted_) // a view the user has not moved follows the plan's frame
+            zoomToFit();
         update();
     });
     connect(document_, &MissionDocument::staleChanged, this, [this](bool stale) {
@@ -135,12 +138,15 @@ void MapCanvas::zoomToFit() {
     const ClassGrid* grid = document_->grid();
     if (grid == nullptr || width() <= 0 || height() <= 0)
         return;
+    // The plan's frame, as plan.png shows it: a plan over an area of interest fills the view, not a corner.
+    const ClassGrid frame = render::planFrame(*grid, {document_->plan()});
     const double margin = 12.0;
-    scale_ = std::min((width() - 2.0 * margin) / std::max(grid->width(), 1e-9),
-                      (height() - 2.0 * margin) / std::max(grid->height(), 1e-9));
+    scale_ = std::min((width() - 2.0 * margin) / std::max(frame.width(), 1e-9),
+                      (height() - 2.0 * margin) / std::max(frame.height(), 1e-9));
     scale_ = std::max(scale_, 1e-9);
-    centre_ = {grid->originX + grid->width() / 2.0, grid->originY - grid->height() / 2.0};
+    centre_ = {frame.originX + frame.width() / 2.0, frame.originY - frame.height() / 2.0};
     fitPending_ = false;
+    fitted_ = true;
     update();
 }
 
@@ -169,6 +175,7 @@ void MapCanvas::zoomAround(QPointF devicePoint, double factor) {
 }
 
 void MapCanvas::viewMoved() {
+    fitted_ = false;
     redrawTimer_.start();
     update();
 }

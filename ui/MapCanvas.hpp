@@ -98,6 +98,7 @@ class MapCanvas : public QWidget {
     double scale_ = 1.0; // device pixels per metre
     MapPoint centre_;
     bool fitPending_ = true;
+    bool fitted_ = false; // the view is as zoomToFit left it: no pan or zoom since
     int selectedStart_ = -1;
 
     // One press-move-release gesture.

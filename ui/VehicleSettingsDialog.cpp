@@ -99,6 +99,8 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     for (const Row& row : rows_) {
         connect(row.maxWaypoints, &QSpinBox::valueChanged, this, &VehicleSettingsDialog::checkLimits);
         connect(row.flightTime, &QDoubleSpinBox::valueChanged, this, &VehicleSettingsDialog::checkLimits);
+        connect(row.altitude, &QDoubleSpinBox::valueChanged, this, &VehicleSettingsDialog::checkLimits);
+        connect(row.type, &QComboBox::currentIndexChanged, this, &VehicleSettingsDialog::checkLimits);
     }
     checkLimits();
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -210,6 +212,7 @@ void VehicleSettingsDialog::followDefaults() {
 void VehicleSettingsDialog::checkLimits() {
     QStringList items;
     QStringList flights;
+    QStringList climbs; // flights too short for the climb and descent
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         const QString name = table_->verticalHeaderItem(static_cast<int>(i))->text();
         const int limit = rows_[i].maxWaypoints->value();
@@ -218,6 +221,8 @@ void VehicleSettingsDialog::checkLimits() {
         const double minutes = rows_[i].flightTime->value();
         if (minutes > 0.0 && minutes * 60.0 < io::minimumFlightTimeSeconds)
             flights << tr("%1: %2 min").arg(name).arg(minutes);
+        else if (const auto tooShort = io::flightTooShortProblem(settingsOf(rows_[i])))
+            climbs << tr("%1: %2.").arg(name, QString::fromStdString(*tooShort));
     }
     QStringList problems;
     if (!items.isEmpty())
@@ -227,6 +232,7 @@ void VehicleSettingsDialog::checkLimits() {
     if (!flights.isEmpty())
         problems << tr("A flight time must be at least 1 min, or 0 for no limit. Too short: %1.")
                         .arg(flights.join(QStringLiteral(", ")));
+    problems << climbs;
     problem_->setText(problems.join(QLatin1Char(' ')));
     problem_->setVisible(!problems.isEmpty());
     if (okButton_ != nullptr)

@@ -1,5 +1,6 @@
 #include "core/parameters/ParameterResolution.hpp"
 
+#include "core/model/NameSuggestion.hpp"
 #include "core/model/PlanningError.hpp"
 
 #include <algorithm>
@@ -19,11 +20,19 @@ std::string parameterKeys(const std::vector<ParameterSpec>& specs) {
     return keys.empty() ? "none" : keys;
 }
 
+std::string knownParametersNote(const std::string& typed, const std::vector<ParameterSpec>& specs) {
+    std::vector<std::string> keys;
+    for (const ParameterSpec& spec : specs)
+        keys.push_back(spec.key);
+    const auto meant = closestName(typed, keys);
+    return "(" + (meant ? "did you mean \"" + *meant + "\"? " : std::string()) +
+           "parameters: " + parameterKeys(specs) + ")";
+}
+
 ParameterValues resolveParameters(const std::vector<ParameterSpec>& specs, const ParameterValues& given) {
     for (const auto& [key, value] : given.all())
         if (findParameter(specs, key) == nullptr)
-            throw PlanningError::aboutParameter(
-                key, "unknown parameter (parameters: " + parameterKeys(specs) + ")");
+            throw PlanningError::aboutParameter(key, "unknown parameter " + knownParametersNote(key, specs));
     ParameterValues resolved;
     for (const ParameterSpec& spec : specs) {
         const ParameterValue* value = given.find(spec.key);

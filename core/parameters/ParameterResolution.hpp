@@ -16,5 +16,9 @@ namespace mcpp {
                                                  const std::string& key);
 // "a, b, c": the keys, for messages.
 [[nodiscard]] std::string parameterKeys(const std::vector<ParameterSpec>& specs);
+// What follows a message about a key no spec has: "(did you mean \"rounds\"? parameters: a, b, c)", the
+// question only when one key is close.
+[[nodiscard]] std::string knownParametersNote(const std::string& typed,
+                                              const std::vector<ParameterSpec>& specs);
 
 } // namespace mcpp

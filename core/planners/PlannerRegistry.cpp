@@ -1,5 +1,6 @@
 #include "core/planners/PlannerRegistry.hpp"
 
+#include "core/model/NameSuggestion.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/CppiedPlanner.hpp"
 #include "core/planners/DarpPlanner.hpp"
@@ -73,7 +74,9 @@ std::string unknownPlannerMessage(const std::string& name) {
     std::string known;
     for (const std::string& planner : availablePlanners())
         known += (known.empty() ? "" : ", ") + planner;
-    return "unknown planner \"" + name + "\" (available: " + known + ")";
+    const auto meant = closestName(name, availablePlanners());
+    return "unknown planner \"" + name + "\"" +
+           (meant ? ": did you mean \"" + *meant + "\"?" : std::string()) + " (available: " + known + ")";
 }
 
 const std::string& defaultPlannerName() {

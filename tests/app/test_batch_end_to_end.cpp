@@ -481,6 +481,22 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
     const double covered = report.value("covered_fraction").toDouble();
     QVERIFY(covered > 0.5 && covered <= 1.0 + 1e-9);
     QCOMPARE(report.value("planner").toString(), planner);
+    // The class table the plan used, as a mission file holds it.
+    const auto classes = report.value("classes").toArray();
+    QVERIFY(!classes.isEmpty());
+    QSet<int> values;
+    for (const QJsonValue& entry : classes) {
+        const QJsonObject row = entry.toObject();
+        values.insert(row.value("value").toInt(-1));
+        QVERIFY(row.value("color").toString().startsWith(QLatin1Char('#')));
+        QVERIFY(row.value("speed_mps").toDouble(-1.0) >= 0.0);
+        QVERIFY(row.value("fov_m").toDouble() > 0.0);
+        QVERIFY(row.value("passable").isBool());
+    }
+    QCOMPARE(values.size(), classes.size());     // one row a class
+    for (int robot = 0; robot < robots; ++robot) // the whole mission as one flight is at least its path
+        QVERIFY(robotReports.at(robot).toObject().value("mission_one_flight_s").toDouble() >=
+                robotReports.at(robot).toObject().value("mission_time_s").toDouble() - 1e-6);
     // What the run took, written last so it includes the other files.
     const auto process = report.value("process_ms").toObject();
     for (const char* step : {"read_raster", "plan", "write_outputs"})

@@ -232,6 +232,10 @@ void TestCommandLine::errors_data() {
                                 << "--raster needs at least one --start X,Y";
     QTest::newRow("unknown flag") << words("--batch m.json --out o --frobnicate")
                                   << "unknown flag --frobnicate (see mcpp --help)";
+    QTest::newRow("flag cut short") << words("--batch m.json --out o --cruise 3")
+                                    << "unknown flag --cruise (did you mean --cruise-speed? see mcpp --help)";
+    QTest::newRow("flag misspelt") << words("--batch m.json --out o --altitud 3")
+                                   << "unknown flag --altitud (did you mean --altitude? see mcpp --help)";
     QTest::newRow("unknown short flag") << words("-x") << "unknown flag -x (see mcpp --help)";
     QTest::newRow("unknown flag with value")
         << words("--colour=red") << "unknown flag --colour (see mcpp --help)";
@@ -304,9 +308,17 @@ void TestCommandLine::errors_data() {
         << words("--batch m.json --out o --param closed_tour") << "--param: \"closed_tour\" is not KEY=VALUE";
     QTest::newRow("--param without key")
         << words("--batch m.json --out o --param =3") << "--param: \"=3\" is not KEY=VALUE";
-    QTest::newRow("--param unknown key")
-        << words("--batch m.json --out o --param closed_tours=true")
-        << "--param closed_tours: no planner has a parameter of that name (see mcpp --help)";
+    QTest::newRow("--param unknown key") << words("--batch m.json --out o --param closed_tours=true")
+                                         << "--param closed_tours: no planner has a parameter of that name "
+                                            "(did you mean closed_tour? see mcpp "
+                                            "--help-planner NAME)";
+    QTest::newRow("--param key far from any")
+        << words("--batch m.json --out o --param frobnicate=1")
+        << "--param frobnicate: no planner has a parameter of that name (see mcpp --help-planner NAME)";
+    QTest::newRow("--planner misspelt")
+        << words("--batch m.json --out o --planner darpp")
+        << "--planner: unknown planner \"darpp\": did you mean \"darp\"? (available: " +
+               QString::fromStdString(availableList()) + ")";
     QTest::newRow("--planner unknown")
         << words("--batch m.json --out o --planner dijkstra")
         << "--planner: unknown planner \"dijkstra\" (available: " + QString::fromStdString(availableList()) +

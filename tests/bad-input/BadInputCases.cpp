@@ -251,6 +251,12 @@ std::vector<BadInputCase> makeCases() {
         // Flags.
         {"unknown flag", goodMission({"--frobnicate"}), 2, "--frobnicate", Gui::None, {}},
         {"zero threads", goodMission({"--threads", "0"}), 2, "--threads", Gui::None, {}},
+        {"flight too short for the climb",
+         goodMission({"--vehicle", "multirotor", "--altitude", "120", "--flight-time", "1min"}),
+         2,
+         "a flight of 1 min leaves no time to survey: climbing to 120 m and coming back down take 2 min 8 s",
+         Gui::None,
+         {}},
         {"band zero", goodMission({"--band", "0"}), 2, "--band", Gui::None, {}},
         {"purity out of range", goodMission({"--purity", "1.5"}), 2, "1.5", Gui::None, {}},
         {"unknown planner",

@@ -638,6 +638,29 @@ class AutopilotMissionTest : public QObject {
         QCOMPARE(flightReachMetres(drone), 0.0);
     }
 
+    void flightsTooShortForTheClimbAreRefused() {
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.altitudeMetres = 120.0;
+        drone.flightTimeSeconds = 60.0;
+        QCOMPARE(climbAndDescentSeconds(drone), 120.0 / 2.5 + 120.0 / 1.5); // 48 s up, 80 s down
+        const auto problem = flightTooShortProblem(drone);
+        QVERIFY(problem.has_value());
+        QVERIFY2(
+            problem->find("a flight of 1 min leaves no time to survey: climbing to 120 m and coming back "
+                          "down take 2 min 8 s") != std::string::npos,
+            problem->c_str());
+        drone.flightTimeSeconds = 129.0; // a second of survey left: short, but a flight
+        QVERIFY(!flightTooShortProblem(drone));
+        drone.flightTimeSeconds = 0.0; // no limit
+        QVERIFY(!flightTooShortProblem(drone));
+        VehicleSettings rover = drone;
+        rover.type = VehicleType::Rover;
+        rover.flightTimeSeconds = 60.0;
+        QCOMPARE(climbAndDescentSeconds(rover), 0.0);
+        QVERIFY(!flightTooShortProblem(rover));
+    }
+
     void aircraftTakeOffAtTheStartAndReturnToItInEveryPart() {
         LawnmowerExport lawnmowerExport;
         lawnmowerExport.settings.vehicle.type = VehicleType::Multirotor;
@@ -664,6 +687,8 @@ class AutopilotMissionTest : public QObject {
             QCOMPARE(takeoff["command"].toInt(), 22);
             QCOMPARE(takeoff["params"].toArray()[4].toDouble(), start.latitude);
             QCOMPARE(takeoff["params"].toArray()[6].toDouble(), 45.0);
+            QCOMPARE(items[2].toObject()["command"].toInt(), 16); // waypoints at the aircraft's altitude
+            QCOMPARE(items[2].toObject()["Altitude"].toDouble(), 45.0);
             QCOMPARE(items[1].toObject()["command"].toInt(), 178);    // then the speed the part starts at
             QCOMPARE(items.last().toObject()["command"].toInt(), 20); // and back to launch at the end
             QCOMPARE(items.last().toObject()["frame"].toInt(), 2);
@@ -680,6 +705,8 @@ class AutopilotMissionTest : public QObject {
             QCOMPARE(static_cast<int>(rows.size()), mission.parts[part].items);
             QVERIFY(std::abs(rows[0][8].toDouble() - start.latitude) < 1e-8); // home, to 8 decimals
             QCOMPARE(rows[1][3], QByteArray("22"));
+            QCOMPARE(rows[3][3], QByteArray("16"));
+            QCOMPARE(rows[3][10].toDouble(), 45.0);
             QCOMPARE(rows.last()[3], QByteArray("20"));
             for (const QByteArrayList& row : rows)
                 if (row[3] == "178")

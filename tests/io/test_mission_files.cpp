@@ -307,6 +307,31 @@ class MissionFilesTest : public QObject {
         QCOMPARE(loaded.error(), path + ": exports.turnaround_s: expected a number, found a string");
     }
 
+    // A mistyped key or planner parameter names the one most likely meant; one far from any, none.
+    void mistypedKeysNameTheKeyMeant() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("typo.json").toStdString();
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "exports": {"altitud_m": 30}})");
+        auto loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path + ": exports.altitud_m: unknown key: did you mean \"altitude_m\"?");
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "exports": {"colour": 30}})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path + ": exports.colour: unknown key");
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}],
+                            "planner": {"name": "mcpp-mlct", "parameters": {"fewer_turn_slack": 2}}})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QVERIFY2(
+            loaded.error().find("planner.parameters.fewer_turn_slack: unknown parameter of planner mcpp-mlct "
+                                "(did you mean \"fewer_turns_slack\"? parameters: ") != std::string::npos,
+            loaded.error().c_str());
+    }
+
     void rasterPathIsRelativeToTheMissionFile() {
         Mission mission;
         mission.rasterPath = "../data/map.tif";

@@ -232,8 +232,9 @@ class WaypointFilesTest : public QObject {
             const LonLat expected = reference_.toWgs84({waypoint.x, waypoint.y}).value();
             QVERIFY(std::abs(params[4].toDouble() - expected.latitude) < 1e-9);
             QVERIFY(std::abs(params[5].toDouble() - expected.longitude) < 1e-9);
-            QCOMPARE(params[6].toDouble(), 25.0);
-            QCOMPARE(item["Altitude"].toDouble(), 25.0);
+            QCOMPARE(params[6].toDouble(),
+                     0.0); // a rover drives on the ground, whatever altitude it is given
+            QCOMPARE(item["Altitude"].toDouble(), 0.0);
         }
         const QJsonArray home = mission["plannedHomePosition"].toArray();
         QCOMPARE(home.size(), 3);
@@ -308,7 +309,7 @@ class WaypointFilesTest : public QObject {
         const LonLat expected = reference_.toWgs84({first.x, first.y}).value();
         QVERIFY(std::abs(std::stod(rows[2][8]) - expected.latitude) < 1e-7);
         QVERIFY(std::abs(std::stod(rows[2][9]) - expected.longitude) < 1e-7);
-        QCOMPARE(std::stod(rows[2][10]), ExportSettings{}.vehicle.altitudeMetres);
+        QCOMPARE(std::stod(rows[2][10]), 0.0); // a rover's, whatever the settings' altitude
         QCOMPARE(rows[0][8], rows[2][8]);
     }
 

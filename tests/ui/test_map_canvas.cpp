@@ -156,6 +156,36 @@ class TestMapCanvas : public QObject {
         QCOMPARE(colourAt(cursor), QColor(232, 232, 228));
     }
 
+    // A plan over a corner of the map (an area of interest) fills the view the user left fitted; once the
+    // user zooms, a new plan leaves the view alone.
+    void aFittedViewFollowsThePlan() {
+        PlanningProblem problem;
+        problem.grid = squareRaster()->grid;
+        problem.grid.outside.assign(problem.grid.values.size(), ClassGrid::outsideArea);
+        for (int row = 0; row < 10; ++row) // 300 m x 300 m in the north-west corner
+            for (int column = 0; column < 10; ++column)
+                problem.grid.outside[problem.grid.index(column, row)] = 0;
+        problem.classes = document_->mission().classes;
+        problem.starts = {{500045.0, 4099955.0}};
+        problem.planner = defaultPlannerChoice("mcpp-mlct");
+        const auto plan = std::make_shared<const Plan>(makePlanner("mcpp-mlct")->plan(problem, {}));
+        const double wholeMapMetres = canvas_->scaleBarMetres();
+        document_->setPlan(plan, document_->currentInputs());
+        const QPointF topLeft = canvas_->devicePointOf({500000.0, 4100000.0});
+        const QPointF bottomRight = canvas_->devicePointOf({500300.0, 4099700.0});
+        QVERIFY2(bottomRight.y() - topLeft.y() > 300.0, // the whole map would give it 90 pixels
+                 qPrintable(QStringLiteral("%1").arg(bottomRight.y() - topLeft.y())));
+        QVERIFY(topLeft.x() >= 0.0 && topLeft.y() >= 0.0 && bottomRight.x() <= 800.0 &&
+                bottomRight.y() <= 600.0);
+        QVERIFY(canvas_->scaleBarMetres() < wholeMapMetres);
+        canvas_->zoomOut();
+        const double chosen = canvas_->scaleBarMetres();
+        document_->setPlan(std::make_shared<const Plan>(*plan), document_->currentInputs());
+        QCOMPARE(canvas_->scaleBarMetres(), chosen);
+        canvas_->zoomToFit(); // asked for: the plan's frame again
+        QCOMPARE(canvas_->devicePointOf({500000.0, 4100000.0}), topLeft);
+    }
+
     void toolTipExplainsCellsWhosePathCrossesWater() {
         // Scattered water pixels; sub-cells of 2 x 2 pixels keep one water pixel in four (blocked threshold).
         const test::RandomMapSpec spec = test::waterCrossingSpec();

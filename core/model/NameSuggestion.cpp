@@ -1,11 +1,16 @@
-#include "io/internal/NameSuggestion.hpp"
-
-#include "io/internal/TextFiles.hpp"
+#include "core/model/NameSuggestion.hpp"
 
 #include <algorithm>
+#include <cctype>
 
-namespace mcpp::io::internal {
+namespace mcpp {
 namespace {
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char letter) { return static_cast<char>(std::tolower(letter)); });
+    return text;
+}
 
 // Letters to insert, delete or change to turn one text into the other.
 std::size_t editDistance(const std::string& from, const std::string& to) {
@@ -49,4 +54,4 @@ std::optional<std::string> closestName(const std::string& typed, const std::vect
     return best;
 }
 
-} // namespace mcpp::io::internal
+} // namespace mcpp
