@@ -736,6 +736,13 @@ std::vector<double> robotBatteries(const Mission& mission) {
     return batteries;
 }
 
+std::vector<double> robotCruiseSpeeds(const Mission& mission) {
+    std::vector<double> speeds;
+    for (const VehicleSettings& vehicle : robotVehicles(mission))
+        speeds.push_back(vehicle.cruiseSpeedMetresPerSecond);
+    return speeds;
+}
+
 double fleetCruiseSpeed(const Mission& mission) {
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     if (vehicles.empty())
@@ -754,8 +761,7 @@ std::string robotLabel(const Mission& mission, std::size_t robot) {
     return name.empty() ? "Robot " + std::to_string(robot + 1) : name;
 }
 
-// Why planning keeps the land-cover speeds although some robots cruise at their own: one plan balances
-// robots of one speed.
+// Robots that cruise at speeds of their own, each named with its speed: each is timed at it.
 std::string mixedCruiseSpeedsNote(const Mission& mission, const std::vector<VehicleSettings>& vehicles) {
     std::string speeds;
     for (std::size_t robot = 0; robot < vehicles.size(); ++robot) {
@@ -764,11 +770,11 @@ std::string mixedCruiseSpeedsNote(const Mission& mission, const std::vector<Vehi
                   (speed > 0.0 ? formatQuantity(speed, 4) + " m/s" : "the land cover's");
     }
     return "the robots' cruise speeds differ (" + speeds +
-           "): the plan uses the class table's speeds, and the waypoint files each robot's cruise "
-           "speed; give every robot the same cruise speed to plan at it";
+           "): robots with a cruise speed drive at it over every passable class, the others at the class "
+           "table's speeds, and each is timed at its own";
 }
 
-// A shared cruise speed replaces the class table's speeds; otherwise say why the plan keeps them.
+// A shared cruise speed replaces the class table's speeds; robots of different ones drive each at its own.
 void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
                       PlanningProblem& problem) {
     const double cruise = fleetCruiseSpeed(mission);
@@ -784,12 +790,14 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
                  " m/s: the plan uses that speed over every passable class, not the class table's speeds"});
         return;
     }
-    if (std::any_of(vehicles.begin(), vehicles.end(),
-                    [](const VehicleSettings& vehicle) { return vehicle.cruiseSpeedMetresPerSecond > 0.0; }))
+    if (std::any_of(vehicles.begin(), vehicles.end(), [](const VehicleSettings& vehicle) {
+            return vehicle.cruiseSpeedMetresPerSecond > 0.0;
+        })) {
+        problem.robotSpeeds = robotCruiseSpeeds(mission);
         problem.notes.push_back(
-            {IssueSeverity::Warning, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission, vehicles)});
-    else if (std::any_of(vehicles.begin(), vehicles.end(),
-                         [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
+            {IssueSeverity::Information, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission, vehicles)});
+    } else if (std::any_of(vehicles.begin(), vehicles.end(),
+                           [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
         problem.notes.push_back(
             {IssueSeverity::Warning, "aircraft-at-ground-speeds",
              "aircraft fly at the class table's speeds, which are a ground robot's in the presets: give "

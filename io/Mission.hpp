@@ -84,6 +84,8 @@ struct Mission {
 // The cruise speed the whole fleet flies at, when every robot's vehicle has the same one; 0 when none has
 // one or when they differ.
 [[nodiscard]] double fleetCruiseSpeed(const Mission& mission);
+// Each robot's cruise speed, its own or the mission's; 0 where it takes the land cover's.
+[[nodiscard]] std::vector<double> robotCruiseSpeeds(const Mission& mission);
 // What a planning problem takes from the mission beside the map and the starts: the robots' batteries, the
 // events and, when the whole fleet cruises at one speed, that speed over every passable class in place of
 // the land cover's (a drone's speed does not follow the ground under it), so that plan times are the

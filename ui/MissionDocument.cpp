@@ -57,7 +57,7 @@ PlanInputs MissionDocument::currentInputs() const {
             mission_.events,
             io::robotBatteries(mission_),
             chargers(),
-            io::fleetCruiseSpeed(mission_)};
+            io::robotCruiseSpeeds(mission_)};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {
@@ -91,7 +91,7 @@ void MissionDocument::setVehicles(const io::ExportSettings& exports,
     for (std::size_t robot = 0; robot < mission_.robots.size() && robot < vehicles.size(); ++robot)
         mission_.robots[robot].vehicle = vehicles[robot];
     emit robotsChanged();
-    emitStaleIfChanged(); // a cruise speed the whole fleet shares is planned with
+    emitStaleIfChanged(); // cruise speeds are planned with
 }
 
 void MissionDocument::setMissionPath(const QString& path) {

@@ -23,7 +23,8 @@ struct PlanInputs {
     std::vector<SpeedEvent> events = {};
     std::vector<double> batteries = {}; // each robot's own, 0 where it has none
     std::vector<std::optional<MapPoint>> chargers = {};
-    double fleetCruiseSpeed = 0.0; // the speed the plan uses over every passable class; 0: the classes'
+    // Each robot's cruise speed, which the plan uses over every passable class; 0: the classes'.
+    std::vector<double> cruiseSpeeds = {};
 
     friend bool operator==(const PlanInputs&, const PlanInputs&) = default;
 };

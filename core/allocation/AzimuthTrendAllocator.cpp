@@ -23,6 +23,26 @@ namespace {
 constexpr int unassigned = -1;
 constexpr int unreachable = -2;
 
+// When the robots would all finish if the work were shared to that end: costs are each robot's own time (its
+// cells' costs times its pace), and a robot of pace p does 1 / p of a cost a second. With every pace 1
+// (none given), the mean cost. `robots`: the robots sharing the work; empty: all.
+double fairTime(const std::vector<double>& costs, const std::vector<double>& paces,
+                const std::vector<int>& robots = {}) {
+    std::vector<int> all;
+    if (robots.empty())
+        for (std::size_t robot = 0; robot < costs.size(); ++robot)
+            all.push_back(static_cast<int>(robot));
+    const std::vector<int>& sharing = robots.empty() ? all : robots;
+    double work = 0.0;
+    double rate = 0.0;
+    for (const int robot : sharing) {
+        const double pace = paces.empty() ? 1.0 : paces[static_cast<std::size_t>(robot)];
+        work += costs[static_cast<std::size_t>(robot)] / pace;
+        rate += 1.0 / pace;
+    }
+    return rate > 0.0 ? work / rate : 0.0;
+}
+
 struct RobotState {
     double cost = 0.0;
     double sumX = 0.0; // area-weighted, for the region centre Ca
@@ -41,9 +61,12 @@ struct RobotState {
 
 class Allocation {
   public:
+    // paces: by robot, its seconds for a second of cell cost (robotPaces); empty: 1 for every robot.
     Allocation(NeighbourSource neighbours, std::vector<CellFigures> figures,
-               const std::vector<int>& startCells, const ProgressReporter& progress)
-        : neighbours_(neighbours), progress_(progress), cellCount_(static_cast<int>(figures.size())),
+               const std::vector<int>& startCells, const ProgressReporter& progress,
+               std::vector<double> paces = {})
+        : neighbours_(neighbours), progress_(progress), paces_(std::move(paces)),
+          cellCount_(static_cast<int>(figures.size())),
           owner_(static_cast<std::size_t>(cellCount_), unreachable), cells_(std::move(figures)),
           connectivity_(neighbours), robots_(startCells.size()), centreX_(startCells.size()),
           centreY_(startCells.size()) {
@@ -124,6 +147,8 @@ class Allocation {
         std::vector<std::uint8_t>().swap(queuedBy_); // the frontiers are spent
     }
 
+    [[nodiscard]] const std::vector<double>& paces() const { return paces_; }
+
     // Growth takes turns by cost times this weight: a robot weighted below 1 grows ahead of the others.
     void setGrowthWeights(std::vector<double> weights) { growthWeights_ = std::move(weights); }
     // A robot queues a cell once, with its key when first seen, rather than once for each of its cells
@@ -171,13 +196,16 @@ class Allocation {
     // About how many single-cell moves would even the regions out: the cost above the mean, in cells of
     // average cost (within a few percent of the moves made on the benchmark maps).
     double movesToEvenOut() const {
-        double total = 0.0;
+        std::vector<double> costs;
         for (const RobotState& robot : robots_)
-            total += robot.cost;
-        const double mean = total / static_cast<double>(robots_.size());
+            costs.push_back(robot.cost);
+        const double fair = fairTime(costs, paces_);
+        double total = 0.0; // in cell costs
         double excess = 0.0;
-        for (const RobotState& robot : robots_)
-            excess += std::max(0.0, robot.cost - mean);
+        for (std::size_t robot = 0; robot < robots_.size(); ++robot) {
+            total += robots_[robot].cost / pace(static_cast<int>(robot));
+            excess += std::max(0.0, robots_[robot].cost - fair) / pace(static_cast<int>(robot));
+        }
         return total > 0.0 ? excess * reachableCount_ / total : 0.0;
     }
 
@@ -196,6 +224,8 @@ class Allocation {
     }
 
   private:
+    double pace(int robot) const { return paces_.empty() ? 1.0 : paces_[static_cast<std::size_t>(robot)]; }
+
     double weightedCost(int robot) const {
         const double cost = robots_[static_cast<std::size_t>(robot)].cost;
         return growthWeights_.empty() ? cost : cost * growthWeights_[static_cast<std::size_t>(robot)];
@@ -256,7 +286,7 @@ class Allocation {
         } else if (previous >= 0) {
             RobotState& donor = robots_[static_cast<std::size_t>(previous)];
             donor.lostCell = true;
-            donor.cost -= figures.cost;
+            donor.cost -= figures.cost * pace(previous);
             donor.sumX -= x;
             donor.sumY -= y;
             donor.area -= area;
@@ -264,7 +294,7 @@ class Allocation {
             updateCentre(previous);
         }
         RobotState& receiver = robots_[static_cast<std::size_t>(robot)];
-        receiver.cost += figures.cost;
+        receiver.cost += figures.cost * pace(robot);
         receiver.sumX += x;
         receiver.sumY += y;
         receiver.area += area;
@@ -492,9 +522,9 @@ class Allocation {
     // costs falls.
     bool lowersLargerCost(int robot, int cell) const {
         const RobotState& donor = robots_[static_cast<std::size_t>(owner_[static_cast<std::size_t>(cell)])];
-        return cell != donor.startCell &&
-               robots_[static_cast<std::size_t>(robot)].cost + cells_[static_cast<std::size_t>(cell)].cost <
-                   donor.cost - 1e-9;
+        return cell != donor.startCell && robots_[static_cast<std::size_t>(robot)].cost +
+                                                  cells_[static_cast<std::size_t>(cell)].cost * pace(robot) <
+                                              donor.cost - 1e-9;
     }
 
     // Whether another robot owns the cell and it touches this robot's region.
@@ -601,7 +631,7 @@ class Allocation {
         std::vector<std::pair<double, int>>& candidates = scratchCandidates_;
         candidates.clear();
         for (int cell : facing(from, to)) {
-            if (!(receiver.cost + cells_[static_cast<std::size_t>(cell)].cost < receiverCostLimit))
+            if (!(receiver.cost + cells_[static_cast<std::size_t>(cell)].cost * pace(to) < receiverCostLimit))
                 continue;
             const double score = distanceToCentre(cell, to) - distanceToCentre(cell, from);
             candidates.emplace_back(score, cell);
@@ -760,6 +790,7 @@ class Allocation {
 
     NeighbourSource neighbours_;
     const ProgressReporter& progress_;
+    std::vector<double> paces_; // by robot; empty: all 1
     int cellCount_;
     std::vector<int> owner_;
     std::vector<CellFigures> cells_;
@@ -814,6 +845,12 @@ RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int m
     (void)allocation.rebalance(moves);
     RegionAllocation result = allocation.result();
     settleRegionsWithPieces(graph, result);
+    // Settling counts costs at pace 1; robots of their own paces count their own times.
+    if (!allocation.paces().empty()) {
+        result.costSeconds = regionCosts(graph, result.robotOfCell, result.costSeconds.size());
+        for (std::size_t robot = 0; robot < result.costSeconds.size(); ++robot)
+            result.costSeconds[robot] *= allocation.paces()[robot];
+    }
     progress.report("allocation", 1.0);
     return result;
 }
@@ -831,16 +868,13 @@ std::vector<std::vector<int>> robotsSharingParts(const CellGraph& graph, const s
 // How uneven a division's costs are: the largest over the mean of the robots sharing its part, at least 1.
 // With `unevenBeyond` (a cost), 1 unless some region also exceeds its part's mean by more than that.
 double unevenness(const std::vector<double>& costs, const std::vector<std::vector<int>>& robotsOfParts,
-                  double unevenBeyond = 0.0) {
+                  const std::vector<double>& paces, double unevenBeyond = 0.0) {
     double largest = 1.0;
     for (const std::vector<int>& robots : robotsOfParts) {
-        double total = 0.0;
         double most = 0.0;
-        for (const int robot : robots) {
-            total += costs[static_cast<std::size_t>(robot)];
+        for (const int robot : robots)
             most = std::max(most, costs[static_cast<std::size_t>(robot)]);
-        }
-        const double mean = total / static_cast<double>(robots.size());
+        const double mean = fairTime(costs, paces, robots);
         if (mean > 0.0 && most - mean > unevenBeyond)
             largest = std::max(largest, most / mean);
     }
@@ -850,8 +884,9 @@ double unevenness(const std::vector<double>& costs, const std::vector<std::vecto
 // Regions grown with these growth weights (none: all 1) and evened out with at most `moves` chain moves.
 RegionAllocation grownAndEvenedOut(const CellGraph& graph, std::vector<CellFigures> figures,
                                    const std::vector<int>& startCells, std::vector<double> weights, int moves,
-                                   const ProgressReporter& progress, bool queueEachCellOnce = false) {
-    Allocation allocation(graph, std::move(figures), startCells, progress);
+                                   const ProgressReporter& progress, const std::vector<double>& paces,
+                                   bool queueEachCellOnce = false) {
+    Allocation allocation(graph, std::move(figures), startCells, progress, paces);
     allocation.setGrowthWeights(std::move(weights));
     if (queueEachCellOnce)
         allocation.queueEachCellOnce();
@@ -871,32 +906,32 @@ constexpr int weightedGrowths = 6;
 // is kept, the first one if none beats it.
 RegionAllocation regrownWithWeights(const CellGraph& graph, const std::vector<CellFigures>& figures,
                                     const std::vector<int>& startCells, RegionAllocation first,
-                                    int rebalanceIterations, const ProgressReporter& progress) {
+                                    int rebalanceIterations, const ProgressReporter& progress,
+                                    const std::vector<double>& paces) {
     double dearestCell = 0.0;
     for (const CellFigures& cell : figures)
         dearestCell = std::max(dearestCell, cell.cost);
     const std::vector<std::vector<int>> robotsOfParts = robotsSharingParts(graph, startCells);
-    if (unevenness(first.costSeconds, robotsOfParts, dearestCell) <= unevenAfterEvening)
+    if (unevenness(first.costSeconds, robotsOfParts, paces, dearestCell) <= unevenAfterEvening)
         return first;
     const int moves = moveCap(rebalanceIterations, graph.size());
     std::vector<double> weights(startCells.size(), 1.0);
     std::vector<double> costs = first.costSeconds;
     RegionAllocation best = std::move(first);
-    double bestSpread = unevenness(best.costSeconds, robotsOfParts);
+    double bestSpread = unevenness(best.costSeconds, robotsOfParts, paces);
     for (int attempt = 0; attempt < weightedGrowths && bestSpread > unevenAfterEvening; ++attempt) {
-        double total = 0.0;
-        for (const double cost : costs)
-            total += cost;
-        const double mean = total / static_cast<double>(costs.size());
+        const double mean = fairTime(costs, paces);
         for (std::size_t robot = 0; robot < weights.size(); ++robot)
             if (costs[robot] > 0.0)
                 weights[robot] *= std::sqrt(costs[robot] / mean); // half way: whole steps overshoot
         const ProgressReporter tries =
             progress.within("uneven regions grown again", static_cast<double>(attempt) / weightedGrowths,
                             static_cast<double>(attempt + 1) / weightedGrowths);
-        RegionAllocation regrown = grownAndEvenedOut(graph, figures, startCells, weights, moves, tries);
+        RegionAllocation regrown =
+            grownAndEvenedOut(graph, figures, startCells, weights, moves, tries, paces);
         costs = regrown.costSeconds;
-        if (const double spread = unevenness(regrown.costSeconds, robotsOfParts); spread < bestSpread) {
+        if (const double spread = unevenness(regrown.costSeconds, robotsOfParts, paces);
+            spread < bestSpread) {
             bestSpread = spread;
             best = std::move(regrown);
         }
@@ -908,16 +943,17 @@ RegionAllocation regrownWithWeights(const CellGraph& graph, const std::vector<Ce
 // uneven; above limits.mostCellsQueuedAtEachStep cells a robot queues each cell once as it grows.
 RegionAllocation grownCellByCell(const CellGraph& graph, const std::vector<int>& startCells,
                                  int rebalanceIterations, const ProgressReporter& progress,
-                                 const AzimuthTrendLimits& limits) {
+                                 const AzimuthTrendLimits& limits, const std::vector<double>& paces) {
     const int moves = moveCap(rebalanceIterations, graph.size());
     const bool queueEachCellOnce = graph.size() > limits.mostCellsQueuedAtEachStep;
     if (startCells.size() < 2 || graph.size() > limits.mostCellsGrownAgain) // no copy of the figures kept
-        return grownAndEvenedOut(graph, cellFiguresOf(graph), startCells, {}, moves, progress,
+        return grownAndEvenedOut(graph, cellFiguresOf(graph), startCells, {}, moves, progress, paces,
                                  queueEachCellOnce);
     const std::vector<CellFigures> figures = cellFiguresOf(graph);
     RegionAllocation division =
-        grownAndEvenedOut(graph, figures, startCells, {}, moves, progress, queueEachCellOnce);
-    return regrownWithWeights(graph, figures, startCells, std::move(division), rebalanceIterations, progress);
+        grownAndEvenedOut(graph, figures, startCells, {}, moves, progress, paces, queueEachCellOnce);
+    return regrownWithWeights(graph, figures, startCells, std::move(division), rebalanceIterations, progress,
+                              paces);
 }
 
 // The blocks (or pieces) that hold the start cells.
@@ -1023,7 +1059,7 @@ RegionAllocation AzimuthTrendAllocator::rebalance(const CellGraph& graph, const 
     constexpr double mostMoves = 4096.0;
     if (division.robotOfCell.size() == graph.size() && division.startCell == startCells) {
         progress.report("allocation", 0.0);
-        Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
+        Allocation allocation(graph, cellFiguresOf(graph), startCells, progress, paces_);
         if (allocation.adopt(division) && allocation.movesToEvenOut() <= mostMoves)
             return evenedOut(allocation, graph, moveCap(rebalanceIterations_, graph.size()), progress);
     } // gone before a new one is grown: on a large map each holds hundreds of megabytes
@@ -1077,19 +1113,20 @@ RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph
     Allocation allocation(graph, cellFiguresOf(graph), startCells, progress);
     if (division && allocation.adopt(cellsTakeTheirBlocks(*division, finestPieceOfCell, startCells)))
         return evenedOut(allocation, graph, moveCap(rebalanceIterations_, graph.size()), progress);
-    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, limits_);
+    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, limits_, {});
 }
 
 RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const std::vector<int>& startCells,
                                                  const ProgressReporter& progress) const {
     progress.report("allocation", 0.0);
-    if (growsOnTreePieces(graph, startCells.size()))
+    // Robots of their own paces grow cell by cell: pieces and blocks are evened out at one pace.
+    if (paces_.empty() && growsOnTreePieces(graph, startCells.size()))
         return grownOnTreePieces(graph, startCells, progress);
-    if (graph.size() > limits_.mostCellsGrownOneByOne) {
+    if (paces_.empty() && graph.size() > limits_.mostCellsGrownOneByOne) {
         if (auto grown = grownOnBlocks(graph, startCells, rebalanceIterations_, progress))
             return std::move(*grown);
     }
-    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, limits_);
+    return grownCellByCell(graph, startCells, rebalanceIterations_, progress, limits_, paces_);
 }
 
 } // namespace mcpp

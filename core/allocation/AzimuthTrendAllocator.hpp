@@ -4,6 +4,7 @@
 #include "core/parameters/ParameterSpec.hpp"
 
 #include <cstddef>
+#include <vector>
 
 namespace mcpp {
 
@@ -52,6 +53,10 @@ class AzimuthTrendAllocator final : public RegionAllocator {
                                    AzimuthTrendLimits limits = {})
         : rebalanceIterations_(rebalanceIterations), treePieceShare_(treePieceShare), limits_(limits) {}
 
+    // By robot, its seconds for a second of cell cost (robotPaces): regions are evened out in each robot's
+    // own time, a robot of pace 0.5 taking twice the cost. Empty (the default): every robot at pace 1.
+    void setPaces(std::vector<double> paces) { paces_ = std::move(paces); }
+
     [[nodiscard]] static ParameterSpec rebalanceIterationsParameter();
     // The planner parameter for treePieceShare, in percent.
     [[nodiscard]] static ParameterSpec treePieceShareParameter();
@@ -75,6 +80,7 @@ class AzimuthTrendAllocator final : public RegionAllocator {
     int rebalanceIterations_;
     double treePieceShare_;
     AzimuthTrendLimits limits_;
+    std::vector<double> paces_; // by robot; empty: all 1
 };
 
 } // namespace mcpp

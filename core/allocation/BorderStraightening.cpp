@@ -80,7 +80,7 @@ int BorderStraightening::bestMove(int cell, std::vector<int>& owner, const std::
         const int to = owner[static_cast<std::size_t>(neighbour)];
         if (to < 0 || to == from || to == best)
             continue;
-        if (cost[static_cast<std::size_t>(to)] + cellCost > ceiling) {
+        if (cost[static_cast<std::size_t>(to)] + cellCost * pace(to) > ceiling) {
             refused = true;
             continue;
         }
@@ -129,7 +129,7 @@ int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ce
         int before = -1; // counted once a region could take the pair
         for (int neighbour : graph_.neighbours(cell)) {
             const int to = owner[static_cast<std::size_t>(neighbour)];
-            if (to < 0 || to == from || cost[static_cast<std::size_t>(to)] + pairCost > ceiling)
+            if (to < 0 || to == from || cost[static_cast<std::size_t>(to)] + pairCost * pace(to) > ceiling)
                 continue;
             if (before < 0)
                 before = blockedNear(pair, owner);
@@ -147,8 +147,8 @@ int BorderStraightening::movePair(int cell, RegionAllocation& regions, double ce
                 continue;
             owner[static_cast<std::size_t>(cell)] = to;
             owner[static_cast<std::size_t>(partner)] = to;
-            cost[static_cast<std::size_t>(from)] -= pairCost;
-            cost[static_cast<std::size_t>(to)] += pairCost;
+            cost[static_cast<std::size_t>(from)] -= pairCost * pace(from);
+            cost[static_cast<std::size_t>(to)] += pairCost * pace(to);
             return partner;
         }
     }
@@ -220,8 +220,8 @@ int BorderStraightening::straighten(RegionAllocation& regions) const {
             if (to >= 0 && connectivity.canRemove(cell, owner, searchLimit)) {
                 const double cellCost = graph_.cell(static_cast<std::size_t>(cell)).coverSeconds();
                 owner[static_cast<std::size_t>(cell)] = to;
-                cost[static_cast<std::size_t>(from)] -= cellCost;
-                cost[static_cast<std::size_t>(to)] += cellCost;
+                cost[static_cast<std::size_t>(from)] -= cellCost * pace(from);
+                cost[static_cast<std::size_t>(to)] += cellCost * pace(to);
                 ++moved;
             } else if ((partner = movePair(cell, regions, ceiling, connectivity)) >= 0) {
                 moved += 2;

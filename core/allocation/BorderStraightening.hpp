@@ -29,6 +29,10 @@ class BorderStraightening {
     // The planner parameter, in percent.
     [[nodiscard]] static ParameterSpec slackParameter();
 
+    // By robot, its seconds for a second of cell cost (robotPaces): the regions' costs are then their robots'
+    // own times (AzimuthTrendAllocator::setPaces). Empty (the default): every robot at pace 1.
+    void setPaces(std::vector<double> paces) { paces_ = std::move(paces); }
+
     // Moves cells until a pass over the border moves none; returns how many moved.
     int straighten(RegionAllocation& regions) const;
 
@@ -48,9 +52,14 @@ class BorderStraightening {
     [[nodiscard]] int bestMove(int cell, std::vector<int>& owner, const std::vector<double>& cost,
                                double ceiling, bool& refused) const;
 
+    [[nodiscard]] double pace(int robot) const {
+        return paces_.empty() ? 1.0 : paces_[static_cast<std::size_t>(robot)];
+    }
+
     const CellGraph& graph_;
     double slack_;
     FirstPass firstPass_;
+    std::vector<double> paces_; // by robot; empty: all 1
 };
 
 } // namespace mcpp

@@ -106,7 +106,9 @@ double turnSecondsAt(const Waypoint& corner, double inX, double inY, double outX
     const bool straightOn = inX * outY - inY * outX == 0.0 && inX * outX + inY * outY > 0.0;
     if (straightOn || !graph.contains(corner.cell))
         return 0.0; // straight on, most steps of a path, costs nothing whatever the cell's price
-    return turnSecondsBetween(inX, inY, outX, outY, graph.turnSeconds(corner.cell));
+    // At the waypoint's speed: the cell's, or a robot's own where it drives at one (PlanningProblem).
+    return turnSecondsBetween(inX, inY, outX, outY,
+                              graph.turnSeconds(corner.cell, corner.speedMetresPerSecond));
 }
 
 double turnSecondsBetween(double inX, double inY, double outX, double outY, double price) {

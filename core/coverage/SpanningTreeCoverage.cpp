@@ -1,5 +1,6 @@
 #include "core/coverage/SpanningTreeCoverage.hpp"
 
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
@@ -143,6 +144,10 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
     CoveragePath path =
         pathFromWalk(robot, start, walker.walk(tree, start, closedTour_, shape.points()), closedTour_);
     measurePath(path, graph);
+    if (const double speed = ownSpeedOf(robotSpeeds_, static_cast<std::size_t>(robot)); speed > 0.0) {
+        driveAtOwnSpeed(path, graph, speed);
+        measurePath(path, graph);
+    }
     return path;
 }
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <utility>
+#include <vector>
 
 namespace mcpp {
 
@@ -29,6 +30,10 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
         : closedTour_(closedTour), cellsForMergedRuns_(cellsForMergedRuns) {}
 
     [[nodiscard]] static ParameterSpec closedTourParameter();
+
+    // By robot, its own speed (PlanningProblem::robotSpeeds): regionPath's paths are driven at it. Empty
+    // (the default): the class table's speeds.
+    void setRobotSpeeds(std::vector<double> speeds) { robotSpeeds_ = std::move(speeds); }
 
     [[nodiscard]] std::vector<CoveragePath> plan(const CellGraph& graph, const RegionAllocation& regions,
                                                  const std::vector<MapPoint>& starts,
@@ -102,6 +107,7 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
 
     bool closedTour_;
     std::size_t cellsForMergedRuns_;
+    std::vector<double> robotSpeeds_; // by robot; empty: the class table's speeds
 };
 
 // Whether the trees' longest walk is shorter than the other trees', beyond rounding.

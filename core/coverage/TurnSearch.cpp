@@ -1,5 +1,6 @@
 #include "core/coverage/TurnSearch.hpp"
 
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
@@ -79,6 +80,7 @@ int TurnSearch::improve(const CellGraph& graph, const RegionAllocation& regions,
             pathFromWalk(static_cast<int>(robot), starts[robot],
                          walker.walkFromStart(*tree, starts[robot], closedTour_), closedTour_);
         timePath(path, graph);
+        driveAtOwnSpeed(path, graph, ownSpeedOf(robotSpeeds_, robot));
         if (!isGain(path, paths[robot]))
             return;
         paths[robot] = std::move(path);

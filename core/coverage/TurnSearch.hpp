@@ -32,9 +32,14 @@ class TurnSearch {
     int improve(const CellGraph& graph, const RegionAllocation& regions, std::vector<CoveragePath>& paths,
                 const std::vector<MapPoint>& starts, const ProgressReporter& progress) const;
 
+    // By robot, its own speed (PlanningProblem::robotSpeeds): a new path is timed at it, as the one it may
+    // replace was. Empty (the default): the class table's speeds.
+    void setRobotSpeeds(std::vector<double> speeds) { robotSpeeds_ = std::move(speeds); }
+
   private:
     bool closedTour_;
     int rounds_;
+    std::vector<double> robotSpeeds_;
 };
 
 } // namespace mcpp

@@ -51,6 +51,10 @@ class CellGraph {
         const auto index = static_cast<std::size_t>(id);
         return turns_.turnSeconds(index, records_[index].speedMetresPerSecond);
     }
+    // The same for a robot driving through the cell at `speedMetresPerSecond` (its own, not the class's).
+    [[nodiscard]] float turnSeconds(int id, float speedMetresPerSecond) const {
+        return turns_.turnSeconds(static_cast<std::size_t>(id), speedMetresPerSecond);
+    }
     [[nodiscard]] const CellTurnFigures& turnFigures() const { return turns_; }
     // The turn figures of a graph of the same cells (as many, with the same speeds).
     void setTurnFigures(CellTurnFigures figures);

@@ -22,6 +22,9 @@ struct Plan {
     CellGraph cells;
     RegionAllocation regions;
     std::vector<CoveragePath> paths; // by robot
+    // By robot, its own speed over every passable class in m/s; missing or 0: the class table's speeds
+    // (PlanningProblem::robotSpeeds). Its path's waypoints carry it, and the lower bound counts it.
+    std::vector<double> robotSpeeds;
     PlanMetrics metrics;
     std::vector<PlanIssue> issues;
     std::vector<std::shared_ptr<const PlanLayer>> layers;

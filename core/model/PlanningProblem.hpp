@@ -22,6 +22,10 @@ struct PlanningProblem {
     // Each robot's own battery in seconds, for planners that fly on batteries; missing or 0: the planner's
     // battery_s.
     std::vector<double> batterySeconds;
+    // Each robot's own speed over every passable class in m/s (an aircraft's cruise speed beside ground
+    // robots); missing or 0: the class table's speeds. Every robot's times are at its own speed, and a
+    // planner that balancesOwnSpeeds gives the faster robots more.
+    std::vector<double> robotSpeeds;
     // Each robot's charger in the grid's frame, for planners that fly on batteries; missing or none: its
     // start.
     std::vector<std::optional<MapPoint>> chargers;

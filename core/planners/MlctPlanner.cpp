@@ -2,6 +2,7 @@
 
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 #include "core/allocation/BorderStraightening.hpp"
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/TurnCalibration.hpp"
@@ -27,6 +28,41 @@ bool turnsWeigh(const std::vector<RegionTree>& trees) {
     });
 }
 
+// Rounds of evening out with the paces the paths drove: on a mixed fleet the first round does most.
+constexpr int speedBalanceRounds = 3;
+
+double longestTime(const std::vector<CoveragePath>& paths) {
+    double longest = 0.0;
+    for (const CoveragePath& path : paths)
+        longest = std::max(longest, path.timeSeconds);
+    return longest;
+}
+
+// Robots of their own speeds: paces guessed from travel alone, their turns left out, are put right by the
+// paths as driven, and the division evened out again with them while that shortens the longest path.
+// Returns the rounds kept.
+int balanceOwnSpeeds(PlanningRun& run, const std::vector<int>& startCells, AzimuthTrendAllocator& allocator,
+                     BorderStraightening& straightening, const SpanningTreeCoverage& coverage) {
+    Plan& plan = run.plan();
+    int kept = 0;
+    for (; kept < speedBalanceRounds; ++kept) {
+        const std::vector<double> paces = drivenPaces(plan.cells, plan.regions, plan.paths);
+        allocator.setPaces(paces);
+        straightening.setPaces(paces);
+        RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions, run.progress());
+        straightening.straighten(regions);
+        std::vector<CoveragePath> paths = coverage.walkTrees(
+            plan.cells, coverage.planTrees(plan.cells, regions, run.starts(), run.progress(), false),
+            run.starts(), run.progress());
+        driveAtOwnSpeeds(paths, plan.cells, run.problem().robotSpeeds);
+        if (!(longestTime(paths) < longestTime(plan.paths)))
+            break;
+        plan.regions = std::move(regions);
+        plan.paths = std::move(paths);
+    }
+    return kept;
+}
+
 } // namespace
 
 PlannerDescription MlctPlanner::describe() const {
@@ -47,6 +83,7 @@ PlannerDescription MlctPlanner::describe() const {
     // spare. Below 4 M cells, where paths keep every waypoint, more a cell, still under a gigabyte.
     description.bytesPerBottomCell = 210;
     description.quadTreeCells = true;
+    description.balancesOwnSpeeds = true;
     return description;
 }
 
@@ -56,14 +93,25 @@ void MlctPlanner::run(PlanningRun& run) const {
     Plan& plan = run.plan();
     plan.cells = quadTreeStage(run);
     const std::vector<int> startCells = run.locateStarts();
-    const AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"),
-                                          parameters.real("tree_piece_share") / 100.0);
-    const BorderStraightening straightening(plan.cells, parameters.real("fewer_turns_slack") / 100.0);
+    AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"),
+                                    parameters.real("tree_piece_share") / 100.0);
+    BorderStraightening straightening(plan.cells, parameters.real("fewer_turns_slack") / 100.0);
+    SpanningTreeCoverage coverage(parameters.boolean("closed_tour"),
+                                  SpanningTreeCoverage::fewestCellsForMergedRuns);
+    TurnSearch turnSearch = TurnSearch::forPlan(plan.cells, parameters);
+    // Robots of their own speeds (an aircraft beside ground robots) are balanced in their own times.
+    const std::vector<double>& speeds = run.problem().robotSpeeds;
+    const bool ownSpeeds = someOwnSpeed(speeds);
+    if (ownSpeeds) {
+        const std::vector<double> paces = robotPaces(plan.cells, speeds, startCells.size());
+        allocator.setPaces(paces);
+        straightening.setPaces(paces);
+        coverage.setRobotSpeeds(speeds);
+        turnSearch.setRobotSpeeds(speeds);
+    }
     plan.regions =
         run.stage("allocation", [&] { return allocator.allocate(plan.cells, startCells, progress); });
     run.stage("straight borders", [&] { return straightening.straighten(plan.regions); });
-    const SpanningTreeCoverage coverage(parameters.boolean("closed_tour"),
-                                        SpanningTreeCoverage::fewestCellsForMergedRuns);
     // Trees first, walked once the division is settled: two divisions are compared by their trees, which
     // take a quarter of the memory of their paths (3.7 GB instead of 5.4 GB on 17.6 M cells with a fast
     // robot). On large maps a region whose merged path is small is walked as its tree is measured, and its
@@ -74,8 +122,10 @@ void MlctPlanner::run(PlanningRun& run) const {
     // balances real time better. The faster division is kept. Evened out from where it stands rather than
     // grown anew: on the benchmark maps the makespans within -0.3 % and +0.2 % of a new division's, in a
     // fraction of the time.
+    // Skipped for robots of their own speeds: trees are timed at the class table's speeds.
     run.stage("turn balance", [&] {
-        if (!turnsWeigh(trees) || !calibrateTurnRates(plan.cells, plan.regions, turningSecondsOf(trees)))
+        if (ownSpeeds || !turnsWeigh(trees) ||
+            !calibrateTurnRates(plan.cells, plan.regions, turningSecondsOf(trees)))
             return 0;
         RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions,
                                                        progress.within("turn balance", 0.0, 0.5));
@@ -90,15 +140,20 @@ void MlctPlanner::run(PlanningRun& run) const {
         return 0;
     });
     plan.paths = run.stage("waypoints", [&] {
-        return coverage.walkTrees(plan.cells, std::move(trees), run.starts(), progress);
+        std::vector<CoveragePath> paths =
+            coverage.walkTrees(plan.cells, std::move(trees), run.starts(), progress);
+        driveAtOwnSpeeds(paths, plan.cells, speeds);
+        return paths;
     });
+    if (ownSpeeds)
+        run.stage("speed balance",
+                  [&] { return balanceOwnSpeeds(run, startCells, allocator, straightening, coverage); });
     // Costs only estimate path times: border cells pass from the longest path to shorter neighbours, paths
     // replanned, while that shortens the longest. Bounded to about half a second of replanning.
     const PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(plan.cells));
     run.stage("path balance", [&] {
         return balancing.balance(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });
-    const TurnSearch turnSearch = TurnSearch::forPlan(plan.cells, parameters);
     run.stage("turn search", [&] {
         return turnSearch.improve(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });

@@ -1,6 +1,7 @@
 #include "core/planners/PlanMetricsCalculator.hpp"
 
 #include "core/allocation/StartComponents.hpp"
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/ParallelFor.hpp"
 #include "core/model/SortieLayer.hpp"
@@ -78,6 +79,44 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
             metrics.confinedRobots.push_back(
                 {robot, figures[part].areaSquareMetres, static_cast<int>(parts[part].robots.size())});
     }
+}
+
+// Each robot r takes t_r(i) to travel cell i: the class table's travel time, or the cell's length at its own
+// speed. For any weights w_r >= 0 the makespan T satisfies T * sum(w_r) >= sum over r of w_r times r's
+// cells' t_r and its turns and connectors, which is at least sum over cells of min over r of w_r t_r(i),
+// plus the turns and connectors weighted. Weighted by what each robot would take alone (w_r = 1 / sum of
+// t_r), w_r t_r(i) is the cell's share of the map's travel time for a robot at the class speeds and its
+// share of the map's length for one at its own, whatever that speed. Uniform speeds give the usual bound.
+void PlanMetricsCalculator::boundWithOwnSpeeds(Plan& plan) {
+    double travel = 0.0; // over the covered cells, at the class speeds
+    double length = 0.0;
+    std::vector<std::pair<double, double>> cells; // each covered cell's travel time and length
+    for (std::size_t id = 0; id < plan.cells.size(); ++id) {
+        if (id >= plan.regions.robotOfCell.size() || plan.regions.robotOfCell[id] < 0)
+            continue;
+        const Cell& cell = plan.cells.cell(static_cast<int>(id));
+        const double seconds = cell.travelSeconds();
+        cells.emplace_back(seconds, seconds * cell.speedMetresPerSecond);
+        travel += seconds;
+        length += cells.back().second;
+    }
+    if (!(travel > 0.0) || !(length > 0.0))
+        return;
+    bool classSpeeds = false; // some robot drives at the class table's speeds
+    double weights = 0.0;
+    double weightedExtras = 0.0; // turns and connectors
+    for (std::size_t robot = 0; robot < plan.regions.startCell.size(); ++robot) {
+        const double speed = ownSpeedOf(plan.robotSpeeds, robot);
+        const double weight = speed > 0.0 ? speed / length : 1.0 / travel;
+        classSpeeds = classSpeeds || !(speed > 0.0);
+        weights += weight;
+        if (robot < plan.paths.size())
+            weightedExtras += weight * (plan.paths[robot].turnSeconds + plan.paths[robot].connectorSeconds);
+    }
+    double shares = 0.0;
+    for (const auto& [seconds, metres] : cells)
+        shares += classSpeeds ? std::min(seconds / travel, metres / length) : metres / length;
+    plan.metrics.lowerBoundSeconds = (shares + weightedExtras) / weights;
 }
 
 // The busiest robot travels at least the bound; on one charge it flies at most the longest endurance, so
@@ -160,7 +199,12 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
                               ? detection->summary().travelSecondsNoPlanBeats(metrics.totalTurns(), robots)
                               : cellTravelSeconds + connectorSeconds;
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : secondsNoPlanBeats / static_cast<double>(robots);
-    boundByConnectedParts(plan, regionsLinked);
+    // With robots of their own speeds the parts' bounds, each part's work shared evenly, would not hold:
+    // the map's bound with those speeds does (weaker where a robot is walled in).
+    if (someOwnSpeed(plan.robotSpeeds) && detection == nullptr)
+        boundWithOwnSpeeds(plan);
+    else
+        boundByConnectedParts(plan, regionsLinked);
     boundByCharges(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;

@@ -14,6 +14,9 @@ class PlanMetricsCalculator {
     // Raises the lower bound to what the robots of each connected part need and lists confined robots;
     // `regionsLinked`: the regions link every robot (regionsLinkEveryRobot), so the map is one part.
     static void boundByConnectedParts(Plan& plan, bool regionsLinked);
+    // The bound where some robots drive at their own speeds (Plan::robotSpeeds): no plan beats the weighted
+    // mean, by each robot's share of what the fleet does in a second, of what each robot must do.
+    static void boundWithOwnSpeeds(Plan& plan);
     // Raises the lower bound by the charges a robot on a battery must make to fly it.
     static void boundByCharges(Plan& plan);
 };

@@ -1,5 +1,6 @@
 #include "core/planners/Planner.hpp"
 
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/ParallelFor.hpp"
@@ -72,6 +73,31 @@ std::string eventsIgnoredMessage(const PlannerDescription& planner) {
     return planner.label +
            " plans without events: the mission's events are left out (planners that play them: " +
            plannerNamesWhere([](const PlannerDescription& other) { return other.simulatesEvents; }) + ")";
+}
+
+std::string ownSpeedsUnbalancedMessage(const PlannerDescription& planner) {
+    return planner.label +
+           " divides the work as if every robot drove at the class table's speeds: robots of their own "
+           "speeds are timed at them and finish at other times (planners that balance them: " +
+           plannerNamesWhere([](const PlannerDescription& other) { return other.balancesOwnSpeeds; }) + ")";
+}
+
+// Robots of their own speeds drive every path at them, whatever the planner made of them; a plan whose
+// layers (sorties, detection, a timeline) were timed while planning keeps the class table's speeds.
+void applyOwnSpeeds(const PlannerDescription& planner, const PlanningProblem& problem, PlanningRun& run) {
+    if (!someOwnSpeed(problem.robotSpeeds))
+        return;
+    Plan& plan = run.plan();
+    if (!plan.layers.empty()) {
+        run.addIssue(IssueSeverity::Warning, "own-speeds-ignored",
+                     planner.label + " times every robot at the class table's speeds: the robots' own speeds "
+                                     "are left out of its plan");
+        return;
+    }
+    plan.robotSpeeds = problem.robotSpeeds;
+    driveAtOwnSpeeds(plan.paths, plan.cells, plan.robotSpeeds);
+    if (!planner.balancesOwnSpeeds && problem.starts.size() > 1)
+        run.addIssue(IssueSeverity::Warning, "own-speeds-unbalanced", ownSpeedsUnbalancedMessage(planner));
 }
 
 std::string chargersIgnoredMessage(const PlannerDescription& planner) {
@@ -169,6 +195,7 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
     if (anyCharger && !planner.fliesOnBatteries())
         planningRun.addIssue(IssueSeverity::Warning, "chargers-ignored", chargersIgnoredMessage(planner));
     run(planningRun);
+    applyOwnSpeeds(planner, problem, planningRun);
     planningRun.stage("metrics", [&] {
         parallelFor(plan.paths.size(),
                     [&](std::size_t path, int) { measurePath(plan.paths[path], plan.cells); });

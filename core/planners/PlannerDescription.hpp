@@ -27,6 +27,9 @@ struct PlannerDescription {
     std::string summary; // one line for --help and the planner list
     bool singleRobot = false;
     bool simulatesEvents = false; // plays the problem's events; other planners warn that they ignore them
+    // Gives robots of their own speeds (PlanningProblem::robotSpeeds) work in proportion; other planners
+    // divide it as if all drove at the class table's speeds, and say so. Every planner times them right.
+    bool balancesOwnSpeeds = false;
     PlannerPromises promises;
     std::vector<ParameterSpec> parameters; // the planner's and its stages', then those every planner has
     // Peak memory per cell of the finest grid, outputs included: a map that would need more than the

@@ -66,6 +66,12 @@ class PlannerInvariantsTest : public QObject {
                                            seed % 4 == 0 ? 1e6 : (seed % 4 == 1 ? 1200.0 : 300.0));
         if (problem.planner.parameters.has("balanced"))
             problem.planner.parameters.set("balanced", seed % 2 == 0);
+        // A mixed fleet: the first robot at its own speed (an aircraft's cruise speed), the others at the
+        // class table's; every robot at its own on some maps.
+        if (seed % 7 == 3)
+            problem.robotSpeeds = {3.5};
+        if (seed % 14 == 10)
+            problem.robotSpeeds.assign(problem.starts.size(), 2.0);
         Plan plan;
         try {
             plan = made->plan(problem, {});

@@ -426,7 +426,12 @@ double turnSecondsAt(const CoveragePath& path, std::size_t i, const CellGraph& c
     double angle = std::abs(outAngle - inAngle);
     if (angle > std::numbers::pi)
         angle = 2.0 * std::numbers::pi - angle;
-    return angle / (std::numbers::pi / 2.0) * cells.cell(here.cell).turnSecondsPer90Degrees;
+    // A robot of its own speed (Plan::robotSpeeds) turns at it: the price then follows from that speed.
+    const Cell cell = cells.cell(here.cell);
+    const double price = here.speedMetresPerSecond == cell.speedMetresPerSecond
+                             ? double(cell.turnSecondsPer90Degrees)
+                             : double(cells.turnSeconds(here.cell, here.speedMetresPerSecond));
+    return angle / (std::numbers::pi / 2.0) * price;
 }
 
 // Steps between cells of different sizes that share a side, timed half at each end's speed, less a quarter
@@ -459,6 +464,45 @@ double turnSecondsOf(const CoveragePath& path, const CellGraph& cells) {
     for (std::size_t i = 0; i < path.waypoints.size(); ++i)
         seconds += turnSecondsAt(path, i, cells);
     return seconds;
+}
+
+// The bound with robots of their own speeds, recounted: robot r needs its cells' travel at its speed (their
+// length over it) and its turns and connectors; weighted by 1 over what r would take for every covered cell,
+// the weighted sum of what the robots need, cells given each to the robot for which they weigh least, is
+// no more than the makespan times the sum of the weights.
+double ownSpeedsLowerBound(const Plan& plan) {
+    const std::size_t robots = plan.paths.size();
+    std::vector<double> alone(robots, 0.0); // what each robot would take for every covered cell
+    for (std::size_t id = 0; id < plan.regions.robotOfCell.size(); ++id) {
+        if (plan.regions.robotOfCell[id] < 0)
+            continue;
+        const Cell cell = plan.cells.cell(static_cast<int>(id));
+        for (std::size_t robot = 0; robot < robots; ++robot) {
+            const double speed = robot < plan.robotSpeeds.size() ? plan.robotSpeeds[robot] : 0.0;
+            alone[robot] +=
+                speed > 0.0 ? cell.travelSeconds() * cell.speedMetresPerSecond / speed : cell.travelSeconds();
+        }
+    }
+    double weighted = 0.0;
+    for (std::size_t id = 0; id < plan.regions.robotOfCell.size(); ++id) {
+        if (plan.regions.robotOfCell[id] < 0)
+            continue;
+        const Cell cell = plan.cells.cell(static_cast<int>(id));
+        double least = std::numeric_limits<double>::infinity();
+        for (std::size_t robot = 0; robot < robots; ++robot) {
+            const double speed = robot < plan.robotSpeeds.size() ? plan.robotSpeeds[robot] : 0.0;
+            const double seconds =
+                speed > 0.0 ? cell.travelSeconds() * cell.speedMetresPerSecond / speed : cell.travelSeconds();
+            least = std::min(least, seconds / alone[robot]);
+        }
+        weighted += least;
+    }
+    double weights = 0.0;
+    for (std::size_t robot = 0; robot < robots; ++robot) {
+        weights += 1.0 / alone[robot];
+        weighted += (plan.paths[robot].turnSeconds + plan.paths[robot].connectorSeconds) / alone[robot];
+    }
+    return weighted / weights;
 }
 
 std::vector<std::string> checkTimes(const Plan& plan) {
@@ -533,6 +577,9 @@ std::vector<std::string> checkTimes(const Plan& plan) {
     double lowerBound = plan.paths.empty() ? 0.0
                                            : std::max(totalTravel / static_cast<double>(plan.paths.size()),
                                                       connectedPartsLowerBound(plan));
+    if (std::any_of(plan.robotSpeeds.begin(), plan.robotSpeeds.end(),
+                    [](double speed) { return speed > 0.0; }))
+        lowerBound = ownSpeedsLowerBound(plan);
     // A detection plan's bound counts the passes its targets need instead of every sub-cell's; it must
     // still hold.
     if (const DetectionLayer* detection = detectionLayerOf(plan);
