@@ -62,12 +62,14 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
         return;
     std::vector<PartFigures> figures;
     std::size_t largest = 0;
+    // A detection plan need not pass every sub-cell, so a part's travel over its cells bounds nothing; nor
+    // does a part's even share where robots drive at their own speeds.
+    const bool evenShares = detectionLayerOf(plan) == nullptr && !someOwnSpeed(plan.robotSpeeds);
     for (const StartComponent& part : parts) {
         figures.push_back(figuresOf(plan, part));
         if (figures.back().areaSquareMetres > figures[largest].areaSquareMetres)
             largest = figures.size() - 1;
-        // A detection plan need not pass every sub-cell, so a part's travel over its cells bounds nothing.
-        if (detectionLayerOf(plan) == nullptr)
+        if (evenShares)
             metrics.lowerBoundSeconds =
                 std::max(metrics.lowerBoundSeconds,
                          figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
@@ -203,8 +205,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     // the map's bound with those speeds does (weaker where a robot is walled in).
     if (someOwnSpeed(plan.robotSpeeds) && detection == nullptr)
         boundWithOwnSpeeds(plan);
-    else
-        boundByConnectedParts(plan, regionsLinked);
+    boundByConnectedParts(plan, regionsLinked);
     boundByCharges(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;

@@ -11,7 +11,8 @@ class PlanMetricsCalculator {
     void compute(Plan& plan) const;
 
   private:
-    // Raises the lower bound to what the robots of each connected part need and lists confined robots;
+    // Raises the lower bound to what the robots of each connected part need (robots of one speed only) and
+    // lists confined robots;
     // `regionsLinked`: the regions link every robot (regionsLinkEveryRobot), so the map is one part.
     static void boundByConnectedParts(Plan& plan, bool regionsLinked);
     // The bound where some robots drive at their own speeds (Plan::robotSpeeds): no plan beats the weighted

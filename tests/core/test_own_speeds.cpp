@@ -113,6 +113,24 @@ class OwnSpeedsTest : public QObject {
         QVERIFY(sorties.robotSpeeds.empty());
     }
 
+    // A robot walled into a pocket is still named, though the parts' even shares no longer bound the plan.
+    void aWalledInRobotIsStillNamed() {
+        std::vector<bool> blocked(30 * 30, false);
+        for (int row = 0; row < 30; ++row)
+            blocked[static_cast<std::size_t>(row * 30 + 8)] = true; // a wall along column 8
+        PlanningProblem problem = test::uniformProblem(30, 30, 10.0, blocked, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 29, 29),
+                          test::pixelCentre(problem.grid, 12, 0)};
+        problem.robotSpeeds = {0.0, 3.0, 0.0};
+        problem.planner = defaultPlannerChoice("mcpp-mlct");
+        const Plan plan = makePlanner("mcpp-mlct")->plan(problem, {});
+        const auto violations = test::checkAllInvariants(problem, plan);
+        QVERIFY2(violations.empty(), test::describe(violations).c_str());
+        QCOMPARE(plan.metrics.confinedRobots.size(), std::size_t{1});
+        QCOMPARE(plan.metrics.confinedRobots.front().robot, 0);
+        QVERIFY(plan.metrics.makespanSeconds >= plan.metrics.lowerBoundSeconds);
+    }
+
     void pacesFollowTheSpeed() {
         const PlanningProblem problem = fleetProblem(4.0, "mcpp-mlct", 0.0);
         const CellGraph graph = test::cellPerPixelGraph(problem);
