@@ -32,8 +32,9 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
                                 "written in parts, each beginning where the one before it ended; aircraft "
                                 "take off from their start and "
                                 "return to it in every part. The turnaround, the time on the ground between "
-                                "two parts, adds to when each robot is done in the field. A cruise speed all "
-                                "robots share is also the speed the plan uses over every passable class."),
+                                "two parts, adds to when each robot is done in the field. A robot's cruise "
+                                "speed is also the speed the plan gives it over every passable class: a "
+                                "faster robot gets more ground (MCPP-MLCT)."),
                              this);
     intro->setWordWrap(true);
     layout->addWidget(intro);
@@ -42,8 +43,8 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     table_->setHorizontalHeaderLabels({tr("Vehicle"), tr("Altitude above home (m)"), tr("Cruise speed (m/s)"),
                                        tr("Item limit"), tr("Flight time (min)"), tr("Turnaround (min)")});
     table_->horizontalHeaderItem(2)->setToolTip(
-        tr("0: each land-cover class's speed. When every robot has the same cruise speed, the plan uses it "
-           "over every passable class."));
+        tr("0: each land-cover class's speed. Otherwise the robot drives at it over every passable class, "
+           "in the plan too."));
     table_->horizontalHeaderItem(3)->setToolTip(
         tr("Mission items the autopilot holds, home included: %1 or more, or 0 for no limit")
             .arg(io::minimumMaxWaypoints));
