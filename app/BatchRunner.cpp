@@ -287,12 +287,15 @@ void BatchRunner::checkVehicles() const {
     for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
         if (auto tooShort = io::flightTooShortProblem(vehicles[robot])) {
             const std::string& name = mission_.robots[robot].name;
-            names.push_back(name.empty() ? "robot " + std::to_string(robot + 1) : name);
-            problem = problem ? problem : std::move(tooShort);
+            names.push_back(name.empty() ? "Robot " + std::to_string(robot + 1) : name);
+            if (!problem)
+                problem = std::move(tooShort);
         }
     if (names.empty())
         return;
-    if (names.size() == vehicles.size() && names.size() > 1)
+    if (names.size() == vehicles.size() && names.size() > 1 &&
+        std::all_of(vehicles.begin(), vehicles.end(),
+                    [&](const io::VehicleSettings& vehicle) { return vehicle == vehicles.front(); }))
         badInput("every robot: " + *problem);
     badInput(names.front() + (names.size() > 1 ? " and " + std::to_string(names.size() - 1) + " more" : "") +
              ": " + *problem);

@@ -4,6 +4,7 @@
 #include "core/coverage/StraightRunMerging.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/PlanningProblem.hpp"
+#include "core/model/TurnTimeModel.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/internal/CompressedReader.hpp"
@@ -429,11 +430,26 @@ void checkRegions(const RegionAllocation& regions, std::size_t cells, std::size_
             throw CompressedReader::DamagedData("a start in no cell");
 }
 
+// Turn times that the plan's turn model gives from the cells' speeds are kept as that model rather than cell
+// by cell: a robot of its own speed (an aircraft's cruise speed) then turns at its price, as when planned.
+void followTurnModel(Plan& plan) {
+    const TurnTimeModel model = TurnTimeModel::from(plan.parameters);
+    CellGraph& graph = plan.cells;
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        const auto cell = static_cast<int>(id);
+        if (graph.turnSeconds(cell) !=
+            static_cast<float>(model.secondsPer90Degrees(graph.record(cell).speedMetresPerSecond)))
+            return;
+    }
+    graph.applyTurnTime(model);
+}
+
 Plan readPlan(CompressedReader& in, bool withWalkedCounts) {
     Plan plan;
     plan.planner = in.getString();
     plan.parameters = getParameters(in);
     plan.cells = getCells(in);
+    followTurnModel(plan);
     plan.regions.robotOfCell = in.getAll<int>();
     plan.regions.startCell = in.getAll<int>();
     plan.regions.costSeconds = in.getAll<double>();
@@ -479,11 +495,16 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
         if (!area->empty())
             *area = absoluteNormal(resolveMissionPath(*area, missionPath));
     inputs.exports = {};
-    // Vehicles shape the files, not the plan, except for a cruise speed the whole fleet shares.
+    // Vehicles shape the files, not the plan, except for the cruise speeds the plan drives the robots at: the
+    // fleet's, or each robot's where they differ.
     inputs.exports.vehicle.cruiseSpeedMetresPerSecond = fleetCruiseSpeed(mission);
-    for (RobotSpec& robot : inputs.robots) { // names shape the files, not the plan
-        robot.name.clear();
-        robot.vehicle = {};
+    const std::vector<double> cruiseSpeeds = robotCruiseSpeeds(mission);
+    for (std::size_t robot = 0; robot < inputs.robots.size();
+         ++robot) { // names shape the files, not the plan
+        inputs.robots[robot].name.clear();
+        inputs.robots[robot].vehicle = {};
+        if (cruiseSpeeds[robot] != inputs.exports.vehicle.cruiseSpeedMetresPerSecond)
+            inputs.robots[robot].vehicle.cruiseSpeedMetresPerSecond = cruiseSpeeds[robot];
     }
     const std::string files =
         inputFilesIdentity({inputs.rasterPath, inputs.area.includePath, inputs.area.excludePath});

@@ -122,7 +122,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         else
             std::visit([&, name = key](const auto& held) { parameters.add(name, held); }, value);
     }
-    // The table the plan used, as planned: a cruise speed the fleet shares stands in for the class speeds.
+    // The class table as the mission gives it; a cruise speed the fleet shares stands in for its speeds in
+    // the plan, as the plan's issues say.
     internal::addClassRows(root.add("classes", JsonValue::array()), context.classes);
     JsonValue& robots = root.add("robots", JsonValue::array());
     const SortieLayer* sorties = sortieLayerOf(context.plan);

@@ -8,12 +8,14 @@
 #include "core/allocation/RegionReconnection.hpp"
 #include "core/allocation/StartComponents.hpp"
 #include "core/allocation/TreePieces.hpp"
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/model/LocalConnectivity.hpp"
 #include "core/model/NeighbourSource.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 
@@ -25,22 +27,24 @@ constexpr int unreachable = -2;
 
 // When the robots would all finish if the work were shared to that end: costs are each robot's own time (its
 // cells' costs times its pace), and a robot of pace p does 1 / p of a cost a second. With every pace 1
-// (none given), the mean cost. `robots`: the robots sharing the work; empty: all.
+// (none given), the mean cost. `robots`: the robots sharing the work.
 double fairTime(const std::vector<double>& costs, const std::vector<double>& paces,
-                const std::vector<int>& robots = {}) {
-    std::vector<int> all;
-    if (robots.empty())
-        for (std::size_t robot = 0; robot < costs.size(); ++robot)
-            all.push_back(static_cast<int>(robot));
-    const std::vector<int>& sharing = robots.empty() ? all : robots;
+                const std::vector<int>& robots) {
     double work = 0.0;
     double rate = 0.0;
-    for (const int robot : sharing) {
-        const double pace = paces.empty() ? 1.0 : paces[static_cast<std::size_t>(robot)];
+    for (const int robot : robots) {
+        const double pace = paceOf(paces, static_cast<std::size_t>(robot));
         work += costs[static_cast<std::size_t>(robot)] / pace;
         rate += 1.0 / pace;
     }
     return rate > 0.0 ? work / rate : 0.0;
+}
+
+// fairTime for all the robots.
+double fairTime(const std::vector<double>& costs, const std::vector<double>& paces) {
+    std::vector<int> robots(costs.size());
+    std::iota(robots.begin(), robots.end(), 0);
+    return fairTime(costs, paces, robots);
 }
 
 struct RobotState {
@@ -193,8 +197,9 @@ class Allocation {
         return unassignedCount_ == 0;
     }
 
-    // About how many single-cell moves would even the regions out: the cost above the mean, in cells of
-    // average cost (within a few percent of the moves made on the benchmark maps).
+    // About how many single-cell moves would even the regions out: the cost above the fair time (fairTime;
+    // the mean at one pace), in cells of average cost (within a few percent of the moves made on the
+    // benchmark maps).
     double movesToEvenOut() const {
         std::vector<double> costs;
         for (const RobotState& robot : robots_)
@@ -224,7 +229,7 @@ class Allocation {
     }
 
   private:
-    double pace(int robot) const { return paces_.empty() ? 1.0 : paces_[static_cast<std::size_t>(robot)]; }
+    double pace(int robot) const { return paceOf(paces_, static_cast<std::size_t>(robot)); }
 
     double weightedCost(int robot) const {
         const double cost = robots_[static_cast<std::size_t>(robot)].cost;
@@ -865,8 +870,9 @@ std::vector<std::vector<int>> robotsSharingParts(const CellGraph& graph, const s
     return shared;
 }
 
-// How uneven a division's costs are: the largest over the mean of the robots sharing its part, at least 1.
-// With `unevenBeyond` (a cost), 1 unless some region also exceeds its part's mean by more than that.
+// How uneven a division's costs are: the largest over the fair time of the robots sharing its part (fairTime;
+// their mean at one pace), at least 1. With `unevenBeyond` (a cost), 1 unless some region also exceeds its
+// part's fair time by more than that.
 double unevenness(const std::vector<double>& costs, const std::vector<std::vector<int>>& robotsOfParts,
                   const std::vector<double>& paces, double unevenBeyond = 0.0) {
     double largest = 1.0;
@@ -908,9 +914,11 @@ RegionAllocation regrownWithWeights(const CellGraph& graph, const std::vector<Ce
                                     const std::vector<int>& startCells, RegionAllocation first,
                                     int rebalanceIterations, const ProgressReporter& progress,
                                     const std::vector<double>& paces) {
-    double dearestCell = 0.0;
+    double dearestCell = 0.0; // in the slowest robot's own time
     for (const CellFigures& cell : figures)
         dearestCell = std::max(dearestCell, cell.cost);
+    if (!paces.empty())
+        dearestCell *= std::max(1.0, *std::max_element(paces.begin(), paces.end()));
     const std::vector<std::vector<int>> robotsOfParts = robotsSharingParts(graph, startCells);
     if (unevenness(first.costSeconds, robotsOfParts, paces, dearestCell) <= unevenAfterEvening)
         return first;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/model/CellGraph.hpp"
 #include "core/model/LocalConnectivity.hpp"
 #include "core/model/RegionAllocation.hpp"
@@ -52,9 +53,7 @@ class BorderStraightening {
     [[nodiscard]] int bestMove(int cell, std::vector<int>& owner, const std::vector<double>& cost,
                                double ceiling, bool& refused) const;
 
-    [[nodiscard]] double pace(int robot) const {
-        return paces_.empty() ? 1.0 : paces_[static_cast<std::size_t>(robot)];
-    }
+    [[nodiscard]] double pace(int robot) const { return paceOf(paces_, static_cast<std::size_t>(robot)); }
 
     const CellGraph& graph_;
     double slack_;

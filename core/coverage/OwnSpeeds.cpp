@@ -15,12 +15,21 @@ double ownSpeedOf(const std::vector<double>& speeds, std::size_t robot) {
     return robot < speeds.size() && speeds[robot] > 0.0 ? speeds[robot] : 0.0;
 }
 
-void driveAtOwnSpeed(CoveragePath& path, const CellGraph& graph, double speed) {
+void setOwnSpeed(CoveragePath& path, double speed) {
     if (!(speed > 0.0))
         return;
     for (Waypoint& waypoint : path.waypoints)
         waypoint.speedMetresPerSecond = static_cast<float>(speed);
+}
+
+void driveAtOwnSpeed(CoveragePath& path, const CellGraph& graph, double speed) {
+    if (!(speed > 0.0))
+        return;
+    const double travelBefore = path.timeSeconds - path.turnSeconds;
+    setOwnSpeed(path, speed);
     timePath(path, graph);
+    if (path.runsMerged() && travelBefore > 0.0)
+        path.connectorSeconds *= (path.timeSeconds - path.turnSeconds) / travelBefore;
 }
 
 void driveAtOwnSpeeds(std::vector<CoveragePath>& paths, const CellGraph& graph,
@@ -48,7 +57,7 @@ double paceAt(const CellGraph& graph, float speed) {
 } // namespace
 
 std::vector<double> drivenPaces(const CellGraph& graph, const RegionAllocation& regions,
-                                const std::vector<CoveragePath>& paths) {
+                                const std::vector<CoveragePath>& paths, const std::vector<double>& guessed) {
     std::vector<double> costs(paths.size(), 0.0);
     for (std::size_t id = 0; id < graph.size() && id < regions.robotOfCell.size(); ++id) {
         const int robot = regions.robotOfCell[id];
@@ -57,8 +66,9 @@ std::vector<double> drivenPaces(const CellGraph& graph, const RegionAllocation& 
     }
     std::vector<double> paces(paths.size(), 1.0);
     for (std::size_t robot = 0; robot < paths.size(); ++robot)
-        if (costs[robot] > 0.0 && paths[robot].timeSeconds > 0.0)
-            paces[robot] = paths[robot].timeSeconds / costs[robot];
+        paces[robot] = costs[robot] > 0.0 && paths[robot].timeSeconds > 0.0
+                           ? paths[robot].timeSeconds / costs[robot]
+                           : paceOf(guessed, robot);
     return paces;
 }
 

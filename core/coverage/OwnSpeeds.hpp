@@ -17,21 +17,31 @@ namespace mcpp {
 // The robot's own speed; 0 when it takes the class table's.
 [[nodiscard]] double ownSpeedOf(const std::vector<double>& speeds, std::size_t robot);
 
-// The path driven at `speed` over every cell: each waypoint carries it, turns cost what they cost at it,
-// and the path is timed again (timePath; measured again by the metrics stage). Nothing changes at 0.
+// Each waypoint of the path carries `speed` (its turns then cost what they cost at it); nothing at 0. The
+// caller measures or times the path.
+void setOwnSpeed(CoveragePath& path, double speed);
+// The path driven at `speed` over every cell: setOwnSpeed, and the path timed again (timePath; measured again
+// by the metrics stage). A path whose straight runs are merged keeps no steps between cells of different
+// sizes to time: its connector time is scaled by its travel's, exact where the land covers share a speed.
 void driveAtOwnSpeed(CoveragePath& path, const CellGraph& graph, double speed);
 // driveAtOwnSpeed for each path with its robot's speed.
 void driveAtOwnSpeeds(std::vector<CoveragePath>& paths, const CellGraph& graph,
                       const std::vector<double>& speeds);
 
 // By robot, the seconds it takes for a second of the cells' cover time (Cell::coverSeconds) over the graph:
-// 1 at the class speeds; for a robot of its own speed, its travel over them (about 0.1 ten times as fast).
+// 1 at the class speeds; for a robot of its own speed, its travel over them (about 0.1 for a robot ten times
+// as fast).
 // A division balances robots' own times by costs times these: a first guess, which drivenPaces corrects.
 [[nodiscard]] std::vector<double> robotPaces(const CellGraph& graph, const std::vector<double>& speeds,
                                              std::size_t robots);
 // By robot, its path's time over its region's cover time: its pace as driven, its own speed and the turns
-// its path made included.
+// its path made included; `guessed` (robotPaces) for a robot with no cells.
 [[nodiscard]] std::vector<double> drivenPaces(const CellGraph& graph, const RegionAllocation& regions,
-                                              const std::vector<CoveragePath>& paths);
+                                              const std::vector<CoveragePath>& paths,
+                                              const std::vector<double>& guessed);
+// A robot's pace, 1 where none is given.
+[[nodiscard]] inline double paceOf(const std::vector<double>& paces, std::size_t robot) {
+    return robot < paces.size() ? paces[robot] : 1.0;
+}
 
 } // namespace mcpp

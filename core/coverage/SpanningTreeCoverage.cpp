@@ -143,11 +143,8 @@ CoveragePath SpanningTreeCoverage::regionPath(const CellGraph& graph, const std:
     TreeCircumnavigation walker(graph);
     CoveragePath path =
         pathFromWalk(robot, start, walker.walk(tree, start, closedTour_, shape.points()), closedTour_);
+    setOwnSpeed(path, ownSpeedOf(robotSpeeds_, static_cast<std::size_t>(robot)));
     measurePath(path, graph);
-    if (const double speed = ownSpeedOf(robotSpeeds_, static_cast<std::size_t>(robot)); speed > 0.0) {
-        driveAtOwnSpeed(path, graph, speed);
-        measurePath(path, graph);
-    }
     return path;
 }
 

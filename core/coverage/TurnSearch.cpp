@@ -79,8 +79,8 @@ int TurnSearch::improve(const CellGraph& graph, const RegionAllocation& regions,
         CoveragePath path =
             pathFromWalk(static_cast<int>(robot), starts[robot],
                          walker.walkFromStart(*tree, starts[robot], closedTour_), closedTour_);
+        setOwnSpeed(path, ownSpeedOf(robotSpeeds_, robot));
         timePath(path, graph);
-        driveAtOwnSpeed(path, graph, ownSpeedOf(robotSpeeds_, robot));
         if (!isGain(path, paths[robot]))
             return;
         paths[robot] = std::move(path);

@@ -51,7 +51,8 @@ class CellGraph {
         const auto index = static_cast<std::size_t>(id);
         return turns_.turnSeconds(index, records_[index].speedMetresPerSecond);
     }
-    // The same for a robot driving through the cell at `speedMetresPerSecond` (its own, not the class's).
+    // The same for a robot driving through the cell at `speedMetresPerSecond` (its own, not the class's);
+    // turn times given cell by cell (a plan file's that no model gives) stay as given.
     [[nodiscard]] float turnSeconds(int id, float speedMetresPerSecond) const {
         return turns_.turnSeconds(static_cast<std::size_t>(id), speedMetresPerSecond);
     }

@@ -41,19 +41,24 @@ double longestTime(const std::vector<CoveragePath>& paths) {
 // Robots of their own speeds: paces guessed from travel alone, their turns left out, are put right by the
 // paths as driven, and the division evened out again with them while that shortens the longest path.
 // Returns the rounds kept.
-int balanceOwnSpeeds(PlanningRun& run, const std::vector<int>& startCells, AzimuthTrendAllocator& allocator,
-                     BorderStraightening& straightening, const SpanningTreeCoverage& coverage) {
+int balanceOwnSpeeds(PlanningRun& run, const std::vector<int>& startCells, const std::vector<double>& guessed,
+                     AzimuthTrendAllocator& allocator, BorderStraightening& straightening,
+                     const SpanningTreeCoverage& coverage) {
     Plan& plan = run.plan();
     int kept = 0;
-    for (; kept < speedBalanceRounds; ++kept) {
-        const std::vector<double> paces = drivenPaces(plan.cells, plan.regions, plan.paths);
+    for (; kept < speedBalanceRounds && startCells.size() > 1; ++kept) {
+        const ProgressReporter progress =
+            run.progress().within("speed balance", static_cast<double>(kept) / speedBalanceRounds,
+                                  static_cast<double>(kept + 1) / speedBalanceRounds);
+        // Paces of a round that does not help stay set: nothing divides the map after this stage.
+        const std::vector<double> paces = drivenPaces(plan.cells, plan.regions, plan.paths, guessed);
         allocator.setPaces(paces);
         straightening.setPaces(paces);
-        RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions, run.progress());
+        RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions, progress);
         straightening.straighten(regions);
         std::vector<CoveragePath> paths = coverage.walkTrees(
-            plan.cells, coverage.planTrees(plan.cells, regions, run.starts(), run.progress(), false),
-            run.starts(), run.progress());
+            plan.cells, coverage.planTrees(plan.cells, regions, run.starts(), progress, false), run.starts(),
+            progress);
         driveAtOwnSpeeds(paths, plan.cells, run.problem().robotSpeeds);
         if (!(longestTime(paths) < longestTime(plan.paths)))
             break;
@@ -102,10 +107,11 @@ void MlctPlanner::run(PlanningRun& run) const {
     // Robots of their own speeds (an aircraft beside ground robots) are balanced in their own times.
     const std::vector<double>& speeds = run.problem().robotSpeeds;
     const bool ownSpeeds = someOwnSpeed(speeds);
+    const std::vector<double> guessedPaces =
+        ownSpeeds ? robotPaces(plan.cells, speeds, startCells.size()) : std::vector<double>{};
     if (ownSpeeds) {
-        const std::vector<double> paces = robotPaces(plan.cells, speeds, startCells.size());
-        allocator.setPaces(paces);
-        straightening.setPaces(paces);
+        allocator.setPaces(guessedPaces);
+        straightening.setPaces(guessedPaces);
         coverage.setRobotSpeeds(speeds);
         turnSearch.setRobotSpeeds(speeds);
     }
@@ -146,8 +152,9 @@ void MlctPlanner::run(PlanningRun& run) const {
         return paths;
     });
     if (ownSpeeds)
-        run.stage("speed balance",
-                  [&] { return balanceOwnSpeeds(run, startCells, allocator, straightening, coverage); });
+        run.stage("speed balance", [&] {
+            return balanceOwnSpeeds(run, startCells, guessedPaces, allocator, straightening, coverage);
+        });
     // Costs only estimate path times: border cells pass from the longest path to shorter neighbours, paths
     // replanned, while that shortens the longest. Bounded to about half a second of replanning.
     const PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(plan.cells));

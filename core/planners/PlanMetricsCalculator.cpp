@@ -115,6 +115,8 @@ void PlanMetricsCalculator::boundWithOwnSpeeds(Plan& plan) {
         if (robot < plan.paths.size())
             weightedExtras += weight * (plan.paths[robot].turnSeconds + plan.paths[robot].connectorSeconds);
     }
+    if (!(weights > 0.0))
+        return; // no robot
     double shares = 0.0;
     for (const auto& [seconds, metres] : cells)
         shares += classSpeeds ? std::min(seconds / travel, metres / length) : metres / length;

@@ -210,7 +210,10 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
         planningRun.addIssue(IssueSeverity::Information, "confined-robot", confinedRobotMessage(confined));
     // Robots slowed or stopped by events are meant to do less: their plan is uneven by design.
     const bool playsEvents = planner.simulatesEvents && !problem.events.empty();
-    if (const std::string uneven = unevenPlanMessage(plan.metrics); !uneven.empty() && !playsEvents)
+    // Nor is a plan that divides the work at one speed between robots of their own (own-speeds-unbalanced).
+    const bool unevenSpeeds = !plan.robotSpeeds.empty() && !planner.balancesOwnSpeeds;
+    if (const std::string uneven = unevenPlanMessage(plan.metrics);
+        !uneven.empty() && !playsEvents && !unevenSpeeds)
         planningRun.addIssue(IssueSeverity::Warning, "uneven-plan", uneven);
     progress.report("done", 1.0);
     return plan;

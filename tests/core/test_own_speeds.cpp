@@ -131,6 +131,26 @@ class OwnSpeedsTest : public QObject {
         QVERIFY(plan.metrics.makespanSeconds >= plan.metrics.lowerBoundSeconds);
     }
 
+    // Priced from the speed (the default, at 1 m/s2), a quarter turn costs the fast robot 3 s, the other 1 s.
+    void turnsArePricedAtTheRobotsOwnSpeed() {
+        PlanningProblem problem = fleetProblem(3.0, "mcpp-mlct", 0.0);
+        problem.planner = defaultPlannerChoice("mcpp-mlct");
+        const Plan plan = makePlanner("mcpp-mlct")->plan(problem, {});
+        const auto violations = test::checkAllInvariants(problem, plan);
+        QVERIFY2(violations.empty(), test::describe(violations).c_str());
+        for (std::size_t robot = 0; robot < 2; ++robot) {
+            const CoveragePath& path = plan.paths[robot];
+            const double speed = robot == 0 ? 1.0 : 3.0;
+            QVERIFY(quarterTurns(path) > 10.0);
+            const double expected = path.lengthMetres / speed + speed * quarterTurns(path);
+            QVERIFY2(std::abs(path.timeSeconds - expected) < 1e-6 * expected,
+                     qPrintable(QStringLiteral("robot %1: %2 against %3")
+                                    .arg(robot)
+                                    .arg(path.timeSeconds)
+                                    .arg(expected)));
+        }
+    }
+
     void pacesFollowTheSpeed() {
         const PlanningProblem problem = fleetProblem(4.0, "mcpp-mlct", 0.0);
         const CellGraph graph = test::cellPerPixelGraph(problem);

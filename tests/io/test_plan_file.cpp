@@ -1,5 +1,6 @@
 // A plan saved beside its mission comes back whole, only for the inputs it was planned from; a damaged
 // file is refused with its name and never crashes the reader.
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/StraightRunMerging.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "io/Mission.hpp"
@@ -113,6 +114,31 @@ class TestPlanFile : public QObject {
         // Saving what was read gives the same bytes: nothing is lost or reordered.
         QVERIFY(io::savePlanFile(back, "inputs-a", file("again.mcpp-plan")).ok());
         QCOMPARE(bytesOf(file("again.mcpp-plan")), bytesOf(path));
+    }
+
+    // A robot of its own speed turns at its price in a plan read back, as when it was planned: the turn
+    // times the plan's model gives come back as that model, not cell by cell at the class speeds.
+    void aRobotOfItsOwnSpeedTurnsAtItsPriceReadBack() {
+        test::RandomMapSpec spec;
+        spec.columns = 24;
+        spec.rows = 18;
+        spec.landCovers = 3;
+        spec.fovPixels = 1.0;
+        spec.robots = 2;
+        spec.seed = 7;
+        PlanningProblem problem = test::randomProblem(spec);
+        problem.robotSpeeds = {0.0, 6.0};
+        const Plan plan = MlctPlanner{}.plan(problem, {}); // turns priced from the speed, the default
+        const std::string path = file("own-speed.mcpp-plan");
+        QVERIFY(io::savePlanFile(plan, "inputs-a", path).ok());
+        auto loaded = io::loadPlanFile(path, "inputs-a");
+        QVERIFY2(loaded.ok() && loaded.value().has_value(), loaded.ok() ? "" : loaded.error().c_str());
+        const Plan& back = *loaded.value();
+        const int cell = plan.paths[1].waypoints.front().cell;
+        QCOMPARE(back.cells.turnSeconds(cell, 6.0F), plan.cells.turnSeconds(cell, 6.0F));
+        QVERIFY(back.cells.turnSeconds(cell, 6.0F) > back.cells.turnSeconds(cell)); // 6 m/s beats the class's
+        QCOMPARE(cumulativeSeconds(back.paths[1], back.cells).back(),
+                 cumulativeSeconds(plan.paths[1], plan.cells).back());
     }
 
     // A large plan's paths with their straight runs merged come back merged, with the count of waypoints
@@ -259,6 +285,13 @@ class TestPlanFile : public QObject {
         landCover.speedMetresPerSecond *= 0.5;
         slower.classes.set(landCover);
         QVERIFY(io::planInputsFingerprint(slower, missionPath) != base);
+        // Each robot's cruise speed drives it in the plan; the fleet's altitude does not.
+        io::Mission drone = mission;
+        drone.robots[0].vehicle.cruiseSpeedMetresPerSecond = 12.0;
+        const std::string withDrone = io::planInputsFingerprint(drone, missionPath);
+        QVERIFY(withDrone != base);
+        drone.robots[0].vehicle.cruiseSpeedMetresPerSecond = 10.0;
+        QVERIFY(io::planInputsFingerprint(drone, missionPath) != withDrone);
         io::Mission otherPlanner = mission;
         otherPlanner.planner.planner = "darp";
         QVERIFY(io::planInputsFingerprint(otherPlanner, missionPath) != base);
