@@ -793,7 +793,8 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
     if (std::any_of(vehicles.begin(), vehicles.end(), [](const VehicleSettings& vehicle) {
             return vehicle.cruiseSpeedMetresPerSecond > 0.0;
         })) {
-        problem.robotSpeeds = robotCruiseSpeeds(mission);
+        for (const VehicleSettings& vehicle : vehicles) // robotCruiseSpeeds, from the vehicles at hand
+            problem.robotSpeeds.push_back(vehicle.cruiseSpeedMetresPerSecond);
         problem.notes.push_back(
             {IssueSeverity::Information, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission, vehicles)});
     } else if (std::any_of(vehicles.begin(), vehicles.end(),

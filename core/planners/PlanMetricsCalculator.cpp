@@ -90,18 +90,20 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
 // t_r), w_r t_r(i) is the cell's share of the map's travel time for a robot at the class speeds and its
 // share of the map's length for one at its own, whatever that speed. Uniform speeds give the usual bound.
 void PlanMetricsCalculator::boundWithOwnSpeeds(Plan& plan) {
+    // Two passes over the covered cells rather than a list of them: 16 bytes a cell on a map of 69 M cells.
+    const auto forEachCoveredCell = [&plan](const auto& use) {
+        for (std::size_t id = 0; id < plan.cells.size() && id < plan.regions.robotOfCell.size(); ++id)
+            if (plan.regions.robotOfCell[id] >= 0) {
+                const Cell cell = plan.cells.cell(static_cast<int>(id));
+                use(cell.travelSeconds(), cell.travelSeconds() * cell.speedMetresPerSecond);
+            }
+    };
     double travel = 0.0; // over the covered cells, at the class speeds
     double length = 0.0;
-    std::vector<std::pair<double, double>> cells; // each covered cell's travel time and length
-    for (std::size_t id = 0; id < plan.cells.size(); ++id) {
-        if (id >= plan.regions.robotOfCell.size() || plan.regions.robotOfCell[id] < 0)
-            continue;
-        const Cell& cell = plan.cells.cell(static_cast<int>(id));
-        const double seconds = cell.travelSeconds();
-        cells.emplace_back(seconds, seconds * cell.speedMetresPerSecond);
+    forEachCoveredCell([&](double seconds, double metres) {
         travel += seconds;
-        length += cells.back().second;
-    }
+        length += metres;
+    });
     if (!(travel > 0.0) || !(length > 0.0))
         return;
     bool classSpeeds = false; // some robot drives at the class table's speeds
@@ -118,8 +120,9 @@ void PlanMetricsCalculator::boundWithOwnSpeeds(Plan& plan) {
     if (!(weights > 0.0))
         return; // no robot
     double shares = 0.0;
-    for (const auto& [seconds, metres] : cells)
+    forEachCoveredCell([&](double seconds, double metres) {
         shares += classSpeeds ? std::min(seconds / travel, metres / length) : metres / length;
+    });
     plan.metrics.lowerBoundSeconds = (shares + weightedExtras) / weights;
 }
 

@@ -95,8 +95,11 @@ void applyOwnSpeeds(const PlannerDescription& planner, const PlanningProblem& pr
         return;
     }
     plan.robotSpeeds = problem.robotSpeeds;
+    if (planner.balancesOwnSpeeds)
+        return; // its paths were driven at them as it planned: timing them again is a pass over every
+                // waypoint
     driveAtOwnSpeeds(plan.paths, plan.cells, plan.robotSpeeds);
-    if (!planner.balancesOwnSpeeds && problem.starts.size() > 1)
+    if (problem.starts.size() > 1)
         run.addIssue(IssueSeverity::Warning, "own-speeds-unbalanced", ownSpeedsUnbalancedMessage(planner));
 }
 
