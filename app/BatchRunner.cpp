@@ -28,6 +28,8 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <regex>
+#include <set>
 #include <sys/resource.h>
 #include <system_error>
 #include <unistd.h>
@@ -281,24 +283,8 @@ void BatchRunner::prepareMission() {
 
 // Settings each fine alone that no vehicle can fly together, checked once flags and robots' own are merged.
 void BatchRunner::checkVehicles() const {
-    const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(mission_);
-    std::vector<std::string> names; // of the robots that cannot fly their settings
-    std::optional<std::string> problem;
-    for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
-        if (auto tooShort = io::flightTooShortProblem(vehicles[robot])) {
-            const std::string& name = mission_.robots[robot].name;
-            names.push_back(name.empty() ? "Robot " + std::to_string(robot + 1) : name);
-            if (!problem)
-                problem = std::move(tooShort);
-        }
-    if (names.empty())
-        return;
-    if (names.size() == vehicles.size() && names.size() > 1 &&
-        std::all_of(vehicles.begin(), vehicles.end(),
-                    [&](const io::VehicleSettings& vehicle) { return vehicle == vehicles.front(); }))
-        badInput("every robot: " + *problem);
-    badInput(names.front() + (names.size() > 1 ? " and " + std::to_string(names.size() - 1) + " more" : "") +
-             ": " + *problem);
+    if (auto problem = io::fleetFlightProblem(mission_))
+        badInput(*problem);
 }
 
 PlanningProblem BatchRunner::prepareProblem() {
@@ -336,6 +322,27 @@ void BatchRunner::checkOutputFolder() const {
     fs::remove(probe, code);
 }
 
+// Robots are numbered from 1, as the --start flags are, and a mission's array counts from 0: the robots a
+// message names by number, with where they are in the mission and their names, " (robot 1 is robots[0],
+// drone-A)".
+std::string BatchRunner::robotsNamed(const std::string& message) const {
+    static const std::regex numbered("robot ([0-9]+)");
+    std::set<std::size_t> robots;
+    for (auto match = std::sregex_iterator(message.begin(), message.end(), numbered);
+         match != std::sregex_iterator(); ++match)
+        robots.insert(std::stoul((*match)[1].str()));
+    std::string named;
+    for (const std::size_t robot : robots) {
+        if (robot == 0 || robot > mission_.robots.size())
+            continue;
+        const std::string& name = mission_.robots[robot - 1].name;
+        named += (named.empty() ? "" : "; ") +
+                 ("robot " + std::to_string(robot) + " is robots[" + std::to_string(robot - 1) + "]") +
+                 (name.empty() ? std::string() : ", " + name);
+    }
+    return named.empty() ? std::string() : " (" + named + ")";
+}
+
 Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
     const auto planner = makePlanner(problem.planner.planner);
     if (!planner)
@@ -353,10 +360,8 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         if (error.kind() == PlanningError::Kind::Cancelled)
             internalError(std::string("planning cancelled: ") + error.what());
         if (error.robot() >= 0) {
-            // Robots are numbered from 1, as the --start flags are; a mission's array counts from 0.
-            const bool namesRobot = error.detail().find("robot ") != std::string::npos;
             const std::string numbering =
-                namesRobot && !options_.missionFromFlags() ? " (robot n is robots[n-1] of the mission)" : "";
+                options_.missionFromFlags() ? std::string() : robotsNamed(error.detail());
             badInput(fieldName(io::MissionField::start(error.robot())) + ": " + error.detail() + numbering);
         }
         if (!error.parameter().empty())

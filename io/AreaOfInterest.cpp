@@ -4,6 +4,7 @@
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <gdal_alg.h>
 #include <ogrsf_frmts.h>
@@ -40,6 +41,30 @@ void scaleRings(OGRGeometry& geometry, double factor) {
             for (int point = 0; point < ring->getNumPoints(); ++point)
                 ring->setPoint(point, ring->getX(point) * factor, ring->getY(point) * factor);
     }
+}
+
+// Where a file's CRS is in degrees but its coordinates cannot be (metres read as longitude and latitude,
+// most often a GeoJSON file without a "crs" member), what to do about it; empty otherwise.
+std::string notDegreesProblem(const OGRGeometry& geometry, const OGRSpatialReference& source,
+                              const LoadedRaster& raster) {
+    if (!source.IsGeographic())
+        return {};
+    OGREnvelope envelope;
+    geometry.getEnvelope(&envelope);
+    const bool degrees = std::abs(envelope.MinX) <= 360.0 && std::abs(envelope.MaxX) <= 360.0 &&
+                         std::abs(envelope.MinY) <= 90.0 && std::abs(envelope.MaxY) <= 90.0;
+    if (degrees)
+        return {};
+    const std::string code = raster.georeference.authorityCode();
+    const char* name = source.GetName();
+    return " has coordinates such as (" + formatQuantity(envelope.MinX, 10) + ", " +
+           formatQuantity(envelope.MinY, 10) +
+           "), which are not longitude and latitude, yet the file's CRS is " +
+           (name != nullptr ? std::string(name) : std::string("geographic")) +
+           " (a GeoJSON file without a \"crs\" member is read as WGS 84): give the file its CRS" +
+           (code.empty() ? std::string()
+                         : " (ogr2ogr -a_srs " + code + " fixed.geojson FILE, if they are in the raster's, " +
+                               raster.georeference.name() + ")");
 }
 
 // Every polygon of every layer, in the raster's planning frame.
@@ -79,9 +104,14 @@ Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, Ow
                 continue;
             OGRGeometry* copy = geometry->clone();
             out.geometries.push_back(copy);
-            if (toPlanning && copy->transform(toPlanning.get()) != OGRERR_NONE)
-                return Count::failure(path + ": feature " + std::to_string(feature->GetFID()) +
-                                      " cannot be converted to the raster's CRS" + QuietGdalErrors::detail());
+            if (toPlanning && copy->transform(toPlanning.get()) != OGRERR_NONE) {
+                const std::string where = path + ": feature " + std::to_string(feature->GetFID());
+                if (auto notDegrees = notDegreesProblem(*geometry, *layer->GetSpatialRef(), raster);
+                    !notDegrees.empty())
+                    return Count::failure(where + notDegrees);
+                return Count::failure(where + " cannot be converted to the raster's CRS" +
+                                      QuietGdalErrors::detail());
+            }
             scaleRings(*copy, metresPerUnit);
             ++count;
         }

@@ -272,7 +272,7 @@ bool readVehicle(MissionReader& reader, const QJsonObject& object, const std::st
     if (vehicle.maxWaypoints && *vehicle.maxWaypoints != 0 && *vehicle.maxWaypoints < minimumMaxWaypoints) {
         return reader.fail(MissionReader::join(path, "max_waypoints"),
                            "must be 0 (no limit) or at least " + std::to_string(minimumMaxWaypoints) +
-                               " mission items");
+                               " mission items, not " + std::to_string(*vehicle.maxWaypoints));
     }
     if (vehicle.flightTimeSeconds)
         if (const auto problem = flightTimeProblem(*vehicle.flightTimeSeconds))
@@ -761,6 +761,19 @@ std::string robotLabel(const Mission& mission, std::size_t robot) {
     return name.empty() ? "Robot " + std::to_string(robot + 1) : name;
 }
 
+// "north", "north and south", "north, south and east", five at most named.
+std::string namedRobots(const Mission& mission, const std::vector<std::size_t>& robots) {
+    constexpr std::size_t named = 5;
+    std::string text;
+    const std::size_t shown = std::min(robots.size(), named);
+    for (std::size_t i = 0; i < shown; ++i)
+        text += (i == 0                                     ? ""
+                 : i + 1 == shown && robots.size() <= named ? " and "
+                                                            : ", ") +
+                robotLabel(mission, robots[i]);
+    return robots.size() > named ? text + " and " + std::to_string(robots.size() - named) + " more" : text;
+}
+
 // Robots that cruise at speeds of their own, each named with its speed: each is timed at it.
 std::string mixedCruiseSpeedsNote(const Mission& mission, const std::vector<VehicleSettings>& vehicles) {
     std::string speeds;
@@ -797,6 +810,20 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
             problem.robotSpeeds.push_back(vehicle.cruiseSpeedMetresPerSecond);
         problem.notes.push_back(
             {IssueSeverity::Information, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission, vehicles)});
+        // Beside robots of speeds of their own, an aircraft left at the land cover's would crawl unnoticed.
+        std::vector<std::size_t> crawling;
+        for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
+            if (isAircraft(vehicles[robot].type) && !(vehicles[robot].cruiseSpeedMetresPerSecond > 0.0))
+                crawling.push_back(robot);
+        if (!crawling.empty())
+            problem.notes.push_back(
+                {IssueSeverity::Warning, "aircraft-at-ground-speeds",
+                 namedRobots(mission, crawling) +
+                     (crawling.size() == 1 ? " is an aircraft" : " are aircraft") +
+                     " without a cruise speed, so " + (crawling.size() == 1 ? "it flies" : "they fly") +
+                     " at the class table's speeds, which are a ground robot's in the presets: give " +
+                     (crawling.size() == 1 ? "it" : "them") +
+                     " one (robots[].cruise_speed_mps, or Plan > Robot vehicles in the window)"});
     } else if (std::any_of(vehicles.begin(), vehicles.end(),
                            [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
         problem.notes.push_back(
@@ -867,6 +894,27 @@ std::vector<VehicleSettings> robotVehicles(const Mission& mission) {
     for (const RobotSpec& robot : mission.robots)
         vehicles.push_back(robot.vehicle.over(mission.exports.vehicle));
     return vehicles;
+}
+
+std::optional<std::string> fleetFlightProblem(const Mission& mission) {
+    const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
+    std::vector<std::string> names; // of the robots that cannot fly their settings
+    std::optional<std::string> problem;
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
+        if (auto tooShort = flightTooShortProblem(vehicles[robot])) {
+            names.push_back(robotLabel(mission, robot));
+            if (!problem)
+                problem = std::move(tooShort);
+        }
+    if (names.empty())
+        return std::nullopt;
+    // One setting shared by a whole fleet is one mistake, not one per robot.
+    if (names.size() == vehicles.size() && names.size() > 1 &&
+        std::all_of(vehicles.begin(), vehicles.end(),
+                    [&](const VehicleSettings& vehicle) { return vehicle == vehicles.front(); }))
+        return "every robot: " + *problem;
+    return names.front() + (names.size() > 1 ? " and " + std::to_string(names.size() - 1) + " more" : "") +
+           ": " + *problem;
 }
 
 } // namespace mcpp::io

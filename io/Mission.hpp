@@ -79,6 +79,9 @@ struct Mission {
 [[nodiscard]] std::vector<std::string> robotNames(const Mission& mission);
 // Each robot's vehicle in order: its own settings over the mission's.
 [[nodiscard]] std::vector<VehicleSettings> robotVehicles(const Mission& mission);
+// What no robot can fly with its vehicle settings (a flight too short for the climb and descent), naming the
+// robots; nothing when every robot can. Batch mode and the window refuse to plan on it alike.
+[[nodiscard]] std::optional<std::string> fleetFlightProblem(const Mission& mission);
 // Each robot's own battery in seconds in order, 0 where it has none (the planner's battery_s then).
 [[nodiscard]] std::vector<double> robotBatteries(const Mission& mission);
 // The cruise speed the whole fleet flies at, when every robot's vehicle has the same one; 0 when none has

@@ -157,6 +157,10 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         JsonValue& partSeconds = item.add("mission_part_seconds", JsonValue::array());
         for (const MissionPart& part : mission.parts)
             partSeconds.push(part.seconds);
+        // Each file's items as the autopilot counts them, home included: what its item limit holds.
+        JsonValue& partItems = item.add("mission_part_items", JsonValue::array());
+        for (const MissionPart& part : mission.parts)
+            partItems.push(part.items);
         // All the parts' flights, trips included: what the robot flies; the field time adds the turnarounds.
         const MissionFlights flights = missionFlights(mission, vehicle);
         item.add("mission_flights_s", flights.totalSeconds);

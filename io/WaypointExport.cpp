@@ -640,10 +640,27 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
            "or plan with wavefront-battery and chargers";
 }
 
+namespace {
+
+// The division evens out the robots' times on their paths; the trips to and from the start and the
+// turnarounds of split missions come after it, and can leave robots done hours apart.
+std::string unevenFieldTimes(const std::string& firstName, double firstSeconds, double lastSeconds) {
+    constexpr double noticeable = 1.1;
+    if (!(firstSeconds > 0.0) || lastSeconds <= firstSeconds * noticeable)
+        return {};
+    return "; the first, " + firstName + ", after " + formatDuration(firstSeconds) +
+           ": the division evens out the robots' times on their paths, not the trips to and from their "
+           "starts nor the turnarounds between flights";
+}
+
+} // namespace
+
 std::string fieldTimeNote(const ExportContext& context) {
     int last = -1;
+    int first = -1;
     bool split = false;
     MissionFlights lastFlights;
+    double firstSeconds = 0.0;
     for (int robot = 0; robot < static_cast<int>(context.plan.paths.size()); ++robot) {
         const AutopilotMission& mission = autopilotMissionOf(context, robot);
         if (mission.parts.empty()) // a robot without a path has no files
@@ -656,6 +673,10 @@ std::string fieldTimeNote(const ExportContext& context) {
         if (flights.fieldSeconds > lastFlights.fieldSeconds) {
             lastFlights = flights;
             last = robot;
+        }
+        if (first < 0 || flights.fieldSeconds < firstSeconds) {
+            firstSeconds = flights.fieldSeconds;
+            first = robot;
         }
     }
     if (!split || last < 0)
@@ -672,7 +693,7 @@ std::string fieldTimeNote(const ExportContext& context) {
            std::to_string(autopilotMissionOf(context, last).parts.size()) +
            (isAircraft(vehicle.type) ? " flights" : " parts") +
            (vehicle.turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") + " included" +
-           caveat;
+           caveat + unevenFieldTimes(context.robotName(first), firstSeconds, lastFlights.fieldSeconds);
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

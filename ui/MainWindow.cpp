@@ -144,6 +144,15 @@ QString asSentence(const std::string& clause) {
     return text;
 }
 
+// A vehicle setting no robot can fly, with where the window changes it. It begins with a robot's name as
+// the user wrote it, or "every robot".
+QString vehiclesProblemText(const std::string& problem) {
+    QString text = QString::fromStdString(problem);
+    if (text.startsWith(QStringLiteral("every robot")))
+        text[0] = text[0].toUpper();
+    return QObject::tr("%1. Change it in the Robot vehicles dialog (Plan menu).").arg(text);
+}
+
 QDockWidget* makeDock(const QString& objectName, const QString& title, QWidget* content, QWidget* parent) {
     auto* dock = new QDockWidget(title, parent);
     dock->setObjectName(objectName);
@@ -1607,6 +1616,10 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
         reportError(tr("Cannot compare"), tr("Check at least one planner in the Compare planners panel."));
         return false;
     }
+    if (const auto flight = io::fleetFlightProblem(document_->mission())) {
+        reportError(tr("Cannot compare"), vehiclesProblemText(*flight));
+        return false;
+    }
     // The same checks as for one plan, with the mission's own planner.
     auto prepared = io::planningProblem(*document_->raster(), document_->classes(),
                                         document_->mission().missingClassesAsObstacles, document_->starts(),
@@ -1695,6 +1708,10 @@ bool MainWindow::startPlanning() {
     if (const auto problem = document_->classes().validate()) {
         reportError(tr("Cannot plan"),
                     tr("The class table has a problem: %1").arg(QString::fromStdString(*problem)));
+        return false;
+    }
+    if (const auto flight = io::fleetFlightProblem(document_->mission())) {
+        reportError(tr("Cannot plan"), vehiclesProblemText(*flight));
         return false;
     }
     // The same checks batch mode makes, named in the window's terms.

@@ -2,6 +2,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -19,6 +20,17 @@ namespace {
 // decimals lose nothing of a value such as 1000 s.
 double secondsIn(const QDoubleSpinBox* minutes, double givenSeconds, double shownMinutes) {
     return minutes->value() == shownMinutes ? givenSeconds : minutes->value() * 60.0;
+}
+
+// A rover's waypoints are on the ground whatever altitude it is given: the box stays, greyed, so that the
+// altitude comes back if the robot is made an aircraft again.
+void followVehicleType(const QComboBox* type, QDoubleSpinBox* altitude) {
+    const bool aircraft = io::isAircraft(static_cast<io::VehicleType>(type->currentData().toInt()));
+    altitude->setEnabled(aircraft);
+    altitude->setToolTip(aircraft ? QString()
+                                  : QCoreApplication::translate(
+                                        "mcpp::ui::VehicleSettingsDialog",
+                                        "A rover drives on the ground: its waypoint files are at 0 m."));
 }
 
 } // namespace
@@ -139,6 +151,9 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     widgets.turnaround->setRange(0.0, io::maximumTurnaroundSeconds / 60.0);
     widgets.turnaround->setDecimals(3);
     show(widgets, settings);
+    followVehicleType(widgets.type, widgets.altitude);
+    connect(widgets.type, &QComboBox::currentIndexChanged, widgets.altitude,
+            [type = widgets.type, altitude = widgets.altitude] { followVehicleType(type, altitude); });
     table_->setCellWidget(row, 0, widgets.type);
     table_->setCellWidget(row, 1, widgets.altitude);
     table_->setCellWidget(row, 2, widgets.cruiseSpeed);

@@ -4,13 +4,14 @@
 #include <cctype>
 
 namespace mcpp {
-namespace {
 
 std::string lowercase(std::string text) {
     std::transform(text.begin(), text.end(), text.begin(),
                    [](unsigned char letter) { return static_cast<char>(std::tolower(letter)); });
     return text;
 }
+
+namespace {
 
 // Letters to insert, delete or change to turn one text into the other.
 std::size_t editDistance(const std::string& from, const std::string& to) {

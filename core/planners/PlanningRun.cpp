@@ -73,9 +73,18 @@ std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
         } else if (ownerOfCell[static_cast<std::size_t>(cell)] >= 0) {
             problem = StartPointProblem{Kind::StartsShareCell,
                                         describePoint(start) + " is in the same cell as robot " +
-                                            std::to_string(ownerOfCell[static_cast<std::size_t>(cell)] + 1)};
+                                            std::to_string(ownerOfCell[static_cast<std::size_t>(cell)] + 1) +
+                                            "'s start (a cell " + formatDistance(graph.cell(cell).size) +
+                                            " across)"};
         }
         if (problem) {
+            if (!snap && problem->kind == Kind::StartsShareCell)
+                throw PlanningError::aboutStart(
+                    problem->kind, robotIndex,
+                    problem->detail +
+                        ": each robot sets off from a cell of its own; place the starts farther "
+                        "apart, or let the planner move this one to the nearest free cell "
+                        "(snap_starts_to_free_cells=true)");
             if (!snap)
                 throw PlanningError::aboutStart(problem->kind, robotIndex, problem->detail);
             cell = nearestFreeCell(graph, ownerOfCell, start);

@@ -5,7 +5,6 @@
 #include <QFile>
 #include <QString>
 #include <array>
-#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -123,12 +122,6 @@ std::string trimmed(const std::string& text) {
         return {};
     const auto end = text.find_last_not_of(" \t\r\n");
     return text.substr(begin, end - begin + 1);
-}
-
-std::string lowercase(std::string text) {
-    for (char& character : text)
-        character = static_cast<char>(std::tolower(static_cast<unsigned char>(character)));
-    return text;
 }
 
 } // namespace mcpp::io::internal

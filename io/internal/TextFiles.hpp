@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/NameSuggestion.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Result.hpp"
 
@@ -32,6 +33,6 @@ void appendFixed(std::string& out, double value, int decimals);
 [[nodiscard]] bool splitCsvLine(const std::string& line, std::vector<std::string>& fields);
 [[nodiscard]] std::string quoteCsvField(const std::string& field);
 [[nodiscard]] std::string trimmed(const std::string& text);
-[[nodiscard]] std::string lowercase(std::string text);
+using mcpp::lowercase; // where io's files have always found it
 
 } // namespace mcpp::io::internal

@@ -1063,6 +1063,10 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
     QTest::newRow("mission robot in nodata")
         << QStringList{"--batch", scratch_.filePath("nodata-robot.json"), "--out", out}
         << QStringList{"nodata-robot.json", "robots[1].start", "nodata"};
+    QTest::newRow("mission robots in one cell")
+        << QStringList{"--batch", scratch_.filePath("shared-cell.json"), "--out", out}
+        << QStringList{"shared-cell.json", "robots[2].start (forest)", "same cell as robot 1's start",
+                       "(robot 1 is robots[0], grassland)"};
     QTest::newRow("mission robot without start")
         << QStringList{"--batch", scratch_.filePath("no-start.json"), "--out", out}
         << QStringList{"no-start.json", "robots[0].start", "missing"};
@@ -1116,7 +1120,7 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
         << QStringList{"--start-crs"};
     QTest::newRow("two robots in one cell")
         << (flags + QStringList{"--start", "431050,5301050", "--start", "431055,5301055", "--out", out})
-        << QStringList{"--start 2", "same cell as robot 1"};
+        << QStringList{"--start 2", "same cell as robot 1's start (a cell", "snap_starts_to_free_cells=true"};
     QTest::newRow("--out is a file") << QStringList{"--batch", mission, "--out",
                                                     samplePath("synthetic/classes.csv")}
                                      << QStringList{"--out", "classes.csv", "not a folder"};
@@ -1152,6 +1156,13 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
     auto noStartMission = mission;
     noStartMission.insert("robots", robots);
     QVERIFY(writeText(scratch_.filePath("no-start.json"), QJsonDocument(noStartMission).toJson()));
+    auto sharing = mission.value("robots").toArray();
+    auto third = sharing.at(2).toObject();
+    third.insert("start", QJsonArray{431040, 5301040}); // grassland's start
+    sharing.replace(2, third);
+    auto sharedCellMission = mission;
+    sharedCellMission.insert("robots", sharing);
+    QVERIFY(writeText(scratch_.filePath("shared-cell.json"), QJsonDocument(sharedCellMission).toJson()));
 
     const auto run = runMcpp(arguments);
     QVERIFY2(run.exitCode == 2,

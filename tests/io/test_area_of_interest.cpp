@@ -137,6 +137,12 @@ class AreaOfInterestTest : public QObject {
                                      << "no polygons";
         QTest::newRow("far from the map")
             << rectangleJson(10.0, 45.0, 10.1, 45.1, QString()) << "leaves no pixel";
+        // Metres without a "crs" member are read as longitude and latitude: said so, with the fix.
+        QTest::newRow("metres read as degrees")
+            << rectangleJson(305000, 4130000, 325000, 4150000, QString())
+            << "has coordinates such as (305000, 4130000), which are not longitude and latitude, yet the "
+               "file's CRS is WGS 84 (a GeoJSON file without a \"crs\" member is read as WGS 84): give the "
+               "file its CRS (ogr2ogr -a_srs EPSG:26912";
     }
 
     void badAreaFilesAreRefusedNamingTheFile() {

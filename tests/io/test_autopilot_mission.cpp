@@ -563,6 +563,12 @@ class AutopilotMissionTest : public QObject {
             total += seconds.toDouble();
         }
         QVERIFY(std::abs(total - mission.seconds) < 1e-6 * mission.seconds); // a rover: no trips, no turns
+        // Each part's items, as its waypoint list holds them (home and first speed rows included).
+        const QJsonArray partItems =
+            readJson(report)["robots"].toArray()[0].toObject()["mission_part_items"].toArray();
+        QCOMPARE(static_cast<std::size_t>(partItems.size()), mission.parts.size());
+        for (std::size_t part = 0; part < mission.parts.size(); ++part)
+            QCOMPARE(partItems[static_cast<qsizetype>(part)].toInt(), mission.parts[part].items);
         QCOMPARE(readJson(report)["robots"].toArray()[0].toObject()["mission_flights_s"].toDouble(), total);
     }
 

@@ -213,6 +213,27 @@ class MissionFilesTest : public QObject {
         QVERIFY2(mixed.notes[0].message.find("beta 6 m/s") != std::string::npos,
                  mixed.notes[0].message.c_str());
 
+        // Beside robots of speeds of their own, an aircraft left without one is named.
+        Mission crawling = mission;
+        crawling.exports.vehicle.type = VehicleType::Rover;
+        crawling.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
+        crawling.robots[0].vehicle.cruiseSpeedMetresPerSecond = 3.0;
+        crawling.robots[1].vehicle.type = VehicleType::Multirotor;
+        crawling.robots[1].vehicle.cruiseSpeedMetresPerSecond.reset();
+        crawling.robots[2].vehicle.type = VehicleType::Rover;
+        crawling.robots[2].vehicle.cruiseSpeedMetresPerSecond.reset();
+        PlanningProblem slow = problem;
+        applyRobotSettings(crawling, slow);
+        QCOMPARE(slow.notes.size(), std::size_t{2});
+        QCOMPARE(slow.notes[1].code, std::string("aircraft-at-ground-speeds"));
+        QVERIFY(slow.notes[1].severity == IssueSeverity::Warning);
+        QVERIFY2(slow.notes[1].message.rfind("beta is an aircraft without a cruise speed", 0) == 0,
+                 slow.notes[1].message.c_str());
+        crawling.robots[1].vehicle.type = VehicleType::Rover; // rovers at the land cover's speeds are meant
+        PlanningProblem rovers = problem;
+        applyRobotSettings(crawling, rovers);
+        QCOMPARE(rovers.notes.size(), std::size_t{1});
+
         // A drone without a cruise speed flies at the table's speeds: said, since presets give a ground
         // robot's.
         for (RobotSpec& robot : mission.robots)
@@ -282,6 +303,19 @@ class MissionFilesTest : public QObject {
     }
 
     // Times are seconds: a time written with its unit is refused, with the number to write instead.
+    // An item limit below the smallest that works is refused with the value given.
+    void tooSmallAnItemLimitIsQuoted() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("limit.json").toStdString();
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}, {"start": [30, 20], "max_waypoints": 5}]})");
+        const auto loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path +
+                                     ": robots[1].max_waypoints: must be 0 (no limit) or at least 8 mission "
+                                     "items, not 5");
+    }
+
     void timeWithAUnitNamesTheSecondsToWrite() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("units.json").toStdString();

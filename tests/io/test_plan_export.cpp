@@ -527,6 +527,37 @@ class PlanExportTest : public QObject {
         QCOMPARE(fieldTimeNote(rovers), std::string());
     }
 
+    // A drone's trips and turnarounds beside a rover's one part leave them done far apart in the field,
+    // though their paths take the same time: the note says so, naming the first done.
+    void fieldTimeNoteSaysWhenRobotsAreDoneFarApart() {
+        Plan plan = lawnmowerPlan();
+        plan.paths[1] = plan.paths[0]; // the same path for both
+        plan.paths[1].robot = 1;
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.cruiseSpeedMetresPerSecond = 2.0;
+        drone.maxWaypoints = 12;
+        drone.turnaroundSeconds = 300.0;
+        VehicleSettings rover;
+        rover.cruiseSpeedMetresPerSecond = 2.0;
+        ExportContext fleet{plan, reference_, classes_, ExportSettings{}};
+        fleet.vehicles = {drone, rover};
+        const MissionFlights flown = missionFlights(autopilotMissionOf(fleet, 0), drone);
+        const MissionFlights driven = missionFlights(autopilotMissionOf(fleet, 1), rover);
+        QVERIFY(flown.fieldSeconds > 1.1 * driven.fieldSeconds);
+        const std::string note = fieldTimeNote(fleet);
+        QVERIFY2(note.ends_with("; the first, " + fleet.robotName(1) + ", after " +
+                                formatDuration(driven.fieldSeconds) +
+                                ": the division evens out the robots' times on their paths, not the trips to "
+                                "and from their starts nor the turnarounds between flights"),
+                 note.c_str());
+        // Two drones alike are done together: nothing more to say.
+        ExportContext drones{plan, reference_, classes_, ExportSettings{}};
+        drones.vehicles = {drone, drone};
+        const std::string together = fieldTimeNote(drones);
+        QVERIFY2(!together.empty() && together.find("the first") == std::string::npos, together.c_str());
+    }
+
     // A plan simulated over time adds what each robot took over from others: here robot 1 took the 20 m
     // cell east of the split one (so the traced grid is cropped away from the map's north-west corner).
     // GeoJSON, GeoPackage and KML carry it; a plan without a timeline has no such layer.

@@ -6,6 +6,7 @@
 #include "io/Mission.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 #include "tests/support/TestData.hpp"
+#include "tests/ui/GrassMission.hpp"
 #include "ui/ApplicationResources.hpp"
 #include "ui/ClassTableBanner.hpp"
 #include "ui/ClassTableModel.hpp"
@@ -588,6 +589,35 @@ class TestMainWindow : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         // Either the planner stopped, or it had already finished: both leave a usable window.
         QVERIFY(!window.isPlanning());
+    }
+
+    // A drone whose flight is too short for its climb and descent is refused before planning or comparing,
+    // as batch mode refuses it, naming the robot and where the window changes it.
+    void refusesAFlightTooShortForTheClimb() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        io::Mission mission = test::twoRobotMission();
+        mission.robots[1].vehicle.type = io::VehicleType::Multirotor;
+        mission.robots[1].vehicle.altitudeMetres = 120.0;
+        mission.robots[1].vehicle.flightTimeSeconds = 60.0;
+        window.document()->reset(test::grassRaster(), mission, QString());
+        QVERIFY(!window.startPlanning());
+        QVERIFY(!window.isPlanning());
+        QVERIFY2(
+            window.lastError().startsWith(QStringLiteral("west: a flight of 1 min leaves no time to survey")),
+            qPrintable(window.lastError()));
+        QVERIFY2(window.lastError().contains(QStringLiteral("Robot vehicles")),
+                 qPrintable(window.lastError()));
+        QVERIFY(!window.startComparison({"mcpp-mlct"}));
+        QVERIFY(window.lastError().contains(QStringLiteral("leaves no time to survey")));
+
+        mission.robots[1].vehicle.flightTimeSeconds = 600.0; // long enough: plans
+        window.document()->reset(test::grassRaster(), mission, QString());
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        QVERIFY2(window.startPlanning(), qPrintable(window.lastError()));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
     }
 
     // The Compare action: planners run one after another in the background, the panel lists one row each

@@ -50,6 +50,14 @@ class VehicleSettingsDialogTest : public QObject {
         QCOMPARE(cell<QDoubleSpinBox>(table, 2, 1)->value(), 60.0);
         QCOMPARE(cell<QComboBox>(table, 2, 0)->currentText(), QStringLiteral("Multirotor"));
         QCOMPARE(cell<QSpinBox>(table, 3, 3)->value(), 700);
+        // A rover's altitude is greyed (its files are at 0 m); an aircraft's is not, and follows its type.
+        QVERIFY(!cell<QDoubleSpinBox>(table, 1, 1)->isEnabled());
+        QVERIFY(cell<QDoubleSpinBox>(table, 2, 1)->isEnabled());
+        cell<QComboBox>(table, 1, 0)->setCurrentIndex(cell<QComboBox>(table, 1, 0)->findText("Fixed wing"));
+        QVERIFY(cell<QDoubleSpinBox>(table, 1, 1)->isEnabled());
+        QCOMPARE(cell<QDoubleSpinBox>(table, 1, 1)->value(), 30.0);
+        cell<QComboBox>(table, 1, 0)->setCurrentIndex(cell<QComboBox>(table, 1, 0)->findText("Rover"));
+        QVERIFY(!cell<QDoubleSpinBox>(table, 1, 1)->isEnabled());
         // Nothing changed: no robot gets values of its own besides beta's.
         const auto vehicles = dialog.vehicles();
         QCOMPARE(vehicles.size(), std::size_t{3});
