@@ -326,7 +326,7 @@ void BatchRunner::checkOutputFolder() const {
 // message names by number, with where they are in the mission and their names, " (robot 1 is robots[0],
 // drone-A)".
 std::string BatchRunner::robotsNamed(const std::string& message) const {
-    static const std::regex numbered("robot ([0-9]+)");
+    static const std::regex numbered(R"(\brobot ([0-9]{1,9})\b)");
     std::set<std::size_t> robots;
     for (auto match = std::sregex_iterator(message.begin(), message.end(), numbered);
          match != std::sregex_iterator(); ++match)
@@ -362,7 +362,8 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         if (error.robot() >= 0) {
             const std::string numbering =
                 options_.missionFromFlags() ? std::string() : robotsNamed(error.detail());
-            badInput(fieldName(io::MissionField::start(error.robot())) + ": " + error.detail() + numbering);
+            badInput(fieldName(io::MissionField::start(error.robot())) + ": " + error.detail() +
+                     io::startProblemAdvice(error.kind(), fieldNamer()) + numbering);
         }
         if (!error.parameter().empty())
             badInput(fieldName(io::MissionField::parameter(error.parameter())) + ": " + error.detail());

@@ -400,7 +400,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             options.events.push_back(*event);
         } else if (flag == "--max-waypoints") {
             const auto limit = parseNonNegativeInteger(value);
-            if (!limit || (*limit != 0 && *limit < io::minimumMaxWaypoints))
+            if (!limit || !io::isWorkableItemLimit(*limit))
                 return failure("--max-waypoints: " + quoted(value) +
                                " is not an item limit (0 for none, or " +
                                std::to_string(io::minimumMaxWaypoints) + " or more mission items)");

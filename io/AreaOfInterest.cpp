@@ -46,25 +46,27 @@ void scaleRings(OGRGeometry& geometry, double factor) {
 // Where a file's CRS is in degrees but its coordinates cannot be (metres read as longitude and latitude,
 // most often a GeoJSON file without a "crs" member), what to do about it; empty otherwise.
 std::string notDegreesProblem(const OGRGeometry& geometry, const OGRSpatialReference& source,
-                              const LoadedRaster& raster) {
+                              const std::string& path, bool geoJson, const LoadedRaster& raster) {
     if (!source.IsGeographic())
         return {};
     OGREnvelope envelope;
     geometry.getEnvelope(&envelope);
-    const bool degrees = std::abs(envelope.MinX) <= 360.0 && std::abs(envelope.MaxX) <= 360.0 &&
-                         std::abs(envelope.MinY) <= 90.0 && std::abs(envelope.MaxY) <= 90.0;
-    if (degrees)
+    // The corner quoted is one that cannot be degrees.
+    const double x = std::abs(envelope.MinX) > 360.0 ? envelope.MinX : envelope.MaxX;
+    const double y = std::abs(envelope.MinY) > 90.0 ? envelope.MinY : envelope.MaxY;
+    if (std::abs(x) <= 360.0 && std::abs(y) <= 90.0)
         return {};
     const std::string code = raster.georeference.authorityCode();
     const char* name = source.GetName();
-    return " has coordinates such as (" + formatQuantity(envelope.MinX, 10) + ", " +
-           formatQuantity(envelope.MinY, 10) +
+    return " has coordinates such as (" + formatQuantity(x, 10) + ", " + formatQuantity(y, 10) +
            "), which are not longitude and latitude, yet the file's CRS is " +
            (name != nullptr ? std::string(name) : std::string("geographic")) +
-           " (a GeoJSON file without a \"crs\" member is read as WGS 84): give the file its CRS" +
-           (code.empty() ? std::string()
-                         : " (ogr2ogr -a_srs " + code + " fixed.geojson FILE, if they are in the raster's, " +
-                               raster.georeference.name() + ")");
+           (geoJson ? " (a GeoJSON file without a \"crs\" member is read as WGS 84)" : "") +
+           ": give the file its CRS" +
+           (code.empty()
+                ? std::string()
+                : " (ogr2ogr -a_srs " + code + " fixed" + std::filesystem::path(path).extension().string() +
+                      " " + path + ", if they are in the raster's, " + raster.georeference.name() + ")");
 }
 
 // Every polygon of every layer, in the raster's planning frame.
@@ -106,7 +108,9 @@ Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, Ow
             out.geometries.push_back(copy);
             if (toPlanning && copy->transform(toPlanning.get()) != OGRERR_NONE) {
                 const std::string where = path + ": feature " + std::to_string(feature->GetFID());
-                if (auto notDegrees = notDegreesProblem(*geometry, *layer->GetSpatialRef(), raster);
+                const bool geoJson = std::string(dataset->GetDriver()->GetDescription()) == "GeoJSON";
+                if (auto notDegrees =
+                        notDegreesProblem(*geometry, *layer->GetSpatialRef(), path, geoJson, raster);
                     !notDegrees.empty())
                     return Count::failure(where + notDegrees);
                 return Count::failure(where + " cannot be converted to the raster's CRS" +

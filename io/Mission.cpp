@@ -269,7 +269,7 @@ bool readVehicle(MissionReader& reader, const QJsonObject& object, const std::st
         return reader.fail(MissionReader::join(path, "cruise_speed_mps"),
                            "must be between 0 (land-cover speeds) and 1000 m/s");
     }
-    if (vehicle.maxWaypoints && *vehicle.maxWaypoints != 0 && *vehicle.maxWaypoints < minimumMaxWaypoints) {
+    if (vehicle.maxWaypoints && !isWorkableItemLimit(*vehicle.maxWaypoints)) {
         return reader.fail(MissionReader::join(path, "max_waypoints"),
                            "must be 0 (no limit) or at least " + std::to_string(minimumMaxWaypoints) +
                                " mission items, not " + std::to_string(*vehicle.maxWaypoints));
@@ -787,6 +787,22 @@ std::string mixedCruiseSpeedsNote(const Mission& mission, const std::vector<Vehi
            "table's speeds, and each is timed at its own";
 }
 
+// Beside robots of speeds of their own, an aircraft left at the land cover's would crawl unnoticed.
+std::optional<std::string> aircraftWithoutCruiseSpeedNote(const Mission& mission,
+                                                          const std::vector<VehicleSettings>& vehicles) {
+    std::vector<std::size_t> withoutCruiseSpeed;
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
+        if (isAircraft(vehicles[robot].type) && !(vehicles[robot].cruiseSpeedMetresPerSecond > 0.0))
+            withoutCruiseSpeed.push_back(robot);
+    if (withoutCruiseSpeed.empty())
+        return std::nullopt;
+    const bool one = withoutCruiseSpeed.size() == 1;
+    return namedRobots(mission, withoutCruiseSpeed) + (one ? " is an aircraft" : " are aircraft") +
+           " without a cruise speed, so " + (one ? "it flies" : "they fly") +
+           " at the class table's speeds, which are a ground robot's in the presets: give " +
+           (one ? "it" : "them") + " one (robots[].cruise_speed_mps, or Plan > Robot vehicles in the window)";
+}
+
 // A shared cruise speed replaces the class table's speeds; robots of different ones drive each at its own.
 void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
                       PlanningProblem& problem) {
@@ -810,20 +826,8 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
             problem.robotSpeeds.push_back(vehicle.cruiseSpeedMetresPerSecond);
         problem.notes.push_back(
             {IssueSeverity::Information, "cruise-speeds-differ", mixedCruiseSpeedsNote(mission, vehicles)});
-        // Beside robots of speeds of their own, an aircraft left at the land cover's would crawl unnoticed.
-        std::vector<std::size_t> crawling;
-        for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
-            if (isAircraft(vehicles[robot].type) && !(vehicles[robot].cruiseSpeedMetresPerSecond > 0.0))
-                crawling.push_back(robot);
-        if (!crawling.empty())
-            problem.notes.push_back(
-                {IssueSeverity::Warning, "aircraft-at-ground-speeds",
-                 namedRobots(mission, crawling) +
-                     (crawling.size() == 1 ? " is an aircraft" : " are aircraft") +
-                     " without a cruise speed, so " + (crawling.size() == 1 ? "it flies" : "they fly") +
-                     " at the class table's speeds, which are a ground robot's in the presets: give " +
-                     (crawling.size() == 1 ? "it" : "them") +
-                     " one (robots[].cruise_speed_mps, or Plan > Robot vehicles in the window)"});
+        if (auto slow = aircraftWithoutCruiseSpeedNote(mission, vehicles))
+            problem.notes.push_back({IssueSeverity::Warning, "aircraft-at-ground-speeds", std::move(*slow)});
     } else if (std::any_of(vehicles.begin(), vehicles.end(),
                            [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
         problem.notes.push_back(
@@ -898,23 +902,27 @@ std::vector<VehicleSettings> robotVehicles(const Mission& mission) {
 
 std::optional<std::string> fleetFlightProblem(const Mission& mission) {
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
-    std::vector<std::string> names; // of the robots that cannot fly their settings
-    std::optional<std::string> problem;
-    for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
-        if (auto tooShort = flightTooShortProblem(vehicles[robot])) {
-            names.push_back(robotLabel(mission, robot));
-            if (!problem)
-                problem = std::move(tooShort);
-        }
-    if (names.empty())
+    std::optional<std::string> problem; // the first robot's, said of every robot that has the same
+    std::vector<std::size_t> alike;
+    std::vector<std::size_t> others; // robots that cannot fly settings of their own
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot) {
+        auto tooShort = flightTooShortProblem(vehicles[robot]);
+        if (!tooShort)
+            continue;
+        if (!problem)
+            problem = tooShort;
+        (*tooShort == *problem ? alike : others).push_back(robot);
+    }
+    if (!problem)
         return std::nullopt;
     // One setting shared by a whole fleet is one mistake, not one per robot.
-    if (names.size() == vehicles.size() && names.size() > 1 &&
-        std::all_of(vehicles.begin(), vehicles.end(),
-                    [&](const VehicleSettings& vehicle) { return vehicle == vehicles.front(); }))
-        return "every robot: " + *problem;
-    return names.front() + (names.size() > 1 ? " and " + std::to_string(names.size() - 1) + " more" : "") +
-           ": " + *problem;
+    const std::string who =
+        alike.size() == vehicles.size() && alike.size() > 1 ? "every robot" : namedRobots(mission, alike);
+    return who + ": " + *problem +
+           (others.empty()
+                ? std::string()
+                : "; " + namedRobots(mission, others) + " cannot fly " +
+                      (others.size() == 1 ? "its own settings" : "their own settings") + " either");
 }
 
 } // namespace mcpp::io

@@ -245,11 +245,7 @@ std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& pro
                           "is longitude first";
         }
     }
-    if (problem.kind == Kind::StartOnObstacle)
-        advice += "; move it onto passable land, or let the planner start the robot from the nearest free "
-                  "cell (" +
-                  names(MissionField::parameter("snap_starts_to_free_cells")) + "=true)";
-    return advice;
+    return advice + startProblemAdvice(problem.kind, names);
 }
 
 // The raster's classes the table lacks refused, or made obstacles where the mission says so.
@@ -276,6 +272,16 @@ Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& class
 }
 
 } // namespace
+
+std::string startProblemAdvice(PlanningError::Kind kind, const FieldNamer& names) {
+    const std::string snap = "let the planner start the robot from the nearest free cell (" +
+                             names(MissionField::parameter("snap_starts_to_free_cells")) + "=true)";
+    if (kind == PlanningError::Kind::StartOnObstacle)
+        return "; move it onto passable land, or " + snap;
+    if (kind == PlanningError::Kind::StartsShareCell)
+        return "; each robot sets off from a cell of its own: place the starts farther apart, or " + snap;
+    return {};
+}
 
 Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const LoadedRaster& raster,
                                             StartUnits units, const FieldNamer& names) {

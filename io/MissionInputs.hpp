@@ -2,6 +2,7 @@
 
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
+#include "core/model/PlanningError.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/parameters/PlannerChoice.hpp"
 #include "io/LoadedRaster.hpp"
@@ -67,6 +68,11 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 // Each robot's start in the planning frame (metres).
 [[nodiscard]] Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const LoadedRaster& raster,
                                                           StartUnits units, const FieldNamer& names);
+
+// What a user can do about a start the planner refused whatever the raster's coordinates (on an obstacle,
+// in another robot's cell), the setting named in the caller's terms: "; move it onto passable land, or ...";
+// empty for other problems.
+[[nodiscard]] std::string startProblemAdvice(PlanningError::Kind kind, const FieldNamer& names);
 
 // Each robot's charger in the planning frame (metres), read like its start; none where it charges at its
 // start.

@@ -84,6 +84,10 @@ struct VehicleOverrides {
 // The smallest item limit that leaves room, for any vehicle, for a part's items besides its waypoints and
 // two waypoints with a speed change between them.
 constexpr int minimumMaxWaypoints = 8;
+// An item limit an autopilot can work with: none (0), or room for a mission beside its fixed items.
+[[nodiscard]] constexpr bool isWorkableItemLimit(int limit) {
+    return limit == 0 || limit >= minimumMaxWaypoints;
+}
 
 // The shortest flight time a vehicle may be given: below a minute no survey flight is worth a takeoff.
 constexpr double minimumFlightTimeSeconds = 60.0;

@@ -642,15 +642,23 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
 
 namespace {
 
-// The division evens out the robots' times on their paths; the trips to and from the start and the
-// turnarounds of split missions come after it, and can leave robots done hours apart.
-std::string unevenFieldTimes(const std::string& firstName, double firstSeconds, double lastSeconds) {
+// Robots whose paths take about as long can still be done hours apart: the trips to and from the start and
+// the turnarounds of split missions come on top of the paths the division evened out.
+std::string unevenFieldTimes(const ExportContext& context, int first, double firstSeconds, int last,
+                             double lastSeconds) {
     constexpr double noticeable = 1.1;
-    if (!(firstSeconds > 0.0) || lastSeconds <= firstSeconds * noticeable)
+    constexpr double minuteOrMore = 60.0;
+    if (!(firstSeconds > 0.0) || lastSeconds <= firstSeconds * noticeable ||
+        lastSeconds - firstSeconds < minuteOrMore)
         return {};
-    return "; the first, " + firstName + ", after " + formatDuration(firstSeconds) +
-           ": the division evens out the robots' times on their paths, not the trips to and from their "
-           "starts nor the turnarounds between flights";
+    const double firstPath = context.plan.paths[static_cast<std::size_t>(first)].timeSeconds;
+    const double lastPath = context.plan.paths[static_cast<std::size_t>(last)].timeSeconds;
+    const bool pathsEven = firstPath > 0.0 && lastPath > 0.0 &&
+                           std::max(firstPath, lastPath) <= std::min(firstPath, lastPath) * noticeable;
+    return "; the first, " + context.robotName(first) + ", after " + formatDuration(firstSeconds) +
+           (pathsEven ? ": their paths take about as long, but the trips to and from their starts and the "
+                        "turnarounds between flights come on top"
+                      : std::string());
 }
 
 } // namespace
@@ -693,7 +701,7 @@ std::string fieldTimeNote(const ExportContext& context) {
            std::to_string(autopilotMissionOf(context, last).parts.size()) +
            (isAircraft(vehicle.type) ? " flights" : " parts") +
            (vehicle.turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") + " included" +
-           caveat + unevenFieldTimes(context.robotName(first), firstSeconds, lastFlights.fieldSeconds);
+           caveat + unevenFieldTimes(context, first, firstSeconds, last, lastFlights.fieldSeconds);
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

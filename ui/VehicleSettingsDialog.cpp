@@ -151,9 +151,12 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     widgets.turnaround->setRange(0.0, io::maximumTurnaroundSeconds / 60.0);
     widgets.turnaround->setDecimals(3);
     show(widgets, settings);
-    followVehicleType(widgets.type, widgets.altitude);
-    connect(widgets.type, &QComboBox::currentIndexChanged, widgets.altitude,
-            [type = widgets.type, altitude = widgets.altitude] { followVehicleType(type, altitude); });
+    // The "All robots" row's altitude stays open: robots that are aircraft of their own inherit it.
+    if (row > 0) {
+        followVehicleType(widgets.type, widgets.altitude);
+        connect(widgets.type, &QComboBox::currentIndexChanged, widgets.altitude,
+                [type = widgets.type, altitude = widgets.altitude] { followVehicleType(type, altitude); });
+    }
     table_->setCellWidget(row, 0, widgets.type);
     table_->setCellWidget(row, 1, widgets.altitude);
     table_->setCellWidget(row, 2, widgets.cruiseSpeed);
@@ -232,7 +235,7 @@ void VehicleSettingsDialog::checkLimits() {
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         const QString name = table_->verticalHeaderItem(static_cast<int>(i))->text();
         const int limit = rows_[i].maxWaypoints->value();
-        if (limit > 0 && limit < io::minimumMaxWaypoints)
+        if (!io::isWorkableItemLimit(limit))
             items << tr("%1: %2").arg(name).arg(limit);
         const double minutes = rows_[i].flightTime->value();
         if (minutes > 0.0 && minutes * 60.0 < io::minimumFlightTimeSeconds)

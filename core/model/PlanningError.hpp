@@ -27,7 +27,8 @@ class PlanningError : public std::runtime_error {
 
     // "robot 2 start " + detail, e.g. detail "(10, 20) is outside the raster".
     static PlanningError aboutStart(Kind kind, int robot, const std::string& detail) {
-        PlanningError error(kind, "robot " + std::to_string(robot) + " start " + detail, detail);
+        // Robots are numbered from 1 in messages, as on the map and in every other message.
+        PlanningError error(kind, "robot " + std::to_string(robot + 1) + " start " + detail, detail);
         error.robot_ = robot;
         return error;
     }

@@ -1,5 +1,6 @@
 #include "core/parameters/ParameterSpec.hpp"
 
+#include "core/model/NameSuggestion.hpp"
 #include "core/parameters/NumberText.hpp"
 
 #include <algorithm>
@@ -16,13 +17,6 @@ std::string number(double value) {
     text.precision(15);
     text << value;
     return text.str();
-}
-
-std::string lowered(std::string_view text) {
-    std::string result(text);
-    std::transform(result.begin(), result.end(), result.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return result;
 }
 
 } // namespace
@@ -97,7 +91,7 @@ std::optional<ParameterValue> ParameterSpec::parse(std::string_view text, std::s
     std::optional<ParameterValue> value;
     switch (type) {
     case ParameterType::Boolean: {
-        const std::string lower = lowered(word);
+        const std::string lower = lowercase(std::string(word));
         if (lower == "true" || lower == "yes" || lower == "on" || lower == "1")
             value = true;
         if (lower == "false" || lower == "no" || lower == "off" || lower == "0")
@@ -115,7 +109,7 @@ std::optional<ParameterValue> ParameterSpec::parse(std::string_view text, std::s
         break;
     }
     case ParameterType::Real:
-        if (!automatic.empty() && lowered(word) == lowered(automatic))
+        if (!automatic.empty() && lowercase(std::string(word)) == lowercase(std::string(automatic)))
             value = automaticParameterValue;
         else if (const auto real = parseFiniteNumber(word))
             value = *real;

@@ -120,7 +120,7 @@ class MlctPlannerTest : public QObject {
     void startOnObstacleIsNamed() {
         auto problem = lakeProblem();
         problem.starts[1] = test::pixelCentre(problem.grid, 4, 4);
-        expectError(problem, PlanningError::Kind::StartOnObstacle, "robot 1 start (500045");
+        expectError(problem, PlanningError::Kind::StartOnObstacle, "robot 2 start (500045");
         expectError(problem, PlanningError::Kind::StartOnObstacle, "class 99 (water)");
     }
 
@@ -128,7 +128,7 @@ class MlctPlannerTest : public QObject {
         auto problem = lakeProblem();
         problem.starts[0] = {0.0, 0.0};
         expectError(problem, PlanningError::Kind::StartOutsideArea,
-                    "robot 0 start (0, 0) is outside the raster");
+                    "robot 1 start (0, 0) is outside the raster");
         problem = lakeProblem();
         problem.grid.outside.assign(100, 0);
         problem.grid.outside[99] = 1;
@@ -154,7 +154,7 @@ class MlctPlannerTest : public QObject {
         auto problem = lakeProblem();
         problem.starts[0] = {500150.504, 4000230.25};
         expectError(problem, PlanningError::Kind::StartOutsideArea,
-                    "robot 0 start (500150.5, 4000230.25) is outside the raster, 236 m north-east of it (x "
+                    "robot 1 start (500150.5, 4000230.25) is outside the raster, 236 m north-east of it (x "
                     "500000.00 to 500100.00, y 3999900.00 to 4000000.00)");
         problem.starts[0] = {500050.0, 3999000.0};
         expectError(problem, PlanningError::Kind::StartOutsideArea,
@@ -168,13 +168,13 @@ class MlctPlannerTest : public QObject {
     void twoRobotsInOneCellAreRefused() {
         auto problem = lakeProblem();
         problem.starts.push_back(problem.starts[0]);
-        expectError(problem, PlanningError::Kind::StartsShareCell, "robot 2 start");
+        expectError(problem, PlanningError::Kind::StartsShareCell, "robot 3 start");
     }
 
     void nanAndEmptyInputsAreRefused() {
         auto problem = lakeProblem();
         problem.starts[0].x = std::nan("");
-        expectError(problem, PlanningError::Kind::InvalidParameter, "robot 0 start (nan");
+        expectError(problem, PlanningError::Kind::InvalidParameter, "robot 1 start (nan");
         problem = lakeProblem();
         problem.starts.clear();
         expectError(problem, PlanningError::Kind::InvalidParameter, "no robots");

@@ -302,7 +302,37 @@ class MissionFilesTest : public QObject {
         QVERIFY(TurnTimeModel::from(reloaded.value().planner.parameters).fixedSecondsPer90Degrees < 0.0);
     }
 
-    // Times are seconds: a time written with its unit is refused, with the number to write instead.
+    // A flight too short for the climb names the robots that have it, the whole fleet as one when all share
+    // it, and robots whose own settings fail otherwise.
+    void flightsTooShortAreNamedByRobot() {
+        Mission mission = sampleMission();
+        for (RobotSpec& robot : mission.robots)
+            robot.vehicle = VehicleOverrides{};
+        mission.robots[0].name = "north";
+        mission.robots[1].name = "south";
+        mission.robots[2].name = "east";
+        mission.exports.vehicle.type = VehicleType::Multirotor;
+        mission.exports.vehicle.altitudeMetres = 120.0;
+        mission.exports.vehicle.flightTimeSeconds = 600.0;
+        QVERIFY(!fleetFlightProblem(mission));
+        mission.exports.vehicle.flightTimeSeconds = 60.0;
+        const auto everyRobot = fleetFlightProblem(mission);
+        QVERIFY(everyRobot);
+        QVERIFY2(everyRobot->rfind("every robot: a flight of 1 min leaves no time to survey", 0) == 0,
+                 everyRobot->c_str());
+        mission.exports.vehicle.flightTimeSeconds = 600.0;
+        mission.robots[0].vehicle.flightTimeSeconds = 60.0;
+        mission.robots[2].vehicle.flightTimeSeconds = 60.0;
+        const auto two = fleetFlightProblem(mission);
+        QVERIFY(two);
+        QVERIFY2(two->rfind("north and east: a flight of 1 min", 0) == 0, two->c_str());
+        mission.robots[2].vehicle.flightTimeSeconds = 90.0; // too short too, at 120 m, but another figure
+        const auto others = fleetFlightProblem(mission);
+        QVERIFY(others);
+        QVERIFY2(others->rfind("north: a flight of 1 min", 0) == 0, others->c_str());
+        QVERIFY2(others->ends_with("; east cannot fly its own settings either"), others->c_str());
+    }
+
     // An item limit below the smallest that works is refused with the value given.
     void tooSmallAnItemLimitIsQuoted() {
         QTemporaryDir folder;
@@ -316,6 +346,7 @@ class MissionFilesTest : public QObject {
                                      "items, not 5");
     }
 
+    // Times are seconds: a time written with its unit is refused, with the number to write instead.
     void timeWithAUnitNamesTheSecondsToWrite() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("units.json").toStdString();

@@ -546,10 +546,10 @@ class PlanExportTest : public QObject {
         const MissionFlights driven = missionFlights(autopilotMissionOf(fleet, 1), rover);
         QVERIFY(flown.fieldSeconds > 1.1 * driven.fieldSeconds);
         const std::string note = fieldTimeNote(fleet);
-        QVERIFY2(note.ends_with("; the first, " + fleet.robotName(1) + ", after " +
-                                formatDuration(driven.fieldSeconds) +
-                                ": the division evens out the robots' times on their paths, not the trips to "
-                                "and from their starts nor the turnarounds between flights"),
+        QVERIFY2(note.ends_with(
+                     "; the first, " + fleet.robotName(1) + ", after " + formatDuration(driven.fieldSeconds) +
+                     ": their paths take about as long, but the trips to and from their starts and "
+                     "the turnarounds between flights come on top"),
                  note.c_str());
         // Two drones alike are done together: nothing more to say.
         ExportContext drones{plan, reference_, classes_, ExportSettings{}};
