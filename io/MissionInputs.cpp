@@ -213,6 +213,21 @@ std::string degreesWithoutCrsHint(const LoadedRaster& raster, MapPoint start, co
     return {};
 }
 
+// A start given with a start_crs that puts it off the map, whose numbers lie on it in the raster's own CRS
+// (EPSG:21781 written for Swiss LV95 coordinates, say): most likely the wrong CRS was named.
+std::optional<std::string> otherCrsFitsProblem(const RobotSpec& spec, MapPoint start,
+                                               const LoadedRaster& raster) {
+    const std::string own = raster.georeference.authorityCode();
+    if (spec.startCrs.empty() || own.empty() || spec.startCrs == own || onTheMap(raster.grid, start))
+        return std::nullopt;
+    if (!onTheMap(raster.grid, raster.georeference.fromCrsUnits(spec.start)))
+        return std::nullopt;
+    return "in " + spec.startCrs + " the start (" + formatQuantity(spec.start.x, 12) + ", " +
+           formatQuantity(spec.start.y, 12) +
+           ") lies off the map, but these numbers lie on it in the raster's own " + "CRS, " + own + " (" +
+           raster.georeference.name() + "): give start_crs " + own + ", or leave it out";
+}
+
 // A start as messages name it: its planning-frame coordinates, and its longitude and latitude where the
 // raster is georeferenced (what a user who typed degrees recognises; metres of UTM mean little to most).
 std::string startName(const LoadedRaster& raster, MapPoint start) {
@@ -297,6 +312,8 @@ Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const Loaded
             return Starts::failure(
                 names(spec.startCrs.empty() ? MissionField::start(robot) : MissionField::startCrs(robot)) +
                 ": " + start.error() + latitudeFirstHint(spec, raster, units));
+        if (auto problem = otherCrsFitsProblem(spec, start.value(), raster))
+            return Starts::failure(names(MissionField::startCrs(robot)) + ": " + *problem);
         starts.push_back(start.value());
     }
     return starts;

@@ -1067,6 +1067,12 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
         << QStringList{"--batch", scratch_.filePath("shared-cell.json"), "--out", out}
         << QStringList{"shared-cell.json", "robots[2].start (forest)", "same cell as robot 1's start",
                        "(robot 1 is robots[0], grassland)"};
+    QTest::newRow("mission start in the wrong CRS")
+        << QStringList{"--batch", scratch_.filePath("wrong-crs.json"), "--out", out}
+        << QStringList{
+               "wrong-crs.json", "robots[0].start_crs",
+               "in EPSG:26911 the start (306000, 4150000) lies off the map, but these numbers lie on it "
+               "in the raster's own CRS, EPSG:26912 (NAD83 / UTM zone 12N): give start_crs EPSG:26912"};
     QTest::newRow("mission robot without start")
         << QStringList{"--batch", scratch_.filePath("no-start.json"), "--out", out}
         << QStringList{"no-start.json", "robots[0].start", "missing"};
@@ -1163,6 +1169,17 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
     auto sharedCellMission = mission;
     sharedCellMission.insert("robots", sharing);
     QVERIFY(writeText(scratch_.filePath("shared-cell.json"), QJsonDocument(sharedCellMission).toJson()));
+    // The Zion sample with its first start said to be in UTM zone 11, its numbers being zone 12's.
+    auto zion = readJsonObject(samplePath("zion-nlcd/mission.json"));
+    auto zionRaster = zion.value("raster").toObject();
+    zionRaster.insert("path", samplePath("zion-nlcd/nlcd.tif"));
+    zion.insert("raster", zionRaster);
+    auto zionRobots = zion.value("robots").toArray();
+    auto northWest = zionRobots.at(0).toObject();
+    northWest.insert("start_crs", QStringLiteral("EPSG:26911"));
+    zionRobots.replace(0, northWest);
+    zion.insert("robots", zionRobots);
+    QVERIFY(writeText(scratch_.filePath("wrong-crs.json"), QJsonDocument(zion).toJson()));
 
     const auto run = runMcpp(arguments);
     QVERIFY2(run.exitCode == 2,
