@@ -9,6 +9,7 @@
 #include "core/model/StartPointCheck.hpp"
 #include "core/model/TurnTimeModel.hpp"
 #include "core/parameters/ParameterResolution.hpp"
+#include "core/planners/AreaEdgeCheck.hpp"
 #include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "core/planners/PlanningRun.hpp"
@@ -135,6 +136,17 @@ std::string robotList(const std::vector<int>& robots) {
     return list;
 }
 
+// Where a drone's geofence follows the area's edge, it would be crossed: said with how far.
+std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
+    return std::to_string(beyond.waypoints) + (beyond.waypoints == 1 ? " waypoint of " : " waypoints of ") +
+           robotList(beyond.robots) + " lie outside the area of interest or in a no-go zone, up to " +
+           formatDistance(beyond.farthestMetres) + " beyond its pixels (its edge may lie up to " +
+           formatDistance(beyond.pixelMetres / 2.0) +
+           " nearer): cells that straddle the edge are covered whole. For a drone whose geofence follows "
+           "that "
+           "edge, draw the area that far inside the fence";
+}
+
 // Robots left with less than half a fair share where the longest path is well above the bound: most often
 // starts so close together that the others' regions wall theirs in. Empty where there are none, and on maps
 // whose starts lie in several parts (the bound is then one part's share, not every robot's).
@@ -209,6 +221,9 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
         planningRun.addIssue(IssueSeverity::Warning, "unreachable-area",
                              formatArea(plan.metrics.unreachableAreaSquareMetres) +
                                  " of passable land cannot be reached by any robot");
+    if (const WaypointsBeyondArea beyond = waypointsBeyondArea(problem.grid, plan.paths);
+        beyond.waypoints > 0)
+        planningRun.addIssue(IssueSeverity::Warning, "paths-beyond-area", beyondAreaMessage(beyond));
     for (const ConfinedRobot& confined : plan.metrics.confinedRobots)
         planningRun.addIssue(IssueSeverity::Information, "confined-robot", confinedRobotMessage(confined));
     // Robots slowed or stopped by events are meant to do less: their plan is uneven by design.
