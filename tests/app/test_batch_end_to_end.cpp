@@ -46,6 +46,15 @@ QJsonObject readJsonObject(const QString& path) {
     return document.object();
 }
 
+// A sample mission with its raster's path made absolute, to be written elsewhere and changed.
+QJsonObject sampleMissionAnywhere(const QString& folder, const QString& rasterFile) {
+    QJsonObject mission = readJsonObject(samplePath(folder + QStringLiteral("/mission.json")));
+    QJsonObject raster = mission.value("raster").toObject();
+    raster.insert("path", samplePath(folder + QLatin1Char('/') + rasterFile));
+    mission.insert("raster", raster);
+    return mission;
+}
+
 bool writeText(const QString& path, const QByteArray& text) {
     QFile file(path);
     return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
@@ -833,10 +842,7 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
 // A charger away from the start (robots[0].charger): the first sortie begins at the start, every sortie
 // ends at the charger and the next begins there.
 void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
-    auto mission = readJsonObject(samplePath("synthetic/mission.json"));
-    auto raster = mission.value("raster").toObject();
-    raster.insert("path", samplePath("synthetic/synthetic.asc"));
-    mission.insert("raster", raster);
+    auto mission = sampleMissionAnywhere("synthetic", "synthetic.asc");
     auto robots = mission.value("robots").toArray();
     auto first = robots.at(0).toObject();
     first.insert("charger", QJsonArray{431100, 5301150});
@@ -1144,11 +1150,8 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
                       "3,Grass,3,20,true\n4,Lake,0,10,false\n"));
     QVERIFY(writeText(scratch_.filePath("bad.csv"), "value,name,speed,fov_m,passable\n1,Forest,1,5,true\n"));
     // Copies of the synthetic mission with one robot broken; the raster path made absolute.
-    auto mission = readJsonObject(samplePath("synthetic/mission.json"));
-    QVERIFY(!mission.isEmpty());
-    auto raster = mission.value("raster").toObject();
-    raster.insert("path", samplePath("synthetic/synthetic.asc"));
-    mission.insert("raster", raster);
+    auto mission = sampleMissionAnywhere("synthetic", "synthetic.asc");
+    QVERIFY(!mission.value("robots").toArray().isEmpty());
     auto robots = mission.value("robots").toArray();
     auto second = robots.at(1).toObject();
     second.insert("start", QJsonArray{431470, 5301310});
@@ -1170,10 +1173,7 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
     sharedCellMission.insert("robots", sharing);
     QVERIFY(writeText(scratch_.filePath("shared-cell.json"), QJsonDocument(sharedCellMission).toJson()));
     // The Zion sample with its first start said to be in UTM zone 11, its numbers being zone 12's.
-    auto zion = readJsonObject(samplePath("zion-nlcd/mission.json"));
-    auto zionRaster = zion.value("raster").toObject();
-    zionRaster.insert("path", samplePath("zion-nlcd/nlcd.tif"));
-    zion.insert("raster", zionRaster);
+    auto zion = sampleMissionAnywhere("zion-nlcd", "nlcd.tif");
     auto zionRobots = zion.value("robots").toArray();
     auto northWest = zionRobots.at(0).toObject();
     northWest.insert("start_crs", QStringLiteral("EPSG:26911"));

@@ -1,6 +1,9 @@
-// Waypoints beyond the area of interest: counted per robot, with how far they lie from the task area.
+// Waypoints beyond the area of interest: counted per robot, with how far they lie from the task area, and
+// said by every plan whose paths pass there.
 
 #include "core/planners/AreaEdgeCheck.hpp"
+#include "core/planners/PlannerRegistry.hpp"
+#include "tests/support/SyntheticMaps.hpp"
 
 #include <QTest>
 
@@ -8,29 +11,28 @@ using namespace mcpp;
 
 namespace {
 
-// 10 x 10 pixels of 10 m; the two western columns outside the area of interest, the north-east pixel nodata.
-ClassGrid fencedGrid() {
-    ClassGrid grid;
-    grid.columns = 10;
-    grid.rows = 10;
-    grid.originX = 0.0;
-    grid.originY = 100.0;
-    grid.pixelWidth = 10.0;
-    grid.pixelHeight = 10.0;
-    grid.values.assign(100, 1);
-    grid.outside.assign(100, 0);
-    for (int row = 0; row < 10; ++row)
+constexpr double west = 500000.0; // uniformProblem's corner
+constexpr double north = 4000000.0;
+
+// 10 x 10 pixels of 10 m; the two western columns outside the area of interest, the north-east pixel
+// nodata.
+PlanningProblem fencedProblem() {
+    PlanningProblem problem = test::uniformProblem(10, 10, 10.0, {}, {});
+    ClassGrid& grid = problem.grid;
+    grid.outside.assign(grid.values.size(), 0);
+    for (int row = 0; row < grid.rows; ++row)
         for (int column = 0; column < 2; ++column)
             grid.outside[grid.index(column, row)] = ClassGrid::outsideArea;
     grid.outside[grid.index(9, 0)] = ClassGrid::outsideNodata;
-    return grid;
+    return problem;
 }
 
-CoveragePath pathThrough(int robot, const std::vector<MapPoint>& points) {
+// A path through points given in metres east and south of the map's north-west corner.
+CoveragePath pathThrough(int robot, const std::vector<MapPoint>& eastSouth) {
     CoveragePath path;
     path.robot = robot;
-    for (const MapPoint point : points)
-        path.waypoints.push_back(Waypoint{point.x, point.y});
+    for (const MapPoint point : eastSouth)
+        path.waypoints.push_back(Waypoint{west + point.x, north - point.y});
     return path;
 }
 
@@ -41,11 +43,11 @@ class AreaEdgeCheckTest : public QObject {
 
   private slots:
     void waypointsBeyondTheAreaAreCountedWithTheirDistance() {
-        const ClassGrid grid = fencedGrid();
+        const ClassGrid grid = fencedProblem().grid;
         const std::vector<CoveragePath> paths{
-            pathThrough(0, {{55, 55}, {15, 55}, {5, 45}}), // 5 m and 15 m west of the area's edge at x = 20
-            pathThrough(1, {{55, 25}, {95, 95}}),  // inside, and on nodata: the raster's edge, no fence
-            pathThrough(2, {{25, 15}, {12, 15}})}; // 8 m beyond
+            pathThrough(0, {{55, 55}, {15, 55}, {5, 45}}), // 5 m and 15 m west of the area's edge at 20 m
+            pathThrough(1, {{55, 25}, {95, 5}}),   // inside, and on nodata: the raster's edge, no fence
+            pathThrough(2, {{25, 85}, {12, 85}})}; // 8 m beyond
         const WaypointsBeyondArea beyond = waypointsBeyondArea(grid, paths);
         QCOMPARE(beyond.waypoints, 3);
         QCOMPARE(beyond.robots, (std::vector<int>{0, 2}));
@@ -54,13 +56,32 @@ class AreaEdgeCheckTest : public QObject {
     }
 
     void mapsWithoutAnAreaOfInterestHaveNone() {
-        ClassGrid grid = fencedGrid();
+        ClassGrid grid = fencedProblem().grid;
         for (std::uint8_t& flag : grid.outside)
             flag = flag == ClassGrid::outsideArea ? 0 : flag;
-        const std::vector<CoveragePath> paths{pathThrough(0, {{5, 45}, {95, 95}})};
+        const std::vector<CoveragePath> paths{pathThrough(0, {{5, 45}, {95, 5}})};
         QCOMPARE(waypointsBeyondArea(grid, paths).waypoints, 0);
         grid.outside.clear();
         QCOMPARE(waypointsBeyondArea(grid, paths).waypoints, 0);
+    }
+
+    // An area whose edge cuts the cells of 20 m in half: MCPP-MLCT covers them whole, and says so.
+    void aPlanPassingBeyondTheAreaSaysSo() {
+        PlanningProblem problem = fencedProblem();
+        problem.grid.outside[problem.grid.index(9, 0)] = 0;
+        for (int row = 0; row < problem.grid.rows; ++row)
+            problem.grid.outside[problem.grid.index(0, row)] = 0;     // the area's edge at 10 m
+        problem.classes.set({1, "grass", 0x88cc44, 1.0, 10.0, true}); // cells of 20 m
+        problem.starts = {{west + 55.0, north - 55.0}};
+        const Plan plan = makePlanner("mcpp-mlct")->plan(problem, ProgressReporter{});
+        const auto warning = std::find_if(plan.issues.begin(), plan.issues.end(), [](const PlanIssue& issue) {
+            return issue.code == "paths-beyond-area";
+        });
+        QVERIFY(warning != plan.issues.end());
+        QVERIFY2(warning->message.find(
+                     "of robot 1 lie outside the area of interest or in a no-go zone, up to 5 m") !=
+                     std::string::npos,
+                 warning->message.c_str());
     }
 };
 
