@@ -224,7 +224,7 @@ std::optional<std::string> otherCrsFitsProblem(const RobotSpec& spec, MapPoint s
         return std::nullopt;
     return "in " + spec.startCrs + " the start (" + formatQuantity(spec.start.x, 12) + ", " +
            formatQuantity(spec.start.y, 12) +
-           ") lies off the map, but these numbers lie on it in the raster's own " + "CRS, " + own + " (" +
+           ") lies off the map, but these numbers lie on it in the raster's own CRS, " + own + " (" +
            raster.georeference.name() + "): give start_crs " + own + ", or leave it out";
 }
 

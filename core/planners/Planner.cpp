@@ -143,8 +143,7 @@ std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
            formatDistance(beyond.farthestMetres) + " beyond its pixels (its edge may lie up to " +
            formatDistance(beyond.pixelMetres / 2.0) +
            " nearer): cells that straddle the edge are covered whole. For a drone whose geofence follows "
-           "that "
-           "edge, draw the area that far inside the fence";
+           "that edge, draw the area that far inside the fence";
 }
 
 // Robots left with less than half a fair share where the longest path is well above the bound: most often

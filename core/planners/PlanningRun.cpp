@@ -78,13 +78,6 @@ std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
                                             " across)"};
         }
         if (problem) {
-            if (!snap && problem->kind == Kind::StartsShareCell)
-                throw PlanningError::aboutStart(
-                    problem->kind, robotIndex,
-                    problem->detail +
-                        ": each robot sets off from a cell of its own; place the starts farther "
-                        "apart, or let the planner move this one to the nearest free cell "
-                        "(snap_starts_to_free_cells=true)");
             if (!snap)
                 throw PlanningError::aboutStart(problem->kind, robotIndex, problem->detail);
             cell = nearestFreeCell(graph, ownerOfCell, start);
