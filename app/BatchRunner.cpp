@@ -6,6 +6,7 @@
 #include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/ProgressReporter.hpp"
+#include "core/model/RobotNumbers.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/model/TimelineText.hpp"
@@ -28,8 +29,6 @@
 #include <map>
 #include <mutex>
 #include <optional>
-#include <regex>
-#include <set>
 #include <sys/resource.h>
 #include <system_error>
 #include <unistd.h>
@@ -181,7 +180,7 @@ void BatchRunner::assembleMission() {
     mission_ = io::Mission{};
     mission_.rasterPath = options_.rasterPath;
     if (!options_.classesPath.empty()) {
-        auto table = io::loadClassTableCsv(options_.classesPath);
+        auto table = io::loadClassTableCsv(options_.classesPath, &mission_.classesWithoutColour);
         if (!table)
             badInput(namingFile(options_.classesPath, table.error()));
         mission_.classes = std::move(table.value());
@@ -326,13 +325,8 @@ void BatchRunner::checkOutputFolder() const {
 // message names by number, with where they are in the mission and their names, " (robot 1 is robots[0],
 // drone-A)".
 std::string BatchRunner::robotsNamed(const std::string& message) const {
-    static const std::regex numbered(R"(\brobot ([0-9]{1,9})\b)");
-    std::set<std::size_t> robots;
-    for (auto match = std::sregex_iterator(message.begin(), message.end(), numbered);
-         match != std::sregex_iterator(); ++match)
-        robots.insert(std::stoul((*match)[1].str()));
     std::string named;
-    for (const std::size_t robot : robots) {
+    for (const std::size_t robot : robotNumbersIn(message)) {
         if (robot == 0 || robot > mission_.robots.size())
             continue;
         const std::string& name = mission_.robots[robot - 1].name;
@@ -359,14 +353,10 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         progress_.discardHeld();
         if (error.kind() == PlanningError::Kind::Cancelled)
             internalError(std::string("planning cancelled: ") + error.what());
-        if (error.robot() >= 0) {
-            const std::string numbering =
-                options_.missionFromFlags() ? std::string() : robotsNamed(error.detail());
-            badInput(fieldName(io::MissionField::start(error.robot())) + ": " + error.detail() +
-                     io::startProblemAdvice(error.kind(), fieldNamer()) + numbering);
+        if (const auto named = io::planningErrorText(error, fieldNamer())) {
+            const bool numbered = error.robot() >= 0 && !options_.missionFromFlags();
+            badInput(*named + (numbered ? robotsNamed(error.detail()) : std::string()));
         }
-        if (!error.parameter().empty())
-            badInput(fieldName(io::MissionField::parameter(error.parameter())) + ": " + error.detail());
         badInput(options_.missionFromFlags() ? std::string(error.what())
                                              : options_.missionPath + ": " + error.what());
     }
@@ -800,10 +790,11 @@ std::string BatchRunner::fieldName(const io::MissionField& field) const {
         const auto last =
             std::find_if(overrides.rbegin(), overrides.rend(),
                          [&](const ParameterOverride& given) { return given.key == field.key; });
+        const std::string suggested = field.value.empty() ? std::string() : "=" + field.value;
         if (last != overrides.rend())
-            return last->flag;
+            return last->flag + suggested;
         if (!fromFile)
-            return "--param " + field.key;
+            return "--param " + field.key + suggested;
         break;
     }
     }

@@ -73,14 +73,15 @@ Result<ClassTable> presetClassTable(const std::string& name) {
                                        " (known: " + knownPresetNames() + ")");
 }
 
-Result<ClassTable> loadClassTableCsv(const std::string& path) {
+Result<ClassTable> loadClassTableCsv(const std::string& path, ClassesWithoutColour* withoutColour) {
     auto contents = internal::readWholeFile(path);
     if (!contents)
         return Result<ClassTable>::failure(contents.error());
-    return parseClassTableCsv(contents.value(), path);
+    return parseClassTableCsv(contents.value(), path, withoutColour);
 }
 
-Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string& path) {
+Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string& path,
+                                      ClassesWithoutColour* withoutColour) {
     std::stringstream stream(text);
     std::string line;
     std::vector<std::string> fields;
@@ -175,6 +176,8 @@ Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string
             if (!color)
                 return bad(colorColumn, "is not a colour (#rrggbb)");
             entry.colorRgb = *color;
+        } else if (withoutColour != nullptr) {
+            withoutColour->insert(entry.value);
         }
         if (detectionColumn >= 0 && !cell(detectionColumn).empty()) {
             double probability = 0.0;
@@ -215,12 +218,30 @@ Status saveClassTableCsv(const ClassTable& table, const std::string& path) {
     return internal::writeFileAtomically(path, text);
 }
 
-ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset,
-                             const LoadedRaster& raster) {
+ClassTable withColoursFrom(ClassTable table, const ClassesWithoutColour& withoutColour,
+                           const ClassTable& reference) {
+    for (const std::int32_t value : withoutColour) {
+        const LandCoverClass* own = table.find(value);
+        const LandCoverClass* coloured = reference.find(value);
+        if (own == nullptr || coloured == nullptr)
+            continue;
+        LandCoverClass entry = *own;
+        entry.colorRgb = coloured->colorRgb;
+        table.set(entry);
+    }
+    return table;
+}
+
+ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset, const LoadedRaster& raster,
+                             const ClassesWithoutColour& withoutColour) {
+    if (preset.empty() && ownRows.empty())
+        return openingClassTable(raster).table;
     if (preset.empty())
-        return ownRows.empty() ? openingClassTable(raster).table : ownRows;
-    ClassTable table = ownRows;
+        return withoutColour.empty()
+                   ? ownRows
+                   : withColoursFrom(ownRows, withoutColour, openingClassTable(raster).table);
     const ClassTable presetRows = classTableForRaster(raster, preset);
+    ClassTable table = withColoursFrom(ownRows, withoutColour, presetRows);
     for (const auto& landCover : presetRows.classes())
         if (table.find(landCover.value) == nullptr)
             table.set(landCover);

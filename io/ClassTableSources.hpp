@@ -4,6 +4,7 @@
 #include "io/LoadedRaster.hpp"
 #include "io/Result.hpp"
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -17,10 +18,21 @@ struct PresetInfo {
 [[nodiscard]] std::vector<PresetInfo> classTablePresets();
 [[nodiscard]] Result<ClassTable> presetClassTable(const std::string& name);
 
-// CSV with columns value,name,speed_mps,fov_m,passable and an optional color (#rrggbb).
-[[nodiscard]] Result<ClassTable> loadClassTableCsv(const std::string& path);
+// The class values of a table's rows that gave no colour: they are grey until coloured from the map's own
+// table (withColoursFrom).
+using ClassesWithoutColour = std::set<std::int32_t>;
+
+// CSV with columns value,name,speed_mps,fov_m,passable and an optional color (#rrggbb). The rows without a
+// colour are added to `withoutColour` when given.
+[[nodiscard]] Result<ClassTable> loadClassTableCsv(const std::string& path,
+                                                   ClassesWithoutColour* withoutColour = nullptr);
 // The same from the file's text; path only names it in messages.
-[[nodiscard]] Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string& path);
+[[nodiscard]] Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string& path,
+                                                    ClassesWithoutColour* withoutColour = nullptr);
+// The table with the colours its rows did not give taken from `reference` (the raster's palette, the
+// preset's colours), where it has a row of that value.
+[[nodiscard]] ClassTable withColoursFrom(ClassTable table, const ClassesWithoutColour& withoutColour,
+                                         const ClassTable& reference);
 [[nodiscard]] Status saveClassTableCsv(const ClassTable& table, const std::string& path);
 
 // A table for the raster: the preset's (or a generic default's) speed, FOV and passability,
@@ -39,9 +51,11 @@ struct OpeningClassTable {
 [[nodiscard]] OpeningClassTable openingClassTable(const LoadedRaster& raster);
 
 // The table a mission plans with (docs/mission-format.md): its own rows, and for the values they lack,
-// the preset's rows for this raster; with neither, the raster's opening table (openingClassTable).
+// the preset's rows for this raster; with neither, the raster's opening table (openingClassTable). Its own
+// rows without a colour take the colour the preset's or the opening table's row has for the raster.
 [[nodiscard]] ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset,
-                                           const LoadedRaster& raster);
+                                           const LoadedRaster& raster,
+                                           const ClassesWithoutColour& withoutColour = {});
 
 // Checks every class present in the raster has a row. When it does not: an error listing the missing
 // values, or, with missingAsObstacles, the grid is changed so those pixels are outside, with a warning.

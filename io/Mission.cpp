@@ -240,6 +240,8 @@ bool readClasses(MissionReader& reader, const QJsonValue& value, Mission& missio
         LandCoverClass entry;
         if (!readClass(reader, rows.at(i), rowPath, entry))
             return false;
+        if (!rows.at(i).toObject().contains(QLatin1String("color")))
+            mission.classesWithoutColour.insert(entry.value);
         if (!seen.insert(entry.value).second) {
             return reader.fail(rowPath + ".value", "class " + std::to_string(entry.value) + " appears twice");
         }

@@ -11,6 +11,7 @@
 #include "io/VehicleSettings.hpp"
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,9 @@ struct Mission {
     AreaOfInterest area;
     std::string preset; // used when classes is empty
     ClassTable classes;
+    // The values of `classes` rows that gave no colour: they take the preset's or the raster's
+    // (missionClassTable).
+    std::set<std::int32_t> classesWithoutColour;
     bool missingClassesAsObstacles = false;
     std::vector<RobotSpec> robots;
     std::vector<SpeedEvent> events; // robots slowing down or stopping, for planners that simulate them

@@ -44,7 +44,8 @@ FieldNamer missionFileFields(const std::string& missionPath, std::vector<std::st
         case Part::Parameter:
             break;
         }
-        return missionPath + ": planner.parameters." + field.key;
+        return missionPath + ": planner.parameters." + field.key +
+               (field.value.empty() ? std::string() : "=" + field.value);
     };
 }
 
@@ -154,7 +155,8 @@ Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& ra
                 " of the map: it is most likely another product's legend; " + advice +
                 " with rows for these classes (--classes FILE, or rows beside the preset in a mission file)");
     }
-    ClassTable table = missionClassTable(mission.classes, mission.preset, raster);
+    ClassTable table =
+        missionClassTable(mission.classes, mission.preset, raster, mission.classesWithoutColour);
     if (const auto problem = table.validate())
         return Result<ClassTable>::failure(where + ": " + *problem);
     return table;
@@ -290,12 +292,21 @@ Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& class
 
 std::string startProblemAdvice(PlanningError::Kind kind, const FieldNamer& names) {
     const std::string snap = "let the planner start the robot from the nearest free cell (" +
-                             names(MissionField::parameter("snap_starts_to_free_cells")) + "=true)";
+                             names(MissionField::parameter("snap_starts_to_free_cells", "true")) + ")";
     if (kind == PlanningError::Kind::StartOnObstacle)
         return "; move it onto passable land, or " + snap;
     if (kind == PlanningError::Kind::StartsShareCell)
         return "; each robot sets off from a cell of its own: place the starts farther apart, or " + snap;
     return {};
+}
+
+std::optional<std::string> planningErrorText(const PlanningError& error, const FieldNamer& names) {
+    if (error.robot() >= 0)
+        return names(MissionField::start(error.robot())) + ": " + error.detail() +
+               startProblemAdvice(error.kind(), names);
+    if (!error.parameter().empty())
+        return names(MissionField::parameter(error.parameter())) + ": " + error.detail();
+    return std::nullopt;
 }
 
 Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const LoadedRaster& raster,

@@ -25,15 +25,16 @@ struct MissionField {
     // offered as advice, not blamed.
     enum class Part { Raster, Classes, MissingClassesOption, Start, StartCrs, Charger, Planner, Parameter };
     Part part = Part::Raster;
-    int robot = -1;  // Start, StartCrs, Charger: the robot, counted from 0
-    std::string key; // Parameter: its key
+    int robot = -1;    // Start, StartCrs, Charger: the robot, counted from 0
+    std::string key;   // Parameter: its key
+    std::string value; // Parameter: the value advice suggests for it, empty when it names the field alone
 
-    [[nodiscard]] static MissionField of(Part part) { return {part, -1, {}}; }
-    [[nodiscard]] static MissionField start(int robot) { return {Part::Start, robot, {}}; }
-    [[nodiscard]] static MissionField startCrs(int robot) { return {Part::StartCrs, robot, {}}; }
-    [[nodiscard]] static MissionField charger(int robot) { return {Part::Charger, robot, {}}; }
-    [[nodiscard]] static MissionField parameter(std::string key) {
-        return {Part::Parameter, -1, std::move(key)};
+    [[nodiscard]] static MissionField of(Part part) { return {part, -1, {}, {}}; }
+    [[nodiscard]] static MissionField start(int robot) { return {Part::Start, robot, {}, {}}; }
+    [[nodiscard]] static MissionField startCrs(int robot) { return {Part::StartCrs, robot, {}, {}}; }
+    [[nodiscard]] static MissionField charger(int robot) { return {Part::Charger, robot, {}, {}}; }
+    [[nodiscard]] static MissionField parameter(std::string key, std::string value = {}) {
+        return {Part::Parameter, -1, std::move(key), std::move(value)};
     }
 };
 // How a caller names a field: "mission.json: robots[1].start", "--start 2", "Robot 2's start"...
@@ -73,6 +74,11 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 // in another robot's cell), the setting named in the caller's terms: "; move it onto passable land, or ...";
 // empty for other problems.
 [[nodiscard]] std::string startProblemAdvice(PlanningError::Kind kind, const FieldNamer& names);
+// A planning error about one robot's start or one planner parameter, the field named in the caller's terms
+// and, for a start, followed by startProblemAdvice: "mission.json: robots[1].start (beta): ... lies on an
+// obstacle; move it onto passable land, or ..."; nothing for other errors.
+[[nodiscard]] std::optional<std::string> planningErrorText(const PlanningError& error,
+                                                           const FieldNamer& names);
 
 // Each robot's charger in the planning frame (metres), read like its start; none where it charges at its
 // start.

@@ -12,6 +12,10 @@ namespace {
 constexpr double wholeRasterShare = 0.8;
 constexpr double marginShare = 0.2;
 constexpr double minimumMarginShare = 0.05;
+// How far past the plans, in shares of their extent, a ring may widen the frame; and the room left round a
+// ring for its dashed line.
+constexpr double ringReachShare = 1.0;
+constexpr double ringMarginShare = 0.03;
 
 struct Bounds {
     double minX = std::numeric_limits<double>::infinity();
@@ -19,6 +23,21 @@ struct Bounds {
     double maxX = -std::numeric_limits<double>::infinity();
     double maxY = -std::numeric_limits<double>::infinity();
     [[nodiscard]] bool empty() const { return !(minX <= maxX && minY <= maxY); }
+    [[nodiscard]] Bounds grownBy(double metres) const {
+        return {minX - metres, minY - metres, maxX + metres, maxY + metres};
+    }
+    [[nodiscard]] Bounds within(const Bounds& limit) const {
+        return {std::max(minX, limit.minX), std::max(minY, limit.minY), std::min(maxX, limit.maxX),
+                std::min(maxY, limit.maxY)};
+    }
+    void take(const Bounds& other) {
+        if (other.empty())
+            return;
+        minX = std::min(minX, other.minX);
+        minY = std::min(minY, other.minY);
+        maxX = std::max(maxX, other.maxX);
+        maxY = std::max(maxY, other.maxY);
+    }
 };
 
 Bounds cellBounds(const std::vector<const Plan*>& plans) {
@@ -47,30 +66,55 @@ ClassGrid extentOf(const ClassGrid& grid) {
     return extent;
 }
 
+// The plans' bounds with their margin and the rings, as far as they may widen it.
+Bounds framedBounds(const ClassGrid& grid, const Bounds& bounds, const std::vector<FrameRing>& rings) {
+    const double extent = std::max(bounds.maxX - bounds.minX, bounds.maxY - bounds.minY);
+    // A fifth of the plans' extent around them, and at least a twentieth of the raster's: a plan of a few
+    // cells keeps some of the land around it.
+    Bounds framed = bounds.grownBy(
+        std::max(marginShare * extent, minimumMarginShare * std::max(grid.width(), grid.height())));
+    const Bounds limit = bounds.grownBy(ringReachShare * extent);
+    for (const FrameRing& ring : rings) {
+        if (!(ring.radiusMetres > 0.0) || !std::isfinite(ring.centre.x) || !std::isfinite(ring.centre.y))
+            continue;
+        const double reach = ring.radiusMetres * (1.0 + ringMarginShare);
+        framed.take(
+            Bounds{ring.centre.x - reach, ring.centre.y - reach, ring.centre.x + reach, ring.centre.y + reach}
+                .within(limit));
+    }
+    return framed;
+}
+
 } // namespace
 
-ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans) {
+std::vector<FrameRing> flightReachRings(const Plan& plan, const std::vector<double>& reachMetres) {
+    std::vector<FrameRing> rings;
+    for (const CoveragePath& path : plan.paths) {
+        const auto robot = static_cast<std::size_t>(path.robot);
+        if (path.waypoints.empty() || robot >= reachMetres.size() || !(reachMetres[robot] > 0.0))
+            continue;
+        rings.push_back({{path.waypoints.front().x, path.waypoints.front().y}, reachMetres[robot]});
+    }
+    return rings;
+}
+
+ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans,
+                    const std::vector<FrameRing>& rings) {
     ClassGrid frame = extentOf(grid);
     const Bounds bounds = cellBounds(plans);
     if (bounds.empty() || grid.pixelWidth <= 0.0 || grid.pixelHeight <= 0.0)
         return frame;
-    // A fifth of the plans' extent around them, and at least a twentieth of the raster's: a plan of a few
-    // cells keeps some of the land around it.
-    const double margin =
-        std::max(marginShare * std::max(bounds.maxX - bounds.minX, bounds.maxY - bounds.minY),
-                 minimumMarginShare * std::max(grid.width(), grid.height()));
+    const Bounds framed = framedBounds(grid, bounds, rings);
     // Whole pixels of the raster, clamped to it (in doubles first: cells far off it stay in range).
     const auto pixelIndex = [](double value, int limit) {
         return static_cast<int>(std::clamp(value, 0.0, static_cast<double>(limit)));
     };
     const int firstColumn =
-        pixelIndex(std::floor((bounds.minX - margin - grid.originX) / grid.pixelWidth), grid.columns);
+        pixelIndex(std::floor((framed.minX - grid.originX) / grid.pixelWidth), grid.columns);
     const int lastColumn =
-        pixelIndex(std::ceil((bounds.maxX + margin - grid.originX) / grid.pixelWidth), grid.columns);
-    const int firstRow =
-        pixelIndex(std::floor((grid.originY - bounds.maxY - margin) / grid.pixelHeight), grid.rows);
-    const int lastRow =
-        pixelIndex(std::ceil((grid.originY - bounds.minY + margin) / grid.pixelHeight), grid.rows);
+        pixelIndex(std::ceil((framed.maxX - grid.originX) / grid.pixelWidth), grid.columns);
+    const int firstRow = pixelIndex(std::floor((grid.originY - framed.maxY) / grid.pixelHeight), grid.rows);
+    const int lastRow = pixelIndex(std::ceil((grid.originY - framed.minY) / grid.pixelHeight), grid.rows);
     const int columns = lastColumn - firstColumn;
     const int rows = lastRow - firstRow;
     if (columns <= 0 || rows <= 0 ||

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/ClassGrid.hpp"
+#include "core/model/MapPoint.hpp"
 #include "core/model/Plan.hpp"
 
 #include <vector>
@@ -11,6 +12,18 @@ namespace mcpp::render {
 // extent alone): the whole raster, or, where the plans cover a small part of it (an area of interest), the
 // pixels around their cells with a margin of a fifth of their extent on each side (at least a twentieth of
 // the raster's). Null plans are skipped.
-[[nodiscard]] ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans);
+//
+// Rings drawn round points (an aircraft's flight reach round its start) are taken in too, as far as the
+// plans' extent again on each side of them: a ring far larger than the plans would shrink them to a dot.
+struct FrameRing {
+    MapPoint centre;
+    double radiusMetres = 0.0;
+};
+[[nodiscard]] ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans,
+                                  const std::vector<FrameRing>& rings = {});
+// The flight-reach rings of a plan's robots: round each path's first waypoint, of the robot's reach in
+// metres (by robot; 0 or missing: none).
+[[nodiscard]] std::vector<FrameRing> flightReachRings(const Plan& plan,
+                                                      const std::vector<double>& reachMetres);
 
 } // namespace mcpp::render

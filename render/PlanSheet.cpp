@@ -46,7 +46,7 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
     : grid_(grid), classes_(classes), plan_(plan), extras_(std::move(extras)),
       crossings_(impassableCrossings(plan.cells, plan.regions, grid, classes)),
       sections_(planLegend(classes, &plan, extras_.robotNames, &grid, &crossings_)), title_(titleOf(plan)),
-      frame_(planFrame(grid, {&plan})) {
+      frame_(planFrame(grid, {&plan}, flightReachRings(plan, extras_.flightReach))) {
     addFlightReach(sections_, extras_.flightReach);
     const QSize mapSize = fittedMapSize(frame_, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.

@@ -2,6 +2,8 @@
 
 #include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
+#include "core/model/NameSuggestion.hpp"
+#include "core/model/RobotNumbers.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -151,6 +153,20 @@ QString vehiclesProblemText(const std::string& problem) {
     if (text.startsWith(QStringLiteral("every robot")))
         text[0] = text[0].toUpper();
     return QObject::tr("%1. Change it in the Robot vehicles dialog (Plan menu).").arg(text);
+}
+
+// A planner setting as the Planner panel labels it; advice to switch a checkbox on says to tick it.
+std::string plannerSettingName(const std::string& planner, const io::MissionField& field) {
+    const auto description = findPlannerDescription(planner);
+    const ParameterSpec* spec = nullptr;
+    if (description)
+        for (const ParameterSpec& candidate : description->parameters)
+            if (candidate.key == field.key)
+                spec = &candidate;
+    const std::string label = spec ? "\"" + spec->label + "\"" : field.key;
+    if (spec && spec->type == ParameterType::Boolean && field.value == "true")
+        return "tick " + label + " in the Planner panel";
+    return "the Planner panel's " + label + (field.value.empty() ? std::string() : " set to " + field.value);
 }
 
 QDockWidget* makeDock(const QString& objectName, const QString& title, QWidget* content, QWidget* parent) {
@@ -936,13 +952,16 @@ void MainWindow::sizeWaypointFiles() {
 bool MainWindow::loadClassTable(const QString& path) {
     if (!document_->hasMap())
         return false;
-    auto table = io::loadClassTableCsv(path.toStdString());
+    io::ClassesWithoutColour withoutColour;
+    auto table = io::loadClassTableCsv(path.toStdString(), &withoutColour);
     if (!table.ok()) {
         reportError(tr("Cannot load class table"), QString::fromStdString(table.error()));
         return false;
     }
+    // Rows without a colour keep the one the map shows for their class.
+    const ClassTable loaded = io::withColoursFrom(table.value(), withoutColour, document_->classes());
     undoStack_->push(new ClassTableEditCommand(
-        document_, document_->classes(), QString::fromStdString(document_->mission().preset), table.value(),
+        document_, document_->classes(), QString::fromStdString(document_->mission().preset), loaded,
         QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
     classTableBanner_->clearExplanation();
     return true;
@@ -1213,6 +1232,7 @@ bool MainWindow::openMission(const QString& path) {
         return false;
     }
     mission.classes = std::move(classes.value());
+    mission.classesWithoutColour.clear(); // coloured now, from the preset or the raster
     // The window holds the area files by absolute path; saving writes them relative again.
     mission.area.includePath = io::resolveMissionPath(mission.area.includePath, missionPath);
     mission.area.excludePath = io::resolveMissionPath(mission.area.excludePath, missionPath);
@@ -1597,8 +1617,31 @@ io::FieldNamer MainWindow::fieldNamer() const {
         case Part::Parameter:
             break;
         }
-        return "planner setting " + field.key;
+        return plannerSettingName(document_->plannerChoice().planner, field);
     };
+}
+
+QString MainWindow::planningErrorText(const PlanningOutcome& outcome) const {
+    if (!outcome.planningError)
+        return outcome.error;
+    const PlanningError& error = *outcome.planningError;
+    const auto named = io::planningErrorText(error, fieldNamer());
+    if (!named)
+        return outcome.error;
+    // As "Cannot plan" gives the starts it checks first; the robots the planner numbers, by their names.
+    return QString::fromStdString(*named + robotsNamed(error.robot() >= 0 ? error.detail() : std::string()));
+}
+
+std::string MainWindow::robotsNamed(const std::string& message) const {
+    const auto& robots = document_->robots();
+    std::string named;
+    for (const std::size_t robot : robotNumbersIn(message)) {
+        const std::string number = "robot " + std::to_string(robot);
+        if (robot == 0 || robot > robots.size() || lowercase(robots[robot - 1].name) == number)
+            continue;
+        named += (named.empty() ? "" : "; ") + number + " is " + robots[robot - 1].name;
+    }
+    return named.empty() ? std::string() : " (" + named + ")";
 }
 
 bool MainWindow::isPlanning() const {
@@ -1772,7 +1815,7 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
     }
     updateActions(); // before any dialog: Cancel must not stay enabled behind it
     if (!outcome.plan && !outcome.cancelled)
-        reportError(tr("Planning failed"), outcome.error);
+        reportError(tr("Planning failed"), planningErrorText(outcome));
     emit planningFinished(outcome.plan != nullptr);
 }
 

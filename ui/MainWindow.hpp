@@ -175,6 +175,10 @@ class MainWindow : public QMainWindow {
     void chooseExport(const std::string& formatKey);
     // How messages of the shared mission layer name a field here: robots by name, settings by key.
     [[nodiscard]] io::FieldNamer fieldNamer() const;
+    // Why planning failed, a robot's start or a setting named as the window names them, with advice.
+    [[nodiscard]] QString planningErrorText(const PlanningOutcome& outcome) const;
+    // " (robot 1 is east)" for the robots a message numbers whose names say otherwise; empty if none.
+    [[nodiscard]] std::string robotsNamed(const std::string& message) const;
     [[nodiscard]] QString dialogFolder(const QString& key) const;
     void rememberFolder(const QString& key, const QString& path);
 

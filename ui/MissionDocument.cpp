@@ -62,6 +62,7 @@ PlanInputs MissionDocument::currentInputs() const {
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {
     mission_.classes = classes;
+    mission_.classesWithoutColour.clear(); // the window's table is coloured throughout
     mission_.preset = preset.toStdString();
     emit classesChanged();
     emitStaleIfChanged();

@@ -71,6 +71,7 @@ bool PlanningRunner::start(PlanningProblem problem) {
         } catch (const PlanningError& error) {
             outcome.cancelled = error.kind() == PlanningError::Kind::Cancelled;
             outcome.error = QString::fromStdString(error.what());
+            outcome.planningError = error;
         } catch (const std::bad_alloc&) {
             outcome.error = QObject::tr("Out of memory while planning; try a coarser raster or larger FOVs.");
         } catch (const std::exception& error) {

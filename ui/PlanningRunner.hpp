@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/Plan.hpp"
+#include "core/model/PlanningError.hpp"
 #include "core/model/PlanningProblem.hpp"
 
 #include <QFutureWatcher>
@@ -8,6 +9,7 @@
 #include <QString>
 #include <atomic>
 #include <memory>
+#include <optional>
 
 namespace mcpp::ui {
 
@@ -15,6 +17,8 @@ namespace mcpp::ui {
 struct PlanningOutcome {
     std::shared_ptr<const Plan> plan; // null on failure
     QString error;
+    // The planner's own error, for the window to name a robot's start or a setting in its own terms.
+    std::optional<PlanningError> planningError;
     bool cancelled = false;
 };
 

@@ -17,6 +17,7 @@
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QStackedBarSeries>
 #include <QTableWidget>
@@ -24,6 +25,7 @@
 #include <QValueAxis>
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace mcpp::ui {
 
@@ -142,7 +144,17 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     staleLabel_->hide();
     layout->addWidget(staleLabel_);
 
-    auto* summary = new QFormLayout;
+    // The figures scroll on their own: a plan's warnings and notes may run to many lines, and a dock too
+    // short for them cut them off.
+    auto* summaryArea = new QScrollArea(this);
+    summaryArea_ = summaryArea;
+    summaryArea->setObjectName(QStringLiteral("resultsSummaryArea"));
+    summaryArea->setWidgetResizable(true);
+    summaryArea->setFrameShape(QFrame::NoFrame);
+    summaryArea->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* summaryWidget = new QWidget(summaryArea);
+    auto* summary = new QFormLayout(summaryWidget);
+    summary->setContentsMargins(0, 0, 0, 0);
     summary->setObjectName(QStringLiteral("resultsSummary"));
     makespan_ = valueLabel(QStringLiteral("makespanLabel"), this);
     lowerBound_ = valueLabel(QStringLiteral("lowerBoundLabel"), this);
@@ -179,7 +191,7 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     summary->setRowVisible(timeline_, false);
     summary->setRowVisible(notes_, false);
     summary->setRowVisible(waypointFiles_, false);
-    layout->addLayout(summary);
+    summaryArea->setWidget(summaryWidget);
 
     table_ = new QTableWidget(0, 7, this);
     table_->setObjectName(QStringLiteral("resultsTable"));
@@ -207,6 +219,9 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     chartView_->installEventFilter(this); // the bars' numbers follow the chart's width
 
     auto* splitter = new QSplitter(Qt::Vertical, this);
+    splitter_ = splitter;
+    splitter->setChildrenCollapsible(false);
+    splitter->addWidget(summaryArea);
     splitter->addWidget(table_);
     splitter->addWidget(chartView_);
     layout->addWidget(splitter, 1);
@@ -342,6 +357,29 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     summary_->setRowVisible(notes_, !notes.isEmpty());
     summary_->setRowVisible(waypointFiles_, false); // until showWaypointFiles has this plan's
     showChart(*plan, names);
+    fitSummary();
+}
+
+// The figures shown whole where the panel has room, taken from the table's empty rows first, then from the
+// chart down to its least height; the table keeps its rows where it can. A user's drag holds until the
+// next plan.
+void ResultsPanel::fitSummary() {
+    const QList<int> sizes = splitter_->sizes();
+    const int total = std::accumulate(sizes.begin(), sizes.end(), 0);
+    if (!isVisible() || total <= 0)
+        return;
+    QWidget* figures = summaryArea_->widget();
+    const int width = summaryArea_->viewport()->width();
+    const int figuresWanted =
+        figures->hasHeightForWidth() ? figures->heightForWidth(width) : figures->sizeHint().height();
+    const int rowsHeight = table_->rowCount() > 0 ? table_->rowCount() * table_->rowHeight(0) : 0;
+    const int tableWanted = table_->horizontalHeader()->height() + rowsHeight + 2 * table_->frameWidth();
+    const int tableLeast = std::min(tableWanted, table_->minimumHeight());
+    const int chartLeast = chartView_->minimumHeight();
+    const int figuresHeight = std::max(std::min(figuresWanted, total - tableLeast - chartLeast),
+                                       summaryArea_->minimumSizeHint().height());
+    const int tableHeight = std::max(std::min(tableWanted, total - figuresHeight - chartLeast), tableLeast);
+    splitter_->setSizes({figuresHeight, tableHeight, std::max(total - figuresHeight - tableHeight, 0)});
 }
 
 namespace {
@@ -371,6 +409,7 @@ void ResultsPanel::showWaypointFiles(const std::vector<io::MissionSize>& sizes,
                                  : QString());
     waypointFiles_->setToolTip(perRobot.join(QLatin1Char('\n')));
     summary_->setRowVisible(waypointFiles_, !sizes.empty());
+    fitSummary();
 }
 
 QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& sizes,

@@ -11,6 +11,8 @@ class QChart;
 class QChartView;
 class QFormLayout;
 class QLabel;
+class QScrollArea;
+class QSplitter;
 class QTableWidget;
 
 namespace mcpp::ui {
@@ -54,8 +56,11 @@ class ResultsPanel : public QWidget {
     void clearChart();
     void showChart(const Plan& plan, const QStringList& names);
     void numberBars();
+    void fitSummary();
 
     QLabel* staleLabel_;
+    QScrollArea* summaryArea_; // the figures above the table, scrolled when the dock is too short
+    QSplitter* splitter_;      // the figures, the table and the chart
     QTableWidget* table_;
     QLabel* makespan_;
     QLabel* lowerBound_;

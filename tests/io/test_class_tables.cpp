@@ -214,6 +214,44 @@ class ClassTablesTest : public QObject {
         QCOMPARE(missionClassTable({}, "", nlcd), openingClassTable(nlcd).table);
     }
 
+    // A row that gives no colour is not painted grey: it takes the colour of its class from the preset, the
+    // raster's palette or the opening table; a row that gives one keeps it, and so does a row whose class
+    // the raster does not hold.
+    void ownRowsWithoutColourTakeTheMapsColours() {
+        const LoadedRaster nlcd = load("landcover/nlcd.tif");
+        const ClassesWithoutColour withoutColour{4, 5, 99};
+        ClassTable own;
+        own.set({4, "Pine forest", 0x808080, 0.4, 50.0, true});
+        own.set({5, "Scrub", 0x808080, 0.5, 50.0, true});
+        own.set({6, "Grass", 0x123456, 0.9, 50.0, true});
+        own.set({99, "Not on the map", 0x808080, 0.9, 50.0, true});
+        const ClassTable presetColours = classTableForRaster(nlcd, "nlcd-simplified");
+        const ClassTable merged = missionClassTable(own, "nlcd-simplified", nlcd, withoutColour);
+        QCOMPARE(merged.find(4)->colorRgb, presetColours.find(4)->colorRgb);
+        QCOMPARE(merged.find(5)->colorRgb, presetColours.find(5)->colorRgb);
+        QVERIFY(merged.find(4)->colorRgb != 0x808080U);
+        QCOMPARE(merged.find(4)->name, std::string("Pine forest")); // only the colour is taken
+        QCOMPARE(merged.find(6)->colorRgb, 0x123456U);
+        QCOMPARE(merged.find(99)->colorRgb, 0x808080U);
+        const ClassTable opening = openingClassTable(nlcd).table;
+        const ClassTable withoutPreset = missionClassTable(own, "", nlcd, withoutColour);
+        QCOMPARE(withoutPreset.find(5)->colorRgb, opening.find(5)->colorRgb);
+        QCOMPARE(withoutPreset.find(6)->colorRgb, 0x123456U);
+
+        ClassesWithoutColour read;
+        const auto csv = parseClassTableCsv(
+            "value,name,speed_mps,fov_m,passable,color\n4,Forest,1,10,true,\n6,Grass,1,10,true,#123456\n"
+            "7,Crops,1,10,true,#abcdef\n",
+            "classes.csv", &read);
+        QVERIFY2(csv.ok(), csv.ok() ? "" : csv.error().c_str());
+        QCOMPARE(read, (ClassesWithoutColour{4}));
+        ClassesWithoutColour noColumn;
+        QVERIFY(parseClassTableCsv("value,name,speed_mps,fov_m,passable\n4,Forest,1,10,true\n", "c.csv",
+                                   &noColumn)
+                    .ok());
+        QCOMPARE(noColumn, (ClassesWithoutColour{4}));
+    }
+
     // A preset of another product is refused; one that lacks some classes is planned with a warning that
     // names them and their share; the mission's own rows fill gaps.
     void presetOfAnotherProductIsCaught() {

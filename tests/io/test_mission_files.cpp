@@ -101,6 +101,24 @@ class MissionFilesTest : public QObject {
         QCOMPARE(missionToJson(loaded.value()), readBytes(first));
     }
 
+    // A class row without a colour is marked so the preset's or the raster's colour can take its place;
+    // a saved mission (whose rows then hold colours) gives every row one.
+    void classRowsWithoutColourAreMarked() {
+        const auto loaded = parseMission(
+            R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                "classes": {"table": [{"value": 1, "name": "Grass", "speed_mps": 1, "fov_m": 10},
+                                      {"value": 2, "name": "Wood", "color": "#336633", "speed_mps": 1,
+                                       "fov_m": 10}]},
+                "robots": [{"name": "one", "start": [1, 1]}]})",
+            "mission.json");
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        QCOMPARE(loaded.value().classesWithoutColour, (std::set<std::int32_t>{1}));
+        QCOMPARE(loaded.value().classes.find(2)->colorRgb, 0x336633U);
+        const auto again = parseMission(missionToJson(loaded.value()), "again.json");
+        QVERIFY2(again.ok(), again.ok() ? "" : again.error().c_str());
+        QVERIFY(again.value().classesWithoutColour.empty());
+    }
+
     void fileIsVersionedJsonInAFixedOrder() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("mission.json").toStdString();

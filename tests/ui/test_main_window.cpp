@@ -623,6 +623,28 @@ class TestMainWindow : public QObject {
         QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
     }
 
+    // Starts the window's own checks pass but the planner refuses (two in one cell of its grid): the
+    // message names the robot as the robot table does and gives the advice in the window's terms.
+    void refusesStartsSharingACellWithAdvice() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        io::Mission mission = test::twoRobotMission();
+        mission.robots[1].start = {mission.robots[0].start.x + 1.0, mission.robots[0].start.y};
+        window.document()->reset(test::grassRaster(), mission, QString());
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        QVERIFY2(window.startPlanning(), qPrintable(window.lastError()));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY(!finished.first().first().toBool());
+        const QString error = window.lastError();
+        QVERIFY2(error.startsWith(QStringLiteral("west's start: ")), qPrintable(error));
+        QVERIFY2(error.contains(QStringLiteral("place the starts farther apart, or let the planner start the "
+                                               "robot from the nearest free cell (tick \"Move blocked starts "
+                                               "to the nearest free cell\" in the Planner panel)")),
+                 qPrintable(error));
+        QVERIFY2(error.endsWith(QStringLiteral(" (robot 1 is east)")), qPrintable(error));
+    }
+
     // The Compare action: planners run one after another in the background, the panel lists one row each
     // (one-robot planners cannot take part with several robots), the table sorts, and selecting a row
     // shows that plan: the map, the results and the exports are then about it.
