@@ -162,7 +162,7 @@ void BatchRunner::execute() {
     problem = PlanningProblem{};
     returnFreedMemory();
     for (const auto& warning : plan.warnings())
-        warn(warning);
+        warn(warning + robotsNamed(warning, false));
     writeOutputs(plan, options_.outputDirectory);
     printSummary(plan);
 }
@@ -322,17 +322,21 @@ void BatchRunner::checkOutputFolder() const {
 }
 
 // Robots are numbered from 1, as the --start flags are, and a mission's array counts from 0: the robots a
-// message names by number, with where they are in the mission and their names, " (robot 1 is robots[0],
-// drone-A)".
-std::string BatchRunner::robotsNamed(const std::string& message) const {
+// message names by number, with their names and, for an error, where they are in the mission: " (robot 1
+// is robots[0], drone-A)". Nothing for robots given by --start flags, whose numbers are the flags'.
+std::string BatchRunner::robotsNamed(const std::string& message, bool withIndex) const {
+    if (options_.missionFromFlags())
+        return {};
     std::string named;
     for (const std::size_t robot : robotNumbersIn(message)) {
         if (robot == 0 || robot > mission_.robots.size())
             continue;
         const std::string& name = mission_.robots[robot - 1].name;
-        named += (named.empty() ? "" : "; ") +
-                 ("robot " + std::to_string(robot) + " is robots[" + std::to_string(robot - 1) + "]") +
-                 (name.empty() ? std::string() : ", " + name);
+        const std::string index = withIndex ? "robots[" + std::to_string(robot - 1) + "]" : std::string();
+        if (index.empty() && name.empty())
+            continue;
+        named += (named.empty() ? "" : "; ") + ("robot " + std::to_string(robot) + " is ") + index +
+                 (index.empty() || name.empty() ? "" : ", ") + name;
     }
     return named.empty() ? std::string() : " (" + named + ")";
 }
@@ -353,10 +357,8 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         progress_.discardHeld();
         if (error.kind() == PlanningError::Kind::Cancelled)
             internalError(std::string("planning cancelled: ") + error.what());
-        if (const auto named = io::planningErrorText(error, fieldNamer())) {
-            const bool numbered = error.robot() >= 0 && !options_.missionFromFlags();
-            badInput(*named + (numbered ? robotsNamed(error.detail()) : std::string()));
-        }
+        if (const auto named = io::planningErrorText(error, fieldNamer()))
+            badInput(*named + (error.robot() >= 0 ? robotsNamed(error.detail(), true) : std::string()));
         badInput(options_.missionFromFlags() ? std::string(error.what())
                                              : options_.missionPath + ": " + error.what());
     }

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 
 namespace mcpp::io {
@@ -731,10 +732,19 @@ std::vector<std::string> robotNames(const Mission& mission) {
     return names;
 }
 
+double vehicleBatterySeconds(const VehicleSettings& vehicle) {
+    if (!(vehicle.flightTimeSeconds > 0.0))
+        return 0.0;
+    const double travel = vehicle.flightTimeSeconds - climbAndDescentSeconds(vehicle);
+    return travel >= BatteryEndurance::minimumSeconds ? travel : 0.0;
+}
+
 std::vector<double> robotBatteries(const Mission& mission) {
+    const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     std::vector<double> batteries;
-    for (const RobotSpec& robot : mission.robots)
-        batteries.push_back(robot.batterySeconds.value_or(0.0));
+    for (std::size_t robot = 0; robot < mission.robots.size(); ++robot)
+        batteries.push_back(
+            mission.robots[robot].batterySeconds.value_or(vehicleBatterySeconds(vehicles[robot])));
     return batteries;
 }
 
@@ -884,6 +894,55 @@ void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSett
                              namedAltitudes(mission, vehicles, high) + ")"});
 }
 
+// " (20 min)": the battery_s the mission gives the planner, or its default.
+std::string plannerBattery(const PlannerDescription& planner, const ParameterValues& given) {
+    for (const ParameterSpec& spec : planner.parameters) {
+        if (spec.key != "battery_s")
+            continue;
+        const ParameterValue* value = given.find(spec.key);
+        const ParameterValue& battery = value != nullptr ? *value : spec.defaultValue;
+        if (const double* seconds = std::get_if<double>(&battery))
+            return " (" + formatDuration(*seconds) + ")";
+    }
+    return {};
+}
+
+// For a planner that flies on batteries, where robots' batteries come from their vehicles' flight times:
+// what each robot's sorties are planned on, so that two settings of one battery do not part unseen.
+std::optional<std::string> batteriesFromFlightTimesNote(const Mission& mission,
+                                                        const std::vector<VehicleSettings>& vehicles) {
+    const auto planner = findPlannerDescription(mission.planner.planner);
+    if (!planner || !planner->fliesOnBatteries())
+        return std::nullopt;
+    std::map<double, std::vector<std::size_t>> fromVehicle; // by battery
+    std::vector<std::size_t> own;
+    std::vector<std::size_t> planners;
+    for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
+        if (mission.robots[robot].batterySeconds)
+            own.push_back(robot);
+        else if (const double battery = vehicleBatterySeconds(vehicles[robot]); battery > 0.0)
+            fromVehicle[battery].push_back(robot);
+        else
+            planners.push_back(robot);
+    }
+    if (fromVehicle.empty())
+        return std::nullopt;
+    std::string text = "sorties are planned on each vehicle's flight time less its climb and descent: ";
+    std::string groups;
+    for (const auto& [battery, robots] : fromVehicle)
+        groups +=
+            (groups.empty() ? "" : ", ") + formatDuration(battery) + " for " + namedRobots(mission, robots);
+    text += groups;
+    if (!own.empty())
+        text += "; " + namedRobots(mission, own) + " on " + (own.size() == 1 ? "its" : "their") +
+                " own battery_s";
+    if (!planners.empty())
+        text += "; " + namedRobots(mission, planners) +
+                ", without a flight time, on the planner's battery_s" +
+                plannerBattery(*planner, mission.planner.parameters);
+    return text;
+}
+
 } // namespace
 
 void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
@@ -892,6 +951,9 @@ void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     applyCruiseSpeed(mission, vehicles, problem);
     noteAircraftAltitudes(mission, vehicles, problem.notes);
+    if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))
+        problem.notes.push_back(
+            {IssueSeverity::Information, "batteries-from-flight-times", std::move(*batteries)});
 }
 
 std::vector<VehicleSettings> robotVehicles(const Mission& mission) {

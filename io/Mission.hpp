@@ -86,7 +86,12 @@ struct Mission {
 // What no robot can fly with its vehicle settings (a flight too short for the climb and descent), naming the
 // robots; nothing when every robot can. Batch mode and the window refuse to plan on it alike.
 [[nodiscard]] std::optional<std::string> fleetFlightProblem(const Mission& mission);
-// Each robot's own battery in seconds in order, 0 where it has none (the planner's battery_s then).
+// What a vehicle's flight time leaves for travel on one battery, for planners that fly on batteries: an
+// aircraft's less the climb and descent every flight takes, a rover's whole; 0 without a flight time (or
+// when the climb takes it all).
+[[nodiscard]] double vehicleBatterySeconds(const VehicleSettings& vehicle);
+// Each robot's battery in seconds in order: its own battery_s, else its vehicle's (vehicleBatterySeconds);
+// 0 where it has neither (the planner's battery_s then).
 [[nodiscard]] std::vector<double> robotBatteries(const Mission& mission);
 // The cruise speed the whole fleet flies at, when every robot's vehicle has the same one; 0 when none has
 // one or when they differ.

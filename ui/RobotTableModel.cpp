@@ -30,6 +30,20 @@ int RobotTableModel::columnCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : ColumnCount;
 }
 
+QString RobotTableModel::batteryToolTip(int robot) const {
+    const io::RobotSpec& spec = document_->robots()[static_cast<std::size_t>(robot)];
+    if (spec.batterySeconds)
+        return tr("%1 of travel on one charge")
+            .arg(QString::fromStdString(formatDuration(*spec.batterySeconds)));
+    const double fromVehicle =
+        io::vehicleBatterySeconds(spec.vehicle.over(document_->mission().exports.vehicle));
+    if (fromVehicle > 0.0)
+        return tr("Its vehicle's flight time less the climb and descent: %1 of travel on one charge (type "
+                  "minutes here to give this robot its own)")
+            .arg(QString::fromStdString(formatDuration(fromVehicle)));
+    return tr("The planner's battery endurance (type minutes here to give this robot its own)");
+}
+
 QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= rowCount())
         return {};
@@ -72,10 +86,7 @@ QVariant RobotTableModel::data(const QModelIndex& index, int role) const {
             return QString::fromStdString(
                 formatQuantity(*robot.batterySeconds / 60.0, role == Qt::EditRole ? 15 : 4));
         if (role == Qt::ToolTipRole)
-            return robot.batterySeconds
-                       ? tr("%1 of travel on one charge")
-                             .arg(QString::fromStdString(formatDuration(*robot.batterySeconds)))
-                       : tr("The planner's battery endurance (type minutes here to give this robot its own)");
+            return batteryToolTip(index.row());
         break;
     case ChargerEasting:
     case ChargerNorthing:

@@ -52,6 +52,8 @@ class RobotTableModel : public QAbstractTableModel {
   private:
     bool refuse(const QString& reason);
     bool setBattery(int robot, const QString& text);
+    // Whose battery the robot plans on: its own, its vehicle's flight time or the planner's.
+    [[nodiscard]] QString batteryToolTip(int robot) const;
     bool setCharger(int robot, int column, const QString& text);
 
     MissionDocument* document_;

@@ -97,6 +97,7 @@ class TestBatchEndToEnd : public QObject {
     void everyPlannerRunsFromTheCommandLine();
     void badInputExitsTwoWithOneLine_data();
     void badInputExitsTwoWithOneLine();
+    void warningsNameTheRobotsTheyNumber();
 
   private:
     RunResult
@@ -1193,6 +1194,32 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
     QVERIFY(run.standardOutput.isEmpty());
     QVERIFY2(!QFileInfo::exists(scratch_.filePath("never-written")),
              "bad input must not create the output folder");
+}
+
+// The planner numbers robots from 1; a mission file's robots are known by name: a warning about one says
+// which it is, without the mission's array index an error gives to find the field.
+void TestBatchEndToEnd::warningsNameTheRobotsTheyNumber() {
+    auto mission = sampleMissionAnywhere("synthetic", "synthetic.asc");
+    auto robots = mission.value("robots").toArray();
+    QVERIFY(robots.size() >= 3);
+    auto third = robots.at(2).toObject();
+    QCOMPARE(third.value("name").toString(), QStringLiteral("forest"));
+    third.insert("start", robots.at(0).toObject().value("start")); // in the first robot's cell
+    robots.replace(2, third);
+    mission.insert("robots", robots);
+    auto planner = mission.value("planner").toObject();
+    auto parameters = planner.value("parameters").toObject();
+    parameters.insert("snap_starts_to_free_cells", true);
+    planner.insert("parameters", parameters);
+    mission.insert("planner", planner);
+    const QString path = scratch_.filePath("moved-start.json");
+    QVERIFY(writeText(path, QJsonDocument(mission).toJson()));
+    const auto run = runMcpp({"--batch", path, "--out", scratch_.filePath("moved-start")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    const QString moved = run.standardError.split('\n').filter(QStringLiteral("moved")).join('\n');
+    QVERIFY2(moved.startsWith(QStringLiteral("mcpp: warning: robot 3 start ")),
+             qPrintable(run.standardError));
+    QVERIFY2(moved.endsWith(QStringLiteral(" (robot 1 is grassland; robot 3 is forest)")), qPrintable(moved));
 }
 
 QTEST_GUILESS_MAIN(TestBatchEndToEnd)

@@ -1,5 +1,7 @@
 // Mission files: save -> load gives the same mission, save -> load -> save the same bytes; defaults; paths.
 
+#include "core/model/HumanUnits.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/Mission.hpp"
 
@@ -9,6 +11,8 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -180,7 +184,17 @@ class MissionFilesTest : public QObject {
         QCOMPARE(charger[0].toDouble(), 302000.5);
         QCOMPARE(charger[1].toDouble(), 4154000.25);
         QVERIFY(!beta.contains("charger"));
-        QCOMPARE(robotBatteries(sampleMission()), (std::vector<double>{0.0, 0.0, 1500.0}));
+        // Battery planners fly each robot on its own battery_s, else on what its vehicle's flight time
+        // leaves after the climb to its altitude and the descent (the mission's rover: all 1500 s of it).
+        const std::vector<double> batteries = robotBatteries(sampleMission());
+        QCOMPARE(batteries.size(), std::size_t{3});
+        QCOMPARE(batteries[0], 1500.0);
+        QVERIFY(std::abs(batteries[1] - (1320.0 - 45.5 / 2.5 - 45.5 / 1.5)) < 1e-9);
+        QCOMPARE(batteries[2], 1500.0);
+        Mission withoutFlightTimes = sampleMission();
+        withoutFlightTimes.exports.vehicle.flightTimeSeconds = 0.0;
+        withoutFlightTimes.robots[1].vehicle.flightTimeSeconds.reset();
+        QCOMPARE(robotBatteries(withoutFlightTimes), (std::vector<double>{0.0, 0.0, 1500.0}));
         const QJsonArray events = root["events"].toArray();
         QCOMPARE(events.size(), 2);
         QCOMPARE(events[0].toObject()["time_s"].toDouble(), 120.5);
@@ -282,6 +296,38 @@ class MissionFilesTest : public QObject {
         QCOMPARE(low.notes.back().code, std::string("altitude-too-low"));
         QVERIFY2(low.notes.back().message.find("(beta 2 m)") != std::string::npos,
                  low.notes.back().message.c_str());
+    }
+
+    // A planner that flies on batteries is told each robot's battery: from its vehicle's flight time less
+    // the climb and descent, its own battery_s, or the planner's; a note says which, so that the vehicle's
+    // flight time and the planner's battery_s do not part unseen. Other planners get no note.
+    void batteryPlannersFlyOnFlightTimes() {
+        Mission mission = sampleMission();
+        mission.robots[0].vehicle.flightTimeSeconds = 0.0; // a rover without a limit
+        mission.exports.vehicle.flightTimeSeconds = 0.0;
+        mission.planner = defaultPlannerChoice("wavefront-battery");
+        mission.planner.parameters.set("battery_s", 900.0);
+        PlanningProblem problem;
+        applyRobotSettings(mission, problem);
+        const double beta = 1320.0 - 45.5 / 2.5 - 45.5 / 1.5;
+        QCOMPARE(problem.batterySeconds, (std::vector<double>{0.0, beta, 1500.0}));
+        const auto note =
+            std::find_if(problem.notes.begin(), problem.notes.end(),
+                         [](const PlanIssue& issue) { return issue.code == "batteries-from-flight-times"; });
+        QVERIFY(note != problem.notes.end());
+        QVERIFY(note->severity == IssueSeverity::Information);
+        QCOMPARE(note->message,
+                 "sorties are planned on each vehicle's flight time less its climb and descent: " +
+                     formatDuration(beta) +
+                     " for beta; Robot 3 on its own battery_s; alpha, without a flight time, on "
+                     "the planner's battery_s (15 min)");
+
+        mission.planner = defaultPlannerChoice("mcpp-mlct");
+        PlanningProblem other;
+        applyRobotSettings(mission, other);
+        QVERIFY(std::none_of(other.notes.begin(), other.notes.end(), [](const PlanIssue& issue) {
+            return issue.code == "batteries-from-flight-times";
+        }));
     }
 
     void minimalMissionGetsDefaults() {
