@@ -282,8 +282,15 @@ void BatchRunner::prepareMission() {
 
 // Settings each fine alone that no vehicle can fly together, checked once flags and robots' own are merged.
 void BatchRunner::checkVehicles() const {
-    if (auto problem = io::fleetFlightProblem(mission_))
-        badInput(*problem);
+    const auto problem = io::fleetFlightProblem(mission_);
+    if (!problem)
+        return;
+    // Where the two settings are given: flags, or the mission's robots and exports.
+    if (options_.missionFromFlags() || options_.flightTimeSeconds || options_.altitudeMetres)
+        badInput(*problem + " (--flight-time, --altitude)");
+    badInput(
+        options_.missionPath + ": " + *problem +
+        " (robots[].flight_time_s and altitude_m, or exports.flight_time_s and altitude_m for every robot)");
 }
 
 PlanningProblem BatchRunner::prepareProblem() {

@@ -232,16 +232,35 @@ ClassTable withColoursFrom(ClassTable table, const ClassesWithoutColour& without
     return table;
 }
 
+namespace {
+
+// The colours of a table's rows for this raster: its classes' (the preset's, or the file's palette), then
+// the preset's for the values the raster does not hold (a class outside the area of interest).
+ClassTable colourReference(const ClassTable& forRaster, const std::string& preset) {
+    ClassTable reference = forRaster;
+    if (preset.empty())
+        return reference;
+    if (auto rows = presetClassTable(preset))
+        for (const LandCoverClass& row : rows.value().classes())
+            if (reference.find(row.value) == nullptr)
+                reference.set(row);
+    return reference;
+}
+
+} // namespace
+
 ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset, const LoadedRaster& raster,
                              const ClassesWithoutColour& withoutColour) {
     if (preset.empty() && ownRows.empty())
         return openingClassTable(raster).table;
-    if (preset.empty())
-        return withoutColour.empty()
-                   ? ownRows
-                   : withColoursFrom(ownRows, withoutColour, openingClassTable(raster).table);
+    if (preset.empty()) {
+        if (withoutColour.empty())
+            return ownRows;
+        const OpeningClassTable opening = openingClassTable(raster);
+        return withColoursFrom(ownRows, withoutColour, colourReference(opening.table, opening.preset));
+    }
     const ClassTable presetRows = classTableForRaster(raster, preset);
-    ClassTable table = withColoursFrom(ownRows, withoutColour, presetRows);
+    ClassTable table = withColoursFrom(ownRows, withoutColour, colourReference(presetRows, preset));
     for (const auto& landCover : presetRows.classes())
         if (table.find(landCover.value) == nullptr)
             table.set(landCover);

@@ -52,7 +52,8 @@ struct OpeningClassTable {
 
 // The table a mission plans with (docs/mission-format.md): its own rows, and for the values they lack,
 // the preset's rows for this raster; with neither, the raster's opening table (openingClassTable). Its own
-// rows without a colour take the colour the preset's or the opening table's row has for the raster.
+// rows without a colour take the colour the preset's or the opening table's row has for the raster (the
+// preset's own for a value the raster does not hold).
 [[nodiscard]] ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset,
                                            const LoadedRaster& raster,
                                            const ClassesWithoutColour& withoutColour = {});

@@ -217,17 +217,32 @@ std::string degreesWithoutCrsHint(const LoadedRaster& raster, MapPoint start, co
 
 // A start given with a start_crs that puts it off the map, whose numbers lie on it in the raster's own CRS
 // (EPSG:21781 written for Swiss LV95 coordinates, say): most likely the wrong CRS was named.
+// "in the raster's own CRS, ...: give start_crs ..., or leave it out", where a start given in another CRS
+// lies on the map read in the raster's.
+std::optional<std::string> rasterCrsFitsHint(const RobotSpec& spec, const LoadedRaster& raster) {
+    const std::string own = raster.georeference.authorityCode();
+    if (spec.startCrs.empty() || own.empty() || spec.startCrs == own ||
+        !onTheMap(raster.grid, raster.georeference.fromCrsUnits(spec.start)))
+        return std::nullopt;
+    return "in the raster's own CRS, " + own + " (" + raster.georeference.name() + "): give start_crs " +
+           own + ", or leave it out";
+}
+
 std::optional<std::string> otherCrsFitsProblem(const RobotSpec& spec, MapPoint start,
                                                const LoadedRaster& raster) {
-    const std::string own = raster.georeference.authorityCode();
-    if (spec.startCrs.empty() || own.empty() || spec.startCrs == own || onTheMap(raster.grid, start))
+    if (onTheMap(raster.grid, start))
         return std::nullopt;
-    if (!onTheMap(raster.grid, raster.georeference.fromCrsUnits(spec.start)))
+    const auto hint = rasterCrsFitsHint(spec, raster);
+    if (!hint)
         return std::nullopt;
     return "in " + spec.startCrs + " the start (" + formatQuantity(spec.start.x, 12) + ", " +
-           formatQuantity(spec.start.y, 12) +
-           ") lies off the map, but these numbers lie on it in the raster's own CRS, " + own + " (" +
-           raster.georeference.name() + "): give start_crs " + own + ", or leave it out";
+           formatQuantity(spec.start.y, 12) + ") lies off the map, but these numbers lie on it " + *hint;
+}
+
+// Where a start's CRS cannot take its numbers at all (metres read as degrees): what they are on the map.
+std::string transformFailedHint(const RobotSpec& spec, const LoadedRaster& raster) {
+    const auto hint = rasterCrsFitsHint(spec, raster);
+    return hint ? "; these numbers lie on the map " + *hint : std::string();
 }
 
 // A start as messages name it: its planning-frame coordinates, and its longitude and latitude where the
@@ -322,7 +337,8 @@ Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const Loaded
         if (!start)
             return Starts::failure(
                 names(spec.startCrs.empty() ? MissionField::start(robot) : MissionField::startCrs(robot)) +
-                ": " + start.error() + latitudeFirstHint(spec, raster, units));
+                ": " + start.error() + latitudeFirstHint(spec, raster, units) +
+                (spec.startCrs.empty() ? std::string() : transformFailedHint(spec, raster)));
         if (auto problem = otherCrsFitsProblem(spec, start.value(), raster))
             return Starts::failure(names(MissionField::startCrs(robot)) + ": " + *problem);
         starts.push_back(start.value());

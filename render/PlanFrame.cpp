@@ -12,8 +12,9 @@ namespace {
 constexpr double wholeRasterShare = 0.8;
 constexpr double marginShare = 0.2;
 constexpr double minimumMarginShare = 0.05;
-// How far past the plans, in shares of their extent, a ring may widen the frame; and the room left round a
-// ring for its dashed line.
+// How far past the plans, in shares of their extent, a ring may reach to widen the frame (a ring reaching
+// further is left to be cut by the frame's edge: the plans would shrink to a corner of a circle); and the
+// room left round a ring for its dashed line.
 constexpr double ringReachShare = 1.0;
 constexpr double ringMarginShare = 0.03;
 
@@ -25,10 +26,6 @@ struct Bounds {
     [[nodiscard]] bool empty() const { return !(minX <= maxX && minY <= maxY); }
     [[nodiscard]] Bounds grownBy(double metres) const {
         return {minX - metres, minY - metres, maxX + metres, maxY + metres};
-    }
-    [[nodiscard]] Bounds within(const Bounds& limit) const {
-        return {std::max(minX, limit.minX), std::max(minY, limit.minY), std::min(maxX, limit.maxX),
-                std::min(maxY, limit.maxY)};
     }
     void take(const Bounds& other) {
         if (other.empty())
@@ -78,9 +75,11 @@ Bounds framedBounds(const ClassGrid& grid, const Bounds& bounds, const std::vect
         if (!(ring.radiusMetres > 0.0) || !std::isfinite(ring.centre.x) || !std::isfinite(ring.centre.y))
             continue;
         const double reach = ring.radiusMetres * (1.0 + ringMarginShare);
-        framed.take(
-            Bounds{ring.centre.x - reach, ring.centre.y - reach, ring.centre.x + reach, ring.centre.y + reach}
-                .within(limit));
+        const Bounds box{ring.centre.x - reach, ring.centre.y - reach, ring.centre.x + reach,
+                         ring.centre.y + reach};
+        if (box.minX >= limit.minX && box.minY >= limit.minY && box.maxX <= limit.maxX &&
+            box.maxY <= limit.maxY)
+            framed.take(box);
     }
     return framed;
 }

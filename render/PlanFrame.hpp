@@ -13,8 +13,9 @@ namespace mcpp::render {
 // pixels around their cells with a margin of a fifth of their extent on each side (at least a twentieth of
 // the raster's). Null plans are skipped.
 //
-// Rings drawn round points (an aircraft's flight reach round its start) are taken in too, as far as the
-// plans' extent again on each side of them: a ring far larger than the plans would shrink them to a dot.
+// Rings drawn round points (an aircraft's flight reach round its start) are taken in too where they reach
+// no further than the plans' extent again on each side of them: a ring far larger than the plans would
+// shrink them to a dot, and is cut by the frame's edge instead.
 struct FrameRing {
     MapPoint centre;
     double radiusMetres = 0.0;

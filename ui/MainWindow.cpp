@@ -1810,6 +1810,15 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                        .arg(ResultsPanel::formatDuration(metrics.makespanSeconds))
                        .arg(metrics.ratio, 0, 'f', 3), // as the results panel and plan.png give it
                    15000);
+        // The plan's warnings and notes, whole, where every message is kept.
+        for (const PlanIssue& issue : outcome.plan->issues) {
+            QString text = QString::fromStdString(issue.message); // a robot's name stays as written
+            if (!text.endsWith(QLatin1Char('.')))
+                text += QLatin1Char('.');
+            messageLog_->add(
+                (issue.severity == IssueSeverity::Information ? tr("Note: %1") : tr("Warning: %1"))
+                    .arg(text));
+        }
     } else if (outcome.cancelled) {
         showStatus(tr("Planning cancelled; the previous plan, if any, is kept."));
     }

@@ -1080,6 +1080,11 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
                "wrong-crs.json", "robots[0].start_crs",
                "in EPSG:26911 the start (306000, 4150000) lies off the map, but these numbers lie on it "
                "in the raster's own CRS, EPSG:26912 (NAD83 / UTM zone 12N): give start_crs EPSG:26912"};
+    QTest::newRow("mission start in metres given as degrees")
+        << QStringList{"--batch", scratch_.filePath("metres-as-degrees.json"), "--out", out}
+        << QStringList{"metres-as-degrees.json", "robots[0].start_crs",
+                       "; these numbers lie on the map in the raster's own CRS, EPSG:26912 (NAD83 / UTM zone "
+                       "12N): give start_crs EPSG:26912, or leave it out"};
     QTest::newRow("mission robot without start")
         << QStringList{"--batch", scratch_.filePath("no-start.json"), "--out", out}
         << QStringList{"no-start.json", "robots[0].start", "missing"};
@@ -1181,6 +1186,10 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine() {
     zionRobots.replace(0, northWest);
     zion.insert("robots", zionRobots);
     QVERIFY(writeText(scratch_.filePath("wrong-crs.json"), QJsonDocument(zion).toJson()));
+    northWest.insert("start_crs", QStringLiteral("EPSG:4326")); // metres that no longitude reaches
+    zionRobots.replace(0, northWest);
+    zion.insert("robots", zionRobots);
+    QVERIFY(writeText(scratch_.filePath("metres-as-degrees.json"), QJsonDocument(zion).toJson()));
 
     const auto run = runMcpp(arguments);
     QVERIFY2(run.exitCode == 2,

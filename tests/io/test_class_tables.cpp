@@ -232,7 +232,19 @@ class ClassTablesTest : public QObject {
         QVERIFY(merged.find(4)->colorRgb != 0x808080U);
         QCOMPARE(merged.find(4)->name, std::string("Pine forest")); // only the colour is taken
         QCOMPARE(merged.find(6)->colorRgb, 0x123456U);
-        QCOMPARE(merged.find(99)->colorRgb, 0x808080U);
+        QCOMPARE(merged.find(99)->colorRgb, 0x808080U); // in no table
+        // A value the raster does not hold (a class outside the area of interest) takes the preset's.
+        std::int32_t presetOnly = -1;
+        const ClassTable nlcdPreset = preset("nlcd");
+        for (const LandCoverClass& row : nlcdPreset.classes())
+            if (presetOnly < 0 && nlcd.classPixelCounts.count(row.value) == 0)
+                presetOnly = row.value;
+        QVERIFY(presetOnly >= 0);
+        ClassTable offTheMap;
+        offTheMap.set({presetOnly, "Not here", 0x808080, 0.5, 50.0, true});
+        const ClassTable withPreset = missionClassTable(offTheMap, "nlcd", nlcd, {presetOnly});
+        QCOMPARE(withPreset.find(presetOnly)->colorRgb, nlcdPreset.find(presetOnly)->colorRgb);
+        QVERIFY(withPreset.find(presetOnly)->colorRgb != 0x808080U);
         const ClassTable opening = openingClassTable(nlcd).table;
         const ClassTable withoutPreset = missionClassTable(own, "", nlcd, withoutColour);
         QCOMPARE(withoutPreset.find(5)->colorRgb, opening.find(5)->colorRgb);

@@ -175,15 +175,16 @@ class TestPlanRenderer : public QObject {
         QCOMPARE(smallFrame.originY, 4970.0);
         QCOMPARE(smallFrame.columns, 4);
         QCOMPARE(smallFrame.rows, 4);
-        // A flight-reach ring round the cell is taken in, but no further than the plan's extent again on
-        // each side (x 1080-1140, y 4920-4980): a ring of a kilometre would shrink the plan to a dot.
+        // A flight-reach ring round the cell is taken in where it reaches no further than the plan's
+        // extent again on each side (x 1080-1140, y 4920-4980); a ring of a kilometre would shrink the plan
+        // to a dot, and is left to the frame's edge.
         QCOMPARE(render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 0.0}}).columns, 4);
-        const ClassGrid ringed = render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 1000.0}});
+        const ClassGrid ringed = render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 25.0}});
         QCOMPARE(ringed.originX, 1080.0);
         QCOMPARE(ringed.originY, 4980.0);
         QCOMPARE(ringed.columns, 6);
         QCOMPARE(ringed.rows, 6);
-        QCOMPARE(render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 22.0}}).columns, 6);
+        QCOMPARE(render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 1000.0}}).columns, 4);
         // Several plans share one frame that holds them all; none at all shows the raster.
         QCOMPARE(render::planFrame(grid, {&small, &whole}).columns, grid.columns);
         QCOMPARE(render::planFrame(grid, {nullptr}).columns, grid.columns);

@@ -621,6 +621,16 @@ class TestMainWindow : public QObject {
         QVERIFY2(window.startPlanning(), qPrintable(window.lastError()));
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
+        // The plan's warnings and notes are kept whole in the Messages panel, as every message is.
+        const Plan* plan = window.document()->plan();
+        QVERIFY(plan != nullptr && !plan->issues.empty());
+        const QStringList messages = window.messageLog()->messages();
+        for (const PlanIssue& issue : plan->issues)
+            QVERIFY2(std::any_of(messages.begin(), messages.end(),
+                                 [&](const QString& message) {
+                                     return message.contains(QString::fromStdString(issue.message));
+                                 }),
+                     issue.message.c_str());
     }
 
     // Starts the window's own checks pass but the planner refuses (two in one cell of its grid): the
