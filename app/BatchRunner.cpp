@@ -6,7 +6,6 @@
 #include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/ProgressReporter.hpp"
-#include "core/model/RobotNumbers.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/model/TimelineText.hpp"
@@ -285,12 +284,25 @@ void BatchRunner::checkVehicles() const {
     const auto problem = io::fleetFlightProblem(mission_);
     if (!problem)
         return;
-    // Where the two settings are given: flags, or the mission's robots and exports.
-    if (options_.missionFromFlags() || options_.flightTimeSeconds || options_.altitudeMetres)
-        badInput(*problem + " (--flight-time, --altitude)");
+    // Where the settings are given: the flags that set them, else the mission's robots and exports.
+    std::vector<std::string> flags;
+    if (options_.vehicleType)
+        flags.push_back("--vehicle");
+    if (options_.flightTimeSeconds)
+        flags.push_back("--flight-time");
+    if (options_.altitudeMetres)
+        flags.push_back("--altitude");
+    if (options_.missionFromFlags() && flags.empty())
+        flags = {"--flight-time", "--altitude"};
+    std::string given;
+    for (const std::string& flag : flags)
+        given += (given.empty() ? "" : ", ") + flag;
+    if (options_.missionFromFlags())
+        badInput(*problem + " (" + given + ")");
     badInput(
         options_.missionPath + ": " + *problem +
-        " (robots[].flight_time_s and altitude_m, or exports.flight_time_s and altitude_m for every robot)");
+        " (robots[].flight_time_s and altitude_m, or exports.flight_time_s and altitude_m for every robot" +
+        (given.empty() ? std::string() : "; given here by " + given) + ")");
 }
 
 PlanningProblem BatchRunner::prepareProblem() {
@@ -328,24 +340,11 @@ void BatchRunner::checkOutputFolder() const {
     fs::remove(probe, code);
 }
 
-// Robots are numbered from 1, as the --start flags are, and a mission's array counts from 0: the robots a
-// message names by number, with their names and, for an error, where they are in the mission: " (robot 1
-// is robots[0], drone-A)". Nothing for robots given by --start flags, whose numbers are the flags'.
+// Robots are numbered from 1, as the --start flags are, and a mission's array counts from 0; nothing for
+// robots given by --start flags, whose numbers are the flags'.
 std::string BatchRunner::robotsNamed(const std::string& message, bool withIndex) const {
-    if (options_.missionFromFlags())
-        return {};
-    std::string named;
-    for (const std::size_t robot : robotNumbersIn(message)) {
-        if (robot == 0 || robot > mission_.robots.size())
-            continue;
-        const std::string& name = mission_.robots[robot - 1].name;
-        const std::string index = withIndex ? "robots[" + std::to_string(robot - 1) + "]" : std::string();
-        if (index.empty() && name.empty())
-            continue;
-        named += (named.empty() ? "" : "; ") + ("robot " + std::to_string(robot) + " is ") + index +
-                 (index.empty() || name.empty() ? "" : ", ") + name;
-    }
-    return named.empty() ? std::string() : " (" + named + ")";
+    return options_.missionFromFlags() ? std::string()
+                                       : io::robotsNamedIn(message, io::robotNames(mission_), withIndex);
 }
 
 Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
@@ -364,8 +363,10 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         progress_.discardHeld();
         if (error.kind() == PlanningError::Kind::Cancelled)
             internalError(std::string("planning cancelled: ") + error.what());
-        if (const auto named = io::planningErrorText(error, fieldNamer()))
-            badInput(*named + (error.robot() >= 0 ? robotsNamed(error.detail(), true) : std::string()));
+        const std::vector<std::string> names =
+            options_.missionFromFlags() ? std::vector<std::string>{} : io::robotNames(mission_);
+        if (const auto named = io::planningErrorText(error, fieldNamer(), names, true))
+            badInput(*named);
         badInput(options_.missionFromFlags() ? std::string(error.what())
                                              : options_.missionPath + ": " + error.what());
     }

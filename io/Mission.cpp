@@ -659,7 +659,8 @@ std::string missionToJson(const Mission& mission) {
     JsonValue& classes = root.add("classes", JsonValue::object());
     classes.add("preset", mission.preset);
     classes.add("missing_as_obstacles", mission.missingClassesAsObstacles);
-    internal::addClassRows(classes.add("table", JsonValue::array()), mission.classes);
+    internal::addClassRows(classes.add("table", JsonValue::array()), mission.classes,
+                           mission.classesWithoutColour);
 
     JsonValue& robots = root.add("robots", JsonValue::array());
     for (const RobotSpec& robot : mission.robots) {
@@ -730,6 +731,11 @@ std::vector<std::string> robotNames(const Mission& mission) {
     for (const RobotSpec& robot : mission.robots)
         names.push_back(robot.name);
     return names;
+}
+
+std::vector<double> plannerBatteries(const Mission& mission) {
+    const auto planner = findPlannerDescription(mission.planner.planner);
+    return planner && planner->fliesOnBatteries() ? robotBatteries(mission) : std::vector<double>{};
 }
 
 double vehicleBatterySeconds(const VehicleSettings& vehicle) {
@@ -927,7 +933,8 @@ std::optional<std::string> batteriesFromFlightTimesNote(const Mission& mission,
     }
     if (fromVehicle.empty())
         return std::nullopt;
-    std::string text = "sorties are planned on each vehicle's flight time less its climb and descent: ";
+    std::string text = "sorties are planned on each vehicle's flight time, an aircraft's less its climb and "
+                       "descent: ";
     std::string groups;
     for (const auto& [battery, robots] : fromVehicle)
         groups +=

@@ -93,6 +93,9 @@ struct Mission {
 // Each robot's battery in seconds in order: its own battery_s, else its vehicle's (vehicleBatterySeconds);
 // 0 where it has neither (the planner's battery_s then).
 [[nodiscard]] std::vector<double> robotBatteries(const Mission& mission);
+// The same where the mission's planner flies on batteries; empty for the others, whose plans no battery
+// shapes (a flight time changed for the waypoint files leaves their plans current).
+[[nodiscard]] std::vector<double> plannerBatteries(const Mission& mission);
 // The cruise speed the whole fleet flies at, when every robot's vehicle has the same one; 0 when none has
 // one or when they differ.
 [[nodiscard]] double fleetCruiseSpeed(const Mission& mission);

@@ -1,7 +1,9 @@
 #include "io/MissionInputs.hpp"
 
 #include "core/model/HumanUnits.hpp"
+#include "core/model/NameSuggestion.hpp"
 #include "core/model/PlanningError.hpp"
+#include "core/model/RobotNumbers.hpp"
 #include "core/model/StartPointCheck.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -315,12 +317,32 @@ std::string startProblemAdvice(PlanningError::Kind kind, const FieldNamer& names
     return {};
 }
 
-std::optional<std::string> planningErrorText(const PlanningError& error, const FieldNamer& names) {
+std::string robotsNamedIn(const std::string& message, const std::vector<std::string>& robotNames,
+                          bool withIndex) {
+    std::string named;
+    for (const std::size_t robot : robotNumbersIn(message)) {
+        if (robot == 0 || robot > robotNames.size())
+            continue;
+        const std::string& name = robotNames[robot - 1];
+        const std::string number = "robot " + std::to_string(robot);
+        const std::string shownName = lowercase(name) == number ? std::string() : name;
+        const std::string index = withIndex ? "robots[" + std::to_string(robot - 1) + "]" : std::string();
+        if (index.empty() && shownName.empty())
+            continue;
+        named += (named.empty() ? "" : "; ") + number + " is " + index +
+                 (index.empty() || shownName.empty() ? "" : ", ") + shownName;
+    }
+    return named.empty() ? std::string() : " (" + named + ")";
+}
+
+std::optional<std::string> planningErrorText(const PlanningError& error, const FieldNamer& names,
+                                             const std::vector<std::string>& robotNames, bool withIndex) {
+    const std::string robots = robotsNamedIn(error.detail(), robotNames, withIndex);
     if (error.robot() >= 0)
-        return names(MissionField::start(error.robot())) + ": " + error.detail() +
+        return names(MissionField::start(error.robot())) + ": " + error.detail() + robots +
                startProblemAdvice(error.kind(), names);
     if (!error.parameter().empty())
-        return names(MissionField::parameter(error.parameter())) + ": " + error.detail();
+        return names(MissionField::parameter(error.parameter())) + ": " + error.detail() + robots;
     return std::nullopt;
 }
 
@@ -372,7 +394,7 @@ Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names) 
     try {
         (void)resolveParameters(description->parameters, choice.parameters);
     } catch (const PlanningError& error) {
-        return Status::failure(names(MissionField::parameter(error.parameter())) + ": " + error.detail());
+        return Status::failure(*planningErrorText(error, names));
     }
     return {};
 }

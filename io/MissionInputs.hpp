@@ -74,11 +74,19 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 // in another robot's cell), the setting named in the caller's terms: "; move it onto passable land, or ...";
 // empty for other problems.
 [[nodiscard]] std::string startProblemAdvice(PlanningError::Kind kind, const FieldNamer& names);
-// A planning error about one robot's start or one planner parameter, the field named in the caller's terms
-// and, for a start, followed by startProblemAdvice: "mission.json: robots[1].start (beta): ... lies on an
-// obstacle; move it onto passable land, or ..."; nothing for other errors.
+// " (robot 1 is robots[0], drone-A; robot 3 is forest)": the robots a message numbers (from 1), by their
+// names and, withIndex, their place in a mission file's robots array. A robot whose name says its number
+// ("Robot 3") or, without the index, has none is left out; empty when none is left.
+[[nodiscard]] std::string robotsNamedIn(const std::string& message,
+                                        const std::vector<std::string>& robotNames, bool withIndex);
+// A planning error about one robot's start or one planner parameter, the field named in the caller's terms,
+// then the robots its detail numbers by name (robotsNamedIn) and, for a start, startProblemAdvice:
+// "mission.json: robots[1].start (beta): ... lies in the same cell as robot 1's start (...) (robot 1 is
+// robots[0], alpha); place the starts farther apart, or ..."; nothing for other errors.
 [[nodiscard]] std::optional<std::string> planningErrorText(const PlanningError& error,
-                                                           const FieldNamer& names);
+                                                           const FieldNamer& names,
+                                                           const std::vector<std::string>& robotNames = {},
+                                                           bool withIndex = false);
 
 // Each robot's charger in the planning frame (metres), read like its start; none where it charges at its
 // start.

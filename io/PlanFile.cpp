@@ -499,12 +499,16 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
     // fleet's, or each robot's where they differ.
     inputs.exports.vehicle.cruiseSpeedMetresPerSecond = fleetCruiseSpeed(mission);
     const std::vector<double> cruiseSpeeds = robotCruiseSpeeds(mission);
+    // A battery planner's batteries may come from the vehicles' flight times.
+    const std::vector<double> batteries = plannerBatteries(mission);
     for (std::size_t robot = 0; robot < inputs.robots.size();
          ++robot) { // names shape the files, not the plan
         inputs.robots[robot].name.clear();
         inputs.robots[robot].vehicle = {};
         if (cruiseSpeeds[robot] != inputs.exports.vehicle.cruiseSpeedMetresPerSecond)
             inputs.robots[robot].vehicle.cruiseSpeedMetresPerSecond = cruiseSpeeds[robot];
+        if (robot < batteries.size() && batteries[robot] > 0.0)
+            inputs.robots[robot].batterySeconds = batteries[robot];
     }
     const std::string files =
         inputFilesIdentity({inputs.rasterPath, inputs.area.includePath, inputs.area.excludePath});

@@ -2,8 +2,6 @@
 
 #include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
-#include "core/model/NameSuggestion.hpp"
-#include "core/model/RobotNumbers.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -1624,24 +1622,16 @@ io::FieldNamer MainWindow::fieldNamer() const {
 QString MainWindow::planningErrorText(const PlanningOutcome& outcome) const {
     if (!outcome.planningError)
         return outcome.error;
-    const PlanningError& error = *outcome.planningError;
-    const auto named = io::planningErrorText(error, fieldNamer());
-    if (!named)
-        return outcome.error;
     // As "Cannot plan" gives the starts it checks first; the robots the planner numbers, by their names.
-    return QString::fromStdString(*named + robotsNamed(error.robot() >= 0 ? error.detail() : std::string()));
+    const auto named = io::planningErrorText(*outcome.planningError, fieldNamer(), robotNames());
+    return named ? QString::fromStdString(*named) : outcome.error;
 }
 
-std::string MainWindow::robotsNamed(const std::string& message) const {
-    const auto& robots = document_->robots();
-    std::string named;
-    for (const std::size_t robot : robotNumbersIn(message)) {
-        const std::string number = "robot " + std::to_string(robot);
-        if (robot == 0 || robot > robots.size() || lowercase(robots[robot - 1].name) == number)
-            continue;
-        named += (named.empty() ? "" : "; ") + number + " is " + robots[robot - 1].name;
-    }
-    return named.empty() ? std::string() : " (" + named + ")";
+std::vector<std::string> MainWindow::robotNames() const {
+    std::vector<std::string> names;
+    for (const io::RobotSpec& robot : document_->robots())
+        names.push_back(robot.name);
+    return names;
 }
 
 bool MainWindow::isPlanning() const {
@@ -1812,7 +1802,9 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                    15000);
         // The plan's warnings and notes, whole, where every message is kept.
         for (const PlanIssue& issue : outcome.plan->issues) {
-            QString text = QString::fromStdString(issue.message); // a robot's name stays as written
+            // A robot's name stays as written, and the robots a warning numbers are named.
+            QString text =
+                QString::fromStdString(issue.message + io::robotsNamedIn(issue.message, robotNames(), false));
             if (!text.endsWith(QLatin1Char('.')))
                 text += QLatin1Char('.');
             messageLog_->add(

@@ -177,8 +177,8 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] io::FieldNamer fieldNamer() const;
     // Why planning failed, a robot's start or a setting named as the window names them, with advice.
     [[nodiscard]] QString planningErrorText(const PlanningOutcome& outcome) const;
-    // " (robot 1 is east)" for the robots a message numbers whose names say otherwise; empty if none.
-    [[nodiscard]] std::string robotsNamed(const std::string& message) const;
+    // The robots' names as the robot table holds them, in order.
+    [[nodiscard]] std::vector<std::string> robotNames() const;
     [[nodiscard]] QString dialogFolder(const QString& key) const;
     void rememberFolder(const QString& key, const QString& path);
 

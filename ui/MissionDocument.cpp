@@ -55,7 +55,7 @@ PlanInputs MissionDocument::currentInputs() const {
             starts(),
             mission_.planner,
             mission_.events,
-            io::robotBatteries(mission_),
+            io::plannerBatteries(mission_),
             chargers(),
             io::robotCruiseSpeeds(mission_)};
 }

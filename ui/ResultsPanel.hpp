@@ -50,6 +50,7 @@ class ResultsPanel : public QWidget {
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
   private:
     void describeTimes(bool underEvents);

@@ -255,7 +255,9 @@ std::vector<BadInputCase> makeCases() {
          goodMission({"--vehicle", "multirotor", "--altitude", "120", "--flight-time", "1min"}),
          2,
          "a flight of 1 min leaves no time to survey: climbing to 120 m and coming back down take 2 min 8 s "
-         "(at 2.5 and 1.5 m/s); give a longer flight time or a lower altitude (--flight-time, --altitude)",
+         "(at 2.5 and 1.5 m/s); give a longer flight time or a lower altitude (robots[].flight_time_s and "
+         "altitude_m, or exports.flight_time_s and altitude_m for every robot; given here by --vehicle, "
+         "--flight-time, --altitude)",
          Gui::None,
          {}},
         {"band zero", goodMission({"--band", "0"}), 2, "--band", Gui::None, {}},

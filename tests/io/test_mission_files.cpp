@@ -105,8 +105,8 @@ class MissionFilesTest : public QObject {
         QCOMPARE(missionToJson(loaded.value()), readBytes(first));
     }
 
-    // A class row without a colour is marked so the preset's or the raster's colour can take its place;
-    // a saved mission (whose rows then hold colours) gives every row one.
+    // A class row without a colour is marked so the preset's or the raster's colour can take its place,
+    // and is written back without one.
     void classRowsWithoutColourAreMarked() {
         const auto loaded = parseMission(
             R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
@@ -118,9 +118,15 @@ class MissionFilesTest : public QObject {
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
         QCOMPARE(loaded.value().classesWithoutColour, (std::set<std::int32_t>{1}));
         QCOMPARE(loaded.value().classes.find(2)->colorRgb, 0x336633U);
+        // Written back as it was read: the row still gives no colour.
         const auto again = parseMission(missionToJson(loaded.value()), "again.json");
         QVERIFY2(again.ok(), again.ok() ? "" : again.error().c_str());
-        QVERIFY(again.value().classesWithoutColour.empty());
+        QVERIFY(again.value() == loaded.value());
+        // A table whose colours were filled in (the window's) gives every row one.
+        Mission coloured = loaded.value();
+        coloured.classesWithoutColour.clear();
+        const auto filled = parseMission(missionToJson(coloured), "filled.json");
+        QVERIFY(filled.ok() && filled.value().classesWithoutColour.empty());
     }
 
     void fileIsVersionedJsonInAFixedOrder() {
@@ -316,11 +322,12 @@ class MissionFilesTest : public QObject {
                          [](const PlanIssue& issue) { return issue.code == "batteries-from-flight-times"; });
         QVERIFY(note != problem.notes.end());
         QVERIFY(note->severity == IssueSeverity::Information);
-        QCOMPARE(note->message,
-                 "sorties are planned on each vehicle's flight time less its climb and descent: " +
-                     formatDuration(beta) +
-                     " for beta; Robot 3 on its own battery_s; alpha, without a flight time, on "
-                     "the planner's battery_s (15 min)");
+        QCOMPARE(
+            note->message,
+            "sorties are planned on each vehicle's flight time, an aircraft's less its climb and descent: " +
+                formatDuration(beta) +
+                " for beta; Robot 3 on its own battery_s; alpha, without a flight time, on "
+                "the planner's battery_s (15 min)");
 
         mission.planner = defaultPlannerChoice("mcpp-mlct");
         PlanningProblem other;

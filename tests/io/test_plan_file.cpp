@@ -3,6 +3,7 @@
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/StraightRunMerging.hpp"
 #include "core/planners/MlctPlanner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "io/Mission.hpp"
 #include "io/PlanFile.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -295,6 +296,16 @@ class TestPlanFile : public QObject {
         io::Mission otherPlanner = mission;
         otherPlanner.planner.planner = "darp";
         QVERIFY(io::planInputsFingerprint(otherPlanner, missionPath) != base);
+        // A flight time shapes only the waypoint files, except for a planner on batteries: there it is
+        // the battery of robots without their own.
+        io::Mission longerFlights = mission;
+        longerFlights.exports.vehicle.flightTimeSeconds = 1800.0;
+        QCOMPARE(io::planInputsFingerprint(longerFlights, missionPath), base);
+        io::Mission onBatteries = mission;
+        onBatteries.planner = defaultPlannerChoice("wavefront-battery");
+        const std::string batteryBase = io::planInputsFingerprint(onBatteries, missionPath);
+        onBatteries.exports.vehicle.flightTimeSeconds = 1800.0;
+        QVERIFY(io::planInputsFingerprint(onBatteries, missionPath) != batteryBase);
 
         // What the window keeps when it reads the files: empty (unknown) for a file that is not there.
         const std::string identity = io::inputFilesIdentity({raster, std::string(), std::string()});

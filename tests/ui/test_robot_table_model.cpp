@@ -1,4 +1,5 @@
 #include "GrassMission.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "ui/MainWindow.hpp"
 #include "ui/MissionDocument.hpp"
 #include "ui/RobotTableModel.hpp"
@@ -54,6 +55,8 @@ class TestRobotTableModel : public QObject {
     void batteryEditsAreStoredAndUndone() {
         QFETCH(QString, typed);
         QFETCH(double, seconds);
+        // A plan on batteries: a battery shapes it (other planners' plans it leaves current).
+        document_->setPlannerChoice(defaultPlannerChoice("wavefront-battery"));
         document_->setPlan(std::make_shared<Plan>(), document_->currentInputs());
         QVERIFY(robots_->setData(batteryOf(0), typed));
         QCOMPARE(document_->robots()[0].batterySeconds.value_or(-1.0), seconds);
