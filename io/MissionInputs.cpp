@@ -217,8 +217,6 @@ std::string degreesWithoutCrsHint(const LoadedRaster& raster, MapPoint start, co
     return {};
 }
 
-// A start given with a start_crs that puts it off the map, whose numbers lie on it in the raster's own CRS
-// (EPSG:21781 written for Swiss LV95 coordinates, say): most likely the wrong CRS was named.
 // "in the raster's own CRS, ...: give start_crs ..., or leave it out", where a start given in another CRS
 // lies on the map read in the raster's.
 std::optional<std::string> rasterCrsFitsHint(const RobotSpec& spec, const LoadedRaster& raster) {
@@ -230,6 +228,8 @@ std::optional<std::string> rasterCrsFitsHint(const RobotSpec& spec, const Loaded
            own + ", or leave it out";
 }
 
+// A start given with a start_crs that puts it off the map, whose numbers lie on it in the raster's own CRS
+// (EPSG:21781 written for Swiss LV95 coordinates, say): most likely the wrong CRS was named.
 std::optional<std::string> otherCrsFitsProblem(const RobotSpec& spec, MapPoint start,
                                                const LoadedRaster& raster) {
     if (onTheMap(raster.grid, start))

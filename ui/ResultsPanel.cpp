@@ -360,15 +360,15 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     fitSummary();
 }
 
-// The figures shown whole where the panel has room, taken from the table's empty rows first, then from the
-// chart down to its least height; the table keeps its rows where it can. A user's drag holds until the
-// next plan.
 // A plan shown while the panel was hidden (a tab behind another) is fitted when the panel shows.
 void ResultsPanel::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
     fitSummary();
 }
 
+// The figures shown whole where the panel has room, taken from the table's empty rows first, then from the
+// chart down to its least height; the table keeps its rows where it can. A user's drag holds until the
+// next plan.
 void ResultsPanel::fitSummary() {
     const QList<int> sizes = splitter_->sizes();
     const int total = std::accumulate(sizes.begin(), sizes.end(), 0);
