@@ -232,10 +232,6 @@ ClassTable withColoursFrom(ClassTable table, const ClassesWithoutColour& without
     return table;
 }
 
-namespace {
-
-// The colours of a table's rows for this raster: its classes' (the preset's, or the file's palette), then
-// the preset's for the values the raster does not hold (a class outside the area of interest).
 ClassTable colourReference(const ClassTable& forRaster, const std::string& preset) {
     ClassTable reference = forRaster;
     if (preset.empty())
@@ -246,8 +242,6 @@ ClassTable colourReference(const ClassTable& forRaster, const std::string& prese
                 reference.set(row);
     return reference;
 }
-
-} // namespace
 
 ClassTable missionClassTable(const ClassTable& ownRows, const std::string& preset, const LoadedRaster& raster,
                              const ClassesWithoutColour& withoutColour) {

@@ -29,8 +29,12 @@ using ClassesWithoutColour = std::set<std::int32_t>;
 // The same from the file's text; path only names it in messages.
 [[nodiscard]] Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string& path,
                                                     ClassesWithoutColour* withoutColour = nullptr);
-// The table with the colours its rows did not give taken from `reference` (the raster's palette, the
-// preset's colours), where it has a row of that value.
+// The colours of a table's rows for a raster: those of `forRaster` (its classes: the preset's, or the
+// file's palette), then the preset's for the values the raster does not hold (a class outside the area of
+// interest).
+[[nodiscard]] ClassTable colourReference(const ClassTable& forRaster, const std::string& preset);
+// The table with the colours its rows did not give taken from `reference` (colourReference), where it has a
+// row of that value.
 [[nodiscard]] ClassTable withColoursFrom(ClassTable table, const ClassesWithoutColour& withoutColour,
                                          const ClassTable& reference);
 [[nodiscard]] Status saveClassTableCsv(const ClassTable& table, const std::string& path);

@@ -956,8 +956,9 @@ bool MainWindow::loadClassTable(const QString& path) {
         reportError(tr("Cannot load class table"), QString::fromStdString(table.error()));
         return false;
     }
-    // Rows without a colour keep the one the map shows for their class.
-    const ClassTable loaded = io::withColoursFrom(table.value(), withoutColour, document_->classes());
+    // Rows without a colour keep the one the map shows for their class (the preset's off the map).
+    const ClassTable loaded = io::withColoursFrom(
+        table.value(), withoutColour, io::colourReference(document_->classes(), document_->mission().preset));
     undoStack_->push(new ClassTableEditCommand(
         document_, document_->classes(), QString::fromStdString(document_->mission().preset), loaded,
         QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
