@@ -261,6 +261,19 @@ std::string startName(const LoadedRaster& raster, MapPoint start) {
            formatQuantity(lonLat.value().latitude, 9) + ")";
 }
 
+// "let the planner start the robot from the nearest free cell (...)", the setting in the caller's terms.
+std::string snapStartsAdvice(const FieldNamer& names) {
+    return "let the planner start the robot from the nearest free cell (" +
+           names(MissionField::parameter("snap_starts_to_free_cells", "true")) + ")";
+}
+
+// Whether the point lies on the raster but outside the task area (nodata, outside the area of interest or
+// in a no-go zone): the planner can start the robot from the nearest free cell.
+bool onTheRasterOutsideTheArea(const ClassGrid& grid, MapPoint point) {
+    const auto pixel = grid.pixelAt(point);
+    return pixel && grid.isOutside(pixel->column, pixel->row);
+}
+
 // What helps with a start the planner cannot use: a hint when longitude and latitude look swapped, and the
 // option that moves starts off obstacles.
 std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& problem, MapPoint start,
@@ -279,6 +292,9 @@ std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& pro
                           "is longitude first";
         }
     }
+    if (problem.kind == Kind::StartOutsideArea && std::isfinite(start.x) && std::isfinite(start.y) &&
+        onTheRasterOutsideTheArea(raster.grid, start))
+        advice += "; move it into the task area, or " + snapStartsAdvice(names);
     return advice + startProblemAdvice(problem.kind, names);
 }
 
@@ -308,8 +324,7 @@ Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& class
 } // namespace
 
 std::string startProblemAdvice(PlanningError::Kind kind, const FieldNamer& names) {
-    const std::string snap = "let the planner start the robot from the nearest free cell (" +
-                             names(MissionField::parameter("snap_starts_to_free_cells", "true")) + ")";
+    const std::string snap = snapStartsAdvice(names);
     if (kind == PlanningError::Kind::StartOnObstacle)
         return "; move it onto passable land, or " + snap;
     if (kind == PlanningError::Kind::StartsShareCell)
