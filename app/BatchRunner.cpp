@@ -161,7 +161,7 @@ void BatchRunner::execute() {
     problem = PlanningProblem{};
     returnFreedMemory();
     for (const auto& warning : plan.warnings())
-        warn(warning + robotsNamed(warning, false));
+        warn(warning + io::robotsNamedIn(warning, robotNamesForMessages(), false));
     writeOutputs(plan, options_.outputDirectory);
     printSummary(plan);
 }
@@ -340,11 +340,9 @@ void BatchRunner::checkOutputFolder() const {
     fs::remove(probe, code);
 }
 
-// Robots are numbered from 1, as the --start flags are, and a mission's array counts from 0; nothing for
-// robots given by --start flags, whose numbers are the flags'.
-std::string BatchRunner::robotsNamed(const std::string& message, bool withIndex) const {
-    return options_.missionFromFlags() ? std::string()
-                                       : io::robotsNamedIn(message, io::robotNames(mission_), withIndex);
+// Messages number robots from 1, as the --start flags do: robots given by those flags need no names.
+std::vector<std::string> BatchRunner::robotNamesForMessages() const {
+    return options_.missionFromFlags() ? std::vector<std::string>{} : io::robotNames(mission_);
 }
 
 Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
@@ -363,9 +361,7 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         progress_.discardHeld();
         if (error.kind() == PlanningError::Kind::Cancelled)
             internalError(std::string("planning cancelled: ") + error.what());
-        const std::vector<std::string> names =
-            options_.missionFromFlags() ? std::vector<std::string>{} : io::robotNames(mission_);
-        if (const auto named = io::planningErrorText(error, fieldNamer(), names, true))
+        if (const auto named = io::planningErrorText(error, fieldNamer(), robotNamesForMessages(), true))
             badInput(*named);
         badInput(options_.missionFromFlags() ? std::string(error.what())
                                              : options_.missionPath + ": " + error.what());

@@ -38,7 +38,8 @@ class BatchRunner {
     void applyOverrides();
     // Refuses vehicle settings that cannot fly together (a flight too short for its climb and descent).
     void checkVehicles() const;
-    [[nodiscard]] std::string robotsNamed(const std::string& message, bool withIndex) const;
+    // The robots' names that messages numbering robots add; none for robots given by --start flags.
+    [[nodiscard]] std::vector<std::string> robotNamesForMessages() const;
     void addEventFlags();
     void loadRaster();
     // The mission's part of the problem, the same whatever the planner: classes_, starts_ and chargers_.

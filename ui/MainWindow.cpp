@@ -1802,10 +1802,11 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                        .arg(metrics.ratio, 0, 'f', 3), // as the results panel and plan.png give it
                    15000);
         // The plan's warnings and notes, whole, where every message is kept.
+        const std::vector<std::string> names = robotNames();
         for (const PlanIssue& issue : outcome.plan->issues) {
             // A robot's name stays as written, and the robots a warning numbers are named.
             QString text =
-                QString::fromStdString(issue.message + io::robotsNamedIn(issue.message, robotNames(), false));
+                QString::fromStdString(issue.message + io::robotsNamedIn(issue.message, names, false));
             if (!text.endsWith(QLatin1Char('.')))
                 text += QLatin1Char('.');
             messageLog_->add(
