@@ -1,5 +1,6 @@
 #include "core/allocation/BatteryRange.hpp"
 
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 
 #include <algorithm>
@@ -17,10 +18,12 @@ struct Growth {
     std::vector<int> reachedBy;  // by cell: that charger's robot, or -1
 };
 
-// Ways from every start cell at once through neighbouring cells (centre to centre), quickest first; a
-// robot's way enters a cell only where mayEnter(robot, cell, seconds there) allows.
+// Ways from every start cell at once through neighbouring cells (centre to centre), quickest first, each
+// robot at its own speed where it has one; a robot's way enters a cell only where mayEnter(robot, cell,
+// seconds there) allows.
 template <typename MayEnter>
-Growth growFromChargers(const CellGraph& graph, const std::vector<int>& startCells, MayEnter mayEnter) {
+Growth growFromChargers(const CellGraph& graph, const std::vector<int>& startCells,
+                        const std::vector<double>& robotSpeeds, MayEnter mayEnter) {
     Growth growth{std::vector<double>(graph.size(), std::numeric_limits<double>::infinity()),
                   std::vector<int>(graph.size(), -1)};
     using Entry = std::pair<double, int>;
@@ -36,13 +39,15 @@ Growth growFromChargers(const CellGraph& graph, const std::vector<int>& startCel
         if (reached != growth.seconds[static_cast<std::size_t>(id)])
             continue;
         const int robot = growth.reachedBy[static_cast<std::size_t>(id)];
+        const double ownSpeed = ownSpeedOf(robotSpeeds, static_cast<std::size_t>(robot));
         const Cell& here = graph.cell(id);
         for (const int next : graph.neighbours(id)) {
             const Cell& there = graph.cell(next);
             const double seconds =
                 reached +
                 travelSeconds(std::hypot(there.centreX() - here.centreX(), there.centreY() - here.centreY()),
-                              here.speedMetresPerSecond, there.speedMetresPerSecond);
+                              ownSpeed > 0.0 ? ownSpeed : here.speedMetresPerSecond,
+                              ownSpeed > 0.0 ? ownSpeed : there.speedMetresPerSecond);
             const auto index = static_cast<std::size_t>(next);
             if (seconds < growth.seconds[index] && mayEnter(robot, index, seconds)) {
                 growth.seconds[index] = seconds;
@@ -57,8 +62,9 @@ Growth growFromChargers(const CellGraph& graph, const std::vector<int>& startCel
 } // namespace
 
 std::vector<double> BatteryRange::secondsFromChargers(const CellGraph& graph,
-                                                      const std::vector<int>& startCells) {
-    return growFromChargers(graph, startCells, [](int, std::size_t, double) { return true; }).seconds;
+                                                      const std::vector<int>& startCells) const {
+    return growFromChargers(graph, startCells, robotSpeeds, [](int, std::size_t, double) { return true; })
+        .seconds;
 }
 
 BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& graph,
@@ -93,7 +99,7 @@ std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>
                                         const std::vector<int>& leftOutBy) const {
     // A robot's way keeps to its own region and the cells others left out, within its range.
     const Growth growth =
-        growFromChargers(graph, startCells, [&](int robot, std::size_t cell, double seconds) {
+        growFromChargers(graph, startCells, robotSpeeds, [&](int robot, std::size_t cell, double seconds) {
             const bool open = leftOutBy[cell] >= 0 && leftOutBy[cell] != robot;
             return open ? withinRange(seconds) : robotOfCell[cell] == robot;
         });

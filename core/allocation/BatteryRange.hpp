@@ -10,14 +10,16 @@ namespace mcpp {
 // back on one charge, judged from cell centre to cell centre.
 struct BatteryRange {
     double enduranceSeconds = 0.0;
+    // By robot, its own speed over every class (PlanningProblem::robotSpeeds); 0 or missing: the cells'.
+    std::vector<double> robotSpeeds = {};
 
     [[nodiscard]] bool withinRange(double secondsFromCharger) const {
         return 2.0 * secondsFromCharger < enduranceSeconds;
     }
     // Seconds of travel from each cell's centre to the nearest start cell's, through neighbours (infinity
-    // where none is reachable).
-    [[nodiscard]] static std::vector<double> secondsFromChargers(const CellGraph& graph,
-                                                                 const std::vector<int>& startCells);
+    // where none is reachable), each robot at its own speed.
+    [[nodiscard]] std::vector<double> secondsFromChargers(const CellGraph& graph,
+                                                          const std::vector<int>& startCells) const;
 
     struct AllocationGraph {
         CellGraph graph;

@@ -52,17 +52,22 @@ ChargerTransit::ChargerTransit(const CellGraph& graph) : graph_(graph) {}
 ChargerTransit::~ChargerTransit() = default;
 
 std::vector<Waypoint> ChargerTransit::way(int robot, MapPoint start, int startCell, MapPoint charger,
-                                          int chargerCell, double enduranceSeconds) const {
-    // Near the two first; over the whole map (made once) when no way joins them there.
-    std::vector<Waypoint> points = wayThrough(SubCellNodes(graph_, cellsAround(graph_, start, charger)),
-                                              robot, start, startCell, charger, chargerCell);
+                                          int chargerCell, double enduranceSeconds, double ownSpeed) const {
+    // Near the two first; over the whole map (made once for the cells' speeds) when no way joins them there.
+    std::vector<Waypoint> points =
+        wayThrough(SubCellNodes(graph_, cellsAround(graph_, start, charger), ownSpeed), robot, start,
+                   startCell, charger, chargerCell);
     if (points.empty()) {
-        if (!everySubCell_) {
-            std::vector<int> everyCell(graph_.size());
-            std::iota(everyCell.begin(), everyCell.end(), 0);
-            everySubCell_ = std::make_unique<SubCellNodes>(graph_, everyCell);
+        std::vector<int> everyCell(graph_.size());
+        std::iota(everyCell.begin(), everyCell.end(), 0);
+        if (ownSpeed > 0.0) {
+            points = wayThrough(SubCellNodes(graph_, everyCell, ownSpeed), robot, start, startCell, charger,
+                                chargerCell);
+        } else {
+            if (!everySubCell_)
+                everySubCell_ = std::make_unique<SubCellNodes>(graph_, everyCell);
+            points = wayThrough(*everySubCell_, robot, start, startCell, charger, chargerCell);
         }
-        points = wayThrough(*everySubCell_, robot, start, startCell, charger, chargerCell);
     }
     const std::string who = "robot " + std::to_string(robot + 1);
     if (points.empty())

@@ -19,10 +19,11 @@ class ChargerTransit {
     explicit ChargerTransit(const CellGraph& graph);
     ~ChargerTransit();
 
-    // The points from the start to the charger, both included. Throws PlanningError when no way joins them
-    // or when one charge of `enduranceSeconds` cannot fly it.
+    // The points from the start to the charger, both included, at the robot's own speed (0: the cells').
+    // Throws PlanningError when no way joins them or when one charge of `enduranceSeconds` cannot fly it.
     [[nodiscard]] std::vector<Waypoint> way(int robot, MapPoint start, int startCell, MapPoint charger,
-                                            int chargerCell, double enduranceSeconds) const;
+                                            int chargerCell, double enduranceSeconds,
+                                            double ownSpeed = 0.0) const;
 
   private:
     // The way over these nodes, or nothing when they join no way.

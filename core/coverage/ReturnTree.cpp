@@ -78,11 +78,14 @@ double ReturnTree::secondsHomeArriving(int node, double inX, double inY) const {
 }
 
 double ReturnTree::worstTurnSeconds(int node) const {
-    return 2.0 * double(graph_.cell(nodes_.waypoint(node).cell).turnSecondsPer90Degrees);
+    // At the node's speed, as the path is timed: a robot of its own speed turns at its price, not the cell's.
+    const Waypoint& point = nodes_.waypoint(node);
+    return 2.0 * double(graph_.turnSeconds(point.cell, point.speedMetresPerSecond));
 }
 
 double ReturnTree::worstTurnAtCharger() const {
-    return charger_.cell < 0 ? 0.0 : 2.0 * double(graph_.cell(charger_.cell).turnSecondsPer90Degrees);
+    return charger_.cell < 0 ? 0.0
+                             : 2.0 * double(graph_.turnSeconds(charger_.cell, charger_.speedMetresPerSecond));
 }
 
 std::vector<int> ReturnTree::wayHome(int node) const {

@@ -36,7 +36,8 @@ int neighbourAt(const CellGraph& graph, int cell, int column, int row) {
 
 } // namespace
 
-SubCellNodes::SubCellNodes(const CellGraph& graph, const std::vector<int>& cells) : cells_(cells) {
+SubCellNodes::SubCellNodes(const CellGraph& graph, const std::vector<int>& cells, double ownSpeed)
+    : cells_(cells) {
     std::sort(cells_.begin(), cells_.end());
     nodeOfSubCell_.assign(cells_.size() * 4, none);
     for (std::size_t slot = 0; slot < cells_.size(); ++slot) {
@@ -46,7 +47,8 @@ SubCellNodes::SubCellNodes(const CellGraph& graph, const std::vector<int>& cells
                 continue;
             Node node;
             const MapPoint centre = cell.subCellCentre(subCell);
-            node.waypoint = {centre.x, centre.y, cells_[slot], cell.speedMetresPerSecond};
+            node.waypoint = {centre.x, centre.y, cells_[slot],
+                             ownSpeed > 0.0 ? static_cast<float>(ownSpeed) : cell.speedMetresPerSecond};
             nodeOfSubCell_[slot * 4 + static_cast<std::size_t>(subCell)] = static_cast<int>(nodes_.size());
             nodes_.push_back(node);
         }

@@ -21,7 +21,9 @@ class SubCellNodes {
         std::array<int, 4> neighbour{none, none, none, none}; // by Direction
     };
 
-    SubCellNodes(const CellGraph& graph, const std::vector<int>& cells);
+    // ownSpeed: a robot's own speed over every class (PlanningProblem::robotSpeeds) its nodes carry instead
+    // of their cells' speeds; 0 for the cells'.
+    SubCellNodes(const CellGraph& graph, const std::vector<int>& cells, double ownSpeed = 0.0);
 
     [[nodiscard]] int size() const { return static_cast<int>(nodes_.size()); }
     [[nodiscard]] const Node& node(int index) const { return nodes_[static_cast<std::size_t>(index)]; }

@@ -279,7 +279,7 @@ std::unique_ptr<ReturnTree> WavefrontCoverage::treeWithinRange(const SubCellNode
 WavefrontCoverage::Result WavefrontCoverage::cover(int robot, const std::vector<int>& cells, int chargerCell,
                                                    MapPoint charger, const std::vector<Waypoint>& transit,
                                                    const ProgressReporter& progress) const {
-    const SubCellNodes nodes(graph_, cells);
+    const SubCellNodes nodes(graph_, cells, ownSpeed_);
     const int root = nodes.startNode(robot, chargerCell, charger);
     Result result;
     result.sorties.robot = robot;

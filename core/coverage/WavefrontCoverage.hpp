@@ -32,7 +32,9 @@ class WavefrontCoverage {
         RobotSorties sorties;
     };
 
-    WavefrontCoverage(const CellGraph& graph, Battery battery) : graph_(graph), battery_(battery) {}
+    // ownSpeed: the robot's own speed over every class (PlanningProblem::robotSpeeds), 0 for the cells'.
+    WavefrontCoverage(const CellGraph& graph, Battery battery, double ownSpeed = 0.0)
+        : graph_(graph), battery_(battery), ownSpeed_(ownSpeed) {}
 
     // cells: the robot's region, holding chargerCell, of a single-level grid. transit: the flight from the
     // robot's start to the charger (ChargerTransit) when it starts elsewhere, else empty; the first sortie
@@ -49,6 +51,7 @@ class WavefrontCoverage {
 
     const CellGraph& graph_;
     Battery battery_;
+    double ownSpeed_;
 };
 
 } // namespace mcpp

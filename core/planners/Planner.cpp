@@ -84,11 +84,17 @@ std::string ownSpeedsUnbalancedMessage(const PlannerDescription& planner) {
 }
 
 // Robots of their own speeds drive every path at them, whatever the planner made of them; a plan whose
-// layers (sorties, detection, a timeline) were timed while planning keeps the class table's speeds.
+// layers (detection, a timeline) were timed while planning keeps the class table's speeds, unless its
+// planner planned them at the robots' own.
 void applyOwnSpeeds(const PlannerDescription& planner, const PlanningProblem& problem, PlanningRun& run) {
     if (!someOwnSpeed(problem.robotSpeeds))
         return;
     Plan& plan = run.plan();
+    if (planner.balancesOwnSpeeds) {
+        // Its paths were driven at them as it planned: timing them again is a pass over every waypoint.
+        plan.robotSpeeds = problem.robotSpeeds;
+        return;
+    }
     if (!plan.layers.empty()) {
         run.addIssue(IssueSeverity::Warning, "own-speeds-ignored",
                      planner.label + " times every robot at the class table's speeds: the robots' own speeds "
@@ -96,9 +102,6 @@ void applyOwnSpeeds(const PlannerDescription& planner, const PlanningProblem& pr
         return;
     }
     plan.robotSpeeds = problem.robotSpeeds;
-    if (planner.balancesOwnSpeeds)
-        return; // its paths were driven at them as it planned: timing them again is a pass over every
-                // waypoint
     driveAtOwnSpeeds(plan.paths, plan.cells, plan.robotSpeeds);
     if (problem.starts.size() > 1)
         run.addIssue(IssueSeverity::Warning, "own-speeds-unbalanced", ownSpeedsUnbalancedMessage(planner));

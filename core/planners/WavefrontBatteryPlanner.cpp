@@ -3,6 +3,7 @@
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 #include "core/allocation/BatteryRange.hpp"
 #include "core/coverage/ChargerTransit.hpp"
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/WavefrontCoverage.hpp"
 #include "core/model/BatteryEndurance.hpp"
@@ -61,16 +62,14 @@ void keepOwnLeftOutCells(std::vector<WavefrontCoverage::Result>& results, const 
     }
 }
 
-// The regions, drawn on the cells in some charger's range; the others are left out and warned of.
-RegionAllocation allocateWithinRange(PlanningRun& run, const BatteryRange& range,
-                                     const std::vector<int>& startCells) {
+// The cells in some charger's range, over which regions are drawn; the others are left out and warned of.
+CellGraph cellsWithinRange(PlanningRun& run, const BatteryRange& range, const std::vector<int>& startCells) {
     const CellGraph& cells = run.plan().cells;
-    const AzimuthTrendAllocator allocator(run.parameters().integer("rebalance_iterations"));
-    const BatteryRange::AllocationGraph allocation = range.allocationGraph(cells, startCells);
+    BatteryRange::AllocationGraph allocation = range.allocationGraph(cells, startCells);
     if (!allocation.outOfRange.empty())
         run.addIssue(IssueSeverity::Warning, "beyond-every-charger",
                      beyondEveryChargerMessage(cells, allocation.outOfRange, range));
-    return allocator.allocate(allocation.graph, startCells, run.progress());
+    return std::move(allocation.graph);
 }
 
 // Where each robot works from: its charger (its start unless the problem gives one) and, for a robot that
@@ -129,15 +128,17 @@ Chargers locateChargers(PlanningRun& run, const std::vector<int>& startCells,
         owner = index;
         if (!transit)
             transit.emplace(run.plan().cells);
-        chargers.transits[robot] =
-            transit->way(index, run.starts()[robot], startCells[robot], chargers.points[robot],
-                         chargers.cells[robot], batteries[robot]);
+        chargers.transits[robot] = transit->way(
+            index, run.starts()[robot], startCells[robot], chargers.points[robot], chargers.cells[robot],
+            batteries[robot], ownSpeedOf(run.problem().robotSpeeds, robot));
         run.progress().throwIfCancelled();
     }
     return chargers;
 }
 
+// The robots' sorties over one division of the cells.
 struct RobotsOnBatteries {
+    RegionAllocation regions;                       // less the cells left out, with those handed over
     std::vector<WavefrontCoverage::Result> results; // by robot
     std::vector<int> leftOutBy;                     // by cell: the robot that last left it out, or -1
 };
@@ -145,25 +146,46 @@ struct RobotsOnBatteries {
 // Plans the robots' regions (in parallel) and takes the cells they leave out of their regions.
 void coverRegions(PlanningRun& run, const std::vector<int>& robots, const Chargers& chargers,
                   const std::vector<double>& batteries, RobotsOnBatteries& state) {
-    Plan& plan = run.plan();
-    const std::vector<std::vector<int>> cells = cellsByRobot(plan.regions);
+    const CellGraph& graph = run.plan().cells;
+    const std::vector<std::vector<int>> cells = cellsByRobot(state.regions);
     const double recharge = run.parameters().real("recharge_s");
     parallelFor(robots.size(), [&](std::size_t i, int) {
         const auto robot = static_cast<std::size_t>(robots[i]);
-        const WavefrontCoverage coverage(plan.cells, {batteries[robot], recharge});
-        state.results[robot] =
-            coverage.cover(robots[i], cells[robot], chargers.cells[robot], chargers.points[robot],
-                           chargers.transits[robot], run.progress());
+        const WavefrontCoverage coverage(graph, {batteries[robot], recharge},
+                                         ownSpeedOf(run.problem().robotSpeeds, robot));
+        WavefrontCoverage::Result& result = state.results[robot];
+        result = coverage.cover(robots[i], cells[robot], chargers.cells[robot], chargers.points[robot],
+                                chargers.transits[robot], run.progress());
     });
     for (const int robot : robots)
         for (const int cell : state.results[static_cast<std::size_t>(robot)].sorties.outOfRangeCells) {
-            plan.regions.robotOfCell[static_cast<std::size_t>(cell)] = -1;
+            state.regions.robotOfCell[static_cast<std::size_t>(cell)] = -1;
             state.leftOutBy[static_cast<std::size_t>(cell)] = robot;
         }
 }
 
+// Every robot's sorties over `division`; what a robot could not reach may be in reach of another's charger,
+// which is then handed it and plans again.
+RobotsOnBatteries coverDivision(PlanningRun& run, const RegionAllocation& division, const BatteryRange& range,
+                                const Chargers& chargers, const std::vector<double>& batteries) {
+    const CellGraph& graph = run.plan().cells;
+    RobotsOnBatteries robots{division, std::vector<WavefrontCoverage::Result>(chargers.cells.size()),
+                             std::vector<int>(graph.size(), -1)};
+    std::vector<int> everyRobot(chargers.cells.size());
+    std::iota(everyRobot.begin(), everyRobot.end(), 0);
+    coverRegions(run, everyRobot, chargers, batteries, robots);
+    const std::vector<int> gained =
+        range.handOver(graph, robots.regions.robotOfCell, chargers.cells, robots.leftOutBy);
+    for (std::size_t cell = 0; cell < robots.leftOutBy.size(); ++cell)
+        if (robots.regions.robotOfCell[cell] >= 0)
+            robots.leftOutBy[cell] = -1;
+    coverRegions(run, gained, chargers, batteries, robots);
+    return robots;
+}
+
 void addPathsAndSorties(PlanningRun& run, RobotsOnBatteries& state) {
     Plan& plan = run.plan();
+    plan.regions = std::move(state.regions);
     keepOwnLeftOutCells(state.results, state.leftOutBy, plan.cells);
     std::vector<RobotSorties> sorties;
     for (WavefrontCoverage::Result& result : state.results) {
@@ -184,6 +206,9 @@ PlannerDescription WavefrontBatteryPlanner::describe() const {
     description.summary = "wavefront coverage from far to near, in sorties from each robot's charger";
     // Cells beyond a battery's reach are left to no robot.
     description.promises.everyReachableCellCovered = false;
+    // Each robot's sorties are timed at its own speed, its reach too, and the division gives it work in
+    // proportion to its pace.
+    description.balancesOwnSpeeds = true;
     // A robot whose charger is away from its start crosses others' regions on its first flight there; the
     // shared invariant suite plans without chargers, where every path keeps to its own region.
     description.parameters = {
@@ -206,25 +231,19 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     plan.cells = gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
     const std::vector<double> batteries = robotBatteries(run.problem(), parameters.real("battery_s"));
-    const BatteryRange range{*std::max_element(batteries.begin(), batteries.end())};
+    const BatteryRange range{*std::max_element(batteries.begin(), batteries.end()),
+                             run.problem().robotSpeeds};
     const Chargers chargers =
         run.stage("chargers", [&] { return locateChargers(run, startCells, batteries); });
-    plan.regions = run.stage("allocation", [&] { return allocateWithinRange(run, range, chargers.cells); });
-    RobotsOnBatteries robots{std::vector<WavefrontCoverage::Result>(startCells.size()),
-                             std::vector<int>(plan.cells.size(), -1)};
-    run.stage("paths", [&] {
-        std::vector<int> everyRobot(startCells.size());
-        std::iota(everyRobot.begin(), everyRobot.end(), 0);
-        coverRegions(run, everyRobot, chargers, batteries, robots);
-        // What a robot could not reach may be in reach of another's charger: hand it over, plan again.
-        const std::vector<int> gained =
-            range.handOver(plan.cells, plan.regions.robotOfCell, chargers.cells, robots.leftOutBy);
-        for (std::size_t cell = 0; cell < robots.leftOutBy.size(); ++cell)
-            if (plan.regions.robotOfCell[cell] >= 0)
-                robots.leftOutBy[cell] = -1;
-        coverRegions(run, gained, chargers, batteries, robots);
-        return 0;
-    });
+    // Robots of their own speeds get work in proportion to their paces over the cells.
+    AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
+    if (someOwnSpeed(run.problem().robotSpeeds))
+        allocator.setPaces(robotPaces(plan.cells, run.problem().robotSpeeds, startCells.size()));
+    const CellGraph withinRange = cellsWithinRange(run, range, chargers.cells);
+    const RegionAllocation division = run.stage(
+        "allocation", [&] { return allocator.allocate(withinRange, chargers.cells, run.progress()); });
+    RobotsOnBatteries robots =
+        run.stage("paths", [&] { return coverDivision(run, division, range, chargers, batteries); });
     addPathsAndSorties(run, robots);
 }
 
