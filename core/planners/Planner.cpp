@@ -13,6 +13,7 @@
 #include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "core/planners/PlanningRun.hpp"
+#include "core/planners/UncoveredLand.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -152,7 +153,7 @@ std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
 // Robots left with less than half a fair share where the longest path is well above the bound: most often
 // starts so close together that the others' regions wall theirs in. Empty where there are none, and on maps
 // whose starts lie in several parts (the bound is then one part's share, not every robot's).
-std::string unevenPlanMessage(const PlanMetrics& metrics) {
+std::string unevenPlanMessage(const PlanMetrics& metrics, const PlannerDescription& planner) {
     constexpr double noticeableRatio = 1.05;
     if (!(metrics.ratio > noticeableRatio) || !(metrics.lowerBoundSeconds > 0.0) ||
         !metrics.confinedRobots.empty())
@@ -168,8 +169,34 @@ std::string unevenPlanMessage(const PlanMetrics& metrics) {
     ratio << metrics.ratio;
     return robotList(shortOfWork) + (shortOfWork.size() == 1 ? " covers" : " cover") +
            " less than half of a fair share, and the longest path takes " + ratio.str() +
-           " times the lower bound: starts close together leave robots walled in by the others' regions; "
-           "spread over the area, they even the plan out";
+           " times the lower bound: " +
+           (planner.fliesOnBatteries()
+                ? "a slow robot's battery leaves it little within reach of its charger, and starts close "
+                  "together leave robots walled in by the others' regions; a charger nearer the work, or "
+                  "starts spread over the area, even the plan out"
+                : "starts close together leave robots walled in by the others' regions; spread over the "
+                  "area, they even the plan out");
+}
+
+// Land no robot covers, and why. Land a planner on batteries leaves beyond their reach is warned of where
+// it is left out (beyond-battery, beyond-every-charger).
+std::vector<std::string> uncoveredLandMessages(const UncoveredLand& land, const PlannerDescription& planner) {
+    std::vector<std::string> messages;
+    if (land.cutOffSquareMetres > 0.0) {
+        const std::string where = land.cutOffPieces == 1
+                                      ? "it lies round " + describePoint(land.largestPieceCentre)
+                                      : "in " + std::to_string(land.cutOffPieces) + " pieces, the largest (" +
+                                            formatArea(land.largestPieceSquareMetres) + ") round " +
+                                            describePoint(land.largestPieceCentre);
+        messages.push_back(formatArea(land.cutOffSquareMetres) +
+                           " of passable land cannot be reached by any robot: impassable land or the area's "
+                           "edge cuts it off from every start (" +
+                           where + "); a robot started there would cover it");
+    }
+    if (land.leftOutSquareMetres > 0.0 && !planner.fliesOnBatteries())
+        messages.push_back(formatArea(land.leftOutSquareMetres) +
+                           " of passable land joined to a start is covered by no robot");
+    return messages;
 }
 
 } // namespace
@@ -220,9 +247,8 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
         return 0;
     });
     if (plan.metrics.unreachableAreaSquareMetres > 0.0)
-        planningRun.addIssue(IssueSeverity::Warning, "unreachable-area",
-                             formatArea(plan.metrics.unreachableAreaSquareMetres) +
-                                 " of passable land cannot be reached by any robot");
+        for (const std::string& message : uncoveredLandMessages(uncoveredLand(plan), planner))
+            planningRun.addIssue(IssueSeverity::Warning, "unreachable-area", message);
     if (const WaypointsBeyondArea beyond = waypointsBeyondArea(problem.grid, plan.paths);
         beyond.waypoints > 0)
         planningRun.addIssue(IssueSeverity::Warning, "paths-beyond-area", beyondAreaMessage(beyond));
@@ -232,7 +258,7 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
     const bool playsEvents = planner.simulatesEvents && !problem.events.empty();
     // Nor is a plan that divides the work at one speed between robots of their own (own-speeds-unbalanced).
     const bool unevenSpeeds = !plan.robotSpeeds.empty() && !planner.balancesOwnSpeeds;
-    if (const std::string uneven = unevenPlanMessage(plan.metrics);
+    if (const std::string uneven = unevenPlanMessage(plan.metrics, planner);
         !uneven.empty() && !playsEvents && !unevenSpeeds)
         planningRun.addIssue(IssueSeverity::Warning, "uneven-plan", uneven);
     progress.report("done", 1.0);

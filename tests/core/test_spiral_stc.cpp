@@ -92,6 +92,13 @@ class SpiralStcTest : public QObject {
         QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 16.0);
         QCOMPARE(plan.issues.size(), std::size_t{1});
         QCOMPARE(plan.issues.front().code, std::string("unreachable-area"));
+        // Said why, and where: the far bank's cells (2 x 2 m) span x 6 to 10 and y -4 to 0.
+        const std::string& message = plan.issues.front().message;
+        QVERIFY2(message.find("16 m2 of passable land cannot be reached by any robot: impassable land or the "
+                              "area's edge cuts it off from every start (it lies round (") == 0,
+                 message.c_str());
+        QVERIFY2(message.find("); a robot started there would cover it") != std::string::npos,
+                 message.c_str());
     }
 
     void severalStartsAreRefusedNamingTheOtherPlanners() {

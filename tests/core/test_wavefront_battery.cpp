@@ -118,6 +118,8 @@ class WavefrontBatteryTest : public QObject {
         QVERIFY(
             codes.count("beyond-every-charger: 96 m2 lies beyond half the battery (1 min 41 s) from every "
                         "charger and is not covered") == 1);
+        // Those warnings say why the land is not covered: it is not called unreachable as well.
+        QCOMPARE(codes.size(), std::size_t(2));
     }
 
     // Two chargers 60 m apart on a 100 m corridor, 40 s of battery: a cell 2 m further from a charger's cell
@@ -179,6 +181,24 @@ class WavefrontBatteryTest : public QObject {
         QVERIFY(longestOfRobot2 <= 90.0 * (1.0 + 1e-9));
         QVERIFY(longestOfRobot2 > 60.0); // the short battery is used, not left half empty
         QVERIFY(sortiesOf(plan, 1).sorties.size() > sortiesOf(plan, 0).sorties.size());
+    }
+
+    // A robot whose short battery keeps it near its charger does little: the warning names the battery as
+    // a cause, and a charger nearer the work as a cure.
+    void aShortBatteryThatLeavesARobotIdleIsNamed() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(2, std::string(100, '.')), {{0.5, 0.5}, {99.5, 0.5}});
+        problem.batterySeconds = {12.0, 0.0};
+        const Plan plan = planOnBattery(problem, 1e6, 0.0, 0.0);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        std::string uneven;
+        for (const PlanIssue& issue : plan.issues)
+            if (issue.code == "uneven-plan")
+                uneven = issue.message;
+        QVERIFY2(uneven.find("robot 1 covers less than half of a fair share") == 0, uneven.c_str());
+        QVERIFY2(uneven.find("a slow robot's battery leaves it little within reach of its charger") !=
+                     std::string::npos,
+                 uneven.c_str());
     }
 
     void aBatteryTooShortToLeaveIsRefused() {
