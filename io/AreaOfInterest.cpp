@@ -182,8 +182,12 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
     for (std::size_t pixel = 0; pixel < grid.values.size(); ++pixel) {
         if (grid.outside[pixel] != 0)
             continue;
-        if ((!include.empty() && include[pixel] == 0) || (!exclude.empty() && exclude[pixel] != 0)) {
+        if (!include.empty() && include[pixel] == 0) {
             grid.outside[pixel] = ClassGrid::outsideArea;
+            continue;
+        }
+        if (!exclude.empty() && exclude[pixel] != 0) {
+            grid.outside[pixel] = ClassGrid::inNoGoZone;
             continue;
         }
         ++counts[grid.values[pixel]];

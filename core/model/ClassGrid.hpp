@@ -27,8 +27,13 @@ struct ClassGrid {
     // Why a pixel is not part of the task area (0 where it is); may be empty.
     std::vector<std::uint8_t> outside;
     static constexpr std::uint8_t outsideNodata = 1;   // the raster's nodata
-    static constexpr std::uint8_t outsideArea = 2;     // outside the area of interest, or in a no-go zone
+    static constexpr std::uint8_t outsideArea = 2;     // outside the area of interest
     static constexpr std::uint8_t outsideUnlisted = 3; // a class the table has no row for, left out
+    static constexpr std::uint8_t inNoGoZone = 4;      // inside the area of interest, in a no-go zone
+    // Whether the flag is the task area's edge a user drew (an area of interest or a no-go zone).
+    [[nodiscard]] static constexpr bool isDrawnEdge(std::uint8_t flag) {
+        return flag == outsideArea || flag == inNoGoZone;
+    }
 
     [[nodiscard]] std::size_t index(int column, int row) const {
         return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +

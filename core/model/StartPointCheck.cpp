@@ -50,7 +50,9 @@ std::string whyOutside(std::uint8_t reason) {
     case ClassGrid::outsideNodata:
         return "the raster has no land cover there (nodata)";
     case ClassGrid::outsideArea:
-        return "it lies outside the area of interest, or in a no-go zone";
+        return "it lies outside the area of interest";
+    case ClassGrid::inNoGoZone:
+        return "it lies in a no-go zone";
     case ClassGrid::outsideUnlisted:
         return "its class has no row in the class table and is left out";
     default:

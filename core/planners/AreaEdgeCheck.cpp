@@ -42,16 +42,18 @@ double distanceToTaskArea(const ClassGrid& grid, MapPoint point, PixelIndex at) 
 WaypointsBeyondArea waypointsBeyondArea(const ClassGrid& grid, const std::vector<CoveragePath>& paths) {
     WaypointsBeyondArea beyond;
     // Most maps have no area of interest: one pass over the flags spares a lookup per waypoint.
-    if (std::find(grid.outside.begin(), grid.outside.end(), ClassGrid::outsideArea) == grid.outside.end())
+    if (std::none_of(grid.outside.begin(), grid.outside.end(), ClassGrid::isDrawnEdge))
         return beyond;
     for (const CoveragePath& path : paths) {
         int here = 0;
         for (const Waypoint& waypoint : path.waypoints) {
             const MapPoint point{waypoint.x, waypoint.y};
             const auto pixel = grid.pixelAt(point);
-            if (!pixel || grid.outside[grid.index(pixel->column, pixel->row)] != ClassGrid::outsideArea)
+            const std::uint8_t flag = pixel ? grid.outside[grid.index(pixel->column, pixel->row)] : 0;
+            if (!ClassGrid::isDrawnEdge(flag))
                 continue;
             ++here;
+            beyond.inNoGoZones += flag == ClassGrid::inNoGoZone ? 1 : 0;
             beyond.farthestMetres = std::max(beyond.farthestMetres, distanceToTaskArea(grid, point, *pixel));
         }
         if (here > 0)

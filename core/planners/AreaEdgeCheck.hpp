@@ -12,12 +12,14 @@ namespace mcpp {
 // within a geofence drawn on that edge needs to know.
 struct WaypointsBeyondArea {
     int waypoints = 0;
+    int inNoGoZones = 0;         // of those, in a no-go zone rather than outside the area of interest
     std::vector<int> robots;     // ascending, those with any such waypoint
     double farthestMetres = 0.0; // the largest distance from one of them to the task area's pixels
     double pixelMetres = 0.0;    // the grid's pixel side: the area's own edge may lie up to half of it nearer
 };
 
-// Only pixels flagged ClassGrid::outsideArea count: nodata is the raster's edge, not a fence.
+// Only pixels outside the area of interest or in a no-go zone count (ClassGrid::isDrawnEdge): nodata is the
+// raster's edge, not a fence.
 [[nodiscard]] WaypointsBeyondArea waypointsBeyondArea(const ClassGrid& grid,
                                                       const std::vector<CoveragePath>& paths);
 

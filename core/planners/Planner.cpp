@@ -142,12 +142,17 @@ std::string robotList(const std::vector<int>& robots) {
 
 // Where a drone's geofence follows the area's edge, it would be crossed: said with how far.
 std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
+    const bool noGoOnly = beyond.inNoGoZones == beyond.waypoints;
+    const std::string where = beyond.inNoGoZones == 0 ? "outside the area of interest"
+                              : noGoOnly              ? "in a no-go zone"
+                                                      : "outside the area of interest or in a no-go zone";
     return std::to_string(beyond.waypoints) + (beyond.waypoints == 1 ? " waypoint of " : " waypoints of ") +
-           robotList(beyond.robots) + " lie outside the area of interest or in a no-go zone, up to " +
-           formatDistance(beyond.farthestMetres) + " beyond its pixels (its edge may lie up to " +
+           robotList(beyond.robots) + " lie " + where + ", up to " + formatDistance(beyond.farthestMetres) +
+           " beyond the task area's pixels (its edge may lie up to " +
            formatDistance(beyond.pixelMetres / 2.0) +
            " nearer): cells that straddle the edge are covered whole. For a drone whose geofence follows "
-           "that edge, draw the area that far inside the fence";
+           "that edge, draw " +
+           (noGoOnly ? "the no-go zone that much larger" : "the area that far inside the fence");
 }
 
 // Robots left with less than half a fair share where the longest path is well above the bound: most often

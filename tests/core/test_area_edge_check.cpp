@@ -50,6 +50,7 @@ class AreaEdgeCheckTest : public QObject {
             pathThrough(2, {{25, 85}, {12, 85}})}; // 8 m beyond
         const WaypointsBeyondArea beyond = waypointsBeyondArea(grid, paths);
         QCOMPARE(beyond.waypoints, 3);
+        QCOMPARE(beyond.inNoGoZones, 0);
         QCOMPARE(beyond.robots, (std::vector<int>{0, 2}));
         QCOMPARE(beyond.farthestMetres, 15.0);
         QCOMPARE(beyond.pixelMetres, 10.0);
@@ -78,10 +79,23 @@ class AreaEdgeCheckTest : public QObject {
             return issue.code == "paths-beyond-area";
         });
         QVERIFY(warning != plan.issues.end());
-        QVERIFY2(warning->message.find(
-                     "of robot 1 lie outside the area of interest or in a no-go zone, up to 5 m") !=
-                     std::string::npos,
+        QVERIFY2(warning->message.find("of robot 1 lie outside the area of interest, up to 5 m beyond the "
+                                       "task area's pixels") != std::string::npos,
                  warning->message.c_str());
+        QVERIFY2(warning->message.find("draw the area that far inside the fence") != std::string::npos,
+                 warning->message.c_str());
+        // The same edge drawn as a no-go zone inside the area of interest is called that.
+        for (std::uint8_t& flag : problem.grid.outside)
+            flag = flag == ClassGrid::outsideArea ? ClassGrid::inNoGoZone : flag;
+        const Plan noGo = makePlanner("mcpp-mlct")->plan(problem, ProgressReporter{});
+        const auto zone = std::find_if(noGo.issues.begin(), noGo.issues.end(), [](const PlanIssue& issue) {
+            return issue.code == "paths-beyond-area";
+        });
+        QVERIFY(zone != noGo.issues.end());
+        QVERIFY2(zone->message.find("of robot 1 lie in a no-go zone, up to 5 m") != std::string::npos,
+                 zone->message.c_str());
+        QVERIFY2(zone->message.find("draw the no-go zone that much larger") != std::string::npos,
+                 zone->message.c_str());
     }
 };
 

@@ -136,13 +136,17 @@ class MlctPlannerTest : public QObject {
         expectError(problem, PlanningError::Kind::StartOutsideArea, "nodata");
     }
 
-    // A start on the raster but off the task area says why: nodata, or outside the area of interest.
+    // A start on the raster but off the task area says why: nodata, outside the area of interest, or in a
+    // no-go zone.
     void startOffTheTaskAreaSaysWhy() {
         auto problem = lakeProblem();
         problem.grid.outside.assign(problem.grid.values.size(), 0);
         problem.grid.outside[problem.grid.index(0, 0)] = ClassGrid::outsideArea;
         expectError(problem, PlanningError::Kind::StartOutsideArea,
-                    "is outside the task area: it lies outside the area of interest, or in a no-go zone");
+                    "is outside the task area: it lies outside the area of interest");
+        problem.grid.outside[problem.grid.index(0, 0)] = ClassGrid::inNoGoZone;
+        expectError(problem, PlanningError::Kind::StartOutsideArea,
+                    "is outside the task area: it lies in a no-go zone");
         problem.grid.outside[problem.grid.index(0, 0)] = ClassGrid::outsideNodata;
         expectError(problem, PlanningError::Kind::StartOutsideArea,
                     "is outside the task area: the raster has no land cover there (nodata)");

@@ -60,6 +60,14 @@ bool insideAt(const LoadedRaster& raster, double x, double y) {
     return !grid.isOutside(column, row);
 }
 
+// Why the pixel at (x, y) is left out (ClassGrid's flags), 0 inside.
+std::uint8_t flagAt(const LoadedRaster& raster, double x, double y) {
+    const ClassGrid& grid = raster.grid;
+    const int column = static_cast<int>((x - grid.originX) / grid.pixelWidth);
+    const int row = static_cast<int>((grid.originY - y) / grid.pixelHeight);
+    return grid.outside[grid.index(column, row)];
+}
+
 } // namespace
 
 class AreaOfInterestTest : public QObject {
@@ -83,6 +91,9 @@ class AreaOfInterestTest : public QObject {
         QVERIFY(insideAt(raster, 306000, 4131000));
         QVERIFY(!insideAt(raster, 304000, 4131000)); // west of the area
         QVERIFY(!insideAt(raster, 312500, 4137500)); // in the no-go zone
+        // Each is flagged apart, so that messages say which.
+        QCOMPARE(flagAt(raster, 304000, 4131000), ClassGrid::outsideArea);
+        QCOMPARE(flagAt(raster, 312500, 4137500), ClassGrid::inNoGoZone);
         QVERIFY(insideAt(raster, 316000, 4137500));
         QVERIFY(raster.warnings.back().find("area of interest") != std::string::npos);
         std::int64_t outsideFlags = 0;
