@@ -48,6 +48,7 @@ bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice>
             const PlannerChoice& choice = choices[static_cast<std::size_t>(index)];
             io::ComparisonRow row;
             row.planner = choice.planner;
+            std::optional<PlanningError> refused;
             std::shared_ptr<const Plan> plan;
             if (cancelFlag->load()) {
                 outcome.cancelled = true;
@@ -90,12 +91,15 @@ bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice>
                                       ? io::ComparisonRow::Outcome::Skipped
                                       : io::ComparisonRow::Outcome::Failed;
                     row.message = error.what();
+                    if (error.kind() != PlanningError::Kind::Cancelled)
+                        refused = error;
                 } catch (const std::exception& error) {
                     row.outcome = io::ComparisonRow::Outcome::Failed;
                     row.message = error.what();
                 }
             }
             outcome.rows.push_back(row);
+            outcome.errors.push_back(refused);
             outcome.plans.push_back(plan);
         }
         return outcome;

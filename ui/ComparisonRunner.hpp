@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/Plan.hpp"
+#include "core/model/PlanningError.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "io/ComparisonExport.hpp"
 
@@ -9,6 +10,7 @@
 #include <QString>
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace mcpp::ui {
@@ -18,6 +20,9 @@ struct ComparisonOutcome {
     std::vector<io::ComparisonRow> rows;
     std::vector<std::shared_ptr<const Plan>> plans; // by row; null where the planner failed or was skipped
     std::vector<PlannerChoice> choices;             // by row: the planner and parameters it ran with
+    // By row: what the planner refused the problem for, to be named in the window's terms; none where it
+    // planned, was skipped, or failed for another reason.
+    std::vector<std::optional<PlanningError>> errors;
     bool cancelled = false;
 };
 

@@ -1591,8 +1591,8 @@ void MainWindow::showBusy(const QString& stage, bool busy) {
         QGuiApplication::restoreOverrideCursor();
 }
 
-io::FieldNamer MainWindow::fieldNamer() const {
-    return [this](const io::MissionField& field) -> std::string {
+io::FieldNamer MainWindow::fieldNamer(const std::string& planner) const {
+    return [this, planner](const io::MissionField& field) -> std::string {
         using Part = io::MissionField::Part;
         const auto& robots = document_->robots();
         switch (field.part) {
@@ -1616,7 +1616,7 @@ io::FieldNamer MainWindow::fieldNamer() const {
         case Part::Parameter:
             break;
         }
-        return plannerSettingName(document_->plannerChoice().planner, field);
+        return plannerSettingName(planner.empty() ? document_->plannerChoice().planner : planner, field);
     };
 }
 
@@ -1692,7 +1692,14 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
         return;
     }
     comparison_ = outcome;
-    comparisonPanel_->showOutcome(outcome, *document_->grid(), document_->classes());
+    // A planner's refusal named as the window names Plan's: the field in the window's terms, the robots by
+    // name.
+    for (std::size_t row = 0; row < comparison_.rows.size() && row < comparison_.errors.size(); ++row)
+        if (const auto& error = comparison_.errors[row])
+            if (const auto named =
+                    io::planningErrorText(*error, fieldNamer(comparison_.choices[row].planner), robotNames()))
+                comparison_.rows[row].message = *named;
+    comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes());
     comparisonDock_->show();
     comparisonDock_->raise();
     const auto planned = std::count_if(outcome.plans.begin(), outcome.plans.end(),

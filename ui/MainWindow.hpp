@@ -174,7 +174,8 @@ class MainWindow : public QMainWindow {
     void removeSelectedRobot();
     void chooseExport(const std::string& formatKey);
     // How messages of the shared mission layer name a field here: robots by name, settings by key.
-    [[nodiscard]] io::FieldNamer fieldNamer() const;
+    // Fields in the window's terms; a parameter as `planner`'s setting (empty: the mission's planner).
+    [[nodiscard]] io::FieldNamer fieldNamer(const std::string& planner = {}) const;
     // Why planning failed, a robot's start or a setting named as the window names them, with advice.
     [[nodiscard]] QString planningErrorText(const PlanningOutcome& outcome) const;
     // The robots' names as the robot table holds them, in order.

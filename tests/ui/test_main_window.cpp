@@ -654,6 +654,18 @@ class TestMainWindow : public QObject {
                  qPrintable(error));
         QVERIFY2(error.contains(QStringLiteral(" across) (robot 1 is east); each robot sets off")),
                  qPrintable(error));
+
+        // Compare names the refusal the same way, row by row.
+        QSignalSpy compared(&window, &ui::MainWindow::comparisonFinished);
+        QVERIFY2(window.startComparison({"mcpp-mlct", "darp"}), qPrintable(window.lastError()));
+        QTRY_COMPARE_WITH_TIMEOUT(compared.count(), 1, kPlanningTimeoutMilliseconds);
+        QTableWidget* table = window.comparisonPanel()->table();
+        QCOMPARE(table->rowCount(), 2);
+        for (int row = 0; row < table->rowCount(); ++row) {
+            const QString tip = table->item(row, 1)->toolTip();
+            QVERIFY2(tip.startsWith(QStringLiteral("west's start: ")), qPrintable(tip));
+            QVERIFY2(tip.contains(QStringLiteral("(robot 1 is east)")), qPrintable(tip));
+        }
     }
 
     // The Compare action: planners run one after another in the background, the panel lists one row each
