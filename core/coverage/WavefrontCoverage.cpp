@@ -250,6 +250,18 @@ std::set<int> cellsOutOfRange(const SubCellNodes& nodes, const ReturnTree& tree,
 
 } // namespace
 
+PlanningError WavefrontCoverage::batteryTooShort(int robot) const {
+    const std::string detail = " to cover the cell of its charger and return to it";
+    if (!battery_.ownBattery)
+        return PlanningError::aboutParameter("battery_s", formatDuration(battery_.enduranceSeconds) +
+                                                              " is too short for robot " +
+                                                              std::to_string(robot + 1) + detail);
+    return PlanningError(PlanningError::Kind::InvalidParameter,
+                         "robot " + std::to_string(robot + 1) + "'s own battery (" +
+                             formatDuration(battery_.enduranceSeconds) + ") is too short" + detail +
+                             ": give it a longer battery_s, or its vehicle a longer flight time");
+}
+
 std::unique_ptr<ReturnTree> WavefrontCoverage::treeWithinRange(const SubCellNodes& nodes, int root, int robot,
                                                                int chargerCell, MapPoint charger,
                                                                std::vector<char>& usable,
@@ -263,10 +275,7 @@ std::unique_ptr<ReturnTree> WavefrontCoverage::treeWithinRange(const SubCellNode
         if (outOfRange.empty())
             return tree;
         if (outOfRange.count(chargerCell) != 0)
-            throw PlanningError::aboutParameter("battery_s",
-                                                formatDuration(battery_.enduranceSeconds) +
-                                                    " is too short for robot " + std::to_string(robot + 1) +
-                                                    " to cover the cell of its charger and return to it");
+            throw batteryTooShort(robot);
         for (const int cell : outOfRange) {
             for (const int node : nodes.ofCell(cell))
                 usable[static_cast<std::size_t>(node)] = 0;

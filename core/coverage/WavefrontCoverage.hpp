@@ -2,6 +2,7 @@
 
 #include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
+#include "core/model/PlanningError.hpp"
 #include "core/model/ProgressReporter.hpp"
 #include "core/model/RobotSorties.hpp"
 
@@ -26,6 +27,9 @@ class WavefrontCoverage {
     struct Battery {
         double enduranceSeconds = std::numeric_limits<double>::infinity(); // travel and turning per charge
         double rechargeSeconds = 0.0;
+        // The robot's own (its battery_s, or its vehicle's flight time), not the planner's battery_s: a
+        // battery too short is then the robot's to mend.
+        bool ownBattery = false;
     };
     struct Result {
         CoveragePath path; // not yet measured; its pauses are the charges
@@ -43,6 +47,8 @@ class WavefrontCoverage {
                                const std::vector<Waypoint>& transit, const ProgressReporter& progress) const;
 
   private:
+    // The error for a battery that cannot cover the charger's own cell.
+    [[nodiscard]] PlanningError batteryTooShort(int robot) const;
     // The return tree over the usable nodes once every cell out of range is left out of them (and listed
     // in `sorties`).
     [[nodiscard]] std::unique_ptr<ReturnTree>

@@ -151,7 +151,9 @@ void coverRegions(PlanningRun& run, const std::vector<int>& robots, const Charge
     const double recharge = run.parameters().real("recharge_s");
     parallelFor(robots.size(), [&](std::size_t i, int) {
         const auto robot = static_cast<std::size_t>(robots[i]);
-        const WavefrontCoverage coverage(graph, {batteries[robot], recharge},
+        const bool own =
+            robot < run.problem().batterySeconds.size() && run.problem().batterySeconds[robot] > 0.0;
+        const WavefrontCoverage coverage(graph, {batteries[robot], recharge, own},
                                          ownSpeedOf(run.problem().robotSpeeds, robot));
         WavefrontCoverage::Result& result = state.results[robot];
         result = coverage.cover(robots[i], cells[robot], chargers.cells[robot], chargers.points[robot],

@@ -210,6 +210,20 @@ class WavefrontBatteryTest : public QObject {
             QCOMPARE(QString::fromStdString(error.parameter()), QString("battery_s"));
             QVERIFY2(std::string(error.what()).find("robot 1") != std::string::npos, error.what());
         }
+        // The robot's own battery (its battery_s or its vehicle's flight time) is the robot's to mend, not
+        // the planner's battery_s.
+        problem.batterySeconds = {1.0};
+        try {
+            (void)planOnBattery(problem, 1200.0, 0.0, 0.0);
+            QFAIL("a one-second battery of the robot's own was accepted");
+        } catch (const PlanningError& error) {
+            QVERIFY(error.parameter().empty());
+            QCOMPARE(
+                std::string(error.what()),
+                std::string("robot 1's own battery (1 s) is too short to cover the cell of its charger and "
+                            "return to it: give it a longer battery_s, or its vehicle a longer flight "
+                            "time"));
+        }
     }
 
     // The walk works from far to near: the sub-cells it covers in its first half lie farther from the
