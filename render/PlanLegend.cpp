@@ -5,6 +5,7 @@
 #include "core/model/HumanUnits.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
+#include "core/planners/UncoveredLand.hpp"
 #include "render/DetectionPalette.hpp"
 #include "render/RobotPalette.hpp"
 
@@ -17,6 +18,16 @@ namespace {
 
 constexpr double kSymbolWidth = 22.0;
 constexpr double kGap = 6.0;
+
+// Land no robot covers; on batteries, how much of it lies beyond their reach rather than cut off.
+QString unreachableText(const Plan& plan) {
+    const double area = plan.metrics.unreachableAreaSquareMetres;
+    const double beyond = sortieLayerOf(plan) != nullptr ? uncoveredLand(plan).leftOutSquareMetres : 0.0;
+    if (beyond > 0.0)
+        return QStringLiteral("Not covered: %1, %2 of it beyond the batteries' reach")
+            .arg(QString::fromStdString(formatArea(area)), QString::fromStdString(formatArea(beyond)));
+    return QStringLiteral("Unreachable: %1").arg(QString::fromStdString(formatArea(area)));
+}
 constexpr double kSectionGap = 8.0;
 
 QColor colourOf(std::uint32_t rgb) {
@@ -180,12 +191,7 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
                                   QStringLiteral("Cells (smaller where the view is shorter)"),
                                   {}});
         if (plan->metrics.unreachableAreaSquareMetres > 0.0)
-            overlays.items.push_back(
-                {LegendSymbol::Unreachable,
-                 {},
-                 QStringLiteral("Unreachable: %1")
-                     .arg(QString::fromStdString(formatArea(plan->metrics.unreachableAreaSquareMetres))),
-                 {}});
+            overlays.items.push_back({LegendSymbol::Unreachable, {}, unreachableText(*plan), {}});
         if (const TimelineLayer* timeline = timelineLayerOf(*plan);
             timeline != nullptr &&
             std::any_of(timeline->robots().begin(), timeline->robots().end(),

@@ -6,6 +6,7 @@
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/model/TimelineText.hpp"
+#include "core/planners/UncoveredLand.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QBarCategoryAxis>
@@ -323,6 +324,11 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
                           .arg(hectares(metrics.coveredAreaSquareMetres))
                           .arg(metrics.coveredFraction * 100.0, 0, 'f', 1));
     unreachable_->setText(hectares(metrics.unreachableAreaSquareMetres));
+    // Robots on batteries leave land beyond their reach that a way joins to their starts: said apart.
+    if (sorties != nullptr && metrics.unreachableAreaSquareMetres > 0.0)
+        if (const double beyond = uncoveredLand(*plan).leftOutSquareMetres; beyond > 0.0)
+            unreachable_->setText(tr("%1, of which %2 beyond the batteries' reach")
+                                      .arg(hectares(metrics.unreachableAreaSquareMetres), hectares(beyond)));
     planner_->setText(QString::fromStdString(plan->planner));
     const DetectionLayer* detection = detectionLayerOf(*plan);
     summary_->setRowVisible(detection_, detection != nullptr);

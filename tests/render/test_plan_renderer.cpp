@@ -257,6 +257,23 @@ class TestPlanRenderer : public QObject {
         QVERIFY(sections[1].title.contains("charger"));
     }
 
+    // Land a battery leaves beyond its reach is not called unreachable: the legend says how much of what no
+    // robot covers lies beyond the batteries (a 200 m2 corridor, half of it beyond a 101 s battery).
+    void legendTellsLandBeyondTheBatteries() {
+        PlanningProblem problem =
+            test::drawnProblem(std::vector<std::string>(2, std::string(100, '.')), {{0.5, 0.5}});
+        problem.planner = defaultPlannerChoice("wavefront-battery");
+        problem.planner.parameters.set("battery_s", 101.0);
+        problem.planner.parameters.set("turn_s", 0.0);
+        const Plan plan = makePlanner("wavefront-battery")->plan(problem, {});
+        QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 100.0);
+        const auto sections = render::planLegend(problem.classes, &plan, {});
+        QVERIFY(std::any_of(
+            sections.back().items.begin(), sections.back().items.end(), [](const render::LegendItem& item) {
+                return item.label == "Not covered: 100 m2, 100 m2 of it beyond the batteries' reach";
+            }));
+    }
+
     // An aircraft's reach in one flight: a dashed ring of that radius round its start in the robot's colour,
     // none without one.
     void ringsTheGroundAFlightReaches() {
