@@ -11,7 +11,8 @@ namespace {
 // Below this share of the raster's width and height the picture closes in on the plans.
 constexpr double wholeRasterShare = 0.8;
 constexpr double marginShare = 0.2;
-constexpr double minimumMarginShare = 0.05;
+constexpr double minimumMarginShare = 0.05; // of the raster's extent
+constexpr double maximumMarginShare = 0.5;  // of the plans' extent, for the raster's share
 // How far past the plans, in shares of their extent, a ring may reach to widen the frame (a ring reaching
 // further is left to be cut by the frame's edge: the plans would shrink to a corner of a circle); and the
 // room left round a ring for its dashed line.
@@ -67,9 +68,11 @@ ClassGrid extentOf(const ClassGrid& grid) {
 Bounds framedBounds(const ClassGrid& grid, const Bounds& bounds, const std::vector<FrameRing>& rings) {
     const double extent = std::max(bounds.maxX - bounds.minX, bounds.maxY - bounds.minY);
     // A fifth of the plans' extent around them, and at least a twentieth of the raster's: a plan of a few
-    // cells keeps some of the land around it.
-    Bounds framed = bounds.grownBy(
-        std::max(marginShare * extent, minimumMarginShare * std::max(grid.width(), grid.height())));
+    // cells keeps some of the land around it. Never more than half the plans' extent, though: a small area
+    // of interest on a country's raster would be a speck amid its surroundings.
+    const double rasterMargin =
+        std::min(minimumMarginShare * std::max(grid.width(), grid.height()), maximumMarginShare * extent);
+    Bounds framed = bounds.grownBy(std::max(marginShare * extent, rasterMargin));
     const Bounds limit = bounds.grownBy(ringReachShare * extent);
     for (const FrameRing& ring : rings) {
         if (!(ring.radiusMetres > 0.0) || !std::isfinite(ring.centre.x) || !std::isfinite(ring.centre.y))

@@ -185,6 +185,16 @@ class TestPlanRenderer : public QObject {
         QCOMPARE(ringed.columns, 6);
         QCOMPARE(ringed.rows, 6);
         QCOMPARE(render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 1000.0}}).columns, 4);
+        // On a raster twenty times as wide, a twentieth of it (100 m) would shrink the cell to a speck: the
+        // margin stays within half the plan's extent (10 m), as above.
+        ClassGrid wide = grid;
+        wide.columns *= 20;
+        wide.rows *= 20;
+        wide.originY = grid.originY + 1000.0; // x 1000-5000, y 4000-6000 round the cell
+        wide.values.assign(static_cast<std::size_t>(wide.columns) * static_cast<std::size_t>(wide.rows), 1);
+        const ClassGrid wideFrame = render::planFrame(wide, {&small});
+        QCOMPARE(wideFrame.originX, 1090.0);
+        QCOMPARE(wideFrame.columns, 4);
         // Several plans share one frame that holds them all; none at all shows the raster.
         QCOMPARE(render::planFrame(grid, {&small, &whole}).columns, grid.columns);
         QCOMPARE(render::planFrame(grid, {nullptr}).columns, grid.columns);
