@@ -323,12 +323,17 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     covered_->setText(tr("%1 (%2 % of the passable area)")
                           .arg(hectares(metrics.coveredAreaSquareMetres))
                           .arg(metrics.coveredFraction * 100.0, 0, 'f', 1));
-    unreachable_->setText(hectares(metrics.unreachableAreaSquareMetres));
-    // Robots on batteries leave land beyond their reach that a way joins to their starts: said apart.
-    if (sorties != nullptr && metrics.unreachableAreaSquareMetres > 0.0)
-        if (const double beyond = uncoveredLand(*plan).leftOutSquareMetres; beyond > 0.0)
-            unreachable_->setText(tr("%1, of which %2 beyond the batteries' reach")
-                                      .arg(hectares(metrics.unreachableAreaSquareMetres), hectares(beyond)));
+    // Robots on batteries leave land beyond their reach that a way joins to their starts: said apart, and
+    // the row is then about land not covered, not only land no robot can reach.
+    const double beyond = sorties != nullptr && metrics.unreachableAreaSquareMetres > 0.0
+                              ? uncoveredLand(*plan).leftOutSquareMetres
+                              : 0.0;
+    unreachable_->setText(beyond > 0.0
+                              ? tr("%1, of which %2 beyond the batteries' reach")
+                                    .arg(hectares(metrics.unreachableAreaSquareMetres), hectares(beyond))
+                              : hectares(metrics.unreachableAreaSquareMetres));
+    if (auto* label = qobject_cast<QLabel*>(summary_->labelForField(unreachable_)))
+        label->setText(beyond > 0.0 ? tr("Not covered") : tr("Unreachable"));
     planner_->setText(QString::fromStdString(plan->planner));
     const DetectionLayer* detection = detectionLayerOf(*plan);
     summary_->setRowVisible(detection_, detection != nullptr);

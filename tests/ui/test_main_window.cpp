@@ -26,6 +26,7 @@
 #include <QChartView>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFormLayout>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -117,6 +118,30 @@ class TestMainWindow : public QObject {
         QVERIFY2(table->item(0, 6)->toolTip().contains("charges of 10 min each"),
                  qPrintable(table->item(0, 6)->toolTip()));
         QVERIFY2(table->item(0, 4)->toolTip().contains("charging"), qPrintable(table->item(0, 4)->toolTip()));
+    }
+
+    // Land a battery leaves beyond its reach is told apart from land no robot can reach: the row says "Not
+    // covered" and how much lies beyond the batteries; a plan without sorties keeps "Unreachable".
+    void resultsTellLandBeyondTheBatteries() {
+        PlanningProblem problem =
+            test::drawnProblem(std::vector<std::string>(2, std::string(100, '.')), {{0.5, 0.5}});
+        problem.planner = defaultPlannerChoice("wavefront-battery");
+        problem.planner.parameters.set("battery_s", 101.0);
+        const Plan plan = makePlanner("wavefront-battery")->plan(problem, {});
+        ui::ResultsPanel panel;
+        panel.showPlan(&plan, {});
+        auto* value = panel.findChild<QLabel*>(QStringLiteral("unreachableLabel"));
+        QVERIFY(value != nullptr);
+        QCOMPARE(value->text(), QStringLiteral("0.0 ha, of which 0.0 ha beyond the batteries' reach"));
+        auto* summary = value->parentWidget()->findChildren<QFormLayout*>().value(0);
+        QVERIFY(summary != nullptr);
+        auto* label = qobject_cast<QLabel*>(summary->labelForField(value));
+        QVERIFY(label != nullptr);
+        QCOMPARE(label->text(), QStringLiteral("Not covered"));
+        problem.planner = defaultPlannerChoice("mcpp-mlct");
+        const Plan other = makePlanner("mcpp-mlct")->plan(problem, {});
+        panel.showPlan(&other, {});
+        QCOMPARE(label->text(), QStringLiteral("Unreachable"));
     }
 
     // A CPPIED plan shows its detection figures under the summary; another planner's plan hides the row.
