@@ -271,6 +271,8 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, detection_,
                               timeline_, warnings_, notes_, waypointFiles_})
             label->setText(QStringLiteral("–"));
+        if (auto* label = qobject_cast<QLabel*>(summary_->labelForField(unreachable_)))
+            label->setText(tr("Unreachable"));
         summary_->setRowVisible(detection_, false);
         summary_->setRowVisible(timeline_, false);
         summary_->setRowVisible(notes_, false);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <queue>
 
 namespace mcpp {
@@ -18,20 +19,22 @@ struct Growth {
     std::vector<int> reachedBy;  // by cell: that charger's robot, or -1
 };
 
-// Ways from every start cell at once through neighbouring cells (centre to centre), quickest first, each
-// robot at its own speed where it has one; a robot's way enters a cell only where mayEnter(robot, cell,
-// seconds there) allows.
+// Ways from the start cells of `robots`, all of one speed, at once through neighbouring cells (centre to
+// centre), quickest first; a robot's way enters a cell only where mayEnter(robot, cell, seconds there)
+// allows.
 template <typename MayEnter>
 Growth growFromChargers(const CellGraph& graph, const std::vector<int>& startCells,
-                        const std::vector<double>& robotSpeeds, MayEnter mayEnter) {
+                        const std::vector<int>& robots, const std::vector<double>& robotSpeeds,
+                        MayEnter mayEnter) {
     Growth growth{std::vector<double>(graph.size(), std::numeric_limits<double>::infinity()),
                   std::vector<int>(graph.size(), -1)};
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-    for (std::size_t robot = 0; robot < startCells.size(); ++robot) {
-        growth.seconds[static_cast<std::size_t>(startCells[robot])] = 0.0;
-        growth.reachedBy[static_cast<std::size_t>(startCells[robot])] = static_cast<int>(robot);
-        queue.emplace(0.0, startCells[robot]);
+    for (const int robot : robots) {
+        const auto start = static_cast<std::size_t>(startCells[static_cast<std::size_t>(robot)]);
+        growth.seconds[start] = 0.0;
+        growth.reachedBy[start] = robot;
+        queue.emplace(0.0, static_cast<int>(start));
     }
     while (!queue.empty()) {
         const auto [reached, id] = queue.top();
@@ -59,12 +62,35 @@ Growth growFromChargers(const CellGraph& graph, const std::vector<int>& startCel
     return growth;
 }
 
+// The quickest way from some charger to every cell, each robot at its own speed. Robots of one speed grow
+// together; those of other speeds apart, the quickest kept cell by cell: grown together, a slow robot's way
+// would bar a fast one's from the land beyond it.
+template <typename MayEnter>
+Growth growBySpeed(const CellGraph& graph, const std::vector<int>& startCells,
+                   const std::vector<double>& robotSpeeds, MayEnter mayEnter) {
+    std::map<double, std::vector<int>> robotsBySpeed; // 0: the cells' speeds
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot)
+        robotsBySpeed[ownSpeedOf(robotSpeeds, robot)].push_back(static_cast<int>(robot));
+    Growth quickest{std::vector<double>(graph.size(), std::numeric_limits<double>::infinity()),
+                    std::vector<int>(graph.size(), -1)};
+    for (const auto& group : robotsBySpeed) {
+        Growth growth = growFromChargers(graph, startCells, group.second, robotSpeeds, mayEnter);
+        if (robotsBySpeed.size() == 1)
+            return growth;
+        for (std::size_t id = 0; id < graph.size(); ++id)
+            if (growth.seconds[id] < quickest.seconds[id]) {
+                quickest.seconds[id] = growth.seconds[id];
+                quickest.reachedBy[id] = growth.reachedBy[id];
+            }
+    }
+    return quickest;
+}
+
 } // namespace
 
 std::vector<double> BatteryRange::secondsFromChargers(const CellGraph& graph,
                                                       const std::vector<int>& startCells) const {
-    return growFromChargers(graph, startCells, robotSpeeds, [](int, std::size_t, double) { return true; })
-        .seconds;
+    return growBySpeed(graph, startCells, robotSpeeds, [](int, std::size_t, double) { return true; }).seconds;
 }
 
 BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& graph,
@@ -99,7 +125,7 @@ std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>
                                         const std::vector<int>& leftOutBy) const {
     // A robot's way keeps to its own region and the cells others left out, within its range.
     const Growth growth =
-        growFromChargers(graph, startCells, robotSpeeds, [&](int robot, std::size_t cell, double seconds) {
+        growBySpeed(graph, startCells, robotSpeeds, [&](int robot, std::size_t cell, double seconds) {
             const bool open = leftOutBy[cell] >= 0 && leftOutBy[cell] != robot;
             return open ? withinRange(seconds) : robotOfCell[cell] == robot;
         });

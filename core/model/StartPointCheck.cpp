@@ -56,7 +56,7 @@ std::string whyOutside(std::uint8_t reason) {
     case ClassGrid::outsideUnlisted:
         return "its class has no row in the class table and is left out";
     default:
-        return "a nodata pixel, or outside the area of interest";
+        return "it is left out of the task area";
     }
 }
 

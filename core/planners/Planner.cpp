@@ -176,9 +176,10 @@ std::string unevenPlanMessage(const PlanMetrics& metrics, const PlannerDescripti
            " less than half of a fair share, and the longest path takes " + ratio.str() +
            " times the lower bound: " +
            (planner.fliesOnBatteries()
-                ? "a slow robot's battery leaves it little within reach of its charger, and starts close "
-                  "together leave robots walled in by the others' regions; a charger nearer the work, or "
-                  "starts spread over the area, even the plan out"
+                ? "a short battery, or a slow robot's, leaves a robot little within reach of its charger, "
+                  "and "
+                  "starts close together leave robots walled in by the others' regions; a charger nearer "
+                  "the work, or starts spread over the area, even the plan out"
                 : "starts close together leave robots walled in by the others' regions; spread over the "
                   "area, they even the plan out");
 }

@@ -241,9 +241,10 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"));
     if (someOwnSpeed(run.problem().robotSpeeds))
         allocator.setPaces(robotPaces(plan.cells, run.problem().robotSpeeds, startCells.size()));
-    const CellGraph withinRange = cellsWithinRange(run, range, chargers.cells);
-    const RegionAllocation division = run.stage(
-        "allocation", [&] { return allocator.allocate(withinRange, chargers.cells, run.progress()); });
+    const RegionAllocation division = run.stage("allocation", [&] {
+        return allocator.allocate(cellsWithinRange(run, range, chargers.cells), chargers.cells,
+                                  run.progress());
+    });
     RobotsOnBatteries robots =
         run.stage("paths", [&] { return coverDivision(run, division, range, chargers, batteries); });
     addPathsAndSorties(run, robots);

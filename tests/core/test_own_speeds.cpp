@@ -1,3 +1,4 @@
+#include "core/allocation/BatteryRange.hpp"
 #include "core/coverage/OwnSpeeds.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/PlanInvariants.hpp"
@@ -125,6 +126,30 @@ class OwnSpeedsTest : public QObject {
         const double fastArea = plan.metrics.robots[1].areaSquareMetres;
         QVERIFY2(fastArea > 1.5 * slowArea,
                  qPrintable(QStringLiteral("%1 against %2").arg(fastArea).arg(slowArea)));
+    }
+
+    // A drone behind a slow rover's charger, on a corridor: the rover's slow way does not bar the drone's
+    // from the land past the rover, which only the drone reaches on one charge (its region stops at the
+    // rover's, so the land is left out by the rover rather than beyond every charger).
+    void aSlowRobotDoesNotBarAFastOnesReach() {
+        PlanningProblem problem =
+            test::drawnProblem(std::vector<std::string>(2, std::string(100, '.')), {{0.5, 0.5}, {10.5, 0.5}});
+        problem.robotSpeeds = {5.0, 0.0};
+        problem.planner = defaultPlannerChoice("wavefront-battery");
+        problem.planner.parameters.set("battery_s", 101.0);
+        problem.planner.parameters.set("turn_s", 0.0);
+        const Plan plan = makePlanner("wavefront-battery")->plan(problem, {});
+        const auto violations =
+            test::checkAllInvariants(problem, plan, makePlanner("wavefront-battery")->description().promises);
+        QVERIFY2(violations.empty(), test::describe(violations).c_str());
+        QCOMPARE(issueCount(plan, "beyond-every-charger"), 0);
+        // The far end is the drone's 98 m away at 5 m/s, not the rover's 88 m at 1 m/s.
+        const BatteryRange range{101.0, problem.robotSpeeds};
+        const std::vector<double> seconds = range.secondsFromChargers(plan.cells, plan.regions.startCell);
+        const int farEnd = plan.cells.cellAt({problem.grid.originX + 99.0, problem.grid.originY - 1.0});
+        QVERIFY(farEnd >= 0);
+        QVERIFY2(std::abs(seconds[static_cast<std::size_t>(farEnd)] - 98.0 / 5.0) < 1e-9,
+                 qPrintable(QString::number(seconds[static_cast<std::size_t>(farEnd)])));
     }
 
     // A robot walled into a pocket is still named, though the parts' even shares no longer bound the plan.

@@ -142,6 +142,9 @@ class TestMainWindow : public QObject {
         const Plan other = makePlanner("mcpp-mlct")->plan(problem, {});
         panel.showPlan(&other, {});
         QCOMPARE(label->text(), QStringLiteral("Unreachable"));
+        panel.showPlan(&plan, {});
+        panel.showPlan(nullptr, {});
+        QCOMPARE(label->text(), QStringLiteral("Unreachable"));
     }
 
     // A CPPIED plan shows its detection figures under the summary; another planner's plan hides the row.
