@@ -1,5 +1,7 @@
 #include "core/planners/UncoveredLand.hpp"
 
+#include "core/allocation/StartComponents.hpp"
+
 #include <vector>
 
 namespace mcpp {
@@ -10,7 +12,7 @@ bool heldByNoRegion(const Plan& plan, std::size_t id) {
 }
 
 // Marks every cell a way through neighbouring cells joins to `first` (those marked already excepted) with
-// `mark`; returns the cells marked.
+// `mark`; returns the cells marked. For the pieces no start reaches (componentsWithStarts finds the rest).
 std::vector<int> markJoined(const CellGraph& graph, int first, std::vector<int>& marks, int mark) {
     std::vector<int> joined{first};
     marks[static_cast<std::size_t>(first)] = mark;
@@ -29,10 +31,14 @@ UncoveredLand uncoveredLand(const Plan& plan) {
     const CellGraph& graph = plan.cells;
     constexpr int joinedToAStart = 1;
     constexpr int cutOff = 2;
-    std::vector<int> marks(graph.size(), 0);
+    std::vector<int> starts;
     for (const int start : plan.regions.startCell)
-        if (graph.contains(start) && marks[static_cast<std::size_t>(start)] == 0)
-            markJoined(graph, start, marks, joinedToAStart);
+        if (graph.contains(start))
+            starts.push_back(start);
+    std::vector<int> marks(graph.size(), 0);
+    for (const StartComponent& part : componentsWithStarts(graph, starts))
+        for (const int cell : part.cells)
+            marks[static_cast<std::size_t>(cell)] = joinedToAStart;
     UncoveredLand land;
     for (std::size_t id = 0; id < graph.size(); ++id) {
         if (!heldByNoRegion(plan, id))
