@@ -97,26 +97,13 @@ BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& gra
                                                             const std::vector<int>& startCells) const {
     const std::vector<double> seconds = secondsFromChargers(graph, startCells);
     AllocationGraph result;
-    std::vector<char> inRange(graph.size(), 0);
+    std::vector<char> outOfRange(graph.size(), 0);
     for (std::size_t id = 0; id < graph.size(); ++id) {
-        inRange[id] = withinRange(seconds[id]) ? 1 : 0;
-        if (inRange[id] == 0 && std::isfinite(seconds[id]))
+        outOfRange[id] = withinRange(seconds[id]) ? 0 : 1;
+        if (outOfRange[id] != 0 && std::isfinite(seconds[id]))
             result.outOfRange.push_back(static_cast<int>(id));
     }
-    std::vector<int> offsets{0};
-    std::vector<int> neighbours;
-    for (std::size_t id = 0; id < graph.size(); ++id) {
-        if (inRange[id] != 0)
-            for (const int next : graph.neighbours(static_cast<int>(id)))
-                if (inRange[static_cast<std::size_t>(next)] != 0)
-                    neighbours.push_back(next);
-        offsets.push_back(static_cast<int>(neighbours.size()));
-    }
-    result.graph = CellGraph(graph.frame(), graph.records(),
-                             NeighbourTopology(std::move(offsets), std::move(neighbours)));
-    result.graph.setTurnFigures(graph.turnFigures());
-    result.graph.fieldsOfView = graph.fieldsOfView;
-    result.graph.passableAreaSquareMetres = graph.passableAreaSquareMetres;
+    result.graph = cutOffCells(graph, outOfRange);
     return result;
 }
 
@@ -139,6 +126,24 @@ std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>
     std::sort(gained.begin(), gained.end());
     gained.erase(std::unique(gained.begin(), gained.end()), gained.end());
     return gained;
+}
+
+CellGraph cutOffCells(const CellGraph& graph, const std::vector<char>& cutOff) {
+    std::vector<int> offsets{0};
+    std::vector<int> neighbours;
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        if (cutOff[id] == 0)
+            for (const int next : graph.neighbours(static_cast<int>(id)))
+                if (cutOff[static_cast<std::size_t>(next)] == 0)
+                    neighbours.push_back(next);
+        offsets.push_back(static_cast<int>(neighbours.size()));
+    }
+    CellGraph result(graph.frame(), graph.records(),
+                     NeighbourTopology(std::move(offsets), std::move(neighbours)));
+    result.setTurnFigures(graph.turnFigures());
+    result.fieldsOfView = graph.fieldsOfView;
+    result.passableAreaSquareMetres = graph.passableAreaSquareMetres;
+    return result;
 }
 
 } // namespace mcpp

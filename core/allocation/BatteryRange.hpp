@@ -39,4 +39,8 @@ struct BatteryRange {
                               const std::vector<int>& startCells, const std::vector<int>& leftOutBy) const;
 };
 
+// The same cells and ids with those marked in `cutOff` (by cell, nonzero) cut off from their neighbours, so
+// that no region grown over it takes them and no region's balance counts them.
+[[nodiscard]] CellGraph cutOffCells(const CellGraph& graph, const std::vector<char>& cutOff);
+
 } // namespace mcpp
