@@ -62,20 +62,21 @@ Growth growFromChargers(const CellGraph& graph, const std::vector<int>& startCel
     return growth;
 }
 
-// The quickest way from some charger to every cell, each robot at its own speed. Robots of one speed grow
-// together; those of other speeds apart, the quickest kept cell by cell: grown together, a slow robot's way
-// would bar a fast one's from the land beyond it.
+// The quickest way from some charger to every cell, each robot at its own speed. Robots of one speed and
+// one battery grow together; others apart, the quickest kept cell by cell: grown together, a slow robot's
+// way would bar a fast one's from the land beyond it, and a short battery's a long one's.
 template <typename MayEnter>
-Growth growBySpeed(const CellGraph& graph, const std::vector<int>& startCells,
-                   const std::vector<double>& robotSpeeds, MayEnter mayEnter) {
-    std::map<double, std::vector<int>> robotsBySpeed; // 0: the cells' speeds
+Growth growByKind(const CellGraph& graph, const std::vector<int>& startCells, const BatteryRange& range,
+                  MayEnter mayEnter) {
+    std::map<std::pair<double, double>, std::vector<int>> robotsByKind; // speed 0: the cells' speeds
     for (std::size_t robot = 0; robot < startCells.size(); ++robot)
-        robotsBySpeed[ownSpeedOf(robotSpeeds, robot)].push_back(static_cast<int>(robot));
+        robotsByKind[{ownSpeedOf(range.robotSpeeds, robot), range.enduranceOf(robot)}].push_back(
+            static_cast<int>(robot));
     Growth quickest{std::vector<double>(graph.size(), std::numeric_limits<double>::infinity()),
                     std::vector<int>(graph.size(), -1)};
-    for (const auto& group : robotsBySpeed) {
-        Growth growth = growFromChargers(graph, startCells, group.second, robotSpeeds, mayEnter);
-        if (robotsBySpeed.size() == 1)
+    for (const auto& group : robotsByKind) {
+        Growth growth = growFromChargers(graph, startCells, group.second, range.robotSpeeds, mayEnter);
+        if (robotsByKind.size() == 1)
             return growth;
         for (std::size_t id = 0; id < graph.size(); ++id)
             if (growth.seconds[id] < quickest.seconds[id]) {
@@ -90,16 +91,20 @@ Growth growBySpeed(const CellGraph& graph, const std::vector<int>& startCells,
 
 std::vector<double> BatteryRange::secondsFromChargers(const CellGraph& graph,
                                                       const std::vector<int>& startCells) const {
-    return growBySpeed(graph, startCells, robotSpeeds, [](int, std::size_t, double) { return true; }).seconds;
+    return growByKind(graph, startCells, *this, [](int, std::size_t, double) { return true; }).seconds;
 }
 
 BatteryRange::AllocationGraph BatteryRange::allocationGraph(const CellGraph& graph,
                                                             const std::vector<int>& startCells) const {
     const std::vector<double> seconds = secondsFromChargers(graph, startCells);
+    // Ways that stop where their robot's battery runs out reach exactly the cells in range.
+    const Growth inRange = growByKind(graph, startCells, *this, [&](int robot, std::size_t, double reached) {
+        return withinRangeOf(static_cast<std::size_t>(robot), reached);
+    });
     AllocationGraph result;
     std::vector<char> outOfRange(graph.size(), 0);
     for (std::size_t id = 0; id < graph.size(); ++id) {
-        outOfRange[id] = withinRange(seconds[id]) ? 0 : 1;
+        outOfRange[id] = inRange.reachedBy[id] >= 0 ? 0 : 1;
         if (outOfRange[id] != 0 && std::isfinite(seconds[id]))
             result.outOfRange.push_back(static_cast<int>(id));
     }
@@ -112,9 +117,10 @@ std::vector<int> BatteryRange::handOver(const CellGraph& graph, std::vector<int>
                                         const std::vector<int>& leftOutBy) const {
     // A robot's way keeps to its own region and the cells others left out, within its range.
     const Growth growth =
-        growBySpeed(graph, startCells, robotSpeeds, [&](int robot, std::size_t cell, double seconds) {
+        growByKind(graph, startCells, *this, [&](int robot, std::size_t cell, double seconds) {
             const bool open = leftOutBy[cell] >= 0 && leftOutBy[cell] != robot;
-            return open ? withinRange(seconds) : robotOfCell[cell] == robot;
+            return open ? withinRangeOf(static_cast<std::size_t>(robot), seconds)
+                        : robotOfCell[cell] == robot;
         });
     std::vector<int> gained;
     for (std::size_t id = 0; id < leftOutBy.size(); ++id) {

@@ -34,8 +34,13 @@ std::string beyondEveryChargerMessage(const CellGraph& cells, const std::vector<
     double area = 0.0;
     for (const int id : ids)
         area += cells.cell(id).passableAreaSquareMetres;
-    return formatArea(area) + " lies beyond half the battery (" + formatDuration(range.enduranceSeconds) +
-           ") from every charger and is not covered";
+    const auto [shortest, longest] =
+        std::minmax_element(range.robotEndurances.begin(), range.robotEndurances.end());
+    const std::string batteries = shortest == range.robotEndurances.end() || *shortest == *longest
+                                      ? "half the battery (" + formatDuration(range.enduranceSeconds) + ")"
+                                      : "half of each robot's battery (" + formatDuration(*shortest) +
+                                            " to " + formatDuration(*longest) + ")";
+    return formatArea(area) + " lies beyond " + batteries + " from every charger and is not covered";
 }
 
 // Each robot's endurance: its own where the problem gives one, else the planner's.
@@ -323,8 +328,8 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     plan.cells = gridStage(run, GridCellRule::WholeCell);
     const std::vector<int> startCells = run.locateStarts();
     const std::vector<double> batteries = robotBatteries(run.problem(), parameters.real("battery_s"));
-    const BatteryRange range{*std::max_element(batteries.begin(), batteries.end()),
-                             run.problem().robotSpeeds};
+    const BatteryRange range{*std::max_element(batteries.begin(), batteries.end()), run.problem().robotSpeeds,
+                             batteries};
     const Chargers chargers =
         run.stage("chargers", [&] { return locateChargers(run, startCells, batteries); });
     // Robots of their own speeds get work in proportion to their paces over the cells.

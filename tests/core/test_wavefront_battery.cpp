@@ -145,6 +145,32 @@ class WavefrontBatteryTest : public QObject {
         QVERIFY(warned);
     }
 
+    // Each robot's range is its own battery's: robot 1 at the west end of a 50-cell corridor on 40 s reaches
+    // 10 cells out (20 m) and back, robot 2 at the east end on 120 s 30 cells. The 10 cells between are
+    // beyond every charger and no region is given them; judged on the longer battery alone, robot 1 was
+    // given them and left them out of its sorties.
+    void eachRobotsRangeIsItsOwnBatterys() {
+        PlanningProblem problem =
+            test::drawnProblem(rowsOf(2, std::string(100, '.')), {{0.5, 0.5}, {99.5, 0.5}});
+        problem.batterySeconds = {40.0, 0.0};
+        const Plan plan = planOnBattery(problem, 120.0, 10.0, 0.0);
+        QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
+        std::string beyondEveryCharger;
+        for (const PlanIssue& issue : plan.issues)
+            if (issue.code == "beyond-every-charger")
+                beyondEveryCharger = issue.message;
+        QVERIFY2(beyondEveryCharger.find("half of each robot's battery (40 s to 2 min) from every charger") !=
+                     std::string::npos,
+                 beyondEveryCharger.c_str());
+        for (std::size_t id = 0; id < plan.cells.size(); ++id) {
+            const int column = plan.cells.cell(static_cast<int>(id)).column;
+            if (column > 10 && column < 19)
+                QCOMPARE(plan.regions.robotOfCell[id], -1);
+        }
+        QVERIFY2(sortiesOf(plan, 0).outOfRangeAreaSquareMetres <= 2 * 4.0,
+                 qPrintable(QString::number(sortiesOf(plan, 0).outOfRangeAreaSquareMetres)));
+    }
+
     // Robots at cells 0 and 30 of a 50-cell corridor, 70 s of battery (17 cells out and back): the even
     // split gives robot 1 cells beyond its reach that robot 2's charger reaches; they are handed over.
     void cellsOutOfOwnRangeGoToARobotThatReachesThem() {
