@@ -7,6 +7,7 @@
 #include "core/parameters/NumberText.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
+#include "io/AutopilotMission.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/internal/ClassTableJson.hpp"
 #include "io/internal/EventsJson.hpp"
@@ -952,10 +953,35 @@ std::optional<std::string> batteriesFromFlightTimesNote(const Mission& mission,
 
 } // namespace
 
+namespace {
+
+// Each robot's time in the field on a plan: its waypoint files' flights and the turnarounds between them
+// where its vehicle's split mission ends later than its path, else its path's time. Unset where no robot's
+// does.
+std::function<std::vector<double>(const Plan&)> fieldSecondsOf(const Mission& mission,
+                                                               const std::vector<VehicleSettings>& vehicles) {
+    if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater))
+        return {};
+    return [vehicles, settings = mission.exports](const Plan& plan) {
+        std::vector<double> seconds;
+        for (std::size_t robot = 0; robot < plan.paths.size(); ++robot) {
+            const CoveragePath& path = plan.paths[robot];
+            const double field = robot < vehicles.size() && splitMissionEndsLater(vehicles[robot])
+                                     ? missionSize(path, plan.cells, vehicles[robot], settings).fieldSeconds
+                                     : 0.0;
+            seconds.push_back(field > 0.0 ? field : path.timeSeconds);
+        }
+        return seconds;
+    };
+}
+
+} // namespace
+
 void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     problem.batterySeconds = robotBatteries(mission);
     problem.events = mission.events;
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
+    problem.fieldSeconds = fieldSecondsOf(mission, vehicles);
     applyCruiseSpeed(mission, vehicles, problem);
     noteAircraftAltitudes(mission, vehicles, problem.notes);
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))

@@ -11,6 +11,27 @@ bool someOwnSpeed(const std::vector<double>& speeds) {
     return std::any_of(speeds.begin(), speeds.end(), [](double speed) { return speed > 0.0; });
 }
 
+bool someFieldPace(const std::vector<double>& fieldPaces) {
+    return std::any_of(fieldPaces.begin(), fieldPaces.end(),
+                       [](double pace) { return pace > 0.0 && pace != 1.0; });
+}
+
+double fieldPaceOf(const std::vector<double>& fieldPaces, std::size_t robot) {
+    return robot < fieldPaces.size() && fieldPaces[robot] > 0.0 ? fieldPaces[robot] : 1.0;
+}
+
+std::vector<double> withFieldPaces(const std::vector<double>& paces, const std::vector<double>& fieldPaces,
+                                   std::size_t robots) {
+    std::vector<double> paced(robots, 1.0);
+    for (std::size_t robot = 0; robot < robots; ++robot)
+        paced[robot] = paceOf(paces, robot) * fieldPaceOf(fieldPaces, robot);
+    return paced;
+}
+
+double fieldSeconds(const CoveragePath& path, const std::vector<double>& fieldPaces) {
+    return path.timeSeconds * fieldPaceOf(fieldPaces, static_cast<std::size_t>(path.robot));
+}
+
 double ownSpeedOf(const std::vector<double>& speeds, std::size_t robot) {
     return robot < speeds.size() && speeds[robot] > 0.0 ? speeds[robot] : 0.0;
 }

@@ -43,5 +43,14 @@ void driveAtOwnSpeeds(std::vector<CoveragePath>& paths, const CellGraph& graph,
 [[nodiscard]] inline double paceOf(const std::vector<double>& paces, std::size_t robot) {
     return robot < paces.size() ? paces[robot] : 1.0;
 }
+// Whether some robot spends more (or less) time in the field than on its path (PlanningRun::fieldPaces).
+[[nodiscard]] bool someFieldPace(const std::vector<double>& fieldPaces);
+// The robot's field pace; 1 where none is given.
+[[nodiscard]] double fieldPaceOf(const std::vector<double>& fieldPaces, std::size_t robot);
+// `paces` (empty: 1 each) times each robot's field pace, for `robots` robots.
+[[nodiscard]] std::vector<double> withFieldPaces(const std::vector<double>& paces,
+                                                 const std::vector<double>& fieldPaces, std::size_t robots);
+// The path's time in the field: its time times its robot's field pace.
+[[nodiscard]] double fieldSeconds(const CoveragePath& path, const std::vector<double>& fieldPaces);
 
 } // namespace mcpp

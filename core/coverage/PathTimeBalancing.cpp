@@ -1,5 +1,6 @@
 #include "core/coverage/PathTimeBalancing.hpp"
 
+#include "core/coverage/OwnSpeeds.hpp"
 #include "core/model/LocalConnectivity.hpp"
 #include "core/model/ParallelFor.hpp"
 
@@ -14,13 +15,13 @@ constexpr int trialsPerStep = 32;
 // Cells a connectivity check may visit: a giver's cell whose neighbours do not meet again nearby is kept.
 constexpr std::size_t searchLimit = 256;
 
-// Within 0.2 % of the mean path time: what is left would cost more planning than it saves.
-bool balanced(const std::vector<CoveragePath>& paths) {
+// Within 0.2 % of the mean time in the field: what is left would cost more planning than it saves.
+bool balanced(const std::vector<CoveragePath>& paths, const std::vector<double>& fieldPaces) {
     double longest = 0.0;
     double total = 0.0;
     for (const CoveragePath& path : paths) {
-        longest = std::max(longest, path.timeSeconds);
-        total += path.timeSeconds;
+        longest = std::max(longest, fieldSeconds(path, fieldPaces));
+        total += fieldSeconds(path, fieldPaces);
     }
     return paths.empty() || longest <= 1.002 * total / static_cast<double>(paths.size());
 }
@@ -29,9 +30,10 @@ bool balanced(const std::vector<CoveragePath>& paths) {
 class Balancer {
   public:
     Balancer(const CellGraph& graph, const SpanningTreeCoverage& coverage, RegionAllocation& regions,
-             std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts)
+             std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts,
+             const std::vector<double>& fieldPaces)
         : graph_(graph), coverage_(coverage), regions_(regions), paths_(paths), starts_(starts),
-          cells_(cellsByRobot(regions)), connectivity_(graph),
+          fieldPaces_(fieldPaces), cells_(cellsByRobot(regions)), connectivity_(graph),
           touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
         // Costs in the units of the cells as they are now (a turn calibration may have changed them).
         regions_.costSeconds.assign(paths.size(), 0.0);
@@ -42,12 +44,15 @@ class Balancer {
         }
     }
 
+    // A robot's path's time in the field.
+    [[nodiscard]] double seconds(std::size_t robot) const { return fieldSeconds(paths_[robot], fieldPaces_); }
+
     [[nodiscard]] std::size_t longest() const {
-        return static_cast<std::size_t>(std::max_element(paths_.begin(), paths_.end(),
-                                                         [](const CoveragePath& a, const CoveragePath& b) {
-                                                             return a.timeSeconds < b.timeSeconds;
-                                                         }) -
-                                        paths_.begin());
+        std::size_t longest = 0;
+        for (std::size_t robot = 1; robot < paths_.size(); ++robot)
+            if (seconds(robot) > seconds(longest))
+                longest = robot;
+        return longest;
     }
 
     // Regions reachable from `from` through neighbouring regions, each with the chain leading to it, the
@@ -65,8 +70,7 @@ class Balancer {
                 }
         std::vector<int> targets(queue.begin() + 1, queue.end());
         std::stable_sort(targets.begin(), targets.end(), [&](int a, int b) {
-            return paths_[static_cast<std::size_t>(a)].timeSeconds <
-                   paths_[static_cast<std::size_t>(b)].timeSeconds;
+            return seconds(static_cast<std::size_t>(a)) < seconds(static_cast<std::size_t>(b));
         });
         std::vector<std::vector<int>> chains;
         for (int target : targets) {
@@ -118,7 +122,7 @@ class Balancer {
         bool shorter = true;
         for (std::size_t link = 0; link < chain.size(); ++link) {
             planned += cells_[static_cast<std::size_t>(chain[link])].size();
-            shorter = shorter && replanned[link].timeSeconds < makespan - 1e-9;
+            shorter = shorter && fieldSeconds(replanned[link], fieldPaces_) < makespan - 1e-9;
         }
         if (!shorter) {
             undo(passed);
@@ -191,6 +195,7 @@ class Balancer {
     RegionAllocation& regions_;
     std::vector<CoveragePath>& paths_;
     const std::vector<MapPoint>& starts_;
+    const std::vector<double>& fieldPaces_;
     std::vector<std::vector<int>> cells_;
     std::vector<std::vector<int>> scratchByWorker_; // regionPath's index, one per thread, made on first use
     LocalConnectivity connectivity_;
@@ -202,20 +207,20 @@ class Balancer {
 int PathTimeBalancing::balance(const CellGraph& graph, RegionAllocation& regions,
                                std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts,
                                const ProgressReporter& progress) const {
-    if (paths.size() < 2 || balanced(paths))
+    if (paths.size() < 2 || balanced(paths, fieldPaces_))
         return 0;
-    Balancer balancer(graph, coverage_, regions, paths, starts);
+    Balancer balancer(graph, coverage_, regions, paths, starts, fieldPaces_);
     std::size_t spent = 0;
     int moved = 0;
-    while (spent < cellBudget_ && !balanced(paths)) {
+    while (spent < cellBudget_ && !balanced(paths, fieldPaces_)) {
         progress.throwIfCancelled();
         const std::size_t longest = balancer.longest();
-        const double makespan = paths[longest].timeSeconds;
+        const double makespan = balancer.seconds(longest);
         bool accepted = false;
         int trials = 0;
         for (const auto& chain : balancer.chainsFrom(static_cast<int>(longest))) {
             if (trials++ == trialsPerStep ||
-                paths[static_cast<std::size_t>(chain.back())].timeSeconds >= makespan)
+                balancer.seconds(static_cast<std::size_t>(chain.back())) >= makespan)
                 break;
             if (spent + balancer.cellsIn(chain) > cellBudget_)
                 continue;

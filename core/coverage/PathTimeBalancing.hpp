@@ -23,6 +23,9 @@ class PathTimeBalancing {
     PathTimeBalancing(const SpanningTreeCoverage& coverage, std::size_t cellBudget)
         : coverage_(coverage), cellBudget_(cellBudget) {}
 
+    // Each robot's field pace (PlanningRun::fieldPaces): the paths' times in the field are balanced.
+    void setFieldPaces(std::vector<double> fieldPaces) { fieldPaces_ = std::move(fieldPaces); }
+
     // The budget planners give it: about half a second of replanning on any map.
     [[nodiscard]] static std::size_t budgetFor(const CellGraph& graph) {
         return std::min<std::size_t>(250'000 + 2 * graph.size(), 1'000'000);
@@ -35,6 +38,7 @@ class PathTimeBalancing {
   private:
     const SpanningTreeCoverage& coverage_;
     std::size_t cellBudget_;
+    std::vector<double> fieldPaces_;
 };
 
 } // namespace mcpp

@@ -7,10 +7,13 @@
 #include "core/model/SpeedEvent.hpp"
 #include "core/parameters/PlannerChoice.hpp"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
 namespace mcpp {
+
+struct Plan;
 
 // The most robots one plan takes: robot numbers label region outlines in 16 bits (LabelGrid).
 inline constexpr std::size_t mostRobots = 32767;
@@ -26,6 +29,11 @@ struct PlanningProblem {
     // robots); missing or 0: the class table's speeds. Every robot's times are at its own speed, and a
     // planner that balancesOwnSpeeds gives the faster robots more.
     std::vector<double> robotSpeeds;
+    // Each robot's time in the field on a plan (its waypoint files' flights and the turnarounds between
+    // them), given where some robot's differs from its path's time (an aircraft with a flight time); unset:
+    // the paths' times. A planner that balancesFieldTime plans again on each robot's field time per second
+    // of its path as measured, while that brings the last robot home sooner.
+    std::function<std::vector<double>(const Plan&)> fieldSeconds;
     // Each robot's charger in the grid's frame, for planners that fly on batteries; missing or none: its
     // start.
     std::vector<std::optional<MapPoint>> chargers;

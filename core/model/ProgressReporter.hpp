@@ -38,6 +38,18 @@ class ProgressReporter {
             cancelRequested_);
     }
 
+    // A reporter for the first part of a longer job: its stages show under their own names, their
+    // fractions scaled into [from, to].
+    [[nodiscard]] ProgressReporter scaled(double from, double to) const {
+        Callback outer = callback_;
+        return ProgressReporter(
+            [outer, from, to](std::string_view stage, double fraction) {
+                if (outer)
+                    outer(stage, from + (to - from) * fraction);
+            },
+            cancelRequested_);
+    }
+
   private:
     Callback callback_;
     const std::atomic<bool>* cancelRequested_ = nullptr;

@@ -31,16 +31,17 @@ bool turnsWeigh(const std::vector<RegionTree>& trees) {
 // Rounds of evening out with the paces the paths drove: on a mixed fleet the first round does most.
 constexpr int speedBalanceRounds = 3;
 
-double longestTime(const std::vector<CoveragePath>& paths) {
+// The longest time in the field (the longest path where no robot has a field pace).
+double longestTime(const std::vector<CoveragePath>& paths, const std::vector<double>& fieldPaces) {
     double longest = 0.0;
     for (const CoveragePath& path : paths)
-        longest = std::max(longest, path.timeSeconds);
+        longest = std::max(longest, fieldSeconds(path, fieldPaces));
     return longest;
 }
 
-// Robots of their own speeds: paces guessed from travel alone, their turns left out, are put right by the
-// paths as driven, and the division evened out again with them while that shortens the longest path.
-// Returns the rounds kept.
+// Robots of their own speeds or field paces: paces guessed from travel alone, their turns left out, are put
+// right by the paths as driven, and the division evened out again with them while that shortens the
+// longest time in the field. Returns the rounds kept.
 int balanceOwnSpeeds(PlanningRun& run, const std::vector<int>& startCells, const std::vector<double>& guessed,
                      AzimuthTrendAllocator& allocator, BorderStraightening& straightening,
                      const SpanningTreeCoverage& coverage) {
@@ -51,7 +52,9 @@ int balanceOwnSpeeds(PlanningRun& run, const std::vector<int>& startCells, const
             run.progress().within("speed balance", static_cast<double>(kept) / speedBalanceRounds,
                                   static_cast<double>(kept + 1) / speedBalanceRounds);
         // Paces of a round that does not help stay set: nothing divides the map after this stage.
-        const std::vector<double> paces = drivenPaces(plan.cells, plan.regions, plan.paths, guessed);
+        const std::vector<double>& fieldPaces = run.fieldPaces();
+        const std::vector<double> paces = withFieldPaces(
+            drivenPaces(plan.cells, plan.regions, plan.paths, guessed), fieldPaces, startCells.size());
         allocator.setPaces(paces);
         straightening.setPaces(paces);
         RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions, progress);
@@ -60,7 +63,7 @@ int balanceOwnSpeeds(PlanningRun& run, const std::vector<int>& startCells, const
             plan.cells, coverage.planTrees(plan.cells, regions, run.starts(), progress, false), run.starts(),
             progress);
         driveAtOwnSpeeds(paths, plan.cells, run.problem().robotSpeeds);
-        if (!(longestTime(paths) < longestTime(plan.paths)))
+        if (!(longestTime(paths, fieldPaces) < longestTime(plan.paths, fieldPaces)))
             break;
         plan.regions = std::move(regions);
         plan.paths = std::move(paths);
@@ -89,6 +92,7 @@ PlannerDescription MlctPlanner::describe() const {
     description.bytesPerBottomCell = 210;
     description.quadTreeCells = true;
     description.balancesOwnSpeeds = true;
+    description.balancesFieldTime = true;
     return description;
 }
 
@@ -107,11 +111,18 @@ void MlctPlanner::run(PlanningRun& run) const {
     // Robots of their own speeds (an aircraft beside ground robots) are balanced in their own times.
     const std::vector<double>& speeds = run.problem().robotSpeeds;
     const bool ownSpeeds = someOwnSpeed(speeds);
+    // Robots that spend longer in the field than on their paths (drones between flights) are balanced in
+    // field time: the division and the balancing that follows weigh each path by its robot's field pace.
+    const std::vector<double>& fieldPaces = run.fieldPaces();
+    const bool paced = ownSpeeds || someFieldPace(fieldPaces);
     const std::vector<double> guessedPaces =
         ownSpeeds ? robotPaces(plan.cells, speeds, startCells.size()) : std::vector<double>{};
+    if (paced) {
+        const std::vector<double> paces = withFieldPaces(guessedPaces, fieldPaces, startCells.size());
+        allocator.setPaces(paces);
+        straightening.setPaces(paces);
+    }
     if (ownSpeeds) {
-        allocator.setPaces(guessedPaces);
-        straightening.setPaces(guessedPaces);
         coverage.setRobotSpeeds(speeds);
         turnSearch.setRobotSpeeds(speeds);
     }
@@ -128,9 +139,9 @@ void MlctPlanner::run(PlanningRun& run) const {
     // balances real time better. The faster division is kept. Evened out from where it stands rather than
     // grown anew: on the benchmark maps the makespans within -0.3 % and +0.2 % of a new division's, in a
     // fraction of the time.
-    // Skipped for robots of their own speeds: trees are timed at the class table's speeds.
+    // Skipped for robots of their own speeds (trees are timed at the class table's speeds) or field paces.
     run.stage("turn balance", [&] {
-        if (ownSpeeds || !turnsWeigh(trees) ||
+        if (paced || !turnsWeigh(trees) ||
             !calibrateTurnRates(plan.cells, plan.regions, turningSecondsOf(trees)))
             return 0;
         RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions,
@@ -151,13 +162,14 @@ void MlctPlanner::run(PlanningRun& run) const {
         driveAtOwnSpeeds(paths, plan.cells, speeds);
         return paths;
     });
-    if (ownSpeeds)
+    if (paced)
         run.stage("speed balance", [&] {
             return balanceOwnSpeeds(run, startCells, guessedPaces, allocator, straightening, coverage);
         });
     // Costs only estimate path times: border cells pass from the longest path to shorter neighbours, paths
     // replanned, while that shortens the longest. Bounded to about half a second of replanning.
-    const PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(plan.cells));
+    PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(plan.cells));
+    balancing.setFieldPaces(fieldPaces);
     run.stage("path balance", [&] {
         return balancing.balance(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });

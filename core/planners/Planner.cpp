@@ -205,6 +205,37 @@ std::vector<std::string> uncoveredLandMessages(const UncoveredLand& land, const 
     return messages;
 }
 
+// By robot, its seconds in the field for a second of its path; 1 where either is unknown.
+std::vector<double> measuredFieldPaces(const std::vector<CoveragePath>& paths,
+                                       const std::vector<double>& fieldSeconds) {
+    std::vector<double> paces(paths.size(), 1.0);
+    for (std::size_t robot = 0; robot < paths.size() && robot < fieldSeconds.size(); ++robot)
+        if (paths[robot].timeSeconds > 0.0 && fieldSeconds[robot] > 0.0)
+            paces[robot] = fieldSeconds[robot] / paths[robot].timeSeconds;
+    return paces;
+}
+
+double longestOf(const std::vector<double>& seconds) {
+    return seconds.empty() ? 0.0 : *std::max_element(seconds.begin(), seconds.end());
+}
+
+// Within 1 % of each other.
+bool evenInTheField(const std::vector<double>& seconds) {
+    return seconds.empty() || longestOf(seconds) <= 1.01 * *std::min_element(seconds.begin(), seconds.end());
+}
+
+std::string fieldPacesMessage(const std::vector<double>& paces) {
+    std::ostringstream text;
+    text.precision(2);
+    text << std::fixed << "the division evens out time in the field rather than on the paths: each robot's "
+         << "flights (their climbs, descents and trips out to the work) and the turnarounds between them "
+         << "take";
+    for (std::size_t robot = 0; robot < paces.size(); ++robot)
+        text << (robot == 0 ? " robot " : ", robot ") << robot + 1 << " " << fieldPaceOf(paces, robot)
+             << " x";
+    text << " its path's time, as measured on a first plan; the paths' times differ by design";
+    return text.str();
+}
 } // namespace
 
 ParameterSpec Planner::snapStartsParameter() {
@@ -229,6 +260,39 @@ Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progr
 Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
                    const ProgressReporter& progress) const {
     const PlannerDescription planner = description();
+    if (planner.balancesFieldTime && problem.fieldSeconds)
+        return planInFieldTime(planner, problem, given, progress);
+    return planOnce(planner, problem, given, progress);
+}
+
+Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningProblem& problem,
+                              const ParameterValues& given, const ProgressReporter& progress) const {
+    // Each round plans the whole problem again; the first does most.
+    constexpr int fieldBalanceRounds = 2;
+    const double roundShare = 1.0 / (fieldBalanceRounds + 1);
+    Plan best = planOnce(planner, problem, given, progress.scaled(0.0, roundShare));
+    std::vector<double> bestField = problem.fieldSeconds(best);
+    for (int round = 1; round <= fieldBalanceRounds; ++round) {
+        const std::vector<double> paces = measuredFieldPaces(best.paths, bestField);
+        // Paces alike divide the map as before.
+        if (evenInTheField(paces) || evenInTheField(bestField))
+            break;
+        Plan next = planOnce(
+            planner, problem, given,
+            progress.within("field time balance", round * roundShare, (round + 1) * roundShare), paces);
+        std::vector<double> nextField = problem.fieldSeconds(next);
+        if (!(longestOf(nextField) < longestOf(bestField)))
+            break;
+        best = std::move(next);
+        bestField = std::move(nextField);
+    }
+    progress.report("done", 1.0);
+    return best;
+}
+
+Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem& problem,
+                       const ParameterValues& given, const ProgressReporter& progress,
+                       std::vector<double> fieldPaces) const {
     ParameterValues parameters = resolveParameters(planner.parameters, given);
     checkStarts(planner, problem, parameters.boolean("snap_starts_to_free_cells"));
     checkEvents(problem);
@@ -244,6 +308,10 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
                     [](const std::optional<MapPoint>& charger) { return charger.has_value(); });
     if (anyCharger && !planner.fliesOnBatteries())
         planningRun.addIssue(IssueSeverity::Warning, "chargers-ignored", chargersIgnoredMessage(planner));
+    const bool fieldPaced = planner.balancesFieldTime && someFieldPace(fieldPaces);
+    if (fieldPaced)
+        planningRun.addIssue(IssueSeverity::Information, "field-time-balance", fieldPacesMessage(fieldPaces));
+    planningRun.setFieldPaces(std::move(fieldPaces));
     run(planningRun);
     applyOwnSpeeds(planner, problem, planningRun);
     planningRun.stage("metrics", [&] {
@@ -262,10 +330,11 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
         planningRun.addIssue(IssueSeverity::Information, "confined-robot", confinedRobotMessage(confined));
     // Robots slowed or stopped by events are meant to do less: their plan is uneven by design.
     const bool playsEvents = planner.simulatesEvents && !problem.events.empty();
-    // Nor is a plan that divides the work at one speed between robots of their own (own-speeds-unbalanced).
+    // Nor is a plan that divides the work at one speed between robots of their own (own-speeds-unbalanced),
+    // or one that evens out time in the field, where paths of different lengths end together.
     const bool unevenSpeeds = !plan.robotSpeeds.empty() && !planner.balancesOwnSpeeds;
     if (const std::string uneven = unevenPlanMessage(plan.metrics, planner);
-        !uneven.empty() && !playsEvents && !unevenSpeeds)
+        !uneven.empty() && !playsEvents && !unevenSpeeds && !fieldPaced)
         planningRun.addIssue(IssueSeverity::Warning, "uneven-plan", uneven);
     progress.report("done", 1.0);
     return plan;

@@ -30,6 +30,16 @@ class Planner {
     [[nodiscard]] virtual PlannerDescription describe() const = 0;
     // Fills the run's plan: its cells, regions and paths (waypoints; measuring is done afterwards).
     virtual void run(PlanningRun& run) const = 0;
+
+  private:
+    // One plan of the problem, with each robot's field pace (PlanningRun::fieldPaces) where given.
+    [[nodiscard]] Plan planOnce(const PlannerDescription& planner, const PlanningProblem& problem,
+                                const ParameterValues& given, const ProgressReporter& progress,
+                                std::vector<double> fieldPaces = {}) const;
+    // Plans again while evening out the robots' time in the field (PlanningProblem::fieldSeconds) brings
+    // the last robot home sooner.
+    [[nodiscard]] Plan planInFieldTime(const PlannerDescription& planner, const PlanningProblem& problem,
+                                       const ParameterValues& given, const ProgressReporter& progress) const;
 };
 
 } // namespace mcpp

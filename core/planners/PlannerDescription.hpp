@@ -30,6 +30,9 @@ struct PlannerDescription {
     // Gives robots of their own speeds (PlanningProblem::robotSpeeds) work in proportion; other planners
     // divide it as if all drove at the class table's speeds, and say so. Every planner times them right.
     bool balancesOwnSpeeds = false;
+    // Evens out the robots' time in the field (PlanningProblem::fieldSeconds, PlanningRun::fieldPaces)
+    // rather than their path time.
+    bool balancesFieldTime = false;
     PlannerPromises promises;
     std::vector<ParameterSpec> parameters; // the planner's and its stages', then those every planner has
     // Peak memory per cell of the finest grid, outputs included: a map that would need more than the

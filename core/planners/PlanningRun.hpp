@@ -29,6 +29,11 @@ class PlanningRun {
     [[nodiscard]] const std::vector<MapPoint>& starts() const { return starts_; }
     // The planner's peak memory per cell of the finest grid (PlannerDescription::bytesPerBottomCell).
     [[nodiscard]] std::int64_t bytesPerBottomCell() const { return bytesPerBottomCell_; }
+    // By robot, its seconds in the field for a second of its path, measured on an earlier plan of the
+    // problem (PlanningProblem::fieldSeconds); empty: 1 each. A planner that balancesFieldTime evens out
+    // path times times these.
+    [[nodiscard]] const std::vector<double>& fieldPaces() const { return fieldPaces_; }
+    void setFieldPaces(std::vector<double> paces) { fieldPaces_ = std::move(paces); }
 
     // Runs one stage of the planner and records how long it took under its name.
     template <typename Work> auto stage(const char* name, Work&& work) {
@@ -56,6 +61,7 @@ class PlanningRun {
     Plan& plan_;
     std::vector<MapPoint> starts_;
     std::int64_t bytesPerBottomCell_;
+    std::vector<double> fieldPaces_;
 };
 
 } // namespace mcpp

@@ -36,6 +36,37 @@ void expectError(const PlanningProblem& problem, PlanningError::Kind kind, const
 class MlctPlannerTest : public QObject {
     Q_OBJECT
   private slots:
+    // Robot 1 is out in the field three times as long as its path takes (a drone between flights), robot 2
+    // as long: planned again on those paces, the two come home together, robot 1 on a third of robot 2's
+    // path. Balanced on path time alone, robot 1 was out twice as long as now.
+    void timeInTheFieldIsEvenedOutWhereItIsMeasured() {
+        auto problem = test::uniformProblem(30, 30, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 29, 29)};
+        const auto threeTimesForRobot1 = [](const Plan& plan) {
+            return std::vector<double>{3.0 * plan.paths[0].timeSeconds, plan.paths[1].timeSeconds};
+        };
+        const Plan onPaths = MlctPlanner{}.plan(problem, {});
+        problem.fieldSeconds = threeTimesForRobot1;
+        const Plan inTheField = MlctPlanner{}.plan(problem, {});
+        const auto violations = test::checkAllInvariants(problem, inTheField);
+        QVERIFY2(violations.empty(), test::describe(violations).c_str());
+        const std::vector<double> before = threeTimesForRobot1(onPaths);
+        const std::vector<double> after = threeTimesForRobot1(inTheField);
+        QVERIFY2(
+            std::max(after[0], after[1]) < 0.6 * std::max(before[0], before[1]),
+            qPrintable(
+                QString("%1 %2 against %3 %4").arg(after[0]).arg(after[1]).arg(before[0]).arg(before[1])));
+        QVERIFY2(std::max(after[0], after[1]) <= 1.05 * std::min(after[0], after[1]),
+                 qPrintable(QString("%1 %2").arg(after[0]).arg(after[1])));
+        QVERIFY(inTheField.paths[0].timeSeconds < 0.4 * inTheField.paths[1].timeSeconds);
+        const auto hasIssue = [&](const std::string& code) {
+            return std::any_of(inTheField.issues.begin(), inTheField.issues.end(),
+                               [&](const PlanIssue& issue) { return issue.code == code; });
+        };
+        QVERIFY(hasIssue("field-time-balance"));
+        QVERIFY(!hasIssue("uneven-plan")); // the paths differ by design
+    }
+
     void plansAroundALake() {
         const auto problem = lakeProblem();
         const Plan plan = MlctPlanner{}.plan(problem, {});

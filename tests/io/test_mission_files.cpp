@@ -329,6 +329,19 @@ class MissionFilesTest : public QObject {
                 " for beta; Robot 3 on its own battery_s; alpha, without a flight time, on "
                 "the planner's battery_s (15 min)");
 
+        // Beta, an aircraft, spends longer in the field than on its path: the planner is given its measure.
+        QVERIFY(static_cast<bool>(problem.fieldSeconds));
+        Mission rovers = mission;
+        for (RobotSpec& robot : rovers.robots)
+            robot.vehicle.type = VehicleType::Rover;
+        rovers.exports.vehicle.type = VehicleType::Rover;
+        rovers.exports.vehicle.turnaroundSeconds = 0.0;
+        for (RobotSpec& robot : rovers.robots)
+            robot.vehicle.turnaroundSeconds = 0.0;
+        PlanningProblem onTheGround;
+        applyRobotSettings(rovers, onTheGround);
+        QVERIFY(!onTheGround.fieldSeconds); // their split missions end with their paths
+
         mission.planner = defaultPlannerChoice("mcpp-mlct");
         PlanningProblem other;
         applyRobotSettings(mission, other);
