@@ -279,6 +279,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         summary_->setRowVisible(waypointFiles_, false);
         describeTimes(false);
         clearChart();
+        chartRobots_.clear(); // no later waypoint-file figures draw bars for a plan gone
         setStale(false);
         return;
     }
@@ -428,7 +429,26 @@ void ResultsPanel::showWaypointFiles(const std::vector<io::MissionSize>& sizes,
                                  : QString());
     waypointFiles_->setToolTip(perRobot.join(QLatin1Char('\n')));
     summary_->setRowVisible(waypointFiles_, !sizes.empty());
+    showTimeInTheField(sizes);
     fitSummary();
+}
+
+// Where flights and turnarounds keep some robot out longer than its path takes, the chart shows when each
+// robot is home: the time a field team waits for, and what a plan balanced in the field evens out.
+void ResultsPanel::showTimeInTheField(const std::vector<io::MissionSize>& sizes) {
+    if (chartUnderEvents_)
+        return;
+    std::vector<double> field = chartPathSeconds_;
+    bool later = false;
+    for (std::size_t i = 0; i < chartRobots_.size(); ++i) {
+        const auto robot = static_cast<std::size_t>(chartRobots_[i]);
+        if (robot < sizes.size() && sizes[robot].fieldSeconds > field[i] + 1.0) {
+            field[i] = sizes[robot].fieldSeconds;
+            later = true;
+        }
+    }
+    if (later)
+        drawBars(field, tr("Time in the field per robot"));
 }
 
 QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& sizes,
@@ -508,35 +528,41 @@ void ResultsPanel::clearChart() {
 }
 
 void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
+    chartRobots_.clear();
+    chartPathSeconds_.clear();
+    chartNames_ = names;
+    for (const auto& robot : plan.metrics.robots) {
+        chartRobots_.push_back(robot.robot);
+        chartPathSeconds_.push_back(chartSeconds(plan, robot));
+    }
+    chartUnderEvents_ = !chartRobots_.empty() && playedUnderEvents(plan, chartRobots_.front()) != nullptr;
+    drawBars(chartPathSeconds_, chartUnderEvents_ ? tr("Done at, under the events") : tr("Time per robot"));
+}
+
+void ResultsPanel::drawBars(const std::vector<double>& seconds, const QString& title) {
     clearChart();
     QChart* chart = chartView_->chart();
-    const auto& robots = plan.metrics.robots;
-    if (robots.empty())
+    chart->setTitle(title);
+    if (chartRobots_.empty())
         return;
-    if (playedUnderEvents(plan, robots.front().robot) != nullptr)
-        chart->setTitle(tr("Done at, under the events"));
-
     // One set per robot with a value only in its own category: each bar takes its robot's colour.
     auto* series = new QStackedBarSeries;
     QStringList categories;
-    double longestSeconds = 0.0;
-    for (const auto& robot : robots)
-        longestSeconds = std::max(longestSeconds, chartSeconds(plan, robot));
+    const double longestSeconds = *std::max_element(seconds.begin(), seconds.end());
     // Hours once the longest run passes two hours: "34" reads better than "2040".
     const bool inHours = longestSeconds > 7200.0;
     const double unitSeconds = inHours ? 3600.0 : 60.0;
-    double longestValue = 0.0;
-    for (std::size_t i = 0; i < robots.size(); ++i) {
-        const int robot = robots[i].robot;
+    for (std::size_t i = 0; i < chartRobots_.size(); ++i) {
+        const int robot = chartRobots_[i];
         // Names do not fit under narrow bars; the numbers are the ones on the map's start markers.
         categories << QString::number(robot + 1);
-        auto* set = new QBarSet(robot < names.size() ? names[robot] : tr("Robot %1").arg(robot + 1));
+        auto* set =
+            new QBarSet(robot < chartNames_.size() ? chartNames_[robot] : tr("Robot %1").arg(robot + 1));
         set->setColor(render::RobotPalette::colour(robot));
         set->setBorderColor(render::RobotPalette::colour(robot).darker(130));
-        for (std::size_t j = 0; j < robots.size(); ++j)
-            *set << (j == i ? chartSeconds(plan, robots[i]) / unitSeconds : 0.0);
+        for (std::size_t j = 0; j < chartRobots_.size(); ++j)
+            *set << (j == i ? seconds[i] / unitSeconds : 0.0);
         series->append(set);
-        longestValue = std::max(longestValue, chartSeconds(plan, robots[i]) / unitSeconds);
     }
     series->setBarWidth(0.7);
     chart->addSeries(series);
@@ -544,7 +570,7 @@ void ResultsPanel::showChart(const Plan& plan, const QStringList& names) {
     numberBars();
     auto* valueAxis = new QValueAxis;
     valueAxis->setTitleText(inHours ? tr("hours") : tr("minutes"));
-    valueAxis->setRange(0.0, std::max(longestValue * 1.1, 1.0));
+    valueAxis->setRange(0.0, std::max(longestSeconds / unitSeconds * 1.1, 1.0));
     valueAxis->setLabelFormat(QStringLiteral("%.0f"));
     valueAxis->applyNiceNumbers();
     chart->addAxis(valueAxis, Qt::AlignLeft);

@@ -56,6 +56,9 @@ class ResultsPanel : public QWidget {
     void describeTimes(bool underEvents);
     void clearChart();
     void showChart(const Plan& plan, const QStringList& names);
+    // A bar per robot of chartRobots_, in its colour: seconds by robot of that list.
+    void drawBars(const std::vector<double>& seconds, const QString& title);
+    void showTimeInTheField(const std::vector<io::MissionSize>& sizes);
     void numberBars();
     void fitSummary();
 
@@ -76,6 +79,11 @@ class ResultsPanel : public QWidget {
     QLabel* waypointFiles_; // the size of the robots' waypoint files, once worked out
     QLabel* notes_; // the plan's information issues (a fleet's cruise speed, robots walled in); only if any
     QChartView* chartView_;
+    // The robots of the plan charted, their names and path times (or times under the events).
+    std::vector<int> chartRobots_;
+    QStringList chartNames_;
+    std::vector<double> chartPathSeconds_;
+    bool chartUnderEvents_ = false;
     QStringList barNumbers_; // robot numbers under the chart's bars, in order
 };
 

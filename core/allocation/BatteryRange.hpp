@@ -29,7 +29,7 @@ struct BatteryRange {
 
     struct AllocationGraph {
         CellGraph graph;
-        std::vector<int> outOfRange; // cells farther than half the endurance from every charger
+        std::vector<int> outOfRange; // cells farther than half its own endurance from every robot's charger
     };
     // The graph to allocate on: the same cells and ids, those beyond every charger's range (each robot's
     // on its own battery) cut off from their neighbours so that no region takes them and no region's

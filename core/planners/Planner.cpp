@@ -228,12 +228,12 @@ std::string fieldPacesMessage(const std::vector<double>& paces) {
     std::ostringstream text;
     text.precision(2);
     text << std::fixed << "the division evens out time in the field rather than on the paths: each robot's "
-         << "flights (their climbs, descents and trips out to the work) and the turnarounds between them "
-         << "take";
+         << "mission in parts (an aircraft's climbs, descents and trips out to its work) and the turnarounds "
+         << "between them take";
     for (std::size_t robot = 0; robot < paces.size(); ++robot)
         text << (robot == 0 ? " robot " : ", robot ") << robot + 1 << " " << fieldPaceOf(paces, robot)
              << " x";
-    text << " its path's time, as measured on a first plan; the paths' times differ by design";
+    text << " its path's time, as measured on the plan before; the paths' times differ by design";
     return text.str();
 }
 } // namespace
@@ -274,8 +274,9 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
     std::vector<double> bestField = problem.fieldSeconds(best);
     for (int round = 1; round <= fieldBalanceRounds; ++round) {
         const std::vector<double> paces = measuredFieldPaces(best.paths, bestField);
-        // Paces alike divide the map as before.
-        if (evenInTheField(paces) || evenInTheField(bestField))
+        // Paces within 5 % of each other divide the map about as before (one flight's climb and descent).
+        if (longestOf(paces) <= 1.05 * *std::min_element(paces.begin(), paces.end()) ||
+            evenInTheField(bestField))
             break;
         Plan next = planOnce(
             planner, problem, given,

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace mcpp {
@@ -201,6 +202,18 @@ std::vector<double> robotTimes(RobotsOnBatteries& robots, const CellGraph& graph
     return times;
 }
 
+// Whether the robots that work end within 1 % of each other (a robot given nothing left out).
+bool endTogether(const std::vector<double>& times) {
+    double shortest = std::numeric_limits<double>::infinity();
+    double longest = 0.0;
+    for (const double time : times)
+        if (time > 0.0) {
+            shortest = std::min(shortest, time);
+            longest = std::max(longest, time);
+        }
+    return longest <= 1.01 * shortest;
+}
+
 double coveredArea(const RobotsOnBatteries& robots, const CellGraph& graph) {
     double area = 0.0;
     for (std::size_t cell = 0; cell < robots.regions.robotOfCell.size(); ++cell)
@@ -247,15 +260,16 @@ struct Division {
 RobotsOnBatteries balancedOnBatteries(PlanningRun& run, const Division& division, RegionAllocation given,
                                       RobotsOnBatteries robots, std::vector<double> paces) {
     constexpr int balanceRounds = 3;
-    constexpr double evenEnough = 1.01;         // the longest time over the shortest
     constexpr double coverageTolerance = 0.002; // of the first plan's covered area
+    constexpr double worthLessCover = 0.01;     // the least share of time a plan covering less must save
     const CellGraph& graph = run.plan().cells;
     std::vector<double> times = robotTimes(robots, graph);
     const double firstLongest = *std::max_element(times.begin(), times.end());
-    if (firstLongest <= evenEnough * *std::min_element(times.begin(), times.end()))
+    if (endTogether(times))
         return robots;
     double bestLongest = firstLongest;
-    const double leastCovered = (1.0 - coverageTolerance) * coveredArea(robots, graph);
+    const double firstCovered = coveredArea(robots, graph);
+    const double leastCovered = (1.0 - coverageTolerance) * firstCovered;
     const std::vector<int> leftOutFirst = robots.leftOutBy;
     std::vector<char> leftOut(graph.size(), 0);
     for (std::size_t cell = 0; cell < graph.size(); ++cell)
@@ -278,12 +292,15 @@ RobotsOnBatteries balancedOnBatteries(PlanningRun& run, const Division& division
         if (longest >= firstLongest)
             break; // the paces drift away from even rather than towards it
         last = &candidate;
-        if (longest < bestLongest && coveredArea(candidate, graph) >= leastCovered) {
+        // A plan that covers less must be quicker by a share worth it, not by a second.
+        const double covered = coveredArea(candidate, graph);
+        if ((covered >= firstCovered && longest < bestLongest) ||
+            (covered >= leastCovered && longest < (1.0 - worthLessCover) * bestLongest)) {
             best = std::move(candidate);
             bestLongest = longest;
             last = &best;
         }
-        if (longest <= evenEnough * *std::min_element(times.begin(), times.end()))
+        if (endTogether(times))
             break;
     }
     return best;

@@ -21,6 +21,7 @@
 
 #include <QAction>
 #include <QBarCategoryAxis>
+#include <QBarSet>
 #include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
@@ -34,6 +35,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSignalSpy>
+#include <QStackedBarSeries>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -295,6 +297,40 @@ class TestMainWindow : public QObject {
         const auto* every = qobject_cast<QBarCategoryAxis*>(wide.front());
         QVERIFY(every != nullptr);
         QCOMPARE(every->count(), 40);
+    }
+
+    // Where a drone's flights keep it out longer than its path takes, the chart shows when each robot is
+    // home; where none does, the paths' times.
+    void chartShowsTimeInTheFieldWhereFlightsTakeLonger() {
+        Plan plan;
+        plan.planner = "mcpp-mlct";
+        plan.metrics.robots.resize(2);
+        for (int robot = 0; robot < 2; ++robot) {
+            plan.metrics.robots[static_cast<std::size_t>(robot)].robot = robot;
+            plan.metrics.robots[static_cast<std::size_t>(robot)].timeSeconds = 3600.0 * (robot + 1);
+        }
+        ui::ResultsPanel panel;
+        panel.showPlan(&plan, {});
+        QCOMPARE(panel.chartView()->chart()->title(), QStringLiteral("Time per robot"));
+        io::MissionSize drone;
+        drone.parts = 3;
+        drone.fieldSeconds = 9000.0;
+        io::MissionSize rover;
+        rover.fieldSeconds = 7200.0;
+        io::VehicleSettings multirotor;
+        multirotor.type = io::VehicleType::Multirotor;
+        panel.showWaypointFiles({drone, rover}, {multirotor, io::VehicleSettings{}}, {});
+        QChart* chart = panel.chartView()->chart();
+        QCOMPARE(chart->title(), QStringLiteral("Time in the field per robot"));
+        const auto* bars = qobject_cast<QStackedBarSeries*>(chart->series().front());
+        QVERIFY(bars != nullptr);
+        QCOMPARE(bars->barSets().at(0)->at(0), 2.5); // hours: 9 000 s in the field, not its 1 h path
+        QCOMPARE(bars->barSets().at(1)->at(1), 2.0);
+        panel.showPlan(&plan, {});
+        io::MissionSize onItsPath;
+        onItsPath.fieldSeconds = 3600.0;
+        panel.showWaypointFiles({onItsPath, rover}, {}, {}); // no robot out longer than its path
+        QCOMPARE(panel.chartView()->chart()->title(), QStringLiteral("Time per robot"));
     }
 
     void initTestCase() {
