@@ -245,8 +245,7 @@ std::vector<double> pacesAsFlown(const CellGraph& graph, const RegionAllocation&
 struct Division {
     const CellGraph& cells; // those within some charger's range
     const Chargers& chargers;
-    const std::vector<double>& batteries;
-    const BatteryRange& range;
+    const BatteryRange& range; // its robotEndurances: each robot's battery
     int rebalanceIterations = 0;
 };
 
@@ -283,7 +282,8 @@ RobotsOnBatteries balancedOnBatteries(PlanningRun& run, const Division& division
         AzimuthTrendAllocator allocator(division.rebalanceIterations);
         allocator.setPaces(paces);
         given = allocator.allocate(reachedFirst, division.chargers.cells, run.progress());
-        candidate = coverDivision(run, given, division.range, division.chargers, division.batteries);
+        candidate =
+            coverDivision(run, given, division.range, division.chargers, division.range.robotEndurances);
         for (std::size_t cell = 0; cell < graph.size(); ++cell)
             if (leftOut[cell] != 0 && candidate.regions.robotOfCell[cell] < 0)
                 candidate.leftOutBy[cell] = leftOutFirst[cell];
@@ -374,8 +374,8 @@ void WavefrontBatteryPlanner::run(PlanningRun& run) const {
     RobotsOnBatteries robots =
         run.stage("paths", [&] { return coverDivision(run, division, range, chargers, batteries); });
     robots = run.stage("battery balance", [&] {
-        return balancedOnBatteries(run, {inRange, chargers, batteries, range, rebalanceIterations},
-                                   std::move(division), std::move(robots), std::move(paces));
+        return balancedOnBatteries(run, {inRange, chargers, range, rebalanceIterations}, std::move(division),
+                                   std::move(robots), std::move(paces));
     });
     addPathsAndSorties(run, robots);
 }
