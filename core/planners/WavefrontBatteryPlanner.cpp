@@ -25,9 +25,9 @@ namespace mcpp {
 namespace {
 
 std::string outOfRangeMessage(const RobotSorties& robot) {
-    return formatArea(robot.outOfRangeAreaSquareMetres) + " of robot " + std::to_string(robot.robot + 1) +
-           "'s region lies beyond half its battery (" + formatDuration(robot.enduranceSeconds) +
-           ") from its charger and is not covered";
+    return formatArea(robot.outOfRangeAreaSquareMetres) + " at the edge of robot " +
+           std::to_string(robot.robot + 1) + "'s region lies beyond half its battery (" +
+           formatDuration(robot.enduranceSeconds) + ") from its charger and is not covered";
 }
 
 std::string beyondEveryChargerMessage(const CellGraph& cells, const std::vector<int>& ids,
@@ -249,6 +249,28 @@ struct Division {
     int rebalanceIterations = 0;
 };
 
+// The land no robot reached in the first plan is cut off from a later division, where the regions may lie
+// otherwise: a robot whose way through its own region reaches some of it within its range is handed it, as
+// after the first division. What is left stays the first plan's robot's to name (nameBorderingRobots).
+// firstLeftOutBy: the first plan's leftOutBy.
+void handOverCutOffCells(PlanningRun& run, const Division& division, const std::vector<int>& firstLeftOutBy,
+                         RobotsOnBatteries& robots) {
+    const CellGraph& graph = run.plan().cells;
+    const auto byTheDivision = static_cast<int>(robots.results.size()); // open to every robot's way
+    for (std::size_t cell = 0; cell < graph.size(); ++cell)
+        if (firstLeftOutBy[cell] >= 0 && robots.regions.robotOfCell[cell] < 0)
+            robots.leftOutBy[cell] = byTheDivision;
+    const std::vector<int> gained =
+        division.range.handOver(graph, robots.regions.robotOfCell, division.chargers.cells, robots.leftOutBy);
+    for (std::size_t cell = 0; cell < graph.size(); ++cell)
+        if (robots.regions.robotOfCell[cell] >= 0)
+            robots.leftOutBy[cell] = -1;
+    coverRegions(run, gained, division.chargers, division.range.robotEndurances, robots);
+    for (std::size_t cell = 0; cell < graph.size(); ++cell)
+        if (robots.leftOutBy[cell] == byTheDivision)
+            robots.leftOutBy[cell] = firstLeftOutBy[cell];
+}
+
 // The division evens out cell costs, but a robot's time also goes on flights out to its work and back and
 // on charges, more for a region far from its charger, and a robot hands over what lies beyond its reach to
 // its neighbours. Up to balanceRounds times, while the last robot is done sooner than in the first plan,
@@ -284,9 +306,7 @@ RobotsOnBatteries balancedOnBatteries(PlanningRun& run, const Division& division
         given = allocator.allocate(reachedFirst, division.chargers.cells, run.progress());
         candidate =
             coverDivision(run, given, division.range, division.chargers, division.range.robotEndurances);
-        for (std::size_t cell = 0; cell < graph.size(); ++cell)
-            if (leftOut[cell] != 0 && candidate.regions.robotOfCell[cell] < 0)
-                candidate.leftOutBy[cell] = leftOutFirst[cell];
+        handOverCutOffCells(run, division, leftOutFirst, candidate);
         times = robotTimes(candidate, graph);
         const double longest = *std::max_element(times.begin(), times.end());
         if (longest >= firstLongest)
@@ -306,9 +326,67 @@ RobotsOnBatteries balancedOnBatteries(PlanningRun& run, const Division& division
     return best;
 }
 
+// Land left out is warned of as lying at the edge of a robot's region: a robot whose region no longer
+// borders it (another robot was handed the land between, or a later division drew the regions otherwise)
+// gives it up to the robot whose region lies nearest through the land left out, which could not reach it
+// either (the hand-over would have given it). Land that borders no region keeps its robot.
+void nameBorderingRobots(const CellGraph& graph, const std::vector<int>& robotOfCell,
+                         std::vector<int>& leftOutBy) {
+    // Each piece of land left out, and the robots whose regions border it.
+    std::vector<int> piece(graph.size(), -1);
+    std::vector<std::vector<int>> borders;
+    for (std::size_t first = 0; first < graph.size(); ++first) {
+        if (leftOutBy[first] < 0 || piece[first] >= 0)
+            continue;
+        const auto label = static_cast<int>(borders.size());
+        std::vector<int>& robots = borders.emplace_back();
+        std::vector<int> stack{static_cast<int>(first)};
+        piece[first] = label;
+        while (!stack.empty()) {
+            const int cell = stack.back();
+            stack.pop_back();
+            for (const int next : graph.neighbours(cell)) {
+                const auto index = static_cast<std::size_t>(next);
+                if (robotOfCell[index] >= 0)
+                    robots.push_back(robotOfCell[index]);
+                else if (leftOutBy[index] >= 0 && piece[index] < 0) {
+                    piece[index] = label;
+                    stack.push_back(next);
+                }
+            }
+        }
+    }
+    // The region nearest each cell left out, in steps through the land left out.
+    std::vector<int> nearest(robotOfCell);
+    std::vector<int> frontier;
+    for (std::size_t cell = 0; cell < graph.size(); ++cell)
+        if (robotOfCell[cell] >= 0)
+            frontier.push_back(static_cast<int>(cell));
+    while (!frontier.empty()) {
+        std::vector<int> next;
+        for (const int cell : frontier)
+            for (const int neighbour : graph.neighbours(cell)) {
+                const auto index = static_cast<std::size_t>(neighbour);
+                if (piece[index] < 0 || nearest[index] >= 0)
+                    continue;
+                nearest[index] = nearest[static_cast<std::size_t>(cell)];
+                next.push_back(neighbour);
+            }
+        frontier = std::move(next);
+    }
+    for (std::size_t cell = 0; cell < graph.size(); ++cell) {
+        if (piece[cell] < 0 || nearest[cell] < 0)
+            continue;
+        const std::vector<int>& robots = borders[static_cast<std::size_t>(piece[cell])];
+        if (std::find(robots.begin(), robots.end(), leftOutBy[cell]) == robots.end())
+            leftOutBy[cell] = nearest[cell];
+    }
+}
+
 void addPathsAndSorties(PlanningRun& run, RobotsOnBatteries& state) {
     Plan& plan = run.plan();
     plan.regions = std::move(state.regions);
+    nameBorderingRobots(plan.cells, plan.regions.robotOfCell, state.leftOutBy);
     keepOwnLeftOutCells(state.results, state.leftOutBy, plan.cells);
     std::vector<RobotSorties> sorties;
     for (WavefrontCoverage::Result& result : state.results) {

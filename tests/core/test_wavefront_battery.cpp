@@ -8,6 +8,7 @@
 
 #include <QtTest>
 #include <cmath>
+#include <random>
 #include <set>
 
 using namespace mcpp;
@@ -36,6 +37,35 @@ const RobotSorties& sortiesOf(const Plan& plan, int robot) {
     return sortieLayerOf(plan)->robots().at(static_cast<std::size_t>(robot));
 }
 
+// Robots named for land left beyond their battery whose region that land does not border: each robot's
+// out-of-range cells must reach a cell of its own region through cells no robot covers, unless they border
+// no region at all.
+std::vector<std::string> misnamedLeftOutLand(const Plan& plan) {
+    std::vector<std::string> misnamed;
+    const std::vector<int>& robotOfCell = plan.regions.robotOfCell;
+    for (const RobotSorties& robot : sortieLayerOf(plan)->robots())
+        for (const int start : robot.outOfRangeCells) {
+            std::set<int> seen{start};
+            std::vector<int> frontier{start};
+            std::set<int> bordering;
+            while (!frontier.empty()) {
+                const int cell = frontier.back();
+                frontier.pop_back();
+                for (const int next : plan.cells.neighbours(cell)) {
+                    const int owner = robotOfCell[static_cast<std::size_t>(next)];
+                    if (owner >= 0)
+                        bordering.insert(owner);
+                    else if (seen.insert(next).second)
+                        frontier.push_back(next);
+                }
+            }
+            if (!bordering.empty() && bordering.count(robot.robot) == 0)
+                misnamed.push_back("cell " + std::to_string(start) + " is named for robot " +
+                                   std::to_string(robot.robot + 1) + ", whose region does not border it");
+        }
+    return misnamed;
+}
+
 } // namespace
 
 // Wavefront coverage on a battery, on drawn maps of one-metre sub-cells (cells of 2 x 2 m) at 1 m/s, so a
@@ -44,6 +74,58 @@ class WavefrontBatteryTest : public QObject {
     Q_OBJECT
 
   private slots:
+    // Land left beyond the batteries is warned of at the edge of a robot's region: on random maps of ponds
+    // and three to five robots of short batteries (fixed seed), the robot named is one whose region borders
+    // that land, through land left out, where some region does. Before, a plan kept from a later division
+    // named the first plan's robot (3 of these 60 maps), and land behind cells handed to another robot
+    // named the robot that had been given it (4 more).
+    void leftOutLandIsNamedForARobotWhoseRegionBordersIt() {
+        std::mt19937 random(7);
+        int mapsWithLandLeftOut = 0;
+        for (int trial = 0; trial < 60; ++trial) {
+            const auto width = 40 + static_cast<int>(random() % 40);
+            const auto height = 20 + static_cast<int>(random() % 30);
+            std::vector<std::string> rows = rowsOf(height, std::string(static_cast<std::size_t>(width), '.'));
+            const auto at = [&](int x, int y) -> char& {
+                return rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
+            };
+            for (int pond = 0; pond < 6; ++pond) {
+                const auto x = static_cast<int>(random() % static_cast<unsigned>(width));
+                const auto y = static_cast<int>(random() % static_cast<unsigned>(height));
+                for (int dy = 0; dy < 4 && y + dy < height; ++dy)
+                    for (int dx = 0; dx < 8 && x + dx < width; ++dx)
+                        at(x + dx, y + dy) = '#';
+            }
+            const int robots = 3 + static_cast<int>(random() % 3);
+            std::vector<MapPoint> starts;
+            while (starts.size() < static_cast<std::size_t>(robots)) {
+                const auto x = static_cast<int>(random() % static_cast<unsigned>(width / 2)) * 2;
+                const auto y = static_cast<int>(random() % static_cast<unsigned>(height / 2)) * 2;
+                if (at(x, y) == '.' && at(x + 1, y) == '.' && at(x, y + 1) == '.' && at(x + 1, y + 1) == '.')
+                    starts.push_back({x + 0.5, y + 0.5});
+            }
+            PlanningProblem problem = test::drawnProblem(rows, starts);
+            for (int robot = 0; robot < robots; ++robot)
+                problem.batterySeconds.push_back(40.0 + static_cast<double>(random() % 80));
+            Plan plan;
+            try {
+                plan = planOnBattery(problem, 120.0, 30.0, 0.0);
+            } catch (const PlanningError&) {
+                continue; // two starts in one cell
+            }
+            const std::string trialName = "map " + std::to_string(trial) + ": ";
+            QVERIFY2(violationsOf(problem, plan).empty(), (trialName + violationsOf(problem, plan)).c_str());
+            const std::vector<std::string> misnamed = misnamedLeftOutLand(plan);
+            QVERIFY2(misnamed.empty(), (trialName + (misnamed.empty() ? "" : misnamed.front())).c_str());
+            for (const RobotSorties& robot : sortieLayerOf(plan)->robots())
+                if (!robot.outOfRangeCells.empty()) {
+                    ++mapsWithLandLeftOut;
+                    break;
+                }
+        }
+        QVERIFY2(mapsWithLandLeftOut >= 20, qPrintable(QString::number(mapsWithLandLeftOut)));
+    }
+
     void aBatteryThatLastsFliesOneSortie() {
         PlanningProblem problem = test::drawnProblem(rowsOf(10, std::string(10, '.')), {{0.5, 0.5}});
         const Plan plan = planOnBattery(problem, 1e6, 100.0, 0.0);
@@ -112,9 +194,9 @@ class WavefrontBatteryTest : public QObject {
         std::set<std::string> codes;
         for (const PlanIssue& issue : plan.issues)
             codes.insert(issue.code + ": " + issue.message);
-        QVERIFY(
-            codes.count("beyond-battery: 4 m2 of robot 1's region lies beyond half its battery (1 min 41 s) "
-                        "from its charger and is not covered") == 1);
+        QVERIFY(codes.count("beyond-battery: 4 m2 at the edge of robot 1's region lies beyond half its "
+                            "battery (1 min 41 s) "
+                            "from its charger and is not covered") == 1);
         QVERIFY(
             codes.count("beyond-every-charger: 96 m2 lies beyond half the battery (1 min 41 s) from every "
                         "charger and is not covered") == 1);
