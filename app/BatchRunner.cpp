@@ -730,6 +730,10 @@ void BatchRunner::printSummary(const Plan& plan) const {
     // A split mission's flights, trips and turnarounds take longer than the plan's makespan says.
     if (!fieldTimeNote_.empty())
         output_ << "mcpp: " << fieldTimeNote_ << '\n';
+    if (!fieldTimeNote_.empty() && metrics.fieldLowerBoundSeconds > 0.0)
+        output_ << "mcpp: no plan brings the last robot home before "
+                << formatDuration(metrics.fieldLowerBoundSeconds)
+                << " in the field, the trips out to the work not counted\n";
     if (const TimelineLayer* timeline = timelineLayerOf(plan))
         output_ << "mcpp: " << timelineSentence(timeline->summary()) << '\n';
     // Weeks of work usually mean the whole raster was planned when a part of it was meant.

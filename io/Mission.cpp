@@ -975,6 +975,18 @@ std::function<std::vector<double>(const Plan&)> fieldSecondsOf(const Mission& mi
     };
 }
 
+// What each robot's flights allow, where some robot's split mission ends later than its path (as
+// fieldSecondsOf); else none.
+std::vector<FlightLimits> flightLimitsOf(const std::vector<VehicleSettings>& vehicles) {
+    if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater))
+        return {};
+    std::vector<FlightLimits> limits;
+    for (const VehicleSettings& vehicle : vehicles)
+        limits.push_back(
+            {vehicle.flightTimeSeconds, climbAndDescentSeconds(vehicle), vehicle.turnaroundSeconds});
+    return limits;
+}
+
 } // namespace
 
 void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
@@ -982,6 +994,7 @@ void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     problem.events = mission.events;
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     problem.fieldSeconds = fieldSecondsOf(mission, vehicles);
+    problem.robotFlights = flightLimitsOf(vehicles);
     applyCruiseSpeed(mission, vehicles, problem);
     noteAircraftAltitudes(mission, vehicles, problem.notes);
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))

@@ -24,9 +24,10 @@ namespace {
 using internal::CompressedReader;
 using internal::CompressedWriter;
 
-constexpr const char* formatLine = "MCPP-PLAN 4";
-// Read as well: the same but for the paths' counts of walked waypoints (none had its straight runs merged).
-constexpr const char* formatLineWithoutWalkedCounts = "MCPP-PLAN 3";
+// Files of the versions before are read as well: 3 without the paths' counts of walked waypoints (none had
+// its straight runs merged), 4 without the times in the field.
+constexpr const char* formatName = "MCPP-PLAN ";
+constexpr int oldestFormatVersion = 3;
 constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
 
 // Size and time of last change of a file: a different file at the same path changes them. Empty when they
@@ -364,8 +365,10 @@ void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
     for (const double figure :
          {metrics.makespanSeconds, metrics.lowerBoundSeconds, metrics.ratio, metrics.passableAreaSquareMetres,
           metrics.coveredAreaSquareMetres, metrics.coveredFraction, metrics.unreachableAreaSquareMetres,
-          metrics.repeatedFraction})
+          metrics.repeatedFraction, metrics.fieldMakespanSeconds, metrics.fieldLowerBoundSeconds})
         out.put(figure);
+    for (const RobotMetrics& robot : metrics.robots)
+        out.put(robot.fieldSeconds);
     out.put(static_cast<std::uint64_t>(metrics.stageMilliseconds.size()));
     for (const auto& [stage, milliseconds] : metrics.stageMilliseconds) {
         out.put(stage);
@@ -373,7 +376,7 @@ void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
     }
 }
 
-PlanMetrics getMetrics(CompressedReader& in) {
+PlanMetrics getMetrics(CompressedReader& in, bool withFieldTimes) {
     PlanMetrics metrics;
     metrics.robots.resize(in.getCount(60));
     for (RobotMetrics& robot : metrics.robots) {
@@ -392,6 +395,12 @@ PlanMetrics getMetrics(CompressedReader& in) {
           &metrics.passableAreaSquareMetres, &metrics.coveredAreaSquareMetres, &metrics.coveredFraction,
           &metrics.unreachableAreaSquareMetres, &metrics.repeatedFraction})
         *figure = in.get<double>();
+    if (withFieldTimes) {
+        metrics.fieldMakespanSeconds = in.get<double>();
+        metrics.fieldLowerBoundSeconds = in.get<double>();
+        for (RobotMetrics& robot : metrics.robots)
+            robot.fieldSeconds = in.get<double>();
+    }
     for (std::size_t count = in.getCount(16); count > 0; --count) {
         std::string stage = in.getString();
         metrics.stageMilliseconds.emplace_back(std::move(stage), in.get<double>());
@@ -444,7 +453,7 @@ void followTurnModel(Plan& plan) {
     graph.applyTurnTime(model);
 }
 
-Plan readPlan(CompressedReader& in, bool withWalkedCounts) {
+Plan readPlan(CompressedReader& in, int formatVersion) {
     Plan plan;
     plan.planner = in.getString();
     plan.parameters = getParameters(in);
@@ -453,9 +462,9 @@ Plan readPlan(CompressedReader& in, bool withWalkedCounts) {
     plan.regions.robotOfCell = in.getAll<int>();
     plan.regions.startCell = in.getAll<int>();
     plan.regions.costSeconds = in.getAll<double>();
-    plan.paths = getPaths(in, plan.cells, withWalkedCounts);
+    plan.paths = getPaths(in, plan.cells, formatVersion >= 4);
     checkRegions(plan.regions, plan.cells.size(), plan.paths.size());
-    plan.metrics = getMetrics(in);
+    plan.metrics = getMetrics(in, formatVersion >= 5);
     for (const RobotMetrics& robot : plan.metrics.robots)
         if (robot.robot < 0 || static_cast<std::size_t>(robot.robot) >= plan.paths.size())
             throw CompressedReader::DamagedData("figures of no robot");
@@ -465,9 +474,17 @@ Plan readPlan(CompressedReader& in, bool withWalkedCounts) {
     return plan;
 }
 
+// The version a file's first line names, or -1 for a line of no version this reads.
+int formatVersionOf(const std::string& line) {
+    for (int version = oldestFormatVersion; version <= planFormatVersion; ++version)
+        if (line == formatName + std::to_string(version))
+            return version;
+    return -1;
+}
+
 // The header: the format line and the fingerprint line, then the compressed plan.
 std::string header(const std::string& fingerprint) {
-    return std::string(formatLine) + "\n" + fingerprint + "\n";
+    return formatName + std::to_string(planFormatVersion) + "\n" + fingerprint + "\n";
 }
 
 } // namespace
@@ -544,7 +561,8 @@ Result<std::optional<Plan>> loadPlanFile(const std::string& path, const std::str
     std::string savedFingerprint;
     std::getline(file, format);
     std::getline(file, savedFingerprint);
-    if (format != formatLine && format != formatLineWithoutWalkedCounts)
+    const int version = formatVersionOf(format);
+    if (version < 0)
         return Loaded::failure(path + ": not a plan file of this version of mcpp (first line \"" +
                                format.substr(0, 40) + "\")");
     if (savedFingerprint != fingerprint)
@@ -556,16 +574,16 @@ Result<std::optional<Plan>> loadPlanFile(const std::string& path, const std::str
     file.seekg(start);
     if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
         return Loaded::failure(path + ": cannot read the saved plan");
-    auto plan = parsePlanBody(bytes, path, format == formatLine);
+    auto plan = parsePlanBody(bytes, path, version);
     if (!plan)
         return Loaded::failure(plan.error());
     return std::optional<Plan>(std::move(plan.value()));
 }
 
-Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path, bool withWalkedCounts) {
+Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path, int formatVersion) {
     try {
         CompressedReader in(compressed);
-        return readPlan(in, withWalkedCounts);
+        return readPlan(in, formatVersion);
     } catch (const CompressedReader::DamagedData& damage) {
         return Result<Plan>::failure(path + ": the saved plan is damaged (" + damage.what() + ")");
     } catch (const std::bad_alloc&) {

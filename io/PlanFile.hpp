@@ -38,9 +38,10 @@ namespace mcpp::io {
                                                        const std::string& fingerprint);
 
 // The plan from the bytes after a plan file's two header lines (for readers of other sources and the fuzzer);
-// `path` names the source in errors. withWalkedCounts: false for the body of a file of the format before
-// (MCPP-PLAN 3), whose paths hold every waypoint they walked.
+// `path` names the source in errors. formatVersion: that of the file's first line, MCPP-PLAN 3 (paths hold
+// every waypoint they walked), 4 (no times in the field) or 5 (this version's).
+inline constexpr int planFormatVersion = 5;
 [[nodiscard]] Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path,
-                                         bool withWalkedCounts = true);
+                                         int formatVersion = planFormatVersion);
 
 } // namespace mcpp::io

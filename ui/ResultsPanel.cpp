@@ -254,6 +254,31 @@ void ResultsPanel::describeTimes(bool underEvents) {
                                    "the events; when the mission is done under them is in the "
                                    "Events row")
                               : tr("The slowest robot's time, turns included"));
+    lowerBound_->setToolTip(QString());
+    ratio_->setToolTip(QString());
+    if (auto* ratioName = qobject_cast<QLabel*>(summary_->labelForField(ratio_)))
+        ratioName->setText(tr("Makespan / bound"));
+}
+
+// The summary in the field: its rows' names and what the paths alone take, in the tooltips.
+void ResultsPanel::describeFieldTimes(const PlanMetrics& metrics) {
+    if (auto* makespanName = qobject_cast<QLabel*>(summary_->labelForField(makespan_)))
+        makespanName->setText(tr("Last robot home"));
+    makespan_->setToolTip(tr("When the last robot is done in the field: its flights, with their climbs, "
+                             "descents and trips out to the work, and the turnarounds between them. Its "
+                             "path alone, the slowest robot's, takes %1")
+                              .arg(formatDuration(metrics.makespanSeconds)));
+    lowerBound_->setToolTip(tr("No plan brings the last robot home sooner: the work no plan avoids, shared "
+                               "out in full flights with the fewest turnarounds. The trips out to the work "
+                               "and back are not in it (how long they take depends on where each flight "
+                               "works), so on land far from the starts every plan takes well over it. On "
+                               "the paths alone: %1")
+                                .arg(formatDuration(metrics.lowerBoundSeconds)));
+    ratio_->setToolTip(tr("The last robot's time in the field over the first's: how evenly they come home. "
+                          "On the paths alone, makespan / bound is %1")
+                           .arg(metrics.ratio, 0, 'f', 3));
+    if (auto* ratioName = qobject_cast<QLabel*>(summary_->labelForField(ratio_)))
+        ratioName->setText(tr("Last / first home"));
 }
 
 QString ResultsPanel::ratioText() const {
@@ -319,10 +344,17 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
     table_->setColumnHidden(sortiesColumn, sorties == nullptr);
     const bool underEvents =
         !metrics.robots.empty() && playedUnderEvents(*plan, metrics.robots.front().robot) != nullptr;
-    makespan_->setText(formatDuration(metrics.makespanSeconds));
+    // Where flights split the missions, the field team waits for the last robot home: the figures say when.
+    const bool inTheField =
+        !underEvents && metrics.fieldLowerBoundSeconds > 0.0 && metrics.fieldMakespanSeconds > 0.0;
+    makespan_->setText(formatDuration(inTheField ? metrics.fieldMakespanSeconds : metrics.makespanSeconds));
     describeTimes(underEvents);
-    lowerBound_->setText(formatDuration(metrics.lowerBoundSeconds));
-    ratio_->setText(QString::number(metrics.ratio, 'f', 3));
+    lowerBound_->setText(
+        formatDuration(inTheField ? metrics.fieldLowerBoundSeconds : metrics.lowerBoundSeconds));
+    ratio_->setText(inTheField ? tr("%1 in the field").arg(metrics.fieldSpread(), 0, 'f', 3)
+                               : QString::number(metrics.ratio, 'f', 3));
+    if (inTheField)
+        describeFieldTimes(metrics);
     covered_->setText(tr("%1 (%2 % of the passable area)")
                           .arg(hectares(metrics.coveredAreaSquareMetres))
                           .arg(metrics.coveredFraction * 100.0, 0, 'f', 1));

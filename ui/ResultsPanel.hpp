@@ -54,6 +54,7 @@ class ResultsPanel : public QWidget {
 
   private:
     void describeTimes(bool underEvents);
+    void describeFieldTimes(const PlanMetrics& metrics);
     void clearChart();
     void showChart(const Plan& plan, const QStringList& names);
     // A bar per robot of chartRobots_, in its colour: seconds by robot of that list.

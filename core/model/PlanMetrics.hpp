@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,6 +17,9 @@ struct RobotMetrics {
     double costSeconds = 0.0; // allocation cost of its region
     int turns = 0;
     double connectorSeconds = 0.0; // what its steps between cells of different sizes take beyond their travel
+    // When it is done in the field where some robot's mission is split into flights (its flights and the
+    // turnarounds between them, or its path's time for a robot that works in one go); 0 otherwise.
+    double fieldSeconds = 0.0;
 };
 
 // A robot that starts in a part of the map cut off from the largest part (by area) holding starts: it can
@@ -37,6 +41,12 @@ struct PlanMetrics {
     double lowerBoundSeconds = 0.0;
     std::vector<ConfinedRobot> confinedRobots; // robots outside the largest such part
     double ratio = 0.0;                        // makespan / lower bound
+    // Where some robot's mission is split into flights (PlanningProblem::robotFlights): when the last robot
+    // is done in the field, and the least any plan could take there: the work no plan avoids (as in
+    // lowerBoundSeconds) shared out in full flights with the fewest turnarounds; 0 otherwise. The trips out
+    // to the work and back are not in the bound: how long they take depends on where each flight works.
+    double fieldMakespanSeconds = 0.0;
+    double fieldLowerBoundSeconds = 0.0;
     double passableAreaSquareMetres = 0.0;
     double coveredAreaSquareMetres = 0.0;
     double coveredFraction = 0.0; // of the passable area
@@ -44,6 +54,19 @@ struct PlanMetrics {
     double repeatedFraction = 0.0; // path length beyond one pass over every sub-cell, relative to it
     std::vector<std::pair<std::string, double>> stageMilliseconds;
 
+    // The longest time in the field over the shortest, among robots with work: how evenly the robots come
+    // home; 0 without times in the field. (Makespan over the bound in the field says more of how far the
+    // work lies from the starts than of the plan.)
+    [[nodiscard]] double fieldSpread() const {
+        double shortest = 0.0;
+        double longest = 0.0;
+        for (const RobotMetrics& robot : robots)
+            if (robot.fieldSeconds > 0.0) {
+                shortest = shortest > 0.0 ? std::min(shortest, robot.fieldSeconds) : robot.fieldSeconds;
+                longest = std::max(longest, robot.fieldSeconds);
+            }
+        return shortest > 0.0 ? longest / shortest : 0.0;
+    }
     [[nodiscard]] int totalTurns() const {
         int turns = 0;
         for (const RobotMetrics& robot : robots)

@@ -2,6 +2,7 @@
 
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
+#include "core/model/FlightLimits.hpp"
 #include "core/model/MapPoint.hpp"
 #include "core/model/PlanIssue.hpp"
 #include "core/model/SpeedEvent.hpp"
@@ -34,6 +35,9 @@ struct PlanningProblem {
     // the paths' times. A planner that balancesFieldTime plans again on each robot's field time per second
     // of its path as measured, while that brings the last robot home sooner.
     std::function<std::vector<double>(const Plan&)> fieldSeconds;
+    // By robot, what its flights allow (a flight time, climbs and descents, turnarounds), given with
+    // fieldSeconds; missing or without a flight time: it works in one go. The bound in the field counts it.
+    std::vector<FlightLimits> robotFlights;
     // Each robot's charger in the grid's frame, for planners that fly on batteries; missing or none: its
     // start.
     std::vector<std::optional<MapPoint>> chargers;

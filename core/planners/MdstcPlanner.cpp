@@ -144,6 +144,7 @@ void MdstcPlanner::run(PlanningRun& run) const {
             // Compared path time to path time: the static plan is not evened out in the field.
             PlanningProblem onPaths = problem;
             onPaths.fieldSeconds = nullptr;
+            onPaths.robotFlights.clear();
             return MlctPlanner{}.plan(onPaths, staticParameters(run.parameters()),
                                       run.progress().within("static plan", 0.0, 1.0));
         });

@@ -46,7 +46,8 @@ bool startsOnTheMap(const Plan& plan) {
 } // namespace
 
 // Robots cannot leave the connected part they start in, so each part must be covered by its own robots.
-void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked) {
+void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked,
+                                                  std::vector<SharedWork>& shares) {
     PlanMetrics& metrics = plan.metrics;
     metrics.confinedRobots.clear();
     const std::vector<int>& starts = plan.regions.startCell;
@@ -69,10 +70,15 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
         figures.push_back(figuresOf(plan, part));
         if (figures.back().areaSquareMetres > figures[largest].areaSquareMetres)
             largest = figures.size() - 1;
-        if (evenShares)
-            metrics.lowerBoundSeconds =
-                std::max(metrics.lowerBoundSeconds,
-                         figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
+        if (!evenShares)
+            continue;
+        metrics.lowerBoundSeconds =
+            std::max(metrics.lowerBoundSeconds,
+                     figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
+        SharedWork work{std::vector<double>(starts.size(), 0.0), figures.back().secondsNoPlanBeats};
+        for (const int robot : part.robots)
+            work.weights[static_cast<std::size_t>(robot)] = 1.0;
+        shares.push_back(std::move(work));
     }
     for (std::size_t part = 0; part < parts.size(); ++part) {
         if (part == largest)
@@ -89,7 +95,7 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
 // plus the turns and connectors weighted. Weighted by what each robot would take alone (w_r = 1 / sum of
 // t_r), w_r t_r(i) is the cell's share of the map's travel time for a robot at the class speeds and its
 // share of the map's length for one at its own, whatever that speed. Uniform speeds give the usual bound.
-void PlanMetricsCalculator::boundWithOwnSpeeds(Plan& plan) {
+std::optional<PlanMetricsCalculator::SharedWork> PlanMetricsCalculator::boundWithOwnSpeeds(Plan& plan) {
     // Two passes over the covered cells rather than a list of them: 16 bytes a cell on a map of 69 M cells.
     const auto forEachCoveredCell = [&plan](const auto& use) {
         for (std::size_t id = 0; id < plan.cells.size() && id < plan.regions.robotOfCell.size(); ++id)
@@ -105,25 +111,59 @@ void PlanMetricsCalculator::boundWithOwnSpeeds(Plan& plan) {
         length += metres;
     });
     if (!(travel > 0.0) || !(length > 0.0))
-        return;
+        return std::nullopt;
     bool classSpeeds = false; // some robot drives at the class table's speeds
+    SharedWork work{std::vector<double>(plan.regions.startCell.size(), 0.0), 0.0};
     double weights = 0.0;
     double weightedExtras = 0.0; // turns and connectors
     for (std::size_t robot = 0; robot < plan.regions.startCell.size(); ++robot) {
         const double speed = ownSpeedOf(plan.robotSpeeds, robot);
         const double weight = speed > 0.0 ? speed / length : 1.0 / travel;
         classSpeeds = classSpeeds || !(speed > 0.0);
+        work.weights[robot] = weight;
         weights += weight;
         if (robot < plan.paths.size())
             weightedExtras += weight * (plan.paths[robot].turnSeconds + plan.paths[robot].connectorSeconds);
     }
     if (!(weights > 0.0))
-        return; // no robot
+        return std::nullopt; // no robot
     double shares = 0.0;
     forEachCoveredCell([&](double seconds, double metres) {
         shares += classSpeeds ? std::min(seconds / travel, metres / length) : metres / length;
     });
-    plan.metrics.lowerBoundSeconds = (shares + weightedExtras) / weights;
+    work.seconds = shares + weightedExtras;
+    plan.metrics.lowerBoundSeconds = work.seconds / weights;
+    return work;
+}
+
+double PlanMetricsCalculator::fieldBound(const std::vector<SharedWork>& shares) const {
+    const auto limitsOf = [this](std::size_t robot) {
+        return robot < robotFlights_.size() ? robotFlights_[robot] : FlightLimits{};
+    };
+    double bound = 0.0;
+    for (const SharedWork& share : shares) {
+        const auto doneWithin = [&](double fieldSeconds) {
+            double done = 0.0;
+            for (std::size_t robot = 0; robot < share.weights.size(); ++robot)
+                if (share.weights[robot] > 0.0)
+                    done += share.weights[robot] * limitsOf(robot).mostPathSecondsWithin(fieldSeconds);
+            return done >= share.seconds;
+        };
+        // Any robot of the share alone does it within its own least time: the search starts from there.
+        const auto first = std::find_if(share.weights.begin(), share.weights.end(),
+                                        [](double weight) { return weight > 0.0; });
+        if (first == share.weights.end() || !(share.seconds > 0.0))
+            continue;
+        const auto robot = static_cast<std::size_t>(first - share.weights.begin());
+        double low = 0.0;
+        double high = limitsOf(robot).leastFieldSecondsFor(share.seconds / *first);
+        for (int step = 0; step < 64 && high - low > 1e-9 * high; ++step) {
+            const double middle = 0.5 * (low + high);
+            (doneWithin(middle) ? high : low) = middle;
+        }
+        bound = std::max(bound, high);
+    }
+    return bound;
 }
 
 // The busiest robot travels at least the bound; on one charge it flies at most the longest endurance, so
@@ -206,11 +246,17 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
                               ? detection->summary().travelSecondsNoPlanBeats(metrics.totalTurns(), robots)
                               : cellTravelSeconds + connectorSeconds;
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : secondsNoPlanBeats / static_cast<double>(robots);
+    std::vector<SharedWork> shares{{std::vector<double>(robots, 1.0), secondsNoPlanBeats}};
     // With robots of their own speeds the parts' bounds, each part's work shared evenly, would not hold:
     // the map's bound with those speeds does (weaker where a robot is walled in).
     if (someOwnSpeed(plan.robotSpeeds) && detection == nullptr)
-        boundWithOwnSpeeds(plan);
-    boundByConnectedParts(plan, regionsLinked);
+        if (std::optional<SharedWork> work = boundWithOwnSpeeds(plan))
+            shares.front() = std::move(*work);
+    boundByConnectedParts(plan, regionsLinked, shares);
+    // A battery plan's paths hold their charges already: its robots are not split into flights.
+    const bool flights = std::any_of(robotFlights_.begin(), robotFlights_.end(),
+                                     [](const FlightLimits& limits) { return limits.splitsPaths(); });
+    metrics.fieldLowerBoundSeconds = flights && sortieLayerOf(plan) == nullptr ? fieldBound(shares) : 0.0;
     boundByCharges(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;

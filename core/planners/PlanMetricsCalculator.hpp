@@ -1,6 +1,10 @@
 #pragma once
 
+#include "core/model/FlightLimits.hpp"
 #include "core/model/Plan.hpp"
+
+#include <optional>
+#include <vector>
 
 namespace mcpp {
 
@@ -8,16 +12,34 @@ namespace mcpp {
 // (spec section 6). Stage timings are left as they are.
 class PlanMetricsCalculator {
   public:
+    PlanMetricsCalculator() = default;
+    // robotFlights: by robot, what its flights allow (PlanningProblem::robotFlights); where some robot's
+    // path is split into flights, the bound in the field is worked out too.
+    explicit PlanMetricsCalculator(std::vector<FlightLimits> robotFlights)
+        : robotFlights_(std::move(robotFlights)) {}
+
     void compute(Plan& plan) const;
 
+    // Work some robots must share: whatever the plan, the sum over robots of weights[r] times robot r's
+    // path time is at least `seconds` (weights by robot, 0 for a robot outside it).
+    struct SharedWork {
+        std::vector<double> weights;
+        double seconds = 0.0;
+    };
+
   private:
-    // Raises the lower bound to what the robots of each connected part need (robots of one speed only) and
-    // lists confined robots;
+    std::vector<FlightLimits> robotFlights_;
+
+    // Raises the lower bound to what the robots of each connected part need (robots of one speed only),
+    // adds each part's work to `shares`, and lists confined robots;
     // `regionsLinked`: the regions link every robot (regionsLinkEveryRobot), so the map is one part.
-    static void boundByConnectedParts(Plan& plan, bool regionsLinked);
+    static void boundByConnectedParts(Plan& plan, bool regionsLinked, std::vector<SharedWork>& shares);
     // The bound where some robots drive at their own speeds (Plan::robotSpeeds): no plan beats the weighted
-    // mean, by each robot's share of what the fleet does in a second, of what each robot must do.
-    static void boundWithOwnSpeeds(Plan& plan);
+    // mean, by each robot's share of what the fleet does in a second, of what each robot must do. Returns
+    // that work, or none where no robot works.
+    static std::optional<SharedWork> boundWithOwnSpeeds(Plan& plan);
+    // The least time in the field in which the robots, each within its flights, can do every share.
+    [[nodiscard]] double fieldBound(const std::vector<SharedWork>& shares) const;
     // Raises the lower bound by the charges a robot on a battery must make to fly it.
     static void boundByCharges(Plan& plan);
 };

@@ -205,6 +205,30 @@ std::vector<std::string> uncoveredLandMessages(const UncoveredLand& land, const 
     return messages;
 }
 
+// Each robot's time in the field, as the problem measures it, and the last robot's.
+void measureFieldTimes(Plan& plan, const std::vector<double>& fieldSeconds) {
+    PlanMetrics& metrics = plan.metrics;
+    metrics.fieldMakespanSeconds = 0.0;
+    for (std::size_t robot = 0; robot < metrics.robots.size() && robot < fieldSeconds.size(); ++robot) {
+        metrics.robots[robot].fieldSeconds = fieldSeconds[robot];
+        metrics.fieldMakespanSeconds = std::max(metrics.fieldMakespanSeconds, fieldSeconds[robot]);
+    }
+}
+
+std::vector<double> fieldTimesOf(const PlanMetrics& metrics) {
+    std::vector<double> seconds;
+    for (const RobotMetrics& robot : metrics.robots)
+        seconds.push_back(robot.fieldSeconds);
+    return seconds;
+}
+
+double stagesMilliseconds(const PlanMetrics& metrics) {
+    double sum = 0.0;
+    for (const auto& [stage, milliseconds] : metrics.stageMilliseconds)
+        sum += milliseconds;
+    return sum;
+}
+
 // By robot, its seconds in the field for a second of its path; 1 where either is unknown.
 std::vector<double> measuredFieldPaces(const std::vector<CoveragePath>& paths,
                                        const std::vector<double>& fieldSeconds) {
@@ -271,7 +295,8 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
     constexpr int fieldBalanceRounds = 2;
     const double roundShare = 1.0 / (fieldBalanceRounds + 1);
     Plan best = planOnce(planner, problem, given, progress.scaled(0.0, roundShare));
-    std::vector<double> bestField = problem.fieldSeconds(best);
+    std::vector<double> bestField = fieldTimesOf(best.metrics);
+    double dropped = 0.0; // milliseconds of the plans not kept
     for (int round = 1; round <= fieldBalanceRounds; ++round) {
         const std::vector<double> paces = measuredFieldPaces(best.paths, bestField);
         // Paces within 5 % of each other divide the map about as before (one flight's climb and descent).
@@ -281,12 +306,18 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
         Plan next = planOnce(
             planner, problem, given,
             progress.within("field time balance", round * roundShare, (round + 1) * roundShare), paces);
-        std::vector<double> nextField = problem.fieldSeconds(next);
-        if (!(longestOf(nextField) < longestOf(bestField)))
+        std::vector<double> nextField = fieldTimesOf(next.metrics);
+        if (!(longestOf(nextField) < longestOf(bestField))) {
+            dropped += stagesMilliseconds(next.metrics);
             break;
+        }
+        dropped += stagesMilliseconds(best.metrics);
         best = std::move(next);
         bestField = std::move(nextField);
     }
+    // The plans made and dropped took time too: the report's timings add up to what the user waited.
+    if (dropped > 0.0)
+        best.metrics.stageMilliseconds.emplace_back("field time rounds", dropped);
     progress.report("done", 1.0);
     return best;
 }
@@ -318,7 +349,9 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     planningRun.stage("metrics", [&] {
         parallelFor(plan.paths.size(),
                     [&](std::size_t path, int) { measurePath(plan.paths[path], plan.cells); });
-        PlanMetricsCalculator{}.compute(plan);
+        PlanMetricsCalculator{problem.robotFlights}.compute(plan);
+        if (problem.fieldSeconds)
+            measureFieldTimes(plan, problem.fieldSeconds(plan));
         return 0;
     });
     if (plan.metrics.unreachableAreaSquareMetres > 0.0)

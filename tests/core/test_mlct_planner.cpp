@@ -65,6 +65,12 @@ class MlctPlannerTest : public QObject {
         };
         QVERIFY(hasIssue("field-time-balance"));
         QVERIFY(!hasIssue("uneven-plan")); // the paths differ by design
+        // The first plan, planned and dropped, is timed with the one kept.
+        const auto rounds = std::find_if(
+            inTheField.metrics.stageMilliseconds.begin(), inTheField.metrics.stageMilliseconds.end(),
+            [](const auto& stage) { return stage.first == "field time rounds"; });
+        QVERIFY(rounds != inTheField.metrics.stageMilliseconds.end());
+        QVERIFY(rounds->second > 0.0);
     }
 
     void plansAroundALake() {

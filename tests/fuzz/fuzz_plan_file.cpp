@@ -29,8 +29,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool raw = (data[0] & 1) != 0;
     const std::string body = raw ? compressedChunk(data + 1, size - 1)
                                  : std::string(reinterpret_cast<const char*>(data) + 1, size - 1);
-    const bool beforeWalkedCounts = (data[0] & 2) != 0; // the body of a file of the format before
-    auto plan = mcpp::io::parsePlanBody(body, "fuzz.mcpp-plan", !beforeWalkedCounts);
+    // The body of a file of this format or of one before: bit 1 alone MCPP-PLAN 3, bit 2 alone 4.
+    constexpr int versions[] = {mcpp::io::planFormatVersion, 3, 4, mcpp::io::planFormatVersion};
+    const int version = versions[(data[0] >> 1) & 3];
+    auto plan = mcpp::io::parsePlanBody(body, "fuzz.mcpp-plan", version);
     if (plan.ok() && plan.value().cells.size() > 0) {
         // What the window does with a restored plan first: find cells.
         const mcpp::Cell& cell = plan.value().cells.cell(0);

@@ -331,6 +331,14 @@ class MissionFilesTest : public QObject {
 
         // Beta, an aircraft, spends longer in the field than on its path: the planner is given its measure.
         QVERIFY(static_cast<bool>(problem.fieldSeconds));
+        // And what each robot's flights allow, for the bound in the field: beta's 22 min flights, each
+        // with its climb to 45.5 m and its descent.
+        QCOMPARE(problem.robotFlights.size(), mission.robots.size());
+        QCOMPARE(problem.robotFlights[1].flightSeconds, 1320.0);
+        QCOMPARE(problem.robotFlights[1].climbAndDescentSeconds, 45.5 / 2.5 + 45.5 / 1.5);
+        QVERIFY(problem.robotFlights[1].splitsPaths());
+        QCOMPARE(problem.robotFlights[1].turnaroundSeconds, 90.0);
+        QVERIFY(!problem.robotFlights[0].splitsPaths()); // alpha flies no limit
         Mission rovers = mission;
         for (RobotSpec& robot : rovers.robots)
             robot.vehicle.type = VehicleType::Rover;
@@ -341,6 +349,7 @@ class MissionFilesTest : public QObject {
         PlanningProblem onTheGround;
         applyRobotSettings(rovers, onTheGround);
         QVERIFY(!onTheGround.fieldSeconds); // their split missions end with their paths
+        QVERIFY(onTheGround.robotFlights.empty());
 
         mission.planner = defaultPlannerChoice("mcpp-mlct");
         PlanningProblem other;

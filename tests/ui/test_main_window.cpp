@@ -333,6 +333,40 @@ class TestMainWindow : public QObject {
         QCOMPARE(panel.chartView()->chart()->title(), QStringLiteral("Time per robot"));
     }
 
+    // Where flights split the missions, the summary says when the last robot is home, the bound in the field
+    // and how evenly the robots come home, the paths' figures in the tooltips; a plan without flights shows
+    // the paths' again.
+    void summaryGivesTimesInTheFieldWhereFlightsSplitMissions() {
+        Plan plan;
+        plan.planner = "mcpp-mlct";
+        plan.metrics.robots.resize(2);
+        for (int robot = 0; robot < 2; ++robot) {
+            plan.metrics.robots[static_cast<std::size_t>(robot)].robot = robot;
+            plan.metrics.robots[static_cast<std::size_t>(robot)].timeSeconds = 3600.0 * (robot + 1);
+        }
+        plan.metrics.makespanSeconds = 7200.0;
+        plan.metrics.lowerBoundSeconds = 5400.0;
+        plan.metrics.ratio = 7200.0 / 5400.0;
+        Plan flown = plan;
+        flown.metrics.robots[0].fieldSeconds = 9000.0; // a drone, out longer than its path
+        flown.metrics.robots[1].fieldSeconds = 7500.0; // a rover, out as long as its path
+        flown.metrics.fieldMakespanSeconds = 9000.0;
+        flown.metrics.fieldLowerBoundSeconds = 6000.0;
+        ui::ResultsPanel panel;
+        panel.showPlan(&flown, {});
+        QCOMPARE(panel.makespanText(), ui::ResultsPanel::formatDuration(9000.0));
+        QCOMPARE(panel.ratioText(), QStringLiteral("1.200 in the field"));
+        auto* lowerBound = panel.findChild<QLabel*>(QStringLiteral("lowerBoundLabel"));
+        QVERIFY(lowerBound != nullptr);
+        QCOMPARE(lowerBound->text(), ui::ResultsPanel::formatDuration(6000.0));
+        QVERIFY(lowerBound->toolTip().contains(ui::ResultsPanel::formatDuration(5400.0)));
+        panel.showPlan(&plan, {});
+        QCOMPARE(panel.makespanText(), ui::ResultsPanel::formatDuration(7200.0));
+        QCOMPARE(panel.ratioText(), QStringLiteral("1.333"));
+        QCOMPARE(lowerBound->text(), ui::ResultsPanel::formatDuration(5400.0));
+        QVERIFY(lowerBound->toolTip().isEmpty());
+    }
+
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QCoreApplication::setOrganizationName(QStringLiteral("mcpp"));

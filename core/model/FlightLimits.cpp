@@ -1,0 +1,27 @@
+#include "core/model/FlightLimits.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcpp {
+
+double FlightLimits::mostPathSecondsWithin(double fieldSeconds) const {
+    if (!splitsPaths())
+        return std::max(0.0, fieldSeconds);
+    const double workPerFlight = flightSeconds - climbAndDescentSeconds;
+    // Full flights, each followed by a turnaround but the last.
+    const double fullFlights =
+        std::floor((fieldSeconds + turnaroundSeconds) / (flightSeconds + turnaroundSeconds));
+    const double left = fieldSeconds - fullFlights * (flightSeconds + turnaroundSeconds);
+    const double lastFlight = std::clamp(left - climbAndDescentSeconds, 0.0, workPerFlight);
+    return std::max(0.0, fullFlights) * workPerFlight + lastFlight;
+}
+
+double FlightLimits::leastFieldSecondsFor(double pathSeconds) const {
+    if (!splitsPaths() || !(pathSeconds > 0.0))
+        return std::max(0.0, pathSeconds);
+    const double flights = std::ceil(pathSeconds / (flightSeconds - climbAndDescentSeconds));
+    return pathSeconds + flights * climbAndDescentSeconds + (flights - 1.0) * turnaroundSeconds;
+}
+
+} // namespace mcpp

@@ -1,0 +1,113 @@
+#include "core/model/FlightLimits.hpp"
+#include "core/planners/MlctPlanner.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+
+using namespace mcpp;
+
+namespace {
+
+// Flights of 1000 s, of which 100 s climb and descend, 300 s on the ground between two.
+constexpr FlightLimits drone{1000.0, 100.0, 300.0};
+
+// Two robots in opposite corners of 30 x 30 cells of grass; each robot's time in the field is what its limits
+// make of its path.
+PlanningProblem fleetProblem(const std::vector<FlightLimits>& limits) {
+    PlanningProblem problem = test::uniformProblem(30, 30, 10.0, {}, {});
+    problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 29, 29)};
+    problem.robotFlights = limits;
+    problem.fieldSeconds = [limits](const Plan& plan) {
+        std::vector<double> seconds;
+        for (std::size_t robot = 0; robot < plan.paths.size(); ++robot)
+            seconds.push_back(limits[robot].leastFieldSecondsFor(plan.paths[robot].timeSeconds));
+        return seconds;
+    };
+    return problem;
+}
+
+} // namespace
+
+class FieldTimeBoundTest : public QObject {
+    Q_OBJECT
+  private slots:
+    // 2000 s of path: three flights (900 + 900 + 200 s of work), three climbs and descents, two turnarounds.
+    void aPathIsFlownInFullFlights() {
+        QCOMPARE(drone.leastFieldSecondsFor(2000.0), 2000.0 + 3 * 100.0 + 2 * 300.0);
+        QCOMPARE(drone.leastFieldSecondsFor(900.0), 1000.0); // one full flight, no turnaround
+        QCOMPARE(drone.leastFieldSecondsFor(0.0), 0.0);
+        QCOMPARE(drone.mostPathSecondsWithin(2900.0), 2000.0);
+        QCOMPARE(drone.mostPathSecondsWithin(1000.0), 900.0);
+        QCOMPARE(drone.mostPathSecondsWithin(1200.0), 900.0); // on the ground, turning around
+        QCOMPARE(drone.mostPathSecondsWithin(1350.0), 900.0); // climbing again
+        QCOMPARE(drone.mostPathSecondsWithin(50.0), 0.0);
+        // Without a flight time a robot works its path in one go.
+        const FlightLimits rover;
+        QVERIFY(!rover.splitsPaths());
+        QCOMPARE(rover.leastFieldSecondsFor(5000.0), 5000.0);
+        QCOMPARE(rover.mostPathSecondsWithin(5000.0), 5000.0);
+    }
+
+    // The two inverse each other: the least field time for a path flies that path and no more.
+    void theTwoMeasuresAgree() {
+        for (double path = 10.0; path < 10000.0; path += 137.0) {
+            const double field = drone.leastFieldSecondsFor(path);
+            QVERIFY2(std::abs(drone.mostPathSecondsWithin(field) - path) < 1e-9 * field,
+                     qPrintable(QString("%1 s of path in %2 s").arg(path).arg(field)));
+            QVERIFY(drone.mostPathSecondsWithin(field - 1.0) < path);
+        }
+    }
+
+    // Two drones alike: no plan brings the last home before either flies half the work no plan avoids, and
+    // the plan's own times in the field are what the problem measures.
+    void twoDronesShareTheWorkInFullFlights() {
+        const PlanningProblem problem = fleetProblem({drone, drone});
+        const Plan plan = MlctPlanner{}.plan(problem, {});
+        const auto violations = test::checkAllInvariants(problem, plan);
+        QVERIFY2(violations.empty(), test::describe(violations).c_str());
+        const PlanMetrics& metrics = plan.metrics;
+        const double expected = drone.leastFieldSecondsFor(metrics.lowerBoundSeconds);
+        QVERIFY2(std::abs(metrics.fieldLowerBoundSeconds - expected) <= 1e-6 * expected,
+                 qPrintable(QString("%1 against %2").arg(metrics.fieldLowerBoundSeconds).arg(expected)));
+        const std::vector<double> field = problem.fieldSeconds(plan);
+        QCOMPARE(metrics.robots[0].fieldSeconds, field[0]);
+        QCOMPARE(metrics.robots[1].fieldSeconds, field[1]);
+        QCOMPARE(metrics.fieldMakespanSeconds, std::max(field[0], field[1]));
+        QCOMPARE(metrics.fieldSpread(), std::max(field[0], field[1]) / std::min(field[0], field[1]));
+        QVERIFY(metrics.fieldMakespanSeconds >= metrics.fieldLowerBoundSeconds);
+    }
+
+    // A drone beside a rover: the bound is the time T in which the rover's T and the drone's flights within T
+    // do the work together, so the rover, which never stops, is given more of it than the drone.
+    void aRoverAndADroneShareTheWorkByWhatEachDoesInTime() {
+        const PlanningProblem problem = fleetProblem({FlightLimits{}, drone});
+        const Plan plan = MlctPlanner{}.plan(problem, {});
+        const PlanMetrics& metrics = plan.metrics;
+        const double bound = metrics.fieldLowerBoundSeconds;
+        const double work = 2.0 * metrics.lowerBoundSeconds;
+        QVERIFY2(std::abs(bound + drone.mostPathSecondsWithin(bound) - work) <= 1e-6 * work,
+                 qPrintable(QString("%1 s: %2 of %3")
+                                .arg(bound)
+                                .arg(bound + drone.mostPathSecondsWithin(bound))
+                                .arg(work)));
+        QVERIFY(bound > metrics.lowerBoundSeconds); // the drone's climbs and turnarounds cost the fleet
+        QVERIFY(metrics.fieldMakespanSeconds >= bound);
+        // Planned in the field, the two come home within a few per cent of each other.
+        QVERIFY2(metrics.fieldSpread() < 1.1, qPrintable(QString::number(metrics.fieldSpread())));
+    }
+
+    // Without flights there is no time in the field to speak of.
+    void robotsWithoutFlightsHaveNoFieldFigures() {
+        PlanningProblem problem = fleetProblem({FlightLimits{}, FlightLimits{}});
+        problem.robotFlights.clear();
+        problem.fieldSeconds = nullptr;
+        const Plan plan = MlctPlanner{}.plan(problem, {});
+        QCOMPARE(plan.metrics.fieldLowerBoundSeconds, 0.0);
+        QCOMPARE(plan.metrics.fieldMakespanSeconds, 0.0);
+        QCOMPARE(plan.metrics.fieldSpread(), 0.0);
+    }
+};
+
+QTEST_APPLESS_MAIN(FieldTimeBoundTest)
+#include "test_field_time_bound.moc"
