@@ -731,7 +731,7 @@ void BatchRunner::printSummary(const Plan& plan) const {
     if (!fieldTimeNote_.empty())
         output_ << "mcpp: " << fieldTimeNote_ << '\n';
     if (!fieldTimeNote_.empty() && metrics.fieldLowerBoundSeconds > 0.0)
-        output_ << "mcpp: no plan brings the last robot home before "
+        output_ << "mcpp: no plan making these turns brings the last robot home before "
                 << formatDuration(metrics.fieldLowerBoundSeconds)
                 << " in the field, the trips out to the work not counted\n";
     if (const TimelineLayer* timeline = timelineLayerOf(plan))

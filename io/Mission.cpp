@@ -3,6 +3,7 @@
 #include "core/model/BatteryEndurance.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/NameSuggestion.hpp"
+#include "core/model/ParallelFor.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/parameters/NumberText.hpp"
 #include "core/parameters/ParameterResolution.hpp"
@@ -963,38 +964,61 @@ std::function<std::vector<double>(const Plan&)> fieldSecondsOf(const Mission& mi
     if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater))
         return {};
     return [vehicles, settings = mission.exports](const Plan& plan) {
-        std::vector<double> seconds;
-        for (std::size_t robot = 0; robot < plan.paths.size(); ++robot) {
+        std::vector<double> seconds(plan.paths.size(), 0.0);
+        // A robot's mission is made as its waypoint files make it: robots in parallel.
+        parallelFor(plan.paths.size(), [&](std::size_t robot, int) {
             const CoveragePath& path = plan.paths[robot];
             const double field = robot < vehicles.size() && splitMissionEndsLater(vehicles[robot])
                                      ? missionSize(path, plan.cells, vehicles[robot], settings).fieldSeconds
                                      : 0.0;
-            seconds.push_back(field > 0.0 ? field : path.timeSeconds);
-        }
+            seconds[robot] = field > 0.0 ? field : path.timeSeconds;
+        });
         return seconds;
     };
 }
 
+// The fewest seconds a robot's waypoint files take for a second of its planned path: a cruise speed is
+// commanded rounded; land-cover speeds are commanded rounded (up to 5 % up, two significant digits) and a
+// speed in force is held while the next differs by no more than the tolerance, so a cell may be flown
+// faster than planned.
+double fastestPaceOf(const VehicleSettings& vehicle, const ExportSettings& exports) {
+    constexpr double mostRoundedUp = 1.05;
+    const double cruise = vehicle.cruiseSpeedMetresPerSecond;
+    if (cruise > 0.0)
+        return cruise / std::max(cruise, roundedSpeed(cruise));
+    return std::clamp(1.0 - exports.speedTolerance, 0.0, 1.0) / mostRoundedUp;
+}
+
 // What each robot's flights allow, where some robot's split mission ends later than its path (as
 // fieldSecondsOf); else none.
-std::vector<FlightLimits> flightLimitsOf(const std::vector<VehicleSettings>& vehicles) {
+std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
+                                         const std::vector<VehicleSettings>& vehicles) {
     if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater))
         return {};
     std::vector<FlightLimits> limits;
     for (const VehicleSettings& vehicle : vehicles)
-        limits.push_back(
-            {vehicle.flightTimeSeconds, climbAndDescentSeconds(vehicle), vehicle.turnaroundSeconds});
+        limits.push_back({vehicle.flightTimeSeconds, climbAndDescentSeconds(vehicle),
+                          vehicle.turnaroundSeconds, fastestPaceOf(vehicle, mission.exports)});
     return limits;
 }
 
 } // namespace
+
+FieldTimeInputs fieldTimeInputs(const Mission& mission) {
+    std::vector<VehicleSettings> vehicles = robotVehicles(mission);
+    if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater))
+        return {};
+    const ExportSettings& exports = mission.exports;
+    return {std::move(vehicles), exports.speedTolerance, exports.speedChangesAtTurnsOnly,
+            exports.mergeCollinear};
+}
 
 void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     problem.batterySeconds = robotBatteries(mission);
     problem.events = mission.events;
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     problem.fieldSeconds = fieldSecondsOf(mission, vehicles);
-    problem.robotFlights = flightLimitsOf(vehicles);
+    problem.robotFlights = flightLimitsOf(mission, vehicles);
     applyCruiseSpeed(mission, vehicles, problem);
     noteAircraftAltitudes(mission, vehicles, problem.notes);
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))

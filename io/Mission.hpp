@@ -101,6 +101,20 @@ struct Mission {
 [[nodiscard]] double fleetCruiseSpeed(const Mission& mission);
 // Each robot's cruise speed, its own or the mission's; 0 where it takes the land cover's.
 [[nodiscard]] std::vector<double> robotCruiseSpeeds(const Mission& mission);
+
+// What a plan's times in the field depend on, where they are measured (some robot's split mission ends later
+// than its path; else nothing): each robot's vehicle and how the waypoint files command speeds. A plan made
+// with other settings is out of date: its figures in the field, and MCPP-MLCT's division, would differ.
+struct FieldTimeInputs {
+    std::vector<VehicleSettings> vehicles;
+    double speedTolerance = 0.0;
+    bool speedChangesAtTurnsOnly = false;
+    bool mergeCollinear = false;
+
+    [[nodiscard]] bool measured() const { return !vehicles.empty(); }
+    friend bool operator==(const FieldTimeInputs&, const FieldTimeInputs&) = default;
+};
+[[nodiscard]] FieldTimeInputs fieldTimeInputs(const Mission& mission);
 // What a planning problem takes from the mission beside the map and the starts: the robots' batteries, the
 // events and, when the whole fleet cruises at one speed, that speed over every passable class in place of
 // the land cover's (a drone's speed does not follow the ground under it), so that plan times are the

@@ -513,7 +513,8 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
             *area = absoluteNormal(resolveMissionPath(*area, missionPath));
     inputs.exports = {};
     // Vehicles shape the files, not the plan, except for the cruise speeds the plan drives the robots at: the
-    // fleet's, or each robot's where they differ.
+    // fleet's, or each robot's where they differ; and where time in the field is measured, all of them and
+    // how the files command speeds (fieldTimeInputs), restored below.
     inputs.exports.vehicle.cruiseSpeedMetresPerSecond = fleetCruiseSpeed(mission);
     const std::vector<double> cruiseSpeeds = robotCruiseSpeeds(mission);
     // A battery planner's batteries may come from the vehicles' flight times.
@@ -526,6 +527,13 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
             inputs.robots[robot].vehicle.cruiseSpeedMetresPerSecond = cruiseSpeeds[robot];
         if (robot < batteries.size() && batteries[robot] > 0.0)
             inputs.robots[robot].batterySeconds = batteries[robot];
+    }
+    if (fieldTimeInputs(mission).measured()) {
+        inputs.exports = mission.exports;
+        inputs.exports.densePaths = false;
+        inputs.exports.cellPolygons = false;
+        for (std::size_t robot = 0; robot < inputs.robots.size(); ++robot)
+            inputs.robots[robot].vehicle = mission.robots[robot].vehicle;
     }
     const std::string files =
         inputFilesIdentity({inputs.rasterPath, inputs.area.includePath, inputs.area.excludePath});

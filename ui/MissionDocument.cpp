@@ -57,7 +57,8 @@ PlanInputs MissionDocument::currentInputs() const {
             mission_.events,
             io::plannerBatteries(mission_),
             chargers(),
-            io::robotCruiseSpeeds(mission_)};
+            io::robotCruiseSpeeds(mission_),
+            io::fieldTimeInputs(mission_)};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {

@@ -25,6 +25,9 @@ struct PlanInputs {
     std::vector<std::optional<MapPoint>> chargers = {};
     // Each robot's cruise speed, which the plan uses over every passable class; 0: the classes'.
     std::vector<double> cruiseSpeeds = {};
+    // Where time in the field is measured, what it depends on (the plan's figures there, MCPP-MLCT's
+    // division).
+    io::FieldTimeInputs fieldTime = {};
 
     friend bool operator==(const PlanInputs&, const PlanInputs&) = default;
 };

@@ -256,6 +256,8 @@ void ResultsPanel::describeTimes(bool underEvents) {
                               : tr("The slowest robot's time, turns included"));
     lowerBound_->setToolTip(QString());
     ratio_->setToolTip(QString());
+    if (auto* boundName = qobject_cast<QLabel*>(summary_->labelForField(lowerBound_)))
+        boundName->setText(tr("Lower bound"));
     if (auto* ratioName = qobject_cast<QLabel*>(summary_->labelForField(ratio_)))
         ratioName->setText(tr("Makespan / bound"));
 }
@@ -265,10 +267,13 @@ void ResultsPanel::describeFieldTimes(const PlanMetrics& metrics) {
     if (auto* makespanName = qobject_cast<QLabel*>(summary_->labelForField(makespan_)))
         makespanName->setText(tr("Last robot home"));
     makespan_->setToolTip(tr("When the last robot is done in the field: its flights, with their climbs, "
-                             "descents and trips out to the work, and the turnarounds between them. Its "
-                             "path alone, the slowest robot's, takes %1")
+                             "descents and trips out to the work, and the turnarounds between them. The "
+                             "slowest robot's path alone takes %1")
                               .arg(formatDuration(metrics.makespanSeconds)));
-    lowerBound_->setToolTip(tr("No plan brings the last robot home sooner: the work no plan avoids, shared "
+    if (auto* boundName = qobject_cast<QLabel*>(summary_->labelForField(lowerBound_)))
+        boundName->setText(tr("Bound in the field"));
+    lowerBound_->setToolTip(tr("No plan making these turns brings the last robot home sooner: the work no "
+                               "plan avoids, shared "
                                "out in full flights with the fewest turnarounds. The trips out to the work "
                                "and back are not in it (how long they take depends on where each flight "
                                "works), so on land far from the starts every plan takes well over it. On "

@@ -6,6 +6,10 @@
 namespace mcpp {
 
 double FlightLimits::mostPathSecondsWithin(double fieldSeconds) const {
+    return mostFlownSecondsWithin(fieldSeconds) / fastestPace;
+}
+
+double FlightLimits::mostFlownSecondsWithin(double fieldSeconds) const {
     if (!splitsPaths())
         return std::max(0.0, fieldSeconds);
     const double workPerFlight = flightSeconds - climbAndDescentSeconds;
@@ -18,10 +22,11 @@ double FlightLimits::mostPathSecondsWithin(double fieldSeconds) const {
 }
 
 double FlightLimits::leastFieldSecondsFor(double pathSeconds) const {
-    if (!splitsPaths() || !(pathSeconds > 0.0))
-        return std::max(0.0, pathSeconds);
-    const double flights = std::ceil(pathSeconds / (flightSeconds - climbAndDescentSeconds));
-    return pathSeconds + flights * climbAndDescentSeconds + (flights - 1.0) * turnaroundSeconds;
+    const double flown = pathSeconds * fastestPace;
+    if (!splitsPaths() || !(flown > 0.0))
+        return std::max(0.0, flown);
+    const double flights = std::ceil(flown / (flightSeconds - climbAndDescentSeconds));
+    return flown + flights * climbAndDescentSeconds + (flights - 1.0) * turnaroundSeconds;
 }
 
 } // namespace mcpp

@@ -9,14 +9,22 @@ struct FlightLimits {
     double flightSeconds = 0.0; // 0: no limit
     double climbAndDescentSeconds = 0.0;
     double turnaroundSeconds = 0.0;
+    // The fewest seconds its flights can take for a second of its planned path: below 1 where the waypoint
+    // files command speeds rounded up or held within a tolerance, so that a cell may be flown faster.
+    double fastestPace = 1.0;
 
     [[nodiscard]] bool splitsPaths() const { return flightSeconds > climbAndDescentSeconds; }
-    // The most seconds of path the robot can fly within `fieldSeconds` in the field: full flights one after
-    // the other, the last one cut short. Trips out to the work and back would only lower it.
+    // The most seconds of planned path the robot can fly within `fieldSeconds` in the field: full flights one
+    // after the other, the last one cut short, at the fastest pace. Trips out to the work and back would only
+    // lower it.
     [[nodiscard]] double mostPathSecondsWithin(double fieldSeconds) const;
-    // The fewest seconds in the field that fly `pathSeconds` of path: its flights (each but the last full)
-    // with their climbs and descents, and the turnarounds between them.
+    // The fewest seconds in the field that fly `pathSeconds` of planned path at the fastest pace: its flights
+    // (each but the last full) with their climbs and descents, and the turnarounds between them.
     [[nodiscard]] double leastFieldSecondsFor(double pathSeconds) const;
+
+  private:
+    // The same in seconds flown.
+    [[nodiscard]] double mostFlownSecondsWithin(double fieldSeconds) const;
 };
 
 } // namespace mcpp

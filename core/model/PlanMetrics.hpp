@@ -17,8 +17,9 @@ struct RobotMetrics {
     double costSeconds = 0.0; // allocation cost of its region
     int turns = 0;
     double connectorSeconds = 0.0; // what its steps between cells of different sizes take beyond their travel
-    // When it is done in the field where some robot's mission is split into flights (its flights and the
-    // turnarounds between them, or its path's time for a robot that works in one go); 0 otherwise.
+    // When it is done in the field, where the problem measures it (PlanningProblem::fieldSeconds): its
+    // flights and the turnarounds between them, or its path's time for a robot that works in one go; 0
+    // otherwise.
     double fieldSeconds = 0.0;
 };
 
@@ -41,10 +42,12 @@ struct PlanMetrics {
     double lowerBoundSeconds = 0.0;
     std::vector<ConfinedRobot> confinedRobots; // robots outside the largest such part
     double ratio = 0.0;                        // makespan / lower bound
-    // Where some robot's mission is split into flights (PlanningProblem::robotFlights): when the last robot
-    // is done in the field, and the least any plan could take there: the work no plan avoids (as in
-    // lowerBoundSeconds) shared out in full flights with the fewest turnarounds; 0 otherwise. The trips out
-    // to the work and back are not in the bound: how long they take depends on where each flight works.
+    // Where the problem measures time in the field (PlanningProblem::fieldSeconds), when the last robot is
+    // done there; and where some robot's path is split into flights (PlanningProblem::robotFlights), the
+    // least any plan making these turns could take there: the work the path bound counts, shared out in full
+    // flights with the fewest turnarounds. 0 otherwise, and both 0 for a battery plan, whose paths hold their
+    // charges. The trips out to the work and back are not in the bound: how long they take depends on where
+    // each flight works.
     double fieldMakespanSeconds = 0.0;
     double fieldLowerBoundSeconds = 0.0;
     double passableAreaSquareMetres = 0.0;

@@ -5,6 +5,7 @@
 #include "core/model/HumanUnits.hpp"
 #include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/model/StartPointCheck.hpp"
 #include "core/model/TurnTimeModel.hpp"
@@ -350,7 +351,8 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
         parallelFor(plan.paths.size(),
                     [&](std::size_t path, int) { measurePath(plan.paths[path], plan.cells); });
         PlanMetricsCalculator{problem.robotFlights}.compute(plan);
-        if (problem.fieldSeconds)
+        // A battery plan's paths hold their sorties and charges: they are not split into flights again.
+        if (problem.fieldSeconds && sortieLayerOf(plan) == nullptr)
             measureFieldTimes(plan, problem.fieldSeconds(plan));
         return 0;
     });

@@ -326,58 +326,84 @@ RobotsOnBatteries balancedOnBatteries(PlanningRun& run, const Division& division
     return best;
 }
 
-// Land left out is warned of as lying at the edge of a robot's region: a robot whose region no longer
-// borders it (another robot was handed the land between, or a later division drew the regions otherwise)
-// gives it up to the robot whose region lies nearest through the land left out, which could not reach it
-// either (the hand-over would have given it). Land that borders no region keeps its robot.
-void nameBorderingRobots(const CellGraph& graph, const std::vector<int>& robotOfCell,
-                         std::vector<int>& leftOutBy) {
-    // Each piece of land left out, and the robots whose regions border it.
-    std::vector<int> piece(graph.size(), -1);
-    std::vector<std::vector<int>> borders;
+// The pieces of land left out (cells with leftOutBy >= 0, joined through each other) and, by piece, the
+// robots whose regions border it, each once.
+struct LeftOutPieces {
+    std::vector<int> pieceOfCell; // -1 for a cell not left out
+    std::vector<std::vector<int>> borderingRobots;
+    std::vector<int> borderCells; // region cells next to land left out
+};
+
+LeftOutPieces leftOutPieces(const CellGraph& graph, const std::vector<int>& robotOfCell,
+                            const std::vector<int>& leftOutBy) {
+    LeftOutPieces pieces{std::vector<int>(graph.size(), -1), {}, {}};
+    std::vector<char> border(graph.size(), 0);
     for (std::size_t first = 0; first < graph.size(); ++first) {
-        if (leftOutBy[first] < 0 || piece[first] >= 0)
+        if (leftOutBy[first] < 0 || pieces.pieceOfCell[first] >= 0)
             continue;
-        const auto label = static_cast<int>(borders.size());
-        std::vector<int>& robots = borders.emplace_back();
+        const auto label = static_cast<int>(pieces.borderingRobots.size());
+        std::vector<int>& robots = pieces.borderingRobots.emplace_back();
         std::vector<int> stack{static_cast<int>(first)};
-        piece[first] = label;
+        pieces.pieceOfCell[first] = label;
         while (!stack.empty()) {
             const int cell = stack.back();
             stack.pop_back();
             for (const int next : graph.neighbours(cell)) {
                 const auto index = static_cast<std::size_t>(next);
-                if (robotOfCell[index] >= 0)
-                    robots.push_back(robotOfCell[index]);
-                else if (leftOutBy[index] >= 0 && piece[index] < 0) {
-                    piece[index] = label;
+                if (const int robot = robotOfCell[index]; robot >= 0) {
+                    if (std::find(robots.begin(), robots.end(), robot) == robots.end())
+                        robots.push_back(robot);
+                    if (border[index] == 0)
+                        pieces.borderCells.push_back(next);
+                    border[index] = 1;
+                } else if (leftOutBy[index] >= 0 && pieces.pieceOfCell[index] < 0) {
+                    pieces.pieceOfCell[index] = label;
                     stack.push_back(next);
                 }
             }
         }
     }
-    // The region nearest each cell left out, in steps through the land left out.
-    std::vector<int> nearest(robotOfCell);
-    std::vector<int> frontier;
-    for (std::size_t cell = 0; cell < graph.size(); ++cell)
-        if (robotOfCell[cell] >= 0)
-            frontier.push_back(static_cast<int>(cell));
+    return pieces;
+}
+
+// By cell of land left out, the robot whose region lies fewest steps away through that land (-1 for land
+// bordering no region and for other cells).
+std::vector<int> nearestRegionThroughLeftOut(const CellGraph& graph, const std::vector<int>& robotOfCell,
+                                             const LeftOutPieces& pieces) {
+    std::vector<int> nearest(graph.size(), -1);
+    std::vector<int> frontier = pieces.borderCells;
+    const auto robotAt = [&](int cell) {
+        const auto index = static_cast<std::size_t>(cell);
+        return robotOfCell[index] >= 0 ? robotOfCell[index] : nearest[index];
+    };
     while (!frontier.empty()) {
         std::vector<int> next;
         for (const int cell : frontier)
             for (const int neighbour : graph.neighbours(cell)) {
                 const auto index = static_cast<std::size_t>(neighbour);
-                if (piece[index] < 0 || nearest[index] >= 0)
+                if (pieces.pieceOfCell[index] < 0 || nearest[index] >= 0)
                     continue;
-                nearest[index] = nearest[static_cast<std::size_t>(cell)];
+                nearest[index] = robotAt(cell);
                 next.push_back(neighbour);
             }
         frontier = std::move(next);
     }
+    return nearest;
+}
+
+// Land left out is warned of as lying at the edge of a robot's region: a robot whose region does not border
+// it (another robot was handed the land between, or a later division drew the regions otherwise) gives it
+// up to the robot whose region lies nearest through the land left out, which was not handed it either. Land
+// that borders no region (walled in by obstacles and land beyond every charger) keeps its robot.
+void nameBorderingRobots(const CellGraph& graph, const std::vector<int>& robotOfCell,
+                         std::vector<int>& leftOutBy) {
+    const LeftOutPieces pieces = leftOutPieces(graph, robotOfCell, leftOutBy);
+    const std::vector<int> nearest = nearestRegionThroughLeftOut(graph, robotOfCell, pieces);
     for (std::size_t cell = 0; cell < graph.size(); ++cell) {
-        if (piece[cell] < 0 || nearest[cell] < 0)
+        if (pieces.pieceOfCell[cell] < 0 || nearest[cell] < 0)
             continue;
-        const std::vector<int>& robots = borders[static_cast<std::size_t>(piece[cell])];
+        const std::vector<int>& robots =
+            pieces.borderingRobots[static_cast<std::size_t>(pieces.pieceOfCell[cell])];
         if (std::find(robots.begin(), robots.end(), leftOutBy[cell]) == robots.end())
             leftOutBy[cell] = nearest[cell];
     }

@@ -754,6 +754,17 @@ void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
             run.standardOutput.contains(QStringLiteral(" flights and the turnarounds between them included")),
         qPrintable(run.standardOutput));
     QVERIFY(lastDone > report.value("makespan_s").toDouble());
+    // The report gives the same last robot home, a lower bound in the field below it and above the paths'
+    // (each flight's climb and descent), and how evenly the robots come home; the summary the bound.
+    QVERIFY2(std::abs(report.value("field_makespan_s").toDouble() - lastDone) <= 1e-9 * lastDone,
+             qPrintable(QString::number(report.value("field_makespan_s").toDouble())));
+    const double fieldBound = report.value("field_lower_bound_s").toDouble();
+    QVERIFY2(fieldBound > report.value("lower_bound_s").toDouble() && fieldBound <= lastDone,
+             qPrintable(QStringLiteral("%1 s against %2 s").arg(fieldBound).arg(lastDone)));
+    QVERIFY(report.value("field_spread").toDouble() >= 1.0);
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("brings the last robot home before ") +
+                                         QString::fromStdString(mcpp::formatDuration(fieldBound))),
+             qPrintable(run.standardOutput));
     int groundCells = 0;
     for (const QJsonValue& value : readJsonObject(ground + "/report.json").value("robots").toArray())
         groundCells += value.toObject().value("cells").toInt();

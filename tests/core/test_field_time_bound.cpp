@@ -49,6 +49,18 @@ class FieldTimeBoundTest : public QObject {
         QCOMPARE(rover.mostPathSecondsWithin(5000.0), 5000.0);
     }
 
+    // Where the files may fly a cell faster than planned (speeds rounded up, held within a tolerance), a
+    // second of path takes as little as the fastest pace: 2000 s of path at half pace are two flights.
+    void aFasterPaceNeedsFewerFlights() {
+        FlightLimits quick = drone;
+        quick.fastestPace = 0.5;
+        QCOMPARE(quick.leastFieldSecondsFor(2000.0), 1000.0 + 2 * 100.0 + 300.0);
+        QCOMPARE(quick.mostPathSecondsWithin(1500.0), 2000.0);
+        FlightLimits quickRover;
+        quickRover.fastestPace = 0.5;
+        QCOMPARE(quickRover.mostPathSecondsWithin(1000.0), 2000.0);
+    }
+
     // The two inverse each other: the least field time for a path flies that path and no more.
     void theTwoMeasuresAgree() {
         for (double path = 10.0; path < 10000.0; path += 137.0) {

@@ -77,8 +77,8 @@ class WavefrontBatteryTest : public QObject {
     // Land left beyond the batteries is warned of at the edge of a robot's region: on random maps of ponds
     // and three to five robots of short batteries (fixed seed), the robot named is one whose region borders
     // that land, through land left out, where some region does. Before, a plan kept from a later division
-    // named the first plan's robot (3 of these 60 maps), and land behind cells handed to another robot
-    // named the robot that had been given it (4 more).
+    // named the first plan's robot, and land behind cells handed to another robot named the robot that had
+    // been given it (the first map of these where it did: map 4).
     void leftOutLandIsNamedForARobotWhoseRegionBordersIt() {
         std::mt19937 random(7);
         int mapsWithLandLeftOut = 0;
@@ -98,21 +98,18 @@ class WavefrontBatteryTest : public QObject {
             }
             const int robots = 3 + static_cast<int>(random() % 3);
             std::vector<MapPoint> starts;
+            std::set<std::pair<int, int>> startCells; // one robot a cell
             while (starts.size() < static_cast<std::size_t>(robots)) {
                 const auto x = static_cast<int>(random() % static_cast<unsigned>(width / 2)) * 2;
                 const auto y = static_cast<int>(random() % static_cast<unsigned>(height / 2)) * 2;
-                if (at(x, y) == '.' && at(x + 1, y) == '.' && at(x, y + 1) == '.' && at(x + 1, y + 1) == '.')
+                if (at(x, y) == '.' && at(x + 1, y) == '.' && at(x, y + 1) == '.' &&
+                    at(x + 1, y + 1) == '.' && startCells.insert({x, y}).second)
                     starts.push_back({x + 0.5, y + 0.5});
             }
             PlanningProblem problem = test::drawnProblem(rows, starts);
             for (int robot = 0; robot < robots; ++robot)
                 problem.batterySeconds.push_back(40.0 + static_cast<double>(random() % 80));
-            Plan plan;
-            try {
-                plan = planOnBattery(problem, 120.0, 30.0, 0.0);
-            } catch (const PlanningError&) {
-                continue; // two starts in one cell
-            }
+            const Plan plan = planOnBattery(problem, 120.0, 30.0, 0.0);
             const std::string trialName = "map " + std::to_string(trial) + ": ";
             QVERIFY2(violationsOf(problem, plan).empty(), (trialName + violationsOf(problem, plan)).c_str());
             const std::vector<std::string> misnamed = misnamedLeftOutLand(plan);

@@ -338,7 +338,15 @@ class MissionFilesTest : public QObject {
         QCOMPARE(problem.robotFlights[1].climbAndDescentSeconds, 45.5 / 2.5 + 45.5 / 1.5);
         QVERIFY(problem.robotFlights[1].splitsPaths());
         QCOMPARE(problem.robotFlights[1].turnaroundSeconds, 90.0);
-        QVERIFY(!problem.robotFlights[0].splitsPaths()); // alpha flies no limit
+        QVERIFY(!problem.robotFlights[0].splitsPaths());    // alpha flies no limit
+        QCOMPARE(problem.robotFlights[1].fastestPace, 1.0); // at the fleet's cruise speed, as planned
+        // At the land cover's speeds, commanded rounded and held within the 25 % tolerance, a cell may be
+        // flown faster than planned: the bound counts its flights at the fastest pace they can take.
+        Mission landSpeeds = mission;
+        landSpeeds.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
+        PlanningProblem atLandSpeeds;
+        applyRobotSettings(landSpeeds, atLandSpeeds);
+        QCOMPARE(atLandSpeeds.robotFlights[1].fastestPace, 0.75 / 1.05);
         Mission rovers = mission;
         for (RobotSpec& robot : rovers.robots)
             robot.vehicle.type = VehicleType::Rover;

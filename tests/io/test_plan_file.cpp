@@ -191,7 +191,8 @@ class TestPlanFile : public QObject {
         QVERIFY(!io::loadPlanFile(file("damaged.mcpp-plan"), "inputs-d").ok());
     }
 
-    // A file of the format before (MCPP-PLAN 3: no counts of walked waypoints) is still read.
+    // Files of the formats before (MCPP-PLAN 3: no counts of walked waypoints; 4: no times in the field) are
+    // still read.
     void filesOfTheFormatBeforeAreRead() {
         const std::string seed =
             bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body"));
@@ -204,6 +205,28 @@ class TestPlanFile : public QObject {
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
         QVERIFY(loaded.value().has_value());
         QCOMPARE(loaded.value()->paths.size(), before.value().paths.size());
+
+        // MCPP-PLAN 4 (no times in the field), as mcpp saved it for the synthetic sample, is read with none;
+        // the same plan saved by this version reads back whole.
+        const std::string fourth =
+            bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body-v4"));
+        writeBytes(file("format4.mcpp-plan"), "MCPP-PLAN 4\ninputs-4\n" + fourth.substr(1));
+        auto fromFourth = io::loadPlanFile(file("format4.mcpp-plan"), "inputs-4");
+        QVERIFY2(fromFourth.ok(), fromFourth.ok() ? "" : fromFourth.error().c_str());
+        QVERIFY(fromFourth.value().has_value());
+        const Plan& plan = *fromFourth.value();
+        QCOMPARE(plan.paths.size(), std::size_t{3});
+        QCOMPARE(plan.metrics.robots.size(), std::size_t{3});
+        QVERIFY(plan.metrics.makespanSeconds > 0.0);
+        QCOMPARE(plan.metrics.fieldMakespanSeconds, 0.0);
+        QCOMPARE(plan.metrics.robots[2].fieldSeconds, 0.0);
+        const std::string fifth =
+            bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body-v5"));
+        const auto fromFifth = io::parsePlanBody(std::string_view(fifth).substr(1), "seed");
+        QVERIFY2(fromFifth.ok(), fromFifth.ok() ? "" : fromFifth.error().c_str());
+        QCOMPARE(fromFifth.value().paths.size(), std::size_t{3});
+        // Read as the format before, the same bytes are damaged: the versions are told apart.
+        QVERIFY(!io::parsePlanBody(std::string_view(fifth).substr(1), "seed", 4).ok());
     }
 
     void waypointsOffTheGridComeBackAsTheyWere() {
@@ -314,6 +337,19 @@ class TestPlanFile : public QObject {
         const std::string batteryBase = io::planInputsFingerprint(onBatteries, missionPath);
         onBatteries.exports.vehicle.flightTimeSeconds = 1800.0;
         QVERIFY(io::planInputsFingerprint(onBatteries, missionPath) != batteryBase);
+        // Where time in the field is measured (aircraft), the vehicles shape the plan's figures there and
+        // MCPP-MLCT's division: a turnaround or a flight time makes the plan out of date; names still do not.
+        io::Mission flying = mission;
+        flying.exports.vehicle.type = io::VehicleType::Multirotor;
+        const std::string flyingBase = io::planInputsFingerprint(flying, missionPath);
+        QVERIFY(flyingBase != base);
+        flying.robots[0].name = "Another name";
+        QCOMPARE(io::planInputsFingerprint(flying, missionPath), flyingBase);
+        flying.exports.vehicle.turnaroundSeconds = 300.0;
+        const std::string withTurnarounds = io::planInputsFingerprint(flying, missionPath);
+        QVERIFY(withTurnarounds != flyingBase);
+        flying.robots[1].vehicle.flightTimeSeconds = 1200.0;
+        QVERIFY(io::planInputsFingerprint(flying, missionPath) != withTurnarounds);
 
         // What the window keeps when it reads the files: empty (unknown) for a file that is not there.
         const std::string identity = io::inputFilesIdentity({raster, std::string(), std::string()});

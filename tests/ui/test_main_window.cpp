@@ -360,7 +360,14 @@ class TestMainWindow : public QObject {
         QVERIFY(lowerBound != nullptr);
         QCOMPARE(lowerBound->text(), ui::ResultsPanel::formatDuration(6000.0));
         QVERIFY(lowerBound->toolTip().contains(ui::ResultsPanel::formatDuration(5400.0)));
+        auto* summary = panel.findChild<QFormLayout*>(QStringLiteral("resultsSummary"));
+        QVERIFY(summary != nullptr);
+        const auto rowName = [&] {
+            return qobject_cast<QLabel*>(summary->labelForField(lowerBound))->text();
+        };
+        QCOMPARE(rowName(), QStringLiteral("Bound in the field"));
         panel.showPlan(&plan, {});
+        QCOMPARE(rowName(), QStringLiteral("Lower bound"));
         QCOMPARE(panel.makespanText(), ui::ResultsPanel::formatDuration(7200.0));
         QCOMPARE(panel.ratioText(), QStringLiteral("1.333"));
         QCOMPARE(lowerBound->text(), ui::ResultsPanel::formatDuration(5400.0));
