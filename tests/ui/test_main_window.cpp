@@ -47,6 +47,18 @@ using namespace mcpp;
 
 namespace {
 
+// Two robots' figures, an hour and two hours of path, as a results panel shows them.
+Plan twoRobotPlan() {
+    Plan plan;
+    plan.planner = "mcpp-mlct";
+    plan.metrics.robots.resize(2);
+    for (int robot = 0; robot < 2; ++robot) {
+        plan.metrics.robots[static_cast<std::size_t>(robot)].robot = robot;
+        plan.metrics.robots[static_cast<std::size_t>(robot)].timeSeconds = 3600.0 * (robot + 1);
+    }
+    return plan;
+}
+
 constexpr int kPlanningTimeoutMilliseconds = 180'000;
 
 QString dataPath(const std::string& relative) {
@@ -302,13 +314,7 @@ class TestMainWindow : public QObject {
     // Where a drone's flights keep it out longer than its path takes, the chart shows when each robot is
     // home; where none does, the paths' times.
     void chartShowsTimeInTheFieldWhereFlightsTakeLonger() {
-        Plan plan;
-        plan.planner = "mcpp-mlct";
-        plan.metrics.robots.resize(2);
-        for (int robot = 0; robot < 2; ++robot) {
-            plan.metrics.robots[static_cast<std::size_t>(robot)].robot = robot;
-            plan.metrics.robots[static_cast<std::size_t>(robot)].timeSeconds = 3600.0 * (robot + 1);
-        }
+        const Plan plan = twoRobotPlan();
         ui::ResultsPanel panel;
         panel.showPlan(&plan, {});
         QCOMPARE(panel.chartView()->chart()->title(), QStringLiteral("Time per robot"));
@@ -337,13 +343,7 @@ class TestMainWindow : public QObject {
     // and how evenly the robots come home, the paths' figures in the tooltips; a plan without flights shows
     // the paths' again.
     void summaryGivesTimesInTheFieldWhereFlightsSplitMissions() {
-        Plan plan;
-        plan.planner = "mcpp-mlct";
-        plan.metrics.robots.resize(2);
-        for (int robot = 0; robot < 2; ++robot) {
-            plan.metrics.robots[static_cast<std::size_t>(robot)].robot = robot;
-            plan.metrics.robots[static_cast<std::size_t>(robot)].timeSeconds = 3600.0 * (robot + 1);
-        }
+        Plan plan = twoRobotPlan();
         plan.metrics.makespanSeconds = 7200.0;
         plan.metrics.lowerBoundSeconds = 5400.0;
         plan.metrics.ratio = 7200.0 / 5400.0;
