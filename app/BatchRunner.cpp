@@ -713,7 +713,11 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
         output_ << "covered " << formatPercent(row.metrics.coveredFraction) << ", ratio "
                 << formatNumber(row.metrics.ratio, 3) << ", makespan "
                 << formatDuration(row.metrics.makespanSeconds) << ", " << row.metrics.totalTurns()
-                << " turns, planned in " << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
+                << " turns";
+        // Where flights split the missions, the field team waits for the last robot home.
+        if (row.metrics.fieldMakespanSeconds > 0.0 && row.metrics.fieldLowerBoundSeconds > 0.0)
+            output_ << ", the last robot home after " << formatDuration(row.metrics.fieldMakespanSeconds);
+        output_ << ", planned in " << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
     }
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }

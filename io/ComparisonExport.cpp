@@ -37,6 +37,16 @@ std::vector<std::string> stageNames(const std::vector<ComparisonRow>& rows) {
     return names;
 }
 
+// Where flights split the missions: when the last robot is home and the bound there (as report.json).
+bool inTheField(const ComparisonRow& row) {
+    return row.outcome == ComparisonRow::Outcome::Planned && row.metrics.fieldMakespanSeconds > 0.0 &&
+           row.metrics.fieldLowerBoundSeconds > 0.0;
+}
+
+std::string fieldFigure(const ComparisonRow& row, double seconds) {
+    return inTheField(row) ? formatShortest(seconds) : std::string();
+}
+
 } // namespace
 
 std::string outcomeName(ComparisonRow::Outcome outcome) {
@@ -55,7 +65,7 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
     const std::vector<std::string> stages = stageNames(rows);
     std::string text = "planner,outcome,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
                        "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
-                       "planning_ms,peak_memory_mb";
+                       "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s";
     for (const std::string& stage : stages)
         text += "," + stage + "_ms";
     text += ",message\n";
@@ -72,7 +82,9 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
                 joined(metrics, [](const RobotMetrics& robot) { return robot.lengthMetres; }) + "," +
                 joined(metrics, [](const RobotMetrics& robot) { return robot.timeSeconds; }) + "," +
                 joined(metrics, [](const RobotMetrics& robot) { return static_cast<double>(robot.turns); }) +
-                "," + figure(row.planningMilliseconds) + "," + figure(row.peakMemoryMegabytes);
+                "," + figure(row.planningMilliseconds) + "," + figure(row.peakMemoryMegabytes) + "," +
+                fieldFigure(row, metrics.fieldMakespanSeconds) + "," +
+                fieldFigure(row, metrics.fieldLowerBoundSeconds);
         for (const std::string& stage : stages)
             text += "," + (planned ? formatShortest(stageMilliseconds(metrics, stage)) : std::string());
         text += "," + internal::quoteCsvField(row.message) + "\n";
@@ -100,6 +112,11 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         item.add("covered_fraction", metrics.coveredFraction);
         item.add("repeated_fraction", metrics.repeatedFraction);
         item.add("unreachable_area_m2", metrics.unreachableAreaSquareMetres);
+        if (inTheField(row)) {
+            item.add("field_makespan_s", metrics.fieldMakespanSeconds);
+            item.add("field_lower_bound_s", metrics.fieldLowerBoundSeconds);
+            item.add("field_spread", metrics.fieldSpread());
+        }
         JsonValue& robots = item.add("robots", JsonValue::array());
         for (const RobotMetrics& robot : metrics.robots) {
             JsonValue& entry = robots.push(JsonValue::object());

@@ -17,7 +17,7 @@ namespace mcpp::ui {
 namespace {
 
 // The figures that decide between planners; comparison.csv and the sheet below carry the rest.
-enum Column { Name, Outcome, Ratio, Makespan, Turns, Planning, Columns };
+enum Column { Name, Outcome, Ratio, Makespan, Home, Turns, Planning, Columns };
 
 QTableWidgetItem* numberItem(double value, int decimals) {
     auto* item = new QTableWidgetItem;
@@ -56,6 +56,9 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
         {tr("State"), tr("Planned, failed or skipped (hover over the cell for why)")},
         {tr("Ratio"), tr("Makespan divided by the lower bound: 1.00 is perfectly balanced")},
         {tr("Hours"), tr("Makespan: the time of the slowest robot, in hours")},
+        {tr("Home h"),
+         tr("Where flights split the missions: when the last robot is home, its flights and the "
+            "turnarounds between them included, in hours")},
         {tr("Turns"), tr("Turns of all robots together")},
         {tr("Plan s"), tr("Seconds the planner took")}};
     for (int column = 0; column < Columns; ++column) {
@@ -63,6 +66,7 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
         heading->setToolTip(headings[static_cast<std::size_t>(column)].second);
         table_->setHorizontalHeaderItem(column, heading);
     }
+    table_->setColumnHidden(Home, true); // until some plan's robots are home later than their paths end
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -124,6 +128,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     table_->clearContents();
     table_->setRowCount(static_cast<int>(outcome.rows.size()));
     std::vector<render::ComparisonPanel> panels;
+    bool inTheField = false; // some plan's robots are home later than their paths end
     for (std::size_t i = 0; i < outcome.rows.size(); ++i) {
         const io::ComparisonRow& row = outcome.rows[i];
         const auto r = static_cast<int>(i);
@@ -139,9 +144,14 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         const PlanMetrics& metrics = row.metrics;
         table_->setItem(r, Ratio, numberItem(metrics.ratio, 3));
         table_->setItem(r, Makespan, numberItem(metrics.makespanSeconds / 3600.0, 2));
+        if (metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0) {
+            table_->setItem(r, Home, numberItem(metrics.fieldMakespanSeconds / 3600.0, 2));
+            inTheField = true;
+        }
         table_->setItem(r, Turns, numberItem(metrics.totalTurns(), 0));
         table_->setItem(r, Planning, numberItem(row.planningMilliseconds / 1000.0, 2));
     }
+    table_->setColumnHidden(Home, !inTheField);
     table_->setSortingEnabled(true);
     table_->sortByColumn(Ratio, Qt::AscendingOrder); // the best balanced first
     sheetImage_ = render::renderComparisonSheet(grid, classes, panels);

@@ -350,9 +350,13 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     planningRun.stage("metrics", [&] {
         parallelFor(plan.paths.size(),
                     [&](std::size_t path, int) { measurePath(plan.paths[path], plan.cells); });
-        PlanMetricsCalculator{problem.robotFlights}.compute(plan);
-        // A battery plan's paths hold their sorties and charges: they are not split into flights again.
-        if (problem.fieldSeconds && sortieLayerOf(plan) == nullptr)
+        // Times in the field are the waypoint files' flights at the robots' own speeds: beside paths timed at
+        // the class table's (own speeds ignored) they would compare flights with walks. A battery plan's
+        // paths hold their sorties and charges: they are not split into flights again.
+        const bool inTheField = problem.fieldSeconds && sortieLayerOf(plan) == nullptr &&
+                                (!someOwnSpeed(problem.robotSpeeds) || !plan.robotSpeeds.empty());
+        PlanMetricsCalculator{inTheField ? problem.robotFlights : std::vector<FlightLimits>{}}.compute(plan);
+        if (inTheField)
             measureFieldTimes(plan, problem.fieldSeconds(plan));
         return 0;
     });

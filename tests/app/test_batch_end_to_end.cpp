@@ -92,6 +92,7 @@ class TestBatchEndToEnd : public QObject {
     void rasterAloneGetsTheRecognisedProductsTable();
     void outputsAreTheSameWhateverTheThreadCount();
     void comparePlannersOnOneMission();
+    void comparisonGivesTimesInTheField();
     void weeksOfWorkSuggestAnArea();
     void everyPlannerRunsFromTheCommandLine_data();
     void everyPlannerRunsFromTheCommandLine();
@@ -175,6 +176,40 @@ void TestBatchEndToEnd::outputsAreTheSameWhateverTheThreadCount() {
             QVERIFY(!a.isEmpty());
             QCOMPARE(a, b);
         }
+    }
+}
+
+// Drones on flights compared: each planner's row gives when its last robot is home and the bound in the
+// field, as its report.json does, in comparison.json and comparison.csv, and the summary says it.
+void TestBatchEndToEnd::comparisonGivesTimesInTheField() {
+    const QString out = scratch_.filePath(QStringLiteral("compare-drones"));
+    const auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "mcpp-mlct,darp",
+                              "--vehicle", "multirotor", "--cruise-speed", "6", "--fov-scale", "2",
+                              "--flight-time", "3min", "--turnaround", "2min", "--out", out});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    const QDir folder(out);
+    const auto planners = readJsonObject(folder.filePath("comparison.json")).value("planners").toArray();
+    QCOMPARE(planners.size(), 2);
+    QFile csv(folder.filePath("comparison.csv"));
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
+    const QStringList header = lines.front().split(',');
+    for (int i = 0; i < planners.size(); ++i) {
+        const auto row = planners.at(i).toObject();
+        const QString name = row.value("planner").toString();
+        const auto report = readJsonObject(folder.filePath(name + "/report.json"));
+        const QStringList fields = lines.at(i + 1).split(',');
+        for (const char* key : {"field_makespan_s", "field_lower_bound_s"}) {
+            QVERIFY2(report.value(key).toDouble() > 0.0, key);
+            QCOMPARE(row.value(key).toDouble(), report.value(key).toDouble());
+            QVERIFY2(
+                nearlyEqual(fields.at(header.indexOf(key)).toDouble(), report.value(key).toDouble(), 1e-12),
+                key);
+        }
+        QVERIFY2(run.standardOutput.contains(QStringLiteral("the last robot home after ") +
+                                             QString::fromStdString(mcpp::formatDuration(
+                                                 report.value("field_makespan_s").toDouble()))),
+                 qPrintable(run.standardOutput));
     }
 }
 

@@ -1,5 +1,6 @@
 #include "core/model/FlightLimits.hpp"
 #include "core/planners/MlctPlanner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -107,6 +108,24 @@ class FieldTimeBoundTest : public QObject {
         QVERIFY(metrics.fieldMakespanSeconds >= bound);
         // Planned in the field, the two come home within a few per cent of each other.
         QVERIFY2(metrics.fieldSpread() < 1.1, qPrintable(QString::number(metrics.fieldSpread())));
+    }
+
+    // A planner that times every robot at the class table's speeds (own speeds ignored, as a detection plan
+    // does) has paths the waypoint files do not fly: no figures in the field beside them.
+    void pathsNotTimedAtOwnSpeedsHaveNoFieldFigures() {
+        PlanningProblem problem = fleetProblem({drone, drone});
+        problem.robotSpeeds = {0.0, 3.0};
+        problem.planner = defaultPlannerChoice("cppied");
+        const Plan plan = makePlanner("cppied")->plan(problem, {});
+        QVERIFY(std::any_of(plan.issues.begin(), plan.issues.end(),
+                            [](const PlanIssue& issue) { return issue.code == "own-speeds-ignored"; }));
+        QCOMPARE(plan.metrics.fieldLowerBoundSeconds, 0.0);
+        QCOMPARE(plan.metrics.fieldMakespanSeconds, 0.0);
+        // Timed at its own speed, as MCPP-MLCT plans it, the same fleet has them.
+        problem.planner = defaultPlannerChoice("mcpp-mlct");
+        const Plan timed = MlctPlanner{}.plan(problem, {});
+        QVERIFY(timed.metrics.fieldLowerBoundSeconds > 0.0);
+        QVERIFY(timed.metrics.fieldMakespanSeconds >= timed.metrics.fieldLowerBoundSeconds);
     }
 
     // Without flights there is no time in the field to speak of.
