@@ -977,15 +977,14 @@ std::function<std::vector<double>(const Plan&)> fieldSecondsOf(const Mission& mi
     };
 }
 
-// The fewest seconds a robot's waypoint files take for a second of its planned path: a cruise speed is
-// commanded rounded; land-cover speeds are commanded rounded (up to 5 % up, two significant digits) and a
-// speed in force is held while the next differs by no more than the tolerance, so a cell may be flown
-// faster than planned.
+// The fewest seconds a robot's waypoint files take for a second of its planned path. A cruise speed is
+// commanded as it is, and speeds changed only at turns are each leg's slowest, rounded down: as planned or
+// slower. Otherwise land-cover speeds are commanded rounded (up to 5 % up, to two significant digits) and a
+// speed in force is held while the next differs by no more than the tolerance: a cell may be flown faster.
 double fastestPaceOf(const VehicleSettings& vehicle, const ExportSettings& exports) {
     constexpr double mostRoundedUp = 1.05;
-    const double cruise = vehicle.cruiseSpeedMetresPerSecond;
-    if (cruise > 0.0)
-        return cruise / std::max(cruise, roundedSpeed(cruise));
+    if (vehicle.cruiseSpeedMetresPerSecond > 0.0 || exports.speedChangesAtTurnsOnly)
+        return 1.0;
     return std::clamp(1.0 - exports.speedTolerance, 0.0, 1.0) / mostRoundedUp;
 }
 
@@ -1006,7 +1005,10 @@ std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
 
 FieldTimeInputs fieldTimeInputs(const Mission& mission) {
     std::vector<VehicleSettings> vehicles = robotVehicles(mission);
-    if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater))
+    const auto planner = findPlannerDescription(mission.planner.planner);
+    // A battery plan's paths hold their sorties: they are not measured in the field.
+    if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater) ||
+        (planner && planner->fliesOnBatteries()))
         return {};
     const ExportSettings& exports = mission.exports;
     return {std::move(vehicles), exports.speedTolerance, exports.speedChangesAtTurnsOnly,

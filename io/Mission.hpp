@@ -103,8 +103,9 @@ struct Mission {
 [[nodiscard]] std::vector<double> robotCruiseSpeeds(const Mission& mission);
 
 // What a plan's times in the field depend on, where they are measured (some robot's split mission ends later
-// than its path; else nothing): each robot's vehicle and how the waypoint files command speeds. A plan made
-// with other settings is out of date: its figures in the field, and MCPP-MLCT's division, would differ.
+// than its path, and the planner does not fly on batteries; else nothing): each robot's vehicle and how the
+// waypoint files command speeds. A plan made with other settings is out of date: its figures in the field,
+// and MCPP-MLCT's division, would differ.
 struct FieldTimeInputs {
     std::vector<VehicleSettings> vehicles;
     double speedTolerance = 0.0;

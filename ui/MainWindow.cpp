@@ -1805,15 +1805,13 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
             seconds < 1.0 ? tr("%1 ms").arg(qRound(seconds * 1000.0)) : tr("%1 s").arg(seconds, 0, 'f', 1);
         // Where flights split the missions, when the last robot is home, as the results panel gives it.
         const bool inTheField = metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0;
-        showStatus(inTheField
-                       ? tr("Planned in %1: the last robot home after %2, the first after %3 % of that.")
-                             .arg(took)
-                             .arg(ResultsPanel::formatDuration(metrics.fieldMakespanSeconds))
-                             .arg(100.0 / metrics.fieldSpread(), 0, 'f', 1)
-                       : tr("Planned in %1: makespan %2, %3 × the lower bound.")
-                             .arg(took)
-                             .arg(ResultsPanel::formatDuration(metrics.makespanSeconds))
-                             .arg(metrics.ratio, 0, 'f', 3), // as plan.png gives it
+        showStatus(inTheField ? tr("Planned in %1: the last robot home after %2.")
+                                    .arg(took)
+                                    .arg(ResultsPanel::formatDuration(metrics.fieldMakespanSeconds))
+                              : tr("Planned in %1: makespan %2, %3 × the lower bound.")
+                                    .arg(took)
+                                    .arg(ResultsPanel::formatDuration(metrics.makespanSeconds))
+                                    .arg(metrics.ratio, 0, 'f', 3), // as plan.png gives it
                    15000);
         // The plan's warnings and notes, whole, where every message is kept.
         const std::vector<std::string> names = robotNames();

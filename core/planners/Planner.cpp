@@ -8,6 +8,7 @@
 #include "core/model/SortieLayer.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/model/StartPointCheck.hpp"
+#include "core/model/TimelineLayer.hpp"
 #include "core/model/TurnTimeModel.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/AreaEdgeCheck.hpp"
@@ -296,6 +297,8 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
     constexpr int fieldBalanceRounds = 2;
     const double roundShare = 1.0 / (fieldBalanceRounds + 1);
     Plan best = planOnce(planner, problem, given, progress.scaled(0.0, roundShare));
+    if (!(best.metrics.fieldMakespanSeconds > 0.0))
+        return best; // its times in the field are not measured (planOnce says where)
     std::vector<double> bestField = fieldTimesOf(best.metrics);
     double dropped = 0.0; // milliseconds of the plans not kept
     for (int round = 1; round <= fieldBalanceRounds; ++round) {
@@ -351,9 +354,11 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
         parallelFor(plan.paths.size(),
                     [&](std::size_t path, int) { measurePath(plan.paths[path], plan.cells); });
         // Times in the field are the waypoint files' flights at the robots' own speeds: beside paths timed at
-        // the class table's (own speeds ignored) they would compare flights with walks. A battery plan's
-        // paths hold their sorties and charges: they are not split into flights again.
+        // the class table's (own speeds ignored) they would compare flights with walks, and beside a plan
+        // played through events, full speed with the mission as played. A battery plan's paths hold their
+        // sorties and charges: they are not split into flights again.
         const bool inTheField = problem.fieldSeconds && sortieLayerOf(plan) == nullptr &&
+                                timelineLayerOf(plan) == nullptr &&
                                 (!someOwnSpeed(problem.robotSpeeds) || !plan.robotSpeeds.empty());
         PlanMetricsCalculator{inTheField ? problem.robotFlights : std::vector<FlightLimits>{}}.compute(plan);
         if (inTheField)

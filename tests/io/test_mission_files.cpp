@@ -344,9 +344,15 @@ class MissionFilesTest : public QObject {
         // flown faster than planned: the bound counts its flights at the fastest pace they can take.
         Mission landSpeeds = mission;
         landSpeeds.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
+        landSpeeds.exports.speedChangesAtTurnsOnly = false;
         PlanningProblem atLandSpeeds;
         applyRobotSettings(landSpeeds, atLandSpeeds);
         QCOMPARE(atLandSpeeds.robotFlights[1].fastestPace, 0.75 / 1.05);
+        // Speeds changed only at turns are each leg's slowest, rounded down: never faster than planned.
+        landSpeeds.exports.speedChangesAtTurnsOnly = true;
+        PlanningProblem atTurns;
+        applyRobotSettings(landSpeeds, atTurns);
+        QCOMPARE(atTurns.robotFlights[1].fastestPace, 1.0);
         Mission rovers = mission;
         for (RobotSpec& robot : rovers.robots)
             robot.vehicle.type = VehicleType::Rover;

@@ -207,7 +207,7 @@ class TestPlanFile : public QObject {
         QCOMPARE(loaded.value()->paths.size(), before.value().paths.size());
 
         // MCPP-PLAN 4 (no times in the field), as mcpp saved it for the synthetic sample, is read with none;
-        // the same plan saved by this version reads back whole.
+        // the sample flown by drones, saved by this version, reads back with them.
         const std::string fourth =
             bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body-v4"));
         writeBytes(file("format4.mcpp-plan"), "MCPP-PLAN 4\ninputs-4\n" + fourth.substr(1));
@@ -225,6 +225,11 @@ class TestPlanFile : public QObject {
         const auto fromFifth = io::parsePlanBody(std::string_view(fifth).substr(1), "seed");
         QVERIFY2(fromFifth.ok(), fromFifth.ok() ? "" : fromFifth.error().c_str());
         QCOMPARE(fromFifth.value().paths.size(), std::size_t{3});
+        // That plan's drones (3 min flights, 2 min turnarounds) come home later than their paths end.
+        const PlanMetrics& flown = fromFifth.value().metrics;
+        QVERIFY(flown.fieldLowerBoundSeconds > flown.lowerBoundSeconds);
+        QVERIFY(flown.fieldMakespanSeconds > flown.makespanSeconds);
+        QVERIFY(flown.robots[1].fieldSeconds > flown.robots[1].timeSeconds);
         // Read as the format before, the same bytes are damaged: the versions are told apart.
         QVERIFY(!io::parsePlanBody(std::string_view(fifth).substr(1), "seed", 4).ok());
     }
