@@ -956,12 +956,17 @@ std::optional<std::string> batteriesFromFlightTimesNote(const Mission& mission,
 
 namespace {
 
+// Whether some robot's split mission ends later than its path: then its time in the field is measured.
+bool fieldTimeMeasured(const std::vector<VehicleSettings>& vehicles) {
+    return std::any_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater);
+}
+
 // Each robot's time in the field on a plan: its waypoint files' flights and the turnarounds between them
 // where its vehicle's split mission ends later than its path, else its path's time. Unset where no robot's
 // does.
 std::function<std::vector<double>(const Plan&)> fieldSecondsOf(const Mission& mission,
                                                                const std::vector<VehicleSettings>& vehicles) {
-    if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater))
+    if (!fieldTimeMeasured(vehicles))
         return {};
     return [vehicles, settings = mission.exports](const Plan& plan) {
         std::vector<double> seconds(plan.paths.size(), 0.0);
@@ -992,7 +997,7 @@ double fastestPaceOf(const VehicleSettings& vehicle, const ExportSettings& expor
 // fieldSecondsOf); else none.
 std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
                                          const std::vector<VehicleSettings>& vehicles) {
-    if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater))
+    if (!fieldTimeMeasured(vehicles))
         return {};
     std::vector<FlightLimits> limits;
     for (const VehicleSettings& vehicle : vehicles)
@@ -1007,8 +1012,7 @@ FieldTimeInputs fieldTimeInputs(const Mission& mission) {
     std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     const auto planner = findPlannerDescription(mission.planner.planner);
     // A battery plan's paths hold their sorties: they are not measured in the field.
-    if (std::none_of(vehicles.begin(), vehicles.end(), splitMissionEndsLater) ||
-        (planner && planner->fliesOnBatteries()))
+    if (!fieldTimeMeasured(vehicles) || (planner && planner->fliesOnBatteries()))
         return {};
     const ExportSettings& exports = mission.exports;
     return {std::move(vehicles), exports.speedTolerance, exports.speedChangesAtTurnsOnly,

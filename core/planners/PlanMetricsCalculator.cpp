@@ -253,10 +253,10 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         if (std::optional<SharedWork> work = boundWithOwnSpeeds(plan))
             shares.front() = std::move(*work);
     boundByConnectedParts(plan, regionsLinked, shares);
-    // A battery plan's paths hold their charges already: its robots are not split into flights.
+    // The planner gives flights only where its paths are flown in them (Planner::planOnce).
     const bool flights = std::any_of(robotFlights_.begin(), robotFlights_.end(),
                                      [](const FlightLimits& limits) { return limits.splitsPaths(); });
-    metrics.fieldLowerBoundSeconds = flights && sortieLayerOf(plan) == nullptr ? fieldBound(shares) : 0.0;
+    metrics.fieldLowerBoundSeconds = flights ? fieldBound(shares) : 0.0;
     boundByCharges(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;
