@@ -736,8 +736,7 @@ void BatchRunner::printSummary(const Plan& plan) const {
         output_ << "mcpp: " << fieldTimeNote_ << '\n';
     if (!fieldTimeNote_.empty() && metrics.fieldLowerBoundSeconds > 0.0)
         output_ << "mcpp: no plan making these turns brings the last robot home before "
-                << formatDuration(metrics.fieldLowerBoundSeconds)
-                << " in the field, the trips out to the work not counted\n";
+                << formatDuration(metrics.fieldLowerBoundSeconds) << " in the field\n";
     if (const TimelineLayer* timeline = timelineLayerOf(plan))
         output_ << "mcpp: " << timelineSentence(timeline->summary()) << '\n';
     // Weeks of work usually mean the whole raster was planned when a part of it was meant.

@@ -1000,9 +1000,14 @@ std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
     if (!fieldTimeMeasured(vehicles))
         return {};
     std::vector<FlightLimits> limits;
-    for (const VehicleSettings& vehicle : vehicles)
+    for (const VehicleSettings& vehicle : vehicles) {
+        // An aircraft flies from its start to its work and back at its cruise speed (AutopilotMission's
+        // flights); without one, its trips are not counted.
+        const bool flownOut = isAircraft(vehicle.type) && vehicle.cruiseSpeedMetresPerSecond > 0.0;
         limits.push_back({vehicle.flightTimeSeconds, climbAndDescentSeconds(vehicle),
-                          vehicle.turnaroundSeconds, fastestPaceOf(vehicle, mission.exports)});
+                          vehicle.turnaroundSeconds, fastestPaceOf(vehicle, mission.exports),
+                          flownOut ? vehicle.cruiseSpeedMetresPerSecond : 0.0});
+    }
     return limits;
 }
 

@@ -177,8 +177,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     root.add("makespan_s", metrics.makespanSeconds);
     root.add("lower_bound_s", metrics.lowerBoundSeconds);
     root.add("ratio", metrics.ratio);
-    // Where missions are split into flights: when the last robot is home, the least any plan takes without
-    // the trips out to the work, and how evenly the robots come home.
+    // Where missions are split into flights: when the last robot is home, the least any plan takes, and how
+    // evenly the robots come home.
     if (metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0) {
         root.add("field_makespan_s", metrics.fieldMakespanSeconds);
         root.add("field_lower_bound_s", metrics.fieldLowerBoundSeconds);

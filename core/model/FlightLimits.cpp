@@ -21,6 +21,15 @@ double FlightLimits::mostFlownSecondsWithin(double fieldSeconds) const {
     return std::max(0.0, fullFlights) * workPerFlight + lastFlight;
 }
 
+double FlightLimits::mostPathSecondsBeyond(double fieldSeconds, double metres) const {
+    if (!makesTrips() || !(metres > 0.0))
+        return mostPathSecondsWithin(fieldSeconds);
+    FlightLimits farther = *this;
+    // The way out and back is flown in every flight, as the climb and descent are.
+    farther.climbAndDescentSeconds += 2.0 * metres / tripMetresPerSecond;
+    return farther.splitsPaths() ? farther.mostPathSecondsWithin(fieldSeconds) : 0.0;
+}
+
 double FlightLimits::leastFieldSecondsFor(double pathSeconds) const {
     const double flown = pathSeconds * fastestPace;
     if (!splitsPaths() || !(flown > 0.0))

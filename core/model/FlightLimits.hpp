@@ -12,6 +12,9 @@ struct FlightLimits {
     // The fewest seconds its flights can take for a second of its planned path: below 1 where the waypoint
     // files command speeds rounded up or held within a tolerance, so that a cell may be flown faster.
     double fastestPace = 1.0;
+    // The fastest it flies to its work and back (an aircraft's cruise speed): each flight takes off from the
+    // robot's start and lands there. 0 where unknown: its trips are not counted.
+    double tripMetresPerSecond = 0.0;
 
     [[nodiscard]] bool splitsPaths() const { return flightSeconds > climbAndDescentSeconds; }
     // The most seconds of planned path the robot can fly within `fieldSeconds` in the field: full flights one
@@ -21,6 +24,12 @@ struct FlightLimits {
     // The fewest seconds in the field that fly `pathSeconds` of planned path at the fastest pace: its flights
     // (each but the last full) with their climbs and descents, and the turnarounds between them.
     [[nodiscard]] double leastFieldSecondsFor(double pathSeconds) const;
+    // Whether its flights count the way out to their work and back.
+    [[nodiscard]] bool makesTrips() const { return splitsPaths() && tripMetresPerSecond > 0.0; }
+    // The most seconds of planned path it can fly within `fieldSeconds` farther than `metres` from its start:
+    // every flight working there spends the way out to that distance and back on it. 0 where no flight
+    // reaches so far; as mostPathSecondsWithin for a robot whose trips are not counted.
+    [[nodiscard]] double mostPathSecondsBeyond(double fieldSeconds, double metres) const;
 
   private:
     // The same in seconds flown.

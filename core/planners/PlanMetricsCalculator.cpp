@@ -5,6 +5,7 @@
 #include "core/model/DetectionLayer.hpp"
 #include "core/model/ParallelFor.hpp"
 #include "core/model/SortieLayer.hpp"
+#include "core/planners/WorkByDistance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,6 +36,25 @@ PartFigures figuresOf(const Plan& plan, const StartComponent& part) {
             figures.secondsNoPlanBeats += path.turnSeconds + path.connectorSeconds;
         }
     return figures;
+}
+
+// The travel time of a covered cell, 0 for one no robot covers.
+double coveredTravelSeconds(const Plan& plan, int id) {
+    const auto index = static_cast<std::size_t>(id);
+    return index < plan.regions.robotOfCell.size() && plan.regions.robotOfCell[index] >= 0
+               ? plan.cells.cell(id).travelSeconds()
+               : 0.0;
+}
+
+// Where a robot's flights take off and land: its path's first point (the waypoint files' home), or its start
+// cell where it has no path.
+StartSquare homeOf(const Plan& plan, std::size_t robot) {
+    if (robot < plan.paths.size() && !plan.paths[robot].waypoints.empty()) {
+        const Waypoint& home = plan.paths[robot].waypoints.front();
+        return {{home.x, home.y}, 0.0};
+    }
+    const Cell& start = plan.cells.cell(plan.regions.startCell[robot]);
+    return {{start.centreX(), start.centreY()}, start.size / 2.0};
 }
 
 bool startsOnTheMap(const Plan& plan) {
@@ -75,9 +95,18 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
         metrics.lowerBoundSeconds =
             std::max(metrics.lowerBoundSeconds,
                      figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
-        SharedWork work{std::vector<double>(starts.size(), 0.0), figures.back().secondsNoPlanBeats};
+        SharedWork work{std::vector<double>(starts.size(), 0.0), figures.back().secondsNoPlanBeats, {}};
         for (const int robot : part.robots)
             work.weights[static_cast<std::size_t>(robot)] = 1.0;
+        // A region lies in its robot's part.
+        work.workOfCell = [&plan, inPart = work.weights](int id) {
+            const double seconds = coveredTravelSeconds(plan, id);
+            if (!(seconds > 0.0))
+                return 0.0;
+            const auto robot =
+                static_cast<std::size_t>(plan.regions.robotOfCell[static_cast<std::size_t>(id)]);
+            return robot < inPart.size() && inPart[robot] > 0.0 ? seconds : 0.0;
+        };
         shares.push_back(std::move(work));
     }
     for (std::size_t part = 0; part < parts.size(); ++part) {
@@ -113,7 +142,7 @@ std::optional<PlanMetricsCalculator::SharedWork> PlanMetricsCalculator::boundWit
     if (!(travel > 0.0) || !(length > 0.0))
         return std::nullopt;
     bool classSpeeds = false; // some robot drives at the class table's speeds
-    SharedWork work{std::vector<double>(plan.regions.startCell.size(), 0.0), 0.0};
+    SharedWork work{std::vector<double>(plan.regions.startCell.size(), 0.0), 0.0, {}};
     double weights = 0.0;
     double weightedExtras = 0.0; // turns and connectors
     for (std::size_t robot = 0; robot < plan.regions.startCell.size(); ++robot) {
@@ -127,43 +156,96 @@ std::optional<PlanMetricsCalculator::SharedWork> PlanMetricsCalculator::boundWit
     }
     if (!(weights > 0.0))
         return std::nullopt; // no robot
+    const auto shareOf = [classSpeeds, travel, length](double seconds, double metres) {
+        return classSpeeds ? std::min(seconds / travel, metres / length) : metres / length;
+    };
     double shares = 0.0;
-    forEachCoveredCell([&](double seconds, double metres) {
-        shares += classSpeeds ? std::min(seconds / travel, metres / length) : metres / length;
-    });
+    forEachCoveredCell([&](double seconds, double metres) { shares += shareOf(seconds, metres); });
     work.seconds = shares + weightedExtras;
+    work.workOfCell = [&plan, shareOf](int id) {
+        const double seconds = coveredTravelSeconds(plan, id);
+        return seconds > 0.0 ? shareOf(seconds, seconds * plan.cells.cell(id).speedMetresPerSecond) : 0.0;
+    };
     plan.metrics.lowerBoundSeconds = work.seconds / weights;
     return work;
 }
 
-double PlanMetricsCalculator::fieldBound(const std::vector<SharedWork>& shares) const {
-    const auto limitsOf = [this](std::size_t robot) {
-        return robot < robotFlights_.size() ? robotFlights_[robot] : FlightLimits{};
-    };
+double PlanMetricsCalculator::fieldBound(const Plan& plan, const std::vector<SharedWork>& shares) const {
     double bound = 0.0;
-    for (const SharedWork& share : shares) {
-        const auto doneWithin = [&](double fieldSeconds) {
+    for (const SharedWork& share : shares)
+        bound = std::max(bound, fieldBound(plan, share));
+    return bound;
+}
+
+// The robots must do the share's work, and of it what lies beyond each distance from the starts of the
+// robots that fly out to their work: a flight working farther than d from its start flies 2 d on the way
+// out and back (FlightLimits::mostPathSecondsBeyond).
+double PlanMetricsCalculator::fieldBound(const Plan& plan, const SharedWork& share) const {
+    const auto first =
+        std::find_if(share.weights.begin(), share.weights.end(), [](double weight) { return weight > 0.0; });
+    if (first == share.weights.end() || !(share.seconds > 0.0))
+        return 0.0;
+    const std::optional<WorkByDistance> far = workBeyondTripStarts(plan, share);
+    const auto doneWithin = [&](double fieldSeconds) {
+        const auto doneBeyond = [&](double metres) {
             double done = 0.0;
             for (std::size_t robot = 0; robot < share.weights.size(); ++robot)
                 if (share.weights[robot] > 0.0)
-                    done += share.weights[robot] * limitsOf(robot).mostPathSecondsWithin(fieldSeconds);
-            return done >= share.seconds;
+                    done +=
+                        share.weights[robot] * limitsOf(robot).mostPathSecondsBeyond(fieldSeconds, metres);
+            return done;
         };
-        // Any robot of the share alone does it within its own least time: the search starts from there.
-        const auto first = std::find_if(share.weights.begin(), share.weights.end(),
-                                        [](double weight) { return weight > 0.0; });
-        if (first == share.weights.end() || !(share.seconds > 0.0))
-            continue;
-        const auto robot = static_cast<std::size_t>(first - share.weights.begin());
-        double low = 0.0;
-        double high = limitsOf(robot).leastFieldSecondsFor(share.seconds / *first);
-        for (int step = 0; step < 64 && high - low > 1e-9 * high; ++step) {
-            const double middle = 0.5 * (low + high);
-            (doneWithin(middle) ? high : low) = middle;
-        }
-        bound = std::max(bound, high);
+        if (doneBeyond(0.0) < share.seconds)
+            return false;
+        for (std::size_t step = 0; far && step < far->secondsBeyond().size(); ++step)
+            if (doneBeyond(static_cast<double>(step) * far->stepMetres()) < far->secondsBeyond()[step])
+                return false;
+        return true;
+    };
+    // Any robot of the share alone does its work within its own least time; the trips may need longer.
+    const auto robot = static_cast<std::size_t>(first - share.weights.begin());
+    double low = 0.0;
+    double high = limitsOf(robot).leastFieldSecondsFor(share.seconds / *first);
+    for (int doubling = 0; doubling < 64 && !doneWithin(high); ++doubling)
+        high *= 2.0;
+    for (int step = 0; step < 64 && high - low > 1e-9 * high; ++step) {
+        const double middle = 0.5 * (low + high);
+        (doneWithin(middle) ? high : low) = middle;
     }
-    return bound;
+    return high;
+}
+
+// Where some robot of the share flies out to its work. None where work lies beyond every flight's reach and
+// every robot of the share flies: the plan then has flights longer than a battery, which this bound does not
+// price, so the trips are left out.
+std::optional<WorkByDistance> PlanMetricsCalculator::workBeyondTripStarts(const Plan& plan,
+                                                                          const SharedWork& share) const {
+    if (!share.workOfCell || !startsOnTheMap(plan))
+        return std::nullopt;
+    std::vector<StartSquare> starts;
+    std::vector<WorkByDistance::TurningPath> turning; // the share's seconds count its robots' turns
+    for (std::size_t robot = 0; robot < share.weights.size(); ++robot) {
+        if (share.weights[robot] > 0.0 && limitsOf(robot).makesTrips())
+            starts.push_back(homeOf(plan, robot));
+        if (share.weights[robot] > 0.0 && robot < plan.paths.size())
+            turning.push_back({&plan.paths[robot], share.weights[robot]});
+    }
+    if (starts.empty())
+        return std::nullopt;
+    WorkByDistance far(plan.cells, std::move(starts), share.workOfCell, turning);
+    const auto reached = [&](double metres) {
+        for (std::size_t robot = 0; robot < share.weights.size(); ++robot) {
+            const FlightLimits limits = limitsOf(robot);
+            if (share.weights[robot] > 0.0 &&
+                (!limits.makesTrips() || limits.mostPathSecondsBeyond(limits.flightSeconds, metres) > 0.0))
+                return true;
+        }
+        return false;
+    };
+    for (std::size_t step = 0; step < far.secondsBeyond().size(); ++step)
+        if (far.secondsBeyond()[step] > 0.0 && !reached(static_cast<double>(step) * far.stepMetres()))
+            return std::nullopt;
+    return far;
 }
 
 // The busiest robot travels at least the bound; on one charge it flies at most the longest endurance, so
@@ -246,7 +328,9 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
                               ? detection->summary().travelSecondsNoPlanBeats(metrics.totalTurns(), robots)
                               : cellTravelSeconds + connectorSeconds;
     metrics.lowerBoundSeconds = robots == 0 ? 0.0 : secondsNoPlanBeats / static_cast<double>(robots);
-    std::vector<SharedWork> shares{{std::vector<double>(robots, 1.0), secondsNoPlanBeats}};
+    std::vector<SharedWork> shares{{std::vector<double>(robots, 1.0), secondsNoPlanBeats, {}}};
+    if (detection == nullptr)
+        shares.front().workOfCell = [&plan](int id) { return coveredTravelSeconds(plan, id); };
     // With robots of their own speeds the parts' bounds, each part's work shared evenly, would not hold:
     // the map's bound with those speeds does (weaker where a robot is walled in).
     if (someOwnSpeed(plan.robotSpeeds) && detection == nullptr)
@@ -256,7 +340,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     // The planner gives flights only where its paths are flown in them (Planner::planOnce).
     const bool flights = std::any_of(robotFlights_.begin(), robotFlights_.end(),
                                      [](const FlightLimits& limits) { return limits.splitsPaths(); });
-    metrics.fieldLowerBoundSeconds = flights ? fieldBound(shares) : 0.0;
+    metrics.fieldLowerBoundSeconds = flights ? fieldBound(plan, shares) : 0.0;
     boundByCharges(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;

@@ -2,7 +2,9 @@
 
 #include "core/model/FlightLimits.hpp"
 #include "core/model/Plan.hpp"
+#include "core/planners/WorkByDistance.hpp"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -25,6 +27,9 @@ class PlanMetricsCalculator {
     struct SharedWork {
         std::vector<double> weights;
         double seconds = 0.0;
+        // Of those seconds, what each cell holds (weighted as `seconds` is; 0 outside the share), where it is
+        // known: the bound in the field counts the trips out to it.
+        std::function<double(int)> workOfCell;
     };
 
   private:
@@ -39,7 +44,16 @@ class PlanMetricsCalculator {
     // that work, or none where no robot works.
     static std::optional<SharedWork> boundWithOwnSpeeds(Plan& plan);
     // The least time in the field in which the robots, each within its flights, can do every share.
-    [[nodiscard]] double fieldBound(const std::vector<SharedWork>& shares) const;
+    [[nodiscard]] double fieldBound(const Plan& plan, const std::vector<SharedWork>& shares) const;
+    // The share's work by how far it lies from the starts of its robots that fly out to their work, where
+    // that bounds its time in the field.
+    [[nodiscard]] std::optional<WorkByDistance> workBeyondTripStarts(const Plan& plan,
+                                                                     const SharedWork& share) const;
+    // The least time in the field in which the robots can do one share.
+    [[nodiscard]] double fieldBound(const Plan& plan, const SharedWork& share) const;
+    [[nodiscard]] FlightLimits limitsOf(std::size_t robot) const {
+        return robot < robotFlights_.size() ? robotFlights_[robot] : FlightLimits{};
+    }
     // Raises the lower bound by the charges a robot on a battery must make to fly it.
     static void boundByCharges(Plan& plan);
 };

@@ -1,5 +1,7 @@
+#include "core/coverage/PathMeasurement.hpp"
 #include "core/model/FlightLimits.hpp"
 #include "core/planners/MlctPlanner.hpp"
+#include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
@@ -26,6 +28,31 @@ PlanningProblem fleetProblem(const std::vector<FlightLimits>& limits) {
         return seconds;
     };
     return problem;
+}
+
+// Flies a robot's path from `home` as the waypoint files split it: each flight climbs, flies straight out at
+// the trip speed to where the last one stopped, works on along the path while it can still come straight back
+// within its flight time, and lands at home; turnarounds between flights. Its time in the field.
+double flownFieldSeconds(const CoveragePath& path, const CellGraph& cells, const FlightLimits& limits) {
+    const std::vector<double> reached = cumulativeSeconds(path, cells);
+    const Waypoint& home = path.waypoints.front();
+    const auto trip = [&](std::size_t point) {
+        return std::hypot(path.waypoints[point].x - home.x, path.waypoints[point].y - home.y) /
+               limits.tripMetresPerSecond;
+    };
+    double field = 0.0;
+    std::size_t from = 0;
+    while (from + 1 < path.waypoints.size()) {
+        std::size_t to = from + 1;
+        const auto flight = [&](std::size_t last) {
+            return limits.climbAndDescentSeconds + trip(from) + reached[last] - reached[from] + trip(last);
+        };
+        while (to + 1 < path.waypoints.size() && flight(to + 1) <= limits.flightSeconds)
+            ++to;
+        field += (field > 0.0 ? limits.turnaroundSeconds : 0.0) + flight(to);
+        from = to;
+    }
+    return field;
 }
 
 } // namespace
@@ -89,6 +116,57 @@ class FieldTimeBoundTest : public QObject {
         QCOMPARE(metrics.fieldMakespanSeconds, std::max(field[0], field[1]));
         QCOMPARE(metrics.fieldSpread(), std::max(field[0], field[1]) / std::min(field[0], field[1]));
         QVERIFY(metrics.fieldMakespanSeconds >= metrics.fieldLowerBoundSeconds);
+    }
+
+    // A flight that works farther than d from the start flies 2 d of its time on the way out and back.
+    void workFarOutLosesTheTripsFromEveryFlight() {
+        FlightLimits flown = drone;
+        flown.tripMetresPerSecond = 10.0;
+        QVERIFY(flown.makesTrips());
+        QCOMPARE(flown.mostPathSecondsBeyond(2300.0, 0.0), 2 * 900.0);    // two full flights
+        QCOMPARE(flown.mostPathSecondsBeyond(2300.0, 2000.0), 2 * 500.0); // 400 s of trips a flight
+        QCOMPARE(flown.mostPathSecondsBeyond(2300.0, 4500.0), 0.0);       // out of reach
+        // Without a trip speed the trips are not counted.
+        QVERIFY(!drone.makesTrips());
+        QCOMPARE(drone.mostPathSecondsBeyond(2300.0, 2000.0), drone.mostPathSecondsWithin(2300.0));
+    }
+
+    // Drones starting at a corner or an edge fly out to most of their work: their trips raise the bound in
+    // the field, and no flying of the plan within its flights beats it.
+    void tripsOutToTheWorkRaiseTheBound() {
+        FlightLimits flown = drone;
+        flown.tripMetresPerSecond = 1.0; // reaches 450 m; the map's far corner lies 420 m away
+        // Start pixels (column, row): a corner, two at a corner, an edge, the middle and the far corner.
+        const std::vector<std::vector<std::pair<int, int>>> fleets = {
+            {{0, 0}}, {{0, 0}, {1, 0}}, {{0, 15}}, {{15, 15}, {29, 29}}};
+        for (const auto& pixels : fleets) {
+            PlanningProblem problem = test::uniformProblem(30, 30, 10.0, {}, {});
+            for (const auto& [column, row] : pixels)
+                problem.starts.push_back(test::pixelCentre(problem.grid, column, row));
+            const std::vector<MapPoint>& starts = problem.starts;
+            problem.robotFlights.assign(starts.size(), flown);
+            problem.fieldSeconds = [flown](const Plan& plan) {
+                std::vector<double> seconds;
+                for (const CoveragePath& path : plan.paths)
+                    seconds.push_back(flownFieldSeconds(path, plan.cells, flown));
+                return seconds;
+            };
+            const Plan plan = MlctPlanner{}.plan(problem, {});
+            const double flownMakespan = plan.metrics.fieldMakespanSeconds;
+            Plan withoutTrips = plan;
+            PlanMetricsCalculator{std::vector<FlightLimits>(starts.size(), drone)}.compute(withoutTrips);
+            const double bound = plan.metrics.fieldLowerBoundSeconds;
+            const double tripless = withoutTrips.metrics.fieldLowerBoundSeconds;
+            const QString figures = QString("%1 starts: bound %2 s, without trips %3 s, flown %4 s")
+                                        .arg(starts.size())
+                                        .arg(bound)
+                                        .arg(tripless)
+                                        .arg(flownMakespan);
+            QVERIFY2(bound >= tripless && bound <= flownMakespan, qPrintable(figures));
+            // From the corner most of the map lies hundreds of metres out: minutes of trips a flight.
+            if (pixels.front() == std::make_pair(0, 0))
+                QVERIFY2(bound > 1.05 * tripless, qPrintable(figures));
+        }
     }
 
     // A drone beside a rover: the bound is the time T in which the rover's T and the drone's flights within T

@@ -340,6 +340,10 @@ class MissionFilesTest : public QObject {
         QCOMPARE(problem.robotFlights[1].turnaroundSeconds, 90.0);
         QVERIFY(!problem.robotFlights[0].splitsPaths());    // alpha flies no limit
         QCOMPARE(problem.robotFlights[1].fastestPace, 1.0); // at the fleet's cruise speed, as planned
+        // Beta flies out to its work and back at its cruise speed; alpha's trips are not counted.
+        QCOMPARE(problem.robotFlights[1].tripMetresPerSecond, 1.2);
+        QVERIFY(problem.robotFlights[1].makesTrips());
+        QVERIFY(!problem.robotFlights[0].makesTrips());
         // At the land cover's speeds, commanded rounded and held within the 25 % tolerance, a cell may be
         // flown faster than planned: the bound counts its flights at the fastest pace they can take.
         Mission landSpeeds = mission;
@@ -348,6 +352,7 @@ class MissionFilesTest : public QObject {
         PlanningProblem atLandSpeeds;
         applyRobotSettings(landSpeeds, atLandSpeeds);
         QCOMPARE(atLandSpeeds.robotFlights[1].fastestPace, 0.75 / 1.05);
+        QVERIFY(!atLandSpeeds.robotFlights[1].makesTrips()); // how fast it flies out is not known
         // Speeds changed only at turns are each leg's slowest, rounded down: never faster than planned.
         landSpeeds.exports.speedChangesAtTurnsOnly = true;
         PlanningProblem atTurns;
