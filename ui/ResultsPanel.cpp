@@ -273,10 +273,11 @@ void ResultsPanel::describeFieldTimes(const PlanMetrics& metrics) {
     if (auto* boundName = qobject_cast<QLabel*>(summary_->labelForField(lowerBound_)))
         boundName->setText(tr("Bound in the field"));
     lowerBound_->setToolTip(tr("No plan making these turns brings the last robot home sooner: the work no "
-                               "plan avoids, shared out in full flights with the fewest turnarounds, each "
-                               "flight flying out as far as its work lies and back. A flight may work on its "
-                               "way out, so on land spread around the starts every plan takes well over it. "
-                               "On the paths alone: %1")
+                               "plan avoids, shared out in full flights with the fewest turnarounds. An "
+                               "aircraft at a cruise speed whose flights reach all its work spends 2 d of a "
+                               "flight getting to work farther than d from its start and back; a flight may "
+                               "work on its way out, so on land spread around the starts every plan takes "
+                               "well over it. On the paths alone: %1")
                                 .arg(formatDuration(metrics.lowerBoundSeconds)));
     ratio_->setToolTip(tr("The last robot's time in the field over the first's: how evenly they come home. "
                           "On the paths alone, makespan / bound is %1")

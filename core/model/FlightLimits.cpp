@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mcpp {
 
@@ -28,6 +29,12 @@ double FlightLimits::mostPathSecondsBeyond(double fieldSeconds, double metres) c
     // The way out and back is flown in every flight, as the climb and descent are.
     farther.climbAndDescentSeconds += 2.0 * metres / tripMetresPerSecond;
     return farther.splitsPaths() ? farther.mostPathSecondsWithin(fieldSeconds) : 0.0;
+}
+
+double FlightLimits::reachMetres() const {
+    if (!makesTrips())
+        return std::numeric_limits<double>::infinity();
+    return (flightSeconds - climbAndDescentSeconds) * tripMetresPerSecond / 2.0;
 }
 
 double FlightLimits::leastFieldSecondsFor(double pathSeconds) const {

@@ -26,6 +26,8 @@ struct FlightLimits {
     [[nodiscard]] double leastFieldSecondsFor(double pathSeconds) const;
     // Whether its flights count the way out to their work and back.
     [[nodiscard]] bool makesTrips() const { return splitsPaths() && tripMetresPerSecond > 0.0; }
+    // How far from its start one flight can work: infinite where its trips are not counted.
+    [[nodiscard]] double reachMetres() const;
     // The most seconds of planned path it can fly within `fieldSeconds` farther than `metres` from its start:
     // every flight working there spends the way out to that distance and back on it. 0 where no flight
     // reaches so far; as mostPathSecondsWithin for a robot whose trips are not counted.

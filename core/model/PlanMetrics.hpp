@@ -45,9 +45,9 @@ struct PlanMetrics {
     // Where the problem measures time in the field (PlanningProblem::fieldSeconds), when the last robot is
     // done there; and where some robot's path is split into flights (PlanningProblem::robotFlights), the
     // least any plan making these turns could take there: the work the path bound counts, shared out in full
-    // flights with the fewest turnarounds, each flight flying out as far as its work lies and back (counted
-    // for aircraft at a cruise speed). 0 otherwise, and both 0 for a battery plan, whose paths hold their
-    // charges.
+    // flights with the fewest turnarounds; where aircraft at a cruise speed reach all their work, each of
+    // their flights spends 2 d getting to work farther than d from its start and back. 0 otherwise, and both
+    // 0 for a battery plan, whose paths hold their charges.
     double fieldMakespanSeconds = 0.0;
     double fieldLowerBoundSeconds = 0.0;
     double passableAreaSquareMetres = 0.0;

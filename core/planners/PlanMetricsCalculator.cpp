@@ -41,9 +41,10 @@ PartFigures figuresOf(const Plan& plan, const StartComponent& part) {
 // The travel time of a covered cell, 0 for one no robot covers.
 double coveredTravelSeconds(const Plan& plan, int id) {
     const auto index = static_cast<std::size_t>(id);
-    return index < plan.regions.robotOfCell.size() && plan.regions.robotOfCell[index] >= 0
-               ? plan.cells.cell(id).travelSeconds()
-               : 0.0;
+    if (index >= plan.regions.robotOfCell.size())
+        return 0.0;
+    const auto robot = static_cast<std::size_t>(plan.regions.robotOfCell[index]); // -1 wraps round
+    return robot < plan.regions.startCell.size() ? plan.cells.cell(id).travelSeconds() : 0.0;
 }
 
 // Where a robot's flights take off and land: its path's first point (the waypoint files' home), or its start
@@ -61,6 +62,46 @@ bool startsOnTheMap(const Plan& plan) {
     return std::all_of(plan.regions.startCell.begin(), plan.regions.startCell.end(), [&](int start) {
         return start >= 0 && static_cast<std::size_t>(start) < plan.cells.size();
     });
+}
+
+// Whether the robots, each within its flights, do a share's work within `fieldSeconds`: all of it, and of
+// the work beyond each distance from the starts of the robots that fly out to it (`far`, where known) what
+// their flights can reach (FlightLimits::mostPathSecondsBeyond).
+bool doneWithin(const PlanMetricsCalculator::SharedWork& share, const std::vector<FlightLimits>& flights,
+                const WorkByDistance* far, double fieldSeconds) {
+    const auto doneBeyond = [&](double metres) {
+        double done = 0.0;
+        for (std::size_t robot = 0; robot < share.weights.size() && robot < flights.size(); ++robot)
+            if (share.weights[robot] > 0.0)
+                done += share.weights[robot] * flights[robot].mostPathSecondsBeyond(fieldSeconds, metres);
+        return done;
+    };
+    if (doneBeyond(0.0) < share.seconds)
+        return false;
+    for (std::size_t step = 0; far != nullptr && step < far->secondsBeyond().size(); ++step)
+        if (doneBeyond(static_cast<double>(step) * far->stepMetres()) < far->secondsBeyond()[step])
+            return false;
+    return true;
+}
+
+// The least such time, by bisection.
+double leastFieldSeconds(const PlanMetricsCalculator::SharedWork& share,
+                         const std::vector<FlightLimits>& flights, const WorkByDistance* far) {
+    const auto first =
+        std::find_if(share.weights.begin(), share.weights.end(), [](double weight) { return weight > 0.0; });
+    const auto robot = static_cast<std::size_t>(first - share.weights.begin());
+    if (first == share.weights.end() || robot >= flights.size() || !(share.seconds > 0.0))
+        return 0.0;
+    // Any robot of the share alone does its work within its own least time; the trips may need longer.
+    double low = 0.0;
+    double high = std::max(1.0, flights[robot].leastFieldSecondsFor(share.seconds / *first));
+    for (int doubling = 0; doubling < 64 && !doneWithin(share, flights, far, high); ++doubling)
+        high *= 2.0;
+    for (int step = 0; step < 64 && high - low > 1e-9 * high; ++step) {
+        const double middle = 0.5 * (low + high);
+        (doneWithin(share, flights, far, middle) ? high : low) = middle;
+    }
+    return high;
 }
 
 } // namespace
@@ -170,62 +211,19 @@ std::optional<PlanMetricsCalculator::SharedWork> PlanMetricsCalculator::boundWit
     return work;
 }
 
-double PlanMetricsCalculator::fieldBound(const Plan& plan, const std::vector<SharedWork>& shares) const {
-    double bound = 0.0;
-    for (const SharedWork& share : shares)
-        bound = std::max(bound, fieldBound(plan, share));
-    return bound;
-}
+namespace {
 
-// The robots must do the share's work, and of it what lies beyond each distance from the starts of the
-// robots that fly out to their work: a flight working farther than d from its start flies 2 d on the way
-// out and back (FlightLimits::mostPathSecondsBeyond).
-double PlanMetricsCalculator::fieldBound(const Plan& plan, const SharedWork& share) const {
-    const auto first =
-        std::find_if(share.weights.begin(), share.weights.end(), [](double weight) { return weight > 0.0; });
-    if (first == share.weights.end() || !(share.seconds > 0.0))
-        return 0.0;
-    const std::optional<WorkByDistance> far = workBeyondTripStarts(plan, share);
-    const auto doneWithin = [&](double fieldSeconds) {
-        const auto doneBeyond = [&](double metres) {
-            double done = 0.0;
-            for (std::size_t robot = 0; robot < share.weights.size(); ++robot)
-                if (share.weights[robot] > 0.0)
-                    done +=
-                        share.weights[robot] * limitsOf(robot).mostPathSecondsBeyond(fieldSeconds, metres);
-            return done;
-        };
-        if (doneBeyond(0.0) < share.seconds)
-            return false;
-        for (std::size_t step = 0; far && step < far->secondsBeyond().size(); ++step)
-            if (doneBeyond(static_cast<double>(step) * far->stepMetres()) < far->secondsBeyond()[step])
-                return false;
-        return true;
-    };
-    // Any robot of the share alone does its work within its own least time; the trips may need longer.
-    const auto robot = static_cast<std::size_t>(first - share.weights.begin());
-    double low = 0.0;
-    double high = limitsOf(robot).leastFieldSecondsFor(share.seconds / *first);
-    for (int doubling = 0; doubling < 64 && !doneWithin(high); ++doubling)
-        high *= 2.0;
-    for (int step = 0; step < 64 && high - low > 1e-9 * high; ++step) {
-        const double middle = 0.5 * (low + high);
-        (doneWithin(middle) ? high : low) = middle;
-    }
-    return high;
-}
-
-// Where some robot of the share flies out to its work. None where work lies beyond every flight's reach and
-// every robot of the share flies: the plan then has flights longer than a battery, which this bound does not
-// price, so the trips are left out.
-std::optional<WorkByDistance> PlanMetricsCalculator::workBeyondTripStarts(const Plan& plan,
-                                                                          const SharedWork& share) const {
-    if (!share.workOfCell || !startsOnTheMap(plan))
+// The work of a share by how far it lies from the starts of its robots that fly out to their work; none
+// where it has no such robot, or no robot reaches some of it.
+std::optional<WorkByDistance> workBeyondTripStarts(const Plan& plan,
+                                                   const PlanMetricsCalculator::SharedWork& share,
+                                                   const std::vector<FlightLimits>& flights) {
+    if (!share.workOfCell)
         return std::nullopt;
     std::vector<StartSquare> starts;
     std::vector<WorkByDistance::TurningPath> turning; // the share's seconds count its robots' turns
-    for (std::size_t robot = 0; robot < share.weights.size(); ++robot) {
-        if (share.weights[robot] > 0.0 && limitsOf(robot).makesTrips())
+    for (std::size_t robot = 0; robot < share.weights.size() && robot < flights.size(); ++robot) {
+        if (share.weights[robot] > 0.0 && flights[robot].makesTrips())
             starts.push_back(homeOf(plan, robot));
         if (share.weights[robot] > 0.0 && robot < plan.paths.size())
             turning.push_back({&plan.paths[robot], share.weights[robot]});
@@ -234,18 +232,72 @@ std::optional<WorkByDistance> PlanMetricsCalculator::workBeyondTripStarts(const 
         return std::nullopt;
     WorkByDistance far(plan.cells, std::move(starts), share.workOfCell, turning);
     const auto reached = [&](double metres) {
-        for (std::size_t robot = 0; robot < share.weights.size(); ++robot) {
-            const FlightLimits limits = limitsOf(robot);
-            if (share.weights[robot] > 0.0 &&
-                (!limits.makesTrips() || limits.mostPathSecondsBeyond(limits.flightSeconds, metres) > 0.0))
+        for (std::size_t robot = 0; robot < share.weights.size() && robot < flights.size(); ++robot)
+            if (share.weights[robot] > 0.0 && flights[robot].reachMetres() > metres)
                 return true;
-        }
         return false;
     };
     for (std::size_t step = 0; step < far.secondsBeyond().size(); ++step)
         if (far.secondsBeyond()[step] > 0.0 && !reached(static_cast<double>(step) * far.stepMetres()))
             return std::nullopt;
     return far;
+}
+
+} // namespace
+
+// Each robot's flights as the bound counts them. A flight may skip the path's turn where it ends (the
+// waypoint files turn from the trip out and onto the trip back instead): up to a U-turn at the dearest price,
+// given to every flight as spare time so that no plan's flights come out under the bound.
+std::vector<FlightLimits> PlanMetricsCalculator::boundedFlights(std::size_t robots,
+                                                                double dearestTurnSeconds) const {
+    std::vector<FlightLimits> flights;
+    for (std::size_t robot = 0; robot < robots; ++robot) {
+        FlightLimits limits = limitsOf(robot);
+        if (limits.splitsPaths())
+            limits.climbAndDescentSeconds -= 2.0 * dearestTurnSeconds * limits.fastestPace;
+        flights.push_back(limits);
+    }
+    return flights;
+}
+
+double PlanMetricsCalculator::fieldBound(const Plan& plan, const std::vector<SharedWork>& shares,
+                                         double dearestTurnSeconds) const {
+    const std::vector<FlightLimits> flights =
+        boundedFlights(plan.regions.startCell.size(), dearestTurnSeconds);
+    const bool trips = flightsReachTheirWork(plan);
+    double bound = 0.0;
+    for (const SharedWork& share : shares) {
+        const std::optional<WorkByDistance> far =
+            trips ? workBeyondTripStarts(plan, share, flights) : std::nullopt;
+        bound = std::max(bound, leastFieldSeconds(share, flights, far ? &*far : nullptr));
+    }
+    return bound;
+}
+
+// Where some robot flies out to its work: whether each such robot reaches every cell of its region within
+// one flight. Where one does not, the plan has flights longer than a battery, which the trips' bound does
+// not price: the trips are left out.
+bool PlanMetricsCalculator::flightsReachTheirWork(const Plan& plan) const {
+    const std::size_t robots = plan.regions.startCell.size();
+    if (!startsOnTheMap(plan))
+        return false;
+    std::vector<StartSquare> homes;
+    std::vector<double> reaches;
+    for (std::size_t robot = 0; robot < robots; ++robot) {
+        homes.push_back(homeOf(plan, robot));
+        reaches.push_back(limitsOf(robot).reachMetres());
+    }
+    if (std::all_of(reaches.begin(), reaches.end(), [](double reach) { return std::isinf(reach); }))
+        return false; // no trips
+    for (std::size_t id = 0; id < plan.cells.size() && id < plan.regions.robotOfCell.size(); ++id) {
+        const auto robot = static_cast<std::size_t>(plan.regions.robotOfCell[id]);
+        if (robot >= robots || std::isinf(reaches[robot]))
+            continue; // uncovered (-1 wraps round), or a robot without trips
+        const Cell cell = plan.cells.cell(static_cast<int>(id));
+        if (homes[robot].gapTo(cell.centreX(), cell.centreY(), cell.size) > reaches[robot])
+            return false;
+    }
+    return true;
 }
 
 // The busiest robot travels at least the bound; on one charge it flies at most the longest endurance, so
@@ -278,6 +330,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     double covered = 0.0;
     double unreachable = 0.0;
     std::size_t subCells = 0;
+    double dearestTurnSeconds = 0.0; // the highest price of a quarter turn
     // Whether the regions link every robot is asked beside the pass over the cells: on a map of 69 M cells
     // each takes most of a second.
     bool regionsLinked = false;
@@ -288,6 +341,8 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         }
         for (std::size_t id = 0; id < graph.size(); ++id) {
             const Cell& cell = graph.cell(static_cast<int>(id));
+            dearestTurnSeconds =
+                std::max(dearestTurnSeconds, static_cast<double>(cell.turnSecondsPer90Degrees));
             const int robot = id < plan.regions.robotOfCell.size() ? plan.regions.robotOfCell[id] : -1;
             if (robot < 0 || static_cast<std::size_t>(robot) >= robots) {
                 unreachable += cell.passableAreaSquareMetres;
@@ -340,7 +395,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     // The planner gives flights only where its paths are flown in them (Planner::planOnce).
     const bool flights = std::any_of(robotFlights_.begin(), robotFlights_.end(),
                                      [](const FlightLimits& limits) { return limits.splitsPaths(); });
-    metrics.fieldLowerBoundSeconds = flights ? fieldBound(plan, shares) : 0.0;
+    metrics.fieldLowerBoundSeconds = flights ? fieldBound(plan, shares, dearestTurnSeconds) : 0.0;
     boundByCharges(plan);
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;

@@ -2,7 +2,6 @@
 
 #include "core/model/FlightLimits.hpp"
 #include "core/model/Plan.hpp"
-#include "core/planners/WorkByDistance.hpp"
 
 #include <functional>
 #include <optional>
@@ -22,8 +21,8 @@ class PlanMetricsCalculator {
 
     void compute(Plan& plan) const;
 
-    // Work some robots must share: whatever the plan, the sum over robots of weights[r] times robot r's
-    // path time is at least `seconds` (weights by robot, 0 for a robot outside it).
+    // Work some robots must share: the sum over robots of weights[r] times robot r's path time is at least
+    // `seconds` (weights by robot, 0 for a robot outside it), for any division making the plan's turns.
     struct SharedWork {
         std::vector<double> weights;
         double seconds = 0.0;
@@ -43,14 +42,13 @@ class PlanMetricsCalculator {
     // mean, by each robot's share of what the fleet does in a second, of what each robot must do. Returns
     // that work, or none where no robot works.
     static std::optional<SharedWork> boundWithOwnSpeeds(Plan& plan);
-    // The least time in the field in which the robots, each within its flights, can do every share.
-    [[nodiscard]] double fieldBound(const Plan& plan, const std::vector<SharedWork>& shares) const;
-    // The share's work by how far it lies from the starts of its robots that fly out to their work, where
-    // that bounds its time in the field.
-    [[nodiscard]] std::optional<WorkByDistance> workBeyondTripStarts(const Plan& plan,
-                                                                     const SharedWork& share) const;
-    // The least time in the field in which the robots can do one share.
-    [[nodiscard]] double fieldBound(const Plan& plan, const SharedWork& share) const;
+    // The least time in the field in which the robots, each within its flights, can do every share;
+    // dearestTurnSeconds: the highest price of a quarter turn on the map.
+    [[nodiscard]] double fieldBound(const Plan& plan, const std::vector<SharedWork>& shares,
+                                    double dearestTurnSeconds) const;
+    [[nodiscard]] std::vector<FlightLimits> boundedFlights(std::size_t robots,
+                                                           double dearestTurnSeconds) const;
+    [[nodiscard]] bool flightsReachTheirWork(const Plan& plan) const;
     [[nodiscard]] FlightLimits limitsOf(std::size_t robot) const {
         return robot < robotFlights_.size() ? robotFlights_[robot] : FlightLimits{};
     }

@@ -11,28 +11,18 @@ namespace mcpp {
 
 namespace {
 
-constexpr std::size_t steps = 512;
+constexpr std::size_t distanceSteps = 512;
 
-// How far `cell` lies from the nearest start: the gap between their squares.
-double leastDistance(const Cell& cell, const std::vector<StartSquare>& starts) {
+// How far a square of side `side` centred at (x, y) lies from the nearest start: the gap between the squares.
+double leastDistance(double x, double y, double side, const std::vector<StartSquare>& starts) {
     double least = std::numeric_limits<double>::infinity();
-    for (const StartSquare& start : starts) {
-        const double across = cell.size / 2.0 + start.halfSide;
-        const double dx = std::max(0.0, std::abs(cell.centreX() - start.centre.x) - across);
-        const double dy = std::max(0.0, std::abs(cell.centreY() - start.centre.y) - across);
-        least = std::min(least, std::hypot(dx, dy));
-    }
+    for (const StartSquare& start : starts)
+        least = std::min(least, start.gapTo(x, y, side));
     return least;
 }
 
-double leastDistance(const Waypoint& point, const std::vector<StartSquare>& starts) {
-    double least = std::numeric_limits<double>::infinity();
-    for (const StartSquare& start : starts) {
-        const double dx = std::max(0.0, std::abs(point.x - start.centre.x) - start.halfSide);
-        const double dy = std::max(0.0, std::abs(point.y - start.centre.y) - start.halfSide);
-        least = std::min(least, std::hypot(dx, dy));
-    }
-    return least;
+double leastDistance(const Cell& cell, const std::vector<StartSquare>& starts) {
+    return leastDistance(cell.centreX(), cell.centreY(), cell.size, starts);
 }
 
 } // namespace
@@ -49,8 +39,8 @@ WorkByDistance::WorkByDistance(const CellGraph& cells, std::vector<StartSquare> 
             farthest = std::max(farthest, leastDistance(cells.cell(id), starts));
     if (!(farthest > 0.0))
         return;
-    stepMetres_ = farthest / static_cast<double>(steps);
-    secondsBeyond_.assign(steps + 1, 0.0);
+    stepMetres_ = farthest / static_cast<double>(distanceSteps);
+    secondsBeyond_.assign(distanceSteps + 1, 0.0);
     for (int id = 0; id < static_cast<int>(cells.size()); ++id)
         if (const double work = workOfCell(id); work > 0.0) {
             // Beyond k steps for every k up to floor(distance / step): counted at the last, summed below.
@@ -58,12 +48,12 @@ WorkByDistance::WorkByDistance(const CellGraph& cells, std::vector<StartSquare> 
         }
     for (const TurningPath& path : turning)
         addTurns(cells, starts, path);
-    for (std::size_t step = steps; step-- > 0;)
+    for (std::size_t step = distanceSteps; step-- > 0;)
         secondsBeyond_[step] += secondsBeyond_[step + 1];
 }
 
 std::size_t WorkByDistance::stepOf(double metres) const {
-    return std::min(steps, static_cast<std::size_t>(metres / stepMetres_));
+    return std::min(distanceSteps, static_cast<std::size_t>(metres / stepMetres_));
 }
 
 void WorkByDistance::addTurns(const CellGraph& cells, const std::vector<StartSquare>& starts,
@@ -79,7 +69,7 @@ void WorkByDistance::addTurns(const CellGraph& cells, const std::vector<StartSqu
             continue;
         if (wayIn) {
             const double seconds = turnSecondsAt(corner, wayIn->x, wayIn->y, wayOut.x, wayOut.y, cells);
-            turns[stepOf(leastDistance(corner, starts))] += seconds;
+            turns[stepOf(leastDistance(corner.x, corner.y, 0.0, starts))] += seconds;
             total += seconds;
         }
         wayIn = wayOut;

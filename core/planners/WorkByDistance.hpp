@@ -2,18 +2,12 @@
 
 #include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
-#include "core/model/MapPoint.hpp"
+#include "core/planners/StartSquare.hpp"
 
 #include <functional>
 #include <vector>
 
 namespace mcpp {
-
-// Where a robot starts: a point, or where only its start cell is known, that cell's square.
-struct StartSquare {
-    MapPoint centre;
-    double halfSide = 0.0;
-};
 
 // Work on a map by how far it lies from the nearest of some starts, in even steps of distance: what robots
 // flying out from those starts can reach only on trips at least that long.
@@ -32,8 +26,9 @@ class WorkByDistance {
 
     [[nodiscard]] double stepMetres() const { return stepMetres_; }
     // [k]: the work on cells lying wholly beyond k * stepMetres() of every start. A path spends at least a
-    // sub-cell's travel time within the circle inscribed in it (its steps to the sub-cells around are at
-    // least half a sub-cell long each way), so at least a cell's work lies as far as the cell.
+    // sub-cell's travel time within the circle inscribed in it (its steps to the sub-cells around, or a
+    // flight's trip there, are at least half a sub-cell long each way; only where it ends at a start is
+    // it half that), so at least a cell's work lies as far as the cell.
     [[nodiscard]] const std::vector<double>& secondsBeyond() const { return secondsBeyond_; }
 
   private:
