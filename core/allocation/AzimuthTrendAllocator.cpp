@@ -47,6 +47,20 @@ double fairTime(const std::vector<double>& costs, const std::vector<double>& pac
     return fairTime(costs, paces, robots);
 }
 
+// Each robot's cost in its own time (costs at pace 1 times its pace).
+std::vector<double> pacedCosts(std::vector<double> costs, const std::vector<double>& paces) {
+    for (std::size_t robot = 0; robot < costs.size(); ++robot)
+        costs[robot] *= paceOf(paces, robot);
+    return costs;
+}
+
+// Every robot's own time within `slack` of the fair time (the mean at one pace).
+bool withinOfTheFairTime(const std::vector<double>& costs, const std::vector<double>& paces, double slack) {
+    const double fair = fairTime(costs, paces);
+    return std::all_of(costs.begin(), costs.end(),
+                       [&](double cost) { return std::abs(cost - fair) <= slack; });
+}
+
 struct RobotState {
     double cost = 0.0;
     double sumX = 0.0; // area-weighted, for the region centre Ca
@@ -851,11 +865,9 @@ RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int m
     RegionAllocation result = allocation.result();
     settleRegionsWithPieces(graph, result);
     // Settling counts costs at pace 1; robots of their own paces count their own times.
-    if (!allocation.paces().empty()) {
-        result.costSeconds = regionCosts(graph, result.robotOfCell, result.costSeconds.size());
-        for (std::size_t robot = 0; robot < result.costSeconds.size(); ++robot)
-            result.costSeconds[robot] *= allocation.paces()[robot];
-    }
+    if (!allocation.paces().empty())
+        result.costSeconds =
+            pacedCosts(regionCosts(graph, result.robotOfCell, result.costSeconds.size()), allocation.paces());
     progress.report("allocation", 1.0);
     return result;
 }
@@ -1017,14 +1029,16 @@ std::optional<RegionAllocation> evenedOutOnPieces(const std::vector<CellBlocks>&
     return division;
 }
 
-// The regions grown and evened out on blocks, each cell given its block's robot and made whole. Nothing when
-// two starts share a block, or when a region ends further than a block's cost from the mean: evening that
+// The regions grown and evened out on blocks, each cell given its block's robot and made whole; robots of
+// paces of their own (paces) in their own times. Nothing when two starts share a block, or when a region
+// ends further than a block's cost from the fair time (fairTime; the mean at one pace): evening that
 // out cell by cell moves thousands of single cells, each leaving a notch a path turns around (on a forest
 // with lakes, 7 % more turns than regions grown cell by cell), so such maps are grown cell by cell.
 std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std::vector<int>& startCells,
-                                              int rebalanceIterations, const ProgressReporter& progress) {
+                                              int rebalanceIterations, const ProgressReporter& progress,
+                                              const std::vector<double>& paces) {
     RegionAllocation division;
-    double largestBlockCost = 0.0;
+    double largestBlockCost = 0.0; // in the slowest robot's own time
     bool linked = false;
     {
         const CellBlocks blocks = groupIntoBlocks(graph, AzimuthTrendAllocator::blockSide);
@@ -1035,11 +1049,13 @@ std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std:
             return std::nullopt;
         for (const CellFigures& block : blocks.figures)
             largestBlockCost = std::max(largestBlockCost, block.cost);
-        Allocation coarse(blocks.adjacency, blocks.figures, blockStarts, progress);
+        if (!paces.empty())
+            largestBlockCost *= std::max(1.0, *std::max_element(paces.begin(), paces.end()));
+        Allocation coarse(blocks.adjacency, blocks.figures, blockStarts, progress, paces);
         coarse.grow();
         (void)coarse.rebalance(moveCap(rebalanceIterations, blocks.figures.size()));
         const RegionAllocation coarseRegions = coarse.result();
-        if (!withinOfTheMean(coarseRegions.costSeconds, largestBlockCost))
+        if (!withinOfTheFairTime(coarseRegions.costSeconds, paces, largestBlockCost))
             return std::nullopt;
         division = cellsTakeTheirBlocks(coarseRegions, blocks.blockOfCell, startCells);
         linked = blocks.everyBlockConnected;
@@ -1047,8 +1063,8 @@ std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std:
     if (!linked) {
         // Obstacles that cut a block may cut a region; the cells it loses or gains move its cost.
         reconnectRegions(graph, startCells, division.robotOfCell);
-        division.costSeconds = regionCosts(graph, division.robotOfCell, startCells.size());
-        if (!withinOfTheMean(division.costSeconds, largestBlockCost))
+        division.costSeconds = pacedCosts(regionCosts(graph, division.robotOfCell, startCells.size()), paces);
+        if (!withinOfTheFairTime(division.costSeconds, paces, largestBlockCost))
             return std::nullopt;
     }
     progress.report("allocation", 1.0);
@@ -1127,11 +1143,12 @@ RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph
 RegionAllocation AzimuthTrendAllocator::allocate(const CellGraph& graph, const std::vector<int>& startCells,
                                                  const ProgressReporter& progress) const {
     progress.report("allocation", 0.0);
-    // Robots of their own paces grow cell by cell: pieces and blocks are evened out at one pace.
+    // Robots of their own paces grow cell by cell on maps of tree pieces (the pieces are evened out at one
+    // pace); on blocks, each robot's time is its own.
     if (paces_.empty() && growsOnTreePieces(graph, startCells.size()))
         return grownOnTreePieces(graph, startCells, progress);
-    if (paces_.empty() && graph.size() > limits_.mostCellsGrownOneByOne) {
-        if (auto grown = grownOnBlocks(graph, startCells, rebalanceIterations_, progress))
+    if (graph.size() > limits_.mostCellsGrownOneByOne) {
+        if (auto grown = grownOnBlocks(graph, startCells, rebalanceIterations_, progress, paces_))
             return std::move(*grown);
     }
     return grownCellByCell(graph, startCells, rebalanceIterations_, progress, limits_, paces_);

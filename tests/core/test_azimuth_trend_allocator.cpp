@@ -270,6 +270,45 @@ class AzimuthTrendAllocatorTest : public QObject {
         }
     }
 
+    // Robots of their own paces (drones balanced in the field, a mixed fleet) grow on blocks too, each in
+    // its own time: the regions are whole and hold every reachable cell, each says its cost in its robot's
+    // time, each ends within a block's cost (at the slowest pace) of the fair time, and a robot of twice the
+    // pace gets less land than one of half the pace.
+    void regionsGrownOnBlocksEvenOutOwnPaces() {
+        const std::vector<double> paces{1.0, 2.0, 1.0, 0.5, 1.0};
+        AzimuthTrendAllocator onBlocks(0, 0.0, {.mostCellsGrownOneByOne = 0});
+        onBlocks.setPaces(paces);
+        AzimuthTrendAllocator byCell;
+        byCell.setPaces(paces);
+        PlanningProblem open = test::uniformProblem(61, 61, 10.0, std::vector<bool>(61 * 61, false), {});
+        for (const auto& [column, row] :
+             std::vector<std::pair<int, int>>{{2, 2}, {58, 3}, {30, 30}, {5, 57}, {57, 57}})
+            open.starts.push_back(test::pixelCentre(open.grid, column, row));
+        PlanningProblem cut = test::obstacleGridProblem(64, 5, 3);
+        for (const PlanningProblem& problem : {open, cut}) {
+            const Plan plan = allocateOnly(problem, onBlocks);
+            QVERIFY2(test::checkRegions(plan).empty(),
+                     qPrintable(QString::fromStdString(test::describe(test::checkRegions(plan)))));
+            const std::vector<double> costs =
+                regionCosts(plan.cells, plan.regions.robotOfCell, plan.regions.startCell.size());
+            double work = 0.0;
+            double rate = 0.0;
+            for (std::size_t robot = 0; robot < costs.size(); ++robot) {
+                QVERIFY(std::abs(plan.regions.costSeconds[robot] - costs[robot] * paces[robot]) <=
+                        1e-9 * plan.regions.costSeconds[robot]);
+                work += costs[robot];
+                rate += 1.0 / paces[robot];
+            }
+            const double fair = work / rate;
+            for (double own : plan.regions.costSeconds)
+                QVERIFY2(std::abs(own - fair) <= 2.0 * dearestBlock(plan),
+                         qPrintable(QString("own time %1 s, fair %2 s").arg(own).arg(fair)));
+            QVERIFY2(costs[1] < costs[3], qPrintable(QString("%1 against %2").arg(costs[1]).arg(costs[3])));
+            QVERIFY2(plan.regions.robotOfCell != allocateOnly(problem, byCell).regions.robotOfCell,
+                     qPrintable(QString("problem of %1 cells").arg(plan.cells.size())));
+        }
+    }
+
     // With a tree piece share, a map grows its regions on pieces of a whole-map tree and evens them out
     // cell by cell: the regions are whole, hold their starts and every reachable cell, say their costs
     // right and end as even as regions grown cell by cell (largest over mean within 1 %), on one cell size
