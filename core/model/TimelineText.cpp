@@ -3,8 +3,26 @@
 #include "core/model/HumanUnits.hpp"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace mcpp {
+
+namespace {
+
+// What re-allocating saved against the static plan, or how much longer it took.
+std::string comparedWithStatic(double seconds, double staticSeconds) {
+    const double times = seconds / staticSeconds;
+    if (!(times > 1.0))
+        return formatPercent(1.0 - times) + " saved";
+    if (times < 2.0)
+        return "this plan takes " + formatPercent(times - 1.0) + " longer";
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(1) << times;
+    return "this plan takes " + text.str() + " x as long";
+}
+
+} // namespace
 
 std::string timelineSentence(const TimelineLayer::Summary& summary) {
     const std::size_t count = summary.events.size();
@@ -17,9 +35,8 @@ std::string timelineSentence(const TimelineLayer::Summary& summary) {
             (count == 0 ? std::string(": ") : std::string(" through the same events: "));
     if (std::isinf(summary.staticMakespanSeconds))
         return text + "never done (a robot stops with work left)";
-    const double saved = 1.0 - summary.makespanSeconds / summary.staticMakespanSeconds;
     return text + formatDuration(summary.staticMakespanSeconds) + " (" +
-           (saved >= 0.0 ? formatPercent(saved) + " saved)" : formatPercent(-saved) + " less)");
+           comparedWithStatic(summary.makespanSeconds, summary.staticMakespanSeconds) + ")";
 }
 
 } // namespace mcpp

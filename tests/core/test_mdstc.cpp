@@ -252,14 +252,18 @@ class MdstcTest : public QObject {
         QVERIFY2(QString::fromStdString(message).contains(expected), message.c_str());
     }
 
-    // The one line the batch summary and the window show: saved, less, or never done.
+    // The one line the batch summary and the window show: saved, longer, or never done.
     void theTimelineIsSaidInOneLine() {
         TimelineLayer::Summary summary;
         summary.makespanSeconds = 3600.0;
         summary.staticPlanner = "mcpp-mlct";
         summary.staticMakespanSeconds = 3000.0;
         QCOMPARE(QString::fromStdString(timelineSentence(summary)),
-                 QString("without events: done in 1 h; the static mcpp-mlct plan: 50 min (20% less)"));
+                 QString("without events: done in 1 h; the static mcpp-mlct plan: 50 min (this plan takes "
+                         "20% longer)"));
+        summary.staticMakespanSeconds = 1000.0;
+        QVERIFY(
+            QString::fromStdString(timelineSentence(summary)).endsWith("(this plan takes 3.6 x as long)"));
         summary.events = {{60.0, 0, 0.5}};
         summary.staticMakespanSeconds = 7200.0;
         QVERIFY(QString::fromStdString(timelineSentence(summary)).endsWith("2 h (50% saved)"));
