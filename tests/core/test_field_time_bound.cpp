@@ -208,9 +208,13 @@ class FieldTimeBoundTest : public QObject {
         PlanningProblem problem = fleetProblem({drone, drone});
         problem.robotSpeeds = {0.0, 3.0};
         problem.planner = defaultPlannerChoice("cppied");
+        // The mission's note that each robot is timed at its own speed goes: here it is not.
+        problem.notes.push_back({IssueSeverity::Information, "cruise-speeds-differ", "each at its own"});
         const Plan plan = makePlanner("cppied")->plan(problem, {});
         QVERIFY(std::any_of(plan.issues.begin(), plan.issues.end(),
                             [](const PlanIssue& issue) { return issue.code == "own-speeds-ignored"; }));
+        QVERIFY(std::none_of(plan.issues.begin(), plan.issues.end(),
+                             [](const PlanIssue& issue) { return issue.code == "cruise-speeds-differ"; }));
         QCOMPARE(plan.metrics.fieldLowerBoundSeconds, 0.0);
         QCOMPARE(plan.metrics.fieldMakespanSeconds, 0.0);
         // Timed at its own speed, as MCPP-MLCT plans it, the same fleet has them.
