@@ -244,14 +244,18 @@ void BatchRunner::applyOverrides() {
 void BatchRunner::loadRaster() {
     const std::string missionPath = options_.missionFromFlags() ? std::string() : options_.missionPath;
     auto loaded = io::loadMissionRasterAlone(mission_, missionPath);
+    // Where the file was named: the flag, or the mission file and its key.
+    const std::string given = missionPath.empty() ? std::string() : missionPath + ": ";
     if (!loaded) {
         const std::string rasterPath = io::resolveRasterPath(mission_, missionPath);
-        badInput(namingFile(rasterPath, loaded.error()));
+        badInput((missionPath.empty() ? "--raster: " : given + "raster.path: ") +
+                 namingFile(rasterPath, loaded.error()));
     }
     raster_ = std::move(loaded.value());
     const std::size_t rasterWarnings = raster_.warnings.size();
     if (const io::Status area = io::applyMissionArea(raster_, mission_, missionPath); !area)
-        badInput("area of interest: " + area.error()); // the message names the polygon file
+        badInput((missionPath.empty() ? "--area: " : given + "area: ") +
+                 "area of interest: " + area.error()); // the message names the polygon file
     // What the area leaves to plan ("planning on 4.04 km2 of the map") is news, not a warning.
     for (std::size_t i = rasterWarnings; i < raster_.warnings.size(); ++i)
         pendingNotes_.push_back(raster_.warnings[i]);
@@ -647,6 +651,8 @@ void BatchRunner::executeComparison() {
             started = std::chrono::steady_clock::now();
             Plan plan = runPlanner(problem);
             row.planningMilliseconds = millisecondsSince(started);
+            for (const auto& warning : plan.warnings())
+                warn(warning + io::robotsNamedIn(warning, robotNamesForMessages(), false));
             processMilliseconds_ = {{"read_raster", readMilliseconds}, {"plan", row.planningMilliseconds}};
             writeOutputs(plan, (fs::path(options_.outputDirectory) / name).string());
             row.metrics = plan.metrics;
@@ -727,9 +733,16 @@ void BatchRunner::printSummary(const Plan& plan) const {
         return;
     const PlanMetrics& metrics = plan.metrics;
     output_ << "mcpp: planned " << plan.paths.size() << (plan.paths.size() == 1 ? " robot" : " robots")
-            << " with " << plan.planner << ": makespan " << formatDuration(metrics.makespanSeconds)
-            << ", lower bound " << formatDuration(metrics.lowerBoundSeconds) << ", ratio "
-            << formatNumber(metrics.ratio, 3) << ", covered " << formatPercent(metrics.coveredFraction)
+            << " with " << plan.planner << ": ";
+    // Where flights split the missions, the team waits for the last robot home; paths of different
+    // lengths that end together in the field are uneven by design, so their ratio comes second.
+    const bool inTheField = metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0;
+    if (inTheField)
+        output_ << "the last robot home after " << formatDuration(metrics.fieldMakespanSeconds)
+                << ", last / first home " << formatNumber(metrics.fieldSpread(), 3) << " (the paths: ";
+    output_ << "makespan " << formatDuration(metrics.makespanSeconds) << ", lower bound "
+            << formatDuration(metrics.lowerBoundSeconds) << ", ratio " << formatNumber(metrics.ratio, 3)
+            << (inTheField ? ")" : "") << ", covered " << formatPercent(metrics.coveredFraction)
             << " of the passable area\n";
     // A split mission's flights, trips and turnarounds take longer than the plan's makespan says.
     if (!fieldTimeNote_.empty())

@@ -137,6 +137,18 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         table_->setItem(r, Name, name);
         auto* state = new QTableWidgetItem(QString::fromStdString(io::outcomeName(row.outcome)));
         state->setToolTip(QString::fromStdString(row.message));
+        // A plan's warnings (robots timed at the class table's speeds, flights beyond a battery) weigh on
+        // its figures: flagged on its row, said in full when hovered.
+        if (const Plan* plan = outcome.plans[i].get(); plan && !plan->warnings().empty()) {
+            const std::vector<std::string> warnings = plan->warnings();
+            state->setText(warnings.size() == 1
+                               ? tr("%1, 1 warning").arg(state->text())
+                               : tr("%1, %2 warnings").arg(state->text()).arg(warnings.size()));
+            QStringList lines;
+            for (const std::string& warning : warnings)
+                lines << QString::fromStdString(warning);
+            state->setToolTip(lines.join(QStringLiteral("\n\n")));
+        }
         table_->setItem(r, Outcome, state);
         panels.push_back(render::comparisonPanelOf(row, outcome.plans[i].get()));
         if (row.outcome != io::ComparisonRow::Outcome::Planned)
@@ -153,7 +165,8 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     }
     table_->setColumnHidden(Home, !inTheField);
     table_->setSortingEnabled(true);
-    table_->sortByColumn(Ratio, Qt::AscendingOrder); // the best balanced first
+    // The soonest done first: what the user waits for, where a balanced plan may still take longest.
+    table_->sortByColumn(inTheField ? Home : Makespan, Qt::AscendingOrder);
     sheetImage_ = render::renderComparisonSheet(grid, classes, panels);
     fitSheet();
 }

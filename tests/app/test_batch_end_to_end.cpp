@@ -180,12 +180,14 @@ void TestBatchEndToEnd::outputsAreTheSameWhateverTheThreadCount() {
 }
 
 // Drones on flights compared: each planner's row gives when its last robot is home and the bound in the
-// field, as its report.json does, in comparison.json and comparison.csv, and the summary says it.
+// field, as its report.json does, in comparison.json and comparison.csv, and the summary says it; each
+// plan's warnings (here an event both planners leave out) are said as for one planner.
 void TestBatchEndToEnd::comparisonGivesTimesInTheField() {
     const QString out = scratch_.filePath(QStringLiteral("compare-drones"));
-    const auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "mcpp-mlct,darp",
-                              "--vehicle", "multirotor", "--cruise-speed", "6", "--fov-scale", "2",
-                              "--flight-time", "3min", "--turnaround", "2min", "--out", out});
+    const auto run =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "mcpp-mlct,darp", "--vehicle",
+                 "multirotor", "--cruise-speed", "6", "--fov-scale", "2", "--flight-time", "3min",
+                 "--turnaround", "2min", "--event", "60:1:0.5", "--out", out});
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
     const QDir folder(out);
     const auto planners = readJsonObject(folder.filePath("comparison.json")).value("planners").toArray();
@@ -194,6 +196,7 @@ void TestBatchEndToEnd::comparisonGivesTimesInTheField() {
     QVERIFY(csv.open(QIODevice::ReadOnly));
     const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
     const QStringList header = lines.front().split(',');
+    int warningsSaid = 0;
     for (int i = 0; i < planners.size(); ++i) {
         const auto row = planners.at(i).toObject();
         const QString name = row.value("planner").toString();
@@ -210,7 +213,14 @@ void TestBatchEndToEnd::comparisonGivesTimesInTheField() {
                                              QString::fromStdString(mcpp::formatDuration(
                                                  report.value("field_makespan_s").toDouble()))),
                  qPrintable(run.standardOutput));
+        // Each plan's warnings are said as it is made, named by its planner, as for one planner.
+        const auto warnings = report.value("warnings").toArray();
+        warningsSaid += static_cast<int>(warnings.size());
+        for (const auto& warning : warnings)
+            QVERIFY2(run.standardError.contains("mcpp: warning: " + name + ": " + warning.toString()),
+                     qPrintable(name + ": " + warning.toString()));
     }
+    QVERIFY(warningsSaid > 0); // the event, left out by both
 }
 
 // --compare: each planner's own outputs in its folder, one row each in comparison.csv and .json with the
@@ -797,6 +807,12 @@ void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
     QVERIFY2(fieldBound > report.value("lower_bound_s").toDouble() && fieldBound <= lastDone,
              qPrintable(QStringLiteral("%1 s against %2 s").arg(fieldBound).arg(lastDone)));
     QVERIFY(report.value("field_spread").toDouble() >= 1.0);
+    // The summary leads with what the team waits for; the paths' figures follow.
+    QVERIFY2(run.standardOutput.contains(
+                 QStringLiteral(" robots with mcpp-mlct: the last robot home after ") +
+                 QString::fromStdString(mcpp::formatDuration(lastDone)) + ", last / first home " +
+                 QString::number(report.value("field_spread").toDouble(), 'f', 3) + " (the paths: makespan "),
+             qPrintable(run.standardOutput));
     QVERIFY2(run.standardOutput.contains(QStringLiteral("brings the last robot home before ") +
                                          QString::fromStdString(mcpp::formatDuration(fieldBound))),
              qPrintable(run.standardOutput));

@@ -64,6 +64,56 @@ class ComparisonPanelTest : public QObject {
         panel.showOutcome(outcomeOf({walked}), raster->grid, mission.classes);
         QVERIFY(table->isColumnHidden(homeColumn));
     }
+
+    // The plan done soonest comes first, not the best balanced: a plan at 1.00 of its bound may still take
+    // five times as long. Where robots fly, by when the last is home; plans without that figure after.
+    void theSoonestDonePlanComesFirst() {
+        const auto raster = test::grassRaster();
+        const io::Mission mission = test::twoRobotMission();
+        ui::ComparisonPanel panel;
+        const QTableWidget* table = panel.table();
+        const io::ComparisonRow balanced = plannedRow("mdstc", 1.00, 180000.0);
+        const io::ComparisonRow quick = plannedRow("mcpp-mlct", 1.50, 37800.0);
+        const io::ComparisonRow middle = plannedRow("darp", 1.10, 90000.0);
+        panel.showOutcome(outcomeOf({balanced, quick, middle}), raster->grid, mission.classes);
+        QCOMPARE(panel.rowOfPlanner("mcpp-mlct"), 0);
+        QCOMPARE(panel.rowOfPlanner("darp"), 1);
+        QCOMPARE(panel.rowOfPlanner("mdstc"), 2);
+        QCOMPARE(table->horizontalHeader()->sortIndicatorSection(), homeColumn - 1); // Hours
+
+        io::ComparisonRow flownLate = plannedRow("mcpp-mlct", 1.01, 7200.0);
+        flownLate.metrics.fieldMakespanSeconds = 40000.0;
+        flownLate.metrics.fieldLowerBoundSeconds = 30000.0;
+        io::ComparisonRow flownEarly = plannedRow("darp", 1.30, 9000.0);
+        flownEarly.metrics.fieldMakespanSeconds = 32000.0;
+        flownEarly.metrics.fieldLowerBoundSeconds = 30000.0;
+        panel.showOutcome(outcomeOf({balanced, flownLate, flownEarly}), raster->grid, mission.classes);
+        QCOMPARE(panel.rowOfPlanner("darp"), 0);
+        QCOMPARE(panel.rowOfPlanner("mcpp-mlct"), 1);
+        QCOMPARE(panel.rowOfPlanner("mdstc"), 2); // not timed in the field
+        QCOMPARE(table->horizontalHeader()->sortIndicatorSection(), homeColumn);
+    }
+
+    // A plan's warnings weigh on its figures: its row says how many, and hovering says them.
+    void aPlansWarningsAreFlaggedOnItsRow() {
+        const auto raster = test::grassRaster();
+        const io::Mission mission = test::twoRobotMission();
+        ui::ComparisonPanel panel;
+        ui::ComparisonOutcome outcome =
+            outcomeOf({plannedRow("cppied", 1.00, 9000.0), plannedRow("mcpp-mlct", 1.01, 7200.0)});
+        auto warned = std::make_shared<Plan>();
+        warned->issues = {{IssueSeverity::Warning, "own-speeds-ignored",
+                           "CPPIED times every robot at the "
+                           "class table's speeds"},
+                          {IssueSeverity::Information, "cruise-speed", "every robot cruises at 8 m/s"}};
+        outcome.plans[0] = warned;
+        outcome.plans[1] = std::make_shared<Plan>();
+        panel.showOutcome(outcome, raster->grid, mission.classes);
+        const QTableWidgetItem* flagged = panel.table()->item(panel.rowOfPlanner("cppied"), 1);
+        QCOMPARE(flagged->text(), QStringLiteral("planned, 1 warning"));
+        QCOMPARE(flagged->toolTip(), QStringLiteral("CPPIED times every robot at the class table's speeds"));
+        QCOMPARE(panel.table()->item(panel.rowOfPlanner("mcpp-mlct"), 1)->text(), QStringLiteral("planned"));
+    }
 };
 
 QTEST_MAIN(ComparisonPanelTest)

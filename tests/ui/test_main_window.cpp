@@ -805,8 +805,9 @@ class TestMainWindow : public QObject {
         // Sorted by ratio, MSTC (unbalanced pieces) comes last.
         table->sortItems(2, Qt::AscendingOrder);
         QCOMPARE(table->item(2, 0)->text(), QStringLiteral("mstc"));
-        for (int row = 0; row < 3; ++row)
-            QCOMPARE(table->item(row, 1)->text(), QStringLiteral("planned"));
+        for (int row = 0; row < 3; ++row) // and how many warnings, where a plan has some
+            QVERIFY2(table->item(row, 1)->text().startsWith(QStringLiteral("planned")),
+                     qPrintable(table->item(row, 1)->text()));
 
         const int darp = panel->rowOfPlanner("darp");
         QVERIFY(darp >= 0);
