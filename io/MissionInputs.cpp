@@ -199,6 +199,24 @@ std::string latitudeFirstHint(const RobotSpec& spec, const LoadedRaster& raster,
            formatQuantity(typed.y, 9) + "," + formatQuantity(typed.x, 9) + ")";
 }
 
+// Why numbers far beyond degrees do not convert, read in a raster's geographic CRS: they are metres of
+// some projected CRS, to be named with crsField; where they lie on the map in the planning frame's, which.
+std::string metresOnDegreesHint(const RobotSpec& spec, const LoadedRaster& raster, StartUnits units,
+                                const std::string& crsField) {
+    const MapPoint typed = spec.start;
+    if (!spec.startCrs.empty() || units != StartUnits::RasterFileCrs || !raster.warpedFromGeographic ||
+        (std::fabs(typed.x) <= 180.0 && std::fabs(typed.y) <= 90.0))
+        return {};
+    std::string hint = "; a start is read as longitude,latitude in the raster's CRS, " +
+                       raster.sourceCrsName + ", unless " + crsField + " names another";
+    const std::string planningCrs = raster.georeference.authorityCode();
+    if (const auto there = raster.georeference.fromCrs(planningCrs, typed);
+        !planningCrs.empty() && there && onTheMap(raster.grid, there.value()))
+        return hint + ": as metres of " + raster.georeference.name() + " these numbers lie on the map (" +
+               crsField + " " + planningCrs + ")";
+    return hint + " (the CRS these metres are in, e.g. EPSG:32632 for UTM zone 32N)";
+}
+
 // A start outside the map whose numbers look like degrees, typed without a CRS saying so (on a raster
 // warped from degrees, mission files give starts in its planning metres): where they would lie as
 // longitude and latitude (or the other way round), if that is on the map.
@@ -375,6 +393,7 @@ Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const Loaded
             return Starts::failure(
                 names(spec.startCrs.empty() ? MissionField::start(robot) : MissionField::startCrs(robot)) +
                 ": " + start.error() + latitudeFirstHint(spec, raster, units) +
+                metresOnDegreesHint(spec, raster, units, names(MissionField::startCrs(robot))) +
                 (spec.startCrs.empty() ? std::string() : transformFailedHint(spec, raster)));
         if (auto problem = otherCrsFitsProblem(spec, start.value(), raster))
             return Starts::failure(names(MissionField::startCrs(robot)) + ": " + *problem);

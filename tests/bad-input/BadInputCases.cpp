@@ -174,7 +174,7 @@ std::vector<BadInputCase> makeCases() {
         {"area of interest file missing",
          withStart("good.tif", "good.csv", {"--area", "{dir}/absent.geojson"}),
          2,
-         "absent.geojson: no such file",
+         "--area: area of interest: {dir}/absent.geojson: no such file",
          Gui::None,
          {}},
         {"start on an obstacle",
@@ -196,6 +196,13 @@ std::vector<BadInputCase> makeCases() {
          "; longitude 45.002, latitude 10.002) is outside the raster, 5500 km south-east of it (x 578809.82 "
          "to "
          "579127.67, y 4983432.32 to 4983885.02); longitude and latitude the other way round lie on the map",
+         Gui::None,
+         {}},
+        {"start in metres of the planning frame on a raster in degrees",
+         onRaster("degrees.tif", "good.csv", {"--start", "578900,4983600"}),
+         2,
+         "unless --start-crs names another: as metres of WGS 84 / UTM zone 32N these numbers lie on the map "
+         "(--start-crs EPSG:32632)",
          Gui::None,
          {}},
         {"start in degrees on water, in the degrees typed",
@@ -347,8 +354,8 @@ std::vector<BadInputCase> makeCases() {
          "text-start.json"},
         {"mission speed as text", missionFile("wrong-type.json"), 2, "speed_mps", Gui::Mission,
          "wrong-type.json"},
-        {"mission raster missing", missionFile("raster-missing.json"), 2, "absent.tif", Gui::Mission,
-         "raster-missing.json"},
+        {"mission raster missing", missionFile("raster-missing.json"), 2,
+         "raster-missing.json: raster.path: ", Gui::Mission, "raster-missing.json"},
         {"mission that is a folder", missionFile("folder.json"), 2, "folder.json", Gui::Mission,
          "folder.json"},
         {"missing mission", missionFile("absent.json"), 2, "absent.json", Gui::Mission, "absent.json"},

@@ -11,7 +11,8 @@ namespace mcpp::test {
 enum class GuiOpenPath { None, Raster, Mission, ClassTable };
 
 // One row of the bad-input suite: batch arguments (after --batch) with {dir} standing for the fixture
-// folder and {out} for an output folder, the exit code expected and text the one stderr line must hold.
+// folder and {out} for an output folder, the exit code expected and text the one stderr line must hold
+// ({dir} there too).
 struct BadInputCase {
     const char* name;
     QStringList arguments;
