@@ -144,10 +144,12 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
             state->setText(warnings.size() == 1
                                ? tr("%1, 1 warning").arg(state->text())
                                : tr("%1, %2 warnings").arg(state->text()).arg(warnings.size()));
-            QStringList lines;
+            // As paragraphs, so that Qt wraps them: a warning is a long sentence.
+            QString paragraphs;
             for (const std::string& warning : warnings)
-                lines << QString::fromStdString(warning);
-            state->setToolTip(lines.join(QStringLiteral("\n\n")));
+                paragraphs += QStringLiteral("<p>") + QString::fromStdString(warning).toHtmlEscaped() +
+                              QStringLiteral("</p>");
+            state->setToolTip(paragraphs);
         }
         table_->setItem(r, Outcome, state);
         panels.push_back(render::comparisonPanelOf(row, outcome.plans[i].get()));

@@ -111,7 +111,8 @@ class ComparisonPanelTest : public QObject {
         panel.showOutcome(outcome, raster->grid, mission.classes);
         const QTableWidgetItem* flagged = panel.table()->item(panel.rowOfPlanner("cppied"), 1);
         QCOMPARE(flagged->text(), QStringLiteral("planned, 1 warning"));
-        QCOMPARE(flagged->toolTip(), QStringLiteral("CPPIED times every robot at the class table's speeds"));
+        QCOMPARE(flagged->toolTip(),
+                 QStringLiteral("<p>CPPIED times every robot at the class table's speeds</p>"));
         QCOMPARE(panel.table()->item(panel.rowOfPlanner("mcpp-mlct"), 1)->text(), QStringLiteral("planned"));
     }
 };
