@@ -28,9 +28,11 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <sys/resource.h>
 #include <system_error>
 #include <unistd.h>
+#include <utility>
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -244,23 +246,35 @@ void BatchRunner::applyOverrides() {
 void BatchRunner::loadRaster() {
     const std::string missionPath = options_.missionFromFlags() ? std::string() : options_.missionPath;
     auto loaded = io::loadMissionRasterAlone(mission_, missionPath);
-    // Where the file was named: the flag, or the mission file and its key.
-    const std::string given = missionPath.empty() ? std::string() : missionPath + ": ";
     if (!loaded) {
         const std::string rasterPath = io::resolveRasterPath(mission_, missionPath);
-        badInput((missionPath.empty() ? "--raster: " : given + "raster.path: ") +
-                 namingFile(rasterPath, loaded.error()));
+        // A file that is not there, named where it was given: the flag, or the mission file and its key.
+        std::error_code error;
+        const bool absent = !std::filesystem::exists(rasterPath, error);
+        const std::string given = missionPath.empty() ? "--raster: " : missionPath + ": raster.path: ";
+        badInput((absent ? given : std::string()) + namingFile(rasterPath, loaded.error()));
     }
     raster_ = std::move(loaded.value());
     const std::size_t rasterWarnings = raster_.warnings.size();
     if (const io::Status area = io::applyMissionArea(raster_, mission_, missionPath); !area)
-        badInput((missionPath.empty() ? "--area: " : given + "area: ") +
+        badInput(areaGivenIn(area.error()) +
                  "area of interest: " + area.error()); // the message names the polygon file
     // What the area leaves to plan ("planning on 4.04 km2 of the map") is news, not a warning.
     for (std::size_t i = rasterWarnings; i < raster_.warnings.size(); ++i)
         pendingNotes_.push_back(raster_.warnings[i]);
     raster_.warnings.resize(rasterWarnings);
     pendingWarnings_.insert(pendingWarnings_.end(), raster_.warnings.begin(), raster_.warnings.end());
+}
+
+// Where the polygon file a message names was given: its flag, or the mission file and its key.
+std::string BatchRunner::areaGivenIn(const std::string& message) const {
+    const auto names = [&](const std::string& path) {
+        return !path.empty() &&
+               message.find(std::filesystem::path(path).filename().string()) != std::string::npos;
+    };
+    if (names(mission_.area.excludePath) && !names(mission_.area.includePath))
+        return options_.noGoPath.empty() ? options_.missionPath + ": area.exclude: " : "--no-go: ";
+    return options_.areaPath.empty() ? options_.missionPath + ": area.include: " : "--area: ";
 }
 
 void BatchRunner::prepareMission() {
@@ -618,6 +632,7 @@ void BatchRunner::executeComparison() {
     const std::size_t robots = mission_.robots.size();
     std::vector<io::ComparisonRow> rows;
     std::vector<std::optional<Plan>> plans;
+    std::set<std::string> saidOnce; // the mission's own warnings, which every plan carries
     returnFreedMemory();
     const double residentWithRaster = residentMegabytes();
     for (std::size_t i = 0; i < options_.comparePlanners.size(); ++i) {
@@ -651,8 +666,7 @@ void BatchRunner::executeComparison() {
             started = std::chrono::steady_clock::now();
             Plan plan = runPlanner(problem);
             row.planningMilliseconds = millisecondsSince(started);
-            for (const auto& warning : plan.warnings())
-                warn(warning + io::robotsNamedIn(warning, robotNamesForMessages(), false));
+            sayComparedPlanWarnings(plan, problem, saidOnce);
             processMilliseconds_ = {{"read_raster", readMilliseconds}, {"plan", row.planningMilliseconds}};
             writeOutputs(plan, (fs::path(options_.outputDirectory) / name).string());
             row.metrics = plan.metrics;
@@ -677,6 +691,24 @@ void BatchRunner::executeComparison() {
     if (count(io::ComparisonRow::Outcome::Failed) > 0)
         exitCode_ = count(io::ComparisonRow::Outcome::Planned) > 0 ? BatchFailure::somePlannersFailed
                                                                    : BatchFailure::badInput;
+}
+
+// A compared plan's warnings under its planner's name; those of the mission itself (the problem's notes),
+// which every plan carries, once and under none.
+void BatchRunner::sayComparedPlanWarnings(const Plan& plan, const PlanningProblem& problem,
+                                          std::set<std::string>& saidOnce) {
+    for (const PlanIssue& issue : plan.issues) {
+        if (issue.severity != IssueSeverity::Warning)
+            continue;
+        const bool ofTheMission =
+            std::any_of(problem.notes.begin(), problem.notes.end(),
+                        [&](const PlanIssue& note) { return note.message == issue.message; });
+        if (ofTheMission && !saidOnce.insert(issue.message).second)
+            continue;
+        const std::string prefix = std::exchange(plannerPrefix_, ofTheMission ? "" : plannerPrefix_);
+        warn(issue.message + io::robotsNamedIn(issue.message, robotNamesForMessages(), false));
+        plannerPrefix_ = prefix;
+    }
 }
 
 void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,

@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,9 @@ class BatchRunner {
     void flushPending();
     void note(const std::string& message);
     void warn(const std::string& message);
+    void sayComparedPlanWarnings(const Plan& plan, const PlanningProblem& problem,
+                                 std::set<std::string>& saidOnce);
+    [[nodiscard]] std::string areaGivenIn(const std::string& message) const;
 
     // Where a value came from, so errors name the flag or the mission file and field.
     [[nodiscard]] std::string fieldName(const io::MissionField& field) const;

@@ -204,8 +204,9 @@ std::string latitudeFirstHint(const RobotSpec& spec, const LoadedRaster& raster,
 std::string metresOnDegreesHint(const RobotSpec& spec, const LoadedRaster& raster, StartUnits units,
                                 const std::string& crsField) {
     const MapPoint typed = spec.start;
+    // Beyond 360 or 180: not degrees either way round (latitudeFirstHint speaks of those).
     if (!spec.startCrs.empty() || units != StartUnits::RasterFileCrs || !raster.warpedFromGeographic ||
-        (std::fabs(typed.x) <= 180.0 && std::fabs(typed.y) <= 90.0))
+        (std::fabs(typed.x) <= 360.0 && std::fabs(typed.y) <= 180.0))
         return {};
     std::string hint = "; a start is read as longitude,latitude in the raster's CRS, " +
                        raster.sourceCrsName + ", unless " + crsField + " names another";

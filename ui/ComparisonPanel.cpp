@@ -137,8 +137,8 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         table_->setItem(r, Name, name);
         auto* state = new QTableWidgetItem(QString::fromStdString(io::outcomeName(row.outcome)));
         state->setToolTip(QString::fromStdString(row.message));
-        // A plan's warnings (robots timed at the class table's speeds, flights beyond a battery) weigh on
-        // its figures: flagged on its row, said in full when hovered.
+        // A plan's warnings (robots timed at the class table's speeds, an uneven plan, land left
+        // uncovered) weigh on its figures: flagged on its row, said in full when hovered.
         if (const Plan* plan = outcome.plans[i].get(); plan && !plan->warnings().empty()) {
             const std::vector<std::string> warnings = plan->warnings();
             state->setText(warnings.size() == 1

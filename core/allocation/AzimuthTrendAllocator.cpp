@@ -47,6 +47,15 @@ double fairTime(const std::vector<double>& costs, const std::vector<double>& pac
     return fairTime(costs, paces, robots);
 }
 
+// The largest of the robots' paces (1 for a robot without one): the slowest robot's seconds for a second
+// of cell cost.
+double slowestPace(const std::vector<double>& paces, std::size_t robots) {
+    double slowest = 0.0;
+    for (std::size_t robot = 0; robot < robots; ++robot)
+        slowest = std::max(slowest, paceOf(paces, robot));
+    return slowest;
+}
+
 // Each robot's cost in its own time (costs at pace 1 times its pace).
 std::vector<double> pacedCosts(std::vector<double> costs, const std::vector<double>& paces) {
     for (std::size_t robot = 0; robot < costs.size(); ++robot)
@@ -1049,8 +1058,7 @@ std::optional<RegionAllocation> grownOnBlocks(const CellGraph& graph, const std:
             return std::nullopt;
         for (const CellFigures& block : blocks.figures)
             largestBlockCost = std::max(largestBlockCost, block.cost);
-        if (!paces.empty())
-            largestBlockCost *= std::max(1.0, *std::max_element(paces.begin(), paces.end()));
+        largestBlockCost *= slowestPace(paces, startCells.size());
         Allocation coarse(blocks.adjacency, blocks.figures, blockStarts, progress, paces);
         coarse.grow();
         (void)coarse.rebalance(moveCap(rebalanceIterations, blocks.figures.size()));

@@ -16,10 +16,10 @@ std::string comparedWithStatic(double seconds, double staticSeconds) {
     if (!(times > 1.0))
         return formatPercent(1.0 - times) + " saved";
     if (times < 2.0)
-        return "this plan takes " + formatPercent(times - 1.0) + " longer";
+        return "re-allocating takes " + formatPercent(times - 1.0) + " longer";
     std::ostringstream text;
     text << std::fixed << std::setprecision(1) << times;
-    return "this plan takes " + text.str() + " x as long";
+    return "re-allocating takes " + text.str() + " x as long";
 }
 
 } // namespace

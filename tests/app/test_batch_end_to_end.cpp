@@ -93,6 +93,7 @@ class TestBatchEndToEnd : public QObject {
     void outputsAreTheSameWhateverTheThreadCount();
     void comparePlannersOnOneMission();
     void comparisonGivesTimesInTheField();
+    void aComparisonSaysTheMissionsWarningsOnce();
     void weeksOfWorkSuggestAnArea();
     void everyPlannerRunsFromTheCommandLine_data();
     void everyPlannerRunsFromTheCommandLine();
@@ -221,6 +222,18 @@ void TestBatchEndToEnd::comparisonGivesTimesInTheField() {
                      qPrintable(name + ": " + warning.toString()));
     }
     QVERIFY(warningsSaid > 0); // the event, left out by both
+}
+
+// A warning of the mission itself (aircraft without a cruise speed), which every compared plan carries, is
+// said once and under no planner's name.
+void TestBatchEndToEnd::aComparisonSaysTheMissionsWarningsOnce() {
+    const auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "mcpp-mlct,darp",
+                              "--vehicle", "multirotor", "--out", scratch_.filePath("compare-aircraft")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    const QString warning = QStringLiteral("mcpp: warning: aircraft fly at the class table's speeds");
+    QCOMPARE(run.standardError.count(warning), 1);
+    QVERIFY(!run.standardError.contains(QStringLiteral("darp: aircraft fly")));
+    QVERIFY(!run.standardError.contains(QStringLiteral("mcpp-mlct: aircraft fly")));
 }
 
 // --compare: each planner's own outputs in its folder, one row each in comparison.csv and .json with the

@@ -259,11 +259,11 @@ class MdstcTest : public QObject {
         summary.staticPlanner = "mcpp-mlct";
         summary.staticMakespanSeconds = 3000.0;
         QCOMPARE(QString::fromStdString(timelineSentence(summary)),
-                 QString("without events: done in 1 h; the static mcpp-mlct plan: 50 min (this plan takes "
-                         "20% longer)"));
+                 QString("without events: done in 1 h; the static mcpp-mlct plan: 50 min (re-allocating "
+                         "takes 20% longer)"));
         summary.staticMakespanSeconds = 1000.0;
-        QVERIFY(
-            QString::fromStdString(timelineSentence(summary)).endsWith("(this plan takes 3.6 x as long)"));
+        QVERIFY(QString::fromStdString(timelineSentence(summary))
+                    .endsWith("(re-allocating takes 3.6 x as long)"));
         summary.events = {{60.0, 0, 0.5}};
         summary.staticMakespanSeconds = 7200.0;
         QVERIFY(QString::fromStdString(timelineSentence(summary)).endsWith("2 h (50% saved)"));
