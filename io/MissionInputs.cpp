@@ -210,11 +210,11 @@ std::string metresOnDegreesHint(const RobotSpec& spec, const LoadedRaster& raste
         return {};
     std::string hint = "; a start is read as longitude,latitude in the raster's CRS, " +
                        raster.sourceCrsName + ", unless " + crsField + " names another";
-    const std::string planningCrs = raster.georeference.authorityCode();
-    if (const auto there = raster.georeference.fromCrs(planningCrs, typed);
-        !planningCrs.empty() && there && onTheMap(raster.grid, there.value()))
-        return hint + ": as metres of " + raster.georeference.name() + " these numbers lie on the map (" +
-               crsField + " " + planningCrs + ")";
+    if (const std::string planningCrs = raster.georeference.authorityCode(); !planningCrs.empty())
+        if (const auto there = raster.georeference.fromCrs(planningCrs, typed);
+            there && onTheMap(raster.grid, there.value()))
+            return hint + ": as metres of " + raster.georeference.name() + " these numbers lie on the map (" +
+                   crsField + " " + planningCrs + ")";
     return hint + " (the CRS these metres are in, e.g. EPSG:32632 for UTM zone 32N)";
 }
 

@@ -34,16 +34,16 @@ struct AzimuthTrendLimits {
 // the regions first grow and even out on blocks of blockSide x blockSide bottom cells (CellBlocks); each cell
 // then takes its block's robot and cells cut off from their region's start join a neighbouring region
 // (reconnectRegions). Growing 69 million cells one at a time took about a minute, most of it waiting on
-// memory; blocks of 16 take a tenth of that. Where a region ends further than a block's cost from the mean
-// (robots of paces of their own in their own times), the map is grown cell by cell after all, as evening out
-// cell by cell would leave a notch for every cell it moves. With a tree piece share (none by default), a map
-// of at most mostCellsOnTreePiecesPerRobot cells a robot grows on pieces of a turn-minimising tree over the
-// whole map instead (treePieces), each costing that share of a robot's fair share, is evened out on pieces an
-// eighth of that, then cell by cell: the regions' borders follow the tree's cuts, and their paths turn less
-// (1.7 % fewer turns on the uniform benchmark grids, 2.0 % on the multi-cover maps, 8 % on the Zion sample,
-// at a share of 3 %), but the regions interlock along the tree's runs (47-65 % longer borders on those maps).
-// Where regions are larger their borders weigh less: 0.65 % fewer turns on 1.67 M cells with 8 robots, for 2
-// s more planning.
+// memory; blocks of 16 take a tenth of that. Where a region ends further than a block's cost from the mean,
+// the map is grown cell by cell after all, as evening out cell by cell would leave a notch for every cell it
+// moves. With a tree piece share (none by default), a map of at most mostCellsOnTreePiecesPerRobot cells a
+// robot grows on pieces of a turn-minimising tree over the whole map instead (treePieces), each costing that
+// share of a robot's fair share, is evened out on pieces an eighth of that, then cell by cell: the regions'
+// borders follow the tree's cuts, and their paths turn less (1.7 % fewer turns on the uniform benchmark
+// grids, 2.0 % on the multi-cover maps, 8 % on the Zion sample, at a share of 3 %), but the regions
+// interlock along the tree's runs (47-65 % longer borders on those maps). Where regions are larger their
+// borders weigh less: 0.65 % fewer turns on 1.67 M cells with 8 robots, for 2 s more planning. Robots of
+// paces of their own (setPaces) grow on blocks too, each block check then in their own times.
 class AzimuthTrendAllocator final : public RegionAllocator {
   public:
     static constexpr int blockSide = 4;
