@@ -158,6 +158,7 @@ void BatchRunner::execute() {
         return runPlanner(problem);
     }();
     processMilliseconds_.emplace_back("plan", millisecondsSince(started));
+    sayMissionNotes(plan, problem);
     // The writers need the plan and the raster as read, not the problem's copy of its classes; on a large
     // map the planner's freed memory and that copy are a few hundred megabytes the writers can reuse.
     problem = PlanningProblem{};
@@ -328,10 +329,7 @@ PlanningProblem BatchRunner::prepareProblem() {
         raster_, classes_, mission_.missingClassesAsObstacles, starts_, mission_.planner, fieldNamer()));
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
     io::applyRobotSettings(mission_, prepared.problem);
-    for (const PlanIssue& issue : prepared.problem.notes) // warnings come with the plan's
-        if (issue.severity == IssueSeverity::Information)
-            note(issue.message);
-    prepared.problem.chargers = chargers_;
+    prepared.problem.chargers = chargers_; // its notes are said with the plan (sayMissionNotes)
     return std::move(prepared.problem);
 }
 
@@ -666,6 +664,7 @@ void BatchRunner::executeComparison() {
             started = std::chrono::steady_clock::now();
             Plan plan = runPlanner(problem);
             row.planningMilliseconds = millisecondsSince(started);
+            sayMissionNotes(plan, problem);
             sayComparedPlanWarnings(plan, problem, saidOnce);
             processMilliseconds_ = {{"read_raster", readMilliseconds}, {"plan", row.planningMilliseconds}};
             writeOutputs(plan, (fs::path(options_.outputDirectory) / name).string());
@@ -691,6 +690,16 @@ void BatchRunner::executeComparison() {
     if (count(io::ComparisonRow::Outcome::Failed) > 0)
         exitCode_ = count(io::ComparisonRow::Outcome::Planned) > 0 ? BatchFailure::somePlannersFailed
                                                                    : BatchFailure::badInput;
+}
+
+// The mission's notes (the problem's) as the plan keeps them: a planner drops one that does not hold for
+// its plan, as CPPIED drops "each is timed at its own" speed.
+void BatchRunner::sayMissionNotes(const Plan& plan, const PlanningProblem& problem) {
+    for (const PlanIssue& issue : plan.issues)
+        if (issue.severity == IssueSeverity::Information &&
+            std::any_of(problem.notes.begin(), problem.notes.end(),
+                        [&](const PlanIssue& note) { return note.message == issue.message; }))
+            note(issue.message);
 }
 
 // A compared plan's warnings under its planner's name; those of the mission itself (the problem's notes),

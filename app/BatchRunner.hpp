@@ -70,6 +70,7 @@ class BatchRunner {
     void flushPending();
     void note(const std::string& message);
     void warn(const std::string& message);
+    void sayMissionNotes(const Plan& plan, const PlanningProblem& problem);
     void sayComparedPlanWarnings(const Plan& plan, const PlanningProblem& problem,
                                  std::set<std::string>& saidOnce);
     [[nodiscard]] std::string areaGivenIn(const std::string& message) const;

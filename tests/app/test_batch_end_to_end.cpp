@@ -94,6 +94,7 @@ class TestBatchEndToEnd : public QObject {
     void comparePlannersOnOneMission();
     void comparisonGivesTimesInTheField();
     void aComparisonSaysTheMissionsWarningsOnce();
+    void aNoteThatDoesNotHoldForAPlanIsNotSaid();
     void weeksOfWorkSuggestAnArea();
     void everyPlannerRunsFromTheCommandLine_data();
     void everyPlannerRunsFromTheCommandLine();
@@ -234,6 +235,34 @@ void TestBatchEndToEnd::aComparisonSaysTheMissionsWarningsOnce() {
     QCOMPARE(run.standardError.count(warning), 1);
     QVERIFY(!run.standardError.contains(QStringLiteral("darp: aircraft fly")));
     QVERIFY(!run.standardError.contains(QStringLiteral("mcpp-mlct: aircraft fly")));
+}
+
+// Robots of their own cruise speeds: MCPP-MLCT times each at its own and says so; CPPIED times all at the
+// class table's, warns, and leaves the mission's note out of what it says and of its report.
+void TestBatchEndToEnd::aNoteThatDoesNotHoldForAPlanIsNotSaid() {
+    auto mission = sampleMissionAnywhere("synthetic", "synthetic.asc");
+    auto robots = mission.value("robots").toArray();
+    auto first = robots.at(0).toObject();
+    first.insert("cruise_speed_mps", 4.0);
+    robots.replace(0, first);
+    mission.insert("robots", robots);
+    const QString path = scratch_.filePath("own-speeds.json");
+    QVERIFY(writeText(path, QJsonDocument(mission).toJson()));
+    const QString out = scratch_.filePath("own-speeds");
+    const auto run = runMcpp({"--batch", path, "--compare", "mcpp-mlct,cppied", "--out", out});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    const QString note = QStringLiteral("and each is timed at its own");
+    QVERIFY2(
+        run.standardOutput.contains(QStringLiteral("mcpp: mcpp-mlct: the robots' cruise speeds differ")) &&
+            run.standardOutput.count(note) == 1,
+        qPrintable(run.standardOutput));
+    QVERIFY2(
+        run.standardError.contains(QStringLiteral("cppied: CPPIED times every robot at the class table's")),
+        qPrintable(run.standardError));
+    bool noted = false;
+    for (const QJsonValue& issue : readJsonObject(out + "/cppied/report.json").value("issues").toArray())
+        noted = noted || issue.toObject().value("code").toString() == QStringLiteral("cruise-speeds-differ");
+    QVERIFY(!noted);
 }
 
 // --compare: each planner's own outputs in its folder, one row each in comparison.csv and .json with the
