@@ -692,13 +692,19 @@ void BatchRunner::executeComparison() {
                                                                    : BatchFailure::badInput;
 }
 
+namespace {
+// Whether a plan's issue is one of the mission's own (a note of the problem), which every plan carries.
+bool isOfTheMission(const PlanIssue& issue, const PlanningProblem& problem) {
+    return std::any_of(problem.notes.begin(), problem.notes.end(),
+                       [&](const PlanIssue& note) { return note.message == issue.message; });
+}
+} // namespace
+
 // The mission's notes (the problem's) as the plan keeps them: a planner drops one that does not hold for
 // its plan, as CPPIED drops "each is timed at its own" speed.
 void BatchRunner::sayMissionNotes(const Plan& plan, const PlanningProblem& problem) {
     for (const PlanIssue& issue : plan.issues)
-        if (issue.severity == IssueSeverity::Information &&
-            std::any_of(problem.notes.begin(), problem.notes.end(),
-                        [&](const PlanIssue& note) { return note.message == issue.message; }))
+        if (issue.severity == IssueSeverity::Information && isOfTheMission(issue, problem))
             note(issue.message);
 }
 
@@ -709,9 +715,7 @@ void BatchRunner::sayComparedPlanWarnings(const Plan& plan, const PlanningProble
     for (const PlanIssue& issue : plan.issues) {
         if (issue.severity != IssueSeverity::Warning)
             continue;
-        const bool ofTheMission =
-            std::any_of(problem.notes.begin(), problem.notes.end(),
-                        [&](const PlanIssue& note) { return note.message == issue.message; });
+        const bool ofTheMission = isOfTheMission(issue, problem);
         if (ofTheMission && !saidOnce.insert(issue.message).second)
             continue;
         const std::string prefix = std::exchange(plannerPrefix_, ofTheMission ? "" : plannerPrefix_);
