@@ -37,6 +37,12 @@ std::vector<std::string> stageNames(const std::vector<ComparisonRow>& rows) {
     return names;
 }
 
+// A stage's column: "straight borders" gives straight_borders_ms, a name scripts can use unquoted.
+std::string stageColumn(std::string stage) {
+    std::replace(stage.begin(), stage.end(), ' ', '_');
+    return stage + "_ms";
+}
+
 // Where flights split the missions: when the last robot is home and the bound there (as report.json).
 bool inTheField(const ComparisonRow& row) {
     return row.outcome == ComparisonRow::Outcome::Planned && row.metrics.fieldMakespanSeconds > 0.0 &&
@@ -67,7 +73,7 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
                        "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
                        "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s";
     for (const std::string& stage : stages)
-        text += "," + stage + "_ms";
+        text += "," + stageColumn(stage);
     text += ",message\n";
     for (const ComparisonRow& row : rows) {
         const PlanMetrics& metrics = row.metrics;

@@ -11,20 +11,51 @@
 #include <QScrollArea>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace mcpp::ui {
 
 namespace {
 
 // The figures that decide between planners; comparison.csv and the sheet below carry the rest.
-enum Column { Name, Outcome, Ratio, Makespan, Home, Turns, Planning, Columns };
+enum Column { Name, Outcome, Covered, Ratio, Makespan, Home, Turns, Planning, Columns };
 
-QTableWidgetItem* numberItem(double value, int decimals) {
-    auto* item = new QTableWidgetItem;
+// A plan covering this much less of the land than the best one is not done sooner, only smaller.
+constexpr double coverageShortfall = 0.005;
+constexpr int coversLessRole = Qt::UserRole + 1;
+
+// A time that sorts plans covering less than the best after the others, in either order's direction
+// the user picks: the soonest done among those that do the whole job comes first.
+class TimeItem : public QTableWidgetItem {
+  public:
+    bool operator<(const QTableWidgetItem& other) const override {
+        const bool coversLess = data(coversLessRole).toBool();
+        if (coversLess != other.data(coversLessRole).toBool())
+            return !coversLess;
+        return QTableWidgetItem::operator<(other);
+    }
+};
+
+template <typename Item = QTableWidgetItem> QTableWidgetItem* numberItem(double value, int decimals) {
+    auto* item = new Item;
     // A number, not text, so that sorting is numeric; rounded for display.
     item->setData(Qt::DisplayRole, QString::number(value, 'f', decimals).toDouble());
     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     return item;
+}
+
+QTableWidgetItem* timeItem(double seconds, bool coversLess) {
+    QTableWidgetItem* item = numberItem<TimeItem>(seconds / 3600.0, 2);
+    item->setData(coversLessRole, coversLess);
+    return item;
+}
+
+double mostCovered(const std::vector<io::ComparisonRow>& rows) {
+    double most = 0.0;
+    for (const io::ComparisonRow& row : rows)
+        if (row.outcome == io::ComparisonRow::Outcome::Planned)
+            most = std::max(most, row.metrics.coveredFraction);
+    return most;
 }
 
 } // namespace
@@ -54,6 +85,9 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
     const std::vector<std::pair<QString, QString>> headings{
         {tr("Planner"), tr("The planner's name")},
         {tr("State"), tr("Planned, failed or skipped (hover over the cell for why)")},
+        {tr("Covered %"),
+         tr("The share of the task area's land the plan covers; a plan covering less than the best by "
+            "over half a percent sorts after the others by time")},
         {tr("Ratio"), tr("Makespan divided by the lower bound: 1.00 is perfectly balanced")},
         {tr("Hours"), tr("Makespan: the time of the slowest robot, in hours")},
         {tr("Home h"),
@@ -129,6 +163,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     table_->setRowCount(static_cast<int>(outcome.rows.size()));
     std::vector<render::ComparisonPanel> panels;
     bool inTheField = false; // some plan's robots are home later than their paths end
+    const double most = mostCovered(outcome.rows);
     for (std::size_t i = 0; i < outcome.rows.size(); ++i) {
         const io::ComparisonRow& row = outcome.rows[i];
         const auto r = static_cast<int>(i);
@@ -156,10 +191,12 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         if (row.outcome != io::ComparisonRow::Outcome::Planned)
             continue;
         const PlanMetrics& metrics = row.metrics;
+        const bool coversLess = metrics.coveredFraction < most - coverageShortfall;
+        table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
         table_->setItem(r, Ratio, numberItem(metrics.ratio, 3));
-        table_->setItem(r, Makespan, numberItem(metrics.makespanSeconds / 3600.0, 2));
+        table_->setItem(r, Makespan, timeItem(metrics.makespanSeconds, coversLess));
         if (metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0) {
-            table_->setItem(r, Home, numberItem(metrics.fieldMakespanSeconds / 3600.0, 2));
+            table_->setItem(r, Home, timeItem(metrics.fieldMakespanSeconds, coversLess));
             inTheField = true;
         }
         table_->setItem(r, Turns, numberItem(metrics.totalTurns(), 0));
@@ -167,7 +204,8 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     }
     table_->setColumnHidden(Home, !inTheField);
     table_->setSortingEnabled(true);
-    // The soonest done first: what the user waits for, where a balanced plan may still take longest.
+    // The soonest done first (of the plans that cover the most): what the user waits for, where a
+    // balanced plan may still take longest.
     table_->sortByColumn(inTheField ? Home : Makespan, Qt::AscendingOrder);
     sheetImage_ = render::renderComparisonSheet(grid, classes, panels);
     fitSheet();

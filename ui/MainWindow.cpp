@@ -1704,6 +1704,7 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     comparisonDock_->raise();
     const auto planned = std::count_if(outcome.plans.begin(), outcome.plans.end(),
                                        [](const auto& plan) { return plan != nullptr; });
+    canvas_->setComparedPlansWaiting(planned > 0);
     showStatus(outcome.cancelled
                    ? tr("Comparison cancelled after %1 plans.").arg(planned)
                    : tr("Compared %1 planners: select a row to show its plan.").arg(outcome.rows.size()));

@@ -39,6 +39,7 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
     redrawTimer_.setInterval(kRedrawAfterMilliseconds);
     connect(&redrawTimer_, &QTimer::timeout, this, qOverload<>(&QWidget::update));
     connect(document_, &MissionDocument::mapChanged, this, [this] {
+        comparedPlansWaiting_ = false; // they were planned on the map before
         refreshMap();
         fitPending_ = true;
         zoomToFit();
@@ -262,15 +263,28 @@ void MapCanvas::paintEvent(QPaintEvent* /*event*/) {
     paintDrawing(painter);
     paintScaleBar(painter);
     paintNorthArrow(painter);
+    if (const QString banner = bannerText(); !banner.isEmpty())
+        paintBanner(painter, banner, document_->planStale() ? QColor(255, 236, 179) : QColor(227, 242, 253));
+}
+
+QString MapCanvas::bannerText() const {
+    if (!document_->hasMap())
+        return {};
     if (document_->planStale())
-        paintBanner(painter,
-                    tr("Plan is out of date: inputs changed since it was computed. Press Plan (F5)."),
-                    QColor(255, 236, 179));
-    else if (document_->plan() == nullptr && !document_->robots().empty())
-        paintBanner(painter, tr("Not planned yet. Press Plan (F5)."), QColor(227, 242, 253));
-    else if (document_->robots().empty())
-        paintBanner(painter, tr("Place robot starts with the Place start tool (S), then press Plan (F5)."),
-                    QColor(227, 242, 253));
+        return tr("Plan is out of date: inputs changed since it was computed. Press Plan (F5).");
+    if (document_->robots().empty())
+        return tr("Place robot starts with the Place start tool (S), then press Plan (F5).");
+    if (document_->plan() != nullptr)
+        return {};
+    if (comparedPlansWaiting_)
+        return tr("Planners compared: select a row under Compare planners to show its plan, or press Plan "
+                  "(F5).");
+    return tr("Not planned yet. Press Plan (F5).");
+}
+
+void MapCanvas::setComparedPlansWaiting(bool waiting) {
+    comparedPlansWaiting_ = waiting;
+    update();
 }
 
 void MapCanvas::paintBanner(QPainter& painter, const QString& text, const QColor& colour) const {

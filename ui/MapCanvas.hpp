@@ -37,6 +37,10 @@ class MapCanvas : public QWidget {
     [[nodiscard]] const render::MapLayers& layers() const { return renderer_.layers(); }
     void setSelectedStart(int robot);
     [[nodiscard]] int selectedStart() const { return selectedStart_; }
+    // A comparison has plans to show on this map, none yet shown: the banner says how to show one.
+    void setComparedPlansWaiting(bool waiting);
+    // What the banner at the top of the map says: what to do next, or empty.
+    [[nodiscard]] QString bannerText() const;
 
     // Map <-> widget coordinates, for the status bar and for tests that click at map positions.
     [[nodiscard]] QPointF devicePointOf(MapPoint point) const;
@@ -100,6 +104,7 @@ class MapCanvas : public QWidget {
     bool fitPending_ = true;
     bool fitted_ = false; // the view is as zoomToFit left it: no pan or zoom since
     int selectedStart_ = -1;
+    bool comparedPlansWaiting_ = false;
 
     // One press-move-release gesture.
     enum class Gesture { None, Pan, DragStart, Click, DragRectangle };

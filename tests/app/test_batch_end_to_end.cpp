@@ -16,6 +16,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -289,6 +290,11 @@ void TestBatchEndToEnd::comparePlannersOnOneMission() {
     const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 5);
     const QStringList header = lines.front().split(',');
+    // Every column a plain name a script can use unquoted, stages included ("straight_borders_ms").
+    static const QRegularExpression plainName(QStringLiteral("^[a-z0-9_]+$"));
+    for (const QString& column : header)
+        QVERIFY2(plainName.match(column).hasMatch(), qPrintable(column));
+    QVERIFY2(header.contains(QStringLiteral("paths_ms")), qPrintable(lines.front()));
     for (int i = 0; i < planners.size(); ++i) {
         const auto row = planners.at(i).toObject();
         const QString name = row.value("planner").toString();

@@ -9,7 +9,8 @@ using namespace mcpp;
 
 namespace {
 
-constexpr int homeColumn = 4; // Planner, State, Ratio, Hours, Home h, Turns, Plan s
+constexpr int coveredColumn = 2; // Planner, State, Covered %, Ratio, Hours, Home h, Turns, Plan s
+constexpr int homeColumn = 5;
 
 io::ComparisonRow plannedRow(const std::string& planner, double ratio, double makespanSeconds) {
     io::ComparisonRow row;
@@ -92,6 +93,33 @@ class ComparisonPanelTest : public QObject {
         QCOMPARE(panel.rowOfPlanner("mcpp-mlct"), 1);
         QCOMPARE(panel.rowOfPlanner("mdstc"), 2); // not timed in the field
         QCOMPARE(table->horizontalHeader()->sortIndicatorSection(), homeColumn);
+    }
+
+    // A plan that leaves land uncovered is not done sooner, only smaller: the Covered column says so, and
+    // by time it comes after those covering the most, whichever way the user sorts. Half a percent less
+    // is within the margin; a point less is not.
+    void aPlanCoveringLessSortsAfterThoseCoveringTheMost() {
+        const auto raster = test::grassRaster();
+        const io::Mission mission = test::twoRobotMission();
+        ui::ComparisonPanel panel;
+        QTableWidget* table = panel.table();
+        QCOMPARE(table->horizontalHeaderItem(coveredColumn)->text(), QStringLiteral("Covered %"));
+        io::ComparisonRow partial = plannedRow("spiral-stc", 1.00, 3600.0);
+        partial.metrics.coveredFraction = 0.99;
+        io::ComparisonRow whole = plannedRow("darp", 1.05, 9000.0);
+        whole.metrics.coveredFraction = 1.0;
+        io::ComparisonRow nearlyWhole = plannedRow("mcpp-mlct", 1.01, 7200.0);
+        nearlyWhole.metrics.coveredFraction = 0.996;
+        panel.showOutcome(outcomeOf({partial, whole, nearlyWhole}), raster->grid, mission.classes);
+        QCOMPARE(
+            table->item(panel.rowOfPlanner("spiral-stc"), coveredColumn)->data(Qt::DisplayRole).toDouble(),
+            99.0);
+        QCOMPARE(panel.rowOfPlanner("mcpp-mlct"), 0);
+        QCOMPARE(panel.rowOfPlanner("darp"), 1);
+        QCOMPARE(panel.rowOfPlanner("spiral-stc"), 2);
+        table->sortByColumn(homeColumn - 1, Qt::DescendingOrder);
+        QCOMPARE(panel.rowOfPlanner("spiral-stc"), 0); // reversed as a whole: covering less, now first
+        QCOMPARE(panel.rowOfPlanner("darp"), 1);
     }
 
     // A plan's warnings weigh on its figures: its row says how many, and hovering says them.

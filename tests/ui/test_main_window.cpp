@@ -802,8 +802,13 @@ class TestMainWindow : public QObject {
         QTableWidget* table = panel->table();
         QCOMPARE(table->rowCount(), 3);
         QVERIFY(!panel->sheet()->pixmap().isNull());
+        // No plan shown yet: the map says how to show one, not only to plan.
+        QVERIFY(window.document()->plan() == nullptr);
+        QVERIFY2(
+            window.canvas()->bannerText().contains(QStringLiteral("select a row under Compare planners")),
+            qPrintable(window.canvas()->bannerText()));
         // Sorted by ratio, MSTC (unbalanced pieces) comes last.
-        table->sortItems(2, Qt::AscendingOrder);
+        table->sortItems(3, Qt::AscendingOrder);
         QCOMPARE(table->item(2, 0)->text(), QStringLiteral("mstc"));
         for (int row = 0; row < 3; ++row) // and how many warnings, where a plan has some
             QVERIFY2(table->item(row, 1)->text().startsWith(QStringLiteral("planned")),
@@ -816,6 +821,7 @@ class TestMainWindow : public QObject {
         QCOMPARE(window.document()->plan()->planner, std::string("darp"));
         QCOMPARE(window.document()->plannerChoice().planner, std::string("darp"));
         QVERIFY(!window.document()->planStale());
+        QVERIFY2(window.canvas()->bannerText().isEmpty(), qPrintable(window.canvas()->bannerText()));
 
         // Exporting exports the plan shown.
         QTemporaryDir directory;
