@@ -86,7 +86,8 @@ LabelGrid regionLabels(const Plan& plan) {
     const auto& owner = plan.regions.robotOfCell;
     for (std::size_t id = 0; id < owner.size() && id < labels.size(); ++id)
         labels[id] = owner[id] >= 0 ? owner[id] : unreachableLabel;
-    return cellLabels(plan.cells, labels, false);
+    // Cropped to the plan's cells: a small area on a large raster gives a small grid (and regions.tif).
+    return cellLabels(plan.cells, labels, true);
 }
 
 LabelGrid takenOverLabels(const Plan& plan) {

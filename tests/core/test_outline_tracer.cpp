@@ -318,6 +318,34 @@ class OutlineTracerTest : public QObject {
         QCOMPARE(labels.x(4), 120.0);
         QCOMPARE(labels.y(2), 40.0);
     }
+
+    // A small area on a large raster: the grid holds the box around the plan's cells, not the whole frame,
+    // and stays on the frame's sub-cell lattice.
+    void planRegionsCroppedToTheirCells() {
+        Plan plan;
+        GridFrame frame;
+        frame.originX = 100.0;
+        frame.originY = 500.0;
+        frame.bottomCellSize = 10.0;
+        frame.columns = 40;
+        frame.rows = 30;
+        Cell first;
+        first.column = 3;
+        first.row = 7;
+        first.size = 10.0;
+        first.freeSubCells = allSubCells;
+        Cell second = first;
+        second.column = 4;
+        plan.cells = CellGraph(frame, {first, second}, NeighbourTopology({0, 1, 2}, {1, 0}));
+        plan.regions.robotOfCell = {1, 0};
+        const LabelGrid labels = regionLabels(plan);
+        QCOMPARE(labels.columns, 4);
+        QCOMPARE(labels.rows, 2);
+        QCOMPARE(labels.originX, 130.0);
+        QCOMPARE(labels.originY, 430.0);
+        const std::vector<LabelGrid::Label> expected{1, 1, 0, 0, 1, 1, 0, 0};
+        QCOMPARE(labels.labels, expected);
+    }
 };
 
 QTEST_GUILESS_MAIN(OutlineTracerTest)
