@@ -325,8 +325,9 @@ void BatchRunner::checkVehicles() const {
 }
 
 PlanningProblem BatchRunner::prepareProblem() {
-    io::PreparedProblem prepared = valueOrBadInput(io::planningProblem(
-        raster_, classes_, mission_.missingClassesAsObstacles, starts_, mission_.planner, fieldNamer()));
+    io::PreparedProblem prepared =
+        valueOrBadInput(io::planningProblem(raster_, classes_, mission_.missingClassesAsObstacles, starts_,
+                                            mission_.planner, fieldNamer(), io::flyingRobots(mission_)));
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
     io::applyRobotSettings(mission_, prepared.problem);
     prepared.problem.chargers = chargers_; // its notes are said with the plan (sayMissionNotes)
@@ -621,8 +622,8 @@ void BatchRunner::executeComparison() {
     // Faults of the mission itself (classes, starts) are said once, not once for each planner.
     prepareMission();
     if (!someComparedPlannerSnapsStarts())
-        if (const io::Status starts =
-                io::checkStarts(raster_, classes_, mission_.missingClassesAsObstacles, starts_, fieldNamer());
+        if (const io::Status starts = io::checkStarts(raster_, classes_, mission_.missingClassesAsObstacles,
+                                                      starts_, fieldNamer(), io::flyingRobots(mission_));
             !starts)
             badInput(starts.error());
     checkOutputFolder();
@@ -701,11 +702,13 @@ bool isOfTheMission(const PlanIssue& issue, const PlanningProblem& problem) {
 } // namespace
 
 // The mission's notes (the problem's) as the plan keeps them: a planner drops one that does not hold for
-// its plan, as CPPIED drops "each is timed at its own" speed.
+// its plan, as CPPIED drops "each is timed at its own" speed. Where an aircraft takes off outside the task
+// area is said too: the start given is not where its path begins.
 void BatchRunner::sayMissionNotes(const Plan& plan, const PlanningProblem& problem) {
     for (const PlanIssue& issue : plan.issues)
-        if (issue.severity == IssueSeverity::Information && isOfTheMission(issue, problem))
-            note(issue.message);
+        if (issue.severity == IssueSeverity::Information &&
+            (isOfTheMission(issue, problem) || issue.code == "take-off-outside"))
+            note(issue.message + io::robotsNamedIn(issue.message, robotNamesForMessages(), false));
 }
 
 // A compared plan's warnings under its planner's name; those of the mission itself (the problem's notes),

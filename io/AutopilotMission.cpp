@@ -143,8 +143,8 @@ double flightSeconds(const AutopilotMission& mission) {
 
 // The time of one flight along a part of a mission, kept as points are added, so that a part can be held
 // against a battery point by point: the legs at their commanded speeds, the turns priced as the plan prices
-// them, and for an aircraft its climb to the mission's altitude, the trips from home (the mission's first
-// point) and back, and its descent.
+// them, and for an aircraft its climb to the mission's altitude, the trips from home (AutopilotMission::home)
+// and back, and its descent.
 class FlightClock {
   public:
     FlightClock(const AutopilotMission& mission, const VehicleSettings& vehicle, const CellGraph& cells)
@@ -159,7 +159,7 @@ class FlightClock {
         last_ = first;
         seconds_ = climbSeconds_;
         if (fromHome_)
-            fly(mission_->points.front(), mission_->points[first], mission_->commandedSpeeds[first]);
+            fly(mission_->home(), mission_->points[first], mission_->commandedSpeeds[first]);
         tripOut_ = seconds_;
     }
     // On to the next point of the mission.
@@ -171,7 +171,7 @@ class FlightClock {
     [[nodiscard]] double seconds() const {
         FlightClock ended = *this;
         if (fromHome_)
-            ended.fly(mission_->points[last_], mission_->points.front(), mission_->commandedSpeeds[last_]);
+            ended.fly(mission_->points[last_], mission_->home(), mission_->commandedSpeeds[last_]);
         return ended.unknown_ ? 0.0 : ended.seconds_ + descentSeconds_;
     }
     // The same without the trips from home and back: the work one flight does.
@@ -368,6 +368,7 @@ double roundedSpeed(double metresPerSecond) {
 AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
                                   const ExportSettings& settings, const CellGraph& cells) {
     AutopilotMission mission;
+    mission.takeOff = path.takeOff;
     const bool byLeg = settings.speedChangesAtTurnsOnly && !(vehicle.cruiseSpeedMetresPerSecond > 0.0);
     const SpeedSteps speeds = byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
                                     : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
@@ -395,7 +396,7 @@ double partSeconds(const AutopilotMission& mission, const MissionPart& part, con
 }
 
 double farthestFromStart(const AutopilotMission& mission, const MissionPart& part) {
-    const Waypoint& start = mission.points.front();
+    const Waypoint start = mission.home();
     double farthest = 0.0;
     for (std::size_t point = part.first; point <= part.last; ++point)
         farthest = std::max(farthest,

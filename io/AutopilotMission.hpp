@@ -5,6 +5,7 @@
 #include "io/Mission.hpp"
 #include "io/VehicleSettings.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,9 +28,22 @@ struct AutopilotMission {
     std::vector<double> commandedSpeeds; // by point; the first is the speed the mission starts with
     std::vector<MissionPart> parts;
     int items = 0; // of the whole mission in one file
+    // Where an aircraft takes off and lands when not at the first point (CoveragePath::takeOff).
+    std::optional<MapPoint> takeOff;
     // The time to fly it at the commanded speeds (each segment at the speed commanded for it) with the
     // plan's turn time; 0 when a speed is unknown.
     double seconds = 0.0;
+
+    // Home: where it takes off, its first point unless it takes off elsewhere (in no cell of the plan).
+    [[nodiscard]] Waypoint home() const {
+        if (!takeOff)
+            return points.front();
+        Waypoint there = points.front();
+        there.x = takeOff->x;
+        there.y = takeOff->y;
+        there.cell = -1;
+        return there;
+    }
 
     // Whether the vehicle is told a new speed before driving to this point.
     [[nodiscard]] bool changesSpeedAt(std::size_t point) const {
@@ -56,7 +70,7 @@ struct AutopilotMission {
                                                 const ExportSettings& settings, const CellGraph& cells);
 
 // Seconds one part of a mission takes at its commanded speeds, turning where the plan prices turns (cells:
-// the plan's); an aircraft's part also flies from home (the mission's first point) to its first waypoint
+// the plan's); an aircraft's part also flies from home (AutopilotMission::home) to its first waypoint
 // and back from its last, so that each flight can be held against a battery. 0 when a speed is unknown.
 [[nodiscard]] double partSeconds(const AutopilotMission& mission, const MissionPart& part,
                                  const VehicleSettings& vehicle, const CellGraph& cells);

@@ -1030,6 +1030,7 @@ void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     problem.fieldSeconds = fieldSecondsOf(mission, vehicles);
     problem.robotFlights = flightLimitsOf(mission, vehicles);
+    problem.flyingRobots = flyingRobots(mission);
     applyCruiseSpeed(mission, vehicles, problem);
     noteAircraftAltitudes(mission, vehicles, problem.notes);
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))
@@ -1043,6 +1044,13 @@ std::vector<VehicleSettings> robotVehicles(const Mission& mission) {
     for (const RobotSpec& robot : mission.robots)
         vehicles.push_back(robot.vehicle.over(mission.exports.vehicle));
     return vehicles;
+}
+
+std::vector<bool> flyingRobots(const Mission& mission) {
+    std::vector<bool> flying;
+    for (const VehicleSettings& vehicle : robotVehicles(mission))
+        flying.push_back(isAircraft(vehicle.type));
+    return flying;
 }
 
 std::optional<std::string> fleetFlightProblem(const Mission& mission) {

@@ -83,6 +83,9 @@ struct Mission {
 [[nodiscard]] std::vector<std::string> robotNames(const Mission& mission);
 // Each robot's vehicle in order: its own settings over the mission's.
 [[nodiscard]] std::vector<VehicleSettings> robotVehicles(const Mission& mission);
+// By robot, whether it flies (an aircraft): one may take off outside the task area
+// (PlanningProblem::flyingRobots).
+[[nodiscard]] std::vector<bool> flyingRobots(const Mission& mission);
 // What no robot can fly with its vehicle settings (a flight too short for the climb and descent), naming the
 // robots; nothing when every robot can. Batch mode and the window refuse to plan on it alike.
 [[nodiscard]] std::optional<std::string> fleetFlightProblem(const Mission& mission);

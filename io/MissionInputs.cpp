@@ -328,11 +328,15 @@ Status reconcileAsAsked(LoadedRaster& raster, const ClassTable& classes, bool mi
 
 // The first start the planner could not use, on a raster already reconciled with the class table.
 Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& classes,
-                         const std::vector<MapPoint>& starts, const FieldNamer& names) {
+                         const std::vector<MapPoint>& starts, const FieldNamer& names,
+                         const std::vector<bool>& flyingRobots) {
     for (std::size_t robot = 0; robot < starts.size(); ++robot) {
         const MapPoint start = starts[robot];
-        if (const auto problem =
-                startPointProblem(reconciled.grid, classes, start, startName(reconciled, start)))
+        const auto problem = startPointProblem(reconciled.grid, classes, start, startName(reconciled, start));
+        // An aircraft takes off where it stands and flies to the nearest free cell (the planner checks that
+        // one flight reaches it).
+        const bool flies = robot < flyingRobots.size() && flyingRobots[robot];
+        if (problem && !(flies && takesOffThere(reconciled.grid, start, *problem)))
             return Status::failure(names(MissionField::start(static_cast<int>(robot))) + ": " +
                                    problem->detail +
                                    startAdvice(reconciled, *problem, start, static_cast<int>(robot), names));
@@ -436,7 +440,8 @@ Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names) 
 
 Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassTable& classes,
                                         bool missingClassesAsObstacles, std::vector<MapPoint> starts,
-                                        const PlannerChoice& choice, const FieldNamer& names) {
+                                        const PlannerChoice& choice, const FieldNamer& names,
+                                        const std::vector<bool>& flyingRobots) {
     using Prepared = Result<PreparedProblem>;
     if (Status planner = checkPlannerChoice(choice, names); !planner)
         return Prepared::failure(planner.error());
@@ -453,7 +458,8 @@ Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassT
     const bool snap =
         parameters.has("snap_starts_to_free_cells") && parameters.boolean("snap_starts_to_free_cells");
     if (!snap)
-        if (Status startsUsable = firstStartProblem(reconciled, classes, starts, names); !startsUsable)
+        if (Status startsUsable = firstStartProblem(reconciled, classes, starts, names, flyingRobots);
+            !startsUsable)
             return Prepared::failure(startsUsable.error());
     prepared.problem.grid = std::move(reconciled.grid);
     prepared.problem.classes = classes;
@@ -463,11 +469,12 @@ Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassT
 }
 
 Status checkStarts(const LoadedRaster& raster, const ClassTable& classes, bool missingClassesAsObstacles,
-                   const std::vector<MapPoint>& starts, const FieldNamer& names) {
+                   const std::vector<MapPoint>& starts, const FieldNamer& names,
+                   const std::vector<bool>& flyingRobots) {
     LoadedRaster reconciled = raster;
     if (Status status = reconcileAsAsked(reconciled, classes, missingClassesAsObstacles, names); !status)
         return status;
-    return firstStartProblem(reconciled, classes, starts, names);
+    return firstStartProblem(reconciled, classes, starts, names, flyingRobots);
 }
 
 } // namespace mcpp::io

@@ -99,20 +99,23 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 [[nodiscard]] Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names);
 
 // Every start on a pixel robots can start from, judged as planningProblem judges them when the planner is
-// not to move bad starts itself: for checking a mission once before several planners run on it.
+// not to move bad starts itself: for checking a mission once before several planners run on it. A flying
+// robot (flyingRobots, by robot) may start anywhere: it takes off there.
 [[nodiscard]] Status checkStarts(const LoadedRaster& raster, const ClassTable& classes,
                                  bool missingClassesAsObstacles, const std::vector<MapPoint>& starts,
-                                 const FieldNamer& names);
+                                 const FieldNamer& names, const std::vector<bool>& flyingRobots = {});
 
 struct PreparedProblem {
     PlanningProblem problem;
     std::vector<std::string> warnings; // e.g. classes without a row treated as obstacles
 };
 // The problem to plan: the raster reconciled with the table (missing classes refused, or made obstacles),
-// each start checked on its pixel (unless the planner is to move bad starts), the planner checked.
+// each start checked on its pixel (unless the planner is to move bad starts, or the robot flies: see
+// checkStarts), the planner checked.
 [[nodiscard]] Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassTable& classes,
                                                       bool missingClassesAsObstacles,
                                                       std::vector<MapPoint> starts,
-                                                      const PlannerChoice& choice, const FieldNamer& names);
+                                                      const PlannerChoice& choice, const FieldNamer& names,
+                                                      const std::vector<bool>& flyingRobots = {});
 
 } // namespace mcpp::io

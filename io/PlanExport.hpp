@@ -64,8 +64,9 @@ struct ExportContext {
         struct Entry {
             std::once_flag made;
             AutopilotMission mission;
-            // Its points' longitude and latitude, transformed once for its .plan, .waypoints and CSV files;
-            // when they cannot be had, none and the reason.
+            // Its points' longitude and latitude (then its take-off point's, where that is elsewhere),
+            // transformed once for its .plan, .waypoints and CSV files; when they cannot be had, none and the
+            // reason.
             std::once_flag placed;
             std::vector<LonLat> lonLats;
             std::string placeError;

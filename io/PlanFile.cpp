@@ -25,7 +25,7 @@ using internal::CompressedReader;
 using internal::CompressedWriter;
 
 // Files of the versions before are read as well: 3 without the paths' counts of walked waypoints (none had
-// its straight runs merged), 4 without the times in the field.
+// its straight runs merged), 4 without the times in the field, 5 without the paths' take-off points.
 constexpr const char* formatName = "MCPP-PLAN ";
 constexpr int oldestFormatVersion = 3;
 constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
@@ -315,10 +315,16 @@ void putPaths(CompressedWriter& out, const std::vector<CoveragePath>& paths, con
         putWaypoints(out, path.waypoints, graph);
         if (path.runsMerged())
             out.putAll(std::vector<std::uint8_t>(path.runFollows.begin(), path.runFollows.end()));
+        out.put(static_cast<std::uint8_t>(path.takeOff.has_value()));
+        if (path.takeOff) {
+            out.put(path.takeOff->x);
+            out.put(path.takeOff->y);
+        }
     }
 }
 
-std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph, bool withWalkedCounts) {
+std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph, bool withWalkedCounts,
+                                   bool withTakeOffs) {
     std::vector<CoveragePath> paths(in.getCount(54));
     if (paths.size() > mostRobots) // more than region outlines can number
         throw CompressedReader::DamagedData("more robots than one plan takes");
@@ -342,6 +348,13 @@ std::vector<CoveragePath> getPaths(CompressedReader& in, const CellGraph& graph,
             if (!walkFits || runFollows.size() != path.waypoints.size())
                 throw CompressedReader::DamagedData("a path whose merged runs do not add up");
             path.runFollows.assign(runFollows.begin(), runFollows.end());
+        }
+        if (withTakeOffs && in.get<std::uint8_t>() != 0) {
+            const double x = in.get<double>();
+            const double y = in.get<double>();
+            if (!std::isfinite(x) || !std::isfinite(y))
+                throw CompressedReader::DamagedData("a take-off point that is not a number");
+            path.takeOff = MapPoint{x, y};
         }
         if (path.robot < 0 || static_cast<std::size_t>(path.robot) >= paths.size())
             throw CompressedReader::DamagedData("a path of no robot");
@@ -462,7 +475,7 @@ Plan readPlan(CompressedReader& in, int formatVersion) {
     plan.regions.robotOfCell = in.getAll<int>();
     plan.regions.startCell = in.getAll<int>();
     plan.regions.costSeconds = in.getAll<double>();
-    plan.paths = getPaths(in, plan.cells, formatVersion >= 4);
+    plan.paths = getPaths(in, plan.cells, formatVersion >= 4, formatVersion >= 6);
     checkRegions(plan.regions, plan.cells.size(), plan.paths.size());
     plan.metrics = getMetrics(in, formatVersion >= 5);
     for (const RobotMetrics& robot : plan.metrics.robots)

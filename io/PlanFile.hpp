@@ -38,7 +38,7 @@ namespace mcpp::io {
                                                        const std::string& fingerprint);
 
 // The version of the plan files this writes (MCPP-PLAN 5).
-inline constexpr int planFormatVersion = 5;
+inline constexpr int planFormatVersion = 6;
 
 // The plan from the bytes after a plan file's two header lines (for readers of other sources and the fuzzer);
 // `path` names the source in errors. formatVersion: that of the file's first line, MCPP-PLAN 3 (paths hold

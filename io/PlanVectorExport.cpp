@@ -537,7 +537,9 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
                 continue;
             const std::string name = context.robotName(coverage.robot);
             if (pass == 0) {
-                OGRPoint home(waypoints.front().x / metresPerUnit, waypoints.front().y / metresPerUnit);
+                const MapPoint start =
+                    coverage.takeOff ? *coverage.takeOff : MapPoint{waypoints.front().x, waypoints.front().y};
+                OGRPoint home(start.x / metresPerUnit, start.y / metresPerUnit);
                 if (home.transform(transformation.value()->get()) != OGRERR_NONE) {
                     return Status::failure(path + ": cannot transform a start to WGS84" +
                                            QuietGdalErrors::detail());

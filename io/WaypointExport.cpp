@@ -52,12 +52,15 @@ struct GeoWaypoint {
     double latitude = 0.0;
 };
 
-// Every point of the mission in longitude and latitude, in one transformation.
+// Every point of the mission in longitude and latitude, in one transformation; where it takes off elsewhere
+// than its first point, that point's after them.
 Result<std::vector<LonLat>> lonLatsOf(const ExportContext& context, const AutopilotMission& mission) {
     std::vector<MapPoint> mapPoints;
-    mapPoints.reserve(mission.points.size());
+    mapPoints.reserve(mission.points.size() + 1);
     for (const Waypoint& point : mission.points)
         mapPoints.push_back({point.x, point.y});
+    if (mission.takeOff)
+        mapPoints.push_back(*mission.takeOff);
     return context.georeference.toWgs84(mapPoints);
 }
 
@@ -103,7 +106,8 @@ Status placeOnWgs84(const ExportContext& context, int robot, const CoveragePath&
                     const std::vector<std::size_t>& kept, std::vector<GeoWaypoint>& points) {
     const ExportContext::MissionCache::Entry& mission = placedMissionOf(context, robot);
     const std::vector<Waypoint>& missionPoints = mission.mission.points;
-    const std::size_t placed = mission.placeError.empty() ? mission.lonLats.size() : 0;
+    const std::size_t placed =
+        mission.placeError.empty() ? std::min(mission.lonLats.size(), missionPoints.size()) : 0;
     std::vector<std::size_t> unplaced;
     std::vector<MapPoint> mapPoints;
     std::size_t next = 0; // the first mission point not met yet along the path
@@ -458,7 +462,9 @@ using MissionText = std::string (*)(const AutopilotMission&, const MissionPart&,
 Status writeMission(const AutopilotMission& mission, const std::vector<LonLat>& lonLats,
                     const std::string& path, MissionText text, const VehicleSettings& vehicle) {
     const bool split = mission.parts.size() > 1;
-    const GeoWaypoint home = geoPoints(mission, {0, 0, 0}, lonLats).front();
+    const GeoWaypoint home =
+        mission.takeOff ? GeoWaypoint{mission.home(), 0.0, lonLats.back().longitude, lonLats.back().latitude}
+                        : geoPoints(mission, {0, 0, 0}, lonLats).front();
     for (std::size_t part = 0; part < mission.parts.size(); ++part) {
         const std::string file = split ? missionPartPath(path, part) : path;
         const std::vector<GeoWaypoint> points = geoPoints(mission, mission.parts[part], lonLats);
@@ -696,12 +702,16 @@ std::string fieldTimeNote(const ExportContext& context) {
                   : " (" + std::to_string(over) +
                         " of them longer than one battery allows, counted as flown: see the warnings)";
     const VehicleSettings& vehicle = context.vehicle(last);
+    const std::size_t parts = autopilotMissionOf(context, last).parts.size();
+    // A rover beside split aircraft may drive its mission in one go: "its 1 parts" says nothing.
+    const std::string how =
+        parts == 1
+            ? (isAircraft(vehicle.type) ? ", in one flight" : ", in one go")
+            : ", its " + std::to_string(parts) + (isAircraft(vehicle.type) ? " flights" : " parts") +
+                  (vehicle.turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") + " included";
     return "the last robot, " + context.robotName(last) + ", done in the field after " +
-           formatDuration(lastFlights.fieldSeconds) + ", its " +
-           std::to_string(autopilotMissionOf(context, last).parts.size()) +
-           (isAircraft(vehicle.type) ? " flights" : " parts") +
-           (vehicle.turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") + " included" +
-           caveat + unevenFieldTimes(context, first, firstSeconds, last, lastFlights.fieldSeconds);
+           formatDuration(lastFlights.fieldSeconds) + how + caveat +
+           unevenFieldTimes(context, first, firstSeconds, last, lastFlights.fieldSeconds);
 }
 
 Status writeQGroundControlPlan(const ExportContext& context, int robot, const std::string& path) {

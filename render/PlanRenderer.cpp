@@ -711,12 +711,13 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
                 continue;
             if (static_cast<std::size_t>(path.robot) >= starts.size())
                 starts.resize(static_cast<std::size_t>(path.robot) + 1);
-            starts[static_cast<std::size_t>(path.robot)] = {path.waypoints.front().x,
-                                                            path.waypoints.front().y};
+            starts[static_cast<std::size_t>(path.robot)] =
+                path.takeOff ? *path.takeOff : MapPoint{path.waypoints.front().x, path.waypoints.front().y};
         }
     }
     painter.setRenderHint(QPainter::Antialiasing, true);
     paintFlightReach(painter, worldToDevice, starts);
+    paintTakeOffLegs(painter, worldToDevice);
     // Text needs the font database of a QGuiApplication; without one the markers go unnumbered.
     const bool canDrawText = qobject_cast<QGuiApplication*>(QCoreApplication::instance()) != nullptr;
     if (canDrawText) {
@@ -744,6 +745,20 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
         painter.drawText(box, Qt::AlignCenter, QString::number(robot + 1));
     }
     paintChargers(painter, worldToDevice);
+}
+
+// An aircraft taking off outside its path flies to where the path begins: a thin dotted line in its colour,
+// under the markers.
+void PlanRenderer::paintTakeOffLegs(QPainter& painter, const QTransform& worldToDevice) const {
+    if (plan_ == nullptr)
+        return;
+    for (const CoveragePath& path : plan_->paths) {
+        if (!path.takeOff || path.waypoints.empty())
+            continue;
+        painter.setPen(QPen(RobotPalette::colour(path.robot).darker(130), 2.0, Qt::DotLine));
+        painter.drawLine(worldToDevice.map(QPointF(path.takeOff->x, path.takeOff->y)),
+                         worldToDevice.map(QPointF(path.waypoints.front().x, path.waypoints.front().y)));
+    }
 }
 
 // Under the markers, so that a start stays easy to pick; dashed, so that it does not read as a region border.

@@ -115,6 +115,7 @@ class PlanRenderer {
     void paintCrossings(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
     void paintChargers(QPainter& painter, const QTransform& worldToDevice) const;
+    void paintTakeOffLegs(QPainter& painter, const QTransform& worldToDevice) const;
     void paintFlightReach(QPainter& painter, const QTransform& worldToDevice,
                           const std::vector<MapPoint>& starts) const;
     static void drawCharger(QPainter& painter, QPointF centre, const QColor& colour);

@@ -1015,7 +1015,8 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
     // Starts the new area leaves out are kept, to be moved: say so now rather than at Plan.
     QStringList outside;
     for (std::size_t robot = 0; robot < document_->robots().size(); ++robot)
-        if (document_->startProblem(document_->robots()[robot].start, static_cast<int>(robot)))
+        if (document_->startProblem(document_->robots()[robot].start, static_cast<int>(robot), {},
+                                    document_->robotFlies(static_cast<int>(robot))))
             outside << QString::fromStdString(document_->robots()[robot].name);
     if (outside.size() == 1)
         message +=
@@ -1655,9 +1656,10 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
         return false;
     }
     // The same checks as for one plan, with the mission's own planner.
-    auto prepared = io::planningProblem(*document_->raster(), document_->classes(),
-                                        document_->mission().missingClassesAsObstacles, document_->starts(),
-                                        document_->plannerChoice(), fieldNamer());
+    auto prepared =
+        io::planningProblem(*document_->raster(), document_->classes(),
+                            document_->mission().missingClassesAsObstacles, document_->starts(),
+                            document_->plannerChoice(), fieldNamer(), io::flyingRobots(document_->mission()));
     if (!prepared.ok()) {
         reportError(tr("Cannot compare"), QString::fromStdString(prepared.error()));
         return false;
@@ -1757,9 +1759,10 @@ bool MainWindow::startPlanning() {
         return false;
     }
     // The same checks batch mode makes, named in the window's terms.
-    auto prepared = io::planningProblem(*document_->raster(), document_->classes(),
-                                        document_->mission().missingClassesAsObstacles, document_->starts(),
-                                        document_->plannerChoice(), fieldNamer());
+    auto prepared =
+        io::planningProblem(*document_->raster(), document_->classes(),
+                            document_->mission().missingClassesAsObstacles, document_->starts(),
+                            document_->plannerChoice(), fieldNamer(), io::flyingRobots(document_->mission()));
     if (!prepared.ok()) {
         reportError(tr("Cannot plan"), QString::fromStdString(prepared.error()));
         return false;

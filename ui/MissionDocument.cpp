@@ -126,14 +126,19 @@ std::optional<std::int32_t> MissionDocument::classValueAt(MapPoint point) const 
     return grid.valueAt(pixel->column, pixel->row);
 }
 
-std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreRobot,
-                                                     const QString& what) const {
+std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreRobot, const QString& what,
+                                                     bool takesOff) const {
     if (!raster_)
         return tr("Open a land-cover raster before placing robots.");
     const ClassGrid& grid = raster_->grid;
     const QString name = what.isEmpty() ? tr("Start") : what;
-    if (const auto problem = startPointProblem(grid, mission_.classes, point))
+    if (const auto problem = startPointProblem(grid, mission_.classes, point)) {
+        if (takesOff && takesOffThere(grid, point, *problem))
+            return std::nullopt;
         return tr("%1 %2.").arg(name, QString::fromStdString(problem->detail));
+    }
+    if (takesOff) // several aircraft may take off from one spot
+        return std::nullopt;
     const auto pixel = grid.pixelAt(point);
     for (std::size_t robot = 0; robot < mission_.robots.size(); ++robot) {
         if (static_cast<int>(robot) == ignoreRobot)
@@ -145,6 +150,12 @@ std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreR
                      QString::fromStdString(mission_.robots[robot].name));
     }
     return std::nullopt;
+}
+
+bool MissionDocument::robotFlies(int robot) const {
+    if (robot < 0 || static_cast<std::size_t>(robot) >= mission_.robots.size())
+        return io::isAircraft(mission_.exports.vehicle.type);
+    return io::flyingRobots(mission_)[static_cast<std::size_t>(robot)];
 }
 
 QString MissionDocument::nextRobotName() const {

@@ -78,8 +78,13 @@ class MissionDocument : public QObject {
     // Why a robot cannot start at this point (outside the map, nodata, obstacle class, on another start's
     // pixel), or nothing when it can. ignoreRobot skips one robot when moving it.
     // `what` names the point in the message ("Start" when empty; a charger is checked by the same rule).
+    // With takesOff (the robot flies), a point on the raster where a rover cannot start is where it takes
+    // off: no problem.
     [[nodiscard]] std::optional<QString> startProblem(MapPoint point, int ignoreRobot = -1,
-                                                      const QString& what = {}) const;
+                                                      const QString& what = {}, bool takesOff = false) const;
+    // Whether a robot flies (its vehicle is an aircraft); robot -1: a robot added now, of the mission's
+    // vehicle.
+    [[nodiscard]] bool robotFlies(int robot) const;
     // The raster value under a point, or nothing outside the map or on nodata.
     [[nodiscard]] std::optional<std::int32_t> classValueAt(MapPoint point) const;
     // "Robot N" with the smallest N not in use.

@@ -258,7 +258,7 @@ bool RobotTableModel::setCharger(int robot, int column, const QString& text) {
 }
 
 bool RobotTableModel::addRobot(MapPoint start) {
-    if (const auto problem = document_->startProblem(start))
+    if (const auto problem = document_->startProblem(start, -1, {}, document_->robotFlies(-1)))
         return refuse(*problem);
     auto after = document_->robots();
     io::RobotSpec robot;
@@ -273,7 +273,7 @@ bool RobotTableModel::addRobot(MapPoint start) {
 bool RobotTableModel::moveRobot(int robot, MapPoint start) {
     if (robot < 0 || robot >= rowCount())
         return false;
-    if (const auto problem = document_->startProblem(start, robot))
+    if (const auto problem = document_->startProblem(start, robot, {}, document_->robotFlies(robot)))
         return refuse(*problem);
     auto after = document_->robots();
     auto& moved = after[static_cast<std::size_t>(robot)];

@@ -1,7 +1,10 @@
 #pragma once
 
+#include "core/model/MapPoint.hpp"
+
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace mcpp {
@@ -43,6 +46,9 @@ struct CoveragePath {
     std::size_t walkedWaypoints = 0;
     // Once runs are merged, by waypoint: whether waypoints were left out between it and the next.
     std::vector<bool> runFollows;
+    // Where an aircraft takes off and lands when that is not the path's first point (a start outside the
+    // task area, say on a road beside it): each flight flies from there to its work and back.
+    std::optional<MapPoint> takeOff;
 
     [[nodiscard]] bool runsMerged() const { return walkedWaypoints > 0; }
 };

@@ -38,6 +38,9 @@ struct PlanningProblem {
     // By robot, what its flights allow (a flight time, climbs and descents, turnarounds), given with
     // fieldSeconds; missing or without a flight time: it works in one go. The bound in the field counts it.
     std::vector<FlightLimits> robotFlights;
+    // By robot, whether it flies (an aircraft): one whose start lies outside the task area, on an obstacle or
+    // in another robot's cell takes off there, and its path begins at the nearest free cell. Missing: no.
+    std::vector<bool> flyingRobots;
     // Each robot's charger in the grid's frame, for planners that fly on batteries; missing or none: its
     // start.
     std::vector<std::optional<MapPoint>> chargers;

@@ -62,6 +62,11 @@ std::string whyOutside(std::uint8_t reason) {
 
 } // namespace
 
+bool takesOffThere(const ClassGrid& grid, MapPoint point, const StartPointProblem& problem) {
+    return problem.kind != Kind::InvalidParameter && std::isfinite(point.x) && std::isfinite(point.y) &&
+           grid.pixelAt(point).has_value();
+}
+
 std::string describePoint(MapPoint point) {
     return "(" + centimetres(point.x) + ", " + centimetres(point.y) + ")";
 }

@@ -47,9 +47,11 @@ double coveredTravelSeconds(const Plan& plan, int id) {
     return robot < plan.regions.startCell.size() ? plan.cells.cell(id).travelSeconds() : 0.0;
 }
 
-// Where a robot's flights take off and land: its path's first point (the waypoint files' home), or its start
-// cell where it has no path.
+// Where a robot's flights take off and land: where it takes off outside its path, else its path's first point
+// (the waypoint files' home), or its start cell where it has no path.
 StartSquare homeOf(const Plan& plan, std::size_t robot) {
+    if (robot < plan.paths.size() && plan.paths[robot].takeOff)
+        return {*plan.paths[robot].takeOff, 0.0};
     if (robot < plan.paths.size() && !plan.paths[robot].waypoints.empty()) {
         const Waypoint& home = plan.paths[robot].waypoints.front();
         return {{home.x, home.y}, 0.0};

@@ -51,7 +51,10 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
         if (!problemAtStart)
             continue;
         const bool snappable = problemAtStart->kind != Kind::InvalidParameter;
-        if (!snappable || !snap)
+        // An aircraft takes off where it stands and flies to its path (PlanningRun::locateStarts).
+        const bool takesOff = robot < problem.flyingRobots.size() && problem.flyingRobots[robot] &&
+                              takesOffThere(problem.grid, problem.starts[robot], *problemAtStart);
+        if (!snappable || !(snap || takesOff))
             throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot),
                                             problemAtStart->detail);
     }
@@ -352,6 +355,10 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
         planningRun.addIssue(IssueSeverity::Information, "field-time-balance", fieldPacesMessage(fieldPaces));
     planningRun.setFieldPaces(std::move(fieldPaces));
     run(planningRun);
+    for (CoveragePath& path : plan.paths)
+        if (const auto robot = static_cast<std::size_t>(path.robot);
+            robot < planningRun.takeOffPoints().size())
+            path.takeOff = planningRun.takeOffPoints()[robot];
     applyOwnSpeeds(planner, problem, planningRun);
     planningRun.stage("metrics", [&] {
         parallelFor(plan.paths.size(),

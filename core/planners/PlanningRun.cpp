@@ -48,6 +48,35 @@ int nearestFreeCell(const CellGraph& graph, const std::vector<int>& ownerOfCell,
 
 } // namespace
 
+bool PlanningRun::flies(std::size_t robot) const {
+    return robot < problem_.flyingRobots.size() && problem_.flyingRobots[robot];
+}
+
+// An aircraft takes off where it stands and flies to its path, if one flight reaches that far.
+void PlanningRun::takeOffAt(int robot, MapPoint given, MapPoint pathStart, const std::string& why) {
+    const double metres = std::hypot(pathStart.x - given.x, pathStart.y - given.y);
+    const auto index = static_cast<std::size_t>(robot);
+    if (index < problem_.robotFlights.size()) {
+        const double reach = problem_.robotFlights[index].reachMetres();
+        if (metres > reach)
+            throw PlanningError::aboutStart(Kind::StartOutsideArea, robot,
+                                            why + ", and its path would begin " + formatDistance(metres) +
+                                                " away, beyond one flight's reach of " +
+                                                formatDistance(reach) + " out and back");
+    }
+    takeOffs_.resize(starts_.size());
+    takeOffs_[index] = given;
+    // The problem's detail begins with the point: "(x, y) is outside the task area: ...".
+    const std::string point = describePoint(given);
+    const std::string what =
+        why.rfind(point, 0) == 0 ? why.substr(point.size()) : " is not on a free cell (" + why + ")";
+    addIssue(IssueSeverity::Information, "take-off-outside",
+             "robot " + std::to_string(robot + 1) + " takes off at its start " + point + ", which" + what +
+                 "; it flies " + formatDistance(metres) + " to the nearest free cell's centre " +
+                 describePoint(pathStart) +
+                 ", where its path begins, and each flight's trip from its start and back is counted");
+}
+
 std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
     const CellGraph& graph = plan_.cells;
     const bool snap = parameters_.boolean("snap_starts_to_free_cells");
@@ -77,8 +106,9 @@ std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
                                             "'s start (a cell " + formatDistance(graph.cell(cell).size) +
                                             " across)"};
         }
+        const bool takesOff = flies(robot) && problem && takesOffThere(problem_.grid, start, *problem);
         if (problem) {
-            if (!snap)
+            if (!snap && !takesOff)
                 throw PlanningError::aboutStart(problem->kind, robotIndex, problem->detail);
             cell = nearestFreeCell(graph, ownerOfCell, start);
             if (cell < 0)
@@ -87,10 +117,13 @@ std::vector<int> PlanningRun::locateStarts(const std::string& leftOutBecause) {
             const Cell& target = graph.cell(cell);
             const MapPoint given = start;
             start = {target.centreX(), target.centreY()};
-            addIssue(IssueSeverity::Warning, "start-moved",
-                     "robot " + std::to_string(robot + 1) + " start " + problem->detail + "; moved " +
-                         formatDistance(std::hypot(start.x - given.x, start.y - given.y)) +
-                         " to the nearest free cell's centre " + describePoint(start));
+            if (takesOff)
+                takeOffAt(robotIndex, given, start, problem->detail);
+            else
+                addIssue(IssueSeverity::Warning, "start-moved",
+                         "robot " + std::to_string(robot + 1) + " start " + problem->detail + "; moved " +
+                             formatDistance(std::hypot(start.x - given.x, start.y - given.y)) +
+                             " to the nearest free cell's centre " + describePoint(start));
         }
         ownerOfCell[static_cast<std::size_t>(cell)] = robotIndex;
         startCells.push_back(cell);

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,17 +50,25 @@ class PlanningRun {
     // robot already holds, is an error or, with snapping, moved to the nearest free cell with a warning.
     // leftOutBecause: why the decomposition leaves cells out, for a start in one; by default the blocked
     // threshold's rule.
+    // A flying robot (PlanningProblem::flyingRobots) whose start is such takes off there instead, its path
+    // beginning at the nearest free cell, with a note.
     [[nodiscard]] std::vector<int> locateStarts(const std::string& leftOutBecause = {});
+    // By robot, where it takes off when its start is not on its path (set by locateStarts).
+    [[nodiscard]] const std::vector<std::optional<MapPoint>>& takeOffPoints() const { return takeOffs_; }
     void addIssue(IssueSeverity severity, std::string code, std::string message) {
         plan_.issues.push_back({severity, std::move(code), std::move(message)});
     }
 
   private:
+    [[nodiscard]] bool flies(std::size_t robot) const;
+    void takeOffAt(int robot, MapPoint given, MapPoint pathStart, const std::string& why);
+
     const PlanningProblem& problem_;
     ParameterValues parameters_;
     const ProgressReporter& progress_;
     Plan& plan_;
     std::vector<MapPoint> starts_;
+    std::vector<std::optional<MapPoint>> takeOffs_;
     std::int64_t bytesPerBottomCell_;
     std::vector<double> fieldPaces_;
 };

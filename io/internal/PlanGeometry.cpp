@@ -65,9 +65,11 @@ void addStarts(const Plan& plan, double metresPerUnit, PlanFeatures& features) {
     for (const CoveragePath& path : plan.paths) {
         if (path.waypoints.empty())
             continue;
-        features.starts.push_back(
-            StartFeature{path.robot, std::make_unique<OGRPoint>(path.waypoints.front().x / metresPerUnit,
-                                                                path.waypoints.front().y / metresPerUnit)});
+        // Where it starts: its take-off point where an aircraft takes off outside its path.
+        const MapPoint start =
+            path.takeOff ? *path.takeOff : MapPoint{path.waypoints.front().x, path.waypoints.front().y};
+        features.starts.push_back(StartFeature{
+            path.robot, std::make_unique<OGRPoint>(start.x / metresPerUnit, start.y / metresPerUnit)});
     }
     // Robots without a path still get their start: the centre of their start cell.
     const CellGraph& graph = plan.cells;

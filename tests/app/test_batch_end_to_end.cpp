@@ -88,6 +88,7 @@ class TestBatchEndToEnd : public QObject {
     void droneFlagsPlanAtTheCruiseSpeed();
     void batteryPlansWriteEachSortie();
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
+    void anAircraftOnTheLakeTakesOffThere();
     void detectionPlansWriteTheDetectionRaster();
     void eventsArePlayedAndComparedWithTheStaticPlan();
     void rasterAloneGetsTheRecognisedProductsTable();
@@ -1016,6 +1017,49 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
 // CPPIED: detection.tif lies on the plan's lattice in the raster's CRS; every cell a robot covers is seen
 // at least as likely as band 2 asks, and report.json's figures are those of the file. A rerun with another
 // planner leaves no detection.tif behind.
+// A drone standing where a rover cannot start (here on the lake's shore pixel) takes off there: the plan is
+// made, the summary says where its path begins, and its waypoint files' home is that point, not the path's
+// first. The same start for a rover is refused, naming the robot's start.
+void TestBatchEndToEnd::anAircraftOnTheLakeTakesOffThere() {
+    auto mission = sampleMissionAnywhere("synthetic", "synthetic.asc");
+    auto robots = mission.value("robots").toArray();
+    auto second = robots.at(1).toObject();
+    second.insert("start", QJsonArray{431288.75, 5301138.75}); // the lake's first pixel
+    robots.replace(1, second);
+    mission.insert("robots", robots);
+    const QString path = scratch_.filePath("lake-shore.json");
+    QVERIFY(writeText(path, QJsonDocument(mission).toJson()));
+    const auto refused = runMcpp({"--batch", path, "--out", scratch_.filePath("lake-rover")});
+    QCOMPARE(refused.exitCode, 2);
+    QVERIFY2(refused.standardError.contains(QStringLiteral("robots[1].start (shrubland): ")) &&
+                 refused.standardError.contains(QStringLiteral("is on an obstacle: class 4 (Lake)")),
+             qPrintable(refused.standardError));
+
+    const QString out = scratch_.filePath("lake-drone");
+    const auto run =
+        runMcpp({"--batch", path, "--vehicle", "multirotor", "--cruise-speed", "5", "--out", out});
+    checkOutputs(out, 3, run, QStringLiteral("mcpp-mlct"));
+    if (QTest::currentTestFailed())
+        return;
+    QVERIFY2(run.standardOutput.contains(QStringLiteral(
+                 "robot 2 takes off at its start (431288.75, 5301138.75), which is on an obstacle: class 4 "
+                 "(Lake), which robots cannot cross; it flies ")) &&
+                 run.standardOutput.contains(QStringLiteral("(robot 2 is shrubland)")),
+             qPrintable(run.standardOutput));
+    for (const int robot : {1, 2}) {
+        const auto plan = readJsonObject(QStringLiteral("%1/robot_%2.plan").arg(out).arg(robot));
+        const QJsonArray home = plan.value("mission").toObject().value("plannedHomePosition").toArray();
+        const QPointF homePoint(home[0].toDouble(), home[1].toDouble());
+        const QPointF pathStart = planEnds(plan).first;
+        const double apart = std::hypot(homePoint.x() - pathStart.x(), homePoint.y() - pathStart.y());
+        // A degree of latitude is 111 km: the shrubland drone's path begins metres from the shore.
+        if (robot == 1)
+            QVERIFY2(apart < 1e-9, qPrintable(QString::number(apart)));
+        else
+            QVERIFY2(apart > 1e-6 && apart < 1e-3, qPrintable(QString::number(apart)));
+    }
+}
+
 void TestBatchEndToEnd::detectionPlansWriteTheDetectionRaster() {
     const QString out = scratch_.filePath("detection");
     auto run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--planner", "cppied", "--param",

@@ -29,6 +29,19 @@ PlanningProblem randomMap(unsigned seed, bool singleRobot) {
     return test::randomProblem(spec);
 }
 
+// The centre of the first obstacle pixel (in reading order), if the map has one.
+std::optional<MapPoint> firstObstacle(const PlanningProblem& problem) {
+    const ClassGrid& grid = problem.grid;
+    for (int row = 0; row < grid.rows; ++row)
+        for (int column = 0; column < grid.columns; ++column) {
+            const LandCoverClass* landCover = problem.classes.find(grid.valueAt(column, row));
+            if (!grid.isOutside(column, row) && landCover != nullptr && !landCover->isTraversable())
+                return MapPoint{grid.originX + (column + 0.5) * grid.pixelWidth,
+                                grid.originY - (row + 0.5) * grid.pixelHeight};
+        }
+    return std::nullopt;
+}
+
 } // namespace
 
 // Every registered planner holds the invariants of spec section 7 on every map, as far as it promises them
@@ -72,6 +85,12 @@ class PlannerInvariantsTest : public QObject {
             problem.robotSpeeds = {3.5};
         if (seed % 14 == 10)
             problem.robotSpeeds.assign(problem.starts.size(), 2.0);
+        // An aircraft standing on an obstacle takes off there and flies to the nearest free cell.
+        if (seed % 9 == 4)
+            if (const auto obstacle = firstObstacle(problem)) {
+                problem.flyingRobots.assign(problem.starts.size(), true);
+                problem.starts.front() = *obstacle;
+            }
         Plan plan;
         try {
             plan = made->plan(problem, {});

@@ -1,8 +1,8 @@
 // libFuzzer harness: the plan saved beside a mission, read back from any bytes; never a crash, never an
 // allocation beyond what the bytes can hold. The first byte chooses what the rest is: the compressed body as
 // it is on disk (mostly refused by zlib's checksum), or the plan's raw fields, compressed here, so that
-// every structural check of the reader is reached; its second and third bits, which format (MCPP-PLAN 5, 4
-// or 3).
+// every structural check of the reader is reached; its second and third bits, which format (MCPP-PLAN 6, 3,
+// 4 or 5).
 #include "core/coverage/StraightRunMerging.hpp"
 #include "io/PlanFile.hpp"
 
@@ -30,8 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool raw = (data[0] & 1) != 0;
     const std::string body = raw ? compressedChunk(data + 1, size - 1)
                                  : std::string(reinterpret_cast<const char*>(data) + 1, size - 1);
-    // The body of a file of this format or of one before: bit 1 alone MCPP-PLAN 3, bit 2 alone 4.
-    constexpr int versions[] = {mcpp::io::planFormatVersion, 3, 4, mcpp::io::planFormatVersion};
+    // The body of a file of this format or of one before: bit 1 alone MCPP-PLAN 3, bit 2 alone 4, both 5.
+    constexpr int versions[] = {mcpp::io::planFormatVersion, 3, 4, 5};
     const int version = versions[(data[0] >> 1) & 3];
     auto plan = mcpp::io::parsePlanBody(body, "fuzz.mcpp-plan", version);
     if (plan.ok() && plan.value().cells.size() > 0) {

@@ -594,6 +594,15 @@ class AutopilotMissionTest : public QObject {
         // down at 1.5 m/s.
         const double expected = 24.0 + 10.0 + 20.0 + std::hypot(100.0, 100.0) / 5.0 + 40.0;
         QVERIFY(std::abs(partSeconds(mission, second, drone, noTurnPrice) - expected) < 1e-9);
+        // Taking off 50 m west of the first point (outside the task area): out from there, back to there.
+        mission.takeOff = MapPoint{-50.0, 0.0};
+        const double fromAfar = 24.0 + 15.0 + 20.0 + std::hypot(150.0, 100.0) / 5.0 + 40.0;
+        QVERIFY(std::abs(partSeconds(mission, second, drone, noTurnPrice) - fromAfar) < 1e-9);
+        // The first part too flies out to its first point: 50 m at 10 m/s.
+        const MissionPart first{0, 1, 0};
+        const double firstFromAfar = 24.0 + 5.0 + 10.0 + 15.0 + 40.0;
+        QVERIFY(std::abs(partSeconds(mission, first, drone, noTurnPrice) - firstFromAfar) < 1e-9);
+        mission.takeOff.reset();
         mission.commandedSpeeds[2] = 0.0;
         QCOMPARE(partSeconds(mission, second, drone, noTurnPrice), 0.0); // a speed unknown
     }
@@ -718,6 +727,44 @@ class AutopilotMissionTest : public QObject {
                 if (row[3] == "178")
                     QCOMPARE(row[2], QByteArray("2")); // a command, not a place: the mission frame
         }
+    }
+
+    // An aircraft taking off outside the task area (a road beside it): every part's home and take-off are
+    // there, and its waypoints are the path's as before.
+    void anAircraftTakingOffElsewhereFliesFromThere() {
+        LawnmowerExport lawnmowerExport;
+        lawnmowerExport.settings.vehicle.type = VehicleType::Multirotor;
+        lawnmowerExport.settings.vehicle.altitudeMetres = 45.0;
+        lawnmowerExport.settings.vehicle.maxWaypoints = 40;
+        const Waypoint& first = lawnmowerExport.plan.paths[0].waypoints.front();
+        const MapPoint road{first.x - 30.0, first.y + 5.0};
+        lawnmowerExport.plan.paths[0].takeOff = road;
+        const ExportContext context = lawnmowerExport.context();
+        QTemporaryDir folder;
+        const QString whole = folder.filePath(QStringLiteral("robot_1.plan"));
+        QVERIFY(writeQGroundControlPlan(context, 0, whole.toStdString()).ok());
+        const AutopilotMission mission = autopilotMissionOf(context, 0);
+        QVERIFY(mission.parts.size() > 2);
+        QVERIFY(mission.points[0].x == first.x && mission.points[0].y == first.y);
+        const LonLat takeOff = lawnmowerExport.reference.toWgs84({{road}}).value().front();
+        const LonLat pathStart = lawnmowerExport.reference.toWgs84({{{first.x, first.y}}}).value().front();
+        for (std::size_t part = 0; part < mission.parts.size(); ++part) {
+            const QString path = QString::fromStdString(missionPartPath(whole.toStdString(), part));
+            const QJsonObject plannedMission = readJson(path)["mission"].toObject();
+            const QJsonArray home = plannedMission["plannedHomePosition"].toArray();
+            QCOMPARE(home[0].toDouble(), takeOff.latitude);
+            QCOMPARE(home[1].toDouble(), takeOff.longitude);
+            const QJsonArray items = plannedMission["items"].toArray();
+            QCOMPARE(items.first().toObject()["params"].toArray()[4].toDouble(), takeOff.latitude);
+            if (part == 0) // then to where the path begins
+                QCOMPARE(items[2].toObject()["params"].toArray()[4].toDouble(), pathStart.latitude);
+        }
+        // Each flight's trips from the road and back are in its time: more than from the path's first point.
+        AutopilotMission fromThePath = mission;
+        fromThePath.takeOff.reset();
+        const VehicleSettings& drone = lawnmowerExport.settings.vehicle;
+        QVERIFY(partSeconds(mission, mission.parts[0], drone, noTurnPrice) >
+                partSeconds(fromThePath, mission.parts[0], drone, noTurnPrice) + 2.0 * 30.0 / 10.0);
     }
 };
 

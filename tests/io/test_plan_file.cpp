@@ -88,6 +88,7 @@ class TestPlanFile : public QObject {
         for (RobotMetrics& robot : plan.metrics.robots)
             robot.fieldSeconds = 8000.0 + robot.robot;
         QCOMPARE(plan.paths.size(), std::size_t{3});
+        plan.paths[1].takeOff = MapPoint{-120.5, 33.25}; // an aircraft taking off outside the area
         const std::string path = file("whole.mcpp-plan");
         const io::Status saved = io::savePlanFile(plan, "inputs-a", path);
         QVERIFY2(saved.ok(), saved.error().c_str());
@@ -109,7 +110,9 @@ class TestPlanFile : public QObject {
             QVERIFY(a.turns == b.turns && a.repeatedSubCellVisits == b.repeatedSubCellVisits &&
                     a.closed == b.closed);
             QVERIFY(sameWaypoints(a.waypoints, b.waypoints));
+            QVERIFY(a.takeOff == b.takeOff);
         }
+        QVERIFY(back.paths[1].takeOff.has_value());
         QCOMPARE(back.metrics.makespanSeconds, plan.metrics.makespanSeconds);
         QCOMPARE(back.metrics.ratio, plan.metrics.ratio);
         QCOMPARE(back.metrics.coveredFraction, plan.metrics.coveredFraction);
@@ -191,8 +194,8 @@ class TestPlanFile : public QObject {
         QVERIFY(!io::loadPlanFile(file("damaged.mcpp-plan"), "inputs-d").ok());
     }
 
-    // Files of the formats before (MCPP-PLAN 3: no counts of walked waypoints; 4: no times in the field) are
-    // still read.
+    // Files of the formats before (MCPP-PLAN 3: no counts of walked waypoints; 4: no times in the field; 5: no
+    // take-off points) are still read.
     void filesOfTheFormatBeforeAreRead() {
         const std::string seed =
             bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body"));
@@ -222,7 +225,7 @@ class TestPlanFile : public QObject {
         QCOMPARE(plan.metrics.robots[2].fieldSeconds, 0.0);
         const std::string fifth =
             bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body-v5"));
-        const auto fromFifth = io::parsePlanBody(std::string_view(fifth).substr(1), "seed");
+        const auto fromFifth = io::parsePlanBody(std::string_view(fifth).substr(1), "seed", 5);
         QVERIFY2(fromFifth.ok(), fromFifth.ok() ? "" : fromFifth.error().c_str());
         QCOMPARE(fromFifth.value().paths.size(), std::size_t{3});
         // That plan's drones (3 min flights, 2 min turnarounds) come home later than their paths end.
@@ -230,8 +233,11 @@ class TestPlanFile : public QObject {
         QVERIFY(flown.fieldLowerBoundSeconds > flown.lowerBoundSeconds);
         QVERIFY(flown.fieldMakespanSeconds > flown.makespanSeconds);
         QVERIFY(flown.robots[1].fieldSeconds > flown.robots[1].timeSeconds);
-        // Read as the format before, the same bytes are damaged: the versions are told apart.
+        QVERIFY(std::none_of(fromFifth.value().paths.begin(), fromFifth.value().paths.end(),
+                             [](const CoveragePath& path) { return path.takeOff.has_value(); }));
+        // Read as the format before or after, the same bytes are damaged: the versions are told apart.
         QVERIFY(!io::parsePlanBody(std::string_view(fifth).substr(1), "seed", 4).ok());
+        QVERIFY(!io::parsePlanBody(std::string_view(fifth).substr(1), "seed", 6).ok());
     }
 
     void waypointsOffTheGridComeBackAsTheyWere() {

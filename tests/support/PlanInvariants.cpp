@@ -287,7 +287,10 @@ std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& 
         }
         const Waypoint& first = path.waypoints.front();
         const MapPoint start = problem.starts[robot];
-        if (!snapsStarts(problem) && std::hypot(first.x - start.x, first.y - start.y) > 1e-6)
+        // An aircraft whose start is on no free cell takes off there; its path begins elsewhere.
+        if (path.takeOff && !(*path.takeOff == start))
+            violations.push_back(text(who + " takes off elsewhere than its start", path.takeOff->x, start.x));
+        if (!snapsStarts(problem) && !path.takeOff && std::hypot(first.x - start.x, first.y - start.y) > 1e-6)
             violations.push_back(text(who + " path does not begin at its start point", first.x, start.x));
         if (path.closed) {
             const Waypoint& last = path.waypoints.back();

@@ -193,6 +193,25 @@ class TestClassTableModel : public QObject {
         QVERIFY(!robots_->setData(robots_->index(0, ui::RobotTableModel::Easting), QStringLiteral("55")));
     }
 
+    // A drone may stand where a rover cannot start (water, nodata, another robot's pixel: a road beside the
+    // field, say): it takes off there. Off the raster it may not, and a robot of its own that drives may not.
+    void aDroneMayStandWhereItTakesOff() {
+        io::Mission mission = smallMission();
+        mission.exports.vehicle.type = io::VehicleType::Multirotor;
+        document_->reset(smallRaster(), mission, QString());
+        QSignalSpy refused(robots_.get(), &ui::RobotTableModel::editRefused);
+        QVERIFY(robots_->addRobot({55.0, 45.0})); // water
+        QVERIFY(robots_->addRobot({5.0, 95.0}));  // nodata
+        QVERIFY(robots_->addRobot({56.0, 44.0})); // the first drone's pixel
+        QVERIFY(!robots_->addRobot({500.0, 45.0}));
+        QVERIFY(refused.last().first().toString().contains(QStringLiteral("outside the raster")));
+        auto robots = document_->robots();
+        robots[0].vehicle.type = io::VehicleType::Rover;
+        document_->setRobots(robots);
+        QVERIFY(!robots_->moveRobot(0, {55.0, 25.0})); // a rover on the water
+        QVERIFY(robots_->moveRobot(1, {55.0, 25.0}));  // a drone there
+    }
+
   private:
     std::unique_ptr<ui::MissionDocument> document_;
     std::unique_ptr<QUndoStack> undoStack_;
