@@ -532,10 +532,14 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
     const std::vector<double> cruiseSpeeds = robotCruiseSpeeds(mission);
     // A battery planner's batteries may come from the vehicles' flight times.
     const std::vector<double> batteries = plannerBatteries(mission);
+    // An aircraft may take off beside its path (flyingRobots): which robots fly shapes the plan.
+    const std::vector<bool> flying = flyingRobots(mission);
     for (std::size_t robot = 0; robot < inputs.robots.size();
          ++robot) { // names shape the files, not the plan
         inputs.robots[robot].name.clear();
         inputs.robots[robot].vehicle = {};
+        if (flying[robot])
+            inputs.robots[robot].vehicle.type = VehicleType::Multirotor; // any aircraft alike
         if (cruiseSpeeds[robot] != inputs.exports.vehicle.cruiseSpeedMetresPerSecond)
             inputs.robots[robot].vehicle.cruiseSpeedMetresPerSecond = cruiseSpeeds[robot];
         if (robot < batteries.size() && batteries[robot] > 0.0)

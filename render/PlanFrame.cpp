@@ -38,6 +38,7 @@ struct Bounds {
     }
 };
 
+// The plans' cells and the take-off points beside them.
 Bounds cellBounds(const std::vector<const Plan*>& plans) {
     Bounds bounds;
     for (const Plan* plan : plans) {
@@ -49,6 +50,10 @@ Bounds cellBounds(const std::vector<const Plan*>& plans) {
             bounds.maxX = std::max(bounds.maxX, cell.maxX());
             bounds.maxY = std::max(bounds.maxY, cell.maxY());
         }
+        // An aircraft taking off beside the area: its start and the leg to its path are in the picture.
+        for (const CoveragePath& path : plan->paths)
+            if (path.takeOff)
+                bounds.take({path.takeOff->x, path.takeOff->y, path.takeOff->x, path.takeOff->y});
     }
     return bounds;
 }
@@ -95,7 +100,10 @@ std::vector<FrameRing> flightReachRings(const Plan& plan, const std::vector<doub
         const auto robot = static_cast<std::size_t>(path.robot);
         if (path.waypoints.empty() || robot >= reachMetres.size() || !(reachMetres[robot] > 0.0))
             continue;
-        rings.push_back({{path.waypoints.front().x, path.waypoints.front().y}, reachMetres[robot]});
+        // Centred where its flights take off and land.
+        const MapPoint home =
+            path.takeOff ? *path.takeOff : MapPoint{path.waypoints.front().x, path.waypoints.front().y};
+        rings.push_back({home, reachMetres[robot]});
     }
     return rings;
 }

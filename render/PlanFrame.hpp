@@ -22,8 +22,8 @@ struct FrameRing {
 };
 [[nodiscard]] ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans,
                                   const std::vector<FrameRing>& rings = {});
-// The flight-reach rings of a plan's robots: round each path's first waypoint, of the robot's reach in
-// metres (by robot; 0 or missing: none).
+// The flight-reach rings of a plan's robots: round where each takes off (its path's first waypoint, or its
+// take-off point beside the area), of the robot's reach in metres (by robot; 0 or missing: none).
 [[nodiscard]] std::vector<FrameRing> flightReachRings(const Plan& plan,
                                                       const std::vector<double>& reachMetres);
 

@@ -24,8 +24,8 @@ enum Column { Name, Outcome, Covered, Ratio, Makespan, Home, Turns, Planning, Co
 constexpr double coverageShortfall = 0.005;
 constexpr int coversLessRole = Qt::UserRole + 1;
 
-// A time that sorts plans covering less than the best after the others, in either order's direction
-// the user picks: the soonest done among those that do the whole job comes first.
+// A time that sorts plans covering less than the best after the others (ascending; a descending sort turns
+// the whole order round): the soonest done among those that do the whole job comes first.
 class TimeItem : public QTableWidgetItem {
   public:
     bool operator<(const QTableWidgetItem& other) const override {
@@ -86,8 +86,8 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
         {tr("Planner"), tr("The planner's name")},
         {tr("State"), tr("Planned, failed or skipped (hover over the cell for why)")},
         {tr("Covered %"),
-         tr("The share of the task area's land the plan covers; a plan covering less than the best by "
-            "over half a percent sorts after the others by time")},
+         tr("The share of the task area's land the plan covers; by time, soonest first, a plan covering "
+            "less than the best by over half a percent comes after the others")},
         {tr("Ratio"), tr("Makespan divided by the lower bound: 1.00 is perfectly balanced")},
         {tr("Hours"), tr("Makespan: the time of the slowest robot, in hours")},
         {tr("Home h"),

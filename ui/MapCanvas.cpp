@@ -45,6 +45,10 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
         zoomToFit();
     });
     connect(document_, &MissionDocument::classesChanged, this, &MapCanvas::refreshMap);
+    // A comparison of other inputs has no plan to offer for these.
+    for (const auto changed : {&MissionDocument::classesChanged, &MissionDocument::robotsChanged,
+                               &MissionDocument::settingsChanged, &MissionDocument::eventsChanged})
+        connect(document_, changed, this, [this] { comparedPlansWaiting_ = false; });
     connect(document_, &MissionDocument::robotsChanged, this, [this] {
         refreshStarts();
         if (selectedStart_ >= static_cast<int>(document_->robots().size()))
@@ -288,15 +292,17 @@ void MapCanvas::setComparedPlansWaiting(bool waiting) {
 }
 
 void MapCanvas::paintBanner(QPainter& painter, const QString& text, const QColor& colour) const {
+    // As wide as the text, wrapped where the canvas is narrower (a narrow window, docks open).
     const QFontMetrics metrics(painter.font());
-    const int textWidth = metrics.horizontalAdvance(text);
-    const QRect box((width() - textWidth) / 2 - 12, 8, textWidth + 24, metrics.height() + 10);
+    const int widest = std::max(width() - 40, 80);
+    const QRect textBox = metrics.boundingRect(QRect(0, 0, widest, 1000), Qt::TextWordWrap, text);
+    const QRect box((width() - textBox.width()) / 2 - 12, 8, textBox.width() + 24, textBox.height() + 10);
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setPen(QPen(QColor(120, 120, 120), 1.0));
     painter.setBrush(colour);
     painter.drawRoundedRect(box, 5, 5);
     painter.setPen(QColor(40, 40, 40));
-    painter.drawText(box, Qt::AlignCenter, text);
+    painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, text);
 }
 
 void MapCanvas::paintScaleBar(QPainter& painter) const {

@@ -58,7 +58,8 @@ PlanInputs MissionDocument::currentInputs() const {
             io::plannerBatteries(mission_),
             chargers(),
             io::robotCruiseSpeeds(mission_),
-            io::fieldTimeInputs(mission_)};
+            io::fieldTimeInputs(mission_),
+            io::flyingRobots(mission_)};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {

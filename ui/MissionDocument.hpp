@@ -28,6 +28,8 @@ struct PlanInputs {
     // Where time in the field is measured, what it depends on (the plan's figures there, MCPP-MLCT's
     // division).
     io::FieldTimeInputs fieldTime = {};
+    // Which robots fly: an aircraft may take off beside its path.
+    std::vector<bool> flyingRobots = {};
 
     friend bool operator==(const PlanInputs&, const PlanInputs&) = default;
 };

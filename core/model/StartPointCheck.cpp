@@ -63,8 +63,12 @@ std::string whyOutside(std::uint8_t reason) {
 } // namespace
 
 bool takesOffThere(const ClassGrid& grid, MapPoint point, const StartPointProblem& problem) {
-    return problem.kind != Kind::InvalidParameter && std::isfinite(point.x) && std::isfinite(point.y) &&
-           grid.pixelAt(point).has_value();
+    if (problem.kind == Kind::InvalidParameter || !std::isfinite(point.x) || !std::isfinite(point.y))
+        return false;
+    const auto pixel = grid.pixelAt(point);
+    // Not from a no-go zone: its flights would cross it.
+    return pixel && !(grid.isOutside(pixel->column, pixel->row) &&
+                      grid.outside[grid.index(pixel->column, pixel->row)] == ClassGrid::inNoGoZone);
 }
 
 std::string describePoint(MapPoint point) {

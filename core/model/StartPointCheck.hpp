@@ -23,8 +23,8 @@ struct StartPointProblem {
                                                                  const ClassTable& classes, MapPoint point,
                                                                  const std::string& pointName = {});
 // Whether an aircraft may take off at a start with that problem and fly to the nearest free cell: anywhere
-// on the raster (outside the task area, on an obstacle, in another robot's cell), not off it (mistyped
-// coordinates, most likely) nor at a point that is not a number.
+// on the raster (outside the task area, on an obstacle, in another robot's cell) but in a no-go zone, not
+// off it (mistyped coordinates, most likely) nor at a point that is not a number.
 [[nodiscard]] bool takesOffThere(const ClassGrid& grid, MapPoint point, const StartPointProblem& problem);
 // "(512300.25, 4120400.5)": to the centimetre, as the messages give planning-frame points.
 [[nodiscard]] std::string describePoint(MapPoint point);

@@ -51,8 +51,10 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
         if (!problemAtStart)
             continue;
         const bool snappable = problemAtStart->kind != Kind::InvalidParameter;
-        // An aircraft takes off where it stands and flies to its path (PlanningRun::locateStarts).
-        const bool takesOff = robot < problem.flyingRobots.size() && problem.flyingRobots[robot] &&
+        // An aircraft takes off where it stands and flies to its path (PlanningRun::locateStarts), except
+        // on batteries: those sorties start from the start's cell.
+        const bool takesOff = !planner.fliesOnBatteries() && robot < problem.flyingRobots.size() &&
+                              problem.flyingRobots[robot] &&
                               takesOffThere(problem.grid, problem.starts[robot], *problemAtStart);
         if (!snappable || !(snap || takesOff))
             throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot),
@@ -343,6 +345,7 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     plan.parameters = parameters;
     plan.issues = problem.notes;
     PlanningRun planningRun(problem, std::move(parameters), progress, plan, planner.bytesPerBottomCell);
+    planningRun.allowTakeOffs(!planner.fliesOnBatteries());
     if (!problem.events.empty() && !planner.simulatesEvents)
         planningRun.addIssue(IssueSeverity::Warning, "events-ignored", eventsIgnoredMessage(planner));
     const bool anyCharger =

@@ -3,6 +3,7 @@
 #include "core/model/Plan.hpp"
 #include "core/model/PlanningProblem.hpp"
 #include "core/model/ProgressReporter.hpp"
+#include "core/model/StartPointCheck.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -59,9 +60,19 @@ class PlanningRun {
         plan_.issues.push_back({severity, std::move(code), std::move(message)});
     }
 
+    // Planners that fly on batteries plan sorties from the start's cell: their robots do not take off
+    // elsewhere.
+    void allowTakeOffs(bool allowed) { takeOffsAllowed_ = allowed; }
+
   private:
     [[nodiscard]] bool flies(std::size_t robot) const;
+    [[nodiscard]] double reachMetres(std::size_t robot) const;
     void takeOffAt(int robot, MapPoint given, MapPoint pathStart, const std::string& why);
+    [[nodiscard]] std::optional<StartPointProblem> startCellProblem(MapPoint start, int cell,
+                                                                    const std::vector<int>& ownerOfCell,
+                                                                    const std::string& leftOutBecause) const;
+    [[nodiscard]] int placeBlockedStart(std::size_t robot, std::vector<int>& ownerOfCell,
+                                        const std::string& leftOutBecause);
 
     const PlanningProblem& problem_;
     ParameterValues parameters_;
@@ -69,6 +80,7 @@ class PlanningRun {
     Plan& plan_;
     std::vector<MapPoint> starts_;
     std::vector<std::optional<MapPoint>> takeOffs_;
+    bool takeOffsAllowed_ = true;
     std::int64_t bytesPerBottomCell_;
     std::vector<double> fieldPaces_;
 };

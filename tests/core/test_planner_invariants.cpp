@@ -85,8 +85,9 @@ class PlannerInvariantsTest : public QObject {
             problem.robotSpeeds = {3.5};
         if (seed % 14 == 10)
             problem.robotSpeeds.assign(problem.starts.size(), 2.0);
-        // An aircraft standing on an obstacle takes off there and flies to the nearest free cell.
-        if (seed % 9 == 4)
+        // An aircraft standing on an obstacle takes off there and flies to the nearest free cell (on
+        // batteries, sorties start from the start's cell: no take-off there).
+        if (seed % 9 == 4 && !description.fliesOnBatteries())
             if (const auto obstacle = firstObstacle(problem)) {
                 problem.flyingRobots.assign(problem.starts.size(), true);
                 problem.starts.front() = *obstacle;

@@ -98,6 +98,37 @@ class TakeOffTest : public QObject {
         }
     }
 
+    // A rover standing in the field's edge cell nearest the road keeps it: the drone taking off beside it
+    // flies to another, whichever robot comes first.
+    void aRoverKeepsTheCellADroneTakingOffBesideItWouldTake() {
+        PlanningProblem problem = roadsideProblem({true, false});
+        const Plan alone = makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+        const Cell& nearest = alone.cells.cell(alone.regions.startCell[0]);
+        problem.starts[1] = {nearest.centreX(), nearest.centreY()};
+        const Plan plan = makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+        QCOMPARE(plan.regions.startCell[1], alone.regions.startCell[0]);
+        QVERIFY(plan.regions.startCell[0] != plan.regions.startCell[1]);
+        QVERIFY(plan.paths[0].takeOff.has_value());
+        QVERIFY(!plan.paths[1].takeOff.has_value());
+    }
+
+    // Not from a no-go zone (its flights would cross it), and not for a planner that flies on batteries
+    // (its sorties start from the start's cell): refused as for a rover.
+    void noTakeOffFromANoGoZoneNorOnBatteries() {
+        PlanningProblem noGo = roadsideProblem({true, false});
+        for (int row = 0; row < noGo.grid.rows; ++row)
+            noGo.grid.outside[noGo.grid.index(2, row)] = ClassGrid::inNoGoZone;
+        QVERIFY_THROWS_EXCEPTION(PlanningError, (void)makePlanner(MlctPlanner::plannerName)->plan(noGo, {}));
+        PlanningProblem batteries = roadsideProblem({true, false});
+        batteries.planner = defaultPlannerChoice("wavefront-battery");
+        try {
+            (void)makePlanner("wavefront-battery")->plan(batteries, {});
+            QFAIL("a battery plan took off outside the area");
+        } catch (const PlanningError& error) {
+            QCOMPARE(error.kind(), PlanningError::Kind::StartOutsideArea);
+        }
+    }
+
     // One flight out to where the path begins and back must fit (900 s of flight out and back).
     void aTakeOffBeyondOneFlightsReachIsRefused() {
         PlanningProblem problem = roadsideProblem({true, false});

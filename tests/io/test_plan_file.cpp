@@ -194,8 +194,8 @@ class TestPlanFile : public QObject {
         QVERIFY(!io::loadPlanFile(file("damaged.mcpp-plan"), "inputs-d").ok());
     }
 
-    // Files of the formats before (MCPP-PLAN 3: no counts of walked waypoints; 4: no times in the field; 5: no
-    // take-off points) are still read.
+    // Files of the formats before (MCPP-PLAN 3: no counts of walked waypoints; 4: no times in the field; 5:
+    // no take-off points) are still read.
     void filesOfTheFormatBeforeAreRead() {
         const std::string seed =
             bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body"));

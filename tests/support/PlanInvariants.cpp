@@ -290,6 +290,9 @@ std::vector<std::string> checkPaths(const PlanningProblem& problem, const Plan& 
         // An aircraft whose start is on no free cell takes off there; its path begins elsewhere.
         if (path.takeOff && !(*path.takeOff == start))
             violations.push_back(text(who + " takes off elsewhere than its start", path.takeOff->x, start.x));
+        const bool flies = robot < problem.flyingRobots.size() && problem.flyingRobots[robot];
+        if (path.takeOff && !flies)
+            violations.push_back(who + " takes off, but it does not fly");
         if (!snapsStarts(problem) && !path.takeOff && std::hypot(first.x - start.x, first.y - start.y) > 1e-6)
             violations.push_back(text(who + " path does not begin at its start point", first.x, start.x));
         if (path.closed) {

@@ -96,8 +96,8 @@ class ComparisonPanelTest : public QObject {
     }
 
     // A plan that leaves land uncovered is not done sooner, only smaller: the Covered column says so, and
-    // by time it comes after those covering the most, whichever way the user sorts. Half a percent less
-    // is within the margin; a point less is not.
+    // by time, soonest first, it comes after those covering the most (a descending sort turns the whole
+    // order round). Half a percent less is within the margin; a point less is not.
     void aPlanCoveringLessSortsAfterThoseCoveringTheMost() {
         const auto raster = test::grassRaster();
         const io::Mission mission = test::twoRobotMission();
