@@ -1114,6 +1114,21 @@ void TestBatchEndToEnd::detectionPlansWriteTheDetectionRaster() {
         QVERIFY2(seen[i] >= 0.9F - 1e-6F, qPrintable(QString("cell %1: %2").arg(i).arg(seen[i])));
         minimum = std::min(minimum, double(seen[i]));
     }
+    // The file holds the box around the cells robots go to: its first and last rows and columns hold some.
+    const auto hasData = [&](int column, int row) {
+        return seen[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+                    static_cast<std::size_t>(column)] >= 0.0F;
+    };
+    bool firstRow = false, lastRow = false, firstColumn = false, lastColumn = false;
+    for (int column = 0; column < columns; ++column) {
+        firstRow = firstRow || hasData(column, 0);
+        lastRow = lastRow || hasData(column, rows - 1);
+    }
+    for (int row = 0; row < rows; ++row) {
+        firstColumn = firstColumn || hasData(0, row);
+        lastColumn = lastColumn || hasData(columns - 1, row);
+    }
+    QVERIFY(firstRow && lastRow && firstColumn && lastColumn);
     const QJsonObject detection = readJsonObject(out + "/report.json").value("detection").toObject();
     QCOMPARE(detection.value("targets").toDouble(), double(targets));
     QVERIFY(targets > 10000);
