@@ -309,13 +309,14 @@ void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, c
     std::vector<MissionPart> parts = partsFilledUpTo(mission, full, beside, clock);
     const std::size_t fewest = parts.size();
     // Parts out of one flight's reach go on for a flight's work: with a smaller share of the flight, more of
-    // them would, and parts that fit a flight would no longer.
+    // them would, and parts that fit a flight would no longer. Counted in legs, not parts: a smaller share
+    // may merge many parts that fit (near the edge of the reach, each a leg or two) into a few that do not.
     const auto overFlight = [&](const std::vector<MissionPart>& tried) {
-        if (!(full.seconds > 0.0))
-            return std::size_t{0};
-        return static_cast<std::size_t>(
-            std::count_if(tried.begin(), tried.end(),
-                          [&](const MissionPart& part) { return part.seconds > full.seconds; }));
+        std::size_t legs = 0;
+        if (full.seconds > 0.0)
+            for (const MissionPart& part : tried)
+                legs += part.seconds > full.seconds ? part.last - part.first : 0;
+        return legs;
     };
     const std::size_t fewestOver = overFlight(parts);
     // Two waypoints with a speed change between them are the least a part holds.

@@ -450,6 +450,49 @@ class AutopilotMissionTest : public QObject {
         QVERIFY(nearFlights >= 3); // 8 km of near ground: several flights
     }
 
+    // Ground near the edge of the reach fits a flight only a little at a time: evening the parts out must not
+    // merge those flights into a few out of reach, as many short parts out of reach are already.
+    void partsNearTheEdgeOfTheReachStayFlights() {
+        CoveragePath path;
+        const auto add = [&path](double x, double y) {
+            Waypoint point;
+            point.x = 301900.0 + x;
+            point.y = 4154080.0 + y;
+            point.speedMetresPerSecond = 5.0F;
+            path.waypoints.push_back(point);
+        };
+        // Lines north and south, 1.1 to 1.55 km north of the take-off: each crosses the 1.42 km a flight
+        // reaches, so the ground out of reach comes in many short stretches between flights that fit.
+        for (int column = 0; column < 30; ++column) {
+            add(10.0 * column, column % 2 == 0 ? 1100.0 : 1550.0);
+            add(10.0 * column, column % 2 == 0 ? 1550.0 : 1100.0);
+        }
+        path.takeOff = MapPoint{301900.0, 4154080.0};
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.cruiseSpeedMetresPerSecond = 5.0;
+        drone.maxWaypoints = 0;
+        drone.flightTimeSeconds = 600.0;
+        const AutopilotMission mission = autopilotMission(path, drone, shaping(0.1, true), noTurnPrice);
+        int tooLong = 0;
+        for (const MissionPart& part : mission.parts) {
+            if (part.seconds <= drone.flightTimeSeconds)
+                continue;
+            ++tooLong;
+            // Over the flight time only where a flight of its first leg alone would be: out of reach.
+            const double firstLeg = partSeconds(mission, {part.first, part.first + 1, 0}, drone, noTurnPrice);
+            QVERIFY2(
+                firstLeg > drone.flightTimeSeconds,
+                qPrintable(QStringLiteral("a part of %1 s from point %2, whose first leg alone is a flight "
+                                          "of %3 s")
+                               .arg(part.seconds)
+                               .arg(part.first)
+                               .arg(firstLeg)));
+        }
+        QVERIFY2(tooLong >= 10, qPrintable(QString::number(tooLong))); // each line's far end is out of reach
+        QVERIFY(mission.parts.size() > static_cast<std::size_t>(tooLong) + 10); // and flights between them
+    }
+
     void partsAreEvenNotFilledOneAfterTheOther() {
         // 800 waypoints, no speed change: 2 + 800 items at a 700 limit fill one part of 700 and leave one
         // of about 100; even parts hold about 400 each.
