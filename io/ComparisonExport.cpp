@@ -71,7 +71,7 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
     const std::vector<std::string> stages = stageNames(rows);
     std::string text = "planner,outcome,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
                        "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
-                       "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s";
+                       "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread";
     for (const std::string& stage : stages)
         text += "," + stageColumn(stage);
     text += ",message\n";
@@ -90,7 +90,8 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
                 joined(metrics, [](const RobotMetrics& robot) { return static_cast<double>(robot.turns); }) +
                 "," + figure(row.planningMilliseconds) + "," + figure(row.peakMemoryMegabytes) + "," +
                 fieldFigure(row, metrics.fieldMakespanSeconds) + "," +
-                fieldFigure(row, metrics.fieldLowerBoundSeconds);
+                fieldFigure(row, metrics.fieldLowerBoundSeconds) + "," +
+                fieldFigure(row, metrics.fieldSpread());
         for (const std::string& stage : stages)
             text += "," + (planned ? formatShortest(stageMilliseconds(metrics, stage)) : std::string());
         text += "," + internal::quoteCsvField(row.message) + "\n";

@@ -1895,7 +1895,10 @@ void MainWindow::showCursor(MapPoint point) {
             landCoverClass != nullptr ? QString::fromStdString(landCoverClass->name) : tr("unknown class");
         text += QStringLiteral("  ·  %1 (%2)").arg(name).arg(*value);
     } else {
-        text += tr("  ·  outside the map");
+        // On the raster but left out (nodata, outside the area of interest, a no-go zone) is not off the map.
+        const auto* raster = document_->raster();
+        const bool onTheRaster = raster != nullptr && raster->grid.pixelAt(point).has_value();
+        text += onTheRaster ? tr("  ·  outside the task area") : tr("  ·  outside the map");
     }
     cursorLabel_->setText(text);
 }

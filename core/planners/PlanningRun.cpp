@@ -146,11 +146,12 @@ int PlanningRun::placeBlockedStart(std::size_t robot, std::vector<int>& ownerOfC
     // Beyond one flight's reach it cannot take off there: moved with a warning where snapping, else refused.
     if (takesOff && metres > reachMetres(robot)) {
         if (!snap)
-            throw PlanningError::aboutStart(problem.kind, robotIndex,
-                                            problem.detail + ", and its path would begin " +
-                                                formatDistance(metres) +
-                                                " away, beyond one flight's reach of " +
-                                                formatDistance(reachMetres(robot)) + " out and back");
+            throw PlanningError::aboutStart(
+                problem.kind, robotIndex,
+                problem.detail + ", and its path would begin " + formatDistance(metres) +
+                    " away, farther than one flight can go and come back (" +
+                    formatDistance(reachMetres(robot)) +
+                    " each way): start it nearer the area, or give it a longer flight time");
         takesOff = false;
     }
     if (takesOff)

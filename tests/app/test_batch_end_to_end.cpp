@@ -206,7 +206,7 @@ void TestBatchEndToEnd::comparisonGivesTimesInTheField() {
         const QString name = row.value("planner").toString();
         const auto report = readJsonObject(folder.filePath(name + "/report.json"));
         const QStringList fields = lines.at(i + 1).split(',');
-        for (const char* key : {"field_makespan_s", "field_lower_bound_s"}) {
+        for (const char* key : {"field_makespan_s", "field_lower_bound_s", "field_spread"}) {
             QVERIFY2(report.value(key).toDouble() > 0.0, key);
             QCOMPARE(row.value(key).toDouble(), report.value(key).toDouble());
             QVERIFY2(

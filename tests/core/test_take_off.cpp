@@ -146,8 +146,8 @@ class TakeOffTest : public QObject {
         } catch (const PlanningError& error) {
             QCOMPARE(error.kind(), PlanningError::Kind::StartOutsideArea);
             QCOMPARE(error.robot(), 0);
-            QVERIFY2(error.detail().find("beyond one flight's reach of " + formatDistance(0.9 * metres)) !=
-                         std::string::npos,
+            QVERIFY2(error.detail().find("farther than one flight can go and come back (" +
+                                         formatDistance(0.9 * metres) + " each way)") != std::string::npos,
                      error.detail().c_str());
         }
     }
