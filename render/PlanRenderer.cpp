@@ -726,8 +726,16 @@ void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevic
         font.setPixelSize(11);
         painter.setFont(font);
     }
+    // Drones may take off from one spot: markers at the same place are fanned out to the right so that each
+    // number shows.
+    std::vector<QPointF> drawn;
     for (std::size_t robot = 0; robot < starts.size(); ++robot) {
-        const QPointF centre = worldToDevice.map(QPointF(starts[robot].x, starts[robot].y));
+        QPointF centre = worldToDevice.map(QPointF(starts[robot].x, starts[robot].y));
+        const auto sharing = std::count_if(drawn.begin(), drawn.end(), [&](const QPointF& other) {
+            return QLineF(other, centre).length() < 1.0;
+        });
+        drawn.push_back(centre);
+        centre.rx() += 1.6 * kStartRadiusPixels * static_cast<double>(sharing);
         const QColor colour = RobotPalette::colour(static_cast<int>(robot));
         if (static_cast<int>(robot) == selectedStart_) {
             painter.setPen(QPen(QColor(255, 255, 0), 3.0));

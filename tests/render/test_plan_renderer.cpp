@@ -284,6 +284,30 @@ class TestPlanRenderer : public QObject {
             }));
     }
 
+    // Drones taking off from one spot: both markers show, the second beside the first.
+    void startsAtOneSpotAreFannedOut() {
+        const ClassGrid grid = twoClassGrid();
+        const ClassTable classes = twoClassTable();
+        render::PlanRenderer renderer;
+        renderer.setMap(&grid, &classes);
+        renderer.setStarts({{1050.0, 4950.0}, {1050.0, 4950.0}});
+        QImage image(400, 200, QImage::Format_RGB32);
+        QPainter painter(&image);
+        const QTransform transform = render::PlanRenderer::fitTransform(grid, QSizeF(400, 200));
+        renderer.paint(painter, transform, QRectF(0, 0, 400, 200));
+        painter.end();
+        // Both robots' colours near (100, 100), where the start lies at 2 pixels a metre.
+        const auto seen = [&](const QColor& colour) {
+            for (int y = 85; y <= 115; ++y)
+                for (int x = 85; x <= 140; ++x)
+                    if (near(image.pixelColor(x, y), colour, 10))
+                        return true;
+            return false;
+        };
+        QVERIFY(seen(render::RobotPalette::colour(0)));
+        QVERIFY(seen(render::RobotPalette::colour(1)));
+    }
+
     // An aircraft's reach in one flight: a dashed ring of that radius round its start in the robot's colour,
     // none without one.
     void ringsTheGroundAFlightReaches() {
