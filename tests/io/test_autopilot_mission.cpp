@@ -44,6 +44,15 @@ CoveragePath lawnmower(int rows, int columns, double slow, double fast) {
     return path;
 }
 
+// A waypoint x metres east and y north of the lawnmower's corner, on land crossed at 5 m/s.
+void addAtFiveMetresASecond(CoveragePath& path, double x, double y) {
+    Waypoint point;
+    point.x = 301900.0 + x;
+    point.y = 4154080.0 + y;
+    point.speedMetresPerSecond = 5.0F;
+    path.waypoints.push_back(point);
+}
+
 // Whether point p lies on the segment from a to b (within a micrometre).
 bool onSegment(const Waypoint& a, const Waypoint& b, const Waypoint& p) {
     const double length = std::hypot(b.x - a.x, b.y - a.y);
@@ -410,13 +419,7 @@ class AutopilotMissionTest : public QObject {
     // reach begins again, so that every flight over the near ground fits.
     void partsOutOfReachEndWhereFlightsFitAgain() {
         CoveragePath path;
-        const auto add = [&path](double x, double y) {
-            Waypoint point;
-            point.x = 301900.0 + x;
-            point.y = 4154080.0 + y;
-            point.speedMetresPerSecond = 5.0F;
-            path.waypoints.push_back(point);
-        };
+        const auto add = [&path](double x, double y) { addAtFiveMetresASecond(path, x, y); };
         add(0.0, 0.0); // the start
         for (int row = 0; row < 2;
              ++row) { // 1.7 km out, beyond the 1.42 km a flight reaches and returns from
@@ -454,13 +457,7 @@ class AutopilotMissionTest : public QObject {
     // merge those flights into a few out of reach, as many short parts out of reach are already.
     void partsNearTheEdgeOfTheReachStayFlights() {
         CoveragePath path;
-        const auto add = [&path](double x, double y) {
-            Waypoint point;
-            point.x = 301900.0 + x;
-            point.y = 4154080.0 + y;
-            point.speedMetresPerSecond = 5.0F;
-            path.waypoints.push_back(point);
-        };
+        const auto add = [&path](double x, double y) { addAtFiveMetresASecond(path, x, y); };
         // Lines north and south, 1.1 to 1.55 km north of the take-off: each crosses the 1.42 km a flight
         // reaches, so the ground out of reach comes in many short stretches between flights that fit.
         for (int column = 0; column < 30; ++column) {
