@@ -53,6 +53,16 @@ void addAtFiveMetresASecond(CoveragePath& path, double x, double y) {
     path.waypoints.push_back(point);
 }
 
+// A multirotor at 5 m/s on 10-minute flights, without an item limit.
+VehicleSettings tenMinuteDrone() {
+    VehicleSettings drone;
+    drone.type = VehicleType::Multirotor;
+    drone.cruiseSpeedMetresPerSecond = 5.0;
+    drone.maxWaypoints = 0;
+    drone.flightTimeSeconds = 600.0;
+    return drone;
+}
+
 // Whether point p lies on the segment from a to b (within a micrometre).
 bool onSegment(const Waypoint& a, const Waypoint& b, const Waypoint& p) {
     const double length = std::hypot(b.x - a.x, b.y - a.y);
@@ -430,11 +440,7 @@ class AutopilotMissionTest : public QObject {
             add(row % 2 == 0 ? 0.0 : 400.0, 100.0 + 10.0 * row);
             add(row % 2 == 0 ? 400.0 : 0.0, 100.0 + 10.0 * row);
         }
-        VehicleSettings drone;
-        drone.type = VehicleType::Multirotor;
-        drone.cruiseSpeedMetresPerSecond = 5.0;
-        drone.maxWaypoints = 0;
-        drone.flightTimeSeconds = 600.0;
+        const VehicleSettings drone = tenMinuteDrone();
         const AutopilotMission mission = autopilotMission(path, drone, shaping(0.1, true), noTurnPrice);
         int tooLong = 0;
         int nearFlights = 0;
@@ -465,11 +471,7 @@ class AutopilotMissionTest : public QObject {
             add(10.0 * column, column % 2 == 0 ? 1550.0 : 1100.0);
         }
         path.takeOff = MapPoint{301900.0, 4154080.0};
-        VehicleSettings drone;
-        drone.type = VehicleType::Multirotor;
-        drone.cruiseSpeedMetresPerSecond = 5.0;
-        drone.maxWaypoints = 0;
-        drone.flightTimeSeconds = 600.0;
+        const VehicleSettings drone = tenMinuteDrone();
         const AutopilotMission mission = autopilotMission(path, drone, shaping(0.1, true), noTurnPrice);
         int tooLong = 0;
         for (const MissionPart& part : mission.parts) {
