@@ -335,8 +335,7 @@ Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& class
         const auto problem = startPointProblem(reconciled.grid, classes, start, startName(reconciled, start));
         // An aircraft takes off where it stands and flies to the nearest free cell (the planner checks that
         // one flight reaches it).
-        const bool flies = robot < flyingRobots.size() && flyingRobots[robot];
-        if (problem && !(flies && takesOffThere(reconciled.grid, start, *problem)))
+        if (problem && !robotTakesOffThere(flyingRobots, robot, reconciled.grid, start, *problem))
             return Status::failure(names(MissionField::start(static_cast<int>(robot))) + ": " +
                                    problem->detail +
                                    startAdvice(reconciled, *problem, start, static_cast<int>(robot), names));

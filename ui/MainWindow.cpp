@@ -1014,9 +1014,10 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
                                : asSentence(warnings.empty() ? std::string() : warnings.back());
     // Starts the new area leaves out are kept, to be moved: say so now rather than at Plan.
     QStringList outside;
+    const std::vector<bool> flying = io::flyingRobots(document_->mission());
     for (std::size_t robot = 0; robot < document_->robots().size(); ++robot)
         if (document_->startProblem(document_->robots()[robot].start, static_cast<int>(robot), {},
-                                    document_->robotFlies(static_cast<int>(robot))))
+                                    flying[robot]))
             outside << QString::fromStdString(document_->robots()[robot].name);
     if (outside.size() == 1)
         message +=

@@ -267,14 +267,20 @@ void MapCanvas::paintEvent(QPaintEvent* /*event*/) {
     paintDrawing(painter);
     paintScaleBar(painter);
     paintNorthArrow(painter);
-    if (const QString banner = bannerText(); !banner.isEmpty())
-        paintBanner(painter, banner, document_->planStale() ? QColor(255, 236, 179) : QColor(227, 242, 253));
+    // planStale compares every input with the plan's: once per paint.
+    const bool stale = document_->planStale();
+    if (const QString banner = bannerText(stale); !banner.isEmpty())
+        paintBanner(painter, banner, stale ? QColor(255, 236, 179) : QColor(227, 242, 253));
 }
 
 QString MapCanvas::bannerText() const {
+    return bannerText(document_->planStale());
+}
+
+QString MapCanvas::bannerText(bool planStale) const {
     if (!document_->hasMap())
         return {};
-    if (document_->planStale())
+    if (planStale)
         return tr("Plan is out of date: inputs changed since it was computed. Press Plan (F5).");
     if (document_->robots().empty())
         return tr("Place robot starts with the Place start tool (S), then press Plan (F5).");

@@ -90,6 +90,7 @@ class MapCanvas : public QWidget {
     void paintScaleBar(QPainter& painter) const;
     void paintNorthArrow(QPainter& painter) const;
     void paintBanner(QPainter& painter, const QString& text, const QColor& colour) const;
+    [[nodiscard]] QString bannerText(bool planStale) const;
     void updateCursor(QPointF devicePoint);
     void paintDrawing(QPainter& painter) const;
     void finishDrawing();

@@ -71,6 +71,11 @@ bool takesOffThere(const ClassGrid& grid, MapPoint point, const StartPointProble
                       grid.outside[grid.index(pixel->column, pixel->row)] == ClassGrid::inNoGoZone);
 }
 
+bool robotTakesOffThere(const std::vector<bool>& flyingRobots, std::size_t robot, const ClassGrid& grid,
+                        MapPoint point, const StartPointProblem& problem) {
+    return robot < flyingRobots.size() && flyingRobots[robot] && takesOffThere(grid, point, problem);
+}
+
 std::string describePoint(MapPoint point) {
     return "(" + centimetres(point.x) + ", " + centimetres(point.y) + ")";
 }

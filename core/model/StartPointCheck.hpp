@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace mcpp {
 
@@ -26,6 +27,12 @@ struct StartPointProblem {
 // on the raster (outside the task area, on an obstacle, in another robot's cell) but in a no-go zone, not
 // off it (mistyped coordinates, most likely) nor at a point that is not a number.
 [[nodiscard]] bool takesOffThere(const ClassGrid& grid, MapPoint point, const StartPointProblem& problem);
+// Whether robot `robot` is an aircraft (by robot in `flyingRobots`, as PlanningProblem holds them; missing:
+// no) that may take off at its start despite that problem: the one rule the planner, the mission check and
+// the window share.
+[[nodiscard]] bool robotTakesOffThere(const std::vector<bool>& flyingRobots, std::size_t robot,
+                                      const ClassGrid& grid, MapPoint point,
+                                      const StartPointProblem& problem);
 // "(512300.25, 4120400.5)": to the centimetre, as the messages give planning-frame points.
 [[nodiscard]] std::string describePoint(MapPoint point);
 

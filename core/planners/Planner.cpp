@@ -53,9 +53,9 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
         const bool snappable = problemAtStart->kind != Kind::InvalidParameter;
         // An aircraft takes off where it stands and flies to its path (PlanningRun::locateStarts), except
         // on batteries: those sorties start from the start's cell.
-        const bool takesOff = !planner.fliesOnBatteries() && robot < problem.flyingRobots.size() &&
-                              problem.flyingRobots[robot] &&
-                              takesOffThere(problem.grid, problem.starts[robot], *problemAtStart);
+        const bool takesOff =
+            !planner.fliesOnBatteries() && robotTakesOffThere(problem.flyingRobots, robot, problem.grid,
+                                                              problem.starts[robot], *problemAtStart);
         if (!snappable || !(snap || takesOff))
             throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot),
                                             problemAtStart->detail);

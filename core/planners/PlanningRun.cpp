@@ -48,10 +48,6 @@ int nearestFreeCell(const CellGraph& graph, const std::vector<int>& ownerOfCell,
 
 } // namespace
 
-bool PlanningRun::flies(std::size_t robot) const {
-    return takeOffsAllowed_ && robot < problem_.flyingRobots.size() && problem_.flyingRobots[robot];
-}
-
 // How far one flight of a robot reaches out and back; infinite where its trips are not counted.
 double PlanningRun::reachMetres(std::size_t robot) const {
     return robot < problem_.robotFlights.size() ? problem_.robotFlights[robot].reachMetres()
@@ -132,7 +128,8 @@ int PlanningRun::placeBlockedStart(std::size_t robot, std::vector<int>& ownerOfC
     const StartPointProblem problem =
         *startCellProblem(start, graph.cellAt(start), ownerOfCell, leftOutBecause);
     const bool snap = parameters_.boolean("snap_starts_to_free_cells");
-    bool takesOff = flies(robot) && takesOffThere(problem_.grid, start, problem);
+    bool takesOff =
+        takeOffsAllowed_ && robotTakesOffThere(problem_.flyingRobots, robot, problem_.grid, start, problem);
     if (!snap && !takesOff)
         throw PlanningError::aboutStart(problem.kind, robotIndex, problem.detail);
     const int cell = nearestFreeCell(graph, ownerOfCell, start);

@@ -65,7 +65,6 @@ class PlanningRun {
     void allowTakeOffs(bool allowed) { takeOffsAllowed_ = allowed; }
 
   private:
-    [[nodiscard]] bool flies(std::size_t robot) const;
     [[nodiscard]] double reachMetres(std::size_t robot) const;
     void takeOffAt(int robot, MapPoint given, MapPoint pathStart, const std::string& why);
     [[nodiscard]] std::optional<StartPointProblem> startCellProblem(MapPoint start, int cell,
