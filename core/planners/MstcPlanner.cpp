@@ -87,6 +87,10 @@ PlannerDescription MstcPlanner::describe() const {
                          "tour from its start to the next robot's"),
         TurnSearch::roundsParameter(),
     };
+    description.balanceSwitch = "balanced";
+    description.unbalancedBecause =
+        "each robot covers the tour from its start to the next robot's, so a robot "
+        "whose start another's closely follows along the tour gets little";
     return description;
 }
 

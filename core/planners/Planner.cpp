@@ -165,10 +165,20 @@ std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
            (noGoOnly ? "the no-go zone that much larger" : "the area that far inside the fence");
 }
 
+// "set Balanced pieces on (balanced=true)": the planner's switch that evens its pieces out.
+std::string balanceSwitchAdvice(const PlannerDescription& planner) {
+    std::string label = planner.balanceSwitch;
+    for (const ParameterSpec& spec : planner.parameters)
+        if (spec.key == planner.balanceSwitch)
+            label = spec.label;
+    return "set " + label + " on (" + planner.balanceSwitch + "=true) to cut pieces of equal time";
+}
+
 // Robots left with less than half a fair share where the longest path is well above the bound: most often
 // starts so close together that the others' regions wall theirs in. Empty where there are none, and on maps
 // whose starts lie in several parts (the bound is then one part's share, not every robot's).
-std::string unevenPlanMessage(const PlanMetrics& metrics, const PlannerDescription& planner) {
+std::string unevenPlanMessage(const PlanMetrics& metrics, const PlannerDescription& planner,
+                              const ParameterValues& parameters) {
     constexpr double noticeableRatio = 1.05;
     if (!(metrics.ratio > noticeableRatio) || !(metrics.lowerBoundSeconds > 0.0) ||
         !metrics.confinedRobots.empty())
@@ -182,9 +192,13 @@ std::string unevenPlanMessage(const PlanMetrics& metrics, const PlannerDescripti
     std::ostringstream ratio;
     ratio.precision(3);
     ratio << metrics.ratio;
-    return robotList(shortOfWork) + (shortOfWork.size() == 1 ? " covers" : " cover") +
-           " less than half of a fair share, and the longest path takes " + ratio.str() +
-           " times the lower bound: " +
+    const std::string uneven = robotList(shortOfWork) + (shortOfWork.size() == 1 ? " covers" : " cover") +
+                               " less than half of a fair share, and the longest path takes " + ratio.str() +
+                               " times the lower bound: ";
+    if (!planner.balanceSwitch.empty() && parameters.has(planner.balanceSwitch) &&
+        !parameters.boolean(planner.balanceSwitch))
+        return uneven + planner.unbalancedBecause + "; " + balanceSwitchAdvice(planner);
+    return uneven +
            (planner.fliesOnBatteries()
                 ? "a short battery, or a slow robot's, leaves a robot little within reach of its charger, "
                   "and "
@@ -391,7 +405,7 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     // Nor is a plan that divides the work at one speed between robots of their own (own-speeds-unbalanced),
     // or one that evens out time in the field, where paths of different lengths end together.
     const bool unevenSpeeds = !plan.robotSpeeds.empty() && !planner.balancesOwnSpeeds;
-    if (const std::string uneven = unevenPlanMessage(plan.metrics, planner);
+    if (const std::string uneven = unevenPlanMessage(plan.metrics, planner, plan.parameters);
         !uneven.empty() && !playsEvents && !unevenSpeeds && !fieldPaced)
         planningRun.addIssue(IssueSeverity::Warning, "uneven-plan", uneven);
     progress.report("done", 1.0);

@@ -42,6 +42,11 @@ struct PlannerDescription {
     // 2 x the smallest FOV; where quadTreeSwitch names a boolean parameter, that parameter chooses.
     bool quadTreeCells = false;
     std::string quadTreeSwitch;
+    // A boolean parameter that, on, cuts the work into pieces of equal time whatever the starts, and why
+    // a plan with it off may leave a robot little (e.g. MSTC: pieces cut at the starts along one tour). The
+    // uneven-plan warning gives that reason and names the switch while it is off.
+    std::string balanceSwitch;
+    std::string unbalancedBecause;
 
     [[nodiscard]] bool plansOnQuadTree(const ParameterValues& values) const {
         if (!quadTreeSwitch.empty() && values.has(quadTreeSwitch))

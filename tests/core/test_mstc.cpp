@@ -3,6 +3,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <algorithm>
 
 using namespace mcpp;
 
@@ -34,6 +35,12 @@ double totalLength(const Plan& plan) {
     return length;
 }
 
+const PlanIssue* unevenPlanIssue(const Plan& plan) {
+    const auto found = std::find_if(plan.issues.begin(), plan.issues.end(),
+                                    [](const PlanIssue& issue) { return issue.code == "uneven-plan"; });
+    return found == plan.issues.end() ? nullptr : &*found;
+}
+
 int totalRepeats(const Plan& plan) {
     int repeats = 0;
     for (const CoveragePath& path : plan.paths)
@@ -62,8 +69,9 @@ class MstcTest : public QObject {
             QVERIFY(!path.closed);
     }
 
-    // Two robots side by side at one end: cut at the starts, one of them walks nearly the whole loop.
-    // Balanced, each covers half the loop and the makespan nearly halves.
+    // Two robots side by side at one end: cut at the starts, one of them walks nearly the whole loop, and
+    // the warning names the switch rather than advising starts spread out. Balanced, each covers half the
+    // loop, the makespan nearly halves and nothing is warned of.
     void balancedPiecesEvenOutBunchedStarts() {
         PlanningProblem forwardProblem =
             test::drawnProblem(rowsOf(2, std::string(40, '.')), {{0.5, 0.5}, {2.5, 0.5}});
@@ -77,6 +85,12 @@ class MstcTest : public QObject {
         QVERIFY2(balanced.metrics.makespanSeconds <= 44.0,
                  qPrintable(QString::number(balanced.metrics.makespanSeconds)));
         QCOMPARE(balanced.metrics.coveredFraction, 1.0);
+        const PlanIssue* uneven = unevenPlanIssue(forward);
+        QVERIFY(uneven != nullptr);
+        QVERIFY2(uneven->message.find("from its start to the next robot's") != std::string::npos &&
+                     uneven->message.find("set Balanced pieces on (balanced=true)") != std::string::npos,
+                 uneven->message.c_str());
+        QVERIFY(unevenPlanIssue(balanced) == nullptr);
     }
 
     // A U: the tour runs down one arm and up the other; robots at the tips share it without repeats.
