@@ -108,6 +108,22 @@ std::vector<FrameRing> flightReachRings(const Plan& plan, const std::vector<doub
     return rings;
 }
 
+bool someRingShows(const ClassGrid& frame, const std::vector<FrameRing>& rings) {
+    const double minX = frame.originX;
+    const double maxX = frame.maxX();
+    const double minY = frame.minY();
+    const double maxY = frame.originY;
+    return std::any_of(rings.begin(), rings.end(), [&](const FrameRing& ring) {
+        const double x = ring.centre.x;
+        const double y = ring.centre.y;
+        const double nearest =
+            std::hypot(std::max({minX - x, 0.0, x - maxX}), std::max({minY - y, 0.0, y - maxY}));
+        const double farthest = std::hypot(std::max(std::abs(x - minX), std::abs(x - maxX)),
+                                           std::max(std::abs(y - minY), std::abs(y - maxY)));
+        return ring.radiusMetres > 0.0 && nearest <= ring.radiusMetres && ring.radiusMetres <= farthest;
+    });
+}
+
 ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans,
                     const std::vector<FrameRing>& rings) {
     ClassGrid frame = extentOf(grid);

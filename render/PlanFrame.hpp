@@ -26,5 +26,7 @@ struct FrameRing {
 // take-off point beside the area), of the robot's reach in metres (by robot; 0 or missing: none).
 [[nodiscard]] std::vector<FrameRing> flightReachRings(const Plan& plan,
                                                       const std::vector<double>& reachMetres);
+// Whether some ring's outline crosses the frame: one wholly outside it, or wholly round it, shows nothing.
+[[nodiscard]] bool someRingShows(const ClassGrid& frame, const std::vector<FrameRing>& rings);
 
 } // namespace mcpp::render

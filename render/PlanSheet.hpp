@@ -37,6 +37,7 @@ class PlanSheet {
     [[nodiscard]] QRect mapArea() const { return map_; }
     [[nodiscard]] QRectF legendArea() const { return legend_; }
     [[nodiscard]] const QString& title() const { return title_; }
+    [[nodiscard]] const std::vector<LegendSection>& legend() const { return sections_; }
     void paint(QPainter& painter) const;
 
   private:

@@ -185,6 +185,15 @@ class TestPlanRenderer : public QObject {
         QCOMPARE(ringed.columns, 6);
         QCOMPARE(ringed.rows, 6);
         QCOMPARE(render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 1000.0}}).columns, 4);
+        // Its outline shows in the frame (x 1090-1130, y 4930-4970) when it crosses it: not wholly round
+        // it, nor wholly beside it.
+        QVERIFY(render::someRingShows(smallFrame, {{{1110.0, 4950.0}, 25.0}}));
+        QVERIFY(render::someRingShows(smallFrame, {{{1110.0, 4950.0}, 15.0}}));
+        QVERIFY(!render::someRingShows(smallFrame, {{{1110.0, 4950.0}, 1000.0}}));
+        QVERIFY(!render::someRingShows(smallFrame, {{{1160.0, 4950.0}, 25.0}}));
+        QVERIFY(render::someRingShows(smallFrame, {{{1160.0, 4950.0}, 35.0}}));
+        QVERIFY(!render::someRingShows(smallFrame, {{{1110.0, 4950.0}, 0.0}}));
+        QVERIFY(render::someRingShows(smallFrame, {{{1160.0, 4950.0}, 25.0}, {{1110.0, 4950.0}, 15.0}}));
         // On a raster twenty times as wide, a twentieth of it (100 m) would shrink the cell to a speck: the
         // margin stays within half the plan's extent (10 m), as above.
         ClassGrid wide = grid;
@@ -357,6 +366,17 @@ class TestPlanRenderer : public QObject {
             for (int x = 0; x < without.width(); ++x)
                 differing += with.pixel(x, y) != without.pixel(x, y) ? 1 : 0;
         QVERIFY2(differing > 200, qPrintable(QString::number(differing)));
+        // The legend explains the ring only where it shows: one of 100 km lies round the whole sheet.
+        const auto explainsRings = [&](double reach) {
+            const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, {reach}}, QSize(400, 400));
+            for (const render::LegendSection& section : sheet.legend())
+                for (const render::LegendItem& item : section.items)
+                    if (item.symbol == render::LegendSymbol::FlightReach)
+                        return true;
+            return false;
+        };
+        QVERIFY(explainsRings(40.0));
+        QVERIFY(!explainsRings(100000.0));
     }
 
     // The rings' legend line joins "On the map", or makes it before there is a plan.
