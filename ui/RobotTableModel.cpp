@@ -13,12 +13,21 @@
 namespace mcpp::ui {
 
 RobotTableModel::RobotTableModel(MissionDocument* document, QUndoStack* undoStack, QObject* parent)
-    : QAbstractTableModel(parent), document_(document), undoStack_(undoStack) {
+    : QAbstractTableModel(parent), document_(document), undoStack_(undoStack),
+      shownRows_(static_cast<int>(document_->robots().size())) {
     auto reset = [this] {
         beginResetModel();
+        shownRows_ = rowCount();
         endResetModel();
     };
-    connect(document_, &MissionDocument::robotsChanged, this, reset);
+    // An edit in the table changes the robots from within the view's commit: resetting then would pull the
+    // editor from under it, so rows that stay are only redrawn.
+    connect(document_, &MissionDocument::robotsChanged, this, [this, reset] {
+        if (rowCount() != shownRows_)
+            reset();
+        else if (shownRows_ > 0)
+            emit dataChanged(index(0, 0), index(shownRows_ - 1, ColumnCount - 1));
+    });
     connect(document_, &MissionDocument::mapChanged, this, reset);
 }
 

@@ -58,6 +58,7 @@ class RobotTableModel : public QAbstractTableModel {
 
     MissionDocument* document_;
     QUndoStack* undoStack_;
+    int shownRows_ = 0; // the rows the views were last told of
 };
 
 } // namespace mcpp::ui

@@ -4,6 +4,7 @@
 #include "ui/MissionDocument.hpp"
 #include "ui/RobotTableModel.hpp"
 
+#include <QLineEdit>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QUndoStack>
@@ -169,6 +170,31 @@ class TestRobotTableModel : public QObject {
         QVERIFY(batteryColumnsHidden(false));
         window.document()->setPlannerChoice({"mdstc", {}});
         QVERIFY(batteryColumnsHidden(true));
+    }
+
+    // A start typed into the table moves the robot; the editor the move closes is not committed twice (Qt
+    // warns of "an editor that does not belong to this view" where the table was reset under it).
+    void aStartTypedInTheTableMovesTheRobot() {
+        QTableView view;
+        view.setModel(robots_.get());
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        const QModelIndex easting = robots_->index(0, ui::RobotTableModel::Easting);
+        const double moved = document_->robots()[0].start.x + 10.0;
+        QTest::failOnWarning(QRegularExpression(QStringLiteral("commitData|editor")));
+        view.edit(easting);
+        auto* editor = qobject_cast<QLineEdit*>(view.indexWidget(easting));
+        if (editor == nullptr)
+            editor = view.findChild<QLineEdit*>();
+        QVERIFY(editor != nullptr);
+        editor->setText(QString::number(moved, 'f', 2));
+        QTest::keyClick(editor, Qt::Key_Return);
+        QCoreApplication::processEvents();
+        view.setFocus();
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+        QCOMPARE(document_->robots()[0].start.x, moved);
+        QCOMPARE(undoStack_->count(), 1);
+        QCOMPARE(robots_->rowCount(), 2);
     }
 
   private:
