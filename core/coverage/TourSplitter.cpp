@@ -26,17 +26,6 @@ double TourSplitter::forwardSeconds(int from, int to) const {
     return difference >= 0.0 ? difference : difference + reached_.back();
 }
 
-// The first point at or after a time along the tour (times wrap round).
-int TourSplitter::indexAtTime(double seconds) const {
-    const double total = reached_.back();
-    double wrapped = std::fmod(seconds, total);
-    if (wrapped < 0.0)
-        wrapped += total;
-    const auto found = std::lower_bound(reached_.begin(), reached_.end() - 1, wrapped);
-    const auto index = static_cast<int>(found - reached_.begin());
-    return index >= size_ ? 0 : index;
-}
-
 std::vector<TourSplitter::Share> TourSplitter::forwardPieces(const std::vector<int>& positions) const {
     std::vector<int> byPlace(positions.size());
     std::iota(byPlace.begin(), byPlace.end(), 0);
@@ -56,21 +45,6 @@ std::vector<TourSplitter::Share> TourSplitter::forwardPieces(const std::vector<i
     return orders;
 }
 
-std::vector<TourSplitter::Piece> TourSplitter::equalPieces(double offsetSeconds, std::size_t count) const {
-    const double length = reached_.back() / static_cast<double>(count);
-    std::vector<int> cuts;
-    for (std::size_t k = 0; k < count; ++k)
-        cuts.push_back(indexAtTime(offsetSeconds + static_cast<double>(k) * length));
-    std::vector<Piece> pieces;
-    for (std::size_t k = 0; k < count; ++k) {
-        const int first = cuts[k];
-        const int end = cuts[(k + 1) % count];
-        const bool empty = count > 1 && first == end;
-        pieces.push_back({first, previous(end), empty});
-    }
-    return pieces;
-}
-
 void TourSplitter::walk(std::vector<int>& order, int from, int to, bool forwards) const {
     for (int index = from;; index = forwards ? next(index) : previous(index)) {
         order.push_back(index);
@@ -79,84 +53,104 @@ void TourSplitter::walk(std::vector<int>& order, int from, int to, bool forwards
     }
 }
 
-// The quickest way for a robot at `position` to cover `piece`: from inside it, back to one end first; from
-// outside, along the tour to the nearer end, forwards or backwards.
-TourSplitter::Route TourSplitter::route(int position, const Piece& piece, bool withOrder) const {
-    Route best{std::numeric_limits<double>::infinity(), {}};
-    if (piece.empty) {
-        best.seconds = 0.0;
-        if (withOrder) {
-            best.share.order = {position};
-            best.share.approach = 1; // it stays where it is, in another robot's piece
-        }
-        return best;
-    }
-    const double length = forwardSeconds(piece.first, piece.last);
-    const bool inside = forwardSeconds(piece.first, position) <= length;
-    struct Option {
-        double seconds;
-        int approachEnd; // the end reached first
-        bool approachForwards;
-    };
-    std::vector<Option> options;
-    if (inside) {
-        options.push_back({forwardSeconds(piece.first, position) + length, piece.first, false});
-        options.push_back({forwardSeconds(position, piece.last) + length, piece.last, true});
-    } else {
-        options.push_back({forwardSeconds(position, piece.first) + length, piece.first, true});
-        options.push_back({forwardSeconds(piece.last, position) + length, piece.last, false});
-    }
-    const Option chosen =
-        *std::min_element(options.begin(), options.end(),
-                          [](const Option& a, const Option& b) { return a.seconds < b.seconds; });
-    best.seconds = chosen.seconds;
-    if (!withOrder)
-        return best;
-    walk(best.share.order, position, chosen.approachEnd, chosen.approachForwards);
-    best.share.order.pop_back(); // the end is where the piece begins
-    best.share.approach = best.share.order.size();
-    const bool pieceForwards = chosen.approachEnd == piece.first;
-    walk(best.share.order, chosen.approachEnd, pieceForwards ? piece.last : piece.first, pieceForwards);
-    return best;
-}
-
-std::vector<TourSplitter::Share> TourSplitter::balancedPieces(const std::vector<int>& positions) const {
-    const std::size_t robots = positions.size();
-    std::vector<int> byPlace(robots);
+std::vector<int> TourSplitter::robotsByPlace(const std::vector<int>& positions) const {
+    std::vector<int> byPlace(positions.size());
     std::iota(byPlace.begin(), byPlace.end(), 0);
     std::sort(byPlace.begin(), byPlace.end(), [&](int a, int b) {
         return positions[static_cast<std::size_t>(a)] < positions[static_cast<std::size_t>(b)];
     });
-    // Cuts at a robot's position, or half a piece after it; robots keep their order along the tour.
-    const double half = reached_.back() / static_cast<double>(robots) / 2.0;
-    double bestMakespan = std::numeric_limits<double>::infinity();
-    std::vector<Piece> bestPieces;
-    std::size_t bestShift = 0;
-    for (int position : positions)
-        for (double offset : {reached_[static_cast<std::size_t>(position)],
-                              reached_[static_cast<std::size_t>(position)] + half}) {
-            const std::vector<Piece> pieces = equalPieces(offset, robots);
-            for (std::size_t shift = 0; shift < robots; ++shift) {
-                double makespan = 0.0;
-                for (std::size_t k = 0; k < robots && makespan < bestMakespan; ++k) {
-                    const int robot = byPlace[k];
-                    makespan = std::max(makespan, route(positions[static_cast<std::size_t>(robot)],
-                                                        pieces[(k + shift) % robots], false)
-                                                      .seconds);
-                }
-                if (makespan < bestMakespan) {
-                    bestMakespan = makespan;
-                    bestPieces = pieces;
-                    bestShift = shift;
-                }
-            }
+    return byPlace;
+}
+
+// Robots in their order along the tour from byPlace[firstRobot], pieces from `offset` on: each takes the
+// most points it covers within the limit, its way there included. Empty where they do not cover the tour.
+std::optional<std::vector<TourSplitter::Piece>>
+TourSplitter::piecesWithin(double limitSeconds, const std::vector<int>& byPlace, std::size_t firstRobot,
+                           int offset, const std::vector<std::vector<float>>& secondsToCell,
+                           const std::vector<int>& cellOfPoint) const {
+    const std::size_t robots = byPlace.size();
+    std::vector<Piece> pieces(robots); // by place
+    int covered = 0;
+    int at = offset;
+    for (std::size_t j = 0; j < robots; ++j) {
+        const std::size_t place = (firstRobot + j) % robots;
+        const std::vector<float>& toCell = secondsToCell[static_cast<std::size_t>(byPlace[place])];
+        const auto approach = [&](int point) {
+            return static_cast<double>(
+                toCell[static_cast<std::size_t>(cellOfPoint[static_cast<std::size_t>(point)])]);
+        };
+        const double toFirst = approach(at);
+        int taken = 0;
+        for (int count = 1; covered + count <= size_; ++count) {
+            const int last = (at + count - 1) % size_;
+            const double piece = forwardSeconds(at, last);
+            if (piece > limitSeconds)
+                break;
+            if (piece + std::min(toFirst, approach(last)) <= limitSeconds)
+                taken = count;
         }
-    std::vector<Share> orders(robots);
-    for (std::size_t k = 0; k < robots; ++k) {
-        const auto robot = static_cast<std::size_t>(byPlace[k]);
-        orders[robot] = route(positions[robot], bestPieces[(k + bestShift) % robots], true).share;
+        pieces[place] = {at, (at + std::max(taken, 1) - 1) % size_, taken == 0};
+        covered += taken;
+        at = (at + taken) % size_;
     }
-    return orders;
+    if (covered < size_)
+        return std::nullopt;
+    return pieces;
+}
+
+std::vector<TourSplitter::Share>
+TourSplitter::piecesReachedDirectly(const std::vector<int>& positions,
+                                    const std::vector<std::vector<float>>& secondsToCell,
+                                    const std::vector<int>& cellOfPoint) const {
+    const std::size_t robots = positions.size();
+    const std::vector<int> byPlace = robotsByPlace(positions);
+    // The pieces within a limit, the first robot's at its own position, for any robot first.
+    const auto within = [&](double limit) -> std::optional<std::pair<std::vector<Piece>, std::size_t>> {
+        for (std::size_t first = 0; first < robots; ++first)
+            if (auto pieces =
+                    piecesWithin(limit, byPlace, first, positions[static_cast<std::size_t>(byPlace[first])],
+                                 secondsToCell, cellOfPoint))
+                return std::make_pair(std::move(*pieces), first);
+        return std::nullopt;
+    };
+    // Between an even share and twice it, most often: doubled until the robots cover the tour.
+    double low = reached_.back() / static_cast<double>(robots);
+    double high = 2.0 * low;
+    auto best = within(high);
+    for (int doubling = 0; !best && doubling < 64; ++doubling) {
+        low = high;
+        high *= 2.0;
+        best = within(high);
+    }
+    // To a 16 000th of the range: a makespan that near the best is as good.
+    constexpr int halvings = 14;
+    for (int halving = 0; halving < halvings && best; ++halving) {
+        const double middle = (low + high) / 2.0;
+        if (auto found = within(middle)) {
+            high = middle;
+            best = std::move(found);
+        } else {
+            low = middle;
+        }
+    }
+    std::vector<Share> shares(robots);
+    for (std::size_t place = 0; place < robots && best; ++place) {
+        const auto robot = static_cast<std::size_t>(byPlace[place]);
+        const Piece& piece = best->first[place];
+        Share& share = shares[robot];
+        if (piece.empty) {
+            share.order = {positions[robot]};
+            share.approach = 1;
+            continue;
+        }
+        const std::vector<float>& toCell = secondsToCell[robot];
+        const auto approach = [&](int point) {
+            return toCell[static_cast<std::size_t>(cellOfPoint[static_cast<std::size_t>(point)])];
+        };
+        const bool forwards = approach(piece.first) <= approach(piece.last);
+        walk(share.order, forwards ? piece.first : piece.last, forwards ? piece.last : piece.first, forwards);
+    }
+    return shares;
 }
 
 } // namespace mcpp

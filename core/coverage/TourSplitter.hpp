@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace mcpp {
@@ -22,9 +23,15 @@ class TourSplitter {
     // Without backtracking: each robot goes forward from its own position to the next robot's.
     [[nodiscard]] std::vector<Share> forwardPieces(const std::vector<int>& positions) const;
 
-    // Balanced: pieces of equal time, each robot walking along the tour, forwards or backwards, to one end
-    // of its own; the cuts and the order of robots along the tour are chosen for the shortest makespan.
-    [[nodiscard]] std::vector<Share> balancedPieces(const std::vector<int>& positions) const;
+    // Balanced: each robot goes to its piece by a way of its own, not along the tour:
+    // secondsToCell[k][cellOfPoint[i]] is robot k's time from its start to tour point i. Pieces are cut,
+    // robots in their order along the tour, for the shortest makespan, way there included; each enters its
+    // piece at the end it reaches sooner. A Share holds its piece only, from that end (approach 0); a robot
+    // left no piece stays at its position (approach 1).
+    [[nodiscard]] std::vector<Share>
+    piecesReachedDirectly(const std::vector<int>& positions,
+                          const std::vector<std::vector<float>>& secondsToCell,
+                          const std::vector<int>& cellOfPoint) const;
 
   private:
     struct Piece {
@@ -32,18 +39,16 @@ class TourSplitter {
         int last;  // tour index; the piece runs forward from first to last
         bool empty;
     };
-    struct Route {
-        double seconds;
-        Share share;
-    };
 
     [[nodiscard]] double forwardSeconds(int from, int to) const;
     [[nodiscard]] int next(int index) const;
     [[nodiscard]] int previous(int index) const;
-    [[nodiscard]] int indexAtTime(double seconds) const;
-    [[nodiscard]] Route route(int position, const Piece& piece, bool withOrder) const;
     void walk(std::vector<int>& order, int from, int to, bool forwards) const;
-    [[nodiscard]] std::vector<Piece> equalPieces(double offsetSeconds, std::size_t count) const;
+    [[nodiscard]] std::optional<std::vector<Piece>>
+    piecesWithin(double limitSeconds, const std::vector<int>& byPlace, std::size_t firstRobot, int offset,
+                 const std::vector<std::vector<float>>& secondsToCell,
+                 const std::vector<int>& cellOfPoint) const;
+    [[nodiscard]] std::vector<int> robotsByPlace(const std::vector<int>& positions) const;
 
     std::vector<double> reached_; // time from point 0 to each point, going forward; the tour's time last
     int size_;

@@ -1,11 +1,13 @@
 #include "core/planners/MstcPlanner.hpp"
 
 #include "core/allocation/StartComponents.hpp"
+#include "core/coverage/ApproachRoutes.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/TourSplitter.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/coverage/TurnSearch.hpp"
+#include "core/model/ParallelFor.hpp"
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
@@ -70,6 +72,71 @@ int tourPosition(const std::vector<Waypoint>& tour, int startCell, MapPoint star
     return best;
 }
 
+// The waypoints of a robot's way from its tour position to the tour point `entry` along `cells` (its start
+// cell first): in each cell between, the centre of the sub-cell in the entry's quarter, so that straight
+// runs of cells make straight legs; another free one where that is blocked.
+std::vector<Waypoint> approachWaypoints(const CellGraph& graph, const std::vector<Waypoint>& tour,
+                                        int position, const std::vector<int>& cells, const Waypoint& entry,
+                                        const std::vector<int>& tourPointOfCell) {
+    std::vector<Waypoint> way{tour[static_cast<std::size_t>(position)]};
+    const SubCell quarter = graph.cell(entry.cell).subCellAt({entry.x, entry.y});
+    for (std::size_t k = 1; k + 1 < cells.size(); ++k) {
+        const Cell cell = graph.cell(cells[k]);
+        SubCell chosen = quarter;
+        for (SubCell other : subCellsCounterClockwise)
+            if (!cell.isFree(chosen) && cell.isFree(other))
+                chosen = other;
+        Waypoint point = tour[static_cast<std::size_t>(tourPointOfCell[static_cast<std::size_t>(cells[k])])];
+        const MapPoint centre = cell.subCellCentre(chosen);
+        point.x = centre.x;
+        point.y = centre.y;
+        way.push_back(point);
+    }
+    if (way.back().x == entry.x && way.back().y == entry.y)
+        way.pop_back(); // it starts where its piece does
+    return way;
+}
+
+// A robot's walk: its way to its piece (the first `approach` points), then the piece.
+struct PieceWalk {
+    std::vector<Waypoint> walk;
+    std::size_t approach = 0;
+};
+
+// Balanced pieces, each robot going to its own by its quickest way (ApproachRoutes).
+std::vector<PieceWalk> directPieces(const CellGraph& graph, const std::vector<Waypoint>& tour,
+                                    const TourSplitter& splitter, const std::vector<int>& positions,
+                                    const std::vector<int>& robotStartCells) {
+    std::vector<int> tourPointOfCell(graph.size(), -1);
+    for (std::size_t i = 0; i < tour.size(); ++i)
+        if (tourPointOfCell[static_cast<std::size_t>(tour[i].cell)] < 0)
+            tourPointOfCell[static_cast<std::size_t>(tour[i].cell)] = static_cast<int>(i);
+    const ApproachRoutes routes(graph);
+    std::vector<std::vector<float>> secondsToCell(robotStartCells.size());
+    parallelFor(robotStartCells.size(),
+                [&](std::size_t k, int) { secondsToCell[k] = routes.secondsFrom(robotStartCells[k]); });
+    std::vector<int> cellOfPoint(tour.size());
+    for (std::size_t i = 0; i < tour.size(); ++i)
+        cellOfPoint[i] = tour[i].cell;
+    const std::vector<TourSplitter::Share> shares =
+        splitter.piecesReachedDirectly(positions, secondsToCell, cellOfPoint);
+    std::vector<PieceWalk> walks(shares.size());
+    parallelFor(shares.size(), [&](std::size_t k, int) {
+        const TourSplitter::Share& share = shares[k];
+        PieceWalk& piece = walks[k];
+        if (share.approach == 0) {
+            const Waypoint& entry = tour[static_cast<std::size_t>(share.order.front())];
+            piece.walk = approachWaypoints(graph, tour, positions[k],
+                                           routes.cellsBetween(robotStartCells[k], entry.cell), entry,
+                                           tourPointOfCell);
+        }
+        piece.approach = share.approach == 0 ? piece.walk.size() : share.approach;
+        for (const int index : share.order)
+            piece.walk.push_back(tour[static_cast<std::size_t>(index)]);
+    });
+    return walks;
+}
+
 } // namespace
 
 PlannerDescription MstcPlanner::describe() const {
@@ -81,10 +148,11 @@ PlannerDescription MstcPlanner::describe() const {
     description.promises.pathsCoverOwnRegion = false;
     description.parameters = {
         DecompositionOptions::blockedThresholdParameter(),
-        booleanParameter("balanced", "Balanced pieces", false,
-                         "Cut the tour into pieces of equal time, each robot walking along the tour (through "
-                         "other pieces, forwards or backwards) to its own; otherwise each robot covers the "
-                         "tour from its start to the next robot's"),
+        booleanParameter(
+            "balanced", "Balanced pieces", false,
+            "Cut the tour into pieces that take equal time with the way to them, each robot "
+            "going to its own by the quickest way; otherwise each robot covers the tour from its "
+            "start to the next robot's"),
         TurnSearch::roundsParameter(),
     };
     description.balanceSwitch = "balanced";
@@ -118,22 +186,29 @@ void MstcPlanner::run(PlanningRun& run) const {
                 positions.push_back(tourPosition(tour, startCells[static_cast<std::size_t>(robot)],
                                                  starts[static_cast<std::size_t>(robot)]));
             const TourSplitter splitter(stepSeconds(tour, plan.cells));
-            const std::vector<TourSplitter::Share> shares = parameters.boolean("balanced")
-                                                                ? splitter.balancedPieces(positions)
-                                                                : splitter.forwardPieces(positions);
+            std::vector<PieceWalk> walks;
+            if (parameters.boolean("balanced")) {
+                std::vector<int> robotStartCells;
+                for (const int robot : part.robots)
+                    robotStartCells.push_back(startCells[static_cast<std::size_t>(robot)]);
+                walks = directPieces(plan.cells, tour, splitter, positions, robotStartCells);
+            } else {
+                for (const TourSplitter::Share& share : splitter.forwardPieces(positions)) {
+                    PieceWalk& piece = walks.emplace_back();
+                    for (const int index : share.order)
+                        piece.walk.push_back(tour[static_cast<std::size_t>(index)]);
+                }
+            }
             for (std::size_t k = 0; k < part.robots.size(); ++k) {
                 const int robot = part.robots[k];
-                std::vector<Waypoint> walk;
-                for (std::size_t step = 0; step < shares[k].order.size(); ++step) {
-                    const Waypoint& point = tour[static_cast<std::size_t>(shares[k].order[step])];
-                    walk.push_back(point);
-                    // A cell goes to a robot whose piece passes it (two may share its sub-cells).
-                    int& owner = plan.regions.robotOfCell[static_cast<std::size_t>(point.cell)];
-                    if (step >= shares[k].approach && owner < 0)
+                // A cell goes to the first robot whose piece passes it (two may share its sub-cells).
+                for (std::size_t step = walks[k].approach; step < walks[k].walk.size(); ++step) {
+                    int& owner = plan.regions.robotOfCell[static_cast<std::size_t>(walks[k].walk[step].cell)];
+                    if (owner < 0)
                         owner = robot;
                 }
-                plan.paths[static_cast<std::size_t>(robot)] =
-                    pathFromWalk(robot, starts[static_cast<std::size_t>(robot)], std::move(walk), false);
+                plan.paths[static_cast<std::size_t>(robot)] = pathFromWalk(
+                    robot, starts[static_cast<std::size_t>(robot)], std::move(walks[k].walk), false);
             }
         }
         return 0;

@@ -93,6 +93,38 @@ class MstcTest : public QObject {
         QVERIFY(unevenPlanIssue(balanced) == nullptr);
     }
 
+    // On random maps of two land covers with scattered obstacles, robots going to their pieces by their
+    // own quickest way: every invariant holds, as much is covered as with the pieces cut at the starts, the
+    // makespan is no longer than theirs (the cut at the starts is one the search weighs) and near the bound.
+    void balancedPiecesHoldOnRandomMaps() {
+        for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+            test::RandomMapSpec spec;
+            spec.columns = 40;
+            spec.rows = 40;
+            spec.landCovers = 2;
+            spec.obstacleFraction = 0.08;
+            spec.fovPixels = seed % 2 == 0 ? 1.0 : 0.5;
+            spec.robots = 2 + static_cast<int>(seed);
+            spec.seed = seed;
+            PlanningProblem forwardProblem = test::randomProblem(spec);
+            const Plan forward = planWithMstc(forwardProblem, false);
+            PlanningProblem balancedProblem = test::randomProblem(spec);
+            const Plan balanced = planWithMstc(balancedProblem, true);
+            const QString figures = QStringLiteral("seed %1: ratio %2 against %3, makespan %4 against %5")
+                                        .arg(seed)
+                                        .arg(balanced.metrics.ratio)
+                                        .arg(forward.metrics.ratio)
+                                        .arg(balanced.metrics.makespanSeconds)
+                                        .arg(forward.metrics.makespanSeconds);
+            qInfo("%s", qPrintable(figures));
+            QVERIFY2(holdsInvariants(balancedProblem, balanced), qPrintable(figures));
+            QCOMPARE(balanced.metrics.coveredFraction, forward.metrics.coveredFraction);
+            QVERIFY2(balanced.metrics.makespanSeconds <= forward.metrics.makespanSeconds * 1.01,
+                     qPrintable(figures));
+            QVERIFY2(balanced.metrics.ratio < 1.1, qPrintable(figures));
+        }
+    }
+
     // A U: the tour runs down one arm and up the other; robots at the tips share it without repeats.
     void uShapeIsOneTour() {
         std::vector<std::string> rows = rowsOf(12, "....####....");
