@@ -62,31 +62,27 @@ std::vector<int> TourSplitter::robotsByPlace(const std::vector<int>& positions) 
     return byPlace;
 }
 
-// Robots in their order along the tour from byPlace[firstRobot], pieces from `offset` on: each takes the
-// most points it covers within the limit, its way there included. Empty where they do not cover the tour.
-std::optional<std::vector<TourSplitter::Piece>>
-TourSplitter::piecesWithin(double limitSeconds, const std::vector<int>& byPlace, std::size_t firstRobot,
-                           int offset, const std::vector<std::vector<float>>& secondsToCell,
-                           const std::vector<int>& cellOfPoint) const {
-    const std::size_t robots = byPlace.size();
+// Robots in `order` from order[firstRobot] on, pieces from `offset` on: each takes the most points it covers
+// within the limit, its way there included. Empty where they do not cover the tour.
+std::optional<std::vector<TourSplitter::Piece>> TourSplitter::piecesWithin(double limitSeconds,
+                                                                           const std::vector<int>& order,
+                                                                           std::size_t firstRobot, int offset,
+                                                                           const Approach& approach) const {
+    const std::size_t robots = order.size();
     std::vector<Piece> pieces(robots); // by place
     int covered = 0;
     int at = offset;
     for (std::size_t j = 0; j < robots; ++j) {
         const std::size_t place = (firstRobot + j) % robots;
-        const std::vector<float>& toCell = secondsToCell[static_cast<std::size_t>(byPlace[place])];
-        const auto approach = [&](int point) {
-            return static_cast<double>(
-                toCell[static_cast<std::size_t>(cellOfPoint[static_cast<std::size_t>(point)])]);
-        };
-        const double toFirst = approach(at);
+        const int robot = order[place];
+        const double toFirst = approach.seconds(robot, at);
         int taken = 0;
         for (int count = 1; covered + count <= size_; ++count) {
             const int last = (at + count - 1) % size_;
             const double piece = forwardSeconds(at, last);
             if (piece > limitSeconds)
                 break;
-            if (piece + std::min(toFirst, approach(last)) <= limitSeconds)
+            if (piece + std::min(toFirst, approach.seconds(robot, last)) <= limitSeconds)
                 taken = count;
         }
         pieces[place] = {at, (at + std::max(taken, 1) - 1) % size_, taken == 0};
@@ -98,25 +94,21 @@ TourSplitter::piecesWithin(double limitSeconds, const std::vector<int>& byPlace,
     return pieces;
 }
 
-std::vector<TourSplitter::Share>
-TourSplitter::piecesReachedDirectly(const std::vector<int>& positions,
-                                    const std::vector<std::vector<float>>& secondsToCell,
-                                    const std::vector<int>& cellOfPoint) const {
-    const std::size_t robots = positions.size();
-    const std::vector<int> byPlace = robotsByPlace(positions);
-    // The pieces within a limit, the first robot's at its own position, for any robot first.
-    const auto within = [&](double limit) -> std::optional<std::pair<std::vector<Piece>, std::size_t>> {
+// The cut of the shortest makespan for robots in `order`, any of them first with its piece from its offset
+// (offsets by place): a search on the makespan, each try cutting greedily.
+TourSplitter::Cut TourSplitter::shortestCut(const std::vector<int>& order, const std::vector<int>& offsets,
+                                            const Approach& approach) const {
+    const std::size_t robots = order.size();
+    const auto within = [&](double limit) -> std::optional<std::vector<Piece>> {
         for (std::size_t first = 0; first < robots; ++first)
-            if (auto pieces =
-                    piecesWithin(limit, byPlace, first, positions[static_cast<std::size_t>(byPlace[first])],
-                                 secondsToCell, cellOfPoint))
-                return std::make_pair(std::move(*pieces), first);
+            if (auto pieces = piecesWithin(limit, order, first, offsets[first], approach))
+                return pieces;
         return std::nullopt;
     };
     // Between an even share and twice it, most often: doubled until the robots cover the tour.
     double low = reached_.back() / static_cast<double>(robots);
     double high = 2.0 * low;
-    auto best = within(high);
+    std::optional<std::vector<Piece>> best = within(high);
     for (int doubling = 0; !best && doubling < 64; ++doubling) {
         low = high;
         high *= 2.0;
@@ -133,21 +125,107 @@ TourSplitter::piecesReachedDirectly(const std::vector<int>& positions,
             low = middle;
         }
     }
+    return {order, best.value_or(std::vector<Piece>(robots, Piece{0, 0, true})), high};
+}
+
+// The cut again with robots in the order of the pieces that, given each, cost them least to reach in all
+// (an assignment of least total way, Hungarian method): robots far along the tour from their place may
+// stand right beside another piece.
+TourSplitter::Cut TourSplitter::reorderedByNearestPieces(const Cut& cut, const Approach& approach) const {
+    const std::size_t robots = cut.order.size();
+    const auto cost = [&](std::size_t robot, std::size_t place) {
+        const Piece& piece = cut.pieces[place];
+        if (piece.empty)
+            return 0.0;
+        return std::min(approach.seconds(static_cast<int>(robot), piece.first),
+                        approach.seconds(static_cast<int>(robot), piece.last));
+    };
+    // Potentials u (robots) and v (places), 1-based, place 0 a sentinel; placeOf[p] the robot given place p.
+    const double infinite = std::numeric_limits<double>::infinity();
+    std::vector<double> u(robots + 1, 0.0);
+    std::vector<double> v(robots + 1, 0.0);
+    std::vector<std::size_t> robotAt(robots + 1, 0);
+    std::vector<std::size_t> way(robots + 1, 0);
+    for (std::size_t robot = 1; robot <= robots; ++robot) {
+        robotAt[0] = robot;
+        std::size_t place = 0;
+        std::vector<double> least(robots + 1, infinite);
+        std::vector<char> used(robots + 1, 0);
+        do {
+            used[place] = 1;
+            const std::size_t at = robotAt[place];
+            double delta = infinite;
+            std::size_t next = 0;
+            for (std::size_t other = 1; other <= robots; ++other) {
+                if (used[other] != 0)
+                    continue;
+                const double reduced = cost(at - 1, other - 1) - u[at] - v[other];
+                if (reduced < least[other]) {
+                    least[other] = reduced;
+                    way[other] = place;
+                }
+                if (least[other] < delta) {
+                    delta = least[other];
+                    next = other;
+                }
+            }
+            for (std::size_t other = 0; other <= robots; ++other) {
+                if (used[other] != 0) {
+                    u[robotAt[other]] += delta;
+                    v[other] -= delta;
+                } else {
+                    least[other] -= delta;
+                }
+            }
+            place = next;
+        } while (robotAt[place] != 0);
+        do {
+            const std::size_t previousPlace = way[place];
+            robotAt[place] = robotAt[previousPlace];
+            place = previousPlace;
+        } while (place != 0);
+    }
+    // Places follow the tour from the cut's first piece: the new order takes the robots place by place.
+    std::vector<int> order(robots);
+    std::vector<int> offsets(robots);
+    for (std::size_t place = 1; place <= robots; ++place) {
+        order[place - 1] = static_cast<int>(robotAt[place] - 1);
+        offsets[place - 1] = cut.pieces[place - 1].first;
+    }
+    return shortestCut(order, offsets, approach);
+}
+
+std::vector<TourSplitter::Share>
+TourSplitter::piecesReachedDirectly(const std::vector<int>& positions,
+                                    const std::vector<std::vector<float>>& secondsToCell,
+                                    const std::vector<int>& cellOfPoint) const {
+    const std::size_t robots = positions.size();
+    const Approach approach{secondsToCell, cellOfPoint};
+    const std::vector<int> byPlace = robotsByPlace(positions);
+    std::vector<int> ownPositions;
+    for (const int robot : byPlace)
+        ownPositions.push_back(positions[static_cast<std::size_t>(robot)]);
+    Cut best = shortestCut(byPlace, ownPositions, approach);
+    // A few rounds of reassignment while they shorten the makespan.
+    constexpr int rounds = 3;
+    for (int round = 0; round < rounds; ++round) {
+        Cut reordered = reorderedByNearestPieces(best, approach);
+        if (!(reordered.limitSeconds < best.limitSeconds))
+            break;
+        best = std::move(reordered);
+    }
     std::vector<Share> shares(robots);
-    for (std::size_t place = 0; place < robots && best; ++place) {
-        const auto robot = static_cast<std::size_t>(byPlace[place]);
-        const Piece& piece = best->first[place];
+    for (std::size_t place = 0; place < robots; ++place) {
+        const auto robot = static_cast<std::size_t>(best.order[place]);
+        const Piece& piece = best.pieces[place];
         Share& share = shares[robot];
         if (piece.empty) {
             share.order = {positions[robot]};
             share.approach = 1;
             continue;
         }
-        const std::vector<float>& toCell = secondsToCell[robot];
-        const auto approach = [&](int point) {
-            return toCell[static_cast<std::size_t>(cellOfPoint[static_cast<std::size_t>(point)])];
-        };
-        const bool forwards = approach(piece.first) <= approach(piece.last);
+        const bool forwards = approach.seconds(static_cast<int>(robot), piece.first) <=
+                              approach.seconds(static_cast<int>(robot), piece.last);
         walk(share.order, forwards ? piece.first : piece.last, forwards ? piece.last : piece.first, forwards);
     }
     return shares;

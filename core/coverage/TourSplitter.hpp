@@ -24,9 +24,10 @@ class TourSplitter {
     [[nodiscard]] std::vector<Share> forwardPieces(const std::vector<int>& positions) const;
 
     // Balanced: each robot goes to its piece by a way of its own, not along the tour:
-    // secondsToCell[k][cellOfPoint[i]] is robot k's time from its start to tour point i. Pieces are cut,
-    // robots in their order along the tour, for the shortest makespan, way there included; each enters its
-    // piece at the end it reaches sooner. A Share holds its piece only, from that end (approach 0); a robot
+    // secondsToCell[k][cellOfPoint[i]] is robot k's time from its start to tour point i. Pieces are cut
+    // for the shortest makespan, way there included, robots first in their order along the tour, then in
+    // the order of the pieces that cost them least to reach in all; each enters its piece at the end it
+    // reaches sooner. A Share holds its piece only, from that end (approach 0); a robot
     // left no piece stays at its position (approach 1).
     [[nodiscard]] std::vector<Share>
     piecesReachedDirectly(const std::vector<int>& positions,
@@ -39,15 +40,33 @@ class TourSplitter {
         int last;  // tour index; the piece runs forward from first to last
         bool empty;
     };
+    // Robots' times to the tour's points.
+    struct Approach {
+        const std::vector<std::vector<float>>& secondsToCell;
+        const std::vector<int>& cellOfPoint;
+        [[nodiscard]] double seconds(int robot, int point) const {
+            return secondsToCell[static_cast<std::size_t>(robot)]
+                                [static_cast<std::size_t>(cellOfPoint[static_cast<std::size_t>(point)])];
+        }
+    };
+    // Robots in a cyclic order, the piece of each (by place in it) and the makespan they keep within.
+    struct Cut {
+        std::vector<int> order;
+        std::vector<Piece> pieces;
+        double limitSeconds = 0.0;
+    };
 
     [[nodiscard]] double forwardSeconds(int from, int to) const;
     [[nodiscard]] int next(int index) const;
     [[nodiscard]] int previous(int index) const;
     void walk(std::vector<int>& order, int from, int to, bool forwards) const;
-    [[nodiscard]] std::optional<std::vector<Piece>>
-    piecesWithin(double limitSeconds, const std::vector<int>& byPlace, std::size_t firstRobot, int offset,
-                 const std::vector<std::vector<float>>& secondsToCell,
-                 const std::vector<int>& cellOfPoint) const;
+    [[nodiscard]] std::optional<std::vector<Piece>> piecesWithin(double limitSeconds,
+                                                                 const std::vector<int>& order,
+                                                                 std::size_t firstRobot, int offset,
+                                                                 const Approach& approach) const;
+    [[nodiscard]] Cut shortestCut(const std::vector<int>& order, const std::vector<int>& offsets,
+                                  const Approach& approach) const;
+    [[nodiscard]] Cut reorderedByNearestPieces(const Cut& cut, const Approach& approach) const;
     [[nodiscard]] std::vector<int> robotsByPlace(const std::vector<int>& positions) const;
 
     std::vector<double> reached_; // time from point 0 to each point, going forward; the tour's time last
