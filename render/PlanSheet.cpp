@@ -46,9 +46,9 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
     : grid_(grid), classes_(classes), plan_(plan), extras_(std::move(extras)),
       crossings_(impassableCrossings(plan.cells, plan.regions, grid, classes)),
       sections_(planLegend(classes, &plan, extras_.robotNames, &grid, &crossings_)), title_(titleOf(plan)),
-      frame_(planFrame(grid, {&plan}, flightReachRings(plan, extras_.flightReach))) {
+      rings_(flightReachRings(plan, extras_.flightReach)), frame_(planFrame(grid, {&plan}, rings_)) {
     // Only rings that show in the frame are explained (one round a far take-off may lie wholly outside).
-    if (someRingShows(frame_, flightReachRings(plan, extras_.flightReach)))
+    if (someRingShows(frame_, rings_))
         addFlightReach(sections_, extras_.flightReach);
     const QSize mapSize = fittedMapSize(frame_, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.

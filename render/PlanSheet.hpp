@@ -4,6 +4,7 @@
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
 #include "core/outlines/RegionOutlines.hpp"
+#include "render/PlanFrame.hpp"
 #include "render/PlanLegend.hpp"
 
 #include <QPainter>
@@ -49,7 +50,8 @@ class PlanSheet {
     std::vector<ImpassableCrossing> crossings_;
     std::vector<LegendSection> sections_;
     QString title_;
-    ClassGrid frame_; // the part of the raster the map shows (planFrame)
+    std::vector<FrameRing> rings_; // the robots' flight-reach rings (flightReachRings)
+    ClassGrid frame_;              // the part of the raster the map shows (planFrame)
     QFont font_;
     QFont titleFont_;
     QSize size_;

@@ -8,8 +8,8 @@ namespace mcpp {
 
 // The quickest ways from a cell to every cell of its connected part, turning least among the quickest: a
 // robot's way to a piece of work that lies elsewhere (balanced MSTC). A step between neighbours costs the
-// travel between their centres, and a change of direction the turn's time at the cell (a hair more where
-// turns are free, so that of two equal ways the straighter is taken). The steps are worked out once per
+// travel between their centres, and a change of direction the turn's time at the cell and a hair more
+// (so that, turns free, of two equal ways the straighter is taken). The steps are worked out once per
 // graph; each search reuses them and keeps only what is asked for, so that many robots on a big map cost a
 // float a cell each.
 class ApproachRoutes {

@@ -1,7 +1,6 @@
 #include "core/coverage/TourSplitter.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -27,11 +26,7 @@ double TourSplitter::forwardSeconds(int from, int to) const {
 }
 
 std::vector<TourSplitter::Share> TourSplitter::forwardPieces(const std::vector<int>& positions) const {
-    std::vector<int> byPlace(positions.size());
-    std::iota(byPlace.begin(), byPlace.end(), 0);
-    std::sort(byPlace.begin(), byPlace.end(), [&](int a, int b) {
-        return positions[static_cast<std::size_t>(a)] < positions[static_cast<std::size_t>(b)];
-    });
+    const std::vector<int> byPlace = robotsByPlace(positions);
     std::vector<Share> orders(positions.size());
     for (std::size_t k = 0; k < byPlace.size(); ++k) {
         const int robot = byPlace[k];
@@ -53,7 +48,7 @@ void TourSplitter::walk(std::vector<int>& order, int from, int to, bool forwards
     }
 }
 
-std::vector<int> TourSplitter::robotsByPlace(const std::vector<int>& positions) const {
+std::vector<int> TourSplitter::robotsByPlace(const std::vector<int>& positions) {
     std::vector<int> byPlace(positions.size());
     std::iota(byPlace.begin(), byPlace.end(), 0);
     std::sort(byPlace.begin(), byPlace.end(), [&](int a, int b) {
@@ -105,17 +100,18 @@ TourSplitter::Cut TourSplitter::shortestCut(const std::vector<int>& order, const
                 return pieces;
         return std::nullopt;
     };
-    // Between an even share and twice it, most often: doubled until the robots cover the tour.
-    double low = reached_.back() / static_cast<double>(robots);
-    double high = 2.0 * low;
+    // Below twice an even share, most often (doubled until the robots cover the tour); from nothing up, as
+    // pieces leave out the steps between them and tiny tours may need no time at all.
+    double low = 0.0;
+    double high = 2.0 * reached_.back() / static_cast<double>(robots);
     std::optional<std::vector<Piece>> best = within(high);
     for (int doubling = 0; !best && doubling < 64; ++doubling) {
         low = high;
         high *= 2.0;
         best = within(high);
     }
-    // To a 16 000th of the range: a makespan that near the best is as good.
-    constexpr int halvings = 14;
+    // To a 32 000th of the range: a makespan that near the best is as good.
+    constexpr int halvings = 15;
     for (int halving = 0; halving < halvings && best; ++halving) {
         const double middle = (low + high) / 2.0;
         if (auto found = within(middle)) {
@@ -137,10 +133,12 @@ TourSplitter::Cut TourSplitter::reorderedByNearestPieces(const Cut& cut, const A
         const Piece& piece = cut.pieces[place];
         if (piece.empty)
             return 0.0;
-        return std::min(approach.seconds(static_cast<int>(robot), piece.first),
-                        approach.seconds(static_cast<int>(robot), piece.last));
+        // Robots share the tour's part, so their ways are finite; were one not, it must not stall the search.
+        constexpr double unreachable = 1e30;
+        return std::min({approach.seconds(static_cast<int>(robot), piece.first),
+                         approach.seconds(static_cast<int>(robot), piece.last), unreachable});
     };
-    // Potentials u (robots) and v (places), 1-based, place 0 a sentinel; placeOf[p] the robot given place p.
+    // Potentials u (robots) and v (places), 1-based, place 0 a sentinel; robotAt[p] the robot given place p.
     const double infinite = std::numeric_limits<double>::infinity();
     std::vector<double> u(robots + 1, 0.0);
     std::vector<double> v(robots + 1, 0.0);

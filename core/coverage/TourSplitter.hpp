@@ -67,7 +67,7 @@ class TourSplitter {
     [[nodiscard]] Cut shortestCut(const std::vector<int>& order, const std::vector<int>& offsets,
                                   const Approach& approach) const;
     [[nodiscard]] Cut reorderedByNearestPieces(const Cut& cut, const Approach& approach) const;
-    [[nodiscard]] std::vector<int> robotsByPlace(const std::vector<int>& positions) const;
+    [[nodiscard]] static std::vector<int> robotsByPlace(const std::vector<int>& positions);
 
     std::vector<double> reached_; // time from point 0 to each point, going forward; the tour's time last
     int size_;

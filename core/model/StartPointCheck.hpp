@@ -28,8 +28,8 @@ struct StartPointProblem {
 // off it (mistyped coordinates, most likely) nor at a point that is not a number.
 [[nodiscard]] bool takesOffThere(const ClassGrid& grid, MapPoint point, const StartPointProblem& problem);
 // Whether robot `robot` is an aircraft (by robot in `flyingRobots`, as PlanningProblem holds them; missing:
-// no) that may take off at its start despite that problem: the one rule the planner, the mission check and
-// the window share.
+// no) that may take off at its start despite that problem: the one rule the planner and the mission check
+// share (the window, which knows whether the one robot it places flies, asks takesOffThere).
 [[nodiscard]] bool robotTakesOffThere(const std::vector<bool>& flyingRobots, std::size_t robot,
                                       const ClassGrid& grid, MapPoint point,
                                       const StartPointProblem& problem);

@@ -8,6 +8,7 @@
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/coverage/TurnSearch.hpp"
 #include "core/model/ParallelFor.hpp"
+#include "core/model/ProgressReporter.hpp"
 #include "core/planners/GridStage.hpp"
 #include "core/planners/PlanningRun.hpp"
 
@@ -106,7 +107,8 @@ struct PieceWalk {
 // Balanced pieces, each robot going to its own by its quickest way (ApproachRoutes).
 std::vector<PieceWalk> directPieces(const CellGraph& graph, const std::vector<Waypoint>& tour,
                                     const TourSplitter& splitter, const std::vector<int>& positions,
-                                    const std::vector<int>& robotStartCells) {
+                                    const std::vector<int>& robotStartCells,
+                                    const ProgressReporter& progress) {
     std::vector<int> tourPointOfCell(graph.size(), -1);
     for (std::size_t i = 0; i < tour.size(); ++i)
         if (tourPointOfCell[static_cast<std::size_t>(tour[i].cell)] < 0)
@@ -115,6 +117,7 @@ std::vector<PieceWalk> directPieces(const CellGraph& graph, const std::vector<Wa
     std::vector<std::vector<float>> secondsToCell(robotStartCells.size());
     parallelFor(robotStartCells.size(),
                 [&](std::size_t k, int) { secondsToCell[k] = routes.secondsFrom(robotStartCells[k]); });
+    progress.throwIfCancelled(); // a search per robot over the whole part: a second or so on big maps
     std::vector<int> cellOfPoint(tour.size());
     for (std::size_t i = 0; i < tour.size(); ++i)
         cellOfPoint[i] = tour[i].cell;
@@ -191,7 +194,7 @@ void MstcPlanner::run(PlanningRun& run) const {
                 std::vector<int> robotStartCells;
                 for (const int robot : part.robots)
                     robotStartCells.push_back(startCells[static_cast<std::size_t>(robot)]);
-                walks = directPieces(plan.cells, tour, splitter, positions, robotStartCells);
+                walks = directPieces(plan.cells, tour, splitter, positions, robotStartCells, run.progress());
             } else {
                 for (const TourSplitter::Share& share : splitter.forwardPieces(positions)) {
                     PieceWalk& piece = walks.emplace_back();

@@ -175,8 +175,10 @@ std::string balanceSwitchAdvice(const PlannerDescription& planner) {
 }
 
 // Robots left with less than half a fair share where the longest path is well above the bound: most often
-// starts so close together that the others' regions wall theirs in. Empty where there are none, and on maps
-// whose starts lie in several parts (the bound is then one part's share, not every robot's).
+// starts so close together that the others' regions wall theirs in, or, where the planner has a switch
+// that evens its pieces out (PlannerDescription::balanceSwitch) and it is off, the reason it gives. Empty
+// where there are none, and on maps whose starts lie in several parts (the bound is then one part's share,
+// not every robot's).
 std::string unevenPlanMessage(const PlanMetrics& metrics, const PlannerDescription& planner,
                               const ParameterValues& parameters) {
     constexpr double noticeableRatio = 1.05;

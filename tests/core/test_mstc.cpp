@@ -95,7 +95,7 @@ class MstcTest : public QObject {
 
     // On random maps of two land covers with scattered obstacles, robots going to their pieces by their
     // own quickest way: every invariant holds, as much is covered as with the pieces cut at the starts, the
-    // makespan is no longer than theirs (the cut at the starts is one the search weighs) and near the bound.
+    // makespan is no longer than theirs (there: 1.2 to 3.4 times the bound) and near the bound.
     void balancedPiecesHoldOnRandomMaps() {
         for (std::uint32_t seed = 1; seed <= 6; ++seed) {
             test::RandomMapSpec spec;
