@@ -293,6 +293,12 @@ bool onTheRasterOutsideTheArea(const ClassGrid& grid, MapPoint point) {
     return pixel && grid.isOutside(pixel->column, pixel->row);
 }
 
+// Where a ground robot may not start but an aircraft may take off (a road beside the field, a roof): the
+// planner's own rule, takesOffThere.
+constexpr const char* aircraftTakeOffHint = "; an aircraft (vehicle \"multirotor\" or \"fixed-wing\") would "
+                                            "take off there and fly to the nearest free "
+                                            "cell";
+
 // What helps with a start the planner cannot use: a hint when longitude and latitude look swapped, and the
 // option that moves starts off obstacles.
 std::string startAdvice(const LoadedRaster& raster, const StartPointProblem& problem, MapPoint start,
@@ -336,9 +342,10 @@ Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& class
         // An aircraft takes off where it stands and flies to the nearest free cell (the planner checks that
         // one flight reaches it).
         if (problem && !robotTakesOffThere(flyingRobots, robot, reconciled.grid, start, *problem))
-            return Status::failure(names(MissionField::start(static_cast<int>(robot))) + ": " +
-                                   problem->detail +
-                                   startAdvice(reconciled, *problem, start, static_cast<int>(robot), names));
+            return Status::failure(
+                names(MissionField::start(static_cast<int>(robot))) + ": " + problem->detail +
+                startAdvice(reconciled, *problem, start, static_cast<int>(robot), names) +
+                (takesOffThere(reconciled.grid, start, *problem) ? aircraftTakeOffHint : ""));
     }
     return {};
 }

@@ -134,9 +134,14 @@ std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreR
     const ClassGrid& grid = raster_->grid;
     const QString name = what.isEmpty() ? tr("Start") : what;
     if (const auto problem = startPointProblem(grid, mission_.classes, point)) {
-        if (takesOff && takesOffThere(grid, point, *problem))
+        const bool aircraftMay = takesOffThere(grid, point, *problem);
+        if (takesOff && aircraftMay)
             return std::nullopt;
-        return tr("%1 %2.").arg(name, QString::fromStdString(problem->detail));
+        const QString refusal = tr("%1 %2.").arg(name, QString::fromStdString(problem->detail));
+        // A ground robot refused where a drone would take off: say so, the vehicle is a setting away.
+        return aircraftMay ? refusal + QStringLiteral(" ") +
+                                 tr("An aircraft (vehicle multirotor or fixed-wing) would take off there.")
+                           : refusal;
     }
     if (takesOff) // several aircraft may take off from one spot
         return std::nullopt;

@@ -1032,7 +1032,9 @@ void TestBatchEndToEnd::anAircraftOnTheLakeTakesOffThere() {
     const auto refused = runMcpp({"--batch", path, "--out", scratch_.filePath("lake-rover")});
     QCOMPARE(refused.exitCode, 2);
     QVERIFY2(refused.standardError.contains(QStringLiteral("robots[1].start (shrubland): ")) &&
-                 refused.standardError.contains(QStringLiteral("is on an obstacle: class 4 (Lake)")),
+                 refused.standardError.contains(QStringLiteral("is on an obstacle: class 4 (Lake)")) &&
+                 refused.standardError.contains(QStringLiteral(
+                     "an aircraft (vehicle \"multirotor\" or \"fixed-wing\") would take off there")),
              qPrintable(refused.standardError));
 
     const QString out = scratch_.filePath("lake-drone");

@@ -208,8 +208,12 @@ class TestClassTableModel : public QObject {
         auto robots = document_->robots();
         robots[0].vehicle.type = io::VehicleType::Rover;
         document_->setRobots(robots);
-        QVERIFY(!robots_->moveRobot(0, {55.0, 25.0})); // a rover on the water
-        QVERIFY(robots_->moveRobot(1, {55.0, 25.0}));  // a drone there
+        QVERIFY(!robots_->moveRobot(0, {55.0, 25.0})); // a rover on the water, told a drone would do
+        QVERIFY2(refused.last().first().toString().contains(QStringLiteral("An aircraft")),
+                 qPrintable(refused.last().first().toString()));
+        QVERIFY(robots_->moveRobot(1, {55.0, 25.0}));   // a drone there
+        QVERIFY(!robots_->moveRobot(0, {500.0, 25.0})); // off the raster: no drone either
+        QVERIFY(!refused.last().first().toString().contains(QStringLiteral("An aircraft")));
     }
 
   private:
