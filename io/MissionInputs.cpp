@@ -295,9 +295,9 @@ bool onTheRasterOutsideTheArea(const ClassGrid& grid, MapPoint point) {
 
 // Where a ground robot may not start but an aircraft may take off (a road beside the field, a roof): the
 // planner's own rule, takesOffThere.
-constexpr const char* aircraftTakeOffHint = "; an aircraft (vehicle \"multirotor\" or \"fixed-wing\") would "
-                                            "take off there and fly to the nearest free "
-                                            "cell";
+constexpr const char* aircraftTakeOffHint =
+    "; an aircraft (vehicle \"multirotor\" or \"fixed-wing\") would take off there and fly to the nearest "
+    "free cell";
 
 // What helps with a start the planner cannot use: a hint when longitude and latitude look swapped, and the
 // option that moves starts off obstacles.
