@@ -127,6 +127,13 @@ std::optional<std::int32_t> MissionDocument::classValueAt(MapPoint point) const 
     return grid.valueAt(pixel->column, pixel->row);
 }
 
+QString MissionDocument::aircraftHint() {
+    return tr("An aircraft would take off there: set the robot's vehicle to %1 or %2 in the Robot vehicles "
+              "dialog (Plan menu).")
+        .arg(QString::fromStdString(io::vehicleTypeLabel(io::VehicleType::Multirotor)),
+             QString::fromStdString(io::vehicleTypeLabel(io::VehicleType::FixedWing)));
+}
+
 std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreRobot, const QString& what,
                                                      bool takesOff) const {
     if (!raster_)
@@ -138,10 +145,8 @@ std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreR
         if (takesOff && aircraftMay)
             return std::nullopt;
         const QString refusal = tr("%1 %2.").arg(name, QString::fromStdString(problem->detail));
-        // A ground robot refused where a drone would take off: say so, the vehicle is a setting away.
-        return aircraftMay ? refusal + QStringLiteral(" ") +
-                                 tr("An aircraft (vehicle multirotor or fixed-wing) would take off there.")
-                           : refusal;
+        // A ground robot refused where a drone would take off: say so, and where the window sets the vehicle.
+        return aircraftMay ? refusal + QStringLiteral(" ") + aircraftHint() : refusal;
     }
     if (takesOff) // several aircraft may take off from one spot
         return std::nullopt;

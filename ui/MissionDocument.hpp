@@ -103,6 +103,8 @@ class MissionDocument : public QObject {
     void missionPathChanged(const QString& path);
 
   private:
+    // The advice to a ground robot refused where an aircraft would take off, naming the window's control.
+    [[nodiscard]] static QString aircraftHint();
     void emitStaleIfChanged();
 
     std::shared_ptr<const io::LoadedRaster> raster_;
