@@ -128,8 +128,7 @@ std::optional<std::int32_t> MissionDocument::classValueAt(MapPoint point) const 
 }
 
 QString MissionDocument::aircraftHint() {
-    return tr("An aircraft would take off there: set the robot's vehicle to %1 or %2 in the Robot vehicles "
-              "dialog (Plan menu).")
+    return tr("An aircraft would take off there (Plan menu, Robot vehicles: %1 or %2).")
         .arg(QString::fromStdString(io::vehicleTypeLabel(io::VehicleType::Multirotor)),
              QString::fromStdString(io::vehicleTypeLabel(io::VehicleType::FixedWing)));
 }

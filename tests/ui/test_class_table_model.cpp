@@ -210,10 +210,10 @@ class TestClassTableModel : public QObject {
         document_->setRobots(robots);
         QVERIFY(!robots_->moveRobot(0, {55.0, 25.0})); // a rover on the water, told a drone would do
         // The window's words for where the vehicle is set, not the mission file's.
-        QVERIFY2(refused.last().first().toString().contains(QStringLiteral(
-                     "An aircraft would take off there: set the robot's vehicle to Multirotor or "
-                     "Fixed wing in the Robot vehicles dialog")),
-                 qPrintable(refused.last().first().toString()));
+        QVERIFY2(
+            refused.last().first().toString().contains(QStringLiteral(
+                "An aircraft would take off there (Plan menu, Robot vehicles: Multirotor or Fixed wing).")),
+            qPrintable(refused.last().first().toString()));
         QVERIFY(robots_->moveRobot(1, {55.0, 25.0}));   // a drone there
         QVERIFY(!robots_->moveRobot(0, {500.0, 25.0})); // off the raster: no drone either
         QVERIFY(!refused.last().first().toString().contains(QStringLiteral("An aircraft")));
