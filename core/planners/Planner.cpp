@@ -150,19 +150,27 @@ std::string robotList(const std::vector<int>& robots) {
     return list;
 }
 
-// Where a drone's geofence follows the area's edge, it would be crossed: said with how far.
+// Where a drone's geofence follows the area's edge, it would be crossed: said with how far. The planner
+// knows the area by its pixels, those whose centres the drawn edge encloses: the edge runs within half a
+// pixel of their border, so waypoints that near may lie on the right side of it, and a fence needs that
+// half pixel more.
 std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
     const bool noGoOnly = beyond.inNoGoZones == beyond.waypoints;
-    const std::string where = beyond.inNoGoZones == 0 ? "outside the area of interest"
-                              : noGoOnly              ? "in a no-go zone"
-                                                      : "outside the area of interest or in a no-go zone";
-    return std::to_string(beyond.waypoints) + (beyond.waypoints == 1 ? " waypoint of " : " waypoints of ") +
-           robotList(beyond.robots) + " lie " + where + ", up to " + formatDistance(beyond.farthestMetres) +
-           " beyond the task area's pixels (its edge may lie up to " +
-           formatDistance(beyond.pixelMetres / 2.0) +
-           " nearer): cells that straddle the edge are covered whole. For a drone whose geofence follows "
-           "that edge, draw " +
-           (noGoOnly ? "the no-go zone that much larger" : "the area that far inside the fence");
+    const std::string where = beyond.inNoGoZones == 0 ? "on pixels outside the area of interest"
+                              : noGoOnly              ? "on pixels of a no-go zone"
+                                         : "on pixels outside the area of interest or of a no-go zone";
+    const double halfPixel = beyond.pixelMetres / 2.0;
+    std::string text =
+        std::to_string(beyond.waypoints) + (beyond.waypoints == 1 ? " waypoint of " : " waypoints of ") +
+        robotList(beyond.robots) + " lie " + where + ", up to " + formatDistance(beyond.farthestMetres) +
+        " past the task area's pixels: cells that straddle the edge are covered whole";
+    if (beyond.farthestMetres <= halfPixel)
+        text += "; the edge as drawn runs within half a pixel (" + formatDistance(halfPixel) +
+                ") of those pixels' border, so they may lie " +
+                (noGoOnly ? "outside the zone as drawn" : "inside the area as drawn");
+    const std::string margin = formatDistance(beyond.farthestMetres + halfPixel);
+    return text + ". For a drone whose geofence follows that edge, draw " +
+           (noGoOnly ? "the no-go zone " + margin + " larger" : "the area " + margin + " inside the fence");
 }
 
 // "set Balanced pieces on (balanced=true)": the planner's switch that evens its pieces out.

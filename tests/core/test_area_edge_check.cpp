@@ -79,10 +79,15 @@ class AreaEdgeCheckTest : public QObject {
             return issue.code == "paths-beyond-area";
         });
         QVERIFY(warning != plan.issues.end());
-        QVERIFY2(warning->message.find("of robot 1 lie outside the area of interest, up to 5 m beyond the "
-                                       "task area's pixels") != std::string::npos,
+        // The edge drawn may lie half a pixel (5 m) past those pixels: the waypoints 5 m past them may lie
+        // inside it, and a fence on it needs 10 m.
+        QVERIFY2(
+            warning->message.find("of robot 1 lie on pixels outside the area of interest, up to 5 m past "
+                                  "the task area's pixels") != std::string::npos,
+            warning->message.c_str());
+        QVERIFY2(warning->message.find("so they may lie inside the area as drawn") != std::string::npos,
                  warning->message.c_str());
-        QVERIFY2(warning->message.find("draw the area that far inside the fence") != std::string::npos,
+        QVERIFY2(warning->message.find("draw the area 10 m inside the fence") != std::string::npos,
                  warning->message.c_str());
         // The same edge drawn as a no-go zone inside the area of interest is called that.
         for (std::uint8_t& flag : problem.grid.outside)
@@ -92,9 +97,12 @@ class AreaEdgeCheckTest : public QObject {
             return issue.code == "paths-beyond-area";
         });
         QVERIFY(zone != noGo.issues.end());
-        QVERIFY2(zone->message.find("of robot 1 lie in a no-go zone, up to 5 m") != std::string::npos,
+        QVERIFY2(zone->message.find("of robot 1 lie on pixels of a no-go zone, up to 5 m") !=
+                     std::string::npos,
                  zone->message.c_str());
-        QVERIFY2(zone->message.find("draw the no-go zone that much larger") != std::string::npos,
+        QVERIFY2(zone->message.find("so they may lie outside the zone as drawn") != std::string::npos,
+                 zone->message.c_str());
+        QVERIFY2(zone->message.find("draw the no-go zone 10 m larger") != std::string::npos,
                  zone->message.c_str());
     }
 };
