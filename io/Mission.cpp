@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -856,6 +857,36 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
              "them a cruise speed (--cruise-speed, exports.cruise_speed_mps) for flight times"});
 }
 
+// The presets give a ground robot's fields of view: a drone's camera sees much farther, and passes that close
+// make it fly many times the flights it needs. Said where some robot flies and every passable class's FOV is
+// one preset's.
+std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<VehicleSettings>& vehicles,
+                                                            const ClassTable& classes) {
+    if (std::none_of(vehicles.begin(), vehicles.end(),
+                     [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
+        return std::nullopt;
+    for (const PresetInfo& preset : classTablePresets()) {
+        const Result<ClassTable> table = presetClassTable(preset.name);
+        if (!table.ok())
+            continue;
+        double smallest = std::numeric_limits<double>::infinity();
+        bool presets = true;
+        for (const LandCoverClass& landCover : classes.classes()) {
+            if (!landCover.isTraversable())
+                continue;
+            const LandCoverClass* row = table.value().find(landCover.value);
+            presets = presets && row != nullptr && row->fieldOfViewMetres == landCover.fieldOfViewMetres;
+            smallest = std::min(smallest, landCover.fieldOfViewMetres);
+        }
+        if (presets && std::isfinite(smallest))
+            return "aircraft see as far as the class table's fields of view, which are preset " +
+                   preset.name + "'s, a ground robot's (the smallest " + formatQuantity(smallest, 4) +
+                   " m, so passes as close as that): scale them to the camera's footprint on the ground "
+                   "(--fov-scale, or in the window select the classes, Edit selected…, Scale FOVs)";
+    }
+    return std::nullopt;
+}
+
 // "every aircraft at 150 m", or the robots and their altitudes, five at most: "north 0 m, south 2 m".
 std::string namedAltitudes(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
                            const std::vector<std::size_t>& robots) {
@@ -1032,6 +1063,8 @@ void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     problem.robotFlights = flightLimitsOf(mission, vehicles);
     problem.flyingRobots = flyingRobots(mission);
     applyCruiseSpeed(mission, vehicles, problem);
+    if (auto groundView = aircraftAtPresetFieldsOfViewNote(vehicles, problem.classes))
+        problem.notes.push_back({IssueSeverity::Warning, "aircraft-at-ground-fov", std::move(*groundView)});
     noteAircraftAltitudes(mission, vehicles, problem.notes);
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))
         problem.notes.push_back(

@@ -208,6 +208,38 @@ class MissionFilesTest : public QObject {
         QCOMPARE(events[1].toObject()["speed_factor"].toDouble(), 0.0);
     }
 
+    // Drones at a preset's fields of view (a ground robot's) are told to scale them; scaled, or rovers
+    // only, nothing is said.
+    void aircraftAtAPresetsFieldsOfViewAreWarned() {
+        Mission mission = sampleMission();
+        mission.exports.vehicle.type = VehicleType::Rover;
+        for (RobotSpec& robot : mission.robots)
+            robot.vehicle.type.reset();
+        PlanningProblem problem;
+        problem.classes = presetClassTable("esa-worldcover").value();
+        const auto warned = [&](const PlanningProblem& given) {
+            PlanningProblem planned = given;
+            applyRobotSettings(mission, planned);
+            const auto note =
+                std::find_if(planned.notes.begin(), planned.notes.end(),
+                             [](const PlanIssue& issue) { return issue.code == "aircraft-at-ground-fov"; });
+            return note == planned.notes.end() ? std::string() : note->message;
+        };
+        QVERIFY(warned(problem).empty()); // rovers: the preset's fields of view are theirs
+        mission.robots[1].vehicle.type = VehicleType::Multirotor;
+        const std::string message = warned(problem);
+        QVERIFY2(message.find("which are preset esa-worldcover's, a ground robot's (the smallest 5 m") !=
+                     std::string::npos,
+                 message.c_str());
+        QVERIFY2(message.find("--fov-scale") != std::string::npos, message.c_str());
+        std::vector<LandCoverClass> scaled = problem.classes.classes();
+        for (LandCoverClass& landCover : scaled)
+            landCover.fieldOfViewMetres *= 4.0;
+        PlanningProblem camera = problem;
+        camera.classes = ClassTable(std::move(scaled));
+        QVERIFY(warned(camera).empty());
+    }
+
     // A cruise speed the whole fleet shares is what the plan uses over every passable class; speeds that
     // differ leave the class table's and say why.
     void fleetCruiseSpeedIsPlannedWith() {
