@@ -590,6 +590,33 @@ std::string splitReason(const ExportContext& context, int robot, const Autopilot
     return reason;
 }
 
+// An item limit that cuts the mission into many more parts than its flight time does: said, with the parts
+// the flight time alone would make, as a limit set far too low is an easy slip (autopilots hold hundreds of
+// items).
+std::string itemLimitNote(const ExportContext& context, int robot, const AutopilotMission& mission) {
+    const VehicleSettings& vehicle = context.vehicle(robot);
+    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
+    if (coverage == nullptr || !(vehicle.maxWaypoints > 0) || mission.items <= vehicle.maxWaypoints ||
+        !(vehicle.flightTimeSeconds > 0.0))
+        return {};
+    VehicleSettings unlimited = vehicle;
+    unlimited.maxWaypoints = 0;
+    CoveragePath whole;
+    const std::size_t byFlights = std::max<std::size_t>(
+        1, autopilotMission(
+               pathForWaypointFiles(*coverage, context.plan.cells, context.settings.mergeCollinear, whole),
+               unlimited, context.settings, context.plan.cells)
+               .parts.size());
+    constexpr std::size_t manyMore = 2;
+    if (mission.parts.size() < manyMore * byFlights)
+        return {};
+    return "; its item limit (" + std::to_string(vehicle.maxWaypoints) + "), not its " +
+           batteryTimeName(vehicle.type) + ", makes that many: " + std::to_string(byFlights) +
+           (byFlights == 1 ? " part" : " parts") +
+           " without it. Check the limit against the autopilot's (ArduPilot boards hold a few hundred to "
+           "about 700 items)";
+}
+
 } // namespace
 
 std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path) {
@@ -605,7 +632,8 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
     return context.robotName(robot) + "'s mission " + splitReason(context, robot, mission) + ": written in " +
            std::to_string(mission.parts.size()) + " parts of " + partSizes(mission) +
            ", each beginning where the one before it ended (" + partName(0) + " to " +
-           partName(mission.parts.size() - 1) + ")" + aircraft + longestPartNote(vehicle, mission);
+           partName(mission.parts.size() - 1) + ")" + aircraft + longestPartNote(vehicle, mission) +
+           itemLimitNote(context, robot, mission);
 }
 
 namespace {
