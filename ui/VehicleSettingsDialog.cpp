@@ -12,6 +12,8 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <utility>
 
 namespace mcpp::ui {
 namespace {
@@ -79,6 +81,11 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
             addRow(static_cast<int>(robot) + 1, names[static_cast<qsizetype>(robot) + 1], vehicles[robot]));
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->setSelectionMode(QAbstractItemView::NoSelection);
+    // Up to six rows stay in view when a problem's text below takes room.
+    constexpr int rowsKeptInView = 6;
+    table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() + 2 * table_->frameWidth() +
+                             std::min(static_cast<int>(rows_.size()), rowsKeptInView) *
+                                 table_->verticalHeader()->defaultSectionSize());
     layout->addWidget(table_);
 
     auto* form = new QFormLayout;
@@ -228,30 +235,50 @@ void VehicleSettingsDialog::followDefaults() {
     shownDefaults_ = defaults;
 }
 
+namespace {
+
+// Rows named with what is wrong in each ("5", "0.5 min", a sentence), a robot's left out where it is what
+// the All robots row (the first) has: "All robots: 5, Robot 3: 6", not the same value once a row.
+QStringList namedOnce(const std::vector<std::pair<QString, QString>>& rows, const QString& allRobots) {
+    QString fleet;
+    for (const auto& [name, detail] : rows)
+        if (name == allRobots)
+            fleet = detail;
+    QStringList named;
+    for (const auto& [name, detail] : rows)
+        if (name == allRobots || detail != fleet)
+            named << QStringLiteral("%1: %2").arg(name, detail);
+    return named;
+}
+
+} // namespace
+
 void VehicleSettingsDialog::checkLimits() {
-    QStringList items;
-    QStringList flights;
-    QStringList climbs; // flights too short for the climb and descent
+    std::vector<std::pair<QString, QString>> items;
+    std::vector<std::pair<QString, QString>> flights;
+    std::vector<std::pair<QString, QString>> climbs; // flights too short for the climb and descent
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         const QString name = table_->verticalHeaderItem(static_cast<int>(i))->text();
         const int limit = rows_[i].maxWaypoints->value();
         if (!io::isWorkableItemLimit(limit))
-            items << tr("%1: %2").arg(name).arg(limit);
+            items.emplace_back(name, QString::number(limit));
         const double minutes = rows_[i].flightTime->value();
         if (minutes > 0.0 && minutes * 60.0 < io::minimumFlightTimeSeconds)
-            flights << tr("%1: %2 min").arg(name).arg(minutes);
+            flights.emplace_back(name, tr("%1 min").arg(minutes));
         else if (const auto tooShort = io::flightTooShortProblem(settingsOf(rows_[i])))
-            climbs << tr("%1: %2.").arg(name, QString::fromStdString(*tooShort));
+            climbs.emplace_back(name, QString::fromStdString(*tooShort));
     }
+    const QString allRobots = table_->verticalHeaderItem(0)->text();
     QStringList problems;
-    if (!items.isEmpty())
+    if (!items.empty())
         problems << tr("An item limit must be %1 or more mission items, or 0 for no limit. Too small: %2.")
                         .arg(io::minimumMaxWaypoints)
-                        .arg(items.join(QStringLiteral(", ")));
-    if (!flights.isEmpty())
+                        .arg(namedOnce(items, allRobots).join(QStringLiteral(", ")));
+    if (!flights.empty())
         problems << tr("A flight time must be at least 1 min, or 0 for no limit. Too short: %1.")
-                        .arg(flights.join(QStringLiteral(", ")));
-    problems << climbs;
+                        .arg(namedOnce(flights, allRobots).join(QStringLiteral(", ")));
+    for (const QString& climb : namedOnce(climbs, allRobots))
+        problems << climb + QLatin1Char('.');
     problem_->setText(problems.join(QLatin1Char(' ')));
     problem_->setVisible(!problems.isEmpty());
     if (okButton_ != nullptr)

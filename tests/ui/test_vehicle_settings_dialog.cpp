@@ -106,6 +106,20 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(!vehicles[2].altitudeMetres);
     }
 
+    // A limit every robot takes from the All robots row is named once, beside a robot's own.
+    void aProblemTheRobotsShareIsNamedOnce() {
+        ui::VehicleSettingsDialog dialog(threeRobots());
+        auto* table = dialog.findChild<QTableWidget*>();
+        cell<QSpinBox>(table, 0, 3)->setValue(5);
+        cell<QSpinBox>(table, 3, 3)->setValue(6);
+        QString text;
+        for (QLabel* label : dialog.findChildren<QLabel*>())
+            if (label->text().contains(QStringLiteral("Too small")))
+                text = label->text();
+        QVERIFY2(text.contains(QStringLiteral("Too small: All robots: 5, Robot 3: 6.")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("alpha")), qPrintable(text));
+    }
+
     // A flight time in minutes: all robots follow it, and one under a minute holds OK back.
     void flightTimeInMinutes() {
         ui::VehicleSettingsDialog dialog(threeRobots());
