@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace mcpp::render {
@@ -124,10 +125,11 @@ bool someRingShows(const ClassGrid& frame, const std::vector<FrameRing>& rings) 
     });
 }
 
-ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans,
-                    const std::vector<FrameRing>& rings) {
+namespace {
+
+// The frame round `bounds` (planFrame's rule): the whole raster where they take most of it.
+ClassGrid frameAround(const ClassGrid& grid, const Bounds& bounds, const std::vector<FrameRing>& rings) {
     ClassGrid frame = extentOf(grid);
-    const Bounds bounds = cellBounds(plans);
     if (bounds.empty() || grid.pixelWidth <= 0.0 || grid.pixelHeight <= 0.0)
         return frame;
     const Bounds framed = framedBounds(grid, bounds, rings);
@@ -151,6 +153,46 @@ ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans
     frame.originX = grid.originX + firstColumn * grid.pixelWidth;
     frame.originY = grid.originY - firstRow * grid.pixelHeight;
     return frame;
+}
+
+// The task area's pixels: those neither outside the area of interest nor nodata (a raster read only round
+// its area has nodata beyond it). Empty where none is left out, or none is in.
+Bounds taskAreaBounds(const ClassGrid& grid) {
+    if (grid.outside.empty())
+        return {};
+    int firstColumn = grid.columns;
+    int lastColumn = -1;
+    int firstRow = grid.rows;
+    int lastRow = -1;
+    bool leftOut = false;
+    for (int row = 0; row < grid.rows; ++row) {
+        const std::uint8_t* flags = grid.outside.data() + grid.index(0, row);
+        for (int column = 0; column < grid.columns; ++column) {
+            if (flags[column] == ClassGrid::outsideArea || flags[column] == ClassGrid::outsideNodata) {
+                leftOut = true;
+                continue;
+            }
+            firstColumn = std::min(firstColumn, column);
+            lastColumn = std::max(lastColumn, column);
+            firstRow = std::min(firstRow, row);
+            lastRow = std::max(lastRow, row);
+        }
+    }
+    if (!leftOut || lastColumn < 0)
+        return {};
+    return {grid.originX + firstColumn * grid.pixelWidth, grid.originY - (lastRow + 1) * grid.pixelHeight,
+            grid.originX + (lastColumn + 1) * grid.pixelWidth, grid.originY - firstRow * grid.pixelHeight};
+}
+
+} // namespace
+
+ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans,
+                    const std::vector<FrameRing>& rings) {
+    return frameAround(grid, cellBounds(plans), rings);
+}
+
+ClassGrid taskAreaFrame(const ClassGrid& grid) {
+    return frameAround(grid, taskAreaBounds(grid), {});
 }
 
 } // namespace mcpp::render

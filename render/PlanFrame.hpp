@@ -22,6 +22,9 @@ struct FrameRing {
 };
 [[nodiscard]] ClassGrid planFrame(const ClassGrid& grid, const std::vector<const Plan*>& plans,
                                   const std::vector<FrameRing>& rings = {});
+// The same frame round the task area's pixels (neither outside the area of interest nor nodata): what a
+// view of the map before any plan fits to. The whole raster where they take most of it.
+[[nodiscard]] ClassGrid taskAreaFrame(const ClassGrid& grid);
 // The flight-reach rings of a plan's robots: round where each takes off (its path's first waypoint, or its
 // take-off point beside the area), of the robot's reach in metres (by robot; 0 or missing: none).
 [[nodiscard]] std::vector<FrameRing> flightReachRings(const Plan& plan,

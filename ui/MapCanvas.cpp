@@ -144,12 +144,14 @@ void MapCanvas::zoomToFit() {
     if (grid == nullptr || width() <= 0 || height() <= 0)
         return;
     // The plan's frame, as plan.png shows it: a plan over an area of interest fills the view, not a corner.
+    // Before any plan, the area of interest's.
     const Plan* plan = document_->plan();
-    const ClassGrid frame = render::planFrame(
-        *grid, {plan},
-        plan == nullptr ? std::vector<render::FrameRing>{}
-                        : render::flightReachRings(
-                              *plan, io::flightReachesMetres(io::robotVehicles(document_->mission()))));
+    const ClassGrid frame =
+        plan == nullptr
+            ? render::taskAreaFrame(*grid)
+            : render::planFrame(*grid, {plan},
+                                render::flightReachRings(
+                                    *plan, io::flightReachesMetres(io::robotVehicles(document_->mission()))));
     const double margin = 12.0;
     scale_ = std::min((width() - 2.0 * margin) / std::max(frame.width(), 1e-9),
                       (height() - 2.0 * margin) / std::max(frame.height(), 1e-9));

@@ -207,6 +207,28 @@ class TestPlanRenderer : public QObject {
         // Several plans share one frame that holds them all; none at all shows the raster.
         QCOMPARE(render::planFrame(grid, {&small, &whole}).columns, grid.columns);
         QCOMPARE(render::planFrame(grid, {nullptr}).columns, grid.columns);
+
+        // Before any plan, a view fits the area of interest the same way: its pixels x 1100-1120,
+        // y 4940-4960 are framed as that cell is.
+        ClassGrid withArea = grid;
+        QCOMPARE(render::taskAreaFrame(withArea).columns, grid.columns); // no area: the whole raster
+        withArea.outside.assign(grid.values.size(), ClassGrid::outsideArea);
+        for (int row = 4; row < 6; ++row)
+            for (int column = 10; column < 12; ++column)
+                withArea.outside[withArea.index(column, row)] = 0;
+        const ClassGrid areaFrame = render::taskAreaFrame(withArea);
+        QCOMPARE(areaFrame.originX, 1090.0);
+        QCOMPARE(areaFrame.originY, 4970.0);
+        QCOMPARE(areaFrame.columns, 4);
+        QCOMPARE(areaFrame.rows, 4);
+        // Nodata round it (a raster read only round its area) frames it too; the area alone in the
+        // flags, the same.
+        for (std::uint8_t& flag : withArea.outside)
+            flag = flag == ClassGrid::outsideArea ? ClassGrid::outsideNodata : flag;
+        QCOMPARE(render::taskAreaFrame(withArea).originX, 1090.0);
+        QCOMPARE(render::taskAreaFrame(withArea).columns, 4);
+        withArea.outside.assign(grid.values.size(), 0);
+        QCOMPARE(render::taskAreaFrame(withArea).columns, grid.columns);
         // The picture of the small plan is the frame's shape: square, not the raster's 2 : 1.
         const QImage image =
             render::renderPlanImage(grid, twoClassTable(), &small, QSize(400, 200), {}, nullptr, &smallFrame);
