@@ -144,6 +144,20 @@ QString asSentence(const std::string& clause) {
     return text;
 }
 
+// The toolbar's Undo or Redo: a short label that keeps the buttons after it in place, the step it takes
+// ("Undo Move centre") in its tooltip; it does what the Edit menu's action does, when that one can.
+QAction* toolbarStep(QAction* menuAction, const QString& label, QObject* parent) {
+    auto* step = new QAction(menuAction->icon(), label, parent);
+    step->setToolTip(menuAction->text().remove(QLatin1Char('&')));
+    step->setEnabled(menuAction->isEnabled());
+    QObject::connect(step, &QAction::triggered, menuAction, &QAction::trigger);
+    QObject::connect(menuAction, &QAction::changed, step, [step, menuAction] {
+        step->setEnabled(menuAction->isEnabled());
+        step->setToolTip(menuAction->text().remove(QLatin1Char('&')));
+    });
+    return step;
+}
+
 // A vehicle setting no robot can fly, with where the window changes it. It begins with a robot's name as
 // the user wrote it, or "every robot".
 QString vehiclesProblemText(const std::string& problem) {
@@ -642,8 +656,8 @@ void MainWindow::createActions() {
     toolbar->addAction(openMissionAction);
     toolbar->addAction(saveAction_);
     toolbar->addSeparator();
-    toolbar->addAction(undoAction);
-    toolbar->addAction(redoAction);
+    toolbar->addAction(toolbarStep(undoAction, tr("Undo"), toolbar));
+    toolbar->addAction(toolbarStep(redoAction, tr("Redo"), toolbar));
     toolbar->addSeparator();
     toolbar->addAction(panToolAction_);
     toolbar->addAction(placeToolAction_);

@@ -40,6 +40,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QToolBar>
+#include <QUndoCommand>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -848,6 +849,25 @@ class TestMainWindow : public QObject {
             ++withIcon;
         }
         QVERIFY(withIcon >= 10);
+        // Undo keeps its label in the toolbar (the buttons after it stay put) and names the step in its
+        // tooltip, as the Edit menu does in its text.
+        QAction* undo = nullptr;
+        for (QAction* action : toolbar->actions())
+            if (action->text() == QStringLiteral("Undo"))
+                undo = action;
+        QVERIFY(undo != nullptr);
+        QVERIFY(!undo->isEnabled());
+        window.setDialogsEnabled(false);
+        const QString sample = ui::findSampleMission();
+        if (!sample.isEmpty()) {
+            QVERIFY2(window.openMission(sample), qPrintable(window.lastError()));
+            auto* stack = window.findChild<QUndoStack*>();
+            QVERIFY(stack != nullptr);
+            stack->push(new QUndoCommand(QStringLiteral("Move centre")));
+            QVERIFY(undo->isEnabled());
+            QCOMPARE(undo->text(), QStringLiteral("Undo"));
+            QCOMPARE(undo->toolTip(), QStringLiteral("Undo Move centre"));
+        }
         QVERIFY(!window.windowIcon().pixmap(48, 48).isNull());
         QCoreApplication::setApplicationVersion(QStringLiteral("9.8.7"));
         const QString about = ui::aboutText();
