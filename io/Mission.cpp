@@ -858,11 +858,13 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
 }
 
 // The presets give a ground robot's fields of view: a drone's camera sees much farther, and passes that close
-// make it fly many times the flights it needs. Said where some robot flies and every passable class's FOV is
+// make it fly many times the flights it needs. Said where every robot flies (a rover beside drones needs
+// the table as it is: fields of view are the classes', not the robots') and every passable class's FOV is
 // one preset's.
 std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<VehicleSettings>& vehicles,
                                                             const ClassTable& classes) {
-    if (std::none_of(vehicles.begin(), vehicles.end(),
+    if (vehicles.empty() ||
+        !std::all_of(vehicles.begin(), vehicles.end(),
                      [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
         return std::nullopt;
     for (const PresetInfo& preset : classTablePresets()) {
@@ -870,15 +872,16 @@ std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<Ve
         if (!table.ok())
             continue;
         double smallest = std::numeric_limits<double>::infinity();
-        bool presets = true;
+        bool asInPreset = true;
         for (const LandCoverClass& landCover : classes.classes()) {
             if (!landCover.isTraversable())
                 continue;
             const LandCoverClass* row = table.value().find(landCover.value);
-            presets = presets && row != nullptr && row->fieldOfViewMetres == landCover.fieldOfViewMetres;
+            asInPreset =
+                asInPreset && row != nullptr && row->fieldOfViewMetres == landCover.fieldOfViewMetres;
             smallest = std::min(smallest, landCover.fieldOfViewMetres);
         }
-        if (presets && std::isfinite(smallest))
+        if (asInPreset && std::isfinite(smallest))
             return "aircraft see as far as the class table's fields of view, which are preset " +
                    preset.name + "'s, a ground robot's (the smallest " + formatQuantity(smallest, 4) +
                    " m, so passes as close as that): scale them to the camera's footprint on the ground "

@@ -208,8 +208,8 @@ class MissionFilesTest : public QObject {
         QCOMPARE(events[1].toObject()["speed_factor"].toDouble(), 0.0);
     }
 
-    // Drones at a preset's fields of view (a ground robot's) are told to scale them; scaled, or rovers
-    // only, nothing is said.
+    // Drones at a preset's fields of view (a ground robot's) are told to scale them; scaled, or beside a
+    // rover, nothing is said.
     void aircraftAtAPresetsFieldsOfViewAreWarned() {
         Mission mission = sampleMission();
         mission.exports.vehicle.type = VehicleType::Rover;
@@ -227,6 +227,8 @@ class MissionFilesTest : public QObject {
         };
         QVERIFY(warned(problem).empty()); // rovers: the preset's fields of view are theirs
         mission.robots[1].vehicle.type = VehicleType::Multirotor;
+        QVERIFY(warned(problem).empty()); // a drone beside rovers: the table is the rovers' too
+        mission.exports.vehicle.type = VehicleType::Multirotor;
         const std::string message = warned(problem);
         QVERIFY2(message.find("which are preset esa-worldcover's, a ground robot's (the smallest 5 m") !=
                      std::string::npos,
