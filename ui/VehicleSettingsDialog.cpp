@@ -13,7 +13,6 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
-#include <utility>
 
 namespace mcpp::ui {
 namespace {
@@ -237,47 +236,51 @@ void VehicleSettingsDialog::followDefaults() {
 
 namespace {
 
-// Rows named with what is wrong in each ("5", "0.5 min", a sentence), a robot's left out where it is what
-// the All robots row (the first) has: "All robots: 5, Robot 3: 6", not the same value once a row.
-QStringList namedOnce(const std::vector<std::pair<QString, QString>>& rows, const QString& allRobots) {
-    QString fleet;
-    for (const auto& [name, detail] : rows)
-        if (name == allRobots)
-            fleet = detail;
+// A row of the table with what is wrong in it ("5", "0.5 min", a sentence).
+struct RowProblem {
+    std::size_t row; // 0: All robots
+    QString name;
+    QString detail;
+};
+
+// The rows named with their problems, a robot's left out where it is what the All robots row has:
+// "All robots: 5, Robot 3: 6", not the same value once a row.
+QStringList namedOnce(const std::vector<RowProblem>& rows) {
+    const auto fleet =
+        std::find_if(rows.begin(), rows.end(), [](const RowProblem& row) { return row.row == 0; });
     QStringList named;
-    for (const auto& [name, detail] : rows)
-        if (name == allRobots || detail != fleet)
-            named << QStringLiteral("%1: %2").arg(name, detail);
+    for (const RowProblem& row : rows)
+        if (row.row == 0 || fleet == rows.end() || row.detail != fleet->detail)
+            named << QStringLiteral("%1: %2").arg(row.name, row.detail);
     return named;
 }
 
 } // namespace
 
 void VehicleSettingsDialog::checkLimits() {
-    std::vector<std::pair<QString, QString>> items;
-    std::vector<std::pair<QString, QString>> flights;
-    std::vector<std::pair<QString, QString>> climbs; // flights too short for the climb and descent
+    std::vector<RowProblem> items;
+    std::vector<RowProblem> flights;
+    std::vector<RowProblem> climbs; // flights too short for the climb and descent
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         const QString name = table_->verticalHeaderItem(static_cast<int>(i))->text();
         const int limit = rows_[i].maxWaypoints->value();
         if (!io::isWorkableItemLimit(limit))
-            items.emplace_back(name, QString::number(limit));
+            items.push_back({i, name, QString::number(limit)});
         const double minutes = rows_[i].flightTime->value();
         if (minutes > 0.0 && minutes * 60.0 < io::minimumFlightTimeSeconds)
-            flights.emplace_back(name, tr("%1 min").arg(minutes));
+            flights.push_back({i, name, tr("%1 min").arg(minutes)});
         else if (const auto tooShort = io::flightTooShortProblem(settingsOf(rows_[i])))
-            climbs.emplace_back(name, QString::fromStdString(*tooShort));
+            climbs.push_back({i, name, QString::fromStdString(*tooShort)});
     }
-    const QString allRobots = table_->verticalHeaderItem(0)->text();
     QStringList problems;
     if (!items.empty())
         problems << tr("An item limit must be %1 or more mission items, or 0 for no limit. Too small: %2.")
                         .arg(io::minimumMaxWaypoints)
-                        .arg(namedOnce(items, allRobots).join(QStringLiteral(", ")));
+                        .arg(namedOnce(items).join(QStringLiteral(", ")));
     if (!flights.empty())
         problems << tr("A flight time must be at least 1 min, or 0 for no limit. Too short: %1.")
-                        .arg(namedOnce(flights, allRobots).join(QStringLiteral(", ")));
-    for (const QString& climb : namedOnce(climbs, allRobots))
+                        .arg(namedOnce(flights).join(QStringLiteral(", ")));
+    for (const QString& climb : namedOnce(climbs))
         problems << climb + QLatin1Char('.');
     problem_->setText(problems.join(QLatin1Char(' ')));
     problem_->setVisible(!problems.isEmpty());
