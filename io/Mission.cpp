@@ -867,21 +867,25 @@ std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<Ve
         !std::all_of(vehicles.begin(), vehicles.end(),
                      [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
         return std::nullopt;
+    std::vector<const LandCoverClass*> passable;
+    for (const LandCoverClass& landCover : classes.classes())
+        if (landCover.isTraversable())
+            passable.push_back(&landCover);
+    if (passable.empty())
+        return std::nullopt;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const LandCoverClass* landCover : passable)
+        smallest = std::min(smallest, landCover->fieldOfViewMetres);
     for (const PresetInfo& preset : classTablePresets()) {
         const Result<ClassTable> table = presetClassTable(preset.name);
         if (!table.ok())
             continue;
-        double smallest = std::numeric_limits<double>::infinity();
-        bool asInPreset = true;
-        for (const LandCoverClass& landCover : classes.classes()) {
-            if (!landCover.isTraversable())
-                continue;
-            const LandCoverClass* row = table.value().find(landCover.value);
-            asInPreset =
-                asInPreset && row != nullptr && row->fieldOfViewMetres == landCover.fieldOfViewMetres;
-            smallest = std::min(smallest, landCover.fieldOfViewMetres);
-        }
-        if (asInPreset && std::isfinite(smallest))
+        const bool asInPreset =
+            std::all_of(passable.begin(), passable.end(), [&](const LandCoverClass* landCover) {
+                const LandCoverClass* row = table.value().find(landCover->value);
+                return row != nullptr && row->fieldOfViewMetres == landCover->fieldOfViewMetres;
+            });
+        if (asInPreset)
             return "aircraft see as far as the class table's fields of view, which are preset " +
                    preset.name + "'s, a ground robot's (the smallest " + formatQuantity(smallest, 4) +
                    " m, so passes as close as that): scale them to the camera's footprint on the ground "

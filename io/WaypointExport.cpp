@@ -65,6 +65,15 @@ Result<std::vector<LonLat>> lonLatsOf(const ExportContext& context, const Autopi
 }
 
 // The robot's cache entry, its mission made.
+// The mission a vehicle of these settings flies along the path.
+AutopilotMission missionFlownBy(const ExportContext& context, const CoveragePath& coverage,
+                                const VehicleSettings& vehicle) {
+    CoveragePath whole;
+    return autopilotMission(
+        pathForWaypointFiles(coverage, context.plan.cells, context.settings.mergeCollinear, whole), vehicle,
+        context.settings, context.plan.cells);
+}
+
 ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context, int robot) {
     std::shared_ptr<ExportContext::MissionCache::Entry> entry;
     {
@@ -75,12 +84,8 @@ ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context,
         entry = slot;
     }
     std::call_once(entry->made, [&] {
-        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot)) {
-            CoveragePath whole;
-            entry->mission = autopilotMission(
-                pathForWaypointFiles(*coverage, context.plan.cells, context.settings.mergeCollinear, whole),
-                context.vehicle(robot), context.settings, context.plan.cells);
-        }
+        if (const CoveragePath* coverage = pathOfRobot(context.plan, robot))
+            entry->mission = missionFlownBy(context, *coverage, context.vehicle(robot));
     });
     return *entry; // the cache keeps it as long as the context
 }
@@ -601,12 +606,8 @@ std::string itemLimitNote(const ExportContext& context, int robot, const Autopil
         return {};
     VehicleSettings unlimited = vehicle;
     unlimited.maxWaypoints = 0;
-    CoveragePath whole;
-    const std::size_t byFlights = std::max<std::size_t>(
-        1, autopilotMission(
-               pathForWaypointFiles(*coverage, context.plan.cells, context.settings.mergeCollinear, whole),
-               unlimited, context.settings, context.plan.cells)
-               .parts.size());
+    const std::size_t byFlights =
+        std::max<std::size_t>(1, missionFlownBy(context, *coverage, unlimited).parts.size());
     constexpr std::size_t manyMore = 2;
     if (mission.parts.size() < manyMore * byFlights)
         return {};
