@@ -6,10 +6,13 @@
 #include "io/internal/TextFiles.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace mcpp::io {
 namespace {
@@ -453,37 +456,86 @@ MissionFlights missionFlights(const AutopilotMission& mission, const VehicleSett
     return flights;
 }
 
-std::string missionPartPath(const std::string& path, std::size_t part) {
+namespace {
+
+// "robot_1.plan", "_part_", 2 of 12 -> "robot_1_part_03.plan".
+std::string numberedPath(const std::string& path, const std::string& tag, std::size_t index,
+                         std::size_t count) {
     const std::filesystem::path file(path);
-    const std::string name =
-        file.stem().string() + "_part_" + std::to_string(part + 1) + file.extension().string();
-    return (file.parent_path() / name).string();
+    std::string number = std::to_string(index + 1);
+    const std::size_t width = std::to_string(std::max(count, index + 1)).size();
+    number.insert(0, width - number.size(), '0');
+    return (file.parent_path() / (file.stem().string() + tag + number + file.extension().string())).string();
 }
 
-std::string missionSortiePath(const std::string& path, std::size_t sortie) {
-    const std::filesystem::path file(path);
-    const std::string name =
-        file.stem().string() + "_sortie_" + std::to_string(sortie + 1) + file.extension().string();
-    return (file.parent_path() / name).string();
+// The numbered files with `tag` an export to `path` may have written beside it ("robot_1_sortie_7.plan",
+// "robot_1_sortie_07.plan" for "robot_1.plan" and "_sortie_"), whatever their number's padding, each named
+// once, also where only its parts are there ("robot_1_sortie_7_part_2.plan").
+std::vector<std::filesystem::path> numberedFilesBeside(const std::string& path, const std::string& tag) {
+    namespace fs = std::filesystem;
+    const fs::path file(path);
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    const std::string prefix = file.stem().string() + tag;
+    const std::string extension = file.extension().string();
+    const auto digits = [](const std::string& text) {
+        return !text.empty() &&
+               std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+    };
+    std::vector<fs::path> found;
+    std::error_code code;
+    for (fs::directory_iterator entry(folder, code), end; !code && entry != end; entry.increment(code)) {
+        const std::string name = entry->path().filename().string();
+        if (name.size() <= prefix.size() + extension.size() || !name.starts_with(prefix) ||
+            !name.ends_with(extension))
+            continue;
+        const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - extension.size());
+        const std::size_t partTag = middle.find("_part_");
+        const std::string number = middle.substr(0, partTag);
+        if (!digits(number) || (partTag != std::string::npos && !digits(middle.substr(partTag + 6))))
+            continue;
+        const fs::path numbered = file.parent_path() / (prefix + number + extension);
+        if (std::find(found.begin(), found.end(), numbered) == found.end())
+            found.push_back(numbered);
+    }
+    return found;
+}
+
+// Whether `file` is one of the `count` numbered files of `path` with `tag`.
+bool isWritten(const std::filesystem::path& file, const std::string& path, const std::string& tag,
+               std::size_t count) {
+    for (std::size_t index = 0; index < count; ++index)
+        if (file == std::filesystem::path(numberedPath(path, tag, index, count)))
+            return true;
+    return false;
+}
+
+} // namespace
+
+std::string missionPartPath(const std::string& path, std::size_t part, std::size_t parts) {
+    return numberedPath(path, "_part_", part, parts);
+}
+
+std::string missionSortiePath(const std::string& path, std::size_t sortie, std::size_t sorties) {
+    return numberedPath(path, "_sortie_", sortie, sorties);
 }
 
 bool removeStaleMissionFiles(const std::string& path, std::size_t parts) {
     std::error_code code;
     bool removed = parts > 1 && std::filesystem::remove(path, code);
-    for (std::size_t part = parts > 1 ? parts : 0; std::filesystem::remove(missionPartPath(path, part), code);
-         ++part)
-        removed = true;
+    const std::size_t written = parts > 1 ? parts : 0;
+    for (const std::filesystem::path& file : numberedFilesBeside(path, "_part_"))
+        if (!isWritten(file, path, "_part_", written))
+            removed = std::filesystem::remove(file, code) || removed;
     return removed;
 }
 
 void removeStaleSortieFiles(const std::string& path, std::size_t written) {
     std::error_code code;
-    for (std::size_t sortie = written;; ++sortie) {
-        const std::string file = missionSortiePath(path, sortie);
-        const bool removed = std::filesystem::remove(file, code);
-        if (!removeStaleMissionFiles(file, 0) && !removed)
-            break;
-    }
+    for (const std::filesystem::path& file : numberedFilesBeside(path, "_sortie_"))
+        if (!isWritten(file, path, "_sortie_", written)) {
+            std::filesystem::remove(file, code);
+            removeStaleMissionFiles(file.string(), 0);
+        }
 }
 
 } // namespace mcpp::io

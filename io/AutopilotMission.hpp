@@ -108,19 +108,23 @@ struct MissionSize {
 [[nodiscard]] MissionSize missionSize(const CoveragePath& path, const CellGraph& cells,
                                       const VehicleSettings& vehicle, const ExportSettings& settings);
 
-// The file of one part of a split mission: "out/robot_1.plan" -> "out/robot_1_part_2.plan" (part from 0).
-[[nodiscard]] std::string missionPartPath(const std::string& path, std::size_t part);
+// The file of one part of a split mission in `parts`: "out/robot_1.plan" -> "out/robot_1_part_2.plan" (part
+// from 0), the number padded with zeros to the width of `parts` ("robot_1_part_02.plan" of 12) so that a file
+// list sorts the parts in the order they are flown.
+[[nodiscard]] std::string missionPartPath(const std::string& path, std::size_t part, std::size_t parts);
 
-// The file of one sortie of a robot that charges between flights: "out/robot_1.plan" ->
-// "out/robot_1_sortie_2.plan" (sortie from 0). A sortie above the item limit is split into its own parts.
-[[nodiscard]] std::string missionSortiePath(const std::string& path, std::size_t sortie);
+// The file of one of a robot's `sorties` when it charges between flights: "out/robot_1.plan" ->
+// "out/robot_1_sortie_2.plan" (sortie from 0, padded as parts are). A sortie above the item limit is split
+// into its own parts.
+[[nodiscard]] std::string missionSortiePath(const std::string& path, std::size_t sortie, std::size_t sorties);
 
 // Removes what an earlier export to `path` left that this one did not write: the whole file when the mission
-// was written in parts, parts from `parts` on (all of them when it was written whole: parts 1, or not at
-// all: 0). True when a file went.
+// was written in parts, and every part file beside it that is not one of this export's `parts` (all of them
+// when it was written whole: parts 1, or not at all: 0), whatever its number's padding. True when a file
+// went.
 bool removeStaleMissionFiles(const std::string& path, std::size_t parts);
-// Removes the sortie files (and their parts) an earlier export to `path` wrote from sortie `written` on,
-// up to the first sortie number it finds none for.
+// Removes the sortie files (and their parts) an earlier export to `path` wrote that are not among this
+// export's `written` sorties (0: none).
 void removeStaleSortieFiles(const std::string& path, std::size_t written);
 
 } // namespace mcpp::io

@@ -322,7 +322,7 @@ Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& contex
 // mission in one part, "robot_2_part_3" for its third part.
 std::string partFileStem(int robot, std::size_t part, std::size_t parts) {
     const std::string whole = robotFileStem(robot);
-    return parts > 1 ? missionPartPath(whole, part) : whole;
+    return parts > 1 ? missionPartPath(whole, part, parts) : whole;
 }
 
 // One waypoint file's part as a feature of the missions layer: what it holds and takes, and its line.

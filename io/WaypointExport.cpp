@@ -471,7 +471,7 @@ Status writeMission(const AutopilotMission& mission, const std::vector<LonLat>& 
         mission.takeOff ? GeoWaypoint{mission.home(), 0.0, lonLats.back().longitude, lonLats.back().latitude}
                         : geoPoints(mission, {0, 0, 0}, lonLats).front();
     for (std::size_t part = 0; part < mission.parts.size(); ++part) {
-        const std::string file = split ? missionPartPath(path, part) : path;
+        const std::string file = split ? missionPartPath(path, part, mission.parts.size()) : path;
         const std::vector<GeoWaypoint> points = geoPoints(mission, mission.parts[part], lonLats);
         if (auto written = internal::writeFileAtomically(
                 file, text(mission, mission.parts[part], points, home, vehicle), Sync::BySystem);
@@ -493,7 +493,7 @@ Status writeSortieMissions(const ExportContext& context, int robot, const Covera
         const CoveragePath flight = sortiePath(coverage, sorties->sorties[sortie]);
         const AutopilotMission mission =
             autopilotMission(flight, context.vehicle(robot), context.settings, context.plan.cells);
-        const std::string file = missionSortiePath(path, sortie);
+        const std::string file = missionSortiePath(path, sortie, count);
         auto lonLats = lonLatsOf(context, mission);
         if (!lonLats)
             return Status::failure(file + ": " + lonLats.error());
@@ -537,7 +537,9 @@ std::string sortieFilesNote(const ExportContext& context, int robot, const std::
     if (sorties == nullptr || sorties->sorties.size() < 2)
         return {};
     const auto name = [&](std::size_t sortie) {
-        return std::filesystem::path(missionSortiePath(path, sortie)).filename().string();
+        return std::filesystem::path(missionSortiePath(path, sortie, sorties->sorties.size()))
+            .filename()
+            .string();
     };
     const char* const makes = isAircraft(context.vehicle(robot).type) ? " flies " : " makes ";
     return context.robotName(robot) + makes + std::to_string(sorties->sorties.size()) +
@@ -626,7 +628,7 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
         return {};
     const VehicleSettings& vehicle = context.vehicle(robot);
     const auto partName = [&](std::size_t part) {
-        return std::filesystem::path(missionPartPath(path, part)).filename().string();
+        return std::filesystem::path(missionPartPath(path, part, mission.parts.size())).filename().string();
     };
     const std::string aircraft =
         isAircraft(vehicle.type) ? "; each takes off from the robot's start and returns to it" : "";

@@ -46,7 +46,8 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
             outcome.written << path;
         } else {
             for (std::size_t part = 0; part < parts; ++part)
-                outcome.written << QString::fromStdString(io::missionPartPath(path.toStdString(), part));
+                outcome.written << QString::fromStdString(
+                    io::missionPartPath(path.toStdString(), part, parts));
             outcome.notes << QString::fromStdString(
                                  io::splitMissionNote(context, robot, path.toStdString())) +
                                  QStringLiteral(".");

@@ -56,6 +56,19 @@ QJsonObject sampleMissionAnywhere(const QString& folder, const QString& rasterFi
     return mission;
 }
 
+// Batch mode's name for a part of a robot's split mission, without the extension: "robot_2_part_3", the
+// part's number padded with zeros to the width of the last one's ("robot_2_part_03" of 12).
+QString partStem(int robot, int part, int parts) {
+    const int width = static_cast<int>(QString::number(parts).size());
+    return QStringLiteral("robot_%1_part_%2").arg(robot + 1).arg(part, width, 10, QLatin1Char('0'));
+}
+
+// The same for a sortie of a robot that charges between flights: "robot_2_sortie_3".
+QString sortieStem(int robot, int sortie, int sorties) {
+    const int width = static_cast<int>(QString::number(sorties).size());
+    return QStringLiteral("robot_%1_sortie_%2").arg(robot + 1).arg(sortie, width, 10, QLatin1Char('0'));
+}
+
 bool writeText(const QString& path, const QByteArray& text) {
     QFile file(path);
     return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
@@ -500,10 +513,7 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
             }
             QVERIFY2(!QFileInfo::exists(out.filePath(whole)), qPrintable(whole));
             for (int part = 1; part <= parts; ++part)
-                expected << QStringLiteral("robot_%1_part_%2%3")
-                                .arg(robot + 1)
-                                .arg(part)
-                                .arg(QLatin1String(extension));
+                expected << partStem(robot, part, parts) + QLatin1String(extension);
         }
     }
     for (const auto& name : expected) {
@@ -608,8 +618,9 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
 
     // Waypoint files have the structure their readers expect.
     for (int robot = 0; robot < robots; ++robot) {
-        const bool split = reportRobots[robot].toObject().value("mission_parts").toInt() > 1;
-        const QString stem = QStringLiteral("robot_%1%2").arg(robot + 1).arg(split ? "_part_1" : "");
+        const int parts = reportRobots[robot].toObject().value("mission_parts").toInt();
+        const QString stem =
+            parts > 1 ? partStem(robot, 1, parts) : QStringLiteral("robot_%1").arg(robot + 1);
         const auto plan = readJsonObject(out.filePath(stem + ".plan"));
         QCOMPARE(plan.value("fileType").toString(), QStringLiteral("Plan"));
         QFile waypoints(out.filePath(stem + ".waypoints"));
@@ -757,12 +768,11 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
         ++splitRobots;
         QVERIFY(!QFileInfo::exists(QStringLiteral("%1/robot_%2.plan").arg(out).arg(robot + 1)));
         QVERIFY(!QFileInfo::exists(QStringLiteral("%1/robot_%2.waypoints").arg(out).arg(robot + 1)));
-        QVERIFY2(run.standardOutput.contains(QStringLiteral("robot_%1_part_%2").arg(robot + 1).arg(parts)),
-                 qPrintable(run.standardOutput));
+        QVERIFY2(run.standardOutput.contains(partStem(robot, parts, parts)), qPrintable(run.standardOutput));
         QJsonArray previousEnd;
         for (int part = 1; part <= parts; ++part) {
             const auto plan =
-                readJsonObject(QStringLiteral("%1/robot_%2_part_%3.plan").arg(out).arg(robot + 1).arg(part));
+                readJsonObject(QStringLiteral("%1/%2.plan").arg(out, partStem(robot, part, parts)));
             const QJsonArray items = plan.value("mission").toObject().value("items").toArray();
             QVERIFY(items.size() + 1 <= limit);                          // with the home position
             QCOMPARE(items[0].toObject().value("command").toInt(), 178); // the speed the part starts at
@@ -887,8 +897,12 @@ void TestBatchEndToEnd::droneFlagsPlanAtTheCruiseSpeed() {
     for (const QJsonValue& issue : report.value("issues").toArray())
         noted = noted || issue.toObject().value("code").toString() == QStringLiteral("cruise-speed");
     QVERIFY(noted);
-    const QJsonArray items =
-        readJsonObject(drone + "/robot_1_part_1.plan").value("mission").toObject().value("items").toArray();
+    const int droneParts = report.value("robots").toArray()[0].toObject().value("mission_parts").toInt();
+    const QJsonArray items = readJsonObject(drone + "/" + partStem(0, 1, droneParts) + ".plan")
+                                 .value("mission")
+                                 .toObject()
+                                 .value("items")
+                                 .toArray();
     QCOMPARE(items.first().toObject().value("command").toInt(), 22);
     QCOMPARE(items.first().toObject().value("params").toArray()[6].toDouble(), 45.0);
     QCOMPARE(items.last().toObject().value("command").toInt(), 20);
@@ -939,23 +953,21 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
             flying += time.toDouble();
         }
         QVERIFY(nearlyEqual(figures.value("time_s").toDouble(), flying + (sorties - 1) * recharge));
-        QVERIFY2(run.standardOutput.contains(
-                     QStringLiteral("robot_%1_sortie_%2.plan").arg(robot + 1).arg(sorties)),
+        QVERIFY2(run.standardOutput.contains(sortieStem(robot, sorties, sorties) + QStringLiteral(".plan")),
                  qPrintable(run.standardOutput));
         const auto whole =
             planEnds(readJsonObject(QStringLiteral("%1/robot_%2.plan").arg(out).arg(robot + 1)));
         for (int sortie = 1; sortie <= sorties; ++sortie) {
-            const QString file =
-                QStringLiteral("%1/robot_%2_sortie_%3.plan").arg(out).arg(robot + 1).arg(sortie);
+            const QString file = QStringLiteral("%1/%2.plan").arg(out, sortieStem(robot, sortie, sorties));
             QVERIFY2(QFileInfo::exists(file), qPrintable(file));
             const auto ends = planEnds(readJsonObject(file));
             QCOMPARE(ends.first, whole.first); // the charger
             QCOMPARE(ends.second, whole.first);
             QVERIFY(QFileInfo::exists(
-                QStringLiteral("%1/robot_%2_sortie_%3.waypoints").arg(out).arg(robot + 1).arg(sortie)));
+                QStringLiteral("%1/%2.waypoints").arg(out, sortieStem(robot, sortie, sorties))));
         }
         QVERIFY(!QFileInfo::exists(
-            QStringLiteral("%1/robot_%2_sortie_%3.plan").arg(out).arg(robot + 1).arg(sorties + 1)));
+            QStringLiteral("%1/%2.plan").arg(out, sortieStem(robot, sorties + 1, sorties))));
     }
     run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--planner", "wavefront-battery",
                    "--param", "battery_s=1000000", "--out", out});
@@ -993,7 +1005,7 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
     QVERIFY2(!said.contains(QStringLiteral(" fl")), qPrintable(said));
     for (int sortie = 1; sortie <= sorties; ++sortie) {
         const auto ends =
-            planEnds(readJsonObject(QStringLiteral("%1/robot_1_sortie_%2.plan").arg(out).arg(sortie)));
+            planEnds(readJsonObject(QStringLiteral("%1/%2.plan").arg(out, sortieStem(0, sortie, sorties))));
         QCOMPARE(ends.first, sortie == 1 ? whole.first : whole.second);
         QCOMPARE(ends.second, whole.second);
     }

@@ -7,6 +7,7 @@
 #include "io/PlanExport.hpp"
 #include "io/internal/StraightLine.hpp"
 
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -15,6 +16,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
+#include <filesystem>
 #include <random>
 
 using namespace mcpp;
@@ -516,8 +518,69 @@ class AutopilotMissionTest : public QObject {
     }
 
     void partFileNames() {
-        QCOMPARE(missionPartPath("out/robot_1.plan", 0), std::string("out/robot_1_part_1.plan"));
-        QCOMPARE(missionPartPath("robot_12.waypoints", 2), std::string("robot_12_part_3.waypoints"));
+        QCOMPARE(missionPartPath("out/robot_1.plan", 0, 3), std::string("out/robot_1_part_1.plan"));
+        QCOMPARE(missionPartPath("robot_12.waypoints", 2, 9), std::string("robot_12_part_3.waypoints"));
+        // Padded to the width of the last part's number, so that a file list sorts parts as they are flown.
+        QCOMPARE(missionPartPath("robot_1.plan", 2, 12), std::string("robot_1_part_03.plan"));
+        QCOMPARE(missionPartPath("robot_1.plan", 11, 12), std::string("robot_1_part_12.plan"));
+        QCOMPARE(missionPartPath("robot_1.plan", 6, 100), std::string("robot_1_part_007.plan"));
+        QCOMPARE(missionSortiePath("out/robot_2.plan", 0, 10), std::string("out/robot_2_sortie_01.plan"));
+        QCOMPARE(missionSortiePath("out/robot_2.plan", 1, 2), std::string("out/robot_2_sortie_2.plan"));
+    }
+
+    // An export in 12 parts after one in 3, then in 3 again, then whole: each time only its own files stay,
+    // whatever the padding of the earlier ones; other robots' and other formats' files are left alone.
+    void staleFilesOfAnotherPaddingGo() {
+        QTemporaryDir folder;
+        const std::string whole = folder.filePath(QStringLiteral("robot_1.plan")).toStdString();
+        const auto touch = [&](const std::string& name) {
+            QFile file(folder.filePath(QString::fromStdString(name)));
+            QVERIFY(file.open(QIODevice::WriteOnly));
+        };
+        const auto left = [&] {
+            QStringList names = QDir(folder.path()).entryList(QDir::Files);
+            names.sort();
+            return names.join(QLatin1Char(' '));
+        };
+        for (const char* other :
+             {"robot_11_part_1.plan", "robot_1_part_1.waypoints", "robot_1.csv", "notes.txt"})
+            touch(other);
+        const QString others =
+            QStringLiteral("notes.txt robot_11_part_1.plan robot_1.csv robot_1_part_1.waypoints");
+        const auto write = [&](std::size_t parts) {
+            for (std::size_t part = 0; part < parts; ++part)
+                touch(std::filesystem::path(missionPartPath(whole, part, parts)).filename().string());
+        };
+        write(3);
+        touch("robot_1.plan");
+        QVERIFY(removeStaleMissionFiles(whole, 3)); // the whole file of an earlier export
+        write(12);
+        QVERIFY(removeStaleMissionFiles(whole, 12));
+        QVERIFY2(!left().contains(QStringLiteral("robot_1_part_1.plan")), qPrintable(left()));
+        QVERIFY2(left().contains(QStringLiteral("robot_1_part_01.plan")), qPrintable(left()));
+        QCOMPARE(left().count(QStringLiteral(".plan")), 12 + 1);
+        write(3);
+        QVERIFY(removeStaleMissionFiles(whole, 3));
+        const auto sorted = [](QStringList names) {
+            names.sort();
+            return names.join(QLatin1Char(' '));
+        };
+        QStringList expected = others.split(QLatin1Char(' '));
+        QCOMPARE(left(), sorted(expected + QStringList{QStringLiteral("robot_1_part_1.plan"),
+                                                       QStringLiteral("robot_1_part_2.plan"),
+                                                       QStringLiteral("robot_1_part_3.plan")}));
+        touch("robot_1.plan");
+        QVERIFY(removeStaleMissionFiles(whole, 1));
+        QVERIFY(!removeStaleMissionFiles(whole, 1)); // nothing more to remove
+        expected << QStringLiteral("robot_1.plan");
+        QCOMPARE(left(), sorted(expected));
+
+        // Sorties: a sortie written in parts only, in another padding, goes with its parts.
+        for (const char* sortie : {"robot_1_sortie_1.plan", "robot_1_sortie_2_part_1.plan",
+                                   "robot_1_sortie_2_part_2.plan", "robot_1_sortie_01.plan"})
+            touch(sortie);
+        removeStaleSortieFiles(whole, 0);
+        QCOMPARE(left(), sorted(expected));
     }
 
     void splitFilesAreWrittenAndJoinUp() {
@@ -539,7 +602,8 @@ class AutopilotMissionTest : public QObject {
         const std::vector<LonLat> lonLats = reference.toWgs84(missionPoints).value();
         QJsonArray previousLast;
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
-            const QString path = QString::fromStdString(missionPartPath(whole.toStdString(), part));
+            const QString path =
+                QString::fromStdString(missionPartPath(whole.toStdString(), part, mission.parts.size()));
             const QJsonObject file = readJson(path);
             const QJsonArray items = file["mission"].toObject()["items"].toArray();
             QVERIFY2(!items.isEmpty(), qPrintable(path));
@@ -564,15 +628,16 @@ class AutopilotMissionTest : public QObject {
             }
             previousLast = last;
         }
-        QVERIFY(!QFileInfo::exists(
-            QString::fromStdString(missionPartPath(whole.toStdString(), mission.parts.size()))));
+        QVERIFY(!QFileInfo::exists(QString::fromStdString(
+            missionPartPath(whole.toStdString(), mission.parts.size(), mission.parts.size()))));
 
         // The waypoint list of the same robot: the same parts, home and first speed rows included in the
         // limit.
         const QString list = folder.filePath(QStringLiteral("robot_1.waypoints"));
         QVERIFY(writeWaypointList(context, 0, list.toStdString()).ok());
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
-            QFile file(QString::fromStdString(missionPartPath(list.toStdString(), part)));
+            QFile file(
+                QString::fromStdString(missionPartPath(list.toStdString(), part, mission.parts.size())));
             QVERIFY(file.open(QIODevice::ReadOnly));
             const int rows = static_cast<int>(file.readAll().count('\n')) - 1; // less the header
             QCOMPARE(rows, mission.parts[part].items);
@@ -732,7 +797,8 @@ class AutopilotMissionTest : public QObject {
         QVERIFY(mission.parts.size() > 2);
         const LonLat start = reference.toWgs84({{mission.points[0].x, mission.points[0].y}}).value().front();
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
-            const QString path = QString::fromStdString(missionPartPath(whole.toStdString(), part));
+            const QString path =
+                QString::fromStdString(missionPartPath(whole.toStdString(), part, mission.parts.size()));
             const QJsonObject plannedMission = readJson(path)["mission"].toObject();
             QCOMPARE(plannedMission["vehicleType"].toInt(), 2); // a quadrotor
             const QJsonArray home = plannedMission["plannedHomePosition"].toArray();
@@ -753,7 +819,8 @@ class AutopilotMissionTest : public QObject {
         const QString list = folder.filePath(QStringLiteral("robot_1.waypoints"));
         QVERIFY(writeWaypointList(context, 0, list.toStdString()).ok());
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
-            QFile file(QString::fromStdString(missionPartPath(list.toStdString(), part)));
+            QFile file(
+                QString::fromStdString(missionPartPath(list.toStdString(), part, mission.parts.size())));
             QVERIFY(file.open(QIODevice::ReadOnly));
             QList<QByteArrayList> rows;
             for (const QByteArray& line : file.readAll().split('\n').mid(1))
@@ -791,7 +858,8 @@ class AutopilotMissionTest : public QObject {
         const LonLat takeOff = lawnmowerExport.reference.toWgs84({{road}}).value().front();
         const LonLat pathStart = lawnmowerExport.reference.toWgs84({{{first.x, first.y}}}).value().front();
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
-            const QString path = QString::fromStdString(missionPartPath(whole.toStdString(), part));
+            const QString path =
+                QString::fromStdString(missionPartPath(whole.toStdString(), part, mission.parts.size()));
             const QJsonObject plannedMission = readJson(path)["mission"].toObject();
             const QJsonArray home = plannedMission["plannedHomePosition"].toArray();
             QCOMPARE(home[0].toDouble(), takeOff.latitude);

@@ -433,9 +433,12 @@ class PlanExportTest : public QObject {
             const MissionPart& piece = mission.parts[part];
             QCOMPARE(feature->GetFieldAsInteger("items"), piece.items);
             QCOMPARE(feature->GetFieldAsDouble("part_time_s"), piece.seconds);
-            // The files batch mode writes: robot_1_part_2.plan and .waypoints; robot_2.plan when whole.
-            const std::string stem = "robot_" + std::to_string(robot + 1) +
-                                     (mission.parts.size() > 1 ? "_part_" + std::to_string(part + 1) : "");
+            // The files batch mode writes: robot_1_part_2.plan and .waypoints (robot_1_part_02 of 12);
+            // robot_2.plan when whole.
+            std::string number = std::to_string(part + 1);
+            number.insert(0, std::to_string(mission.parts.size()).size() - number.size(), '0');
+            const std::string stem =
+                "robot_" + std::to_string(robot + 1) + (mission.parts.size() > 1 ? "_part_" + number : "");
             QCOMPARE(std::string(feature->GetFieldAsString("file")), stem);
             const OGRLineString* line = feature->GetGeometryRef()->toLineString();
             QCOMPARE(static_cast<std::size_t>(line->getNumPoints()), piece.last - piece.first + 1);
