@@ -7,7 +7,8 @@
 # Per case: the paths' makespan and bound, when the last robot is home, the bound in the field, the last over
 # the first robot home, the whole process and its peak memory (/usr/bin/time).
 #   bench/drone-missions.sh RASTER [MCPP] [CASE...]
-# RASTER: corine2006_swiss_ls100.tif; MCPP defaults to build/release/app/mcpp.
+# RASTER: corine2006_swiss_ls100.tif; MCPP defaults to build/release/app/mcpp. KEEP_SCRATCH=1 keeps the
+# missions and their outputs in the temporary folder (its name is printed) for a look at them.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 raster="$(realpath "$1")"
@@ -16,7 +17,8 @@ shift 2 || shift $#
 wanted=("$@")
 [ ${#wanted[@]} -eq 0 ] && wanted=(team corner road)
 scratch="$(mktemp -d)"
-trap 'rm -rf "$scratch"' EXIT
+trap '[ -n "${KEEP_SCRATCH:-}" ] || rm -rf "$scratch"' EXIT
+[ -z "${KEEP_SCRATCH:-}" ] || echo "missions and outputs in $scratch"
 export QT_QPA_PLATFORM=offscreen
 
 python3 - "$raster" "$scratch" <<'PYTHON'

@@ -25,6 +25,10 @@ struct Plan {
     // By robot, its own speed over every passable class in m/s; missing or 0: the class table's speeds
     // (PlanningProblem::robotSpeeds). Its path's waypoints carry it, and the lower bound counts it.
     std::vector<double> robotSpeeds;
+    // By robot, the field seconds a second of its path takes that the planner's division already counted
+    // (an aircraft's trips out to its work); empty or 0: none. Rounds balancing time in the field measure
+    // their paces against it.
+    std::vector<double> countedFieldPaces;
     PlanMetrics metrics;
     std::vector<PlanIssue> issues;
     std::vector<std::shared_ptr<const PlanLayer>> layers;

@@ -2,6 +2,7 @@
 
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 #include "core/allocation/BorderStraightening.hpp"
+#include "core/allocation/TripWeighting.hpp"
 #include "core/coverage/OwnSpeeds.hpp"
 #include "core/coverage/PathTimeBalancing.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
@@ -12,6 +13,7 @@
 #include "core/planners/QuadTreeStage.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace mcpp {
 namespace {
@@ -42,9 +44,9 @@ double longestTime(const std::vector<CoveragePath>& paths, const std::vector<dou
 // Robots of their own speeds or field paces: paces guessed from travel alone, their turns left out, are put
 // right by the paths as driven, and the division evened out again with them while that shortens the
 // longest time in the field. Returns the rounds kept.
-int balanceOwnSpeeds(PlanningRun& run, const std::vector<int>& startCells, const std::vector<double>& guessed,
-                     AzimuthTrendAllocator& allocator, BorderStraightening& straightening,
-                     const SpanningTreeCoverage& coverage) {
+int balanceOwnSpeeds(PlanningRun& run, const TripWeighting& trips, const std::vector<int>& startCells,
+                     const std::vector<double>& guessed, AzimuthTrendAllocator& allocator,
+                     BorderStraightening& straightening, const SpanningTreeCoverage& coverage) {
     Plan& plan = run.plan();
     int kept = 0;
     for (; kept < speedBalanceRounds && startCells.size() > 1; ++kept) {
@@ -57,18 +59,35 @@ int balanceOwnSpeeds(PlanningRun& run, const std::vector<int>& startCells, const
             drivenPaces(plan.cells, plan.regions, plan.paths, guessed), fieldPaces, startCells.size());
         allocator.setPaces(paces);
         straightening.setPaces(paces);
-        RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions, progress);
+        RegionAllocation regions =
+            allocator.rebalance(trips.divided(plan.cells), startCells, plan.regions, progress);
         straightening.straighten(regions);
         std::vector<CoveragePath> paths = coverage.walkTrees(
             plan.cells, coverage.planTrees(plan.cells, regions, run.starts(), progress, false), run.starts(),
             progress);
         driveAtOwnSpeeds(paths, plan.cells, run.problem().robotSpeeds);
-        if (!(longestTime(paths, fieldPaces) < longestTime(plan.paths, fieldPaces)))
+        // Compared in time in the field as the division counts it, trips included.
+        const auto longest = [&](const std::vector<CoveragePath>& compared,
+                                 const RegionAllocation& division) {
+            return longestTime(
+                compared, withFieldPaces(trips.paces(plan.cells, division), fieldPaces, startCells.size()));
+        };
+        if (!(longest(paths, regions) < longest(plan.paths, plan.regions)))
             break;
         plan.regions = std::move(regions);
         plan.paths = std::move(paths);
     }
     return kept;
+}
+
+// Where each robot's flights take off: its start, or where it takes off outside its path.
+std::vector<MapPoint> launchPoints(const PlanningRun& run) {
+    std::vector<MapPoint> points = run.starts();
+    const auto& takeOffs = run.takeOffPoints();
+    for (std::size_t robot = 0; robot < points.size() && robot < takeOffs.size(); ++robot)
+        if (takeOffs[robot])
+            points[robot] = *takeOffs[robot];
+    return points;
 }
 
 } // namespace
@@ -102,9 +121,12 @@ void MlctPlanner::run(PlanningRun& run) const {
     Plan& plan = run.plan();
     plan.cells = quadTreeStage(run);
     const std::vector<int> startCells = run.locateStarts();
+    // Aircraft flying out to far work: the division weighs cells by the field time their trips take.
+    const TripWeighting trips(plan.cells, launchPoints(run), run.problem().robotFlights);
+    const CellGraph& divided = trips.divided(plan.cells);
     AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"),
                                     parameters.real("tree_piece_share") / 100.0);
-    BorderStraightening straightening(plan.cells, parameters.real("fewer_turns_slack") / 100.0);
+    BorderStraightening straightening(divided, parameters.real("fewer_turns_slack") / 100.0);
     SpanningTreeCoverage coverage(parameters.boolean("closed_tour"),
                                   SpanningTreeCoverage::fewestCellsForMergedRuns);
     TurnSearch turnSearch = TurnSearch::forPlan(plan.cells, parameters);
@@ -126,8 +148,7 @@ void MlctPlanner::run(PlanningRun& run) const {
         coverage.setRobotSpeeds(speeds);
         turnSearch.setRobotSpeeds(speeds);
     }
-    plan.regions =
-        run.stage("allocation", [&] { return allocator.allocate(plan.cells, startCells, progress); });
+    plan.regions = run.stage("allocation", [&] { return allocator.allocate(divided, startCells, progress); });
     run.stage("straight borders", [&] { return straightening.straighten(plan.regions); });
     // Trees first, walked once the division is settled: two divisions are compared by their trees, which
     // take a quarter of the memory of their paths (3.7 GB instead of 5.4 GB on 17.6 M cells with a fast
@@ -141,7 +162,7 @@ void MlctPlanner::run(PlanningRun& run) const {
     // fraction of the time.
     // Skipped for robots of their own speeds (trees are timed at the class table's speeds) or field paces.
     run.stage("turn balance", [&] {
-        if (paced || !turnsWeigh(trees) ||
+        if (paced || trips.weighs() || !turnsWeigh(trees) ||
             !calibrateTurnRates(plan.cells, plan.regions, turningSecondsOf(trees)))
             return 0;
         RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions,
@@ -164,18 +185,22 @@ void MlctPlanner::run(PlanningRun& run) const {
     });
     if (paced)
         run.stage("speed balance", [&] {
-            return balanceOwnSpeeds(run, startCells, guessedPaces, allocator, straightening, coverage);
+            return balanceOwnSpeeds(run, trips, startCells, guessedPaces, allocator, straightening, coverage);
         });
     // Costs only estimate path times: border cells pass from the longest path to shorter neighbours, paths
     // replanned, while that shortens the longest. Bounded to about half a second of replanning.
     PathTimeBalancing balancing(coverage, PathTimeBalancing::budgetFor(plan.cells));
-    balancing.setFieldPaces(fieldPaces);
+    // Path balancing weighs each path by its robot's time in the field as the division counts it.
+    balancing.setFieldPaces(
+        trips.weighs() ? withFieldPaces(trips.paces(plan.cells, plan.regions), fieldPaces, startCells.size())
+                       : fieldPaces);
     run.stage("path balance", [&] {
         return balancing.balance(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });
     run.stage("turn search", [&] {
         return turnSearch.improve(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });
+    plan.countedFieldPaces = trips.paces(plan.cells, plan.regions);
 }
 
 } // namespace mcpp

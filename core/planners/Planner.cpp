@@ -264,12 +264,13 @@ double stagesMilliseconds(const PlanMetrics& metrics) {
 }
 
 // By robot, its seconds in the field for a second of its path; 1 where either is unknown.
-std::vector<double> measuredFieldPaces(const std::vector<CoveragePath>& paths,
-                                       const std::vector<double>& fieldSeconds) {
+std::vector<double> measuredFieldPaces(const Plan& plan, const std::vector<double>& fieldSeconds) {
+    const std::vector<CoveragePath>& paths = plan.paths;
     std::vector<double> paces(paths.size(), 1.0);
     for (std::size_t robot = 0; robot < paths.size() && robot < fieldSeconds.size(); ++robot)
         if (paths[robot].timeSeconds > 0.0 && fieldSeconds[robot] > 0.0)
-            paces[robot] = fieldSeconds[robot] / paths[robot].timeSeconds;
+            paces[robot] = fieldSeconds[robot] / paths[robot].timeSeconds /
+                           fieldPaceOf(plan.countedFieldPaces, robot); // what the division did not count
     return paces;
 }
 
@@ -282,7 +283,8 @@ bool evenInTheField(const std::vector<double>& seconds) {
     return seconds.empty() || longestOf(seconds) <= 1.01 * *std::min_element(seconds.begin(), seconds.end());
 }
 
-std::string fieldPacesMessage(const std::vector<double>& paces) {
+// measured: the paces were measured on the plan before; else they are those the division counted.
+std::string fieldPacesMessage(const std::vector<double>& paces, bool measured) {
     std::ostringstream text;
     text.precision(2);
     text << std::fixed << "the division evens out time in the field rather than on the paths: each robot's "
@@ -291,7 +293,11 @@ std::string fieldPacesMessage(const std::vector<double>& paces) {
     for (std::size_t robot = 0; robot < paces.size(); ++robot)
         text << (robot == 0 ? " robot " : ", robot ") << robot + 1 << " " << fieldPaceOf(paces, robot)
              << " x";
-    text << " its path's time, as measured on the plan before; the paths' times differ by design";
+    text << " its path's time, "
+         << (measured ? "as measured on the plan before"
+                      : "as the division counts them (work farther from where an aircraft takes off costs it "
+                        "longer trips)")
+         << "; the paths' times differ by design";
     return text.str();
 }
 } // namespace
@@ -334,14 +340,19 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
     std::vector<double> bestField = fieldTimesOf(best.metrics);
     double dropped = 0.0; // milliseconds of the plans not kept
     for (int round = 1; round <= fieldBalanceRounds; ++round) {
-        const std::vector<double> paces = measuredFieldPaces(best.paths, bestField);
+        const std::vector<double> paces = measuredFieldPaces(best, bestField);
         // Paces within 5 % of each other divide the map about as before (one flight's climb and descent).
         if (longestOf(paces) <= 1.05 * *std::min_element(paces.begin(), paces.end()) ||
             evenInTheField(bestField))
             break;
-        Plan next = planOnce(
-            planner, problem, given,
-            progress.within("field time balance", round * roundShare, (round + 1) * roundShare), paces);
+        std::vector<double> measured;
+        for (std::size_t robot = 0; robot < best.paths.size() && robot < bestField.size(); ++robot)
+            measured.push_back(
+                best.paths[robot].timeSeconds > 0.0 ? bestField[robot] / best.paths[robot].timeSeconds : 1.0);
+        Plan next =
+            planOnce(planner, problem, given,
+                     progress.within("field time balance", round * roundShare, (round + 1) * roundShare),
+                     paces, measured);
         std::vector<double> nextField = fieldTimesOf(next.metrics);
         if (!(longestOf(nextField) < longestOf(bestField))) {
             dropped += stagesMilliseconds(next.metrics);
@@ -360,7 +371,7 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
 
 Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem& problem,
                        const ParameterValues& given, const ProgressReporter& progress,
-                       std::vector<double> fieldPaces) const {
+                       std::vector<double> fieldPaces, const std::vector<double>& measuredPaces) const {
     ParameterValues parameters = resolveParameters(planner.parameters, given);
     checkStarts(planner, problem, parameters.boolean("snap_starts_to_free_cells"));
     checkEvents(problem);
@@ -378,10 +389,17 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     if (anyCharger && !planner.fliesOnBatteries())
         planningRun.addIssue(IssueSeverity::Warning, "chargers-ignored", chargersIgnoredMessage(planner));
     const bool fieldPaced = planner.balancesFieldTime && someFieldPace(fieldPaces);
-    if (fieldPaced)
-        planningRun.addIssue(IssueSeverity::Information, "field-time-balance", fieldPacesMessage(fieldPaces));
+    const std::vector<double> shownPaces = measuredPaces.empty() ? fieldPaces : measuredPaces;
     planningRun.setFieldPaces(std::move(fieldPaces));
+    const std::size_t balanceNoteAt = plan.issues.size();
     run(planningRun);
+    // Said before what the planner found: how the plan was meant to be uneven on its paths.
+    const bool fieldWeighed = fieldPaced || !plan.countedFieldPaces.empty();
+    if (fieldWeighed)
+        plan.issues.insert(plan.issues.begin() + static_cast<std::ptrdiff_t>(balanceNoteAt),
+                           {IssueSeverity::Information, "field-time-balance",
+                            fieldPaced ? fieldPacesMessage(shownPaces, true)
+                                       : fieldPacesMessage(plan.countedFieldPaces, false)});
     for (CoveragePath& path : plan.paths)
         if (const auto robot = static_cast<std::size_t>(path.robot);
             robot < planningRun.takeOffPoints().size())
@@ -416,7 +434,7 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     // or one that evens out time in the field, where paths of different lengths end together.
     const bool unevenSpeeds = !plan.robotSpeeds.empty() && !planner.balancesOwnSpeeds;
     if (const std::string uneven = unevenPlanMessage(plan.metrics, planner, plan.parameters);
-        !uneven.empty() && !playsEvents && !unevenSpeeds && !fieldPaced)
+        !uneven.empty() && !playsEvents && !unevenSpeeds && !fieldWeighed)
         planningRun.addIssue(IssueSeverity::Warning, "uneven-plan", uneven);
     progress.report("done", 1.0);
     return plan;

@@ -32,10 +32,12 @@ class Planner {
     virtual void run(PlanningRun& run) const = 0;
 
   private:
-    // One plan of the problem, with each robot's field pace (PlanningRun::fieldPaces) where given.
+    // One plan of the problem, with each robot's field pace (PlanningRun::fieldPaces) where given, and the
+    // paces its plan before took in the field, to be said.
     [[nodiscard]] Plan planOnce(const PlannerDescription& planner, const PlanningProblem& problem,
                                 const ParameterValues& given, const ProgressReporter& progress,
-                                std::vector<double> fieldPaces = {}) const;
+                                std::vector<double> fieldPaces = {},
+                                const std::vector<double>& measuredPaces = {}) const;
     // Plans again while evening out the robots' time in the field (PlanningProblem::fieldSeconds) brings
     // the last robot home sooner.
     [[nodiscard]] Plan planInFieldTime(const PlannerDescription& planner, const PlanningProblem& problem,
