@@ -500,13 +500,15 @@ std::vector<std::filesystem::path> numberedFilesBeside(const std::string& path, 
     return found;
 }
 
-// Whether `file` is one of the `count` numbered files of `path` with `tag`.
+// Whether `file` (one numberedFilesBeside found) is one of the `count` numbered files of `path` with `tag`:
+// its number as wide as the last one's and at most it.
 bool isWritten(const std::filesystem::path& file, const std::string& path, const std::string& tag,
                std::size_t count) {
-    for (std::size_t index = 0; index < count; ++index)
-        if (file == std::filesystem::path(numberedPath(path, tag, index, count)))
-            return true;
-    return false;
+    const std::string name = file.stem().string();
+    const std::string number = name.substr(std::filesystem::path(path).stem().string().size() + tag.size());
+    const std::string last = std::to_string(count);
+    return count > 0 && number.size() == last.size() && number >= std::string(number.size() - 1, '0') + "1" &&
+           number <= last;
 }
 
 } // namespace
