@@ -326,7 +326,7 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
     const PlannerDescription planner = description();
     if (planner.balancesFieldTime && problem.fieldSeconds)
         return planInFieldTime(planner, problem, given, progress);
-    return planOnce(planner, problem, given, progress);
+    return planOnce(planner, problem, given, progress, {});
 }
 
 Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningProblem& problem,
@@ -334,7 +334,9 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
     // Each round plans the whole problem again; the first does most.
     constexpr int fieldBalanceRounds = 2;
     const double roundShare = 1.0 / (fieldBalanceRounds + 1);
-    Plan best = planOnce(planner, problem, given, progress.scaled(0.0, roundShare));
+    // The rounds plan the same cells: the first builds them, the others copy them.
+    std::optional<CellGraph> cells;
+    Plan best = planOnce(planner, problem, given, progress.scaled(0.0, roundShare), {{}, {}, &cells});
     if (!(best.metrics.fieldMakespanSeconds > 0.0))
         return best; // its times in the field are not measured (planOnce says where)
     std::vector<double> bestField = fieldTimesOf(best.metrics);
@@ -352,7 +354,7 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
         Plan next =
             planOnce(planner, problem, given,
                      progress.within("field time balance", round * roundShare, (round + 1) * roundShare),
-                     paces, measured);
+                     {paces, measured, &cells});
         std::vector<double> nextField = fieldTimesOf(next.metrics);
         if (!(longestOf(nextField) < longestOf(bestField))) {
             dropped += stagesMilliseconds(next.metrics);
@@ -371,7 +373,7 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
 
 Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem& problem,
                        const ParameterValues& given, const ProgressReporter& progress,
-                       std::vector<double> fieldPaces, const std::vector<double>& measuredPaces) const {
+                       FieldRound round) const {
     ParameterValues parameters = resolveParameters(planner.parameters, given);
     checkStarts(planner, problem, parameters.boolean("snap_starts_to_free_cells"));
     checkEvents(problem);
@@ -388,9 +390,10 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
                     [](const std::optional<MapPoint>& charger) { return charger.has_value(); });
     if (anyCharger && !planner.fliesOnBatteries())
         planningRun.addIssue(IssueSeverity::Warning, "chargers-ignored", chargersIgnoredMessage(planner));
-    const bool fieldPaced = planner.balancesFieldTime && someFieldPace(fieldPaces);
-    const std::vector<double> shownPaces = measuredPaces.empty() ? fieldPaces : measuredPaces;
-    planningRun.setFieldPaces(std::move(fieldPaces));
+    const bool fieldPaced = planner.balancesFieldTime && someFieldPace(round.paces);
+    const std::vector<double> shownPaces = round.measuredPaces.empty() ? round.paces : round.measuredPaces;
+    planningRun.setFieldPaces(std::move(round.paces));
+    planningRun.keepCellsIn(round.cells);
     const std::size_t balanceNoteAt = plan.issues.size();
     run(planningRun);
     // Said before what the planner found: how the plan was meant to be uneven on its paths.

@@ -5,6 +5,9 @@
 #include "core/model/ProgressReporter.hpp"
 #include "core/planners/PlannerDescription.hpp"
 
+#include <optional>
+#include <vector>
+
 namespace mcpp {
 
 class PlanningRun;
@@ -32,12 +35,18 @@ class Planner {
     virtual void run(PlanningRun& run) const = 0;
 
   private:
-    // One plan of the problem, with each robot's field pace (PlanningRun::fieldPaces) where given, and the
-    // paces its plan before took in the field, to be said.
+    // What a round of evening out time in the field hands to its plan: each robot's field pace
+    // (PlanningRun::fieldPaces), the paces the plan before took in the field (to be said), and where the
+    // rounds keep the cells the first built.
+    struct FieldRound {
+        std::vector<double> paces;
+        std::vector<double> measuredPaces;
+        std::optional<CellGraph>* cells = nullptr;
+    };
+    // One plan of the problem, as a round of evening out time in the field where `round` says so.
     [[nodiscard]] Plan planOnce(const PlannerDescription& planner, const PlanningProblem& problem,
                                 const ParameterValues& given, const ProgressReporter& progress,
-                                std::vector<double> fieldPaces = {},
-                                const std::vector<double>& measuredPaces = {}) const;
+                                FieldRound round) const;
     // Plans again while evening out the robots' time in the field (PlanningProblem::fieldSeconds) brings
     // the last robot home sooner.
     [[nodiscard]] Plan planInFieldTime(const PlannerDescription& planner, const PlanningProblem& problem,

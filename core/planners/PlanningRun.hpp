@@ -36,6 +36,10 @@ class PlanningRun {
     // path times times these.
     [[nodiscard]] const std::vector<double>& fieldPaces() const { return fieldPaces_; }
     void setFieldPaces(std::vector<double> paces) { fieldPaces_ = std::move(paces); }
+    // Where runs of the same problem and parameters keep the cells the first of them built (rounds of
+    // evening out time in the field); null: cells are built for this run alone.
+    [[nodiscard]] std::optional<CellGraph>* keptCells() const { return keptCells_; }
+    void keepCellsIn(std::optional<CellGraph>* cells) { keptCells_ = cells; }
 
     // Runs one stage of the planner and records how long it took under its name.
     template <typename Work> auto stage(const char* name, Work&& work) {
@@ -82,6 +86,7 @@ class PlanningRun {
     bool takeOffsAllowed_ = true;
     std::int64_t bytesPerBottomCell_;
     std::vector<double> fieldPaces_;
+    std::optional<CellGraph>* keptCells_ = nullptr;
 };
 
 } // namespace mcpp

@@ -6,6 +6,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <tuple>
 
 using namespace mcpp;
 
@@ -71,6 +72,18 @@ class MlctPlannerTest : public QObject {
             [](const auto& stage) { return stage.first == "field time rounds"; });
         QVERIFY(rounds != inTheField.metrics.stageMilliseconds.end());
         QVERIFY(rounds->second > 0.0);
+        // The plan kept, a later round's, copied the first round's cells instead of building them again:
+        // the same cells as a plan built on its own.
+        QCOMPARE(inTheField.metrics.stageMilliseconds.front().first, std::string("cells of the first round"));
+        QCOMPARE(inTheField.cells.size(), onPaths.cells.size());
+        for (int id = 0; id < static_cast<int>(onPaths.cells.size()); ++id) {
+            const Cell& kept = inTheField.cells.cell(id);
+            const Cell& built = onPaths.cells.cell(id);
+            QCOMPARE(
+                std::tuple(kept.column, kept.row, kept.span, kept.freeSubCells, kept.turnSecondsPer90Degrees),
+                std::tuple(built.column, built.row, built.span, built.freeSubCells,
+                           built.turnSecondsPer90Degrees));
+        }
     }
 
     void plansAroundALake() {
