@@ -125,6 +125,24 @@ class MstcTest : public QObject {
         }
     }
 
+    // The benchmark grids with many robots, where each robot's way to its piece is a large share of it: the
+    // tour is cut both ways round and the quicker kept (with one way, 49 x 49 with 20 robots read 1.0383 and
+    // with 14 robots 1.0377).
+    void balancedPiecesTryTheTourBothWaysRound_data() {
+        QTest::addColumn<int>("robots");
+        QTest::addColumn<double>("mostRatio");
+        QTest::newRow("49 x 49, 14 robots") << 14 << 1.034;
+        QTest::newRow("49 x 49, 20 robots") << 20 << 1.036;
+    }
+    void balancedPiecesTryTheTourBothWaysRound() {
+        QFETCH(int, robots);
+        QFETCH(double, mostRatio);
+        PlanningProblem problem = test::obstacleGridProblem(49, robots, 2020);
+        const Plan plan = planWithMstc(problem, true);
+        QVERIFY(holdsInvariants(problem, plan));
+        QVERIFY2(plan.metrics.ratio <= mostRatio, qPrintable(QString::number(plan.metrics.ratio, 'f', 4)));
+    }
+
     // A U: the tour runs down one arm and up the other; robots at the tips share it without repeats.
     void uShapeIsOneTour() {
         std::vector<std::string> rows = rowsOf(12, "....####....");
