@@ -585,8 +585,9 @@ std::string CommandLine::usage() {
            "above its robot's item limit is written as robot_<n>_part_<j>.plan and .waypoints instead (j "
            "padded\n"
            "with zeros from ten parts on: robot_1_part_01 to robot_1_part_12, in the order they are flown).\n"
-           "Battery plans add robot_<n>_sortie_<j>.plan and .waypoints per sortie; detection plans (cppied)\n"
-           "add detection.tif (the chance a target is seen per sub-cell, and the chance required).\n"
+           "Battery plans add robot_<n>_sortie_<j>.plan and .waypoints per sortie (j padded likewise);\n"
+           "detection plans (cppied) add detection.tif (the chance a target is seen per sub-cell, and the\n"
+           "chance required).\n"
            "\n"
            "Planners (mcpp --help-planner NAME lists one's parameters for --param):\n";
     std::size_t plannerWidth = 0;

@@ -46,8 +46,13 @@ TripWeighting::TripWeighting(const CellGraph& cells, const std::vector<MapPoint>
 
 std::vector<float> TripWeighting::weightsOf(const CellGraph& cells, const std::vector<MapPoint>& launchPoints,
                                             const std::vector<FlightLimits>& flights) {
-    const std::size_t robots = std::min(launchPoints.size(), flights.size());
-    if (std::none_of(flights.begin(), flights.begin() + static_cast<std::ptrdiff_t>(robots),
+    // A robot past the end of `flights` works in one go (PlanningProblem::robotFlights).
+    const std::size_t robots = launchPoints.size();
+    const auto flightOf = [&](std::size_t robot) {
+        return robot < flights.size() ? flights[robot] : FlightLimits{};
+    };
+    if (std::none_of(flights.begin(),
+                     flights.begin() + static_cast<std::ptrdiff_t>(std::min(robots, flights.size())),
                      [](const FlightLimits& flight) { return flight.makesTrips(); }))
         return {};
     std::vector<float> weights(cells.size(), 1.0F);
@@ -59,7 +64,7 @@ std::vector<float> TripWeighting::weightsOf(const CellGraph& cells, const std::v
                 std::hypot(cell.centreX() - launchPoints[robot].x, cell.centreY() - launchPoints[robot].y);
             if (metres < nearest) {
                 nearest = metres;
-                weights[id] = weightAt(flights[robot], metres);
+                weights[id] = weightAt(flightOf(robot), metres);
             }
         }
     }

@@ -122,7 +122,8 @@ void MlctPlanner::run(PlanningRun& run) const {
     plan.cells = quadTreeStage(run);
     const std::vector<int> startCells = run.locateStarts();
     // Aircraft flying out to far work: the division weighs cells by the field time their trips take.
-    const TripWeighting trips(plan.cells, launchPoints(run), run.problem().robotFlights);
+    const TripWeighting trips(plan.cells, launchPoints(run),
+                              run.tripsWeighed() ? run.problem().robotFlights : std::vector<FlightLimits>{});
     const CellGraph& divided = trips.divided(plan.cells);
     AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"),
                                     parameters.real("tree_piece_share") / 100.0);
@@ -160,7 +161,8 @@ void MlctPlanner::run(PlanningRun& run) const {
     // balances real time better. The faster division is kept. Evened out from where it stands rather than
     // grown anew: on the benchmark maps the makespans within -0.3 % and +0.2 % of a new division's, in a
     // fraction of the time.
-    // Skipped for robots of their own speeds (trees are timed at the class table's speeds) or field paces.
+    // Skipped for robots of their own speeds (trees are timed at the class table's speeds), field paces or
+    // cells weighed by trips (the rebalance would share out the cells unweighed).
     run.stage("turn balance", [&] {
         if (paced || trips.weighs() || !turnsWeigh(trees) ||
             !calibrateTurnRates(plan.cells, plan.regions, turningSecondsOf(trees)))

@@ -274,6 +274,25 @@ std::vector<double> measuredFieldPaces(const Plan& plan, const std::vector<doubl
     return paces;
 }
 
+// By robot, its seconds in the field for a second of its path as the plan flies it; 1 where unknown.
+std::vector<double> fieldPacesFlown(const Plan& plan, const std::vector<double>& fieldSeconds) {
+    std::vector<double> paces;
+    for (std::size_t robot = 0; robot < plan.paths.size() && robot < fieldSeconds.size(); ++robot)
+        paces.push_back(
+            plan.paths[robot].timeSeconds > 0.0 ? fieldSeconds[robot] / plan.paths[robot].timeSeconds : 1.0);
+    return paces;
+}
+
+// Whether the robot whose trips the division counted dearest is not the last home: cells weighed by their
+// trips then gave it too little.
+bool tripsOverCounted(const Plan& plan, const std::vector<double>& fieldSeconds) {
+    const std::vector<double>& counted = plan.countedFieldPaces;
+    if (counted.empty() || counted.size() != fieldSeconds.size())
+        return false;
+    return std::max_element(counted.begin(), counted.end()) - counted.begin() !=
+           std::max_element(fieldSeconds.begin(), fieldSeconds.end()) - fieldSeconds.begin();
+}
+
 double longestOf(const std::vector<double>& seconds) {
     return seconds.empty() ? 0.0 : *std::max_element(seconds.begin(), seconds.end());
 }
@@ -333,7 +352,7 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
                               const ParameterValues& given, const ProgressReporter& progress) const {
     // Each round plans the whole problem again; the first does most.
     constexpr int fieldBalanceRounds = 2;
-    const double roundShare = 1.0 / (fieldBalanceRounds + 1);
+    const double roundShare = 1.0 / (fieldBalanceRounds + 2); // the rounds and the division on the paths
     // The rounds plan the same cells: the first builds them, the others copy them.
     std::optional<CellGraph> cells;
     Plan best = planOnce(planner, problem, given, progress.scaled(0.0, roundShare), {{}, {}, &cells});
@@ -341,28 +360,39 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
         return best; // its times in the field are not measured (planOnce says where)
     std::vector<double> bestField = fieldTimesOf(best.metrics);
     double dropped = 0.0; // milliseconds of the plans not kept
+    // Keeps the plan that brings the last robot home sooner; false where that is still the best.
+    const auto keepSooner = [&](Plan next) {
+        std::vector<double> nextField = fieldTimesOf(next.metrics);
+        if (!(longestOf(nextField) < longestOf(bestField))) {
+            dropped += stagesMilliseconds(next.metrics);
+            return false;
+        }
+        dropped += stagesMilliseconds(best.metrics);
+        best = std::move(next);
+        bestField = std::move(nextField);
+        return true;
+    };
     for (int round = 1; round <= fieldBalanceRounds; ++round) {
         const std::vector<double> paces = measuredFieldPaces(best, bestField);
         // Paces within 5 % of each other divide the map about as before (one flight's climb and descent).
         if (longestOf(paces) <= 1.05 * *std::min_element(paces.begin(), paces.end()) ||
             evenInTheField(bestField))
             break;
-        std::vector<double> measured;
-        for (std::size_t robot = 0; robot < best.paths.size() && robot < bestField.size(); ++robot)
-            measured.push_back(
-                best.paths[robot].timeSeconds > 0.0 ? bestField[robot] / best.paths[robot].timeSeconds : 1.0);
-        Plan next =
-            planOnce(planner, problem, given,
-                     progress.within("field time balance", round * roundShare, (round + 1) * roundShare),
-                     {paces, measured, &cells});
-        std::vector<double> nextField = fieldTimesOf(next.metrics);
-        if (!(longestOf(nextField) < longestOf(bestField))) {
-            dropped += stagesMilliseconds(next.metrics);
+        const std::vector<double> flown = fieldPacesFlown(best, bestField);
+        if (!keepSooner(
+                planOnce(planner, problem, given,
+                         progress.within("field time balance", round * roundShare, (round + 1) * roundShare),
+                         {paces, flown, &cells})))
             break;
-        }
-        dropped += stagesMilliseconds(best.metrics);
-        best = std::move(next);
-        bestField = std::move(nextField);
+    }
+    // Cells weighed by their trips can over-correct (each priced at its own distance, while a flight flies
+    // out to where its work begins and back from where it ends): there a division on the paths, each
+    // robot's path weighed by its pace in the field as flown on the plan kept, is tried too.
+    if (!evenInTheField(bestField) && tripsOverCounted(best, bestField)) {
+        const std::vector<double> flown = fieldPacesFlown(best, bestField);
+        keepSooner(planOnce(planner, problem, given,
+                            progress.within("field time balance", 1.0 - roundShare, 1.0),
+                            {flown, flown, &cells, false}));
     }
     // The plans made and dropped took time too: the report's timings add up to what the user waited.
     if (dropped > 0.0)
@@ -394,6 +424,7 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     const std::vector<double> shownPaces = round.measuredPaces.empty() ? round.paces : round.measuredPaces;
     planningRun.setFieldPaces(std::move(round.paces));
     planningRun.keepCellsIn(round.cells);
+    planningRun.weighTrips(round.tripsWeighed);
     const std::size_t balanceNoteAt = plan.issues.size();
     run(planningRun);
     // Said before what the planner found: how the plan was meant to be uneven on its paths.

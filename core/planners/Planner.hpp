@@ -36,12 +36,14 @@ class Planner {
 
   private:
     // What a round of evening out time in the field hands to its plan: each robot's field pace
-    // (PlanningRun::fieldPaces), the paces the plan before took in the field (to be said), and where the
-    // rounds keep the cells the first built.
+    // (PlanningRun::fieldPaces), the paces the plan before took in the field (to be said), where the
+    // rounds keep the cells the first built, and whether cells are weighed by trips
+    // (PlanningRun::tripsWeighed).
     struct FieldRound {
         std::vector<double> paces;
         std::vector<double> measuredPaces;
         std::optional<CellGraph>* cells = nullptr;
+        bool tripsWeighed = true;
     };
     // One plan of the problem, as a round of evening out time in the field where `round` says so.
     [[nodiscard]] Plan planOnce(const PlannerDescription& planner, const PlanningProblem& problem,

@@ -40,6 +40,10 @@ class PlanningRun {
     // evening out time in the field); null: cells are built for this run alone.
     [[nodiscard]] std::optional<CellGraph>* keptCells() const { return keptCells_; }
     void keepCellsIn(std::optional<CellGraph>* cells) { keptCells_ = cells; }
+    // Whether a planner may weigh cells by the trips out to them of robots that fly them in flights
+    // (TripWeighting); off for a division on the paths alone.
+    [[nodiscard]] bool tripsWeighed() const { return tripsWeighed_; }
+    void weighTrips(bool weighed) { tripsWeighed_ = weighed; }
 
     // Runs one stage of the planner and records how long it took under its name.
     template <typename Work> auto stage(const char* name, Work&& work) {
@@ -87,6 +91,7 @@ class PlanningRun {
     std::int64_t bytesPerBottomCell_;
     std::vector<double> fieldPaces_;
     std::optional<CellGraph>* keptCells_ = nullptr;
+    bool tripsWeighed_ = true;
 };
 
 } // namespace mcpp
