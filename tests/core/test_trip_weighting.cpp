@@ -119,6 +119,8 @@ class TripWeightingTest : public QObject {
             const bool roverSide = cell.centreX() > (west.x + east.x) / 2.0;
             QVERIFY(roverSide ? weights[id] == 1.0F : weights[id] > 1.0F);
         }
+        // A robot past the end of the flights works in one go, as the problem says of robotFlights.
+        QCOMPARE(TripWeighting::weightsOf(cells, {west, east}, {aircraft(1.0)}), weights);
         QVERIFY(TripWeighting::weightsOf(cells, {west, east}, {FlightLimits{}, FlightLimits{}}).empty());
         const TripWeighting none(cells, {west, east}, {FlightLimits{}, FlightLimits{}});
         QVERIFY(!none.weighs());
