@@ -20,6 +20,7 @@
 #include "ui/ComparisonPanel.hpp"
 #include "ui/ComparisonRunner.hpp"
 #include "ui/EventTableModel.hpp"
+#include "ui/ExportFileName.hpp"
 #include "ui/ExportRunner.hpp"
 #include "ui/LayersPanel.hpp"
 #include "ui/LegendPanel.hpp"
@@ -1497,10 +1498,7 @@ void MainWindow::chooseExport(const std::string& formatKey) {
     const io::ExportFormat* format = io::findExportFormat(formatKey);
     if (format == nullptr)
         return;
-    const QString suffix = QString::fromStdString(format->extension);
-    QString suggested = QStringLiteral("plan.") + suffix;
-    if (!document_->missionPath().isEmpty())
-        suggested = QFileInfo(document_->missionPath()).completeBaseName() + QStringLiteral(".") + suffix;
+    const QString suggested = suggestedExportFileName(*format, document_->missionPath());
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Export plan"), QDir(dialogFolder(kExportFolderKey)).filePath(suggested),
         QString::fromStdString(format->filter));

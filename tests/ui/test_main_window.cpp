@@ -11,6 +11,7 @@
 #include "ui/ClassTableBanner.hpp"
 #include "ui/ClassTableModel.hpp"
 #include "ui/ComparisonPanel.hpp"
+#include "ui/ExportFileName.hpp"
 #include "ui/LegendPanel.hpp"
 #include "ui/MainWindow.hpp"
 #include "ui/MapCanvas.hpp"
@@ -117,6 +118,24 @@ class TestMainWindow : public QObject {
     Q_OBJECT
 
   private slots:
+    // An export is suggested batch mode's name (report.json, not plan.json) after the saved mission's, and a
+    // report of mission survey.json is never suggested as survey.json, which would replace the mission.
+    void exportNamesFollowBatchModeAndSpareTheMission() {
+        const auto suggested = [](const std::string& key, const QString& mission) {
+            return ui::suggestedExportFileName(*io::findExportFormat(key), mission);
+        };
+        QCOMPARE(suggested("report-json", QString()), QStringLiteral("report.json"));
+        QCOMPARE(suggested("geojson", QString()), QStringLiteral("plan.geojson"));
+        QCOMPARE(suggested("report-json", QStringLiteral("/data/survey.json")),
+                 QStringLiteral("survey-report.json"));
+        QCOMPARE(suggested("geojson", QStringLiteral("/data/survey.json")),
+                 QStringLiteral("survey-plan.geojson"));
+        QCOMPARE(suggested("qgc-plan", QStringLiteral("/data/survey.json")), QStringLiteral("survey.plan"));
+        for (const io::ExportFormat& format : io::exportFormats())
+            QVERIFY2(ui::suggestedExportFileName(format, QStringLiteral("/data/survey.json")) !=
+                         "survey.json",
+                     format.key.c_str());
+    }
     // A battery plan's results: the Sorties column, its tooltip, and the charging time in the time's.
     void resultsShowTheSortiesOfBatteryPlans() {
         PlanningProblem problem = test::drawnProblem(std::vector<std::string>(20, std::string(40, '.')),
