@@ -263,23 +263,24 @@ double stagesMilliseconds(const PlanMetrics& metrics) {
     return sum;
 }
 
-// By robot, its seconds in the field for a second of its path; 1 where either is unknown.
-std::vector<double> measuredFieldPaces(const Plan& plan, const std::vector<double>& fieldSeconds) {
-    const std::vector<CoveragePath>& paths = plan.paths;
-    std::vector<double> paces(paths.size(), 1.0);
-    for (std::size_t robot = 0; robot < paths.size() && robot < fieldSeconds.size(); ++robot)
-        if (paths[robot].timeSeconds > 0.0 && fieldSeconds[robot] > 0.0)
-            paces[robot] = fieldSeconds[robot] / paths[robot].timeSeconds /
-                           fieldPaceOf(plan.countedFieldPaces, robot); // what the division did not count
-    return paces;
-}
-
 // By robot, its seconds in the field for a second of its path as the plan flies it; 1 where unknown.
 std::vector<double> fieldPacesFlown(const Plan& plan, const std::vector<double>& fieldSeconds) {
     std::vector<double> paces;
     for (std::size_t robot = 0; robot < plan.paths.size() && robot < fieldSeconds.size(); ++robot)
         paces.push_back(
             plan.paths[robot].timeSeconds > 0.0 ? fieldSeconds[robot] / plan.paths[robot].timeSeconds : 1.0);
+    return paces;
+}
+
+// The paces flown over those the division already counted (PlanningRun::fieldPaces); 1 where either time
+// is unknown.
+std::vector<double> measuredFieldPaces(const Plan& plan, const std::vector<double>& fieldSeconds) {
+    std::vector<double> paces = fieldPacesFlown(plan, fieldSeconds);
+    paces.resize(plan.paths.size(), 1.0);
+    for (std::size_t robot = 0; robot < paces.size() && robot < fieldSeconds.size(); ++robot)
+        paces[robot] = plan.paths[robot].timeSeconds > 0.0 && fieldSeconds[robot] > 0.0
+                           ? paces[robot] / fieldPaceOf(plan.countedFieldPaces, robot)
+                           : 1.0;
     return paces;
 }
 
