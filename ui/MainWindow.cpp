@@ -985,8 +985,9 @@ void MainWindow::syncPresetCombo() {
     const QSignalBlocker blocker(presetCombo_);
     const QString preset = QString::fromStdString(document_->mission().preset);
     int index = presetCombo_->findData(preset);
-    if (preset.isEmpty() && document_->hasMap() &&
-        !(document_->classes() == io::classTableForRaster(*document_->raster())))
+    // The preset's or the legend's table edited (FOVs scaled, a speed changed) is the user's own now.
+    if (document_->hasMap() &&
+        !(document_->classes() == io::classTableForRaster(*document_->raster(), preset.toStdString())))
         index = presetCombo_->findData(kOwnTableData);
     presetCombo_->setCurrentIndex(std::max(index, 0));
 }

@@ -324,6 +324,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         nameItem->setData(Qt::DecorationRole, render::RobotPalette::colour(robot.robot));
         nameItem->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
         nameItem->setToolTip(name); // whole, for when the column elides it
+        nameItem->setData(Qt::UserRole, robot.robot);
         const int r = static_cast<int>(row);
         table_->setItem(r, 0, nameItem);
         table_->setItem(r, 1, numberItem(QString::number(robot.cells), robot.cells));
@@ -484,14 +485,32 @@ void ResultsPanel::showTimeInTheField(const std::vector<io::MissionSize>& sizes)
             later = true;
         }
     }
-    if (later)
-        drawBars(field, tr("Time in the field per robot"));
+    if (!later)
+        return;
+    drawBars(field, tr("Time in the field per robot"));
+    // What the field team waits for, as in the summary and the chart; the path's time in the tooltip.
+    table_->horizontalHeaderItem(timeColumn)->setText(tr("Home after"));
+    table_->horizontalHeaderItem(timeColumn)
+        ->setToolTip(tr("When the robot is done in the field: its flights, with their climbs, descents and "
+                        "trips out to the work, and the turnarounds between them"));
+    for (int row = 0; row < table_->rowCount(); ++row) {
+        const auto robot = static_cast<std::size_t>(table_->item(row, 0)->data(Qt::UserRole).toInt());
+        QTableWidgetItem* time = table_->item(row, timeColumn);
+        if (robot >= sizes.size() || time == nullptr || !(sizes[robot].fieldSeconds > 0.0))
+            continue;
+        time->setToolTip(tr("Its path alone takes %1; ").arg(time->text()) + time->toolTip());
+        time->setText(formatDuration(sizes[robot].fieldSeconds));
+        time->setData(Qt::UserRole, sizes[robot].fieldSeconds);
+    }
 }
 
 QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& sizes,
                                         const std::vector<io::VehicleSettings>& vehicles,
                                         const QStringList& names) {
     QStringList split;
+    QStringList reasons; // beside split: why each robot's mission is
+    int aboveItemLimit = 0;
+    int forFlightTime = 0;
     int largest = 0;
     std::size_t overFlightTime = 0;
     double lastDone = 0.0;
@@ -501,7 +520,14 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
         overFlightTime += sizes[robot].partsOverFlightTime;
         lastDone = std::max(lastDone, sizes[robot].fieldSeconds);
         if (sizes[robot].parts > 1) {
+            // Split for its flight time where it has one and its items fit the limit.
+            const bool timed = robot < vehicles.size() && vehicles[robot].flightTimeSeconds > 0.0;
+            const bool fits = robot < vehicles.size() && (vehicles[robot].maxWaypoints == 0 ||
+                                                          sizes[robot].items <= vehicles[robot].maxWaypoints);
+            const bool forFlight = timed && fits;
+            (forFlight ? forFlightTime : aboveItemLimit) += 1;
             split << tr("%1 in %2").arg(robotName(names, static_cast<int>(robot))).arg(sizes[robot].parts);
+            reasons << (forFlight ? tr("flight time") : tr("item limit"));
             doneLater = doneLater || (robot < vehicles.size() && io::splitMissionEndsLater(vehicles[robot]));
         }
     }
@@ -520,23 +546,27 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
                   .arg(overFlightTime == 1 ? tr("1 part") : tr("%1 parts").arg(overFlightTime));
     if (split.isEmpty())
         return tr("one file per robot, the largest %1%2 items").arg(largest).arg(limit) + outOfReach;
+    // Where robots are split for either reason, each says its own.
+    const bool mixed = aboveItemLimit > 0 && forFlightTime > 0;
+    if (mixed)
+        for (qsizetype i = 0; i < split.size(); ++i)
+            split[i] += tr(" (%1)").arg(reasons[i]);
     constexpr int named = 6; // more would wrap over many lines
     const qsizetype count = split.size();
     if (count > named)
         split = split.mid(0, named) << tr("…");
     const QString robots = count == 1 ? tr("1 robot") : tr("%1 robots").arg(count);
-    const bool timed = std::any_of(vehicles.begin(), vehicles.end(), [](const io::VehicleSettings& vehicle) {
-        return vehicle.flightTimeSeconds > 0.0;
-    });
+    const QString shownLimit = limit.isEmpty() ? QString() : tr(" (%1)").arg(vehicles.front().maxWaypoints);
+    const QString header = mixed ? tr("%1 in parts").arg(robots)
+                           : forFlightTime
+                               ? tr("%1 over the flight time, in parts").arg(robots)
+                               : tr("%1 above the item limit%2, in parts").arg(robots, shownLimit);
     // An aircraft's split missions end later than the plan's makespan: the trips to each part and the
     // turnarounds.
     const QString done = doneLater && lastDone > 0.0
                              ? tr("; all done in the field after %1").arg(formatDuration(lastDone))
                              : QString();
-    return tr("%1 above the item limit%2%3, in parts: %4")
-               .arg(robots, limit.isEmpty() ? QString() : tr(" (%1)").arg(vehicles.front().maxWaypoints),
-                    timed ? tr(" or flight time") : QString(), split.join(QStringLiteral(", "))) +
-           outOfReach + done;
+    return header + tr(": ") + split.join(QStringLiteral(", ")) + outOfReach + done;
 }
 
 int ResultsPanel::robotLabelStep(int robots, int labelsThatFit) {

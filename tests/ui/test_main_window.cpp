@@ -271,8 +271,13 @@ class TestMainWindow : public QObject {
         vehicles[2].flightTimeSeconds = 1200.0;
         const QString flights =
             ui::ResultsPanel::waypointFilesText({{380, 1}, {380, 1}, {90, 6, 1900.0, 2}}, vehicles, names);
-        QCOMPARE(flights, QStringLiteral("1 robot above the item limit or flight time, in parts: south in 6; "
+        QCOMPARE(flights, QStringLiteral("1 robot over the flight time, in parts: south in 6; "
                                          "2 parts longer than a flight (out of its reach)"));
+        // Split for either reason, each robot says its own.
+        const QString both =
+            ui::ResultsPanel::waypointFilesText({{1500, 3}, {380, 1}, {90, 6}}, vehicles, names);
+        QCOMPARE(both,
+                 QStringLiteral("2 robots in parts: north in 3 (item limit), south in 6 (flight time)"));
         // A rover's parts take what its path takes: the makespan already says when it is done.
         const QString roverDone = ui::ResultsPanel::waypointFilesText(
             {{380, 1, 0.0, 0, 900.0}, {380, 1}, {90, 6, 1900.0, 2, 9000.0}}, vehicles, names);
@@ -353,11 +358,21 @@ class TestMainWindow : public QObject {
         QVERIFY(bars != nullptr);
         QCOMPARE(bars->barSets().at(0)->at(0), 2.5); // hours: 9 000 s in the field, not its 1 h path
         QCOMPARE(bars->barSets().at(1)->at(1), 2.0);
+        // The table says it too, beside each path's time.
+        QTableWidget* table = panel.robotTable();
+        constexpr int time = 4;
+        QCOMPARE(table->horizontalHeaderItem(time)->text(), QStringLiteral("Home after"));
+        QCOMPARE(table->item(0, time)->text(), QStringLiteral("2 h 30 min"));
+        QVERIFY2(table->item(0, time)->toolTip().startsWith(QStringLiteral("Its path alone takes 1 h")),
+                 qPrintable(table->item(0, time)->toolTip()));
+        QCOMPARE(table->item(1, time)->text(), QStringLiteral("2 h"));
         panel.showPlan(&plan, {});
+        QCOMPARE(table->horizontalHeaderItem(time)->text(), QStringLiteral("Time"));
         io::MissionSize onItsPath;
         onItsPath.fieldSeconds = 3600.0;
         panel.showWaypointFiles({onItsPath, rover}, {}, {}); // no robot out longer than its path
         QCOMPARE(panel.chartView()->chart()->title(), QStringLiteral("Time per robot"));
+        QCOMPARE(table->horizontalHeaderItem(time)->text(), QStringLiteral("Time"));
     }
 
     // Where flights split the missions, the summary says when the last robot is home, the bound in the field
@@ -1199,6 +1214,14 @@ class TestMainWindow : public QObject {
                                "7,Fields,1,10,true\n8,Marsh,0.2,5,true\n"));
         QVERIFY2(window.loadClassTable(csv), qPrintable(window.lastError()));
         QVERIFY(window.presetCombo()->currentText().startsWith(QStringLiteral("Own table")));
+        window.undoStack()->undo();
+        QCOMPARE(window.presetCombo()->currentData().toString(), QStringLiteral("nlcd-simplified"));
+        // The preset's table edited (every FOV scaled, as the memory warning offers) is no longer the preset.
+        ui::ClassBulkEdit scaled;
+        scaled.fieldOfViewFactor = 2.0;
+        QVERIFY(window.classTableModel()->editRows({0, 1, 2}, scaled));
+        QVERIFY(window.presetCombo()->currentText().startsWith(QStringLiteral("Own table")));
+        QCOMPARE(window.document()->mission().preset, std::string("nlcd-simplified")); // where it came from
         window.undoStack()->undo();
         QCOMPARE(window.presetCombo()->currentData().toString(), QStringLiteral("nlcd-simplified"));
     }
