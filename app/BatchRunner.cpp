@@ -291,6 +291,8 @@ void BatchRunner::prepareMission() {
         pendingWarnings_.push_back(std::move(*gap));
     if (options_.fieldOfViewScale)
         scaleFieldsOfView(*options_.fieldOfViewScale);
+    if (options_.fieldOfViewMetres)
+        setFieldsOfView(*options_.fieldOfViewMetres);
     // The batch contract takes --start in the raster file's CRS; mission files keep planning-CRS units.
     const auto units =
         options_.missionFromFlags() ? io::StartUnits::RasterFileCrs : io::StartUnits::PlanningCrs;
@@ -505,6 +507,15 @@ void BatchRunner::scaleFieldsOfView(double factor) {
     if (const auto problem = classes_.validate())
         badInput("--fov-scale " + formatQuantity(factor) + ": " + *problem);
     note("every class's field of view times " + formatQuantity(factor) + " (--fov-scale)");
+}
+
+// --fov: every class's field of view the same, as a camera's footprint is over any land cover.
+void BatchRunner::setFieldsOfView(double metres) {
+    std::vector<LandCoverClass> classes = classes_.classes();
+    for (LandCoverClass& landCover : classes)
+        landCover.fieldOfViewMetres = metres;
+    classes_ = ClassTable(std::move(classes));
+    note("every class's field of view set to " + formatQuantity(metres) + " m (--fov)");
 }
 
 // Vehicle flags set every robot's value: the mission's default, and no robot keeps its own.
@@ -806,7 +817,7 @@ void BatchRunner::printSummary(const Plan& plan) const {
         output_ << "mcpp: " << (plan.paths.size() == 1 ? "the robot needs " : "the robots need ")
                 << formatDuration(metrics.makespanSeconds)
                 << " for all the raster's land: to plan part of it, give the area's polygons (--area FILE, "
-                   "or area.include in a mission file); for a wider sensor footprint, --fov-scale\n";
+                   "or area.include in a mission file); for a wider sensor footprint, --fov or --fov-scale\n";
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 

@@ -61,6 +61,7 @@ class BatchRunner {
     // written sortie by sortie.
     void applyVehicleFlags();
     void scaleFieldsOfView(double factor);
+    void setFieldsOfView(double metres);
     void noteMissionFiles(const io::ExportContext& context, int robot);
     void printSummary(const Plan& plan) const;
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.

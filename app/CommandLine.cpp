@@ -1,6 +1,8 @@
 #include "app/CommandLine.hpp"
 
 #include "core/decomposition/DecompositionOptions.hpp"
+#include "core/model/HumanUnits.hpp"
+#include "core/model/LandCoverClass.hpp"
 #include "core/model/NameSuggestion.hpp"
 #include "core/model/SpeedEventCheck.hpp"
 #include "core/parameters/NumberText.hpp"
@@ -47,7 +49,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--charger", "X,Y", true, true},       FlagSpec{"--vehicle", "TYPE", true, false},
     FlagSpec{"--altitude", "M", true, false},       FlagSpec{"--cruise-speed", "M/S", true, false},
     FlagSpec{"--fov-scale", "F", true, false},      FlagSpec{"--flight-time", "T", true, false},
-    FlagSpec{"--turnaround", "T", true, false},
+    FlagSpec{"--turnaround", "T", true, false},     FlagSpec{"--fov", "M", true, false},
 };
 
 const FlagSpec* findFlag(std::string_view name) {
@@ -435,6 +437,12 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 *options.fieldOfViewScale > 1000.0)
                 return failure("--fov-scale: " + quoted(value) +
                                " is not a factor for the fields of view (more than 0, up to 1000)");
+        } else if (flag == "--fov") {
+            options.fieldOfViewMetres = parseFiniteNumber(value);
+            if (!options.fieldOfViewMetres || !(*options.fieldOfViewMetres > 0.0) ||
+                *options.fieldOfViewMetres > kMaximumFieldOfViewMetres)
+                return failure("--fov: " + quoted(value) + " is not a field of view (more than 0, up to " +
+                               formatQuantity(kMaximumFieldOfViewMetres) + " m)");
         } else if (flag == "--dense-paths") {
             options.densePaths = true;
         } else if (flag == "--cell-polygons") {
@@ -460,6 +468,9 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
     const auto given = [&seen](std::string_view flag) {
         return std::find(seen.begin(), seen.end(), flag) != seen.end();
     };
+    if (given("--fov") && given("--fov-scale"))
+        return failure("--fov and --fov-scale cannot be used together: --fov sets every class's field of "
+                       "view, --fov-scale multiplies the table's");
     if (given("--compare") && given("--planner"))
         return failure("--compare and --planner cannot be used together: --compare names the planners");
     if (!positionals.empty()) {
@@ -558,6 +569,8 @@ std::string CommandLine::usage() {
            "  --fov-scale F            every class's field of view times F, e.g. 4 for a drone whose\n"
            "                           camera sees four times as wide as the table's ground robot; land\n"
            "                           covers keep their proportions (forest half as far as grass)\n"
+           "  --fov M                  every class's field of view set to M metres: a drone camera's\n"
+           "                           footprint on the ground, the same over every land cover\n"
            "  --event T:ROBOT:FACTOR   from T seconds on, robot ROBOT (counted from 0: the first\n"
            "                           start, robot_1 in the outputs) drives at FACTOR times its speeds\n"
            "                           (0.5 half speed, 0 stopped); repeatable, added to the mission's\n"
@@ -570,7 +583,7 @@ std::string CommandLine::usage() {
            "Mission files (format: docs/mission-format.md) may be combined with --band, --area, --no-go,\n"
            "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths,\n"
            "--cell-polygons, --max-waypoints, --vehicle, --altitude, --cruise-speed, --flight-time,\n"
-           "--turnaround and --fov-scale, which override the mission's values.\n"
+           "--turnaround, --fov-scale and --fov, which override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"

@@ -889,7 +889,9 @@ std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<Ve
             return "aircraft see as far as the class table's fields of view, which are preset " +
                    preset.name + "'s, a ground robot's (the smallest " + formatQuantity(smallest, 4) +
                    " m, so passes as close as that): scale them to the camera's footprint on the ground "
-                   "(--fov-scale, or in the window select the classes, Edit selected…, Scale FOVs)";
+                   "(--fov for one footprint over every class, --fov-scale, or in the window select the "
+                   "classes, "
+                   "Edit selected…, Scale FOVs)";
     }
     return std::nullopt;
 }

@@ -99,6 +99,7 @@ class TestBatchEndToEnd : public QObject {
     void readmeSampleRuns();
     void missionsAboveTheItemLimitAreSplit();
     void droneFlagsPlanAtTheCruiseSpeed();
+    void fovFlagGivesEveryClassOneFootprint();
     void batteryPlansWriteEachSortie();
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
     void anAircraftOnTheLakeTakesOffThere();
@@ -810,6 +811,33 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
     checkOutputs(out, 3, run);
     const QStringList parts = QDir(out).entryList({QStringLiteral("*_part_*")});
     QVERIFY2(parts.isEmpty(), qPrintable(parts.join(", ")));
+}
+
+// --fov: a camera's footprint is the same over every land cover, so every class gets it and the cells follow
+// (the sample's table has fields of view of 5 to 20 m: one of 40 m makes fewer cells).
+void TestBatchEndToEnd::fovFlagGivesEveryClassOneFootprint() {
+    const QString ground = scratch_.filePath("fov-ground");
+    const QString footprint = scratch_.filePath("fov-footprint");
+    auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", ground});
+    QCOMPARE(run.exitCode, 0);
+    run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--fov", "40", "--out", footprint});
+    checkOutputs(footprint, 3, run);
+    if (QTest::currentTestFailed())
+        return;
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("every class's field of view set to 40 m (--fov)")),
+             qPrintable(run.standardOutput));
+    const QJsonObject report = readJsonObject(footprint + "/report.json");
+    const QJsonArray classes = report.value("classes").toArray();
+    QVERIFY(!classes.isEmpty());
+    for (const QJsonValue& landCover : classes)
+        QCOMPARE(landCover.toObject().value("fov_m").toDouble(), 40.0);
+    const auto cellsOf = [](const QJsonObject& plan) {
+        int cells = 0;
+        for (const QJsonValue& robot : plan.value("robots").toArray())
+            cells += robot.toObject().value("cells").toInt();
+        return cells;
+    };
+    QVERIFY(cellsOf(report) < cellsOf(readJsonObject(ground + "/report.json")));
 }
 
 // --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at

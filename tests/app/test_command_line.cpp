@@ -171,6 +171,12 @@ void TestCommandLine::batchWithEveryFlag() {
     QCOMPARE(options.fieldOfViewScale.value_or(-1.0), 4.0);
     QCOMPARE(options.flightTimeSeconds.value_or(-1.0), 1500.0);
     QCOMPARE(options.turnaroundSeconds.value_or(-1.0), 270.0);
+    QVERIFY(!options.fieldOfViewMetres);
+    // One footprint for every class, in place of the scale.
+    const auto footprint = CommandLine::parse(split("--batch m.json --out o --fov 42.5"));
+    QVERIFY2(footprint.ok(), footprint.error.c_str());
+    QCOMPARE(footprint.options.fieldOfViewMetres.value_or(-1.0), 42.5);
+    QVERIFY(!footprint.options.fieldOfViewScale);
 }
 
 void TestCommandLine::batchWithPresetAndShortForms() {
@@ -301,6 +307,15 @@ void TestCommandLine::errors_data() {
     QTest::newRow("--fov-scale zero")
         << words("--batch m.json --out o --fov-scale 0")
         << "--fov-scale: \"0\" is not a factor for the fields of view (more than 0, up to 1000)";
+    QTest::newRow("--fov zero") << words("--batch m.json --out o --fov 0")
+                                << "--fov: \"0\" is not a field of view (more than 0, up to 100000 m)";
+    QTest::newRow("--fov beyond any sensor")
+        << words("--batch m.json --out o --fov 2e5")
+        << "--fov: \"2e5\" is not a field of view (more than 0, up to 100000 m)";
+    QTest::newRow("--fov beside --fov-scale")
+        << words("--batch m.json --out o --fov 40 --fov-scale 2")
+        << "--fov and --fov-scale cannot be used together: --fov sets every class's field of view, "
+           "--fov-scale multiplies the table's";
     QTest::newRow("--max-waypoints negative")
         << words("--batch m.json --out o --max-waypoints -700")
         << "--max-waypoints: \"-700\" is not an item limit (0 for none, or 8 or more mission items)";
