@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <unordered_map>
@@ -125,8 +126,29 @@ PixelCodes codePixels(const ClassGrid& grid, const ClassTable& classes) {
     return result;
 }
 
+PixelWindow pixelsInside(const ClassGrid& grid, const std::vector<std::uint16_t>& pixelCodes) {
+    PixelWindow window{grid.columns, grid.rows, 0, 0};
+    for (int row = 0; row < grid.rows; ++row) {
+        const std::uint16_t* codes = pixelCodes.data() + grid.index(0, row);
+        const std::uint16_t* first = std::find_if(
+            codes, codes + grid.columns, [](std::uint16_t code) { return code != PixelCodes::outside; });
+        if (first == codes + grid.columns)
+            continue;
+        const auto last =
+            std::find_if(std::make_reverse_iterator(codes + grid.columns), std::make_reverse_iterator(codes),
+                         [](std::uint16_t code) { return code != PixelCodes::outside; });
+        window.firstColumn = std::min(window.firstColumn, static_cast<int>(first - codes));
+        window.endColumn = std::max(window.endColumn, static_cast<int>(last.base() - codes));
+        window.firstRow = std::min(window.firstRow, row);
+        window.endRow = row + 1;
+    }
+    if (window.endRow == 0)
+        return {0, 0, grid.columns, grid.rows};
+    return window;
+}
+
 SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelCodes, double squareSize,
-                      std::int64_t columns, std::int64_t rows) {
+                      std::int64_t columns, std::int64_t rows, MapPoint corner) {
     SampleGrid samples;
     samples.originX = grid.originX;
     samples.originY = grid.originY;
@@ -138,18 +160,20 @@ SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelC
         samples.codes = std::move(pixelCodes);
         return samples;
     }
+    samples.originX = corner.x;
+    samples.originY = corner.y;
     samples.columns = static_cast<int>(columns);
     samples.rows = static_cast<int>(rows);
     samples.sampleWidth = squareSize;
     samples.sampleHeight = squareSize;
     samples.codes.assign(static_cast<std::size_t>(columns * rows), PixelCodes::outside);
     for (int row = 0; row < samples.rows; ++row) {
-        const double y = grid.originY - (row + 0.5) * squareSize;
+        const double y = corner.y - (row + 0.5) * squareSize;
         const auto pixelRow = static_cast<int>(std::floor((grid.originY - y) / grid.pixelHeight));
         if (pixelRow < 0 || pixelRow >= grid.rows)
             continue;
         for (int column = 0; column < samples.columns; ++column) {
-            const double x = grid.originX + (column + 0.5) * squareSize;
+            const double x = corner.x + (column + 0.5) * squareSize;
             const auto pixelColumn = static_cast<int>(std::floor((x - grid.originX) / grid.pixelWidth));
             if (pixelColumn < 0 || pixelColumn >= grid.columns)
                 continue;

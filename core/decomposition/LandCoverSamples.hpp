@@ -3,6 +3,7 @@
 #include "core/decomposition/DecompositionOptions.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
+#include "core/model/MapPoint.hpp"
 
 #include <cstdint>
 #include <utility>
@@ -47,10 +48,21 @@ void checkDecompositionInputs(const ClassGrid& grid, const ClassTable& classes,
                               const DecompositionOptions& options);
 // Throws PlanningError naming the first raster value without a row in the table.
 [[nodiscard]] PixelCodes codePixels(const ClassGrid& grid, const ClassTable& classes);
-// Samples for a grid of columns x rows squares of `squareSize` metres anchored at the raster origin; the
-// pixel codes are moved in when the pixels themselves serve.
+// Samples for a grid of columns x rows squares of `squareSize` metres whose north-west corner is `corner`
+// (the raster origin, or a corner of a square of the raster's own grid of them); the pixel codes are moved in
+// when the pixels themselves serve, all of them, at the raster's origin.
 [[nodiscard]] SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelCodes,
-                                    double squareSize, std::int64_t columns, std::int64_t rows);
+                                    double squareSize, std::int64_t columns, std::int64_t rows,
+                                    MapPoint corner);
+// The pixels [firstColumn, endColumn) x [firstRow, endRow) that hold every code not outside; all of the grid
+// where every pixel is outside.
+struct PixelWindow {
+    int firstColumn = 0;
+    int firstRow = 0;
+    int endColumn = 0;
+    int endRow = 0;
+};
+[[nodiscard]] PixelWindow pixelsInside(const ClassGrid& grid, const std::vector<std::uint16_t>& pixelCodes);
 // What planning a map needs against memoryBudgetBytes(), and the smallest FOV whose grid over the same
 // extent fits (two significant digits, rounded up).
 struct CellBudgetEstimate {

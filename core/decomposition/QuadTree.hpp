@@ -13,7 +13,8 @@ struct QuadTree {
     int levels = 0;           // l
     double fovMin = 0.0;      // smallest rounded FOV: the bottom level's sub-cell side
     double topCellSize = 0.0; // Cs_1 = 2 * fovMin * 2^(l - 1)
-    double originX = 0.0;     // western edge of the top grid (the raster origin)
+    double originX = 0.0;     // western edge of the top grid: the raster origin, or a top cell of the
+                              // raster's own grid of them where the land is in part of it
     double originY = 0.0;     // northern edge of the top grid
     int topColumns = 0;
     int topRows = 0;

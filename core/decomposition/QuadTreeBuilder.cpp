@@ -93,17 +93,29 @@ void countBuckets(SampleCounts& counts, const std::vector<int>& levelOfCode) {
     const std::size_t columnsAtBottom = counts.columnsAt(levels);
     const SampleGrid& samples = counts.samples;
     const double bottomSize = 2.0 * counts.frame.fovMin;
+    // Samples off the tree's frame (pixels beyond the window of top cells round the land, all outside) are
+    // left out.
+    constexpr std::size_t offFrame = std::numeric_limits<std::size_t>::max();
+    const auto bottomIndex = [&](double offset, std::size_t count) {
+        const double index = std::floor(offset / bottomSize);
+        return index >= 0.0 && index < static_cast<double>(count) ? static_cast<std::size_t>(index)
+                                                                  : offFrame;
+    };
     std::vector<std::size_t> cellColumnOfSample(static_cast<std::size_t>(samples.columns));
     for (int column = 0; column < samples.columns; ++column) {
         const double x = samples.originX + (column + 0.5) * samples.sampleWidth;
         cellColumnOfSample[static_cast<std::size_t>(column)] =
-            static_cast<std::size_t>(std::floor((x - counts.frame.originX) / bottomSize));
+            bottomIndex(x - counts.frame.originX, columnsAtBottom);
     }
     for (int row = 0; row < samples.rows; ++row) {
         const double y = samples.originY - (row + 0.5) * samples.sampleHeight;
-        const auto cellRow = static_cast<std::size_t>(std::floor((counts.frame.originY - y) / bottomSize));
+        const std::size_t cellRow = bottomIndex(counts.frame.originY - y, counts.rowsAt(levels));
+        if (cellRow == offFrame)
+            continue;
         const std::uint16_t* rowCodes = samples.row(row);
         for (int column = 0; column < samples.columns; ++column) {
+            if (cellColumnOfSample[static_cast<std::size_t>(column)] == offFrame)
+                continue;
             const std::uint16_t code = rowCodes[column];
             const int bucket = code == PixelCodes::outside    ? outsideBucket
                                : code == PixelCodes::obstacle ? obstacleBucket
@@ -114,6 +126,29 @@ void countBuckets(SampleCounts& counts, const std::vector<int>& levelOfCode) {
         }
     }
     addUpLevels(counts);
+}
+
+// The top cells the tree is made of: those over the land inside the map (its area, its data), not all of a
+// raster of which an area of interest keeps a corner (a 3.5 km square of a 47 x 33 km raster: 15 M bottom
+// cells sampled and counted for the 0.12 M the area holds). Whole top cells of the raster's own grid of them,
+// from an even one (level-1 rows and columns keep their parity), so the cells are those the whole grid makes.
+void placeFrame(QuadTree& tree, const QuadTreeGridSize& size, const ClassGrid& grid,
+                const PixelWindow& land) {
+    const auto topCellsTo = [&](double metres, int most, bool up) {
+        const double cells = metres / size.topCellSize;
+        return std::clamp(static_cast<int>(up ? std::ceil(cells - 1e-9) : std::floor(cells + 1e-9)), 0, most);
+    };
+    int firstColumn = topCellsTo(land.firstColumn * grid.pixelWidth, size.topColumns, false);
+    int firstRow = topCellsTo(land.firstRow * grid.pixelHeight, size.topRows, false);
+    firstColumn -= firstColumn % 2;
+    firstRow -= firstRow % 2;
+    const int endColumn = topCellsTo(land.endColumn * grid.pixelWidth, size.topColumns, true);
+    const int endRow = topCellsTo(land.endRow * grid.pixelHeight, size.topRows, true);
+    tree.topCellSize = size.topCellSize;
+    tree.originX = grid.originX + firstColumn * size.topCellSize;
+    tree.originY = grid.originY - firstRow * size.topCellSize;
+    tree.topColumns = std::max(1, endColumn - firstColumn);
+    tree.topRows = std::max(1, endRow - firstRow);
 }
 
 // The tree's frame from the class table's rounded FOVs, and the samples counted per cell of every level.
@@ -149,17 +184,14 @@ SampleCounts countSamples(const ClassGrid& grid, const ClassTable& classes,
     tree.levels = levels;
     tree.fovMin = fovMin;
     const QuadTreeGridSize size = quadTreeGridSize(grid.width(), grid.height(), fovMin, levels);
-    tree.topCellSize = size.topCellSize;
-    tree.originX = grid.originX;
-    tree.originY = grid.originY;
-    tree.topColumns = size.topColumns;
-    tree.topRows = size.topRows;
     checkCellBudget(grid.width(), grid.height(), fovMin, levels, options.bytesPerBottomCell);
     if (levels > mostQuadTreeLevels)
         throwTooManyLevels(levels);
+    placeFrame(tree, size, grid, pixelsInside(grid, pixels.codes));
     counts.classes = pixels.classes;
-    counts.samples =
-        sampleGrid(grid, std::move(pixels.codes), 2.0 * fovMin, size.bottomColumns, size.bottomRows);
+    const std::int64_t bottomPerTop = std::int64_t{1} << (levels - 1);
+    counts.samples = sampleGrid(grid, std::move(pixels.codes), 2.0 * fovMin, tree.topColumns * bottomPerTop,
+                                tree.topRows * bottomPerTop, {tree.originX, tree.originY});
     counts.sampleArea = counts.samples.sampleWidth * counts.samples.sampleHeight;
     progress.report("quadtree", 0.2);
     progress.throwIfCancelled();

@@ -88,8 +88,8 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
     progress.throwIfCancelled();
 
     const std::vector<PixelCodes::DenseClass> dense = pixels.classes;
-    const SampleGrid samples =
-        sampleGrid(grid, std::move(pixels.codes), fovMin, shape.subColumns(), shape.subRows());
+    const SampleGrid samples = sampleGrid(grid, std::move(pixels.codes), fovMin, shape.subColumns(),
+                                          shape.subRows(), {grid.originX, grid.originY});
     const SubCellCounts counts = countSubCells(samples, shape, grid.originX, grid.originY);
     progress.report("grid", 0.4);
     progress.throwIfCancelled();
