@@ -13,6 +13,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ComparisonExport.hpp"
+#include "io/ComparisonRanking.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "io/PlanExport.hpp"
 #include "render/ComparisonSheet.hpp"
@@ -750,9 +751,10 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
     if (const io::Status status = io::writeComparisonJson(rows, (directory / "comparison.json").string());
         !status)
         internalError(status.error());
-    std::vector<render::ComparisonPanel> panels;
-    for (std::size_t i = 0; i < rows.size(); ++i)
-        panels.push_back(render::comparisonPanelOf(rows[i], plans[i] ? &*plans[i] : nullptr));
+    std::vector<const Plan*> planned;
+    for (const std::optional<Plan>& plan : plans)
+        planned.push_back(plan ? &*plan : nullptr);
+    const std::vector<render::ComparisonPanel> panels = render::rankedComparisonPanels(rows, planned);
     QString error;
     if (!render::writeComparisonSheet(raster_.grid, classes_, panels,
                                       QString::fromStdString((directory / "comparison.png").string()),
@@ -768,23 +770,46 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
     if (skipped > 0)
         output_ << ", " << skipped << " skipped";
     output_ << '\n';
-    for (const io::ComparisonRow& row : rows) {
-        output_ << "mcpp:   " << row.planner << ": ";
+    printComparisonRows(rows);
+    output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
+}
+
+// The rows as the window's table reads them (io::rankedRows): the soonest done of the plans covering the most
+// first, each timed against it, and plans covering less after them with the share they leave. Ratios are to
+// each plan's own bound, which counts its own cells and turns: they say how even a plan is, not which wins.
+void BatchRunner::printComparisonRows(const std::vector<io::ComparisonRow>& rows) const {
+    const std::vector<std::size_t> order = io::rankedRows(rows);
+    const double most = io::mostCovered(rows);
+    const io::ComparisonRow* first = nullptr;
+    int rank = 0;
+    for (const std::size_t index : order) {
+        const io::ComparisonRow& row = rows[index];
         if (row.outcome != io::ComparisonRow::Outcome::Planned) {
-            output_ << io::outcomeName(row.outcome) << " (" << row.message << ")\n";
+            output_ << "mcpp:   " << row.planner << ": " << io::outcomeName(row.outcome) << " ("
+                    << row.message << ")\n";
             continue;
         }
-        // The covered share first: a short makespan of a plan that leaves ground uncovered is no win.
-        output_ << "covered " << formatPercent(row.metrics.coveredFraction) << ", ratio "
-                << formatNumber(row.metrics.ratio, 3) << ", makespan "
-                << formatDuration(row.metrics.makespanSeconds) << ", " << row.metrics.totalTurns()
-                << " turns";
+        output_ << "mcpp:   " << ++rank << ". " << row.planner << ": covered "
+                << formatPercent(row.metrics.coveredFraction);
+        if (io::coversLessThanMost(row, most))
+            output_ << ", " << formatNumber((most - row.metrics.coveredFraction) * 100.0, 1)
+                    << " points less than the most covered (" << formatPercent(most) << ")";
+        const bool inTheField =
+            row.metrics.fieldMakespanSeconds > 0.0 && row.metrics.fieldLowerBoundSeconds > 0.0;
         // Where flights split the missions, the field team waits for the last robot home.
-        if (row.metrics.fieldMakespanSeconds > 0.0 && row.metrics.fieldLowerBoundSeconds > 0.0)
-            output_ << ", the last robot home after " << formatDuration(row.metrics.fieldMakespanSeconds);
-        output_ << ", planned in " << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
+        output_ << (inTheField ? ", the last robot home after " : ", makespan ")
+                << formatDuration(io::doneAfterSeconds(row));
+        if (first == nullptr)
+            first = &row;
+        else if (io::doneAfterSeconds(*first) > 0.0)
+            output_ << " (" << formatNumber(io::doneAfterSeconds(row) / io::doneAfterSeconds(*first), 2)
+                    << " x " << first->planner << "'s)";
+        if (inTheField)
+            output_ << ", makespan " << formatDuration(row.metrics.makespanSeconds);
+        output_ << ", ratio " << formatNumber(row.metrics.ratio, 3) << " to its own bound, "
+                << row.metrics.totalTurns() << " turns, planned in "
+                << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
     }
-    output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 
 void BatchRunner::printSummary(const Plan& plan) const {

@@ -67,6 +67,7 @@ class BatchRunner {
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.
     void writeComparison(const std::vector<io::ComparisonRow>& rows,
                          const std::vector<std::optional<Plan>>& plans);
+    void printComparisonRows(const std::vector<io::ComparisonRow>& rows) const;
     // The notes and warnings held back until the input is known to be good.
     void flushPending();
     void note(const std::string& message);

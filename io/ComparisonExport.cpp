@@ -1,5 +1,6 @@
 #include "io/ComparisonExport.hpp"
 
+#include "io/ComparisonRanking.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/TextFiles.hpp"
@@ -69,17 +70,21 @@ std::string outcomeName(ComparisonRow::Outcome outcome) {
 
 Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::string& path) {
     const std::vector<std::string> stages = stageNames(rows);
-    std::string text = "planner,outcome,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
-                       "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
-                       "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread";
+    std::string text =
+        "planner,outcome,rank,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
+        "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
+        "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread";
     for (const std::string& stage : stages)
         text += "," + stageColumn(stage);
     text += ",message\n";
-    for (const ComparisonRow& row : rows) {
+    const std::vector<int> ranks = ranksOf(rows);
+    for (std::size_t index = 0; index < rows.size(); ++index) {
+        const ComparisonRow& row = rows[index];
         const PlanMetrics& metrics = row.metrics;
         const bool planned = row.outcome == ComparisonRow::Outcome::Planned;
         const auto figure = [&](double value) { return planned ? formatShortest(value) : std::string(); };
         text += internal::quoteCsvField(row.planner) + "," + outcomeName(row.outcome) + "," +
+                (planned ? std::to_string(ranks[index]) : std::string()) + "," +
                 figure(metrics.makespanSeconds) + "," + figure(metrics.lowerBoundSeconds) + "," +
                 figure(metrics.ratio) + "," + figure(metrics.totalLengthMetres()) + "," +
                 (planned ? std::to_string(metrics.totalTurns()) : std::string()) + "," +
@@ -102,7 +107,9 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
 Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::string& path) {
     JsonValue root = JsonValue::object();
     JsonValue& planners = root.add("planners", JsonValue::array());
-    for (const ComparisonRow& row : rows) {
+    const std::vector<int> ranks = ranksOf(rows);
+    for (std::size_t index = 0; index < rows.size(); ++index) {
+        const ComparisonRow& row = rows[index];
         JsonValue& item = planners.push(JsonValue::object());
         item.add("planner", row.planner);
         item.add("outcome", outcomeName(row.outcome));
@@ -111,6 +118,7 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         if (row.outcome != ComparisonRow::Outcome::Planned)
             continue;
         const PlanMetrics& metrics = row.metrics;
+        item.add("rank", ranks[index]);
         item.add("makespan_s", metrics.makespanSeconds);
         item.add("lower_bound_s", metrics.lowerBoundSeconds);
         item.add("ratio", metrics.ratio);

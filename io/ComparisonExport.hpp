@@ -24,8 +24,10 @@ struct ComparisonRow {
 
 [[nodiscard]] std::string outcomeName(ComparisonRow::Outcome outcome);
 
-// comparison.csv: a row per planner with the figures of its report.json, per-robot lengths and times
-// joined by ";" in one field each; comparison.json: the same, with per-robot figures as arrays.
+// comparison.csv: a row per planner, in the order asked, with its rank (ComparisonRanking: 1 is the soonest
+// done of the plans covering the most; empty where it did not plan) and the figures of its report.json,
+// per-robot lengths and times joined by ";" in one field each; comparison.json: the same, with per-robot
+// figures as arrays.
 [[nodiscard]] Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::string& path);
 [[nodiscard]] Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::string& path);
 

@@ -2,6 +2,7 @@
 
 #include "core/model/HumanUnits.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/ComparisonRanking.hpp"
 #include "render/PlanFrame.hpp"
 #include "render/PlanImage.hpp"
 #include "render/PngEncoder.hpp"
@@ -50,35 +51,56 @@ void drawPanel(QPainter& painter, const ClassGrid& grid, const ClassGrid& frame,
     painter.drawText(captionBox, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, panel.caption.join('\n'));
 }
 
-// Groups of bars, one group per planner and one bar per robot in its colour, heights in hours.
+// The least of 1, 2, 2.5 and 5 times a power of ten that is at least the given step: ticks a reader adds up.
+double roundTickStep(double step) {
+    const double power = std::pow(10.0, std::floor(std::log10(step)));
+    for (const double multiple : {1.0, 2.0, 2.5, 5.0})
+        if (multiple * power >= step * (1.0 - 1e-9))
+            return multiple * power;
+    return 10.0 * power;
+}
+
+// A tick's label: whole numbers as they are (not 4e+04), fractions to three significant digits.
+QString tickLabel(double value) {
+    return value >= 10.0 || value == std::floor(value) ? QString::number(value, 'f', 0)
+                                                       : QString::number(value, 'g', 3);
+}
+
+// Groups of bars, one group per planner and one bar per robot in its colour, heights in hours (in days where
+// the longest robot takes over ten days).
 void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QRect area) {
     double longest = 0.0;
     for (const ComparisonPanel& panel : panels)
         if (panel.plan != nullptr)
             for (const RobotMetrics& robot : panel.plan->metrics.robots)
                 longest = std::max(longest, robot.timeSeconds);
+    const bool inDays = longest > 10.0 * 86400.0;
+    const double unitSeconds = inDays ? 86400.0 : 3600.0;
     QFont font = painter.font();
     font.setPixelSize(13);
     font.setBold(true);
     painter.setFont(font);
     painter.setPen(Qt::black);
     painter.drawText(QRect(area.left(), area.top(), area.width(), 20), Qt::AlignHCenter,
-                     QStringLiteral("Time per robot (hours)"));
+                     inDays ? QStringLiteral("Time per robot (days)")
+                            : QStringLiteral("Time per robot (hours)"));
     font.setBold(false);
     painter.setFont(font);
     if (longest <= 0.0)
         return;
     const QRect plot = area.adjusted(60, 30, -10, -30);
-    const double hours = longest / 3600.0;
-    const double step = std::pow(10.0, std::floor(std::log10(hours)));
-    const double top = std::ceil(hours / step) * step;
+    // Four to five ticks whose top is the longest bar rounded up to the next tick.
+    const double longestInUnits = longest / unitSeconds;
+    const double tickStep = roundTickStep(longestInUnits / 5.0);
+    const int ticks = std::max(1, static_cast<int>(std::ceil(longestInUnits / tickStep - 1e-9)));
+    const double top = tickStep * ticks;
     painter.setPen(QColor(200, 200, 200));
-    for (int tick = 0; tick <= 4; ++tick) {
-        const int y = plot.bottom() - static_cast<int>(plot.height() * tick / 4.0);
+    for (int tick = 0; tick <= ticks; ++tick) {
+        const int y = plot.bottom() - static_cast<int>(plot.height() * tick / static_cast<double>(ticks));
         painter.drawLine(plot.left(), y, plot.right(), y);
         painter.setPen(Qt::black);
         painter.drawText(QRect(area.left(), y - 9, 55, 18), Qt::AlignRight | Qt::AlignVCenter,
-                         QString::number(top * tick / 4.0, 'g', 4));
+                         tickLabel(tickStep * tick));
         painter.setPen(QColor(200, 200, 200));
     }
     const double groupWidth = static_cast<double>(plot.width()) / static_cast<double>(panels.size());
@@ -91,7 +113,7 @@ void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QR
         const auto& robots = panels[i].plan->metrics.robots;
         const double barWidth = groupWidth * 0.8 / std::max<std::size_t>(robots.size(), 1);
         for (std::size_t r = 0; r < robots.size(); ++r) {
-            const double height = plot.height() * (robots[r].timeSeconds / 3600.0) / top;
+            const double height = plot.height() * (robots[r].timeSeconds / unitSeconds) / top;
             painter.fillRect(QRectF(left + groupWidth * 0.1 + barWidth * static_cast<double>(r),
                                     plot.bottom() - height, barWidth * 0.9, height),
                              RobotPalette::colour(robots[r].robot));
@@ -117,6 +139,19 @@ ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan
                          .arg(row.metrics.coveredFraction * 100.0, 0, 'f', 1)
                          .arg(row.planningMilliseconds / 1000.0, 0, 'f', 2);
     return panel;
+}
+
+std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::ComparisonRow>& rows,
+                                                    const std::vector<const Plan*>& plans) {
+    const std::vector<int> ranks = io::ranksOf(rows);
+    std::vector<ComparisonPanel> panels;
+    for (const std::size_t index : io::rankedRows(rows)) {
+        ComparisonPanel panel = comparisonPanelOf(rows[index], plans[index]);
+        if (ranks[index] > 0)
+            panel.title = QStringLiteral("%1. %2").arg(ranks[index]).arg(panel.title);
+        panels.push_back(std::move(panel));
+    }
+    return panels;
 }
 
 QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,

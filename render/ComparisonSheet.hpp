@@ -23,6 +23,11 @@ struct ComparisonPanel {
 // A planner's panel: its name, and its key figures or why it has no plan.
 [[nodiscard]] ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan);
 
+// Every row's panel in reading order (io::rankedRows), each planned one's title led by its rank: the sheet
+// reads as the summary and the table do. plans[i] is rows[i]'s plan or null.
+[[nodiscard]] std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::ComparisonRow>& rows,
+                                                                  const std::vector<const Plan*>& plans);
+
 // The plans as small multiples on one sheet, same extent and scale, each with its name and figures under
 // it, and below them a bar chart of every robot's time per planner.
 [[nodiscard]] QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,

@@ -1,6 +1,7 @@
 #include "ui/ComparisonPanel.hpp"
 
 #include "core/planners/PlannerRegistry.hpp"
+#include "io/ComparisonRanking.hpp"
 #include "render/ComparisonSheet.hpp"
 
 #include <QCheckBox>
@@ -20,12 +21,11 @@ namespace {
 // The figures that decide between planners; comparison.csv and the sheet below carry the rest.
 enum Column { Name, Outcome, Covered, Ratio, Makespan, Home, Turns, Planning, Columns };
 
-// A plan covering this much less of the land than the best one is not done sooner, only smaller.
-constexpr double coverageShortfall = 0.005;
 constexpr int coversLessRole = Qt::UserRole + 1;
 
-// A time that sorts plans covering less than the best after the others (ascending; a descending sort turns
-// the whole order round): the soonest done among those that do the whole job comes first.
+// A time that sorts plans covering less than the most (io::coversLessThanMost) after the others (ascending; a
+// descending sort turns the whole order round): the soonest done among those that do the whole job comes
+// first.
 class TimeItem : public QTableWidgetItem {
   public:
     bool operator<(const QTableWidgetItem& other) const override {
@@ -48,14 +48,6 @@ QTableWidgetItem* timeItem(double seconds, bool coversLess) {
     QTableWidgetItem* item = numberItem<TimeItem>(seconds / 3600.0, 2);
     item->setData(coversLessRole, coversLess);
     return item;
-}
-
-double mostCovered(const std::vector<io::ComparisonRow>& rows) {
-    double most = 0.0;
-    for (const io::ComparisonRow& row : rows)
-        if (row.outcome == io::ComparisonRow::Outcome::Planned)
-            most = std::max(most, row.metrics.coveredFraction);
-    return most;
 }
 
 } // namespace
@@ -161,14 +153,21 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     table_->setSortingEnabled(false);
     table_->clearContents();
     table_->setRowCount(static_cast<int>(outcome.rows.size()));
-    std::vector<render::ComparisonPanel> panels;
     bool inTheField = false; // some plan's robots are home later than their paths end
-    const double most = mostCovered(outcome.rows);
+    const double most = io::mostCovered(outcome.rows);
+    const std::vector<int> ranks = io::ranksOf(outcome.rows);
     for (std::size_t i = 0; i < outcome.rows.size(); ++i) {
         const io::ComparisonRow& row = outcome.rows[i];
         const auto r = static_cast<int>(i);
         auto* name = new QTableWidgetItem(QString::fromStdString(row.planner));
         name->setData(Qt::UserRole, r);
+        if (ranks[i] == 1) {
+            // The plan batch mode's summary lists first: said in bold, as the table may be sorted otherwise.
+            QFont bold = name->font();
+            bold.setBold(true);
+            name->setFont(bold);
+            name->setToolTip(tr("Soonest done of the plans covering the most land"));
+        }
         table_->setItem(r, Name, name);
         auto* state = new QTableWidgetItem(QString::fromStdString(io::outcomeName(row.outcome)));
         state->setToolTip(QString::fromStdString(row.message));
@@ -187,11 +186,10 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
             state->setToolTip(paragraphs);
         }
         table_->setItem(r, Outcome, state);
-        panels.push_back(render::comparisonPanelOf(row, outcome.plans[i].get()));
         if (row.outcome != io::ComparisonRow::Outcome::Planned)
             continue;
         const PlanMetrics& metrics = row.metrics;
-        const bool coversLess = metrics.coveredFraction < most - coverageShortfall;
+        const bool coversLess = io::coversLessThanMost(row, most);
         table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
         table_->setItem(r, Ratio, numberItem(metrics.ratio, 3));
         table_->setItem(r, Makespan, timeItem(metrics.makespanSeconds, coversLess));
@@ -207,7 +205,11 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     // The soonest done first (of the plans that cover the most): what the user waits for, where a
     // balanced plan may still take longest.
     table_->sortByColumn(inTheField ? Home : Makespan, Qt::AscendingOrder);
-    sheetImage_ = render::renderComparisonSheet(grid, classes, panels);
+    std::vector<const Plan*> plans;
+    for (const auto& plan : outcome.plans)
+        plans.push_back(plan.get());
+    sheetImage_ =
+        render::renderComparisonSheet(grid, classes, render::rankedComparisonPanels(outcome.rows, plans));
     fitSheet();
 }
 

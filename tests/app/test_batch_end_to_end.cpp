@@ -294,12 +294,32 @@ void TestBatchEndToEnd::comparePlannersOnOneMission() {
     QVERIFY2(
         run.standardOutput.contains(QStringLiteral("mcpp: compared 3 planners on 3 robots, 1 skipped\n")),
         qPrintable(run.standardOutput));
-    QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp:   darp: covered ")),
-             qPrintable(run.standardOutput));
     const QDir folder(out);
     const auto comparison = readJsonObject(folder.filePath("comparison.json"));
     const auto planners = comparison.value("planners").toArray();
     QCOMPARE(planners.size(), 4);
+    // The summary lists the planned rows by rank, as comparison.json numbers them: the first is done
+    // soonest (all three cover the same land here), each line after it timed against it.
+    double firstMakespan = 0.0;
+    for (int rank = 1; rank <= 3; ++rank) {
+        QJsonObject ranked;
+        for (const auto& planner : planners)
+            if (planner.toObject().value("rank").toInt() == rank)
+                ranked = planner.toObject();
+        const QString name = ranked.value("planner").toString();
+        QVERIFY2(!name.isEmpty(), qPrintable(QString::number(rank)));
+        const QString line = QStringLiteral("mcpp:   %1. %2: covered ").arg(rank).arg(name);
+        QVERIFY2(run.standardOutput.contains(line), qPrintable(run.standardOutput));
+        const double makespan = ranked.value("makespan_s").toDouble();
+        QVERIFY(makespan >= firstMakespan);
+        firstMakespan = rank == 1 ? makespan : firstMakespan;
+        if (rank > 1)
+            QVERIFY2(run.standardOutput.indexOf(line) >
+                         run.standardOutput.indexOf(QStringLiteral("mcpp:   %1. ").arg(rank - 1)),
+                     qPrintable(run.standardOutput));
+    }
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp:   spiral-stc: skipped (")),
+             qPrintable(run.standardOutput));
     QFile csv(folder.filePath("comparison.csv"));
     QVERIFY(csv.open(QIODevice::ReadOnly));
     const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
@@ -321,6 +341,7 @@ void TestBatchEndToEnd::comparePlannersOnOneMission() {
             continue;
         }
         QCOMPARE(row.value("outcome").toString(), QStringLiteral("planned"));
+        QCOMPARE(fields.at(header.indexOf("rank")), QString::number(row.value("rank").toInt()));
         const auto report = readJsonObject(folder.filePath(name + "/report.json"));
         QCOMPARE(report.value("planner").toString(), name);
         for (const char* key : {"makespan_s", "lower_bound_s", "ratio", "covered_fraction",

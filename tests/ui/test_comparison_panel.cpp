@@ -81,6 +81,9 @@ class ComparisonPanelTest : public QObject {
         QCOMPARE(panel.rowOfPlanner("darp"), 1);
         QCOMPARE(panel.rowOfPlanner("mdstc"), 2);
         QCOMPARE(table->horizontalHeader()->sortIndicatorSection(), homeColumn - 1); // Hours
+        // The first in batch mode's summary is marked, whichever way the table is sorted later.
+        QVERIFY(table->item(0, 0)->font().bold());
+        QVERIFY(!table->item(1, 0)->font().bold() && !table->item(2, 0)->font().bold());
 
         io::ComparisonRow flownLate = plannedRow("mcpp-mlct", 1.01, 7200.0);
         flownLate.metrics.fieldMakespanSeconds = 40000.0;
@@ -117,6 +120,7 @@ class ComparisonPanelTest : public QObject {
         QCOMPARE(panel.rowOfPlanner("mcpp-mlct"), 0);
         QCOMPARE(panel.rowOfPlanner("darp"), 1);
         QCOMPARE(panel.rowOfPlanner("spiral-stc"), 2);
+        QVERIFY(table->item(0, 0)->font().bold()); // the quickest, spiral-stc, covers less
         table->sortByColumn(homeColumn - 1, Qt::DescendingOrder);
         QCOMPARE(panel.rowOfPlanner("spiral-stc"), 0); // reversed as a whole: covering less, now first
         QCOMPARE(panel.rowOfPlanner("darp"), 1);

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "io/ComparisonExport.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace mcpp::io {
+
+// How a comparison of planners is read, in the window's table, batch mode's summary and comparison.csv
+// alike: the soonest done among the plans that cover the most land first. A plan covering less than the
+// most covered by more than this share is not done sooner, only smaller: it comes after the others.
+inline constexpr double coverageShortfall = 0.005;
+
+// When the team is done with a plan: the last robot home where flights split the missions, else the
+// makespan.
+[[nodiscard]] double doneAfterSeconds(const ComparisonRow& row);
+
+// The largest covered share among the planned rows; 0 with none.
+[[nodiscard]] double mostCovered(const std::vector<ComparisonRow>& rows);
+
+// Whether a planned row covers less than the most covered by more than coverageShortfall.
+[[nodiscard]] bool coversLessThanMost(const ComparisonRow& row, double most);
+
+// The rows' indices in reading order: planned rows covering the most by time done (ties by planning time,
+// then as given), then planned rows covering less by time done, then failed, then skipped rows as given.
+[[nodiscard]] std::vector<std::size_t> rankedRows(const std::vector<ComparisonRow>& rows);
+
+// Each row's place in that order, from 1; 0 for a row that did not plan.
+[[nodiscard]] std::vector<int> ranksOf(const std::vector<ComparisonRow>& rows);
+
+} // namespace mcpp::io

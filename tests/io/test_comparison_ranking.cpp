@@ -1,0 +1,106 @@
+// A comparison reads the same in the window, batch mode's summary, comparison.csv and the sheet: the soonest
+// done of the plans covering the most first, plans covering less after them whatever their time, then
+// failed and skipped planners.
+#include "io/ComparisonRanking.hpp"
+
+#include <QtTest>
+
+using namespace mcpp;
+using io::ComparisonRow;
+
+namespace {
+
+ComparisonRow plannedRow(const std::string& planner, double covered, double makespanSeconds,
+                         double planningMilliseconds = 10.0) {
+    ComparisonRow row;
+    row.planner = planner;
+    row.metrics.coveredFraction = covered;
+    row.metrics.makespanSeconds = makespanSeconds;
+    row.planningMilliseconds = planningMilliseconds;
+    return row;
+}
+
+ComparisonRow unplannedRow(const std::string& planner, ComparisonRow::Outcome outcome) {
+    ComparisonRow row;
+    row.planner = planner;
+    row.outcome = outcome;
+    row.message = "why";
+    return row;
+}
+
+std::vector<std::string> namesInOrder(const std::vector<ComparisonRow>& rows) {
+    std::vector<std::string> names;
+    for (const std::size_t index : io::rankedRows(rows))
+        names.push_back(rows[index].planner);
+    return names;
+}
+
+} // namespace
+
+class TestComparisonRanking : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void soonestDoneOfThoseCoveringTheMostComesFirst();
+    void withinTheShortfallCoveringLessIsNoPenalty();
+    void timeInTheFieldDecidesWhereFlightsSplitMissions();
+    void ranksSkipRowsThatDidNotPlan();
+};
+
+// A battery planner that covers a quarter of the land in less time than the others is last of the planned,
+// and failed and skipped planners follow in the order asked.
+void TestComparisonRanking::soonestDoneOfThoseCoveringTheMostComesFirst() {
+    const std::vector<ComparisonRow> rows{
+        unplannedRow("spiral-stc", ComparisonRow::Outcome::Skipped),
+        plannedRow("darp", 0.999, 130000.0),
+        plannedRow("wavefront-battery", 0.264, 90000.0),
+        unplannedRow("cppied", ComparisonRow::Outcome::Failed),
+        plannedRow("mcpp-mlct", 0.999, 125000.0),
+        unplannedRow("full-spiral-stc", ComparisonRow::Outcome::Skipped),
+        plannedRow("mstc", 0.998, 260000.0),
+    };
+    const std::vector<std::string> expected{"mcpp-mlct", "darp",       "mstc",           "wavefront-battery",
+                                            "cppied",    "spiral-stc", "full-spiral-stc"};
+    QCOMPARE(namesInOrder(rows), expected);
+    QCOMPARE(io::mostCovered(rows), 0.999);
+    QVERIFY(io::coversLessThanMost(rows[2], 0.999));
+    QVERIFY(!io::coversLessThanMost(rows[6], 0.999));
+}
+
+// Half a percent less is the same job (cells of another size round the edges differently); more is not.
+void TestComparisonRanking::withinTheShortfallCoveringLessIsNoPenalty() {
+    const std::vector<ComparisonRow> within{plannedRow("a", 0.990, 200.0), plannedRow("b", 0.986, 100.0)};
+    QCOMPARE(namesInOrder(within), (std::vector<std::string>{"b", "a"}));
+    const std::vector<ComparisonRow> beyond{plannedRow("a", 0.990, 200.0), plannedRow("b", 0.984, 100.0)};
+    QCOMPARE(namesInOrder(beyond), (std::vector<std::string>{"a", "b"}));
+    // Equal times go to the quicker planner.
+    const std::vector<ComparisonRow> tied{plannedRow("slow", 0.99, 100.0, 50.0),
+                                          plannedRow("quick", 0.99, 100.0, 5.0)};
+    QCOMPARE(namesInOrder(tied), (std::vector<std::string>{"quick", "slow"}));
+}
+
+// Where flights split missions the team waits for the last robot home, not the longest path.
+void TestComparisonRanking::timeInTheFieldDecidesWhereFlightsSplitMissions() {
+    ComparisonRow shortPaths = plannedRow("short-paths", 0.99, 100.0);
+    shortPaths.metrics.fieldMakespanSeconds = 400.0;
+    shortPaths.metrics.fieldLowerBoundSeconds = 300.0;
+    ComparisonRow longPaths = plannedRow("long-paths", 0.99, 150.0);
+    longPaths.metrics.fieldMakespanSeconds = 350.0;
+    longPaths.metrics.fieldLowerBoundSeconds = 300.0;
+    QCOMPARE(io::doneAfterSeconds(shortPaths), 400.0);
+    QCOMPARE(namesInOrder({shortPaths, longPaths}), (std::vector<std::string>{"long-paths", "short-paths"}));
+    // Without a bound in the field (a battery plan's paths hold their sorties) the makespan counts.
+    shortPaths.metrics.fieldLowerBoundSeconds = 0.0;
+    QCOMPARE(io::doneAfterSeconds(shortPaths), 100.0);
+}
+
+void TestComparisonRanking::ranksSkipRowsThatDidNotPlan() {
+    const std::vector<ComparisonRow> rows{
+        unplannedRow("spiral-stc", ComparisonRow::Outcome::Skipped), plannedRow("darp", 0.99, 300.0),
+        unplannedRow("cppied", ComparisonRow::Outcome::Failed), plannedRow("mcpp-mlct", 0.99, 200.0)};
+    QCOMPARE(io::ranksOf(rows), (std::vector<int>{0, 2, 0, 1}));
+    QCOMPARE(io::ranksOf({}), std::vector<int>{});
+}
+
+QTEST_APPLESS_MAIN(TestComparisonRanking)
+#include "test_comparison_ranking.moc"
