@@ -15,6 +15,7 @@
 #include "io/ComparisonExport.hpp"
 #include "io/ComparisonRanking.hpp"
 #include "io/ExportCatalogue.hpp"
+#include "io/MissionScale.hpp"
 #include "io/PlanExport.hpp"
 #include "render/ComparisonSheet.hpp"
 #include "render/PlanImageWriter.hpp"
@@ -294,6 +295,7 @@ void BatchRunner::prepareMission() {
         scaleFieldsOfView(*options_.fieldOfViewScale);
     if (options_.fieldOfViewMetres)
         setFieldsOfView(*options_.fieldOfViewMetres);
+    warnIfLarge();
     // The batch contract takes --start in the raster file's CRS; mission files keep planning-CRS units.
     const auto units =
         options_.missionFromFlags() ? io::StartUnits::RasterFileCrs : io::StartUnits::PlanningCrs;
@@ -511,6 +513,30 @@ void BatchRunner::scaleFieldsOfView(double factor) {
 }
 
 // --fov: every class's field of view the same, as a camera's footprint is over any land cover.
+// Said before the work starts: a mission of tens of millions of cells plans for minutes (a comparison of
+// every planner for hours) and writes gigabytes. Counted on a uniform grid where some planner plans on one.
+void BatchRunner::warnIfLarge() {
+    std::vector<PlannerChoice> planners;
+    if (options_.comparePlanners.empty())
+        planners.push_back(mission_.planner);
+    for (const std::string& name : options_.comparePlanners) {
+        if (findPlannerDescription(name)->singleRobot && mission_.robots.size() > 1)
+            continue;
+        try {
+            planners.push_back(comparedPlanner(name));
+        } catch (const BatchFailure&) {
+            // a value its parameter refuses: said on its row when it runs
+        }
+    }
+    const auto remedy = [&](double factor) {
+        if (options_.fieldOfViewMetres)
+            return "--fov " + formatQuantity(*options_.fieldOfViewMetres * factor, 2);
+        return "--fov-scale " + formatQuantity(options_.fieldOfViewScale.value_or(1.0) * factor, 2);
+    };
+    if (auto warning = io::largeMissionWarning(mission_, raster_, classes_, planners, remedy))
+        pendingWarnings_.push_back(std::move(*warning));
+}
+
 void BatchRunner::setFieldsOfView(double metres) {
     std::vector<LandCoverClass> classes = classes_.classes();
     for (LandCoverClass& landCover : classes)

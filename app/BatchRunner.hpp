@@ -62,6 +62,7 @@ class BatchRunner {
     void applyVehicleFlags();
     void scaleFieldsOfView(double factor);
     void setFieldsOfView(double metres);
+    void warnIfLarge();
     void noteMissionFiles(const io::ExportContext& context, int robot);
     void printSummary(const Plan& plan) const;
     // comparison.csv, comparison.json and comparison.png in the output folder, and the table on stdout.

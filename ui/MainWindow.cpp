@@ -2,6 +2,7 @@
 
 #include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -9,6 +10,7 @@
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "io/MissionInputs.hpp"
+#include "io/MissionScale.hpp"
 #include "io/PlanExport.hpp"
 #include "io/PlanFile.hpp"
 #include "render/PlanImageWriter.hpp"
@@ -1055,28 +1057,16 @@ void MainWindow::updateSizeWarning() {
         classTableBanner_->clearSizeWarning();
         return;
     }
-    std::vector<std::int32_t> present;
-    for (const auto& [value, count] : raster->classPixelCounts)
-        present.push_back(value);
-    const std::vector<RoundedFieldOfView> rounded = roundFieldsOfView(document_->classes(), present);
-    if (rounded.empty()) {
+    const PlannerChoice& choice = document_->plannerChoice();
+    const auto memory = io::planningMemory(*raster, document_->classes(), choice);
+    if (!memory) {
         classTableBanner_->clearSizeWarning();
         return;
     }
-    double fovMin = rounded.front().roundedMetres;
-    int levels = 1;
-    for (const RoundedFieldOfView& entry : rounded) {
-        fovMin = std::min(fovMin, entry.roundedMetres);
-        levels = std::max(levels, entry.level);
-    }
-    // As the chosen planner will plan: its cells (quadtree or uniform grid) and its memory per cell.
-    const PlannerChoice& choice = document_->plannerChoice();
+    const CellBudgetEstimate& estimate = memory->estimate;
+    const double fovMin = memory->smallestFieldOfViewMetres;
+    const int levels = memory->levels;
     const auto planner = findPlannerDescription(choice.planner);
-    if (planner && !planner->plansOnQuadTree(choice.parameters))
-        levels = 1;
-    const CellBudgetEstimate estimate =
-        estimateCellBudget(raster->grid.width(), raster->grid.height(), fovMin, levels,
-                           planner ? planner->bytesPerBottomCell : unmeasuredBytesPerBottomCell);
     if (estimate.fits()) {
         classTableBanner_->clearSizeWarning();
         return;
@@ -1684,13 +1674,27 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     comparisonInputs_ = document_->currentInputs();
     comparisonRaster_ = document_->sharedRaster();
     addRobotSettings(prepared.value().problem);
-    if (!comparisonRunner_->start(std::move(prepared.value().problem), std::move(choices)))
+    if (!comparisonRunner_->start(std::move(prepared.value().problem), choices))
         return false;
+    logLargeMission(choices);
     showBusy(tr("Comparing…"), true);
     progressBar_->setValue(0);
     updateActions();
     showStatus(tr("Comparing %1 planners…").arg(planners.size()), 0);
     return true;
+}
+
+// Said as the work starts, which the user may cancel: how large a mission is (io::largeMissionWarning), with
+// the factor the class table's Scale FOVs would take.
+void MainWindow::logLargeMission(const std::vector<PlannerChoice>& planners) {
+    const auto remedy = [](double factor) {
+        return "Scaling every FOV by " + formatQuantity(factor, 2) + " (Edit selected… > Scale FOVs)";
+    };
+    if (const auto warning = io::largeMissionWarning(document_->mission(), *document_->raster(),
+                                                     document_->classes(), planners, remedy)) {
+        QString text = QString::fromStdString(*warning);
+        messageLog_->add(text.left(1).toUpper() + text.mid(1));
+    }
 }
 
 bool MainWindow::isComparing() const {
@@ -1785,6 +1789,7 @@ bool MainWindow::startPlanning() {
     addRobotSettings(prepared.value().problem);
     if (!runner_->start(std::move(prepared.value().problem)))
         return false;
+    logLargeMission({document_->plannerChoice()});
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();
     stageLabel_->setText(tr("Starting…"));
     progressBar_->setValue(0);

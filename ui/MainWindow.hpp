@@ -140,6 +140,7 @@ class MainWindow : public QMainWindow {
     // Warns in the banner when the table's smallest FOV makes more cells than this machine can plan, and
     // offers the factor that fits; scaleFieldsOfViewToFit applies it as one undoable edit.
     void updateSizeWarning();
+    void logLargeMission(const std::vector<PlannerChoice>& planners);
     void scaleFieldsOfViewToFit();
     void showStatus(const QString& message, int timeoutMilliseconds = 8000);
     void reportError(const QString& title, const QString& message);

@@ -100,6 +100,7 @@ class TestBatchEndToEnd : public QObject {
     void missionsAboveTheItemLimitAreSplit();
     void droneFlagsPlanAtTheCruiseSpeed();
     void fovFlagGivesEveryClassOneFootprint();
+    void aLargeMissionIsSaidBeforePlanning();
     void batteryPlansWriteEachSortie();
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
     void anAircraftOnTheLakeTakesOffThere();
@@ -859,6 +860,35 @@ void TestBatchEndToEnd::fovFlagGivesEveryClassOneFootprint() {
         return cells;
     };
     QVERIFY(cellsOf(report) < cellsOf(readJsonObject(ground + "/report.json")));
+}
+
+// A mission whose paths pass over 20 million places is said to be large before any planning, with the FOV
+// that brings it down in the flag the user gave; the run is stopped once it is said. One the memory guard
+// refuses gets the guard's one line only (test_bad_input_batch), and the sample as it is gets neither.
+void TestBatchEndToEnd::aLargeMissionIsSaidBeforePlanning() {
+    // 14.4 ha at 8 cm: 23 million places on 6 million smallest cells, which fit in any machine's memory.
+    QProcess process;
+    process.start(executable_, {"--batch", samplePath("synthetic/mission.json"), "--fov", "0.08", "--out",
+                                scratch_.filePath("large")});
+    QString said;
+    while (!said.contains(QStringLiteral("mcpp: quadtree")) && process.waitForReadyRead(60000))
+        said += QString::fromUtf8(process.readAllStandardError());
+    process.kill();
+    process.waitForFinished();
+    const qsizetype warning =
+        said.indexOf(QStringLiteral("mcpp: warning: a large mission: covering 14.4 ha of passable land at "
+                                    "fields of view down to 0.08 m"));
+    QVERIFY2(warning >= 0, qPrintable(said));
+    QVERIFY2(said.contains(QStringLiteral("about 23 million places: planning may take minutes")),
+             qPrintable(said));
+    QVERIFY2(said.contains(QStringLiteral("--fov 0.088 brings it to about 19 million places")),
+             qPrintable(said));
+    QVERIFY2(said.indexOf(QStringLiteral("mcpp: quadtree")) > warning, qPrintable(said));
+    const auto sample = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "all", "--out",
+                                 scratch_.filePath("not-large")});
+    QCOMPARE(sample.exitCode, 0);
+    QVERIFY2(!sample.standardError.contains(QStringLiteral("large mission")),
+             qPrintable(sample.standardError));
 }
 
 // --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at

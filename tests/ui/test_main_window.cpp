@@ -741,6 +741,30 @@ class TestMainWindow : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         // Either the planner stopped, or it had already finished: both leave a usable window.
         QVERIFY(!window.isPlanning());
+        for (const QString& message : window.messageLog()->messages())
+            QVERIFY2(!message.startsWith(QStringLiteral("A large mission")), qPrintable(message));
+    }
+
+    // NLCD's groups at their preset's fields of view (5 m in forest) over 1430 km2: said to be large as the
+    // planning starts, which the user may cancel, with the factor Scale FOVs would take.
+    void aLargeMissionIsSaidAsPlanningStarts() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif"), QStringLiteral("nlcd-simplified")));
+        for (const MapPoint& spot : passableSpots(*window.document(), 2))
+            QVERIFY(window.robotTableModel()->addRobot(spot));
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        QVERIFY(window.startPlanning());
+        window.cancelPlanning();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        const QString said =
+            window.messageLog()->messages().filter(QStringLiteral("A large mission")).join('|');
+        QVERIFY2(said.startsWith(QStringLiteral("A large mission: covering 1430 km2 of passable land")),
+                 qPrintable(window.messageLog()->messages().join('\n')));
+        QVERIFY2(
+            said.contains(QStringLiteral("Scaling every FOV by 1.4 (Edit selected… > Scale FOVs) brings it")),
+            qPrintable(said));
     }
 
     // A drone whose flight is too short for its climb and descent is refused before planning or comparing,
