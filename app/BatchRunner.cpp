@@ -741,11 +741,13 @@ bool isOfTheMission(const PlanIssue& issue, const PlanningProblem& problem) {
 
 // The mission's notes (the problem's) as the plan keeps them: a planner drops one that does not hold for
 // its plan, as CPPIED drops "each is timed at its own" speed. Where an aircraft takes off outside the task
-// area is said too: the start given is not where its path begins.
+// area is said too: the start given is not where its path begins; and a robot that can cover only the part
+// of the map it starts in, which planners on cells of other sizes may see joined to the rest.
 void BatchRunner::sayMissionNotes(const Plan& plan, const PlanningProblem& problem) {
     for (const PlanIssue& issue : plan.issues)
         if (issue.severity == IssueSeverity::Information &&
-            (isOfTheMission(issue, problem) || issue.code == "take-off-outside"))
+            (isOfTheMission(issue, problem) || issue.code == "take-off-outside" ||
+             issue.code == "confined-robot"))
             note(issue.message + io::robotsNamedIn(issue.message, robotNamesForMessages(), false));
 }
 

@@ -101,6 +101,7 @@ class TestBatchEndToEnd : public QObject {
     void droneFlagsPlanAtTheCruiseSpeed();
     void fovFlagGivesEveryClassOneFootprint();
     void aLargeMissionIsSaidBeforePlanning();
+    void aRobotWalledInIsSaid();
     void batteryPlansWriteEachSortie();
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
     void anAircraftOnTheLakeTakesOffThere();
@@ -889,6 +890,38 @@ void TestBatchEndToEnd::aLargeMissionIsSaidBeforePlanning() {
     QCOMPARE(sample.exitCode, 0);
     QVERIFY2(!sample.standardError.contains(QStringLiteral("large mission")),
              qPrintable(sample.standardError));
+}
+
+// A robot that starts in a part of the map walls cut off covers only that part: said on standard output, as
+// the plan's figures (its short time, the lower bound counted per part) depend on it, not only in
+// report.json.
+void TestBatchEndToEnd::aRobotWalledInIsSaid() {
+    const QDir folder(scratch_.filePath(QStringLiteral("walled")));
+    QVERIFY(folder.mkpath(QStringLiteral(".")));
+    // 30 x 8 pixels of 10 m, grass with a wall of water from top to bottom in columns 4 and 5.
+    QString grid = QStringLiteral("ncols 30\nnrows 8\nxllcorner 0\nyllcorner 0\ncellsize 10\n");
+    for (int row = 0; row < 8; ++row) {
+        for (int column = 0; column < 30; ++column)
+            grid += column == 4 || column == 5 ? QStringLiteral("2 ") : QStringLiteral("1 ");
+        grid += '\n';
+    }
+    QFile raster(folder.filePath(QStringLiteral("walled.asc")));
+    QVERIFY(raster.open(QIODevice::WriteOnly));
+    raster.write(grid.toUtf8());
+    raster.close();
+    QFile classes(folder.filePath(QStringLiteral("classes.csv")));
+    QVERIFY(classes.open(QIODevice::WriteOnly));
+    classes.write("value,name,speed_mps,fov_m,passable\n1,Grass,1,5,true\n2,Water,0,5,false\n");
+    classes.close();
+    const auto run = runMcpp({"--batch", "--raster", raster.fileName(), "--classes", classes.fileName(),
+                              "--start", "15,45", "--start", "150,45", "--start", "285,5", "--out",
+                              folder.filePath(QStringLiteral("out"))});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(
+        run.standardOutput.contains(QStringLiteral(
+            "mcpp: robot 1 starts in a part of the map cut off from the rest (3200 m2) and can cover only "
+            "that part")),
+        qPrintable(run.standardOutput + run.standardError));
 }
 
 // --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at
