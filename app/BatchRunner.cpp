@@ -413,8 +413,13 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     };
     std::vector<Output> outputs; // catalogue order, in which results are reported
     std::string withoutCrs;      // outputs a map without a CRS cannot have
+    const auto asked = [&](const io::ExportFormat& format) {
+        const std::vector<std::string>& keys = options_.outputKeys;
+        return keys.empty() ? format.inBatchOutputs
+                            : std::find(keys.begin(), keys.end(), format.key) != keys.end();
+    };
     for (const io::ExportFormat& format : io::exportFormats()) {
-        if (!format.inBatchOutputs)
+        if (!asked(format))
             continue;
         if (!io::formatApplies(format, plan)) {
             // Left from a plan that had it, it would describe another plan.
@@ -428,8 +433,7 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             continue;
         }
         if (format.needsLongitudeLatitude && !raster_.georeference.hasCrs()) {
-            withoutCrs += (withoutCrs.empty() ? "" : ", ") +
-                          (format.perRobot ? "robot_<n>." + format.extension : format.batchFileName);
+            withoutCrs += (withoutCrs.empty() ? "" : ", ") + io::batchOutputName(format);
             continue;
         }
         if (!format.perRobot) {

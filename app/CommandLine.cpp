@@ -9,6 +9,7 @@
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/ExportCatalogue.hpp"
 #include "io/VehicleSettings.hpp"
 
 #include <algorithm>
@@ -50,7 +51,31 @@ constexpr std::array flagSpecs{
     FlagSpec{"--altitude", "M", true, false},       FlagSpec{"--cruise-speed", "M/S", true, false},
     FlagSpec{"--fov-scale", "F", true, false},      FlagSpec{"--flight-time", "T", true, false},
     FlagSpec{"--turnaround", "T", true, false},     FlagSpec{"--fov", "M", true, false},
+    FlagSpec{"--outputs", "KEYS", true, false},
 };
+
+// --outputs: catalogue keys separated by commas, each once; report.json, which the summary and the
+// comparison read, is always written.
+std::optional<std::string> parseOutputKeys(std::string_view value, std::vector<std::string>& keys) {
+    keys.clear();
+    std::size_t begin = 0;
+    while (begin <= value.size()) {
+        const std::size_t end = std::min(value.find(',', begin), value.size());
+        const std::string key(value.substr(begin, end - begin));
+        begin = end + 1;
+        if (key.empty())
+            continue;
+        if (io::findExportFormat(key) == nullptr)
+            return "--outputs: \"" + key + "\" is not an output; the outputs are " + io::exportFormatKeys();
+        if (std::find(keys.begin(), keys.end(), key) == keys.end())
+            keys.push_back(key);
+    }
+    if (keys.empty())
+        return "--outputs needs output names separated by commas: " + io::exportFormatKeys();
+    if (std::find(keys.begin(), keys.end(), "report-json") == keys.end())
+        keys.push_back("report-json");
+    return std::nullopt;
+}
 
 const FlagSpec* findFlag(std::string_view name) {
     if (name == "-o")
@@ -443,6 +468,9 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 *options.fieldOfViewMetres > kMaximumFieldOfViewMetres)
                 return failure("--fov: " + quoted(value) + " is not a field of view (more than 0, up to " +
                                formatQuantity(kMaximumFieldOfViewMetres) + " m)");
+        } else if (flag == "--outputs") {
+            if (auto problem = parseOutputKeys(value, options.outputKeys))
+                return failure(*problem);
         } else if (flag == "--dense-paths") {
             options.densePaths = true;
         } else if (flag == "--cell-polygons") {
@@ -544,6 +572,9 @@ std::string CommandLine::usage() {
            "  --dense-paths            paths in plan.geojson and plan.gpkg through every sub-cell centre\n"
            "                           instead of only their turning points\n"
            "  --cell-polygons          add a polygon per cell to plan.gpkg (layer cells; big on large maps)\n"
+           "  --outputs KEYS           write only these outputs (comma-separated keys, listed below;\n"
+           "                           report.json is always written), e.g. report-json,png to compare\n"
+           "                           planners on a large map without its waypoint files\n"
            "  --max-waypoints N        mission items every robot's autopilot holds, home included (0 for\n"
            "                           no limit; default: the mission's, else 700), in place of each\n"
            "                           robot's own. A longer mission is written in consecutive parts,\n"
@@ -617,6 +648,19 @@ std::string CommandLine::usage() {
     for (const auto& preset : presets) {
         text << "  " << preset.name << std::string(nameWidth - preset.name.size() + 2, ' ')
              << preset.description << '\n';
+    }
+    text << "\nOutputs for --outputs (* written by default):\n";
+    std::size_t keyWidth = 0;
+    std::size_t fileWidth = 0;
+    for (const io::ExportFormat& format : io::exportFormats()) {
+        keyWidth = std::max(keyWidth, format.key.size());
+        fileWidth = std::max(fileWidth, io::batchOutputName(format).size());
+    }
+    for (const io::ExportFormat& format : io::exportFormats()) {
+        const std::string file = io::batchOutputName(format);
+        text << "  " << format.key << std::string(keyWidth - format.key.size() + 1, ' ')
+             << (format.inBatchOutputs ? "* " : "  ") << file << std::string(fileWidth - file.size() + 2, ' ')
+             << format.label << '\n';
     }
     text << "\nExit status: 0 success, 2 bad input (one line on stderr says what), 1 internal error,\n"
             "3 with --compare when some planners failed (their rows in comparison.csv say why).\n";

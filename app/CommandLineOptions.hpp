@@ -49,6 +49,7 @@ struct CommandLineOptions {
     std::vector<std::string> comparePlanners;   // --compare, resolved to planner names ("all" expanded)
     bool densePaths = false;                    // --dense-paths
     bool cellPolygons = false;                  // --cell-polygons
+    std::vector<std::string> outputKeys;        // --outputs: export catalogue keys; empty: the default set
     int threads = 0;                            // --threads; 0: the machine's cores (mcpp::workerThreads)
     std::optional<int> maxWaypoints;            // --max-waypoints: every robot's autopilot item limit
     std::optional<io::VehicleType> vehicleType; // --vehicle: every robot's

@@ -40,6 +40,12 @@ ExportFormat inBatch(ExportFormat result, std::string fileName, bool required) {
     return result;
 }
 
+// Written by batch mode only when --outputs names it.
+ExportFormat onRequestInBatch(ExportFormat result, std::string fileName) {
+    result.batchFileName = std::move(fileName);
+    return result;
+}
+
 ExportFormat inLongitudeLatitude(ExportFormat result) {
     result.needsLongitudeLatitude = true;
     return result;
@@ -73,8 +79,12 @@ std::vector<ExportFormat> makeCatalogue() {
         inBatch(onlyWithDetection(format("detection-tif", "Detection raster (GeoTIFF)", "tif",
                                          "GeoTIFF (*.tif *.tiff)", wholePlan(writeDetectionRaster))),
                 "detection.tif", true),
-        inLongitudeLatitude(format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml))),
-        inLongitudeLatitude(format("gpx", "GPX", "gpx", "GPX (*.gpx)", wholePlan(writePlanGpx))),
+        onRequestInBatch(
+            inLongitudeLatitude(format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml))),
+            "plan.kml"),
+        onRequestInBatch(
+            inLongitudeLatitude(format("gpx", "GPX", "gpx", "GPX (*.gpx)", wholePlan(writePlanGpx))),
+            "plan.gpx"),
         inBatch(splitByItemLimit(inLongitudeLatitude(
                     perRobot(format("qgc-plan", "QGroundControl plan per robot", "plan",
                                     "QGroundControl plan (*.plan)", writeQGroundControlPlan)))),
@@ -92,7 +102,9 @@ std::vector<ExportFormat> makeCatalogue() {
                 "report.csv", false),
         inBatch(format("png", "Map image (PNG)", "png", "PNG image (*.png)", picture(ImageFormat::Png)),
                 "plan.png", true),
-        format("svg", "Map drawing (SVG)", "svg", "SVG drawing (*.svg)", picture(ImageFormat::Svg)),
+        onRequestInBatch(
+            format("svg", "Map drawing (SVG)", "svg", "SVG drawing (*.svg)", picture(ImageFormat::Svg)),
+            "plan.svg"),
     };
 }
 
@@ -105,6 +117,17 @@ const std::vector<ExportFormat>& exportFormats() {
 
 bool formatApplies(const ExportFormat& format, const Plan& plan) {
     return !format.appliesTo || format.appliesTo(plan);
+}
+
+std::string exportFormatKeys() {
+    std::string keys;
+    for (const ExportFormat& format : exportFormats())
+        keys += (keys.empty() ? "" : ", ") + format.key;
+    return keys;
+}
+
+std::string batchOutputName(const ExportFormat& format) {
+    return format.perRobot ? "robot_<n>." + format.extension : format.batchFileName;
 }
 
 const ExportFormat* findExportFormat(const std::string& key) {

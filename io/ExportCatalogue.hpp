@@ -21,8 +21,9 @@ struct ExportFormat {
     bool needsLongitudeLatitude = false;
     // An autopilot file: a mission above the robot's item limit is written in parts (missionPartPath).
     bool splitByItemLimit = false;
-    // Batch mode: whether it writes this format, under which name (whole-plan formats; per-robot files are
-    // robot_<i>.<extension>), and whether a failure ends the run (else it is a warning).
+    // Batch mode: whether it writes this format unasked, under which name (whole-plan formats; per-robot
+    // files are robot_<i>.<extension>), and whether a failure ends the run (else it is a warning). Every
+    // format can be asked for by its key (--outputs).
     bool inBatchOutputs = false;
     std::string batchFileName;
     bool requiredInBatch = false;
@@ -36,6 +37,10 @@ struct ExportFormat {
 [[nodiscard]] const std::vector<ExportFormat>& exportFormats();
 // Whether the format can write this plan.
 [[nodiscard]] bool formatApplies(const ExportFormat& format, const Plan& plan);
+// "geojson, gpkg, ...": every key, in menu order, for messages.
+[[nodiscard]] std::string exportFormatKeys();
+// Batch mode's file name for the format: plan.geojson, or robot_<n>.plan for a per-robot format.
+[[nodiscard]] std::string batchOutputName(const ExportFormat& format);
 // The format with this key, or nullptr.
 [[nodiscard]] const ExportFormat* findExportFormat(const std::string& key);
 // Batch mode's name for a robot's file of a per-robot format: robot_<n>.<extension>, n its number from 1

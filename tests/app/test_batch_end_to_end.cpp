@@ -102,6 +102,7 @@ class TestBatchEndToEnd : public QObject {
     void fovFlagGivesEveryClassOneFootprint();
     void aLargeMissionIsSaidBeforePlanning();
     void aRobotWalledInIsSaid();
+    void outputsWritesOnlyWhatIsAsked();
     void batteryPlansWriteEachSortie();
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
     void anAircraftOnTheLakeTakesOffThere();
@@ -922,6 +923,29 @@ void TestBatchEndToEnd::aRobotWalledInIsSaid() {
             "mcpp: robot 1 starts in a part of the map cut off from the rest (3200 m2) and can cover only "
             "that part")),
         qPrintable(run.standardOutput + run.standardError));
+}
+
+// --outputs: only the outputs asked for and report.json, formats the batch leaves out by default (KML)
+// included; in a comparison, in every planner's folder.
+void TestBatchEndToEnd::outputsWritesOnlyWhatIsAsked() {
+    const QString out = scratch_.filePath(QStringLiteral("some-outputs"));
+    const auto run =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--outputs", "kml,geojson", "--out", out});
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(QDir(out).entryList(QDir::Files, QDir::Name),
+             (QStringList{"plan.geojson", "plan.kml", "report.json"}));
+    QFile kml(QDir(out).filePath(QStringLiteral("plan.kml")));
+    QVERIFY(kml.open(QIODevice::ReadOnly));
+    const QByteArray text = kml.readAll();
+    QVERIFY2(text.startsWith("<?xml") && text.contains("<coordinates>"), text.left(200).constData());
+    const QString compared = scratch_.filePath(QStringLiteral("some-outputs-compared"));
+    const auto comparison = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare",
+                                     "mcpp-mlct,darp", "--outputs", "png", "--out", compared});
+    QCOMPARE(comparison.exitCode, 0);
+    for (const char* planner : {"mcpp-mlct", "darp"})
+        QCOMPARE(QDir(compared + "/" + QString::fromUtf8(planner)).entryList(QDir::Files, QDir::Name),
+                 (QStringList{"plan.png", "report.json"}));
+    QVERIFY(QFileInfo::exists(compared + "/comparison.csv"));
 }
 
 // --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at

@@ -177,6 +177,11 @@ void TestCommandLine::batchWithEveryFlag() {
     QVERIFY2(footprint.ok(), footprint.error.c_str());
     QCOMPARE(footprint.options.fieldOfViewMetres.value_or(-1.0), 42.5);
     QVERIFY(!footprint.options.fieldOfViewScale);
+    // The outputs asked for, each once, report.json (which the summary reads) always among them.
+    QVERIFY(options.outputKeys.empty());
+    const auto some = CommandLine::parse(split("--batch m.json --out o --outputs png,kml,png"));
+    QVERIFY2(some.ok(), some.error.c_str());
+    QCOMPARE(some.options.outputKeys, (std::vector<std::string>{"png", "kml", "report-json"}));
 }
 
 void TestCommandLine::batchWithPresetAndShortForms() {
@@ -312,6 +317,15 @@ void TestCommandLine::errors_data() {
     QTest::newRow("--fov beyond any sensor")
         << words("--batch m.json --out o --fov 2e5")
         << "--fov: \"2e5\" is not a field of view (more than 0, up to 100000 m)";
+    QTest::newRow("--outputs unknown")
+        << words("--batch m.json --out o --outputs geojson,shapefile")
+        << "--outputs: \"shapefile\" is not an output; the outputs are geojson, gpkg, regions-tif, "
+           "detection-tif, kml, gpx, qgc-plan, qgc-wpl, waypoint-csv, report-json, report-csv, png, svg";
+    QTest::newRow("--outputs empty")
+        << words("--batch m.json --out o --outputs ,")
+        << "--outputs needs output names separated by commas: geojson, gpkg, "
+           "regions-tif, detection-tif, kml, gpx, qgc-plan, qgc-wpl, waypoint-csv, "
+           "report-json, report-csv, png, svg";
     QTest::newRow("--fov beside --fov-scale")
         << words("--batch m.json --out o --fov 40 --fov-scale 2")
         << "--fov and --fov-scale cannot be used together: --fov sets every class's field of view, "
