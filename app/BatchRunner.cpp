@@ -537,8 +537,13 @@ void BatchRunner::warnIfLarge() {
             return "--fov " + formatQuantity(*options_.fieldOfViewMetres * factor, 2);
         return "--fov-scale " + formatQuantity(options_.fieldOfViewScale.value_or(1.0) * factor, 2);
     };
-    if (auto warning = io::largeMissionWarning(mission_, raster_, classes_, planners, remedy))
-        pendingWarnings_.push_back(std::move(*warning));
+    auto warning = io::largeMissionWarning(mission_, raster_, classes_, planners, remedy);
+    if (!warning)
+        return;
+    // Every planner's waypoint files of a large map run to thousands of files and gigabytes.
+    if (!options_.comparePlanners.empty() && options_.outputKeys.empty())
+        *warning += "; --outputs png leaves out each planner's waypoint files and vector layers";
+    pendingWarnings_.push_back(std::move(*warning));
 }
 
 void BatchRunner::setFieldsOfView(double metres) {
@@ -831,9 +836,10 @@ void BatchRunner::printComparisonRows(const std::vector<io::ComparisonRow>& rows
         // Where flights split the missions, the field team waits for the last robot home.
         output_ << (inTheField ? ", the last robot home after " : ", makespan ")
                 << formatDuration(io::doneAfterSeconds(row));
+        // A plan covering less is not timed against one covering the most: smaller, not quicker.
         if (first == nullptr)
             first = &row;
-        else if (io::doneAfterSeconds(*first) > 0.0)
+        else if (io::doneAfterSeconds(*first) > 0.0 && !io::coversLessThanMost(row, most))
             output_ << " (" << formatNumber(io::doneAfterSeconds(row) / io::doneAfterSeconds(*first), 2)
                     << " x " << first->planner << "'s)";
         if (inTheField)

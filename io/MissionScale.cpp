@@ -57,11 +57,21 @@ std::optional<PlanningMemory> planningMemory(const LoadedRaster& raster, const C
         memory.levels = std::max(memory.levels, entry.level);
     }
     const auto planner = findPlannerDescription(choice.planner);
+    const std::int64_t bytesPerCell = planner ? planner->bytesPerBottomCell : unmeasuredBytesPerBottomCell;
+    const double fovMin = memory.smallestFieldOfViewMetres;
     if (plansOnUniformGrid(choice))
-        memory.levels = 1;
-    memory.estimate = estimateCellBudget(
-        raster.grid.width(), raster.grid.height(), memory.smallestFieldOfViewMetres, memory.levels,
-        planner ? planner->bytesPerBottomCell : unmeasuredBytesPerBottomCell);
+        memory.levels = 1; // and over the whole raster (UniformGridDecomposition)
+    if (memory.levels > mostSizedLevels || plansOnUniformGrid(choice)) {
+        memory.estimate = estimateCellBudget(raster.grid.width(), raster.grid.height(), fovMin, memory.levels,
+                                             bytesPerCell);
+        return memory;
+    }
+    // A quadtree spans the top cells that hold the task area's pixels (QuadTreeBuilder).
+    const QuadTreeGridSize size =
+        quadTreeGridSize(raster.grid.width(), raster.grid.height(), fovMin, memory.levels);
+    const TopCellWindow window = topCellsOver(size, raster.grid, pixelsInside(raster.grid));
+    memory.estimate = estimateCellBudget(window.columns * size.topCellSize, window.rows * size.topCellSize,
+                                         fovMin, memory.levels, bytesPerCell);
     return memory;
 }
 

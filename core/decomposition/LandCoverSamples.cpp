@@ -147,6 +147,44 @@ PixelWindow pixelsInside(const ClassGrid& grid, const std::vector<std::uint16_t>
     return window;
 }
 
+PixelWindow pixelsInside(const ClassGrid& grid) {
+    if (grid.outside.empty())
+        return {0, 0, grid.columns, grid.rows};
+    PixelWindow window{grid.columns, grid.rows, 0, 0};
+    for (int row = 0; row < grid.rows; ++row) {
+        const std::uint8_t* flags = grid.outside.data() + grid.index(0, row);
+        const std::uint8_t* first = std::find(flags, flags + grid.columns, std::uint8_t{0});
+        if (first == flags + grid.columns)
+            continue;
+        const auto last = std::find(std::make_reverse_iterator(flags + grid.columns),
+                                    std::make_reverse_iterator(flags), std::uint8_t{0});
+        window.firstColumn = std::min(window.firstColumn, static_cast<int>(first - flags));
+        window.endColumn = std::max(window.endColumn, static_cast<int>(last.base() - flags));
+        window.firstRow = std::min(window.firstRow, row);
+        window.endRow = row + 1;
+    }
+    if (window.endRow == 0)
+        return {0, 0, grid.columns, grid.rows};
+    return window;
+}
+
+TopCellWindow topCellsOver(const QuadTreeGridSize& size, const ClassGrid& grid, const PixelWindow& land) {
+    const auto topCellsTo = [&](double metres, int most, bool up) {
+        const double cells = metres / size.topCellSize;
+        return std::clamp(static_cast<int>(up ? std::ceil(cells - 1e-9) : std::floor(cells + 1e-9)), 0, most);
+    };
+    TopCellWindow window;
+    window.firstColumn = topCellsTo(land.firstColumn * grid.pixelWidth, size.topColumns, false);
+    window.firstRow = topCellsTo(land.firstRow * grid.pixelHeight, size.topRows, false);
+    window.firstColumn -= window.firstColumn % 2;
+    window.firstRow -= window.firstRow % 2;
+    const int endColumn = topCellsTo(land.endColumn * grid.pixelWidth, size.topColumns, true);
+    const int endRow = topCellsTo(land.endRow * grid.pixelHeight, size.topRows, true);
+    window.columns = std::max(1, endColumn - window.firstColumn);
+    window.rows = std::max(1, endRow - window.firstRow);
+    return window;
+}
+
 SampleGrid sampleGrid(const ClassGrid& grid, std::vector<std::uint16_t>&& pixelCodes, double squareSize,
                       std::int64_t columns, std::int64_t rows, MapPoint corner) {
     SampleGrid samples;

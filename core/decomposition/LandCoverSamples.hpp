@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/decomposition/DecompositionOptions.hpp"
+#include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
@@ -63,6 +64,18 @@ struct PixelWindow {
     int endRow = 0;
 };
 [[nodiscard]] PixelWindow pixelsInside(const ClassGrid& grid, const std::vector<std::uint16_t>& pixelCodes);
+// The same by the grid's outside mask, for counting before any pixel is coded.
+[[nodiscard]] PixelWindow pixelsInside(const ClassGrid& grid);
+// The whole top cells of a quadtree of `size` over the raster that hold the window's pixels, the first column
+// and row rounded down to even ones: the frame the quadtree is built in, and the memory guard counts.
+struct TopCellWindow {
+    int firstColumn = 0;
+    int firstRow = 0;
+    int columns = 1;
+    int rows = 1;
+};
+[[nodiscard]] TopCellWindow topCellsOver(const QuadTreeGridSize& size, const ClassGrid& grid,
+                                         const PixelWindow& land);
 // What planning a map needs against memoryBudgetBytes(), and the smallest FOV whose grid over the same
 // extent fits (two significant digits, rounded up).
 struct CellBudgetEstimate {

@@ -133,22 +133,12 @@ void countBuckets(SampleCounts& counts, const std::vector<int>& levelOfCode) {
 // cells sampled and counted for the 0.12 M the area holds). Whole top cells of the raster's own grid of them,
 // from an even one (level-1 rows and columns keep their parity), so the cells are those the whole grid makes.
 void placeFrame(QuadTree& tree, const QuadTreeGridSize& size, const ClassGrid& grid,
-                const PixelWindow& land) {
-    const auto topCellsTo = [&](double metres, int most, bool up) {
-        const double cells = metres / size.topCellSize;
-        return std::clamp(static_cast<int>(up ? std::ceil(cells - 1e-9) : std::floor(cells + 1e-9)), 0, most);
-    };
-    int firstColumn = topCellsTo(land.firstColumn * grid.pixelWidth, size.topColumns, false);
-    int firstRow = topCellsTo(land.firstRow * grid.pixelHeight, size.topRows, false);
-    firstColumn -= firstColumn % 2;
-    firstRow -= firstRow % 2;
-    const int endColumn = topCellsTo(land.endColumn * grid.pixelWidth, size.topColumns, true);
-    const int endRow = topCellsTo(land.endRow * grid.pixelHeight, size.topRows, true);
+                const TopCellWindow& window) {
     tree.topCellSize = size.topCellSize;
-    tree.originX = grid.originX + firstColumn * size.topCellSize;
-    tree.originY = grid.originY - firstRow * size.topCellSize;
-    tree.topColumns = std::max(1, endColumn - firstColumn);
-    tree.topRows = std::max(1, endRow - firstRow);
+    tree.originX = grid.originX + window.firstColumn * size.topCellSize;
+    tree.originY = grid.originY - window.firstRow * size.topCellSize;
+    tree.topColumns = window.columns;
+    tree.topRows = window.rows;
 }
 
 // The tree's frame from the class table's rounded FOVs, and the samples counted per cell of every level.
@@ -184,10 +174,14 @@ SampleCounts countSamples(const ClassGrid& grid, const ClassTable& classes,
     tree.levels = levels;
     tree.fovMin = fovMin;
     const QuadTreeGridSize size = quadTreeGridSize(grid.width(), grid.height(), fovMin, levels);
-    checkCellBudget(grid.width(), grid.height(), fovMin, levels, options.bytesPerBottomCell);
+    // Counted over the top cells that hold the land, as the tree is built: a small area of interest in a
+    // large raster is planned in the memory its own extent needs.
+    const TopCellWindow window = topCellsOver(size, grid, pixelsInside(grid, pixels.codes));
+    checkCellBudget(window.columns * size.topCellSize, window.rows * size.topCellSize, fovMin, levels,
+                    options.bytesPerBottomCell);
     if (levels > mostQuadTreeLevels)
         throwTooManyLevels(levels);
-    placeFrame(tree, size, grid, pixelsInside(grid, pixels.codes));
+    placeFrame(tree, size, grid, window);
     counts.classes = pixels.classes;
     const std::int64_t bottomPerTop = std::int64_t{1} << (levels - 1);
     counts.samples = sampleGrid(grid, std::move(pixels.codes), 2.0 * fovMin, tree.topColumns * bottomPerTop,

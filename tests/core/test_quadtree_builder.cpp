@@ -355,6 +355,20 @@ class QuadTreeBuilderTest : public QObject {
                 QVERIFY(tree.activeCount() <= 1000000);
             }
         }
+        // A small area of interest in a large raster is counted by the top cells that hold it, as the tree
+        // is built: 500 m square of a 10 km raster at a 1 m FOV (62 500 cells where the raster's 25 million
+        // do not fit).
+        {
+            const BudgetForScope small(std::int64_t{400} * 1000 * 1000);
+            ClassGrid area = filledGrid(100, 100, 1, 100.0);
+            area.outside.assign(area.values.size(), ClassGrid::outsideArea);
+            for (int row = 40; row < 45; ++row)
+                for (int column = 30; column < 35; ++column)
+                    area.outside[area.index(column, row)] = 0;
+            const QuadTree tree = QuadTreeBuilder{}.build(area, tinyFov, {});
+            QCOMPARE(tree.activeCount(), 250 * 250);
+            QCOMPARE(tree.originX, 3000.0);
+        }
         // Fields of view 2^16 apart need 17 levels, past what a cell's span holds; even where the memory
         // budget would let such a grid through, it is refused by name before any cell is made.
         {

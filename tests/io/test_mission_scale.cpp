@@ -38,6 +38,7 @@ class TestMissionScale : public QObject {
     void theFactorBringsThePlacesDown();
     void onlyLargeMissionsAreWarned();
     void robotsAtACruiseSpeedAreNotTimedAtTheTable();
+    void memoryIsCountedOverTheTaskArea();
 };
 
 void TestMissionScale::placesFollowEachClassFieldOfView() {
@@ -112,6 +113,31 @@ void TestMissionScale::robotsAtACruiseSpeedAreNotTimedAtTheTable() {
     const auto cruising = io::largeMissionWarning(mission, raster, grassForestWater(), darp, remedy);
     QVERIFY(cruising);
     QVERIFY(cruising->find("class table's speeds") == std::string::npos);
+}
+
+// A quadtree spans the top cells holding the task area's pixels; a uniform grid spans the raster: the
+// window's banner and the large-mission check count as the planners' guards do.
+void TestMissionScale::memoryIsCountedOverTheTaskArea() {
+    io::LoadedRaster raster;
+    raster.grid.columns = 100;
+    raster.grid.rows = 100;
+    raster.grid.pixelWidth = 100.0;
+    raster.grid.pixelHeight = 100.0;
+    raster.grid.values.assign(10000, 1);
+    raster.grid.outside.assign(10000, ClassGrid::outsideArea);
+    for (int row = 40; row < 45; ++row)
+        for (int column = 30; column < 35; ++column)
+            raster.grid.outside[raster.grid.index(column, row)] = 0;
+    raster.classPixelCounts = {{1, 25}};
+    const ClassTable grass({{1, "Grass", 0x00ff00, 1.0, 1.0, true}});
+    const auto quadTree = io::planningMemory(raster, grass, PlannerChoice{"mcpp-mlct", {}});
+    QVERIFY(quadTree);
+    QCOMPARE(quadTree->estimate.bottomCells, std::int64_t{250 * 250}); // 500 m at 2 m cells
+    const auto uniform = io::planningMemory(raster, grass, PlannerChoice{"darp", {}});
+    QVERIFY(uniform);
+    QCOMPARE(uniform->estimate.bottomCells, std::int64_t{5000 * 5000}); // the raster's 10 km
+    QVERIFY(!io::planningMemory(raster, ClassTable({{1, "Water", 0x0000ff, 0.0, 1.0, false}}),
+                                PlannerChoice{"mcpp-mlct", {}}));
 }
 
 QTEST_APPLESS_MAIN(TestMissionScale)
