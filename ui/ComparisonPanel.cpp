@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -18,8 +19,9 @@ namespace mcpp::ui {
 
 namespace {
 
-// The figures that decide between planners; comparison.csv and the sheet below carry the rest.
-enum Column { Name, Outcome, Covered, Ratio, Makespan, Home, Turns, Planning, Columns };
+// The figures that decide between planners first, so that a narrow dock shows them; comparison.csv and the
+// sheet below carry the rest.
+enum Column { Name, Covered, Makespan, Home, Turns, Ratio, Planning, Outcome, Columns };
 
 constexpr int coversLessRole = Qt::UserRole + 1;
 
@@ -76,17 +78,19 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
     // Short headings so the table fits the dock; each says in full what it holds when hovered.
     const std::vector<std::pair<QString, QString>> headings{
         {tr("Planner"), tr("The planner's name")},
-        {tr("State"), tr("Planned, failed or skipped (hover over the cell for why)")},
         {tr("Covered %"),
          tr("The share of the task area's land the plan covers; by time, soonest first, a plan covering "
             "less than the best by over half a percent comes after the others")},
-        {tr("Ratio"), tr("Makespan divided by the lower bound: 1.00 is perfectly balanced")},
         {tr("Hours"), tr("Makespan: the time of the slowest robot, in hours")},
         {tr("Home h"),
          tr("Where flights split the missions: when the last robot is home, its flights and the "
             "turnarounds between them included, in hours")},
         {tr("Turns"), tr("Turns of all robots together")},
-        {tr("Plan s"), tr("Seconds the planner took")}};
+        {tr("Ratio"),
+         tr("Makespan divided by the plan's own lower bound, which counts its own cells and turns: how "
+            "evenly it shares the work (1.00 is perfectly balanced), not which plan is done sooner")},
+        {tr("Plan s"), tr("Seconds the planner took")},
+        {tr("State"), tr("Planned, failed or skipped, and the plan's warnings (hover over the cell)")}};
     for (int column = 0; column < Columns; ++column) {
         auto* heading = new QTableWidgetItem(headings[static_cast<std::size_t>(column)].first);
         heading->setToolTip(headings[static_cast<std::size_t>(column)].second);
@@ -114,7 +118,7 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
     scroll_ = new QScrollArea(this);
     scroll_->setWidget(sheet_);
     scroll_->setWidgetResizable(true);
-    scroll_->setMinimumHeight(240);
+    scroll_->setMinimumHeight(160);
     layout->addWidget(scroll_, 2);
 }
 
@@ -201,6 +205,11 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         table_->setItem(r, Planning, numberItem(row.planningMilliseconds / 1000.0, 2));
     }
     table_->setColumnHidden(Home, !inTheField);
+    // Every planner's row in view (up to nine) above the sheet, which scrolls on its own.
+    const int shown = std::min(table_->rowCount(), 9);
+    table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() +
+                             shown * table_->verticalHeader()->defaultSectionSize() +
+                             2 * table_->frameWidth() + table_->horizontalScrollBar()->sizeHint().height());
     table_->setSortingEnabled(true);
     // The soonest done first (of the plans that cover the most): what the user waits for, where a
     // balanced plan may still take longest.
