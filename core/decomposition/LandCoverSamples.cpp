@@ -126,19 +126,22 @@ PixelCodes codePixels(const ClassGrid& grid, const ClassTable& classes) {
     return result;
 }
 
-PixelWindow pixelsInside(const ClassGrid& grid, const std::vector<std::uint16_t>& pixelCodes) {
+namespace {
+
+// The window of the pixels whose entry (a code or an outside flag, row-major) is inside.
+template <typename Entry, typename Inside>
+PixelWindow windowOfEntries(const ClassGrid& grid, const std::vector<Entry>& entries, Inside inside) {
     PixelWindow window{grid.columns, grid.rows, 0, 0};
     for (int row = 0; row < grid.rows; ++row) {
-        const std::uint16_t* codes = pixelCodes.data() + grid.index(0, row);
-        const std::uint16_t* first = std::find_if(
-            codes, codes + grid.columns, [](std::uint16_t code) { return code != PixelCodes::outside; });
-        if (first == codes + grid.columns)
+        const Entry* begin = entries.data() + grid.index(0, row);
+        const Entry* end = begin + grid.columns;
+        const Entry* first = std::find_if(begin, end, inside);
+        if (first == end)
             continue;
         const auto last =
-            std::find_if(std::make_reverse_iterator(codes + grid.columns), std::make_reverse_iterator(codes),
-                         [](std::uint16_t code) { return code != PixelCodes::outside; });
-        window.firstColumn = std::min(window.firstColumn, static_cast<int>(first - codes));
-        window.endColumn = std::max(window.endColumn, static_cast<int>(last.base() - codes));
+            std::find_if(std::make_reverse_iterator(end), std::make_reverse_iterator(begin), inside);
+        window.firstColumn = std::min(window.firstColumn, static_cast<int>(first - begin));
+        window.endColumn = std::max(window.endColumn, static_cast<int>(last.base() - begin));
         window.firstRow = std::min(window.firstRow, row);
         window.endRow = row + 1;
     }
@@ -147,25 +150,17 @@ PixelWindow pixelsInside(const ClassGrid& grid, const std::vector<std::uint16_t>
     return window;
 }
 
+} // namespace
+
+PixelWindow pixelsInside(const ClassGrid& grid, const std::vector<std::uint16_t>& pixelCodes) {
+    return windowOfEntries(grid, pixelCodes, [](std::uint16_t code) { return code != PixelCodes::outside; });
+}
+
 PixelWindow pixelsInside(const ClassGrid& grid) {
     if (grid.outside.empty())
         return {0, 0, grid.columns, grid.rows};
-    PixelWindow window{grid.columns, grid.rows, 0, 0};
-    for (int row = 0; row < grid.rows; ++row) {
-        const std::uint8_t* flags = grid.outside.data() + grid.index(0, row);
-        const std::uint8_t* first = std::find(flags, flags + grid.columns, std::uint8_t{0});
-        if (first == flags + grid.columns)
-            continue;
-        const auto last = std::find(std::make_reverse_iterator(flags + grid.columns),
-                                    std::make_reverse_iterator(flags), std::uint8_t{0});
-        window.firstColumn = std::min(window.firstColumn, static_cast<int>(first - flags));
-        window.endColumn = std::max(window.endColumn, static_cast<int>(last.base() - flags));
-        window.firstRow = std::min(window.firstRow, row);
-        window.endRow = row + 1;
-    }
-    if (window.endRow == 0)
-        return {0, 0, grid.columns, grid.rows};
-    return window;
+    // A flag other than 0 says why a pixel is outside.
+    return windowOfEntries(grid, grid.outside, [](std::uint8_t flag) { return flag == 0; });
 }
 
 TopCellWindow topCellsOver(const QuadTreeGridSize& size, const ClassGrid& grid, const PixelWindow& land) {
