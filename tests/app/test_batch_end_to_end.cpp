@@ -8,6 +8,7 @@
 #include "io/Mission.hpp"
 #include "tests/support/TestData.hpp"
 
+#include <QDeadlineTimer>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -20,6 +21,7 @@
 #include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <chrono>
 #include <cmath>
 #include <gdal_priv.h>
 #include <memory>
@@ -872,8 +874,13 @@ void TestBatchEndToEnd::aLargeMissionIsSaidBeforePlanning() {
     QProcess process;
     process.start(executable_, {"--batch", samplePath("synthetic/mission.json"), "--fov", "0.08", "--out",
                                 scratch_.filePath("large")});
+    // Both lines are on standard error; waiting on standard output (buffered in a pipe) would see nothing
+    // until the run ends, so the wait is on standard error, bounded as a whole.
+    process.setReadChannel(QProcess::StandardError);
+    const QDeadlineTimer deadline(std::chrono::minutes(3));
     QString said;
-    while (!said.contains(QStringLiteral("mcpp: quadtree")) && process.waitForReadyRead(60000))
+    while (!said.contains(QStringLiteral("mcpp: quadtree")) && !deadline.hasExpired() &&
+           process.waitForReadyRead(static_cast<int>(deadline.remainingTime())))
         said += QString::fromUtf8(process.readAllStandardError());
     process.kill();
     process.waitForFinished();
