@@ -60,13 +60,14 @@ std::optional<PlanningMemory> planningMemory(const LoadedRaster& raster, const C
     const std::int64_t bytesPerCell = planner ? planner->bytesPerBottomCell : unmeasuredBytesPerBottomCell;
     const double fovMin = memory.smallestFieldOfViewMetres;
     if (plansOnUniformGrid(choice))
-        memory.levels = 1; // and over the whole raster (UniformGridDecomposition)
-    if (memory.levels > mostSizedLevels || plansOnUniformGrid(choice)) {
+        memory.levels = 1;
+    if (memory.levels > mostSizedLevels) {
         memory.estimate = estimateCellBudget(raster.grid.width(), raster.grid.height(), fovMin, memory.levels,
                                              bytesPerCell);
         return memory;
     }
-    // A quadtree spans the top cells that hold the task area's pixels (QuadTreeBuilder).
+    // A quadtree, and a uniform grid as one of one level, spans the top cells that hold the task area's
+    // pixels (QuadTreeBuilder, UniformGridDecomposition).
     const QuadTreeGridSize size =
         quadTreeGridSize(raster.grid.width(), raster.grid.height(), fovMin, memory.levels);
     const TopCellWindow window = topCellsOver(size, raster.grid, pixelsInside(raster.grid));

@@ -4,6 +4,7 @@
 #include "core/decomposition/GridNeighbours.hpp"
 #include "core/decomposition/LandCoverCounter.hpp"
 #include "core/decomposition/LandCoverSamples.hpp"
+#include "core/decomposition/QuadTreeGridSize.hpp"
 #include "core/model/CellRecord.hpp"
 #include "core/model/PlanningError.hpp"
 
@@ -22,7 +23,7 @@ struct SubCellCounts {
     std::vector<std::uint32_t> passable;
 };
 
-// The grid's geometry: cells of 2 x fovMin, sub-cells of fovMin, counted from the raster's north-west corner.
+// The grid's geometry: cells of 2 x fovMin, sub-cells of fovMin, counted from the window's north-west corner.
 struct GridShape {
     double cellSize = 0.0;
     int columns = 0;
@@ -44,19 +45,29 @@ SubCellCounts countSubCells(const SampleGrid& samples, const GridShape& shape, d
     SubCellCounts counts;
     counts.total.assign(subColumns * static_cast<std::size_t>(shape.subRows()), 0U);
     counts.passable.assign(counts.total.size(), 0U);
+    // Samples off the grid (pixels beyond the window of cells round the task area, all outside) are left
+    // out.
+    constexpr std::size_t offGrid = std::numeric_limits<std::size_t>::max();
+    const auto subIndex = [&](double offset, std::size_t count) {
+        const double index = std::floor(offset / subSize);
+        return index >= 0.0 && index < static_cast<double>(count) ? static_cast<std::size_t>(index) : offGrid;
+    };
     std::vector<std::size_t> subColumnOfSample(static_cast<std::size_t>(samples.columns));
     for (int column = 0; column < samples.columns; ++column) {
         const double x = samples.originX + (column + 0.5) * samples.sampleWidth;
-        subColumnOfSample[static_cast<std::size_t>(column)] =
-            static_cast<std::size_t>(std::floor((x - originX) / subSize));
+        subColumnOfSample[static_cast<std::size_t>(column)] = subIndex(x - originX, subColumns);
     }
     for (int row = 0; row < samples.rows; ++row) {
         const double y = samples.originY - (row + 0.5) * samples.sampleHeight;
-        const auto subRow = static_cast<std::size_t>(std::floor((originY - y) / subSize));
+        const std::size_t subRow = subIndex(originY - y, static_cast<std::size_t>(shape.subRows()));
+        if (subRow == offGrid)
+            continue;
         const std::uint16_t* codes = samples.row(row);
         for (int column = 0; column < samples.columns; ++column) {
-            const std::size_t index =
-                subRow * subColumns + subColumnOfSample[static_cast<std::size_t>(column)];
+            const std::size_t subColumn = subColumnOfSample[static_cast<std::size_t>(column)];
+            if (subColumn == offGrid)
+                continue;
+            const std::size_t index = subRow * subColumns + subColumn;
             ++counts.total[index];
             if (codes[column] < PixelCodes::obstacle)
                 ++counts.passable[index];
@@ -80,17 +91,21 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
     double fovMin = std::numeric_limits<double>::infinity();
     for (const auto& rounded : fieldsOfView)
         fovMin = std::min(fovMin, rounded.roundedMetres);
-    GridShape shape;
-    shape.cellSize = 2.0 * fovMin;
-    shape.columns = std::max(1, static_cast<int>(std::ceil(grid.width() / shape.cellSize - 1e-9)));
-    shape.rows = std::max(1, static_cast<int>(std::ceil(grid.height() / shape.cellSize - 1e-9)));
-    checkCellBudget(grid.width(), grid.height(), fovMin, 1, options_.bytesPerBottomCell);
+    // Cells over the task area's pixels only, on the raster's own grid of them (the quadtree's rule with one
+    // level): a small area of interest in a large raster is planned in the memory its own extent needs.
+    const QuadTreeGridSize size = quadTreeGridSize(grid.width(), grid.height(), fovMin, 1);
+    const TopCellWindow window = topCellsOver(size, grid, pixelsInside(grid, pixels.codes));
+    const GridShape shape{size.topCellSize, window.columns, window.rows};
+    const MapPoint corner{grid.originX + window.firstColumn * shape.cellSize,
+                          grid.originY - window.firstRow * shape.cellSize};
+    checkCellBudget(shape.columns * shape.cellSize, shape.rows * shape.cellSize, fovMin, 1,
+                    options_.bytesPerBottomCell);
     progress.throwIfCancelled();
 
     const std::vector<PixelCodes::DenseClass> dense = pixels.classes;
-    const SampleGrid samples = sampleGrid(grid, std::move(pixels.codes), fovMin, shape.subColumns(),
-                                          shape.subRows(), {grid.originX, grid.originY});
-    const SubCellCounts counts = countSubCells(samples, shape, grid.originX, grid.originY);
+    const SampleGrid samples =
+        sampleGrid(grid, std::move(pixels.codes), fovMin, shape.subColumns(), shape.subRows(), corner);
+    const SubCellCounts counts = countSubCells(samples, shape, corner.x, corner.y);
     progress.report("grid", 0.4);
     progress.throwIfCancelled();
 
@@ -105,7 +120,7 @@ CellGraph UniformGridDecomposition::decompose(const ClassGrid& grid, const Class
         return total == 0 ? 0.0 : inside * static_cast<double>(passable) / static_cast<double>(total);
     };
 
-    GridFrame frame{grid.originX, grid.originY, shape.cellSize, shape.columns, shape.rows, 1};
+    GridFrame frame{corner.x, corner.y, shape.cellSize, shape.columns, shape.rows, 1};
     std::vector<Cell> cells;
     // What storing areas as floats changed, added to the total so that the cells never add up to more.
     double rounding = 0.0;

@@ -2,6 +2,7 @@
 #include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/decomposition/QuadTreeDecomposition.hpp"
 #include "core/decomposition/QuadTreeGridSize.hpp"
+#include "core/decomposition/UniformGridDecomposition.hpp"
 #include "core/model/MemoryBudget.hpp"
 #include "core/model/ParallelFor.hpp"
 #include "core/model/PlanningError.hpp"
@@ -473,6 +474,72 @@ class QuadTreeBuilderTest : public QObject {
                          error.what());
             }
         }
+    }
+
+    // The grid planners' uniform grid spans the cells over the task area, as the quadtree does: the same
+    // cells, square for square, as over a raster cut to that window, and a small area of interest in a large
+    // raster is planned where its whole raster would be refused.
+    void aUniformGridSpansTheTaskArea() {
+        const ClassTable grass({{1, "grass", 0, 1.0, 1.0, true}, {2, "rock", 0, 0.0, 1.0, false}});
+        // One-metre pixels serve as samples (FOV 1 m, cells of 2 m): an area from an odd pixel, a rock in it.
+        ClassGrid map = filledGrid(400, 400, 1);
+        map.originX = 1000.0;
+        map.originY = 9000.0;
+        map.outside.assign(map.values.size(), ClassGrid::outsideArea);
+        for (int row = 201; row < 261; ++row)
+            for (int column = 101; column < 151; ++column)
+                map.outside[map.index(column, row)] = 0;
+        map.values[map.index(120, 230)] = 2;
+        // The window: cells from column 50 (even) to 76 and rows 100 to 131, pixels 100-152 and 200-262.
+        ClassGrid cut = filledGrid(52, 62, 1);
+        cut.originX = 1100.0;
+        cut.originY = 8800.0;
+        cut.outside.assign(cut.values.size(), 0);
+        for (int row = 0; row < cut.rows; ++row)
+            for (int column = 0; column < cut.columns; ++column) {
+                cut.values[cut.index(column, row)] = map.valueAt(column + 100, row + 200);
+                cut.outside[cut.index(column, row)] = map.outside[map.index(column + 100, row + 200)];
+            }
+        for (const GridCellRule rule :
+             {GridCellRule::WholeCell, GridCellRule::AllSubCellsFree, GridCellRule::AnySubCellFree}) {
+            const UniformGridDecomposition decomposition({}, rule);
+            const CellGraph inMap = decomposition.decompose(map, grass);
+            const CellGraph inCut = decomposition.decompose(cut, grass);
+            QCOMPARE(inMap.frame().columns, 26);
+            QCOMPARE(inMap.frame().rows, 31);
+            QCOMPARE(inMap.frame().originX, 1100.0);
+            QCOMPARE(inMap.frame().originY, 8800.0);
+            QVERIFY(inMap.size() >= 24 * 29 - 1); // the cells wholly inside, but the rock's
+            QCOMPARE(inMap.size(), inCut.size());
+            for (int id = 0; id < static_cast<int>(inMap.size()); ++id) {
+                const Cell a = inMap.cell(id);
+                const Cell b = inCut.cell(id);
+                QCOMPARE(a.minX, b.minX);
+                QCOMPARE(a.minY, b.minY);
+                QCOMPARE(a.freeSubCells, b.freeSubCells);
+                QCOMPARE(a.passableAreaSquareMetres, b.passableAreaSquareMetres);
+                QCOMPARE(inMap.neighbours(id).size(), inCut.neighbours(id).size());
+            }
+            QCOMPARE(inMap.passableAreaSquareMetres, inCut.passableAreaSquareMetres);
+            QVERIFY(std::abs(inMap.passableAreaSquareMetres - 2999.0) < 1e-6 * 2999.0);
+        }
+        // Pixels larger than the cells are sampled at the cells' centres: a 500 m area of a 10 km raster at a
+        // 1 m FOV is 250 x 250 cells where the raster's 5000 x 5000 do not fit.
+        const BudgetForScope small(std::int64_t{400} * 1000 * 1000);
+        ClassGrid large = filledGrid(100, 100, 1, 100.0);
+        large.outside.assign(large.values.size(), ClassGrid::outsideArea);
+        for (int row = 40; row < 45; ++row)
+            for (int column = 30; column < 35; ++column)
+                large.outside[large.index(column, row)] = 0;
+        const CellGraph area = UniformGridDecomposition({}, GridCellRule::WholeCell).decompose(large, grass);
+        QCOMPARE(area.size(), std::size_t{250 * 250});
+        QCOMPARE(area.frame().originX, 3000.0);
+        QCOMPARE(area.frame().originY, -4000.0);
+        QVERIFY(std::abs(area.passableAreaSquareMetres - 250000.0) < 1e-6 * 250000.0);
+        large.outside.clear();
+        QVERIFY_THROWS_EXCEPTION(
+            PlanningError,
+            (void)UniformGridDecomposition({}, GridCellRule::WholeCell).decompose(large, grass));
     }
 };
 
