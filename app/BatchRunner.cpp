@@ -441,7 +441,7 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             continue;
         }
         for (int robot = 0; robot < robots; ++robot)
-            outputs.push_back({&format, robot, io::robotFileName(robot, format)});
+            outputs.push_back({&format, robot, io::robotFileName(robot, robots, format)});
     }
     if (!withoutCrs.empty())
         warn("the map has no CRS, so these outputs, in longitude and latitude, are not written: " +
@@ -575,12 +575,11 @@ void BatchRunner::applyVehicleFlags() {
 
 void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) {
     // Named by the .plan file; the .waypoints files are split the same way.
-    const std::string message =
-        io::splitMissionNote(context, robot, "robot_" + std::to_string(io::robotNumber(robot)) + ".plan");
+    const std::string file = io::robotFileStem(robot, static_cast<int>(context.plan.paths.size())) + ".plan";
+    const std::string message = io::splitMissionNote(context, robot, file);
     if (!message.empty())
         note(message + "; the .waypoints file is split into the same parts");
-    const std::string sorties =
-        io::sortieFilesNote(context, robot, "robot_" + std::to_string(io::robotNumber(robot)) + ".plan");
+    const std::string sorties = io::sortieFilesNote(context, robot, file);
     if (!sorties.empty())
         note(sorties + ", and as .waypoints files");
     if (const std::string tooLong = io::flightTimeWarning(context, robot); !tooLong.empty())
@@ -591,28 +590,21 @@ void BatchRunner::removeStaleRobotFiles(
     int robots, const std::map<std::pair<int, std::string>, std::size_t>& partsWritten,
     const std::string& folder) const {
     // Waypoint files a previous run in this folder wrote and this one has not would mislead: those of
-    // robots it no longer has, a whole mission now split into parts, parts of a mission now whole or shorter.
-    namespace fs = std::filesystem;
-    const fs::path directory(folder);
-    std::error_code code;
-    for (int robot = 0;; ++robot) {
-        const bool planned = robot < robots;
-        bool removed = false;
-        for (const io::ExportFormat& format : io::exportFormats()) {
-            if (!format.inBatchOutputs || !format.perRobot)
-                continue;
+    // robots it no longer has or numbered to another width, a whole mission now split into parts, parts of
+    // a mission now whole or shorter.
+    const std::filesystem::path directory(folder);
+    for (const io::ExportFormat& format : io::exportFormats()) {
+        if (!format.inBatchOutputs || !format.perRobot)
+            continue;
+        io::removeStaleRobotFiles(folder, format.extension, robots);
+        if (!format.splitByItemLimit)
+            continue;
+        for (int robot = 0; robot < robots; ++robot) {
             const auto written = partsWritten.find({robot, format.key});
             const std::size_t parts = written == partsWritten.end() ? 0 : written->second;
-            const std::string whole = (directory / io::robotFileName(robot, format)).string();
-            if (!planned)
-                removed = fs::remove(whole, code) || removed;
-            if (!planned && format.splitByItemLimit)
-                io::removeStaleSortieFiles(whole, 0);
-            if (format.splitByItemLimit)
-                removed = io::removeStaleMissionFiles(whole, parts) || removed;
+            io::removeStaleMissionFiles((directory / io::robotFileName(robot, robots, format)).string(),
+                                        parts);
         }
-        if (!planned && !removed)
-            break;
     }
 }
 

@@ -468,19 +468,35 @@ std::string numberedPath(const std::string& path, const std::string& tag, std::s
     return (file.parent_path() / (file.stem().string() + tag + number + file.extension().string())).string();
 }
 
+bool digits(const std::string& text) {
+    return !text.empty() &&
+           std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+// Whether `text` is what may follow a numbered file's number: nothing, its part, its sortie or its sortie's
+// part ("", "_part_2", "_sortie_3", "_sortie_3_part_2").
+bool isNumberedFileTail(const std::string& text) {
+    std::string rest = text;
+    for (const std::string tag : {"_sortie_", "_part_"}) {
+        if (!rest.starts_with(tag))
+            continue;
+        const std::size_t end = rest.find('_', tag.size());
+        if (!digits(rest.substr(tag.size(), end == std::string::npos ? std::string::npos : end - tag.size())))
+            return false;
+        rest = end == std::string::npos ? std::string() : rest.substr(end);
+    }
+    return rest.empty();
+}
+
 // The numbered files with `tag` an export to `path` may have written beside it ("robot_1_sortie_7.plan",
 // "robot_1_sortie_07.plan" for "robot_1.plan" and "_sortie_"), whatever their number's padding, each named
-// once, also where only its parts are there ("robot_1_sortie_7_part_2.plan").
+// once, also where only its parts or sorties are there ("robot_1_sortie_7_part_2.plan").
 std::vector<std::filesystem::path> numberedFilesBeside(const std::string& path, const std::string& tag) {
     namespace fs = std::filesystem;
     const fs::path file(path);
     const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
     const std::string prefix = file.stem().string() + tag;
     const std::string extension = file.extension().string();
-    const auto digits = [](const std::string& text) {
-        return !text.empty() &&
-               std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
-    };
     std::vector<fs::path> found;
     std::error_code code;
     for (fs::directory_iterator entry(folder, code), end; !code && entry != end; entry.increment(code)) {
@@ -489,9 +505,9 @@ std::vector<std::filesystem::path> numberedFilesBeside(const std::string& path, 
             !name.ends_with(extension))
             continue;
         const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - extension.size());
-        const std::size_t partTag = middle.find("_part_");
-        const std::string number = middle.substr(0, partTag);
-        if (!digits(number) || (partTag != std::string::npos && !digits(middle.substr(partTag + 6))))
+        const std::size_t tail = middle.find('_');
+        const std::string number = middle.substr(0, tail);
+        if (!digits(number) || !isNumberedFileTail(tail == std::string::npos ? "" : middle.substr(tail)))
             continue;
         const fs::path numbered = file.parent_path() / (prefix + number + extension);
         if (std::find(found.begin(), found.end(), numbered) == found.end())
@@ -537,6 +553,18 @@ void removeStaleSortieFiles(const std::string& path, std::size_t written) {
         if (!isWritten(file, path, "_sortie_", written)) {
             std::filesystem::remove(file, code);
             removeStaleMissionFiles(file.string(), 0);
+        }
+}
+
+void removeStaleRobotFiles(const std::string& folder, const std::string& extension, int robots) {
+    // Robot files are numbered files of "robot.<extension>" with "_" before the number.
+    const std::string pattern = (std::filesystem::path(folder) / ("robot." + extension)).string();
+    std::error_code code;
+    for (const std::filesystem::path& file : numberedFilesBeside(pattern, "_"))
+        if (!isWritten(file, pattern, "_", static_cast<std::size_t>(std::max(robots, 0)))) {
+            std::filesystem::remove(file, code);
+            removeStaleMissionFiles(file.string(), 0);
+            removeStaleSortieFiles(file.string(), 0);
         }
 }
 

@@ -123,6 +123,11 @@ struct MissionSize {
 // when it was written whole: parts 1, or not at all: 0), whatever its number's padding. True when a file
 // went.
 bool removeStaleMissionFiles(const std::string& path, std::size_t parts);
+
+// Removes the files of a per-robot format (".csv", ".plan", ...) an earlier batch run left in `folder` that
+// one of `robots` robots does not write: those of robots it does not have and those whose number is padded to
+// another width ("robot_3.csv" beside "robot_03.csv" of 12), with their parts and sorties.
+void removeStaleRobotFiles(const std::string& folder, const std::string& extension, int robots);
 // Removes the sortie files (and their parts) an earlier export to `path` wrote that are not among this
 // export's `written` sorties (0: none).
 void removeStaleSortieFiles(const std::string& path, std::size_t written);

@@ -137,8 +137,8 @@ const ExportFormat* findExportFormat(const std::string& key) {
     return found == catalogue.end() ? nullptr : &*found;
 }
 
-std::string robotFileName(int robot, const ExportFormat& format) {
-    return robotFileStem(robot) + "." + format.extension;
+std::string robotFileName(int robot, int robots, const ExportFormat& format) {
+    return robotFileStem(robot, robots) + "." + format.extension;
 }
 
 } // namespace mcpp::io

@@ -43,8 +43,9 @@ struct ExportFormat {
 [[nodiscard]] std::string batchOutputName(const ExportFormat& format);
 // The format with this key, or nullptr.
 [[nodiscard]] const ExportFormat* findExportFormat(const std::string& key);
-// Batch mode's name for a robot's file of a per-robot format: robot_<n>.<extension>, n its number from 1
-// as in the "robot" fields of plan.geojson and report.json.
-[[nodiscard]] std::string robotFileName(int robot, const ExportFormat& format);
+// Batch mode's name for a robot's file of a per-robot format in a plan of `robots`: robot_<n>.<extension>, n
+// its number from 1 as in the "robot" fields of plan.geojson and report.json, padded to the width of the
+// last (robot_02.csv of 12).
+[[nodiscard]] std::string robotFileName(int robot, int robots, const ExportFormat& format);
 
 } // namespace mcpp::io

@@ -8,6 +8,7 @@
 #include "io/Mission.hpp"
 #include "io/Result.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <map>
@@ -81,9 +82,14 @@ struct ExportContext {
 [[nodiscard]] constexpr int robotNumber(int robot) {
     return robot + 1;
 }
-// The name of a robot's own files without the extension, as batch mode writes them: "robot_2".
-[[nodiscard]] inline std::string robotFileStem(int robot) {
-    return "robot_" + std::to_string(robotNumber(robot));
+// The name of a robot's own files without the extension, as batch mode writes them for a plan of `robots`:
+// "robot_2", its number padded with zeros to the width of the last one's ("robot_02" of 12) so that a file
+// list sorts the robots in order.
+[[nodiscard]] inline std::string robotFileStem(int robot, int robots) {
+    std::string number = std::to_string(robotNumber(robot));
+    const std::size_t width = std::to_string(std::max(robots, robotNumber(robot))).size();
+    number.insert(0, width - number.size(), '0');
+    return "robot_" + number;
 }
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.

@@ -319,9 +319,9 @@ Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& contex
 }
 
 // The name batch mode gives the part's .plan and .waypoints files, without the extension: "robot_2" for a
-// mission in one part, "robot_2_part_3" for its third part.
-std::string partFileStem(int robot, std::size_t part, std::size_t parts) {
-    const std::string whole = robotFileStem(robot);
+// mission in one part, "robot_2_part_3" for its third part (of a plan of `robots`).
+std::string partFileStem(int robot, int robots, std::size_t part, std::size_t parts) {
+    const std::string whole = robotFileStem(robot, robots);
     return parts > 1 ? missionPartPath(whole, part, parts) : whole;
 }
 
@@ -333,7 +333,9 @@ void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot
     feature.SetField("part", static_cast<int>(part + 1));
     feature.SetField("parts", static_cast<int>(mission.parts.size()));
     feature.SetField("items", piece.items);
-    feature.SetField("file", partFileStem(robot, part, mission.parts.size()).c_str());
+    feature.SetField(
+        "file",
+        partFileStem(robot, static_cast<int>(context.plan.paths.size()), part, mission.parts.size()).c_str());
     if (piece.seconds > 0.0)
         feature.SetField("part_time_s", piece.seconds);
     feature.SetField("farthest_m", farthestFromStart(mission, piece));

@@ -87,7 +87,8 @@ std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
 // the run printed.
 void addMissionFileIssues(JsonValue& issues, JsonValue& warnings, const ExportContext& context) {
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
-        const std::string file = "robot_" + std::to_string(robotNumber(robot.robot)) + ".plan";
+        const std::string file =
+            robotFileStem(robot.robot, static_cast<int>(context.plan.paths.size())) + ".plan";
         const std::string besideWaypoints = ", and the same for its .waypoints file";
         const std::tuple<const char*, const char*, std::string> notes[] = {
             {"information", "mission-split", splitMissionNote(context, robot.robot, file) + besideWaypoints},

@@ -115,14 +115,18 @@ const QString kMissionFilter = QObject::tr("mcpp missions (*.json);;All files (*
 // Exported PNGs are for print: larger than batch mode's plan.png.
 constexpr int exportImageSide = 3000;
 
-// "zion-plan.plan" -> "zion-plan-robot2.plan" when several robots share one chosen name.
+// "zion-plan.plan" -> "zion-plan-robot2.plan" when several robots share one chosen name, the number padded
+// with zeros to the width of the last ("zion-plan-robot02.plan" of 12) so that file lists sort them in order.
 QString perRobotPath(const QString& path, int robot, int robots) {
     if (robots <= 1)
         return path;
     const QFileInfo info(path);
     const QString suffix = info.suffix().isEmpty() ? QString() : QStringLiteral(".") + info.suffix();
-    return info.dir().filePath(
-        QStringLiteral("%1-robot%2%3").arg(info.completeBaseName()).arg(robot + 1).arg(suffix));
+    const auto width = static_cast<int>(QString::number(robots).size());
+    return info.dir().filePath(QStringLiteral("%1-robot%2%3")
+                                   .arg(info.completeBaseName())
+                                   .arg(robot + 1, width, 10, QLatin1Char('0'))
+                                   .arg(suffix));
 }
 
 // No thousands separators: "228,269.3, 12,469.5" cannot be read back; pairs are labelled X and Y instead.

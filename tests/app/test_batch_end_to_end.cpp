@@ -714,6 +714,21 @@ void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
     auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--out", out, "--quiet"});
     QCOMPARE(run.exitCode, 0);
     QVERIFY(QFileInfo::exists(out + "/robot_3.plan"));
+    // Ten robots: numbered robot_01 to robot_10, so that a file list sorts them; the three unpadded go.
+    QStringList tenRobots = syntheticFlags();
+    for (const char* x : {"431040", "431140", "431240", "431340", "431420"})
+        for (const char* y : {"5301040", "5301260"})
+            tenRobots << "--start" << QStringLiteral("%1,%2").arg(QLatin1String(x), QLatin1String(y));
+    run = runMcpp(tenRobots << "--out" << out << "--quiet");
+    QCOMPARE(run.exitCode, 0);
+    const auto robotFiles = [&] {
+        QStringList names = QDir(out).entryList({QStringLiteral("robot_*")}, QDir::Files);
+        names.sort();
+        return names;
+    };
+    QCOMPARE(robotFiles().size(), 3 * 10);
+    QCOMPARE(robotFiles().first(), QStringLiteral("robot_01.csv"));
+    QCOMPARE(robotFiles().last(), QStringLiteral("robot_10.waypoints"));
     auto arguments = syntheticFlags();
     arguments << "--start"
               << "431040,5301040"
@@ -722,8 +737,9 @@ void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
               << "--out" << out;
     run = runMcpp(arguments);
     checkOutputs(out, 2, run);
-    QVERIFY(!QFileInfo::exists(out + "/robot_3.waypoints"));
-    QVERIFY(!QFileInfo::exists(out + "/robot_3.csv"));
+    QCOMPARE(robotFiles().join(QLatin1Char(' ')),
+             QStringLiteral("robot_1.csv robot_1.plan robot_1.waypoints robot_2.csv robot_2.plan "
+                            "robot_2.waypoints"));
 }
 
 void TestBatchEndToEnd::missingAsObstacleTurnsTheErrorIntoAWarning() {

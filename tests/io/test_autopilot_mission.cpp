@@ -583,6 +583,41 @@ class AutopilotMissionTest : public QObject {
         QCOMPARE(left(), sorted(expected));
     }
 
+    // Robots' files are numbered to the width of the last robot's number; a run of 3 robots after one of 12
+    // in the same folder leaves its own files only, those of other robots and paddings going with their
+    // parts and sorties; other formats' files and other files are left alone.
+    void robotFilesArePaddedAndStaleOnesGo() {
+        QCOMPARE(robotFileStem(0, 1), std::string("robot_1"));
+        QCOMPARE(robotFileStem(8, 9), std::string("robot_9"));
+        QCOMPARE(robotFileStem(1, 12), std::string("robot_02"));
+        QCOMPARE(robotFileStem(11, 12), std::string("robot_12"));
+        QCOMPARE(robotFileStem(4, 100), std::string("robot_005"));
+        QCOMPARE(robotFileStem(12, 12), std::string("robot_13")); // past the count: its own width
+        QTemporaryDir folder;
+        const auto touch = [&](const std::string& name) {
+            QFile file(folder.filePath(QString::fromStdString(name)));
+            QVERIFY(file.open(QIODevice::WriteOnly));
+        };
+        const auto left = [&] {
+            QStringList names = QDir(folder.path()).entryList(QDir::Files);
+            names.sort();
+            return names.join(QLatin1Char(' '));
+        };
+        for (int robot = 0; robot < 12; ++robot)
+            touch(robotFileStem(robot, 12) + ".plan");
+        for (const char* other : {"robot_05_part_1.plan", "robot_05_part_2.plan", "robot_11_sortie_1.plan",
+                                  "robot_12_sortie_2_part_1.plan", "robot_1.csv", "robot_one.plan",
+                                  "robot_2_notes.plan", "notes.txt"})
+            touch(other);
+        removeStaleRobotFiles(folder.path().toStdString(), "plan", 12);
+        QCOMPARE(left().count(QStringLiteral(".plan")), 12 + 6);
+        for (int robot = 0; robot < 3; ++robot)
+            touch(robotFileStem(robot, 3) + ".plan");
+        removeStaleRobotFiles(folder.path().toStdString(), "plan", 3);
+        QCOMPARE(left(), QStringLiteral("notes.txt robot_1.csv robot_1.plan robot_2.plan robot_2_notes.plan "
+                                        "robot_3.plan robot_one.plan"));
+    }
+
     void splitFilesAreWrittenAndJoinUp() {
         LawnmowerExport lawnmowerExport;
         lawnmowerExport.settings.vehicle.maxWaypoints = 25;
