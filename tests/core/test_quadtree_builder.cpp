@@ -29,6 +29,15 @@ ClassGrid filledGrid(int columns, int rows, std::int32_t value, double pixel = 1
     return grid;
 }
 
+// `grid` with only its pixels [firstColumn, endColumn) x [firstRow, endRow) inside the task area.
+ClassGrid withAreaOfInterest(ClassGrid grid, int firstColumn, int endColumn, int firstRow, int endRow) {
+    grid.outside.assign(grid.values.size(), ClassGrid::outsideArea);
+    for (int row = firstRow; row < endRow; ++row)
+        for (int column = firstColumn; column < endColumn; ++column)
+            grid.outside[grid.index(column, row)] = 0;
+    return grid;
+}
+
 int countActiveAtLevel(const QuadTree& tree, int level) {
     int count = 0;
     for (int index : tree.activeCells)
@@ -361,11 +370,7 @@ class QuadTreeBuilderTest : public QObject {
         // do not fit).
         {
             const BudgetForScope small(std::int64_t{400} * 1000 * 1000);
-            ClassGrid area = filledGrid(100, 100, 1, 100.0);
-            area.outside.assign(area.values.size(), ClassGrid::outsideArea);
-            for (int row = 40; row < 45; ++row)
-                for (int column = 30; column < 35; ++column)
-                    area.outside[area.index(column, row)] = 0;
+            const ClassGrid area = withAreaOfInterest(filledGrid(100, 100, 1, 100.0), 30, 35, 40, 45);
             const QuadTree tree = QuadTreeBuilder{}.build(area, tinyFov, {});
             QCOMPARE(tree.activeCount(), 250 * 250);
             QCOMPARE(tree.originX, 3000.0);
@@ -482,13 +487,9 @@ class QuadTreeBuilderTest : public QObject {
     void aUniformGridSpansTheTaskArea() {
         const ClassTable grass({{1, "grass", 0, 1.0, 1.0, true}, {2, "rock", 0, 0.0, 1.0, false}});
         // One-metre pixels serve as samples (FOV 1 m, cells of 2 m): an area from an odd pixel, a rock in it.
-        ClassGrid map = filledGrid(400, 400, 1);
+        ClassGrid map = withAreaOfInterest(filledGrid(400, 400, 1), 101, 151, 201, 261);
         map.originX = 1000.0;
         map.originY = 9000.0;
-        map.outside.assign(map.values.size(), ClassGrid::outsideArea);
-        for (int row = 201; row < 261; ++row)
-            for (int column = 101; column < 151; ++column)
-                map.outside[map.index(column, row)] = 0;
         map.values[map.index(120, 230)] = 2;
         // The window: cells from column 50 (even) to 76 and rows 100 to 131, pixels 100-152 and 200-262.
         ClassGrid cut = filledGrid(52, 62, 1);
@@ -526,11 +527,7 @@ class QuadTreeBuilderTest : public QObject {
         // Pixels larger than the cells are sampled at the cells' centres: a 500 m area of a 10 km raster at a
         // 1 m FOV is 250 x 250 cells where the raster's 5000 x 5000 do not fit.
         const BudgetForScope small(std::int64_t{400} * 1000 * 1000);
-        ClassGrid large = filledGrid(100, 100, 1, 100.0);
-        large.outside.assign(large.values.size(), ClassGrid::outsideArea);
-        for (int row = 40; row < 45; ++row)
-            for (int column = 30; column < 35; ++column)
-                large.outside[large.index(column, row)] = 0;
+        ClassGrid large = withAreaOfInterest(filledGrid(100, 100, 1, 100.0), 30, 35, 40, 45);
         const CellGraph area = UniformGridDecomposition({}, GridCellRule::WholeCell).decompose(large, grass);
         QCOMPARE(area.size(), std::size_t{250 * 250});
         QCOMPARE(area.frame().originX, 3000.0);

@@ -24,6 +24,28 @@ using namespace mcpp::io;
 
 namespace {
 
+// A scratch folder of empty files, listed by name.
+class FileFolder {
+  public:
+    [[nodiscard]] std::string path(const std::string& name) const {
+        return folder_.filePath(QString::fromStdString(name)).toStdString();
+    }
+    void touch(const std::string& name) const {
+        QFile file(QString::fromStdString(path(name)));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+    }
+    // The files' names, sorted, space-separated.
+    [[nodiscard]] QString names() const {
+        QStringList names = QDir(folder_.path()).entryList(QDir::Files);
+        names.sort();
+        return names.join(QLatin1Char(' '));
+    }
+    [[nodiscard]] std::string root() const { return folder_.path().toStdString(); }
+
+  private:
+    QTemporaryDir folder_;
+};
+
 // Hand-made paths lie in no cell, so their turns cost nothing.
 const CellGraph noTurnPrice;
 
@@ -531,17 +553,10 @@ class AutopilotMissionTest : public QObject {
     // An export in 12 parts after one in 3, then in 3 again, then whole: each time only its own files stay,
     // whatever the padding of the earlier ones; other robots' and other formats' files are left alone.
     void staleFilesOfAnotherPaddingGo() {
-        QTemporaryDir folder;
-        const std::string whole = folder.filePath(QStringLiteral("robot_1.plan")).toStdString();
-        const auto touch = [&](const std::string& name) {
-            QFile file(folder.filePath(QString::fromStdString(name)));
-            QVERIFY(file.open(QIODevice::WriteOnly));
-        };
-        const auto left = [&] {
-            QStringList names = QDir(folder.path()).entryList(QDir::Files);
-            names.sort();
-            return names.join(QLatin1Char(' '));
-        };
+        const FileFolder folder;
+        const std::string whole = folder.path("robot_1.plan");
+        const auto touch = [&](const std::string& name) { folder.touch(name); };
+        const auto left = [&] { return folder.names(); };
         for (const char* other :
              {"robot_11_part_1.plan", "robot_1_part_1.waypoints", "robot_1.csv", "notes.txt"})
             touch(other);
@@ -593,27 +608,20 @@ class AutopilotMissionTest : public QObject {
         QCOMPARE(robotFileStem(11, 12), std::string("robot_12"));
         QCOMPARE(robotFileStem(4, 100), std::string("robot_005"));
         QCOMPARE(robotFileStem(12, 12), std::string("robot_13")); // past the count: its own width
-        QTemporaryDir folder;
-        const auto touch = [&](const std::string& name) {
-            QFile file(folder.filePath(QString::fromStdString(name)));
-            QVERIFY(file.open(QIODevice::WriteOnly));
-        };
-        const auto left = [&] {
-            QStringList names = QDir(folder.path()).entryList(QDir::Files);
-            names.sort();
-            return names.join(QLatin1Char(' '));
-        };
+        const FileFolder folder;
+        const auto touch = [&](const std::string& name) { folder.touch(name); };
+        const auto left = [&] { return folder.names(); };
         for (int robot = 0; robot < 12; ++robot)
             touch(robotFileStem(robot, 12) + ".plan");
         for (const char* other : {"robot_05_part_1.plan", "robot_05_part_2.plan", "robot_11_sortie_1.plan",
                                   "robot_12_sortie_2_part_1.plan", "robot_1.csv", "robot_one.plan",
                                   "robot_2_notes.plan", "notes.txt"})
             touch(other);
-        removeStaleRobotFiles(folder.path().toStdString(), "plan", 12);
+        removeStaleRobotFiles(folder.root(), "plan", 12);
         QCOMPARE(left().count(QStringLiteral(".plan")), 12 + 6);
         for (int robot = 0; robot < 3; ++robot)
             touch(robotFileStem(robot, 3) + ".plan");
-        removeStaleRobotFiles(folder.path().toStdString(), "plan", 3);
+        removeStaleRobotFiles(folder.root(), "plan", 3);
         QCOMPARE(left(), QStringLiteral("notes.txt robot_1.csv robot_1.plan robot_2.plan robot_2_notes.plan "
                                         "robot_3.plan robot_one.plan"));
     }
