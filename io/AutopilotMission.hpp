@@ -124,12 +124,14 @@ struct MissionSize {
 // went.
 bool removeStaleMissionFiles(const std::string& path, std::size_t parts);
 
-// Removes the files of a per-robot format (".csv", ".plan", ...) an earlier batch run left in `folder` that
-// one of `robots` robots does not write: those of robots it does not have and those whose number is padded to
-// another width ("robot_3.csv" beside "robot_03.csv" of 12), with their parts and sorties.
-void removeStaleRobotFiles(const std::string& folder, const std::string& extension, int robots);
 // Removes the sortie files (and their parts) an earlier export to `path` wrote that are not among this
 // export's `written` sorties (0: none).
 void removeStaleSortieFiles(const std::string& path, std::size_t written);
+
+// Removes the files of a per-robot format (`extension` without its dot: "csv", "plan") an earlier batch run
+// left in `folder` that one of `robots` robots does not write: those of robots it does not have and those
+// whose number is padded to another width ("robot_3.csv" beside "robot_03.csv" of 12), with their parts and
+// sorties.
+void removeStaleRobotFiles(const std::string& folder, const std::string& extension, int robots);
 
 } // namespace mcpp::io
