@@ -462,10 +462,9 @@ namespace {
 std::string numberedPath(const std::string& path, const std::string& tag, std::size_t index,
                          std::size_t count) {
     const std::filesystem::path file(path);
-    std::string number = std::to_string(index + 1);
-    const std::size_t width = std::to_string(std::max(count, index + 1)).size();
-    number.insert(0, width - number.size(), '0');
-    return (file.parent_path() / (file.stem().string() + tag + number + file.extension().string())).string();
+    return (file.parent_path() /
+            (file.stem().string() + tag + paddedNumber(index + 1, count) + file.extension().string()))
+        .string();
 }
 
 bool digits(const std::string& text) {
@@ -528,6 +527,12 @@ bool isWritten(const std::filesystem::path& file, const std::string& path, const
 }
 
 } // namespace
+
+std::string paddedNumber(std::size_t number, std::size_t last) {
+    std::string text = std::to_string(number);
+    const std::size_t width = std::to_string(std::max(number, last)).size();
+    return std::string(width - text.size(), '0') + text;
+}
 
 std::string missionPartPath(const std::string& path, std::size_t part, std::size_t parts) {
     return numberedPath(path, "_part_", part, parts);

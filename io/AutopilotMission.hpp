@@ -108,6 +108,9 @@ struct MissionSize {
 [[nodiscard]] MissionSize missionSize(const CoveragePath& path, const CellGraph& cells,
                                       const VehicleSettings& vehicle, const ExportSettings& settings);
 
+// `number` padded with zeros to the width of `last` ("03" of 12): numbered files a file list sorts in order.
+[[nodiscard]] std::string paddedNumber(std::size_t number, std::size_t last);
+
 // The file of one part of a split mission in `parts`: "out/robot_1.plan" -> "out/robot_1_part_2.plan" (part
 // from 0), the number padded with zeros to the width of `parts` ("robot_1_part_02.plan" of 12) so that a file
 // list sorts the parts in the order they are flown.

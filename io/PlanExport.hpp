@@ -86,10 +86,8 @@ struct ExportContext {
 // "robot_2", its number padded with zeros to the width of the last one's ("robot_02" of 12) so that a file
 // list sorts the robots in order.
 [[nodiscard]] inline std::string robotFileStem(int robot, int robots) {
-    std::string number = std::to_string(robotNumber(robot));
-    const std::size_t width = std::to_string(std::max(robots, robotNumber(robot))).size();
-    number.insert(0, width - number.size(), '0');
-    return "robot_" + number;
+    return "robot_" + paddedNumber(static_cast<std::size_t>(robotNumber(robot)),
+                                   static_cast<std::size_t>(std::max(robots, 0)));
 }
 
 // RFC 7946 GeoJSON (WGS84) with the batch contract's kinds and properties.
