@@ -93,7 +93,7 @@ std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const 
                                      fixed(grid.minY()) + " to " + fixed(grid.originY) + ")"};
     if (grid.isOutside(pixel->column, pixel->row))
         return StartPointProblem{Kind::StartOutsideArea,
-                                 named + " is outside the task area: " +
+                                 named + " is not in the task area: " +
                                      whyOutside(grid.outside[grid.index(pixel->column, pixel->row)])};
     const std::int32_t value = grid.valueAt(pixel->column, pixel->row);
     const LandCoverClass* landCover = classes.find(value);

@@ -60,7 +60,7 @@ void PlanningRun::takeOffAt(int robot, MapPoint given, MapPoint pathStart, const
     const auto index = static_cast<std::size_t>(robot);
     takeOffs_.resize(starts_.size());
     takeOffs_[index] = given;
-    // The problem's detail begins with the point: "(x, y) is outside the task area: ...".
+    // The problem's detail begins with the point: "(x, y) is not in the task area: ...".
     const std::string point = describePoint(given);
     const std::string what =
         why.rfind(point, 0) == 0 ? why.substr(point.size()) : " is not on a free cell (" + why + ")";

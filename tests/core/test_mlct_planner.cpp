@@ -193,13 +193,13 @@ class MlctPlannerTest : public QObject {
         problem.grid.outside.assign(problem.grid.values.size(), 0);
         problem.grid.outside[problem.grid.index(0, 0)] = ClassGrid::outsideArea;
         expectError(problem, PlanningError::Kind::StartOutsideArea,
-                    "is outside the task area: it lies outside the area of interest");
+                    "is not in the task area: it lies outside the area of interest");
         problem.grid.outside[problem.grid.index(0, 0)] = ClassGrid::inNoGoZone;
         expectError(problem, PlanningError::Kind::StartOutsideArea,
-                    "is outside the task area: it lies in a no-go zone");
+                    "is not in the task area: it lies in a no-go zone");
         problem.grid.outside[problem.grid.index(0, 0)] = ClassGrid::outsideNodata;
         expectError(problem, PlanningError::Kind::StartOutsideArea,
-                    "is outside the task area: the raster has no land cover there (nodata)");
+                    "is not in the task area: the raster has no land cover there (nodata)");
     }
 
     // The raster spans x 500000 to 500100, y 3999900 to 4000000: how far off and which way, to the

@@ -79,7 +79,7 @@ class TakeOffTest : public QObject {
         QCOMPARE(note->severity, IssueSeverity::Information);
         QVERIFY2(note->message.starts_with("robot 1 takes off at its start " +
                                            describePoint(problem.starts[0]) +
-                                           ", which is outside the task area: it lies outside the area of "
+                                           ", which is not in the task area: it lies outside the area of "
                                            "interest; it flies "),
                  note->message.c_str());
         QVERIFY(issueCoded(plan, "start-moved") == nullptr); // not a warning: nothing was moved
