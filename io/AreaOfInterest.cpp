@@ -125,9 +125,51 @@ Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, Ow
     return count;
 }
 
-// 1 where a polygon covers the pixel's centre, on the raster's grid.
-Result<std::vector<std::uint8_t>> rasterise(const std::string& path, const LoadedRaster& raster) {
-    using Mask = Result<std::vector<std::uint8_t>>;
+// The polygons' area in square metres, and how much of it lies off the raster; both 0 where GDAL has no
+// GEOS to measure overlaps with, or the polygons are too broken to join.
+struct AreaOffTheRaster {
+    double drawn = 0.0;
+    double off = 0.0;
+};
+
+AreaOffTheRaster areaOffTheRaster(const OwnedGeometries& polygons, const ClassGrid& grid) {
+    if (!OGRGeometryFactory::haveGEOS())
+        return {};
+    OGRMultiPolygon all;
+    for (const OGRGeometry* geometry : polygons.geometries) {
+        if (const auto* several = dynamic_cast<const OGRMultiPolygon*>(geometry))
+            for (const OGRPolygon* polygon : *several)
+                all.addGeometry(polygon);
+        else
+            all.addGeometry(geometry);
+    }
+    const QuietGdalErrors quiet;
+    const std::unique_ptr<OGRGeometry> joined(all.UnionCascaded()); // overlapping polygons count once
+    if (!joined)
+        return {};
+    OGRLinearRing corners;
+    corners.addPoint(grid.originX, grid.minY());
+    corners.addPoint(grid.maxX(), grid.minY());
+    corners.addPoint(grid.maxX(), grid.originY);
+    corners.addPoint(grid.originX, grid.originY);
+    corners.closeRings();
+    OGRPolygon map;
+    map.addRing(&corners);
+    const std::unique_ptr<OGRGeometry> onTheMap(joined->Intersection(&map));
+    const double drawn = OGR_G_Area(OGRGeometry::ToHandle(joined.get()));
+    const double kept = onTheMap ? OGR_G_Area(OGRGeometry::ToHandle(onTheMap.get())) : drawn;
+    return {drawn, std::max(0.0, drawn - kept)};
+}
+
+// What an area file lays on the raster: 1 where a polygon covers the pixel's centre, on the raster's grid,
+// and how much of the polygons' area lies off the raster.
+struct LaidArea {
+    std::vector<std::uint8_t> mask;
+    AreaOffTheRaster area;
+};
+
+Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster) {
+    using Mask = Result<LaidArea>;
     OwnedGeometries polygons;
     if (auto read = readPolygons(path, raster, polygons); !read)
         return Mask::failure(read.error());
@@ -151,7 +193,7 @@ Result<std::vector<std::uint8_t>> rasterise(const std::string& path, const Loade
                                            grid.rows, GDT_Byte, 0, 0, nullptr) != CE_None)
         return Mask::failure(path + ": its polygons could not be laid on the raster" +
                              QuietGdalErrors::detail());
-    return mask;
+    return LaidArea{std::move(mask), areaOffTheRaster(polygons, grid)};
 }
 
 } // namespace
@@ -165,17 +207,19 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
         grid.outside.assign(grid.values.size(), 0);
     std::vector<std::uint8_t> include;
     std::vector<std::uint8_t> exclude;
+    AreaOffTheRaster includeArea;
     if (!includePath.empty()) {
-        auto mask = rasterise(includePath, raster);
-        if (!mask)
-            return Status::failure(mask.error());
-        include = std::move(mask.value());
+        auto laid = rasterise(includePath, raster);
+        if (!laid)
+            return Status::failure(laid.error());
+        include = std::move(laid.value().mask);
+        includeArea = laid.value().area;
     }
     if (!excludePath.empty()) {
-        auto mask = rasterise(excludePath, raster);
-        if (!mask)
-            return Status::failure(mask.error());
-        exclude = std::move(mask.value());
+        auto laid = rasterise(excludePath, raster);
+        if (!laid)
+            return Status::failure(laid.error());
+        exclude = std::move(laid.value().mask);
     }
     std::map<std::int32_t, std::int64_t> counts;
     std::int64_t inside = 0;
@@ -202,6 +246,13 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
     const double pixelArea = grid.pixelWidth * grid.pixelHeight;
     raster.warnings.push_back("area of interest: planning on " +
                               formatArea(static_cast<double>(inside) * pixelArea) + " of the map");
+    // More than a pixel's worth off the map is worth saying: the user drew it to be covered.
+    if (includeArea.off > pixelArea)
+        raster.warnings.push_back("area of interest: " + formatArea(includeArea.off) + " of the " +
+                                  formatArea(includeArea.drawn) + " in " +
+                                  std::filesystem::path(includePath).filename().string() +
+                                  " lies off the raster and is left out (a larger raster, or a mosaic "
+                                  "of tiles, covers it)");
     return {};
 }
 

@@ -1032,8 +1032,12 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
     settingsModified_ = true;
     updateTitle();
     updateActions();
-    QString message = wholeMap ? tr("Planning on the whole map again.")
-                               : asSentence(warnings.empty() ? std::string() : warnings.back());
+    // What the area leaves to plan on, and how much of it lies off the raster.
+    QStringList areaNotes;
+    for (const std::string& warning : warnings)
+        if (warning.starts_with("area of interest"))
+            areaNotes << asSentence(warning);
+    QString message = wholeMap ? tr("Planning on the whole map again.") : areaNotes.join(QLatin1Char(' '));
     // Starts the new area leaves out are kept, to be moved: say so now rather than at Plan.
     QStringList outside;
     const std::vector<bool> flying = io::flyingRobots(document_->mission());

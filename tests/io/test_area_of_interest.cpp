@@ -102,6 +102,29 @@ class AreaOfInterestTest : public QObject {
         QCOMPARE(outsideFlags + insidePixels(raster), static_cast<std::int64_t>(raster.grid.values.size()));
     }
 
+    // An area drawn partly off the raster is cut to it, and a warning says how much of it was left out.
+    void anAreaPartlyOffTheRasterSaysHowMuchIsLeftOut() {
+        QTemporaryDir folder;
+        const QString area = folder.filePath("area.geojson");
+        LoadedRaster raster = zion();
+        // 10 km x 5 km whose western half lies west of the raster's edge.
+        const double west = raster.grid.originX - 5000.0;
+        QVERIFY(writeText(
+            area, rectangleJson(west, 4130000, west + 10000.0, 4135000, "urn:ogc:def:crs:EPSG::26912")));
+        QVERIFY(applyAreaOfInterest(raster, area.toStdString(), {}).ok());
+        const std::string& warning = raster.warnings.back();
+        QVERIFY2(warning.find("area of interest: 25 km2 of the 50 km2 in area.geojson lies off the raster") !=
+                     std::string::npos,
+                 warning.c_str());
+        // Wholly on the raster: no such warning.
+        LoadedRaster whole = zion();
+        QVERIFY(
+            writeText(area, rectangleJson(310000, 4130000, 320000, 4135000, "urn:ogc:def:crs:EPSG::26912")));
+        QVERIFY(applyAreaOfInterest(whole, area.toStdString(), {}).ok());
+        for (const std::string& each : whole.warnings)
+            QVERIFY2(each.find("off the raster") == std::string::npos, each.c_str());
+    }
+
     // Every polygon of a file counts, and drawn polygons written by writeAreaPolygons come back: two no-go
     // zones, the second added to a file holding the first.
     void everyPolygonOfAFileCounts() {
