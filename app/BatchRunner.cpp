@@ -809,6 +809,7 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
 void BatchRunner::printComparisonRows(const std::vector<io::ComparisonRow>& rows) const {
     const std::vector<std::size_t> order = io::rankedRows(rows);
     const double most = io::mostCovered(rows);
+    const std::vector<double> againstFirst = io::timesTheFirst(rows);
     const io::ComparisonRow* first = nullptr;
     int rank = 0;
     for (const std::size_t index : order) {
@@ -831,9 +832,8 @@ void BatchRunner::printComparisonRows(const std::vector<io::ComparisonRow>& rows
         // A plan covering less is not timed against one covering the most: smaller, not quicker.
         if (first == nullptr)
             first = &row;
-        else if (io::doneAfterSeconds(*first) > 0.0 && !io::coversLessThanMost(row, most))
-            output_ << " (" << formatNumber(io::doneAfterSeconds(row) / io::doneAfterSeconds(*first), 2)
-                    << " x " << first->planner << "'s)";
+        else if (againstFirst[index] > 0.0)
+            output_ << " (" << formatNumber(againstFirst[index], 2) << " x " << first->planner << "'s)";
         if (inTheField)
             output_ << ", makespan " << formatDuration(row.metrics.makespanSeconds);
         output_ << ", ratio " << formatNumber(row.metrics.ratio, 3) << " to its own bound, "

@@ -70,14 +70,15 @@ std::string outcomeName(ComparisonRow::Outcome outcome) {
 
 Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::string& path) {
     const std::vector<std::string> stages = stageNames(rows);
-    std::string text =
-        "planner,outcome,rank,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
-        "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
-        "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread";
+    std::string text = "planner,outcome,rank,time_to_first,makespan_s,lower_bound_s,ratio,total_length_m,"
+                       "turns,covered_fraction,"
+                       "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
+                       "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread";
     for (const std::string& stage : stages)
         text += "," + stageColumn(stage);
     text += ",message\n";
     const std::vector<int> ranks = ranksOf(rows);
+    const std::vector<double> againstFirst = timesTheFirst(rows);
     for (std::size_t index = 0; index < rows.size(); ++index) {
         const ComparisonRow& row = rows[index];
         const PlanMetrics& metrics = row.metrics;
@@ -85,6 +86,7 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
         const auto figure = [&](double value) { return planned ? formatShortest(value) : std::string(); };
         text += internal::quoteCsvField(row.planner) + "," + outcomeName(row.outcome) + "," +
                 (planned ? std::to_string(ranks[index]) : std::string()) + "," +
+                (againstFirst[index] > 0.0 ? formatShortest(againstFirst[index]) : std::string()) + "," +
                 figure(metrics.makespanSeconds) + "," + figure(metrics.lowerBoundSeconds) + "," +
                 figure(metrics.ratio) + "," + figure(metrics.totalLengthMetres()) + "," +
                 (planned ? std::to_string(metrics.totalTurns()) : std::string()) + "," +
@@ -108,6 +110,7 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
     JsonValue root = JsonValue::object();
     JsonValue& planners = root.add("planners", JsonValue::array());
     const std::vector<int> ranks = ranksOf(rows);
+    const std::vector<double> againstFirst = timesTheFirst(rows);
     for (std::size_t index = 0; index < rows.size(); ++index) {
         const ComparisonRow& row = rows[index];
         JsonValue& item = planners.push(JsonValue::object());
@@ -119,6 +122,8 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
             continue;
         const PlanMetrics& metrics = row.metrics;
         item.add("rank", ranks[index]);
+        if (againstFirst[index] > 0.0)
+            item.add("time_to_first", againstFirst[index]);
         item.add("makespan_s", metrics.makespanSeconds);
         item.add("lower_bound_s", metrics.lowerBoundSeconds);
         item.add("ratio", metrics.ratio);

@@ -73,4 +73,19 @@ std::vector<int> ranksOf(const std::vector<ComparisonRow>& rows) {
     return ranks;
 }
 
+std::vector<double> timesTheFirst(const std::vector<ComparisonRow>& rows) {
+    std::vector<double> times(rows.size(), 0.0);
+    const std::vector<std::size_t> order = rankedRows(rows);
+    if (order.empty() || !planned(rows[order.front()]))
+        return times;
+    const double first = doneAfterSeconds(rows[order.front()]);
+    const double most = mostCovered(rows);
+    if (first <= 0.0)
+        return times;
+    for (std::size_t index = 0; index < rows.size(); ++index)
+        if (planned(rows[index]) && !coversLessThanMost(rows[index], most))
+            times[index] = doneAfterSeconds(rows[index]) / first;
+    return times;
+}
+
 } // namespace mcpp::io

@@ -29,4 +29,9 @@ inline constexpr double coverageShortfall = 0.005;
 // Each row's place in that order, from 1; 0 for a row that did not plan.
 [[nodiscard]] std::vector<int> ranksOf(const std::vector<ComparisonRow>& rows);
 
+// Each row's time done divided by the first-ranked plan's: the one figure that compares plans, where each
+// ratio is to the plan's own bound (its own cells and turns). 0 where the row did not plan or covers less
+// than the most (smaller, not slower), or the first is done at once.
+[[nodiscard]] std::vector<double> timesTheFirst(const std::vector<ComparisonRow>& rows);
+
 } // namespace mcpp::io

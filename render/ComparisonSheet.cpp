@@ -123,7 +123,7 @@ void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QR
 
 } // namespace
 
-ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan) {
+ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan, const QString& timed) {
     ComparisonPanel panel;
     panel.title = QString::fromStdString(row.planner);
     panel.plan = plan;
@@ -131,8 +131,8 @@ ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan
         panel.caption << QString::fromStdString(io::outcomeName(row.outcome) + ": " + row.message);
         return panel;
     }
-    panel.caption << QStringLiteral("makespan %1, %2 x the lower bound")
-                         .arg(QString::fromStdString(formatDuration(row.metrics.makespanSeconds)))
+    panel.caption << QStringLiteral("makespan %1%2, %3 x its own lower bound")
+                         .arg(QString::fromStdString(formatDuration(row.metrics.makespanSeconds)), timed)
                          .arg(row.metrics.ratio, 0, 'f', 3)
                   << QStringLiteral("%1 turns, covered %2 %, planned in %3 s")
                          .arg(row.metrics.totalTurns())
@@ -144,11 +144,20 @@ ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan
 std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::ComparisonRow>& rows,
                                                     const std::vector<const Plan*>& plans) {
     const std::vector<int> ranks = io::ranksOf(rows);
+    const std::vector<double> againstFirst = io::timesTheFirst(rows);
+    const std::vector<std::size_t> order = io::rankedRows(rows);
     std::vector<ComparisonPanel> panels;
-    for (const std::size_t index : io::rankedRows(rows)) {
-        ComparisonPanel panel = comparisonPanelOf(rows[index], plans[index]);
+    for (const std::size_t index : order) {
+        // The figure that compares plans, beside the makespan; each ratio is to the plan's own bound.
+        const QString timed = ranks[index] > 1 && againstFirst[index] > 0.0
+                                  ? QStringLiteral(" (%1 x %2's)")
+                                        .arg(againstFirst[index], 0, 'f', 2)
+                                        .arg(QString::fromStdString(rows[order.front()].planner))
+                                  : QString();
+        ComparisonPanel panel = comparisonPanelOf(rows[index], plans[index], timed);
         if (ranks[index] > 0)
             panel.title = QStringLiteral("%1. %2").arg(ranks[index]).arg(panel.title);
+
         panels.push_back(std::move(panel));
     }
     return panels;

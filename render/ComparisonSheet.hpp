@@ -20,8 +20,10 @@ struct ComparisonPanel {
     const Plan* plan = nullptr;
 };
 
-// A planner's panel: its name, and its key figures or why it has no plan.
-[[nodiscard]] ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan);
+// A planner's panel: its name, and its key figures or why it has no plan; timed follows the makespan
+// (" (1.16 x darp's)").
+[[nodiscard]] ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan,
+                                                const QString& timed = {});
 
 // Every row's panel in reading order (io::rankedRows), each planned one's title led by its rank: the sheet
 // reads as the summary and the table do. plans[i] is rows[i]'s plan or null.

@@ -21,7 +21,7 @@ namespace {
 
 // The figures that decide between planners first, so that a narrow dock shows them; comparison.csv and the
 // sheet below carry the rest.
-enum Column { Name, Covered, Makespan, Home, Turns, Ratio, Planning, Outcome, Columns };
+enum Column { Name, Covered, Makespan, Home, AgainstFirst, Turns, Ratio, Planning, Outcome, Columns };
 
 constexpr int coversLessRole = Qt::UserRole + 1;
 
@@ -85,6 +85,9 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
         {tr("Home h"),
          tr("Where flights split the missions: when the last robot is home, its flights and the "
             "turnarounds between them included, in hours")},
+        {tr("x 1st"),
+         tr("Time done divided by the first plan's (in bold): how much longer the team waits with this one; "
+            "none for a plan covering less than the most")},
         {tr("Turns"), tr("Turns of all robots together")},
         {tr("Ratio"),
          tr("Makespan divided by the plan's own lower bound, which counts its own cells and turns: how "
@@ -160,6 +163,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     bool inTheField = false; // some plan's robots are home later than their paths end
     const double most = io::mostCovered(outcome.rows);
     const std::vector<int> ranks = io::ranksOf(outcome.rows);
+    const std::vector<double> againstFirst = io::timesTheFirst(outcome.rows);
     for (std::size_t i = 0; i < outcome.rows.size(); ++i) {
         const io::ComparisonRow& row = outcome.rows[i];
         const auto r = static_cast<int>(i);
@@ -201,6 +205,8 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
             table_->setItem(r, Home, timeItem(metrics.fieldMakespanSeconds, coversLess));
             inTheField = true;
         }
+        if (againstFirst[i] > 0.0)
+            table_->setItem(r, AgainstFirst, numberItem(againstFirst[i], 2));
         table_->setItem(r, Turns, numberItem(metrics.totalTurns(), 0));
         table_->setItem(r, Planning, numberItem(row.planningMilliseconds / 1000.0, 2));
     }

@@ -45,6 +45,7 @@ class TestComparisonRanking : public QObject {
     void withinTheShortfallCoveringLessIsNoPenalty();
     void timeInTheFieldDecidesWhereFlightsSplitMissions();
     void ranksSkipRowsThatDidNotPlan();
+    void eachPlanIsTimedAgainstTheFirst();
 };
 
 // A battery planner that covers a quarter of the land in less time than the others is last of the planned,
@@ -100,6 +101,18 @@ void TestComparisonRanking::ranksSkipRowsThatDidNotPlan() {
         unplannedRow("cppied", ComparisonRow::Outcome::Failed), plannedRow("mcpp-mlct", 0.99, 200.0)};
     QCOMPARE(io::ranksOf(rows), (std::vector<int>{0, 2, 0, 1}));
     QCOMPARE(io::ranksOf({}), std::vector<int>{});
+}
+
+// One figure across plans: each one's time against the first's, none for a plan covering less (smaller, not
+// slower) or one that did not plan.
+void TestComparisonRanking::eachPlanIsTimedAgainstTheFirst() {
+    const std::vector<ComparisonRow> rows{
+        unplannedRow("spiral-stc", ComparisonRow::Outcome::Skipped), plannedRow("darp", 0.999, 150000.0),
+        plannedRow("wavefront-battery", 0.264, 90000.0), plannedRow("mcpp-mlct", 0.999, 125000.0)};
+    QCOMPARE(io::timesTheFirst(rows), (std::vector<double>{0.0, 1.2, 0.0, 1.0}));
+    QCOMPARE(io::timesTheFirst({unplannedRow("cppied", ComparisonRow::Outcome::Failed)}),
+             std::vector<double>{0.0});
+    QCOMPARE(io::timesTheFirst({}), std::vector<double>{});
 }
 
 QTEST_APPLESS_MAIN(TestComparisonRanking)

@@ -9,9 +9,10 @@ using namespace mcpp;
 
 namespace {
 
-constexpr int coveredColumn = 1; // Planner, Covered %, Hours, Home h, Turns, Ratio, Plan s, State
+constexpr int coveredColumn = 1; // Planner, Covered %, Hours, Home h, x 1st, Turns, Ratio, Plan s, State
 constexpr int homeColumn = 3;
-constexpr int stateColumn = 7;
+constexpr int againstFirstColumn = 4;
+constexpr int stateColumn = 8;
 
 io::ComparisonRow plannedRow(const std::string& planner, double ratio, double makespanSeconds) {
     io::ComparisonRow row;
@@ -124,6 +125,11 @@ class ComparisonPanelTest : public QObject {
         QCOMPARE(panel.rowOfPlanner("darp"), 1);
         QCOMPARE(panel.rowOfPlanner("spiral-stc"), 2);
         QVERIFY(table->item(0, 0)->font().bold()); // the quickest, spiral-stc, covers less
+        // Each plan timed against the first, the one figure across plans; none for the smaller plan.
+        QCOMPARE(table->horizontalHeaderItem(againstFirstColumn)->text(), QStringLiteral("x 1st"));
+        QCOMPARE(table->item(0, againstFirstColumn)->data(Qt::DisplayRole).toDouble(), 1.0);
+        QCOMPARE(table->item(1, againstFirstColumn)->data(Qt::DisplayRole).toDouble(), 1.25);
+        QCOMPARE(table->item(2, againstFirstColumn), nullptr);
         table->sortByColumn(homeColumn - 1, Qt::DescendingOrder);
         QCOMPARE(panel.rowOfPlanner("spiral-stc"), 0); // reversed as a whole: covering less, now first
         QCOMPARE(panel.rowOfPlanner("darp"), 1);
