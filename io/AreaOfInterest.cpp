@@ -4,6 +4,7 @@
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <gdal_alg.h>
@@ -132,11 +133,10 @@ struct AreaOffTheRaster {
     double off = 0.0;
 };
 
-AreaOffTheRaster areaOffTheRaster(const OwnedGeometries& polygons, const ClassGrid& grid) {
-    if (!OGRGeometryFactory::haveGEOS())
-        return {};
+// The polygons' union, overlaps counted once; null where GEOS cannot join them.
+std::unique_ptr<OGRGeometry> unionOf(const std::vector<const OGRGeometry*>& geometries) {
     OGRMultiPolygon all;
-    for (const OGRGeometry* geometry : polygons.geometries) {
+    for (const OGRGeometry* geometry : geometries) {
         if (const auto* several = dynamic_cast<const OGRMultiPolygon*>(geometry))
             for (const OGRPolygon* polygon : *several)
                 all.addGeometry(polygon);
@@ -144,8 +144,28 @@ AreaOffTheRaster areaOffTheRaster(const OwnedGeometries& polygons, const ClassGr
             all.addGeometry(geometry);
     }
     const QuietGdalErrors quiet;
-    const std::unique_ptr<OGRGeometry> joined(all.UnionCascaded()); // overlapping polygons count once
-    if (!joined)
+    return std::unique_ptr<OGRGeometry>(all.UnionCascaded());
+}
+
+double areaOf(const OGRGeometry* geometry) {
+    return geometry != nullptr ? OGR_G_Area(OGRGeometry::ToHandle(const_cast<OGRGeometry*>(geometry))) : 0.0;
+}
+
+AreaOffTheRaster areaOffTheRaster(const OwnedGeometries& polygons, const std::vector<std::uint8_t>& mask,
+                                  const ClassGrid& grid) {
+    if (!OGRGeometryFactory::haveGEOS())
+        return {};
+    // Only polygons reaching past the raster's edge can lie off it: joining thousands of parcels wholly on
+    // it would take a second for nothing.
+    std::vector<const OGRGeometry*> crossing;
+    for (const OGRGeometry* geometry : polygons.geometries) {
+        OGREnvelope envelope;
+        geometry->getEnvelope(&envelope);
+        if (envelope.MinX < grid.originX || envelope.MaxX > grid.maxX() || envelope.MinY < grid.minY() ||
+            envelope.MaxY > grid.originY)
+            crossing.push_back(geometry);
+    }
+    if (crossing.empty())
         return {};
     OGRLinearRing corners;
     corners.addPoint(grid.originX, grid.minY());
@@ -155,10 +175,15 @@ AreaOffTheRaster areaOffTheRaster(const OwnedGeometries& polygons, const ClassGr
     corners.closeRings();
     OGRPolygon map;
     map.addRing(&corners);
-    const std::unique_ptr<OGRGeometry> onTheMap(joined->Intersection(&map));
-    const double drawn = OGR_G_Area(OGRGeometry::ToHandle(joined.get()));
-    const double kept = onTheMap ? OGR_G_Area(OGRGeometry::ToHandle(onTheMap.get())) : drawn;
-    return {drawn, std::max(0.0, drawn - kept)};
+    const std::unique_ptr<OGRGeometry> reaching = unionOf(crossing);
+    if (!reaching)
+        return {};
+    const QuietGdalErrors quiet;
+    const std::unique_ptr<OGRGeometry> offTheMap(reaching->Difference(&map));
+    // The part on the raster is what the mask holds, to the pixel.
+    const auto onTheMap = static_cast<double>(std::count(mask.begin(), mask.end(), std::uint8_t{1}));
+    const double off = areaOf(offTheMap.get());
+    return {off + onTheMap * grid.pixelWidth * grid.pixelHeight, off};
 }
 
 // What an area file lays on the raster: 1 where a polygon covers the pixel's centre, on the raster's grid,
@@ -193,7 +218,8 @@ Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster) 
                                            grid.rows, GDT_Byte, 0, 0, nullptr) != CE_None)
         return Mask::failure(path + ": its polygons could not be laid on the raster" +
                              QuietGdalErrors::detail());
-    return LaidArea{std::move(mask), areaOffTheRaster(polygons, grid)};
+    AreaOffTheRaster area = areaOffTheRaster(polygons, mask, grid);
+    return LaidArea{std::move(mask), area};
 }
 
 } // namespace
