@@ -262,11 +262,11 @@ void BatchRunner::loadRaster() {
     if (const io::Status area = io::applyMissionArea(raster_, mission_, missionPath); !area)
         badInput(areaGivenIn(area.error()) +
                  "area of interest: " + area.error()); // the message names the polygon file
-    // What the area leaves to plan ("planning on 4.04 km2 of the map") is news, not a warning.
-    for (std::size_t i = rasterWarnings; i < raster_.warnings.size(); ++i)
-        pendingNotes_.push_back(raster_.warnings[i]);
+    // What the area leaves to plan ("planning on 4.04 km2 of the map", said first) is news, not a warning;
+    // a part of it off the raster is.
+    for (std::size_t i = 0; i < raster_.warnings.size(); ++i)
+        (i == rasterWarnings ? pendingNotes_ : pendingWarnings_).push_back(raster_.warnings[i]);
     raster_.warnings.resize(rasterWarnings);
-    pendingWarnings_.insert(pendingWarnings_.end(), raster_.warnings.begin(), raster_.warnings.end());
 }
 
 // Where the polygon file a message names was given: its flag, or the mission file and its key.
@@ -404,6 +404,9 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     context.drawImage = render::planImageWriter(planImageSide);
     context.robotNames = io::robotNames(mission_);
     context.vehicles = io::robotVehicles(mission_);
+    context.inputWarnings = inputWarnings_;
+    context.inputWarnings.insert(context.inputWarnings.end(), plannerWarnings_.begin(),
+                                 plannerWarnings_.end());
     const int robots = static_cast<int>(plan.paths.size());
 
     struct Output {
@@ -698,6 +701,7 @@ void BatchRunner::executeComparison() {
             const bool ownPeak = restartPeakMemory();
             mission_.planner = comparedPlanner(name);
             const PlanningProblem problem = prepareProblem();
+            plannerWarnings_ = pendingWarnings_;
             for (const auto& warning : pendingWarnings_)
                 warn(warning);
             pendingWarnings_.clear();
@@ -882,6 +886,7 @@ void BatchRunner::flushPending() {
     pendingNotes_.clear();
     for (const auto& warning : pendingWarnings_)
         warn(warning);
+    inputWarnings_.insert(inputWarnings_.end(), pendingWarnings_.begin(), pendingWarnings_.end());
     pendingWarnings_.clear();
 }
 

@@ -93,6 +93,8 @@ class BatchRunner {
     std::vector<std::optional<MapPoint>> chargers_;
     std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
     std::vector<std::string> pendingNotes_;    // likewise
+    std::vector<std::string> inputWarnings_;   // said before planning, for report.json
+    std::vector<std::string> plannerWarnings_; // likewise, of the planner --compare runs
     std::string fieldTimeNote_;                // with the summary, when missions are written in parts
     std::string plannerPrefix_;                // "darp: " before notes and warnings while --compare runs it
     std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan

@@ -36,6 +36,9 @@ struct ExportContext {
     ImageWriter drawImage = {};
     // What the whole run took so far (batch mode: read_raster, plan, write_outputs), for report.json.
     std::vector<std::pair<std::string, double>> processMilliseconds = {};
+    // What the inputs gave to warn of before planning (an area reaching past the raster, classes a preset
+    // lacks), for report.json beside the plan's own warnings.
+    std::vector<std::string> inputWarnings = {};
     // Set from another thread to stop a writer at its next feature, row or file; it then fails with
     // "cancelled" and leaves no file behind.
     const std::atomic<bool>* cancelRequested = nullptr;

@@ -203,9 +203,17 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
             process.add(step, milliseconds);
     }
     JsonValue& warnings = root.add("warnings", JsonValue::array());
+    for (const std::string& warning : context.inputWarnings)
+        warnings.push(warning);
     for (const std::string& warning : context.plan.warnings())
         warnings.push(warning);
     JsonValue& issues = root.add("issues", JsonValue::array());
+    for (const std::string& warning : context.inputWarnings) {
+        JsonValue& item = issues.push(JsonValue::object());
+        item.add("severity", "warning");
+        item.add("code", "input");
+        item.add("message", warning);
+    }
     for (const PlanIssue& issue : context.plan.issues) {
         JsonValue& item = issues.push(JsonValue::object());
         item.add("severity", issue.severity == IssueSeverity::Warning ? "warning" : "information");

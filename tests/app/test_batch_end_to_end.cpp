@@ -21,8 +21,10 @@
 #include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <gdal_priv.h>
 #include <memory>
 
@@ -97,6 +99,7 @@ class TestBatchEndToEnd : public QObject {
     void missionFileWritesEveryOutput();
     void flagMissionWithLongitudeLatitudeStarts();
     void rerunWithFewerRobotsRemovesTheirFiles();
+    void anAreaPastTheRastersEdgeIsAWarningInTheReport();
     void missingAsObstacleTurnsTheErrorIntoAWarning();
     void readmeSampleRuns();
     void missionsAboveTheItemLimitAreSplit();
@@ -713,6 +716,42 @@ void TestBatchEndToEnd::flagMissionWithLongitudeLatitudeStarts() {
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.standardError.isEmpty(), qPrintable(run.standardError));
     QVERIFY2(run.standardOutput.isEmpty(), qPrintable(run.standardOutput));
+}
+
+// An area drawn partly off the raster: what it leaves to plan is news on standard output, the part off the
+// raster a warning on standard error and in report.json, where a script reading the outputs finds it.
+void TestBatchEndToEnd::anAreaPastTheRastersEdgeIsAWarningInTheReport() {
+    const QString area = scratch_.filePath("past-the-edge.geojson");
+    QFile file(area);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    // 200 x 200 m, its eastern 100 m past the raster's edge at x 431480.
+    file.write("{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\",\"properties\":{\"name\":"
+               "\"urn:ogc:def:crs:EPSG::32633\"}},\"features\":[{\"type\":\"Feature\",\"properties\":{},"
+               "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[[[431380,5301050],[431580,5301050],"
+               "[431580,5301250],[431380,5301250],[431380,5301050]]]}}]}");
+    file.close();
+    const QString out = scratch_.filePath("past-the-edge");
+    auto run = runMcpp(syntheticFlags() << "--area" << area << "--start"
+                                        << "431420,5301100"
+                                        << "--out" << out);
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    QVERIFY2(run.standardOutput.contains("mcpp: area of interest: planning on "),
+             qPrintable(run.standardOutput));
+    const QString warning = QStringLiteral(
+        "area of interest: 2 ha of the 4 ha in past-the-edge.geojson lies off the raster and is left out");
+    QVERIFY2(run.standardError.contains("mcpp: warning: " + warning), qPrintable(run.standardError));
+    const auto report = readJsonObject(out + "/report.json");
+    const auto said = [&](const QJsonArray& list, const std::function<QString(const QJsonValue&)>& text) {
+        return std::any_of(list.begin(), list.end(),
+                           [&](const QJsonValue& item) { return text(item).contains(warning); });
+    };
+    QVERIFY(said(report.value("warnings").toArray(), [](const QJsonValue& item) { return item.toString(); }));
+    QVERIFY(said(report.value("issues").toArray(), [](const QJsonValue& item) {
+        const QJsonObject issue = item.toObject();
+        return issue.value("code").toString() == "input" && issue.value("severity").toString() == "warning"
+                   ? issue.value("message").toString()
+                   : QString();
+    }));
 }
 
 void TestBatchEndToEnd::rerunWithFewerRobotsRemovesTheirFiles() {
