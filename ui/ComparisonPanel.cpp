@@ -24,24 +24,33 @@ namespace {
 enum Column { Name, Covered, Makespan, Home, AgainstFirst, Turns, Ratio, Planning, Outcome, Columns };
 
 constexpr int coversLessRole = Qt::UserRole + 1;
+constexpr int numberRole = Qt::UserRole + 2;
+
+// A figure shown with all its decimals (1.00 beside 1.02, not 1), sorted by its value.
+class NumberItem : public QTableWidgetItem {
+  public:
+    bool operator<(const QTableWidgetItem& other) const override {
+        return data(numberRole).toDouble() < other.data(numberRole).toDouble();
+    }
+};
 
 // A time that sorts plans covering less than the most (io::coversLessThanMost) after the others (ascending; a
 // descending sort turns the whole order round): the soonest done among those that do the whole job comes
 // first.
-class TimeItem : public QTableWidgetItem {
+class TimeItem : public NumberItem {
   public:
     bool operator<(const QTableWidgetItem& other) const override {
         const bool coversLess = data(coversLessRole).toBool();
         if (coversLess != other.data(coversLessRole).toBool())
             return !coversLess;
-        return QTableWidgetItem::operator<(other);
+        return NumberItem::operator<(other);
     }
 };
 
-template <typename Item = QTableWidgetItem> QTableWidgetItem* numberItem(double value, int decimals) {
+template <typename Item = NumberItem> QTableWidgetItem* numberItem(double value, int decimals) {
     auto* item = new Item;
-    // A number, not text, so that sorting is numeric; rounded for display.
-    item->setData(Qt::DisplayRole, QString::number(value, 'f', decimals).toDouble());
+    item->setData(Qt::DisplayRole, QString::number(value, 'f', decimals));
+    item->setData(numberRole, value);
     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     return item;
 }
@@ -79,8 +88,8 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
     const std::vector<std::pair<QString, QString>> headings{
         {tr("Planner"), tr("The planner's name")},
         {tr("Covered %"),
-         tr("The share of the task area's land the plan covers; by time, soonest first, a plan covering "
-            "less than the best by over half a percent comes after the others")},
+         tr("The share of the task area's land the plan covers. Sorted by time, a plan covering over half "
+            "a percent less than the most comes after the others")},
         {tr("Hours"), tr("Makespan: the time of the slowest robot, in hours")},
         {tr("Home h"),
          tr("Where flights split the missions: when the last robot is home, its flights and the "
@@ -90,8 +99,9 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
             "none for a plan covering less than the most")},
         {tr("Turns"), tr("Turns of all robots together")},
         {tr("Ratio"),
-         tr("Makespan divided by the plan's own lower bound, which counts its own cells and turns: how "
-            "evenly it shares the work (1.00 is perfectly balanced), not which plan is done sooner")},
+         tr("Makespan divided by the plan's own lower bound, which counts its own cells and turns: near "
+            "1.00 the work is shared evenly. It says nothing of which plan is done sooner, and a loose bound "
+            "reads high for an even plan (CPPIED's prices every pass at the fastest class's speed)")},
         {tr("Plan s"), tr("Seconds the planner took")},
         {tr("State"), tr("Planned, failed or skipped, and the plan's warnings (hover over the cell)")}};
     for (int column = 0; column < Columns; ++column) {
@@ -151,8 +161,9 @@ void ComparisonPanel::setCheckedPlanners(const std::vector<std::string>& planner
         box->setChecked(std::find(planners.begin(), planners.end(), name) != planners.end());
 }
 
-void ComparisonPanel::setRunning(bool running) {
-    runButton_->setEnabled(!running);
+void ComparisonPanel::setCanCompare(bool can, const QString& whyNot) {
+    runButton_->setEnabled(can);
+    runButton_->setToolTip(can ? QString() : whyNot);
 }
 
 void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid,

@@ -30,7 +30,9 @@ class ComparisonPanel : public QWidget {
     void setRobotCount(int robots);
     [[nodiscard]] std::vector<std::string> checkedPlanners() const;
     void setCheckedPlanners(const std::vector<std::string>& planners);
-    void setRunning(bool running);
+    // Whether the panel's button runs a comparison (not while planning or exporting, nor without a map and
+    // robots); why not, in its tooltip.
+    void setCanCompare(bool can, const QString& whyNot);
     void showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid, const ClassTable& classes);
 
     [[nodiscard]] QTableWidget* table() const { return table_; }

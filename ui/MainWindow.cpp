@@ -875,7 +875,12 @@ void MainWindow::updateActions() {
                                : QString());
     }
     compareAction_->setEnabled(hasMap && !planning && !exporting && !document_->robots().empty());
-    comparisonPanel_->setRunning(planning || exporting);
+    comparisonPanel_->setCanCompare(compareAction_->isEnabled(),
+                                    !hasMap                       ? tr("Open a land-cover raster first")
+                                    : document_->robots().empty() ? tr("Place robot starts first (S)")
+                                    : planning                    ? tr("Planning is under way")
+                                    : exporting                   ? tr("An export is under way")
+                                                                  : QString());
     comparisonPanel_->setRobotCount(static_cast<int>(document_->robots().size()));
 }
 
@@ -1656,7 +1661,9 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     if (runner_->isRunning() || comparisonRunner_->isRunning() || exportRunner_->isRunning())
         return false;
     if (!document_->hasMap() || document_->robots().empty()) {
-        reportError(tr("Cannot compare"), tr("Open a land-cover raster and place robot starts first."));
+        reportError(tr("Cannot compare"),
+                    !document_->hasMap() ? tr("Open a land-cover raster first.")
+                                         : tr("Place robot starts first, with the Place start tool (S)."));
         return false;
     }
     if (planners.empty()) {
@@ -1679,7 +1686,9 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     std::vector<PlannerChoice> choices;
     for (const std::string& name : planners)
         choices.push_back(switchPlanner(document_->plannerChoice(), name));
-    comparisonInputs_ = document_->currentInputs();
+    comparisonInputs_.clear();
+    for (const PlannerChoice& choice : choices)
+        comparisonInputs_.push_back(document_->inputsFor(choice));
     comparisonRaster_ = document_->sharedRaster();
     addRobotSettings(prepared.value().problem);
     if (!comparisonRunner_->start(std::move(prepared.value().problem), choices))
@@ -1756,9 +1765,11 @@ void MainWindow::showComparedPlan(int row) {
         settingsModified_ = true;
         updateTitle();
     }
-    PlanInputs inputs = comparisonInputs_;
-    inputs.planner = choice;
-    document_->setPlan(comparison_.plans[static_cast<std::size_t>(row)], inputs);
+    // What the plan was made from, with its own planner chosen (a battery planner's batteries among them).
+    const auto made = std::find_if(comparisonInputs_.begin(), comparisonInputs_.end(),
+                                   [&](const PlanInputs& inputs) { return inputs.planner == choice; });
+    document_->setPlan(comparison_.plans[static_cast<std::size_t>(row)],
+                       made != comparisonInputs_.end() ? *made : document_->inputsFor(choice));
     notePlanToSave();
     showStatus(tr("Showing the plan of %1.").arg(QString::fromStdString(choice.planner)));
 }
@@ -1806,9 +1817,10 @@ bool MainWindow::startPlanning() {
     cancelButton_->show();
     cancelButton_->setEnabled(true);
     updateActions();
-    showStatus(tr("Planning %1 robots with %2…")
-                   .arg(document_->robots().size())
-                   .arg(QString::fromStdString(document_->plannerChoice().planner)),
+    const auto robots = static_cast<int>(document_->robots().size());
+    const QString planner = QString::fromStdString(document_->plannerChoice().planner);
+    showStatus(robots == 1 ? tr("Planning 1 robot with %1…").arg(planner)
+                           : tr("Planning %1 robots with %2…").arg(robots).arg(planner),
                0);
     return true;
 }

@@ -228,7 +228,7 @@ class MainWindow : public QMainWindow {
     PlanInputs planningInputs_;
     bool exportStale_ = false; // the exported plan was out of date
     ComparisonOutcome comparison_;
-    PlanInputs comparisonInputs_;
+    std::vector<PlanInputs> comparisonInputs_; // by compared planner, as it was chosen
     QFutureWatcher<std::vector<io::MissionSize>>* waypointFileSizes_ = nullptr;
     int waypointFileSizesAsked_ = 0; // the last request: an older one's answer is dropped
     std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on

@@ -51,15 +51,25 @@ bool MissionDocument::planStale() const {
 }
 
 PlanInputs MissionDocument::currentInputs() const {
-    return {mission_.classes,
+    return inputsOf(mission_);
+}
+
+PlanInputs MissionDocument::inputsFor(const PlannerChoice& planner) const {
+    io::Mission mission = mission_;
+    mission.planner = planner;
+    return inputsOf(mission);
+}
+
+PlanInputs MissionDocument::inputsOf(const io::Mission& mission) const {
+    return {mission.classes,
             starts(),
-            mission_.planner,
-            mission_.events,
-            io::plannerBatteries(mission_),
+            mission.planner,
+            mission.events,
+            io::plannerBatteries(mission),
             chargers(),
-            io::robotCruiseSpeeds(mission_),
-            io::fieldTimeInputs(mission_),
-            io::flyingRobots(mission_)};
+            io::robotCruiseSpeeds(mission),
+            io::fieldTimeInputs(mission),
+            io::flyingRobots(mission)};
 }
 
 void MissionDocument::setClasses(const ClassTable& classes, const QString& preset) {

@@ -64,6 +64,9 @@ class MissionDocument : public QObject {
     [[nodiscard]] std::shared_ptr<const Plan> sharedPlan() const { return plan_; }
     [[nodiscard]] bool planStale() const;
     [[nodiscard]] PlanInputs currentInputs() const;
+    // The inputs as they would be with another planner chosen: what its plan depends on (a battery planner's
+    // batteries among them).
+    [[nodiscard]] PlanInputs inputsFor(const PlannerChoice& planner) const;
 
     void setClasses(const ClassTable& classes, const QString& preset);
     void setRobots(std::vector<io::RobotSpec> robots);
@@ -106,6 +109,7 @@ class MissionDocument : public QObject {
     // The advice to a ground robot refused where an aircraft would take off, naming the window's control.
     [[nodiscard]] static QString aircraftHint();
     void emitStaleIfChanged();
+    [[nodiscard]] PlanInputs inputsOf(const io::Mission& mission) const;
 
     std::shared_ptr<const io::LoadedRaster> raster_;
     io::Mission mission_;

@@ -857,8 +857,9 @@ class TestMainWindow : public QObject {
         ui::ComparisonPanel* panel = window.comparisonPanel();
         auto* spiral = panel->findChild<QCheckBox*>(QStringLiteral("compare_spiral-stc"));
         QVERIFY(spiral != nullptr && !spiral->isEnabled()); // five robots
-        panel->setCheckedPlanners({"mcpp-mlct", "darp", "mstc", "spiral-stc"});
-        QCOMPARE(panel->checkedPlanners(), (std::vector<std::string>{"mcpp-mlct", "darp", "mstc"}));
+        panel->setCheckedPlanners({"mcpp-mlct", "darp", "mstc", "spiral-stc", "wavefront-battery"});
+        QCOMPARE(panel->checkedPlanners(),
+                 (std::vector<std::string>{"mcpp-mlct", "darp", "mstc", "wavefront-battery"}));
 
         QSignalSpy finished(&window, &ui::MainWindow::comparisonFinished);
         auto* compare = window.findChild<QAction*>(QStringLiteral("compareAction"));
@@ -869,17 +870,28 @@ class TestMainWindow : public QObject {
         QVERIFY(finished.takeFirst().at(0).toBool());
 
         QTableWidget* table = panel->table();
-        QCOMPARE(table->rowCount(), 3);
+        QCOMPARE(table->rowCount(), 4);
         QVERIFY(!panel->sheet()->pixmap().isNull());
         // No plan shown yet: the map says how to show one, not only to plan.
         QVERIFY(window.document()->plan() == nullptr);
         QVERIFY2(
             window.canvas()->bannerText().contains(QStringLiteral("select a row under Compare planners")),
             qPrintable(window.canvas()->bannerText()));
-        // Sorted by ratio, MSTC (unbalanced pieces) comes last.
-        table->sortItems(3, Qt::AscendingOrder);
-        QCOMPARE(table->item(2, 0)->text(), QStringLiteral("mstc"));
-        for (int row = 0; row < 3; ++row) // and how many warnings, where a plan has some
+        // Sorted by ratio, by value, each shown with its three decimals (1.000, not 1).
+        int ratioColumn = -1;
+        for (int column = 0; column < table->columnCount(); ++column)
+            if (table->horizontalHeaderItem(column)->text() == QStringLiteral("Ratio"))
+                ratioColumn = column;
+        QVERIFY(ratioColumn >= 0);
+        table->sortItems(ratioColumn, Qt::AscendingOrder);
+        for (int row = 0; row < 4; ++row) {
+            const QString ratio = table->item(row, ratioColumn)->text();
+            QVERIFY2(ratio.size() > 2 && ratio.indexOf(QLatin1Char('.')) == ratio.size() - 4,
+                     qPrintable(ratio));
+            if (row > 0)
+                QVERIFY(table->item(row - 1, ratioColumn)->text().toDouble() <= ratio.toDouble());
+        }
+        for (int row = 0; row < 4; ++row) // and how many warnings, where a plan has some
             QVERIFY2(table->item(row, table->columnCount() - 1)->text().startsWith(QStringLiteral("planned")),
                      qPrintable(table->item(row, table->columnCount() - 1)->text()));
 
@@ -891,6 +903,13 @@ class TestMainWindow : public QObject {
         QCOMPARE(window.document()->plannerChoice().planner, std::string("darp"));
         QVERIFY(!window.document()->planStale());
         QVERIFY2(window.canvas()->bannerText().isEmpty(), qPrintable(window.canvas()->bannerText()));
+        // A battery planner's plan depends on the robots' batteries, which only it counts: shown, it is not
+        // out of date either.
+        table->selectRow(panel->rowOfPlanner("wavefront-battery"));
+        QCOMPARE(window.document()->plan()->planner, std::string("wavefront-battery"));
+        QVERIFY(!window.document()->planStale());
+        table->selectRow(panel->rowOfPlanner("darp"));
+        QCOMPARE(window.document()->plan()->planner, std::string("darp"));
 
         // Exporting exports the plan shown.
         QTemporaryDir directory;
