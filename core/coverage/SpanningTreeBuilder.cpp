@@ -93,12 +93,13 @@ std::optional<SpanningTree> SpanningTreeBuilder::treeOver(std::vector<int> cells
 
 std::vector<std::pair<int, int>> fewestTurnEdges(const CellGraph& graph, const std::vector<int>& cells,
                                                  const RegionAdjacency& adjacency, bool cellsDifferInSize,
-                                                 int plateauRounds) {
+                                                 int plateauRounds, const ProgressReporter* progress) {
+    TurnMinimisingTree::Options options;
+    options.progress = progress;
     if (cellsDifferInSize) {
         const SizeChangeConnectors connectors(graph, cells, adjacency);
-        return TurnMinimisingTree(adjacency, {}, &connectors).edges();
+        return TurnMinimisingTree(adjacency, options, &connectors).edges();
     }
-    TurnMinimisingTree::Options options;
     options.plateauRounds = plateauRounds;
     return TurnMinimisingTree(adjacency, options).edges();
 }
@@ -107,8 +108,8 @@ SpanningTree SpanningTreeBuilder::fewestTurns(std::vector<int> cells, int rootCe
     const bool mixedSizes = cellsDifferInSize(cells);
     return *treeOver(std::move(cells), rootCell,
                      [&](const RegionAdjacency& adjacency, const std::vector<int>& regionCells) {
-                         return std::optional(
-                             fewestTurnEdges(graph_, regionCells, adjacency, mixedSizes, plateauRounds_));
+                         return std::optional(fewestTurnEdges(graph_, regionCells, adjacency, mixedSizes,
+                                                              plateauRounds_, progress_));
                      });
 }
 
@@ -121,6 +122,7 @@ std::optional<SpanningTree> SpanningTreeBuilder::fewestTurnsSearched(std::vector
                         const std::vector<int>&) -> std::optional<std::vector<std::pair<int, int>>> {
                         TurnMinimisingTree::Options options;
                         options.plateauRounds = plateauRounds_;
+                        options.progress = progress_;
                         const TurnMinimisingTree tree(adjacency, options);
                         if (!tree.searchLowered())
                             return std::nullopt;

@@ -3,6 +3,7 @@
 #include "core/coverage/RegionAdjacency.hpp"
 #include "core/coverage/SpanningTree.hpp"
 #include "core/model/CellGraph.hpp"
+#include "core/model/ProgressReporter.hpp"
 
 #include <optional>
 #include <vector>
@@ -13,11 +14,11 @@ enum class EdgeDirection { EastWest, NorthSouth };
 
 // The edges (node pairs of `adjacency`) of the tree fewestTurns builds over `cells`: a TurnMinimisingTree
 // whose swaps weigh time where the cells differ in size (SizeChangeConnectors), turns otherwise, then with
-// plateauRounds of its search. A forest where the cells are not connected.
-[[nodiscard]] std::vector<std::pair<int, int>> fewestTurnEdges(const CellGraph& graph,
-                                                               const std::vector<int>& cells,
-                                                               const RegionAdjacency& adjacency,
-                                                               bool cellsDifferInSize, int plateauRounds);
+// plateauRounds of its search. A forest where the cells are not connected. progress: as
+// TurnMinimisingTree::Options'.
+[[nodiscard]] std::vector<std::pair<int, int>>
+fewestTurnEdges(const CellGraph& graph, const std::vector<int>& cells, const RegionAdjacency& adjacency,
+                bool cellsDifferInSize, int plateauRounds, const ProgressReporter* progress = nullptr);
 
 // Spanning trees over a region of a cell graph, rooted at the start cell.
 class SpanningTreeBuilder {
@@ -25,8 +26,10 @@ class SpanningTreeBuilder {
     // scratchIndex: one int per graph cell, all -1, which the builder leaves so; or empty, to number
     // regions listed in ascending order by rank instead (CellIndexScope). plateauRounds: fewestTurns'
     // search across plateaus of equal turns (TurnMinimisingTree::Options), 0 for none.
-    SpanningTreeBuilder(const CellGraph& graph, std::vector<int>& scratchIndex, int plateauRounds = 0)
-        : graph_(graph), index_(scratchIndex), plateauRounds_(plateauRounds) {}
+    // progress, where given: its cancel request stops a fewestTurns tree between steps of its build.
+    SpanningTreeBuilder(const CellGraph& graph, std::vector<int>& scratchIndex, int plateauRounds = 0,
+                        const ProgressReporter* progress = nullptr)
+        : graph_(graph), index_(scratchIndex), plateauRounds_(plateauRounds), progress_(progress) {}
 
     // Kruskal over the region's adjacencies, the preferred direction's edges first: long straight spines
     // give boustrophedon-like paths with few turns (DARP's idea; spec 5).
@@ -62,6 +65,7 @@ class SpanningTreeBuilder {
     const CellGraph& graph_;
     std::vector<int>& index_;
     int plateauRounds_;
+    const ProgressReporter* progress_;
 };
 
 } // namespace mcpp

@@ -104,8 +104,8 @@ SpanningTreeCoverage::bestTree(const CellGraph& graph, std::vector<int> cells, i
 SpanningTreeCoverage::RegionTree
 SpanningTreeCoverage::bestRegionTree(const CellGraph& graph, std::vector<int> cells, int startCell, int robot,
                                      MapPoint start, std::vector<int>& scratchIndex, bool timed,
-                                     std::size_t walkLimit) const {
-    const SpanningTreeBuilder trees(graph, scratchIndex);
+                                     std::size_t walkLimit, const ProgressReporter* progress) const {
+    const SpanningTreeBuilder trees(graph, scratchIndex, 0, progress);
     TreeCircumnavigation walker(graph);
     const int candidates = trees.candidatesFor(cells);
     if (candidates == 1 && walkLimit > 0) {
@@ -121,6 +121,8 @@ SpanningTreeCoverage::bestRegionTree(const CellGraph& graph, std::vector<int> ce
     RegionTree best;
     bool haveBest = false;
     for (int candidate = 0; candidate < candidates; ++candidate) {
+        if (progress != nullptr)
+            progress->throwIfCancelled();
         // The last candidate takes the cells: a region of millions of cells is not held twice.
         SpanningTree tree = candidate + 1 == candidates
                                 ? trees.candidate(candidate, std::move(cells), startCell)
@@ -211,9 +213,10 @@ SpanningTreeCoverage::planTreesKeeping(const CellGraph& graph, const RegionAlloc
                 regionCells[robot] = cellsOfRobot(regions, static_cast<int>(robot), counts[robot]);
             // The tree holds its cells now. On large maps a path of few waypoints is made as the tree's
             // walk is measured; otherwise the tree waits packed beside the regions still planned.
-            trees[robot] = bestRegionTree(graph, std::move(regionCells[robot]), regions.startCell[robot],
-                                          static_cast<int>(robot), starts[robot], scratch, timed,
-                                          largeMap && walkSmallPaths ? walkedPathLimit(counts[robot]) : 0);
+            trees[robot] =
+                bestRegionTree(graph, std::move(regionCells[robot]), regions.startCell[robot],
+                               static_cast<int>(robot), starts[robot], scratch, timed,
+                               largeMap && walkSmallPaths ? walkedPathLimit(counts[robot]) : 0, &progress);
             if (largeMap && !trees[robot].walked)
                 trees[robot].tree.pack();
         }

@@ -95,9 +95,11 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
 
   private:
     // bestTree, and with `walkLimit` above 0 the lone candidate's path kept when it is that small.
+    // progress, where given: a cancel request stops it between and within its candidates' builds.
     [[nodiscard]] RegionTree bestRegionTree(const CellGraph& graph, std::vector<int> cells, int startCell,
                                             int robot, MapPoint start, std::vector<int>& scratchIndex,
-                                            bool timed, std::size_t walkLimit) const;
+                                            bool timed, std::size_t walkLimit,
+                                            const ProgressReporter* progress = nullptr) const;
     // planTrees, where a robot with a tree in `kept` takes a copy of it instead; `walkSmallPaths`: on large
     // maps, paths of few waypoints made as the trees are measured (RegionTree::walked).
     [[nodiscard]] std::vector<RegionTree>

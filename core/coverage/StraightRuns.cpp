@@ -93,7 +93,7 @@ class BipartiteMatching {
         : conflicts_(conflicts), leftCount_(conflicts.leftCount()), matchOfLeft_(leftCount_, -1),
           matchOfRight_(rightCount, -1), distance_(leftCount_, unreached) {}
 
-    void solve() {
+    void solve(const ProgressReporter* progress) {
         // A greedy first matching leaves Hopcroft-Karp a few long paths instead of many phases.
         for (std::size_t left = 0; left < leftCount_; ++left)
             for (int right : rightOf(static_cast<int>(left)))
@@ -110,6 +110,8 @@ class BipartiteMatching {
         // Phases past a few add a handful of runs on maps of a million cells but cost seconds: the last
         // ones find paths of hundreds of edges one or two at a time.
         for (int phase = 0; phase < phaseLimit && layer(); ++phase) {
+            if (progress != nullptr)
+                progress->throwIfCancelled();
             for (const int left : freeLeft_)
                 augment(left);
             std::erase_if(freeLeft_,
@@ -206,7 +208,7 @@ class BipartiteMatching {
 
 } // namespace
 
-std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
+std::vector<char> straightRuns(const RegionAdjacency& adjacency, const ProgressReporter* progress) {
     const auto& edges = adjacency.edges();
     // East-west straight adjacencies are the left vertices, in edge order; north-south ones the right
     // vertices, by their northern cells.
@@ -220,7 +222,7 @@ std::vector<char> straightRuns(const RegionAdjacency& adjacency) {
             leftEdges.push_back(static_cast<int>(e));
     const Conflicts conflicts(adjacency, std::move(leftEdges));
     BipartiteMatching matching(conflicts, adjacency.nodeCount());
-    matching.solve();
+    matching.solve(progress);
     // Konig: left vertices reached from free left vertices by alternating paths, plus right vertices not
     // reached, form the largest independent set.
     std::vector<char> reachedLeft(conflicts.leftCount(), 0);

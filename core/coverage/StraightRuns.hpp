@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/coverage/RegionAdjacency.hpp"
+#include "core/model/ProgressReporter.hpp"
 
 #include <vector>
 
@@ -12,7 +13,10 @@ namespace mcpp {
 // vertex cover of that bipartite graph (Konig), found by Hopcroft-Karp matching. The matching stops after
 // 16 phases, so on maps of a million cells the set may fall a few runs short of the largest; it is always
 // conflict-free.
-// Returns, per adjacency of `adjacency`, whether it joins two cells of one run.
-[[nodiscard]] std::vector<char> straightRuns(const RegionAdjacency& adjacency);
+// Returns, per adjacency of `adjacency`, whether it joins two cells of one run. A cancel request to
+// `progress` (where given) stops it between the matching's phases: on a region of millions of cells
+// they take seconds.
+[[nodiscard]] std::vector<char> straightRuns(const RegionAdjacency& adjacency,
+                                             const ProgressReporter* progress = nullptr);
 
 } // namespace mcpp

@@ -67,13 +67,17 @@ TurnMinimisingTree::TurnMinimisingTree(const RegionAdjacency& adjacency, Options
                                        const SizeChangeConnectors* connectors)
     : adjacency_(adjacency), options_(options), connectors_(connectors),
       sides_(adjacency.nodeCount(), SideCounts{}), inTree_(adjacency.edges().size(), 0) {
-    joinRuns(straightRuns(adjacency));
+    joinRuns(straightRuns(adjacency, options_.progress));
+    throwIfCancelled();
     rootTree();
     for (int pass = 0; pass < options_.swapPasses; ++pass) {
         int swaps = 0;
-        for (std::size_t edge = 0; edge < inTree_.size(); ++edge)
+        for (std::size_t edge = 0; edge < inTree_.size(); ++edge) {
+            if ((edge & 0xFFFFU) == 0)
+                throwIfCancelled();
             if (inTree_[edge] == 0 && trySwap(static_cast<int>(edge)))
                 ++swaps;
+        }
         if (swaps == 0)
             break;
     }
@@ -93,6 +97,7 @@ void TurnMinimisingTree::searchPlateaus() {
         return changedInRound_[static_cast<std::size_t>(node)] == round_;
     };
     for (round_ = 1; round_ <= options_.plateauRounds; ++round_) {
+        throwIfCancelled();
         shuffle(order);
         for (const int edge : order)
             if (inTree_[static_cast<std::size_t>(edge)] == 0)
@@ -114,6 +119,11 @@ void TurnMinimisingTree::searchPlateaus() {
         restore(fewestTree);
     searchLowered_ = fewest < initial;
     changedInRound_ = {};
+}
+
+void TurnMinimisingTree::throwIfCancelled() const {
+    if (options_.progress != nullptr)
+        options_.progress->throwIfCancelled();
 }
 
 void TurnMinimisingTree::shuffle(std::vector<int>& order) {

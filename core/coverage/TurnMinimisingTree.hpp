@@ -2,6 +2,7 @@
 
 #include "core/coverage/RegionAdjacency.hpp"
 #include "core/coverage/SizeChangeConnectors.hpp"
+#include "core/model/ProgressReporter.hpp"
 
 #include <array>
 #include <cstdint>
@@ -27,6 +28,9 @@ class TurnMinimisingTree {
         int cycleLimit = 64;
         int swapPasses = 2;
         int plateauRounds = 0;
+        // Where given, a cancel request stops the build (PlanningError) between its steps and every
+        // few thousand swaps tried: a region of millions of cells takes tens of seconds.
+        const ProgressReporter* progress = nullptr;
     };
 
     // connectors: null where every cell has one size.
@@ -52,6 +56,7 @@ class TurnMinimisingTree {
     void link(int edge);
     void unlink(int edge);
     void joinRuns(const std::vector<char>& inRuns);
+    void throwIfCancelled() const;
     void rootTree();
     enum class Accept { Fewer, FewerOrAsMany };
     struct Drop {

@@ -71,7 +71,7 @@ int TurnSearch::improve(const CellGraph& graph, const RegionAllocation& regions,
         // The region's path was walked round the tree fewestTurns builds without the search (its only
         // candidate on cells of one size): where the search gains nothing, there is nothing to walk.
         const std::optional<SpanningTree> tree =
-            SpanningTreeBuilder(graph, scratch, rounds_)
+            SpanningTreeBuilder(graph, scratch, rounds_, &progress)
                 .fewestTurnsSearched(cells[robot], regions.startCell[robot]);
         if (!tree)
             return;

@@ -24,9 +24,9 @@ namespace {
 // MSTC's uniform grid there is one candidate; time and turns would choose alike between more.
 // plateauRounds: the turn-minimising tree's search across plateaus of equal turns.
 std::vector<Waypoint> partTour(const CellGraph& graph, const StartComponent& part, int rootCell,
-                               MapPoint start, int plateauRounds) {
+                               MapPoint start, int plateauRounds, const ProgressReporter& progress) {
     std::vector<int> scratchIndex(graph.size(), -1);
-    const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds);
+    const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds, &progress);
     TreeCircumnavigation walker(graph);
     std::vector<Waypoint> best;
     int fewestTurns = std::numeric_limits<int>::max();
@@ -237,7 +237,7 @@ void MstcPlanner::run(PlanningRun& run) const {
                 robots.starts.push_back(starts[static_cast<std::size_t>(robot)]);
             }
             std::vector<Waypoint> tour =
-                partTour(plan.cells, part, startCells[first], starts[first], plateauRounds);
+                partTour(plan.cells, part, startCells[first], starts[first], plateauRounds, run.progress());
             std::optional<RobotWays> ways;
             if (parameters.boolean("balanced"))
                 ways.emplace(plan.cells, robots, run.progress());

@@ -7,6 +7,7 @@
 #include "core/coverage/StraightRuns.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/coverage/TurnMinimisingTree.hpp"
+#include "core/model/PlanningError.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -327,6 +328,42 @@ class TurnMinimisingTreeTest : public QObject {
         QCOMPARE(searched.edges(), TurnMinimisingTree(adjacency, {}).edges());
         QVERIFY2(searchedTotal < 0.995 * plainTotal,
                  qPrintable(QString("%1 against %2").arg(searchedTotal).arg(plainTotal)));
+    }
+
+    // A tree over millions of cells takes tens of seconds: a cancel request stops its build, in the straight
+    // runs' matching, between its steps and in its plateau search. Not asked, the tree is the same.
+    void aCancelRequestStopsTheBuild() {
+        GridCells grid(30, 30, 0.15, 3);
+        const std::vector<int> part = grid.connectedPart();
+        const CellIndexScope local(grid.scratch, part);
+        const RegionAdjacency adjacency(grid.graph, part, local);
+        std::atomic<bool> cancel{false};
+        const ProgressReporter progress({}, &cancel);
+        TurnMinimisingTree::Options options;
+        options.plateauRounds = 4;
+        options.progress = &progress;
+        TurnMinimisingTree::Options unwatched;
+        unwatched.plateauRounds = 4;
+        QCOMPARE(TurnMinimisingTree(adjacency, options).edges(),
+                 TurnMinimisingTree(adjacency, unwatched).edges());
+        QCOMPARE(straightRuns(adjacency, &progress), straightRuns(adjacency));
+        cancel = true;
+        const auto cancelled = [](const std::function<void()>& build) {
+            try {
+                build();
+            } catch (const PlanningError& error) {
+                return error.kind() == PlanningError::Kind::Cancelled;
+            }
+            return false;
+        };
+        QVERIFY(cancelled([&] { (void)TurnMinimisingTree(adjacency, options); }));
+        options.plateauRounds = 0;
+        QVERIFY(cancelled([&] { (void)TurnMinimisingTree(adjacency, options); }));
+        std::vector<int> scratch(grid.graph.size(), -1);
+        QVERIFY(cancelled([&] {
+            (void)SpanningTreeBuilder(grid.graph, scratch, 4, &progress).fewestTurns(part, part.front());
+        }));
+        QVERIFY(std::all_of(scratch.begin(), scratch.end(), [](int index) { return index == -1; }));
     }
 
     // Two regions split along a staircase: straightening moves cells so that fewer lie off straight runs,
