@@ -1737,6 +1737,10 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
                     io::planningErrorText(*error, fieldNamer(comparison_.choices[row].planner), robotNames()))
                 comparison_.rows[row].message = *named;
     comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes());
+    for (std::size_t row = 0; row < comparison_.plans.size() && row < comparison_.rows.size(); ++row)
+        if (comparison_.plans[row])
+            logPlanIssues(*comparison_.plans[row], QString::fromStdString(comparison_.rows[row].planner),
+                          false);
     comparisonDock_->show();
     comparisonDock_->raise();
     const auto planned = std::count_if(outcome.plans.begin(), outcome.plans.end(),
@@ -1747,6 +1751,24 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
                    : tr("Compared %1 planners: select a row to show its plan.").arg(outcome.rows.size()));
     updateActions();
     emit comparisonFinished(!outcome.cancelled && planned > 0);
+}
+
+// A plan's warnings (and with `notes`, its notes), whole, in the messages panel, where every message is
+// kept; `planner` leads each where several plans are logged.
+void MainWindow::logPlanIssues(const Plan& plan, const QString& planner, bool notes) {
+    const std::vector<std::string> names = robotNames();
+    for (const PlanIssue& issue : plan.issues) {
+        const bool note = issue.severity == IssueSeverity::Information;
+        if (note && !notes)
+            continue;
+        // A robot's name stays as written, and the robots a warning numbers are named.
+        QString text = QString::fromStdString(issue.message + io::robotsNamedIn(issue.message, names, false));
+        if (!text.endsWith(QLatin1Char('.')))
+            text += QLatin1Char('.');
+        if (!planner.isEmpty())
+            text = planner + QStringLiteral(": ") + text;
+        messageLog_->add((note ? tr("Note: %1") : tr("Warning: %1")).arg(text));
+    }
 }
 
 void MainWindow::showComparedPlan(int row) {
@@ -1856,18 +1878,7 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                                     .arg(ResultsPanel::formatDuration(metrics.makespanSeconds))
                                     .arg(metrics.ratio, 0, 'f', 3), // as plan.png gives it
                    15000);
-        // The plan's warnings and notes, whole, where every message is kept.
-        const std::vector<std::string> names = robotNames();
-        for (const PlanIssue& issue : outcome.plan->issues) {
-            // A robot's name stays as written, and the robots a warning numbers are named.
-            QString text =
-                QString::fromStdString(issue.message + io::robotsNamedIn(issue.message, names, false));
-            if (!text.endsWith(QLatin1Char('.')))
-                text += QLatin1Char('.');
-            messageLog_->add(
-                (issue.severity == IssueSeverity::Information ? tr("Note: %1") : tr("Warning: %1"))
-                    .arg(text));
-        }
+        logPlanIssues(*outcome.plan, {}, true);
     } else if (outcome.cancelled) {
         showStatus(tr("Planning cancelled; the previous plan, if any, is kept."));
     }

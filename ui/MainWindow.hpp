@@ -170,6 +170,7 @@ class MainWindow : public QMainWindow {
     void handleExportFinished(const ExportOutcome& outcome);
     void handleComparisonFinished(const ComparisonOutcome& outcome);
     void showComparedPlan(int row);
+    void logPlanIssues(const Plan& plan, const QString& planner, bool notes);
     void showBusy(const QString& stage, bool busy);
     void placeStart(MapPoint point);
     void removeSelectedRobot();

@@ -871,6 +871,11 @@ class TestMainWindow : public QObject {
 
         QTableWidget* table = panel->table();
         QCOMPARE(table->rowCount(), 4);
+        // Each compared plan's warnings are kept in the messages panel, named by planner (MSTC's pieces
+        // from start to start are uneven).
+        const QStringList mstcWarnings =
+            window.messageLog()->messages().filter(QStringLiteral("Warning: mstc: "));
+        QVERIFY2(!mstcWarnings.isEmpty(), qPrintable(window.messageLog()->messages().join('\n')));
         QVERIFY(!panel->sheet()->pixmap().isNull());
         // No plan shown yet: the map says how to show one, not only to plan.
         QVERIFY(window.document()->plan() == nullptr);
