@@ -217,7 +217,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
             inTheField = true;
         }
         if (againstFirst[i] > 0.0)
-            table_->setItem(r, AgainstFirst, numberItem(againstFirst[i], 2));
+            table_->setItem(r, AgainstFirst, numberItem(againstFirst[i], 3));
         table_->setItem(r, Turns, numberItem(metrics.totalTurns(), 0));
         table_->setItem(r, Planning, numberItem(row.planningMilliseconds / 1000.0, 2));
     }
