@@ -5,10 +5,13 @@
 #include "render/ComparisonSheet.hpp"
 
 #include <QCheckBox>
+#include <QDialog>
+#include <QEvent>
 #include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QTableWidget>
@@ -128,6 +131,8 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
     sheet_ = new QLabel(this);
     sheet_->setObjectName(QStringLiteral("comparisonSheet"));
     sheet_->setAlignment(Qt::AlignHCenter | Qt::AlignTop);
+    sheet_->setToolTip(tr("Double-click to see the sheet at full size, where its captions can be read"));
+    sheet_->installEventFilter(this);
     scroll_ = new QScrollArea(this);
     scroll_->setWidget(sheet_);
     scroll_->setWidgetResizable(true);
@@ -237,6 +242,42 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     sheetImage_ =
         render::renderComparisonSheet(grid, classes, render::rankedComparisonPanels(outcome.rows, plans));
     fitSheet();
+    if (fullSizeSheet_ != nullptr && fullSizeSheet_->isVisible())
+        showFullSizeSheet(); // the new comparison's sheet where the last one's is open
+}
+
+bool ComparisonPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == sheet_ && event->type() == QEvent::MouseButtonDblClick) {
+        showFullSizeSheet();
+        return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+QDialog* ComparisonPanel::showFullSizeSheet() {
+    if (sheetImage_.isNull())
+        return nullptr;
+    if (fullSizeSheet_ == nullptr) {
+        fullSizeSheet_ = new QDialog(this);
+        fullSizeSheet_->setObjectName(QStringLiteral("fullSizeSheet"));
+        fullSizeSheet_->setWindowTitle(tr("Planners compared"));
+        auto* scroll = new QScrollArea(fullSizeSheet_);
+        fullSizeImage_ = new QLabel(scroll);
+        scroll->setWidget(fullSizeImage_);
+        auto* layout = new QVBoxLayout(fullSizeSheet_);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->addWidget(scroll);
+    }
+    fullSizeImage_->setPixmap(QPixmap::fromImage(sheetImage_));
+    fullSizeImage_->adjustSize();
+    // As large as the sheet, within most of the panel's screen.
+    const QRect screen =
+        this->screen() != nullptr ? this->screen()->availableGeometry() : QRect(0, 0, 1280, 800);
+    fullSizeSheet_->resize(std::min(sheetImage_.width() + 24, screen.width() * 9 / 10),
+                           std::min(sheetImage_.height() + 24, screen.height() * 9 / 10));
+    fullSizeSheet_->show();
+    fullSizeSheet_->raise();
+    return fullSizeSheet_;
 }
 
 void ComparisonPanel::resizeEvent(QResizeEvent* event) {

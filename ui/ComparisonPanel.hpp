@@ -11,6 +11,7 @@
 #include <vector>
 
 class QCheckBox;
+class QDialog;
 class QLabel;
 class QPushButton;
 class QScrollArea;
@@ -39,6 +40,9 @@ class ComparisonPanel : public QWidget {
     [[nodiscard]] QLabel* sheet() const { return sheet_; }
     // The table row (in its current order) of a planner, or -1.
     [[nodiscard]] int rowOfPlanner(const std::string& planner) const;
+    // The sheet at full size in a window of its own, where its captions can be read (the dock shows it
+    // scaled to its width); what double-clicking the sheet does. Null before any comparison.
+    QDialog* showFullSizeSheet();
 
   signals:
     void compareRequested();
@@ -46,6 +50,7 @@ class ComparisonPanel : public QWidget {
 
   protected:
     void resizeEvent(QResizeEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void fitSheet();
@@ -56,6 +61,8 @@ class ComparisonPanel : public QWidget {
     QLabel* sheet_ = nullptr;
     QScrollArea* scroll_ = nullptr;
     QImage sheetImage_; // full size; shown scaled to the panel
+    QDialog* fullSizeSheet_ = nullptr;
+    QLabel* fullSizeImage_ = nullptr;
 };
 
 } // namespace mcpp::ui

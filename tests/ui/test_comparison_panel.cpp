@@ -1,7 +1,9 @@
 #include "tests/ui/GrassMission.hpp"
 #include "ui/ComparisonPanel.hpp"
 
+#include <QDialog>
 #include <QHeaderView>
+#include <QLabel>
 #include <QTableWidget>
 #include <QtTest>
 
@@ -156,6 +158,29 @@ class ComparisonPanelTest : public QObject {
                  QStringLiteral("<p>CPPIED times every robot at the class table's speeds</p>"));
         QCOMPARE(panel.table()->item(panel.rowOfPlanner("mcpp-mlct"), stateColumn)->text(),
                  QStringLiteral("planned"));
+    }
+
+    // The dock shows the sheet scaled to its width, too small to read its captions: double-clicking it
+    // shows it at full size in a window of its own.
+    void theSheetOpensAtFullSize() {
+        const auto raster = test::grassRaster();
+        const io::Mission mission = test::twoRobotMission();
+        ui::ComparisonPanel panel;
+        QVERIFY(panel.showFullSizeSheet() == nullptr); // nothing compared yet
+        panel.resize(320, 700);
+        panel.show();
+        panel.showOutcome(
+            outcomeOf({plannedRow("darp", 1.00, 9000.0), plannedRow("mcpp-mlct", 1.01, 7200.0)}),
+            raster->grid, mission.classes);
+        const int shownWidth = panel.sheet()->pixmap().width();
+        QVERIFY(shownWidth > 0);
+        QTest::mouseDClick(panel.sheet(), Qt::LeftButton);
+        auto* dialog = panel.findChild<QDialog*>(QStringLiteral("fullSizeSheet"));
+        QVERIFY(dialog != nullptr && dialog->isVisible());
+        const auto* image = dialog->findChild<QLabel*>();
+        QVERIFY(image != nullptr);
+        QVERIFY2(image->pixmap().width() > shownWidth,
+                 qPrintable(QStringLiteral("%1 against %2").arg(image->pixmap().width()).arg(shownWidth)));
     }
 };
 
