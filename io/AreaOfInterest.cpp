@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <gdal_alg.h>
 #include <ogrsf_frmts.h>
+#include <optional>
 #include <vector>
 
 namespace mcpp::io {
@@ -126,17 +127,11 @@ Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, Ow
     return count;
 }
 
-// The polygons' area in square metres, and how much of it lies off the raster; both 0 where GDAL has no
-// GEOS to measure overlaps with, or the polygons are too broken to join.
-struct AreaOffTheRaster {
-    double drawn = 0.0;
-    double off = 0.0;
-};
-
 // The polygons' union, overlaps counted once; null where GEOS cannot join them.
-std::unique_ptr<OGRGeometry> unionOf(const std::vector<const OGRGeometry*>& geometries) {
+std::unique_ptr<OGRGeometry> unionOf(const std::vector<std::unique_ptr<OGRGeometry>>& geometries) {
     OGRMultiPolygon all;
-    for (const OGRGeometry* geometry : geometries) {
+    for (const auto& owned : geometries) {
+        const OGRGeometry* geometry = owned.get();
         if (const auto* several = dynamic_cast<const OGRMultiPolygon*>(geometry))
             for (const OGRPolygon* polygon : *several)
                 all.addGeometry(polygon);
@@ -151,22 +146,28 @@ double areaOf(const OGRGeometry* geometry) {
     return geometry != nullptr ? OGR_G_Area(OGRGeometry::ToHandle(const_cast<OGRGeometry*>(geometry))) : 0.0;
 }
 
-AreaOffTheRaster areaOffTheRaster(const OwnedGeometries& polygons, const std::vector<std::uint8_t>& mask,
-                                  const ClassGrid& grid) {
+// How much of the polygons' area, in square metres, lies off the raster; 0 where GDAL has no GEOS to
+// measure it with.
+double areaOffTheRaster(const OwnedGeometries& polygons, const ClassGrid& grid) {
     if (!OGRGeometryFactory::haveGEOS())
-        return {};
+        return 0.0;
     // Only polygons reaching past the raster's edge can lie off it: joining thousands of parcels wholly on
     // it would take a second for nothing.
-    std::vector<const OGRGeometry*> crossing;
+    const QuietGdalErrors quiet;
+    std::vector<std::unique_ptr<OGRGeometry>> crossing;
     for (const OGRGeometry* geometry : polygons.geometries) {
         OGREnvelope envelope;
         geometry->getEnvelope(&envelope);
-        if (envelope.MinX < grid.originX || envelope.MaxX > grid.maxX() || envelope.MinY < grid.minY() ||
-            envelope.MaxY > grid.originY)
-            crossing.push_back(geometry);
+        if (envelope.MinX >= grid.originX && envelope.MaxX <= grid.maxX() && envelope.MinY >= grid.minY() &&
+            envelope.MaxY <= grid.originY)
+            continue;
+        // A polygon that crosses itself fails GEOS's overlay: it is mended first.
+        std::unique_ptr<OGRGeometry> valid(geometry->IsValid() ? geometry->clone() : geometry->MakeValid());
+        if (valid)
+            crossing.push_back(std::move(valid));
     }
     if (crossing.empty())
-        return {};
+        return 0.0;
     OGRLinearRing corners;
     corners.addPoint(grid.originX, grid.minY());
     corners.addPoint(grid.maxX(), grid.minY());
@@ -175,25 +176,30 @@ AreaOffTheRaster areaOffTheRaster(const OwnedGeometries& polygons, const std::ve
     corners.closeRings();
     OGRPolygon map;
     map.addRing(&corners);
-    const std::unique_ptr<OGRGeometry> reaching = unionOf(crossing);
-    if (!reaching)
-        return {};
-    const QuietGdalErrors quiet;
-    const std::unique_ptr<OGRGeometry> offTheMap(reaching->Difference(&map));
-    // The part on the raster is what the mask holds, to the pixel.
-    const auto onTheMap = static_cast<double>(std::count(mask.begin(), mask.end(), std::uint8_t{1}));
-    const double off = areaOf(offTheMap.get());
-    return {off + onTheMap * grid.pixelWidth * grid.pixelHeight, off};
+    double off = 0.0;
+    if (const std::unique_ptr<OGRGeometry> reaching = unionOf(crossing)) {
+        const std::unique_ptr<OGRGeometry> offTheMap(reaching->Difference(&map));
+        off = areaOf(offTheMap.get());
+    } else {
+        // Where the union still fails: each polygon's own part off the raster, overlaps counted twice,
+        // rather than no warning at all.
+        for (const auto& geometry : crossing) {
+            const std::unique_ptr<OGRGeometry> offTheMap(geometry->Difference(&map));
+            off += areaOf(offTheMap.get());
+        }
+    }
+    return off;
 }
 
 // What an area file lays on the raster: 1 where a polygon covers the pixel's centre, on the raster's grid,
-// and how much of the polygons' area lies off the raster.
+// and how much of the polygons' area lies off the raster (square metres).
 struct LaidArea {
     std::vector<std::uint8_t> mask;
-    AreaOffTheRaster area;
+    double offTheRaster = 0.0;
 };
 
-Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster) {
+// measured: whether to measure the part off the raster (an area to plan on, not a no-go zone).
+Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster, bool measured) {
     using Mask = Result<LaidArea>;
     OwnedGeometries polygons;
     if (auto read = readPolygons(path, raster, polygons); !read)
@@ -218,8 +224,28 @@ Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster) 
                                            grid.rows, GDT_Byte, 0, 0, nullptr) != CE_None)
         return Mask::failure(path + ": its polygons could not be laid on the raster" +
                              QuietGdalErrors::detail());
-    AreaOffTheRaster area = areaOffTheRaster(polygons, mask, grid);
-    return LaidArea{std::move(mask), area};
+    const double off = measured ? areaOffTheRaster(polygons, grid) : 0.0;
+    return LaidArea{std::move(mask), off};
+}
+
+// What of the area drawn to plan on is left out, off the raster or over its nodata, where that is more than a
+// pixel's worth (and, over nodata, more than half a percent of the area: rasters have stray nodata pixels).
+std::optional<std::string> areaLeftOut(double offTheRaster, double onTheRaster, double overNodata,
+                                       double pixelArea, const std::string& path) {
+    const double drawn = offTheRaster + onTheRaster;
+    const bool off = offTheRaster > pixelArea;
+    const bool nodata = overNodata > std::max(pixelArea, 0.005 * drawn);
+    if (!off && !nodata)
+        return std::nullopt;
+    std::string where;
+    if (off)
+        where = formatArea(offTheRaster) + " lies off the raster";
+    if (nodata)
+        where += (off ? " and " + formatArea(overNodata) + " over its nodata,"
+                      : formatArea(overNodata) + " lies over the raster's nodata (no land cover)");
+    return "area of interest: of the " + formatArea(drawn) + " in " +
+           std::filesystem::path(path).filename().string() + ", " + where + " and is left out" +
+           (off ? " (a larger raster, or a mosaic of tiles, would cover it)" : "");
 }
 
 } // namespace
@@ -233,23 +259,29 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
         grid.outside.assign(grid.values.size(), 0);
     std::vector<std::uint8_t> include;
     std::vector<std::uint8_t> exclude;
-    AreaOffTheRaster includeArea;
+    double offTheRaster = 0.0;
     if (!includePath.empty()) {
-        auto laid = rasterise(includePath, raster);
+        auto laid = rasterise(includePath, raster, true);
         if (!laid)
             return Status::failure(laid.error());
         include = std::move(laid.value().mask);
-        includeArea = laid.value().area;
+        offTheRaster = laid.value().offTheRaster;
     }
     if (!excludePath.empty()) {
-        auto laid = rasterise(excludePath, raster);
+        auto laid = rasterise(excludePath, raster, false);
         if (!laid)
             return Status::failure(laid.error());
         exclude = std::move(laid.value().mask);
     }
     std::map<std::int32_t, std::int64_t> counts;
     std::int64_t inside = 0;
+    std::int64_t laidPixels = 0; // of the area to plan on, on the raster
+    std::int64_t overNodata = 0; // of those, where the raster has no land cover
     for (std::size_t pixel = 0; pixel < grid.values.size(); ++pixel) {
+        if (!include.empty() && include[pixel] != 0) {
+            ++laidPixels;
+            overNodata += grid.outside[pixel] == ClassGrid::outsideNodata ? 1 : 0;
+        }
         if (grid.outside[pixel] != 0)
             continue;
         if (!include.empty() && include[pixel] == 0) {
@@ -272,13 +304,9 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
     const double pixelArea = grid.pixelWidth * grid.pixelHeight;
     raster.warnings.push_back("area of interest: planning on " +
                               formatArea(static_cast<double>(inside) * pixelArea) + " of the map");
-    // More than a pixel's worth off the map is worth saying: the user drew it to be covered.
-    if (includeArea.off > pixelArea)
-        raster.warnings.push_back("area of interest: " + formatArea(includeArea.off) + " of the " +
-                                  formatArea(includeArea.drawn) + " in " +
-                                  std::filesystem::path(includePath).filename().string() +
-                                  " lies off the raster and is left out (a larger raster, or a mosaic "
-                                  "of tiles, covers it)");
+    if (auto leftOut = areaLeftOut(offTheRaster, static_cast<double>(laidPixels) * pixelArea,
+                                   static_cast<double>(overNodata) * pixelArea, pixelArea, includePath))
+        raster.warnings.push_back(std::move(*leftOut));
     return {};
 }
 

@@ -737,8 +737,8 @@ void TestBatchEndToEnd::anAreaPastTheRastersEdgeIsAWarningInTheReport() {
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
     QVERIFY2(run.standardOutput.contains("mcpp: area of interest: planning on "),
              qPrintable(run.standardOutput));
-    const QString warning = QStringLiteral(
-        "area of interest: 2 ha of the 4 ha in past-the-edge.geojson lies off the raster and is left out");
+    const QString warning =
+        QStringLiteral("area of interest: of the 4 ha in past-the-edge.geojson, 2 ha lies off the raster");
     QVERIFY2(run.standardError.contains("mcpp: warning: " + warning), qPrintable(run.standardError));
     const auto report = readJsonObject(out + "/report.json");
     const auto said = [&](const QJsonArray& list, const std::function<QString(const QJsonValue&)>& text) {

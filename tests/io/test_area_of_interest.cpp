@@ -6,6 +6,7 @@
 #include "tests/support/TestData.hpp"
 
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -114,10 +115,46 @@ class AreaOfInterestTest : public QObject {
         QVERIFY(applyAreaOfInterest(raster, area.toStdString(), {}).ok());
         const std::string& warning = raster.warnings.back();
         // The part on the raster is counted in whole pixels (50.1 km2 here).
-        QVERIFY2(warning.starts_with("area of interest: 25 km2 of the 50") &&
-                     warning.find(" km2 in area.geojson lies off the raster and is left out") !=
+        QVERIFY2(warning.starts_with("area of interest: of the 50") &&
+                     warning.find(" km2 in area.geojson, 25 km2 lies off the raster and is left out (") !=
                          std::string::npos,
                  warning.c_str());
+        // A polygon that crosses itself (a bow tie over the edge): its western triangle, 12.5 km2, is off.
+        LoadedRaster bowTie = zion();
+        const QString ring =
+            QStringLiteral("[[%1,4130000],[%2,4135000],[%2,4130000],[%1,4135000],[%1,4130000]]")
+                .arg(west, 0, 'f', 3)
+                .arg(west + 10000.0, 0, 'f', 3);
+        QVERIFY(writeText(area, QStringLiteral("{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\","
+                                               "\"properties\":{\"name\":\"urn:ogc:def:crs:EPSG::26912\"}},"
+                                               "\"features\":[{\"type\":\"Feature\",\"properties\":{},"
+                                               "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[%1]}}]}")
+                                    .arg(ring)
+                                    .toUtf8()));
+        QVERIFY(applyAreaOfInterest(bowTie, area.toStdString(), {}).ok());
+        QVERIFY2(bowTie.warnings.back().find(", 12.5 km2 lies off the raster and is left out") !=
+                     std::string::npos,
+                 bowTie.warnings.back().c_str());
+        // Over the raster's nodata (here a strip 2 km wide made so): left out too, and said.
+        LoadedRaster withNodata = zion();
+        withNodata.grid.outside.assign(withNodata.grid.values.size(), 0);
+        for (int row = 0; row < withNodata.grid.rows; ++row)
+            for (int column = 0; column < withNodata.grid.columns; ++column) {
+                const double x = withNodata.grid.originX + (column + 0.5) * withNodata.grid.pixelWidth;
+                if (x >= 312000.0 && x < 314000.0)
+                    withNodata.grid.outside[withNodata.grid.index(column, row)] = ClassGrid::outsideNodata;
+            }
+        QVERIFY(
+            writeText(area, rectangleJson(310000, 4130000, 320000, 4135000, "urn:ogc:def:crs:EPSG::26912")));
+        QVERIFY(applyAreaOfInterest(withNodata, area.toStdString(), {}).ok());
+        const QString nodata = QString::fromStdString(withNodata.warnings.back());
+        const QRegularExpression said(
+            QStringLiteral("^area of interest: of the 50(\\.[0-9])? km2 in area.geojson, "
+                           "([0-9.]+) km2 lies over the raster's nodata \\(no "
+                           "land cover\\) and is left out$"));
+        const QRegularExpressionMatch match = said.match(nodata);
+        QVERIFY2(match.hasMatch(), qPrintable(nodata));
+        QVERIFY2(std::abs(match.captured(2).toDouble() - 10.0) < 0.2, qPrintable(nodata));
         // Wholly on the raster: no such warning.
         LoadedRaster whole = zion();
         QVERIFY(
