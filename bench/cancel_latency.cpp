@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <mutex>
 #include <optional>
@@ -48,19 +49,25 @@ std::optional<Arguments> parse(int count, char** values) {
     return arguments;
 }
 
-// Plans once, asking to stop after `delay` seconds; prints the stage it was in and the wait.
+// Plans once, asking to stop after `delay` seconds; prints the stage it was in and the wait from the
+// request to the stop, or when the plan finished where it finished first.
 void cancelAfter(const PlanningProblem& problem, double delay) {
     std::atomic<bool> cancel{false};
     std::mutex mutex;
+    std::condition_variable planned;
+    bool done = false;
     std::string stage = "start";
+    double askedAt = -1.0;
     const auto started = std::chrono::steady_clock::now();
     const auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     };
     std::thread canceller([&] {
-        std::this_thread::sleep_for(std::chrono::duration<double>(delay));
-        const std::lock_guard lock(mutex);
-        std::printf("asked to stop at %.2f s, in %s; ", seconds(), stage.c_str());
+        std::unique_lock lock(mutex);
+        if (planned.wait_for(lock, std::chrono::duration<double>(delay), [&] { return done; }))
+            return; // finished before the request
+        askedAt = seconds();
+        std::printf("asked to stop at %.2f s, in %s; ", askedAt, stage.c_str());
         cancel = true;
     });
     const ProgressReporter progress(
@@ -69,15 +76,25 @@ void cancelAfter(const PlanningProblem& problem, double delay) {
             stage = now;
         },
         &cancel);
+    std::string outcome;
     try {
         (void)MlctPlanner{}.plan(problem, progress);
-        canceller.join();
-        std::printf("finished first, at %.2f s\n", seconds());
-    } catch (const PlanningError&) {
-        const double stopped = seconds();
-        canceller.join();
-        std::printf("stopped at %.2f s: %.2f s after the request\n", stopped, stopped - delay);
+        outcome = "finished";
+    } catch (const PlanningError& error) {
+        outcome = error.kind() == PlanningError::Kind::Cancelled ? "stopped"
+                                                                 : "failed: " + std::string(error.what());
     }
+    const double ended = seconds();
+    {
+        const std::lock_guard lock(mutex);
+        done = true;
+    }
+    planned.notify_all();
+    canceller.join();
+    if (outcome == "stopped")
+        std::printf("stopped at %.2f s: %.2f s after the request\n", ended, ended - askedAt);
+    else
+        std::printf("%s at %.2f s, before a request at %.2f s\n", outcome.c_str(), ended, delay);
 }
 
 } // namespace

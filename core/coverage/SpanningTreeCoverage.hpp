@@ -95,7 +95,8 @@ class SpanningTreeCoverage final : public CoveragePathPlanner {
 
   private:
     // bestTree, and with `walkLimit` above 0 the lone candidate's path kept when it is that small.
-    // progress, where given: a cancel request stops it between and within its candidates' builds.
+    // progress, where given: a cancel request stops it between its candidates and within the build of the
+    // turn-minimising one.
     [[nodiscard]] RegionTree bestRegionTree(const CellGraph& graph, std::vector<int> cells, int startCell,
                                             int robot, MapPoint start, std::vector<int>& scratchIndex,
                                             bool timed, std::size_t walkLimit,

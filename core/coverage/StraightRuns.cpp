@@ -107,6 +107,8 @@ class BipartiteMatching {
         for (std::size_t left = 0; left < leftCount_; ++left)
             if (matchOfLeft_[left] < 0)
                 freeLeft_.push_back(static_cast<int>(left));
+        if (progress != nullptr)
+            progress->throwIfCancelled();
         // Phases past a few add a handful of runs on maps of a million cells but cost seconds: the last
         // ones find paths of hundreds of edges one or two at a time.
         for (int phase = 0; phase < phaseLimit && layer(); ++phase) {

@@ -14,8 +14,8 @@ namespace mcpp {
 // 16 phases, so on maps of a million cells the set may fall a few runs short of the largest; it is always
 // conflict-free.
 // Returns, per adjacency of `adjacency`, whether it joins two cells of one run. A cancel request to
-// `progress` (where given) stops it between the matching's phases: on a region of millions of cells
-// they take seconds.
+// `progress` (where given) stops it after the greedy matching and between the matching's phases: on a
+// region of millions of cells they take seconds.
 [[nodiscard]] std::vector<char> straightRuns(const RegionAdjacency& adjacency,
                                              const ProgressReporter* progress = nullptr);
 

@@ -28,8 +28,9 @@ class TurnMinimisingTree {
         int cycleLimit = 64;
         int swapPasses = 2;
         int plateauRounds = 0;
-        // Where given, a cancel request stops the build (PlanningError) between its steps and every
-        // few thousand swaps tried: a region of millions of cells takes tens of seconds.
+        // Where given, a cancel request stops the build (PlanningError) between its steps, every 65 536
+        // edges its swap passes scan and each plateau round: a region of millions of cells takes tens of
+        // seconds.
         const ProgressReporter* progress = nullptr;
     };
 

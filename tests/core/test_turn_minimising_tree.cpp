@@ -356,6 +356,7 @@ class TurnMinimisingTreeTest : public QObject {
             }
             return false;
         };
+        QVERIFY(cancelled([&] { (void)straightRuns(adjacency, &progress); }));
         QVERIFY(cancelled([&] { (void)TurnMinimisingTree(adjacency, options); }));
         options.plateauRounds = 0;
         QVERIFY(cancelled([&] { (void)TurnMinimisingTree(adjacency, options); }));
