@@ -70,10 +70,12 @@ std::string outcomeName(ComparisonRow::Outcome outcome) {
 
 Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::string& path) {
     const std::vector<std::string> stages = stageNames(rows);
-    std::string text = "planner,outcome,rank,time_to_first,makespan_s,lower_bound_s,ratio,total_length_m,"
-                       "turns,covered_fraction,"
-                       "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
-                       "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread";
+    // time_vs_first after the columns earlier versions wrote, so that scripts reading them by place still
+    // find them there.
+    std::string text =
+        "planner,outcome,rank,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
+        "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
+        "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread,time_vs_first";
     for (const std::string& stage : stages)
         text += "," + stageColumn(stage);
     text += ",message\n";
@@ -86,7 +88,6 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
         const auto figure = [&](double value) { return planned ? formatShortest(value) : std::string(); };
         text += internal::quoteCsvField(row.planner) + "," + outcomeName(row.outcome) + "," +
                 (planned ? std::to_string(ranks[index]) : std::string()) + "," +
-                (againstFirst[index] > 0.0 ? formatShortest(againstFirst[index]) : std::string()) + "," +
                 figure(metrics.makespanSeconds) + "," + figure(metrics.lowerBoundSeconds) + "," +
                 figure(metrics.ratio) + "," + figure(metrics.totalLengthMetres()) + "," +
                 (planned ? std::to_string(metrics.totalTurns()) : std::string()) + "," +
@@ -98,7 +99,8 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
                 "," + figure(row.planningMilliseconds) + "," + figure(row.peakMemoryMegabytes) + "," +
                 fieldFigure(row, metrics.fieldMakespanSeconds) + "," +
                 fieldFigure(row, metrics.fieldLowerBoundSeconds) + "," +
-                fieldFigure(row, metrics.fieldSpread());
+                fieldFigure(row, metrics.fieldSpread()) + "," +
+                (againstFirst[index] > 0.0 ? formatShortest(againstFirst[index]) : std::string());
         for (const std::string& stage : stages)
             text += "," + (planned ? formatShortest(stageMilliseconds(metrics, stage)) : std::string());
         text += "," + internal::quoteCsvField(row.message) + "\n";
@@ -123,7 +125,7 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         const PlanMetrics& metrics = row.metrics;
         item.add("rank", ranks[index]);
         if (againstFirst[index] > 0.0)
-            item.add("time_to_first", againstFirst[index]);
+            item.add("time_vs_first", againstFirst[index]);
         item.add("makespan_s", metrics.makespanSeconds);
         item.add("lower_bound_s", metrics.lowerBoundSeconds);
         item.add("ratio", metrics.ratio);

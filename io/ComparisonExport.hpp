@@ -26,7 +26,7 @@ struct ComparisonRow {
 
 // comparison.csv: a row per planner, in the order asked, with its rank (ComparisonRanking: 1 is the soonest
 // done of the plans covering the most; empty where it did not plan), its time done against the first's
-// (time_to_first: ComparisonRanking's timesTheFirst, empty where it has none) and the figures of its
+// (time_vs_first: ComparisonRanking's timesTheFirst, empty where it has none) and the figures of its
 // report.json, per-robot lengths and times joined by ";" in one field each; comparison.json: the same, with
 // per-robot figures as arrays.
 [[nodiscard]] Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::string& path);
