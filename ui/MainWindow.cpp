@@ -73,7 +73,9 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
+#include <map>
 #include <optional>
+#include <set>
 
 namespace mcpp::ui {
 
@@ -141,6 +143,15 @@ QString formatDegrees(double value, QChar positive, QChar negative) {
 }
 
 // Warnings come from io as clauses ("no CRS: ..."); in the window they follow other sentences.
+// A plan's message as the messages panel keeps it: a sentence, a robot's name as written and the robots it
+// numbers named.
+QString loggedText(const std::string& message, const std::vector<std::string>& robotNames) {
+    QString text = QString::fromStdString(message + io::robotsNamedIn(message, robotNames, false));
+    if (!text.endsWith(QLatin1Char('.')))
+        text += QLatin1Char('.');
+    return text;
+}
+
 QString asSentence(const std::string& clause) {
     QString text = QString::fromStdString(clause).trimmed();
     if (text.isEmpty())
@@ -1737,10 +1748,7 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
                     io::planningErrorText(*error, fieldNamer(comparison_.choices[row].planner), robotNames()))
                 comparison_.rows[row].message = *named;
     comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes());
-    for (std::size_t row = 0; row < comparison_.plans.size() && row < comparison_.rows.size(); ++row)
-        if (comparison_.plans[row])
-            logPlanIssues(*comparison_.plans[row], QString::fromStdString(comparison_.rows[row].planner),
-                          false);
+    logComparedWarnings();
     comparisonDock_->show();
     comparisonDock_->raise();
     const auto planned = std::count_if(outcome.plans.begin(), outcome.plans.end(),
@@ -1753,21 +1761,39 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     emit comparisonFinished(!outcome.cancelled && planned > 0);
 }
 
-// A plan's warnings (and with `notes`, its notes), whole, in the messages panel, where every message is
-// kept; `planner` leads each where several plans are logged.
-void MainWindow::logPlanIssues(const Plan& plan, const QString& planner, bool notes) {
+// A plan's warnings and notes, whole, in the messages panel, where every message is kept.
+void MainWindow::logPlanIssues(const Plan& plan) {
     const std::vector<std::string> names = robotNames();
-    for (const PlanIssue& issue : plan.issues) {
-        const bool note = issue.severity == IssueSeverity::Information;
-        if (note && !notes)
+    for (const PlanIssue& issue : plan.issues)
+        messageLog_->add((issue.severity == IssueSeverity::Information ? tr("Note: %1") : tr("Warning: %1"))
+                             .arg(loggedText(issue.message, names)));
+}
+
+// Each compared plan's warnings under its planner's name; one that several plans carry (the mission's own,
+// such as land no robot reaches) once, under none, as batch mode says them.
+void MainWindow::logComparedWarnings() {
+    std::map<std::string, int> plansCarrying;
+    for (const auto& plan : comparison_.plans) {
+        if (!plan)
             continue;
-        // A robot's name stays as written, and the robots a warning numbers are named.
-        QString text = QString::fromStdString(issue.message + io::robotsNamedIn(issue.message, names, false));
-        if (!text.endsWith(QLatin1Char('.')))
-            text += QLatin1Char('.');
-        if (!planner.isEmpty())
-            text = planner + QStringLiteral(": ") + text;
-        messageLog_->add((note ? tr("Note: %1") : tr("Warning: %1")).arg(text));
+        const std::vector<std::string> warnings = plan->warnings();
+        for (const std::string& warning : std::set<std::string>(warnings.begin(), warnings.end()))
+            ++plansCarrying[warning];
+    }
+    std::set<std::string> saidOnce;
+    const std::vector<std::string> names = robotNames();
+    for (std::size_t row = 0; row < comparison_.plans.size() && row < comparison_.rows.size(); ++row) {
+        if (!comparison_.plans[row])
+            continue;
+        for (const std::string& warning : comparison_.plans[row]->warnings()) {
+            const bool shared = plansCarrying[warning] > 1;
+            if (shared && !saidOnce.insert(warning).second)
+                continue;
+            QString text = loggedText(warning, names);
+            if (!shared)
+                text = QString::fromStdString(comparison_.rows[row].planner) + QStringLiteral(": ") + text;
+            messageLog_->add(tr("Warning: %1").arg(text));
+        }
     }
 }
 
@@ -1878,7 +1904,7 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                                     .arg(ResultsPanel::formatDuration(metrics.makespanSeconds))
                                     .arg(metrics.ratio, 0, 'f', 3), // as plan.png gives it
                    15000);
-        logPlanIssues(*outcome.plan, {}, true);
+        logPlanIssues(*outcome.plan); // whole, where every message is kept
     } else if (outcome.cancelled) {
         showStatus(tr("Planning cancelled; the previous plan, if any, is kept."));
     }

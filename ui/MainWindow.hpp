@@ -170,7 +170,8 @@ class MainWindow : public QMainWindow {
     void handleExportFinished(const ExportOutcome& outcome);
     void handleComparisonFinished(const ComparisonOutcome& outcome);
     void showComparedPlan(int row);
-    void logPlanIssues(const Plan& plan, const QString& planner, bool notes);
+    void logPlanIssues(const Plan& plan);
+    void logComparedWarnings();
     void showBusy(const QString& stage, bool busy);
     void placeStart(MapPoint point);
     void removeSelectedRobot();
