@@ -258,15 +258,11 @@ void BatchRunner::loadRaster() {
         badInput((absent ? given : std::string()) + namingFile(rasterPath, loaded.error()));
     }
     raster_ = std::move(loaded.value());
-    const std::size_t rasterWarnings = raster_.warnings.size();
     if (const io::Status area = io::applyMissionArea(raster_, mission_, missionPath); !area)
         badInput(areaGivenIn(area.error()) +
                  "area of interest: " + area.error()); // the message names the polygon file
-    // What the area leaves to plan ("planning on 4.04 km2 of the map", said first) is news, not a warning;
-    // a part of it off the raster is.
-    for (std::size_t i = 0; i < raster_.warnings.size(); ++i)
-        (i == rasterWarnings ? pendingNotes_ : pendingWarnings_).push_back(raster_.warnings[i]);
-    raster_.warnings.resize(rasterWarnings);
+    pendingNotes_.insert(pendingNotes_.end(), raster_.notes.begin(), raster_.notes.end());
+    pendingWarnings_.insert(pendingWarnings_.end(), raster_.warnings.begin(), raster_.warnings.end());
 }
 
 // Where the polygon file a message names was given: its flag, or the mission file and its key.

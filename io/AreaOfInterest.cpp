@@ -302,8 +302,8 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
     }
     raster.classPixelCounts = std::move(counts);
     const double pixelArea = grid.pixelWidth * grid.pixelHeight;
-    raster.warnings.push_back("area of interest: planning on " +
-                              formatArea(static_cast<double>(inside) * pixelArea) + " of the map");
+    raster.notes.push_back("area of interest: planning on " +
+                           formatArea(static_cast<double>(inside) * pixelArea) + " of the map");
     if (auto leftOut = areaLeftOut(offTheRaster, static_cast<double>(laidPixels) * pixelArea,
                                    static_cast<double>(overNodata) * pixelArea, pixelArea, includePath))
         raster.warnings.push_back(std::move(*leftOut));

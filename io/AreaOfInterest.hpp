@@ -12,9 +12,9 @@ namespace mcpp::io {
 // Limits the raster's task area to the polygons of includePath (when not empty) and takes out those of
 // excludePath (no-go zones): the pixels left out become outside, as nodata is, so every planner keeps to
 // the area. The files are any vector format GDAL reads; their polygons are taken to the raster's planning
-// CRS (a file without a CRS is taken to be in the raster's CRS units). Class counts follow. raster.warnings
-// gains how much of the map is left (news more than a warning), then, where some of the area lies off the
-// raster, how much. Errors name the file and what is wrong with it.
+// CRS (a file without a CRS is taken to be in the raster's CRS units). Class counts follow. raster.notes
+// gains how much of the map is left; raster.warnings, where some of the area lies off the raster or over its
+// nodata, how much. Errors name the file and what is wrong with it.
 [[nodiscard]] Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
                                          const std::string& excludePath);
 

@@ -24,6 +24,7 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
     context.cancelRequested = &cancelRequested;
     context.robotNames = job.robotNames;
     context.vehicles = job.vehicles;
+    context.inputWarnings = job.raster->warnings; // the raster's and its area's, as batch mode's report has
     const int files = static_cast<int>(job.files.size());
     for (int file = 0; file < files; ++file) {
         if (cancelRequested.load()) {

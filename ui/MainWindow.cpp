@@ -1042,17 +1042,19 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
     runner_->cancel();
     mission.rasterPath = document_->mission().rasterPath;
     const bool wholeMap = mission.area.empty();
-    const std::vector<std::string> warnings = raster.value().warnings;
+    // What the area leaves to plan on, and how much of it lies off the raster (the raster's own warnings
+    // were said when it was opened).
+    QStringList areaNotes;
+    for (const std::string& note : raster.value().notes)
+        areaNotes << asSentence(note);
+    for (const std::string& warning : raster.value().warnings)
+        if (warning.starts_with("area of interest"))
+            areaNotes << asSentence(warning);
     document_->reset(std::make_shared<io::LoadedRaster>(std::move(raster.value())), std::move(mission),
                      document_->missionPath());
     settingsModified_ = true;
     updateTitle();
     updateActions();
-    // What the area leaves to plan on, and how much of it lies off the raster.
-    QStringList areaNotes;
-    for (const std::string& warning : warnings)
-        if (warning.starts_with("area of interest"))
-            areaNotes << asSentence(warning);
     QString message = wholeMap ? tr("Planning on the whole map again.") : areaNotes.join(QLatin1Char(' '));
     // Starts the new area leaves out are kept, to be moved: say so now rather than at Plan.
     QStringList outside;
@@ -1274,7 +1276,8 @@ bool MainWindow::openMission(const QString& path) {
         mission.robots[robot].startCrs.clear();
     }
     runner_->cancel();
-    const std::vector<std::string> warnings = raster.value().warnings;
+    std::vector<std::string> warnings = raster.value().notes;
+    warnings.insert(warnings.end(), raster.value().warnings.begin(), raster.value().warnings.end());
     document_->reset(std::make_shared<io::LoadedRaster>(std::move(raster.value())), std::move(mission),
                      QFileInfo(path).absoluteFilePath());
     undoStack_->clear();

@@ -96,7 +96,7 @@ class AreaOfInterestTest : public QObject {
         QCOMPARE(flagAt(raster, 304000, 4131000), ClassGrid::outsideArea);
         QCOMPARE(flagAt(raster, 312500, 4137500), ClassGrid::inNoGoZone);
         QVERIFY(insideAt(raster, 316000, 4137500));
-        QVERIFY(raster.warnings.back().find("area of interest") != std::string::npos);
+        QVERIFY(raster.notes.back().find("area of interest: planning on ") != std::string::npos);
         std::int64_t outsideFlags = 0;
         for (const std::uint8_t flag : raster.grid.outside)
             outsideFlags += flag != 0;

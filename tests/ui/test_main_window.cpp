@@ -40,6 +40,7 @@
 #include <QSignalSpy>
 #include <QStackedBarSeries>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QToolBar>
@@ -1123,6 +1124,18 @@ class TestMainWindow : public QObject {
 
         QVERIFY(window.setAreaFiles({}, {}));
         QCOMPARE(insideCount(), whole);
+        // An area reaching past the raster's west edge (x 301 903): the window says how much is left out.
+        const QString past = directory.filePath("past.geojson");
+        QVERIFY(writeFile(past, R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":
+            "urn:ogc:def:crs:EPSG::26912"}},"features":[{"type":"Feature","properties":{},"geometry":{"type":
+            "Polygon","coordinates":[[[296903.344,4130000],[306903.344,4130000],[306903.344,4135000],
+            [296903.344,4135000],[296903.344,4130000]]]}}]})"));
+        QVERIFY2(window.setAreaFiles(past, QString()), qPrintable(window.lastError()));
+        const QString status = window.statusBar()->currentMessage();
+        QVERIFY2(status.contains(QStringLiteral("Area of interest: planning on ")) &&
+                     status.contains(QStringLiteral(", 25 km2 lies off the raster and is left out")),
+                 qPrintable(status));
+        QVERIFY(window.setAreaFiles({}, {}));
         QVERIFY(!window.setAreaFiles(directory.filePath("absent.gpkg"), {}));
         QVERIFY(window.lastError().contains(QStringLiteral("absent.gpkg")));
         QCOMPARE(insideCount(), whole); // a refused area leaves the map as it was
