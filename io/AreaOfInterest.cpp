@@ -138,8 +138,7 @@ std::unique_ptr<OGRGeometry> unionOf(const std::vector<std::unique_ptr<OGRGeomet
         else
             all.addGeometry(geometry);
     }
-    const QuietGdalErrors quiet;
-    return std::unique_ptr<OGRGeometry>(all.UnionCascaded());
+    return std::unique_ptr<OGRGeometry>(all.UnionCascaded()); // the caller keeps GDAL quiet
 }
 
 double areaOf(const OGRGeometry* geometry) {
