@@ -397,6 +397,7 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     }
     io::ExportContext context{plan, raster_.georeference, classes_, mission_.exports};
     context.grid = &raster_.grid;
+    context.area = &raster_.area;
     context.drawImage = render::planImageWriter(planImageSide);
     context.robotNames = io::robotNames(mission_);
     context.vehicles = io::robotVehicles(mission_);

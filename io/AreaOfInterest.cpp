@@ -45,6 +45,23 @@ void scaleRings(OGRGeometry& geometry, double factor) {
     }
 }
 
+// Each ring of the polygons (outer rings and holes) as corners in the planning frame, for drawing.
+void appendRings(const OGRGeometry& geometry, std::vector<std::vector<MapPoint>>& rings) {
+    if (const auto* collection = dynamic_cast<const OGRGeometryCollection*>(&geometry)) {
+        for (int index = 0; index < collection->getNumGeometries(); ++index)
+            appendRings(*collection->getGeometryRef(index), rings);
+        return;
+    }
+    if (const auto* polygon = dynamic_cast<const OGRPolygon*>(&geometry)) {
+        for (const OGRLinearRing* ring : *polygon) {
+            std::vector<MapPoint>& corners = rings.emplace_back();
+            corners.reserve(static_cast<std::size_t>(ring->getNumPoints()));
+            for (int point = 0; point < ring->getNumPoints(); ++point)
+                corners.push_back({ring->getX(point), ring->getY(point)});
+        }
+    }
+}
+
 // Where a file's CRS is in degrees but its coordinates cannot be (metres read as longitude and latitude,
 // most often a GeoJSON file without a "crs" member), what to do about it; empty otherwise.
 std::string notDegreesProblem(const OGRGeometry& geometry, const OGRSpatialReference& source,
@@ -195,6 +212,7 @@ double areaOffTheRaster(const OwnedGeometries& polygons, const ClassGrid& grid) 
 struct LaidArea {
     std::vector<std::uint8_t> mask;
     double offTheRaster = 0.0;
+    std::vector<std::vector<MapPoint>> rings; // the polygons' edges, planning frame
 };
 
 // measured: whether to measure the part off the raster (an area to plan on, not a no-go zone).
@@ -224,7 +242,10 @@ Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster, 
         return Mask::failure(path + ": its polygons could not be laid on the raster" +
                              QuietGdalErrors::detail());
     const double off = measured ? areaOffTheRaster(polygons, grid) : 0.0;
-    return LaidArea{std::move(mask), off};
+    std::vector<std::vector<MapPoint>> rings;
+    for (const OGRGeometry* geometry : polygons.geometries)
+        appendRings(*geometry, rings);
+    return LaidArea{std::move(mask), off, std::move(rings)};
 }
 
 // What of the area drawn to plan on is left out, off the raster or over its nodata, where that is more than a
@@ -265,12 +286,14 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
             return Status::failure(laid.error());
         include = std::move(laid.value().mask);
         offTheRaster = laid.value().offTheRaster;
+        raster.area.include = std::move(laid.value().rings);
     }
     if (!excludePath.empty()) {
         auto laid = rasterise(excludePath, raster, false);
         if (!laid)
             return Status::failure(laid.error());
         exclude = std::move(laid.value().mask);
+        raster.area.exclude = std::move(laid.value().rings);
     }
     std::map<std::int32_t, std::int64_t> counts;
     std::int64_t inside = 0;

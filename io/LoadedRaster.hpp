@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/AreaOutline.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "io/GeoReference.hpp"
 
@@ -36,6 +37,8 @@ struct LoadedRaster {
     std::vector<std::string> warnings;
     // News, not warnings: what an area of interest leaves to plan on ("planning on 4.04 km2 of the map").
     std::vector<std::string> notes;
+    // The area of interest's and the no-go zones' polygons the raster was limited to (applyAreaOfInterest).
+    AreaOutline area;
 };
 
 struct RasterLoadOptions {

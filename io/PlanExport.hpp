@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/AreaOutline.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
 #include "core/outlines/RegionOutlines.hpp"
@@ -32,7 +33,8 @@ struct ExportContext {
     const GeoReference& georeference;
     const ClassTable& classes;
     ExportSettings settings;
-    const ClassGrid* grid = nullptr; // the land cover, for pictures
+    const ClassGrid* grid = nullptr;   // the land cover, for pictures
+    const AreaOutline* area = nullptr; // the area of interest's and no-go zones' edges, for pictures
     ImageWriter drawImage = {};
     // What the whole run took so far (batch mode: read_raster, plan, write_outputs), for report.json.
     std::vector<std::pair<std::string, double>> processMilliseconds = {};

@@ -12,6 +12,7 @@ struct MapLayers {
     bool unreachable = true;
     bool crossings = true; // cells whose path crosses small impassable patches
     bool detection = true; // what a detection plan's passes see, in place of the region tint
+    bool area = true;      // the area of interest's and no-go zones' edges
 
     friend bool operator==(const MapLayers&, const MapLayers&) = default;
 };

@@ -11,7 +11,7 @@ io::ImageWriter planImageWriter(int pngSide) {
             return io::Status::failure(path + ": there is no map to draw");
         QString error;
         const QString file = QString::fromStdString(path);
-        SheetExtras extras{&context.outlines(), context.robotNames, {}};
+        SheetExtras extras{&context.outlines(), context.robotNames, {}, context.area};
         for (std::size_t robot = 0; robot < context.plan.paths.size(); ++robot)
             extras.flightReach.push_back(io::flightReachMetres(context.vehicle(static_cast<int>(robot))));
         const bool written = format == io::ImageFormat::Png

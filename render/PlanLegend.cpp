@@ -116,6 +116,20 @@ void paintSymbol(QPainter& painter, const LegendItem& item, const QRectF& box) {
         painter.setBrush(Qt::NoBrush);
         painter.drawEllipse(swatch);
         break;
+    case LegendSymbol::AreaEdge:
+    case LegendSymbol::NoGoZone: {
+        const bool noGo = item.symbol == LegendSymbol::NoGoZone;
+        const QRectF zone = swatch.adjusted(1.5, 1.5, -1.5, -1.5);
+        painter.setPen(QPen(QColor(255, 255, 255, 220), 3.0));
+        painter.setBrush(noGo ? QBrush(item.colour, Qt::DiagCrossPattern) : QBrush(Qt::NoBrush));
+        painter.drawRect(zone);
+        QPen dashes(item.colour, 1.5, Qt::CustomDashLine, Qt::FlatCap, Qt::MiterJoin);
+        dashes.setDashPattern({4.0, 2.5});
+        painter.setPen(dashes);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(zone);
+        break;
+    }
     case LegendSymbol::CellOutline:
         painter.setPen(QPen(item.colour, 1.0));
         painter.setBrush(Qt::NoBrush);
@@ -226,6 +240,22 @@ void addFlightReach(std::vector<LegendSection>& sections, const std::vector<doub
                                      RobotPalette::colour(0).darker(130),
                                      QStringLiteral("How far one flight reaches and comes back"),
                                      {}});
+}
+
+void addAreaOutline(std::vector<LegendSection>& sections, const AreaOutline& area) {
+    if (area.empty())
+        return;
+    const QString title = QStringLiteral("On the map");
+    if (sections.empty() || sections.back().title != title)
+        sections.push_back({title, {}});
+    if (!area.include.empty())
+        sections.back().items.push_back({LegendSymbol::AreaEdge,
+                                         RobotPalette::areaEdgeColour(),
+                                         QStringLiteral("Edge of the area of interest"),
+                                         {}});
+    if (!area.exclude.empty())
+        sections.back().items.push_back(
+            {LegendSymbol::NoGoZone, RobotPalette::noGoColour(), QStringLiteral("No-go zone"), {}});
 }
 
 QSizeF legendSize(const std::vector<LegendSection>& sections, const QFont& font) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/coverage/ImpassableCrossings.hpp"
+#include "core/model/AreaOutline.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
@@ -25,7 +26,9 @@ enum class LegendSymbol {
     TakenOver,
     CellOutline,
     Crossing,
-    FlightReach
+    FlightReach,
+    AreaEdge,
+    NoGoZone
 };
 
 struct LegendItem {
@@ -52,6 +55,10 @@ planLegend(const ClassTable& classes, const Plan* plan, const std::vector<std::s
 // "On the map" section (making one when there is no plan yet) when any robot's reach (by robot, metres) is
 // drawn.
 void addFlightReach(std::vector<LegendSection>& sections, const std::vector<double>& reaches);
+
+// Adds the lines for the area of interest's edge and the no-go zones (PlanRenderer::setArea) to the
+// legend's "On the map" section (making one when there is no plan yet), for those the area has.
+void addAreaOutline(std::vector<LegendSection>& sections, const AreaOutline& area);
 
 // The size the legend needs in this font, and the legend itself drawn from topLeft.
 [[nodiscard]] QSizeF legendSize(const std::vector<LegendSection>& sections, const QFont& font);

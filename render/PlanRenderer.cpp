@@ -457,6 +457,10 @@ void PlanRenderer::paintMap(QPainter& painter, const QTransform& worldToDevice,
             paintPaths(painter, worldToDevice, deviceArea);
         painter.setOpacity(1.0);
     }
+    // Over the plan and past the raster's edge: what was asked for, against the cells that cover it.
+    painter.setClipping(false);
+    if (layers_.area)
+        paintArea(painter, worldToDevice, deviceArea);
     painter.restore();
 }
 
@@ -701,6 +705,56 @@ void PlanRenderer::paintCrossings(QPainter& painter, const QTransform& worldToDe
             continue;
         painter.drawRect(worldToDevice.mapRect(cell).adjusted(1.5, 1.5, -1.5, -1.5));
     }
+}
+
+void PlanRenderer::setArea(const AreaOutline& area) {
+    const auto outlinesOf = [](const std::vector<std::vector<MapPoint>>& rings) {
+        std::vector<Outline> outlines;
+        outlines.reserve(rings.size());
+        for (const std::vector<MapPoint>& corners : rings) {
+            if (corners.size() < 3)
+                continue;
+            QPolygonF ring;
+            ring.reserve(static_cast<qsizetype>(corners.size()) + 1);
+            for (const MapPoint& corner : corners)
+                ring << QPointF(corner.x, corner.y);
+            if (ring.front() != ring.back())
+                ring << ring.front();
+            outlines.push_back({ring, ring.boundingRect()});
+        }
+        return outlines;
+    };
+    areaEdges_ = outlinesOf(area.include);
+    noGoEdges_ = outlinesOf(area.exclude);
+}
+
+// A white halo under a dark dashed line reads on any land cover and over the paths; no-go zones are hatched
+// red as well, since the land cover leaves them empty, as it does the land outside the area.
+void PlanRenderer::paintArea(QPainter& painter, const QTransform& worldToDevice,
+                             const QRectF& deviceArea) const {
+    const QRectF visible = worldToDevice.inverted().mapRect(deviceArea);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    const auto draw = [&](const std::vector<Outline>& outlines, const QColor& colour, const QBrush& fill) {
+        for (const Outline& outline : outlines) {
+            if (!touches(outline.bounds, visible))
+                continue;
+            const QPolygonF ring = worldToDevice.map(outline.ring);
+            if (fill.style() != Qt::NoBrush) {
+                painter.setPen(Qt::NoPen);
+                painter.setBrush(fill);
+                painter.drawPolygon(ring);
+            }
+            painter.setBrush(Qt::NoBrush);
+            painter.setPen(QPen(QColor(255, 255, 255, 220), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            painter.drawPolyline(ring);
+            QPen dashes(colour, 2.0, Qt::CustomDashLine, Qt::FlatCap, Qt::RoundJoin);
+            dashes.setDashPattern({4.0, 2.5});
+            painter.setPen(dashes);
+            painter.drawPolyline(ring);
+        }
+    };
+    draw(areaEdges_, RobotPalette::areaEdgeColour(), Qt::NoBrush);
+    draw(noGoEdges_, RobotPalette::noGoColour(), QBrush(RobotPalette::noGoColour(), Qt::DiagCrossPattern));
 }
 
 void PlanRenderer::paintStarts(QPainter& painter, const QTransform& worldToDevice) const {

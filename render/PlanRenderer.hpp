@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/coverage/ImpassableCrossings.hpp"
+#include "core/model/AreaOutline.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/MapPoint.hpp"
@@ -40,6 +41,9 @@ class PlanRenderer {
     // By robot, how far its aircraft flies out and back in one flight (io::flightReachMetres), drawn as a
     // dashed ring round its start: ground outside cannot be covered from there. 0: no ring.
     void setFlightReach(std::vector<double> metres) { flightReach_ = std::move(metres); }
+    // The area of interest's and the no-go zones' edges, drawn over the plan (a dashed line; no-go zones
+    // hatched red), with or without a plan.
+    void setArea(const AreaOutline& area);
     void setLayers(const MapLayers& layers) { layers_ = layers; }
     // A plan simulated over time shown at one moment: each path as driven so far, each robot where it is.
     // Empty: the whole paths.
@@ -113,6 +117,7 @@ class PlanRenderer {
     void drawPathLine(QPainter& painter, const QPolygonF& points, const QColor& colour,
                       const QTransform& worldToDevice, const QRectF& visibleDevice, bool dense) const;
     void paintCrossings(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
+    void paintArea(QPainter& painter, const QTransform& worldToDevice, const QRectF& deviceArea) const;
     void paintStarts(QPainter& painter, const QTransform& worldToDevice) const;
     void paintChargers(QPainter& painter, const QTransform& worldToDevice) const;
     void paintTakeOffLegs(QPainter& painter, const QTransform& worldToDevice) const;
@@ -125,6 +130,8 @@ class PlanRenderer {
     std::vector<GridImage> detectionPyramid_; // empty when the plan has no detection layer
     std::vector<Outline> regionBorders_;
     std::vector<Outline> unreachableOutlines_;
+    std::vector<Outline> areaEdges_;                         // the area of interest's rings
+    std::vector<Outline> noGoEdges_;                         // the no-go zones' rings
     std::vector<std::pair<int, Outline>> takenOverOutlines_; // (robot, outline): the cells it took over
     std::vector<std::optional<MapPoint>> chargers_;          // by robot: a charger away from its start
     std::vector<double> flightReach_;                        // by robot, metres; 0: none

@@ -50,6 +50,8 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
     // Only rings that show in the frame are explained (one round a far take-off may lie wholly outside).
     if (someRingShows(frame_, rings_))
         addFlightReach(sections_, extras_.flightReach);
+    if (extras_.area != nullptr)
+        addAreaOutline(sections_, *extras_.area);
     const QSize mapSize = fittedMapSize(frame_, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
     const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);
@@ -80,6 +82,8 @@ void PlanSheet::paint(QPainter& painter) const {
     renderer.setMap(&grid_, &classes_);
     renderer.setPlan(&plan_, extras_.outlines, &crossings_);
     renderer.setFlightReach(extras_.flightReach);
+    if (extras_.area != nullptr)
+        renderer.setArea(*extras_.area);
     painter.save();
     painter.setClipRect(map_);
     // The renderer draws in device coordinates: the map's placement goes into its transform.

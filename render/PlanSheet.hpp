@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/AreaOutline.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
@@ -20,6 +21,7 @@ struct SheetExtras {
     const RegionOutlines* outlines = nullptr; // the plan's region outlines; traced here when null
     std::vector<std::string> robotNames;      // by robot; empty names read "Robot n"
     std::vector<double> flightReach;          // by robot, metres: rings round aircraft starts
+    const AreaOutline* area = nullptr;        // the area of interest's and no-go zones' edges, if any
 };
 
 // The exported picture of a plan as a map sheet: a title, the map (the plan's frame, planFrame) fitted into

@@ -15,6 +15,9 @@ class RobotPalette {
     [[nodiscard]] static QColor levelColour(int level, int levels);
     // Dashes around cells whose path crosses impassable land: dark red, like the unreachable hatching.
     [[nodiscard]] static QColor crossingColour() { return {150, 0, 20}; }
+    // The area of interest's edge, near black, and the no-go zones', a brighter red than the crossings'.
+    [[nodiscard]] static QColor areaEdgeColour() { return {25, 25, 25}; }
+    [[nodiscard]] static QColor noGoColour() { return {215, 25, 25}; }
 };
 
 } // namespace mcpp::render

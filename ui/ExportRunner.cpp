@@ -20,6 +20,7 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
     }
     io::ExportContext context{*job.plan, job.raster->georeference, job.classes, job.settings};
     context.grid = &job.raster->grid;
+    context.area = &job.raster->area;
     context.drawImage = render::planImageWriter(job.imageSide);
     context.cancelRequested = &cancelRequested;
     context.robotNames = job.robotNames;

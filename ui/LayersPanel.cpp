@@ -27,6 +27,9 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     detection_ = addToggle(QStringLiteral("layerDetection"), tr("Detection"),
                            tr("For CPPIED plans: how likely the passes see a target in each cell, from red "
                               "(not seen) to green (the required probability), in place of the region tint"));
+    area_ = addToggle(QStringLiteral("layerArea"), tr("Area edges"),
+                      tr("Dashed: the edge of the area of interest as drawn or read from its file, and the "
+                         "no-go zones, hatched red; cells along the edge may reach past it"));
     layout->addStretch(1);
 }
 
@@ -50,14 +53,15 @@ render::MapLayers LayersPanel::layers() const {
     layers.unreachable = unreachable_->isChecked();
     layers.crossings = crossings_->isChecked();
     layers.detection = detection_->isChecked();
+    layers.area = area_->isChecked();
     return layers;
 }
 
 void LayersPanel::setLayers(const render::MapLayers& layers) {
-    const QSignalBlocker blockers[] = {QSignalBlocker(landCover_), QSignalBlocker(quadTree_),
-                                       QSignalBlocker(regions_),   QSignalBlocker(paths_),
-                                       QSignalBlocker(starts_),    QSignalBlocker(unreachable_),
-                                       QSignalBlocker(crossings_), QSignalBlocker(detection_)};
+    const QSignalBlocker blockers[] = {
+        QSignalBlocker(landCover_), QSignalBlocker(quadTree_),  QSignalBlocker(regions_),
+        QSignalBlocker(paths_),     QSignalBlocker(starts_),    QSignalBlocker(unreachable_),
+        QSignalBlocker(crossings_), QSignalBlocker(detection_), QSignalBlocker(area_)};
     landCover_->setChecked(layers.landCover);
     quadTree_->setChecked(layers.quadTree);
     regions_->setChecked(layers.regions);
@@ -66,6 +70,7 @@ void LayersPanel::setLayers(const render::MapLayers& layers) {
     unreachable_->setChecked(layers.unreachable);
     crossings_->setChecked(layers.crossings);
     detection_->setChecked(layers.detection);
+    area_->setChecked(layers.area);
     emit layersChanged(this->layers());
 }
 

@@ -31,6 +31,7 @@ class LayersPanel : public QWidget {
     QCheckBox* unreachable_;
     QCheckBox* crossings_;
     QCheckBox* detection_;
+    QCheckBox* area_;
 };
 
 } // namespace mcpp::ui

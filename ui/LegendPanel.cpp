@@ -26,6 +26,8 @@ void LegendPanel::rebuild() {
         sections_ = render::planLegend(document_->classes(), document_->plan(),
                                        io::robotNames(document_->mission()), document_->grid());
         render::addFlightReach(sections_, io::flightReachesMetres(io::robotVehicles(document_->mission())));
+        if (document_->raster() != nullptr)
+            render::addAreaOutline(sections_, document_->raster()->area);
     }
     setMinimumSize(sizeHint());
     updateGeometry();

@@ -72,6 +72,7 @@ MapCanvas::MapCanvas(MissionDocument* document, QWidget* parent) : QWidget(paren
 
 void MapCanvas::refreshMap() {
     renderer_.setMap(document_->grid(), &document_->classes());
+    renderer_.setArea(document_->raster() != nullptr ? document_->raster()->area : AreaOutline{});
     // Preparing a plan's drawing takes a while on large maps: redone only for another plan (planChanged
     // always passes the new one).
     if (renderer_.plan() != document_->plan())

@@ -101,6 +101,18 @@ class AreaOfInterestTest : public QObject {
         for (const std::uint8_t flag : raster.grid.outside)
             outsideFlags += flag != 0;
         QCOMPARE(outsideFlags + insidePixels(raster), static_cast<std::int64_t>(raster.grid.values.size()));
+        // The polygons themselves are kept for drawing, corner for corner in the planning frame.
+        QCOMPARE(raster.area.include.size(), std::size_t{1});
+        QCOMPARE(raster.area.exclude.size(), std::size_t{1});
+        const std::vector<MapPoint> areaRing{
+            {305000, 4130000}, {325000, 4130000}, {325000, 4150000}, {305000, 4150000}, {305000, 4130000}};
+        QCOMPARE(raster.area.include.front().size(), areaRing.size());
+        for (std::size_t corner = 0; corner < areaRing.size(); ++corner) {
+            QCOMPARE(raster.area.include.front()[corner].x, areaRing[corner].x);
+            QCOMPARE(raster.area.include.front()[corner].y, areaRing[corner].y);
+        }
+        QCOMPARE(raster.area.exclude.front()[2].x, 315000.0);
+        QCOMPARE(raster.area.exclude.front()[2].y, 4140000.0);
     }
 
     // An area drawn partly off the raster is cut to it, and a warning says how much of it was left out.
@@ -198,6 +210,13 @@ class AreaOfInterestTest : public QObject {
         QVERIFY(insideAt(raster, 315000, 4140000));
         QVERIFY(!insideAt(raster, 330000, 4140000));
         QVERIFY(!insideAt(raster, 315000, 4120000));
+        // Its edge is kept in the raster's CRS too (metres, not degrees), and no no-go zone was given.
+        QCOMPARE(raster.area.include.size(), std::size_t{1});
+        QVERIFY(raster.area.exclude.empty());
+        for (const MapPoint& corner : raster.area.include.front()) {
+            QVERIFY2(corner.x > 300000 && corner.x < 330000, qPrintable(QString::number(corner.x)));
+            QVERIFY2(corner.y > 4125000 && corner.y < 4155000, qPrintable(QString::number(corner.y)));
+        }
     }
 
     void badAreaFilesAreRefusedNamingTheFile_data() {

@@ -419,6 +419,73 @@ class TestPlanRenderer : public QObject {
         QVERIFY(planned.back().items.back().label.contains(QStringLiteral("one flight")));
     }
 
+    // The area of interest's edge is a dark dashed line on a white halo over the map, a no-go zone is
+    // hatched red inside its dashed edge; neither shows with the layer off or without an area. The legend and
+    // the exported sheet say what they are.
+    void drawsTheAreaEdgeAndHatchesNoGoZones() {
+        const ClassGrid grid = twoClassGrid();
+        const ClassTable classes = twoClassTable();
+        AreaOutline area;
+        area.include = {{{1020, 4920}, {1180, 4920}, {1180, 4980}, {1020, 4980}}}; // x 40-360, y 40-160
+        area.exclude = {{{1030, 4930}, {1070, 4930}, {1070, 4970}, {1030, 4970}, {1030, 4930}}}; // x 60-140
+        const auto painted = [&](const AreaOutline& outline, bool layerOn) {
+            render::PlanRenderer renderer;
+            renderer.setMap(&grid, &classes);
+            renderer.setArea(outline);
+            render::MapLayers layers;
+            layers.area = layerOn;
+            renderer.setLayers(layers);
+            QImage image(400, 200, QImage::Format_RGB32);
+            QPainter painter(&image);
+            renderer.paint(painter, render::PlanRenderer::fitTransform(grid, QSizeF(400, 200)),
+                           QRectF(0, 0, 400, 200));
+            return image;
+        };
+        // Along the area's north edge (y = 40) and across the no-go zone's middle (y = 100, x 64-136).
+        const auto count = [](const QImage& image, int y, int fromX, int toX, const QColor& colour) {
+            int found = 0;
+            for (int x = fromX; x <= toX; ++x)
+                found += near(image.pixelColor(x, y), colour, 40) ? 1 : 0;
+            return found;
+        };
+        const QColor edge = render::RobotPalette::areaEdgeColour();
+        const QColor noGo = render::RobotPalette::noGoColour();
+        const QImage drawn = painted(area, true);
+        QVERIFY2(count(drawn, 40, 50, 350, edge) > 120,
+                 qPrintable(QString::number(count(drawn, 40, 50, 350, edge))));
+        QVERIFY2(count(drawn, 40, 50, 350, Qt::white) > 40, "a halo beside the dashes");
+        QVERIFY2(count(drawn, 100, 64, 136, noGo) > 8,
+                 qPrintable(QString::number(count(drawn, 100, 64, 136, noGo))));
+        QCOMPARE(count(drawn, 100, 200, 350, noGo), 0); // meadow and water outside the zone stay plain
+        QVERIFY(near(drawn.pixelColor(200, 100), QColor::fromRgb(kMeadow)) ||
+                near(drawn.pixelColor(200, 100), QColor::fromRgb(kWater)));
+        for (const QImage& plain : {painted(area, false), painted(AreaOutline{}, true)}) {
+            QCOMPARE(count(plain, 40, 50, 350, edge), 0);
+            QCOMPARE(count(plain, 100, 64, 136, noGo), 0);
+        }
+
+        std::vector<render::LegendSection> legend = render::planLegend(classes, nullptr, {});
+        const std::size_t sections = legend.size();
+        render::addAreaOutline(legend, AreaOutline{});
+        QCOMPARE(legend.size(), sections);
+        render::addAreaOutline(legend, area);
+        QCOMPARE(legend.back().title, QStringLiteral("On the map"));
+        QCOMPARE(legend.back().items.size(), std::size_t{2});
+        QVERIFY(legend.back().items[0].symbol == render::LegendSymbol::AreaEdge);
+        QVERIFY(legend.back().items[1].symbol == render::LegendSymbol::NoGoZone);
+
+        const Plan plan = eastboundPlan();
+        const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, {}, &area}, QSize(400, 400));
+        int explained = 0;
+        for (const render::LegendSection& section : sheet.legend())
+            for (const render::LegendItem& item : section.items)
+                explained += item.symbol == render::LegendSymbol::AreaEdge ||
+                                     item.symbol == render::LegendSymbol::NoGoZone
+                                 ? 1
+                                 : 0;
+        QCOMPARE(explained, 2);
+    }
+
     // A detection layer over the meadow half: its western half seen as required (green), its eastern
     // half not seen (red); switched off, the meadow shows plain. The legend explains the colours.
     void drawsWhatTheSensorSees() {
