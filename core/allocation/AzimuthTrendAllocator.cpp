@@ -1138,7 +1138,8 @@ RegionAllocation AzimuthTrendAllocator::grownOnTreePieces(const CellGraph& graph
     std::optional<RegionAllocation> division;
     std::vector<int> finestPieceOfCell;
     {
-        std::vector<CellBlocks> levels = treePieces(graph, startCells, {pieceCost, pieceCost / 8.0});
+        std::vector<CellBlocks> levels =
+            treePieces(graph, startCells, {pieceCost, pieceCost / 8.0}, &progress);
         division = evenedOutOnPieces(levels, startCells, rebalanceIterations_, progress);
         finestPieceOfCell = std::move(levels.back().blockOfCell);
     } // the pieces' figures and adjacency gone before the cells' allocation is made

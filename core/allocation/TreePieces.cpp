@@ -158,14 +158,14 @@ CellBlocks piecesOf(const CellGraph& graph, const RootedForest& forest, const st
 } // namespace
 
 std::vector<CellBlocks> treePieces(const CellGraph& graph, const std::vector<int>& startCells,
-                                   const std::vector<double>& pieceCosts) {
+                                   const std::vector<double>& pieceCosts, const ProgressReporter* progress) {
     const std::size_t cellCount = graph.size();
     std::vector<int> cells(cellCount);
     std::iota(cells.begin(), cells.end(), 0);
     std::vector<std::pair<int, int>> edges;
     {
         const RegionAdjacency adjacency(graph, cells, WholeGraphIndex{});
-        edges = fewestTurnEdges(graph, cells, adjacency, !graph.hasOneCellSize(), 0);
+        edges = fewestTurnEdges(graph, cells, adjacency, !graph.hasOneCellSize(), 0, progress);
     }
     const RootedForest forest = rootForest(cellCount, edges);
     std::vector<CellBlocks> levels;

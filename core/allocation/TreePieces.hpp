@@ -2,6 +2,7 @@
 
 #include "core/allocation/CellBlocks.hpp"
 #include "core/model/CellGraph.hpp"
+#include "core/model/ProgressReporter.hpp"
 
 #include <vector>
 
@@ -15,8 +16,10 @@ namespace mcpp {
 // from such pieces have borders where the whole map's tree is cut, so their own trees turn nearly as little
 // as it does: the cost of a border lies in the straight runs it cuts. Where cells differ in size the tree
 // weighs time, the steps between sizes included, as a region's tree does. pieceCosts: one level of pieces per
-// cost, dearest first; each level's pieces lie within the last one's.
+// cost, dearest first; each level's pieces lie within the last one's. progress, where given: a cancel request
+// stops the whole map's tree (PlanningError), which takes seconds on maps of a million cells.
 [[nodiscard]] std::vector<CellBlocks> treePieces(const CellGraph& graph, const std::vector<int>& startCells,
-                                                 const std::vector<double>& pieceCosts);
+                                                 const std::vector<double>& pieceCosts,
+                                                 const ProgressReporter* progress = nullptr);
 
 } // namespace mcpp

@@ -2,10 +2,12 @@
 #include "core/decomposition/NeighbourTopologyBuilder.hpp"
 #include "core/decomposition/QuadTreeBuilder.hpp"
 #include "core/decomposition/QuadTreeDecomposition.hpp"
+#include "core/model/PlanningError.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
 #include <algorithm>
+#include <atomic>
 #include <set>
 #include <utility>
 
@@ -196,6 +198,26 @@ class TestTreePieces : public QObject {
         for (std::size_t cell = 0; cell < graph.size(); ++cell)
             if (partsWithStarts.count(part[cell]) > 0)
                 QCOMPARE(startsInPiece[static_cast<std::size_t>(whole.blockOfCell[cell])], 1);
+    }
+
+    // The whole map's tree takes seconds on maps of a million cells: a cancel request stops it. Not asked,
+    // the pieces are the same.
+    void aCancelRequestStopsThePieces() {
+        const CellGraph graph = test::cellPerPixelGraph(test::obstacleGridProblem(30, 2, 4));
+        const std::vector<int> starts = spreadStarts(graph, 4);
+        const double cost = 40 * graph.cell(0).coverSeconds();
+        std::atomic<bool> cancel{false};
+        const ProgressReporter progress({}, &cancel);
+        QCOMPARE(treePieces(graph, starts, {cost}, &progress).front().blockOfCell,
+                 treePieces(graph, starts, {cost}).front().blockOfCell);
+        cancel = true;
+        bool cancelled = false;
+        try {
+            (void)treePieces(graph, starts, {cost}, &progress);
+        } catch (const PlanningError& error) {
+            cancelled = error.kind() == PlanningError::Kind::Cancelled;
+        }
+        QVERIFY(cancelled);
     }
 };
 
