@@ -787,8 +787,8 @@ void BatchRunner::writeComparison(const std::vector<io::ComparisonRow>& rows,
     const std::vector<render::ComparisonPanel> panels = render::rankedComparisonPanels(rows, planned);
     QString error;
     if (!render::writeComparisonSheet(raster_.grid, classes_, panels,
-                                      QString::fromStdString((directory / "comparison.png").string()),
-                                      &error))
+                                      QString::fromStdString((directory / "comparison.png").string()), &error,
+                                      &raster_.area))
         warn("comparison.png not written: " + error.toStdString());
     if (options_.quiet)
         return;

@@ -26,10 +26,11 @@ int columnsFor(std::size_t panels) {
 }
 
 void drawPanel(QPainter& painter, const ClassGrid& grid, const ClassGrid& frame, const ClassTable& classes,
-               const ComparisonPanel& panel, QRect area) {
+               const ComparisonPanel& panel, QRect area, const AreaOutline* taskArea) {
     const QRect mapArea(area.left(), area.top(), area.width(), tileSide);
     if (panel.plan != nullptr) {
-        const QImage map = renderPlanImage(grid, classes, panel.plan, mapArea.size(), {}, nullptr, &frame);
+        const QImage map =
+            renderPlanImage(grid, classes, panel.plan, mapArea.size(), {}, nullptr, &frame, taskArea);
         painter.drawImage(mapArea.left() + (mapArea.width() - map.width()) / 2,
                           mapArea.top() + (mapArea.height() - map.height()) / 2, map);
     } else {
@@ -164,7 +165,7 @@ std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::Compar
 }
 
 QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
-                             const std::vector<ComparisonPanel>& panels) {
+                             const std::vector<ComparisonPanel>& panels, const AreaOutline* area) {
     const int columns = columnsFor(panels.size());
     const int rows = static_cast<int>((panels.size() + static_cast<std::size_t>(columns) - 1) /
                                       static_cast<std::size_t>(columns));
@@ -183,10 +184,10 @@ QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const int column = static_cast<int>(i) % columns;
         const int row = static_cast<int>(i) / columns;
-        const QRect area(margin + column * (tileSide + margin),
+        const QRect tile(margin + column * (tileSide + margin),
                          margin + row * (tileSide + captionHeight + margin), tileSide,
                          tileSide + captionHeight);
-        drawPanel(painter, grid, frame, classes, panels[i], area);
+        drawPanel(painter, grid, frame, classes, panels[i], tile, area);
     }
     drawChart(painter, panels, QRect(margin, height - chartHeight - margin, width - 2 * margin, chartHeight));
     painter.end();
@@ -194,8 +195,9 @@ QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
 }
 
 bool writeComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
-                          const std::vector<ComparisonPanel>& panels, const QString& path, QString* error) {
-    const QByteArray encoded = encodePng(renderComparisonSheet(grid, classes, panels));
+                          const std::vector<ComparisonPanel>& panels, const QString& path, QString* error,
+                          const AreaOutline* area) {
+    const QByteArray encoded = encodePng(renderComparisonSheet(grid, classes, panels, area));
     const io::Status written =
         !encoded.isEmpty()
             ? io::writeFileAtomically(

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/AreaOutline.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
@@ -31,12 +32,14 @@ struct ComparisonPanel {
                                                                   const std::vector<const Plan*>& plans);
 
 // The plans as small multiples on one sheet, same extent and scale, each with its name and figures under
-// it, and below them a bar chart of every robot's time per planner.
+// it, and below them a bar chart of every robot's time per planner; area: the edges of the area of interest
+// and no-go zones the plans were made in, drawn over each.
 [[nodiscard]] QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
-                                           const std::vector<ComparisonPanel>& panels);
+                                           const std::vector<ComparisonPanel>& panels,
+                                           const AreaOutline* area = nullptr);
 // The sheet as a PNG, written atomically; false with a message naming the file on failure.
 [[nodiscard]] bool writeComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
                                         const std::vector<ComparisonPanel>& panels, const QString& path,
-                                        QString* error);
+                                        QString* error, const AreaOutline* area = nullptr);
 
 } // namespace mcpp::render

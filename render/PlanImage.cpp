@@ -71,7 +71,8 @@ QImage blankPicture(QSize size) {
 } // namespace
 
 QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan, QSize maxSize,
-                       const MapLayers& layers, const RegionOutlines* outlines, const ClassGrid* frame) {
+                       const MapLayers& layers, const RegionOutlines* outlines, const ClassGrid* frame,
+                       const AreaOutline* area) {
     if (grid.columns <= 0 || grid.rows <= 0 || maxSize.width() <= 0 || maxSize.height() <= 0)
         return {};
     const ClassGrid& shown = frame != nullptr ? *frame : grid;
@@ -82,6 +83,8 @@ QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const P
     PlanRenderer renderer;
     renderer.setMap(&grid, &classes);
     renderer.setPlan(plan, outlines);
+    if (area != nullptr)
+        renderer.setArea(*area);
     renderer.setLayers(layers);
     QPainter painter(&image);
     renderer.paint(painter, PlanRenderer::fitTransform(shown, QSizeF(size)),

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/AreaOutline.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "core/model/Plan.hpp"
@@ -22,7 +23,7 @@ namespace mcpp::render {
 [[nodiscard]] QImage renderPlanImage(const ClassGrid& grid, const ClassTable& classes, const Plan* plan,
                                      QSize maxSize, const MapLayers& layers = {},
                                      const RegionOutlines* outlines = nullptr,
-                                     const ClassGrid* frame = nullptr);
+                                     const ClassGrid* frame = nullptr, const AreaOutline* area = nullptr);
 
 // Writes the plan's map sheet (PlanSheet: title, map fitted into maxSize with scale bar and north arrow,
 // legend naming the robots) as PNG. On failure returns false and says why in *error (when not null).

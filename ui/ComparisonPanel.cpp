@@ -172,7 +172,7 @@ void ComparisonPanel::setCanCompare(bool can, const QString& whyNot) {
 }
 
 void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid,
-                                  const ClassTable& classes) {
+                                  const ClassTable& classes, const AreaOutline* area) {
     table_->setSortingEnabled(false);
     table_->clearContents();
     table_->setRowCount(static_cast<int>(outcome.rows.size()));
@@ -239,8 +239,8 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     std::vector<const Plan*> plans;
     for (const auto& plan : outcome.plans)
         plans.push_back(plan.get());
-    sheetImage_ =
-        render::renderComparisonSheet(grid, classes, render::rankedComparisonPanels(outcome.rows, plans));
+    sheetImage_ = render::renderComparisonSheet(grid, classes,
+                                                render::rankedComparisonPanels(outcome.rows, plans), area);
     fitSheet();
     if (fullSizeSheet_ != nullptr && fullSizeSheet_->isVisible())
         showFullSizeSheet(); // the new comparison's sheet where the last one's is open

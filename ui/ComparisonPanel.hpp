@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/AreaOutline.hpp"
 #include "core/model/ClassGrid.hpp"
 #include "core/model/ClassTable.hpp"
 #include "ui/ComparisonRunner.hpp"
@@ -34,7 +35,9 @@ class ComparisonPanel : public QWidget {
     // Whether the panel's button runs a comparison (not while planning or exporting, nor without a map and
     // robots); why not, in its tooltip.
     void setCanCompare(bool can, const QString& whyNot);
-    void showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid, const ClassTable& classes);
+    // area: the area of interest's and no-go zones' edges, drawn on the sheet's maps.
+    void showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid, const ClassTable& classes,
+                     const AreaOutline* area = nullptr);
 
     [[nodiscard]] QTableWidget* table() const { return table_; }
     [[nodiscard]] QLabel* sheet() const { return sheet_; }

@@ -1750,7 +1750,8 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
             if (const auto named =
                     io::planningErrorText(*error, fieldNamer(comparison_.choices[row].planner), robotNames()))
                 comparison_.rows[row].message = *named;
-    comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes());
+    comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes(),
+                                  document_->raster() != nullptr ? &document_->raster()->area : nullptr);
     logComparedWarnings();
     comparisonDock_->show();
     comparisonDock_->raise();

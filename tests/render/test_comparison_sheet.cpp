@@ -2,6 +2,7 @@
 // timed against it, every ratio said to be to the plan's own bound.
 
 #include "render/ComparisonSheet.hpp"
+#include "render/RobotPalette.hpp"
 
 #include <QtTest>
 
@@ -16,6 +17,33 @@ io::ComparisonRow plannedRow(const std::string& planner, double coveredFraction,
     row.metrics.makespanSeconds = makespanSeconds;
     row.metrics.ratio = 1.5;
     return row;
+}
+
+// 20 x 10 pixels of 10 m of one passable class.
+ClassGrid meadow() {
+    ClassGrid grid;
+    grid.columns = 20;
+    grid.rows = 10;
+    grid.originX = 1000.0;
+    grid.originY = 5000.0;
+    grid.pixelWidth = 10.0;
+    grid.pixelHeight = 10.0;
+    grid.values.assign(200, 1);
+    return grid;
+}
+
+int pixelsNear(const QImage& image, const QColor& colour) {
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor pixel = image.pixelColor(x, y);
+            count += std::abs(pixel.red() - colour.red()) + std::abs(pixel.green() - colour.green()) +
+                                 std::abs(pixel.blue() - colour.blue()) <
+                             30
+                         ? 1
+                         : 0;
+        }
+    return count;
 }
 
 } // namespace
@@ -38,6 +66,30 @@ class TestComparisonSheet : public QObject {
         // Covering less, it is smaller, not quicker: not timed against the first.
         QCOMPARE(panels[2].title, QStringLiteral("3. wavefront-battery"));
         QCOMPARE(panels[2].caption.front(), QStringLiteral("makespan 1 h, 1.500 x its own lower bound"));
+    }
+
+    // Every panel's map shows the edges of the area the plans were made in, as plan.png does.
+    void panelsShowTheAreaEdges() {
+        const ClassGrid grid = meadow();
+        const ClassTable classes({LandCoverClass{1, "Meadow", 0x40a040, 2.0, 10.0, true}});
+        Plan plan;
+        plan.planner = "test";
+        const std::vector<render::ComparisonPanel> panels{{QStringLiteral("one"), {}, &plan},
+                                                          {QStringLiteral("two"), {}, &plan}};
+        AreaOutline area;
+        area.include = {{{1020, 4920}, {1180, 4920}, {1180, 4980}, {1020, 4980}}};
+        area.exclude = {{{1040, 4940}, {1080, 4940}, {1080, 4960}, {1040, 4960}}};
+        const QImage without = render::renderComparisonSheet(grid, classes, panels);
+        const QImage with = render::renderComparisonSheet(grid, classes, panels, &area);
+        QCOMPARE(with.size(), without.size());
+        const int edges = pixelsNear(with, render::RobotPalette::areaEdgeColour()) -
+                          pixelsNear(without, render::RobotPalette::areaEdgeColour());
+        const int noGo = pixelsNear(with, render::RobotPalette::noGoColour()) -
+                         pixelsNear(without, render::RobotPalette::noGoColour());
+        // Each panel's map is 520 pixels wide (2.6 a metre): the area's edge 320 m round, dashed, in two
+        // panels.
+        QVERIFY2(edges > 1000, qPrintable(QString::number(edges)));
+        QVERIFY2(noGo > 200, qPrintable(QString::number(noGo)));
     }
 };
 
