@@ -64,8 +64,12 @@ void PlannerSettingsPanel::setChoice(const PlannerChoice& choice) {
         index = planner_->count() - 1;
     }
     planner_->setCurrentIndex(index);
-    const auto description = findPlannerDescription(choice.planner);
-    rebuildForm(description.value_or(PlannerDescription{}));
+    // An edit made here comes back through the document while its editor still handles the key or click
+    // that made it: the form is rebuilt only for another planner, never under an editor in use.
+    if (formPlanner_ != choice.planner) {
+        rebuildForm(findPlannerDescription(choice.planner).value_or(PlannerDescription{}));
+        formPlanner_ = choice.planner;
+    }
     showValues();
     updating_ = false;
 }
@@ -187,6 +191,7 @@ void PlannerSettingsPanel::plannerPicked(int index) {
     shown_ = switchPlanner(shown_, name);
     updating_ = true;
     rebuildForm(findPlannerDescription(name).value_or(PlannerDescription{}));
+    formPlanner_ = name;
     showValues();
     updating_ = false;
     emit choiceEdited(shown_);

@@ -4,6 +4,8 @@
 #include "core/planners/PlannerDescription.hpp"
 
 #include <QWidget>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -40,6 +42,7 @@ class PlannerSettingsPanel : public QWidget {
     QLabel* summary_;
     QFormLayout* form_;
     std::vector<std::pair<ParameterSpec, QWidget*>> editors_;
+    std::optional<std::string> formPlanner_; // the planner whose editors the form holds
     PlannerChoice shown_;
     bool updating_ = false;
 };

@@ -4,6 +4,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QPointer>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QtTest>
@@ -91,6 +92,32 @@ class TestPlannerSettingsPanel : public QObject {
         const ParameterSpec spec = TurnTimeModel::turnSecondsParameter();
         QVERIFY(spec.isAutomatic(*panel.choice().parameters.find("turn_s")));
         QCOMPARE(turn->text(), QString("auto"));
+    }
+
+    // The window hands every edit to the mission, which shows it back here while the editor still handles
+    // the key or click that made it: that editor must outlive it (it was deleted under the key press, and
+    // the window crashed at any edit). Another planner's choice does rebuild the form.
+    void anEditShownBackKeepsItsEditor() {
+        ui::PlannerSettingsPanel panel;
+        panel.setChoice(defaultPlannerChoice("mcpp-mlct"));
+        connect(&panel, &ui::PlannerSettingsPanel::choiceEdited, &panel,
+                &ui::PlannerSettingsPanel::setChoice);
+        const QPointer<QDoubleSpinBox> purity =
+            qobject_cast<QDoubleSpinBox*>(panel.editorOf("purity_tolerance"));
+        QVERIFY(purity != nullptr);
+        purity->selectAll();
+        QTest::keyClicks(purity.data(), QStringLiteral("0.03"));
+        QTest::keyClick(purity.data(), Qt::Key_Enter);
+        QVERIFY(purity != nullptr);
+        QCOMPARE(panel.editorOf("purity_tolerance"), purity.data());
+        QCOMPARE(panel.choice().parameters.real("purity_tolerance"), 0.03);
+        const QPointer<QCheckBox> closed = qobject_cast<QCheckBox*>(panel.editorOf("closed_tour"));
+        QTest::mouseClick(closed.data(), Qt::LeftButton, {}, QPoint(4, closed->height() / 2));
+        QVERIFY(closed != nullptr);
+        QCOMPARE(panel.choice().parameters.boolean("closed_tour"), false);
+        panel.setChoice(defaultPlannerChoice("darp"));
+        QVERIFY(purity == nullptr); // darp's form in its place
+        QVERIFY(panel.editorOf("purity_tolerance") == nullptr);
     }
 
     void showingAChoiceIsNoEdit() {
