@@ -457,11 +457,15 @@ void PlanRenderer::paintMap(QPainter& painter, const QTransform& worldToDevice,
             paintPaths(painter, worldToDevice, deviceArea);
         painter.setOpacity(1.0);
     }
-    // Over the plan and past the raster's edge: what was asked for, against the cells that cover it.
-    painter.setClipping(false);
-    if (layers_.area)
-        paintArea(painter, worldToDevice, deviceArea);
     painter.restore();
+    // Over the plan, and past the raster's edge within the caller's clip: what was asked for, against the
+    // cells that cover it.
+    if (layers_.area) {
+        painter.save();
+        painter.setTransform(QTransform());
+        paintArea(painter, worldToDevice, deviceArea);
+        painter.restore();
+    }
 }
 
 void PlanRenderer::paintStartMarkers(QPainter& painter, const QTransform& worldToDevice) const {

@@ -484,6 +484,39 @@ class TestPlanRenderer : public QObject {
                                  ? 1
                                  : 0;
         QCOMPARE(explained, 2);
+        // An area reaching far past the raster is drawn within the sheet's map, not over its margins or
+        // legend.
+        AreaOutline wide;
+        wide.include = {{{1100, 4700}, {1900, 4700}, {1900, 5300}, {1100, 5300}}};
+        wide.exclude = {{{1150, 4600}, {1250, 4600}, {1250, 4950}, {1150, 4950}}};
+        // Edge-coloured pixels (the title's text is near black too) in the map and beyond it.
+        const auto edgePixels = [&](const AreaOutline* outline) {
+            const render::PlanSheet wideSheet(grid, classes, plan, {nullptr, {}, {}, outline},
+                                              QSize(400, 400));
+            QImage image(wideSheet.size(), QImage::Format_RGB32);
+            image.fill(Qt::white);
+            QPainter painter(&image);
+            wideSheet.paint(painter);
+            painter.end();
+            const QRect legendArea = wideSheet.legendArea().toAlignedRect();
+            std::pair<int, int> insideAndOut{0, 0};
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor pixel = image.pixelColor(x, y);
+                    if (!near(pixel, edge, 40) && !near(pixel, noGo, 40))
+                        continue;
+                    if (wideSheet.mapArea().contains(x, y))
+                        ++insideAndOut.first;
+                    else if (!legendArea.contains(x, y))
+                        ++insideAndOut.second;
+                }
+            return insideAndOut;
+        };
+        const auto [insideWith, outsideWith] = edgePixels(&wide);
+        const auto [insideWithout, outsideWithout] = edgePixels(nullptr);
+        QVERIFY2(insideWith > insideWithout + 50,
+                 qPrintable(QString("%1 %2").arg(insideWith).arg(insideWithout)));
+        QCOMPARE(outsideWith, outsideWithout);
     }
 
     // A detection layer over the meadow half: its western half seen as required (green), its eastern
