@@ -260,18 +260,24 @@ void BatchRunner::loadRaster() {
     raster_ = std::move(loaded.value());
     if (const io::Status area = io::applyMissionArea(raster_, mission_, missionPath); !area)
         badInput(areaGivenIn(area.error()) +
-                 "area of interest: " + area.error()); // the message names the polygon file
+                 (namesNoGoFile(area.error()) ? "no-go zones: " : "area of interest: ") +
+                 area.error()); // the message names the polygon file
     pendingNotes_.insert(pendingNotes_.end(), raster_.notes.begin(), raster_.notes.end());
     pendingWarnings_.insert(pendingWarnings_.end(), raster_.warnings.begin(), raster_.warnings.end());
 }
 
-// Where the polygon file a message names was given: its flag, or the mission file and its key.
-std::string BatchRunner::areaGivenIn(const std::string& message) const {
+// Whether a message about the area's polygons names the no-go zones' file and not the area's.
+bool BatchRunner::namesNoGoFile(const std::string& message) const {
     const auto names = [&](const std::string& path) {
         return !path.empty() &&
                message.find(std::filesystem::path(path).filename().string()) != std::string::npos;
     };
-    if (names(mission_.area.excludePath) && !names(mission_.area.includePath))
+    return names(mission_.area.excludePath) && !names(mission_.area.includePath);
+}
+
+// Where the polygon file a message names was given: its flag, or the mission file and its key.
+std::string BatchRunner::areaGivenIn(const std::string& message) const {
+    if (namesNoGoFile(message))
         return options_.noGoPath.empty() ? options_.missionPath + ": area.exclude: " : "--no-go: ";
     return options_.areaPath.empty() ? options_.missionPath + ": area.include: " : "--area: ";
 }

@@ -77,6 +77,7 @@ class BatchRunner {
     void sayComparedPlanWarnings(const Plan& plan, const PlanningProblem& problem,
                                  std::set<std::string>& saidOnce);
     [[nodiscard]] std::string areaGivenIn(const std::string& message) const;
+    [[nodiscard]] bool namesNoGoFile(const std::string& message) const;
 
     // Where a value came from, so errors name the flag or the mission file and field.
     [[nodiscard]] std::string fieldName(const io::MissionField& field) const;

@@ -299,11 +299,13 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
     std::int64_t inside = 0;
     std::int64_t laidPixels = 0; // of the area to plan on, on the raster
     std::int64_t overNodata = 0; // of those, where the raster has no land cover
+    std::int64_t noGoPixels = 0; // of the no-go zones, on the raster
     for (std::size_t pixel = 0; pixel < grid.values.size(); ++pixel) {
         if (!include.empty() && include[pixel] != 0) {
             ++laidPixels;
             overNodata += grid.outside[pixel] == ClassGrid::outsideNodata ? 1 : 0;
         }
+        noGoPixels += !exclude.empty() && exclude[pixel] != 0 ? 1 : 0;
         if (grid.outside[pixel] != 0)
             continue;
         if (!include.empty() && include[pixel] == 0) {
@@ -324,8 +326,15 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
     }
     raster.classPixelCounts = std::move(counts);
     const double pixelArea = grid.pixelWidth * grid.pixelHeight;
-    raster.notes.push_back("area of interest: planning on " +
-                           formatArea(static_cast<double>(inside) * pixelArea) + " of the map");
+    raster.notes.push_back(
+        (includePath.empty() ? "no-go zones: planning on " : "area of interest: planning on ") +
+        formatArea(static_cast<double>(inside) * pixelArea) + " of the map");
+    // A file in the wrong place or CRS would otherwise leave nothing out without a word.
+    if (!excludePath.empty() && noGoPixels == 0)
+        raster.warnings.push_back("no-go zones: no polygon of " +
+                                  std::filesystem::path(excludePath).filename().string() +
+                                  " lies on the raster, so none is left out (are its coordinates in the "
+                                  "CRS the file names?)");
     if (auto leftOut = areaLeftOut(offTheRaster, static_cast<double>(laidPixels) * pixelArea,
                                    static_cast<double>(overNodata) * pixelArea, pixelArea, includePath))
         raster.warnings.push_back(std::move(*leftOut));

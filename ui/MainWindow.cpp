@@ -1048,7 +1048,7 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
     for (const std::string& note : raster.value().notes)
         areaNotes << asSentence(note);
     for (const std::string& warning : raster.value().warnings)
-        if (warning.starts_with("area of interest"))
+        if (warning.starts_with("area of interest") || warning.starts_with("no-go zones"))
             areaNotes << asSentence(warning);
     document_->reset(std::make_shared<io::LoadedRaster>(std::move(raster.value())), std::move(mission),
                      document_->missionPath());

@@ -197,6 +197,26 @@ class AreaOfInterestTest : public QObject {
         QVERIFY(!insideAt(raster, 312500, 4137500));
         QVERIFY(!insideAt(raster, 320500, 4145500));
         QVERIFY(insideAt(raster, 316500, 4141500));
+        QVERIFY(raster.notes.back().starts_with("no-go zones: planning on "));
+        QVERIFY(raster.warnings.empty());
+    }
+
+    // No-go zones that miss the raster (in another place, or in another CRS than the file names) leave
+    // nothing out, and a warning says so; an area of interest that misses it is an error.
+    void noGoZonesOffTheRasterAreAWarning() {
+        QTemporaryDir folder;
+        const QString paris = folder.filePath("paris.geojson");
+        QVERIFY(writeText(paris, rectangleJson(2.2, 48.8, 2.4, 48.9, QString())));
+        LoadedRaster raster = zion();
+        const std::int64_t whole = insidePixels(raster);
+        QVERIFY(applyAreaOfInterest(raster, std::string(), paris.toStdString()).ok());
+        QCOMPARE(insidePixels(raster), whole);
+        QCOMPARE(raster.warnings.size(), std::size_t{1});
+        QVERIFY2(raster.warnings.front().starts_with(
+                     "no-go zones: no polygon of paris.geojson lies on the raster"),
+                 raster.warnings.front().c_str());
+        LoadedRaster again = zion();
+        QVERIFY(!applyAreaOfInterest(again, paris.toStdString(), {}).ok());
     }
 
     // The same rectangle given in longitude and latitude is taken to the raster's CRS.
