@@ -88,8 +88,45 @@ std::string notDegreesProblem(const OGRGeometry& geometry, const OGRSpatialRefer
                       " " + path + ", if they are in the raster's, " + raster.georeference.name() + ")");
 }
 
-// Every polygon of every layer, in the raster's planning frame.
-Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, OwnedGeometries& out) {
+// The polygons of a geometry GEOS mended, without the lines and points mending may leave; null if none.
+OGRGeometry* polygonalPart(std::unique_ptr<OGRGeometry> geometry) {
+    if (!geometry)
+        return nullptr;
+    const OGRwkbGeometryType type = wkbFlatten(geometry->getGeometryType());
+    if (type == wkbPolygon || type == wkbMultiPolygon)
+        return geometry.release();
+    auto polygons = std::make_unique<OGRMultiPolygon>();
+    if (const auto* collection = dynamic_cast<const OGRGeometryCollection*>(geometry.get()))
+        for (const OGRGeometry* part : *collection) {
+            const OGRwkbGeometryType partType = wkbFlatten(part->getGeometryType());
+            if (partType == wkbPolygon)
+                polygons->addGeometry(part);
+            else if (partType == wkbMultiPolygon)
+                for (const OGRPolygon* polygon : *part->toMultiPolygon())
+                    polygons->addGeometry(polygon);
+        }
+    return polygons->IsEmpty() ? nullptr : polygons.release();
+}
+
+// A polygon whose outline crosses itself (a star drawn in one stroke, a bow-tie) is laid on the raster by
+// GDAL even-odd, leaving out the parts its outline goes round twice (a star's middle); mended by joining
+// its rings' enclosures (GEOS's structure method), it covers all it encloses. Whether it was mended.
+bool mendedIfCrossing(OGRGeometry*& geometry) {
+    if (!OGRGeometryFactory::haveGEOS() || geometry->IsValid())
+        return false;
+    const char* const structure[] = {"METHOD=STRUCTURE", nullptr};
+    OGRGeometry* mended = polygonalPart(std::unique_ptr<OGRGeometry>(geometry->MakeValid(structure)));
+    if (mended == nullptr)
+        return false;
+    OGRGeometryFactory::destroyGeometry(geometry);
+    geometry = mended;
+    return true;
+}
+
+// Every polygon of every layer, in the raster's planning frame; mended counts those whose outlines crossed
+// themselves and were mended.
+Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, OwnedGeometries& out,
+                         int& mended) {
     using Count = Result<int>;
     internal::ensureGdalRegistered();
     const QuietGdalErrors quiet;
@@ -136,6 +173,7 @@ Result<int> readPolygons(const std::string& path, const LoadedRaster& raster, Ow
                                       QuietGdalErrors::detail());
             }
             scaleRings(*copy, metresPerUnit);
+            mended += mendedIfCrossing(out.geometries.back()) ? 1 : 0;
             ++count;
         }
     }
@@ -213,13 +251,15 @@ struct LaidArea {
     std::vector<std::uint8_t> mask;
     double offTheRaster = 0.0;
     std::vector<std::vector<MapPoint>> rings; // the polygons' edges, planning frame
+    int mended = 0;                           // polygons whose outlines crossed themselves
 };
 
 // measured: whether to measure the part off the raster (an area to plan on, not a no-go zone).
 Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster, bool measured) {
     using Mask = Result<LaidArea>;
     OwnedGeometries polygons;
-    if (auto read = readPolygons(path, raster, polygons); !read)
+    int mended = 0;
+    if (auto read = readPolygons(path, raster, polygons, mended); !read)
         return Mask::failure(read.error());
     const ClassGrid& grid = raster.grid;
     GDALDriver* memory = GetGDALDriverManager()->GetDriverByName("MEM");
@@ -245,7 +285,7 @@ Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster, 
     std::vector<std::vector<MapPoint>> rings;
     for (const OGRGeometry* geometry : polygons.geometries)
         appendRings(*geometry, rings);
-    return LaidArea{std::move(mask), off, std::move(rings)};
+    return LaidArea{std::move(mask), off, std::move(rings), mended};
 }
 
 // What of the area drawn to plan on is left out, off the raster or over its nodata, where that is more than a
@@ -268,6 +308,17 @@ std::optional<std::string> areaLeftOut(double offTheRaster, double onTheRaster, 
            (off ? " (a larger raster, or a mosaic of tiles, would cover it)" : "");
 }
 
+// What mending polygons that crossed themselves did, for the user to check against what they meant.
+std::optional<std::string> mendedNote(const std::string& subject, int mended, const std::string& path) {
+    if (mended == 0)
+        return std::nullopt;
+    return subject + ": " + std::to_string(mended) + (mended == 1 ? " polygon" : " polygons") + " of " +
+           std::filesystem::path(path).filename().string() +
+           (mended == 1 ? " crosses itself" : " cross themselves") + ": taken as all " +
+           (mended == 1 ? "its outline encloses" : "their outlines enclose") +
+           ", the parts it goes round twice included";
+}
+
 } // namespace
 
 Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
@@ -287,6 +338,8 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
         include = std::move(laid.value().mask);
         offTheRaster = laid.value().offTheRaster;
         raster.area.include = std::move(laid.value().rings);
+        if (auto note = mendedNote("area of interest", laid.value().mended, includePath))
+            raster.warnings.push_back(std::move(*note));
     }
     if (!excludePath.empty()) {
         auto laid = rasterise(excludePath, raster, false);
@@ -294,6 +347,8 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
             return Status::failure(laid.error());
         exclude = std::move(laid.value().mask);
         raster.area.exclude = std::move(laid.value().rings);
+        if (auto note = mendedNote("no-go zones", laid.value().mended, excludePath))
+            raster.warnings.push_back(std::move(*note));
     }
     std::map<std::int32_t, std::int64_t> counts;
     std::int64_t inside = 0;
@@ -347,7 +402,8 @@ Status writeAreaPolygons(const std::string& path, const std::vector<std::vector<
     const QuietGdalErrors quiet;
     OwnedGeometries kept;
     if (!keepPolygonsOf.empty()) {
-        if (auto read = readPolygons(keepPolygonsOf, raster, kept); !read)
+        int mended = 0; // kept as planning takes them
+        if (auto read = readPolygons(keepPolygonsOf, raster, kept, mended); !read)
             return Status::failure(read.error());
     }
     internal::DatasetFile file(path);

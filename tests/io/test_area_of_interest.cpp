@@ -9,6 +9,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 
 using namespace mcpp;
 using namespace mcpp::io;
@@ -217,6 +218,44 @@ class AreaOfInterestTest : public QObject {
                  raster.warnings.front().c_str());
         LoadedRaster again = zion();
         QVERIFY(!applyAreaOfInterest(again, paris.toStdString(), {}).ok());
+    }
+
+    // A star drawn in one stroke crosses itself: GDAL alone would leave out its middle, which its outline
+    // goes round twice. It is mended to all it encloses, and a warning says so.
+    void aPolygonCrossingItselfCoversAllItEncloses() {
+        QTemporaryDir folder;
+        const QString star = folder.filePath("star.geojson");
+        QString ring;
+        for (int point = 0; point <= 5; ++point) { // every second corner of a pentagon, radius 8 km
+            const double angle = (90.0 + 144.0 * point) * 3.14159265358979 / 180.0;
+            ring += QStringLiteral("%1[%2,%3]")
+                        .arg(point == 0 ? "" : ",")
+                        .arg(315000.0 + 8000.0 * std::cos(angle), 0, 'f', 1)
+                        .arg(4135000.0 + 8000.0 * std::sin(angle), 0, 'f', 1);
+        }
+        QVERIFY(
+            writeText(star, QStringLiteral("{\"type\":\"FeatureCollection\",\"crs\":{\"type\":\"name\","
+                                           "\"properties\":{\"name\":\"urn:ogc:def:crs:EPSG::26912\"}},"
+                                           "\"features\":[{\"type\":\"Feature\",\"properties\":{},"
+                                           "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[[%1]]}}]}")
+                                .arg(ring)
+                                .toUtf8()));
+        LoadedRaster raster = zion();
+        QVERIFY(applyAreaOfInterest(raster, star.toStdString(), {}).ok());
+        QVERIFY(insideAt(raster, 315000, 4135000));        // the middle
+        QVERIFY(insideAt(raster, 315000, 4135000 + 7000)); // a point
+        QVERIFY(!insideAt(raster, 315000 + 7000, 4135000 + 7000));
+        // A pentagram of radius R covers 1.1226 R^2 with its middle.
+        const double area =
+            static_cast<double>(insidePixels(raster)) * raster.grid.pixelWidth * raster.grid.pixelHeight;
+        QVERIFY2(std::abs(area - 1.1226 * 64e6) / (1.1226 * 64e6) < 0.03, qPrintable(QString::number(area)));
+        QCOMPARE(raster.warnings.size(), std::size_t{1});
+        QVERIFY2(
+            raster.warnings.front().starts_with("area of interest: 1 polygon of star.geojson crosses itself"),
+            raster.warnings.front().c_str());
+        // Its edge as drawn is the star's outline, not the crossing stroke.
+        QCOMPARE(raster.area.include.size(), std::size_t{1});
+        QCOMPARE(raster.area.include.front().size(), std::size_t{11});
     }
 
     // The same rectangle given in longitude and latitude is taken to the raster's CRS.
