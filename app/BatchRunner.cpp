@@ -943,6 +943,10 @@ std::string BatchRunner::fieldName(const io::MissionField& field) const {
             return last->flag + suggested;
         if (!fromFile)
             return "--param " + field.key + suggested;
+        // Advice for a mission file: its field, or the flag that sets it for one run.
+        if (!field.value.empty())
+            return io::missionFileFields(options_.missionPath, io::robotNames(mission_))(field) +
+                   " (or --param " + field.key + suggested + ")";
         break;
     }
     }

@@ -19,7 +19,11 @@ io::ImageWriter planImageWriter(int pngSide) {
                                                 QSize(pngSide, pngSide), &error, extras)
                                  : writePlanSvg(*context.grid, context.classes, context.plan, file,
                                                 QSize(1600, 1600), &error, extras);
-        return written ? io::Status() : io::Status::failure(path + ": " + error.toStdString());
+        if (written)
+            return io::Status();
+        // The drawing's errors name the file already, most of them.
+        return io::Status::failure(error.contains(file) ? error.toStdString()
+                                                        : path + ": " + error.toStdString());
     };
 }
 

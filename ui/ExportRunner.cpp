@@ -36,8 +36,11 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
         const io::Status status = format->write(context, robot, path.toStdString());
         if (!status.ok()) {
             outcome.cancelled = cancelRequested.load();
-            outcome.error = QObject::tr("Cannot export the plan to %1: %2")
-                                .arg(path, QString::fromStdString(status.error()));
+            // Writers name the file in their errors, most often: it is said once.
+            const QString error = QString::fromStdString(status.error());
+            outcome.error = error.contains(path)
+                                ? QObject::tr("Cannot export the plan: %1").arg(error)
+                                : QObject::tr("Cannot export the plan to %1: %2").arg(path, error);
             return outcome;
         }
         const std::size_t parts =

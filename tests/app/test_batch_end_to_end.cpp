@@ -1479,7 +1479,8 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
                "nodata-robot.json", "robots[1].start", "nodata",
                "; move it into the task area, or let the planner start the robot from the nearest free cell "
                "(",
-               "planner.parameters.snap_starts_to_free_cells=true)"};
+               "planner.parameters.snap_starts_to_free_cells=true (or --param "
+               "snap_starts_to_free_cells=true))"};
     QTest::newRow("mission robots in one cell")
         << QStringList{"--batch", scratch_.filePath("shared-cell.json"), "--out", out}
         << QStringList{"shared-cell.json", "robots[2].start (forest)", "same cell as robot 1's start",

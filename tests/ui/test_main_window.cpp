@@ -687,6 +687,10 @@ class TestMainWindow : public QObject {
         QVERIFY(!exportAndWait("geojson", QStringLiteral("/no/such/folder/plan.geojson")));
         QVERIFY(!window.isExporting());
         QVERIFY(window.lastError().contains(QStringLiteral("/no/such/folder/plan.geojson")));
+        // The file is named once, not by the window and again by each writer it passed through.
+        QVERIFY(!exportAndWait("png", QStringLiteral("/no/such/folder/plan.png")));
+        QCOMPARE(window.lastError().count(QStringLiteral("/no/such/folder/plan.png")), 1);
+        QCOMPARE(window.lastError().count(QStringLiteral("/no/such/folder/plan.geojson")), 0);
 
         // Save, reopen, and find the same robots and edited speed.
         const QString missionPath = directory.filePath(QStringLiteral("mission.json"));
