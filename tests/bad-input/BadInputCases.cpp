@@ -180,7 +180,7 @@ std::vector<BadInputCase> makeCases() {
         {"no-go file missing",
          withStart("good.tif", "good.csv", {"--no-go", "{dir}/absent-no-go.geojson"}),
          2,
-         "--no-go: area of interest: {dir}/absent-no-go.geojson: no such file",
+         "--no-go: no-go zones: {dir}/absent-no-go.geojson: no such file",
          Gui::None,
          {}},
         {"start on an obstacle",
