@@ -711,6 +711,26 @@ void PlanRenderer::paintCrossings(QPainter& painter, const QTransform& worldToDe
     }
 }
 
+namespace {
+
+// A ring on the device with corners closer than about a pixel to the last one kept left out: a boundary
+// traced from a survey (hundreds of thousands of corners) is stroked, dashes and all, in a few thousand.
+QPolygonF onDevice(const QPolygonF& ring, const QTransform& worldToDevice) {
+    constexpr double closest = 0.75; // pixels
+    QPolygonF device;
+    for (const QPointF& corner : ring) {
+        const QPointF point = worldToDevice.map(corner);
+        if (device.isEmpty() ||
+            std::abs(point.x() - device.back().x()) + std::abs(point.y() - device.back().y()) >= closest)
+            device << point;
+    }
+    if (!ring.isEmpty() && device.back() != worldToDevice.map(ring.back()))
+        device << worldToDevice.map(ring.back()); // closed as it was
+    return device;
+}
+
+} // namespace
+
 void PlanRenderer::setArea(const AreaOutline& area) {
     const auto outlinesOf = [](const std::vector<std::vector<MapPoint>>& rings) {
         std::vector<Outline> outlines;
@@ -742,7 +762,7 @@ void PlanRenderer::paintArea(QPainter& painter, const QTransform& worldToDevice,
         for (const Outline& outline : outlines) {
             if (!touches(outline.bounds, visible))
                 continue;
-            const QPolygonF ring = worldToDevice.map(outline.ring);
+            const QPolygonF ring = onDevice(outline.ring, worldToDevice);
             if (fill.style() != Qt::NoBrush) {
                 painter.setPen(Qt::NoPen);
                 painter.setBrush(fill);

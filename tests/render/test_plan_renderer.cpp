@@ -459,6 +459,22 @@ class TestPlanRenderer : public QObject {
         QCOMPARE(count(drawn, 100, 200, 350, noGo), 0); // meadow and water outside the zone stay plain
         QVERIFY(near(drawn.pixelColor(200, 100), QColor::fromRgb(kMeadow)) ||
                 near(drawn.pixelColor(200, 100), QColor::fromRgb(kWater)));
+        // The same rectangle traced with 8 000 corners (a surveyed boundary) draws the same edge.
+        AreaOutline traced;
+        traced.include.emplace_back();
+        for (int step = 0; step < 8000; ++step) {
+            const double along = (step % 2000) / 2000.0;
+            const int side = step / 2000;
+            traced.include.back().push_back(side == 0   ? MapPoint{1020 + 160 * along, 4920}
+                                            : side == 1 ? MapPoint{1180, 4920 + 60 * along}
+                                            : side == 2 ? MapPoint{1180 - 160 * along, 4980}
+                                                        : MapPoint{1020, 4980 - 60 * along});
+        }
+        const QImage tracedImage = painted(traced, true);
+        const int tracedEdge = count(tracedImage, 40, 50, 350, edge);
+        const int cornersEdge = count(drawn, 40, 50, 350, edge);
+        QVERIFY2(std::abs(tracedEdge - cornersEdge) <= cornersEdge / 10,
+                 qPrintable(QString("%1 against %2").arg(tracedEdge).arg(cornersEdge)));
         for (const QImage& plain : {painted(area, false), painted(AreaOutline{}, true)}) {
             QCOMPARE(count(plain, 40, 50, 350, edge), 0);
             QCOMPARE(count(plain, 100, 64, 136, noGo), 0);
