@@ -314,9 +314,10 @@ std::optional<std::string> mendedNote(const std::string& subject, int mended, co
         return std::nullopt;
     return subject + ": " + std::to_string(mended) + (mended == 1 ? " polygon" : " polygons") + " of " +
            std::filesystem::path(path).filename().string() +
-           (mended == 1 ? " crosses itself" : " cross themselves") + ": taken as all " +
-           (mended == 1 ? "its outline encloses" : "their outlines enclose") +
-           ", the parts it goes round twice included";
+           (mended == 1 ? " is not a simple polygon (its outline crosses itself)"
+                        : " are not simple polygons (their outlines cross themselves)") +
+           ": taken as all " + (mended == 1 ? "its outline encloses" : "their outlines enclose") +
+           ", parts gone round twice included";
 }
 
 } // namespace
