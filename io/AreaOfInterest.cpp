@@ -45,16 +45,17 @@ void scaleRings(OGRGeometry& geometry, double factor) {
     }
 }
 
-// Each ring of the polygons (outer rings and holes) as corners in the planning frame, for drawing.
-void appendRings(const OGRGeometry& geometry, std::vector<std::vector<MapPoint>>& rings) {
+// Each polygon as its rings (the outer one, then its holes) of corners in the planning frame, for drawing.
+void appendPolygons(const OGRGeometry& geometry, std::vector<AreaOutline::Polygon>& polygons) {
     if (const auto* collection = dynamic_cast<const OGRGeometryCollection*>(&geometry)) {
         for (int index = 0; index < collection->getNumGeometries(); ++index)
-            appendRings(*collection->getGeometryRef(index), rings);
+            appendPolygons(*collection->getGeometryRef(index), polygons);
         return;
     }
     if (const auto* polygon = dynamic_cast<const OGRPolygon*>(&geometry)) {
+        AreaOutline::Polygon& rings = polygons.emplace_back();
         for (const OGRLinearRing* ring : *polygon) {
-            std::vector<MapPoint>& corners = rings.emplace_back();
+            AreaOutline::Ring& corners = rings.emplace_back();
             corners.reserve(static_cast<std::size_t>(ring->getNumPoints()));
             for (int point = 0; point < ring->getNumPoints(); ++point)
                 corners.push_back({ring->getX(point), ring->getY(point)});
@@ -250,8 +251,8 @@ double areaOffTheRaster(const OwnedGeometries& polygons, const ClassGrid& grid) 
 struct LaidArea {
     std::vector<std::uint8_t> mask;
     double offTheRaster = 0.0;
-    std::vector<std::vector<MapPoint>> rings; // the polygons' edges, planning frame
-    int mended = 0;                           // polygons whose outlines crossed themselves
+    std::vector<AreaOutline::Polygon> polygons; // their edges, planning frame
+    int mended = 0;                             // polygons whose outlines crossed themselves
 };
 
 // measured: whether to measure the part off the raster (an area to plan on, not a no-go zone).
@@ -282,10 +283,10 @@ Result<LaidArea> rasterise(const std::string& path, const LoadedRaster& raster, 
         return Mask::failure(path + ": its polygons could not be laid on the raster" +
                              QuietGdalErrors::detail());
     const double off = measured ? areaOffTheRaster(polygons, grid) : 0.0;
-    std::vector<std::vector<MapPoint>> rings;
+    std::vector<AreaOutline::Polygon> edges;
     for (const OGRGeometry* geometry : polygons.geometries)
-        appendRings(*geometry, rings);
-    return LaidArea{std::move(mask), off, std::move(rings), mended};
+        appendPolygons(*geometry, edges);
+    return LaidArea{std::move(mask), off, std::move(edges), mended};
 }
 
 // What of the area drawn to plan on is left out, off the raster or over its nodata, where that is more than a
@@ -338,7 +339,7 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
             return Status::failure(laid.error());
         include = std::move(laid.value().mask);
         offTheRaster = laid.value().offTheRaster;
-        raster.area.include = std::move(laid.value().rings);
+        raster.area.include = std::move(laid.value().polygons);
         if (auto note = mendedNote("area of interest", laid.value().mended, includePath))
             raster.warnings.push_back(std::move(*note));
     }
@@ -347,7 +348,7 @@ Status applyAreaOfInterest(LoadedRaster& raster, const std::string& includePath,
         if (!laid)
             return Status::failure(laid.error());
         exclude = std::move(laid.value().mask);
-        raster.area.exclude = std::move(laid.value().rings);
+        raster.area.exclude = std::move(laid.value().polygons);
         if (auto note = mendedNote("no-go zones", laid.value().mended, excludePath))
             raster.warnings.push_back(std::move(*note));
     }

@@ -732,24 +732,30 @@ QPolygonF onDevice(const QPolygonF& ring, const QTransform& worldToDevice) {
 } // namespace
 
 void PlanRenderer::setArea(const AreaOutline& area) {
-    const auto outlinesOf = [](const std::vector<std::vector<MapPoint>>& rings) {
-        std::vector<Outline> outlines;
-        outlines.reserve(rings.size());
-        for (const std::vector<MapPoint>& corners : rings) {
-            if (corners.size() < 3)
-                continue;
-            QPolygonF ring;
-            ring.reserve(static_cast<qsizetype>(corners.size()) + 1);
-            for (const MapPoint& corner : corners)
-                ring << QPointF(corner.x, corner.y);
-            if (ring.front() != ring.back())
-                ring << ring.front();
-            outlines.push_back({ring, ring.boundingRect()});
+    const auto polygonsOf = [](const std::vector<AreaOutline::Polygon>& polygons) {
+        std::vector<AreaPolygon> drawn;
+        drawn.reserve(polygons.size());
+        for (const AreaOutline::Polygon& polygon : polygons) {
+            AreaPolygon rings;
+            for (const AreaOutline::Ring& corners : polygon) {
+                if (corners.size() < 3)
+                    continue;
+                QPolygonF ring;
+                ring.reserve(static_cast<qsizetype>(corners.size()) + 1);
+                for (const MapPoint& corner : corners)
+                    ring << QPointF(corner.x, corner.y);
+                if (ring.front() != ring.back())
+                    ring << ring.front();
+                rings.bounds = rings.bounds.united(ring.boundingRect());
+                rings.rings.push_back(std::move(ring));
+            }
+            if (!rings.rings.empty())
+                drawn.push_back(std::move(rings));
         }
-        return outlines;
+        return drawn;
     };
-    areaEdges_ = outlinesOf(area.include);
-    noGoEdges_ = outlinesOf(area.exclude);
+    areaEdges_ = polygonsOf(area.include);
+    noGoEdges_ = polygonsOf(area.exclude);
 }
 
 // A white halo under a dark dashed line reads on any land cover and over the paths; no-go zones are hatched
@@ -758,23 +764,31 @@ void PlanRenderer::paintArea(QPainter& painter, const QTransform& worldToDevice,
                              const QRectF& deviceArea) const {
     const QRectF visible = worldToDevice.inverted().mapRect(deviceArea);
     painter.setRenderHint(QPainter::Antialiasing, true);
-    const auto draw = [&](const std::vector<Outline>& outlines, const QColor& colour, const QBrush& fill) {
-        for (const Outline& outline : outlines) {
-            if (!touches(outline.bounds, visible))
+    const auto draw = [&](const std::vector<AreaPolygon>& polygons, const QColor& colour,
+                          const QBrush& fill) {
+        QPen dashes(colour, 2.0, Qt::CustomDashLine, Qt::FlatCap, Qt::RoundJoin);
+        dashes.setDashPattern({4.0, 2.5});
+        const QPen halo(QColor(255, 255, 255, 220), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+        for (const AreaPolygon& polygon : polygons) {
+            if (!touches(polygon.bounds, visible))
                 continue;
-            const QPolygonF ring = onDevice(outline.ring, worldToDevice);
-            if (fill.style() != Qt::NoBrush) {
-                painter.setPen(Qt::NoPen);
-                painter.setBrush(fill);
-                painter.drawPolygon(ring);
+            std::vector<QPolygonF> rings;
+            for (const QPolygonF& ring : polygon.rings)
+                rings.push_back(onDevice(ring, worldToDevice));
+            if (fill.style() != Qt::NoBrush) { // its holes left empty
+                QPainterPath inside;
+                inside.setFillRule(Qt::OddEvenFill);
+                for (const QPolygonF& ring : rings)
+                    inside.addPolygon(ring);
+                painter.fillPath(inside, fill);
             }
             painter.setBrush(Qt::NoBrush);
-            painter.setPen(QPen(QColor(255, 255, 255, 220), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-            painter.drawPolyline(ring);
-            QPen dashes(colour, 2.0, Qt::CustomDashLine, Qt::FlatCap, Qt::RoundJoin);
-            dashes.setDashPattern({4.0, 2.5});
-            painter.setPen(dashes);
-            painter.drawPolyline(ring);
+            for (const QPolygonF& ring : rings) {
+                painter.setPen(halo);
+                painter.drawPolyline(ring);
+                painter.setPen(dashes);
+                painter.drawPolyline(ring);
+            }
         }
     };
     draw(areaEdges_, RobotPalette::areaEdgeColour(), Qt::NoBrush);

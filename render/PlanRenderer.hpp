@@ -130,8 +130,13 @@ class PlanRenderer {
     std::vector<GridImage> detectionPyramid_; // empty when the plan has no detection layer
     std::vector<Outline> regionBorders_;
     std::vector<Outline> unreachableOutlines_;
-    std::vector<Outline> areaEdges_;                         // the area of interest's rings
-    std::vector<Outline> noGoEdges_;                         // the no-go zones' rings
+    // A polygon of the area: its rings (outer, then holes) and their bounds.
+    struct AreaPolygon {
+        std::vector<QPolygonF> rings; // world coordinates, closed
+        QRectF bounds;
+    };
+    std::vector<AreaPolygon> areaEdges_;                     // the area of interest's polygons
+    std::vector<AreaPolygon> noGoEdges_;                     // the no-go zones' polygons
     std::vector<std::pair<int, Outline>> takenOverOutlines_; // (robot, outline): the cells it took over
     std::vector<std::optional<MapPoint>> chargers_;          // by robot: a charger away from its start
     std::vector<double> flightReach_;                        // by robot, metres; 0: none

@@ -77,8 +77,8 @@ class TestComparisonSheet : public QObject {
         const std::vector<render::ComparisonPanel> panels{{QStringLiteral("one"), {}, &plan},
                                                           {QStringLiteral("two"), {}, &plan}};
         AreaOutline area;
-        area.include = {{{1020, 4920}, {1180, 4920}, {1180, 4980}, {1020, 4980}}};
-        area.exclude = {{{1040, 4940}, {1080, 4940}, {1080, 4960}, {1040, 4960}}};
+        area.include = {{{{1020, 4920}, {1180, 4920}, {1180, 4980}, {1020, 4980}}}};
+        area.exclude = {{{{1040, 4940}, {1080, 4940}, {1080, 4960}, {1040, 4960}}}};
         const QImage without = render::renderComparisonSheet(grid, classes, panels);
         const QImage with = render::renderComparisonSheet(grid, classes, panels, &area);
         QCOMPARE(with.size(), without.size());

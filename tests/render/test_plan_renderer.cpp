@@ -426,8 +426,10 @@ class TestPlanRenderer : public QObject {
         const ClassGrid grid = twoClassGrid();
         const ClassTable classes = twoClassTable();
         AreaOutline area;
-        area.include = {{{1020, 4920}, {1180, 4920}, {1180, 4980}, {1020, 4980}}}; // x 40-360, y 40-160
-        area.exclude = {{{1030, 4930}, {1070, 4930}, {1070, 4970}, {1030, 4970}, {1030, 4930}}}; // x 60-140
+        area.include = {{{{1020, 4920}, {1180, 4920}, {1180, 4980}, {1020, 4980}}}}; // x 40-360, y 40-160
+        // x 60-140, with a hole of x 90-110, y 90-110
+        area.exclude = {{{{1030, 4930}, {1070, 4930}, {1070, 4970}, {1030, 4970}, {1030, 4930}},
+                         {{1045, 4945}, {1055, 4945}, {1055, 4955}, {1045, 4955}}}};
         const auto painted = [&](const AreaOutline& outline, bool layerOn) {
             render::PlanRenderer renderer;
             renderer.setMap(&grid, &classes);
@@ -457,18 +459,19 @@ class TestPlanRenderer : public QObject {
         QVERIFY2(count(drawn, 100, 64, 136, noGo) > 8,
                  qPrintable(QString::number(count(drawn, 100, 64, 136, noGo))));
         QCOMPARE(count(drawn, 100, 200, 350, noGo), 0); // meadow and water outside the zone stay plain
+        QCOMPARE(count(drawn, 100, 95, 105, noGo), 0);  // and so does the zone's hole
         QVERIFY(near(drawn.pixelColor(200, 100), QColor::fromRgb(kMeadow)) ||
                 near(drawn.pixelColor(200, 100), QColor::fromRgb(kWater)));
         // The same rectangle traced with 8 000 corners (a surveyed boundary) draws the same edge.
         AreaOutline traced;
-        traced.include.emplace_back();
+        traced.include.emplace_back().emplace_back();
         for (int step = 0; step < 8000; ++step) {
             const double along = (step % 2000) / 2000.0;
             const int side = step / 2000;
-            traced.include.back().push_back(side == 0   ? MapPoint{1020 + 160 * along, 4920}
-                                            : side == 1 ? MapPoint{1180, 4920 + 60 * along}
-                                            : side == 2 ? MapPoint{1180 - 160 * along, 4980}
-                                                        : MapPoint{1020, 4980 - 60 * along});
+            traced.include.back().back().push_back(side == 0   ? MapPoint{1020 + 160 * along, 4920}
+                                                   : side == 1 ? MapPoint{1180, 4920 + 60 * along}
+                                                   : side == 2 ? MapPoint{1180 - 160 * along, 4980}
+                                                               : MapPoint{1020, 4980 - 60 * along});
         }
         const QImage tracedImage = painted(traced, true);
         const int tracedEdge = count(tracedImage, 40, 50, 350, edge);
@@ -503,8 +506,8 @@ class TestPlanRenderer : public QObject {
         // An area reaching far past the raster is drawn within the sheet's map, not over its margins or
         // legend.
         AreaOutline wide;
-        wide.include = {{{1100, 4700}, {1900, 4700}, {1900, 5300}, {1100, 5300}}};
-        wide.exclude = {{{1150, 4600}, {1250, 4600}, {1250, 4950}, {1150, 4950}}};
+        wide.include = {{{{1100, 4700}, {1900, 4700}, {1900, 5300}, {1100, 5300}}}};
+        wide.exclude = {{{{1150, 4600}, {1250, 4600}, {1250, 4950}, {1150, 4950}}}};
         // Edge-coloured pixels (the title's text is near black too) in the map and beyond it.
         const auto edgePixels = [&](const AreaOutline* outline) {
             const render::PlanSheet wideSheet(grid, classes, plan, {nullptr, {}, {}, outline},
