@@ -3,6 +3,7 @@
 
 #include "render/ComparisonSheet.hpp"
 #include "render/RobotPalette.hpp"
+#include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
 
@@ -17,19 +18,6 @@ io::ComparisonRow plannedRow(const std::string& planner, double coveredFraction,
     row.metrics.makespanSeconds = makespanSeconds;
     row.metrics.ratio = 1.5;
     return row;
-}
-
-// 20 x 10 pixels of 10 m of one passable class.
-ClassGrid meadow() {
-    ClassGrid grid;
-    grid.columns = 20;
-    grid.rows = 10;
-    grid.originX = 1000.0;
-    grid.originY = 5000.0;
-    grid.pixelWidth = 10.0;
-    grid.pixelHeight = 10.0;
-    grid.values.assign(200, 1);
-    return grid;
 }
 
 int pixelsNear(const QImage& image, const QColor& colour) {
@@ -70,7 +58,7 @@ class TestComparisonSheet : public QObject {
 
     // Every panel's map shows the edges of the area the plans were made in, as plan.png does.
     void panelsShowTheAreaEdges() {
-        const ClassGrid grid = meadow();
+        const ClassGrid grid = test::filledGrid(20, 10, 1000.0, 5000.0, 10.0, 1); // one passable class
         const ClassTable classes({LandCoverClass{1, "Meadow", 0x40a040, 2.0, 10.0, true}});
         Plan plan;
         plan.planner = "test";

@@ -27,14 +27,7 @@ constexpr std::uint32_t kWater = 0x2060c0;
 
 // 20 x 10 pixels of 10 m: meadow (1) on the west half, water (2) on the east half.
 ClassGrid twoClassGrid() {
-    ClassGrid grid;
-    grid.columns = 20;
-    grid.rows = 10;
-    grid.originX = 1000.0;
-    grid.originY = 5000.0;
-    grid.pixelWidth = 10.0;
-    grid.pixelHeight = 10.0;
-    grid.values.resize(200);
+    ClassGrid grid = test::filledGrid(20, 10, 1000.0, 5000.0, 10.0, 1);
     for (int row = 0; row < grid.rows; ++row)
         for (int column = 0; column < grid.columns; ++column)
             grid.values[grid.index(column, row)] = column < 10 ? 1 : 2;

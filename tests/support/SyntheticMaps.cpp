@@ -168,4 +168,17 @@ PlanningProblem randomProblem(const RandomMapSpec& spec) {
     return problem;
 }
 
+ClassGrid filledGrid(int columns, int rows, double originX, double originY, double pixelSide,
+                     std::int32_t value) {
+    ClassGrid grid;
+    grid.columns = columns;
+    grid.rows = rows;
+    grid.originX = originX;
+    grid.originY = originY;
+    grid.pixelWidth = pixelSide;
+    grid.pixelHeight = pixelSide;
+    grid.values.assign(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows), value);
+    return grid;
+}
+
 } // namespace mcpp::test

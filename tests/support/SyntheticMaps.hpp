@@ -57,4 +57,8 @@ struct RandomMapSpec {
 // The centre of pixel (column, row) of a grid.
 [[nodiscard]] MapPoint pixelCentre(const ClassGrid& grid, int column, int row);
 
+// A north-up grid of square pixels, every one holding `value`, its north-west corner at (originX, originY).
+[[nodiscard]] ClassGrid filledGrid(int columns, int rows, double originX, double originY, double pixelSide,
+                                   std::int32_t value);
+
 } // namespace mcpp::test
