@@ -230,31 +230,38 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
     return sections;
 }
 
-void addFlightReach(std::vector<LegendSection>& sections, const std::vector<double>& reaches) {
-    if (std::none_of(reaches.begin(), reaches.end(), [](double metres) { return metres > 0.0; }))
-        return;
+namespace {
+
+// The legend's last section, "On the map", made when there is none yet (no plan).
+LegendSection& onTheMap(std::vector<LegendSection>& sections) {
     const QString title = QStringLiteral("On the map");
     if (sections.empty() || sections.back().title != title)
         sections.push_back({title, {}});
-    sections.back().items.push_back({LegendSymbol::FlightReach,
-                                     RobotPalette::colour(0).darker(130),
-                                     QStringLiteral("How far one flight reaches and comes back"),
-                                     {}});
+    return sections.back();
+}
+
+} // namespace
+
+void addFlightReach(std::vector<LegendSection>& sections, const std::vector<double>& reaches) {
+    if (std::none_of(reaches.begin(), reaches.end(), [](double metres) { return metres > 0.0; }))
+        return;
+    onTheMap(sections).items.push_back({LegendSymbol::FlightReach,
+                                        RobotPalette::colour(0).darker(130),
+                                        QStringLiteral("How far one flight reaches and comes back"),
+                                        {}});
 }
 
 void addAreaOutline(std::vector<LegendSection>& sections, const AreaOutline& area) {
     if (area.empty())
         return;
-    const QString title = QStringLiteral("On the map");
-    if (sections.empty() || sections.back().title != title)
-        sections.push_back({title, {}});
+    LegendSection& overlays = onTheMap(sections);
     if (!area.include.empty())
-        sections.back().items.push_back({LegendSymbol::AreaEdge,
-                                         RobotPalette::areaEdgeColour(),
-                                         QStringLiteral("Edge of the area of interest"),
-                                         {}});
+        overlays.items.push_back({LegendSymbol::AreaEdge,
+                                  RobotPalette::areaEdgeColour(),
+                                  QStringLiteral("Edge of the area of interest"),
+                                  {}});
     if (!area.exclude.empty())
-        sections.back().items.push_back(
+        overlays.items.push_back(
             {LegendSymbol::NoGoZone, RobotPalette::noGoColour(), QStringLiteral("No-go zone"), {}});
 }
 
