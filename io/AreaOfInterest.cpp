@@ -429,12 +429,8 @@ Status writeAreaPolygons(const std::string& path, const std::vector<std::vector<
             return Status::failure(path + ": cannot write a polygon" + QuietGdalErrors::detail());
     }
     for (const std::vector<MapPoint>& corners : rings) {
-        auto ring = std::make_unique<OGRLinearRing>();
-        for (const MapPoint& corner : corners)
-            ring->addPoint(corner.x / metresPerUnit, corner.y / metresPerUnit);
-        ring->closeRings();
         OGRPolygon polygon;
-        polygon.addRingDirectly(ring.release());
+        polygon.addRingDirectly(internal::crsRing(corners, metresPerUnit).release());
         if (!add(polygon))
             return Status::failure(path + ": cannot write a polygon" + QuietGdalErrors::detail());
     }

@@ -34,7 +34,7 @@ struct ExportContext {
     const ClassTable& classes;
     ExportSettings settings;
     const ClassGrid* grid = nullptr;   // the land cover, for pictures
-    const AreaOutline* area = nullptr; // the area of interest's and no-go zones' edges, for pictures
+    const AreaOutline* area = nullptr; // the area of interest's and no-go zones' edges: pictures, vectors
     ImageWriter drawImage = {};
     // What the whole run took so far (batch mode: read_raster, plan, write_outputs), for report.json.
     std::vector<std::pair<std::string, double>> processMilliseconds = {};

@@ -6,6 +6,7 @@
 #include "io/internal/TextFiles.hpp"
 #include "io/internal/TransformationLoan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <ogrsf_frmts.h>
 #include <optional>
@@ -134,6 +135,10 @@ Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transfo
         if (!transformed(*part.geometry, transformation))
             return fail("an area taken over");
     }
+    for (auto& polygon : features.area) {
+        if (!transformed(*polygon.geometry, transformation))
+            return fail(polygon.noGoZone ? "a no-go zone" : "the area of interest");
+    }
     return {};
 }
 
@@ -164,6 +169,8 @@ void cutAtTheAntimeridian(PlanFeatures& features) {
         cut(part.geometry);
     for (auto& part : features.takenOver)
         cut(part.geometry);
+    for (auto& polygon : features.area)
+        cut(polygon.geometry);
 }
 
 Result<PlanFeatures> featuresInWgs84(const ExportContext& context, const std::string& path) {
@@ -320,6 +327,38 @@ Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& contex
 
 // The name batch mode gives the part's .plan and .waypoints files, without the extension: "robot_2" for a
 // mission in one part, "robot_2_part_3" for its third part (of a plan of `robots`).
+// The area of interest's polygons and the no-go zones', a layer for each that has any.
+Status writeAreaLayers(VectorFileWriter& writer, std::vector<internal::AreaFeature>& polygons,
+                       const OGRSpatialReference* crs, bool named) {
+    for (const bool noGoZones : {false, true}) {
+        const auto inLayer = [&](const internal::AreaFeature& polygon) {
+            return polygon.noGoZone == noGoZones;
+        };
+        if (std::none_of(polygons.begin(), polygons.end(), inLayer))
+            continue;
+        auto layer = writer.layer(noGoZones ? "no_go_zones" : "area_of_interest", crs, wkbPolygon);
+        if (!layer)
+            return Status::failure(layer.error());
+        Fields fields{{{"area_m2", OFTReal}}};
+        if (named)
+            fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+        if (Status status = createFields(writer, layer.value(), fields); !status)
+            return status;
+        for (auto& polygon : polygons) {
+            if (!inLayer(polygon))
+                continue;
+            OGRFeature feature(layer.value()->GetLayerDefn());
+            if (named)
+                feature.SetField("name", noGoZones ? "no-go zone" : "area of interest");
+            feature.SetField("area_m2", polygon.areaSquareMetres);
+            feature.SetGeometryDirectly(polygon.geometry.release());
+            if (Status status = writer.add(layer.value(), feature); !status)
+                return status;
+        }
+    }
+    return {};
+}
+
 std::string partFileStem(int robot, int robots, std::size_t part, std::size_t parts) {
     const std::string whole = robotFileStem(robot, robots);
     return parts > 1 ? missionPartPath(whole, part, parts) : whole;
@@ -474,6 +513,8 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
             !status)
             return status;
     }
+    if (Status status = writeAreaLayers(writer, planFeatures.area, crs.get(), false); !status)
+        return status;
     if (writer.dataset().CommitTransaction() != OGRERR_NONE) {
         return Status::failure(path + ": cannot commit" + QuietGdalErrors::detail());
     }
@@ -508,6 +549,8 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
             !status)
             return status;
     }
+    if (Status status = writeAreaLayers(writer, planFeatures.area, wgs84.get(), true); !status)
+        return status;
     return writer.commit();
 }
 

@@ -81,4 +81,13 @@ std::string wktOf(const OGRSpatialReference& reference) {
     return result;
 }
 
+std::unique_ptr<OGRLinearRing> crsRing(const std::vector<MapPoint>& corners, double metresPerUnit) {
+    auto ring = std::make_unique<OGRLinearRing>();
+    ring->setNumPoints(static_cast<int>(corners.size()));
+    for (std::size_t i = 0; i < corners.size(); ++i)
+        ring->setPoint(static_cast<int>(i), corners[i].x / metresPerUnit, corners[i].y / metresPerUnit);
+    ring->closeRings();
+    return ring;
+}
+
 } // namespace mcpp::io::internal

@@ -2,11 +2,15 @@
 
 // Private to mcpp_io: GDAL types may appear here, never in io's public headers.
 
+#include "core/model/MapPoint.hpp"
+
 #include <cpl_error.h>
 #include <gdal_priv.h>
 #include <memory>
+#include <ogr_geometry.h>
 #include <ogr_spatialref.h>
 #include <string>
+#include <vector>
 
 namespace mcpp::io::internal {
 
@@ -42,5 +46,8 @@ spatialReferenceFromDefinition(const std::string& definition);
 [[nodiscard]] std::unique_ptr<OGRCoordinateTransformation>
 transformationBetween(const OGRSpatialReference& from, const OGRSpatialReference& to);
 [[nodiscard]] std::string wktOf(const OGRSpatialReference& reference);
+// A closed ring of corners in the planning frame (metres), in the CRS's units.
+[[nodiscard]] std::unique_ptr<OGRLinearRing> crsRing(const std::vector<MapPoint>& corners,
+                                                     double metresPerUnit);
 
 } // namespace mcpp::io::internal

@@ -190,7 +190,7 @@ class FeatureLine {
 
 std::optional<std::string> planGeoJsonText(const ExportContext& context, const PlanFeatures& features) {
     const std::size_t count = features.regions.size() + features.paths.size() + features.starts.size() +
-                              features.unreachable.size() + features.takenOver.size();
+                              features.unreachable.size() + features.takenOver.size() + features.area.size();
     std::size_t written = 0;
     std::string out = "{\n\"type\": \"FeatureCollection\",\n\"features\": [\n";
     for (const auto& region : features.regions) {
@@ -228,6 +228,11 @@ std::optional<std::string> planGeoJsonText(const ExportContext& context, const P
             .real("area_m2", part.areaSquareMetres)
             .integer("cells", part.cells)
             .geometry(part.geometry.get(), ++written == count);
+    }
+    for (const auto& polygon : features.area) {
+        FeatureLine(out, polygon.noGoZone ? "no_go_zone" : "area_of_interest")
+            .real("area_m2", polygon.areaSquareMetres)
+            .geometry(polygon.geometry.get(), ++written == count);
     }
     out += "]\n}\n";
     return out;

@@ -5,6 +5,7 @@
 #include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionLabels.hpp"
 #include "io/PlanExport.hpp"
+#include "io/internal/GdalSupport.hpp"
 
 #include <algorithm>
 
@@ -144,6 +145,26 @@ void addTakenOver(const Plan& plan, double metresPerUnit, PlanFeatures& features
     }
 }
 
+// The area's polygons in CRS units, each with its area on the ground.
+void addArea(const AreaOutline* area, double metresPerUnit, PlanFeatures& features) {
+    if (area == nullptr)
+        return;
+    const auto add = [&](const std::vector<AreaOutline::Polygon>& polygons, bool noGoZone) {
+        for (const AreaOutline::Polygon& rings : polygons) {
+            if (rings.empty() || rings.front().size() < 3)
+                continue; // no outer ring to speak of
+            auto polygon = std::make_unique<OGRPolygon>();
+            for (const AreaOutline::Ring& corners : rings)
+                if (corners.size() >= 3)
+                    polygon->addRingDirectly(crsRing(corners, metresPerUnit).release());
+            const double squareMetres = polygon->get_Area() * metresPerUnit * metresPerUnit;
+            features.area.push_back(AreaFeature{noGoZone, std::move(polygon), squareMetres});
+        }
+    };
+    add(area->include, false);
+    add(area->exclude, true);
+}
+
 } // namespace
 
 int robotCount(const Plan& plan) {
@@ -191,6 +212,7 @@ Result<PlanFeatures> buildPlanFeatures(const ExportContext& context) {
     }
     addStarts(plan, metresPerUnit, features);
     addTakenOver(plan, metresPerUnit, features);
+    addArea(context.area, metresPerUnit, features);
     return features;
 }
 

@@ -47,6 +47,13 @@ struct TakenOverFeature {
     int cells = 0;
 };
 
+// One polygon of the task area the user gave: of the area of interest, or a no-go zone.
+struct AreaFeature {
+    bool noGoZone = false;
+    std::unique_ptr<OGRGeometry> geometry; // a polygon with its holes
+    double areaSquareMetres = 0.0;
+};
+
 // The plan's vector content in the raster CRS's units (planning metres / metresPerUnit). Region and
 // unreachable polygons are the outlines of the sub-cell grid of core/outlines/RegionLabels, traced, not
 // unions of cells; paths are their turning points unless densePaths asks for every waypoint.
@@ -59,6 +66,9 @@ struct PlanFeatures {
     // even when empty; KML only when it has features).
     std::vector<TakenOverFeature> takenOver;
     bool simulatedOverTime = false;
+    // The area of interest's polygons, then the no-go zones', as the context's area gives them (none without
+    // one): a plan can then be checked against the area it was asked for in any GIS.
+    std::vector<AreaFeature> area;
 };
 
 // From the context's plan, its (shared) region outlines, its CRS's units and its dense-paths setting.

@@ -3,6 +3,7 @@
 
 #include "PlanFixture.hpp"
 #include "core/coverage/StraightRunMerging.hpp"
+#include "core/model/AreaOutline.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
@@ -613,6 +614,66 @@ class PlanExportTest : public QObject {
         QVERIFY(kmlFile->GetLayerByName("taken_over") != nullptr);
         QCOMPARE(kmlFile->GetLayerByName("taken_over")->GetFeatureCount(), GIntBig{1});
         plan_.layers.clear();
+    }
+
+    // The area the plan was asked for goes with it: a layer for the area of interest (here a 100 m square
+    // with a 20 m hole) and one for the no-go zones, in the CRS as given, each polygon with its area; GeoJSON
+    // and KML carry them too. A plan without an area has neither layer.
+    void areaPolygonsAreTheirOwnLayers() {
+        Dataset plain = openVector(writtenGeoPackage("no-area.gpkg"));
+        QVERIFY(plain->GetLayerByName("area_of_interest") == nullptr);
+        QVERIFY(plain->GetLayerByName("no_go_zones") == nullptr);
+        const double x = plan_.cells.frame().originX;
+        const double y = plan_.cells.frame().originY;
+        const auto square = [](double left, double bottom, double side) {
+            return AreaOutline::Ring{
+                {left, bottom}, {left + side, bottom}, {left + side, bottom + side}, {left, bottom + side}};
+        };
+        AreaOutline area;
+        area.include.push_back({square(x - 10.0, y - 90.0, 100.0), square(x + 30.0, y - 50.0, 20.0)});
+        area.exclude.push_back({square(x + 60.0, y - 80.0, 10.0)});
+        ExportContext withArea = context();
+        withArea.area = &area;
+
+        const std::string geoPackagePath = file("area.gpkg");
+        QVERIFY(writePlanGeoPackage(withArea, geoPackagePath).ok());
+        Dataset geoPackage = openVector(geoPackagePath);
+        OGRLayer* include = geoPackage->GetLayerByName("area_of_interest");
+        OGRLayer* exclude = geoPackage->GetLayerByName("no_go_zones");
+        QVERIFY(include != nullptr && exclude != nullptr);
+        QCOMPARE(include->GetFeatureCount(), GIntBig{1});
+        QCOMPARE(exclude->GetFeatureCount(), GIntBig{1});
+        std::unique_ptr<OGRFeature> kept(include->GetNextFeature());
+        const OGRPolygon* polygon = kept->GetGeometryRef()->toPolygon();
+        QCOMPARE(polygon->getNumInteriorRings(), 1);
+        QCOMPARE(polygon->get_Area(), 9600.0);
+        QCOMPARE(kept->GetFieldAsDouble("area_m2"), 9600.0);
+        OGREnvelope box;
+        polygon->getEnvelope(&box);
+        QCOMPARE(box.MinX, x - 10.0);
+        QCOMPARE(box.MaxY, y + 10.0);
+        std::unique_ptr<OGRFeature> zone(exclude->GetNextFeature());
+        QCOMPARE(zone->GetFieldAsDouble("area_m2"), 100.0);
+
+        const std::string geoJson = file("area.geojson");
+        QVERIFY(writePlanGeoJson(withArea, geoJson).ok());
+        Dataset json = openVector(geoJson);
+        std::map<std::string, double> areas;
+        for (auto& feature : *json->GetLayer(0)) {
+            const std::string kind = feature->GetFieldAsString("kind");
+            if (kind == "area_of_interest" || kind == "no_go_zone") {
+                QVERIFY(std::abs(areaInCrs(*feature->GetGeometryRef(), reference_) -
+                                 feature->GetFieldAsDouble("area_m2")) < 0.01); // 1e-7 degrees
+                areas[kind] = feature->GetFieldAsDouble("area_m2");
+            }
+        }
+        QCOMPARE(areas, (std::map<std::string, double>{{"area_of_interest", 9600.0}, {"no_go_zone", 100.0}}));
+
+        const std::string kml = file("area.kml");
+        QVERIFY(writePlanKml(withArea, kml).ok());
+        Dataset kmlFile = openVector(kml);
+        QVERIFY(kmlFile->GetLayerByName("area_of_interest") != nullptr);
+        QCOMPARE(kmlFile->GetLayerByName("no_go_zones")->GetFeatureCount(), GIntBig{1});
     }
 
     void geoPackageInFeetKeepsFeet() {
