@@ -176,6 +176,16 @@ void uniformGridBalancedMstc(benchmark::State& state) {
         "mstc", balanced);
 }
 
+// MSTC with balanced pieces also cut as subtrees around the starts (its `subtree_pieces` parameter).
+void uniformGridSubtreeMstc(benchmark::State& state) {
+    ParameterValues subtrees;
+    subtrees.set("balanced", true);
+    subtrees.set("subtree_pieces", true);
+    runPlanner(
+        state,
+        test::obstacleGridProblem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 2020),
+        "mstc", subtrees);
+}
 // Wavefront coverage on a battery of range(2) seconds with 600 s recharges (1 m/s: a 49 x 49 grid of 10 m
 // pixels is 48 000 s of work).
 void uniformGridBattery(benchmark::State& state) {
@@ -284,6 +294,9 @@ BENCHMARK(uniformGridDetection)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(multiCoverDetection)->ArgsProduct({{128, 512}, {4, 16}})->Unit(benchmark::kMillisecond);
 BENCHMARK(uniformGridBalancedMstc)
+    ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(uniformGridSubtreeMstc)
     ->ArgsProduct({{49, 100, 200}, {2, 4, 8, 14, 20}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(uniformGrid, spiral_stc, std::string("spiral-stc"))

@@ -4,6 +4,7 @@
 #include "core/coverage/ApproachRoutes.hpp"
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
+#include "core/coverage/SubtreePieces.hpp"
 #include "core/coverage/TourSplitter.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 #include "core/coverage/TurnSearch.hpp"
@@ -189,6 +190,21 @@ double longestPieceSeconds(const CellGraph& graph, const std::vector<PieceWalk>&
     return longest;
 }
 
+// Balanced pieces as subtrees of the part's tree that turns least, one start in each (SubtreePieces).
+std::vector<PieceWalk> subtreeWalks(const CellGraph& graph, const StartComponent& part,
+                                    const PartRobots& robots, int plateauRounds,
+                                    const ProgressReporter& progress) {
+    std::vector<int> scratchIndex(graph.size(), -1);
+    const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds, &progress);
+    const SpanningTree tree = trees.candidate(0, part.cells, robots.startCells.front());
+    const SubtreePieces pieces(graph, tree, robots.startCells, robots.starts, progress);
+    std::vector<PieceWalk> walks(robots.robots.size());
+    TreeCircumnavigation walker(graph);
+    for (std::size_t k = 0; k < walks.size(); ++k)
+        walks[k].walk = walker.walk(pieces.pieceTree(k), robots.starts[k], false);
+    return walks;
+}
+
 } // namespace
 
 PlannerDescription MstcPlanner::describe() const {
@@ -205,6 +221,12 @@ PlannerDescription MstcPlanner::describe() const {
             "Cut the tour into pieces that take equal time with the way to them, each robot "
             "going to its own by the quickest way; otherwise each robot covers the tour from its "
             "start to the next robot's"),
+        booleanParameter(
+            "subtree_pieces", "Pieces as subtrees", false,
+            "With balanced pieces: also cut the tour's tree into a subtree per robot around its "
+            "start, evened out by handing branches to neighbouring pieces, so that no robot has a "
+            "way to its piece; the plan whose last robot finishes sooner is kept. A few more turns "
+            "where pieces meet; planning takes longer on large maps"),
         TurnSearch::roundsParameter(),
     };
     description.balanceSwitch = "balanced";
@@ -251,6 +273,13 @@ void MstcPlanner::run(PlanningRun& run) const {
                 if (longestPieceSeconds(plan.cells, reversed, robots) <
                     longestPieceSeconds(plan.cells, walks, robots))
                     walks = std::move(reversed);
+            }
+            if (ways && part.robots.size() > 1 && parameters.boolean("subtree_pieces")) {
+                std::vector<PieceWalk> subtrees =
+                    subtreeWalks(plan.cells, part, robots, plateauRounds, run.progress());
+                if (longestPieceSeconds(plan.cells, subtrees, robots) <
+                    longestPieceSeconds(plan.cells, walks, robots))
+                    walks = std::move(subtrees);
             }
             for (std::size_t k = 0; k < part.robots.size(); ++k) {
                 const int robot = part.robots[k];

@@ -1,0 +1,195 @@
+#include "core/coverage/SubtreePieces.hpp"
+
+#include "core/coverage/TreeCircumnavigation.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace mcpp {
+
+SubtreePieces::SubtreePieces(const CellGraph& graph, const SpanningTree& tree,
+                             const std::vector<int>& startCells, const std::vector<MapPoint>& starts,
+                             const ProgressReporter& progress, int mostMoves)
+    : graph_(graph), tree_(tree), starts_(starts), nodeOfCell_(graph.size(), -1),
+      startNode_(startCells.size(), -1), adjacency_(tree.size()), piece_(tree.size(), -1),
+      parent_(tree.size(), -1), subtreeCells_(tree.size(), 0), pieceNodes_(startCells.size()),
+      seconds_(startCells.size(), 0.0) {
+    for (std::size_t node = 0; node < tree.size(); ++node) {
+        nodeOfCell_[static_cast<std::size_t>(tree.cellOf(static_cast<int>(node)))] = static_cast<int>(node);
+        for (const int next : tree.neighbours(static_cast<int>(node)))
+            adjacency_[node].push_back(next);
+    }
+    for (std::size_t robot = 0; robot < startCells.size(); ++robot)
+        startNode_[robot] = nodeOfCell_[static_cast<std::size_t>(startCells[robot])];
+    cutBottomUp();
+    for (std::size_t robot = 0; robot < startNode_.size(); ++robot) {
+        label(robot);
+        measure(robot);
+    }
+    // Moves are chosen by an estimate of their time; where the walks' turns change otherwise, the pieces
+    // could trade branches back and forth: the search stops once the longest piece has not shortened for
+    // a while, or the pieces lie within a thousandth of each other.
+    constexpr int patience = 64;
+    double longest = *std::max_element(seconds_.begin(), seconds_.end());
+    int sinceShortened = 0;
+    for (; moves_ < mostMoves && sinceShortened < patience && !evenEnough(); ++moves_) {
+        if ((moves_ & 15) == 0)
+            progress.throwIfCancelled();
+        const Move move = bestMove();
+        if (move.branch < 0)
+            break;
+        apply(move);
+        const double now = *std::max_element(seconds_.begin(), seconds_.end());
+        sinceShortened = now < longest ? 0 : sinceShortened + 1;
+        longest = std::min(longest, now);
+    }
+}
+
+// Bottom up from the tree's root: a node's open part is itself and its children's parts not yet cut off.
+// Two starts never share a part (the larger parts with a start are cut off, the smallest kept), and a part
+// with a start is cut off once it reaches a fair share.
+void SubtreePieces::cutBottomUp() {
+    const std::size_t nodes = tree_.size();
+    const double fairShare = static_cast<double>(nodes) / static_cast<double>(startNode_.size());
+    std::vector<int> startAt(nodes, -1);
+    for (std::size_t robot = 0; robot < startNode_.size(); ++robot)
+        startAt[static_cast<std::size_t>(startNode_[robot])] = static_cast<int>(robot);
+    std::vector<int> order(nodes);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return tree_.depth(a) > tree_.depth(b); });
+    std::vector<int> openCells(nodes, 0);
+    std::vector<int> openStart(nodes, -1);
+    std::vector<char> cutOff(nodes, 0);
+    for (const int node : order) {
+        int cells = 1;
+        int start = startAt[static_cast<std::size_t>(node)];
+        std::vector<int> withStarts;
+        for (const int child : tree_.neighbours(node)) {
+            if (child == tree_.parent(node) || cutOff[static_cast<std::size_t>(child)] != 0)
+                continue;
+            if (openStart[static_cast<std::size_t>(child)] >= 0)
+                withStarts.push_back(child);
+            else
+                cells += openCells[static_cast<std::size_t>(child)];
+        }
+        std::sort(withStarts.begin(), withStarts.end(), [&](int a, int b) {
+            return openCells[static_cast<std::size_t>(a)] < openCells[static_cast<std::size_t>(b)];
+        });
+        for (const int child : withStarts) {
+            if (start >= 0) {
+                cutOff[static_cast<std::size_t>(child)] = 1;
+                continue;
+            }
+            start = openStart[static_cast<std::size_t>(child)];
+            cells += openCells[static_cast<std::size_t>(child)];
+        }
+        openCells[static_cast<std::size_t>(node)] = cells;
+        openStart[static_cast<std::size_t>(node)] = start;
+        if (start >= 0 && cells >= fairShare && tree_.parent(node) >= 0)
+            cutOff[static_cast<std::size_t>(node)] = 1;
+    }
+    for (std::size_t node = 0; node < nodes; ++node)
+        if (cutOff[node] != 0)
+            cutEdge(static_cast<int>(node), tree_.parent(static_cast<int>(node)));
+}
+
+bool SubtreePieces::evenEnough() const {
+    const auto [shortest, longest] = std::minmax_element(seconds_.begin(), seconds_.end());
+    return *longest - *shortest <= 1e-3 * *longest;
+}
+
+void SubtreePieces::cutEdge(int a, int b) {
+    auto& ofA = adjacency_[static_cast<std::size_t>(a)];
+    ofA.erase(std::find(ofA.begin(), ofA.end(), b));
+    auto& ofB = adjacency_[static_cast<std::size_t>(b)];
+    ofB.erase(std::find(ofB.begin(), ofB.end(), a));
+}
+
+// The robot's piece from its start: its nodes in breadth-first order, their parents and subtree sizes.
+void SubtreePieces::label(std::size_t robot) {
+    std::vector<int>& nodes = pieceNodes_[robot];
+    nodes.assign(1, startNode_[robot]);
+    parent_[static_cast<std::size_t>(startNode_[robot])] = -1;
+    for (std::size_t head = 0; head < nodes.size(); ++head) {
+        const int node = nodes[head];
+        piece_[static_cast<std::size_t>(node)] = static_cast<int>(robot);
+        for (const int next : adjacency_[static_cast<std::size_t>(node)]) {
+            if (next == parent_[static_cast<std::size_t>(node)])
+                continue;
+            parent_[static_cast<std::size_t>(next)] = node;
+            nodes.push_back(next);
+        }
+    }
+    for (auto node = nodes.rbegin(); node != nodes.rend(); ++node) {
+        int cells = 1;
+        for (const int next : adjacency_[static_cast<std::size_t>(*node)])
+            if (next != parent_[static_cast<std::size_t>(*node)])
+                cells += subtreeCells_[static_cast<std::size_t>(next)];
+        subtreeCells_[static_cast<std::size_t>(*node)] = cells;
+    }
+}
+
+SpanningTree SubtreePieces::pieceTree(std::size_t robot) const {
+    const std::vector<int>& nodes = pieceNodes_[robot];
+    std::vector<int> localOf(tree_.size(), -1);
+    std::vector<int> cells;
+    cells.reserve(nodes.size());
+    for (const int node : nodes) {
+        localOf[static_cast<std::size_t>(node)] = static_cast<int>(cells.size());
+        cells.push_back(tree_.cellOf(node));
+    }
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(nodes.size());
+    for (const int node : nodes)
+        if (const int parent = parent_[static_cast<std::size_t>(node)]; parent >= 0)
+            edges.emplace_back(localOf[static_cast<std::size_t>(node)],
+                               localOf[static_cast<std::size_t>(parent)]);
+    return {std::move(cells), 0, edges};
+}
+
+void SubtreePieces::measure(std::size_t robot) {
+    TreeCircumnavigation walker(graph_);
+    seconds_[robot] = walker.walkShape(pieceTree(robot), starts_[robot], false).seconds();
+}
+
+// Of all branches that can move to a neighbouring piece of shorter time, the one that lowers the sum of
+// the squares of the pieces' times most, its time taken as its cells at the map's mean time a cell. A
+// branch is the subtree below a node on the way from a cell on the piece's border up to its start.
+SubtreePieces::Move SubtreePieces::bestMove() const {
+    const double cellSeconds = std::accumulate(seconds_.begin(), seconds_.end(), 0.0) /
+                               static_cast<double>(std::max<std::size_t>(tree_.size(), 1));
+    Move best;
+    for (std::size_t node = 0; node < tree_.size(); ++node) {
+        const auto robot = static_cast<std::size_t>(piece_[node]);
+        for (const int neighbourCell : graph_.neighbours(tree_.cellOf(static_cast<int>(node)))) {
+            const int other = nodeOfCell_[static_cast<std::size_t>(neighbourCell)];
+            if (other < 0 || piece_[static_cast<std::size_t>(other)] == static_cast<int>(robot))
+                continue;
+            const double gap = seconds_[robot] - seconds_[static_cast<std::size_t>(piece_[other])];
+            for (int branch = static_cast<int>(node); branch != startNode_[robot];
+                 branch = parent_[static_cast<std::size_t>(branch)]) {
+                const double moved = subtreeCells_[static_cast<std::size_t>(branch)] * cellSeconds;
+                const double change = 2.0 * moved * (moved - gap);
+                if (change < best.change)
+                    best = {branch, static_cast<int>(node), other, change};
+                if (2.0 * moved >= gap)
+                    break; // branches only grow on the way up, and past half the gap they gain less
+            }
+        }
+    }
+    return best;
+}
+
+void SubtreePieces::apply(const Move& move) {
+    const auto from = static_cast<std::size_t>(piece_[static_cast<std::size_t>(move.branch)]);
+    const auto to = static_cast<std::size_t>(piece_[static_cast<std::size_t>(move.to)]);
+    cutEdge(move.branch, parent_[static_cast<std::size_t>(move.branch)]);
+    adjacency_[static_cast<std::size_t>(move.from)].push_back(move.to);
+    adjacency_[static_cast<std::size_t>(move.to)].push_back(move.from);
+    label(from);
+    label(to);
+    measure(from);
+    measure(to);
+}
+
+} // namespace mcpp
