@@ -5,6 +5,7 @@
 #include "core/model/MapPoint.hpp"
 #include "core/model/ProgressReporter.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace mcpp {
@@ -13,10 +14,11 @@ namespace mcpp {
 // robot walks round its own subtree from its start, with no way to go to its piece first, and the tree's
 // straight runs are cut only where two pieces meet (a piece of the tour, by contrast, must be reached).
 // The cut is made bottom up where a subtree with a start reaches a fair share; the pieces are then evened
-// out in time by moving a branch of one piece to a neighbouring piece through a grid edge, the move that
-// lowers the sum of the squares of the pieces' time differences most, until none does (at most
-// `mostMoves`). Where a start cell is the only way into part of the map, that part stays with its robot:
-// the caller compares with another division.
+// out in time by moving a branch of one piece to a neighbouring piece through a grid edge: of the moves
+// an estimate ranks best at lowering the sum of the squares of the pieces' times, each is made for real
+// and undone, and of those that lower it well the one whose walks turn least is kept (at most `mostMoves`).
+// Where a start cell is the only way into part of the map, or all ways to it are taken by a few pieces,
+// those pieces stay large: the caller compares with another division.
 class SubtreePieces {
   public:
     // tree: over the part's cells, each start cell in it; startCells and starts by robot of the part.
@@ -40,7 +42,9 @@ class SubtreePieces {
     [[nodiscard]] bool evenEnough() const;
     void label(std::size_t robot);
     void measure(std::size_t robot);
-    [[nodiscard]] Move bestMove() const;
+    [[nodiscard]] std::vector<Move> candidateMoves(std::size_t count) const;
+    [[nodiscard]] Move bestMove();
+    [[nodiscard]] std::pair<double, int> trial(const Move& move);
     void apply(const Move& move);
 
     const CellGraph& graph_;
@@ -54,6 +58,7 @@ class SubtreePieces {
     std::vector<int> subtreeCells_;            // cells below each node in its piece, itself included
     std::vector<std::vector<int>> pieceNodes_; // by robot, in breadth-first order from the start
     std::vector<double> seconds_;              // by robot
+    std::vector<int> turns_;                   // by robot
     int moves_ = 0;
 };
 

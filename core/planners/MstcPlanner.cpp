@@ -190,18 +190,24 @@ double longestPieceSeconds(const CellGraph& graph, const std::vector<PieceWalk>&
     return longest;
 }
 
-// Balanced pieces as subtrees of the part's tree that turns least, one start in each (SubtreePieces).
-std::vector<PieceWalk> subtreeWalks(const CellGraph& graph, const StartComponent& part,
-                                    const PartRobots& robots, int plateauRounds,
-                                    const ProgressReporter& progress) {
+// Balanced pieces as subtrees of the part's tree that turns least, one start in each (SubtreePieces). Each
+// piece is walked round the subtree it was cut as, or round a tree built again over its cells where that
+// walk is quicker: the branches handed between pieces leave turns a tree of the piece's own can save.
+std::vector<PieceWalk> subtreeWalks(const CellGraph& graph, const StartComponent& part, const PartRobots& robots,
+                                    int plateauRounds, const ProgressReporter& progress) {
     std::vector<int> scratchIndex(graph.size(), -1);
     const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds, &progress);
     const SpanningTree tree = trees.candidate(0, part.cells, robots.startCells.front());
     const SubtreePieces pieces(graph, tree, robots.startCells, robots.starts, progress);
     std::vector<PieceWalk> walks(robots.robots.size());
     TreeCircumnavigation walker(graph);
-    for (std::size_t k = 0; k < walks.size(); ++k)
-        walks[k].walk = walker.walk(pieces.pieceTree(k), robots.starts[k], false);
+    for (std::size_t k = 0; k < walks.size(); ++k) {
+        const SpanningTree cut = pieces.pieceTree(k);
+        const SpanningTree own = trees.candidate(0, cut.cells(), robots.startCells[k]);
+        const bool ownIsQuicker = walker.walkShape(own, robots.starts[k], false).seconds() <
+                                  walker.walkShape(cut, robots.starts[k], false).seconds();
+        walks[k].walk = walker.walk(ownIsQuicker ? own : cut, robots.starts[k], false);
+    }
     return walks;
 }
 
