@@ -193,8 +193,9 @@ double longestPieceSeconds(const CellGraph& graph, const std::vector<PieceWalk>&
 // Balanced pieces as subtrees of the part's tree that turns least, one start in each (SubtreePieces). Each
 // piece is walked round the subtree it was cut as, or round a tree built again over its cells where that
 // walk is quicker: the branches handed between pieces leave turns a tree of the piece's own can save.
-std::vector<PieceWalk> subtreeWalks(const CellGraph& graph, const StartComponent& part, const PartRobots& robots,
-                                    int plateauRounds, const ProgressReporter& progress) {
+std::vector<PieceWalk> subtreeWalks(const CellGraph& graph, const StartComponent& part,
+                                    const PartRobots& robots, int plateauRounds,
+                                    const ProgressReporter& progress) {
     std::vector<int> scratchIndex(graph.size(), -1);
     const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds, &progress);
     const SpanningTree tree = trees.candidate(0, part.cells, robots.startCells.front());
