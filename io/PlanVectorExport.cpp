@@ -276,9 +276,13 @@ Status writeStartLayer(VectorFileWriter& writer, const ExportContext& context,
     return {};
 }
 
-Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::UnreachableFeature>& parts,
-                             const OGRSpatialReference* crs, bool named) {
-    auto layer = writer.layer("unreachable", crs, wkbPolygon);
+// A layer of polygons with their area on the ground, those of `features` that `keep` takes; in KML each is
+// named `featureName`.
+template <typename Feature, typename Keep>
+Status writeAreaPolygonLayer(VectorFileWriter& writer, const char* layerName, const char* featureName,
+                             std::vector<Feature>& features, Keep keep, const OGRSpatialReference* crs,
+                             bool named) {
+    auto layer = writer.layer(layerName, crs, wkbPolygon);
     if (!layer)
         return Status::failure(layer.error());
     Fields fields{{{"area_m2", OFTReal}}};
@@ -286,16 +290,24 @@ Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::Unr
         fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
     if (Status status = createFields(writer, layer.value(), fields); !status)
         return status;
-    for (auto& part : parts) {
+    for (auto& part : features) {
+        if (!keep(part))
+            continue;
         OGRFeature feature(layer.value()->GetLayerDefn());
         if (named)
-            feature.SetField("name", "unreachable");
+            feature.SetField("name", featureName);
         feature.SetField("area_m2", part.areaSquareMetres);
         feature.SetGeometryDirectly(part.geometry.release());
         if (Status status = writer.add(layer.value(), feature); !status)
             return status;
     }
     return {};
+}
+
+Status writeUnreachableLayer(VectorFileWriter& writer, std::vector<internal::UnreachableFeature>& parts,
+                             const OGRSpatialReference* crs, bool named) {
+    return writeAreaPolygonLayer(
+        writer, "unreachable", "unreachable", parts, [](const auto&) { return true; }, crs, named);
 }
 
 // What each robot took over from others' first regions, for plans simulated over time.
@@ -325,8 +337,6 @@ Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& contex
     return {};
 }
 
-// The name batch mode gives the part's .plan and .waypoints files, without the extension: "robot_2" for a
-// mission in one part, "robot_2_part_3" for its third part (of a plan of `robots`).
 // The area of interest's polygons and the no-go zones', a layer for each that has any.
 Status writeAreaLayers(VectorFileWriter& writer, std::vector<internal::AreaFeature>& polygons,
                        const OGRSpatialReference* crs, bool named) {
@@ -336,29 +346,19 @@ Status writeAreaLayers(VectorFileWriter& writer, std::vector<internal::AreaFeatu
         };
         if (std::none_of(polygons.begin(), polygons.end(), inLayer))
             continue;
-        auto layer = writer.layer(noGoZones ? "no_go_zones" : "area_of_interest", crs, wkbPolygon);
-        if (!layer)
-            return Status::failure(layer.error());
-        Fields fields{{{"area_m2", OFTReal}}};
-        if (named)
-            fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
-        if (Status status = createFields(writer, layer.value(), fields); !status)
+        const Status status =
+            noGoZones
+                ? writeAreaPolygonLayer(writer, "no_go_zones", "no-go zone", polygons, inLayer, crs, named)
+                : writeAreaPolygonLayer(writer, "area_of_interest", "area of interest", polygons, inLayer,
+                                        crs, named);
+        if (!status)
             return status;
-        for (auto& polygon : polygons) {
-            if (!inLayer(polygon))
-                continue;
-            OGRFeature feature(layer.value()->GetLayerDefn());
-            if (named)
-                feature.SetField("name", noGoZones ? "no-go zone" : "area of interest");
-            feature.SetField("area_m2", polygon.areaSquareMetres);
-            feature.SetGeometryDirectly(polygon.geometry.release());
-            if (Status status = writer.add(layer.value(), feature); !status)
-                return status;
-        }
     }
     return {};
 }
 
+// The name batch mode gives the part's .plan and .waypoints files, without the extension: "robot_2" for a
+// mission in one part, "robot_2_part_3" for its third part (of a plan of `robots`).
 std::string partFileStem(int robot, int robots, std::size_t part, std::size_t parts) {
     const std::string whole = robotFileStem(robot, robots);
     return parts > 1 ? missionPartPath(whole, part, parts) : whole;
