@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 
 namespace mcpp {
 namespace {
@@ -190,6 +191,9 @@ double longestPieceSeconds(const CellGraph& graph, const std::vector<PieceWalk>&
     return longest;
 }
 
+// Evening out subtree pieces scans the part at every move: 85 000 cells with 8 robots take 3.3 s.
+constexpr std::size_t mostSubtreeCells = 100'000;
+
 // Balanced pieces as subtrees of the part's tree that turns least, one start in each (SubtreePieces). Each
 // piece is walked round the subtree it was cut as, or round a tree built again over its cells where that
 // walk is quicker: the branches handed between pieces leave turns a tree of the piece's own can save.
@@ -233,7 +237,8 @@ PlannerDescription MstcPlanner::describe() const {
             "With balanced pieces: also cut the tour's tree into a subtree per robot around its "
             "start, evened out by handing branches to neighbouring pieces, so that no robot has a "
             "way to its piece; the plan whose last robot finishes sooner is kept. A few more turns "
-            "where pieces meet; planning takes longer on large maps"),
+            "where pieces meet; planning takes longer, and parts above 100 000 cells keep the "
+            "tour's pieces"),
         TurnSearch::roundsParameter(),
     };
     description.balanceSwitch = "balanced";
@@ -282,11 +287,18 @@ void MstcPlanner::run(PlanningRun& run) const {
                     walks = std::move(reversed);
             }
             if (ways && part.robots.size() > 1 && parameters.boolean("subtree_pieces")) {
-                std::vector<PieceWalk> subtrees =
-                    subtreeWalks(plan.cells, part, robots, plateauRounds, run.progress());
-                if (longestPieceSeconds(plan.cells, subtrees, robots) <
-                    longestPieceSeconds(plan.cells, walks, robots))
+                if (part.cells.size() > mostSubtreeCells) {
+                    run.addIssue(IssueSeverity::Warning, "subtree-pieces-skipped",
+                                 "pieces as subtrees: a connected part of " +
+                                     std::to_string(part.cells.size()) + " cells is above the " +
+                                     std::to_string(mostSubtreeCells) +
+                                     " they are tried on; its pieces are the tour's");
+                } else if (std::vector<PieceWalk> subtrees =
+                               subtreeWalks(plan.cells, part, robots, plateauRounds, run.progress());
+                           longestPieceSeconds(plan.cells, subtrees, robots) <
+                           longestPieceSeconds(plan.cells, walks, robots)) {
                     walks = std::move(subtrees);
+                }
             }
             for (std::size_t k = 0; k < part.robots.size(); ++k) {
                 const int robot = part.robots[k];
