@@ -194,6 +194,13 @@ double longestPieceSeconds(const CellGraph& graph, const std::vector<PieceWalk>&
 // Evening out subtree pieces scans the part at every move: 85 000 cells with 8 robots take 3.3 s.
 constexpr std::size_t mostSubtreeCells = 100'000;
 
+// Whether every start has a cell of its own, as a subtree piece needs (starts sharing one are refused
+// before planning; a caller of the core may still pass them).
+bool startsApart(std::vector<int> startCells) {
+    std::sort(startCells.begin(), startCells.end());
+    return std::adjacent_find(startCells.begin(), startCells.end()) == startCells.end();
+}
+
 // Balanced pieces as subtrees of the part's tree that turns least, one start in each (SubtreePieces). Each
 // piece is walked round the subtree it was cut as, or round a tree built again over its cells where that
 // walk is quicker: the branches handed between pieces leave turns a tree of the piece's own can save.
@@ -293,11 +300,12 @@ void MstcPlanner::run(PlanningRun& run) const {
                                      std::to_string(part.cells.size()) + " cells is above the " +
                                      std::to_string(mostSubtreeCells) +
                                      " they are tried on; its pieces are the tour's");
-                } else if (std::vector<PieceWalk> subtrees =
-                               subtreeWalks(plan.cells, part, robots, plateauRounds, run.progress());
-                           longestPieceSeconds(plan.cells, subtrees, robots) <
-                           longestPieceSeconds(plan.cells, walks, robots)) {
-                    walks = std::move(subtrees);
+                } else if (startsApart(robots.startCells)) {
+                    std::vector<PieceWalk> subtrees =
+                        subtreeWalks(plan.cells, part, robots, plateauRounds, run.progress());
+                    if (longestPieceSeconds(plan.cells, subtrees, robots) <
+                        longestPieceSeconds(plan.cells, walks, robots))
+                        walks = std::move(subtrees);
                 }
             }
             for (std::size_t k = 0; k < part.robots.size(); ++k) {
