@@ -29,9 +29,11 @@ SubtreePieces::SubtreePieces(const CellGraph& graph, const SpanningTree& tree,
     }
     // Where no move evens the walks out for real (their turns change too), the estimate's best is made:
     // the pieces could then trade branches back and forth, so the search stops once the longest piece has
-    // not shortened for a while, or the longest lies within a thousandth of the mean.
+    // not shortened for a while, or the longest lies within a thousandth of the mean, and goes back to
+    // the division whose longest piece was shortest.
     constexpr int patience = 32;
-    double longest = *std::max_element(seconds_.begin(), seconds_.end());
+    double longest = longestSeconds();
+    std::vector<std::vector<int>> shortestForest = adjacency_; // the division whose longest piece is shortest
     int sinceShortened = 0;
     for (; moves_ < mostMoves && sinceShortened < patience && !evenEnough(); ++moves_) {
         if ((moves_ & 15) == 0)
@@ -40,9 +42,19 @@ SubtreePieces::SubtreePieces(const CellGraph& graph, const SpanningTree& tree,
         if (move.branch < 0)
             break;
         apply(move);
-        const double now = *std::max_element(seconds_.begin(), seconds_.end());
-        sinceShortened = now < longest ? 0 : sinceShortened + 1;
-        longest = std::min(longest, now);
+        ++sinceShortened;
+        if (const double now = longestSeconds(); now < longest) {
+            longest = now;
+            shortestForest = adjacency_;
+            sinceShortened = 0;
+        }
+    }
+    if (sinceShortened > 0) { // moves made since the shortest division: back to it
+        adjacency_ = std::move(shortestForest);
+        for (std::size_t robot = 0; robot < startNode_.size(); ++robot) {
+            label(robot);
+            measure(robot);
+        }
     }
 }
 
@@ -92,6 +104,10 @@ void SubtreePieces::cutBottomUp() {
     for (std::size_t node = 0; node < nodes; ++node)
         if (cutOff[node] != 0)
             cutEdge(static_cast<int>(node), tree_.parent(static_cast<int>(node)));
+}
+
+double SubtreePieces::longestSeconds() const {
+    return *std::max_element(seconds_.begin(), seconds_.end());
 }
 
 bool SubtreePieces::evenEnough() const {
@@ -199,7 +215,7 @@ std::vector<SubtreePieces::Move> SubtreePieces::candidateMoves(std::size_t count
 }
 
 // The candidates made for real: of those that lower the sum of the squares of the pieces' walk times at
-// least half as much as the best of them, the one whose walks turn least. Turns are what a move costs
+// least half as much as the best of them, the one that adds the fewest turns. Turns are what a move costs
 // beyond its time: a branch handed over may leave a U-turn where it was cut off and add one where it joins.
 SubtreePieces::Move SubtreePieces::bestMove() {
     // Each trial walks the two pieces: a dozen trials where pieces are small, fewer where each holds
@@ -207,7 +223,7 @@ SubtreePieces::Move SubtreePieces::bestMove() {
     const double meanPieceCells = static_cast<double>(tree_.size()) / static_cast<double>(startNode_.size());
     const auto trials = static_cast<std::size_t>(std::clamp(40000.0 / meanPieceCells, 3.0, 12.0));
     const std::vector<Move> candidates = candidateMoves(trials);
-    std::vector<std::pair<double, int>> tried; // real change of the squares, turns of the two pieces after
+    std::vector<std::pair<double, int>> tried; // real change of the squares, and of the two pieces' turns
     for (const Move& move : candidates)
         tried.push_back(trial(move));
     double bestChange = 0.0;
@@ -227,8 +243,8 @@ SubtreePieces::Move SubtreePieces::bestMove() {
     return chosen;
 }
 
-// What a move would do, undone again: the real change of the squares of the pieces' times, and the turns
-// of the two pieces' walks after it.
+// What a move would do, undone again: the real change of the squares of the pieces' times, and of the
+// turns of the two pieces' walks.
 std::pair<double, int> SubtreePieces::trial(const Move& move) {
     const auto from = static_cast<std::size_t>(piece_[static_cast<std::size_t>(move.branch)]);
     const auto to = static_cast<std::size_t>(piece_[static_cast<std::size_t>(move.to)]);
@@ -240,7 +256,7 @@ std::pair<double, int> SubtreePieces::trial(const Move& move) {
     apply(move);
     const double change = seconds_[from] * seconds_[from] + seconds_[to] * seconds_[to] -
                           secondsFrom * secondsFrom - secondsTo * secondsTo;
-    const int turns = turns_[from] + turns_[to];
+    const int turns = turns_[from] + turns_[to] - turnsFrom - turnsTo;
     cutEdge(move.from, move.to);
     adjacency_[static_cast<std::size_t>(move.branch)].push_back(parent);
     adjacency_[static_cast<std::size_t>(parent)].push_back(move.branch);

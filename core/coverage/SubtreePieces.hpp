@@ -16,7 +16,8 @@ namespace mcpp {
 // The cut is made bottom up where a subtree with a start reaches a fair share; the pieces are then evened
 // out in time by moving a branch of one piece to a neighbouring piece through a grid edge: of the moves
 // an estimate ranks best at lowering the sum of the squares of the pieces' times, each is made for real
-// and undone, and of those that lower it well the one whose walks turn least is kept (at most `mostMoves`).
+// and undone, and of those that lower it well the one that adds the fewest turns is made (at most
+// `mostMoves`; the division whose longest piece was shortest is kept).
 // Where a start cell is the only way into part of the map, or all ways to it are taken by a few pieces,
 // those pieces stay large: the caller compares with another division.
 class SubtreePieces {
@@ -39,6 +40,7 @@ class SubtreePieces {
 
     void cutBottomUp();
     void cutEdge(int a, int b);
+    [[nodiscard]] double longestSeconds() const;
     [[nodiscard]] bool evenEnough() const;
     void label(std::size_t robot);
     void measure(std::size_t robot);

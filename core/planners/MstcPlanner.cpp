@@ -300,7 +300,11 @@ void MstcPlanner::run(PlanningRun& run) const {
                                      std::to_string(part.cells.size()) + " cells is above the " +
                                      std::to_string(mostSubtreeCells) +
                                      " they are tried on; its pieces are the tour's");
-                } else if (startsApart(robots.startCells)) {
+                } else if (!startsApart(robots.startCells)) {
+                    run.addIssue(IssueSeverity::Warning, "subtree-pieces-skipped",
+                                 "pieces as subtrees: two robots start in one cell, and a subtree holds one "
+                                 "start; the pieces are the tour's");
+                } else {
                     std::vector<PieceWalk> subtrees =
                         subtreeWalks(plan.cells, part, robots, plateauRounds, run.progress());
                     if (longestPieceSeconds(plan.cells, subtrees, robots) <

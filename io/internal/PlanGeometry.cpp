@@ -145,17 +145,25 @@ void addTakenOver(const Plan& plan, double metresPerUnit, PlanFeatures& features
     }
 }
 
+// Whether a ring has three corners at least, the first one given again at its end or not: GeoJSON and
+// GeoPackage readers refuse a ring of fewer.
+bool enclosesArea(const AreaOutline::Ring& corners) {
+    const bool closed =
+        corners.size() > 1 && corners.front().x == corners.back().x && corners.front().y == corners.back().y;
+    return corners.size() >= (closed ? 4U : 3U);
+}
+
 // The area's polygons in CRS units, each with its area on the ground.
 void addArea(const AreaOutline* area, double metresPerUnit, PlanFeatures& features) {
     if (area == nullptr)
         return;
     const auto add = [&](const std::vector<AreaOutline::Polygon>& polygons, bool noGoZone) {
         for (const AreaOutline::Polygon& rings : polygons) {
-            if (rings.empty() || rings.front().size() < 3)
+            if (rings.empty() || !enclosesArea(rings.front()))
                 continue; // no outer ring to speak of
             auto polygon = std::make_unique<OGRPolygon>();
             for (const AreaOutline::Ring& corners : rings)
-                if (corners.size() >= 3)
+                if (enclosesArea(corners))
                     polygon->addRingDirectly(crsRing(corners, metresPerUnit).release());
             const double squareMetres = polygon->get_Area() * metresPerUnit * metresPerUnit;
             features.area.push_back(AreaFeature{noGoZone, std::move(polygon), squareMetres});

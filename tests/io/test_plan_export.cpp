@@ -618,7 +618,7 @@ class PlanExportTest : public QObject {
 
     // The area the plan was asked for goes with it: a layer for the area of interest (here a 100 m square
     // with a 20 m hole) and one for the no-go zones, in the CRS as given, each polygon with its area; GeoJSON
-    // and KML carry them too. A plan without an area has neither layer.
+    // and KML carry them too. A ring of two corners is no polygon; a plan without an area has neither layer.
     void areaPolygonsAreTheirOwnLayers() {
         Dataset plain = openVector(writtenGeoPackage("no-area.gpkg"));
         QVERIFY(plain->GetLayerByName("area_of_interest") == nullptr);
@@ -632,6 +632,7 @@ class PlanExportTest : public QObject {
         AreaOutline area;
         area.include.push_back({square(x - 10.0, y - 90.0, 100.0), square(x + 30.0, y - 50.0, 20.0)});
         area.exclude.push_back({square(x + 60.0, y - 80.0, 10.0)});
+        area.exclude.push_back({{{x, y}, {x + 5.0, y}, {x, y}}}); // two corners: no polygon, left out
         ExportContext withArea = context();
         withArea.area = &area;
 
@@ -673,6 +674,7 @@ class PlanExportTest : public QObject {
         QVERIFY(writePlanKml(withArea, kml).ok());
         Dataset kmlFile = openVector(kml);
         QVERIFY(kmlFile->GetLayerByName("area_of_interest") != nullptr);
+        QVERIFY(kmlFile->GetLayerByName("no_go_zones") != nullptr);
         QCOMPARE(kmlFile->GetLayerByName("no_go_zones")->GetFeatureCount(), GIntBig{1});
     }
 
