@@ -340,18 +340,22 @@ Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& contex
 // The area of interest's polygons and the no-go zones', a layer for each that has any.
 Status writeAreaLayers(VectorFileWriter& writer, std::vector<internal::AreaFeature>& polygons,
                        const OGRSpatialReference* crs, bool named) {
-    for (const bool noGoZones : {false, true}) {
+    struct AreaLayer {
+        const char* name;
+        const char* featureName;
+        bool noGoZones;
+    };
+    constexpr AreaLayer layers[] = {{"area_of_interest", "area of interest", false},
+                                    {"no_go_zones", "no-go zone", true}};
+    for (const AreaLayer& areaLayer : layers) {
         const auto inLayer = [&](const internal::AreaFeature& polygon) {
-            return polygon.noGoZone == noGoZones;
+            return polygon.noGoZone == areaLayer.noGoZones;
         };
         if (std::none_of(polygons.begin(), polygons.end(), inLayer))
             continue;
-        const Status status =
-            noGoZones
-                ? writeAreaPolygonLayer(writer, "no_go_zones", "no-go zone", polygons, inLayer, crs, named)
-                : writeAreaPolygonLayer(writer, "area_of_interest", "area of interest", polygons, inLayer,
-                                        crs, named);
-        if (!status)
+        if (Status status = writeAreaPolygonLayer(writer, areaLayer.name, areaLayer.featureName, polygons,
+                                                  inLayer, crs, named);
+            !status)
             return status;
     }
     return {};

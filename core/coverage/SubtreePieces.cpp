@@ -13,8 +13,8 @@ SubtreePieces::SubtreePieces(const CellGraph& graph, const SpanningTree& tree,
                              const ProgressReporter& progress, int mostMoves)
     : graph_(graph), tree_(tree), starts_(starts), nodeOfCell_(graph.size(), -1),
       startNode_(startCells.size(), -1), adjacency_(tree.size()), piece_(tree.size(), -1),
-      parent_(tree.size(), -1), subtreeCells_(tree.size(), 0), pieceNodes_(startCells.size()),
-      seconds_(startCells.size(), 0.0), turns_(startCells.size(), 0) {
+      parent_(tree.size(), -1), localOfNode_(tree.size(), -1), subtreeCells_(tree.size(), 0),
+      pieceNodes_(startCells.size()), seconds_(startCells.size(), 0.0), turns_(startCells.size(), 0) {
     for (std::size_t node = 0; node < tree.size(); ++node) {
         nodeOfCell_[static_cast<std::size_t>(tree.cellOf(static_cast<int>(node)))] = static_cast<int>(node);
         for (const int next : tree.neighbours(static_cast<int>(node)))
@@ -149,7 +149,7 @@ void SubtreePieces::label(std::size_t robot) {
 
 SpanningTree SubtreePieces::pieceTree(std::size_t robot) const {
     const std::vector<int>& nodes = pieceNodes_[robot];
-    std::vector<int> localOf(tree_.size(), -1);
+    std::vector<int>& localOf = localOfNode_;
     std::vector<int> cells;
     cells.reserve(nodes.size());
     for (const int node : nodes) {
@@ -162,6 +162,8 @@ SpanningTree SubtreePieces::pieceTree(std::size_t robot) const {
         if (const int parent = parent_[static_cast<std::size_t>(node)]; parent >= 0)
             edges.emplace_back(localOf[static_cast<std::size_t>(node)],
                                localOf[static_cast<std::size_t>(parent)]);
+    for (const int node : nodes)
+        localOf[static_cast<std::size_t>(node)] = -1; // left as found: linear in the piece, not the part
     return {std::move(cells), 0, edges};
 }
 

@@ -28,6 +28,7 @@ class SubtreePieces {
                   int mostMoves = 4096);
 
     // Each robot's piece as a tree rooted at its start cell (graph cells, as SpanningTree holds them).
+    // Not to be called from two threads at once: it shares a scratch index.
     [[nodiscard]] SpanningTree pieceTree(std::size_t robot) const;
 
   private:
@@ -57,6 +58,7 @@ class SubtreePieces {
     std::vector<std::vector<int>> adjacency_;  // the forest's edges, by node
     std::vector<int> piece_;                   // robot by node
     std::vector<int> parent_;                  // in its piece, rooted at the start; -1 at the start
+    mutable std::vector<int> localOfNode_;     // pieceTree's scratch, by node: -1 between calls
     std::vector<int> subtreeCells_;            // cells below each node in its piece, itself included
     std::vector<std::vector<int>> pieceNodes_; // by robot, in breadth-first order from the start
     std::vector<double> seconds_;              // by robot

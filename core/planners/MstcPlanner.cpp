@@ -201,26 +201,32 @@ bool startsApart(std::vector<int> startCells) {
     return std::adjacent_find(startCells.begin(), startCells.end()) == startCells.end();
 }
 
+struct SubtreeWalks {
+    std::vector<PieceWalk> walks;
+    double longestSeconds = 0.0; // as longestPieceSeconds would time them
+};
+
 // Balanced pieces as subtrees of the part's tree that turns least, one start in each (SubtreePieces). Each
 // piece is walked round the subtree it was cut as, or round a tree built again over its cells where that
 // walk is quicker: the branches handed between pieces leave turns a tree of the piece's own can save.
-std::vector<PieceWalk> subtreeWalks(const CellGraph& graph, const StartComponent& part,
-                                    const PartRobots& robots, int plateauRounds,
-                                    const ProgressReporter& progress) {
+SubtreeWalks subtreeWalks(const CellGraph& graph, const StartComponent& part, const PartRobots& robots,
+                          int plateauRounds, const ProgressReporter& progress) {
     std::vector<int> scratchIndex(graph.size(), -1);
     const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds, &progress);
     const SpanningTree tree = trees.candidate(0, part.cells, robots.startCells.front());
     const SubtreePieces pieces(graph, tree, robots.startCells, robots.starts, progress);
-    std::vector<PieceWalk> walks(robots.robots.size());
+    SubtreeWalks result;
+    result.walks.resize(robots.robots.size());
     TreeCircumnavigation walker(graph);
-    for (std::size_t k = 0; k < walks.size(); ++k) {
+    for (std::size_t k = 0; k < result.walks.size(); ++k) {
         const SpanningTree cut = pieces.pieceTree(k);
         const SpanningTree own = trees.candidate(0, cut.cells(), robots.startCells[k]);
-        const bool ownIsQuicker = walker.walkShape(own, robots.starts[k], false).seconds() <
-                                  walker.walkShape(cut, robots.starts[k], false).seconds();
-        walks[k].walk = walker.walk(ownIsQuicker ? own : cut, robots.starts[k], false);
+        const double cutSeconds = walker.walkShape(cut, robots.starts[k], false).seconds();
+        const double ownSeconds = walker.walkShape(own, robots.starts[k], false).seconds();
+        result.walks[k].walk = walker.walk(ownSeconds < cutSeconds ? own : cut, robots.starts[k], false);
+        result.longestSeconds = std::max(result.longestSeconds, std::min(cutSeconds, ownSeconds));
     }
-    return walks;
+    return result;
 }
 
 } // namespace
@@ -305,11 +311,10 @@ void MstcPlanner::run(PlanningRun& run) const {
                                  "pieces as subtrees: two robots start in one cell, and a subtree holds one "
                                  "start; the pieces are the tour's");
                 } else {
-                    std::vector<PieceWalk> subtrees =
+                    SubtreeWalks subtrees =
                         subtreeWalks(plan.cells, part, robots, plateauRounds, run.progress());
-                    if (longestPieceSeconds(plan.cells, subtrees, robots) <
-                        longestPieceSeconds(plan.cells, walks, robots))
-                        walks = std::move(subtrees);
+                    if (subtrees.longestSeconds < longestPieceSeconds(plan.cells, walks, robots))
+                        walks = std::move(subtrees.walks);
                 }
             }
             for (std::size_t k = 0; k < part.robots.size(); ++k) {
