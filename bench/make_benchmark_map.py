@@ -40,6 +40,7 @@ BLOCK = 100
 
 
 def write_map(folder, name, columns, rows, pixel, row_bytes):
+    os.makedirs(folder, exist_ok=True)
     raw = os.path.join(folder, name + ".bil")
     with open(raw, "wb") as band:
         for row in range(rows):

@@ -13,11 +13,12 @@ namespace mcpp {
 // One spanning tree of a connected part cut into a subtree per robot, each holding that robot's start: a
 // robot walks round its own subtree from its start, with no way to go to its piece first, and the tree's
 // straight runs are cut only where two pieces meet (a piece of the tour, by contrast, must be reached).
-// The cut is made bottom up where a subtree with a start reaches a fair share; the pieces are then evened
-// out in time by moving a branch of one piece to a neighbouring piece through a grid edge: of the moves
-// an estimate ranks best at lowering the sum of the squares of the pieces' times, each is made for real
-// and undone, and of those that lower it well the one that adds the fewest turns is made (at most
-// `mostMoves`; the division whose longest piece was shortest is kept).
+// The cut is made bottom up where a subtree with a start reaches a fair share, the tree held from whichever
+// start (or its root) cuts most evenly; the pieces are then evened out in time by moving a branch of one
+// piece to a neighbouring piece through a grid edge: of the moves an estimate ranks best at lowering the
+// sum of the squares of the pieces' times, each is made for real and undone, and of those that lower it
+// well the one that adds the fewest turns is made (at most `mostMoves`; the division whose longest piece
+// was shortest is kept).
 // Where a start cell is the only way into part of the map, or all ways to it are taken by a few pieces,
 // those pieces stay large: the caller compares with another division.
 class SubtreePieces {
@@ -39,9 +40,12 @@ class SubtreePieces {
         double change = 0.0;
     };
 
-    void cutBottomUp();
+    void cutFromBestRoot(const ProgressReporter& progress);
+    void labelAndMeasureAll();
+    void cutBottomUp(int root);
     void cutEdge(int a, int b);
     [[nodiscard]] double longestSeconds() const;
+    [[nodiscard]] double sumOfSquares() const;
     [[nodiscard]] bool evenEnough() const;
     void label(std::size_t robot);
     void measure(std::size_t robot);
