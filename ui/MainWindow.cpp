@@ -48,6 +48,7 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -1024,6 +1025,27 @@ void MainWindow::explainClassTable(const io::OpeningClassTable& opening) {
 bool MainWindow::setAreaFiles(const QString& includePath, const QString& excludePath) {
     if (!document_->hasMap())
         return false;
+    const io::AreaOfInterest before = document_->mission().area;
+    if (!useAreaFiles(includePath, excludePath))
+        return false;
+    const bool cleared = includePath.isEmpty() && excludePath.isEmpty();
+    pushAreaEdit(before, {}, cleared ? tr("Clear area and no-go zones") : tr("Area from file"));
+    return true;
+}
+
+void MainWindow::pushAreaEdit(io::AreaOfInterest before, std::vector<AreaEditCommand::RewrittenFile> files,
+                              const QString& text) {
+    const auto useArea = [this](const io::AreaOfInterest& area) {
+        return useAreaFiles(QString::fromStdString(area.includePath),
+                            QString::fromStdString(area.excludePath));
+    };
+    undoStack_->push(
+        new AreaEditCommand(std::move(before), document_->mission().area, std::move(files), useArea, text));
+}
+
+bool MainWindow::useAreaFiles(const QString& includePath, const QString& excludePath) {
+    if (!document_->hasMap())
+        return false;
     io::Mission mission = document_->mission();
     // Read again from the file, so that clearing or changing the area starts from the whole map.
     mission.rasterPath = document_->raster()->path;
@@ -1052,7 +1074,6 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
             areaNotes << asSentence(warning);
     document_->reset(std::make_shared<io::LoadedRaster>(std::move(raster.value())), std::move(mission),
                      document_->missionPath());
-    settingsModified_ = true;
     updateTitle();
     updateActions();
     QString message = wholeMap ? tr("Planning on the whole map again.") : areaNotes.join(QLatin1Char(' '));
@@ -1443,6 +1464,10 @@ void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
         return;
     const io::AreaOfInterest area = document_->mission().area;
     const QString path = drawnAreaPath(exclude);
+    // A zone added to the window's own drawn file rewrites it: its bytes are kept for undo.
+    std::optional<QByteArray> bytesBefore;
+    if (QFile file(path); file.open(QIODevice::ReadOnly))
+        bytesBefore = file.readAll();
     // Written beside its final name and tried first: an area the map refuses changes no file in use.
     const QString trial = path + QStringLiteral(".trial");
     // No-go zones add up (the polygons of the file in use come first); an area of interest replaces the last.
@@ -1452,8 +1477,8 @@ void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
         reportError(tr("Cannot use the area"), QString::fromStdString(written.error()));
         return;
     }
-    const bool used = exclude ? setAreaFiles(QString::fromStdString(area.includePath), trial)
-                              : setAreaFiles(trial, QString::fromStdString(area.excludePath));
+    const bool used = exclude ? useAreaFiles(QString::fromStdString(area.includePath), trial)
+                              : useAreaFiles(trial, QString::fromStdString(area.excludePath));
     if (!used) {
         QFile::remove(trial);
         return;
@@ -1468,6 +1493,10 @@ void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
     document_->setAreaPaths(placed);
     drawnFiles_.insert(path);
     rememberInputFiles();
+    QFile file(path);
+    QByteArray bytesAfter = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    pushAreaEdit(area, {{path, std::move(bytesBefore), std::move(bytesAfter)}},
+                 exclude ? tr("Draw no-go zone") : tr("Draw area of interest"));
 }
 
 bool MainWindow::keepDrawnAreasBeside(const QString& missionPath) {

@@ -3,6 +3,7 @@
 #include "core/model/MapPoint.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/MissionInputs.hpp"
+#include "ui/AreaEditCommand.hpp"
 #include "ui/ComparisonRunner.hpp"
 #include "ui/MissionDocument.hpp"
 
@@ -104,6 +105,7 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] bool isMissionModified() const;
     // Plans only inside the polygons of includePath and outside those of excludePath (vector files; empty
     // for none): the raster is read again with the area, the robots and classes kept, the plan dropped.
+    // One undoable edit.
     bool setAreaFiles(const QString& includePath, const QString& excludePath);
     // Applies a class-table preset to the open raster as one undoable edit.
     bool applyPreset(const QString& preset);
@@ -162,6 +164,10 @@ class MainWindow : public QMainWindow {
     // Areas drawn on the map (Plan > Draw area of interest / Draw no-go zone) become GeoJSON files: beside
     // a saved mission, else in the application's data folder until the mission is saved.
     void useDrawnArea(const std::vector<MapPoint>& ring);
+    // setAreaFiles without the undo step: what the undo steps themselves use.
+    bool useAreaFiles(const QString& includePath, const QString& excludePath);
+    void pushAreaEdit(io::AreaOfInterest before, std::vector<AreaEditCommand::RewrittenFile> files,
+                      const QString& text);
     [[nodiscard]] QString drawnAreaPath(bool exclude) const;
     // Saving a mission copies area files drawn before it had a folder beside it; returns false on failure.
     bool keepDrawnAreasBeside(const QString& missionPath);

@@ -1269,6 +1269,75 @@ class TestMainWindow : public QObject {
                  insideArea());
     }
 
+    // Each drawn zone is one undo step: undone one by one, the map comes back zone by zone (a second no-go
+    // zone rewrites the window's drawn file, which undo writes back), and redone they all come back.
+    void drawnZonesAreUndoneOneByOne() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif")));
+        QApplication::processEvents();
+        ui::MapCanvas* canvas = window.canvas();
+        canvas->zoomToFit();
+        const auto insideArea = [&window] {
+            std::int64_t inside = 0;
+            for (const auto& [value, count] : window.document()->raster()->classPixelCounts)
+                inside += count;
+            const ClassGrid& grid = *window.document()->grid();
+            return static_cast<double>(inside) * grid.pixelWidth * grid.pixelHeight;
+        };
+        const auto at = [canvas](double x, double y) { return canvas->devicePointOf({x, y}).toPoint(); };
+        const auto drag = [&](const char* action, QPoint from, QPoint to) {
+            window.findChild<QAction*>(QString::fromLatin1(action))->trigger();
+            QTest::mousePress(canvas, Qt::LeftButton, {}, from);
+            QTest::mouseMove(canvas, (from + to) / 2);
+            QTest::mouseMove(canvas, to);
+            QTest::mouseRelease(canvas, Qt::LeftButton, {}, to);
+        };
+        auto* stack = window.findChild<QUndoStack*>();
+        QVERIFY(stack != nullptr);
+        const double wholeMap = insideArea();
+        drag("drawAreaAction", at(305000, 4150000), at(325000, 4130000));
+        const double square = insideArea();
+        drag("drawNoGoAction", at(310000, 4140000), at(315000, 4135000));
+        const double oneZone = insideArea();
+        const std::string zonesFile = window.document()->mission().area.excludePath;
+        drag("drawNoGoAction", at(318000, 4148000), at(323000, 4143000));
+        const double twoZones = insideArea();
+        QCOMPARE(window.document()->mission().area.excludePath, zonesFile); // rewritten in place
+        QVERIFY2(
+            square < 0.9 * wholeMap && oneZone < square && twoZones < oneZone,
+            qPrintable(QStringLiteral("%1 %2 %3 %4").arg(wholeMap).arg(square).arg(oneZone).arg(twoZones)));
+        QCOMPARE(stack->count(), 3);
+        QCOMPARE(stack->undoText(), QStringLiteral("Draw no-go zone"));
+        QVERIFY(window.isMissionModified());
+
+        stack->undo();
+        QCOMPARE(window.document()->mission().area.excludePath, zonesFile);
+        QCOMPARE(insideArea(), oneZone); // the file holds the first zone only again
+        stack->undo();
+        QVERIFY(window.document()->mission().area.excludePath.empty());
+        QCOMPARE(insideArea(), square);
+        stack->undo();
+        QVERIFY(window.document()->mission().area.empty());
+        QCOMPARE(insideArea(), wholeMap);
+        QVERIFY(!window.isMissionModified());
+
+        for (int step = 0; step < 3; ++step)
+            stack->redo();
+        QCOMPARE(window.document()->mission().area.excludePath, zonesFile);
+        QCOMPARE(insideArea(), twoZones);
+
+        // Clearing the area is a step too.
+        window.findChild<QAction*>(QStringLiteral("clearAreaAction"))->trigger();
+        QCOMPARE(insideArea(), wholeMap);
+        stack->undo();
+        QCOMPARE(insideArea(), twoZones);
+    }
+
     // A class table loaded from a CSV is neither a preset nor the legend: the preset box says so.
     void presetBoxNamesALoadedTable() {
         QTemporaryDir directory;
