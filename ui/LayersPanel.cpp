@@ -1,14 +1,16 @@
 #include "ui/LayersPanel.hpp"
 
 #include <QCheckBox>
-#include <QVBoxLayout>
+#include <QGridLayout>
 
 namespace mcpp::ui {
 
 LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("layersPanel"));
-    auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(6, 6, 6, 6);
+    // Three toggles a row: in a column they took nine rows of a dock that shows three at 1600 x 1000.
+    auto* layout = new QGridLayout(this);
+    layout->setContentsMargins(6, 4, 6, 4);
+    layout->setVerticalSpacing(2);
     landCover_ =
         addToggle(QStringLiteral("layerLandCover"), tr("Land cover"), tr("The raster in its class colours"));
     quadTree_ = addToggle(QStringLiteral("layerQuadTree"), tr("Cells"),
@@ -30,7 +32,7 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     area_ = addToggle(QStringLiteral("layerArea"), tr("Area edges"),
                       tr("Dashed: the edge of the area of interest as drawn or read from its file, and the "
                          "no-go zones, hatched red; cells along the edge may reach past it"));
-    layout->addStretch(1);
+    layout->setRowStretch(layout->rowCount(), 1);
 }
 
 QCheckBox* LayersPanel::addToggle(const QString& objectName, const QString& text, const QString& toolTip) {
@@ -38,7 +40,9 @@ QCheckBox* LayersPanel::addToggle(const QString& objectName, const QString& text
     box->setObjectName(objectName);
     box->setToolTip(toolTip);
     box->setChecked(true);
-    layout()->addWidget(box);
+    auto* grid = static_cast<QGridLayout*>(layout());
+    const int placed = grid->count();
+    grid->addWidget(box, placed / togglesPerRow, placed % togglesPerRow);
     connect(box, &QCheckBox::toggled, this, [this] { emit layersChanged(layers()); });
     return box;
 }

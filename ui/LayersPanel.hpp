@@ -21,6 +21,7 @@ class LayersPanel : public QWidget {
     void layersChanged(const mcpp::render::MapLayers& layers);
 
   private:
+    static constexpr int togglesPerRow = 3;
     QCheckBox* addToggle(const QString& objectName, const QString& text, const QString& toolTip);
 
     QCheckBox* landCover_;

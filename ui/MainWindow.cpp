@@ -431,7 +431,10 @@ void MainWindow::createDocks() {
                                 scroll->verticalScrollBar()->sizeHint().width());
         return scroll;
     };
-    auto* layersDock = makeDock(QStringLiteral("layersDock"), tr("Layers"), scrolled(layersPanel_), this);
+    QScrollArea* layersScroll = scrolled(layersPanel_);
+    // Its three rows of toggles in full: only a narrow window scrolls them.
+    layersScroll->setMinimumHeight(layersPanel_->sizeHint().height());
+    auto* layersDock = makeDock(QStringLiteral("layersDock"), tr("Layers"), layersScroll, this);
     auto* classesDock =
         makeDock(QStringLiteral("classesDock"), tr("Land-cover classes"), classesWidget, this);
     auto* robotsDock = makeDock(QStringLiteral("robotsDock"), tr("Robots"), robotsWidget, this);

@@ -1269,6 +1269,35 @@ class TestMainWindow : public QObject {
                  insideArea());
     }
 
+    // At 1600 x 1000 every layer toggle shows in the Layers dock without scrolling (in one column they took
+    // nine rows, and "Area edges" was found by scrolling).
+    void everyLayerToggleShowsWithoutScrolling() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QApplication::processEvents();
+        auto* panel = window.findChild<QWidget*>(QStringLiteral("layersPanel"));
+        QVERIFY(panel != nullptr);
+        QWidget* viewport = panel->parentWidget();
+        const QList<QCheckBox*> toggles = panel->findChildren<QCheckBox*>();
+        QCOMPARE(toggles.size(), 9);
+        for (const QCheckBox* toggle : toggles) {
+            const QRect shown(toggle->mapTo(viewport, QPoint(0, 0)), toggle->size());
+            QVERIFY2(viewport->rect().contains(shown),
+                     qPrintable(QStringLiteral("%1 at %2,%3 %4 x %5 in a view of %6 x %7")
+                                    .arg(toggle->text())
+                                    .arg(shown.x())
+                                    .arg(shown.y())
+                                    .arg(shown.width())
+                                    .arg(shown.height())
+                                    .arg(viewport->width())
+                                    .arg(viewport->height())));
+        }
+    }
+
     // Each drawn zone is one undo step: undone one by one, the map comes back zone by zone (a second no-go
     // zone rewrites the window's drawn file, which undo writes back), and redone they all come back.
     void drawnZonesAreUndoneOneByOne() {
