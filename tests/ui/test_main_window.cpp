@@ -114,6 +114,28 @@ bool writeFile(const QString& path, const QByteArray& bytes) {
     return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
 }
 
+// The window shown at 1400 x 900 with the NLCD test raster, zoomed to fit, ready for drawing on.
+bool openForDrawing(ui::MainWindow& window) {
+    window.setDialogsEnabled(false);
+    window.setOpenSampleOnFirstStart(false);
+    window.resize(1400, 900);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window) || !window.openRaster(dataPath("landcover/nlcd.tif")))
+        return false;
+    QApplication::processEvents();
+    window.canvas()->zoomToFit();
+    return true;
+}
+
+// The area left to plan on, in square metres: the pixels the area and no-go zones leave.
+double areaToPlan(const ui::MainWindow& window) {
+    std::int64_t inside = 0;
+    for (const auto& [value, count] : window.document()->raster()->classPixelCounts)
+        inside += count;
+    const ClassGrid& grid = *window.document()->grid();
+    return static_cast<double>(inside) * grid.pixelWidth * grid.pixelHeight;
+}
+
 } // namespace
 
 class TestMainWindow : public QObject {
@@ -1150,22 +1172,9 @@ class TestMainWindow : public QObject {
     void areasDrawnOnTheMapLimitThePlan() {
         QTemporaryDir directory;
         ui::MainWindow window;
-        window.setDialogsEnabled(false);
-        window.setOpenSampleOnFirstStart(false);
-        window.resize(1400, 900);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif")));
-        QApplication::processEvents();
+        QVERIFY(openForDrawing(window));
         ui::MapCanvas* canvas = window.canvas();
-        canvas->zoomToFit();
-        const auto insideArea = [&window] {
-            std::int64_t inside = 0;
-            for (const auto& [value, count] : window.document()->raster()->classPixelCounts)
-                inside += count;
-            const ClassGrid& grid = *window.document()->grid();
-            return static_cast<double>(inside) * grid.pixelWidth * grid.pixelHeight;
-        };
+        const auto insideArea = [&window] { return areaToPlan(window); };
         const auto at = [canvas](double x, double y) { return canvas->devicePointOf({x, y}).toPoint(); };
 
         // A 20 x 20 km square by its corners, finished with Enter.
@@ -1302,22 +1311,9 @@ class TestMainWindow : public QObject {
     // zone rewrites the window's drawn file, which undo writes back), and redone they all come back.
     void drawnZonesAreUndoneOneByOne() {
         ui::MainWindow window;
-        window.setDialogsEnabled(false);
-        window.setOpenSampleOnFirstStart(false);
-        window.resize(1400, 900);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif")));
-        QApplication::processEvents();
+        QVERIFY(openForDrawing(window));
         ui::MapCanvas* canvas = window.canvas();
-        canvas->zoomToFit();
-        const auto insideArea = [&window] {
-            std::int64_t inside = 0;
-            for (const auto& [value, count] : window.document()->raster()->classPixelCounts)
-                inside += count;
-            const ClassGrid& grid = *window.document()->grid();
-            return static_cast<double>(inside) * grid.pixelWidth * grid.pixelHeight;
-        };
+        const auto insideArea = [&window] { return areaToPlan(window); };
         const auto at = [canvas](double x, double y) { return canvas->devicePointOf({x, y}).toPoint(); };
         const auto drag = [&](const char* action, QPoint from, QPoint to) {
             window.findChild<QAction*>(QString::fromLatin1(action))->trigger();
