@@ -432,7 +432,7 @@ void MainWindow::createDocks() {
         return scroll;
     };
     QScrollArea* layersScroll = scrolled(layersPanel_);
-    // Its three rows of toggles in full: only a narrow window scrolls them.
+    // Its three rows of toggles in full, taken from the robots' table below it.
     layersScroll->setMinimumHeight(layersPanel_->sizeHint().height());
     auto* layersDock = makeDock(QStringLiteral("layersDock"), tr("Layers"), layersScroll, this);
     auto* classesDock =
@@ -1032,18 +1032,17 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
     if (!useAreaFiles(includePath, excludePath))
         return false;
     const bool cleared = includePath.isEmpty() && excludePath.isEmpty();
-    pushAreaEdit(before, {}, cleared ? tr("Clear area and no-go zones") : tr("Area from file"));
+    if (!(document_->mission().area == before)) // the same files again change nothing
+        pushAreaEdit(before, cleared ? tr("Clear area and no-go zones") : tr("Area from file"));
     return true;
 }
 
-void MainWindow::pushAreaEdit(io::AreaOfInterest before, std::vector<AreaEditCommand::RewrittenFile> files,
-                              const QString& text) {
+void MainWindow::pushAreaEdit(io::AreaOfInterest before, const QString& text) {
     const auto useArea = [this](const io::AreaOfInterest& area) {
         return useAreaFiles(QString::fromStdString(area.includePath),
                             QString::fromStdString(area.excludePath));
     };
-    undoStack_->push(
-        new AreaEditCommand(std::move(before), document_->mission().area, std::move(files), useArea, text));
+    undoStack_->push(new AreaEditCommand(std::move(before), document_->mission().area, useArea, text));
 }
 
 bool MainWindow::useAreaFiles(const QString& includePath, const QString& excludePath) {
@@ -1440,10 +1439,6 @@ QString freeAreaFileName(const QString& folder, const QString& base, const QStri
 
 QString MainWindow::drawnAreaPath(bool exclude) const {
     const QString kind = exclude ? QStringLiteral("no-go") : QStringLiteral("area");
-    const std::string& inUse =
-        exclude ? document_->mission().area.excludePath : document_->mission().area.includePath;
-    const QString current =
-        inUse.empty() ? QString() : QFileInfo(QString::fromStdString(inUse)).absoluteFilePath();
     QString folder;
     QString base;
     if (!document_->missionPath().isEmpty()) {
@@ -1454,9 +1449,8 @@ QString MainWindow::drawnAreaPath(bool exclude) const {
         QDir().mkpath(folder);
         base = QFileInfo(QString::fromStdString(document_->raster()->path)).completeBaseName();
     }
-    // Never over a file the user made: the file this window drew and uses, or a name not taken yet.
-    if (drawnFiles_.contains(current) && QFileInfo(current).absolutePath() == QDir(folder).absolutePath())
-        return current;
+    // Always a name no file has: no file is written twice, so undo only switches files, and a file a saved
+    // mission names is never changed.
     return freeAreaFileName(folder, base, kind);
 }
 
@@ -1467,10 +1461,6 @@ void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
         return;
     const io::AreaOfInterest area = document_->mission().area;
     const QString path = drawnAreaPath(exclude);
-    // A zone added to the window's own drawn file rewrites it: its bytes are kept for undo.
-    std::optional<QByteArray> bytesBefore;
-    if (QFile file(path); file.open(QIODevice::ReadOnly))
-        bytesBefore = file.readAll();
     // Written beside its final name and tried first: an area the map refuses changes no file in use.
     const QString trial = path + QStringLiteral(".trial");
     // No-go zones add up (the polygons of the file in use come first); an area of interest replaces the last.
@@ -1494,12 +1484,8 @@ void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
     io::AreaOfInterest placed = document_->mission().area;
     (exclude ? placed.excludePath : placed.includePath) = path.toStdString();
     document_->setAreaPaths(placed);
-    drawnFiles_.insert(path);
     rememberInputFiles();
-    QFile file(path);
-    QByteArray bytesAfter = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-    pushAreaEdit(area, {{path, std::move(bytesBefore), std::move(bytesAfter)}},
-                 exclude ? tr("Draw no-go zone") : tr("Draw area of interest"));
+    pushAreaEdit(area, exclude ? tr("Draw no-go zone") : tr("Draw area of interest"));
 }
 
 bool MainWindow::keepDrawnAreasBeside(const QString& missionPath) {

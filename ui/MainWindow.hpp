@@ -166,8 +166,7 @@ class MainWindow : public QMainWindow {
     void useDrawnArea(const std::vector<MapPoint>& ring);
     // setAreaFiles without the undo step: what the undo steps themselves use.
     bool useAreaFiles(const QString& includePath, const QString& excludePath);
-    void pushAreaEdit(io::AreaOfInterest before, std::vector<AreaEditCommand::RewrittenFile> files,
-                      const QString& text);
+    void pushAreaEdit(io::AreaOfInterest before, const QString& text);
     [[nodiscard]] QString drawnAreaPath(bool exclude) const;
     // Saving a mission copies area files drawn before it had a folder beside it; returns false on failure.
     bool keepDrawnAreasBeside(const QString& missionPath);
@@ -227,7 +226,6 @@ class MainWindow : public QMainWindow {
     QAction* placeToolAction_ = nullptr;
     QAction* drawAreaAction_ = nullptr;
     QAction* drawNoGoAction_ = nullptr;
-    QSet<QString> drawnFiles_; // area files this window drew, the only ones it writes again
     QAction* removeRobotAction_ = nullptr;
     QList<QAction*> exportActions_;
     QString crsName_;

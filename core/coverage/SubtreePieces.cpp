@@ -51,22 +51,21 @@ SubtreePieces::SubtreePieces(const CellGraph& graph, const SpanningTree& tree,
     }
 }
 
-// The cut bottom up depends on where the tree is held from: each start and the tree's root are tried, and
+// The cut bottom up depends on where the tree is held from: each start is tried, and
 // the cut whose pieces' times have the least sum of squares (what the moves then lower) is kept: fewer
 // moves even it out, and each costs turns (100 x 100 cells with 14 robots: 6 153 turns and 1.0044 times the
 // lower bound from the tree's root, 6 111 and 1.0018 from the best).
 void SubtreePieces::cutFromBestRoot(const ProgressReporter& progress) {
     const std::vector<std::vector<int>> whole = adjacency_;
-    std::vector<int> roots{tree_.root()};
-    roots.insert(roots.end(), startNode_.begin(), startNode_.end());
+    // Held from a start, the root's part always has a start; held from elsewhere it might have none.
     std::vector<std::vector<int>> bestCut;
     double leastSquares = std::numeric_limits<double>::infinity();
-    for (const int root : roots) {
+    for (const int root : startNode_) {
         progress.throwIfCancelled();
         adjacency_ = whole;
         cutBottomUp(root);
         labelAndMeasureAll();
-        if (const double squares = sumOfSquares(); squares < leastSquares) {
+        if (const double squares = sumOfSquares(); bestCut.empty() || squares < leastSquares) {
             leastSquares = squares;
             bestCut = adjacency_;
         }

@@ -14,7 +14,7 @@ namespace mcpp {
 // robot walks round its own subtree from its start, with no way to go to its piece first, and the tree's
 // straight runs are cut only where two pieces meet (a piece of the tour, by contrast, must be reached).
 // The cut is made bottom up where a subtree with a start reaches a fair share, the tree held from whichever
-// start (or its root) cuts most evenly; the pieces are then evened out in time by moving a branch of one
+// start cuts most evenly; the pieces are then evened out in time by moving a branch of one
 // piece to a neighbouring piece through a grid edge: of the moves an estimate ranks best at lowering the
 // sum of the squares of the pieces' times, each is made for real and undone, and of those that lower it
 // well the one that adds the fewest turns is made (at most `mostMoves`; the division whose longest piece
