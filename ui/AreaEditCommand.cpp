@@ -7,9 +7,11 @@ AreaEditCommand::AreaEditCommand(io::AreaOfInterest before, io::AreaOfInterest a
     : QUndoCommand(text), before_(std::move(before)), after_(std::move(after)), useArea_(std::move(useArea)) {
 }
 
-// Where the files cannot be used any more (moved away), useArea says so and the map stays as it is.
+// Where the files cannot be used any more (moved away), useArea says so, the map stays as it is and the
+// step leaves the stack: the stack then holds no step it cannot take.
 void AreaEditCommand::undo() {
-    useArea_(before_);
+    if (!useArea_(before_))
+        setObsolete(true);
 }
 
 void AreaEditCommand::redo() {
@@ -17,7 +19,8 @@ void AreaEditCommand::redo() {
         changeAlreadyMade_ = false;
         return;
     }
-    useArea_(after_);
+    if (!useArea_(after_))
+        setObsolete(true);
 }
 
 } // namespace mcpp::ui

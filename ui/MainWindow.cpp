@@ -1026,8 +1026,6 @@ void MainWindow::explainClassTable(const io::OpeningClassTable& opening) {
 }
 
 bool MainWindow::setAreaFiles(const QString& includePath, const QString& excludePath) {
-    if (!document_->hasMap())
-        return false;
     const io::AreaOfInterest before = document_->mission().area;
     if (!useAreaFiles(includePath, excludePath))
         return false;
@@ -1476,7 +1474,6 @@ void MainWindow::useDrawnArea(const std::vector<MapPoint>& ring) {
         QFile::remove(trial);
         return;
     }
-    QFile::remove(path);
     if (!QFile::rename(trial, path)) {
         reportError(tr("Cannot use the area"), tr("Cannot move %1 to %2.").arg(trial, path));
         return;

@@ -9,7 +9,6 @@
 
 #include <QFutureWatcher>
 #include <QMainWindow>
-#include <QSet>
 #include <QString>
 #include <string>
 #include <vector>

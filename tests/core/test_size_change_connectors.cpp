@@ -214,20 +214,22 @@ class SizeChangeConnectorsTest : public QObject {
             const auto& first = plan.paths[static_cast<std::size_t>(robot)].waypoints.front();
             const MapPoint start{first.x + 0.3,
                                  first.y - 0.2}; // off the walk: the start is a point of its own
-            for (int candidate = 0; candidate < builder.candidatesFor(cells); ++candidate) {
-                const SpanningTree tree = builder.candidate(candidate, cells, startCell);
-                const PathShape shape = walker.walkShape(tree, start, true);
-                CoveragePath path = pathFromWalk(robot, start, walker.walk(tree, start, true), true);
+            for (int candidate = 0; candidate < 2 * builder.candidatesFor(cells); ++candidate) {
+                const bool closed = candidate % 2 == 0; // a tour home and a walk that ends in the field
+                const SpanningTree tree = builder.candidate(candidate / 2, cells, startCell);
+                const PathShape shape = walker.walkShape(tree, start, closed);
+                CoveragePath path = pathFromWalk(robot, start, walker.walk(tree, start, closed), closed);
                 measurePath(path, plan.cells);
                 QVERIFY(path.turnSeconds > 0.0);
                 // Shape and measured path agree to rounding, in the path's whole time.
                 const auto describe = [&](double fromShape, double measured, const char* what) {
-                    return QString("robot %1, candidate %2: %3 s %4 against %5 s")
+                    return QString("robot %1, candidate %2 (%6): %3 s %4 against %5 s")
                         .arg(robot)
-                        .arg(candidate)
+                        .arg(candidate / 2)
                         .arg(fromShape)
                         .arg(what)
-                        .arg(measured);
+                        .arg(measured)
+                        .arg(closed ? "closed" : "open");
                 };
                 const double tolerance = 1e-9 * path.timeSeconds;
                 QVERIFY2(std::abs(shape.seconds() - path.timeSeconds) < tolerance,

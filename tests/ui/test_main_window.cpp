@@ -29,6 +29,8 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -439,6 +441,13 @@ class TestMainWindow : public QObject {
         QCoreApplication::setOrganizationName(QStringLiteral("mcpp"));
         QCoreApplication::setApplicationName(QStringLiteral("mcpp-ui-test"));
         QSettings().clear();
+    }
+
+    // Areas drawn on untitled missions go to the application's data folder: the tests leave none there.
+    void cleanupTestCase() {
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+             QStringLiteral("/drawn-areas"))
+            .removeRecursively();
     }
 
     void refusesAnUnreadableRasterAndKeepsTheMission() {
@@ -1362,6 +1371,16 @@ class TestMainWindow : public QObject {
         QCOMPARE(insideArea(), wholeMap);
         stack->undo();
         QCOMPARE(insideArea(), twoZones);
+
+        // A step whose file has gone away says so, leaves the map as it is and leaves the stack.
+        QVERIFY(QFile::remove(QString::fromStdString(zonesFile)));
+        stack->undo();
+        QCOMPARE(window.document()->mission().area.excludePath, bothZonesFile);
+        QCOMPARE(insideArea(), twoZones);
+        QVERIFY2(window.lastError().contains(QFileInfo(QString::fromStdString(zonesFile)).fileName()),
+                 qPrintable(window.lastError()));
+        QCOMPARE(stack->count(), 3);
+        QCOMPARE(stack->undoText(), QStringLiteral("Draw no-go zone")); // the first zone's step
     }
 
     // A class table loaded from a CSV is neither a preset nor the legend: the preset box says so.
