@@ -28,9 +28,18 @@ class SubtreePieces {
                   const std::vector<MapPoint>& starts, const ProgressReporter& progress,
                   int mostMoves = 4096);
 
+    // Hands small branches to neighbouring pieces wherever the two walks then turn less and neither takes
+    // longer than the longest piece does now or, if that is more, than `allowance` (a fraction) above the
+    // pieces' mean time: the pieces spend spare time on straighter borders. Stops after `mostWalkedNodes`
+    // nodes walked in trials; returns the turns saved.
+    int saveTurns(double allowance, const ProgressReporter& progress, double mostWalkedNodes = 2e7);
+
     // Each robot's piece as a tree rooted at its start cell (graph cells, as SpanningTree holds them).
     // Not to be called from two threads at once: it shares a scratch index.
     [[nodiscard]] SpanningTree pieceTree(std::size_t robot) const;
+    // The longest walk's time and all walks' turns, each piece's walk timed from its start.
+    [[nodiscard]] double longestSeconds() const;
+    [[nodiscard]] int totalTurns() const;
 
   private:
     struct Move {
@@ -39,19 +48,30 @@ class SubtreePieces {
         int to = -1;     // the other piece's node it joins
         double change = 0.0;
     };
+    // What a move would do: the change of the sum of the squares of the pieces' times and of the two
+    // pieces' turns, and the longer of the two pieces' times after it.
+    struct TrialOutcome {
+        double squaresChange = 0.0;
+        int turns = 0;
+        double longerSeconds = 0.0;
+    };
 
     void cutFromBestRoot(const ProgressReporter& progress);
     void labelAndMeasureAll();
     void cutBottomUp(int root);
     void cutEdge(int a, int b);
-    [[nodiscard]] double longestSeconds() const;
     [[nodiscard]] double sumOfSquares() const;
     [[nodiscard]] bool evenEnough() const;
     void label(std::size_t robot);
     void measure(std::size_t robot);
     [[nodiscard]] std::vector<Move> candidateMoves(std::size_t count) const;
     [[nodiscard]] Move bestMove();
-    [[nodiscard]] std::pair<double, int> trial(const Move& move);
+    [[nodiscard]] std::vector<Move> smallBorderBranches(int mostCells) const;
+    [[nodiscard]] bool stillPossible(const Move& move) const;
+    [[nodiscard]] int sideOf(int node, int other) const;
+    [[nodiscard]] unsigned sidesWithEdges(int node) const;
+    [[nodiscard]] int turnChangeOnGrid(const Move& move) const;
+    [[nodiscard]] TrialOutcome trial(const Move& move);
     void apply(const Move& move);
 
     const CellGraph& graph_;
