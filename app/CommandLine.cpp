@@ -219,9 +219,8 @@ void describePlanner(std::ostringstream& text, const PlannerDescription& planner
             "mission file), shown with their defaults:\n";
     for (const ParameterSpec& parameter : planner.parameters) {
         text << "  " << parameter.key << "=" << parameter.format(parameter.defaultValue) << "\n";
-        text << wrapped(parameter.help + ". Takes " + parameter.expected() +
-                            (parameter.unit.empty() ? "" : " (" + parameter.unit + ")") + ".",
-                        6, 100);
+        // expected() names the unit with the range ("a number from 0 to 600 s").
+        text << wrapped(parameter.help + ". Takes " + parameter.expected() + ".", 6, 100);
     }
 }
 

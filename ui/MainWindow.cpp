@@ -543,6 +543,7 @@ void MainWindow::createActions() {
     undoAction->setShortcut(QKeySequence::Undo);
     undoAction->setIcon(actionIcon("undo"));
     QAction* redoAction = undoStack_->createRedoAction(this, tr("&Redo"));
+    redoAction->setObjectName(QStringLiteral("redoAction"));
     redoAction->setShortcut(QKeySequence::Redo);
     redoAction->setIcon(actionIcon("redo"));
     editMenu->addAction(undoAction);
@@ -1037,8 +1038,19 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
 
 void MainWindow::pushAreaEdit(io::AreaOfInterest before, const QString& text) {
     const auto useArea = [this](const io::AreaOfInterest& area) {
-        return useAreaFiles(QString::fromStdString(area.includePath),
-                            QString::fromStdString(area.excludePath));
+        if (useAreaFiles(QString::fromStdString(area.includePath), QString::fromStdString(area.excludePath)))
+            return true;
+        // The step leaves the stack and the map stays as it was: no longer the state saved, whatever the
+        // stack's index; and a failed redo leaves Redo naming the step gone until the stack has dropped it.
+        undoStack_->resetClean();
+        QMetaObject::invokeMethod(
+            undoStack_,
+            [stack = undoStack_] {
+                emit stack->canRedoChanged(stack->canRedo());
+                emit stack->redoTextChanged(stack->redoText());
+            },
+            Qt::QueuedConnection);
+        return false;
     };
     undoStack_->push(new AreaEditCommand(std::move(before), document_->mission().area, useArea, text));
 }

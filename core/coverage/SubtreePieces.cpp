@@ -24,16 +24,20 @@ SubtreePieces::SubtreePieces(const CellGraph& graph, const SpanningTree& tree,
     for (std::size_t robot = 0; robot < startCells.size(); ++robot)
         startNode_[robot] = nodeOfCell_[static_cast<std::size_t>(startCells[robot])];
     cutFromBestRoot(progress);
-    // Where no move evens the walks out for real (their turns change too), the estimate's best is made:
-    // the pieces could then trade branches back and forth, so the search stops once the longest piece has
-    // not shortened for a while, or the longest lies within a thousandth of the mean, and goes back to
-    // the division whose longest piece was shortest.
+    evenOut(progress, mostMoves);
+}
+
+// Where no move evens the walks out for real (their turns change too), the estimate's best is made: the
+// pieces could then trade branches back and forth, so the search stops once the longest piece has not
+// shortened for a while, or the longest lies within a thousandth of the mean, and goes back to the
+// division whose longest piece was shortest.
+void SubtreePieces::evenOut(const ProgressReporter& progress, int mostMoves) {
     constexpr int patience = 32;
     double longest = longestSeconds();
     std::vector<std::vector<int>> shortestForest = adjacency_; // the division whose longest piece is shortest
     int sinceShortened = 0;
-    for (; moves_ < mostMoves && sinceShortened < patience && !evenEnough(); ++moves_) {
-        if ((moves_ & 15) == 0)
+    for (int moves = 0; moves < mostMoves && sinceShortened < patience && !evenEnough(); ++moves) {
+        if ((moves & 15) == 0)
             progress.throwIfCancelled();
         const Move move = bestMove();
         if (move.branch < 0)
@@ -143,6 +147,10 @@ double SubtreePieces::sumOfSquares() const {
                            [](double sum, double seconds) { return sum + seconds * seconds; });
 }
 
+double SubtreePieces::meanSeconds() const {
+    return std::accumulate(seconds_.begin(), seconds_.end(), 0.0) / static_cast<double>(seconds_.size());
+}
+
 double SubtreePieces::longestSeconds() const {
     return *std::max_element(seconds_.begin(), seconds_.end());
 }
@@ -152,9 +160,7 @@ int SubtreePieces::totalTurns() const {
 }
 
 bool SubtreePieces::evenEnough() const {
-    const double mean =
-        std::accumulate(seconds_.begin(), seconds_.end(), 0.0) / static_cast<double>(seconds_.size());
-    return *std::max_element(seconds_.begin(), seconds_.end()) <= 1.001 * mean;
+    return longestSeconds() <= 1.001 * meanSeconds();
 }
 
 void SubtreePieces::cutEdge(int a, int b) {
@@ -277,8 +283,8 @@ SubtreePieces::Move SubtreePieces::bestMove() {
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         const TrialOutcome& outcome = tried[i];
         if (outcome.squaresChange < 0.0 && outcome.squaresChange <= 0.5 * bestChange &&
-            outcome.turns < fewestTurns) {
-            fewestTurns = outcome.turns;
+            outcome.turnsChange < fewestTurns) {
+            fewestTurns = outcome.turnsChange;
             chosen = candidates[i];
         }
     }
@@ -300,7 +306,7 @@ SubtreePieces::TrialOutcome SubtreePieces::trial(const Move& move) {
     TrialOutcome outcome;
     outcome.squaresChange = seconds_[from] * seconds_[from] + seconds_[to] * seconds_[to] -
                             secondsFrom * secondsFrom - secondsTo * secondsTo;
-    outcome.turns = turns_[from] + turns_[to] - turnsFrom - turnsTo;
+    outcome.turnsChange = turns_[from] + turns_[to] - turnsFrom - turnsTo;
     outcome.longerSeconds = std::max(seconds_[from], seconds_[to]);
     cutEdge(move.from, move.to);
     adjacency_[static_cast<std::size_t>(move.branch)].push_back(parent);
@@ -329,28 +335,25 @@ void SubtreePieces::apply(const Move& move) {
 // Sweeps over the small border branches, making each move that saves turns and leaves both pieces within
 // the budget, until a sweep saves none. Branches of a few cells are where a cut leaves its ragged edge
 // (100 x 100 cells with 14 robots: branches of up to 4 cells save 58 turns, 8 cells 90, 16 cells 89).
-int SubtreePieces::saveTurns(double allowance, const ProgressReporter& progress, double mostWalkedNodes) {
-    constexpr int mostBranchCells = 8;
-    const double meanSeconds =
-        std::accumulate(seconds_.begin(), seconds_.end(), 0.0) / static_cast<double>(seconds_.size());
-    const double budget = std::max(longestSeconds(), (1.0 + allowance) * meanSeconds);
+int SubtreePieces::saveTurns(double mostSeconds, const ProgressReporter& progress, double mostWalkedNodes) {
+    const double budget = std::max(longestSeconds(), mostSeconds);
     const int turnsBefore = totalTurns();
     const double meanPieceCells = static_cast<double>(tree_.size()) / static_cast<double>(startNode_.size());
-    const double mostTrials = mostWalkedNodes / (2.0 * meanPieceCells); // a trial walks two pieces
-    double trials = 0.0;
+    const auto mostTrials = static_cast<long>(mostWalkedNodes / (2.0 * meanPieceCells)); // two pieces a trial
+    long trials = 0;
     for (bool saved = true; saved && trials < mostTrials;) {
         saved = false;
-        for (const Move& move : smallBorderBranches(mostBranchCells)) {
+        for (const Move& move : smallBorderMoves()) {
             if (trials >= mostTrials)
                 break;
-            // An earlier move of the sweep may have taken its branch or its neighbour; and only moves
-            // that save turns where they are made are worth a trial.
+            // An earlier move of the sweep may have changed its branch or taken its neighbour; and only
+            // moves that save turns where they are made are worth a trial.
             if (!stillPossible(move) || turnChangeOnGrid(move) >= 0)
                 continue;
-            if (static_cast<int>(++trials) % 64 == 0)
+            if (++trials % 64 == 0)
                 progress.throwIfCancelled();
             const TrialOutcome outcome = trial(move);
-            if (outcome.turns < 0 && outcome.longerSeconds <= budget) {
+            if (outcome.turnsChange < 0 && outcome.longerSeconds <= budget) {
                 apply(move);
                 saved = true;
             }
@@ -359,8 +362,8 @@ int SubtreePieces::saveTurns(double allowance, const ProgressReporter& progress,
     return turnsBefore - totalTurns();
 }
 
-// Every branch of at most `mostCells` cells with a cell next to another piece, as a move to that piece.
-std::vector<SubtreePieces::Move> SubtreePieces::smallBorderBranches(int mostCells) const {
+// Every branch of at most mostBranchCells cells with a cell next to another piece, as a move to that piece.
+std::vector<SubtreePieces::Move> SubtreePieces::smallBorderMoves() const {
     std::vector<Move> moves;
     for (std::size_t node = 0; node < tree_.size(); ++node) {
         const int robot = piece_[node];
@@ -370,7 +373,7 @@ std::vector<SubtreePieces::Move> SubtreePieces::smallBorderBranches(int mostCell
                 continue;
             for (int branch = static_cast<int>(node);
                  branch != startNode_[static_cast<std::size_t>(robot)] &&
-                 subtreeCells_[static_cast<std::size_t>(branch)] <= mostCells;
+                 subtreeCells_[static_cast<std::size_t>(branch)] <= mostBranchCells;
                  branch = parent_[static_cast<std::size_t>(branch)])
                 moves.push_back({branch, static_cast<int>(node), other, 0.0});
         }
@@ -378,11 +381,12 @@ std::vector<SubtreePieces::Move> SubtreePieces::smallBorderBranches(int mostCell
     return moves;
 }
 
-// Whether a listed move can still be made: its branch still below its piece's start and above its joining
-// node, and the node it joins still in another piece.
+// Whether a listed move can still be made: its branch still small, below its piece's start and above its
+// joining node, and the node it joins still in another piece.
 bool SubtreePieces::stillPossible(const Move& move) const {
     const int robot = piece_[static_cast<std::size_t>(move.branch)];
-    if (piece_[static_cast<std::size_t>(move.from)] != robot ||
+    if (subtreeCells_[static_cast<std::size_t>(move.branch)] > mostBranchCells ||
+        piece_[static_cast<std::size_t>(move.from)] != robot ||
         piece_[static_cast<std::size_t>(move.to)] == robot ||
         move.branch == startNode_[static_cast<std::size_t>(robot)])
         return false;
@@ -432,8 +436,9 @@ int turnChangeOfToggle(unsigned& sides, int side) {
 } // namespace
 
 // The change of the walks' turns a move makes where its edges change, as on a grid of like cells with
-// every sub-cell free; a sieve before the trial, which walks both pieces (the ends of an open walk, cells
-// of other sizes and blocked sub-cells are what the trial adds).
+// every sub-cell free: a sieve before the trial, which walks both pieces. Near a start (where an open walk
+// begins and ends), by cells of other sizes or blocked sub-cells it may be wrong, and a move it sieves out
+// there is lost (on the benchmark grids, at most one a run).
 int SubtreePieces::turnChangeOnGrid(const Move& move) const {
     std::array<std::pair<int, unsigned>, 4> sidesOfNode{};
     std::size_t known = 0;

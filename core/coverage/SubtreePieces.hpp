@@ -5,7 +5,6 @@
 #include "core/model/MapPoint.hpp"
 #include "core/model/ProgressReporter.hpp"
 
-#include <utility>
 #include <vector>
 
 namespace mcpp {
@@ -29,19 +28,21 @@ class SubtreePieces {
                   int mostMoves = 4096);
 
     // Hands small branches to neighbouring pieces wherever the two walks then turn less and neither takes
-    // longer than the longest piece does now or, if that is more, than `allowance` (a fraction) above the
-    // pieces' mean time: the pieces spend spare time on straighter borders. Stops after `mostWalkedNodes`
-    // nodes walked in trials; returns the turns saved.
-    int saveTurns(double allowance, const ProgressReporter& progress, double mostWalkedNodes = 2e7);
+    // longer than `mostSeconds` or, if that is more, than the longest piece does now: pieces below the
+    // longest spend their spare time on straighter borders. Stops after `mostWalkedNodes` nodes walked in
+    // trials; returns the turns saved.
+    int saveTurns(double mostSeconds, const ProgressReporter& progress, double mostWalkedNodes = 2e7);
 
     // Each robot's piece as a tree rooted at its start cell (graph cells, as SpanningTree holds them).
     // Not to be called from two threads at once: it shares a scratch index.
     [[nodiscard]] SpanningTree pieceTree(std::size_t robot) const;
-    // The longest walk's time and all walks' turns, each piece's walk timed from its start.
+    // The pieces' walks from their starts: the mean and the longest time, and all their turns.
+    [[nodiscard]] double meanSeconds() const;
     [[nodiscard]] double longestSeconds() const;
     [[nodiscard]] int totalTurns() const;
 
   private:
+    static constexpr int mostBranchCells = 8; // what saveTurns hands over at a time
     struct Move {
         int branch = -1; // the node whose subtree moves, rooted in its piece at the piece's start
         int from = -1;   // its node that joins the other piece
@@ -52,11 +53,12 @@ class SubtreePieces {
     // pieces' turns, and the longer of the two pieces' times after it.
     struct TrialOutcome {
         double squaresChange = 0.0;
-        int turns = 0;
+        int turnsChange = 0;
         double longerSeconds = 0.0;
     };
 
     void cutFromBestRoot(const ProgressReporter& progress);
+    void evenOut(const ProgressReporter& progress, int mostMoves);
     void labelAndMeasureAll();
     void cutBottomUp(int root);
     void cutEdge(int a, int b);
@@ -66,7 +68,7 @@ class SubtreePieces {
     void measure(std::size_t robot);
     [[nodiscard]] std::vector<Move> candidateMoves(std::size_t count) const;
     [[nodiscard]] Move bestMove();
-    [[nodiscard]] std::vector<Move> smallBorderBranches(int mostCells) const;
+    [[nodiscard]] std::vector<Move> smallBorderMoves() const;
     [[nodiscard]] bool stillPossible(const Move& move) const;
     [[nodiscard]] int sideOf(int node, int other) const;
     [[nodiscard]] unsigned sidesWithEdges(int node) const;
@@ -87,7 +89,6 @@ class SubtreePieces {
     std::vector<std::vector<int>> pieceNodes_; // by robot, in breadth-first order from the start
     std::vector<double> seconds_;              // by robot
     std::vector<int> turns_;                   // by robot
-    int moves_ = 0;
 };
 
 } // namespace mcpp

@@ -191,7 +191,7 @@ double longestPieceSeconds(const CellGraph& graph, const std::vector<PieceWalk>&
     return longest;
 }
 
-constexpr const char* turnSavingAllowanceKey = "turn_saving_allowance";
+constexpr const char* subtreeTurnsSlackKey = "subtree_turns_slack";
 
 // Evening out subtree pieces scans the part at every move: 85 000 cells with 8 robots take 3.3 s.
 constexpr std::size_t mostSubtreeCells = 100'000;
@@ -211,13 +211,17 @@ struct SubtreeWalks {
 // Balanced pieces as subtrees of the part's tree that turns least, one start in each (SubtreePieces). Each
 // piece is walked round the subtree it was cut as, or round a tree built again over its cells where that
 // walk is quicker: the branches handed between pieces leave turns a tree of the piece's own can save.
+// slack: how much longer than the pieces' mean a piece may grow to save turns, a fraction; tourSeconds: the
+// longest of the tour's pieces, which the subtree pieces must beat to be kept, so saving turns stays below
+// it.
 SubtreeWalks subtreeWalks(const CellGraph& graph, const StartComponent& part, const PartRobots& robots,
-                          int plateauRounds, double turnSavingAllowance, const ProgressReporter& progress) {
+                          int plateauRounds, double slack, double tourSeconds,
+                          const ProgressReporter& progress) {
     std::vector<int> scratchIndex(graph.size(), -1);
     const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds, &progress);
     const SpanningTree tree = trees.candidate(0, part.cells, robots.startCells.front());
     SubtreePieces pieces(graph, tree, robots.startCells, robots.starts, progress);
-    pieces.saveTurns(turnSavingAllowance, progress);
+    pieces.saveTurns(std::min((1.0 + slack) * pieces.meanSeconds(), tourSeconds), progress);
     SubtreeWalks result;
     result.walks.resize(robots.robots.size());
     TreeCircumnavigation walker(graph);
@@ -255,10 +259,12 @@ PlannerDescription MstcPlanner::describe() const {
             "way to its piece; the plan whose last robot finishes sooner is kept. A few more turns "
             "where pieces meet; planning takes longer, and parts above 100 000 cells keep the "
             "tour's pieces"),
-        realParameter(turnSavingAllowanceKey, "Time spent on fewer turns", 0.8, 0.0, 10.0,
-                      "With pieces as subtrees: how much longer than the pieces' mean time a piece may "
-                      "take where handing a few cells to a neighbouring piece saves turns (100 x 100 "
-                      "cells with 14 robots: 90 fewer turns at 0.8 %). 0 keeps the evenest division",
+        realParameter(subtreeTurnsSlackKey, "Balance traded for turns", 0.8, 0.0, 10.0,
+                      "With pieces as subtrees: a piece may grow to this much above the pieces' mean time "
+                      "(in percent), or to the longest piece's time if that is more, where handing a few "
+                      "cells to a neighbouring piece saves turns. More means fewer turns and a less even "
+                      "split (100 x 100 cells with 14 robots: 72 fewer turns at 0.8 % than at 0, ratio "
+                      "1.0077 instead of 1.0019); 0 lets no piece grow past the longest",
                       "%"),
         TurnSearch::roundsParameter(),
     };
@@ -319,10 +325,11 @@ void MstcPlanner::run(PlanningRun& run) const {
                                  "pieces as subtrees: two robots start in one cell, and a subtree holds one "
                                  "start; the pieces are the tour's");
                 } else {
-                    SubtreeWalks subtrees =
-                        subtreeWalks(plan.cells, part, robots, plateauRounds,
-                                     parameters.real(turnSavingAllowanceKey) / 100.0, run.progress());
-                    if (subtrees.longestSeconds < longestPieceSeconds(plan.cells, walks, robots))
+                    const double tourSeconds = longestPieceSeconds(plan.cells, walks, robots);
+                    SubtreeWalks subtrees = subtreeWalks(plan.cells, part, robots, plateauRounds,
+                                                         parameters.real(subtreeTurnsSlackKey) / 100.0,
+                                                         tourSeconds, run.progress());
+                    if (subtrees.longestSeconds < tourSeconds)
                         walks = std::move(subtrees.walks);
                 }
             }

@@ -426,6 +426,10 @@ void TestCommandLine::plannerHelpListsEveryDeclaredParameter() {
         for (const auto& parameter : planner.parameters) {
             const auto setting = parameter.key + "=" + parameter.format(parameter.defaultValue);
             QVERIFY2(help.contains(QString::fromStdString(setting)), setting.c_str());
+            // The unit is said once, with the range ("from 0 to 600 s.", not "600 s (s).").
+            if (!parameter.unit.empty())
+                QVERIFY2(!help.contains(QString::fromStdString(" (" + parameter.unit + ").")),
+                         setting.c_str());
         }
         // The usage lists the planner on one line.
         QVERIFY(QString::fromStdString(CommandLine::usage())

@@ -443,7 +443,8 @@ class TestMainWindow : public QObject {
         QSettings().clear();
     }
 
-    // Areas drawn on untitled missions go to the application's data folder: the tests leave none there.
+    // Areas drawn on untitled missions go to the application's data folder (the test-mode one, as
+    // initTestCase sets): the tests leave none there.
     void cleanupTestCase() {
         QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
              QStringLiteral("/drawn-areas"))
@@ -1372,7 +1373,11 @@ class TestMainWindow : public QObject {
         stack->undo();
         QCOMPARE(insideArea(), twoZones);
 
-        // A step whose file has gone away says so, leaves the map as it is and leaves the stack.
+        // A step whose file has gone away says so, leaves the map as it is and leaves the stack; the map is
+        // then not the one saved, even where the stack's index comes back to the saved one.
+        stack->undo();
+        stack->setClean(); // as if saved with the first zone
+        stack->redo();
         QVERIFY(QFile::remove(QString::fromStdString(zonesFile)));
         stack->undo();
         QCOMPARE(window.document()->mission().area.excludePath, bothZonesFile);
@@ -1381,6 +1386,16 @@ class TestMainWindow : public QObject {
                  qPrintable(window.lastError()));
         QCOMPARE(stack->count(), 3);
         QCOMPARE(stack->undoText(), QStringLiteral("Draw no-go zone")); // the first zone's step
+        QVERIFY(window.isMissionModified());
+        // So does a step redone whose file has gone, and Redo then names the step after it.
+        stack->undo();
+        QCOMPARE(insideArea(), square);
+        stack->redo();
+        QCOMPARE(insideArea(), square);
+        QCOMPARE(stack->count(), 2);
+        auto* redoAction = window.findChild<QAction*>(QStringLiteral("redoAction"));
+        QTRY_COMPARE(redoAction->text(), QStringLiteral("&Redo Clear area and no-go zones"));
+        QVERIFY(redoAction->isEnabled());
     }
 
     // A class table loaded from a CSV is neither a preset nor the legend: the preset box says so.
