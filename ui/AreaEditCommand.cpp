@@ -10,7 +10,7 @@ AreaEditCommand::AreaEditCommand(io::AreaOfInterest before, io::AreaOfInterest a
 // Where the files cannot be used any more (moved away), useArea says so, the map stays as it is and the
 // step leaves the stack: the stack then holds no step it cannot take.
 void AreaEditCommand::undo() {
-    if (!useArea_(before_))
+    if (!useArea_(before_, true))
         setObsolete(true);
 }
 
@@ -19,7 +19,7 @@ void AreaEditCommand::redo() {
         changeAlreadyMade_ = false;
         return;
     }
-    if (!useArea_(after_))
+    if (!useArea_(after_, false))
         setObsolete(true);
 }
 

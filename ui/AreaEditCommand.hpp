@@ -13,8 +13,9 @@ namespace mcpp::ui {
 // The command is pushed once the change has been made, so its first redo does nothing.
 class AreaEditCommand : public QUndoCommand {
   public:
-    // Uses an area's files (reads them again and replans on them); false where they cannot be used.
-    using UseArea = std::function<bool(const io::AreaOfInterest&)>;
+    // Uses an area's files (reads them again and replans on them), undoing or redoing; false where they
+    // cannot be used.
+    using UseArea = std::function<bool(const io::AreaOfInterest&, bool undoing)>;
 
     AreaEditCommand(io::AreaOfInterest before, io::AreaOfInterest after, UseArea useArea,
                     const QString& text);

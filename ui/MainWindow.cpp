@@ -1037,19 +1037,22 @@ bool MainWindow::setAreaFiles(const QString& includePath, const QString& exclude
 }
 
 void MainWindow::pushAreaEdit(io::AreaOfInterest before, const QString& text) {
-    const auto useArea = [this](const io::AreaOfInterest& area) {
+    const auto useArea = [this](const io::AreaOfInterest& area, bool undoing) {
         if (useAreaFiles(QString::fromStdString(area.includePath), QString::fromStdString(area.excludePath)))
             return true;
-        // The step leaves the stack and the map stays as it was: no longer the state saved, whatever the
-        // stack's index; and a failed redo leaves Redo naming the step gone until the stack has dropped it.
-        undoStack_->resetClean();
-        QMetaObject::invokeMethod(
-            undoStack_,
-            [stack = undoStack_] {
-                emit stack->canRedoChanged(stack->canRedo());
-                emit stack->redoTextChanged(stack->redoText());
-            },
-            Qt::QueuedConnection);
+        // The step leaves the stack and the map stays as it is. A failed undo leaves the stack one step
+        // back: where that is the saved index, the map is not the saved one. A failed redo leaves Redo
+        // naming the step gone, until the stack's own signals, which it does not send then, are sent.
+        if (undoing && undoStack_->cleanIndex() == undoStack_->index() - 1)
+            undoStack_->resetClean();
+        if (!undoing)
+            QMetaObject::invokeMethod(
+                undoStack_,
+                [stack = undoStack_] {
+                    emit stack->canRedoChanged(stack->canRedo());
+                    emit stack->redoTextChanged(stack->redoText());
+                },
+                Qt::QueuedConnection);
         return false;
     };
     undoStack_->push(new AreaEditCommand(std::move(before), document_->mission().area, useArea, text));

@@ -23,7 +23,8 @@ int decimalsFor(const ParameterSpec& spec) {
 }
 
 QString tooltipOf(const ParameterSpec& spec) {
-    return QString::fromStdString(spec.help + " (" + spec.key + ": " + spec.expected() + ")");
+    const std::string onlyWith = spec.onlyWith.empty() ? "" : "; only with " + spec.onlyWith + " on";
+    return QString::fromStdString(spec.help + " (" + spec.key + ": " + spec.expected() + onlyWith + ")");
 }
 
 } // namespace
@@ -181,7 +182,37 @@ void PlannerSettingsPanel::showValues() {
         else if (auto* combo = qobject_cast<QComboBox*>(editor))
             combo->setCurrentText(QString::fromStdString(std::get<std::string>(value)));
     }
+    greyOutSwitchedOff();
     updating_ = wasUpdating;
+}
+
+// A parameter that has no effect without a switch (ParameterSpec::onlyWith) is greyed out, with its label,
+// while that switch, or one that switch needs, is off.
+void PlannerSettingsPanel::greyOutSwitchedOff() {
+    for (const auto& [spec, editor] : editors_) {
+        const bool on = switchedOn(spec);
+        editor->setEnabled(on);
+        if (QWidget* label = form_->labelForField(editor))
+            label->setEnabled(on);
+    }
+}
+
+bool PlannerSettingsPanel::switchedOn(const ParameterSpec& spec) const {
+    const ParameterSpec* needing = &spec;
+    // A chain of switches is as long as the planner has parameters; a loop in a declaration stops there.
+    for (std::size_t step = 0; step < editors_.size() && !needing->onlyWith.empty(); ++step) {
+        const auto found = std::find_if(editors_.begin(), editors_.end(), [&](const auto& entry) {
+            return entry.first.key == needing->onlyWith;
+        });
+        if (found == editors_.end())
+            return true;
+        const ParameterValue* given = shown_.parameters.find(found->first.key);
+        const ParameterValue value = given != nullptr ? *given : found->first.defaultValue;
+        if (!std::holds_alternative<bool>(value) || !std::get<bool>(value))
+            return false;
+        needing = &found->first;
+    }
+    return true;
 }
 
 void PlannerSettingsPanel::plannerPicked(int index) {
@@ -201,6 +232,7 @@ void PlannerSettingsPanel::parameterEdited(const ParameterSpec& spec, ParameterV
     if (updating_)
         return;
     shown_.parameters.set(spec.key, std::move(value));
+    greyOutSwitchedOff();
     emit choiceEdited(shown_);
 }
 

@@ -35,6 +35,8 @@ class PlannerSettingsPanel : public QWidget {
     void rebuildForm(const PlannerDescription& description);
     [[nodiscard]] QWidget* makeEditor(const ParameterSpec& spec);
     void showValues();
+    void greyOutSwitchedOff();
+    [[nodiscard]] bool switchedOn(const ParameterSpec& spec) const;
     void plannerPicked(int index);
     void parameterEdited(const ParameterSpec& spec, ParameterValue value);
 

@@ -153,6 +153,11 @@ ParameterSpec realParameter(std::string key, std::string label, double defaultVa
     return spec;
 }
 
+ParameterSpec onlyWith(ParameterSpec spec, std::string switchKey) {
+    spec.onlyWith = std::move(switchKey);
+    return spec;
+}
+
 ParameterSpec integerParameter(std::string key, std::string label, int defaultValue, int minimum, int maximum,
                                std::string help) {
     ParameterSpec spec;

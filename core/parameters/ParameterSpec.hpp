@@ -32,6 +32,9 @@ struct ParameterSpec {
     // For a Real: the word ("auto") that stands for automaticParameterValue, a value the planner works out
     // itself; typed, saved and shown as the word. Empty: the parameter always holds a number in range.
     std::string automatic;
+    // The key of a boolean parameter of the same planner without which this one has no effect ("only
+    // with balanced pieces"): the settings panel greys it out while that is off, --help-planner says so.
+    std::string onlyWith;
 
     // Why the value does not fit the declaration (wrong type, out of range, unknown word), or nothing.
     [[nodiscard]] std::optional<std::string> problemWith(const ParameterValue& value) const;
@@ -54,6 +57,9 @@ struct ParameterSpec {
                                              int minimum, int maximum, std::string help);
 [[nodiscard]] ParameterSpec booleanParameter(std::string key, std::string label, bool defaultValue,
                                              std::string help);
+// The spec, declared to have no effect unless the boolean parameter `switchKey` is on
+// (ParameterSpec::onlyWith).
+[[nodiscard]] ParameterSpec onlyWith(ParameterSpec spec, std::string switchKey);
 [[nodiscard]] ParameterSpec choiceParameter(std::string key, std::string label, std::string defaultValue,
                                             std::vector<std::string> choices, std::string help);
 

@@ -212,8 +212,7 @@ struct SubtreeWalks {
 // piece is walked round the subtree it was cut as, or round a tree built again over its cells where that
 // walk is quicker: the branches handed between pieces leave turns a tree of the piece's own can save.
 // slack: how much longer than the pieces' mean a piece may grow to save turns, a fraction; tourSeconds: the
-// longest of the tour's pieces, which the subtree pieces must beat to be kept, so saving turns stays below
-// it.
+// longest of the tour's pieces, which the subtree pieces must beat to be kept.
 SubtreeWalks subtreeWalks(const CellGraph& graph, const StartComponent& part, const PartRobots& robots,
                           int plateauRounds, double slack, double tourSeconds,
                           const ProgressReporter& progress) {
@@ -221,7 +220,11 @@ SubtreeWalks subtreeWalks(const CellGraph& graph, const StartComponent& part, co
     const SpanningTreeBuilder trees(graph, scratchIndex, plateauRounds, &progress);
     const SpanningTree tree = trees.candidate(0, part.cells, robots.startCells.front());
     SubtreePieces pieces(graph, tree, robots.startCells, robots.starts, progress);
-    pieces.saveTurns(std::min((1.0 + slack) * pieces.meanSeconds(), tourSeconds), progress);
+    // Pieces may grow up to the tour's longest piece, never to it: the subtree division must end sooner
+    // to be kept. Where its longest piece as cut is already longer, none grows.
+    const double belowTour = std::nextafter(tourSeconds, 0.0);
+    if (pieces.longestSeconds() < belowTour)
+        pieces.saveTurns(std::min((1.0 + slack) * pieces.meanSeconds(), belowTour), progress);
     SubtreeWalks result;
     result.walks.resize(robots.robots.size());
     TreeCircumnavigation walker(graph);
@@ -252,20 +255,22 @@ PlannerDescription MstcPlanner::describe() const {
             "Cut the tour into pieces that take equal time with the way to them, each robot "
             "going to its own by the quickest way; otherwise each robot covers the tour from its "
             "start to the next robot's"),
-        booleanParameter(
-            "subtree_pieces", "Pieces as subtrees", false,
-            "With balanced pieces: also cut the tour's tree into a subtree per robot around its "
-            "start, evened out by handing branches to neighbouring pieces, so that no robot has a "
-            "way to its piece; the plan whose last robot finishes sooner is kept. A few more turns "
-            "where pieces meet; planning takes longer, and parts above 100 000 cells keep the "
-            "tour's pieces"),
-        realParameter(subtreeTurnsSlackKey, "Balance traded for turns", 0.8, 0.0, 10.0,
-                      "With pieces as subtrees: a piece may grow to this much above the pieces' mean time "
-                      "(in percent), or to the longest piece's time if that is more, where handing a few "
-                      "cells to a neighbouring piece saves turns. More means fewer turns and a less even "
-                      "split (100 x 100 cells with 14 robots: 72 fewer turns at 0.8 % than at 0, ratio "
-                      "1.0077 instead of 1.0019); 0 lets no piece grow past the longest",
-                      "%"),
+        onlyWith(booleanParameter("subtree_pieces", "Pieces as subtrees", false,
+                                  "Also cut the tour's tree into a subtree per robot around its start, "
+                                  "evened out by handing branches to neighbouring pieces, so that no robot "
+                                  "has a way to its piece; the plan whose last robot finishes sooner is "
+                                  "kept. A few more turns where pieces meet; planning takes longer, and "
+                                  "parts above 100 000 cells keep the tour's pieces"),
+                 "balanced"),
+        onlyWith(realParameter(subtreeTurnsSlackKey, "Balance traded for turns", 0.8, 0.0, 10.0,
+                               "Where handing a few cells to a neighbouring piece saves turns, a subtree "
+                               "piece may grow to this much above the pieces' mean time, or to the longest "
+                               "piece's time as cut if that is more, but never to the longest of the "
+                               "tour's pieces. More means fewer turns and a less even split (100 x 100 "
+                               "cells with 14 robots: 72 fewer turns at 0.8 % than at 0, ratio 1.0077 "
+                               "instead of 1.0019); 0 lets no piece grow past the longest",
+                               "%"),
+                 "subtree_pieces"),
         TurnSearch::roundsParameter(),
     };
     description.balanceSwitch = "balanced";

@@ -430,6 +430,10 @@ void TestCommandLine::plannerHelpListsEveryDeclaredParameter() {
             if (!parameter.unit.empty())
                 QVERIFY2(!help.contains(QString::fromStdString(" (" + parameter.unit + ").")),
                          setting.c_str());
+            if (!parameter.onlyWith.empty())
+                QVERIFY2(help.simplified().contains( // the help wraps lines
+                             QString::fromStdString("Only with " + parameter.onlyWith + "=true.")),
+                         setting.c_str());
         }
         // The usage lists the planner on one line.
         QVERIFY(QString::fromStdString(CommandLine::usage())

@@ -1395,7 +1395,18 @@ class TestMainWindow : public QObject {
         QCOMPARE(stack->count(), 2);
         auto* redoAction = window.findChild<QAction*>(QStringLiteral("redoAction"));
         QTRY_COMPARE(redoAction->text(), QStringLiteral("&Redo Clear area and no-go zones"));
-        QVERIFY(redoAction->isEnabled());
+        // The last step redone in vain: Redo greys out, and a mission saved just before it stays saved.
+        drag("drawNoGoAction", at(310000, 4140000), at(315000, 4135000));
+        QCOMPARE(stack->count(), 2); // the new zone's step replaced the clearing one
+        const std::string newZoneFile = window.document()->mission().area.excludePath;
+        stack->undo();
+        stack->setClean();
+        QVERIFY(QFile::remove(QString::fromStdString(newZoneFile)));
+        stack->redo();
+        QCOMPARE(insideArea(), square);
+        QCOMPARE(stack->count(), 1);
+        QTRY_VERIFY(!redoAction->isEnabled());
+        QVERIFY(!window.isMissionModified());
     }
 
     // A class table loaded from a CSV is neither a preset nor the legend: the preset box says so.

@@ -4,10 +4,12 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFormLayout>
 #include <QPointer>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QtTest>
+#include <algorithm>
 
 using namespace mcpp;
 
@@ -33,6 +35,13 @@ class TestPlannerSettingsPanel : public QObject {
                 QVERIFY2(editor != nullptr, spec.key.c_str());
                 QCOMPARE(editor->objectName(), QString::fromStdString("parameter_" + spec.key));
                 QVERIFY(editor->toolTip().contains(QString::fromStdString(spec.key)));
+                if (!spec.onlyWith.empty()) { // the switch it needs is a boolean of the same planner
+                    const auto switchSpec =
+                        std::find_if(planner.parameters.begin(), planner.parameters.end(),
+                                     [&](const ParameterSpec& other) { return other.key == spec.onlyWith; });
+                    QVERIFY2(switchSpec != planner.parameters.end(), spec.onlyWith.c_str());
+                    QCOMPARE(static_cast<int>(switchSpec->type), static_cast<int>(ParameterType::Boolean));
+                }
                 switch (spec.type) {
                 case ParameterType::Boolean:
                     QVERIFY(qobject_cast<QCheckBox*>(editor) != nullptr);
@@ -58,6 +67,43 @@ class TestPlannerSettingsPanel : public QObject {
                 }
             }
         }
+    }
+
+    // A parameter without effect unless a switch is on is greyed out, label too, until that switch and the
+    // one it needs in turn are on: MSTC's slack needs subtree pieces, which need balanced pieces.
+    void parametersWaitForTheirSwitches() {
+        ui::PlannerSettingsPanel panel;
+        panel.setChoice(defaultPlannerChoice("mstc"));
+        auto* balanced = qobject_cast<QCheckBox*>(panel.editorOf("balanced"));
+        auto* subtrees = qobject_cast<QCheckBox*>(panel.editorOf("subtree_pieces"));
+        QWidget* slack = panel.editorOf("subtree_turns_slack");
+        QVERIFY(balanced != nullptr && subtrees != nullptr && slack != nullptr);
+        QWidget* slackLabel = nullptr;
+        for (auto* form : panel.findChildren<QFormLayout*>())
+            if (form->labelForField(slack) != nullptr)
+                slackLabel = form->labelForField(slack);
+        QVERIFY(slackLabel != nullptr);
+        QVERIFY(balanced->isEnabled());
+        QVERIFY(!subtrees->isEnabled());
+        QVERIFY(!slack->isEnabled());
+        QVERIFY(!slackLabel->isEnabled());
+        subtrees->setChecked(true); // on, but balanced pieces are still off
+        QVERIFY(!slack->isEnabled());
+        balanced->setChecked(true);
+        QVERIFY(subtrees->isEnabled());
+        QVERIFY(slack->isEnabled());
+        QVERIFY(slackLabel->isEnabled());
+        subtrees->setChecked(false);
+        QVERIFY(!slack->isEnabled());
+        // A choice set from a mission greys out the same way.
+        PlannerChoice fromMission = defaultPlannerChoice("mstc");
+        fromMission.parameters.set("balanced", true);
+        fromMission.parameters.set("subtree_pieces", true);
+        panel.setChoice(fromMission);
+        QVERIFY(slack->isEnabled());
+        // Other planners' parameters stay as they were.
+        panel.setChoice(defaultPlannerChoice("mcpp-mlct"));
+        QVERIFY(panel.editorOf("purity_tolerance")->isEnabled());
     }
 
     void editsReachTheChoiceAndStayInRange() {
