@@ -220,9 +220,9 @@ void describePlanner(std::ostringstream& text, const PlannerDescription& planner
     for (const ParameterSpec& parameter : planner.parameters) {
         text << "  " << parameter.key << "=" << parameter.format(parameter.defaultValue) << "\n";
         // expected() names the unit with the range ("a number from 0 to 600 s").
-        const std::string onlyWith =
-            parameter.onlyWith.empty() ? "" : " Only with " + parameter.onlyWith + "=true.";
-        text << wrapped(parameter.help + ". Takes " + parameter.expected() + "." + onlyWith, 6, 100);
+        const std::vector<const ParameterSpec*> switches = switchesNeeded(planner.parameters, parameter);
+        const std::string switchNote = switches.empty() ? "" : " Only with " + switchesText(switches) + ".";
+        text << wrapped(parameter.help + ". Takes " + parameter.expected() + "." + switchNote, 6, 100);
     }
 }
 

@@ -1040,9 +1040,10 @@ void MainWindow::pushAreaEdit(io::AreaOfInterest before, const QString& text) {
     const auto useArea = [this](const io::AreaOfInterest& area, bool undoing) {
         if (useAreaFiles(QString::fromStdString(area.includePath), QString::fromStdString(area.excludePath)))
             return true;
-        // The step leaves the stack and the map stays as it is. A failed undo leaves the stack one step
-        // back: where that is the saved index, the map is not the saved one. A failed redo leaves Redo
-        // naming the step gone, until the stack's own signals, which it does not send then, are sent.
+        // The step leaves the stack and the map stays as it is. A failed undo leaves the stack one step back
+        // over the same map: where that index is the saved one, the map is not (the index test holds inside
+        // undo(), before the stack moves; no view sets the index here). QUndoStack::redo() drops an obsolete
+        // step without sending canRedoChanged or redoTextChanged: they are sent here, queued.
         if (undoing && undoStack_->cleanIndex() == undoStack_->index() - 1)
             undoStack_->resetClean();
         if (!undoing)

@@ -1,5 +1,6 @@
 #include "ui/PlannerSettingsPanel.hpp"
 
+#include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 
 #include <QCheckBox>
@@ -22,9 +23,15 @@ int decimalsFor(const ParameterSpec& spec) {
     return std::clamp(static_cast<int>(std::ceil(-std::log10(span / 1000.0))), 0, 6);
 }
 
-QString tooltipOf(const ParameterSpec& spec) {
-    const std::string onlyWith = spec.onlyWith.empty() ? "" : "; only with " + spec.onlyWith + " on";
-    return QString::fromStdString(spec.help + " (" + spec.key + ": " + spec.expected() + onlyWith + ")");
+// The help, the key and what it takes, and the switches it needs by the names the panel shows.
+QString tooltipOf(const ParameterSpec& spec, const std::vector<ParameterSpec>& specs) {
+    std::string switchNote;
+    const std::vector<const ParameterSpec*> switches = switchesNeeded(specs, spec);
+    for (std::size_t i = 0; i < switches.size(); ++i)
+        switchNote += (i == 0 ? "; only with " : " and ") + switches[i]->label;
+    if (!switchNote.empty())
+        switchNote += " on";
+    return QString::fromStdString(spec.help + " (" + spec.key + ": " + spec.expected() + switchNote + ")");
 }
 
 } // namespace
@@ -92,8 +99,10 @@ void PlannerSettingsPanel::rebuildForm(const PlannerDescription& description) {
         summary[0] = summary[0].toUpper();
     summary_->setText(summary + QStringLiteral(".") +
                       (description.singleRobot ? tr(" One robot only.") : QString()));
+    specs_ = description.parameters;
     for (const ParameterSpec& spec : description.parameters) {
         QWidget* editor = makeEditor(spec);
+        editor->setToolTip(tooltipOf(spec, description.parameters));
         editors_.emplace_back(spec, editor);
         if (spec.type == ParameterType::Boolean)
             form_->addRow(QString(), editor);
@@ -161,7 +170,6 @@ QWidget* PlannerSettingsPanel::makeEditor(const ParameterSpec& spec) {
     }
     }
     editor->setObjectName(QString::fromStdString("parameter_" + spec.key));
-    editor->setToolTip(tooltipOf(spec));
     return editor;
 }
 
@@ -190,29 +198,11 @@ void PlannerSettingsPanel::showValues() {
 // while that switch, or one that switch needs, is off.
 void PlannerSettingsPanel::greyOutSwitchedOff() {
     for (const auto& [spec, editor] : editors_) {
-        const bool on = switchedOn(spec);
-        editor->setEnabled(on);
-        if (QWidget* label = form_->labelForField(editor))
-            label->setEnabled(on);
+        const bool inEffect = parameterInEffect(specs_, shown_.parameters, spec);
+        editor->setEnabled(inEffect);
+        if (QWidget* label = form_->labelForField(editor)) // boolean rows have none: the box holds it
+            label->setEnabled(inEffect);
     }
-}
-
-bool PlannerSettingsPanel::switchedOn(const ParameterSpec& spec) const {
-    const ParameterSpec* needing = &spec;
-    // A chain of switches is as long as the planner has parameters; a loop in a declaration stops there.
-    for (std::size_t step = 0; step < editors_.size() && !needing->onlyWith.empty(); ++step) {
-        const auto found = std::find_if(editors_.begin(), editors_.end(), [&](const auto& entry) {
-            return entry.first.key == needing->onlyWith;
-        });
-        if (found == editors_.end())
-            return true;
-        const ParameterValue* given = shown_.parameters.find(found->first.key);
-        const ParameterValue value = given != nullptr ? *given : found->first.defaultValue;
-        if (!std::holds_alternative<bool>(value) || !std::get<bool>(value))
-            return false;
-        needing = &found->first;
-    }
-    return true;
 }
 
 void PlannerSettingsPanel::plannerPicked(int index) {

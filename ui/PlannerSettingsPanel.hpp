@@ -36,7 +36,6 @@ class PlannerSettingsPanel : public QWidget {
     [[nodiscard]] QWidget* makeEditor(const ParameterSpec& spec);
     void showValues();
     void greyOutSwitchedOff();
-    [[nodiscard]] bool switchedOn(const ParameterSpec& spec) const;
     void plannerPicked(int index);
     void parameterEdited(const ParameterSpec& spec, ParameterValue value);
 
@@ -44,6 +43,7 @@ class PlannerSettingsPanel : public QWidget {
     QLabel* summary_;
     QFormLayout* form_;
     std::vector<std::pair<ParameterSpec, QWidget*>> editors_;
+    std::vector<ParameterSpec> specs_;       // the planner's declaration the form shows
     std::optional<std::string> formPlanner_; // the planner whose editors the form holds
     PlannerChoice shown_;
     bool updating_ = false;

@@ -416,6 +416,9 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     planningRun.allowTakeOffs(!planner.fliesOnBatteries());
     if (!problem.events.empty() && !planner.simulatesEvents)
         planningRun.addIssue(IssueSeverity::Warning, "events-ignored", eventsIgnoredMessage(planner));
+    for (const std::string& note :
+         parametersWithoutEffect(planner.parameters, given, planningRun.parameters()))
+        planningRun.addIssue(IssueSeverity::Warning, "parameter-without-effect", note);
     const bool anyCharger =
         std::any_of(problem.chargers.begin(), problem.chargers.end(),
                     [](const std::optional<MapPoint>& charger) { return charger.has_value(); });

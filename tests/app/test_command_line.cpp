@@ -1,4 +1,5 @@
 #include "app/CommandLine.hpp"
+#include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 
 #include <QProcess>
@@ -430,10 +431,12 @@ void TestCommandLine::plannerHelpListsEveryDeclaredParameter() {
             if (!parameter.unit.empty())
                 QVERIFY2(!help.contains(QString::fromStdString(" (" + parameter.unit + ").")),
                          setting.c_str());
+            // A parameter that needs switches names them all ("Only with balanced=true and ...").
             if (!parameter.onlyWith.empty())
-                QVERIFY2(help.simplified().contains( // the help wraps lines
-                             QString::fromStdString("Only with " + parameter.onlyWith + "=true.")),
-                         setting.c_str());
+                QVERIFY2(
+                    help.simplified().contains(QString::fromStdString(
+                        "Only with " + switchesText(switchesNeeded(planner.parameters, parameter)) + ".")),
+                    setting.c_str());
         }
         // The usage lists the planner on one line.
         QVERIFY(QString::fromStdString(CommandLine::usage())

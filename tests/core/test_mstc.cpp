@@ -181,6 +181,49 @@ class MstcTest : public QObject {
         }
     }
 
+    // A slack so large that the subtree pieces could grow past the tour's longest piece: they stop short of
+    // it, so the subtree division is still kept (every robot's path passes its own cells only) and still
+    // ends sooner than the tour's pieces.
+    void turnsSlackStopsShortOfTheTour() {
+        PlanningProblem tourProblem = test::obstacleGridProblem(49, 8, 2020);
+        const Plan tour = planWithMstc(tourProblem, true);
+        PlanningProblem problem = test::obstacleGridProblem(49, 8, 2020);
+        problem.planner = defaultPlannerChoice("mstc");
+        problem.planner.parameters.set("balanced", true);
+        problem.planner.parameters.set("subtree_pieces", true);
+        problem.planner.parameters.set("subtree_turns_slack", 10.0);
+        const Plan plan = makePlanner("mstc")->plan(problem, {});
+        QVERIFY(holdsInvariants(problem, plan));
+        QVERIFY2(plan.metrics.makespanSeconds < tour.metrics.makespanSeconds,
+                 qPrintable(QStringLiteral("%1 s against the tour's %2 s")
+                                .arg(plan.metrics.makespanSeconds)
+                                .arg(tour.metrics.makespanSeconds)));
+        for (std::size_t robot = 0; robot < plan.paths.size(); ++robot)
+            for (const Waypoint& waypoint : plan.paths[robot].waypoints)
+                QCOMPARE(plan.regions.robotOfCell[static_cast<std::size_t>(waypoint.cell)],
+                         static_cast<int>(robot));
+    }
+
+    // A setting whose switch is off changes nothing, and the plan says so, naming every switch it needs.
+    void aSettingWithoutItsSwitchIsSaid() {
+        PlanningProblem problem = test::obstacleGridProblem(30, 2, 7);
+        problem.planner = defaultPlannerChoice("mstc");
+        problem.planner.parameters.set("subtree_turns_slack", 5.0);
+        const Plan plan = makePlanner("mstc")->plan(problem, {});
+        const auto said = std::find_if(plan.issues.begin(), plan.issues.end(), [](const PlanIssue& issue) {
+            return issue.code == "parameter-without-effect";
+        });
+        QVERIFY(said != plan.issues.end());
+        QCOMPARE(said->message, std::string("subtree_turns_slack=5 has no effect: it needs balanced=true and "
+                                            "subtree_pieces=true"));
+        // Its default, as a mission file writes every key, is no setting of the user's.
+        problem.planner.parameters.set("subtree_turns_slack", 0.8);
+        const Plan quiet = makePlanner("mstc")->plan(problem, {});
+        QVERIFY(std::none_of(quiet.issues.begin(), quiet.issues.end(), [](const PlanIssue& issue) {
+            return issue.code == "parameter-without-effect";
+        }));
+    }
+
     // A U: the tour runs down one arm and up the other; robots at the tips share it without repeats.
     void uShapeIsOneTour() {
         std::vector<std::string> rows = rowsOf(12, "....####....");

@@ -35,12 +35,15 @@ class TestPlannerSettingsPanel : public QObject {
                 QVERIFY2(editor != nullptr, spec.key.c_str());
                 QCOMPARE(editor->objectName(), QString::fromStdString("parameter_" + spec.key));
                 QVERIFY(editor->toolTip().contains(QString::fromStdString(spec.key)));
-                if (!spec.onlyWith.empty()) { // the switch it needs is a boolean of the same planner
+                if (!spec.onlyWith.empty()) { // a boolean of the same planner, declared before it: no loop
                     const auto switchSpec =
                         std::find_if(planner.parameters.begin(), planner.parameters.end(),
                                      [&](const ParameterSpec& other) { return other.key == spec.onlyWith; });
                     QVERIFY2(switchSpec != planner.parameters.end(), spec.onlyWith.c_str());
+                    QVERIFY2(switchSpec < planner.parameters.begin() + (&spec - planner.parameters.data()),
+                             spec.key.c_str());
                     QCOMPARE(static_cast<int>(switchSpec->type), static_cast<int>(ParameterType::Boolean));
+                    QVERIFY(editor->toolTip().contains(QString::fromStdString(switchSpec->label)));
                 }
                 switch (spec.type) {
                 case ParameterType::Boolean:
@@ -101,9 +104,11 @@ class TestPlannerSettingsPanel : public QObject {
         fromMission.parameters.set("subtree_pieces", true);
         panel.setChoice(fromMission);
         QVERIFY(slack->isEnabled());
-        // Other planners' parameters stay as they were.
+        // Back to MSTC's defaults through another planner: greyed out again.
         panel.setChoice(defaultPlannerChoice("mcpp-mlct"));
         QVERIFY(panel.editorOf("purity_tolerance")->isEnabled());
+        panel.setChoice(defaultPlannerChoice("mstc"));
+        QVERIFY(!panel.editorOf("subtree_turns_slack")->isEnabled());
     }
 
     void editsReachTheChoiceAndStayInRange() {
