@@ -221,6 +221,16 @@ void SubtreePieces::measure(std::size_t robot) {
     turns_[robot] = shape.turns();
 }
 
+// Each node with a grid neighbour in another piece, with that neighbour: visit(node, other), once per pair.
+template <typename Visit> void SubtreePieces::forEachBorder(Visit&& visit) const {
+    for (std::size_t node = 0; node < tree_.size(); ++node)
+        for (const int neighbourCell : graph_.neighbours(tree_.cellOf(static_cast<int>(node)))) {
+            const int other = nodeOfCell_[static_cast<std::size_t>(neighbourCell)];
+            if (other >= 0 && piece_[static_cast<std::size_t>(other)] != piece_[node])
+                visit(static_cast<int>(node), other);
+        }
+}
+
 // Of all branches that can move to a neighbouring piece of shorter time, the `count` that lower the sum of
 // the squares of the pieces' times most, their time taken as their cells at the map's mean time a cell. A
 // branch is the subtree below a node on the way from a cell on the piece's border up to its start.
@@ -242,24 +252,19 @@ std::vector<SubtreePieces::Move> SubtreePieces::candidateMoves(std::size_t count
         if (best.size() > count)
             best.pop_back();
     };
-    for (std::size_t node = 0; node < tree_.size(); ++node) {
-        const auto robot = static_cast<std::size_t>(piece_[node]);
-        for (const int neighbourCell : graph_.neighbours(tree_.cellOf(static_cast<int>(node)))) {
-            const int other = nodeOfCell_[static_cast<std::size_t>(neighbourCell)];
-            if (other < 0 || piece_[static_cast<std::size_t>(other)] == static_cast<int>(robot))
-                continue;
-            const double gap = seconds_[robot] - seconds_[static_cast<std::size_t>(piece_[other])];
-            for (int branch = static_cast<int>(node); branch != startNode_[robot];
-                 branch = parent_[static_cast<std::size_t>(branch)]) {
-                const double moved = subtreeCells_[static_cast<std::size_t>(branch)] * cellSeconds;
-                const double change = 2.0 * moved * (moved - gap);
-                if (change < 0.0)
-                    offer({branch, static_cast<int>(node), other, change});
-                if (2.0 * moved >= gap)
-                    break; // branches only grow on the way up, and past half the gap they gain less
-            }
+    forEachBorder([&](int node, int other) {
+        const auto robot = static_cast<std::size_t>(piece_[static_cast<std::size_t>(node)]);
+        const double gap = seconds_[robot] - seconds_[static_cast<std::size_t>(piece_[other])];
+        for (int branch = node; branch != startNode_[robot];
+             branch = parent_[static_cast<std::size_t>(branch)]) {
+            const double moved = subtreeCells_[static_cast<std::size_t>(branch)] * cellSeconds;
+            const double change = 2.0 * moved * (moved - gap);
+            if (change < 0.0)
+                offer({branch, node, other, change});
+            if (2.0 * moved >= gap)
+                break; // branches only grow on the way up, and past half the gap they gain less
         }
-    }
+    });
     return best;
 }
 
@@ -365,19 +370,13 @@ int SubtreePieces::saveTurns(double mostSeconds, const ProgressReporter& progres
 // Every branch of at most mostBranchCells cells with a cell next to another piece, as a move to that piece.
 std::vector<SubtreePieces::Move> SubtreePieces::smallBorderMoves() const {
     std::vector<Move> moves;
-    for (std::size_t node = 0; node < tree_.size(); ++node) {
-        const int robot = piece_[node];
-        for (const int neighbourCell : graph_.neighbours(tree_.cellOf(static_cast<int>(node)))) {
-            const int other = nodeOfCell_[static_cast<std::size_t>(neighbourCell)];
-            if (other < 0 || piece_[static_cast<std::size_t>(other)] == robot)
-                continue;
-            for (int branch = static_cast<int>(node);
-                 branch != startNode_[static_cast<std::size_t>(robot)] &&
-                 subtreeCells_[static_cast<std::size_t>(branch)] <= mostBranchCells;
-                 branch = parent_[static_cast<std::size_t>(branch)])
-                moves.push_back({branch, static_cast<int>(node), other, 0.0});
-        }
-    }
+    forEachBorder([&](int node, int other) {
+        const int start = startNode_[static_cast<std::size_t>(piece_[static_cast<std::size_t>(node)])];
+        for (int branch = node;
+             branch != start && subtreeCells_[static_cast<std::size_t>(branch)] <= mostBranchCells;
+             branch = parent_[static_cast<std::size_t>(branch)])
+            moves.push_back({branch, node, other, 0.0});
+    });
     return moves;
 }
 

@@ -66,6 +66,7 @@ class SubtreePieces {
     [[nodiscard]] bool evenEnough() const;
     void label(std::size_t robot);
     void measure(std::size_t robot);
+    template <typename Visit> void forEachBorder(Visit&& visit) const;
     [[nodiscard]] std::vector<Move> candidateMoves(std::size_t count) const;
     [[nodiscard]] Move bestMove();
     [[nodiscard]] std::vector<Move> smallBorderMoves() const;

@@ -311,12 +311,16 @@ void MstcPlanner::run(PlanningRun& run) const {
             // The tour walked the other way round is cut elsewhere about the starts: the robots' ways to
             // their pieces differ, and the quicker plan is kept (100 x 100 with 14 robots: ratio 1.0188 ->
             // 1.0163; no benchmark grid slower).
+            double tourSeconds = 0.0; // the longest of the kept tour pieces, timed once
             if (ways && part.robots.size() > 1) {
+                tourSeconds = longestPieceSeconds(plan.cells, walks, robots);
                 std::reverse(tour.begin(), tour.end());
                 std::vector<PieceWalk> reversed = piecesOf(plan.cells, tour, robots, &*ways);
-                if (longestPieceSeconds(plan.cells, reversed, robots) <
-                    longestPieceSeconds(plan.cells, walks, robots))
+                if (const double reversedSeconds = longestPieceSeconds(plan.cells, reversed, robots);
+                    reversedSeconds < tourSeconds) {
                     walks = std::move(reversed);
+                    tourSeconds = reversedSeconds;
+                }
             }
             if (ways && part.robots.size() > 1 && parameters.boolean("subtree_pieces")) {
                 if (part.cells.size() > mostSubtreeCells) {
@@ -330,7 +334,6 @@ void MstcPlanner::run(PlanningRun& run) const {
                                  "pieces as subtrees: two robots start in one cell, and a subtree holds one "
                                  "start; the pieces are the tour's");
                 } else {
-                    const double tourSeconds = longestPieceSeconds(plan.cells, walks, robots);
                     SubtreeWalks subtrees = subtreeWalks(plan.cells, part, robots, plateauRounds,
                                                          parameters.real(subtreeTurnsSlackKey) / 100.0,
                                                          tourSeconds, run.progress());
