@@ -1,5 +1,6 @@
 #include "core/coverage/SubtreePieces.hpp"
 
+#include "core/coverage/GridTurnRule.hpp"
 #include "core/coverage/TreeCircumnavigation.hpp"
 
 #include <algorithm>
@@ -419,21 +420,6 @@ unsigned SubtreePieces::sidesWithEdges(int node) const {
     return sides;
 }
 
-namespace {
-
-// On a grid of like cells the walk round a tree turns in a sub-cell exactly where the cell's two sides
-// beside it both have a tree edge or both lack one. An edge made or cut on `side` therefore changes the
-// turns of the two sub-cells beside that side only: by one each.
-int turnChangeOfToggle(unsigned& sides, int side) {
-    int change = 0;
-    for (const int beside : {(side + 1) % 4, (side + 3) % 4})
-        change += ((sides >> side) & 1U) == ((sides >> beside) & 1U) ? -1 : 1;
-    sides ^= 1U << side;
-    return change;
-}
-
-} // namespace
-
 // The change of the walks' turns a move makes where its edges change, as on a grid of like cells with
 // every sub-cell free: a sieve before the trial, which walks both pieces. Near a start (where an open walk
 // begins and ends), by cells of other sizes or blocked sub-cells it may be wrong, and a move it sieves out
@@ -449,10 +435,10 @@ int SubtreePieces::turnChangeOnGrid(const Move& move) const {
         return sidesOfNode[known++].second;
     };
     const int parent = parent_[static_cast<std::size_t>(move.branch)];
-    int change = turnChangeOfToggle(sidesOf(move.branch), sideOf(move.branch, parent));
-    change += turnChangeOfToggle(sidesOf(parent), sideOf(parent, move.branch));
-    change += turnChangeOfToggle(sidesOf(move.from), sideOf(move.from, move.to));
-    change += turnChangeOfToggle(sidesOf(move.to), sideOf(move.to, move.from));
+    int change = GridTurnRule::toggle(sidesOf(move.branch), sideOf(move.branch, parent));
+    change += GridTurnRule::toggle(sidesOf(parent), sideOf(parent, move.branch));
+    change += GridTurnRule::toggle(sidesOf(move.from), sideOf(move.from, move.to));
+    change += GridTurnRule::toggle(sidesOf(move.to), sideOf(move.to, move.from));
     return change;
 }
 

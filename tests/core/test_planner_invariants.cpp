@@ -5,6 +5,9 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <map>
+#include <set>
+#include <string>
 
 using namespace mcpp;
 
@@ -115,6 +118,21 @@ class PlannerInvariantsTest : public QObject {
         QVERIFY(plan.metrics.ratio > 0.0);
         QVERIFY(plan.metrics.coveredFraction > 0.0 && plan.metrics.coveredFraction <= 1.0 + 1e-9);
         QVERIFY(plan.metrics.repeatedFraction >= 0.0);
+    }
+
+    // Planners compared side by side show their parameters by label: one label must mean one setting,
+    // whichever planner declares it, and a planner's labels must tell its own settings apart.
+    void oneLabelNamesOneParameter() {
+        std::map<std::string, std::string> keyOfLabel;
+        for (const PlannerDescription& planner : plannerDescriptions()) {
+            std::set<std::string> labels;
+            for (const ParameterSpec& spec : planner.parameters) {
+                QVERIFY2(labels.insert(spec.label).second, (planner.name + ": " + spec.label).c_str());
+                const auto [named, fresh] = keyOfLabel.emplace(spec.label, spec.key);
+                QVERIFY2(fresh || named->second == spec.key,
+                         (spec.label + " names " + named->second + " and " + spec.key).c_str());
+            }
+        }
     }
 };
 
