@@ -78,8 +78,8 @@ for side in 316 1000 2000 3000 4000 5000; do
         $(python3 "$root/bench/make_benchmark_map.py" blocks "$side" "$side" 6 "$maps/$name")
     rm -rf "${maps:?}/$name"
 done
-# The most cells a map can hold for its size: 5.0 M and 18.1 M cells (the second takes about a minute and
-# 6.5 GB, and is run only when named).
+# The most cells a map can hold for its size: 5.0 M and 17.4 M cells (the second takes about half a minute and
+# 3.1 GB, and is run only when named).
 for side in 2240 4250; do
     name="forest-$side"
     if [ "$side" = 4250 ] && [ ${#wanted[@]} -eq 0 ]; then continue; fi

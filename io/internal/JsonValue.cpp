@@ -18,9 +18,9 @@ JsonValue& JsonValue::add(std::string key, JsonValue value) {
     return members_.back().second;
 }
 
-std::string JsonValue::toText() const {
+std::string JsonValue::toText(Layout layout) const {
     std::string out;
-    write(out, 0);
+    write(out, 0, layout);
     out += '\n';
     return out;
 }
@@ -85,7 +85,32 @@ void appendJsonString(std::string& out, std::string_view text) {
     out += '"';
 }
 
-void JsonValue::write(std::string& out, int indent) const {
+bool JsonValue::isFlatObject() const {
+    if (kind_ != Kind::Object || members_.empty())
+        return false;
+    for (const auto& [key, value] : members_) {
+        if (value.kind_ == Kind::Object)
+            return false;
+        for (const JsonValue& item : value.items_)
+            if (!item.isScalar())
+                return false;
+    }
+    return true;
+}
+
+void JsonValue::writeObjectOnOneLine(std::string& out) const {
+    out += '{';
+    for (std::size_t i = 0; i < members_.size(); ++i) {
+        if (i > 0)
+            out += ", ";
+        appendJsonString(out, members_[i].first);
+        out += ": ";
+        members_[i].second.write(out, 0, Layout::Indented); // a scalar or an array of scalars: one line
+    }
+    out += '}';
+}
+
+void JsonValue::write(std::string& out, int indent, Layout layout) const {
     const auto padding = static_cast<std::size_t>(indent + 2);
     switch (kind_) {
     case Kind::Null:
@@ -116,7 +141,7 @@ void JsonValue::write(std::string& out, int indent) const {
             for (std::size_t i = 0; i < items_.size(); ++i) {
                 if (i > 0)
                     out += ", ";
-                items_[i].write(out, indent);
+                items_[i].write(out, indent, layout);
             }
             out += ']';
             return;
@@ -124,7 +149,7 @@ void JsonValue::write(std::string& out, int indent) const {
         out += "[\n";
         for (std::size_t i = 0; i < items_.size(); ++i) {
             out.append(padding, ' ');
-            items_[i].write(out, indent + 2);
+            items_[i].write(out, indent + 2, layout);
             out += i + 1 < items_.size() ? ",\n" : "\n";
         }
         out.append(static_cast<std::size_t>(indent), ' ');
@@ -136,12 +161,16 @@ void JsonValue::write(std::string& out, int indent) const {
             out += "{}";
             return;
         }
+        if (layout == Layout::FlatObjectsOnOneLine && isFlatObject()) {
+            writeObjectOnOneLine(out);
+            return;
+        }
         out += "{\n";
         for (std::size_t i = 0; i < members_.size(); ++i) {
             out.append(padding, ' ');
             appendJsonString(out, members_[i].first);
             out += ": ";
-            members_[i].second.write(out, indent + 2);
+            members_[i].second.write(out, indent + 2, layout);
             out += i + 1 < members_.size() ? ",\n" : "\n";
         }
         out.append(static_cast<std::size_t>(indent), ' ');

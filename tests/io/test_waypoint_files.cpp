@@ -243,19 +243,24 @@ class WaypointFilesTest : public QObject {
     }
 
     // The plans are written as text directly: laid out byte for byte as JsonValue writes the same
-    // document (two-space indents, arrays of numbers on one line), with and without speed changes.
+    // document (two-space indents, arrays of numbers and flat objects such as the items on one line), with
+    // and without speed changes, for a rover and for an aircraft (its takeoff and return to launch).
     void qgroundControlPlanIsLaidOutAsJsonValueWritesIt() {
-        for (const int robot : {0, 1}) {
-            const std::string path = file("layout.plan");
-            QVERIFY(writeQGroundControlPlan(context(), robot, path).ok());
-            QFile written(QString::fromStdString(path));
-            QVERIFY(written.open(QIODevice::ReadOnly));
-            const QByteArray text = written.readAll();
-            const QJsonDocument parsed = QJsonDocument::fromJson(text);
-            QVERIFY(parsed.isObject());
-            const std::string expected = jsonValueOf(parsed.object()).toText();
-            QCOMPARE(text.toStdString(), expected);
-        }
+        for (const VehicleType type : {VehicleType::Rover, VehicleType::Multirotor})
+            for (const int robot : {0, 1}) {
+                ExportSettings settings;
+                settings.vehicle.type = type;
+                const std::string path = file("layout.plan");
+                QVERIFY(writeQGroundControlPlan(context(settings), robot, path).ok());
+                QFile written(QString::fromStdString(path));
+                QVERIFY(written.open(QIODevice::ReadOnly));
+                const QByteArray text = written.readAll();
+                const QJsonDocument parsed = QJsonDocument::fromJson(text);
+                QVERIFY(parsed.isObject());
+                const std::string expected =
+                    jsonValueOf(parsed.object()).toText(internal::JsonValue::Layout::FlatObjectsOnOneLine);
+                QCOMPARE(text.toStdString(), expected);
+            }
     }
 
     void speedChangesBecomeChangeSpeedItems() {
