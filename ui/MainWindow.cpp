@@ -748,8 +748,8 @@ void MainWindow::createStatusBar() {
     });
     connect(runner_, &PlanningRunner::finished, this, &MainWindow::handlePlanningFinished);
     connect(exportRunner_, &ExportRunner::progressed, this, [this](int done, int files) {
-        progressBar_->setRange(0, files);
-        progressBar_->setValue(done);
+        if (files > 1)
+            progressBar_->setValue(done);
     });
     connect(exportRunner_, &ExportRunner::finished, this, &MainWindow::handleExportFinished);
     connect(comparisonRunner_, &ComparisonRunner::progressed, this,
@@ -1589,7 +1589,9 @@ bool MainWindow::exportPlan(const std::string& formatKey, const QString& path) {
     if (!exportRunner_->start(std::move(job)))
         return false;
     showBusy(tr("Exporting %1…").arg(QString::fromStdString(format->label)), true);
-    progressBar_->setRange(0, files);
+    // Files are counted as they are written; one file alone (a GeoPackage of millions of cells) shows a
+    // busy bar rather than one stuck at none of one.
+    progressBar_->setRange(0, files > 1 ? files : 0);
     progressBar_->setValue(0);
     updateActions();
     return true;

@@ -28,14 +28,17 @@
 #include <QChartView>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCursor>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGuiApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSet>
@@ -679,8 +682,27 @@ class TestMainWindow : public QObject {
         QCOMPARE(json.object().value(QStringLiteral("type")).toString(), QStringLiteral("FeatureCollection"));
         QVERIFY(!json.object().value(QStringLiteral("features")).toArray().isEmpty());
 
-        // PNG and per-robot waypoint exports.
-        QVERIFY(exportAndWait("png", directory.filePath(QStringLiteral("plan.png"))));
+        // While an export runs the window shows it: the stage, a bar, Cancel and a busy cursor. One file
+        // has no count to show, so its bar is a busy one; files per robot are counted.
+        auto* bar = window.findChild<QProgressBar*>(QStringLiteral("planningProgress"));
+        auto* cancel = window.findChild<QPushButton*>(QStringLiteral("cancelPlanningButton"));
+        QVERIFY(bar != nullptr && cancel != nullptr);
+        const auto showsExport = [&](int countedFiles) {
+            return bar->isVisible() && bar->minimum() == 0 && bar->maximum() == countedFiles &&
+                   cancel->isVisible() && cancel->isEnabled() &&
+                   QGuiApplication::overrideCursor() != nullptr &&
+                   QGuiApplication::overrideCursor()->shape() == Qt::BusyCursor;
+        };
+        QVERIFY(window.exportPlan("png", directory.filePath(QStringLiteral("plan.png"))));
+        QVERIFY(showsExport(0));
+        QVERIFY(exported.wait(60000) && exported.takeFirst().at(0).toBool());
+        QVERIFY(!bar->isVisible() && !cancel->isVisible() && QGuiApplication::overrideCursor() == nullptr);
+        QVERIFY(window.exportPlan("waypoint-csv", directory.filePath(QStringLiteral("robot.csv"))));
+        QVERIFY(showsExport(3));
+        QVERIFY(exported.wait(60000) && exported.takeFirst().at(0).toBool());
+        QCOMPARE(bar->value(), 3);
+        QVERIFY(!bar->isVisible() && QGuiApplication::overrideCursor() == nullptr);
+        QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
         QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
         // Waypoint files follow the robots' vehicles: no limit, one file per robot; a limit the mission is
         // above, consecutive parts instead.
