@@ -25,8 +25,11 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <memory>
+#include <ogr_spatialref.h>
+#include <ogrsf_frmts.h>
 
 namespace {
 
@@ -112,6 +115,7 @@ class TestBatchEndToEnd : public QObject {
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
     void anAircraftOnTheLakeTakesOffThere();
     void detectionPlansWriteTheDetectionRaster();
+    void exportsReadBackUnchangedInSubstance();
     void eventsArePlayedAndComparedWithTheStaticPlan();
     void rasterAloneGetsTheRecognisedProductsTable();
     void outputsAreTheSameWhateverTheThreadCount();
@@ -1289,6 +1293,151 @@ void TestBatchEndToEnd::anAircraftOnTheLakeTakesOffThere() {
         else
             QVERIFY2(apart > 1e-6 && apart < 1e-3, qPrintable(QString::number(apart)));
     }
+}
+
+namespace {
+
+struct DatasetCloser {
+    void operator()(GDALDataset* dataset) const { GDALClose(dataset); }
+};
+using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
+
+Dataset openReadOnly(const QString& path, unsigned kind) {
+    return Dataset(GDALDataset::FromHandle(
+        GDALOpenEx(path.toStdString().c_str(), kind | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+}
+
+double areaOf(const OGRGeometry& geometry) {
+    if (const auto* many = dynamic_cast<const OGRMultiPolygon*>(&geometry))
+        return many->get_Area();
+    return geometry.toPolygon()->get_Area();
+}
+
+double perimeterOf(const OGRGeometry& geometry) {
+    std::unique_ptr<OGRGeometry> boundary(geometry.Boundary());
+    if (const auto* lines = dynamic_cast<const OGRMultiLineString*>(boundary.get()))
+        return lines->get_Length();
+    return boundary->toLineString()->get_Length();
+}
+
+} // namespace
+
+// What the files hold of a real plan, read back with OGR and GDAL: each region's polygon has its robot's
+// area (GeoPackage, in the raster's CRS, to 1e-6; GeoJSON, in degrees to 9 decimals, within what that
+// rounding can move its edges), each path its robot's length (a polyline of turning points is as long as
+// the path), and regions.tif names, pixel for pixel, the robot whose region polygon holds the pixel.
+void TestBatchEndToEnd::exportsReadBackUnchangedInSubstance() {
+    const QString out = scratch_.filePath("read-back");
+    const auto run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--out", out});
+    checkOutputs(out, 5, run);
+    if (QTest::currentTestFailed())
+        return;
+    const QJsonArray robots = readJsonObject(out + "/report.json").value("robots").toArray();
+    const auto reported = [&](int robot, const char* key) {
+        return robots.at(robot - 1).toObject().value(QLatin1String(key)).toDouble();
+    };
+    GDALAllRegister();
+    const Dataset package = openReadOnly(out + "/plan.gpkg", GDAL_OF_VECTOR);
+    QVERIFY(package != nullptr);
+    int regions = 0;
+    for (auto& feature : *package->GetLayerByName("regions")) {
+        const int robot = feature->GetFieldAsInteger("robot");
+        const double area = areaOf(*feature->GetGeometryRef());
+        QVERIFY2(
+            nearlyEqual(area, reported(robot, "area_m2")),
+            qPrintable(
+                QString("robot %1: %2 against %3 m2").arg(robot).arg(area).arg(reported(robot, "area_m2"))));
+        ++regions;
+    }
+    QCOMPARE(regions, 5);
+    int paths = 0;
+    for (auto& feature : *package->GetLayerByName("paths")) {
+        const int robot = feature->GetFieldAsInteger("robot");
+        const double length = feature->GetGeometryRef()->toLineString()->get_Length();
+        QVERIFY2(nearlyEqual(length, reported(robot, "length_m")),
+                 qPrintable(QString("robot %1: %2 against %3 m")
+                                .arg(robot)
+                                .arg(length)
+                                .arg(reported(robot, "length_m"))));
+        ++paths;
+    }
+    QCOMPARE(paths, 5);
+
+    // GeoJSON, taken back to the raster's CRS. A coordinate rounded to 9 decimals of a degree moves less
+    // than 0.1 mm: a path's length by at most 0.2 mm a segment, a polygon's area by its perimeter times that.
+    const Dataset raster = openReadOnly(out + "/regions.tif", GDAL_OF_RASTER);
+    QVERIFY(raster != nullptr);
+    OGRSpatialReference wgs84;
+    wgs84.SetWellKnownGeogCS("WGS84");
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    const std::unique_ptr<OGRCoordinateTransformation> toRasterCrs(
+        OGRCreateCoordinateTransformation(&wgs84, raster->GetSpatialRef()));
+    QVERIFY(toRasterCrs != nullptr);
+    const Dataset geoJson = openReadOnly(out + "/plan.geojson", GDAL_OF_VECTOR);
+    QVERIFY(geoJson != nullptr);
+    int checked = 0;
+    for (auto& feature : *geoJson->GetLayer(0)) {
+        const std::string kind = feature->GetFieldAsString("kind");
+        if (kind != "region" && kind != "path")
+            continue;
+        const int robot = feature->GetFieldAsInteger("robot");
+        std::unique_ptr<OGRGeometry> geometry(feature->GetGeometryRef()->clone());
+        QCOMPARE(geometry->transform(toRasterCrs.get()), OGRERR_NONE);
+        if (kind == "region") {
+            const double area = areaOf(*geometry);
+            QVERIFY2(std::abs(area - reported(robot, "area_m2")) <= perimeterOf(*geometry) * 1e-4,
+                     qPrintable(QString("robot %1: %2 against %3 m2")
+                                    .arg(robot)
+                                    .arg(area)
+                                    .arg(reported(robot, "area_m2"))));
+        } else {
+            const OGRLineString& line = *geometry->toLineString();
+            const double length = line.get_Length();
+            QVERIFY2(std::abs(length - reported(robot, "length_m")) <= line.getNumPoints() * 2e-4,
+                     qPrintable(QString("robot %1: %2 against %3 m")
+                                    .arg(robot)
+                                    .arg(length)
+                                    .arg(reported(robot, "length_m"))));
+        }
+        ++checked;
+    }
+    QCOMPARE(checked, 10);
+
+    // regions.tif against the region polygons burnt onto the same pixels (a pixel is burnt where its
+    // centre lies in a polygon): every pixel of a robot in the one, of no robot in the other.
+    const int columns = raster->GetRasterXSize();
+    const int rows = raster->GetRasterYSize();
+    const auto pixels = static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
+    std::vector<std::uint8_t> written(pixels);
+    QCOMPARE(raster->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, columns, rows, written.data(), columns, rows,
+                                                GDT_Byte, 0, 0, nullptr),
+             CE_None);
+    GDALDriver* memory = GetGDALDriverManager()->GetDriverByName("MEM");
+    const Dataset burnt(memory->Create("", columns, rows, 1, GDT_Byte, nullptr));
+    double placed[6] = {};
+    QCOMPARE(raster->GetGeoTransform(placed), CE_None);
+    burnt->SetGeoTransform(placed);
+    burnt->SetSpatialRef(raster->GetSpatialRef());
+    int bands[] = {1};
+    OGRLayerH layers[] = {OGRLayer::ToHandle(package->GetLayerByName("regions"))};
+    char attribute[] = "ATTRIBUTE=robot";
+    char* options[] = {attribute, nullptr};
+    QCOMPARE(GDALRasterizeLayers(GDALDataset::ToHandle(burnt.get()), 1, bands, 1, layers, nullptr, nullptr,
+                                 nullptr, options, nullptr, nullptr),
+             CE_None);
+    std::vector<std::uint8_t> expected(pixels);
+    QCOMPARE(burnt->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, columns, rows, expected.data(), columns, rows,
+                                               GDT_Byte, 0, 0, nullptr),
+             CE_None);
+    std::size_t ofRobots = 0;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const bool ofARobot = written[i] >= 1 && written[i] <= 5;
+        ofRobots += ofARobot ? 1 : 0;
+        differing += (ofARobot ? written[i] : 0) != expected[i] ? 1 : 0;
+    }
+    QVERIFY(ofRobots > pixels / 4);
+    QCOMPARE(differing, std::size_t{0});
 }
 
 void TestBatchEndToEnd::detectionPlansWriteTheDetectionRaster() {
