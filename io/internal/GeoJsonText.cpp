@@ -2,6 +2,7 @@
 
 #include "io/internal/JsonValue.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -186,10 +187,32 @@ class FeatureLine {
     std::string& out_;
 };
 
+// Part `part` of a path written in parts: its segments from part x mostSegmentsInAGeoJsonPath on, so that
+// each part begins at the point where the one before it ended.
+OGRLineString pathPart(const OGRLineString& line, int part) {
+    const int first = part * mostSegmentsInAGeoJsonPath;
+    const int last = std::min(first + mostSegmentsInAGeoJsonPath, line.getNumPoints() - 1);
+    OGRLineString piece;
+    piece.setNumPoints(last - first + 1, FALSE);
+    for (int i = first; i <= last; ++i)
+        piece.setPoint(i - first, line.getX(i), line.getY(i));
+    return piece;
+}
+
 } // namespace
 
+int geoJsonPathParts(const OGRGeometry& path) {
+    if (wkbFlatten(path.getGeometryType()) != wkbLineString)
+        return 1; // cut at the antimeridian: lines far shorter than a map of millions of cells
+    const int segments = std::max(path.toLineString()->getNumPoints() - 1, 1);
+    return (segments + mostSegmentsInAGeoJsonPath - 1) / mostSegmentsInAGeoJsonPath;
+}
+
 std::optional<std::string> planGeoJsonText(const ExportContext& context, const PlanFeatures& features) {
-    const std::size_t count = features.regions.size() + features.paths.size() + features.starts.size() +
+    std::size_t pathFeatures = 0;
+    for (const auto& line : features.paths)
+        pathFeatures += static_cast<std::size_t>(geoJsonPathParts(*line.geometry));
+    const std::size_t count = features.regions.size() + pathFeatures + features.starts.size() +
                               features.unreachable.size() + features.takenOver.size() + features.area.size();
     std::size_t written = 0;
     std::string out = "{\n\"type\": \"FeatureCollection\",\n\"features\": [\n";
@@ -206,12 +229,20 @@ std::optional<std::string> planGeoJsonText(const ExportContext& context, const P
     for (const auto& line : features.paths) {
         if (context.cancelled())
             return std::nullopt;
-        FeatureLine(out, "path")
-            .robot(context, line.robot)
-            .real("length_m", line.lengthMetres)
-            .real("time_s", line.timeSeconds)
-            .integer("turns", line.turns)
-            .geometry(line.geometry.get(), ++written == count);
+        const int parts = geoJsonPathParts(*line.geometry);
+        for (int part = 0; part < parts; ++part) {
+            FeatureLine feature(out, "path");
+            feature.robot(context, line.robot)
+                .real("length_m", line.lengthMetres)
+                .real("time_s", line.timeSeconds)
+                .integer("turns", line.turns);
+            if (parts == 1) {
+                feature.geometry(line.geometry.get(), ++written == count);
+                continue;
+            }
+            const OGRLineString piece = pathPart(*line.geometry->toLineString(), part);
+            feature.integer("part", part + 1).integer("parts", parts).geometry(&piece, ++written == count);
+        }
     }
     for (const auto& start : features.starts)
         FeatureLine(out, "start")

@@ -9,6 +9,7 @@
 #include "core/outlines/OutlineTracer.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
+#include "io/internal/GeoJsonText.hpp"
 
 #include <QDir>
 #include <QFile>
@@ -826,6 +827,53 @@ class PlanExportTest : public QObject {
     }
 
     void densePathsOnRequest() { checkDensePaths(file("dense.geojson")); }
+
+    // A dense path of a million points, as one feature, was more than GDAL's GeoJSON reader takes (and QGIS
+    // with it): it is written in parts, which follow on from each other and together are the path, and the
+    // file opens with GDAL's defaults. A path of fewer points stays one feature, without part numbers.
+    void aDensePathOfAMillionPointsOpensInGdal() {
+        const Plan fixture = plan_;
+        std::vector<Waypoint>& long_ = plan_.paths[0].waypoints;
+        long_.clear();
+        constexpr int points = 1'200'001;
+        for (int i = 0; i < points; ++i) // a zigzag inside the first cell
+            long_.push_back(
+                test::makeWaypoint(301901.0 + (i % 2) * 8.0, 4154079.0 - (i % 8000) * 0.001, 0, 0.5));
+        const std::string path = file("long-dense.geojson");
+        ExportSettings dense;
+        dense.densePaths = true;
+        QVERIFY(writePlanGeoJson(context(dense), path).ok());
+        Dataset dataset = openVector(path);
+        QVERIFY2(dataset != nullptr, CPLGetLastErrorMsg());
+        std::vector<std::unique_ptr<OGRLineString>> parts;
+        int shortPaths = 0;
+        for (auto& feature : *dataset->GetLayer(0)) {
+            if (std::string(feature->GetFieldAsString("kind")) != "path")
+                continue;
+            if (feature->GetFieldAsInteger("robot") == 2) {
+                QVERIFY(!feature->IsFieldSetAndNotNull(feature->GetFieldIndex("part")));
+                ++shortPaths;
+                continue;
+            }
+            QCOMPARE(feature->GetFieldAsInteger("part"), static_cast<int>(parts.size()) + 1);
+            QCOMPARE(feature->GetFieldAsInteger("parts"), 12);
+            QCOMPARE(feature->GetFieldAsDouble("length_m"), plan_.paths[0].lengthMetres);
+            parts.emplace_back(feature->GetGeometryRef()->toLineString()->clone());
+            QVERIFY(parts.back()->getNumPoints() <= internal::mostSegmentsInAGeoJsonPath + 1);
+        }
+        QCOMPARE(shortPaths, 1);
+        QCOMPARE(parts.size(), std::size_t{12});
+        OGRLineString joined;
+        for (const auto& part : parts) {
+            if (joined.getNumPoints() > 0) { // each part begins where the one before it ended
+                QCOMPARE(part->getX(0), joined.getX(joined.getNumPoints() - 1));
+                QCOMPARE(part->getY(0), joined.getY(joined.getNumPoints() - 1));
+            }
+            joined.addSubLineString(part.get(), joined.getNumPoints() > 0 ? 1 : 0);
+        }
+        QVERIFY(lineError(joined, long_, reference_) < 1e-7);
+        plan_ = fixture;
+    }
 
     // A path whose straight runs were merged (large plans) still exports every sub-cell centre on request.
     void densePathsOfMergedRuns() {
