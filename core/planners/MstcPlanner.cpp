@@ -262,7 +262,7 @@ PlannerDescription MstcPlanner::describe() const {
                                   "kept. A few more turns where pieces meet; planning takes longer, and "
                                   "parts above 100 000 cells keep the tour's pieces"),
                  "balanced"),
-        onlyWith(realParameter(subtreeTurnsSlackKey, "Subtree balance traded for turns", 0.8, 0.0, 10.0,
+        onlyWith(realParameter(subtreeTurnsSlackKey, "Piece growth for turns", 0.8, 0.0, 10.0,
                                "Where handing a few cells to a neighbouring piece saves turns, a subtree "
                                "piece may grow to this much above the pieces' mean time, or to the longest "
                                "piece's time as cut if that is more, but never to the longest of the "
