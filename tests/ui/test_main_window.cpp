@@ -703,7 +703,6 @@ class TestMainWindow : public QObject {
         QCOMPARE(bar->value(), 3);
         QVERIFY(!bar->isVisible() && QGuiApplication::overrideCursor() == nullptr);
         QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
-        QVERIFY(!QImage(directory.filePath(QStringLiteral("plan.png"))).isNull());
         // Waypoint files follow the robots' vehicles: no limit, one file per robot; a limit the mission is
         // above, consecutive parts instead.
         io::ExportSettings exports = window.document()->mission().exports;
