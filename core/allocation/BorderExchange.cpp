@@ -33,8 +33,11 @@ BorderExchange::BorderExchange(const CellGraph& graph, const std::vector<int>& c
 double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds) {
     owner_ = &owner;
     cost_.assign(regionCount_, 0.0);
-    for (std::size_t c = 0; c < owner.size(); ++c)
+    cellCount_.assign(regionCount_, 0);
+    for (std::size_t c = 0; c < owner.size(); ++c) {
         cost_[static_cast<std::size_t>(owner[c])] += weight_[c];
+        ++cellCount_[static_cast<std::size_t>(owner[c])];
+    }
     regionVersion_.resize(regionCount_);
     for (std::uint64_t& version : regionVersion_)
         version = ++lastVersion_;
@@ -111,6 +114,8 @@ void BorderExchange::returnToBest() {
         const auto index = static_cast<std::size_t>(entry->cell);
         cost_[static_cast<std::size_t>((*owner_)[index])] -= weight_[index];
         cost_[static_cast<std::size_t>(entry->previousOwner)] += weight_[index];
+        --cellCount_[static_cast<std::size_t>((*owner_)[index])];
+        ++cellCount_[static_cast<std::size_t>(entry->previousOwner)];
         changed((*owner_)[index]);
         changed(entry->previousOwner);
         (*owner_)[index] = entry->previousOwner;
@@ -230,6 +235,8 @@ void BorderExchange::move(int cell, int receiver) {
     movesSinceBest_.push_back({cell, (*owner_)[index]});
     cost_[static_cast<std::size_t>((*owner_)[index])] -= weight_[index];
     cost_[static_cast<std::size_t>(receiver)] += weight_[index];
+    --cellCount_[static_cast<std::size_t>((*owner_)[index])];
+    ++cellCount_[static_cast<std::size_t>(receiver)];
     changed((*owner_)[index]);
     changed(receiver);
     (*owner_)[index] = receiver;
@@ -294,13 +301,15 @@ std::vector<int> BorderExchange::givablePiece(int donor, int receiver, double li
 }
 
 // `cell` and the cells of `region` reached from its start only through it, if their cover time is at most
-// `limitSeconds`; otherwise empty.
+// `limitSeconds`; otherwise empty. The cells left unreached are looked for over the whole map only when
+// there are some and the region's cost leaves room for them: most tries find none, or far too many.
 std::vector<int> BorderExchange::hangingOn(int cell, int region, double limitSeconds) {
     ++stamp_;
     const int start = start_[static_cast<std::size_t>(region)];
     visitStamp_[static_cast<std::size_t>(cell)] = stamp_;
     visitStamp_[static_cast<std::size_t>(start)] = stamp_;
     std::vector<int> queue{start};
+    double reachedSeconds = weight_[static_cast<std::size_t>(start)];
     for (std::size_t head = 0; head < queue.size(); ++head) {
         const auto at = static_cast<std::size_t>(queue[head]);
         for (int k = adjacencyStart_[at]; k < adjacencyStart_[at + 1]; ++k) {
@@ -309,11 +318,17 @@ std::vector<int> BorderExchange::hangingOn(int cell, int region, double limitSec
                 continue;
             visitStamp_[next] = stamp_;
             queue.push_back(static_cast<int>(next));
+            reachedSeconds += weight_[next];
         }
     }
+    const std::size_t unreached = cellCount_[static_cast<std::size_t>(region)] - queue.size() - 1;
+    const double regionSeconds = cost_[static_cast<std::size_t>(region)];
+    // The running cost may be off by rounding: only a clear excess is trusted without the scan.
+    if (regionSeconds - reachedSeconds > limitSeconds + 1e-6 * regionSeconds)
+        return {};
     std::vector<int> piece{cell};
     double seconds = weight_[static_cast<std::size_t>(cell)];
-    for (std::size_t c = 0; c < owner_->size() && seconds <= limitSeconds; ++c)
+    for (std::size_t c = 0; c < owner_->size() && piece.size() <= unreached && seconds <= limitSeconds; ++c)
         if ((*owner_)[c] == region && visitStamp_[c] != stamp_) {
             piece.push_back(static_cast<int>(c));
             seconds += weight_[c];

@@ -82,6 +82,7 @@ class BorderExchange {
     double largestCell_ = 0.0;
     std::vector<int>* owner_ = nullptr;
     std::vector<double> cost_;
+    std::vector<std::size_t> cellCount_; // by region
     std::vector<CandidateQueue> queues_; // per (donor, receiver)
     std::vector<char> closed_;           // per (donor, receiver): no cell to give since the last exchange
     std::size_t exchanges_ = 0;
