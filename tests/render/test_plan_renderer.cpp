@@ -255,6 +255,29 @@ class TestPlanRenderer : public QObject {
         QVERIFY(near(image.pixelColor(350, 180), QColor::fromRgb(kWater)));
     }
 
+    // A path off the pixel grid (y = 4950.2, device row 99.6) is still drawn on whole pixels: across it,
+    // the meadow, one white pixel of casing, two of the robot's colour, one white, the meadow again, and
+    // no blend of them (which antialiased edges at a fractional row would leave).
+    void pathLinesCoverWholePixels() {
+        Plan plan = eastboundPlan();
+        for (Waypoint& waypoint : plan.paths.front().waypoints)
+            waypoint.y = 4950.2;
+        const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200));
+        const QRgb robot = render::RobotPalette::colour(0).rgb();
+        const QRgb white = QColor(Qt::white).rgb();
+        QString across;
+        for (int row = 90; row <= 110; ++row) {
+            const QRgb pixel = image.pixel(60, row);
+            across += (pixel & 0xffffffu) == kMeadow ? '.'
+                      : pixel == white               ? 'w'
+                      : pixel == robot               ? 'r'
+                                                     : '?';
+        }
+        QCOMPARE(across.count('?'), 0);
+        QVERIFY2(across.contains(QStringLiteral(".wrrw.")), qPrintable(across));
+        QCOMPARE(across.count('r'), 2);
+    }
+
     // Two sorties from a charger at the west end: out and back along y = 4950, then along y = 4915. The
     // second is drawn darker (device rows 100 and 170), and the legend says so.
     void drawsEverySecondSortieDarker() {
