@@ -875,7 +875,7 @@ RegionAllocation evenedOut(Allocation& allocation, const CellGraph& graph, int m
     (void)allocation.rebalance(moves);
     RegionAllocation result = allocation.result();
     if (allocation.paces().empty())
-        settleRegionsWithPieces(graph, result);
+        settleRegionsWithPieces(graph, result, progress);
     progress.report("allocation", 1.0);
     return result;
 }

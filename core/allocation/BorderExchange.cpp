@@ -30,7 +30,8 @@ BorderExchange::BorderExchange(const CellGraph& graph, const std::vector<int>& c
     visitStamp_.assign(cells.size(), 0);
 }
 
-double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds) {
+double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds,
+                               const ProgressReporter& progress) {
     owner_ = &owner;
     cost_.assign(regionCount_, 0.0);
     cellCount_.assign(regionCount_, 0);
@@ -59,6 +60,8 @@ double BorderExchange::balance(std::vector<int>& owner, double toleranceSeconds)
     bool reopen = false;
     for (std::size_t moves = 0; moves < 8 * owner.size() && best.largest > toleranceSeconds &&
                                 exchangesSinceBest < stallExchanges;) {
+        if ((exchanges_ & 63) == 0) // on a map of a million cells, thousands of exchanges take minutes
+            progress.throwIfCancelled();
         if (reopen) // borders have moved: a link closed before may have cells to give now
             std::fill(closed_.begin(), closed_.end(), 0);
         const std::vector<int> chain = nextChain();

@@ -2,6 +2,7 @@
 
 #include "core/coverage/CellIndexScope.hpp"
 #include "core/model/CellGraph.hpp"
+#include "core/model/ProgressReporter.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -27,7 +28,8 @@ class BorderExchange {
     // Exchanges cells until every region is within `toleranceSeconds` of the fair share, no chain can pass
     // a cell, the moves run out or the exchanges stop getting closer; then keeps the closest division seen.
     // `owner` holds each cell's region; returns the largest error left.
-    double balance(std::vector<int>& owner, double toleranceSeconds);
+    double balance(std::vector<int>& owner, double toleranceSeconds,
+                   const ProgressReporter& progress = ProgressReporter{});
 
     // Chains passed along in the last balance, those that moved no cell included.
     [[nodiscard]] std::size_t exchangesMade() const { return exchanges_; }

@@ -401,7 +401,7 @@ class DarpSolver {
                                     return travel_[c * robotCount_ + static_cast<std::size_t>(receiver)] -
                                            travel_[c * robotCount_ + static_cast<std::size_t>(donor)];
                                 });
-        exchange.balance(owner_, toleranceSeconds_);
+        exchange.balance(owner_, toleranceSeconds_, progress_);
     }
 
     // When no connected division was found in time: each piece cut off from its robot's start joins a

@@ -24,7 +24,8 @@ bool within(const RegionAllocation& regions, const std::vector<int>& robots, dou
 
 } // namespace
 
-void settleRegionsWithPieces(const CellGraph& graph, RegionAllocation& regions) {
+void settleRegionsWithPieces(const CellGraph& graph, RegionAllocation& regions,
+                             const ProgressReporter& progress) {
     // Most allocations are settled already: then the parts of the map need not be found.
     double largestCell = 0.0;
     for (std::size_t cell = 0; cell < graph.size(); ++cell)
@@ -55,7 +56,7 @@ void settleRegionsWithPieces(const CellGraph& graph, RegionAllocation& regions) 
         }
         BorderExchange exchange(graph, part.cells, local, std::move(weights), starts,
                                 [](int, int, int) { return std::int64_t{0}; });
-        exchange.balance(owner, largestCell);
+        exchange.balance(owner, largestCell, progress);
         for (std::size_t i = 0; i < part.cells.size(); ++i) {
             const int robot = part.robots[static_cast<std::size_t>(owner[i])];
             regions.robotOfCell[static_cast<std::size_t>(part.cells[i])] = robot;

@@ -1,9 +1,11 @@
 #include "core/allocation/BorderExchange.hpp"
+#include "core/model/PlanningError.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -200,6 +202,30 @@ class BorderExchangeTest : public QObject {
         QVERIFY2(std::abs(cells[1] - cells[2]) <= 1,
                  qPrintable(QStringLiteral("%1 against %2 cells").arg(cells[1]).arg(cells[2])));
         QCOMPARE(error, 160.0 / 3.0 - 4.0); // region 0's, the fair share less its one cell
+    }
+
+    // Cancel reaches the exchange: on a map of a million cells it can run for minutes. A cancelled one
+    // stops with the planner's "cancelled" error before it moves a cell.
+    void aCancelledExchangeStops() {
+        CrowdedGrid grid(21);
+        const CellIndexScope local(grid.scratch, grid.cells);
+        grid.growRegions(local);
+        const std::vector<int> grown = grid.owner;
+        BorderExchange exchange(grid.graph, grid.cells, local, grid.weights, grid.starts,
+                                [](int, int, int) { return std::int64_t{0}; });
+        const std::atomic<bool> cancelled{true};
+        const ProgressReporter progress([](std::string_view, double) {}, &cancelled);
+        bool stopped = false;
+        try {
+            (void)exchange.balance(grid.owner, 0.0, progress);
+        } catch (const PlanningError& error) {
+            stopped = error.kind() == PlanningError::Kind::Cancelled;
+        }
+        QVERIFY(stopped);
+        QVERIFY(grid.owner == grown);
+        // Not cancelled, the same exchange moves cells.
+        (void)exchange.balance(grid.owner, 0.0);
+        QVERIFY(grid.owner != grown);
     }
 
     // Twenty regions on a crowded grid seldom reach a cell's error: chains can then pass cells round in a
