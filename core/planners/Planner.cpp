@@ -160,13 +160,18 @@ std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
                               : noGoOnly              ? "on pixels of a no-go zone"
                                          : "on pixels outside the area of interest or of a no-go zone";
     const double halfPixel = beyond.pixelMetres / 2.0;
-    std::string text =
-        std::to_string(beyond.waypoints) + (beyond.waypoints == 1 ? " waypoint of " : " waypoints of ") +
-        robotList(beyond.robots) + " lie " + where + ", up to " + formatDistance(beyond.farthestMetres) +
-        " past the task area's pixels: cells that straddle the edge are covered whole";
+    // Counted at the sub-cell centres the paths pass through: the waypoint files hold only the turning
+    // points, so a count of "waypoints" would not match what a user finds in them.
+    const bool one = beyond.robots.size() == 1;
+    std::string text = (one ? "the path of " : "the paths of ") + robotList(beyond.robots) +
+                       (one ? " passes over " : " pass over ") + where.substr(std::string("on ").size()) +
+                       " at " + std::to_string(beyond.waypoints) +
+                       (beyond.waypoints == 1 ? " sub-cell centre" : " sub-cell centres") + ", up to " +
+                       formatDistance(beyond.farthestMetres) +
+                       " past the task area's pixels: cells that straddle the edge are covered whole";
     if (beyond.farthestMetres <= halfPixel)
         text += "; the edge as drawn runs within half a pixel (" + formatDistance(halfPixel) +
-                ") of those pixels' border, so they may lie " +
+                ") of those pixels' border, so those centres may lie " +
                 (noGoOnly ? "outside the zone as drawn" : "inside the area as drawn");
     const std::string margin = formatDistance(beyond.farthestMetres + halfPixel);
     return text + ". For a drone whose geofence follows that edge, draw " +

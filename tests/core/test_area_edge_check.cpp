@@ -81,11 +81,14 @@ class AreaEdgeCheckTest : public QObject {
         QVERIFY(warning != plan.issues.end());
         // The edge drawn may lie half a pixel (5 m) past those pixels: the waypoints 5 m past them may lie
         // inside it, and a fence on it needs 10 m.
-        QVERIFY2(
-            warning->message.find("of robot 1 lie on pixels outside the area of interest, up to 5 m past "
-                                  "the task area's pixels") != std::string::npos,
-            warning->message.c_str());
-        QVERIFY2(warning->message.find("so they may lie inside the area as drawn") != std::string::npos,
+        QVERIFY2(warning->message.find(
+                     "the path of robot 1 passes over pixels outside the area of interest at ") !=
+                         std::string::npos &&
+                     warning->message.find("sub-cell centres, up to 5 m past the task area's pixels") !=
+                         std::string::npos,
+                 warning->message.c_str());
+        QVERIFY2(warning->message.find("so those centres may lie inside the area as drawn") !=
+                     std::string::npos,
                  warning->message.c_str());
         QVERIFY2(warning->message.find("draw the area 10 m inside the fence") != std::string::npos,
                  warning->message.c_str());
@@ -97,10 +100,11 @@ class AreaEdgeCheckTest : public QObject {
             return issue.code == "paths-beyond-area";
         });
         QVERIFY(zone != noGo.issues.end());
-        QVERIFY2(zone->message.find("of robot 1 lie on pixels of a no-go zone, up to 5 m") !=
+        QVERIFY2(zone->message.find("the path of robot 1 passes over pixels of a no-go zone at ") !=
                      std::string::npos,
                  zone->message.c_str());
-        QVERIFY2(zone->message.find("so they may lie outside the zone as drawn") != std::string::npos,
+        QVERIFY2(zone->message.find("so those centres may lie outside the zone as drawn") !=
+                     std::string::npos,
                  zone->message.c_str());
         QVERIFY2(zone->message.find("draw the no-go zone 10 m larger") != std::string::npos,
                  zone->message.c_str());
