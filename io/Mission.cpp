@@ -920,14 +920,12 @@ std::string namedAltitudes(const Mission& mission, const std::vector<VehicleSett
 // without a permit in most countries.
 void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
                            std::vector<PlanIssue>& notes) {
-    constexpr double lowest = 5.0;    // below the trees and roofs a survey flies over
-    constexpr double highest = 120.0; // the EU's open category; 400 ft in the US
     std::vector<std::size_t> low;
     std::vector<std::size_t> high;
     for (std::size_t robot = 0; robot < vehicles.size(); ++robot) {
-        if (isAircraft(vehicles[robot].type) && vehicles[robot].altitudeMetres < lowest)
+        if (fliesTooLow(vehicles[robot]))
             low.push_back(robot);
-        else if (isAircraft(vehicles[robot].type) && vehicles[robot].altitudeMetres > highest)
+        else if (fliesAbovePermitFreeHeight(vehicles[robot]))
             high.push_back(robot);
     }
     if (!low.empty())

@@ -105,6 +105,19 @@ constexpr double descentMetresPerSecond = 1.5;
 // all of it ("a flight of 1 min leaves no time to survey: ...").
 [[nodiscard]] std::optional<std::string> flightTooShortProblem(const VehicleSettings& vehicle);
 
+// Aircraft altitudes above home a user most likely did not mean, said as cautions, not refused: below
+// the trees and roofs a survey flies over, or above what drones may fly without a permit in most
+// countries (the EU's open category; 400 ft in the US).
+constexpr double lowestSurveyAltitudeMetres = 5.0;
+constexpr double highestAltitudeWithoutPermitMetres = 120.0;
+// Whether the vehicle is an aircraft flying below or above those.
+[[nodiscard]] constexpr bool fliesTooLow(const VehicleSettings& vehicle) {
+    return isAircraft(vehicle.type) && vehicle.altitudeMetres < lowestSurveyAltitudeMetres;
+}
+[[nodiscard]] constexpr bool fliesAbovePermitFreeHeight(const VehicleSettings& vehicle) {
+    return isAircraft(vehicle.type) && vehicle.altitudeMetres > highestAltitudeWithoutPermitMetres;
+}
+
 // The longest turnaround a vehicle may be given: a day on the ground between two parts.
 constexpr double maximumTurnaroundSeconds = 24.0 * 3600.0;
 // What is wrong with a turnaround time: 0 to 24 h.

@@ -113,6 +113,11 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     problem_->setStyleSheet(QStringLiteral("color: #b00020;"));
     problem_->hide();
     layout->addWidget(problem_);
+    caution_ = new QLabel(this);
+    caution_->setWordWrap(true);
+    caution_->setStyleSheet(QStringLiteral("color: #8a5300;"));
+    caution_->hide();
+    layout->addWidget(caution_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     okButton_ = buttons->button(QDialogButtonBox::Ok);
     for (const Row& row : rows_) {
@@ -261,8 +266,16 @@ void VehicleSettingsDialog::checkLimits() {
     std::vector<RowProblem> items;
     std::vector<RowProblem> flights;
     std::vector<RowProblem> climbs; // flights too short for the climb and descent
+    std::vector<RowProblem> low;    // aircraft altitudes allowed but most likely not meant
+    std::vector<RowProblem> high;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         const QString name = table_->verticalHeaderItem(static_cast<int>(i))->text();
+        const io::VehicleSettings settings = settingsOf(rows_[i]);
+        const QString altitude = tr("%1 m").arg(settings.altitudeMetres);
+        if (io::fliesTooLow(settings))
+            low.push_back({i, name, altitude});
+        else if (io::fliesAbovePermitFreeHeight(settings))
+            high.push_back({i, name, altitude});
         const int limit = rows_[i].maxWaypoints->value();
         if (!io::isWorkableItemLimit(limit))
             items.push_back({i, name, QString::number(limit)});
@@ -282,6 +295,18 @@ void VehicleSettingsDialog::checkLimits() {
                         .arg(namedOnce(flights).join(QStringLiteral(", ")));
     for (const QString& climb : namedOnce(climbs))
         problems << climb + QLatin1Char('.');
+    QStringList cautions;
+    if (!low.empty())
+        cautions << tr("Below %1 m above home an aircraft flies into trees and roofs: %2.")
+                        .arg(io::lowestSurveyAltitudeMetres)
+                        .arg(namedOnce(low).join(QStringLiteral(", ")));
+    if (!high.empty())
+        cautions << tr("Above %1 m (400 ft) above home, higher than most countries let drones fly without a "
+                       "permit: %2.")
+                        .arg(io::highestAltitudeWithoutPermitMetres)
+                        .arg(namedOnce(high).join(QStringLiteral(", ")));
+    caution_->setText(cautions.join(QLatin1Char(' ')));
+    caution_->setVisible(!cautions.isEmpty());
     problem_->setText(problems.join(QLatin1Char(' ')));
     problem_->setVisible(!problems.isEmpty());
     if (okButton_ != nullptr)

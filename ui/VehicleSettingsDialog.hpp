@@ -56,6 +56,7 @@ class VehicleSettingsDialog : public QDialog {
     QDoubleSpinBox* speedTolerance_ = nullptr;
     QCheckBox* atTurnsOnly_ = nullptr;
     QLabel* problem_ = nullptr;
+    QLabel* caution_ = nullptr; // altitudes allowed but most likely not meant
     QPushButton* okButton_ = nullptr;
     double shownTolerance_ = 0.0;
     std::vector<Row> rows_; // the "all robots" row first

@@ -120,6 +120,38 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY2(!text.contains(QStringLiteral("alpha")), qPrintable(text));
     }
 
+    // An aircraft's altitude above 120 m or below 5 m is allowed, with a caution naming the robot; a rover's
+    // is not cautioned, as its files are on the ground.
+    void unlikelyAltitudesAreCautioned() {
+        ui::VehicleSettingsDialog dialog(threeRobots());
+        auto* table = dialog.findChild<QTableWidget*>();
+        auto* ok = dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+        const auto cautionShown = [&]() -> QLabel* {
+            for (QLabel* label : dialog.findChildren<QLabel*>())
+                if (label->text().contains(QStringLiteral("above home")) && !label->isHidden())
+                    return label;
+            return nullptr;
+        };
+        QVERIFY(cautionShown() == nullptr);
+        cell<QDoubleSpinBox>(table, 2, 1)->setValue(500.0); // beta, a multirotor
+        QLabel* caution = cautionShown();
+        QVERIFY(caution != nullptr);
+        QVERIFY2(caution->text().contains(QStringLiteral("120 m")), qPrintable(caution->text()));
+        QVERIFY2(caution->text().contains(QStringLiteral("beta: 500 m")), qPrintable(caution->text()));
+        QVERIFY(ok->isEnabled());
+        cell<QDoubleSpinBox>(table, 2, 1)->setValue(2.0);
+        QVERIFY2(caution->text().contains(QStringLiteral("trees and roofs: beta: 2 m")),
+                 qPrintable(caution->text()));
+        cell<QDoubleSpinBox>(table, 2, 1)->setValue(60.0);
+        QVERIFY(caution->isHidden());
+        // alpha is a rover: however high its box says, nothing is cautioned.
+        cell<QDoubleSpinBox>(table, 1, 1)->setValue(500.0);
+        QVERIFY(caution->isHidden());
+        cell<QComboBox>(table, 1, 0)->setCurrentIndex(cell<QComboBox>(table, 1, 0)->findText("Multirotor"));
+        QVERIFY(!caution->isHidden());
+        QVERIFY2(caution->text().contains(QStringLiteral("alpha: 500 m")), qPrintable(caution->text()));
+    }
+
     // A flight time in minutes: all robots follow it, and one under a minute holds OK back.
     void flightTimeInMinutes() {
         ui::VehicleSettingsDialog dialog(threeRobots());
