@@ -1,9 +1,27 @@
 #include "render/PlanImageWriter.hpp"
 
 #include "io/AutopilotMission.hpp"
+#include "io/PlanExport.hpp"
 #include "render/PlanImage.hpp"
 
 namespace mcpp::render {
+namespace {
+
+// When the robot is done in the field, as its waypoint files fly it, where that comes later than its path:
+// an aircraft's trips to and from its start, the turnarounds between parts. A rover without turnarounds
+// is done when its path is, and its mission is not worked out here.
+FieldTime fieldTimeOf(const io::ExportContext& context, int robot) {
+    const io::VehicleSettings& vehicle = context.vehicle(robot);
+    if (!io::splitMissionEndsLater(vehicle))
+        return {};
+    const io::AutopilotMission& mission = io::autopilotMissionOf(context, robot);
+    if (mission.parts.empty())
+        return {};
+    return {io::missionFlights(mission, vehicle).fieldSeconds, mission.parts.size(),
+            io::isAircraft(vehicle.type)};
+}
+
+} // namespace
 
 io::ImageWriter planImageWriter(int pngSide) {
     return [pngSide](const io::ExportContext& context, io::ImageFormat format, const std::string& path) {
@@ -11,9 +29,11 @@ io::ImageWriter planImageWriter(int pngSide) {
             return io::Status::failure(path + ": there is no map to draw");
         QString error;
         const QString file = QString::fromStdString(path);
-        SheetExtras extras{&context.outlines(), context.robotNames, {}, context.area};
-        for (std::size_t robot = 0; robot < context.plan.paths.size(); ++robot)
+        SheetExtras extras{&context.outlines(), context.robotNames, {}, context.area, {}};
+        for (std::size_t robot = 0; robot < context.plan.paths.size(); ++robot) {
             extras.flightReach.push_back(io::flightReachMetres(context.vehicle(static_cast<int>(robot))));
+            extras.fieldTimes.push_back(fieldTimeOf(context, static_cast<int>(robot)));
+        }
         const bool written = format == io::ImageFormat::Png
                                  ? writePlanPng(*context.grid, context.classes, context.plan, file,
                                                 QSize(pngSide, pngSide), &error, extras)

@@ -242,6 +242,25 @@ LegendSection& onTheMap(std::vector<LegendSection>& sections) {
 
 } // namespace
 
+void addFieldTimes(std::vector<LegendSection>& sections, const std::vector<FieldTime>& times) {
+    const auto robots = std::find_if(sections.begin(), sections.end(), [](const LegendSection& section) {
+        return section.title.startsWith(QStringLiteral("Robots"));
+    });
+    if (robots == sections.end())
+        return;
+    for (std::size_t robot = 0; robot < robots->items.size() && robot < times.size(); ++robot) {
+        const FieldTime& time = times[robot];
+        if (!(time.seconds > 0.0))
+            continue;
+        QString parts;
+        if (time.parts > 1)
+            parts = (time.flights ? QStringLiteral(", %1 flights") : QStringLiteral(", %1 parts"))
+                        .arg(time.parts);
+        robots->items[robot].label += QStringLiteral("; in the field %1%2")
+                                          .arg(QString::fromStdString(formatDuration(time.seconds)), parts);
+    }
+}
+
 void addFlightReach(std::vector<LegendSection>& sections, const std::vector<double>& reaches) {
     if (std::none_of(reaches.begin(), reaches.end(), [](double metres) { return metres > 0.0; }))
         return;

@@ -51,6 +51,17 @@ struct LegendSection {
 planLegend(const ClassTable& classes, const Plan* plan, const std::vector<std::string>& robotNames,
            const ClassGrid* grid = nullptr, const std::vector<ImpassableCrossing>* crossings = nullptr);
 
+// When a robot is done in the field, where that comes later than its path takes: an aircraft's trips to
+// and from its start, the turnarounds between the parts of its mission.
+struct FieldTime {
+    double seconds = 0.0;  // 0: when its path is done
+    std::size_t parts = 0; // of its mission
+    bool flights = false;  // the parts are flights (an aircraft's)
+};
+
+// Adds to each robot's line of the legend when it is done in the field, where `times` (by robot) has it.
+void addFieldTimes(std::vector<LegendSection>& sections, const std::vector<FieldTime>& times);
+
 // Adds the line for the dashed rings round aircraft starts (PlanRenderer::setFlightReach) to the legend's
 // "On the map" section (making one when there is no plan yet) when any robot's reach (by robot, metres) is
 // drawn.

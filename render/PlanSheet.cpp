@@ -52,6 +52,7 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
         addFlightReach(sections_, extras_.flightReach);
     if (extras_.area != nullptr)
         addAreaOutline(sections_, *extras_.area);
+    addFieldTimes(sections_, extras_.fieldTimes);
     const QSize mapSize = fittedMapSize(frame_, maxMapSize);
     // Text keeps its size against the map: readable on a 1600-pixel sheet, not huge on a small one.
     const int textPixels = std::clamp(std::max(maxMapSize.width(), maxMapSize.height()) / 110, 10, 18);

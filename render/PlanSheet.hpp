@@ -22,6 +22,7 @@ struct SheetExtras {
     std::vector<std::string> robotNames;      // by robot; empty names read "Robot n"
     std::vector<double> flightReach;          // by robot, metres: rings round aircraft starts
     const AreaOutline* area = nullptr;        // the area of interest's and no-go zones' edges, if any
+    std::vector<FieldTime> fieldTimes;        // by robot, where done in the field later than its path
 };
 
 // The exported picture of a plan as a map sheet: a title, the map (the plan's frame, planFrame) fitted into

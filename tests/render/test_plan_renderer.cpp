@@ -388,7 +388,7 @@ class TestPlanRenderer : public QObject {
         // The exported sheet draws them too, and its legend says what they are.
         const Plan plan = eastboundPlan();
         const auto sheetImage = [&](std::vector<double> reach) {
-            const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, std::move(reach)},
+            const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, std::move(reach), nullptr, {}},
                                           QSize(400, 400));
             QImage image(sheet.size(), QImage::Format_RGB32);
             image.fill(Qt::white);
@@ -406,7 +406,8 @@ class TestPlanRenderer : public QObject {
         QVERIFY2(differing > 200, qPrintable(QString::number(differing)));
         // The legend explains the ring only where it shows: one of 100 km lies round the whole sheet.
         const auto explainsRings = [&](double reach) {
-            const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, {reach}}, QSize(400, 400));
+            const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, {reach}, nullptr, {}},
+                                          QSize(400, 400));
             for (const render::LegendSection& section : sheet.legend())
                 for (const render::LegendItem& item : section.items)
                     if (item.symbol == render::LegendSymbol::FlightReach)
@@ -415,6 +416,29 @@ class TestPlanRenderer : public QObject {
         };
         QVERIFY(explainsRings(40.0));
         QVERIFY(!explainsRings(100000.0));
+    }
+
+    // Where a robot is done in the field later than its path takes (an aircraft's flights from its start,
+    // turnarounds), its line of the sheet's legend says when, and in how many flights; others keep their
+    // path's time alone.
+    void legendGivesTimeInTheField() {
+        Plan plan = eastboundPlan();
+        plan.paths.push_back(plan.paths.front());
+        plan.paths.back().robot = 1;
+        plan.metrics.robots.resize(2);
+        plan.metrics.robots[0].timeSeconds = 3600.0;
+        plan.metrics.robots[1].timeSeconds = 1800.0;
+        render::SheetExtras extras;
+        extras.fieldTimes = {{7500.0, 3, true}, {}};
+        const render::PlanSheet sheet(twoClassGrid(), twoClassTable(), plan, extras, QSize(400, 400));
+        QStringList lines;
+        for (const render::LegendSection& section : sheet.legend())
+            for (const render::LegendItem& item : section.items)
+                if (item.symbol == render::LegendSymbol::StartMarker)
+                    lines << item.label;
+        QCOMPARE(lines.size(), 2);
+        QCOMPARE(lines[0], QStringLiteral("Robot 1 — 1 h; in the field 2 h 5 min, 3 flights"));
+        QCOMPARE(lines[1], QStringLiteral("Robot 2 — 30 min"));
     }
 
     // The rings' legend line joins "On the map", or makes it before there is a plan.
@@ -510,7 +534,7 @@ class TestPlanRenderer : public QObject {
         QVERIFY(legend.back().items[1].symbol == render::LegendSymbol::NoGoZone);
 
         const Plan plan = eastboundPlan();
-        const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, {}, &area}, QSize(400, 400));
+        const render::PlanSheet sheet(grid, classes, plan, {nullptr, {}, {}, &area, {}}, QSize(400, 400));
         int explained = 0;
         for (const render::LegendSection& section : sheet.legend())
             for (const render::LegendItem& item : section.items)
@@ -526,7 +550,7 @@ class TestPlanRenderer : public QObject {
         wide.exclude = {{{{1150, 4600}, {1250, 4600}, {1250, 4950}, {1150, 4950}}}};
         // Edge-coloured pixels (the title's text is near black too) in the map and beyond it.
         const auto edgePixels = [&](const AreaOutline* outline) {
-            const render::PlanSheet wideSheet(grid, classes, plan, {nullptr, {}, {}, outline},
+            const render::PlanSheet wideSheet(grid, classes, plan, {nullptr, {}, {}, outline, {}},
                                               QSize(400, 400));
             QImage image(wideSheet.size(), QImage::Format_RGB32);
             image.fill(Qt::white);
@@ -799,10 +823,10 @@ class TestPlanRenderer : public QObject {
         QString error;
         const QString png = directory.filePath(QStringLiteral("plan.png"));
         QVERIFY2(render::writePlanPng(twoClassGrid(), twoClassTable(), plan, png, QSize(800, 800), &error,
-                                      {nullptr, names, {}}),
+                                      {nullptr, names, {}, nullptr, {}}),
                  qPrintable(error));
-        const render::PlanSheet sheet(twoClassGrid(), twoClassTable(), plan, {nullptr, names, {}},
-                                      QSize(800, 800));
+        const render::PlanSheet sheet(twoClassGrid(), twoClassTable(), plan,
+                                      {nullptr, names, {}, nullptr, {}}, QSize(800, 800));
         QCOMPARE(sheet.mapArea().size(), QSize(800, 400));
         QImage readBack(png);
         QCOMPARE(readBack.size(), sheet.size());
@@ -825,7 +849,7 @@ class TestPlanRenderer : public QObject {
 
         const QString svg = directory.filePath(QStringLiteral("plan.svg"));
         QVERIFY2(render::writePlanSvg(twoClassGrid(), twoClassTable(), plan, svg, QSize(800, 800), &error,
-                                      {nullptr, names, {}}),
+                                      {nullptr, names, {}, nullptr, {}}),
                  qPrintable(error));
         QFile file(svg);
         QVERIFY(file.open(QIODevice::ReadOnly));
