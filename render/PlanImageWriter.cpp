@@ -30,10 +30,14 @@ io::ImageWriter planImageWriter(int pngSide) {
         QString error;
         const QString file = QString::fromStdString(path);
         SheetExtras extras{&context.outlines(), context.robotNames, {}, context.area, {}};
-        for (std::size_t robot = 0; robot < context.plan.paths.size(); ++robot) {
+        const std::size_t robots = context.plan.paths.size();
+        for (std::size_t robot = 0; robot < robots; ++robot)
             extras.flightReach.push_back(io::flightReachMetres(context.vehicle(static_cast<int>(robot))));
-            extras.fieldTimes.push_back(fieldTimeOf(context, static_cast<int>(robot)));
-        }
+        // Last robot first: the robots' waypoint files, written beside the picture, work out their missions
+        // from the first on, so the two threads share the work instead of one waiting on the other.
+        extras.fieldTimes.resize(robots);
+        for (std::size_t robot = robots; robot-- > 0;)
+            extras.fieldTimes[robot] = fieldTimeOf(context, static_cast<int>(robot));
         const bool written = format == io::ImageFormat::Png
                                  ? writePlanPng(*context.grid, context.classes, context.plan, file,
                                                 QSize(pngSide, pngSide), &error, extras)
