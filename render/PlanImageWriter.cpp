@@ -15,10 +15,12 @@ FieldTime fieldTimeOf(const io::ExportContext& context, int robot) {
     if (!io::splitMissionEndsLater(vehicle))
         return {};
     const io::AutopilotMission& mission = io::autopilotMissionOf(context, robot);
-    if (mission.parts.empty())
+    const auto index = static_cast<std::size_t>(robot);
+    if (mission.parts.empty() || index >= context.plan.metrics.robots.size())
         return {};
-    return {io::missionFlights(mission, vehicle).fieldSeconds, mission.parts.size(),
-            io::isAircraft(vehicle.type)};
+    return fieldTimeBeyondPath(context.plan.metrics.robots[index].timeSeconds,
+                               io::missionFlights(mission, vehicle).fieldSeconds, mission.parts.size(),
+                               io::isAircraft(vehicle.type));
 }
 
 } // namespace

@@ -242,6 +242,12 @@ LegendSection& onTheMap(std::vector<LegendSection>& sections) {
 
 } // namespace
 
+FieldTime fieldTimeBeyondPath(double pathSeconds, double fieldSeconds, std::size_t parts, bool flights) {
+    if (!(fieldSeconds > pathSeconds + 1.0))
+        return {};
+    return {fieldSeconds, parts, flights};
+}
+
 void addFieldTimes(std::vector<LegendSection>& sections, const std::vector<FieldTime>& times) {
     const auto robots = std::find_if(sections.begin(), sections.end(), [](const LegendSection& section) {
         return section.title.startsWith(QStringLiteral("Robots"));

@@ -59,6 +59,11 @@ struct FieldTime {
     bool flights = false;  // the parts are flights (an aircraft's)
 };
 
+// The robot's field time where it is done in the field more than a second after its path takes; none
+// otherwise (a rover driving its mission in one go, without turnarounds).
+[[nodiscard]] FieldTime fieldTimeBeyondPath(double pathSeconds, double fieldSeconds, std::size_t parts,
+                                            bool flights);
+
 // Adds to each robot's line of the legend when it is done in the field, where `times` (by robot) has it.
 void addFieldTimes(std::vector<LegendSection>& sections, const std::vector<FieldTime>& times);
 

@@ -60,9 +60,12 @@ void drawArrow(QPainter& painter, QPointF tip, QPointF direction, const QColor& 
 // `to` (from <= to) with square caps, or across it (from == to). Every end rounds the same way, so
 // segments that meet at a point meet on the same pixels. Widths round to whole pixels (1.5 draws 2).
 std::pair<int, int> pixelSpan(double from, double to, int pixels) {
+    // Halves round up on both sides of 0 (std::lround would round them away from it): a casing and the
+    // line inside it then share their middle whatever the position.
+    const auto rounded = [](double value) { return static_cast<int>(std::floor(value + 0.5)); };
     const double half = pixels / 2.0;
-    const int start = static_cast<int>(std::lround(from - half));
-    return {start, static_cast<int>(std::lround(to - half)) + pixels - start};
+    const int start = rounded(from - half);
+    return {start, rounded(to - half) + pixels - start};
 }
 
 // A wide opaque line with square caps and mitred corners. Qt strokes a wide polyline as one polygon whose

@@ -5,6 +5,7 @@
 #include "ui/MissionDocument.hpp"
 
 #include <QPainter>
+#include <utility>
 
 namespace mcpp::ui {
 
@@ -14,9 +15,13 @@ constexpr int kPadding = 8;
 
 LegendPanel::LegendPanel(MissionDocument* document, QWidget* parent) : QWidget(parent), document_(document) {
     setObjectName(QStringLiteral("legendPanel"));
-    for (const auto signal : {&MissionDocument::mapChanged, &MissionDocument::classesChanged,
-                              &MissionDocument::robotsChanged, &MissionDocument::planChanged})
+    for (const auto signal :
+         {&MissionDocument::mapChanged, &MissionDocument::classesChanged, &MissionDocument::robotsChanged})
         connect(document_, signal, this, &LegendPanel::rebuild);
+    connect(document_, &MissionDocument::planChanged, this, [this] {
+        fieldTimes_.clear(); // the last plan's, until this one's are worked out
+        rebuild();
+    });
     rebuild();
 }
 
@@ -28,10 +33,16 @@ void LegendPanel::rebuild() {
         render::addFlightReach(sections_, io::flightReachesMetres(io::robotVehicles(document_->mission())));
         if (document_->raster() != nullptr)
             render::addAreaOutline(sections_, document_->raster()->area);
+        render::addFieldTimes(sections_, fieldTimes_);
     }
     setMinimumSize(sizeHint());
     updateGeometry();
     update();
+}
+
+void LegendPanel::showFieldTimes(std::vector<render::FieldTime> times) {
+    fieldTimes_ = std::move(times);
+    rebuild();
 }
 
 QSize LegendPanel::sizeHint() const {

@@ -17,6 +17,9 @@ class LegendPanel : public QWidget {
     explicit LegendPanel(MissionDocument* document, QWidget* parent = nullptr);
     [[nodiscard]] const std::vector<render::LegendSection>& sections() const { return sections_; }
     [[nodiscard]] QSize sizeHint() const override;
+    // When each robot (by robot) is done in the field, where later than its path: worked out beside the
+    // window with the waypoint files' sizes, for the plan shown. A new plan drops them.
+    void showFieldTimes(std::vector<render::FieldTime> times);
 
   protected:
     void paintEvent(QPaintEvent* event) override;
@@ -26,6 +29,7 @@ class LegendPanel : public QWidget {
 
     MissionDocument* document_;
     std::vector<render::LegendSection> sections_;
+    std::vector<render::FieldTime> fieldTimes_;
 };
 
 } // namespace mcpp::ui

@@ -7,6 +7,7 @@
 #include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/AreaOfInterest.hpp"
+#include "io/AutopilotMission.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
 #include "io/MissionInputs.hpp"
@@ -14,6 +15,7 @@
 #include "io/PlanExport.hpp"
 #include "io/PlanFile.hpp"
 #include "render/PlanImageWriter.hpp"
+#include "render/PlanLegend.hpp"
 #include "ui/ApplicationResources.hpp"
 #include "ui/ClassBulkEditDialog.hpp"
 #include "ui/ClassTableBanner.hpp"
@@ -81,6 +83,22 @@
 namespace mcpp::ui {
 
 namespace {
+
+// What the legend says of when each robot is done in the field, from its waypoint files' sizes (by path,
+// as the plan holds them), where that comes later than its path.
+std::vector<render::FieldTime> fieldTimesOf(const Plan& plan, const std::vector<io::MissionSize>& sizes,
+                                            const std::vector<io::VehicleSettings>& vehicles) {
+    std::vector<render::FieldTime> times(plan.metrics.robots.size());
+    for (std::size_t i = 0; i < sizes.size() && i < plan.paths.size(); ++i) {
+        const auto robot = static_cast<std::size_t>(plan.paths[i].robot);
+        if (robot >= times.size())
+            continue;
+        const bool flights = robot < vehicles.size() && io::isAircraft(vehicles[robot].type);
+        times[robot] = render::fieldTimeBeyondPath(plan.metrics.robots[robot].timeSeconds,
+                                                   sizes[i].fieldSeconds, sizes[i].parts, flights);
+    }
+    return times;
+}
 
 // The size warning: what the map needs against what the machine allows, and what fits.
 // The planner is named: planners need different memory per cell.
@@ -969,13 +987,16 @@ void MainWindow::sizeWaypointFiles() {
     const int asked = ++waypointFileSizesAsked_;
     const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(document_->mission());
     const io::ExportSettings settings = document_->mission().exports;
-    connect(waypointFileSizes_, &QFutureWatcherBase::finished, this, [this, asked, vehicles] {
+    connect(waypointFileSizes_, &QFutureWatcherBase::finished, this, [this, asked, vehicles, plan] {
         if (asked != waypointFileSizesAsked_)
             return;
         QStringList names;
         for (const auto& robot : document_->robots())
             names << QString::fromStdString(robot.name);
-        resultsPanel_->showWaypointFiles(waypointFileSizes_->result(), vehicles, names);
+        const std::vector<io::MissionSize> sizes = waypointFileSizes_->result();
+        resultsPanel_->showWaypointFiles(sizes, vehicles, names);
+        if (document_->sharedPlan() == plan)
+            legendPanel_->showFieldTimes(fieldTimesOf(*plan, sizes, vehicles));
     });
     // A large map's paths hold tens of millions of points: measured beside the window, not in it.
     waypointFileSizes_->setFuture(QtConcurrent::run([plan, vehicles, settings] {

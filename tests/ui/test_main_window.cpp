@@ -864,6 +864,15 @@ class TestMainWindow : public QObject {
                                      return message.contains(QString::fromStdString(issue.message));
                                  }),
                      issue.message.c_str());
+        // The legend says when the drone is done in the field (its climbs, descents and trips from its
+        // start come on top of its path), once worked out beside the window; the rover's line does not.
+        const auto robotLine = [&](std::size_t robot) {
+            const auto& sections = window.legendPanel()->sections();
+            return sections.size() > 1 && robot < sections[1].items.size() ? sections[1].items[robot].label
+                                                                           : QString();
+        };
+        QTRY_VERIFY2(robotLine(1).contains(QStringLiteral("; in the field ")), qPrintable(robotLine(1)));
+        QVERIFY2(!robotLine(0).contains(QStringLiteral("in the field")), qPrintable(robotLine(0)));
     }
 
     // Starts the window's own checks pass but the planner refuses (two in one cell of its grid): the
