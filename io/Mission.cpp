@@ -930,14 +930,16 @@ void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSett
     }
     if (!low.empty())
         notes.push_back({IssueSeverity::Warning, "altitude-too-low",
-                         "aircraft flying lower than 5 m above home, into trees and roofs (" +
+                         "aircraft flying lower than " + formatQuantity(lowestSurveyAltitudeMetres, 4) +
+                             " m" + " above home, into trees and roofs (" +
                              namedAltitudes(mission, vehicles, low) +
                              "): give a survey altitude (--altitude, exports.altitude_m)"});
     if (!high.empty())
-        notes.push_back({IssueSeverity::Warning, "altitude-above-120m",
-                         "aircraft flying higher than 120 m (400 ft) above home, above what most countries "
-                         "allow drones without a permit (" +
-                             namedAltitudes(mission, vehicles, high) + ")"});
+        notes.push_back(
+            {IssueSeverity::Warning, "altitude-above-120m",
+             "aircraft flying higher than " + formatQuantity(highestAltitudeWithoutPermitMetres, 4) + " m" +
+                 " (400 ft) above home, above what most countries allow drones without a permit (" +
+                 namedAltitudes(mission, vehicles, high) + ")"});
 }
 
 // " (20 min)": the battery_s the mission gives the planner, or its default.

@@ -148,7 +148,7 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
                                       const std::vector<std::string>& robotNames, const ClassGrid* grid,
                                       const std::vector<ImpassableCrossing>* crossings) {
     std::vector<LegendSection> sections;
-    LegendSection landCover{QStringLiteral("Land cover"), {}};
+    LegendSection landCover{LegendSectionKind::LandCover, QStringLiteral("Land cover"), {}};
     for (const LandCoverClass& entry : classes.classes()) {
         const bool wall = !entry.isTraversable();
         landCover.items.push_back(
@@ -160,14 +160,15 @@ std::vector<LegendSection> planLegend(const ClassTable& classes, const Plan* pla
     sections.push_back(std::move(landCover));
     if (plan != nullptr && !plan->paths.empty()) {
         const bool onBatteries = sortieLayerOf(*plan) != nullptr;
-        LegendSection robots{onBatteries ? QStringLiteral("Robots (start and charger, region, path)")
+        LegendSection robots{LegendSectionKind::Robots,
+                             onBatteries ? QStringLiteral("Robots (start and charger, region, path)")
                                          : QStringLiteral("Robots (start, region, path)"),
                              {}};
         for (std::size_t robot = 0; robot < plan->paths.size(); ++robot)
             robots.items.push_back({LegendSymbol::StartMarker, RobotPalette::colour(static_cast<int>(robot)),
                                     robotLabel(*plan, robot, robotNames), QString::number(robot + 1)});
         sections.push_back(std::move(robots));
-        LegendSection overlays{QStringLiteral("On the map"), {}};
+        LegendSection overlays{LegendSectionKind::OnTheMap, QStringLiteral("On the map"), {}};
         const QColor first = RobotPalette::colour(0);
         if (const DetectionLayer* detection = detectionLayerOf(*plan)) {
             const QString required = QString::number(detection->summary().requiredProbability, 'g', 3);
@@ -234,9 +235,8 @@ namespace {
 
 // The legend's last section, "On the map", made when there is none yet (no plan).
 LegendSection& onTheMap(std::vector<LegendSection>& sections) {
-    const QString title = QStringLiteral("On the map");
-    if (sections.empty() || sections.back().title != title)
-        sections.push_back({title, {}});
+    if (sections.empty() || sections.back().kind != LegendSectionKind::OnTheMap)
+        sections.push_back({LegendSectionKind::OnTheMap, QStringLiteral("On the map"), {}});
     return sections.back();
 }
 
@@ -250,7 +250,7 @@ FieldTime fieldTimeBeyondPath(double pathSeconds, double fieldSeconds, std::size
 
 void addFieldTimes(std::vector<LegendSection>& sections, const std::vector<FieldTime>& times) {
     const auto robots = std::find_if(sections.begin(), sections.end(), [](const LegendSection& section) {
-        return section.title.startsWith(QStringLiteral("Robots"));
+        return section.kind == LegendSectionKind::Robots;
     });
     if (robots == sections.end())
         return;

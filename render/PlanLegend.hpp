@@ -38,7 +38,11 @@ struct LegendItem {
     QString marker; // text inside a start marker
 };
 
+// What a section lists: found by this, not by its title, which may change.
+enum class LegendSectionKind { LandCover, Robots, OnTheMap };
+
 struct LegendSection {
+    LegendSectionKind kind = LegendSectionKind::OnTheMap;
     QString title;
     std::vector<LegendItem> items;
 };

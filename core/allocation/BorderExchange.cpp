@@ -307,8 +307,11 @@ std::vector<int> BorderExchange::givablePiece(int donor, int receiver, double li
 // `limitSeconds`; otherwise empty. The cells left unreached are looked for over the whole map only when
 // there are some and the region's cost leaves room for them: most tries find none, or far too many.
 std::vector<int> BorderExchange::hangingOn(int cell, int region, double limitSeconds) {
-    ++stamp_;
     const int start = start_[static_cast<std::size_t>(region)];
+    // The count of unreached cells below takes the start as the region's and the cell as another.
+    if (cell == start || (*owner_)[static_cast<std::size_t>(start)] != region)
+        return {};
+    ++stamp_;
     visitStamp_[static_cast<std::size_t>(cell)] = stamp_;
     visitStamp_[static_cast<std::size_t>(start)] = stamp_;
     std::vector<int> queue{start};

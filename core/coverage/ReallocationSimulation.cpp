@@ -123,12 +123,13 @@ void ReallocationSimulation::rebalance(double now) {
 
 // The regions grown from the starts in turns, then evened out before anyone moves (seed 003, figure 6 b).
 RegionAllocation ReallocationSimulation::firstDivision(const CellGraph& graph,
-                                                       const std::vector<int>& startCells) {
+                                                       const std::vector<int>& startCells,
+                                                       const ProgressReporter& progress) {
     RegionAllocation regions;
     regions.robotOfCell = expandRegions(graph, startCells);
     regions.startCell = startCells;
     regions.costSeconds = regionCosts(graph, regions.robotOfCell, startCells.size());
-    settleRegionsWithPieces(graph, regions);
+    settleRegionsWithPieces(graph, regions, progress);
     return regions;
 }
 

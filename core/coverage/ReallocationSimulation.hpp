@@ -41,8 +41,10 @@ class ReallocationSimulation {
                              const ProgressReporter& progress);
 
     // The regions grown from the starts in turns, then evened out before anyone moves (seed 003, figure 6 b).
+    // Cancelled through `progress` while they are evened out.
     [[nodiscard]] static RegionAllocation firstDivision(const CellGraph& graph,
-                                                        const std::vector<int>& startCells);
+                                                        const std::vector<int>& startCells,
+                                                        const ProgressReporter& progress);
 
   private:
     enum class State { Driving, Idle, Stopped };

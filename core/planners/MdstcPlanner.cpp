@@ -73,13 +73,13 @@ void reportLeftUncovered(PlanningRun& run, const std::vector<int>& uncovered, bo
 RegionAllocation balancedDivision(PlanningRun& run, CellGraph& cells, const std::vector<int>& startCells) {
     const ProgressReporter& progress = run.progress();
     const SpanningTreeCoverage coverage(false);
-    RegionAllocation division = ReallocationSimulation::firstDivision(cells, startCells);
+    RegionAllocation division = ReallocationSimulation::firstDivision(cells, startCells, progress);
     // Compared by their trees, the two divisions hold a quarter of their paths' memory; only the one kept
     // is walked.
     std::vector<SpanningTreeCoverage::RegionTree> trees =
         coverage.planTrees(cells, division, run.starts(), progress.within("first division", 0.0, 0.3), true);
     if (calibrateTurnRates(cells, division, turningSecondsOf(trees))) {
-        RegionAllocation priced = ReallocationSimulation::firstDivision(cells, startCells);
+        RegionAllocation priced = ReallocationSimulation::firstDivision(cells, startCells, progress);
         std::vector<SpanningTreeCoverage::RegionTree> pricedTrees = coverage.planTrees(
             cells, priced, run.starts(), progress.within("first division", 0.3, 0.6), true);
         if (walksQuicker(pricedTrees, trees)) {

@@ -1,5 +1,6 @@
 #include "core/allocation/RegionExpansion.hpp"
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/ReallocationSimulation.hpp"
 #include "core/model/PlanningError.hpp"
 #include "core/model/SpeedSchedule.hpp"
 #include "core/model/TimelineLayer.hpp"
@@ -90,6 +91,31 @@ class MdstcTest : public QObject {
         const auto second = std::count(owner.begin(), owner.end(), 1);
         QCOMPARE(first + second, 100);
         QVERIFY2(std::abs(first - second) <= 2, qPrintable(QString("%1 against %2").arg(first).arg(second)));
+    }
+
+    // Twenty robots at random cells of a 49 x 49 grid grow uneven regions, which are then evened out: a
+    // request to stop reaches that evening-out (on a large map it takes long), and without one the
+    // regions come out whole with every reachable cell claimed.
+    void theFirstDivisionStopsWhenCancelled() {
+        const PlanningProblem problem = test::obstacleGridProblem(49, 20, 21);
+        const CellGraph cells = test::cellPerPixelGraph(problem);
+        std::vector<int> startCells;
+        for (const MapPoint& start : problem.starts)
+            startCells.push_back(cells.cellAt(start));
+        const std::atomic<bool> cancelled{true};
+        const ProgressReporter stopping([](std::string_view, double) {}, &cancelled);
+        bool stopped = false;
+        try {
+            (void)ReallocationSimulation::firstDivision(cells, startCells, stopping);
+        } catch (const PlanningError& error) {
+            stopped = error.kind() == PlanningError::Kind::Cancelled;
+        }
+        QVERIFY(stopped);
+        const RegionAllocation division = ReallocationSimulation::firstDivision(cells, startCells, {});
+        QCOMPARE(division.robotOfCell.size(), cells.size());
+        for (std::size_t robot = 0; robot < startCells.size(); ++robot)
+            QCOMPARE(division.robotOfCell[static_cast<std::size_t>(startCells[robot])],
+                     static_cast<int>(robot));
     }
 
     // Without events, the plan holds the shared invariants (every free sub-cell passed, times as measured),

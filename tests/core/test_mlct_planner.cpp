@@ -272,6 +272,16 @@ class MlctPlannerTest : public QObject {
         QCOMPARE(uneven->severity, IssueSeverity::Warning);
         QVERIFY2(uneven->message.rfind("robot 1 covers less than half of a fair share", 0) == 0,
                  uneven->message.c_str());
+        // The advice it gives holds: MSTC's balanced pieces need no start inside, and even the plan out.
+        QVERIFY2(uneven->message.find("--planner mstc --param balanced=true") != std::string::npos,
+                 uneven->message.c_str());
+        auto advised = problem;
+        advised.planner = defaultPlannerChoice("mstc");
+        advised.planner.parameters.set("balanced", true);
+        const Plan followed = makePlanner("mstc")->plan(advised, {});
+        QVERIFY2(followed.metrics.ratio < 1.1, std::to_string(followed.metrics.ratio).c_str());
+        QVERIFY(std::none_of(followed.issues.begin(), followed.issues.end(),
+                             [](const PlanIssue& issue) { return issue.code == "uneven-plan"; }));
         const Plan balanced = MlctPlanner{}.plan(lakeProblem(), {});
         QVERIFY(std::none_of(balanced.issues.begin(), balanced.issues.end(),
                              [](const PlanIssue& issue) { return issue.code == "uneven-plan"; }));
