@@ -3,8 +3,9 @@
 # planned by `mcpp --batch`. Per case and binary: the ratio of the makespan to the lower bound, the turns,
 # the allocation and planning time (report.json) and the whole process (/usr/bin/time), and whether the
 # plan carries the uneven-plan warning.
-#   bench/crowded-starts.sh [MCPP...]
+#   [PLANNER_FLAGS="--planner mstc --param balanced=true"] bench/crowded-starts.sh [MCPP...]
 # MCPP defaults to build/release/app/mcpp; several binaries are run case by case, one after the other.
+# PLANNER_FLAGS are given to every run (default: none, the default planner).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 binaries=("$@")
@@ -26,7 +27,8 @@ for setting in "49 8 7" "49 20 9" "100 14 11"; do
         for index in "${!binaries[@]}"; do
             out="$scratch/out-$name-$index"
             # shellcheck disable=SC2086
-            /usr/bin/time -f '%e' -o "$scratch/time" "${binaries[$index]}" --batch $flags --out "$out" -q
+            /usr/bin/time -f '%e' -o "$scratch/time" "${binaries[$index]}" --batch $flags ${PLANNER_FLAGS:-} \
+                --out "$out" -q
             python3 - "$out/report.json" "$name" "$index" "$(cat "$scratch/time")" <<'PY'
 import json, sys
 report = json.load(open(sys.argv[1]))

@@ -188,8 +188,8 @@ std::string balanceSwitchAdvice(const PlannerDescription& planner) {
 }
 
 // Where every region holds its robot's start, robots set off from one base wall each other in. MSTC's
-// balanced pieces need no start inside: on grids of 49 and 100 cells a side with 4-16 robots started within
-// a few cells of each other, 1.01-1.10 times the bound where MCPP-MLCT ended at 1.14-2.13.
+// balanced pieces need no start inside: on the crowded-start maps of bench/crowded-starts.sh, 1.03-1.13
+// times the bound where MCPP-MLCT warns at 1.08-2.35.
 constexpr const char* passingOtherStartsAdvice =
     "; or plan with MSTC and Balanced pieces on (--planner mstc --param balanced=true), whose robots go "
     "past the others' starts to pieces of equal time";
