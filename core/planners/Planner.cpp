@@ -12,6 +12,7 @@
 #include "core/model/TurnTimeModel.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/AreaEdgeCheck.hpp"
+#include "core/planners/ClosedInStart.hpp"
 #include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "core/planners/PlanningRun.hpp"
@@ -187,6 +188,22 @@ std::string balanceSwitchAdvice(const PlannerDescription& planner) {
     return "set " + label + " on (" + planner.balanceSwitch + "=true) to cut pieces of equal time";
 }
 
+// "robot 2's start is closed in by the starts of robots 1 and 3: its region can hold no more than 100 m2; "
+// for each robot short of work whose start is, where regions hold their starts.
+std::string closedInStartsText(const Plan& plan, const PlannerDescription& planner,
+                               const std::vector<int>& shortOfWork) {
+    if (!planner.promises.regionsConnected)
+        return {};
+    std::string text;
+    for (const int robot : shortOfWork)
+        if (const auto closed = closedInStart(plan, robot, 0.5 * plan.metrics.lowerBoundSeconds))
+            text += "robot " + std::to_string(robot + 1) + "'s start is closed in by the " +
+                    (closed->closedBy.size() == 1 ? "start of " : "starts of ") +
+                    robotList(closed->closedBy) + ": its region can hold no more than " +
+                    formatArea(closed->areaSquareMetres) + "; ";
+    return text;
+}
+
 // Where every region holds its robot's start, robots set off from one base wall each other in. MSTC's
 // balanced pieces need no start inside: on the crowded-start maps of bench/crowded-starts.sh, 1.03-1.13
 // times the bound where MCPP-MLCT warns at 1.08-2.35.
@@ -199,8 +216,9 @@ constexpr const char* passingOtherStartsAdvice =
 // that evens its pieces out (PlannerDescription::balanceSwitch) and it is off, the reason it gives. Empty
 // where there are none, and on maps whose starts lie in several parts (the bound is then one part's share,
 // not every robot's).
-std::string unevenPlanMessage(const PlanMetrics& metrics, const PlannerDescription& planner,
-                              const ParameterValues& parameters) {
+std::string unevenPlanMessage(const Plan& plan, const PlannerDescription& planner) {
+    const PlanMetrics& metrics = plan.metrics;
+    const ParameterValues& parameters = plan.parameters;
     constexpr double noticeableRatio = 1.05;
     if (!(metrics.ratio > noticeableRatio) || !(metrics.lowerBoundSeconds > 0.0) ||
         !metrics.confinedRobots.empty())
@@ -220,7 +238,7 @@ std::string unevenPlanMessage(const PlanMetrics& metrics, const PlannerDescripti
     if (!planner.balanceSwitch.empty() && parameters.has(planner.balanceSwitch) &&
         !parameters.boolean(planner.balanceSwitch))
         return uneven + planner.unbalancedBecause + "; " + balanceSwitchAdvice(planner);
-    return uneven +
+    return uneven + closedInStartsText(plan, planner, shortOfWork) +
            (planner.fliesOnBatteries()
                 ? "a short battery, or a slow robot's, leaves a robot little within reach of its charger, "
                   "and "
@@ -484,7 +502,7 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     // Nor is a plan that divides the work at one speed between robots of their own (own-speeds-unbalanced),
     // or one that evens out time in the field, where paths of different lengths end together.
     const bool unevenSpeeds = !plan.robotSpeeds.empty() && !planner.balancesOwnSpeeds;
-    if (const std::string uneven = unevenPlanMessage(plan.metrics, planner, plan.parameters);
+    if (const std::string uneven = unevenPlanMessage(plan, planner);
         !uneven.empty() && !playsEvents && !unevenSpeeds && !fieldWeighed)
         planningRun.addIssue(IssueSeverity::Warning, "uneven-plan", uneven);
     progress.report("done", 1.0);

@@ -1,5 +1,6 @@
 #include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningError.hpp"
+#include "core/planners/ClosedInStart.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "tests/support/PlanInvariants.hpp"
@@ -272,6 +273,17 @@ class MlctPlannerTest : public QObject {
         QCOMPARE(uneven->severity, IssueSeverity::Warning);
         QVERIFY2(uneven->message.rfind("robot 1 covers less than half of a fair share", 0) == 0,
                  uneven->message.c_str());
+        // Only its start cell lies behind the others' starts, and the warning says so.
+        QVERIFY2(uneven->message.find(
+                     "robot 1's start is closed in by the starts of robots 2 and 3: its region "
+                     "can hold no more than " +
+                     formatArea(plan.cells.cell(plan.regions.startCell[0]).passableAreaSquareMetres) + ";") !=
+                     std::string::npos,
+                 uneven->message.c_str());
+        const auto closed = closedInStart(plan, 0, 0.5 * plan.metrics.lowerBoundSeconds);
+        QVERIFY(closed.has_value());
+        QCOMPARE(closed->closedBy, (std::vector<int>{1, 2}));
+        QVERIFY(!closedInStart(plan, 1, 0.5 * plan.metrics.lowerBoundSeconds).has_value());
         // The advice it gives holds: MSTC's balanced pieces need no start inside, and even the plan out.
         QVERIFY2(uneven->message.find("--planner mstc --param balanced=true") != std::string::npos,
                  uneven->message.c_str());
