@@ -17,6 +17,7 @@
 #include "io/ExportCatalogue.hpp"
 #include "io/MissionScale.hpp"
 #include "io/PlanExport.hpp"
+#include "io/PointsInDegrees.hpp"
 #include "render/ComparisonSheet.hpp"
 #include "render/PlanImageWriter.hpp"
 
@@ -166,7 +167,7 @@ void BatchRunner::execute() {
     problem = PlanningProblem{};
     returnFreedMemory();
     for (const auto& warning : plan.warnings())
-        warn(warning + io::robotsNamedIn(warning, robotNamesForMessages(), false));
+        warn(planMessage(warning));
     writeOutputs(plan, options_.outputDirectory);
     printSummary(plan);
 }
@@ -367,6 +368,11 @@ void BatchRunner::checkOutputFolder() const {
 // Messages number robots from 1, as the --start flags do: robots given by those flags need no names.
 std::vector<std::string> BatchRunner::robotNamesForMessages() const {
     return options_.missionFromFlags() ? std::vector<std::string>{} : io::robotNames(mission_);
+}
+
+std::string BatchRunner::planMessage(const std::string& message) const {
+    return io::withPointsInDegrees(message, raster_.georeference, raster_.grid) +
+           io::robotsNamedIn(message, robotNamesForMessages(), false);
 }
 
 Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
@@ -756,7 +762,7 @@ void BatchRunner::sayMissionNotes(const Plan& plan, const PlanningProblem& probl
         if (issue.severity == IssueSeverity::Information &&
             (isOfTheMission(issue, problem) || issue.code == "take-off-outside" ||
              issue.code == "confined-robot"))
-            note(issue.message + io::robotsNamedIn(issue.message, robotNamesForMessages(), false));
+            note(planMessage(issue.message));
 }
 
 // A compared plan's warnings under its planner's name; those of the mission itself (the problem's notes),
@@ -770,7 +776,7 @@ void BatchRunner::sayComparedPlanWarnings(const Plan& plan, const PlanningProble
         if (ofTheMission && !saidOnce.insert(issue.message).second)
             continue;
         const std::string prefix = std::exchange(plannerPrefix_, ofTheMission ? "" : plannerPrefix_);
-        warn(issue.message + io::robotsNamedIn(issue.message, robotNamesForMessages(), false));
+        warn(planMessage(issue.message));
         plannerPrefix_ = prefix;
     }
 }

@@ -41,6 +41,8 @@ class BatchRunner {
     void checkVehicles() const;
     // The robots' names that messages numbering robots add; none for robots given by --start flags.
     [[nodiscard]] std::vector<std::string> robotNamesForMessages() const;
+    // A plan's message as batch mode says it: its map points with their degrees, its robots named.
+    [[nodiscard]] std::string planMessage(const std::string& message) const;
     void addEventFlags();
     void loadRaster();
     // The mission's part of the problem, the same whatever the planner: classes_, starts_ and chargers_.

@@ -14,6 +14,7 @@
 #include "io/MissionScale.hpp"
 #include "io/PlanExport.hpp"
 #include "io/PlanFile.hpp"
+#include "io/PointsInDegrees.hpp"
 #include "render/PlanImageWriter.hpp"
 #include "render/PlanLegend.hpp"
 #include "ui/ApplicationResources.hpp"
@@ -162,10 +163,13 @@ QString formatDegrees(double value, QChar positive, QChar negative) {
 }
 
 // Warnings come from io as clauses ("no CRS: ..."); in the window they follow other sentences.
-// A plan's message as the messages panel keeps it: a sentence, a robot's name as written and the robots it
-// numbers named.
-QString loggedText(const std::string& message, const std::vector<std::string>& robotNames) {
-    QString text = QString::fromStdString(message + io::robotsNamedIn(message, robotNames, false));
+// A plan's message as the messages panel keeps it: a sentence, a robot's name as written, the robots it
+// numbers named and the map points it names with their degrees (on a map of a CRS).
+QString loggedText(const std::string& message, const std::vector<std::string>& robotNames,
+                   const io::LoadedRaster* raster) {
+    const std::string placed =
+        raster != nullptr ? io::withPointsInDegrees(message, raster->georeference, raster->grid) : message;
+    QString text = QString::fromStdString(placed + io::robotsNamedIn(message, robotNames, false));
     if (!text.endsWith(QLatin1Char('.')))
         text += QLatin1Char('.');
     return text;
@@ -972,7 +976,7 @@ void MainWindow::updateResults() {
     QStringList names;
     for (const auto& robot : document_->robots())
         names << QString::fromStdString(robot.name);
-    resultsPanel_->showPlan(document_->plan(), names);
+    resultsPanel_->showPlan(document_->plan(), names, document_->raster());
     resultsPanel_->setStale(document_->planStale());
     sizeWaypointFiles();
 }
@@ -1824,7 +1828,7 @@ void MainWindow::logPlanIssues(const Plan& plan) {
     const std::vector<std::string> names = robotNames();
     for (const PlanIssue& issue : plan.issues)
         messageLog_->add((issue.severity == IssueSeverity::Information ? tr("Note: %1") : tr("Warning: %1"))
-                             .arg(loggedText(issue.message, names)));
+                             .arg(loggedText(issue.message, names, document_->raster())));
 }
 
 // Each compared plan's warnings under its planner's name; one that several plans carry (the mission's own,
@@ -1847,7 +1851,7 @@ void MainWindow::logComparedWarnings() {
             const bool shared = plansCarrying[warning] > 1;
             if (shared && !saidOnce.insert(warning).second)
                 continue;
-            QString text = loggedText(warning, names);
+            QString text = loggedText(warning, names, document_->raster());
             if (!shared)
                 text = QString::fromStdString(comparison_.rows[row].planner) + QStringLiteral(": ") + text;
             messageLog_->add(tr("Warning: %1").arg(text));

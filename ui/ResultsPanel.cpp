@@ -7,6 +7,7 @@
 #include "core/model/TimelineLayer.hpp"
 #include "core/model/TimelineText.hpp"
 #include "core/planners/UncoveredLand.hpp"
+#include "io/PointsInDegrees.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QBarCategoryAxis>
@@ -294,7 +295,7 @@ void ResultsPanel::setStale(bool stale) {
     staleLabel_->setVisible(stale);
 }
 
-void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
+void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io::LoadedRaster* raster) {
     table_->setSortingEnabled(false);
     table_->setRowCount(0);
     if (plan == nullptr) {
@@ -392,7 +393,9 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names) {
         timeline_->setText(QString::fromStdString(timelineSentence(timeline->summary())));
     QStringList warnings;
     for (const auto& warning : plan->warnings())
-        warnings << QString::fromStdString(warning);
+        warnings << QString::fromStdString(
+            raster != nullptr ? io::withPointsInDegrees(warning, raster->georeference, raster->grid)
+                              : warning);
     // Several warnings, each wrapped over lines, would read as one paragraph without a mark before each.
     if (warnings.size() > 1)
         for (QString& warning : warnings)

@@ -2,6 +2,7 @@
 
 #include "core/model/Plan.hpp"
 #include "io/AutopilotMission.hpp"
+#include "io/LoadedRaster.hpp"
 #include "io/VehicleSettings.hpp"
 
 #include <QStringList>
@@ -24,8 +25,9 @@ class ResultsPanel : public QWidget {
 
   public:
     explicit ResultsPanel(QWidget* parent = nullptr);
-    // names: robot names by index (may be shorter than the plan's robots).
-    void showPlan(const Plan* plan, const QStringList& names);
+    // names: robot names by index (may be shorter than the plan's robots); raster: the map planned, whose
+    // CRS gives the points the warnings name their degrees.
+    void showPlan(const Plan* plan, const QStringList& names, const io::LoadedRaster* raster = nullptr);
     void setStale(bool stale);
     // How big each robot's waypoint files come out with its vehicle's item limit (vehicles: by robot); worked
     // out off the window's thread after each plan, so shown when ready.

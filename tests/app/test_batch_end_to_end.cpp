@@ -1276,8 +1276,10 @@ void TestBatchEndToEnd::anAircraftOnTheLakeTakesOffThere() {
     checkOutputs(out, 3, run, QStringLiteral("mcpp-mlct"));
     if (QTest::currentTestFailed())
         return;
+    // The degrees are gdaltransform's (-s_srs EPSG:32633 -t_srs EPSG:4326) to 9 digits.
     QVERIFY2(run.standardOutput.contains(QStringLiteral(
-                 "robot 2 takes off at its start (431288.75, 5301138.75), which is on an obstacle: class 4 "
+                 "robot 2 takes off at its start (431288.75, 5301138.75; longitude 14.0813625, latitude "
+                 "47.8599126), which is on an obstacle: class 4 "
                  "(Lake), which robots cannot cross; it flies ")) &&
                  run.standardOutput.contains(QStringLiteral("(robot 2 is shrubland)")),
              qPrintable(run.standardOutput));

@@ -1,0 +1,74 @@
+// Map points in messages given their longitude and latitude: those on the map or near it, read back to the
+// same point; pairs of numbers that are not the map's points, and maps without a CRS, left as they are.
+#include "io/PointsInDegrees.hpp"
+
+#include <QtTest>
+#include <regex>
+
+using namespace mcpp;
+
+namespace {
+
+// 49 x 49 pixels of 10 m in WGS 84 / UTM zone 33N, north-west corner at (431000, 5400000).
+ClassGrid utmGrid() {
+    ClassGrid grid;
+    grid.columns = 49;
+    grid.rows = 49;
+    grid.originX = 431000.0;
+    grid.originY = 5400000.0;
+    grid.pixelWidth = 10.0;
+    grid.pixelHeight = 10.0;
+    grid.values.assign(49 * 49, 1);
+    grid.outside.assign(49 * 49, 0);
+    return grid;
+}
+
+io::GeoReference utm33() {
+    const auto georeference = io::GeoReference::fromDefinition("EPSG:32633");
+    if (!georeference)
+        qFatal("EPSG:32633 is not known");
+    return georeference.value();
+}
+
+} // namespace
+
+class TestPointsInDegrees : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void mapPointsGetDegreesThatLeadBack() {
+        const io::GeoReference georeference = utm33();
+        const std::string message =
+            "land cut off (in 3 pieces, the largest (300 m2) round (431385, 5399995)); "
+            "robot 2 takes off at (431005.5, 5399515.25)";
+        const std::string placed = io::withPointsInDegrees(message, georeference, utmGrid());
+        const std::regex withDegrees(
+            R"(\((-?[0-9.]+), (-?[0-9.]+); longitude (-?[0-9.]+), latitude (-?[0-9.]+)\))");
+        int found = 0;
+        for (auto match = std::sregex_iterator(placed.begin(), placed.end(), withDegrees);
+             match != std::sregex_iterator(); ++match, ++found) {
+            const MapPoint given{std::stod((*match)[1].str()), std::stod((*match)[2].str())};
+            const auto back =
+                georeference.fromWgs84({std::stod((*match)[3].str()), std::stod((*match)[4].str())});
+            QVERIFY(back.ok());
+            QVERIFY2(std::hypot(back.value().x - given.x, back.value().y - given.y) < 0.05, placed.c_str());
+        }
+        QCOMPARE(found, 2);
+        QVERIFY2(placed.find("(300 m2)") != std::string::npos, placed.c_str());
+        QVERIFY2(placed.rfind(
+                     "land cut off (in 3 pieces, the largest (300 m2) round (431385, 5399995; longitude 14.",
+                     0) == 0,
+                 placed.c_str());
+    }
+
+    void otherPairsAndMapsWithoutCrsAreLeftAlone() {
+        const std::string farOff = "ratios (1, 2) and (431385, 5399995)";
+        const std::string placed = io::withPointsInDegrees(farOff, utm33(), utmGrid());
+        QVERIFY2(placed.find("(1, 2)") != std::string::npos, placed.c_str());
+        QVERIFY2(placed.find("(431385, 5399995; longitude") != std::string::npos, placed.c_str());
+        QCOMPARE(io::withPointsInDegrees(farOff, io::GeoReference(), utmGrid()), farOff);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestPointsInDegrees)
+#include "test_points_in_degrees.moc"
