@@ -206,7 +206,7 @@ std::string closedInStartsText(const Plan& plan, const PlannerDescription& plann
 
 // Where every region holds its robot's start, robots set off from one base wall each other in. MSTC's
 // balanced pieces need no start inside: on the crowded-start maps of bench/crowded-starts.sh, 1.03-1.13
-// times the bound where MCPP-MLCT warns at 1.08-2.35.
+// times the bound where MCPP-MLCT warns at 1.08-2.09.
 constexpr const char* passingOtherStartsAdvice =
     "; or plan with MSTC and Balanced pieces on (--planner mstc --param balanced=true), whose robots go "
     "past the others' starts to pieces of equal time";
