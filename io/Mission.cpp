@@ -931,14 +931,14 @@ void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSett
     if (!low.empty())
         notes.push_back({IssueSeverity::Warning, "altitude-too-low",
                          "aircraft flying lower than " + formatQuantity(lowestSurveyAltitudeMetres, 4) +
-                             " m" + " above home, into trees and roofs (" +
+                             " m above home, into trees and roofs (" +
                              namedAltitudes(mission, vehicles, low) +
                              "): give a survey altitude (--altitude, exports.altitude_m)"});
     if (!high.empty())
         notes.push_back(
             {IssueSeverity::Warning, "altitude-above-120m",
-             "aircraft flying higher than " + formatQuantity(highestAltitudeWithoutPermitMetres, 4) + " m" +
-                 " (400 ft) above home, above what most countries allow drones without a permit (" +
+             "aircraft flying higher than " + formatQuantity(highestAltitudeWithoutPermitMetres, 4) +
+                 " m (400 ft) above home, above what most countries allow drones without a permit (" +
                  namedAltitudes(mission, vehicles, high) + ")"});
 }
 

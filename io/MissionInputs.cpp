@@ -9,6 +9,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/AreaOfInterest.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/PointsInDegrees.hpp"
 #include "io/internal/ClassTablePresets.hpp"
 
 #include <cmath>
@@ -275,9 +276,7 @@ std::string startName(const LoadedRaster& raster, MapPoint start) {
     const auto lonLat = raster.georeference.toWgs84(start);
     if (!lonLat)
         return planning;
-    return planning.substr(0, planning.size() - 1) + "; longitude " +
-           formatQuantity(lonLat.value().longitude, 9) + ", latitude " +
-           formatQuantity(lonLat.value().latitude, 9) + ")";
+    return planning.substr(0, planning.size() - 1) + "; " + degreesText(lonLat.value()) + ")";
 }
 
 // "let the planner start the robot from the nearest free cell (...)", the setting in the caller's terms.

@@ -18,6 +18,11 @@ bool nearTheMap(const ClassGrid& grid, MapPoint point) {
 
 } // namespace
 
+std::string degreesText(LonLat lonLat) {
+    return "longitude " + formatQuantity(lonLat.longitude, 9) + ", latitude " +
+           formatQuantity(lonLat.latitude, 9);
+}
+
 std::string withPointsInDegrees(const std::string& message, const GeoReference& georeference,
                                 const ClassGrid& grid) {
     if (!georeference.hasCrs() || message.find('(') == std::string::npos)
@@ -34,9 +39,7 @@ std::string withPointsInDegrees(const std::string& message, const GeoReference& 
         if (!degrees)
             continue;
         const auto closing = static_cast<std::size_t>(match->position(0) + match->length(0) - 1);
-        result += message.substr(copied, closing - copied) + "; longitude " +
-                  formatQuantity(degrees.value().longitude, 9) + ", latitude " +
-                  formatQuantity(degrees.value().latitude, 9);
+        result += message.substr(copied, closing - copied) + "; " + degreesText(degrees.value());
         copied = closing;
     }
     return result + message.substr(copied);

@@ -1,6 +1,7 @@
 // Map points in messages given their longitude and latitude: those on the map or near it, read back to the
 // same point; pairs of numbers that are not the map's points, and maps without a CRS, left as they are.
 #include "io/PointsInDegrees.hpp"
+#include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
 #include <regex>
@@ -11,16 +12,7 @@ namespace {
 
 // 49 x 49 pixels of 10 m in WGS 84 / UTM zone 33N, north-west corner at (431000, 5400000).
 ClassGrid utmGrid() {
-    ClassGrid grid;
-    grid.columns = 49;
-    grid.rows = 49;
-    grid.originX = 431000.0;
-    grid.originY = 5400000.0;
-    grid.pixelWidth = 10.0;
-    grid.pixelHeight = 10.0;
-    grid.values.assign(49 * 49, 1);
-    grid.outside.assign(49 * 49, 0);
-    return grid;
+    return test::filledGrid(49, 49, 431000.0, 5400000.0, 10.0, 1);
 }
 
 io::GeoReference utm33() {
