@@ -391,11 +391,15 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
     summary_->setRowVisible(timeline_, timeline != nullptr);
     if (timeline != nullptr)
         timeline_->setText(QString::fromStdString(timelineSentence(timeline->summary())));
+    // Map points in metres mean little to most users: their degrees too, where the map has a CRS.
+    const auto placed = [raster](const std::string& message) {
+        return QString::fromStdString(
+            raster != nullptr ? io::withPointsInDegrees(message, raster->georeference, raster->grid)
+                              : message);
+    };
     QStringList warnings;
     for (const auto& warning : plan->warnings())
-        warnings << QString::fromStdString(
-            raster != nullptr ? io::withPointsInDegrees(warning, raster->georeference, raster->grid)
-                              : warning);
+        warnings << placed(warning);
     // Several warnings, each wrapped over lines, would read as one paragraph without a mark before each.
     if (warnings.size() > 1)
         for (QString& warning : warnings)
@@ -404,7 +408,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
     QStringList notes;
     for (const PlanIssue& issue : plan->issues)
         if (issue.severity == IssueSeverity::Information)
-            notes << QString::fromStdString(issue.message);
+            notes << placed(issue.message);
     if (notes.size() > 1)
         for (QString& note : notes)
             note.prepend(QStringLiteral("• "));

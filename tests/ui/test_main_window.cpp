@@ -273,6 +273,16 @@ class TestMainWindow : public QObject {
         QVERIFY(notes != nullptr);
         QVERIFY(!notes->isHidden());
         QVERIFY2(notes->text().contains(QStringLiteral("cruises at 9 m/s")), qPrintable(notes->text()));
+        // With the map's CRS, a point a note names gets its degrees, as the warnings' points do.
+        io::LoadedRaster raster;
+        raster.georeference = io::GeoReference::fromDefinition("EPSG:32633").value();
+        raster.grid = test::filledGrid(49, 49, 431000.0, 5400000.0, 10.0, 1);
+        problem.notes.push_back(
+            {IssueSeverity::Information, "take-off-outside", "takes off at (431385, 5399995)"});
+        const Plan placed = makePlanner("mcpp-mlct")->plan(problem, {});
+        panel.showPlan(&placed, {}, &raster);
+        QVERIFY2(notes->text().contains(QStringLiteral("(431385, 5399995; longitude 14.06")),
+                 qPrintable(notes->text()));
         problem.notes.clear();
         const Plan plain = makePlanner("mcpp-mlct")->plan(problem, {});
         panel.showPlan(&plain, {});
