@@ -935,11 +935,12 @@ void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSett
                              namedAltitudes(mission, vehicles, low) +
                              "): give a survey altitude (--altitude, exports.altitude_m)"});
     if (!high.empty())
-        notes.push_back(
-            {IssueSeverity::Warning, "altitude-above-120m",
-             "aircraft flying higher than " + formatQuantity(highestAltitudeWithoutPermitMetres, 4) +
-                 " m (400 ft) above home, above what most countries allow drones without a permit (" +
-                 namedAltitudes(mission, vehicles, high) + ")"});
+        notes.push_back({IssueSeverity::Warning, "altitude-above-120m",
+                         "aircraft flying higher than " +
+                             formatQuantity(highestAltitudeWithoutPermitMetres, 4) + " m (" +
+                             std::to_string(highestAltitudeWithoutPermitFeet) +
+                             " ft) above home, above what most countries allow drones without a permit (" +
+                             namedAltitudes(mission, vehicles, high) + ")"});
 }
 
 // " (20 min)": the battery_s the mission gives the planner, or its default.

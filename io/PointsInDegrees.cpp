@@ -1,9 +1,10 @@
 #include "io/PointsInDegrees.hpp"
 
-#include "core/model/HumanUnits.hpp"
-
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
 #include <regex>
+#include <sstream>
 
 namespace mcpp::io {
 
@@ -16,11 +17,21 @@ bool nearTheMap(const ClassGrid& grid, MapPoint point) {
            point.y >= grid.minY() - margin && point.y <= grid.originY + margin;
 }
 
+// Seven decimals, about a centimetre, whatever the size of the degrees; trailing zeros dropped.
+std::string sevenDecimals(double degrees) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(7) << std::round(degrees * 1e7) / 1e7 + 0.0; // never "-0"
+    std::string digits = text.str();
+    digits.erase(digits.find_last_not_of('0') + 1);
+    if (digits.back() == '.')
+        digits.pop_back();
+    return digits;
+}
+
 } // namespace
 
 std::string degreesText(LonLat lonLat) {
-    return "longitude " + formatQuantity(lonLat.longitude, 9) + ", latitude " +
-           formatQuantity(lonLat.latitude, 9);
+    return "longitude " + sevenDecimals(lonLat.longitude) + ", latitude " + sevenDecimals(lonLat.latitude);
 }
 
 std::string withPointsInDegrees(const std::string& message, const GeoReference& georeference,

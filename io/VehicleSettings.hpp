@@ -110,6 +110,8 @@ constexpr double descentMetresPerSecond = 1.5;
 // countries (the EU's open category; 400 ft in the US).
 constexpr double lowestSurveyAltitudeMetres = 5.0;
 constexpr double highestAltitudeWithoutPermitMetres = 120.0;
+// The same limit where it is set in feet (the US): 400 ft, not 120 m converted.
+constexpr int highestAltitudeWithoutPermitFeet = 400;
 // Whether the vehicle is an aircraft flying below or above those.
 [[nodiscard]] constexpr bool fliesTooLow(const VehicleSettings& vehicle) {
     return isAircraft(vehicle.type) && vehicle.altitudeMetres < lowestSurveyAltitudeMetres;

@@ -42,7 +42,7 @@ struct LegendItem {
 enum class LegendSectionKind { LandCover, Robots, OnTheMap };
 
 struct LegendSection {
-    LegendSectionKind kind = LegendSectionKind::OnTheMap;
+    LegendSectionKind kind; // no default: every section is made saying what it lists
     QString title;
     std::vector<LegendItem> items;
 };

@@ -301,9 +301,10 @@ void VehicleSettingsDialog::checkLimits() {
                         .arg(io::lowestSurveyAltitudeMetres)
                         .arg(namedOnce(low).join(QStringLiteral(", ")));
     if (!high.empty())
-        cautions << tr("Above %1 m (400 ft) above home, higher than most countries let drones fly without a "
-                       "permit: %2.")
+        cautions << tr("Above %1 m (%2 ft) above home, higher than most countries let drones fly without a "
+                       "permit: %3.")
                         .arg(io::highestAltitudeWithoutPermitMetres)
+                        .arg(io::highestAltitudeWithoutPermitFeet)
                         .arg(namedOnce(high).join(QStringLiteral(", ")));
     caution_->setText(cautions.join(QLatin1Char(' ')));
     caution_->setVisible(!cautions.isEmpty());

@@ -179,37 +179,63 @@ std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
            (noGoOnly ? "the no-go zone " + margin + " larger" : "the area " + margin + " inside the fence");
 }
 
-// "set Balanced pieces on (balanced=true)": the planner's switch that evens its pieces out.
-std::string balanceSwitchAdvice(const PlannerDescription& planner) {
-    std::string label = planner.balanceSwitch;
+// "Balanced pieces": the label of the planner's switch that evens its pieces out.
+std::string switchLabel(const PlannerDescription& planner) {
     for (const ParameterSpec& spec : planner.parameters)
         if (spec.key == planner.balanceSwitch)
-            label = spec.label;
-    return "set " + label + " on (" + planner.balanceSwitch + "=true) to cut pieces of equal time";
+            return spec.label;
+    return planner.balanceSwitch;
 }
 
-// "robot 2's start is closed in by the starts of robots 1 and 3: its region can hold no more than 100 m2; "
-// for each robot short of work whose start is, where regions hold their starts.
+// "set Balanced pieces on (balanced=true)": the planner's switch that evens its pieces out.
+std::string balanceSwitchAdvice(const PlannerDescription& planner) {
+    return "set " + switchLabel(planner) + " on (" + planner.balanceSwitch +
+           "=true) to cut pieces of equal time";
+}
+
+// "robot 2's start is closed in by the starts of robots 1 and 3, so its region can hold no more than
+// 100 m2" for each robot short of work whose start is, where regions hold their starts. A robot of its own
+// speed is timed at it: its share of the bound is in cover time over its pace.
 std::string closedInStartsText(const Plan& plan, const PlannerDescription& planner,
                                const std::vector<int>& shortOfWork) {
     if (!planner.promises.regionsConnected)
         return {};
+    const std::vector<double> paces = robotPaces(plan.cells, plan.robotSpeeds, plan.paths.size());
+    constexpr int described = 3; // the others are counted, so that the advice after them is read
     std::string text;
-    for (const int robot : shortOfWork)
-        if (const auto closed = closedInStart(plan, robot, 0.5 * plan.metrics.lowerBoundSeconds))
-            text += "robot " + std::to_string(robot + 1) + "'s start is closed in by the " +
-                    (closed->closedBy.size() == 1 ? "start of " : "starts of ") +
-                    robotList(closed->closedBy) + ": its region can hold no more than " +
-                    formatArea(closed->areaSquareMetres) + "; ";
+    int closedIn = 0;
+    for (const int robot : shortOfWork) {
+        const double enough = 0.5 * plan.metrics.lowerBoundSeconds / paceOf(paces, std::size_t(robot));
+        const auto closed = closedInStart(plan, robot, enough);
+        if (!closed || ++closedIn > described)
+            continue;
+        text += "robot " + std::to_string(robot + 1) + "'s start is closed in by the " +
+                (closed->closedBy.size() == 1 ? "start of " : "starts of ") + robotList(closed->closedBy) +
+                ", so its region can hold no more than " + formatArea(closed->areaSquareMetres) + "; ";
+    }
+    if (closedIn > described)
+        text += closedIn - described == 1
+                    ? "so is one more robot's start; "
+                    : "so are " + std::to_string(closedIn - described) + " more robots' starts; ";
     return text;
 }
 
-// Where every region holds its robot's start, robots set off from one base wall each other in. MSTC's
-// balanced pieces need no start inside: on the crowded-start maps of bench/crowded-starts.sh, 1.03-1.13
-// times the bound where MCPP-MLCT warns at 1.08-2.09.
-constexpr const char* passingOtherStartsAdvice =
-    "; or plan with MSTC and Balanced pieces on (--planner mstc --param balanced=true), whose robots go "
-    "past the others' starts to pieces of equal time";
+// Where every region holds its robot's start, robots set off from one base wall each other in. A planner
+// whose switch cuts pieces of equal time needs no start inside them (MSTC's balanced pieces: on the
+// crowded-start maps of bench/crowded-starts.sh, 1.03-1.13 times the bound where MCPP-MLCT warns at
+// 1.08-2.09). Only planners that balance robots of their own speeds are offered for a fleet of them.
+std::string passingOtherStartsAdvice(const Plan& plan) {
+    std::string advice;
+    for (const PlannerDescription& other : plannerDescriptions()) {
+        if (other.promises.regionsConnected || other.balanceSwitch.empty() ||
+            (!plan.robotSpeeds.empty() && !other.balancesOwnSpeeds))
+            continue;
+        advice += "; or plan with " + other.label + " and " + switchLabel(other) + " on (planner " +
+                  other.name + ", " + other.balanceSwitch +
+                  "=true), whose robots go past the others' starts to pieces of equal time";
+    }
+    return advice;
+}
 
 // Robots left with less than half a fair share where the longest path is well above the bound: most often
 // starts so close together that the others' regions wall theirs in, or, where the planner has a switch
@@ -246,7 +272,7 @@ std::string unevenPlanMessage(const Plan& plan, const PlannerDescription& planne
                   "the work, or starts spread over the area, even the plan out"
                 : "starts close together leave robots walled in by the others' regions; spread over the "
                   "area, they even the plan out" +
-                      std::string(planner.promises.regionsConnected ? passingOtherStartsAdvice : ""));
+                      (planner.promises.regionsConnected ? passingOtherStartsAdvice(plan) : ""));
 }
 
 // Land no robot covers, and why. Land a planner on batteries leaves beyond their reach is warned of where

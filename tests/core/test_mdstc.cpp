@@ -95,7 +95,7 @@ class MdstcTest : public QObject {
 
     // Twenty robots at random cells of a 49 x 49 grid grow uneven regions, which are then evened out: a
     // request to stop reaches that evening-out (on a large map it takes long), and without one the
-    // regions come out whole with every reachable cell claimed.
+    // regions come out with each start in its robot's region and every cell reachable from a start claimed.
     void theFirstDivisionStopsWhenCancelled() {
         const PlanningProblem problem = test::obstacleGridProblem(49, 20, 21);
         const CellGraph cells = test::cellPerPixelGraph(problem);
@@ -116,6 +116,19 @@ class MdstcTest : public QObject {
         for (std::size_t robot = 0; robot < startCells.size(); ++robot)
             QCOMPARE(division.robotOfCell[static_cast<std::size_t>(startCells[robot])],
                      static_cast<int>(robot));
+        std::vector<int> reachable = startCells;
+        std::vector<bool> seen(cells.size(), false);
+        for (const int start : startCells)
+            seen[static_cast<std::size_t>(start)] = true;
+        for (std::size_t head = 0; head < reachable.size(); ++head) {
+            QVERIFY(division.robotOfCell[static_cast<std::size_t>(reachable[head])] >= 0);
+            for (const int next : cells.neighbours(reachable[head]))
+                if (!seen[static_cast<std::size_t>(next)]) {
+                    seen[static_cast<std::size_t>(next)] = true;
+                    reachable.push_back(next);
+                }
+        }
+        QVERIFY(reachable.size() > cells.size() / 2);
     }
 
     // Without events, the plan holds the shared invariants (every free sub-cell passed, times as measured),

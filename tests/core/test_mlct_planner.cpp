@@ -275,7 +275,7 @@ class MlctPlannerTest : public QObject {
                  uneven->message.c_str());
         // Only its start cell lies behind the others' starts, and the warning says so.
         QVERIFY2(uneven->message.find(
-                     "robot 1's start is closed in by the starts of robots 2 and 3: its region "
+                     "robot 1's start is closed in by the starts of robots 2 and 3, so its region "
                      "can hold no more than " +
                      formatArea(plan.cells.cell(plan.regions.startCell[0]).passableAreaSquareMetres) + ";") !=
                      std::string::npos,
@@ -285,8 +285,10 @@ class MlctPlannerTest : public QObject {
         QCOMPARE(closed->closedBy, (std::vector<int>{1, 2}));
         QVERIFY(!closedInStart(plan, 1, 0.5 * plan.metrics.lowerBoundSeconds).has_value());
         // The advice it gives holds: MSTC's balanced pieces need no start inside, and even the plan out.
-        QVERIFY2(uneven->message.find("--planner mstc --param balanced=true") != std::string::npos,
-                 uneven->message.c_str());
+        QVERIFY2(
+            uneven->message.find("or plan with MSTC and Balanced pieces on (planner mstc, balanced=true)") !=
+                std::string::npos,
+            uneven->message.c_str());
         auto advised = problem;
         advised.planner = defaultPlannerChoice("mstc");
         advised.planner.parameters.set("balanced", true);
@@ -294,6 +296,19 @@ class MlctPlannerTest : public QObject {
         QVERIFY2(followed.metrics.ratio < 1.1, std::to_string(followed.metrics.ratio).c_str());
         QVERIFY(std::none_of(followed.issues.begin(), followed.issues.end(),
                              [](const PlanIssue& issue) { return issue.code == "uneven-plan"; }));
+        // A fleet of its own speeds: MSTC would divide the work as if all drove alike, so it is not offered;
+        // the walled-in robot, at its own speed, is still named.
+        auto ownSpeeds = problem;
+        ownSpeeds.robotSpeeds = {0.5, 2.0, 1.0};
+        const Plan mixed = MlctPlanner{}.plan(ownSpeeds, {});
+        const auto mixedUneven =
+            std::find_if(mixed.issues.begin(), mixed.issues.end(),
+                         [](const PlanIssue& issue) { return issue.code == "uneven-plan"; });
+        QVERIFY(mixedUneven != mixed.issues.end());
+        QVERIFY2(mixedUneven->message.find("robot 1's start is closed in by the starts of robots 2 and 3") !=
+                     std::string::npos,
+                 mixedUneven->message.c_str());
+        QVERIFY2(mixedUneven->message.find("MSTC") == std::string::npos, mixedUneven->message.c_str());
         const Plan balanced = MlctPlanner{}.plan(lakeProblem(), {});
         QVERIFY(std::none_of(balanced.issues.begin(), balanced.issues.end(),
                              [](const PlanIssue& issue) { return issue.code == "uneven-plan"; }));

@@ -330,11 +330,16 @@ class MissionFilesTest : public QObject {
         QCOMPARE(altitudes.notes[1].code, std::string("altitude-above-120m"));
         QVERIFY2(altitudes.notes[1].message.find("(beta 150 m)") != std::string::npos,
                  altitudes.notes[1].message.c_str());
+        QVERIFY2(altitudes.notes[1].message.find("higher than 120 m (400 ft) above home") !=
+                     std::string::npos,
+                 altitudes.notes[1].message.c_str());
         mission.robots[1].vehicle.altitudeMetres = 2.0;
         PlanningProblem low = problem;
         applyRobotSettings(mission, low);
         QCOMPARE(low.notes.back().code, std::string("altitude-too-low"));
         QVERIFY2(low.notes.back().message.find("(beta 2 m)") != std::string::npos,
+                 low.notes.back().message.c_str());
+        QVERIFY2(low.notes.back().message.find("lower than 5 m above home") != std::string::npos,
                  low.notes.back().message.c_str());
     }
 

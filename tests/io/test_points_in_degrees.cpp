@@ -53,6 +53,14 @@ class TestPointsInDegrees : public QObject {
                  placed.c_str());
     }
 
+    // Seven decimals (about a centimetre) at any size of degrees, trailing zeros dropped.
+    void degreesHaveSevenDecimals() {
+        QCOMPARE(io::degreesText({-122.41941554, 7.5}), std::string("longitude -122.4194155, latitude 7.5"));
+        QCOMPARE(io::degreesText({0.123456789, -0.0000004}),
+                 std::string("longitude 0.1234568, latitude -0.0000004"));
+        QCOMPARE(io::degreesText({-0.00000001, 45.0}), std::string("longitude 0, latitude 45"));
+    }
+
     void otherPairsAndMapsWithoutCrsAreLeftAlone() {
         const std::string farOff = "ratios (1, 2) and (431385, 5399995)";
         const std::string placed = io::withPointsInDegrees(farOff, utm33(), utmGrid());

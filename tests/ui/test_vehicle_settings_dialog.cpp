@@ -136,7 +136,8 @@ class VehicleSettingsDialogTest : public QObject {
         cell<QDoubleSpinBox>(table, 2, 1)->setValue(500.0); // beta, a multirotor
         QLabel* caution = cautionShown();
         QVERIFY(caution != nullptr);
-        QVERIFY2(caution->text().contains(QStringLiteral("120 m")), qPrintable(caution->text()));
+        QVERIFY2(caution->text().contains(QStringLiteral("Above 120 m (400 ft) above home")),
+                 qPrintable(caution->text()));
         QVERIFY2(caution->text().contains(QStringLiteral("beta: 500 m")), qPrintable(caution->text()));
         QVERIFY(ok->isEnabled());
         cell<QDoubleSpinBox>(table, 2, 1)->setValue(2.0);
