@@ -156,12 +156,17 @@ void BatchRunner::execute() {
     checkOutputFolder();
     flushPending();
     started = std::chrono::steady_clock::now();
+    const bool lent = lendPixelsTo(problem);
     const Plan plan = [&] {
         const WriterWarmUp warmUp(raster_.georeference, workerThreads());
         return runPlanner(problem);
     }();
     processMilliseconds_.emplace_back("plan", millisecondsSince(started));
     sayMissionNotes(plan, problem);
+    if (lent) {
+        raster_.grid.values = std::move(problem.grid.values);
+        raster_.grid.outside = std::move(problem.grid.outside);
+    }
     // The writers need the plan and the raster as read, not the problem's copy of its classes; on a large
     // map the planner's freed memory and that copy are a few hundred megabytes the writers can reuse.
     problem = PlanningProblem{};
@@ -170,6 +175,18 @@ void BatchRunner::execute() {
         warn(planMessage(warning));
     writeOutputs(plan, options_.outputDirectory);
     printSummary(plan);
+}
+
+// While the planner works, the raster's pixels live only in the problem's copy of them, where the two are
+// the same (no class the table lacks was set outside): five bytes a pixel fewer at the planner's peak (160 MB
+// on a map of 32 M pixels). Messages meanwhile read the grid's size and place, which it keeps.
+bool BatchRunner::lendPixelsTo(const PlanningProblem& problem) {
+    ClassGrid& grid = raster_.grid;
+    if (grid.values.size() != problem.grid.values.size() || grid.outside != problem.grid.outside)
+        return false;
+    std::vector<std::int32_t>().swap(grid.values);
+    std::vector<std::uint8_t>().swap(grid.outside);
+    return true;
 }
 
 void BatchRunner::assembleMission() {

@@ -53,6 +53,9 @@ class BatchRunner {
     [[nodiscard]] bool someComparedPlannerSnapsStarts() const;
     void checkOutputFolder() const;
     Plan runPlanner(const PlanningProblem& problem);
+    // Frees the raster's pixels while the problem holds the same (returns whether it did); they are moved
+    // back from the problem after planning.
+    bool lendPixelsTo(const PlanningProblem& problem);
     // Every batch output on workerThreads() threads (set from --threads), report.json last.
     void writeOutputs(const Plan& plan, const std::string& folder);
     // partsWritten: the parts of each robot's autopilot files this run wrote, by robot and format key.

@@ -43,7 +43,7 @@ struct LoadedRaster {
 
 struct RasterLoadOptions {
     int band = 1;
-    std::int64_t pixelBudget = 16'000'000; // above this, read a coarser level and say so
+    std::int64_t pixelBudget = 32'000'000; // above this, read a coarser level and say so
 };
 
 [[nodiscard]] Result<LoadedRaster> loadLandCoverRaster(const std::string& path,

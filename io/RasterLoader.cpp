@@ -139,6 +139,22 @@ struct ReadPlan {
     bool coarsened = false;
 };
 
+// "21.9 million", "1.3 billion": a count a person reads at once.
+std::string countText(double count) {
+    return count >= 1e9 ? formatQuantity(count / 1e9, 3) + " billion"
+                        : formatQuantity(count / 1e6, 3) + " million";
+}
+
+// "4471 x 4887 pixels (21.9 million)".
+std::string pixelsText(int columns, int rows) {
+    return std::to_string(columns) + " x " + std::to_string(rows) + " pixels (" +
+           countText(static_cast<double>(columns) * rows) + ")";
+}
+
+std::string budgetText(std::int64_t budget) {
+    return "the budget of " + countText(static_cast<double>(budget)) + " pixels";
+}
+
 ReadPlan planRead(int columns, int rows, std::int64_t budget) {
     ReadPlan plan{columns, rows, columns, rows, false};
     const std::int64_t pixels = static_cast<std::int64_t>(columns) * rows;
@@ -404,11 +420,10 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
             if (!warped)
                 return RasterResult::failure(path + ": " + error);
             raster.coarsened = true;
-            raster.warnings.push_back("raster warps to " + std::to_string(coarse.sourceColumns) + " x " +
-                                      std::to_string(coarse.sourceRows) + " pixels, above the budget of " +
-                                      std::to_string(options.pixelBudget) + ": warped straight to " +
-                                      std::to_string(coarse.columns) + " x " + std::to_string(coarse.rows) +
-                                      " (mode resampling)");
+            raster.warnings.push_back(
+                "raster warps to " + pixelsText(coarse.sourceColumns, coarse.sourceRows) + ", above " +
+                budgetText(options.pixelBudget) + ": warped straight to " + std::to_string(coarse.columns) +
+                " x " + std::to_string(coarse.rows) + " (mode resampling)");
         }
         raster.warpedFromGeographic = true;
         raster.warnings.push_back(
@@ -457,10 +472,10 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
     raster.coarsened = raster.coarsened || plan.coarsened;
     raster.effectiveResolutionMetres = std::max(grid.pixelWidth, grid.pixelHeight);
     if (plan.coarsened) {
-        raster.warnings.push_back(
-            "raster has " + std::to_string(plan.sourceColumns) + " x " + std::to_string(plan.sourceRows) +
-            " pixels, above the budget of " + std::to_string(options.pixelBudget) + ": read at " +
-            formatMetres(raster.effectiveResolutionMetres) + " m resolution (mode resampling)");
+        raster.warnings.push_back("raster has " + pixelsText(plan.sourceColumns, plan.sourceRows) +
+                                  ", above " + budgetText(options.pixelBudget) + ": read at " +
+                                  formatMetres(raster.effectiveResolutionMetres) +
+                                  " m resolution (mode resampling)");
     }
 
     if (planningCrs) {

@@ -391,6 +391,12 @@ class RasterLoadingTest : public QObject {
         QVERIFY(std::abs(raster.grid.height() - 1359 * 31.524658701787931) < 1e-6);
         QVERIFY(raster.effectiveResolutionMetres > 100.0 && raster.effectiveResolutionMetres < 140.0);
         QVERIFY(!raster.warnings.empty());
+        QVERIFY2(
+            raster.warnings.back().rfind(
+                "raster has 1073 x 1359 pixels (1.46 million), above the budget of 0.1 million pixels: read "
+                "at ",
+                0) == 0,
+            raster.warnings.back().c_str());
         // Mode resampling keeps the proportions of the big classes.
         const double pixels = static_cast<double>(raster.grid.columns) * raster.grid.rows;
         QVERIFY(std::abs(raster.classPixelCounts.at(4) / pixels - 767537.0 / 1458207.0) < 0.05);
