@@ -268,6 +268,12 @@ int mavlinkVehicleType(VehicleType type) {
     return vehicleGroundRover;
 }
 
+// Degrees to eight decimals (about a millimetre), as the waypoint lists write them: an autopilot holds
+// seven (MAVLink's degrees times 10^7), and the digits after them are a fifth of a plan file.
+void appendDegrees(std::string& out, double degrees) {
+    internal::appendRounded(out, degrees, 8);
+}
+
 // QGroundControl plans hold thousands of items: their text is written straight out, laid out as
 // JsonValue lays out a document with its flat objects on one line (an item a line), without building the
 // tree of values first, which took three quarters of the writing time.
@@ -289,9 +295,9 @@ void appendPlacedItem(std::string& out, int& jumpId, int command, double firstPa
            ", \"frame\": " + std::to_string(frameGlobalRelativeAltitude) + ", \"params\": [";
     appendJsonNumber(out, firstParameter);
     out += ", 0, 0, null, ";
-    appendJsonNumber(out, point.latitude);
+    appendDegrees(out, point.latitude);
     out += ", ";
-    appendJsonNumber(out, point.longitude);
+    appendDegrees(out, point.longitude);
     out += ", ";
     appendJsonNumber(out, altitude);
     out += "], \"type\": \"SimpleItem\"}";
@@ -373,9 +379,9 @@ std::string qGroundControlPlanText(const AutopilotMission& mission, const Missio
         out += "\n    ]";
     }
     out += ",\n    \"plannedHomePosition\": [";
-    appendJsonNumber(out, home.latitude);
+    appendDegrees(out, home.latitude);
     out += ", ";
-    appendJsonNumber(out, home.longitude);
+    appendDegrees(out, home.longitude);
     out += ", 0],\n    \"vehicleType\": " + std::to_string(mavlinkVehicleType(vehicle.type)) +
            ",\n"
            "    \"version\": 2\n"
@@ -736,21 +742,23 @@ Status writeWaypointCsv(const ExportContext& context, int robot, const std::stri
         return Status::failure(points.error());
     std::string text = "index,x,y,lon,lat,class,speed_mps,fov_m,cumulative_s\n";
     text.reserve(points.value().size() * 100);
-    const auto field = [&text](double value) {
+    // Metres and seconds to three decimals, degrees to eight: a millimetre, where every digit of a double
+    // made the file half as large again.
+    const auto field = [&text](double value, int decimals) {
         text += ',';
-        internal::appendShortest(text, value);
+        internal::appendRounded(text, value, decimals);
     };
     const auto coordinate = [&text](double value) { // none without a CRS
         text += ',';
         if (!std::isnan(value))
-            internal::appendShortest(text, value);
+            internal::appendRounded(text, value, 8);
     };
     int index = 0;
     for (const GeoWaypoint& point : points.value()) {
         const Waypoint& waypoint = point.waypoint;
         text += std::to_string(index++);
-        field(waypoint.x);
-        field(waypoint.y);
+        field(waypoint.x, 3);
+        field(waypoint.y, 3);
         coordinate(point.longitude);
         coordinate(point.latitude);
         text += ',';
@@ -758,8 +766,9 @@ Status writeWaypointCsv(const ExportContext& context, int robot, const std::stri
             text += std::to_string(*landCover);
         text += ',';
         internal::appendShortestFloat(text, waypoint.speedMetresPerSecond);
-        field(fieldOfViewAt(context.plan, waypoint));
-        field(point.cumulativeSeconds);
+        text += ',';
+        internal::appendShortest(text, fieldOfViewAt(context.plan, waypoint));
+        field(point.cumulativeSeconds, 3);
         text += '\n';
     }
     return internal::writeFileAtomically(path, text, Sync::BySystem);

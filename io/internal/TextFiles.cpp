@@ -6,6 +6,7 @@
 #include <QString>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -52,6 +53,15 @@ void appendShortestFloat(std::string& out, float value) {
     std::array<char, 64> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     out.append(buffer.data(), result.ptr);
+}
+
+void appendRounded(std::string& out, double value, int decimals) {
+    if (!std::isfinite(value)) {
+        appendShortest(out, value);
+        return;
+    }
+    const double scale = std::pow(10.0, decimals);
+    appendShortest(out, std::round(value * scale) / scale + 0.0); // + 0.0: never "-0"
 }
 
 void appendFixed(std::string& out, double value, int decimals) {

@@ -24,6 +24,9 @@ using namespace mcpp::io;
 
 namespace {
 
+// Mission files hold degrees to eight decimals: a point read back lies within half of the last.
+constexpr double writtenDegrees = 5e-9;
+
 // A scratch folder of empty files, listed by name.
 class FileFolder {
   public:
@@ -660,8 +663,8 @@ class AutopilotMissionTest : public QObject {
                 if (first.isEmpty())
                     first = item.toObject()["params"].toArray();
                 last = item.toObject()["params"].toArray();
-                QCOMPARE(last[4].toDouble(), lonLats[point].latitude);
-                QCOMPARE(last[5].toDouble(), lonLats[point].longitude);
+                QVERIFY(std::abs(last[4].toDouble() - lonLats[point].latitude) <= writtenDegrees);
+                QVERIFY(std::abs(last[5].toDouble() - lonLats[point].longitude) <= writtenDegrees);
                 ++point;
             }
             QCOMPARE(point, mission.parts[part].last + 1);
@@ -845,13 +848,14 @@ class AutopilotMissionTest : public QObject {
             const QJsonObject plannedMission = readJson(path)["mission"].toObject();
             QCOMPARE(plannedMission["vehicleType"].toInt(), 2); // a quadrotor
             const QJsonArray home = plannedMission["plannedHomePosition"].toArray();
-            QCOMPARE(home[0].toDouble(), start.latitude); // every part's home is the robot's start
-            QCOMPARE(home[1].toDouble(), start.longitude);
+            QVERIFY(std::abs(home[0].toDouble() - start.latitude) <=
+                    writtenDegrees); // every part's home is the robot's start
+            QVERIFY(std::abs(home[1].toDouble() - start.longitude) <= writtenDegrees);
             const QJsonArray items = plannedMission["items"].toArray();
             QCOMPARE(static_cast<int>(items.size()) + 1, mission.parts[part].items);
             const QJsonObject takeoff = items.first().toObject();
             QCOMPARE(takeoff["command"].toInt(), 22);
-            QCOMPARE(takeoff["params"].toArray()[4].toDouble(), start.latitude);
+            QVERIFY(std::abs(takeoff["params"].toArray()[4].toDouble() - start.latitude) <= writtenDegrees);
             QCOMPARE(takeoff["params"].toArray()[6].toDouble(), 45.0);
             QCOMPARE(items[2].toObject()["command"].toInt(), 16); // waypoints at the aircraft's altitude
             QCOMPARE(items[2].toObject()["Altitude"].toDouble(), 45.0);
@@ -905,12 +909,14 @@ class AutopilotMissionTest : public QObject {
                 QString::fromStdString(missionPartPath(whole.toStdString(), part, mission.parts.size()));
             const QJsonObject plannedMission = readJson(path)["mission"].toObject();
             const QJsonArray home = plannedMission["plannedHomePosition"].toArray();
-            QCOMPARE(home[0].toDouble(), takeOff.latitude);
-            QCOMPARE(home[1].toDouble(), takeOff.longitude);
+            QVERIFY(std::abs(home[0].toDouble() - takeOff.latitude) <= writtenDegrees);
+            QVERIFY(std::abs(home[1].toDouble() - takeOff.longitude) <= writtenDegrees);
             const QJsonArray items = plannedMission["items"].toArray();
-            QCOMPARE(items.first().toObject()["params"].toArray()[4].toDouble(), takeOff.latitude);
+            QVERIFY(std::abs(items.first().toObject()["params"].toArray()[4].toDouble() - takeOff.latitude) <=
+                    writtenDegrees);
             if (part == 0) // then to where the path begins
-                QCOMPARE(items[2].toObject()["params"].toArray()[4].toDouble(), pathStart.latitude);
+                QVERIFY(std::abs(items[2].toObject()["params"].toArray()[4].toDouble() -
+                                 pathStart.latitude) <= writtenDegrees);
         }
         // Each flight's trips from the road and back are in its time: more than from the path's first point.
         AutopilotMission fromThePath = mission;

@@ -230,8 +230,8 @@ class WaypointFilesTest : public QObject {
             QVERIFY(params[3].isNull());
             const Waypoint& waypoint = plan_.paths[0].waypoints[static_cast<std::size_t>(i)];
             const LonLat expected = reference_.toWgs84({waypoint.x, waypoint.y}).value();
-            QVERIFY(std::abs(params[4].toDouble() - expected.latitude) < 1e-9);
-            QVERIFY(std::abs(params[5].toDouble() - expected.longitude) < 1e-9);
+            QVERIFY(std::abs(params[4].toDouble() - expected.latitude) <= 5e-9); // eight decimals
+            QVERIFY(std::abs(params[5].toDouble() - expected.longitude) <= 5e-9);
             QCOMPARE(params[6].toDouble(),
                      0.0); // a rover drives on the ground, whatever altitude it is given
             QCOMPARE(item["Altitude"].toDouble(), 0.0);
@@ -335,13 +335,17 @@ class WaypointFilesTest : public QObject {
             fields.push_back(line);
         QCOMPARE(fields.size(), std::size_t{9});
         const Waypoint& waypoint = plan_.paths[1].waypoints[2];
-        QCOMPARE(std::stod(fields[1]), waypoint.x);
-        QCOMPARE(std::stod(fields[2]), waypoint.y);
+        // Metres to three decimals, degrees to eight.
+        QVERIFY(std::abs(std::stod(fields[1]) - waypoint.x) <= 5e-4);
+        QVERIFY(std::abs(std::stod(fields[2]) - waypoint.y) <= 5e-4);
+        QVERIFY2(fields[1].find('.') == std::string::npos || fields[1].size() - fields[1].find('.') <= 4,
+                 fields[1].c_str());
         const LonLat expected = reference_.toWgs84({waypoint.x, waypoint.y}).value();
-        QCOMPARE(std::stod(fields[3]), expected.longitude);
+        QVERIFY(std::abs(std::stod(fields[3]) - expected.longitude) <= 5e-9);
         QCOMPARE(std::stod(fields[5]), 6.0);
-        QVERIFY(std::abs(std::stod(fields[8]) - 20.0 / 1.5) <
-                1e-9); // two 10 m legs at 1.5 m/s, no turn price
+        // Two 10 m legs at 1.5 m/s, no turn price; seconds to three decimals.
+        QVERIFY(std::abs(std::stod(fields[8]) - 20.0 / 1.5) <= 5e-4);
+        QCOMPARE(fields[8], std::string("13.333"));
         // Every row where its x and y lie, whether the robot's mission placed the point (its turns) or the
         // CSV did (the points between them).
         for (const std::string& row : lines) {
@@ -349,9 +353,10 @@ class WaypointFilesTest : public QObject {
             std::stringstream columns(row);
             for (std::string field; std::getline(columns, field, ',');)
                 values.push_back(field.empty() ? 0.0 : std::stod(field));
+            // The millimetre the metres were rounded to moves the degrees by at most about 1e-8.
             const LonLat place = reference_.toWgs84({values[1], values[2]}).value();
-            QCOMPARE(values[3], place.longitude);
-            QCOMPARE(values[4], place.latitude);
+            QVERIFY(std::abs(values[3] - place.longitude) <= 2e-8);
+            QVERIFY(std::abs(values[4] - place.latitude) <= 2e-8);
         }
     }
 
