@@ -269,7 +269,7 @@ int mavlinkVehicleType(VehicleType type) {
 }
 
 // Degrees to eight decimals (about a millimetre), as the waypoint lists write them: an autopilot holds
-// seven (MAVLink's degrees times 10^7), and the digits after them are a fifth of a plan file.
+// seven (MAVLink's degrees times 10^7), and the digits after them made plan files 6 % larger.
 void appendDegrees(std::string& out, double degrees) {
     internal::appendRounded(out, degrees, 8);
 }
