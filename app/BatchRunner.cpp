@@ -179,7 +179,9 @@ void BatchRunner::execute() {
 
 // While the planner works, the raster's pixels live only in the problem's copy of them, where the two are
 // the same (no class the table lacks was set outside): five bytes a pixel fewer at the planner's peak (160 MB
-// on a map of 32 M pixels). Messages meanwhile read the grid's size and place, which it keeps.
+// on a map of 32 M pixels). Messages meanwhile read the grid's size and place, which it keeps. Every error
+// while planning ends the run before anything reads the pixels; values are compared by size only, as
+// io::planningProblem copies them unchanged (reconciling a class table sets `outside` alone).
 bool BatchRunner::lendPixelsTo(const PlanningProblem& problem) {
     ClassGrid& grid = raster_.grid;
     if (grid.values.size() != problem.grid.values.size() || grid.outside != problem.grid.outside)

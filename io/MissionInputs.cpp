@@ -466,6 +466,8 @@ Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassT
         if (Status startsUsable = firstStartProblem(reconciled, classes, starts, names, flyingRobots);
             !startsUsable)
             return Prepared::failure(startsUsable.error());
+    // The raster's values as read: batch mode lends its own to the planner on that ground (only `outside`
+    // may differ, where reconciling set classes the table lacks outside).
     prepared.problem.grid = std::move(reconciled.grid);
     prepared.problem.classes = classes;
     prepared.problem.starts = std::move(starts);

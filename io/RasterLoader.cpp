@@ -141,8 +141,8 @@ struct ReadPlan {
 
 // "21.9 million", "1.3 billion": a count a person reads at once.
 std::string countText(double count) {
-    return count >= 1e9 ? formatQuantity(count / 1e9, 3) + " billion"
-                        : formatQuantity(count / 1e6, 3) + " million";
+    return count >= 999.5e6 ? formatQuantity(count / 1e9, 3) + " billion"
+                            : formatQuantity(count / 1e6, 3) + " million";
 }
 
 // "4471 x 4887 pixels (21.9 million)".

@@ -271,6 +271,10 @@ int mavlinkVehicleType(VehicleType type) {
 // Degrees to eight decimals (about a millimetre), as the waypoint lists write them: an autopilot holds
 // seven (MAVLink's degrees times 10^7), and the digits after them made plan files 6 % larger.
 void appendDegrees(std::string& out, double degrees) {
+    if (!std::isfinite(degrees)) {
+        appendJsonNumber(out, degrees); // null, as JSON has no NaN
+        return;
+    }
     internal::appendRounded(out, degrees, 8);
 }
 

@@ -11,6 +11,7 @@
 #include <QPainter>
 #include <QString>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mcpp::render {
@@ -42,7 +43,12 @@ struct LegendItem {
 enum class LegendSectionKind { LandCover, Robots, OnTheMap };
 
 struct LegendSection {
-    LegendSectionKind kind; // no default: every section is made saying what it lists
+    // No default: every section is made saying what it lists.
+    LegendSection(LegendSectionKind sectionKind, QString sectionTitle,
+                  std::vector<LegendItem> sectionItems = {})
+        : kind(sectionKind), title(std::move(sectionTitle)), items(std::move(sectionItems)) {}
+
+    LegendSectionKind kind;
     QString title;
     std::vector<LegendItem> items;
 };

@@ -214,9 +214,9 @@ std::string closedInStartsText(const Plan& plan, const PlannerDescription& plann
                 ", so its region can hold no more than " + formatArea(closed->areaSquareMetres) + "; ";
     }
     if (closedIn > described)
-        text += closedIn - described == 1
-                    ? "so is one more robot's start; "
-                    : "so are " + std::to_string(closedIn - described) + " more robots' starts; ";
+        text += closedIn - described == 1 ? "the start of one more robot is closed in too; "
+                                          : "the starts of " + std::to_string(closedIn - described) +
+                                                " more robots are closed in too; ";
     return text;
 }
 
@@ -227,7 +227,7 @@ std::string closedInStartsText(const Plan& plan, const PlannerDescription& plann
 std::string passingOtherStartsAdvice(const Plan& plan) {
     std::string advice;
     for (const PlannerDescription& other : plannerDescriptions()) {
-        if (other.promises.regionsConnected || other.balanceSwitch.empty() ||
+        if (other.singleRobot || other.promises.regionsConnected || other.balanceSwitch.empty() ||
             (!plan.robotSpeeds.empty() && !other.balancesOwnSpeeds))
             continue;
         advice += "; or plan with " + other.label + " and " + switchLabel(other) + " on (planner " +

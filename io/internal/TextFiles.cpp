@@ -60,8 +60,20 @@ void appendRounded(std::string& out, double value, int decimals) {
         appendShortest(out, value);
         return;
     }
+    // Fixed notation, trailing zeros dropped: 300000 as "300000", where the shortest text is "3e+05".
+    std::array<char, 64> buffer{};
     const double scale = std::pow(10.0, decimals);
-    appendShortest(out, std::round(value * scale) / scale + 0.0); // + 0.0: never "-0"
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(),
+                                      std::round(value * scale) / scale + 0.0, // + 0.0: never "-0"
+                                      std::chars_format::fixed, decimals);
+    char* end = result.ptr;
+    if (decimals > 0) {
+        while (end[-1] == '0')
+            --end;
+        if (end[-1] == '.')
+            --end;
+    }
+    out.append(buffer.data(), end);
 }
 
 void appendFixed(std::string& out, double value, int decimals) {

@@ -27,8 +27,9 @@ namespace mcpp::io::internal {
 void appendShortest(std::string& out, double value);
 void appendShortestFloat(std::string& out, float value);
 void appendFixed(std::string& out, double value, int decimals);
-// The shortest text of `value` rounded to `decimals` places, 322009.0365214371 at 3 as "322009.037": for
-// files of many points, whose digits beyond a millimetre or a hundred-millionth of a degree mean nothing.
+// `value` rounded to `decimals` places, in fixed notation without trailing zeros: 322009.0365214371 at 3 as
+// "322009.037", 300000 as "300000". For files of many points, whose digits beyond a millimetre or a
+// hundred-millionth of a degree mean nothing.
 void appendRounded(std::string& out, double value, int decimals);
 
 // One CSV record split into fields (RFC 4180 quoting; no line breaks inside fields).

@@ -1276,7 +1276,7 @@ void TestBatchEndToEnd::anAircraftOnTheLakeTakesOffThere() {
     checkOutputs(out, 3, run, QStringLiteral("mcpp-mlct"));
     if (QTest::currentTestFailed())
         return;
-    // The degrees are gdaltransform's (-s_srs EPSG:32633 -t_srs EPSG:4326) to 9 digits.
+    // The degrees are gdaltransform's (-s_srs EPSG:32633 -t_srs EPSG:4326) to seven decimals.
     QVERIFY2(run.standardOutput.contains(QStringLiteral(
                  "robot 2 takes off at its start (431288.75, 5301138.75; longitude 14.0813625, latitude "
                  "47.8599126), which is on an obstacle: class 4 "

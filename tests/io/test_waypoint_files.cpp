@@ -5,6 +5,7 @@
 #include "core/planners/MlctPlanner.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/JsonValue.hpp"
+#include "io/internal/TextFiles.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 #include "tests/support/TestData.hpp"
 
@@ -12,6 +13,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <fstream>
@@ -189,6 +191,12 @@ class WaypointFilesTest : public QObject {
         QVERIFY2(written.ok(), written.error().c_str());
         const QJsonObject plan = readJson(path);
         QVERIFY(keysOf(plan) == keysOf(sample));
+        // Degrees to eight decimals at most (an autopilot holds seven), never in exponent form.
+        QFile text(QString::fromStdString(path));
+        QVERIFY(text.open(QIODevice::ReadOnly));
+        const QString planText = QString::fromUtf8(text.readAll());
+        QVERIFY(!planText.contains(QRegularExpression(QStringLiteral("[0-9]\\.[0-9]{9}"))));
+        QVERIFY(!planText.contains(QRegularExpression(QStringLiteral("[0-9]e[-+]?[0-9]"))));
         QCOMPARE(plan["fileType"].toString(), QString("Plan"));
         QCOMPARE(plan["version"].toInt(), sample["version"].toInt());
         QCOMPARE(plan["groundStation"].toString(), QString("QGroundControl"));
@@ -230,8 +238,8 @@ class WaypointFilesTest : public QObject {
             QVERIFY(params[3].isNull());
             const Waypoint& waypoint = plan_.paths[0].waypoints[static_cast<std::size_t>(i)];
             const LonLat expected = reference_.toWgs84({waypoint.x, waypoint.y}).value();
-            QVERIFY(std::abs(params[4].toDouble() - expected.latitude) <= 5e-9); // eight decimals
-            QVERIFY(std::abs(params[5].toDouble() - expected.longitude) <= 5e-9);
+            QVERIFY(std::abs(params[4].toDouble() - expected.latitude) <= 6e-9); // eight decimals
+            QVERIFY(std::abs(params[5].toDouble() - expected.longitude) <= 6e-9);
             QCOMPARE(params[6].toDouble(),
                      0.0); // a rover drives on the ground, whatever altitude it is given
             QCOMPARE(item["Altitude"].toDouble(), 0.0);
@@ -336,15 +344,16 @@ class WaypointFilesTest : public QObject {
         QCOMPARE(fields.size(), std::size_t{9});
         const Waypoint& waypoint = plan_.paths[1].waypoints[2];
         // Metres to three decimals, degrees to eight.
-        QVERIFY(std::abs(std::stod(fields[1]) - waypoint.x) <= 5e-4);
-        QVERIFY(std::abs(std::stod(fields[2]) - waypoint.y) <= 5e-4);
+        QVERIFY(std::abs(std::stod(fields[1]) - waypoint.x) <= 6e-4);
+        QVERIFY(std::abs(std::stod(fields[2]) - waypoint.y) <= 6e-4);
         QVERIFY2(fields[1].find('.') == std::string::npos || fields[1].size() - fields[1].find('.') <= 4,
                  fields[1].c_str());
         const LonLat expected = reference_.toWgs84({waypoint.x, waypoint.y}).value();
-        QVERIFY(std::abs(std::stod(fields[3]) - expected.longitude) <= 5e-9);
+        QVERIFY(std::abs(std::stod(fields[3]) - expected.longitude) <= 6e-9);
+        QVERIFY2(fields[3].size() - fields[3].find('.') <= 9, fields[3].c_str());
         QCOMPARE(std::stod(fields[5]), 6.0);
         // Two 10 m legs at 1.5 m/s, no turn price; seconds to three decimals.
-        QVERIFY(std::abs(std::stod(fields[8]) - 20.0 / 1.5) <= 5e-4);
+        QVERIFY(std::abs(std::stod(fields[8]) - 20.0 / 1.5) <= 6e-4);
         QCOMPARE(fields[8], std::string("13.333"));
         // Every row where its x and y lie, whether the robot's mission placed the point (its turns) or the
         // CSV did (the points between them).
@@ -380,6 +389,27 @@ class WaypointFilesTest : public QObject {
             fields.push_back(line);
         QCOMPARE(fields.size(), std::size_t{9});
         QCOMPARE(fields[6], std::string("0.3"));
+    }
+
+    // Mission files' numbers: rounded, fixed notation, no trailing zeros, never "-0".
+    void roundedNumbers_data() {
+        QTest::addColumn<double>("value");
+        QTest::addColumn<int>("decimals");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("metres") << 322009.0365214371 << 3 << "322009.037";
+        QTest::newRow("round, not 3e+05") << 300000.0 << 3 << "300000";
+        QTest::newRow("degrees") << 7.400000000000001 << 8 << "7.4";
+        QTest::newRow("west") << -113.193948618702 << 8 << "-113.19394862";
+        QTest::newRow("a hair below zero") << -0.000000001 << 8 << "0";
+        QTest::newRow("no decimals") << 1234.5 << 0 << "1235";
+    }
+    void roundedNumbers() {
+        QFETCH(double, value);
+        QFETCH(int, decimals);
+        QFETCH(QString, expected);
+        std::string text;
+        internal::appendRounded(text, value, decimals);
+        QCOMPARE(QString::fromStdString(text), expected);
     }
 
     void unknownRobotIsAnError() {
