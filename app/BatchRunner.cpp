@@ -390,8 +390,7 @@ std::vector<std::string> BatchRunner::robotNamesForMessages() const {
 }
 
 std::string BatchRunner::planMessage(const std::string& message) const {
-    return io::withPointsInDegrees(message, raster_.georeference, raster_.grid) +
-           io::robotsNamedIn(message, robotNamesForMessages(), false);
+    return io::messageForPeople(message, &raster_, robotNamesForMessages());
 }
 
 Plan BatchRunner::runPlanner(const PlanningProblem& problem) {

@@ -378,6 +378,13 @@ std::string robotsNamedIn(const std::string& message, const std::vector<std::str
     return named.empty() ? std::string() : " (" + named + ")";
 }
 
+std::string messageForPeople(const std::string& message, const LoadedRaster* raster,
+                             const std::vector<std::string>& robotNames) {
+    const std::string placed =
+        raster != nullptr ? withPointsInDegrees(message, raster->georeference, raster->grid) : message;
+    return placed + robotsNamedIn(message, robotNames, false);
+}
+
 std::optional<std::string> planningErrorText(const PlanningError& error, const FieldNamer& names,
                                              const std::vector<std::string>& robotNames, bool withIndex) {
     const std::string robots = robotsNamedIn(error.detail(), robotNames, withIndex);

@@ -79,6 +79,10 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 // ("Robot 3") or, without the index, has none is left out; empty when none is left.
 [[nodiscard]] std::string robotsNamedIn(const std::string& message,
                                         const std::vector<std::string>& robotNames, bool withIndex);
+// A plan's message as people read it, in batch mode and the window alike: the map points it names with
+// their degrees (withPointsInDegrees; none without a raster), then the robots it numbers by name.
+[[nodiscard]] std::string messageForPeople(const std::string& message, const LoadedRaster* raster,
+                                           const std::vector<std::string>& robotNames);
 // A planning error about one robot's start or one planner parameter, the field named in the caller's terms,
 // then the robots its detail numbers by name (robotsNamedIn) and, for a start, startProblemAdvice:
 // "mission.json: robots[1].start (beta): ... lies in the same cell as robot 1's start (...) (robot 1 is

@@ -1,10 +1,9 @@
 #include "io/PointsInDegrees.hpp"
 
+#include "io/internal/TextFiles.hpp"
+
 #include <algorithm>
-#include <cmath>
-#include <iomanip>
 #include <regex>
-#include <sstream>
 
 namespace mcpp::io {
 
@@ -19,13 +18,9 @@ bool nearTheMap(const ClassGrid& grid, MapPoint point) {
 
 // Seven decimals, about a centimetre, whatever the size of the degrees; trailing zeros dropped.
 std::string sevenDecimals(double degrees) {
-    std::ostringstream text;
-    text << std::fixed << std::setprecision(7) << std::round(degrees * 1e7) / 1e7 + 0.0; // never "-0"
-    std::string digits = text.str();
-    digits.erase(digits.find_last_not_of('0') + 1);
-    if (digits.back() == '.')
-        digits.pop_back();
-    return digits;
+    std::string text;
+    internal::appendRounded(text, degrees, 7);
+    return text;
 }
 
 } // namespace

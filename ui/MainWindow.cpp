@@ -167,9 +167,7 @@ QString formatDegrees(double value, QChar positive, QChar negative) {
 // numbers named and the map points it names with their degrees (on a map of a CRS).
 QString loggedText(const std::string& message, const std::vector<std::string>& robotNames,
                    const io::LoadedRaster* raster) {
-    const std::string placed =
-        raster != nullptr ? io::withPointsInDegrees(message, raster->georeference, raster->grid) : message;
-    QString text = QString::fromStdString(placed + io::robotsNamedIn(message, robotNames, false));
+    QString text = QString::fromStdString(io::messageForPeople(message, raster, robotNames));
     if (!text.endsWith(QLatin1Char('.')))
         text += QLatin1Char('.');
     return text;

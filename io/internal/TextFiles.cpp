@@ -61,8 +61,12 @@ void appendRounded(std::string& out, double value, int decimals) {
         return;
     }
     // Fixed notation, trailing zeros dropped: 300000 as "300000", where the shortest text is "3e+05".
+    // Files of many points round every field: powers of ten looked up, not computed each time.
+    static constexpr std::array<double, 10> powersOfTen{1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
     std::array<char, 64> buffer{};
-    const double scale = std::pow(10.0, decimals);
+    const double scale = decimals >= 0 && decimals < int(powersOfTen.size())
+                             ? powersOfTen[static_cast<std::size_t>(decimals)]
+                             : std::pow(10.0, decimals);
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(),
                                       std::round(value * scale) / scale + 0.0, // + 0.0: never "-0"
                                       std::chars_format::fixed, decimals);
