@@ -7,7 +7,7 @@
 #include "core/model/TimelineLayer.hpp"
 #include "core/model/TimelineText.hpp"
 #include "core/planners/UncoveredLand.hpp"
-#include "io/PointsInDegrees.hpp"
+#include "io/MissionInputs.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QBarCategoryAxis>
@@ -391,11 +391,13 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
     summary_->setRowVisible(timeline_, timeline != nullptr);
     if (timeline != nullptr)
         timeline_->setText(QString::fromStdString(timelineSentence(timeline->summary())));
-    // Map points in metres mean little to most users: their degrees too, where the map has a CRS.
-    const auto placed = [raster](const std::string& message) {
-        return QString::fromStdString(
-            raster != nullptr ? io::withPointsInDegrees(message, raster->georeference, raster->grid)
-                              : message);
+    // As the messages panel says them: map points with their degrees, robots numbered with their names
+    // (the robot table lists names, not numbers).
+    std::vector<std::string> robotNames;
+    for (const QString& name : names)
+        robotNames.push_back(name.toStdString());
+    const auto placed = [raster, &robotNames](const std::string& message) {
+        return QString::fromStdString(io::messageForPeople(message, raster, robotNames));
     };
     QStringList warnings;
     for (const auto& warning : plan->warnings())

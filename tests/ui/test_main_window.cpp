@@ -283,6 +283,13 @@ class TestMainWindow : public QObject {
         panel.showPlan(&placed, {}, &raster);
         QVERIFY2(notes->text().contains(QStringLiteral("(431385, 5399995; longitude 14.06")),
                  qPrintable(notes->text()));
+        // Robots a message numbers are named, as the messages panel names them (the table lists names only).
+        Plan named = placed;
+        named.issues.push_back({IssueSeverity::Information, "note", "robots 1 and 2 meet"});
+        panel.showPlan(&named, {QStringLiteral("Ada"), QStringLiteral("Ben")});
+        QVERIFY2(
+            notes->text().contains(QStringLiteral("robots 1 and 2 meet (robot 1 is Ada; robot 2 is Ben)")),
+            qPrintable(notes->text()));
         problem.notes.clear();
         const Plan plain = makePlanner("mcpp-mlct")->plan(problem, {});
         panel.showPlan(&plain, {});
