@@ -329,6 +329,75 @@ class MlctPlannerTest : public QObject {
                              [](const PlanIssue& issue) { return issue.code == "uneven-plan"; }));
     }
 
+    // A fast robot behind a wall whose only gap holds another robot's start: its 80 cells are more than half
+    // of the bound in cells, yet at twice the speed it covers them in less than half of the bound. Judged at
+    // its own pace it is closed in, and the warning names it.
+    void fastRobotClosedInIsJudgedAtItsOwnPace() {
+        constexpr int side = 20;
+        std::vector<bool> blocked(side * side, false);
+        for (int row = 1; row < side; ++row)
+            blocked[static_cast<std::size_t>(row * side + 4)] = true; // a wall at column 4, open at row 0
+        auto problem = test::uniformProblem(side, side, 10.0, blocked, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 10), test::pixelCentre(problem.grid, 4, 0),
+                          test::pixelCentre(problem.grid, 12, 10)};
+        problem.robotSpeeds = {2.0, 1.0, 1.0};
+        const Plan plan = MlctPlanner{}.plan(problem, {});
+        const double bound = plan.metrics.lowerBoundSeconds;
+        const double behindTheWall = 80.0 * plan.cells.cell(plan.regions.startCell[0]).coverSeconds();
+        // The case this test is about: more than half the bound at one pace, less than it at two.
+        QVERIFY2(behindTheWall > 0.5 * bound && behindTheWall < bound,
+                 (std::to_string(behindTheWall) + " against a bound of " + std::to_string(bound)).c_str());
+        QVERIFY(!closedInStart(plan, 0, 0.5 * bound).has_value());
+        const auto uneven = std::find_if(plan.issues.begin(), plan.issues.end(),
+                                         [](const PlanIssue& issue) { return issue.code == "uneven-plan"; });
+        QVERIFY(uneven != plan.issues.end());
+        QVERIFY2(
+            uneven->message.find("robot 1's start is closed in by the start of robot 2, so its region can "
+                                 "hold no more than " +
+                                 formatArea(80.0 * 100.0)) != std::string::npos,
+            uneven->message.c_str());
+    }
+
+    // Starts on every cell of a corner block: the robots inside it are walled in by the block's others. Three
+    // are described and the rest counted, so that the advice after them is still read.
+    void manyClosedInStartsAreCounted_data() {
+        QTest::addColumn<int>("block");
+        QTest::addColumn<QString>("tail");
+        // A block of 3 x 3 closes in the 2 x 2 at its corner: four robots, one more than described.
+        QTest::newRow("3 x 3 block") << 3 << "the start of one more robot is closed in too; ";
+        // A block of 4 x 4 closes in the 3 x 3 at its corner: nine robots, six more than described.
+        QTest::newRow("4 x 4 block") << 4 << "the starts of 6 more robots are closed in too; ";
+    }
+
+    void manyClosedInStartsAreCounted() {
+        QFETCH(int, block);
+        QFETCH(QString, tail);
+        auto problem = test::uniformProblem(20, 20, 10.0, std::vector<bool>(20 * 20, false), {});
+        for (int row = 0; row < block; ++row)
+            for (int column = 0; column < block; ++column)
+                problem.starts.push_back(test::pixelCentre(problem.grid, column, row));
+        const Plan plan = MlctPlanner{}.plan(problem, {});
+        const auto uneven = std::find_if(plan.issues.begin(), plan.issues.end(),
+                                         [](const PlanIssue& issue) { return issue.code == "uneven-plan"; });
+        QVERIFY(uneven != plan.issues.end());
+        const std::string& message = uneven->message;
+        std::size_t described = 0;
+        for (std::size_t at = message.find("'s start is closed in by"); at != std::string::npos;
+             at = message.find("'s start is closed in by", at + 1))
+            ++described;
+        QCOMPARE(described, std::size_t{3});
+        const std::size_t counted = message.find(tail.toStdString());
+        QVERIFY2(counted != std::string::npos, message.c_str());
+        // The count comes after the three described and before the advice.
+        QVERIFY(counted > message.rfind("'s start is closed in by"));
+        QVERIFY2(message.find("starts close together", counted) != std::string::npos, message.c_str());
+        int closedIn = 0;
+        for (int robot = 0; robot < block * block; ++robot)
+            if (closedInStart(plan, robot, 0.5 * plan.metrics.lowerBoundSeconds))
+                ++closedIn;
+        QCOMPARE(closedIn, (block - 1) * (block - 1));
+    }
+
     void reportsProgressAndHonoursCancel() {
         const auto problem = lakeProblem();
         std::vector<std::string> stages;

@@ -7,6 +7,7 @@
 
 #include <QTemporaryDir>
 #include <QTest>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <gdal_priv.h>
@@ -401,6 +402,46 @@ class RasterLoadingTest : public QObject {
         const double pixels = static_cast<double>(raster.grid.columns) * raster.grid.rows;
         QVERIFY(std::abs(raster.classPixelCounts.at(4) / pixels - 767537.0 / 1458207.0) < 0.05);
         QVERIFY(std::abs(raster.classPixelCounts.at(5) / pixels - 545771.0 / 1458207.0) < 0.05);
+    }
+
+    // A raster in degrees is warped to UTM; where the warped grid is above the budget, it is warped straight
+    // to a coarser one, and the warning gives the warped size in pixels and millions.
+    void geographicRasterAboveTheBudgetIsWarpedCoarser() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("geographic.tif").toStdString();
+        const double transform[6] = {10.0, 0.001, 0.0, 45.1, 0.0, -0.0005};
+        writeRaster(path, 200, 200, GDT_Byte, transform, "EPSG:4326",
+                    [](int column, int) { return column < 100 ? 1 : 2; });
+        const LoadedRaster whole = loadOrFail(path);
+        const std::int64_t wholePixels = static_cast<std::int64_t>(whole.grid.columns) * whole.grid.rows;
+        QVERIFY(!whole.coarsened);
+        RasterLoadOptions options;
+        options.pixelBudget = 10000;
+        const LoadedRaster raster = loadOrFail(path, options);
+        QVERIFY(raster.coarsened);
+        QVERIFY(raster.warpedFromGeographic);
+        QVERIFY(static_cast<std::int64_t>(raster.grid.columns) * raster.grid.rows <= options.pixelBudget);
+        // The same ground, in fewer and larger pixels.
+        QVERIFY(std::abs(raster.grid.width() - whole.grid.width()) / whole.grid.width() < 0.02);
+        QVERIFY(std::abs(raster.grid.height() - whole.grid.height()) / whole.grid.height() < 0.02);
+        const std::string head = "raster warps to " + std::to_string(whole.grid.columns) + " x " +
+                                 std::to_string(whole.grid.rows) + " pixels (";
+        const std::string tail = " million), above the budget of 0.01 million pixels: warped straight to " +
+                                 std::to_string(raster.grid.columns) + " x " +
+                                 std::to_string(raster.grid.rows) + " (mode resampling)";
+        const auto warning = std::find_if(raster.warnings.begin(), raster.warnings.end(),
+                                          [&](const std::string& text) { return text.rfind(head, 0) == 0; });
+        QVERIFY2(warning != raster.warnings.end(), raster.warnings.front().c_str());
+        QVERIFY2(warning->size() > head.size() + tail.size() &&
+                     warning->compare(warning->size() - tail.size(), tail.size(), tail) == 0,
+                 warning->c_str());
+        // The count in millions, to three significant digits.
+        const double millions = std::stod(warning->substr(head.size()));
+        QVERIFY2(std::abs(millions * 1e6 - static_cast<double>(wholePixels)) <= 0.005 * wholePixels,
+                 warning->c_str());
+        QVERIFY(std::any_of(raster.warnings.begin(), raster.warnings.end(), [](const std::string& text) {
+            return text.find("(warped by mode to the pixel budget)") != std::string::npos;
+        }));
     }
 
     void bandOutOfRangeIsAnError() {
