@@ -409,8 +409,10 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         progress_.discardHeld();
         if (error.kind() == PlanningError::Kind::Cancelled)
             internalError(std::string("planning cancelled: ") + error.what());
+        // Its map points with their degrees, as the starts checked before planning are given (the raster
+        // lent its pixels, not its size and place).
         if (const auto named = io::planningErrorText(error, fieldNamer(), robotNamesForMessages(), true))
-            badInput(*named);
+            badInput(io::withPointsInDegrees(*named, raster_.georeference, raster_.grid));
         badInput(options_.missionFromFlags() ? std::string(error.what())
                                              : options_.missionPath + ": " + error.what());
     }

@@ -165,6 +165,12 @@ bool isEpsgCode(std::string_view text) {
     return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
+// "7.40," is what the shell passes of "--start 7.40, 1.67".
+std::string spaceAfterCommaHint(std::string_view value) {
+    return !value.empty() && value.back() == ',' ? ": write it without a space after the comma, or in quotes"
+                                                 : std::string();
+}
+
 std::string quoted(std::string_view text) {
     return "\"" + std::string(text) + "\"";
 }
@@ -334,7 +340,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             const auto point = parsePoint(value);
             if (!point)
                 return failure("--start " + std::to_string(startCount) + ": " + quoted(value) +
-                               " is not X,Y");
+                               " is not X,Y" + spaceAfterCommaHint(value));
             options.starts.push_back(*point);
             options.chargers.emplace_back();
         } else if (flag == "--charger") {
@@ -348,7 +354,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             const std::string which = "--charger after --start " + std::to_string(options.starts.size());
             const auto point = parsePoint(value);
             if (!point)
-                return failure(which + ": " + quoted(value) + " is not X,Y");
+                return failure(which + ": " + quoted(value) + " is not X,Y" + spaceAfterCommaHint(value));
             std::optional<MapPoint>& charger = options.chargers[options.starts.size() - 1];
             if (charger)
                 return failure("--start " + std::to_string(options.starts.size()) +

@@ -1712,8 +1712,13 @@ QString MainWindow::planningErrorText(const PlanningOutcome& outcome) const {
     if (!outcome.planningError)
         return outcome.error;
     // As "Cannot plan" gives the starts it checks first; the robots the planner numbers, by their names.
+    // Its map points with their degrees, as the starts "Cannot plan" checks are given.
     const auto named = io::planningErrorText(*outcome.planningError, fieldNamer(), robotNames());
-    return named ? QString::fromStdString(*named) : outcome.error;
+    if (!named)
+        return outcome.error;
+    const auto* raster = document_->raster();
+    return QString::fromStdString(
+        raster != nullptr ? io::withPointsInDegrees(*named, raster->georeference, raster->grid) : *named);
 }
 
 std::vector<std::string> MainWindow::robotNames() const {
@@ -1978,9 +1983,9 @@ void MainWindow::placeStart(MapPoint point) {
     if (robotModel_->addRobot(point)) {
         const int robot = static_cast<int>(document_->robots().size()) - 1;
         canvas_->setSelectedStart(robot);
-        showStatus(tr("Added %1 at X %2  Y %3.")
+        showStatus(tr("Added %1 at X %2  Y %3%4.")
                        .arg(QString::fromStdString(document_->robots().back().name),
-                            formatCoordinate(point.x), formatCoordinate(point.y)));
+                            formatCoordinate(point.x), formatCoordinate(point.y), degreesOf(point)));
     }
 }
 
@@ -2014,17 +2019,24 @@ bool MainWindow::applyPreset(const QString& preset) {
     return true;
 }
 
+// "  ·  1.62000° N, 7.40000° E" for a point of a map with a CRS; empty otherwise.
+QString MainWindow::degreesOf(MapPoint point) const {
+    const auto* raster = document_->raster();
+    if (raster == nullptr || !raster->georeference.hasCrs())
+        return {};
+    const auto lonLat = raster->georeference.toWgs84(point);
+    if (!lonLat.ok())
+        return {};
+    return QStringLiteral("  ·  %1, %2")
+        .arg(formatDegrees(lonLat.value().latitude, QLatin1Char('N'), QLatin1Char('S')),
+             formatDegrees(lonLat.value().longitude, QLatin1Char('E'), QLatin1Char('W')));
+}
+
 void MainWindow::showCursor(MapPoint point) {
     QString text = QStringLiteral("X %1  Y %2 m").arg(formatCoordinate(point.x), formatCoordinate(point.y));
     if (!crsName_.isEmpty())
         text += QStringLiteral(" (%1)").arg(crsName_);
-    if (const auto* raster = document_->raster(); raster != nullptr && raster->georeference.hasCrs()) {
-        const auto lonLat = raster->georeference.toWgs84(point);
-        if (lonLat.ok())
-            text += QStringLiteral("  ·  %1, %2")
-                        .arg(formatDegrees(lonLat.value().latitude, QLatin1Char('N'), QLatin1Char('S')),
-                             formatDegrees(lonLat.value().longitude, QLatin1Char('E'), QLatin1Char('W')));
-    }
+    text += degreesOf(point);
     if (const auto value = document_->classValueAt(point)) {
         const LandCoverClass* landCoverClass = document_->classes().find(*value);
         const QString name =

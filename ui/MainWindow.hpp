@@ -169,6 +169,7 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] QString drawnAreaPath(bool exclude) const;
     // Saving a mission copies area files drawn before it had a folder beside it; returns false on failure.
     bool keepDrawnAreasBeside(const QString& missionPath);
+    [[nodiscard]] QString degreesOf(MapPoint point) const;
     void showCursor(MapPoint point);
     void handlePlanningFinished(const PlanningOutcome& outcome);
     void handleExportFinished(const ExportOutcome& outcome);

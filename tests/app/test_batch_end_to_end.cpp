@@ -1700,7 +1700,8 @@ void TestBatchEndToEnd::badInputExitsTwoWithOneLine_data() {
         << QStringList{"--start-crs"};
     QTest::newRow("two robots in one cell")
         << (flags + QStringList{"--start", "431050,5301050", "--start", "431055,5301055", "--out", out})
-        << QStringList{"--start 2", "same cell as robot 1's start (a cell", "snap_starts_to_free_cells=true"};
+        << QStringList{"--start 2", "(431055, 5301055; longitude 14.0782511, latitude 47.8591342)",
+                       "same cell as robot 1's start (a cell", "snap_starts_to_free_cells=true"};
     QTest::newRow("--out is a file") << QStringList{"--batch", mission, "--out",
                                                     samplePath("synthetic/classes.csv")}
                                      << QStringList{"--out", "classes.csv", "not a folder"};

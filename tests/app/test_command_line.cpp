@@ -233,6 +233,9 @@ void TestCommandLine::errors_data() {
         << "--start 3: \"12,abc\" is not X,Y";
     QTest::newRow("--start without comma")
         << words(flagMission + " --start 12") << "--start 2: \"12\" is not X,Y";
+    QTest::newRow("--start with a space after the comma")
+        << words("--batch --raster m.tif --preset p --start 7.40, 1.67 --out o")
+        << "--start 1: \"7.40,\" is not X,Y: write it without a space after the comma, or in quotes";
     QTest::newRow("--start with three numbers")
         << words("--batch --raster m.tif --preset p --start 1,2,3 --out o")
         << "--start 1: \"1,2,3\" is not X,Y";

@@ -601,6 +601,11 @@ class TestMainWindow : public QObject {
             QTest::mouseClick(window.canvas(), Qt::LeftButton, {},
                               window.canvas()->devicePointOf(spot).toPoint());
         QCOMPARE(document->robots().size(), std::size_t{3});
+        // The status line gives the start in degrees too (the raster lies in Utah: north and west).
+        QVERIFY2(window.lastStatusMessage().startsWith(QStringLiteral("Added ")) &&
+                     window.lastStatusMessage().contains(QStringLiteral("° N, ")) &&
+                     window.lastStatusMessage().endsWith(QStringLiteral("° W.")),
+                 qPrintable(window.lastStatusMessage()));
 
         // A click outside the map is refused with a message, and nothing is added.
         const QPointF outside = window.canvas()->devicePointOf(

@@ -218,8 +218,10 @@ class TestMapCanvas : public QObject {
         QVERIFY2(text.contains(QStringLiteral("impassable (water)")), qPrintable(text));
         QVERIFY2(text.contains(QStringLiteral("50% of them (Blocked threshold)")), qPrintable(text));
         const int owner = plan.regions.robotOfCell[static_cast<std::size_t>(crossing)];
-        QVERIFY(text.contains(owner == 0 ? QStringLiteral("Scout (robot 1)")
-                                         : QStringLiteral("Robot 2 (robot 2)")));
+        // A robot named by its number is not numbered twice.
+        QVERIFY2(text.contains(owner == 0 ? QStringLiteral("Covered by Scout (robot 1).")
+                                          : QStringLiteral("Covered by Robot 2.")),
+                 qPrintable(text));
         const Cell& other = plan.cells.cell(plain);
         const QString plainText = ui::cellToolTip(*document_, {other.centreX(), other.centreY()});
         QVERIFY(plainText.startsWith(QStringLiteral("Covered by")));
