@@ -99,6 +99,13 @@ void writeRaster(const std::string& path, int columns, int rows, GDALDataType ty
     GDALClose(dataset);
 }
 
+// 200 x 200 pixels of 0.001 x 0.0005 degrees at 45 degrees north, the western half class 1 and the eastern 2.
+void writeTwoHalvesInDegrees(const std::string& path) {
+    const double transform[6] = {10.0, 0.001, 0.0, 45.1, 0.0, -0.0005};
+    writeRaster(path, 200, 200, GDT_Byte, transform, "EPSG:4326",
+                [](int column, int) { return column < 100 ? 1 : 2; });
+}
+
 } // namespace
 
 class RasterLoadingTest : public QObject {
@@ -364,9 +371,7 @@ class RasterLoadingTest : public QObject {
     void geographicNonSquarePixels() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("geographic.tif").toStdString();
-        const double transform[6] = {10.0, 0.001, 0.0, 45.1, 0.0, -0.0005};
-        writeRaster(path, 200, 200, GDT_Byte, transform, "EPSG:4326",
-                    [](int column, int) { return column < 100 ? 1 : 2; });
+        writeTwoHalvesInDegrees(path);
         const LoadedRaster raster = loadOrFail(path);
         QVERIFY(raster.warpedFromGeographic);
         QCOMPARE(raster.georeference.authorityCode(), std::string("EPSG:32632"));
@@ -409,9 +414,7 @@ class RasterLoadingTest : public QObject {
     void geographicRasterAboveTheBudgetIsWarpedCoarser() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("geographic.tif").toStdString();
-        const double transform[6] = {10.0, 0.001, 0.0, 45.1, 0.0, -0.0005};
-        writeRaster(path, 200, 200, GDT_Byte, transform, "EPSG:4326",
-                    [](int column, int) { return column < 100 ? 1 : 2; });
+        writeTwoHalvesInDegrees(path);
         const LoadedRaster whole = loadOrFail(path);
         const std::int64_t wholePixels = static_cast<std::int64_t>(whole.grid.columns) * whole.grid.rows;
         QVERIFY(!whole.coarsened);
