@@ -74,8 +74,8 @@ QString cellToolTip(const MissionDocument& document, MapPoint point) {
         const QString name = static_cast<std::size_t>(robot) < robots.size() && !robots[robot].name.empty()
                                  ? QString::fromStdString(robots[static_cast<std::size_t>(robot)].name)
                                  : tr("Robot %1").arg(robot + 1);
-        // A robot named by its number needs it only once.
-        who = name == tr("Robot %1").arg(robot + 1)
+        // A robot named by its number needs it only once (default names are stored untranslated).
+        who = name.compare(QStringLiteral("Robot %1").arg(robot + 1), Qt::CaseInsensitive) == 0
                   ? tr("Covered by %1.").arg(name)
                   : tr("Covered by %1 (robot %2).").arg(name, QString::number(robot + 1));
     }

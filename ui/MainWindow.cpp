@@ -1711,14 +1711,16 @@ io::FieldNamer MainWindow::fieldNamer(const std::string& planner) const {
 QString MainWindow::planningErrorText(const PlanningOutcome& outcome) const {
     if (!outcome.planningError)
         return outcome.error;
-    // As "Cannot plan" gives the starts it checks first; the robots the planner numbers, by their names.
-    // Its map points with their degrees, as the starts "Cannot plan" checks are given.
+    // As "Cannot plan" gives the starts it checks first: the robots the planner numbers by their names, the
+    // points with their degrees.
     const auto named = io::planningErrorText(*outcome.planningError, fieldNamer(), robotNames());
-    if (!named)
-        return outcome.error;
+    return named ? QString::fromStdString(withDegrees(*named)) : outcome.error;
+}
+
+// The message's map points with their longitude and latitude, where the map has a CRS.
+std::string MainWindow::withDegrees(const std::string& message) const {
     const auto* raster = document_->raster();
-    return QString::fromStdString(
-        raster != nullptr ? io::withPointsInDegrees(*named, raster->georeference, raster->grid) : *named);
+    return raster != nullptr ? io::withPointsInDegrees(message, raster->georeference, raster->grid) : message;
 }
 
 std::vector<std::string> MainWindow::robotNames() const {
@@ -1805,12 +1807,12 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     }
     comparison_ = outcome;
     // A planner's refusal named as the window names Plan's: the field in the window's terms, the robots by
-    // name.
+    // name, the points with their degrees.
     for (std::size_t row = 0; row < comparison_.rows.size() && row < comparison_.errors.size(); ++row)
         if (const auto& error = comparison_.errors[row])
             if (const auto named =
                     io::planningErrorText(*error, fieldNamer(comparison_.choices[row].planner), robotNames()))
-                comparison_.rows[row].message = *named;
+                comparison_.rows[row].message = withDegrees(*named);
     comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes(),
                                   document_->raster() != nullptr ? &document_->raster()->area : nullptr);
     logComparedWarnings();
@@ -2019,7 +2021,7 @@ bool MainWindow::applyPreset(const QString& preset) {
     return true;
 }
 
-// "  ·  1.62000° N, 7.40000° E" for a point of a map with a CRS; empty otherwise.
+// What the status line adds to a point: its degrees where the map has a CRS.
 QString MainWindow::degreesOf(MapPoint point) const {
     const auto* raster = document_->raster();
     if (raster == nullptr || !raster->georeference.hasCrs())

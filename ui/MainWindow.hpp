@@ -169,7 +169,9 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] QString drawnAreaPath(bool exclude) const;
     // Saving a mission copies area files drawn before it had a folder beside it; returns false on failure.
     bool keepDrawnAreasBeside(const QString& missionPath);
+    // "  ·  1.55616° N, 7.40209° E" for a point of a map with a CRS, empty otherwise: for the status line.
     [[nodiscard]] QString degreesOf(MapPoint point) const;
+    [[nodiscard]] std::string withDegrees(const std::string& message) const;
     void showCursor(MapPoint point);
     void handlePlanningFinished(const PlanningOutcome& outcome);
     void handleExportFinished(const ExportOutcome& outcome);

@@ -434,6 +434,7 @@ class RasterLoadingTest : public QObject {
                                  std::to_string(raster.grid.rows) + " (mode resampling)";
         const auto warning = std::find_if(raster.warnings.begin(), raster.warnings.end(),
                                           [&](const std::string& text) { return text.rfind(head, 0) == 0; });
+        QVERIFY(!raster.warnings.empty());
         QVERIFY2(warning != raster.warnings.end(), raster.warnings.front().c_str());
         QVERIFY2(warning->size() > head.size() + tail.size() &&
                      warning->compare(warning->size() - tail.size(), tail.size(), tail) == 0,
