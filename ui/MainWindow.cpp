@@ -1719,8 +1719,7 @@ QString MainWindow::planningErrorText(const PlanningOutcome& outcome) const {
 
 // The message's map points with their longitude and latitude, where the map has a CRS.
 std::string MainWindow::withDegrees(const std::string& message) const {
-    const auto* raster = document_->raster();
-    return raster != nullptr ? io::withPointsInDegrees(message, raster->georeference, raster->grid) : message;
+    return io::messageForPeople(message, document_->raster(), {});
 }
 
 std::vector<std::string> MainWindow::robotNames() const {
