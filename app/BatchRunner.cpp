@@ -15,6 +15,7 @@
 #include "io/ComparisonExport.hpp"
 #include "io/ComparisonRanking.hpp"
 #include "io/ExportCatalogue.hpp"
+#include "io/LongPlanCauses.hpp"
 #include "io/MissionScale.hpp"
 #include "io/PlanExport.hpp"
 #include "io/PointsInDegrees.hpp"
@@ -120,6 +121,26 @@ template <typename T> T valueOrBadInput(io::Result<T> result) {
     if (!result)
         badInput(result.error());
     return std::move(result.value());
+}
+
+// "the robots need 155 d 13 h for all the raster's land: …": what to change, in the command line's words.
+std::string longPlanAdvice(const io::LongPlanCauses& causes, std::size_t robots, double makespanSeconds) {
+    std::string advice =
+        (robots == 1 ? "the robot needs " : "the robots need ") + formatDuration(makespanSeconds);
+    if (causes.wholeRaster)
+        advice += " for all the raster's land: to plan part of it, give the area's polygons (--area FILE, or "
+                  "area.include in a mission file); for a wider sensor footprint, --fov or --fov-scale";
+    if (causes.groundSpeeds)
+        advice +=
+            std::string(causes.wholeRaster ? "; if" : ": if") +
+            " the robots fly, give --vehicle multirotor (or fixed-wing) and --cruise-speed M/S (the class "
+            "table's speeds, " +
+            formatQuantity(causes.slowestSpeedMetresPerSecond, 3) +
+            (causes.fastestSpeedMetresPerSecond > causes.slowestSpeedMetresPerSecond
+                 ? " to " + formatQuantity(causes.fastestSpeedMetresPerSecond, 3)
+                 : std::string()) +
+            " m/s, are a ground robot's)";
+    return advice;
 }
 
 } // namespace
@@ -899,13 +920,8 @@ void BatchRunner::printSummary(const Plan& plan) const {
                 << formatDuration(metrics.fieldLowerBoundSeconds) << " in the field\n";
     if (const TimelineLayer* timeline = timelineLayerOf(plan))
         output_ << "mcpp: " << timelineSentence(timeline->summary()) << '\n';
-    // Weeks of work usually mean the whole raster was planned when a part of it was meant.
-    constexpr double weeks = 14.0 * 24.0 * 3600.0;
-    if (metrics.makespanSeconds > weeks && mission_.area.empty())
-        output_ << "mcpp: " << (plan.paths.size() == 1 ? "the robot needs " : "the robots need ")
-                << formatDuration(metrics.makespanSeconds)
-                << " for all the raster's land: to plan part of it, give the area's polygons (--area FILE, "
-                   "or area.include in a mission file); for a wider sensor footprint, --fov or --fov-scale\n";
+    if (const auto causes = io::longPlanCauses(metrics.makespanSeconds, mission_, classes_))
+        output_ << "mcpp: " << longPlanAdvice(*causes, plan.paths.size(), metrics.makespanSeconds) << '\n';
     output_ << "mcpp: outputs in " << options_.outputDirectory << '\n' << std::flush;
 }
 

@@ -10,6 +10,7 @@
 #include "io/AutopilotMission.hpp"
 #include "io/ClassTableSources.hpp"
 #include "io/ExportCatalogue.hpp"
+#include "io/LongPlanCauses.hpp"
 #include "io/MissionInputs.hpp"
 #include "io/MissionScale.hpp"
 #include "io/PlanExport.hpp"
@@ -1827,6 +1828,32 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     emit comparisonFinished(!outcome.cancelled && planned > 0);
 }
 
+// A plan of weeks: what to change, where the window changes it.
+void MainWindow::logLongPlanAdvice(double makespanSeconds) {
+    const auto causes = io::longPlanCauses(makespanSeconds, document_->mission(), document_->classes());
+    if (!causes)
+        return;
+    QString advice = tr("Note: the robots need %1").arg(ResultsPanel::formatDuration(makespanSeconds));
+    if (causes->wholeRaster)
+        advice +=
+            tr(" for all the raster's land: to plan part of it, draw it (Plan ▸ Draw area of interest) or "
+               "open its polygons (Plan ▸ Area of interest from file…); for a wider sensor footprint, raise "
+               "the classes' field of view");
+    if (causes->groundSpeeds) {
+        const QString speeds = causes->fastestSpeedMetresPerSecond > causes->slowestSpeedMetresPerSecond
+                                   ? tr("%1 to %2 m/s")
+                                         .arg(causes->slowestSpeedMetresPerSecond)
+                                         .arg(causes->fastestSpeedMetresPerSecond)
+                                   : tr("%1 m/s").arg(causes->slowestSpeedMetresPerSecond);
+        advice +=
+            (causes->wholeRaster ? tr("; if") : tr(": if")) +
+            tr(" the robots fly, set their vehicle and cruise speed in Plan ▸ Robot vehicles… (the class "
+               "table's speeds, %1, are a ground robot's)")
+                .arg(speeds);
+    }
+    messageLog_->add(advice + QLatin1Char('.'));
+}
+
 // A plan's warnings and notes, whole, in the messages panel, where every message is kept.
 void MainWindow::logPlanIssues(const Plan& plan) {
     const std::vector<std::string> names = robotNames();
@@ -1971,6 +1998,7 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                                     .arg(metrics.ratio, 0, 'f', 3), // as plan.png gives it
                    15000);
         logPlanIssues(*outcome.plan); // whole, where every message is kept
+        logLongPlanAdvice(metrics.makespanSeconds);
     } else if (outcome.cancelled) {
         showStatus(tr("Planning cancelled; the previous plan, if any, is kept."));
     }

@@ -178,6 +178,7 @@ class MainWindow : public QMainWindow {
     void handleComparisonFinished(const ComparisonOutcome& outcome);
     void showComparedPlan(int row);
     void logPlanIssues(const Plan& plan);
+    void logLongPlanAdvice(double makespanSeconds);
     void logComparedWarnings();
     void showBusy(const QString& stage, bool busy);
     void placeStart(MapPoint point);

@@ -457,6 +457,21 @@ void TestBatchEndToEnd::weeksOfWorkSuggestAnArea() {
                  QStringLiteral("for all the raster's land: to plan part of it, give the area's "
                                 "polygons (--area FILE")),
              qPrintable(run.standardOutput));
+    // Rovers at the class table's speeds: a drone user is told how to plan at a drone's pace.
+    QVERIFY2(run.standardOutput.contains(QStringLiteral(
+                 "if the robots fly, give --vehicle multirotor (or fixed-wing) and --cruise-speed M/S (the "
+                 "class table's speeds, 0.0008 to 0.003 m/s, are a ground robot's)")),
+             qPrintable(run.standardOutput));
+    // Aircraft at their own speed, still weeks over the whole raster: only the area is advised.
+    run = runMcpp(
+        QStringList{"--batch", "--raster", samplePath("synthetic/synthetic.asc"), "--classes", slow} + robot +
+        QStringList{"--vehicle", "multirotor", "--cruise-speed", "0.001", "--out",
+                    scratch_.filePath("slow-drone")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
+    QVERIFY2(run.standardOutput.contains(QStringLiteral("for all the raster's land")),
+             qPrintable(run.standardOutput));
+    QVERIFY2(!run.standardOutput.contains(QStringLiteral("if the robots fly")),
+             qPrintable(run.standardOutput));
     // At the sample's own speeds the plan takes hours: nothing to suggest.
     run = runMcpp(syntheticFlags() + robot + QStringList{"--out", scratch_.filePath("quick")});
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));

@@ -897,6 +897,29 @@ class TestMainWindow : public QObject {
         QVERIFY2(!robotLine(0).contains(QStringLiteral("in the field")), qPrintable(robotLine(0)));
     }
 
+    // Rovers crawling for weeks over the whole map: the Messages panel says what to change in the window.
+    void weeksOfWorkSayWhatToChange() {
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        io::Mission mission = test::twoRobotMission();
+        mission.classes = ClassTable({LandCoverClass{1, "Grass", 0x80c080, 0.0002, 10.0, true}});
+        window.document()->reset(test::grassRaster(), mission, QString());
+        QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
+        QVERIFY2(window.startPlanning(), qPrintable(window.lastError()));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
+        const QStringList advice = window.messageLog()->messages().filter(QStringLiteral("the robots need"));
+        QCOMPARE(advice.size(), 1);
+        QVERIFY2(advice.first().contains(QStringLiteral("Plan ▸ Draw area of interest")),
+                 qPrintable(advice.first()));
+        QVERIFY2(
+            advice.first().contains(QStringLiteral("set their vehicle and cruise speed in Plan ▸ Robot "
+                                                   "vehicles… (the class table's speeds, 0.0002 m/s, are "
+                                                   "a ground robot's)")),
+            qPrintable(advice.first()));
+    }
+
     // Starts the window's own checks pass but the planner refuses (two in one cell of its grid): the
     // message names the robot as the robot table does and gives the advice in the window's terms.
     void refusesStartsSharingACellWithAdvice() {
