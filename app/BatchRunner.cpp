@@ -635,7 +635,7 @@ void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) 
     const std::string sorties = io::sortieFilesNote(context, robot, file);
     if (!sorties.empty())
         note(sorties + ", and as .waypoints files");
-    if (const std::string tooLong = io::flightTimeWarning(context, robot); !tooLong.empty())
+    if (const std::string tooLong = io::flightTimeWarning(context, robot, file); !tooLong.empty())
         warn(tooLong);
 }
 

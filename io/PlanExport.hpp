@@ -140,8 +140,9 @@ struct ExportContext {
 // empty when it is written whole.
 [[nodiscard]] std::string splitMissionNote(const ExportContext& context, int robot, const std::string& path);
 // What a user must know when some of a robot's mission parts take longer than its vehicle's flight time (a
-// part holds at least two points: its path goes out of one flight's reach); empty when all fit.
-[[nodiscard]] std::string flightTimeWarning(const ExportContext& context, int robot);
+// part holds at least two points: its path goes out of one flight's reach), naming their files beside `path`
+// (the whole mission's file name); empty when all fit.
+[[nodiscard]] std::string flightTimeWarning(const ExportContext& context, int robot, const std::string& path);
 // When the last robot is done in the field where some mission is written in parts: "the last robot, centre,
 // done in the field after 5 d 13 h, its 271 flights and the turnarounds between them included"; empty when
 // no aircraft's mission and no mission with turnarounds is in parts, or a time is unknown.

@@ -92,7 +92,7 @@ void addMissionFileIssues(JsonValue& issues, JsonValue& warnings, const ExportCo
         const std::string besideWaypoints = ", and the same for its .waypoints file";
         const std::tuple<const char*, const char*, std::string> notes[] = {
             {"information", "mission-split", splitMissionNote(context, robot.robot, file) + besideWaypoints},
-            {"warning", "flight-time-exceeded", flightTimeWarning(context, robot.robot)},
+            {"warning", "flight-time-exceeded", flightTimeWarning(context, robot.robot, file)},
             {"information", "mission-sorties",
              sortieFilesNote(context, robot.robot, file) + besideWaypoints}};
         for (const auto& [severity, code, message] : notes) {

@@ -639,9 +639,32 @@ std::string outOfReachNote(const VehicleSettings& vehicle, const AutopilotMissio
                         : std::string());
 }
 
+// The files of the parts too long for one flight, so the user knows which to hold back:
+// "robot_1_part_041.plan, robot_1_part_042.plan, robot_1_part_047.plan and 81 more".
+std::string partsOverFlightTime(const AutopilotMission& mission, const VehicleSettings& vehicle,
+                                const std::string& path) {
+    constexpr std::size_t named = 3;
+    std::vector<std::string> files;
+    std::size_t over = 0;
+    for (std::size_t part = 0; part < mission.parts.size(); ++part) {
+        if (!exceedsFlightTime(mission.parts[part], vehicle))
+            continue;
+        if (++over <= named)
+            files.push_back(
+                std::filesystem::path(missionPartPath(path, part, mission.parts.size())).filename().string());
+    }
+    std::string text;
+    for (std::size_t file = 0; file < files.size(); ++file)
+        text += (file == 0                                          ? ""
+                 : file + 1 == files.size() && over == files.size() ? " and "
+                                                                    : ", ") +
+                files[file];
+    return over > files.size() ? text + " and " + std::to_string(over - files.size()) + " more" : text;
+}
+
 } // namespace
 
-std::string flightTimeWarning(const ExportContext& context, int robot) {
+std::string flightTimeWarning(const ExportContext& context, int robot, const std::string& path) {
     const VehicleSettings& vehicle = context.vehicle(robot);
     if (!(vehicle.flightTimeSeconds > 0.0))
         return {};
@@ -659,7 +682,8 @@ std::string flightTimeWarning(const ExportContext& context, int robot) {
            formatDuration(vehicle.flightTimeSeconds) + " " + batteryTimeName(vehicle.type) + ": " +
            (aircraft ? outOfReachNote(vehicle, mission)
                      : "its path has stretches longer than one battery lasts") +
-           " (fits_flight 0 in the GeoPackage's missions layer). Add robots, or start them nearer that "
+           " (" + partsOverFlightTime(mission, vehicle, path) +
+           "; fits_flight 0 in the GeoPackage's missions layer). Add robots, or start them nearer that "
            "ground, "
            "or plan with wavefront-battery and chargers";
 }

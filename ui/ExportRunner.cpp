@@ -62,7 +62,8 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
                 !sorties.empty())
                 outcome.notes << QString::fromStdString(sorties) + QStringLiteral(".");
         if (format->splitByItemLimit)
-            if (const std::string tooLong = io::flightTimeWarning(context, robot); !tooLong.empty())
+            if (const std::string tooLong = io::flightTimeWarning(context, robot, path.toStdString());
+                !tooLong.empty())
                 outcome.notes << QString::fromStdString(tooLong) + QStringLiteral(".");
         progress(file + 1, files);
     }

@@ -513,6 +513,22 @@ void ResultsPanel::showTimeInTheField(const std::vector<io::MissionSize>& sizes)
     }
 }
 
+namespace {
+
+// Whether a split mission's parts come from its flight time: where its items fit the limit, or where the
+// flights make at least twice the parts the limit alone would (as batch mode's notes judge it).
+bool splitForFlightTime(const io::MissionSize& size, const io::VehicleSettings& vehicle) {
+    if (!(vehicle.flightTimeSeconds > 0.0))
+        return false;
+    if (vehicle.maxWaypoints == 0 || size.items <= vehicle.maxWaypoints)
+        return true;
+    const std::size_t byItemLimit =
+        static_cast<std::size_t>((size.items + vehicle.maxWaypoints - 1) / vehicle.maxWaypoints);
+    return size.parts >= 2 * byItemLimit;
+}
+
+} // namespace
+
 QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& sizes,
                                         const std::vector<io::VehicleSettings>& vehicles,
                                         const QStringList& names) {
@@ -529,11 +545,8 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
         overFlightTime += sizes[robot].partsOverFlightTime;
         lastDone = std::max(lastDone, sizes[robot].fieldSeconds);
         if (sizes[robot].parts > 1) {
-            // Split for its flight time where it has one and its items fit the limit.
-            const bool timed = robot < vehicles.size() && vehicles[robot].flightTimeSeconds > 0.0;
-            const bool fits = robot < vehicles.size() && (vehicles[robot].maxWaypoints == 0 ||
-                                                          sizes[robot].items <= vehicles[robot].maxWaypoints);
-            const bool forFlight = timed && fits;
+            const bool forFlight =
+                robot < vehicles.size() && splitForFlightTime(sizes[robot], vehicles[robot]);
             (forFlight ? forFlightTime : aboveItemLimit) += 1;
             split << tr("%1 in %2").arg(robotName(names, static_cast<int>(robot))).arg(sizes[robot].parts);
             reasons << (forFlight ? tr("flight time") : tr("item limit"));

@@ -794,7 +794,16 @@ class AutopilotMissionTest : public QObject {
         for (const Waypoint& point : mission.points)
             farthest =
                 std::max(farthest, std::hypot(point.x - mission.points[0].x, point.y - mission.points[0].y));
-        const std::string warning = flightTimeWarning(context, 0);
+        const std::string warning = flightTimeWarning(context, 0, "robot_1.plan");
+        // The parts too long are named by file, the first three of them, in order.
+        std::vector<std::string> over;
+        for (std::size_t part = 0; part < mission.parts.size(); ++part)
+            if (exceedsFlightTime(mission.parts[part], drone))
+                over.push_back(missionPartPath("robot_1.plan", part, mission.parts.size()));
+        QVERIFY(over.size() > 3);
+        const std::string named = " (" + over[0] + ", " + over[1] + ", " + over[2] + " and " +
+                                  std::to_string(over.size() - 3) + " more; fits_flight 0";
+        QVERIFY2(warning.find(named) != std::string::npos, (warning + "\nwanted: " + named).c_str());
         QVERIFY2(warning.find(
                      "its farthest waypoint lies " + formatDistance(farthest) +
                      " from its start, and one flight at 1 m/s goes at most 14 m from its start and back") !=
@@ -802,7 +811,7 @@ class AutopilotMissionTest : public QObject {
                  warning.c_str());
         // Flights long enough for the whole mission: nothing to say.
         lawnmowerExport.settings.vehicle.flightTimeSeconds = 3600.0 * 10.0;
-        QVERIFY(flightTimeWarning(lawnmowerExport.context(), 0).empty());
+        QVERIFY(flightTimeWarning(lawnmowerExport.context(), 0, "robot_1.plan").empty());
         drone.type = VehicleType::Rover;
         QCOMPARE(flightReachMetres(drone), 0.0);
     }

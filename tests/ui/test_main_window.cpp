@@ -319,6 +319,13 @@ class TestMainWindow : public QObject {
             ui::ResultsPanel::waypointFilesText({{380, 1}, {380, 1}, {90, 6, 1900.0, 2}}, vehicles, names);
         QCOMPARE(flights, QStringLiteral("1 robot over the flight time, in parts: south in 6; "
                                          "2 parts longer than a flight (out of its reach)"));
+        // Above the item limit too, but the flights make far more parts than the limit alone would.
+        const QString flightsAboveLimit =
+            ui::ResultsPanel::waypointFilesText({{380, 1}, {380, 1}, {2127, 223}}, vehicles, names);
+        QCOMPARE(flightsAboveLimit, QStringLiteral("1 robot over the flight time, in parts: south in 223"));
+        const QString limitAboveFlights =
+            ui::ResultsPanel::waypointFilesText({{380, 1}, {380, 1}, {2127, 5}}, vehicles, names);
+        QCOMPARE(limitAboveFlights, QStringLiteral("1 robot above the item limit, in parts: south in 5"));
         // Split for either reason, each robot says its own.
         const QString both =
             ui::ResultsPanel::waypointFilesText({{1500, 3}, {380, 1}, {90, 6}}, vehicles, names);
