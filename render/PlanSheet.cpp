@@ -13,14 +13,34 @@ namespace mcpp::render {
 
 namespace {
 
-QString titleOf(const Plan& plan) {
+// When the last robot is home, where some robot is done in the field later than its path (flights, trips
+// from its start, turnarounds); 0 where none is.
+double lastHomeSeconds(const Plan& plan, const std::vector<FieldTime>& fieldTimes) {
+    double last = 0.0;
+    bool later = false;
+    for (std::size_t robot = 0; robot < plan.paths.size(); ++robot) {
+        const bool inTheField = robot < fieldTimes.size() && fieldTimes[robot].seconds > 0.0;
+        later = later || inTheField;
+        last = std::max(last, inTheField ? fieldTimes[robot].seconds : plan.paths[robot].timeSeconds);
+    }
+    return later ? last : 0.0;
+}
+
+// As batch mode's summary words it: where flights make the robots later than their paths, the last one
+// home comes first and the paths' makespan second.
+QString titleOf(const Plan& plan, const std::vector<FieldTime>& fieldTimes) {
     const std::size_t robots = plan.paths.size();
-    return QStringLiteral("Coverage plan: %1, %2 %3, makespan %4 (%5 × the lower bound)")
+    const QString makespan = QStringLiteral("makespan %1 (%2 × the lower bound)")
+                                 .arg(QString::fromStdString(formatDuration(plan.metrics.makespanSeconds)))
+                                 .arg(plan.metrics.ratio, 0, 'f', 3);
+    const double lastHome = lastHomeSeconds(plan, fieldTimes);
+    return QStringLiteral("Coverage plan: %1, %2 %3, %4")
         .arg(QString::fromStdString(plan.planner))
         .arg(robots)
         .arg(robots == 1 ? QStringLiteral("robot") : QStringLiteral("robots"))
-        .arg(QString::fromStdString(formatDuration(plan.metrics.makespanSeconds)))
-        .arg(plan.metrics.ratio, 0, 'f', 3);
+        .arg(lastHome > 0.0 ? QStringLiteral("the last home after %1; the paths' %2")
+                                  .arg(QString::fromStdString(formatDuration(lastHome)), makespan)
+                            : makespan);
 }
 
 } // namespace
@@ -45,8 +65,9 @@ PlanSheet::PlanSheet(const ClassGrid& grid, const ClassTable& classes, const Pla
                      QSize maxMapSize)
     : grid_(grid), classes_(classes), plan_(plan), extras_(std::move(extras)),
       crossings_(impassableCrossings(plan.cells, plan.regions, grid, classes)),
-      sections_(planLegend(classes, &plan, extras_.robotNames, &grid, &crossings_)), title_(titleOf(plan)),
-      rings_(flightReachRings(plan, extras_.flightReach)), frame_(planFrame(grid, {&plan}, rings_)) {
+      sections_(planLegend(classes, &plan, extras_.robotNames, &grid, &crossings_)),
+      title_(titleOf(plan, extras_.fieldTimes)), rings_(flightReachRings(plan, extras_.flightReach)),
+      frame_(planFrame(grid, {&plan}, rings_)) {
     // Only rings that show in the frame are explained (one round a far take-off may lie wholly outside).
     if (someRingShows(frame_, rings_))
         addFlightReach(sections_, extras_.flightReach);

@@ -859,6 +859,26 @@ class TestPlanRenderer : public QObject {
             QVERIFY2(text.contains(words), words);
     }
 
+    // Where flights make a robot later than its path, the title says when the last one is home first, as
+    // batch mode's summary does; without field times it gives the paths' makespan alone.
+    void sheetTitleSaysWhenTheLastRobotIsHome() {
+        Plan plan = eastboundPlan();
+        plan.paths[0].timeSeconds = 5400.0;
+        plan.metrics.makespanSeconds = 5400.0;
+        plan.metrics.ratio = 1.25;
+        const std::vector<std::string> names{"Scout"};
+        const render::PlanSheet pathsOnly(twoClassGrid(), twoClassTable(), plan,
+                                          {nullptr, names, {}, nullptr, {}}, QSize(800, 800));
+        QCOMPARE(pathsOnly.title(),
+                 QStringLiteral("Coverage plan: test, 1 robot, makespan 1 h 30 min (1.250 × "
+                                "the lower bound)"));
+        const render::PlanSheet flown(twoClassGrid(), twoClassTable(), plan,
+                                      {nullptr, names, {}, nullptr, {{9000.0, 4, true}}}, QSize(800, 800));
+        QCOMPARE(flown.title(),
+                 QStringLiteral("Coverage plan: test, 1 robot, the last home after 2 h 30 min; the "
+                                "paths' makespan 1 h 30 min (1.250 × the lower bound)"));
+    }
+
     void marksCellsWhosePathCrossesImpassableLand() {
         const CrossingScene scene = crossingScene();
         const auto crossings = impassableCrossings(scene.plan.cells, scene.plan.regions, scene.problem.grid,
