@@ -1,3 +1,4 @@
+#include "core/model/RobotColours.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ogrsf_frmts.h>
 #include <optional>
 
@@ -193,7 +195,32 @@ void setRobotFields(OGRFeature& feature, const ExportContext& context, int robot
     feature.SetField("robot_name", context.robotName(robot).c_str());
 }
 
-// The layers GeoPackage and KML share. KML readers show a feature's "name", so `named` adds one.
+// A robot's colour as plan.png and regions.tif give it, "#e6194b", with `alpha` appended where given.
+std::string robotColourText(int robot, std::optional<unsigned> alpha = std::nullopt) {
+    char text[16];
+    const std::uint32_t rgb = robotColourRgb(robot);
+    if (alpha)
+        std::snprintf(text, sizeof text, "#%06x%02x", rgb, *alpha);
+    else
+        std::snprintf(text, sizeof text, "#%06x", rgb);
+    return text;
+}
+
+// How KML readers draw a robot's features, in OGR's feature style language (LIBKML writes each as the
+// placemark's style): regions filled see-through with the robot's colour so the ground shows, paths and
+// start markers in that colour. Without them Google Earth draws every robot alike.
+std::string regionStyle(int robot) {
+    constexpr unsigned seeThrough = 0x55;
+    return "BRUSH(fc:" + robotColourText(robot, seeThrough) + ");PEN(c:" + robotColourText(robot) + ",w:2px)";
+}
+std::string pathStyle(int robot) {
+    return "PEN(c:" + robotColourText(robot) + ",w:2px)";
+}
+std::string startStyle(int robot) {
+    return "SYMBOL(c:" + robotColourText(robot) + ",s:1.3)";
+}
+
+// The layers GeoPackage and KML share. KML readers show a feature's "name" and style, so `named` adds them.
 Status writeRegionLayer(VectorFileWriter& writer, const ExportContext& context,
                         std::vector<internal::RegionFeature>& regions, const OGRSpatialReference* crs,
                         bool named) {
@@ -211,8 +238,10 @@ Status writeRegionLayer(VectorFileWriter& writer, const ExportContext& context,
         return status;
     for (auto& region : regions) {
         OGRFeature feature(layer.value()->GetLayerDefn());
-        if (named)
+        if (named) {
             feature.SetField("name", (context.robotName(region.robot) + " region").c_str());
+            feature.SetStyleString(regionStyle(region.robot).c_str());
+        }
         setRobotFields(feature, context, region.robot);
         feature.SetField("cost_s", region.costSeconds);
         feature.SetField("area_m2", region.areaSquareMetres);
@@ -240,8 +269,10 @@ Status writePathLayer(VectorFileWriter& writer, const ExportContext& context,
         return status;
     for (auto& line : paths) {
         OGRFeature feature(layer.value()->GetLayerDefn());
-        if (named)
+        if (named) {
             feature.SetField("name", (context.robotName(line.robot) + " path").c_str());
+            feature.SetStyleString(pathStyle(line.robot).c_str());
+        }
         setRobotFields(feature, context, line.robot);
         feature.SetField("length_m", line.lengthMetres);
         feature.SetField("time_s", line.timeSeconds);
@@ -266,8 +297,10 @@ Status writeStartLayer(VectorFileWriter& writer, const ExportContext& context,
         return status;
     for (auto& start : starts) {
         OGRFeature feature(layer.value()->GetLayerDefn());
-        if (named)
+        if (named) {
             feature.SetField("name", (context.robotName(start.robot) + " start").c_str());
+            feature.SetStyleString(startStyle(start.robot).c_str());
+        }
         setRobotFields(feature, context, start.robot);
         feature.SetGeometryDirectly(start.geometry.release());
         if (Status status = writer.add(layer.value(), feature); !status)
@@ -325,8 +358,10 @@ Status writeTakenOverLayer(VectorFileWriter& writer, const ExportContext& contex
         return status;
     for (auto& part : parts) {
         OGRFeature feature(layer.value()->GetLayerDefn());
-        if (named)
+        if (named) {
             feature.SetField("name", (context.robotName(part.robot) + " took over").c_str());
+            feature.SetStyleString(regionStyle(part.robot).c_str());
+        }
         setRobotFields(feature, context, part.robot);
         feature.SetField("area_m2", part.areaSquareMetres);
         feature.SetField("cells", part.cells);

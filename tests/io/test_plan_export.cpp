@@ -5,6 +5,7 @@
 #include "core/coverage/StraightRunMerging.hpp"
 #include "core/model/AreaOutline.hpp"
 #include "core/model/HumanUnits.hpp"
+#include "core/model/RobotColours.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "io/AutopilotMission.hpp"
@@ -19,6 +20,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <gdal_priv.h>
 #include <map>
@@ -718,6 +720,27 @@ class PlanExportTest : public QObject {
         QCOMPARE(dataset->GetLayerByName("regions")->GetFeatureCount(), GIntBig{2});
         QCOMPARE(dataset->GetLayerByName("starts")->GetFeatureCount(), GIntBig{2});
         QCOMPARE(dataset->GetLayerByName("unreachable")->GetFeatureCount(), GIntBig{1});
+        // Each robot's features are drawn in its colour, as on plan.png, its region see-through.
+        const auto stylesOf = [&](const char* layer) {
+            std::vector<std::string> styles;
+            for (auto& feature : *dataset->GetLayerByName(layer))
+                styles.emplace_back(feature->GetStyleString() != nullptr ? feature->GetStyleString() : "");
+            return styles;
+        };
+        const auto colour = [](int number, const char* alpha) {
+            char text[16];
+            std::snprintf(text, sizeof text, "#%06X%s", robotColourRgb(number), alpha);
+            return std::string(text);
+        };
+        for (int shown = 0; shown < 2; ++shown) {
+            const auto index = static_cast<std::size_t>(shown);
+            const std::string line = stylesOf("paths")[index];
+            const std::string region = stylesOf("regions")[index];
+            const std::string start = stylesOf("starts")[index];
+            QVERIFY2(line.find("PEN(c:" + colour(shown, "FF")) != std::string::npos, line.c_str());
+            QVERIFY2(region.find("BRUSH(fc:" + colour(shown, "55")) != std::string::npos, region.c_str());
+            QVERIFY2(start.find("SYMBOL(c:" + colour(shown, "FF")) != std::string::npos, start.c_str());
+        }
     }
 
     void gpxHasOneRoutePerRobot() {
