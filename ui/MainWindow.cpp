@@ -976,6 +976,8 @@ void MainWindow::updateResults() {
     for (const auto& robot : document_->robots())
         names << QString::fromStdString(robot.name);
     resultsPanel_->showPlan(document_->plan(), names, document_->raster());
+    if (const Plan* plan = document_->plan())
+        resultsPanel_->addNote(longPlanAdvice(plan->metrics.makespanSeconds)); // where the user looks
     resultsPanel_->setStale(document_->planStale());
     sizeWaypointFiles();
 }
@@ -1828,12 +1830,12 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     emit comparisonFinished(!outcome.cancelled && planned > 0);
 }
 
-// A plan of weeks: what to change, where the window changes it.
-void MainWindow::logLongPlanAdvice(double makespanSeconds) {
+// A plan of weeks: what to change, where the window changes it; empty for a plan of less.
+QString MainWindow::longPlanAdvice(double makespanSeconds) const {
     const auto causes = io::longPlanCauses(makespanSeconds, document_->mission(), document_->classes());
     if (!causes)
-        return;
-    QString advice = tr("Note: the robots need %1").arg(ResultsPanel::formatDuration(makespanSeconds));
+        return {};
+    QString advice = tr("The robots need %1").arg(ResultsPanel::formatDuration(makespanSeconds));
     if (causes->wholeRaster)
         advice +=
             tr(" for all the raster's land: to plan part of it, draw it (Plan ▸ Draw area of interest) or "
@@ -1851,7 +1853,7 @@ void MainWindow::logLongPlanAdvice(double makespanSeconds) {
                "table's speeds, %1, are a ground robot's)")
                 .arg(speeds);
     }
-    messageLog_->add(advice + QLatin1Char('.'));
+    return advice + QLatin1Char('.');
 }
 
 // A plan's warnings and notes, whole, in the messages panel, where every message is kept.
@@ -1998,7 +2000,8 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                                     .arg(metrics.ratio, 0, 'f', 3), // as plan.png gives it
                    15000);
         logPlanIssues(*outcome.plan); // whole, where every message is kept
-        logLongPlanAdvice(metrics.makespanSeconds);
+        if (const QString advice = longPlanAdvice(metrics.makespanSeconds); !advice.isEmpty())
+            messageLog_->add(tr("Note: %1").arg(advice));
     } else if (outcome.cancelled) {
         showStatus(tr("Planning cancelled; the previous plan, if any, is kept."));
     }

@@ -178,7 +178,7 @@ class MainWindow : public QMainWindow {
     void handleComparisonFinished(const ComparisonOutcome& outcome);
     void showComparedPlan(int row);
     void logPlanIssues(const Plan& plan);
-    void logLongPlanAdvice(double makespanSeconds);
+    [[nodiscard]] QString longPlanAdvice(double makespanSeconds) const;
     void logComparedWarnings();
     void showBusy(const QString& stage, bool busy);
     void placeStart(MapPoint point);

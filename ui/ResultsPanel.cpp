@@ -421,6 +421,18 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
     fitSummary();
 }
 
+void ResultsPanel::addNote(const QString& note) {
+    if (note.isEmpty())
+        return;
+    const QString shown = notes_->text();
+    notes_->setText(shown.isEmpty()
+                        ? note
+                        : (shown.startsWith(QStringLiteral("• ")) ? shown : QStringLiteral("• ") + shown) +
+                              QStringLiteral("\n• ") + note);
+    summary_->setRowVisible(notes_, true);
+    fitSummary();
+}
+
 // A plan shown while the panel was hidden (a tab behind another) is fitted when the panel shows.
 void ResultsPanel::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);

@@ -29,6 +29,8 @@ class ResultsPanel : public QWidget {
     // CRS gives the points the warnings name their degrees.
     void showPlan(const Plan* plan, const QStringList& names, const io::LoadedRaster* raster = nullptr);
     void setStale(bool stale);
+    // A note of the window's own beside the plan's (advice on the settings planned with); none if empty.
+    void addNote(const QString& note);
     // How big each robot's waypoint files come out with its vehicle's item limit (vehicles: by robot); worked
     // out off the window's thread after each plan, so shown when ready.
     void showWaypointFiles(const std::vector<io::MissionSize>& sizes,

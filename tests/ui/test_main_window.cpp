@@ -904,7 +904,8 @@ class TestMainWindow : public QObject {
         QVERIFY2(!robotLine(0).contains(QStringLiteral("in the field")), qPrintable(robotLine(0)));
     }
 
-    // Rovers crawling for weeks over the whole map: the Messages panel says what to change in the window.
+    // Rovers crawling for weeks over the whole map: the Messages and Results panels say what to change in
+    // the window.
     void weeksOfWorkSayWhatToChange() {
         ui::MainWindow window;
         window.setDialogsEnabled(false);
@@ -916,7 +917,8 @@ class TestMainWindow : public QObject {
         QVERIFY2(window.startPlanning(), qPrintable(window.lastError()));
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
-        const QStringList advice = window.messageLog()->messages().filter(QStringLiteral("the robots need"));
+        const QStringList advice =
+            window.messageLog()->messages().filter(QStringLiteral("Note: The robots need"));
         QCOMPARE(advice.size(), 1);
         QVERIFY2(advice.first().contains(QStringLiteral("Plan ▸ Draw area of interest")),
                  qPrintable(advice.first()));
@@ -925,6 +927,10 @@ class TestMainWindow : public QObject {
                                                    "vehicles… (the class table's speeds, 0.0002 m/s, are "
                                                    "a ground robot's)")),
             qPrintable(advice.first()));
+        // Where the user looks after planning too: the Results panel's notes.
+        auto* notes = window.resultsPanel()->findChild<QLabel*>(QStringLiteral("notesLabel"));
+        QVERIFY(notes != nullptr && !notes->isHidden());
+        QVERIFY2(notes->text().contains(QStringLiteral("Plan ▸ Robot vehicles…")), qPrintable(notes->text()));
     }
 
     // Starts the window's own checks pass but the planner refuses (two in one cell of its grid): the
