@@ -27,6 +27,8 @@ class VectorFileWriter {
     VectorFileWriter(std::string path, const char* driverName, const ExportContext& context)
         : file_(std::move(path)), driverName_(driverName), context_(context) {}
 
+    [[nodiscard]] const std::string& path() const { return file_.path(); }
+
     Status open(const char* const* creationOptions = nullptr) {
         return file_.create(driverName_, 0, 0, 0, GDT_Unknown, creationOptions);
     }
@@ -432,25 +434,26 @@ void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot
 }
 
 // Each robot's waypoint files as lines, one per part (a flight, for a battery), with what it holds and
-// takes: a user sees on the map which flights fit and where those that do not go.
+// takes: a user sees on the map which flights fit and where those that do not go. For KML (`toWgs84`
+// given) each part is named by its file and drawn in its robot's colour.
 Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
-                         const OGRSpatialReference* crs) {
+                         const OGRSpatialReference* crs, OGRCoordinateTransformation* toWgs84 = nullptr) {
     auto layer = writer.layer("missions", crs, wkbLineString);
     if (!layer)
         return Status::failure(layer.error());
-    if (Status status = createFields(writer, layer.value(),
-                                     {{{"robot", OFTInteger},
-                                       {"robot_name", OFTString},
-                                       {"part", OFTInteger},
-                                       {"parts", OFTInteger},
-                                       {"file", OFTString},
-                                       {"items", OFTInteger},
-                                       {"part_time_s", OFTReal},
-                                       {"farthest_m", OFTReal},
-                                       {"flight_time_s", OFTReal}}});
-        !status) {
+    Fields fields{{{"robot", OFTInteger},
+                   {"robot_name", OFTString},
+                   {"part", OFTInteger},
+                   {"parts", OFTInteger},
+                   {"file", OFTString},
+                   {"items", OFTInteger},
+                   {"part_time_s", OFTReal},
+                   {"farthest_m", OFTReal},
+                   {"flight_time_s", OFTReal}}};
+    if (toWgs84 != nullptr)
+        fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    if (Status status = createFields(writer, layer.value(), fields); !status)
         return status;
-    }
     if (Status status = writer.field(layer.value(), "fits_flight", OFTInteger, OFSTBoolean); !status)
         return status;
     for (const CoveragePath& path : context.plan.paths) {
@@ -458,6 +461,13 @@ Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
             OGRFeature feature(layer.value()->GetLayerDefn());
             setMissionPart(feature, context, path.robot, mission, part);
+            if (toWgs84 != nullptr) {
+                feature.SetField("name", feature.GetFieldAsString("file"));
+                feature.SetStyleString(pathStyle(path.robot).c_str());
+                if (!transformed(*feature.GetGeometryRef(), *toWgs84))
+                    return Status::failure(writer.path() + ": cannot transform a mission part to WGS84" +
+                                           QuietGdalErrors::detail());
+            }
             if (Status status = writer.add(layer.value(), feature); !status)
                 return status;
         }
@@ -590,6 +600,18 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
     }
     if (Status status = writeAreaLayers(writer, planFeatures.area, wgs84.get(), true); !status)
         return status;
+    // Split missions' parts, each flight on its own in Google Earth; a whole mission is its path already.
+    const auto split = [&](const CoveragePath& line) {
+        return autopilotMissionOf(context, line.robot).parts.size() > 1;
+    };
+    if (std::any_of(context.plan.paths.begin(), context.plan.paths.end(), split)) {
+        auto transformation = toWgs84(context.georeference, path);
+        if (!transformation)
+            return Status::failure(transformation.error());
+        if (Status status = writeMissionLayer(writer, context, wgs84.get(), transformation.value()->get());
+            !status)
+            return status;
+    }
     return writer.commit();
 }
 

@@ -472,6 +472,32 @@ class PlanExportTest : public QObject {
         // Both kinds of flight are there: near rows fit, far ones do not.
         QVERIFY2(fitting > 0 && tooLong > 0,
                  qPrintable(QStringLiteral("%1 fit, %2 do not").arg(fitting).arg(tooLong)));
+        // KML holds the parts too once some mission is split, for Google Earth: in degrees, named by their
+        // files, in the robot's colour.
+        const std::string kml = file("missions.kml");
+        QVERIFY(writePlanKml(exportContext, kml).ok());
+        Dataset kmlFile = openVector(kml);
+        OGRLayer* flights = kmlFile->GetLayerByName("missions");
+        QVERIFY(flights != nullptr);
+        const AutopilotMission& drone0 = autopilotMissionOf(exportContext, 0);
+        std::size_t kmlParts = 0;
+        for (auto& feature : *flights) {
+            const auto part = static_cast<std::size_t>(feature->GetFieldAsInteger("part") - 1);
+            QVERIFY(part < drone0.parts.size() || feature->GetFieldAsInteger("robot") == 2);
+            QCOMPARE(std::string(feature->GetFieldAsString("name")),
+                     std::string(feature->GetFieldAsString("file")));
+            QVERIFY(std::string(feature->GetStyleString()).find("PEN(c:#") == 0);
+            if (feature->GetFieldAsInteger("robot") != 1)
+                continue;
+            ++kmlParts;
+            const MissionPart& piece = drone0.parts[part];
+            const std::vector<Waypoint> points(
+                drone0.points.begin() + static_cast<std::ptrdiff_t>(piece.first),
+                drone0.points.begin() + static_cast<std::ptrdiff_t>(piece.last) + 1);
+            const OGRGeometry* geometry = feature->GetGeometryRef();
+            QVERIFY(lineError(*geometry->toLineString(), points, reference_) < 1e-7);
+        }
+        QCOMPARE(kmlParts, drone0.parts.size());
         // report.csv counts the same flights: the drone's too long, its longest and all of them in one.
         const std::string csv = file("missions.csv");
         QVERIFY(writeReportCsv(exportContext, csv).ok());
@@ -720,6 +746,7 @@ class PlanExportTest : public QObject {
         QCOMPARE(dataset->GetLayerByName("regions")->GetFeatureCount(), GIntBig{2});
         QCOMPARE(dataset->GetLayerByName("starts")->GetFeatureCount(), GIntBig{2});
         QCOMPARE(dataset->GetLayerByName("unreachable")->GetFeatureCount(), GIntBig{1});
+        QVERIFY(dataset->GetLayerByName("missions") == nullptr); // no mission in parts: the paths say it all
         // Each robot's features are drawn in its colour, as on plan.png, its region see-through.
         const auto stylesOf = [&](const char* layer) {
             std::vector<std::string> styles;
