@@ -123,6 +123,14 @@ template <typename T> T valueOrBadInput(io::Result<T> result) {
     return std::move(result.value());
 }
 
+// Where robots alone in parts of their own set the bound, every plan's ratio is theirs: the others' too.
+std::string sharedPartsText(const PlanMetrics& metrics) {
+    if (!metrics.boundSetByLoneRobots())
+        return {};
+    return " (set by robots alone in parts of their own; the robots sharing parts: " +
+           formatNumber(metrics.sharedPartsRatio, 3) + ")";
+}
+
 // "the robots need 155 d 13 h for all the raster's land: …": what to change, in the command line's words.
 std::string longPlanAdvice(const io::LongPlanCauses& causes, std::size_t robots, double makespanSeconds) {
     std::string advice =
@@ -890,8 +898,8 @@ void BatchRunner::printComparisonRows(const std::vector<io::ComparisonRow>& rows
             output_ << " (" << formatNumber(againstFirst[index], 2) << " x " << first->planner << "'s)";
         if (inTheField)
             output_ << ", makespan " << formatDuration(row.metrics.makespanSeconds);
-        output_ << ", ratio " << formatNumber(row.metrics.ratio, 3) << " to its own bound, "
-                << row.metrics.totalTurns() << " turns, planned in "
+        output_ << ", ratio " << formatNumber(row.metrics.ratio, 3) << " to its own bound"
+                << sharedPartsText(row.metrics) << ", " << row.metrics.totalTurns() << " turns, planned in "
                 << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
     }
 }
@@ -910,8 +918,8 @@ void BatchRunner::printSummary(const Plan& plan) const {
                 << ", last / first home " << formatNumber(metrics.fieldSpread(), 3) << " (the paths: ";
     output_ << "makespan " << formatDuration(metrics.makespanSeconds) << ", lower bound "
             << formatDuration(metrics.lowerBoundSeconds) << ", ratio " << formatNumber(metrics.ratio, 3)
-            << (inTheField ? ")" : "") << ", covered " << formatPercent(metrics.coveredFraction)
-            << " of the passable area\n";
+            << sharedPartsText(metrics) << (inTheField ? ")" : "") << ", covered "
+            << formatPercent(metrics.coveredFraction) << " of the passable area\n";
     // A split mission's flights, trips and turnarounds take longer than the plan's makespan says.
     if (!fieldTimeNote_.empty())
         output_ << "mcpp: " << fieldTimeNote_ << '\n';

@@ -129,6 +129,8 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         item.add("makespan_s", metrics.makespanSeconds);
         item.add("lower_bound_s", metrics.lowerBoundSeconds);
         item.add("ratio", metrics.ratio);
+        if (metrics.sharedPartsRatio > 0.0) // robots alone in parts of their own: the others' balance
+            item.add("shared_parts_ratio", metrics.sharedPartsRatio);
         item.add("total_length_m", metrics.totalLengthMetres());
         item.add("turns", metrics.totalTurns());
         item.add("covered_fraction", metrics.coveredFraction);

@@ -360,6 +360,11 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
         formatDuration(inTheField ? metrics.fieldLowerBoundSeconds : metrics.lowerBoundSeconds));
     ratio_->setText(inTheField ? tr("%1 in the field").arg(metrics.fieldSpread(), 0, 'f', 3)
                                : QString::number(metrics.ratio, 'f', 3));
+    // Robots alone in parts of their own give every plan their ratio: the others' balance beside it.
+    if (!inTheField && metrics.boundSetByLoneRobots())
+        ratio_->setText(tr("%1; the robots sharing parts: %2")
+                            .arg(metrics.ratio, 0, 'f', 3)
+                            .arg(metrics.sharedPartsRatio, 0, 'f', 3));
     if (inTheField)
         describeFieldTimes(metrics);
     covered_->setText(tr("%1 (%2 % of the passable area)")

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,11 @@ struct PlanMetrics {
     double lowerBoundSeconds = 0.0;
     std::vector<ConfinedRobot> confinedRobots; // robots outside the largest such part
     double ratio = 0.0;                        // makespan / lower bound
+    // Where robots confined to a part of their own set the bound (their part's work is theirs alone, so
+    // every plan has the same ratio), the balance of the others: the largest, over parts shared by several
+    // robots, of their longest time over the part's own bound. 0 where the map is one part or none is
+    // shared. Not kept in saved plans.
+    double sharedPartsRatio = 0.0;
     // Where the problem measures time in the field (PlanningProblem::fieldSeconds), when the last robot is
     // done there; and where some robot's path is split into flights (PlanningProblem::robotFlights), the
     // least any plan making these turns could take there: the work the path bound counts, shared out in full
@@ -56,6 +62,12 @@ struct PlanMetrics {
     double unreachableAreaSquareMetres = 0.0;
     double repeatedFraction = 0.0; // path length beyond one pass over every sub-cell, relative to it
     std::vector<std::pair<std::string, double>> stageMilliseconds;
+
+    // Whether the ratio says less of balance than sharedPartsRatio does: robots alone in parts of their own
+    // set the bound, and the robots sharing parts are balanced otherwise (to the third decimal).
+    [[nodiscard]] bool boundSetByLoneRobots() const {
+        return sharedPartsRatio > 0.0 && std::abs(sharedPartsRatio - ratio) >= 0.0005;
+    }
 
     // The longest time in the field over the shortest, among robots with work: how evenly the robots come
     // home; 0 without times in the field. (Makespan over the bound in the field says more of how far the

@@ -38,6 +38,15 @@ PartFigures figuresOf(const Plan& plan, const StartComponent& part) {
     return figures;
 }
 
+// The longest path time among `robots`.
+double longestTimeOf(const PlanMetrics& metrics, const std::vector<int>& robots) {
+    double longest = 0.0;
+    for (const int robot : robots)
+        if (static_cast<std::size_t>(robot) < metrics.robots.size())
+            longest = std::max(longest, metrics.robots[static_cast<std::size_t>(robot)].timeSeconds);
+    return longest;
+}
+
 // The travel time of a covered cell, 0 for one no robot covers.
 double coveredTravelSeconds(const Plan& plan, int id) {
     const auto index = static_cast<std::size_t>(id);
@@ -113,6 +122,7 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
                                                   std::vector<SharedWork>& shares) {
     PlanMetrics& metrics = plan.metrics;
     metrics.confinedRobots.clear();
+    metrics.sharedPartsRatio = 0.0;
     const std::vector<int>& starts = plan.regions.startCell;
     if (!startsOnTheMap(plan))
         return; // a planner without start cells keeps the whole-map bound
@@ -135,9 +145,11 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
             largest = figures.size() - 1;
         if (!evenShares)
             continue;
-        metrics.lowerBoundSeconds =
-            std::max(metrics.lowerBoundSeconds,
-                     figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size()));
+        const double partBound = figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size());
+        metrics.lowerBoundSeconds = std::max(metrics.lowerBoundSeconds, partBound);
+        if (part.robots.size() > 1 && partBound > 0.0)
+            metrics.sharedPartsRatio =
+                std::max(metrics.sharedPartsRatio, longestTimeOf(metrics, part.robots) / partBound);
         SharedWork work{std::vector<double>(starts.size(), 0.0), figures.back().secondsNoPlanBeats, {}};
         for (const int robot : part.robots)
             work.weights[static_cast<std::size_t>(robot)] = 1.0;

@@ -1010,6 +1010,30 @@ void TestBatchEndToEnd::aRobotWalledInIsSaid() {
             "mcpp: robot 1 starts in a part of the map cut off from the rest (3200 m2) and can cover only "
             "that part")),
         qPrintable(run.standardOutput + run.standardError));
+    // The wall moved east: robot 1 alone in the larger part sets the bound, so the others' balance is
+    // given apart, in report.json and, where it differs from the ratio, in the summary.
+    grid = QStringLiteral("ncols 30\nnrows 8\nxllcorner 0\nyllcorner 0\ncellsize 10\n");
+    for (int row = 0; row < 8; ++row) {
+        for (int column = 0; column < 30; ++column)
+            grid += column == 22 || column == 23 ? QStringLiteral("2 ") : QStringLiteral("1 ");
+        grid += '\n';
+    }
+    QVERIFY(raster.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    raster.write(grid.toUtf8());
+    raster.close();
+    const QString lone = folder.filePath(QStringLiteral("lone"));
+    const auto loneRun =
+        runMcpp({"--batch", "--raster", raster.fileName(), "--classes", classes.fileName(), "--start",
+                 "15,45", "--start", "245,45", "--start", "285,5", "--out", lone});
+    QCOMPARE(loneRun.exitCode, 0);
+    const QJsonObject report = readJsonObject(QDir(lone).filePath(QStringLiteral("report.json")));
+    QVERIFY2(report.contains(QStringLiteral("shared_parts_ratio")), qPrintable(loneRun.standardOutput));
+    const double shared = report.value(QStringLiteral("shared_parts_ratio")).toDouble();
+    const double ratio = report.value(QStringLiteral("ratio")).toDouble();
+    QVERIFY(shared >= 1.0 - 1e-9 && std::abs(ratio - 1.0) < 0.01);
+    QCOMPARE(loneRun.standardOutput.contains(QStringLiteral("set by robots alone in parts of their own; the "
+                                                            "robots sharing parts: ")),
+             std::abs(shared - ratio) >= 0.0005);
 }
 
 // --outputs: only the outputs asked for and report.json, formats the batch leaves out by default (KML)

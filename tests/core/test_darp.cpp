@@ -109,6 +109,37 @@ class DarpTest : public QObject {
             openTurnSeconds += path.turnSeconds;
         QCOMPARE(openPlan.metrics.lowerBoundSeconds, (60.0 * travelSeconds + openTurnSeconds) / 3.0);
         QVERIFY(!hasIssue(openPlan, "confined-robot"));
+        QCOMPARE(openPlan.metrics.sharedPartsRatio, 0.0); // one part: the ratio says it all
+    }
+
+    // A robot walled into a large pocket of its own sets the bound (44 cells alone against 12 for two), so
+    // every plan's ratio is about 1; the pair's balance is given apart, against their part's own bound.
+    void loneRobotsBoundLeavesTheOthersBalanceApart() {
+        PlanningProblem problem = test::drawnProblem(rowsOf(8, "......................##......"),
+                                                     {{0.5, 0.5}, {24.5, 0.5}, {29.5, 7.5}});
+        const Plan plan = planWithDarp(problem);
+        QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
+        QCOMPARE(cellsOf(plan, 0), 44);
+        const double travelSeconds = plan.cells.cell(0).travelSeconds();
+        QVERIFY(
+            std::abs(plan.metrics.lowerBoundSeconds - (44.0 * travelSeconds + plan.paths[0].turnSeconds)) <=
+            1e-9 * plan.metrics.lowerBoundSeconds);
+        const double pairBound =
+            (12.0 * travelSeconds + plan.paths[1].turnSeconds + plan.paths[2].turnSeconds) / 2.0;
+        const double pairLongest = std::max(plan.paths[1].timeSeconds, plan.paths[2].timeSeconds);
+        QVERIFY2(std::abs(plan.metrics.sharedPartsRatio - pairLongest / pairBound) <= 1e-9,
+                 qPrintable(QString::number(plan.metrics.sharedPartsRatio)));
+        QVERIFY(plan.metrics.sharedPartsRatio >= 1.0 - 1e-9);
+        // One of the pair slower by a third of its part's bound: the ratio, the lone robot's, does not see
+        // it.
+        Plan slower = plan;
+        slower.paths[1].timeSeconds = pairBound * 4.0 / 3.0;
+        PlanMetricsCalculator{}.compute(slower);
+        QCOMPARE(slower.metrics.ratio, plan.metrics.ratio);
+        QVERIFY(std::abs(slower.metrics.sharedPartsRatio - 4.0 / 3.0) <= 1e-9);
+        QVERIFY(slower.metrics.boundSetByLoneRobots());
+        QVERIFY(!plan.metrics.boundSetByLoneRobots() ||
+                std::abs(plan.metrics.sharedPartsRatio - plan.metrics.ratio) >= 0.0005);
     }
 
     // Regions that do not touch can still share one connected part: with the cells between two regions
