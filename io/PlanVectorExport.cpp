@@ -406,6 +406,18 @@ std::string partFileStem(int robot, int robots, std::size_t part, std::size_t pa
 }
 
 // One waypoint file's part as a feature of the missions layer: what it holds and takes, and its line.
+// A part's waypoints as a line in the plan's CRS.
+std::unique_ptr<OGRLineString> missionPartLine(const ExportContext& context, const AutopilotMission& mission,
+                                               const MissionPart& piece) {
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    auto line = std::make_unique<OGRLineString>();
+    line->setNumPoints(static_cast<int>(piece.last - piece.first + 1));
+    for (std::size_t point = piece.first; point <= piece.last; ++point)
+        line->setPoint(static_cast<int>(point - piece.first), mission.points[point].x / metresPerUnit,
+                       mission.points[point].y / metresPerUnit);
+    return line;
+}
+
 void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot,
                     const AutopilotMission& mission, std::size_t part) {
     const MissionPart& piece = mission.parts[part];
@@ -424,34 +436,44 @@ void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot
         if (piece.seconds > 0.0)
             feature.SetField("fits_flight", exceedsFlightTime(piece, vehicle) ? 0 : 1);
     }
-    const double metresPerUnit = context.georeference.metresPerUnit();
-    auto line = std::make_unique<OGRLineString>();
-    line->setNumPoints(static_cast<int>(piece.last - piece.first + 1));
-    for (std::size_t point = piece.first; point <= piece.last; ++point)
-        line->setPoint(static_cast<int>(point - piece.first), mission.points[point].x / metresPerUnit,
-                       mission.points[point].y / metresPerUnit);
-    feature.SetGeometryDirectly(line.release());
+    feature.SetGeometryDirectly(missionPartLine(context, mission, piece).release());
+}
+
+// KML readers slow down steeply with the fields of many placemarks (LIBKML took 8 s for 1 129 parts of 12
+// fields, 0.6 s with 2): there a part carries its file name, its time and whether it fits a flight.
+void setKmlMissionPart(OGRFeature& feature, const ExportContext& context, int robot,
+                       const AutopilotMission& mission, std::size_t part) {
+    const MissionPart& piece = mission.parts[part];
+    feature.SetField(
+        "name",
+        partFileStem(robot, static_cast<int>(context.plan.paths.size()), part, mission.parts.size()).c_str());
+    if (piece.seconds > 0.0)
+        feature.SetField("part_time_s", piece.seconds);
+    if (const VehicleSettings& vehicle = context.vehicle(robot);
+        vehicle.flightTimeSeconds > 0.0 && piece.seconds > 0.0)
+        feature.SetField("fits_flight", exceedsFlightTime(piece, vehicle) ? 0 : 1);
+    feature.SetStyleString(pathStyle(robot).c_str());
+    feature.SetGeometryDirectly(missionPartLine(context, mission, piece).release());
 }
 
 // Each robot's waypoint files as lines, one per part (a flight, for a battery), with what it holds and
 // takes: a user sees on the map which flights fit and where those that do not go. For KML (`toWgs84`
-// given) each part is named by its file and drawn in its robot's colour.
+// given) each part is named by its file and drawn in its robot's colour, with its time and fit alone.
 Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
                          const OGRSpatialReference* crs, OGRCoordinateTransformation* toWgs84 = nullptr) {
     auto layer = writer.layer("missions", crs, wkbLineString);
     if (!layer)
         return Status::failure(layer.error());
-    Fields fields{{{"robot", OFTInteger},
-                   {"robot_name", OFTString},
-                   {"part", OFTInteger},
-                   {"parts", OFTInteger},
-                   {"file", OFTString},
-                   {"items", OFTInteger},
-                   {"part_time_s", OFTReal},
-                   {"farthest_m", OFTReal},
-                   {"flight_time_s", OFTReal}}};
-    if (toWgs84 != nullptr)
-        fields.definitions.insert(fields.definitions.begin(), {"name", OFTString});
+    const Fields fields = toWgs84 != nullptr ? Fields{{{"name", OFTString}, {"part_time_s", OFTReal}}}
+                                             : Fields{{{"robot", OFTInteger},
+                                                       {"robot_name", OFTString},
+                                                       {"part", OFTInteger},
+                                                       {"parts", OFTInteger},
+                                                       {"file", OFTString},
+                                                       {"items", OFTInteger},
+                                                       {"part_time_s", OFTReal},
+                                                       {"farthest_m", OFTReal},
+                                                       {"flight_time_s", OFTReal}}};
     if (Status status = createFields(writer, layer.value(), fields); !status)
         return status;
     if (Status status = writer.field(layer.value(), "fits_flight", OFTInteger, OFSTBoolean); !status)
@@ -460,10 +482,11 @@ Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
         const AutopilotMission& mission = autopilotMissionOf(context, path.robot);
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
             OGRFeature feature(layer.value()->GetLayerDefn());
-            setMissionPart(feature, context, path.robot, mission, part);
+            if (toWgs84 == nullptr)
+                setMissionPart(feature, context, path.robot, mission, part);
+            else
+                setKmlMissionPart(feature, context, path.robot, mission, part);
             if (toWgs84 != nullptr) {
-                feature.SetField("name", feature.GetFieldAsString("file"));
-                feature.SetStyleString(pathStyle(path.robot).c_str());
                 if (!transformed(*feature.GetGeometryRef(), *toWgs84))
                     return Status::failure(writer.path() + ": cannot transform a mission part to WGS84" +
                                            QuietGdalErrors::detail());
@@ -601,10 +624,12 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
     if (Status status = writeAreaLayers(writer, planFeatures.area, wgs84.get(), true); !status)
         return status;
     // Split missions' parts, each flight on its own in Google Earth; a whole mission is its path already.
-    const auto split = [&](const CoveragePath& line) {
-        return autopilotMissionOf(context, line.robot).parts.size() > 1;
-    };
-    if (std::any_of(context.plan.paths.begin(), context.plan.paths.end(), split)) {
+    // Up to a few thousand: LIBKML's time grows with the square of the placemarks (1 s for 1 129 parts).
+    constexpr std::size_t mostPartsInKml = 2000;
+    std::size_t parts = 0;
+    for (const CoveragePath& line : context.plan.paths)
+        parts += autopilotMissionOf(context, line.robot).parts.size();
+    if (parts > context.plan.paths.size() && parts <= mostPartsInKml) {
         auto transformation = toWgs84(context.georeference, path);
         if (!transformation)
             return Status::failure(transformation.error());
