@@ -538,6 +538,10 @@ std::string missionPartPath(const std::string& path, std::size_t part, std::size
     return numberedPath(path, "_part_", part, parts);
 }
 
+std::string missionFilePath(const std::string& path, std::size_t part, std::size_t parts) {
+    return parts > 1 ? missionPartPath(path, part, parts) : path;
+}
+
 std::string missionSortiePath(const std::string& path, std::size_t sortie, std::size_t sorties) {
     return numberedPath(path, "_sortie_", sortie, sorties);
 }

@@ -115,6 +115,8 @@ struct MissionSize {
 // from 0), the number padded with zeros to the width of `parts` ("robot_1_part_02.plan" of 12) so that a file
 // list sorts the parts in the order they are flown.
 [[nodiscard]] std::string missionPartPath(const std::string& path, std::size_t part, std::size_t parts);
+// The file a mission's part is written to: `path` itself for a mission in one part, else missionPartPath.
+[[nodiscard]] std::string missionFilePath(const std::string& path, std::size_t part, std::size_t parts);
 
 // The file of one of a robot's `sorties` when it charges between flights: "out/robot_1.plan" ->
 // "out/robot_1_sortie_2.plan" (sortie from 0, padded as parts are). A sortie above the item limit is split

@@ -31,6 +31,10 @@ std::optional<LongPlanCauses> longPlanCauses(double makespanSeconds, const Missi
             first ? speed : std::min(causes.slowestSpeedMetresPerSecond, speed);
         causes.fastestSpeedMetresPerSecond = std::max(causes.fastestSpeedMetresPerSecond, speed);
     }
+    // Speeds a drone would fly are no ground robot's: nothing to say of them.
+    constexpr double droneSpeedMetresPerSecond = 5.0;
+    causes.groundSpeeds =
+        causes.groundSpeeds && causes.fastestSpeedMetresPerSecond < droneSpeedMetresPerSecond;
     if (!causes.wholeRaster && !causes.groundSpeeds)
         return std::nullopt;
     return causes;

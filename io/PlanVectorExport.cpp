@@ -401,11 +401,9 @@ Status writeAreaLayers(VectorFileWriter& writer, std::vector<internal::AreaFeatu
 // The name batch mode gives the part's .plan and .waypoints files, without the extension: "robot_2" for a
 // mission in one part, "robot_2_part_3" for its third part (of a plan of `robots`).
 std::string partFileStem(int robot, int robots, std::size_t part, std::size_t parts) {
-    const std::string whole = robotFileStem(robot, robots);
-    return parts > 1 ? missionPartPath(whole, part, parts) : whole;
+    return missionFilePath(robotFileStem(robot, robots), part, parts);
 }
 
-// One waypoint file's part as a feature of the missions layer: what it holds and takes, and its line.
 // A part's waypoints as a line in the plan's CRS.
 std::unique_ptr<OGRLineString> missionPartLine(const ExportContext& context, const AutopilotMission& mission,
                                                const MissionPart& piece) {
@@ -418,6 +416,7 @@ std::unique_ptr<OGRLineString> missionPartLine(const ExportContext& context, con
     return line;
 }
 
+// One waypoint file's part as a feature of the missions layer: what it holds and takes, and its line.
 void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot,
                     const AutopilotMission& mission, std::size_t part) {
     const MissionPart& piece = mission.parts[part];
@@ -439,8 +438,8 @@ void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot
     feature.SetGeometryDirectly(missionPartLine(context, mission, piece).release());
 }
 
-// KML readers slow down steeply with the fields of many placemarks (LIBKML took 8 s for 1 129 parts of 12
-// fields, 0.6 s with 2): there a part carries its file name, its time and whether it fits a flight.
+// LIBKML's writing slows down steeply with the fields of many placemarks (8 s for 1 129 parts of 12 fields,
+// 0.6 s with 2): there a part carries its file name, its time and whether it fits a flight.
 void setKmlMissionPart(OGRFeature& feature, const ExportContext& context, int robot,
                        const AutopilotMission& mission, std::size_t part) {
     const MissionPart& piece = mission.parts[part];
@@ -482,11 +481,10 @@ Status writeMissionLayer(VectorFileWriter& writer, const ExportContext& context,
         const AutopilotMission& mission = autopilotMissionOf(context, path.robot);
         for (std::size_t part = 0; part < mission.parts.size(); ++part) {
             OGRFeature feature(layer.value()->GetLayerDefn());
-            if (toWgs84 == nullptr)
+            if (toWgs84 == nullptr) {
                 setMissionPart(feature, context, path.robot, mission, part);
-            else
+            } else {
                 setKmlMissionPart(feature, context, path.robot, mission, part);
-            if (toWgs84 != nullptr) {
                 if (!transformed(*feature.GetGeometryRef(), *toWgs84))
                     return Status::failure(writer.path() + ": cannot transform a mission part to WGS84" +
                                            QuietGdalErrors::detail());
@@ -624,12 +622,16 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
     if (Status status = writeAreaLayers(writer, planFeatures.area, wgs84.get(), true); !status)
         return status;
     // Split missions' parts, each flight on its own in Google Earth; a whole mission is its path already.
-    // Up to a few thousand: LIBKML's time grows with the square of the placemarks (1 s for 1 129 parts).
+    // Up to a few thousand: LIBKML's writing slows down steeply with the placemarks (1 s for 1 129 parts).
     constexpr std::size_t mostPartsInKml = 2000;
     std::size_t parts = 0;
-    for (const CoveragePath& line : context.plan.paths)
-        parts += autopilotMissionOf(context, line.robot).parts.size();
-    if (parts > context.plan.paths.size() && parts <= mostPartsInKml) {
+    bool split = false;
+    for (const CoveragePath& line : context.plan.paths) {
+        const std::size_t robotParts = autopilotMissionOf(context, line.robot).parts.size();
+        parts += robotParts;
+        split = split || robotParts > 1;
+    }
+    if (split && parts <= mostPartsInKml) {
         auto transformation = toWgs84(context.georeference, path);
         if (!transformation)
             return Status::failure(transformation.error());

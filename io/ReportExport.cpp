@@ -178,7 +178,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     root.add("makespan_s", metrics.makespanSeconds);
     root.add("lower_bound_s", metrics.lowerBoundSeconds);
     root.add("ratio", metrics.ratio);
-    // Where robots alone in parts of their own set the bound: the balance of the robots sharing parts.
+    // Where robots alone in parts of their own set the bound (else 0): the balance of the robots sharing
+    // parts.
     if (metrics.sharedPartsRatio > 0.0)
         root.add("shared_parts_ratio", metrics.sharedPartsRatio);
     // Where missions are split into flights: when the last robot is home, the least any plan takes, and how

@@ -453,12 +453,11 @@ using MissionText = std::string (*)(const AutopilotMission&, const MissionPart&,
 // One mission in one file at `path`, or, above the vehicle's item limit, in parts beside it.
 Status writeMission(const AutopilotMission& mission, const std::vector<LonLat>& lonLats,
                     const std::string& path, MissionText text, const VehicleSettings& vehicle) {
-    const bool split = mission.parts.size() > 1;
     const GeoWaypoint home =
         mission.takeOff ? GeoWaypoint{mission.home(), 0.0, lonLats.back().longitude, lonLats.back().latitude}
                         : geoPoints(mission, {0, 0, 0}, lonLats).front();
     for (std::size_t part = 0; part < mission.parts.size(); ++part) {
-        const std::string file = split ? missionPartPath(path, part, mission.parts.size()) : path;
+        const std::string file = missionFilePath(path, part, mission.parts.size());
         const std::vector<GeoWaypoint> points = geoPoints(mission, mission.parts[part], lonLats);
         if (auto written = internal::writeFileAtomically(
                 file, text(mission, mission.parts[part], points, home, vehicle), Sync::BySystem);
@@ -651,7 +650,7 @@ std::string partsOverFlightTime(const AutopilotMission& mission, const VehicleSe
             continue;
         if (++over <= named)
             files.push_back(
-                std::filesystem::path(missionPartPath(path, part, mission.parts.size())).filename().string());
+                std::filesystem::path(missionFilePath(path, part, mission.parts.size())).filename().string());
     }
     std::string text;
     for (std::size_t file = 0; file < files.size(); ++file)

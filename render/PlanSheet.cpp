@@ -23,7 +23,8 @@ double lastHomeSeconds(const Plan& plan, const std::vector<FieldTime>& fieldTime
         later = later || inTheField;
         last = std::max(last, inTheField ? fieldTimes[robot].seconds : plan.paths[robot].timeSeconds);
     }
-    return later ? last : 0.0;
+    // A second's difference is no news: the title then gives the makespan alone.
+    return later && last > plan.metrics.makespanSeconds + 1.0 ? last : 0.0;
 }
 
 // As batch mode's summary words it: where flights make the robots later than their paths, the last one

@@ -86,6 +86,11 @@ namespace mcpp::ui {
 
 namespace {
 
+// A speed as batch mode gives it: "0.3", "1.5" (three significant digits).
+QString speedText(double metresPerSecond) {
+    return QString::fromStdString(formatQuantity(metresPerSecond, 3));
+}
+
 // What the legend says of when each robot is done in the field, from its waypoint files' sizes (by path,
 // as the plan holds them), where that comes later than its path.
 std::vector<render::FieldTime> fieldTimesOf(const Plan& plan, const std::vector<io::MissionSize>& sizes,
@@ -976,8 +981,9 @@ void MainWindow::updateResults() {
     for (const auto& robot : document_->robots())
         names << QString::fromStdString(robot.name);
     resultsPanel_->showPlan(document_->plan(), names, document_->raster());
-    if (const Plan* plan = document_->plan())
-        resultsPanel_->addNote(longPlanAdvice(plan->metrics.makespanSeconds)); // where the user looks
+    // Where the user looks, for the plan it was worked out for (not once the settings change under it).
+    if (const auto shown = document_->sharedPlan(); shown && advisedPlan_.lock() == shown)
+        resultsPanel_->addNote(planAdvice_);
     resultsPanel_->setStale(document_->planStale());
     sizeWaypointFiles();
 }
@@ -1831,11 +1837,12 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
 }
 
 // A plan of weeks: what to change, where the window changes it; empty for a plan of less.
-QString MainWindow::longPlanAdvice(double makespanSeconds) const {
+QString MainWindow::longPlanAdvice(double makespanSeconds, std::size_t robots) const {
     const auto causes = io::longPlanCauses(makespanSeconds, document_->mission(), document_->classes());
     if (!causes)
         return {};
-    QString advice = tr("The robots need %1").arg(ResultsPanel::formatDuration(makespanSeconds));
+    QString advice = (robots == 1 ? tr("The robot needs %1") : tr("The robots need %1"))
+                         .arg(ResultsPanel::formatDuration(makespanSeconds));
     if (causes->wholeRaster)
         advice +=
             tr(" for all the raster's land: to plan part of it, draw it (Plan ▸ Draw area of interest) or "
@@ -1844,9 +1851,9 @@ QString MainWindow::longPlanAdvice(double makespanSeconds) const {
     if (causes->groundSpeeds) {
         const QString speeds = causes->fastestSpeedMetresPerSecond > causes->slowestSpeedMetresPerSecond
                                    ? tr("%1 to %2 m/s")
-                                         .arg(causes->slowestSpeedMetresPerSecond)
-                                         .arg(causes->fastestSpeedMetresPerSecond)
-                                   : tr("%1 m/s").arg(causes->slowestSpeedMetresPerSecond);
+                                         .arg(speedText(causes->slowestSpeedMetresPerSecond),
+                                              speedText(causes->fastestSpeedMetresPerSecond))
+                                   : tr("%1 m/s").arg(speedText(causes->slowestSpeedMetresPerSecond));
         advice +=
             (causes->wholeRaster ? tr("; if") : tr(": if")) +
             tr(" the robots fly, set their vehicle and cruise speed in Plan ▸ Robot vehicles… (the class "
@@ -1983,6 +1990,9 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
     const double seconds =
         static_cast<double>(QDateTime::currentMSecsSinceEpoch() - planningStartedAt_) / 1000.0;
     if (outcome.plan) {
+        // Worked out from the settings it was planned with, before showing it shows the advice.
+        advisedPlan_ = outcome.plan;
+        planAdvice_ = longPlanAdvice(outcome.plan->metrics.makespanSeconds, outcome.plan->paths.size());
         document_->setPlan(outcome.plan, planningInputs_);
         notePlanToSave();
         const auto& metrics = outcome.plan->metrics;
@@ -2000,8 +2010,8 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
                                     .arg(metrics.ratio, 0, 'f', 3), // as plan.png gives it
                    15000);
         logPlanIssues(*outcome.plan); // whole, where every message is kept
-        if (const QString advice = longPlanAdvice(metrics.makespanSeconds); !advice.isEmpty())
-            messageLog_->add(tr("Note: %1").arg(advice));
+        if (!planAdvice_.isEmpty())
+            messageLog_->add(tr("Note: %1").arg(planAdvice_));
     } else if (outcome.cancelled) {
         showStatus(tr("Planning cancelled; the previous plan, if any, is kept."));
     }

@@ -178,7 +178,7 @@ class MainWindow : public QMainWindow {
     void handleComparisonFinished(const ComparisonOutcome& outcome);
     void showComparedPlan(int row);
     void logPlanIssues(const Plan& plan);
-    [[nodiscard]] QString longPlanAdvice(double makespanSeconds) const;
+    [[nodiscard]] QString longPlanAdvice(double makespanSeconds, std::size_t robots) const;
     void logComparedWarnings();
     void showBusy(const QString& stage, bool busy);
     void placeStart(MapPoint point);
@@ -242,6 +242,8 @@ class MainWindow : public QMainWindow {
     int waypointFileSizesAsked_ = 0; // the last request: an older one's answer is dropped
     std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on
     qint64 planningStartedAt_ = 0;
+    std::weak_ptr<const Plan> advisedPlan_; // the last plan made here, and what to change for a better one
+    QString planAdvice_;
     bool settingsModified_ = false;
     bool planUnsaved_ = false;
     std::string inputFilesAtLoad_; // a saved mission's new plan, written beside it on the next save

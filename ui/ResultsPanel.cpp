@@ -533,7 +533,7 @@ void ResultsPanel::showTimeInTheField(const std::vector<io::MissionSize>& sizes)
 namespace {
 
 // Whether a split mission's parts come from its flight time: where its items fit the limit, or where the
-// flights make at least twice the parts the limit alone would (as batch mode's notes judge it).
+// parts are at least twice as many as the limit alone needs (items over the limit, rounded up).
 bool splitForFlightTime(const io::MissionSize& size, const io::VehicleSettings& vehicle) {
     if (!(vehicle.flightTimeSeconds > 0.0))
         return false;

@@ -45,8 +45,8 @@ struct PlanMetrics {
     double ratio = 0.0;                        // makespan / lower bound
     // Where robots confined to a part of their own set the bound (their part's work is theirs alone, so
     // every plan has the same ratio), the balance of the others: the largest, over parts shared by several
-    // robots, of their longest time over the part's own bound. 0 where the map is one part or none is
-    // shared. Not kept in saved plans.
+    // robots, of their longest time over the part's own bound. 0 elsewhere: the map one part, no part
+    // shared, a shared part or a battery's charges setting the bound. Not kept in saved plans.
     double sharedPartsRatio = 0.0;
     // Where the problem measures time in the field (PlanningProblem::fieldSeconds), when the last robot is
     // done there; and where some robot's path is split into flights (PlanningProblem::robotFlights), the

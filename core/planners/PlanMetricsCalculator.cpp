@@ -134,6 +134,9 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
     const std::vector<StartComponent> parts = componentsWithStarts(plan.cells, starts);
     if (parts.size() < 2)
         return;
+    double loneBound = 0.0; // the largest bound of a part with one robot, and of one shared by several
+    double sharedBound = 0.0;
+    double sharedRatio = 0.0;
     std::vector<PartFigures> figures;
     std::size_t largest = 0;
     // A detection plan need not pass every sub-cell, so a part's travel over its cells bounds nothing; nor
@@ -147,9 +150,10 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
             continue;
         const double partBound = figures.back().secondsNoPlanBeats / static_cast<double>(part.robots.size());
         metrics.lowerBoundSeconds = std::max(metrics.lowerBoundSeconds, partBound);
+        double& boundOfItsKind = part.robots.size() > 1 ? sharedBound : loneBound;
+        boundOfItsKind = std::max(boundOfItsKind, partBound);
         if (part.robots.size() > 1 && partBound > 0.0)
-            metrics.sharedPartsRatio =
-                std::max(metrics.sharedPartsRatio, longestTimeOf(metrics, part.robots) / partBound);
+            sharedRatio = std::max(sharedRatio, longestTimeOf(metrics, part.robots) / partBound);
         SharedWork work{std::vector<double>(starts.size(), 0.0), figures.back().secondsNoPlanBeats, {}};
         for (const int robot : part.robots)
             work.weights[static_cast<std::size_t>(robot)] = 1.0;
@@ -164,6 +168,9 @@ void PlanMetricsCalculator::boundByConnectedParts(Plan& plan, bool regionsLinked
         };
         shares.push_back(std::move(work));
     }
+    // Only where robots alone set the bound does every plan share the ratio, and the others' say more.
+    if (loneBound > sharedBound)
+        metrics.sharedPartsRatio = sharedRatio;
     for (std::size_t part = 0; part < parts.size(); ++part) {
         if (part == largest)
             continue;
@@ -410,7 +417,10 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     const bool flights = std::any_of(robotFlights_.begin(), robotFlights_.end(),
                                      [](const FlightLimits& limits) { return limits.splitsPaths(); });
     metrics.fieldLowerBoundSeconds = flights ? fieldBound(plan, shares, dearestTurnSeconds) : 0.0;
+    const double partsBound = metrics.lowerBoundSeconds;
     boundByCharges(plan);
+    if (metrics.lowerBoundSeconds > partsBound) // set by the charges, not by robots alone
+        metrics.sharedPartsRatio = 0.0;
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;
     metrics.passableAreaSquareMetres = graph.passableAreaSquareMetres;
