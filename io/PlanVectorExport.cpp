@@ -3,6 +3,7 @@
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/GeoJsonText.hpp"
+#include "io/internal/LegendReader.hpp"
 #include "io/internal/PlanGeometry.hpp"
 #include "io/internal/TextFiles.hpp"
 #include "io/internal/TransformationLoan.hpp"
@@ -199,12 +200,12 @@ void setRobotFields(OGRFeature& feature, const ExportContext& context, int robot
 
 // A robot's colour as plan.png and regions.tif give it, "#e6194b", with `alpha` appended where given.
 std::string robotColourText(int robot, std::optional<unsigned> alpha = std::nullopt) {
-    char text[16];
-    const std::uint32_t rgb = robotColourRgb(robot);
-    if (alpha)
-        std::snprintf(text, sizeof text, "#%06x%02x", rgb, *alpha);
-    else
-        std::snprintf(text, sizeof text, "#%06x", rgb);
+    std::string text = internal::formatColor(robotColourRgb(robot));
+    if (alpha) {
+        char hex[4];
+        std::snprintf(hex, sizeof hex, "%02x", *alpha);
+        text += hex;
+    }
     return text;
 }
 
