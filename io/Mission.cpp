@@ -75,10 +75,17 @@ class MissionReader {
         return fail(path, "expected " + expected + ", found " + typeName(value));
     }
 
-    bool onlyKeys(const QJsonObject& object, const std::string& path, const std::set<std::string>& allowed) {
+    // belongsIn: keys of an inner object (e.g. "preset" of "classes"), named there when given out of place.
+    bool onlyKeys(const QJsonObject& object, const std::string& path, const std::set<std::string>& allowed,
+                  const std::map<std::string, std::string>& belongsIn = {}) {
         for (auto it = object.begin(); it != object.end(); ++it) {
             const std::string key = it.key().toStdString();
             if (allowed.count(key) == 0) {
+                if (const auto home = belongsIn.find(key); home != belongsIn.end())
+                    return fail(join(path, key), "unknown key " +
+                                                     std::string(path.empty() ? "at the top level" : "here") +
+                                                     ": it belongs in \"" + home->second + "\", as \"" +
+                                                     home->second + "\": {\"" + key + "\": ...}");
                 const auto meant = closestName(key, {allowed.begin(), allowed.end()});
                 return fail(join(path, key),
                             "unknown key" + (meant ? ": did you mean \"" + *meant + "\"?" : std::string()));
@@ -572,7 +579,15 @@ Result<Mission> parseMission(const std::string& text, const std::string& path) {
     }
     if (!reader.onlyKeys(
             root, "",
-            {"format", "version", "raster", "area", "classes", "robots", "events", "planner", "exports"}))
+            {"format", "version", "raster", "area", "classes", "robots", "events", "planner", "exports"},
+            {{"preset", "classes"},
+             {"missing_as_obstacles", "classes"},
+             {"table", "classes"},
+             {"path", "raster"},
+             {"band", "raster"},
+             {"include", "area"},
+             {"exclude", "area"},
+             {"parameters", "planner"}}))
         return fail();
 
     QJsonObject raster;

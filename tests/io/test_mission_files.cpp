@@ -538,6 +538,14 @@ class MissionFilesTest : public QObject {
         loaded = loadMission(path);
         QVERIFY(!loaded.ok());
         QCOMPARE(loaded.error(), path + ": exports.colour: unknown key");
+        // A key of an inner object given at the top level names the object it belongs in.
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "preset": "nlcd"})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path +
+                                     ": preset: unknown key at the top level: it belongs in \"classes\", as "
+                                     "\"classes\": {\"preset\": ...}");
         writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
                             "robots": [{"start": [10, 20]}],
                             "planner": {"name": "mcpp-mlct", "parameters": {"fewer_turn_slack": 2}}})");
