@@ -61,6 +61,11 @@ ExportFormat onlyWithDetection(ExportFormat result) {
     return result;
 }
 
+ExportFormat withNote(ExportFormat result, std::string (*noteOf)(const ExportContext&, const std::string&)) {
+    result.noteOf = noteOf;
+    return result;
+}
+
 ExportFormat perRobot(ExportFormat result) {
     result.perRobot = true;
     return result;
@@ -80,7 +85,8 @@ std::vector<ExportFormat> makeCatalogue() {
                                          "GeoTIFF (*.tif *.tiff)", wholePlan(writeDetectionRaster))),
                 "detection.tif", true),
         onRequestInBatch(
-            inLongitudeLatitude(format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml))),
+            withNote(inLongitudeLatitude(format("kml", "KML", "kml", "KML (*.kml)", wholePlan(writePlanKml))),
+                     kmlMissionPartsNote),
             "plan.kml"),
         onRequestInBatch(
             inLongitudeLatitude(format("gpx", "GPX", "gpx", "GPX (*.gpx)", wholePlan(writePlanGpx))),

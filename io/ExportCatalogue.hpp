@@ -31,6 +31,9 @@ struct ExportFormat {
     std::function<bool(const Plan& plan)> appliesTo;
     // robot is ignored by whole-plan formats.
     std::function<Status(const ExportContext& context, int robot, const std::string& path)> write;
+    // What the user should know of a whole-plan file written to path (what it leaves out, and where that is);
+    // empty, or no function, when nothing.
+    std::function<std::string(const ExportContext& context, const std::string& path)> noteOf;
 };
 
 // Every format, in menu order.

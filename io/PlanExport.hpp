@@ -101,7 +101,14 @@ struct ExportContext {
 // part as a line, with its items and time and whether it fits the flight time), and cells when
 // settings.cellPolygons asks for a polygon per cell.
 [[nodiscard]] Status writePlanGeoPackage(const ExportContext& context, const std::string& path);
+// KML for Google Earth: regions, paths and starts in the robots' colours, and, where some mission is split,
+// a missions folder of the waypoint files' parts (up to kmlMostMissionParts; kmlMissionPartsNote says when
+// there are more).
 [[nodiscard]] Status writePlanKml(const ExportContext& context, const std::string& path);
+inline constexpr std::size_t kmlMostMissionParts = 2000;
+// What the user should know of a KML written to `path`: that it leaves out the mission parts, where there are
+// more than kmlMostMissionParts, and where to find them; empty otherwise.
+[[nodiscard]] std::string kmlMissionPartsNote(const ExportContext& context, const std::string& path);
 [[nodiscard]] Status writePlanGpx(const ExportContext& context, const std::string& path);
 // regions.tif: the robot covering each sub-cell of the planning grid, as a tiled, compressed GeoTIFF in the
 // raster's CRS with a colour table in the robots' colours. Value = robot number from 1; 255 for passable land

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <ogrsf_frmts.h>
 #include <optional>
 
@@ -536,6 +537,21 @@ Status writeCellLayer(VectorFileWriter& writer, const ExportContext& context,
     return {};
 }
 
+struct MissionParts {
+    std::size_t count = 0; // of all robots' waypoint files
+    bool split = false;    // some robot's mission is in several
+};
+
+MissionParts missionPartsOf(const ExportContext& context) {
+    MissionParts parts;
+    for (const CoveragePath& line : context.plan.paths) {
+        const std::size_t robotParts = autopilotMissionOf(context, line.robot).parts.size();
+        parts.count += robotParts;
+        parts.split = parts.split || robotParts > 1;
+    }
+    return parts;
+}
+
 } // namespace
 
 Status writePlanGeoJson(const ExportContext& context, const std::string& path) {
@@ -623,16 +639,8 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
     if (Status status = writeAreaLayers(writer, planFeatures.area, wgs84.get(), true); !status)
         return status;
     // Split missions' parts, each flight on its own in Google Earth; a whole mission is its path already.
-    // Up to a few thousand: LIBKML's writing slows down steeply with the placemarks (1 s for 1 129 parts).
-    constexpr std::size_t mostPartsInKml = 2000;
-    std::size_t parts = 0;
-    bool split = false;
-    for (const CoveragePath& line : context.plan.paths) {
-        const std::size_t robotParts = autopilotMissionOf(context, line.robot).parts.size();
-        parts += robotParts;
-        split = split || robotParts > 1;
-    }
-    if (split && parts <= mostPartsInKml) {
+    if (const MissionParts parts = missionPartsOf(context);
+        parts.split && parts.count <= kmlMostMissionParts) {
         auto transformation = toWgs84(context.georeference, path);
         if (!transformation)
             return Status::failure(transformation.error());
@@ -641,6 +649,15 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
             return status;
     }
     return writer.commit();
+}
+
+std::string kmlMissionPartsNote(const ExportContext& context, const std::string& path) {
+    const MissionParts parts = missionPartsOf(context);
+    if (!parts.split || parts.count <= kmlMostMissionParts)
+        return {};
+    return std::filesystem::path(path).filename().string() + " leaves out the " +
+           std::to_string(parts.count) + " waypoint file parts (Google Earth slows down with more than " +
+           "2 000" + "): the GeoPackage's missions layer holds them";
 }
 
 Status writePlanGpx(const ExportContext& context, const std::string& path) {

@@ -43,6 +43,9 @@ ExportOutcome runJob(const ExportJob& job, const std::atomic<bool>& cancelReques
                                 : QObject::tr("Cannot export the plan to %1: %2").arg(path, error);
             return outcome;
         }
+        if (format->noteOf)
+            if (const std::string said = format->noteOf(context, path.toStdString()); !said.empty())
+                outcome.notes << QString::fromStdString(said) + QStringLiteral(".");
         const std::size_t parts =
             format->splitByItemLimit ? io::autopilotMissionOf(context, robot).parts.size() : 1;
         if (format->splitByItemLimit)

@@ -401,6 +401,37 @@ class PlanExportTest : public QObject {
         }
     }
 
+    // Above 2 000 parts KML leaves its missions folder out, which would slow Google Earth down, and says so,
+    // naming the count and where the parts are.
+    void kmlSaysWhenItLeavesTheMissionPartsOut() {
+        Plan plan = test::makeFixturePlan();
+        CoveragePath& zigzag = plan.paths[0];
+        zigzag.waypoints.clear();
+        for (int row = 0; row < 9000; ++row)
+            for (int side = 0; side < 2; ++side)
+                zigzag.waypoints.push_back(test::makeWaypoint(
+                    301902.5 + 70.0 * (row % 2 == 0 ? side : 1 - side), 4154077.5 - 10.0 * row, 0, 0.5));
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.cruiseSpeedMetresPerSecond = 2.0;
+        drone.maxWaypoints = 12;
+        ExportContext exportContext{plan, reference_, classes_, ExportSettings{}};
+        exportContext.vehicles = {drone, VehicleSettings{}};
+        std::size_t parts = 0;
+        for (const CoveragePath& path : plan.paths)
+            parts += autopilotMissionOf(exportContext, path.robot).parts.size();
+        QVERIFY2(parts > kmlMostMissionParts, qPrintable(QString::number(parts)));
+        const std::string kml = file("many.kml");
+        QVERIFY(writePlanKml(exportContext, kml).ok());
+        Dataset kmlFile = openVector(kml);
+        QVERIFY(kmlFile->GetLayerByName("paths") != nullptr);
+        QVERIFY(kmlFile->GetLayerByName("missions") == nullptr);
+        QCOMPARE(kmlMissionPartsNote(exportContext, kml),
+                 "many.kml leaves out the " + std::to_string(parts) +
+                     " waypoint file parts (Google Earth slows down with more than 2 000): the GeoPackage's "
+                     "missions layer holds them");
+    }
+
     // The missions layer holds every waypoint file part as its line, point for point, the parts of a robot
     // joining up, with its items and time and whether it fits the vehicle's flight time (a drone on a
     // lawnmower whose far rows lie beyond one flight's reach; a rover without a flight time beside it).
@@ -497,6 +528,7 @@ class PlanExportTest : public QObject {
             ++kmlParts;
         }
         QCOMPARE(kmlParts, drone0.parts.size());
+        QVERIFY(kmlMissionPartsNote(exportContext, kml).empty()); // all the parts are in it
         // report.csv counts the same flights: the drone's too long, its longest and all of them in one.
         const std::string csv = file("missions.csv");
         QVERIFY(writeReportCsv(exportContext, csv).ok());
