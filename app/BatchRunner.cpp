@@ -131,6 +131,14 @@ std::string sharedPartsText(const PlanMetrics& metrics) {
            formatNumber(metrics.sharedPartsRatio, 3) + ")";
 }
 
+// A detection plan's bound is of another kind than the others': its ratio says so beside it.
+std::string boundKindText(const PlanMetrics& metrics) {
+    if (!metrics.boundOfDetectionPasses)
+        return {};
+    return " (a bound of the passes its targets need, each at the fastest class's speed: looser than other "
+           "plans' bounds)";
+}
+
 // "the robots need 155 d 13 h for all the raster's land: …": what to change, in the command line's words.
 std::string longPlanAdvice(const io::LongPlanCauses& causes, std::size_t robots, double makespanSeconds) {
     std::string advice =
@@ -550,6 +558,12 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             internalError(namingFile((directory / outputs[i].name).string(), results[i].error()));
         warn(outputs[i].name + " not written: " + results[i].error());
     }
+    for (std::size_t i = 0; i < outputs.size(); ++i)
+        if (results[i] && outputs[i].format->noteOf)
+            if (const std::string said =
+                    outputs[i].format->noteOf(context, (directory / outputs[i].name).string());
+                !said.empty())
+                note(said);
     // Parts of each robot's autopilot files this run wrote (0: none), by robot and format key.
     std::map<std::pair<int, std::string>, std::size_t> partsWritten;
     for (std::size_t i = 0; i < outputs.size(); ++i) {
@@ -899,7 +913,8 @@ void BatchRunner::printComparisonRows(const std::vector<io::ComparisonRow>& rows
         if (inTheField)
             output_ << ", makespan " << formatDuration(row.metrics.makespanSeconds);
         output_ << ", ratio " << formatNumber(row.metrics.ratio, 3) << " to its own bound"
-                << sharedPartsText(row.metrics) << ", " << row.metrics.totalTurns() << " turns, planned in "
+                << boundKindText(row.metrics) << sharedPartsText(row.metrics) << ", "
+                << row.metrics.totalTurns() << " turns, planned in "
                 << formatNumber(row.planningMilliseconds / 1000.0, 2) << " s\n";
     }
 }
@@ -918,7 +933,7 @@ void BatchRunner::printSummary(const Plan& plan) const {
                 << ", last / first home " << formatNumber(metrics.fieldSpread(), 3) << " (the paths: ";
     output_ << "makespan " << formatDuration(metrics.makespanSeconds) << ", lower bound "
             << formatDuration(metrics.lowerBoundSeconds) << ", ratio " << formatNumber(metrics.ratio, 3)
-            << sharedPartsText(metrics) << (inTheField ? ")" : "") << ", covered "
+            << boundKindText(metrics) << sharedPartsText(metrics) << (inTheField ? ")" : "") << ", covered "
             << formatPercent(metrics.coveredFraction) << " of the passable area\n";
     // A split mission's flights, trips and turnarounds take longer than the plan's makespan says.
     if (!fieldTimeNote_.empty())

@@ -165,8 +165,9 @@ std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::Compar
 }
 
 QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
-                             const std::vector<ComparisonPanel>& panels, const AreaOutline* area) {
-    const int columns = columnsFor(panels.size());
+                             const std::vector<ComparisonPanel>& panels, const AreaOutline* area,
+                             int mostColumns) {
+    const int columns = std::min(columnsFor(panels.size()), std::max(mostColumns, 1));
     const int rows = static_cast<int>((panels.size() + static_cast<std::size_t>(columns) - 1) /
                                       static_cast<std::size_t>(columns));
     const int width = margin + columns * (tileSide + margin);

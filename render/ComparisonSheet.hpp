@@ -33,10 +33,11 @@ struct ComparisonPanel {
 
 // The plans as small multiples on one sheet, same extent and scale, each with its name and figures under
 // it, and below them a bar chart of every robot's time per planner; area: the edges of the area of interest
-// and no-go zones the plans were made in, drawn over each.
+// and no-go zones the plans were made in, drawn over each. Up to three plans side by side, or mostColumns
+// (one in a narrow dock, where three would be scaled down until their captions cannot be read).
 [[nodiscard]] QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
                                            const std::vector<ComparisonPanel>& panels,
-                                           const AreaOutline* area = nullptr);
+                                           const AreaOutline* area = nullptr, int mostColumns = 3);
 // The sheet as a PNG, written atomically; false with a message naming the file on failure.
 [[nodiscard]] bool writeComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
                                         const std::vector<ComparisonPanel>& panels, const QString& path,

@@ -58,10 +58,17 @@ template <typename Item = NumberItem> QTableWidgetItem* numberItem(double value,
     return item;
 }
 
-QTableWidgetItem* timeItem(double seconds, bool coversLess) {
-    QTableWidgetItem* item = numberItem<TimeItem>(seconds / 3600.0, 2);
+QTableWidgetItem* timeItem(double seconds, double unitSeconds, bool coversLess) {
+    QTableWidgetItem* item = numberItem<TimeItem>(seconds / unitSeconds, 2);
     item->setData(coversLessRole, coversLess);
     return item;
+}
+
+QString leavesLandNote(const PlannerDescription& planner) {
+    if (planner.promises.everyReachableCellCovered)
+        return {};
+    return QObject::tr(" (leaves the land beyond its robots' reach uncovered: check it to compare it once "
+                       "its reach suits the map)");
 }
 
 } // namespace
@@ -73,8 +80,10 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
     for (const PlannerDescription& planner : plannerDescriptions()) {
         auto* box = new QCheckBox(QString::fromStdString(planner.label), this);
         box->setObjectName(QString::fromStdString("compare_" + planner.name));
-        box->setToolTip(QString::fromStdString(planner.summary));
-        box->setChecked(!planner.singleRobot);
+        box->setToolTip(QString::fromStdString(planner.summary) + leavesLandNote(planner));
+        // A planner that leaves land beyond its robots' reach (a battery's) covers a fraction of the map
+        // beside the others unless its reach was set for the job: compared when the user asks for it.
+        box->setChecked(!planner.singleRobot && planner.promises.everyReachableCellCovered);
         checks_[planner.name] = box;
         choices->addWidget(box, index / 3, index % 3);
         ++index;
@@ -96,7 +105,7 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
         {tr("Hours"), tr("Makespan: the time of the slowest robot, in hours")},
         {tr("Home h"),
          tr("Where flights split the missions: when the last robot is home, its flights and the "
-            "turnarounds between them included, in hours")},
+            "turnarounds between them included, in hours (in days where the makespan header says Days)")},
         {tr("x 1st"),
          tr("Time done divided by the first plan's (in bold): how much longer the team waits with this one; "
             "none for a plan covering less than the most")},
@@ -136,6 +145,9 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
     scroll_ = new QScrollArea(this);
     scroll_->setWidget(sheet_);
     scroll_->setWidgetResizable(true);
+    // Fitted to the width, the sheet scrolls down only: a scroll bar appearing would narrow what it fits.
+    scroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOn);
     scroll_->setMinimumHeight(160);
     layout->addWidget(scroll_, 2);
 }
@@ -147,9 +159,9 @@ void ComparisonPanel::setRobotCount(int robots) {
         box->setEnabled(possible);
         if (!possible)
             box->setChecked(false);
-        box->setToolTip(
-            QString::fromStdString(planner.summary) +
-            (possible ? QString() : tr(" (plans for one robot; the mission has %1)").arg(robots)));
+        box->setToolTip(QString::fromStdString(planner.summary) +
+                        (possible ? leavesLandNote(planner)
+                                  : tr(" (plans for one robot; the mission has %1)").arg(robots)));
     }
 }
 
@@ -175,8 +187,23 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
                                   const ClassTable& classes, const AreaOutline* area) {
     table_->setSortingEnabled(false);
     table_->clearContents();
-    table_->setRowCount(static_cast<int>(outcome.rows.size()));
+    // While the comparison runs, the planners still to come have rows of their own, without figures.
+    const std::size_t pending =
+        outcome.choices.size() > outcome.rows.size() ? outcome.choices.size() - outcome.rows.size() : 0;
+    table_->setRowCount(static_cast<int>(outcome.rows.size() + pending));
     bool inTheField = false; // some plan's robots are home later than their paths end
+    // Days where the sheet's chart counts in days (a robot over ten days), so that both read alike.
+    double longest = 0.0;
+    for (const io::ComparisonRow& row : outcome.rows)
+        if (row.outcome == io::ComparisonRow::Outcome::Planned)
+            longest = std::max({longest, row.metrics.makespanSeconds, row.metrics.fieldMakespanSeconds});
+    const bool inDays = longest > 10.0 * 86400.0;
+    const double unitSeconds = inDays ? 86400.0 : 3600.0;
+    table_->horizontalHeaderItem(Makespan)->setText(inDays ? tr("Days") : tr("Hours"));
+    table_->horizontalHeaderItem(Makespan)->setToolTip(
+        inDays ? tr("Makespan: the time of the slowest robot, in days")
+               : tr("Makespan: the time of the slowest robot, in hours"));
+    table_->horizontalHeaderItem(Home)->setText(inDays ? tr("Home d") : tr("Home h"));
     const double most = io::mostCovered(outcome.rows);
     const std::vector<int> ranks = io::ranksOf(outcome.rows);
     const std::vector<double> againstFirst = io::timesTheFirst(outcome.rows);
@@ -215,16 +242,40 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         const PlanMetrics& metrics = row.metrics;
         const bool coversLess = io::coversLessThanMost(row, most);
         table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
-        table_->setItem(r, Ratio, numberItem(metrics.ratio, 3));
-        table_->setItem(r, Makespan, timeItem(metrics.makespanSeconds, coversLess));
+        QTableWidgetItem* ratio = numberItem(metrics.ratio, 3);
+        if (metrics.boundOfDetectionPasses) {
+            // Another kind of bound: greyed, so that 8.8 is not read as a plan 8.8 times uneven.
+            ratio->setForeground(table_->palette().brush(QPalette::Disabled, QPalette::Text));
+            ratio->setToolTip(
+                tr("Against a bound of the passes its targets need, each at the fastest class's "
+                   "speed: looser than the other plans' bounds, so this ratio reads high for an "
+                   "even plan and is not to be set beside theirs"));
+        }
+        table_->setItem(r, Ratio, ratio);
+        table_->setItem(r, Makespan, timeItem(metrics.makespanSeconds, unitSeconds, coversLess));
         if (metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0) {
-            table_->setItem(r, Home, timeItem(metrics.fieldMakespanSeconds, coversLess));
+            table_->setItem(r, Home, timeItem(metrics.fieldMakespanSeconds, unitSeconds, coversLess));
             inTheField = true;
         }
         if (againstFirst[i] > 0.0)
             table_->setItem(r, AgainstFirst, numberItem(againstFirst[i], 3));
         table_->setItem(r, Turns, numberItem(metrics.totalTurns(), 0));
         table_->setItem(r, Planning, numberItem(row.planningMilliseconds / 1000.0, 2));
+    }
+    for (std::size_t next = 0; next < pending; ++next) {
+        const std::size_t index = outcome.rows.size() + next;
+        const auto r = static_cast<int>(index);
+        auto* name = new QTableWidgetItem(QString::fromStdString(outcome.choices[index].planner));
+        name->setData(Qt::UserRole, r);
+        // Greyed, in italics: not planned yet, whichever columns the dock has room for.
+        QFont italic = name->font();
+        italic.setItalic(true);
+        name->setFont(italic);
+        name->setForeground(table_->palette().brush(QPalette::Disabled, QPalette::Text));
+        const QString state = next == 0 ? tr("planning…") : tr("waiting");
+        name->setToolTip(state);
+        table_->setItem(r, Name, name);
+        table_->setItem(r, Outcome, new QTableWidgetItem(state));
     }
     table_->setColumnHidden(Home, !inTheField);
     // Every planner's row in view (up to nine) above the sheet, which scrolls on its own.
@@ -236,11 +287,19 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     // The soonest done first (of the plans that cover the most): what the user waits for, where a
     // balanced plan may still take longest.
     table_->sortByColumn(inTheField ? Home : Makespan, Qt::AscendingOrder);
+    if (pending > 0) {
+        // The sheet compares every plan: drawn once they are all made, not from an earlier comparison.
+        sheetImage_ = QImage();
+        sheet_->clear();
+        return;
+    }
     std::vector<const Plan*> plans;
     for (const auto& plan : outcome.plans)
         plans.push_back(plan.get());
+    // One plan under another: the dock is narrow, and scaled to it three side by side had captions 5 px
+    // tall. The sheet scrolls down instead.
     sheetImage_ = render::renderComparisonSheet(grid, classes,
-                                                render::rankedComparisonPanels(outcome.rows, plans), area);
+                                                render::rankedComparisonPanels(outcome.rows, plans), area, 1);
     fitSheet();
     if (fullSizeSheet_ != nullptr && fullSizeSheet_->isVisible())
         showFullSizeSheet(); // the new comparison's sheet where the last one's is open

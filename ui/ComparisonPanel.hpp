@@ -35,7 +35,8 @@ class ComparisonPanel : public QWidget {
     // Whether the panel's button runs a comparison (not while planning or exporting, nor without a map and
     // robots); why not, in its tooltip.
     void setCanCompare(bool can, const QString& whyNot);
-    // area: the area of interest's and no-go zones' edges, drawn on the sheet's maps.
+    // area: the area of interest's and no-go zones' edges, drawn on the sheet's maps. An outcome with fewer
+    // rows than choices is one still running: the rest are listed as to come, and the sheet waits for them.
     void showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid, const ClassTable& classes,
                      const AreaOutline* area = nullptr);
 

@@ -101,6 +101,9 @@ bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice>
             outcome.rows.push_back(row);
             outcome.errors.push_back(refused);
             outcome.plans.push_back(plan);
+            if (index + 1 < planners)
+                QMetaObject::invokeMethod(
+                    this, [this, soFar = outcome] { emit plannerFinished(soFar); }, Qt::QueuedConnection);
         }
         return outcome;
     };

@@ -44,6 +44,8 @@ class ComparisonRunner : public QObject {
   signals:
     // planner: index in the choices; fraction of that planner's run.
     void progressed(int planner, int planners, const QString& name, const QString& stage, double fraction);
+    // After each planner: the outcome so far, with a row for each planner done (all the choices).
+    void plannerFinished(const mcpp::ui::ComparisonOutcome& outcomeSoFar);
     void finished(const mcpp::ui::ComparisonOutcome& outcome);
 
   private:

@@ -785,6 +785,7 @@ void MainWindow::createStatusBar() {
                 progressBar_->setValue(
                     static_cast<int>((planner + std::clamp(fraction, 0.0, 1.0)) / planners * 1000.0));
             });
+    connect(comparisonRunner_, &ComparisonRunner::plannerFinished, this, &MainWindow::handleComparedPlanner);
     connect(comparisonRunner_, &ComparisonRunner::finished, this, &MainWindow::handleComparisonFinished);
 }
 
@@ -1778,8 +1779,14 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     addRobotSettings(prepared.value().problem);
     if (!comparisonRunner_->start(std::move(prepared.value().problem), choices))
         return false;
+    // The planners listed at once, each row filled in as its planner is done.
+    comparison_ = ComparisonOutcome{};
+    comparison_.choices = choices;
+    showComparison();
     logLargeMission(choices);
     showBusy(tr("Comparing…"), true);
+    canvas_->setWorkUnderway(tr("Comparing planners… select a row under Compare planners to show a plan "
+                                "once its planner is done."));
     progressBar_->setValue(0);
     updateActions();
     showStatus(tr("Comparing %1 planners…").arg(planners.size()), 0);
@@ -1805,6 +1812,7 @@ bool MainWindow::isComparing() const {
 
 void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     showBusy({}, false);
+    canvas_->setWorkUnderway({});
     if (!document_->hasMap() || document_->sharedRaster() != comparisonRaster_) {
         // Another map was opened meanwhile: these plans belong to the one before.
         comparisonRaster_.reset();
@@ -1814,18 +1822,9 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
         return;
     }
     comparison_ = outcome;
-    // A planner's refusal named as the window names Plan's: the field in the window's terms, the robots by
-    // name, the points with their degrees.
-    for (std::size_t row = 0; row < comparison_.rows.size() && row < comparison_.errors.size(); ++row)
-        if (const auto& error = comparison_.errors[row])
-            if (const auto named =
-                    io::planningErrorText(*error, fieldNamer(comparison_.choices[row].planner), robotNames()))
-                comparison_.rows[row].message = withDegrees(*named);
-    comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes(),
-                                  document_->raster() != nullptr ? &document_->raster()->area : nullptr);
+    nameRefusals(comparison_);
+    showComparison();
     logComparedWarnings();
-    comparisonDock_->show();
-    comparisonDock_->raise();
     const auto planned = std::count_if(outcome.plans.begin(), outcome.plans.end(),
                                        [](const auto& plan) { return plan != nullptr; });
     canvas_->setComparedPlansWaiting(planned > 0);
@@ -1834,6 +1833,35 @@ void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
                    : tr("Compared %1 planners: select a row to show its plan.").arg(outcome.rows.size()));
     updateActions();
     emit comparisonFinished(!outcome.cancelled && planned > 0);
+}
+
+// The rows so far, where the user can select a plan made while the others are still planned.
+void MainWindow::handleComparedPlanner(const ComparisonOutcome& outcomeSoFar) {
+    // Late news of a run already over, or of one made on a map since closed, is not shown.
+    if (outcomeSoFar.rows.size() <= comparison_.rows.size() || !document_->hasMap() ||
+        document_->sharedRaster() != comparisonRaster_)
+        return;
+    comparison_ = outcomeSoFar;
+    nameRefusals(comparison_);
+    showComparison();
+    emit comparisonProgressed(static_cast<int>(comparison_.rows.size()));
+}
+
+// A planner's refusal named as the window names Plan's: the field in the window's terms, the robots by name,
+// the points with their degrees.
+void MainWindow::nameRefusals(ComparisonOutcome& outcome) const {
+    for (std::size_t row = 0; row < outcome.rows.size() && row < outcome.errors.size(); ++row)
+        if (const auto& error = outcome.errors[row])
+            if (const auto named =
+                    io::planningErrorText(*error, fieldNamer(outcome.choices[row].planner), robotNames()))
+                outcome.rows[row].message = withDegrees(*named);
+}
+
+void MainWindow::showComparison() {
+    comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes(),
+                                  document_->raster() != nullptr ? &document_->raster()->area : nullptr);
+    comparisonDock_->show();
+    comparisonDock_->raise();
 }
 
 // A plan of weeks: what to change, where the window changes it; empty for a plan of less.
@@ -1960,6 +1988,8 @@ bool MainWindow::startPlanning() {
         return false;
     logLargeMission({document_->plannerChoice()});
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();
+    canvas_->setWorkUnderway(tr("Planning… the plan is shown here when it is done (Cancel, beside the "
+                                "progress bar, stops it)."));
     stageLabel_->setText(tr("Starting…"));
     progressBar_->setValue(0);
     stageLabel_->show();
@@ -1984,6 +2014,7 @@ void MainWindow::cancelPlanning() {
 }
 
 void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
+    canvas_->setWorkUnderway({});
     stageLabel_->hide();
     progressBar_->hide();
     cancelButton_->hide();

@@ -112,6 +112,8 @@ class MainWindow : public QMainWindow {
   signals:
     void planningFinished(bool success);
     void exportFinished(bool success);
+    // A planner of a running comparison is done: its row is in the table, the others' still to come.
+    void comparisonProgressed(int plannersDone);
     void comparisonFinished(bool success);
 
   protected:
@@ -175,7 +177,10 @@ class MainWindow : public QMainWindow {
     void showCursor(MapPoint point);
     void handlePlanningFinished(const PlanningOutcome& outcome);
     void handleExportFinished(const ExportOutcome& outcome);
+    void handleComparedPlanner(const ComparisonOutcome& outcomeSoFar);
     void handleComparisonFinished(const ComparisonOutcome& outcome);
+    void nameRefusals(ComparisonOutcome& outcome) const;
+    void showComparison();
     void showComparedPlan(int row);
     void logPlanIssues(const Plan& plan);
     [[nodiscard]] QString longPlanAdvice(double makespanSeconds, std::size_t robots) const;

@@ -283,6 +283,8 @@ QString MapCanvas::bannerText() const {
 QString MapCanvas::bannerText(bool planStale) const {
     if (!document_->hasMap())
         return {};
+    if (!workUnderway_.isEmpty() && (planStale || document_->plan() == nullptr))
+        return workUnderway_;
     if (planStale)
         return tr("Plan is out of date: inputs changed since it was computed. Press Plan (F5).");
     if (document_->robots().empty())
@@ -293,6 +295,11 @@ QString MapCanvas::bannerText(bool planStale) const {
         return tr("Planners compared: select a row under Compare planners to show its plan, or press Plan "
                   "(F5).");
     return tr("Not planned yet. Press Plan (F5).");
+}
+
+void MapCanvas::setWorkUnderway(const QString& text) {
+    workUnderway_ = text;
+    update();
 }
 
 void MapCanvas::setComparedPlansWaiting(bool waiting) {

@@ -39,6 +39,9 @@ class MapCanvas : public QWidget {
     [[nodiscard]] int selectedStart() const { return selectedStart_; }
     // A comparison has plans to show on this map, none yet shown: the banner says how to show one.
     void setComparedPlansWaiting(bool waiting);
+    // What the window is working out for this map (planning, comparing), said by the banner in place of
+    // "press Plan" until it is done; empty when nothing is.
+    void setWorkUnderway(const QString& text);
     // What the banner at the top of the map says: what to do next, or empty.
     [[nodiscard]] QString bannerText() const;
 
@@ -106,6 +109,7 @@ class MapCanvas : public QWidget {
     bool fitted_ = false; // the view is as zoomToFit left it: no pan or zoom since
     int selectedStart_ = -1;
     bool comparedPlansWaiting_ = false;
+    QString workUnderway_;
 
     // One press-move-release gesture.
     enum class Gesture { None, Pan, DragStart, Click, DragRectangle };

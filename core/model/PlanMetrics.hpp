@@ -48,6 +48,10 @@ struct PlanMetrics {
     // robots, of their longest time over the part's own bound. 0 elsewhere: the map one part, no part
     // shared, a shared part or a battery's charges setting the bound. Not kept in saved plans.
     double sharedPartsRatio = 0.0;
+    // A detection plan's bound: the passes its targets need, each priced at the fastest class's speed and
+    // the best sensor's reach. Sound, but far looser than other plans' bounds: its ratio reads high for an
+    // even plan and is not to be set beside theirs. Not kept in saved plans.
+    bool boundOfDetectionPasses = false;
     // Where the problem measures time in the field (PlanningProblem::fieldSeconds), when the last robot is
     // done there; and where some robot's path is split into flights (PlanningProblem::robotFlights), the
     // least any plan making these turns could take there: the work the path bound counts, shared out in full

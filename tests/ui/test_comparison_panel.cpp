@@ -70,6 +70,25 @@ class ComparisonPanelTest : public QObject {
         QVERIFY(table->isColumnHidden(homeColumn));
     }
 
+    // Plans of weeks are counted in days, as the sheet's chart counts them: 155 days, not 3 720 hours.
+    void plansOfWeeksAreCountedInDays() {
+        const auto raster = test::grassRaster();
+        const io::Mission mission = test::twoRobotMission();
+        ui::ComparisonPanel panel;
+        QTableWidget* table = panel.table();
+        const int makespanColumn = homeColumn - 1;
+        panel.showOutcome(outcomeOf({plannedRow("darp", 1.0, 7200.0)}), raster->grid, mission.classes);
+        QCOMPARE(table->horizontalHeaderItem(makespanColumn)->text(), QStringLiteral("Hours"));
+        QCOMPARE(table->item(0, makespanColumn)->text(), QStringLiteral("2.00"));
+        panel.showOutcome(
+            outcomeOf({plannedRow("darp", 1.0, 155.5 * 86400.0), plannedRow("mstc", 1.0, 7200.0)}),
+            raster->grid, mission.classes);
+        QCOMPARE(table->horizontalHeaderItem(makespanColumn)->text(), QStringLiteral("Days"));
+        QCOMPARE(table->item(panel.rowOfPlanner("darp"), makespanColumn)->text(), QStringLiteral("155.50"));
+        QCOMPARE(table->item(panel.rowOfPlanner("mstc"), makespanColumn)->text(), QStringLiteral("0.08"));
+        QCOMPARE(table->horizontalHeaderItem(homeColumn)->text(), QStringLiteral("Home d"));
+    }
+
     // The plan done soonest comes first, not the best balanced: a plan at 1.00 of its bound may still take
     // five times as long. Where robots fly, by when the last is home; plans without that figure after.
     void theSoonestDonePlanComesFirst() {
@@ -174,6 +193,13 @@ class ComparisonPanelTest : public QObject {
             raster->grid, mission.classes);
         const int shownWidth = panel.sheet()->pixmap().width();
         QVERIFY(shownWidth > 0);
+        // One plan under another in the dock, where three side by side came out at a fifth of their size.
+        panel.showOutcome(outcomeOf({plannedRow("darp", 1.00, 9000.0), plannedRow("mcpp-mlct", 1.01, 7200.0),
+                                     plannedRow("mstc", 1.02, 9500.0)}),
+                          raster->grid, mission.classes);
+        const QSize sheetSize = panel.sheet()->pixmap().size();
+        QVERIFY2(sheetSize.height() > 3 * sheetSize.width(),
+                 qPrintable(QStringLiteral("%1 x %2").arg(sheetSize.width()).arg(sheetSize.height())));
         QTest::mouseDClick(panel.sheet(), Qt::LeftButton);
         auto* dialog = panel.findChild<QDialog*>(QStringLiteral("fullSizeSheet"));
         QVERIFY(dialog != nullptr && dialog->isVisible());

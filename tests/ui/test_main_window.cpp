@@ -567,8 +567,12 @@ class TestMainWindow : public QObject {
 
         QSignalSpy finished(&window, &ui::MainWindow::planningFinished);
         QVERIFY(window.startPlanning());
+        // While it plans, the map says so rather than "Not planned yet. Press Plan".
+        QVERIFY2(window.canvas()->bannerText().startsWith(QStringLiteral("Planning…")),
+                 qPrintable(window.canvas()->bannerText()));
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         QVERIFY2(finished.first().first().toBool(), qPrintable(window.lastError()));
+        QVERIFY2(window.canvas()->bannerText().isEmpty(), qPrintable(window.canvas()->bannerText()));
         for (const char* key : {"geojson", "kml", "gpx", "qgc-plan", "png", "report-json"}) {
             auto* action = window.findChild<QAction*>(QStringLiteral("export_%1").arg(QLatin1String(key)));
             QVERIFY2(action != nullptr, key);
@@ -983,17 +987,42 @@ class TestMainWindow : public QObject {
         ui::ComparisonPanel* panel = window.comparisonPanel();
         auto* spiral = panel->findChild<QCheckBox*>(QStringLiteral("compare_spiral-stc"));
         QVERIFY(spiral != nullptr && !spiral->isEnabled()); // five robots
+        // Checked at first: the planners that cover all the land they reach; the battery planner, whose
+        // reach the map may dwarf, is offered unchecked and says why.
+        const std::vector<std::string> byDefault = panel->checkedPlanners();
+        QVERIFY(std::find(byDefault.begin(), byDefault.end(), "darp") != byDefault.end());
+        QVERIFY(std::find(byDefault.begin(), byDefault.end(), "wavefront-battery") == byDefault.end());
+        auto* battery = panel->findChild<QCheckBox*>(QStringLiteral("compare_wavefront-battery"));
+        QVERIFY(battery != nullptr && battery->isEnabled() && !battery->isChecked());
+        QVERIFY2(battery->toolTip().contains(QStringLiteral("uncovered")), qPrintable(battery->toolTip()));
         panel->setCheckedPlanners({"mcpp-mlct", "darp", "mstc", "spiral-stc", "wavefront-battery"});
         QCOMPARE(panel->checkedPlanners(),
                  (std::vector<std::string>{"mcpp-mlct", "darp", "mstc", "wavefront-battery"}));
 
         QSignalSpy finished(&window, &ui::MainWindow::comparisonFinished);
+        // Each planner's row is filled in as it is done, the others listed as to come.
+        QStringList statesAfterFirst;
+        connect(&window, &ui::MainWindow::comparisonProgressed, this, [&](int done) {
+            if (done != 1)
+                return;
+            QTableWidget* table = panel->table();
+            for (int row = 0; row < table->rowCount(); ++row)
+                statesAfterFirst << table->item(row, table->columnCount() - 1)->text();
+        });
         auto* compare = window.findChild<QAction*>(QStringLiteral("compareAction"));
         QVERIFY(compare != nullptr && compare->isEnabled());
         compare->trigger();
         QVERIFY(window.isComparing() || finished.count() == 1);
+        // At once, every planner listed and the map saying what is under way.
+        QCOMPARE(panel->table()->rowCount(), 4);
+        QVERIFY2(window.canvas()->bannerText().startsWith(QStringLiteral("Comparing planners…")),
+                 qPrintable(window.canvas()->bannerText()));
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         QVERIFY(finished.takeFirst().at(0).toBool());
+        QCOMPARE(statesAfterFirst.size(), 4);
+        QCOMPARE(statesAfterFirst.filter(QStringLiteral("planned")).size(), 1);
+        QCOMPARE(statesAfterFirst.filter(QStringLiteral("planning…")).size(), 1);
+        QCOMPARE(statesAfterFirst.filter(QStringLiteral("waiting")).size(), 2);
 
         QTableWidget* table = panel->table();
         QCOMPARE(table->rowCount(), 4);
