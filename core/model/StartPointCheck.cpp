@@ -60,6 +60,62 @@ std::string whyOutside(std::uint8_t reason) {
     }
 }
 
+// "north-east": the compass point nearest the direction (dx east, dy north).
+std::string compassPoint(double dx, double dy) {
+    static const char* const names[] = {"east", "north-east", "north", "north-west",
+                                        "west", "south-west", "south", "south-east"};
+    const double turns = std::atan2(dy, dx) / (2.0 * std::acos(-1.0)); // -0.5 to 0.5, 0 east
+    const int sector = static_cast<int>(std::lround(turns * 8.0 + 8.0)) % 8;
+    return names[sector];
+}
+
+// Whether a robot could start on the pixel: in the task area, of a class robots cross.
+bool startable(const ClassGrid& grid, const ClassTable& classes, int column, int row) {
+    if (grid.isOutside(column, row))
+        return false;
+    const LandCoverClass* landCover = classes.find(grid.valueAt(column, row));
+    return landCover != nullptr && landCover->isTraversable();
+}
+
+// "; the nearest land of the task area a robot can cross is 35 m east, at (500105, 3999955)", searched up to
+// a few hundred pixels away (a start on the nodata rim of a warped raster, or just outside a drawn area);
+// empty when none is that near.
+std::string nearestStartableLand(const ClassGrid& grid, const ClassTable& classes, MapPoint point,
+                                 PixelIndex from) {
+    constexpr int farthestRing = 400;
+    std::optional<PixelIndex> nearest;
+    double nearestDistance = 0.0;
+    int lastRing = farthestRing;
+    for (int ring = 1; ring <= lastRing; ++ring) {
+        for (int row = from.row - ring; row <= from.row + ring; ++row) {
+            if (row < 0 || row >= grid.rows)
+                continue;
+            const bool edgeRow = row == from.row - ring || row == from.row + ring;
+            for (int column = from.column - ring; column <= from.column + ring;
+                 column += edgeRow ? 1 : 2 * ring) {
+                if (column < 0 || column >= grid.columns || !startable(grid, classes, column, row))
+                    continue;
+                const MapPoint centre{grid.originX + (column + 0.5) * grid.pixelWidth,
+                                      grid.originY - (row + 0.5) * grid.pixelHeight};
+                const double distance = std::hypot(centre.x - point.x, centre.y - point.y);
+                if (!nearest || distance < nearestDistance) {
+                    nearest = PixelIndex{column, row};
+                    nearestDistance = distance;
+                }
+            }
+        }
+        // A nearer pixel may lie on a later ring, up to the found one's distance in pixels away.
+        if (nearest && lastRing == farthestRing)
+            lastRing = std::min(farthestRing, static_cast<int>(std::ceil(ring * std::sqrt(2.0))));
+    }
+    if (!nearest)
+        return {};
+    const MapPoint centre{grid.originX + (nearest->column + 0.5) * grid.pixelWidth,
+                          grid.originY - (nearest->row + 0.5) * grid.pixelHeight};
+    return "; the nearest land of the task area a robot can cross is " + formatDistance(nearestDistance) +
+           " " + compassPoint(centre.x - point.x, centre.y - point.y) + ", at " + describePoint(centre);
+}
+
 } // namespace
 
 bool takesOffThere(const ClassGrid& grid, MapPoint point, const StartPointProblem& problem) {
@@ -94,7 +150,8 @@ std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const 
     if (grid.isOutside(pixel->column, pixel->row))
         return StartPointProblem{Kind::StartOutsideArea,
                                  named + " is not in the task area: " +
-                                     whyOutside(grid.outside[grid.index(pixel->column, pixel->row)])};
+                                     whyOutside(grid.outside[grid.index(pixel->column, pixel->row)]),
+                                 nearestStartableLand(grid, classes, point, *pixel)};
     const std::int32_t value = grid.valueAt(pixel->column, pixel->row);
     const LandCoverClass* landCover = classes.find(value);
     if (landCover == nullptr)

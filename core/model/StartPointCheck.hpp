@@ -7,14 +7,23 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mcpp {
 
 // Why a robot cannot start at a point, judged on the raster and class table alone.
 struct StartPointProblem {
+    StartPointProblem(PlanningError::Kind problemKind, std::string what, std::string nearestLandText = {})
+        : kind(problemKind), detail(std::move(what)), nearestLand(std::move(nearestLandText)) {}
+
     PlanningError::Kind kind = PlanningError::Kind::StartOnObstacle;
     std::string detail; // what is wrong, without naming the robot: "(x, y) is on class 11 (Open water), ..."
+    // Off the task area: "; the nearest land of the task area a robot can cross is 30 m east, at (x, y)", or
+    // empty (none within a few hundred pixels, or another problem). Said where the start is refused.
+    std::string nearestLand;
+
+    [[nodiscard]] std::string refusal() const { return detail + nearestLand; }
 };
 
 // The one rule every caller (planners, batch mode, the window) applies to a start point: it must be a number,

@@ -59,7 +59,7 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
                                                               problem.starts[robot], *problemAtStart);
         if (!snappable || !(snap || takesOff))
             throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot),
-                                            problemAtStart->detail);
+                                            problemAtStart->refusal());
     }
 }
 

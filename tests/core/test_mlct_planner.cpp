@@ -203,6 +203,24 @@ class MlctPlannerTest : public QObject {
                     "is not in the task area: the raster has no land cover there (nodata)");
     }
 
+    // A start just off the task area (the nodata rim of a warped raster) says where the nearest land a robot
+    // can start on lies: here 3 pixels of nodata east and south, and water east of them.
+    void startOffTheTaskAreaNamesTheNearestLand() {
+        auto problem = lakeProblem();
+        problem.grid.outside.assign(problem.grid.values.size(), 0);
+        for (int row = 0; row < 3; ++row)
+            for (int column = 0; column < 3; ++column)
+                problem.grid.outside[problem.grid.index(column, row)] = ClassGrid::outsideNodata;
+        expectError(problem, PlanningError::Kind::StartOutsideArea,
+                    "(nodata); the nearest land of the task area a robot can cross is 30 m east, at (500035, "
+                    "3999995)");
+        problem.grid.values[problem.grid.index(3, 0)] = problem.grid.valueAt(4, 4); // water
+        expectError(
+            problem, PlanningError::Kind::StartOutsideArea,
+            "(nodata); the nearest land of the task area a robot can cross is 30 m south, at (500005, "
+            "3999965)");
+    }
+
     // The raster spans x 500000 to 500100, y 3999900 to 4000000: how far off and which way, to the
     // centimetre.
     void startOutsideSaysHowFarAndWhichWay() {
