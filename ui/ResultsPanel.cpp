@@ -365,6 +365,10 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
         ratio_->setText(tr("%1; the robots sharing parts: %2")
                             .arg(metrics.ratio, 0, 'f', 3)
                             .arg(metrics.sharedPartsRatio, 0, 'f', 3));
+    // A detection plan's bound is of another kind: its ratio says against what.
+    if (!inTheField && metrics.boundOfDetectionPasses)
+        ratio_->setText(tr("%1 (to the passes its targets need, each at the fastest class's speed)")
+                            .arg(metrics.ratio, 0, 'f', 3));
     if (inTheField)
         describeFieldTimes(metrics);
     covered_->setText(tr("%1 (%2 % of the passable area)")

@@ -461,6 +461,12 @@ class TestMainWindow : public QObject {
         QCOMPARE(panel.ratioText(), QStringLiteral("1.333"));
         QCOMPARE(lowerBound->text(), ui::ResultsPanel::formatDuration(5400.0));
         QVERIFY(lowerBound->toolTip().isEmpty());
+        // A detection plan's ratio says what its bound counts, looser than the others'.
+        Plan detection = plan;
+        detection.metrics.boundOfDetectionPasses = true;
+        panel.showPlan(&detection, {});
+        QCOMPARE(panel.ratioText(),
+                 QStringLiteral("1.333 (to the passes its targets need, each at the fastest class's speed)"));
     }
 
     void initTestCase() {
