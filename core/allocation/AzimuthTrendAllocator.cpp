@@ -191,8 +191,12 @@ class Allocation {
         buildBoundaries();
         int moves = 0;
         while (moves < iterationCap) {
-            if ((moves & 255) == 0)
+            if ((moves & 255) == 0) {
                 progress_.throwIfCancelled();
+                // On a large map the moves take minutes: the bar goes on with them (up to its cap).
+                progress_.report("allocation",
+                                 0.8 + 0.15 * static_cast<double>(moves) / static_cast<double>(iterationCap));
+            }
             int richest = 0;
             for (int robot = 1; robot < robotCount; ++robot)
                 if (robots_[static_cast<std::size_t>(robot)].cost >
