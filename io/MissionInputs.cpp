@@ -342,7 +342,8 @@ Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& class
         // one flight reaches it).
         if (problem && !robotTakesOffThere(flyingRobots, robot, reconciled.grid, start, *problem))
             return Status::failure(
-                names(MissionField::start(static_cast<int>(robot))) + ": " + problem->refusal() +
+                names(MissionField::start(static_cast<int>(robot))) + ": " +
+                startRefusal(reconciled.grid, classes, start, *problem) +
                 startAdvice(reconciled, *problem, start, static_cast<int>(robot), names) +
                 (takesOffThere(reconciled.grid, start, *problem) ? aircraftTakeOffHint : ""));
     }

@@ -639,6 +639,7 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
     if (Status status = writeAreaLayers(writer, planFeatures.area, wgs84.get(), true); !status)
         return status;
     // Split missions' parts, each flight on its own in Google Earth; a whole mission is its path already.
+    // Up to a few thousand: LIBKML's writing slows down steeply with the placemarks (1 s for 1 129 parts).
     if (const MissionParts parts = missionPartsOf(context);
         parts.split && parts.count <= kmlMostMissionParts) {
         auto transformation = toWgs84(context.georeference, path);
@@ -656,8 +657,9 @@ std::string kmlMissionPartsNote(const ExportContext& context, const std::string&
     if (!parts.split || parts.count <= kmlMostMissionParts)
         return {};
     return std::filesystem::path(path).filename().string() + " leaves out the " +
-           std::to_string(parts.count) + " waypoint file parts (Google Earth slows down with more than " +
-           "2 000" + "): the GeoPackage's missions layer holds them";
+           std::to_string(parts.count) + " waypoint file parts (more than " +
+           std::to_string(kmlMostMissionParts) +
+           " take long to write and to open): a GeoPackage export holds them all in its missions layer";
 }
 
 Status writePlanGpx(const ExportContext& context, const std::string& path) {

@@ -196,7 +196,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     double longest = 0.0;
     for (const io::ComparisonRow& row : outcome.rows)
         if (row.outcome == io::ComparisonRow::Outcome::Planned)
-            longest = std::max({longest, row.metrics.makespanSeconds, row.metrics.fieldMakespanSeconds});
+            longest = std::max(longest, row.metrics.makespanSeconds);
     const bool inDays = longest > 10.0 * 86400.0;
     const double unitSeconds = inDays ? 86400.0 : 3600.0;
     table_->horizontalHeaderItem(Makespan)->setText(inDays ? tr("Days") : tr("Hours"));
@@ -291,6 +291,8 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         // The sheet compares every plan: drawn once they are all made, not from an earlier comparison.
         sheetImage_ = QImage();
         sheet_->clear();
+        if (fullSizeSheet_ != nullptr)
+            fullSizeSheet_->hide();
         return;
     }
     std::vector<const Plan*> plans;
@@ -303,6 +305,15 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     fitSheet();
     if (fullSizeSheet_ != nullptr && fullSizeSheet_->isVisible())
         showFullSizeSheet(); // the new comparison's sheet where the last one's is open
+}
+
+void ComparisonPanel::clearOutcome() {
+    table_->clearContents();
+    table_->setRowCount(0);
+    sheetImage_ = QImage();
+    sheet_->clear();
+    if (fullSizeSheet_ != nullptr)
+        fullSizeSheet_->hide();
 }
 
 bool ComparisonPanel::eventFilter(QObject* watched, QEvent* event) {

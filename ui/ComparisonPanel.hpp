@@ -40,6 +40,9 @@ class ComparisonPanel : public QWidget {
     void showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid, const ClassTable& classes,
                      const AreaOutline* area = nullptr);
 
+    // No rows and no sheet: a comparison dropped because another map was opened while it ran.
+    void clearOutcome();
+
     [[nodiscard]] QTableWidget* table() const { return table_; }
     [[nodiscard]] QLabel* sheet() const { return sheet_; }
     // The table row (in its current order) of a planner, or -1.

@@ -38,8 +38,10 @@ bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice>
         return false;
     cancelRequested_ = std::make_shared<std::atomic<bool>>(false);
     auto cancelFlag = cancelRequested_;
+    const int run = ++runs_;
     // The destructor waits for the run, so the worker may use `this`.
-    auto work = [this, cancelFlag, problem = std::move(problem), choices = std::move(choices)]() mutable {
+    auto work = [this, run, cancelFlag, problem = std::move(problem),
+                 choices = std::move(choices)]() mutable {
         using Clock = std::chrono::steady_clock;
         ComparisonOutcome outcome;
         outcome.choices = choices;
@@ -103,7 +105,12 @@ bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice>
             outcome.plans.push_back(plan);
             if (index + 1 < planners)
                 QMetaObject::invokeMethod(
-                    this, [this, soFar = outcome] { emit plannerFinished(soFar); }, Qt::QueuedConnection);
+                    this,
+                    [this, run, soFar = outcome] {
+                        if (run == runs_) // not news of a run before the one going on
+                            emit plannerFinished(soFar);
+                    },
+                    Qt::QueuedConnection);
         }
         return outcome;
     };

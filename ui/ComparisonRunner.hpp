@@ -51,6 +51,7 @@ class ComparisonRunner : public QObject {
   private:
     QFutureWatcher<ComparisonOutcome> watcher_;
     std::shared_ptr<std::atomic<bool>> cancelRequested_;
+    int runs_ = 0; // runs started, read and written on the GUI thread
 };
 
 } // namespace mcpp::ui

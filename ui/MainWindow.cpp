@@ -1111,6 +1111,7 @@ bool MainWindow::useAreaFiles(const QString& includePath, const QString& exclude
         return false;
     }
     runner_->cancel();
+    comparisonRunner_->cancel(); // its plans would be of the map before
     mission.rasterPath = document_->mission().rasterPath;
     const bool wholeMap = mission.area.empty();
     // What the area leaves to plan on, and how much of it lies off the raster (the raster's own warnings
@@ -1258,6 +1259,7 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
         return false;
     }
     runner_->cancel();
+    comparisonRunner_->cancel(); // its plans would be of the map before
     auto raster = std::make_shared<io::LoadedRaster>(std::move(loaded.value()));
     io::Mission mission;
     mission.rasterPath = QFileInfo(path).absoluteFilePath().toStdString();
@@ -1346,6 +1348,7 @@ bool MainWindow::openMission(const QString& path) {
         mission.robots[robot].startCrs.clear();
     }
     runner_->cancel();
+    comparisonRunner_->cancel(); // its plans would be of the map before
     std::vector<std::string> warnings = raster.value().notes;
     warnings.insert(warnings.end(), raster.value().warnings.begin(), raster.value().warnings.end());
     document_->reset(std::make_shared<io::LoadedRaster>(std::move(raster.value())), std::move(mission),
@@ -1785,8 +1788,7 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     showComparison();
     logLargeMission(choices);
     showBusy(tr("Comparing…"), true);
-    canvas_->setWorkUnderway(tr("Comparing planners… select a row under Compare planners to show a plan "
-                                "once its planner is done."));
+    showWorkUnderway();
     progressBar_->setValue(0);
     updateActions();
     showStatus(tr("Comparing %1 planners…").arg(planners.size()), 0);
@@ -1812,10 +1814,12 @@ bool MainWindow::isComparing() const {
 
 void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     showBusy({}, false);
-    canvas_->setWorkUnderway({});
+    showWorkUnderway();
     if (!document_->hasMap() || document_->sharedRaster() != comparisonRaster_) {
-        // Another map was opened meanwhile: these plans belong to the one before.
+        // Another map was opened meanwhile: these plans belong to the one before, and so do its rows.
         comparisonRaster_.reset();
+        comparison_ = ComparisonOutcome{};
+        comparisonPanel_->clearOutcome();
         showStatus(tr("Comparison dropped: another map was opened while it ran."));
         updateActions();
         emit comparisonFinished(false);
@@ -1843,7 +1847,7 @@ void MainWindow::handleComparedPlanner(const ComparisonOutcome& outcomeSoFar) {
         return;
     comparison_ = outcomeSoFar;
     nameRefusals(comparison_);
-    showComparison();
+    showComparison(false);
     emit comparisonProgressed(static_cast<int>(comparison_.rows.size()));
 }
 
@@ -1857,11 +1861,26 @@ void MainWindow::nameRefusals(ComparisonOutcome& outcome) const {
                 outcome.rows[row].message = withDegrees(*named);
 }
 
-void MainWindow::showComparison() {
+// raise: brings the dock forward (as the comparison starts and ends, not over a tab opened meanwhile).
+void MainWindow::showComparison(bool raise) {
     comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes(),
                                   document_->raster() != nullptr ? &document_->raster()->area : nullptr);
+    if (!raise)
+        return;
     comparisonDock_->show();
     comparisonDock_->raise();
+}
+
+// What the banner says while the window works out a plan or a comparison for this map.
+void MainWindow::showWorkUnderway() {
+    if (comparisonRunner_->isRunning())
+        canvas_->setWorkUnderway(tr("Comparing planners… select a row under Compare planners to show a plan "
+                                    "once its planner is done."));
+    else if (runner_->isRunning())
+        canvas_->setWorkUnderway(tr("Planning… the plan is shown here when it is done (Cancel, beside the "
+                                    "progress bar, stops it)."));
+    else
+        canvas_->setWorkUnderway({});
 }
 
 // A plan of weeks: what to change, where the window changes it; empty for a plan of less.
@@ -1928,6 +1947,13 @@ void MainWindow::logComparedWarnings() {
 }
 
 void MainWindow::showComparedPlan(int row) {
+    if (row >= static_cast<int>(comparison_.plans.size()) &&
+        row < static_cast<int>(comparison_.choices.size())) {
+        showStatus(
+            tr("%1 is not planned yet: its row fills in when it is done.")
+                .arg(QString::fromStdString(comparison_.choices[static_cast<std::size_t>(row)].planner)));
+        return;
+    }
     if (row < 0 || static_cast<std::size_t>(row) >= comparison_.plans.size() ||
         !comparison_.plans[static_cast<std::size_t>(row)])
         return;
@@ -1988,8 +2014,7 @@ bool MainWindow::startPlanning() {
         return false;
     logLargeMission({document_->plannerChoice()});
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();
-    canvas_->setWorkUnderway(tr("Planning… the plan is shown here when it is done (Cancel, beside the "
-                                "progress bar, stops it)."));
+    showWorkUnderway();
     stageLabel_->setText(tr("Starting…"));
     progressBar_->setValue(0);
     stageLabel_->show();
@@ -2014,7 +2039,7 @@ void MainWindow::cancelPlanning() {
 }
 
 void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
-    canvas_->setWorkUnderway({});
+    showWorkUnderway();
     stageLabel_->hide();
     progressBar_->hide();
     cancelButton_->hide();

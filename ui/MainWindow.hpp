@@ -180,7 +180,8 @@ class MainWindow : public QMainWindow {
     void handleComparedPlanner(const ComparisonOutcome& outcomeSoFar);
     void handleComparisonFinished(const ComparisonOutcome& outcome);
     void nameRefusals(ComparisonOutcome& outcome) const;
-    void showComparison();
+    void showComparison(bool raise = true);
+    void showWorkUnderway();
     void showComparedPlan(int row);
     void logPlanIssues(const Plan& plan);
     [[nodiscard]] QString longPlanAdvice(double makespanSeconds, std::size_t robots) const;

@@ -153,7 +153,8 @@ std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreR
         const bool aircraftMay = takesOffThere(grid, point, *problem);
         if (takesOff && aircraftMay)
             return std::nullopt;
-        const QString refusal = tr("%1 %2.").arg(name, QString::fromStdString(problem->refusal()));
+        const QString refusal = tr("%1 %2.").arg(
+            name, QString::fromStdString(startRefusal(grid, mission_.classes, point, *problem)));
         // A ground robot refused where a drone would take off: say so, and where the window sets the vehicle.
         return aircraftMay ? refusal + QStringLiteral(" ") + aircraftHint() : refusal;
     }

@@ -83,37 +83,37 @@ bool startable(const ClassGrid& grid, const ClassTable& classes, int column, int
 std::string nearestStartableLand(const ClassGrid& grid, const ClassTable& classes, MapPoint point,
                                  PixelIndex from) {
     constexpr int farthestRing = 400;
-    std::optional<PixelIndex> nearest;
+    const double smallerSide = std::min(grid.pixelWidth, grid.pixelHeight);
+    const auto centreOf = [&](int column, int row) {
+        return MapPoint{grid.originX + (column + 0.5) * grid.pixelWidth,
+                        grid.originY - (row + 0.5) * grid.pixelHeight};
+    };
+    std::optional<MapPoint> nearest;
     double nearestDistance = 0.0;
     int lastRing = farthestRing;
     for (int ring = 1; ring <= lastRing; ++ring) {
-        for (int row = from.row - ring; row <= from.row + ring; ++row) {
-            if (row < 0 || row >= grid.rows)
-                continue;
+        for (int row = std::max(from.row - ring, 0); row <= std::min(from.row + ring, grid.rows - 1); ++row) {
             const bool edgeRow = row == from.row - ring || row == from.row + ring;
             for (int column = from.column - ring; column <= from.column + ring;
                  column += edgeRow ? 1 : 2 * ring) {
                 if (column < 0 || column >= grid.columns || !startable(grid, classes, column, row))
                     continue;
-                const MapPoint centre{grid.originX + (column + 0.5) * grid.pixelWidth,
-                                      grid.originY - (row + 0.5) * grid.pixelHeight};
+                const MapPoint centre = centreOf(column, row);
                 const double distance = std::hypot(centre.x - point.x, centre.y - point.y);
-                if (!nearest || distance < nearestDistance) {
-                    nearest = PixelIndex{column, row};
-                    nearestDistance = distance;
-                }
+                if (nearest && distance >= nearestDistance)
+                    continue;
+                nearest = centre;
+                nearestDistance = distance;
+                // A pixel on ring k lies at least k - 1/2 pixels away, the point anywhere in its own pixel:
+                // rings beyond this one's distance cannot hold a nearer one.
+                lastRing = std::min(lastRing, static_cast<int>(std::ceil(distance / smallerSide + 0.5)));
             }
         }
-        // A nearer pixel may lie on a later ring, up to the found one's distance in pixels away.
-        if (nearest && lastRing == farthestRing)
-            lastRing = std::min(farthestRing, static_cast<int>(std::ceil(ring * std::sqrt(2.0))));
     }
     if (!nearest)
         return {};
-    const MapPoint centre{grid.originX + (nearest->column + 0.5) * grid.pixelWidth,
-                          grid.originY - (nearest->row + 0.5) * grid.pixelHeight};
     return "; the nearest land of the task area a robot can cross is " + formatDistance(nearestDistance) +
-           " " + compassPoint(centre.x - point.x, centre.y - point.y) + ", at " + describePoint(centre);
+           " " + compassPoint(nearest->x - point.x, nearest->y - point.y) + ", at " + describePoint(*nearest);
 }
 
 } // namespace
@@ -150,8 +150,7 @@ std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const 
     if (grid.isOutside(pixel->column, pixel->row))
         return StartPointProblem{Kind::StartOutsideArea,
                                  named + " is not in the task area: " +
-                                     whyOutside(grid.outside[grid.index(pixel->column, pixel->row)]),
-                                 nearestStartableLand(grid, classes, point, *pixel)};
+                                     whyOutside(grid.outside[grid.index(pixel->column, pixel->row)])};
     const std::int32_t value = grid.valueAt(pixel->column, pixel->row);
     const LandCoverClass* landCover = classes.find(value);
     if (landCover == nullptr)
@@ -164,6 +163,16 @@ std::optional<StartPointProblem> startPointProblem(const ClassGrid& grid, const 
                                                             ", which robots cannot cross"};
     }
     return std::nullopt;
+}
+
+std::string startRefusal(const ClassGrid& grid, const ClassTable& classes, MapPoint point,
+                         const StartPointProblem& problem) {
+    if (problem.kind != PlanningError::Kind::StartOutsideArea)
+        return problem.detail;
+    const auto pixel = grid.pixelAt(point);
+    if (!pixel || !grid.isOutside(pixel->column, pixel->row))
+        return problem.detail;
+    return problem.detail + nearestStartableLand(grid, classes, point, *pixel);
 }
 
 } // namespace mcpp

@@ -7,23 +7,14 @@
 
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace mcpp {
 
 // Why a robot cannot start at a point, judged on the raster and class table alone.
 struct StartPointProblem {
-    StartPointProblem(PlanningError::Kind problemKind, std::string what, std::string nearestLandText = {})
-        : kind(problemKind), detail(std::move(what)), nearestLand(std::move(nearestLandText)) {}
-
     PlanningError::Kind kind = PlanningError::Kind::StartOnObstacle;
     std::string detail; // what is wrong, without naming the robot: "(x, y) is on class 11 (Open water), ..."
-    // Off the task area: "; the nearest land of the task area a robot can cross is 30 m east, at (x, y)", or
-    // empty (none within a few hundred pixels, or another problem). Said where the start is refused.
-    std::string nearestLand;
-
-    [[nodiscard]] std::string refusal() const { return detail + nearestLand; }
 };
 
 // The one rule every caller (planners, batch mode, the window) applies to a start point: it must be a number,
@@ -42,6 +33,11 @@ struct StartPointProblem {
 [[nodiscard]] bool robotTakesOffThere(const std::vector<bool>& flyingRobots, std::size_t robot,
                                       const ClassGrid& grid, MapPoint point,
                                       const StartPointProblem& problem);
+// What to say where a start is refused for that problem: its detail, and for a start off the task area
+// (nodata, outside the area of interest, in a no-go zone) where the nearest land a robot can start on lies.
+// Worked out only here, where it is said: the search reads up to a few hundred thousand pixels.
+[[nodiscard]] std::string startRefusal(const ClassGrid& grid, const ClassTable& classes, MapPoint point,
+                                       const StartPointProblem& problem);
 // "(512300.25, 4120400.5)": to the centimetre, as the messages give planning-frame points.
 [[nodiscard]] std::string describePoint(MapPoint point);
 

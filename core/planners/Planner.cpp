@@ -58,8 +58,9 @@ void checkStarts(const PlannerDescription& planner, const PlanningProblem& probl
             !planner.fliesOnBatteries() && robotTakesOffThere(problem.flyingRobots, robot, problem.grid,
                                                               problem.starts[robot], *problemAtStart);
         if (!snappable || !(snap || takesOff))
-            throw PlanningError::aboutStart(problemAtStart->kind, static_cast<int>(robot),
-                                            problemAtStart->refusal());
+            throw PlanningError::aboutStart(
+                problemAtStart->kind, static_cast<int>(robot),
+                startRefusal(problem.grid, problem.classes, problem.starts[robot], *problemAtStart));
     }
 }
 

@@ -131,7 +131,8 @@ int PlanningRun::placeBlockedStart(std::size_t robot, std::vector<int>& ownerOfC
     bool takesOff =
         takeOffsAllowed_ && robotTakesOffThere(problem_.flyingRobots, robot, problem_.grid, start, problem);
     if (!snap && !takesOff)
-        throw PlanningError::aboutStart(problem.kind, robotIndex, problem.refusal());
+        throw PlanningError::aboutStart(problem.kind, robotIndex,
+                                        startRefusal(problem_.grid, problem_.classes, start, problem));
     const int cell = nearestFreeCell(graph, ownerOfCell, start);
     if (cell < 0)
         throw PlanningError::aboutStart(Kind::TooManyRobots, robotIndex,

@@ -90,7 +90,8 @@ struct Chargers {
 int chargerCell(PlanningRun& run, int robot, MapPoint point) {
     const std::string who = "robot " + std::to_string(robot + 1) + " charger ";
     if (const auto problem = startPointProblem(run.problem().grid, run.problem().classes, point))
-        throw PlanningError(problem->kind, who + problem->refusal());
+        throw PlanningError(problem->kind,
+                            who + startRefusal(run.problem().grid, run.problem().classes, point, *problem));
     const int cell = run.plan().cells.cellAt(point);
     if (cell < 0)
         throw PlanningError(PlanningError::Kind::StartOnObstacle,

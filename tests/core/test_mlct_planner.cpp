@@ -1,5 +1,6 @@
 #include "core/model/HumanUnits.hpp"
 #include "core/model/PlanningError.hpp"
+#include "core/model/StartPointCheck.hpp"
 #include "core/planners/ClosedInStart.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -219,6 +220,21 @@ class MlctPlannerTest : public QObject {
             problem, PlanningError::Kind::StartOutsideArea,
             "(nodata); the nearest land of the task area a robot can cross is 30 m south, at (500005, "
             "3999965)");
+
+        // Pixels three times as tall as wide: land one row north (30 m) does not hide land three columns
+        // west, nearer (25.5 m from a point at the west edge of its pixel).
+        PlanningProblem tall = test::uniformProblem(10, 10, 10.0, std::vector<bool>(100, false), {});
+        tall.grid.pixelHeight = 30.0;
+        tall.grid.outside.assign(tall.grid.values.size(), ClassGrid::outsideNodata);
+        tall.grid.outside[tall.grid.index(5, 4)] = 0;
+        tall.grid.outside[tall.grid.index(2, 5)] = 0;
+        const MapPoint point{tall.grid.originX + 50.5, tall.grid.originY - 5.5 * 30.0};
+        const auto problemThere = startPointProblem(tall.grid, tall.classes, point);
+        QVERIFY(problemThere.has_value());
+        const std::string refusal = startRefusal(tall.grid, tall.classes, point, *problemThere);
+        QVERIFY2(refusal.find("can cross is 25.5 m west, at (") != std::string::npos, refusal.c_str());
+        // The planner's refusal says it; the problem's detail, which notes of take-offs repeat, does not.
+        QVERIFY(problemThere->detail.find("nearest") == std::string::npos);
     }
 
     // The raster spans x 500000 to 500100, y 3999900 to 4000000: how far off and which way, to the

@@ -428,8 +428,8 @@ class PlanExportTest : public QObject {
         QVERIFY(kmlFile->GetLayerByName("missions") == nullptr);
         QCOMPARE(kmlMissionPartsNote(exportContext, kml),
                  "many.kml leaves out the " + std::to_string(parts) +
-                     " waypoint file parts (Google Earth slows down with more than 2 000): the GeoPackage's "
-                     "missions layer holds them");
+                     " waypoint file parts (more than 2000 take long to write and to open): a GeoPackage "
+                     "export holds them all in its missions layer");
     }
 
     // The missions layer holds every waypoint file part as its line, point for point, the parts of a robot

@@ -978,6 +978,28 @@ class TestMainWindow : public QObject {
         }
     }
 
+    // Opening another map while planners are compared drops the comparison: its rows leave the panel (no
+    // row left "planning…") and the banner no longer says a comparison is under way.
+    void anotherMapDropsARunningComparison() {
+        const QString sample = ui::findSampleMission();
+        if (sample.isEmpty())
+            QSKIP("samples/zion-nlcd/mission.json is not there yet");
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY2(window.openMission(sample), qPrintable(window.lastError()));
+        QSignalSpy finished(&window, &ui::MainWindow::comparisonFinished);
+        QVERIFY2(window.startComparison({"mcpp-mlct", "darp", "mstc"}), qPrintable(window.lastError()));
+        QCOMPARE(window.comparisonPanel()->table()->rowCount(), 3);
+        const QString raster = QFileInfo(sample).dir().filePath(QStringLiteral("nlcd.tif"));
+        QVERIFY2(window.openRaster(raster), qPrintable(window.lastError()));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY(!finished.first().first().toBool());
+        QCOMPARE(window.comparisonPanel()->table()->rowCount(), 0);
+        QVERIFY2(!window.canvas()->bannerText().startsWith(QStringLiteral("Comparing")),
+                 qPrintable(window.canvas()->bannerText()));
+    }
+
     // The Compare action: planners run one after another in the background, the panel lists one row each
     // (one-robot planners cannot take part with several robots), the table sorts, and selecting a row
     // shows that plan: the map, the results and the exports are then about it.
