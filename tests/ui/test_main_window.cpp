@@ -52,10 +52,29 @@
 #include <QUndoCommand>
 #include <QUndoStack>
 #include <QtTest>
+#include <memory>
 
 using namespace mcpp;
 
 namespace {
+
+// A window that asks nothing (no dialogs) and opens no sample of its own on a first start.
+std::unique_ptr<ui::MainWindow> quietWindow() {
+    auto window = std::make_unique<ui::MainWindow>();
+    window->setDialogsEnabled(false);
+    window->setOpenSampleOnFirstStart(false);
+    return window;
+}
+
+// A quiet window with the bundled sample mission open (lastError() says why not); null without the sample.
+std::unique_ptr<ui::MainWindow> sampleWindow() {
+    const QString sample = ui::findSampleMission();
+    if (sample.isEmpty())
+        return nullptr;
+    std::unique_ptr<ui::MainWindow> window = quietWindow();
+    (void)window->openMission(sample);
+    return window;
+}
 
 // Two robots' figures, an hour and two hours of path, as a results panel shows them.
 Plan twoRobotPlan() {
@@ -981,17 +1000,15 @@ class TestMainWindow : public QObject {
     // Opening another map while planners are compared drops the comparison: its rows leave the panel (no
     // row left "planning…") and the banner no longer says a comparison is under way.
     void anotherMapDropsARunningComparison() {
-        const QString sample = ui::findSampleMission();
-        if (sample.isEmpty())
+        const std::unique_ptr<ui::MainWindow> owned = sampleWindow();
+        if (!owned)
             QSKIP("samples/zion-nlcd/mission.json is not there yet");
-        ui::MainWindow window;
-        window.setDialogsEnabled(false);
-        window.setOpenSampleOnFirstStart(false);
-        QVERIFY2(window.openMission(sample), qPrintable(window.lastError()));
+        ui::MainWindow& window = *owned;
+        QVERIFY2(window.document()->hasMap(), qPrintable(window.lastError()));
         QSignalSpy finished(&window, &ui::MainWindow::comparisonFinished);
         QVERIFY2(window.startComparison({"mcpp-mlct", "darp", "mstc"}), qPrintable(window.lastError()));
         QCOMPARE(window.comparisonPanel()->table()->rowCount(), 3);
-        const QString raster = QFileInfo(sample).dir().filePath(QStringLiteral("nlcd.tif"));
+        const QString raster = QFileInfo(ui::findSampleMission()).dir().filePath(QStringLiteral("nlcd.tif"));
         QVERIFY2(window.openRaster(raster), qPrintable(window.lastError()));
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         QVERIFY(!finished.first().first().toBool());
@@ -1004,13 +1021,11 @@ class TestMainWindow : public QObject {
     // (one-robot planners cannot take part with several robots), the table sorts, and selecting a row
     // shows that plan: the map, the results and the exports are then about it.
     void comparesPlanners() {
-        const QString sample = ui::findSampleMission();
-        if (sample.isEmpty())
+        const std::unique_ptr<ui::MainWindow> owned = sampleWindow();
+        if (!owned)
             QSKIP("samples/zion-nlcd/mission.json is not there yet");
-        ui::MainWindow window;
-        window.setDialogsEnabled(false);
-        window.setOpenSampleOnFirstStart(false);
-        QVERIFY2(window.openMission(sample), qPrintable(window.lastError()));
+        ui::MainWindow& window = *owned;
+        QVERIFY2(window.document()->hasMap(), qPrintable(window.lastError()));
         QCoreApplication::processEvents();
         ui::ComparisonPanel* panel = window.comparisonPanel();
         auto* spiral = panel->findChild<QCheckBox*>(QStringLiteral("compare_spiral-stc"));
@@ -1161,9 +1176,8 @@ class TestMainWindow : public QObject {
         const QString sample = ui::findSampleMission();
         if (sample.isEmpty())
             QSKIP("samples/zion-nlcd/mission.json is not there yet");
-        ui::MainWindow window;
-        window.setDialogsEnabled(false);
-        window.setOpenSampleOnFirstStart(false);
+        const std::unique_ptr<ui::MainWindow> owned = quietWindow();
+        ui::MainWindow& window = *owned;
         QVERIFY2(window.openMission(sample), qPrintable(window.lastError()));
         QVERIFY(!window.document()->robots().empty());
         QCOMPARE(window.document()->missionPath(), QFileInfo(sample).absoluteFilePath());
