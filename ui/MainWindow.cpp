@@ -1788,6 +1788,7 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     showComparison();
     logLargeMission(choices);
     showBusy(tr("Comparing…"), true);
+    comparisonUnderway_ = true;
     showWorkUnderway();
     progressBar_->setValue(0);
     updateActions();
@@ -1814,6 +1815,7 @@ bool MainWindow::isComparing() const {
 
 void MainWindow::handleComparisonFinished(const ComparisonOutcome& outcome) {
     showBusy({}, false);
+    comparisonUnderway_ = false;
     showWorkUnderway();
     if (!document_->hasMap() || document_->sharedRaster() != comparisonRaster_) {
         // Another map was opened meanwhile: these plans belong to the one before, and so do its rows.
@@ -1873,10 +1875,11 @@ void MainWindow::showComparison(bool raise) {
 
 // What the banner says while the window works out a plan or a comparison for this map.
 void MainWindow::showWorkUnderway() {
-    if (comparisonRunner_->isRunning())
+    // Flags of their own: a runner's future may be done before its finished signal is handled.
+    if (comparisonUnderway_)
         canvas_->setWorkUnderway(tr("Comparing planners… select a row under Compare planners to show a plan "
                                     "once its planner is done."));
-    else if (runner_->isRunning())
+    else if (planningUnderway_)
         canvas_->setWorkUnderway(tr("Planning… the plan is shown here when it is done (Cancel, beside the "
                                     "progress bar, stops it)."));
     else
@@ -2014,6 +2017,7 @@ bool MainWindow::startPlanning() {
         return false;
     logLargeMission({document_->plannerChoice()});
     planningStartedAt_ = QDateTime::currentMSecsSinceEpoch();
+    planningUnderway_ = true;
     showWorkUnderway();
     stageLabel_->setText(tr("Starting…"));
     progressBar_->setValue(0);
@@ -2039,6 +2043,7 @@ void MainWindow::cancelPlanning() {
 }
 
 void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
+    planningUnderway_ = false;
     showWorkUnderway();
     stageLabel_->hide();
     progressBar_->hide();

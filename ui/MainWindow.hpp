@@ -248,6 +248,8 @@ class MainWindow : public QMainWindow {
     int waypointFileSizesAsked_ = 0; // the last request: an older one's answer is dropped
     std::shared_ptr<const io::LoadedRaster> comparisonRaster_; // the map the comparison ran on
     qint64 planningStartedAt_ = 0;
+    bool planningUnderway_ = false;         // from starting a plan to handling its outcome
+    bool comparisonUnderway_ = false;       // the same for a comparison
     std::weak_ptr<const Plan> advisedPlan_; // the last plan made here, and what to change for a better one
     QString planAdvice_;
     bool settingsModified_ = false;
