@@ -548,6 +548,11 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     context.processMilliseconds = processMilliseconds_;
     context.processMilliseconds.emplace_back("write_outputs", millisecondsSince(started));
     for (std::size_t i = 0; i < outputs.size(); ++i)
+        if (results[i] && outputs[i].format->noteOf)
+            if (std::string said = outputs[i].format->noteOf(context, (directory / outputs[i].name).string());
+                !said.empty())
+                context.outputNotes.push_back(std::move(said));
+    for (std::size_t i = 0; i < outputs.size(); ++i)
         if (isReport(i))
             write(i);
     progress_.report("writing outputs", 1.0);
@@ -558,12 +563,8 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
             internalError(namingFile((directory / outputs[i].name).string(), results[i].error()));
         warn(outputs[i].name + " not written: " + results[i].error());
     }
-    for (std::size_t i = 0; i < outputs.size(); ++i)
-        if (results[i] && outputs[i].format->noteOf)
-            if (const std::string said =
-                    outputs[i].format->noteOf(context, (directory / outputs[i].name).string());
-                !said.empty())
-                note(said);
+    for (const std::string& said : context.outputNotes)
+        note(said);
     // Parts of each robot's autopilot files this run wrote (0: none), by robot and format key.
     std::map<std::pair<int, std::string>, std::size_t> partsWritten;
     for (std::size_t i = 0; i < outputs.size(); ++i) {

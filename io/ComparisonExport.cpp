@@ -75,7 +75,8 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
     std::string text =
         "planner,outcome,rank,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
         "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
-        "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread,time_vs_first";
+        "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread,time_vs_first,"
+        "lower_bound_kind";
     for (const std::string& stage : stages)
         text += "," + stageColumn(stage);
     text += ",message\n";
@@ -100,7 +101,8 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
                 fieldFigure(row, metrics.fieldMakespanSeconds) + "," +
                 fieldFigure(row, metrics.fieldLowerBoundSeconds) + "," +
                 fieldFigure(row, metrics.fieldSpread()) + "," +
-                (againstFirst[index] > 0.0 ? formatShortest(againstFirst[index]) : std::string());
+                (againstFirst[index] > 0.0 ? formatShortest(againstFirst[index]) : std::string()) + "," +
+                (planned ? lowerBoundKind(metrics) : std::string());
         for (const std::string& stage : stages)
             text += "," + (planned ? formatShortest(stageMilliseconds(metrics, stage)) : std::string());
         text += "," + internal::quoteCsvField(row.message) + "\n";
@@ -128,6 +130,7 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
             item.add("time_vs_first", againstFirst[index]);
         item.add("makespan_s", metrics.makespanSeconds);
         item.add("lower_bound_s", metrics.lowerBoundSeconds);
+        item.add("lower_bound_kind", lowerBoundKind(metrics));
         item.add("ratio", metrics.ratio);
         if (metrics.sharedPartsRatio > 0.0) // robots alone in parts of their own: the others' balance
             item.add("shared_parts_ratio", metrics.sharedPartsRatio);

@@ -343,7 +343,8 @@ Status firstStartProblem(const LoadedRaster& reconciled, const ClassTable& class
         if (problem && !robotTakesOffThere(flyingRobots, robot, reconciled.grid, start, *problem))
             return Status::failure(
                 names(MissionField::start(static_cast<int>(robot))) + ": " +
-                startRefusal(reconciled.grid, classes, start, *problem) +
+                withPointsInDegrees(startRefusal(reconciled.grid, classes, start, *problem),
+                                    reconciled.georeference, reconciled.grid) +
                 startAdvice(reconciled, *problem, start, static_cast<int>(robot), names) +
                 (takesOffThere(reconciled.grid, start, *problem) ? aircraftTakeOffHint : ""));
     }

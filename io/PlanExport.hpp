@@ -48,6 +48,9 @@ struct ExportContext {
     std::vector<std::string> robotNames = {};
     // Each robot's vehicle, by robot index; settings.vehicle for a robot not in it.
     std::vector<VehicleSettings> vehicles = {};
+    // What the writers of this run said of their files (a KML leaving the waypoint files' parts out), for
+    // report.json, written after them.
+    std::vector<std::string> outputNotes = {};
 
     [[nodiscard]] bool cancelled() const { return cancelRequested != nullptr && cancelRequested->load(); }
     // The robot's name from robotNames, or "Robot <number>" when it has none.
@@ -164,6 +167,11 @@ inline constexpr std::size_t kmlMostMissionParts = 2000;
 [[nodiscard]] Status writeWaypointList(const ExportContext& context, int robot,
                                        const std::string& path); // QGC WPL 110
 [[nodiscard]] Status writeWaypointCsv(const ExportContext& context, int robot, const std::string& path);
+
+// What report.json and the comparison files call the kind of a plan's lower bound: "detection_passes" for a
+// detection plan's (looser than the others': its ratio is not to be set beside theirs), "coverage_work"
+// otherwise (the work the robots share, turns and connectors included).
+[[nodiscard]] std::string lowerBoundKind(const PlanMetrics& metrics);
 
 // report.json of the batch contract, and the per-robot CSV.
 [[nodiscard]] Status writeReportJson(const ExportContext& context, const std::string& path);

@@ -25,7 +25,8 @@ using internal::CompressedReader;
 using internal::CompressedWriter;
 
 // Files of the versions before are read as well: 3 without the paths' counts of walked waypoints (none had
-// its straight runs merged), 4 without the times in the field, 5 without the paths' take-off points.
+// its straight runs merged), 4 without the times in the field, 5 without the paths' take-off points, 6
+// without the shared parts' ratio and the kind of bound.
 constexpr const char* formatName = "MCPP-PLAN ";
 constexpr int oldestFormatVersion = 3;
 constexpr std::uint32_t endMarker = 0x4e414c50; // "PLAN": the last thing written
@@ -382,6 +383,9 @@ void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
         out.put(figure);
     for (const RobotMetrics& robot : metrics.robots)
         out.put(robot.fieldSeconds);
+    // What the ratio is measured against, so that a reopened plan's ratio is read as it was planned.
+    out.put(metrics.sharedPartsRatio);
+    out.put(static_cast<std::uint8_t>(metrics.boundOfDetectionPasses));
     out.put(static_cast<std::uint64_t>(metrics.stageMilliseconds.size()));
     for (const auto& [stage, milliseconds] : metrics.stageMilliseconds) {
         out.put(stage);
@@ -389,7 +393,7 @@ void putMetrics(CompressedWriter& out, const PlanMetrics& metrics) {
     }
 }
 
-PlanMetrics getMetrics(CompressedReader& in, bool withFieldTimes) {
+PlanMetrics getMetrics(CompressedReader& in, int formatVersion) {
     PlanMetrics metrics;
     metrics.robots.resize(in.getCount(60));
     for (RobotMetrics& robot : metrics.robots) {
@@ -408,11 +412,17 @@ PlanMetrics getMetrics(CompressedReader& in, bool withFieldTimes) {
           &metrics.passableAreaSquareMetres, &metrics.coveredAreaSquareMetres, &metrics.coveredFraction,
           &metrics.unreachableAreaSquareMetres, &metrics.repeatedFraction})
         *figure = in.get<double>();
-    if (withFieldTimes) {
+    if (formatVersion >= 5) {
         metrics.fieldMakespanSeconds = in.get<double>();
         metrics.fieldLowerBoundSeconds = in.get<double>();
         for (RobotMetrics& robot : metrics.robots)
             robot.fieldSeconds = in.get<double>();
+    }
+    if (formatVersion >= 7) {
+        metrics.sharedPartsRatio = in.get<double>();
+        if (!std::isfinite(metrics.sharedPartsRatio) || metrics.sharedPartsRatio < 0.0)
+            throw CompressedReader::DamagedData("a shared parts' ratio that is not a ratio");
+        metrics.boundOfDetectionPasses = in.get<std::uint8_t>() != 0;
     }
     for (std::size_t count = in.getCount(16); count > 0; --count) {
         std::string stage = in.getString();
@@ -477,7 +487,7 @@ Plan readPlan(CompressedReader& in, int formatVersion) {
     plan.regions.costSeconds = in.getAll<double>();
     plan.paths = getPaths(in, plan.cells, formatVersion >= 4, formatVersion >= 6);
     checkRegions(plan.regions, plan.cells.size(), plan.paths.size());
-    plan.metrics = getMetrics(in, formatVersion >= 5);
+    plan.metrics = getMetrics(in, formatVersion);
     for (const RobotMetrics& robot : plan.metrics.robots)
         if (robot.robot < 0 || static_cast<std::size_t>(robot.robot) >= plan.paths.size())
             throw CompressedReader::DamagedData("figures of no robot");

@@ -177,6 +177,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     }
     root.add("makespan_s", metrics.makespanSeconds);
     root.add("lower_bound_s", metrics.lowerBoundSeconds);
+    root.add("lower_bound_kind", lowerBoundKind(metrics));
     root.add("ratio", metrics.ratio);
     // Where robots alone in parts of their own set the bound (else 0): the balance of the robots sharing
     // parts.
@@ -225,7 +226,17 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("message", issue.message);
     }
     addMissionFileIssues(issues, warnings, context);
+    for (const std::string& note : context.outputNotes) {
+        JsonValue& item = issues.push(JsonValue::object());
+        item.add("severity", "information");
+        item.add("code", "output");
+        item.add("message", note);
+    }
     return internal::writeFileAtomically(path, root.toText(), Sync::BySystem);
+}
+
+std::string lowerBoundKind(const PlanMetrics& metrics) {
+    return metrics.boundOfDetectionPasses ? "detection_passes" : "coverage_work";
 }
 
 Status writeReportCsv(const ExportContext& context, const std::string& path) {

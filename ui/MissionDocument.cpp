@@ -1,6 +1,7 @@
 #include "ui/MissionDocument.hpp"
 
 #include "core/model/StartPointCheck.hpp"
+#include "io/PointsInDegrees.hpp"
 
 #include <cmath>
 
@@ -153,8 +154,10 @@ std::optional<QString> MissionDocument::startProblem(MapPoint point, int ignoreR
         const bool aircraftMay = takesOffThere(grid, point, *problem);
         if (takesOff && aircraftMay)
             return std::nullopt;
+        // The nearest land it names with its degrees, as the start is named.
         const QString refusal = tr("%1 %2.").arg(
-            name, QString::fromStdString(startRefusal(grid, mission_.classes, point, *problem)));
+            name, QString::fromStdString(io::withPointsInDegrees(
+                      startRefusal(grid, mission_.classes, point, *problem), raster_->georeference, grid)));
         // A ground robot refused where a drone would take off: say so, and where the window sets the vehicle.
         return aircraftMay ? refusal + QStringLiteral(" ") + aircraftHint() : refusal;
     }

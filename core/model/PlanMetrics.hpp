@@ -46,11 +46,11 @@ struct PlanMetrics {
     // Where robots confined to a part of their own set the bound (their part's work is theirs alone, so
     // every plan has the same ratio), the balance of the others: the largest, over parts shared by several
     // robots, of their longest time over the part's own bound. 0 elsewhere: the map one part, no part
-    // shared, a shared part or a battery's charges setting the bound. Not kept in saved plans.
+    // shared, a shared part or a battery's charges setting the bound.
     double sharedPartsRatio = 0.0;
     // A detection plan's bound: the passes its targets need, each priced at the fastest class's speed and
     // the best sensor's reach. Sound, but far looser than other plans' bounds: its ratio reads high for an
-    // even plan and is not to be set beside theirs. Not kept in saved plans.
+    // even plan and is not to be set beside theirs.
     bool boundOfDetectionPasses = false;
     // Where the problem measures time in the field (PlanningProblem::fieldSeconds), when the last robot is
     // done there; and where some robot's path is split into flights (PlanningProblem::robotFlights), the

@@ -16,6 +16,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
@@ -299,6 +300,27 @@ void TestBatchEndToEnd::aNoteThatDoesNotHoldForAPlanIsNotSaid() {
     for (const QJsonValue& issue : readJsonObject(out + "/cppied/report.json").value("issues").toArray())
         noted = noted || issue.toObject().value("code").toString() == QStringLiteral("cruise-speeds-differ");
     QVERIFY(!noted);
+    // The files name the kind of each bound too: report.json, and comparison.csv and .json by planner.
+    QCOMPARE(readJsonObject(out + "/cppied/report.json").value("lower_bound_kind").toString(),
+             QStringLiteral("detection_passes"));
+    QCOMPARE(readJsonObject(out + "/mcpp-mlct/report.json").value("lower_bound_kind").toString(),
+             QStringLiteral("coverage_work"));
+    QMap<QString, QString> kindOf;
+    for (const QJsonValue& row : readJsonObject(out + "/comparison.json").value("planners").toArray())
+        kindOf.insert(row.toObject().value("planner").toString(),
+                      row.toObject().value("lower_bound_kind").toString());
+    QCOMPARE(kindOf.value("cppied"), QStringLiteral("detection_passes"));
+    QCOMPARE(kindOf.value("mcpp-mlct"), QStringLiteral("coverage_work"));
+    QFile csv(out + "/comparison.csv");
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 3);
+    const qsizetype column = lines.front().split(',').indexOf(QStringLiteral("lower_bound_kind"));
+    QVERIFY2(column > 0, qPrintable(lines.front()));
+    for (int row = 1; row < lines.size(); ++row) {
+        const QStringList fields = lines.at(row).split(',');
+        QCOMPARE(fields.at(column), kindOf.value(fields.front()));
+    }
 }
 
 // --compare: each planner's own outputs in its folder, one row each in comparison.csv and .json with the
@@ -1065,6 +1087,20 @@ void TestBatchEndToEnd::outputsWritesOnlyWhatIsAsked() {
         QCOMPARE(QDir(compared + "/" + QString::fromUtf8(planner)).entryList(QDir::Files, QDir::Name),
                  (QStringList{"plan.png", "report.json"}));
     QVERIFY(QFileInfo::exists(compared + "/comparison.csv"));
+    // A KML leaving the waypoint files' parts out (drones on short flights over Zion: thousands of parts)
+    // says so, and report.json keeps what it said among its issues.
+    const QString flights = scratch_.filePath(QStringLiteral("many-flights"));
+    const auto many =
+        runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--vehicle", "multirotor", "--cruise-speed",
+                 "10", "--flight-time", "5min", "--outputs", "kml", "--out", flights});
+    QVERIFY2(many.exitCode == 0, qPrintable(many.standardError));
+    const QString said = QStringLiteral("plan.kml leaves out the ");
+    QVERIFY2(many.standardOutput.contains(said), qPrintable(many.standardOutput));
+    bool reported = false;
+    for (const QJsonValue& issue : readJsonObject(flights + "/report.json").value("issues").toArray())
+        reported = reported || (issue.toObject().value("code").toString() == QStringLiteral("output") &&
+                                issue.toObject().value("message").toString().startsWith(said));
+    QVERIFY(reported);
 }
 
 // --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at

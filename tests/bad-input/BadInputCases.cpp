@@ -220,7 +220,8 @@ std::vector<BadInputCase> makeCases() {
         {"start in nodata",
          onRaster("good.tif", "good.csv", {"--start", kInNodata}),
          2,
-         "nodata",
+         "(nodata); the nearest land of the task area a robot can cross is 30 m north, at (500025, 5000055; "
+         "longitude 15.0003181, latitude 45.1539723)",
          Gui::None,
          {}},
         {"two starts in one cell",

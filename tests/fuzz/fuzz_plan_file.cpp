@@ -9,6 +9,7 @@
 #include <QByteArray>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <string>
 
 namespace {
@@ -30,9 +31,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool raw = (data[0] & 1) != 0;
     const std::string body = raw ? compressedChunk(data + 1, size - 1)
                                  : std::string(reinterpret_cast<const char*>(data) + 1, size - 1);
-    // The body of a file of this format or of one before: bit 1 alone MCPP-PLAN 3, bit 2 alone 4, both 5.
-    constexpr int versions[] = {mcpp::io::planFormatVersion, 3, 4, 5};
-    const int version = versions[(data[0] >> 1) & 3];
+    // The body of a file of this format or of one before, by bits 1-3 of the first byte.
+    constexpr int versions[] = {mcpp::io::planFormatVersion, 3, 4, 5, 6};
+    const int version = versions[((data[0] >> 1) & 7) % std::size(versions)];
     auto plan = mcpp::io::parsePlanBody(body, "fuzz.mcpp-plan", version);
     if (plan.ok() && plan.value().cells.size() > 0) {
         // What the window does with a restored plan first: find cells.

@@ -87,6 +87,9 @@ class TestPlanFile : public QObject {
         plan.metrics.fieldLowerBoundSeconds = 7000.25;
         for (RobotMetrics& robot : plan.metrics.robots)
             robot.fieldSeconds = 8000.0 + robot.robot;
+        // What the ratio is measured against: a reopened plan reads its ratio as it was planned.
+        plan.metrics.sharedPartsRatio = 1.25;
+        plan.metrics.boundOfDetectionPasses = true;
         QCOMPARE(plan.paths.size(), std::size_t{3});
         plan.paths[1].takeOff = MapPoint{-120.5, 33.25}; // an aircraft taking off outside the area
         const std::string path = file("whole.mcpp-plan");
@@ -121,6 +124,8 @@ class TestPlanFile : public QObject {
         QCOMPARE(back.metrics.robots[2].fieldSeconds, 8002.0);
         QCOMPARE(back.metrics.fieldMakespanSeconds, 9000.5);
         QCOMPARE(back.metrics.fieldLowerBoundSeconds, 7000.25);
+        QCOMPARE(back.metrics.sharedPartsRatio, 1.25);
+        QVERIFY(back.metrics.boundOfDetectionPasses);
         QCOMPARE(back.metrics.stageMilliseconds, plan.metrics.stageMilliseconds);
         QVERIFY(back.issues == plan.issues);
         // Saving what was read gives the same bytes: nothing is lost or reordered.
@@ -195,7 +200,7 @@ class TestPlanFile : public QObject {
     }
 
     // Files of the formats before (MCPP-PLAN 3: no counts of walked waypoints; 4: no times in the field; 5:
-    // no take-off points) are still read.
+    // no take-off points; 6: no kind of bound) are still read.
     void filesOfTheFormatBeforeAreRead() {
         const std::string seed =
             bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body"));
@@ -238,6 +243,9 @@ class TestPlanFile : public QObject {
         // Read as the format before or after, the same bytes are damaged: the versions are told apart.
         QVERIFY(!io::parsePlanBody(std::string_view(fifth).substr(1), "seed", 4).ok());
         QVERIFY(!io::parsePlanBody(std::string_view(fifth).substr(1), "seed", 6).ok());
+        QVERIFY(!io::parsePlanBody(std::string_view(fifth).substr(1), "seed", 7).ok());
+        QCOMPARE(flown.sharedPartsRatio, 0.0); // no kind of bound before MCPP-PLAN 7: the plain one
+        QVERIFY(!flown.boundOfDetectionPasses);
     }
 
     void waypointsOffTheGridComeBackAsTheyWere() {
