@@ -4,6 +4,7 @@
 #include "io/ComparisonRanking.hpp"
 #include "render/ComparisonSheet.hpp"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QDialog>
 #include <QEvent>
@@ -17,6 +18,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <optional>
 
 namespace mcpp::ui {
 
@@ -289,8 +291,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     table_->sortByColumn(inTheField ? Home : Makespan, Qt::AscendingOrder);
     if (pending > 0) {
         // The sheet compares every plan: drawn once they are all made, not from an earlier comparison.
-        sheetImage_ = QImage();
-        sheet_->clear();
+        forgetSheets();
         if (fullSizeSheet_ != nullptr)
             fullSizeSheet_->hide();
         return;
@@ -302,6 +303,17 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     // tall. The sheet scrolls down instead.
     sheetImage_ = render::renderComparisonSheet(grid, classes,
                                                 render::rankedComparisonPanels(outcome.rows, plans), area, 1);
+    // The full-size window's sheet, three side by side, drawn only if asked for. It holds the plans and
+    // the class table; the grid lives until the map changes, which drops the comparison (clearOutcome).
+    wideSheetImage_ = QImage();
+    drawWideSheet_ = [grid = &grid, classes, rows = outcome.rows, kept = outcome.plans,
+                      edges = area != nullptr ? std::optional<AreaOutline>(*area) : std::nullopt] {
+        std::vector<const Plan*> drawn;
+        for (const auto& plan : kept)
+            drawn.push_back(plan.get());
+        return render::renderComparisonSheet(*grid, classes, render::rankedComparisonPanels(rows, drawn),
+                                             edges ? &*edges : nullptr);
+    };
     fitSheet();
     if (fullSizeSheet_ != nullptr && fullSizeSheet_->isVisible())
         showFullSizeSheet(); // the new comparison's sheet where the last one's is open
@@ -310,10 +322,16 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
 void ComparisonPanel::clearOutcome() {
     table_->clearContents();
     table_->setRowCount(0);
-    sheetImage_ = QImage();
-    sheet_->clear();
+    forgetSheets();
     if (fullSizeSheet_ != nullptr)
         fullSizeSheet_->hide();
+}
+
+void ComparisonPanel::forgetSheets() {
+    sheetImage_ = QImage();
+    wideSheetImage_ = QImage();
+    drawWideSheet_ = nullptr;
+    sheet_->clear();
 }
 
 bool ComparisonPanel::eventFilter(QObject* watched, QEvent* event) {
@@ -338,13 +356,19 @@ QDialog* ComparisonPanel::showFullSizeSheet() {
         layout->setContentsMargins(0, 0, 0, 0);
         layout->addWidget(scroll);
     }
-    fullSizeImage_->setPixmap(QPixmap::fromImage(sheetImage_));
+    if (wideSheetImage_.isNull() && drawWideSheet_) {
+        QApplication::setOverrideCursor(Qt::WaitCursor); // a second drawing of every plan
+        wideSheetImage_ = drawWideSheet_();
+        QApplication::restoreOverrideCursor();
+    }
+    const QImage& shown = wideSheetImage_.isNull() ? sheetImage_ : wideSheetImage_;
+    fullSizeImage_->setPixmap(QPixmap::fromImage(shown));
     fullSizeImage_->adjustSize();
     // As large as the sheet, within most of the panel's screen.
     const QRect screen =
         this->screen() != nullptr ? this->screen()->availableGeometry() : QRect(0, 0, 1280, 800);
-    fullSizeSheet_->resize(std::min(sheetImage_.width() + 24, screen.width() * 9 / 10),
-                           std::min(sheetImage_.height() + 24, screen.height() * 9 / 10));
+    fullSizeSheet_->resize(std::min(shown.width() + 24, screen.width() * 9 / 10),
+                           std::min(shown.height() + 24, screen.height() * 9 / 10));
     fullSizeSheet_->show();
     fullSizeSheet_->raise();
     return fullSizeSheet_;

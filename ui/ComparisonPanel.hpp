@@ -7,6 +7,7 @@
 
 #include <QImage>
 #include <QWidget>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -47,8 +48,9 @@ class ComparisonPanel : public QWidget {
     [[nodiscard]] QLabel* sheet() const { return sheet_; }
     // The table row (in its current order) of a planner, or -1.
     [[nodiscard]] int rowOfPlanner(const std::string& planner) const;
-    // The sheet at full size in a window of its own, where its captions can be read (the dock shows it
-    // scaled to its width); what double-clicking the sheet does. Null before any comparison.
+    // The sheet at full size in a window of its own, up to three plans side by side, where its captions can
+    // be read (the dock shows one plan under another, scaled to its width); what double-clicking the sheet
+    // does. Null before any comparison.
     QDialog* showFullSizeSheet();
 
   signals:
@@ -61,6 +63,8 @@ class ComparisonPanel : public QWidget {
 
   private:
     void fitSheet();
+    // No sheet shown and none to draw: the comparison is still running or was dropped.
+    void forgetSheets();
 
     std::map<std::string, QCheckBox*> checks_;
     QPushButton* runButton_ = nullptr;
@@ -68,6 +72,9 @@ class ComparisonPanel : public QWidget {
     QLabel* sheet_ = nullptr;
     QScrollArea* scroll_ = nullptr;
     QImage sheetImage_; // full size; shown scaled to the panel
+    // The sheet of up to three plans side by side, drawn when the full-size window first shows it.
+    std::function<QImage()> drawWideSheet_;
+    QImage wideSheetImage_;
     QDialog* fullSizeSheet_ = nullptr;
     QLabel* fullSizeImage_ = nullptr;
 };

@@ -207,6 +207,15 @@ class ComparisonPanelTest : public QObject {
         QVERIFY(image != nullptr);
         QVERIFY2(image->pixmap().width() > shownWidth,
                  qPrintable(QStringLiteral("%1 against %2").arg(image->pixmap().width()).arg(shownWidth)));
+        // There the three plans stand side by side, as comparison.png has them: wider than tall, where the
+        // dock's sheet is over three times as tall as wide.
+        const QSize fullSize = image->pixmap().size();
+        QVERIFY2(fullSize.width() > fullSize.height(),
+                 qPrintable(QStringLiteral("%1 x %2").arg(fullSize.width()).arg(fullSize.height())));
+        // Another map drops the comparison: nothing left to show at full size.
+        panel.clearOutcome();
+        QVERIFY(!dialog->isVisible());
+        QVERIFY(panel.showFullSizeSheet() == nullptr);
     }
 };
 
