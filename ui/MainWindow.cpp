@@ -1009,6 +1009,15 @@ void MainWindow::sizeWaypointFiles() {
         resultsPanel_->showWaypointFiles(sizes, vehicles, names);
         if (document_->sharedPlan() == plan)
             legendPanel_->showFieldTimes(fieldTimesOf(*plan, sizes, vehicles));
+        // Flights a battery cannot fly, said where every message is kept, once a plan (the results are
+        // shown again whenever a robot is renamed).
+        if (flightsWarnedPlan_.lock() != plan) {
+            const QStringList tooLong = ResultsPanel::flightsTooLongWarnings(sizes, vehicles, names);
+            for (const QString& warning : tooLong)
+                messageLog_->add(tr("Warning: %1").arg(warning));
+            if (!tooLong.isEmpty())
+                flightsWarnedPlan_ = plan;
+        }
     });
     // A large map's paths hold tens of millions of points: measured beside the window, not in it.
     waypointFileSizes_->setFuture(QtConcurrent::run([plan, vehicles, settings] {

@@ -251,6 +251,7 @@ class MainWindow : public QMainWindow {
     bool planningUnderway_ = false;         // from starting a plan to handling its outcome
     bool comparisonUnderway_ = false;       // the same for a comparison
     std::weak_ptr<const Plan> advisedPlan_; // the last plan made here, and what to change for a better one
+    std::weak_ptr<const Plan> flightsWarnedPlan_; // the last plan whose too long flights Messages said
     QString planAdvice_;
     bool settingsModified_ = false;
     bool planUnsaved_ = false;

@@ -408,14 +408,10 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
     const auto placed = [raster, &robotNames](const std::string& message) {
         return QString::fromStdString(io::messageForPeople(message, raster, robotNames));
     };
-    QStringList warnings;
+    planWarnings_.clear();
     for (const auto& warning : plan->warnings())
-        warnings << placed(warning);
-    // Several warnings, each wrapped over lines, would read as one paragraph without a mark before each.
-    if (warnings.size() > 1)
-        for (QString& warning : warnings)
-            warning.prepend(QStringLiteral("• "));
-    warnings_->setText(warnings.isEmpty() ? tr("none") : warnings.join(QLatin1Char('\n')));
+        planWarnings_ << placed(warning);
+    showWarnings(planWarnings_);
     QStringList notes;
     for (const PlanIssue& issue : plan->issues)
         if (issue.severity == IssueSeverity::Information)
@@ -479,10 +475,19 @@ QString robotName(const QStringList& names, int robot) {
 
 } // namespace
 
+// Several warnings, each wrapped over lines, would read as one paragraph without a mark before each.
+void ResultsPanel::showWarnings(QStringList warnings) {
+    if (warnings.size() > 1)
+        for (QString& warning : warnings)
+            warning.prepend(QStringLiteral("• "));
+    warnings_->setText(warnings.isEmpty() ? tr("none") : warnings.join(QLatin1Char('\n')));
+}
+
 void ResultsPanel::showWaypointFiles(const std::vector<io::MissionSize>& sizes,
                                      const std::vector<io::VehicleSettings>& vehicles,
                                      const QStringList& names) {
     waypointFiles_->setText(waypointFilesText(sizes, vehicles, names));
+    showWarnings(planWarnings_ + flightsTooLongWarnings(sizes, vehicles, names));
     QStringList perRobot;
     for (std::size_t robot = 0; robot < sizes.size(); ++robot)
         perRobot << tr("%1: %2 items, %3%4")
@@ -610,6 +615,37 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
                              ? tr("; all done in the field after %1").arg(formatDuration(lastDone))
                              : QString();
     return header + tr(": ") + split.join(QStringLiteral(", ")) + outOfReach + done;
+}
+
+QStringList ResultsPanel::flightsTooLongWarnings(const std::vector<io::MissionSize>& sizes,
+                                                 const std::vector<io::VehicleSettings>& vehicles,
+                                                 const QStringList& names) {
+    // "1 h 8 min", as batch mode says it; the table's "1:08:00" reads poorly in a sentence.
+    const auto prose = [](double seconds) { return QString::fromStdString(mcpp::formatDuration(seconds)); };
+    QStringList warnings;
+    for (std::size_t robot = 0; robot < sizes.size() && robot < vehicles.size(); ++robot) {
+        const io::MissionSize& size = sizes[robot];
+        const io::VehicleSettings& vehicle = vehicles[robot];
+        if (size.partsOverFlightTime == 0 || !(vehicle.flightTimeSeconds > 0.0))
+            continue;
+        const bool aircraft = io::isAircraft(vehicle.type);
+        const QString which = size.parts == 1 ? tr("its mission takes %1").arg(prose(size.longestPartSeconds))
+                                              : tr("%1 of its %2 %3 take up to %4")
+                                                    .arg(size.partsOverFlightTime)
+                                                    .arg(size.parts)
+                                                    .arg(aircraft ? tr("flights") : tr("mission parts"))
+                                                    .arg(prose(size.longestPartSeconds));
+        warnings << tr("%1: %2%3, longer than its %4 %5: %6. Add robots, start them nearer that land, or "
+                       "plan with wavefront-battery and chargers.")
+                        .arg(robotName(names, static_cast<int>(robot)), which,
+                             aircraft ? tr(" with the flights to and from its start") : QString(),
+                             prose(vehicle.flightTimeSeconds),
+                             QString::fromUtf8(io::batteryTimeName(vehicle.type)),
+                             aircraft
+                                 ? tr("its region reaches beyond what one flight from its start can cover")
+                                 : tr("its path has stretches longer than one battery lasts"));
+    }
+    return warnings;
 }
 
 int ResultsPanel::robotLabelStep(int robots, int labelsThatFit) {

@@ -51,6 +51,12 @@ class ResultsPanel : public QWidget {
     [[nodiscard]] static QString waypointFilesText(const std::vector<io::MissionSize>& sizes,
                                                    const std::vector<io::VehicleSettings>& vehicles,
                                                    const QStringList& names);
+    // A warning for each robot some of whose flights (or battery runs) take longer than its flight time:
+    // missions it cannot fly as planned, said as soon as the plan is made, not only when its waypoint files
+    // are written.
+    [[nodiscard]] static QStringList flightsTooLongWarnings(const std::vector<io::MissionSize>& sizes,
+                                                            const std::vector<io::VehicleSettings>& vehicles,
+                                                            const QStringList& names);
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -58,6 +64,7 @@ class ResultsPanel : public QWidget {
 
   private:
     void describeTimes(bool underEvents);
+    void showWarnings(QStringList warnings);
     void describeFieldTimes(const PlanMetrics& metrics);
     void clearChart();
     void showChart(const Plan& plan, const QStringList& names);
@@ -81,7 +88,8 @@ class ResultsPanel : public QWidget {
     QLabel* timeline_;  // only for plans simulated over time with events
     QFormLayout* summary_;
     QLabel* warnings_;
-    QLabel* waypointFiles_; // the size of the robots' waypoint files, once worked out
+    QStringList planWarnings_; // the plan's own, before any of its waypoint files' are added
+    QLabel* waypointFiles_;    // the size of the robots' waypoint files, once worked out
     QLabel* notes_; // the plan's information issues (a fleet's cruise speed, robots walled in); only if any
     QChartView* chartView_;
     // The robots of the plan charted, their names and path times (or times under the events).

@@ -366,6 +366,31 @@ class TestMainWindow : public QObject {
             {{380, 1, 0.0, 0, 900.0}, {380, 1}, {90, 6, 1900.0, 2, 9000.0}}, vehicles, names);
         QVERIFY2(flown.endsWith(QStringLiteral("; all done in the field after 2 h 30 min")),
                  qPrintable(flown));
+        // Flights longer than a battery lasts are warnings as soon as the plan is made, in the Results
+        // panel's warnings beside the plan's own, not only when the waypoint files are written.
+        const std::vector<io::MissionSize> tooLong{{380, 1}, {380, 1}, {90, 6, 1900.0, 2, 9000.0}};
+        const QStringList warned = ui::ResultsPanel::flightsTooLongWarnings(tooLong, vehicles, names);
+        QCOMPARE(warned.size(), 1);
+        QCOMPARE(
+            warned.front(),
+            QStringLiteral("south: 2 of its 6 flights take up to 31 min 40 s with the flights to and from "
+                           "its start, longer than its 20 min flight time: its region reaches beyond what "
+                           "one flight from its start can cover. Add robots, start them nearer that land, "
+                           "or plan with wavefront-battery and chargers."));
+        QVERIFY(ui::ResultsPanel::flightsTooLongWarnings({{380, 1}, {380, 1}, {90, 6, 1100.0, 0}}, vehicles,
+                                                         names)
+                    .isEmpty());
+        ui::ResultsPanel panel;
+        const PlanningProblem problem = test::drawnProblem(std::vector<std::string>(20, std::string(40, '.')),
+                                                           {{0.5, 0.5}, {39.5, 0.5}, {20.5, 19.5}});
+        const Plan plan = makePlanner("mcpp-mlct")->plan(problem, {});
+        panel.showPlan(&plan, {});
+        auto* warnings = panel.findChild<QLabel*>(QStringLiteral("warningsLabel"));
+        QCOMPARE(warnings->text(), QStringLiteral("none"));
+        panel.showWaypointFiles(tooLong, vehicles, names);
+        QCOMPARE(warnings->text(), warned.front());
+        panel.showWaypointFiles({{380, 1}, {380, 1}, {90, 6, 1100.0, 0}}, vehicles, names);
+        QCOMPARE(warnings->text(), QStringLiteral("none"));
     }
 
     void robotLabelStepKeepsTheNumbersThatFit() {
