@@ -488,6 +488,9 @@ Plan readPlan(CompressedReader& in, int formatVersion) {
     plan.paths = getPaths(in, plan.cells, formatVersion >= 4, formatVersion >= 6);
     checkRegions(plan.regions, plan.cells.size(), plan.paths.size());
     plan.metrics = getMetrics(in, formatVersion);
+    // Before MCPP-PLAN 7 the kind of bound was not saved: CPPIED's was always of detection passes.
+    if (formatVersion < 7)
+        plan.metrics.boundOfDetectionPasses = plan.planner == "cppied";
     for (const RobotMetrics& robot : plan.metrics.robots)
         if (robot.robot < 0 || static_cast<std::size_t>(robot.robot) >= plan.paths.size())
             throw CompressedReader::DamagedData("figures of no robot");

@@ -186,7 +186,8 @@ void ComparisonPanel::setCanCompare(bool can, const QString& whyNot) {
 }
 
 void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid,
-                                  const ClassTable& classes, const AreaOutline* area) {
+                                  const ClassTable& classes, const AreaOutline* area,
+                                  std::shared_ptr<const void> gridOwner) {
     table_->setSortingEnabled(false);
     table_->clearContents();
     // While the comparison runs, the planners still to come have rows of their own, without figures.
@@ -303,10 +304,11 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     // tall. The sheet scrolls down instead.
     sheetImage_ = render::renderComparisonSheet(grid, classes,
                                                 render::rankedComparisonPanels(outcome.rows, plans), area, 1);
-    // The full-size window's sheet, three side by side, drawn only if asked for. It holds the plans and
-    // the class table; the grid lives until the map changes, which drops the comparison (clearOutcome).
+    // The full-size window's sheet, three side by side, drawn only if asked for. It holds the plans, the
+    // class table and what holds the grid.
     wideSheetImage_ = QImage();
-    drawWideSheet_ = [grid = &grid, classes, rows = outcome.rows, kept = outcome.plans,
+    drawWideSheet_ = [grid = &grid, owner = std::move(gridOwner), classes, rows = outcome.rows,
+                      kept = outcome.plans,
                       edges = area != nullptr ? std::optional<AreaOutline>(*area) : std::nullopt] {
         std::vector<const Plan*> drawn;
         for (const auto& plan : kept)

@@ -9,6 +9,7 @@
 #include <QWidget>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,8 +39,10 @@ class ComparisonPanel : public QWidget {
     void setCanCompare(bool can, const QString& whyNot);
     // area: the area of interest's and no-go zones' edges, drawn on the sheet's maps. An outcome with fewer
     // rows than choices is one still running: the rest are listed as to come, and the sheet waits for them.
+    // gridOwner: what holds the grid, kept while the full-size sheet may still be drawn from it (none: the
+    // caller keeps the grid until the next outcome or clearOutcome).
     void showOutcome(const ComparisonOutcome& outcome, const ClassGrid& grid, const ClassTable& classes,
-                     const AreaOutline* area = nullptr);
+                     const AreaOutline* area = nullptr, std::shared_ptr<const void> gridOwner = {});
 
     // No rows and no sheet: a comparison dropped because another map was opened while it ran.
     void clearOutcome();

@@ -990,25 +990,25 @@ void MainWindow::updateResults() {
 }
 
 void MainWindow::sizeWaypointFiles() {
+    const int asked =
+        ++waypointFileSizesAsked_; // an earlier plan's sizes, still being worked out, are dropped
     const std::shared_ptr<const Plan> plan = document_->sharedPlan();
     if (!plan)
         return;
     if (waypointFileSizes_ == nullptr)
         waypointFileSizes_ = new QFutureWatcher<std::vector<io::MissionSize>>(this);
     waypointFileSizes_->disconnect(this);
-    const int asked = ++waypointFileSizesAsked_;
     const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(document_->mission());
     const io::ExportSettings settings = document_->mission().exports;
     connect(waypointFileSizes_, &QFutureWatcherBase::finished, this, [this, asked, vehicles, plan] {
-        if (asked != waypointFileSizesAsked_)
+        if (asked != waypointFileSizesAsked_ || document_->sharedPlan() != plan)
             return;
         QStringList names;
         for (const auto& robot : document_->robots())
             names << QString::fromStdString(robot.name);
         const std::vector<io::MissionSize> sizes = waypointFileSizes_->result();
         resultsPanel_->showWaypointFiles(sizes, vehicles, names);
-        if (document_->sharedPlan() == plan)
-            legendPanel_->showFieldTimes(fieldTimesOf(*plan, sizes, vehicles));
+        legendPanel_->showFieldTimes(fieldTimesOf(*plan, sizes, vehicles));
         // Flights a battery cannot fly, said where every message is kept, once a plan (the results are
         // shown again whenever a robot is renamed).
         if (flightsWarnedPlan_.lock() != plan) {
@@ -1875,7 +1875,8 @@ void MainWindow::nameRefusals(ComparisonOutcome& outcome) const {
 // raise: brings the dock forward (as the comparison starts and ends, not over a tab opened meanwhile).
 void MainWindow::showComparison(bool raise) {
     comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes(),
-                                  document_->raster() != nullptr ? &document_->raster()->area : nullptr);
+                                  document_->raster() != nullptr ? &document_->raster()->area : nullptr,
+                                  document_->sharedRaster());
     if (!raise)
         return;
     comparisonDock_->show();

@@ -298,6 +298,7 @@ void ResultsPanel::setStale(bool stale) {
 void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io::LoadedRaster* raster) {
     table_->setSortingEnabled(false);
     table_->setRowCount(0);
+    planWarnings_.clear();
     if (plan == nullptr) {
         for (QLabel* label : {makespan_, lowerBound_, ratio_, covered_, unreachable_, planner_, detection_,
                               timeline_, warnings_, notes_, waypointFiles_})
@@ -629,21 +630,24 @@ QStringList ResultsPanel::flightsTooLongWarnings(const std::vector<io::MissionSi
         if (size.partsOverFlightTime == 0 || !(vehicle.flightTimeSeconds > 0.0))
             continue;
         const bool aircraft = io::isAircraft(vehicle.type);
+        const QString parts = size.partsOverFlightTime == 1 ? tr("%1 of its %2 %3 takes up to %4")
+                                                            : tr("%1 of its %2 %3 take up to %4");
         const QString which = size.parts == 1 ? tr("its mission takes %1").arg(prose(size.longestPartSeconds))
-                                              : tr("%1 of its %2 %3 take up to %4")
-                                                    .arg(size.partsOverFlightTime)
+                                              : parts.arg(size.partsOverFlightTime)
                                                     .arg(size.parts)
                                                     .arg(aircraft ? tr("flights") : tr("mission parts"))
                                                     .arg(prose(size.longestPartSeconds));
-        warnings << tr("%1: %2%3, longer than its %4 %5: %6. Add robots, start them nearer that land, or "
-                       "plan with wavefront-battery and chargers.")
+        const QString why = aircraft
+                                ? tr("its region reaches beyond what one flight from its start can cover")
+                                : tr("its path has stretches longer than one battery lasts");
+        const QString advice = aircraft ? tr("Add robots, start them nearer that land, or plan with "
+                                             "wavefront-battery and chargers.")
+                                        : tr("Add robots, or plan with wavefront-battery and chargers.");
+        warnings << tr("%1: %2%3, longer than its %4 %5: %6. %7")
                         .arg(robotName(names, static_cast<int>(robot)), which,
                              aircraft ? tr(" with the flights to and from its start") : QString(),
                              prose(vehicle.flightTimeSeconds),
-                             QString::fromUtf8(io::batteryTimeName(vehicle.type)),
-                             aircraft
-                                 ? tr("its region reaches beyond what one flight from its start can cover")
-                                 : tr("its path has stretches longer than one battery lasts"));
+                             QString::fromUtf8(io::batteryTimeName(vehicle.type)), why, advice);
     }
     return warnings;
 }

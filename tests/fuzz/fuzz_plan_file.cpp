@@ -1,8 +1,8 @@
 // libFuzzer harness: the plan saved beside a mission, read back from any bytes; never a crash, never an
 // allocation beyond what the bytes can hold. The first byte chooses what the rest is: the compressed body as
 // it is on disk (mostly refused by zlib's checksum), or the plan's raw fields, compressed here, so that
-// every structural check of the reader is reached; its second and third bits, which format (MCPP-PLAN 6, 3,
-// 4 or 5).
+// every structural check of the reader is reached; its second to fourth bits, which format (MCPP-PLAN 7, 3,
+// 4, 5 or 6).
 #include "core/coverage/StraightRunMerging.hpp"
 #include "io/PlanFile.hpp"
 

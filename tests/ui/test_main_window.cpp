@@ -380,6 +380,15 @@ class TestMainWindow : public QObject {
         QVERIFY(ui::ResultsPanel::flightsTooLongWarnings({{380, 1}, {380, 1}, {90, 6, 1100.0, 0}}, vehicles,
                                                          names)
                     .isEmpty());
+        // A rover's battery runs: its own words, one part in the singular.
+        std::vector<io::VehicleSettings> rover(1);
+        rover[0].flightTimeSeconds = 1200.0;
+        QCOMPARE(
+            ui::ResultsPanel::flightsTooLongWarnings({{90, 4, 1500.0, 1}}, rover, names),
+            QStringList{QStringLiteral(
+                "north: 1 of its 4 mission parts takes up to 25 min, longer than its 20 min battery time: "
+                "its path has stretches longer than one battery lasts. Add robots, or plan with "
+                "wavefront-battery and chargers.")});
         ui::ResultsPanel panel;
         const PlanningProblem problem = test::drawnProblem(std::vector<std::string>(20, std::string(40, '.')),
                                                            {{0.5, 0.5}, {39.5, 0.5}, {20.5, 19.5}});
