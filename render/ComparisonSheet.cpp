@@ -18,7 +18,7 @@ namespace {
 
 constexpr int tileSide = 520;
 constexpr int margin = 24;
-constexpr int captionHeight = 70;
+constexpr int captionHeight = 86; // a title and three lines of figures
 constexpr int chartHeight = 300;
 
 int columnsFor(std::size_t panels) {
@@ -67,24 +67,33 @@ QString tickLabel(double value) {
                                                        : QString::number(value, 'g', 3);
 }
 
+// A robot's bar: when it is done in the field where its plan says so, else its path's time.
+double barSeconds(const PlanMetrics& metrics, const RobotMetrics& robot) {
+    return metrics.timedInTheField() && robot.fieldSeconds > 0.0 ? robot.fieldSeconds : robot.timeSeconds;
+}
+
 // Groups of bars, one group per planner and one bar per robot in its colour, heights in hours (in days where
-// the longest robot takes over ten days).
+// the longest robot takes over ten days); times in the field where a plan has them, as the table ranks by.
 void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QRect area) {
     double longest = 0.0;
+    bool inTheField = false;
     for (const ComparisonPanel& panel : panels)
-        if (panel.plan != nullptr)
+        if (panel.plan != nullptr) {
+            inTheField = inTheField || panel.plan->metrics.timedInTheField();
             for (const RobotMetrics& robot : panel.plan->metrics.robots)
-                longest = std::max(longest, robot.timeSeconds);
+                longest = std::max(longest, barSeconds(panel.plan->metrics, robot));
+        }
     const bool inDays = longest > 10.0 * 86400.0;
     const double unitSeconds = inDays ? 86400.0 : 3600.0;
+    const QString what =
+        inTheField ? QStringLiteral("Time in the field per robot") : QStringLiteral("Time per robot");
     QFont font = painter.font();
     font.setPixelSize(13);
     font.setBold(true);
     painter.setFont(font);
     painter.setPen(Qt::black);
     painter.drawText(QRect(area.left(), area.top(), area.width(), 20), Qt::AlignHCenter,
-                     inDays ? QStringLiteral("Time per robot (days)")
-                            : QStringLiteral("Time per robot (hours)"));
+                     what + (inDays ? QStringLiteral(" (days)") : QStringLiteral(" (hours)")));
     font.setBold(false);
     painter.setFont(font);
     if (longest <= 0.0)
@@ -114,7 +123,8 @@ void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QR
         const auto& robots = panels[i].plan->metrics.robots;
         const double barWidth = groupWidth * 0.8 / std::max<std::size_t>(robots.size(), 1);
         for (std::size_t r = 0; r < robots.size(); ++r) {
-            const double height = plot.height() * (robots[r].timeSeconds / unitSeconds) / top;
+            const double seconds = barSeconds(panels[i].plan->metrics, robots[r]);
+            const double height = plot.height() * (seconds / unitSeconds) / top;
             painter.fillRect(QRectF(left + groupWidth * 0.1 + barWidth * static_cast<double>(r),
                                     plot.bottom() - height, barWidth * 0.9, height),
                              RobotPalette::colour(robots[r].robot));
@@ -132,8 +142,18 @@ ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan
         panel.caption << QString::fromStdString(io::outcomeName(row.outcome) + ": " + row.message);
         return panel;
     }
-    panel.caption << QStringLiteral("makespan %1%2, %3 x its own lower bound")
-                         .arg(QString::fromStdString(formatDuration(row.metrics.makespanSeconds)), timed)
+    // Where flights split the missions, plans are ranked and timed against the first by when the last robot
+    // is home: the time beside the comparison is that one.
+    if (row.metrics.timedInTheField())
+        panel.caption << QStringLiteral("last robot home after %1%2, the last %3 x the first")
+                             .arg(QString::fromStdString(formatDuration(row.metrics.fieldMakespanSeconds)),
+                                  timed)
+                             .arg(row.metrics.fieldSpread(), 0, 'f', 3);
+    panel.caption << (row.metrics.timedInTheField()
+                          ? QStringLiteral("paths' makespan %1%2, %3 x its own lower bound")
+                          : QStringLiteral("makespan %1%2, %3 x its own lower bound"))
+                         .arg(QString::fromStdString(formatDuration(row.metrics.makespanSeconds)),
+                              row.metrics.timedInTheField() ? QString() : timed)
                          .arg(row.metrics.ratio, 0, 'f', 3)
                   << QStringLiteral("%1 turns, covered %2 %, planned in %3 s")
                          .arg(row.metrics.totalTurns())

@@ -73,6 +73,11 @@ struct PlanMetrics {
         return sharedPartsRatio > 0.0 && std::abs(sharedPartsRatio - ratio) >= 0.0005;
     }
 
+    // Whether the plan says when its robots are done in the field (flights split its missions): then that,
+    // not the paths' makespan, is what a field team waits for and what plans are ranked by.
+    [[nodiscard]] bool timedInTheField() const {
+        return fieldMakespanSeconds > 0.0 && fieldLowerBoundSeconds > 0.0;
+    }
     // The longest time in the field over the shortest, among robots with work: how evenly the robots come
     // home; 0 without times in the field. (Makespan over the bound in the field says more of how far the
     // work lies from the starts than of the plan.)

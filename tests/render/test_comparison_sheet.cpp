@@ -56,6 +56,34 @@ class TestComparisonSheet : public QObject {
         QCOMPARE(panels[2].caption.front(), QStringLiteral("makespan 1 h, 1.500 x its own lower bound"));
     }
 
+    // Where flights split the missions, plans are ranked by when the last robot is home: the caption leads
+    // with that time, timed against the first's, and the paths' makespan follows without it.
+    void panelsInTheFieldLeadWithWhenTheLastRobotIsHome() {
+        std::vector<io::ComparisonRow> rows{plannedRow("darp", 1.0, 7000.0),
+                                            plannedRow("mcpp-mlct", 1.0, 7200.0)};
+        for (io::ComparisonRow& row : rows) {
+            row.metrics.fieldLowerBoundSeconds = 5000.0;
+            row.metrics.robots = {RobotMetrics{}, RobotMetrics{}};
+            row.metrics.robots[1].robot = 1;
+        }
+        rows[0].metrics.fieldMakespanSeconds = 10800.0; // darp: paths sooner done, robots later home
+        rows[0].metrics.robots[0].fieldSeconds = 9000.0;
+        rows[0].metrics.robots[1].fieldSeconds = 10800.0;
+        rows[1].metrics.fieldMakespanSeconds = 9000.0;
+        rows[1].metrics.robots[0].fieldSeconds = 9000.0;
+        rows[1].metrics.robots[1].fieldSeconds = 9000.0;
+        const auto panels = render::rankedComparisonPanels(rows, {nullptr, nullptr});
+        QCOMPARE(panels[0].title, QStringLiteral("1. mcpp-mlct"));
+        QCOMPARE(panels[0].caption.at(0),
+                 QStringLiteral("last robot home after 2 h 30 min, the last 1.000 x the first"));
+        QCOMPARE(panels[0].caption.at(1), QStringLiteral("paths' makespan 2 h, 1.500 x its own lower bound"));
+        QCOMPARE(
+            panels[1].caption.at(0),
+            QStringLiteral("last robot home after 3 h (1.20 x mcpp-mlct's), the last 1.200 x the first"));
+        QCOMPARE(panels[1].caption.at(1),
+                 QStringLiteral("paths' makespan 1 h 57 min, 1.500 x its own lower bound"));
+    }
+
     // Every panel's map shows the edges of the area the plans were made in, as plan.png does.
     void panelsShowTheAreaEdges() {
         const ClassGrid grid = test::filledGrid(20, 10, 1000.0, 5000.0, 10.0, 1); // one passable class
