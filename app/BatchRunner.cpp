@@ -901,8 +901,7 @@ void BatchRunner::printComparisonRows(const std::vector<io::ComparisonRow>& rows
         if (io::coversLessThanMost(row, most))
             output_ << ", " << formatNumber((most - row.metrics.coveredFraction) * 100.0, 1)
                     << " points less than the most covered (" << formatPercent(most) << ")";
-        const bool inTheField =
-            row.metrics.fieldMakespanSeconds > 0.0 && row.metrics.fieldLowerBoundSeconds > 0.0;
+        const bool inTheField = row.metrics.timedInTheField();
         // Where flights split the missions, the field team waits for the last robot home.
         output_ << (inTheField ? ", the last robot home after " : ", makespan ")
                 << formatDuration(io::doneAfterSeconds(row));
@@ -928,7 +927,7 @@ void BatchRunner::printSummary(const Plan& plan) const {
             << " with " << plan.planner << ": ";
     // Where flights split the missions, the team waits for the last robot home; paths of different
     // lengths that end together in the field are uneven by design, so their ratio comes second.
-    const bool inTheField = metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0;
+    const bool inTheField = metrics.timedInTheField();
     if (inTheField)
         output_ << "the last robot home after " << formatDuration(metrics.fieldMakespanSeconds)
                 << ", last / first home " << formatNumber(metrics.fieldSpread(), 3) << " (the paths: ";

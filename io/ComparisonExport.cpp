@@ -46,8 +46,7 @@ std::string stageColumn(std::string stage) {
 
 // Where flights split the missions: when the last robot is home and the bound there (as report.json).
 bool inTheField(const ComparisonRow& row) {
-    return row.outcome == ComparisonRow::Outcome::Planned && row.metrics.fieldMakespanSeconds > 0.0 &&
-           row.metrics.fieldLowerBoundSeconds > 0.0;
+    return row.outcome == ComparisonRow::Outcome::Planned && row.metrics.timedInTheField();
 }
 
 std::string fieldFigure(const ComparisonRow& row, double seconds) {

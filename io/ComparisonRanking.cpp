@@ -28,7 +28,7 @@ int groupOf(const ComparisonRow& row, double most) {
 
 double doneAfterSeconds(const ComparisonRow& row) {
     const PlanMetrics& metrics = row.metrics;
-    const bool inTheField = metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0;
+    const bool inTheField = metrics.timedInTheField();
     return inTheField ? metrics.fieldMakespanSeconds : metrics.makespanSeconds;
 }
 

@@ -185,7 +185,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         root.add("shared_parts_ratio", metrics.sharedPartsRatio);
     // Where missions are split into flights: when the last robot is home, the least any plan takes, and how
     // evenly the robots come home.
-    if (metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0) {
+    if (metrics.timedInTheField()) {
         root.add("field_makespan_s", metrics.fieldMakespanSeconds);
         root.add("field_lower_bound_s", metrics.fieldLowerBoundSeconds);
         root.add("field_spread", metrics.fieldSpread());

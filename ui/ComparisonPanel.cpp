@@ -256,7 +256,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         }
         table_->setItem(r, Ratio, ratio);
         table_->setItem(r, Makespan, timeItem(metrics.makespanSeconds, unitSeconds, coversLess));
-        if (metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0) {
+        if (metrics.timedInTheField()) {
             table_->setItem(r, Home, timeItem(metrics.fieldMakespanSeconds, unitSeconds, coversLess));
             inTheField = true;
         }

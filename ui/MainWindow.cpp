@@ -2071,7 +2071,7 @@ void MainWindow::handlePlanningFinished(const PlanningOutcome& outcome) {
         const QString took =
             seconds < 1.0 ? tr("%1 ms").arg(qRound(seconds * 1000.0)) : tr("%1 s").arg(seconds, 0, 'f', 1);
         // Where flights split the missions, when the last robot is home, as the results panel gives it.
-        const bool inTheField = metrics.fieldMakespanSeconds > 0.0 && metrics.fieldLowerBoundSeconds > 0.0;
+        const bool inTheField = metrics.timedInTheField();
         showStatus(inTheField ? tr("Planned in %1: the last robot home after %2.")
                                     .arg(took)
                                     .arg(ResultsPanel::formatDuration(metrics.fieldMakespanSeconds))

@@ -353,8 +353,7 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
     const bool underEvents =
         !metrics.robots.empty() && playedUnderEvents(*plan, metrics.robots.front().robot) != nullptr;
     // Where flights split the missions, the field team waits for the last robot home: the figures say when.
-    const bool inTheField =
-        !underEvents && metrics.fieldLowerBoundSeconds > 0.0 && metrics.fieldMakespanSeconds > 0.0;
+    const bool inTheField = !underEvents && metrics.timedInTheField();
     makespan_->setText(formatDuration(inTheField ? metrics.fieldMakespanSeconds : metrics.makespanSeconds));
     describeTimes(underEvents);
     lowerBound_->setText(
@@ -409,7 +408,6 @@ void ResultsPanel::showPlan(const Plan* plan, const QStringList& names, const io
     const auto placed = [raster, &robotNames](const std::string& message) {
         return QString::fromStdString(io::messageForPeople(message, raster, robotNames));
     };
-    planWarnings_.clear();
     for (const auto& warning : plan->warnings())
         planWarnings_ << placed(warning);
     showWarnings(planWarnings_);
