@@ -1,6 +1,7 @@
 #include "io/AutopilotMission.hpp"
 
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/model/HumanUnits.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/StraightLine.hpp"
 #include "io/internal/TextFiles.hpp"
@@ -432,6 +433,29 @@ MissionSize missionSize(const CoveragePath& path, const CellGraph& cells, const 
     const MissionFlights flights = missionFlights(mission, vehicle);
     return {mission.items, mission.parts.size(), flights.longestSeconds, flights.overFlightTime,
             flights.fieldSeconds};
+}
+
+std::string flightsTooLongLead(const std::string& robotName, const VehicleSettings& vehicle,
+                               std::size_t parts, std::size_t partsOver, double longestSeconds) {
+    const bool aircraft = isAircraft(vehicle.type);
+    const std::string which = parts == 1 ? "its mission takes "
+                                         : std::to_string(partsOver) + " of its " + std::to_string(parts) +
+                                               (aircraft ? " flights" : " mission parts") +
+                                               (partsOver == 1 ? " takes" : " take") + " up to ";
+    return robotName + ": " + which + formatDuration(longestSeconds) +
+           (aircraft ? " with the flights to and from its start" : "") + ", longer than its " +
+           formatDuration(vehicle.flightTimeSeconds) + " " + batteryTimeName(vehicle.type);
+}
+
+std::string flightsTooLongCause(const VehicleSettings& vehicle) {
+    return isAircraft(vehicle.type) ? "its region reaches beyond what one flight from its start can cover"
+                                    : "its path has stretches longer than one battery lasts";
+}
+
+std::string flightsTooLongAdvice(const VehicleSettings& vehicle) {
+    return isAircraft(vehicle.type)
+               ? "Add robots, start them nearer that land, or plan with wavefront-battery and chargers"
+               : "Add robots, or plan with wavefront-battery and chargers";
 }
 
 bool exceedsFlightTime(const MissionPart& part, const VehicleSettings& vehicle) {

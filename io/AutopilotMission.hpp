@@ -104,6 +104,16 @@ struct MissionSize {
     std::size_t partsOverFlightTime = 0; // out of one flight's reach: a part holds at least two points
     double fieldSeconds = 0.0;           // the flights and the turnarounds between them
 };
+// How the window and the exports say that a robot's flights (a rover's mission parts) outlast its battery:
+// "Robot 1: 305 of its 883 flights take up to 1 h 9 min with the flights to and from its start, longer than
+// its 20 min flight time". Why, and which files, follow; flightsTooLongAdvice ends the sentence.
+[[nodiscard]] std::string flightsTooLongLead(const std::string& robotName, const VehicleSettings& vehicle,
+                                             std::size_t parts, std::size_t partsOver, double longestSeconds);
+// Why, in general: "its region reaches beyond what one flight from its start can cover".
+[[nodiscard]] std::string flightsTooLongCause(const VehicleSettings& vehicle);
+// "Add robots, start them nearer that land, or plan with wavefront-battery and chargers" (a rover cannot
+// start nearer: its stretches are too long wherever it starts).
+[[nodiscard]] std::string flightsTooLongAdvice(const VehicleSettings& vehicle);
 // The size of the mission of a robot's path, made as the waypoint files make it (cells: the plan's).
 [[nodiscard]] MissionSize missionSize(const CoveragePath& path, const CellGraph& cells,
                                       const VehicleSettings& vehicle, const ExportSettings& settings);

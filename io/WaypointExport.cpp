@@ -671,20 +671,12 @@ std::string flightTimeWarning(const ExportContext& context, int robot, const std
     const MissionFlights flights = missionFlights(mission, vehicle);
     if (flights.overFlightTime == 0)
         return {};
-    const std::string which = mission.parts.size() == 1
-                                  ? "its mission takes "
-                                  : std::to_string(flights.overFlightTime) + " of its " +
-                                        std::to_string(mission.parts.size()) + " mission parts take up to ";
-    const bool aircraft = isAircraft(vehicle.type);
-    return context.robotName(robot) + ": " + which + formatDuration(flights.longestSeconds) +
-           (aircraft ? " with the flights to and from its start" : "") + ", longer than its " +
-           formatDuration(vehicle.flightTimeSeconds) + " " + batteryTimeName(vehicle.type) + ": " +
-           (aircraft ? outOfReachNote(vehicle, mission)
-                     : "its path has stretches longer than one battery lasts") +
+    return flightsTooLongLead(context.robotName(robot), vehicle, mission.parts.size(), flights.overFlightTime,
+                              flights.longestSeconds) +
+           ": " +
+           (isAircraft(vehicle.type) ? outOfReachNote(vehicle, mission) : flightsTooLongCause(vehicle)) +
            " (" + partsOverFlightTime(mission, vehicle, path) +
-           "; fits_flight 0 in the GeoPackage's missions layer). Add robots, or start them nearer that "
-           "ground, "
-           "or plan with wavefront-battery and chargers";
+           "; fits_flight 0 in the GeoPackage's missions layer). " + flightsTooLongAdvice(vehicle);
 }
 
 namespace {

@@ -619,33 +619,18 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
 QStringList ResultsPanel::flightsTooLongWarnings(const std::vector<io::MissionSize>& sizes,
                                                  const std::vector<io::VehicleSettings>& vehicles,
                                                  const QStringList& names) {
-    // "1 h 8 min", as batch mode says it; the table's "1:08:00" reads poorly in a sentence.
-    const auto prose = [](double seconds) { return QString::fromStdString(mcpp::formatDuration(seconds)); };
     QStringList warnings;
     for (std::size_t robot = 0; robot < sizes.size() && robot < vehicles.size(); ++robot) {
         const io::MissionSize& size = sizes[robot];
         const io::VehicleSettings& vehicle = vehicles[robot];
         if (size.partsOverFlightTime == 0 || !(vehicle.flightTimeSeconds > 0.0))
             continue;
-        const bool aircraft = io::isAircraft(vehicle.type);
-        const QString parts = size.partsOverFlightTime == 1 ? tr("%1 of its %2 %3 takes up to %4")
-                                                            : tr("%1 of its %2 %3 take up to %4");
-        const QString which = size.parts == 1 ? tr("its mission takes %1").arg(prose(size.longestPartSeconds))
-                                              : parts.arg(size.partsOverFlightTime)
-                                                    .arg(size.parts)
-                                                    .arg(aircraft ? tr("flights") : tr("mission parts"))
-                                                    .arg(prose(size.longestPartSeconds));
-        const QString why = aircraft
-                                ? tr("its region reaches beyond what one flight from its start can cover")
-                                : tr("its path has stretches longer than one battery lasts");
-        const QString advice = aircraft ? tr("Add robots, start them nearer that land, or plan with "
-                                             "wavefront-battery and chargers.")
-                                        : tr("Add robots, or plan with wavefront-battery and chargers.");
-        warnings << tr("%1: %2%3, longer than its %4 %5: %6. %7")
-                        .arg(robotName(names, static_cast<int>(robot)), which,
-                             aircraft ? tr(" with the flights to and from its start") : QString(),
-                             prose(vehicle.flightTimeSeconds),
-                             QString::fromUtf8(io::batteryTimeName(vehicle.type)), why, advice);
+        // Batch mode's sentence, with "1 h 8 min" rather than the table's "1:08:00".
+        const std::string lead =
+            io::flightsTooLongLead(robotName(names, static_cast<int>(robot)).toStdString(), vehicle,
+                                   size.parts, size.partsOverFlightTime, size.longestPartSeconds);
+        warnings << QString::fromStdString(lead + ": " + io::flightsTooLongCause(vehicle) + ". " +
+                                           io::flightsTooLongAdvice(vehicle) + ".");
     }
     return warnings;
 }

@@ -804,6 +804,10 @@ class AutopilotMissionTest : public QObject {
         const std::string named = " (" + over[0] + ", " + over[1] + ", " + over[2] + " and " +
                                   std::to_string(over.size() - 3) + " more; fits_flight 0";
         QVERIFY2(warning.find(named) != std::string::npos, (warning + "\nwanted: " + named).c_str());
+        const std::string lead =
+            flightsTooLongLead(context.robotName(0), drone, mission.parts.size(), over.size(),
+                               missionFlights(mission, drone).longestSeconds);
+        QVERIFY2(warning.rfind(lead + ": ", 0) == 0, (warning + "\nwanted first: " + lead).c_str());
         QVERIFY2(warning.find(
                      "its farthest waypoint lies " + formatDistance(farthest) +
                      " from its start, and one flight at 1 m/s goes at most 14 m from its start and back") !=
@@ -814,6 +818,31 @@ class AutopilotMissionTest : public QObject {
         QVERIFY(flightTimeWarning(lawnmowerExport.context(), 0, "robot_1.plan").empty());
         drone.type = VehicleType::Rover;
         QCOMPARE(flightReachMetres(drone), 0.0);
+    }
+
+    // The window and the exports say it in one sentence: flights for an aircraft, mission parts for a rover,
+    // one verb for one part, and what to do that suits the vehicle.
+    void flightsTooLongAreSaidAlike() {
+        VehicleSettings drone;
+        drone.type = VehicleType::Multirotor;
+        drone.flightTimeSeconds = 20.0 * 60.0;
+        QCOMPARE(
+            flightsTooLongLead("Robot 1", drone, 883, 305, 4140.0),
+            std::string("Robot 1: 305 of its 883 flights take up to 1 h 9 min with the flights to and from "
+                        "its start, longer than its 20 min flight time"));
+        QCOMPARE(flightsTooLongLead("Robot 1", drone, 4, 1, 1500.0).substr(0, 44),
+                 std::string("Robot 1: 1 of its 4 flights takes up to 25 m"));
+        QCOMPARE(flightsTooLongLead("Robot 1", drone, 1, 1, 1500.0).substr(0, 39),
+                 std::string("Robot 1: its mission takes 25 min with "));
+        VehicleSettings rover = drone;
+        rover.type = VehicleType::Rover;
+        QCOMPARE(
+            flightsTooLongLead("north", rover, 4, 2, 1500.0),
+            std::string("north: 2 of its 4 mission parts take up to 25 min, longer than its 20 min battery "
+                        "time"));
+        QVERIFY(flightsTooLongAdvice(drone).find("start them nearer") != std::string::npos);
+        QVERIFY(flightsTooLongAdvice(rover).find("start them nearer") == std::string::npos);
+        QVERIFY(flightsTooLongCause(drone) != flightsTooLongCause(rover));
     }
 
     void flightsTooShortForTheClimbAreRefused() {
