@@ -233,6 +233,7 @@ Status writeRegionLayer(VectorFileWriter& writer, const ExportContext& context,
         return Status::failure(layer.error());
     Fields fields{{{"robot", OFTInteger},
                    {"robot_name", OFTString},
+                   {"time_s", OFTReal},
                    {"cost_s", OFTReal},
                    {"area_m2", OFTReal},
                    {"cells", OFTInteger}}};
@@ -247,6 +248,7 @@ Status writeRegionLayer(VectorFileWriter& writer, const ExportContext& context,
             feature.SetStyleString(regionStyle(region.robot).c_str());
         }
         setRobotFields(feature, context, region.robot);
+        feature.SetField("time_s", region.timeSeconds);
         feature.SetField("cost_s", region.costSeconds);
         feature.SetField("area_m2", region.areaSquareMetres);
         feature.SetField("cells", region.cells);

@@ -221,6 +221,7 @@ std::optional<std::string> planGeoJsonText(const ExportContext& context, const P
             return std::nullopt;
         FeatureLine(out, "region")
             .robot(context, region.robot)
+            .real("time_s", region.timeSeconds)
             .real("cost_s", region.costSeconds)
             .real("area_m2", region.areaSquareMetres)
             .integer("cells", region.cells)

@@ -97,6 +97,8 @@ std::vector<RegionFeature> emptyRegions(const Plan& plan) {
         const auto r = static_cast<std::size_t>(robot);
         regions[r].robot = robot;
         regions[r].geometry = std::make_unique<OGRMultiPolygon>();
+        if (r < plan.paths.size())
+            regions[r].timeSeconds = plan.paths[r].timeSeconds;
         if (r < plan.regions.costSeconds.size())
             regions[r].costSeconds = plan.regions.costSeconds[r];
         else if (r < plan.metrics.robots.size())

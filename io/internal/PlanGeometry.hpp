@@ -16,7 +16,8 @@ struct RegionFeature {
     // Built as a multipolygon in CRS units, empty for a robot without cells; in WGS84 it may be cut at the
     // antimeridian, as may the other features' geometries.
     std::unique_ptr<OGRGeometry> geometry;
-    double costSeconds = 0.0;
+    double timeSeconds = 0.0; // the robot's path at its own speed: what covering the region takes
+    double costSeconds = 0.0; // what the region cost the division, at the class table's speeds
     double areaSquareMetres = 0.0;
     int cells = 0;
 };

@@ -623,6 +623,7 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
             QVERIFY(properties.value("area_m2").toDouble() > 0.0);
             QVERIFY(properties.value("cells").toInt() > 0);
             QVERIFY(properties.value("cost_s").toDouble() > 0.0);
+            QVERIFY(properties.value("time_s").toDouble() > 0.0);
         } else if (kind == "path") {
             QCOMPARE(geometryType, QStringLiteral("LineString"));
             QVERIFY(properties.value("length_m").toDouble() > 0.0);

@@ -228,6 +228,9 @@ class PlanExportTest : public QObject {
                 QCOMPARE(feature->GetFieldAsInteger("cells"), metrics.cells);
                 QCOMPARE(feature->GetFieldAsDouble("cost_s"),
                          plan_.regions.costSeconds[static_cast<std::size_t>(robot)]);
+                // What covering it takes, as its path says: a region reads in the robot's time, too.
+                QCOMPARE(feature->GetFieldAsDouble("time_s"),
+                         plan_.paths[static_cast<std::size_t>(robot)].timeSeconds);
                 QVERIFY(std::abs(areaInCrs(*geometry, reference_) - metrics.areaSquareMetres) < 0.01);
             } else if (kind == "path") {
                 const CoveragePath& coverage = plan_.paths[static_cast<std::size_t>(robot)];
@@ -398,6 +401,9 @@ class PlanExportTest : public QObject {
             QVERIFY(geometry->IsValid());
             const double area = geometry->toMultiPolygon()->get_Area();
             QVERIFY(std::abs(area - feature->GetFieldAsDouble("area_m2")) <= 1e-6 * area);
+            QCOMPARE(
+                feature->GetFieldAsDouble("time_s"),
+                plan_.paths[static_cast<std::size_t>(feature->GetFieldAsInteger("robot") - 1)].timeSeconds);
         }
     }
 
