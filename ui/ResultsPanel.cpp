@@ -625,7 +625,8 @@ QStringList ResultsPanel::flightsTooLongWarnings(const std::vector<io::MissionSi
         const io::VehicleSettings& vehicle = vehicles[robot];
         if (size.partsOverFlightTime == 0 || !(vehicle.flightTimeSeconds > 0.0))
             continue;
-        // Batch mode's sentence, with "1 h 8 min" rather than the table's "1:08:00".
+        // The exports' lead and advice ("1 h 8 min", not the table's "1:08:00"); the cause in general, as
+        // the panel holds no mission to name the farthest waypoint or the files from.
         const std::string lead =
             io::flightsTooLongLead(robotName(names, static_cast<int>(robot)).toStdString(), vehicle,
                                    size.parts, size.partsOverFlightTime, size.longestPartSeconds);
