@@ -46,4 +46,15 @@ void PathShape::add(double x, double y, double speedMetresPerSecond, double turn
     haveDirection_ = true;
 }
 
+bool isQuicker(const PathShape& walk, const PathShape& than) {
+    constexpr double sameTime = 1e-9; // relative
+    if (walk.seconds() < than.seconds() * (1.0 - sameTime))
+        return true;
+    if (walk.seconds() > than.seconds() * (1.0 + sameTime))
+        return false;
+    if (walk.turns() != than.turns())
+        return walk.turns() < than.turns();
+    return walk.lengthMetres() < than.lengthMetres() - 1e-9;
+}
+
 } // namespace mcpp

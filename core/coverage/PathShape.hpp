@@ -36,4 +36,9 @@ class PathShape {
     std::size_t points_ = 0;
 };
 
+// Walks compared by time (travel and turns at their cells' price), then turns, then length: where turns are
+// free (turn_s 0), the one that turns less. Times within a billionth of each other are the same time
+// summed in another order, not a quicker walk.
+[[nodiscard]] bool isQuicker(const PathShape& walk, const PathShape& than);
+
 } // namespace mcpp

@@ -54,18 +54,6 @@ std::vector<int> cellsOfRobot(const RegionAllocation& regions, int robot, std::s
 // Walks and measured paths add the same times in other orders: a tie must not be decided by rounding.
 constexpr double relativeMargin = 1e-9;
 
-// Walks are compared by time (travel and turns at their cells' price), then turns, then length: where
-// turns are free, the one that turns less.
-bool isQuicker(const PathShape& walk, const PathShape& than) {
-    if (walk.seconds() < than.seconds() * (1.0 - relativeMargin))
-        return true;
-    if (walk.seconds() > than.seconds() * (1.0 + relativeMargin))
-        return false;
-    if (walk.turns() != than.turns())
-        return walk.turns() < than.turns();
-    return walk.lengthMetres() < than.lengthMetres() - 1e-9;
-}
-
 // The longest of the trees' walks, in seconds.
 double longestWalkSeconds(const std::vector<SpanningTreeCoverage::RegionTree>& trees) {
     double longest = 0.0;

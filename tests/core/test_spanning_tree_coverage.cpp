@@ -1,5 +1,6 @@
 #include "core/coverage/CellIndexScope.hpp"
 #include "core/coverage/PathMeasurement.hpp"
+#include "core/coverage/PathShape.hpp"
 #include "core/coverage/SpanningTreeBuilder.hpp"
 #include "core/coverage/SpanningTreeCoverage.hpp"
 #include "core/coverage/StraightRunMerging.hpp"
@@ -332,6 +333,33 @@ class SpanningTreeCoverageTest : public QObject {
         QVERIFY2(test::checkAllInvariants(problem, plan).empty(), qPrintable(violations(problem, plan)));
         QVERIFY2(plan.paths[0].turns <= 10, qPrintable(QString::number(plan.paths[0].turns)));
         QCOMPARE(countTurns(plan.paths[0].waypoints), plan.paths[0].turns);
+    }
+
+    // Two walks of 4 m at 1 m/s: an L (one turn) and a staircase (three). Where turns are free they take
+    // the same time and the L is quicker for its turns; priced, for its time; a walk twice as fast is
+    // quicker whatever it turns; and times a rounding apart are one time.
+    void quickerWalksTurnLessAtTheSameTime() {
+        const auto walk = [](const std::vector<std::pair<double, double>>& points, double speed,
+                             double turnSeconds) {
+            PathShape shape;
+            for (const auto& [x, y] : points)
+                shape.add(x, y, speed, turnSeconds);
+            return shape;
+        };
+        const std::vector<std::pair<double, double>> ell{{0, 0}, {2, 0}, {2, 2}};
+        const std::vector<std::pair<double, double>> stairs{{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}};
+        QCOMPARE(walk(ell, 1.0, 0.0).seconds(), walk(stairs, 1.0, 0.0).seconds());
+        QVERIFY(isQuicker(walk(ell, 1.0, 0.0), walk(stairs, 1.0, 0.0)));
+        QVERIFY(!isQuicker(walk(stairs, 1.0, 0.0), walk(ell, 1.0, 0.0)));
+        QVERIFY(isQuicker(walk(ell, 1.0, 1.0), walk(stairs, 1.0, 1.0)));
+        QVERIFY(isQuicker(walk(stairs, 2.0, 0.0), walk(ell, 1.0, 0.0)));
+        QVERIFY(!isQuicker(walk(ell, 1.0, 0.0), walk(stairs, 2.0, 0.0)));
+        QVERIFY(!isQuicker(walk(ell, 1.0, 0.0), walk(ell, 1.0, 0.0))); // the same walk: neither is
+        // A millionth of a micrometre shorter: the same time, so the staircase's turns decide.
+        const std::vector<std::pair<double, double>> hairShorterStairs{
+            {0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2.0 - 1e-12}};
+        QVERIFY(isQuicker(walk(ell, 1.0, 0.0), walk(hairShorterStairs, 1.0, 0.0)));
+        QVERIFY(!isQuicker(walk(hairShorterStairs, 1.0, 0.0), walk(ell, 1.0, 0.0)));
     }
 
     // Three land covers with FOVs 5, 10 and 20 m: connectors join cells of different sizes.
