@@ -2,6 +2,7 @@
 #include "io/LoadedRaster.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/LegendReader.hpp"
+#include "io/internal/TextFiles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +32,7 @@ Status checkFileReadable(const std::string& path) {
         return {}; // GDAL virtual file systems: let GDAL judge
     std::error_code error;
     if (!fs::exists(path, error))
-        return Status::failure(path + ": file not found");
+        return Status::failure(internal::fileNotFound(path));
     if (fs::is_directory(path, error))
         return Status::failure(path + ": is a folder, not a raster file");
     if (fs::is_regular_file(path, error) && fs::file_size(path, error) == 0)

@@ -16,10 +16,21 @@ Status writeFileAtomically(const std::string& path, const std::string& contents,
     return io::writeFileAtomically(path, std::string_view(contents), sync);
 }
 
+std::string fileNotFound(const std::string& path) {
+    const std::filesystem::path given(path);
+    if (given.is_absolute())
+        return path + ": file not found";
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(given, error);
+    if (error)
+        return path + ": file not found";
+    return path + ": file not found (looked for " + absolute.lexically_normal().string() + ")";
+}
+
 Result<std::string> readWholeFile(const std::string& path) {
     std::error_code error;
     if (!std::filesystem::exists(path, error))
-        return Result<std::string>::failure(path + ": file not found");
+        return Result<std::string>::failure(fileNotFound(path));
     if (std::filesystem::is_directory(path, error)) {
         return Result<std::string>::failure(path + ": is a folder, not a file");
     }

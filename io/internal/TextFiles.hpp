@@ -14,6 +14,9 @@ namespace mcpp::io::internal {
                                          Sync sync = Sync::ToDisk);
 // The whole file, or an error naming it.
 [[nodiscard]] Result<std::string> readWholeFile(const std::string& path);
+// "PATH: file not found", and where a relative path was looked for: it is read from the folder the program
+// runs in, or a mission file's, which the user may not have in mind.
+[[nodiscard]] std::string fileNotFound(const std::string& path);
 
 // Shortest decimal text that reads back as the same double.
 [[nodiscard]] std::string formatShortest(double value);

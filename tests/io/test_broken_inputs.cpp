@@ -79,6 +79,19 @@ class BrokenInputsTest : public QObject {
         auto missing = loadLandCoverRaster(file("nowhere/map.tif"));
         QVERIFY(!missing.ok());
         expectOneLineError(missing.error(), "not found");
+        QVERIFY2(missing.error().find("looked for") == std::string::npos, missing.error().c_str());
+        // A relative path is read from the working folder: the message says which file that was.
+        const std::filesystem::path here = std::filesystem::current_path();
+        std::filesystem::current_path(folder_.path().toStdString());
+        auto relative = loadLandCoverRaster("nowhere/map.tif");
+        std::filesystem::current_path(here);
+        QVERIFY(!relative.ok());
+        expectOneLineError(relative.error(),
+                           "nowhere/map.tif: file not found (looked for " +
+                               (std::filesystem::path(folder_.path().toStdString()) / "nowhere/map.tif")
+                                   .lexically_normal()
+                                   .string() +
+                               ")");
         auto folder = loadLandCoverRaster(folder_.path().toStdString());
         QVERIFY(!folder.ok());
         expectOneLineError(folder.error(), "folder");
