@@ -86,6 +86,18 @@ namespace mcpp::ui {
 
 namespace {
 
+// The files an export wrote, for the status bar: each where few, else how many, where, and the first and
+// last (a drone's mission split into hundreds of parts named them all, cut off at the window's edge).
+QString exportedFilesText(const QStringList& written) {
+    constexpr int mostNamed = 3;
+    if (written.size() <= mostNamed)
+        return written.join(QStringLiteral(", "));
+    return QObject::tr("%1 files in %2 (%3 to %4)")
+        .arg(written.size())
+        .arg(QDir::toNativeSeparators(QFileInfo(written.front()).absolutePath()),
+             QFileInfo(written.front()).fileName(), QFileInfo(written.back()).fileName());
+}
+
 // A speed as batch mode gives it: "0.3", "1.5" (three significant digits).
 QString speedText(double metresPerSecond) {
     return QString::fromStdString(formatQuantity(metresPerSecond, 3));
@@ -1678,7 +1690,7 @@ void MainWindow::handleExportFinished(const ExportOutcome& outcome) {
     } else if (!outcome.error.isEmpty()) {
         reportError(tr("Export failed"), outcome.error);
     } else {
-        QString message = tr("Exported %1").arg(outcome.written.join(QStringLiteral(", ")));
+        QString message = tr("Exported %1").arg(exportedFilesText(outcome.written));
         if (exportStale_)
             message += tr(" (note: the plan is out of date)");
         showStatus(message);

@@ -823,6 +823,14 @@ class TestMainWindow : public QObject {
         QVERIFY2(note.contains(QStringLiteral("more than its autopilot's 8")) &&
                      note.contains(parts.first() + QStringLiteral(" to ") + parts.last()),
                  qPrintable(note));
+        // The status bar counts the parts and names the first and last, not each of them.
+        const QString status = window.lastStatusMessage();
+        QVERIFY2(
+            status.startsWith(QStringLiteral("Exported ")) &&
+                status.contains(QStringLiteral(" files in ") + QDir::toNativeSeparators(directory.path())) &&
+                status.endsWith(QStringLiteral(" to ") + parts.last() + QStringLiteral(")")) &&
+                status.count(QStringLiteral(".plan")) == 2,
+            qPrintable(status));
         // Exported whole to the same name again: the parts of the earlier export go.
         exports.vehicle.maxWaypoints = 0;
         window.document()->setVehicles(exports, {});
