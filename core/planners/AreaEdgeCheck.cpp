@@ -65,4 +65,24 @@ WaypointsBeyondArea waypointsBeyondArea(const ClassGrid& grid, const std::vector
     return beyond;
 }
 
+WaypointsBeyondRaster waypointsBeyondRaster(const ClassGrid& grid, const std::vector<CoveragePath>& paths) {
+    WaypointsBeyondRaster beyond;
+    for (const CoveragePath& path : paths) {
+        int here = 0;
+        for (const Waypoint& waypoint : path.waypoints) {
+            const double dx = std::max({grid.originX - waypoint.x, 0.0, waypoint.x - grid.maxX()});
+            const double dy = std::max({grid.minY() - waypoint.y, 0.0, waypoint.y - grid.originY});
+            if (waypoint.cell < 0 || (dx <= 0.0 && dy <= 0.0))
+                continue; // a take-off beside the raster, or on the raster, its edge included
+            ++here;
+            beyond.farthestMetres = std::max(beyond.farthestMetres, std::hypot(dx, dy));
+        }
+        if (here > 0)
+            beyond.robots.push_back(path.robot);
+        beyond.waypoints += here;
+    }
+    std::sort(beyond.robots.begin(), beyond.robots.end());
+    return beyond;
+}
+
 } // namespace mcpp

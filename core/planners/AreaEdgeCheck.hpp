@@ -23,4 +23,16 @@ struct WaypointsBeyondArea {
 [[nodiscard]] WaypointsBeyondArea waypointsBeyondArea(const ClassGrid& grid,
                                                       const std::vector<CoveragePath>& paths);
 
+// Waypoints past the raster's edge, over ground the map says nothing of: a cell the edge cuts through is
+// covered whole where the part beyond, counted as obstacle, is within the blocked threshold (a raster of an
+// odd number of rows, cells of two pixels: half a cell).
+struct WaypointsBeyondRaster {
+    int waypoints = 0;
+    std::vector<int> robots;     // ascending, those with any such waypoint
+    double farthestMetres = 0.0; // the largest distance from one of them to the raster's edge
+};
+
+[[nodiscard]] WaypointsBeyondRaster waypointsBeyondRaster(const ClassGrid& grid,
+                                                          const std::vector<CoveragePath>& paths);
+
 } // namespace mcpp

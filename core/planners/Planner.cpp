@@ -180,6 +180,20 @@ std::string beyondAreaMessage(const WaypointsBeyondArea& beyond) {
            (noGoOnly ? "the no-go zone " + margin + " larger" : "the area " + margin + " inside the fence");
 }
 
+// Paths past the raster's edge: what a robot would find there is not on the map, and a drone's geofence
+// drawn round the raster would be crossed.
+std::string beyondRasterMessage(const WaypointsBeyondRaster& beyond) {
+    const bool one = beyond.robots.size() == 1;
+    return (one ? "the path of " : "the paths of ") + robotList(beyond.robots) +
+           (one ? " passes " : " pass ") + "beyond the raster's edge at " + std::to_string(beyond.waypoints) +
+           (beyond.waypoints == 1 ? " sub-cell centre" : " sub-cell centres") + ", up to " +
+           formatDistance(beyond.farthestMetres) +
+           " past it, over ground the map says nothing of: cells the edge cuts through are covered whole "
+           "where "
+           "the part beyond, counted as obstacle, is within the blocked threshold. A lower blocked threshold "
+           "leaves those cells out, and the land inside them uncovered";
+}
+
 // "Balanced pieces": the label of the planner's switch that evens its pieces out.
 std::string switchLabel(const PlannerDescription& planner) {
     for (const ParameterSpec& spec : planner.parameters)
@@ -522,6 +536,9 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     if (const WaypointsBeyondArea beyond = waypointsBeyondArea(problem.grid, plan.paths);
         beyond.waypoints > 0)
         planningRun.addIssue(IssueSeverity::Warning, "paths-beyond-area", beyondAreaMessage(beyond));
+    if (const WaypointsBeyondRaster beyond = waypointsBeyondRaster(problem.grid, plan.paths);
+        beyond.waypoints > 0)
+        planningRun.addIssue(IssueSeverity::Warning, "paths-beyond-raster", beyondRasterMessage(beyond));
     for (const ConfinedRobot& confined : plan.metrics.confinedRobots)
         planningRun.addIssue(IssueSeverity::Information, "confined-robot", confinedRobotMessage(confined));
     // Robots slowed or stopped by events are meant to do less: their plan is uneven by design.

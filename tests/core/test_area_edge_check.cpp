@@ -56,6 +56,45 @@ class AreaEdgeCheckTest : public QObject {
         QCOMPARE(beyond.pixelMetres, 10.0);
     }
 
+    void waypointsBeyondTheRasterAreCountedWithTheirDistance() {
+        const ClassGrid grid = fencedProblem().grid; // 100 x 100 m
+        std::vector<CoveragePath> paths{pathThrough(0, {{55, 55}, {95, 105}, {105, 95}, {100, 100}}),
+                                        pathThrough(1, {{-5, -12}}), pathThrough(2, {{5, 5}})};
+        for (CoveragePath& path : paths)
+            for (Waypoint& waypoint : path.waypoints)
+                waypoint.cell = 0;
+        const WaypointsBeyondRaster beyond = waypointsBeyondRaster(grid, paths);
+        QCOMPARE(beyond.waypoints, 3); // the corner itself is on the raster
+        QCOMPARE(beyond.robots, (std::vector<int>{0, 1}));
+        QCOMPARE(beyond.farthestMetres, 13.0); // 5 m west and 12 m north
+        paths[1].waypoints.front().cell = -1;  // a take-off beside the raster is no coverage waypoint
+        QCOMPARE(waypointsBeyondRaster(grid, paths).robots, (std::vector<int>{0}));
+    }
+
+    // 5 rows of 10 m pixels, cells of 20 m: the southern row of cells lies half beyond the raster, and
+    // MCPP-MLCT covers it whole under the blocked threshold of 0.5, and says so; below it, the cells are
+    // left out and the paths stay on the raster.
+    void aPlanPassingBeyondTheRasterSaysSo() {
+        PlanningProblem problem = test::uniformProblem(6, 5, 10.0, {}, {});
+        problem.classes.set({1, "grass", 0x88cc44, 1.0, 10.0, true});
+        problem.starts = {{west + 25.0, north - 15.0}};
+        const auto warningOf = [](const Plan& plan) {
+            return std::find_if(plan.issues.begin(), plan.issues.end(),
+                                [](const PlanIssue& issue) { return issue.code == "paths-beyond-raster"; });
+        };
+        const Plan plan = makePlanner("mcpp-mlct")->plan(problem, ProgressReporter{});
+        const auto warning = warningOf(plan);
+        QVERIFY(warning != plan.issues.end());
+        QVERIFY2(warning->message.find("the path of robot 1 passes beyond the raster's edge at 6 sub-cell "
+                                       "centres, up to 5 m past it") != std::string::npos,
+                 warning->message.c_str());
+        problem.planner.parameters.set("blocked_threshold", 0.45);
+        const Plan inside = makePlanner("mcpp-mlct")->plan(problem, ProgressReporter{});
+        QVERIFY(warningOf(inside) == inside.issues.end());
+        QVERIFY(waypointsBeyondRaster(problem.grid, inside.paths).waypoints == 0);
+        QVERIFY(inside.metrics.coveredFraction < plan.metrics.coveredFraction);
+    }
+
     void mapsWithoutAnAreaOfInterestHaveNone() {
         ClassGrid grid = fencedProblem().grid;
         for (std::uint8_t& flag : grid.outside)
