@@ -444,9 +444,11 @@ void ResultsPanel::showEvent(QShowEvent* event) {
 }
 
 // The figures shown whole where the panel has room, taken from the table's empty rows first, then from the
-// chart down to its least height; the table keeps its rows where it can. A user's drag holds until the
-// next plan.
+// chart down to its least height. The table keeps its first rows (up to rowsKept) before the figures: a
+// plan's long warnings, shown whole under Messages, scroll here rather than hide the robot that finishes
+// last. A user's drag holds until the next plan.
 void ResultsPanel::fitSummary() {
+    constexpr int rowsKept = 6;
     const QList<int> sizes = splitter_->sizes();
     const int total = std::accumulate(sizes.begin(), sizes.end(), 0);
     if (!isVisible() || total <= 0)
@@ -458,8 +460,10 @@ void ResultsPanel::fitSummary() {
     const int rowsHeight = table_->rowCount() > 0 ? table_->rowCount() * table_->rowHeight(0) : 0;
     const int tableWanted = table_->horizontalHeader()->height() + rowsHeight + 2 * table_->frameWidth();
     const int tableLeast = std::min(tableWanted, table_->minimumHeight());
+    const int tableKept =
+        std::max(tableLeast, tableWanted - std::max(table_->rowCount() - rowsKept, 0) * table_->rowHeight(0));
     const int chartLeast = chartView_->minimumHeight();
-    const int figuresHeight = std::max(std::min(figuresWanted, total - tableLeast - chartLeast),
+    const int figuresHeight = std::max(std::min(figuresWanted, total - tableKept - chartLeast),
                                        summaryArea_->minimumSizeHint().height());
     const int tableHeight = std::max(std::min(tableWanted, total - figuresHeight - chartLeast), tableLeast);
     splitter_->setSizes({figuresHeight, tableHeight, std::max(total - figuresHeight - tableHeight, 0)});

@@ -279,6 +279,32 @@ class TestMainWindow : public QObject {
         QVERIFY2(!warnings->text().startsWith(QStringLiteral("• ")), qPrintable(warnings->text()));
     }
 
+    // In a small dock, a plan's long warnings scroll: every robot's row stays in view, the last done too.
+    void resultsKeepEveryRobotsRowBesideLongWarnings() {
+        std::vector<std::string> rows(20, std::string(40, '.'));
+        for (int row = 10; row < 16; ++row) // a pocket no robot reaches, and starts crowded in a corner
+            for (int column = 30; column < 36; ++column)
+                if (row < 12 || row >= 14 || column < 32 || column >= 34)
+                    rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] = '#';
+        const Plan plan =
+            makePlanner("mcpp-mlct")
+                ->plan(test::drawnProblem(rows, {{0.5, 0.5}, {2.5, 0.5}, {0.5, 2.5}, {2.5, 2.5}}), {});
+        QVERIFY(!plan.warnings().empty());
+        ui::ResultsPanel panel;
+        panel.resize(320, 560); // narrow: the warnings wrap to many lines
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        panel.showPlan(&plan, {});
+        QCoreApplication::processEvents();
+        auto* warnings = panel.findChild<QLabel*>(QStringLiteral("warningsLabel"));
+        QVERIFY(warnings != nullptr && warnings->height() > 6 * warnings->fontMetrics().height());
+        const QTableWidget* table = panel.robotTable();
+        QCOMPARE(table->rowCount(), 4);
+        const int shown = table->viewport()->height() / table->rowHeight(0);
+        QVERIFY2(shown >= 4,
+                 qPrintable(QStringLiteral("%1 rows shown, %2 px").arg(shown).arg(table->height())));
+    }
+
     // What the plan says for information (the speed it planned at) is shown beside the warnings; a plan
     // without any hides the row.
     void resultsShowThePlansNotes() {
