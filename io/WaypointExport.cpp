@@ -676,7 +676,7 @@ std::string flightTimeWarning(const ExportContext& context, int robot, const std
            ": " +
            (isAircraft(vehicle.type) ? outOfReachNote(vehicle, mission) : flightsTooLongCause(vehicle)) +
            " (" + partsOverFlightTime(mission, vehicle, path) +
-           "; fits_flight 0 in the GeoPackage's missions layer). " + flightsTooLongAdvice(vehicle);
+           "; fits_flight 0 in the missions layer of a GeoPackage export). " + flightsTooLongAdvice(vehicle);
 }
 
 namespace {
