@@ -18,6 +18,11 @@ namespace {
 using internal::trimmed;
 
 const std::vector<std::string> requiredColumns = {"value", "name", "speed_mps", "fov_m", "passable"};
+// A legend (a raster's class names and colours) is not a class table: said with where a table comes from.
+const std::string legendOnlyAdvice =
+    ". A class table gives each class its speed_mps, fov_m and passable, which a legend of names does not: "
+    "start from a preset's table (--preset NAME, or the Preset list) or the one the raster opens with, and "
+    "edit it (Save CSV... in the window)";
 
 bool parseDouble(const std::string& text, double& value) {
     const std::string clean = trimmed(text);
@@ -100,6 +105,11 @@ Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string
     std::vector<std::string> header;
     int valueColumn = -1, nameColumn = -1, speedColumn = -1, fovColumn = -1, passableColumn = -1,
         colorColumn = -1, detectionColumn = -1;
+    // A file without speeds is a legend, not a table: its errors say so.
+    const bool givesSpeeds = std::any_of(fields.begin(), fields.end(), [](const std::string& field) {
+        return internal::lowercase(trimmed(field)) == "speed_mps";
+    });
+    const std::string advice = givesSpeeds ? std::string() : legendOnlyAdvice;
     for (std::size_t i = 0; i < fields.size(); ++i) {
         const std::string column = internal::lowercase(trimmed(fields[i]));
         header.push_back(column);
@@ -121,7 +131,8 @@ Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string
         if (slot == nullptr) {
             return failure(1, "column " + std::to_string(i + 1) + ": unknown column \"" + trimmed(fields[i]) +
                                   "\" (expected value,name,speed_mps,fov_m,passable and optionally color, "
-                                  "detection_probability)");
+                                  "detection_probability)" +
+                                  advice);
         }
         if (*slot >= 0)
             return failure(1, "column " + std::to_string(i + 1) + ": \"" + column + "\" appears twice");
@@ -129,7 +140,7 @@ Result<ClassTable> parseClassTableCsv(const std::string& text, const std::string
     }
     for (const std::string& required : requiredColumns) {
         if (std::find(header.begin(), header.end(), required) == header.end()) {
-            return failure(1, "missing column \"" + required + "\"");
+            return failure(1, "missing column \"" + required + "\"" + advice);
         }
     }
 

@@ -386,6 +386,10 @@ class ClassTablesTest : public QObject {
             {"value,name,speed_mps,fov_m,passable\n1,\"a,1,10,true\n", {"line 2", "quote"}},
             {"value,name,speed_mps,fov_m,passable\n1,a,1,0,true\n", {"line 2", "fov_m"}},
             {"", {"line 1", "header"}},
+            // A legend is not a class table: said with where one comes from.
+            {"value,name\n1,forest\n", {"line 1", "speed_mps", "a legend of names does not", "--preset"}},
+            {"GRID_CODE,CLC_CODE,LABEL3\n1,111,Continuous urban fabric\n",
+             {"line 1", "GRID_CODE", "a legend of names does not"}},
         };
         for (const auto& [text, fragments] : cases) {
             writeText(path, text);
@@ -397,6 +401,8 @@ class ClassTablesTest : public QObject {
             for (const std::string& fragment : fragments)
                 QVERIFY2(error.find(fragment) != std::string::npos, error.c_str());
         }
+        writeText(path, "value,name,speed_mps,fov_m\n1,a,1,10\n"); // a table short of one column
+        QVERIFY(loadClassTableCsv(path).error().find("legend") == std::string::npos);
         QVERIFY(!loadClassTableCsv(folder.filePath("missing.csv").toStdString()).ok());
     }
 };
