@@ -1059,6 +1059,10 @@ bool MainWindow::loadClassTable(const QString& path) {
         document_, document_->classes(), QString::fromStdString(document_->mission().preset), loaded,
         QString(), tr("Load class table %1").arg(QFileInfo(path).fileName())));
     classTableBanner_->clearExplanation();
+    // Said, so that an earlier file's error does not stay in the status bar as if about this one.
+    showStatus(tr("Loaded the class table %1 (%2 classes).")
+                   .arg(QDir::toNativeSeparators(path))
+                   .arg(static_cast<qulonglong>(loaded.size())));
     return true;
 }
 

@@ -1644,11 +1644,19 @@ class TestMainWindow : public QObject {
         window.setOpenSampleOnFirstStart(false);
         QVERIFY(window.openRaster(dataPath("landcover/nlcd.tif")));
         QCOMPARE(window.presetCombo()->currentData().toString(), QStringLiteral("nlcd-simplified"));
+        const QString legend = directory.filePath("legend.csv");
+        QVERIFY(writeFile(legend, "value,name\n1,Water\n"));
+        QVERIFY(!window.loadClassTable(legend));
+        QVERIFY2(window.lastStatusMessage().contains(QStringLiteral("a legend of names does not")),
+                 qPrintable(window.lastStatusMessage()));
         const QString csv = directory.filePath("own.csv");
         QVERIFY(writeFile(csv, "value,name,speed_mps,fov_m,passable\n1,Water,0,10,false\n2,Town,0,10,false\n"
                                "3,Rock,2,20,true\n4,Wood,0.4,5,true\n5,Scrub,1,10,true\n6,Meadow,2,20,true\n"
                                "7,Fields,1,10,true\n8,Marsh,0.2,5,true\n"));
         QVERIFY2(window.loadClassTable(csv), qPrintable(window.lastError()));
+        // The legend's error gives way to what was loaded.
+        QCOMPARE(window.lastStatusMessage(),
+                 QStringLiteral("Loaded the class table %1 (8 classes).").arg(QDir::toNativeSeparators(csv)));
         QVERIFY(window.presetCombo()->currentText().startsWith(QStringLiteral("Own table")));
         window.undoStack()->undo();
         QCOMPARE(window.presetCombo()->currentData().toString(), QStringLiteral("nlcd-simplified"));
