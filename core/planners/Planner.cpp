@@ -188,10 +188,9 @@ std::string beyondRasterMessage(const WaypointsBeyondRaster& beyond) {
            (one ? " passes " : " pass ") + "beyond the raster's edge at " + std::to_string(beyond.waypoints) +
            (beyond.waypoints == 1 ? " sub-cell centre" : " sub-cell centres") + ", up to " +
            formatDistance(beyond.farthestMetres) +
-           " past it, over ground the map says nothing of: cells the edge cuts through are covered whole "
-           "where "
-           "the part beyond, counted as obstacle, is within the blocked threshold. A lower blocked threshold "
-           "leaves those cells out, and the land inside them uncovered";
+           " past it, over ground the map says nothing of: cells the edge cuts through are covered"
+           " whole where the part beyond, counted as obstacle, is within the blocked threshold. A lower"
+           " blocked threshold leaves those cells out, and the land inside them uncovered";
 }
 
 // "Balanced pieces": the label of the planner's switch that evens its pieces out.
