@@ -11,17 +11,11 @@ bool planned(const ComparisonRow& row) {
     return row.outcome == ComparisonRow::Outcome::Planned;
 }
 
-// Reading groups: the whole job done, less of it done, failed, skipped.
-int groupOf(const ComparisonRow& row, double most) {
-    switch (row.outcome) {
-    case ComparisonRow::Outcome::Planned:
-        return coversLessThanMost(row, most) ? 1 : 0;
-    case ComparisonRow::Outcome::Failed:
-        return 2;
-    case ComparisonRow::Outcome::Skipped:
-        break;
-    }
-    return 3;
+// Whether some plan covering the most keeps the robots' own speeds.
+bool someKeepOwnSpeeds(const std::vector<ComparisonRow>& rows, double most) {
+    return std::any_of(rows.begin(), rows.end(), [most](const ComparisonRow& row) {
+        return planned(row) && !row.metrics.ownSpeedsIgnored && !coversLessThanMost(row, most);
+    });
 }
 
 } // namespace
@@ -44,17 +38,35 @@ bool coversLessThanMost(const ComparisonRow& row, double most) {
     return planned(row) && row.metrics.coveredFraction < most - coverageShortfall;
 }
 
+bool timedUnlikeTheOthers(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
+    return planned(row) && row.metrics.ownSpeedsIgnored && someKeepOwnSpeeds(rows, mostCovered(rows));
+}
+
+int readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
+    switch (row.outcome) {
+    case ComparisonRow::Outcome::Planned:
+        if (coversLessThanMost(row, mostCovered(rows)))
+            return 2;
+        return timedUnlikeTheOthers(row, rows) ? 1 : 0;
+    case ComparisonRow::Outcome::Failed:
+        return 3;
+    case ComparisonRow::Outcome::Skipped:
+        break;
+    }
+    return 4;
+}
+
 std::vector<std::size_t> rankedRows(const std::vector<ComparisonRow>& rows) {
-    const double most = mostCovered(rows);
+    std::vector<int> groups;
+    for (const ComparisonRow& row : rows)
+        groups.push_back(readingGroup(row, rows));
     std::vector<std::size_t> order(rows.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
         const ComparisonRow& first = rows[a];
         const ComparisonRow& second = rows[b];
-        const int firstGroup = groupOf(first, most);
-        const int secondGroup = groupOf(second, most);
-        if (firstGroup != secondGroup)
-            return firstGroup < secondGroup;
+        if (groups[a] != groups[b])
+            return groups[a] < groups[b];
         if (!planned(first))
             return false;
         if (doneAfterSeconds(first) != doneAfterSeconds(second))
@@ -79,11 +91,10 @@ std::vector<double> timesTheFirst(const std::vector<ComparisonRow>& rows) {
     if (order.empty() || !planned(rows[order.front()]))
         return times;
     const double first = doneAfterSeconds(rows[order.front()]);
-    const double most = mostCovered(rows);
     if (first <= 0.0)
         return times;
     for (std::size_t index = 0; index < rows.size(); ++index)
-        if (planned(rows[index]) && !coversLessThanMost(rows[index], most))
+        if (readingGroup(rows[index], rows) == 0)
             times[index] = doneAfterSeconds(rows[index]) / first;
     return times;
 }

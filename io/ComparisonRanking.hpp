@@ -22,16 +22,24 @@ inline constexpr double coverageShortfall = 0.005;
 // Whether a planned row covers less than the most covered by more than coverageShortfall.
 [[nodiscard]] bool coversLessThanMost(const ComparisonRow& row, double most);
 
-// The rows' indices in reading order: planned rows covering the most by time done (ties by planning time,
-// then as given), then planned rows covering less by time done, then failed, then skipped rows as given.
+// Whether a planned row times its robots at the class table's speeds where another plan covering the most
+// keeps their own (PlanMetrics::ownSpeedsIgnored): its times are not to be set beside that plan's.
+[[nodiscard]] bool timedUnlikeTheOthers(const ComparisonRow& row, const std::vector<ComparisonRow>& rows);
+
+// Where a row is read: 0 planned, covering the most and timed like the others; 1 timed unlike them; 2
+// covering less than the most; 3 failed; 4 skipped.
+[[nodiscard]] int readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows);
+
+// The rows' indices in reading order: by reading group, planned rows in a group by time done (ties by
+// planning time, then as given), failed and skipped rows as given.
 [[nodiscard]] std::vector<std::size_t> rankedRows(const std::vector<ComparisonRow>& rows);
 
 // Each row's place in that order, from 1; 0 for a row that did not plan.
 [[nodiscard]] std::vector<int> ranksOf(const std::vector<ComparisonRow>& rows);
 
 // Each row's time done divided by the first-ranked plan's: the one figure that compares plans, where each
-// ratio is to the plan's own bound (its own cells and turns). 0 where the row did not plan or covers less
-// than the most (smaller, not slower), or the first is done at once.
+// ratio is to the plan's own bound (its own cells and turns). 0 outside reading group 0 (a plan covering
+// less is smaller, not slower; one timed unlike the others is not timed alike), or the first done at once.
 [[nodiscard]] std::vector<double> timesTheFirst(const std::vector<ComparisonRow>& rows);
 
 } // namespace mcpp::io

@@ -495,6 +495,10 @@ Plan readPlan(CompressedReader& in, int formatVersion) {
         if (robot.robot < 0 || static_cast<std::size_t>(robot.robot) >= plan.paths.size())
             throw CompressedReader::DamagedData("figures of no robot");
     plan.issues = getIssues(in);
+    // Not saved as a figure: the warning that says it is.
+    plan.metrics.ownSpeedsIgnored =
+        std::any_of(plan.issues.begin(), plan.issues.end(),
+                    [](const PlanIssue& issue) { return issue.code == "own-speeds-ignored"; });
     if (in.get<std::uint32_t>() != endMarker || !in.atEnd())
         throw CompressedReader::DamagedData("unexpected bytes at the end");
     return plan;

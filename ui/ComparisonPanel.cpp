@@ -28,7 +28,7 @@ namespace {
 // sheet below carry the rest.
 enum Column { Name, Covered, Makespan, Home, AgainstFirst, Turns, Ratio, Planning, Outcome, Columns };
 
-constexpr int coversLessRole = Qt::UserRole + 1;
+constexpr int readingGroupRole = Qt::UserRole + 1;
 constexpr int numberRole = Qt::UserRole + 2;
 
 // A figure shown with all its decimals (1.00 beside 1.02, not 1), sorted by its value.
@@ -39,15 +39,15 @@ class NumberItem : public QTableWidgetItem {
     }
 };
 
-// A time that sorts plans covering less than the most (io::coversLessThanMost) after the others (ascending; a
-// descending sort turns the whole order round): the soonest done among those that do the whole job comes
-// first.
+// A time sorted first by its plan's reading group (io::readingGroup: plans timed unlike the others, then
+// those covering less than the most, after the others; a descending sort turns the whole order round): the
+// soonest done among those that do the whole job comes first, as batch mode's summary lists them.
 class TimeItem : public NumberItem {
   public:
     bool operator<(const QTableWidgetItem& other) const override {
-        const bool coversLess = data(coversLessRole).toBool();
-        if (coversLess != other.data(coversLessRole).toBool())
-            return !coversLess;
+        const int group = data(readingGroupRole).toInt();
+        if (group != other.data(readingGroupRole).toInt())
+            return group < other.data(readingGroupRole).toInt();
         return NumberItem::operator<(other);
     }
 };
@@ -60,9 +60,9 @@ template <typename Item = NumberItem> QTableWidgetItem* numberItem(double value,
     return item;
 }
 
-QTableWidgetItem* timeItem(double seconds, double unitSeconds, bool coversLess) {
+QTableWidgetItem* timeItem(double seconds, double unitSeconds, int readingGroup) {
     QTableWidgetItem* item = numberItem<TimeItem>(seconds / unitSeconds, 2);
-    item->setData(coversLessRole, coversLess);
+    item->setData(readingGroupRole, readingGroup);
     return item;
 }
 
@@ -110,7 +110,9 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
             "turnarounds between them included, in hours (in days where the makespan header says Days)")},
         {tr("x 1st"),
          tr("Time done divided by the first plan's (in bold): how much longer the team waits with this one; "
-            "none for a plan covering less than the most")},
+            "none for a plan covering less than the most, or one timing its robots at the class table's "
+            "speeds "
+            "where the others keep their own (sorted after them)")},
         {tr("Turns"), tr("Turns of all robots together")},
         {tr("Ratio"),
          tr("Makespan divided by the plan's own lower bound, which counts its own cells and turns: near "
@@ -207,7 +209,6 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         inDays ? tr("Makespan: the time of the slowest robot, in days")
                : tr("Makespan: the time of the slowest robot, in hours"));
     table_->horizontalHeaderItem(Home)->setText(inDays ? tr("Home d") : tr("Home h"));
-    const double most = io::mostCovered(outcome.rows);
     const std::vector<int> ranks = io::ranksOf(outcome.rows);
     const std::vector<double> againstFirst = io::timesTheFirst(outcome.rows);
     for (std::size_t i = 0; i < outcome.rows.size(); ++i) {
@@ -243,7 +244,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         if (row.outcome != io::ComparisonRow::Outcome::Planned)
             continue;
         const PlanMetrics& metrics = row.metrics;
-        const bool coversLess = io::coversLessThanMost(row, most);
+        const int group = io::readingGroup(row, outcome.rows);
         table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
         QTableWidgetItem* ratio = numberItem(metrics.ratio, 3);
         if (metrics.boundOfDetectionPasses) {
@@ -255,9 +256,9 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
                    "even plan and is not to be set beside theirs"));
         }
         table_->setItem(r, Ratio, ratio);
-        table_->setItem(r, Makespan, timeItem(metrics.makespanSeconds, unitSeconds, coversLess));
+        table_->setItem(r, Makespan, timeItem(metrics.makespanSeconds, unitSeconds, group));
         if (metrics.timedInTheField()) {
-            table_->setItem(r, Home, timeItem(metrics.fieldMakespanSeconds, unitSeconds, coversLess));
+            table_->setItem(r, Home, timeItem(metrics.fieldMakespanSeconds, unitSeconds, group));
             inTheField = true;
         }
         if (againstFirst[i] > 0.0)

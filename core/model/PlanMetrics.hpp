@@ -52,6 +52,9 @@ struct PlanMetrics {
     // the best sensor's reach. Sound, but far looser than other plans' bounds: its ratio reads high for an
     // even plan and is not to be set beside theirs.
     bool boundOfDetectionPasses = false;
+    // Where the mission gives robots speeds of their own, the planner timed them at the class table's
+    // (own-speeds-ignored): its times are not to be set beside a plan's that keeps them.
+    bool ownSpeedsIgnored = false;
     // Where the problem measures time in the field (PlanningProblem::fieldSeconds), when the last robot is
     // done there; and where some robot's path is split into flights (PlanningProblem::robotFlights), the
     // least any plan making these turns could take there: the work the path bound counts, shared out in full

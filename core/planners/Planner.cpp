@@ -109,6 +109,7 @@ void applyOwnSpeeds(const PlannerDescription& planner, const PlanningProblem& pr
         // The mission's note that each robot is timed at its own speed does not hold for this plan.
         std::erase_if(plan.issues,
                       [](const PlanIssue& issue) { return issue.code == "cruise-speeds-differ"; });
+        plan.metrics.ownSpeedsIgnored = true;
         run.addIssue(IssueSeverity::Warning, "own-speeds-ignored",
                      planner.label + " times every robot at the class table's speeds: the robots' own speeds "
                                      "are left out of its plan");

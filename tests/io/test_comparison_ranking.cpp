@@ -46,6 +46,7 @@ class TestComparisonRanking : public QObject {
     void timeInTheFieldDecidesWhereFlightsSplitMissions();
     void ranksSkipRowsThatDidNotPlan();
     void eachPlanIsTimedAgainstTheFirst();
+    void plansAtTheClassTablesSpeedsComeAfterThoseKeepingOwnSpeeds();
 };
 
 // A battery planner that covers a quarter of the land in less time than the others is last of the planned,
@@ -113,6 +114,35 @@ void TestComparisonRanking::eachPlanIsTimedAgainstTheFirst() {
     QCOMPARE(io::timesTheFirst({unplannedRow("cppied", ComparisonRow::Outcome::Failed)}),
              std::vector<double>{0.0});
     QCOMPARE(io::timesTheFirst({}), std::vector<double>{});
+}
+
+// A plan timing the robots at the class table's speeds, beside plans keeping their own (a drone's cruise
+// speed), is not quicker for reading quicker: it comes after them, untimed against the first. Among plans
+// that all ignore own speeds, time decides again.
+void TestComparisonRanking::plansAtTheClassTablesSpeedsComeAfterThoseKeepingOwnSpeeds() {
+    ComparisonRow classSpeeds = plannedRow("mdstc", 0.999, 100.0);
+    classSpeeds.metrics.ownSpeedsIgnored = true;
+    ComparisonRow ownSpeeds = plannedRow("mcpp-mlct", 0.999, 140.0);
+    ownSpeeds.metrics.fieldMakespanSeconds = 120.0;
+    ownSpeeds.metrics.fieldLowerBoundSeconds = 110.0;
+    const ComparisonRow slower = plannedRow("darp", 0.999, 150.0);
+    const ComparisonRow smaller = plannedRow("wavefront-battery", 0.5, 50.0);
+    const std::vector<ComparisonRow> rows{classSpeeds, ownSpeeds, slower, smaller};
+    QVERIFY(io::timedUnlikeTheOthers(rows[0], rows));
+    QVERIFY(!io::timedUnlikeTheOthers(rows[1], rows));
+    QCOMPARE(io::readingGroup(rows[0], rows), 1);
+    QCOMPARE(io::readingGroup(rows[3], rows), 2);
+    QCOMPARE(namesInOrder(rows),
+             (std::vector<std::string>{"mcpp-mlct", "darp", "mdstc", "wavefront-battery"}));
+    QCOMPARE(io::ranksOf(rows), (std::vector<int>{3, 1, 2, 4}));
+    QCOMPARE(io::timesTheFirst(rows), (std::vector<double>{0.0, 1.0, 1.25, 0.0}));
+    // Only plans covering the most count as the others: beside a plan covering less it is timed as usual.
+    ComparisonRow lessOwnSpeeds = smaller;
+    const std::vector<ComparisonRow> besideSmaller{classSpeeds, lessOwnSpeeds};
+    QVERIFY(!io::timedUnlikeTheOthers(besideSmaller[0], besideSmaller));
+    ComparisonRow alsoClassSpeeds = plannedRow("mstc", 0.999, 90.0);
+    alsoClassSpeeds.metrics.ownSpeedsIgnored = true;
+    QCOMPARE(namesInOrder({classSpeeds, alsoClassSpeeds}), (std::vector<std::string>{"mstc", "mdstc"}));
 }
 
 QTEST_APPLESS_MAIN(TestComparisonRanking)

@@ -123,6 +123,27 @@ class ComparisonPanelTest : public QObject {
         QCOMPARE(table->horizontalHeader()->sortIndicatorSection(), homeColumn);
     }
 
+    // A plan timing its robots at the class table's speeds beside one keeping their own reads sooner done
+    // but is not: the table sorts it after, with no time against the first, and the first in bold is the
+    // other, as batch mode's summary lists them.
+    void aPlanAtTheClassTablesSpeedsSortsAfterOnesKeepingOwnSpeeds() {
+        const auto raster = test::grassRaster();
+        const io::Mission mission = test::twoRobotMission();
+        ui::ComparisonPanel panel;
+        const QTableWidget* table = panel.table();
+        io::ComparisonRow classSpeeds = plannedRow("mdstc", 1.00, 3600.0);
+        classSpeeds.metrics.ownSpeedsIgnored = true;
+        const io::ComparisonRow ownSpeeds = plannedRow("darp", 1.05, 7200.0);
+        panel.showOutcome(outcomeOf({classSpeeds, ownSpeeds}), raster->grid, mission.classes);
+        QCOMPARE(table->horizontalHeader()->sortIndicatorSection(), homeColumn - 1); // Hours
+        QCOMPARE(panel.rowOfPlanner("darp"), 0);
+        QCOMPARE(panel.rowOfPlanner("mdstc"), 1);
+        QVERIFY(table->item(0, 0)->font().bold());
+        QVERIFY(!table->item(1, 0)->font().bold());
+        QCOMPARE(table->item(0, againstFirstColumn)->text(), QStringLiteral("1.000"));
+        QCOMPARE(table->item(1, againstFirstColumn), nullptr);
+    }
+
     // A plan that leaves land uncovered is not done sooner, only smaller: the Covered column says so, and
     // by time, soonest first, it comes after those covering the most (a descending sort turns the whole
     // order round). Half a percent less is within the margin; a point less is not.
