@@ -217,9 +217,11 @@ class FieldTimeBoundTest : public QObject {
                              [](const PlanIssue& issue) { return issue.code == "cruise-speeds-differ"; }));
         QCOMPARE(plan.metrics.fieldLowerBoundSeconds, 0.0);
         QCOMPARE(plan.metrics.fieldMakespanSeconds, 0.0);
+        QVERIFY(plan.metrics.ownSpeedsIgnored); // a comparison sets it after plans keeping them
         // Timed at its own speed, as MCPP-MLCT plans it, the same fleet has them.
         problem.planner = defaultPlannerChoice("mcpp-mlct");
         const Plan timed = MlctPlanner{}.plan(problem, {});
+        QVERIFY(!timed.metrics.ownSpeedsIgnored);
         QVERIFY(timed.metrics.fieldLowerBoundSeconds > 0.0);
         QVERIFY(timed.metrics.fieldMakespanSeconds >= timed.metrics.fieldLowerBoundSeconds);
     }

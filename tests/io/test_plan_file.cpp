@@ -128,9 +128,23 @@ class TestPlanFile : public QObject {
         QVERIFY(back.metrics.boundOfDetectionPasses);
         QCOMPARE(back.metrics.stageMilliseconds, plan.metrics.stageMilliseconds);
         QVERIFY(back.issues == plan.issues);
+        QVERIFY(!back.metrics.ownSpeedsIgnored);
         // Saving what was read gives the same bytes: nothing is lost or reordered.
         QVERIFY(io::savePlanFile(back, "inputs-a", file("again.mcpp-plan")).ok());
         QCOMPARE(bytesOf(file("again.mcpp-plan")), bytesOf(path));
+    }
+
+    // A plan that timed robots of their own speeds at the class table's is read back so, from its warning:
+    // compared again, it is not set beside plans keeping their speeds.
+    void ownSpeedsIgnoredComesBackFromTheWarning() {
+        Plan plan = plannedMap();
+        plan.metrics.ownSpeedsIgnored = true;
+        plan.issues.push_back({IssueSeverity::Warning, "own-speeds-ignored", "timed at the class speeds"});
+        const std::string path = file("class-speeds.mcpp-plan");
+        QVERIFY(io::savePlanFile(plan, "inputs-a", path).ok());
+        auto loaded = io::loadPlanFile(path, "inputs-a");
+        QVERIFY(loaded.ok() && loaded.value().has_value());
+        QVERIFY(loaded.value()->metrics.ownSpeedsIgnored);
     }
 
     // A robot of its own speed turns at its price in a plan read back, as when it was planned: the turn
