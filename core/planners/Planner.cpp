@@ -520,10 +520,13 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
                     [&](std::size_t path, int) { measurePath(plan.paths[path], plan.cells); });
         // Times in the field are the waypoint files' flights at the robots' own speeds: beside paths timed at
         // the class table's (own speeds ignored) they would compare flights with walks, and beside a plan
-        // played through events, full speed with the mission as played. A battery plan's paths hold their
-        // sorties and charges: they are not split into flights again.
+        // played through events, full speed with the mission as played (a simulating planner's plan played
+        // through none is its paths, flown as the others'). A battery plan's paths hold their sorties and
+        // charges: they are not split into flights again.
+        const TimelineLayer* timeline = timelineLayerOf(plan);
+        const bool playedThroughEvents = timeline != nullptr && !timeline->summary().events.empty();
         const bool inTheField = problem.fieldSeconds && sortieLayerOf(plan) == nullptr &&
-                                timelineLayerOf(plan) == nullptr &&
+                                !playedThroughEvents &&
                                 (!someOwnSpeed(problem.robotSpeeds) || !plan.robotSpeeds.empty());
         PlanMetricsCalculator{inTheField ? problem.robotFlights : std::vector<FlightLimits>{}}.compute(plan);
         if (inTheField)

@@ -226,6 +226,19 @@ class FieldTimeBoundTest : public QObject {
         QVERIFY(timed.metrics.fieldMakespanSeconds >= timed.metrics.fieldLowerBoundSeconds);
     }
 
+    // A planner that plays its robots' missions through (MDSTC) with no events to play has its paths as
+    // the waypoint files fly them: timed in the field as the others, so that a comparison ranks it by when
+    // its last robot is home too.
+    void aSimulatedPlanWithoutEventsIsTimedInTheField() {
+        PlanningProblem problem = fleetProblem({drone, drone});
+        problem.planner = defaultPlannerChoice("mdstc");
+        const Plan plan = makePlanner("mdstc")->plan(problem, {});
+        QVERIFY(plan.metrics.fieldLowerBoundSeconds > 0.0);
+        QVERIFY(plan.metrics.fieldMakespanSeconds >= plan.metrics.fieldLowerBoundSeconds);
+        QVERIFY(plan.metrics.fieldMakespanSeconds >
+                plan.metrics.makespanSeconds); // turnarounds between flights
+    }
+
     // Without flights there is no time in the field to speak of.
     void robotsWithoutFlightsHaveNoFieldFigures() {
         PlanningProblem problem = fleetProblem({FlightLimits{}, FlightLimits{}});
