@@ -67,12 +67,17 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     table_->horizontalHeaderItem(5)->setToolTip(
         tr("Time on the ground between two parts: a battery swap, the next part uploaded. The report adds it "
            "to the flights to say when each robot is done. 0: not counted."));
-    QStringList names{tr("All robots")};
+    // The mission's defaults, which robots without values of their own follow: named "All robots", the row
+    // read as the robots' values where each had its own (two drones beside a rover default).
+    QStringList names{tr("Default")};
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         const std::string& name = mission.robots[robot].name;
         names << (name.empty() ? tr("Robot %1").arg(robot + 1) : QString::fromStdString(name));
     }
     table_->setVerticalHeaderLabels(names);
+    table_->verticalHeaderItem(0)->setToolTip(
+        tr("What a robot without a value of its own takes; a robot showing the same value follows it when it "
+           "changes"));
     const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(mission);
     rows_.push_back(addRow(0, names[0], mission.exports.vehicle));
     for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
@@ -162,7 +167,7 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     widgets.turnaround->setRange(0.0, io::maximumTurnaroundSeconds / 60.0);
     widgets.turnaround->setDecimals(3);
     show(widgets, settings);
-    // The "All robots" row's altitude stays open: robots that are aircraft of their own inherit it.
+    // The Default row's altitude stays open: robots that are aircraft of their own inherit it.
     if (row > 0) {
         followVehicleType(widgets.type, widgets.altitude);
         connect(widgets.type, &QComboBox::currentIndexChanged, widgets.altitude,
@@ -218,7 +223,7 @@ void VehicleSettingsDialog::show(Row& row, const io::VehicleSettings& settings) 
 }
 
 void VehicleSettingsDialog::followDefaults() {
-    // Robots that had the old "all robots" value take the new one; those with their own keep it.
+    // Robots that had the old default take the new one; those with their own keep it.
     const io::VehicleSettings defaults = settingsOf(rows_.front());
     for (std::size_t i = 1; i < rows_.size(); ++i) {
         io::VehicleSettings robot = settingsOf(rows_[i]);
@@ -243,13 +248,13 @@ namespace {
 
 // A row of the table with what is wrong in it ("5", "0.5 min", a sentence).
 struct RowProblem {
-    std::size_t row; // 0: All robots
+    std::size_t row; // 0: Default
     QString name;
     QString detail;
 };
 
-// The rows named with their problems, a robot's left out where it is what the All robots row has:
-// "All robots: 5, Robot 3: 6", not the same value once a row.
+// The rows named with their problems, a robot's left out where it is what the Default row has:
+// "Default: 5, Robot 3: 6", not the same value once a row.
 QStringList namedOnce(const std::vector<RowProblem>& rows) {
     const auto fleet =
         std::find_if(rows.begin(), rows.end(), [](const RowProblem& row) { return row.row == 0; });

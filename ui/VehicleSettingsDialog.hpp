@@ -15,8 +15,8 @@ class QTableWidget;
 
 namespace mcpp::ui {
 
-// The robots' autopilots: vehicle type, altitude, cruise speed and item limit for all robots and for each
-// one, and the speed tolerance of waypoint files. A robot whose value equals the "all robots" row follows
+// The robots' autopilots: vehicle type, altitude, cruise speed and item limit as defaults and for each
+// one, and the speed tolerance of waypoint files. A robot whose value equals the Default row follows
 // that row when it changes.
 class VehicleSettingsDialog : public QDialog {
     Q_OBJECT
@@ -25,7 +25,7 @@ class VehicleSettingsDialog : public QDialog {
     VehicleSettingsDialog(const io::Mission& mission, QWidget* parent = nullptr);
 
     [[nodiscard]] io::ExportSettings exports() const;
-    // Each robot's own values: only those that differ from the "all robots" row.
+    // Each robot's own values: only those that differ from the Default row.
     [[nodiscard]] std::vector<io::VehicleOverrides> vehicles() const;
 
   private:
@@ -59,7 +59,7 @@ class VehicleSettingsDialog : public QDialog {
     QLabel* caution_ = nullptr; // altitudes allowed but most likely not meant
     QPushButton* okButton_ = nullptr;
     double shownTolerance_ = 0.0;
-    std::vector<Row> rows_; // the "all robots" row first
+    std::vector<Row> rows_; // the Default row first
     io::VehicleSettings shownDefaults_;
 };
 

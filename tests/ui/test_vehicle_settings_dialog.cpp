@@ -1,4 +1,4 @@
-// The robot vehicles dialog: what it shows, robots following the "all robots" row, what it hands back.
+// The robot vehicles dialog: what it shows, robots following the Default row, what it hands back.
 
 #include "ui/VehicleSettingsDialog.hpp"
 
@@ -43,7 +43,7 @@ class VehicleSettingsDialogTest : public QObject {
         auto* table = dialog.findChild<QTableWidget*>();
         QVERIFY(table != nullptr);
         QCOMPARE(table->rowCount(), 4);
-        QCOMPARE(table->verticalHeaderItem(0)->text(), QStringLiteral("All robots"));
+        QCOMPARE(table->verticalHeaderItem(0)->text(), QStringLiteral("Default"));
         QCOMPARE(table->verticalHeaderItem(2)->text(), QStringLiteral("beta"));
         QCOMPARE(table->verticalHeaderItem(3)->text(), QStringLiteral("Robot 3"));
         QCOMPARE(cell<QDoubleSpinBox>(table, 1, 1)->value(), 30.0);
@@ -66,7 +66,7 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(dialog.exports() == threeRobots().exports);
     }
 
-    void robotsFollowTheAllRobotsRowUnlessTheyHaveTheirOwn() {
+    void robotsFollowTheDefaultRowUnlessTheyHaveTheirOwn() {
         ui::VehicleSettingsDialog dialog(threeRobots());
         auto* table = dialog.findChild<QTableWidget*>();
         cell<QDoubleSpinBox>(table, 0, 1)->setValue(40.0);
@@ -106,7 +106,7 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(!vehicles[2].altitudeMetres);
     }
 
-    // A limit every robot takes from the All robots row is named once, beside a robot's own.
+    // A limit every robot takes from the Default row is named once, beside a robot's own.
     void aProblemTheRobotsShareIsNamedOnce() {
         ui::VehicleSettingsDialog dialog(threeRobots());
         auto* table = dialog.findChild<QTableWidget*>();
@@ -116,7 +116,7 @@ class VehicleSettingsDialogTest : public QObject {
         for (QLabel* label : dialog.findChildren<QLabel*>())
             if (label->text().contains(QStringLiteral("Too small")))
                 text = label->text();
-        QVERIFY2(text.contains(QStringLiteral("Too small: All robots: 5, Robot 3: 6.")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Too small: Default: 5, Robot 3: 6.")), qPrintable(text));
         QVERIFY2(!text.contains(QStringLiteral("alpha")), qPrintable(text));
     }
 
