@@ -623,10 +623,7 @@ void BatchRunner::warnIfLarge() {
 }
 
 void BatchRunner::setFieldsOfView(double metres) {
-    std::vector<LandCoverClass> classes = classes_.classes();
-    for (LandCoverClass& landCover : classes)
-        landCover.fieldOfViewMetres = metres;
-    classes_ = ClassTable(std::move(classes));
+    classes_.setEveryFieldOfView(metres);
     note("every class's field of view set to " + formatQuantity(metres) + " m (--fov)");
 }
 

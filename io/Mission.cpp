@@ -228,13 +228,19 @@ bool readClasses(MissionReader& reader, const QJsonValue& value, Mission& missio
     QJsonObject object;
     if (!reader.object(value, path, object))
         return false;
-    if (!reader.onlyKeys(object, path, {"preset", "missing_as_obstacles", "table"}))
+    if (!reader.onlyKeys(object, path, {"preset", "missing_as_obstacles", "fov_m", "table"}))
         return false;
     if (!reader.optional(object, path, "preset", mission.preset, &MissionReader::string) ||
         !reader.optional(object, path, "missing_as_obstacles", mission.missingClassesAsObstacles,
-                         &MissionReader::boolean)) {
+                         &MissionReader::boolean) ||
+        !reader.optional(object, path, "fov_m", mission.fieldOfViewMetres, &MissionReader::number)) {
         return false;
     }
+    if (mission.fieldOfViewMetres &&
+        !(*mission.fieldOfViewMetres > 0.0 && *mission.fieldOfViewMetres <= kMaximumFieldOfViewMetres))
+        return reader.fail("classes.fov_m", "must be a field of view of more than 0 m, up to " +
+                                                formatQuantity(kMaximumFieldOfViewMetres) + " m, not " +
+                                                internal::formatShortest(*mission.fieldOfViewMetres));
     if (!mission.preset.empty()) {
         if (auto preset = presetClassTable(mission.preset); !preset)
             return reader.fail("classes.preset", preset.error());
@@ -677,6 +683,8 @@ std::string missionToJson(const Mission& mission) {
     JsonValue& classes = root.add("classes", JsonValue::object());
     classes.add("preset", mission.preset);
     classes.add("missing_as_obstacles", mission.missingClassesAsObstacles);
+    if (mission.fieldOfViewMetres)
+        classes.add("fov_m", *mission.fieldOfViewMetres);
     internal::addClassRows(classes.add("table", JsonValue::array()), mission.classes,
                            mission.classesWithoutColour);
 
@@ -904,7 +912,9 @@ std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<Ve
             return "aircraft see as far as the class table's fields of view, which are preset " +
                    preset.name + "'s, a ground robot's (the smallest " + formatQuantity(smallest, 4) +
                    " m, so passes as close as that): scale them to the camera's footprint on the ground "
-                   "(--fov for one footprint over every class, --fov-scale, or in the window select the "
+                   "(--fov or a mission's classes.fov_m for one footprint over every class, --fov-scale, or "
+                   "in "
+                   "the window select the "
                    "classes, "
                    "Edit selected…, Scale FOVs)";
     }

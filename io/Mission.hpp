@@ -66,6 +66,9 @@ struct Mission {
     // (missionClassTable).
     std::set<std::int32_t> classesWithoutColour;
     bool missingClassesAsObstacles = false;
+    // classes.fov_m: one field of view over every passable class, as --fov gives it (a drone camera's
+    // footprint on the ground beside a ground robot's preset); applied by missionClasses.
+    std::optional<double> fieldOfViewMetres;
     std::vector<RobotSpec> robots;
     std::vector<SpeedEvent> events; // robots slowing down or stopping, for planners that simulate them
     PlannerChoice planner = defaultPlannerChoice(); // every parameter of the planner, defaults filled in

@@ -160,6 +160,8 @@ Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& ra
     }
     ClassTable table =
         missionClassTable(mission.classes, mission.preset, raster, mission.classesWithoutColour);
+    if (mission.fieldOfViewMetres)
+        table.setEveryFieldOfView(*mission.fieldOfViewMetres);
     if (const auto problem = table.validate())
         return Result<ClassTable>::failure(where + ": " + *problem);
     return table;

@@ -54,7 +54,7 @@ using FieldNamer = std::function<std::string(const MissionField&)>;
                                       const std::string& missionPath);
 
 // The class table the mission plans with: its own rows and, for the values they lack, its preset's rows
-// for this raster (docs/mission-format.md); checked.
+// for this raster (docs/mission-format.md), every field of view classes.fov_m where it is given; checked.
 [[nodiscard]] Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& raster,
                                                 const FieldNamer& names);
 

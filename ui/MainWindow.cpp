@@ -1363,6 +1363,7 @@ bool MainWindow::openMission(const QString& path) {
     }
     mission.classes = std::move(classes.value());
     mission.classesWithoutColour.clear(); // coloured now, from the preset or the raster
+    mission.fieldOfViewMetres.reset();    // in the rows now, where an edit to one class's is kept
     // The window holds the area files by absolute path; saving writes them relative again.
     mission.area.includePath = io::resolveMissionPath(mission.area.includePath, missionPath);
     mission.area.excludePath = io::resolveMissionPath(mission.area.excludePath, missionPath);

@@ -24,6 +24,11 @@ void ClassTable::set(const LandCoverClass& landCoverClass) {
     }
 }
 
+void ClassTable::setEveryFieldOfView(double metres) {
+    for (LandCoverClass& landCover : classes_)
+        landCover.fieldOfViewMetres = metres;
+}
+
 bool ClassTable::remove(std::int32_t value) {
     const auto before = classes_.size();
     std::erase_if(classes_, [value](const LandCoverClass& c) { return c.value == value; });

@@ -17,6 +17,8 @@ class ClassTable {
     // Adds a class or replaces the one with the same value.
     void set(const LandCoverClass& landCoverClass);
     bool remove(std::int32_t value);
+    // One field of view over every class, as a camera's footprint is over any land cover.
+    void setEveryFieldOfView(double metres);
 
     [[nodiscard]] const LandCoverClass* find(std::int32_t value) const;
     [[nodiscard]] const std::vector<LandCoverClass>& classes() const { return classes_; }

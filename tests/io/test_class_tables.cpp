@@ -264,6 +264,26 @@ class ClassTablesTest : public QObject {
         QCOMPARE(noColumn, (ClassesWithoutColour{4}));
     }
 
+    // A mission's classes.fov_m is one footprint over every class, the mission's own rows included, as
+    // --fov gives it: a drone's camera over a ground robot's preset.
+    void aMissionsFieldOfViewIsEveryClasss() {
+        const LoadedRaster nlcd = load("landcover/nlcd.tif");
+        Mission mission;
+        mission.preset = "nlcd-simplified";
+        mission.classes.set(LandCoverClass{4, "Forest", 0x225522, 0.5, 5.0, true});
+        const auto names = [](const MissionField&) { return std::string("classes"); };
+        const auto asPreset = missionClasses(mission, nlcd, names);
+        QVERIFY(asPreset.ok());
+        QCOMPARE(asPreset.value().find(4)->fieldOfViewMetres, 5.0);
+        mission.fieldOfViewMetres = 60.0;
+        const auto footprint = missionClasses(mission, nlcd, names);
+        QVERIFY(footprint.ok());
+        QCOMPARE(footprint.value().size(), asPreset.value().size());
+        for (const LandCoverClass& landCover : footprint.value().classes())
+            QCOMPARE(landCover.fieldOfViewMetres, 60.0);
+        QCOMPARE(footprint.value().find(4)->speedMetresPerSecond, 0.5); // the rest of the row as given
+    }
+
     // A preset of another product is refused; one that lacks some classes is planned with a warning that
     // names them and their share; the mission's own rows fill gaps.
     void presetOfAnotherProductIsCaught() {

@@ -242,6 +242,33 @@ class MissionFilesTest : public QObject {
         QVERIFY(warned(camera).empty());
     }
 
+    // classes.fov_m is written only when set, read back as written, and a footprint of no size is refused
+    // by its key.
+    void aFootprintOverEveryClassIsKeptInTheFile() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("drones.json").toStdString();
+        Mission mission = sampleMission();
+        QVERIFY(saveMission(mission, path).ok());
+        QVERIFY(readBytes(path).find("\"fov_m\": 60") == std::string::npos);
+        mission.fieldOfViewMetres = 60.0;
+        QVERIFY(saveMission(mission, path).ok());
+        auto loaded = loadMission(path);
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        QCOMPARE(loaded.value().fieldOfViewMetres, std::optional<double>(60.0));
+        QVERIFY(loaded.value() == mission);
+        const std::string bad = folder.filePath("bad.json").toStdString();
+        std::string text = readBytes(path);
+        const std::size_t at = text.find("\"fov_m\": 60");
+        QVERIFY(at != std::string::npos);
+        text.replace(at, 11, "\"fov_m\": 0");
+        writeText(bad, text);
+        const auto refused = loadMission(bad);
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().find("classes.fov_m: must be a field of view of more than 0 m") !=
+                     std::string::npos,
+                 refused.error().c_str());
+    }
+
     // A cruise speed the whole fleet shares is what the plan uses over every passable class; speeds that
     // differ leave the class table's and say why.
     void fleetCruiseSpeedIsPlannedWith() {
