@@ -913,10 +913,7 @@ std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<Ve
                    preset.name + "'s, a ground robot's (the smallest " + formatQuantity(smallest, 4) +
                    " m, so passes as close as that): scale them to the camera's footprint on the ground "
                    "(--fov or a mission's classes.fov_m for one footprint over every class, --fov-scale, or "
-                   "in "
-                   "the window select the "
-                   "classes, "
-                   "Edit selected…, Scale FOVs)";
+                   "in the window select the classes, Edit selected…, Scale FOVs)";
     }
     return std::nullopt;
 }

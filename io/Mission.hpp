@@ -66,7 +66,7 @@ struct Mission {
     // (missionClassTable).
     std::set<std::int32_t> classesWithoutColour;
     bool missingClassesAsObstacles = false;
-    // classes.fov_m: one field of view over every passable class, as --fov gives it (a drone camera's
+    // classes.fov_m: one field of view over every class, as --fov gives it (a drone camera's
     // footprint on the ground beside a ground robot's preset); applied by missionClasses.
     std::optional<double> fieldOfViewMetres;
     std::vector<RobotSpec> robots;

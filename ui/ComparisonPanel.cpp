@@ -111,8 +111,7 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
         {tr("x 1st"),
          tr("Time done divided by the first plan's (in bold): how much longer the team waits with this one; "
             "none for a plan covering less than the most, or one timing its robots at the class table's "
-            "speeds "
-            "where the others keep their own (sorted after them)")},
+            "speeds where the others keep their own (sorted after them)")},
         {tr("Turns"), tr("Turns of all robots together")},
         {tr("Ratio"),
          tr("Makespan divided by the plan's own lower bound, which counts its own cells and turns: near "
