@@ -220,7 +220,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
             QFont bold = name->font();
             bold.setBold(true);
             name->setFont(bold);
-            name->setToolTip(tr("Soonest done of the plans covering the most land"));
+            name->setToolTip(tr("Soonest done of the plans covering the most land and timed alike"));
         }
         table_->setItem(r, Name, name);
         auto* state = new QTableWidgetItem(QString::fromStdString(io::outcomeName(row.outcome)));

@@ -67,8 +67,8 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     table_->horizontalHeaderItem(5)->setToolTip(
         tr("Time on the ground between two parts: a battery swap, the next part uploaded. The report adds it "
            "to the flights to say when each robot is done. 0: not counted."));
-    // The mission's defaults, which robots without values of their own follow: named "All robots", the row
-    // read as the robots' values where each had its own (two drones beside a rover default).
+    // The mission's defaults, which robots without values of their own follow. Named "Default", not "All
+    // robots": that read as the robots' values where each has its own (two drones beside a rover default).
     QStringList names{tr("Default")};
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         const std::string& name = mission.robots[robot].name;
