@@ -644,6 +644,8 @@ void BatchRunner::applyVehicleFlags() {
           &io::VehicleOverrides::cruiseSpeedMetresPerSecond);
     apply(options_.flightTimeSeconds, fleet.flightTimeSeconds, &io::VehicleOverrides::flightTimeSeconds);
     apply(options_.turnaroundSeconds, fleet.turnaroundSeconds, &io::VehicleOverrides::turnaroundSeconds);
+    apply(options_.cameraTriggerMetres, fleet.cameraTriggerMetres,
+          &io::VehicleOverrides::cameraTriggerMetres);
 }
 
 void BatchRunner::noteMissionFiles(const io::ExportContext& context, int robot) {

@@ -51,7 +51,7 @@ constexpr std::array flagSpecs{
     FlagSpec{"--altitude", "M", true, false},       FlagSpec{"--cruise-speed", "M/S", true, false},
     FlagSpec{"--fov-scale", "F", true, false},      FlagSpec{"--flight-time", "T", true, false},
     FlagSpec{"--turnaround", "T", true, false},     FlagSpec{"--fov", "M", true, false},
-    FlagSpec{"--outputs", "KEYS", true, false},
+    FlagSpec{"--outputs", "KEYS", true, false},     FlagSpec{"--camera-trigger", "M", true, false},
 };
 
 // --outputs: catalogue keys separated by commas, each once; report.json, which the summary and the
@@ -463,6 +463,11 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             if (auto problem =
                     readDurationFlag(flag, value, "5min", &io::turnaroundProblem, options.turnaroundSeconds))
                 return failure(std::move(*problem));
+        } else if (flag == "--camera-trigger") {
+            options.cameraTriggerMetres = parseFiniteNumber(value);
+            if (!options.cameraTriggerMetres || io::cameraTriggerProblem(*options.cameraTriggerMetres))
+                return failure("--camera-trigger: " + quoted(value) +
+                               " is not a distance between photos (0 for none, up to 10000 metres)");
         } else if (flag == "--fov-scale") {
             options.fieldOfViewScale = parseFiniteNumber(value);
             if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||
@@ -604,6 +609,10 @@ std::string CommandLine::usage() {
            "                           swap, next part uploaded), in seconds or with a unit (5min; 0, the\n"
            "                           default: not counted), in place of each robot's own:\n"
            "                           report.csv's mission_field_s adds it to the flights\n"
+           "  --camera-trigger M       a photo every M metres along each part's waypoints: the waypoint\n"
+           "                           files start the camera at a part's first waypoint and stop it at\n"
+           "                           its last (MAV_CMD_DO_SET_CAM_TRIGG_DIST; 0: no camera commands,\n"
+           "                           the default), in place of each robot's own\n"
            "  --fov-scale F            every class's field of view times F, e.g. 4 for a drone whose\n"
            "                           camera sees four times as wide as the table's ground robot; land\n"
            "                           covers keep their proportions (forest half as far as grass)\n"
@@ -621,7 +630,7 @@ std::string CommandLine::usage() {
            "Mission files (format: docs/mission-format.md) may be combined with --band, --area, --no-go,\n"
            "--planner, --param, --purity, --missing-as-obstacle, --open-paths, --dense-paths,\n"
            "--cell-polygons, --max-waypoints, --vehicle, --altitude, --cruise-speed, --flight-time,\n"
-           "--turnaround, --fov-scale and --fov, which override the mission's values.\n"
+           "--turnaround, --camera-trigger, --fov-scale and --fov, which override the mission's values.\n"
            "\n"
            "Other flags:\n"
            "  -h, --help               this text\n"

@@ -57,6 +57,7 @@ struct CommandLineOptions {
     std::optional<double> cruiseSpeedMetresPerSecond; // --cruise-speed: every robot's
     std::optional<double> flightTimeSeconds;          // --flight-time: every robot's, for waypoint files
     std::optional<double> turnaroundSeconds;          // --turnaround: every robot's, between mission parts
+    std::optional<double> cameraTriggerMetres;        // --camera-trigger: every robot's photo distance
     std::optional<double> fieldOfViewScale;           // --fov-scale: every class's FOV times it
     std::optional<double> fieldOfViewMetres;          // --fov: every class's FOV set to it
     std::vector<SpeedEvent> events;                   // --event, in the order given

@@ -303,7 +303,7 @@ void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, c
     const std::size_t count = mission.points.size();
     if (count == 0)
         return;
-    const int beside = itemsBesideWaypoints(vehicle.type);
+    const int beside = itemsBesideWaypoints(vehicle);
     mission.items = beside + 1;
     for (std::size_t point = 1; point < count; ++point)
         mission.items += mission.changesSpeedAt(point) ? 2 : 1;

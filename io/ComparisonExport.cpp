@@ -53,6 +53,19 @@ std::string fieldFigure(const ComparisonRow& row, double seconds) {
     return inTheField(row) ? formatShortest(seconds) : std::string();
 }
 
+// Why a planned row is ranked after the plans timed alike (ComparisonRanking's reading groups 1 and 2), in
+// words scripts can match; empty for those.
+std::string rankedApart(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
+    switch (readingGroup(row, rows)) {
+    case 1:
+        return "own_speeds_ignored";
+    case 2:
+        return "covers_less";
+    default:
+        return {};
+    }
+}
+
 } // namespace
 
 std::string outcomeName(ComparisonRow::Outcome outcome) {
@@ -75,7 +88,7 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
         "planner,outcome,rank,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
         "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
         "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread,time_vs_first,"
-        "lower_bound_kind";
+        "lower_bound_kind,ranked_apart";
     for (const std::string& stage : stages)
         text += "," + stageColumn(stage);
     text += ",message\n";
@@ -101,7 +114,7 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
                 fieldFigure(row, metrics.fieldLowerBoundSeconds) + "," +
                 fieldFigure(row, metrics.fieldSpread()) + "," +
                 (againstFirst[index] > 0.0 ? formatShortest(againstFirst[index]) : std::string()) + "," +
-                (planned ? lowerBoundKind(metrics) : std::string());
+                (planned ? lowerBoundKind(metrics) : std::string()) + "," + rankedApart(row, rows);
         for (const std::string& stage : stages)
             text += "," + (planned ? formatShortest(stageMilliseconds(metrics, stage)) : std::string());
         text += "," + internal::quoteCsvField(row.message) + "\n";
@@ -127,6 +140,8 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         item.add("rank", ranks[index]);
         if (againstFirst[index] > 0.0)
             item.add("time_vs_first", againstFirst[index]);
+        if (const std::string apart = rankedApart(row, rows); !apart.empty())
+            item.add("ranked_apart", apart);
         item.add("makespan_s", metrics.makespanSeconds);
         item.add("lower_bound_s", metrics.lowerBoundSeconds);
         item.add("lower_bound_kind", lowerBoundKind(metrics));

@@ -26,9 +26,11 @@ struct ComparisonRow {
 
 // comparison.csv: a row per planner, in the order asked, with its rank (ComparisonRanking: 1 is the soonest
 // done of the plans covering the most; empty where it did not plan), its time done against the first's
-// (time_vs_first: ComparisonRanking's timesTheFirst, empty where it has none) and the figures of its
-// report.json, per-robot lengths and times joined by ";" in one field each; comparison.json: the same, with
-// per-robot figures as arrays.
+// (time_vs_first: ComparisonRanking's timesTheFirst, empty where it has none), why it is ranked after the
+// plans timed alike (ranked_apart: own_speeds_ignored where it times the robots at the class table's speeds
+// beside plans keeping their own, covers_less where it covers less than the most; empty otherwise) and the
+// figures of its report.json, per-robot lengths and times joined by ";" in one field each; comparison.json:
+// the same, with per-robot figures as arrays.
 [[nodiscard]] Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::string& path);
 [[nodiscard]] Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::string& path);
 

@@ -278,7 +278,9 @@ bool readVehicle(MissionReader& reader, const QJsonObject& object, const std::st
                          &MissionReader::number) ||
         !reader.optional(object, path, "max_waypoints", vehicle.maxWaypoints, &MissionReader::integer) ||
         !reader.optional(object, path, "flight_time_s", vehicle.flightTimeSeconds, &MissionReader::number) ||
-        !reader.optional(object, path, "turnaround_s", vehicle.turnaroundSeconds, &MissionReader::number)) {
+        !reader.optional(object, path, "turnaround_s", vehicle.turnaroundSeconds, &MissionReader::number) ||
+        !reader.optional(object, path, "camera_trigger_m", vehicle.cameraTriggerMetres,
+                         &MissionReader::number)) {
         return false;
     }
     if (vehicle.altitudeMetres && (*vehicle.altitudeMetres < 0.0 || *vehicle.altitudeMetres > 10000.0))
@@ -299,6 +301,9 @@ bool readVehicle(MissionReader& reader, const QJsonObject& object, const std::st
     if (vehicle.turnaroundSeconds)
         if (const auto problem = turnaroundProblem(*vehicle.turnaroundSeconds))
             return reader.fail(MissionReader::join(path, "turnaround_s"), *problem);
+    if (vehicle.cameraTriggerMetres)
+        if (const auto problem = cameraTriggerProblem(*vehicle.cameraTriggerMetres))
+            return reader.fail(MissionReader::join(path, "camera_trigger_m"), *problem);
     return true;
 }
 
@@ -315,6 +320,8 @@ void writeVehicle(JsonValue& object, const VehicleOverrides& vehicle) {
         object.add("flight_time_s", *vehicle.flightTimeSeconds);
     if (vehicle.turnaroundSeconds)
         object.add("turnaround_s", *vehicle.turnaroundSeconds);
+    if (vehicle.cameraTriggerMetres)
+        object.add("camera_trigger_m", *vehicle.cameraTriggerMetres);
 }
 
 bool readEvent(MissionReader& reader, const QJsonValue& value, const std::string& path,
@@ -364,7 +371,8 @@ bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string
         return false;
     if (!reader.onlyKeys(object, path,
                          {"name", "start", "start_crs", "vehicle", "altitude_m", "cruise_speed_mps",
-                          "max_waypoints", "flight_time_s", "turnaround_s", "battery_s", "charger"}))
+                          "max_waypoints", "flight_time_s", "turnaround_s", "camera_trigger_m", "battery_s",
+                          "charger"}))
         return false;
     if (!reader.optional(object, path, "battery_s", robot.batterySeconds, &MissionReader::number))
         return false;
@@ -481,8 +489,8 @@ bool readExports(MissionReader& reader, const QJsonValue& value, ExportSettings&
         return false;
     if (!reader.onlyKeys(object, path,
                          {"vehicle", "altitude_m", "cruise_speed_mps", "max_waypoints", "flight_time_s",
-                          "turnaround_s", "speed_tolerance", "speed_changes_at_turns_only", "merge_collinear",
-                          "dense_paths", "cell_polygons"}))
+                          "turnaround_s", "camera_trigger_m", "speed_tolerance",
+                          "speed_changes_at_turns_only", "merge_collinear", "dense_paths", "cell_polygons"}))
         return false;
     VehicleOverrides vehicle;
     if (!readVehicle(reader, object, path, vehicle))
@@ -723,6 +731,7 @@ std::string missionToJson(const Mission& mission) {
     exports.add("max_waypoints", mission.exports.vehicle.maxWaypoints);
     exports.add("flight_time_s", mission.exports.vehicle.flightTimeSeconds);
     exports.add("turnaround_s", mission.exports.vehicle.turnaroundSeconds);
+    exports.add("camera_trigger_m", mission.exports.vehicle.cameraTriggerMetres);
     exports.add("speed_tolerance", mission.exports.speedTolerance);
     exports.add("speed_changes_at_turns_only", mission.exports.speedChangesAtTurnsOnly);
     exports.add("merge_collinear", mission.exports.mergeCollinear);

@@ -44,6 +44,7 @@ VehicleSettings VehicleOverrides::over(const VehicleSettings& defaults) const {
     settings.maxWaypoints = maxWaypoints.value_or(defaults.maxWaypoints);
     settings.flightTimeSeconds = flightTimeSeconds.value_or(defaults.flightTimeSeconds);
     settings.turnaroundSeconds = turnaroundSeconds.value_or(defaults.turnaroundSeconds);
+    settings.cameraTriggerMetres = cameraTriggerMetres.value_or(defaults.cameraTriggerMetres);
     return settings;
 }
 
@@ -61,6 +62,8 @@ VehicleOverrides VehicleOverrides::between(const VehicleSettings& defaults, cons
         overrides.flightTimeSeconds = wanted.flightTimeSeconds;
     if (wanted.turnaroundSeconds != defaults.turnaroundSeconds)
         overrides.turnaroundSeconds = wanted.turnaroundSeconds;
+    if (wanted.cameraTriggerMetres != defaults.cameraTriggerMetres)
+        overrides.cameraTriggerMetres = wanted.cameraTriggerMetres;
     return overrides;
 }
 
@@ -93,6 +96,13 @@ std::optional<std::string> turnaroundProblem(double seconds) {
         return std::nullopt;
     return "must be a time on the ground of 0 to 24 h (0 to 86400 s), not " + formatQuantity(seconds, 12) +
            " s";
+}
+
+std::optional<std::string> cameraTriggerProblem(double metres) {
+    if (metres >= 0.0 && metres <= maximumCameraTriggerMetres)
+        return std::nullopt;
+    return "must be 0 (no camera commands) or a distance between photos of up to 10000 m, not " +
+           formatQuantity(metres, 12) + " m";
 }
 
 } // namespace mcpp::io

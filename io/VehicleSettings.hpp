@@ -28,6 +28,9 @@ struct VehicleSettings {
     // Time on the ground between two parts of a split mission: a battery swap, the next part uploaded. It
     // adds to the robot's time in the field, not to the plan's balance. 0: not counted.
     double turnaroundSeconds = 0.0;
+    // A camera told to take a photo every so many metres along each part's waypoints (a photo survey's
+    // MAV_CMD_DO_SET_CAM_TRIGG_DIST, stopped at the part's last waypoint). 0: no camera commands.
+    double cameraTriggerMetres = 0.0;
 
     friend bool operator==(const VehicleSettings&, const VehicleSettings&) = default;
 };
@@ -40,10 +43,11 @@ struct VehicleOverrides {
     std::optional<int> maxWaypoints;
     std::optional<double> flightTimeSeconds;
     std::optional<double> turnaroundSeconds;
+    std::optional<double> cameraTriggerMetres;
 
     [[nodiscard]] bool empty() const {
         return !type && !altitudeMetres && !cruiseSpeedMetresPerSecond && !maxWaypoints &&
-               !flightTimeSeconds && !turnaroundSeconds;
+               !flightTimeSeconds && !turnaroundSeconds && !cameraTriggerMetres;
     }
     [[nodiscard]] VehicleSettings over(const VehicleSettings& defaults) const;
     // The overrides that make `wanted` from `defaults`: only the values that differ.
@@ -76,14 +80,15 @@ struct VehicleOverrides {
 }
 
 // Mission items every part of a mission holds besides its waypoints and speed changes: the home position
-// and the speed the vehicle starts with, and for an aircraft its takeoff and its return to launch.
-[[nodiscard]] constexpr int itemsBesideWaypoints(VehicleType type) {
-    return isAircraft(type) ? 4 : 2;
+// and the speed the vehicle starts with, for an aircraft its takeoff and its return to launch, and with a
+// camera the commands that start and stop its photos.
+[[nodiscard]] constexpr int itemsBesideWaypoints(const VehicleSettings& vehicle) {
+    return (isAircraft(vehicle.type) ? 4 : 2) + (vehicle.cameraTriggerMetres > 0.0 ? 2 : 0);
 }
 
 // The smallest item limit that leaves room, for any vehicle, for a part's items besides its waypoints and
 // two waypoints with a speed change between them.
-constexpr int minimumMaxWaypoints = 8;
+constexpr int minimumMaxWaypoints = 10;
 // An item limit an autopilot can work with: none (0), or room for a mission beside its fixed items.
 [[nodiscard]] constexpr bool isWorkableItemLimit(int limit) {
     return limit == 0 || limit >= minimumMaxWaypoints;
@@ -124,5 +129,10 @@ constexpr int highestAltitudeWithoutPermitFeet = 400;
 constexpr double maximumTurnaroundSeconds = 24.0 * 3600.0;
 // What is wrong with a turnaround time: 0 to 24 h.
 [[nodiscard]] std::optional<std::string> turnaroundProblem(double seconds);
+
+// The longest distance between two photos a camera may be given.
+constexpr double maximumCameraTriggerMetres = 10000.0;
+// What is wrong with a distance between photos: 0 (no camera commands) to 10 km.
+[[nodiscard]] std::optional<std::string> cameraTriggerProblem(double metres);
 
 } // namespace mcpp::io

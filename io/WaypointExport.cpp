@@ -22,10 +22,11 @@ using internal::appendJsonNumber;
 using internal::collinearAndBetween;
 
 // MAVLink numbers used by QGroundControl plans and QGC WPL files.
-constexpr int commandWaypoint = 16;       // MAV_CMD_NAV_WAYPOINT
-constexpr int commandChangeSpeed = 178;   // MAV_CMD_DO_CHANGE_SPEED
-constexpr int commandTakeoff = 22;        // MAV_CMD_NAV_TAKEOFF
-constexpr int commandReturnToLaunch = 20; // MAV_CMD_NAV_RETURN_TO_LAUNCH
+constexpr int commandWaypoint = 16;               // MAV_CMD_NAV_WAYPOINT
+constexpr int commandChangeSpeed = 178;           // MAV_CMD_DO_CHANGE_SPEED
+constexpr int commandTakeoff = 22;                // MAV_CMD_NAV_TAKEOFF
+constexpr int commandReturnToLaunch = 20;         // MAV_CMD_NAV_RETURN_TO_LAUNCH
+constexpr int commandCameraTriggerDistance = 206; // MAV_CMD_DO_SET_CAM_TRIGG_DIST
 // A fixed-wing aircraft climbs out at no less than this pitch (NAV_TAKEOFF's first parameter); a multirotor
 // climbs straight up.
 constexpr double fixedWingTakeoffPitchDegrees = 15.0;
@@ -307,6 +308,30 @@ void appendPlacedItem(std::string& out, int& jumpId, int command, double firstPa
     out += "], \"type\": \"SimpleItem\"}";
 }
 
+// The camera commands after a part's waypoint `index` of `count`: its distance between photos after the
+// first, 0 (stop) after the last; none without a camera.
+std::vector<double> cameraTriggersAfter(std::size_t index, std::size_t count,
+                                        const VehicleSettings& vehicle) {
+    std::vector<double> triggers;
+    if (!(vehicle.cameraTriggerMetres > 0.0))
+        return triggers;
+    if (index == 0)
+        triggers.push_back(vehicle.cameraTriggerMetres);
+    if (index + 1 == count)
+        triggers.push_back(0.0);
+    return triggers;
+}
+
+// A photo every so many metres from here on, the first at once; 0 stops, with a last photo there (as
+// QGroundControl's surveys start and stop the camera).
+void appendCameraTrigger(std::string& out, int& jumpId, double metres) {
+    out += "      {\"autoContinue\": true, \"command\": " + std::to_string(commandCameraTriggerDistance) +
+           ", \"doJumpId\": " + std::to_string(jumpId++) + ", \"frame\": " + std::to_string(frameMission) +
+           ", \"params\": [";
+    appendJsonNumber(out, metres);
+    out += ", 0, 1, 0, 0, 0, 0], \"type\": \"SimpleItem\"}";
+}
+
 void appendReturnToLaunch(std::string& out, int& jumpId) {
     out += "      {\"autoContinue\": true, \"command\": " + std::to_string(commandReturnToLaunch) +
            ", \"doJumpId\": " + std::to_string(jumpId++) + ", \"frame\": " + std::to_string(frameMission) +
@@ -346,6 +371,11 @@ std::string qGroundControlItems(const AutopilotMission& mission, const MissionPa
         }
         separate();
         appendPlacedItem(out, jumpId, commandWaypoint, 0.0, points[i], altitude);
+        // Photos along the part's waypoints only: none on the way out from home or back.
+        for (const double metres : cameraTriggersAfter(i, points.size(), vehicle)) {
+            separate();
+            appendCameraTrigger(out, jumpId, metres);
+        }
     }
     if (isAircraft(vehicle.type)) {
         separate();
@@ -440,6 +470,8 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
             speedRow(index++, mission.commandedSpeeds[point]);
         row(index++, 0, frameGlobalRelativeAltitude, commandWaypoint, {0, 0, 0, 0}, points[i].latitude,
             points[i].longitude, waypointAltitudeMetres(vehicle));
+        for (const double metres : cameraTriggersAfter(i, points.size(), vehicle))
+            row(index++, 0, frameMission, commandCameraTriggerDistance, {metres, 0, 1, 0}, 0, 0, 0);
     }
     if (isAircraft(vehicle.type))
         row(index, 0, frameMission, commandReturnToLaunch, {0, 0, 0, 0}, 0, 0, 0);

@@ -132,6 +132,19 @@ void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QR
     }
 }
 
+// Why a plan reading sooner done is ranked after the first, on its title where the captions have no line
+// to spare.
+QString rankedApartNote(int readingGroup) {
+    switch (readingGroup) {
+    case 1:
+        return QStringLiteral(": at the class table's speeds");
+    case 2:
+        return QStringLiteral(": covers less");
+    default:
+        return {};
+    }
+}
+
 } // namespace
 
 ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan, const QString& timed) {
@@ -177,7 +190,9 @@ std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::Compar
                                   : QString();
         ComparisonPanel panel = comparisonPanelOf(rows[index], plans[index], timed);
         if (ranks[index] > 0)
-            panel.title = QStringLiteral("%1. %2").arg(ranks[index]).arg(panel.title);
+            panel.title = QStringLiteral("%1. %2%3")
+                              .arg(ranks[index])
+                              .arg(panel.title, rankedApartNote(io::readingGroup(rows[index], rows)));
 
         panels.push_back(std::move(panel));
     }

@@ -66,6 +66,18 @@ QTableWidgetItem* timeItem(double seconds, double unitSeconds, int readingGroup)
     return item;
 }
 
+// When the team is done (io::doneAfterSeconds), so that sorting by Home reads as batch mode lists the plans:
+// for a plan without flights, whose robots are done when their paths end, its makespan, greyed.
+QTableWidgetItem* homeItem(const io::ComparisonRow& row, double unitSeconds, int readingGroup) {
+    QTableWidgetItem* item = timeItem(io::doneAfterSeconds(row), unitSeconds, readingGroup);
+    if (!row.metrics.timedInTheField()) {
+        item->setForeground(QApplication::palette().brush(QPalette::Disabled, QPalette::Text));
+        item->setToolTip(
+            QObject::tr("No flights: its robots are done when their paths end, at its makespan"));
+    }
+    return item;
+}
+
 QString leavesLandNote(const PlannerDescription& planner) {
     if (planner.promises.everyReachableCellCovered)
         return {};
@@ -107,7 +119,8 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
         {tr("Hours"), tr("Makespan: the time of the slowest robot, in hours")},
         {tr("Home h"),
          tr("Where flights split the missions: when the last robot is home, its flights and the "
-            "turnarounds between them included, in hours (in days where the makespan header says Days)")},
+            "turnarounds between them included, in hours (in days where the makespan header says Days); "
+            "for a plan without flights, its makespan, greyed")},
         {tr("x 1st"),
          tr("Time done divided by the first plan's (in bold): how much longer the team waits with this one; "
             "none for a plan covering less than the most, or one timing its robots at the class table's "
@@ -256,10 +269,8 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         }
         table_->setItem(r, Ratio, ratio);
         table_->setItem(r, Makespan, timeItem(metrics.makespanSeconds, unitSeconds, group));
-        if (metrics.timedInTheField()) {
-            table_->setItem(r, Home, timeItem(metrics.fieldMakespanSeconds, unitSeconds, group));
-            inTheField = true;
-        }
+        table_->setItem(r, Home, homeItem(row, unitSeconds, group));
+        inTheField = inTheField || metrics.timedInTheField();
         if (againstFirst[i] > 0.0)
             table_->setItem(r, AgainstFirst, numberItem(againstFirst[i], 3));
         table_->setItem(r, Turns, numberItem(metrics.totalTurns(), 0));

@@ -40,21 +40,23 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     : QDialog(parent), exports_(mission.exports), shownDefaults_(mission.exports.vehicle) {
     setWindowTitle(tr("Robot vehicles"));
     auto* layout = new QVBoxLayout(this);
-    auto* intro = new QLabel(tr("What each robot's waypoint files (.plan, .waypoints) tell its autopilot. A "
-                                "mission with more items than the limit, or longer than the flight time, is "
-                                "written in parts, each beginning where the one before it ended; aircraft "
-                                "take off from their start and "
-                                "return to it in every part. The turnaround, the time on the ground between "
-                                "two parts, adds to when each robot is done in the field. A robot's cruise "
-                                "speed is also the speed the plan gives it over every passable class: a "
-                                "faster robot gets more ground (MCPP-MLCT)."),
-                             this);
+    auto* intro = new QLabel(
+        tr("What each robot's waypoint files (.plan, .waypoints) tell its autopilot. A mission with "
+           "more items than the limit, or longer than the flight time, is written in parts, each "
+           "beginning where the one before it ended; aircraft take off from their start and return "
+           "to it in every part. The turnaround, the time on the ground between two parts, adds to "
+           "when each robot is done in the field. With a distance between photos, each part starts "
+           "the camera at its first waypoint and stops it at its last. A robot's cruise speed is "
+           "also the speed the plan gives it over every passable class: a faster robot gets more "
+           "ground (MCPP-MLCT)."),
+        this);
     intro->setWordWrap(true);
     layout->addWidget(intro);
 
-    table_ = new QTableWidget(static_cast<int>(mission.robots.size()) + 1, 6, this);
+    table_ = new QTableWidget(static_cast<int>(mission.robots.size()) + 1, 7, this);
     table_->setHorizontalHeaderLabels({tr("Vehicle"), tr("Altitude above home (m)"), tr("Cruise speed (m/s)"),
-                                       tr("Item limit"), tr("Flight time (min)"), tr("Turnaround (min)")});
+                                       tr("Item limit"), tr("Flight time (min)"), tr("Turnaround (min)"),
+                                       tr("Photo every (m)")});
     table_->horizontalHeaderItem(2)->setToolTip(
         tr("0: each land-cover class's speed. Otherwise the robot drives at it over every passable class, "
            "in the plan too."));
@@ -67,6 +69,10 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     table_->horizontalHeaderItem(5)->setToolTip(
         tr("Time on the ground between two parts: a battery swap, the next part uploaded. The report adds it "
            "to the flights to say when each robot is done. 0: not counted."));
+    table_->horizontalHeaderItem(6)->setToolTip(
+        tr("A photo survey: the waypoint files tell the camera to take a photo every so many metres along "
+           "each part's waypoints (MAV_CMD_DO_SET_CAM_TRIGG_DIST), two more items a part. For 20 % overlap, "
+           "0.8 times the photo's footprint. 0: no camera commands."));
     // The mission's defaults, which robots without values of their own follow. Named "Default", not "All
     // robots": that read as the robots' values where each has its own (two drones beside a rover default).
     QStringList names{tr("Default")};
@@ -135,8 +141,8 @@ VehicleSettingsDialog::VehicleSettingsDialog(const io::Mission& mission, QWidget
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
-    resize(900, 250 + 32 * static_cast<int>(rows_.size())); // room for the intro and a limit's problem
-    shownDefaults_ = settingsOf(rows_.front());             // as the boxes show them, for followDefaults
+    resize(1000, 250 + 32 * static_cast<int>(rows_.size())); // room for the intro and a limit's problem
+    shownDefaults_ = settingsOf(rows_.front());              // as the boxes show them, for followDefaults
 }
 
 VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString& name,
@@ -166,6 +172,10 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     widgets.turnaround = new QDoubleSpinBox(table_);
     widgets.turnaround->setRange(0.0, io::maximumTurnaroundSeconds / 60.0);
     widgets.turnaround->setDecimals(3);
+    widgets.cameraTrigger = new QDoubleSpinBox(table_);
+    widgets.cameraTrigger->setRange(0.0, io::maximumCameraTriggerMetres);
+    widgets.cameraTrigger->setDecimals(3);
+    widgets.cameraTrigger->setSpecialValueText(tr("no camera"));
     show(widgets, settings);
     // The Default row's altitude stays open: robots that are aircraft of their own inherit it.
     if (row > 0) {
@@ -179,9 +189,10 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     table_->setCellWidget(row, 3, widgets.maxWaypoints);
     table_->setCellWidget(row, 4, widgets.flightTime);
     table_->setCellWidget(row, 5, widgets.turnaround);
-    for (QWidget* widget :
-         std::initializer_list<QWidget*>{widgets.type, widgets.altitude, widgets.cruiseSpeed,
-                                         widgets.maxWaypoints, widgets.flightTime, widgets.turnaround})
+    table_->setCellWidget(row, 6, widgets.cameraTrigger);
+    for (QWidget* widget : std::initializer_list<QWidget*>{
+             widgets.type, widgets.altitude, widgets.cruiseSpeed, widgets.maxWaypoints, widgets.flightTime,
+             widgets.turnaround, widgets.cameraTrigger})
         widget->setAccessibleName(name);
     if (row == 0) {
         connect(widgets.type, &QComboBox::currentIndexChanged, this, &VehicleSettingsDialog::followDefaults);
@@ -193,6 +204,8 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
         connect(widgets.flightTime, &QDoubleSpinBox::valueChanged, this,
                 &VehicleSettingsDialog::followDefaults);
         connect(widgets.turnaround, &QDoubleSpinBox::valueChanged, this,
+                &VehicleSettingsDialog::followDefaults);
+        connect(widgets.cameraTrigger, &QDoubleSpinBox::valueChanged, this,
                 &VehicleSettingsDialog::followDefaults);
     }
     return widgets;
@@ -206,6 +219,7 @@ io::VehicleSettings VehicleSettingsDialog::settingsOf(const Row& row) {
     settings.maxWaypoints = row.maxWaypoints->value();
     settings.flightTimeSeconds = secondsIn(row.flightTime, row.flightSeconds, row.flightMinutesShown);
     settings.turnaroundSeconds = secondsIn(row.turnaround, row.turnaroundSeconds, row.turnaroundMinutesShown);
+    settings.cameraTriggerMetres = row.cameraTrigger->value();
     return settings;
 }
 
@@ -220,6 +234,7 @@ void VehicleSettingsDialog::show(Row& row, const io::VehicleSettings& settings) 
     row.turnaround->setValue(settings.turnaroundSeconds / 60.0);
     row.turnaroundSeconds = settings.turnaroundSeconds;
     row.turnaroundMinutesShown = row.turnaround->value();
+    row.cameraTrigger->setValue(settings.cameraTriggerMetres);
 }
 
 void VehicleSettingsDialog::followDefaults() {
@@ -239,6 +254,8 @@ void VehicleSettingsDialog::followDefaults() {
             robot.flightTimeSeconds = defaults.flightTimeSeconds;
         if (robot.turnaroundSeconds == shownDefaults_.turnaroundSeconds)
             robot.turnaroundSeconds = defaults.turnaroundSeconds;
+        if (robot.cameraTriggerMetres == shownDefaults_.cameraTriggerMetres)
+            robot.cameraTriggerMetres = defaults.cameraTriggerMetres;
         show(rows_[i], robot);
     }
     shownDefaults_ = defaults;

@@ -42,6 +42,7 @@ class VehicleSettingsDialog : public QDialog {
         QDoubleSpinBox* turnaround = nullptr; // minutes, given and shown as the flight time
         double turnaroundSeconds = 0.0;
         double turnaroundMinutesShown = 0.0;
+        QDoubleSpinBox* cameraTrigger = nullptr; // metres between photos; 0: no camera commands
     };
 
     Row addRow(int row, const QString& name, const io::VehicleSettings& settings);

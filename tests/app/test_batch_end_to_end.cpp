@@ -934,11 +934,11 @@ void TestBatchEndToEnd::missionsAboveTheItemLimitAreSplit() {
     QVERIFY2(!run.standardOutput.contains(QStringLiteral("makes that many")), qPrintable(run.standardOutput));
 
     // A limit far below what the battery time needs is named, with the parts the battery alone would make.
-    run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--max-waypoints", "8", "--flight-time",
+    run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--max-waypoints", "10", "--flight-time",
                    "10min", "--out", scratch_.filePath("split-small-limit")});
     QCOMPARE(run.exitCode, 0);
     const QRegularExpression fewer(
-        QStringLiteral("written in (\\d+) parts[^\\n]*its item limit \\(8\\), not its "
+        QStringLiteral("written in (\\d+) parts[^\\n]*its item limit \\(10\\), not its "
                        "battery time, makes that many: (\\d+) parts without it"));
     const QRegularExpressionMatch said = fewer.match(run.standardOutput);
     QVERIFY2(said.hasMatch(), qPrintable(run.standardOutput));

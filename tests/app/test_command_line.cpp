@@ -136,7 +136,8 @@ void TestCommandLine::batchWithEveryFlag() {
         "--batch --raster map.tif --classes table.csv --start 318000.5,4130000 --start 319000,4131000.25 "
         "--start -113.1,37.2 --start-crs EPSG:4326 --charger 318100,4130200.5 --planner mcpp-mlct --band 2 "
         "--purity 0.25 --missing-as-obstacle --open-paths --quiet --out results --vehicle multirotor "
-        "--altitude 60 --cruise-speed 8.5 --fov-scale 4 --flight-time 25min --turnaround 4.5min"));
+        "--altitude 60 --cruise-speed 8.5 --fov-scale 4 --flight-time 25min --turnaround 4.5min "
+        "--camera-trigger 37.5"));
     QVERIFY2(result.ok(), result.error.c_str());
     const auto& options = result.options;
     QCOMPARE(static_cast<int>(options.mode), static_cast<int>(RunMode::Batch));
@@ -172,6 +173,7 @@ void TestCommandLine::batchWithEveryFlag() {
     QCOMPARE(options.fieldOfViewScale.value_or(-1.0), 4.0);
     QCOMPARE(options.flightTimeSeconds.value_or(-1.0), 1500.0);
     QCOMPARE(options.turnaroundSeconds.value_or(-1.0), 270.0);
+    QCOMPARE(options.cameraTriggerMetres.value_or(-1.0), 37.5);
     QVERIFY(!options.fieldOfViewMetres);
     // One footprint for every class, in place of the scale.
     const auto footprint = CommandLine::parse(split("--batch m.json --out o --fov 42.5"));
@@ -284,7 +286,7 @@ void TestCommandLine::errors_data() {
         << "--purity: expected a number from 0 up to (not including) 1, got -0.1";
     QTest::newRow("--max-waypoints too small")
         << words("--batch m.json --out o --max-waypoints 3")
-        << "--max-waypoints: \"3\" is not an item limit (0 for none, or 8 or more mission items)";
+        << "--max-waypoints: \"3\" is not an item limit (0 for none, or 10 or more mission items)";
     QTest::newRow("--vehicle unknown")
         << words("--batch m.json --out o --vehicle quadcopter")
         << "--vehicle: \"quadcopter\" is not a vehicle (rover, multirotor or fixed-wing)";
@@ -309,6 +311,9 @@ void TestCommandLine::errors_data() {
     QTest::newRow("--turnaround of two days")
         << words("--batch m.json --out o --turnaround 48h")
         << "--turnaround \"48h\": must be a time on the ground of 0 to 24 h (0 to 86400 s), not 172800 s";
+    QTest::newRow("--camera-trigger negative")
+        << words("--batch m.json --out o --camera-trigger -5")
+        << "--camera-trigger: \"-5\" is not a distance between photos (0 for none, up to 10000 metres)";
     QTest::newRow("--turnaround without a number")
         << words("--batch m.json --out o --turnaround soon")
         << "--turnaround: \"soon\" is not a duration (seconds, or a "
@@ -336,7 +341,7 @@ void TestCommandLine::errors_data() {
            "--fov-scale multiplies the table's";
     QTest::newRow("--max-waypoints negative")
         << words("--batch m.json --out o --max-waypoints -700")
-        << "--max-waypoints: \"-700\" is not an item limit (0 for none, or 8 or more mission items)";
+        << "--max-waypoints: \"-700\" is not an item limit (0 for none, or 10 or more mission items)";
     QTest::newRow("--param without value")
         << words("--batch m.json --out o --param closed_tour") << "--param: \"closed_tour\" is not KEY=VALUE";
     QTest::newRow("--param without key")

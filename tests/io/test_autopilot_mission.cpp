@@ -111,12 +111,12 @@ ExportSettings shaping(double speedTolerance, bool mergeCollinear, bool atTurnsO
 // How many parts a mission takes when each is filled to the vehicle's limit before the next begins.
 std::size_t partsFilledToTheLimit(const AutopilotMission& mission, const VehicleSettings& vehicle) {
     std::size_t parts = 1;
-    int items = itemsBesideWaypoints(vehicle.type) + 1;
+    int items = itemsBesideWaypoints(vehicle) + 1;
     for (std::size_t point = 1; point < mission.points.size(); ++point) {
         const int added = mission.changesSpeedAt(point) ? 2 : 1;
         if (items + added > vehicle.maxWaypoints) {
             ++parts;
-            items = itemsBesideWaypoints(vehicle.type) + 1;
+            items = itemsBesideWaypoints(vehicle) + 1;
         }
         items += added;
     }
@@ -306,7 +306,7 @@ class AutopilotMissionTest : public QObject {
                     QCOMPARE(piece.first, mission.parts[part - 1].last); // begins where the last one ended
                 // Items: what every part holds besides its waypoints, its first point, and each later point
                 // with its speed change.
-                int items = itemsBesideWaypoints(vehicle.type) + 1;
+                int items = itemsBesideWaypoints(vehicle) + 1;
                 for (std::size_t point = piece.first + 1; point <= piece.last; ++point)
                     items += mission.changesSpeedAt(point) ? 2 : 1;
                 QCOMPARE(piece.items, items);

@@ -3,6 +3,11 @@
 // failed and skipped planners.
 #include "io/ComparisonRanking.hpp"
 
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace mcpp;
@@ -47,6 +52,7 @@ class TestComparisonRanking : public QObject {
     void ranksSkipRowsThatDidNotPlan();
     void eachPlanIsTimedAgainstTheFirst();
     void plansAtTheClassTablesSpeedsComeAfterThoseKeepingOwnSpeeds();
+    void theExportsSayWhyAPlanIsRankedApart();
 };
 
 // A battery planner that covers a quarter of the land in less time than the others is last of the planned,
@@ -143,6 +149,40 @@ void TestComparisonRanking::plansAtTheClassTablesSpeedsComeAfterThoseKeepingOwnS
     ComparisonRow alsoClassSpeeds = plannedRow("mstc", 0.999, 90.0);
     alsoClassSpeeds.metrics.ownSpeedsIgnored = true;
     QCOMPARE(namesInOrder({classSpeeds, alsoClassSpeeds}), (std::vector<std::string>{"mstc", "mdstc"}));
+}
+
+// comparison.csv and .json say why a plan with the shorter makespan is ranked after the first, as batch
+// mode's summary does: a script reading only rank and makespan would otherwise take it for a mistake.
+void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
+    ComparisonRow classSpeeds = plannedRow("mdstc", 0.999, 100.0);
+    classSpeeds.metrics.ownSpeedsIgnored = true;
+    const std::vector<ComparisonRow> rows{classSpeeds, plannedRow("mcpp-mlct", 0.999, 140.0),
+                                          plannedRow("wavefront-battery", 0.5, 50.0),
+                                          unplannedRow("cppied", ComparisonRow::Outcome::Failed)};
+    QTemporaryDir directory;
+    QVERIFY(directory.isValid());
+    const QString csvPath = directory.filePath("comparison.csv");
+    const QString jsonPath = directory.filePath("comparison.json");
+    QVERIFY(io::writeComparisonCsv(rows, csvPath.toStdString()).ok());
+    QVERIFY(io::writeComparisonJson(rows, jsonPath.toStdString()).ok());
+
+    QFile csv(csvPath);
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 5);
+    const int column = lines[0].split(',').indexOf("ranked_apart");
+    QVERIFY(column >= 0);
+    const QStringList expected{"own_speeds_ignored", "", "covers_less", ""};
+    for (int row = 0; row < 4; ++row)
+        QCOMPARE(lines[row + 1].split(',').at(column), expected[row]);
+
+    QFile json(jsonPath);
+    QVERIFY(json.open(QIODevice::ReadOnly));
+    const QJsonArray planners = QJsonDocument::fromJson(json.readAll()).object().value("planners").toArray();
+    QCOMPARE(planners.size(), 4);
+    for (int row = 0; row < 4; ++row)
+        QCOMPARE(planners[row].toObject().value("ranked_apart").toString(), expected[row]);
+    QVERIFY(!planners[1].toObject().contains("ranked_apart"));
 }
 
 QTEST_APPLESS_MAIN(TestComparisonRanking)

@@ -52,6 +52,7 @@ Mission sampleMission() {
     mission.robots[1].vehicle.maxWaypoints = 0;
     mission.robots[1].vehicle.flightTimeSeconds = 1320.0;       // its own battery: 22 min
     mission.robots[1].vehicle.turnaroundSeconds = 90.0;         // and a quicker swap
+    mission.robots[1].vehicle.cameraTriggerMetres = 40.0;       // and a camera taking photos
     mission.robots[2].batterySeconds = 1500.0;                  // its own battery, for battery planners
     mission.robots[2].charger = MapPoint{302000.5, 4154000.25}; // and its charger away from its start
     mission.events = {{120.5, 1, 0.5}, {600.0, 0, 0.0}};        // robot 1 at half speed, then robot 0 stops
@@ -170,6 +171,9 @@ class MissionFilesTest : public QObject {
         QCOMPARE(beta["flight_time_s"].toDouble(), 1320.0);
         QCOMPARE(exports["turnaround_s"].toDouble(), 300.0);
         QCOMPARE(beta["turnaround_s"].toDouble(), 90.0);
+        QCOMPARE(beta["camera_trigger_m"].toDouble(), 40.0);
+        QCOMPARE(exports["camera_trigger_m"].toDouble(), 0.0);
+        QVERIFY(!root["robots"].toArray()[0].toObject().contains("camera_trigger_m"));
         QCOMPARE(exports["speed_tolerance"].toDouble(), 0.25);
         QCOMPARE(exports["speed_changes_at_turns_only"].toBool(), true);
         const std::vector<VehicleSettings> vehicles = robotVehicles(sampleMission());
@@ -180,6 +184,8 @@ class MissionFilesTest : public QObject {
         QCOMPARE(vehicles[1].flightTimeSeconds, 1320.0);
         QCOMPARE(vehicles[0].turnaroundSeconds, 300.0);
         QCOMPARE(vehicles[1].turnaroundSeconds, 90.0);
+        QCOMPARE(vehicles[0].cameraTriggerMetres, 0.0);
+        QCOMPARE(vehicles[1].cameraTriggerMetres, 40.0);
         QCOMPARE(vehicles[1].altitudeMetres, 45.5);
         QCOMPARE(vehicles[1].cruiseSpeedMetresPerSecond, 1.2);
         QVERIFY(vehicles[1].type == VehicleType::Multirotor);
@@ -248,10 +254,17 @@ class MissionFilesTest : public QObject {
         QTemporaryDir folder;
         const std::string path = folder.filePath("drones.json").toStdString();
         Mission mission = sampleMission();
+        // The classes object's own key, not the table rows' fov_m: written only when set.
+        const auto classesObject = [&path] {
+            return QJsonDocument::fromJson(QByteArray::fromStdString(readBytes(path)))
+                .object()["classes"]
+                .toObject();
+        };
         QVERIFY(saveMission(mission, path).ok());
-        QVERIFY(readBytes(path).find("\"fov_m\": 60") == std::string::npos);
+        QVERIFY(!classesObject().contains("fov_m"));
         mission.fieldOfViewMetres = 60.0;
         QVERIFY(saveMission(mission, path).ok());
+        QCOMPARE(classesObject()["fov_m"].toDouble(), 60.0);
         auto loaded = loadMission(path);
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
         QCOMPARE(loaded.value().fieldOfViewMetres, std::optional<double>(60.0));
@@ -520,7 +533,7 @@ class MissionFilesTest : public QObject {
         const auto loaded = loadMission(path);
         QVERIFY(!loaded.ok());
         QCOMPARE(loaded.error(), path +
-                                     ": robots[1].max_waypoints: must be 0 (no limit) or at least 8 mission "
+                                     ": robots[1].max_waypoints: must be 0 (no limit) or at least 10 mission "
                                      "items, not 5");
     }
 

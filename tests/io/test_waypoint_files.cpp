@@ -16,6 +16,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -258,6 +259,7 @@ class WaypointFilesTest : public QObject {
             for (const int robot : {0, 1}) {
                 ExportSettings settings;
                 settings.vehicle.type = type;
+                settings.vehicle.cameraTriggerMetres = robot == 1 ? 12.5 : 0.0; // with camera commands
                 const std::string path = file("layout.plan");
                 QVERIFY(writeQGroundControlPlan(context(settings), robot, path).ok());
                 QFile written(QString::fromStdString(path));
@@ -324,6 +326,81 @@ class WaypointFilesTest : public QObject {
         QVERIFY(std::abs(std::stod(rows[2][9]) - expected.longitude) < 1e-7);
         QCOMPARE(std::stod(rows[2][10]), 0.0); // a rover's, whatever the settings' altitude
         QCOMPARE(rows[0][8], rows[2][8]);
+    }
+
+    // A photo survey: each part starts the camera after its first waypoint, a photo every so many metres
+    // and one at once, and stops it after its last, so that no photos are taken on the way out or back;
+    // the two items count against the autopilot's limit.
+    void aCameraTakesPhotosAlongEachPartsWaypointsOnly() {
+        ExportSettings settings;
+        settings.mergeCollinear = false;
+        settings.vehicle.type = VehicleType::Multirotor;
+        settings.vehicle.cameraTriggerMetres = 25.0;
+        settings.vehicle.maxWaypoints = 10;
+        // The camera items of QGroundControl's own survey, in the MAVSDK sample.
+        QJsonObject sampleCameraItem;
+        const QJsonArray survey =
+            readJson(testDataPath("waypoint-formats/"
+                                  "mavsdk_qgroundcontrol_sample_with_survey.plan"))["mission"]
+                .toObject()["items"]
+                .toArray();
+        for (const QJsonValue& item : survey)
+            for (const QJsonValue& inner :
+                 item.toObject()["TransectStyleComplexItem"].toObject()["Items"].toArray())
+                if (inner.toObject()["command"].toInt() == 206)
+                    sampleCameraItem = inner.toObject();
+        QVERIFY(!sampleCameraItem.isEmpty());
+        QCOMPARE(sampleCameraItem["frame"].toInt(), 2);
+        const std::string path = file("camera.plan");
+        QVERIFY(writeQGroundControlPlan(context(settings), 0, path).ok());
+        QVERIFY(!QFile::exists(QString::fromStdString(path)));
+        qsizetype waypoints = 0;
+        for (const char* part : {"camera_part_1.plan", "camera_part_2.plan"}) {
+            const QJsonArray items = readJson(file(part))["mission"].toObject()["items"].toArray();
+            QVERIFY2(items.size() + 1 <= settings.vehicle.maxWaypoints, part); // home is an item too
+            std::vector<int> commands;
+            for (const QJsonValue& item : items)
+                commands.push_back(item.toObject()["command"].toInt());
+            // Takeoff, speed, first waypoint, camera on, ..., last waypoint, camera off, return to launch.
+            QCOMPARE(commands.front(), 22);
+            QCOMPARE(commands[1], 178);
+            QCOMPARE(commands[2], 16);
+            QCOMPARE(commands[3], 206);
+            QCOMPARE(commands[commands.size() - 3], 16);
+            QCOMPARE(commands[commands.size() - 2], 206);
+            QCOMPARE(commands.back(), 20);
+            QCOMPARE(std::count(commands.begin(), commands.end(), 206), 2);
+            const QJsonArray start = items[3].toObject()["params"].toArray();
+            QCOMPARE(start[0].toDouble(), 25.0);
+            QCOMPARE(start[2].toDouble(), 1.0); // a first photo at once
+            QCOMPARE(items[3].toObject()["frame"].toInt(), 2);
+            const QJsonArray stop = items[items.size() - 2].toObject()["params"].toArray();
+            QCOMPARE(stop[0].toDouble(), 0.0);
+            QCOMPARE(stop[2].toDouble(), 1.0); // and a last photo there, as QGroundControl stops it
+            QVERIFY(keysOf(items[3].toObject()) == keysOf(sampleCameraItem));
+            waypoints += std::count(commands.begin(), commands.end(), 16);
+        }
+        // The second part begins where the first ended: one waypoint in both.
+        QCOMPARE(waypoints, static_cast<qsizetype>(plan_.paths[0].waypoints.size()) + 1);
+
+        // The same in a QGC WPL 110 file, for a rover in one file.
+        settings.vehicle.type = VehicleType::Rover;
+        settings.vehicle.maxWaypoints = 0;
+        const std::string list = file("camera.waypoints");
+        QVERIFY(writeWaypointList(context(settings), 0, list).ok());
+        std::string header;
+        const auto rows = tabRows(list, header);
+        QCOMPARE(rows.size(), plan_.paths[0].waypoints.size() + 4);
+        QCOMPARE(rows[2][3], std::string("16"));
+        QCOMPARE(rows[3][3], std::string("206"));
+        QCOMPARE(std::stod(rows[3][4]), 25.0);
+        QCOMPARE(std::stod(rows[3][6]), 1.0);
+        QCOMPARE(rows[rows.size() - 2][3], std::string("16"));
+        QCOMPARE(rows.back()[3], std::string("206"));
+        QCOMPARE(std::stod(rows.back()[4]), 0.0);
+        QCOMPARE(std::stod(rows.back()[6]), 1.0);
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            QCOMPARE(rows[i][0], std::to_string(i));
     }
 
     void waypointCsv() {

@@ -51,9 +51,21 @@ class TestComparisonSheet : public QObject {
         QCOMPARE(panels[1].title, QStringLiteral("2. darp"));
         QCOMPARE(panels[1].caption.front(),
                  QStringLiteral("makespan 2 h 30 min (1.25 x mcpp-mlct's), 1.500 x its own lower bound"));
-        // Covering less, it is smaller, not quicker: not timed against the first.
-        QCOMPARE(panels[2].title, QStringLiteral("3. wavefront-battery"));
+        // Covering less, it is smaller, not quicker: not timed against the first, and its title says why.
+        QCOMPARE(panels[2].title, QStringLiteral("3. wavefront-battery: covers less"));
         QCOMPARE(panels[2].caption.front(), QStringLiteral("makespan 1 h, 1.500 x its own lower bound"));
+    }
+
+    // A plan timing the robots at the class table's speeds beside plans keeping their own reads sooner done;
+    // its title says why it is ranked after them.
+    void aPlanAtTheClassTablesSpeedsSaysWhyItIsRankedAfter() {
+        io::ComparisonRow classSpeeds = plannedRow("mdstc", 1.0, 3600.0);
+        classSpeeds.metrics.ownSpeedsIgnored = true;
+        const std::vector<io::ComparisonRow> rows{classSpeeds, plannedRow("mcpp-mlct", 1.0, 7200.0)};
+        const auto panels = render::rankedComparisonPanels(rows, {nullptr, nullptr});
+        QCOMPARE(panels[0].title, QStringLiteral("1. mcpp-mlct"));
+        QCOMPARE(panels[1].title, QStringLiteral("2. mdstc: at the class table's speeds"));
+        QCOMPARE(panels[1].caption.front(), QStringLiteral("makespan 1 h, 1.500 x its own lower bound"));
     }
 
     // Where flights split the missions, plans are ranked by when the last robot is home: the caption leads

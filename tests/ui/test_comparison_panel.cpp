@@ -62,7 +62,12 @@ class ComparisonPanelTest : public QObject {
         const int flownRow = panel.rowOfPlanner("mcpp-mlct");
         QVERIFY(flownRow >= 0);
         QCOMPARE(table->item(flownRow, homeColumn)->data(Qt::DisplayRole).toDouble(), 10.0);
-        QCOMPARE(table->item(panel.rowOfPlanner("darp"), homeColumn), nullptr); // no flights: no figure
+        // No flights: done when its paths end, at its makespan, greyed and said so.
+        const QTableWidgetItem* walkedHome = table->item(panel.rowOfPlanner("darp"), homeColumn);
+        QVERIFY(walkedHome != nullptr);
+        QCOMPARE(walkedHome->text(), QStringLiteral("2.50"));
+        QVERIFY(walkedHome->toolTip().contains(QStringLiteral("No flights")));
+        QVERIFY(table->item(flownRow, homeColumn)->toolTip().isEmpty());
         QCOMPARE(table->item(panel.rowOfPlanner("mstc"), homeColumn), nullptr);
 
         // Compared again without flights, the column goes.
@@ -142,6 +147,33 @@ class ComparisonPanelTest : public QObject {
         QVERIFY(!table->item(1, 0)->font().bold());
         QCOMPARE(table->item(0, againstFirstColumn)->text(), QStringLiteral("1.000"));
         QCOMPARE(table->item(1, againstFirstColumn), nullptr);
+    }
+
+    // Sorted by when the team is done, a plan at the class table's speeds with no flights comes after the
+    // plans timed alike and before one covering less, as batch mode lists them: a missing Home figure would
+    // put it last.
+    void sortedByHomeAPlanAtTheClassTablesSpeedsComesBeforeOneCoveringLess() {
+        const auto raster = test::grassRaster();
+        const io::Mission mission = test::twoRobotMission();
+        ui::ComparisonPanel panel;
+        const QTableWidget* table = panel.table();
+        io::ComparisonRow flown = plannedRow("mcpp-mlct", 1.01, 7200.0);
+        flown.metrics.coveredFraction = 1.0;
+        flown.metrics.fieldMakespanSeconds = 40000.0;
+        flown.metrics.fieldLowerBoundSeconds = 30000.0;
+        io::ComparisonRow classSpeeds = plannedRow("mdstc", 1.00, 3600.0);
+        classSpeeds.metrics.coveredFraction = 1.0;
+        classSpeeds.metrics.ownSpeedsIgnored = true;
+        io::ComparisonRow partial = plannedRow("darp", 1.02, 7000.0);
+        partial.metrics.coveredFraction = 0.98;
+        partial.metrics.fieldMakespanSeconds = 20000.0;
+        partial.metrics.fieldLowerBoundSeconds = 19000.0;
+        panel.showOutcome(outcomeOf({partial, classSpeeds, flown}), raster->grid, mission.classes);
+        QCOMPARE(table->horizontalHeader()->sortIndicatorSection(), homeColumn);
+        QCOMPARE(panel.rowOfPlanner("mcpp-mlct"), 0);
+        QCOMPARE(panel.rowOfPlanner("mdstc"), 1);
+        QCOMPARE(panel.rowOfPlanner("darp"), 2);
+        QCOMPARE(table->item(1, homeColumn)->text(), QStringLiteral("1.00"));
     }
 
     // A plan that leaves land uncovered is not done sooner, only smaller: the Covered column says so, and

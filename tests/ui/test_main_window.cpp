@@ -828,7 +828,7 @@ class TestMainWindow : public QObject {
         window.document()->setVehicles(exports, {});
         QVERIFY(exportAndWait("qgc-plan", directory.filePath(QStringLiteral("mission.plan"))));
         QVERIFY(QFileInfo::exists(directory.filePath(QStringLiteral("mission-robot3.plan"))));
-        exports.vehicle.maxWaypoints = 8;
+        exports.vehicle.maxWaypoints = 10;
         window.document()->setVehicles(exports, {});
         QVERIFY(exportAndWait("qgc-plan", directory.filePath(QStringLiteral("split.plan"))));
         QVERIFY(!QFileInfo::exists(directory.filePath(QStringLiteral("split-robot3.plan"))));
@@ -846,7 +846,7 @@ class TestMainWindow : public QObject {
                  QStringLiteral("split-robot3_part_%1.plan").arg(1, last.size(), 10, QLatin1Char('0')));
         QCOMPARE(parts.last(), QStringLiteral("split-robot3_part_%1.plan").arg(last));
         const QString note = window.messageLog()->messages().last();
-        QVERIFY2(note.contains(QStringLiteral("more than its autopilot's 8")) &&
+        QVERIFY2(note.contains(QStringLiteral("more than its autopilot's 10")) &&
                      note.contains(parts.first() + QStringLiteral(" to ") + parts.last()),
                  qPrintable(note));
         // The status bar counts the parts and names the first and last, not each of them.

@@ -191,6 +191,22 @@ class VehicleSettingsDialogTest : public QObject {
         QCOMPARE(vehicles[1].turnaroundSeconds.value_or(-1.0), 120.0);
     }
 
+    // A distance between photos: none shown as "no camera"; robots follow the fleet's, one keeps its own.
+    void cameraTriggerInMetres() {
+        ui::VehicleSettingsDialog dialog(threeRobots());
+        auto* table = dialog.findChild<QTableWidget*>();
+        QCOMPARE(table->horizontalHeaderItem(6)->text(), QStringLiteral("Photo every (m)"));
+        QCOMPARE(cell<QDoubleSpinBox>(table, 0, 6)->text(), QStringLiteral("no camera"));
+        cell<QDoubleSpinBox>(table, 2, 6)->setValue(30.0); // beta's own
+        cell<QDoubleSpinBox>(table, 0, 6)->setValue(48.0);
+        QCOMPARE(cell<QDoubleSpinBox>(table, 1, 6)->value(), 48.0);
+        QCOMPARE(cell<QDoubleSpinBox>(table, 2, 6)->value(), 30.0);
+        QCOMPARE(dialog.exports().vehicle.cameraTriggerMetres, 48.0);
+        const auto vehicles = dialog.vehicles();
+        QVERIFY(!vehicles[0].cameraTriggerMetres);
+        QCOMPARE(vehicles[1].cameraTriggerMetres.value_or(-1.0), 30.0);
+    }
+
     // Values the boxes cannot show exactly come back unchanged: OK without an edit changes nothing.
     void untouchedValuesComeBackUnchanged() {
         Mission mission = threeRobots();
