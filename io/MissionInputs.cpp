@@ -12,7 +12,9 @@
 #include "io/PointsInDegrees.hpp"
 #include "io/internal/ClassTablePresets.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace mcpp::io {
 namespace {
@@ -454,6 +456,44 @@ Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names) 
     return {};
 }
 
+namespace {
+
+// The classes on the map the table makes obstacles, where every robot flies: the presets, made for ground
+// robots, make built-up land and water so, and drones then neither cover nor cross them without a word
+// (a coverage of 98.7 % hides a town).
+std::optional<std::string> impassableUnderAircraftNote(const LoadedRaster& raster, const ClassTable& classes,
+                                                       const std::vector<bool>& flyingRobots) {
+    if (flyingRobots.empty() || !std::all_of(flyingRobots.begin(), flyingRobots.end(), std::identity()))
+        return std::nullopt;
+    std::int64_t inside = 0;
+    for (const auto& [value, count] : raster.classPixelCounts)
+        inside += count;
+    const double pixelArea = raster.grid.pixelWidth * raster.grid.pixelHeight;
+    std::vector<std::string> named;
+    for (const auto& [value, count] : raster.classPixelCounts) {
+        const LandCoverClass* landCover = classes.find(value);
+        if (landCover == nullptr || landCover->isTraversable() || count == 0)
+            continue;
+        const std::string name = landCover->name.empty() ? "class " + std::to_string(value) : landCover->name;
+        named.push_back(name + " (" + formatArea(static_cast<double>(count) * pixelArea) + ", " +
+                        formatPercent(static_cast<double>(count) / static_cast<double>(inside)) +
+                        " of the map)");
+    }
+    if (named.empty())
+        return std::nullopt;
+    std::string list;
+    for (std::size_t i = 0; i < named.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == named.size() ? " and " : ", ") + named[i];
+    const bool one = named.size() == 1;
+    return "every robot flies, yet the class table makes " + list + (one ? " an obstacle" : " obstacles") +
+           ": the aircraft neither cover nor cross " + (one ? "it" : "them") + ". To cover " +
+           (one ? "it" : "one") + ", or to fly across " + (one ? "it" : "one") +
+           " to land beyond, make it passable (the class table's Passable column; in a mission file, "
+           "classes.table)";
+}
+
+} // namespace
+
 Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassTable& classes,
                                         bool missingClassesAsObstacles, std::vector<MapPoint> starts,
                                         const PlannerChoice& choice, const FieldNamer& names,
@@ -483,6 +523,9 @@ Result<PreparedProblem> planningProblem(const LoadedRaster& raster, const ClassT
     prepared.problem.classes = classes;
     prepared.problem.starts = std::move(starts);
     prepared.problem.planner = choice;
+    if (auto obstacles = impassableUnderAircraftNote(raster, classes, flyingRobots))
+        prepared.problem.notes.push_back(
+            {IssueSeverity::Information, "impassable-under-aircraft", std::move(*obstacles)});
     return prepared;
 }
 
