@@ -467,7 +467,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             options.cameraTriggerMetres = parseFiniteNumber(value);
             if (!options.cameraTriggerMetres || io::cameraTriggerProblem(*options.cameraTriggerMetres))
                 return failure("--camera-trigger: " + quoted(value) +
-                               " is not a distance between photos (0 for none, up to 10000 metres)");
+                               " is not a distance between photos (0 for none, or 0.1 to 10000 metres)");
         } else if (flag == "--fov-scale") {
             options.fieldOfViewScale = parseFiniteNumber(value);
             if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||
@@ -617,7 +617,9 @@ std::string CommandLine::usage() {
            "                           camera sees four times as wide as the table's ground robot; land\n"
            "                           covers keep their proportions (forest half as far as grass)\n"
            "  --fov M                  every class's field of view set to M metres: a drone camera's\n"
-           "                           footprint on the ground, the same over every land cover\n"
+           "                           footprint on the ground, the same over every land cover (for\n"
+           "                           photos overlapping side by side, the footprint times one less the\n"
+           "                           overlap: 42 for 30 % of a 60 m footprint)\n"
            "  --event T:ROBOT:FACTOR   from T seconds on, robot ROBOT (counted from 0: the first\n"
            "                           start, robot_1 in the outputs) drives at FACTOR times its speeds\n"
            "                           (0.5 half speed, 0 stopped); repeatable, added to the mission's\n"

@@ -462,6 +462,20 @@ bool exceedsFlightTime(const MissionPart& part, const VehicleSettings& vehicle) 
     return vehicle.flightTimeSeconds > 0.0 && part.seconds > vehicle.flightTimeSeconds;
 }
 
+std::int64_t missionPhotos(const AutopilotMission& mission, const VehicleSettings& vehicle) {
+    if (!(vehicle.cameraTriggerMetres > 0.0))
+        return 0;
+    std::int64_t photos = 0;
+    for (const MissionPart& part : mission.parts) {
+        double metres = 0.0;
+        for (std::size_t point = part.first + 1; point <= part.last; ++point)
+            metres += std::hypot(mission.points[point].x - mission.points[point - 1].x,
+                                 mission.points[point].y - mission.points[point - 1].y);
+        photos += static_cast<std::int64_t>(std::floor(metres / vehicle.cameraTriggerMetres)) + 2;
+    }
+    return photos;
+}
+
 MissionFlights missionFlights(const AutopilotMission& mission, const VehicleSettings& vehicle) {
     MissionFlights flights;
     for (const MissionPart& part : mission.parts) {

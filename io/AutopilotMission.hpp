@@ -5,6 +5,7 @@
 #include "io/Mission.hpp"
 #include "io/VehicleSettings.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -95,6 +96,10 @@ struct MissionFlights {
 // Whether a part takes longer than the vehicle's flight time (never without one, or with a speed unknown).
 [[nodiscard]] bool exceedsFlightTime(const MissionPart& part, const VehicleSettings& vehicle);
 [[nodiscard]] MissionFlights missionFlights(const AutopilotMission& mission, const VehicleSettings& vehicle);
+
+// About how many photos a camera set to vehicle.cameraTriggerMetres takes over the mission: in each part one
+// where it starts, one every so many metres along the waypoints and one where it stops; 0 without a camera.
+[[nodiscard]] std::int64_t missionPhotos(const AutopilotMission& mission, const VehicleSettings& vehicle);
 
 // How big a robot's waypoint files come out: what the results panel shows before anything is exported.
 struct MissionSize {

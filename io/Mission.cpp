@@ -974,6 +974,35 @@ void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSett
                              namedAltitudes(mission, vehicles, high) + ")"});
 }
 
+// Photos farther apart than the footprint the plan spaces its passes by (the smallest field of view of a
+// class robots cover) miss the ground between them along the path.
+void notePhotosFartherThanFootprint(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
+                                    const ClassTable& classes, std::vector<PlanIssue>& notes) {
+    double footprint = std::numeric_limits<double>::infinity();
+    for (const LandCoverClass& landCover : classes.classes())
+        if (landCover.isTraversable())
+            footprint = std::min(footprint, landCover.fieldOfViewMetres);
+    if (!std::isfinite(footprint))
+        return;
+    std::vector<std::size_t> over;
+    double longest = 0.0;
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
+        if (vehicles[robot].cameraTriggerMetres > footprint) {
+            over.push_back(robot);
+            longest = std::max(longest, vehicles[robot].cameraTriggerMetres);
+        }
+    if (over.empty())
+        return;
+    const std::string named = (over.size() == vehicles.size() ? "" : namedRobots(mission, over) + ", ") +
+                              "up to every " + formatQuantity(longest, 4) + " m";
+    notes.push_back({IssueSeverity::Warning, "photos-farther-than-footprint",
+                     "photos farther apart than the " + formatQuantity(footprint, 4) +
+                         " m field of view the passes are spaced by (" + named +
+                         "): the ground between two photos is missed; for 20 % overlap along the path, "
+                         "a photo every " +
+                         formatQuantity(0.8 * footprint, 4) + " m (--camera-trigger, camera_trigger_m)"});
+}
+
 // " (20 min)": the battery_s the mission gives the planner, or its default.
 std::string plannerBattery(const PlannerDescription& planner, const ParameterValues& given) {
     for (const ParameterSpec& spec : planner.parameters) {
@@ -1107,6 +1136,7 @@ void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     if (auto groundView = aircraftAtPresetFieldsOfViewNote(vehicles, problem.classes))
         problem.notes.push_back({IssueSeverity::Warning, "aircraft-at-ground-fov", std::move(*groundView)});
     noteAircraftAltitudes(mission, vehicles, problem.notes);
+    notePhotosFartherThanFootprint(mission, vehicles, problem.classes, problem.notes);
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))
         problem.notes.push_back(
             {IssueSeverity::Information, "batteries-from-flight-times", std::move(*batteries)});

@@ -472,7 +472,8 @@ std::optional<std::string> impassableUnderAircraftNote(const LoadedRaster& raste
     std::vector<std::string> named;
     for (const auto& [value, count] : raster.classPixelCounts) {
         const LandCoverClass* landCover = classes.find(value);
-        if (landCover == nullptr || landCover->isTraversable() || count == 0)
+        // Only those marked impassable: the Passable box is what the note asks to tick.
+        if (landCover == nullptr || landCover->passable || count == 0)
             continue;
         const std::string name = landCover->name.empty() ? "class " + std::to_string(value) : landCover->name;
         named.push_back(name + " (" + formatArea(static_cast<double>(count) * pixelArea) + ", " +
@@ -485,9 +486,12 @@ std::optional<std::string> impassableUnderAircraftNote(const LoadedRaster& raste
     for (std::size_t i = 0; i < named.size(); ++i)
         list += (i == 0 ? "" : i + 1 == named.size() ? " and " : ", ") + named[i];
     const bool one = named.size() == 1;
-    return "every robot flies, yet the class table makes " + list + (one ? " an obstacle" : " obstacles") +
-           ": the aircraft neither cover nor cross " + (one ? "it" : "them") + ". To cover " +
-           (one ? "it" : "one") + ", or to fly across " + (one ? "it" : "one") +
+    const bool alone = flyingRobots.size() == 1;
+    return std::string(alone ? "the robot flies" : "every robot flies") + ", yet the class table makes " +
+           list + (one ? " an obstacle" : " obstacles") +
+           (alone ? ": it neither covers nor crosses " : ": the aircraft neither cover nor cross ") +
+           (one ? "it" : "them") + ". To cover " + (one ? "it" : "one") + ", or to fly across " +
+           (one ? "it" : "one") +
            " to land beyond, make it passable (the class table's Passable column; in a mission file, "
            "classes.table)";
 }

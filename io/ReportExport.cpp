@@ -146,6 +146,8 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         item.add("vehicle", vehicleTypeKey(vehicle.type));
         item.add("max_waypoints", vehicle.maxWaypoints);
         item.add("flight_time_s", vehicle.flightTimeSeconds);
+        item.add("camera_trigger_m", vehicle.cameraTriggerMetres);
+        item.add("mission_photos", missionPhotos(mission, vehicle));
         item.add("mission_items", mission.items);
         item.add("mission_parts", static_cast<int>(mission.parts.size()));
         item.add("mission_time_s", mission.seconds);
@@ -245,7 +247,9 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
     std::string text = "robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,mission_parts,"
                        "turn_time_s,connector_time_s,flight_time_s,mission_flights_s,mission_longest_part_s,"
                        "mission_parts_over_flight_time,turnaround_s,mission_field_s";
-    text += sorties == nullptr ? "\n" : ",sorties,charges,charging_s,longest_sortie_s,out_of_range_area_m2\n";
+    // The camera's columns last, after any sortie columns: added later, where readers by place miss them.
+    text += sorties == nullptr ? "" : ",sorties,charges,charging_s,longest_sortie_s,out_of_range_area_m2";
+    text += ",camera_trigger_m,mission_photos\n";
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
         const VehicleSettings& vehicle = context.vehicle(robot.robot);
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
@@ -266,7 +270,8 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
                 internal::formatShortest(flights.fieldSeconds);
         if (sorties != nullptr)
             text += sortieColumns(context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
-        text += "\n";
+        text += "," + internal::formatShortest(vehicle.cameraTriggerMetres) + "," +
+                std::to_string(missionPhotos(mission, vehicle)) + "\n";
     }
     return internal::writeFileAtomically(path, text, Sync::BySystem);
 }

@@ -99,9 +99,9 @@ std::optional<std::string> turnaroundProblem(double seconds) {
 }
 
 std::optional<std::string> cameraTriggerProblem(double metres) {
-    if (metres >= 0.0 && metres <= maximumCameraTriggerMetres)
+    if (metres == 0.0 || (metres >= minimumCameraTriggerMetres && metres <= maximumCameraTriggerMetres))
         return std::nullopt;
-    return "must be 0 (no camera commands) or a distance between photos of up to 10000 m, not " +
+    return "must be 0 (no camera commands) or a distance between photos of 0.1 to 10000 m, not " +
            formatQuantity(metres, 12) + " m";
 }
 

@@ -130,9 +130,10 @@ constexpr double maximumTurnaroundSeconds = 24.0 * 3600.0;
 // What is wrong with a turnaround time: 0 to 24 h.
 [[nodiscard]] std::optional<std::string> turnaroundProblem(double seconds);
 
-// The longest distance between two photos a camera may be given.
+// The shortest and longest distances between two photos a camera may be given.
+constexpr double minimumCameraTriggerMetres = 0.1;
 constexpr double maximumCameraTriggerMetres = 10000.0;
-// What is wrong with a distance between photos: 0 (no camera commands) to 10 km.
+// What is wrong with a distance between photos: 0 (no camera commands), or 0.1 m to 10 km.
 [[nodiscard]] std::optional<std::string> cameraTriggerProblem(double metres);
 
 } // namespace mcpp::io

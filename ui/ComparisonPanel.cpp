@@ -67,13 +67,12 @@ QTableWidgetItem* timeItem(double seconds, double unitSeconds, int readingGroup)
 }
 
 // When the team is done (io::doneAfterSeconds), so that sorting by Home reads as batch mode lists the plans:
-// for a plan without flights, whose robots are done when their paths end, its makespan, greyed.
+// for a plan not timed in the field (no flights, or a battery plan's sorties), its makespan, greyed.
 QTableWidgetItem* homeItem(const io::ComparisonRow& row, double unitSeconds, int readingGroup) {
     QTableWidgetItem* item = timeItem(io::doneAfterSeconds(row), unitSeconds, readingGroup);
     if (!row.metrics.timedInTheField()) {
         item->setForeground(QApplication::palette().brush(QPalette::Disabled, QPalette::Text));
-        item->setToolTip(
-            QObject::tr("No flights: its robots are done when their paths end, at its makespan"));
+        item->setToolTip(QObject::tr("Not timed in the field: done when its paths end, at its makespan"));
     }
     return item;
 }
@@ -120,7 +119,7 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
         {tr("Home h"),
          tr("Where flights split the missions: when the last robot is home, its flights and the "
             "turnarounds between them included, in hours (in days where the makespan header says Days); "
-            "for a plan without flights, its makespan, greyed")},
+            "for a plan not timed in the field, its makespan, greyed")},
         {tr("x 1st"),
          tr("Time done divided by the first plan's (in bold): how much longer the team waits with this one; "
             "none for a plan covering less than the most, or one timing its robots at the class table's "

@@ -174,7 +174,7 @@ VehicleSettingsDialog::Row VehicleSettingsDialog::addRow(int row, const QString&
     widgets.turnaround->setDecimals(3);
     widgets.cameraTrigger = new QDoubleSpinBox(table_);
     widgets.cameraTrigger->setRange(0.0, io::maximumCameraTriggerMetres);
-    widgets.cameraTrigger->setDecimals(3);
+    widgets.cameraTrigger->setDecimals(1); // the least distance but none: 0.1 m
     widgets.cameraTrigger->setSpecialValueText(tr("no camera"));
     show(widgets, settings);
     // The Default row's altitude stays open: robots that are aircraft of their own inherit it.
@@ -219,7 +219,9 @@ io::VehicleSettings VehicleSettingsDialog::settingsOf(const Row& row) {
     settings.maxWaypoints = row.maxWaypoints->value();
     settings.flightTimeSeconds = secondsIn(row.flightTime, row.flightSeconds, row.flightMinutesShown);
     settings.turnaroundSeconds = secondsIn(row.turnaround, row.turnaroundSeconds, row.turnaroundMinutesShown);
-    settings.cameraTriggerMetres = row.cameraTrigger->value();
+    settings.cameraTriggerMetres = row.cameraTrigger->value() == row.cameraTriggerShown
+                                       ? row.cameraTriggerMetres
+                                       : row.cameraTrigger->value();
     return settings;
 }
 
@@ -235,6 +237,8 @@ void VehicleSettingsDialog::show(Row& row, const io::VehicleSettings& settings) 
     row.turnaroundSeconds = settings.turnaroundSeconds;
     row.turnaroundMinutesShown = row.turnaround->value();
     row.cameraTrigger->setValue(settings.cameraTriggerMetres);
+    row.cameraTriggerMetres = settings.cameraTriggerMetres;
+    row.cameraTriggerShown = row.cameraTrigger->value();
 }
 
 void VehicleSettingsDialog::followDefaults() {

@@ -43,6 +43,10 @@ class VehicleSettingsDialog : public QDialog {
         double turnaroundSeconds = 0.0;
         double turnaroundMinutesShown = 0.0;
         QDoubleSpinBox* cameraTrigger = nullptr; // metres between photos; 0: no camera commands
+        // The distance as given and as the box shows it, to a tenth of a metre: 12.25 m left as shown
+        // stays 12.25 m.
+        double cameraTriggerMetres = 0.0;
+        double cameraTriggerShown = 0.0;
     };
 
     Row addRow(int row, const QString& name, const io::VehicleSettings& settings);

@@ -19,6 +19,7 @@
 #include "core/planners/UncoveredLand.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace mcpp {
@@ -466,6 +467,39 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
         keepSooner(planOnce(planner, problem, given,
                             progress.within("field time balance", 1.0 - roundShare, 1.0),
                             {flown, flown, &cells, false}));
+    }
+    // Weighed cells and measured paces both move the border by what the plan before them flew; where
+    // neither evened the robots out, the division on the paths alone is tried, and from it divisions with
+    // each robot's path weighed by its pace in the field as flown, half way from the pace its division
+    // counted: the pace grows with the ground taken from another robot (farther out, dearer trips), so the
+    // whole step overshoots.
+    if (!evenInTheField(bestField)) {
+        constexpr int pathPaceRounds = 4;
+        const auto onPaths = [&](std::vector<double> paces) {
+            return planOnce(planner, problem, given,
+                            progress.within("field time balance", 1.0 - roundShare, 1.0),
+                            {paces, paces, &cells, false});
+        };
+        Plan current = onPaths({});
+        std::vector<double> counted(current.paths.size(), 1.0);
+        for (int round = 0; round < pathPaceRounds; ++round) {
+            const std::vector<double> currentField = fieldTimesOf(current.metrics);
+            if (evenInTheField(currentField))
+                break;
+            std::vector<double> paces = fieldPacesFlown(current, currentField);
+            paces.resize(counted.size(), 1.0);
+            for (std::size_t robot = 0; robot < paces.size(); ++robot)
+                paces[robot] = std::sqrt(paces[robot] * counted[robot]);
+            Plan next = onPaths(paces);
+            if (!(longestOf(fieldTimesOf(next.metrics)) < longestOf(currentField))) {
+                keepSooner(std::move(next));
+                break;
+            }
+            keepSooner(std::move(current));
+            current = std::move(next);
+            counted = std::move(paces);
+        }
+        keepSooner(std::move(current));
     }
     // The plans made and dropped took time too: the report's timings add up to what the user waited.
     if (dropped > 0.0)

@@ -8,6 +8,7 @@
 #include "tests/support/SyntheticMaps.hpp"
 
 #include <QtTest>
+#include <cmath>
 #include <tuple>
 
 using namespace mcpp;
@@ -86,6 +87,30 @@ class MlctPlannerTest : public QObject {
                 std::tuple(built.column, built.row, built.span, built.freeSubCells,
                            built.turnSecondsPer90Degrees));
         }
+    }
+
+    // A robot whose pace in the field grows with its share (farther out, each flight spends more of itself
+    // on the way there and back): a whole step to the pace measured on one plan overshoots on the next.
+    // Half steps from the division on the paths bring the two home together all the same.
+    void aPaceGrowingWithTheShareIsEvenedOutInSteps() {
+        auto problem = test::uniformProblem(30, 30, 10.0, {}, {});
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0), test::pixelCentre(problem.grid, 29, 29)};
+        const Plan onPaths = MlctPlanner{}.plan(problem, {});
+        const double half = onPaths.paths[0].timeSeconds;
+        const auto fartherDearer = [half](const Plan& plan) {
+            const double path = plan.paths[0].timeSeconds;
+            return std::vector<double>{path * std::pow(path / half, 1.0) * 3.0, plan.paths[1].timeSeconds};
+        };
+        problem.fieldSeconds = fartherDearer;
+        const Plan inTheField = MlctPlanner{}.plan(problem, {});
+        const auto violations = test::checkAllInvariants(problem, inTheField);
+        QVERIFY2(violations.empty(), test::describe(violations).c_str());
+        const std::vector<double> after = fartherDearer(inTheField);
+        const std::vector<double> before = fartherDearer(onPaths);
+        QVERIFY(std::max(after[0], after[1]) < 0.5 * std::max(before[0], before[1]));
+        QCOMPARE(inTheField.metrics.fieldMakespanSeconds, std::max(after[0], after[1]));
+        QVERIFY2(std::max(after[0], after[1]) <= 1.03 * std::min(after[0], after[1]),
+                 qPrintable(QString("%1 %2").arg(after[0]).arg(after[1])));
     }
 
     void plansAroundALake() {

@@ -282,6 +282,36 @@ class MissionFilesTest : public QObject {
                  refused.error().c_str());
     }
 
+    // Photos farther apart than the footprint the passes are spaced by leave ground unphotographed along the
+    // path: a warning names the distance and what gives 20 % overlap; within it, none.
+    void photosFartherThanTheFootprintAreWarnedOf() {
+        Mission mission = sampleMission();
+        PlanningProblem problem;
+        problem.classes = ClassTable({{1, "grass", 0x00ff00, 1.5, 60.0, true},
+                                      {2, "forest", 0x008000, 0.5, 80.0, true},
+                                      {3, "water", 0x0000ff, 0.0, 10.0, false}});
+        const auto photoNotes = [&] {
+            PlanningProblem planned = problem;
+            applyRobotSettings(mission, planned);
+            std::vector<std::string> found;
+            for (const PlanIssue& note : planned.notes)
+                if (note.code == "photos-farther-than-footprint")
+                    found.push_back(note.message);
+            return found;
+        };
+        mission.exports.vehicle.cameraTriggerMetres = 48.0;
+        for (RobotSpec& robot : mission.robots)
+            robot.vehicle.cameraTriggerMetres.reset();
+        QVERIFY(photoNotes().empty());
+        mission.robots[1].vehicle.cameraTriggerMetres = 75.0; // beyond the grass's 60 m, within the forest's
+        const std::vector<std::string> notes = photoNotes();
+        QCOMPARE(notes.size(), std::size_t{1});
+        QVERIFY2(notes[0].find("photos farther apart than the 60 m field of view") != std::string::npos &&
+                     notes[0].find("up to every 75 m") != std::string::npos &&
+                     notes[0].find("a photo every 48 m") != std::string::npos,
+                 notes[0].c_str());
+    }
+
     // A cruise speed the whole fleet shares is what the plan uses over every passable class; speeds that
     // differ leave the class table's and say why.
     void fleetCruiseSpeedIsPlannedWith() {
@@ -289,7 +319,8 @@ class MissionFilesTest : public QObject {
         for (RobotSpec& robot : mission.robots)
             robot.vehicle.cruiseSpeedMetresPerSecond.reset();
         mission.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
-        mission.robots[1].vehicle.type.reset(); // rovers all, until the end
+        mission.robots[1].vehicle.type.reset();                // rovers all, until the end
+        mission.robots[1].vehicle.cameraTriggerMetres.reset(); // no photos to space
         PlanningProblem problem;
         problem.classes = ClassTable({{1, "grass", 0x00ff00, 1.5, 10.0, true},
                                       {2, "forest", 0x008000, 0.5, 5.0, true},

@@ -878,11 +878,23 @@ class PlanExportTest : public QObject {
         QCOMPARE(header, std::string("robot,name,cells,area_m2,length_m,time_s,turns,cost_s,mission_items,"
                                      "mission_parts,turn_time_s,connector_time_s,flight_time_s,"
                                      "mission_flights_s,mission_longest_part_s,"
-                                     "mission_parts_over_flight_time,turnaround_s,mission_field_s"));
+                                     "mission_parts_over_flight_time,turnaround_s,mission_field_s,"
+                                     "camera_trigger_m,mission_photos"));
         std::getline(input, line);
         // Home, the first speed and five turning points (the straight top run's two inner points go).
-        // No flight time: one part of the whole time, none over, no turnarounds.
-        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1,0,0,0,80,80,0,0,80"));
+        // No flight time: one part of the whole time, none over, no turnarounds; no camera.
+        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1,0,0,0,80,80,0,0,80,0,0"));
+        QCOMPARE(robots[0].toObject()["mission_photos"].toInt(), 0);
+
+        // A photo every 15 m along the 40 m path: one at the start, at 15 and 30 m, and one at the stop;
+        // the camera's two items on top of the mission's.
+        ExportSettings camera;
+        camera.vehicle.cameraTriggerMetres = 15.0;
+        QVERIFY(writeReportJson(context(camera), path).ok());
+        const QJsonObject photographed = readJson(path)["robots"].toArray()[0].toObject();
+        QCOMPARE(photographed["camera_trigger_m"].toDouble(), 15.0);
+        QCOMPARE(photographed["mission_photos"].toInt(), 4);
+        QCOMPARE(photographed["mission_items"].toInt(), 9);
     }
 
     void turningPointsDropOnlyCollinearPoints() {

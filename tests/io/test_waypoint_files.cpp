@@ -378,7 +378,11 @@ class WaypointFilesTest : public QObject {
             QCOMPARE(stop[0].toDouble(), 0.0);
             QCOMPARE(stop[2].toDouble(), 1.0); // and a last photo there, as QGroundControl stops it
             QVERIFY(keysOf(items[3].toObject()) == keysOf(sampleCameraItem));
-            waypoints += std::count(commands.begin(), commands.end(), 16);
+            // Exactly the items the limit counted: home, takeoff, speed, the camera's two and the return,
+            // beside the waypoints (one speed along the whole path).
+            const auto partWaypoints = std::count(commands.begin(), commands.end(), 16);
+            QCOMPARE(items.size() + 1, 6 + partWaypoints);
+            waypoints += partWaypoints;
         }
         // The second part begins where the first ended: one waypoint in both.
         QCOMPARE(waypoints, static_cast<qsizetype>(plan_.paths[0].waypoints.size()) + 1);

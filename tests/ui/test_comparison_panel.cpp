@@ -62,11 +62,11 @@ class ComparisonPanelTest : public QObject {
         const int flownRow = panel.rowOfPlanner("mcpp-mlct");
         QVERIFY(flownRow >= 0);
         QCOMPARE(table->item(flownRow, homeColumn)->data(Qt::DisplayRole).toDouble(), 10.0);
-        // No flights: done when its paths end, at its makespan, greyed and said so.
+        // Not timed in the field: done when its paths end, at its makespan, greyed and said so.
         const QTableWidgetItem* walkedHome = table->item(panel.rowOfPlanner("darp"), homeColumn);
         QVERIFY(walkedHome != nullptr);
         QCOMPARE(walkedHome->text(), QStringLiteral("2.50"));
-        QVERIFY(walkedHome->toolTip().contains(QStringLiteral("No flights")));
+        QVERIFY(walkedHome->toolTip().contains(QStringLiteral("Not timed in the field")));
         QVERIFY(table->item(flownRow, homeColumn)->toolTip().isEmpty());
         QCOMPARE(table->item(panel.rowOfPlanner("mstc"), homeColumn), nullptr);
 

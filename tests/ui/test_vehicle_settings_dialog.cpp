@@ -213,8 +213,9 @@ class VehicleSettingsDialogTest : public QObject {
         mission.exports.speedTolerance = 0.1234;
         mission.exports.vehicle.altitudeMetres = 30.125;
         mission.exports.vehicle.maxWaypoints = 0;
-        mission.exports.vehicle.flightTimeSeconds = 1000.0; // 16.667 min in the box
-        mission.exports.vehicle.turnaroundSeconds = 100.0;  // 1.667 min
+        mission.exports.vehicle.flightTimeSeconds = 1000.0;  // 16.667 min in the box
+        mission.exports.vehicle.turnaroundSeconds = 100.0;   // 1.667 min
+        mission.exports.vehicle.cameraTriggerMetres = 12.25; // 12.3 m
         ui::VehicleSettingsDialog dialog(mission);
         QVERIFY(dialog.exports() == mission.exports);
         const auto vehicles = dialog.vehicles();
