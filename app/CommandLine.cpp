@@ -467,7 +467,8 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             options.cameraTriggerMetres = parseFiniteNumber(value);
             if (!options.cameraTriggerMetres || io::cameraTriggerProblem(*options.cameraTriggerMetres))
                 return failure("--camera-trigger: " + quoted(value) +
-                               " is not a distance between photos (0 for none, or 0.1 to 10000 metres)");
+                               " is not a distance between photos (a number of metres without a unit: 0 for "
+                               "none, or 0.1 to 10000)");
         } else if (flag == "--fov-scale") {
             options.fieldOfViewScale = parseFiniteNumber(value);
             if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||

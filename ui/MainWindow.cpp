@@ -1327,8 +1327,11 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
 bool MainWindow::openMission(const QString& path) {
     auto loaded = io::loadMission(path.toStdString());
     if (!loaded.ok()) {
+        // The reader's errors name the file already: said once.
+        const QString error = QString::fromStdString(loaded.error());
         reportError(tr("Cannot open mission"),
-                    tr("Cannot open mission %1: %2").arg(path, QString::fromStdString(loaded.error())));
+                    tr("Cannot open mission %1")
+                        .arg(error.startsWith(path) ? error : path + QStringLiteral(": ") + error));
         return false;
     }
     io::Mission mission = std::move(loaded.value());

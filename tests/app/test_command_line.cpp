@@ -311,9 +311,10 @@ void TestCommandLine::errors_data() {
     QTest::newRow("--turnaround of two days")
         << words("--batch m.json --out o --turnaround 48h")
         << "--turnaround \"48h\": must be a time on the ground of 0 to 24 h (0 to 86400 s), not 172800 s";
-    QTest::newRow("--camera-trigger negative")
-        << words("--batch m.json --out o --camera-trigger -5")
-        << "--camera-trigger: \"-5\" is not a distance between photos (0 for none, or 0.1 to 10000 metres)";
+    QTest::newRow("--camera-trigger negative") << words("--batch m.json --out o --camera-trigger -5")
+                                               << "--camera-trigger: \"-5\" is not a distance between photos "
+                                                  "(a number of metres without a unit: 0 for none, or 0.1 "
+                                                  "to 10000)";
     QTest::newRow("--turnaround without a number")
         << words("--batch m.json --out o --turnaround soon")
         << "--turnaround: \"soon\" is not a duration (seconds, or a "
