@@ -393,7 +393,7 @@ PlanningProblem BatchRunner::prepareProblem() {
         valueOrBadInput(io::planningProblem(raster_, classes_, mission_.missingClassesAsObstacles, starts_,
                                             mission_.planner, fieldNamer(), io::flyingRobots(mission_)));
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
-    io::applyRobotSettings(mission_, prepared.problem);
+    io::applyRobotSettings(mission_, raster_, prepared.problem);
     prepared.problem.chargers = chargers_; // its notes are said with the plan (sayMissionNotes)
     return std::move(prepared.problem);
 }

@@ -53,13 +53,13 @@ std::string fieldFigure(const ComparisonRow& row, double seconds) {
     return inTheField(row) ? formatShortest(seconds) : std::string();
 }
 
-// Why a planned row is ranked after the plans timed alike (ComparisonRanking's reading groups 1 and 2), in
-// words scripts can match; empty for those.
+// Why a planned row is ranked after the plans timed alike (ComparisonRanking's ReadingGroup), in words
+// scripts can match; empty for those.
 std::string rankedApart(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
     switch (readingGroup(row, rows)) {
-    case 1:
+    case ReadingGroup::OwnSpeedsIgnored:
         return "own_speeds_ignored";
-    case 2:
+    case ReadingGroup::CoversLess:
         return "covers_less";
     default:
         return {};

@@ -42,22 +42,22 @@ bool timedUnlikeTheOthers(const ComparisonRow& row, const std::vector<Comparison
     return planned(row) && row.metrics.ownSpeedsIgnored && someKeepOwnSpeeds(rows, mostCovered(rows));
 }
 
-int readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
+ReadingGroup readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
     switch (row.outcome) {
     case ComparisonRow::Outcome::Planned:
         if (coversLessThanMost(row, mostCovered(rows)))
-            return 2;
-        return timedUnlikeTheOthers(row, rows) ? 1 : 0;
+            return ReadingGroup::CoversLess;
+        return timedUnlikeTheOthers(row, rows) ? ReadingGroup::OwnSpeedsIgnored : ReadingGroup::TimedAlike;
     case ComparisonRow::Outcome::Failed:
-        return 3;
+        return ReadingGroup::Failed;
     case ComparisonRow::Outcome::Skipped:
         break;
     }
-    return 4;
+    return ReadingGroup::Skipped;
 }
 
 std::vector<std::size_t> rankedRows(const std::vector<ComparisonRow>& rows) {
-    std::vector<int> groups;
+    std::vector<ReadingGroup> groups;
     for (const ComparisonRow& row : rows)
         groups.push_back(readingGroup(row, rows));
     std::vector<std::size_t> order(rows.size());
@@ -94,7 +94,7 @@ std::vector<double> timesTheFirst(const std::vector<ComparisonRow>& rows) {
     if (first <= 0.0)
         return times;
     for (std::size_t index = 0; index < rows.size(); ++index)
-        if (readingGroup(rows[index], rows) == 0)
+        if (readingGroup(rows[index], rows) == ReadingGroup::TimedAlike)
             times[index] = doneAfterSeconds(rows[index]) / first;
     return times;
 }

@@ -26,9 +26,15 @@ inline constexpr double coverageShortfall = 0.005;
 // keeps their own (PlanMetrics::ownSpeedsIgnored): its times are not to be set beside that plan's.
 [[nodiscard]] bool timedUnlikeTheOthers(const ComparisonRow& row, const std::vector<ComparisonRow>& rows);
 
-// Where a row is read: 0 planned, covering the most and timed like the others; 1 timed unlike them; 2
-// covering less than the most; 3 failed; 4 skipped.
-[[nodiscard]] int readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows);
+// Where a row is read, in this order: the plans covering the most and timed like the others first.
+enum class ReadingGroup {
+    TimedAlike,       // planned, covering the most, timed like the others: ranked by time done
+    OwnSpeedsIgnored, // planned at the class table's speeds where others keep the robots' own
+    CoversLess,       // planned, covering less than the most by more than coverageShortfall
+    Failed,
+    Skipped,
+};
+[[nodiscard]] ReadingGroup readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows);
 
 // The rows' indices in reading order: by reading group, planned rows in a group by time done (ties by
 // planning time, then as given), failed and skipped rows as given.
@@ -38,8 +44,9 @@ inline constexpr double coverageShortfall = 0.005;
 [[nodiscard]] std::vector<int> ranksOf(const std::vector<ComparisonRow>& rows);
 
 // Each row's time done divided by the first-ranked plan's: the one figure that compares plans, where each
-// ratio is to the plan's own bound (its own cells and turns). 0 outside reading group 0 (a plan covering
-// less is smaller, not slower; one timed unlike the others is not timed alike), or the first done at once.
+// ratio is to the plan's own bound (its own cells and turns). 0 outside ReadingGroup::TimedAlike (a plan
+// covering less is smaller, not slower; one timed unlike the others is not timed alike), or the first done at
+// once.
 [[nodiscard]] std::vector<double> timesTheFirst(const std::vector<ComparisonRow>& rows);
 
 } // namespace mcpp::io

@@ -46,6 +46,9 @@ struct RasterLoadOptions {
     std::int64_t pixelBudget = 32'000'000; // above this, read a coarser level and say so
 };
 
+// The class values with pixels inside the area planned, in ascending order: the classes taking part.
+[[nodiscard]] std::vector<std::int32_t> presentClassValues(const LoadedRaster& raster);
+
 [[nodiscard]] Result<LoadedRaster> loadLandCoverRaster(const std::string& path,
                                                        const RasterLoadOptions& options = {});
 

@@ -1,5 +1,6 @@
 #include "io/Mission.hpp"
 
+#include "core/decomposition/FieldOfViewRounding.hpp"
 #include "core/model/BatteryEndurance.hpp"
 #include "core/model/HumanUnits.hpp"
 #include "core/model/NameSuggestion.hpp"
@@ -10,6 +11,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/LoadedRaster.hpp"
 #include "io/internal/ClassTableJson.hpp"
 #include "io/internal/EventsJson.hpp"
 #include "io/internal/GdalSupport.hpp"
@@ -23,11 +25,13 @@
 #include <QJsonParseError>
 #include <QJsonValue>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <set>
+#include <string_view>
 
 namespace mcpp::io {
 
@@ -101,6 +105,45 @@ class MissionReader {
         return path + "[" + std::to_string(position) + "]";
     }
 
+    // A number written as text, with or without a unit ("48 m", "20 min"): what to write instead, in the
+    // unit the key's name ends in; none for other text.
+    static std::optional<std::string> numberInTextHint(const std::string& path, const std::string& text) {
+        const auto endsWith = [&path](std::string_view suffix) {
+            return path.size() > suffix.size() &&
+                   path.compare(path.size() - suffix.size(), suffix.size(), suffix.data()) == 0;
+        };
+        const std::string found = "found the text \"" + text + "\": write ";
+        if (endsWith("_s")) {
+            if (const auto seconds = parseDuration(text))
+                return "expected a number of seconds, " + found + formatQuantity(*seconds) + " for " +
+                       formatDuration(*seconds);
+        }
+        const std::size_t begin = text.find_first_not_of(' ');
+        double number = 0.0;
+        const char* first = text.data() + (begin == std::string::npos ? text.size() : begin);
+        const auto [end, error] = std::from_chars(first, text.data() + text.size(), number);
+        if (error != std::errc() || !std::isfinite(number))
+            return std::nullopt;
+        const std::string unit = endsWith("_mps") ? "metres per second"
+                                 : endsWith("_m") ? "metres"
+                                 : endsWith("_s") ? "seconds"
+                                                  : "";
+        const std::string expected =
+            "expected a number" + (unit.empty() ? std::string() : " of " + unit) + ", ";
+        std::string written(end, text.data() + text.size());
+        written.erase(0, written.find_first_not_of(' '));
+        written.erase(written.find_last_not_of(' ') + 1);
+        const std::set<std::string> sameUnit =
+            unit == "metres"              ? std::set<std::string>{"m", "metres", "meters"}
+            : unit == "metres per second" ? std::set<std::string>{"m/s", "mps"}
+                                          : std::set<std::string>{};
+        if (!written.empty() && sameUnit.count(written) == 0)
+            return expected + "found the text \"" + text + "\": give it in " +
+                   (unit.empty() ? "numbers" : unit) + ", without quotes or a unit";
+        return expected + found + formatQuantity(number, 12) +
+               (unit.empty() ? " without quotes" : ", without quotes or a unit (the key's name gives it)");
+    }
+
     bool object(const QJsonValue& value, const std::string& path, QJsonObject& out) {
         if (!value.isObject())
             return wrongType(path, value, "an object");
@@ -120,11 +163,9 @@ class MissionReader {
         return true;
     }
     bool number(const QJsonValue& value, const std::string& path, double& out) {
-        if (value.isString() && path.size() > 2 && path.compare(path.size() - 2, 2, "_s") == 0) {
-            const std::string text = value.toString().toStdString();
-            if (const auto seconds = parseDuration(text))
-                return fail(path, "expected a number of seconds, found the text \"" + text + "\": write " +
-                                      formatQuantity(*seconds) + " for " + formatDuration(*seconds));
+        if (value.isString()) {
+            if (const auto hint = numberInTextHint(path, value.toString().toStdString()))
+                return fail(path, *hint);
         }
         if (!value.isDouble() || !std::isfinite(value.toDouble()))
             return wrongType(path, value, "a number");
@@ -894,20 +935,19 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
 // the table as it is: fields of view are the classes', not the robots') and every passable class's FOV is
 // one preset's.
 std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<VehicleSettings>& vehicles,
-                                                            const ClassTable& classes) {
+                                                            const ClassTable& classes,
+                                                            const std::vector<std::int32_t>& present) {
     if (vehicles.empty() ||
         !std::all_of(vehicles.begin(), vehicles.end(),
                      [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
         return std::nullopt;
-    std::vector<const LandCoverClass*> passable;
-    for (const LandCoverClass& landCover : classes.classes())
-        if (landCover.isTraversable())
-            passable.push_back(&landCover);
-    if (passable.empty())
+    const std::optional<double> smallest = smallestFieldOfView(classes, present);
+    if (!smallest)
         return std::nullopt;
-    double smallest = std::numeric_limits<double>::infinity();
-    for (const LandCoverClass* landCover : passable)
-        smallest = std::min(smallest, landCover->fieldOfViewMetres);
+    std::vector<const LandCoverClass*> passable;
+    for (const std::int32_t value : present)
+        if (const LandCoverClass* landCover = classes.find(value); landCover && landCover->isTraversable())
+            passable.push_back(landCover);
     for (const PresetInfo& preset : classTablePresets()) {
         const Result<ClassTable> table = presetClassTable(preset.name);
         if (!table.ok())
@@ -919,7 +959,7 @@ std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<Ve
             });
         if (asInPreset)
             return "aircraft see as far as the class table's fields of view, which are preset " +
-                   preset.name + "'s, a ground robot's (the smallest " + formatQuantity(smallest, 4) +
+                   preset.name + "'s, a ground robot's (the smallest " + formatQuantity(*smallest, 4) +
                    " m, so passes as close as that): scale them to the camera's footprint on the ground "
                    "(--fov or a mission's classes.fov_m for one footprint over every class, --fov-scale, or "
                    "in the window select the classes, Edit selected…, Scale FOVs)";
@@ -977,13 +1017,12 @@ void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSett
 // Photos farther apart than the footprint the plan spaces its passes by (the smallest field of view of a
 // class robots cover) miss the ground between them along the path.
 void notePhotosFartherThanFootprint(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
-                                    const ClassTable& classes, std::vector<PlanIssue>& notes) {
-    double footprint = std::numeric_limits<double>::infinity();
-    for (const LandCoverClass& landCover : classes.classes())
-        if (landCover.isTraversable())
-            footprint = std::min(footprint, landCover.fieldOfViewMetres);
-    if (!std::isfinite(footprint))
+                                    const ClassTable& classes, const std::vector<std::int32_t>& present,
+                                    std::vector<PlanIssue>& notes) {
+    const std::optional<double> smallest = smallestFieldOfView(classes, present);
+    if (!smallest)
         return;
+    const double footprint = *smallest;
     std::vector<std::size_t> over;
     double longest = 0.0;
     for (std::size_t robot = 0; robot < vehicles.size(); ++robot)
@@ -1125,7 +1164,7 @@ FieldTimeInputs fieldTimeInputs(const Mission& mission) {
             exports.mergeCollinear};
 }
 
-void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
+void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, PlanningProblem& problem) {
     problem.batterySeconds = robotBatteries(mission);
     problem.events = mission.events;
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
@@ -1133,10 +1172,11 @@ void applyRobotSettings(const Mission& mission, PlanningProblem& problem) {
     problem.robotFlights = flightLimitsOf(mission, vehicles);
     problem.flyingRobots = flyingRobots(mission);
     applyCruiseSpeed(mission, vehicles, problem);
-    if (auto groundView = aircraftAtPresetFieldsOfViewNote(vehicles, problem.classes))
+    const std::vector<std::int32_t> present = presentClassValues(raster);
+    if (auto groundView = aircraftAtPresetFieldsOfViewNote(vehicles, problem.classes, present))
         problem.notes.push_back({IssueSeverity::Warning, "aircraft-at-ground-fov", std::move(*groundView)});
     noteAircraftAltitudes(mission, vehicles, problem.notes);
-    notePhotosFartherThanFootprint(mission, vehicles, problem.classes, problem.notes);
+    notePhotosFartherThanFootprint(mission, vehicles, problem.classes, present, problem.notes);
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))
         problem.notes.push_back(
             {IssueSeverity::Information, "batteries-from-flight-times", std::move(*batteries)});

@@ -17,6 +17,8 @@
 
 namespace mcpp::io {
 
+struct LoadedRaster;
+
 struct RobotSpec {
     std::string name;
     MapPoint start;
@@ -125,8 +127,9 @@ struct FieldTimeInputs {
 // What a planning problem takes from the mission beside the map and the starts: the robots' batteries, the
 // events and, when the whole fleet cruises at one speed, that speed over every passable class in place of
 // the land cover's (a drone's speed does not follow the ground under it), so that plan times are the
-// vehicles' (the problem's notes then say so). The one place batch and window runs fill them.
-void applyRobotSettings(const Mission& mission, PlanningProblem& problem);
+// vehicles' (the problem's notes then say so). The one place batch and window runs fill them. The raster the
+// problem was made of tells which classes take part.
+void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, PlanningProblem& problem);
 
 // The same from the file's text; path names it in messages and anchors a relative raster path.
 [[nodiscard]] Result<Mission> parseMission(const std::string& text, const std::string& path);

@@ -171,6 +171,43 @@ Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& ra
 
 namespace {
 
+// A billionth of a degree is a tenth of a millimetre.
+double roundedToBillionths(double value) {
+    return std::round(value * 1e9) / 1e9;
+}
+
+} // namespace
+
+RobotSpec robotAsWritten(RobotSpec robot, const GeoReference& georeference) {
+    const auto written = [&](MapPoint point, bool inStartCrs) -> std::optional<MapPoint> {
+        MapPoint converted = georeference.toCrsUnits(point);
+        if (inStartCrs) {
+            const auto transformed = georeference.toCrs(robot.startCrs, point);
+            if (!transformed.ok())
+                return std::nullopt;
+            converted = transformed.value();
+        }
+        return MapPoint{roundedToBillionths(converted.x), roundedToBillionths(converted.y)};
+    };
+    const auto writeIn = [&](bool inStartCrs) {
+        const std::optional<MapPoint> start = written(robot.start, inStartCrs);
+        const std::optional<MapPoint> charger =
+            robot.charger ? written(*robot.charger, inStartCrs) : std::nullopt;
+        if (!start || (robot.charger && !charger))
+            return false;
+        robot.start = *start;
+        robot.charger = charger;
+        return true;
+    };
+    if (robot.startCrs.empty() || !writeIn(true)) {
+        robot.startCrs.clear(); // none given, or one the map's points do not go into
+        writeIn(false);
+    }
+    return robot;
+}
+
+namespace {
+
 // A point of a robot (its start or charger) in the planning frame: from its start_crs when it has one,
 // else from the units the caller reads starts in.
 Result<MapPoint> toPlanningFrame(const RobotSpec& spec, MapPoint point, const LoadedRaster& raster,

@@ -99,6 +99,12 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
                                                                            StartUnits units,
                                                                            const FieldNamer& names);
 
+// A robot whose start and charger are in the planning frame (as the window holds them), as a mission file
+// writes it: in its start_crs where it has one that takes both points, else in the planning CRS's units
+// with no start_crs. Degrees and metres are whole to a billionth, so that a point read and written back
+// reads as given (7.41, not 7.4099999999999997).
+[[nodiscard]] RobotSpec robotAsWritten(RobotSpec robot, const GeoReference& georeference);
+
 // The planner's name is known and every parameter is one it declares, with a value that fits.
 [[nodiscard]] Status checkPlannerChoice(const PlannerChoice& choice, const FieldNamer& names);
 

@@ -44,10 +44,7 @@ bool fitsInMemory(const LoadedRaster& raster, const ClassTable& classes, const P
 
 std::optional<PlanningMemory> planningMemory(const LoadedRaster& raster, const ClassTable& classes,
                                              const PlannerChoice& choice) {
-    std::vector<std::int32_t> present;
-    for (const auto& [value, count] : raster.classPixelCounts)
-        present.push_back(value);
-    const std::vector<RoundedFieldOfView> rounded = roundFieldsOfView(classes, present);
+    const std::vector<RoundedFieldOfView> rounded = roundFieldsOfView(classes, presentClassValues(raster));
     if (rounded.empty())
         return std::nullopt;
     PlanningMemory memory;

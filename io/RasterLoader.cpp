@@ -332,6 +332,14 @@ std::string formatMetres(double value) {
 
 } // namespace
 
+std::vector<std::int32_t> presentClassValues(const LoadedRaster& raster) {
+    std::vector<std::int32_t> present;
+    for (const auto& [value, count] : raster.classPixelCounts)
+        if (count > 0)
+            present.push_back(value);
+    return present;
+}
+
 Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLoadOptions& options) {
     if (Status readable = checkFileReadable(path); !readable)
         return RasterResult::failure(readable.error());

@@ -134,11 +134,11 @@ void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QR
 
 // Why a plan reading sooner done is ranked after the first, on its title where the captions have no line
 // to spare.
-QString rankedApartNote(int readingGroup) {
+QString rankedApartNote(io::ReadingGroup readingGroup) {
     switch (readingGroup) {
-    case 1:
+    case io::ReadingGroup::OwnSpeedsIgnored:
         return QStringLiteral(": at the class table's speeds");
-    case 2:
+    case io::ReadingGroup::CoversLess:
         return QStringLiteral(": covers less");
     default:
         return {};

@@ -60,15 +60,15 @@ template <typename Item = NumberItem> QTableWidgetItem* numberItem(double value,
     return item;
 }
 
-QTableWidgetItem* timeItem(double seconds, double unitSeconds, int readingGroup) {
+QTableWidgetItem* timeItem(double seconds, double unitSeconds, io::ReadingGroup readingGroup) {
     QTableWidgetItem* item = numberItem<TimeItem>(seconds / unitSeconds, 2);
-    item->setData(readingGroupRole, readingGroup);
+    item->setData(readingGroupRole, static_cast<int>(readingGroup)); // sorted in the enumeration's order
     return item;
 }
 
 // When the team is done (io::doneAfterSeconds), so that sorting by Home reads as batch mode lists the plans:
 // for a plan not timed in the field (no flights, or a battery plan's sorties), its makespan, greyed.
-QTableWidgetItem* homeItem(const io::ComparisonRow& row, double unitSeconds, int readingGroup) {
+QTableWidgetItem* homeItem(const io::ComparisonRow& row, double unitSeconds, io::ReadingGroup readingGroup) {
     QTableWidgetItem* item = timeItem(io::doneAfterSeconds(row), unitSeconds, readingGroup);
     if (!row.metrics.timedInTheField()) {
         item->setForeground(QApplication::palette().brush(QPalette::Disabled, QPalette::Text));
@@ -255,7 +255,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         if (row.outcome != io::ComparisonRow::Outcome::Planned)
             continue;
         const PlanMetrics& metrics = row.metrics;
-        const int group = io::readingGroup(row, outcome.rows);
+        const io::ReadingGroup group = io::readingGroup(row, outcome.rows);
         table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
         QTableWidgetItem* ratio = numberItem(metrics.ratio, 3);
         if (metrics.boundOfDetectionPasses) {

@@ -839,7 +839,7 @@ void MainWindow::connectDocument() {
 
 // Batteries, events and chargers, as batch mode adds them; the window keeps chargers in the planning frame.
 void MainWindow::addRobotSettings(PlanningProblem& problem) const {
-    io::applyRobotSettings(document_->mission(), problem);
+    io::applyRobotSettings(document_->mission(), *document_->raster(), problem);
     problem.chargers = document_->chargers();
 }
 
@@ -1235,8 +1235,12 @@ void MainWindow::reportError(const QString& title, const QString& message) {
 bool MainWindow::maybeSave() {
     if (!isMissionModified() || !dialogsEnabled_)
         return true;
+    // Only a new plan of a saved mission: say so, since the mission itself reads as the user left it.
+    const bool onlyThePlan = undoStack_->isClean() && !settingsModified_;
     const auto answer = QMessageBox::question(
-        this, tr("Unsaved changes"), tr("The mission has unsaved changes. Save them first?"),
+        this, tr("Unsaved changes"),
+        onlyThePlan ? tr("The plan made since the mission was saved is not saved with it. Save it first?")
+                    : tr("The mission has unsaved changes. Save them first?"),
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Cancel)
         return false;
@@ -1370,11 +1374,11 @@ bool MainWindow::openMission(const QString& path) {
     // The window holds the area files by absolute path; saving writes them relative again.
     mission.area.includePath = io::resolveMissionPath(mission.area.includePath, missionPath);
     mission.area.excludePath = io::resolveMissionPath(mission.area.excludePath, missionPath);
-    // The window keeps every start in the planning frame; saving writes them back in the CRS's units.
+    // The window keeps every start in the planning frame; saving writes them back in the CRS they were given
+    // in (start_crs, kept), else in the raster CRS's units.
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         mission.robots[robot].start = starts.value()[robot];
         mission.robots[robot].charger = chargers.value()[robot];
-        mission.robots[robot].startCrs.clear();
     }
     runner_->cancel();
     comparisonRunner_->cancel(); // its plans would be of the map before
@@ -1423,11 +1427,8 @@ bool MainWindow::saveMission(const QString& path) {
                             .absoluteDir()
                             .relativeFilePath(QString::fromStdString(*areaPath))
                             .toStdString();
-    for (io::RobotSpec& robot : mission.robots) {
-        robot.start = document_->raster()->georeference.toCrsUnits(robot.start);
-        if (robot.charger)
-            robot.charger = document_->raster()->georeference.toCrsUnits(*robot.charger);
-    }
+    for (io::RobotSpec& robot : mission.robots)
+        robot = io::robotAsWritten(robot, document_->raster()->georeference);
     const auto status = io::saveMission(mission, path.toStdString());
     if (!status.ok()) {
         reportError(tr("Cannot save mission"),

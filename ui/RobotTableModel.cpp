@@ -288,8 +288,7 @@ bool RobotTableModel::moveRobot(int robot, MapPoint start) {
     auto& moved = after[static_cast<std::size_t>(robot)];
     if (moved.start == start)
         return true;
-    moved.start = start;
-    moved.startCrs.clear();
+    moved.start = start; // saved in its start_crs still, where it has one
     undoStack_->push(new RobotsEditCommand(document_, document_->robots(), after,
                                            tr("Move %1").arg(QString::fromStdString(moved.name))));
     return true;

@@ -17,15 +17,24 @@ const LandCoverClass* takingPart(const ClassTable& classes, std::int32_t value) 
 
 } // namespace
 
-std::vector<RoundedFieldOfView> roundFieldsOfView(const ClassTable& classes,
-                                                  const std::vector<std::int32_t>& presentValues) {
+std::optional<double> smallestFieldOfView(const ClassTable& classes,
+                                          const std::vector<std::int32_t>& presentValues) {
     double fovMin = std::numeric_limits<double>::infinity();
     for (auto value : presentValues)
         if (const LandCoverClass* landCoverClass = takingPart(classes, value))
             fovMin = std::min(fovMin, landCoverClass->fieldOfViewMetres);
-    std::vector<RoundedFieldOfView> rounded;
     if (!std::isfinite(fovMin))
+        return std::nullopt;
+    return fovMin;
+}
+
+std::vector<RoundedFieldOfView> roundFieldsOfView(const ClassTable& classes,
+                                                  const std::vector<std::int32_t>& presentValues) {
+    std::vector<RoundedFieldOfView> rounded;
+    const std::optional<double> smallest = smallestFieldOfView(classes, presentValues);
+    if (!smallest)
         return rounded;
+    const double fovMin = *smallest;
     int deepest = 0;
     for (auto value : presentValues) {
         const LandCoverClass* landCoverClass = takingPart(classes, value);

@@ -4,6 +4,7 @@
 #include "core/model/RoundedFieldOfView.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace mcpp {
@@ -14,5 +15,10 @@ namespace mcpp {
 // passable class at all the result is empty. The planners and the class table view share this one rule.
 [[nodiscard]] std::vector<RoundedFieldOfView>
 roundFieldsOfView(const ClassTable& classes, const std::vector<std::int32_t>& presentValues);
+
+// Fd_min alone: the smallest usable FOV among the passable classes present, the spacing of the finest
+// passes; none without such a class.
+[[nodiscard]] std::optional<double> smallestFieldOfView(const ClassTable& classes,
+                                                        const std::vector<std::int32_t>& presentValues);
 
 } // namespace mcpp

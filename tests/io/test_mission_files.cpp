@@ -3,6 +3,7 @@
 #include "core/model/HumanUnits.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
 
 #include <QFile>
@@ -71,6 +72,14 @@ Mission sampleMission() {
     mission.exports.speedTolerance = 0.25;
     mission.exports.speedChangesAtTurnsOnly = true;
     return mission;
+}
+
+// A map on which every class of the table has pixels.
+LoadedRaster rasterWithEvery(const ClassTable& classes) {
+    LoadedRaster raster;
+    for (const LandCoverClass& landCover : classes.classes())
+        raster.classPixelCounts[landCover.value] = 100;
+    return raster;
 }
 
 void compareMissions(const Mission& a, const Mission& b) {
@@ -225,7 +234,7 @@ class MissionFilesTest : public QObject {
         problem.classes = presetClassTable("esa-worldcover").value();
         const auto warned = [&](const PlanningProblem& given) {
             PlanningProblem planned = given;
-            applyRobotSettings(mission, planned);
+            applyRobotSettings(mission, rasterWithEvery(planned.classes), planned);
             const auto note =
                 std::find_if(planned.notes.begin(), planned.notes.end(),
                              [](const PlanIssue& issue) { return issue.code == "aircraft-at-ground-fov"; });
@@ -292,7 +301,7 @@ class MissionFilesTest : public QObject {
                                       {3, "water", 0x0000ff, 0.0, 10.0, false}});
         const auto photoNotes = [&] {
             PlanningProblem planned = problem;
-            applyRobotSettings(mission, planned);
+            applyRobotSettings(mission, rasterWithEvery(planned.classes), planned);
             std::vector<std::string> found;
             for (const PlanIssue& note : planned.notes)
                 if (note.code == "photos-farther-than-footprint")
@@ -312,6 +321,59 @@ class MissionFilesTest : public QObject {
                  notes[0].c_str());
     }
 
+    // The passes are spaced by the smallest field of view of the classes on the map: a class of the table
+    // that the map lacks sets off neither the photo warning nor the preset's, and its FOV is not named.
+    void onlyClassesOnTheMapSpaceThePasses() {
+        Mission mission = sampleMission();
+        mission.exports.vehicle.type = VehicleType::Multirotor;
+        mission.exports.vehicle.cameraTriggerMetres = 75.0;
+        for (RobotSpec& robot : mission.robots) {
+            robot.vehicle.type.reset();
+            robot.vehicle.cameraTriggerMetres.reset();
+        }
+        PlanningProblem problem;
+        problem.classes = ClassTable({{1, "grass", 0x00ff00, 1.5, 60.0, true},
+                                      {2, "forest", 0x008000, 0.5, 80.0, true},
+                                      {3, "water", 0x0000ff, 0.0, 10.0, false}});
+        const auto codesOn = [&](const LoadedRaster& raster) {
+            PlanningProblem planned = problem;
+            applyRobotSettings(mission, raster, planned);
+            std::vector<std::string> codes;
+            for (const PlanIssue& note : planned.notes)
+                codes.push_back(note.code);
+            return codes;
+        };
+        const auto has = [](const std::vector<std::string>& codes, const std::string& code) {
+            return std::find(codes.begin(), codes.end(), code) != codes.end();
+        };
+        LoadedRaster forestAndWater;
+        forestAndWater.classPixelCounts = {{1, 0}, {2, 500}, {3, 40}}; // grass counted but with no pixel
+        QVERIFY(has(codesOn(rasterWithEvery(problem.classes)), "photos-farther-than-footprint"));
+        QVERIFY(!has(codesOn(forestAndWater), "photos-farther-than-footprint"));
+
+        // At the preset's fields of view, the smallest named is the smallest on the map.
+        problem.classes = presetClassTable("esa-worldcover").value();
+        mission.exports.vehicle.cameraTriggerMetres = 0.0;
+        LoadedRaster grassland;
+        grassland.classPixelCounts = {{30, 1000}, {80, 200}}; // grassland and water
+        PlanningProblem planned = problem;
+        applyRobotSettings(mission, grassland, planned);
+        const auto note =
+            std::find_if(planned.notes.begin(), planned.notes.end(),
+                         [](const PlanIssue& issue) { return issue.code == "aircraft-at-ground-fov"; });
+        QVERIFY(note != planned.notes.end());
+        const double grassFieldOfView = problem.classes.find(30)->fieldOfViewMetres;
+        QVERIFY2(note->message.find("(the smallest " + formatQuantity(grassFieldOfView, 4) + " m") !=
+                     std::string::npos,
+                 note->message.c_str());
+        LoadedRaster waterOnly;
+        waterOnly.classPixelCounts = {{80, 1000}}; // nothing to cover: no footprint to scale
+        PlanningProblem nothing = problem;
+        applyRobotSettings(mission, waterOnly, nothing);
+        QVERIFY(std::none_of(nothing.notes.begin(), nothing.notes.end(),
+                             [](const PlanIssue& issue) { return issue.code == "aircraft-at-ground-fov"; }));
+    }
+
     // A cruise speed the whole fleet shares is what the plan uses over every passable class; speeds that
     // differ leave the class table's and say why.
     void fleetCruiseSpeedIsPlannedWith() {
@@ -327,7 +389,7 @@ class MissionFilesTest : public QObject {
                                       {3, "water", 0x0000ff, 0.0, 10.0, false}});
         const ClassTable landCover = problem.classes;
         PlanningProblem unchanged = problem;
-        applyRobotSettings(mission, unchanged);
+        applyRobotSettings(mission, rasterWithEvery(unchanged.classes), unchanged);
         QVERIFY(unchanged.classes == landCover);
         QVERIFY(unchanged.notes.empty());
         QCOMPARE(fleetCruiseSpeed(mission), 0.0);
@@ -335,7 +397,7 @@ class MissionFilesTest : public QObject {
         mission.exports.vehicle.cruiseSpeedMetresPerSecond = 8.5;
         QCOMPARE(fleetCruiseSpeed(mission), 8.5);
         PlanningProblem flown = problem;
-        applyRobotSettings(mission, flown);
+        applyRobotSettings(mission, rasterWithEvery(flown.classes), flown);
         QCOMPARE(flown.classes.find(1)->speedMetresPerSecond, 8.5);
         QCOMPARE(flown.classes.find(2)->speedMetresPerSecond, 8.5);
         QCOMPARE(flown.classes.find(2)->fieldOfViewMetres, 5.0); // what it sees still follows the land cover
@@ -347,7 +409,7 @@ class MissionFilesTest : public QObject {
         mission.robots[1].vehicle.cruiseSpeedMetresPerSecond = 6.0;
         QCOMPARE(fleetCruiseSpeed(mission), 0.0);
         PlanningProblem mixed = problem;
-        applyRobotSettings(mission, mixed);
+        applyRobotSettings(mission, rasterWithEvery(mixed.classes), mixed);
         QVERIFY(mixed.classes == landCover);
         QCOMPARE(mixed.robotSpeeds, (std::vector<double>{8.5, 6.0, 8.5})); // each robot drives at its own
         QCOMPARE(mixed.notes.size(), std::size_t{1});
@@ -366,7 +428,7 @@ class MissionFilesTest : public QObject {
         crawling.robots[2].vehicle.type = VehicleType::Rover;
         crawling.robots[2].vehicle.cruiseSpeedMetresPerSecond.reset();
         PlanningProblem slow = problem;
-        applyRobotSettings(crawling, slow);
+        applyRobotSettings(crawling, rasterWithEvery(slow.classes), slow);
         QCOMPARE(slow.notes.size(), std::size_t{2});
         QCOMPARE(slow.notes[1].code, std::string("aircraft-at-ground-speeds"));
         QVERIFY(slow.notes[1].severity == IssueSeverity::Warning);
@@ -374,7 +436,7 @@ class MissionFilesTest : public QObject {
                  slow.notes[1].message.c_str());
         crawling.robots[1].vehicle.type = VehicleType::Rover; // rovers at the land cover's speeds are meant
         PlanningProblem rovers = problem;
-        applyRobotSettings(crawling, rovers);
+        applyRobotSettings(crawling, rasterWithEvery(rovers.classes), rovers);
         QCOMPARE(rovers.notes.size(), std::size_t{1});
 
         // A drone without a cruise speed flies at the table's speeds: said, since presets give a ground
@@ -384,7 +446,7 @@ class MissionFilesTest : public QObject {
         mission.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
         mission.robots[1].vehicle.type = VehicleType::Multirotor;
         PlanningProblem aircraft = problem;
-        applyRobotSettings(mission, aircraft);
+        applyRobotSettings(mission, rasterWithEvery(aircraft.classes), aircraft);
         QVERIFY(aircraft.classes == landCover);
         QCOMPARE(aircraft.notes.size(), std::size_t{1});
         QCOMPARE(aircraft.notes[0].code, std::string("aircraft-at-ground-speeds"));
@@ -396,7 +458,7 @@ class MissionFilesTest : public QObject {
         mission.robots[1].vehicle.altitudeMetres = 150.0; // a multirotor
         mission.robots[1].name = "beta";
         PlanningProblem altitudes = problem;
-        applyRobotSettings(mission, altitudes);
+        applyRobotSettings(mission, rasterWithEvery(altitudes.classes), altitudes);
         QCOMPARE(altitudes.notes.size(), std::size_t{2});
         QCOMPARE(altitudes.notes[1].code, std::string("altitude-above-120m"));
         QVERIFY2(altitudes.notes[1].message.find("(beta 150 m)") != std::string::npos,
@@ -406,7 +468,7 @@ class MissionFilesTest : public QObject {
                  altitudes.notes[1].message.c_str());
         mission.robots[1].vehicle.altitudeMetres = 2.0;
         PlanningProblem low = problem;
-        applyRobotSettings(mission, low);
+        applyRobotSettings(mission, rasterWithEvery(low.classes), low);
         QCOMPARE(low.notes.back().code, std::string("altitude-too-low"));
         QVERIFY2(low.notes.back().message.find("(beta 2 m)") != std::string::npos,
                  low.notes.back().message.c_str());
@@ -424,7 +486,7 @@ class MissionFilesTest : public QObject {
         mission.planner = defaultPlannerChoice("wavefront-battery");
         mission.planner.parameters.set("battery_s", 900.0);
         PlanningProblem problem;
-        applyRobotSettings(mission, problem);
+        applyRobotSettings(mission, rasterWithEvery(problem.classes), problem);
         const double beta = 1320.0 - 45.5 / 2.5 - 45.5 / 1.5;
         QCOMPARE(problem.batterySeconds, (std::vector<double>{0.0, beta, 1500.0}));
         const auto note =
@@ -460,13 +522,13 @@ class MissionFilesTest : public QObject {
         landSpeeds.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
         landSpeeds.exports.speedChangesAtTurnsOnly = false;
         PlanningProblem atLandSpeeds;
-        applyRobotSettings(landSpeeds, atLandSpeeds);
+        applyRobotSettings(landSpeeds, rasterWithEvery(atLandSpeeds.classes), atLandSpeeds);
         QCOMPARE(atLandSpeeds.robotFlights[1].fastestPace, 0.75 / 1.05);
         QVERIFY(!atLandSpeeds.robotFlights[1].makesTrips()); // how fast it flies out is not known
         // Speeds changed only at turns are each leg's slowest, rounded down: never faster than planned.
         landSpeeds.exports.speedChangesAtTurnsOnly = true;
         PlanningProblem atTurns;
-        applyRobotSettings(landSpeeds, atTurns);
+        applyRobotSettings(landSpeeds, rasterWithEvery(atTurns.classes), atTurns);
         QCOMPARE(atTurns.robotFlights[1].fastestPace, 1.0);
         Mission rovers = mission;
         for (RobotSpec& robot : rovers.robots)
@@ -476,13 +538,13 @@ class MissionFilesTest : public QObject {
         for (RobotSpec& robot : rovers.robots)
             robot.vehicle.turnaroundSeconds = 0.0;
         PlanningProblem onTheGround;
-        applyRobotSettings(rovers, onTheGround);
+        applyRobotSettings(rovers, rasterWithEvery(onTheGround.classes), onTheGround);
         QVERIFY(!onTheGround.fieldSeconds); // their split missions end with their paths
         QVERIFY(onTheGround.robotFlights.empty());
 
         mission.planner = defaultPlannerChoice("mcpp-mlct");
         PlanningProblem other;
-        applyRobotSettings(mission, other);
+        applyRobotSettings(mission, rasterWithEvery(other.classes), other);
         QVERIFY(std::none_of(other.notes.begin(), other.notes.end(), [](const PlanIssue& issue) {
             return issue.code == "batteries-from-flight-times";
         }));
@@ -593,6 +655,33 @@ class MissionFilesTest : public QObject {
         loaded = loadMission(path);
         QVERIFY(!loaded.ok());
         QCOMPARE(loaded.error(), path + ": exports.turnaround_s: expected a number, found a string");
+    }
+
+    // Distances and speeds written as text are refused with the number to write, in the key's unit; text in
+    // another unit is not given a number that would be read in the wrong one.
+    void distanceWithAUnitNamesTheNumberToWrite() {
+        QTemporaryDir folder;
+        const std::string path = folder.filePath("units.json").toStdString();
+        const auto errorWith = [&](const std::string& exports) {
+            writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                                "robots": [{"start": [10, 20]}], "exports": {)" +
+                                exports + "}}");
+            const auto loaded = loadMission(path);
+            return loaded.ok() ? std::string() : loaded.error();
+        };
+        QCOMPARE(
+            errorWith(R"("camera_trigger_m": "48 m")"),
+            path + ": exports.camera_trigger_m: expected a number of metres, found the text \"48 m\": write "
+                   "48, without quotes or a unit (the key's name gives it)");
+        QCOMPARE(errorWith(R"("cruise_speed_mps": "12.5")"),
+                 path + ": exports.cruise_speed_mps: expected a number of metres per second, found the text "
+                        "\"12.5\": write 12.5, without quotes or a unit (the key's name gives it)");
+        QCOMPARE(errorWith(R"("altitude_m": "400 ft")"),
+                 path +
+                     ": exports.altitude_m: expected a number of metres, found the text \"400 ft\": give it "
+                     "in metres, without quotes or a unit");
+        QCOMPARE(errorWith(R"("altitude_m": "high")"),
+                 path + ": exports.altitude_m: expected a number, found a string");
     }
 
     // A mistyped key or planner parameter names the one most likely meant; one far from any, none.

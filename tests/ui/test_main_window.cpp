@@ -563,6 +563,62 @@ class TestMainWindow : public QObject {
             .removeRecursively();
     }
 
+    // A mission's starts given in longitude and latitude are saved so, moved or not; starts given in the
+    // raster's CRS stay in its units, and a saved raster path is relative to the mission's folder.
+    void savingKeepsTheCrsStartsWereGivenIn() {
+        QTemporaryDir directory;
+        const QString raster = dataPath("landcover/nlcd.tif");
+        QVERIFY(writeFile(directory.filePath("given.json"),
+                          QStringLiteral(R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "%1"},
+                              "robots": [{"name": "north", "start": [-113.04, 37.32], "start_crs": "EPSG:4326",
+                                          "charger": [-113.05, 37.31]},
+                                         {"name": "south", "start": [320000, 4145000]}]})")
+                              .arg(raster)
+                              .toUtf8()));
+        ui::MainWindow window;
+        window.setDialogsEnabled(false);
+        window.setOpenSampleOnFirstStart(false);
+        QVERIFY2(window.openMission(directory.filePath("given.json")), qPrintable(window.lastError()));
+        QString rasterSaved;
+        const auto robotsSaved = [&](const QString& name) {
+            const QString path = directory.filePath(name);
+            if (!window.saveMission(path))
+                return QJsonArray();
+            QFile file(path);
+            if (!file.open(QIODevice::ReadOnly))
+                return QJsonArray();
+            const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+            rasterSaved = root["raster"].toObject()["path"].toString();
+            return root["robots"].toArray();
+        };
+        const QJsonArray saved = robotsSaved(QStringLiteral("saved.json"));
+        QVERIFY2(saved.size() == 2, qPrintable(window.lastError()));
+        QVERIFY2(QDir::isRelativePath(rasterSaved), qPrintable(rasterSaved));
+        QCOMPARE(QFileInfo(directory.filePath(rasterSaved)).canonicalFilePath(),
+                 QFileInfo(raster).canonicalFilePath());
+        const QJsonObject north = saved[0].toObject();
+        QCOMPARE(north["start_crs"].toString(), QStringLiteral("EPSG:4326"));
+        QCOMPARE(north["start"].toArray()[0].toDouble(), -113.04);
+        QCOMPARE(north["start"].toArray()[1].toDouble(), 37.32);
+        QCOMPARE(north["charger"].toArray()[0].toDouble(), -113.05);
+        QCOMPARE(north["charger"].toArray()[1].toDouble(), 37.31);
+        const QJsonObject south = saved[1].toObject();
+        QVERIFY(!south.contains("start_crs"));
+        QCOMPARE(south["start"].toArray()[0].toDouble(), 320000.0);
+        QCOMPARE(south["start"].toArray()[1].toDouble(), 4145000.0);
+
+        // Moved on the map, the robot is saved in its CRS still, a kilometre east of where it was.
+        const MapPoint start = window.document()->robots()[0].start;
+        QVERIFY(window.robotTableModel()->moveRobot(0, {start.x + 1000.0, start.y}));
+        const QJsonObject moved = robotsSaved(QStringLiteral("moved.json"))[0].toObject();
+        QCOMPARE(moved["start_crs"].toString(), QStringLiteral("EPSG:4326"));
+        const double eastward = moved["start"].toArray()[0].toDouble() + 113.04;
+        QVERIFY2(eastward > 0.0108 && eastward < 0.0118, qPrintable(QString::number(eastward, 'g', 10)));
+        QVERIFY2(std::abs(moved["start"].toArray()[1].toDouble() - 37.32) <
+                     5e-4, // UTM north is not true north
+                 qPrintable(QString::number(moved["start"].toArray()[1].toDouble(), 'g', 10)));
+    }
+
     void refusesAnUnreadableRasterAndKeepsTheMission() {
         ui::MainWindow window;
         window.setDialogsEnabled(false);
