@@ -238,9 +238,9 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         auto* state = new QTableWidgetItem(QString::fromStdString(io::outcomeName(row.outcome)));
         state->setToolTip(QString::fromStdString(row.message));
         // A plan's warnings (robots timed at the class table's speeds, an uneven plan, land left
-        // uncovered) weigh on its figures: flagged on its row, said in full when hovered.
-        if (const Plan* plan = outcome.plans[i].get(); plan && !plan->warnings().empty()) {
-            const std::vector<std::string> warnings = plan->warnings();
+        // uncovered, flights longer than a battery) weigh on its figures: flagged on its row, said in full
+        // when hovered.
+        if (const std::vector<std::string> warnings = outcome.warningsOf(i); !warnings.empty()) {
             state->setText(warnings.size() == 1
                                ? tr("%1, 1 warning").arg(state->text())
                                : tr("%1, %2 warnings").arg(state->text()).arg(warnings.size()));

@@ -9,6 +9,15 @@
 
 namespace mcpp::ui {
 
+std::vector<std::string> ComparisonOutcome::warningsOf(std::size_t row) const {
+    std::vector<std::string> warnings;
+    if (row < plans.size() && plans[row])
+        warnings = plans[row]->warnings();
+    if (row < fileWarnings.size())
+        warnings.insert(warnings.end(), fileWarnings[row].begin(), fileWarnings[row].end());
+    return warnings;
+}
+
 ComparisonRunner::ComparisonRunner(QObject* parent) : QObject(parent) {
     connect(&watcher_, &QFutureWatcher<ComparisonOutcome>::finished, this,
             [this] { emit finished(watcher_.result()); });
@@ -33,15 +42,16 @@ void ComparisonRunner::waitForFinished() {
     watcher_.waitForFinished();
 }
 
-bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice> choices) {
+bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice> choices,
+                             FileWarnings fileWarnings) {
     if (isRunning() || choices.empty())
         return false;
     cancelRequested_ = std::make_shared<std::atomic<bool>>(false);
     auto cancelFlag = cancelRequested_;
     const int run = ++runs_;
     // The destructor waits for the run, so the worker may use `this`.
-    auto work = [this, run, cancelFlag, problem = std::move(problem),
-                 choices = std::move(choices)]() mutable {
+    auto work = [this, run, cancelFlag, problem = std::move(problem), choices = std::move(choices),
+                 fileWarnings = std::move(fileWarnings)]() mutable {
         using Clock = std::chrono::steady_clock;
         ComparisonOutcome outcome;
         outcome.choices = choices;
@@ -102,6 +112,8 @@ bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice>
             }
             outcome.rows.push_back(row);
             outcome.errors.push_back(refused);
+            outcome.fileWarnings.push_back(plan && fileWarnings ? fileWarnings(*plan)
+                                                                : std::vector<std::string>());
             outcome.plans.push_back(plan);
             if (index + 1 < planners)
                 QMetaObject::invokeMethod(

@@ -9,8 +9,10 @@
 #include <QObject>
 #include <QString>
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace mcpp::ui {
@@ -23,8 +25,17 @@ struct ComparisonOutcome {
     // By row: what the planner refused the problem for, to be named in the window's terms; none where it
     // planned, was skipped, or failed for another reason.
     std::vector<std::optional<PlanningError>> errors;
+    // By row: what the plan's waypoint files would warn of (flights longer than a battery lasts), which
+    // the plan itself does not say; empty where none or not planned.
+    std::vector<std::vector<std::string>> fileWarnings;
     bool cancelled = false;
+
+    // A row's warnings: its plan's, then its waypoint files'.
+    [[nodiscard]] std::vector<std::string> warningsOf(std::size_t row) const;
 };
+
+// What a plan's waypoint files would warn of, worked out on the comparison's thread.
+using FileWarnings = std::function<std::vector<std::string>(const Plan&)>;
 
 // Runs several planners on one problem, one after another on a worker thread, so the window stays
 // responsive; progress names the planner. cancel() stops the running planner and skips the rest.
@@ -36,7 +47,8 @@ class ComparisonRunner : public QObject {
     ~ComparisonRunner() override;
 
     // problem.planner is replaced by each choice in turn. False (nothing started) while a run is going on.
-    bool start(PlanningProblem problem, std::vector<PlannerChoice> choices);
+    // fileWarnings, when given, is asked of each plan made.
+    bool start(PlanningProblem problem, std::vector<PlannerChoice> choices, FileWarnings fileWarnings = {});
     void cancel();
     [[nodiscard]] bool isRunning() const;
     void waitForFinished();

@@ -683,11 +683,12 @@ void MainWindow::createActions() {
     cancelAction_ =
         planMenu->addAction(actionIcon("cancel"), tr("&Cancel planning"), this, &MainWindow::cancelPlanning);
     cancelAction_->setObjectName(QStringLiteral("cancelPlanningAction"));
-    compareAction_ = planMenu->addAction(actionIcon("compare"), tr("C&ompare planners…"), this, [this] {
-        comparisonDock_->show();
-        comparisonDock_->raise();
-        startComparison(comparisonPanel_->checkedPlanners());
-    });
+    compareAction_ =
+        planMenu->addAction(actionIcon("compare"), tr("C&ompare checked planners"), this, [this] {
+            comparisonDock_->show();
+            comparisonDock_->raise();
+            startComparison(comparisonPanel_->checkedPlanners());
+        });
     compareAction_->setObjectName(QStringLiteral("compareAction"));
     compareAction_->setToolTip(tr("Run the planners checked in the Compare planners panel on this mission, "
                                   "one after another, and compare their plans"));
@@ -1041,6 +1042,30 @@ void MainWindow::sizeWaypointFiles() {
         }
         return sizes;
     }));
+}
+
+// What each compared plan's waypoint files would warn of, as the results panel says it of the plan shown:
+// flights longer than a battery lasts. None where no robot has a flight time.
+FileWarnings MainWindow::waypointFileWarnings() const {
+    const std::vector<io::VehicleSettings> vehicles = io::robotVehicles(document_->mission());
+    if (std::none_of(vehicles.begin(), vehicles.end(),
+                     [](const io::VehicleSettings& vehicle) { return vehicle.flightTimeSeconds > 0.0; }))
+        return {};
+    QStringList names;
+    for (const auto& robot : document_->robots())
+        names << QString::fromStdString(robot.name);
+    return [vehicles, names, settings = document_->mission().exports](const Plan& plan) {
+        std::vector<io::MissionSize> sizes(vehicles.size());
+        for (const CoveragePath& path : plan.paths) {
+            const auto robot = static_cast<std::size_t>(path.robot);
+            if (robot < sizes.size())
+                sizes[robot] = io::missionSize(path, plan.cells, vehicles[robot], settings);
+        }
+        std::vector<std::string> warnings;
+        for (const QString& warning : ResultsPanel::flightsTooLongWarnings(sizes, vehicles, names))
+            warnings.push_back(warning.toStdString());
+        return warnings;
+    };
 }
 
 bool MainWindow::loadClassTable(const QString& path) {
@@ -1810,7 +1835,7 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
         comparisonInputs_.push_back(document_->inputsFor(choice));
     comparisonRaster_ = document_->sharedRaster();
     addRobotSettings(prepared.value().problem);
-    if (!comparisonRunner_->start(std::move(prepared.value().problem), choices))
+    if (!comparisonRunner_->start(std::move(prepared.value().problem), choices, waypointFileWarnings()))
         return false;
     // The planners listed at once, each row filled in as its planner is done.
     comparison_ = ComparisonOutcome{};
@@ -1822,7 +1847,10 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     showWorkUnderway();
     progressBar_->setValue(0);
     updateActions();
-    showStatus(tr("Comparing %1 planners…").arg(planners.size()), 0);
+    showStatus(tr("Comparing the %1 planners checked in the Compare planners panel (uncheck any not wanted "
+                  "there)…")
+                   .arg(planners.size()),
+               0);
     return true;
 }
 
@@ -1956,10 +1984,8 @@ void MainWindow::logPlanIssues(const Plan& plan) {
 // such as land no robot reaches) once, under none, as batch mode says them.
 void MainWindow::logComparedWarnings() {
     std::map<std::string, int> plansCarrying;
-    for (const auto& plan : comparison_.plans) {
-        if (!plan)
-            continue;
-        const std::vector<std::string> warnings = plan->warnings();
+    for (std::size_t row = 0; row < comparison_.plans.size(); ++row) {
+        const std::vector<std::string> warnings = comparison_.warningsOf(row);
         for (const std::string& warning : std::set<std::string>(warnings.begin(), warnings.end()))
             ++plansCarrying[warning];
     }
@@ -1968,7 +1994,7 @@ void MainWindow::logComparedWarnings() {
     for (std::size_t row = 0; row < comparison_.plans.size() && row < comparison_.rows.size(); ++row) {
         if (!comparison_.plans[row])
             continue;
-        for (const std::string& warning : comparison_.plans[row]->warnings()) {
+        for (const std::string& warning : comparison_.warningsOf(row)) {
             const bool shared = plansCarrying[warning] > 1;
             if (shared && !saidOnce.insert(warning).second)
                 continue;

@@ -180,6 +180,7 @@ class MainWindow : public QMainWindow {
     void handleComparedPlanner(const ComparisonOutcome& outcomeSoFar);
     void handleComparisonFinished(const ComparisonOutcome& outcome);
     void nameRefusals(ComparisonOutcome& outcome) const;
+    [[nodiscard]] FileWarnings waypointFileWarnings() const;
     void showComparison(bool raise = true);
     void showWorkUnderway();
     void showComparedPlan(int row);

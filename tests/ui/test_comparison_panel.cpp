@@ -230,6 +230,14 @@ class ComparisonPanelTest : public QObject {
                  QStringLiteral("<p>CPPIED times every robot at the class table's speeds</p>"));
         QCOMPARE(panel.table()->item(panel.rowOfPlanner("mcpp-mlct"), stateColumn)->text(),
                  QStringLiteral("planned"));
+
+        // What its waypoint files would warn of (flights longer than a battery) counts with them.
+        outcome.fileWarnings = {{"north: 13 of its 272 flights take up to 31 min"}, {}};
+        panel.showOutcome(outcome, raster->grid, mission.classes);
+        const QTableWidgetItem* both = panel.table()->item(panel.rowOfPlanner("cppied"), stateColumn);
+        QCOMPARE(both->text(), QStringLiteral("planned, 2 warnings"));
+        QCOMPARE(both->toolTip(), QStringLiteral("<p>CPPIED times every robot at the class table's speeds</p>"
+                                                 "<p>north: 13 of its 272 flights take up to 31 min</p>"));
     }
 
     // The dock shows the sheet scaled to its width, too small to read its captions: double-clicking it
