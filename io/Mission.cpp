@@ -1012,6 +1012,14 @@ void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSett
                              std::to_string(highestAltitudeWithoutPermitFeet) +
                              " ft) above home, above what most countries allow drones without a permit (" +
                              namedAltitudes(mission, vehicles, high) + ")"});
+    // Autopilots fly a .plan's altitudes above home unless told to follow terrain, and the land cover holds
+    // no heights: over hills rising above the start, an aircraft flies lower than set, or into them.
+    if (std::any_of(vehicles.begin(), vehicles.end(),
+                    [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
+        notes.push_back({IssueSeverity::Information, "altitude-above-home",
+                         "aircraft fly at their altitude above home (where they take off), not above the "
+                         "ground under them: the map holds no heights, so where the land rises above home "
+                         "they fly that much lower; check the terrain along the paths before flying"});
 }
 
 // Photos farther apart than the footprint the plan spaces its passes by (the smallest field of view of a

@@ -274,15 +274,18 @@ struct RowProblem {
     QString detail;
 };
 
-// The rows named with their problems, a robot's left out where it is what the Default row has:
-// "Default: 5, Robot 3: 6", not the same value once a row.
-QStringList namedOnce(const std::vector<RowProblem>& rows) {
+// The problems with their rows, a robot's left out where it is what the Default row has:
+// "5 (Default), 6 (Robot 3)", not the same value once a row; sentences after their row ("Robot 3: a flight
+// of ...").
+enum class Detail { Value, Sentence };
+QStringList namedOnce(const std::vector<RowProblem>& rows, Detail detail = Detail::Value) {
     const auto fleet =
         std::find_if(rows.begin(), rows.end(), [](const RowProblem& row) { return row.row == 0; });
     QStringList named;
     for (const RowProblem& row : rows)
         if (row.row == 0 || fleet == rows.end() || row.detail != fleet->detail)
-            named << QStringLiteral("%1: %2").arg(row.name, row.detail);
+            named << (detail == Detail::Value ? QStringLiteral("%1 (%2)").arg(row.detail, row.name)
+                                              : QStringLiteral("%1: %2").arg(row.name, row.detail));
     return named;
 }
 
@@ -319,7 +322,7 @@ void VehicleSettingsDialog::checkLimits() {
     if (!flights.empty())
         problems << tr("A flight time must be at least 1 min, or 0 for no limit. Too short: %1.")
                         .arg(namedOnce(flights).join(QStringLiteral(", ")));
-    for (const QString& climb : namedOnce(climbs))
+    for (const QString& climb : namedOnce(climbs, Detail::Sentence))
         problems << climb + QLatin1Char('.');
     QStringList cautions;
     if (!low.empty())

@@ -429,7 +429,8 @@ class MissionFilesTest : public QObject {
         crawling.robots[2].vehicle.cruiseSpeedMetresPerSecond.reset();
         PlanningProblem slow = problem;
         applyRobotSettings(crawling, rasterWithEvery(slow.classes), slow);
-        QCOMPARE(slow.notes.size(), std::size_t{2});
+        QCOMPARE(slow.notes.size(), std::size_t{3});
+        QCOMPARE(slow.notes[2].code, std::string("altitude-above-home")); // an aircraft among them
         QCOMPARE(slow.notes[1].code, std::string("aircraft-at-ground-speeds"));
         QVERIFY(slow.notes[1].severity == IssueSeverity::Warning);
         QVERIFY2(slow.notes[1].message.rfind("beta is an aircraft without a cruise speed", 0) == 0,
@@ -437,7 +438,7 @@ class MissionFilesTest : public QObject {
         crawling.robots[1].vehicle.type = VehicleType::Rover; // rovers at the land cover's speeds are meant
         PlanningProblem rovers = problem;
         applyRobotSettings(crawling, rasterWithEvery(rovers.classes), rovers);
-        QCOMPARE(rovers.notes.size(), std::size_t{1});
+        QCOMPARE(rovers.notes.size(), std::size_t{1}); // rovers: no word of altitudes
 
         // A drone without a cruise speed flies at the table's speeds: said, since presets give a ground
         // robot's.
@@ -448,8 +449,14 @@ class MissionFilesTest : public QObject {
         PlanningProblem aircraft = problem;
         applyRobotSettings(mission, rasterWithEvery(aircraft.classes), aircraft);
         QVERIFY(aircraft.classes == landCover);
-        QCOMPARE(aircraft.notes.size(), std::size_t{1});
+        QCOMPARE(aircraft.notes.size(), std::size_t{2});
         QCOMPARE(aircraft.notes[0].code, std::string("aircraft-at-ground-speeds"));
+        // The map holds no heights: said once, as a note, that altitudes are above home.
+        QCOMPARE(aircraft.notes[1].code, std::string("altitude-above-home"));
+        QVERIFY(aircraft.notes[1].severity == IssueSeverity::Information);
+        QVERIFY2(aircraft.notes[1].message.find("where the land rises above home they fly that much lower") !=
+                     std::string::npos,
+                 aircraft.notes[1].message.c_str());
 
         // Aircraft at the height of home, or above what drones may fly without a permit, are named; a rover's
         // altitude means nothing.
@@ -459,7 +466,7 @@ class MissionFilesTest : public QObject {
         mission.robots[1].name = "beta";
         PlanningProblem altitudes = problem;
         applyRobotSettings(mission, rasterWithEvery(altitudes.classes), altitudes);
-        QCOMPARE(altitudes.notes.size(), std::size_t{2});
+        QCOMPARE(altitudes.notes.size(), std::size_t{3});
         QCOMPARE(altitudes.notes[1].code, std::string("altitude-above-120m"));
         QVERIFY2(altitudes.notes[1].message.find("(beta 150 m)") != std::string::npos,
                  altitudes.notes[1].message.c_str());
@@ -469,11 +476,11 @@ class MissionFilesTest : public QObject {
         mission.robots[1].vehicle.altitudeMetres = 2.0;
         PlanningProblem low = problem;
         applyRobotSettings(mission, rasterWithEvery(low.classes), low);
-        QCOMPARE(low.notes.back().code, std::string("altitude-too-low"));
-        QVERIFY2(low.notes.back().message.find("(beta 2 m)") != std::string::npos,
-                 low.notes.back().message.c_str());
-        QVERIFY2(low.notes.back().message.find("lower than 5 m above home") != std::string::npos,
-                 low.notes.back().message.c_str());
+        const PlanIssue& tooLow = low.notes[low.notes.size() - 2];
+        QCOMPARE(tooLow.code, std::string("altitude-too-low"));
+        QVERIFY2(tooLow.message.find("(beta 2 m)") != std::string::npos, tooLow.message.c_str());
+        QVERIFY2(tooLow.message.find("lower than 5 m above home") != std::string::npos,
+                 tooLow.message.c_str());
     }
 
     // A planner that flies on batteries is told each robot's battery: from its vehicle's flight time less

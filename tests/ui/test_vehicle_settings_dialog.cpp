@@ -88,7 +88,7 @@ class VehicleSettingsDialogTest : public QObject {
                 problem = label;
         QVERIFY(problem != nullptr);
         QVERIFY(!problem->isHidden());
-        QVERIFY2(problem->text().contains(QStringLiteral("Robot 3: 5")), qPrintable(problem->text()));
+        QVERIFY2(problem->text().contains(QStringLiteral("5 (Robot 3)")), qPrintable(problem->text()));
         QVERIFY(problem->text().contains(QString::number(minimumMaxWaypoints)));
         // Robot 3 gets its own item limit: none.
         limit->setValue(0);
@@ -116,7 +116,7 @@ class VehicleSettingsDialogTest : public QObject {
         for (QLabel* label : dialog.findChildren<QLabel*>())
             if (label->text().contains(QStringLiteral("Too small")))
                 text = label->text();
-        QVERIFY2(text.contains(QStringLiteral("Too small: Default: 5, Robot 3: 6.")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Too small: 5 (Default), 6 (Robot 3).")), qPrintable(text));
         QVERIFY2(!text.contains(QStringLiteral("alpha")), qPrintable(text));
     }
 
@@ -138,10 +138,10 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(caution != nullptr);
         QVERIFY2(caution->text().contains(QStringLiteral("Above 120 m (400 ft) above home")),
                  qPrintable(caution->text()));
-        QVERIFY2(caution->text().contains(QStringLiteral("beta: 500 m")), qPrintable(caution->text()));
+        QVERIFY2(caution->text().contains(QStringLiteral("500 m (beta)")), qPrintable(caution->text()));
         QVERIFY(ok->isEnabled());
         cell<QDoubleSpinBox>(table, 2, 1)->setValue(2.0);
-        QVERIFY2(caution->text().contains(QStringLiteral("trees and roofs: beta: 2 m")),
+        QVERIFY2(caution->text().contains(QStringLiteral("trees and roofs: 2 m (beta)")),
                  qPrintable(caution->text()));
         cell<QDoubleSpinBox>(table, 2, 1)->setValue(60.0);
         QVERIFY(caution->isHidden());
@@ -150,7 +150,7 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(caution->isHidden());
         cell<QComboBox>(table, 1, 0)->setCurrentIndex(cell<QComboBox>(table, 1, 0)->findText("Multirotor"));
         QVERIFY(!caution->isHidden());
-        QVERIFY2(caution->text().contains(QStringLiteral("alpha: 500 m")), qPrintable(caution->text()));
+        QVERIFY2(caution->text().contains(QStringLiteral("500 m (alpha)")), qPrintable(caution->text()));
     }
 
     // A flight time in minutes: all robots follow it, and one under a minute holds OK back.
@@ -166,7 +166,8 @@ class VehicleSettingsDialogTest : public QObject {
         QVERIFY(!buttons->button(QDialogButtonBox::Ok)->isEnabled());
         bool named = false;
         for (QLabel* label : dialog.findChildren<QLabel*>())
-            named = named || (!label->isHidden() && label->text().contains(QStringLiteral("alpha: 0.5 min")));
+            named =
+                named || (!label->isHidden() && label->text().contains(QStringLiteral("0.5 min (alpha)")));
         QVERIFY(named);
         cell<QDoubleSpinBox>(table, 1, 4)->setValue(18.0);
         QVERIFY(buttons->button(QDialogButtonBox::Ok)->isEnabled());
