@@ -35,7 +35,8 @@ struct LoadedRaster {
     std::string metadataText; // the file's metadata items and band description, for recognising products
     std::map<std::int32_t, std::int64_t> classPixelCounts; // inside pixels only
     std::vector<std::string> warnings;
-    // News, not warnings: what an area of interest leaves to plan on ("planning on 4.04 km2 of the map").
+    // News, not warnings: what an area of interest leaves to plan on ("planning on 4.04 km2 of the map"), the
+    // CRS a geographic raster is planned in.
     std::vector<std::string> notes;
     // The area of interest's and the no-go zones' polygons the raster was limited to (applyAreaOfInterest).
     AreaOutline area;

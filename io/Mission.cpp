@@ -25,6 +25,7 @@
 #include <QJsonParseError>
 #include <QJsonValue>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -105,43 +106,57 @@ class MissionReader {
         return path + "[" + std::to_string(position) + "]";
     }
 
+    // The unit a key's name ends in ("altitude_m": metres) and the ways users write it; none for others.
+    struct KeyUnit {
+        std::string name;
+        std::set<std::string> spellings; // lower case
+    };
+    static KeyUnit unitOfKey(std::string_view path) {
+        if (path.ends_with("_mps"))
+            return {"metres per second", {"m/s", "mps", "metres per second", "meters per second"}};
+        if (path.ends_with("_m"))
+            return {"metres", {"m", "metre", "metres", "meter", "meters"}};
+        if (path.ends_with("_s"))
+            return {"seconds", {"s", "sec", "secs", "second", "seconds"}};
+        return {};
+    }
+
+    // The number a text begins with ("+48", "12.5") and what follows it, trimmed and in lower case.
+    static std::optional<std::pair<double, std::string>> leadingNumber(std::string_view text) {
+        text = trimmedText(text);
+        if (text.starts_with('+'))
+            text.remove_prefix(1);
+        double number = 0.0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+        if (error != std::errc() || !std::isfinite(number))
+            return std::nullopt;
+        std::string rest(
+            trimmedText(std::string_view(end, static_cast<std::size_t>(text.data() + text.size() - end))));
+        std::transform(rest.begin(), rest.end(), rest.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        return std::pair{number, rest};
+    }
+
     // A number written as text, with or without a unit ("48 m", "20 min"): what to write instead, in the
     // unit the key's name ends in; none for other text.
     static std::optional<std::string> numberInTextHint(const std::string& path, const std::string& text) {
-        const auto endsWith = [&path](std::string_view suffix) {
-            return path.size() > suffix.size() &&
-                   path.compare(path.size() - suffix.size(), suffix.size(), suffix.data()) == 0;
-        };
-        const std::string found = "found the text \"" + text + "\": write ";
-        if (endsWith("_s")) {
+        const KeyUnit unit = unitOfKey(path);
+        const std::string expected = "expected a number" +
+                                     (unit.name.empty() ? std::string() : " of " + unit.name) +
+                                     ", found the text \"" + text + "\": ";
+        if (unit.name == "seconds")
             if (const auto seconds = parseDuration(text))
-                return "expected a number of seconds, " + found + formatQuantity(*seconds) + " for " +
-                       formatDuration(*seconds);
-        }
-        const std::size_t begin = text.find_first_not_of(' ');
-        double number = 0.0;
-        const char* first = text.data() + (begin == std::string::npos ? text.size() : begin);
-        const auto [end, error] = std::from_chars(first, text.data() + text.size(), number);
-        if (error != std::errc() || !std::isfinite(number))
+                return expected + "write " + formatQuantity(*seconds) + " for " + formatDuration(*seconds);
+        const auto number = leadingNumber(text);
+        if (!number)
             return std::nullopt;
-        const std::string unit = endsWith("_mps") ? "metres per second"
-                                 : endsWith("_m") ? "metres"
-                                 : endsWith("_s") ? "seconds"
-                                                  : "";
-        const std::string expected =
-            "expected a number" + (unit.empty() ? std::string() : " of " + unit) + ", ";
-        std::string written(end, text.data() + text.size());
-        written.erase(0, written.find_first_not_of(' '));
-        written.erase(written.find_last_not_of(' ') + 1);
-        const std::set<std::string> sameUnit =
-            unit == "metres"              ? std::set<std::string>{"m", "metres", "meters"}
-            : unit == "metres per second" ? std::set<std::string>{"m/s", "mps"}
-                                          : std::set<std::string>{};
-        if (!written.empty() && sameUnit.count(written) == 0)
-            return expected + "found the text \"" + text + "\": give it in " +
-                   (unit.empty() ? "numbers" : unit) + ", without quotes or a unit";
-        return expected + found + formatQuantity(number, 12) +
-               (unit.empty() ? " without quotes" : ", without quotes or a unit (the key's name gives it)");
+        const auto& [value, rest] = *number;
+        if (!rest.empty() && unit.spellings.count(rest) == 0)
+            return expected + (unit.name.empty() ? "give it as a number, without quotes"
+                                                 : "give it in " + unit.name + ", without quotes or a unit");
+        return expected + "write " + formatQuantity(value, 12) +
+               (unit.name.empty() ? " without quotes"
+                                  : ", without quotes or a unit (the key's name gives it)");
     }
 
     bool object(const QJsonValue& value, const std::string& path, QJsonObject& out) {

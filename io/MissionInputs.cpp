@@ -171,37 +171,52 @@ Result<ClassTable> missionClasses(const Mission& mission, const LoadedRaster& ra
 
 namespace {
 
-// A billionth of a degree is a tenth of a millimetre.
-double roundedToBillionths(double value) {
-    return std::round(value * 1e9) / 1e9;
+// How far from where the window holds it a point may be written: a transform's way there and back can be a
+// millimetre off (a datum shift's inverse is approximate), and without this slack a start would creep by
+// that much at every save.
+constexpr double writtenToleranceMetres = 0.005;
+
+double roundedTo(double value, int decimals) {
+    const double scale = std::pow(10.0, decimals);
+    return std::round(value * scale) / scale;
+}
+
+// A planning-frame point in a CRS (crs; empty: the planning CRS's units) with the fewest decimals that lead
+// back to within writtenToleranceMetres of it: a point read and written back reads as given (7.41, not
+// 7.4099999999999997 or 7.41000001). None where the CRS cannot take it.
+std::optional<MapPoint> writtenIn(const std::string& crs, MapPoint point, const GeoReference& georeference) {
+    const auto there =
+        crs.empty() ? Result<MapPoint>(georeference.toCrsUnits(point)) : georeference.toCrs(crs, point);
+    if (!there.ok())
+        return std::nullopt;
+    constexpr int mostDecimals = 9;
+    for (int decimals = 0; decimals < mostDecimals; ++decimals) {
+        const MapPoint rounded{roundedTo(there.value().x, decimals), roundedTo(there.value().y, decimals)};
+        const auto back = crs.empty() ? Result<MapPoint>(georeference.fromCrsUnits(rounded))
+                                      : georeference.fromCrs(crs, rounded);
+        if (back.ok() &&
+            std::hypot(back.value().x - point.x, back.value().y - point.y) <= writtenToleranceMetres)
+            return rounded;
+    }
+    return MapPoint{roundedTo(there.value().x, mostDecimals), roundedTo(there.value().y, mostDecimals)};
 }
 
 } // namespace
 
 RobotSpec robotAsWritten(RobotSpec robot, const GeoReference& georeference) {
-    const auto written = [&](MapPoint point, bool inStartCrs) -> std::optional<MapPoint> {
-        MapPoint converted = georeference.toCrsUnits(point);
-        if (inStartCrs) {
-            const auto transformed = georeference.toCrs(robot.startCrs, point);
-            if (!transformed.ok())
-                return std::nullopt;
-            converted = transformed.value();
-        }
-        return MapPoint{roundedToBillionths(converted.x), roundedToBillionths(converted.y)};
-    };
-    const auto writeIn = [&](bool inStartCrs) {
-        const std::optional<MapPoint> start = written(robot.start, inStartCrs);
+    const auto writeIn = [&](const std::string& crs) {
+        const std::optional<MapPoint> start = writtenIn(crs, robot.start, georeference);
         const std::optional<MapPoint> charger =
-            robot.charger ? written(*robot.charger, inStartCrs) : std::nullopt;
+            robot.charger ? writtenIn(crs, *robot.charger, georeference) : std::nullopt;
         if (!start || (robot.charger && !charger))
             return false;
         robot.start = *start;
         robot.charger = charger;
         return true;
     };
-    if (robot.startCrs.empty() || !writeIn(true)) {
+    if (robot.startCrs.empty() || !writeIn(robot.startCrs)) {
         robot.startCrs.clear(); // none given, or one the map's points do not go into
-        writeIn(false);
+        writeIn(std::string());
     }
     return robot;
 }

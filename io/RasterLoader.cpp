@@ -435,7 +435,8 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
                 " x " + std::to_string(coarse.rows) + " (mode resampling)");
         }
         raster.warpedFromGeographic = true;
-        raster.warnings.push_back(
+        // News, not a warning: planning in metres is what a geographic raster needs.
+        raster.notes.push_back(
             "geographic CRS " + raster.sourceCrsName + ": planned in " + utm->GetName() +
             (raster.coarsened ? " (warped by mode to the pixel budget)" : " (nearest-neighbour warp)"));
         planningCrs = std::move(utm);

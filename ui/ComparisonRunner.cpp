@@ -18,6 +18,23 @@ std::vector<std::string> ComparisonOutcome::warningsOf(std::size_t row) const {
     return warnings;
 }
 
+namespace {
+
+// What a plan's waypoint files would warn of; none once cancelled, or where working it out fails (the plan
+// stands: its files are measured again when it is shown).
+std::vector<std::string> fileWarningsOf(const Plan* plan, const FileWarnings& fileWarnings,
+                                        const std::atomic<bool>& cancelled) {
+    if (plan == nullptr || !fileWarnings || cancelled.load())
+        return {};
+    try {
+        return fileWarnings(*plan);
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
+} // namespace
+
 ComparisonRunner::ComparisonRunner(QObject* parent) : QObject(parent) {
     connect(&watcher_, &QFutureWatcher<ComparisonOutcome>::finished, this,
             [this] { emit finished(watcher_.result()); });
@@ -112,8 +129,7 @@ bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice>
             }
             outcome.rows.push_back(row);
             outcome.errors.push_back(refused);
-            outcome.fileWarnings.push_back(plan && fileWarnings ? fileWarnings(*plan)
-                                                                : std::vector<std::string>());
+            outcome.fileWarnings.push_back(fileWarningsOf(plan.get(), fileWarnings, *cancelFlag));
             outcome.plans.push_back(plan);
             if (index + 1 < planners)
                 QMetaObject::invokeMethod(

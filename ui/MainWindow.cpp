@@ -545,8 +545,7 @@ void MainWindow::createActions() {
     fileMenu->addSeparator();
     saveAction_ = fileMenu->addAction(actionIcon("save"), tr("&Save mission"), this, [this] {
         if (document_->missionPath().isEmpty()) {
-            const QString path = QFileDialog::getSaveFileName(
-                this, tr("Save mission"), dialogFolder(kMissionFolderKey), kMissionFilter);
+            const QString path = askMissionPath(tr("Save mission"));
             if (!path.isEmpty())
                 saveMission(path);
         } else {
@@ -556,8 +555,7 @@ void MainWindow::createActions() {
     saveAction_->setObjectName(QStringLiteral("saveMissionAction"));
     saveAction_->setShortcut(QKeySequence::Save);
     auto* saveAsAction = fileMenu->addAction(tr("Save mission &as…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save mission as"),
-                                                          dialogFolder(kMissionFolderKey), kMissionFilter);
+        const QString path = askMissionPath(tr("Save mission as"));
         if (!path.isEmpty())
             saveMission(path);
     });
@@ -1024,7 +1022,10 @@ void MainWindow::sizeWaypointFiles() {
         legendPanel_->showFieldTimes(fieldTimesOf(*plan, sizes, vehicles));
         // Flights a battery cannot fly, said where every message is kept, once a plan (the results are
         // shown again whenever a robot is renamed).
-        if (flightsWarnedPlan_.lock() != plan) {
+        // A compared plan's were said with the comparison's (logComparedWarnings).
+        const bool compared =
+            std::find(comparison_.plans.begin(), comparison_.plans.end(), plan) != comparison_.plans.end();
+        if (flightsWarnedPlan_.lock() != plan && !compared) {
             const QStringList tooLong = ResultsPanel::flightsTooLongWarnings(sizes, vehicles, names);
             for (const QString& warning : tooLong)
                 messageLog_->add(tr("Warning: %1").arg(warning));
@@ -1257,6 +1258,17 @@ void MainWindow::reportError(const QString& title, const QString& message) {
         QMessageBox::warning(this, title, message);
 }
 
+// Where to save the mission; a name typed without an extension gets .json (asked about before it replaces a
+// file), so that Open mission lists it.
+QString MainWindow::askMissionPath(const QString& title) {
+    QFileDialog dialog(this, title, dialogFolder(kMissionFolderKey), kMissionFilter);
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setDefaultSuffix(QStringLiteral("json"));
+    if (dialog.exec() != QDialog::Accepted)
+        return {};
+    return dialog.selectedFiles().value(0);
+}
+
 bool MainWindow::maybeSave() {
     if (!isMissionModified() || !dialogsEnabled_)
         return true;
@@ -1273,8 +1285,7 @@ bool MainWindow::maybeSave() {
         return true;
     QString path = document_->missionPath();
     if (path.isEmpty())
-        path = QFileDialog::getSaveFileName(this, tr("Save mission"), dialogFolder(kMissionFolderKey),
-                                            kMissionFilter);
+        path = askMissionPath(tr("Save mission"));
     return !path.isEmpty() && saveMission(path);
 }
 
@@ -1331,7 +1342,8 @@ bool MainWindow::openRaster(const QString& path, const QString& preset) {
     // tolerance tuned for another map is not a choice made for this one).
     mission.planner =
         defaultPlannerChoice(document_->hasMap() ? document_->plannerChoice().planner : std::string());
-    const std::vector<std::string> warnings = raster->warnings;
+    std::vector<std::string> warnings = raster->notes; // said alike in the status bar
+    warnings.insert(warnings.end(), raster->warnings.begin(), raster->warnings.end());
     document_->reset(std::move(raster), std::move(mission), QString());
     undoStack_->clear();
     settingsModified_ = false;
@@ -1400,7 +1412,7 @@ bool MainWindow::openMission(const QString& path) {
     mission.area.includePath = io::resolveMissionPath(mission.area.includePath, missionPath);
     mission.area.excludePath = io::resolveMissionPath(mission.area.excludePath, missionPath);
     // The window keeps every start in the planning frame; saving writes them back in the CRS they were given
-    // in (start_crs, kept), else in the raster CRS's units.
+    // in (start_crs, kept), else in the planning CRS's units (io::robotAsWritten).
     for (std::size_t robot = 0; robot < mission.robots.size(); ++robot) {
         mission.robots[robot].start = starts.value()[robot];
         mission.robots[robot].charger = chargers.value()[robot];
@@ -1520,9 +1532,14 @@ QString MainWindow::restorePlanBeside(const QString& missionPath, const std::str
                   "have changed since): press Plan to plan again.");
     }
     auto plan = std::make_shared<const Plan>(std::move(*loaded.value()));
-    const double makespan = plan->metrics.makespanSeconds;
+    // The time the results lead with: the last robot home where flights split the missions.
+    const PlanMetrics& metrics = plan->metrics;
+    const QString done =
+        metrics.timedInTheField()
+            ? tr("last robot home after %1").arg(ResultsPanel::formatDuration(metrics.fieldMakespanSeconds))
+            : tr("makespan %1").arg(ResultsPanel::formatDuration(metrics.makespanSeconds));
     document_->setPlan(std::move(plan), document_->currentInputs());
-    return tr(" Restored its saved plan (makespan %1).").arg(ResultsPanel::formatDuration(makespan));
+    return tr(" Restored its saved plan (%1).").arg(done);
 }
 
 namespace {
@@ -1847,9 +1864,11 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
     showWorkUnderway();
     progressBar_->setValue(0);
     updateActions();
-    showStatus(tr("Comparing the %1 planners checked in the Compare planners panel (uncheck any not wanted "
-                  "there)…")
-                   .arg(planners.size()),
+    showStatus(planners.size() == 1
+                   ? tr("Comparing the one planner checked in the Compare planners panel (check more there)…")
+                   : tr("Comparing the %1 planners checked in the Compare planners panel (uncheck any not "
+                        "wanted there)…")
+                         .arg(planners.size()),
                0);
     return true;
 }

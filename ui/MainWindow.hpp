@@ -181,6 +181,7 @@ class MainWindow : public QMainWindow {
     void handleComparisonFinished(const ComparisonOutcome& outcome);
     void nameRefusals(ComparisonOutcome& outcome) const;
     [[nodiscard]] FileWarnings waypointFileWarnings() const;
+    [[nodiscard]] QString askMissionPath(const QString& title);
     void showComparison(bool raise = true);
     void showWorkUnderway();
     void showComparedPlan(int row);

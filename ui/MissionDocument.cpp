@@ -183,7 +183,8 @@ bool MissionDocument::robotFlies(int robot) const {
 }
 
 QString MissionDocument::nextRobotName() const {
-    for (int number = 1;; ++number) {
+    // Numbered by its place, so that "robot 3" in a message is the robot named Robot 3.
+    for (auto number = mission_.robots.size() + 1;; ++number) {
         const std::string candidate = "Robot " + std::to_string(number);
         bool used = false;
         for (const auto& robot : mission_.robots)

@@ -5,6 +5,7 @@
 #include "io/ClassTableSources.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/Mission.hpp"
+#include "io/MissionInputs.hpp"
 
 #include <QFile>
 #include <QJsonArray>
@@ -319,6 +320,49 @@ class MissionFilesTest : public QObject {
                      notes[0].find("up to every 75 m") != std::string::npos &&
                      notes[0].find("a photo every 48 m") != std::string::npos,
                  notes[0].c_str());
+    }
+
+    // A start read in its start_crs and written back reads as given, save after save, though the way into
+    // the planning frame and back is a millimetre off (WGS84 to Swiss LV95 shifts the datum); without a
+    // start_crs, or with one the points cannot go into, it is written in the planning CRS's units.
+    void startsAreWrittenBackAsGiven() {
+        const auto swiss = GeoReference::fromDefinition("EPSG:2056");
+        QVERIFY2(swiss.ok(), swiss.ok() ? "" : swiss.error().c_str());
+        const GeoReference& georeference = swiss.value();
+        RobotSpec robot{"drone", {6.6183, 46.5708}, "EPSG:4326"};
+        robot.charger = MapPoint{6.61, 46.57};
+        for (int save = 0; save < 5; ++save) {
+            RobotSpec held = robot; // as the window holds it: in the planning frame
+            held.start = georeference.fromCrs(robot.startCrs, robot.start).value();
+            held.charger = georeference.fromCrs(robot.startCrs, *robot.charger).value();
+            robot = robotAsWritten(held, georeference);
+            QCOMPARE(robot.startCrs, std::string("EPSG:4326"));
+            QCOMPARE(robot.start.x, 6.6183);
+            QCOMPARE(robot.start.y, 46.5708);
+            QCOMPARE(robot.charger->x, 6.61);
+            QCOMPARE(robot.charger->y, 46.57);
+        }
+        // Moved a metre east in the planning frame: written with the decimals that hold it to 5 mm.
+        RobotSpec moved = robot;
+        moved.start = georeference.fromCrs("EPSG:4326", robot.start).value();
+        moved.start.x += 1.0;
+        moved.charger.reset();
+        const RobotSpec written = robotAsWritten(moved, georeference);
+        const MapPoint back = georeference.fromCrs("EPSG:4326", written.start).value();
+        QVERIFY(std::hypot(back.x - moved.start.x, back.y - moved.start.y) <= 0.005);
+        QVERIFY(written.start.x != 6.6183);
+        // In the planning CRS's units: the fewest decimals within 5 mm (3.5 mm off here), not the float's
+        // tail.
+        RobotSpec own{"rover", {2533000.123456789, 1152000.5}, ""};
+        const RobotSpec ownWritten = robotAsWritten(own, georeference);
+        QVERIFY(ownWritten.startCrs.empty());
+        QCOMPARE(ownWritten.start.x, 2533000.12);
+        QCOMPARE(ownWritten.start.y, 1152000.5);
+        // A CRS the points cannot go into: written in the planning CRS's units, without it.
+        RobotSpec unknown{"lost", {2533000.0, 1152000.0}, "EPSG:999999"};
+        const RobotSpec unknownWritten = robotAsWritten(unknown, georeference);
+        QVERIFY(unknownWritten.startCrs.empty());
+        QCOMPARE(unknownWritten.start.x, 2533000.0);
     }
 
     // The passes are spaced by the smallest field of view of the classes on the map: a class of the table
@@ -687,6 +731,14 @@ class MissionFilesTest : public QObject {
                  path +
                      ": exports.altitude_m: expected a number of metres, found the text \"400 ft\": give it "
                      "in metres, without quotes or a unit");
+        QCOMPARE(
+            errorWith(R"("camera_trigger_m": " +48 Metres ")"),
+            path +
+                ": exports.camera_trigger_m: expected a number of metres, found the text \" +48 Metres \": "
+                "write 48, without quotes or a unit (the key's name gives it)");
+        QCOMPARE(errorWith(R"("speed_tolerance": "10%")"),
+                 path + ": exports.speed_tolerance: expected a number, found the text \"10%\": give it as a "
+                        "number, without quotes");
         QCOMPARE(errorWith(R"("altitude_m": "high")"),
                  path + ": exports.altitude_m: expected a number, found a string");
     }
