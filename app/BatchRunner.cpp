@@ -745,7 +745,7 @@ void BatchRunner::executeComparison() {
     const std::size_t robots = mission_.robots.size();
     std::vector<io::ComparisonRow> rows;
     std::vector<std::optional<Plan>> plans;
-    std::set<std::string> saidOnce; // the mission's own warnings, which every plan carries
+    std::set<std::string> saidOnce; // the mission's own warnings and notes, which every plan carries
     returnFreedMemory();
     const double residentWithRaster = residentMegabytes();
     for (std::size_t i = 0; i < options_.comparePlanners.size(); ++i) {
@@ -780,7 +780,7 @@ void BatchRunner::executeComparison() {
             started = std::chrono::steady_clock::now();
             Plan plan = runPlanner(problem);
             row.planningMilliseconds = millisecondsSince(started);
-            sayMissionNotes(plan, problem);
+            sayMissionNotes(plan, problem, &saidOnce);
             sayComparedPlanWarnings(plan, problem, saidOnce);
             processMilliseconds_ = {{"read_raster", readMilliseconds}, {"plan", row.planningMilliseconds}};
             writeOutputs(plan, (fs::path(options_.outputDirectory) / name).string());
@@ -820,12 +820,21 @@ bool isOfTheMission(const PlanIssue& issue, const PlanningProblem& problem) {
 // its plan, as CPPIED drops "each is timed at its own" speed. Where an aircraft takes off outside the task
 // area is said too: the start given is not where its path begins; and a robot that can cover only the part
 // of the map it starts in, which planners on cells of other sizes may see joined to the rest.
-void BatchRunner::sayMissionNotes(const Plan& plan, const PlanningProblem& problem) {
-    for (const PlanIssue& issue : plan.issues)
-        if (issue.severity == IssueSeverity::Information &&
-            (isOfTheMission(issue, problem) || issue.code == "take-off-outside" ||
-             issue.code == "confined-robot"))
-            note(planMessage(issue.message));
+void BatchRunner::sayMissionNotes(const Plan& plan, const PlanningProblem& problem,
+                                  std::set<std::string>* saidOnce) {
+    for (const PlanIssue& issue : plan.issues) {
+        const bool ofTheMission = isOfTheMission(issue, problem);
+        if (issue.severity != IssueSeverity::Information ||
+            !(ofTheMission || issue.code == "take-off-outside" || issue.code == "confined-robot"))
+            continue;
+        // In a comparison, the mission's own notes are every plan's: said once, under no planner.
+        const bool once = ofTheMission && saidOnce != nullptr;
+        if (once && !saidOnce->insert(issue.message).second)
+            continue;
+        const std::string prefix = std::exchange(plannerPrefix_, once ? "" : plannerPrefix_);
+        note(planMessage(issue.message));
+        plannerPrefix_ = prefix;
+    }
 }
 
 // A compared plan's warnings under its planner's name; those of the mission itself (the problem's notes),

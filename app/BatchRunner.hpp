@@ -78,7 +78,9 @@ class BatchRunner {
     void flushPending();
     void note(const std::string& message);
     void warn(const std::string& message);
-    void sayMissionNotes(const Plan& plan, const PlanningProblem& problem);
+    // saidOnce: in a comparison, the notes of the mission said already (said once, under no planner).
+    void sayMissionNotes(const Plan& plan, const PlanningProblem& problem,
+                         std::set<std::string>* saidOnce = nullptr);
     void sayComparedPlanWarnings(const Plan& plan, const PlanningProblem& problem,
                                  std::set<std::string>& saidOnce);
     [[nodiscard]] std::string areaGivenIn(const std::string& message) const;
