@@ -447,14 +447,16 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
         } else if (flag == "--altitude") {
             options.altitudeMetres = parseFiniteNumber(value);
             if (!options.altitudeMetres || *options.altitudeMetres < 0.0 || *options.altitudeMetres > 10000.0)
-                return failure("--altitude: " + quoted(value) +
-                               " is not an altitude above home (0 to 10000 metres)");
+                return failure(
+                    "--altitude: " + quoted(value) +
+                    " is not an altitude above home (a number of metres without a unit, 0 to 10000)");
         } else if (flag == "--cruise-speed") {
             options.cruiseSpeedMetresPerSecond = parseFiniteNumber(value);
             if (!options.cruiseSpeedMetresPerSecond || *options.cruiseSpeedMetresPerSecond < 0.0 ||
                 *options.cruiseSpeedMetresPerSecond > 1000.0)
                 return failure("--cruise-speed: " + quoted(value) +
-                               " is not a speed (0 for the land-cover speeds, up to 1000 m/s)");
+                               " is not a speed (a number of metres per second without a unit: 0 for the "
+                               "land-cover speeds, up to 1000)");
         } else if (flag == "--flight-time") {
             if (auto problem =
                     readDurationFlag(flag, value, "25min", &io::flightTimeProblem, options.flightTimeSeconds))

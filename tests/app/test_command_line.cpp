@@ -292,10 +292,11 @@ void TestCommandLine::errors_data() {
         << "--vehicle: \"quadcopter\" is not a vehicle (rover, multirotor or fixed-wing)";
     QTest::newRow("--altitude negative")
         << words("--batch m.json --out o --altitude -5")
-        << "--altitude: \"-5\" is not an altitude above home (0 to 10000 metres)";
+        << "--altitude: \"-5\" is not an altitude above home (a number of metres without a unit, 0 to 10000)";
     QTest::newRow("--cruise-speed in km/h")
         << words("--batch m.json --out o --cruise-speed 1200")
-        << "--cruise-speed: \"1200\" is not a speed (0 for the land-cover speeds, up to 1000 m/s)";
+        << "--cruise-speed: \"1200\" is not a speed (a number of metres per second without a unit: 0 for the "
+           "land-cover speeds, up to 1000)";
     QTest::newRow("--flight-time in parsecs")
         << words("--batch m.json --out o --flight-time 12parsecs")
         << "--flight-time: \"12parsecs\" is not a duration (seconds, or a number with s, min or h: 25min)";
