@@ -13,7 +13,7 @@ namespace {
 constexpr double wholeRasterShare = 0.8;
 constexpr double marginShare = 0.2;
 constexpr double minimumMarginShare = 0.05; // of the raster's extent
-constexpr double maximumMarginShare = 0.5;  // of the plans' extent, for the raster's share
+constexpr double maximumMarginShare = 0.25; // of the plans' extent, for the raster's share
 // How far past the plans, in shares of their extent, a ring may reach to widen the frame (a ring reaching
 // further is left to be cut by the frame's edge: the plans would shrink to a corner of a circle); and the
 // room left round a ring for its dashed line.
@@ -70,18 +70,28 @@ ClassGrid extentOf(const ClassGrid& grid) {
     return extent;
 }
 
+// Whether a ring holds all of the bounds: then nothing lies beyond it to see, and the plans keep the frame.
+bool ringHolds(const FrameRing& ring, const Bounds& bounds) {
+    const double farX =
+        std::max(std::abs(bounds.minX - ring.centre.x), std::abs(bounds.maxX - ring.centre.x));
+    const double farY =
+        std::max(std::abs(bounds.minY - ring.centre.y), std::abs(bounds.maxY - ring.centre.y));
+    return std::hypot(farX, farY) <= ring.radiusMetres;
+}
+
 // The plans' bounds with their margin and the rings, as far as they may widen it.
 Bounds framedBounds(const ClassGrid& grid, const Bounds& bounds, const std::vector<FrameRing>& rings) {
     const double extent = std::max(bounds.maxX - bounds.minX, bounds.maxY - bounds.minY);
     // A fifth of the plans' extent around them, and at least a twentieth of the raster's: a plan of a few
-    // cells keeps some of the land around it. Never more than half the plans' extent, though: a small area
-    // of interest on a country's raster would be a speck amid its surroundings.
+    // cells keeps some of the land around it. Never more than a quarter of the plans' extent, though: a small
+    // area of interest on a country's raster would be a speck amid its surroundings.
     const double rasterMargin =
         std::min(minimumMarginShare * std::max(grid.width(), grid.height()), maximumMarginShare * extent);
     Bounds framed = bounds.grownBy(std::max(marginShare * extent, rasterMargin));
     const Bounds limit = bounds.grownBy(ringReachShare * extent);
     for (const FrameRing& ring : rings) {
-        if (!(ring.radiusMetres > 0.0) || !std::isfinite(ring.centre.x) || !std::isfinite(ring.centre.y))
+        if (!(ring.radiusMetres > 0.0) || !std::isfinite(ring.centre.x) || !std::isfinite(ring.centre.y) ||
+            ringHolds(ring, bounds))
             continue;
         const double reach = ring.radiusMetres * (1.0 + ringMarginShare);
         const Bounds box{ring.centre.x - reach, ring.centre.y - reach, ring.centre.x + reach,

@@ -13,9 +13,10 @@ namespace mcpp::render {
 // pixels around their cells with a margin of a fifth of their extent on each side (at least a twentieth of
 // the raster's). Null plans are skipped.
 //
-// Rings drawn round points (an aircraft's flight reach round its start) are taken in too where they reach
-// no further than the plans' extent again on each side of them: a ring far larger than the plans would
-// shrink them to a dot, and is cut by the frame's edge instead.
+// Rings drawn round points (an aircraft's flight reach round its start) are taken in too where they cross
+// the plans and reach no further than the plans' extent again on each side of them: a ring far larger than
+// the plans would shrink them to a dot, and one round all of them has nothing beyond it to show; both are
+// cut by the frame's edge instead.
 struct FrameRing {
     MapPoint centre;
     double radiusMetres = 0.0;

@@ -168,15 +168,17 @@ class TestPlanRenderer : public QObject {
         QCOMPARE(smallFrame.originY, 4970.0);
         QCOMPARE(smallFrame.columns, 4);
         QCOMPARE(smallFrame.rows, 4);
-        // A flight-reach ring round the cell is taken in where it reaches no further than the plan's
+        // A flight-reach ring crossing the cell is taken in where it reaches no further than the plan's
         // extent again on each side (x 1080-1140, y 4920-4980); a ring of a kilometre would shrink the plan
-        // to a dot, and is left to the frame's edge.
+        // to a dot, and one round the whole cell has nothing beyond it to show: both are left to the frame's
+        // edge.
         QCOMPARE(render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 0.0}}).columns, 4);
-        const ClassGrid ringed = render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 25.0}});
-        QCOMPARE(ringed.originX, 1080.0);
-        QCOMPARE(ringed.originY, 4980.0);
-        QCOMPARE(ringed.columns, 6);
-        QCOMPARE(ringed.rows, 6);
+        const ClassGrid ringed = render::planFrame(grid, {&small}, {{{1105.0, 4945.0}, 18.0}});
+        QCOMPARE(ringed.originX, 1080.0); // the ring reaches x 1086.5, past the margin's 1090
+        QCOMPARE(ringed.originY, 4970.0);
+        QCOMPARE(ringed.columns, 5);
+        QCOMPARE(ringed.rows, 5);
+        QCOMPARE(render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 25.0}}).columns, 4); // round it all
         QCOMPARE(render::planFrame(grid, {&small}, {{{1110.0, 4950.0}, 1000.0}}).columns, 4);
         // Its outline shows in the frame (x 1090-1130, y 4930-4970) when it crosses it: not wholly round
         // it, nor wholly beside it.
@@ -188,7 +190,7 @@ class TestPlanRenderer : public QObject {
         QVERIFY(!render::someRingShows(smallFrame, {{{1110.0, 4950.0}, 0.0}}));
         QVERIFY(render::someRingShows(smallFrame, {{{1160.0, 4950.0}, 25.0}, {{1110.0, 4950.0}, 15.0}}));
         // On a raster twenty times as wide, a twentieth of it (100 m) would shrink the cell to a speck: the
-        // margin stays within half the plan's extent (10 m), as above.
+        // margin stays within a quarter of the plan's extent (5 m; 10 m in whole pixels), as above.
         ClassGrid wide = grid;
         wide.columns *= 20;
         wide.rows *= 20;
