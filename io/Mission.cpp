@@ -947,8 +947,8 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
 
 // The presets give a ground robot's fields of view: a drone's camera sees much farther, and passes that close
 // make it fly many times the flights it needs. Said where every robot flies (a rover beside drones needs
-// the table as it is: fields of view are the classes', not the robots') and every passable class's FOV is
-// one preset's.
+// the table as it is: fields of view are the classes', not the robots') and the FOV of every passable class
+// on the map (present) is one preset's.
 std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<VehicleSettings>& vehicles,
                                                             const ClassTable& classes,
                                                             const std::vector<std::int32_t>& present) {
