@@ -36,22 +36,22 @@ struct FlagSpec {
 };
 
 constexpr std::array flagSpecs{
-    FlagSpec{"--batch", "", false, false},          FlagSpec{"--out", "DIR", true, false},
-    FlagSpec{"--raster", "FILE", true, false},      FlagSpec{"--classes", "TABLE.csv", true, false},
-    FlagSpec{"--preset", "NAME", true, false},      FlagSpec{"--start", "X,Y", true, true},
-    FlagSpec{"--start-crs", "EPSG:N", true, false}, FlagSpec{"--planner", "NAME", true, false},
-    FlagSpec{"--band", "N", true, false},           FlagSpec{"--param", "KEY=VALUE", true, true},
-    FlagSpec{"--purity", "F", true, false},         FlagSpec{"--missing-as-obstacle", "", true, false},
-    FlagSpec{"--open-paths", "", true, false},      FlagSpec{"--quiet", "", true, false},
-    FlagSpec{"--dense-paths", "", true, false},     FlagSpec{"--cell-polygons", "", true, false},
-    FlagSpec{"--threads", "N", true, false},        FlagSpec{"--compare", "NAMES", true, false},
-    FlagSpec{"--area", "FILE", true, false},        FlagSpec{"--no-go", "FILE", true, false},
-    FlagSpec{"--max-waypoints", "N", true, false},  FlagSpec{"--event", "T:ROBOT:FACTOR", true, true},
-    FlagSpec{"--charger", "X,Y", true, true},       FlagSpec{"--vehicle", "TYPE", true, false},
-    FlagSpec{"--altitude", "M", true, false},       FlagSpec{"--cruise-speed", "M/S", true, false},
-    FlagSpec{"--fov-scale", "F", true, false},      FlagSpec{"--flight-time", "T", true, false},
-    FlagSpec{"--turnaround", "T", true, false},     FlagSpec{"--fov", "M", true, false},
-    FlagSpec{"--outputs", "KEYS", true, false},     FlagSpec{"--camera-trigger", "M", true, false},
+    FlagSpec{"--batch", "", false, false},         FlagSpec{"--out", "DIR", true, false},
+    FlagSpec{"--raster", "FILE", true, false},     FlagSpec{"--classes", "TABLE.csv", true, false},
+    FlagSpec{"--preset", "NAME", true, false},     FlagSpec{"--start", "X,Y", true, true},
+    FlagSpec{"--start-crs", "CRS", true, false},   FlagSpec{"--planner", "NAME", true, false},
+    FlagSpec{"--band", "N", true, false},          FlagSpec{"--param", "KEY=VALUE", true, true},
+    FlagSpec{"--purity", "F", true, false},        FlagSpec{"--missing-as-obstacle", "", true, false},
+    FlagSpec{"--open-paths", "", true, false},     FlagSpec{"--quiet", "", true, false},
+    FlagSpec{"--dense-paths", "", true, false},    FlagSpec{"--cell-polygons", "", true, false},
+    FlagSpec{"--threads", "N", true, false},       FlagSpec{"--compare", "NAMES", true, false},
+    FlagSpec{"--area", "FILE", true, false},       FlagSpec{"--no-go", "FILE", true, false},
+    FlagSpec{"--max-waypoints", "N", true, false}, FlagSpec{"--event", "T:ROBOT:FACTOR", true, true},
+    FlagSpec{"--charger", "X,Y", true, true},      FlagSpec{"--vehicle", "TYPE", true, false},
+    FlagSpec{"--altitude", "M", true, false},      FlagSpec{"--cruise-speed", "M/S", true, false},
+    FlagSpec{"--fov-scale", "F", true, false},     FlagSpec{"--flight-time", "T", true, false},
+    FlagSpec{"--turnaround", "T", true, false},    FlagSpec{"--fov", "M", true, false},
+    FlagSpec{"--outputs", "KEYS", true, false},    FlagSpec{"--camera-trigger", "M", true, false},
 };
 
 // --outputs: catalogue keys separated by commas, each once; report.json, which the summary and the
@@ -150,19 +150,6 @@ std::optional<MapPoint> parsePoint(std::string_view text) {
     if (!x || !y)
         return std::nullopt;
     return MapPoint{*x, *y};
-}
-
-// EPSG:N is what the batch contract promises; anything richer belongs in a mission file.
-bool isEpsgCode(std::string_view text) {
-    constexpr std::string_view prefix = "EPSG:";
-    if (text.size() <= prefix.size())
-        return false;
-    for (std::size_t i = 0; i < prefix.size(); ++i) {
-        if (std::toupper(static_cast<unsigned char>(text[i])) != prefix[i])
-            return false;
-    }
-    const auto digits = text.substr(prefix.size());
-    return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // "7.40," is what the shell passes of "--start 7.40, 1.67".
@@ -361,8 +348,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                                " has a --charger already: give one --charger after each --start");
             charger = *point;
         } else if (flag == "--start-crs") {
-            if (!isEpsgCode(value))
-                return failure("--start-crs: " + quoted(value) + " is not EPSG:N");
+            // Any CRS GDAL reads, as a mission file's start_crs; one it does not know is said on loading.
             options.startCrs = value;
         } else if (flag == "--planner") {
             if (!findPlannerDescription(value))
@@ -548,7 +534,7 @@ std::string CommandLine::usage() {
            "      Opens the planner window, optionally with a mission or a land-cover raster.\n"
            "  mcpp --batch MISSION.json --out DIR [options]\n"
            "  mcpp --batch --raster FILE [--classes TABLE.csv | --preset NAME] --start X,Y [--charger X,Y]\n"
-           "       [--start X,Y [--charger X,Y] ...] [--start-crs EPSG:N] --out DIR [options]\n"
+           "       [--start X,Y [--charger X,Y] ...] [--start-crs CRS] --out DIR [options]\n"
            "      Plans without a window and writes the outputs into DIR.\n"
            "\n"
            "Batch flags:\n"
@@ -563,8 +549,8 @@ std::string CommandLine::usage() {
            "                           raster's CRS (longitude,latitude for a geographic raster) unless\n"
            "                           --start-crs says otherwise. Errors number the --start flags from 1\n"
            "                           in the order given, as the outputs number the robots\n"
-           "  --start-crs EPSG:N       CRS of the --start and --charger coordinates, e.g. EPSG:4326 for\n"
-           "                           longitude,latitude\n"
+           "  --start-crs CRS          CRS of the --start and --charger coordinates: EPSG:N (EPSG:4326\n"
+           "                           for longitude,latitude), ESRI:N, or a PROJ or WKT definition\n"
            "  --charger X,Y            where the robot of the --start before it charges, for planners\n"
            "                           that run on batteries (wavefront-battery); robots without one\n"
            "                           charge at their start\n"

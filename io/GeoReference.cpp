@@ -5,6 +5,7 @@
 #include "io/internal/GeoReferenceState.hpp"
 #include "io/internal/TransformationLoan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <vector>
@@ -21,7 +22,18 @@ bool transformPoint(OGRCoordinateTransformation& transformation, double& x, doub
            std::isfinite(x) && std::isfinite(y);
 }
 
+std::string notUnderstood(const std::string& definition, const std::string& detail) {
+    const std::string hint = epsgSpellingHint(definition);
+    return "CRS \"" + definition + "\" is not understood" + (hint.empty() ? detail : hint);
+}
+
 } // namespace
+
+std::string epsgSpellingHint(const std::string& definition) {
+    const bool digitsOnly = !definition.empty() && std::all_of(definition.begin(), definition.end(),
+                                                               [](char c) { return c >= '0' && c <= '9'; });
+    return digitsOnly ? " (an EPSG code is written EPSG:" + definition + ")" : std::string();
+}
 
 GeoReference::GeoReference() = default;
 
@@ -30,7 +42,7 @@ Result<GeoReference> GeoReference::fromDefinition(const std::string& definition)
     QuietGdalErrors quiet;
     auto crs = internal::spatialReferenceFromDefinition(definition);
     if (!crs)
-        return Result<GeoReference>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
+        return Result<GeoReference>::failure(notUnderstood(definition, quiet.detail()));
     if (crs->IsGeographic() || crs->IsGeocentric()) {
         return Result<GeoReference>::failure(
             "CRS \"" + definition + "\" is not projected (degrees); a planning frame needs metres or feet");
@@ -168,7 +180,7 @@ Result<MapPoint> GeoReference::fromCrs(const std::string& definition, MapPoint p
     QuietGdalErrors quiet;
     const auto source = internal::spatialReferenceFromDefinition(definition);
     if (!source)
-        return Result<MapPoint>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
+        return Result<MapPoint>::failure(notUnderstood(definition, quiet.detail()));
     if (!hasCrs())
         return Result<MapPoint>::failure("the map has no CRS, so a point in " + definition +
                                          " cannot be placed on it");
@@ -191,7 +203,7 @@ Result<MapPoint> GeoReference::toCrs(const std::string& definition, MapPoint poi
     QuietGdalErrors quiet;
     const auto target = internal::spatialReferenceFromDefinition(definition);
     if (!target)
-        return Result<MapPoint>::failure("CRS \"" + definition + "\" is not understood" + quiet.detail());
+        return Result<MapPoint>::failure(notUnderstood(definition, quiet.detail()));
     if (!hasCrs())
         return Result<MapPoint>::failure("the map has no CRS, so its points cannot go to " + definition);
     std::unique_lock lock(state_->mutex);

@@ -57,4 +57,7 @@ class GeoReference {
     std::shared_ptr<const State> state_;
 };
 
+// " (an EPSG code is written EPSG:4326)" for a CRS given as a bare number, else empty: the likeliest slip.
+[[nodiscard]] std::string epsgSpellingHint(const std::string& definition);
+
 } // namespace mcpp::io

@@ -11,6 +11,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/AutopilotMission.hpp"
 #include "io/ClassTableSources.hpp"
+#include "io/GeoReference.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/internal/ClassTableJson.hpp"
 #include "io/internal/EventsJson.hpp"
@@ -450,7 +451,8 @@ bool readRobot(MissionReader& reader, const QJsonValue& value, const std::string
     if (!robot.startCrs.empty()) {
         internal::QuietGdalErrors quiet;
         if (!internal::spatialReferenceFromDefinition(robot.startCrs)) {
-            return reader.fail(path + ".start_crs", "\"" + robot.startCrs + "\" is not a CRS GDAL knows");
+            return reader.fail(path + ".start_crs", "\"" + robot.startCrs + "\" is not a CRS GDAL knows" +
+                                                        epsgSpellingHint(robot.startCrs));
         }
     }
     return true;
@@ -951,12 +953,12 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
 // on the map (present) is one preset's.
 std::optional<std::string> aircraftAtPresetFieldsOfViewNote(const std::vector<VehicleSettings>& vehicles,
                                                             const ClassTable& classes,
-                                                            const std::vector<std::int32_t>& present) {
+                                                            const std::vector<std::int32_t>& present,
+                                                            std::optional<double> smallest) {
     if (vehicles.empty() ||
         !std::all_of(vehicles.begin(), vehicles.end(),
                      [](const VehicleSettings& vehicle) { return isAircraft(vehicle.type); }))
         return std::nullopt;
-    const std::optional<double> smallest = smallestFieldOfView(classes, present);
     if (!smallest)
         return std::nullopt;
     std::vector<const LandCoverClass*> passable;
@@ -1040,9 +1042,7 @@ void noteAircraftAltitudes(const Mission& mission, const std::vector<VehicleSett
 // Photos farther apart than the footprint the plan spaces its passes by (the smallest field of view of a
 // class robots cover) miss the ground between them along the path.
 void notePhotosFartherThanFootprint(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
-                                    const ClassTable& classes, const std::vector<std::int32_t>& present,
-                                    std::vector<PlanIssue>& notes) {
-    const std::optional<double> smallest = smallestFieldOfView(classes, present);
+                                    std::optional<double> smallest, std::vector<PlanIssue>& notes) {
     if (!smallest)
         return;
     const double footprint = *smallest;
@@ -1195,11 +1195,13 @@ void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, Plan
     problem.robotFlights = flightLimitsOf(mission, vehicles);
     problem.flyingRobots = flyingRobots(mission);
     applyCruiseSpeed(mission, vehicles, problem);
+    // The passes are spaced by the smallest field of view of a class on the map, not of the whole table.
     const std::vector<std::int32_t> present = presentClassValues(raster);
-    if (auto groundView = aircraftAtPresetFieldsOfViewNote(vehicles, problem.classes, present))
+    const std::optional<double> smallest = smallestFieldOfView(problem.classes, present);
+    if (auto groundView = aircraftAtPresetFieldsOfViewNote(vehicles, problem.classes, present, smallest))
         problem.notes.push_back({IssueSeverity::Warning, "aircraft-at-ground-fov", std::move(*groundView)});
     noteAircraftAltitudes(mission, vehicles, problem.notes);
-    notePhotosFartherThanFootprint(mission, vehicles, problem.classes, present, problem.notes);
+    notePhotosFartherThanFootprint(mission, vehicles, smallest, problem.notes);
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))
         problem.notes.push_back(
             {IssueSeverity::Information, "batteries-from-flight-times", std::move(*batteries)});

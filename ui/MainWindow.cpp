@@ -1021,16 +1021,13 @@ void MainWindow::sizeWaypointFiles() {
         resultsPanel_->showWaypointFiles(sizes, vehicles, names);
         legendPanel_->showFieldTimes(fieldTimesOf(*plan, sizes, vehicles));
         // Flights a battery cannot fly, said where every message is kept, once a plan (the results are
-        // shown again whenever a robot is renamed).
-        // A compared plan's were said with the comparison's (logComparedWarnings).
-        const bool compared =
-            std::find(comparison_.plans.begin(), comparison_.plans.end(), plan) != comparison_.plans.end();
-        if (flightsWarnedPlan_.lock() != plan && !compared) {
+        // shown again whenever a robot is renamed; a compared plan's were said with the comparison's).
+        if (!flightsSaidOf(plan)) {
             const QStringList tooLong = ResultsPanel::flightsTooLongWarnings(sizes, vehicles, names);
             for (const QString& warning : tooLong)
                 messageLog_->add(tr("Warning: %1").arg(warning));
             if (!tooLong.isEmpty())
-                flightsWarnedPlan_ = plan;
+                flightsSaid_.push_back(plan);
         }
     });
     // A large map's paths hold tens of millions of points: measured beside the window, not in it.
@@ -1992,6 +1989,12 @@ QString MainWindow::longPlanAdvice(double makespanSeconds, std::size_t robots) c
 }
 
 // A plan's warnings and notes, whole, in the messages panel, where every message is kept.
+bool MainWindow::flightsSaidOf(const std::shared_ptr<const Plan>& plan) {
+    std::erase_if(flightsSaid_, [](const std::weak_ptr<const Plan>& said) { return said.expired(); });
+    return std::any_of(flightsSaid_.begin(), flightsSaid_.end(),
+                       [&plan](const std::weak_ptr<const Plan>& said) { return said.lock() == plan; });
+}
+
 void MainWindow::logPlanIssues(const Plan& plan) {
     const std::vector<std::string> names = robotNames();
     for (const PlanIssue& issue : plan.issues)
@@ -2013,6 +2016,7 @@ void MainWindow::logComparedWarnings() {
     for (std::size_t row = 0; row < comparison_.plans.size() && row < comparison_.rows.size(); ++row) {
         if (!comparison_.plans[row])
             continue;
+        flightsSaid_.push_back(comparison_.plans[row]); // its file warnings are among these
         for (const std::string& warning : comparison_.warningsOf(row)) {
             const bool shared = plansCarrying[warning] > 1;
             if (shared && !saidOnce.insert(warning).second)

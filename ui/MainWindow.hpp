@@ -188,6 +188,8 @@ class MainWindow : public QMainWindow {
     void logPlanIssues(const Plan& plan);
     [[nodiscard]] QString longPlanAdvice(double makespanSeconds, std::size_t robots) const;
     void logComparedWarnings();
+    // Whether Messages said the plan's too long flights (those of plans gone are forgotten).
+    bool flightsSaidOf(const std::shared_ptr<const Plan>& plan);
     void showBusy(const QString& stage, bool busy);
     void placeStart(MapPoint point);
     void removeSelectedRobot();
@@ -253,7 +255,7 @@ class MainWindow : public QMainWindow {
     bool planningUnderway_ = false;         // from starting a plan to handling its outcome
     bool comparisonUnderway_ = false;       // the same for a comparison
     std::weak_ptr<const Plan> advisedPlan_; // the last plan made here, and what to change for a better one
-    std::weak_ptr<const Plan> flightsWarnedPlan_; // the last plan whose too long flights Messages said
+    std::vector<std::weak_ptr<const Plan>> flightsSaid_; // plans whose too long flights Messages said
     QString planAdvice_;
     bool settingsModified_ = false;
     bool planUnsaved_ = false;

@@ -470,9 +470,9 @@ Plan Planner::planInFieldTime(const PlannerDescription& planner, const PlanningP
     }
     // Weighed cells and measured paces both move the border by what the plan before them flew; where
     // neither evened the robots out, the division on the paths alone is tried, and from it divisions with
-    // each robot's path weighed by its pace in the field as flown, half way from the pace its division
-    // counted: the pace grows with the ground taken from another robot (farther out, dearer trips), so the
-    // whole step overshoots.
+    // each robot's path weighed by the geometric mean of its pace in the field as flown and the pace its
+    // division counted (half way on a log scale): the pace grows with the ground taken from another robot
+    // (farther out, dearer trips), so the whole step overshoots.
     if (!evenInTheField(bestField)) {
         constexpr int pathPaceRounds = 4;
         const auto onPaths = [&](std::vector<double> paces) {

@@ -261,6 +261,12 @@ std::vector<BadInputCase> makeCases() {
          "--start-crs",
          Gui::None,
          {}},
+        {"start CRS given as a bare EPSG number",
+         onRaster("good.tif", "good.csv", {"--start", kStart, "--start-crs", "4326"}),
+         2,
+         "--start-crs: CRS \"4326\" is not understood (an EPSG code is written EPSG:4326)",
+         Gui::None,
+         {}},
         {"no start", onRaster("good.tif"), 2, "--start", Gui::None, {}},
         // Flags.
         {"unknown flag", goodMission({"--frobnicate"}), 2, "--frobnicate", Gui::None, {}},
