@@ -438,8 +438,13 @@ std::string robotsNamedIn(const std::string& message, const std::vector<std::str
 
 std::string messageForPeople(const std::string& message, const LoadedRaster* raster,
                              const std::vector<std::string>& robotNames) {
-    const std::string placed =
-        raster != nullptr ? withPointsInDegrees(message, raster->georeference, raster->grid) : message;
+    return raster != nullptr ? messageForPeople(message, raster->georeference, &raster->grid, robotNames)
+                             : message + robotsNamedIn(message, robotNames, false);
+}
+
+std::string messageForPeople(const std::string& message, const GeoReference& georeference,
+                             const ClassGrid* grid, const std::vector<std::string>& robotNames) {
+    const std::string placed = grid != nullptr ? withPointsInDegrees(message, georeference, *grid) : message;
     return placed + robotsNamedIn(message, robotNames, false);
 }
 

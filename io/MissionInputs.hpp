@@ -83,6 +83,9 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 // their degrees (withPointsInDegrees; none without a raster), then the robots it numbers by name.
 [[nodiscard]] std::string messageForPeople(const std::string& message, const LoadedRaster* raster,
                                            const std::vector<std::string>& robotNames);
+// The same for a map known by its georeference and grid (an export's); without a grid, points stay as given.
+[[nodiscard]] std::string messageForPeople(const std::string& message, const GeoReference& georeference,
+                                           const ClassGrid* grid, const std::vector<std::string>& robotNames);
 // A planning error about one robot's start or one planner parameter, the field named in the caller's terms,
 // then the robots its detail numbers by name (robotsNamedIn) and, for a start, startProblemAdvice:
 // "mission.json: robots[1].start (beta): ... lies in the same cell as robot 1's start (...) (robot 1 is

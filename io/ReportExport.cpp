@@ -4,6 +4,7 @@
 #include "core/model/TimelineLayer.hpp"
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/PlannerRegistry.hpp"
+#include "io/MissionInputs.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/ClassTableJson.hpp"
 #include "io/internal/EventsJson.hpp"
@@ -81,6 +82,11 @@ std::string sortieColumns(const Plan& plan, const RobotSorties& robot) {
     return "," + std::to_string(robot.sorties.size()) + "," + std::to_string(robot.charges()) + "," +
            internal::formatShortest(chargingSeconds(path)) + "," + internal::formatShortest(longest) + "," +
            internal::formatShortest(robot.outOfRangeAreaSquareMetres);
+}
+
+// A plan's message as the run said it: its map points with their degrees, the robots it numbers by name.
+std::string forPeople(const ExportContext& context, const std::string& message) {
+    return messageForPeople(message, context.georeference, context.grid, context.robotNames);
 }
 
 // Robots whose waypoint files are written in parts or sorties: scripts find it among the issues, beside what
@@ -213,7 +219,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     for (const std::string& warning : context.inputWarnings)
         warnings.push(warning);
     for (const std::string& warning : context.plan.warnings())
-        warnings.push(warning);
+        warnings.push(forPeople(context, warning));
     JsonValue& issues = root.add("issues", JsonValue::array());
     for (const std::string& warning : context.inputWarnings) {
         JsonValue& item = issues.push(JsonValue::object());
@@ -225,7 +231,7 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
         JsonValue& item = issues.push(JsonValue::object());
         item.add("severity", issue.severity == IssueSeverity::Warning ? "warning" : "information");
         item.add("code", issue.code);
-        item.add("message", issue.message);
+        item.add("message", forPeople(context, issue.message));
     }
     addMissionFileIssues(issues, warnings, context);
     for (const std::string& note : context.outputNotes) {

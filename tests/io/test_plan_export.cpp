@@ -11,6 +11,7 @@
 #include "io/AutopilotMission.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/GeoJsonText.hpp"
+#include "tests/support/SyntheticMaps.hpp"
 
 #include <QDir>
 #include <QFile>
@@ -834,6 +835,29 @@ class PlanExportTest : public QObject {
         std::unique_ptr<OGRFeature> first(mergedRoutes->GetNextFeature());
         QVERIFY(first != nullptr);
         QCOMPARE(first->GetGeometryRef()->toLineString()->getNumPoints(), 5);
+    }
+
+    // report.json says a plan's messages as the run does: map points with their degrees, robots by name.
+    void reportMessagesGivePointsInDegreesAndRobotsByName() {
+        const Plan fixture = plan_;
+        plan_.issues = {
+            {IssueSeverity::Warning, "cut-off", "robot 1 cannot reach land round (301910, 4154075)"},
+            {IssueSeverity::Information, "far", "far from (1, 2)"}};
+        const ClassGrid grid = test::filledGrid(4, 2, 301900.0, 4154080.0, 10.0, 1);
+        ExportContext withGrid = context();
+        withGrid.grid = &grid;
+        const std::string path = file("report-people.json");
+        QVERIFY(writeReportJson(withGrid, path).ok());
+        plan_ = fixture;
+        const QJsonObject report = readJson(path);
+        const QString warning = report["warnings"].toArray()[0].toString();
+        QVERIFY2(warning.startsWith("robot 1 cannot reach land round (301910, 4154075; longitude -113.24"),
+                 qPrintable(warning));
+        QVERIFY2(warning.endsWith(" (robot 1 is Scout)"), qPrintable(warning));
+        const QJsonArray issues = report["issues"].toArray();
+        QCOMPARE(issues[0].toObject()["message"].toString(), warning);
+        // A pair of numbers far from the map is not its point: left as it is.
+        QCOMPARE(issues[1].toObject()["message"].toString(), QString("far from (1, 2)"));
     }
 
     void reportJsonAndCsv() {
