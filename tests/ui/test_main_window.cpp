@@ -1255,6 +1255,59 @@ class TestMainWindow : public QObject {
             QStringLiteral("darp"));
     }
 
+    // Drones whose flights cannot reach all of their regions: each compared plan's row counts the flights
+    // too long among its warnings and names them when hovered, Messages says them once a plan under its
+    // planner's name, and showing the plan does not say them again.
+    void comparedPlansSayFlightsTheirBatteriesCannotFly() {
+        const std::unique_ptr<ui::MainWindow> owned = sampleWindow();
+        if (!owned)
+            QSKIP("samples/zion-nlcd/mission.json is not there yet");
+        ui::MainWindow& window = *owned;
+        QVERIFY2(window.document()->hasMap(), qPrintable(window.lastError()));
+        io::Mission mission = window.document()->mission();
+        for (io::RobotSpec& robot : mission.robots) {
+            robot.vehicle.type = io::VehicleType::Multirotor;
+            robot.vehicle.altitudeMetres = 30.0;
+            robot.vehicle.flightTimeSeconds = 300.0; // about 1.3 km out and back at 10 m/s: not the whole map
+            robot.vehicle.cruiseSpeedMetresPerSecond = 10.0;
+        }
+        window.document()->reset(window.document()->sharedRaster(), mission, QString());
+        QSignalSpy finished(&window, &ui::MainWindow::comparisonFinished);
+        QVERIFY2(window.startComparison({"mcpp-mlct", "darp"}), qPrintable(window.lastError()));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
+        QVERIFY(finished.first().first().toBool());
+        const QString tooLong =
+            QStringLiteral(" with the flights to and from its start, longer than its 5 min "
+                           "flight time");
+        QTableWidget* table = window.comparisonPanel()->table();
+        QCOMPARE(table->rowCount(), 2);
+        for (int row = 0; row < table->rowCount(); ++row) {
+            const QTableWidgetItem* state = table->item(row, table->columnCount() - 1);
+            QVERIFY2(state->text().contains(QStringLiteral("warning")), qPrintable(state->text()));
+            QVERIFY2(state->toolTip().contains(tooLong), qPrintable(state->toolTip()));
+        }
+        const auto flightWarnings = [&window, &tooLong](const QString& planner) {
+            return window.messageLog()
+                ->messages()
+                .filter(QStringLiteral("Warning: ") + planner + ": ")
+                .filter(tooLong);
+        };
+        const qsizetype darpSaid = flightWarnings(QStringLiteral("darp")).size();
+        QVERIFY2(darpSaid > 0, qPrintable(window.messageLog()->messages().join('\n')));
+        QVERIFY(flightWarnings(QStringLiteral("mcpp-mlct")).size() > 0);
+        const qsizetype allSaid = window.messageLog()->messages().filter(tooLong).size();
+        // Shown: its waypoint files are sized again beside the window; what they find was said already.
+        table->selectRow(window.comparisonPanel()->rowOfPlanner("darp"));
+        QCOMPARE(window.document()->plan()->planner, std::string("darp"));
+        const auto* waypointFiles =
+            window.resultsPanel()->findChild<QLabel*>(QStringLiteral("waypointFilesLabel"));
+        QVERIFY(waypointFiles != nullptr);
+        QTRY_VERIFY_WITH_TIMEOUT(waypointFiles->text().contains(QStringLiteral("out of its reach")),
+                                 kPlanningTimeoutMilliseconds);
+        QTest::qWait(200);
+        QCOMPARE(window.messageLog()->messages().filter(tooLong).size(), allSaid);
+    }
+
     void toolbarAndAboutComeFromTheResources() {
         ui::MainWindow window;
         window.setOpenSampleOnFirstStart(false);
