@@ -152,6 +152,14 @@ const QString kRasterFilter =
     QObject::tr("Land-cover rasters (*.tif *.tiff *.img *.vrt *.asc *.gpkg *.nc);;All files (*)");
 const QString kMissionFilter = QObject::tr("mcpp missions (*.json);;All files (*)");
 
+// Whether every class has the same field of view, as one given over the whole table makes it.
+bool hasOneFieldOfView(const ClassTable& classes) {
+    return std::all_of(classes.classes().begin(), classes.classes().end(),
+                       [&](const LandCoverClass& landCover) {
+                           return landCover.fieldOfViewMetres == classes.classes().front().fieldOfViewMetres;
+                       });
+}
+
 // Exported PNGs are for print: larger than batch mode's plan.png.
 constexpr int exportImageSide = 3000;
 
@@ -1093,10 +1101,16 @@ void MainWindow::syncPresetCombo() {
     const QSignalBlocker blocker(presetCombo_);
     const QString preset = QString::fromStdString(document_->mission().preset);
     int index = presetCombo_->findData(preset);
-    // The preset's or the legend's table edited (FOVs scaled, a speed changed) is the user's own now.
-    if (document_->hasMap() &&
-        !(document_->classes() == io::classTableForRaster(*document_->raster(), preset.toStdString())))
-        index = presetCombo_->findData(kOwnTableData);
+    // The preset's or the legend's table edited (FOVs scaled, a speed changed) is the user's own now; one
+    // field of view over every class (a mission's classes.fov_m, a drone's footprint) keeps it the preset's.
+    if (document_->hasMap()) {
+        ClassTable presetTable = io::classTableForRaster(*document_->raster(), preset.toStdString());
+        const ClassTable& classes = document_->classes();
+        if (!classes.empty() && hasOneFieldOfView(classes))
+            presetTable.setEveryFieldOfView(classes.classes().front().fieldOfViewMetres);
+        if (!(classes == presetTable))
+            index = presetCombo_->findData(kOwnTableData);
+    }
     presetCombo_->setCurrentIndex(std::max(index, 0));
 }
 

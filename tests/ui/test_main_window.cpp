@@ -1777,6 +1777,18 @@ class TestMainWindow : public QObject {
         QCOMPARE(window.document()->mission().preset, std::string("nlcd-simplified")); // where it came from
         window.undoStack()->undo();
         QCOMPARE(window.presetCombo()->currentData().toString(), QStringLiteral("nlcd-simplified"));
+        // One field of view over every class (a mission's classes.fov_m, a drone's footprint) keeps it the
+        // preset the banner says was applied; another FOV on some classes only does not.
+        ui::ClassBulkEdit footprint;
+        footprint.fieldOfView = 40.0;
+        QList<int> everyRow;
+        for (int row = 0; row < window.classTableModel()->rowCount(); ++row)
+            everyRow.append(row);
+        QVERIFY(window.classTableModel()->editRows(everyRow, footprint));
+        QCOMPARE(window.presetCombo()->currentData().toString(), QStringLiteral("nlcd-simplified"));
+        footprint.fieldOfView = 60.0;
+        QVERIFY(window.classTableModel()->editRows({0}, footprint));
+        QVERIFY(window.presetCombo()->currentText().startsWith(QStringLiteral("Own table")));
     }
 };
 
