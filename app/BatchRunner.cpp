@@ -576,8 +576,10 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     for (int robot = 0; robot < robots; ++robot)
         if (partsWritten.count({robot, "qgc-plan"}) != 0)
             noteMissionFiles(context, robot);
-    if (!partsWritten.empty())
+    if (!partsWritten.empty()) {
         fieldTimeNote_ = io::fieldTimeNote(context);
+        fieldBoundNote_ = io::fieldBoundNote(context);
+    }
     removeStaleRobotFiles(robots, partsWritten, folder);
 }
 
@@ -948,9 +950,8 @@ void BatchRunner::printSummary(const Plan& plan) const {
     // A split mission's flights, trips and turnarounds take longer than the plan's makespan says.
     if (!fieldTimeNote_.empty())
         output_ << "mcpp: " << fieldTimeNote_ << '\n';
-    if (!fieldTimeNote_.empty() && metrics.fieldLowerBoundSeconds > 0.0)
-        output_ << "mcpp: no plan making these turns brings the last robot home before "
-                << formatDuration(metrics.fieldLowerBoundSeconds) << " in the field\n";
+    if (!fieldTimeNote_.empty() && !fieldBoundNote_.empty())
+        output_ << "mcpp: " << fieldBoundNote_ << '\n';
     if (const TimelineLayer* timeline = timelineLayerOf(plan))
         output_ << "mcpp: " << timelineSentence(timeline->summary()) << '\n';
     if (const auto causes = io::longPlanCauses(metrics.makespanSeconds, mission_, classes_))

@@ -104,6 +104,7 @@ class BatchRunner {
     std::vector<std::string> inputWarnings_;   // said before planning, for report.json
     std::vector<std::string> plannerWarnings_; // likewise, of the planner --compare runs
     std::string fieldTimeNote_;                // with the summary, when missions are written in parts
+    std::string fieldBoundNote_;               // the least time in the field, said after fieldTimeNote_
     std::string plannerPrefix_;                // "darp: " before notes and warnings while --compare runs it
     std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan
     int exitCode_ = 0;

@@ -157,6 +157,10 @@ inline constexpr std::size_t kmlMostMissionParts = 2000;
 // done in the field after 5 d 13 h, its 271 flights and the turnarounds between them included"; empty when
 // no aircraft's mission and no mission with turnarounds is in parts, or a time is unknown.
 [[nodiscard]] std::string fieldTimeNote(const ExportContext& context);
+// "no plan making these turns brings the last robot home before 1 d 12 h in the field", and where some
+// flight is longer than its battery, that the bound then leaves the trips out to the work and back out;
+// empty where the plan has no bound in the field.
+[[nodiscard]] std::string fieldBoundNote(const ExportContext& context);
 
 // Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive
 // parts beside `path` (missionPartPath), each beginning where the one before it ended, and `path` itself is

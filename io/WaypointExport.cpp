@@ -734,6 +734,23 @@ std::string unevenFieldTimes(const ExportContext& context, int first, double fir
 
 } // namespace
 
+std::string fieldBoundNote(const ExportContext& context) {
+    const double bound = context.plan.metrics.fieldLowerBoundSeconds;
+    if (!(bound > 0.0))
+        return {};
+    bool over = false;
+    for (int robot = 0; robot < static_cast<int>(context.plan.paths.size()) && !over; ++robot)
+        over = missionFlights(autopilotMissionOf(context, robot), context.vehicle(robot)).overFlightTime > 0;
+    // Flights that cannot reach their work have no trip the bound could price (PlanMetrics): it is far
+    // below such a plan's time, which is no measure of how far the plan is off.
+    return "no plan making these turns brings the last robot home before " + formatDuration(bound) +
+           " in the field" +
+           (over ? " (the work and the turnarounds alone: with flights longer than a battery, the trips out "
+                   "to "
+                   "the work and back are left out of this bound)"
+                 : std::string());
+}
+
 std::string fieldTimeNote(const ExportContext& context) {
     int last = -1;
     int first = -1;
