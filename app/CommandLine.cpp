@@ -120,6 +120,29 @@ std::optional<SpeedEvent> parseEvent(std::string_view text) {
     return SpeedEvent{*time, *robot, *factor};
 }
 
+// ": write 100" for "100m" or "10 m/s": a number the flag takes, with a unit it does not.
+std::string numberWithUnitHint(std::string_view value) {
+    const std::string_view text = trimmedText(value);
+    std::size_t end = 0;
+    while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) != 0 ||
+                                 text[end] == '.' || (end == 0 && (text[end] == '-' || text[end] == '+'))))
+        ++end;
+    const std::string_view number = text.substr(0, end);
+    const std::string_view unit = trimmedText(text.substr(end));
+    if (unit.empty() || parseFiniteNumber(text) || !parseFiniteNumber(number) ||
+        std::isalpha(static_cast<unsigned char>(unit.front())) == 0)
+        return {};
+    return ": write " + std::string(number.front() == '+' ? number.substr(1) : number);
+}
+
+// Seconds given without a unit, too few for a flight but a likely number of minutes: "25" meant 25min.
+std::string minutesMeantHint(const std::string& value, std::optional<double> seconds) {
+    if (!seconds || *seconds < 1.0 || *seconds >= 60.0 || !parseFiniteNumber(value))
+        return {};
+    return " (for " + formatQuantity(*seconds) + " minutes, write " + std::string(trimmedText(value)) +
+           "min)";
+}
+
 // A duration flag's value read into `seconds`, or what is wrong with it: not a duration (`example` shows
 // one), or one that `problem` refuses.
 std::optional<std::string> readDurationFlag(std::string_view flag, const std::string& value,
@@ -132,7 +155,7 @@ std::optional<std::string> readDurationFlag(std::string_view flag, const std::st
         return named + ": \"" + value +
                "\" is not a duration (seconds, or a number with s, min or h: " + std::string(example) + ")";
     if (const auto refused = problem(*seconds))
-        return named + " \"" + value + "\": " + *refused;
+        return named + " \"" + value + "\": " + *refused + minutesMeantHint(value, seconds);
     return std::nullopt;
 }
 
@@ -435,14 +458,16 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             if (!options.altitudeMetres || *options.altitudeMetres < 0.0 || *options.altitudeMetres > 10000.0)
                 return failure(
                     "--altitude: " + quoted(value) +
-                    " is not an altitude above home (a number of metres without a unit, 0 to 10000)");
+                    " is not an altitude above home (a number of metres without a unit, 0 to 10000)" +
+                    numberWithUnitHint(value));
         } else if (flag == "--cruise-speed") {
             options.cruiseSpeedMetresPerSecond = parseFiniteNumber(value);
             if (!options.cruiseSpeedMetresPerSecond || *options.cruiseSpeedMetresPerSecond < 0.0 ||
                 *options.cruiseSpeedMetresPerSecond > 1000.0)
                 return failure("--cruise-speed: " + quoted(value) +
                                " is not a speed (a number of metres per second without a unit: 0 for the "
-                               "land-cover speeds, up to 1000)");
+                               "land-cover speeds, up to 1000)" +
+                               numberWithUnitHint(value));
         } else if (flag == "--flight-time") {
             if (auto problem =
                     readDurationFlag(flag, value, "25min", &io::flightTimeProblem, options.flightTimeSeconds))
@@ -456,7 +481,8 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             if (!options.cameraTriggerMetres || io::cameraTriggerProblem(*options.cameraTriggerMetres))
                 return failure("--camera-trigger: " + quoted(value) +
                                " is not a distance between photos (a number of metres without a unit: 0 for "
-                               "none, or 0.1 to 10000)");
+                               "none, or 0.1 to 10000)" +
+                               numberWithUnitHint(value));
         } else if (flag == "--fov-scale") {
             options.fieldOfViewScale = parseFiniteNumber(value);
             if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||
@@ -468,7 +494,7 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             if (!options.fieldOfViewMetres || !(*options.fieldOfViewMetres > 0.0) ||
                 *options.fieldOfViewMetres > kMaximumFieldOfViewMetres)
                 return failure("--fov: " + quoted(value) + " is not a field of view (more than 0, up to " +
-                               formatQuantity(kMaximumFieldOfViewMetres) + " m)");
+                               formatQuantity(kMaximumFieldOfViewMetres) + " m)" + numberWithUnitHint(value));
         } else if (flag == "--outputs") {
             if (auto problem = parseOutputKeys(value, options.outputKeys))
                 return failure(*problem);

@@ -81,6 +81,16 @@ class MissionReader {
         return fail(path, "expected " + expected + ", found " + typeName(value));
     }
 
+    // "\"classes\", as \"classes\": {\"fov_m\": ...}"; a home ending in [] is an array of objects, each
+    // holding the key ("robots[]": each robot).
+    static std::string placeOf(const std::string& home, const std::string& key) {
+        if (home.size() > 2 && home.ends_with("[]")) {
+            const std::string array = home.substr(0, home.size() - 2);
+            return "each of \"" + array + "\", as \"" + array + "\": [{\"" + key + "\": ...}]";
+        }
+        return "\"" + home + "\", as \"" + home + "\": {\"" + key + "\": ...}";
+    }
+
     // belongsIn: keys of an inner object (e.g. "preset" of "classes"), named there when given out of place.
     bool onlyKeys(const QJsonObject& object, const std::string& path, const std::set<std::string>& allowed,
                   const std::map<std::string, std::string>& belongsIn = {}) {
@@ -90,8 +100,7 @@ class MissionReader {
                 if (const auto home = belongsIn.find(key); home != belongsIn.end())
                     return fail(join(path, key), "unknown key " +
                                                      std::string(path.empty() ? "at the top level" : "here") +
-                                                     ": it belongs in \"" + home->second + "\", as \"" +
-                                                     home->second + "\": {\"" + key + "\": ...}");
+                                                     ": it belongs in " + placeOf(home->second, key));
                 const auto meant = closestName(key, {allowed.begin(), allowed.end()});
                 return fail(join(path, key),
                             "unknown key" + (meant ? ": did you mean \"" + *meant + "\"?" : std::string()));
@@ -655,6 +664,17 @@ Result<Mission> parseMission(const std::string& text, const std::string& path) {
             {{"preset", "classes"},
              {"missing_as_obstacles", "classes"},
              {"table", "classes"},
+             {"fov_m", "classes"},
+             {"start", "robots[]"},
+             {"start_crs", "robots[]"},
+             {"charger", "robots[]"},
+             {"vehicle", "exports"},
+             {"altitude_m", "exports"},
+             {"cruise_speed_mps", "exports"},
+             {"flight_time_s", "exports"},
+             {"turnaround_s", "exports"},
+             {"camera_trigger_m", "exports"},
+             {"max_waypoints", "exports"},
              {"path", "raster"},
              {"band", "raster"},
              {"include", "area"},

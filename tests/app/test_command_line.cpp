@@ -267,6 +267,18 @@ void TestCommandLine::errors_data() {
     QTest::newRow("unknown short flag") << words("-x") << "unknown flag -x (see mcpp --help)";
     QTest::newRow("unknown flag with value")
         << words("--colour=red") << "unknown flag --colour (see mcpp --help)";
+    QTest::newRow("--altitude with a unit")
+        << words(flagMission + " --altitude 100m")
+        << "--altitude: \"100m\" is not an altitude above home (a number of metres without a unit, 0 to "
+           "10000): write 100";
+    QTest::newRow("--cruise-speed with a unit") << words(flagMission + " --cruise-speed 10m/s")
+                                                << "--cruise-speed: \"10m/s\" is not a speed (a number of "
+                                                   "metres per second without a unit: 0 for the "
+                                                   "land-cover speeds, up to 1000): write 10";
+    QTest::newRow("--flight-time in minutes without a unit")
+        << words(flagMission + " --flight-time 25")
+        << "--flight-time \"25\": must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 s), not "
+           "25 s (for 25 minutes, write 25min)";
     QTest::newRow("--start-crs empty")
         << words(flagMission + " --start-crs=") << "--start-crs needs a value: CRS";
     QTest::newRow("--charger not a point")
@@ -310,7 +322,7 @@ void TestCommandLine::errors_data() {
     QTest::newRow("--flight-time of half a minute")
         << words("--batch m.json --out o --flight-time 30")
         << "--flight-time \"30\": must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 s), "
-           "not 30 s";
+           "not 30 s (for 30 minutes, write 30min)";
     QTest::newRow("--flight-time a second above 1000 h")
         << words("--batch m.json --out o --flight-time 3600001")
         << "--flight-time \"3600001\": must be 0 (no limit) or a flight of 1 min to 1000 h (60 to 3600000 "

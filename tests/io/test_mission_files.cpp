@@ -765,6 +765,20 @@ class MissionFilesTest : public QObject {
         QCOMPARE(loaded.error(), path +
                                      ": preset: unknown key at the top level: it belongs in \"classes\", as "
                                      "\"classes\": {\"preset\": ...}");
+        // A drone's keys too, and a robot's, whose home is an array of objects.
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "fov_m": 40})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path +
+                                     ": fov_m: unknown key at the top level: it belongs in \"classes\", as "
+                                     "\"classes\": {\"fov_m\": ...}");
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "start_crs": "EPSG:4326"})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path + ": start_crs: unknown key at the top level: it belongs in each of "
+                                        "\"robots\", as \"robots\": [{\"start_crs\": ...}]");
         writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
                             "robots": [{"start": [10, 20]}],
                             "planner": {"name": "mcpp-mlct", "parameters": {"fewer_turn_slack": 2}}})");
