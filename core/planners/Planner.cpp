@@ -128,15 +128,21 @@ std::string chargersIgnoredMessage(const PlannerDescription& planner) {
            plannerNamesWhere([](const PlannerDescription& other) { return other.fliesOnBatteries(); }) + ")";
 }
 
-std::string confinedRobotMessage(const ConfinedRobot& confined) {
+// idle: the part holds under half an even share of the land per robot in it (`share` of one), so the robot
+// stands idle most of the mission.
+std::string confinedRobotMessage(const ConfinedRobot& confined, double share, bool idle) {
     const std::string others =
         confined.robotsInPocket > 1
             ? " with " + std::to_string(confined.robotsInPocket - 1) + " other robot(s)"
             : "";
     return "robot " + std::to_string(confined.robot + 1) +
            " starts in a part of the map cut off from the rest (" +
-           formatArea(confined.pocketAreaSquareMetres) + ") and can cover only that part" + others +
-           "; the lower bound counts each part with its own robots";
+           formatArea(confined.pocketAreaSquareMetres) +
+           (idle ? ", " + formatPercent(share) + " of an even share of the land" : std::string()) +
+           ") and can cover only that part" + others +
+           "; the lower bound counts each part with its own robots" +
+           (idle ? "; it stands idle most of the mission: start it in the larger part to share the work"
+                 : std::string());
 }
 
 // "robot 3", "robots 3 and 4", "robots 3, 4 and 10" (counted from 1); past a dozen, "and 40 more".
@@ -576,8 +582,16 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     if (const WaypointsBeyondRaster beyond = waypointsBeyondRaster(problem.grid, plan.paths);
         beyond.waypoints > 0)
         planningRun.addIssue(IssueSeverity::Warning, "paths-beyond-raster", beyondRasterMessage(beyond));
-    for (const ConfinedRobot& confined : plan.metrics.confinedRobots)
-        planningRun.addIssue(IssueSeverity::Information, "confined-robot", confinedRobotMessage(confined));
+    for (const ConfinedRobot& confined : plan.metrics.confinedRobots) {
+        // Most often a start put on the wrong side of a river or a fence.
+        const double evenShare = plan.metrics.passableAreaSquareMetres /
+                                 static_cast<double>(std::max<std::size_t>(problem.starts.size(), 1));
+        const double share = confined.pocketAreaSquareMetres /
+                             static_cast<double>(std::max(confined.robotsInPocket, 1)) / evenShare;
+        const bool idle = share < 0.5;
+        planningRun.addIssue(idle ? IssueSeverity::Warning : IssueSeverity::Information, "confined-robot",
+                             confinedRobotMessage(confined, share, idle));
+    }
     // Robots slowed or stopped by events are meant to do less: their plan is uneven by design.
     const bool playsEvents = planner.simulatesEvents && !problem.events.empty();
     // Nor is a plan that divides the work at one speed between robots of their own (own-speeds-unbalanced),
