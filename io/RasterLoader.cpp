@@ -16,6 +16,25 @@ namespace mcpp::io {
 
 namespace {
 
+// Where true north points on the grid at its centre (ClassGrid::trueNorthRadians): the bearing of the grid's
+// +y over a kilometre, 0 where the map has no CRS.
+double trueNorthRadians(const GeoReference& georeference, const ClassGrid& grid) {
+    if (!georeference.hasCrs())
+        return 0.0;
+    const MapPoint centre{grid.originX + grid.width() / 2.0, grid.originY - grid.height() / 2.0};
+    const auto from = georeference.toWgs84(centre);
+    const auto to = georeference.toWgs84(MapPoint{centre.x, centre.y + 1000.0});
+    if (!from || !to)
+        return 0.0;
+    const double degrees = std::acos(-1.0) / 180.0;
+    const double east =
+        (to.value().longitude - from.value().longitude) * std::cos(from.value().latitude * degrees);
+    const double north = to.value().latitude - from.value().latitude;
+    return std::isfinite(east) && std::isfinite(north) && (east != 0.0 || north != 0.0)
+               ? std::atan2(east, north)
+               : 0.0;
+}
+
 using internal::DatasetPointer;
 using internal::QuietGdalErrors;
 namespace fs = std::filesystem;
@@ -492,6 +511,7 @@ Result<LoadedRaster> loadLandCoverRaster(const std::string& path, const RasterLo
         auto reference = GeoReference::fromDefinition(internal::wktOf(*planningCrs));
         if (reference) {
             raster.georeference = std::move(reference.value());
+            grid.trueNorthRadians = trueNorthRadians(raster.georeference, grid);
         } else {
             raster.warnings.push_back("CRS " + raster.sourceCrsName +
                                       " could not be used: " + reference.error());

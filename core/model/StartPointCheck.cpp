@@ -28,21 +28,26 @@ std::string centimetres(double metres) {
     return text == "-0" ? "0" : text;
 }
 
-// "9.42 km north-east of it": how far outside the raster's extent a point lies, and which way
-// (planning frames are north up).
+// "north-east": the compass point nearest the direction of the grid's (dx, dy), turned to true north.
+std::string compassPoint(const ClassGrid& grid, double dx, double dy) {
+    static const char* const names[] = {"east", "north-east", "north", "north-west",
+                                        "west", "south-west", "south", "south-east"};
+    const double turn = grid.trueNorthRadians;
+    const double east = dx * std::cos(turn) + dy * std::sin(turn);
+    const double north = -dx * std::sin(turn) + dy * std::cos(turn);
+    const double turns = std::atan2(north, east) / (2.0 * std::acos(-1.0)); // -0.5 to 0.5, 0 east
+    const int sector = static_cast<int>(std::lround(turns * 8.0 + 8.0)) % 8;
+    return names[sector];
+}
+
+// "9.42 km north-east of it": how far outside the raster's extent a point lies, and which way from the
+// nearest point of the extent.
 std::string beyondTheRaster(const ClassGrid& grid, MapPoint point) {
-    const double west = grid.originX - point.x;
-    const double east = point.x - grid.maxX();
-    const double north = point.y - grid.originY;
-    const double south = grid.minY() - point.y;
-    const double across = std::max({west, east, 0.0});
-    const double along = std::max({north, south, 0.0});
-    if (across == 0.0 && along == 0.0) // on the far edges, which belong to no pixel
+    const double dx = point.x - std::clamp(point.x, grid.originX, grid.maxX());
+    const double dy = point.y - std::clamp(point.y, grid.minY(), grid.originY);
+    if (dx == 0.0 && dy == 0.0) // on the far edges, which belong to no pixel
         return "on its far edge";
-    std::string direction = north > 0 ? "north" : south > 0 ? "south" : "";
-    if (west > 0 || east > 0)
-        direction += (direction.empty() ? "" : "-") + std::string(west > 0 ? "west" : "east");
-    return formatDistance(std::hypot(across, along)) + " " + direction + " of it";
+    return formatDistance(std::hypot(dx, dy)) + " " + compassPoint(grid, dx, dy) + " of it";
 }
 
 std::string whyOutside(std::uint8_t reason) {
@@ -58,15 +63,6 @@ std::string whyOutside(std::uint8_t reason) {
     default:
         return "it is left out of the task area";
     }
-}
-
-// "north-east": the compass point nearest the direction (dx east, dy north).
-std::string compassPoint(double dx, double dy) {
-    static const char* const names[] = {"east", "north-east", "north", "north-west",
-                                        "west", "south-west", "south", "south-east"};
-    const double turns = std::atan2(dy, dx) / (2.0 * std::acos(-1.0)); // -0.5 to 0.5, 0 east
-    const int sector = static_cast<int>(std::lround(turns * 8.0 + 8.0)) % 8;
-    return names[sector];
 }
 
 // Whether a robot could start on the pixel: in the task area, of a class robots cross.
@@ -113,7 +109,8 @@ std::string nearestStartableLand(const ClassGrid& grid, const ClassTable& classe
     if (!nearest)
         return {};
     return "; the nearest land of the task area a robot can cross is " + formatDistance(nearestDistance) +
-           " " + compassPoint(nearest->x - point.x, nearest->y - point.y) + ", at " + describePoint(*nearest);
+           " " + compassPoint(grid, nearest->x - point.x, nearest->y - point.y) + ", at " +
+           describePoint(*nearest);
 }
 
 } // namespace

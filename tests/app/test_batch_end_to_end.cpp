@@ -1040,10 +1040,14 @@ void TestBatchEndToEnd::aRobotWalledInIsSaid() {
                               "--start", "15,45", "--start", "150,45", "--start", "285,5", "--out",
                               folder.filePath(QStringLiteral("out"))});
     QCOMPARE(run.exitCode, 0);
+    // Its 3 200 m2 are under half of an even share (22 400 m2 over three robots): a warning, saying what to
+    // do.
     QVERIFY2(
-        run.standardOutput.contains(QStringLiteral(
-            "mcpp: robot 1 starts in a part of the map cut off from the rest (3200 m2) and can cover only "
-            "that part")),
+        run.standardError.contains(QStringLiteral(
+            "mcpp: warning: robot 1 starts in a part of the map cut off from the rest (3200 m2, 42.9% of "
+            "an even share of the land) and can cover only that part; the lower bound counts each part "
+            "with its own robots; it stands idle most of the mission: start it in the larger part to "
+            "share the work")),
         qPrintable(run.standardOutput + run.standardError));
     // The wall moved east: robot 1 alone in the larger part sets the bound, so the others' balance is
     // given apart, in report.json and, where it differs from the ratio, in the summary.
@@ -1061,6 +1065,14 @@ void TestBatchEndToEnd::aRobotWalledInIsSaid() {
         runMcpp({"--batch", "--raster", raster.fileName(), "--classes", classes.fileName(), "--start",
                  "15,45", "--start", "245,45", "--start", "285,5", "--out", lone});
     QCOMPARE(loneRun.exitCode, 0);
+    // Robots 2 and 3 share the small part, a third of an even share each: warned of, robot 1 not.
+    QVERIFY2(loneRun.standardError.contains(QStringLiteral(
+                 "mcpp: warning: robot 2 starts in a part of the map cut off from the rest (4800 "
+                 "m2, 32.1% of an even share of the land) and can cover only that part with 1 "
+                 "other robot(s)")),
+             qPrintable(loneRun.standardError));
+    QVERIFY2(!loneRun.standardError.contains(QStringLiteral("robot 1 starts in a part")),
+             qPrintable(loneRun.standardError));
     const QJsonObject report = readJsonObject(QDir(lone).filePath(QStringLiteral("report.json")));
     QVERIFY2(report.contains(QStringLiteral("shared_parts_ratio")), qPrintable(loneRun.standardOutput));
     const double shared = report.value(QStringLiteral("shared_parts_ratio")).toDouble();

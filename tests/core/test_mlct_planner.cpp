@@ -262,13 +262,13 @@ class MlctPlannerTest : public QObject {
         QVERIFY(problemThere->detail.find("nearest") == std::string::npos);
     }
 
-    // The raster spans x 500000 to 500100, y 3999900 to 4000000: how far off and which way, to the
-    // centimetre.
+    // The raster spans x 500000 to 500100, y 3999900 to 4000000: how far off and which way (the compass
+    // point nearest the way from the raster's nearest point), to the centimetre.
     void startOutsideSaysHowFarAndWhichWay() {
         auto problem = lakeProblem();
         problem.starts[0] = {500150.504, 4000230.25};
         expectError(problem, PlanningError::Kind::StartOutsideArea,
-                    "robot 1 start (500150.5, 4000230.25) is outside the raster, 236 m north-east of it (x "
+                    "robot 1 start (500150.5, 4000230.25) is outside the raster, 236 m north of it (x "
                     "500000.00 to 500100.00, y 3999900.00 to 4000000.00)");
         problem.starts[0] = {500050.0, 3999000.0};
         expectError(problem, PlanningError::Kind::StartOutsideArea,
@@ -277,6 +277,14 @@ class MlctPlannerTest : public QObject {
         expectError(problem, PlanningError::Kind::StartOutsideArea, "is outside the raster, 10 m west of it");
         problem.starts[0] = {500100.0, 3999950.0}; // the east edge belongs to no pixel
         expectError(problem, PlanningError::Kind::StartOutsideArea, "is outside the raster, on its far edge");
+        // A grid turned from true north (a Lambert grid far from its central meridian, true north 18 degrees
+        // clockwise of the grid's): a point due east in truth lies south-east on the grid, and is said east.
+        problem.grid.trueNorthRadians = -18.0 * std::acos(-1.0) / 180.0;
+        problem.starts[0] = {500966.0,
+                             3999400.0}; // 1 km from the corner, 30 degrees south of the grid's east
+        expectError(problem, PlanningError::Kind::StartOutsideArea, " east of it (x");
+        problem.grid.trueNorthRadians = 0.0;
+        expectError(problem, PlanningError::Kind::StartOutsideArea, " south-east of it (x");
     }
 
     void twoRobotsInOneCellAreRefused() {

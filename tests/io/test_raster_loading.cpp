@@ -214,6 +214,10 @@ class RasterLoadingTest : public QObject {
         QCOMPARE(raster.grid.rows, 367);
         QCOMPARE(raster.georeference.authorityCode(), std::string("EPSG:3978"));
         QCOMPARE(raster.grid.pixelWidth, 30.0);
+        // At 118 W the Lambert grid of central meridian 95 W is turned: true north lies 20.65 degrees
+        // clockwise of the grid's north (gdaltransform of the centre and a point a kilometre north of it).
+        const double turn = raster.grid.trueNorthRadians * 180.0 / std::acos(-1.0);
+        QVERIFY2(std::abs(turn + 20.65) < 0.01, qPrintable(QString::number(turn)));
         QCOMPARE(raster.classPixelCounts.at(1), std::int64_t{125065});
         QCOMPARE(raster.classPixelCounts.at(18), std::int64_t{23017});
         QCOMPARE(raster.classPixelCounts.at(19), std::int64_t{38});
