@@ -473,6 +473,7 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     context.inputWarnings = inputWarnings_;
     context.inputWarnings.insert(context.inputWarnings.end(), plannerWarnings_.begin(),
                                  plannerWarnings_.end());
+    flightsOverBattery_ = io::flightsOverBattery(context);
     const int robots = static_cast<int>(plan.paths.size());
 
     struct Output {
@@ -787,6 +788,7 @@ void BatchRunner::executeComparison() {
             processMilliseconds_ = {{"read_raster", readMilliseconds}, {"plan", row.planningMilliseconds}};
             writeOutputs(plan, (fs::path(options_.outputDirectory) / name).string());
             row.metrics = plan.metrics;
+            row.flightsOverBattery = flightsOverBattery_;
             row.peakMemoryMegabytes =
                 ownPeak ? peakMemoryMegabytes() - residentBefore + residentWithRaster : peakMemoryMegabytes();
             plans.back() = std::move(plan);

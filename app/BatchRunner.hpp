@@ -99,13 +99,14 @@ class BatchRunner {
     ClassTable classes_;
     std::vector<MapPoint> starts_; // planning frame
     std::vector<std::optional<MapPoint>> chargers_;
-    std::vector<std::string> pendingWarnings_; // printed once the input is known to be good
-    std::vector<std::string> pendingNotes_;    // likewise
-    std::vector<std::string> inputWarnings_;   // said before planning, for report.json
-    std::vector<std::string> plannerWarnings_; // likewise, of the planner --compare runs
-    std::string fieldTimeNote_;                // with the summary, when missions are written in parts
-    std::string fieldBoundNote_;               // the least time in the field, said after fieldTimeNote_
-    std::string plannerPrefix_;                // "darp: " before notes and warnings while --compare runs it
+    std::vector<std::string> pendingWarnings_;      // printed once the input is known to be good
+    std::vector<std::string> pendingNotes_;         // likewise
+    std::vector<std::string> inputWarnings_;        // said before planning, for report.json
+    std::vector<std::string> plannerWarnings_;      // likewise, of the planner --compare runs
+    std::string fieldTimeNote_;                     // with the summary, when missions are written in parts
+    std::string fieldBoundNote_;                    // the least time in the field, said after fieldTimeNote_
+    std::optional<std::size_t> flightsOverBattery_; // of the plan written last, for its comparison row
+    std::string plannerPrefix_; // "darp: " before notes and warnings while --compare runs it
     std::vector<std::pair<std::string, double>> processMilliseconds_; // read_raster, plan
     int exitCode_ = 0;
 };

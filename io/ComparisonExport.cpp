@@ -88,7 +88,7 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
         "planner,outcome,rank,makespan_s,lower_bound_s,ratio,total_length_m,turns,covered_fraction,"
         "repeated_fraction,unreachable_area_m2,robot_length_m,robot_time_s,robot_turns,"
         "planning_ms,peak_memory_mb,field_makespan_s,field_lower_bound_s,field_spread,time_vs_first,"
-        "lower_bound_kind,ranked_apart";
+        "lower_bound_kind,ranked_apart,flights_over_battery";
     for (const std::string& stage : stages)
         text += "," + stageColumn(stage);
     text += ",message\n";
@@ -114,7 +114,8 @@ Status writeComparisonCsv(const std::vector<ComparisonRow>& rows, const std::str
                 fieldFigure(row, metrics.fieldLowerBoundSeconds) + "," +
                 fieldFigure(row, metrics.fieldSpread()) + "," +
                 (againstFirst[index] > 0.0 ? formatShortest(againstFirst[index]) : std::string()) + "," +
-                (planned ? lowerBoundKind(metrics) : std::string()) + "," + rankedApart(row, rows);
+                (planned ? lowerBoundKind(metrics) : std::string()) + "," + rankedApart(row, rows) + "," +
+                (planned && row.flightsOverBattery ? std::to_string(*row.flightsOverBattery) : std::string());
         for (const std::string& stage : stages)
             text += "," + (planned ? formatShortest(stageMilliseconds(metrics, stage)) : std::string());
         text += "," + internal::quoteCsvField(row.message) + "\n";
@@ -153,6 +154,8 @@ Status writeComparisonJson(const std::vector<ComparisonRow>& rows, const std::st
         item.add("covered_fraction", metrics.coveredFraction);
         item.add("repeated_fraction", metrics.repeatedFraction);
         item.add("unreachable_area_m2", metrics.unreachableAreaSquareMetres);
+        if (row.flightsOverBattery)
+            item.add("flights_over_battery", static_cast<std::int64_t>(*row.flightsOverBattery));
         if (inTheField(row)) {
             item.add("field_makespan_s", metrics.fieldMakespanSeconds);
             item.add("field_lower_bound_s", metrics.fieldLowerBoundSeconds);

@@ -3,6 +3,7 @@
 #include "core/model/PlanMetrics.hpp"
 #include "io/Result.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,9 @@ struct ComparisonRow {
     // Resident peak while it planned and wrote its outputs, less what the plans before it kept resident:
     // about its peak in a run of its own (Linux; elsewhere the process's peak so far).
     double peakMemoryMegabytes = 0.0;
+    // Flights of its waypoint files longer than a battery (flightsOverBattery); none where no robot has a
+    // flight time.
+    std::optional<std::size_t> flightsOverBattery;
 };
 
 [[nodiscard]] std::string outcomeName(ComparisonRow::Outcome outcome);

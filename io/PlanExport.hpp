@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -161,6 +162,9 @@ inline constexpr std::size_t kmlMostMissionParts = 2000;
 // flight is longer than its battery, that the bound then leaves the trips out to the work and back out;
 // empty where the plan has no bound in the field.
 [[nodiscard]] std::string fieldBoundNote(const ExportContext& context);
+// How many of the robots' flights (waypoint file parts) take longer than their vehicle's flight time; none
+// where no robot has a flight time.
+[[nodiscard]] std::optional<std::size_t> flightsOverBattery(const ExportContext& context);
 
 // Per robot waypoint files. Above the vehicle's item limit, a robot's mission is written as consecutive
 // parts beside `path` (missionPartPath), each beginning where the one before it ended, and `path` itself is

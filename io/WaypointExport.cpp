@@ -734,13 +734,25 @@ std::string unevenFieldTimes(const ExportContext& context, int first, double fir
 
 } // namespace
 
+std::optional<std::size_t> flightsOverBattery(const ExportContext& context) {
+    const int robots = static_cast<int>(context.plan.paths.size());
+    bool timed = false;
+    std::size_t over = 0;
+    for (int robot = 0; robot < robots; ++robot) {
+        const VehicleSettings& vehicle = context.vehicle(robot);
+        if (!(vehicle.flightTimeSeconds > 0.0))
+            continue;
+        timed = true;
+        over += missionFlights(autopilotMissionOf(context, robot), vehicle).overFlightTime;
+    }
+    return timed ? std::optional<std::size_t>(over) : std::nullopt;
+}
+
 std::string fieldBoundNote(const ExportContext& context) {
     const double bound = context.plan.metrics.fieldLowerBoundSeconds;
     if (!(bound > 0.0))
         return {};
-    bool over = false;
-    for (int robot = 0; robot < static_cast<int>(context.plan.paths.size()) && !over; ++robot)
-        over = missionFlights(autopilotMissionOf(context, robot), context.vehicle(robot)).overFlightTime > 0;
+    const bool over = flightsOverBattery(context).value_or(0) > 0;
     // Flights that cannot reach their work have no trip the bound could price (PlanMetrics): it is far
     // below such a plan's time, which is no measure of how far the plan is off.
     return "no plan making these turns brings the last robot home before " + formatDuration(bound) +

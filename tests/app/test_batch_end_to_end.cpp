@@ -244,6 +244,12 @@ void TestBatchEndToEnd::comparisonGivesTimesInTheField() {
                                              QString::fromStdString(mcpp::formatDuration(
                                                  report.value("field_makespan_s").toDouble()))),
                  qPrintable(run.standardOutput));
+        // Flights longer than a battery, the robots' sum of report.json's, in both files.
+        int overBattery = 0;
+        for (const QJsonValue& robot : report.value("robots").toArray())
+            overBattery += robot.toObject().value("mission_parts_over_flight_time").toInt();
+        QCOMPARE(row.value("flights_over_battery").toInt(-1), overBattery);
+        QCOMPARE(fields.at(header.indexOf("flights_over_battery")), QString::number(overBattery));
         // Each plan's warnings are said as it is made, named by its planner, as for one planner.
         const auto warnings = report.value("warnings").toArray();
         warningsSaid += static_cast<int>(warnings.size());

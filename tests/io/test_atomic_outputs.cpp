@@ -107,8 +107,8 @@ class TestAtomicOutputs : public QObject {
         });
         addCase("class table", [this](const std::string& path) { return saveClassTableCsv(classes_, path); });
         const std::vector<ComparisonRow> rows{
-            {"mcpp-mlct", ComparisonRow::Outcome::Planned, {}, plan_.metrics, 12.0, 80.0},
-            {"darp", ComparisonRow::Outcome::Failed, "did not converge", {}, 0, 0}};
+            {"mcpp-mlct", ComparisonRow::Outcome::Planned, {}, plan_.metrics, 12.0, 80.0, {}},
+            {"darp", ComparisonRow::Outcome::Failed, "did not converge", {}, 0, 0, {}}};
         addCase("comparison csv", [rows](const std::string& path) { return writeComparisonCsv(rows, path); });
         addCase("comparison json",
                 [rows](const std::string& path) { return writeComparisonJson(rows, path); });

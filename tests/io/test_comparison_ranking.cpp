@@ -156,8 +156,10 @@ void TestComparisonRanking::plansAtTheClassTablesSpeedsComeAfterThoseKeepingOwnS
 void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
     ComparisonRow classSpeeds = plannedRow("mdstc", 0.999, 100.0);
     classSpeeds.metrics.ownSpeedsIgnored = true;
-    const std::vector<ComparisonRow> rows{classSpeeds, plannedRow("mcpp-mlct", 0.999, 140.0),
-                                          plannedRow("wavefront-battery", 0.5, 50.0),
+    classSpeeds.flightsOverBattery = 0;
+    ComparisonRow farFlights = plannedRow("mcpp-mlct", 0.999, 140.0);
+    farFlights.flightsOverBattery = 124; // robots with flight times: how many flights overrun a battery
+    const std::vector<ComparisonRow> rows{classSpeeds, farFlights, plannedRow("wavefront-battery", 0.5, 50.0),
                                           unplannedRow("cppied", ComparisonRow::Outcome::Failed)};
     QTemporaryDir directory;
     QVERIFY(directory.isValid());
@@ -175,6 +177,11 @@ void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
     const QStringList expected{"own_speeds_ignored", "", "covers_less", ""};
     for (int row = 0; row < 4; ++row)
         QCOMPARE(lines[row + 1].split(',').at(column), expected[row]);
+    const int flights = lines[0].split(',').indexOf("flights_over_battery");
+    QCOMPARE(flights, column + 1);                     // after the columns earlier versions wrote
+    const QStringList overBattery{"0", "124", "", ""}; // empty: no flight times, or not planned
+    for (int row = 0; row < 4; ++row)
+        QCOMPARE(lines[row + 1].split(',').at(flights), overBattery[row]);
 
     QFile json(jsonPath);
     QVERIFY(json.open(QIODevice::ReadOnly));
@@ -183,6 +190,8 @@ void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
     for (int row = 0; row < 4; ++row)
         QCOMPARE(planners[row].toObject().value("ranked_apart").toString(), expected[row]);
     QVERIFY(!planners[1].toObject().contains("ranked_apart"));
+    QCOMPARE(planners[1].toObject().value("flights_over_battery").toInt(), 124);
+    QVERIFY(!planners[2].toObject().contains("flights_over_battery"));
 }
 
 QTEST_APPLESS_MAIN(TestComparisonRanking)
