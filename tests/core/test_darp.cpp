@@ -104,10 +104,9 @@ class DarpTest : public QObject {
             std::find_if(plan.issues.begin(), plan.issues.end(),
                          [](const PlanIssue& issue) { return issue.code == "confined-robot"; });
         QVERIFY(confined->severity == IssueSeverity::Warning);
-        QVERIFY2(
-            confined->message.find(" of an even share of the land) and can cover only that part") !=
-                std::string::npos,
-            confined->message.c_str());
+        QVERIFY2(confined->message.find(" of an even share of the land) and can cover only that part") !=
+                     std::string::npos,
+                 confined->message.c_str());
         // Without the wall nobody is confined and the bound is the whole map's over three robots.
         PlanningProblem open =
             test::drawnProblem(rowsOf(8, std::string(30, '.')), {{0.5, 0.5}, {6.5, 0.5}, {29.5, 7.5}});
