@@ -473,7 +473,6 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
     context.inputWarnings = inputWarnings_;
     context.inputWarnings.insert(context.inputWarnings.end(), plannerWarnings_.begin(),
                                  plannerWarnings_.end());
-    flightsOverBattery_ = io::flightsOverBattery(context);
     const int robots = static_cast<int>(plan.paths.size());
 
     struct Output {
@@ -581,6 +580,8 @@ void BatchRunner::writeOutputs(const Plan& plan, const std::string& folder) {
         fieldTimeNote_ = io::fieldTimeNote(context);
         fieldBoundNote_ = io::fieldBoundNote(context);
     }
+    // After the writers, which made the missions on both cores (report.json always counts the flights).
+    flightsOverBattery_ = io::flightsOverBattery(context);
     removeStaleRobotFiles(robots, partsWritten, folder);
 }
 

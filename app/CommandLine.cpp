@@ -17,7 +17,9 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 
@@ -120,27 +122,34 @@ std::optional<SpeedEvent> parseEvent(std::string_view text) {
     return SpeedEvent{*time, *robot, *factor};
 }
 
-// ": write 100" for "100m" or "10 m/s": a number the flag takes, with a unit it does not.
-std::string numberWithUnitHint(std::string_view value) {
+// ": write 100" for "100m" or "100 metres" on a flag in metres: the number the flag takes, where the unit
+// written is the flag's own (`perSecond`: metres per second) and the number is one the flag accepts.
+std::string numberWithUnitHint(std::string_view value, bool perSecond,
+                               const std::function<bool(double)>& accepts) {
     const std::string_view text = trimmedText(value);
-    std::size_t end = 0;
-    while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) != 0 ||
-                                 text[end] == '.' || (end == 0 && (text[end] == '-' || text[end] == '+'))))
-        ++end;
-    const std::string_view number = text.substr(0, end);
-    const std::string_view unit = trimmedText(text.substr(end));
-    if (unit.empty() || parseFiniteNumber(text) || !parseFiniteNumber(number) ||
-        std::isalpha(static_cast<unsigned char>(unit.front())) == 0)
+    double number = 0.0;
+    const char* first = text.data() + (text.starts_with('+') ? 1 : 0);
+    const auto [end, error] = std::from_chars(first, text.data() + text.size(), number);
+    if (error != std::errc() || !std::isfinite(number) || !accepts(number))
         return {};
-    return ": write " + std::string(number.front() == '+' ? number.substr(1) : number);
+    std::string unit(
+        trimmedText(std::string_view(end, static_cast<std::size_t>(text.data() + text.size() - end))));
+    std::transform(unit.begin(), unit.end(), unit.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    static const std::set<std::string> metres{"m", "metre", "metres", "meter", "meters"};
+    static const std::set<std::string> metresPerSecond{"m/s", "mps", "metres per second",
+                                                       "meters per second"};
+    if (!(perSecond ? metresPerSecond : metres).contains(unit))
+        return {};
+    return ": write " + std::string(first, end);
 }
 
 // Seconds given without a unit, too few for a flight but a likely number of minutes: "25" meant 25min.
 std::string minutesMeantHint(const std::string& value, std::optional<double> seconds) {
     if (!seconds || *seconds < 1.0 || *seconds >= 60.0 || !parseFiniteNumber(value))
         return {};
-    return " (for " + formatQuantity(*seconds) + " minutes, write " + std::string(trimmedText(value)) +
-           "min)";
+    return " (for " + formatQuantity(*seconds) + (*seconds == 1.0 ? " minute" : " minutes") + ", write " +
+           std::string(trimmedText(value)) + "min)";
 }
 
 // A duration flag's value read into `seconds`, or what is wrong with it: not a duration (`example` shows
@@ -459,7 +468,8 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 return failure(
                     "--altitude: " + quoted(value) +
                     " is not an altitude above home (a number of metres without a unit, 0 to 10000)" +
-                    numberWithUnitHint(value));
+                    numberWithUnitHint(value, false,
+                                       [](double metres) { return metres >= 0.0 && metres <= 10000.0; }));
         } else if (flag == "--cruise-speed") {
             options.cruiseSpeedMetresPerSecond = parseFiniteNumber(value);
             if (!options.cruiseSpeedMetresPerSecond || *options.cruiseSpeedMetresPerSecond < 0.0 ||
@@ -467,7 +477,9 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 return failure("--cruise-speed: " + quoted(value) +
                                " is not a speed (a number of metres per second without a unit: 0 for the "
                                "land-cover speeds, up to 1000)" +
-                               numberWithUnitHint(value));
+                               numberWithUnitHint(value, true, [](double speed) {
+                                   return speed >= 0.0 && speed <= 1000.0;
+                               }));
         } else if (flag == "--flight-time") {
             if (auto problem =
                     readDurationFlag(flag, value, "25min", &io::flightTimeProblem, options.flightTimeSeconds))
@@ -482,7 +494,9 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
                 return failure("--camera-trigger: " + quoted(value) +
                                " is not a distance between photos (a number of metres without a unit: 0 for "
                                "none, or 0.1 to 10000)" +
-                               numberWithUnitHint(value));
+                               numberWithUnitHint(value, false, [](double metres) {
+                                   return !io::cameraTriggerProblem(metres);
+                               }));
         } else if (flag == "--fov-scale") {
             options.fieldOfViewScale = parseFiniteNumber(value);
             if (!options.fieldOfViewScale || !(*options.fieldOfViewScale > 0.0) ||
@@ -494,7 +508,10 @@ CommandLineParseResult CommandLine::parse(const std::vector<std::string>& argume
             if (!options.fieldOfViewMetres || !(*options.fieldOfViewMetres > 0.0) ||
                 *options.fieldOfViewMetres > kMaximumFieldOfViewMetres)
                 return failure("--fov: " + quoted(value) + " is not a field of view (more than 0, up to " +
-                               formatQuantity(kMaximumFieldOfViewMetres) + " m)" + numberWithUnitHint(value));
+                               formatQuantity(kMaximumFieldOfViewMetres) + " m)" +
+                               numberWithUnitHint(value, false, [](double metres) {
+                                   return metres > 0.0 && metres <= kMaximumFieldOfViewMetres;
+                               }));
         } else if (flag == "--outputs") {
             if (auto problem = parseOutputKeys(value, options.outputKeys))
                 return failure(*problem);

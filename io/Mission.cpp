@@ -668,6 +668,7 @@ Result<Mission> parseMission(const std::string& text, const std::string& path) {
              {"start", "robots[]"},
              {"start_crs", "robots[]"},
              {"charger", "robots[]"},
+             {"battery_s", "robots[]"},
              {"vehicle", "exports"},
              {"altitude_m", "exports"},
              {"cruise_speed_mps", "exports"},

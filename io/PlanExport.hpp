@@ -158,8 +158,8 @@ inline constexpr std::size_t kmlMostMissionParts = 2000;
 // done in the field after 5 d 13 h, its 271 flights and the turnarounds between them included"; empty when
 // no aircraft's mission and no mission with turnarounds is in parts, or a time is unknown.
 [[nodiscard]] std::string fieldTimeNote(const ExportContext& context);
-// "no plan making these turns brings the last robot home before 1 d 12 h in the field", and where some
-// flight is longer than its battery, that the bound then leaves the trips out to the work and back out;
+// "no plan making these turns brings the last robot home before 1 d 12 h in the field", and where the
+// bound leaves the trips out to the work and back out (PlanMetrics::fieldBoundWithoutTrips), that it does;
 // empty where the plan has no bound in the field.
 [[nodiscard]] std::string fieldBoundNote(const ExportContext& context);
 // How many of the robots' flights (waypoint file parts) take longer than their vehicle's flight time; none

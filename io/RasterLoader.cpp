@@ -27,8 +27,8 @@ double trueNorthRadians(const GeoReference& georeference, const ClassGrid& grid)
     if (!from || !to)
         return 0.0;
     const double degrees = std::acos(-1.0) / 180.0;
-    const double east =
-        (to.value().longitude - from.value().longitude) * std::cos(from.value().latitude * degrees);
+    const double east = std::remainder(to.value().longitude - from.value().longitude, 360.0) *
+                        std::cos(from.value().latitude * degrees);
     const double north = to.value().latitude - from.value().latitude;
     return std::isfinite(east) && std::isfinite(north) && (east != 0.0 || north != 0.0)
                ? std::atan2(east, north)

@@ -749,18 +749,16 @@ std::optional<std::size_t> flightsOverBattery(const ExportContext& context) {
 }
 
 std::string fieldBoundNote(const ExportContext& context) {
-    const double bound = context.plan.metrics.fieldLowerBoundSeconds;
-    if (!(bound > 0.0))
+    const PlanMetrics& metrics = context.plan.metrics;
+    if (!(metrics.fieldLowerBoundSeconds > 0.0))
         return {};
-    const bool over = flightsOverBattery(context).value_or(0) > 0;
-    // Flights that cannot reach their work have no trip the bound could price (PlanMetrics): it is far
-    // below such a plan's time, which is no measure of how far the plan is off.
-    return "no plan making these turns brings the last robot home before " + formatDuration(bound) +
-           " in the field" +
-           (over ? " (the work and the turnarounds alone: with flights longer than a battery, the trips out "
-                   "to "
-                   "the work and back are left out of this bound)"
-                 : std::string());
+    // Far below such a plan's time, which is then no measure of how far the plan is off.
+    return "no plan making these turns brings the last robot home before " +
+           formatDuration(metrics.fieldLowerBoundSeconds) + " in the field" +
+           (metrics.fieldBoundWithoutTrips ? " (the work and the turnarounds alone: with flights longer than "
+                                             "a battery, the trips out to the "
+                                             "work and back are left out of this bound)"
+                                           : std::string());
 }
 
 std::string fieldTimeNote(const ExportContext& context) {

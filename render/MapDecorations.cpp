@@ -43,9 +43,14 @@ void paintScaleBar(QPainter& painter, QPointF bottomLeft, double pixelsPerMetre,
     painter.restore();
 }
 
-void paintNorthArrow(QPainter& painter, QPointF tip) {
+void paintNorthArrow(QPainter& painter, QPointF tip, double trueNorthRadians) {
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
+    // About the arrow's middle; the painter turns clockwise on screen, true north lies counter-clockwise.
+    const QPointF middle = tip + QPointF(0, 18);
+    painter.translate(middle);
+    painter.rotate(-trueNorthRadians * 180.0 / std::acos(-1.0));
+    painter.translate(-middle);
     painter.setPen(QPen(Qt::black, 1.0));
     painter.setBrush(Qt::black);
     painter.drawPolygon(QPolygonF({tip, tip + QPointF(7, 20), tip + QPointF(0, 15), tip + QPointF(-7, 20)}));

@@ -9,7 +9,8 @@ namespace mcpp::render {
 [[nodiscard]] double scaleBarMetres(double pixelsPerMetre, double targetPixels);
 // A scale bar on a pale box whose bottom-left corner is at bottomLeft; the same on the canvas and sheets.
 void paintScaleBar(QPainter& painter, QPointF bottomLeft, double pixelsPerMetre, double targetPixels);
-// A north arrow whose tip is at tip (the maps are drawn north up).
-void paintNorthArrow(QPainter& painter, QPointF tip);
+// A north arrow whose tip is at tip, pointing to true north: the maps are drawn grid north up, and a grid
+// turned from true north (ClassGrid::trueNorthRadians, counter-clockwise) turns the arrow with it.
+void paintNorthArrow(QPainter& painter, QPointF tip, double trueNorthRadians = 0.0);
 
 } // namespace mcpp::render

@@ -67,6 +67,7 @@ ClassGrid extentOf(const ClassGrid& grid) {
     extent.pixelHeight = grid.pixelHeight;
     extent.originX = grid.originX;
     extent.originY = grid.originY;
+    extent.trueNorthRadians = grid.trueNorthRadians;
     return extent;
 }
 

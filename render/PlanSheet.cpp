@@ -121,7 +121,7 @@ void PlanSheet::paint(QPainter& painter) const {
     painter.setFont(font_);
     const double pixelsPerMetre = map_.width() / std::max(frame_.width(), 1e-9);
     paintScaleBar(painter, QPointF(map_.left() + 8, map_.bottom() - 8), pixelsPerMetre, map_.width() / 5.0);
-    paintNorthArrow(painter, QPointF(map_.right() - 20, map_.top() + 10));
+    paintNorthArrow(painter, QPointF(map_.right() - 20, map_.top() + 10), grid_.trueNorthRadians);
     paintLegend(painter, legend_.topLeft(), sections_);
 }
 

@@ -2002,13 +2002,13 @@ QString MainWindow::longPlanAdvice(double makespanSeconds, std::size_t robots) c
     return advice + QLatin1Char('.');
 }
 
-// A plan's warnings and notes, whole, in the messages panel, where every message is kept.
 bool MainWindow::flightsSaidOf(const std::shared_ptr<const Plan>& plan) {
     std::erase_if(flightsSaid_, [](const std::weak_ptr<const Plan>& said) { return said.expired(); });
     return std::any_of(flightsSaid_.begin(), flightsSaid_.end(),
                        [&plan](const std::weak_ptr<const Plan>& said) { return said.lock() == plan; });
 }
 
+// A plan's warnings and notes, whole, in the messages panel, where every message is kept.
 void MainWindow::logPlanIssues(const Plan& plan) {
     const std::vector<std::string> names = robotNames();
     for (const PlanIssue& issue : plan.issues)

@@ -326,7 +326,9 @@ void MapCanvas::paintScaleBar(QPainter& painter) const {
 }
 
 void MapCanvas::paintNorthArrow(QPainter& painter) const {
-    render::paintNorthArrow(painter, QPointF(width() - 24, 40));
+    const ClassGrid* grid = document_->grid();
+    render::paintNorthArrow(painter, QPointF(width() - 24, 40),
+                            grid != nullptr ? grid->trueNorthRadians : 0.0);
 }
 
 void MapCanvas::mousePressEvent(QMouseEvent* event) {

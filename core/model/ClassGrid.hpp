@@ -25,7 +25,7 @@ struct ClassGrid {
     double pixelHeight = 1.0; // metres, > 0
     // How far true north lies counter-clockwise from the grid's north (+y) at the map's centre, in radians:
     // a conic or transverse projection far from its central meridian turns the grid (NRCan's Lambert grid
-    // at 118 W: about -18 degrees). 0 where unknown. For directions in messages.
+    // at 118 W: about -21 degrees). 0 where unknown. For directions in messages.
     double trueNorthRadians = 0.0;
     std::vector<std::int32_t> values; // row-major, columns * rows
     // Why a pixel is not part of the task area (0 where it is); may be empty.

@@ -63,6 +63,9 @@ struct PlanMetrics {
     // 0 for a battery plan, whose paths hold their charges.
     double fieldMakespanSeconds = 0.0;
     double fieldLowerBoundSeconds = 0.0;
+    // Where some robot flies out to its work but cannot reach all of it in one flight, the bound in the
+    // field leaves the trips out (their flights are longer than a battery). Not kept in saved plans.
+    bool fieldBoundWithoutTrips = false;
     double passableAreaSquareMetres = 0.0;
     double coveredAreaSquareMetres = 0.0;
     double coveredFraction = 0.0; // of the passable area

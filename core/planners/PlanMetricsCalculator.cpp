@@ -421,6 +421,12 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     const bool flights = std::any_of(robotFlights_.begin(), robotFlights_.end(),
                                      [](const FlightLimits& limits) { return limits.splitsPaths(); });
     metrics.fieldLowerBoundSeconds = flights ? fieldBound(plan, shares, dearestTurnSeconds) : 0.0;
+    // Aircraft flying out to their work that cannot reach all of it: the bound prices no trip.
+    metrics.fieldBoundWithoutTrips =
+        flights &&
+        std::any_of(robotFlights_.begin(), robotFlights_.end(),
+                    [](const FlightLimits& limits) { return std::isfinite(limits.reachMetres()); }) &&
+        !flightsReachTheirWork(plan);
     const double partsBound = metrics.lowerBoundSeconds;
     boundByCharges(plan);
     if (metrics.lowerBoundSeconds > partsBound) // set by the charges, not by robots alone

@@ -141,7 +141,7 @@ std::string confinedRobotMessage(const ConfinedRobot& confined, double share, bo
            (idle ? ", " + formatPercent(share) + " of an even share of the land" : std::string()) +
            ") and can cover only that part" + others +
            "; the lower bound counts each part with its own robots" +
-           (idle ? "; it stands idle most of the mission: start it in the larger part to share the work"
+           (idle ? "; it stands idle most of the mission: start it in the largest part to share the work"
                  : std::string());
 }
 
@@ -583,11 +583,16 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
         beyond.waypoints > 0)
         planningRun.addIssue(IssueSeverity::Warning, "paths-beyond-raster", beyondRasterMessage(beyond));
     for (const ConfinedRobot& confined : plan.metrics.confinedRobots) {
-        // Most often a start put on the wrong side of a river or a fence.
-        const double evenShare = plan.metrics.passableAreaSquareMetres /
-                                 static_cast<double>(std::max<std::size_t>(problem.starts.size(), 1));
-        const double share = confined.pocketAreaSquareMetres /
-                             static_cast<double>(std::max(confined.robotsInPocket, 1)) / evenShare;
+        // Most often a start put on the wrong side of a river or a fence. The land no robot reaches is no
+        // one's share.
+        const double reached =
+            plan.metrics.passableAreaSquareMetres - plan.metrics.unreachableAreaSquareMetres;
+        const double evenShare =
+            reached / static_cast<double>(std::max<std::size_t>(problem.starts.size(), 1));
+        const double share = evenShare > 0.0
+                                 ? confined.pocketAreaSquareMetres /
+                                       static_cast<double>(std::max(confined.robotsInPocket, 1)) / evenShare
+                                 : 1.0;
         const bool idle = share < 0.5;
         planningRun.addIssue(idle ? IssueSeverity::Warning : IssueSeverity::Information, "confined-robot",
                              confinedRobotMessage(confined, share, idle));

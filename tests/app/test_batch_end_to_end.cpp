@@ -1052,7 +1052,7 @@ void TestBatchEndToEnd::aRobotWalledInIsSaid() {
         run.standardError.contains(QStringLiteral(
             "mcpp: warning: robot 1 starts in a part of the map cut off from the rest (3200 m2, 42.9% of "
             "an even share of the land) and can cover only that part; the lower bound counts each part "
-            "with its own robots; it stands idle most of the mission: start it in the larger part to "
+            "with its own robots; it stands idle most of the mission: start it in the largest part to "
             "share the work")),
         qPrintable(run.standardOutput + run.standardError));
     // The wall moved east: robot 1 alone in the larger part sets the bound, so the others' balance is

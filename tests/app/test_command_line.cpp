@@ -271,6 +271,14 @@ void TestCommandLine::errors_data() {
         << words(flagMission + " --altitude 100m")
         << "--altitude: \"100m\" is not an altitude above home (a number of metres without a unit, 0 to "
            "10000): write 100";
+    // Another unit, or a number the flag refuses, gets no number to write.
+    QTest::newRow("--altitude in kilometres") << words(flagMission + " --altitude 1.5km")
+                                              << "--altitude: \"1.5km\" is not an altitude above home (a "
+                                                 "number of metres without a unit, 0 to 10000)";
+    QTest::newRow("--altitude too high with a unit")
+        << words(flagMission + " --altitude 20000m")
+        << "--altitude: \"20000m\" is not an altitude above home (a number of metres without a unit, 0 to "
+           "10000)";
     QTest::newRow("--cruise-speed with a unit") << words(flagMission + " --cruise-speed 10m/s")
                                                 << "--cruise-speed: \"10m/s\" is not a speed (a number of "
                                                    "metres per second without a unit: 0 for the "

@@ -3,6 +3,7 @@
 #include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/planners/PlannerRegistry.hpp"
+#include "render/MapDecorations.hpp"
 #include "render/PlanFrame.hpp"
 #include "render/PlanImage.hpp"
 #include "render/PlanLegend.hpp"
@@ -138,6 +139,37 @@ class TestPlanRenderer : public QObject {
     Q_OBJECT
 
   private slots:
+    // The north arrow points to true north: up on a grid that is, to the right where true north lies a
+    // quarter turn clockwise of the grid's (trueNorthRadians -pi/2).
+    void northArrowPointsToTrueNorth() {
+        const auto inkedBox = [](double trueNorthRadians) {
+            QImage image(80, 80, QImage::Format_ARGB32);
+            image.fill(Qt::white);
+            QPainter painter(&image);
+            render::paintNorthArrow(painter, QPointF(40, 22), trueNorthRadians);
+            painter.end();
+            int left = 80, right = -1, top = 80, bottom = -1;
+            for (int y = 0; y < 80; ++y)
+                for (int x = 0; x < 80; ++x)
+                    if (qGray(image.pixel(x, y)) < 128) {
+                        left = std::min(left, x);
+                        right = std::max(right, x);
+                        top = std::min(top, y);
+                        bottom = std::max(bottom, y);
+                    }
+            return QRect(QPoint(left, top), QPoint(right, bottom));
+        };
+        const QRect up = inkedBox(0.0);
+        QVERIFY2(up.height() > up.width(),
+                 qPrintable(QStringLiteral("%1 x %2").arg(up.width()).arg(up.height())));
+        QVERIFY2(std::abs(up.top() - 22) <= 1, qPrintable(QString::number(up.top()))); // the tip at the top
+        const QRect right = inkedBox(-std::acos(-1.0) / 2.0);
+        QVERIFY2(right.width() > right.height(),
+                 qPrintable(QStringLiteral("%1 x %2").arg(right.width()).arg(right.height())));
+        QVERIFY2(right.right() >= 40 + 17,
+                 qPrintable(QString::number(right.right()))); // the tip on the right
+    }
+
     // A plan over the whole raster shows all of it; one over a small part (an area of interest) shows that
     // part with a fifth of its extent around it, in whole pixels of the raster.
     void aSmallPlanIsFramedWithAMargin() {
