@@ -34,6 +34,8 @@ struct ClassGrid {
     static constexpr std::uint8_t outsideArea = 2;     // outside the area of interest
     static constexpr std::uint8_t outsideUnlisted = 3; // a class the table has no row for, left out
     static constexpr std::uint8_t inNoGoZone = 4;      // inside the area of interest, in a no-go zone
+    // Farther from every aircraft's start than one flight reaches (set by the planner, never by io).
+    static constexpr std::uint8_t beyondFlightReach = 5;
     // Whether the flag is the task area's edge a user drew (an area of interest or a no-go zone).
     [[nodiscard]] static constexpr bool isDrawnEdge(std::uint8_t flag) {
         return flag == outsideArea || flag == inNoGoZone;

@@ -60,6 +60,8 @@ std::string whyOutside(std::uint8_t reason) {
         return "it lies in a no-go zone";
     case ClassGrid::outsideUnlisted:
         return "its class has no row in the class table and is left out";
+    case ClassGrid::beyondFlightReach:
+        return "it lies beyond one flight's reach of every start";
     default:
         return "it is left out of the task area";
     }

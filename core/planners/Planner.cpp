@@ -13,6 +13,7 @@
 #include "core/parameters/ParameterResolution.hpp"
 #include "core/planners/AreaEdgeCheck.hpp"
 #include "core/planners/ClosedInStart.hpp"
+#include "core/planners/LandBeyondReach.hpp"
 #include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "core/planners/PlanningRun.hpp"
@@ -399,6 +400,16 @@ std::string fieldPacesMessage(const std::vector<double>& paces, bool measured) {
          << "; the paths' times differ by design";
     return text.str();
 }
+// The land left out beyond every reach is passable land no robot covers: the plan's figures count it.
+void countLandBeyondReach(Plan& plan, const LandBeyondReach& land) {
+    PlanMetrics& metrics = plan.metrics;
+    metrics.passableAreaSquareMetres += land.passableSquareMetres;
+    metrics.unreachableAreaSquareMetres += land.passableSquareMetres;
+    metrics.coveredFraction = metrics.passableAreaSquareMetres > 0.0
+                                  ? metrics.coveredAreaSquareMetres / metrics.passableAreaSquareMetres
+                                  : 0.0;
+    plan.issues.push_back({IssueSeverity::Warning, "beyond-flight-reach", landBeyondReachMessage(land)});
+}
 } // namespace
 
 ParameterSpec Planner::snapStartsParameter() {
@@ -423,6 +434,23 @@ Plan Planner::plan(const PlanningProblem& problem, const ProgressReporter& progr
 Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
                    const ProgressReporter& progress) const {
     const PlannerDescription planner = description();
+    // Aircraft would fly flights longer than their batteries to land none of them reaches: it is left out.
+    // Planners on batteries plan their sorties from chargers and say what they leave.
+    if (!planner.fliesOnBatteries())
+        if (std::optional<LandBeyondReach> beyond = landBeyondEveryReach(problem)) {
+            if (!beyond->reachedPassable)
+                throw PlanningError(PlanningError::Kind::NoPassableCell, nothingWithinReachMessage(*beyond));
+            PlanningProblem within = problem;
+            within.grid.outside = std::move(beyond->outside);
+            Plan plan = planWithin(planner, within, given, progress);
+            countLandBeyondReach(plan, *beyond);
+            return plan;
+        }
+    return planWithin(planner, problem, given, progress);
+}
+
+Plan Planner::planWithin(const PlannerDescription& planner, const PlanningProblem& problem,
+                         const ParameterValues& given, const ProgressReporter& progress) const {
     if (planner.balancesFieldTime && problem.fieldSeconds)
         return planInFieldTime(planner, problem, given, progress);
     return planOnce(planner, problem, given, progress, {});

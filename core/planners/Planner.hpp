@@ -45,6 +45,9 @@ class Planner {
         std::optional<CellGraph>* cells = nullptr;
         bool tripsWeighed = true;
     };
+    // Plans the problem as given: in rounds where the planner evens out time in the field.
+    [[nodiscard]] Plan planWithin(const PlannerDescription& planner, const PlanningProblem& problem,
+                                  const ParameterValues& given, const ProgressReporter& progress) const;
     // One plan of the problem, as a round of evening out time in the field where `round` says so.
     [[nodiscard]] Plan planOnce(const PlannerDescription& planner, const PlanningProblem& problem,
                                 const ParameterValues& given, const ProgressReporter& progress,

@@ -1110,25 +1110,50 @@ void TestBatchEndToEnd::outputsWritesOnlyWhatIsAsked() {
         QCOMPARE(QDir(compared + "/" + QString::fromUtf8(planner)).entryList(QDir::Files, QDir::Name),
                  (QStringList{"plan.png", "report.json"}));
     QVERIFY(QFileInfo::exists(compared + "/comparison.csv"));
-    // A KML leaving the waypoint files' parts out (drones on short flights over Zion: thousands of parts)
-    // says so, and report.json keeps what it said among its issues.
+    // A KML leaving the waypoint files' parts out (drones of a 30 m footprint on 20 min flights over Zion:
+    // thousands of parts) says so, and report.json keeps what it said among its issues.
     const QString flights = scratch_.filePath(QStringLiteral("many-flights"));
-    const auto many =
-        runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--vehicle", "multirotor", "--cruise-speed",
-                 "10", "--flight-time", "5min", "--outputs", "kml,qgc-plan", "--out", flights});
+    const auto many = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--vehicle", "multirotor",
+                               "--cruise-speed", "10", "--flight-time", "20min", "--fov", "30", "--outputs",
+                               "kml,qgc-plan", "--out", flights});
     QVERIFY2(many.exitCode == 0, qPrintable(many.standardError));
     const QString said = QStringLiteral("plan.kml leaves out the ");
     QVERIFY2(many.standardOutput.contains(said), qPrintable(many.standardOutput));
-    // Flights longer than a battery: the bound in the field says it leaves their trips out.
-    QVERIFY2(many.standardOutput.contains(QStringLiteral(
-                 " in the field (the work and the turnarounds alone: with flights longer than a "
-                 "battery, the trips out to the work and back are left out of this bound)")),
-             qPrintable(many.standardOutput));
+    // The land beyond every drone's reach is left out, so no flight is longer than the battery.
+    QVERIFY2(many.standardError.contains(QStringLiteral("lies too far from every start for one flight")),
+             qPrintable(many.standardError));
+    QVERIFY2(!many.standardError.contains(QStringLiteral("longer than its 20 min flight time:")),
+             qPrintable(many.standardError));
     bool reported = false;
     for (const QJsonValue& issue : readJsonObject(flights + "/report.json").value("issues").toArray())
         reported = reported || (issue.toObject().value("code").toString() == QStringLiteral("output") &&
                                 issue.toObject().value("message").toString().startsWith(said));
     QVERIFY(reported);
+    // One drone of short flights beside drones reaching the whole map: it is given land beyond its own
+    // reach, its flights there are longer than its battery, and the bound in the field says it leaves their
+    // trips out.
+    auto mixed = sampleMissionAnywhere("zion-nlcd", "nlcd.tif");
+    auto robots = mixed.value("robots").toArray();
+    for (qsizetype robot = 0; robot < robots.size(); ++robot) {
+        auto drone = robots.at(robot).toObject();
+        drone.insert("vehicle", "multirotor");
+        drone.insert("cruise_speed_mps", 10);
+        drone.insert("flight_time_s", robot == 0 ? 300 : 3600);
+        robots.replace(robot, drone);
+    }
+    mixed.insert("robots", robots);
+    auto classes = mixed.value("classes").toObject();
+    classes.insert("fov_m", 60); // a camera's footprint
+    mixed.insert("classes", classes);
+    const QString mixedPath = scratch_.filePath(QStringLiteral("mixed-flights.json"));
+    QVERIFY(writeText(mixedPath, QJsonDocument(mixed).toJson()));
+    const auto short_ = runMcpp({"--batch", mixedPath, "--outputs", "qgc-plan", "--out",
+                                 scratch_.filePath(QStringLiteral("mixed-flights"))});
+    QVERIFY2(short_.exitCode == 0, qPrintable(short_.standardError));
+    QVERIFY2(short_.standardOutput.contains(QStringLiteral(
+                 " in the field (the work and the turnarounds alone: with flights longer than a "
+                 "battery, the trips out to the work and back are left out of this bound)")),
+             qPrintable(short_.standardOutput));
 }
 
 // --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at

@@ -1265,20 +1265,21 @@ class TestMainWindow : public QObject {
         ui::MainWindow& window = *owned;
         QVERIFY2(window.document()->hasMap(), qPrintable(window.lastError()));
         io::Mission mission = window.document()->mission();
+        // The land beyond every drone's reach is left out; the land within some drone's reach is shared by
+        // balance, and some of it lies beyond the reach of the drone given it.
         for (io::RobotSpec& robot : mission.robots) {
             robot.vehicle.type = io::VehicleType::Multirotor;
             robot.vehicle.altitudeMetres = 30.0;
-            robot.vehicle.flightTimeSeconds = 300.0; // about 1.3 km out and back at 10 m/s: not the whole map
+            robot.vehicle.flightTimeSeconds = 3600.0; // about 18 km out and back at 10 m/s
             robot.vehicle.cruiseSpeedMetresPerSecond = 10.0;
         }
+        mission.robots.front().vehicle.flightTimeSeconds = 300.0; // about 1.3 km
         window.document()->reset(window.document()->sharedRaster(), mission, QString());
         QSignalSpy finished(&window, &ui::MainWindow::comparisonFinished);
         QVERIFY2(window.startComparison({"mcpp-mlct", "darp"}), qPrintable(window.lastError()));
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kPlanningTimeoutMilliseconds);
         QVERIFY(finished.first().first().toBool());
-        const QString tooLong =
-            QStringLiteral(" with the flights to and from its start, longer than its 5 min "
-                           "flight time");
+        const QString tooLong = QStringLiteral(" with the flights to and from its start, longer than its ");
         QTableWidget* table = window.comparisonPanel()->table();
         QCOMPARE(table->rowCount(), 2);
         for (int row = 0; row < table->rowCount(); ++row) {

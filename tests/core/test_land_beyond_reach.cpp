@@ -1,0 +1,119 @@
+#include "core/planners/LandBeyondReach.hpp"
+#include "core/planners/MlctPlanner.hpp"
+#include "core/planners/PlannerRegistry.hpp"
+#include "tests/support/PlanInvariants.hpp"
+#include "tests/support/SyntheticMaps.hpp"
+
+#include <QtTest>
+#include <algorithm>
+#include <cmath>
+
+using namespace mcpp;
+
+namespace {
+
+// Flights of 1000 s, 100 s of them climbing and descending, out and back at 1 m/s: 450 m out at most.
+FlightLimits aircraft() {
+    return FlightLimits{1000.0, 100.0, 300.0, 1.0, 1.0};
+}
+
+// A 1000 x 100 m strip of one land cover (10 m pixels, FOV 5 m) with an aircraft starting at its west end.
+PlanningProblem westEndStrip() {
+    PlanningProblem problem = test::uniformProblem(100, 10, 10.0, {}, {});
+    problem.planner = defaultPlannerChoice(MlctPlanner::plannerName);
+    problem.starts = {test::pixelCentre(problem.grid, 0, 4)};
+    problem.robotFlights = {aircraft()};
+    return problem;
+}
+
+// The area of the strip's pixels whose centres lie within (`within`) or beyond `metres` of the start.
+double stripArea(const PlanningProblem& problem, double metres, bool within) {
+    double area = 0.0;
+    for (int row = 0; row < problem.grid.rows; ++row)
+        for (int column = 0; column < problem.grid.columns; ++column) {
+            const MapPoint centre = test::pixelCentre(problem.grid, column, row);
+            const double distance =
+                std::hypot(centre.x - problem.starts[0].x, centre.y - problem.starts[0].y);
+            if ((distance <= metres) == within)
+                area += problem.grid.pixelWidth * problem.grid.pixelHeight;
+        }
+    return area;
+}
+
+const PlanIssue* issueCoded(const Plan& plan, const std::string& code) {
+    const auto found = std::find_if(plan.issues.begin(), plan.issues.end(),
+                                    [&code](const PlanIssue& issue) { return issue.code == code; });
+    return found == plan.issues.end() ? nullptr : &*found;
+}
+
+} // namespace
+
+class LandBeyondReachTest : public QObject {
+    Q_OBJECT
+  private slots:
+    // No waypoint lies farther than one flight reaches (450 m): the land beyond is left out, counted as
+    // passable land no robot covers, and said; land well within the reach is still covered.
+    void leavesOutLandNoFlightCanWork() {
+        const PlanningProblem problem = westEndStrip();
+        const Plan plan = makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+        QCOMPARE(plan.paths.size(), std::size_t{1});
+        double farthest = 0.0;
+        for (const Waypoint& point : plan.paths[0].waypoints)
+            farthest =
+                std::max(farthest, std::hypot(point.x - problem.starts[0].x, point.y - problem.starts[0].y));
+        QVERIFY2(farthest <= aircraft().reachMetres(), qPrintable(QString::number(farthest)));
+        const PlanMetrics& metrics = plan.metrics;
+        QCOMPARE(metrics.passableAreaSquareMetres, 100000.0);
+        QVERIFY(metrics.unreachableAreaSquareMetres >= stripArea(problem, aircraft().reachMetres(), false));
+        QVERIFY(metrics.coveredAreaSquareMetres >= stripArea(problem, 350.0, true));
+        QCOMPARE(metrics.coveredFraction, metrics.coveredAreaSquareMetres / metrics.passableAreaSquareMetres);
+        const PlanIssue* said = issueCoded(plan, "beyond-flight-reach");
+        QVERIFY(said != nullptr);
+        QCOMPARE(said->severity, IssueSeverity::Warning);
+        QVERIFY2(said->message.find("left out of the plan") != std::string::npos, said->message.c_str());
+        QVERIFY2(said->message.find("991 m from the nearest start") != std::string::npos,
+                 said->message.c_str());
+        QVERIFY(test::checkAllInvariants(problem, plan).empty());
+    }
+
+    // The land found beyond: its area, the mask flagging it and nothing else, and the farthest point.
+    void findsTheLandBeyondEveryReach() {
+        PlanningProblem problem = westEndStrip();
+        problem.grid.values[problem.grid.index(99, 0)] = 99; // water in a far corner: not passable land
+        const std::optional<LandBeyondReach> land = landBeyondEveryReach(problem);
+        QVERIFY(land.has_value());
+        const auto flagged = static_cast<double>(
+            std::count(land->outside.begin(), land->outside.end(), ClassGrid::beyondFlightReach));
+        QCOMPARE(land->passableSquareMetres, (flagged - 1.0) * 100.0);
+        QVERIFY(flagged * 100.0 >= stripArea(problem, aircraft().reachMetres(), false));
+        QVERIFY(land->leastReachMetres < aircraft().reachMetres());
+        QCOMPARE(land->leastReachMetres, land->mostReachMetres);
+        // The pixel at the strip's far corner, 990 m east and 50 m south of the start.
+        QCOMPARE(land->farthest.x, test::pixelCentre(problem.grid, 99, 9).x);
+        QCOMPARE(land->farthest.y, test::pixelCentre(problem.grid, 99, 9).y);
+        QVERIFY(std::abs(land->farthestMetres - std::hypot(990.0, 50.0)) < 1e-6);
+        QVERIFY(problem.grid.outside.empty()); // the problem itself is not changed
+    }
+
+    // A robot reaching everywhere (a rover, or an aircraft whose trips are not counted) covers the land the
+    // aircraft cannot: nothing is left out.
+    void nothingLeftOutWhereARobotReachesEverywhere() {
+        PlanningProblem problem = westEndStrip();
+        problem.starts.push_back(test::pixelCentre(problem.grid, 1, 4));
+        problem.robotFlights.push_back(FlightLimits{});
+        QVERIFY(!landBeyondEveryReach(problem).has_value());
+        const Plan plan = makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+        QVERIFY(issueCoded(plan, "beyond-flight-reach") == nullptr);
+        QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 0.0);
+    }
+
+    // Aircraft whose flights reach the whole map leave nothing out.
+    void nothingLeftOutWithinReach() {
+        PlanningProblem problem = westEndStrip();
+        problem.robotFlights = {FlightLimits{3000.0, 100.0, 300.0, 1.0, 1.0}}; // 1450 m out
+        QVERIFY(!landBeyondEveryReach(problem).has_value());
+    }
+};
+
+QTEST_GUILESS_MAIN(LandBeyondReachTest)
+#include "test_land_beyond_reach.moc"
