@@ -18,38 +18,72 @@ namespace {
 
 constexpr int tileSide = 520;
 constexpr int margin = 24;
-constexpr int captionHeight = 86; // a title and three lines of figures
+constexpr int titleHeight = 28;
+constexpr int leastCaptionHeight = 86; // a title and three lines of figures
 constexpr int chartHeight = 300;
+constexpr int captionPixels = 13;
+constexpr int unplannedLineHeight = 20;
+
+QFont fontOf(const QFont& base, int pixels, bool bold) {
+    QFont font = base;
+    font.setPixelSize(pixels);
+    font.setBold(bold);
+    return font;
+}
+
+// The height under each map: its title and the longest caption as wrapped to the map's width.
+int captionHeightOf(const QFont& base, const std::vector<const ComparisonPanel*>& panels) {
+    const QFontMetrics metrics(fontOf(base, captionPixels, false));
+    int height = leastCaptionHeight;
+    for (const ComparisonPanel* panel : panels)
+        height = std::max(height, titleHeight + 4 +
+                                      metrics
+                                          .boundingRect(QRect(0, 0, tileSide, 100000),
+                                                        Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
+                                                        panel->caption.join('\n'))
+                                          .height());
+    return height;
+}
 
 int columnsFor(std::size_t panels) {
     return static_cast<int>(std::clamp<std::size_t>(panels, 1, 3));
 }
 
 void drawPanel(QPainter& painter, const ClassGrid& grid, const ClassGrid& frame, const ClassTable& classes,
-               const ComparisonPanel& panel, QRect area, const AreaOutline* taskArea) {
+               const ComparisonPanel& panel, QRect area, const AreaOutline* taskArea, int captionHeight) {
     const QRect mapArea(area.left(), area.top(), area.width(), tileSide);
-    if (panel.plan != nullptr) {
-        const QImage map =
-            renderPlanImage(grid, classes, panel.plan, mapArea.size(), {}, nullptr, &frame, taskArea);
-        painter.drawImage(mapArea.left() + (mapArea.width() - map.width()) / 2,
-                          mapArea.top() + (mapArea.height() - map.height()) / 2, map);
-    } else {
-        painter.fillRect(mapArea, QColor(235, 235, 235));
-    }
+    const QImage map =
+        renderPlanImage(grid, classes, panel.plan, mapArea.size(), {}, nullptr, &frame, taskArea);
+    painter.drawImage(mapArea.left() + (mapArea.width() - map.width()) / 2,
+                      mapArea.top() + (mapArea.height() - map.height()) / 2, map);
     painter.setPen(QColor(120, 120, 120));
     painter.drawRect(mapArea.adjusted(0, 0, -1, -1));
-    QFont font = painter.font();
-    font.setPixelSize(16);
-    font.setBold(true);
-    painter.setFont(font);
+    painter.setFont(fontOf(painter.font(), 16, true));
     painter.setPen(Qt::black);
     const QRect titleBox(area.left(), mapArea.bottom() + 6, area.width(), 22);
     painter.drawText(titleBox, Qt::AlignLeft | Qt::AlignVCenter, panel.title);
-    font.setBold(false);
-    font.setPixelSize(13);
-    painter.setFont(font);
-    const QRect captionBox(area.left(), titleBox.bottom() + 2, area.width(), captionHeight - 28);
+    painter.setFont(fontOf(painter.font(), captionPixels, false));
+    const QRect captionBox(area.left(), titleBox.bottom() + 2, area.width(), captionHeight - titleHeight);
     painter.drawText(captionBox, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, panel.caption.join('\n'));
+}
+
+// A line for each planner without a plan (skipped, failed): its name and why, cut to the sheet's width.
+void drawUnplanned(QPainter& painter, const std::vector<const ComparisonPanel*>& panels, QRect area) {
+    painter.setPen(Qt::black);
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        const QRect line(area.left(), area.top() + static_cast<int>(i) * unplannedLineHeight, area.width(),
+                         unplannedLineHeight);
+        painter.setFont(fontOf(painter.font(), captionPixels, true));
+        const QString name = panels[i]->title + QStringLiteral(": ");
+        painter.drawText(line, Qt::AlignLeft | Qt::AlignVCenter, name);
+        const int nameWidth = QFontMetrics(painter.font()).horizontalAdvance(name);
+        painter.setFont(fontOf(painter.font(), captionPixels, false));
+        const QRect why = line.adjusted(nameWidth, 0, 0, 0);
+        painter.drawText(
+            why, Qt::AlignLeft | Qt::AlignVCenter,
+            QFontMetrics(painter.font())
+                .elidedText(panels[i]->caption.join(QStringLiteral("; ")), Qt::ElideRight, why.width()));
+    }
 }
 
 // The least of 1, 2, 2.5 and 5 times a power of ten that is at least the given step: ticks a reader adds up.
@@ -74,15 +108,14 @@ double barSeconds(const PlanMetrics& metrics, const RobotMetrics& robot) {
 
 // Groups of bars, one group per planner and one bar per robot in its colour, heights in hours (in days where
 // the longest robot takes over ten days); times in the field where a plan has them, as the table ranks by.
-void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QRect area) {
+void drawChart(QPainter& painter, const std::vector<const ComparisonPanel*>& panels, QRect area) {
     double longest = 0.0;
     bool inTheField = false;
-    for (const ComparisonPanel& panel : panels)
-        if (panel.plan != nullptr) {
-            inTheField = inTheField || panel.plan->metrics.timedInTheField();
-            for (const RobotMetrics& robot : panel.plan->metrics.robots)
-                longest = std::max(longest, barSeconds(panel.plan->metrics, robot));
-        }
+    for (const ComparisonPanel* panel : panels) {
+        inTheField = inTheField || panel->plan->metrics.timedInTheField();
+        for (const RobotMetrics& robot : panel->plan->metrics.robots)
+            longest = std::max(longest, barSeconds(panel->plan->metrics, robot));
+    }
     const bool inDays = longest > 10.0 * 86400.0;
     const double unitSeconds = inDays ? 86400.0 : 3600.0;
     const QString what =
@@ -117,13 +150,14 @@ void drawChart(QPainter& painter, const std::vector<ComparisonPanel>& panels, QR
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const double left = plot.left() + groupWidth * static_cast<double>(i);
         painter.setPen(Qt::black);
-        painter.drawText(QRectF(left, plot.bottom() + 4, groupWidth, 20), Qt::AlignHCenter, panels[i].title);
-        if (panels[i].plan == nullptr)
-            continue;
-        const auto& robots = panels[i].plan->metrics.robots;
+        const QString label = panels[i]->label.isEmpty() ? panels[i]->title : panels[i]->label;
+        painter.drawText(
+            QRectF(left, plot.bottom() + 4, groupWidth, 20), Qt::AlignHCenter,
+            QFontMetrics(painter.font()).elidedText(label, Qt::ElideRight, static_cast<int>(groupWidth) - 4));
+        const auto& robots = panels[i]->plan->metrics.robots;
         const double barWidth = groupWidth * 0.8 / std::max<std::size_t>(robots.size(), 1);
         for (std::size_t r = 0; r < robots.size(); ++r) {
-            const double seconds = barSeconds(panels[i].plan->metrics, robots[r]);
+            const double seconds = barSeconds(panels[i]->plan->metrics, robots[r]);
             const double height = plot.height() * (seconds / unitSeconds) / top;
             painter.fillRect(QRectF(left + groupWidth * 0.1 + barWidth * static_cast<double>(r),
                                     plot.bottom() - height, barWidth * 0.9, height),
@@ -189,10 +223,10 @@ std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::Compar
                                         .arg(QString::fromStdString(rows[order.front()].planner))
                                   : QString();
         ComparisonPanel panel = comparisonPanelOf(rows[index], plans[index], timed);
-        if (ranks[index] > 0)
-            panel.title = QStringLiteral("%1. %2%3")
-                              .arg(ranks[index])
-                              .arg(panel.title, rankedApartNote(io::readingGroup(rows[index], rows)));
+        if (ranks[index] > 0) {
+            panel.label = QStringLiteral("%1. %2").arg(ranks[index]).arg(panel.title);
+            panel.title = panel.label + rankedApartNote(io::readingGroup(rows[index], rows));
+        }
 
         panels.push_back(std::move(panel));
     }
@@ -202,30 +236,41 @@ std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::Compar
 QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
                              const std::vector<ComparisonPanel>& panels, const AreaOutline* area,
                              int mostColumns) {
-    const int columns = std::min(columnsFor(panels.size()), std::max(mostColumns, 1));
-    const int rows = static_cast<int>((panels.size() + static_cast<std::size_t>(columns) - 1) /
+    std::vector<const ComparisonPanel*> mapped;
+    std::vector<const ComparisonPanel*> unplanned;
+    for (const ComparisonPanel& panel : panels)
+        (panel.plan != nullptr ? mapped : unplanned).push_back(&panel);
+    const int columns = std::min(columnsFor(mapped.size()), std::max(mostColumns, 1));
+    const int rows = static_cast<int>((mapped.size() + static_cast<std::size_t>(columns) - 1) /
                                       static_cast<std::size_t>(columns));
+    const int captionHeight = captionHeightOf(QFont(), mapped);
     const int width = margin + columns * (tileSide + margin);
-    const int height =
-        margin + std::max(rows, 1) * (tileSide + captionHeight + margin) + chartHeight + margin;
-    QImage sheet(width, height, QImage::Format_RGB32);
+    const int unplannedHeight =
+        unplanned.empty() ? 0 : static_cast<int>(unplanned.size()) * unplannedLineHeight + margin;
+    const int chart = mapped.empty() ? 0 : chartHeight + margin;
+    const int height = margin + rows * (tileSide + captionHeight + margin) + unplannedHeight + chart;
+    QImage sheet(width, std::max(height, 2 * margin), QImage::Format_RGB32);
     sheet.fill(Qt::white);
     QPainter painter(&sheet);
     painter.setRenderHint(QPainter::Antialiasing, true);
     // Every panel shows the same part of the raster, at the same scale.
     std::vector<const Plan*> plans;
-    for (const ComparisonPanel& panel : panels)
-        plans.push_back(panel.plan);
+    for (const ComparisonPanel* panel : mapped)
+        plans.push_back(panel->plan);
     const ClassGrid frame = planFrame(grid, plans);
-    for (std::size_t i = 0; i < panels.size(); ++i) {
+    for (std::size_t i = 0; i < mapped.size(); ++i) {
         const int column = static_cast<int>(i) % columns;
         const int row = static_cast<int>(i) / columns;
         const QRect tile(margin + column * (tileSide + margin),
                          margin + row * (tileSide + captionHeight + margin), tileSide,
                          tileSide + captionHeight);
-        drawPanel(painter, grid, frame, classes, panels[i], tile, area);
+        drawPanel(painter, grid, frame, classes, *mapped[i], tile, area, captionHeight);
     }
-    drawChart(painter, panels, QRect(margin, height - chartHeight - margin, width - 2 * margin, chartHeight));
+    const int belowTiles = margin + rows * (tileSide + captionHeight + margin);
+    drawUnplanned(painter, unplanned, QRect(margin, belowTiles, width - 2 * margin, unplannedHeight));
+    if (!mapped.empty())
+        drawChart(painter, mapped,
+                  QRect(margin, belowTiles + unplannedHeight, width - 2 * margin, chartHeight));
     painter.end();
     return sheet;
 }

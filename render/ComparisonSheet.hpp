@@ -19,6 +19,7 @@ struct ComparisonPanel {
     QString title;
     QStringList caption;
     const Plan* plan = nullptr;
+    QString label; // under its bars in the chart, where the title's note would not fit; empty: the title
 };
 
 // A planner's panel: its name, and its key figures or why it has no plan; timed follows the makespan
@@ -32,9 +33,10 @@ struct ComparisonPanel {
                                                                   const std::vector<const Plan*>& plans);
 
 // The plans as small multiples on one sheet, same extent and scale, each with its name and figures under
-// it, and below them a bar chart of every robot's time per planner; area: the edges of the area of interest
-// and no-go zones the plans were made in, drawn over each. Up to three plans side by side, or mostColumns
-// (one in a narrow dock, where three would be scaled down until their captions cannot be read).
+// it (as many lines as the longest caption needs), the panels without a plan as a line each of why, and below
+// them a bar chart of every robot's time per planner; area: the edges of the area of interest and no-go
+// zones the plans were made in, drawn over each. Up to three plans side by side, or mostColumns (one in a
+// narrow dock, where three would be scaled down until their captions cannot be read).
 [[nodiscard]] QImage renderComparisonSheet(const ClassGrid& grid, const ClassTable& classes,
                                            const std::vector<ComparisonPanel>& panels,
                                            const AreaOutline* area = nullptr, int mostColumns = 3);

@@ -102,8 +102,8 @@ class TestComparisonSheet : public QObject {
         const ClassTable classes({LandCoverClass{1, "Meadow", 0x40a040, 2.0, 10.0, true}});
         Plan plan;
         plan.planner = "test";
-        const std::vector<render::ComparisonPanel> panels{{QStringLiteral("one"), {}, &plan},
-                                                          {QStringLiteral("two"), {}, &plan}};
+        const std::vector<render::ComparisonPanel> panels{{QStringLiteral("one"), {}, &plan, {}},
+                                                          {QStringLiteral("two"), {}, &plan, {}}};
         AreaOutline area;
         area.include = {{{{1020, 4920}, {1180, 4920}, {1180, 4980}, {1020, 4980}}}};
         area.exclude = {{{{1040, 4940}, {1080, 4940}, {1080, 4960}, {1040, 4960}}}};
@@ -118,6 +118,45 @@ class TestComparisonSheet : public QObject {
         // panels.
         QVERIFY2(edges > 1000, qPrintable(QString::number(edges)));
         QVERIFY2(noGo > 200, qPrintable(QString::number(noGo)));
+    }
+
+    // A planner without a plan takes a line saying why, not a tile of its own: three plans and a skipped
+    // planner make one row of maps; nor has it a place in the chart.
+    void plannersWithoutAPlanTakeALine() {
+        const ClassGrid grid = test::filledGrid(20, 10, 1000.0, 5000.0, 10.0, 1);
+        const ClassTable classes({LandCoverClass{1, "Meadow", 0x40a040, 2.0, 10.0, true}});
+        Plan plan;
+        plan.planner = "test";
+        std::vector<render::ComparisonPanel> panels{{QStringLiteral("1. one"), {}, &plan, {}},
+                                                    {QStringLiteral("2. two"), {}, &plan, {}},
+                                                    {QStringLiteral("3. three"), {}, &plan, {}}};
+        const QImage planned = render::renderComparisonSheet(grid, classes, panels);
+        panels.push_back({QStringLiteral("spiral-stc"),
+                          {QStringLiteral("skipped: spiral-stc plans for one robot and the mission has 5")},
+                          nullptr,
+                          {}});
+        const QImage withSkipped = render::renderComparisonSheet(grid, classes, panels);
+        QCOMPARE(withSkipped.width(), planned.width());
+        const int added = withSkipped.height() - planned.height();
+        QVERIFY2(added > 0 && added < 100, qPrintable(QString::number(added)));
+        // Only planners without plans: their lines, no map and no chart.
+        const QImage none = render::renderComparisonSheet(grid, classes, {panels.back()});
+        QVERIFY2(none.height() < 150, qPrintable(QString::number(none.height())));
+    }
+
+    // The caption under each map is as tall as the longest needs: six lines are not cut to three.
+    void longCaptionsAreNotCut() {
+        const ClassGrid grid = test::filledGrid(20, 10, 1000.0, 5000.0, 10.0, 1);
+        const ClassTable classes({LandCoverClass{1, "Meadow", 0x40a040, 2.0, 10.0, true}});
+        Plan plan;
+        plan.planner = "test";
+        const QStringList three{QStringLiteral("a"), QStringLiteral("b"), QStringLiteral("c")};
+        const QImage short_ =
+            render::renderComparisonSheet(grid, classes, {{QStringLiteral("one"), three, &plan, {}}});
+        const QImage tall =
+            render::renderComparisonSheet(grid, classes, {{QStringLiteral("one"), three + three, &plan, {}}});
+        const int added = tall.height() - short_.height();
+        QVERIFY2(added >= 3 * 13, qPrintable(QString::number(added)));
     }
 };
 

@@ -27,7 +27,10 @@ io::ComparisonRow plannedRow(const std::string& planner, double ratio, double ma
 
 ui::ComparisonOutcome outcomeOf(std::vector<io::ComparisonRow> rows) {
     ui::ComparisonOutcome outcome;
-    outcome.plans.assign(rows.size(), nullptr);
+    // A planned row has a plan, drawn on the sheet (an empty one here); the others have none.
+    for (const io::ComparisonRow& row : rows)
+        outcome.plans.push_back(row.outcome == io::ComparisonRow::Outcome::Planned ? std::make_shared<Plan>()
+                                                                                   : nullptr);
     outcome.choices.assign(rows.size(), {});
     outcome.errors.assign(rows.size(), std::nullopt);
     outcome.rows = std::move(rows);
