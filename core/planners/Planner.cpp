@@ -300,7 +300,10 @@ std::string unevenPlanMessage(const Plan& plan, const PlannerDescription& planne
 
 // Land no robot covers, and why. Land a planner on batteries leaves beyond their reach is warned of where
 // it is left out (beyond-battery, beyond-every-charger).
-std::vector<std::string> uncoveredLandMessages(const UncoveredLand& land, const PlannerDescription& planner) {
+// reachEdge: land beyond every aircraft's reach was left out of the task area (LandBeyondReach), so its edge
+// may cut land off too.
+std::vector<std::string> uncoveredLandMessages(const UncoveredLand& land, const PlannerDescription& planner,
+                                               bool reachEdge) {
     std::vector<std::string> messages;
     if (land.cutOffSquareMetres > 0.0) {
         const std::string where = land.cutOffPieces == 1
@@ -308,10 +311,11 @@ std::vector<std::string> uncoveredLandMessages(const UncoveredLand& land, const 
                                       : "in " + std::to_string(land.cutOffPieces) + " pieces, the largest (" +
                                             formatArea(land.largestPieceSquareMetres) + ") round " +
                                             describePoint(land.largestPieceCentre);
-        messages.push_back(formatArea(land.cutOffSquareMetres) +
-                           " of passable land cannot be reached by any robot: impassable land or the area's "
-                           "edge cuts it off from every start (" +
-                           where + "); a robot started there would cover it");
+        messages.push_back(
+            formatArea(land.cutOffSquareMetres) +
+            " of passable land cannot be reached by any robot: impassable land" +
+            (reachEdge ? ", the area's edge or the edge of the flights' reach" : " or the area's edge") +
+            " cuts it off from every start (" + where + "); a robot started there would cover it");
     }
     if (land.leftOutSquareMetres > 0.0 && !planner.fliesOnBatteries())
         messages.push_back(formatArea(land.leftOutSquareMetres) +
@@ -400,6 +404,11 @@ std::string fieldPacesMessage(const std::vector<double>& paces, bool measured) {
          << "; the paths' times differ by design";
     return text.str();
 }
+bool leftOutBeyondReach(const ClassGrid& grid) {
+    return std::find(grid.outside.begin(), grid.outside.end(), ClassGrid::beyondFlightReach) !=
+           grid.outside.end();
+}
+
 // The land left out beyond every reach is passable land no robot covers: the plan's figures count it.
 void countLandBeyondReach(Plan& plan, const LandBeyondReach& land) {
     PlanMetrics& metrics = plan.metrics;
@@ -602,7 +611,8 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
         return 0;
     });
     if (plan.metrics.unreachableAreaSquareMetres > 0.0)
-        for (const std::string& message : uncoveredLandMessages(uncoveredLand(plan), planner))
+        for (const std::string& message :
+             uncoveredLandMessages(uncoveredLand(plan), planner, leftOutBeyondReach(problem.grid)))
             planningRun.addIssue(IssueSeverity::Warning, "unreachable-area", message);
     if (const WaypointsBeyondArea beyond = waypointsBeyondArea(problem.grid, plan.paths);
         beyond.waypoints > 0)

@@ -107,6 +107,25 @@ class LandBeyondReachTest : public QObject {
         QCOMPARE(plan.metrics.unreachableAreaSquareMetres, 0.0);
     }
 
+    // Land within reach joined to the start only through land beyond it is cut off by the reach's edge: the
+    // warning of unreachable land names that edge.
+    void landCutOffByTheReachSaysSo() {
+        // 500 x 500 m, a wall of water 200 m east of the start with its gap 490 m south, beyond reach.
+        std::vector<bool> wall(50 * 50, false);
+        for (int row = 0; row < 49; ++row)
+            wall[static_cast<std::size_t>(row * 50 + 20)] = true;
+        PlanningProblem problem = test::uniformProblem(50, 50, 10.0, wall, {});
+        problem.planner = defaultPlannerChoice(MlctPlanner::plannerName);
+        problem.starts = {test::pixelCentre(problem.grid, 0, 0)};
+        problem.robotFlights = {aircraft()};
+        const Plan plan = makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+        const PlanIssue* cutOff = issueCoded(plan, "unreachable-area");
+        QVERIFY(cutOff != nullptr);
+        QVERIFY2(cutOff->message.find("the edge of the flights' reach cuts it off") != std::string::npos,
+                 cutOff->message.c_str());
+        QVERIFY(issueCoded(plan, "beyond-flight-reach") != nullptr);
+    }
+
     // Aircraft whose flights reach the whole map leave nothing out.
     void nothingLeftOutWithinReach() {
         PlanningProblem problem = westEndStrip();
