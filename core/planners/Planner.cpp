@@ -20,6 +20,7 @@
 #include "core/planners/UncoveredLand.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -445,16 +446,21 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
     const PlannerDescription planner = description();
     // Aircraft would fly flights longer than their batteries to land none of them reaches: it is left out.
     // Planners on batteries plan their sorties from chargers and say what they leave.
-    if (!planner.fliesOnBatteries())
+    if (!planner.fliesOnBatteries()) {
+        const auto begin = std::chrono::steady_clock::now();
         if (std::optional<LandBeyondReach> beyond = landBeyondEveryReach(problem)) {
             if (!beyond->reachedPassable)
                 throw PlanningError(PlanningError::Kind::NoPassableCell, nothingWithinReachMessage(*beyond));
             PlanningProblem within = problem;
             within.grid.outside = std::move(beyond->outside);
+            const std::chrono::duration<double, std::milli> found = std::chrono::steady_clock::now() - begin;
             Plan plan = planWithin(planner, within, given, progress);
+            plan.metrics.stageMilliseconds.insert(plan.metrics.stageMilliseconds.begin(),
+                                                  {"flight reach", found.count()});
             countLandBeyondReach(plan, *beyond);
             return plan;
         }
+    }
     return planWithin(planner, problem, given, progress);
 }
 

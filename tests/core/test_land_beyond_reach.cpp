@@ -74,6 +74,8 @@ class LandBeyondReachTest : public QObject {
         QVERIFY2(said->message.find("991 m from the nearest start") != std::string::npos,
                  said->message.c_str());
         QVERIFY(test::checkAllInvariants(problem, plan).empty());
+        // The time finding that land took is the plan's first stage: the report's timings add up.
+        QCOMPARE(metrics.stageMilliseconds.front().first, std::string("flight reach"));
     }
 
     // The land found beyond: its area, the mask flagging it and nothing else, and the farthest point.
