@@ -82,8 +82,14 @@ class MissionReader {
     }
 
     // "\"classes\", as \"classes\": {\"fov_m\": ...}"; a home ending in [] is an array of objects, each
-    // holding the key ("robots[]": each robot).
+    // holding the key ("robots[]": each robot). Two homes, "exports|robots[]": the key is every robot's in
+    // the first, an object, and one robot's own in the second, an array of robots.
     static std::string placeOf(const std::string& home, const std::string& key) {
+        if (const std::size_t bar = home.find('|'); bar != std::string::npos) {
+            const std::string array = home.substr(bar + 1, home.size() - bar - 3); // "robots[]": "robots"
+            return placeOf(home.substr(0, bar), key) + " for every robot, or in an entry of \"" + array +
+                   "\", as \"" + array + "\": [{\"" + key + "\": ...}], for that robot alone";
+        }
         if (home.size() > 2 && home.ends_with("[]")) {
             const std::string array = home.substr(0, home.size() - 2);
             return "each of \"" + array + "\", as \"" + array + "\": [{\"" + key + "\": ...}]";
@@ -669,13 +675,13 @@ Result<Mission> parseMission(const std::string& text, const std::string& path) {
              {"start_crs", "robots[]"},
              {"charger", "robots[]"},
              {"battery_s", "robots[]"},
-             {"vehicle", "exports"},
-             {"altitude_m", "exports"},
-             {"cruise_speed_mps", "exports"},
-             {"flight_time_s", "exports"},
-             {"turnaround_s", "exports"},
-             {"camera_trigger_m", "exports"},
-             {"max_waypoints", "exports"},
+             {"vehicle", "exports|robots[]"},
+             {"altitude_m", "exports|robots[]"},
+             {"cruise_speed_mps", "exports|robots[]"},
+             {"flight_time_s", "exports|robots[]"},
+             {"turnaround_s", "exports|robots[]"},
+             {"camera_trigger_m", "exports|robots[]"},
+             {"max_waypoints", "exports|robots[]"},
              {"path", "raster"},
              {"band", "raster"},
              {"include", "area"},

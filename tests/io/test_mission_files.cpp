@@ -773,6 +773,16 @@ class MissionFilesTest : public QObject {
         QCOMPARE(loaded.error(), path +
                                      ": fov_m: unknown key at the top level: it belongs in \"classes\", as "
                                      "\"classes\": {\"fov_m\": ...}");
+        // A vehicle's key is every robot's in exports, or one robot's own in its entry of robots.
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "flight_time_s": 1200})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(),
+                 path +
+                     ": flight_time_s: unknown key at the top level: it belongs in \"exports\", as "
+                     "\"exports\": {\"flight_time_s\": ...} for every robot, or in an entry of \"robots\", "
+                     "as \"robots\": [{\"flight_time_s\": ...}], for that robot alone");
         writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
                             "robots": [{"start": [10, 20]}], "start_crs": "EPSG:4326"})");
         loaded = loadMission(path);
