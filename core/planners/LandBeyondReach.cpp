@@ -28,6 +28,16 @@ double workingReachMetres(const FlightLimits& flights) {
 std::optional<std::vector<Reach>> reachesOf(const PlanningProblem& problem) {
     if (problem.starts.empty() || problem.robotFlights.size() < problem.starts.size())
         return std::nullopt;
+    // A malformed grid or start is the planner's to refuse, with its own words.
+    const ClassGrid& grid = problem.grid;
+    const auto pixels = static_cast<std::size_t>(std::max(grid.columns, 0)) *
+                        static_cast<std::size_t>(std::max(grid.rows, 0));
+    if (grid.values.size() != pixels || (!grid.outside.empty() && grid.outside.size() != pixels) ||
+        !(grid.pixelWidth > 0.0) || !(grid.pixelHeight > 0.0))
+        return std::nullopt;
+    for (const MapPoint& start : problem.starts)
+        if (!std::isfinite(start.x) || !std::isfinite(start.y))
+            return std::nullopt;
     std::vector<Reach> reaches;
     for (std::size_t robot = 0; robot < problem.starts.size(); ++robot) {
         const double reach = workingReachMetres(problem.robotFlights[robot]);
@@ -49,7 +59,7 @@ class ReachMargins {
         const double halfPixel = std::hypot(problem.grid.pixelWidth, problem.grid.pixelHeight) / 2.0;
         metres_.push_back(halfPixel);
         for (const LandCoverClass& landCover : problem.classes.classes()) {
-            const double margin = landCover.passable
+            const double margin = landCover.isTraversable()
                                       ? halfPixel + 2.0 * std::sqrt(2.0) * landCover.fieldOfViewMetres
                                       : halfPixel;
             const auto found = std::find(metres_.begin(), metres_.end(), margin);
@@ -100,7 +110,7 @@ double nearestStartMetres(const std::vector<Reach>& reaches, MapPoint point) {
 
 bool passable(const ClassTable& classes, std::int32_t value) {
     const LandCoverClass* found = classes.find(value);
-    return found != nullptr && found->passable;
+    return found != nullptr && found->isTraversable();
 }
 
 } // namespace
@@ -161,11 +171,12 @@ std::string landBeyondReachMessage(const LandBeyondReach& land) {
            " of passable land lies too far from every start for one flight to work there and come back, and "
            "is left out of the plan: a flight works at most " +
            reach +
-           " from its start, its trips and a twentieth of its time at work included; the farthest of "
-           "that land lies round " +
+           " from its start, its trips and a twentieth of its time at work included, and the cells at that "
+           "edge (two fields of view a side) must lie wholly within it; the farthest of that land lies "
+           "round " +
            describePoint(land.farthest) + ", " + formatDistance(land.farthestMetres) +
-           " from the nearest start. Start a robot nearer it, or give the aircraft a longer flight time, to "
-           "cover it";
+           " from the nearest start. Start a robot nearer it, or give the aircraft a longer flight time or a "
+           "faster cruise speed, to cover it";
 }
 
 std::string nothingWithinReachMessage(const LandBeyondReach& land) {
@@ -174,8 +185,8 @@ std::string nothingWithinReachMessage(const LandBeyondReach& land) {
            formatDistance(land.mostReachMetres) +
            " from their starts (their climb, descent and trips and a twentieth of a flight at work), less "
            "the "
-           "size of the cells there (two fields of view a side). Give the aircraft a longer flight time or a "
-           "smaller field of view, or start them nearer the land";
+           "size of the cells there (two fields of view a side). Give the aircraft a longer flight time, a "
+           "faster cruise speed or a smaller field of view, or start them nearer the land";
 }
 
 } // namespace mcpp

@@ -82,11 +82,14 @@ class LandBeyondReachTest : public QObject {
     void findsTheLandBeyondEveryReach() {
         PlanningProblem problem = westEndStrip();
         problem.grid.values[problem.grid.index(99, 0)] = 99; // water in a far corner: not passable land
+        // Nor a class marked passable at 0 m/s: an obstacle too.
+        problem.classes.set({7, "stopped", 0x808080, 0.0, 5.0, true});
+        problem.grid.values[problem.grid.index(98, 0)] = 7;
         const std::optional<LandBeyondReach> land = landBeyondEveryReach(problem);
         QVERIFY(land.has_value());
         const auto flagged = static_cast<double>(
             std::count(land->outside.begin(), land->outside.end(), ClassGrid::beyondFlightReach));
-        QCOMPARE(land->passableSquareMetres, (flagged - 1.0) * 100.0);
+        QCOMPARE(land->passableSquareMetres, (flagged - 2.0) * 100.0);
         QVERIFY(flagged * 100.0 >= stripArea(problem, aircraft().reachMetres(), false));
         QVERIFY(land->leastReachMetres < aircraft().reachMetres());
         QCOMPARE(land->leastReachMetres, land->mostReachMetres);
