@@ -454,7 +454,7 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
             PlanningProblem within = problem;
             within.grid.outside = std::move(beyond->outside);
             const std::chrono::duration<double, std::milli> found = std::chrono::steady_clock::now() - begin;
-            Plan plan = planWithin(planner, within, given, progress);
+            Plan plan = planWithinReach(planner, within, given, progress, *beyond);
             plan.metrics.stageMilliseconds.insert(plan.metrics.stageMilliseconds.begin(),
                                                   {"flight reach", found.count()});
             countLandBeyondReach(plan, *beyond);
@@ -462,6 +462,19 @@ Plan Planner::plan(const PlanningProblem& problem, const ParameterValues& given,
         }
     }
     return planWithin(planner, problem, given, progress);
+}
+
+Plan Planner::planWithinReach(const PlannerDescription& planner, const PlanningProblem& problem,
+                              const ParameterValues& given, const ProgressReporter& progress,
+                              const LandBeyondReach& beyond) const {
+    try {
+        return planWithin(planner, problem, given, progress);
+    } catch (const PlanningError& error) {
+        // Cells too large for what is left within reach: the reach is why, not the land cover.
+        if (error.kind() == PlanningError::Kind::NoPassableCell)
+            throw PlanningError(PlanningError::Kind::NoPassableCell, nothingWithinReachMessage(beyond));
+        throw;
+    }
 }
 
 Plan Planner::planWithin(const PlannerDescription& planner, const PlanningProblem& problem,

@@ -11,6 +11,7 @@
 namespace mcpp {
 
 class PlanningRun;
+struct LandBeyondReach;
 
 // A complete coverage planner: problem in, plan out. The base class does what every planner needs the same
 // way: it checks the starts, times each stage, measures the paths, computes the figures and reports cells no
@@ -48,6 +49,11 @@ class Planner {
     // Plans the problem as given: in rounds where the planner evens out time in the field.
     [[nodiscard]] Plan planWithin(const PlannerDescription& planner, const PlanningProblem& problem,
                                   const ParameterValues& given, const ProgressReporter& progress) const;
+    // The same within the reach of the fleet's flights (problem: with the land beyond flagged), saying the
+    // reach where nothing is left to plan.
+    [[nodiscard]] Plan planWithinReach(const PlannerDescription& planner, const PlanningProblem& problem,
+                                       const ParameterValues& given, const ProgressReporter& progress,
+                                       const LandBeyondReach& beyond) const;
     // One plan of the problem, as a round of evening out time in the field where `round` says so.
     [[nodiscard]] Plan planOnce(const PlannerDescription& planner, const PlanningProblem& problem,
                                 const ParameterValues& given, const ProgressReporter& progress,

@@ -1,3 +1,4 @@
+#include "core/model/PlanningError.hpp"
 #include "core/planners/LandBeyondReach.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -129,6 +130,23 @@ class LandBeyondReachTest : public QObject {
         QVERIFY2(cutOff->message.find("the edge of the flights' reach cuts it off") != std::string::npos,
                  cutOff->message.c_str());
         QVERIFY(issueCoded(plan, "beyond-flight-reach") != nullptr);
+    }
+
+    // Cells far larger than what is left within reach (two 100 m fields of view a side, 42 m of reach
+    // left): no plan, and the error says the reach is why, not the land cover.
+    void cellsTooLargeForTheReachSayTheReach() {
+        PlanningProblem problem = westEndStrip();
+        problem.classes.set({1, "grass", 0x88cc44, 1.0, 100.0, true});
+        problem.robotFlights = {FlightLimits{200.0, 20.0, 0.0, 1.0, 1.0}}; // 90 m out at most
+        std::string said;
+        try {
+            (void)makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+        } catch (const PlanningError& error) {
+            QCOMPARE(error.kind(), PlanningError::Kind::NoPassableCell);
+            said = error.what();
+        }
+        QVERIFY2(said.starts_with("no passable land lies within what one flight can cover from any start"),
+                 said.c_str());
     }
 
     // Aircraft whose flights reach the whole map leave nothing out.
