@@ -31,9 +31,9 @@ class Balancer {
   public:
     Balancer(const CellGraph& graph, const SpanningTreeCoverage& coverage, RegionAllocation& regions,
              std::vector<CoveragePath>& paths, const std::vector<MapPoint>& starts,
-             const std::vector<double>& fieldPaces)
+             const std::vector<double>& fieldPaces, const PathTimeBalancing::MayTake& mayTake)
         : graph_(graph), coverage_(coverage), regions_(regions), paths_(paths), starts_(starts),
-          fieldPaces_(fieldPaces), cells_(cellsByRobot(regions)), connectivity_(graph),
+          fieldPaces_(fieldPaces), mayTake_(mayTake), cells_(cellsByRobot(regions)), connectivity_(graph),
           touches_(paths.size(), std::vector<char>(paths.size(), 0)) {
         // Costs in the units of the cells as they are now (a turn calibration may have changed them).
         regions_.costSeconds.assign(paths.size(), 0.0);
@@ -159,7 +159,8 @@ class Balancer {
         int best = -1;
         int bestContacts = 0;
         for (int cell : cells_[static_cast<std::size_t>(giver)]) {
-            if (cell == regions_.startCell[static_cast<std::size_t>(giver)])
+            if (cell == regions_.startCell[static_cast<std::size_t>(giver)] ||
+                (mayTake_ && !mayTake_(static_cast<std::size_t>(receiver), cell)))
                 continue;
             int contacts = 0;
             for (int neighbour : graph_.neighbours(cell))
@@ -196,6 +197,7 @@ class Balancer {
     std::vector<CoveragePath>& paths_;
     const std::vector<MapPoint>& starts_;
     const std::vector<double>& fieldPaces_;
+    const PathTimeBalancing::MayTake& mayTake_;
     std::vector<std::vector<int>> cells_;
     std::vector<std::vector<int>> scratchByWorker_; // regionPath's index, one per thread, made on first use
     LocalConnectivity connectivity_;
@@ -209,7 +211,7 @@ int PathTimeBalancing::balance(const CellGraph& graph, RegionAllocation& regions
                                const ProgressReporter& progress) const {
     if (paths.size() < 2 || balanced(paths, fieldPaces_))
         return 0;
-    Balancer balancer(graph, coverage_, regions, paths, starts, fieldPaces_);
+    Balancer balancer(graph, coverage_, regions, paths, starts, fieldPaces_, mayTake_);
     std::size_t spent = 0;
     int moved = 0;
     while (spent < cellBudget_ && !balanced(paths, fieldPaces_)) {

@@ -8,6 +8,7 @@
 #include "core/model/RegionAllocation.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <vector>
 
 namespace mcpp {
@@ -25,6 +26,9 @@ class PathTimeBalancing {
 
     // Each robot's field pace (PlanningRun::fieldPaces): the paths' times in the field are balanced.
     void setFieldPaces(std::vector<double> fieldPaces) { fieldPaces_ = std::move(fieldPaces); }
+    // Which robot may take which cell (an aircraft only cells within its flights' reach); unset: any.
+    using MayTake = std::function<bool(std::size_t robot, int cell)>;
+    void setMayTake(MayTake mayTake) { mayTake_ = std::move(mayTake); }
 
     // The budget planners give it: about half a second of replanning on any map.
     [[nodiscard]] static std::size_t budgetFor(const CellGraph& graph) {
@@ -39,6 +43,7 @@ class PathTimeBalancing {
     const SpanningTreeCoverage& coverage_;
     std::size_t cellBudget_;
     std::vector<double> fieldPaces_;
+    MayTake mayTake_;
 };
 
 } // namespace mcpp

@@ -37,6 +37,11 @@ double FlightLimits::reachMetres() const {
     return (flightSeconds - climbAndDescentSeconds) * tripMetresPerSecond / 2.0;
 }
 
+double FlightLimits::workingReachMetres() const {
+    constexpr double leastWorkPerFlight = 1.0 / 20.0;
+    return reachMetres() - leastWorkPerFlight * flightSeconds * tripMetresPerSecond / 2.0;
+}
+
 double FlightLimits::leastFieldSecondsFor(double pathSeconds) const {
     const double flown = pathSeconds * fastestPace;
     if (!splitsPaths() || !(flown > 0.0))

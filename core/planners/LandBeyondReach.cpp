@@ -16,14 +16,6 @@ struct Reach {
     double metres = 0.0; // how far from its start one of its flights works
 };
 
-// How far from its start one flight can go and still work: a twentieth of the flight, the least piece of a
-// leg a waypoint file's flight holds (a flight reaching farther would hold that piece and overrun).
-double workingReachMetres(const FlightLimits& flights) {
-    constexpr double leastWorkPerFlight = 1.0 / 20.0;
-    return flights.reachMetres() -
-           leastWorkPerFlight * flights.flightSeconds * flights.tripMetresPerSecond / 2.0;
-}
-
 // Each robot's reach, or nothing where one of them reaches everywhere.
 std::optional<std::vector<Reach>> reachesOf(const PlanningProblem& problem) {
     if (problem.starts.empty() || problem.robotFlights.size() < problem.starts.size())
@@ -40,7 +32,7 @@ std::optional<std::vector<Reach>> reachesOf(const PlanningProblem& problem) {
             return std::nullopt;
     std::vector<Reach> reaches;
     for (std::size_t robot = 0; robot < problem.starts.size(); ++robot) {
-        const double reach = workingReachMetres(problem.robotFlights[robot]);
+        const double reach = problem.robotFlights[robot].workingReachMetres();
         if (!std::isfinite(reach))
             return std::nullopt;
         reaches.push_back({problem.starts[robot], reach});

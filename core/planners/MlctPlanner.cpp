@@ -2,6 +2,7 @@
 
 #include "core/allocation/AzimuthTrendAllocator.hpp"
 #include "core/allocation/BorderStraightening.hpp"
+#include "core/allocation/OwnFlightReach.hpp"
 #include "core/allocation/TripWeighting.hpp"
 #include "core/coverage/OwnSpeeds.hpp"
 #include "core/coverage/PathTimeBalancing.hpp"
@@ -44,9 +45,10 @@ double longestTime(const std::vector<CoveragePath>& paths, const std::vector<dou
 // Robots of their own speeds or field paces: paces guessed from travel alone, their turns left out, are put
 // right by the paths as driven, and the division evened out again with them while that shortens the
 // longest time in the field. Returns the rounds kept.
-int balanceOwnSpeeds(PlanningRun& run, const TripWeighting& trips, const std::vector<int>& startCells,
-                     const std::vector<double>& guessed, AzimuthTrendAllocator& allocator,
-                     BorderStraightening& straightening, const SpanningTreeCoverage& coverage) {
+int balanceOwnSpeeds(PlanningRun& run, const TripWeighting& trips, const OwnFlightReach& reach,
+                     const std::vector<int>& startCells, const std::vector<double>& guessed,
+                     AzimuthTrendAllocator& allocator, BorderStraightening& straightening,
+                     const SpanningTreeCoverage& coverage) {
     Plan& plan = run.plan();
     int kept = 0;
     for (; kept < speedBalanceRounds && startCells.size() > 1; ++kept) {
@@ -62,6 +64,7 @@ int balanceOwnSpeeds(PlanningRun& run, const TripWeighting& trips, const std::ve
         RegionAllocation regions =
             allocator.rebalance(trips.divided(plan.cells), startCells, plan.regions, progress);
         straightening.straighten(regions);
+        reach.handOver(trips.divided(plan.cells), regions);
         std::vector<CoveragePath> paths = coverage.walkTrees(
             plan.cells, coverage.planTrees(plan.cells, regions, run.starts(), progress, false), run.starts(),
             progress);
@@ -125,6 +128,8 @@ void MlctPlanner::run(PlanningRun& run) const {
     const TripWeighting trips(plan.cells, launchPoints(run),
                               run.tripsWeighed() ? run.problem().robotFlights : std::vector<FlightLimits>{});
     const CellGraph& divided = trips.divided(plan.cells);
+    // Each aircraft keeps to cells its own flights reach: the division's others go to robots that reach them.
+    const OwnFlightReach reach(launchPoints(run), run.problem().robotFlights);
     AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"),
                                     parameters.real("tree_piece_share") / 100.0);
     BorderStraightening straightening(divided, parameters.real("fewer_turns_slack") / 100.0);
@@ -151,6 +156,8 @@ void MlctPlanner::run(PlanningRun& run) const {
     }
     plan.regions = run.stage("allocation", [&] { return allocator.allocate(divided, startCells, progress); });
     run.stage("straight borders", [&] { return straightening.straighten(plan.regions); });
+    if (reach.limits())
+        run.stage("reach handover", [&] { return reach.handOver(divided, plan.regions); });
     // Trees first, walked once the division is settled: two divisions are compared by their trees, which
     // take a quarter of the memory of their paths (3.7 GB instead of 5.4 GB on 17.6 M cells with a fast
     // robot). On large maps a region whose merged path is small is walked as its tree is measured, and its
@@ -170,6 +177,7 @@ void MlctPlanner::run(PlanningRun& run) const {
         RegionAllocation regions = allocator.rebalance(plan.cells, startCells, plan.regions,
                                                        progress.within("turn balance", 0.0, 0.5));
         straightening.straighten(regions);
+        reach.handOver(plan.cells, regions);
         std::vector<RegionTree> second =
             coverage.replanTrees(plan.cells, regions, plan.regions, trees, run.starts(),
                                  progress.within("turn balance", 0.5, 1.0), true);
@@ -187,7 +195,8 @@ void MlctPlanner::run(PlanningRun& run) const {
     });
     if (paced)
         run.stage("speed balance", [&] {
-            return balanceOwnSpeeds(run, trips, startCells, guessedPaces, allocator, straightening, coverage);
+            return balanceOwnSpeeds(run, trips, reach, startCells, guessedPaces, allocator, straightening,
+                                    coverage);
         });
     // Costs only estimate path times: border cells pass from the longest path to shorter neighbours, paths
     // replanned, while that shortens the longest. Bounded to about half a second of replanning.
@@ -196,6 +205,9 @@ void MlctPlanner::run(PlanningRun& run) const {
     balancing.setFieldPaces(
         trips.weighs() ? withFieldPaces(trips.paces(plan.cells, plan.regions), fieldPaces, startCells.size())
                        : fieldPaces);
+    if (reach.limits())
+        balancing.setMayTake(
+            [&](std::size_t robot, int cell) { return reach.reaches(robot, plan.cells.cell(cell)); });
     run.stage("path balance", [&] {
         return balancing.balance(plan.cells, plan.regions, plan.paths, run.starts(), progress);
     });

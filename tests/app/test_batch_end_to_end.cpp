@@ -1129,9 +1129,10 @@ void TestBatchEndToEnd::outputsWritesOnlyWhatIsAsked() {
         reported = reported || (issue.toObject().value("code").toString() == QStringLiteral("output") &&
                                 issue.toObject().value("message").toString().startsWith(said));
     QVERIFY(reported);
-    // One drone of short flights beside drones reaching the whole map: it is given land beyond its own
-    // reach, its flights there are longer than its battery, and the bound in the field says it leaves their
-    // trips out.
+    // One drone of short flights beside drones reaching the whole map. MCPP-MLCT gives the land beyond its
+    // reach to the others: no flight is longer than a battery, and the bound in the field counts the trips.
+    // DARP shares by balance alone: the drone is given land beyond its reach, its flights there are longer
+    // than its battery, and the bound says it leaves their trips out.
     auto mixed = sampleMissionAnywhere("zion-nlcd", "nlcd.tif");
     auto robots = mixed.value("robots").toArray();
     for (qsizetype robot = 0; robot < robots.size(); ++robot) {
@@ -1147,13 +1148,23 @@ void TestBatchEndToEnd::outputsWritesOnlyWhatIsAsked() {
     mixed.insert("classes", classes);
     const QString mixedPath = scratch_.filePath(QStringLiteral("mixed-flights.json"));
     QVERIFY(writeText(mixedPath, QJsonDocument(mixed).toJson()));
-    const auto short_ = runMcpp({"--batch", mixedPath, "--outputs", "qgc-plan", "--out",
-                                 scratch_.filePath(QStringLiteral("mixed-flights"))});
-    QVERIFY2(short_.exitCode == 0, qPrintable(short_.standardError));
-    QVERIFY2(short_.standardOutput.contains(QStringLiteral(
-                 " in the field (the work and the turnarounds alone: with flights longer than a "
-                 "battery, the trips out to the work and back are left out of this bound)")),
-             qPrintable(short_.standardOutput));
+    const QString tripsLeftOut =
+        QStringLiteral(" in the field (the work and the turnarounds alone: with flights longer than a "
+                       "battery, the trips out to the work and back are left out of this bound)");
+    const QString tooLong = QStringLiteral(" with the flights to and from its start, longer than its ");
+    const auto kept = runMcpp({"--batch", mixedPath, "--outputs", "qgc-plan", "--out",
+                               scratch_.filePath(QStringLiteral("mixed-flights"))});
+    QVERIFY2(kept.exitCode == 0, qPrintable(kept.standardError));
+    QVERIFY2(!kept.standardError.contains(tooLong), qPrintable(kept.standardError));
+    QVERIFY2(
+        kept.standardOutput.contains(QStringLiteral("no plan making these turns brings the last robot home")),
+        qPrintable(kept.standardOutput));
+    QVERIFY2(!kept.standardOutput.contains(tripsLeftOut), qPrintable(kept.standardOutput));
+    const auto shared = runMcpp({"--batch", mixedPath, "--planner", "darp", "--outputs", "qgc-plan", "--out",
+                                 scratch_.filePath(QStringLiteral("mixed-flights-darp"))});
+    QVERIFY2(shared.exitCode == 0, qPrintable(shared.standardError));
+    QVERIFY2(shared.standardError.contains(tooLong), qPrintable(shared.standardError));
+    QVERIFY2(shared.standardOutput.contains(tripsLeftOut), qPrintable(shared.standardOutput));
 }
 
 // --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at

@@ -1,0 +1,105 @@
+#include "core/allocation/OwnFlightReach.hpp"
+
+#include "core/allocation/RegionReconnection.hpp"
+
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <utility>
+
+namespace mcpp {
+namespace {
+
+// The cells of regions beyond their robots' reach: by cell, whether it waits for another robot.
+std::vector<char> beyondOwnReach(const OwnFlightReach& reach, const CellGraph& graph,
+                                 const RegionAllocation& regions) {
+    std::vector<char> waiting(graph.size(), 0);
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        const int robot = regions.robotOfCell[id];
+        if (robot >= 0 && static_cast<int>(id) != regions.startCell[static_cast<std::size_t>(robot)] &&
+            !reach.reaches(static_cast<std::size_t>(robot), graph.cell(static_cast<int>(id))))
+            waiting[id] = 1;
+    }
+    return waiting;
+}
+
+void countCosts(const CellGraph& graph, RegionAllocation& regions) {
+    regions.costSeconds.assign(regions.startCell.size(), 0.0);
+    for (std::size_t id = 0; id < graph.size(); ++id)
+        if (const int robot = regions.robotOfCell[id]; robot >= 0)
+            regions.costSeconds[static_cast<std::size_t>(robot)] +=
+                graph.cell(static_cast<int>(id)).coverSeconds();
+}
+
+} // namespace
+
+OwnFlightReach::OwnFlightReach(std::vector<MapPoint> launchPoints, const std::vector<FlightLimits>& flights)
+    : launchPoints_(std::move(launchPoints)) {
+    for (std::size_t robot = 0; robot < launchPoints_.size(); ++robot) {
+        const double reach = robot < flights.size() ? flights[robot].workingReachMetres()
+                                                    : std::numeric_limits<double>::infinity();
+        // A reach too short to work at all is the land-beyond-reach check's to say, not a handover's.
+        reachMetres_.push_back(reach > 0.0 ? reach : std::numeric_limits<double>::infinity());
+        limits_ = limits_ || std::isfinite(reachMetres_.back());
+    }
+}
+
+bool OwnFlightReach::reaches(std::size_t robot, const Cell& cell) const {
+    if (robot >= reachMetres_.size() || !std::isfinite(reachMetres_[robot]))
+        return true;
+    const MapPoint& launch = launchPoints_[robot];
+    const double reach = reachMetres_[robot];
+    const auto within = [&](const MapPoint& point) {
+        return std::hypot(point.x - launch.x, point.y - launch.y) <= reach;
+    };
+    if (cell.freeSubCellCount() == 0)
+        return within({cell.centreX(), cell.centreY()});
+    for (const SubCell subCell : subCellsCounterClockwise)
+        if (cell.isFree(subCell) && !within(cell.subCellCentre(subCell)))
+            return false;
+    return true;
+}
+
+int OwnFlightReach::handOver(const CellGraph& graph, RegionAllocation& regions) const {
+    if (!limits_ || regions.robotOfCell.size() != graph.size())
+        return 0;
+    const std::vector<char> waiting = beyondOwnReach(*this, graph, regions);
+    std::vector<int> taker(graph.size(), -1);
+    // Grown from the regions' own cells within reach into the waiting cells, one step at a time.
+    std::deque<std::pair<int, int>> queue; // cell, robot
+    for (std::size_t id = 0; id < graph.size(); ++id) {
+        const int robot = regions.robotOfCell[id];
+        if (waiting[id] != 0 || robot < 0)
+            continue;
+        for (const int next : graph.neighbours(static_cast<int>(id)))
+            if (waiting[static_cast<std::size_t>(next)] != 0 &&
+                regions.robotOfCell[static_cast<std::size_t>(next)] != robot &&
+                reaches(static_cast<std::size_t>(robot), graph.cell(next)))
+                queue.emplace_back(next, robot);
+    }
+    int handed = 0;
+    while (!queue.empty()) {
+        const auto [cell, robot] = queue.front();
+        queue.pop_front();
+        if (taker[static_cast<std::size_t>(cell)] >= 0)
+            continue;
+        taker[static_cast<std::size_t>(cell)] = robot;
+        ++handed;
+        for (const int next : graph.neighbours(cell))
+            if (waiting[static_cast<std::size_t>(next)] != 0 && taker[static_cast<std::size_t>(next)] < 0 &&
+                reaches(static_cast<std::size_t>(robot), graph.cell(next)))
+                queue.emplace_back(next, robot);
+    }
+    if (handed == 0)
+        return 0;
+    for (std::size_t id = 0; id < graph.size(); ++id)
+        if (taker[id] >= 0)
+            regions.robotOfCell[id] = taker[id];
+    // A region whose far cells went may fall apart where they joined it: its pieces cut off from its start
+    // join a neighbour.
+    reconnectRegions(graph, regions.startCell, regions.robotOfCell);
+    countCosts(graph, regions);
+    return handed;
+}
+
+} // namespace mcpp
