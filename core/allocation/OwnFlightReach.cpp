@@ -1,10 +1,12 @@
 #include "core/allocation/OwnFlightReach.hpp"
 
 #include "core/allocation/RegionReconnection.hpp"
+#include "core/model/LocalConnectivity.hpp"
 
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <numeric>
 #include <utility>
 
 namespace mcpp {
@@ -99,7 +101,80 @@ int OwnFlightReach::handOver(const CellGraph& graph, RegionAllocation& regions) 
     // join a neighbour.
     reconnectRegions(graph, regions.startCell, regions.robotOfCell);
     countCosts(graph, regions);
+    topUp(graph, regions);
     return handed;
+}
+
+int OwnFlightReach::topUp(const CellGraph& graph, RegionAllocation& regions) const {
+    // A robot that cannot reach the fair share (its reach ends first) takes no part in the next: the others'
+    // share rises, and the few passes it takes end when no cell moves.
+    constexpr int passes = 4;
+    const std::size_t robots = regions.startCell.size();
+    std::vector<char> capped(robots, 0);
+    LocalConnectivity connectivity(graph);
+    int taken = 0;
+    for (int pass = 0; pass < passes; ++pass) {
+        double cost = 0.0;
+        double inversePaces = 0.0;
+        for (std::size_t robot = 0; robot < robots; ++robot)
+            if (capped[robot] == 0) {
+                cost += regions.costSeconds[robot];
+                inversePaces += 1.0 / paceOf(robot);
+            }
+        // The paced cost every robot not capped would have were their cells shared evenly.
+        const double fair = inversePaces > 0.0 ? cost / inversePaces : 0.0;
+        std::vector<std::size_t> order(robots);
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return pacedCost(regions, a) < pacedCost(regions, b);
+        });
+        int takenInPass = 0;
+        for (const std::size_t taker : order) {
+            if (capped[taker] != 0 || !(pacedCost(regions, taker) < fair))
+                continue;
+            takenInPass += takeWithinReach(graph, regions, taker, fair, connectivity);
+            capped[taker] = pacedCost(regions, taker) < fair ? 1 : 0;
+        }
+        taken += takenInPass;
+        if (takenInPass == 0)
+            break;
+    }
+    return taken;
+}
+
+int OwnFlightReach::takeWithinReach(const CellGraph& graph, RegionAllocation& regions, std::size_t taker,
+                                    double fair, LocalConnectivity& connectivity) const {
+    // Cells a connectivity check may visit: a giver's cell whose neighbours do not meet again nearby stays.
+    constexpr std::size_t searchLimit = 256;
+    std::vector<int>& owner = regions.robotOfCell;
+    const int me = static_cast<int>(taker);
+    std::deque<int> frontier;
+    for (std::size_t id = 0; id < graph.size(); ++id)
+        if (owner[id] == me)
+            frontier.push_back(static_cast<int>(id));
+    int taken = 0;
+    while (!frontier.empty() && pacedCost(regions, taker) < fair) {
+        const int from = frontier.front();
+        frontier.pop_front();
+        for (const int cell : graph.neighbours(from)) {
+            const int giver = owner[static_cast<std::size_t>(cell)];
+            if (giver < 0 || giver == me || cell == regions.startCell[static_cast<std::size_t>(giver)])
+                continue;
+            const auto donor = static_cast<std::size_t>(giver);
+            const double cost = graph.cell(cell).coverSeconds();
+            if (pacedCost(regions, donor) - cost * paceOf(donor) < fair ||
+                !reaches(taker, graph.cell(cell)) || !connectivity.canRemove(cell, owner, searchLimit))
+                continue;
+            owner[static_cast<std::size_t>(cell)] = me;
+            regions.costSeconds[donor] -= cost;
+            regions.costSeconds[taker] += cost;
+            frontier.push_back(cell);
+            ++taken;
+            if (!(pacedCost(regions, taker) < fair))
+                break;
+        }
+    }
+    return taken;
 }
 
 } // namespace mcpp

@@ -45,7 +45,7 @@ double longestTime(const std::vector<CoveragePath>& paths, const std::vector<dou
 // Robots of their own speeds or field paces: paces guessed from travel alone, their turns left out, are put
 // right by the paths as driven, and the division evened out again with them while that shortens the
 // longest time in the field. Returns the rounds kept.
-int balanceOwnSpeeds(PlanningRun& run, const TripWeighting& trips, const OwnFlightReach& reach,
+int balanceOwnSpeeds(PlanningRun& run, const TripWeighting& trips, OwnFlightReach& reach,
                      const std::vector<int>& startCells, const std::vector<double>& guessed,
                      AzimuthTrendAllocator& allocator, BorderStraightening& straightening,
                      const SpanningTreeCoverage& coverage) {
@@ -61,6 +61,7 @@ int balanceOwnSpeeds(PlanningRun& run, const TripWeighting& trips, const OwnFlig
             drivenPaces(plan.cells, plan.regions, plan.paths, guessed), fieldPaces, startCells.size());
         allocator.setPaces(paces);
         straightening.setPaces(paces);
+        reach.setPaces(paces);
         RegionAllocation regions =
             allocator.rebalance(trips.divided(plan.cells), startCells, plan.regions, progress);
         straightening.straighten(regions);
@@ -129,7 +130,7 @@ void MlctPlanner::run(PlanningRun& run) const {
                               run.tripsWeighed() ? run.problem().robotFlights : std::vector<FlightLimits>{});
     const CellGraph& divided = trips.divided(plan.cells);
     // Each aircraft keeps to cells its own flights reach: the division's others go to robots that reach them.
-    const OwnFlightReach reach(launchPoints(run), run.problem().robotFlights);
+    OwnFlightReach reach(launchPoints(run), run.problem().robotFlights);
     AzimuthTrendAllocator allocator(parameters.integer("rebalance_iterations"),
                                     parameters.real("tree_piece_share") / 100.0);
     BorderStraightening straightening(divided, parameters.real("fewer_turns_slack") / 100.0);
@@ -149,6 +150,7 @@ void MlctPlanner::run(PlanningRun& run) const {
         const std::vector<double> paces = withFieldPaces(guessedPaces, fieldPaces, startCells.size());
         allocator.setPaces(paces);
         straightening.setPaces(paces);
+        reach.setPaces(paces);
     }
     if (ownSpeeds) {
         coverage.setRobotSpeeds(speeds);

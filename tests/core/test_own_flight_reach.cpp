@@ -83,7 +83,10 @@ class OwnFlightReachTest : public QObject {
     // cells within reach stay; both regions stay whole and their costs are counted again.
     void handsCellsBeyondReachToARobotThatReaches() {
         Strip strip = divided(55);
-        const OwnFlightReach reach(strip.problem.starts, {aircraft(), FlightLimits{}});
+        // 187.5 m out: robot 0 keeps less than half and takes nothing back, as its region held all it
+        // reaches.
+        const OwnFlightReach reach(strip.problem.starts,
+                                   {FlightLimits{500.0, 100.0, 0.0, 1.0, 1.0}, FlightLimits{}});
         std::size_t beyond = 0;
         for (std::size_t id = 0; id < strip.graph.size(); ++id)
             beyond += strip.regions.robotOfCell[id] == 0 &&
@@ -104,6 +107,24 @@ class OwnFlightReachTest : public QObject {
         QCOMPARE(strip.regions.costSeconds.size(), std::size_t{2});
         QVERIFY(std::abs(strip.regions.costSeconds[0] - costs[0]) < 1e-6);
         QVERIFY(std::abs(strip.regions.costSeconds[1] - costs[1]) < 1e-6);
+    }
+
+    // Robot 1's cells beyond its reach (425 m from the east end) go to robot 0, which is then left short and
+    // takes border cells back from robot 1 within its own reach: the two end within a cell of even, each
+    // within its reach and whole.
+    void aRobotLeftShortTakesBackWithinItsReach() {
+        Strip strip = divided(5);
+        const OwnFlightReach reach(strip.problem.starts, {aircraft(), aircraft()});
+        QVERIFY(reach.handOver(strip.graph, strip.regions) > 0);
+        for (std::size_t id = 0; id < strip.graph.size(); ++id)
+            QVERIFY(reach.reaches(static_cast<std::size_t>(strip.regions.robotOfCell[id]),
+                                  strip.graph.cell(static_cast<int>(id))));
+        QVERIFY(regionsWhole(strip.graph, strip.regions));
+        const double cellCost = strip.graph.cell(0).coverSeconds();
+        QVERIFY2(std::abs(strip.regions.costSeconds[0] - strip.regions.costSeconds[1]) <= cellCost + 1e-6,
+                 qPrintable(QStringLiteral("%1 against %2 s")
+                                .arg(strip.regions.costSeconds[0])
+                                .arg(strip.regions.costSeconds[1])));
     }
 
     // Where the other robot's flights do not reach those cells either (21.25 m out from the east end), they
