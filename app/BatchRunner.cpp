@@ -842,14 +842,15 @@ void BatchRunner::sayMissionNotes(const Plan& plan, const PlanningProblem& probl
     }
 }
 
-// A compared plan's warnings under its planner's name; those of the mission itself (the problem's notes),
-// which every plan carries, once and under none.
+// A compared plan's warnings under its planner's name; those of the mission itself (the problem's notes,
+// and the land beyond every aircraft's reach, which every planner on flights leaves out alike), once and
+// under none.
 void BatchRunner::sayComparedPlanWarnings(const Plan& plan, const PlanningProblem& problem,
                                           std::set<std::string>& saidOnce) {
     for (const PlanIssue& issue : plan.issues) {
         if (issue.severity != IssueSeverity::Warning)
             continue;
-        const bool ofTheMission = isOfTheMission(issue, problem);
+        const bool ofTheMission = isOfTheMission(issue, problem) || issue.code == "beyond-flight-reach";
         if (ofTheMission && !saidOnce.insert(issue.message).second)
             continue;
         const std::string prefix = std::exchange(plannerPrefix_, ofTheMission ? "" : plannerPrefix_);

@@ -265,8 +265,8 @@ void TestBatchEndToEnd::comparisonGivesTimesInTheField() {
     QCOMPARE(run.standardOutput.count(QStringLiteral("every robot cruises at 6 m/s")), 1);
 }
 
-// A warning of the mission itself (aircraft without a cruise speed), which every compared plan carries, is
-// said once and under no planner's name.
+// A warning of the mission itself (aircraft without a cruise speed, land beyond every drone's reach), which
+// every compared plan carries, is said once and under no planner's name.
 void TestBatchEndToEnd::aComparisonSaysTheMissionsWarningsOnce() {
     const auto run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "mcpp-mlct,darp",
                               "--vehicle", "multirotor", "--out", scratch_.filePath("compare-aircraft")});
@@ -275,6 +275,28 @@ void TestBatchEndToEnd::aComparisonSaysTheMissionsWarningsOnce() {
     QCOMPARE(run.standardError.count(warning), 1);
     QVERIFY(!run.standardError.contains(QStringLiteral("darp: aircraft fly")));
     QVERIFY(!run.standardError.contains(QStringLiteral("mcpp-mlct: aircraft fly")));
+    // The land beyond every drone's reach (3 min flights at 2 m/s work 150 m out), which both plans leave
+    // out alike, is said once too, under no name.
+    const auto drones =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--compare", "mcpp-mlct,darp", "--vehicle",
+                 "multirotor", "--cruise-speed", "2", "--flight-time", "3min", "--out",
+                 scratch_.filePath("compare-drones-reach")});
+    QVERIFY2(drones.exitCode == 0, qPrintable(drones.standardError));
+    const QString beyond = QStringLiteral("of passable land lies too far from every start for one flight");
+    QCOMPARE(drones.standardError.count(beyond), 1);
+    const QStringList lines = drones.standardError.split('\n').filter(beyond);
+    QCOMPARE(lines.size(), 1);
+    QVERIFY2(QRegularExpression(QStringLiteral("^mcpp: warning: [0-9]")).match(lines.front()).hasMatch(),
+             qPrintable(lines.front()));
+    for (const char* planner : {"mcpp-mlct", "darp"}) {
+        bool reported = false;
+        const auto report = readJsonObject(scratch_.filePath(
+            QStringLiteral("compare-drones-reach/%1/report.json").arg(QLatin1String(planner))));
+        for (const QJsonValue& issue : report.value("issues").toArray())
+            reported = reported ||
+                       issue.toObject().value("code").toString() == QStringLiteral("beyond-flight-reach");
+        QVERIFY2(reported, planner); // each plan's report still says it
+    }
 }
 
 // Robots of their own cruise speeds: MCPP-MLCT times each at its own and the mission's note says so, once;
