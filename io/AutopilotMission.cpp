@@ -207,11 +207,13 @@ class FlightClock {
     std::size_t last_ = 0;
 };
 
-// Legs split into pieces of at most a twentieth of a flight, so that a part can end part way along a leg
+// Legs split into pieces of at most a fortieth of a flight, so that a part can end part way along a leg
 // longer than what is left of a battery: a survey's straight legs run for kilometres, and a part ending
-// only at turns would lose up to a leg's flight to each cut, or not fit a flight at all.
+// only at turns would lose up to a leg's flight to each cut, or not fit a flight at all. A flight at the
+// edge of its working reach has a twentieth left (FlightLimits::workingReachMetres): a piece and the turns
+// at its ends fit it (pieces of a twentieth took parts there 13 s over a 20 min flight).
 void splitLongLegs(AutopilotMission& mission, double flightSeconds) {
-    constexpr double piecesPerFlight = 20.0;
+    constexpr double piecesPerFlight = 40.0;
     const double pieceSeconds = flightSeconds / piecesPerFlight;
     AutopilotMission split;
     for (std::size_t point = 0; point < mission.points.size(); ++point) {

@@ -28,8 +28,9 @@ struct FlightLimits {
     [[nodiscard]] bool makesTrips() const { return splitsPaths() && tripMetresPerSecond > 0.0; }
     // How far from its start one flight can work: infinite where its trips are not counted.
     [[nodiscard]] double reachMetres() const;
-    // How far from its start one flight can go and still work a twentieth of its time, the least piece of a
-    // leg a waypoint file's flight holds (a flight reaching farther would hold that piece and overrun).
+    // How far from its start one flight can go and still work a twentieth of its time: the least a waypoint
+    // file's flight holds, a piece of a leg (a fortieth of a flight) and the turns at its ends (a flight
+    // reaching farther would hold that piece and overrun).
     [[nodiscard]] double workingReachMetres() const;
     // The most seconds of planned path it can fly within `fieldSeconds` farther than `metres` from its start:
     // every flight working there spends the way out to that distance and back on it. 0 where no flight
