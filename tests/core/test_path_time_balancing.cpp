@@ -99,6 +99,33 @@ class PathTimeBalancingTest : public QObject {
         QVERIFY(PathTimeBalancing(coverage, 64).balance(split.graph, split.regions, paths, split.starts, {}) >
                 0);
     }
+
+    // A taker only takes what it may (an aircraft, cells within its reach): robot 1 may take column 6
+    // alone, so the cells it gets lie there, where even halves would give it columns 4 and 5 too.
+    void takersTakeOnlyWhatTheyMay() {
+        Split split(7);
+        const SpanningTreeCoverage coverage;
+        std::vector<CoveragePath> paths = coverage.plan(split.graph, split.regions, split.starts, {});
+        const std::vector<int> owner = split.regions.robotOfCell;
+        PathTimeBalancing balancing(coverage, 1'000'000);
+        const auto allowed = [&split](std::size_t robot, int cell) {
+            const int column = split.graph.cell(cell).column;
+            return robot == 0 || column >= 6;
+        };
+        balancing.setMayTake(allowed);
+        QVERIFY(balancing.balance(split.graph, split.regions, paths, split.starts, {}) > 0);
+        int taken = 0;
+        for (std::size_t id = 0; id < split.graph.size(); ++id) {
+            const int robot = split.regions.robotOfCell[id];
+            if (robot == owner[id])
+                continue;
+            ++taken;
+            QVERIFY2(allowed(static_cast<std::size_t>(robot), static_cast<int>(id)),
+                     qPrintable(QStringLiteral("cell %1 went to robot %2").arg(id).arg(robot)));
+        }
+        QVERIFY(taken > 0);
+        QVERIFY(test::regionIsConnected(split.graph, split.regions.robotOfCell, 1));
+    }
 };
 
 QTEST_GUILESS_MAIN(PathTimeBalancingTest)

@@ -421,9 +421,12 @@ class AutopilotMissionTest : public QObject {
             flown += part.seconds;
         }
         QVERIFY(std::abs(flown - 1000.0) < 1e-6);
+        // Pieces of at most a fortieth of a flight (7.5 s, 75 m): a flight at the edge of its working reach,
+        // a twentieth of its time left, holds one and the turns at its ends.
         for (std::size_t point = 1; point < mission.points.size(); ++point) {
             QVERIFY(!mission.changesSpeedAt(point));
             QCOMPARE(mission.points[point].y, 0.0);
+            QVERIFY(mission.points[point].x - mission.points[point - 1].x <= 75.0 + 1e-6);
         }
         // A flight long enough for the whole leg keeps it whole: no waypoint along it.
         rover.flightTimeSeconds = 1200.0;
