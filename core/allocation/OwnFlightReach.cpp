@@ -3,6 +3,7 @@
 #include "core/allocation/RegionReconnection.hpp"
 #include "core/model/LocalConnectivity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -40,8 +41,9 @@ OwnFlightReach::OwnFlightReach(std::vector<MapPoint> launchPoints, const std::ve
     for (std::size_t robot = 0; robot < launchPoints_.size(); ++robot) {
         const double reach = robot < flights.size() ? flights[robot].workingReachMetres()
                                                     : std::numeric_limits<double>::infinity();
-        // A reach too short to work at all is the land-beyond-reach check's to say, not a handover's.
-        reachMetres_.push_back(reach > 0.0 ? reach : std::numeric_limits<double>::infinity());
+        // A reach too short to work anywhere keeps the robot to its start cell.
+        reachMetres_.push_back(std::isnan(reach) ? std::numeric_limits<double>::infinity()
+                                                 : std::max(reach, 0.0));
         limits_ = limits_ || std::isfinite(reachMetres_.back());
     }
 }
@@ -50,9 +52,11 @@ bool OwnFlightReach::reaches(std::size_t robot, const Cell& cell) const {
     if (robot >= reachMetres_.size() || !std::isfinite(reachMetres_[robot]))
         return true;
     const MapPoint& launch = launchPoints_[robot];
-    const double reach = reachMetres_[robot];
+    const double reachSquared = reachMetres_[robot] * reachMetres_[robot];
     const auto within = [&](const MapPoint& point) {
-        return std::hypot(point.x - launch.x, point.y - launch.y) <= reach;
+        const double east = point.x - launch.x;
+        const double north = point.y - launch.y;
+        return east * east + north * north <= reachSquared;
     };
     if (cell.freeSubCellCount() == 0)
         return within({cell.centreX(), cell.centreY()});
@@ -65,6 +69,24 @@ bool OwnFlightReach::reaches(std::size_t robot, const Cell& cell) const {
 int OwnFlightReach::handOver(const CellGraph& graph, RegionAllocation& regions) const {
     if (!limits_ || regions.robotOfCell.size() != graph.size())
         return 0;
+    // Pieces a region loses its way to join the neighbour that reaches them first, in reach or not: a few
+    // rounds hand on what that leaves beyond its new robot's reach.
+    constexpr int rounds = 3;
+    int handed = 0;
+    for (int round = 0; round < rounds; ++round) {
+        const int handedInRound = handOverOnce(graph, regions);
+        handed += handedInRound;
+        if (handedInRound == 0)
+            break;
+    }
+    if (handed > 0) {
+        countCosts(graph, regions);
+        topUp(graph, regions);
+    }
+    return handed;
+}
+
+int OwnFlightReach::handOverOnce(const CellGraph& graph, RegionAllocation& regions) const {
     const std::vector<char> waiting = beyondOwnReach(*this, graph, regions);
     std::vector<int> taker(graph.size(), -1);
     // Grown from the regions' own cells within reach into the waiting cells, one step at a time.
@@ -100,8 +122,6 @@ int OwnFlightReach::handOver(const CellGraph& graph, RegionAllocation& regions) 
     // A region whose far cells went may fall apart where they joined it: its pieces cut off from its start
     // join a neighbour.
     reconnectRegions(graph, regions.startCell, regions.robotOfCell);
-    countCosts(graph, regions);
-    topUp(graph, regions);
     return handed;
 }
 
@@ -125,7 +145,7 @@ int OwnFlightReach::topUp(const CellGraph& graph, RegionAllocation& regions) con
         const double fair = inversePaces > 0.0 ? cost / inversePaces : 0.0;
         std::vector<std::size_t> order(robots);
         std::iota(order.begin(), order.end(), std::size_t{0});
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
             return pacedCost(regions, a) < pacedCost(regions, b);
         });
         int takenInPass = 0;
@@ -148,10 +168,16 @@ int OwnFlightReach::takeWithinReach(const CellGraph& graph, RegionAllocation& re
     constexpr std::size_t searchLimit = 256;
     std::vector<int>& owner = regions.robotOfCell;
     const int me = static_cast<int>(taker);
-    std::deque<int> frontier;
+    std::deque<int> frontier; // its cells beside another robot's, then those it takes
     for (std::size_t id = 0; id < graph.size(); ++id)
-        if (owner[id] == me)
-            frontier.push_back(static_cast<int>(id));
+        if (owner[id] == me) {
+            const auto neighbours = graph.neighbours(static_cast<int>(id));
+            if (std::any_of(neighbours.begin(), neighbours.end(), [&](int next) {
+                    const int other = owner[static_cast<std::size_t>(next)];
+                    return other >= 0 && other != me;
+                }))
+                frontier.push_back(static_cast<int>(id));
+        }
     int taken = 0;
     while (!frontier.empty() && pacedCost(regions, taker) < fair) {
         const int from = frontier.front();

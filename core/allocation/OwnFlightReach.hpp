@@ -39,6 +39,8 @@ class OwnFlightReach {
     int handOver(const CellGraph& graph, RegionAllocation& regions) const;
 
   private:
+    // One round of the handover, regions made whole again after it.
+    int handOverOnce(const CellGraph& graph, RegionAllocation& regions) const;
     // Robots below the fair share (in their paced costs) take cells within their reach from neighbours above
     // it, nearest their regions first, while the giver stays whole and above it. Returns the cells taken.
     int topUp(const CellGraph& graph, RegionAllocation& regions) const;

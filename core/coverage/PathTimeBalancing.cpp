@@ -159,13 +159,14 @@ class Balancer {
         int best = -1;
         int bestContacts = 0;
         for (int cell : cells_[static_cast<std::size_t>(giver)]) {
-            if (cell == regions_.startCell[static_cast<std::size_t>(giver)] ||
-                (mayTake_ && !mayTake_(static_cast<std::size_t>(receiver), cell)))
+            if (cell == regions_.startCell[static_cast<std::size_t>(giver)])
                 continue;
             int contacts = 0;
             for (int neighbour : graph_.neighbours(cell))
                 contacts += owner[static_cast<std::size_t>(neighbour)] == receiver ? 1 : 0;
-            if (contacts > bestContacts && connectivity_.canRemove(cell, owner, searchLimit)) {
+            if (contacts > bestContacts &&
+                (!mayTake_ || mayTake_(static_cast<std::size_t>(receiver), cell)) &&
+                connectivity_.canRemove(cell, owner, searchLimit)) {
                 best = cell;
                 bestContacts = contacts;
             }

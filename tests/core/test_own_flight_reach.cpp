@@ -127,6 +127,19 @@ class OwnFlightReachTest : public QObject {
                                 .arg(strip.regions.costSeconds[1])));
     }
 
+    // A drone whose flights leave no time to work beyond 2.25 m (10 s of a 110 s flight after its climb and
+    // descent) keeps only its start cell; the rover beside it takes the rest.
+    void aDroneThatCannotWorkKeepsOnlyItsStart() {
+        Strip strip = divided(30);
+        const OwnFlightReach reach(strip.problem.starts,
+                                   {FlightLimits{110.0, 100.0, 0.0, 1.0, 1.0}, FlightLimits{}});
+        QVERIFY(reach.handOver(strip.graph, strip.regions) > 0);
+        const auto held = std::count(strip.regions.robotOfCell.begin(), strip.regions.robotOfCell.end(), 0);
+        QCOMPARE(held, 1);
+        QCOMPARE(strip.regions.robotOfCell[static_cast<std::size_t>(strip.regions.startCell[0])], 0);
+        QVERIFY(regionsWhole(strip.graph, strip.regions));
+    }
+
     // Where the other robot's flights do not reach those cells either (21.25 m out from the east end), they
     // stay, as do its own beyond its reach: the division is left as it was.
     void cellsNoOtherRobotReachesStay() {

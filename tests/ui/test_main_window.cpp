@@ -1255,9 +1255,10 @@ class TestMainWindow : public QObject {
             QStringLiteral("darp"));
     }
 
-    // Drones whose flights cannot reach all of their regions: each compared plan's row counts the flights
-    // too long among its warnings and names them when hovered, Messages says them once a plan under its
-    // planner's name, and showing the plan does not say them again.
+    // Drones whose flights cannot reach all of the regions DARP gives them: its row counts the flights too
+    // long among its warnings and names them when hovered (MCPP-MLCT's, which keeps each drone within its
+    // reach, has none), Messages says them once under its planner's name, and showing the plan does not
+    // say them again.
     void comparedPlansSayFlightsTheirBatteriesCannotFly() {
         const std::unique_ptr<ui::MainWindow> owned = sampleWindow();
         if (!owned)
