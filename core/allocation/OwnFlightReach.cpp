@@ -1,5 +1,6 @@
 #include "core/allocation/OwnFlightReach.hpp"
 
+#include "core/allocation/RegionCosts.hpp"
 #include "core/allocation/RegionReconnection.hpp"
 #include "core/model/LocalConnectivity.hpp"
 
@@ -24,14 +25,6 @@ std::vector<char> beyondOwnReach(const OwnFlightReach& reach, const CellGraph& g
             waiting[id] = 1;
     }
     return waiting;
-}
-
-void countCosts(const CellGraph& graph, RegionAllocation& regions) {
-    regions.costSeconds.assign(regions.startCell.size(), 0.0);
-    for (std::size_t id = 0; id < graph.size(); ++id)
-        if (const int robot = regions.robotOfCell[id]; robot >= 0)
-            regions.costSeconds[static_cast<std::size_t>(robot)] +=
-                graph.cell(static_cast<int>(id)).coverSeconds();
 }
 
 } // namespace
@@ -80,7 +73,7 @@ int OwnFlightReach::handOver(const CellGraph& graph, RegionAllocation& regions) 
             break;
     }
     if (handed > 0) {
-        countCosts(graph, regions);
+        regions.costSeconds = regionCosts(graph, regions.robotOfCell, regions.startCell.size());
         topUp(graph, regions);
     }
     return handed;

@@ -40,21 +40,14 @@ Strip divided(int westColumns) {
     return strip;
 }
 
-// Whether every region's cells are reached from its start through the region.
+// Whether every region is one piece holding its start.
 bool regionsWhole(const CellGraph& graph, const RegionAllocation& regions) {
-    std::vector<char> reached(graph.size(), 0);
-    for (std::size_t robot = 0; robot < regions.startCell.size(); ++robot) {
-        std::vector<int> queue{regions.startCell[robot]};
-        reached[static_cast<std::size_t>(queue.front())] = 1;
-        for (std::size_t head = 0; head < queue.size(); ++head)
-            for (const int next : graph.neighbours(queue[head]))
-                if (reached[static_cast<std::size_t>(next)] == 0 &&
-                    regions.robotOfCell[static_cast<std::size_t>(next)] == static_cast<int>(robot)) {
-                    reached[static_cast<std::size_t>(next)] = 1;
-                    queue.push_back(next);
-                }
-    }
-    return std::all_of(reached.begin(), reached.end(), [](char cell) { return cell != 0; });
+    for (std::size_t robot = 0; robot < regions.startCell.size(); ++robot)
+        if (regions.robotOfCell[static_cast<std::size_t>(regions.startCell[robot])] !=
+                static_cast<int>(robot) ||
+            !test::regionIsConnected(graph, regions.robotOfCell, static_cast<int>(robot)))
+            return false;
+    return true;
 }
 
 } // namespace
