@@ -919,7 +919,11 @@ void BatchRunner::printComparisonRows(const std::vector<io::ComparisonRow>& rows
         // Where flights split the missions, the field team waits for the last robot home.
         output_ << (inTheField ? ", the last robot home after " : ", makespan ")
                 << formatDuration(io::doneAfterSeconds(row));
-        if (io::timedUnlikeTheOthers(row, rows))
+        if (io::fliesPastItsBatteries(row, rows))
+            output_ << " with " << *row.flightsOverBattery
+                    << (*row.flightsOverBattery == 1 ? " flight" : " flights")
+                    << " longer than a battery (not set beside plans whose flights fit)";
+        else if (io::timedUnlikeTheOthers(row, rows))
             output_ << " at the class table's speeds (not set beside plans keeping the robots' own)";
         // A plan covering less is not timed against one covering the most: smaller, not quicker.
         if (first == nullptr)

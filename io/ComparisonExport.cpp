@@ -59,6 +59,8 @@ std::string rankedApart(const ComparisonRow& row, const std::vector<ComparisonRo
     switch (readingGroup(row, rows)) {
     case ReadingGroup::OwnSpeedsIgnored:
         return "own_speeds_ignored";
+    case ReadingGroup::FlightsOverBattery:
+        return "flights_over_battery";
     case ReadingGroup::CoversLess:
         return "covers_less";
     default:

@@ -18,6 +18,13 @@ bool someKeepOwnSpeeds(const std::vector<ComparisonRow>& rows, double most) {
     });
 }
 
+// Whether some plan covering the most flies every flight of its waypoint files within a battery.
+bool someFlyWithinBatteries(const std::vector<ComparisonRow>& rows, double most) {
+    return std::any_of(rows.begin(), rows.end(), [most](const ComparisonRow& row) {
+        return planned(row) && row.flightsOverBattery == std::size_t{0} && !coversLessThanMost(row, most);
+    });
+}
+
 } // namespace
 
 double doneAfterSeconds(const ComparisonRow& row) {
@@ -42,11 +49,19 @@ bool timedUnlikeTheOthers(const ComparisonRow& row, const std::vector<Comparison
     return planned(row) && row.metrics.ownSpeedsIgnored && someKeepOwnSpeeds(rows, mostCovered(rows));
 }
 
+bool fliesPastItsBatteries(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
+    const double most = mostCovered(rows);
+    return planned(row) && row.flightsOverBattery.value_or(0) > 0 && !coversLessThanMost(row, most) &&
+           someFlyWithinBatteries(rows, most);
+}
+
 ReadingGroup readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
     switch (row.outcome) {
     case ComparisonRow::Outcome::Planned:
         if (coversLessThanMost(row, mostCovered(rows)))
             return ReadingGroup::CoversLess;
+        if (fliesPastItsBatteries(row, rows))
+            return ReadingGroup::FlightsOverBattery;
         return timedUnlikeTheOthers(row, rows) ? ReadingGroup::OwnSpeedsIgnored : ReadingGroup::TimedAlike;
     case ComparisonRow::Outcome::Failed:
         return ReadingGroup::Failed;

@@ -26,10 +26,16 @@ inline constexpr double coverageShortfall = 0.005;
 // keeps their own (PlanMetrics::ownSpeedsIgnored): its times are not to be set beside that plan's.
 [[nodiscard]] bool timedUnlikeTheOthers(const ComparisonRow& row, const std::vector<ComparisonRow>& rows);
 
+// Whether a planned row covering the most has waypoint files with flights longer than a battery where
+// another plan covering the most flies none (ComparisonRow::flightsOverBattery): its time done is that of
+// flights no drone can fly, not to be set beside that plan's.
+[[nodiscard]] bool fliesPastItsBatteries(const ComparisonRow& row, const std::vector<ComparisonRow>& rows);
+
 // Where a row is read, in this order: the plans covering the most and timed like the others first.
 enum class ReadingGroup {
-    TimedAlike,       // planned, covering the most, timed like the others: ranked by time done
-    OwnSpeedsIgnored, // planned at the class table's speeds where others keep the robots' own
+    TimedAlike,         // planned, covering the most, timed like the others: ranked by time done
+    OwnSpeedsIgnored,   // planned at the class table's speeds where others keep the robots' own
+    FlightsOverBattery, // with flights longer than a battery where another plan has none
     CoversLess,       // planned, covering less than the most by more than coverageShortfall
     Failed,
     Skipped,

@@ -172,6 +172,8 @@ QString rankedApartNote(io::ReadingGroup readingGroup) {
     switch (readingGroup) {
     case io::ReadingGroup::OwnSpeedsIgnored:
         return QStringLiteral(": at the class table's speeds");
+    case io::ReadingGroup::FlightsOverBattery:
+        return QStringLiteral(": flights too long");
     case io::ReadingGroup::CoversLess:
         return QStringLiteral(": covers less");
     default:

@@ -40,8 +40,9 @@ class NumberItem : public QTableWidgetItem {
 };
 
 // A time sorted first by its plan's reading group (io::readingGroup: plans timed unlike the others, then
-// those covering less than the most, after the others; a descending sort turns the whole order round): the
-// soonest done among those that do the whole job comes first, as batch mode's summary lists them.
+// those flying flights longer than a battery, then those covering less than the most, after the others; a
+// descending sort turns the whole order round): the soonest done among those that do the whole job comes
+// first, as batch mode's summary lists them.
 class TimeItem : public NumberItem {
   public:
     bool operator<(const QTableWidgetItem& other) const override {
@@ -122,8 +123,9 @@ ComparisonPanel::ComparisonPanel(QWidget* parent) : QWidget(parent) {
             "for a plan not timed in the field, its makespan, greyed")},
         {tr("x 1st"),
          tr("Time done divided by the first plan's (in bold): how much longer the team waits with this one; "
-            "none for a plan covering less than the most, or one timing its robots at the class table's "
-            "speeds where the others keep their own (sorted after them)")},
+            "none for a plan covering less than the most, one whose waypoint files hold flights longer than "
+            "a battery where another plan's all fit, or one timing its robots at the class table's speeds "
+            "where the others keep their own (sorted after them)")},
         {tr("Turns"), tr("Turns of all robots together")},
         {tr("Ratio"),
          tr("Makespan divided by the plan's own lower bound, which counts its own cells and turns: near "

@@ -22,8 +22,8 @@ namespace {
 
 // What a plan's waypoint files would warn of; none once cancelled, or where working it out fails (the plan
 // stands: its files are measured again when it is shown).
-std::vector<std::string> fileWarningsOf(const Plan* plan, const FileWarnings& fileWarnings,
-                                        const std::atomic<bool>& cancelled) {
+WaypointFileFindings fileWarningsOf(const Plan* plan, const FileWarnings& fileWarnings,
+                                    const std::atomic<bool>& cancelled) {
     if (plan == nullptr || !fileWarnings || cancelled.load())
         return {};
     try {
@@ -127,9 +127,11 @@ bool ComparisonRunner::start(PlanningProblem problem, std::vector<PlannerChoice>
                     row.message = error.what();
                 }
             }
+            WaypointFileFindings findings = fileWarningsOf(plan.get(), fileWarnings, *cancelFlag);
+            row.flightsOverBattery = findings.flightsOverBattery; // ranks it as batch mode does
             outcome.rows.push_back(row);
             outcome.errors.push_back(refused);
-            outcome.fileWarnings.push_back(fileWarningsOf(plan.get(), fileWarnings, *cancelFlag));
+            outcome.fileWarnings.push_back(std::move(findings.warnings));
             outcome.plans.push_back(plan);
             if (index + 1 < planners)
                 QMetaObject::invokeMethod(

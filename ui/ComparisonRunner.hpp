@@ -34,8 +34,15 @@ struct ComparisonOutcome {
     [[nodiscard]] std::vector<std::string> warningsOf(std::size_t row) const;
 };
 
-// What a plan's waypoint files would warn of, worked out on the comparison's thread.
-using FileWarnings = std::function<std::vector<std::string>(const Plan&)>;
+// What a plan's waypoint files would warn of, and how many of their flights are longer than a battery
+// (ComparisonRow::flightsOverBattery: none where no robot has a flight time).
+struct WaypointFileFindings {
+    std::vector<std::string> warnings;
+    std::optional<std::size_t> flightsOverBattery;
+};
+
+// Those findings, worked out on the comparison's thread.
+using FileWarnings = std::function<WaypointFileFindings(const Plan&)>;
 
 // Runs several planners on one problem, one after another on a worker thread, so the window stays
 // responsive; progress names the planner. cancel() stops the running planner and skips the rest.

@@ -1067,10 +1067,15 @@ FileWarnings MainWindow::waypointFileWarnings() const {
             if (robot < sizes.size())
                 sizes[robot] = io::missionSize(path, plan.cells, vehicles[robot], settings);
         }
-        std::vector<std::string> warnings;
+        WaypointFileFindings findings;
         for (const QString& warning : ResultsPanel::flightsTooLongWarnings(sizes, vehicles, names))
-            warnings.push_back(warning.toStdString());
-        return warnings;
+            findings.warnings.push_back(warning.toStdString());
+        std::size_t over = 0;
+        for (std::size_t robot = 0; robot < sizes.size(); ++robot)
+            if (vehicles[robot].flightTimeSeconds > 0.0)
+                over += sizes[robot].partsOverFlightTime;
+        findings.flightsOverBattery = over;
+        return findings;
     };
 }
 

@@ -1187,6 +1187,28 @@ void TestBatchEndToEnd::outputsWritesOnlyWhatIsAsked() {
     QVERIFY2(shared.exitCode == 0, qPrintable(shared.standardError));
     QVERIFY2(shared.standardError.contains(tooLong), qPrintable(shared.standardError));
     QVERIFY2(shared.standardOutput.contains(tripsLeftOut), qPrintable(shared.standardOutput));
+    // Compared, DARP's plan reads as no drone can fly it: after MCPP-MLCT's, whatever its time, and said why.
+    const QString comparedPath = scratch_.filePath(QStringLiteral("mixed-flights-compared"));
+    const auto comparedRun =
+        runMcpp({"--batch", mixedPath, "--compare", "darp,mcpp-mlct", "--outputs", "qgc-plan", "--out",
+                 comparedPath});
+    QVERIFY2(comparedRun.exitCode == 0, qPrintable(comparedRun.standardError));
+    QVERIFY2(comparedRun.standardOutput.contains(QStringLiteral("mcpp:   1. mcpp-mlct: ")),
+             qPrintable(comparedRun.standardOutput));
+    const QStringList darpLine =
+        comparedRun.standardOutput.split('\n').filter(QStringLiteral("mcpp:   2. darp: "));
+    QCOMPARE(darpLine.size(), 1);
+    QVERIFY2(darpLine.front().contains(QStringLiteral(" longer than a battery (not set beside plans whose "
+                                                      "flights fit)")),
+             qPrintable(darpLine.front()));
+    const auto rows =
+        readJsonObject(QDir(comparedPath).filePath("comparison.json")).value("planners").toArray();
+    QCOMPARE(rows.size(), 2);
+    QCOMPARE(rows.at(0).toObject().value("ranked_apart").toString(), QStringLiteral("flights_over_battery"));
+    QCOMPARE(rows.at(0).toObject().value("rank").toInt(), 2);
+    QVERIFY(rows.at(0).toObject().value("flights_over_battery").toInt() > 0);
+    QCOMPARE(rows.at(1).toObject().value("flights_over_battery").toInt(-1), 0);
+    QCOMPARE(rows.at(1).toObject().value("rank").toInt(), 1);
 }
 
 // --vehicle, --altitude, --cruise-speed, --fov-scale, --flight-time and --turnaround: the plan's times are at

@@ -52,6 +52,7 @@ class TestComparisonRanking : public QObject {
     void ranksSkipRowsThatDidNotPlan();
     void eachPlanIsTimedAgainstTheFirst();
     void plansAtTheClassTablesSpeedsComeAfterThoseKeepingOwnSpeeds();
+    void plansWithFlightsPastTheirBatteriesComeAfterThoseWhoseFlightsFit();
     void theExportsSayWhyAPlanIsRankedApart();
 };
 
@@ -151,6 +152,38 @@ void TestComparisonRanking::plansAtTheClassTablesSpeedsComeAfterThoseKeepingOwnS
     QCOMPARE(namesInOrder({classSpeeds, alsoClassSpeeds}), (std::vector<std::string>{"mstc", "mdstc"}));
 }
 
+// A plan whose waypoint files hold flights longer than a battery reads sooner done only because no drone can
+// fly them: beside a plan whose flights all fit it comes after it, untimed against the first, even after a
+// plan at the class table's speeds. Where every plan has such flights (or none has a flight time), time
+// decides again; a plan covering less still comes last.
+void TestComparisonRanking::plansWithFlightsPastTheirBatteriesComeAfterThoseWhoseFlightsFit() {
+    ComparisonRow tooLong = plannedRow("darp", 0.999, 100.0);
+    tooLong.flightsOverBattery = 162;
+    ComparisonRow fits = plannedRow("mcpp-mlct", 0.999, 140.0);
+    fits.flightsOverBattery = 0;
+    ComparisonRow classSpeeds = plannedRow("mdstc", 0.999, 120.0);
+    classSpeeds.metrics.ownSpeedsIgnored = true;
+    classSpeeds.flightsOverBattery = 0;
+    ComparisonRow smaller = plannedRow("wavefront-battery", 0.5, 50.0);
+    smaller.flightsOverBattery = 0;
+    const std::vector<ComparisonRow> rows{tooLong, fits, classSpeeds, smaller};
+    QVERIFY(io::fliesPastItsBatteries(rows[0], rows));
+    QVERIFY(!io::fliesPastItsBatteries(rows[1], rows));
+    QVERIFY(io::readingGroup(rows[0], rows) == io::ReadingGroup::FlightsOverBattery);
+    QCOMPARE(namesInOrder(rows), (std::vector<std::string>{"mcpp-mlct", "mdstc", "darp", "wavefront-battery"}));
+    QCOMPARE(io::ranksOf(rows), (std::vector<int>{3, 1, 2, 4}));
+    QCOMPARE(io::timesTheFirst(rows), (std::vector<double>{0.0, 1.0, 0.0, 0.0}));
+    // Only a plan covering the most whose flights fit sets the others apart: beside one covering less, or
+    // beside other plans with such flights, time decides.
+    QVERIFY(!io::fliesPastItsBatteries(tooLong, {tooLong, smaller}));
+    ComparisonRow alsoTooLong = plannedRow("mstc", 0.999, 90.0);
+    alsoTooLong.flightsOverBattery = 3;
+    QCOMPARE(namesInOrder({tooLong, alsoTooLong}), (std::vector<std::string>{"mstc", "darp"}));
+    // Without flight times nothing is counted, and nothing is set apart.
+    ComparisonRow untimed = plannedRow("darp", 0.999, 100.0);
+    QVERIFY(!io::fliesPastItsBatteries(untimed, {untimed, fits}));
+}
+
 // comparison.csv and .json say why a plan with the shorter makespan is ranked after the first, as batch
 // mode's summary does: a script reading only rank and makespan would otherwise take it for a mistake.
 void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
@@ -174,7 +207,8 @@ void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
     QCOMPARE(lines.size(), 5);
     const int column = lines[0].split(',').indexOf("ranked_apart");
     QVERIFY(column >= 0);
-    const QStringList expected{"own_speeds_ignored", "", "covers_less", ""};
+    // farFlights' flights overrun a battery where mdstc's all fit.
+    const QStringList expected{"own_speeds_ignored", "flights_over_battery", "covers_less", ""};
     for (int row = 0; row < 4; ++row)
         QCOMPARE(lines[row + 1].split(',').at(column), expected[row]);
     const int flights = lines[0].split(',').indexOf("flights_over_battery");
@@ -189,7 +223,7 @@ void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
     QCOMPARE(planners.size(), 4);
     for (int row = 0; row < 4; ++row)
         QCOMPARE(planners[row].toObject().value("ranked_apart").toString(), expected[row]);
-    QVERIFY(!planners[1].toObject().contains("ranked_apart"));
+    QVERIFY(!planners[3].toObject().contains("ranked_apart"));
     QCOMPARE(planners[1].toObject().value("flights_over_battery").toInt(), 124);
     QVERIFY(!planners[2].toObject().contains("flights_over_battery"));
 }

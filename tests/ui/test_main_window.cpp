@@ -1257,7 +1257,7 @@ class TestMainWindow : public QObject {
 
     // Drones whose flights cannot reach all of the regions DARP gives them: its row counts the flights too
     // long among its warnings and names them when hovered (MCPP-MLCT's, which keeps each drone within its
-    // reach, has none), Messages says them once under its planner's name, and showing the plan does not
+    // reach, has none and is ranked first), Messages says them once under its planner's name, and showing the plan does not
     // say them again.
     void comparedPlansSayFlightsTheirBatteriesCannotFly() {
         const std::unique_ptr<ui::MainWindow> owned = sampleWindow();
@@ -1289,6 +1289,8 @@ class TestMainWindow : public QObject {
             QVERIFY2(state->text().contains(QStringLiteral("warning")), qPrintable(state->text()));
             const bool darp = row == window.comparisonPanel()->rowOfPlanner("darp");
             QVERIFY2(state->toolTip().contains(tooLong) == darp, qPrintable(state->toolTip()));
+            // Ranked as batch mode ranks them: DARP's flights no drone can fly, MCPP-MLCT's first (in bold).
+            QCOMPARE(table->item(row, 0)->font().bold(), !darp);
         }
         const auto flightWarnings = [&window, &tooLong](const QString& planner) {
             return window.messageLog()
