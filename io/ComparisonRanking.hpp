@@ -36,7 +36,7 @@ enum class ReadingGroup {
     TimedAlike,         // planned, covering the most, timed like the others: ranked by time done
     OwnSpeedsIgnored,   // planned at the class table's speeds where others keep the robots' own
     FlightsOverBattery, // with flights longer than a battery where another plan has none
-    CoversLess,       // planned, covering less than the most by more than coverageShortfall
+    CoversLess,         // planned, covering less than the most by more than coverageShortfall
     Failed,
     Skipped,
 };

@@ -1189,9 +1189,8 @@ void TestBatchEndToEnd::outputsWritesOnlyWhatIsAsked() {
     QVERIFY2(shared.standardOutput.contains(tripsLeftOut), qPrintable(shared.standardOutput));
     // Compared, DARP's plan reads as no drone can fly it: after MCPP-MLCT's, whatever its time, and said why.
     const QString comparedPath = scratch_.filePath(QStringLiteral("mixed-flights-compared"));
-    const auto comparedRun =
-        runMcpp({"--batch", mixedPath, "--compare", "darp,mcpp-mlct", "--outputs", "qgc-plan", "--out",
-                 comparedPath});
+    const auto comparedRun = runMcpp({"--batch", mixedPath, "--compare", "darp,mcpp-mlct", "--outputs",
+                                      "qgc-plan", "--out", comparedPath});
     QVERIFY2(comparedRun.exitCode == 0, qPrintable(comparedRun.standardError));
     QVERIFY2(comparedRun.standardOutput.contains(QStringLiteral("mcpp:   1. mcpp-mlct: ")),
              qPrintable(comparedRun.standardOutput));

@@ -170,7 +170,8 @@ void TestComparisonRanking::plansWithFlightsPastTheirBatteriesComeAfterThoseWhos
     QVERIFY(io::fliesPastItsBatteries(rows[0], rows));
     QVERIFY(!io::fliesPastItsBatteries(rows[1], rows));
     QVERIFY(io::readingGroup(rows[0], rows) == io::ReadingGroup::FlightsOverBattery);
-    QCOMPARE(namesInOrder(rows), (std::vector<std::string>{"mcpp-mlct", "mdstc", "darp", "wavefront-battery"}));
+    QCOMPARE(namesInOrder(rows),
+             (std::vector<std::string>{"mcpp-mlct", "mdstc", "darp", "wavefront-battery"}));
     QCOMPARE(io::ranksOf(rows), (std::vector<int>{3, 1, 2, 4}));
     QCOMPARE(io::timesTheFirst(rows), (std::vector<double>{0.0, 1.0, 0.0, 0.0}));
     // Only a plan covering the most whose flights fit sets the others apart: beside one covering less, or

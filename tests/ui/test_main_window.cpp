@@ -1257,8 +1257,8 @@ class TestMainWindow : public QObject {
 
     // Drones whose flights cannot reach all of the regions DARP gives them: its row counts the flights too
     // long among its warnings and names them when hovered (MCPP-MLCT's, which keeps each drone within its
-    // reach, has none and is ranked first), Messages says them once under its planner's name, and showing the plan does not
-    // say them again.
+    // reach, has none and is ranked first), Messages says them once under its planner's name, and showing the
+    // plan does not say them again.
     void comparedPlansSayFlightsTheirBatteriesCannotFly() {
         const std::unique_ptr<ui::MainWindow> owned = sampleWindow();
         if (!owned)
