@@ -154,6 +154,40 @@ std::optional<LandBeyondReach> landBeyondEveryReach(const PlanningProblem& probl
     return land;
 }
 
+namespace {
+
+// Whether a pixel of the cell's square or the ring of pixels round it is flagged beyond reach.
+bool cellTouchesLandBeyondReach(const ClassGrid& grid, const Cell& cell) {
+    const auto column = [&grid](double x) {
+        return static_cast<int>(std::floor((x - grid.originX) / grid.pixelWidth));
+    };
+    const auto row = [&grid](double y) {
+        return static_cast<int>(std::floor((grid.originY - y) / grid.pixelHeight));
+    };
+    // The square's pixels are those whose centres it holds; one more on each side is the ring.
+    const int firstColumn = std::max(column(cell.minX + grid.pixelWidth / 2.0) - 1, 0);
+    const int lastColumn = std::min(column(cell.maxX() - grid.pixelWidth / 2.0) + 1, grid.columns - 1);
+    const int firstRow = std::max(row(cell.maxY() - grid.pixelHeight / 2.0) - 1, 0);
+    const int lastRow = std::min(row(cell.minY + grid.pixelHeight / 2.0) + 1, grid.rows - 1);
+    for (int r = firstRow; r <= lastRow; ++r)
+        for (int c = firstColumn; c <= lastColumn; ++c)
+            if (grid.outside[grid.index(c, r)] == ClassGrid::beyondFlightReach)
+                return true;
+    return false;
+}
+
+} // namespace
+
+bool coversNextToLandBeyondReach(const ClassGrid& grid, const CellGraph& cells,
+                                 const std::vector<int>& robotOfCell, int robot) {
+    if (grid.outside.size() != grid.values.size())
+        return false;
+    for (std::size_t id = 0; id < cells.size() && id < robotOfCell.size(); ++id)
+        if (robotOfCell[id] == robot && cellTouchesLandBeyondReach(grid, cells.cell(static_cast<int>(id))))
+            return true;
+    return false;
+}
+
 std::string landBeyondReachMessage(const LandBeyondReach& land) {
     const bool oneReach = formatDistance(land.leastReachMetres) == formatDistance(land.mostReachMetres);
     const std::string reach =

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/model/CellGraph.hpp"
 #include "core/model/MapPoint.hpp"
 #include "core/model/PlanningProblem.hpp"
 
@@ -29,6 +30,12 @@ struct LandBeyondReach {
 // no passable land lies beyond. A pixel counts as reached where the whole cell it may end up in (two of its
 // class's fields of view a side) lies within a robot's reach.
 [[nodiscard]] std::optional<LandBeyondReach> landBeyondEveryReach(const PlanningProblem& problem);
+
+// Whether a cell the robot covers (robotOfCell) lies on or next to a pixel of the grid flagged
+// ClassGrid::beyondFlightReach: a robot confined to a part of the map may be cut off by that land's edge,
+// not by impassable land.
+[[nodiscard]] bool coversNextToLandBeyondReach(const ClassGrid& grid, const CellGraph& cells,
+                                               const std::vector<int>& robotOfCell, int robot);
 
 // What a plan leaving that land out tells its readers.
 [[nodiscard]] std::string landBeyondReachMessage(const LandBeyondReach& land);

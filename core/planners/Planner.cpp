@@ -131,20 +131,25 @@ std::string chargersIgnoredMessage(const PlannerDescription& planner) {
 }
 
 // idle: the part holds under half an even share of the land per robot in it (`share` of one), so the robot
-// stands idle most of the mission.
-std::string confinedRobotMessage(const ConfinedRobot& confined, double share, bool idle) {
+// stands idle most of the mission. byReach: the part borders the land left out beyond every flight's reach,
+// whose edge, not the land cover, may be what cuts it off.
+std::string confinedRobotMessage(const ConfinedRobot& confined, double share, bool idle, bool byReach) {
     const std::string others =
         confined.robotsInPocket > 1
             ? " with " + std::to_string(confined.robotsInPocket - 1) + " other robot(s)"
             : "";
+    const std::string advice =
+        byReach ? "start it nearer the other robots, or give it a longer flight time or a faster cruise "
+                  "speed, so that its flights reach their land and share the work"
+                : "start it in the largest part to share the work";
     return "robot " + std::to_string(confined.robot + 1) +
            " starts in a part of the map cut off from the rest (" +
            formatArea(confined.pocketAreaSquareMetres) +
-           (idle ? ", " + formatPercent(share) + " of an even share of the land" : std::string()) +
-           ") and can cover only that part" + others +
+           (idle ? ", " + formatPercent(share) + " of an even share of the land" : std::string()) + ")" +
+           (byReach ? " by the land beyond every flight's reach or by impassable land," : std::string()) +
+           " and can cover only that part" + others +
            "; the lower bound counts each part with its own robots" +
-           (idle ? "; it stands idle most of the mission: start it in the largest part to share the work"
-                 : std::string());
+           (idle ? "; it stands idle most of the mission: " + advice : std::string());
 }
 
 // "robot 3", "robots 3 and 4", "robots 3, 4 and 10" (counted from 1); past a dozen, "and 40 more".
@@ -651,8 +656,11 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
                                        static_cast<double>(std::max(confined.robotsInPocket, 1)) / evenShare
                                  : 1.0;
         const bool idle = share < 0.5;
+        const bool byReach =
+            leftOutBeyondReach(problem.grid) &&
+            coversNextToLandBeyondReach(problem.grid, plan.cells, plan.regions.robotOfCell, confined.robot);
         planningRun.addIssue(idle ? IssueSeverity::Warning : IssueSeverity::Information, "confined-robot",
-                             confinedRobotMessage(confined, share, idle));
+                             confinedRobotMessage(confined, share, idle, byReach));
     }
     // Robots slowed or stopped by events are meant to do less: their plan is uneven by design.
     const bool playsEvents = planner.simulatesEvents && !problem.events.empty();

@@ -132,6 +132,48 @@ class LandBeyondReachTest : public QObject {
         QVERIFY(issueCoded(plan, "beyond-flight-reach") != nullptr);
     }
 
+    // A drone of short flights at the west end, one of long flights at the east end: the land between them
+    // lies beyond both reaches, so the west drone is confined to the little it reaches. The warning names the
+    // reach's edge as what may cut it off and asks for a nearer start or longer flights, not for a start in
+    // the largest part (which it could not fly from its own start). A wall of water in the same place says
+    // the usual words.
+    void aDroneConfinedByTheReachIsToldWhy() {
+        PlanningProblem problem = westEndStrip();
+        problem.starts.push_back(test::pixelCentre(problem.grid, 99, 4));
+        problem.robotFlights = {FlightLimits{300.0, 100.0, 300.0, 1.0, 1.0},   // 100 m out at most
+                                FlightLimits{1400.0, 100.0, 300.0, 1.0, 1.0}}; // 650 m out
+        const Plan plan = makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+        QVERIFY(issueCoded(plan, "beyond-flight-reach") != nullptr);
+        const PlanIssue* confined = issueCoded(plan, "confined-robot");
+        QVERIFY(confined != nullptr);
+        QCOMPARE(confined->severity, IssueSeverity::Warning); // it stands idle most of the mission
+        QVERIFY2(confined->message.starts_with("robot 1 starts in a part of the map cut off from the rest ("),
+                 confined->message.c_str());
+        QVERIFY2(
+            confined->message.find(") by the land beyond every flight's reach or by impassable land, and "
+                                   "can cover only that part") != std::string::npos,
+            confined->message.c_str());
+        QVERIFY2(confined->message.find("give it a longer flight time") != std::string::npos,
+                 confined->message.c_str());
+        QVERIFY2(confined->message.find("start it in the largest part") == std::string::npos,
+                 confined->message.c_str());
+
+        // Water from 100 m to 350 m east of the west start, and rovers: the land cover cuts the part off.
+        std::vector<bool> water(100 * 10, false);
+        for (int row = 0; row < 10; ++row)
+            for (int column = 10; column < 35; ++column)
+                water[static_cast<std::size_t>(row * 100 + column)] = true;
+        PlanningProblem walled = test::uniformProblem(100, 10, 10.0, water, {});
+        walled.planner = problem.planner;
+        walled.starts = problem.starts;
+        const Plan walledPlan = makePlanner(MlctPlanner::plannerName)->plan(walled, {});
+        const PlanIssue* walledIn = issueCoded(walledPlan, "confined-robot");
+        QVERIFY(walledIn != nullptr);
+        QVERIFY2(walledIn->message.find("flight's reach") == std::string::npos, walledIn->message.c_str());
+        QVERIFY2(walledIn->message.find("start it in the largest part") != std::string::npos,
+                 walledIn->message.c_str());
+    }
+
     // Cells far larger than what is left within reach (two 100 m fields of view a side, 42 m of reach
     // left): no plan, and the error says the reach is why, not the land cover.
     void cellsTooLargeForTheReachSayTheReach() {
