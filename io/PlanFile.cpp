@@ -450,6 +450,41 @@ std::vector<PlanIssue> getIssues(CompressedReader& in) {
     return issues;
 }
 
+// The land left out beyond every flight's reach: the raster's frame, then each run's row, first column and
+// end column.
+void putLandBeyondReach(CompressedWriter& out, const PixelRuns& land) {
+    for (const double figure : {land.originX, land.originY, land.pixelWidth, land.pixelHeight})
+        out.put(figure);
+    std::vector<std::int32_t> runs;
+    runs.reserve(3 * land.runs.size());
+    for (const PixelRuns::Run& run : land.runs)
+        runs.insert(runs.end(), {run.row, run.firstColumn, run.endColumn});
+    out.putAll(runs);
+}
+
+// Runs as the planner finds them: by row, then column, none overlapping, on a frame of finite metres. A
+// damaged file's runs would otherwise be drawn over and over.
+PixelRuns getLandBeyondReach(CompressedReader& in) {
+    PixelRuns land;
+    for (double* figure : {&land.originX, &land.originY, &land.pixelWidth, &land.pixelHeight})
+        *figure = in.get<double>();
+    if (!std::isfinite(land.originX) || !std::isfinite(land.originY) || !(land.pixelWidth > 0.0) ||
+        !(land.pixelHeight > 0.0) || !std::isfinite(land.pixelWidth) || !std::isfinite(land.pixelHeight))
+        throw CompressedReader::DamagedData("land beyond reach on a frame that is not one");
+    const std::vector<std::int32_t> runs = in.getAll<std::int32_t>();
+    if (runs.size() % 3 != 0)
+        throw CompressedReader::DamagedData("land beyond reach in broken runs");
+    for (std::size_t index = 0; index < runs.size(); index += 3) {
+        const PixelRuns::Run run{runs[index], runs[index + 1], runs[index + 2]};
+        const bool after = land.runs.empty() || run.row > land.runs.back().row ||
+                           (run.row == land.runs.back().row && run.firstColumn >= land.runs.back().endColumn);
+        if (run.row < 0 || run.firstColumn < 0 || run.endColumn <= run.firstColumn || !after)
+            throw CompressedReader::DamagedData("land beyond reach in runs out of order");
+        land.runs.push_back(run);
+    }
+    return land;
+}
+
 void checkRegions(const RegionAllocation& regions, std::size_t cells, std::size_t robots) {
     if (regions.robotOfCell.size() != cells || regions.startCell.size() != robots ||
         regions.costSeconds.size() != robots)
@@ -495,6 +530,8 @@ Plan readPlan(CompressedReader& in, int formatVersion) {
         if (robot.robot < 0 || static_cast<std::size_t>(robot.robot) >= plan.paths.size())
             throw CompressedReader::DamagedData("figures of no robot");
     plan.issues = getIssues(in);
+    if (formatVersion >= 8)
+        plan.landBeyondReach = getLandBeyondReach(in);
     // Not saved as a figure: the warning that says it is.
     plan.metrics.ownSpeedsIgnored =
         std::any_of(plan.issues.begin(), plan.issues.end(),
@@ -590,6 +627,7 @@ Status savePlanFile(const Plan& plan, const std::string& fingerprint, const std:
     putPaths(out, plan.paths, plan.cells);
     putMetrics(out, plan.metrics);
     putIssues(out, plan.issues);
+    putLandBeyondReach(out, plan.landBeyondReach);
     out.put(endMarker);
     return writeFileAtomically(path, header(fingerprint) + out.finish());
 }

@@ -37,13 +37,13 @@ namespace mcpp::io {
 [[nodiscard]] Result<std::optional<Plan>> loadPlanFile(const std::string& path,
                                                        const std::string& fingerprint);
 
-// The version of the plan files this writes (MCPP-PLAN 7).
-inline constexpr int planFormatVersion = 7;
+// The version of the plan files this writes (MCPP-PLAN 8).
+inline constexpr int planFormatVersion = 8;
 
 // The plan from the bytes after a plan file's two header lines (for readers of other sources and the fuzzer);
 // `path` names the source in errors. formatVersion: that of the file's first line, MCPP-PLAN 3 (paths hold
-// every waypoint they walked), 4 (no times in the field), 5 (no take-off points), 6 (no kind of bound) or 7
-// (this version's).
+// every waypoint they walked), 4 (no times in the field), 5 (no take-off points), 6 (no kind of bound), 7
+// (no land beyond every flight's reach) or 8 (this version's).
 [[nodiscard]] Result<Plan> parsePlanBody(std::string_view compressed, const std::string& path,
                                          int formatVersion = planFormatVersion);
 

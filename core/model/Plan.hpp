@@ -2,6 +2,7 @@
 
 #include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
+#include "core/model/PixelRuns.hpp"
 #include "core/model/PlanIssue.hpp"
 #include "core/model/PlanLayer.hpp"
 #include "core/model/PlanMetrics.hpp"
@@ -30,6 +31,9 @@ struct Plan {
     // their paces against it.
     std::vector<double> countedFieldPaces;
     PlanMetrics metrics;
+    // Passable land left out of the task area beyond every flight's reach (LandBeyondReach): it has no cells,
+    // yet exports and pictures show it with the land no robot covers.
+    PixelRuns landBeyondReach;
     std::vector<PlanIssue> issues;
     std::vector<std::shared_ptr<const PlanLayer>> layers;
 

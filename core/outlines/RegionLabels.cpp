@@ -7,6 +7,7 @@
 #include "core/outlines/RegionOutlines.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace mcpp {
@@ -35,33 +36,109 @@ void fillSubCell(LabelGrid& grid, const CellRecord& cell, SubCell subCell, Label
 
 } // namespace
 
-LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& labelOfCell, bool cropped) {
-    const GridFrame& frame = graph.frame();
-    // The box on the bottom grid: the frame (and any cell beyond it), or the labelled cells only.
+namespace {
+
+// A box on the bottom grid, in its columns and rows (east and south one past the last).
+struct BottomBox {
     int west = 0;
     int north = 0;
-    int east = cropped ? 0 : frame.columns;
-    int south = cropped ? 0 : frame.rows;
-    bool first = true;
+    int east = 0;
+    int south = 0;
+    bool empty = true;
+
+    void hold(int column, int row, int endColumn, int endRow) {
+        west = empty ? column : std::min(west, column);
+        north = empty ? row : std::min(north, row);
+        east = empty ? endColumn : std::max(east, endColumn);
+        south = empty ? endRow : std::max(south, endRow);
+        empty = false;
+    }
+};
+
+// The frame (and any cell beyond it), or the labelled cells only.
+BottomBox boxOf(const CellGraph& graph, const std::vector<std::int32_t>& labelOfCell, bool cropped) {
+    BottomBox box;
+    if (!cropped)
+        box.hold(0, 0, graph.frame().columns, graph.frame().rows);
     for (std::size_t id = 0; id < labelOfCell.size() && id < graph.size(); ++id) {
         const CellRecord& cell = graph.record(static_cast<int>(id));
         if (cropped && labelOfCell[id] == LabelGrid::noLabel)
             continue;
-        if (cropped && first) {
-            west = cell.column;
-            north = cell.row;
-            first = false;
-        }
-        west = std::min(west, cell.column);
-        north = std::min(north, cell.row);
-        east = std::max(east, cell.column + cell.span);
-        south = std::max(south, cell.row + cell.span);
+        box.hold(cell.column, cell.row, cell.column + cell.span, cell.row + cell.span);
     }
+    return box;
+}
+
+// A bottom-grid index of a coordinate, kept within reach of an int however far the point lies.
+int bottomIndex(double metres, double size) {
+    constexpr double farthest = 1 << 29;
+    return static_cast<int>(std::clamp(std::floor(metres / size), -farthest, farthest));
+}
+
+// The box widened to hold the runs' pixels, unless that would make the grid more than four times the size
+// of the cells' (or 16 million sub-cells, whichever is more): a few drones on a continent's raster leave
+// nearly all of it beyond their reach, and the land near the plan is what a reader looks for.
+void holdRuns(BottomBox& box, const PixelRuns& land, const GridFrame& frame) {
+    if (land.empty())
+        return;
+    int firstRow = land.runs.front().row;
+    int lastRow = firstRow;
+    int firstColumn = land.runs.front().firstColumn;
+    int endColumn = land.runs.front().endColumn;
+    for (const PixelRuns::Run& run : land.runs) {
+        firstRow = std::min(firstRow, run.row);
+        lastRow = std::max(lastRow, run.row);
+        firstColumn = std::min(firstColumn, run.firstColumn);
+        endColumn = std::max(endColumn, run.endColumn);
+    }
+    const double size = frame.bottomCellSize;
+    BottomBox widened = box;
+    widened.hold(bottomIndex(land.originX + firstColumn * land.pixelWidth - frame.originX, size),
+                 bottomIndex(frame.originY - (land.originY - firstRow * land.pixelHeight), size),
+                 bottomIndex(land.originX + endColumn * land.pixelWidth - frame.originX, size) + 1,
+                 bottomIndex(frame.originY - (land.originY - (lastRow + 1) * land.pixelHeight), size) + 1);
+    const auto subCells = [](const BottomBox& of) {
+        return of.empty ? 0.0 : 4.0 * (of.east - of.west) * static_cast<double>(of.south - of.north);
+    };
+    if (subCells(widened) <= std::max(4.0 * subCells(box), 16.0e6))
+        box = widened;
+}
+
+// The first index i whose centre, origin + (i + 0.5) size, is at least `from` metres past the origin.
+int firstCentreFrom(double from, double size) {
+    constexpr double farthest = 1 << 30;
+    return static_cast<int>(std::clamp(std::ceil(from / size - 0.5), -farthest, farthest));
+}
+
+// Marks unreachableLabel on the grid's empty pixels whose centres lie in the runs' pixels.
+void markRuns(LabelGrid& grid, const PixelRuns& land) {
+    const double size = grid.pixelSize;
+    for (const PixelRuns::Run& run : land.runs) {
+        const double top = land.originY - run.row * land.pixelHeight;
+        const double west = land.originX + run.firstColumn * land.pixelWidth;
+        const double east = land.originX + run.endColumn * land.pixelWidth;
+        const int firstRow = std::max(firstCentreFrom(grid.originY - top, size), 0);
+        const int endRow = std::min(firstCentreFrom(grid.originY - top + land.pixelHeight, size), grid.rows);
+        const int firstColumn = std::max(firstCentreFrom(west - grid.originX, size), 0);
+        const int endColumn = std::min(firstCentreFrom(east - grid.originX, size), grid.columns);
+        for (int row = firstRow; row < endRow; ++row)
+            for (int column = firstColumn; column < endColumn; ++column) {
+                LabelGrid::Label& label = grid.labels[grid.index(column, row)];
+                if (label == LabelGrid::noLabel)
+                    label = static_cast<LabelGrid::Label>(unreachableLabel);
+            }
+    }
+}
+
+// The labels of the cells on the sub-cell grid over the box.
+LabelGrid cellLabelsOn(const CellGraph& graph, const std::vector<std::int32_t>& labelOfCell,
+                       const BottomBox& box) {
+    const GridFrame& frame = graph.frame();
     LabelGrid grid;
-    grid.columns = 2 * (east - west);
-    grid.rows = 2 * (south - north);
-    grid.originX = frame.x(west);
-    grid.originY = frame.y(north);
+    grid.columns = 2 * (box.east - box.west);
+    grid.rows = 2 * (box.south - box.north);
+    grid.originX = frame.x(box.west);
+    grid.originY = frame.y(box.north);
     grid.pixelSize = frame.bottomCellSize / 2.0;
     grid.labels.assign(static_cast<std::size_t>(grid.columns) * static_cast<std::size_t>(grid.rows),
                        LabelGrid::noLabel);
@@ -74,11 +151,17 @@ LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& la
             const CellRecord& cell = graph.record(static_cast<int>(id));
             for (const SubCell subCell : subCellsCounterClockwise)
                 if (holdsSubCell(cell.freeSubCells, subCell))
-                    fillSubCell(grid, cell, subCell, static_cast<LabelGrid::Label>(labelOfCell[id]), west,
-                                north);
+                    fillSubCell(grid, cell, subCell, static_cast<LabelGrid::Label>(labelOfCell[id]), box.west,
+                                box.north);
         }
     });
     return grid;
+}
+
+} // namespace
+
+LabelGrid cellLabels(const CellGraph& graph, const std::vector<std::int32_t>& labelOfCell, bool cropped) {
+    return cellLabelsOn(graph, labelOfCell, boxOf(graph, labelOfCell, cropped));
 }
 
 LabelGrid regionLabels(const Plan& plan) {
@@ -86,8 +169,13 @@ LabelGrid regionLabels(const Plan& plan) {
     const auto& owner = plan.regions.robotOfCell;
     for (std::size_t id = 0; id < owner.size() && id < labels.size(); ++id)
         labels[id] = owner[id] >= 0 ? owner[id] : unreachableLabel;
-    // Cropped to the plan's cells: a small area on a large raster gives a small grid (and regions.tif).
-    return cellLabels(plan.cells, labels, true);
+    // Cropped to the plan's cells: a small area on a large raster gives a small grid (and regions.tif). The
+    // land left out beyond every flight's reach is no robot's either: the box holds it too.
+    BottomBox box = boxOf(plan.cells, labels, true);
+    holdRuns(box, plan.landBeyondReach, plan.cells.frame());
+    LabelGrid grid = cellLabelsOn(plan.cells, labels, box);
+    markRuns(grid, plan.landBeyondReach);
+    return grid;
 }
 
 LabelGrid takenOverLabels(const Plan& plan) {

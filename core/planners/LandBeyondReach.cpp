@@ -100,6 +100,14 @@ double nearestStartMetres(const std::vector<Reach>& reaches, MapPoint point) {
     return nearest;
 }
 
+// Adds the pixel to the run it continues, or starts one.
+void extendRuns(std::vector<PixelRuns::Run>& runs, int row, int column) {
+    if (!runs.empty() && runs.back().row == row && runs.back().endColumn == column)
+        ++runs.back().endColumn;
+    else
+        runs.push_back({row, column, column + 1});
+}
+
 bool passable(const ClassTable& classes, std::int32_t value) {
     const LandCoverClass* found = classes.find(value);
     return found != nullptr && found->isTraversable();
@@ -114,6 +122,7 @@ std::optional<LandBeyondReach> landBeyondEveryReach(const PlanningProblem& probl
     const ClassGrid& grid = problem.grid;
     const ReachMargins margins(problem);
     LandBeyondReach land;
+    land.passable = PixelRuns{grid.originX, grid.originY, grid.pixelWidth, grid.pixelHeight, {}};
     land.outside = grid.outside;
     land.outside.resize(grid.values.size(), 0);
     const double pixelArea = grid.pixelWidth * grid.pixelHeight;
@@ -135,6 +144,7 @@ std::optional<LandBeyondReach> landBeyondEveryReach(const PlanningProblem& probl
             land.outside[index] = ClassGrid::beyondFlightReach;
             if (!isPassable)
                 continue;
+            extendRuns(land.passable.runs, row, column);
             land.passableSquareMetres += pixelArea;
             const MapPoint centre{grid.originX + (column + 0.5) * grid.pixelWidth, y};
             const double metres = nearestStartMetres(*reaches, centre);

@@ -2,6 +2,7 @@
 
 #include "core/model/CellGraph.hpp"
 #include "core/model/MapPoint.hpp"
+#include "core/model/PixelRuns.hpp"
 #include "core/model/PlanningProblem.hpp"
 
 #include <cstdint>
@@ -18,6 +19,7 @@ struct LandBeyondReach {
     // The grid's mask with such pixels flagged ClassGrid::beyondFlightReach.
     std::vector<std::uint8_t> outside;
     double passableSquareMetres = 0.0; // of the passable classes among them
+    PixelRuns passable;                // those pixels, for exports and pictures
     MapPoint farthest;                 // the passable pixel farthest from every start
     double farthestMetres = 0.0;       // from the start nearest it
     double leastReachMetres = 0.0;     // how far the robots' flights work from their starts

@@ -416,7 +416,8 @@ bool leftOutBeyondReach(const ClassGrid& grid) {
 }
 
 // The land left out beyond every reach is passable land no robot covers: the plan's figures count it.
-void countLandBeyondReach(Plan& plan, const LandBeyondReach& land) {
+void countLandBeyondReach(Plan& plan, LandBeyondReach& land) {
+    plan.landBeyondReach = std::move(land.passable);
     PlanMetrics& metrics = plan.metrics;
     metrics.passableAreaSquareMetres += land.passableSquareMetres;
     metrics.unreachableAreaSquareMetres += land.passableSquareMetres;

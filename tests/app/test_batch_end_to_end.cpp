@@ -296,6 +296,20 @@ void TestBatchEndToEnd::aComparisonSaysTheMissionsWarningsOnce() {
             reported = reported ||
                        issue.toObject().value("code").toString() == QStringLiteral("beyond-flight-reach");
         QVERIFY2(reported, planner); // each plan's report still says it
+        // The land left out is drawn with the land no robot covers: plan.geojson's unreachable polygons hold
+        // as much of it as the report counts, to a sub-cell's rounding along their edges.
+        double drawn = 0.0;
+        const auto geoJson = readJsonObject(scratch_.filePath(
+            QStringLiteral("compare-drones-reach/%1/plan.geojson").arg(QLatin1String(planner))));
+        for (const QJsonValue& feature : geoJson.value("features").toArray()) {
+            const QJsonObject properties = feature.toObject().value("properties").toObject();
+            if (properties.value("kind").toString() == QStringLiteral("unreachable"))
+                drawn += properties.value("area_m2").toDouble();
+        }
+        const double counted = report.value("unreachable_area_m2").toDouble();
+        QVERIFY2(counted > 0.0 && std::abs(drawn - counted) <= 0.02 * counted,
+                 qPrintable(
+                     QStringLiteral("%1: %2 m2 drawn, %3 m2 counted").arg(planner).arg(drawn).arg(counted)));
     }
 }
 

@@ -1,4 +1,5 @@
 #include "core/model/PlanningError.hpp"
+#include "core/outlines/RegionLabels.hpp"
 #include "core/planners/LandBeyondReach.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
@@ -8,6 +9,7 @@
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace mcpp;
 
@@ -99,6 +101,33 @@ class LandBeyondReachTest : public QObject {
         QCOMPARE(land->farthest.y, test::pixelCentre(problem.grid, 99, 9).y);
         QVERIFY(std::abs(land->farthestMetres - std::hypot(990.0, 50.0)) < 1e-6);
         QVERIFY(problem.grid.outside.empty()); // the problem itself is not changed
+    }
+
+    // The land left out has no cells, yet the plan's labels (what regions.tif, the unreachable layer and the
+    // picture are drawn from) mark it as land no robot covers: as much of it as the plan counts, and none
+    // within the reach.
+    void theLandLeftOutIsLabelledUnreachable() {
+        const PlanningProblem problem = westEndStrip();
+        const Plan plan = makePlanner(MlctPlanner::plannerName)->plan(problem, {});
+        QVERIFY(!plan.landBeyondReach.empty());
+        const LabelGrid labels = regionLabels(plan);
+        double unreachableArea = 0.0;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (int row = 0; row < labels.rows; ++row)
+            for (int column = 0; column < labels.columns; ++column)
+                if (labels.at(column, row) == unreachableLabel) {
+                    unreachableArea += labels.pixelSize * labels.pixelSize;
+                    nearest = std::min(nearest, std::hypot(labels.x(column + 0.5) - problem.starts[0].x,
+                                                           labels.y(row + 0.5) - problem.starts[0].y));
+                }
+        QVERIFY2(std::abs(unreachableArea - plan.metrics.unreachableAreaSquareMetres) <=
+                     1e-9 * plan.metrics.unreachableAreaSquareMetres,
+                 qPrintable(QStringLiteral("%1 against %2")
+                                .arg(unreachableArea)
+                                .arg(plan.metrics.unreachableAreaSquareMetres)));
+        QVERIFY2(nearest > 350.0, qPrintable(QString::number(nearest)));
+        // The grid reaches the strip's east end, past the plan's cells.
+        QVERIFY(labels.x(labels.columns) >= problem.grid.maxX() - 1e-9);
     }
 
     // A robot reaching everywhere (a rover, or an aircraft whose trips are not counted) covers the land the

@@ -92,6 +92,8 @@ class TestPlanFile : public QObject {
         plan.metrics.boundOfDetectionPasses = true;
         QCOMPARE(plan.paths.size(), std::size_t{3});
         plan.paths[1].takeOff = MapPoint{-120.5, 33.25}; // an aircraft taking off outside the area
+        // Land left out beyond every flight's reach, drawn with the land no robot covers.
+        plan.landBeyondReach = PixelRuns{-50.0, 120.0, 10.0, 12.5, {{0, 2, 5}, {0, 7, 9}, {3, 0, 4}}};
         const std::string path = file("whole.mcpp-plan");
         const io::Status saved = io::savePlanFile(plan, "inputs-a", path);
         QVERIFY2(saved.ok(), saved.error().c_str());
@@ -116,6 +118,12 @@ class TestPlanFile : public QObject {
             QVERIFY(a.takeOff == b.takeOff);
         }
         QVERIFY(back.paths[1].takeOff.has_value());
+        QCOMPARE(back.landBeyondReach.originX, -50.0);
+        QCOMPARE(back.landBeyondReach.pixelHeight, 12.5);
+        QCOMPARE(back.landBeyondReach.runs.size(), std::size_t{3});
+        QCOMPARE(back.landBeyondReach.runs[1].firstColumn, 7);
+        QCOMPARE(back.landBeyondReach.runs[2].row, 3);
+        QCOMPARE(back.landBeyondReach.runs[2].endColumn, 4);
         QCOMPARE(back.metrics.makespanSeconds, plan.metrics.makespanSeconds);
         QCOMPARE(back.metrics.ratio, plan.metrics.ratio);
         QCOMPARE(back.metrics.coveredFraction, plan.metrics.coveredFraction);
@@ -269,6 +277,8 @@ class TestPlanFile : public QObject {
         QCOMPARE(fromSeventh.value().paths.size(), std::size_t{3});
         QVERIFY(fromSeventh.value().metrics.ratio >= 1.0);
         QVERIFY(!io::parsePlanBody(std::string_view(seventh).substr(1), "seed", 6).ok());
+        QVERIFY(!io::parsePlanBody(std::string_view(seventh).substr(1), "seed", 8).ok());
+        QVERIFY(fromSeventh.value().landBeyondReach.empty()); // none before MCPP-PLAN 8
     }
 
     void waypointsOffTheGridComeBackAsTheyWere() {
@@ -317,6 +327,12 @@ class TestPlanFile : public QObject {
             QVERIFY2(!loaded.ok(), qPrintable(QStringLiteral("trial %1 read a damaged file").arg(trial)));
             QVERIFY(loaded.error().find(damaged) == 0);
         }
+        // Land beyond reach in runs out of order (a damaged file's would be drawn over and over).
+        Plan disordered = plannedMap();
+        disordered.landBeyondReach = PixelRuns{0.0, 0.0, 10.0, 10.0, {{3, 0, 4}, {0, 2, 5}}};
+        QVERIFY(io::savePlanFile(disordered, "inputs-a", damaged).ok());
+        const auto outOfOrder = io::loadPlanFile(damaged, "inputs-a");
+        QVERIFY(!outOfOrder.ok() && outOfOrder.error().find("runs out of order") != std::string::npos);
         writeBytes(damaged, "{\"fileType\": \"Plan\"}\n");
         auto other = io::loadPlanFile(damaged, "inputs-a");
         QVERIFY(!other.ok() && other.error().find("not a plan file") != std::string::npos);
