@@ -11,17 +11,20 @@ bool planned(const ComparisonRow& row) {
     return row.outcome == ComparisonRow::Outcome::Planned;
 }
 
-// Whether some plan covering the most keeps the robots' own speeds.
-bool someKeepOwnSpeeds(const std::vector<ComparisonRow>& rows, double most) {
-    return std::any_of(rows.begin(), rows.end(), [most](const ComparisonRow& row) {
-        return planned(row) && !row.metrics.ownSpeedsIgnored && !coversLessThanMost(row, most);
-    });
-}
-
 // Whether some plan covering the most flies every flight of its waypoint files within a battery.
 bool someFlyWithinBatteries(const std::vector<ComparisonRow>& rows, double most) {
     return std::any_of(rows.begin(), rows.end(), [most](const ComparisonRow& row) {
         return planned(row) && row.flightsOverBattery == std::size_t{0} && !coversLessThanMost(row, most);
+    });
+}
+
+// Whether some plan covering the most, and not set apart for flights too long, keeps the robots' own speeds:
+// a plan itself set apart sets no other apart.
+bool someKeepOwnSpeeds(const std::vector<ComparisonRow>& rows, double most) {
+    const bool someFit = someFlyWithinBatteries(rows, most);
+    return std::any_of(rows.begin(), rows.end(), [most, someFit](const ComparisonRow& row) {
+        const bool tooLong = someFit && row.flightsOverBattery.value_or(0) > 0;
+        return planned(row) && !row.metrics.ownSpeedsIgnored && !coversLessThanMost(row, most) && !tooLong;
     });
 }
 

@@ -22,8 +22,9 @@ inline constexpr double coverageShortfall = 0.005;
 // Whether a planned row covers less than the most covered by more than coverageShortfall.
 [[nodiscard]] bool coversLessThanMost(const ComparisonRow& row, double most);
 
-// Whether a planned row times its robots at the class table's speeds where another plan covering the most
-// keeps their own (PlanMetrics::ownSpeedsIgnored): its times are not to be set beside that plan's.
+// Whether a planned row times its robots at the class table's speeds where another plan covering the most,
+// and not set apart for flights longer than a battery, keeps their own (PlanMetrics::ownSpeedsIgnored): its
+// times are not to be set beside that plan's.
 [[nodiscard]] bool timedUnlikeTheOthers(const ComparisonRow& row, const std::vector<ComparisonRow>& rows);
 
 // Whether a planned row covering the most has waypoint files with flights longer than a battery where

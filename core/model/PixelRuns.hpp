@@ -5,7 +5,8 @@
 namespace mcpp {
 
 // Land on a raster's pixel grid, as runs of pixels along its rows: a few runs a row where the land is a few
-// intervals, so a map of tens of millions of pixels holds it in kilobytes. Row 0 is the northern edge.
+// intervals, so a map of tens of millions of pixels typically holds it in kilobytes. Row 0 is the northern
+// edge.
 struct PixelRuns {
     struct Run {
         int row = 0;

@@ -69,39 +69,69 @@ BottomBox boxOf(const CellGraph& graph, const std::vector<std::int32_t>& labelOf
     return box;
 }
 
-// A bottom-grid index of a coordinate, kept within reach of an int however far the point lies.
+// Bottom-grid indices of coordinates, kept within reach of an int however far the point lies: the first
+// whose cell holds the coordinate, and one past the last that reaches it.
+constexpr double farthestIndex = 1 << 29;
 int bottomIndex(double metres, double size) {
-    constexpr double farthest = 1 << 29;
-    return static_cast<int>(std::clamp(std::floor(metres / size), -farthest, farthest));
+    return static_cast<int>(std::clamp(std::floor(metres / size), -farthestIndex, farthestIndex));
+}
+int bottomEnd(double metres, double size) {
+    return static_cast<int>(std::clamp(std::ceil(metres / size), -farthestIndex, farthestIndex));
 }
 
-// The box widened to hold the runs' pixels, unless that would make the grid more than four times the size
-// of the cells' (or 16 million sub-cells, whichever is more): a few drones on a continent's raster leave
-// nearly all of it beyond their reach, and the land near the plan is what a reader looks for.
+// Sub-cells a box holds.
+double subCellsOf(const BottomBox& box) {
+    return box.empty ? 0.0 : 4.0 * (box.east - box.west) * static_cast<double>(box.south - box.north);
+}
+
+// The box of the runs' pixels on the bottom grid; in doubles, as a damaged plan file's rows may be any.
+BottomBox boxOfRuns(const PixelRuns& land, const GridFrame& frame) {
+    double firstRow = land.runs.front().row;
+    double endRow = firstRow + 1.0;
+    double firstColumn = land.runs.front().firstColumn;
+    double endColumn = land.runs.front().endColumn;
+    for (const PixelRuns::Run& run : land.runs) {
+        firstRow = std::min(firstRow, static_cast<double>(run.row));
+        endRow = std::max(endRow, run.row + 1.0);
+        firstColumn = std::min(firstColumn, static_cast<double>(run.firstColumn));
+        endColumn = std::max(endColumn, static_cast<double>(run.endColumn));
+    }
+    const double size = frame.bottomCellSize;
+    const double north = frame.originY - land.originY; // the runs' row 0, metres south of the frame's
+    const double west = land.originX - frame.originX;
+    BottomBox box;
+    box.hold(bottomIndex(west + firstColumn * land.pixelWidth, size),
+             bottomIndex(north + firstRow * land.pixelHeight, size),
+             bottomEnd(west + endColumn * land.pixelWidth, size),
+             bottomEnd(north + endRow * land.pixelHeight, size));
+    return box;
+}
+
+// The box widened towards the runs' pixels by as much as 16 million sub-cells more allow (32 MB of labels):
+// a few drones on a continent's raster leave nearly all of it beyond their reach, and the land round the
+// plan is what a reader looks for.
 void holdRuns(BottomBox& box, const PixelRuns& land, const GridFrame& frame) {
     if (land.empty())
         return;
-    int firstRow = land.runs.front().row;
-    int lastRow = firstRow;
-    int firstColumn = land.runs.front().firstColumn;
-    int endColumn = land.runs.front().endColumn;
-    for (const PixelRuns::Run& run : land.runs) {
-        firstRow = std::min(firstRow, run.row);
-        lastRow = std::max(lastRow, run.row);
-        firstColumn = std::min(firstColumn, run.firstColumn);
-        endColumn = std::max(endColumn, run.endColumn);
-    }
-    const double size = frame.bottomCellSize;
+    const BottomBox runs = boxOfRuns(land, frame);
     BottomBox widened = box;
-    widened.hold(bottomIndex(land.originX + firstColumn * land.pixelWidth - frame.originX, size),
-                 bottomIndex(frame.originY - (land.originY - firstRow * land.pixelHeight), size),
-                 bottomIndex(land.originX + endColumn * land.pixelWidth - frame.originX, size) + 1,
-                 bottomIndex(frame.originY - (land.originY - (lastRow + 1) * land.pixelHeight), size) + 1);
-    const auto subCells = [](const BottomBox& of) {
-        return of.empty ? 0.0 : 4.0 * (of.east - of.west) * static_cast<double>(of.south - of.north);
-    };
-    if (subCells(widened) <= std::max(4.0 * subCells(box), 16.0e6))
+    widened.hold(runs.west, runs.north, runs.east, runs.south);
+    constexpr double allowance = 16.0e6;
+    if (subCellsOf(widened) <= subCellsOf(box) + allowance) {
         box = widened;
+        return;
+    }
+    if (box.empty)
+        return; // no cells to draw it round
+    // Grown by m bottom cells a side: 4 (w + 2m) (h + 2m) <= 4 w h + allowance.
+    const double width = box.east - box.west;
+    const double height = box.south - box.north;
+    const double margin =
+        std::floor((-(width + height) + std::sqrt((width + height) * (width + height) + allowance)) / 4.0);
+    const auto grown = static_cast<int>(std::max(margin, 0.0));
+    box = BottomBox{std::max(box.west - grown, widened.west), std::max(box.north - grown, widened.north),
+                    std::min(box.east + grown, widened.east), std::min(box.south + grown, widened.south),
+                    false};
 }
 
 // The first index i whose centre, origin + (i + 0.5) size, is at least `from` metres past the origin.
@@ -113,14 +143,17 @@ int firstCentreFrom(double from, double size) {
 // Marks unreachableLabel on the grid's empty pixels whose centres lie in the runs' pixels.
 void markRuns(LabelGrid& grid, const PixelRuns& land) {
     const double size = grid.pixelSize;
+    // Metres south and east of the grid's corner: a pixel's edges are worked out alike for its neighbours,
+    // so no sub-cell centre on an edge falls between them.
+    const double north = grid.originY - land.originY;
+    const double west = land.originX - grid.originX;
     for (const PixelRuns::Run& run : land.runs) {
-        const double top = land.originY - run.row * land.pixelHeight;
-        const double west = land.originX + run.firstColumn * land.pixelWidth;
-        const double east = land.originX + run.endColumn * land.pixelWidth;
-        const int firstRow = std::max(firstCentreFrom(grid.originY - top, size), 0);
-        const int endRow = std::min(firstCentreFrom(grid.originY - top + land.pixelHeight, size), grid.rows);
-        const int firstColumn = std::max(firstCentreFrom(west - grid.originX, size), 0);
-        const int endColumn = std::min(firstCentreFrom(east - grid.originX, size), grid.columns);
+        const int firstRow = std::max(firstCentreFrom(north + run.row * land.pixelHeight, size), 0);
+        const int endRow =
+            std::min(firstCentreFrom(north + (run.row + 1.0) * land.pixelHeight, size), grid.rows);
+        const int firstColumn = std::max(firstCentreFrom(west + run.firstColumn * land.pixelWidth, size), 0);
+        const int endColumn =
+            std::min(firstCentreFrom(west + run.endColumn * land.pixelWidth, size), grid.columns);
         for (int row = firstRow; row < endRow; ++row)
             for (int column = firstColumn; column < endColumn; ++column) {
                 LabelGrid::Label& label = grid.labels[grid.index(column, row)];

@@ -11,9 +11,10 @@ namespace mcpp {
 inline constexpr std::int32_t unreachableLabel = -2;
 
 // The plan's regions on a grid of sub-cells (half the bottom cell): the robot covering each free sub-cell,
-// unreachableLabel for a free sub-cell nobody covers, LabelGrid::noLabel elsewhere (obstacles, outside the
-// map, blocked sub-cells), on the box around the plan's cells. Exports draw region polygons and regions.tif
-// from this one grid, so they agree.
+// unreachableLabel for a free sub-cell nobody covers and for sub-cells whose centres lie on the passable land
+// left out beyond every flight's reach (Plan::landBeyondReach), LabelGrid::noLabel elsewhere (obstacles,
+// outside the map, blocked sub-cells), on the box around the plan's cells, widened towards that land by at
+// most 16 million sub-cells. Exports draw region polygons and regions.tif from this one grid, so they agree.
 [[nodiscard]] LabelGrid regionLabels(const Plan& plan);
 
 // Any labels of cells on the same sub-cell grid: each free sub-cell of a cell takes the cell's label; cells

@@ -140,7 +140,7 @@ std::string confinedRobotMessage(const ConfinedRobot& confined, double share, bo
             : "";
     const std::string advice =
         byReach ? "start it nearer the other robots, or give it a longer flight time or a faster cruise "
-                  "speed, so that its flights reach their land and share the work"
+                  "speed, so that its flights reach the land between them and share the work"
                 : "start it in the largest part to share the work";
     return "robot " + std::to_string(confined.robot + 1) +
            " starts in a part of the map cut off from the rest (" +
@@ -645,6 +645,7 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     if (const WaypointsBeyondRaster beyond = waypointsBeyondRaster(problem.grid, plan.paths);
         beyond.waypoints > 0)
         planningRun.addIssue(IssueSeverity::Warning, "paths-beyond-raster", beyondRasterMessage(beyond));
+    const bool reachEdge = !plan.metrics.confinedRobots.empty() && leftOutBeyondReach(problem.grid);
     for (const ConfinedRobot& confined : plan.metrics.confinedRobots) {
         // Most often a start put on the wrong side of a river or a fence. The land no robot reaches is no
         // one's share.
@@ -658,7 +659,7 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
                                  : 1.0;
         const bool idle = share < 0.5;
         const bool byReach =
-            leftOutBeyondReach(problem.grid) &&
+            reachEdge &&
             coversNextToLandBeyondReach(problem.grid, plan.cells, plan.regions.robotOfCell, confined.robot);
         planningRun.addIssue(idle ? IssueSeverity::Warning : IssueSeverity::Information, "confined-robot",
                              confinedRobotMessage(confined, share, idle, byReach));

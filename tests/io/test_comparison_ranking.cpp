@@ -180,6 +180,17 @@ void TestComparisonRanking::plansWithFlightsPastTheirBatteriesComeAfterThoseWhos
     ComparisonRow alsoTooLong = plannedRow("mstc", 0.999, 90.0);
     alsoTooLong.flightsOverBattery = 3;
     QCOMPARE(namesInOrder({tooLong, alsoTooLong}), (std::vector<std::string>{"mstc", "darp"}));
+    // A plan set apart for its flights sets no other apart: beside it, a plan at the class table's speeds
+    // whose flights fit is read first and timed alike.
+    ComparisonRow ownSpeedsTooLong = plannedRow("darp", 0.999, 100.0);
+    ownSpeedsTooLong.flightsOverBattery = 12;
+    ComparisonRow classSpeedsFit = plannedRow("mdstc", 0.999, 120.0);
+    classSpeedsFit.metrics.ownSpeedsIgnored = true;
+    classSpeedsFit.flightsOverBattery = 0;
+    const std::vector<ComparisonRow> crossed{ownSpeedsTooLong, classSpeedsFit};
+    QVERIFY(io::readingGroup(crossed[1], crossed) == io::ReadingGroup::TimedAlike);
+    QVERIFY(io::readingGroup(crossed[0], crossed) == io::ReadingGroup::FlightsOverBattery);
+    QCOMPARE(io::timesTheFirst(crossed), (std::vector<double>{0.0, 1.0}));
     // Without flight times nothing is counted, and nothing is set apart.
     ComparisonRow untimed = plannedRow("darp", 0.999, 100.0);
     QVERIFY(!io::fliesPastItsBatteries(untimed, {untimed, fits}));
@@ -193,8 +204,11 @@ void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
     classSpeeds.flightsOverBattery = 0;
     ComparisonRow farFlights = plannedRow("mcpp-mlct", 0.999, 140.0);
     farFlights.flightsOverBattery = 124; // robots with flight times: how many flights overrun a battery
+    ComparisonRow ownSpeedsFit = plannedRow("mstc", 0.999, 150.0);
+    ownSpeedsFit.flightsOverBattery = 0;
     const std::vector<ComparisonRow> rows{classSpeeds, farFlights, plannedRow("wavefront-battery", 0.5, 50.0),
-                                          unplannedRow("cppied", ComparisonRow::Outcome::Failed)};
+                                          unplannedRow("cppied", ComparisonRow::Outcome::Failed),
+                                          ownSpeedsFit};
     QTemporaryDir directory;
     QVERIFY(directory.isValid());
     const QString csvPath = directory.filePath("comparison.csv");
@@ -205,24 +219,25 @@ void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
     QFile csv(csvPath);
     QVERIFY(csv.open(QIODevice::ReadOnly));
     const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
-    QCOMPARE(lines.size(), 5);
+    QCOMPARE(lines.size(), 6);
     const int column = lines[0].split(',').indexOf("ranked_apart");
     QVERIFY(column >= 0);
-    // farFlights' flights overrun a battery where mdstc's all fit.
-    const QStringList expected{"own_speeds_ignored", "flights_over_battery", "covers_less", ""};
-    for (int row = 0; row < 4; ++row)
+    // mdstc times at the class table's speeds where mstc keeps the robots' own; farFlights' flights overrun
+    // a battery where theirs all fit.
+    const QStringList expected{"own_speeds_ignored", "flights_over_battery", "covers_less", "", ""};
+    for (int row = 0; row < 5; ++row)
         QCOMPARE(lines[row + 1].split(',').at(column), expected[row]);
     const int flights = lines[0].split(',').indexOf("flights_over_battery");
-    QCOMPARE(flights, column + 1);                     // after the columns earlier versions wrote
-    const QStringList overBattery{"0", "124", "", ""}; // empty: no flight times, or not planned
-    for (int row = 0; row < 4; ++row)
+    QCOMPARE(flights, column + 1);                          // after the columns earlier versions wrote
+    const QStringList overBattery{"0", "124", "", "", "0"}; // empty: no flight times, or not planned
+    for (int row = 0; row < 5; ++row)
         QCOMPARE(lines[row + 1].split(',').at(flights), overBattery[row]);
 
     QFile json(jsonPath);
     QVERIFY(json.open(QIODevice::ReadOnly));
     const QJsonArray planners = QJsonDocument::fromJson(json.readAll()).object().value("planners").toArray();
-    QCOMPARE(planners.size(), 4);
-    for (int row = 0; row < 4; ++row)
+    QCOMPARE(planners.size(), 5);
+    for (int row = 0; row < 5; ++row)
         QCOMPARE(planners[row].toObject().value("ranked_apart").toString(), expected[row]);
     QVERIFY(!planners[3].toObject().contains("ranked_apart"));
     QCOMPARE(planners[1].toObject().value("flights_over_battery").toInt(), 124);

@@ -2,6 +2,7 @@
 // file is refused with its name and never crashes the reader.
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/coverage/StraightRunMerging.hpp"
+#include "core/outlines/RegionLabels.hpp"
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlannerRegistry.hpp"
 #include "io/Mission.hpp"
@@ -279,6 +280,17 @@ class TestPlanFile : public QObject {
         QVERIFY(!io::parsePlanBody(std::string_view(seventh).substr(1), "seed", 6).ok());
         QVERIFY(!io::parsePlanBody(std::string_view(seventh).substr(1), "seed", 8).ok());
         QVERIFY(fromSeventh.value().landBeyondReach.empty()); // none before MCPP-PLAN 8
+        // The same plan with land beyond reach, as this version saves it (the fuzzer's seed of it).
+        const std::string eighth =
+            bytesOf(test::sourcePath("tests/fuzz/corpus/fuzz_plan_file/compressed-body-v8"));
+        const auto fromEighth = io::parsePlanBody(std::string_view(eighth).substr(1), "seed", 8);
+        QVERIFY2(fromEighth.ok(), fromEighth.ok() ? "" : fromEighth.error().c_str());
+        QCOMPARE(fromEighth.value().landBeyondReach.runs.size(), std::size_t{4});
+        QCOMPARE(fromEighth.value().landBeyondReach.runs.back().endColumn, 30);
+        QVERIFY(!io::parsePlanBody(std::string_view(eighth).substr(1), "seed", 7).ok());
+        // Drawn: its labels mark that land where no cell lies.
+        const LabelGrid labels = regionLabels(fromEighth.value());
+        QVERIFY(std::count(labels.labels.begin(), labels.labels.end(), unreachableLabel) > 0);
     }
 
     void waypointsOffTheGridComeBackAsTheyWere() {
