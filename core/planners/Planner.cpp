@@ -131,8 +131,8 @@ std::string chargersIgnoredMessage(const PlannerDescription& planner) {
 }
 
 // idle: the part holds under half an even share of the land per robot in it (`share` of one), so the robot
-// stands idle most of the mission. byReach: the robot's region borders the land left out beyond every flight's reach,
-// whose edge, not the land cover, may be what cuts it off.
+// stands idle most of the mission. byReach: the robot's region borders the land left out beyond every
+// flight's reach, whose edge, not the land cover, may be what cuts it off.
 std::string confinedRobotMessage(const ConfinedRobot& confined, double share, bool idle, bool byReach) {
     const std::string others =
         confined.robotsInPocket > 1
