@@ -2,6 +2,7 @@
 
 #include "core/coverage/PathMeasurement.hpp"
 #include "core/model/HumanUnits.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/StraightLine.hpp"
 #include "io/internal/TextFiles.hpp"
@@ -427,11 +428,57 @@ double flightReachMetres(const VehicleSettings& vehicle) {
            vehicle.cruiseSpeedMetresPerSecond / 2.0;
 }
 
-MissionSize missionSize(const CoveragePath& path, const CellGraph& cells, const VehicleSettings& vehicle,
-                        const ExportSettings& settings) {
+bool fliesSortiesFromItsStart(const CoveragePath& path, const RobotSorties* sorties) {
+    if (sorties == nullptr || sorties->sorties.size() < 2 || path.takeOff || path.waypoints.empty())
+        return false;
+    const Waypoint& start = path.waypoints.front();
+    const auto atStart = [&](std::size_t waypoint) {
+        return waypoint < path.waypoints.size() && path.waypoints[waypoint].x == start.x &&
+               path.waypoints[waypoint].y == start.y;
+    };
+    return std::all_of(sorties->sorties.begin(), sorties->sorties.end(), [&](const Sortie& sortie) {
+        return atStart(sortie.firstWaypoint) && atStart(sortie.lastWaypoint);
+    });
+}
+
+AutopilotMission sortieMission(const CoveragePath& path, const std::vector<Sortie>& sorties,
+                               const VehicleSettings& vehicle, const ExportSettings& settings,
+                               const CellGraph& cells) {
+    AutopilotMission whole;
+    whole.takeOff = path.takeOff;
+    for (const Sortie& sortie : sorties) {
+        AutopilotMission flight = autopilotMission(sortiePath(path, sortie), vehicle, settings, cells);
+        // Each sortie keeps its own first point, at the charger where the one before ended, so that its
+        // file commands the speed it starts with.
+        const std::size_t offset = whole.points.size();
+        whole.points.insert(whole.points.end(), flight.points.begin(), flight.points.end());
+        whole.commandedSpeeds.insert(whole.commandedSpeeds.end(), flight.commandedSpeeds.begin(),
+                                     flight.commandedSpeeds.end());
+        for (MissionPart part : flight.parts) {
+            part.first += offset;
+            part.last += offset;
+            whole.parts.push_back(part);
+        }
+        whole.items += flight.items;
+    }
+    const double flight = flightSeconds(whole);
+    whole.seconds = flight > 0.0 ? flight + path.turnSeconds : 0.0;
+    return whole;
+}
+
+AutopilotMission robotMission(const Plan& plan, const CoveragePath& path, const VehicleSettings& vehicle,
+                              const ExportSettings& settings) {
+    if (const RobotSorties* sorties = sortiesOfRobot(plan, path.robot);
+        fliesSortiesFromItsStart(path, sorties))
+        return sortieMission(path, sorties->sorties, vehicle, settings, plan.cells);
     CoveragePath whole;
-    const AutopilotMission mission = autopilotMission(
-        pathForWaypointFiles(path, cells, settings.mergeCollinear, whole), vehicle, settings, cells);
+    return autopilotMission(pathForWaypointFiles(path, plan.cells, settings.mergeCollinear, whole), vehicle,
+                            settings, plan.cells);
+}
+
+MissionSize missionSize(const Plan& plan, const CoveragePath& path, const VehicleSettings& vehicle,
+                        const ExportSettings& settings) {
+    const AutopilotMission mission = robotMission(plan, path, vehicle, settings);
     const MissionFlights flights = missionFlights(mission, vehicle);
     return {mission.items, mission.parts.size(), flights.longestSeconds, flights.overFlightTime,
             flights.fieldSeconds};

@@ -2,6 +2,8 @@
 
 #include "core/model/CellGraph.hpp"
 #include "core/model/CoveragePath.hpp"
+#include "core/model/Plan.hpp"
+#include "core/model/RobotSorties.hpp"
 #include "io/Mission.hpp"
 #include "io/VehicleSettings.hpp"
 
@@ -13,7 +15,7 @@
 namespace mcpp::io {
 
 // Consecutive waypoints of a mission, first and last included; a part after the first begins at the
-// waypoint where the one before it ended.
+// waypoint where the one before it ended, or, for a sortie of its own, at a waypoint of its own there.
 struct MissionPart {
     std::size_t first = 0;
     std::size_t last = 0;
@@ -119,8 +121,20 @@ struct MissionSize {
 // "Add robots, start them nearer that land, or plan with wavefront-battery and chargers" (a rover cannot
 // start nearer: its stretches are too long wherever it starts).
 [[nodiscard]] std::string flightsTooLongAdvice(const VehicleSettings& vehicle);
-// The size of the mission of a robot's path, made as the waypoint files make it (cells: the plan's).
-[[nodiscard]] MissionSize missionSize(const CoveragePath& path, const CellGraph& cells,
+// Whether a robot flies several sorties, each from its start and back to it: a charger at its start.
+[[nodiscard]] bool fliesSortiesFromItsStart(const CoveragePath& path, const RobotSorties* sorties);
+// The mission of a robot that flies `sorties` of its path from its start: each sortie's mission
+// (autopilotMission) one after the other, so that each sortie is a part of its own, or more above the item
+// limit, and the files are the flights the plan times. Its items are those of all the sorties' files.
+[[nodiscard]] AutopilotMission sortieMission(const CoveragePath& path, const std::vector<Sortie>& sorties,
+                                             const VehicleSettings& vehicle, const ExportSettings& settings,
+                                             const CellGraph& cells);
+// The mission the waypoint files make of a robot's path: its sorties' where it flies them from its start,
+// else the whole path's.
+[[nodiscard]] AutopilotMission robotMission(const Plan& plan, const CoveragePath& path,
+                                            const VehicleSettings& vehicle, const ExportSettings& settings);
+// The size of the mission of a robot's path in the plan, made as the waypoint files make it.
+[[nodiscard]] MissionSize missionSize(const Plan& plan, const CoveragePath& path,
                                       const VehicleSettings& vehicle, const ExportSettings& settings);
 
 // `number` padded with zeros to the width of `last` ("03" of 12): numbered files a file list sorts in order.

@@ -1164,7 +1164,7 @@ std::function<std::vector<double>(const Plan&)> fieldSecondsOf(const Mission& mi
         parallelFor(plan.paths.size(), [&](std::size_t robot, int) {
             const CoveragePath& path = plan.paths[robot];
             const double field = robot < vehicles.size() && splitMissionEndsLater(vehicles[robot])
-                                     ? missionSize(path, plan.cells, vehicles[robot], settings).fieldSeconds
+                                     ? missionSize(plan, path, vehicles[robot], settings).fieldSeconds
                                      : 0.0;
             seconds[robot] = field > 0.0 ? field : path.timeSeconds;
         });

@@ -65,15 +65,13 @@ Result<std::vector<LonLat>> lonLatsOf(const ExportContext& context, const Autopi
     return context.georeference.toWgs84(mapPoints);
 }
 
-// The robot's cache entry, its mission made.
 // The mission a vehicle of these settings flies along the path.
 AutopilotMission missionFlownBy(const ExportContext& context, const CoveragePath& coverage,
                                 const VehicleSettings& vehicle) {
-    CoveragePath whole;
-    return autopilotMission(
-        pathForWaypointFiles(coverage, context.plan.cells, context.settings.mergeCollinear, whole), vehicle,
-        context.settings, context.plan.cells);
+    return robotMission(context.plan, coverage, vehicle, context.settings);
 }
+
+// The robot's cache entry, its mission made.
 
 ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context, int robot) {
     std::shared_ptr<ExportContext::MissionCache::Entry> entry;
@@ -506,6 +504,10 @@ Status writeSortieMissions(const ExportContext& context, int robot, const Covera
     const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
     if (sorties == nullptr)
         return {}; // no battery plan: files beside `path` named like sorties are not ours to remove
+    if (fliesSortiesFromItsStart(coverage, sorties)) {
+        removeStaleSortieFiles(path, 0); // its mission's parts are its sorties
+        return {};
+    }
     const std::size_t count = sorties->sorties.size() < 2 ? 0 : sorties->sorties.size();
     for (std::size_t sortie = 0; sortie < count; ++sortie) {
         const CoveragePath flight = sortiePath(coverage, sorties->sorties[sortie]);
@@ -552,7 +554,9 @@ const AutopilotMission& autopilotMissionOf(const ExportContext& context, int rob
 
 std::string sortieFilesNote(const ExportContext& context, int robot, const std::string& path) {
     const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
-    if (sorties == nullptr || sorties->sorties.size() < 2)
+    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
+    if (sorties == nullptr || sorties->sorties.size() < 2 || coverage == nullptr ||
+        fliesSortiesFromItsStart(*coverage, sorties))
         return {};
     const auto name = [&](std::size_t sortie) {
         return std::filesystem::path(missionSortiePath(path, sortie, sorties->sorties.size()))
@@ -595,11 +599,26 @@ std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMissi
            (isAircraft(vehicle.type) ? ", flights to and from the start included" : "") + turnarounds;
 }
 
-// Why the mission is in parts: "has 21 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min,
-// longer than its 25 min flight time".
+// How many sorties the robot flies from its start, its mission's parts; 0 when it flies none so.
+std::size_t sortiesFlownFromStart(const ExportContext& context, int robot) {
+    const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
+    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
+    return coverage != nullptr && fliesSortiesFromItsStart(*coverage, sorties) ? sorties->sorties.size() : 0;
+}
+
+// Why the mission is in parts: "flies 53 sorties from its charger at its start, one part each", or "has 21
+// 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min, longer than its 25 min flight time".
 std::string splitReason(const ExportContext& context, int robot, const AutopilotMission& mission) {
     const VehicleSettings& vehicle = context.vehicle(robot);
     std::vector<std::string> reasons;
+    if (const std::size_t sorties = sortiesFlownFromStart(context, robot); sorties > 0) {
+        // Its sorties are its flights: each part of its own, or more where one holds too many items.
+        const bool more = mission.parts.size() > sorties;
+        return std::string(isAircraft(vehicle.type) ? "flies " : "makes ") + std::to_string(sorties) +
+               " sorties from its charger at its start" +
+               (more ? ", some with more items than its autopilot's " + std::to_string(vehicle.maxWaypoints)
+                     : std::string(", one part each"));
+    }
     if (vehicle.maxWaypoints > 0 && mission.items > vehicle.maxWaypoints)
         reasons.push_back("has " + std::to_string(mission.items) + " items, more than its autopilot's " +
                           std::to_string(vehicle.maxWaypoints));

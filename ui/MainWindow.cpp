@@ -1044,7 +1044,7 @@ void MainWindow::sizeWaypointFiles() {
         for (const CoveragePath& path : plan->paths) {
             const auto robot = static_cast<std::size_t>(path.robot);
             const io::VehicleSettings vehicle = robot < vehicles.size() ? vehicles[robot] : settings.vehicle;
-            sizes.push_back(io::missionSize(path, plan->cells, vehicle, settings));
+            sizes.push_back(io::missionSize(*plan, path, vehicle, settings));
         }
         return sizes;
     }));
@@ -1065,7 +1065,7 @@ FileWarnings MainWindow::waypointFileWarnings() const {
         for (const CoveragePath& path : plan.paths) {
             const auto robot = static_cast<std::size_t>(path.robot);
             if (robot < sizes.size())
-                sizes[robot] = io::missionSize(path, plan.cells, vehicles[robot], settings);
+                sizes[robot] = io::missionSize(plan, path, vehicles[robot], settings);
         }
         WaypointFileFindings findings;
         for (const QString& warning : ResultsPanel::flightsTooLongWarnings(sizes, vehicles, names))

@@ -1351,9 +1351,9 @@ QPair<QPointF, QPointF> planEnds(const QJsonObject& plan) {
     return {first, last};
 }
 
-// A battery plan: sorties within the battery, their times adding up to the robot's with the charges, each
-// sortie a mission of its own from the charger and back; a rerun on a battery that lasts leaves no sortie
-// file behind.
+// A battery plan: sorties within the battery, their times adding up to the robot's with the charges; with
+// the charger at the start, each sortie is a part of the robot's mission, from the charger and back, and no
+// file holds the whole path or a sortie twice; a rerun on a battery that lasts leaves no part behind.
 void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
     const QString out = scratch_.filePath("battery");
     const double battery = 600.0;
@@ -1371,6 +1371,7 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
         QVERIFY2(sorties > 1, qPrintable(QString::number(sorties)));
         QCOMPARE(figures.value("charges").toInt(), sorties - 1);
         QCOMPARE(figures.value("charging_s").toDouble(), (sorties - 1) * recharge);
+        QCOMPARE(figures.value("mission_parts").toInt(), sorties);
         const QJsonArray times = figures.value("sortie_times_s").toArray();
         QCOMPARE(times.size(), sorties);
         double flying = 0.0;
@@ -1379,27 +1380,36 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
             flying += time.toDouble();
         }
         QVERIFY(nearlyEqual(figures.value("time_s").toDouble(), flying + (sorties - 1) * recharge));
-        QVERIFY2(run.standardOutput.contains(sortieStem(robot, sorties, sorties) + QStringLiteral(".plan")),
+        QVERIFY2(run.standardOutput.contains(QStringLiteral("makes %1 sorties from its charger at its start, "
+                                                            "one part each")
+                                                 .arg(sorties)),
                  qPrintable(run.standardOutput));
-        const auto whole =
-            planEnds(readJsonObject(QStringLiteral("%1/robot_%2.plan").arg(out).arg(robot + 1)));
+        QVERIFY2(run.standardOutput.contains(partStem(robot, sorties, sorties) + QStringLiteral(".plan")),
+                 qPrintable(run.standardOutput));
+        QVERIFY(!QFileInfo::exists(QStringLiteral("%1/robot_%2.plan").arg(out).arg(robot + 1)));
+        const auto start =
+            planEnds(readJsonObject(QStringLiteral("%1/%2.plan").arg(out, partStem(robot, 1, sorties))))
+                .first;
         for (int sortie = 1; sortie <= sorties; ++sortie) {
-            const QString file = QStringLiteral("%1/%2.plan").arg(out, sortieStem(robot, sortie, sorties));
+            const QString file = QStringLiteral("%1/%2.plan").arg(out, partStem(robot, sortie, sorties));
             QVERIFY2(QFileInfo::exists(file), qPrintable(file));
             const auto ends = planEnds(readJsonObject(file));
-            QCOMPARE(ends.first, whole.first); // the charger
-            QCOMPARE(ends.second, whole.first);
+            QCOMPARE(ends.first, start); // the charger
+            QCOMPARE(ends.second, start);
             QVERIFY(QFileInfo::exists(
-                QStringLiteral("%1/%2.waypoints").arg(out, sortieStem(robot, sortie, sorties))));
+                QStringLiteral("%1/%2.waypoints").arg(out, partStem(robot, sortie, sorties))));
         }
-        QVERIFY(!QFileInfo::exists(
-            QStringLiteral("%1/%2.plan").arg(out, sortieStem(robot, sorties + 1, sorties))));
+        QVERIFY(
+            !QFileInfo::exists(QStringLiteral("%1/%2.plan").arg(out, partStem(robot, sorties + 1, sorties))));
     }
+    const QStringList twice = QDir(out).entryList({QStringLiteral("*_sortie_*")});
+    QVERIFY2(twice.isEmpty(), qPrintable(twice.join(", ")));
     run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--planner", "wavefront-battery",
                    "--param", "battery_s=1000000", "--out", out});
     checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
-    const QStringList stale = QDir(out).entryList({QStringLiteral("*_sortie_*")});
+    const QStringList stale = QDir(out).entryList({QStringLiteral("*_part_*"), QStringLiteral("*_sortie_*")});
     QVERIFY2(stale.isEmpty(), qPrintable(stale.join(", ")));
+    QVERIFY(QFileInfo::exists(out + "/robot_1.plan"));
 }
 
 // A charger away from the start (robots[0].charger): the first sortie begins at the start, every sortie

@@ -328,8 +328,61 @@ class AutopilotMissionTest : public QObject {
         }
     }
 
-    // Each part fits one flight, trips included, and the parts are as few as filling each flight in turn
-    // gives (counted here point by point with partSeconds) and as even as they can be.
+    // A robot that flies sorties from its start: each sortie is a part of its own, the very mission it would
+    // make alone, or more parts under a tight item limit, none across two sorties; with a charger elsewhere
+    // or one sortie, its path is split as any other.
+    void sortiesAreTheMissionsParts() {
+        CoveragePath path;
+        const std::vector<std::pair<double, double>> corners{
+            {0, 0},    {200, 0}, {200, 10}, {0, 10},   {0, 0},    {0, 20}, {200, 20},
+            {200, 30}, {0, 30},  {0, 40},   {200, 40}, {200, 50}, {0, 50}, {0, 0}};
+        for (const auto& [x, y] : corners)
+            addAtFiveMetresASecond(path, x, y);
+        RobotSorties sorties;
+        sorties.sorties = {{0, 4}, {4, 13}};
+        QVERIFY(fliesSortiesFromItsStart(path, &sorties));
+        VehicleSettings drone = tenMinuteDrone();
+        const ExportSettings settings = shaping(0.1, true);
+        const AutopilotMission mission = sortieMission(path, sorties.sorties, drone, settings, noTurnPrice);
+        QCOMPARE(mission.parts.size(), std::size_t{2});
+        int items = 0;
+        double seconds = 0.0;
+        for (std::size_t sortie = 0; sortie < 2; ++sortie) {
+            const AutopilotMission alone =
+                autopilotMission(sortiePath(path, sorties.sorties[sortie]), drone, settings, noTurnPrice);
+            const MissionPart& part = mission.parts[sortie];
+            QCOMPARE(part.last - part.first + 1, alone.points.size());
+            for (std::size_t point = 0; point < alone.points.size(); ++point) {
+                QCOMPARE(mission.points[part.first + point].x, alone.points[point].x);
+                QCOMPARE(mission.points[part.first + point].y, alone.points[point].y);
+            }
+            QCOMPARE(part.items, alone.parts.front().items);
+            QCOMPARE(part.seconds, alone.parts.front().seconds);
+            items += alone.items;
+            seconds += alone.seconds;
+        }
+        QCOMPARE(mission.parts[1].first, mission.parts[0].last + 1); // its own first point, at the charger
+        QCOMPARE(mission.items, items);
+        QVERIFY(std::abs(mission.seconds - seconds) < 1e-9);
+
+        drone.maxWaypoints = minimumMaxWaypoints;
+        const AutopilotMission tight = sortieMission(path, sorties.sorties, drone, settings, noTurnPrice);
+        QVERIFY(tight.parts.size() > 2);
+        const std::size_t firstSortieEnds = sortiePath(path, sorties.sorties[0]).waypoints.size();
+        for (const MissionPart& part : tight.parts) {
+            QVERIFY(part.items <= minimumMaxWaypoints);
+            QVERIFY(part.last < firstSortieEnds || part.first >= firstSortieEnds);
+        }
+
+        RobotSorties away = sorties;
+        away.sorties = {{0, 3}, {3, 12}}; // ending elsewhere: a charger away from the start
+        QVERIFY(!fliesSortiesFromItsStart(path, &away));
+        RobotSorties one = sorties;
+        one.sorties = {{0, 13}};
+        QVERIFY(!fliesSortiesFromItsStart(path, &one));
+        QVERIFY(!fliesSortiesFromItsStart(path, nullptr));
+    }
+
     // A robot is done in the field after its flights and a turnaround between each two; with a part's time
     // unknown, so is that.
     void fieldTimeAddsTurnaroundsBetweenParts() {
@@ -349,6 +402,8 @@ class AutopilotMissionTest : public QObject {
         QCOMPARE(missionFlights(mission, drone).fieldSeconds, 0.0);
     }
 
+    // Each part fits one flight, trips included, and the parts are as few as filling each flight in turn
+    // gives (counted here point by point with partSeconds) and as even as they can be.
     void partsFitTheFlightTime() {
         std::mt19937 random(23);
         for (int trial = 0; trial < 40; ++trial) {
