@@ -58,6 +58,19 @@ bool fliesPastItsBatteries(const ComparisonRow& row, const std::vector<Compariso
            someFlyWithinBatteries(rows, most);
 }
 
+std::string rankedApartReason(ReadingGroup readingGroup) {
+    switch (readingGroup) {
+    case ReadingGroup::OwnSpeedsIgnored:
+        return "at the class table's speeds";
+    case ReadingGroup::FlightsOverBattery:
+        return "flights too long";
+    case ReadingGroup::CoversLess:
+        return "covers less";
+    default:
+        return {};
+    }
+}
+
 ReadingGroup readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
     switch (row.outcome) {
     case ComparisonRow::Outcome::Planned:

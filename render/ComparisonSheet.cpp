@@ -166,21 +166,6 @@ void drawChart(QPainter& painter, const std::vector<const ComparisonPanel*>& pan
     }
 }
 
-// Why a plan reading sooner done is ranked after the first, on its title where the captions have no line
-// to spare.
-QString rankedApartNote(io::ReadingGroup readingGroup) {
-    switch (readingGroup) {
-    case io::ReadingGroup::OwnSpeedsIgnored:
-        return QStringLiteral(": at the class table's speeds");
-    case io::ReadingGroup::FlightsOverBattery:
-        return QStringLiteral(": flights too long");
-    case io::ReadingGroup::CoversLess:
-        return QStringLiteral(": covers less");
-    default:
-        return {};
-    }
-}
-
 } // namespace
 
 ComparisonPanel comparisonPanelOf(const io::ComparisonRow& row, const Plan* plan, const QString& timed) {
@@ -227,7 +212,11 @@ std::vector<ComparisonPanel> rankedComparisonPanels(const std::vector<io::Compar
         ComparisonPanel panel = comparisonPanelOf(rows[index], plans[index], timed);
         if (ranks[index] > 0) {
             panel.label = QStringLiteral("%1. %2").arg(ranks[index]).arg(panel.title);
-            panel.title = panel.label + rankedApartNote(io::readingGroup(rows[index], rows));
+            const std::string apart = io::rankedApartReason(io::readingGroup(rows[index], rows));
+            // Why a plan reading sooner done is ranked after the first, on its title where the captions
+            // have no line to spare.
+            panel.title = panel.label +
+                          (apart.empty() ? QString() : QStringLiteral(": ") + QString::fromStdString(apart));
         }
 
         panels.push_back(std::move(panel));

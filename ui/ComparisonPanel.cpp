@@ -195,6 +195,12 @@ void ComparisonPanel::setCheckedPlanners(const std::vector<std::string>& planner
         box->setChecked(std::find(planners.begin(), planners.end(), name) != planners.end());
 }
 
+int ComparisonPanel::widthShowingEveryColumn() const {
+    table_->resizeColumnsToContents();
+    // Beside the table's viewport the panel holds its margins, the table's frame and any scroll bar.
+    return table_->horizontalHeader()->length() + width() - table_->viewport()->width();
+}
+
 void ComparisonPanel::setCanCompare(bool can, const QString& whyNot) {
     runButton_->setEnabled(can);
     runButton_->setToolTip(can ? QString() : whyNot);
@@ -237,7 +243,11 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
             name->setToolTip(tr("Soonest done of the plans covering the most land and timed alike"));
         }
         table_->setItem(r, Name, name);
-        auto* state = new QTableWidgetItem(QString::fromStdString(io::outcomeName(row.outcome)));
+        const io::ReadingGroup group = io::readingGroup(row, outcome.rows);
+        // A plan ranked after the first whatever its time says why, where "x 1st" is empty.
+        const std::string apart = io::rankedApartReason(group);
+        auto* state = new QTableWidgetItem(
+            QString::fromStdString(apart.empty() ? io::outcomeName(row.outcome) : apart));
         state->setToolTip(QString::fromStdString(row.message));
         // A plan's warnings (robots timed at the class table's speeds, an uneven plan, land left
         // uncovered, flights longer than a battery) weigh on its figures: flagged on its row, said in full
@@ -257,7 +267,6 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
         if (row.outcome != io::ComparisonRow::Outcome::Planned)
             continue;
         const PlanMetrics& metrics = row.metrics;
-        const io::ReadingGroup group = io::readingGroup(row, outcome.rows);
         table_->setItem(r, Covered, numberItem(metrics.coveredFraction * 100.0, 1));
         QTableWidgetItem* ratio = numberItem(metrics.ratio, 3);
         if (metrics.boundOfDetectionPasses) {
@@ -299,6 +308,9 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
                              shown * table_->verticalHeader()->defaultSectionSize() +
                              2 * table_->frameWidth() + table_->horizontalScrollBar()->sizeHint().height());
     table_->setSortingEnabled(true);
+    // Ratio, planning time and state (which says why a row has no "x 1st") were cut at the dock's usual
+    // width, behind a scroll bar few users notice.
+    emit widthWanted(widthShowingEveryColumn());
     // The soonest done first (of the plans that cover the most): what the user waits for, where a
     // balanced plan may still take longest.
     table_->sortByColumn(inTheField ? Home : Makespan, Qt::AscendingOrder);

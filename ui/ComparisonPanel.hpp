@@ -59,6 +59,8 @@ class ComparisonPanel : public QWidget {
   signals:
     void compareRequested();
     void planSelected(int outcomeRow); // index into the outcome's rows
+    // The panel's width at which every column of the table shows without scrolling sideways.
+    void widthWanted(int pixels);
 
   protected:
     void resizeEvent(QResizeEvent* event) override;
@@ -66,6 +68,8 @@ class ComparisonPanel : public QWidget {
 
   private:
     void fitSheet();
+    // The panel's width that shows every column of the table side by side.
+    [[nodiscard]] int widthShowingEveryColumn() const;
     // No sheet shown and none to draw: the comparison is still running or was dropped.
     void forgetSheets();
 

@@ -494,6 +494,12 @@ void MainWindow::createDocks() {
     connect(comparisonPanel_, &ComparisonPanel::planSelected, this, &MainWindow::showComparedPlan);
     comparisonDock_ =
         makeDock(QStringLiteral("comparisonDock"), tr("Compare planners"), comparisonPanel_, this);
+    connect(comparisonPanel_, &ComparisonPanel::widthWanted, this, [this](int pixels) {
+        // Wider, never narrower, and the map keeps at least half the window.
+        const int wanted = std::min(pixels, width() / 2);
+        if (comparisonDock_->isVisible() && wanted > comparisonDock_->width())
+            resizeDocks({comparisonDock_}, {wanted}, Qt::Horizontal);
+    });
     addDockWidget(Qt::LeftDockWidgetArea, layersDock);
     legendPanel_ = new LegendPanel(document_, this);
     // The legend scrolls both ways: long class names must not widen the dock.

@@ -4,6 +4,8 @@
 #include <QDialog>
 #include <QHeaderView>
 #include <QLabel>
+#include <QScrollBar>
+#include <QSignalSpy>
 #include <QTableWidget>
 #include <QtTest>
 
@@ -150,6 +152,36 @@ class ComparisonPanelTest : public QObject {
         QVERIFY(!table->item(1, 0)->font().bold());
         QCOMPARE(table->item(0, againstFirstColumn)->text(), QStringLiteral("1.000"));
         QCOMPARE(table->item(1, againstFirstColumn), nullptr);
+        // The state says why its "x 1st" is empty.
+        QCOMPARE(table->item(0, stateColumn)->text(), QStringLiteral("planned"));
+        QCOMPARE(table->item(1, stateColumn)->text(), QStringLiteral("at the class table's speeds"));
+    }
+
+    // The panel asks for the width that shows every column, the state last: at that width the table needs no
+    // scrolling sideways; at the usual dock's width it did.
+    void thePanelAsksForTheWidthOfEveryColumn() {
+        const auto raster = test::grassRaster();
+        const io::Mission mission = test::twoRobotMission();
+        ui::ComparisonPanel panel;
+        panel.resize(400, 600);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QSignalSpy wanted(&panel, &ui::ComparisonPanel::widthWanted);
+        io::ComparisonRow first = plannedRow("mcpp-mlct", 1.083, 607000.0);
+        io::ComparisonRow second = plannedRow("darp-turns", 1.006, 565000.0);
+        first.flightsOverBattery = 0;
+        second.flightsOverBattery = 59;
+        panel.showOutcome(outcomeOf({first, second}), raster->grid, mission.classes);
+        QCOMPARE(wanted.count(), 1);
+        const int width = wanted.takeFirst().at(0).toInt();
+        QVERIFY2(width > 400, qPrintable(QString::number(width)));
+        QCOMPARE(panel.table()->item(panel.rowOfPlanner("darp-turns"), stateColumn)->text(),
+                 QStringLiteral("flights too long"));
+        QApplication::processEvents();
+        QVERIFY(panel.table()->horizontalScrollBar()->maximum() > 0);
+        panel.resize(width, 600);
+        QApplication::processEvents();
+        QCOMPARE(panel.table()->horizontalScrollBar()->maximum(), 0);
     }
 
     // Sorted by when the team is done, a plan at the class table's speeds with no flights comes after the
@@ -207,6 +239,7 @@ class ComparisonPanelTest : public QObject {
         QCOMPARE(table->item(0, againstFirstColumn)->data(Qt::DisplayRole).toDouble(), 1.0);
         QCOMPARE(table->item(1, againstFirstColumn)->data(Qt::DisplayRole).toDouble(), 1.25);
         QCOMPARE(table->item(2, againstFirstColumn), nullptr);
+        QCOMPARE(table->item(2, stateColumn)->text(), QStringLiteral("covers less"));
         table->sortByColumn(homeColumn - 1, Qt::DescendingOrder);
         QCOMPARE(panel.rowOfPlanner("spiral-stc"), 0); // reversed as a whole: covering less, now first
         QCOMPARE(panel.rowOfPlanner("darp"), 1);
