@@ -256,8 +256,24 @@ class MissionReader {
     std::string error_;
 };
 
+// A field a class row must give unless the preset has a row for its value to take it from.
+bool requiredUnlessPreset(MissionReader& reader, const QJsonObject& object, const std::string& path,
+                          const char* key, double& out, const std::string& presetName, bool inPreset,
+                          std::int32_t classValue) {
+    if (inPreset || object.contains(QLatin1String(key)))
+        return reader.optional(object, path, key, out, &MissionReader::number);
+    return reader.fail(
+        MissionReader::join(path, key),
+        presetName.empty()
+            ? std::string("missing: a class row gives it unless classes.preset names a preset with a row "
+                          "for the class's value")
+            : "missing, and the preset " + presetName + " has no class " + std::to_string(classValue) +
+                  " to take it from");
+}
+
+// A class row; where the preset has a row for its value, the fields it leaves out are the preset's.
 bool readClass(MissionReader& reader, const QJsonValue& value, const std::string& path,
-               LandCoverClass& entry) {
+               const std::string& presetName, const ClassTable* preset, LandCoverClass& entry) {
     QJsonObject object;
     if (!reader.object(value, path, object))
         return false;
@@ -266,20 +282,28 @@ bool readClass(MissionReader& reader, const QJsonValue& value, const std::string
             {"value", "name", "color", "speed_mps", "fov_m", "passable", "detection_probability"}))
         return false;
     int classValue = 0;
-    std::string color = "#808080";
-    if (!reader.required(object, path, "value", classValue, &MissionReader::integer) ||
-        !reader.optional(object, path, "name", entry.name, &MissionReader::string) ||
+    if (!reader.required(object, path, "value", classValue, &MissionReader::integer))
+        return false;
+    const LandCoverClass* presetRow = preset != nullptr ? preset->find(classValue) : nullptr;
+    if (presetRow != nullptr)
+        entry = *presetRow;
+    std::optional<std::string> color;
+    if (!reader.optional(object, path, "name", entry.name, &MissionReader::string) ||
         !reader.optional(object, path, "color", color, &MissionReader::string) ||
-        !reader.required(object, path, "speed_mps", entry.speedMetresPerSecond, &MissionReader::number) ||
-        !reader.required(object, path, "fov_m", entry.fieldOfViewMetres, &MissionReader::number) ||
+        !requiredUnlessPreset(reader, object, path, "speed_mps", entry.speedMetresPerSecond, presetName,
+                              presetRow != nullptr, classValue) ||
+        !requiredUnlessPreset(reader, object, path, "fov_m", entry.fieldOfViewMetres, presetName,
+                              presetRow != nullptr, classValue) ||
         !reader.optional(object, path, "passable", entry.passable, &MissionReader::boolean)) {
         return false;
     }
     entry.value = classValue;
-    const auto rgb = internal::parseColor(color);
-    if (!rgb || color.size() != 7)
-        return reader.fail(MissionReader::join(path, "color"), "expected a colour \"#rrggbb\"");
-    entry.colorRgb = *rgb;
+    if (color) {
+        const auto rgb = internal::parseColor(*color);
+        if (!rgb || color->size() != 7)
+            return reader.fail(MissionReader::join(path, "color"), "expected a colour \"#rrggbb\"");
+        entry.colorRgb = *rgb;
+    }
     if (entry.speedMetresPerSecond < 0.0)
         return reader.fail(MissionReader::join(path, "speed_mps"), "must be >= 0");
     if (object.contains("detection_probability")) {
@@ -313,9 +337,12 @@ bool readClasses(MissionReader& reader, const QJsonValue& value, Mission& missio
         return reader.fail("classes.fov_m", "must be a field of view of more than 0 m, up to " +
                                                 formatQuantity(kMaximumFieldOfViewMetres) + " m, not " +
                                                 internal::formatShortest(*mission.fieldOfViewMetres));
+    std::optional<ClassTable> preset;
     if (!mission.preset.empty()) {
-        if (auto preset = presetClassTable(mission.preset); !preset)
-            return reader.fail("classes.preset", preset.error());
+        auto named = presetClassTable(mission.preset);
+        if (!named)
+            return reader.fail("classes.preset", named.error());
+        preset = std::move(named.value());
     }
     const QJsonValue table = object.value(QLatin1String("table"));
     if (table.isUndefined())
@@ -327,7 +354,7 @@ bool readClasses(MissionReader& reader, const QJsonValue& value, Mission& missio
     for (qsizetype i = 0; i < rows.size(); ++i) {
         const std::string rowPath = MissionReader::index("classes.table", i);
         LandCoverClass entry;
-        if (!readClass(reader, rows.at(i), rowPath, entry))
+        if (!readClass(reader, rows.at(i), rowPath, mission.preset, preset ? &*preset : nullptr, entry))
             return false;
         if (!rows.at(i).toObject().contains(QLatin1String("color")))
             mission.classesWithoutColour.insert(entry.value);

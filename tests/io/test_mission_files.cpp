@@ -140,6 +140,41 @@ class MissionFilesTest : public QObject {
         QVERIFY(filled.ok() && filled.value().classesWithoutColour.empty());
     }
 
+    // Beside a preset, a class row may give only what it changes: the rest is the preset's row for its
+    // value. A value the preset lacks, or a row without a preset, must give its speed and field of view,
+    // and the message says where they could come from.
+    void aClassRowBesideAPresetTakesWhatItLeavesOut() {
+        const ClassTable preset = presetClassTable("esa-worldcover").value();
+        const LandCoverClass* grass = preset.find(30);
+        QVERIFY(grass != nullptr && grass->speedMetresPerSecond != 0.5);
+        const auto missionWith = [](const std::string& classes) {
+            return parseMission(R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                "classes": )" + classes +
+                                    R"(, "robots": [{"name": "one", "start": [1, 1]}]})",
+                                "mission.json");
+        };
+        const auto loaded =
+            missionWith(R"({"preset": "esa-worldcover", "table": [{"value": 30, "speed_mps": 0.5}]})");
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().c_str());
+        const LandCoverClass* row = loaded.value().classes.find(30);
+        QVERIFY(row != nullptr);
+        QCOMPARE(row->speedMetresPerSecond, 0.5);
+        QCOMPARE(row->name, grass->name);
+        QCOMPARE(row->fieldOfViewMetres, grass->fieldOfViewMetres);
+        QCOMPARE(row->passable, grass->passable);
+
+        const auto unknown =
+            missionWith(R"({"preset": "esa-worldcover", "table": [{"value": 31, "speed_mps": 0.5}]})");
+        QVERIFY(!unknown.ok());
+        QCOMPARE(unknown.error(), std::string("mission.json: classes.table[0].fov_m: missing, and the preset "
+                                              "esa-worldcover has no class 31 to take it from"));
+        const auto noPreset = missionWith(R"({"table": [{"value": 30, "fov_m": 10}]})");
+        QVERIFY(!noPreset.ok());
+        QVERIFY2(noPreset.error().find("classes.table[0].speed_mps: missing: a class row gives it unless "
+                                       "classes.preset names a preset") != std::string::npos,
+                 noPreset.error().c_str());
+    }
+
     void fileIsVersionedJsonInAFixedOrder() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("mission.json").toStdString();
