@@ -885,6 +885,16 @@ std::vector<double> plannerBatteries(const Mission& mission) {
     return planner && planner->fliesOnBatteries() ? robotBatteries(mission) : std::vector<double>{};
 }
 
+std::vector<double> plannerRecharges(const Mission& mission) {
+    const auto planner = findPlannerDescription(mission.planner.planner);
+    if (!planner || !planner->fliesOnBatteries())
+        return {};
+    std::vector<double> recharges;
+    for (const VehicleSettings& vehicle : robotVehicles(mission))
+        recharges.push_back(vehicle.turnaroundSeconds);
+    return recharges;
+}
+
 double vehicleBatterySeconds(const VehicleSettings& vehicle) {
     if (!(vehicle.flightTimeSeconds > 0.0))
         return 0.0;
@@ -1169,6 +1179,27 @@ std::optional<std::string> batteriesFromFlightTimesNote(const Mission& mission,
     return text;
 }
 
+// Where some robot charges for its vehicle's turnaround (plannerRecharges): for how long each charges, so
+// that the planner's recharge_s is not taken for every robot's.
+std::optional<std::string> rechargesFromTurnaroundsNote(const Mission& mission,
+                                                        const std::vector<double>& recharges) {
+    std::map<double, std::vector<std::size_t>> byTurnaround;
+    std::vector<std::size_t> others;
+    for (std::size_t robot = 0; robot < recharges.size(); ++robot)
+        (recharges[robot] > 0.0 ? byTurnaround[recharges[robot]] : others).push_back(robot);
+    if (byTurnaround.empty())
+        return std::nullopt;
+    std::string text = "each robot charges between sorties for its vehicle's turnaround: ";
+    std::string groups;
+    for (const auto& [seconds, robots] : byTurnaround)
+        groups +=
+            (groups.empty() ? "" : ", ") + formatDuration(seconds) + " for " + namedRobots(mission, robots);
+    text += groups;
+    if (!others.empty())
+        text += "; " + namedRobots(mission, others) + ", without one, for the planner's recharge_s";
+    return text;
+}
+
 } // namespace
 
 namespace {
@@ -1243,6 +1274,7 @@ FieldTimeInputs fieldTimeInputs(const Mission& mission) {
 
 void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, PlanningProblem& problem) {
     problem.batterySeconds = robotBatteries(mission);
+    problem.rechargeSeconds = plannerRecharges(mission);
     problem.events = mission.events;
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     problem.fieldSeconds = fieldSecondsOf(mission, vehicles);
@@ -1259,6 +1291,9 @@ void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, Plan
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))
         problem.notes.push_back(
             {IssueSeverity::Information, "batteries-from-flight-times", std::move(*batteries)});
+    if (auto recharges = rechargesFromTurnaroundsNote(mission, problem.rechargeSeconds))
+        problem.notes.push_back(
+            {IssueSeverity::Information, "recharges-from-turnarounds", std::move(*recharges)});
 }
 
 std::vector<VehicleSettings> robotVehicles(const Mission& mission) {

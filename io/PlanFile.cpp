@@ -586,6 +586,7 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
     const std::vector<double> cruiseSpeeds = robotCruiseSpeeds(mission);
     // A battery planner's batteries may come from the vehicles' flight times.
     const std::vector<double> batteries = plannerBatteries(mission);
+    const std::vector<double> recharges = plannerRecharges(mission); // and their charging, from turnarounds
     // An aircraft may take off beside its path (flyingRobots): which robots fly shapes the plan.
     const std::vector<bool> flying = flyingRobots(mission);
     for (std::size_t robot = 0; robot < inputs.robots.size();
@@ -598,6 +599,8 @@ std::string planInputsFingerprint(const Mission& mission, const std::string& mis
             inputs.robots[robot].vehicle.cruiseSpeedMetresPerSecond = cruiseSpeeds[robot];
         if (robot < batteries.size() && batteries[robot] > 0.0)
             inputs.robots[robot].batterySeconds = batteries[robot];
+        if (robot < recharges.size() && recharges[robot] > 0.0)
+            inputs.robots[robot].vehicle.turnaroundSeconds = recharges[robot];
     }
     if (fieldTimeInputs(mission).measured()) {
         inputs.exports = mission.exports;

@@ -26,6 +26,9 @@ struct PlanningProblem {
     // Each robot's own battery in seconds, for planners that fly on batteries; missing or 0: the planner's
     // battery_s.
     std::vector<double> batterySeconds;
+    // Each robot's time at its charger between two sorties in seconds (its vehicle's turnaround), for
+    // planners that fly on batteries; missing or 0: the planner's recharge_s.
+    std::vector<double> rechargeSeconds;
     // Each robot's own speed over every passable class in m/s (an aircraft's cruise speed beside ground
     // robots); missing or 0: the class table's speeds. Every robot's times are at its own speed, and a
     // planner that balancesOwnSpeeds gives the faster robots more.

@@ -156,11 +156,15 @@ void coverRegions(PlanningRun& run, const std::vector<int>& robots, const Charge
                   const std::vector<double>& batteries, RobotsOnBatteries& state) {
     const CellGraph& graph = run.plan().cells;
     const std::vector<std::vector<int>> cells = cellsByRobot(state.regions);
-    const double recharge = run.parameters().real("recharge_s");
+    const double plannerRecharge = run.parameters().real("recharge_s");
+    const std::vector<double>& ownRecharges = run.problem().rechargeSeconds;
     parallelFor(robots.size(), [&](std::size_t i, int) {
         const auto robot = static_cast<std::size_t>(robots[i]);
         const bool own =
             robot < run.problem().batterySeconds.size() && run.problem().batterySeconds[robot] > 0.0;
+        // A robot's own turnaround, as its waypoint files' time in the field counts it between flights.
+        const double recharge =
+            robot < ownRecharges.size() && ownRecharges[robot] > 0.0 ? ownRecharges[robot] : plannerRecharge;
         const WavefrontCoverage coverage(graph, {batteries[robot], recharge, own},
                                          ownSpeedOf(run.problem().robotSpeeds, robot));
         WavefrontCoverage::Result& result = state.results[robot];
@@ -448,7 +452,9 @@ PlannerDescription WavefrontBatteryPlanner::describe() const {
                       "robot's charger (its start unless given) within it",
                       "s"),
         realParameter("recharge_s", "Recharge time", 600.0, 0.0, 1e7,
-                      "Seconds at the charger between two sorties", "s"),
+                      "Seconds at the charger between two sorties, for a robot whose vehicle has no "
+                      "turnaround of its own (--turnaround, a mission's turnaround_s)",
+                      "s"),
     };
     return description;
 }

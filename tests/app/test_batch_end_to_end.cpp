@@ -113,6 +113,7 @@ class TestBatchEndToEnd : public QObject {
     void aRobotWalledInIsSaid();
     void outputsWritesOnlyWhatIsAsked();
     void batteryPlansWriteEachSortie();
+    void aTurnaroundIsTheTimeAtTheCharger();
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
     void anAircraftOnTheLakeTakesOffThere();
     void detectionPlansWriteTheDetectionRaster();
@@ -1410,6 +1411,28 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
     const QStringList stale = QDir(out).entryList({QStringLiteral("*_part_*"), QStringLiteral("*_sortie_*")});
     QVERIFY2(stale.isEmpty(), qPrintable(stale.join(", ")));
     QVERIFY(QFileInfo::exists(out + "/robot_1.plan"));
+}
+
+// A vehicle's turnaround is the battery planner's time at the charger, as the waypoint files' time in the
+// field counts it between flights, in place of recharge_s, and a note says so.
+void TestBatchEndToEnd::aTurnaroundIsTheTimeAtTheCharger() {
+    const QString out = scratch_.filePath("turnaround");
+    const double turnaround = 90.0;
+    const auto run =
+        runMcpp({"--batch", samplePath("synthetic/mission.json"), "--planner", "wavefront-battery", "--param",
+                 "battery_s=600", "--param", "recharge_s=60", "--turnaround", "90s", "--out", out});
+    checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
+    if (QTest::currentTestFailed())
+        return;
+    QVERIFY2(run.standardOutput.contains(QStringLiteral(
+                 "each robot charges between sorties for its vehicle's turnaround: 1 min 30 s")),
+             qPrintable(run.standardOutput));
+    for (const QJsonValue& robot : readJsonObject(out + "/report.json").value("robots").toArray()) {
+        const QJsonObject figures = robot.toObject();
+        const int charges = figures.value("charges").toInt();
+        QVERIFY(charges > 0);
+        QCOMPARE(figures.value("charging_s").toDouble(), charges * turnaround);
+    }
 }
 
 // A charger away from the start (robots[0].charger): the first sortie begins at the start, every sortie
