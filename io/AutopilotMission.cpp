@@ -432,9 +432,11 @@ bool fliesSortiesFromItsStart(const CoveragePath& path, const RobotSorties* sort
     if (sorties == nullptr || sorties->sorties.size() < 2 || path.takeOff || path.waypoints.empty())
         return false;
     const Waypoint& start = path.waypoints.front();
+    constexpr double sameMetres = 1e-6; // a charger on a cell's centre may come back as that centre
     const auto atStart = [&](std::size_t waypoint) {
-        return waypoint < path.waypoints.size() && path.waypoints[waypoint].x == start.x &&
-               path.waypoints[waypoint].y == start.y;
+        return waypoint < path.waypoints.size() &&
+               std::hypot(path.waypoints[waypoint].x - start.x, path.waypoints[waypoint].y - start.y) <=
+                   sameMetres;
     };
     return std::all_of(sorties->sorties.begin(), sorties->sorties.end(), [&](const Sortie& sortie) {
         return atStart(sortie.firstWaypoint) && atStart(sortie.lastWaypoint);
@@ -480,8 +482,10 @@ MissionSize missionSize(const Plan& plan, const CoveragePath& path, const Vehicl
                         const ExportSettings& settings) {
     const AutopilotMission mission = robotMission(plan, path, vehicle, settings);
     const MissionFlights flights = missionFlights(mission, vehicle);
-    return {mission.items, mission.parts.size(), flights.longestSeconds, flights.overFlightTime,
-            flights.fieldSeconds};
+    const RobotSorties* sorties = sortiesOfRobot(plan, path.robot);
+    return {mission.items,          mission.parts.size(),
+            flights.longestSeconds, flights.overFlightTime,
+            flights.fieldSeconds,   fliesSortiesFromItsStart(path, sorties) ? sorties->sorties.size() : 0};
 }
 
 std::string flightsTooLongLead(const std::string& robotName, const VehicleSettings& vehicle,

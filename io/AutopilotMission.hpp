@@ -110,6 +110,7 @@ struct MissionSize {
     double longestPartSeconds = 0.0;
     std::size_t partsOverFlightTime = 0; // out of one flight's reach: a part holds at least two points
     double fieldSeconds = 0.0;           // the flights and the turnarounds between them
+    std::size_t sorties = 0;             // battery sorties from its start, each a part or more; 0: none
 };
 // How the window and the exports say that a robot's flights (a rover's mission parts) outlast its battery:
 // "Robot 1: 305 of its 883 flights take up to 1 h 9 min with the flights to and from its start, longer than

@@ -298,6 +298,10 @@ bool readClass(MissionReader& reader, const QJsonValue& value, const std::string
         return false;
     }
     entry.value = classValue;
+    // A speed given to a class the preset makes an obstacle asks to cross it.
+    if (presetRow != nullptr && !presetRow->passable && entry.speedMetresPerSecond > 0.0 &&
+        object.contains(QLatin1String("speed_mps")) && !object.contains(QLatin1String("passable")))
+        entry.passable = true;
     if (color) {
         const auto rgb = internal::parseColor(*color);
         if (!rgb || color->size() != 7)
@@ -885,14 +889,16 @@ std::vector<double> plannerBatteries(const Mission& mission) {
     return planner && planner->fliesOnBatteries() ? robotBatteries(mission) : std::vector<double>{};
 }
 
-std::vector<double> plannerRecharges(const Mission& mission) {
-    const auto planner = findPlannerDescription(mission.planner.planner);
-    if (!planner || !planner->fliesOnBatteries())
-        return {};
+std::vector<double> robotRecharges(const Mission& mission) {
     std::vector<double> recharges;
     for (const VehicleSettings& vehicle : robotVehicles(mission))
         recharges.push_back(vehicle.turnaroundSeconds);
     return recharges;
+}
+
+std::vector<double> plannerRecharges(const Mission& mission) {
+    const auto planner = findPlannerDescription(mission.planner.planner);
+    return planner && planner->fliesOnBatteries() ? robotRecharges(mission) : std::vector<double>{};
 }
 
 double vehicleBatterySeconds(const VehicleSettings& vehicle) {
@@ -1142,6 +1148,16 @@ std::string plannerBattery(const PlannerDescription& planner, const ParameterVal
     return {};
 }
 
+// "18 min 56 s for north-west and centre, 20 min for south-east": robots grouped by a duration.
+std::string durationsOfRobots(const Mission& mission,
+                              const std::map<double, std::vector<std::size_t>>& robotsBySeconds) {
+    std::string groups;
+    for (const auto& [seconds, robots] : robotsBySeconds)
+        groups +=
+            (groups.empty() ? "" : ", ") + formatDuration(seconds) + " for " + namedRobots(mission, robots);
+    return groups;
+}
+
 // For a planner that flies on batteries, where robots' batteries come from their vehicles' flight times:
 // what each robot's sorties are planned on, so that two settings of one battery do not part unseen.
 std::optional<std::string> batteriesFromFlightTimesNote(const Mission& mission,
@@ -1164,11 +1180,7 @@ std::optional<std::string> batteriesFromFlightTimesNote(const Mission& mission,
         return std::nullopt;
     std::string text = "sorties are planned on each vehicle's flight time, an aircraft's less its climb and "
                        "descent: ";
-    std::string groups;
-    for (const auto& [battery, robots] : fromVehicle)
-        groups +=
-            (groups.empty() ? "" : ", ") + formatDuration(battery) + " for " + namedRobots(mission, robots);
-    text += groups;
+    text += durationsOfRobots(mission, fromVehicle);
     if (!own.empty())
         text += "; " + namedRobots(mission, own) + " on " + (own.size() == 1 ? "its" : "their") +
                 " own battery_s";
@@ -1189,12 +1201,8 @@ std::optional<std::string> rechargesFromTurnaroundsNote(const Mission& mission,
         (recharges[robot] > 0.0 ? byTurnaround[recharges[robot]] : others).push_back(robot);
     if (byTurnaround.empty())
         return std::nullopt;
-    std::string text = "each robot charges between sorties for its vehicle's turnaround: ";
-    std::string groups;
-    for (const auto& [seconds, robots] : byTurnaround)
-        groups +=
-            (groups.empty() ? "" : ", ") + formatDuration(seconds) + " for " + namedRobots(mission, robots);
-    text += groups;
+    std::string text = "between sorties, robots charge for their vehicle's turnaround: ";
+    text += durationsOfRobots(mission, byTurnaround);
     if (!others.empty())
         text += "; " + namedRobots(mission, others) + ", without one, for the planner's recharge_s";
     return text;
@@ -1274,7 +1282,8 @@ FieldTimeInputs fieldTimeInputs(const Mission& mission) {
 
 void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, PlanningProblem& problem) {
     problem.batterySeconds = robotBatteries(mission);
-    problem.rechargeSeconds = plannerRecharges(mission);
+    // Every robot's, as batteries are: a comparison plans a battery planner on the problem of another.
+    problem.rechargeSeconds = robotRecharges(mission);
     problem.events = mission.events;
     const std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     problem.fieldSeconds = fieldSecondsOf(mission, vehicles);
@@ -1291,7 +1300,7 @@ void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, Plan
     if (auto batteries = batteriesFromFlightTimesNote(mission, vehicles))
         problem.notes.push_back(
             {IssueSeverity::Information, "batteries-from-flight-times", std::move(*batteries)});
-    if (auto recharges = rechargesFromTurnaroundsNote(mission, problem.rechargeSeconds))
+    if (auto recharges = rechargesFromTurnaroundsNote(mission, plannerRecharges(mission)))
         problem.notes.push_back(
             {IssueSeverity::Information, "recharges-from-turnarounds", std::move(*recharges)});
 }

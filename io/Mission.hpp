@@ -104,9 +104,11 @@ struct Mission {
 // The same where the mission's planner flies on batteries; empty for the others, whose plans no battery
 // shapes (a flight time changed for the waypoint files leaves their plans current).
 [[nodiscard]] std::vector<double> plannerBatteries(const Mission& mission);
-// Each robot's time at its charger between sorties in order where the mission's planner flies on batteries:
-// its vehicle's turnaround, as the waypoint files' field time counts it between flights; 0 without one
-// (the planner's recharge_s then). Empty for the other planners.
+// Each robot's time at its charger between sorties in order: its vehicle's turnaround, as the waypoint
+// files' field time counts it between flights; 0 without one (a battery planner's recharge_s then).
+[[nodiscard]] std::vector<double> robotRecharges(const Mission& mission);
+// The same where the mission's planner flies on batteries; empty for the others, whose plans no charging
+// shapes.
 [[nodiscard]] std::vector<double> plannerRecharges(const Mission& mission);
 // The cruise speed the whole fleet flies at, when every robot's vehicle has the same one; 0 when none has
 // one or when they differ.

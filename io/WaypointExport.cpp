@@ -616,8 +616,7 @@ std::string splitReason(const ExportContext& context, int robot, const Autopilot
         const bool more = mission.parts.size() > sorties;
         return std::string(isAircraft(vehicle.type) ? "flies " : "makes ") + std::to_string(sorties) +
                " sorties from its charger at its start" +
-               (more ? ", some with more items than its autopilot's " + std::to_string(vehicle.maxWaypoints)
-                     : std::string(", one part each"));
+               (more ? ", some in more than one part (its item limit or flight time)" : ", one part each");
     }
     if (vehicle.maxWaypoints > 0 && mission.items > vehicle.maxWaypoints)
         reasons.push_back("has " + std::to_string(mission.items) + " items, more than its autopilot's " +

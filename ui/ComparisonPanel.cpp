@@ -310,7 +310,9 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
     table_->setSortingEnabled(true);
     // Ratio, planning time and state (which says why a row has no "x 1st") were cut at the dock's usual
     // width, behind a scroll bar few users notice.
-    emit widthWanted(widthShowingEveryColumn());
+    // Asked once every plan is in: not wider with each planner done.
+    if (pending == 0)
+        emit widthWanted(widthShowingEveryColumn());
     // The soonest done first (of the plans that cover the most): what the user waits for, where a
     // balanced plan may still take longest.
     table_->sortByColumn(inTheField ? Home : Makespan, Qt::AscendingOrder);

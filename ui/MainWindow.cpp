@@ -495,9 +495,12 @@ void MainWindow::createDocks() {
     comparisonDock_ =
         makeDock(QStringLiteral("comparisonDock"), tr("Compare planners"), comparisonPanel_, this);
     connect(comparisonPanel_, &ComparisonPanel::widthWanted, this, [this](int pixels) {
-        // Wider, never narrower, and the map keeps at least half the window.
-        const int wanted = std::min(pixels, width() / 2);
-        if (comparisonDock_->isVisible() && wanted > comparisonDock_->width())
+        // Wider, never narrower, and the map keeps at least half the window; a floating dock is the
+        // user's to size.
+        const int frame = comparisonDock_->width() - comparisonPanel_->width();
+        const int wanted = std::min(pixels + frame, width() / 2);
+        if (comparisonDock_->isVisible() && !comparisonDock_->isFloating() &&
+            wanted > comparisonDock_->width())
             resizeDocks({comparisonDock_}, {wanted}, Qt::Horizontal);
     });
     addDockWidget(Qt::LeftDockWidgetArea, layersDock);
@@ -1964,13 +1967,14 @@ void MainWindow::nameRefusals(ComparisonOutcome& outcome) const {
 
 // raise: brings the dock forward (as the comparison starts and ends, not over a tab opened meanwhile).
 void MainWindow::showComparison(bool raise) {
+    // Shown first, so that the panel can be widened to its table as it fills.
+    if (raise) {
+        comparisonDock_->show();
+        comparisonDock_->raise();
+    }
     comparisonPanel_->showOutcome(comparison_, *document_->grid(), document_->classes(),
                                   document_->raster() != nullptr ? &document_->raster()->area : nullptr,
                                   document_->sharedRaster());
-    if (!raise)
-        return;
-    comparisonDock_->show();
-    comparisonDock_->raise();
 }
 
 // What the banner says while the window works out a plan or a comparison for this map.

@@ -67,6 +67,7 @@ PlanInputs MissionDocument::inputsOf(const io::Mission& mission) const {
             mission.planner,
             mission.events,
             io::plannerBatteries(mission),
+            io::plannerRecharges(mission),
             chargers(),
             io::robotCruiseSpeeds(mission),
             io::fieldTimeInputs(mission),

@@ -22,6 +22,7 @@ struct PlanInputs {
     PlannerChoice planner;
     std::vector<SpeedEvent> events = {};
     std::vector<double> batteries = {}; // each robot's own, 0 where it has none
+    std::vector<double> recharges = {}; // each robot's time at its charger (a battery planner's), 0: none
     std::vector<std::optional<MapPoint>> chargers = {};
     // Each robot's cruise speed, which the plan uses over every passable class; 0: the classes'.
     std::vector<double> cruiseSpeeds = {};

@@ -565,6 +565,7 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
     QStringList reasons; // beside split: why each robot's mission is
     int aboveItemLimit = 0;
     int forFlightTime = 0;
+    int inSorties = 0; // a battery plan's, each sortie a part
     int largest = 0;
     std::size_t overFlightTime = 0;
     double lastDone = 0.0;
@@ -574,11 +575,12 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
         overFlightTime += sizes[robot].partsOverFlightTime;
         lastDone = std::max(lastDone, sizes[robot].fieldSeconds);
         if (sizes[robot].parts > 1) {
+            const bool sorties = sizes[robot].sorties > 0;
             const bool forFlight =
-                robot < vehicles.size() && splitForFlightTime(sizes[robot], vehicles[robot]);
-            (forFlight ? forFlightTime : aboveItemLimit) += 1;
+                !sorties && robot < vehicles.size() && splitForFlightTime(sizes[robot], vehicles[robot]);
+            (sorties ? inSorties : forFlight ? forFlightTime : aboveItemLimit) += 1;
             split << tr("%1 in %2").arg(robotName(names, static_cast<int>(robot))).arg(sizes[robot].parts);
-            reasons << (forFlight ? tr("flight time") : tr("item limit"));
+            reasons << (sorties ? tr("sorties") : forFlight ? tr("flight time") : tr("item limit"));
             doneLater = doneLater || (robot < vehicles.size() && io::splitMissionEndsLater(vehicles[robot]));
         }
     }
@@ -598,7 +600,7 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
     if (split.isEmpty())
         return tr("one file per robot, the largest %1%2 items").arg(largest).arg(limit) + outOfReach;
     // Where robots are split for either reason, each says its own.
-    const bool mixed = aboveItemLimit > 0 && forFlightTime > 0;
+    const bool mixed = (aboveItemLimit > 0) + (forFlightTime > 0) + (inSorties > 0) > 1;
     if (mixed)
         for (qsizetype i = 0; i < split.size(); ++i)
             split[i] += tr(" (%1)").arg(reasons[i]);
@@ -608,7 +610,8 @@ QString ResultsPanel::waypointFilesText(const std::vector<io::MissionSize>& size
         split = split.mid(0, named) << tr("…");
     const QString robots = count == 1 ? tr("1 robot") : tr("%1 robots").arg(count);
     const QString shownLimit = limit.isEmpty() ? QString() : tr(" (%1)").arg(vehicles.front().maxWaypoints);
-    const QString header = mixed ? tr("%1 in parts").arg(robots)
+    const QString header = mixed       ? tr("%1 in parts").arg(robots)
+                           : inSorties ? tr("%1 in sorties, a part or more each").arg(robots)
                            : forFlightTime
                                ? tr("%1 over the flight time, in parts").arg(robots)
                                : tr("%1 above the item limit%2, in parts").arg(robots, shownLimit);

@@ -163,6 +163,15 @@ class MissionFilesTest : public QObject {
         QCOMPARE(row->fieldOfViewMetres, grass->fieldOfViewMetres);
         QCOMPARE(row->passable, grass->passable);
 
+        // A speed given to a class the preset makes an obstacle makes it passable.
+        const LandCoverClass* water = preset.find(80);
+        QVERIFY(water != nullptr && !water->passable);
+        const auto crossed =
+            missionWith(R"({"preset": "esa-worldcover", "table": [{"value": 80, "speed_mps": 1}]})");
+        QVERIFY2(crossed.ok(), crossed.ok() ? "" : crossed.error().c_str());
+        QVERIFY(crossed.value().classes.find(80)->passable);
+        QCOMPARE(crossed.value().classes.find(80)->fieldOfViewMetres, water->fieldOfViewMetres);
+
         const auto unknown =
             missionWith(R"({"preset": "esa-worldcover", "table": [{"value": 31, "speed_mps": 0.5}]})");
         QVERIFY(!unknown.ok());

@@ -376,6 +376,14 @@ class TestMainWindow : public QObject {
             ui::ResultsPanel::waypointFilesText({{1500, 3}, {380, 1}, {90, 6}}, vehicles, names);
         QCOMPARE(both,
                  QStringLiteral("2 robots in parts: north in 3 (item limit), south in 6 (flight time)"));
+        // A battery plan's sorties are its parts, whichever limit they are under: said so, not an item limit.
+        const QString sorties = ui::ResultsPanel::waypointFilesText(
+            {{1500, 5, 0.0, 0, 0.0, 5}, {380, 1}, {90, 1}}, vehicles, names);
+        QCOMPARE(sorties, QStringLiteral("1 robot in sorties, a part or more each: north in 5"));
+        const QString sortiesAndFlights = ui::ResultsPanel::waypointFilesText(
+            {{1500, 5, 0.0, 0, 0.0, 5}, {380, 1}, {90, 6}}, vehicles, names);
+        QCOMPARE(sortiesAndFlights,
+                 QStringLiteral("2 robots in parts: north in 5 (sorties), south in 6 (flight time)"));
         // A rover's parts take what its path takes: the makespan already says when it is done.
         const QString roverDone = ui::ResultsPanel::waypointFilesText(
             {{380, 1, 0.0, 0, 900.0}, {380, 1}, {90, 6, 1900.0, 2, 9000.0}}, vehicles, names);
