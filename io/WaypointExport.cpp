@@ -72,7 +72,6 @@ AutopilotMission missionFlownBy(const ExportContext& context, const CoveragePath
 }
 
 // The robot's cache entry, its mission made.
-
 ExportContext::MissionCache::Entry& missionEntryOf(const ExportContext& context, int robot) {
     std::shared_ptr<ExportContext::MissionCache::Entry> entry;
     {
@@ -606,13 +605,14 @@ std::size_t sortiesFlownFromStart(const ExportContext& context, int robot) {
     return coverage != nullptr && fliesSortiesFromItsStart(*coverage, sorties) ? sorties->sorties.size() : 0;
 }
 
-// Why the mission is in parts: "flies 53 sorties from its charger at its start, one part each", or "has 21
-// 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min, longer than its 25 min flight time".
+// Why the mission is in parts: "flies 53 sorties from its charger at its start, one part each", or
+// "has 21 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min, longer than its 25 min
+// flight time".
 std::string splitReason(const ExportContext& context, int robot, const AutopilotMission& mission) {
     const VehicleSettings& vehicle = context.vehicle(robot);
     std::vector<std::string> reasons;
     if (const std::size_t sorties = sortiesFlownFromStart(context, robot); sorties > 0) {
-        // Its sorties are its flights: each part of its own, or more where one holds too many items.
+        // Its sorties are its flights: a part each, or more under its item limit or flight time.
         const bool more = mission.parts.size() > sorties;
         return std::string(isAircraft(vehicle.type) ? "flies " : "makes ") + std::to_string(sorties) +
                " sorties from its charger at its start" +

@@ -309,8 +309,7 @@ void ComparisonPanel::showOutcome(const ComparisonOutcome& outcome, const ClassG
                              2 * table_->frameWidth() + table_->horizontalScrollBar()->sizeHint().height());
     table_->setSortingEnabled(true);
     // Ratio, planning time and state (which says why a row has no "x 1st") were cut at the dock's usual
-    // width, behind a scroll bar few users notice.
-    // Asked once every plan is in: not wider with each planner done.
+    // width, behind a scroll bar few users notice. Asked once every plan is in, not with each one done.
     if (pending == 0)
         emit widthWanted(widthShowingEveryColumn());
     // The soonest done first (of the plans that cover the most): what the user waits for, where a
