@@ -446,8 +446,8 @@ bool fliesSortiesFromItsStart(const CoveragePath& path, const RobotSorties* sort
 AutopilotMission sortieMission(const CoveragePath& path, const std::vector<Sortie>& sorties,
                                const VehicleSettings& vehicle, const ExportSettings& settings,
                                const CellGraph& cells) {
-    AutopilotMission whole;
-    whole.takeOff = path.takeOff;
+    AutopilotMission whole; // no takeOff: its sorties leave from its first point
+    whole.sorties = sorties.size();
     for (const Sortie& sortie : sorties) {
         AutopilotMission flight = autopilotMission(sortiePath(path, sortie), vehicle, settings, cells);
         // Each sortie keeps its own first point, at the charger where the one before ended, so that its
@@ -482,10 +482,8 @@ MissionSize missionSize(const Plan& plan, const CoveragePath& path, const Vehicl
                         const ExportSettings& settings) {
     const AutopilotMission mission = robotMission(plan, path, vehicle, settings);
     const MissionFlights flights = missionFlights(mission, vehicle);
-    const RobotSorties* sorties = sortiesOfRobot(plan, path.robot);
-    return {mission.items,          mission.parts.size(),
-            flights.longestSeconds, flights.overFlightTime,
-            flights.fieldSeconds,   fliesSortiesFromItsStart(path, sorties) ? sorties->sorties.size() : 0};
+    return {mission.items,          mission.parts.size(), flights.longestSeconds,
+            flights.overFlightTime, flights.fieldSeconds, mission.sorties};
 }
 
 std::string flightsTooLongLead(const std::string& robotName, const VehicleSettings& vehicle,

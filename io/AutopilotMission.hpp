@@ -33,6 +33,8 @@ struct AutopilotMission {
     int items = 0; // of the whole mission in one file
     // Where an aircraft takes off and lands when not at the first point (CoveragePath::takeOff).
     std::optional<MapPoint> takeOff;
+    // The battery sorties it flies from its start, a part or more each (sortieMission); 0: none.
+    std::size_t sorties = 0;
     // The time to fly it at the commanded speeds (each segment at the speed commanded for it) with the
     // plan's turn time; 0 when a speed is unknown.
     double seconds = 0.0;

@@ -56,16 +56,7 @@ std::string fieldFigure(const ComparisonRow& row, double seconds) {
 // Why a planned row is ranked after the plans timed alike (ComparisonRanking's ReadingGroup), in words
 // scripts can match; empty for those.
 std::string rankedApart(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {
-    switch (readingGroup(row, rows)) {
-    case ReadingGroup::OwnSpeedsIgnored:
-        return "own_speeds_ignored";
-    case ReadingGroup::FlightsOverBattery:
-        return "flights_over_battery";
-    case ReadingGroup::CoversLess:
-        return "covers_less";
-    default:
-        return {};
-    }
+    return rankedApartKey(readingGroup(row, rows));
 }
 
 } // namespace

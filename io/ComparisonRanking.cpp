@@ -28,6 +28,25 @@ bool someKeepOwnSpeeds(const std::vector<ComparisonRow>& rows, double most) {
     });
 }
 
+// Why plans in a group are ranked apart: a key for scripts and a few words for people, in one place.
+struct RankedApart {
+    ReadingGroup group;
+    const char* key;
+    const char* words;
+};
+constexpr RankedApart rankedApartGroups[] = {
+    {ReadingGroup::OwnSpeedsIgnored, "own_speeds_ignored", "at the class table's speeds"},
+    {ReadingGroup::FlightsOverBattery, "flights_over_battery", "flights too long"},
+    {ReadingGroup::CoversLess, "covers_less", "covers less"},
+};
+
+const RankedApart* rankedApartOf(ReadingGroup readingGroup) {
+    for (const RankedApart& apart : rankedApartGroups)
+        if (apart.group == readingGroup)
+            return &apart;
+    return nullptr;
+}
+
 } // namespace
 
 double doneAfterSeconds(const ComparisonRow& row) {
@@ -59,16 +78,13 @@ bool fliesPastItsBatteries(const ComparisonRow& row, const std::vector<Compariso
 }
 
 std::string rankedApartReason(ReadingGroup readingGroup) {
-    switch (readingGroup) {
-    case ReadingGroup::OwnSpeedsIgnored:
-        return "at the class table's speeds";
-    case ReadingGroup::FlightsOverBattery:
-        return "flights too long";
-    case ReadingGroup::CoversLess:
-        return "covers less";
-    default:
-        return {};
-    }
+    const RankedApart* apart = rankedApartOf(readingGroup);
+    return apart != nullptr ? apart->words : std::string();
+}
+
+std::string rankedApartKey(ReadingGroup readingGroup) {
+    const RankedApart* apart = rankedApartOf(readingGroup);
+    return apart != nullptr ? apart->key : std::string();
 }
 
 ReadingGroup readingGroup(const ComparisonRow& row, const std::vector<ComparisonRow>& rows) {

@@ -45,6 +45,8 @@ enum class ReadingGroup {
 // Why a planned plan in the group is ranked after the first whatever its time, in a few words for a table
 // cell or a caption ("flights too long"); empty for plans timed alike and for rows that did not plan.
 [[nodiscard]] std::string rankedApartReason(ReadingGroup readingGroup);
+// The same as a key scripts can match in comparison.csv and .json ("flights_over_battery"); empty alike.
+[[nodiscard]] std::string rankedApartKey(ReadingGroup readingGroup);
 
 // The rows' indices in reading order: by reading group, planned rows in a group by time done (ties by
 // planning time, then as given), failed and skipped rows as given.

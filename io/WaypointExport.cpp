@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <numeric>
 #include <optional>
+#include <unordered_map>
+#include <utility>
 
 namespace mcpp::io {
 
@@ -101,9 +103,16 @@ const ExportContext::MissionCache::Entry& placedMissionOf(const ExportContext& c
     return entry;
 }
 
+// Exact map coordinates as a key: the same point is the same longitude and latitude.
+struct MapCoordinatesHash {
+    std::size_t operator()(const std::pair<double, double>& point) const {
+        return std::hash<double>{}(point.first) * 0x9e3779b97f4a7c15ULL ^ std::hash<double>{}(point.second);
+    }
+};
+
 // Fills in the longitude and latitude of `points`, the path's points at `kept`. The robot's mission was made
-// from the same path and placed on WGS84 once for its waypoint files: a point where the mission's next point
-// lies takes its place from there, found walking the path and the mission side by side; the rest are
+// from the same path and placed on WGS84 once for its waypoint files: a point the mission holds takes its
+// place from there, wherever the mission added points along legs or repeated a charger; the rest are
 // transformed all in one.
 Status placeOnWgs84(const ExportContext& context, int robot, const CoveragePath& path,
                     const std::vector<std::size_t>& kept, std::vector<GeoWaypoint>& points) {
@@ -111,25 +120,21 @@ Status placeOnWgs84(const ExportContext& context, int robot, const CoveragePath&
     const std::vector<Waypoint>& missionPoints = mission.mission.points;
     const std::size_t placed =
         mission.placeError.empty() ? std::min(mission.lonLats.size(), missionPoints.size()) : 0;
+    std::unordered_map<std::pair<double, double>, std::size_t, MapCoordinatesHash> placedAt;
+    placedAt.reserve(placed);
+    for (std::size_t point = 0; point < placed; ++point)
+        placedAt.emplace(std::pair{missionPoints[point].x, missionPoints[point].y}, point);
     std::vector<std::size_t> unplaced;
     std::vector<MapPoint> mapPoints;
-    std::size_t next = 0; // the first mission point not met yet along the path
-    for (std::size_t index = 0, row = 0; index < path.waypoints.size() && row < kept.size(); ++index) {
-        const Waypoint& waypoint = path.waypoints[index];
-        const bool met =
-            next < placed && missionPoints[next].x == waypoint.x && missionPoints[next].y == waypoint.y;
-        if (kept[row] == index) {
-            if (met) {
-                points[row].longitude = mission.lonLats[next].longitude;
-                points[row].latitude = mission.lonLats[next].latitude;
-            } else {
-                unplaced.push_back(row);
-                mapPoints.push_back({waypoint.x, waypoint.y});
-            }
-            ++row;
+    for (std::size_t row = 0; row < kept.size(); ++row) {
+        const Waypoint& waypoint = path.waypoints[kept[row]];
+        if (const auto found = placedAt.find({waypoint.x, waypoint.y}); found != placedAt.end()) {
+            points[row].longitude = mission.lonLats[found->second].longitude;
+            points[row].latitude = mission.lonLats[found->second].latitude;
+        } else {
+            unplaced.push_back(row);
+            mapPoints.push_back({waypoint.x, waypoint.y});
         }
-        if (met)
-            ++next;
     }
     if (unplaced.empty())
         return {};
@@ -503,7 +508,7 @@ Status writeSortieMissions(const ExportContext& context, int robot, const Covera
     const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
     if (sorties == nullptr)
         return {}; // no battery plan: files beside `path` named like sorties are not ours to remove
-    if (fliesSortiesFromItsStart(coverage, sorties)) {
+    if (autopilotMissionOf(context, robot).sorties > 0) {
         removeStaleSortieFiles(path, 0); // its mission's parts are its sorties
         return {};
     }
@@ -553,9 +558,8 @@ const AutopilotMission& autopilotMissionOf(const ExportContext& context, int rob
 
 std::string sortieFilesNote(const ExportContext& context, int robot, const std::string& path) {
     const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
-    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
-    if (sorties == nullptr || sorties->sorties.size() < 2 || coverage == nullptr ||
-        fliesSortiesFromItsStart(*coverage, sorties))
+    if (sorties == nullptr || sorties->sorties.size() < 2 || pathOfRobot(context.plan, robot) == nullptr ||
+        autopilotMissionOf(context, robot).sorties > 0)
         return {};
     const auto name = [&](std::size_t sortie) {
         return std::filesystem::path(missionSortiePath(path, sortie, sorties->sorties.size()))
@@ -598,20 +602,13 @@ std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMissi
            (isAircraft(vehicle.type) ? ", flights to and from the start included" : "") + turnarounds;
 }
 
-// How many sorties the robot flies from its start, its mission's parts; 0 when it flies none so.
-std::size_t sortiesFlownFromStart(const ExportContext& context, int robot) {
-    const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
-    const CoveragePath* coverage = pathOfRobot(context.plan, robot);
-    return coverage != nullptr && fliesSortiesFromItsStart(*coverage, sorties) ? sorties->sorties.size() : 0;
-}
-
 // Why the mission is in parts: "flies 53 sorties from its charger at its start, one part each", or
 // "has 21 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min, longer than its 25 min
 // flight time".
 std::string splitReason(const ExportContext& context, int robot, const AutopilotMission& mission) {
     const VehicleSettings& vehicle = context.vehicle(robot);
     std::vector<std::string> reasons;
-    if (const std::size_t sorties = sortiesFlownFromStart(context, robot); sorties > 0) {
+    if (const std::size_t sorties = mission.sorties; sorties > 0) {
         // Its sorties are its flights: a part each, or more under its item limit or flight time.
         const bool more = mission.parts.size() > sorties;
         return std::string(isAircraft(vehicle.type) ? "flies " : "makes ") + std::to_string(sorties) +

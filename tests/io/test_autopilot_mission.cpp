@@ -345,11 +345,14 @@ class AutopilotMissionTest : public QObject {
         const ExportSettings settings = shaping(0.1, true);
         const AutopilotMission mission = sortieMission(path, sorties.sorties, drone, settings, noTurnPrice);
         QCOMPARE(mission.parts.size(), std::size_t{2});
+        QCOMPARE(mission.sorties, std::size_t{2});
+        QVERIFY(!mission.takeOff);
         int items = 0;
         double seconds = 0.0;
         for (std::size_t sortie = 0; sortie < 2; ++sortie) {
             const AutopilotMission alone =
                 autopilotMission(sortiePath(path, sorties.sorties[sortie]), drone, settings, noTurnPrice);
+            QCOMPARE(alone.sorties, std::size_t{0}); // one flight, as any path's mission
             const MissionPart& part = mission.parts[sortie];
             QCOMPARE(part.last - part.first + 1, alone.points.size());
             for (std::size_t point = 0; point < alone.points.size(); ++point) {
@@ -368,6 +371,7 @@ class AutopilotMissionTest : public QObject {
         drone.maxWaypoints = minimumMaxWaypoints;
         const AutopilotMission tight = sortieMission(path, sorties.sorties, drone, settings, noTurnPrice);
         QVERIFY(tight.parts.size() > 2);
+        QCOMPARE(tight.sorties, std::size_t{2}); // more parts than sorties
         const std::size_t firstSortieEnds = sortiePath(path, sorties.sorties[0]).waypoints.size();
         for (const MissionPart& part : tight.parts) {
             QVERIFY(part.items <= minimumMaxWaypoints);

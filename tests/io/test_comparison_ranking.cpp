@@ -242,6 +242,16 @@ void TestComparisonRanking::theExportsSayWhyAPlanIsRankedApart() {
     QVERIFY(!planners[3].toObject().contains("ranked_apart"));
     QCOMPARE(planners[1].toObject().value("flights_over_battery").toInt(), 124);
     QVERIFY(!planners[2].toObject().contains("flights_over_battery"));
+
+    // The window's words and the exports' keys name the same groups: each group apart has both, the
+    // others neither.
+    for (const io::ReadingGroup group : {io::ReadingGroup::OwnSpeedsIgnored,
+                                         io::ReadingGroup::FlightsOverBattery, io::ReadingGroup::CoversLess})
+        QVERIFY(!io::rankedApartReason(group).empty() && !io::rankedApartKey(group).empty());
+    QCOMPARE(io::rankedApartReason(io::ReadingGroup::FlightsOverBattery), std::string("flights too long"));
+    for (const io::ReadingGroup group :
+         {io::ReadingGroup::TimedAlike, io::ReadingGroup::Failed, io::ReadingGroup::Skipped})
+        QVERIFY(io::rankedApartReason(group).empty() && io::rankedApartKey(group).empty());
 }
 
 QTEST_APPLESS_MAIN(TestComparisonRanking)
