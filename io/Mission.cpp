@@ -107,12 +107,27 @@ class MissionReader {
                     return fail(join(path, key), "unknown key " +
                                                      std::string(path.empty() ? "at the top level" : "here") +
                                                      ": it belongs in " + placeOf(home->second, key));
-                const auto meant = closestName(key, {allowed.begin(), allowed.end()});
+                auto meant = closestName(key, {allowed.begin(), allowed.end()});
+                if (!meant)
+                    meant = commonNameFor(key, allowed);
                 return fail(join(path, key),
                             "unknown key" + (meant ? ": did you mean \"" + *meant + "\"?" : std::string()));
             }
         }
         return true;
+    }
+
+    // What other tools call a key that is ours under another name ("position" for a robot's "start").
+    static std::optional<std::string> commonNameFor(const std::string& key,
+                                                    const std::set<std::string>& allowed) {
+        static const std::map<std::string, std::string> ours = {
+            {"position", "start"}, {"location", "start"}, {"coordinates", "start"}, {"coords", "start"},
+            {"pos", "start"},      {"xy", "start"},       {"origin", "start"},      {"home", "start"},
+            {"robot", "robots"},   {"fleet", "robots"},   {"vehicles", "robots"},   {"drones", "robots"}};
+        const auto found = ours.find(lowercase(key));
+        if (found == ours.end() || allowed.count(found->second) == 0)
+            return std::nullopt;
+        return found->second;
     }
 
     static std::string join(const std::string& path, const std::string& key) {
@@ -990,8 +1005,9 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
     const double cruise = fleetCruiseSpeed(mission);
     if (cruise > 0.0) {
         std::vector<LandCoverClass> classes = problem.classes.classes();
+        // A class marked passable without a ground speed of its own is flown over at the cruise speed too.
         for (LandCoverClass& landCover : classes)
-            if (landCover.isTraversable())
+            if (landCover.passable)
                 landCover.speedMetresPerSecond = cruise;
         problem.classes = ClassTable(std::move(classes));
         problem.notes.push_back(
@@ -1267,6 +1283,37 @@ std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
     return limits;
 }
 
+// Classes on the map marked passable but given no speed: no robot covers or crosses them, whatever the
+// Passable box says, so a user who ticked it is told.
+std::optional<std::string> passableWithoutSpeedNote(const LoadedRaster& raster, const ClassTable& classes) {
+    std::int64_t inside = 0;
+    for (const auto& [value, count] : raster.classPixelCounts)
+        inside += count;
+    const double pixelArea = raster.grid.pixelWidth * raster.grid.pixelHeight;
+    std::vector<std::string> named;
+    for (const auto& [value, count] : raster.classPixelCounts) {
+        const LandCoverClass* landCover = classes.find(value);
+        if (landCover == nullptr || !landCover->passable || landCover->speedMetresPerSecond > 0.0 ||
+            count == 0)
+            continue;
+        const std::string name = landCover->name.empty() ? "class " + std::to_string(value) : landCover->name;
+        named.push_back(name + " (class " + std::to_string(value) + ", " +
+                        formatArea(static_cast<double>(count) * pixelArea) + ", " +
+                        formatPercent(static_cast<double>(count) / static_cast<double>(inside)) +
+                        " of the map)");
+    }
+    if (named.empty())
+        return std::nullopt;
+    std::string list;
+    for (std::size_t i = 0; i < named.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == named.size() ? " and " : ", ") + named[i];
+    const bool one = named.size() == 1;
+    return "the class table marks " + list + " passable but gives " + (one ? "it" : "them") +
+           " a speed of 0 m/s: no robot covers or crosses " + (one ? "it" : "them") +
+           ". Give a speed (the class table's Speed column; in a mission file, classes.table's speed_mps), "
+           "or a cruise speed to every robot";
+}
+
 } // namespace
 
 FieldTimeInputs fieldTimeInputs(const Mission& mission) {
@@ -1290,6 +1337,8 @@ void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, Plan
     problem.robotFlights = flightLimitsOf(mission, vehicles);
     problem.flyingRobots = flyingRobots(mission);
     applyCruiseSpeed(mission, vehicles, problem);
+    if (auto noSpeed = passableWithoutSpeedNote(raster, problem.classes))
+        problem.notes.push_back({IssueSeverity::Warning, "passable-without-speed", std::move(*noSpeed)});
     // The passes are spaced by the smallest field of view of a class on the map, not of the whole table.
     const std::vector<std::int32_t> present = presentClassValues(raster);
     const std::optional<double> smallest = smallestFieldOfView(problem.classes, present);

@@ -418,6 +418,19 @@ std::string startProblemAdvice(PlanningError::Kind kind, const FieldNamer& names
     return {};
 }
 
+namespace {
+
+// What to do about a charger the planner cannot use: unlike a start, it is not moved for the user.
+std::string chargerProblemAdvice(PlanningError::Kind kind) {
+    if (kind == PlanningError::Kind::StartOnObstacle)
+        return "; move it onto passable land";
+    if (kind == PlanningError::Kind::StartOutsideArea)
+        return "; a charger is read in the same CRS as the robot's start: move it into the task area";
+    return {};
+}
+
+} // namespace
+
 std::string robotsNamedIn(const std::string& message, const std::vector<std::string>& robotNames,
                           bool withIndex) {
     std::string named;
@@ -451,6 +464,9 @@ std::string messageForPeople(const std::string& message, const GeoReference& geo
 std::optional<std::string> planningErrorText(const PlanningError& error, const FieldNamer& names,
                                              const std::vector<std::string>& robotNames, bool withIndex) {
     const std::string robots = robotsNamedIn(error.detail(), robotNames, withIndex);
+    if (error.robot() >= 0 && error.aboutCharger())
+        return names(MissionField::charger(error.robot())) + ": " + error.detail() + robots +
+               chargerProblemAdvice(error.kind());
     if (error.robot() >= 0)
         return names(MissionField::start(error.robot())) + ": " + error.detail() + robots +
                startProblemAdvice(error.kind(), names);

@@ -52,7 +52,16 @@ std::optional<std::string> closestName(const std::string& typed, const std::vect
             bestDistance = distance;
         }
     }
-    return best;
+    if (best)
+        return best;
+    // A name with more around it ("robots" in "robots_list") means that name when it holds no other.
+    std::vector<std::string> held;
+    for (const std::string& name : known)
+        if (name.size() >= 4 && wanted.find(lowercase(name)) != std::string::npos)
+            held.push_back(name);
+    if (held.size() == 1)
+        return held.front();
+    return std::nullopt;
 }
 
 } // namespace mcpp

@@ -32,6 +32,13 @@ class PlanningError : public std::runtime_error {
         error.robot_ = robot;
         return error;
     }
+    // "robot 2 charger " + detail: a charger the problem gives (PlanningProblem::chargers).
+    static PlanningError aboutCharger(Kind kind, int robot, const std::string& detail) {
+        PlanningError error(kind, "robot " + std::to_string(robot + 1) + " charger " + detail, detail);
+        error.robot_ = robot;
+        error.charger_ = true;
+        return error;
+    }
     // "parameter key: " + detail, e.g. detail "must be from 0 to 1, got 2".
     static PlanningError aboutParameter(const std::string& key, const std::string& detail) {
         PlanningError error(Kind::InvalidParameter, "parameter " + key + ": " + detail, detail);
@@ -41,6 +48,7 @@ class PlanningError : public std::runtime_error {
 
     [[nodiscard]] Kind kind() const { return kind_; }
     [[nodiscard]] int robot() const { return robot_; }                        // -1 when about no one robot
+    [[nodiscard]] bool aboutCharger() const { return charger_; }              // else the robot's start
     [[nodiscard]] const std::string& parameter() const { return parameter_; } // empty when about no parameter
     [[nodiscard]] const std::string& detail() const { return detail_; }
 
@@ -50,6 +58,7 @@ class PlanningError : public std::runtime_error {
 
     Kind kind_;
     int robot_ = -1;
+    bool charger_ = false;
     std::string parameter_;
     std::string detail_;
 };

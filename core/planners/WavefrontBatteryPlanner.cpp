@@ -88,15 +88,14 @@ struct Chargers {
 };
 
 int chargerCell(PlanningRun& run, int robot, MapPoint point) {
-    const std::string who = "robot " + std::to_string(robot + 1) + " charger ";
     if (const auto problem = startPointProblem(run.problem().grid, run.problem().classes, point))
-        throw PlanningError(problem->kind,
-                            who + startRefusal(run.problem().grid, run.problem().classes, point, *problem));
+        throw PlanningError::aboutCharger(
+            problem->kind, robot, startRefusal(run.problem().grid, run.problem().classes, point, *problem));
     const int cell = run.plan().cells.cellAt(point);
     if (cell < 0)
-        throw PlanningError(PlanningError::Kind::StartOnObstacle,
-                            who + describePoint(point) +
-                                " lies in no cell of the planning grid: obstacles fill most of its cell");
+        throw PlanningError::aboutCharger(
+            PlanningError::Kind::StartOnObstacle, robot,
+            describePoint(point) + " lies in no cell of the planning grid: obstacles fill most of its cell");
     return cell;
 }
 

@@ -234,7 +234,18 @@ std::vector<BadInputCase> makeCases() {
          onRaster("good.tif", "good.csv",
                   {"--start", kStart, "--charger", kOnWater, "--planner", "wavefront-battery"}),
          2,
-         "robot 1 charger (500355, 5000045) is on an obstacle",
+         "--charger after --start 1: (500355, 5000045; longitude 15.0045163, latitude 45.1538822) is on an "
+         "obstacle: class 3 (Water), which robots cannot cross; move it onto passable land",
+         Gui::None,
+         {}},
+        {"charger outside the raster",
+         onRaster("good.tif", "good.csv",
+                  {"--start", kStart, "--charger", "15.0045,45.1538", "--planner", "wavefront-battery"}),
+         2,
+         "--charger after --start 1: (15, 45.15) is outside the raster, 5020 km south of it (x 500000.00 to "
+         "500400.00, y 5000000.00 to 5000400.00); a charger is read in the same CRS as the robot's start: "
+         "move "
+         "it into the task area",
          Gui::None,
          {}},
         {"start that is NaN",

@@ -302,6 +302,46 @@ class MissionFilesTest : public QObject {
         QVERIFY(warned(camera).empty());
     }
 
+    // A class marked passable without a speed stops every robot: the user who ticked it is told, unless
+    // every robot cruises, and then the robots fly over it at their cruise speed.
+    void aPassableClassWithoutASpeedIsWarnedOrCruisedOver() {
+        Mission mission = sampleMission();
+        for (RobotSpec& robot : mission.robots)
+            robot.vehicle.cruiseSpeedMetresPerSecond.reset();
+        mission.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
+        std::vector<LandCoverClass> classes = presetClassTable("esa-worldcover").value().classes();
+        for (LandCoverClass& landCover : classes)
+            if (landCover.value == 80) { // water: an obstacle in the preset, speed 0
+                QCOMPARE(landCover.speedMetresPerSecond, 0.0);
+                landCover.passable = true;
+            }
+        PlanningProblem given;
+        given.classes = ClassTable(classes);
+        const auto planned = [&] {
+            PlanningProblem problem = given;
+            applyRobotSettings(mission, rasterWithEvery(problem.classes), problem);
+            return problem;
+        };
+        const auto noteOf = [](const PlanningProblem& problem) {
+            const auto note =
+                std::find_if(problem.notes.begin(), problem.notes.end(),
+                             [](const PlanIssue& issue) { return issue.code == "passable-without-speed"; });
+            return note == problem.notes.end() ? std::string() : note->message;
+        };
+        const PlanningProblem ground = planned();
+        const std::string message = noteOf(ground);
+        QVERIFY2(message.find("(class 80, ") != std::string::npos &&
+                     message.find("a speed of 0 m/s") != std::string::npos,
+                 message.c_str());
+        QVERIFY(!ground.classes.find(80)->isTraversable());
+
+        mission.exports.vehicle.cruiseSpeedMetresPerSecond = 12.0;
+        const PlanningProblem cruising = planned();
+        QVERIFY2(noteOf(cruising).empty(), noteOf(cruising).c_str());
+        QCOMPARE(cruising.classes.find(80)->speedMetresPerSecond, 12.0);
+        QVERIFY(!cruising.classes.find(70)->isTraversable()); // snow and ice, not ticked: still an obstacle
+    }
+
     // classes.fov_m is written only when set, read back as written, and a footprint of no size is refused
     // by its key.
     void aFootprintOverEveryClassIsKeptInTheFile() {
@@ -801,6 +841,17 @@ class MissionFilesTest : public QObject {
         loaded = loadMission(path);
         QVERIFY(!loaded.ok());
         QCOMPARE(loaded.error(), path + ": exports.colour: unknown key");
+        // A known key with more round it, and what other tools call a robot's start, name ours.
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots_list": [{"start": [10, 20]}]})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path + ": robots_list: unknown key: did you mean \"robots\"?");
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"position": [10, 20]}]})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path + ": robots[0].position: unknown key: did you mean \"start\"?");
         // A key of an inner object given at the top level names the object it belongs in.
         writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
                             "robots": [{"start": [10, 20]}], "preset": "nlcd"})");
