@@ -18,6 +18,8 @@
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/LegendReader.hpp"
+#include "io/internal/ClassTablePresets.hpp"
+#include "io/internal/ProductRecognition.hpp"
 #include "io/internal/TextFiles.hpp"
 
 #include <QJsonArray>
@@ -1314,6 +1316,33 @@ std::optional<std::string> passableWithoutSpeedNote(const LoadedRaster& raster, 
            "or a cruise speed to every robot";
 }
 
+// A preset chosen for a raster recognised as another product: its rows may cover every value and still name,
+// time and size the classes as that other product's (a Canada land-cover map planned with CORINE's grid
+// codes reads needleleaf forest as continuous urban fabric). Said only where the raster names or colours
+// its product, not where its codes alone suggest one.
+std::optional<std::string> presetOfAnotherProductNote(const std::string& presetName,
+                                                      const LoadedRaster& raster) {
+    if (presetName.empty())
+        return std::nullopt;
+    const auto product = internal::recogniseProduct(raster);
+    if (!product || product->preset == presetName || product->evidence.starts_with("its codes"))
+        return std::nullopt;
+    const auto& presets = internal::presetDefinitions();
+    const auto chosen =
+        std::find_if(presets.begin(), presets.end(),
+                     [&](const internal::PresetDefinition& preset) { return preset.name == presetName; });
+    if (chosen != presets.end() && chosen->productName == product->productName)
+        return std::nullopt; // another preset of the same product
+    return "the raster is " + product->productName + " by " + product->evidence +
+           ", yet the classes are preset " + presetName + "'s" +
+           (chosen != presets.end() ? " (" + chosen->productName + ")" : std::string()) +
+           ": each class is named, timed and sized as that product's class of the same value. Choose the "
+           "preset " +
+           product->preset +
+           " (classes.preset; the Preset box in the window), unless the raster only looks like " +
+           product->productName;
+}
+
 } // namespace
 
 FieldTimeInputs fieldTimeInputs(const Mission& mission) {
@@ -1337,6 +1366,9 @@ void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, Plan
     problem.robotFlights = flightLimitsOf(mission, vehicles);
     problem.flyingRobots = flyingRobots(mission);
     applyCruiseSpeed(mission, vehicles, problem);
+    if (auto otherProduct = presetOfAnotherProductNote(mission.preset, raster))
+        problem.notes.push_back(
+            {IssueSeverity::Warning, "preset-of-another-product", std::move(*otherProduct)});
     if (auto noSpeed = passableWithoutSpeedNote(raster, problem.classes))
         problem.notes.push_back({IssueSeverity::Warning, "passable-without-speed", std::move(*noSpeed)});
     // The passes are spaced by the smallest field of view of a class on the map, not of the whole table.

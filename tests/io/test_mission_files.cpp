@@ -342,6 +342,34 @@ class MissionFilesTest : public QObject {
         QVERIFY(!cruising.classes.find(70)->isTraversable()); // snow and ice, not ticked: still an obstacle
     }
 
+    // A preset of another product than the one the raster names is warned of; the raster's own preset, or
+    // none, is not.
+    void aPresetOfAnotherProductIsWarnedOf() {
+        Mission mission = sampleMission();
+        LoadedRaster raster = rasterWithEvery(presetClassTable("canada-landcover").value());
+        raster.path = "/data/nrcan_landcover_2015.tif"; // its file name names the product
+        const auto warning = [&](const std::string& preset) {
+            mission.preset = preset;
+            PlanningProblem problem;
+            problem.classes = presetClassTable("canada-landcover").value();
+            applyRobotSettings(mission, raster, problem);
+            const auto note =
+                std::find_if(problem.notes.begin(), problem.notes.end(), [](const PlanIssue& issue) {
+                    return issue.code == "preset-of-another-product";
+                });
+            return note == problem.notes.end() ? std::string() : note->message;
+        };
+        const std::string message = warning("corine-grid");
+        QVERIFY2(message.find("by its file name, yet the classes are preset corine-grid's") !=
+                         std::string::npos &&
+                     message.find("Choose the preset canada-landcover") != std::string::npos,
+                 message.c_str());
+        QVERIFY(warning("canada-landcover").empty());
+        QVERIFY(warning("").empty());
+        raster.path = "/data/map.tif"; // nothing names it: its codes alone do not make it Canada's
+        QVERIFY(warning("corine-grid").empty());
+    }
+
     // classes.fov_m is written only when set, read back as written, and a footprint of no size is refused
     // by its key.
     void aFootprintOverEveryClassIsKeptInTheFile() {
