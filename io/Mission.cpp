@@ -14,11 +14,11 @@
 #include "io/GeoReference.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/internal/ClassTableJson.hpp"
+#include "io/internal/ClassTablePresets.hpp"
 #include "io/internal/EventsJson.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/LegendReader.hpp"
-#include "io/internal/ClassTablePresets.hpp"
 #include "io/internal/ProductRecognition.hpp"
 #include "io/internal/TextFiles.hpp"
 
