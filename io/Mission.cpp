@@ -19,6 +19,7 @@
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/LegendReader.hpp"
+#include "io/internal/MapClassList.hpp"
 #include "io/internal/ProductRecognition.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -1288,29 +1289,14 @@ std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
 // Classes on the map marked passable but given no speed: no robot covers or crosses them, whatever the
 // Passable box says, so a user who ticked it is told.
 std::optional<std::string> passableWithoutSpeedNote(const LoadedRaster& raster, const ClassTable& classes) {
-    std::int64_t inside = 0;
-    for (const auto& [value, count] : raster.classPixelCounts)
-        inside += count;
-    const double pixelArea = raster.grid.pixelWidth * raster.grid.pixelHeight;
-    std::vector<std::string> named;
-    for (const auto& [value, count] : raster.classPixelCounts) {
-        const LandCoverClass* landCover = classes.find(value);
-        if (landCover == nullptr || !landCover->passable || landCover->speedMetresPerSecond > 0.0 ||
-            count == 0)
-            continue;
-        const std::string name = landCover->name.empty() ? "class " + std::to_string(value) : landCover->name;
-        named.push_back(name + " (class " + std::to_string(value) + ", " +
-                        formatArea(static_cast<double>(count) * pixelArea) + ", " +
-                        formatPercent(static_cast<double>(count) / static_cast<double>(inside)) +
-                        " of the map)");
-    }
-    if (named.empty())
+    const internal::MapClassList stopped =
+        internal::mapClassList(raster, classes, [](const LandCoverClass& row) {
+            return row.passable && !(row.speedMetresPerSecond > 0.0);
+        });
+    if (stopped.classes == 0)
         return std::nullopt;
-    std::string list;
-    for (std::size_t i = 0; i < named.size(); ++i)
-        list += (i == 0 ? "" : i + 1 == named.size() ? " and " : ", ") + named[i];
-    const bool one = named.size() == 1;
-    return "the class table marks " + list + " passable but gives " + (one ? "it" : "them") +
+    const bool one = stopped.classes == 1;
+    return "the class table marks " + stopped.text + " passable but gives " + (one ? "it" : "them") +
            " a speed of 0 m/s: no robot covers or crosses " + (one ? "it" : "them") +
            ". Give a speed (the class table's Speed column; in a mission file, classes.table's speed_mps), "
            "or a cruise speed to every robot";
