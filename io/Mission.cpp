@@ -14,12 +14,10 @@
 #include "io/GeoReference.hpp"
 #include "io/LoadedRaster.hpp"
 #include "io/internal/ClassTableJson.hpp"
-#include "io/internal/ClassTablePresets.hpp"
 #include "io/internal/EventsJson.hpp"
 #include "io/internal/GdalSupport.hpp"
 #include "io/internal/JsonValue.hpp"
 #include "io/internal/LegendReader.hpp"
-#include "io/internal/MapClassList.hpp"
 #include "io/internal/ProductRecognition.hpp"
 #include "io/internal/TextFiles.hpp"
 
@@ -110,9 +108,9 @@ class MissionReader {
                     return fail(join(path, key), "unknown key " +
                                                      std::string(path.empty() ? "at the top level" : "here") +
                                                      ": it belongs in " + placeOf(home->second, key));
-                auto meant = closestName(key, {allowed.begin(), allowed.end()});
+                auto meant = commonNameFor(key, allowed);
                 if (!meant)
-                    meant = commonNameFor(key, allowed);
+                    meant = closestName(key, {allowed.begin(), allowed.end()});
                 return fail(join(path, key),
                             "unknown key" + (meant ? ": did you mean \"" + *meant + "\"?" : std::string()));
             }
@@ -320,6 +318,16 @@ bool readClass(MissionReader& reader, const QJsonValue& value, const std::string
     if (presetRow != nullptr && !presetRow->passable && entry.speedMetresPerSecond > 0.0 &&
         object.contains(QLatin1String("speed_mps")) && !object.contains(QLatin1String("passable")))
         entry.passable = true;
+    // Ticking passable alone beside the preset's obstacle leaves its speed of 0: still an obstacle. (The
+    // window writes whole rows, so a file it saved never meets this.)
+    if (presetRow != nullptr && entry.passable && object.contains(QLatin1String("passable")) &&
+        !object.contains(QLatin1String("speed_mps")) && !(entry.speedMetresPerSecond > 0.0))
+        return reader.fail(MissionReader::join(path, "passable"),
+                           "true, but the preset " + presetName + " gives class " +
+                               std::to_string(classValue) +
+                               (entry.name.empty() ? std::string() : " (" + entry.name + ")") +
+                               " a speed of " + formatQuantity(entry.speedMetresPerSecond) +
+                               " m/s, which keeps it an obstacle: give speed_mps too");
     if (color) {
         const auto rgb = internal::parseColor(*color);
         if (!rgb || color->size() != 7)
@@ -1008,9 +1016,8 @@ void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>
     const double cruise = fleetCruiseSpeed(mission);
     if (cruise > 0.0) {
         std::vector<LandCoverClass> classes = problem.classes.classes();
-        // A class marked passable without a ground speed of its own is flown over at the cruise speed too.
         for (LandCoverClass& landCover : classes)
-            if (landCover.passable)
+            if (landCover.isTraversable())
                 landCover.speedMetresPerSecond = cruise;
         problem.classes = ClassTable(std::move(classes));
         problem.notes.push_back(
@@ -1286,46 +1293,28 @@ std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
     return limits;
 }
 
-// Classes on the map marked passable but given no speed: no robot covers or crosses them, whatever the
-// Passable box says, so a user who ticked it is told.
-std::optional<std::string> passableWithoutSpeedNote(const LoadedRaster& raster, const ClassTable& classes) {
-    const internal::MapClassList stopped =
-        internal::mapClassList(raster, classes, [](const LandCoverClass& row) {
-            return row.passable && !(row.speedMetresPerSecond > 0.0);
-        });
-    if (stopped.classes == 0)
-        return std::nullopt;
-    const bool one = stopped.classes == 1;
-    return "the class table marks " + stopped.text + " passable but gives " + (one ? "it" : "them") +
-           " a speed of 0 m/s: no robot covers or crosses " + (one ? "it" : "them") +
-           ". Give a speed (the class table's Speed column; in a mission file, classes.table's speed_mps), "
-           "or a cruise speed to every robot";
-}
-
 // A preset chosen for a raster recognised as another product: its rows may cover every value and still name,
 // time and size the classes as that other product's (a Canada land-cover map planned with CORINE's grid
 // codes reads needleleaf forest as continuous urban fabric). Said only where the raster names or colours
 // its product, not where its codes alone suggest one.
-std::optional<std::string> presetOfAnotherProductNote(const std::string& presetName,
-                                                      const LoadedRaster& raster) {
-    if (presetName.empty())
+std::optional<std::string> presetOfAnotherProductNote(const Mission& mission, const LoadedRaster& raster) {
+    if (mission.preset.empty())
         return std::nullopt;
-    const auto product = internal::recogniseProduct(raster);
-    if (!product || product->preset == presetName || product->evidence.starts_with("its codes"))
+    // Where the mission's own rows cover every class on the map, the preset gives none of them.
+    const bool presetGivesSome =
+        std::any_of(raster.classPixelCounts.begin(), raster.classPixelCounts.end(), [&](const auto& counted) {
+            return counted.second > 0 && mission.classes.find(counted.first) == nullptr;
+        });
+    const auto product = presetGivesSome ? internal::recogniseProduct(raster) : std::nullopt;
+    if (!product || product->preset == mission.preset || product->evidence.starts_with("its codes"))
         return std::nullopt;
-    const auto& presets = internal::presetDefinitions();
-    const auto chosen =
-        std::find_if(presets.begin(), presets.end(),
-                     [&](const internal::PresetDefinition& preset) { return preset.name == presetName; });
-    if (chosen != presets.end() && chosen->productName == product->productName)
-        return std::nullopt; // another preset of the same product
     return "the raster is " + product->productName + " by " + product->evidence +
-           ", yet the classes are preset " + presetName + "'s" +
-           (chosen != presets.end() ? " (" + chosen->productName + ")" : std::string()) +
-           ": each class is named, timed and sized as that product's class of the same value. Choose the "
-           "preset " +
+           ", yet the classes are preset " + mission.preset +
+           "'s: the classes its rows give are named, timed and sized as that product's classes of the same "
+           "values. Choose the preset " +
            product->preset +
-           " (classes.preset; the Preset box in the window), unless the raster only looks like " +
+           " (classes.preset in a mission file, --preset on the command line, the Preset box in the window), "
+           "unless the raster only looks like " +
            product->productName;
 }
 
@@ -1352,11 +1341,9 @@ void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, Plan
     problem.robotFlights = flightLimitsOf(mission, vehicles);
     problem.flyingRobots = flyingRobots(mission);
     applyCruiseSpeed(mission, vehicles, problem);
-    if (auto otherProduct = presetOfAnotherProductNote(mission.preset, raster))
+    if (auto otherProduct = presetOfAnotherProductNote(mission, raster))
         problem.notes.push_back(
             {IssueSeverity::Warning, "preset-of-another-product", std::move(*otherProduct)});
-    if (auto noSpeed = passableWithoutSpeedNote(raster, problem.classes))
-        problem.notes.push_back({IssueSeverity::Warning, "passable-without-speed", std::move(*noSpeed)});
     // The passes are spaced by the smallest field of view of a class on the map, not of the whole table.
     const std::vector<std::int32_t> present = presentClassValues(raster);
     const std::optional<double> smallest = smallestFieldOfView(problem.classes, present);

@@ -11,7 +11,6 @@
 #include "io/ClassTableSources.hpp"
 #include "io/PointsInDegrees.hpp"
 #include "io/internal/ClassTablePresets.hpp"
-#include "io/internal/MapClassList.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -427,6 +426,8 @@ std::string chargerProblemAdvice(PlanningError::Kind kind) {
         return "; move it onto passable land";
     if (kind == PlanningError::Kind::StartOutsideArea)
         return "; a charger is read in the same CRS as the robot's start: move it into the task area";
+    if (kind == PlanningError::Kind::StartsShareCell)
+        return "; each charger needs a cell of its own: place it farther from the other";
     return {};
 }
 
@@ -539,13 +540,27 @@ std::optional<std::string> impassableUnderAircraftNote(const LoadedRaster& raste
                                                        const std::vector<bool>& flyingRobots) {
     if (flyingRobots.empty() || !std::all_of(flyingRobots.begin(), flyingRobots.end(), std::identity()))
         return std::nullopt;
-    // Only those marked impassable: the Passable box is what the note asks to tick.
-    const internal::MapClassList obstacles =
-        internal::mapClassList(raster, classes, [](const LandCoverClass& row) { return !row.passable; });
-    if (obstacles.classes == 0)
+    std::int64_t inside = 0;
+    for (const auto& [value, count] : raster.classPixelCounts)
+        inside += count;
+    const double pixelArea = raster.grid.pixelWidth * raster.grid.pixelHeight;
+    std::vector<std::string> named;
+    for (const auto& [value, count] : raster.classPixelCounts) {
+        const LandCoverClass* landCover = classes.find(value);
+        // Only those marked impassable: the Passable box is what the note asks to tick.
+        if (landCover == nullptr || landCover->passable || count == 0)
+            continue;
+        const std::string name = landCover->name.empty() ? "class " + std::to_string(value) : landCover->name;
+        named.push_back(name + " (" + formatArea(static_cast<double>(count) * pixelArea) + ", " +
+                        formatPercent(static_cast<double>(count) / static_cast<double>(inside)) +
+                        " of the map)");
+    }
+    if (named.empty())
         return std::nullopt;
-    const std::string& list = obstacles.text;
-    const bool one = obstacles.classes == 1;
+    std::string list;
+    for (std::size_t i = 0; i < named.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == named.size() ? " and " : ", ") + named[i];
+    const bool one = named.size() == 1;
     const bool alone = flyingRobots.size() == 1;
     return std::string(alone ? "the robot flies" : "every robot flies") + ", yet the class table makes " +
            list + (one ? " an obstacle" : " obstacles") +

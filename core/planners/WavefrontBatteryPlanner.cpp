@@ -126,10 +126,10 @@ Chargers locateChargers(PlanningRun& run, const std::vector<int>& startCells,
         chargers.cells[robot] = chargerCell(run, index, chargers.points[robot]);
         int& owner = robotOfCell[static_cast<std::size_t>(chargers.cells[robot])];
         if (owner >= 0)
-            throw PlanningError(
-                PlanningError::Kind::StartsShareCell,
-                "robot " + std::to_string(index + 1) + " charger " + describePoint(chargers.points[robot]) +
-                    " is in the same cell as robot " + std::to_string(owner + 1) +
+            throw PlanningError::aboutCharger(
+                PlanningError::Kind::StartsShareCell, index,
+                describePoint(chargers.points[robot]) + " is in the same cell as robot " +
+                    std::to_string(owner + 1) +
                     (chargesElsewhere(run, static_cast<std::size_t>(owner)) ? "'s charger"
                                                                             : "'s start and charger"));
         owner = index;

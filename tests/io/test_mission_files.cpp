@@ -171,6 +171,15 @@ class MissionFilesTest : public QObject {
         QVERIFY2(crossed.ok(), crossed.ok() ? "" : crossed.error().c_str());
         QVERIFY(crossed.value().classes.find(80)->passable);
         QCOMPARE(crossed.value().classes.find(80)->fieldOfViewMetres, water->fieldOfViewMetres);
+        // Ticking passable alone leaves the preset's speed of 0: refused, naming the speed to give.
+        const auto stillAWall =
+            missionWith(R"({"preset": "esa-worldcover", "table": [{"value": 80, "passable": true}]})");
+        QVERIFY(!stillAWall.ok());
+        QCOMPARE(
+            stillAWall.error(),
+            std::string("mission.json: classes.table[0].passable: true, but the preset esa-worldcover gives "
+                        "class 80 (Permanent water bodies) a speed of 0 m/s, which keeps it an obstacle: "
+                        "give speed_mps too"));
 
         const auto unknown =
             missionWith(R"({"preset": "esa-worldcover", "table": [{"value": 31, "speed_mps": 0.5}]})");
@@ -302,46 +311,6 @@ class MissionFilesTest : public QObject {
         QVERIFY(warned(camera).empty());
     }
 
-    // A class marked passable without a speed stops every robot: the user who ticked it is told, unless
-    // every robot cruises, and then the robots fly over it at their cruise speed.
-    void aPassableClassWithoutASpeedIsWarnedOrCruisedOver() {
-        Mission mission = sampleMission();
-        for (RobotSpec& robot : mission.robots)
-            robot.vehicle.cruiseSpeedMetresPerSecond.reset();
-        mission.exports.vehicle.cruiseSpeedMetresPerSecond = 0.0;
-        std::vector<LandCoverClass> classes = presetClassTable("esa-worldcover").value().classes();
-        for (LandCoverClass& landCover : classes)
-            if (landCover.value == 80) { // water: an obstacle in the preset, speed 0
-                QCOMPARE(landCover.speedMetresPerSecond, 0.0);
-                landCover.passable = true;
-            }
-        PlanningProblem given;
-        given.classes = ClassTable(classes);
-        const auto planned = [&] {
-            PlanningProblem problem = given;
-            applyRobotSettings(mission, rasterWithEvery(problem.classes), problem);
-            return problem;
-        };
-        const auto noteOf = [](const PlanningProblem& problem) {
-            const auto note =
-                std::find_if(problem.notes.begin(), problem.notes.end(),
-                             [](const PlanIssue& issue) { return issue.code == "passable-without-speed"; });
-            return note == problem.notes.end() ? std::string() : note->message;
-        };
-        const PlanningProblem ground = planned();
-        const std::string message = noteOf(ground);
-        QVERIFY2(message.find("(class 80, ") != std::string::npos &&
-                     message.find("a speed of 0 m/s") != std::string::npos,
-                 message.c_str());
-        QVERIFY(!ground.classes.find(80)->isTraversable());
-
-        mission.exports.vehicle.cruiseSpeedMetresPerSecond = 12.0;
-        const PlanningProblem cruising = planned();
-        QVERIFY2(noteOf(cruising).empty(), noteOf(cruising).c_str());
-        QCOMPARE(cruising.classes.find(80)->speedMetresPerSecond, 12.0);
-        QVERIFY(!cruising.classes.find(70)->isTraversable()); // snow and ice, not ticked: still an obstacle
-    }
-
     // A preset of another product than the one the raster names is warned of; the raster's own preset, or
     // none, is not.
     void aPresetOfAnotherProductIsWarnedOf() {
@@ -366,6 +335,10 @@ class MissionFilesTest : public QObject {
                  message.c_str());
         QVERIFY(warning("canada-landcover").empty());
         QVERIFY(warning("").empty());
+        const ClassTable ownRows = mission.classes;
+        mission.classes = presetClassTable("canada-landcover").value(); // rows of its own for every class
+        QVERIFY(warning("corine-grid").empty());
+        mission.classes = ownRows;
         raster.path = "/data/map.tif"; // nothing names it: its codes alone do not make it Canada's
         QVERIFY(warning("corine-grid").empty());
     }
@@ -870,16 +843,18 @@ class MissionFilesTest : public QObject {
         QVERIFY(!loaded.ok());
         QCOMPARE(loaded.error(), path + ": exports.colour: unknown key");
         // A known key with more round it, and what other tools call a robot's start, name ours.
-        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
-                            "robots_list": [{"start": [10, 20]}]})");
-        loaded = loadMission(path);
-        QVERIFY(!loaded.ok());
-        QCOMPARE(loaded.error(), path + ": robots_list: unknown key: did you mean \"robots\"?");
-        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
-                            "robots": [{"position": [10, 20]}]})");
-        loaded = loadMission(path);
-        QVERIFY(!loaded.ok());
-        QCOMPARE(loaded.error(), path + ": robots[0].position: unknown key: did you mean \"start\"?");
+        const std::vector<std::pair<std::string, std::string>> otherNames{
+            {R"("robots_list": [{"start": [10, 20]}])", "robots_list: unknown key: did you mean \"robots\"?"},
+            {R"("robots": [{"position": [10, 20]}])",
+             "robots[0].position: unknown key: did you mean \"start\"?"},
+            {R"("robots": [{"home": [10, 20]}])", "robots[0].home: unknown key: did you mean \"start\"?"}};
+        for (const auto& [robots, error] : otherNames) {
+            writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"}, )" +
+                                robots + "}");
+            loaded = loadMission(path);
+            QVERIFY(!loaded.ok());
+            QCOMPARE(loaded.error(), path + ": " + error); // "home" is not "name", two letters off
+        }
         // A key of an inner object given at the top level names the object it belongs in.
         writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
                             "robots": [{"start": [10, 20]}], "preset": "nlcd"})");
