@@ -1300,10 +1300,16 @@ std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
 std::optional<std::string> presetOfAnotherProductNote(const Mission& mission, const LoadedRaster& raster) {
     if (mission.preset.empty())
         return std::nullopt;
-    // Where the mission's own rows cover every class on the map, the preset gives none of them.
+    const auto preset = presetClassTable(mission.preset);
+    if (!preset)
+        return std::nullopt;
+    // A class the mission has no row for, or one named as the preset names it (the window holds the
+    // preset's rows as its own), is the preset's; where the rows rename every class on the map, none is.
     const bool presetGivesSome =
         std::any_of(raster.classPixelCounts.begin(), raster.classPixelCounts.end(), [&](const auto& counted) {
-            return counted.second > 0 && mission.classes.find(counted.first) == nullptr;
+            const LandCoverClass* own = mission.classes.find(counted.first);
+            const LandCoverClass* given = preset.value().find(counted.first);
+            return counted.second > 0 && given != nullptr && (own == nullptr || own->name == given->name);
         });
     const auto product = presetGivesSome ? internal::recogniseProduct(raster) : std::nullopt;
     if (!product || product->preset == mission.preset || product->evidence.starts_with("its codes"))

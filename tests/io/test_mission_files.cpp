@@ -338,6 +338,9 @@ class MissionFilesTest : public QObject {
         const ClassTable ownRows = mission.classes;
         mission.classes = presetClassTable("canada-landcover").value(); // rows of its own for every class
         QVERIFY(warning("corine-grid").empty());
+        mission.classes =
+            presetClassTable("corine-grid").value(); // the preset's rows, as the window holds them
+        QVERIFY(!warning("corine-grid").empty());
         mission.classes = ownRows;
         raster.path = "/data/map.tif"; // nothing names it: its codes alone do not make it Canada's
         QVERIFY(warning("corine-grid").empty());
