@@ -148,23 +148,28 @@ double flightSeconds(const AutopilotMission& mission) {
 
 // The time of one flight along a part of a mission, kept as points are added, so that a part can be held
 // against a battery point by point: the legs at their commanded speeds, the turns priced as the plan prices
-// them, and for an aircraft its climb to the mission's altitude, the trips from home (AutopilotMission::home)
-// and back, and its descent.
+// them, and for an aircraft its climb to the mission's altitude, the trips from home
+// (AutopilotMission::homeOf) and back (none back when it lands at its last point), and its descent.
 class FlightClock {
   public:
-    FlightClock(const AutopilotMission& mission, const VehicleSettings& vehicle, const CellGraph& cells)
-        : mission_(&mission), cells_(&cells), fromHome_(isAircraft(vehicle.type)),
+    static constexpr std::size_t noLanding = std::numeric_limits<std::size_t>::max();
+
+    // landing: the point where a flight ending there lands (noLanding: each flight returns home).
+    FlightClock(const AutopilotMission& mission, const VehicleSettings& vehicle, const CellGraph& cells,
+                std::size_t landing = noLanding)
+        : mission_(&mission), cells_(&cells), landing_(landing), fromHome_(isAircraft(vehicle.type)),
           climbSeconds_(fromHome_ ? vehicle.altitudeMetres / climbMetresPerSecond : 0.0),
           descentSeconds_(fromHome_ ? vehicle.altitudeMetres / descentMetresPerSecond : 0.0) {}
 
-    // A new flight from the part's first point (after the trip to it from home).
-    void begin(std::size_t first) {
+    // A new flight from the part's home to its first point.
+    void begin(const MissionPart& part) {
         unknown_ = false;
         heading_.reset();
-        last_ = first;
+        last_ = part.first;
+        part_ = part;
         seconds_ = climbSeconds_;
         if (fromHome_)
-            fly(mission_->home(), mission_->points[first], mission_->commandedSpeeds[first]);
+            fly(mission_->homeOf(part_), mission_->points[part.first], mission_->commandedSpeeds[part.first]);
         tripOut_ = seconds_;
     }
     // On to the next point of the mission.
@@ -172,11 +177,12 @@ class FlightClock {
         ++last_;
         fly(mission_->points[last_ - 1], mission_->points[last_], mission_->commandedSpeeds[last_]);
     }
-    // The flight ending at the last point added (and back home); 0 when a speed is unknown.
+    // The flight ending at the last point added (and back home unless it lands there); 0 when a speed is
+    // unknown.
     [[nodiscard]] double seconds() const {
         FlightClock ended = *this;
-        if (fromHome_)
-            ended.fly(mission_->points[last_], mission_->home(), mission_->commandedSpeeds[last_]);
+        if (fromHome_ && last_ != landing_)
+            ended.fly(mission_->points[last_], mission_->homeOf(part_), mission_->commandedSpeeds[last_]);
         return ended.unknown_ ? 0.0 : ended.seconds_ + descentSeconds_;
     }
     // The same without the trips from home and back: the work one flight does.
@@ -198,6 +204,7 @@ class FlightClock {
 
     const AutopilotMission* mission_;
     const CellGraph* cells_;
+    std::size_t landing_ = noLanding;
     bool fromHome_ = false;
     double climbSeconds_ = 0.0;
     double descentSeconds_ = 0.0;
@@ -206,6 +213,7 @@ class FlightClock {
     bool unknown_ = false;
     std::optional<std::pair<double, double>> heading_; // of the last leg of non-zero length
     std::size_t last_ = 0;
+    MissionPart part_; // the part flown, for where it takes off
 };
 
 // Legs split into pieces of at most a fortieth of a flight, so that a part can end part way along a leg
@@ -240,6 +248,14 @@ void splitLongLegs(AutopilotMission& mission, double flightSeconds) {
     mission.commandedSpeeds = std::move(split.commandedSpeeds);
 }
 
+// The seconds of one flight along the mission from its first point to `last`.
+double wholeFlight(FlightClock clock, std::size_t last) {
+    clock.begin({0, 0});
+    for (std::size_t point = 0; point < last; ++point)
+        clock.extend();
+    return clock.seconds();
+}
+
 // What one part may hold: items (home and first speed command included) and seconds of flight (0: any).
 struct PartLimits {
     int items = 0;
@@ -249,7 +265,7 @@ struct PartLimits {
 // Whether a part beginning at `first` could fit a flight of `limit` with its next point: a part out of
 // reach ends where ground within reach begins again, so that the flights there fit.
 bool flightFitsFrom(FlightClock clock, std::size_t first, double limit) {
-    clock.begin(first);
+    clock.begin({first, first});
     clock.extend();
     return clock.seconds() <= limit;
 }
@@ -266,7 +282,7 @@ std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, PartLi
     MissionPart part{0, 0, beside + 1};
     double soFar = 0.0; // seconds of the part's flight so far, when timed
     if (timed)
-        clock.begin(0);
+        clock.begin(part);
     for (std::size_t point = 1; point < mission.points.size(); ++point) {
         const int added = mission.changesSpeedAt(point) ? 2 : 1;
         FlightClock longer = clock;
@@ -283,7 +299,7 @@ std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, PartLi
             parts.push_back(part);
             part = {part.last, part.last, beside + 1};
             if (timed) {
-                clock.begin(part.first);
+                clock.begin(part);
                 longer = clock;
                 longer.extend();
                 longerSeconds = longer.seconds();
@@ -301,8 +317,9 @@ std::vector<MissionPart> partsFilledUpTo(const AutopilotMission& mission, PartLi
 
 // As few parts as the limits allow, as even as they can be: the smallest share of the limits that needs no
 // more parts than filling each to the limits does. Filled to the limits alone, the last part could hold three
-// items or a minute's flight.
-void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, const CellGraph& cells) {
+// items or a minute's flight. landsAtEnd: the last part lands at the mission's last point.
+void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, const CellGraph& cells,
+                    bool landsAtEnd) {
     const std::size_t count = mission.points.size();
     if (count == 0)
         return;
@@ -310,9 +327,17 @@ void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, c
     mission.items = beside + 1;
     for (std::size_t point = 1; point < count; ++point)
         mission.items += mission.changesSpeedAt(point) ? 2 : 1;
-    FlightClock clock(mission, vehicle, cells);
+    FlightClock clock(mission, vehicle, cells, landsAtEnd ? count - 1 : FlightClock::noLanding);
     const int itemLimit = vehicle.maxWaypoints > 0 ? vehicle.maxWaypoints : std::numeric_limits<int>::max();
     const PartLimits full{itemLimit, vehicle.flightTimeSeconds};
+    // A mission that fits one flight is one part, though filling would cut it where a return home from
+    // part way would be too long: a sortie that lands at a charger away from its start, or comes back
+    // near home after flying far.
+    if (mission.items <= itemLimit && !(full.seconds > 0.0 && wholeFlight(clock, count - 1) > full.seconds)) {
+        mission.parts = {{0, count - 1, mission.items}};
+        mission.parts.back().landsAtLast = landsAtEnd;
+        return;
+    }
     std::vector<MissionPart> parts = partsFilledUpTo(mission, full, beside, clock);
     const std::size_t fewest = parts.size();
     // Parts out of one flight's reach go on for a flight's work: with a smaller share of the flight, more of
@@ -344,6 +369,32 @@ void splitIntoParts(AutopilotMission& mission, const VehicleSettings& vehicle, c
         }
     }
     mission.parts = std::move(parts);
+    mission.parts.back().landsAtLast = landsAtEnd;
+}
+
+// autopilotMission, whose last part lands at the path's end when landsAtEnd.
+AutopilotMission missionOfPath(const CoveragePath& path, const VehicleSettings& vehicle,
+                               const ExportSettings& settings, const CellGraph& cells, bool landsAtEnd) {
+    AutopilotMission mission;
+    mission.takeOff = path.takeOff;
+    const bool byLeg = settings.speedChangesAtTurnsOnly && !(vehicle.cruiseSpeedMetresPerSecond > 0.0);
+    const SpeedSteps speeds = byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
+                                    : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
+    keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
+    // A mission that fits one flight keeps its legs whole.
+    if (vehicle.flightTimeSeconds > 0.0 && !mission.points.empty()) {
+        MissionPart whole{0, mission.points.size() - 1};
+        whole.landsAtLast = landsAtEnd;
+        if (partSeconds(mission, whole, vehicle, cells) > vehicle.flightTimeSeconds)
+            splitLongLegs(mission, vehicle.flightTimeSeconds);
+    }
+    splitIntoParts(mission, vehicle, cells, landsAtEnd);
+    for (MissionPart& part : mission.parts)
+        part.seconds = partSeconds(mission, part, vehicle, cells);
+    const double flight = flightSeconds(mission);
+    // Turns are made at the same points, so they cost what the plan priced them at.
+    mission.seconds = flight > 0.0 ? flight + path.turnSeconds : 0.0;
+    return mission;
 }
 
 } // namespace
@@ -375,36 +426,20 @@ double roundedSpeed(double metresPerSecond) {
 
 AutopilotMission autopilotMission(const CoveragePath& path, const VehicleSettings& vehicle,
                                   const ExportSettings& settings, const CellGraph& cells) {
-    AutopilotMission mission;
-    mission.takeOff = path.takeOff;
-    const bool byLeg = settings.speedChangesAtTurnsOnly && !(vehicle.cruiseSpeedMetresPerSecond > 0.0);
-    const SpeedSteps speeds = byLeg ? slowestSpeedPerLeg(path.waypoints, settings.speedTolerance)
-                                    : commandedSpeeds(path.waypoints, vehicle, settings.speedTolerance);
-    keepPoints(path.waypoints, speeds, settings.mergeCollinear, mission);
-    // A mission that fits one flight keeps its legs whole.
-    if (vehicle.flightTimeSeconds > 0.0 && !mission.points.empty() &&
-        partSeconds(mission, {0, mission.points.size() - 1}, vehicle, cells) > vehicle.flightTimeSeconds)
-        splitLongLegs(mission, vehicle.flightTimeSeconds);
-    splitIntoParts(mission, vehicle, cells);
-    for (MissionPart& part : mission.parts)
-        part.seconds = partSeconds(mission, part, vehicle, cells);
-    const double flight = flightSeconds(mission);
-    // Turns are made at the same points, so they cost what the plan priced them at.
-    mission.seconds = flight > 0.0 ? flight + path.turnSeconds : 0.0;
-    return mission;
+    return missionOfPath(path, vehicle, settings, cells, false);
 }
 
 double partSeconds(const AutopilotMission& mission, const MissionPart& part, const VehicleSettings& vehicle,
                    const CellGraph& cells) {
-    FlightClock clock(mission, vehicle, cells);
-    clock.begin(part.first);
+    FlightClock clock(mission, vehicle, cells, part.landsAtLast ? part.last : FlightClock::noLanding);
+    clock.begin(part);
     for (std::size_t point = part.first; point < part.last; ++point)
         clock.extend();
     return clock.seconds();
 }
 
-double farthestFromStart(const AutopilotMission& mission, const MissionPart& part) {
-    const Waypoint start = mission.home();
+double farthestFromHome(const AutopilotMission& mission, const MissionPart& part) {
+    const Waypoint start = mission.homeOf(part);
     double farthest = 0.0;
     for (std::size_t point = part.first; point <= part.last; ++point)
         farthest = std::max(farthest,
@@ -428,28 +463,39 @@ double flightReachMetres(const VehicleSettings& vehicle) {
            vehicle.cruiseSpeedMetresPerSecond / 2.0;
 }
 
-bool fliesSortiesFromItsStart(const CoveragePath& path, const RobotSorties* sorties) {
+bool fliesSortiesFromACharger(const CoveragePath& path, const RobotSorties* sorties) {
     if (sorties == nullptr || sorties->sorties.size() < 2 || path.takeOff || path.waypoints.empty())
         return false;
-    const Waypoint& start = path.waypoints.front();
+    const std::size_t chargerPoint = sorties->sorties.front().lastWaypoint;
+    if (sorties->sorties.front().firstWaypoint != 0 || chargerPoint >= path.waypoints.size())
+        return false;
+    const Waypoint& charger = path.waypoints[chargerPoint];
     constexpr double sameMetres = 1e-6; // a charger on a cell's centre may come back as that centre
-    const auto atStart = [&](std::size_t waypoint) {
+    const auto atCharger = [&](std::size_t waypoint) {
         return waypoint < path.waypoints.size() &&
-               std::hypot(path.waypoints[waypoint].x - start.x, path.waypoints[waypoint].y - start.y) <=
+               std::hypot(path.waypoints[waypoint].x - charger.x, path.waypoints[waypoint].y - charger.y) <=
                    sameMetres;
     };
-    return std::all_of(sorties->sorties.begin(), sorties->sorties.end(), [&](const Sortie& sortie) {
-        return atStart(sortie.firstWaypoint) && atStart(sortie.lastWaypoint);
+    return std::all_of(sorties->sorties.begin() + 1, sorties->sorties.end(), [&](const Sortie& sortie) {
+        return atCharger(sortie.firstWaypoint) && atCharger(sortie.lastWaypoint);
     });
 }
 
 AutopilotMission sortieMission(const CoveragePath& path, const std::vector<Sortie>& sorties,
                                const VehicleSettings& vehicle, const ExportSettings& settings,
                                const CellGraph& cells) {
-    AutopilotMission whole; // no takeOff: its sorties leave from its first point
+    AutopilotMission whole; // no takeOff: each sortie leaves from its first point
     whole.sorties = sorties.size();
     for (const Sortie& sortie : sorties) {
-        AutopilotMission flight = autopilotMission(sortiePath(path, sortie), vehicle, settings, cells);
+        const CoveragePath flightPath = sortiePath(path, sortie);
+        const Waypoint& from = flightPath.waypoints.front();
+        const Waypoint& to = flightPath.waypoints.back();
+        // A first sortie from a start away from the charger lands there: a return to launch would fly
+        // back to the start.
+        const bool landsAway = std::hypot(to.x - from.x, to.y - from.y) > 1e-6;
+        if (whole.parts.empty())
+            whole.firstSortieFromStart = landsAway;
+        AutopilotMission flight = missionOfPath(flightPath, vehicle, settings, cells, landsAway);
         // Each sortie keeps its own first point, at the charger where the one before ended, so that its
         // file commands the speed it starts with.
         const std::size_t offset = whole.points.size();
@@ -459,6 +505,7 @@ AutopilotMission sortieMission(const CoveragePath& path, const std::vector<Sorti
         for (MissionPart part : flight.parts) {
             part.first += offset;
             part.last += offset;
+            part.home += offset;
             whole.parts.push_back(part);
         }
         whole.items += flight.items;
@@ -471,7 +518,7 @@ AutopilotMission sortieMission(const CoveragePath& path, const std::vector<Sorti
 AutopilotMission robotMission(const Plan& plan, const CoveragePath& path, const VehicleSettings& vehicle,
                               const ExportSettings& settings) {
     if (const RobotSorties* sorties = sortiesOfRobot(plan, path.robot);
-        fliesSortiesFromItsStart(path, sorties))
+        fliesSortiesFromACharger(path, sorties))
         return sortieMission(path, sorties->sorties, vehicle, settings, plan.cells);
     CoveragePath whole;
     return autopilotMission(pathForWaypointFiles(path, plan.cells, settings.mergeCollinear, whole), vehicle,

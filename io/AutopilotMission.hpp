@@ -21,6 +21,12 @@ struct MissionPart {
     std::size_t last = 0;
     int items = 0;        // its mission items, home and first speed command included
     double seconds = 0.0; // its flight, as partSeconds times it
+    // The point an aircraft takes off from and returns to: the first of its sortie (its charger, or the
+    // robot's start for the first sortie), the mission's first point when it flies no sorties.
+    std::size_t home = 0;
+    // An aircraft lands at its last point instead of returning home: the end of a sortie flown from the
+    // robot's start to a charger elsewhere.
+    bool landsAtLast = false;
 };
 
 // A robot's path as an autopilot flies it: its turning points and the points where the commanded speed
@@ -33,16 +39,19 @@ struct AutopilotMission {
     int items = 0; // of the whole mission in one file
     // Where an aircraft takes off and lands when not at the first point (CoveragePath::takeOff).
     std::optional<MapPoint> takeOff;
-    // The battery sorties it flies from its start, a part or more each (sortieMission); 0: none.
+    // The battery sorties it flies from a charger, a part or more each (sortieMission); 0: none.
     std::size_t sorties = 0;
+    // Whether its first sortie leaves from the robot's start, away from the charger it ends at.
+    bool firstSortieFromStart = false;
     // The time to fly it at the commanded speeds (each segment at the speed commanded for it) with the
     // plan's turn time; 0 when a speed is unknown.
     double seconds = 0.0;
 
-    // Home: where it takes off, its first point unless it takes off elsewhere (in no cell of the plan).
-    [[nodiscard]] Waypoint home() const {
+    // Where a part takes off: its home point, unless the mission takes off elsewhere (in no cell of the
+    // plan).
+    [[nodiscard]] Waypoint homeOf(const MissionPart& part) const {
         if (!takeOff)
-            return points.front();
+            return points[part.home];
         Waypoint there = points.front();
         there.x = takeOff->x;
         there.y = takeOff->y;
@@ -75,8 +84,9 @@ struct AutopilotMission {
                                                 const ExportSettings& settings, const CellGraph& cells);
 
 // Seconds one part of a mission takes at its commanded speeds, turning where the plan prices turns (cells:
-// the plan's); an aircraft's part also flies from home (AutopilotMission::home) to its first waypoint
-// and back from its last, so that each flight can be held against a battery. 0 when a speed is unknown.
+// the plan's); an aircraft's part also flies from home (AutopilotMission::homeOf) to its first waypoint
+// and back from its last (unless it lands there), so that each flight can be held against a battery. 0 when
+// a speed is unknown.
 [[nodiscard]] double partSeconds(const AutopilotMission& mission, const MissionPart& part,
                                  const VehicleSettings& vehicle, const CellGraph& cells);
 
@@ -85,8 +95,8 @@ struct AutopilotMission {
 [[nodiscard]] double flightReachMetres(const VehicleSettings& vehicle);
 // The same for each vehicle, in order: what the map rings round the robots' starts.
 [[nodiscard]] std::vector<double> flightReachesMetres(const std::vector<VehicleSettings>& vehicles);
-// How far the part's farthest waypoint lies from the mission's first point, the robot's start.
-[[nodiscard]] double farthestFromStart(const AutopilotMission& mission, const MissionPart& part);
+// How far the part's farthest waypoint lies from where it takes off (AutopilotMission::homeOf).
+[[nodiscard]] double farthestFromHome(const AutopilotMission& mission, const MissionPart& part);
 
 // What a mission's parts fly, held against the vehicle's flight time.
 struct MissionFlights {
@@ -112,7 +122,7 @@ struct MissionSize {
     double longestPartSeconds = 0.0;
     std::size_t partsOverFlightTime = 0; // out of one flight's reach: a part holds at least two points
     double fieldSeconds = 0.0;           // the flights and the turnarounds between them
-    std::size_t sorties = 0;             // battery sorties from its start, each a part or more; 0: none
+    std::size_t sorties = 0;             // battery sorties from a charger, each a part or more; 0: none
 };
 // How the window and the exports say that a robot's flights (a rover's mission parts) outlast its battery:
 // "Robot 1: 305 of its 883 flights take up to 1 h 9 min with the flights to and from its start, longer than
@@ -124,15 +134,18 @@ struct MissionSize {
 // "Add robots, start them nearer that land, or plan with wavefront-battery and chargers" (a rover cannot
 // start nearer: its stretches are too long wherever it starts).
 [[nodiscard]] std::string flightsTooLongAdvice(const VehicleSettings& vehicle);
-// Whether a robot flies several sorties, each from its start and back to it: a charger at its start.
-[[nodiscard]] bool fliesSortiesFromItsStart(const CoveragePath& path, const RobotSorties* sorties);
-// The mission of a robot that flies `sorties` of its path from its start: each sortie's mission
+// Whether a robot flies several sorties from a charger, each ending at it and each but the first leaving
+// from it: the first leaves from the robot's start, at the charger or away from it.
+[[nodiscard]] bool fliesSortiesFromACharger(const CoveragePath& path, const RobotSorties* sorties);
+// The mission of a robot that flies `sorties` of its path from a charger: each sortie's mission
 // (autopilotMission) one after the other, so that each sortie is a part of its own, or more above the item
-// limit, and the files are the flights the plan times. Its items are those of all the sorties' files.
+// limit, and the files are the flights the plan times. Each part takes off from its sortie's first point; a
+// first sortie from a start away from the charger lands at the charger. Its items are those of all the
+// sorties' files.
 [[nodiscard]] AutopilotMission sortieMission(const CoveragePath& path, const std::vector<Sortie>& sorties,
                                              const VehicleSettings& vehicle, const ExportSettings& settings,
                                              const CellGraph& cells);
-// The mission the waypoint files make of a robot's path: its sorties' where it flies them from its start,
+// The mission the waypoint files make of a robot's path: its sorties' where it flies them from a charger,
 // else the whole path's.
 [[nodiscard]] AutopilotMission robotMission(const Plan& plan, const CoveragePath& path,
                                             const VehicleSettings& vehicle, const ExportSettings& settings);

@@ -433,7 +433,7 @@ void setMissionPart(OGRFeature& feature, const ExportContext& context, int robot
         partFileStem(robot, static_cast<int>(context.plan.paths.size()), part, mission.parts.size()).c_str());
     if (piece.seconds > 0.0)
         feature.SetField("part_time_s", piece.seconds);
-    feature.SetField("farthest_m", farthestFromStart(mission, piece));
+    feature.SetField("farthest_m", farthestFromHome(mission, piece));
     if (const VehicleSettings& vehicle = context.vehicle(robot); vehicle.flightTimeSeconds > 0.0) {
         feature.SetField("flight_time_s", vehicle.flightTimeSeconds);
         if (piece.seconds > 0.0)

@@ -28,6 +28,7 @@ constexpr int commandWaypoint = 16;               // MAV_CMD_NAV_WAYPOINT
 constexpr int commandChangeSpeed = 178;           // MAV_CMD_DO_CHANGE_SPEED
 constexpr int commandTakeoff = 22;                // MAV_CMD_NAV_TAKEOFF
 constexpr int commandReturnToLaunch = 20;         // MAV_CMD_NAV_RETURN_TO_LAUNCH
+constexpr int commandLand = 21;                   // MAV_CMD_NAV_LAND
 constexpr int commandCameraTriggerDistance = 206; // MAV_CMD_DO_SET_CAM_TRIGG_DIST
 // A fixed-wing aircraft climbs out at no less than this pitch (NAV_TAKEOFF's first parameter); a multirotor
 // climbs straight up.
@@ -345,7 +346,8 @@ double takeoffPitch(VehicleType type) {
 }
 
 // The items array's body: one item an element, separated as JsonValue separates them. An aircraft takes off
-// at home first and returns to it at the end of every part.
+// at home first and returns to it at the end of every part, or lands at the part's last point (a first
+// sortie ending at a charger away from the start).
 std::string qGroundControlItems(const AutopilotMission& mission, const MissionPart& part,
                                 const std::vector<GeoWaypoint>& points, const GeoWaypoint& home,
                                 const VehicleSettings& vehicle) {
@@ -381,14 +383,17 @@ std::string qGroundControlItems(const AutopilotMission& mission, const MissionPa
     }
     if (isAircraft(vehicle.type)) {
         separate();
-        appendReturnToLaunch(out, jumpId);
+        if (part.landsAtLast)
+            appendPlacedItem(out, jumpId, commandLand, 0.0, points.back(), 0.0);
+        else
+            appendReturnToLaunch(out, jumpId);
     }
     return out;
 }
 
 // One QGroundControl plan: for an aircraft a takeoff, the part's first speed as an item and as its cruise
-// speed, waypoints and speed changes, and for an aircraft a return to launch. Home is the robot's start for
-// every part: that is where it takes off and comes back to.
+// speed, waypoints and speed changes, and for an aircraft a return to launch or a landing. Home is where the
+// part takes off (AutopilotMission::homeOf): the robot's start, or the charger of its sortie.
 std::string qGroundControlPlanText(const AutopilotMission& mission, const MissionPart& part,
                                    const std::vector<GeoWaypoint>& points, const GeoWaypoint& home,
                                    const VehicleSettings& vehicle) {
@@ -428,8 +433,8 @@ std::string qGroundControlPlanText(const AutopilotMission& mission, const Missio
     return out;
 }
 
-// One QGC WPL 110 file: home (the robot's start), for an aircraft a takeoff, the speed the part starts
-// with, then waypoints and speed changes, and for an aircraft a return to launch.
+// One QGC WPL 110 file: home (where the part takes off), for an aircraft a takeoff, the speed the part
+// starts with, then waypoints and speed changes, and for an aircraft a return to launch or a landing.
 std::string waypointListText(const AutopilotMission& mission, const MissionPart& part,
                              const std::vector<GeoWaypoint>& points, const GeoWaypoint& home,
                              const VehicleSettings& vehicle) {
@@ -475,7 +480,10 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
         for (const double metres : cameraTriggersAfter(i, points.size(), vehicle))
             row(index++, 0, frameMission, commandCameraTriggerDistance, {metres, 0, 1, 0}, 0, 0, 0);
     }
-    if (isAircraft(vehicle.type))
+    if (isAircraft(vehicle.type) && part.landsAtLast)
+        row(index, 0, frameGlobalRelativeAltitude, commandLand, {0, 0, 0, 0}, points.back().latitude,
+            points.back().longitude, 0.0);
+    else if (isAircraft(vehicle.type))
         row(index, 0, frameMission, commandReturnToLaunch, {0, 0, 0, 0}, 0, 0, 0);
     return text;
 }
@@ -487,12 +495,14 @@ using MissionText = std::string (*)(const AutopilotMission&, const MissionPart&,
 // One mission in one file at `path`, or, above the vehicle's item limit, in parts beside it.
 Status writeMission(const AutopilotMission& mission, const std::vector<LonLat>& lonLats,
                     const std::string& path, MissionText text, const VehicleSettings& vehicle) {
-    const GeoWaypoint home =
-        mission.takeOff ? GeoWaypoint{mission.home(), 0.0, lonLats.back().longitude, lonLats.back().latitude}
-                        : geoPoints(mission, {0, 0, 0}, lonLats).front();
     for (std::size_t part = 0; part < mission.parts.size(); ++part) {
+        const MissionPart& piece = mission.parts[part];
+        const GeoWaypoint home =
+            mission.takeOff
+                ? GeoWaypoint{mission.homeOf(piece), 0.0, lonLats.back().longitude, lonLats.back().latitude}
+                : geoPoints(mission, {piece.home, piece.home}, lonLats).front();
         const std::string file = missionFilePath(path, part, mission.parts.size());
-        const std::vector<GeoWaypoint> points = geoPoints(mission, mission.parts[part], lonLats);
+        const std::vector<GeoWaypoint> points = geoPoints(mission, piece, lonLats);
         if (auto written = internal::writeFileAtomically(
                 file, text(mission, mission.parts[part], points, home, vehicle), Sync::BySystem);
             !written) {
@@ -597,12 +607,14 @@ std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMissi
                                               formatDuration(flights.fieldSeconds)
                                         : std::string();
     const char* const take = isAircraft(vehicle.type) ? "; the parts fly " : "; the parts take ";
+    const char* const trips = mission.firstSortieFromStart ? ", flights to and from the charger included"
+                                                           : ", flights to and from the start included";
     return take + formatDuration(flights.totalSeconds) + " in all, the longest " +
-           formatDuration(flights.longestSeconds) +
-           (isAircraft(vehicle.type) ? ", flights to and from the start included" : "") + turnarounds;
+           formatDuration(flights.longestSeconds) + (isAircraft(vehicle.type) ? trips : "") + turnarounds;
 }
 
-// Why the mission is in parts: "flies 53 sorties from its charger at its start, one part each", or
+// Why the mission is in parts: "flies 53 sorties from its charger at its start, one part each" (or "from its
+// charger, the first from its start"), or
 // "has 21 345 items, more than its autopilot's 700" and/or "takes 3 h 10 min, longer than its 25 min
 // flight time".
 std::string splitReason(const ExportContext& context, int robot, const AutopilotMission& mission) {
@@ -612,7 +624,8 @@ std::string splitReason(const ExportContext& context, int robot, const Autopilot
         // Its sorties are its flights: a part each, or more under its item limit or flight time.
         const bool more = mission.parts.size() > sorties;
         return std::string(isAircraft(vehicle.type) ? "flies " : "makes ") + std::to_string(sorties) +
-               " sorties from its charger at its start" +
+               (mission.firstSortieFromStart ? " sorties from its charger, the first from its start"
+                                             : " sorties from its charger at its start") +
                (more ? ", some in more than one part (its item limit or flight time)" : ", one part each");
     }
     if (vehicle.maxWaypoints > 0 && mission.items > vehicle.maxWaypoints)
@@ -664,7 +677,11 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
         return std::filesystem::path(missionPartPath(path, part, mission.parts.size())).filename().string();
     };
     const std::string aircraft =
-        isAircraft(vehicle.type) ? "; each takes off from the robot's start and returns to it" : "";
+        !isAircraft(vehicle.type) ? ""
+        : mission.firstSortieFromStart
+            ? "; each takes off from the robot's charger and returns to it, but the first, which takes off "
+              "from its start and lands at the charger"
+            : "; each takes off from the robot's start and returns to it";
     return context.robotName(robot) + "'s mission " + splitReason(context, robot, mission) + ": written in " +
            std::to_string(mission.parts.size()) + " parts of " + partSizes(mission) +
            ", each beginning where the one before it ended (" + partName(0) + " to " +
@@ -677,7 +694,7 @@ namespace {
 // Why an aircraft's flights do not fit: "its farthest waypoint lies 11.2 km from its start, and one flight
 // at 12 m/s goes at most 6.8 km from its start and back"; the distance alone without a cruise speed.
 std::string outOfReachNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
-    const double farthest = farthestFromStart(mission, {0, mission.points.size() - 1});
+    const double farthest = farthestFromHome(mission, {0, mission.points.size() - 1});
     const double reach = flightReachMetres(vehicle);
     return "its farthest waypoint lies " + formatDistance(farthest) + " from its start" +
            (reach > 0.0 ? ", and one flight at " + formatQuantity(vehicle.cruiseSpeedMetresPerSecond, 4) +

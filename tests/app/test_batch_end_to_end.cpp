@@ -71,12 +71,6 @@ QString partStem(int robot, int part, int parts) {
     return QStringLiteral("robot_%1_part_%2").arg(robot + 1).arg(part, width, 10, QLatin1Char('0'));
 }
 
-// The same for a sortie of a robot that charges between flights: "robot_2_sortie_3".
-QString sortieStem(int robot, int sortie, int sorties) {
-    const int width = static_cast<int>(QString::number(sorties).size());
-    return QStringLiteral("robot_%1_sortie_%2").arg(robot + 1).arg(sortie, width, 10, QLatin1Char('0'));
-}
-
 bool writeText(const QString& path, const QByteArray& text) {
     QFile file(path);
     return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
@@ -115,6 +109,7 @@ class TestBatchEndToEnd : public QObject {
     void batteryPlansWriteEachSortie();
     void aTurnaroundIsTheTimeAtTheCharger();
     void aChargerAwayFromTheStartIsWhereSortiesEnd();
+    void aDroneLandsItsFirstSortieAtAChargerAway();
     void anAircraftOnTheLakeTakesOffThere();
     void detectionPlansWriteTheDetectionRaster();
     void exportsReadBackUnchangedInSubstance();
@@ -621,8 +616,9 @@ void TestBatchEndToEnd::syntheticSampleNeedsThreeLevels() {
 void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const RunResult& run,
                                      const QString& planner) const {
     QVERIFY2(run.exitCode == 0, qPrintable(run.standardError));
-    QVERIFY2(run.standardOutput.contains(QStringLiteral("mcpp: planned %1 robots").arg(robots)),
-             qPrintable(run.standardOutput));
+    const QString planned = robots == 1 ? QStringLiteral("mcpp: planned 1 robot ")
+                                        : QStringLiteral("mcpp: planned %1 robots").arg(robots);
+    QVERIFY2(run.standardOutput.contains(planned), qPrintable(run.standardOutput));
     const QDir out(directory);
     QStringList expected{"plan.geojson", "report.json", "plan.png", "regions.tif", "plan.gpkg"};
     // Only a planner that models detection writes the detection raster.
@@ -1413,6 +1409,79 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
     QVERIFY(QFileInfo::exists(out + "/robot_1.plan"));
 }
 
+// A drone with a charger away from its start takes off at the start for its first sortie and lands at the
+// charger (no return to launch, which would fly back to the start); every later sortie takes off from the
+// charger and returns to it, and each fits one flight.
+void TestBatchEndToEnd::aDroneLandsItsFirstSortieAtAChargerAway() {
+    const QString out = scratch_.filePath("charger-drone");
+    const auto run = runMcpp({"--batch",
+                              "--raster",
+                              samplePath("synthetic/synthetic.asc"),
+                              "--classes",
+                              samplePath("synthetic/classes.csv"),
+                              "--start",
+                              "431040,5301040",
+                              "--charger",
+                              "431100,5301150",
+                              "--planner",
+                              "wavefront-battery",
+                              "--vehicle",
+                              "multirotor",
+                              "--cruise-speed",
+                              "2",
+                              "--flight-time",
+                              "5min",
+                              "--altitude",
+                              "20",
+                              "--max-waypoints",
+                              "0",
+                              "--out",
+                              out});
+    checkOutputs(out, 1, run, QStringLiteral("wavefront-battery"));
+    if (QTest::currentTestFailed())
+        return;
+    const int sorties =
+        readJsonObject(out + "/report.json").value("robots").toArray()[0].toObject().value("sorties").toInt();
+    QVERIFY2(sorties > 1, qPrintable(QString::number(sorties)));
+    QVERIFY2(run.standardOutput.contains(
+                 QStringLiteral("flies %1 sorties from its charger, the first from its start, one part each")
+                     .arg(sorties)),
+             qPrintable(run.standardOutput));
+    QVERIFY2(!run.standardError.contains(QStringLiteral("longer than its")), qPrintable(run.standardError));
+    const auto planOf = [&](int sortie) {
+        return readJsonObject(QStringLiteral("%1/%2.plan").arg(out, partStem(0, sortie, sorties)))
+            .value("mission")
+            .toObject();
+    };
+    const auto homeOf = [](const QJsonObject& plan) {
+        const QJsonArray home = plan.value("plannedHomePosition").toArray();
+        return QPointF(home[0].toDouble(), home[1].toDouble());
+    };
+    const QPointF start = homeOf(planOf(1));
+    const QPointF charger = planEnds(QJsonObject{{"mission", planOf(1)}}).second;
+    QVERIFY(start != charger);
+    for (int sortie = 1; sortie <= sorties; ++sortie) {
+        const QJsonObject plan = planOf(sortie);
+        const QJsonObject last = plan.value("items").toArray().last().toObject();
+        if (sortie == 1) {
+            QCOMPARE(last.value("command").toInt(), 21); // MAV_CMD_NAV_LAND, at the charger
+            const QJsonArray params = last.value("params").toArray();
+            QCOMPARE(QPointF(params[4].toDouble(), params[5].toDouble()), charger);
+        } else {
+            QCOMPARE(last.value("command").toInt(), 20); // MAV_CMD_NAV_RETURN_TO_LAUNCH
+            QCOMPARE(homeOf(plan), charger);
+        }
+    }
+    // The QGC WPL file of the first sortie lands at the charger too.
+    QFile list(QStringLiteral("%1/%2.waypoints").arg(out, partStem(0, 1, sorties)));
+    QVERIFY(list.open(QIODevice::ReadOnly));
+    const QStringList rows = QString::fromUtf8(list.readAll()).trimmed().split(QLatin1Char('\n'));
+    const QStringList landing = rows.last().split(QLatin1Char('\t'));
+    QCOMPARE(landing.value(3), QStringLiteral("21"));
+    QVERIFY(std::abs(landing.value(8).toDouble() - charger.x()) < 1e-7);
+    QVERIFY(std::abs(landing.value(9).toDouble() - charger.y()) < 1e-7);
+}
+
 // A vehicle's turnaround is the battery planner's time at the charger, as the waypoint files' time in the
 // field counts it between flights, in place of recharge_s, and a note says so.
 void TestBatchEndToEnd::aTurnaroundIsTheTimeAtTheCharger() {
@@ -1436,7 +1505,8 @@ void TestBatchEndToEnd::aTurnaroundIsTheTimeAtTheCharger() {
 }
 
 // A charger away from the start (robots[0].charger): the first sortie begins at the start, every sortie
-// ends at the charger and the next begins there.
+// ends at the charger and the next begins there; each sortie is a part of the robot's mission, and no file
+// holds the whole route or a sortie twice.
 void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
     auto mission = sampleMissionAnywhere("synthetic", "synthetic.asc");
     auto robots = mission.value("robots").toArray();
@@ -1452,22 +1522,30 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
     checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
     if (QTest::currentTestFailed())
         return;
-    const auto whole = planEnds(readJsonObject(out + "/robot_1.plan"));
-    QVERIFY(whole.first != whole.second); // from the start to the charger
     const int sorties =
         readJsonObject(out + "/report.json").value("robots").toArray()[0].toObject().value("sorties").toInt();
     QVERIFY2(sorties > 1, qPrintable(QString::number(sorties)));
+    const auto partEnds = [&](const QString& folder, int part) {
+        return planEnds(readJsonObject(QStringLiteral("%1/%2.plan").arg(folder, partStem(0, part, sorties))));
+    };
+    const auto whole = std::make_pair(partEnds(out, 1).first, partEnds(out, sorties).second);
+    QVERIFY(whole.first != whole.second); // from the start to the charger
     // The sample's robots are rovers: they make sorties, they do not fly them.
     const QString said = run.standardOutput + run.standardError;
-    QVERIFY2(said.contains(QStringLiteral("makes %1 sorties from its charger").arg(sorties)),
+    QVERIFY2(said.contains(QStringLiteral("makes %1 sorties from its charger, the first from its start, one "
+                                          "part each")
+                               .arg(sorties)),
              qPrintable(said));
     QVERIFY2(!said.contains(QStringLiteral(" fl")), qPrintable(said));
     for (int sortie = 1; sortie <= sorties; ++sortie) {
-        const auto ends =
-            planEnds(readJsonObject(QStringLiteral("%1/%2.plan").arg(out, sortieStem(0, sortie, sorties))));
+        const auto ends = partEnds(out, sortie);
         QCOMPARE(ends.first, sortie == 1 ? whole.first : whole.second);
         QCOMPARE(ends.second, whole.second);
     }
+    QVERIFY(!QFileInfo::exists(out + "/robot_1.plan"));
+    QVERIFY(!QFileInfo::exists(QStringLiteral("%1/%2.plan").arg(out, partStem(0, sorties + 1, sorties))));
+    const QStringList twice = QDir(out).entryList({QStringLiteral("*_sortie_*")});
+    QVERIFY2(twice.isEmpty(), qPrintable(twice.join(", ")));
 
     // The same mission given by flags, the charger by --charger: the same sorties and times.
     const QString byFlags = scratch_.filePath("charger-flags");
@@ -1482,7 +1560,7 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
     checkOutputs(byFlags, 3, run, QStringLiteral("wavefront-battery"));
     if (QTest::currentTestFailed())
         return;
-    QCOMPARE(planEnds(readJsonObject(byFlags + "/robot_1.plan")), whole);
+    QCOMPARE(std::make_pair(partEnds(byFlags, 1).first, partEnds(byFlags, sorties).second), whole);
     const auto robotsOf = [](const QString& folder) {
         return readJsonObject(folder + "/report.json").value("robots").toArray();
     };

@@ -329,8 +329,8 @@ class AutopilotMissionTest : public QObject {
     }
 
     // A robot that flies sorties from its start: each sortie is a part of its own, the very mission it would
-    // make alone, or more parts under a tight item limit, none across two sorties; with a charger elsewhere
-    // or one sortie, its path is split as any other.
+    // make alone, or more parts under a tight item limit, none across two sorties; with sorties ending at no
+    // one charger, or one sortie, its path is split as any other.
     void sortiesAreTheMissionsParts() {
         CoveragePath path;
         const std::vector<std::pair<double, double>> corners{
@@ -340,7 +340,7 @@ class AutopilotMissionTest : public QObject {
             addAtFiveMetresASecond(path, x, y);
         RobotSorties sorties;
         sorties.sorties = {{0, 4}, {4, 13}};
-        QVERIFY(fliesSortiesFromItsStart(path, &sorties));
+        QVERIFY(fliesSortiesFromACharger(path, &sorties));
         VehicleSettings drone = tenMinuteDrone();
         const ExportSettings settings = shaping(0.1, true);
         const AutopilotMission mission = sortieMission(path, sorties.sorties, drone, settings, noTurnPrice);
@@ -379,12 +379,53 @@ class AutopilotMissionTest : public QObject {
         }
 
         RobotSorties away = sorties;
-        away.sorties = {{0, 3}, {3, 12}}; // ending elsewhere: a charger away from the start
-        QVERIFY(!fliesSortiesFromItsStart(path, &away));
+        away.sorties = {{0, 3}, {3, 12}}; // the second ends away from where the first did: no charger
+        QVERIFY(!fliesSortiesFromACharger(path, &away));
         RobotSorties one = sorties;
         one.sorties = {{0, 13}};
-        QVERIFY(!fliesSortiesFromItsStart(path, &one));
-        QVERIFY(!fliesSortiesFromItsStart(path, nullptr));
+        QVERIFY(!fliesSortiesFromACharger(path, &one));
+        QVERIFY(!fliesSortiesFromACharger(path, nullptr));
+    }
+
+    // A charger away from the start: the first sortie takes off at the start and lands at the charger, with
+    // no flight back; the next takes off from the charger and returns to it, and is timed and measured from
+    // there.
+    void aFirstSortieFromTheStartLandsAtTheCharger() {
+        CoveragePath path;
+        const std::vector<std::pair<double, double>> corners{
+            {0, 0}, {200, 0}, {200, 10}, {0, 10}, {0, 20}, {200, 20}, {200, 30}, {0, 30}, {0, 20}};
+        for (const auto& [x, y] : corners)
+            addAtFiveMetresASecond(path, x, y);
+        RobotSorties sorties;
+        sorties.sorties = {{0, 4}, {4, 8}};
+        QVERIFY(fliesSortiesFromACharger(path, &sorties));
+        VehicleSettings drone = tenMinuteDrone();
+        drone.altitudeMetres = 30.0;
+        const AutopilotMission mission =
+            sortieMission(path, sorties.sorties, drone, shaping(0.1, true), noTurnPrice);
+        QVERIFY(mission.firstSortieFromStart);
+        QCOMPARE(mission.parts.size(), std::size_t{2});
+        const MissionPart& out = mission.parts[0];
+        const MissionPart& back = mission.parts[1];
+        QCOMPARE(out.home, std::size_t{0});
+        QVERIFY(out.landsAtLast);
+        QCOMPARE(back.home, back.first);
+        QVERIFY(!back.landsAtLast);
+        // Both fly 420 m at 5 m/s, climb and descent on top; neither flies to or from anywhere else.
+        const double flown = climbAndDescentSeconds(drone) + 420.0 / 5.0;
+        QVERIFY2(std::abs(out.seconds - flown) < 1e-9, qPrintable(QString::number(out.seconds)));
+        QVERIFY2(std::abs(back.seconds - flown) < 1e-9, qPrintable(QString::number(back.seconds)));
+        // Returning to the start instead would add the 20 m back from the charger.
+        MissionPart returning = out;
+        returning.landsAtLast = false;
+        QVERIFY(std::abs(partSeconds(mission, returning, drone, noTurnPrice) - (flown + 20.0 / 5.0)) < 1e-9);
+        // The second sortie's farthest point, (200, 30), lies 200 m east and 10 m north of its charger.
+        QVERIFY(std::abs(farthestFromHome(mission, back) - std::hypot(200.0, 10.0)) < 1e-9);
+        QCOMPARE(mission.homeOf(back).y, path.waypoints[4].y);
+
+        RobotSorties elsewhere = sorties;
+        elsewhere.sorties = {{0, 4}, {4, 7}}; // the second ends away from the charger
+        QVERIFY(!fliesSortiesFromACharger(path, &elsewhere));
     }
 
     // A robot is done in the field after its flights and a turnaround between each two; with a part's time
