@@ -18,6 +18,7 @@
 #include "core/planners/PlannerRegistry.hpp"
 #include "core/planners/PlanningRun.hpp"
 #include "core/planners/UncoveredLand.hpp"
+#include "core/planners/UnevenField.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -669,9 +670,12 @@ Plan Planner::planOnce(const PlannerDescription& planner, const PlanningProblem&
     // Nor is a plan that divides the work at one speed between robots of their own (own-speeds-unbalanced),
     // or one that evens out time in the field, where paths of different lengths end together.
     const bool unevenSpeeds = !plan.robotSpeeds.empty() && !planner.balancesOwnSpeeds;
-    if (const std::string uneven = unevenPlanMessage(plan, planner);
-        !uneven.empty() && !playsEvents && !unevenSpeeds && !fieldWeighed)
+    const std::string uneven = unevenPlanMessage(plan, planner);
+    if (!uneven.empty() && !playsEvents && !unevenSpeeds && !fieldWeighed)
         planningRun.addIssue(IssueSeverity::Warning, "uneven-plan", uneven);
+    else if (const std::string field = unevenFieldMessage(plan, planner);
+             !field.empty() && !playsEvents && !unevenSpeeds)
+        planningRun.addIssue(IssueSeverity::Warning, "uneven-in-the-field", field);
     progress.report("done", 1.0);
     return plan;
 }

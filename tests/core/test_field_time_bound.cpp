@@ -3,6 +3,7 @@
 #include "core/planners/MlctPlanner.hpp"
 #include "core/planners/PlanMetricsCalculator.hpp"
 #include "core/planners/PlannerRegistry.hpp"
+#include "core/planners/UnevenField.hpp"
 #include "tests/support/PlanInvariants.hpp"
 #include "tests/support/SyntheticMaps.hpp"
 
@@ -248,6 +249,38 @@ class FieldTimeBoundTest : public QObject {
         QCOMPARE(plan.metrics.fieldLowerBoundSeconds, 0.0);
         QCOMPARE(plan.metrics.fieldMakespanSeconds, 0.0);
         QCOMPARE(plan.metrics.fieldSpread(), 0.0);
+    }
+
+    // Robots coming home a quarter or more apart are warned of, the last and the first named with their
+    // times; a planner that evens out paths only is told of one that evens out time in the field.
+    void robotsHomeFarApartAreWarnedOf() {
+        Plan plan;
+        plan.metrics.robots.resize(3);
+        for (int robot = 0; robot < 3; ++robot)
+            plan.metrics.robots[static_cast<std::size_t>(robot)].robot = robot;
+        plan.metrics.robots[0].fieldSeconds = 7200.0;
+        plan.metrics.robots[1].fieldSeconds = 3600.0;
+        plan.metrics.robots[2].fieldSeconds = 5000.0;
+        const PlannerDescription mlct = *findPlannerDescription("mcpp-mlct");
+        const std::string said = unevenFieldMessage(plan, mlct);
+        QVERIFY2(said.find("robot 1 comes home after 2 h in the field, 2 times as long as robot 2 (1 h)") ==
+                     0,
+                 said.c_str());
+        const PlannerDescription darp = *findPlannerDescription("darp");
+        const std::string toldOfOthers = unevenFieldMessage(plan, darp);
+        QVERIFY2(toldOfOthers.find("plan with MCPP-MLCT (mcpp-mlct), which evens out time in the field") !=
+                     std::string::npos,
+                 toldOfOthers.c_str());
+        plan.metrics.robots[0].fieldSeconds = 4400.0; // 1.22 x the first: within a quarter
+        plan.metrics.robots[2].fieldSeconds = 4000.0;
+        QVERIFY(unevenFieldMessage(plan, mlct).empty());
+        plan.metrics.robots[0].fieldSeconds = 7200.0;
+        plan.metrics.confinedRobots.push_back({});
+        QVERIFY(unevenFieldMessage(plan, mlct).empty()); // a pocket sets it
+        plan.metrics.confinedRobots.clear();
+        for (RobotMetrics& robot : plan.metrics.robots)
+            robot.fieldSeconds = 0.0; // not measured
+        QVERIFY(unevenFieldMessage(plan, mlct).empty());
     }
 };
 

@@ -1,0 +1,55 @@
+#include "core/planners/UnevenField.hpp"
+
+#include "core/model/HumanUnits.hpp"
+#include "core/planners/PlannerRegistry.hpp"
+
+#include <sstream>
+
+namespace mcpp {
+namespace {
+
+// Planners that even out time in the field, for the advice: "MCPP-MLCT (mcpp-mlct)".
+std::string fieldBalancingPlanners() {
+    std::string names;
+    for (const PlannerDescription& other : plannerDescriptions())
+        if (other.balancesFieldTime)
+            names += (names.empty() ? "" : " or ") + other.label + " (" + other.name + ")";
+    return names;
+}
+
+} // namespace
+
+std::string unevenFieldMessage(const Plan& plan, const PlannerDescription& planner) {
+    const PlanMetrics& metrics = plan.metrics;
+    constexpr double noticeableSpread = 1.25;
+    if (!(metrics.fieldSpread() >= noticeableSpread) || !metrics.confinedRobots.empty())
+        return {};
+    const RobotMetrics* first = nullptr;
+    const RobotMetrics* last = nullptr;
+    for (const RobotMetrics& robot : metrics.robots) {
+        if (!(robot.fieldSeconds > 0.0))
+            continue;
+        if (first == nullptr || robot.fieldSeconds < first->fieldSeconds)
+            first = &robot;
+        if (last == nullptr || robot.fieldSeconds > last->fieldSeconds)
+            last = &robot;
+    }
+    std::ostringstream spread;
+    spread.precision(3);
+    spread << metrics.fieldSpread();
+    const std::string fact = "robot " + std::to_string(last->robot + 1) + " comes home after " +
+                             formatDuration(last->fieldSeconds) + " in the field, " + spread.str() +
+                             " times as long as robot " + std::to_string(first->robot + 1) + " (" +
+                             formatDuration(first->fieldSeconds) + ")";
+    const std::string nearer = "start robots nearer the land farthest from every start, or add robots";
+    if (planner.balancesFieldTime)
+        return fact + ": the division could not even out their flights out to the work and back and the " +
+               "turnarounds between them; " + nearer;
+    const std::string others = fieldBalancingPlanners();
+    return fact + ": " + planner.label +
+           " evens out the paths, not the flights out to the work and back and the turnarounds between " +
+           "them; " +
+           (others.empty() ? "" : "plan with " + others + ", which evens out time in the field, ") + nearer;
+}
+
+} // namespace mcpp
