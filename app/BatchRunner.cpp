@@ -388,10 +388,18 @@ void BatchRunner::checkVehicles() const {
         (given.empty() ? std::string() : "; given here by " + given) + ")");
 }
 
+void BatchRunner::refuseMission(const std::string& error) {
+    if (auto otherProduct = io::presetOfAnotherProductWarning(mission_, raster_))
+        warn(*otherProduct);
+    badInput(error);
+}
+
 PlanningProblem BatchRunner::prepareProblem() {
-    io::PreparedProblem prepared =
-        valueOrBadInput(io::planningProblem(raster_, classes_, mission_.missingClassesAsObstacles, starts_,
-                                            mission_.planner, fieldNamer(), io::flyingRobots(mission_)));
+    auto problem = io::planningProblem(raster_, classes_, mission_.missingClassesAsObstacles, starts_,
+                                       mission_.planner, fieldNamer(), io::flyingRobots(mission_));
+    if (!problem)
+        refuseMission(problem.error());
+    io::PreparedProblem prepared = std::move(problem.value());
     pendingWarnings_.insert(pendingWarnings_.end(), prepared.warnings.begin(), prepared.warnings.end());
     io::applyRobotSettings(mission_, raster_, prepared.problem);
     prepared.problem.chargers = chargers_; // its notes are said with the plan (sayMissionNotes)
@@ -743,7 +751,7 @@ void BatchRunner::executeComparison() {
         if (const io::Status starts = io::checkStarts(raster_, classes_, mission_.missingClassesAsObstacles,
                                                       starts_, fieldNamer(), io::flyingRobots(mission_));
             !starts)
-            badInput(starts.error());
+            refuseMission(starts.error());
     checkOutputFolder();
     flushPending();
     const std::size_t robots = mission_.robots.size();

@@ -78,6 +78,9 @@ class BatchRunner {
     void flushPending();
     void note(const std::string& message);
     void warn(const std::string& message);
+    // Refuses the mission's classes or starts, after the warning of a preset of another product, which may
+    // be why: its obstacles are that product's classes.
+    [[noreturn]] void refuseMission(const std::string& error);
     // saidOnce: in a comparison, the notes of the mission said already (said once, under no planner).
     void sayMissionNotes(const Plan& plan, const PlanningProblem& problem,
                          std::set<std::string>* saidOnce = nullptr);

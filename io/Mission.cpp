@@ -1293,11 +1293,13 @@ std::vector<FlightLimits> flightLimitsOf(const Mission& mission,
     return limits;
 }
 
+} // namespace
+
 // A preset chosen for a raster recognised as another product: its rows may cover every value and still name,
 // time and size the classes as that other product's (a Canada land-cover map planned with CORINE's grid
 // codes reads needleleaf forest as continuous urban fabric). Said only where the raster names or colours
 // its product, not where its codes alone suggest one.
-std::optional<std::string> presetOfAnotherProductNote(const Mission& mission, const LoadedRaster& raster) {
+std::optional<std::string> presetOfAnotherProductWarning(const Mission& mission, const LoadedRaster& raster) {
     if (mission.preset.empty())
         return std::nullopt;
     const auto preset = presetClassTable(mission.preset);
@@ -1324,8 +1326,6 @@ std::optional<std::string> presetOfAnotherProductNote(const Mission& mission, co
            product->productName;
 }
 
-} // namespace
-
 FieldTimeInputs fieldTimeInputs(const Mission& mission) {
     std::vector<VehicleSettings> vehicles = robotVehicles(mission);
     const auto planner = findPlannerDescription(mission.planner.planner);
@@ -1347,7 +1347,7 @@ void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, Plan
     problem.robotFlights = flightLimitsOf(mission, vehicles);
     problem.flyingRobots = flyingRobots(mission);
     applyCruiseSpeed(mission, vehicles, problem);
-    if (auto otherProduct = presetOfAnotherProductNote(mission, raster))
+    if (auto otherProduct = presetOfAnotherProductWarning(mission, raster))
         problem.notes.push_back(
             {IssueSeverity::Warning, "preset-of-another-product", std::move(*otherProduct)});
     // The passes are spaced by the smallest field of view of a class on the map, not of the whole table.

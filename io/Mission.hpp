@@ -136,6 +136,10 @@ struct FieldTimeInputs {
 // vehicles' (the problem's notes then say so). The one place batch and window runs fill them. The raster the
 // problem was made of tells which classes take part.
 void applyRobotSettings(const Mission& mission, const LoadedRaster& raster, PlanningProblem& problem);
+// A preset chosen for a raster recognised as another product (warning preset-of-another-product, which
+// applyRobotSettings adds to the problem's notes): also said beside a start the preset's obstacles refuse.
+[[nodiscard]] std::optional<std::string> presetOfAnotherProductWarning(const Mission& mission,
+                                                                       const LoadedRaster& raster);
 
 // The same from the file's text; path names it in messages and anchors a relative raster path.
 [[nodiscard]] Result<Mission> parseMission(const std::string& text, const std::string& path);

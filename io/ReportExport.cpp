@@ -21,6 +21,19 @@ using internal::JsonValue;
 
 namespace {
 
+// The passable land of each robot's cells, by robot: the plan's covered area shared out, so that the
+// robots' add up to it. A region's area_m2 counts its sub-cells whole (what the regions layer draws), and
+// sub-cells at an obstacle's edge hold some of it.
+std::vector<double> coveredAreaByRobot(const Plan& plan) {
+    std::vector<double> covered(plan.metrics.robots.size(), 0.0);
+    const std::vector<int>& robotOfCell = plan.regions.robotOfCell;
+    for (std::size_t id = 0; id < robotOfCell.size() && id < plan.cells.size(); ++id)
+        if (const int robot = robotOfCell[id]; robot >= 0 && static_cast<std::size_t>(robot) < covered.size())
+            covered[static_cast<std::size_t>(robot)] +=
+                plan.cells.cell(static_cast<int>(id)).passableAreaSquareMetres;
+    return covered;
+}
+
 double chargingSeconds(const CoveragePath& path) {
     return pausedSecondsBetween(path.pauses, 0, path.waypoints.size());
 }
@@ -135,12 +148,14 @@ Status writeReportJson(const ExportContext& context, const std::string& path) {
     JsonValue& robots = root.add("robots", JsonValue::array());
     const SortieLayer* sorties = sortieLayerOf(context.plan);
     const TimelineLayer* timeline = timelineLayerOf(context.plan);
+    const std::vector<double> coveredAreas = coveredAreaByRobot(context.plan);
     for (const RobotMetrics& robot : metrics.robots) {
         JsonValue& item = robots.push(JsonValue::object());
         item.add("robot", robotNumber(robot.robot));
         item.add("name", context.robotName(robot.robot));
         item.add("cells", robot.cells);
         item.add("area_m2", robot.areaSquareMetres);
+        item.add("covered_area_m2", coveredAreas[static_cast<std::size_t>(robot.robot)]);
         item.add("length_m", robot.lengthMetres);
         item.add("time_s", robot.timeSeconds);
         item.add("turns", robot.turns);
@@ -255,7 +270,8 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
                        "mission_parts_over_flight_time,turnaround_s,mission_field_s";
     // The camera's columns last, after any sortie columns: added later, where readers by place miss them.
     text += sorties == nullptr ? "" : ",sorties,charges,charging_s,longest_sortie_s,out_of_range_area_m2";
-    text += ",camera_trigger_m,mission_photos\n";
+    text += ",camera_trigger_m,mission_photos,covered_area_m2\n";
+    const std::vector<double> coveredAreas = coveredAreaByRobot(context.plan);
     for (const RobotMetrics& robot : context.plan.metrics.robots) {
         const VehicleSettings& vehicle = context.vehicle(robot.robot);
         const AutopilotMission& mission = autopilotMissionOf(context, robot.robot);
@@ -277,7 +293,8 @@ Status writeReportCsv(const ExportContext& context, const std::string& path) {
         if (sorties != nullptr)
             text += sortieColumns(context.plan, sorties->robots()[static_cast<std::size_t>(robot.robot)]);
         text += "," + internal::formatShortest(vehicle.cameraTriggerMetres) + "," +
-                std::to_string(missionPhotos(mission, vehicle)) + "\n";
+                std::to_string(missionPhotos(mission, vehicle)) + "," +
+                internal::formatShortest(coveredAreas[static_cast<std::size_t>(robot.robot)]) + "\n";
     }
     return internal::writeFileAtomically(path, text, Sync::BySystem);
 }

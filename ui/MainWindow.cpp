@@ -86,6 +86,15 @@ namespace mcpp::ui {
 
 namespace {
 
+// A refusal of the mission's classes or starts, with the warning of a preset of another product, which may
+// be why: its obstacles are that product's classes.
+QString refusalText(const std::string& error, const io::Mission& mission, const io::LoadedRaster& raster) {
+    QString text = QString::fromStdString(error);
+    if (const auto otherProduct = io::presetOfAnotherProductWarning(mission, raster))
+        text += QStringLiteral("\n\n") + QString::fromStdString(*otherProduct);
+    return text;
+}
+
 // The files an export wrote, for the status bar: each where few, else how many, where, and the first and
 // last (a drone's mission split into hundreds of parts named them all, cut off at the window's edge).
 QString exportedFilesText(const QStringList& written) {
@@ -1866,7 +1875,8 @@ bool MainWindow::startComparison(const std::vector<std::string>& planners) {
                             document_->mission().missingClassesAsObstacles, document_->starts(),
                             document_->plannerChoice(), fieldNamer(), io::flyingRobots(document_->mission()));
     if (!prepared.ok()) {
-        reportError(tr("Cannot compare"), QString::fromStdString(prepared.error()));
+        reportError(tr("Cannot compare"),
+                    refusalText(prepared.error(), document_->mission(), *document_->raster()));
         return false;
     }
     std::vector<PlannerChoice> choices;
@@ -2117,7 +2127,8 @@ bool MainWindow::startPlanning() {
                             document_->mission().missingClassesAsObstacles, document_->starts(),
                             document_->plannerChoice(), fieldNamer(), io::flyingRobots(document_->mission()));
     if (!prepared.ok()) {
-        reportError(tr("Cannot plan"), QString::fromStdString(prepared.error()));
+        reportError(tr("Cannot plan"),
+                    refusalText(prepared.error(), document_->mission(), *document_->raster()));
         return false;
     }
     planningInputs_ = document_->currentInputs();

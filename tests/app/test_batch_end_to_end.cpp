@@ -897,7 +897,8 @@ void TestBatchEndToEnd::missingAsObstacleTurnsTheErrorIntoAWarning() {
 }
 
 // No --classes or --preset: the Canada land cover is recognised (codes and CRS, or its file name), its
-// preset applies and says so, and its water is a wall a robot cannot start on.
+// preset applies and says so, and its water is a wall a robot cannot start on; another product's preset
+// is named beside the start it refuses.
 void TestBatchEndToEnd::rasterAloneGetsTheRecognisedProductsTable() {
     const QString raster =
         QString::fromStdString(mcpp::test::testDataPath("landcover/nrcan_landcover2015_example.tif"));
@@ -913,6 +914,16 @@ void TestBatchEndToEnd::rasterAloneGetsTheRecognisedProductsTable() {
                                   scratch_.filePath("recognised-water")});
     QCOMPARE(onWater.exitCode, 2);
     QVERIFY2(onWater.standardError.contains("Water"), qPrintable(onWater.standardError));
+
+    // Another product's preset reads its forest as urban fabric, an obstacle: the start is refused, and
+    // the warning of the wrong preset comes first, as the likely reason.
+    const auto wrongPreset =
+        runMcpp({"--batch", "--raster", raster, "--preset", "corine-grid", "--start", "-1492970,729450",
+                 "--out", scratch_.filePath("recognised-wrong-preset")});
+    QCOMPARE(wrongPreset.exitCode, 2);
+    const qsizetype choose = wrongPreset.standardError.indexOf("Choose the preset canada-landcover");
+    const qsizetype refused = wrongPreset.standardError.indexOf("is on an obstacle: class 1");
+    QVERIFY2(choose >= 0 && refused > choose, qPrintable(wrongPreset.standardError));
 }
 
 void TestBatchEndToEnd::readmeSampleRuns() {
@@ -1656,7 +1667,8 @@ double perimeterOf(const OGRGeometry& geometry) {
 // What the files hold of a real plan, read back with OGR and GDAL: each region's polygon has its robot's
 // area (GeoPackage, in the raster's CRS, to 1e-6; GeoJSON, in degrees to 9 decimals, within what that
 // rounding can move its edges), each path its robot's length (a polyline of turning points is as long as
-// the path), and regions.tif names, pixel for pixel, the robot whose region polygon holds the pixel.
+// the path), and regions.tif names, pixel for pixel, the robot whose region polygon holds the pixel; the
+// robots' covered areas add up to the plan's.
 void TestBatchEndToEnd::exportsReadBackUnchangedInSubstance() {
     const QString out = scratch_.filePath("read-back");
     const auto run = runMcpp({"--batch", samplePath("zion-nlcd/mission.json"), "--out", out});
@@ -1681,6 +1693,20 @@ void TestBatchEndToEnd::exportsReadBackUnchangedInSubstance() {
         ++regions;
     }
     QCOMPARE(regions, 5);
+    // The robots' passable land adds up to the plan's covered area, each within its region's area, and
+    // below it where the region's sub-cells hold water.
+    double covered = 0.0;
+    bool someWater = false;
+    for (int robot = 1; robot <= 5; ++robot) {
+        covered += reported(robot, "covered_area_m2");
+        QVERIFY(reported(robot, "covered_area_m2") <= reported(robot, "area_m2") * (1.0 + 1e-12));
+        someWater =
+            someWater || reported(robot, "covered_area_m2") < reported(robot, "area_m2") * (1.0 - 1e-6);
+    }
+    const double coveredArea = readJsonObject(out + "/report.json").value("covered_area_m2").toDouble();
+    QVERIFY2(std::abs(covered - coveredArea) <= coveredArea * 1e-9,
+             qPrintable(QString("%1 against %2 m2").arg(covered).arg(coveredArea)));
+    QVERIFY(someWater);
     int paths = 0;
     for (auto& feature : *package->GetLayerByName("paths")) {
         const int robot = feature->GetFieldAsInteger("robot");

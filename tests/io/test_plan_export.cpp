@@ -903,11 +903,13 @@ class PlanExportTest : public QObject {
                                      "mission_parts,turn_time_s,connector_time_s,flight_time_s,"
                                      "mission_flights_s,mission_longest_part_s,"
                                      "mission_parts_over_flight_time,turnaround_s,mission_field_s,"
-                                     "camera_trigger_m,mission_photos"));
+                                     "camera_trigger_m,mission_photos,covered_area_m2"));
         std::getline(input, line);
         // Home, the first speed and five turning points (the straight top run's two inner points go).
-        // No flight time: one part of the whole time, none over, no turnarounds; no camera.
-        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1,0,0,0,80,80,0,0,80,0,0"));
+        // No flight time: one part of the whole time, none over, no turnarounds; no camera. Its two cells
+        // are wholly passable: it covers its region's 200 m2.
+        QCOMPARE(line, std::string("1,Scout,2,200,40,80,3,80,7,1,0,0,0,80,80,0,0,80,0,0,200"));
+        QCOMPARE(robots[0].toObject()["covered_area_m2"].toDouble(), 200.0);
         QCOMPARE(robots[0].toObject()["mission_photos"].toInt(), 0);
 
         // A photo every 15 m along the 40 m path: one at the start, at 15 and 30 m, and one at the stop;
