@@ -500,6 +500,22 @@ Result<std::vector<MapPoint>> missionStarts(const Mission& mission, const Loaded
     return starts;
 }
 
+std::string chargerInDegreesHint(const Mission& mission, const LoadedRaster& raster, int robot) {
+    if (robot < 0 || static_cast<std::size_t>(robot) >= mission.robots.size())
+        return {};
+    const RobotSpec& spec = mission.robots[static_cast<std::size_t>(robot)];
+    if (!spec.charger || !spec.startCrs.empty())
+        return {};
+    const MapPoint given = *spec.charger;
+    if (!(std::fabs(given.x) <= 180.0 && std::fabs(given.y) <= 90.0))
+        return {};
+    const auto onMap = raster.georeference.fromCrs("EPSG:4326", given);
+    if (!onMap || !onTheMap(raster.grid, onMap.value()))
+        return {};
+    return "; read as longitude " + formatQuantity(given.x, 9) + ", latitude " + formatQuantity(given.y, 9) +
+           " it lies on the map: give it as " + describePoint(onMap.value());
+}
+
 Result<std::vector<std::optional<MapPoint>>> missionChargers(const Mission& mission,
                                                              const LoadedRaster& raster, StartUnits units,
                                                              const FieldNamer& names) {

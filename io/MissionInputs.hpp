@@ -95,6 +95,11 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
                                                            const std::vector<std::string>& robotNames = {},
                                                            bool withIndex = false);
 
+// Where robot `robot`'s charger, read in the CRS of its start (the raster's, in metres), was given in
+// degrees: "; read as longitude -112.95, latitude 37.45 it lies on the map: give it as (327515.73,
+// 4146579.4)", for the refusal of a charger outside the raster. Empty otherwise.
+[[nodiscard]] std::string chargerInDegreesHint(const Mission& mission, const LoadedRaster& raster, int robot);
+
 // Each robot's charger in the planning frame (metres), read like its start; none where it charges at its
 // start.
 [[nodiscard]] Result<std::vector<std::optional<MapPoint>>> missionChargers(const Mission& mission,

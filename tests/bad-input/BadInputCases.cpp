@@ -244,8 +244,9 @@ std::vector<BadInputCase> makeCases() {
          2,
          "--charger after --start 1: (15, 45.15) is outside the raster, 5020 km south of it (x 500000.00 to "
          "500400.00, y 5000000.00 to 5000400.00); a charger is read in the same CRS as the robot's start: "
-         "move "
-         "it into the task area",
+         "move it into the task area; read as longitude 15.0045, latitude 45.1538 it lies on the map: give "
+         "it "
+         "as (500353.72, 5000035.87)",
          Gui::None,
          {}},
         {"start that is NaN",
