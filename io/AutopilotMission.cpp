@@ -518,8 +518,11 @@ AutopilotMission sortieMission(const CoveragePath& path, const std::vector<Sorti
 AutopilotMission robotMission(const Plan& plan, const CoveragePath& path, const VehicleSettings& vehicle,
                               const ExportSettings& settings) {
     if (const RobotSorties* sorties = sortiesOfRobot(plan, path.robot);
-        fliesSortiesFromACharger(path, sorties))
-        return sortieMission(path, sorties->sorties, vehicle, settings, plan.cells);
+        fliesSortiesFromACharger(path, sorties)) {
+        AutopilotMission mission = sortieMission(path, sorties->sorties, vehicle, settings, plan.cells);
+        mission.rechargeSeconds = sorties->rechargeSeconds;
+        return mission;
+    }
     CoveragePath whole;
     return autopilotMission(pathForWaypointFiles(path, plan.cells, settings.mergeCollinear, whole), vehicle,
                             settings, plan.cells);
@@ -585,10 +588,14 @@ MissionFlights missionFlights(const AutopilotMission& mission, const VehicleSett
     // Unknown, as the flights, where a speed is unknown: turnarounds alone would read as a time.
     const bool timed = std::all_of(mission.parts.begin(), mission.parts.end(),
                                    [](const MissionPart& part) { return part.seconds > 0.0; });
-    const std::size_t turnarounds = mission.parts.empty() ? 0 : mission.parts.size() - 1;
+    // A sortie's first part takes off from its first point; a part the item limit cut off does not.
+    double between = 0.0;
+    for (std::size_t part = 1; part < mission.parts.size(); ++part)
+        between += mission.sorties > 0 && mission.parts[part].first == mission.parts[part].home
+                       ? mission.rechargeSeconds
+                       : vehicle.turnaroundSeconds;
     if (timed)
-        flights.fieldSeconds =
-            flights.totalSeconds + static_cast<double>(turnarounds) * vehicle.turnaroundSeconds;
+        flights.fieldSeconds = flights.totalSeconds + between;
     return flights;
 }
 

@@ -43,6 +43,8 @@ struct AutopilotMission {
     std::size_t sorties = 0;
     // Whether its first sortie leaves from the robot's start, away from the charger it ends at.
     bool firstSortieFromStart = false;
+    // The time at the charger between two sorties (robotMission, from the battery plan).
+    double rechargeSeconds = 0.0;
     // The time to fly it at the commanded speeds (each segment at the speed commanded for it) with the
     // plan's turn time; 0 when a speed is unknown.
     double seconds = 0.0;
@@ -103,8 +105,8 @@ struct MissionFlights {
     double totalSeconds = 0.0; // all its parts, an aircraft's trips from and back to its start included
     double longestSeconds = 0.0;
     std::size_t overFlightTime = 0; // parts longer than the flight time; none without one
-    // The flights and the vehicle's turnarounds between them: when the robot is done in the field; 0 when
-    // a part's time is unknown.
+    // The flights and the vehicle's turnarounds between them (the time at the charger before each sortie
+    // after the first): when the robot is done in the field; 0 when a part's time is unknown.
     double fieldSeconds = 0.0;
 };
 // Whether a part takes longer than the vehicle's flight time (never without one, or with a speed unknown).

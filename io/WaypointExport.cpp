@@ -595,17 +595,29 @@ std::string partSizes(const AutopilotMission& mission) {
     return sizes + " items, home included";
 }
 
+// " and the turnarounds between them", " and the charges between them" for sorties, or nothing where no
+// time passes between parts.
+std::string betweenPartsIncluded(const VehicleSettings& vehicle, const AutopilotMission& mission) {
+    if (mission.sorties > 0 && mission.rechargeSeconds > 0.0)
+        return " and the charges between them";
+    return vehicle.turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "";
+}
+
 // "; the parts fly 3 h 2 min in all, the longest 24 min 10 s" ("take" for a rover), for a battery, and with
-// turnarounds "; with 5 min between parts, done after 3 h 47 min"; nothing when a speed is unknown.
+// turnarounds "; with 5 min between parts, done after 3 h 47 min" (sorties: "with 10 min at the charger
+// between sorties"); nothing when a speed is unknown.
 std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
     const MissionFlights flights = missionFlights(mission, vehicle);
     if (!(flights.longestSeconds > 0.0))
         return {};
-    const std::string turnarounds = vehicle.turnaroundSeconds > 0.0
-                                        ? "; with " + formatDuration(vehicle.turnaroundSeconds) +
-                                              " between parts, done after " +
-                                              formatDuration(flights.fieldSeconds)
-                                        : std::string();
+    const bool charges = mission.sorties > 0 && mission.rechargeSeconds > 0.0;
+    const std::string between =
+        charges ? formatDuration(mission.rechargeSeconds) + " at the charger between sorties"
+                : formatDuration(vehicle.turnaroundSeconds) + " between parts";
+    const std::string turnarounds =
+        charges || vehicle.turnaroundSeconds > 0.0
+            ? "; with " + between + ", done after " + formatDuration(flights.fieldSeconds)
+            : std::string();
     const char* const take = isAircraft(vehicle.type) ? "; the parts fly " : "; the parts take ";
     const char* const trips = mission.firstSortieFromStart ? ", flights to and from the charger included"
                                                            : ", flights to and from the start included";
@@ -829,10 +841,9 @@ std::string fieldTimeNote(const ExportContext& context) {
     const std::size_t parts = autopilotMissionOf(context, last).parts.size();
     // A rover beside split aircraft may drive its mission in one go: "its 1 parts" says nothing.
     const std::string how =
-        parts == 1
-            ? (isAircraft(vehicle.type) ? ", in one flight" : ", in one go")
-            : ", its " + std::to_string(parts) + (isAircraft(vehicle.type) ? " flights" : " parts") +
-                  (vehicle.turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "") + " included";
+        parts == 1 ? (isAircraft(vehicle.type) ? ", in one flight" : ", in one go")
+                   : ", its " + std::to_string(parts) + (isAircraft(vehicle.type) ? " flights" : " parts") +
+                         betweenPartsIncluded(vehicle, autopilotMissionOf(context, last)) + " included";
     return "the last robot, " + context.robotName(last) + ", done in the field after " +
            formatDuration(lastFlights.fieldSeconds) + how + caveat +
            unevenFieldTimes(context, first, firstSeconds, last, lastFlights.fieldSeconds);

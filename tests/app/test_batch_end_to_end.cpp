@@ -1359,9 +1359,10 @@ QPair<QPointF, QPointF> planEnds(const QJsonObject& plan) {
     return {first, last};
 }
 
-// A battery plan: sorties within the battery, their times adding up to the robot's with the charges; with
-// the charger at the start, each sortie is a part of the robot's mission, from the charger and back, and no
-// file holds the whole path or a sortie twice; a rerun on a battery that lasts leaves no part behind.
+// A battery plan: sorties within the battery, their times adding up to the robot's with the charges, and
+// the time in the field the waypoint files' parts with the same charges; with the charger at the start, each
+// sortie is a part of the robot's mission, from the charger and back, and no file holds the whole path or a
+// sortie twice; a rerun on a battery that lasts leaves no part behind.
 void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
     const QString out = scratch_.filePath("battery");
     const double battery = 600.0;
@@ -1388,6 +1389,13 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
             flying += time.toDouble();
         }
         QVERIFY(nearlyEqual(figures.value("time_s").toDouble(), flying + (sorties - 1) * recharge));
+        // In the field, the waypoint files' parts with the same charges between them.
+        double parts = 0.0;
+        for (const QJsonValue& part : figures.value("mission_part_seconds").toArray())
+            parts += part.toDouble();
+        QVERIFY(parts > 0.0);
+        QVERIFY2(nearlyEqual(figures.value("mission_field_s").toDouble(), parts + (sorties - 1) * recharge),
+                 qPrintable(QString::number(figures.value("mission_field_s").toDouble())));
         QVERIFY2(run.standardOutput.contains(QStringLiteral("makes %1 sorties from its charger at its start, "
                                                             "one part each")
                                                  .arg(sorties)),

@@ -428,8 +428,8 @@ class AutopilotMissionTest : public QObject {
         QVERIFY(!fliesSortiesFromACharger(path, &elsewhere));
     }
 
-    // A robot is done in the field after its flights and a turnaround between each two; with a part's time
-    // unknown, so is that.
+    // A robot is done in the field after its flights and a turnaround between each two, a charge between
+    // two sorties; with a part's time unknown, so is that.
     void fieldTimeAddsTurnaroundsBetweenParts() {
         AutopilotMission mission;
         mission.parts = {{0, 4, 10, 600.0}, {4, 9, 10, 1300.0}, {9, 12, 8, 450.0}};
@@ -445,6 +445,16 @@ class AutopilotMissionTest : public QObject {
         QCOMPARE(missionFlights(mission, drone).overFlightTime, std::size_t{0});
         mission.parts[1].seconds = 0.0; // a speed unknown
         QCOMPARE(missionFlights(mission, drone).fieldSeconds, 0.0);
+
+        // Sorties: the time at the charger before each sortie after the first, the turnaround before a part
+        // the item limit cut from its sortie (it does not take off from the sortie's first point).
+        AutopilotMission sorties;
+        sorties.sorties = 2;
+        sorties.rechargeSeconds = 900.0;
+        sorties.parts = {{0, 4, 10, 600.0}, {4, 7, 10, 500.0}, {8, 12, 8, 450.0}};
+        sorties.parts[1].home = 0;
+        sorties.parts[2].home = 8;
+        QCOMPARE(missionFlights(sorties, drone).fieldSeconds, 1550.0 + 240.0 + 900.0);
     }
 
     // Each part fits one flight, trips included, and the parts are as few as filling each flight in turn
