@@ -457,10 +457,10 @@ Plan BatchRunner::runPlanner(const PlanningProblem& problem) {
         // Its map points with their degrees, as the starts checked before planning are given (the raster
         // lent its pixels, not its size and place).
         if (const auto named = io::planningErrorText(error, fieldNamer(), robotNamesForMessages(), true))
-            badInput(io::withPointsInDegrees(*named, raster_.georeference, raster_.grid) +
-                     (error.aboutCharger() && error.kind() == PlanningError::Kind::StartOutsideArea
-                          ? io::chargerInDegreesHint(mission_, raster_, error.robot())
-                          : std::string()));
+            refuseMission(io::withPointsInDegrees(*named, raster_.georeference, raster_.grid) +
+                          (error.aboutCharger() && error.kind() == PlanningError::Kind::StartOutsideArea
+                               ? io::chargerInDegreesHint(mission_, raster_, error.robot())
+                               : std::string()));
         badInput(options_.missionFromFlags() ? std::string(error.what())
                                              : options_.missionPath + ": " + error.what());
     }

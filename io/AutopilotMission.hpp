@@ -102,7 +102,7 @@ struct AutopilotMission {
 
 // What a mission's parts fly, held against the vehicle's flight time.
 struct MissionFlights {
-    double totalSeconds = 0.0; // all its parts, an aircraft's trips from and back to its start included
+    double totalSeconds = 0.0; // all its parts, an aircraft's trips from and back to its home included
     double longestSeconds = 0.0;
     std::size_t overFlightTime = 0; // parts longer than the flight time; none without one
     // The flights and the vehicle's turnarounds between them (the time at the charger before each sortie

@@ -513,7 +513,7 @@ std::string chargerInDegreesHint(const Mission& mission, const LoadedRaster& ras
     if (!onMap || !onTheMap(raster.grid, onMap.value()))
         return {};
     return "; read as longitude " + formatQuantity(given.x, 9) + ", latitude " + formatQuantity(given.y, 9) +
-           " it lies on the map: give it as " + describePoint(onMap.value());
+           " it lies on the map: give it as " + describePoint(raster.georeference.toCrsUnits(onMap.value()));
 }
 
 Result<std::vector<std::optional<MapPoint>>> missionChargers(const Mission& mission,

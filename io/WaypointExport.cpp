@@ -619,8 +619,8 @@ std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMissi
             ? "; with " + between + ", done after " + formatDuration(flights.fieldSeconds)
             : std::string();
     const char* const take = isAircraft(vehicle.type) ? "; the parts fly " : "; the parts take ";
-    const char* const trips = mission.firstSortieFromStart ? ", flights to and from the charger included"
-                                                           : ", flights to and from the start included";
+    const char* const trips = mission.sorties > 0 ? ", flights to and from where each takes off included"
+                                                  : ", flights to and from the start included";
     return take + formatDuration(flights.totalSeconds) + " in all, the longest " +
            formatDuration(flights.longestSeconds) + (isAircraft(vehicle.type) ? trips : "") + turnarounds;
 }
@@ -688,12 +688,12 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
     const auto partName = [&](std::size_t part) {
         return std::filesystem::path(missionPartPath(path, part, mission.parts.size())).filename().string();
     };
-    const std::string aircraft =
-        !isAircraft(vehicle.type) ? ""
-        : mission.firstSortieFromStart
-            ? "; each takes off from the robot's charger and returns to it, but the first, which takes off "
-              "from its start and lands at the charger"
-            : "; each takes off from the robot's start and returns to it";
+    const std::string aircraft = !isAircraft(vehicle.type) ? ""
+                                 : mission.firstSortieFromStart
+                                     ? "; each takes off from the robot's charger and returns to it, but the "
+                                       "first sortie, which takes "
+                                       "off from its start and lands at the charger"
+                                     : "; each takes off from the robot's start and returns to it";
     return context.robotName(robot) + "'s mission " + splitReason(context, robot, mission) + ": written in " +
            std::to_string(mission.parts.size()) + " parts of " + partSizes(mission) +
            ", each beginning where the one before it ended (" + partName(0) + " to " +
@@ -704,11 +704,20 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
 namespace {
 
 // Why an aircraft's flights do not fit: "its farthest waypoint lies 11.2 km from its start, and one flight
-// at 12 m/s goes at most 6.8 km from its start and back"; the distance alone without a cruise speed.
+// at 12 m/s goes at most 6.8 km from its start and back"; the distance alone without a cruise speed. Sorties
+// are measured from where each flight takes off, their charger.
 std::string outOfReachNote(const VehicleSettings& vehicle, const AutopilotMission& mission) {
-    const double farthest = farthestFromHome(mission, {0, mission.points.size() - 1});
+    double farthest = 0.0;
+    if (mission.sorties > 0) {
+        for (const MissionPart& part : mission.parts)
+            if (exceedsFlightTime(part, vehicle))
+                farthest = std::max(farthest, farthestFromHome(mission, part));
+    } else {
+        farthest = farthestFromHome(mission, {0, mission.points.size() - 1});
+    }
     const double reach = flightReachMetres(vehicle);
-    return "its farthest waypoint lies " + formatDistance(farthest) + " from its start" +
+    return "its farthest waypoint lies " + formatDistance(farthest) +
+           (mission.sorties > 0 ? " from where its flight takes off" : " from its start") +
            (reach > 0.0 ? ", and one flight at " + formatQuantity(vehicle.cruiseSpeedMetresPerSecond, 4) +
                               " m/s goes at most " + formatDistance(reach) + " from its start and back"
                         : std::string());
@@ -771,8 +780,8 @@ std::string unevenFieldTimes(const ExportContext& context, int first, double fir
     const bool pathsEven = firstPath > 0.0 && lastPath > 0.0 &&
                            std::max(firstPath, lastPath) <= std::min(firstPath, lastPath) * noticeable;
     return "; the first, " + context.robotName(first) + ", after " + formatDuration(firstSeconds) +
-           (pathsEven ? ": their paths take about as long, but the trips to and from their starts and the "
-                        "turnarounds between flights come on top"
+           (pathsEven ? ": their paths take about as long, but the trips to and from where they take off and "
+                        "the turnarounds between flights come on top"
                       : std::string());
 }
 

@@ -1,5 +1,7 @@
 #include "render/PlanFrame.hpp"
 
+#include "core/model/SortieLayer.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -106,16 +108,19 @@ Bounds framedBounds(const ClassGrid& grid, const Bounds& bounds, const std::vect
 
 } // namespace
 
+MapPoint flightHomeOf(const Plan& plan, const CoveragePath& path) {
+    if (const RobotSorties* sorties = sortiesOfRobot(plan, path.robot); sorties != nullptr)
+        return sorties->charger;
+    return path.takeOff ? *path.takeOff : MapPoint{path.waypoints.front().x, path.waypoints.front().y};
+}
+
 std::vector<FrameRing> flightReachRings(const Plan& plan, const std::vector<double>& reachMetres) {
     std::vector<FrameRing> rings;
     for (const CoveragePath& path : plan.paths) {
         const auto robot = static_cast<std::size_t>(path.robot);
         if (path.waypoints.empty() || robot >= reachMetres.size() || !(reachMetres[robot] > 0.0))
             continue;
-        // Centred where its flights take off and land.
-        const MapPoint home =
-            path.takeOff ? *path.takeOff : MapPoint{path.waypoints.front().x, path.waypoints.front().y};
-        rings.push_back({home, reachMetres[robot]});
+        rings.push_back({flightHomeOf(plan, path), reachMetres[robot]});
     }
     return rings;
 }

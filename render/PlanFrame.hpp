@@ -26,8 +26,11 @@ struct FrameRing {
 // The same frame round the task area's pixels (neither outside the area of interest nor nodata): what a
 // view of the map before any plan fits to. The whole raster where they take most of it.
 [[nodiscard]] ClassGrid taskAreaFrame(const ClassGrid& grid);
-// The flight-reach rings of a plan's robots: round where each takes off (its path's first waypoint, or its
-// take-off point beside the area), of the robot's reach in metres (by robot; 0 or missing: none).
+// Where a robot's flights take off and land: the charger of a battery plan's sorties, else its take-off
+// point beside the area, else its path's first waypoint.
+[[nodiscard]] MapPoint flightHomeOf(const Plan& plan, const CoveragePath& path);
+// The flight-reach rings of a plan's robots: round where each takes off (flightHomeOf), of the robot's
+// reach in metres (by robot; 0 or missing: none).
 [[nodiscard]] std::vector<FrameRing> flightReachRings(const Plan& plan,
                                                       const std::vector<double>& reachMetres);
 // Whether some ring's outline crosses the frame: one wholly outside it, or wholly round it, shows nothing.

@@ -10,6 +10,7 @@
 #include "core/outlines/RegionOutlines.hpp"
 #include "io/PlanExport.hpp"
 #include "render/DetectionPalette.hpp"
+#include "render/PlanFrame.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QFont>
@@ -884,8 +885,14 @@ void PlanRenderer::paintTakeOffLegs(QPainter& painter, const QTransform& worldTo
 }
 
 // Under the markers, so that a start stays easy to pick; dashed, so that it does not read as a region border.
+// Round the start, or round the charger a battery plan's sorties fly from.
 void PlanRenderer::paintFlightReach(QPainter& painter, const QTransform& worldToDevice,
-                                    const std::vector<MapPoint>& starts) const {
+                                    std::vector<MapPoint> starts) const {
+    if (plan_ != nullptr)
+        for (const CoveragePath& path : plan_->paths)
+            if (const auto robot = static_cast<std::size_t>(path.robot);
+                robot < starts.size() && sortiesOfRobot(*plan_, path.robot) != nullptr)
+                starts[robot] = flightHomeOf(*plan_, path);
     const double pixelsPerMetre = std::abs(worldToDevice.m11());
     for (std::size_t robot = 0; robot < starts.size() && robot < flightReach_.size(); ++robot) {
         if (!(flightReach_[robot] > 0.0))

@@ -122,7 +122,7 @@ class PlanRenderer {
     void paintChargers(QPainter& painter, const QTransform& worldToDevice) const;
     void paintTakeOffLegs(QPainter& painter, const QTransform& worldToDevice) const;
     void paintFlightReach(QPainter& painter, const QTransform& worldToDevice,
-                          const std::vector<MapPoint>& starts) const;
+                          std::vector<MapPoint> starts) const;
     static void drawCharger(QPainter& painter, QPointF centre, const QColor& colour);
 
     std::vector<GridImage> landCoverPyramid_; // halved again and again, for zoomed-out views

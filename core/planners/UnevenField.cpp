@@ -43,12 +43,13 @@ std::string unevenFieldMessage(const Plan& plan, const PlannerDescription& plann
                              formatDuration(first->fieldSeconds) + ")";
     const std::string nearer = "start robots nearer the land farthest from every start, or add robots";
     if (planner.balancesFieldTime)
-        return fact + ": the division could not even out their flights out to the work and back and the " +
-               "turnarounds between them; " + nearer;
+        return fact + ": the division could not even out what they spend beside their paths (an aircraft's " +
+               "trips out to its work and back, the turnarounds between parts); " + nearer;
     const std::string others = fieldBalancingPlanners();
     return fact + ": " + planner.label +
-           " evens out the paths, not the flights out to the work and back and the turnarounds between " +
-           "them; " +
+           " evens out the paths, not what the robots spend beside them (an aircraft's trips out to its "
+           "work " +
+           "and back, the turnarounds between parts); " +
            (others.empty() ? "" : "plan with " + others + ", which evens out time in the field, ") + nearer;
 }
 

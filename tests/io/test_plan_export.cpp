@@ -619,8 +619,8 @@ class PlanExportTest : public QObject {
         const std::string note = fieldTimeNote(fleet);
         QVERIFY2(note.ends_with(
                      "; the first, " + fleet.robotName(1) + ", after " + formatDuration(driven.fieldSeconds) +
-                     ": their paths take about as long, but the trips to and from their starts and "
-                     "the turnarounds between flights come on top"),
+                     ": their paths take about as long, but the trips to and from where they take off "
+                     "and the turnarounds between flights come on top"),
                  note.c_str());
         // Two drones alike are done together: nothing more to say.
         ExportContext drones{plan, reference_, classes_, ExportSettings{}};

@@ -312,6 +312,53 @@ class TestPlanRenderer : public QObject {
         QCOMPARE(across.count('r'), 2);
     }
 
+    // A battery plan's sorties fly from the charger: the reach ring is drawn round it, not round the start
+    // 50 m west of it (a ring of 40 m round the start would not touch the charger's ring at these angles).
+    void ringsTheReachRoundTheChargerSortiesFlyFrom() {
+        const ClassGrid grid = twoClassGrid();
+        const ClassTable classes = twoClassTable();
+        Plan plan;
+        plan.planner = "test";
+        CoveragePath path;
+        for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+                 {1050, 4950}, {1100, 4950}, {1100, 4940}, {1100, 4950}, {1100, 4960}, {1100, 4950}}) {
+            Waypoint waypoint;
+            waypoint.x = x;
+            waypoint.y = y;
+            path.waypoints.push_back(waypoint);
+        }
+        plan.paths.push_back(path);
+        RobotSorties robot;
+        robot.charger = {1100, 4950};
+        robot.sorties = {{0, 3}, {3, 5}};
+        plan.layers.push_back(std::make_shared<SortieLayer>(std::vector<RobotSorties>{robot}));
+        render::PlanRenderer renderer;
+        renderer.setMap(&grid, &classes);
+        renderer.setPlan(&plan);
+        renderer.setStarts({{1050.0, 4950.0}});
+        renderer.setFlightReach({40.0});
+        QImage image(400, 200, QImage::Format_RGB32);
+        QPainter painter(&image);
+        renderer.paint(painter, render::PlanRenderer::fitTransform(grid, QSizeF(400, 200)),
+                       QRectF(0, 0, 400, 200));
+        painter.end();
+        // 2 pixels a metre: the charger at (200, 100), the start at (100, 100); the ring's side away from the
+        // start, at angles -60 to 60 degrees round the charger.
+        const auto ringPixelsRound = [&](double centreX) {
+            int drawn = 0;
+            for (int step = -12; step <= 12; ++step) {
+                const double angle = step * 5.0 * 3.14159265358979 / 180.0;
+                const QColor pixel =
+                    image.pixelColor(static_cast<int>(std::lround(centreX + 80 * std::cos(angle))),
+                                     static_cast<int>(std::lround(100 + 80 * std::sin(angle))));
+                drawn += near(pixel, render::RobotPalette::colour(0).darker(130), 40) ? 1 : 0;
+            }
+            return drawn;
+        };
+        QVERIFY2(ringPixelsRound(200.0) > 12, qPrintable(QString::number(ringPixelsRound(200.0))));
+        QVERIFY2(ringPixelsRound(100.0) < 4, qPrintable(QString::number(ringPixelsRound(100.0))));
+    }
+
     // Two sorties from a charger at the west end: out and back along y = 4950, then along y = 4915. The
     // second is drawn darker (device rows 100 and 170), and the legend says so.
     void drawsEverySecondSortieDarker() {
