@@ -423,6 +423,35 @@ class AutopilotMissionTest : public QObject {
         QVERIFY(std::abs(farthestFromHome(mission, back) - std::hypot(200.0, 10.0)) < 1e-9);
         QCOMPARE(mission.homeOf(back).y, path.waypoints[4].y);
 
+        // Under a tight item limit the first sortie takes several parts: those before its last return to
+        // the start, and only its last lands at the charger; the second's parts take off from the charger.
+        CoveragePath zigzag; // eight rows out to the charger at (0, 80), then a loop from it
+        for (int row = 0; row < 8; ++row) {
+            addAtFiveMetresASecond(zigzag, row % 2 == 0 ? 0 : 200, 10.0 * row);
+            addAtFiveMetresASecond(zigzag, row % 2 == 0 ? 200 : 0, 10.0 * row);
+        }
+        addAtFiveMetresASecond(zigzag, 0, 80);
+        const std::size_t charger = zigzag.waypoints.size() - 1;
+        for (const auto& [x, y] :
+             std::vector<std::pair<double, double>>{{200, 80}, {200, 90}, {0, 90}, {0, 80}})
+            addAtFiveMetresASecond(zigzag, x, y);
+        RobotSorties zigzagSorties;
+        zigzagSorties.sorties = {{0, charger}, {charger, zigzag.waypoints.size() - 1}};
+        QVERIFY(fliesSortiesFromACharger(zigzag, &zigzagSorties));
+        drone.maxWaypoints = minimumMaxWaypoints;
+        const AutopilotMission tight =
+            sortieMission(zigzag, zigzagSorties.sorties, drone, shaping(0.1, true), noTurnPrice);
+        const std::size_t secondSortie = charger + 1;
+        std::size_t landings = 0;
+        for (const MissionPart& part : tight.parts) {
+            const bool inFirst = part.last < secondSortie;
+            QCOMPARE(part.home, inFirst ? std::size_t{0} : secondSortie);
+            QCOMPARE(part.landsAtLast, inFirst && part.last + 1 == secondSortie);
+            landings += part.landsAtLast ? 1 : 0;
+        }
+        QVERIFY(tight.parts.size() > 2);
+        QCOMPARE(landings, std::size_t{1});
+
         RobotSorties elsewhere = sorties;
         elsewhere.sorties = {{0, 4}, {4, 7}}; // the second ends away from the charger
         QVERIFY(!fliesSortiesFromACharger(path, &elsewhere));
