@@ -23,6 +23,26 @@ using namespace mcpp;
 
 namespace {
 
+// One robot's path through `points` in `sorties` from a charger.
+Plan sortiePlan(const std::vector<std::pair<double, double>>& points, MapPoint charger,
+                std::vector<Sortie> sorties) {
+    Plan plan;
+    plan.planner = "test";
+    CoveragePath path;
+    for (const auto& [x, y] : points) {
+        Waypoint waypoint;
+        waypoint.x = x;
+        waypoint.y = y;
+        path.waypoints.push_back(waypoint);
+    }
+    plan.paths.push_back(path);
+    RobotSorties robot;
+    robot.charger = charger;
+    robot.sorties = std::move(sorties);
+    plan.layers.push_back(std::make_shared<SortieLayer>(std::vector<RobotSorties>{robot}));
+    return plan;
+}
+
 constexpr std::uint32_t kMeadow = 0x40a040;
 constexpr std::uint32_t kWater = 0x2060c0;
 
@@ -317,21 +337,9 @@ class TestPlanRenderer : public QObject {
     void ringsTheReachRoundTheChargerSortiesFlyFrom() {
         const ClassGrid grid = twoClassGrid();
         const ClassTable classes = twoClassTable();
-        Plan plan;
-        plan.planner = "test";
-        CoveragePath path;
-        for (const auto& [x, y] : std::vector<std::pair<double, double>>{
-                 {1050, 4950}, {1100, 4950}, {1100, 4940}, {1100, 4950}, {1100, 4960}, {1100, 4950}}) {
-            Waypoint waypoint;
-            waypoint.x = x;
-            waypoint.y = y;
-            path.waypoints.push_back(waypoint);
-        }
-        plan.paths.push_back(path);
-        RobotSorties robot;
-        robot.charger = {1100, 4950};
-        robot.sorties = {{0, 3}, {3, 5}};
-        plan.layers.push_back(std::make_shared<SortieLayer>(std::vector<RobotSorties>{robot}));
+        const Plan plan =
+            sortiePlan({{1050, 4950}, {1100, 4950}, {1100, 4940}, {1100, 4950}, {1100, 4960}, {1100, 4950}},
+                       {1100, 4950}, {{0, 3}, {3, 5}});
         render::PlanRenderer renderer;
         renderer.setMap(&grid, &classes);
         renderer.setPlan(&plan);
@@ -362,27 +370,15 @@ class TestPlanRenderer : public QObject {
     // Two sorties from a charger at the west end: out and back along y = 4950, then along y = 4915. The
     // second is drawn darker (device rows 100 and 170), and the legend says so.
     void drawsEverySecondSortieDarker() {
-        Plan plan;
-        plan.planner = "test";
-        CoveragePath path;
-        path.closed = true;
-        for (const auto& [x, y] : std::vector<std::pair<double, double>>{{1005, 4950},
-                                                                         {1095, 4950},
-                                                                         {1005, 4950},
-                                                                         {1005, 4915},
-                                                                         {1095, 4915},
-                                                                         {1005, 4915},
-                                                                         {1005, 4950}}) {
-            Waypoint waypoint;
-            waypoint.x = x;
-            waypoint.y = y;
-            path.waypoints.push_back(waypoint);
-        }
-        plan.paths.push_back(path);
-        RobotSorties robot;
-        robot.charger = {1005, 4950};
-        robot.sorties = {{0, 2}, {2, 6}};
-        plan.layers.push_back(std::make_shared<SortieLayer>(std::vector<RobotSorties>{robot}));
+        Plan plan = sortiePlan({{1005, 4950},
+                                {1095, 4950},
+                                {1005, 4950},
+                                {1005, 4915},
+                                {1095, 4915},
+                                {1005, 4915},
+                                {1005, 4950}},
+                               {1005, 4950}, {{0, 2}, {2, 6}});
+        plan.paths.front().closed = true;
         const QImage image = render::renderPlanImage(twoClassGrid(), twoClassTable(), &plan, QSize(400, 200));
         const QColor first = image.pixelColor(60, 100);
         const QColor second = image.pixelColor(60, 170);
