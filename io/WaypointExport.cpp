@@ -691,8 +691,7 @@ std::string splitMissionNote(const ExportContext& context, int robot, const std:
     const std::string aircraft = !isAircraft(vehicle.type) ? ""
                                  : mission.firstSortieFromStart
                                      ? "; each takes off from the robot's charger and returns to it, but the "
-                                       "first sortie, which takes "
-                                       "off from its start and lands at the charger"
+                                       "first sortie, which takes off from its start and lands at the charger"
                                      : "; each takes off from the robot's start and returns to it";
     return context.robotName(robot) + "'s mission " + splitReason(context, robot, mission) + ": written in " +
            std::to_string(mission.parts.size()) + " parts of " + partSizes(mission) +
