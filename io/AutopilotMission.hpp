@@ -61,6 +61,9 @@ struct AutopilotMission {
         return there;
     }
 
+    // Whether time passes at a charger between its sorties.
+    [[nodiscard]] bool chargesBetweenSorties() const { return sorties > 0 && rechargeSeconds > 0.0; }
+
     // Whether the vehicle is told a new speed before driving to this point.
     [[nodiscard]] bool changesSpeedAt(std::size_t point) const {
         return point > 0 && commandedSpeeds[point] != commandedSpeeds[point - 1];

@@ -278,14 +278,21 @@ std::string metresOnDegreesHint(const RobotSpec& spec, const LoadedRaster& raste
 // A start outside the map whose numbers look like degrees, typed without a CRS saying so (on a raster
 // warped from degrees, mission files give starts in its planning metres): where they would lie as
 // longitude and latitude (or the other way round), if that is on the map.
+// Where longitude and latitude fall in the planning frame, if on the map.
+std::optional<MapPoint> degreesOnTheMap(const LoadedRaster& raster, MapPoint lonLat) {
+    const auto onMap = raster.georeference.fromCrs("EPSG:4326", lonLat);
+    if (!onMap || !onTheMap(raster.grid, onMap.value()))
+        return std::nullopt;
+    return onMap.value();
+}
+
 std::string degreesWithoutCrsHint(const LoadedRaster& raster, MapPoint start, const std::string& crsField) {
     if (!(std::fabs(start.x) <= 180.0 && std::fabs(start.y) <= 180.0))
         return {};
     for (const MapPoint lonLat : {start, MapPoint{start.y, start.x}}) {
         if (std::fabs(lonLat.y) > 90.0)
             continue;
-        const auto onMap = raster.georeference.fromCrs("EPSG:4326", lonLat);
-        if (onMap && onTheMap(raster.grid, onMap.value()))
+        if (degreesOnTheMap(raster, lonLat))
             return "; as longitude " + formatQuantity(lonLat.x, 9) + ", latitude " +
                    formatQuantity(lonLat.y, 9) + " it lies on the map: give EPSG:4326 as " + crsField +
                    (lonLat.x == start.x ? std::string() : std::string(" and longitude first"));
@@ -509,11 +516,11 @@ std::string chargerInDegreesHint(const Mission& mission, const LoadedRaster& ras
     const MapPoint given = *spec.charger;
     if (!(std::fabs(given.x) <= 180.0 && std::fabs(given.y) <= 90.0))
         return {};
-    const auto onMap = raster.georeference.fromCrs("EPSG:4326", given);
-    if (!onMap || !onTheMap(raster.grid, onMap.value()))
+    const auto onMap = degreesOnTheMap(raster, given);
+    if (!onMap)
         return {};
     return "; read as longitude " + formatQuantity(given.x, 9) + ", latitude " + formatQuantity(given.y, 9) +
-           " it lies on the map: give it as " + describePoint(raster.georeference.toCrsUnits(onMap.value()));
+           " it lies on the map: give it as " + describePoint(raster.georeference.toCrsUnits(*onMap));
 }
 
 Result<std::vector<std::optional<MapPoint>>> missionChargers(const Mission& mission,

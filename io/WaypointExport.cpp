@@ -598,7 +598,7 @@ std::string partSizes(const AutopilotMission& mission) {
 // " and the turnarounds between them", " and the charges between them" for sorties, or nothing where no
 // time passes between parts.
 std::string betweenPartsIncluded(const VehicleSettings& vehicle, const AutopilotMission& mission) {
-    if (mission.sorties > 0 && mission.rechargeSeconds > 0.0)
+    if (mission.chargesBetweenSorties())
         return " and the charges between them";
     return vehicle.turnaroundSeconds > 0.0 ? " and the turnarounds between them" : "";
 }
@@ -610,7 +610,7 @@ std::string longestPartNote(const VehicleSettings& vehicle, const AutopilotMissi
     const MissionFlights flights = missionFlights(mission, vehicle);
     if (!(flights.longestSeconds > 0.0))
         return {};
-    const bool charges = mission.sorties > 0 && mission.rechargeSeconds > 0.0;
+    const bool charges = mission.chargesBetweenSorties();
     const std::string between =
         charges ? formatDuration(mission.rechargeSeconds) + " at the charger between sorties"
                 : formatDuration(vehicle.turnaroundSeconds) + " between parts";

@@ -10,7 +10,6 @@
 #include "core/outlines/RegionOutlines.hpp"
 #include "io/PlanExport.hpp"
 #include "render/DetectionPalette.hpp"
-#include "render/PlanFrame.hpp"
 #include "render/RobotPalette.hpp"
 
 #include <QFont>
@@ -888,11 +887,10 @@ void PlanRenderer::paintTakeOffLegs(QPainter& painter, const QTransform& worldTo
 // Round the start, or round the charger a battery plan's sorties fly from.
 void PlanRenderer::paintFlightReach(QPainter& painter, const QTransform& worldToDevice,
                                     std::vector<MapPoint> starts) const {
-    if (plan_ != nullptr)
-        for (const CoveragePath& path : plan_->paths)
-            if (const auto robot = static_cast<std::size_t>(path.robot);
-                robot < starts.size() && sortiesOfRobot(*plan_, path.robot) != nullptr)
-                starts[robot] = flightHomeOf(*plan_, path);
+    if (const SortieLayer* sorties = plan_ == nullptr ? nullptr : sortieLayerOf(*plan_); sorties != nullptr)
+        for (const RobotSorties& robot : sorties->robots())
+            if (static_cast<std::size_t>(robot.robot) < starts.size())
+                starts[static_cast<std::size_t>(robot.robot)] = robot.charger;
     const double pixelsPerMetre = std::abs(worldToDevice.m11());
     for (std::size_t robot = 0; robot < starts.size() && robot < flightReach_.size(); ++robot) {
         if (!(flightReach_[robot] > 0.0))
