@@ -88,14 +88,22 @@ struct PlanMetrics {
     // home; 0 without times in the field. (Makespan over the bound in the field says more of how far the
     // work lies from the starts than of the plan.)
     [[nodiscard]] double fieldSpread() const {
-        double shortest = 0.0;
-        double longest = 0.0;
-        for (const RobotMetrics& robot : robots)
-            if (robot.fieldSeconds > 0.0) {
-                shortest = shortest > 0.0 ? std::min(shortest, robot.fieldSeconds) : robot.fieldSeconds;
-                longest = std::max(longest, robot.fieldSeconds);
-            }
-        return shortest > 0.0 ? longest / shortest : 0.0;
+        const auto [first, last] = firstAndLastHome();
+        return first != nullptr ? last->fieldSeconds / first->fieldSeconds : 0.0;
+    }
+    // The robots with work that come home first and last (null without times in the field).
+    [[nodiscard]] std::pair<const RobotMetrics*, const RobotMetrics*> firstAndLastHome() const {
+        const RobotMetrics* first = nullptr;
+        const RobotMetrics* last = nullptr;
+        for (const RobotMetrics& robot : robots) {
+            if (!(robot.fieldSeconds > 0.0))
+                continue;
+            if (first == nullptr || robot.fieldSeconds < first->fieldSeconds)
+                first = &robot;
+            if (last == nullptr || robot.fieldSeconds > last->fieldSeconds)
+                last = &robot;
+        }
+        return {first, last};
     }
     [[nodiscard]] int totalTurns() const {
         int turns = 0;

@@ -24,16 +24,7 @@ std::string unevenFieldMessage(const Plan& plan, const PlannerDescription& plann
     constexpr double noticeableSpread = 1.25;
     if (!(metrics.fieldSpread() >= noticeableSpread) || !metrics.confinedRobots.empty())
         return {};
-    const RobotMetrics* first = nullptr;
-    const RobotMetrics* last = nullptr;
-    for (const RobotMetrics& robot : metrics.robots) {
-        if (!(robot.fieldSeconds > 0.0))
-            continue;
-        if (first == nullptr || robot.fieldSeconds < first->fieldSeconds)
-            first = &robot;
-        if (last == nullptr || robot.fieldSeconds > last->fieldSeconds)
-            last = &robot;
-    }
+    const auto [first, last] = metrics.firstAndLastHome();
     std::ostringstream spread;
     spread.precision(3);
     spread << metrics.fieldSpread();
