@@ -237,18 +237,19 @@ std::optional<PlanMetricsCalculator::SharedWork> PlanMetricsCalculator::boundWit
 
 namespace {
 
-// The work of a share by how far it lies from the starts of its robots that fly out to their work; none
-// where it has no such robot, or no robot reaches some of it.
+// The work of a share by how far it lies from the homes (by robot: where its flights take off and land) of
+// its robots that fly out to their work; none where it has no such robot, or no robot reaches some of it.
 std::optional<WorkByDistance> workBeyondTripStarts(const Plan& plan,
                                                    const PlanMetricsCalculator::SharedWork& share,
-                                                   const std::vector<FlightLimits>& flights) {
+                                                   const std::vector<FlightLimits>& flights,
+                                                   const std::vector<std::vector<StartSquare>>& homes) {
     if (!share.workOfCell)
         return std::nullopt;
     std::vector<StartSquare> starts;
     std::vector<WorkByDistance::TurningPath> turning; // the share's seconds count its robots' turns
     for (std::size_t robot = 0; robot < share.weights.size() && robot < flights.size(); ++robot) {
         if (share.weights[robot] > 0.0 && flights[robot].makesTrips())
-            starts.push_back(homeOf(plan, robot));
+            starts.insert(starts.end(), homes[robot].begin(), homes[robot].end());
         if (share.weights[robot] > 0.0 && robot < plan.paths.size())
             turning.push_back({&plan.paths[robot], share.weights[robot]});
     }
@@ -288,14 +289,58 @@ double PlanMetricsCalculator::fieldBound(const Plan& plan, const std::vector<Sha
                                          double dearestTurnSeconds) const {
     const std::vector<FlightLimits> flights =
         boundedFlights(plan.regions.startCell.size(), dearestTurnSeconds);
-    const bool trips = flightsReachTheirWork(plan);
+    if (!flightsReachTheirWork(plan))
+        return boundOfFlights(plan, shares, flights, {});
+    std::vector<std::vector<StartSquare>> homes;
+    for (std::size_t robot = 0; robot < flights.size(); ++robot)
+        homes.push_back({homeOf(plan, robot)});
+    return boundOfFlights(plan, shares, flights, homes);
+}
+
+// homes: by robot, where its flights take off and land; none: their trips are not counted.
+double PlanMetricsCalculator::boundOfFlights(const Plan& plan, const std::vector<SharedWork>& shares,
+                                             const std::vector<FlightLimits>& flights,
+                                             const std::vector<std::vector<StartSquare>>& homes) {
     double bound = 0.0;
     for (const SharedWork& share : shares) {
         const std::optional<WorkByDistance> far =
-            trips ? workBeyondTripStarts(plan, share, flights) : std::nullopt;
+            homes.empty() ? std::nullopt : workBeyondTripStarts(plan, share, flights, homes);
         bound = std::max(bound, leastFieldSeconds(share, flights, far ? &*far : nullptr));
     }
     return bound;
+}
+
+// The plan's paths are its sorties, the trips out to the work and the charges between them included: each
+// robot flies sorties of at most its endurance (and a U-turn at the dearest price, which a sortie's end may
+// make beyond it) from its charger, or on the first from its start, at most as fast as it goes anywhere.
+// A robot flying from one home to another spends, to work beyond some distance of both, twice that distance.
+double PlanMetricsCalculator::sortieBound(const Plan& plan, const std::vector<SharedWork>& shares,
+                                          double dearestTurnSeconds) {
+    const SortieLayer* layer = sortieLayerOf(plan);
+    const std::size_t robots = plan.regions.startCell.size();
+    if (layer == nullptr || !startsOnTheMap(plan))
+        return 0.0;
+    double fastestCell = 0.0;
+    for (std::size_t id = 0; id < plan.cells.size(); ++id)
+        fastestCell = std::max(
+            fastestCell, static_cast<double>(plan.cells.cell(static_cast<int>(id)).speedMetresPerSecond));
+    std::vector<FlightLimits> flights(robots);
+    std::vector<std::vector<StartSquare>> homes(robots);
+    for (const RobotSorties& sorties : layer->robots()) {
+        const auto robot = static_cast<std::size_t>(sorties.robot);
+        if (robot >= robots || !(sorties.enduranceSeconds > 0.0) || !std::isfinite(sorties.enduranceSeconds))
+            continue;
+        FlightLimits& limits = flights[robot];
+        limits.flightSeconds = sorties.enduranceSeconds + 2.0 * dearestTurnSeconds;
+        limits.turnaroundSeconds = sorties.rechargeSeconds;
+        // Floats round speeds: a millionth faster keeps the trips from being priced above what is flown.
+        limits.tripMetresPerSecond =
+            (1.0 + ratioRounding) * std::max(ownSpeedOf(plan.robotSpeeds, robot), fastestCell);
+        homes[robot].push_back({sorties.charger, 0.0});
+        if (robot < plan.paths.size() && !plan.paths[robot].closed)
+            homes[robot].push_back(homeOf(plan, robot));
+    }
+    return boundOfFlights(plan, shares, flights, homes);
 }
 
 // Where some robot flies out to its work: whether each such robot reaches every cell of its region within
@@ -429,6 +474,8 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
         !flightsReachTheirWork(plan);
     const double partsBound = metrics.lowerBoundSeconds;
     boundByCharges(plan);
+    metrics.lowerBoundSeconds =
+        std::max(metrics.lowerBoundSeconds, sortieBound(plan, shares, dearestTurnSeconds));
     if (metrics.lowerBoundSeconds > partsBound) // set by the charges, not by robots alone
         metrics.sharedPartsRatio = 0.0;
     metrics.ratio =

@@ -2,6 +2,7 @@
 
 #include "core/model/FlightLimits.hpp"
 #include "core/model/Plan.hpp"
+#include "core/planners/StartSquare.hpp"
 
 #include <functional>
 #include <optional>
@@ -46,6 +47,14 @@ class PlanMetricsCalculator {
     // dearestTurnSeconds: the highest price of a quarter turn on the map.
     [[nodiscard]] double fieldBound(const Plan& plan, const std::vector<SharedWork>& shares,
                                     double dearestTurnSeconds) const;
+    // The least time in the field in which robots within `flights` can do every share, from `homes`.
+    [[nodiscard]] static double boundOfFlights(const Plan& plan, const std::vector<SharedWork>& shares,
+                                               const std::vector<FlightLimits>& flights,
+                                               const std::vector<std::vector<StartSquare>>& homes);
+    // The least time a plan flown in sorties from chargers takes, its trips out to the work included; 0 for
+    // a plan without sorties.
+    [[nodiscard]] static double sortieBound(const Plan& plan, const std::vector<SharedWork>& shares,
+                                            double dearestTurnSeconds);
     [[nodiscard]] std::vector<FlightLimits> boundedFlights(std::size_t robots,
                                                            double dearestTurnSeconds) const;
     [[nodiscard]] bool flightsReachTheirWork(const Plan& plan) const;

@@ -162,12 +162,13 @@ class WavefrontBatteryTest : public QObject {
         }
         QVERIFY(std::abs(path.timeSeconds - (flying + robot.charges() * recharge)) < 1e-6);
         QCOMPARE(plan.metrics.makespanSeconds, path.timeSeconds);
-        // 1 600 sub-cells take 1 600 s at least, so 7 sorties and 6 charges at least: no plan beats 3 400 s
-        // (turns add their time).
-        QVERIFY(plan.metrics.lowerBoundSeconds >= 3400.0 - 1e-6);
-        if (turnSeconds == 0.0)
-            QCOMPARE(plan.metrics.lowerBoundSeconds, 3400.0);
-        QVERIFY(plan.metrics.ratio >= 1.0);
+        // 1 600 sub-cells take 1 600 s at least, so 7 sorties and 6 charges at least: 3 400 s. The trips
+        // out raise it: the 1 488 s of work on cells wholly beyond 10 m of the charger leave at most 220 s
+        // of a sortie after its 20 s out and back, so six full sorties and a seventh of 188 s: 6 x (240 +
+        // 300) + 188 = 3 428 s (less the bound's steps of distance, a tenth of a metre).
+        QVERIFY2(plan.metrics.lowerBoundSeconds >= 3427.0,
+                 qPrintable(QString::number(plan.metrics.lowerBoundSeconds)));
+        QVERIFY(plan.metrics.lowerBoundSeconds <= plan.metrics.makespanSeconds);
         QCOMPARE(plan.metrics.coveredFraction, 1.0);
         QCOMPARE(robot.outOfRangeAreaSquareMetres, 0.0);
     }

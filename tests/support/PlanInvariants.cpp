@@ -601,8 +601,10 @@ std::vector<std::string> checkTimes(const Plan& plan) {
         if (makespan < lowerBound * (1.0 - 1e-9))
             violations.push_back(text("makespan beats the detection lower bound", makespan, lowerBound));
     }
-    // On batteries the busiest robot also charges between the sorties its share takes at least.
-    if (const SortieLayer* sorties = sortieLayerOf(plan); sorties != nullptr && !sorties->robots().empty()) {
+    // On batteries the busiest robot also charges between the sorties its share takes at least; the trips
+    // out to the work may raise the bound further, never above what a plan flies.
+    const SortieLayer* sorties = sortieLayerOf(plan);
+    if (sorties != nullptr && !sorties->robots().empty()) {
         double longest = 0.0;
         double shortestCharge = std::numeric_limits<double>::infinity();
         for (const RobotSorties& robot : sorties->robots()) {
@@ -613,10 +615,17 @@ std::vector<std::string> checkTimes(const Plan& plan) {
         if (flights > 1)
             lowerBound += (flights - 1) * shortestCharge;
     }
-    if (std::abs(metrics.lowerBoundSeconds - lowerBound) > 1e-6 * std::max(1.0, lowerBound))
+    const bool tripsPriced = sorties != nullptr && !sorties->robots().empty();
+    if (tripsPriced && metrics.lowerBoundSeconds < lowerBound * (1.0 - 1e-6))
+        violations.push_back(text("lower bound below its charges", metrics.lowerBoundSeconds, lowerBound));
+    else if (tripsPriced && metrics.lowerBoundSeconds > makespan * (1.0 + 1e-6))
+        violations.push_back(text("lower bound above the makespan", metrics.lowerBoundSeconds, makespan));
+    else if (!tripsPriced &&
+             std::abs(metrics.lowerBoundSeconds - lowerBound) > 1e-6 * std::max(1.0, lowerBound))
         violations.push_back(text("lower bound", metrics.lowerBoundSeconds, lowerBound));
-    if (lowerBound > 0 && std::abs(metrics.ratio - makespan / lowerBound) > 1e-9)
-        violations.push_back(text("ratio", metrics.ratio, makespan / lowerBound));
+    const double bound = tripsPriced ? metrics.lowerBoundSeconds : lowerBound;
+    if (bound > 0 && std::abs(metrics.ratio - makespan / bound) > 1e-9)
+        violations.push_back(text("ratio", metrics.ratio, makespan / bound));
     return violations;
 }
 
