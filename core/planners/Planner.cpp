@@ -276,8 +276,9 @@ std::string unevenPlanMessage(const Plan& plan, const PlannerDescription& planne
     const PlanMetrics& metrics = plan.metrics;
     const ParameterValues& parameters = plan.parameters;
     constexpr double noticeableRatio = 1.05;
-    if (!(metrics.ratio > noticeableRatio) || !(metrics.lowerBoundSeconds > 0.0) ||
-        !metrics.confinedRobots.empty())
+    // On batteries the bound prices each robot's reach: a plan near it may still leave a robot idle.
+    if (!(metrics.ratio > noticeableRatio || planner.fliesOnBatteries()) ||
+        !(metrics.lowerBoundSeconds > 0.0) || !metrics.confinedRobots.empty())
         return {};
     std::vector<int> shortOfWork;
     for (const RobotMetrics& robot : metrics.robots)
@@ -288,6 +289,13 @@ std::string unevenPlanMessage(const Plan& plan, const PlannerDescription& planne
     std::ostringstream ratio;
     ratio.precision(3);
     ratio << metrics.ratio;
+    if (!(metrics.ratio > noticeableRatio))
+        return robotList(shortOfWork) + (shortOfWork.size() == 1 ? " covers" : " cover") +
+               " less than half of a fair share: a short battery, or a slow robot's, leaves a robot little "
+               "within reach of its charger, and no plan is done much sooner (the longest path takes " +
+               ratio.str() +
+               " times the lower bound, which counts each robot's reach); a charger nearer the "
+               "work, or a longer battery, shares the work out";
     const std::string uneven = robotList(shortOfWork) + (shortOfWork.size() == 1 ? " covers" : " cover") +
                                " less than half of a fair share, and the longest path takes " + ratio.str() +
                                " times the lower bound: ";

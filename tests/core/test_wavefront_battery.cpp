@@ -306,17 +306,21 @@ class WavefrontBatteryTest : public QObject {
     }
 
     // A robot whose short battery keeps it near its charger does little: the warning names the battery as
-    // a cause, and a charger nearer the work as a cure.
+    // a cause, and a charger nearer the work as a cure, though the plan is as quick as its reach allows.
     void aShortBatteryThatLeavesARobotIdleIsNamed() {
         PlanningProblem problem =
-            test::drawnProblem(rowsOf(2, std::string(100, '.')), {{0.5, 0.5}, {99.5, 0.5}});
-        problem.batterySeconds = {12.0, 0.0};
+            test::drawnProblem(rowsOf(2, std::string(300, '.')), {{0.5, 0.5}, {299.5, 0.5}});
+        problem.batterySeconds = {8.0, 0.0};
         const Plan plan = planOnBattery(problem, 1e6, 0.0, 0.0);
         QVERIFY2(violationsOf(problem, plan).empty(), violationsOf(problem, plan).c_str());
         std::string uneven;
         for (const PlanIssue& issue : plan.issues)
             if (issue.code == "uneven-plan")
                 uneven = issue.message;
+        // Robot 1 reaches 4 m from its charger: robot 2 must fly nearly all of the 300 m corridor, and the
+        // bound says so.
+        QVERIFY2(plan.metrics.ratio < 1.05, qPrintable(QString::number(plan.metrics.ratio)));
+        QVERIFY2(uneven.find("no plan is done much sooner") != std::string::npos, uneven.c_str());
         QVERIFY2(uneven.find("robot 1 covers less than half of a fair share") == 0, uneven.c_str());
         QVERIFY2(
             uneven.find(
