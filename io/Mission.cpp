@@ -40,6 +40,14 @@ namespace mcpp::io {
 
 namespace {
 
+// Seconds too few for a flight but a likely number of minutes (25 for 25 min): what to write for that many
+// minutes, after `lead`; empty otherwise.
+std::string minutesMeantHint(double seconds, const std::string& lead) {
+    if (!(seconds >= 1.0) || !(seconds < 60.0))
+        return {};
+    return lead + formatQuantity(60.0 * seconds) + " for " + formatDuration(60.0 * seconds);
+}
+
 using internal::JsonValue;
 
 constexpr const char* formatName = "mcpp-mission";
@@ -178,7 +186,10 @@ class MissionReader {
                                      ", found the text \"" + text + "\": ";
         if (unit.name == "seconds")
             if (const auto seconds = parseDuration(text))
-                return expected + "write " + formatQuantity(*seconds) + " for " + formatDuration(*seconds);
+                return expected + "write " + formatQuantity(*seconds) + " for " + formatDuration(*seconds) +
+                       (leadingNumber(text) && leadingNumber(text)->second.empty()
+                            ? minutesMeantHint(*seconds, ", or ")
+                            : "");
         const auto number = leadingNumber(text);
         if (!number)
             return std::nullopt;
@@ -426,7 +437,8 @@ bool readVehicle(MissionReader& reader, const QJsonObject& object, const std::st
     }
     if (vehicle.flightTimeSeconds)
         if (const auto problem = flightTimeProblem(*vehicle.flightTimeSeconds))
-            return reader.fail(MissionReader::join(path, "flight_time_s"), *problem);
+            return reader.fail(MissionReader::join(path, "flight_time_s"),
+                               *problem + minutesMeantHint(*vehicle.flightTimeSeconds, ": write "));
     if (vehicle.turnaroundSeconds)
         if (const auto problem = turnaroundProblem(*vehicle.turnaroundSeconds))
             return reader.fail(MissionReader::join(path, "turnaround_s"), *problem);
