@@ -282,13 +282,19 @@ void appendDegrees(std::string& out, double degrees) {
     internal::appendRounded(out, degrees, 8);
 }
 
+// MAV_CMD_DO_CHANGE_SPEED's speed type: an aeroplane's autopilot flies an airspeed (0), and takes a ground
+// speed (1) as the least it may fly over the ground; other vehicles are told their ground speed.
+int speedType(VehicleType type) {
+    return type == VehicleType::FixedWing ? 0 : 1;
+}
+
 // QGroundControl plans hold thousands of items: their text is written straight out, laid out as
 // JsonValue lays out a document with its flat objects on one line (an item a line), without building the
 // tree of values first, which took three quarters of the writing time.
-void appendSpeedChange(std::string& out, int& jumpId, double speed) {
+void appendSpeedChange(std::string& out, int& jumpId, double speed, VehicleType type) {
     out += "      {\"autoContinue\": true, \"command\": " + std::to_string(commandChangeSpeed) +
            ", \"doJumpId\": " + std::to_string(jumpId++) + ", \"frame\": " + std::to_string(frameMission) +
-           ", \"params\": [1, ";
+           ", \"params\": [" + std::to_string(speedType(type)) + ", ";
     appendJsonNumber(out, speed);
     out += ", -1, 0, 0, 0, 0], \"type\": \"SimpleItem\"}";
 }
@@ -365,13 +371,13 @@ std::string qGroundControlItems(const AutopilotMission& mission, const MissionPa
     // matters most for a part that begins mid-field.
     if (mission.commandedSpeeds[part.first] > 0.0) {
         separate();
-        appendSpeedChange(out, jumpId, mission.commandedSpeeds[part.first]);
+        appendSpeedChange(out, jumpId, mission.commandedSpeeds[part.first], vehicle.type);
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
         const std::size_t point = part.first + i;
         if (i > 0 && mission.changesSpeedAt(point)) {
             separate();
-            appendSpeedChange(out, jumpId, mission.commandedSpeeds[point]);
+            appendSpeedChange(out, jumpId, mission.commandedSpeeds[point], vehicle.type);
         }
         separate();
         appendPlacedItem(out, jumpId, commandWaypoint, 0.0, points[i], altitude);
@@ -461,7 +467,8 @@ std::string waypointListText(const AutopilotMission& mission, const MissionPart&
         text += "\t1\n";
     };
     const auto speedRow = [&](int index, double speed) {
-        row(index, 0, frameMission, commandChangeSpeed, {1, speed, -1, 0}, 0, 0, 0);
+        row(index, 0, frameMission, commandChangeSpeed, {double(speedType(vehicle.type)), speed, -1, 0}, 0, 0,
+            0);
     };
     row(0, 1, frameGlobal, commandWaypoint, {0, 0, 0, 0}, home.latitude, home.longitude, 0.0);
     int index = 1;

@@ -297,6 +297,35 @@ class WaypointFilesTest : public QObject {
             QCOMPARE(cruiseItems[i].toObject()["command"].toInt(), i == 0 ? 178 : 16);
     }
 
+    // An aeroplane's autopilot is told an airspeed (type 0): a ground speed would set ArduPlane's least
+    // speed over the ground, not its cruise. Other vehicles are told their ground speed (type 1).
+    void speedChangesTellAnAeroplaneItsAirspeed() {
+        for (const auto& [type, speedType] :
+             {std::pair{VehicleType::Rover, 1}, {VehicleType::Multirotor, 1}, {VehicleType::FixedWing, 0}}) {
+            ExportSettings settings;
+            settings.vehicle.type = type;
+            const std::string planPath = file("typed.plan");
+            const std::string listPath = file("typed.waypoints");
+            QVERIFY(writeQGroundControlPlan(context(settings), 0, planPath).ok());
+            QVERIFY(writeWaypointList(context(settings), 0, listPath).ok());
+            int planTypes = 0;
+            for (const QJsonValue& item : readJson(planPath)["mission"].toObject()["items"].toArray())
+                if (item.toObject()["command"].toInt() == 178) {
+                    QCOMPARE(item.toObject()["params"].toArray()[0].toInt(), speedType);
+                    ++planTypes;
+                }
+            std::string header;
+            int listTypes = 0;
+            for (const std::vector<std::string>& row : tabRows(listPath, header))
+                if (row[3] == "178") {
+                    QCOMPARE(std::stod(row[4]), double(speedType));
+                    ++listTypes;
+                }
+            QVERIFY(planTypes > 0);
+            QCOMPARE(listTypes, planTypes);
+        }
+    }
+
     void waypointListMatchesQgcWpl110() {
         std::string sampleHeader;
         const auto sample =
