@@ -1022,9 +1022,44 @@ std::optional<std::string> aircraftWithoutCruiseSpeedNote(const Mission& mission
            (one ? "it" : "them") + " one (robots[].cruise_speed_mps, or Plan > Robot vehicles in the window)";
 }
 
+// The fastest a vehicle of the type plausibly works at: survey multirotors fly up to about 20 m/s, survey
+// aeroplanes up to about 40 m/s, field robots drive at walking to car speeds.
+double plausibleTopSpeed(VehicleType type) {
+    switch (type) {
+    case VehicleType::Multirotor:
+        return 30.0;
+    case VehicleType::FixedWing:
+        return 60.0;
+    case VehicleType::Rover:
+        break;
+    }
+    return 20.0;
+}
+
+// Cruise speeds beyond what such a vehicle works at, most often a speed in km/h or knots given as m/s.
+std::optional<std::string> implausibleCruiseSpeedNote(const Mission& mission,
+                                                      const std::vector<VehicleSettings>& vehicles) {
+    for (std::size_t robot = 0; robot < vehicles.size(); ++robot) {
+        const VehicleSettings& vehicle = vehicles[robot];
+        const double speed = vehicle.cruiseSpeedMetresPerSecond;
+        if (!(speed > plausibleTopSpeed(vehicle.type)))
+            continue;
+        return robotLabel(mission, robot) + " cruises at " + formatQuantity(speed, 4) + " m/s (" +
+               formatQuantity(speed * 3.6, 4) + " km/h), faster than a " + vehicleTypeKey(vehicle.type) +
+               " works at (up to about " + formatQuantity(plausibleTopSpeed(vehicle.type), 4) +
+               " m/s): cruise speeds are in metres per second (" + formatQuantity(speed / 3.6, 4) +
+               " m/s is " + formatQuantity(speed, 4) +
+               " km/h); the turns of a fast vehicle take long, and its "
+               "times mean little";
+    }
+    return std::nullopt;
+}
+
 // A shared cruise speed replaces the class table's speeds; robots of different ones drive each at its own.
 void applyCruiseSpeed(const Mission& mission, const std::vector<VehicleSettings>& vehicles,
                       PlanningProblem& problem) {
+    if (auto fast = implausibleCruiseSpeedNote(mission, vehicles))
+        problem.notes.push_back({IssueSeverity::Warning, "implausible-cruise-speed", std::move(*fast)});
     const double cruise = fleetCruiseSpeed(mission);
     if (cruise > 0.0) {
         std::vector<LandCoverClass> classes = problem.classes.classes();

@@ -613,6 +613,27 @@ class MissionFilesTest : public QObject {
         QVERIFY2(tooLow.message.find("(beta 2 m)") != std::string::npos, tooLow.message.c_str());
         QVERIFY2(tooLow.message.find("lower than 5 m above home") != std::string::npos,
                  tooLow.message.c_str());
+
+        // A cruise speed beyond what such a vehicle works at, likely km/h given as m/s, is warned of with
+        // the metres per second it would be; up to that speed, nothing is said.
+        mission.robots[1].vehicle.altitudeMetres = 60.0;
+        mission.robots[1].vehicle.type = VehicleType::FixedWing;
+        mission.robots[1].vehicle.cruiseSpeedMetresPerSecond = 60.0;
+        const auto cruiseWarning = [&] {
+            PlanningProblem fast = problem;
+            applyRobotSettings(mission, rasterWithEvery(fast.classes), fast);
+            for (const PlanIssue& note : fast.notes)
+                if (note.code == "implausible-cruise-speed")
+                    return note.message;
+            return std::string();
+        };
+        QCOMPARE(cruiseWarning(), std::string());
+        mission.robots[1].vehicle.cruiseSpeedMetresPerSecond = 200.0;
+        QCOMPARE(
+            cruiseWarning(),
+            std::string("beta cruises at 200 m/s (720 km/h), faster than a fixed-wing works at (up to about "
+                        "60 m/s): cruise speeds are in metres per second (55.56 m/s is 200 km/h); the "
+                        "turns of a fast vehicle take long, and its times mean little"));
     }
 
     // A planner that flies on batteries is told each robot's battery: from its vehicle's flight time less
