@@ -1,4 +1,5 @@
 #include "core/model/RobotColours.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "io/PlanExport.hpp"
 #include "io/internal/DatasetFile.hpp"
 #include "io/internal/GdalSupport.hpp"
@@ -132,6 +133,10 @@ Status transformAll(PlanFeatures& features, OGRCoordinateTransformation& transfo
     for (auto& start : features.starts) {
         if (!transformed(*start.geometry, transformation))
             return fail("a start");
+    }
+    for (auto& charger : features.chargers) {
+        if (!transformed(*charger.geometry, transformation))
+            return fail("a charger");
     }
     for (auto& part : features.unreachable) {
         if (!transformed(*part.geometry, transformation))
@@ -290,10 +295,11 @@ Status writePathLayer(VectorFileWriter& writer, const ExportContext& context,
     return {};
 }
 
+// The robots' starts, or (`chargers`) the chargers their sorties fly from.
 Status writeStartLayer(VectorFileWriter& writer, const ExportContext& context,
                        std::vector<internal::StartFeature>& starts, const OGRSpatialReference* crs,
-                       bool named) {
-    auto layer = writer.layer("starts", crs, wkbPoint);
+                       bool named, bool chargers = false) {
+    auto layer = writer.layer(chargers ? "chargers" : "starts", crs, wkbPoint);
     if (!layer)
         return Status::failure(layer.error());
     Fields fields{{{"robot", OFTInteger}, {"robot_name", OFTString}}};
@@ -304,7 +310,8 @@ Status writeStartLayer(VectorFileWriter& writer, const ExportContext& context,
     for (auto& start : starts) {
         OGRFeature feature(layer.value()->GetLayerDefn());
         if (named) {
-            feature.SetField("name", (context.robotName(start.robot) + " start").c_str());
+            feature.SetField("name",
+                             (context.robotName(start.robot) + (chargers ? " charger" : " start")).c_str());
             feature.SetStyleString(startStyle(start.robot).c_str());
         }
         setRobotFields(feature, context, start.robot);
@@ -588,6 +595,10 @@ Status writePlanGeoPackage(const ExportContext& context, const std::string& path
         return status;
     if (Status status = writeStartLayer(writer, context, planFeatures.starts, crs.get(), false); !status)
         return status;
+    if (!planFeatures.chargers.empty())
+        if (Status status = writeStartLayer(writer, context, planFeatures.chargers, crs.get(), false, true);
+            !status)
+            return status;
 
     if (context.settings.cellPolygons) {
         if (Status status = writeCellLayer(writer, context, crs.get()); !status)
@@ -628,6 +639,10 @@ Status writePlanKml(const ExportContext& context, const std::string& path) {
         return status;
     if (Status status = writeStartLayer(writer, context, planFeatures.starts, wgs84.get(), true); !status)
         return status;
+    if (!planFeatures.chargers.empty())
+        if (Status status = writeStartLayer(writer, context, planFeatures.chargers, wgs84.get(), true, true);
+            !status)
+            return status;
     if (!planFeatures.unreachable.empty()) {
         if (Status status = writeUnreachableLayer(writer, planFeatures.unreachable, wgs84.get(), true);
             !status)
@@ -663,6 +678,27 @@ std::string kmlMissionPartsNote(const ExportContext& context, const std::string&
            std::to_string(kmlMostMissionParts) +
            " take long to write and to open): a GeoPackage export holds them all in its missions layer";
 }
+
+namespace {
+
+// A waypoint at the charger a robot's sorties fly from, where it is not at the robot's start.
+Status addGpxCharger(VectorFileWriter& writer, OGRLayer& layer, const ExportContext& context, int robot,
+                     MapPoint start, OGRCoordinateTransformation& transformation) {
+    const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
+    if (sorties == nullptr || std::hypot(sorties->charger.x - start.x, sorties->charger.y - start.y) <= 1e-3)
+        return {};
+    const double metresPerUnit = context.georeference.metresPerUnit();
+    OGRPoint charger(sorties->charger.x / metresPerUnit, sorties->charger.y / metresPerUnit);
+    if (charger.transform(&transformation) != OGRERR_NONE)
+        return Status::failure(writer.path() + ": cannot transform a charger to WGS84" +
+                               QuietGdalErrors::detail());
+    OGRFeature feature(layer.GetLayerDefn());
+    feature.SetField("name", (context.robotName(robot) + " charger").c_str());
+    feature.SetGeometry(&charger);
+    return writer.add(&layer, feature);
+}
+
+} // namespace
 
 Status writePlanGpx(const ExportContext& context, const std::string& path) {
     QuietGdalErrors quiet;
@@ -703,6 +739,10 @@ Status writePlanGpx(const ExportContext& context, const std::string& path) {
                 startFeature.SetField("name", (name + " start").c_str());
                 startFeature.SetGeometry(&home);
                 if (Status status = writer.add(starts.value(), startFeature); !status)
+                    return status;
+                if (Status status = addGpxCharger(writer, *starts.value(), context, coverage.robot, start,
+                                                  *transformation.value()->get());
+                    !status)
                     return status;
                 continue;
             }

@@ -213,7 +213,8 @@ std::optional<std::string> planGeoJsonText(const ExportContext& context, const P
     for (const auto& line : features.paths)
         pathFeatures += static_cast<std::size_t>(geoJsonPathParts(*line.geometry));
     const std::size_t count = features.regions.size() + pathFeatures + features.starts.size() +
-                              features.unreachable.size() + features.takenOver.size() + features.area.size();
+                              features.chargers.size() + features.unreachable.size() +
+                              features.takenOver.size() + features.area.size();
     std::size_t written = 0;
     std::string out = "{\n\"type\": \"FeatureCollection\",\n\"features\": [\n";
     for (const auto& region : features.regions) {
@@ -249,6 +250,10 @@ std::optional<std::string> planGeoJsonText(const ExportContext& context, const P
         FeatureLine(out, "start")
             .robot(context, start.robot)
             .geometry(start.geometry.get(), ++written == count);
+    for (const auto& charger : features.chargers)
+        FeatureLine(out, "charger")
+            .robot(context, charger.robot)
+            .geometry(charger.geometry.get(), ++written == count);
     for (const auto& part : features.unreachable) {
         FeatureLine(out, "unreachable")
             .real("area_m2", part.areaSquareMetres)

@@ -1,6 +1,7 @@
 #include "io/internal/PlanGeometry.hpp"
 
 #include "core/coverage/StraightRunMerging.hpp"
+#include "core/model/SortieLayer.hpp"
 #include "core/model/TimelineLayer.hpp"
 #include "core/outlines/OutlineTracer.hpp"
 #include "core/outlines/RegionLabels.hpp"
@@ -8,6 +9,7 @@
 #include "io/internal/GdalSupport.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mcpp::io::internal {
 
@@ -87,6 +89,25 @@ void addStarts(const Plan& plan, double metresPerUnit, PlanFeatures& features) {
     }
     std::sort(features.starts.begin(), features.starts.end(),
               [](const StartFeature& a, const StartFeature& b) { return a.robot < b.robot; });
+}
+
+// The chargers of robots whose sorties fly from one away from their start (at the start, the start says it).
+void addChargers(const Plan& plan, double metresPerUnit, PlanFeatures& features) {
+    const SortieLayer* sorties = sortieLayerOf(plan);
+    if (sorties == nullptr)
+        return;
+    for (const RobotSorties& robot : sorties->robots()) {
+        const auto start =
+            std::find_if(features.starts.begin(), features.starts.end(),
+                         [&](const StartFeature& feature) { return feature.robot == robot.robot; });
+        if (start != features.starts.end() &&
+            std::hypot(start->geometry->getX() * metresPerUnit - robot.charger.x,
+                       start->geometry->getY() * metresPerUnit - robot.charger.y) <= 1e-3)
+            continue;
+        features.chargers.push_back(
+            StartFeature{robot.robot, std::make_unique<OGRPoint>(robot.charger.x / metresPerUnit,
+                                                                 robot.charger.y / metresPerUnit)});
+    }
 }
 
 // One feature per robot with its figures; geometry filled from the outlines afterwards.
@@ -221,6 +242,7 @@ Result<PlanFeatures> buildPlanFeatures(const ExportContext& context) {
             features.paths.push_back(pathFeature(path, plan.cells, metresPerUnit, densePaths));
     }
     addStarts(plan, metresPerUnit, features);
+    addChargers(plan, metresPerUnit, features);
     addTakenOver(plan, metresPerUnit, features);
     addArea(context.area, metresPerUnit, features);
     return features;

@@ -62,6 +62,7 @@ struct PlanFeatures {
     std::vector<RegionFeature> regions; // one per robot, also for robots without cells (empty geometry)
     std::vector<PathFeature> paths;
     std::vector<StartFeature> starts;
+    std::vector<StartFeature> chargers; // of robots flying sorties from a charger away from their start
     std::vector<UnreachableFeature> unreachable; // one per connected part
     // One per robot that took cells over, for plans simulated over time (GeoPackage then writes the layer
     // even when empty; KML only when it has features).

@@ -678,6 +678,11 @@ void TestBatchEndToEnd::checkOutputs(const QString& directory, int robots, const
             QVERIFY(std::abs(first.at(0).toDouble()) <= 180.0 && std::abs(first.at(1).toDouble()) <= 90.0);
         } else if (kind == "start") {
             QCOMPARE(geometryType, QStringLiteral("Point"));
+        } else if (kind == "charger") { // of a robot flying sorties from a charger away from its start
+            QCOMPARE(geometryType, QStringLiteral("Point"));
+            const int robot = properties.value("robot").toInt(-1);
+            QVERIFY(robot >= 1 && robot <= robots);
+            continue;
         } else if (kind == "taken_over") { // plans simulated with events: what each robot took over
             QVERIFY(geometryType == QStringLiteral("Polygon") ||
                     geometryType == QStringLiteral("MultiPolygon"));
@@ -1420,6 +1425,28 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
     }
     const QStringList twice = QDir(out).entryList({QStringLiteral("*_sortie_*")});
     QVERIFY2(twice.isEmpty(), qPrintable(twice.join(", ")));
+    // The charger is in the vector files, where a GIS user looks for it: the GeoPackage's chargers layer at
+    // the coordinates given, and a feature of its own in the GeoJSON.
+    GDALAllRegister();
+    GDALDataset* package =
+        GDALDataset::FromHandle(GDALOpenEx((out + "/plan.gpkg").toStdString().c_str(),
+                                           GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+    QVERIFY(package != nullptr);
+    OGRLayer* chargers = package->GetLayerByName("chargers");
+    const bool oneCharger = chargers != nullptr && chargers->GetFeatureCount() == 1;
+    OGRFeature* charger = oneCharger ? chargers->GetNextFeature() : nullptr;
+    const OGRPoint* chargerPoint = charger != nullptr ? charger->GetGeometryRef()->toPoint() : nullptr;
+    const bool atTheCharger = chargerPoint != nullptr && charger->GetFieldAsInteger("robot") == 1 &&
+                              std::abs(chargerPoint->getX() - 431100.0) < 1e-6 &&
+                              std::abs(chargerPoint->getY() - 5301150.0) < 1e-6;
+    OGRFeature::DestroyFeature(charger);
+    GDALClose(package);
+    QVERIFY(atTheCharger);
+    int chargerFeatures = 0;
+    for (const QJsonValue& feature : readJsonObject(out + "/plan.geojson").value("features").toArray())
+        if (feature.toObject().value("properties").toObject().value("kind").toString() == "charger")
+            ++chargerFeatures;
+    QCOMPARE(chargerFeatures, 1);
     run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--planner", "wavefront-battery",
                    "--param", "battery_s=1000000", "--max-waypoints", "0", "--out", out});
     checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
@@ -1565,6 +1592,28 @@ void TestBatchEndToEnd::aChargerAwayFromTheStartIsWhereSortiesEnd() {
     QVERIFY(!QFileInfo::exists(QStringLiteral("%1/%2.plan").arg(out, partStem(0, sorties + 1, sorties))));
     const QStringList twice = QDir(out).entryList({QStringLiteral("*_sortie_*")});
     QVERIFY2(twice.isEmpty(), qPrintable(twice.join(", ")));
+    // The charger is in the vector files, where a GIS user looks for it: the GeoPackage's chargers layer at
+    // the coordinates given, and a feature of its own in the GeoJSON.
+    GDALAllRegister();
+    GDALDataset* package =
+        GDALDataset::FromHandle(GDALOpenEx((out + "/plan.gpkg").toStdString().c_str(),
+                                           GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+    QVERIFY(package != nullptr);
+    OGRLayer* chargers = package->GetLayerByName("chargers");
+    const bool oneCharger = chargers != nullptr && chargers->GetFeatureCount() == 1;
+    OGRFeature* charger = oneCharger ? chargers->GetNextFeature() : nullptr;
+    const OGRPoint* chargerPoint = charger != nullptr ? charger->GetGeometryRef()->toPoint() : nullptr;
+    const bool atTheCharger = chargerPoint != nullptr && charger->GetFieldAsInteger("robot") == 1 &&
+                              std::abs(chargerPoint->getX() - 431100.0) < 1e-6 &&
+                              std::abs(chargerPoint->getY() - 5301150.0) < 1e-6;
+    OGRFeature::DestroyFeature(charger);
+    GDALClose(package);
+    QVERIFY(atTheCharger);
+    int chargerFeatures = 0;
+    for (const QJsonValue& feature : readJsonObject(out + "/plan.geojson").value("features").toArray())
+        if (feature.toObject().value("properties").toObject().value("kind").toString() == "charger")
+            ++chargerFeatures;
+    QCOMPARE(chargerFeatures, 1);
 
     // The same mission given by flags, the charger by --charger: the same sorties and times.
     const QString byFlags = scratch_.filePath("charger-flags");
