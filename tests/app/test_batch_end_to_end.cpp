@@ -1425,28 +1425,17 @@ void TestBatchEndToEnd::batteryPlansWriteEachSortie() {
     }
     const QStringList twice = QDir(out).entryList({QStringLiteral("*_sortie_*")});
     QVERIFY2(twice.isEmpty(), qPrintable(twice.join(", ")));
-    // The charger is in the vector files, where a GIS user looks for it: the GeoPackage's chargers layer at
-    // the coordinates given, and a feature of its own in the GeoJSON.
+    // Chargers at the starts: the starts say where they are, and the vector files hold no chargers.
     GDALAllRegister();
     GDALDataset* package =
         GDALDataset::FromHandle(GDALOpenEx((out + "/plan.gpkg").toStdString().c_str(),
                                            GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
     QVERIFY(package != nullptr);
-    OGRLayer* chargers = package->GetLayerByName("chargers");
-    const bool oneCharger = chargers != nullptr && chargers->GetFeatureCount() == 1;
-    OGRFeature* charger = oneCharger ? chargers->GetNextFeature() : nullptr;
-    const OGRPoint* chargerPoint = charger != nullptr ? charger->GetGeometryRef()->toPoint() : nullptr;
-    const bool atTheCharger = chargerPoint != nullptr && charger->GetFieldAsInteger("robot") == 1 &&
-                              std::abs(chargerPoint->getX() - 431100.0) < 1e-6 &&
-                              std::abs(chargerPoint->getY() - 5301150.0) < 1e-6;
-    OGRFeature::DestroyFeature(charger);
+    const bool chargersLayer = package->GetLayerByName("chargers") != nullptr;
     GDALClose(package);
-    QVERIFY(atTheCharger);
-    int chargerFeatures = 0;
+    QVERIFY(!chargersLayer);
     for (const QJsonValue& feature : readJsonObject(out + "/plan.geojson").value("features").toArray())
-        if (feature.toObject().value("properties").toObject().value("kind").toString() == "charger")
-            ++chargerFeatures;
-    QCOMPARE(chargerFeatures, 1);
+        QVERIFY(feature.toObject().value("properties").toObject().value("kind").toString() != "charger");
     run = runMcpp({"--batch", samplePath("synthetic/mission.json"), "--planner", "wavefront-battery",
                    "--param", "battery_s=1000000", "--max-waypoints", "0", "--out", out});
     checkOutputs(out, 3, run, QStringLiteral("wavefront-battery"));
