@@ -79,7 +79,8 @@ std::string formatDuration(double seconds) {
     // Rounded to the last unit shown, not cut: 1 h 23 min 57 s reads 1 h 24 min.
     constexpr double kMinutesFrom = 3600.0;
     constexpr double kHoursFrom = kDaysWithMinutes * 86400.0 - 1800.0; // days and hours only from there
-    const double shownUnit = seconds >= kHoursFrom ? 3600.0 : seconds >= kMinutesFrom - 30.0 ? 60.0 : 1.0;
+    // Below the hour, seconds stay: a 59 min 58 s flight on a battery of an hour must not read 1 h.
+    const double shownUnit = seconds >= kHoursFrom ? 3600.0 : seconds >= kMinutesFrom - 0.5 ? 60.0 : 1.0;
     const auto total =
         static_cast<long long>(std::llround(seconds / shownUnit)) * static_cast<long long>(shownUnit);
     const long long days = total / 86400;

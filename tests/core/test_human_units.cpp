@@ -74,7 +74,9 @@ class TestHumanUnits : public QObject {
             << 33.0 * 3600 + 54 * 60 + 46 << "1 d 9 h 55 min";
         QTest::newRow("hours, rounded to the minute") << 5036.8 << "1 h 24 min";
         QTest::newRow("hours, down to the minute") << 5009.0 << "1 h 23 min";
-        QTest::newRow("just under an hour") << 3590.0 << "1 h";
+        // A flight of 59 min 58 s on a battery of an hour must not read as the hour.
+        QTest::newRow("just under an hour keeps its seconds") << 3597.6 << "59 min 58 s";
+        QTest::newRow("under an hour by less than the last second") << 3599.7 << "1 h";
         QTest::newRow("minutes keep their seconds") << 3569.0 << "59 min 29 s";
         QTest::newRow("just under ten days") << 10 * 86400.0 - 60 << "10 d";
         QTest::newRow("a whole day") << 86400.0 << "1 d 0 h";
