@@ -511,9 +511,17 @@ std::string chargerInDegreesHint(const Mission& mission, const LoadedRaster& ras
     if (robot < 0 || static_cast<std::size_t>(robot) >= mission.robots.size())
         return {};
     const RobotSpec& spec = mission.robots[static_cast<std::size_t>(robot)];
-    if (!spec.charger || !spec.startCrs.empty())
+    if (!spec.charger)
         return {};
     const MapPoint given = *spec.charger;
+    if (!spec.startCrs.empty()) {
+        // In degrees, latitude first is the commonest slip; the start's own hint says it for starts.
+        const Result<MapPoint> swapped = raster.georeference.fromCrs(spec.startCrs, {given.y, given.x});
+        return swapped && onTheMap(raster.grid, swapped.value())
+                   ? "; longitude and latitude the other way round lie on the map: a charger in degrees is "
+                     "longitude first"
+                   : std::string();
+    }
     if (!(std::fabs(given.x) <= 180.0 && std::fabs(given.y) <= 90.0))
         return {};
     const auto onMap = degreesOnTheMap(raster, given);

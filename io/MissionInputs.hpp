@@ -97,7 +97,8 @@ enum class StartUnits { PlanningCrs, RasterFileCrs };
 
 // Where robot `robot`'s charger, read in the CRS of its start (the raster's, in metres), was given in
 // degrees: "; read as longitude -112.95, latitude 37.45 it lies on the map: give it as (327515.73,
-// 4146579.4)", for the refusal of a charger outside the raster. Empty otherwise.
+// 4146579.4)", for the refusal of a charger outside the raster; where it was given in a CRS of its start,
+// latitude first, that it is longitude first. Empty otherwise.
 [[nodiscard]] std::string chargerInDegreesHint(const Mission& mission, const LoadedRaster& raster, int robot);
 
 // Each robot's charger in the planning frame (metres), read like its start; none where it charges at its
