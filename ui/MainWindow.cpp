@@ -23,6 +23,7 @@
 #include "ui/ClassTableBanner.hpp"
 #include "ui/ClassTableEditCommand.hpp"
 #include "ui/ClassTableModel.hpp"
+#include "ui/ComparedWarnings.hpp"
 #include "ui/ComparisonPanel.hpp"
 #include "ui/ComparisonRunner.hpp"
 #include "ui/EventTableModel.hpp"
@@ -2041,30 +2042,22 @@ void MainWindow::logPlanIssues(const Plan& plan) {
                              .arg(loggedText(issue.message, names, document_->raster())));
 }
 
-// Each compared plan's warnings under its planner's name; one that several plans carry (the mission's own,
-// such as land no robot reaches) once, under none, as batch mode says them.
+// The compared plans' warnings, each once (comparedWarnings), under the planners that carry it.
 void MainWindow::logComparedWarnings() {
-    std::map<std::string, int> plansCarrying;
-    for (std::size_t row = 0; row < comparison_.plans.size(); ++row) {
-        const std::vector<std::string> warnings = comparison_.warningsOf(row);
-        for (const std::string& warning : std::set<std::string>(warnings.begin(), warnings.end()))
-            ++plansCarrying[warning];
-    }
-    std::set<std::string> saidOnce;
-    const std::vector<std::string> names = robotNames();
+    std::vector<PlannerWarnings> plans;
     for (std::size_t row = 0; row < comparison_.plans.size() && row < comparison_.rows.size(); ++row) {
         if (!comparison_.plans[row])
             continue;
         flightsSaid_.push_back(comparison_.plans[row]); // its file warnings are among these
-        for (const std::string& warning : comparison_.warningsOf(row)) {
-            const bool shared = plansCarrying[warning] > 1;
-            if (shared && !saidOnce.insert(warning).second)
-                continue;
-            QString text = loggedText(warning, names, document_->raster());
-            if (!shared)
-                text = QString::fromStdString(comparison_.rows[row].planner) + QStringLiteral(": ") + text;
-            messageLog_->add(tr("Warning: %1").arg(text));
-        }
+        plans.push_back({comparison_.rows[row].planner, comparison_.warningsOf(row)});
+    }
+    const std::vector<std::string> names = robotNames();
+    for (const ComparedWarning& warning : comparedWarnings(plans)) {
+        const QString text = loggedText(warning.text, names, document_->raster());
+        messageLog_->add(tr("Warning: %1")
+                             .arg(warning.planners.empty() ? text
+                                                           : QString::fromStdString(warning.planners) +
+                                                                 QStringLiteral(": ") + text));
     }
 }
 

@@ -1,4 +1,5 @@
 #include "tests/ui/GrassMission.hpp"
+#include "ui/ComparedWarnings.hpp"
 #include "ui/ComparisonPanel.hpp"
 
 #include <QDialog>
@@ -44,6 +45,26 @@ ui::ComparisonOutcome outcomeOf(std::vector<io::ComparisonRow> rows) {
 class ComparisonPanelTest : public QObject {
     Q_OBJECT
   private slots:
+    // After a comparison each warning is said once: the mission's own, which every plan carries, under no
+    // planner's name; one that some plans carry, under theirs, so that two such warnings of different
+    // figures do not read as the mission's contradicting itself.
+    void comparedWarningsAreSaidOnceUnderThePlannersCarryingThem() {
+        const std::vector<ui::ComparedWarning> said = ui::comparedWarnings({
+            {"mcpp-mlct", {"land unreached", "17.4 ha cannot be reached"}},
+            {"darp", {"land unreached", "15.9 ha cannot be reached", "flights too long"}},
+            {"mstc", {"land unreached", "15.9 ha cannot be reached", "flights too long"}},
+        });
+        QCOMPARE(said.size(), std::size_t{4});
+        QCOMPARE(said[0].planners, std::string());
+        QCOMPARE(said[0].text, std::string("land unreached"));
+        QCOMPARE(said[1].planners, std::string("mcpp-mlct"));
+        QCOMPARE(said[1].text, std::string("17.4 ha cannot be reached"));
+        QCOMPARE(said[2].planners, std::string("darp, mstc"));
+        QCOMPARE(said[2].text, std::string("15.9 ha cannot be reached"));
+        QCOMPARE(said[3].planners, std::string("darp, mstc"));
+        QCOMPARE(said[3].text, std::string("flights too long"));
+    }
+
     // "Home h" shows when the last robot is home where flights split some plan's missions, and is hidden
     // where no plan has times in the field: a column of blanks would say nothing.
     void theHomeColumnShowsOnlyWithTimesInTheField() {

@@ -1206,7 +1206,8 @@ class TestMainWindow : public QObject {
         const QStringList mstcWarnings =
             window.messageLog()->messages().filter(QStringLiteral("Warning: mstc: "));
         QVERIFY2(!mstcWarnings.isEmpty(), qPrintable(window.messageLog()->messages().join('\n')));
-        // One several plans carry (the mission's own) once, under no planner's name: no warning twice.
+        // One every plan carries (the mission's own) once, under no planner's name, one some carry once,
+        // under theirs: no warning twice.
         QStringList warnings = window.messageLog()->messages().filter(QStringLiteral("Warning: "));
         for (QString& warning : warnings)
             warning = warning.mid(warning.indexOf(QStringLiteral("Warning: ")));
