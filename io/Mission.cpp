@@ -185,11 +185,15 @@ class MissionReader {
                                      (unit.name.empty() ? std::string() : " of " + unit.name) +
                                      ", found the text \"" + text + "\": ";
         if (unit.name == "seconds")
-            if (const auto seconds = parseDuration(text))
-                return expected + "write " + formatQuantity(*seconds) + " for " + formatDuration(*seconds) +
-                       (leadingNumber(text) && leadingNumber(text)->second.empty()
-                            ? minutesMeantHint(*seconds, ", or ")
-                            : "");
+            if (const auto seconds = parseDuration(text)) {
+                // A flight time of a few seconds, a bare number, is minutes: the seconds would be refused.
+                const bool bare = leadingNumber(text) && leadingNumber(text)->second.empty();
+                const std::string minutes =
+                    bare && path.ends_with("flight_time_s") ? minutesMeantHint(*seconds, "write ") : "";
+                return expected + (minutes.empty() ? "write " + formatQuantity(*seconds) + " for " +
+                                                         formatDuration(*seconds)
+                                                   : minutes);
+            }
         const auto number = leadingNumber(text);
         if (!number)
             return std::nullopt;
@@ -1022,8 +1026,8 @@ std::optional<std::string> aircraftWithoutCruiseSpeedNote(const Mission& mission
            (one ? "it" : "them") + " one (robots[].cruise_speed_mps, or Plan > Robot vehicles in the window)";
 }
 
-// The fastest a vehicle of the type plausibly works at: survey multirotors fly up to about 20 m/s, survey
-// aeroplanes up to about 40 m/s, field robots drive at walking to car speeds.
+// The fastest a vehicle of the type plausibly works at, with a margin above what such vehicles survey at
+// (multirotors up to about 20 m/s, aeroplanes about 40 m/s, field robots at walking to car speeds).
 double plausibleTopSpeed(VehicleType type) {
     switch (type) {
     case VehicleType::Multirotor:
@@ -1044,9 +1048,10 @@ std::optional<std::string> implausibleCruiseSpeedNote(const Mission& mission,
         const double speed = vehicle.cruiseSpeedMetresPerSecond;
         if (!(speed > plausibleTopSpeed(vehicle.type)))
             continue;
-        return robotLabel(mission, robot) + " cruises at " + formatQuantity(speed, 4) + " m/s (" +
-               formatQuantity(speed * 3.6, 4) + " km/h), faster than a " + vehicleTypeKey(vehicle.type) +
-               " works at (up to about " + formatQuantity(plausibleTopSpeed(vehicle.type), 4) +
+        const std::string who = fleetCruiseSpeed(mission) > 0.0 ? "every robot" : robotLabel(mission, robot);
+        return who + " cruises at " + formatQuantity(speed, 4) + " m/s (" + formatQuantity(speed * 3.6, 4) +
+               " km/h), faster than a " + vehicleTypeKey(vehicle.type) + " works at (up to about " +
+               formatQuantity(plausibleTopSpeed(vehicle.type), 4) +
                " m/s): cruise speeds are in metres per second (" + formatQuantity(speed / 3.6, 4) +
                " m/s is " + formatQuantity(speed, 4) +
                " km/h); the turns of a fast vehicle take long, and its "

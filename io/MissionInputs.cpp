@@ -515,7 +515,10 @@ std::string chargerInDegreesHint(const Mission& mission, const LoadedRaster& ras
         return {};
     const MapPoint given = *spec.charger;
     if (!spec.startCrs.empty()) {
-        // In degrees, latitude first is the commonest slip; the start's own hint says it for starts.
+        // In degrees, latitude first is the commonest slip; the start's own hint says it for starts. Figures
+        // that cannot be degrees read the other way round are metres of a projected CRS: no hint.
+        if (!(std::fabs(given.x) <= 90.0 && std::fabs(given.y) <= 180.0))
+            return {};
         const Result<MapPoint> swapped = raster.georeference.fromCrs(spec.startCrs, {given.y, given.x});
         return swapped && onTheMap(raster.grid, swapped.value())
                    ? "; longitude and latitude the other way round lie on the map: a charger in degrees is "

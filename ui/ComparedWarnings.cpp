@@ -18,7 +18,7 @@ std::vector<ComparedWarning> comparedWarnings(const std::vector<PlannerWarnings>
                 continue;
             const std::vector<std::string>& by = carriers[warning];
             std::string names;
-            if (by.size() < plans.size())
+            if (plans.size() == 1 || by.size() < plans.size())
                 for (const std::string& planner : by)
                     names += (names.empty() ? "" : ", ") + planner;
             said.push_back({names, warning});

@@ -12,7 +12,7 @@ struct PlannerWarnings {
 };
 
 // A warning as the messages panel keeps it after a comparison: once, under the names of the planners whose
-// plans carry it ("darp, mstc"), or under none where every plan carries it (the mission's own).
+// plans carry it ("darp, mstc"), or under none where every plan of several carries it (the mission's own).
 struct ComparedWarning {
     std::string planners; // empty: every plan carries it
     std::string text;

@@ -476,7 +476,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     boundByCharges(plan);
     metrics.lowerBoundSeconds =
         std::max(metrics.lowerBoundSeconds, sortieBound(plan, shares, dearestTurnSeconds));
-    if (metrics.lowerBoundSeconds > partsBound) // set by the charges, not by robots alone
+    if (metrics.lowerBoundSeconds > partsBound) // set by the charges or the trips, not by robots alone
         metrics.sharedPartsRatio = 0.0;
     metrics.ratio =
         metrics.lowerBoundSeconds > 0.0 ? metrics.makespanSeconds / metrics.lowerBoundSeconds : 0.0;

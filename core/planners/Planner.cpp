@@ -267,7 +267,8 @@ std::string passingOtherStartsAdvice(const Plan& plan) {
     return advice;
 }
 
-// Robots left with less than half a fair share where the longest path is well above the bound: most often
+// Robots left with less than half a fair share where the longest path is well above the bound (on batteries,
+// whose bound prices each robot's reach, also where it is not: the short battery is then named): most often
 // starts so close together that the others' regions wall theirs in, or, where the planner has a switch
 // that evens its pieces out (PlannerDescription::balanceSwitch) and it is off, the reason it gives. Empty
 // where there are none, and on maps whose starts lie in several parts (the bound is then one part's share,

@@ -809,14 +809,14 @@ class MissionFilesTest : public QObject {
         QCOMPARE(loaded.error(), path +
                                      ": exports.turnaround_s: expected a number of seconds, found the text "
                                      "\"5min\": write 300 for 5 min");
-        // A bare number too few seconds for a flight is likely minutes: the hint gives both readings, and the
-        // number written as such is refused with the minutes' seconds.
+        // A bare number too few seconds for a flight is likely minutes: the hint gives their seconds, and the
+        // number written as such is refused with them too. A turnaround of "25" is 25 s.
         writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
                             "robots": [{"start": [10, 20], "flight_time_s": "25"}]})");
         loaded = loadMission(path);
         QVERIFY(!loaded.ok());
         QCOMPARE(loaded.error(), path + ": robots[0].flight_time_s: expected a number of seconds, found the "
-                                        "text \"25\": write 25 for 25 s, or 1500 for 25 min");
+                                        "text \"25\": write 1500 for 25 min");
         writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
                             "robots": [{"start": [10, 20], "flight_time_s": 25}]})");
         loaded = loadMission(path);
@@ -824,6 +824,13 @@ class MissionFilesTest : public QObject {
         QCOMPARE(loaded.error(), path +
                                      ": robots[0].flight_time_s: must be 0 (no limit) or a flight of 1 min "
                                      "to 1000 h (60 to 3600000 s), not 25 s: write 1500 for 25 min");
+        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                            "robots": [{"start": [10, 20]}], "exports": {"turnaround_s": "25"}})");
+        loaded = loadMission(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error(), path +
+                                     ": exports.turnaround_s: expected a number of seconds, found the text "
+                                     "\"25\": write 25 for 25 s");
         // Text that is no time keeps the plain message.
         writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
                             "robots": [{"start": [10, 20]}], "exports": {"turnaround_s": "soon"}})");

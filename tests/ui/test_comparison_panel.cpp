@@ -63,6 +63,10 @@ class ComparisonPanelTest : public QObject {
         QCOMPARE(said[2].text, std::string("15.9 ha cannot be reached"));
         QCOMPARE(said[3].planners, std::string("darp, mstc"));
         QCOMPARE(said[3].text, std::string("flights too long"));
+        // A plan compared alone keeps its planner's name.
+        const std::vector<ui::ComparedWarning> alone = ui::comparedWarnings({{"darp", {"flights too long"}}});
+        QCOMPARE(alone.size(), std::size_t{1});
+        QCOMPARE(alone[0].planners, std::string("darp"));
     }
 
     // "Home h" shows when the last robot is home where flights split some plan's missions, and is hidden
