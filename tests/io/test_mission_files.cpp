@@ -790,53 +790,42 @@ class MissionFilesTest : public QObject {
                                      "items, not 5");
     }
 
-    // Times are seconds: a time written with its unit is refused, with the number to write instead.
+    // Times are seconds: a time written with its unit is refused, with the number to write instead. A bare
+    // number too few seconds for a flight is likely minutes: the hint gives their seconds, and the number
+    // written as such is refused with them too; a turnaround of "25" is 25 s. Text that is no time keeps the
+    // plain message.
     void timeWithAUnitNamesTheSecondsToWrite() {
         QTemporaryDir folder;
         const std::string path = folder.filePath("units.json").toStdString();
-        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
-                            "robots": [{"start": [10, 20], "flight_time_s": "0.5 h"}],
-                            "exports": {"turnaround_s": "5min"}})");
-        auto loaded = loadMission(path);
-        QVERIFY(!loaded.ok());
-        QCOMPARE(loaded.error(),
-                 path + ": robots[0].flight_time_s: expected a number of seconds, found the text "
-                        "\"0.5 h\": write 1800 for 30 min");
-        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
-                            "robots": [{"start": [10, 20]}], "exports": {"turnaround_s": "5min"}})");
-        loaded = loadMission(path);
-        QVERIFY(!loaded.ok());
-        QCOMPARE(loaded.error(), path +
-                                     ": exports.turnaround_s: expected a number of seconds, found the text "
-                                     "\"5min\": write 300 for 5 min");
-        // A bare number too few seconds for a flight is likely minutes: the hint gives their seconds, and the
-        // number written as such is refused with them too. A turnaround of "25" is 25 s.
-        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
-                            "robots": [{"start": [10, 20], "flight_time_s": "25"}]})");
-        loaded = loadMission(path);
-        QVERIFY(!loaded.ok());
-        QCOMPARE(loaded.error(), path + ": robots[0].flight_time_s: expected a number of seconds, found the "
-                                        "text \"25\": write 1500 for 25 min");
-        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
-                            "robots": [{"start": [10, 20], "flight_time_s": 25}]})");
-        loaded = loadMission(path);
-        QVERIFY(!loaded.ok());
-        QCOMPARE(loaded.error(), path +
-                                     ": robots[0].flight_time_s: must be 0 (no limit) or a flight of 1 min "
-                                     "to 1000 h (60 to 3600000 s), not 25 s: write 1500 for 25 min");
-        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
-                            "robots": [{"start": [10, 20]}], "exports": {"turnaround_s": "25"}})");
-        loaded = loadMission(path);
-        QVERIFY(!loaded.ok());
-        QCOMPARE(loaded.error(), path +
-                                     ": exports.turnaround_s: expected a number of seconds, found the text "
-                                     "\"25\": write 25 for 25 s");
-        // Text that is no time keeps the plain message.
-        writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
-                            "robots": [{"start": [10, 20]}], "exports": {"turnaround_s": "soon"}})");
-        loaded = loadMission(path);
-        QVERIFY(!loaded.ok());
-        QCOMPARE(loaded.error(), path + ": exports.turnaround_s: expected a number, found a string");
+        const auto refusal = [&path](const std::string& robot, const std::string& exports) {
+            writeText(path, R"({"format": "mcpp-mission", "version": 2, "raster": {"path": "map.tif"},
+                                "robots": [)" +
+                                robot + R"(], "exports": {)" + exports + "}}");
+            const auto loaded = loadMission(path);
+            return loaded.ok() ? std::string("loaded") : loaded.error();
+        };
+        const std::string robot = R"({"start": [10, 20]})";
+        QCOMPARE(refusal(R"({"start": [10, 20], "flight_time_s": "0.5 h"})", R"("turnaround_s": "5min")"),
+                 path + ": robots[0].flight_time_s: expected a number of seconds, found the text \"0.5 h\": "
+                        "write 1800 for 30 min");
+        QCOMPARE(refusal(robot, R"("turnaround_s": "5min")"),
+                 path +
+                     ": exports.turnaround_s: expected a number of seconds, found the text \"5min\": write "
+                     "300 for 5 min");
+        QCOMPARE(refusal(R"({"start": [10, 20], "flight_time_s": "25"})", ""),
+                 path +
+                     ": robots[0].flight_time_s: expected a number of seconds, found the text \"25\": write "
+                     "1500 for 25 min");
+        QCOMPARE(refusal(R"({"start": [10, 20], "flight_time_s": 25})", ""),
+                 path +
+                     ": robots[0].flight_time_s: must be 0 (no limit) or a flight of 1 min to 1000 h (60 to "
+                     "3600000 s), not 25 s: write 1500 for 25 min");
+        QCOMPARE(refusal(robot, R"("turnaround_s": "25")"),
+                 path +
+                     ": exports.turnaround_s: expected a number of seconds, found the text \"25\": write 25 "
+                     "for 25 s");
+        QCOMPARE(refusal(robot, R"("turnaround_s": "soon")"),
+                 path + ": exports.turnaround_s: expected a number, found a string");
     }
 
     // Distances and speeds written as text are refused with the number to write, in the key's unit; text in
