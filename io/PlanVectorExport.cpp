@@ -685,7 +685,7 @@ namespace {
 Status addGpxCharger(VectorFileWriter& writer, OGRLayer& layer, const ExportContext& context, int robot,
                      MapPoint start, OGRCoordinateTransformation& transformation) {
     const RobotSorties* sorties = sortiesOfRobot(context.plan, robot);
-    if (sorties == nullptr || std::hypot(sorties->charger.x - start.x, sorties->charger.y - start.y) <= 1e-3)
+    if (sorties == nullptr || !sorties->chargerAwayFrom(start))
         return {};
     const double metresPerUnit = context.georeference.metresPerUnit();
     OGRPoint charger(sorties->charger.x / metresPerUnit, sorties->charger.y / metresPerUnit);

@@ -3,6 +3,7 @@
 #include "core/model/MapPoint.hpp"
 #include "core/model/Sortie.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace mcpp {
@@ -18,6 +19,11 @@ struct RobotSorties {
     std::vector<int> outOfRangeCells;        // those cells, left to no robot
 
     [[nodiscard]] int charges() const { return sorties.empty() ? 0 : static_cast<int>(sorties.size()) - 1; }
+    // Whether the charger lies away from `point` (a millimetre off, after a round trip through another CRS,
+    // is still at it).
+    [[nodiscard]] bool chargerAwayFrom(MapPoint point) const {
+        return std::hypot(charger.x - point.x, charger.y - point.y) > 1e-3;
+    }
 };
 
 } // namespace mcpp

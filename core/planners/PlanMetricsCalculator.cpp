@@ -315,15 +315,11 @@ double PlanMetricsCalculator::boundOfFlights(const Plan& plan, const std::vector
 // make beyond it) from its charger, or on the first from its start, at most as fast as it goes anywhere.
 // A robot flying from one home to another spends, to work beyond some distance of both, twice that distance.
 double PlanMetricsCalculator::sortieBound(const Plan& plan, const std::vector<SharedWork>& shares,
-                                          double dearestTurnSeconds) {
+                                          double dearestTurnSeconds, double fastestCell) {
     const SortieLayer* layer = sortieLayerOf(plan);
     const std::size_t robots = plan.regions.startCell.size();
     if (layer == nullptr || !startsOnTheMap(plan))
         return 0.0;
-    double fastestCell = 0.0;
-    for (std::size_t id = 0; id < plan.cells.size(); ++id)
-        fastestCell = std::max(
-            fastestCell, static_cast<double>(plan.cells.cell(static_cast<int>(id)).speedMetresPerSecond));
     std::vector<FlightLimits> flights(robots);
     std::vector<std::vector<StartSquare>> homes(robots);
     for (const RobotSorties& sorties : layer->robots()) {
@@ -400,6 +396,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     double unreachable = 0.0;
     std::size_t subCells = 0;
     double dearestTurnSeconds = 0.0; // the highest price of a quarter turn
+    double fastestCell = 0.0;        // the highest speed over any cell, for the trips out on batteries
     // Whether the regions link every robot is asked beside the pass over the cells: on a map of 69 M cells
     // each takes most of a second.
     bool regionsLinked = false;
@@ -412,6 +409,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
             const Cell& cell = graph.cell(static_cast<int>(id));
             dearestTurnSeconds =
                 std::max(dearestTurnSeconds, static_cast<double>(cell.turnSecondsPer90Degrees));
+            fastestCell = std::max(fastestCell, static_cast<double>(cell.speedMetresPerSecond));
             const int robot = id < plan.regions.robotOfCell.size() ? plan.regions.robotOfCell[id] : -1;
             if (robot < 0 || static_cast<std::size_t>(robot) >= robots) {
                 unreachable += cell.passableAreaSquareMetres;
@@ -475,7 +473,7 @@ void PlanMetricsCalculator::compute(Plan& plan) const {
     const double partsBound = metrics.lowerBoundSeconds;
     boundByCharges(plan);
     metrics.lowerBoundSeconds =
-        std::max(metrics.lowerBoundSeconds, sortieBound(plan, shares, dearestTurnSeconds));
+        std::max(metrics.lowerBoundSeconds, sortieBound(plan, shares, dearestTurnSeconds, fastestCell));
     if (metrics.lowerBoundSeconds > partsBound) // set by the charges or the trips, not by robots alone
         metrics.sharedPartsRatio = 0.0;
     metrics.ratio =

@@ -52,9 +52,9 @@ class PlanMetricsCalculator {
                                                const std::vector<FlightLimits>& flights,
                                                const std::vector<std::vector<StartSquare>>& homes);
     // The least time a plan flown in sorties from chargers takes, its trips out to the work included; 0 for
-    // a plan without sorties.
+    // a plan without sorties. fastestCell: the highest speed over any cell.
     [[nodiscard]] static double sortieBound(const Plan& plan, const std::vector<SharedWork>& shares,
-                                            double dearestTurnSeconds);
+                                            double dearestTurnSeconds, double fastestCell);
     [[nodiscard]] std::vector<FlightLimits> boundedFlights(std::size_t robots,
                                                            double dearestTurnSeconds) const;
     [[nodiscard]] bool flightsReachTheirWork(const Plan& plan) const;

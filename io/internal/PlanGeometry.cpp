@@ -101,8 +101,8 @@ void addChargers(const Plan& plan, double metresPerUnit, PlanFeatures& features)
             std::find_if(features.starts.begin(), features.starts.end(),
                          [&](const StartFeature& feature) { return feature.robot == robot.robot; });
         if (start != features.starts.end() &&
-            std::hypot(start->geometry->getX() * metresPerUnit - robot.charger.x,
-                       start->geometry->getY() * metresPerUnit - robot.charger.y) <= 1e-3)
+            !robot.chargerAwayFrom(
+                {start->geometry->getX() * metresPerUnit, start->geometry->getY() * metresPerUnit}))
             continue;
         features.chargers.push_back(
             StartFeature{robot.robot, std::make_unique<OGRPoint>(robot.charger.x / metresPerUnit,
